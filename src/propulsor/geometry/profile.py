@@ -1,0 +1,226 @@
+"""Closed 2D profiles made of exact segments: lines, circular arcs, B-splines.
+
+This is the hand-over format between the math layers (which produce outlines)
+and the solid / DXF layers (which consume them).  numpy/scipy only.
+
+Conventions: millimetres, radians; an outer loop runs counter-clockwise, a
+hole clockwise.  A segment knows its exact curve and can sample itself to a
+chord tolerance for meshing, DXF polylines and 2D booleans.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.interpolate import BSpline
+
+from ..policy import CHORD_TOL_MM
+
+
+def _rot(a: float) -> np.ndarray:
+    c, s = math.cos(a), math.sin(a)
+    return np.array([[c, -s], [s, c]])
+
+
+@dataclass(frozen=True)
+class Line:
+    p0: tuple[float, float]
+    p1: tuple[float, float]
+
+    @property
+    def start(self) -> np.ndarray:
+        return np.asarray(self.p0, float)
+
+    @property
+    def end(self) -> np.ndarray:
+        return np.asarray(self.p1, float)
+
+    def sample(self, chord_tol: float = CHORD_TOL_MM) -> np.ndarray:
+        return np.array([self.p0, self.p1], float)
+
+    def reversed(self) -> "Line":
+        return Line(self.p1, self.p0)
+
+    def transformed(self, angle: float = 0.0, offset=(0.0, 0.0)) -> "Line":
+        R, o = _rot(angle), np.asarray(offset, float)
+        return Line(tuple(R @ self.start + o), tuple(R @ self.end + o))
+
+
+@dataclass(frozen=True)
+class Arc:
+    """Circular arc from angle a0 to a1 (signed sweep a1 - a0; > 0 is CCW)."""
+
+    center: tuple[float, float]
+    radius: float
+    a0: float
+    a1: float
+
+    def point(self, a: float) -> np.ndarray:
+        cx, cy = self.center
+        return np.array([cx + self.radius * math.cos(a), cy + self.radius * math.sin(a)])
+
+    @property
+    def start(self) -> np.ndarray:
+        return self.point(self.a0)
+
+    @property
+    def end(self) -> np.ndarray:
+        return self.point(self.a1)
+
+    @property
+    def mid(self) -> np.ndarray:
+        return self.point(0.5 * (self.a0 + self.a1))
+
+    def sample(self, chord_tol: float = CHORD_TOL_MM) -> np.ndarray:
+        sweep = abs(self.a1 - self.a0)
+        if self.radius <= chord_tol:
+            n = 2
+        else:
+            da = 2.0 * math.acos(max(-1.0, 1.0 - chord_tol / self.radius))
+            n = max(2, int(math.ceil(sweep / max(da, 1e-9))) + 1)
+        a = np.linspace(self.a0, self.a1, n)
+        cx, cy = self.center
+        return np.column_stack([cx + self.radius * np.cos(a), cy + self.radius * np.sin(a)])
+
+    def reversed(self) -> "Arc":
+        return Arc(self.center, self.radius, self.a1, self.a0)
+
+    def transformed(self, angle: float = 0.0, offset=(0.0, 0.0)) -> "Arc":
+        c = _rot(angle) @ np.asarray(self.center, float) + np.asarray(offset, float)
+        return Arc(tuple(c), self.radius, self.a0 + angle, self.a1 + angle)
+
+
+@dataclass(frozen=True, eq=False)
+class Spline:
+    """Non-rational B-spline curve in the plane (clamped knot vector)."""
+
+    knots: np.ndarray
+    poles: np.ndarray  # (n, 2)
+    degree: int = 3
+
+    def __post_init__(self):
+        object.__setattr__(self, "knots", np.asarray(self.knots, float))
+        object.__setattr__(self, "poles", np.asarray(self.poles, float))
+
+    @property
+    def _bs(self) -> BSpline:
+        return BSpline(self.knots, self.poles, self.degree, extrapolate=False)
+
+    @property
+    def start(self) -> np.ndarray:
+        return self.poles[0].copy()
+
+    @property
+    def end(self) -> np.ndarray:
+        return self.poles[-1].copy()
+
+    def evaluate(self, u: np.ndarray) -> np.ndarray:
+        return self._bs(np.asarray(u, float))
+
+    def sample(self, chord_tol: float = CHORD_TOL_MM) -> np.ndarray:
+        """Sample so that the chord error stays below chord_tol (checked, refined)."""
+        t0, t1 = self.knots[self.degree], self.knots[-self.degree - 1]
+        bs = self._bs
+        n = max(8, 4 * len(self.poles))
+        while True:
+            u = np.linspace(t0, t1, n)
+            p = bs(u)
+            mid = bs(0.5 * (u[:-1] + u[1:]))
+            chord_mid = 0.5 * (p[:-1] + p[1:])
+            err = np.max(np.linalg.norm(mid - chord_mid, axis=1)) if n > 1 else 0.0
+            if err <= chord_tol or n > 200000:
+                return p
+            n = int(n * max(1.5, math.sqrt(err / chord_tol) * 1.2))
+
+    def reversed(self) -> "Spline":
+        k = self.knots
+        return Spline(k[0] + k[-1] - k[::-1], self.poles[::-1].copy(), self.degree)
+
+    def transformed(self, angle: float = 0.0, offset=(0.0, 0.0)) -> "Spline":
+        P = self.poles @ _rot(angle).T + np.asarray(offset, float)
+        return Spline(self.knots.copy(), P, self.degree)
+
+
+Segment = Line | Arc | Spline
+
+
+@dataclass(eq=False)
+class Loop:
+    """A closed chain of segments; each segment's end is the next one's start."""
+
+    segments: list = field(default_factory=list)
+
+    def __post_init__(self):
+        self.segments = list(self.segments)
+        if not self.segments:
+            raise ValueError("a loop needs at least one segment")
+
+    def gaps(self) -> np.ndarray:
+        """Distance between each segment's end and the next one's start."""
+        s = self.segments
+        return np.array([np.linalg.norm(s[i].end - s[(i + 1) % len(s)].start) for i in range(len(s))])
+
+    def is_closed(self, tol: float = 1e-6) -> bool:
+        return bool(np.all(self.gaps() <= tol))
+
+    def polyline(self, chord_tol: float = CHORD_TOL_MM) -> np.ndarray:
+        """Closed polyline (first point not repeated at the end)."""
+        pts = [seg.sample(chord_tol)[:-1] for seg in self.segments]
+        return np.vstack(pts)
+
+    def signed_area(self, chord_tol: float = CHORD_TOL_MM) -> float:
+        p = self.polyline(chord_tol)
+        x, y = p[:, 0], p[:, 1]
+        return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+
+    def reversed(self) -> "Loop":
+        return Loop([s.reversed() for s in reversed(self.segments)])
+
+    def transformed(self, angle: float = 0.0, offset=(0.0, 0.0)) -> "Loop":
+        return Loop([s.transformed(angle, offset) for s in self.segments])
+
+    def oriented(self, ccw: bool = True) -> "Loop":
+        return self if (self.signed_area() > 0) == ccw else self.reversed()
+
+
+@dataclass(eq=False)
+class Profile:
+    """A planar region: one outer loop (CCW) and any number of holes (CW)."""
+
+    outer: Loop
+    holes: list = field(default_factory=list)
+    name: str = ""
+
+    def __post_init__(self):
+        self.outer = self.outer.oriented(True)
+        self.holes = [h.oriented(False) for h in self.holes]
+
+    @property
+    def loops(self) -> list:
+        return [self.outer, *self.holes]
+
+    def area(self, chord_tol: float = CHORD_TOL_MM) -> float:
+        return sum(l.signed_area(chord_tol) for l in self.loops)
+
+    def transformed(self, angle: float = 0.0, offset=(0.0, 0.0)) -> "Profile":
+        return Profile(self.outer.transformed(angle, offset), [h.transformed(angle, offset) for h in self.holes], self.name)
+
+    def polylines(self, chord_tol: float = CHORD_TOL_MM) -> list:
+        return [l.polyline(chord_tol) for l in self.loops]
+
+
+def circle_loop(radius: float, center=(0.0, 0.0), ccw: bool = True) -> Loop:
+    """A full circle as two half arcs (so that every edge has distinct ends)."""
+    if ccw:
+        return Loop([Arc(tuple(center), radius, 0.0, math.pi), Arc(tuple(center), radius, math.pi, 2 * math.pi)])
+    return Loop([Arc(tuple(center), radius, 2 * math.pi, math.pi), Arc(tuple(center), radius, math.pi, 0.0)])
+
+
+def polygon_loop(points) -> Loop:
+    """A closed loop of straight lines through the given points."""
+    p = np.asarray(points, float)
+    return Loop([Line(tuple(p[i]), tuple(p[(i + 1) % len(p)])) for i in range(len(p))])
+
+
