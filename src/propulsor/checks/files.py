@@ -1,0 +1,198 @@
+"""Checks of output files already on disk (`propulsor check PATH`).
+
+For a folder (recursively) or one file:
+* STEP: parses, holds one or more solids, each valid with closed shells and
+  positive volume; total volume equals the manifest's `volume_mm3` for the file
+  (policy.STEP_VOLUME_REL_TOL) when the manifest records one (in the file's
+  entry, or as derived value '<file stem>_volume_mm3');
+* STL / 3MF: loads; watertight, consistently wound, positive volume, no
+  self-intersection (checks.mesh); bodies / genus / volume against the manifest
+  entry's `bodies`, `genus`, `volume_mm3` when recorded;
+* DXF: parses, $INSUNITS = 4 (mm), layer CUT holds closed loops only, each with
+  at least three points and non-zero area;
+* manifest.json: every listed file exists with the recorded size and sha256,
+  every file of the folder is listed, the recorded checks all passed.
+Returns {file path: [Check, ...]}, files in sorted order.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+
+from ..policy import MESH_VOLUME_REL_TOL, STEP_VOLUME_REL_TOL
+from .result import Check
+
+MANIFEST = "manifest.json"
+
+
+def _manifest_entry(file: Path) -> dict:
+    """The manifest entry recorded for `file` (nearest manifest.json above it)."""
+    for folder in [file.parent, *file.parent.parents]:
+        m = folder / MANIFEST
+        if m.is_file():
+            try:
+                data = json.loads(m.read_text(encoding="utf-8"))
+            except (OSError, ValueError):
+                return {}
+            rel = file.relative_to(folder).as_posix()
+            entry = next((dict(e) for e in data.get("files", []) if e.get("path") == rel), {})
+            # the part writer records solid volumes as derived '<stem>_volume_mm3'
+            derived = data.get("derived", {})
+            key = f"{file.stem}_volume_mm3"
+            if "volume_mm3" not in entry and isinstance(derived.get(key), (int, float)):
+                entry["volume_mm3"] = derived[key]
+            return entry
+    return {}
+
+
+def check_step_file(path: Path) -> list[Check]:
+    from ..export.step import read_step_solids
+    from .brep import brep_checks, volume
+
+    name = path.name
+    try:
+        solids = read_step_solids(path)
+    except Exception as exc:  # noqa: BLE001 - any reader failure is a failed check
+        return [Check.flag(f"{name}: STEP parses", False, str(exc))]
+    out = [Check.flag(f"{name}: STEP parses", True, "read and transferred by OCCT"),
+           Check.at_least(f"{name}: solids", len(solids), 1, "", "one or more solids")]
+    for k, s in enumerate(solids):
+        for c in brep_checks(s, f"{name}: solid {k + 1}"):
+            if c.name.endswith(": solids"):
+                continue  # each item is one solid by construction
+            out.append(c)
+    entry = _manifest_entry(path)
+    if "volume_mm3" in entry and solids:
+        total = sum(volume(s) for s in solids)
+        out.append(Check.equal_within(f"{name}: volume vs manifest", total, float(entry["volume_mm3"]), rel_tol=STEP_VOLUME_REL_TOL, unit="mm^3"))
+    return out
+
+
+def check_mesh_file(path: Path) -> list[Check]:
+    from ..export.mesh import load_mesh
+    from .mesh import mesh_checks
+
+    name = path.name
+    try:
+        mesh = load_mesh(path)
+        if len(mesh.faces) == 0:
+            raise ValueError("no triangles")
+    except Exception as exc:  # noqa: BLE001
+        return [Check.flag(f"{name}: loads", False, f"{type(exc).__name__}: {exc}")]
+    entry = _manifest_entry(path)
+    out = [Check.flag(f"{name}: loads", True, f"{len(mesh.faces)} triangles, {len(mesh.vertices)} vertices")]
+    out += mesh_checks(
+        mesh,
+        name,
+        expected_volume=entry.get("volume_mm3"),
+        expected_genus=entry.get("genus"),
+        expected_bodies=entry.get("bodies"),
+        volume_rel_tol=MESH_VOLUME_REL_TOL,
+    )
+    return out
+
+
+def check_dxf_file(path: Path) -> list[Check]:
+    from ..export.dxf import CUT, polygon_area, read_dxf
+
+    name = path.name
+    try:
+        info = read_dxf(path)
+    except Exception as exc:  # noqa: BLE001
+        return [Check.flag(f"{name}: DXF parses", False, f"{type(exc).__name__}: {exc}")]
+    out = [Check.flag(f"{name}: DXF parses", True, f"DXF {info['version']}")]
+    out.append(Check.equals(f"{name}: $INSUNITS", info["insunits"], 4, "", "drawing units millimetres (4)"))
+    cut = info["layers"].get(CUT, {"loops": [], "open": []})
+    out.append(Check.at_least(f"{name}: closed loops on {CUT}", len(cut["loops"]), 1, "", "the outline to cut"))
+    out.append(Check.equals(f"{name}: open entities on {CUT}", len(cut["open"]), 0, "", "every cut contour closed"))
+    bad = [k for k, p in enumerate(cut["loops"]) if len(p) < 3 or abs(polygon_area(np.asarray(p))) <= 0.0]
+    out.append(Check.equals(f"{name}: degenerate {CUT} loops", len(bad), 0, "", "each loop >= 3 points, non-zero area"))
+    return out
+
+
+def check_manifest_file(path: Path) -> list[Check]:
+    from ..export.manifest import file_entries, sha256_of
+
+    name = path.name
+    folder = path.parent
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+        files = data["files"]
+    except Exception as exc:  # noqa: BLE001
+        return [Check.flag(f"{name}: parses", False, f"{type(exc).__name__}: {exc}")]
+    out = [Check.flag(f"{name}: parses", True, f"{len(files)} files listed")]
+    missing, wrong_size, wrong_hash = [], [], []
+    for e in files:
+        p = folder / e["path"]
+        if not p.is_file():
+            missing.append(e["path"])
+            continue
+        if p.stat().st_size != e.get("bytes"):
+            wrong_size.append(e["path"])
+        if sha256_of(p) != e.get("sha256"):
+            wrong_hash.append(e["path"])
+    out.append(Check.equals(f"{name}: listed files missing", len(missing), 0, "", "missing: " + ", ".join(missing) if missing else "all listed files exist"))
+    out.append(Check.equals(f"{name}: size mismatches", len(wrong_size), 0, "", ", ".join(wrong_size) or "sizes as recorded"))
+    out.append(Check.equals(f"{name}: sha256 mismatches", len(wrong_hash), 0, "", ", ".join(wrong_hash) or "hashes as recorded"))
+    listed = {e["path"] for e in files}
+    unlisted = [e["path"] for e in file_entries(folder) if e["path"] not in listed]
+    out.append(Check.equals(f"{name}: unlisted files", len(unlisted), 0, "", ", ".join(unlisted) or "every file listed"))
+    failed = [c.get("name") for c in data.get("checks", []) if not c.get("passed")]
+    out.append(Check.equals(f"{name}: recorded failed checks", len(failed), 0, "", "; ".join(map(str, failed)) or "all recorded checks passed"))
+    return out
+
+
+CHECKERS = {
+    ".step": check_step_file,
+    ".stp": check_step_file,
+    ".stl": check_mesh_file,
+    ".3mf": check_mesh_file,
+    ".dxf": check_dxf_file,
+}
+
+
+def check_file(path: str | Path) -> list[Check]:
+    """Checks of one file (empty list for formats without checks)."""
+    p = Path(path)
+    if p.name == MANIFEST:
+        return check_manifest_file(p)
+    fn = CHECKERS.get(p.suffix.lower())
+    return fn(p) if fn else []
+
+
+def check_path(path: str | Path) -> dict[str, list[Check]]:
+    """Check a file or every checkable file under a folder: {path: checks}."""
+    p = Path(path)
+    if not p.exists():
+        return {str(p): [Check.flag(f"{p}: exists", False, "no such file or folder")]}
+    files = [p] if p.is_file() else sorted(q for q in p.rglob("*") if q.is_file())
+    out: dict[str, list[Check]] = {}
+    for f in files:
+        cks = check_file(f)
+        if cks or p.is_file():
+            out[str(f)] = cks
+    return out
+
+
+def summary(results: dict[str, list[Check]]) -> tuple[int, int]:
+    """(number of checks, number failed) over all files."""
+    n = sum(len(v) for v in results.values())
+    failed = sum(not c.passed for v in results.values() for c in v)
+    return n, failed
+
+
+def format_results(results: dict[str, list[Check]], verbose: bool = False) -> str:
+    """Text for the command line: per file a PASS/FAIL line, failed checks (all
+    checks when verbose) indented below, then one summary line."""
+    lines = []
+    for path, cks in results.items():
+        bad = [c for c in cks if not c.passed]
+        lines.append(f"{'FAIL' if bad else 'PASS'} {path} ({len(cks)} checks)")
+        for c in cks if verbose else bad:
+            lines.append(f"    {c}")
+    n, failed = summary(results)
+    lines.append(f"{len(results)} files, {n} checks, {failed} failed")
+    return "\n".join(lines)

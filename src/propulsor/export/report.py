@@ -1,0 +1,129 @@
+"""report.md: the human-readable account of one built part.
+
+What was built, the inputs, every derived value with its unit, every check with
+value, limit and PASS/FAIL, the tables and figures, notes, and one summary line.
+The exporter only formats: values arrive computed.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+
+def _fmt(v) -> str:
+    try:
+        import numpy as np
+
+        if isinstance(v, np.generic):
+            v = v.item()
+        if isinstance(v, np.ndarray):
+            v = v.tolist()
+    except ImportError:  # pragma: no cover
+        pass
+    if isinstance(v, bool):
+        return "yes" if v else "no"
+    if isinstance(v, float):
+        if not math.isfinite(v):
+            return str(v)
+        return f"{v:.6g}"
+    if isinstance(v, dict):
+        return ", ".join(f"{k}: {_fmt(x)}" for k, x in v.items())
+    if isinstance(v, (list, tuple)):
+        if len(v) > 8:
+            return "[" + ", ".join(_fmt(x) for x in v[:8]) + f", ... ({len(v)} values)]"
+        return "[" + ", ".join(_fmt(x) for x in v) + "]"
+    return "" if v is None else str(v)
+
+
+def _cell(s: str) -> str:
+    return str(s).replace("|", "\\|").replace("\n", " ")
+
+
+def _value_rows(values) -> list[tuple[str, str, str, str]]:
+    """Rows (name, value, unit, meaning) from a dict name -> value or
+    name -> (value, unit[, meaning])."""
+    rows = []
+    items = values.items() if isinstance(values, dict) else values
+    for name, v in items:
+        unit = meaning = ""
+        if isinstance(v, tuple) and 2 <= len(v) <= 3 and isinstance(v[1], str):
+            unit = v[1]
+            meaning = v[2] if len(v) > 2 else ""
+            v = v[0]
+        rows.append((str(name), _fmt(v), unit, meaning))
+    return rows
+
+
+def _table(header, rows) -> list[str]:
+    out = ["| " + " | ".join(header) + " |", "|" + "|".join("---" for _ in header) + "|"]
+    out += ["| " + " | ".join(_cell(c) for c in r) + " |" for r in rows]
+    return out
+
+
+def _refs(items) -> list[tuple[str, str]]:
+    out = []
+    for it in items:
+        if isinstance(it, (str, Path)):
+            out.append((Path(it).as_posix(), Path(it).stem.replace("_", " ")))
+        else:
+            out.append((Path(it[0]).as_posix(), str(it[1])))
+    return out
+
+
+def write_report(
+    path: str | Path,
+    title: str,
+    intro: str = "",
+    inputs=None,
+    derived=None,
+    checks=(),
+    tables=(),
+    figures=(),
+    notes=(),
+    part: str = "",
+    plots=(),
+) -> Path:
+    """Write a Markdown report.
+
+    inputs / derived: dict name -> value, or name -> (value, unit[, meaning]).
+    checks: list of Check (or dicts with the same keys).  tables / figures
+    (alias plots): relative paths or (relative path, caption) pairs.  notes:
+    strings.  part: the part type, printed under the title.
+    """
+    inputs = inputs or {}
+    derived = derived or {}
+    tables = _refs(tables)
+    figures = _refs(list(figures) + list(plots))
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    cks = [c.to_dict() if hasattr(c, "to_dict") else dict(c) for c in checks]
+    n_fail = sum(not c["passed"] for c in cks)
+    lines = [f"# {title}", ""]
+    if part:
+        lines += [f"Part type: `{part}`", ""]
+    if intro.strip():
+        lines += [intro.strip(), ""]
+    lines += ["## Inputs", ""] + _table(["name", "value", "unit", "meaning"], _value_rows(inputs)) + [""]
+    lines += ["## Derived values", ""] + _table(["name", "value", "unit", "meaning"], _value_rows(derived)) + [""]
+    lines += ["## Checks", ""]
+    rows = [
+        (c["name"], _fmt(c["value"]), _fmt(c["limit"]), c.get("unit", ""), "PASS" if c["passed"] else "**FAIL**", c.get("message", ""))
+        for c in cks
+    ]
+    lines += _table(["check", "value", "limit", "unit", "result", "note"], rows) + [""]
+    if tables:
+        lines += ["## Tables", ""] + [f"- [{p}]({p}): {cap}" for p, cap in tables] + [""]
+    if figures:
+        lines += ["## Figures", ""]
+        for p, cap in figures:
+            lines += [f"![{cap}]({p})", "", f"*{cap}*", ""]
+    if notes:
+        lines += ["## Notes", ""] + [f"- {n}" for n in notes] + [""]
+    if n_fail:
+        summary = f"**FAILED: {n_fail} of {len(cks)} checks failed.**"
+    else:
+        summary = f"**PASSED: all {len(cks)} checks passed.**"
+    lines += ["## Summary", "", summary, ""]
+    path.write_text("\n".join(lines), encoding="utf-8")
+    return path

@@ -1,0 +1,172 @@
+"""STEP files: one named solid, an assembly of named placed parts, and reading back.
+
+Units are millimetres, schema AP214 (AUTOMOTIVE_DESIGN), written through OCCT's
+XCAF so that product names survive.  Output is deterministic: OCCT stamps the
+current time into the header's FILE_NAME entity; it is rewritten to the fixed
+`STEP_TIMESTAMP` so the same input gives byte-identical files (SPEC §9).
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from OCP.IFSelect import IFSelect_RetDone
+from OCP.Interface import Interface_Static
+from OCP.STEPCAFControl import STEPCAFControl_Writer
+from OCP.STEPControl import STEPControl_AsIs, STEPControl_Reader
+from OCP.TCollection import TCollection_ExtendedString
+from OCP.TDataStd import TDataStd_Name
+from OCP.TDocStd import TDocStd_Document
+from OCP.TopAbs import TopAbs_SOLID
+from OCP.TopExp import TopExp_Explorer
+from OCP.TopoDS import TopoDS, TopoDS_Shape
+from OCP.XCAFDoc import XCAFDoc_DocumentTool
+
+STEP_TIMESTAMP = "2000-01-01T00:00:00"
+STEP_SCHEMA = "AP214IS"
+
+_TS = re.compile(r"'\d{4}-\d{2}-\d{2}T\d{2}:\d{2}:\d{2}'")
+_NAUO = re.compile(r"(NEXT_ASSEMBLY_USAGE_OCCURRENCE\(\s*)'[^']*'")
+
+
+def _shape(obj) -> TopoDS_Shape:
+    """Accept an OCP shape, a cadquery Shape or a cadquery Workplane."""
+    if isinstance(obj, TopoDS_Shape):
+        return obj
+    if hasattr(obj, "wrapped"):
+        return obj.wrapped
+    if hasattr(obj, "val"):  # Workplane
+        return obj.val().wrapped
+    raise TypeError(f"not a shape: {type(obj).__name__}")
+
+
+def _set_units() -> None:
+    Interface_Static.SetCVal_s("write.step.unit", "MM")
+    Interface_Static.SetCVal_s("write.step.schema", STEP_SCHEMA)
+    Interface_Static.SetIVal_s("write.step.assembly", 1)
+    Interface_Static.SetCVal_s("write.step.product.name", "propulsor")
+
+
+def fix_header(path: str | Path) -> None:
+    """Make a written STEP file reproducible (in place): fixed time stamp, occurrence ids 1..n."""
+    p = Path(path)
+    data = p.read_bytes()
+    head_end = data.find(b"ENDSEC;")
+    if head_end < 0:
+        raise ValueError(f"{p}: no STEP header section")
+    head = data[:head_end].decode("latin-1")
+    head = _TS.sub(f"'{STEP_TIMESTAMP}'", head, count=1)
+    body = data[head_end:].decode("latin-1")
+    # OCCT numbers assembly occurrences with a process-wide counter: renumber 1, 2, ...
+    counter = iter(range(1, 1 << 30))
+    body = _NAUO.sub(lambda m: f"{m.group(1)}'{next(counter)}'", body)
+    p.write_bytes(head.encode("latin-1") + body.encode("latin-1"))
+
+
+def write_step(solid, path: str | Path, name: str) -> Path:
+    """Write one solid to STEP (mm, AP214) as a product called `name`."""
+    shape = _shape(solid)
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    _set_units()
+    doc = TDocStd_Document(TCollection_ExtendedString("XmlOcaf"))
+    tool = XCAFDoc_DocumentTool.ShapeTool_s(doc.Main())
+    label = tool.AddShape(shape, False)
+    TDataStd_Name.Set_s(label, TCollection_ExtendedString(name))
+    writer = STEPCAFControl_Writer()
+    writer.SetNameMode(True)
+    if not writer.Transfer(doc, STEPControl_AsIs):
+        raise RuntimeError(f"STEP transfer failed for {name}")
+    if writer.Write(str(path)) != IFSelect_RetDone:
+        raise RuntimeError(f"STEP write failed: {path}")
+    fix_header(path)
+    return path
+
+
+def _location(loc, rot_z=None):
+    import math
+
+    import cadquery as cq
+
+    if isinstance(loc, cq.Location):
+        return loc
+    if rot_z is not None:  # (x, y, z) mm and a rotation about z in radians
+        return cq.Location(cq.Vector(*map(float, loc)), cq.Vector(0, 0, 1), math.degrees(float(rot_z)))
+    if loc is None:
+        return cq.Location()
+    if isinstance(loc[0], (tuple, list)):  # ((x, y, z), (ax, ay, az), angle_deg)
+        t, axis, ang = loc
+        return cq.Location(cq.Vector(*map(float, t)), cq.Vector(*map(float, axis)), float(ang))
+    return cq.Location(cq.Vector(*map(float, loc)))
+
+
+def write_assembly_step(path, components, name: str) -> Path:
+    """Write an assembly STEP of named, placed components.
+
+    components: (name, solid, location) with location a cadquery Location, an
+    (x, y, z) translation, ((x, y, z), (ax, ay, az), angle_deg) or None; or
+    (name, solid, (x, y, z), rot_z_rad) - placed by a rotation about z, then the
+    translation.  For convenience the first two arguments may come in either
+    order (components, path).  Each component keeps its name and placement.
+    """
+    import cadquery as cq
+    from cadquery.occ_impl.exporters.assembly import exportAssembly
+
+    if isinstance(components, (str, Path)):
+        path, components = components, path
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    assy = cq.Assembly(name=name)
+    seen = set()
+    for comp in components:
+        cname, solid = comp[0], comp[1]
+        if cname in seen:
+            raise ValueError(f"duplicate component name {cname!r}")
+        seen.add(cname)
+        loc = _location(comp[2] if len(comp) > 2 else None, comp[3] if len(comp) > 3 else None)
+        assy.add(cq.Shape.cast(_shape(solid)), name=cname, loc=loc)
+    _set_units()
+    if not exportAssembly(assy, str(path)):
+        raise RuntimeError(f"STEP assembly write failed: {path}")
+    fix_header(path)
+    return path
+
+
+def read_step(path: str | Path) -> TopoDS_Shape:
+    """Read a STEP file; raise ValueError if it does not parse or holds no shape."""
+    path = Path(path)
+    if not path.is_file():
+        raise FileNotFoundError(path)
+    reader = STEPControl_Reader()
+    status = reader.ReadFile(str(path))
+    if status != IFSelect_RetDone:
+        raise ValueError(f"{path}: STEP does not parse (status {int(status)})")
+    n = reader.TransferRoots()
+    if n < 1:
+        raise ValueError(f"{path}: STEP holds no transferable root")
+    shape = reader.OneShape()
+    if shape is None or shape.IsNull():
+        raise ValueError(f"{path}: STEP gives an empty shape")
+    return shape
+
+
+def solids_of(shape) -> list:
+    """All TopoDS_Solid in a shape, in exploration order."""
+    out = []
+    ex = TopExp_Explorer(_shape(shape), TopAbs_SOLID)
+    while ex.More():
+        out.append(TopoDS.Solid_s(ex.Current()))
+        ex.Next()
+    return out
+
+
+def read_step_solids(path: str | Path) -> list:
+    """Read a STEP file and return its solids (list of TopoDS_Solid)."""
+    return solids_of(read_step(path))
+
+
+def step_product_names(path: str | Path) -> list[str]:
+    """Names of PRODUCT entities in a STEP file (for checks and tests)."""
+    text = Path(path).read_text(encoding="latin-1")
+    return re.findall(r"PRODUCT\(\s*'((?:[^']|'')*)'", text)

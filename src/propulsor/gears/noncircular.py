@@ -1,0 +1,756 @@
+"""Pitch curves of the non-circular pair of the wheel-walking propulsor drive.
+
+Driven (carrier) wheel r_H(phi), driver r(theta) for centre distance L and a
+ratio law U(phi) = d theta / d phi (seed 000, eqs. 4-7, 12-13; SPEC §3):
+
+    r_H = L U / (1 + U),   r = L / (1 + U),   r + r_H = L
+
+Tooth spacing is true arc length ds = sqrt(r^2 + r'^2) dphi (SPEC Trap 3);
+whole tooth counts fix L for a module (closure).  Radius of curvature of a
+polar curve r(psi):  rho = (r^2 + r'^2)^(3/2) / (r^2 + 2 r'^2 - r r'')
+(> 0 convex, < 0 concave).
+
+The exact law has corners at leg hand-over (SPEC Trap 2); the product replaces
+U on a window |phi - (pi/4 + k pi/2)| < delta by an even degree-6 polynomial
+that matches U, U', U'' at the window ends (C2) and keeps the window integral
+of U, so closure (n whole driver turns per driven turn) stays exact and U is
+unchanged outside the windows; delta is chosen as the smallest that keeps both
+pitch curves generable (rack undercut limit on convex parts, shaper cutter or
+no concavity on concave parts).  The price is the hub speed ripple inside the
+windows.  Method background: Litvin & Fuentes-Aznar, Noncircular Gears (2009).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.optimize import brentq, minimize_scalar
+
+from propulsor.errors import InputError, require_finite, require_positive
+from propulsor.laws.walking import LEG_PERIOD, HubSpeedRipple, WalkingLaw, wrap_leg
+from propulsor.policy import SMOOTHING_DELTA_RTOL, TOOTH_COUNT_TOL
+
+_GAUSS_X, _GAUSS_W = np.polynomial.legendre.leggauss(96)
+#: samples per smooth piece of one leg when searching curvature / speed extremes
+_SAMPLES_PER_PIECE = 600
+#: default largest smoothing half-width searched (rad of the driven wheel)
+DELTA_MAX_DEFAULT = math.pi / 8
+
+
+def _check_n_closes(n: int) -> None:
+    if 4 % n != 0:
+        raise InputError(
+            "n", n,
+            "the driver pitch curve repeats every n*pi/2 and closes only if n divides the 4 legs: n in {1, 2, 4}",
+        )
+
+
+# =========================================================================== smoothing
+@dataclass(frozen=True)
+class SmoothedWalkingLaw:
+    """The walking law with a C2, closure-exact blend around every leg hand-over.
+
+    law: the exact WalkingLaw; delta: half-width of the blend window (rad of
+    the driven angle phi) around phi_h = pi/4 + k pi/2, 0 < delta <= pi/4.
+    In the window, with t = phi - phi_h, U_s = c0 + c2 t^2 + c4 t^4 + c6 t^6,
+    (stored as ``coef`` = (a0..a3) of p = sum a_k (t/delta)^(2k)),
+    solved from U_s(delta) = U, U_s'(delta) = U', U_s''(delta) = U'' and
+    integral_{-delta}^{delta} U_s = integral U (the exact law is even in t:
+    U = u + K sin 2|t|, K = 3 b u / A), so the pair closes exactly.
+    """
+
+    law: WalkingLaw
+    delta: float
+    coef: tuple = field(init=False, repr=False)
+
+    def __post_init__(self):
+        if not isinstance(self.law, WalkingLaw):
+            raise InputError("law", self.law, "must be a WalkingLaw")
+        d = require_positive("delta", self.delta, "rad")
+        if d > math.pi / 4:
+            raise InputError("delta", self.delta, f"blend half-width must be <= pi/4 = {math.pi / 4:.6f} rad")
+        object.__setattr__(self, "delta", d)
+        u, K = self.law.u, self.K
+        # solved in s = t/delta (well conditioned for small delta): p = sum a_k s^(2k)
+        M = np.array([
+            [1.0, 1.0, 1.0, 1.0],
+            [0.0, 2.0, 4.0, 6.0],
+            [0.0, 2.0, 12.0, 30.0],
+            [1.0, 1.0 / 3, 1.0 / 5, 1.0 / 7],
+        ])
+        rhs = np.array([
+            u + K * math.sin(2 * d),
+            d * 2 * K * math.cos(2 * d),
+            -d * d * 4 * K * math.sin(2 * d),
+            u + K * (1 - math.cos(2 * d)) / (2 * d),
+        ])
+        object.__setattr__(self, "coef", tuple(float(v) for v in np.linalg.solve(M, rhs)))
+        t = np.linspace(0.0, d, 2001)
+        p_min = float(np.min(self._p(t)))
+        if not p_min > 0:
+            raise InputError("delta", self.delta, f"blend makes U <= 0 (min {p_min:.4g}); use a smaller delta")
+
+    # ---- forwarded constants ----------------------------------------------------
+    @property
+    def n(self) -> int:
+        return self.law.n
+
+    @property
+    def A(self) -> float:
+        return self.law.A
+
+    @property
+    def u(self) -> float:
+        return self.law.u
+
+    @property
+    def K(self) -> float:
+        """Slope scale of the exact law at hand-over: U = u + K sin 2|t|, K = 3 b u / A."""
+        return 3 * self.law.b * self.law.u / self.law.A
+
+    @property
+    def hub_speed_ratio(self) -> float:
+        """Time-mean v/omega = A/u (unchanged: the blend keeps the leg's driver angle)."""
+        return self.law.hub_speed_ratio
+
+    @property
+    def leg_breakpoints(self) -> tuple:
+        """Leg-local angles w where U_s is only C2 (window ends), with the leg ends."""
+        d = self.delta
+        pts = [-math.pi / 4, -math.pi / 4 + d, math.pi / 4 - d, math.pi / 4]
+        return tuple(sorted(set(pts)))
+
+    # ---- the blend polynomial -----------------------------------------------------
+    def blend(self, t, order: int = 0):
+        """Blend polynomial (order 0), or its 1st / 2nd / -1st (antiderivative, odd) derivative in t.
+
+        p(t) = a0 + a1 s^2 + a2 s^4 + a3 s^6, s = t / delta.
+        """
+        a0, a1, a2, a3 = self.coef
+        d = self.delta
+        s = np.asarray(t, dtype=float) / d
+        s2 = s * s
+        if order == 0:
+            return a0 + s2 * (a1 + s2 * (a2 + s2 * a3))
+        if order == 1:
+            return s * (2 * a1 + s2 * (4 * a2 + 6 * a3 * s2)) / d
+        if order == 2:
+            return (2 * a1 + s2 * (12 * a2 + 30 * a3 * s2)) / (d * d)
+        if order == -1:
+            return d * s * (a0 + s2 * (a1 / 3 + s2 * (a2 / 5 + s2 * a3 / 7)))
+        raise InputError("order", order, "must be -1, 0, 1 or 2")
+
+    def _p(self, t):
+        return self.blend(t, 0)
+
+    def _dp(self, t):
+        return self.blend(t, 1)
+
+    def _d2p(self, t):
+        return self.blend(t, 2)
+
+    def _P(self, t):
+        return self.blend(t, -1)
+
+    def _F(self, t):
+        """Antiderivative of the exact law near hand-over, odd in t: u t + sgn t K (1 - cos 2t)/2."""
+        return self.u * t + np.sign(t) * self.K * (1 - np.cos(2 * t)) / 2
+
+    def _window(self, phi):
+        phi = np.asarray(phi, dtype=float)
+        t = wrap_leg(phi - math.pi / 4)
+        return phi, t, np.abs(t) < self.delta
+
+    # ---- law interface ------------------------------------------------------------
+    def U(self, phi):
+        """Smoothed ratio U_s(phi) (periodic, period pi/2, C2)."""
+        phi, t, inw = self._window(phi)
+        return np.where(inw, self._p(t), self.law.U(phi))
+
+    def dU_dphi(self, phi):
+        phi, t, inw = self._window(phi)
+        return np.where(inw, self._dp(t), self.law.dU_dphi(phi))
+
+    def d2U_dphi2(self, phi):
+        phi, t, inw = self._window(phi)
+        return np.where(inw, self._d2p(t), self.law.d2U_dphi2(phi))
+
+    def theta(self, phi):
+        """theta_s(phi) = integral_0^phi U_s, closed form: exact theta + window correction."""
+        phi, t, inw = self._window(phi)
+        d = self.delta
+        corr = self._P(t) + self._P(d) - self._F(t) - self._F(d)
+        return self.law.theta(phi) + np.where(inw, corr, 0.0)
+
+    def phi_of_theta(self, theta, tol: float = 1e-14):
+        theta = np.asarray(theta, dtype=float)
+        phi = theta / self.n
+        for _ in range(80):
+            step = (self.theta(phi) - theta) / self.U(phi)
+            phi = phi - step
+            if np.all(np.abs(step) < tol):
+                break
+        return phi
+
+    def dX01_dphi(self, phi):
+        """Hub speed analogue of the mechanism (seed 000 eq. 2) - unchanged by the gear."""
+        return self.law.dX01_dphi(phi)
+
+    def hub_speed(self, phi):
+        """v / omega = (dX01/dphi) / U_s (mm per rad of the driver)."""
+        return self.dX01_dphi(phi) / self.U(phi)
+
+    @property
+    def windows(self) -> list[tuple[float, float]]:
+        """The blend windows over one driven turn [0, 2 pi): (start, end) in rad."""
+        out = []
+        for k in range(4):
+            h = math.pi / 4 + k * LEG_PERIOD
+            out.append((h - self.delta, h + self.delta))
+        return out
+
+
+def _leg_breakpoints(law) -> tuple:
+    if isinstance(law, SmoothedWalkingLaw):
+        return law.leg_breakpoints
+    return (-math.pi / 4, math.pi / 4)
+
+
+def _has_corners(law) -> bool:
+    return isinstance(law, WalkingLaw) and law.b > 0
+
+
+def _leg_samples(law, per_piece: int = _SAMPLES_PER_PIECE) -> np.ndarray:
+    bp = _leg_breakpoints(law)
+    parts = []
+    for a, b in zip(bp[:-1], bp[1:]):
+        # cosine spacing: dense at the piece ends, where the extremes sit
+        s = 0.5 * (1 - np.cos(np.linspace(0.0, math.pi, per_piece)))
+        parts.append(a + (b - a) * s)
+    return np.unique(np.concatenate(parts))
+
+
+def _leg_integral(law, f) -> float:
+    """integral over one leg phi in [-pi/4, pi/4] of f(phi), Gauss-Legendre per smooth piece."""
+    bp = _leg_breakpoints(law)
+    total = 0.0
+    for a, b in zip(bp[:-1], bp[1:]):
+        x = 0.5 * (b - a) * _GAUSS_X + 0.5 * (a + b)
+        total += 0.5 * (b - a) * float(np.dot(_GAUSS_W, f(x)))
+    return total
+
+
+def _extreme(f, x, y, which: str):
+    """Refine the sampled min (or max) of f: returns (x*, f(x*))."""
+    k = int(np.argmin(y) if which == "min" else np.argmax(y))
+    lo, hi = x[max(k - 1, 0)], x[min(k + 1, len(x) - 1)]
+    sgn = 1.0 if which == "min" else -1.0
+    best = (float(x[k]), float(y[k]))
+    if hi > lo:
+        res = minimize_scalar(lambda p: sgn * float(f(p)), bounds=(lo, hi), method="bounded",
+                              options={"xatol": 1e-12})
+        if sgn * res.fun < sgn * best[1]:
+            best = (float(res.x), float(sgn * res.fun))
+    return best
+
+
+def hub_speed_ripple(law) -> HubSpeedRipple:
+    """Hub speed ripple (max - min)/mean of v/omega = (dX01/dphi)/U over the cycle.
+
+    Works for WalkingLaw (ripple 0: the exact law is the constant-speed law)
+    and SmoothedWalkingLaw.  mean = time mean = A/u (SPEC §3 Trap 2).
+    """
+    phi = _leg_samples(law)
+    v = law.hub_speed(phi)
+    f = law.hub_speed
+    pmin, vmin = _extreme(f, phi, v, "min")
+    pmax, vmax = _extreme(f, phi, v, "max")
+    mean = law.hub_speed_ratio
+    return HubSpeedRipple(ripple=(vmax - vmin) / mean, mean=mean, v_min=vmin, v_max=vmax,
+                          phi_min=pmin, phi_max=pmax)
+
+
+# =========================================================================== pitch curves
+def _rho(r, dr, d2r):
+    """Signed radius of curvature of a polar curve (> 0 convex, < 0 concave)."""
+    return (r * r + dr * dr) ** 1.5 / (r * r + 2 * dr * dr - r * d2r)
+
+
+@dataclass(frozen=True)
+class Corner:
+    """A corner of a pitch curve of the exact law (SPEC Trap 2)."""
+
+    curve: str          #: 'driven' or 'driver'
+    phi: float          #: driven angle of the hand-over (rad)
+    angle: float        #: polar angle on that curve (phi for driven, theta for driver), rad
+    turn: float         #: tangent turn across the corner (rad), > 0
+    kind: str           #: 'concave' (notch) or 'convex' (sharp tip, rho -> 0)
+
+
+@dataclass(frozen=True)
+class PitchCurves:
+    """Pitch curves of the pair for centre distance L (mm) and a ratio law.
+
+    law: WalkingLaw (exact, with corners) or SmoothedWalkingLaw.
+    Driven curve: polar r_H(phi), phi the driven body angle.  Driver curve:
+    polar r(theta); functions named r*(phi) give the driver radius and its
+    theta-derivatives at the point in contact when the driven angle is phi
+    (theta = law.theta(phi)).  Seed 000 eqs. 12-13.
+    Angles are body polar angles: in mesh the driven point at body angle phi
+    touches the driver point at body angle theta(phi) on the line of centres;
+    the two wheels turn in opposite senses.
+    """
+
+    law: object
+    L: float
+
+    def __post_init__(self):
+        if not isinstance(self.law, (WalkingLaw, SmoothedWalkingLaw)):
+            raise InputError("law", self.law, "must be a WalkingLaw or SmoothedWalkingLaw")
+        _check_n_closes(self.law.n)
+        object.__setattr__(self, "L", require_positive("L", self.L, "mm"))
+
+    # ---- driven ---------------------------------------------------------------------
+    def r_H(self, phi):
+        """Driven pitch radius r_H = L U/(1+U), seed 000 eq. 6/12."""
+        U = self.law.U(phi)
+        return self.L * U / (1 + U)
+
+    def dr_H(self, phi):
+        U, dU = self.law.U(phi), self.law.dU_dphi(phi)
+        return self.L * dU / (1 + U) ** 2
+
+    def d2r_H(self, phi):
+        U, dU, d2U = self.law.U(phi), self.law.dU_dphi(phi), self.law.d2U_dphi2(phi)
+        return self.L * (d2U / (1 + U) ** 2 - 2 * dU * dU / (1 + U) ** 3)
+
+    def rho_H(self, phi):
+        """Signed radius of curvature of the driven pitch curve at phi (mm)."""
+        return _rho(self.r_H(phi), self.dr_H(phi), self.d2r_H(phi))
+
+    # ---- driver ---------------------------------------------------------------------
+    def r(self, phi):
+        """Driver pitch radius r = L/(1+U) at the contact for driven angle phi, seed 000 eq. 7/13."""
+        return self.L / (1 + self.law.U(phi))
+
+    def r_theta(self, phi):
+        """dr/dtheta = (dr/dphi)/U."""
+        U = self.law.U(phi)
+        return -self.dr_H(phi) / U
+
+    def r_thetatheta(self, phi):
+        """d2r/dtheta2 = (r_phiphi U - r_phi U')/U^3."""
+        U, dU = self.law.U(phi), self.law.dU_dphi(phi)
+        r_p, r_pp = -self.dr_H(phi), -self.d2r_H(phi)
+        return (r_pp * U - r_p * dU) / U**3
+
+    def rho(self, phi):
+        """Signed radius of curvature of the driver pitch curve at the contact for driven angle phi (mm)."""
+        return _rho(self.r(phi), self.r_theta(phi), self.r_thetatheta(phi))
+
+    def driver_radius(self, theta):
+        """Driver pitch curve in polar form r(theta) (theta: driver body angle, rad)."""
+        return self.r(self.law.phi_of_theta(theta))
+
+    def driven_xy(self, phi):
+        """Points (N, 2) of the driven pitch curve, polar angle phi."""
+        phi = np.asarray(phi, dtype=float)
+        rr = self.r_H(phi)
+        return np.stack([rr * np.cos(phi), rr * np.sin(phi)], axis=-1)
+
+    def driver_xy(self, theta):
+        """Points (N, 2) of the driver pitch curve, polar angle theta."""
+        theta = np.asarray(theta, dtype=float)
+        rr = self.driver_radius(theta)
+        return np.stack([rr * np.cos(theta), rr * np.sin(theta)], axis=-1)
+
+    # ---- arc length / closure -------------------------------------------------------
+    def ds_dphi(self, phi):
+        """True arc length rate of the driven curve sqrt(r_H^2 + r_H'^2) (SPEC Trap 3)."""
+        return np.hypot(self.r_H(phi), self.dr_H(phi))
+
+    def perimeter_driven(self) -> float:
+        """Perimeter of the driven pitch curve (mm) = 4 x one leg."""
+        return 4 * _leg_integral(self.law, self.ds_dphi)
+
+    def perimeter_driver(self) -> float:
+        """Perimeter of the driver pitch curve over one driver turn (mm), integrated in theta.
+
+        Independent of the rolling identity: integral over one driver turn,
+        theta in [theta(-pi/4), theta(-pi/4) + 2 pi], of sqrt(r^2 + (dr/dtheta)^2),
+        pieces split at the images of the law's breakpoints (needs n | 4).
+        """
+        n = self.law.n
+        legs = 4 // n  # driver turn = 4/n legs of the driven wheel
+        bp = _leg_breakpoints(self.law)
+        phis = sorted({k * LEG_PERIOD + w for k in range(legs) for w in bp})
+        ths = self.law.theta(np.array(phis))
+        total = 0.0
+        for a, b in zip(ths[:-1], ths[1:]):
+            th = 0.5 * (b - a) * _GAUSS_X + 0.5 * (a + b)
+            ph = self.law.phi_of_theta(th)
+            total += 0.5 * (b - a) * float(np.dot(_GAUSS_W, np.hypot(self.r(ph), self.r_theta(ph))))
+        return total
+
+    # ---- corners / curvature ------------------------------------------------------
+    def corners(self) -> list[Corner]:
+        """Corners of both pitch curves (exact law only; [] when smoothed).
+
+        4 notches/tips on the driven curve (one per hand-over), 4/n on the driver
+        body (its hand-overs repeat every turn).  angle: body polar angle.
+        """
+        if not _has_corners(self.law):
+            return []
+        out = []
+        eps = 1e-12
+        seen = set()
+        for k in range(4):
+            ph = math.pi / 4 + k * LEG_PERIOD
+            for curve in ("driven", "driver"):
+                if curve == "driver":  # the driver turns n times: 4/n distinct tips on its body
+                    key = round(float(self.law.theta(ph)) % (2 * math.pi), 9)
+                    if key in seen:
+                        continue
+                    seen.add(key)
+                if curve == "driven":
+                    r, d_minus, d_plus = self.r_H(ph), self.dr_H(ph - eps), self.dr_H(ph + eps)
+                    ang = ph
+                else:
+                    r, d_minus, d_plus = self.r(ph), self.r_theta(ph - eps), self.r_theta(ph + eps)
+                    ang = float(self.law.theta(ph))
+                # tangent direction relative to the radius: beta = atan2(r, r')
+                jump = math.atan2(float(r), float(d_plus)) - math.atan2(float(r), float(d_minus))
+                out.append(Corner(curve=curve, phi=ph, angle=ang, turn=abs(jump),
+                                  kind="convex" if jump > 0 else "concave"))
+        return out
+
+    def curvature(self, curve: str) -> "CurvatureSummary":
+        """Radius-of-curvature summary of one curve ('driven' or 'driver') over the cycle."""
+        if curve not in ("driven", "driver"):
+            raise InputError("curve", curve, "must be 'driven' or 'driver'")
+        f = self.rho_H if curve == "driven" else self.rho
+        if curve == "driven":
+            def den(p):
+                r, d, dd = self.r_H(p), self.dr_H(p), self.d2r_H(p)
+                return r * r + 2 * d * d - r * dd
+        else:
+            def den(p):
+                r, d, dd = self.r(p), self.r_theta(p), self.r_thetatheta(p)
+                return r * r + 2 * d * d - r * dd
+        phi = _leg_samples(self.law)
+        D = den(phi)
+        rho = f(phi)
+        convex = D > 0
+        concave = D < 0
+        cx = _extreme(f, phi[convex], rho[convex], "min") if np.any(convex) else (math.nan, math.inf)
+        # concave intervals from sign changes of the denominator
+        intervals = []
+        if np.any(concave):
+            s = np.sign(D)
+            edges = []
+            for k in range(len(phi) - 1):
+                if s[k] != s[k + 1] and s[k] != 0 and s[k + 1] != 0:
+                    edges.append(brentq(lambda p: float(den(p)), phi[k], phi[k + 1], xtol=1e-14))
+            lo = -math.pi / 4
+            pts = [lo] + edges + [math.pi / 4]
+            for a, b in zip(pts[:-1], pts[1:]):
+                if den(0.5 * (a + b)) < 0:
+                    intervals.append((a, b))
+            absrho = np.abs(rho[concave])
+            cc = _extreme(lambda p: abs(float(f(p))), phi[concave], absrho, "min")
+            cc_phi, cc_rho = cc
+        else:
+            cc_phi, cc_rho = math.nan, math.inf
+        corners = [c for c in self.corners() if c.curve == curve and c.phi == math.pi / 4]
+        corner = corners[0] if corners else None
+        rho_convex_min = cx[1]
+        phi_convex = cx[0]
+        if corner is not None and corner.kind == "convex":
+            rho_convex_min, phi_convex = 0.0, corner.phi
+        if corner is not None and corner.kind == "concave":
+            cc_rho, cc_phi = 0.0, corner.phi
+            intervals = intervals or [(corner.phi, corner.phi)]
+        return CurvatureSummary(
+            curve=curve, rho_convex_min=float(rho_convex_min), phi_convex_min=float(phi_convex),
+            concave=bool(intervals) or corner is not None and corner.kind == "concave",
+            rho_concave_min=float(cc_rho), phi_concave_min=float(cc_phi),
+            concave_intervals=tuple(intervals), corner=corner,
+        )
+
+
+@dataclass(frozen=True)
+class CurvatureSummary:
+    """Radius of curvature of one pitch curve over one leg (angles: driven phi, leg-local).
+
+    rho_convex_min: smallest radius on convex parts (0 at a convex corner);
+    rho_concave_min: smallest |radius| on concave parts (inf if none, 0 at a
+    concave corner); concave_intervals: leg-local phi intervals where concave.
+    """
+
+    curve: str
+    rho_convex_min: float
+    phi_convex_min: float
+    concave: bool
+    rho_concave_min: float
+    phi_concave_min: float
+    concave_intervals: tuple
+    corner: Corner | None
+
+
+# =========================================================================== closure
+def perimeter_per_mm(law) -> float:
+    """Driven pitch-curve perimeter for L = 1 mm (the perimeter is linear in L)."""
+    return PitchCurves(law, 1.0).perimeter_driven()
+
+
+def _whole_teeth(name: str, z, n: int) -> int:
+    fz = require_finite(name, z)
+    if fz != round(fz) or fz < 1:
+        raise InputError(name, z, "tooth count must be a whole number >= 1")
+    z = int(round(fz))
+    if z % n:
+        lo, hi = (z // n) * n, (z // n + 1) * n
+        raise InputError(name, z, f"must be a multiple of n = {n} so the driver has z_H/n whole teeth",
+                         f"nearest valid: {lo if lo > 0 else hi}, {hi}")
+    return z
+
+
+def centre_distance(law, m: float, z_H: int) -> float:
+    """L such that the driven pitch curve carries z_H teeth of module m: perimeter = pi m z_H (SPEC Trap 3).
+
+    The driver then carries z_H / n teeth (its perimeter is the driven's / n).
+    """
+    m = require_positive("m", m, "mm")
+    z_H = _whole_teeth("z_H", z_H, law.n)
+    return math.pi * m * z_H / perimeter_per_mm(law)
+
+
+def module_for(law, L: float, z_H: int) -> float:
+    """Module m that closes the driven curve with z_H teeth at centre distance L."""
+    L = require_positive("L", L, "mm")
+    z_H = _whole_teeth("z_H", z_H, law.n)
+    return L * perimeter_per_mm(law) / (math.pi * z_H)
+
+
+def driven_teeth(law, L: float, m: float) -> int:
+    """Whole driven tooth count for centre distance L and module m, or InputError naming the nearest valid ones."""
+    L = require_positive("L", L, "mm")
+    m = require_positive("m", m, "mm")
+    P1 = perimeter_per_mm(law)
+    z = L * P1 / (math.pi * m)
+    n = law.n
+    if abs(z - round(z)) < TOOTH_COUNT_TOL and round(z) % n == 0 and round(z) > 0:
+        return int(round(z))
+    lo = max(n, int(math.floor(z / n)) * n)
+    hi = lo + n if lo * 1.0 < z else lo
+    hi = max(hi, int(math.ceil(z / n)) * n)
+    parts = []
+    for zz in sorted({lo, hi}):
+        parts.append(f"z_H = {zz}: L = {math.pi * m * zz / P1:.4f} mm at m = {m:g}, "
+                     f"or m = {L * P1 / (math.pi * zz):.5f} mm at L = {L:g}")
+    raise InputError("L", L, f"gives z_H = {z:.4f} teeth of m = {m:g}, not a whole multiple of n = {n}",
+                     "nearest valid: " + "; ".join(parts))
+
+
+# =========================================================================== generability
+@dataclass(frozen=True)
+class CutterSpec:
+    """Generating tools: ISO 53 rack (alpha, h_a*) with profile shifts, optional shaper.
+
+    m: module (mm); alpha: pressure angle (rad); h_a: addendum coefficient h_a*
+    of the generated tooth; x: profile shift coefficient of the driver, x_H of
+    the driven wheel; z0: tooth count of a shaper (pinion) cutter for concave
+    parts (None: no shaper, concave parts are not allowed).
+    """
+
+    m: float
+    alpha: float = math.radians(20.0)
+    h_a: float = 1.0
+    x: float = 0.0
+    x_H: float = 0.0
+    z0: int | None = None
+
+    def __post_init__(self):
+        object.__setattr__(self, "m", require_positive("m", self.m, "mm"))
+        a = require_finite("alpha", self.alpha)
+        if not 0 < a < math.pi / 2:
+            raise InputError("alpha", self.alpha, "pressure angle must be in (0, pi/2) rad")
+        object.__setattr__(self, "h_a", require_positive("h_a", self.h_a))
+        object.__setattr__(self, "x", require_finite("x", self.x))
+        object.__setattr__(self, "x_H", require_finite("x_H", self.x_H))
+        if self.z0 is not None:
+            z0 = require_finite("z0", self.z0)
+            if z0 != round(z0) or z0 < 6:
+                raise InputError("z0", self.z0, "shaper cutter tooth count must be a whole number >= 6")
+            object.__setattr__(self, "z0", int(round(z0)))
+
+    def rho_limit(self, x: float) -> float:
+        """Rack undercut limit rho >= (h_a* - x) m / sin^2 alpha (SPEC §3 Trap 2)."""
+        return (self.h_a - x) * self.m / math.sin(self.alpha) ** 2
+
+    @property
+    def r0(self) -> float:
+        """Shaper cutter pitch radius m z0 / 2 (inf if no shaper)."""
+        return math.inf if self.z0 is None else self.m * self.z0 / 2
+
+
+@dataclass(frozen=True)
+class CurveCheck:
+    """Generability of one pitch curve."""
+
+    curve: str
+    rho_convex_min: float
+    rho_limit: float
+    concave: bool
+    rho_concave_min: float
+    r0: float
+    ok: bool
+    reason: str
+
+
+def _check_curve(cs: CurvatureSummary, cutter: CutterSpec, x: float) -> CurveCheck:
+    lim = cutter.rho_limit(x)
+    reasons = []
+    if cs.rho_convex_min < lim:
+        reasons.append(f"{cs.curve}: convex rho_min {cs.rho_convex_min:.3f} mm < rack undercut limit {lim:.3f} mm")
+    if cs.concave:
+        if cutter.z0 is None:
+            reasons.append(f"{cs.curve}: concave (|rho| >= {cs.rho_concave_min:.3f} mm) and no shaper cutter z0 given")
+        elif not cutter.r0 < cs.rho_concave_min:
+            reasons.append(f"{cs.curve}: concave |rho|_min {cs.rho_concave_min:.3f} mm <= shaper pitch radius "
+                           f"{cutter.r0:.3f} mm")
+    return CurveCheck(curve=cs.curve, rho_convex_min=cs.rho_convex_min, rho_limit=lim, concave=cs.concave,
+                      rho_concave_min=cs.rho_concave_min, r0=cutter.r0, ok=not reasons,
+                      reason="; ".join(reasons))
+
+
+@dataclass(frozen=True)
+class Generability:
+    driver: CurveCheck
+    driven: CurveCheck
+
+    @property
+    def ok(self) -> bool:
+        return self.driver.ok and self.driven.ok
+
+
+def check_generable(pair: PitchCurves, cutter: CutterSpec) -> Generability:
+    """Both pitch curves against the rack undercut limit (convex) and shaper / concavity (concave)."""
+    return Generability(
+        driver=_check_curve(pair.curvature("driver"), cutter, cutter.x),
+        driven=_check_curve(pair.curvature("driven"), cutter, cutter.x_H),
+    )
+
+
+@dataclass(frozen=True)
+class SmoothingDesign:
+    """The chosen smoothing: law, centre distance, checks and the price (hub speed ripple)."""
+
+    law: SmoothedWalkingLaw
+    delta: float
+    L: float
+    z_H: int
+    z: int
+    cutter: CutterSpec
+    generability: Generability
+    ripple: HubSpeedRipple
+
+    @property
+    def pair(self) -> PitchCurves:
+        return PitchCurves(self.law, self.L)
+
+    @property
+    def closure_error(self) -> float:
+        """|theta_s(2 pi) - 2 pi n| (rad)."""
+        return abs(float(self.law.theta(2 * math.pi)) - 2 * math.pi * self.law.n)
+
+
+def _evaluate(law: WalkingLaw, delta: float, cutter: CutterSpec, z_H: int):
+    try:
+        sl = SmoothedWalkingLaw(law, delta)
+    except InputError:
+        return None, None, None
+    L = math.pi * cutter.m * z_H / perimeter_per_mm(sl)
+    return sl, L, check_generable(PitchCurves(sl, L), cutter)
+
+
+def choose_smoothing(law: WalkingLaw, cutter: CutterSpec, z_H: int,
+                     delta_max: float = DELTA_MAX_DEFAULT,
+                     rtol: float = SMOOTHING_DELTA_RTOL) -> SmoothingDesign:
+    """Smallest blend half-width delta <= delta_max keeping both pitch curves generable.
+
+    The centre distance follows from closure at each delta: L = pi m z_H / perimeter.
+    Search: geometric scan of delta, then bisection to rtol between the last
+    failing and the first passing delta.  Raises InputError with the numbers
+    (curvature reached, limit, the profile shift / tooth count / smoothing that
+    would work) when no delta up to delta_max works.
+    """
+    if not isinstance(law, WalkingLaw):
+        raise InputError("law", law, "must be a WalkingLaw")
+    _check_n_closes(law.n)
+    z_H = _whole_teeth("z_H", z_H, law.n)
+    delta_max = require_positive("delta_max", delta_max, "rad")
+    if delta_max > math.pi / 4:
+        raise InputError("delta_max", delta_max, f"must be <= pi/4 = {math.pi / 4:.6f} rad")
+    grid = np.geomspace(1e-3, delta_max, 40)
+    prev_bad = 0.0
+    found = None
+    for d in grid:
+        sl, L, g = _evaluate(law, float(d), cutter, z_H)
+        if g is not None and g.ok:
+            found = float(d)
+            break
+        prev_bad = float(d)
+    if found is None:
+        raise _no_smoothing_error(law, cutter, z_H, delta_max)
+    lo, hi = prev_bad, found
+    while hi - lo > rtol * hi:
+        mid = 0.5 * (lo + hi)
+        sl, L, g = _evaluate(law, mid, cutter, z_H)
+        if g is not None and g.ok:
+            hi = mid
+        else:
+            lo = mid
+    sl, L, g = _evaluate(law, hi, cutter, z_H)
+    return SmoothingDesign(law=sl, delta=hi, L=L, z_H=z_H, z=z_H // law.n, cutter=cutter,
+                           generability=g, ripple=hub_speed_ripple(sl))
+
+
+def _no_smoothing_error(law, cutter, z_H, delta_max) -> InputError:
+    sl, L, g = _evaluate(law, delta_max, cutter, z_H)
+    bits = []
+    if g is None:
+        return InputError("delta_max", delta_max, "the blend makes U <= 0 before the curves become generable")
+    s2 = math.sin(cutter.alpha) ** 2
+    for chk, x, name in ((g.driver, cutter.x, "x"), (g.driven, cutter.x_H, "x_H")):
+        if chk.ok:
+            continue
+        if chk.rho_convex_min < chk.rho_limit:
+            x_need = cutter.h_a - chk.rho_convex_min * s2 / cutter.m
+            # rho and L scale with z_H at fixed m: z_H >= z_H * limit / rho_min
+            z_need = math.ceil(z_H * chk.rho_limit / chk.rho_convex_min / law.n) * law.n if chk.rho_convex_min > 0 else None
+            m_max = chk.rho_convex_min * s2 / (cutter.h_a - x) if cutter.h_a > x else math.inf
+            bits.append(
+                f"{chk.curve}: convex rho_min {chk.rho_convex_min:.3f} mm < undercut limit {chk.rho_limit:.3f} mm; "
+                f"works with {name} >= {x_need:.3f}, or z_H >= {z_need} at m = {cutter.m:g}, "
+                f"or m <= {m_max:.4f} mm at L = {L:.3f} mm"
+            )
+        if chk.concave and not chk.r0 < chk.rho_concave_min:
+            z0_max = math.ceil(2 * chk.rho_concave_min / cutter.m) - 1
+            bits.append(f"{chk.curve}: concave |rho|_min {chk.rho_concave_min:.3f} mm needs a shaper with "
+                        f"z0 <= {z0_max} (r0 < |rho|)")
+    # the smallest smoothing that would work beyond delta_max
+    more = ""
+    if delta_max < math.pi / 4:
+        for d in np.linspace(delta_max, math.pi / 4, 25)[1:]:
+            s, LL, gg = _evaluate(law, float(d), cutter, z_H)
+            if gg is not None and gg.ok:
+                more = f"; delta = {d:.4f} rad would work"
+                break
+        else:
+            more = "; no delta up to pi/4 works"
+    return InputError("delta_max", delta_max,
+                      "no blend half-width up to delta_max makes both pitch curves generable",
+                      " | ".join(bits) + more)

@@ -1,0 +1,114 @@
+"""Clamped cubic B-spline fitting of exact curves to a guaranteed tolerance.
+
+numpy/scipy only.  Method: cubic interpolation at chord-length parameters (not-a-knot end
+conditions; scipy's knot vector is clamped, so the first/last poles are the end points
+exactly), with adaptive refinement: between every two interpolation points the exact curve
+is checked at 1/4, 1/2, 3/4 of the interval by its true normal distance to the spline (foot
+point by Newton projection), and the interval is split where the distance exceeds half the
+tolerance.  The result deviates from the exact curve by ≤ ``policy.SPLINE_FIT_TOL_MM``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy.interpolate import make_interp_spline
+
+from ..errors import require
+from ..policy import SPLINE_FIT_TOL_MM
+from .profile import Spline
+
+__all__ = ["fit_curve", "fit_points", "spline_deviation"]
+
+
+def _chord_params(P: np.ndarray) -> np.ndarray:
+    d = np.linalg.norm(np.diff(P, axis=0), axis=1)
+    return np.concatenate([[0.0], np.cumsum(d)])
+
+
+def _interp(P: np.ndarray):
+    t = _chord_params(P)
+    if np.any(np.diff(t) <= 0):
+        raise ValueError("coincident consecutive points")
+    k = 3 if len(P) >= 4 else len(P) - 1
+    return make_interp_spline(t, P, k=k), t
+
+
+def _project(bs, Q: np.ndarray, t0: np.ndarray, lo: float, hi: float, iters: int = 6) -> np.ndarray:
+    """Distance of points Q to the spline curve, Newton foot-point search from t0."""
+    d1, d2 = bs.derivative(1), bs.derivative(2)
+    t = t0.copy()
+    for _ in range(iters):
+        r = bs(t) - Q
+        g1 = d1(t)
+        g2 = d2(t)
+        f = np.einsum("ij,ij->i", r, g1)
+        fp = np.einsum("ij,ij->i", g1, g1) + np.einsum("ij,ij->i", r, g2)
+        t = np.clip(t - f / np.where(np.abs(fp) > 1e-300, fp, 1e-300), lo, hi)
+    return np.linalg.norm(bs(t) - Q, axis=1)
+
+
+def _to_spline(bs) -> Spline:
+    """profile.Spline of a scipy BSpline (degree 3; fewer than 4 points give a lower degree)."""
+    return Spline(bs.t, bs.c, int(bs.k))
+
+
+def fit_curve(func, u0: float, u1: float, tol: float = SPLINE_FIT_TOL_MM, n0: int = 12,
+              max_points: int = 4000) -> Spline:
+    """Clamped cubic B-spline through the exact curve ``func(u) -> (n,2)`` on [u0, u1],
+    within ``tol`` (mm) of it everywhere checked (1/4, 1/2, 3/4 of every interval)."""
+    require(tol > 0, "tol", tol, "must be > 0")
+    v = np.linspace(0.0, 1.0, n0)  # normalised parameter (u1 < u0 allowed)
+    while True:
+        u = u0 + (u1 - u0) * v
+        P = func(u)
+        bs, t = _interp(P)
+        fr = np.array([0.25, 0.5, 0.75])
+        uq = (u[:-1, None] + fr[None, :] * np.diff(u)[:, None]).ravel()
+        tq = (t[:-1, None] + fr[None, :] * np.diff(t)[:, None]).ravel()
+        err = _project(bs, func(uq), tq, t[0], t[-1]).reshape(-1, 3).max(axis=1)
+        bad = err > 0.5 * tol
+        if not np.any(bad):
+            return _to_spline(bs)
+        if len(u) + bad.sum() > max_points:
+            raise RuntimeError(f"spline fit did not reach {tol} mm with {max_points} points")
+        v = np.sort(np.concatenate([v, 0.5 * (v[:-1] + v[1:])[bad]]))
+
+
+def fit_points(points, tol: float = SPLINE_FIT_TOL_MM, n0: int = 12) -> Spline:
+    """Clamped cubic B-spline through a subset of an ordered dense point array such that every
+    point of the array lies within ``tol`` of the spline (normal distance).  The exact curve
+    between the points is not known here: give points dense enough, or use :func:`fit_curve`."""
+    P = np.asarray(points, float)
+    require(P.ndim == 2 and P.shape[1] == 2 and len(P) >= 2, "points", P.shape, "must be (n >= 2, 2)")
+    n = len(P)
+    idx = np.unique(np.linspace(0, n - 1, min(n, n0)).round().astype(int))
+    while True:
+        bs, t = _interp(P[idx])
+        # parameter guesses for every point: chord length within its interval
+        tt = np.empty(n)
+        for a, b, ta, tb in zip(idx[:-1], idx[1:], t[:-1], t[1:]):
+            seg = _chord_params(P[a:b + 1])
+            tt[a:b + 1] = ta + (tb - ta) * seg / seg[-1]
+        err = _project(bs, P, tt, t[0], t[-1])
+        if np.all(err <= tol):
+            return _to_spline(bs)
+        bad_iv = np.unique(np.searchsorted(idx, np.nonzero(err > tol)[0]) - 1)
+        bad_iv = bad_iv[(bad_iv >= 0) & (bad_iv < len(idx) - 1)]
+        mids = (idx[bad_iv] + idx[bad_iv + 1]) // 2
+        new = np.unique(np.concatenate([idx, mids]))
+        if len(new) == len(idx):
+            return _to_spline(make_interp_spline(_chord_params(P), P, k=3))
+        idx = new
+
+
+def spline_deviation(spline: Spline, func, u0: float, u1: float, n: int = 2000) -> float:
+    """Largest normal distance of n exact points func(u) to the spline (for tests/reports)."""
+    from scipy.interpolate import BSpline
+
+    bs = BSpline(spline.knots, spline.poles, spline.degree)
+    Q = func(np.linspace(u0, u1, n))
+    tl = np.linspace(spline.knots[0], spline.knots[-1], 4 * n)
+    S = bs(tl)
+    # nearest sampled spline point as the start of the projection
+    j = np.array([np.argmin(np.linalg.norm(S - q, axis=1)) for q in Q])
+    return float(_project(bs, Q, tl[j], spline.knots[0], spline.knots[-1]).max())

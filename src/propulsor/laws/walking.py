@@ -1,0 +1,195 @@
+"""Drive law of the driving wheel-walking propulsor (seeds 000 and 002).
+
+One leg supports the hub for a quarter turn of the carrier (driven wheel),
+phi in [-pi/4, pi/4]; four legs share the turn, so every quantity below is the
+periodic extension with period pi/2 (SPEC §3, Trap 1): w = wrap(phi) in
+[-pi/4, pi/4) and cos 2w, never cos 2phi over the whole turn.
+
+    Y01 = a - b + c = A                         seed 000, eq. 1
+    dX01/dphi = A + 3 b cos 2w                  seed 000, eq. 2
+    U(phi) = d theta / d phi = u (A + 3 b cos 2w) / A      seed 000, eq. 14-15
+    u = n pi A / (A pi + 6 b)                   seed 000, eq. 10 (n = 2), seed 002 (n = 4)
+    theta(phi) = (u/A) (A phi + 3b/2 sin 2w + 3 b k),  phi = w + k pi/2
+                                                seed 000, eq. 9/11 with the periodic wrap
+    v / omega = (dX01/dphi) / U = A / u = const seed 000, text after eq. 3
+
+All lengths in mm, angles in rad.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from propulsor.errors import InputError, require_finite
+
+#: one leg's support phase: the law's period in the driven angle phi (rad)
+LEG_PERIOD = math.pi / 2
+#: number of legs sharing one turn of the carrier
+LEGS = 4
+
+
+def wrap_leg(phi):
+    """Leg-local angle w = wrap(phi) into [-pi/4, pi/4) (SPEC §3, Trap 1)."""
+    phi = np.asarray(phi, dtype=float)
+    return phi - LEG_PERIOD * np.floor((phi + math.pi / 4) / LEG_PERIOD)
+
+
+def leg_index(phi):
+    """Whole number k of leg periods with phi = w + k pi/2, w = wrap_leg(phi)."""
+    phi = np.asarray(phi, dtype=float)
+    return np.floor((phi + math.pi / 4) / LEG_PERIOD)
+
+
+def _length(name: str, value) -> float:
+    v = require_finite(name, value)
+    if v < 0:
+        raise InputError(name, value, "a length must be >= 0 mm")
+    return v
+
+
+@dataclass(frozen=True)
+class WalkingLaw:
+    """Constant-hub-speed gear-ratio law of the driving wheel-walking propulsor.
+
+    a: hub-to-crank axis distance (mm), b: crank length (mm), c: shoe stand
+    length (mm), n: whole driver turns per driven (carrier) turn.
+    Seed 000: a = 60, b = 100, c = 360, n = 2.  Seed 002: a = 100, b = 50,
+    c = 236.5, n = 4.
+    """
+
+    a: float
+    b: float
+    c: float
+    n: int
+
+    def __post_init__(self):
+        a = _length("a", self.a)
+        b = _length("b", self.b)
+        c = _length("c", self.c)
+        object.__setattr__(self, "a", a)
+        object.__setattr__(self, "b", b)
+        object.__setattr__(self, "c", c)
+        nf = require_finite("n", self.n)
+        if nf != round(nf):
+            raise InputError("n", self.n, "driver turns per driven turn must be a whole number")
+        if nf < 1:
+            raise InputError("n", self.n, "driver turns per driven turn must be >= 1")
+        object.__setattr__(self, "n", int(round(nf)))
+        A = a - b + c
+        if not A > 0:
+            raise InputError(
+                "a - b + c", A, "hub height Y01 = a - b + c must be > 0 mm, else the law is not positive"
+            )
+        # min of A + 3b cos 2w over w in [-pi/4, pi/4) is min(A, A + 3b) (cos 2w in [0, 1])
+        U_min = self.u * min(A, A + 3 * b) / A
+        if not U_min > 0:
+            raise InputError("U_min", U_min, "gear ratio U(phi) must be > 0 everywhere")
+
+    # ---- constants -----------------------------------------------------------
+    @property
+    def A(self) -> float:
+        """Hub height Y01 = a - b + c (mm), seed 000 eq. 1."""
+        return self.a - self.b + self.c
+
+    @property
+    def Y01(self) -> float:
+        """Hub height above the support surface (mm), seed 000 eq. 1."""
+        return self.A
+
+    @property
+    def u(self) -> float:
+        """Reduced ratio coefficient u = n pi A / (A pi + 6 b), seed 000 eq. 10 generalised to n."""
+        A = self.A
+        return self.n * math.pi * A / (A * math.pi + 6 * self.b)
+
+    @property
+    def hub_speed_ratio(self) -> float:
+        """v / omega = Y01 / u (mm per rad of the driver), constant; seed 000 after eq. 8."""
+        return self.A / self.u
+
+    @property
+    def U_min(self) -> float:
+        """Smallest ratio (at leg hand-over w = +-pi/4 when b > 0)."""
+        return self.u * min(self.A, self.A + 3 * self.b) / self.A
+
+    @property
+    def U_max(self) -> float:
+        """Largest ratio (mid-support w = 0 when b > 0)."""
+        return self.u * max(self.A, self.A + 3 * self.b) / self.A
+
+    # ---- functions of the driven angle phi ------------------------------------
+    def dX01_dphi(self, phi):
+        """Horizontal hub speed analogue dX01/dphi = A + 3 b cos 2w (mm/rad), seed 000 eq. 2."""
+        return self.A + 3 * self.b * np.cos(2 * wrap_leg(phi))
+
+    def U(self, phi):
+        """Gear ratio U = d theta / d phi = u (A + 3b cos 2w)/A, seed 000 eq. 15 (periodic)."""
+        return self.u * self.dX01_dphi(phi) / self.A
+
+    def dU_dphi(self, phi):
+        """dU/dphi = -6 b u sin 2w / A (jumps at w = +-pi/4: SPEC Trap 2)."""
+        return -6 * self.b * self.u * np.sin(2 * wrap_leg(phi)) / self.A
+
+    def d2U_dphi2(self, phi):
+        """d2U/dphi2 = -12 b u cos 2w / A."""
+        return -12 * self.b * self.u * np.cos(2 * wrap_leg(phi)) / self.A
+
+    def theta(self, phi):
+        """Driver angle theta(phi) = integral_0^phi U dphi, exact closed form with the wrap.
+
+        Seed 000 eq. 9/11 per leg; each whole leg period adds the integral of
+        cos 2w over [-pi/4, pi/4), which is 1, so theta(2 pi) = 2 pi n exactly.
+        """
+        w = wrap_leg(phi)
+        k = leg_index(phi)
+        phi = np.asarray(phi, dtype=float)
+        return (self.u / self.A) * (self.A * phi + 1.5 * self.b * np.sin(2 * w) + 3 * self.b * k)
+
+    def hub_speed(self, phi):
+        """v / omega = (dX01/dphi) / U (mm per rad of the driver); constant = A/u for this law."""
+        return self.dX01_dphi(phi) / self.U(phi)
+
+    def phi_of_theta(self, theta, tol: float = 1e-14):
+        """Inverse of theta(phi) (Newton on the monotone theta, U > 0)."""
+        theta = np.asarray(theta, dtype=float)
+        phi = theta * (2 * math.pi) / (2 * math.pi * self.n)
+        for _ in range(60):
+            step = (self.theta(phi) - theta) / self.U(phi)
+            phi = phi - step
+            if np.all(np.abs(step) < tol):
+                break
+        return phi
+
+    # ---- the papers' reading without the wrap (Trap 1 illustration) ------------
+    def theta_unwrapped(self, phi):
+        """theta if cos 2phi were (wrongly) used over the whole turn (SPEC Trap 1).
+
+        u/A (A phi + 3b/2 sin 2phi): over a full turn it gives u * 2 pi, i.e.
+        1.25 driver turns for seed 000 instead of 2.  Only for demonstration.
+        """
+        phi = np.asarray(phi, dtype=float)
+        return (self.u / self.A) * (self.A * phi + 1.5 * self.b * np.sin(2 * phi))
+
+
+@dataclass(frozen=True)
+class HubSpeedRipple:
+    """Hub speed v/omega over the cycle: ripple = (max - min) / mean and where it sits.
+
+    mean is the time (driver-angle) mean: leg travel / driver angle per leg, which
+    is A/u for every law that closes (n whole driver turns per driven turn).
+    phi_min / phi_max: driven angles (rad) of the extremes within one leg.
+    """
+
+    ripple: float
+    mean: float
+    v_min: float
+    v_max: float
+    phi_min: float
+    phi_max: float
+
+
+SEED_000 = dict(a=60.0, b=100.0, c=360.0, n=2)
+SEED_002 = dict(a=100.0, b=50.0, c=236.5, n=4)

@@ -1,0 +1,147 @@
+"""OutputWriter: the one place where a part's solids, profiles, tables and plots
+become files, and where every shared check runs on them.
+
+A part module computes; it hands results to the writer:
+
+    w.derived.update(...)             derived values for manifest/report
+    w.add_checks([...])               engineering checks of the part
+    w.add_solid(name, solid, genus)   STEP + STL + 3MF, B-rep/STEP/mesh checks
+    w.add_assembly(name, components)  assembly STEP with named, placed components
+    w.add_dxf(name, cut, ref)         DXF (CUT / REF layers, mm)
+    w.add_table(name, columns, rows)  CSV under tables/
+    w.add_plot(name, fig)             PNG under plots/
+    w.add_note(text)                  a paragraph of the report
+    w.finish()                        report.md + manifest.json; returns the failures
+"""
+
+from __future__ import annotations
+
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from ..checks.result import Check
+from ..params import params_to_dict
+
+
+@dataclass
+class SolidRecord:
+    name: str
+    volume_mm3: float
+    files: dict = field(default_factory=dict)
+
+
+class OutputWriter:
+    def __init__(self, folder: Path, part: str, params, progress=None, source: Path | None = None):
+        self.folder = Path(folder)
+        self.part = part
+        self.params = params
+        self.progress = progress or (lambda msg: None)
+        self.source = source
+        self.title = part
+        self.meta: dict[str, Any] = {}
+        if source is not None and Path(source).is_file():
+            self.meta = tomllib.loads(Path(source).read_text(encoding="utf-8")).get("meta", {})
+            self.title = self.meta.get("title", part)
+        self.expected_failures = set(self.meta.get("expected_failures", []))
+        self.derived: dict[str, Any] = {}
+        self.checks: list[Check] = []
+        self.notes: list[str] = []
+        self.solids: list[SolidRecord] = []
+        self.tables: list[str] = []
+        self.plots: list[str] = []
+
+    # -- helpers -----------------------------------------------------------------
+    def path(self, rel: str) -> Path:
+        p = self.folder / rel
+        p.parent.mkdir(parents=True, exist_ok=True)
+        return p
+
+    def add_checks(self, checks) -> None:
+        for c in checks:
+            self.checks.append(c if isinstance(c, Check) else Check(**c))
+
+    def add_note(self, text: str) -> None:
+        self.notes.append(text)
+
+    # -- solids ------------------------------------------------------------------
+    def add_solid(self, name: str, solid, expected_genus: int | None = None) -> SolidRecord:
+        """Write STEP, STL and 3MF of one solid and run every shared check on them."""
+        from ..checks.brep import brep_checks, step_roundtrip_check
+        from ..checks.mesh import mesh_checks
+        from ..export.mesh import tessellate, write_3mf, write_stl
+        from ..export.step import write_step
+
+        self.progress(f"{name}: B-rep checks")
+        self.add_checks(brep_checks(solid, name))
+        volume = float(solid.Volume())
+        step = self.path(f"{name}.step")
+        write_step(solid, step, name)
+        self.add_checks([step_roundtrip_check(solid, step, name)])
+        self.progress(f"{name}: tessellation and mesh checks")
+        mesh = tessellate(solid)
+        stl, tmf = self.path(f"{name}.stl"), self.path(f"{name}.3mf")
+        write_stl(mesh, stl)
+        write_3mf(mesh, tmf, name)
+        self.add_checks(mesh_checks(mesh, name, expected_genus=expected_genus, brep_volume=volume))
+        rec = SolidRecord(name, volume, {"step": step.name, "stl": stl.name, "3mf": tmf.name})
+        self.solids.append(rec)
+        self.derived[f"{name}_volume_mm3"] = volume
+        return rec
+
+    def add_assembly(self, name: str, components) -> Path:
+        """components: list of (component name, solid, (x, y, z) mm, rotation about z in rad)."""
+        from ..export.step import write_assembly_step
+
+        p = self.path(f"{name}.step")
+        self.progress(f"{name}: assembly STEP ({len(components)} components)")
+        write_assembly_step(p, components, name)
+        return p
+
+    # -- 2D, tables, plots --------------------------------------------------------
+    def add_dxf(self, name: str, cut_profiles, ref_curves=()) -> Path:
+        from ..export.dxf import write_dxf
+
+        p = self.path(f"{name}.dxf")
+        write_dxf(p, cut_profiles, list(ref_curves))
+        return p
+
+    def add_table(self, name: str, columns, rows) -> Path:
+        from ..export.tables import write_csv
+
+        p = self.path(f"tables/{name}.csv")
+        write_csv(p, columns, rows)
+        self.tables.append(f"tables/{name}.csv")
+        return p
+
+    def add_plot(self, name: str, fig) -> Path:
+        from ..export.plots import save_plot
+
+        p = self.path(f"plots/{name}.png")
+        save_plot(p, fig)
+        self.plots.append(f"plots/{name}.png")
+        return p
+
+    # -- the end -------------------------------------------------------------------
+    def failures(self) -> list[str]:
+        return [f"{c.name}: {c.message}" for c in self.checks
+                if not c.passed and c.name not in self.expected_failures]
+
+    def finish(self) -> list[str]:
+        """Write report.md and manifest.json; return the unexpected check failures."""
+        from ..export.manifest import write_manifest
+        from ..export.report import write_report
+
+        inputs = params_to_dict(self.params)
+        notes = list(self.notes)
+        expected = [c for c in self.checks if not c.passed and c.name in self.expected_failures]
+        if expected:
+            notes.append("Checks that fail as documented in the part file ([meta] expected_failures): "
+                         + ", ".join(c.name for c in expected) + ".")
+        self.progress("report and manifest")
+        write_report(self.folder / "report.md", title=self.title, part=self.part, inputs=inputs,
+                     derived=self.derived, checks=self.checks, tables=self.tables, plots=self.plots,
+                     notes=notes)
+        write_manifest(self.folder, part=self.part, inputs=inputs, derived=self.derived, checks=self.checks)
+        return self.failures()

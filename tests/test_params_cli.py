@@ -1,0 +1,98 @@
+"""Parameter loading and the command line's contract for bad input (exit 2, one line, nothing written)."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from propulsor.errors import InputError
+from propulsor.params import describe_params, load_params, param, read_part_file
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@dataclasses.dataclass
+class _P:
+    module_mm: float = param(2.0, "mm", "module", min=0, min_exclusive=True)
+    z: int = param(20, "", "teeth", min=5, integer=True)
+    method: str = param("generated", "", "tooth method", choices=["generated", "sectors"])
+    keep: bool = param(False)
+
+    def validate(self):
+        if self.z * self.module_mm > 1000:
+            raise InputError("z", self.z, f"z·m must be <= 1000 mm (module_mm = {self.module_mm})")
+
+
+def test_load_params_defaults_and_values():
+    p = load_params(_P, {"module_mm": 3, "z": 30})
+    assert p.module_mm == 3.0 and isinstance(p.module_mm, float)
+    assert p.z == 30 and p.method == "generated"
+
+
+@pytest.mark.parametrize(
+    "mapping, name, fragment",
+    [
+        ({"module_mm": -1.0}, "module_mm", "> 0"),
+        ({"module_mm": 0.0}, "module_mm", "> 0"),
+        ({"module_mm": math.nan}, "module_mm", "finite"),
+        ({"z": 3}, "z", ">= 5"),
+        ({"z": 20.5}, "z", "whole"),
+        ({"method": "drawn"}, "method", "one of"),
+        ({"keep": 1}, "keep", "true or false"),
+        ({"zz": 1}, "zz", "unknown parameter"),
+        ({"z": 600}, "z", "<= 1000"),
+    ],
+)
+def test_load_params_rejects(mapping, name, fragment):
+    with pytest.raises(InputError) as ei:
+        load_params(_P, mapping)
+    msg = str(ei.value)
+    assert msg.startswith(name + " = ") and fragment in msg and "\n" not in msg
+
+
+def test_describe_params_lists_units_and_limits():
+    rows = {r["name"]: r for r in describe_params(_P)}
+    assert rows["module_mm"]["unit"] == "mm" and rows["module_mm"]["limits"] == "> 0"
+    assert rows["z"]["limits"].startswith("whole") and rows["method"]["limits"].startswith("one of")
+
+
+def test_read_part_file_requires_type(tmp_path):
+    f = tmp_path / "x.toml"
+    f.write_text("module_mm = 2\n")
+    with pytest.raises(InputError, match="type"):
+        read_part_file(f)
+    f.write_text('type = "planetary_final_drive"\nmodule_mm = 2\n[meta]\ntitle = "t"\n')
+    assert read_part_file(f) == ("planetary_final_drive", {"module_mm": 2})
+
+
+def _run(*args, cwd=None):
+    return subprocess.run([sys.executable, "-m", "propulsor.cli", *args], capture_output=True, text=True,
+                          cwd=cwd or ROOT, timeout=600)
+
+
+def test_cli_unknown_part_type_exit2_nothing_written(tmp_path):
+    f = tmp_path / "bad.toml"
+    f.write_text('type = "warp_drive"\n')
+    out = tmp_path / "out"
+    r = _run("build", str(f), "--out", str(out))
+    assert r.returncode == 2
+    lines = [l for l in r.stderr.splitlines() if l.strip()]
+    assert len(lines) == 1 and "warp_drive" in lines[0]
+    assert not out.exists() and not any(tmp_path.glob(".out*"))
+
+
+def test_cli_missing_file_exit2(tmp_path):
+    r = _run("build", str(tmp_path / "nope.toml"), "--out", str(tmp_path / "o"))
+    assert r.returncode == 2 and "does not exist" in r.stderr
+
+
+def test_cli_list_names_part_files():
+    r = _run("list")
+    assert r.returncode == 0
+    for f in sorted((ROOT / "parts").glob("*.toml")):
+        assert f.name in r.stdout
