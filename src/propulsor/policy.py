@@ -33,6 +33,8 @@ ODE_ATOL = 1e-11
 ENVELOPE_SAMPLES_PER_FLANK = 200
 #: planetary interference sweep: steps per degree of carrier turn
 PLANETARY_SWEEP_STEPS_PER_DEG = 2
+#: chord tolerance of the gear outlines in the planetary sweep (clearances of tenths of a mm)
+PLANETARY_SWEEP_CHORD_TOL_MM = 1e-3
 
 # --- involute gear sheet / planetary set (gears/involute.py, gears/planetary.py) ------------
 #: least transverse contact ratio accepted (seed 004 Table 6, "рекомендованное торцовое перекрытие")

@@ -16,6 +16,7 @@ A part module computes; it hands results to the writer:
 
 from __future__ import annotations
 
+import dataclasses
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -23,6 +24,20 @@ from typing import Any
 
 from ..checks.result import Check
 from ..params import params_to_dict
+
+
+#: name suffix -> unit, for the report's derived-value table (names carry their units, e.g. a_w_mm)
+_SUFFIX_UNITS = (("_mm3", "mm³"), ("_mm2", "mm²"), ("_mm", "mm"), ("_deg", "deg"), ("_rad", "rad"),
+                 ("_mpa", "MPa"), ("_MPa", "MPa"), ("_kN", "kN"), ("_N", "N"), ("_Nm", "N·m"), ("_kg", "kg"),
+                 ("_s", "s"), ("_m", "m"), ("_K", "K"), ("_C", "°C"), ("_pct", "%"))
+
+
+def unit_from_name(name: str) -> str:
+    """The unit a quantity's name ends in ('' when it names none)."""
+    for suffix, unit in _SUFFIX_UNITS:
+        if name.endswith(suffix):
+            return unit
+    return ""
 
 
 @dataclass
@@ -51,6 +66,7 @@ class OutputWriter:
         self.solids: list[SolidRecord] = []
         self.tables: list[str] = []
         self.plots: list[str] = []
+        self.extra_files: list[str] = []  # assemblies and DXF, named in the report
 
     # -- helpers -----------------------------------------------------------------
     def path(self, rel: str) -> Path:
@@ -74,7 +90,8 @@ class OutputWriter:
         from ..export.step import write_step
 
         self.progress(f"{name}: B-rep checks")
-        self.add_checks(brep_checks(solid, name))
+        # the exact-vs-triangulated volume cross-check is made below on the exported mesh itself
+        self.add_checks(brep_checks(solid, name, cross_check_volume=False))
         volume = float(solid.Volume())
         step = self.path(f"{name}.step")
         write_step(solid, step, name)
@@ -97,6 +114,7 @@ class OutputWriter:
         p = self.path(f"{name}.step")
         self.progress(f"{name}: assembly STEP ({len(components)} components)")
         write_assembly_step(p, components, name)
+        self.extra_files.append(p.name)
         return p
 
     # -- 2D, tables, plots --------------------------------------------------------
@@ -105,6 +123,7 @@ class OutputWriter:
 
         p = self.path(f"{name}.dxf")
         write_dxf(p, cut_profiles, list(ref_curves))
+        self.extra_files.append(p.name)
         return p
 
     def add_table(self, name: str, columns, rows) -> Path:
@@ -135,13 +154,19 @@ class OutputWriter:
 
         inputs = params_to_dict(self.params)
         notes = list(self.notes)
+        report_inputs = {f.name: (inputs[f.name], f.metadata.get("unit", ""), f.metadata.get("doc", ""))
+                         for f in dataclasses.fields(self.params)}
+        report_derived = {k: (v, unit_from_name(k)) for k, v in self.derived.items()}
         expected = [c for c in self.checks if not c.passed and c.name in self.expected_failures]
         if expected:
             notes.append("Checks that fail as documented in the part file ([meta] expected_failures): "
                          + ", ".join(c.name for c in expected) + ".")
         self.progress("report and manifest")
-        write_report(self.folder / "report.md", title=self.title, part=self.part, inputs=inputs,
-                     derived=self.derived, checks=self.checks, tables=self.tables, plots=self.plots,
+        built = [f"`{r.name}` ({', '.join(r.files.values())}; volume {r.volume_mm3:.6g} mm³)" for r in self.solids]
+        built += [f"`{n}`" for n in self.extra_files]
+        intro = ("Built: " + "; ".join(built) + ".") if built else ""
+        write_report(self.folder / "report.md", title=self.title, part=self.part, intro=intro, inputs=report_inputs,
+                     derived=report_derived, checks=self.checks, tables=self.tables, plots=self.plots,
                      notes=notes)
         write_manifest(self.folder, part=self.part, inputs=inputs, derived=self.derived, checks=self.checks)
         return self.failures()
