@@ -170,3 +170,10 @@ def step_product_names(path: str | Path) -> list[str]:
     """Names of PRODUCT entities in a STEP file (for checks and tests)."""
     text = Path(path).read_text(encoding="latin-1")
     return re.findall(r"PRODUCT\(\s*'((?:[^']|'')*)'", text)
+
+
+def step_instance_names(path: str | Path) -> list[str]:
+    """Names of the component occurrences (NEXT_ASSEMBLY_USAGE_OCCURRENCE) of an assembly STEP;
+    one product used several times (identical planets) has one occurrence name per placement."""
+    text = Path(path).read_text(encoding="latin-1")
+    return re.findall(r"NEXT_ASSEMBLY_USAGE_OCCURRENCE\(\s*'(?:[^']|'')*'\s*,\s*'((?:[^']|'')*)'", text)

@@ -1,0 +1,190 @@
+"""The planetary final drive part end to end (issue 2): build through the command line, then
+measure the files it wrote — manifest, report, DXF, STEP assembly, sweep table — and the
+command line's contract for bad input (exit 2, one line, nothing written)."""
+
+from __future__ import annotations
+
+import csv
+import json
+import math
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from propulsor.checks.files import check_path
+from propulsor.cli import main
+from propulsor.export.dxf import read_dxf, read_dxf_loops
+from propulsor.export.step import read_step_solids, step_instance_names
+from propulsor.params import load_params, read_part_file
+from propulsor.parts.final_drive import FinalDriveParams, carrier_sweep, gear_outlines, planetary_set
+
+ROOT = Path(__file__).resolve().parents[1]
+PART = ROOT / "parts" / "final_drive.toml"
+THESIS = ROOT / "parts" / "final_drive_thesis.toml"
+
+
+@pytest.fixture(scope="module")
+def built(tmp_path_factory):
+    out = tmp_path_factory.mktemp("fd") / "final_drive"
+    rc = main(["build", str(PART), "--out", str(out), "-q"])
+    assert rc == 0
+    return out
+
+
+def _manifest(out):
+    return json.loads((out / "manifest.json").read_text())
+
+
+def test_every_check_passes_and_every_file_is_listed(built):
+    m = _manifest(built)
+    assert m["part"] == "planetary_final_drive" and m["passed"] is True
+    failed = [c["name"] for c in m["checks"] if not c["passed"]]
+    assert failed == []
+    names = {c["name"] for c in m["checks"]}
+    for solid in ("sun", "planet", "ring"):  # the shared checks ran on every solid
+        for what in ("BRepCheck_Analyzer valid", "STEP round trip", "genus", "self-intersecting triangle pairs",
+                     "volume vs B-rep", "edges not shared by exactly 2 faces"):
+            assert f"{solid}: {what}" in names
+    paths = {f["path"] for f in m["files"]}
+    for stem in ("sun", "planet", "ring"):
+        assert {f"{stem}.step", f"{stem}.stl", f"{stem}.3mf", f"{stem}.dxf"} <= paths
+    assert {"assembly.step", "tables/carrier_sweep.csv", "tables/sheet_sun_planet.csv",
+            "tables/sheet_planet_ring.csv", "tables/conditions.csv", "plots/mesh_clearance.png",
+            "plots/layout.png", "report.md"} <= paths
+
+
+def test_thesis_sheet_values_in_the_manifest(built):
+    d = _manifest(built)["derived"]
+    assert d["W_k_sun_mm"] == pytest.approx(79.464, abs=1e-3)
+    assert d["W_k_planet_mm"] == pytest.approx(80.025, abs=1e-3)
+    assert d["a_w_sun_planet_mm"] == pytest.approx(188.643, abs=1e-3)
+    assert abs(d["alpha_w_sun_planet_deg"] - (26 + 16 / 60 + 50 / 3600)) * 3600 <= 2.0
+    assert d["a_w_planet_ring_mm"] == pytest.approx(d["a_w_sun_planet_mm"], abs=1e-9)  # corrected ring
+    assert d["x_ring_used"] == pytest.approx(1.5, abs=1e-9)
+    assert d["ratio_i_1H"] == pytest.approx(4.5)
+
+
+def test_sweep_covers_a_carrier_turn_at_two_steps_per_degree_without_overlap(built):
+    rows = list(csv.DictReader((built / "tables" / "carrier_sweep.csv").open()))
+    psi = np.array([float(r["psi_deg"]) for r in rows])
+    assert len(psi) >= 720 and psi[0] == 0.0 and np.max(np.diff(psi)) <= 0.5 + 1e-12 and psi[-1] >= 359.5
+    meshes = [k[: -len("_clearance_mm")] for k in rows[0] if k.endswith("_clearance_mm")]
+    assert len(meshes) == 6  # sun–planet and planet–ring for each of the 3 planets
+    for mname in meshes:
+        ov = np.array([float(r[f"{mname}_overlap_mm2"]) for r in rows])
+        cl = np.array([float(r[f"{mname}_clearance_mm"]) for r in rows])
+        assert ov.max() == 0.0
+        # E_sn = 0.15 mm on each gear: the flank clearance is about E_sn·cos α_w·(d_w/d) ≈ 0.14 mm, never 0
+        assert 0.12 < cl.min() <= cl.max() < 0.16
+
+
+def test_dxf_units_layers_and_one_outer_loop(built):
+    for stem, holes in (("sun", 1), ("planet", 1), ("ring", 1 + 12)):
+        info = read_dxf(built / f"{stem}.dxf")
+        assert info["insunits"] == 4
+        loops = read_dxf_loops(built / f"{stem}.dxf")
+        assert len(loops) == 1 + holes
+        areas = sorted((abs(_area(p)) for p in loops), reverse=True)
+        assert areas[0] > sum(areas[1:])  # one outer loop holds the rest
+    # the planet's outline reaches exactly its tip diameter
+    loops = read_dxf_loops(built / "planet.dxf")
+    r = max(np.hypot(p[:, 0], p[:, 1]).max() for p in loops)
+    assert 2 * r == pytest.approx(_manifest(built)["derived"]["d_a_planet_mm"], abs=1e-6)
+
+
+def _area(p):
+    x, y = p[:, 0], p[:, 1]
+    return 0.5 * (np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+
+
+def test_assembly_names_and_places_its_components(built):
+    assert step_instance_names(built / "assembly.step") == ["sun", "planet_1", "planet_2", "planet_3", "ring"]
+    from OCP.BRepGProp import BRepGProp
+    from OCP.GProp import GProp_GProps
+
+    solids = read_step_solids(built / "assembly.step")
+    assert len(solids) == 5
+    a_w = _manifest(built)["derived"]["a_w_sun_planet_mm"]
+    centres = []
+    for s in solids:
+        g = GProp_GProps()
+        BRepGProp.VolumeProperties_s(s, g)
+        c = g.CentreOfMass()
+        centres.append((math.hypot(c.X(), c.Y()), math.degrees(math.atan2(c.Y(), c.X())), c.Z(), g.Mass()))
+    orbit = sorted(c for c in centres if c[0] > 1.0)  # planets (sun and ring are centred on the axis)
+    assert len(orbit) == 3
+    # planet centroids sit on the carrier radius a_w, 120° apart (the bore keyless planet is symmetric)
+    assert all(abs(r - a_w) < 1e-3 for r, *_ in orbit)
+    ang = sorted(a % 360 for _, a, *_ in orbit)
+    assert np.allclose(np.diff(ang), 120.0, atol=1e-3)
+    assert all(abs(z - 40.0) < 1e-6 for _, _, z, _ in orbit)  # mid face width of the 80 mm ring
+
+
+def test_check_command_passes_and_catches_broken_files(built, tmp_path):
+    sub = tmp_path / "sub"
+    sub.mkdir()
+    for f in ("sun.step", "sun.stl", "sun.3mf", "sun.dxf", "ring.dxf"):
+        shutil.copy(built / f, sub / f)
+    res = check_path(sub)
+    assert all(c.passed for cs in res.values() for c in cs), [str(c) for cs in res.values() for c in cs if not c.passed]
+    # a truncated STEP and an STL with a face missing are reported invalid
+    (sub / "sun.step").write_bytes((built / "sun.step").read_bytes()[:20000])
+    data = bytearray((built / "sun.stl").read_bytes())
+    n = int.from_bytes(data[80:84], "little")
+    data[80:84] = (n - 1).to_bytes(4, "little")
+    (sub / "sun.stl").write_bytes(bytes(data[:-50]))
+    assert main(["check", str(sub)]) == 1
+    res = check_path(sub)
+    assert any(not c.passed for c in res[str(sub / "sun.step")])
+    assert any(not c.passed for c in res[str(sub / "sun.stl")])
+
+
+def test_report_says_what_holds(built):
+    rep = (built / "report.md").read_text()
+    assert "PASSED: all" in rep and "Every condition of the set holds" in rep
+    assert "x3 = 1.50000" in rep and "| a_w_sun_planet_mm | 188.643 | mm |" in rep
+
+
+def test_thesis_ring_as_printed_interferes_on_the_finished_outlines():
+    """x_ring = 1.417 as printed: not coaxial, and the ring teeth enter the planets (0.14 mm)."""
+    _, mp = read_part_file(THESIS)
+    p = load_params(FinalDriveParams, mp)
+    ps = planetary_set(p)
+    fails = {c.name for c in ps.conditions() if not c.passed}
+    assert fails == {"coaxiality"}
+    p.n_planets = 1
+    sweeps = {s.name: s for s in carrier_sweep(p, ps, gear_outlines(p, ps), steps_per_deg=0.05)}
+    assert sweeps["mesh_sun_planet1"].overlap_mm2.max() == 0.0
+    ring = sweeps["mesh_planet1_ring"]
+    assert ring.overlap_mm2.min() > 1.0 and ring.clearance_mm.max() < -0.1
+
+
+def _write(tmp_path, **changes):
+    text = PART.read_text()
+    for k, v in changes.items():
+        lines = [ln for ln in text.splitlines() if not ln.startswith(f"{k} =")]
+        i = lines.index("[meta]")
+        lines.insert(i, f"{k} = {v}")
+        text = "\n".join(lines) + "\n"
+    f = tmp_path / "bad.toml"
+    f.write_text(text)
+    return f
+
+
+@pytest.mark.parametrize("changes, param", [
+    ({"module_mm": -10.0}, "module_mm"),
+    ({"z_sun": 3}, "z_sun"),
+    ({"x_sun": 1.6}, "x"),                # the sun tooth is pointed at its tip
+    ({"n_planets": 5}, "n_planets"),      # (16 + 56)/5 is not whole: the planets cannot be assembled
+    ({"module_mm": "nan"}, "module_mm"),
+])
+def test_bad_input_exit_2_one_line_nothing_written(tmp_path, capsys, changes, param):
+    f = _write(tmp_path, **changes)
+    out = tmp_path / "out"
+    rc = main(["build", str(f), "--out", str(out), "-q"])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert rc == 2
+    assert len(err) == 1 and param in err[0]
+    assert not out.exists() and not any(p.name.startswith(".out") for p in tmp_path.iterdir())
