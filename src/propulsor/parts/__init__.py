@@ -15,6 +15,7 @@ from ..errors import InputError
 #: part type name -> module (relative to this package)
 _MODULES = {
     "planetary_final_drive": "final_drive",
+    "cam_mover": "cam_mover",
 }
 
 
