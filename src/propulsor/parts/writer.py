@@ -62,7 +62,8 @@ class OutputWriter:
         self.expected_failures = set(self.meta.get("expected_failures", []))
         self.derived: dict[str, Any] = {}
         self.checks: list[Check] = []
-        self.notes: list[str] = []
+        notes = self.meta.get("notes", [])
+        self.notes: list[str] = [notes] if isinstance(notes, str) else [str(n) for n in notes]
         self.solids: list[SolidRecord] = []
         self.tables: list[str] = []
         self.plots: list[str] = []
