@@ -194,8 +194,31 @@ def test_failed_check_is_reported():
     assert any("wheel spindle" in c.name for c in bad)
 
 
+def test_hollow_axles_at_the_fillets():
+    # a bore through the journal / spindle raises the fillet stresses by d^4 / (d^4 - d_i^4)
+    solid = BalancerAnalysis(DESIGN).transitions()
+    g = BalancerGeometry(d_upper_bore=55.0, d_lower_bore=45.0)
+    hollow = BalancerAnalysis(DESIGN, g).transitions()
+    for a, b in zip(solid, hollow):
+        d, di = (110.0, 55.0) if a["where"].startswith("upper") else (90.0, 45.0)
+        k = d**4 / (d**4 - di**4)
+        assert b["sigma_nom"] == pytest.approx(k * a["sigma_nom"], rel=1e-12)
+        assert b["tau_nom"] == pytest.approx(k * a["tau_nom"], rel=1e-12)
+        assert b["sigma_vM_peak"] == pytest.approx(k * a["sigma_vM_peak"], rel=1e-12)
+    # hand check of the hollow section modulus at the upper fillet (elastic case)
+    from propulsor.laws.balancer_beam import _moment_about
+
+    c = BalancerAnalysis(DESIGN, g).cases[0]
+    M = _moment_about(c.loads, (0.0, 0.0, -g.b / 2.0))
+    W = math.pi * (110.0**4 - 55.0**4) / (32.0 * 110.0)
+    assert hollow[0]["sigma_nom"] == pytest.approx(math.hypot(M[0], M[1]) / W, rel=1e-12)
+    assert hollow[0]["tau_nom"] == pytest.approx(abs(M[2]) / (2.0 * W), rel=1e-12)
+
+
 # ---------------------------------------------------------------- bad input
 @pytest.mark.parametrize("kw, name", [
+    (dict(d_upper_bore=110.0), "d_upper_bore"),
+    (dict(d_lower_bore=-1.0), "d_lower_bore"),
     (dict(t_wall=30.0), "t_wall"),
     (dict(e_w=20.0), "e_w"),
     (dict(a1=200.0, a2=60.0), "a2"),

@@ -127,7 +127,10 @@ class BalancerGeometry:
     s_stop: stop-pad station; a1, a2: hull bearing centres along -z (a1 < a2);
     d_upper, D_upper, r_upper: upper axle journal, its shoulder (arm boss) and fillet;
     d_lower, D_lower, r_lower: wheel spindle, shoulder, fillet;
-    h_min, h_max: bounds of the equal-strength depth.
+    h_min, h_max: bounds of the equal-strength depth;
+    d_upper_bore, d_lower_bore: bores through the journal / spindle at the shoulder fillet
+    (0: solid), e.g. the torsion-bar retaining-bolt bore; the fillet check uses the hollow
+    section moduli pi (d^4 - d_i^4) / (32 d) and / (16 d).
     """
 
     b: float = 60.0
@@ -146,6 +149,8 @@ class BalancerGeometry:
     r_lower: float = 6.0
     h_min: float = 40.0
     h_max: float = 400.0
+    d_upper_bore: float = 0.0
+    d_lower_bore: float = 0.0
 
     def __post_init__(self):
         set_ = lambda k, v: object.__setattr__(self, k, v)  # noqa: E731
@@ -169,6 +174,11 @@ class BalancerGeometry:
             raise InputError("D_upper", self.D_upper, f"shoulder must exceed the journal d_upper = {self.d_upper:g} mm")
         if not self.D_lower > self.d_lower:
             raise InputError("D_lower", self.D_lower, f"shoulder must exceed the spindle d_lower = {self.d_lower:g} mm")
+        for k, outer in (("d_upper_bore", "d_upper"), ("d_lower_bore", "d_lower")):
+            v = require_finite(k, getattr(self, k))
+            if not 0.0 <= v < getattr(self, outer):
+                raise InputError(k, getattr(self, k), f"must lie in [0, {outer} = {getattr(self, outer):g}) mm")
+            set_(k, v)
         if not self.e_w > self.b / 2:
             raise InputError("e_w", self.e_w, f"wheel mid-plane must lie outboard of the arm face b/2 = {self.b / 2:g} mm")
 
@@ -488,8 +498,9 @@ class BalancerAnalysis:
             # upper axle root at the inboard arm face: moment of all loads about (0, 0, -b/2)
             M = _moment_about(c.loads, (0.0, 0.0, -g.b / 2.0))
             Mb, Mt = math.hypot(M[0], M[1]), abs(M[2])
-            sb = 32.0 * Mb / (math.pi * g.d_upper**3)
-            tt = 16.0 * Mt / (math.pi * g.d_upper**3)
+            Wb_u = math.pi * (g.d_upper**4 - g.d_upper_bore**4) / (32.0 * g.d_upper)
+            sb = Mb / Wb_u
+            tt = Mt / (2.0 * Wb_u)
             rows.append({"case": c.name, "where": "upper axle fillet", "K_t_bending": kb_u, "K_t_torsion": kt_u,
                          "sigma_nom": sb, "tau_nom": tt, "sigma_vM_nom": math.sqrt(sb**2 + 3 * tt**2),
                          "sigma_vM_peak": math.sqrt((kb_u * sb) ** 2 + 3 * (kt_u * tt) ** 2)})
@@ -497,7 +508,7 @@ class BalancerAnalysis:
             sp = [L for L in c.loads if L.s == R and L.z > g.b / 2.0]
             M = _moment_about(sp, (R, 0.0, g.b / 2.0))
             Mb = math.hypot(M[0], M[1])
-            sb = 32.0 * Mb / (math.pi * g.d_lower**3)
+            sb = Mb / (math.pi * (g.d_lower**4 - g.d_lower_bore**4) / (32.0 * g.d_lower))
             rows.append({"case": c.name, "where": "wheel spindle fillet", "K_t_bending": kb_l, "K_t_torsion": 1.0,
                          "sigma_nom": sb, "tau_nom": 0.0, "sigma_vM_nom": sb, "sigma_vM_peak": kb_l * sb})
         return rows
