@@ -1,0 +1,55 @@
+"""Time the whole fixed-cam part (seed 001; parts/cam_mover.toml): design search, law, outlines,
+solids with every shared check, STEP/STL/3MF/DXF/CSV/plots, assembly and the proofs on the
+geometry (roller sweep, hub height on the exported shoe, collisions, 3D spot checks).
+
+Run: .venv/bin/python bench/bench_cam_part.py [part file]
+Budget (issue 4): the whole part with all files and proofs in <= 30 s.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+from propulsor.cli import main as cli_main
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def main(part: str = str(ROOT / "parts" / "cam_mover.toml")) -> int:
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "cam_mover"
+        t0 = time.perf_counter()
+        rc = cli_main(["build", part, "--out", str(out), "-q"])
+        wall = time.perf_counter() - t0
+        if rc != 0:
+            print(f"build failed with exit {rc}")
+            return rc
+        man = json.loads((out / "manifest.json").read_text())
+        d = man["derived"]
+        n_files = len(man["files"])
+        n_checks = len(man["checks"])
+    print(f"whole part {Path(part).name}: {wall:.2f} s wall (build function {d['build_time_s']:.2f} s), "
+          f"{n_files} files, {n_checks} checks all passed")
+    if "search_candidates" in d:
+        print(f"  design search: {d['search_candidates']} candidates ({d['search_feasible']} feasible) in "
+              f"{d['search_time_s']:.2f} s -> {d['law']}")
+    print(f"  ODE error of H {d['H_error_mm']:.2e} mm; FD: profile points {d['fd_profile_points_max_mm']:.2e} mm, "
+          f"R (eq. 16) relative {d['fd_profile_R_rel_max']:.2e}")
+    print(f"  hub height variation (exported DXF) {d['hub_height_variation_dxf_mm'] * 1e3:.3f} um, "
+          f"exact curve {d['hub_height_variation_exact_mm'] * 1e3:.4f} um")
+    print(f"  roller: gap to working wall {d['roller_gap_working_mm'][0]:.2e} .. {d['roller_gap_working_mm'][1]:.2e} mm, "
+          f"outer wall {d['roller_clearance_outer_mm'][0]:.5f} .. {d['roller_clearance_outer_mm'][1]:.5f} mm, "
+          f"overlap {d['roller_overlap_max_mm2']:g} mm^2 over {d['sweep_steps']} steps")
+    print(f"  pressure angle {d['gamma_max_deg']:.2f} deg, convex R min {d['R_convex_min_mm']:.2f} mm, "
+          f"Hertz {d['sigma_max_support_MPa']:.1f} / {d['sigma_max_return_MPa']:.1f} MPa (support / return)")
+    ok = wall <= 30.0
+    print("budget (whole part <= 30 s):", "OK" if ok else "EXCEEDED")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main(*sys.argv[1:]))
