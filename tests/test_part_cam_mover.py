@@ -90,7 +90,7 @@ def test_manifest_numbers_within_limits(built):
     assert d["gamma_max_deg"] <= 30.0
     assert d["R_convex_min_mm"] >= 1.5 * 20.0
     assert max(d["sigma_max_support_MPa"], d["sigma_max_return_MPa"]) <= 1500.0
-    assert d["search_candidates"] >= 200 and d["search_time_s"] <= 10.0
+    assert d["search_candidates"] >= 200 and d["search_feasible"] >= 1
     assert d["hub_height_variation_dxf_mm"] <= 0.01
     assert d["roller_overlap_max_mm2"] == 0.0
     assert 0.0 < d["roller_clearance_outer_mm"][0] <= d["roller_clearance_outer_mm"][1] < 0.3
@@ -306,9 +306,10 @@ def test_build_is_deterministic(built, tmp_path):
 
 @pytest.mark.sweep
 def test_failing_limit_exits_1_and_writes_nothing(tmp_path, capsys):
-    """K = 0 is buildable but its pressure angle (48°) exceeds 30°: a failed check, exit 1."""
-    f = tmp_path / "zero.toml"
-    f.write_text('type = "cam_mover"\nlaw = "zero"\n')
+    """K = 0.0093·|φ| is buildable but its pressure angle (23.3°) exceeds a 20° limit: a failed
+    check, exit 1, nothing written."""
+    f = tmp_path / "steep.toml"
+    f.write_text('type = "cam_mover"\nlaw = "linear"\nk0 = 0.0093\ngamma_max_deg = 20.0\n')
     out = tmp_path / "out"
     assert main(["build", str(f), "--out", str(out), "-q"]) == 1
     assert "law: pressure angle (eq. 17)" in capsys.readouterr().err
