@@ -243,6 +243,44 @@ def test_zero_curvature_part_geometry_is_closed_form():
     assert np.ptp(np.hypot(ground[:, 0], ground[:, 1])) <= 2e-5
 
 
+def test_channel_walls_are_eq9_envelopes_within_fit_tolerance():
+    """The B-spline walls of the cam (the STEP edges) follow eq. 9-10 within the fit tolerance,
+    and the channel is 2r + clearance wide: working wall at r, outer wall at r + c."""
+    from propulsor.geometry.bspline import spline_deviation
+
+    pl = plan(CamMoverParams(law="quadratic", k0=0.017))
+    bounds = [-S, 0.0, S, math.pi, 2 * math.pi - S]
+
+    def wall(u):
+        t = pl.motion.table(u)
+        return np.column_stack([t.X, -t.Y])  # seed frame (Y down) → CAD frame
+
+    for seg, a, b in zip(pl.working.segments, bounds[:-1], bounds[1:]):
+        assert spline_deviation(seg, wall, a, b, n=400) <= policy.SPLINE_FIT_TOL_MM
+    from scipy.spatial import cKDTree
+
+    phi = np.linspace(0, 2 * math.pi, 3000, endpoint=False)
+    H = pl.motion.H_derivs(phi)[0]
+    centres = np.column_stack([H * np.sin(phi), -H * np.cos(phi)])
+    for loop, dist in ((pl.working, 20.0), (pl.outer, 20.2)):
+        d, _ = cKDTree(loop.polyline(1e-5)).query(centres)
+        assert np.max(np.abs(d - dist)) <= 2e-3  # nearest polyline vertex: spacing-limited
+        assert np.min(d) >= dist - 2e-5
+
+
+def test_carrier_outline_area_closed_form():
+    """Carrier: disc R minus four radial slots (open at the rim), the bore and the holes."""
+    p = CamMoverParams(law="quadratic", k0=0.017)
+    car = plan(p).carrier
+    R, h, b = p.carrier_radius_mm, car.slot_half_width, car.slot_bottom
+    L = math.sqrt(R * R - h * h)
+    slot = 2 * h * (L - b) + R * R * math.asin(h / R) - h * L
+    expected = (math.pi * R * R - 4 * slot - math.pi * (p.carrier_bore_mm / 2) ** 2
+                - p.carrier_bolt_count * math.pi * (p.carrier_bolt_hole_mm / 2) ** 2)
+    assert car.profile.area(1e-5) == pytest.approx(expected, rel=1e-6)
+    assert h == pytest.approx(p.leg_width_mm / 2 + p.slide_clearance_mm)
+
+
 @pytest.mark.parametrize("name", ["cam_linear", "cam_quadratic", "cam_exponential"])
 def test_law_files_integrate_within_1e6_mm(name):
     from propulsor.params import read_part_file

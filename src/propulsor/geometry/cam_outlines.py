@@ -248,7 +248,6 @@ def carrier_profile(n_legs: int, radius: float, slot_width: float, slot_bottom: 
     L = math.sqrt(radius * radius - h * h)
     require(slot_bottom < L, "carrier_radius_mm", radius, f"must reach beyond the slot bottom {slot_bottom:.4g} mm")
     segs = []
-    prev_end = None
     corners = []
     for j in range(n_legs):
         th = 2.0 * math.pi * j / n_legs
@@ -263,10 +262,7 @@ def carrier_profile(n_legs: int, radius: float, slot_width: float, slot_bottom: 
         a1 = math.atan2(nxt[1], nxt[0])
         while a1 <= a0:
             a1 += 2.0 * math.pi
-        segs.append(Arc((0.0, 0.0), radius, a0, a1))
-        # snap the arc end to the next corner (same point up to rounding)
-        prev_end = nxt
-    del prev_end
+        segs.append(Arc((0.0, 0.0), radius, a0, a1))  # ends on the next slot's corner (to rounding)
     loop = Loop(segs)
     require(loop.is_closed(1e-7), "carrier outline gap", float(loop.gaps().max()), "must be closed")
     prof = Profile(loop, [circle_loop(0.5 * bore_diameter, ccw=False), *bolt_holes], name="carrier")

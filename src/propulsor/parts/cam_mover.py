@@ -54,7 +54,7 @@ from ..geometry import cam_outlines as co
 from ..geometry.profile import Profile
 from ..laws.cam_design import CSV_COLUMNS, DesignLimits, SearchGrid, evaluate, search_design
 from ..laws.cam_motion import RETURN_MODES, CamMechanism, CurvatureLaw, ReturnPhase, cam_motion
-from ..laws.shoe import footprint_ratio, shoe_loop_check, shoe_table
+from ..laws.shoe import shoe_loop_check, shoe_table
 from ..params import param
 from . import PartType
 
