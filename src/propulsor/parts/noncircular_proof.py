@@ -1,0 +1,249 @@
+"""Full-cycle proof of a non-circular pair on its finished outlines (SPEC §3.2, issue 3).
+
+The driven wheel (axis at the origin) turns by -phi, the driver (axis at (L, 0)) by
++theta_law(phi) (seed 000 eq. 9/11 with the periodic wrap; the smoothed law for generated
+teeth).  At every sampled phase ``checks.motion.transmission_sweep`` measures on the
+outlines: overlap area at the law's position (manifold3d boolean), the free rotation of the
+driven wheel both ways until contact (backlash), the driven angle at which the loaded flanks
+touch (transmission error against the law) and the tooth pairs in contact (contact ratio).
+
+Speed: the driven outline is cropped, per window of consecutive phases, to the annular
+sector that the driver can reach (its largest radius plus the largest free-rotation search
+angle and 1 mm); the rest of the driven wheel is farther from the driver than its tip
+radius at every phase of the window, so it can neither overlap nor touch.  The crop's
+artificial edges lie outside that reach.
+
+Teeth that are not conjugate (the papers' sector method) may overlap at the law's position.
+There the running position is searched: the driven offset of least overlap area within half
+a pitch of the previous phase's offset (13-point scan refined by a bounded Brent search);
+if that area is 0 the free rotations are measured from there, otherwise the phase is a
+jam (no position of the driven wheel frees it) and its least overlap is reported.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import manifold3d as m3d
+import numpy as np
+
+from ..checks.motion import outline, transmission_sweep
+from .. import policy
+
+
+@dataclass
+class PairProof:
+    """Per-phase results (arrays over the sampled driven angles phi)."""
+
+    phi: np.ndarray
+    theta_law: np.ndarray
+    overlap_law: np.ndarray      #: overlap area at the law's position (mm^2)
+    offset: np.ndarray           #: driven offset from the law used as the start of the free rotations (rad)
+    least_overlap: np.ndarray    #: least overlap area over the offsets searched (mm^2); > 0: jammed
+    phi_drive: np.ndarray        #: driven angle with the loaded (drive) flanks touching (rad)
+    phi_coast: np.ndarray        #: driven angle with the other flanks touching (rad)
+    pairs_drive: np.ndarray
+    pairs_coast: np.ndarray
+    r_ref: np.ndarray            #: driven pitch radius at phi (mm), for backlash in mm
+    name: str
+
+    @property
+    def te_drive(self) -> np.ndarray:
+        """Transmission error of the loaded flank: actual driven angle minus the law (rad)."""
+        return self.phi_drive - self.phi
+
+    @property
+    def backlash_angle(self) -> np.ndarray:
+        return self.phi_coast - self.phi_drive
+
+    @property
+    def backlash_mm(self) -> np.ndarray:
+        return self.backlash_angle * self.r_ref
+
+    @property
+    def jams(self) -> int:
+        return int(np.count_nonzero(~np.isfinite(self.phi_drive)))
+
+    def theta_actual(self) -> np.ndarray:
+        """Driver angle at which the loaded flanks put the driven wheel at phi (interpolated on
+        the measured pairs (phi_drive, theta_law), periodic over the turn)."""
+        ok = np.isfinite(self.phi_drive)
+        x, y = self.phi_drive[ok], self.theta_law[ok]
+        if len(x) < 2:
+            return np.full_like(self.phi, np.nan)
+        n_turn = (self.theta_law[-1] - self.theta_law[0]) / (self.phi[-1] - self.phi[0])  # ~ n
+        per = 2 * math.pi
+        # periodic extension: theta(phi + 2 pi) = theta(phi) + 2 pi n
+        n = round(n_turn)
+        xx = np.concatenate([x - per, x, x + per])
+        yy = np.concatenate([y - per * n, y, y + per * n])
+        order = np.argsort(xx)
+        return np.interp(self.phi, xx[order], yy[order])
+
+    def ratio_actual(self) -> tuple[np.ndarray, np.ndarray]:
+        """(phi, d theta / d phi) delivered by the teeth: differences of the measured pairs
+        (phi_drive, theta_law) between consecutive phases (SPEC / seed 000 Figure 2)."""
+        ok = np.isfinite(self.phi_drive)
+        x, y = self.phi_drive[ok], self.theta_law[ok]
+        dx, dy = np.diff(x), np.diff(y)
+        good = dx > 0
+        return (0.5 * (x[1:] + x[:-1]))[good], (dy / dx)[good]
+
+    def summary(self) -> dict:
+        te = self.te_drive[np.isfinite(self.te_drive)]
+        bl = self.backlash_mm[np.isfinite(self.backlash_mm)]
+        pd = self.pairs_drive[np.isfinite(self.phi_drive)]
+        nan = math.nan
+        return {
+            "steps": int(len(self.phi)),
+            "overlap_law_max_mm2": float(self.overlap_law.max()),
+            "overlap_law_steps": int(np.count_nonzero(self.overlap_law > policy.OVERLAP_AREA_TOL_MM2)),
+            "te_min_rad": float(te.min()) if len(te) else nan,
+            "te_max_rad": float(te.max()) if len(te) else nan,
+            "te_pp_rad": float(np.ptp(te)) if len(te) else nan,
+            "backlash_min_mm": float(bl.min()) if len(bl) else nan,
+            "backlash_max_mm": float(bl.max()) if len(bl) else nan,
+            "contact_pairs_min": int(pd.min()) if len(pd) else 0,
+            "contact_pairs_mean": float(pd.mean()) if len(pd) else nan,
+            "jams": self.jams,
+        }
+
+
+def _crop_section(section: m3d.CrossSection, a0: float, a1: float, r_in: float, r_out: float) -> list[np.ndarray]:
+    """Loops of ``section`` inside the annular sector a0..a1, r_in..r_out (about the origin)."""
+    n = max(8, int(math.ceil((a1 - a0) / 0.02)))
+    a = np.linspace(a0, a1, n)
+    outer = np.column_stack([r_out * np.cos(a), r_out * np.sin(a)])
+    inner = np.column_stack([r_in * np.cos(a[::-1]), r_in * np.sin(a[::-1])]) if r_in > 0 else np.zeros((1, 2))
+    wedge = m3d.CrossSection([np.ascontiguousarray(np.vstack([outer, inner]))], m3d.FillRule.Positive)
+    return [np.asarray(p, float) for p in (section ^ wedge).to_polygons()]
+
+
+def _axis_annulus(o) -> None:
+    """Tighten an Outline's far-point filter: the annulus about the gear axis (the origin of its
+    body frame) that holds every boundary point (a valid bound, much tighter than the one about
+    the bounding-box centre for a ring of teeth)."""
+    d = np.linalg.norm(o.points, axis=1)
+    o.center = np.zeros(2)
+    o.r_min = float(d.min())
+    o.radius = float(d.max())
+
+
+def _outer_only(profile):
+    """The outer loop of a profile as a closed polyline list (bores cannot touch the mate)."""
+    from ..geometry.profile import Profile
+
+    if isinstance(profile, Profile):
+        return [profile.outer.polyline(policy.MOTION_CHORD_TOL_MM)]
+    return profile
+
+
+def prove_pair(driver_profile, driven_profile, L: float, theta_of_phi, phis, r_ref, *, name: str = "mesh",
+               windows: int | None = None, pitch_mm: float | None = None) -> PairProof:
+    """Full-cycle proof of the pair (see the module docstring).  ``theta_of_phi``: vectorised law
+    theta(phi) (rad); ``r_ref``: vectorised driven pitch radius r_H(phi) (mm); ``pitch_mm``:
+    tooth pitch on the pitch curve (sets the search span of non-conjugate teeth)."""
+    drv = outline(_outer_only(driver_profile))
+    dvn = outline(_outer_only(driven_profile))
+    _axis_annulus(drv)
+    phis = np.asarray(phis, float)
+    N = len(phis)
+    theta = np.asarray(theta_of_phi(phis), float)
+    rr = np.asarray(r_ref(phis), float)
+    reach = drv.radius
+    d_dvn = np.linalg.norm(dvn.points, axis=1)
+    r_dvn, r_root = float(d_dvn.max()), float(d_dvn.min())
+    max_angle = policy.MOTION_MAX_FREE_ANGLE_RAD
+    search = 0.5 * (pitch_mm if pitch_mm else 8.0) / float(np.min(rr))
+    margin_a = math.asin(min(1.0, (reach + 1.0) / L)) + max_angle + 2 * search
+    r_in = max(0.0, min(L - reach, r_root) - 1.0)
+    # half-width (about the line of centres) of the driver's body angles whose points can come
+    # within r_dvn + 1 of the driven axis: cos(beta + theta) <= (R^2 - L^2 - rho^2) / (2 L rho)
+    rho = np.linspace(max(drv.r_min, 1e-3), reach, 64)
+    c = np.clip(((r_dvn + 1.0) ** 2 - L * L - rho * rho) / (2 * L * rho), -1.0, 1.0)
+    hw_drv = float(np.max(math.pi - np.arccos(c))) + 0.05
+    if windows is None:
+        windows = max(1, int(round(2 * math.pi / 0.1)))
+    edges = np.linspace(phis.min(), phis.max() + 1e-12, windows + 1)
+    overlap = np.zeros(N)
+    offset = np.zeros(N)
+    least = np.zeros(N)
+    pdrv = np.full(N, np.nan)
+    pcst = np.full(N, np.nan)
+    nd = np.zeros(N, int)
+    nc = np.zeros(N, int)
+    prev, warm = 0.0, False
+    for w in range(windows):
+        idx = np.nonzero((phis >= edges[w]) & (phis < edges[w + 1]))[0]
+        if len(idx) == 0:
+            continue
+        loops = _crop_section(dvn.section, phis[idx].min() - margin_a, phis[idx].max() + margin_a, r_in, r_dvn + 1.0)
+        crop = outline(loops)
+        _axis_annulus(crop)
+        # the driver part that can come within the driven wheel's outer radius during the window
+        tha, thb = float(theta[idx].min()), float(theta[idx].max())
+        dcrop = outline(_crop_section(drv.section, math.pi - thb - hw_drv, math.pi - tha + hw_drv,
+                                      max(0.0, drv.r_min - 1.0), reach + 1.0))
+        _axis_annulus(dcrop)
+        tmap = {float(p): float(t) for p, t in zip(phis[idx], theta[idx])}
+        tr = transmission_sweep(dcrop, (L, 0.0), crop, (0.0, 0.0), lambda p: tmap[float(p)], phis[idx],
+                                r_ref=rr[idx], name=name)
+        overlap[idx] = tr.overlap_area
+        for j, k in enumerate(idx):
+            if tr.overlap_area[j] <= policy.OVERLAP_AREA_TOL_MM2:
+                pdrv[k] = phis[k] - tr.free_back[j]
+                pcst[k] = phis[k] + tr.free_fwd[j]
+                nd[k], nc[k] = tr.pairs_drive[j], tr.pairs_coast[j]
+                prev, warm = 0.0, False
+                continue
+            # not conjugate: the running position nearest the previous offset
+            off, area = _least_overlap(dcrop, crop, L, float(phis[k]), float(theta[k]), prev, search, warm)
+            offset[k], least[k] = off, area
+            prev, warm = off, True
+            if area > policy.OVERLAP_AREA_TOL_MM2:
+                continue  # jammed: no free position near the law's
+            p = np.array([phis[k] + off])
+            t1 = transmission_sweep(dcrop, (L, 0.0), crop, (0.0, 0.0), lambda _p, t=float(theta[k]): t, p,
+                                    r_ref=rr[k], name=name)
+            if t1.overlap_area[0] > policy.OVERLAP_AREA_TOL_MM2:
+                least[k] = t1.overlap_area[0]
+                continue
+            pdrv[k] = phis[k] + off - t1.free_back[0]
+            pcst[k] = phis[k] + off + t1.free_fwd[0]
+            nd[k], nc[k] = t1.pairs_drive[0], t1.pairs_coast[0]
+    return PairProof(phis, theta, overlap, offset, least, pdrv, pcst, nd, nc, rr, name)
+
+
+def _overlap_at(drv, dvn, L, theta, p) -> float:
+    """Overlap area (mm^2) with the driven wheel at -p and the driver at +theta about (L, 0)."""
+    c, s = math.cos(-theta - p), math.sin(-theta - p)
+    ct, st = math.cos(-theta), math.sin(-theta)
+    M = np.array([[c, -s, -ct * L], [s, c, -st * L]])  # driven body -> driver body
+    return float((drv.section ^ dvn.section.transform(M)).area())
+
+
+def _least_overlap(drv, dvn, L, phi, theta, start, half, warm: bool):
+    """Driven offset (rad) within start +- half of least overlap with the driver (0 inside the free
+    interval): a 13-point scan refined by a bounded Brent search; ``warm`` (the previous phase
+    was searched too): first a Brent search within start +- half/4, kept unless it ends on its
+    bracket."""
+    from scipy.optimize import minimize_scalar
+
+    tol = policy.OVERLAP_AREA_TOL_MM2
+    f = lambda o: _overlap_at(drv, dvn, L, theta, phi + o)
+    if warm:
+        q = 0.25 * half
+        res = minimize_scalar(f, bounds=(start - q, start + q), method="bounded", options={"xatol": 1e-6})
+        if res.fun <= tol or abs(res.x - start) < 0.9 * q:
+            return float(res.x), float(res.fun)
+    grid = start + np.linspace(-half, half, 13)
+    vals = np.array([f(o) for o in grid])
+    i = int(np.argmin(vals))
+    if vals[i] <= tol:
+        return float(grid[i]), float(vals[i])
+    lo, hi = grid[max(i - 1, 0)], grid[min(i + 1, len(grid) - 1)]
+    res = minimize_scalar(f, bounds=(lo, hi), method="bounded", options={"xatol": 1e-6})
+    if res.fun < vals[i]:
+        return float(res.x), float(res.fun)
+    return float(grid[i]), float(vals[i])
