@@ -45,7 +45,7 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.optimize import brentq, fsolve
+from scipy.optimize import fsolve
 
 from ..errors import InputError, require, require_positive
 from ..gears.generation import ArcPiece, LinePiece, RackCentrode, ShaperCutter, envelope_points, trim_crossing, EnvelopeCurve
@@ -64,6 +64,13 @@ __all__ = [
 ]
 
 _GX, _GW = np.polynomial.legendre.leggauss(10)
+#: initial interpolation points of every spline fit (refined adaptively to the tolerance):
+#: few knots keep the tessellation of the solids (OCCT meshes every knot span) and the DXF light
+_FIT_N0 = 8
+
+
+def _fit(func, u0, u1, tol):
+    return fit_curve(func, u0, u1, tol, n0=_FIT_N0)
 #: a tooth side is cut by the shaper when a concave stretch of its pitch curve lies within this
 #: many pitches of the tooth centre (the rack's neighbouring teeth would gouge there)
 SHAPER_MARGIN_PITCHES = 1.5
@@ -320,9 +327,14 @@ class ToothSpec:
         rack), its space centred on the bottom of its rolling circle; thinning widens the
         shaper teeth by thinning/(2 r0) of rotation per flank."""
         require(self.z0 is not None, "shaper_teeth", self.z0, "a concave pitch curve needs a shaper cutter")
-        sh = ShaperCutter(int(self.z0), self.m, -self.x, self.rack)
-        R0 = sh.r0
-        t_s, c, a_flank, a_tip = sh.tip_round
+        try:
+            sh = ShaperCutter(int(self.z0), self.m, -self.x, self.rack)
+            R0 = sh.r0
+            t_s, c, a_flank, a_tip = sh.tip_round
+        except InputError as exc:
+            raise InputError("shaper_teeth", self.z0,
+                             f"the shaper z0 = {self.z0} with x0 = {-self.x:+g} (-x of the gear it cuts) cannot be made: "
+                             f"{exc}", "use a smaller profile shift (driver_shift) or another shaper") from None
         ang = -math.pi + math.pi / sh.z0 - self.thinning_mm / (2.0 * R0)
         cut = ExternalCircleCentrode(R0)
         rnd = ArcPiece(c, sh.rho_a0_star * self.m)
@@ -512,16 +524,29 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
         t, hr, hl = thickness(h)
         shortened = False
         if t < spec.tip_min_mm:
+            # tip shortening: the largest height (bisection to 1 nm) with a tip land >= the minimum
             h_lo = (spec.tip_floor + spec.x) * m
-            t_lo, _, _ = thickness(h_lo)
-            if not t_lo > spec.tip_min_mm:
+            t_lo, hr_lo, hl_lo = thickness(h_lo)
+            if not t_lo >= spec.tip_min_mm:
+                why = (f"the {'shaper' if 'shaper' in (R.kind, Lf.kind) else 'rack'} flank envelope does not reach "
+                       f"{spec.tip_floor + spec.x:.2f} m above the pitch curve (generating limit of the cutter)"
+                       if hr_lo is None or hl_lo is None else
+                       f"tip land {max(t_lo, 0.0):.3f} mm < {spec.tip_min_mm:.3f} mm even with the tip shortened to "
+                       f"{spec.tip_floor + spec.x:.2f} m")
                 raise InputError(
-                    "module_mm", m,
-                    f"{role} tooth at phi = {ph_k:.4f} rad is pointed: tip land {max(t, 0.0):.3f} mm < "
-                    f"{spec.tip_min_mm:.3f} mm even with the tip shortened to {(spec.tip_floor + spec.x):.2f} m",
-                    "use a smaller profile shift, more teeth or a wider smoothing")
-            h = brentq(lambda hh: thickness(hh)[0] - spec.tip_min_mm, h_lo, h, xtol=1e-9)
-            t, hr, hl = thickness(h)
+                    "module_mm", m, f"{role} tooth at phi = {ph_k:.4f} rad is pointed or cannot be cut: {why}",
+                    "use a smaller profile shift, a larger shaper, more teeth or a wider smoothing")
+            lo, hi = h_lo, h
+            best = (t_lo, hr_lo, hl_lo)
+            while hi - lo > 1e-6:
+                mid = 0.5 * (lo + hi)
+                res = thickness(mid)
+                if res[0] >= spec.tip_min_mm:
+                    lo, best = mid, res
+                else:
+                    hi = mid
+            h = lo
+            t, hr, hl = best
             shortened = True
         _trim_undercut(R, hr[0])
         _trim_undercut(Lf, hl[0])
@@ -535,11 +560,11 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
     for k in order:
         R, Lf = teeth_sides[k]
         h, hr, hl = tips[k]
-        fil_r = fit_curve(R.fillet, R.fillet.u0, R.fillet.u1, tol)
-        fla_r = fit_curve(R.flank, R.flank.u0, hr[0], tol)
-        tip = fit_curve(lambda ph: curve.offset(ph, h), hr[1], hl[1], tol)
-        fla_l = fit_curve(Lf.flank, Lf.flank.u0, hl[0], tol).reversed()
-        fil_l = fit_curve(Lf.fillet, Lf.fillet.u0, Lf.fillet.u1, tol).reversed()
+        fil_r = _fit(R.fillet, R.fillet.u0, R.fillet.u1, tol)
+        fla_r = _fit(R.flank, R.flank.u0, hr[0], tol)
+        tip = _fit(lambda ph: curve.offset(ph, h), hr[1], hl[1], tol)
+        fla_l = _fit(Lf.flank, hl[0], Lf.flank.u0, tol)
+        fil_l = _fit(Lf.fillet, Lf.fillet.u1, Lf.fillet.u0, tol)
         units.append(([fil_r, fla_r, tip, fla_l, fil_l], R.phi_root, Lf.phi_root))
     segs = []
     root_r = []
@@ -555,7 +580,7 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
         else:  # driver: counter-clockwise = decreasing phi; one driver turn = 2 pi / n of phi
             while ph_b > ph_a:
                 ph_b -= 2 * math.pi / n
-        root = fit_curve(lambda ph: curve.offset(ph, hf), ph_a, ph_b, tol)
+        root = _fit(lambda ph: curve.offset(ph, hf), ph_a, ph_b, tol)
         root_r.append(float(np.min(np.linalg.norm(root.poles, axis=1))))
         segs.append(root)
     segs = _snap(segs)
@@ -658,8 +683,8 @@ def sector_driver_gear(table: SectorTable, m: float, j_n: float, tol: float = SP
             f1, f2 = _flank_fun(rb, b1, 1.0), _flank_fun(rb, b2, -1.0)
             a1 = b1 + ta - math.atan(ta)
             a2 = b2 - (ta - math.atan(ta))
-            unit = [Line(_polar_pt(rf, b1), _polar_pt(rb, b1)), fit_curve(f1, 0.0, ta, tol),
-                    Arc((0.0, 0.0), ra, a1, a2), fit_curve(f2, ta, 0.0, tol), Line(_polar_pt(rb, b2), _polar_pt(rf, b2))]
+            unit = [Line(_polar_pt(rf, b1), _polar_pt(rb, b1)), _fit(f1, 0.0, ta, tol),
+                    Arc((0.0, 0.0), ra, a1, a2), _fit(f2, ta, 0.0, tol), Line(_polar_pt(rb, b2), _polar_pt(rf, b2))]
             units.append(unit)
             feet.append((b1, b2, rf, ra * (a2 - a1)))
     for j, unit in enumerate(units):
@@ -675,7 +700,7 @@ def sector_driver_gear(table: SectorTable, m: float, j_n: float, tol: float = SP
                 t = (a - a0) / (a1 - a0)
                 rr = r0 + (r1 - r0) * t ** 3 * (10 - 15 * t + 6 * t * t)
                 return np.column_stack([rr * np.cos(a), rr * np.sin(a)])
-            segs.append(fit_curve(root, a0, b1n, tol))
+            segs.append(_fit(root, a0, b1n, tol))
     loop = Loop(segs)
     # theta frame -> driver body frame: beta = pi - theta, i.e. mirror x -> -x
     mir = Loop([_mirror_seg(s) for s in loop.segments])
@@ -723,7 +748,7 @@ def sector_driven_gear(table: SectorTable, m: float, j_n: float, tol: float = SP
         tmin = min(tmin, r_top * (a_next - a_end))
         rfmin = min(rfmin, rf)
         if j == 0:
-            segs.append(fit_curve(_flank_fun(rb, b1, -1.0), _t_of_r(rb, ra), 0.0, tol))
+            segs.append(_fit(_flank_fun(rb, b1, -1.0), _t_of_r(rb, ra), 0.0, tol))
             segs.append(Line(_polar_pt(rb, b1), _polar_pt(rf, b1)))
         segs.append(Arc((0.0, 0.0), rf, b1, b2))
         if r_top <= rf:
@@ -735,10 +760,10 @@ def sector_driven_gear(table: SectorTable, m: float, j_n: float, tol: float = SP
             segs.append(Line(_polar_pt(rf, b2), _polar_pt(r_top, b2)))
         else:
             segs.append(Line(_polar_pt(rf, b2), _polar_pt(rb, b2)))
-            segs.append(fit_curve(_flank_fun(rb, b2, 1.0), 0.0, t_top, tol))
+            segs.append(_fit(_flank_fun(rb, b2, 1.0), 0.0, t_top, tol))
         segs.append(Arc((0.0, 0.0), r_top, a_end, a_next))
         if j + 1 < N:
-            segs.append(fit_curve(_flank_fun(rbn, b1n, -1.0), t_top_n, 0.0, tol))
+            segs.append(_fit(_flank_fun(rbn, b1n, -1.0), t_top_n, 0.0, tol))
             segs.append(Line(_polar_pt(rbn, b1n), _polar_pt(rfn, b1n)))
     # the last tip arc ends where the first flank begins (a_first + 2 pi)
     prof = Profile(Loop(segs), name=f"driven sectors i={table.i}")

@@ -15,6 +15,9 @@ from ..errors import InputError
 #: part type name -> module (relative to this package)
 _MODULES = {
     "planetary_final_drive": "final_drive",
+    "noncircular_pair": "noncircular_pair",
+    "balancer": "balancer",
+    "road_wheel": "road_wheel",
     "cam_mover": "cam_mover",
 }
 

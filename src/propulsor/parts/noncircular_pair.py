@@ -175,15 +175,16 @@ def _smoothing(p, law: WalkingLaw, m: float):
         best = _smallest_generable(law, cutter, z_H) if p.smoothing_max_deg < 45.0 else "no blend up to 45 deg works"
         raise InputError(
             "smoothing_max_deg", p.smoothing_max_deg,
-            f"no generable C2 smoothing up to {p.smoothing_max_deg:g} deg: {exc.limit}; "
-            "(x = driver_shift, z_H = driven_teeth, z0 = shaper_teeth, m = module_mm)", best) from None
+            f"no C2 smoothing up to {p.smoothing_max_deg:g} deg keeps both pitch curves generable: "
+            f"{str(exc).split(': ', 1)[-1]} [x = driver_shift, z_H = driven_teeth, z0 = shaper_teeth, m = module_mm]",
+            best) from None
 
 
 def _smallest_generable(law, cutter, z_H) -> str:
     try:
         d = choose_smoothing(law, cutter, z_H, delta_max=math.pi / 4)
     except InputError as exc:
-        return f"no blend up to 45 deg works either: {exc.limit}; {exc.args[0].split('(', 1)[-1].rstrip(')')}"
+        return "no blend up to 45 deg works either"
     return (f"a blend of {math.degrees(d.delta):.3f} deg would work "
             f"(smoothing_max_deg >= {math.degrees(d.delta):.3f}; hub speed ripple {100 * d.ripple.ripple:.2f} %)")
 
@@ -207,6 +208,10 @@ def design_generated(p: NoncircularPairParams, progress=lambda s: None) -> Desig
     rack = _rack(p)
     th = _thinning(p)
     common = dict(m=m, thinning_mm=th, rack=rack, z0=p.shaper_teeth, tip_min_mm=p.tip_land_min_module * m)
+    g = sm.generability
+    for chk, x in ((g.driver, p.driver_shift), (g.driven, -p.driver_shift)):
+        if chk.concave:  # fail fast: the shaper this gear needs must exist
+            ToothSpec(x=x, **common).shaper_tools()
     progress(f"generated: driver teeth ({z_H // law.n}), rack/shaper envelopes")
     drv = generate_gear(pc, "driver", ToothSpec(x=p.driver_shift, **common), frame)
     progress(f"generated: driven teeth ({z_H})")
@@ -337,15 +342,18 @@ def _checks_generated(d: Design, pr, p) -> list[Check]:
     return out + _checks_common(pr)
 
 
-def _checks_common(pr) -> list[Check]:
+def _checks_common(pr, prefix: str = "mesh") -> list[Check]:
+    """Proof checks; ``prefix`` 'mesh' for generated teeth, 'sectors' for the papers' teeth (separate
+    names, so that a part file can document the papers' jams as expected failures without masking
+    a failure of generated teeth)."""
     s = pr.summary()
     return [
-        Check.at_most("mesh.runs_without_jam", s["jams"], 0, "phases",
+        Check.at_most(f"{prefix}.runs_without_jam", s["jams"], 0, "phases",
                       f"{s['jams']} of {s['steps']} phases have no free position of the driven wheel "
                       f"(least overlap up to {float(np.max(pr.least_overlap)):.4g} mm^2)"),
-        Check.greater_than("mesh.backlash_min", s["backlash_min_mm"], 0.0, "mm",
+        Check.greater_than(f"{prefix}.backlash_min", s["backlash_min_mm"], 0.0, "mm",
                            f"backlash {s['backlash_min_mm']:.5f} .. {s['backlash_max_mm']:.5f} mm on the driven pitch curve"),
-        Check.at_least("mesh.contact_continuity", s["contact_pairs_min"], 1, "pairs",
+        Check.at_least(f"{prefix}.contact_continuity", s["contact_pairs_min"], 1, "pairs",
                        f"least tooth pairs in contact {s['contact_pairs_min']}, mean {s['contact_pairs_mean']:.4f}"),
     ]
 
@@ -353,7 +361,7 @@ def _checks_common(pr) -> list[Check]:
 def _checks_sectors(d: Design, pr) -> list[Check]:
     return [Check.at_most("law.closure_error", d.closure_error, 1e-9, "rad",
                           f"|4 sum dtheta - 2 pi n| = {d.closure_error:.3g} rad (sector table, seed 000 eqs. 48-51)")] \
-        + _checks_common(pr)
+        + _checks_common(pr, "sectors")
 
 
 def _sector_tables(w, p: NoncircularPairParams, note_if_missing: bool = True):
@@ -406,7 +414,8 @@ def _plots(w, d: Design, pr):
 
     fig, ax = new_figure()
     ok = np.isfinite(pr.te_drive)
-    ax.plot(np.degrees(pr.phi[ok]), 1e3 * pr.te_drive[ok], ".-", ms=2, lw=0.6, label="loaded flank")
+    ax.plot(np.degrees(pr.phi), 1e3 * (pr.phi_run - pr.phi), ".-", ms=2, lw=0.6,
+            label="running position (loaded flank; least overlap where jammed)")
     ax.set_xlabel("driven angle phi, deg")
     ax.set_ylabel("transmission error (actual - law), mrad of the driven wheel")
     ax2 = ax.twinx()
@@ -502,12 +511,15 @@ def build(p: NoncircularPairParams, w) -> None:
         d.table = table
     th_act = pr.theta_actual()
     jam = ~np.isfinite(pr.phi_drive)
-    w.add_table("transmission", ["phi_rad", "theta_law_rad", "theta_actual_rad", "te_drive_rad", "backlash_mm",
-                                 "pairs_drive", "overlap_law_mm2", "least_overlap_mm2", "jam"],
-                [[float(a), float(b), float(c), float(e) if math.isfinite(e) else None,
+    # theta_actual: the driver angle at which the outlines put the driven wheel at phi (loaded flanks
+    # touching; at a jammed phase the position of least overlap); te_run: driven running angle - law
+    w.add_table("transmission", ["phi_rad", "theta_law_rad", "theta_actual_rad", "te_run_rad", "te_drive_rad",
+                                 "backlash_mm", "pairs_drive", "overlap_law_mm2", "least_overlap_mm2", "jam"],
+                [[float(a), float(b), float(c), float(r) - float(a), float(e) if math.isfinite(e) else None,
                   float(f) if math.isfinite(f) else None, int(g), float(h), float(i), bool(j)]
-                 for a, b, c, e, f, g, h, i, j in zip(pr.phi, pr.theta_law, th_act, pr.te_drive, pr.backlash_mm,
-                                                       pr.pairs_drive, pr.overlap_law, pr.least_overlap, jam)])
+                 for a, b, c, r, e, f, g, h, i, j in zip(pr.phi, pr.theta_law, th_act, pr.phi_run, pr.te_drive,
+                                                          pr.backlash_mm, pr.pairs_drive, pr.overlap_law,
+                                                          pr.least_overlap, jam)])
     ph = np.linspace(-math.pi / 4, math.pi / 4, 721)
     pcr = PitchCurves(d.run_law, d.L)
     w.add_table("pitch_curves", ["phi_rad", "r_H_mm", "theta_rad", "r_mm", "ratio_U", "hub_speed_mm_per_rad"],

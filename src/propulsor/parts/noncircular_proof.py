@@ -65,17 +65,19 @@ class PairProof:
     def jams(self) -> int:
         return int(np.count_nonzero(~np.isfinite(self.phi_drive)))
 
+    @property
+    def phi_run(self) -> np.ndarray:
+        """Driven angle of the running position: loaded flanks touching; at a jammed phase the
+        position of least overlap (the best the outlines allow)."""
+        return np.where(np.isfinite(self.phi_drive), self.phi_drive, self.phi + self.offset)
+
     def theta_actual(self) -> np.ndarray:
-        """Driver angle at which the loaded flanks put the driven wheel at phi (interpolated on
-        the measured pairs (phi_drive, theta_law), periodic over the turn)."""
-        ok = np.isfinite(self.phi_drive)
-        x, y = self.phi_drive[ok], self.theta_law[ok]
-        if len(x) < 2:
-            return np.full_like(self.phi, np.nan)
-        n_turn = (self.theta_law[-1] - self.theta_law[0]) / (self.phi[-1] - self.phi[0])  # ~ n
+        """Driver angle at which the teeth put the driven wheel at phi (interpolated on the
+        measured pairs (phi_run, theta_law), periodic over the turn: theta(phi + 2 pi) =
+        theta(phi) + 2 pi n)."""
+        x, y = self.phi_run, self.theta_law
+        n = round((self.theta_law[-1] - self.theta_law[0]) / (self.phi[-1] - self.phi[0]))
         per = 2 * math.pi
-        # periodic extension: theta(phi + 2 pi) = theta(phi) + 2 pi n
-        n = round(n_turn)
         xx = np.concatenate([x - per, x, x + per])
         yy = np.concatenate([y - per * n, y, y + per * n])
         order = np.argsort(xx)
@@ -83,9 +85,8 @@ class PairProof:
 
     def ratio_actual(self) -> tuple[np.ndarray, np.ndarray]:
         """(phi, d theta / d phi) delivered by the teeth: differences of the measured pairs
-        (phi_drive, theta_law) between consecutive phases (SPEC / seed 000 Figure 2)."""
-        ok = np.isfinite(self.phi_drive)
-        x, y = self.phi_drive[ok], self.theta_law[ok]
+        (phi_run, theta_law) between consecutive phases (seed 000 Figure 2 from geometry)."""
+        x, y = self.phi_run, self.theta_law
         dx, dy = np.diff(x), np.diff(y)
         good = dx > 0
         return (0.5 * (x[1:] + x[:-1]))[good], (dy / dx)[good]
