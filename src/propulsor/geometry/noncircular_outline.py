@@ -380,23 +380,88 @@ def _trim_undercut(side: _Side, u_tip: float) -> None:
         side.undercut = True
 
 
-def _tip_hit(side: _Side, curve: PitchCurve, h: float, phi_guess: float):
-    """(u, phi) where the flank meets the tip equidistant at height h."""
+def _tip_hit(side: _Side, curve: PitchCurve, h: float, phi_guess: float, span: float):
+    """(u, phi) where the flank meets the tip equidistant at height h (None if it does not within
+    the flank's range): nearest pair of samples, then fsolve."""
     fla = side.flank
     u = np.linspace(fla.u0, fla.u1, 41)
     X = fla(u)
-    ph = phi_guess + np.linspace(-0.6, 0.6, 121) * _PHI_SPAN[0]
+    ph = phi_guess + np.linspace(-0.6, 0.6, 121) * span
     T = curve.offset(ph, h)
     D = np.linalg.norm(X[:, None, :] - T[None, :, :], axis=2)
     i, j = np.unravel_index(int(np.argmin(D)), D.shape)
     g = lambda y: fla.at(y[0]) - curve.offset(np.array([y[1]]), h)[0]
-    sol, info, ier, _ = fsolve(g, [u[i], ph[j]], xtol=1e-14, full_output=True)
+    sol = fsolve(g, [u[i], ph[j]], xtol=1e-14, full_output=True)[0]
     if np.linalg.norm(g(sol)) > 1e-9 or not (min(fla.u0, fla.u1) - 1e-9 <= sol[0] <= max(fla.u0, fla.u1) + 1e-9):
         return None
     return float(sol[0]), float(sol[1])
 
 
-_PHI_SPAN = [0.1]  # angular search span (rad of phi) for tip hits, set per gear
+class _BatchCentrode(_Centrode):
+    """_Centrode of many teeth at once: s_k is an array matching the generation arcs passed in."""
+
+    def phi(self, sg):
+        sg = np.atleast_1d(np.asarray(sg, float))
+        if self._key is not None and self._key[0] is sg:
+            return self._key[1]
+        ph = self.frame.phi(self.s_k + self.curve.sgn * sg)
+        self._key = (sg, ph)
+        return ph
+
+
+def _tip_hits_batch(sides: list, s_k: np.ndarray, ph_k: np.ndarray, curve: PitchCurve, frame: ArcFrame,
+                    h: float, span: float) -> list:
+    """``_tip_hit`` for many sides at once (grouped by their cutter piece): vectorised sampling for
+    the start and a vectorised Newton iteration on (u, phi); sides that do not converge fall back
+    to ``_tip_hit``."""
+    out = [None] * len(sides)
+    groups: dict = {}
+    for i, sd in enumerate(sides):
+        groups.setdefault((id(sd.flank.piece), sd.flank.u0, sd.flank.u1), []).append(i)
+    nu, nph = 41, 121
+    for (_, u0, u1), idx in groups.items():
+        idx = np.asarray(idx)
+        n = len(idx)
+        fla = sides[idx[0]].flank
+        sk = np.asarray(s_k, float)[idx]
+        pk = np.asarray(ph_k, float)[idx]
+
+        def X(u, skk):
+            cen = _BatchCentrode(curve, frame, 0.0)
+            cen.s_k = skk
+            return envelope_points(fla.piece, u, fla.cutter, cen)[0]
+
+        ug = np.linspace(u0, u1, nu)
+        Xs = X(np.tile(ug, n), np.repeat(sk, nu)).reshape(n, nu, 2)
+        pg = pk[:, None] + np.linspace(-0.6, 0.6, nph)[None, :] * span
+        Ts = curve.offset(pg.ravel(), h).reshape(n, nph, 2)
+        D = np.linalg.norm(Xs[:, :, None, :] - Ts[:, None, :, :], axis=3).reshape(n, -1)
+        k = np.argmin(D, axis=1)
+        u = ug[k // nph]
+        ph = pg[np.arange(n), k % nph]
+        eu, ep = 1e-7 * max(1.0, abs(u1 - u0)), 1e-8
+        for _ in range(12):
+            Xu = X(u, sk)
+            T = curve.offset(ph, h)
+            G = Xu - T
+            if np.max(np.linalg.norm(G, axis=1)) < 1e-12:
+                break
+            dX = (X(u + eu, sk) - Xu) / eu
+            dT = (curve.offset(ph + ep, h) - T) / ep
+            det = dX[:, 0] * (-dT[:, 1]) - dX[:, 1] * (-dT[:, 0])
+            det = np.where(np.abs(det) > 1e-300, det, 1e-300)
+            du = -(G[:, 0] * (-dT[:, 1]) - G[:, 1] * (-dT[:, 0])) / det
+            dp = -(dX[:, 0] * G[:, 1] - dX[:, 1] * G[:, 0]) / det
+            u, ph = u + du, ph + dp
+        res = np.linalg.norm(X(u, sk) - curve.offset(ph, h), axis=1)
+        for j, i in enumerate(idx):
+            if res[j] <= 1e-9 and min(u0, u1) - 1e-9 <= u[j] <= max(u0, u1) + 1e-9:
+                out[i] = (float(u[j]), float(ph[j]))
+            else:
+                out[i] = _tip_hit(sides[i], curve, h, float(pk[j]), span)
+    return out
+
+
 
 
 def _arc_len(curve: PitchCurve, h: float, a: float, b: float) -> float:
@@ -481,7 +546,7 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
         require(z_H % n == 0, "driven_teeth", z_H, f"must be a multiple of n = {n}")
         z, centres = z_H // n, np.arange(z_H // n) * p
     phic = frame.phi(centres)
-    _PHI_SPAN[0] = 1.5 * p / float(np.min(pc.ds_dphi(np.linspace(0, math.pi / 2, 200))))
+    span = 1.5 * p / float(np.min(pc.ds_dphi(np.linspace(0, math.pi / 2, 200))))  # phi of 1.5 pitches
     zones = _concave_zones(curve)
     rack_r, rack_l = spec.rack_tools()
     shaper = None
@@ -504,11 +569,13 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
 
     # tips: nominal height, shortened where the tip land is too thin
     teeth, tips = [], []
-    for (s_k, ph_k), (R, Lf) in zip(zip(centres, phic), teeth_sides):
-        def hits(h):
-            hr = _tip_hit(R, curve, h, ph_k)
-            hl = _tip_hit(Lf, curve, h, ph_k)
-            return hr, hl
+    flat = [sd for pair in teeth_sides for sd in pair]
+    nominal = _tip_hits_batch(flat, np.repeat(centres, 2), np.repeat(phic, 2), curve, frame, spec.h_tip, span)
+    for k, ((s_k, ph_k), (R, Lf)) in enumerate(zip(zip(centres, phic), teeth_sides)):
+        def hits(h, k=k):
+            if h == spec.h_tip:
+                return nominal[2 * k], nominal[2 * k + 1]
+            return _tip_hit(R, curve, h, ph_k, span), _tip_hit(Lf, curve, h, ph_k, span)
 
         def thickness(h):
             hr, hl = hits(h)

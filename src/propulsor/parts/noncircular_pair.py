@@ -74,6 +74,8 @@ class NoncircularPairParams:
                                      min_exclusive=True)
     tip_land_min_module: float = param(0.25, "", "least tip land (in modules); thinner tips are shortened",
                                        min=0.0, max=1.0)
+    mounting_distance_mm: float = param(0.0, "mm", "installed centre distance (seed 000: L_ust = 144 for L = 143.5); "
+                                        "0: the design L", min=0.0)
     face_width_mm: float = param(20.0, "mm", "face width of both gears", min=0.0, min_exclusive=True)
     driver_bore_mm: float = param(16.0, "mm", "driver bore diameter (0: none)", min=0.0)
     driven_bore_mm: float = param(40.0, "mm", "driven-wheel bore diameter (0: none)", min=0.0)
@@ -279,9 +281,20 @@ def design(p: NoncircularPairParams, progress=lambda s: None) -> Design:
 
 
 # =========================================================================== proof
-def prove(d: Design, phases_per_tooth: int, legs: int = 4, progress=lambda s: None):
+def mounting(p: NoncircularPairParams, d: Design) -> float:
+    """Installed centre distance: the design L unless mounting_distance_mm > 0 (>= L)."""
+    if p.mounting_distance_mm <= 0:
+        return d.L
+    if p.mounting_distance_mm < d.L - 1e-9:
+        raise InputError("mounting_distance_mm", p.mounting_distance_mm,
+                         f"must be >= the design centre distance L = {d.L:.6f} mm (or 0)")
+    return p.mounting_distance_mm
+
+
+def prove(d: Design, phases_per_tooth: int, legs: int = 4, progress=lambda s: None, mount: float | None = None):
     """Proof of the pair over ``legs`` legs (4 = the whole driven turn) with
-    ``phases_per_tooth`` phases per driven tooth (``parts.noncircular_proof``)."""
+    ``phases_per_tooth`` phases per driven tooth (``parts.noncircular_proof``), the gears at the
+    installed centre distance ``mount`` (default the design L)."""
     from .noncircular_proof import prove_pair
 
     N = phases_per_tooth * d.z_H * legs // 4
@@ -289,7 +302,7 @@ def prove(d: Design, phases_per_tooth: int, legs: int = 4, progress=lambda s: No
     pc = PitchCurves(d.run_law, d.L)
     pitch = math.pi * d.m if d.method == "generated" else d.table.arc
     progress(f"{d.method}: proof over {legs} leg(s), {N} phases")
-    return prove_pair(d.driver.profile, d.driven.profile, d.L, d.run_law.theta, phis, pc.r_H,
+    return prove_pair(d.driver.profile, d.driven.profile, mount or d.L, d.run_law.theta, phis, pc.r_H,
                       name="mesh", pitch_mm=pitch)
 
 
@@ -459,43 +472,49 @@ def _plots(w, d: Design, pr):
     w.add_plot("pair", fig)
 
 
+def gear_profiles(p: NoncircularPairParams, d: Design):
+    """(driver, driven) profiles with bore and keyway (InputError if they do not fit)."""
+    return (_with_bore(d.driver.profile, p.driver_bore_mm, p.keyway, d.driver.root_min_radius, d.m, "driver"),
+            _with_bore(d.driven.profile, p.driven_bore_mm, p.keyway, d.driven.root_min_radius, d.m, "driven"))
+
+
+def compare(p: NoncircularPairParams, d: Design, prog=lambda s: None):
+    """The other tooth method for the same law, module and teeth, proved over one leg (the pair
+    repeats per leg) at its own design centre distance.  Returns (design, proof, note); (None,
+    None, why) if it cannot be made."""
+    alt = "sectors" if d.method == "generated" else "generated"
+    try:
+        q = _replace(p, method=alt, module_mm=d.m, center_distance_mm=0.0)
+        q.validate()
+        other = design_sectors(q, prog) if alt == "sectors" else design_generated(q, prog)
+        return other, prove(other, p.proof_phases_per_tooth, 1, prog), ""
+    except InputError as exc:
+        return None, None, f"The {alt} method is not possible for these parameters: {exc}"
+
+
 def build(p: NoncircularPairParams, w) -> None:
     prog = w.progress
     d = design(p, prog)
+    profiles = gear_profiles(p, d)
+    pr = prove(d, p.proof_phases_per_tooth, 4, prog, mounting(p, d))  # the built pair over the whole cycle
+    other, pr_other, other_note = compare(p, d, prog) if p.compare_methods else (None, None, "")
+    write_outputs(p, w, d, profiles, pr, other, pr_other, other_note)
 
-    # ---- proof of the built pair over the whole cycle
-    pr = prove(d, p.proof_phases_per_tooth, 4, prog)
 
-    # ---- the other method, for the comparison (one leg: the pair repeats per leg)
-    other = pr_other = None
-    other_note = ""
-    if p.compare_methods:
-        alt = "sectors" if d.method == "generated" else "generated"
-        try:
-            if alt == "sectors":
-                q = _replace(p, method="sectors", module_mm=d.m, center_distance_mm=0.0)
-                q.validate()
-                other = design_sectors(q, prog)
-            else:
-                q = _replace(p, method="generated", module_mm=d.m, center_distance_mm=0.0)
-                q.validate()
-                other = design_generated(q, prog)
-            pr_other = prove(other, p.proof_phases_per_tooth, 1, prog)
-        except InputError as exc:
-            other_note = f"The {alt} method is not possible for these parameters: {exc}"
-            other = pr_other = None
-
-    # ---- solids
+def write_outputs(p: NoncircularPairParams, w, d: Design, profiles, pr, other=None, pr_other=None,
+                  other_note: str = "") -> None:
+    """Solids (STEP/STL/3MF with the shared checks), assembly, DXF, tables, plots, checks, report values."""
+    prog = w.progress
     prog("solids")
     from ..solids.build import extrude_profile
 
-    prof_drv = _with_bore(d.driver.profile, p.driver_bore_mm, p.keyway, d.driver.root_min_radius, d.m, "driver")
-    prof_dvn = _with_bore(d.driven.profile, p.driven_bore_mm, p.keyway, d.driven.root_min_radius, d.m, "driven")
+    prof_drv, prof_dvn = profiles
     s_drv = extrude_profile(prof_drv, p.face_width_mm)
     s_dvn = extrude_profile(prof_dvn, p.face_width_mm)
     w.add_solid("driver", s_drv, expected_genus=1 if p.driver_bore_mm > 0 else 0)
     w.add_solid("driven", s_dvn, expected_genus=1 if p.driven_bore_mm > 0 else 0)
-    w.add_assembly("pair", [("driven", s_dvn, (0.0, 0.0, 0.0), 0.0), ("driver", s_drv, (d.L, 0.0, 0.0), 0.0)])
+    w.add_assembly("pair", [("driven", s_dvn, (0.0, 0.0, 0.0), 0.0),
+                            ("driver", s_drv, (mounting(p, d), 0.0, 0.0), 0.0)])
 
     # ---- DXF (gear axis at the origin, phase phi = theta = 0 of the assembly)
     for role, prof in (("driver", prof_drv), ("driven", prof_dvn)):
@@ -542,7 +561,7 @@ def build(p: NoncircularPairParams, w) -> None:
     w.add_checks(_checks_generated(d, pr, p) if d.method == "generated" else _checks_sectors(d, pr))
     s = pr.summary()
     w.derived.update({
-        "center_distance_mm": d.L, "module_mm": d.m, "driver_teeth": d.z, "driven_teeth": d.z_H,
+        "center_distance_mm": d.L, "mounting_distance_mm": mounting(p, d), "module_mm": d.m, "driver_teeth": d.z, "driven_teeth": d.z_H,
         "driver_turns": d.law.n, "method": d.method, "smoothing_deg": d.smoothing_deg,
         "speed_ripple": d.ripple.ripple,
         "speed_ripple_phi_min_deg": math.degrees(d.ripple.phi_min),
@@ -633,7 +652,8 @@ def _notes(w, d, pr, other, pr_other, other_note, p):
             f"Even with ideal teeth the staircase ratio leaves a hub speed ripple of {_pct(d.ripple.ripple)}.")
     w.add_note(
         f"Proof on the finished outlines ({d.method}, {s['steps']} phases over the whole driven turn, "
-        f"{p.proof_phases_per_tooth} per driven tooth, manifold3d booleans): overlap at the law's positions max "
+        f"{p.proof_phases_per_tooth} per driven tooth, manifold3d booleans, gears at the installed centre "
+        f"distance {mounting(p, d):.4f} mm): overlap at the law's positions max "
         f"{s['overlap_law_max_mm2']:.4g} mm^2 ({s['overlap_law_steps']} phases); phases without a free position "
         f"(jam) {s['jams']}; transmission error of the loaded flank {s['te_min_rad']:.4e} .. {s['te_max_rad']:.4e} rad "
         f"(peak-to-peak {s['te_pp_rad']:.3e} rad); backlash {s['backlash_min_mm']:.4f} .. {s['backlash_max_mm']:.4f} mm "
