@@ -383,6 +383,11 @@ def _sector_tables(w, p: NoncircularPairParams, note_if_missing: bool = True):
         w.add_note("Sector tables not written: the papers' method needs driven_teeth = 4 x sectors per leg.")
         return None
     table, L, m = sector_design_table(p)
+    w.add_note(
+        f"The papers' tables for these parameters (seed 000 Table 1 -> tables/sectors.csv, seed 002 Tables 2-4 -> "
+        f"radii.csv, driver_teeth.csv, driven_spaces.csv): i = {table.i} sectors per leg, L = {L:.6f} mm "
+        f"({'given' if p.center_distance_mm > 0 else 'from the module: sector arc = pi m'}; sector arc "
+        f"{table.arc:.4f} mm), m = {m:g} mm, j_n = {p.backlash_mm:g} mm; angles in rad and deg as printed.")
     w.add_table("sectors", list(SECTOR_COLUMNS), [[r[c] for c in SECTOR_COLUMNS] for r in table.rows()])
     rad = sector_radii(table, m)
     w.add_table("radii", list(RADII_COLUMNS), [[r[c] for c in RADII_COLUMNS] for r in rad.rows()])
@@ -422,7 +427,7 @@ def _figure2(w, d: Design, pr, other, pr_other):
     w.add_plot("figure2_ratio", fig)
 
 
-def _plots(w, d: Design, pr):
+def _plots(w, d: Design, pr, profiles, mount: float):
     from ..export.plots import new_figure
 
     fig, ax = new_figure()
@@ -460,14 +465,14 @@ def _plots(w, d: Design, pr):
     w.add_plot("hub_speed", fig)
 
     fig, ax = new_figure(6.5, 6.5)
-    for prof, off in ((d.driven.profile, (0.0, 0.0)), (d.driver.profile, (d.L, 0.0))):
+    for prof, off in ((profiles[1], (0.0, 0.0)), (profiles[0], (mount, 0.0))):
         for q in prof.polylines(0.01):
             q = np.vstack([q, q[:1]]) + np.asarray(off)
             ax.plot(q[:, 0], q[:, 1], lw=0.5)
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel("x, mm")
     ax.set_ylabel("y, mm")
-    ax.set_title(f"pair at phi = theta = 0 ({d.method} teeth), L = {d.L:.4f} mm")
+    ax.set_title(f"pair at phi = theta = 0 ({d.method} teeth), centre distance {mount:.4f} mm")
     fig.tight_layout()
     w.add_plot("pair", fig)
 
@@ -555,7 +560,7 @@ def write_outputs(p: NoncircularPairParams, w, d: Design, profiles, pr, other=No
 
     # ---- plots
     _figure2(w, d, pr, other, pr_other)
-    _plots(w, d, pr)
+    _plots(w, d, pr, profiles, mounting(p, d))
 
     # ---- checks, derived values, notes
     w.add_checks(_checks_generated(d, pr, p) if d.method == "generated" else _checks_sectors(d, pr))
