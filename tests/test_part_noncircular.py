@@ -441,6 +441,19 @@ def test_generated_teeth_are_conjugate_without_backlash():
     assert pr.overlap_law.max() < 2e-3
 
 
+def test_module_from_centre_distance():
+    """Closure the other way round (SPEC Trap 3): L given, the module follows; the blend is the one
+    chosen at m = 2.5 (the design is scale invariant: rho and the undercut limit both scale with m)."""
+    from propulsor.params import load_params
+    from propulsor.parts.noncircular_pair import NoncircularPairParams, design
+
+    d = design(load_params(NoncircularPairParams, dict(module_mm=0.0, center_distance_mm=130.0)))
+    assert d.L == 130.0 and d.m == pytest.approx(2.5 * 130.0 / 124.33187266550188, rel=1e-9)
+    assert d.pc.perimeter_driven() == pytest.approx(80 * math.pi * d.m, rel=1e-12)
+    assert d.smoothing_deg == pytest.approx(8.4747, abs=1e-3)
+    assert len(d.driven.teeth) == 80 and len(d.driver.teeth) == 20
+
+
 def test_outlines_are_deterministic():
     from propulsor.params import load_params, read_part_file
     from propulsor.parts.noncircular_pair import NoncircularPairParams, design

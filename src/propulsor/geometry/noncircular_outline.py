@@ -42,12 +42,12 @@ of centres when the driver has turned by +theta, counter-clockwise).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 from scipy.optimize import fsolve
 
-from ..errors import InputError, require, require_positive
+from ..errors import InputError, require
 from ..gears.generation import ArcPiece, LinePiece, RackCentrode, ShaperCutter, envelope_points, trim_crossing, EnvelopeCurve
 from ..gears.involute import BasicRack
 from ..gears.noncircular import PitchCurves, _leg_breakpoints

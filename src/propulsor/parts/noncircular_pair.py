@@ -34,7 +34,7 @@ from ..checks.result import Check
 from ..errors import InputError
 from ..gears.noncircular import (
     CutterSpec, PitchCurves, SmoothedWalkingLaw, check_generable, choose_smoothing, hub_speed_ripple,
-    module_for, perimeter_per_mm,
+    perimeter_per_mm,
 )
 from ..gears.sectors import (
     PINION_POINT_COLUMNS, RADII_COLUMNS, SECTOR_COLUMNS, WHEEL_POINT_COLUMNS, pinion_tooth_points,
