@@ -20,9 +20,9 @@ def result():
     return search_design(MECH, LIMITS)
 
 
-def test_search_evaluates_200_candidates_in_10_s(result):
+def test_search_evaluates_at_least_200_candidates(result):
+    """The time budget (<= 10 s) is measured by bench/bench_cam_search.py, not here."""
     assert result.n_evaluated >= 200 and len(result.rows) == result.n_evaluated
-    assert result.elapsed_s <= 10.0
     assert result.chosen is not None and result.law is not None
     assert {"linear", "quadratic", "exponential"} <= {r["law"] for r in result.rows}
     assert any(r["violations"].startswith("blow-up") for r in result.rows)  # recorded, not fatal

@@ -265,15 +265,10 @@ def test_broad_phase_matches_brute_force():
     assert got == set(zip(i.tolist(), j.tolist()))
 
 
-def test_fine_mesh_is_clean_and_fast():
-    import time
-
+def test_fine_mesh_is_clean():
     s = trimesh.creation.icosphere(subdivisions=6, radius=50.0)  # 81920 triangles
-    t = time.perf_counter()
     n, _ = self_intersections(s.vertices, s.faces)
-    dt = time.perf_counter() - t
     assert n == 0
-    assert dt < 20.0
     # push one vertex through the opposite side: found
     V = np.asarray(s.vertices).copy()
     V[0] = -V[0] * 1.2
@@ -309,17 +304,10 @@ def _spur_gear(z=56, m=10.0, b=80.0, bore=100.0):
     return wp.close().extrude(b).faces(">Z").workplane().hole(bore).val()
 
 
-def test_big_gear_mesh_fast_and_valid():
-    import time
-
+def test_big_gear_mesh_valid():
     gear = _spur_gear()
-    t0 = time.perf_counter()
     m = to_trimesh(gear)
-    t1 = time.perf_counter()
     cs = mesh_checks(m, "gear z56 m10 b80", expected_volume=volume(gear), expected_genus=1)
-    t2 = time.perf_counter()
     assert all_passed(cs), failures(cs)
     assert len(m.faces) > 100_000
     assert by_name(cs, "chord deflection").value <= MESH_CHORD_LIMIT_MM
-    # generous bounds (shared 2-core machine); measured ~1 s and ~1.5 s
-    assert t1 - t0 < 15.0 and t2 - t1 < 15.0
