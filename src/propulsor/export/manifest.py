@@ -112,10 +112,12 @@ def library_versions() -> dict:
     return v
 
 
-def write_manifest(folder: str | Path, part: str, inputs, derived, checks, versions: dict | None = None, file_info: dict | None = None) -> Path:
+def write_manifest(folder: str | Path, part: str, inputs, derived, checks, versions: dict | None = None,
+                   file_info: dict | None = None, expected_failures=()) -> Path:
     """Write folder/manifest.json; file_info adds keys to file entries by
     relative path (e.g. {'gear.step': {'volume_mm3': ...}}); versions default
-    to library_versions()."""
+    to library_versions().  expected_failures: names of checks the part file
+    documents as failing (they are recorded, and do not make `passed` false)."""
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     files = file_entries(folder)
@@ -128,7 +130,9 @@ def write_manifest(folder: str | Path, part: str, inputs, derived, checks, versi
         "inputs": jsonable(inputs),
         "derived": jsonable(derived),
         "checks": [jsonable(c) for c in checks],
-        "passed": all(bool(jsonable(c).get("passed")) for c in checks),
+        "expected_failures": sorted(expected_failures),
+        "passed": all(bool(jsonable(c).get("passed")) or jsonable(c).get("name") in set(expected_failures)
+                      for c in checks),
         "files": files,
         "versions": jsonable(versions if versions is not None else library_versions()),
     }

@@ -169,5 +169,6 @@ class OutputWriter:
         write_report(self.folder / "report.md", title=self.title, part=self.part, intro=intro, inputs=report_inputs,
                      derived=report_derived, checks=self.checks, tables=self.tables, plots=self.plots,
                      notes=notes)
-        write_manifest(self.folder, part=self.part, inputs=inputs, derived=self.derived, checks=self.checks)
+        write_manifest(self.folder, part=self.part, inputs=inputs, derived=self.derived, checks=self.checks,
+                       expected_failures=self.expected_failures)
         return self.failures()
