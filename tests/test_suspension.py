@@ -240,6 +240,7 @@ def test_yield_message_names_value_and_limit():
         TorsionSuspension(beta0_deg=19.0, beta_m_deg=116.0)
     msg = str(e.value)
     assert "116" in msg and "1600" in msg and "yields" in msg
+    assert msg.startswith("beta_m_deg = 116.0:")  # the value as given, not a degrees(radians) round trip
 
 
 def test_design_input_errors():

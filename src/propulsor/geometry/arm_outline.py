@@ -171,15 +171,13 @@ def arm_outline(length: float, r_boss0: float, r_boss1: float, grid: np.ndarray,
                       {"bottom_0": cb0, "bottom_1": cb1, "top_0": ct0, "top_1": ct1})
 
 
-def material_intervals(profile: Profile, x: float, chord_tol: float = 0.002) -> list[tuple[float, float]]:
-    """Intervals of y where the vertical line at x lies in the material (outer minus holes)."""
+def _intervals(polys, x: float) -> list[tuple[float, float]]:
     ys = []
-    for poly in profile.polylines(chord_tol):
+    for poly in polys:
         a, b = poly, np.roll(poly, -1, axis=0)
         cross = (a[:, 0] - x) * (b[:, 0] - x) < 0
         on = (a[:, 0] == x) & (b[:, 0] != x)
-        idx = np.nonzero(cross | on)[0]
-        for i in idx:
+        for i in np.nonzero(cross | on)[0]:
             t = (x - a[i, 0]) / (b[i, 0] - a[i, 0])
             ys.append(a[i, 1] + t * (b[i, 1] - a[i, 1]))
     ys = np.sort(np.asarray(ys, float))
@@ -188,13 +186,19 @@ def material_intervals(profile: Profile, x: float, chord_tol: float = 0.002) -> 
     return [(float(ys[i]), float(ys[i + 1])) for i in range(0, len(ys), 2)]
 
 
+def material_intervals(profile: Profile, x: float, chord_tol: float = 0.002) -> list[tuple[float, float]]:
+    """Intervals of y where the vertical line at x lies in the material (outer minus holes)."""
+    return _intervals(profile.polylines(chord_tol), float(x))
+
+
 def section_depth(profile: Profile, xs, chord_tol: float = 0.002) -> np.ndarray:
     """Depth 2·min(y_top, −y_bottom) of the material band about the axis at each station (0 if the
     axis itself is not in the material)."""
+    polys = profile.polylines(chord_tol)
     out = []
     for x in np.atleast_1d(np.asarray(xs, float)):
         d = 0.0
-        for lo, hi in material_intervals(profile, float(x), chord_tol):
+        for lo, hi in _intervals(polys, float(x)):
             if lo <= 0.0 <= hi:
                 d = 2.0 * min(hi, -lo)
         out.append(d)

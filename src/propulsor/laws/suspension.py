@@ -283,7 +283,8 @@ class TorsionSuspension:
                              "must be < 180 deg (P(beta) = M / (R_b sin beta) is singular there)")
         tau_m = self.tau(self.beta_m)
         if tau_m > self.tau_max * (1.0 + 1e-12):
-            raise InputError("beta_m_deg", math.degrees(self.beta_m),
+            shown = self.beta_m_deg if self.beta_m_deg is not None else round(math.degrees(self.beta_m), 9)
+            raise InputError("beta_m_deg", shown,
                              f"torsion bar yields at beta_m: tau = {tau_m:.6g} MPa > [tau] = {self.tau_max:g} MPa "
                              f"(twist {math.degrees(self.beta_m - self.beta0):.6g} > gamma_m = "
                              f"{math.degrees(self.gamma_m):.6g} deg)")
