@@ -238,6 +238,33 @@ def _plane_separated(V, F, N, D, I, J, shared_j, eps):
     return (pos | neg) & ~np.all(shared_j, axis=1)
 
 
+def _within_plane(V, F, N, D, I, J, eps):
+    """All three vertices of triangle J within eps of the plane of triangle I."""
+    d = np.einsum("kij,kj->ki", V[F[J]], N[I]) - D[I][:, None]
+    return np.all(np.abs(d) <= eps, axis=1)
+
+
+def _coplanar_overlap(ti, tj, n, share_vertex, eps):
+    """Coplanar triangles (k,3,3): separating-axis test in the plane over the six edge normals.
+
+    Without a shared vertex the closed triangles meet unless an axis shows a gap > eps (as the
+    edge tests of the general path); sharing a vertex they always touch there, and meet only if
+    no axis separates them with a gap >= -eps (interiors or an opposite edge overlap).
+    """
+    drop = np.argmax(np.abs(n), axis=1)
+    keep = np.array([[1, 2], [0, 2], [0, 1]])[drop]  # (k,2)
+    A = np.take_along_axis(ti, keep[:, None, :], axis=2)
+    B = np.take_along_axis(tj, keep[:, None, :], axis=2)
+    # projected lengths shrink by at most 1/sqrt(3): compare gaps on unit axes in the projection
+    e = np.concatenate([np.roll(A, -1, axis=1) - A, np.roll(B, -1, axis=1) - B], axis=1)  # (k,6,2)
+    ax = np.stack([-e[:, :, 1], e[:, :, 0]], axis=2)
+    ax /= np.maximum(np.linalg.norm(ax, axis=2), 1e-300)[:, :, None]
+    pa = np.einsum("kvd,kad->kva", A, ax)
+    pb = np.einsum("kvd,kad->kva", B, ax)
+    gap = np.maximum(pb.min(axis=1) - pa.max(axis=1), pa.min(axis=1) - pb.max(axis=1)).max(axis=1)
+    return np.where(share_vertex, gap < -eps, gap <= eps)
+
+
 def _pairs_intersect(V, F, I, J, eps, N=None, D=None):
     """Narrow phase for candidate pairs (I[k], J[k]); returns bool per pair.
 
@@ -252,7 +279,13 @@ def _pairs_intersect(V, F, I, J, eps, N=None, D=None):
     if N is not None:
         sep = _plane_separated(V, F, N, D, I, J, eq.any(axis=1), eps)
         sep |= _plane_separated(V, F, N, D, J, I, eq.any(axis=2), eps)
-        live = np.nonzero(~sep)[0]
+        # coplanar pairs sharing at most a vertex (the bulk on the planar faces of a prism): 2D test
+        nsh = eq.any(axis=2).sum(axis=1)
+        cop = ~sep & (nsh <= 1) & _within_plane(V, F, N, D, I, J, eps) & _within_plane(V, F, N, D, J, I, eps)
+        k = np.nonzero(cop)[0]
+        if len(k):
+            hit[k] = _coplanar_overlap(V[fi[k]], V[fj[k]], N[I[k]], nsh[k] == 1, eps)
+        live = np.nonzero(~sep & ~cop)[0]
         if len(live) < len(I):
             hit[live] = _pairs_intersect(V, F, I[live], J[live], eps)
             return hit
