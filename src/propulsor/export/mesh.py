@@ -20,6 +20,9 @@ from pathlib import Path
 import numpy as np
 import trimesh
 from OCP.BRep import BRep_Tool
+from OCP.BRepAdaptor import BRepAdaptor_Surface
+from OCP.GeomAbs import GeomAbs_Cone, GeomAbs_Cylinder, GeomAbs_Plane, GeomAbs_SurfaceOfExtrusion
+from OCP.IMeshTools import IMeshTools_Parameters
 from OCP.BRepMesh import BRepMesh_IncrementalMesh
 from OCP.BRepTools import BRepTools
 from OCP.TopAbs import TopAbs_FACE, TopAbs_REVERSED
@@ -73,10 +76,31 @@ def merge_close_vertices(vertices: np.ndarray, faces: np.ndarray, tol: float = M
     return nv, nf
 
 
+#: surfaces swept by straight lines: their exact triangulation needs no interior nodes
+_RULED = (GeomAbs_Plane, GeomAbs_Cylinder, GeomAbs_Cone, GeomAbs_SurfaceOfExtrusion)
+
+
+def _ruled_only(shape) -> bool:
+    """True when every face lies on a plane, cylinder, cone or linear extrusion (a prism of a
+    profile, a bored disc): strips between the edges' discretisations are then within the chord
+    tolerance of the surface, and BRepMesh's interior nodes only add slivers."""
+    ex = TopExp_Explorer(shape, TopAbs_FACE)
+    while ex.More():
+        if BRepAdaptor_Surface(TopoDS.Face_s(ex.Current())).GetType() not in _RULED:
+            return False
+        ex.Next()
+    return True
+
+
 def _mesh_shape(shape, chord_tol, angular_tol, parallel) -> float:
     """Run BRepMesh; return the largest achieved deflection OCCT reports (mm)."""
     BRepTools.Clean_s(shape)
-    mesher = BRepMesh_IncrementalMesh(shape, chord_tol, False, angular_tol, parallel)
+    prm = IMeshTools_Parameters()
+    prm.Deflection, prm.Angle, prm.Relative, prm.InParallel = chord_tol, angular_tol, False, parallel
+    if _ruled_only(shape):
+        prm.InternalVerticesMode = False
+        prm.ControlSurfaceDeflection = False
+    mesher = BRepMesh_IncrementalMesh(shape, prm)
     if not mesher.IsDone():
         raise RuntimeError("BRepMesh failed")
     worst = 0.0
