@@ -309,5 +309,5 @@ def test_big_gear_mesh_valid():
     m = to_trimesh(gear)
     cs = mesh_checks(m, "gear z56 m10 b80", expected_volume=volume(gear), expected_genus=1)
     assert all_passed(cs), failures(cs)
-    assert len(m.faces) > 100_000
+    assert len(m.faces) > 30_000  # a ruled solid: strips between the edge discretisations, no interior nodes
     assert by_name(cs, "chord deflection").value <= MESH_CHORD_LIMIT_MM
