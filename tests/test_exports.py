@@ -327,3 +327,21 @@ def test_check_path_finds_broken_files(plate, tmp_path):
     assert failed(tmp_path / "open.dxf") == {"$INSUNITS", "closed loops on CUT", "open entities on CUT"}
     (tmp_path / "garbage.dxf").write_text("0\nSECTION\n2\nENTITIES\n0\nLINE\n")
     assert failed(tmp_path / "garbage.dxf") == {"DXF parses"}
+
+
+def test_dxf_bytes_do_not_depend_on_the_hash_seed(tmp_path):
+    """ezdxf orders CLASS entries through a set of strings; the writer sorts them."""
+    import os
+    import subprocess
+    import sys
+
+    code = ("import sys; from propulsor.export.dxf import write_dxf; "
+            "from propulsor.geometry.profile import Profile, circle_loop; "
+            "write_dxf(sys.argv[1], [Profile(circle_loop(10.0), [circle_loop(3.0, ccw=False)])], "
+            "[('circle', {'radius': 5.0}), ('point', {'p': (0.0, 0.0)})])")
+    outs = []
+    for seed in ("1", "2", "3", "4"):
+        f = tmp_path / f"s{seed}.dxf"
+        subprocess.run([sys.executable, "-c", code, str(f)], check=True, env={**os.environ, "PYTHONHASHSEED": seed})
+        outs.append(f.read_bytes())
+    assert all(o == outs[0] for o in outs)

@@ -59,6 +59,16 @@ def _new_doc():
     doc.header["$LUNITS"] = 2
     doc.layers.add(CUT, color=7)
     doc.layers.add(REF, color=1)
+    # ezdxf adds the CLASS entries of the entity types in use in the order of a set of strings,
+    # which follows PYTHONHASHSEED: sort them so that the same drawing gives the same bytes
+    classes = doc.classes
+    add_required = classes.add_required_classes
+
+    def add_required_sorted(dxfversion):
+        add_required(dxfversion)
+        classes.classes = type(classes.classes)(sorted(classes.classes.items()))
+
+    classes.add_required_classes = add_required_sorted
     return doc
 
 
