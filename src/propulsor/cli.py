@@ -43,14 +43,16 @@ def cmd_build(args) -> int:
     tmp.mkdir()
     from .parts.writer import OutputWriter
 
+    writer = OutputWriter(tmp, part_type.name, params, progress=progress, source=Path(args.part_file))
     try:
-        writer = OutputWriter(tmp, part_type.name, params, progress=progress, source=Path(args.part_file))
         part_type.build(params, writer)
         failures = writer.finish()
     except InputError as exc:
+        writer.close()
         shutil.rmtree(tmp, ignore_errors=True)
         return _fail_input(exc)
     except BaseException:
+        writer.close()
         shutil.rmtree(tmp, ignore_errors=True)
         raise
 

@@ -166,11 +166,14 @@ def triangulate(
     return v, f, achieved
 
 
-def to_trimesh(solid, chord_tol: float = CHORD_TOL_MM, angular_tol: float = ANGULAR_TOL_RAD) -> trimesh.Trimesh:
+def to_trimesh(solid, chord_tol: float = CHORD_TOL_MM, angular_tol: float = ANGULAR_TOL_RAD,
+               parallel: bool = True) -> trimesh.Trimesh:
     """Tessellate a solid into a trimesh.Trimesh (merged vertices, no processing
     that could hide defects); metadata['chord_deflection_mm'] holds the
-    deflection OCCT reports for the mesh."""
-    v, f, d = triangulate(solid, chord_tol, angular_tol)
+    deflection OCCT reports for the mesh.  parallel=False keeps BRepMesh on the
+    calling thread (required in a forked worker: OCCT's thread pool does not
+    survive a fork)."""
+    v, f, d = triangulate(solid, chord_tol, angular_tol, parallel)
     m = trimesh.Trimesh(vertices=v, faces=f, process=False, validate=False)
     m.metadata["chord_deflection_mm"] = d
     return m

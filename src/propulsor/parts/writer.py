@@ -26,6 +26,44 @@ from ..checks.result import Check
 from ..params import params_to_dict
 
 
+#: forked workers writing and checking solids (the machine has 2 cores)
+SOLID_WORKERS = 2
+
+
+class _Done:
+    """A finished computation with the interface of a Future."""
+
+    def __init__(self, value):
+        self.value = value
+
+    def result(self):
+        return self.value
+
+
+def solid_files_and_checks(folder: str, name: str, solid, expected_genus, volume: float, forked: bool) -> list:
+    """STEP, STL and 3MF of one solid in `folder` and every shared check on them (a list of Check).
+
+    B-rep validity (OCCT), STEP written and re-imported (one solid, same volume), tessellation
+    within the chord tolerance, mesh validity (closed, oriented, one body, genus, no
+    self-intersection, volume against the B-rep)."""
+    from ..checks.brep import brep_checks, step_roundtrip_check
+    from ..checks.mesh import mesh_checks
+    from ..export.mesh import tessellate, write_3mf, write_stl
+    from ..export.step import write_step
+
+    folder = Path(folder)
+    # the exact-vs-triangulated volume cross-check is made below on the exported mesh itself
+    checks = list(brep_checks(solid, name, cross_check_volume=False))
+    step = folder / f"{name}.step"
+    write_step(solid, step, name)
+    checks.append(step_roundtrip_check(solid, step, name))
+    mesh = tessellate(solid, parallel=not forked)
+    write_stl(mesh, folder / f"{name}.stl")
+    write_3mf(mesh, folder / f"{name}.3mf", name)
+    checks += mesh_checks(mesh, name, expected_genus=expected_genus, brep_volume=volume)
+    return checks
+
+
 #: name suffix -> unit, for the report's derived-value table (names carry their units, e.g. a_w_mm)
 _SUFFIX_UNITS = (("_mm3", "mm³"), ("_mm2", "mm²"), ("_mm", "mm"), ("_deg", "deg"), ("_rad", "rad"),
                  ("_mpa", "MPa"), ("_MPa", "MPa"), ("_kN", "kN"), ("_N", "N"), ("_Nm", "N·m"), ("_kg", "kg"),
@@ -68,6 +106,8 @@ class OutputWriter:
         self.tables: list[str] = []
         self.plots: list[str] = []
         self.extra_files: list[str] = []  # assemblies and DXF, named in the report
+        self._pool = None
+        self._solid_jobs: list = []
 
     # -- helpers -----------------------------------------------------------------
     def path(self, rel: str) -> Path:
@@ -84,29 +124,43 @@ class OutputWriter:
 
     # -- solids ------------------------------------------------------------------
     def add_solid(self, name: str, solid, expected_genus: int | None = None) -> SolidRecord:
-        """Write STEP, STL and 3MF of one solid and run every shared check on them."""
-        from ..checks.brep import brep_checks, step_roundtrip_check
-        from ..checks.mesh import mesh_checks
-        from ..export.mesh import tessellate, write_3mf, write_stl
-        from ..export.step import write_step
+        """Write STEP, STL and 3MF of one solid and run every shared check on them.
 
-        self.progress(f"{name}: B-rep checks")
-        # the exact-vs-triangulated volume cross-check is made below on the exported mesh itself
-        self.add_checks(brep_checks(solid, name, cross_check_volume=False))
+        The work runs in a forked worker (two at a time, the machine's cores) while the part goes
+        on; :meth:`finish` collects the checks in the order the solids were added."""
         volume = float(solid.Volume())
-        step = self.path(f"{name}.step")
-        write_step(solid, step, name)
-        self.add_checks([step_roundtrip_check(solid, step, name)])
-        self.progress(f"{name}: tessellation and mesh checks")
-        mesh = tessellate(solid)
-        stl, tmf = self.path(f"{name}.stl"), self.path(f"{name}.3mf")
-        write_stl(mesh, stl)
-        write_3mf(mesh, tmf, name)
-        self.add_checks(mesh_checks(mesh, name, expected_genus=expected_genus, brep_volume=volume))
-        rec = SolidRecord(name, volume, {"step": step.name, "stl": stl.name, "3mf": tmf.name})
+        rec = SolidRecord(name, volume, {"step": f"{name}.step", "stl": f"{name}.stl", "3mf": f"{name}.3mf"})
         self.solids.append(rec)
         self.derived[f"{name}_volume_mm3"] = volume
+        self.progress(f"{name}: STEP, STL, 3MF and their checks (B-rep, STEP round trip, mesh)")
+        pool = self._solid_pool()
+        args = (str(self.folder), name, solid, expected_genus, volume, pool is not None)
+        self._solid_jobs.append((name, pool.submit(solid_files_and_checks, *args) if pool else _Done(
+            solid_files_and_checks(*args))))
         return rec
+
+    def _solid_pool(self):
+        import multiprocessing as mp
+
+        if self._pool is None and "fork" in mp.get_all_start_methods():
+            from concurrent.futures import ProcessPoolExecutor
+
+            self._pool = ProcessPoolExecutor(max_workers=SOLID_WORKERS, mp_context=mp.get_context("fork"))
+        return self._pool
+
+    def wait_solids(self) -> None:
+        """Collect the checks of every solid added so far (in the order they were added)."""
+        for name, job in self._solid_jobs:
+            self.add_checks(job.result())
+            self.progress(f"{name}: files written and checked")
+        self._solid_jobs = []
+
+    def close(self) -> None:
+        """Stop the workers (after a failure: nothing may be written into the folder after this)."""
+        if self._pool is not None:
+            self._pool.shutdown(wait=True, cancel_futures=True)
+            self._pool = None
+        self._solid_jobs = []
 
     def add_assembly(self, name: str, components) -> Path:
         """components: list of (component name, solid, (x, y, z) mm, rotation about z in rad)."""
@@ -152,6 +206,9 @@ class OutputWriter:
         """Write report.md and manifest.json; return the unexpected check failures."""
         from ..export.manifest import write_manifest
         from ..export.report import write_report
+
+        self.wait_solids()
+        self.close()
 
         inputs = params_to_dict(self.params)
         notes = list(self.notes)
