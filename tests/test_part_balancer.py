@@ -237,6 +237,11 @@ def test_travel_sweep_no_overlap_and_least_clearance(out, manifest):
         assert d[f"min_clearance_{pair}_mm"] <= ub.min() + 0.5
         assert "tyre" in d[f"min_clearance_{pair}_where"]
     assert d["min_clearance_own_wheel_mm"] == pytest.approx(10.0, abs=0.2)  # hub face to arm face
+    # the fender: the wheel top at beta_m, R_b sin(beta_m − 90°) + R, stays under it, and the envelope's
+    # least gap (the hull's bore edge) does not exceed that analytic value
+    top = -360.0 * math.cos(math.radians(d["beta_m_deg"])) + 315.0
+    assert d["fender_over_wheel_top_at_beta_m_mm"] == pytest.approx(520.0 - top, abs=1e-9)
+    assert d["min_clearance_hull_mm"] <= d["fender_over_wheel_top_at_beta_m_mm"]
 
 
 # ------------------------------------------------------------------ 5. bad input
