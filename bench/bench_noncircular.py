@@ -76,7 +76,17 @@ def main() -> int:
     print(f"  phase 2 comparison + solids + files: {t_files:6.2f} s (target <= {TARGET_FILES_S:.0f} s), "
           f"{n_files} files, {len(w.checks)} checks, failures {failures}")
     print(f"      comparison (sectors, one leg) {t_compare:.2f} s; " + "; ".join(solid_split))
-    ok = not failures and t_pair <= TARGET_PAIR_S and t_files <= TARGET_FILES_S
+    # ---- the part as `propulsor build` makes it: the solids' files and checks run in the writer's
+    # workers while the proof and the comparison run, so the files cost less than phase 2 alone
+    with tempfile.TemporaryDirectory() as tmp:
+        w = OutputWriter(Path(tmp) / "out", name, p, source=part)
+        t3 = time.perf_counter()
+        ncp.build(p, w)
+        failures_b = w.finish()
+        t_build = time.perf_counter() - t3
+    print(f"  whole part (pair, proof, comparison, solids, files): {t_build:6.2f} s "
+          f"(target <= {TARGET_PAIR_S + TARGET_FILES_S:.0f} s = phase 1 + 10 s), failures {failures_b}")
+    ok = not failures and not failures_b and t_pair <= TARGET_PAIR_S and t_build <= TARGET_PAIR_S + TARGET_FILES_S
     return 0 if ok else 1
 
 

@@ -501,23 +501,32 @@ def build(p: NoncircularPairParams, w) -> None:
     prog = w.progress
     d = design(p, prog)
     profiles = gear_profiles(p, d)
+    solids = start_solids(p, w, profiles)  # files and checks of the solids run beside the proof
     pr = prove(d, p.proof_phases_per_tooth, 4, prog, mounting(p, d))  # the built pair over the whole cycle
     other, pr_other, other_note = compare(p, d, prog) if p.compare_methods else (None, None, "")
-    write_outputs(p, w, d, profiles, pr, other, pr_other, other_note)
+    write_outputs(p, w, d, profiles, pr, other, pr_other, other_note, solids)
 
 
-def write_outputs(p: NoncircularPairParams, w, d: Design, profiles, pr, other=None, pr_other=None,
-                  other_note: str = "") -> None:
-    """Solids (STEP/STL/3MF with the shared checks), assembly, DXF, tables, plots, checks, report values."""
-    prog = w.progress
-    prog("solids")
+def start_solids(p: NoncircularPairParams, w, profiles):
+    """Extrude both gears (face width) and hand them to the writer (STEP/STL/3MF and the shared
+    checks, in its workers).  Returns (driver, driven) solids for the assembly."""
     from ..solids.build import extrude_profile
 
+    w.progress("solids")
     prof_drv, prof_dvn = profiles
     s_drv = extrude_profile(prof_drv, p.face_width_mm)
     s_dvn = extrude_profile(prof_dvn, p.face_width_mm)
-    w.add_solid("driver", s_drv, expected_genus=1 if p.driver_bore_mm > 0 else 0)
     w.add_solid("driven", s_dvn, expected_genus=1 if p.driven_bore_mm > 0 else 0)
+    w.add_solid("driver", s_drv, expected_genus=1 if p.driver_bore_mm > 0 else 0)
+    return s_drv, s_dvn
+
+
+def write_outputs(p: NoncircularPairParams, w, d: Design, profiles, pr, other=None, pr_other=None,
+                  other_note: str = "", solids=None) -> None:
+    """Solids (STEP/STL/3MF with the shared checks), assembly, DXF, tables, plots, checks, report values."""
+    prog = w.progress
+    s_drv, s_dvn = solids if solids is not None else start_solids(p, w, profiles)
+    prof_drv, prof_dvn = profiles
     w.add_assembly("pair", [("driven", s_dvn, (0.0, 0.0, 0.0), 0.0),
                             ("driver", s_drv, (mounting(p, d), 0.0, 0.0), 0.0)])
 
