@@ -805,10 +805,10 @@ def _characteristic_plot(m: BalancerModel):
     c = t.characteristic(361)
     fig, ax = new_figure(7.0, 4.6)
     ax.plot(c["f"], c["P"] / 1000, lw=1.5, label="P(f), eq. 11 and 13")
-    for b, lab in ((t.beta_st, "β_ст"), (t.beta_m, "β_m")):
+    for b, lab, off in ((t.beta_st, "β_ст", (12, -28)), (t.beta_m, "β_m", (-160, -6))):
         ax.plot([float(t.f(b))], [float(t.P(b)) / 1000], "o", ms=5)
         ax.annotate(f"{lab} = {math.degrees(b):.3f}°\nf = {float(t.f(b)):.1f} mm, P = {float(t.P(b)) / 1000:.2f} kN",
-                    (float(t.f(b)), float(t.P(b)) / 1000), textcoords="offset points", xytext=(-150, 5), fontsize=7)
+                    (float(t.f(b)), float(t.P(b)) / 1000), textcoords="offset points", xytext=off, fontsize=7)
     k = t.stiffness_at_static
     fs = np.linspace(t.f_st - 60, t.f_st + 60, 3)
     ax.plot(fs, (t.P_st + k * (fs - t.f_st)) / 1000, "--", lw=0.8, label=f"tangent at f_ст: c = {1000 * k:.0f} N/m")
