@@ -432,6 +432,18 @@ def _clearance_step(A: Outline, B: Outline, Ma: np.ndarray, Mb: np.ndarray, inte
     return d2, _apply(Mb, PA[i2:i2 + 1])[0], _apply(Mb, q2[None])[0]
 
 
+def _pose_pair(poses_a, poses_b):
+    """Matrices and angles of two pose sequences of equal length (a single Pose is held fixed)."""
+    n = None
+    for p in (poses_a, poses_b):
+        if not isinstance(p, Pose):
+            n = len(p) if n is None else n
+    Ma, ang_a = _pose_stack(poses_a, n, "poses_a")
+    Mb, ang_b = _pose_stack(poses_b, n, "poses_b")
+    require(len(Ma) == len(Mb), "poses_b", len(Mb), f"must have as many steps as poses_a ({len(Ma)})")
+    return Ma, ang_a, Mb, ang_b
+
+
 def sweep_pair(profile_a, poses_a, profile_b, poses_b, chord_tol: float = policy.MOTION_CHORD_TOL_MM, *,
                clearance_limit: float | None = None, name: str = "motion",
                max_segment: float = policy.MOTION_MAX_SEGMENT_MM) -> SweepResult:
@@ -446,13 +458,7 @@ def sweep_pair(profile_a, poses_a, profile_b, poses_b, chord_tol: float = policy
     adds a minimum-clearance record to ``checks()``.
     """
     A, B = outline(profile_a, chord_tol, max_segment), outline(profile_b, chord_tol, max_segment)
-    n = None
-    for p in (poses_a, poses_b):
-        if not isinstance(p, Pose):
-            n = len(p) if n is None else n
-    Ma, ang_a = _pose_stack(poses_a, n, "poses_a")
-    Mb, ang_b = _pose_stack(poses_b, n, "poses_b")
-    require(len(Ma) == len(Mb), "poses_b", len(Mb), f"must have as many steps as poses_a ({len(Ma)})")
+    Ma, ang_a, Mb, ang_b = _pose_pair(poses_a, poses_b)
     N = len(Ma)
     area = np.zeros(N)
     clear = np.zeros(N)
@@ -482,13 +488,7 @@ def sweep_pair_windowed(profile_a, poses_a, profile_b, poses_b, reach: float,
     """
     reach = require_positive("reach", reach, "mm")
     A, B = outline(profile_a, chord_tol, max_segment), outline(profile_b, chord_tol, max_segment)
-    n = None
-    for p in (poses_a, poses_b):
-        if not isinstance(p, Pose):
-            n = len(p) if n is None else n
-    Ma, ang_a = _pose_stack(poses_a, n, "poses_a")
-    Mb, ang_b = _pose_stack(poses_b, n, "poses_b")
-    require(len(Ma) == len(Mb), "poses_b", len(Mb), f"must have as many steps as poses_a ({len(Ma)})")
+    Ma, ang_a, Mb, ang_b = _pose_pair(poses_a, poses_b)
     N = len(Ma)
     rel = np.array([_compose(_inverse(Ma[k]), Mb[k]) for k in range(N)])  # B body -> A body
     cB = np.einsum("kij,j->ki", rel[:, :, :2], B.center) + rel[:, :, 2]

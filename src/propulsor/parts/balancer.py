@@ -41,6 +41,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..parallel import start as start_in_fork
 from ..checks.result import Check
 from ..errors import InputError
 from ..params import load_params, param, read_part_file
@@ -698,27 +699,6 @@ def _sweep_job(m: BalancerModel, bal_mesh, wheel_meshes):
     return travel_sweep(m, bal_mesh, wheel_meshes)
 
 
-class _Done:
-    def __init__(self, value):
-        self.value = value
-
-    def result(self):
-        return self.value
-
-
-def _start(fn, *args):
-    """Run fn(*args) in a forked process (the sweep beside the solid checks); inline without fork."""
-    import multiprocessing as mp
-    from concurrent.futures import ProcessPoolExecutor
-
-    if "fork" not in mp.get_all_start_methods():
-        return _Done(fn(*args))
-    ex = ProcessPoolExecutor(max_workers=1, mp_context=mp.get_context("fork"))
-    fut = ex.submit(fn, *args)
-    ex.shutdown(wait=False)
-    return fut
-
-
 # ------------------------------------------------------------------------------------------------
 # reporting helpers
 # ------------------------------------------------------------------------------------------------
@@ -1043,7 +1023,7 @@ def build(p: BalancerParams, w) -> None:
     wheel_meshes = [_mesh(s_, p.sweep_chord_mm) for s_ in wsol.values()]
     w.progress(f"travel sweep β0 … β_m ({int(math.ceil(math.degrees(t.beta_m - t.beta0) * p.sweep_steps_per_deg)) + 1} "
                "steps × hull + 2 neighbours), in a second process while the solids are checked")
-    pending = _start(_sweep_job, m, bal_mesh, wheel_meshes)
+    pending = start_in_fork(_sweep_job, m, bal_mesh, wheel_meshes)
     w.add_solid("balancer", bal, expected_genus=3)
     mass, com = _mass_props(bal)
     wm_tot, wm_com = 0.0, np.zeros(3)

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..parallel import start as start_in_fork
 from .. import policy
 from ..checks.result import Check
 from ..errors import InputError
@@ -191,29 +192,6 @@ def _dms(angle_rad: float) -> str:
     return f"{int(d)}°{int(mnt):02d}'{sec:05.2f}\""
 
 
-class _Done:
-    """A finished computation with the interface of a Future."""
-
-    def __init__(self, value):
-        self.value = value
-
-    def result(self):
-        return self.value
-
-
-def _start(fn, *args):
-    """Run fn(*args) in a forked process (2 cores: the sweep beside the solids); inline where fork is missing."""
-    import multiprocessing as mp
-    from concurrent.futures import ProcessPoolExecutor
-
-    if "fork" not in mp.get_all_start_methods():
-        return _Done(fn(*args))
-    ex = ProcessPoolExecutor(max_workers=1, mp_context=mp.get_context("fork"))
-    fut = ex.submit(fn, *args)
-    ex.shutdown(wait=False)
-    return fut
-
-
 def _build_solids(p: FinalDriveParams, outlines, w) -> dict:
     """Prismatic solids of sun, planet and ring; each written and checked by the writer."""
     from ..solids.build import extrude_profile
@@ -284,7 +262,7 @@ def build(p: FinalDriveParams, w) -> None:
 
     w.progress(f"interference sweep over one carrier turn ({int(math.ceil(360 * p.sweep_steps_per_deg))} steps), "
                f"in a second process while the solids are built")
-    pending = _start(carrier_sweep, p, ps, outlines)
+    pending = start_in_fork(carrier_sweep, p, ps, outlines)
     solids = _build_solids(p, outlines, w)
     sweeps = pending.result()
     w.progress("interference sweep done")

@@ -23,21 +23,12 @@ from pathlib import Path
 from typing import Any
 
 from ..checks.result import Check
+from ..parallel import Done, fork_pool
 from ..params import params_to_dict
 
 
 #: forked workers writing and checking solids (the machine has 2 cores)
 SOLID_WORKERS = 2
-
-
-class _Done:
-    """A finished computation with the interface of a Future."""
-
-    def __init__(self, value):
-        self.value = value
-
-    def result(self):
-        return self.value
 
 
 def solid_files_and_checks(folder: str, name: str, solid, expected_genus, volume: float, forked: bool) -> list:
@@ -135,17 +126,13 @@ class OutputWriter:
         self.progress(f"{name}: STEP, STL, 3MF and their checks (B-rep, STEP round trip, mesh)")
         pool = self._solid_pool()
         args = (str(self.folder), name, solid, expected_genus, volume, pool is not None)
-        self._solid_jobs.append((name, pool.submit(solid_files_and_checks, *args) if pool else _Done(
+        self._solid_jobs.append((name, pool.submit(solid_files_and_checks, *args) if pool else Done(
             solid_files_and_checks(*args))))
         return rec
 
     def _solid_pool(self):
-        import multiprocessing as mp
-
-        if self._pool is None and "fork" in mp.get_all_start_methods():
-            from concurrent.futures import ProcessPoolExecutor
-
-            self._pool = ProcessPoolExecutor(max_workers=SOLID_WORKERS, mp_context=mp.get_context("fork"))
+        if self._pool is None:
+            self._pool = fork_pool(SOLID_WORKERS)
         return self._pool
 
     def wait_solids(self) -> None:
