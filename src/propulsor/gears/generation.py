@@ -65,6 +65,23 @@ __all__ = [
 ]
 
 
+def nearer_circle_crossing(P, N, centre, R: float, parameter: str, whose: str) -> np.ndarray:
+    """Meshing equation of a rolling circle: the normal lines P + λN (N unit) cross the circle of
+    radius R about `centre`; of the two crossings the one nearer to P is the pitch point of the
+    contact.  InputError naming `parameter` when a normal misses the circle."""
+    Q = np.asarray(P, float) - np.asarray(centre, float)
+    b = np.einsum("ij,ij->i", Q, N)
+    c = np.einsum("ij,ij->i", Q, Q) - R ** 2
+    disc = b * b - c
+    if np.any(disc < 0):
+        raise InputError(parameter, "normal misses the rolling circle",
+                         f"every generating point's normal must cross the {whose} rolling circle")
+    sq = np.sqrt(disc)
+    l1, l2 = -b + sq, -b - sq
+    lam = np.where(np.abs(l1) <= np.abs(l2), l1, l2)
+    return P + lam[:, None] * N
+
+
 def _rot(theta, v):
     """Rotate vectors v (n,2) by angles theta (n,) counter-clockwise."""
     c, s = np.cos(theta), np.sin(theta)
@@ -166,16 +183,7 @@ class CircleCentrode:
         one on the same side of the foot of the perpendicular as P (smaller |λ|) is the pitch
         point of the contact (involute: contact point and pitch point on the same ray of the
         line of action)."""
-        b = np.einsum("ij,ij->i", P, N)
-        c = np.einsum("ij,ij->i", P, P) - self.R ** 2
-        disc = b * b - c
-        if np.any(disc < 0):
-            raise InputError("cutter outline", "normal misses the rolling circle",
-                             "every generating point's normal must cross the cutter's rolling circle")
-        sq = np.sqrt(disc)
-        l1, l2 = -b + sq, -b - sq
-        lam = np.where(np.abs(l1) <= np.abs(l2), l1, l2)
-        C = P + lam[:, None] * N
+        C = nearer_circle_crossing(P, N, (0.0, 0.0), self.R, "cutter outline", "cutter's")
         return self.R * np.arctan2(C[:, 0], C[:, 1])
 
 

@@ -48,7 +48,8 @@ import numpy as np
 from scipy.optimize import fsolve
 
 from ..errors import InputError, require
-from ..gears.generation import ArcPiece, LinePiece, RackCentrode, ShaperCutter, envelope_points, trim_crossing, EnvelopeCurve
+from ..gears.generation import (ArcPiece, EnvelopeCurve, LinePiece, RackCentrode, ShaperCutter, envelope_points,
+                                nearer_circle_crossing, trim_crossing)
 from ..gears.involute import BasicRack
 from ..gears.noncircular import PitchCurves, _leg_breakpoints
 from ..gears.sectors import SectorTable, involute
@@ -224,17 +225,7 @@ class ExternalCircleCentrode:
     def contact(self, P, N):
         """Meshing equation: the normal P + lam N meets the rolling circle; the crossing nearer
         to P is the pitch point (involute: contact and pitch point on one ray of the line of action)."""
-        Q = P - np.array([0.0, self.R])
-        b = np.einsum("ij,ij->i", Q, N)
-        c = np.einsum("ij,ij->i", Q, Q) - self.R ** 2
-        disc = b * b - c
-        if np.any(disc < 0):
-            raise InputError("shaper_teeth", "normal misses the rolling circle",
-                             "every generating point's normal must cross the shaper's rolling circle")
-        sq = np.sqrt(disc)
-        l1, l2 = -b + sq, -b - sq
-        lam = np.where(np.abs(l1) <= np.abs(l2), l1, l2)
-        C = P + lam[:, None] * N
+        C = nearer_circle_crossing(P, N, (0.0, self.R), self.R, "shaper_teeth", "shaper's")
         return self.R * np.arctan2(C[:, 0], self.R - C[:, 1])
 
 
@@ -399,14 +390,6 @@ def _tip_hit(side: _Side, curve: PitchCurve, h: float, phi_guess: float, span: f
 
 class _BatchCentrode(_Centrode):
     """_Centrode of many teeth at once: s_k is an array matching the generation arcs passed in."""
-
-    def phi(self, sg):
-        sg = np.atleast_1d(np.asarray(sg, float))
-        if self._key is not None and self._key[0] is sg:
-            return self._key[1]
-        ph = self.frame.phi(self.s_k + self.curve.sgn * sg)
-        self._key = (sg, ph)
-        return ph
 
 
 def _tip_hits_batch(sides: list, s_k: np.ndarray, ph_k: np.ndarray, curve: PitchCurve, frame: ArcFrame,
