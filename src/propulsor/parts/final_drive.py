@@ -53,8 +53,9 @@ class FinalDriveParams:
     ring_outer_d_mm: float = param(0.0, "mm", "ring outside diameter (0: root diameter + 8 modules)", min=0.0)
     ring_bolts: int = param(12, "", "mounting holes in the ring rim (0: none)", min=0, max=72, integer=True)
     ring_bolt_d_mm: float = param(18.0, "mm", "mounting hole diameter", min=0, min_exclusive=True)
-    sweep_steps_per_deg: float = param(2.0, "1/deg", "interference sweep steps per degree of carrier turn",
-                                       min=2.0, max=20.0)
+    sweep_steps_per_deg: float = param(float(policy.PLANETARY_SWEEP_STEPS_PER_DEG), "1/deg",
+                                       "interference sweep steps per degree of carrier turn",
+                                       min=float(policy.PLANETARY_SWEEP_STEPS_PER_DEG), max=20.0)
 
     def validate(self) -> None:
         ps = planetary_set(self)  # raises InputError for gears that cannot be made

@@ -421,7 +421,7 @@ def _figure2(w, d: Design, pr, other, pr_other):
         ax.plot(np.degrees(x), u, ".", ms=2.5, label=f"{dd.method} teeth: d theta / d phi from the outlines")
     ax.set_xlabel("driven angle phi within one leg, deg")
     ax.set_ylabel("gear ratio U = d theta / d phi")
-    ax.set_title("Figure 2 (seed 000) from geometry: the law vs the ratio the teeth deliver")
+    ax.set_title("The papers' Figure 2 (seed 000), from geometry: the law vs the ratio the teeth deliver")
     ax.legend(fontsize=7)
     fig.tight_layout()
     w.add_plot("figure2_ratio", fig)
