@@ -9,13 +9,11 @@ from hypothesis import strategies as st
 from scipy.integrate import quad
 
 from propulsor.errors import InputError
+from propulsor.gears.generability import CutterSpec, check_generable, choose_smoothing
 from propulsor.gears.noncircular import (
-    CutterSpec,
     PitchCurves,
     SmoothedWalkingLaw,
     centre_distance,
-    check_generable,
-    choose_smoothing,
     driven_teeth,
     hub_speed_ripple,
     module_for,

@@ -7,6 +7,8 @@ check failed.
 
 from __future__ import annotations
 
+from contextlib import contextmanager
+
 
 class InputError(ValueError):
     """Bad input: one line naming the parameter, its value and the limit."""
@@ -15,10 +17,33 @@ class InputError(ValueError):
         self.parameter = parameter
         self.value = value
         self.limit = limit
+        self.hint = hint
         msg = f"{parameter} = {value!r}: {limit}"
         if hint:
             msg += f" ({hint})"
         super().__init__(msg)
+
+
+@contextmanager
+def input_names(names: dict[str, str]):
+    """Name part-file keys in the errors of a lower layer.
+
+    The math and geometry layers name the quantities of their equations (``z_H``, ``m``,
+    ``slot_width``); a part maps them to the keys of its part file around the call::
+
+        with input_names({"z_H": "driven_teeth", "m": "module_mm"}):
+            gear = generate_gear(...)
+
+    An ``InputError`` whose parameter is in ``names`` is raised again with the part-file key
+    (same value, limit and hint); any other error passes unchanged.
+    """
+    try:
+        yield
+    except InputError as exc:
+        key = names.get(exc.parameter)
+        if key is None:
+            raise
+        raise InputError(key, exc.value, exc.limit, exc.hint) from None
 
 
 class CheckFailed(RuntimeError):

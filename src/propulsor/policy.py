@@ -71,6 +71,8 @@ CAM_COS_GAMMA_MIN = 1e-3
 #: ... or when rho leaves [CAM_RHO_MIN_FACTOR, CAM_RHO_MAX_FACTOR] * H0
 CAM_RHO_MAX_FACTOR = 100.0
 CAM_RHO_MIN_FACTOR = 1e-6
+#: d/dx (sin x / x) by its Taylor series below this |x| (no cancellation)
+SINC_SERIES_BELOW = 1e-2
 #: Gauss-Legendre nodes for the shoe quotient (gamma - phi)/phi of seed 001 eq. 7
 CAM_QUAD_NODES = 24
 #: samples of the support phase used to evaluate a design candidate
@@ -86,6 +88,22 @@ SECTOR_ITER_TOL_RAD = 1e-13
 TOOTH_COUNT_TOL = 1e-6
 #: relative precision of the automatically chosen smoothing half-width delta
 SMOOTHING_DELTA_RTOL = 1e-6
+
+# --- tooth generator (gears/cutters.py, gears/envelope.py, gears/generation.py, gears/noncircular_teeth.py)
+#: roll parameter where a shaper's involute ends, just above its base circle (t = 0 is the cusp)
+INVOLUTE_T_MIN = 1e-9
+#: the tip rounds of a rack tool may overlap its pitch by this much (mm) before it has no tip land
+TOOL_TIP_LAND_TOL_MM = 1e-12
+#: relative margin of the undercut test eta_f < -r sin^2(alpha) (rounding, not a design margin)
+UNDERCUT_REL_TOL = 1e-12
+#: a shaper's module and the gear's module are equal within this (mm)
+MODULE_MATCH_TOL_MM = 1e-12
+#: bisection of the shortened tip height stops at this interval (mm)
+TIP_HEIGHT_TOL_MM = 1e-6
+#: consecutive outline pieces must meet within this (mm) before their ends are snapped together
+OUTLINE_JOINT_TOL_MM = 1e-6
+#: two radii closer than this (mm) are the same circle (sector outlines: one root arc, radial flank)
+RADIUS_EQUAL_TOL_MM = 1e-9
 
 # --- mesh export (appended by the checks/exports layer) -------------------------
 #: largest tessellation chord error SPEC §9 allows (STL / 3MF); the mesher aims at

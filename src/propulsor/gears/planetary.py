@@ -29,7 +29,8 @@ from ..policy import (
     PLANET_TIP_CLEARANCE_MIN_MODULE,
     PLANETARY_COAXIALITY_TOL_MM,
 )
-from .involute import BasicRack, GearPair, SpurGear, x_sum_for_centre_distance
+from .gear_pair import GearPair
+from .involute import BasicRack, SpurGear, x_sum_for_centre_distance
 
 __all__ = ["Condition", "PlanetarySet"]
 

@@ -181,7 +181,7 @@ def shoe_profile(motion: CamMotion, rim: float, boss_width: float, mount_y: floa
     half = 0.5 * boss_width
     # X of the inner rim is (Y2 − rim)·sin ψ: monotone while Y2 > rim
     Y2 = shoe_table(sup, np.linspace(-s, s, 721)).Y2
-    require(float(Y2.min()) > rim + half, "shoe_rim_mm", rim,
+    require(float(Y2.min()) > rim + half, "rim", rim,
             f"must be < Y2_min − boss half width = {float(Y2.min()) - half:.4g} mm (seed 001 eq. 7)")
 
     def x_inner(u, target):
@@ -197,7 +197,7 @@ def shoe_profile(motion: CamMotion, rim: float, boss_width: float, mount_y: floa
     inner_p = Spline(inner_p.knots, np.vstack([inner_p.poles[:-1], ip]), inner_p.degree)
     inner_m = Spline(inner_m.knots, np.vstack([im, inner_m.poles[1:]]), inner_m.degree)
     y_boss = float(min(ip[1], im[1]))
-    require(mount_y < y_boss, "leg_mount_mm", mount_y,
+    require(mount_y < y_boss, "mount_y", mount_y,
             f"must be < {y_boss:.4g} mm (the inner rim of the shoe at the boss)")
     segs = [*curve,
             Line(tuple(curve[-1].end), tuple(inner_p.start)),
@@ -244,9 +244,9 @@ def carrier_profile(n_legs: int, radius: float, slot_width: float, slot_bottom: 
     """Carrier disc with `n_legs` radial slides: slots of width slot_width open at the rim,
     from the radius slot_bottom outward, slot j along u(2πj/n) (carrier frame)."""
     h = 0.5 * slot_width
-    require(h < radius, "leg_width_mm", slot_width, f"slot must be narrower than the carrier diameter {2 * radius:g} mm")
+    require(h < radius, "slot_width", slot_width, f"slot must be narrower than the carrier diameter {2 * radius:g} mm")
     L = math.sqrt(radius * radius - h * h)
-    require(slot_bottom < L, "carrier_radius_mm", radius, f"must reach beyond the slot bottom {slot_bottom:.4g} mm")
+    require(slot_bottom < L, "radius", radius, f"must reach beyond the slot bottom {slot_bottom:.4g} mm")
     segs = []
     corners = []
     for j in range(n_legs):

@@ -318,7 +318,7 @@ def kt_shoulder_fillet(D: float, d: float, r: float, load: str = "bending") -> f
 
 
 # ------------------------------------------------------------------ statics
-def _moment_about(loads, p) -> np.ndarray:
+def moment_about(loads, p) -> np.ndarray:
     """Sum of (r - p) x F over the loads, N mm (3-vector)."""
     M = np.zeros(3)
     for L in loads:
@@ -340,7 +340,7 @@ class Reactions:
     def residual(self, loads) -> tuple[np.ndarray, np.ndarray]:
         """Force and moment (about O) of loads + reactions: both ~0 when balanced."""
         F = sum((np.array([L.F_x, L.F_y, 0.0]) for L in loads), np.zeros(3)) + self.bearing1 + self.bearing2
-        M = (_moment_about(loads, (0, 0, 0))
+        M = (moment_about(loads, (0, 0, 0))
              + np.cross([0.0, 0.0, self.z1], self.bearing1)
              + np.cross([0.0, 0.0, self.z2], self.bearing2)
              + np.array([0.0, 0.0, self.bar_torque]))
@@ -351,7 +351,7 @@ def reactions(loads, a1: float, a2: float) -> Reactions:
     """Bearing forces and bar torque balancing the loads (bearings at z = -a1, -a2)."""
     z1, z2 = -float(a1), -float(a2)
     F = sum((np.array([L.F_x, L.F_y, 0.0]) for L in loads), np.zeros(3))
-    M = _moment_about(loads, (0, 0, 0))
+    M = moment_about(loads, (0, 0, 0))
     # bearing j at (0, 0, z_j) with force (Bx, By, 0): moment (-z_j By, z_j Bx, 0)
     A = np.array([[1.0, 1.0], [z1, z2]])
     Bx = np.linalg.solve(A, [-F[0], -M[1]])
@@ -496,7 +496,7 @@ class BalancerAnalysis:
         rows = []
         for c in self.cases:
             # upper axle root at the inboard arm face: moment of all loads about (0, 0, -b/2)
-            M = _moment_about(c.loads, (0.0, 0.0, -g.b / 2.0))
+            M = moment_about(c.loads, (0.0, 0.0, -g.b / 2.0))
             Mb, Mt = math.hypot(M[0], M[1]), abs(M[2])
             Wb_u = math.pi * (g.d_upper**4 - g.d_upper_bore**4) / (32.0 * g.d_upper)
             sb = Mb / Wb_u
@@ -506,7 +506,7 @@ class BalancerAnalysis:
                          "sigma_vM_peak": math.sqrt((kb_u * sb) ** 2 + 3 * (kt_u * tt) ** 2)})
             # wheel spindle root at the outboard arm face: loads acting on the spindle only
             sp = [L for L in c.loads if L.s == R and L.z > g.b / 2.0]
-            M = _moment_about(sp, (R, 0.0, g.b / 2.0))
+            M = moment_about(sp, (R, 0.0, g.b / 2.0))
             Mb = math.hypot(M[0], M[1])
             sb = Mb / (math.pi * (g.d_lower**4 - g.d_lower_bore**4) / (32.0 * g.d_lower))
             rows.append({"case": c.name, "where": "wheel spindle fillet", "K_t_bending": kb_l, "K_t_torsion": 1.0,

@@ -212,22 +212,6 @@ _GL_X = 0.5 * (_GL_X + 1.0)  # nodes on [0, 1]
 _GL_W = 0.5 * _GL_W
 
 
-def _sinc(x):
-    """sin x / x (1 at 0)."""
-    return np.sinc(np.asarray(x, dtype=float) / math.pi)
-
-
-def _dsinc(x):
-    """d/dx (sin x / x), without cancellation near 0."""
-    x = np.asarray(x, dtype=float)
-    small = np.abs(x) < 1e-2
-    xs = np.where(small, 1.0, x)
-    big = (xs * np.cos(xs) - np.sin(xs)) / (xs * xs)
-    x2 = x * x
-    ser = x * (-1.0 / 3.0 + x2 * (1.0 / 30.0 - x2 * (1.0 / 840.0 - x2 / 45360.0)))
-    return np.where(small, ser, big)
-
-
 class SupportPath:
     """Solution of seed 001 eq. 20 over the support phase, with dense output.
 

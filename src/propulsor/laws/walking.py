@@ -43,6 +43,16 @@ def leg_index(phi):
     return np.floor((phi + math.pi / 4) / LEG_PERIOD)
 
 
+def check_n_closes(n: int) -> None:
+    """InputError unless n driver turns per driven turn close the pair: the driver pitch curve
+    repeats every n*pi/2, so n must divide the 4 legs."""
+    if 4 % n != 0:
+        raise InputError(
+            "n", n,
+            "the driver pitch curve repeats every n*pi/2 and closes only if n divides the 4 legs: n in {1, 2, 4}",
+        )
+
+
 def _length(name: str, value) -> float:
     v = require_finite(name, value)
     if v < 0:

@@ -31,11 +31,9 @@ import numpy as np
 
 from .. import policy
 from ..checks.result import Check
-from ..errors import InputError
-from ..gears.noncircular import (
-    CutterSpec, PitchCurves, SmoothedWalkingLaw, check_generable, choose_smoothing, hub_speed_ripple,
-    perimeter_per_mm,
-)
+from ..errors import InputError, input_names
+from ..gears.generability import CutterSpec, SmoothingDesign, check_generable, choose_smoothing
+from ..gears.noncircular import PitchCurves, SmoothedWalkingLaw, hub_speed_ripple, perimeter_per_mm
 from ..gears.sectors import (
     PINION_POINT_COLUMNS, RADII_COLUMNS, SECTOR_COLUMNS, WHEEL_POINT_COLUMNS, pinion_tooth_points,
     sector_hub_speed, sector_radii, sector_table, structured_rows, wheel_space_points,
@@ -46,6 +44,8 @@ from ..params import param
 from . import PartType
 
 METHODS = ("generated", "sectors")
+#: part-file keys of the quantities the tooth generators name in their errors
+_TOOTH_KEYS = {"m": "module_mm", "z_H": "driven_teeth", "z0": "shaper_teeth"}
 
 
 # =========================================================================== parameters
@@ -160,8 +160,6 @@ def _smoothing(p, law: WalkingLaw, m: float):
                         z0=p.shaper_teeth)
     z_H = p.driven_teeth
     if p.smoothing_deg > 0:
-        from ..gears.noncircular import SmoothingDesign
-
         sl = SmoothedWalkingLaw(law, math.radians(p.smoothing_deg))
         L = math.pi * m * z_H / perimeter_per_mm(sl)
         g = check_generable(PitchCurves(sl, L), cutter)
@@ -193,7 +191,8 @@ def _smallest_generable(law, cutter, z_H) -> str:
 
 def design_generated(p: NoncircularPairParams, progress=lambda s: None) -> Design:
     """Seed 000/002 law -> C2 blend -> closure -> generated teeth (SPEC §3.2)."""
-    from ..geometry.noncircular_outline import ArcFrame, ToothSpec, generate_gear
+    from ..gears.noncircular_teeth import ArcFrame, ToothSpec
+    from ..geometry.noncircular_outline import generate_gear
 
     law = _law(p)
     z_H = p.driven_teeth
@@ -211,13 +210,14 @@ def design_generated(p: NoncircularPairParams, progress=lambda s: None) -> Desig
     th = _thinning(p)
     common = dict(m=m, thinning_mm=th, rack=rack, z0=p.shaper_teeth, tip_min_mm=p.tip_land_min_module * m)
     g = sm.generability
-    for chk, x in ((g.driver, p.driver_shift), (g.driven, -p.driver_shift)):
-        if chk.concave:  # fail fast: the shaper this gear needs must exist
-            ToothSpec(x=x, **common).shaper_tools()
-    progress(f"generated: driver teeth ({z_H // law.n}), rack/shaper envelopes")
-    drv = generate_gear(pc, "driver", ToothSpec(x=p.driver_shift, **common), frame)
-    progress(f"generated: driven teeth ({z_H})")
-    dvn = generate_gear(pc, "driven", ToothSpec(x=-p.driver_shift, **common), frame)
+    with input_names(_TOOTH_KEYS):
+        for chk, x in ((g.driver, p.driver_shift), (g.driven, -p.driver_shift)):
+            if chk.concave:  # fail fast: the shaper this gear needs must exist
+                ToothSpec(x=x, **common).shaper_tools()
+        progress(f"generated: driver teeth ({z_H // law.n}), rack/shaper envelopes")
+        drv = generate_gear(pc, "driver", ToothSpec(x=p.driver_shift, **common), frame)
+        progress(f"generated: driven teeth ({z_H})")
+        dvn = generate_gear(pc, "driven", ToothSpec(x=-p.driver_shift, **common), frame)
     return Design("generated", law, sm.law, L, m, z_H, z_H // law.n, pc, smoothing=sm, driver=drv, driven=dvn,
                   ripple=sm.ripple, closure_error=sm.closure_error)
 
@@ -243,7 +243,8 @@ def sector_design_table(p: NoncircularPairParams):
 
 def design_sectors(p: NoncircularPairParams, progress=lambda s: None) -> Design:
     """The papers' sector method on the exact law (seed 000 eqs. 16-52, seed 002 Tables 2-4)."""
-    from ..geometry.noncircular_outline import sector_driven_gear, sector_driver_gear, sector_tip_thickness
+    from ..gears.sectors import sector_tip_thickness
+    from ..geometry.sector_outline import sector_driven_gear, sector_driver_gear
 
     law = _law(p)
     table, L, m = sector_design_table(p)
@@ -256,15 +257,16 @@ def design_sectors(p: NoncircularPairParams, progress=lambda s: None) -> Design:
                          f"(driver {t_drv:.3f}, driven {t_dvn:.3f} mm) at L = {L:.4f} mm",
                          f"the largest module with a tip land > 0 at this L is {m_ok:.4f} mm")
     progress(f"sectors: outlines ({table.i} sectors per leg)")
-    drv = sector_driver_gear(table, m, p.backlash_mm)
-    dvn = sector_driven_gear(table, m, p.backlash_mm)
+    with input_names(_TOOTH_KEYS):
+        drv = sector_driver_gear(table, m, p.backlash_mm)
+        dvn = sector_driven_gear(table, m, p.backlash_mm)
     closure = abs(4 * float(np.sum(table.dtheta)) - 2 * math.pi * law.n)
     return Design("sectors", law, law, L, m, 4 * table.i, 4 * table.i // law.n, PitchCurves(law, L), table=table,
                   driver=drv, driven=dvn, ripple=sector_hub_speed(table), closure_error=closure)
 
 
 def _largest_sector_module(table, j_n, m_hi) -> float:
-    from ..geometry.noncircular_outline import sector_tip_thickness
+    from ..gears.sectors import sector_tip_thickness
 
     lo, hi = 0.0, m_hi
     for _ in range(60):
@@ -308,7 +310,7 @@ def prove(d: Design, phases_per_tooth: int, legs: int = 4, progress=lambda s: No
 
 # =========================================================================== solids / files
 def _with_bore(profile, bore_d: float, keyway: bool, root_min: float, m: float, which: str):
-    from ..geometry.gear_outline import _bore_loop, keyway_for_shaft
+    from ..geometry.gear_outline import bore_loop, keyway_for_shaft
     from ..geometry.profile import Profile
 
     if bore_d <= 0:
@@ -320,7 +322,7 @@ def _with_bore(profile, bore_d: float, keyway: bool, root_min: float, m: float, 
         raise InputError(name, bore_d, f"bore{' + keyway' if keyway else ''} must stay one module inside the root: "
                          f"bore/2 + t2 = {bore_d / 2 + t2:.3f} mm >= {lim:.3f} mm",
                          f"largest bore about {2 * (lim - t2):.1f} mm")
-    return Profile(profile.outer, [_bore_loop(bore_d, True if keyway else None)], profile.name)
+    return Profile(profile.outer, [bore_loop(bore_d, True if keyway else None)], profile.name)
 
 
 def _checks_generated(d: Design, pr, p) -> list[Check]:
@@ -398,10 +400,10 @@ def _sector_tables(w, p: NoncircularPairParams, note_if_missing: bool = True):
 
 
 def _pitch_polyline(d: Design, role: str, n: int = 1441) -> np.ndarray:
-    from ..geometry.noncircular_outline import PitchCurve
+    from ..gears.noncircular_teeth import BodyPitchCurve
 
     span = 2 * math.pi if role == "driven" else 2 * math.pi / d.law.n
-    return PitchCurve(d.pc, role).point(np.linspace(0.0, span, n, endpoint=False))
+    return BodyPitchCurve(d.pc, role).point(np.linspace(0.0, span, n, endpoint=False))
 
 
 def _figure2(w, d: Design, pr, other, pr_other):
