@@ -29,7 +29,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..errors import require, require_finite, require_positive
-from ..policy import INVOLUTE_T_MIN, TOOL_TIP_LAND_TOL_MM
+from ..policy import INVOLUTE_T_MIN, ROUNDING_TOL, TOOL_TIP_LAND_TOL_MM
 from .envelope import EnvelopeCurve, RackCentrode
 from .involute import BasicRack, inv
 
@@ -257,7 +257,7 @@ class ShaperCutter:
 
         f = lambda t: float(np.linalg.norm(centre(t)[0])) - (self.r_a0 - rho)
         require(f(t_a) > 0 and f(0.0) < 0, "rho_a0_star", self.rho_a0_star, "tip round does not fit the shaper tooth")
-        t_s = brentq(f, 0.0, t_a, xtol=1e-15, rtol=1e-15, maxiter=200)
+        t_s = brentq(f, 0.0, t_a, xtol=ROUNDING_TOL, rtol=ROUNDING_TOL, maxiter=200)
         c, n_in = centre(t_s)
         a_flank = math.atan2(-n_in[1], -n_in[0])
         a_tip = math.atan2(c[1], c[0])

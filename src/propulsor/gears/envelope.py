@@ -38,6 +38,7 @@ import numpy as np
 from scipy.optimize import brentq, fsolve
 
 from ..errors import InputError
+from ..policy import ENVELOPE_SAMPLES_PER_FLANK, CUSP_XATOL_REL, FD_STEP_REL, ROUNDING_TOL, SOLVE_RESIDUAL_MM
 
 __all__ = [
     "nearer_circle_crossing", "RackCentrode", "CircleCentrode", "ExternalCircleCentrode", "PitchCurveCentrode",
@@ -200,7 +201,7 @@ class EnvelopeCurve:
     def at(self, u: float) -> np.ndarray:
         return self(np.array([u]))[0]
 
-    def sample(self, n: int = 200) -> np.ndarray:
+    def sample(self, n: int = ENVELOPE_SAMPLES_PER_FLANK) -> np.ndarray:
         return self(np.linspace(self.u0, self.u1, n))
 
     def with_range(self, u0, u1) -> "EnvelopeCurve":
@@ -221,7 +222,7 @@ class EnvelopeCurve:
         fa, fb = f(self.u0), f(self.u1)
         if fa * fb > 0:
             raise ValueError("radius not bracketed")
-        return brentq(f, self.u0, self.u1, xtol=1e-15, rtol=1e-15, maxiter=200)
+        return brentq(f, self.u0, self.u1, xtol=ROUNDING_TOL, rtol=ROUNDING_TOL, maxiter=200)
 
 
 # =========================================================================== trimming
@@ -250,11 +251,11 @@ def _cusp(curve: EnvelopeCurve, n: int = 2000):
         return None
     k = int(rev[0])
     lo, hi = u[k], u[k + 2]
-    step = 1e-7 * abs(curve.u1 - curve.u0)
+    step = FD_STEP_REL * abs(curve.u1 - curve.u0)
     speed = lambda t: float(np.linalg.norm(curve.at(t + step) - curve.at(t - step)))
     from scipy.optimize import minimize_scalar
     res = minimize_scalar(speed, bounds=(min(lo, hi), max(lo, hi)), method="bounded",
-                          options={"xatol": 1e-13 * max(1.0, abs(hi))})
+                          options={"xatol": CUSP_XATOL_REL * max(1.0, abs(hi))})
     return float(res.x)
 
 
@@ -285,7 +286,7 @@ def trim_crossing(first: EnvelopeCurve, second: EnvelopeCurve, n: int = 800):
     k = np.lexsort((-j, i))[0]
     x0 = np.array([ua[i[k]] + ta[k] * (ua[i[k] + 1] - ua[i[k]]), ub[j[k]] + tb[k] * (ub[j[k] + 1] - ub[j[k]])])
     g = lambda y: first.at(y[0]) - second.at(y[1])
-    sol = fsolve(g, x0, xtol=1e-15, full_output=True)[0]
-    if np.linalg.norm(g(sol)) > 1e-9:
+    sol = fsolve(g, x0, xtol=ROUNDING_TOL, full_output=True)[0]
+    if np.linalg.norm(g(sol)) > SOLVE_RESIDUAL_MM:
         raise RuntimeError("undercut crossing did not converge")
     return float(sol[0]), float(sol[1])

@@ -16,6 +16,7 @@ from functools import cached_property
 import numpy as np
 
 from ..errors import InputError, require
+from ..policy import ANGLE_EQUAL_TOL_RAD, MINIMIZE_XATOL
 from .involute import BasicRack, SpurGear, inv, inv_inverse, x_sum_for_centre_distance
 
 __all__ = ["GearPair"]
@@ -118,7 +119,7 @@ class GearPair:
         """GOST 19274 ring-tip coefficient: 0.25 − 0.125 x2 for x2 < 2, else 0 (h_a* = 1, α = 20°);
         0 for other racks and for external pairs."""
         r = self.gear1.rack
-        if not self.internal or not (abs(r.alpha - math.radians(20.0)) < 1e-12 and r.h_a_star == 1.0):
+        if not self.internal or not (abs(r.alpha - math.radians(20.0)) < ANGLE_EQUAL_TOL_RAD and r.h_a_star == 1.0):
             return 0.0
         x2 = self.gear2.x
         return 0.25 - 0.125 * x2 if x2 < 2.0 else 0.0
@@ -284,7 +285,7 @@ class GearPair:
                 best = float(dep[i])
                 res = minimize_scalar(lambda f: -float(fn(f, sgn)[0]) if np.isfinite(fn(f, sgn)[0]) else 1e9,
                                       bounds=(phi[i] - step, phi[i] + step), method="bounded",
-                                      options={"xatol": 1e-12})
+                                      options={"xatol": MINIMIZE_XATOL})
                 if res.success and -res.fun > best:
                     best = float(-res.fun)
                 worst = max(worst, best)

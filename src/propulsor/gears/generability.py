@@ -15,11 +15,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import InputError, require_finite, require_positive
+from ..errors import InputError, require, require_finite, require_positive
 from ..laws.walking import HubSpeedRipple, WalkingLaw, check_n_closes
-from ..policy import SMOOTHING_DELTA_RTOL
+from ..policy import SMOOTHING_DELTA_MIN_RAD, SMOOTHING_DELTA_RTOL
+from .involute import BasicRack
 from .noncircular import (DELTA_MAX_DEFAULT, CurvatureSummary, PitchCurves, SmoothedWalkingLaw, hub_speed_ripple,
                           perimeter_per_mm, whole_teeth)
+from .noncircular_teeth import ToothSpec
 
 __all__ = ["CutterSpec", "CurveCheck", "Generability", "check_generable", "SmoothingDesign", "choose_smoothing"]
 
@@ -56,13 +58,23 @@ class CutterSpec:
             object.__setattr__(self, "z0", int(round(z0)))
 
     def rho_limit(self, x: float) -> float:
-        """Rack undercut limit rho >= (h_a* - x) m / sin^2 alpha (SPEC §3 Trap 2)."""
+        """Rack undercut limit rho >= (h_a* - x) m / sin^2 alpha (docs/architecture.md, «non-circular pair»)."""
         return (self.h_a - x) * self.m / math.sin(self.alpha) ** 2
 
     @property
     def r0(self) -> float:
         """Shaper cutter pitch radius m z0 / 2 (inf if no shaper)."""
         return math.inf if self.z0 is None else self.m * self.z0 / 2
+
+    def shift(self, role: str) -> float:
+        """Profile shift of one gear of the pair: x of the driver, x_H of the driven wheel."""
+        require(role in ("driver", "driven"), "role", role, "must be 'driver' or 'driven'")
+        return self.x if role == "driver" else self.x_H
+
+    def tooth_spec(self, role: str, rack: BasicRack, thinning_mm: float = 0.0, tip_min_mm: float = 0.0) -> ToothSpec:
+        """The teeth these tools cut on one gear of the pair (``noncircular_teeth.ToothSpec``)."""
+        return ToothSpec(m=self.m, x=self.shift(role), thinning_mm=thinning_mm, rack=rack, z0=self.z0,
+                         tip_min_mm=tip_min_mm)
 
 
 @dataclass(frozen=True)
@@ -163,7 +175,7 @@ def choose_smoothing(law: WalkingLaw, cutter: CutterSpec, z_H: int,
     delta_max = require_positive("delta_max", delta_max, "rad")
     if delta_max > math.pi / 4:
         raise InputError("delta_max", delta_max, f"must be <= pi/4 = {math.pi / 4:.6f} rad")
-    grid = np.geomspace(1e-3, delta_max, 40)
+    grid = np.geomspace(SMOOTHING_DELTA_MIN_RAD, delta_max, 40)
     prev_bad = 0.0
     found = None
     for d in grid:

@@ -29,7 +29,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import require, require_finite, require_positive
-from ..policy import MODULE_MATCH_TOL_MM, UNDERCUT_REL_TOL
+from ..policy import MODULE_MATCH_TOL_MM, REL_ROUNDING_TOL
 from .cutters import RackCutter, ShaperCutter
 from .envelope import CircleCentrode, EnvelopeCurve, trim_crossing
 from .involute import BasicRack, inv, inv_inverse
@@ -122,7 +122,7 @@ def generate_external_side(z: int, m: float, x: float = 0.0, d_a: float | None =
     right, _ = tool.sides(eta_top / ca, "rack.rho_f_star")
     fillet, flank = right.envelopes(CircleCentrode(r))
 
-    undercut = tool.eta_f < -r * sa * sa * (1.0 + UNDERCUT_REL_TOL)
+    undercut = tool.eta_f < -r * sa * sa * (1.0 + REL_ROUNDING_TOL)
     cross = trim_crossing(fillet, flank) if undercut else None
     if cross is not None:
         fillet = fillet.with_range(fillet.u0, cross[0])

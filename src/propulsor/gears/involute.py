@@ -38,6 +38,7 @@ from functools import lru_cache
 import numpy as np
 
 from ..errors import InputError, require, require_finite, require_positive
+from ..policy import ROLLER_DIAMETER_XTOL_MM, ROUNDING_TOL
 
 __all__ = [
     "inv",
@@ -49,8 +50,6 @@ __all__ = [
     "roller_diameter_for_contact_at",
 ]
 
-#: Newton tolerance of :func:`inv_inverse` (relative to the angle)
-_INV_TOL = 1e-15
 
 
 # --------------------------------------------------------------------------- involute function
@@ -60,7 +59,7 @@ def inv(alpha):
 
 
 def inv_inverse(value: float) -> float:
-    """α with inv α = ``value`` (0 ≤ α < π/2), Newton's method to 1e-15.
+    """α with inv α = ``value`` (0 ≤ α < π/2), Newton's method to ``policy.ROUNDING_TOL``.
 
     d(inv α)/dα = tan²α.  Start: Cheng's approximation α ≈ (3v)^(1/3) − 2v/5 (good to ~1e-3 for
     α < 60°), then Newton steps; the iteration converges monotonically from any start above the root.
@@ -79,7 +78,7 @@ def inv_inverse(value: float) -> float:
         t = math.tan(a)
         step = (t - a - v) / (t * t)
         a -= step
-        if abs(step) <= _INV_TOL * max(a, 1e-300):
+        if abs(step) <= ROUNDING_TOL * max(a, 1e-300):
             break
     return a
 
@@ -135,7 +134,7 @@ class BasicRack:
 
 # --------------------------------------------------------------------------- helpers
 def _acos_ratio(name: str, d_b: float, d_y: float) -> float:
-    require(d_y >= d_b * (1.0 - 1e-15), name, d_y, f"must be >= base diameter d_b = {d_b:.6f} mm")
+    require(d_y >= d_b * (1.0 - ROUNDING_TOL), name, d_y, f"must be >= base diameter d_b = {d_b:.6f} mm")
     return math.acos(min(1.0, d_b / d_y))
 
 
@@ -185,7 +184,7 @@ def roller_diameter_for_contact_at(gear: "SpurGear", d_y: float) -> float:
         lo = max(lo, 1.001 * gear.d_b * (math.pi / (2 * gear.z) - 2 * gear.x * math.tan(a) / gear.z - float(inv(a))))
     if f(lo) * f(hi) > 0:
         raise InputError("d_y", d_y, "no roller diameter makes contact on this diameter")
-    return float(brentq(f, lo, hi, xtol=1e-13))
+    return float(brentq(f, lo, hi, xtol=ROLLER_DIAMETER_XTOL_MM))
 
 
 # --------------------------------------------------------------------------- one gear

@@ -1,16 +1,16 @@
 """Pitch curves of the non-circular pair of the wheel-walking propulsor drive.
 
 Driven (carrier) wheel r_H(phi), driver r(theta) for centre distance L and a
-ratio law U(phi) = d theta / d phi (seed 000, eqs. 4-7, 12-13; SPEC §3):
+ratio law U(phi) = d theta / d phi (seed 000, eqs. 4-7, 12-13):
 
     r_H = L U / (1 + U),   r = L / (1 + U),   r + r_H = L
 
-Tooth spacing is true arc length ds = sqrt(r^2 + r'^2) dphi (SPEC Trap 3);
+Tooth spacing is true arc length ds = sqrt(r^2 + r'^2) dphi (docs/architecture.md, «closure»);
 whole tooth counts fix L for a module (closure).  Radius of curvature of a
 polar curve r(psi):  rho = (r^2 + r'^2)^(3/2) / (r^2 + 2 r'^2 - r r'')
 (> 0 convex, < 0 concave).
 
-The exact law has corners at leg hand-over (SPEC Trap 2); the product replaces
+The exact law has corners at leg hand-over (docs/architecture.md, «drive law»); the product replaces
 U on a window |phi - (pi/4 + k pi/2)| < delta by an even degree-6 polynomial
 that matches U, U', U'' at the window ends (C2) and keeps the window integral
 of U, so closure (n whole driver turns per driven turn) stays exact and U is
@@ -29,8 +29,8 @@ import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
 from propulsor.errors import InputError, require_finite, require_positive
-from propulsor.laws.walking import LEG_PERIOD, HubSpeedRipple, WalkingLaw, check_n_closes, wrap_leg
-from propulsor.policy import TOOTH_COUNT_TOL
+from propulsor.laws.walking import LEG_PERIOD, HubSpeedRipple, WalkingLaw, check_n_closes, invert_theta, wrap_leg
+from propulsor.policy import CORNER_SIDE_RAD, MINIMIZE_XATOL, PHI_OF_THETA_TOL_RAD, ROOT_XTOL_FINE, TOOTH_COUNT_TOL
 
 _GAUSS_X, _GAUSS_W = np.polynomial.legendre.leggauss(96)
 #: samples per smooth piece of one leg when searching curvature / speed extremes
@@ -176,15 +176,10 @@ class SmoothedWalkingLaw:
         corr = self._P(t) + self._P(d) - self._F(t) - self._F(d)
         return self.law.theta(phi) + np.where(inw, corr, 0.0)
 
-    def phi_of_theta(self, theta, tol: float = 1e-14):
+    def phi_of_theta(self, theta, tol: float = PHI_OF_THETA_TOL_RAD):
+        """Inverse of theta_s(phi) (``walking.invert_theta``)."""
         theta = np.asarray(theta, dtype=float)
-        phi = theta / self.n
-        for _ in range(80):
-            step = (self.theta(phi) - theta) / self.U(phi)
-            phi = phi - step
-            if np.all(np.abs(step) < tol):
-                break
-        return phi
+        return invert_theta(self, theta, theta / self.n, tol, 80)
 
     def dX01_dphi(self, phi):
         """Hub speed analogue of the mechanism (seed 000 eq. 2) - unchanged by the gear."""
@@ -243,7 +238,7 @@ def _extreme(f, x, y, which: str):
     best = (float(x[k]), float(y[k]))
     if hi > lo:
         res = minimize_scalar(lambda p: sgn * float(f(p)), bounds=(lo, hi), method="bounded",
-                              options={"xatol": 1e-12})
+                              options={"xatol": MINIMIZE_XATOL})
         if sgn * res.fun < sgn * best[1]:
             best = (float(res.x), float(sgn * res.fun))
     return best
@@ -253,7 +248,7 @@ def hub_speed_ripple(law) -> HubSpeedRipple:
     """Hub speed ripple (max - min)/mean of v/omega = (dX01/dphi)/U over the cycle.
 
     Works for WalkingLaw (ripple 0: the exact law is the constant-speed law)
-    and SmoothedWalkingLaw.  mean = time mean = A/u (SPEC §3 Trap 2).
+    and SmoothedWalkingLaw.  mean = time mean = A/u (docs/architecture.md, «drive law»).
     """
     phi = _leg_samples(law)
     v = law.hub_speed(phi)
@@ -273,7 +268,7 @@ def _rho(r, dr, d2r):
 
 @dataclass(frozen=True)
 class Corner:
-    """A corner of a pitch curve of the exact law (SPEC Trap 2)."""
+    """A corner of a pitch curve of the exact law (docs/architecture.md, «drive law»)."""
 
     curve: str          #: 'driven' or 'driver'
     phi: float          #: driven angle of the hand-over (rad)
@@ -361,7 +356,7 @@ class PitchCurves:
 
     # ---- arc length / closure -------------------------------------------------------
     def ds_dphi(self, phi):
-        """True arc length rate of the driven curve sqrt(r_H^2 + r_H'^2) (SPEC Trap 3)."""
+        """True arc length rate of the driven curve sqrt(r_H^2 + r_H'^2) (docs/architecture.md, «closure»)."""
         return np.hypot(self.r_H(phi), self.dr_H(phi))
 
     def perimeter_driven(self) -> float:
@@ -397,7 +392,7 @@ class PitchCurves:
         if not _has_corners(self.law):
             return []
         out = []
-        eps = 1e-12
+        eps = CORNER_SIDE_RAD
         seen = set()
         for k in range(4):
             ph = math.pi / 4 + k * LEG_PERIOD
@@ -445,7 +440,7 @@ class PitchCurves:
             edges = []
             for k in range(len(phi) - 1):
                 if s[k] != s[k + 1] and s[k] != 0 and s[k + 1] != 0:
-                    edges.append(brentq(lambda p: float(den(p)), phi[k], phi[k + 1], xtol=1e-14))
+                    edges.append(brentq(lambda p: float(den(p)), phi[k], phi[k + 1], xtol=ROOT_XTOL_FINE))
             lo = -math.pi / 4
             pts = [lo] + edges + [math.pi / 4]
             for a, b in zip(pts[:-1], pts[1:]):
@@ -512,7 +507,7 @@ def whole_teeth(name: str, z, n: int) -> int:
 
 
 def centre_distance(law, m: float, z_H: int) -> float:
-    """L such that the driven pitch curve carries z_H teeth of module m: perimeter = pi m z_H (SPEC Trap 3).
+    """L such that the driven pitch curve carries z_H teeth of module m: perimeter = pi m z_H (docs/architecture.md, «closure»).
 
     The driver then carries z_H / n teeth (its perimeter is the driven's / n).
     """

@@ -39,7 +39,8 @@ from scipy.optimize import fsolve
 
 from ..errors import InputError, require
 from ..laws.walking import LEG_PERIOD
-from ..policy import TIP_HEIGHT_TOL_MM
+from ..policy import (FD_STEP_ARC_RAD, FD_STEP_PHI_RAD, FD_STEP_REL, NEWTON_STOP_MM, ROOT_XTOL_FINE,
+                      SOLVE_RESIDUAL_MM, TIP_HEIGHT_TOL_MM)
 from .cutters import CutterSide, RackCutter, ShaperCutter
 from .envelope import EnvelopeCurve, ExternalCircleCentrode, PitchCurveCentrode, envelope_points, trim_crossing
 from .involute import BasicRack
@@ -256,8 +257,9 @@ def _tip_hit(side: ToothSide, curve: BodyPitchCurve, h: float, phi_guess: float,
     D = np.linalg.norm(X[:, None, :] - T[None, :, :], axis=2)
     i, j = np.unravel_index(int(np.argmin(D)), D.shape)
     g = lambda y: fla.at(y[0]) - curve.offset(np.array([y[1]]), h)[0]
-    sol = fsolve(g, [u[i], ph[j]], xtol=1e-14, full_output=True)[0]
-    if np.linalg.norm(g(sol)) > 1e-9 or not (min(fla.u0, fla.u1) - 1e-9 <= sol[0] <= max(fla.u0, fla.u1) + 1e-9):
+    sol = fsolve(g, [u[i], ph[j]], xtol=ROOT_XTOL_FINE, full_output=True)[0]
+    tol = SOLVE_RESIDUAL_MM
+    if np.linalg.norm(g(sol)) > tol or not (min(fla.u0, fla.u1) - tol <= sol[0] <= max(fla.u0, fla.u1) + tol):
         return None
     return float(sol[0]), float(sol[1])
 
@@ -291,12 +293,12 @@ def _tip_hits_batch(sides: list, s_k: np.ndarray, ph_k: np.ndarray, curve: BodyP
         k = np.argmin(D, axis=1)
         u = ug[k // nph]
         ph = pg[np.arange(n), k % nph]
-        eu, ep = 1e-7 * max(1.0, abs(u1 - u0)), 1e-8
+        eu, ep = FD_STEP_REL * max(1.0, abs(u1 - u0)), FD_STEP_PHI_RAD
         for _ in range(12):
             Xu = X(u, sk)
             T = curve.offset(ph, h)
             G = Xu - T
-            if np.max(np.linalg.norm(G, axis=1)) < 1e-12:
+            if np.max(np.linalg.norm(G, axis=1)) < NEWTON_STOP_MM:
                 break
             dX = (X(u + eu, sk) - Xu) / eu
             dT = (curve.offset(ph + ep, h) - T) / ep
@@ -307,7 +309,8 @@ def _tip_hits_batch(sides: list, s_k: np.ndarray, ph_k: np.ndarray, curve: BodyP
             u, ph = u + du, ph + dp
         res = np.linalg.norm(X(u, sk) - curve.offset(ph, h), axis=1)
         for j, i in enumerate(idx):
-            if res[j] <= 1e-9 and min(u0, u1) - 1e-9 <= u[j] <= max(u0, u1) + 1e-9:
+            tol = SOLVE_RESIDUAL_MM
+            if res[j] <= tol and min(u0, u1) - tol <= u[j] <= max(u0, u1) + tol:
                 out[i] = (float(u[j]), float(ph[j]))
             else:
                 out[i] = _tip_hit(sides[i], curve, h, float(pk[j]), span)
@@ -320,7 +323,7 @@ def _arc_len(curve: BodyPitchCurve, h: float, a: float, b: float) -> float:
     x = 0.5 * (b - a) * _GX + 0.5 * (a + b)
     ph = x
     # |d/dphi (P + h n)| by central differences of the exact equidistant (h small vs rho)
-    eps = 1e-6
+    eps = FD_STEP_ARC_RAD
     d = (curve.offset(ph + eps, h) - curve.offset(ph - eps, h)) / (2 * eps)
     return abs(0.5 * (b - a) * float(np.dot(_GW, np.linalg.norm(d, axis=1))))
 

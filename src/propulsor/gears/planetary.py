@@ -50,7 +50,7 @@ class Condition(NamedTuple):
 class PlanetarySet:
     """Sun / planets / fixed ring with profile shifts, the ring cut by a shaper (z0, x0).
 
-    Defaults are the thesis's final drive (seed 004 ch. 4, SPEC §6) with its printed ring shift
+    Defaults are the thesis's final drive (seed 004 ch. 4) with its printed ring shift
     1.417 — which fails coaxiality; pass ``x_ring=PlanetarySet().ring_shift_for_coaxiality()``
     (= 1.5) for the corrected set.
     """

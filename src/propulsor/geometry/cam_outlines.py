@@ -19,7 +19,7 @@ in the CAD frame by the rotation π + φ about its origin, then the translation 
 the ground normal of eq. 1).  Carrier frame: the carrier at angle 0 has its slot j along
 u(2πj/n); it turns by φ about the origin.
 
-Cam channel (closed-track cam, SPEC §4): the working wall is the roller envelope of eq. 9–10
+Cam channel (closed-track cam, seed 001): the working wall is the roller envelope of eq. 9–10
 at exactly r from the roller-centre path (the springs and the ground load press the roller
 onto it, so the designed H(φ) is where the roller runs); the outer guide wall is the
 envelope at r + channel clearance, on the far side.  The channel is thus 2r + clearance wide.
@@ -36,7 +36,7 @@ from scipy.optimize import brentq
 from ..errors import InputError, require
 from ..laws.cam_motion import CamMotion
 from ..laws.shoe import shoe_table
-from ..policy import SPLINE_FIT_TOL_MM
+from ..policy import OUTLINE_CLOSED_TOL_MM, PATH_CLOSURE_TOL_MM, ROOT_XTOL_FINE, SPLINE_FIT_TOL_MM
 from .bspline import fit_curve
 from .profile import Arc, Line, Loop, Profile, Spline, circle_loop
 
@@ -80,7 +80,7 @@ def _closed_spline_loop(func, breaks, tol: float) -> Loop:
     first = segs[0].start
     last = segs[-1]
     gap = float(np.linalg.norm(last.end - first))
-    require(gap <= 1e-6, "closed curve gap", gap, "must be <= 1e-6 mm (periodic path)")
+    require(gap <= PATH_CLOSURE_TOL_MM, "closed curve gap", gap, "must be <= 1e-6 mm (periodic path)")
     poles = last.poles.copy()
     poles[-1] = first
     segs[-1] = Spline(last.knots, poles, last.degree)
@@ -187,8 +187,8 @@ def shoe_profile(motion: CamMotion, rim: float, boss_width: float, mount_y: floa
     def x_inner(u, target):
         return float(inner_f(np.array([u]))[0, 0]) - target
 
-    psi_p = brentq(x_inner, 0.0, s, args=(half,), xtol=1e-14)
-    psi_m = brentq(x_inner, -s, 0.0, args=(-half,), xtol=1e-14)
+    psi_p = brentq(x_inner, 0.0, s, args=(half,), xtol=ROOT_XTOL_FINE)
+    psi_m = brentq(x_inner, -s, 0.0, args=(-half,), xtol=ROOT_XTOL_FINE)
     curve = [fit_curve(outer_f, -s, 0.0, tol=tol), fit_curve(outer_f, 0.0, s, tol=tol)]
     inner_p = fit_curve(inner_f, s, psi_p, tol=tol)  # from the +end down to the boss
     inner_m = fit_curve(inner_f, psi_m, -s, tol=tol)  # from the boss out to the −end
@@ -208,7 +208,7 @@ def shoe_profile(motion: CamMotion, rim: float, boss_width: float, mount_y: floa
             inner_m,
             Line(tuple(inner_m.end), tuple(curve[0].start))]
     loop = Loop(segs)
-    require(loop.is_closed(1e-7), "shoe outline gap", float(loop.gaps().max()), "must be closed")
+    require(loop.is_closed(OUTLINE_CLOSED_TOL_MM), "shoe outline gap", float(loop.gaps().max()), "must be closed")
     return ShoeGeometry(Profile(loop, [], name="shoe"), (psi_m, psi_p), y_boss, curve, rim)
 
 
@@ -264,7 +264,7 @@ def carrier_profile(n_legs: int, radius: float, slot_width: float, slot_bottom: 
             a1 += 2.0 * math.pi
         segs.append(Arc((0.0, 0.0), radius, a0, a1))  # ends on the next slot's corner (to rounding)
     loop = Loop(segs)
-    require(loop.is_closed(1e-7), "carrier outline gap", float(loop.gaps().max()), "must be closed")
+    require(loop.is_closed(OUTLINE_CLOSED_TOL_MM), "carrier outline gap", float(loop.gaps().max()), "must be closed")
     prof = Profile(loop, [circle_loop(0.5 * bore_diameter, ccw=False), *bolt_holes], name="carrier")
     return CarrierGeometry(prof, h, slot_bottom, L)
 

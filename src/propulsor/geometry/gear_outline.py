@@ -20,7 +20,7 @@ from ..errors import InputError, require, require_positive
 from ..gears.cutters import ShaperCutter
 from ..gears.generation import GeneratedSide, generate_external_side, generate_internal_side
 from ..gears.involute import BasicRack
-from ..policy import SPLINE_FIT_TOL_MM
+from ..policy import OUTLINE_JOINT_TOL_MM, SPLINE_FIT_TOL_MM
 from .bspline import fit_curve
 from .profile import Arc, Line, Loop, Profile, Spline, circle_loop
 
@@ -163,7 +163,7 @@ def internal_gear_profile(z: int, m: float, x: float, d_a: float, z0: int, x0: f
     if outer_d is None:
         outer_d = 2.0 * side.r_f + 6.0 * m
     outer_d = require_positive("outer_d", outer_d, "mm")
-    require(outer_d > 2.0 * side.r_f + 1e-6, "outer_d", outer_d, f"must exceed the root diameter {2 * side.r_f:.4f} mm")
+    require(outer_d > 2.0 * side.r_f + OUTLINE_JOINT_TOL_MM, "outer_d", outer_d, f"must exceed the root diameter {2 * side.r_f:.4f} mm")
     prof = Profile(circle_loop(outer_d / 2.0), [_pattern(unit, z)], name=f"ring z={z} m={m} x={x}")
     return GearOutline(prof, side, z, m, x, 2 * side.r_a, 2 * side.r_f, 2 * side.r_Ff,
                        [side.undercut] * z, fil, fla)

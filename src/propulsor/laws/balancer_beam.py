@@ -66,6 +66,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from propulsor.errors import InputError, require_finite, require_positive
+from propulsor.policy import ROOT_XTOL, SECTION_DEPTH_XTOL_MM, STATICS_REL_TOL
 from propulsor.laws.suspension import SuspensionDesign
 
 #: yield strength of 40ХН2МА after quench 850 C and temper, MPa (seed 004, §8.3)
@@ -424,7 +425,7 @@ def equal_strength_depth(forces: dict, geom: BalancerGeometry, sigma_allow: floa
             raise InputError("h_max", geom.h_max, f"even h_max leaves sigma_vM > {sa:g} MPa at a station; "
                              "widen the arm (b) or raise h_max")
         else:
-            h[i] = brentq(g, geom.h_min, geom.h_max, xtol=1e-9, rtol=1e-12)
+            h[i] = brentq(g, geom.h_min, geom.h_max, xtol=SECTION_DEPTH_XTOL_MM, rtol=ROOT_XTOL)
     return h
 
 
@@ -539,14 +540,14 @@ class BalancerAnalysis:
             F, M = r.residual(c.loads)
             scale = max(abs(L.F_y) for L in c.loads) * tor.R_b
             checks.append(Check(f"{c.name}: statics residual", float(np.linalg.norm(F) + np.linalg.norm(M) / tor.R_b),
-                                1e-9 * scale / tor.R_b, "N"))
+                                STATICS_REL_TOL * scale / tor.R_b, "N"))
             checks.append(Check(f"{c.name}: bar torque vs M_T(beta_m)",
                                 abs(r.bar_torque - (-c.bar_torque_expected)) / c.bar_torque_expected,
-                                1e-9, "-", note="bar reacts the characteristic's torque"))
+                                STATICS_REL_TOL, "-", note="bar reacts the characteristic's torque"))
             sm = float(np.max(sig_const[c.name]))
             checks.append(Check(f"{c.name}: constant arm sigma_vM", sm, self.sigma_allow, "MPa"))
             checks.append(Check(f"{c.name}: equal-strength arm sigma_vM", float(np.max(sig_eq[c.name])),
-                                self.sigma_allow * (1 + 1e-9), "MPa"))
+                                self.sigma_allow * (1 + STATICS_REL_TOL), "MPa"))
         for row in self.transitions():
             checks.append(Check(f"{row['case']}: {row['where']} safety factor",
                                 self.sigma_yield / row["sigma_vM_peak"], self.safety, "-", kind="min",
