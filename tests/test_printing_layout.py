@@ -98,3 +98,34 @@ def test_placed_turns_and_moves():
     assert m.bounds[0] == pytest.approx([7.0, 9.0, 0.0], abs=1e-9)
     assert sorted(ext[:2]) == pytest.approx([10.0, 30.0])
     assert math.isclose(ext[2], 5.0)
+
+
+needs_slicer = pytest.mark.skipif(__import__("shutil").which("prusa-slicer") is None,
+                                  reason="PrusaSlicer is not installed (apt-get install prusa-slicer)")
+
+
+@pytest.mark.slicer
+@needs_slicer
+def test_a_packed_plate_slices_in_prusaslicer(tmp_path):
+    """Two named objects laid flat and packed on one 3MF plate: PrusaSlicer slices it, reports every
+    object manifold and on the bed."""
+    from propulsor.export.mesh import write_3mf_objects
+    from propulsor.printing.slicer import slice_plate
+
+    printer = load_printer("prusa_mk4")
+    pieces = {"block": trimesh.creation.box(extents=(20.0, 30.0, 10.0)),
+              "disc": trimesh.creation.cylinder(radius=15.0, height=8.0, sections=48)}
+    flat = {n: lay_flat(m)[0] for n, m in pieces.items()}
+    plates = pack({n: tuple((m.bounds[1] - m.bounds[0])[:2]) for n, m in flat.items()}, printer.bed_x_mm,
+                  printer.bed_y_mm, printer.piece_gap_mm)
+    assert len(plates) == 1
+    objs = [(p.name, placed(flat[p.name], p)) for p in plates[0].placements]
+    path = write_3mf_objects(objs, tmp_path / "plate_1.3mf")
+    r = slice_plate(path, printer.bed_shape(), tmp_path / "plate_1.gcode", printer.layer_mm, printer.nozzle_mm)
+    assert r.ok and r.gcode_bytes > 1000, r.message
+    assert len(r.objects) == 2 and r.all_manifold
+    assert r.off_bed(printer.bed_x_mm, printer.bed_y_mm) == []
+    # a plate moved off the bed is seen
+    off = write_3mf_objects([("block", objs[0][1].copy().apply_translation([300.0, 0, 0]))], tmp_path / "off.3mf")
+    r2 = slice_plate(off, printer.bed_shape(), tmp_path / "off.gcode")
+    assert not r2.ok or r2.off_bed(printer.bed_x_mm, printer.bed_y_mm) == ["object 1"]

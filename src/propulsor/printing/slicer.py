@@ -32,6 +32,20 @@ class SliceResult:
     def all_manifold(self) -> bool:
         return bool(self.objects) and all(o.get("manifold") == "yes" for o in self.objects)
 
+    def off_bed(self, bed_x: float, bed_y: float, tol: float = 1e-3) -> list[str]:
+        """Objects (by their place in the file, 1-based) not lying on the bed inside its outline."""
+        bad = []
+        for k, o in enumerate(self.objects, 1):
+            try:
+                lo = [float(o[f"min_{a}"]) for a in "xyz"]
+                hi = [float(o[f"max_{a}"]) for a in "xy"]
+            except (KeyError, ValueError):
+                bad.append(f"object {k}: no extents")
+                continue
+            if lo[0] < -tol or lo[1] < -tol or hi[0] > bed_x + tol or hi[1] > bed_y + tol or abs(lo[2]) > tol:
+                bad.append(f"object {k}")
+        return bad
+
 
 def _run(args: list[str]) -> subprocess.CompletedProcess:
     return subprocess.run(args, capture_output=True, text=True, timeout=SLICE_TIMEOUT_S,
