@@ -31,7 +31,8 @@ RANK = {
     "solids": 4,
     "export": 5,
     "checks": 6,
-    "params": 7, "progress": 7, "parallel": 7,
+    "params": 7, "progress": 7, "parallel": 7, "output_folder": 7,
+    "printing": 7.5,
     "parts": 8,
     "cli": 9,
 }

@@ -10,6 +10,10 @@ from __future__ import annotations
 from contextlib import contextmanager
 
 
+#: longest value quoted in a message (the message stays one readable line)
+MAX_VALUE_CHARS = 120
+
+
 class InputError(ValueError):
     """Bad input: one line naming the parameter, its value and the limit."""
 
@@ -18,7 +22,10 @@ class InputError(ValueError):
         self.value = value
         self.limit = limit
         self.hint = hint
-        msg = f"{parameter} = {value!r}: {limit}"
+        shown = repr(value)
+        if len(shown) > MAX_VALUE_CHARS:
+            shown = shown[:MAX_VALUE_CHARS] + "…"
+        msg = f"{parameter} = {shown}: {limit}"
         if hint:
             msg += f" ({hint})"
         super().__init__(msg)

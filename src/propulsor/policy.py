@@ -158,3 +158,7 @@ STATICS_REL_TOL = 1e-9
 #: largest tessellation chord error of the STL / 3MF files (README, «Parts»: <= 0.01 mm); the mesher aims at
 #: CHORD_TOL_MM and refines when OCCT reports a larger achieved deflection
 MESH_CHORD_LIMIT_MM = 0.01
+
+# --- build size (propulsor build --dry-run, parts.check_size) --------------------------------
+#: longest build accepted (s on the reference machine, 2 cores): past it the size estimate refuses
+BUILD_SECONDS_MAX = 600.0
