@@ -202,7 +202,7 @@ class ToothSpec:
         try:
             sh = ShaperCutter(int(self.z0), self.m, -self.x, self.rack)
             R0 = sh.r0
-            sh.tip_round
+            sh.tip_round  # the tip round must fit the shaper tooth (InputError otherwise)
         except InputError as exc:
             raise InputError("z0", self.z0,
                              f"the shaper z0 = {self.z0} with x0 = {-self.x:+g} (-x of the gear it cuts) cannot be made: "
@@ -214,6 +214,9 @@ class ToothSpec:
 
 @dataclass
 class ToothSide:
+    """One generated side of a tooth: fillet and flank envelopes, the cutter kind ("rack" or
+    "shaper"), whether the side is undercut (trimmed) and the driven angle phi_root of its root."""
+
     fillet: EnvelopeCurve
     flank: EnvelopeCurve
     kind: str
