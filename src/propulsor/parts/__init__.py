@@ -62,6 +62,17 @@ def check_size(part_type: PartType, params, part_file: Path | None = None) -> Si
     return est
 
 
+#: part type name -> module of its print kit (relative to this package), ``kit(params, printer, S)``
+_KITS: dict[str, str] = {}
+
+
+def get_kit(name: str):
+    """The print-kit function of a part type; InputError when it has none yet."""
+    if name not in _KITS:
+        raise InputError("type", name, f"has no print kit yet (kits: {', '.join(sorted(_KITS)) or 'none'})")
+    return importlib.import_module(f".{_KITS[name]}", __name__).kit
+
+
 def part_type_names() -> list[str]:
     return sorted(_MODULES)
 

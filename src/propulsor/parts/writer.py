@@ -98,6 +98,7 @@ class OutputWriter:
         self.extra_files: list[str] = []  # assemblies and DXF, named in the report
         self._pool = None
         self._solid_jobs: list = []
+        self.report_name = "report.md"  # a print kit's is print_report.md
 
     # -- helpers -----------------------------------------------------------------
     def path(self, rel: str) -> Path:
@@ -209,7 +210,7 @@ class OutputWriter:
         built = [f"`{r.name}` ({', '.join(r.files.values())}; volume {r.volume_mm3:.6g} mm³)" for r in self.solids]
         built += [f"`{n}`" for n in self.extra_files]
         intro = ("Built: " + "; ".join(built) + ".") if built else ""
-        write_report(self.folder / "report.md", title=self.title, part=self.part, intro=intro, inputs=report_inputs,
+        write_report(self.folder / self.report_name, title=self.title, part=self.part, intro=intro, inputs=report_inputs,
                      derived=report_derived, checks=self.checks, tables=self.tables, plots=self.plots,
                      notes=notes)
         write_manifest(self.folder, part=self.part, inputs=inputs, derived=self.derived, checks=self.checks,
