@@ -18,7 +18,7 @@ from OCP.TopExp import TopExp_Explorer
 from OCP.TopoDS import TopoDS
 
 from ..policy import ANGULAR_TOL_RAD, CHORD_TOL_MM, MESH_VOLUME_REL_TOL, STEP_VOLUME_REL_TOL
-from .result import Check
+from ..check import Check
 
 
 def _shape(obj):

@@ -45,6 +45,7 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from .. import policy
+from ..check import Check
 from ..errors import InputError, require, require_positive
 from ..geometry.profile import Profile
 
@@ -330,9 +331,9 @@ def _dist_each_point(P: np.ndarray, tgt: Outline) -> np.ndarray:
 # ----------------------------------------------------------------------------
 
 
-def _record(name: str, passed: bool, value, limit, unit: str, message: str) -> dict:
-    return {"name": name, "passed": bool(passed), "value": None if value is None else float(value),
-            "limit": None if limit is None else float(limit), "unit": unit, "message": message}
+def _record(name: str, passed: bool, value, limit, unit: str, message: str) -> Check:
+    return Check(name, bool(passed), None if value is None else float(value),
+                 None if limit is None else float(limit), unit, message)
 
 
 # ----------------------------------------------------------------------------

@@ -42,7 +42,7 @@ from pathlib import Path
 import numpy as np
 
 from ..parallel import start as start_in_fork
-from ..checks.result import Check
+from ..check import Check
 from ..errors import InputError
 from ..params import load_params, param, read_part_file
 from . import PartType
@@ -960,7 +960,7 @@ def build(p: BalancerParams, w) -> None:
     for c_ in res["checks"]:
         if "constant arm" in c_.name or "equal-strength arm" in c_.name or c_.name == "torsion bar shear at beta_m":
             continue  # the reference arm is a comparison; the arm is checked on its built depth above
-        w.add_checks([Check(c_.name, c_.ok, c_.value, c_.limit, c_.unit, c_.note or c_.name)])
+        w.add_checks([c_])
     trs = res["transitions"]
     w.add_table("transitions", ["case", "where", "K_t_bending", "K_t_torsion", "sigma_nom_MPa", "tau_nom_MPa",
                                 "sigma_vM_nom_MPa", "sigma_vM_peak_MPa", "safety"],

@@ -48,7 +48,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import policy
-from ..checks.result import Check
+from ..check import Check
 from ..errors import InputError
 from ..geometry import cam_outlines as co
 from ..geometry.profile import Profile

@@ -17,7 +17,7 @@ import numpy as np
 
 from ..parallel import start as start_in_fork
 from .. import policy
-from ..checks.result import Check
+from ..check import Check
 from ..errors import InputError
 from ..params import param
 from . import PartType

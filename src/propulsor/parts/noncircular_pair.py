@@ -30,7 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import policy
-from ..checks.result import Check
+from ..check import Check
 from ..errors import InputError
 from ..gears.noncircular import (
     CutterSpec, PitchCurves, SmoothedWalkingLaw, check_generable, choose_smoothing, hub_speed_ripple,

@@ -31,7 +31,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..checks.result import Check
+from ..check import Check
 from ..errors import InputError
 from ..params import param
 from . import PartType

@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from ..checks.result import Check
+from ..check import Check
 from ..parallel import Done, fork_pool
 from ..params import params_to_dict
 
@@ -108,7 +108,7 @@ class OutputWriter:
 
     def add_checks(self, checks) -> None:
         for c in checks:
-            self.checks.append(c if isinstance(c, Check) else Check(**c))
+            self.checks.append(c)
 
     def add_note(self, text: str) -> None:
         self.notes.append(text)
