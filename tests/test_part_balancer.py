@@ -297,7 +297,7 @@ def test_fine_travel_sweep_agrees(manifest):
     import dataclasses
 
     from propulsor.params import load_params, read_part_file
-    from propulsor.parts.balancer import BalancerParams, _mesh, balancer_solid, resolve, travel_sweep
+    from propulsor.parts.balancer import BalancerParams, balancer_solid, sweep_mesh, resolve, travel_sweep
     from propulsor.parts.road_wheel import wheel_solids
 
     p = load_params(BalancerParams, read_part_file(PART)[1])
@@ -305,7 +305,7 @@ def test_fine_travel_sweep_agrees(manifest):
     m = resolve(p, PART)
     ws = wheel_solids(m.wheel)
     m.extras["wheel_names"] = list(ws)
-    res = travel_sweep(m, _mesh(balancer_solid(m), 0.05), [_mesh(s, 0.05) for s in ws.values()])
+    res = travel_sweep(m, sweep_mesh(balancer_solid(m), 0.05), [sweep_mesh(s, 0.05) for s in ws.values()])
     assert len(res["beta"]) >= 4 * 96
     d = manifest["derived"]
     for pair, dd in res["pairs"].items():

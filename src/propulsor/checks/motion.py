@@ -326,6 +326,16 @@ def _dist_each_point(P: np.ndarray, tgt: Outline) -> np.ndarray:
     return out
 
 
+def crop_to_sector(section: m3d.CrossSection, a0: float, a1: float, r_in: float, r_out: float) -> list[np.ndarray]:
+    """Loops of ``section`` inside the annular sector a0..a1, r_in..r_out (about the origin)."""
+    n = max(8, int(math.ceil((a1 - a0) / 0.02)))
+    a = np.linspace(a0, a1, n)
+    outer = np.column_stack([r_out * np.cos(a), r_out * np.sin(a)])
+    inner = np.column_stack([r_in * np.cos(a[::-1]), r_in * np.sin(a[::-1])]) if r_in > 0 else np.zeros((1, 2))
+    wedge = m3d.CrossSection([np.ascontiguousarray(np.vstack([outer, inner]))], m3d.FillRule.Positive)
+    return [np.asarray(p, float) for p in (section ^ wedge).to_polygons()]
+
+
 # ----------------------------------------------------------------------------
 # check records
 # ----------------------------------------------------------------------------

@@ -456,7 +456,8 @@ def balancer_solid(m: BalancerModel):
     """The balancer as one solid (plate ∪ upper axle ∪ spindle, minus socket, bolt bore, cross hole)."""
     from ..geometry.profile import Profile
     from ..solids.build import extrude_profile
-    from ..solids.revolve import cut, cylinder, fuse, moved, revolve_section
+    from ..solids.kernel import cut, cylinder, fuse, moved
+    from ..solids.revolve import revolve_section
 
     p = m.p
     b = p.arm_width_mm
@@ -473,16 +474,6 @@ def balancer_solid(m: BalancerModel):
     return cut(body, socket, bolt, cross, name="balancer bores")
 
 
-def _mass_props(solid, rho=RHO_STEEL_KG_MM3):
-    from OCP.BRepGProp import BRepGProp
-    from OCP.GProp import GProp_GProps
-
-    g = GProp_GProps()
-    BRepGProp.VolumeProperties_s(solid.wrapped, g)
-    c = g.CentreOfMass()
-    return float(g.Mass()) * rho, np.array([c.X(), c.Y(), c.Z()])
-
-
 # ------------------------------------------------------------------------------------------------
 # travel sweep
 # ------------------------------------------------------------------------------------------------
@@ -494,17 +485,9 @@ def _rz(theta: float, t=(0.0, 0.0, 0.0)) -> np.ndarray:
     return T
 
 
-def _manifold(V, F):
-    import manifold3d as m3d
-
-    man = m3d.Manifold(m3d.Mesh64(np.ascontiguousarray(V, np.float64), np.ascontiguousarray(F, np.uint64)))
-    if not str(man.status()).endswith("NoError"):
-        raise RuntimeError(f"mesh is not a manifold: {man.status()}")
-    return man
-
-
-def _mesh(solid, chord):
-    from ..export.mesh import triangulate
+def sweep_mesh(solid, chord):
+    """(vertices, faces) of a solid at the sweep's chord (single-threaded BRepMesh)."""
+    from ..solids.tessellate import triangulate
 
     V, F, _ = triangulate(solid, chord, 0.2, parallel=False)
     return V, F
@@ -514,17 +497,16 @@ def hull_envelope(m: BalancerModel):
     """manifold3d solid of the hull-side envelope (world frame): the side plate (plane z = hull_side_z_mm,
     30 mm thick) with the bearing-housing bore, the bottom plate inboard of it (hull_bottom_mm below the
     torsion axis) and the fender / sponson slab over the wheels (fender_height_mm above the axis)."""
-    import manifold3d as m3d
+    from ..solids.kernel import manifold_cube, manifold_cylinder
 
     p = m.p
     X = m.pitch + p.R_b_mm + m.wheel.r_tyre + 300.0
     z_out = m.z_hub + m.wheel.z_outboard + 200.0
     zs, H, yf = p.hull_side_z_mm, p.hull_bottom_mm, p.fender_height_mm
-    side = m3d.Manifold.cube([2 * X, yf + H + 30.0, 30.0]).translate([-X, -H - 30.0, zs - 30.0])
-    bore = m3d.Manifold.cylinder(100.0, 0.5 * p.hull_bore_d_mm, 0.5 * p.hull_bore_d_mm, 256).translate(
-        [0.0, 0.0, zs - 50.0])
-    bottom = m3d.Manifold.cube([2 * X, 30.0, 600.0]).translate([-X, -H - 30.0, zs - 600.0])
-    fender = m3d.Manifold.cube([2 * X, 30.0, z_out - zs + 10.0]).translate([-X, yf, zs - 10.0])
+    side = manifold_cube([2 * X, yf + H + 30.0, 30.0], [-X, -H - 30.0, zs - 30.0])
+    bore = manifold_cylinder(100.0, 0.5 * p.hull_bore_d_mm, 256, [0.0, 0.0, zs - 50.0])
+    bottom = manifold_cube([2 * X, 30.0, 600.0], [-X, -H - 30.0, zs - 600.0])
+    fender = manifold_cube([2 * X, 30.0, z_out - zs + 10.0], [-X, yf, zs - 10.0])
     return (side - bore) + bottom + fender
 
 
@@ -576,13 +558,14 @@ def travel_sweep(m: BalancerModel, bal_mesh, wheel_meshes) -> dict:
     (a gap >= W is recorded as W, capped).  A pair capped at every step is searched further at
     selected steps with a growing window, so that its least gap is still exact."""
     from ..checks.proximity import nearest_points
+    from ..solids.kernel import manifold
 
     p, tor = m.p, m.tor
     n = int(math.ceil(math.degrees(tor.beta_m - tor.beta0) * p.sweep_steps_per_deg)) + 1
     betas = np.linspace(tor.beta0, tor.beta_m, n)
     wheel_T = _rz(0.0, (p.R_b_mm, 0.0, m.z_hub))
-    mb = _manifold(*bal_mesh)
-    mw = [_manifold(*wm).transform(np.ascontiguousarray(wheel_T[:3])) for wm in wheel_meshes]
+    mb = manifold(*bal_mesh)
+    mw = [manifold(*wm).transform(np.ascontiguousarray(wheel_T[:3])) for wm in wheel_meshes]
     wheel_all = mw[0]
     for x in mw[1:]:
         wheel_all = wheel_all + x
@@ -1019,17 +1002,19 @@ def build(p: BalancerParams, w) -> None:
     wsol = wheel_solids(m.wheel)
     m.extras["wheel_names"] = list(wsol)
     w.progress("sweep meshes")
-    bal_mesh = _mesh(bal, p.sweep_chord_mm)
-    wheel_meshes = [_mesh(s_, p.sweep_chord_mm) for s_ in wsol.values()]
+    bal_mesh = sweep_mesh(bal, p.sweep_chord_mm)
+    wheel_meshes = [sweep_mesh(s_, p.sweep_chord_mm) for s_ in wsol.values()]
     w.progress(f"travel sweep β0 … β_m ({int(math.ceil(math.degrees(t.beta_m - t.beta0) * p.sweep_steps_per_deg)) + 1} "
                "steps × hull + 2 neighbours), in a second process while the solids are checked")
     pending = start_in_fork(_sweep_job, m, bal_mesh, wheel_meshes)
     w.add_solid("balancer", bal, expected_genus=3)
-    mass, com = _mass_props(bal)
+    from ..solids.kernel import mass_properties
+
+    mass, com = mass_properties(bal, RHO_STEEL_KG_MM3)
     wm_tot, wm_com = 0.0, np.zeros(3)
     for nm, s_ in wsol.items():
         rho = (m.wheel_p.rho_rubber_kg_m3 if nm.startswith("tyre") else m.wheel_p.rho_steel_kg_m3) * 1e-9
-        mk, ck = _mass_props(s_, rho)
+        mk, ck = mass_properties(s_, rho)
         wm_tot += mk
         wm_com += mk * (ck + np.array([p.R_b_mm, 0.0, m.z_hub]))
     wm_com /= wm_tot
@@ -1044,13 +1029,12 @@ def build(p: BalancerParams, w) -> None:
         ["arm prism of the beam model", arm_m, arm_sc, 0.0, 0.0, "balancer (station)"]])
 
     # assembly at beta_st
-    import cadquery as cq
+    from ..solids.kernel import z_rotation
 
     th = math.degrees(t.beta_st - math.pi / 2)
-    rot = cq.Location(cq.Vector(0, 0, 0), cq.Vector(0, 0, 1), th)
-    comps = [("balancer", bal, rot)]
+    comps = [("balancer", bal, z_rotation(th))]
     for nm, s_ in wsol.items():
-        comps.append((f"road_wheel_{nm}", s_, rot * cq.Location(cq.Vector(p.R_b_mm, 0.0, m.z_hub))))
+        comps.append((f"road_wheel_{nm}", s_, z_rotation(th, (p.R_b_mm, 0.0, m.z_hub))))
     w.add_assembly("assembly_beta_st", comps)
 
     # DXF of the arm's side outline (plate blank)

@@ -410,64 +410,39 @@ def plan(p: CamMoverParams) -> Plan:
 # ------------------------------------------------------------------------------ solids
 
 
-def _moved(solid, dz: float):
-    import cadquery as cq
-
-    return solid.moved(cq.Location(cq.Vector(0.0, 0.0, float(dz)))) if dz else solid
-
-
-def _cylinder(radius: float, z0: float, z1: float, x: float = 0.0, y: float = 0.0):
-    import cadquery as cq
-
-    return cq.Solid.makeCylinder(float(radius), float(z1 - z0), cq.Vector(float(x), float(y), float(z0)),
-                                 cq.Vector(0.0, 0.0, 1.0))
-
-
-def _one_solid(shape, name: str):
-    """The single solid of a boolean result (cleaned)."""
-    import cadquery as cq
-
-    shape = shape.clean()
-    solids = shape.Solids() if hasattr(shape, "Solids") else [shape]
-    if len(solids) != 1:
-        raise RuntimeError(f"{name}: boolean result has {len(solids)} solids")
-    return cq.Solid(solids[0].wrapped)
-
-
 def build_solids(pl: Plan) -> dict:
-    """cadquery solids of every part, each in its own frame (z from its own bottom face)."""
-    import cadquery as cq
-
+    """Solids of every part, each in its own frame (z from its own bottom face)."""
     from ..solids.build import extrude_profile
+    from ..solids.kernel import box, cq_cut, cq_cylinder, cq_fuse, shifted_z
 
     p = pl.params
     z = pl.z
     tp = z["plate"][1]
     dg = z["channel"][1] - z["channel"][0]
     plate = extrude_profile(pl.plate, tp)
-    core = _moved(extrude_profile(pl.core, dg), tp)
-    ring = _moved(extrude_profile(pl.ring, dg), tp)
-    cam = _one_solid(plate.fuse(core, ring), "cam")
+    core = shifted_z(extrude_profile(pl.core, dg), tp)
+    ring = shifted_z(extrude_profile(pl.ring, dg), tp)
+    cam = cq_fuse(plate, core, ring, name="cam")
     carrier = extrude_profile(pl.carrier.profile, p.carrier_thickness_mm)
     # leg: bar + roller pin (down to the roller's lower face) − tapped holes for the shoe bolts
     t = p.carrier_thickness_mm
     bar = extrude_profile(pl.leg, t)
     pin_len = z["pin"][1] - z["pin"][0]
-    pin = _cylinder(0.5 * p.roller_pin_mm, -pin_len, 0.0)
+    pin = cq_cylinder(0.5 * p.roller_pin_mm, -pin_len, 0.0)
     ys = p.leg_mount_mm + 0.5 * p.socket_depth_mm
     xs = 0.25 * p.leg_width_mm
-    leg = bar.fuse(pin)
-    taps = [_cylinder(0.5 * p.leg_tap_drill_mm, t - p.leg_tap_depth_mm, t + 1.0, x, ys) for x in (-xs, xs)]
-    leg = _one_solid(leg.cut(*taps), "leg")
+    leg = cq_fuse(bar, pin, clean=False)
+    taps = [cq_cylinder(0.5 * p.leg_tap_drill_mm, t - p.leg_tap_depth_mm, t + 1.0, x, ys) for x in (-xs, xs)]
+    leg = cq_cut(leg, *taps, name="leg")
     roller = extrude_profile(pl.roller, p.roller_width_mm)
     # shoe: prism of the outline − socket for the leg end − bolt holes through the cover
     ws = p.shoe_width_mm
     shoe = extrude_profile(pl.shoe.profile, ws)
     hw = 0.5 * p.leg_width_mm + p.socket_clearance_mm
     y0, y1 = p.leg_mount_mm - 1.0, p.leg_mount_mm + p.socket_depth_mm
-    socket = cq.Solid.makeBox(2 * hw, y1 - y0, t + 1.0, cq.Vector(-hw, y0, -1.0))
-    bolts = [_cylinder(0.5 * p.shoe_bolt_hole_mm, t - 0.5, ws + 1.0, x, ys) for x in (-xs, xs)]
-    shoe = _one_solid(shoe.cut(socket, *bolts), "shoe")
+    socket = box(2 * hw, y1 - y0, t + 1.0, (-hw, y0, -1.0))
+    bolts = [cq_cylinder(0.5 * p.shoe_bolt_hole_mm, t - 0.5, ws + 1.0, x, ys) for x in (-xs, xs)]
+    shoe = cq_cut(shoe, socket, *bolts, name="shoe")
     return dict(cam=cam, carrier=carrier, leg=leg, roller=roller, shoe=shoe)
 
 

@@ -212,7 +212,8 @@ def wheel_model(p: RoadWheelParams) -> WheelModel:
 
 def wheel_solids(m: WheelModel) -> dict:
     """Name -> cadquery Solid of every wheel part, in the wheel frame."""
-    from ..solids.revolve import cut, cylinder, revolve_section
+    from ..solids.kernel import cut, cylinder
+    from ..solids.revolve import revolve_section
 
     out = {}
     for name, sec in m.sections().items():
@@ -229,18 +230,10 @@ def wheel_solids(m: WheelModel) -> dict:
     return out
 
 
-def _mass_props(solid, rho_kg_mm3: float):
-    from OCP.BRepGProp import BRepGProp
-    from OCP.GProp import GProp_GProps
-
-    g = GProp_GProps()
-    BRepGProp.VolumeProperties_s(solid.wrapped, g)
-    c = g.CentreOfMass()
-    return float(g.Mass()) * rho_kg_mm3, np.array([c.X(), c.Y(), c.Z()])
-
-
 def mass_properties(m: WheelModel, solids: dict) -> dict:
     """Mass (kg) and centre of mass (mm, wheel frame) of every solid and of the whole wheel."""
+    from ..solids.kernel import mass_properties as _mass_props
+
     p = m.p
     out = {}
     tot, mom = 0.0, np.zeros(3)
