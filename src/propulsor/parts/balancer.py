@@ -286,7 +286,10 @@ class BalancerModel:
 
 
 def _wheel_inputs(p: BalancerParams, source: Path | None):
-    from .road_wheel import RoadWheelParams, wheel_model
+    from ..solids.road_wheel import wheel_model
+    from . import get_part_type
+
+    RoadWheelParams = get_part_type("road_wheel").params_cls
 
     base = Path(source).resolve().parent if source is not None else Path.cwd()
     f = Path(p.road_wheel_file)
@@ -882,7 +885,7 @@ def _fmt_pt(pnt) -> str:
 def build(p: BalancerParams, w) -> None:
     from ..geometry.arm_outline import section_depth
     from ..laws.suspension import rebound_damping_max
-    from .road_wheel import wheel_solids
+    from ..solids.road_wheel import wheel_solids
 
     w.progress("inputs: suspension, road wheel, beam model, outline")
     m = resolve(p, getattr(w, "source", None))

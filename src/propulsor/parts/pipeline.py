@@ -1,0 +1,52 @@
+"""The one build pipeline every part type uses: parameters → design (once) → output steps → writer.
+
+A part type is its parameter dataclass, a ``design(params) -> Design`` function (frozen result;
+raises InputError for parameters that cannot be made) and an ordered list of output steps
+``step(design, writer, built)``: each step adds derived values, checks, solids, tables, plots, DXF
+and notes to the :class:`~propulsor.parts.writer.OutputWriter`, which writes every solid's files
+and runs the shared checks on them (B-rep, STEP round trip, mesh), then the report and the
+manifest (docs/architecture.md, "Data flow of one build").  ``built`` is a dict in which a step leaves
+what a later step needs (the solids, a proof running in a forked worker).
+
+The design is computed once per parameter values: the parameters' ``validate()`` (run when
+they are loaded) asks :func:`design_of`, and the build asks again and gets the same object.
+"""
+
+from __future__ import annotations
+
+import copy
+from dataclasses import dataclass
+from typing import Callable, Sequence
+
+from ..params import params_to_dict
+
+__all__ = ["design_of", "Pipeline"]
+
+_CACHE_ATTR = "_propulsor_design"
+
+
+def design_of(params, design_fn: Callable, *args):
+    """``design_fn(params, *args)``, computed once per parameter values (and args) and kept on the
+    parameter object; recomputed when a field of the parameters has changed since."""
+    key = (design_fn.__module__, design_fn.__qualname__, params_to_dict(params), args)
+    store = params.__dict__.setdefault(_CACHE_ATTR, [])
+    for k, d in store:
+        if k == key:
+            return d
+    d = design_fn(params, *args)
+    store.append((copy.deepcopy(key), d))
+    return d
+
+
+@dataclass(frozen=True)
+class Pipeline:
+    """``build(params, writer)`` of a part type: its design, then each output step in order."""
+
+    design: Callable  # design(params, writer) -> Design (the writer gives the part file's folder)
+    steps: Sequence[Callable]  # step(design, writer, built) -> None
+
+    def __call__(self, params, w) -> None:
+        d = self.design(params, w)
+        built: dict = {}
+        for step in self.steps:
+            step(d, w, built)
