@@ -9,12 +9,14 @@ manifest (docs/architecture.md, "Data flow of one build").  ``built`` is a dict 
 what a later step needs (the solids, a proof running in a forked worker).
 
 The design is computed once per parameter values: the parameters' ``validate()`` (run when
-they are loaded) asks :func:`design_of`, and the build asks again and gets the same object.
+they are loaded) asks :func:`design_of`, and the build asks again and gets the same object
+(kept beside the parameter object, not in it: the parameters stay plain values).
 """
 
 from __future__ import annotations
 
 import copy
+import weakref
 from dataclasses import dataclass
 from typing import Callable, Sequence
 
@@ -22,14 +24,18 @@ from ..params import params_to_dict
 
 __all__ = ["design_of", "Pipeline"]
 
-_CACHE_ATTR = "_propulsor_design"
+#: id(parameter object) -> [(key, design)], dropped with the parameter object
+_DESIGNS: dict[int, list] = {}
 
 
 def design_of(params, design_fn: Callable, *args):
-    """``design_fn(params, *args)``, computed once per parameter values (and args) and kept on the
-    parameter object; recomputed when a field of the parameters has changed since."""
+    """``design_fn(params, *args)``, computed once per parameter values (and args) for as long as the
+    parameter object lives; recomputed when a field of the parameters has changed since."""
     key = (design_fn.__module__, design_fn.__qualname__, params_to_dict(params), args)
-    store = params.__dict__.setdefault(_CACHE_ATTR, [])
+    if id(params) not in _DESIGNS:
+        _DESIGNS[id(params)] = []
+        weakref.finalize(params, _DESIGNS.pop, id(params), None)
+    store = _DESIGNS[id(params)]
     for k, d in store:
         if k == key:
             return d
