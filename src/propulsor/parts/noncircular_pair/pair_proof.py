@@ -1,4 +1,4 @@
-"""Full-cycle proof of a non-circular pair on its finished outlines (SPEC §3.2, issue 3).
+"""Full-cycle proof of a non-circular pair on its finished outlines (seed 000 eq. 9/11; docs/architecture.md, "Proofs").
 
 The driven wheel (axis at the origin) turns by -phi, the driver (axis at (L, 0)) by
 +theta_law(phi) (seed 000 eq. 9/11 with the periodic wrap; the smoothed law for generated
@@ -27,8 +27,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks.motion import crop_to_sector, outline, transmission_sweep
-from .. import policy
+from ...checks.motion import crop_to_sector, outline, transmission_sweep
+from ... import policy
 
 
 @dataclass
@@ -122,7 +122,7 @@ def _axis_annulus(o) -> None:
 
 def _outer_only(profile):
     """The outer loop of a profile as a closed polyline list (bores cannot touch the mate)."""
-    from ..geometry.profile import Profile
+    from ...geometry.profile import Profile
 
     if isinstance(profile, Profile):
         return [profile.outer.polyline(policy.MOTION_CHORD_TOL_MM)]
