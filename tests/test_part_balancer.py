@@ -27,19 +27,6 @@ PART = ROOT / "parts" / "balancer.toml"
 WHEEL = ROOT / "parts" / "road_wheel.toml"
 
 
-@pytest.fixture(scope="module")
-def out(tmp_path_factory):
-    folder = tmp_path_factory.mktemp("balancer") / "balancer"
-    rc = main(["build", str(PART), "--out", str(folder), "-q"])
-    assert rc == 0
-    return folder
-
-
-@pytest.fixture(scope="module")
-def manifest(out):
-    return json.loads((out / "manifest.json").read_text())
-
-
 def table(out, name):
     with open(out / "tables" / f"{name}.csv", newline="") as fh:
         rows = list(csv.DictReader(fh))

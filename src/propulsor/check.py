@@ -2,7 +2,7 @@
 
 The one check type of every layer (engineering limits in laws/, B-rep, mesh, motion and file
 checks in checks/, the parts' own checks): the report and the manifest print them unchanged
-(docs/architecture.md, "Checks").  Depends on nothing but the standard library (numpy values
+(docs/architecture.md, "The data flow of one build").  Depends on nothing but the standard library (numpy values
 are converted when numpy is present), so every layer may import it.
 """
 

@@ -1,4 +1,4 @@
-"""Validity of B-rep solids and of their STEP round trip (SPEC §9).
+"""Validity of B-rep solids and of their STEP round trip (docs/architecture.md, "The data flow of one build").
 
 `brep_checks`: OCCT's BRepCheck_Analyzer finds the shape valid, it is exactly
 one solid, its shells are closed (BRepCheck_Shell: no free edges), its volume is

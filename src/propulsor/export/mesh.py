@@ -1,7 +1,7 @@
 """STL / 3MF output of tessellated solids (tessellation: :mod:`propulsor.solids.tessellate`).
 
 The chord error (linear deflection) is policy.CHORD_TOL_MM (0.005 mm, below the 0.01 mm the
-outputs promise, docs/architecture.md "Outputs"), the angular deflection policy.ANGULAR_TOL_RAD.
+outputs promise, docs/architecture.md, "The data flow of one build"), the angular deflection policy.ANGULAR_TOL_RAD.
 Files are deterministic: binary STL has a fixed 80-byte header; the 3MF zip is rewritten with
 fixed entry time stamps.
 """

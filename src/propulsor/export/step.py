@@ -3,7 +3,7 @@
 Units are millimetres, schema AP214 (AUTOMOTIVE_DESIGN), written through OCCT's
 XCAF so that product names survive.  Output is deterministic: OCCT stamps the
 current time into the header's FILE_NAME entity; it is rewritten to the fixed
-`STEP_TIMESTAMP` so the same input gives byte-identical files (SPEC §9).
+`STEP_TIMESTAMP` so the same input gives byte-identical files.
 """
 
 from __future__ import annotations

@@ -5,7 +5,7 @@ raises InputError for parameters that cannot be made) and an ordered list of out
 ``step(design, writer, built)``: each step adds derived values, checks, solids, tables, plots, DXF
 and notes to the :class:`~propulsor.parts.writer.OutputWriter`, which writes every solid's files
 and runs the shared checks on them (B-rep, STEP round trip, mesh), then the report and the
-manifest (docs/architecture.md, "Data flow of one build").  ``built`` is a dict in which a step leaves
+manifest (docs/architecture.md, "The data flow of one build").  ``built`` is a dict in which a step leaves
 what a later step needs (the solids, a proof running in a forked worker).
 
 The design is computed once per parameter values: the parameters' ``validate()`` (run when

@@ -142,6 +142,13 @@ class OutputWriter:
             self.progress(f"{name}: files written and checked")
         self._solid_jobs = []
 
+    def wait_for_files(self, *names: str) -> None:
+        """Wait until the files of the named solids are written (their checks are still collected, in
+        order, by :meth:`wait_solids`)."""
+        for name, job in self._solid_jobs:
+            if name in names:
+                job.result()
+
     def close(self) -> None:
         """Stop the workers (after a failure: nothing may be written into the folder after this)."""
         if self._pool is not None:

@@ -31,7 +31,7 @@ from OCP.TopExp import TopExp_Explorer
 from OCP.TopoDS import TopoDS, TopoDS_Shape
 from OCP.TopTools import TopTools_ListOfShape
 
-from ..errors import require, require_positive
+from ..errors import InputError, require, require_positive
 
 __all__ = ["occ_shape", "as_solid", "solids_of", "one_solid", "moved", "shifted_z", "z_rotation", "cylinder",
            "cq_cylinder", "box", "fuse", "cut", "cq_fuse", "cq_cut", "volume", "mass_properties", "manifold",
@@ -202,13 +202,29 @@ def mass_properties(solid, rho: float) -> tuple[float, np.ndarray]:
 
 
 # -- manifold3d -----------------------------------------------------------------------------------
-def manifold(V, F):
-    """A manifold3d solid of a closed triangle mesh (RuntimeError when the mesh is not a manifold)."""
+def manifold(mesh, name: str = "mesh"):
+    """A manifold3d solid of a closed triangle mesh: (vertices (n, 3), faces (m, 3)), an object with
+    .vertices / .faces (a trimesh) or a manifold3d.Manifold (returned as it is).  InputError naming
+    ``name`` when it is not a closed, oriented 2-manifold."""
     import manifold3d as m3d
 
-    man = m3d.Manifold(m3d.Mesh64(np.ascontiguousarray(V, np.float64), np.ascontiguousarray(F, np.uint64)))
-    if not str(man.status()).endswith("NoError"):
-        raise RuntimeError(f"mesh is not a manifold: {man.status()}")
+    if isinstance(mesh, m3d.Manifold):
+        return mesh
+    if hasattr(mesh, "vertices") and hasattr(mesh, "faces"):
+        V, F = mesh.vertices, mesh.faces
+    else:
+        try:
+            V, F = mesh
+        except (TypeError, ValueError):
+            raise InputError(name, type(mesh).__name__, "must be (vertices, faces), an object with .vertices/.faces "
+                             "or a manifold3d.Manifold") from None
+    V = np.ascontiguousarray(np.asarray(V, np.float64))
+    F = np.ascontiguousarray(np.asarray(F, np.uint64))
+    require(V.ndim == 2 and V.shape[1] == 3, name, V.shape, "vertices must be (n, 3)")
+    require(F.ndim == 2 and F.shape[1] == 3, name, F.shape, "faces must be (m, 3) triangles")
+    man = m3d.Manifold(m3d.Mesh64(V, F))
+    require(str(man.status()).endswith("NoError") and not man.is_empty(), name, str(man.status()),
+            "must be a closed, oriented 2-manifold mesh")
     return man
 
 

@@ -54,4 +54,5 @@ PART_TYPE = PartType(
     summary="fixed cam (closed track), carrier, legs, rollers and shoes of the driven wheel-walking propulsor (seed 001)",
     params_cls=CamMoverParams,
     build=build,
+    design=plan,
 )

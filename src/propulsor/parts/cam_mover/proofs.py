@@ -318,6 +318,7 @@ def spot_checks_and_tables(dd: Plan, w, built: dict) -> None:
     rw, ro, hub = pr["roller_working"], pr["roller_outer"], pr["hub"]
     # 3D spot checks on the exported meshes
     w.progress("cam_mover: 3D spot checks (exported STL)")
+    w.wait_for_files("cam", "roller")
     phi3, s3 = spot_checks_3d(pl, load_mesh(w.folder / "cam.stl"), load_mesh(w.folder / "roller.stl"))
     w.add_checks([Check.at_most("roller in channel (3D, exported meshes): overlap volume", s3.max_overlap,
                                 policy.OVERLAP_VOLUME_TOL_MM3, "mm^3",

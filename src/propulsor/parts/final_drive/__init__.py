@@ -24,4 +24,5 @@ PART_TYPE = PartType(
     summary="planetary final drive: sun, planets, fixed ring (seed 004 ch. 4, ISO 21771)",
     params_cls=FinalDriveParams,
     build=build,
+    design=design,
 )

@@ -1,21 +1,14 @@
-"""Non-circular gear pair of the driving wheel-walking propulsor (seeds 000 and 002, issue 3).
+"""Non-circular gear pair of the driving wheel-walking propulsor (seeds 000 and 002).
 
-law (seed 000 eqs. 1-15, periodic per leg: SPEC §3 Trap 1) -> pitch curves r_H(phi), r(theta)
-(seed 000 eqs. 12-13) closed by true arc length (Trap 3) -> teeth -> finished outlines ->
-full-cycle proof on the outlines (``parts.noncircular_proof``) -> solids with face width, bore
-and keyway -> STEP / STL / 3MF / DXF, the papers' tables, transmission table, plots, report.
+law (seed 000 eqs. 1-15, periodic per leg) -> pitch curves r_H(phi), r(theta) (seed 000 eqs. 12-13)
+closed by true arc length -> teeth -> finished outlines -> full-cycle proof on the outlines
+(:mod:`.pair_proof`) -> solids with face width, bore and keyway -> STEP / STL / 3MF / DXF, the
+papers' tables, transmission table, plots, report (docs/architecture.md, "Non-circular pair").
 
-Two tooth methods:
-
-* ``generated`` (default, SPEC §3.2): a C2, closure-exact blend of the law around every leg
-  hand-over (``gears.noncircular.SmoothedWalkingLaw``, Trap 2) whose half-width is the smallest
-  keeping both pitch curves generable (rack undercut limit rho >= (h_a* - x) m / sin^2 alpha on
-  convex parts with the driver shifted by +x and the driven wheel by -x; shaper z0 with
-  r0 < |rho| on concave parts), or given by the user; conjugate teeth enveloped by the ISO 53
-  rack / the shaper on one shared arc-length frame (``geometry.noncircular_outline``).
-* ``sectors``: the papers' own method (seed 000 eqs. 16-52, seed 002 Tables 2-4,
-  ``gears.sectors``) on the exact law; its teeth are not conjugate and the proof measures
-  what that costs (interference at the law's positions, jams, transmission error).
+Two tooth methods (:mod:`.design`): ``generated`` (default; conjugate teeth on a C2 blend of the law)
+and ``sectors`` (the papers' own method, seed 000 eqs. 16-52, seed 002 Tables 2-4, on the exact
+law; its teeth are not conjugate and the proof measures what that costs: interference at the law's
+positions, jams, transmission error).
 
 Frames (the contract other tools read): the driven wheel's axis at the origin, the driver's at
 (L, 0); ``driven.dxf`` / ``driver.dxf`` hold each gear about its own axis in its phase at
@@ -42,4 +35,5 @@ PART_TYPE = PartType(
     summary="non-circular gear pair of the wheel-walking propulsor drive (seeds 000, 002): generated or sector teeth",
     params_cls=NoncircularPairParams,
     build=build,
+    design=pair_design,
 )

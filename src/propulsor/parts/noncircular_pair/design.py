@@ -109,7 +109,7 @@ def _smallest_generable(law, cutter, z_H) -> str:
 
 
 def design_generated(p: NoncircularPairParams, progress=lambda s: None) -> Design:
-    """Seed 000/002 law -> C2 blend -> closure -> generated teeth (docs/architecture.md, "Seeds")."""
+    """Seed 000/002 law -> C2 blend -> closure -> generated teeth (docs/architecture.md, "Seed equations and their modules")."""
     from ...geometry.noncircular_outline import ArcFrame, ToothSpec, generate_gear
 
     law = _law(p)

@@ -1,4 +1,4 @@
-"""Full-cycle proof of a non-circular pair on its finished outlines (seed 000 eq. 9/11; docs/architecture.md, "Proofs").
+"""Full-cycle proof of a non-circular pair on its finished outlines (seed 000 eq. 9/11; docs/architecture.md, "The data flow of one build").
 
 The driven wheel (axis at the origin) turns by -phi, the driver (axis at (L, 0)) by
 +theta_law(phi) (seed 000 eq. 9/11 with the periodic wrap; the smoothed law for generated

@@ -41,4 +41,5 @@ PART_TYPE = PartType(
     summary="double road wheel with solid rubber tyres, Kozlov heat estimate (seed 004 ch. 7)",
     params_cls=RoadWheelParams,
     build=build,
+    design=design,
 )
