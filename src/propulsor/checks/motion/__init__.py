@@ -39,7 +39,7 @@ Modules: :mod:`.outlines`, :mod:`.poses`, :mod:`.distance`, :mod:`.backlash`, :m
 from __future__ import annotations
 
 from .outlines import Outline, outline, crop_to_sector
-from .poses import Pose, poses_from_angles
+from .poses import Pose, poses_from_angles, rotation_matrices
 from .sweep2d import SweepResult, sweep_pair, sweep_pair_windowed
 from .transmission import TransmissionResult, transmission_sweep
 from .sweep3d import box_corners, box_of, box_gap, Sweep3DResult, sweep_solids_3d
@@ -50,6 +50,7 @@ __all__ = [
     "crop_to_sector",
     "Pose",
     "poses_from_angles",
+    "rotation_matrices",
     "SweepResult",
     "sweep_pair",
     "sweep_pair_windowed",

@@ -9,7 +9,7 @@ import numpy as np
 
 from ...errors import require
 
-__all__ = ['Pose', 'poses_from_angles', 'pose_stack', 'apply_pose', 'inverse_pose', 'compose_poses']
+__all__ = ['Pose', 'poses_from_angles', 'rotation_matrices', 'pose_stack', 'apply_pose', 'inverse_pose', 'compose_poses']
 
 
 @dataclass(frozen=True)
@@ -34,6 +34,18 @@ class Pose:
 def poses_from_angles(angles, pivot=(0.0, 0.0), offset=(0.0, 0.0)) -> list[Pose]:
     """One Pose per angle, all about the same pivot and with the same translation."""
     return [Pose(float(a), tuple(map(float, pivot)), tuple(map(float, offset))) for a in np.ravel(angles)]
+
+
+def rotation_matrices(angles, centres=None) -> np.ndarray:
+    """(n, 2, 3) affine matrices: rotation by each angle about the origin, then translation to each
+    centre ((n, 2); none: no translation)."""
+    angles = np.asarray(angles, float)
+    c, s = np.cos(angles), np.sin(angles)
+    M = np.zeros((len(angles), 2, 3))
+    M[:, 0, 0], M[:, 0, 1], M[:, 1, 0], M[:, 1, 1] = c, -s, s, c
+    if centres is not None:
+        M[:, :, 2] = centres
+    return M
 
 
 def pose_stack(poses, n: int | None, name: str) -> tuple[np.ndarray, np.ndarray]:

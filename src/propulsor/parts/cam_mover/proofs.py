@@ -20,6 +20,7 @@ import numpy as np
 
 from ... import policy
 from ...check import Check
+from ...checks.motion import rotation_matrices
 from ...geometry import cam_outlines as co
 from .design import Plan
 
@@ -33,19 +34,7 @@ SPOT_CHECKS_3D = 16
 def leg_poses(pl: Plan, phi) -> np.ndarray:
     """(n, 2, 3) affine matrices of the leg frame → CAD frame for carrier angles φ."""
     rot, pos = co.leg_placement(pl.motion, phi)
-    c, s = np.cos(rot), np.sin(rot)
-    M = np.empty((len(rot), 2, 3))
-    M[:, 0, 0], M[:, 0, 1], M[:, 1, 0], M[:, 1, 1] = c, -s, s, c
-    M[:, :, 2] = pos
-    return M
-
-
-def _rot_poses(phi) -> np.ndarray:
-    phi = np.asarray(phi, float)
-    c, s = np.cos(phi), np.sin(phi)
-    M = np.zeros((len(phi), 2, 3))
-    M[:, 0, 0], M[:, 0, 1], M[:, 1, 0], M[:, 1, 1] = c, -s, s, c
-    return M
+    return rotation_matrices(rot, pos)
 
 
 def hub_height_from_outline(pl: Plan, pts: np.ndarray, phi: np.ndarray) -> dict:
@@ -156,7 +145,7 @@ def motion_proofs(pl: Plan, shoe_loops: list, channel_loops: list) -> dict:
     body_cs = outline(pl.shoe.profile, cm, 1.0).section + outline(pl.leg, cm, 1.0).section
     body = outline(_section_polys(body_cs), cm, 1.0)
     car = outline(pl.carrier.profile, cm, 1.0)
-    carM = _rot_poses(phi)
+    carM = rotation_matrices(phi)
     out["leg_carrier"] = sweep_pair(car, carM, outline(pl.leg, cm, 1.0), legM, name="leg_vs_carrier_slide",
                                     max_segment=1.0)
     out["shoe_carrier"] = sweep_pair(car, carM, outline(pl.shoe.profile, cm, 1.0), legM, name="shoe_vs_carrier",

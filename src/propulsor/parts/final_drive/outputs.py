@@ -28,12 +28,13 @@ def solids(dd: FinalDriveDesign, w, built: dict) -> None:
 
 def assembly_and_drawings(dd: FinalDriveDesign, w, built: dict) -> None:
     """Assembly at carrier angle 0, DXF of each gear, layout plot."""
+    from ...export.plots import outline_plot
+    from ...gears.planetary_kinematics import PlanetaryKinematics
+
     p, ps = dd.p, dd.ps
     sp, pr = ps.mesh_sun_planet, ps.mesh_planet_ring
     sun_o, planet_o, ring_o = dd.outlines
     solids = built["solids"]
-    from ...gears.planetary_kinematics import PlanetaryKinematics
-
     kin = PlanetaryKinematics(p.z_sun, p.z_planet, p.z_ring, p.n_planets, ps.a_w)
     off_ext, off_ring = body_offsets(p.z_ring)
     zc = lambda width: 0.5 * (p.width_ring_mm - width)  # noqa: E731  (centre every face width on the ring's)
@@ -53,8 +54,6 @@ def assembly_and_drawings(dd: FinalDriveDesign, w, built: dict) -> None:
     w.add_dxf("sun", [sun_o.profile], refs(ps.sun, ps.d_a_sun, [sp.d_w1]))
     w.add_dxf("planet", [planet_o.profile], refs(ps.planet, ps.d_a_planet, [sp.d_w2, pr.d_w1]))
     w.add_dxf("ring", [ring_o.profile], refs(ps.ring, ps.d_a_ring, [pr.d_w2]))
-
-    from ...export.plots import outline_plot
 
     loops = []
     for k, prof in enumerate([sun_o.profile] + [planet_o.profile] * p.n_planets + [ring_o.profile]):

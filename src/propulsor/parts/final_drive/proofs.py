@@ -45,7 +45,7 @@ def carrier_sweep(p: FinalDriveParams, ps, outlines, steps_per_deg: float | None
     absolute rotation, ring fixed (seed 004 eq. 32; phasing in
     :mod:`propulsor.gears.planetary_kinematics`).  manifold3d boolean per step.
     """
-    from ...checks.motion import outline, sweep_pair_windowed
+    from ...checks.motion import outline, rotation_matrices, sweep_pair_windowed
     from ...gears.planetary_kinematics import PlanetaryKinematics
 
     spd = steps_per_deg or p.sweep_steps_per_deg
@@ -60,18 +60,11 @@ def carrier_sweep(p: FinalDriveParams, ps, outlines, steps_per_deg: float | None
     A_pl = outline(planet_o.profile, tol, seg)
     A_ring = outline(ring_o.profile, tol, seg)
 
-    def mats(angles, centres):
-        c, s = np.cos(angles), np.sin(angles)
-        M = np.zeros((len(angles), 2, 3))
-        M[:, 0, 0], M[:, 0, 1], M[:, 1, 0], M[:, 1, 1] = c, -s, s, c
-        M[:, :, 2] = centres
-        return M
-
-    M_sun = mats(kin.sun_angle(psi) + off_ext, np.zeros((n, 2)))
-    M_ring = mats(np.full(n, kin.ring_rotation + off_ring), np.zeros((n, 2)))
+    M_sun = rotation_matrices(kin.sun_angle(psi) + off_ext, np.zeros((n, 2)))
+    M_ring = rotation_matrices(np.full(n, kin.ring_rotation + off_ring), np.zeros((n, 2)))
     out = []
     for k in range(p.n_planets):
-        M_pl = mats(kin.planet_angle(psi, k) + off_ext, kin.planet_centre(psi, k))
+        M_pl = rotation_matrices(kin.planet_angle(psi, k) + off_ext, kin.planet_centre(psi, k))
         for tag, A, MA in (("sun", A_sun, M_sun), ("ring", A_ring, M_ring)):
             name = f"mesh_{tag}_planet{k + 1}" if tag == "sun" else f"mesh_planet{k + 1}_ring"
             r = sweep_pair_windowed(A, MA, A_pl, M_pl, reach=p.module_mm, chord_tol=tol, max_segment=seg,
