@@ -1,7 +1,7 @@
-"""The balancer part built from parts/balancer.toml (seed 004 ch. 2 and 8; issue 5).
+"""The balancer part built from parts/balancer.toml (seed 004 ch. 2 and 8).
 
 One build per module; every assertion reads the OUTPUT folder (manifest, CSV, meshes, STEP,
-DXF), not the code that wrote it.  Acceptance of issue 5:
+DXF), not the code that wrote it.  What is accepted:
 1. the thesis's suspension numbers reproduced (or their inconsistency shown);
 2. stresses within the allowable at every station of the built arm, the critical sections
    (axle–arm shoulder fillets) with stated K_t, the FE comparison (~300 MPa body);

@@ -1,4 +1,4 @@
-"""The road wheel built from parts/road_wheel.toml (seed 004 ch. 5, 7; issue 5).
+"""The road wheel built from parts/road_wheel.toml (seed 004 ch. 5, 7).
 
 One build per module; assertions read the output folder.  Kozlov's temperature is re-computed
 here independently in SI units from the part file's numbers."""

@@ -80,6 +80,32 @@ def _gap(A, B, w0: float) -> float:
         w *= 2.0
 
 
+def _exact_gaps(m: BalancerModel, off, cdist, pose_a, pose_b, W: float) -> tuple[dict, set]:
+    """Exact gaps at selected steps of a pair whose gap is capped (>= W) at every step: evenly spread
+    steps, and for a neighbour the steps around the one where the two wheel axes come closest.  For a
+    neighbour the wheel-to-wheel gap (axis distance − 2 R_tyre) bounds the gap from above, so one
+    min_gap call with that window is exact; the hull's window grows.  Returns {step: gap} and the
+    searched steps whose window did not reach (their gap stays a lower bound)."""
+    n = len(cdist)
+    cand = np.linspace(0, n - 1, min(n, 13)).round().astype(int).tolist()
+    exact = {}
+    if off is None:
+        for k in cand:
+            exact[k] = _gap(pose_a(k), pose_b(k), W)
+        return exact, set()
+    ka = int(np.argmin(cdist))
+    near = list(range(max(0, ka - 2), min(n, ka + 3)))
+    for k in near:  # closest wheel axes first: the least gap found bounds every later window
+        exact[k] = float(pose_a(k).min_gap(pose_b(k), cdist[k] - 2.0 * m.wheel.r_tyre + 1.0))
+    g_min = min(exact.values())
+    for k in cand:
+        if k not in exact:
+            exact[k] = float(pose_a(k).min_gap(pose_b(k), min(cdist[k] - 2.0 * m.wheel.r_tyre, g_min) + 1.0))
+    lower = {kk for kk, g in exact.items()
+             if kk not in near and g >= min(cdist[kk] - 2.0 * m.wheel.r_tyre, g_min) + 1.0 - 1e-9}
+    return exact, lower
+
+
 def travel_sweep(m: BalancerModel, bal_mesh, wheel_meshes) -> dict:
     """Balancer with its wheel from β0 to β_m against the hull envelope and both neighbours.
 
@@ -134,25 +160,9 @@ def travel_sweep(m: BalancerModel, bal_mesh, wheel_meshes) -> dict:
         res["timing_s"][f"{name}_steps"] = clock() - t0
         t0 = clock()
         capped = gap >= W - 1e-9
-        exact = {}
+        exact, still_lower = {}, set()
         if capped.all():
-            # search on at selected steps: evenly spread, and for a neighbour around the step where the two
-            # wheel axes come closest.  For a neighbour the wheel-to-wheel gap (axis distance − 2 R_tyre)
-            # bounds the gap from above, so one min_gap call with that window is exact; the hull's window grows.
-            cand = np.linspace(0, n - 1, min(n, 13)).round().astype(int).tolist()
-            if off is not None:
-                ka = int(np.argmin(cdist))
-                near = list(range(max(0, ka - 2), min(n, ka + 3)))
-                for k in near:  # closest wheel axes first: the least gap found bounds every later window
-                    exact[k] = float(pose_a(k).min_gap(pose_b(k), cdist[k] - 2.0 * m.wheel.r_tyre + 1.0))
-                g_min = min(exact.values())
-                for k in cand:
-                    if k not in exact:
-                        exact[k] = float(pose_a(k).min_gap(
-                            pose_b(k), min(cdist[k] - 2.0 * m.wheel.r_tyre, g_min) + 1.0))
-            else:
-                for k in cand:
-                    exact[k] = _gap(pose_a(k), pose_b(k), W)
+            exact, still_lower = _exact_gaps(m, off, cdist, pose_a, pose_b, W)
             for k, g in exact.items():
                 gap[k] = g
             k = min(exact, key=exact.get)
@@ -160,8 +170,8 @@ def travel_sweep(m: BalancerModel, bal_mesh, wheel_meshes) -> dict:
             k = int(np.argmin(gap))
         # steps searched with a window that did not reach (>= window) stay lower bounds
         lower = capped.copy()
-        for kk, g in exact.items():
-            lower[kk] = off is not None and kk not in near and g >= min(cdist[kk] - 2.0 * m.wheel.r_tyre, g_min) + 1.0 - 1e-9
+        for kk in exact:
+            lower[kk] = kk in still_lower
         dd = {"overlap_mm3": vol, "gap_mm": gap, "capped": lower,
               "neighbour_beta": nb, "axis_distance_mm": cdist, "worst_step": k, "searched_steps": sorted(exact)}
         res["timing_s"][f"{name}_search"] = clock() - t0
