@@ -2,14 +2,17 @@
 
 Exit codes: 0 built and every check passed; 1 built but a check failed (outputs
 kept only with --keep-failed) or `check` found invalid files; 2 bad input
-(one line on stderr, nothing written).
+(one line on stderr, nothing written); 130 / 143 interrupted by SIGINT / SIGTERM
+(one line, no temporary folder and no worker process left).
 """
 
 from __future__ import annotations
 
 import argparse
 import shutil
+import signal
 import sys
+import threading
 from pathlib import Path
 
 from .errors import InputError
@@ -17,55 +20,115 @@ from .errors import InputError
 EXIT_OK, EXIT_CHECK_FAILED, EXIT_BAD_INPUT = 0, 1, 2
 
 
+class Interrupted(BaseException):
+    """SIGINT or SIGTERM arrived; the exit code is 128 + the signal number."""
+
+    def __init__(self, signum: int):
+        self.signum = signum
+        super().__init__(signum)
+
+
+def _raise_interrupted(signum, frame):
+    raise Interrupted(signum)
+
+
+def _hold_signals() -> None:
+    """Ignore further SIGINT / SIGTERM while cleaning up (a second Ctrl-C must not leave debris)."""
+    if threading.current_thread() is threading.main_thread():
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+        signal.signal(signal.SIGTERM, signal.SIG_IGN)
+
+
 def _fail_input(exc: Exception) -> int:
     print(f"propulsor: error: {exc}", file=sys.stderr)
     return EXIT_BAD_INPUT
 
 
+def _files_read(params, part_file: Path) -> tuple[Path, ...]:
+    """The part file and every file it names (string parameters ending in `_file`, relative to it)."""
+    import dataclasses
+
+    files = [part_file]
+    for f in dataclasses.fields(params):
+        v = getattr(params, f.name)
+        if f.name.endswith("_file") and isinstance(v, str) and v:
+            p = Path(v)
+            files.append(p if p.is_absolute() else part_file.resolve().parent / p)
+    return tuple(files)
+
+
 def cmd_build(args) -> int:
+    from . import output_folder as of
     from .params import load_params, read_part_file
-    from .parts import get_part_type
+    from .parts import check_size, get_part_type
     from .progress import Progress
 
     progress = Progress(enabled=not args.quiet)
+    part_file = Path(args.part_file)
     try:
-        part_type_name, mapping = read_part_file(args.part_file)
+        out = of.vet_target(Path(args.out) if args.out else Path("output") / part_file.stem,
+                            force=args.force, keep=(part_file,))
+        part_type_name, mapping = read_part_file(part_file)
         part_type = get_part_type(part_type_name)
         params = load_params(part_type.params_cls, mapping)
+        out = of.vet_target(out, force=args.force, keep=_files_read(params, part_file))
+        estimate = check_size(part_type, params, part_file)
     except InputError as exc:
         return _fail_input(exc)
+    if args.dry_run:
+        print(f"{part_type.name}: {part_file} is valid; would build into {out}; "
+              f"size estimate {estimate.text()}")
+        return EXIT_OK
 
-    out = Path(args.out) if args.out else Path("output") / Path(args.part_file).stem
-    out.parent.mkdir(parents=True, exist_ok=True)
-    tmp = out.parent / f".{out.name}.tmp"
-    if tmp.exists():
-        shutil.rmtree(tmp)
-    tmp.mkdir()
+    lock = of.OutputLock(out)
+    tmp = None
+    try:
+        of.prepare_parent(out)
+        try:
+            lock.acquire(wait=not args.no_wait,
+                         on_wait=lambda pid: print(f"propulsor: {out} is being built by process {pid}; waiting",
+                                                   file=sys.stderr, flush=True))
+        except of.Busy as busy:
+            raise InputError("--out", str(out), f"is being built by process {busy.pid} (--no-wait)") from None
+        from .parallel import close_in_workers
+
+        close_in_workers(lock.fd)
+        of.vet_target(out, force=args.force, keep=_files_read(params, part_file))  # as it is now, after the wait
+        for stale in of.clean_stale(out):
+            progress(f"removed {stale.name}, left by a build that was killed")
+        tmp = of.make_temp(out)
+        return _build_into(args, part_type, params, part_file, out, tmp, progress)
+    except InputError as exc:
+        return _fail_input(exc)
+    finally:
+        from .parallel import close_in_workers, kill_workers
+
+        _hold_signals()
+        kill_workers()
+        if tmp is not None and tmp.exists():
+            shutil.rmtree(tmp, ignore_errors=True)
+        close_in_workers(None)
+        lock.release()
+
+
+def _build_into(args, part_type, params, part_file: Path, out: Path, tmp: Path, progress) -> int:
+    """Build into `tmp`, then put it in the place of `out` (the lock is held)."""
+    from . import output_folder as of
     from .parts.writer import OutputWriter
 
-    writer = OutputWriter(tmp, part_type.name, params, progress=progress, source=Path(args.part_file))
+    writer = OutputWriter(tmp, part_type.name, params, progress=progress, source=part_file)
     try:
         part_type.build(params, writer)
         failures = writer.finish()
-    except InputError as exc:
+    finally:
         writer.close()
-        shutil.rmtree(tmp, ignore_errors=True)
-        return _fail_input(exc)
-    except BaseException:
-        writer.close()
-        shutil.rmtree(tmp, ignore_errors=True)
-        raise
-
     if failures and not args.keep_failed:
-        shutil.rmtree(tmp, ignore_errors=True)
         for f in failures:
             print(f"propulsor: check failed: {f}", file=sys.stderr)
         print(f"propulsor: {part_type.name}: {len(failures)} check(s) failed; nothing written "
               f"(use --keep-failed to keep the outputs)", file=sys.stderr)
         return EXIT_CHECK_FAILED
-    if out.exists():
-        shutil.rmtree(out)
-    tmp.rename(out)
+    of.replace(tmp, out)
     if failures:
         for f in failures:
             print(f"propulsor: check failed: {f}", file=sys.stderr)
@@ -82,6 +145,8 @@ def cmd_check(args) -> int:
     if not path.exists():
         return _fail_input(InputError("PATH", str(path), "does not exist"))
     results = check_path(path)
+    if not results:
+        return _fail_input(InputError("PATH", str(path), "holds no STEP, STL, 3MF, DXF or manifest.json to check"))
     n_bad = 0
     for file, checks in results.items():
         bad = [c for c in checks if not c.passed]
@@ -135,7 +200,14 @@ def build_parser() -> argparse.ArgumentParser:
 
     b = sub.add_parser("build", help="build a part from its parameter file")
     b.add_argument("part_file")
-    b.add_argument("--out", help="output folder (default output/<file name>)")
+    b.add_argument("--out", help="output folder (default output/<file name>); replaced only when empty or "
+                   "written by propulsor")
+    b.add_argument("--force", action="store_true", help="replace an --out folder that propulsor did not write "
+                   "(never the current folder, its parents, the home folder or /)")
+    b.add_argument("--no-wait", action="store_true", help="exit 2 instead of waiting when another build "
+                   "holds the lock of --out")
+    b.add_argument("--dry-run", action="store_true", help="validate the part file and estimate the size; "
+                   "build and write nothing")
     b.add_argument("--keep-failed", action="store_true", help="keep the outputs of a part whose checks fail")
     b.add_argument("-q", "--quiet", action="store_true", help="no progress messages")
     b.set_defaults(func=cmd_build)
@@ -156,12 +228,30 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv=None) -> int:
-    parser = build_parser()
+    """Run one command; SIGINT and SIGTERM end it with 130 / 143 and one line."""
+    in_main_thread = threading.current_thread() is threading.main_thread()
+    saved = {}
+    if in_main_thread:
+        for sig in (signal.SIGINT, signal.SIGTERM):
+            saved[sig] = signal.signal(sig, _raise_interrupted)
     try:
-        args = parser.parse_args(argv)
-    except SystemExit as exc:  # argparse uses 2 for usage errors, which matches bad input
-        return int(exc.code or 0)
-    return args.func(args)
+        parser = build_parser()
+        try:
+            args = parser.parse_args(argv)
+        except SystemExit as exc:  # argparse uses 2 for usage errors, which matches bad input
+            return int(exc.code or 0)
+        return args.func(args)
+    except (Interrupted, KeyboardInterrupt) as exc:
+        signum = exc.signum if isinstance(exc, Interrupted) else int(signal.SIGINT)
+        _hold_signals()
+        from .parallel import kill_workers
+
+        kill_workers()
+        print(f"propulsor: interrupted by {signal.Signals(signum).name}; nothing written", file=sys.stderr)
+        return 128 + signum
+    finally:
+        for sig, handler in saved.items():
+            signal.signal(sig, handler)
 
 
 if __name__ == "__main__":

@@ -8,6 +8,10 @@ check failed.
 from __future__ import annotations
 
 
+#: longest value quoted in a message (the message stays one readable line)
+MAX_VALUE_CHARS = 120
+
+
 class InputError(ValueError):
     """Bad input: one line naming the parameter, its value and the limit."""
 
@@ -15,7 +19,10 @@ class InputError(ValueError):
         self.parameter = parameter
         self.value = value
         self.limit = limit
-        msg = f"{parameter} = {value!r}: {limit}"
+        shown = repr(value)
+        if len(shown) > MAX_VALUE_CHARS:
+            shown = shown[:MAX_VALUE_CHARS] + "…"
+        msg = f"{parameter} = {shown}: {limit}"
         if hint:
             msg += f" ({hint})"
         super().__init__(msg)

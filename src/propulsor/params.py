@@ -17,12 +17,24 @@ from typing import Any, get_type_hints
 
 from .errors import InputError
 
+#: largest part file read (a part file is a few kB of TOML)
+MAX_PART_FILE_BYTES = 1 << 20
+#: longest string parameter (file names, law names)
+MAX_STRING_CHARS = 4096
+#: longest list parameter (wheel numbers)
+MAX_LIST_ITEMS = 64
+#: [meta] keys of a part file and their types
+META_KEYS = {"title": "a string", "notes": "a string or a list of strings",
+             "expected_failures": "a list of check names (strings)"}
+
 
 def param(default, unit: str = "", doc: str = "", *, min=None, max=None, min_exclusive=False,
-          max_exclusive=False, choices=None, integer=False):
-    """A dataclass field for a part parameter (unit, description, limits)."""
+          max_exclusive=False, choices=None, integer=False, why: str = ""):
+    """A dataclass field for a part parameter (unit, description, limits).
+
+    `why`: the reason of the upper limit (what real part needs at most), shown by `propulsor params`."""
     meta = dict(unit=unit, doc=doc, min=min, max=max, min_exclusive=min_exclusive,
-                max_exclusive=max_exclusive, choices=choices, integer=integer)
+                max_exclusive=max_exclusive, choices=choices, integer=integer, why=why)
     if isinstance(default, (list, dict)):
         return dataclasses.field(default_factory=lambda d=default: type(d)(d), metadata=meta)
     return dataclasses.field(default=default, metadata=meta)
@@ -37,19 +49,35 @@ def _limit_text(meta) -> str:
     return " and ".join(parts)
 
 
-def _check_number(name: str, value, meta, unit: str):
+def _check_number(name: str, value, meta, unit: str, integer: bool = False):
     if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise InputError(name, value, "must be a number" + (f" in {unit}" if unit else ""))
+        raise InputError(name, value, ("must be a whole number" if integer else "must be a number")
+                         + (f" in {unit}" if unit else ""))
     if not math.isfinite(float(value)):
         raise InputError(name, value, "must be a finite number")
-    if meta.get("integer") and float(value) != int(value):
-        raise InputError(name, value, "must be a whole number")
+    if (integer or meta.get("integer")) and isinstance(value, float):
+        raise InputError(name, value, "must be a whole number, written without a decimal point"
+                         if float(value).is_integer() else "must be a whole number")
     lo, hi = meta.get("min"), meta.get("max")
     u = f" {unit}" if unit else ""
     if lo is not None and (value < lo or (meta["min_exclusive"] and value == lo)):
         raise InputError(name, value, f"must be {'>' if meta['min_exclusive'] else '>='} {lo}{u}")
     if hi is not None and (value > hi or (meta["max_exclusive"] and value == hi)):
         raise InputError(name, value, f"must be {'<' if meta['max_exclusive'] else '<='} {hi}{u}")
+
+
+def _check_type(name: str, value, typ) -> None:
+    """The TOML value has the field's type (bool is not a number, a float is not an int)."""
+    if typ is bool and not isinstance(value, bool):
+        raise InputError(name, value, "must be true or false")
+    if typ is int and (isinstance(value, bool) or not isinstance(value, int)):
+        raise InputError(name, value, "must be a whole number")
+    if typ is float and (isinstance(value, bool) or not isinstance(value, (int, float))):
+        raise InputError(name, value, "must be a number")
+    if typ is str and not isinstance(value, str):
+        raise InputError(name, value, "must be a string")
+    if typ is list and not isinstance(value, list):
+        raise InputError(name, value, "must be a list")
 
 
 def load_params(cls, mapping: dict[str, Any]):
@@ -65,17 +93,22 @@ def load_params(cls, mapping: dict[str, Any]):
         typ = hints[name]
         unit = meta.get("unit", "")
         if meta.get("choices") is not None:
+            _check_type(name, value, typ)
             if value not in meta["choices"]:
                 raise InputError(name, value, f"must be one of {', '.join(map(str, meta['choices']))}")
         elif typ is bool:
-            if not isinstance(value, bool):
-                raise InputError(name, value, "must be true or false")
+            _check_type(name, value, typ)
         elif typ in (int, float):
-            _check_number(name, value, meta, unit)
+            _check_number(name, value, meta, unit, integer=typ is int)
             value = int(value) if typ is int else float(value)
         elif typ is str:
-            if not isinstance(value, str):
-                raise InputError(name, value, "must be a string")
+            _check_type(name, value, typ)
+            if len(value) > MAX_STRING_CHARS:
+                raise InputError(name, value[:40] + "…", f"must be at most {MAX_STRING_CHARS} characters")
+        elif typ is list:
+            _check_type(name, value, typ)
+            if len(value) > MAX_LIST_ITEMS:
+                raise InputError(name, f"[{len(value)} items]", f"must have at most {MAX_LIST_ITEMS} items")
         kwargs[name] = value
     obj = cls(**kwargs)
     # defaults are checked too (a subclass may narrow limits)
@@ -84,7 +117,7 @@ def load_params(cls, mapping: dict[str, Any]):
             continue
         v = getattr(obj, name)
         if hints[name] in (int, float) and v is not None and f.metadata.get("choices") is None:
-            _check_number(name, v, f.metadata, f.metadata.get("unit", ""))
+            _check_number(name, v, f.metadata, f.metadata.get("unit", ""), integer=hints[name] is int)
     validate = getattr(obj, "validate", None)
     if callable(validate):
         validate()
@@ -103,27 +136,73 @@ def describe_params(cls) -> list[dict]:
             limits = "one of " + ", ".join(map(str, m["choices"]))
         if m.get("integer"):
             limits = ("whole, " + limits) if limits else "whole"
-        rows.append(dict(name=f.name, unit=m.get("unit", ""), default=default, limits=limits, doc=m.get("doc", "")))
+        doc = m.get("doc", "")
+        if m.get("why"):
+            doc += f" [upper limit: {m['why']}]"
+        rows.append(dict(name=f.name, unit=m.get("unit", ""), default=default, limits=limits, doc=doc))
     return rows
+
+
+def _is_str_list(v) -> bool:
+    return isinstance(v, list) and all(isinstance(x, str) for x in v)
+
+
+def validate_meta(meta) -> dict[str, Any]:
+    """The `[meta]` table of a part file, checked: title (string), notes (string or list of strings),
+    expected_failures (list of strings); anything else is an InputError."""
+    if not isinstance(meta, dict):
+        raise InputError("meta", meta, "must be a table: [meta] with title, notes, expected_failures")
+    for key, value in meta.items():
+        if key not in META_KEYS:
+            raise InputError(f"meta.{key}", value, f"unknown [meta] key (known: {', '.join(META_KEYS)})")
+        ok = {"title": isinstance(value, str),
+              "notes": isinstance(value, str) or _is_str_list(value),
+              "expected_failures": _is_str_list(value)}[key]
+        if not ok:
+            raise InputError(f"meta.{key}", value, f"must be {META_KEYS[key]}")
+    return meta
+
+
+def read_part_toml(path: str | Path) -> dict[str, Any]:
+    """The TOML table of a part file, read as bytes and decoded as UTF-8 (InputError otherwise)."""
+    path = Path(path)
+    try:
+        if not path.is_file():
+            raise InputError("part file", str(path), "does not exist")
+        size = path.stat().st_size
+        if size > MAX_PART_FILE_BYTES:
+            raise InputError("part file", str(path), f"is {size} bytes; a part file is at most {MAX_PART_FILE_BYTES}")
+        raw = path.read_bytes()
+    except OSError as exc:
+        raise InputError("part file", str(path), f"cannot be read: {exc.strerror or exc}") from None
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise InputError("part file", str(path), f"is not UTF-8 text (byte 0x{raw[exc.start]:02x} at offset "
+                         f"{exc.start}); a part file is TOML") from None
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError("part file", str(path), f"is not valid TOML: {exc}") from None
+
+
+def read_part_meta(path: str | Path) -> dict[str, Any]:
+    """The validated `[meta]` table of a part file ({} when it has none)."""
+    return validate_meta(read_part_toml(path).get("meta", {}))
 
 
 def read_part_file(path: str | Path) -> tuple[str, dict[str, Any]]:
     """Read a part TOML file: returns (part type, parameter mapping).
 
     The file names its part type with `type = "..."`; every other top-level key
-    is a parameter.  An optional `[meta]` table (title, notes) is not a parameter.
+    is a parameter.  An optional `[meta]` table (title, notes, expected_failures) is not a
+    parameter; it is validated here.
     """
-    path = Path(path)
-    if not path.is_file():
-        raise InputError("part file", str(path), "does not exist")
-    try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError("part file", str(path), f"is not valid TOML: {exc}") from None
+    data = read_part_toml(path)
     part_type = data.pop("type", None)
     if not isinstance(part_type, str):
         raise InputError("type", part_type, "the part file must name its part type, e.g. type = \"planetary_final_drive\"")
-    data.pop("meta", None)
+    validate_meta(data.pop("meta", {}))
     return part_type, data
 
 

@@ -91,3 +91,7 @@ SMOOTHING_DELTA_RTOL = 1e-6
 #: largest tessellation chord error SPEC §9 allows (STL / 3MF); the mesher aims at
 #: CHORD_TOL_MM and refines when OCCT reports a larger achieved deflection
 MESH_CHORD_LIMIT_MM = 0.01
+
+# --- build size (propulsor build --dry-run, parts.check_size) --------------------------------
+#: longest build accepted (s on the reference machine, 2 cores): past it the size estimate refuses
+BUILD_SECONDS_MAX = 600.0

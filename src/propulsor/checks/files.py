@@ -29,7 +29,8 @@ MANIFEST = "manifest.json"
 
 
 def _manifest_entry(file: Path) -> dict:
-    """The manifest entry recorded for `file` (nearest manifest.json above it)."""
+    """The manifest entry recorded for `file` (nearest manifest.json above it); {} when there is none
+    or the manifest is malformed (the manifest's own check reports that)."""
     for folder in [file.parent, *file.parent.parents]:
         m = folder / MANIFEST
         if m.is_file():
@@ -37,15 +38,26 @@ def _manifest_entry(file: Path) -> dict:
                 data = json.loads(m.read_text(encoding="utf-8"))
             except (OSError, ValueError):
                 return {}
+            if not isinstance(data, dict) or not isinstance(data.get("files"), list):
+                return {}
             rel = file.relative_to(folder).as_posix()
-            entry = next((dict(e) for e in data.get("files", []) if e.get("path") == rel), {})
+            entry = next((dict(e) for e in data["files"] if isinstance(e, dict) and e.get("path") == rel), {})
+            entry = {k: v for k, v in entry.items() if k not in _NUMERIC_KEYS or _is_number(v)}
             # the part writer records solid volumes as derived '<stem>_volume_mm3'
             derived = data.get("derived", {})
             key = f"{file.stem}_volume_mm3"
-            if "volume_mm3" not in entry and isinstance(derived.get(key), (int, float)):
+            if "volume_mm3" not in entry and isinstance(derived, dict) and _is_number(derived.get(key)):
                 entry["volume_mm3"] = derived[key]
             return entry
     return {}
+
+
+#: manifest entry keys that must be numbers to be used
+_NUMERIC_KEYS = ("volume_mm3", "genus", "bodies", "bytes")
+
+
+def _is_number(v) -> bool:
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
 
 
 def check_step_file(path: Path) -> list[Check]:
@@ -113,6 +125,29 @@ def check_dxf_file(path: Path) -> list[Check]:
     return out
 
 
+def _manifest_structure(data, folder: Path) -> tuple[list[dict], list[str]]:
+    """The well-formed file entries of a manifest and what is wrong with the rest."""
+    problems = []
+    if not isinstance(data, dict):
+        return [], [f"is a JSON {type(data).__name__}, not an object"]
+    for key, typ in (("part", str), ("files", list), ("checks", list), ("expected_failures", list)):
+        if key not in data and key in ("expected_failures",):
+            continue
+        if not isinstance(data.get(key), typ):
+            problems.append(f"'{key}' is missing or not a {typ.__name__}")
+    entries = []
+    root = folder.resolve()
+    for k, e in enumerate(data.get("files") if isinstance(data.get("files"), list) else []):
+        path = e.get("path") if isinstance(e, dict) else None
+        if not isinstance(path, str) or not path:
+            problems.append(f"files[{k}] has no 'path'")
+        elif Path(path).is_absolute() or root not in (root / path).resolve().parents:
+            problems.append(f"files[{k}] path {path!r} leaves the folder")
+        else:
+            entries.append(e)
+    return entries, problems
+
+
 def check_manifest_file(path: Path) -> list[Check]:
     from ..export.manifest import file_entries, sha256_of
 
@@ -120,9 +155,11 @@ def check_manifest_file(path: Path) -> list[Check]:
     folder = path.parent
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
-        files = data["files"]
-    except Exception as exc:  # noqa: BLE001
+    except (OSError, ValueError) as exc:
         return [Check.flag(f"{name}: parses", False, f"{type(exc).__name__}: {exc}")]
+    files, problems = _manifest_structure(data, folder)
+    if problems:
+        return [Check.flag(f"{name}: parses", False, "; ".join(problems))]
     out = [Check.flag(f"{name}: parses", True, f"{len(files)} files listed")]
     missing, wrong_size, wrong_hash = [], [], []
     for e in files:
@@ -140,8 +177,9 @@ def check_manifest_file(path: Path) -> list[Check]:
     listed = {e["path"] for e in files}
     unlisted = [e["path"] for e in file_entries(folder) if e["path"] not in listed]
     out.append(Check.equals(f"{name}: unlisted files", len(unlisted), 0, "", ", ".join(unlisted) or "every file listed"))
-    documented = set(data.get("expected_failures", []))
-    failed = [c.get("name") for c in data.get("checks", []) if not c.get("passed")]
+    documented = {f for f in data.get("expected_failures", []) if isinstance(f, str)}
+    failed = [c.get("name") if isinstance(c, dict) else repr(c) for c in data["checks"]
+              if not (isinstance(c, dict) and c.get("passed") is True)]
     unexpected = [f for f in failed if f not in documented]
     known = [f for f in failed if f in documented]
     msg = "; ".join(map(str, unexpected)) or "all recorded checks passed"
@@ -161,16 +199,21 @@ CHECKERS = {
 
 
 def check_file(path: str | Path) -> list[Check]:
-    """Checks of one file (empty list for formats without checks)."""
+    """Checks of one file (empty list for formats without checks).  Never raises: a checker that
+    fails on a malformed file makes that file invalid, with the reason."""
     p = Path(path)
-    if p.name == MANIFEST:
-        return check_manifest_file(p)
-    fn = CHECKERS.get(p.suffix.lower())
-    return fn(p) if fn else []
+    fn = check_manifest_file if p.name == MANIFEST else CHECKERS.get(p.suffix.lower())
+    if fn is None:
+        return []
+    try:
+        return fn(p)
+    except Exception as exc:  # noqa: BLE001 - whatever breaks on a malformed file is a failed check
+        return [Check.flag(f"{p.name}: readable", False, f"{type(exc).__name__}: {exc}")]
 
 
 def check_path(path: str | Path) -> dict[str, list[Check]]:
-    """Check a file or every checkable file under a folder: {path: checks}."""
+    """Check a file or every checkable file under a folder: {path: checks}; {} when there is
+    nothing to check (no STEP, STL, 3MF, DXF or manifest)."""
     p = Path(path)
     if not p.exists():
         return {str(p): [Check.flag(f"{p}: exists", False, "no such file or folder")]}
@@ -178,7 +221,7 @@ def check_path(path: str | Path) -> dict[str, list[Check]]:
     out: dict[str, list[Check]] = {}
     for f in files:
         cks = check_file(f)
-        if cks or p.is_file():
+        if cks:
             out[str(f)] = cks
     return out
 

@@ -105,6 +105,22 @@ def write_3mf(mesh: trimesh.Trimesh, path: str | Path, name: str = "") -> Path:
     return path
 
 
+def write_3mf_objects(objects, path: str | Path) -> Path:
+    """One 3MF holding several named objects [(name, mesh)] in millimetres, each placed where its
+    vertices are (a print plate); zip time stamps and UUIDs fixed (deterministic)."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    scene = trimesh.Scene()
+    for name, mesh in objects:
+        m = trimesh.Trimesh(vertices=np.asarray(mesh.vertices), faces=np.asarray(mesh.faces), process=False,
+                            validate=False)
+        m.units = "millimeters"
+        scene.add_geometry(m, geom_name=name, node_name=name)
+    scene.units = "millimeters"
+    path.write_bytes(_deterministic_zip(trimesh.exchange.threemf.export_3MF(scene)))
+    return path
+
+
 def load_mesh(path: str | Path) -> trimesh.Trimesh:
     """Load STL / 3MF into one Trimesh with merged vertices (no repair)."""
     path = Path(path)

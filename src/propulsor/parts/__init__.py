@@ -11,8 +11,10 @@ from __future__ import annotations
 
 import importlib
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Callable
 
+from .. import policy
 from ..errors import InputError
 
 #: part type name -> module (relative to this package)
@@ -26,12 +28,42 @@ _MODULES = {
 
 
 @dataclass(frozen=True)
+class SizeEstimate:
+    """What a build will cost, estimated from the parameters before any work.
+
+    `seconds`: the build's time on the reference machine (2 cores), from a cost model calibrated on
+    the part files in parts/; `detail`: what the model counts (teeth, samples, sweep steps)."""
+
+    seconds: float
+    detail: str
+
+    def text(self) -> str:
+        return f"≈ {self.seconds:.3g} s ({self.detail})"
+
+
+@dataclass(frozen=True)
 class PartType:
     name: str
     summary: str
     params_cls: type
     build: Callable  # build(params, writer) -> None; writer is an OutputWriter
     design: Callable | None = None  # design(params, ...) -> the part's frozen design
+    #: estimate(params, part_file) -> SizeEstimate; may read the files the part file names (InputError)
+    estimate: Callable | None = None
+
+
+def check_size(part_type: PartType, params, part_file: Path | None = None) -> SizeEstimate:
+    """The build's size estimate; InputError when it cannot finish within policy.BUILD_SECONDS_MAX."""
+    from .size import ESTIMATES
+
+    estimate = part_type.estimate or ESTIMATES.get(part_type.name)
+    if estimate is None:
+        return SizeEstimate(0.0, "no estimate for this part type")
+    est = estimate(params, part_file)
+    if not est.seconds <= policy.BUILD_SECONDS_MAX:
+        raise InputError("size estimate", f"{est.seconds:.3g} s", f"must be <= {policy.BUILD_SECONDS_MAX:g} s on "
+                         f"this machine ({est.detail}); reduce the counts named")
+    return est
 
 
 def part_type_names() -> list[str]:

@@ -8,9 +8,12 @@ and runs the shared checks on them (B-rep, STEP round trip, mesh), then the repo
 manifest (docs/architecture.md, "The data flow of one build").  ``built`` is a dict in which a step leaves
 what a later step needs (the solids, a proof running in a forked worker).
 
-The design is computed once per parameter values: the parameters' ``validate()`` (run when
-they are loaded) asks :func:`design_of`, and the build asks again and gets the same object
-(kept beside the parameter object, not in it: the parameters stay plain values).
+The design is computed once per parameter values (:func:`design_of`): where validating the
+parameters computes it (final drive, road wheel, the balancer's suspension, a cam with a given law)
+the build gets that same object; where the design is a long generation or search (non-circular
+teeth, the cam law search) ``validate()`` checks the inputs only, so that the build's size estimate
+bounds the work before it starts, and the build computes the design.  The designs are kept beside
+the parameter objects, not in them: the parameters stay plain values.
 """
 
 from __future__ import annotations

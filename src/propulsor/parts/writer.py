@@ -17,14 +17,13 @@ A part module computes; it hands results to the writer:
 from __future__ import annotations
 
 import dataclasses
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from ..check import Check
 from ..parallel import Done, fork_pool
-from ..params import params_to_dict
+from ..params import params_to_dict, read_part_meta
 
 
 #: forked workers writing and checking solids (the machine has 2 cores)
@@ -86,7 +85,7 @@ class OutputWriter:
         self.title = part
         self.meta: dict[str, Any] = {}
         if source is not None and Path(source).is_file():
-            self.meta = tomllib.loads(Path(source).read_text(encoding="utf-8")).get("meta", {})
+            self.meta = read_part_meta(source)
             self.title = self.meta.get("title", part)
         self.expected_failures = set(self.meta.get("expected_failures", []))
         self.derived: dict[str, Any] = {}

@@ -41,7 +41,7 @@ def compare(p: NoncircularPairParams, d: Design, prog=lambda s: None):
     alt = "sectors" if d.method == "generated" else "generated"
     try:
         q = dataclasses.replace(p, method=alt, module_mm=d.m, center_distance_mm=0.0)
-        q.check_inputs()
+        q.validate()
         other = design_sectors(q, prog) if alt == "sectors" else design_generated(q, prog)
         return other, prove(other, p.proof_phases_per_tooth, 1, prog), ""
     except InputError as exc:

@@ -1,0 +1,85 @@
+"""Size estimates of the builds: what a part file will cost, from its parameters, before any work.
+
+Each model counts what drives the build's time — teeth (outline samples, tessellation), motion-proof
+steps times the outline size each step handles, tessellated length for a fixed chord — and weighs
+them with coefficients measured on this machine (2 cores) by building the part files of parts/ and
+variants with the counts doubled or quadrupled (CPU seconds of the build and its workers; a build
+keeps both cores busy, so its wall time is CPU / `_CORES_USED`).  They are meant to refuse builds
+that cannot finish in minutes (policy.BUILD_SECONDS_MAX), not to predict a build to the second.
+
+Calibration (CPU s; default part file → variant):
+final drive 28.1 → 39.2 with the sweep density doubled, → 43.8 with every tooth count doubled;
+non-circular pair (seed 002) 25.2 → 26.5 with the proof phases doubled, → 42.6 with the teeth doubled;
+cam mover (exponential law) 18.7 → 32.7 with 4 × the sweep steps.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+from . import SizeEstimate
+
+#: a build keeps about this many cores busy (main process and its forked workers)
+_CORES_USED = 1.8
+
+
+def _wall(cpu_seconds: float, detail: str) -> SizeEstimate:
+    return SizeEstimate(cpu_seconds / _CORES_USED, detail)
+
+
+def final_drive(p, part_file: Path | None = None) -> SizeEstimate:
+    """Solids ∝ teeth of sun + planet + ring; sweep ∝ steps × meshes × √(teeth / 92)."""
+    teeth = p.z_sun + p.z_planet + p.z_ring
+    steps = round(360.0 * p.sweep_steps_per_deg)
+    meshes = 2 * p.n_planets
+    cpu = 6.0 + 0.12 * teeth + 0.00257 * steps * meshes * math.sqrt(teeth / 92.0)
+    return _wall(cpu, f"{teeth} teeth, sweep {steps} steps × {meshes} meshes")
+
+
+def noncircular_pair(p, part_file: Path | None = None) -> SizeEstimate:
+    """Design, outlines and solids ∝ teeth of both gears; proof ∝ phases (the other method's proof
+    when compared: one leg, a quarter of them)."""
+    z_H = p.driven_teeth
+    teeth = z_H + z_H // p.driver_turns
+    phases = z_H * p.proof_phases_per_tooth
+    cpu = 6.5 + 0.174 * teeth * (1.25 if p.compare_methods else 1.0) + 0.004 * phases * teeth / 100.0
+    return _wall(cpu, f"{teeth} teeth, proof {phases} phases")
+
+
+def cam_mover(p, part_file: Path | None = None) -> SizeEstimate:
+    """Fixed 14 CPU s (law, outlines, six solids) scaled with the tessellated length for the fixed
+    chord (∝ √ size), 6.5 ms per sweep step, 3 s more for the law search."""
+    size = max(1.0, (p.R0_mm + p.roller_radius_mm + p.stand_C_mm) / 320.0)
+    cpu = 14.0 * math.sqrt(size) + 0.0065 * p.sweep_steps * math.sqrt(size) + (3.2 if p.law == "searched" else 0.0)
+    return _wall(cpu, f"{p.sweep_steps} sweep steps, hub height {p.R0_mm + p.roller_radius_mm + p.stand_C_mm:g} mm")
+
+
+def road_wheel(p, part_file: Path | None = None) -> SizeEstimate:
+    """Revolved solids: tessellated length ∝ √ radius for the fixed chord, times the web holes."""
+    size = max(1.0, p.tyre_radius_mm / 315.0)
+    holes = p.rows * p.lightening_holes
+    cpu = (4.0 + 1.0 * p.rows + 0.4 * holes) * math.sqrt(size) * 1.4
+    return _wall(cpu, f"{p.rows} row(s), {holes} lightening holes, R = {p.tyre_radius_mm:g} mm")
+
+
+def balancer(p, part_file: Path | None = None) -> SizeEstimate:
+    """Resolves everything the build needs (the road wheel file it names included: InputError),
+    then: solids and sweep meshes ∝ 1/√chord, travel sweep ∝ steps."""
+    from .balancer import resolve
+    from .pipeline import design_of
+
+    tor = design_of(p, resolve, part_file).tor  # the build gets this same design
+    steps = int(math.ceil(math.degrees(tor.beta_m - tor.beta0) * p.sweep_steps_per_deg)) + 1
+    chord = math.sqrt(0.1 / p.sweep_chord_mm)
+    cpu = 40.0 + 0.25 * steps * chord + 0.01 * p.n_stations
+    return _wall(cpu, f"travel sweep {steps} steps, sweep chord {p.sweep_chord_mm:g} mm")
+
+
+ESTIMATES = {
+    "planetary_final_drive": final_drive,
+    "noncircular_pair": noncircular_pair,
+    "cam_mover": cam_mover,
+    "road_wheel": road_wheel,
+    "balancer": balancer,
+}

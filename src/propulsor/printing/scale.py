@@ -1,0 +1,83 @@
+"""The scale of a print kit: the largest standard scale at which every piece fits the bed.
+
+Scales are reductions 1:S with S from the model-making series below.  A piece fits when its
+laid-flat extents (x, y, z), divided by S, fit the bed in x and y (either way round) and the
+printable height in z.  The kit then refuses scales that make teeth or walls unprintable
+(:func:`check_printable`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..errors import InputError
+
+#: reductions 1:S of model making (1:1, 1:1.5, 1:2, 1:2.5, 1:3, 1:4, 1:5 ...)
+STANDARD_SCALES = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0, 12.0, 15.0, 20.0, 25.0, 30.0, 40.0, 50.0)
+
+
+@dataclass(frozen=True)
+class ScaleChoice:
+    """The reduction S (print = real / S) and why it was chosen."""
+
+    S: float
+    reason: str
+
+    @property
+    def label(self) -> str:
+        return f"1:{self.S:g}"
+
+
+def fits(extents, bed) -> bool:
+    """Laid-flat extents (x, y, z) fit the bed (x, y, z), turned by 90° about z if needed."""
+    x, y, z = extents
+    bx, by, bz = bed
+    return z <= bz and ((x <= bx and y <= by) or (y <= bx and x <= by))
+
+
+def choose_scale(pieces: dict[str, tuple[float, float, float]], bed: tuple[float, float, float],
+                 requested: float | None = None) -> ScaleChoice:
+    """The scale for `pieces` {name: laid-flat extents in mm at full size} on `bed` (mm).
+
+    `requested`: a reduction S given by the user (checked to fit); None: the largest standard
+    scale (smallest S) at which every piece fits, with the piece that decided it named."""
+    def too_big(S):
+        return [n for n, e in pieces.items() if not fits([v / S for v in e], bed)]
+
+    if requested is not None:
+        bad = too_big(requested)
+        if bad:
+            e = pieces[bad[0]]
+            raise InputError("--scale", f"1:{requested:g}", f"{bad[0]} ({e[0] / requested:.1f} × "
+                             f"{e[1] / requested:.1f} × {e[2] / requested:.1f} mm) does not fit the "
+                             f"{bed[0]:g} × {bed[1]:g} × {bed[2]:g} mm bed")
+        return ScaleChoice(requested, "as requested")
+    for S in STANDARD_SCALES:
+        if not too_big(S):
+            if S == 1.0:
+                return ScaleChoice(S, "every piece fits the bed at full size")
+            # the piece that needed the reduction: the one that does not fit at the next larger scale
+            prev = STANDARD_SCALES[STANDARD_SCALES.index(S) - 1]
+            name = too_big(prev)[0]
+            e = pieces[name]
+            return ScaleChoice(S, f"{name} is {e[0]:.1f} × {e[1]:.1f} × {e[2]:.1f} mm; at 1:{prev:g} it does "
+                                  f"not fit the {bed[0]:g} × {bed[1]:g} × {bed[2]:g} mm bed, at 1:{S:g} it does")
+    name = too_big(STANDARD_SCALES[-1])[0]
+    raise InputError("--scale", "auto", f"{name} does not fit the bed even at 1:{STANDARD_SCALES[-1]:g}; "
+                     "choose a larger printer")
+
+
+def check_printable(S: float, module_mm: float | None, min_module_mm: float,
+                    thinnest: dict[str, float] | None = None, min_feature_mm: float = 0.8) -> None:
+    """InputError when the scaled module or a scaled feature falls below what the printer holds.
+
+    `thinnest`: {feature name: its full-size thickness in mm} (tip lands, webs, walls)."""
+    if module_mm is not None and module_mm / S < min_module_mm:
+        largest = module_mm / min_module_mm
+        raise InputError("--scale", f"1:{S:g}", f"the scaled module {module_mm / S:.3g} mm is below the printable "
+                         f"{min_module_mm:g} mm; print at 1:{largest:.3g} or larger (a larger printer), or "
+                         f"lower min_module_mm")
+    for name, t in (thinnest or {}).items():
+        if t / S < min_feature_mm:
+            raise InputError("--scale", f"1:{S:g}", f"{name} is {t / S:.3g} mm at this scale, below two line "
+                             f"widths ({min_feature_mm:g} mm); print larger or thicken it")

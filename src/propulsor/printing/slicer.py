@@ -1,0 +1,81 @@
+"""PrusaSlicer as the judge of a plate: does it slice, is every object manifold and on the bed.
+
+Runs the command-line ``prusa-slicer`` (Debian package ``prusa-slicer``) when installed:
+``--export-gcode --dont-arrange --bed-shape ...`` must exit 0 and write G-code, and
+``--info`` must report ``manifold = yes`` for every object.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from dataclasses import dataclass, field
+from pathlib import Path
+
+#: PrusaSlicer may take this long for one plate (s)
+SLICE_TIMEOUT_S = 600
+
+
+def slicer_path() -> str | None:
+    return shutil.which("prusa-slicer")
+
+
+@dataclass
+class SliceResult:
+    ok: bool
+    message: str
+    gcode_bytes: int = 0
+    objects: list[dict] = field(default_factory=list)  # --info per object: name, manifold, size_*
+
+    @property
+    def all_manifold(self) -> bool:
+        return bool(self.objects) and all(o.get("manifold") == "yes" for o in self.objects)
+
+    def off_bed(self, bed_x: float, bed_y: float, tol: float = 1e-3) -> list[str]:
+        """Objects (by their place in the file, 1-based) not lying on the bed inside its outline."""
+        bad = []
+        for k, o in enumerate(self.objects, 1):
+            try:
+                lo = [float(o[f"min_{a}"]) for a in "xyz"]
+                hi = [float(o[f"max_{a}"]) for a in "xy"]
+            except (KeyError, ValueError):
+                bad.append(f"object {k}: no extents")
+                continue
+            if lo[0] < -tol or lo[1] < -tol or hi[0] > bed_x + tol or hi[1] > bed_y + tol or abs(lo[2]) > tol:
+                bad.append(f"object {k}")
+        return bad
+
+
+def _run(args: list[str]) -> subprocess.CompletedProcess:
+    return subprocess.run(args, capture_output=True, text=True, timeout=SLICE_TIMEOUT_S,
+                          env={"PATH": "/usr/bin:/bin", "HOME": "/tmp", "LC_ALL": "C"})
+
+
+def info(path: Path) -> list[dict]:
+    """`prusa-slicer --info`: one dict per object section ([name] then key = value lines)."""
+    r = _run([slicer_path() or "prusa-slicer", "--info", str(path)])
+    objects, cur = [], None
+    for line in r.stdout.splitlines():
+        m = re.match(r"^\[(.+)\]$", line.strip())
+        if m:
+            cur = {"name": m.group(1)}
+            objects.append(cur)
+        elif cur is not None and "=" in line:
+            k, v = (s.strip() for s in line.split("=", 1))
+            cur[k] = v
+    return objects
+
+
+def slice_plate(path: Path, bed_shape: str, gcode: Path, layer_mm: float = 0.2, nozzle_mm: float = 0.4) -> SliceResult:
+    """Slice one plate with the printer's bed; the G-code goes to `gcode`."""
+    exe = slicer_path()
+    if exe is None:
+        return SliceResult(False, "prusa-slicer is not installed (Debian package prusa-slicer)")
+    r = _run([exe, "--export-gcode", "--dont-arrange", "--bed-shape", bed_shape, "--layer-height", f"{layer_mm:g}",
+              "--nozzle-diameter", f"{nozzle_mm:g}", "--output", str(gcode), str(path)])
+    errors = [line for line in (r.stderr + r.stdout).splitlines()
+              if "error" in line.lower() and "[trace]" not in line and "[debug]" not in line]
+    ok = r.returncode == 0 and gcode.is_file() and gcode.stat().st_size > 0
+    msg = "sliced" if ok else f"exit {r.returncode}: " + ("; ".join(errors[-3:]) or r.stderr.strip()[-300:])
+    return SliceResult(ok, msg, gcode.stat().st_size if gcode.is_file() else 0, info(path))
