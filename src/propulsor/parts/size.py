@@ -10,7 +10,8 @@ that cannot finish in minutes (policy.BUILD_SECONDS_MAX), not to predict a build
 Calibration (CPU s; default part file → variant):
 final drive 28.1 → 39.2 with the sweep density doubled, → 43.8 with every tooth count doubled;
 non-circular pair (seed 002) 25.2 → 26.5 with the proof phases doubled, → 42.6 with the teeth doubled;
-cam mover (exponential law) 18.7 → 32.7 with 4 × the sweep steps.
+cam mover (exponential law) 18.7 → 32.7 with 4 × the sweep steps; balancer 92.7 → 161.3 with 4 × the
+travel steps, → 143.5 with the sweep chord a quarter; road wheel 17.8.
 """
 
 from __future__ import annotations
@@ -65,14 +66,14 @@ def road_wheel(p, part_file: Path | None = None) -> SizeEstimate:
 
 def balancer(p, part_file: Path | None = None) -> SizeEstimate:
     """Resolves everything the build needs (the road wheel file it names included: InputError),
-    then: solids and sweep meshes ∝ 1/√chord, travel sweep ∝ steps."""
+    then: solids and arm stations fixed, travel sweep ∝ steps × (0.1 mm / chord)^0.84 (the sweep meshes'
+    size for the chord, measured)."""
     from .balancer import resolve
     from .pipeline import design_of
 
     tor = design_of(p, resolve, part_file).tor  # the build gets this same design
     steps = int(math.ceil(math.degrees(tor.beta_m - tor.beta0) * p.sweep_steps_per_deg)) + 1
-    chord = math.sqrt(0.1 / p.sweep_chord_mm)
-    cpu = 40.0 + 0.25 * steps * chord + 0.01 * p.n_stations
+    cpu = 66.0 + 0.01 * p.n_stations + 0.236 * steps * (0.1 / p.sweep_chord_mm) ** 0.84
     return _wall(cpu, f"travel sweep {steps} steps, sweep chord {p.sweep_chord_mm:g} mm")
 
 
