@@ -206,10 +206,10 @@ def test_hollow_axles_at_the_fillets():
         assert b["tau_nom"] == pytest.approx(k * a["tau_nom"], rel=1e-12)
         assert b["sigma_vM_peak"] == pytest.approx(k * a["sigma_vM_peak"], rel=1e-12)
     # hand check of the hollow section modulus at the upper fillet (elastic case)
-    from propulsor.laws.balancer_beam import _moment_about
+    from propulsor.laws.balancer_beam import moment_about
 
     c = BalancerAnalysis(DESIGN, g).cases[0]
-    M = _moment_about(c.loads, (0.0, 0.0, -g.b / 2.0))
+    M = moment_about(c.loads, (0.0, 0.0, -g.b / 2.0))
     W = math.pi * (110.0**4 - 55.0**4) / (32.0 * 110.0)
     assert hollow[0]["sigma_nom"] == pytest.approx(math.hypot(M[0], M[1]) / W, rel=1e-12)
     assert hollow[0]["tau_nom"] == pytest.approx(abs(M[2]) / (2.0 * W), rel=1e-12)

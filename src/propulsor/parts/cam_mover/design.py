@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ... import policy
-from ...errors import InputError
+from ...errors import InputError, input_names
 from ...geometry import cam_outlines as co
 from ...geometry.profile import Profile
 from ...laws.cam_design import SearchGrid, evaluate, search_design
@@ -147,7 +147,8 @@ def plan(p: CamMoverParams) -> Plan:
     plate_prof = co.cam_plate_profile(rim_radius, p.axle_diameter_mm, holes)
     # leg and shoe
     socket_end = p.leg_mount_mm + p.socket_depth_mm
-    shoe = co.shoe_profile(motion, p.shoe_rim_mm, p.leg_width_mm + 2.0 * p.shoe_boss_wall_mm, p.leg_mount_mm)
+    with input_names({"rim": "shoe_rim_mm", "mount_y": "leg_mount_mm"}):
+        shoe = co.shoe_profile(motion, p.shoe_rim_mm, p.leg_width_mm + 2.0 * p.shoe_boss_wall_mm, p.leg_mount_mm)
     if socket_end + MIN_WEB_MM > shoe.inner_y_at_boss:
         raise InputError("socket_depth_mm", p.socket_depth_mm,
                          f"must be <= {shoe.inner_y_at_boss - p.leg_mount_mm - MIN_WEB_MM:.4g} mm (the shoe rim "
@@ -177,7 +178,8 @@ def plan(p: CamMoverParams) -> Plan:
         pitch = math.pi * p.carrier_bolt_circle_mm / p.carrier_bolt_count
         if pitch < p.carrier_bolt_hole_mm + MIN_WEB_MM:
             raise InputError("carrier_bolt_count", p.carrier_bolt_count, f"holes overlap (pitch {pitch:.4g} mm)")
-    carrier = co.carrier_profile(p.n_legs, p.carrier_radius_mm, slot_w, slot_bottom, p.carrier_bore_mm, carr_holes)
+    with input_names({"slot_width": "leg_width_mm", "radius": "carrier_radius_mm"}):
+        carrier = co.carrier_profile(p.n_legs, p.carrier_radius_mm, slot_w, slot_bottom, p.carrier_bore_mm, carr_holes)
     if carrier.slot_rim - (H_max - p.leg_back_mm) <= 0.0:
         raise InputError("carrier_radius_mm", p.carrier_radius_mm,
                          f"the leg leaves its slide at H_max = {H_max:.4g} mm: the slide must reach beyond "

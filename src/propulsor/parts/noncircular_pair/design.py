@@ -19,15 +19,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...errors import InputError
+from ...errors import InputError, input_names
+from ...gears.generability import CutterSpec, SmoothingDesign, check_generable, choose_smoothing
 from ...gears.involute import BasicRack
-from ...gears.noncircular import (
-    CutterSpec, PitchCurves, SmoothedWalkingLaw, check_generable, choose_smoothing, hub_speed_ripple,
-    perimeter_per_mm,
-)
+from ...gears.noncircular import PitchCurves, SmoothedWalkingLaw, hub_speed_ripple, perimeter_per_mm
 from ...gears.sectors import sector_hub_speed, sector_radii, sector_table
 from ...laws.walking import WalkingLaw
 from .params import NoncircularPairParams
+
+#: part-file keys of the quantities the tooth generators name in their errors
+_TOOTH_KEYS = {"m": "module_mm", "z_H": "driven_teeth", "z0": "shaper_teeth"}
 
 __all__ = ["Design", "PairDesign", "design", "pair_design", "design_generated", "design_sectors",
            "sector_design_table", "mounting", "gear_profiles"]
@@ -77,8 +78,6 @@ def _smoothing(p, law: WalkingLaw, m: float):
                         z0=p.shaper_teeth)
     z_H = p.driven_teeth
     if p.smoothing_deg > 0:
-        from ...gears.noncircular import SmoothingDesign
-
         sl = SmoothedWalkingLaw(law, math.radians(p.smoothing_deg))
         L = math.pi * m * z_H / perimeter_per_mm(sl)
         g = check_generable(PitchCurves(sl, L), cutter)
@@ -110,7 +109,8 @@ def _smallest_generable(law, cutter, z_H) -> str:
 
 def design_generated(p: NoncircularPairParams, progress=lambda s: None) -> Design:
     """Seed 000/002 law -> C2 blend -> closure -> generated teeth (docs/architecture.md, "Seed equations and their modules")."""
-    from ...geometry.noncircular_outline import ArcFrame, ToothSpec, generate_gear
+    from ...gears.noncircular_teeth import ArcFrame, ToothSpec
+    from ...geometry.noncircular_outline import generate_gear
 
     law = _law(p)
     z_H = p.driven_teeth
@@ -128,13 +128,14 @@ def design_generated(p: NoncircularPairParams, progress=lambda s: None) -> Desig
     th = _thinning(p)
     common = dict(m=m, thinning_mm=th, rack=rack, z0=p.shaper_teeth, tip_min_mm=p.tip_land_min_module * m)
     g = sm.generability
-    for chk, x in ((g.driver, p.driver_shift), (g.driven, -p.driver_shift)):
-        if chk.concave:  # fail fast: the shaper this gear needs must exist
-            ToothSpec(x=x, **common).shaper_tools()
-    progress(f"generated: driver teeth ({z_H // law.n}), rack/shaper envelopes")
-    drv = generate_gear(pc, "driver", ToothSpec(x=p.driver_shift, **common), frame)
-    progress(f"generated: driven teeth ({z_H})")
-    dvn = generate_gear(pc, "driven", ToothSpec(x=-p.driver_shift, **common), frame)
+    with input_names(_TOOTH_KEYS):
+        for chk, x in ((g.driver, p.driver_shift), (g.driven, -p.driver_shift)):
+            if chk.concave:  # fail fast: the shaper this gear needs must exist
+                ToothSpec(x=x, **common).shaper_tools()
+        progress(f"generated: driver teeth ({z_H // law.n}), rack/shaper envelopes")
+        drv = generate_gear(pc, "driver", ToothSpec(x=p.driver_shift, **common), frame)
+        progress(f"generated: driven teeth ({z_H})")
+        dvn = generate_gear(pc, "driven", ToothSpec(x=-p.driver_shift, **common), frame)
     return Design("generated", law, sm.law, L, m, z_H, z_H // law.n, pc, smoothing=sm, driver=drv, driven=dvn,
                   ripple=sm.ripple, closure_error=sm.closure_error)
 
@@ -160,7 +161,8 @@ def sector_design_table(p: NoncircularPairParams):
 
 def design_sectors(p: NoncircularPairParams, progress=lambda s: None) -> Design:
     """The papers' sector method on the exact law (seed 000 eqs. 16-52, seed 002 Tables 2-4)."""
-    from ...geometry.noncircular_outline import sector_driven_gear, sector_driver_gear, sector_tip_thickness
+    from ...gears.sectors import sector_tip_thickness
+    from ...geometry.sector_outline import sector_driven_gear, sector_driver_gear
 
     law = _law(p)
     table, L, m = sector_design_table(p)
@@ -173,15 +175,16 @@ def design_sectors(p: NoncircularPairParams, progress=lambda s: None) -> Design:
                          f"(driver {t_drv:.3f}, driven {t_dvn:.3f} mm) at L = {L:.4f} mm",
                          f"the largest module with a tip land > 0 at this L is {m_ok:.4f} mm")
     progress(f"sectors: outlines ({table.i} sectors per leg)")
-    drv = sector_driver_gear(table, m, p.backlash_mm)
-    dvn = sector_driven_gear(table, m, p.backlash_mm)
+    with input_names(_TOOTH_KEYS):
+        drv = sector_driver_gear(table, m, p.backlash_mm)
+        dvn = sector_driven_gear(table, m, p.backlash_mm)
     closure = abs(4 * float(np.sum(table.dtheta)) - 2 * math.pi * law.n)
     return Design("sectors", law, law, L, m, 4 * table.i, 4 * table.i // law.n, PitchCurves(law, L), table=table,
                   driver=drv, driven=dvn, ripple=sector_hub_speed(table), closure_error=closure)
 
 
 def _largest_sector_module(table, j_n, m_hi) -> float:
-    from ...geometry.noncircular_outline import sector_tip_thickness
+    from ...gears.sectors import sector_tip_thickness
 
     lo, hi = 0.0, m_hi
     for _ in range(60):
@@ -210,7 +213,7 @@ def mounting(p: NoncircularPairParams, d: Design) -> float:
 
 # =========================================================================== solids / files
 def _with_bore(profile, bore_d: float, keyway: bool, root_min: float, m: float, which: str):
-    from ...geometry.gear_outline import _bore_loop, keyway_for_shaft
+    from ...geometry.gear_outline import bore_loop, keyway_for_shaft
     from ...geometry.profile import Profile
 
     if bore_d <= 0:
@@ -222,7 +225,7 @@ def _with_bore(profile, bore_d: float, keyway: bool, root_min: float, m: float, 
         raise InputError(name, bore_d, f"bore{' + keyway' if keyway else ''} must stay one module inside the root: "
                          f"bore/2 + t2 = {bore_d / 2 + t2:.3f} mm >= {lim:.3f} mm",
                          f"largest bore about {2 * (lim - t2):.1f} mm")
-    return Profile(profile.outer, [_bore_loop(bore_d, True if keyway else None)], profile.name)
+    return Profile(profile.outer, [bore_loop(bore_d, True if keyway else None)], profile.name)
 
 
 def gear_profiles(p: NoncircularPairParams, d: Design):

@@ -62,10 +62,10 @@ def sector_tables(w, p: NoncircularPairParams, note_if_missing: bool = True):
 
 
 def pitch_polyline(d: Design, role: str, n: int = 1441) -> np.ndarray:
-    from ...geometry.noncircular_outline import PitchCurve
+    from ...gears.noncircular_teeth import BodyPitchCurve
 
     span = 2 * math.pi if role == "driven" else 2 * math.pi / d.law.n
-    return PitchCurve(d.pc, role).point(np.linspace(0.0, span, n, endpoint=False))
+    return BodyPitchCurve(d.pc, role).point(np.linspace(0.0, span, n, endpoint=False))
 
 
 def figure2(w, d: Design, pr, other, pr_other):

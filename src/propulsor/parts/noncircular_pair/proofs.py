@@ -21,7 +21,7 @@ __all__ = ["prove", "compare", "checks_generated", "checks_common", "checks_sect
 
 def prove(d: Design, phases_per_tooth: int, legs: int = 4, progress=lambda s: None, mount: float | None = None):
     """Proof of the pair over ``legs`` legs (4 = the whole driven turn) with
-    ``phases_per_tooth`` phases per driven tooth (``parts.noncircular_proof``), the gears at the
+    ``phases_per_tooth`` phases per driven tooth (:mod:`.pair_proof`), the gears at the
     installed centre distance ``mount`` (default the design L)."""
     from .pair_proof import prove_pair
 
