@@ -10,7 +10,8 @@ from hypothesis import given, settings, strategies as st
 from scipy.optimize import brentq
 
 from propulsor.errors import InputError
-from propulsor.gears.generation import (ShaperCutter, generate_external_side, generate_internal_side)
+from propulsor.gears.cutters import ShaperCutter
+from propulsor.gears.generation import generate_external_side, generate_internal_side
 from propulsor.geometry.bspline import fit_curve, fit_points, spline_deviation
 from propulsor.geometry.gear_outline import exact_area, external_gear_profile, internal_gear_profile
 from propulsor.policy import SPLINE_FIT_TOL_MM
@@ -307,12 +308,54 @@ def test_ring_outline_is_never_entered_by_the_shaper(z, m, x, d_a, z0, x0):
     assert min(_shaper_penetration(side, sh, q[None, :]) for q in Q[::3]) > 1e-4
 
 
+class PolarCentrode:
+    """Gear centrode given as a pitch curve r(φ) in polar form (φ counter-clockwise from +x),
+    run clockwise from φ0 by arc length s: dφ/ds = −1/√(r² + r'²) (tooth spacing is true arc
+    length).  Integrated once (solve_ivp, rtol 1e-12, dense output), then evaluated vectorised.
+    With r = R it is ``CircleCentrode(R)`` (φ0 = π/2).  A reference implementation of the
+    centrode protocol of ``gears.envelope`` for the tests (the product's non-circular gears use
+    ``PitchCurveCentrode`` on their shared arc-length frame).
+    """
+
+    def __init__(self, r, dr, s_span: tuple, phi0: float = math.pi / 2):
+        from scipy.integrate import solve_ivp
+
+        self.r, self.dr, self.phi0 = r, dr, float(phi0)
+        f = lambda s, y: [-1.0 / math.hypot(float(r(y[0])), float(dr(y[0])))]
+        lo, hi = float(s_span[0]), float(s_span[1])
+        kw = dict(dense_output=True, rtol=1e-12, atol=1e-14, method="DOP853")
+        self._fwd = solve_ivp(f, (0.0, hi), [self.phi0], **kw).sol if hi > 0 else None
+        self._bwd = solve_ivp(f, (0.0, lo), [self.phi0], **kw).sol if lo < 0 else None
+
+    def phi(self, s):
+        s = np.atleast_1d(np.asarray(s, float))
+        out = np.empty_like(s)
+        pos = s >= 0
+        if np.any(pos):
+            out[pos] = self._fwd(s[pos])[0]
+        if np.any(~pos):
+            out[~pos] = self._bwd(s[~pos])[0]
+        return out
+
+    def point(self, s):
+        ph = self.phi(s)
+        r = np.asarray(self.r(ph), float) * np.ones_like(ph)
+        return np.column_stack([r * np.cos(ph), r * np.sin(ph)])
+
+    def angle(self, s):
+        ph = self.phi(s)
+        r = np.asarray(self.r(ph), float) * np.ones_like(ph)
+        dr = np.asarray(self.dr(ph), float) * np.ones_like(ph)
+        # dG/dφ, reversed (φ decreases with s)
+        tx = -(dr * np.cos(ph) - r * np.sin(ph))
+        ty = -(dr * np.sin(ph) + r * np.cos(ph))
+        return np.arctan2(ty, tx)
+
+
 def test_generic_centrode_reproduces_the_circle():
     """The envelope machinery takes any pitch curve parametrised by arc length: a polar pitch
     curve r(φ) = R gives the circular gear's flank and fillet to rounding (hook for the
     non-circular gears)."""
-    from propulsor.gears.generation import PolarCentrode
-
     z, m, x = 14, 2.0, 0.2
     side = generate_external_side(z, m, x)
     R = m * z / 2

@@ -14,9 +14,9 @@ from hypothesis import strategies as st
 from scipy.optimize import brentq, minimize_scalar
 
 from propulsor.errors import InputError
+from propulsor.gears.gear_pair import GearPair
 from propulsor.gears.involute import (
     BasicRack,
-    GearPair,
     SpurGear,
     inv,
     inv_inverse,

@@ -506,7 +506,8 @@ def test_windowed_sweep_equals_the_plain_sweep():
     """sweep_pair_windowed crops the large body near the small one: same overlap and clearance."""
     from propulsor.checks.motion import sweep_pair_windowed
     from propulsor.geometry.gear_outline import external_gear_profile, internal_gear_profile
-    from propulsor.gears.involute import GearPair, SpurGear
+    from propulsor.gears.gear_pair import GearPair
+    from propulsor.gears.involute import SpurGear
 
     m, z1, z2 = 2.0, 18, 50
     pair = GearPair(SpurGear(z1, m, 0.0), SpurGear(z2, m, 0.3, internal=True, z0=16, x0=0.0))

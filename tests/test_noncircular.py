@@ -9,13 +9,11 @@ from hypothesis import strategies as st
 from scipy.integrate import quad
 
 from propulsor.errors import InputError
+from propulsor.gears.generability import CutterSpec, check_generable, choose_smoothing
 from propulsor.gears.noncircular import (
-    CutterSpec,
     PitchCurves,
     SmoothedWalkingLaw,
     centre_distance,
-    check_generable,
-    choose_smoothing,
     driven_teeth,
     hub_speed_ripple,
     module_for,
@@ -308,3 +306,16 @@ def test_bad_smoothing_input():
     with pytest.raises(InputError) as e:
         CutterSpec(m=-2.0)
     assert e.value.parameter == "m"
+
+
+def test_cutter_spec_gives_each_gear_its_shift():
+    """One imaginary rack: the driver is cut with x, the driven wheel with x_H."""
+    from propulsor.gears.involute import BasicRack
+
+    c = CutterSpec(m=2.5, x=0.5, x_H=-0.5, z0=20)
+    rack = BasicRack()
+    drv, dvn = c.tooth_spec("driver", rack, 0.1, 0.6), c.tooth_spec("driven", rack, 0.1, 0.6)
+    assert (drv.x, dvn.x) == (0.5, -0.5)
+    assert drv.m == dvn.m == 2.5 and drv.z0 == dvn.z0 == 20 and drv.thinning_mm == 0.1 and drv.tip_min_mm == 0.6
+    with pytest.raises(InputError):
+        c.shift("idler")

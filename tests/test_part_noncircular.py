@@ -1,4 +1,4 @@
-"""The non-circular walking-drive pair (issue 3) end to end: build the part files through the
+"""The non-circular walking-drive pair (seeds 000, 002) end to end: build the part files through the
 command line, then measure what was written — DXF frames and loops, transmission.csv, the
 manifest's derived values and checks, the papers' tables — and the command line's contract
 for bad input (exit 2, one line, nothing written).  Plus the library pieces the part adds
@@ -379,7 +379,7 @@ def test_seed000_unshifted_refused_with_numbers(tmp_path, capsys):
 
 # --------------------------------------------------------------------------- library pieces
 def test_arc_frame_inverse_and_perimeter():
-    from propulsor.geometry.noncircular_outline import ArcFrame
+    from propulsor.gears.noncircular_teeth import ArcFrame
 
     sl = SmoothedWalkingLaw(WalkingLaw(**SEED_002), 0.15)
     pc = PitchCurves(sl, 124.3)
@@ -396,12 +396,12 @@ def test_arc_frame_inverse_and_perimeter():
        delta=st.floats(0.02, 0.7), L=st.floats(50, 300))
 @example(a=0.0, b=38.0, c=100.0, n=4, delta=0.03125, L=50.0)  # inversion error 1.02e-10 rad found here
 def test_arc_frame_property(a, b, c, n, delta, L):
-    """The shared arc-length frame of any smoothed law: perimeter = the pitch curves' (Trap 3),
+    """The shared arc-length frame of any smoothed law: perimeter = the pitch curves' (closure by true arc length),
     s(phi + pi/2) = s(phi) + leg, phi(s) inverts s(phi); both pitch curves roll (equal arcs)."""
     from hypothesis import assume
 
     from propulsor.errors import InputError
-    from propulsor.geometry.noncircular_outline import ArcFrame, PitchCurve
+    from propulsor.gears.noncircular_teeth import ArcFrame, BodyPitchCurve
 
     assume(a - b + c > 20)
     try:
@@ -415,8 +415,8 @@ def test_arc_frame_property(a, b, c, n, delta, L):
     assert np.allclose(fr.s(phi + math.pi / 2), fr.s(phi) + fr.leg, atol=1e-9 * fr.perimeter)
     assert np.max(np.abs(fr.phi(fr.s(phi)) - phi)) < 1e-9
     # rolling: |dP/dphi| of the driver equals that of the driven wheel
-    dd = np.linalg.norm(PitchCurve(pc, "driver").dpoint(phi), axis=1)
-    dn = np.linalg.norm(PitchCurve(pc, "driven").dpoint(phi), axis=1)
+    dd = np.linalg.norm(BodyPitchCurve(pc, "driver").dpoint(phi), axis=1)
+    dn = np.linalg.norm(BodyPitchCurve(pc, "driven").dpoint(phi), axis=1)
     assert np.allclose(dd, dn, rtol=1e-12)
 
 
@@ -443,7 +443,7 @@ def test_generated_teeth_are_conjugate_without_backlash():
 
 
 def test_module_from_centre_distance():
-    """Closure the other way round (SPEC Trap 3): L given, the module follows; the blend is the one
+    """Closure the other way round (by true arc length): L given, the module follows; the blend is the one
     chosen at m = 2.5 (the design is scale invariant: rho and the undercut limit both scale with m)."""
     from propulsor.params import load_params
     from propulsor.parts.noncircular_pair import NoncircularPairParams, design
@@ -472,7 +472,8 @@ def test_shaper_and_rack_generate_the_same_involute_on_a_circle():
     """With U = 1 (b = 0, n = 1) both pitch curves are circles of radius L/2: the generated flank is
     the involute of r cos(alpha) whether the ISO 53 rack or the shaper cuts it (same imaginary rack,
     x0 = -x), and it matches the closed-form involute of the tooth thickness m(pi/2 + 2 x tan a) - t."""
-    from propulsor.geometry.noncircular_outline import ArcFrame, PitchCurve, ToothSpec, _Centrode, _make_side
+    from propulsor.gears.envelope import PitchCurveCentrode
+    from propulsor.gears.noncircular_teeth import ArcFrame, BodyPitchCurve, ToothSpec, make_side
 
     law = WalkingLaw(a=0.0, b=0.0, c=100.0, n=1)
     m, z = 2.0, 40
@@ -483,14 +484,14 @@ def test_shaper_and_rack_generate_the_same_involute_on_a_circle():
     for x, th in ((0.0, 0.0), (0.4, 0.1), (-0.3, 0.05)):
         spec = ToothSpec(m=m, x=x, thinning_mm=th, z0=16)
         for role in ("driven", "driver"):
-            cur = PitchCurve(pc, role)
+            cur = BodyPitchCurve(pc, role)
             s_k = 0.37 * math.pi * m
             r = L / 2
             rb = r * math.cos(a)
             s_tooth = m * (math.pi / 2 + 2 * x * math.tan(a)) - th
             for tools in (spec.rack_tools(), spec.shaper_tools()):
                 for tool in tools:
-                    sd = _make_side(tool, _Centrode(cur, fr, s_k))
+                    sd = make_side(tool, PitchCurveCentrode(cur, fr, s_k))
                     P = sd.flank(np.linspace(sd.flank.u0, sd.flank.u1, 200))
                     rr = np.linalg.norm(P, axis=1)
                     sel = (rr > rb * 1.01) & (rr < r + m * (1 + x))

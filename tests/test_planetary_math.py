@@ -10,7 +10,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from propulsor.errors import InputError
-from propulsor.gears.involute import GearPair, SpurGear
+from propulsor.gears.gear_pair import GearPair
+from propulsor.gears.involute import SpurGear
 from propulsor.gears.planetary import Condition, PlanetarySet
 from propulsor.policy import PLANETARY_COAXIALITY_TOL_MM
 

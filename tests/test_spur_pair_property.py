@@ -14,7 +14,8 @@ from OCP.BRepCheck import BRepCheck_Analyzer
 from propulsor.checks.motion import sweep_pair
 from propulsor.errors import InputError
 from propulsor.geometry.gear_outline import external_gear_profile
-from propulsor.gears.involute import GearPair, SpurGear
+from propulsor.gears.gear_pair import GearPair
+from propulsor.gears.involute import SpurGear
 from propulsor.solids.build import extrude_profile
 
 

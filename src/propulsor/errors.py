@@ -7,6 +7,8 @@ check failed.
 
 from __future__ import annotations
 
+from contextlib import contextmanager
+
 
 #: longest value quoted in a message (the message stays one readable line)
 MAX_VALUE_CHARS = 120
@@ -19,6 +21,7 @@ class InputError(ValueError):
         self.parameter = parameter
         self.value = value
         self.limit = limit
+        self.hint = hint
         shown = repr(value)
         if len(shown) > MAX_VALUE_CHARS:
             shown = shown[:MAX_VALUE_CHARS] + "…"
@@ -26,6 +29,28 @@ class InputError(ValueError):
         if hint:
             msg += f" ({hint})"
         super().__init__(msg)
+
+
+@contextmanager
+def input_names(names: dict[str, str]):
+    """Name part-file keys in the errors of a lower layer.
+
+    The math and geometry layers name the quantities of their equations (``z_H``, ``m``,
+    ``slot_width``); a part maps them to the keys of its part file around the call::
+
+        with input_names({"z_H": "driven_teeth", "m": "module_mm"}):
+            gear = generate_gear(...)
+
+    An ``InputError`` whose parameter is in ``names`` is raised again with the part-file key
+    (same value, limit and hint); any other error passes unchanged.
+    """
+    try:
+        yield
+    except InputError as exc:
+        key = names.get(exc.parameter)
+        if key is None:
+            raise
+        raise InputError(key, exc.value, exc.limit, exc.hint) from None
 
 
 class CheckFailed(RuntimeError):

@@ -23,13 +23,53 @@ OVERLAP_AREA_TOL_MM2 = 1e-6
 #: overlap volume below this (mm^3) counts as no overlap in 3D motion sweeps
 OVERLAP_VOLUME_TOL_MM3 = 1e-3
 
+#: consecutive outline pieces meet (and a loop is closed) within this (mm)
+OUTLINE_JOINT_TOL_MM = 1e-6
+#: a finished outline (arm, shoe, carrier) must close within this (mm)
+OUTLINE_CLOSED_TOL_MM = 1e-7
+#: two radii closer than this (mm) are the same circle (sector outlines: one root arc, radial flank)
+RADIUS_EQUAL_TOL_MM = 1e-9
+#: a periodic roller-centre path must close within this before its ends are joined (mm)
+PATH_CLOSURE_TOL_MM = 1e-6
+#: stations of a sampled requirement are uniform within this (relative and absolute, mm)
+GRID_UNIFORM_TOL = 1e-9
+
 # --- root finding / ODE -------------------------------------------------------
+#: x tolerance of Brent's method (and relative tolerance of the coarser roots)
 ROOT_XTOL = 1e-12
+#: x (and relative) tolerance of the fine roots: angles, curve parameters, fsolve on outlines
+ROOT_XTOL_FINE = 1e-14
+#: solved or compared to rounding: brentq / fsolve of the tooth geometry, Newton of inv^-1 (relative
+#: step), a diameter against the base diameter (relative)
+ROUNDING_TOL = 1e-15
+#: relative rounding margin of a comparison against a limit (phase end, torsion stress, undercut test)
+REL_ROUNDING_TOL = 1e-12
+#: x tolerance of the bounded 1-D minimisations (curvature, speed and clearance extremes)
+MINIMIZE_XATOL = 1e-12
+#: Newton inverse of theta(phi) of the walking law (rad)
+PHI_OF_THETA_TOL_RAD = 1e-14
+#: a Newton / fsolve solution on an outline counts when its residual is below this (mm), and its
+#: parameter may leave the curve's range by as much
+SOLVE_RESIDUAL_MM = 1e-9
+#: the vectorised Newton of the tip hits stops when every residual is below this (mm)
+NEWTON_STOP_MM = 1e-12
+#: forward-difference step relative to a curve's parameter range
+FD_STEP_REL = 1e-7
+#: forward-difference step in the driven angle phi (rad)
+FD_STEP_PHI_RAD = 1e-8
+#: central-difference step in phi for the arc length of an equidistant (rad)
+FD_STEP_ARC_RAD = 1e-6
+#: x tolerance of the cusp search on an envelope, relative to the parameter
+CUSP_XATOL_REL = 1e-13
+#: x tolerance of the measuring-roller diameter (mm)
+ROLLER_DIAMETER_XTOL_MM = 1e-13
+#: two angles (rad) are equal within this (the GOST 19274 rack test alpha = 20 deg)
+ANGLE_EQUAL_TOL_RAD = 1e-12
 ODE_RTOL = 1e-11
 ODE_ATOL = 1e-11
 
 # --- sampling -----------------------------------------------------------------
-#: points per flank used to build an envelope before spline fitting
+#: points per flank when an envelope is sampled (``EnvelopeCurve.sample``, dense tooth points)
 ENVELOPE_SAMPLES_PER_FLANK = 200
 #: planetary interference sweep: steps per degree of carrier turn
 PLANETARY_SWEEP_STEPS_PER_DEG = 2
@@ -71,6 +111,11 @@ CAM_COS_GAMMA_MIN = 1e-3
 #: ... or when rho leaves [CAM_RHO_MIN_FACTOR, CAM_RHO_MAX_FACTOR] * H0
 CAM_RHO_MAX_FACTOR = 100.0
 CAM_RHO_MIN_FACTOR = 1e-6
+#: d/dx (sin x / x) by its Taylor series below this |x| (no cancellation)
+SINC_SERIES_BELOW = 1e-2
+#: the return-phase top H(pi) is searched up to the free curve's value plus this (mm), to this x tolerance
+RETURN_TOP_SLACK = 1e-9
+RETURN_TOP_XATOL = 1e-6
 #: Gauss-Legendre nodes for the shoe quotient (gamma - phi)/phi of seed 001 eq. 7
 CAM_QUAD_NODES = 24
 #: samples of the support phase used to evaluate a design candidate
@@ -82,13 +127,35 @@ CAM_TURN_SAMPLES = 1441
 #: convergence of the papers' sector iterations (seed 000 eqs. 25-31, 48-51); the
 #: papers say 1e-6 rad but print the converged, symmetric solution
 SECTOR_ITER_TOL_RAD = 1e-13
+#: the slopes on either side of a corner of the exact law are taken this far from it (rad)
+CORNER_SIDE_RAD = 1e-12
 #: a computed tooth count closer than this to a whole number is whole
 TOOTH_COUNT_TOL = 1e-6
 #: relative precision of the automatically chosen smoothing half-width delta
 SMOOTHING_DELTA_RTOL = 1e-6
+#: the smoothing search starts at this half-width (rad)
+SMOOTHING_DELTA_MIN_RAD = 1e-3
+
+# --- tooth generator (gears/cutters.py, gears/envelope.py, gears/generation.py, gears/noncircular_teeth.py)
+#: roll parameter where a shaper's involute ends, just above its base circle (t = 0 is the cusp)
+INVOLUTE_T_MIN = 1e-9
+#: the tip rounds of a rack tool may overlap its pitch by this much (mm) before it has no tip land
+TOOL_TIP_LAND_TOL_MM = 1e-12
+#: a shaper's module and the gear's module are equal within this (mm)
+MODULE_MATCH_TOL_MM = 1e-12
+#: bisection of the shortened tip height stops at this interval (mm)
+TIP_HEIGHT_TOL_MM = 1e-6
+
+# --- suspension and balancer (laws/suspension.py, laws/balancer_beam.py) ---------
+#: a damper sits on a wheel when their positions agree within this (m)
+POSITION_EQUAL_TOL_M = 1e-9
+#: equal-strength section depth by Brent's method, x tolerance (mm)
+SECTION_DEPTH_XTOL_MM = 1e-9
+#: statics residual and torque balance of the beam checks, relative; stress limit rounding margin
+STATICS_REL_TOL = 1e-9
 
 # --- mesh export (appended by the checks/exports layer) -------------------------
-#: largest tessellation chord error SPEC §9 allows (STL / 3MF); the mesher aims at
+#: largest tessellation chord error of the STL / 3MF files (README, «Parts»: <= 0.01 mm); the mesher aims at
 #: CHORD_TOL_MM and refines when OCCT reports a larger achieved deflection
 MESH_CHORD_LIMIT_MM = 0.01
 

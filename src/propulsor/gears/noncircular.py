@@ -1,16 +1,16 @@
 """Pitch curves of the non-circular pair of the wheel-walking propulsor drive.
 
 Driven (carrier) wheel r_H(phi), driver r(theta) for centre distance L and a
-ratio law U(phi) = d theta / d phi (seed 000, eqs. 4-7, 12-13; SPEC §3):
+ratio law U(phi) = d theta / d phi (seed 000, eqs. 4-7, 12-13):
 
     r_H = L U / (1 + U),   r = L / (1 + U),   r + r_H = L
 
-Tooth spacing is true arc length ds = sqrt(r^2 + r'^2) dphi (SPEC Trap 3);
+Tooth spacing is true arc length ds = sqrt(r^2 + r'^2) dphi (docs/architecture.md, «closure»);
 whole tooth counts fix L for a module (closure).  Radius of curvature of a
 polar curve r(psi):  rho = (r^2 + r'^2)^(3/2) / (r^2 + 2 r'^2 - r r'')
 (> 0 convex, < 0 concave).
 
-The exact law has corners at leg hand-over (SPEC Trap 2); the product replaces
+The exact law has corners at leg hand-over (docs/architecture.md, «drive law»); the product replaces
 U on a window |phi - (pi/4 + k pi/2)| < delta by an even degree-6 polynomial
 that matches U, U', U'' at the window ends (C2) and keeps the window integral
 of U, so closure (n whole driver turns per driven turn) stays exact and U is
@@ -29,22 +29,14 @@ import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
 from propulsor.errors import InputError, require_finite, require_positive
-from propulsor.laws.walking import LEG_PERIOD, HubSpeedRipple, WalkingLaw, wrap_leg
-from propulsor.policy import SMOOTHING_DELTA_RTOL, TOOTH_COUNT_TOL
+from propulsor.laws.walking import LEG_PERIOD, HubSpeedRipple, WalkingLaw, check_n_closes, invert_theta, wrap_leg
+from propulsor.policy import CORNER_SIDE_RAD, MINIMIZE_XATOL, PHI_OF_THETA_TOL_RAD, ROOT_XTOL_FINE, TOOTH_COUNT_TOL
 
 _GAUSS_X, _GAUSS_W = np.polynomial.legendre.leggauss(96)
 #: samples per smooth piece of one leg when searching curvature / speed extremes
 _SAMPLES_PER_PIECE = 600
 #: default largest smoothing half-width searched (rad of the driven wheel)
 DELTA_MAX_DEFAULT = math.pi / 8
-
-
-def _check_n_closes(n: int) -> None:
-    if 4 % n != 0:
-        raise InputError(
-            "n", n,
-            "the driver pitch curve repeats every n*pi/2 and closes only if n divides the 4 legs: n in {1, 2, 4}",
-        )
 
 
 # =========================================================================== smoothing
@@ -184,15 +176,10 @@ class SmoothedWalkingLaw:
         corr = self._P(t) + self._P(d) - self._F(t) - self._F(d)
         return self.law.theta(phi) + np.where(inw, corr, 0.0)
 
-    def phi_of_theta(self, theta, tol: float = 1e-14):
+    def phi_of_theta(self, theta, tol: float = PHI_OF_THETA_TOL_RAD):
+        """Inverse of theta_s(phi) (``walking.invert_theta``)."""
         theta = np.asarray(theta, dtype=float)
-        phi = theta / self.n
-        for _ in range(80):
-            step = (self.theta(phi) - theta) / self.U(phi)
-            phi = phi - step
-            if np.all(np.abs(step) < tol):
-                break
-        return phi
+        return invert_theta(self, theta, theta / self.n, tol, 80)
 
     def dX01_dphi(self, phi):
         """Hub speed analogue of the mechanism (seed 000 eq. 2) - unchanged by the gear."""
@@ -212,7 +199,8 @@ class SmoothedWalkingLaw:
         return out
 
 
-def _leg_breakpoints(law) -> tuple:
+def leg_breakpoints(law) -> tuple:
+    """Ends of the smooth pieces of one leg, phi in [-pi/4, pi/4] (the blend windows' ends)."""
     if isinstance(law, SmoothedWalkingLaw):
         return law.leg_breakpoints
     return (-math.pi / 4, math.pi / 4)
@@ -223,7 +211,7 @@ def _has_corners(law) -> bool:
 
 
 def _leg_samples(law, per_piece: int = _SAMPLES_PER_PIECE) -> np.ndarray:
-    bp = _leg_breakpoints(law)
+    bp = leg_breakpoints(law)
     parts = []
     for a, b in zip(bp[:-1], bp[1:]):
         # cosine spacing: dense at the piece ends, where the extremes sit
@@ -234,7 +222,7 @@ def _leg_samples(law, per_piece: int = _SAMPLES_PER_PIECE) -> np.ndarray:
 
 def _leg_integral(law, f) -> float:
     """integral over one leg phi in [-pi/4, pi/4] of f(phi), Gauss-Legendre per smooth piece."""
-    bp = _leg_breakpoints(law)
+    bp = leg_breakpoints(law)
     total = 0.0
     for a, b in zip(bp[:-1], bp[1:]):
         x = 0.5 * (b - a) * _GAUSS_X + 0.5 * (a + b)
@@ -250,7 +238,7 @@ def _extreme(f, x, y, which: str):
     best = (float(x[k]), float(y[k]))
     if hi > lo:
         res = minimize_scalar(lambda p: sgn * float(f(p)), bounds=(lo, hi), method="bounded",
-                              options={"xatol": 1e-12})
+                              options={"xatol": MINIMIZE_XATOL})
         if sgn * res.fun < sgn * best[1]:
             best = (float(res.x), float(sgn * res.fun))
     return best
@@ -260,7 +248,7 @@ def hub_speed_ripple(law) -> HubSpeedRipple:
     """Hub speed ripple (max - min)/mean of v/omega = (dX01/dphi)/U over the cycle.
 
     Works for WalkingLaw (ripple 0: the exact law is the constant-speed law)
-    and SmoothedWalkingLaw.  mean = time mean = A/u (SPEC §3 Trap 2).
+    and SmoothedWalkingLaw.  mean = time mean = A/u (docs/architecture.md, «drive law»).
     """
     phi = _leg_samples(law)
     v = law.hub_speed(phi)
@@ -280,7 +268,7 @@ def _rho(r, dr, d2r):
 
 @dataclass(frozen=True)
 class Corner:
-    """A corner of a pitch curve of the exact law (SPEC Trap 2)."""
+    """A corner of a pitch curve of the exact law (docs/architecture.md, «drive law»)."""
 
     curve: str          #: 'driven' or 'driver'
     phi: float          #: driven angle of the hand-over (rad)
@@ -309,7 +297,7 @@ class PitchCurves:
     def __post_init__(self):
         if not isinstance(self.law, (WalkingLaw, SmoothedWalkingLaw)):
             raise InputError("law", self.law, "must be a WalkingLaw or SmoothedWalkingLaw")
-        _check_n_closes(self.law.n)
+        check_n_closes(self.law.n)
         object.__setattr__(self, "L", require_positive("L", self.L, "mm"))
 
     # ---- driven ---------------------------------------------------------------------
@@ -368,7 +356,7 @@ class PitchCurves:
 
     # ---- arc length / closure -------------------------------------------------------
     def ds_dphi(self, phi):
-        """True arc length rate of the driven curve sqrt(r_H^2 + r_H'^2) (SPEC Trap 3)."""
+        """True arc length rate of the driven curve sqrt(r_H^2 + r_H'^2) (docs/architecture.md, «closure»)."""
         return np.hypot(self.r_H(phi), self.dr_H(phi))
 
     def perimeter_driven(self) -> float:
@@ -384,7 +372,7 @@ class PitchCurves:
         """
         n = self.law.n
         legs = 4 // n  # driver turn = 4/n legs of the driven wheel
-        bp = _leg_breakpoints(self.law)
+        bp = leg_breakpoints(self.law)
         phis = sorted({k * LEG_PERIOD + w for k in range(legs) for w in bp})
         ths = self.law.theta(np.array(phis))
         total = 0.0
@@ -404,7 +392,7 @@ class PitchCurves:
         if not _has_corners(self.law):
             return []
         out = []
-        eps = 1e-12
+        eps = CORNER_SIDE_RAD
         seen = set()
         for k in range(4):
             ph = math.pi / 4 + k * LEG_PERIOD
@@ -452,7 +440,7 @@ class PitchCurves:
             edges = []
             for k in range(len(phi) - 1):
                 if s[k] != s[k + 1] and s[k] != 0 and s[k + 1] != 0:
-                    edges.append(brentq(lambda p: float(den(p)), phi[k], phi[k + 1], xtol=1e-14))
+                    edges.append(brentq(lambda p: float(den(p)), phi[k], phi[k + 1], xtol=ROOT_XTOL_FINE))
             lo = -math.pi / 4
             pts = [lo] + edges + [math.pi / 4]
             for a, b in zip(pts[:-1], pts[1:]):
@@ -505,7 +493,8 @@ def perimeter_per_mm(law) -> float:
     return PitchCurves(law, 1.0).perimeter_driven()
 
 
-def _whole_teeth(name: str, z, n: int) -> int:
+def whole_teeth(name: str, z, n: int) -> int:
+    """z as a whole tooth count >= 1 that is a multiple of n (InputError naming ``name``)."""
     fz = require_finite(name, z)
     if fz != round(fz) or fz < 1:
         raise InputError(name, z, "tooth count must be a whole number >= 1")
@@ -518,19 +507,19 @@ def _whole_teeth(name: str, z, n: int) -> int:
 
 
 def centre_distance(law, m: float, z_H: int) -> float:
-    """L such that the driven pitch curve carries z_H teeth of module m: perimeter = pi m z_H (SPEC Trap 3).
+    """L such that the driven pitch curve carries z_H teeth of module m: perimeter = pi m z_H (docs/architecture.md, «closure»).
 
     The driver then carries z_H / n teeth (its perimeter is the driven's / n).
     """
     m = require_positive("m", m, "mm")
-    z_H = _whole_teeth("z_H", z_H, law.n)
+    z_H = whole_teeth("z_H", z_H, law.n)
     return math.pi * m * z_H / perimeter_per_mm(law)
 
 
 def module_for(law, L: float, z_H: int) -> float:
     """Module m that closes the driven curve with z_H teeth at centre distance L."""
     L = require_positive("L", L, "mm")
-    z_H = _whole_teeth("z_H", z_H, law.n)
+    z_H = whole_teeth("z_H", z_H, law.n)
     return L * perimeter_per_mm(law) / (math.pi * z_H)
 
 
@@ -554,203 +543,10 @@ def driven_teeth(law, L: float, m: float) -> int:
                      "nearest valid: " + "; ".join(parts))
 
 
-# =========================================================================== generability
-@dataclass(frozen=True)
-class CutterSpec:
-    """Generating tools: ISO 53 rack (alpha, h_a*) with profile shifts, optional shaper.
-
-    m: module (mm); alpha: pressure angle (rad); h_a: addendum coefficient h_a*
-    of the generated tooth; x: profile shift coefficient of the driver, x_H of
-    the driven wheel; z0: tooth count of a shaper (pinion) cutter for concave
-    parts (None: no shaper, concave parts are not allowed).
-    """
-
-    m: float
-    alpha: float = math.radians(20.0)
-    h_a: float = 1.0
-    x: float = 0.0
-    x_H: float = 0.0
-    z0: int | None = None
-
-    def __post_init__(self):
-        object.__setattr__(self, "m", require_positive("m", self.m, "mm"))
-        a = require_finite("alpha", self.alpha)
-        if not 0 < a < math.pi / 2:
-            raise InputError("alpha", self.alpha, "pressure angle must be in (0, pi/2) rad")
-        object.__setattr__(self, "h_a", require_positive("h_a", self.h_a))
-        object.__setattr__(self, "x", require_finite("x", self.x))
-        object.__setattr__(self, "x_H", require_finite("x_H", self.x_H))
-        if self.z0 is not None:
-            z0 = require_finite("z0", self.z0)
-            if z0 != round(z0) or z0 < 6:
-                raise InputError("z0", self.z0, "shaper cutter tooth count must be a whole number >= 6")
-            object.__setattr__(self, "z0", int(round(z0)))
-
-    def rho_limit(self, x: float) -> float:
-        """Rack undercut limit rho >= (h_a* - x) m / sin^2 alpha (SPEC §3 Trap 2)."""
-        return (self.h_a - x) * self.m / math.sin(self.alpha) ** 2
-
-    @property
-    def r0(self) -> float:
-        """Shaper cutter pitch radius m z0 / 2 (inf if no shaper)."""
-        return math.inf if self.z0 is None else self.m * self.z0 / 2
-
-
-@dataclass(frozen=True)
-class CurveCheck:
-    """Generability of one pitch curve."""
-
-    curve: str
-    rho_convex_min: float
-    rho_limit: float
-    concave: bool
-    rho_concave_min: float
-    r0: float
-    ok: bool
-    reason: str
-
-
-def _check_curve(cs: CurvatureSummary, cutter: CutterSpec, x: float) -> CurveCheck:
-    lim = cutter.rho_limit(x)
-    reasons = []
-    if cs.rho_convex_min < lim:
-        reasons.append(f"{cs.curve}: convex rho_min {cs.rho_convex_min:.3f} mm < rack undercut limit {lim:.3f} mm")
-    if cs.concave:
-        if cutter.z0 is None:
-            reasons.append(f"{cs.curve}: concave (|rho| >= {cs.rho_concave_min:.3f} mm) and no shaper cutter z0 given")
-        elif not cutter.r0 < cs.rho_concave_min:
-            reasons.append(f"{cs.curve}: concave |rho|_min {cs.rho_concave_min:.3f} mm <= shaper pitch radius "
-                           f"{cutter.r0:.3f} mm")
-    return CurveCheck(curve=cs.curve, rho_convex_min=cs.rho_convex_min, rho_limit=lim, concave=cs.concave,
-                      rho_concave_min=cs.rho_concave_min, r0=cutter.r0, ok=not reasons,
-                      reason="; ".join(reasons))
-
-
-@dataclass(frozen=True)
-class Generability:
-    driver: CurveCheck
-    driven: CurveCheck
-
-    @property
-    def ok(self) -> bool:
-        return self.driver.ok and self.driven.ok
-
-
-def check_generable(pair: PitchCurves, cutter: CutterSpec) -> Generability:
-    """Both pitch curves against the rack undercut limit (convex) and shaper / concavity (concave)."""
-    return Generability(
-        driver=_check_curve(pair.curvature("driver"), cutter, cutter.x),
-        driven=_check_curve(pair.curvature("driven"), cutter, cutter.x_H),
-    )
-
-
-@dataclass(frozen=True)
-class SmoothingDesign:
-    """The chosen smoothing: law, centre distance, checks and the price (hub speed ripple)."""
-
-    law: SmoothedWalkingLaw
-    delta: float
-    L: float
-    z_H: int
-    z: int
-    cutter: CutterSpec
-    generability: Generability
-    ripple: HubSpeedRipple
-
-    @property
-    def pair(self) -> PitchCurves:
-        return PitchCurves(self.law, self.L)
-
-    @property
-    def closure_error(self) -> float:
-        """|theta_s(2 pi) - 2 pi n| (rad)."""
-        return abs(float(self.law.theta(2 * math.pi)) - 2 * math.pi * self.law.n)
-
-
-def _evaluate(law: WalkingLaw, delta: float, cutter: CutterSpec, z_H: int):
-    try:
-        sl = SmoothedWalkingLaw(law, delta)
-    except InputError:
-        return None, None, None
-    L = math.pi * cutter.m * z_H / perimeter_per_mm(sl)
-    return sl, L, check_generable(PitchCurves(sl, L), cutter)
-
-
-def choose_smoothing(law: WalkingLaw, cutter: CutterSpec, z_H: int,
-                     delta_max: float = DELTA_MAX_DEFAULT,
-                     rtol: float = SMOOTHING_DELTA_RTOL) -> SmoothingDesign:
-    """Smallest blend half-width delta <= delta_max keeping both pitch curves generable.
-
-    The centre distance follows from closure at each delta: L = pi m z_H / perimeter.
-    Search: geometric scan of delta, then bisection to rtol between the last
-    failing and the first passing delta.  Raises InputError with the numbers
-    (curvature reached, limit, the profile shift / tooth count / smoothing that
-    would work) when no delta up to delta_max works.
-    """
-    if not isinstance(law, WalkingLaw):
-        raise InputError("law", law, "must be a WalkingLaw")
-    _check_n_closes(law.n)
-    z_H = _whole_teeth("z_H", z_H, law.n)
-    delta_max = require_positive("delta_max", delta_max, "rad")
-    if delta_max > math.pi / 4:
-        raise InputError("delta_max", delta_max, f"must be <= pi/4 = {math.pi / 4:.6f} rad")
-    grid = np.geomspace(1e-3, delta_max, 40)
-    prev_bad = 0.0
-    found = None
-    for d in grid:
-        sl, L, g = _evaluate(law, float(d), cutter, z_H)
-        if g is not None and g.ok:
-            found = float(d)
-            break
-        prev_bad = float(d)
-    if found is None:
-        raise _no_smoothing_error(law, cutter, z_H, delta_max)
-    lo, hi = prev_bad, found
-    while hi - lo > rtol * hi:
-        mid = 0.5 * (lo + hi)
-        sl, L, g = _evaluate(law, mid, cutter, z_H)
-        if g is not None and g.ok:
-            hi = mid
-        else:
-            lo = mid
-    sl, L, g = _evaluate(law, hi, cutter, z_H)
-    return SmoothingDesign(law=sl, delta=hi, L=L, z_H=z_H, z=z_H // law.n, cutter=cutter,
-                           generability=g, ripple=hub_speed_ripple(sl))
-
-
-def _no_smoothing_error(law, cutter, z_H, delta_max) -> InputError:
-    sl, L, g = _evaluate(law, delta_max, cutter, z_H)
-    bits = []
-    if g is None:
-        return InputError("delta_max", delta_max, "the blend makes U <= 0 before the curves become generable")
-    s2 = math.sin(cutter.alpha) ** 2
-    for chk, x, name in ((g.driver, cutter.x, "x"), (g.driven, cutter.x_H, "x_H")):
-        if chk.ok:
-            continue
-        if chk.rho_convex_min < chk.rho_limit:
-            x_need = cutter.h_a - chk.rho_convex_min * s2 / cutter.m
-            # rho and L scale with z_H at fixed m: z_H >= z_H * limit / rho_min
-            z_need = math.ceil(z_H * chk.rho_limit / chk.rho_convex_min / law.n) * law.n if chk.rho_convex_min > 0 else None
-            m_max = chk.rho_convex_min * s2 / (cutter.h_a - x) if cutter.h_a > x else math.inf
-            bits.append(
-                f"{chk.curve}: convex rho_min {chk.rho_convex_min:.3f} mm < undercut limit {chk.rho_limit:.3f} mm; "
-                f"works with {name} >= {x_need:.3f}, or z_H >= {z_need} at m = {cutter.m:g}, "
-                f"or m <= {m_max:.4f} mm at L = {L:.3f} mm"
-            )
-        if chk.concave and not chk.r0 < chk.rho_concave_min:
-            z0_max = math.ceil(2 * chk.rho_concave_min / cutter.m) - 1
-            bits.append(f"{chk.curve}: concave |rho|_min {chk.rho_concave_min:.3f} mm needs a shaper with "
-                        f"z0 <= {z0_max} (r0 < |rho|)")
-    # the smallest smoothing that would work beyond delta_max
-    more = ""
-    if delta_max < math.pi / 4:
-        for d in np.linspace(delta_max, math.pi / 4, 25)[1:]:
-            s, LL, gg = _evaluate(law, float(d), cutter, z_H)
-            if gg is not None and gg.ok:
-                more = f"; delta = {d:.4f} rad would work"
-                break
-        else:
-            more = "; no delta up to pi/4 works"
-    return InputError("delta_max", delta_max,
-                      "no blend half-width up to delta_max makes both pitch curves generable",
-                      " | ".join(bits) + more)
+def whole_pitches(perimeter: float, m: float) -> int:
+    """Number z_H of pitches pi m on a closed pitch curve of this perimeter; InputError naming
+    ``m`` unless it is whole (within ``policy.TOOTH_COUNT_TOL``)."""
+    z = perimeter / (math.pi * m)
+    if not abs(z - round(z)) < TOOTH_COUNT_TOL:
+        raise InputError("m", m, f"the driven pitch curve ({perimeter:.6f} mm) holds {z:.6f} pitches, not a whole number")
+    return int(round(z))

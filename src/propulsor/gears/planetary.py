@@ -29,7 +29,8 @@ from ..policy import (
     PLANET_TIP_CLEARANCE_MIN_MODULE,
     PLANETARY_COAXIALITY_TOL_MM,
 )
-from .involute import BasicRack, GearPair, SpurGear, x_sum_for_centre_distance
+from .gear_pair import GearPair
+from .involute import BasicRack, SpurGear, x_sum_for_centre_distance
 
 __all__ = ["Condition", "PlanetarySet"]
 
@@ -49,7 +50,7 @@ class Condition(NamedTuple):
 class PlanetarySet:
     """Sun / planets / fixed ring with profile shifts, the ring cut by a shaper (z0, x0).
 
-    Defaults are the thesis's final drive (seed 004 ch. 4, SPEC §6) with its printed ring shift
+    Defaults are the thesis's final drive (seed 004 ch. 4) with its printed ring shift
     1.417 — which fails coaxiality; pass ``x_ring=PlanetarySet().ring_shift_for_coaxiality()``
     (= 1.5) for the corrected set.
     """

@@ -33,7 +33,7 @@ import numpy as np
 
 from propulsor.errors import InputError, require_finite, require_positive
 from propulsor.policy import SECTOR_ITER_TOL_RAD
-from propulsor.laws.walking import HubSpeedRipple, WalkingLaw, wrap_leg
+from propulsor.laws.walking import LEG_PERIOD, HubSpeedRipple, WalkingLaw, check_n_closes, wrap_leg
 
 #: convergence of the papers' iterations; the papers state 1e-6 rad (seed 000,
 #: eqs. 28-31, 49-51) but their printed tables are the converged, symmetric
@@ -57,14 +57,6 @@ WHEEL_POINT_COLUMNS = (
     "i", "j", "alpha_rad", "alpha_deg", "inv_rad", "inv_deg",
     "phi_rad", "phi_deg", "phi_s_rad", "phi_s_deg", "r_H_mm",
 )
-
-
-def _check_n_closes(n: int) -> None:
-    if 4 % n != 0:
-        raise InputError(
-            "n", n,
-            "the driver pitch curve repeats every n*pi/2 and closes only if n divides the 4 legs: n in {1, 2, 4}",
-        )
 
 
 def _rows(columns, arrays) -> list[dict]:
@@ -200,7 +192,7 @@ def sector_table(law: WalkingLaw, L: float, i: int, tol: float = SECTOR_TOL_RAD,
     """
     if not isinstance(law, WalkingLaw):
         raise InputError("law", law, "must be a WalkingLaw")
-    _check_n_closes(law.n)
+    check_n_closes(law.n)
     L = require_positive("L", L, "mm")
     fi = require_finite("i", i)
     if fi != round(fi) or fi < 2:
@@ -341,6 +333,33 @@ def wheel_space_points(table: SectorTable, m: float, j_n: float) -> np.ndarray:
     arrays = [a.ravel() for a in (I, J, alpha, np.degrees(alpha), nu, np.degrees(nu),
                                     ph1, np.degrees(ph1), ph2, np.degrees(ph2), rj)]
     return _structured(WHEEL_POINT_COLUMNS, arrays)
+
+
+def sector_tip_thickness(table: SectorTable, m: float, j_n: float) -> tuple[float, float]:
+    """Least tip-land thickness (mm) of the driver teeth and of the driven-wheel teeth of the
+    sector method (seed 002 Tables 3-4 rules; the driven tooth between spaces i and i+1 has the
+    tip radius r_H(i+1) + m)."""
+    r, rH = table.r, table.r_H
+    rb, rbH = r - m, rH - m
+    nu3 = involute(np.arccos(rb / r))
+    nu5 = involute(np.arccos(rb / (r + m)))
+    d = j_n / (4 * rb)
+    th1 = table.theta + 0.25 * table.dtheta + d - nu3 + nu5
+    th2 = table.theta + 0.75 * table.dtheta - d + nu3 - nu5
+    t_drv = float(np.min((r + m) * (th2 - th1)))
+    nu3H = involute(np.arccos(rbH / rH))
+    dH = j_n / (4 * rbH)
+    r6 = np.roll(rH, -1) + m
+    nu6 = involute(np.arccos(np.clip(rbH / r6, -1, 1)))
+    ph_s6 = table.phi + 0.75 * table.dphi + dH - nu3H + nu6
+    rHn, rbHn, phn, dphn = np.roll(rH, -1), np.roll(rbH, -1), np.roll(table.phi, -1), np.roll(table.dphi, -1)
+    phn = phn.copy()
+    phn[-1] += LEG_PERIOD
+    nu3n = involute(np.arccos(rbHn / rHn))
+    nu5n = involute(np.arccos(rbHn / (rHn + m)))
+    ph_1n = phn + 0.25 * dphn - j_n / (4 * rbHn) + nu3n - nu5n
+    t_dvn = float(np.min(r6 * (ph_1n - ph_s6)))
+    return t_drv, t_dvn
 
 
 def structured_rows(arr: np.ndarray) -> list[dict]:

@@ -33,7 +33,7 @@ from scipy.ndimage import convolve1d, maximum_filter1d
 from scipy.optimize import brentq
 
 from ..errors import InputError, require, require_positive
-from ..policy import SPLINE_FIT_TOL_MM
+from ..policy import GRID_UNIFORM_TOL, OUTLINE_CLOSED_TOL_MM, ROOT_XTOL, ROOT_XTOL_FINE, SPLINE_FIT_TOL_MM
 from .bspline import fit_curve
 from .profile import Arc, Loop, Profile, circle_loop
 
@@ -91,7 +91,7 @@ def _fillet(f: CubicSpline, sign: float, C, R: float, rf: float, x_lo: float, x_
     j = np.nonzero(gv > 0)[0]
     require(len(j) > 0, "fillet", rf, "no fillet between the edge and the boss: the edge stays inside the boss")
     a, b = xs[j[0] - 1], xs[j[0]]
-    x = brentq(g, min(a, b), max(a, b), xtol=1e-12, rtol=1e-14)
+    x = brentq(g, min(a, b), max(a, b), xtol=ROOT_XTOL, rtol=ROOT_XTOL_FINE)
     c = centre(x)
     q = C + (c - C) * (R / float(np.linalg.norm(c - C)))
     return float(x), c, q
@@ -124,7 +124,7 @@ def arm_outline(length: float, r_boss0: float, r_boss1: float, grid: np.ndarray,
     L = require_positive("length", length, "mm")
     grid = np.asarray(grid, float)
     ds = float(grid[1] - grid[0])
-    require(np.allclose(np.diff(grid), ds, rtol=1e-9, atol=1e-9), "grid", "non-uniform", "stations must be uniform")
+    require(np.allclose(np.diff(grid), ds, rtol=GRID_UNIFORM_TOL, atol=GRID_UNIFORM_TOL), "grid", "non-uniform", "stations must be uniform")
     require(grid[0] <= 0.0 and grid[-1] >= L, "grid", (grid[0], grid[-1]), f"must cover [0, {L:g}] mm")
     top = np.maximum(np.asarray(top_req, float), 0.0)
     bot = np.maximum(np.asarray(bottom_req, float), 0.0)
@@ -163,7 +163,7 @@ def arm_outline(length: float, r_boss0: float, r_boss1: float, grid: np.ndarray,
         _arc(C0, qt0, qb0, ccw=True),
     ]
     loop = Loop(segs)
-    require(loop.is_closed(1e-7), "outline", float(loop.gaps().max()), "arm outline does not close")
+    require(loop.is_closed(OUTLINE_CLOSED_TOL_MM), "outline", float(loop.gaps().max()), "arm outline does not close")
     hole_loops = [circle_loop(r, (x, y), ccw=False) for (x, y, r) in holes]
     prof = Profile(loop, hole_loops, name="arm")
     return ArmOutline(prof, L, grid, top_s, bot_s,

@@ -19,7 +19,7 @@ in the CAD frame by the rotation π + φ about its origin, then the translation 
 the ground normal of eq. 1).  Carrier frame: the carrier at angle 0 has its slot j along
 u(2πj/n); it turns by φ about the origin.
 
-Cam channel (closed-track cam, SPEC §4): the working wall is the roller envelope of eq. 9–10
+Cam channel (closed-track cam, seed 001): the working wall is the roller envelope of eq. 9–10
 at exactly r from the roller-centre path (the springs and the ground load press the roller
 onto it, so the designed H(φ) is where the roller runs); the outer guide wall is the
 envelope at r + channel clearance, on the far side.  The channel is thus 2r + clearance wide.
@@ -36,7 +36,7 @@ from scipy.optimize import brentq
 from ..errors import InputError, require
 from ..laws.cam_motion import CamMotion
 from ..laws.shoe import shoe_table
-from ..policy import SPLINE_FIT_TOL_MM
+from ..policy import OUTLINE_CLOSED_TOL_MM, PATH_CLOSURE_TOL_MM, ROOT_XTOL_FINE, SPLINE_FIT_TOL_MM
 from .bspline import fit_curve
 from .profile import Arc, Line, Loop, Profile, Spline, circle_loop
 
@@ -80,7 +80,7 @@ def _closed_spline_loop(func, breaks, tol: float) -> Loop:
     first = segs[0].start
     last = segs[-1]
     gap = float(np.linalg.norm(last.end - first))
-    require(gap <= 1e-6, "closed curve gap", gap, "must be <= 1e-6 mm (periodic path)")
+    require(gap <= PATH_CLOSURE_TOL_MM, "closed curve gap", gap, "must be <= 1e-6 mm (periodic path)")
     poles = last.poles.copy()
     poles[-1] = first
     segs[-1] = Spline(last.knots, poles, last.degree)
@@ -181,14 +181,14 @@ def shoe_profile(motion: CamMotion, rim: float, boss_width: float, mount_y: floa
     half = 0.5 * boss_width
     # X of the inner rim is (Y2 − rim)·sin ψ: monotone while Y2 > rim
     Y2 = shoe_table(sup, np.linspace(-s, s, 721)).Y2
-    require(float(Y2.min()) > rim + half, "shoe_rim_mm", rim,
+    require(float(Y2.min()) > rim + half, "rim", rim,
             f"must be < Y2_min − boss half width = {float(Y2.min()) - half:.4g} mm (seed 001 eq. 7)")
 
     def x_inner(u, target):
         return float(inner_f(np.array([u]))[0, 0]) - target
 
-    psi_p = brentq(x_inner, 0.0, s, args=(half,), xtol=1e-14)
-    psi_m = brentq(x_inner, -s, 0.0, args=(-half,), xtol=1e-14)
+    psi_p = brentq(x_inner, 0.0, s, args=(half,), xtol=ROOT_XTOL_FINE)
+    psi_m = brentq(x_inner, -s, 0.0, args=(-half,), xtol=ROOT_XTOL_FINE)
     curve = [fit_curve(outer_f, -s, 0.0, tol=tol), fit_curve(outer_f, 0.0, s, tol=tol)]
     inner_p = fit_curve(inner_f, s, psi_p, tol=tol)  # from the +end down to the boss
     inner_m = fit_curve(inner_f, psi_m, -s, tol=tol)  # from the boss out to the −end
@@ -197,7 +197,7 @@ def shoe_profile(motion: CamMotion, rim: float, boss_width: float, mount_y: floa
     inner_p = Spline(inner_p.knots, np.vstack([inner_p.poles[:-1], ip]), inner_p.degree)
     inner_m = Spline(inner_m.knots, np.vstack([im, inner_m.poles[1:]]), inner_m.degree)
     y_boss = float(min(ip[1], im[1]))
-    require(mount_y < y_boss, "leg_mount_mm", mount_y,
+    require(mount_y < y_boss, "mount_y", mount_y,
             f"must be < {y_boss:.4g} mm (the inner rim of the shoe at the boss)")
     segs = [*curve,
             Line(tuple(curve[-1].end), tuple(inner_p.start)),
@@ -208,7 +208,7 @@ def shoe_profile(motion: CamMotion, rim: float, boss_width: float, mount_y: floa
             inner_m,
             Line(tuple(inner_m.end), tuple(curve[0].start))]
     loop = Loop(segs)
-    require(loop.is_closed(1e-7), "shoe outline gap", float(loop.gaps().max()), "must be closed")
+    require(loop.is_closed(OUTLINE_CLOSED_TOL_MM), "shoe outline gap", float(loop.gaps().max()), "must be closed")
     return ShoeGeometry(Profile(loop, [], name="shoe"), (psi_m, psi_p), y_boss, curve, rim)
 
 
@@ -244,9 +244,9 @@ def carrier_profile(n_legs: int, radius: float, slot_width: float, slot_bottom: 
     """Carrier disc with `n_legs` radial slides: slots of width slot_width open at the rim,
     from the radius slot_bottom outward, slot j along u(2πj/n) (carrier frame)."""
     h = 0.5 * slot_width
-    require(h < radius, "leg_width_mm", slot_width, f"slot must be narrower than the carrier diameter {2 * radius:g} mm")
+    require(h < radius, "slot_width", slot_width, f"slot must be narrower than the carrier diameter {2 * radius:g} mm")
     L = math.sqrt(radius * radius - h * h)
-    require(slot_bottom < L, "carrier_radius_mm", radius, f"must reach beyond the slot bottom {slot_bottom:.4g} mm")
+    require(slot_bottom < L, "radius", radius, f"must reach beyond the slot bottom {slot_bottom:.4g} mm")
     segs = []
     corners = []
     for j in range(n_legs):
@@ -264,7 +264,7 @@ def carrier_profile(n_legs: int, radius: float, slot_width: float, slot_bottom: 
             a1 += 2.0 * math.pi
         segs.append(Arc((0.0, 0.0), radius, a0, a1))  # ends on the next slot's corner (to rounding)
     loop = Loop(segs)
-    require(loop.is_closed(1e-7), "carrier outline gap", float(loop.gaps().max()), "must be closed")
+    require(loop.is_closed(OUTLINE_CLOSED_TOL_MM), "carrier outline gap", float(loop.gaps().max()), "must be closed")
     prof = Profile(loop, [circle_loop(0.5 * bore_diameter, ccw=False), *bolt_holes], name="carrier")
     return CarrierGeometry(prof, h, slot_bottom, L)
 

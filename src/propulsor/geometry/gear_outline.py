@@ -17,9 +17,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import InputError, require, require_positive
-from ..gears.generation import GeneratedSide, ShaperCutter, generate_external_side, generate_internal_side
+from ..gears.cutters import ShaperCutter
+from ..gears.generation import GeneratedSide, generate_external_side, generate_internal_side
 from ..gears.involute import BasicRack
-from ..policy import SPLINE_FIT_TOL_MM
+from ..policy import OUTLINE_JOINT_TOL_MM, SPLINE_FIT_TOL_MM
 from .bspline import fit_curve
 from .profile import Arc, Line, Loop, Profile, Spline, circle_loop
 
@@ -89,7 +90,8 @@ def _pattern(unit: list, z: int) -> Loop:
     return Loop(segs)
 
 
-def _bore_loop(bore_d: float, keyway) -> Loop:
+def bore_loop(bore_d: float, keyway) -> Loop:
+    """Bore of diameter bore_d as a hole (clockwise), with the hub keyway ``keyway`` unless None/False."""
     R = bore_d / 2.0
     if keyway is None or keyway is False:
         return circle_loop(R, ccw=False)
@@ -129,7 +131,7 @@ def external_gear_profile(z: int, m: float, x: float = 0.0, d_a: float | None = 
         bore_d = require_positive("bore_d", bore_d, "mm")
         lim = 2.0 * side.r_f - 2.0 * m
         require(bore_d < lim, "bore_d", bore_d, f"must leave a rim of one module under the root: < {lim:.3f} mm")
-        holes.append(_bore_loop(bore_d, keyway))
+        holes.append(bore_loop(bore_d, keyway))
         if keyway is not None and keyway is not False:
             t2 = keyway_for_shaft(bore_d)[1] if keyway is True else float(keyway[1])
             require(bore_d / 2 + t2 < side.r_f - 0.5 * m, "keyway t2", t2, "keyway reaches the tooth root")
@@ -161,7 +163,7 @@ def internal_gear_profile(z: int, m: float, x: float, d_a: float, z0: int, x0: f
     if outer_d is None:
         outer_d = 2.0 * side.r_f + 6.0 * m
     outer_d = require_positive("outer_d", outer_d, "mm")
-    require(outer_d > 2.0 * side.r_f + 1e-6, "outer_d", outer_d, f"must exceed the root diameter {2 * side.r_f:.4f} mm")
+    require(outer_d > 2.0 * side.r_f + OUTLINE_JOINT_TOL_MM, "outer_d", outer_d, f"must exceed the root diameter {2 * side.r_f:.4f} mm")
     prof = Profile(circle_loop(outer_d / 2.0), [_pattern(unit, z)], name=f"ring z={z} m={m} x={x}")
     return GearOutline(prof, side, z, m, x, 2 * side.r_a, 2 * side.r_f, 2 * side.r_Ff,
                        [side.undercut] * z, fil, fla)

@@ -33,6 +33,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError, require_finite, require_positive
+from ..policy import SPLINE_FIT_TOL_MM
 from .bspline import fit_curve
 from .profile import Arc, Loop, Spline
 
@@ -138,7 +139,7 @@ class InvoluteSpline:
         return float(T_Nmm) / (self.S_F * require_positive("spline_length", length_mm, "mm"))
 
     # -- the hole of the hub ----------------------------------------------------------------
-    def hub_hole_loop(self, tol: float = 1e-5) -> Loop:
+    def hub_hole_loop(self, tol: float = SPLINE_FIT_TOL_MM) -> Loop:
         """Closed outline of the internal spline (the hole), centred on the origin, one space on +x.
 
         Per space: involute flank (B-spline within tol of the exact involute), flat-root arc on

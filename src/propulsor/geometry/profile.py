@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.interpolate import BSpline
 
-from ..policy import CHORD_TOL_MM
+from ..policy import CHORD_TOL_MM, OUTLINE_JOINT_TOL_MM
 
 
 def _rot(a: float) -> np.ndarray:
@@ -162,7 +162,7 @@ class Loop:
         s = self.segments
         return np.array([np.linalg.norm(s[i].end - s[(i + 1) % len(s)].start) for i in range(len(s))])
 
-    def is_closed(self, tol: float = 1e-6) -> bool:
+    def is_closed(self, tol: float = OUTLINE_JOINT_TOL_MM) -> bool:
         return bool(np.all(self.gaps() <= tol))
 
     def polyline(self, chord_tol: float = CHORD_TOL_MM) -> np.ndarray:

@@ -65,7 +65,9 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.optimize import brentq
 
+from propulsor.check import Check
 from propulsor.errors import InputError, require_finite, require_positive
+from propulsor.policy import ROOT_XTOL, SECTION_DEPTH_XTOL_MM, STATICS_REL_TOL
 from propulsor.laws.suspension import SuspensionDesign
 
 #: yield strength of 40ХН2МА after quench 850 C and temper, MPa (seed 004, §8.3)
@@ -75,22 +77,10 @@ RHO_STEEL = 7.85e-6
 
 
 # ------------------------------------------------------------------- records
-@dataclass(frozen=True)
-class Check:
-    """One engineering check: value against limit; ok when value <= limit (or >= for 'min')."""
-
-    name: str
-    value: float
-    limit: float
-    unit: str
-    kind: str = "max"  # "max": value <= limit; "min": value >= limit
-    note: str = ""
-
-    @property
-    def ok(self) -> bool:
-        if self.kind == "max":
-            return bool(self.value <= self.limit)
-        return bool(self.value >= self.limit)
+def _limit_check(name: str, value: float, limit: float, unit: str, kind: str = "max", note: str = "") -> Check:
+    """value <= limit (kind "max") or value >= limit (kind "min"); the message is the note or the name."""
+    passed = value <= limit if kind == "max" else value >= limit
+    return Check(name, bool(passed), value, limit, unit, note or name)
 
 
 @dataclass(frozen=True)
@@ -318,7 +308,7 @@ def kt_shoulder_fillet(D: float, d: float, r: float, load: str = "bending") -> f
 
 
 # ------------------------------------------------------------------ statics
-def _moment_about(loads, p) -> np.ndarray:
+def moment_about(loads, p) -> np.ndarray:
     """Sum of (r - p) x F over the loads, N mm (3-vector)."""
     M = np.zeros(3)
     for L in loads:
@@ -340,7 +330,7 @@ class Reactions:
     def residual(self, loads) -> tuple[np.ndarray, np.ndarray]:
         """Force and moment (about O) of loads + reactions: both ~0 when balanced."""
         F = sum((np.array([L.F_x, L.F_y, 0.0]) for L in loads), np.zeros(3)) + self.bearing1 + self.bearing2
-        M = (_moment_about(loads, (0, 0, 0))
+        M = (moment_about(loads, (0, 0, 0))
              + np.cross([0.0, 0.0, self.z1], self.bearing1)
              + np.cross([0.0, 0.0, self.z2], self.bearing2)
              + np.array([0.0, 0.0, self.bar_torque]))
@@ -351,7 +341,7 @@ def reactions(loads, a1: float, a2: float) -> Reactions:
     """Bearing forces and bar torque balancing the loads (bearings at z = -a1, -a2)."""
     z1, z2 = -float(a1), -float(a2)
     F = sum((np.array([L.F_x, L.F_y, 0.0]) for L in loads), np.zeros(3))
-    M = _moment_about(loads, (0, 0, 0))
+    M = moment_about(loads, (0, 0, 0))
     # bearing j at (0, 0, z_j) with force (Bx, By, 0): moment (-z_j By, z_j Bx, 0)
     A = np.array([[1.0, 1.0], [z1, z2]])
     Bx = np.linalg.solve(A, [-F[0], -M[1]])
@@ -424,7 +414,7 @@ def equal_strength_depth(forces: dict, geom: BalancerGeometry, sigma_allow: floa
             raise InputError("h_max", geom.h_max, f"even h_max leaves sigma_vM > {sa:g} MPa at a station; "
                              "widen the arm (b) or raise h_max")
         else:
-            h[i] = brentq(g, geom.h_min, geom.h_max, xtol=1e-9, rtol=1e-12)
+            h[i] = brentq(g, geom.h_min, geom.h_max, xtol=SECTION_DEPTH_XTOL_MM, rtol=ROOT_XTOL)
     return h
 
 
@@ -496,7 +486,7 @@ class BalancerAnalysis:
         rows = []
         for c in self.cases:
             # upper axle root at the inboard arm face: moment of all loads about (0, 0, -b/2)
-            M = _moment_about(c.loads, (0.0, 0.0, -g.b / 2.0))
+            M = moment_about(c.loads, (0.0, 0.0, -g.b / 2.0))
             Mb, Mt = math.hypot(M[0], M[1]), abs(M[2])
             Wb_u = math.pi * (g.d_upper**4 - g.d_upper_bore**4) / (32.0 * g.d_upper)
             sb = Mb / Wb_u
@@ -506,7 +496,7 @@ class BalancerAnalysis:
                          "sigma_vM_peak": math.sqrt((kb_u * sb) ** 2 + 3 * (kt_u * tt) ** 2)})
             # wheel spindle root at the outboard arm face: loads acting on the spindle only
             sp = [L for L in c.loads if L.s == R and L.z > g.b / 2.0]
-            M = _moment_about(sp, (R, 0.0, g.b / 2.0))
+            M = moment_about(sp, (R, 0.0, g.b / 2.0))
             Mb = math.hypot(M[0], M[1])
             sb = Mb / (math.pi * (g.d_lower**4 - g.d_lower_bore**4) / (32.0 * g.d_lower))
             rows.append({"case": c.name, "where": "wheel spindle fillet", "K_t_bending": kb_l, "K_t_torsion": 1.0,
@@ -538,20 +528,20 @@ class BalancerAnalysis:
             r = reactions(c.loads, self.geom.a1, self.geom.a2)
             F, M = r.residual(c.loads)
             scale = max(abs(L.F_y) for L in c.loads) * tor.R_b
-            checks.append(Check(f"{c.name}: statics residual", float(np.linalg.norm(F) + np.linalg.norm(M) / tor.R_b),
-                                1e-9 * scale / tor.R_b, "N"))
-            checks.append(Check(f"{c.name}: bar torque vs M_T(beta_m)",
+            checks.append(_limit_check(f"{c.name}: statics residual", float(np.linalg.norm(F) + np.linalg.norm(M) / tor.R_b),
+                                STATICS_REL_TOL * scale / tor.R_b, "N"))
+            checks.append(_limit_check(f"{c.name}: bar torque vs M_T(beta_m)",
                                 abs(r.bar_torque - (-c.bar_torque_expected)) / c.bar_torque_expected,
-                                1e-9, "-", note="bar reacts the characteristic's torque"))
+                                STATICS_REL_TOL, "-", note="bar reacts the characteristic's torque"))
             sm = float(np.max(sig_const[c.name]))
-            checks.append(Check(f"{c.name}: constant arm sigma_vM", sm, self.sigma_allow, "MPa"))
-            checks.append(Check(f"{c.name}: equal-strength arm sigma_vM", float(np.max(sig_eq[c.name])),
-                                self.sigma_allow * (1 + 1e-9), "MPa"))
+            checks.append(_limit_check(f"{c.name}: constant arm sigma_vM", sm, self.sigma_allow, "MPa"))
+            checks.append(_limit_check(f"{c.name}: equal-strength arm sigma_vM", float(np.max(sig_eq[c.name])),
+                                self.sigma_allow * (1 + STATICS_REL_TOL), "MPa"))
         for row in self.transitions():
-            checks.append(Check(f"{row['case']}: {row['where']} safety factor",
+            checks.append(_limit_check(f"{row['case']}: {row['where']} safety factor",
                                 self.sigma_yield / row["sigma_vM_peak"], self.safety, "-", kind="min",
                                 note=f"K_t = {row['K_t_bending']:.3f} (Peterson)"))
-        checks.append(Check("torsion bar shear at beta_m", float(tor.tau(tor.beta_m)), tor.tau_max, "MPa"))
+        checks.append(_limit_check("torsion bar shear at beta_m", float(tor.tau(tor.beta_m)), tor.tau_max, "MPa"))
         m_eq, sc_eq = self.arm_mass(h_eq)
         m_c, sc_c = self.arm_mass(self.geom.h)
         return {

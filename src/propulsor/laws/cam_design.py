@@ -1,4 +1,4 @@
-"""Choice of the curvature law of the fixed cam (seed 001, after eq. 29; SPEC §4).
+"""Choice of the curvature law of the fixed cam (seed 001, after eq. 29).
 
 Seed 001 only says: integrate eq. 20 for several k0 (k1) and keep the variant with
 admissible contact stress "at optimal values of the other parameters".  Ours: evaluate a

@@ -1,6 +1,6 @@
 """Fixed cam of the driven wheel-walking propulsor: the roller-centre path H(φ) (seed 001).
 
-Mechanism (seed 001, fig. 3; SPEC §4): a cam is fixed on the axle O2, a carrier turns
+Mechanism (seed 001, fig. 3): a cam is fixed on the axle O2, a carrier turns
 around it, ``n_legs`` legs slide radially in the carrier, each with a roller of radius
 ``r`` rolling on the cam (closed track: springs plus a guide channel).  φ is the carrier
 angle of a leg counted from the downward vertical; a leg supports the vehicle for
@@ -58,8 +58,8 @@ TWO_PI = 2.0 * math.pi
 
 @dataclass(frozen=True)
 class CamMechanism:
-    """Parameters of the driven propulsor (seed 001, eq. 6, 14–15).  Defaults are ours
-    (SPEC §4): hub height R0 + r + C = 320 mm as the driving propulsor; b, P, E ours.
+    """Parameters of the driven propulsor (seed 001, eq. 6, 14–15).  Defaults are ours:
+    hub height R0 + r + C = 320 mm as the driving propulsor; b, P, E ours.
 
     R0: radius of the cam's initial circle, mm; r: roller radius, mm; C: shoe stand
     length, mm; n_legs: number of legs (4 in the seed); b: contact line length of the
@@ -212,22 +212,6 @@ _GL_X = 0.5 * (_GL_X + 1.0)  # nodes on [0, 1]
 _GL_W = 0.5 * _GL_W
 
 
-def _sinc(x):
-    """sin x / x (1 at 0)."""
-    return np.sinc(np.asarray(x, dtype=float) / math.pi)
-
-
-def _dsinc(x):
-    """d/dx (sin x / x), without cancellation near 0."""
-    x = np.asarray(x, dtype=float)
-    small = np.abs(x) < 1e-2
-    xs = np.where(small, 1.0, x)
-    big = (xs * np.cos(xs) - np.sin(xs)) / (xs * xs)
-    x2 = x * x
-    ser = x * (-1.0 / 3.0 + x2 * (1.0 / 30.0 - x2 * (1.0 / 840.0 - x2 / 45360.0)))
-    return np.where(small, ser, big)
-
-
 class SupportPath:
     """Solution of seed 001 eq. 20 over the support phase, with dense output.
 
@@ -248,7 +232,7 @@ class SupportPath:
         """(H, γ) at φ ∈ [−φs, φs] from the dense output."""
         phi = np.atleast_1d(np.asarray(phi, dtype=float))
         s = self.mech.phi_s
-        if np.any(np.abs(phi) > s * (1 + 1e-12)):
+        if np.any(np.abs(phi) > s * (1 + policy.REL_ROUNDING_TOL)):
             raise InputError("phi", float(np.max(np.abs(phi))), f"support phase is |φ| <= {s:.6g} rad")
         H = np.empty_like(phi)
         g = np.empty_like(phi)
@@ -463,7 +447,8 @@ def _min_gamma_return(end_a: tuple, end_b: tuple, a: float, b: float) -> ReturnC
     lo = min(end_a[0], end_b[0])
     free = ReturnCurve.build(end_a, end_b, a, b, None)
     hi = max(float(free.derivs(np.array([math.pi]), 0)[0][0]), lo)
-    res = minimize_scalar(peak, bounds=(0.5 * lo, hi + 1e-9), method="bounded", options={"xatol": 1e-6})
+    res = minimize_scalar(peak, bounds=(0.5 * lo, hi + policy.RETURN_TOP_SLACK), method="bounded",
+                          options={"xatol": policy.RETURN_TOP_XATOL})
     return ReturnCurve.build(end_a, end_b, a, b, float(res.x))
 
 

@@ -24,13 +24,30 @@ self-intersection as a polyline.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 from scipy.optimize import minimize_scalar
 
 from propulsor import policy
-from propulsor.laws.cam_motion import CamMotion, SupportPath, _dsinc, _sinc
+from propulsor.laws.cam_motion import CamMotion, SupportPath
+
+
+def _sinc(x):
+    """sin x / x (1 at 0)."""
+    return np.sinc(np.asarray(x, dtype=float) / math.pi)
+
+
+def _dsinc(x):
+    """d/dx (sin x / x), without cancellation near 0."""
+    x = np.asarray(x, dtype=float)
+    small = np.abs(x) < policy.SINC_SERIES_BELOW
+    xs = np.where(small, 1.0, x)
+    big = (xs * np.cos(xs) - np.sin(xs)) / (xs * xs)
+    x2 = x * x
+    ser = x * (-1.0 / 3.0 + x2 * (1.0 / 30.0 - x2 * (1.0 / 840.0 - x2 / 45360.0)))
+    return np.where(small, ser, big)
 
 
 @dataclass

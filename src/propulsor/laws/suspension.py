@@ -29,45 +29,27 @@ Body pitch and dampers (seed 004, §2.1.1, §2.1.5-2.1.6):
     R_k,comp_max = (G_p zdd - c n h g) / g / (2 n_a)             eq. 27
     R_a,comp_max = R_k,comp_max * (rod/wheel force ratio),  R_a,reb_max = P(f_full) * (ratio)   eq. 28
 
-What the seed's printed numbers pin down (checked in tests/test_suspension.py):
+Where the seed's printed numbers disagree (each pinned in tests/test_suspension.py):
 
-* d_T = 46 mm, L_T = 2000 mm, [tau] = 1600 MPa, G = 83 000 MPa give gamma_m = 96.043 deg
-  (printed 96.043) and, with P_st = 31 490 N, R_b = 360 mm, beta_st = 43.144 deg,
-  gamma_st = 24.348 deg (printed 24.358: the seed's own c' = 2.138e5 N/m below is
-  reproduced only with gamma_st in 24.32 ... 24.35 deg, so the printed 24.358 is
-  inconsistent with the seed's later numbers at its last digit).
-* The seed prints beta_0 = 19, beta_m = 115 (whole degrees) but computes f_full from the
-  unrounded angles (18.796 deg, 114.839 deg): f_st = 78.13 mm, f_full = 492.03 mm.
-* lambda_ut from eq. 16 with d_T = 46 mm is 813.9 mm, 1.0 % below the printed 822 mm;
-  eq. 16 with the unrounded eq. 6 diameter d_T_dyn = 46.21 mm gives 821.5 mm, within
-  0.06 % of the printed value - the likeliest source of the seed's 0.822.
-  With the printed lambda_ut = 0.822 m and f_full = 0.49203 m, eq. 24 gives
-  c' = 2.138e5 N/m as printed.
-* The tangent stiffness of eq. 13 at beta_st is 164 522 N/m - the seed's "c = 164 400 N/m"
-  (also Table 11) within 0.08 %; eq. 27 asks for exactly this "stiffness near the
-  static travel" and gives 2.134e4 N with it.
-* T_phi = 1.8 s is the upper end of the recommended 0.5 ... 1.8 s band; the seed says its
-  c = 164 400 N/m comes from eq. 1 at T_phi = 1.8 s, which cannot be re-checked (the l_i
-  are not printed; 8 wheels over the 6.846 m base give sum l_i^2 >= 2 (3.423 m)^2 =
-  23.4 m^2, hence T_phi <= 1.47 s with c = 164 400 N/m and I_y = 421 100 kg m^2).  eq. 25 with c' = 2.138e5, T_phi = 1.8 s
-  gives 5.229e4 (printed 5.229e4); eq. 27 with G_p = 473 000 N, c = 164 400 N/m,
-  n = 8, h = 0.05 m, n_a = 4 gives 2.134e4 N (printed).  The wheel positions l_i are
-  not printed, so eq. 23 cannot be re-run on the seed's data: its mu_k,mean = 3.426e4
-  with I_y = 421 100 kg m^2 and T_phi = 1.8 s would need sum l_j^2 (dampers, 16.4 m^2)
-  larger than sum l_i^2 (all wheels, 12.0 m^2) - impossible; the formula itself is
-  verified against the log decrement of a damped pitch oscillator instead.
+* gamma_st: eq. 8 gives 24.348 deg, printed 24.358; the seed's own c' = 2.138e5 N/m needs
+  24.32 ... 24.35 deg, so the printed value is off in its last digit.
+* beta_0 = 19, beta_m = 115 deg are printed rounded; f_st = 78.13 mm and f_full = 492.03 mm
+  follow from the unrounded 18.796 and 114.839 deg.
+* lambda_ut: eq. 16 gives 813.9 mm at d_T = 46 mm, printed 822 mm; the unrounded eq. 6
+  diameter 46.21 mm gives 821.5 mm (the likeliest source); eq. 24 with 0.822 m gives the
+  printed c' = 2.138e5 N/m.
+* "c = 164 400 N/m" (also Table 11) is the tangent stiffness of eq. 13 at beta_st
+  (164 522 N/m, 0.08 %), not eq. 1 at T_phi = 1.8 s: eq. 1 cannot be re-run (the l_i are not
+  printed) and 8 wheels over 6.846 m give T_phi <= 1.47 s with it.  eq. 25 and eq. 27 reproduce
+  their printed 5.229e4 and 2.134e4 N; eq. 23's printed mu_k,mean = 3.426e4 would need
+  sum l_j^2 of the dampers above sum l_i^2 of all wheels, impossible - the formula is tested
+  against the log decrement of a damped pitch oscillator instead.
 
-Damper lever ratio (eq. 28): the seed writes i = V_k / V_rod = R_b / L_a = 0.453 and
-R_a = R_k * i.  Taken literally ("literal") the damper ear sits at L_a = R_b / i = 795 mm,
-more than twice the 360 mm balancer, and the rod force is 0.453 x the wheel force
-(max 42.4 kN), for which a 20 MPa damper needs a 52 mm piston.  Read as a lever
-("lever", the default): i = L_a / R_b = V_rod / V_k = 0.453, the ear at 163 mm on the
-balancer, rod force = wheel force / i (max 206.6 kN), needing a 114.7 mm piston at
-20 MPa - the seed adopts D_p = 0.11 m.  Only the lever reading reproduces the printed
-piston diameter (sized here on the full piston area; the seed's sizing formula is not
-printed), so it is the default; the literal reading stays available.  The seed's
-"V_rod = V_kr / i = 1.273 m/s" follows the literal formula but V_kr is not printed, so it
-cannot discriminate between the readings.
+Damper lever ratio (eq. 28), i = 0.453: read literally (i = R_b / L_a, R_a = R_k i) the ear
+sits at 795 mm on a 360 mm balancer and needs a 52 mm piston at 20 MPa; read as a lever
+(i = L_a / R_b, rod force = wheel force / i, the default "lever") the ear sits at 163 mm and
+needs 114.7 mm - the seed adopts D_p = 0.11 m, so only the lever reading reproduces it.  The
+literal reading stays available.
 """
 
 from __future__ import annotations
@@ -78,6 +60,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from propulsor.errors import InputError, require_finite, require_positive
+from propulsor.policy import POSITION_EQUAL_TOL_M, REL_ROUNDING_TOL
 
 #: standard gravity used by the seed (m/s^2)
 G_ACC = 9.81
@@ -282,7 +265,7 @@ class TorsionSuspension:
             raise InputError("beta_m_deg", math.degrees(self.beta_m),
                              "must be < 180 deg (P(beta) = M / (R_b sin beta) is singular there)")
         tau_m = self.tau(self.beta_m)
-        if tau_m > self.tau_max * (1.0 + 1e-12):
+        if tau_m > self.tau_max * (1.0 + REL_ROUNDING_TOL):
             shown = self.beta_m_deg if self.beta_m_deg is not None else round(math.degrees(self.beta_m), 9)
             raise InputError("beta_m_deg", shown,
                              f"torsion bar yields at beta_m: tau = {tau_m:.6g} MPa > [tau] = {self.tau_max:g} MPa "
@@ -456,7 +439,7 @@ class SuspensionDesign:
         if not xa:
             raise InputError("damper_x_m", self.damper_x_m, "need >= 1 damped wheel per side")
         for x in xa:
-            if not any(abs(x - w) <= 1e-9 for w in xs):
+            if not any(abs(x - w) <= POSITION_EQUAL_TOL_M for w in xs):
                 raise InputError("damper_x_m", x, "a damper must sit on a wheel of wheel_x_m")
         if len(set(xa)) != len(xa):
             raise InputError("damper_x_m", self.damper_x_m, "one damper per wheel")

@@ -10,14 +10,14 @@
     omega = 2 pi V / t                                           "track" frequency, §7.2
 
 Checked against the seed text:
-* eq. 76-80 and q_m read as in SPEC §8; q_m is the peak of a semi-elliptic pressure
+* eq. 76-80 and q_m as printed; q_m is the peak of a semi-elliptic pressure
   over the chord l (pi/4 q_m b l = P), lambda_m the sagitta of the chord l.
 * eq. 77 prints n = 60 V / (3.6 pi R): that is the wheel speed only if R is the wheel
   DIAMETER, while eq. 78-80 use R as the radius (lambda_m = l^2/8R is the sagitta of a
   circle of radius R).  This module uses the kinematic n = V / (2 pi R) (rpm as above);
   ``n_rpm(..., as_printed=True)`` gives the printed expression, exactly twice as large.
 * The seed prints no numeric Kozlov example (Table 12 feeds its Simulink model,
-  eq. 81-83, out of scope per SPEC §2).  Its printed numbers reproduced here: the
+  eq. 81-83, not modelled here).  Its printed numbers reproduced here: the
   Table 12 rows omega = 2 pi V / L (L = 0.15 m, V = 4, 7, 20 m/s),
   tmprt_kfcent = 1 / (m c) and flow_coef = V A rho c_air, and the §7.2 estimate of the
   extra track-frequency load 36 kg x 30 g ~ 1000 kgf.

@@ -2,7 +2,7 @@
 
 One leg supports the hub for a quarter turn of the carrier (driven wheel),
 phi in [-pi/4, pi/4]; four legs share the turn, so every quantity below is the
-periodic extension with period pi/2 (SPEC §3, Trap 1): w = wrap(phi) in
+periodic extension with period pi/2 (docs/architecture.md, «drive law»): w = wrap(phi) in
 [-pi/4, pi/4) and cos 2w, never cos 2phi over the whole turn.
 
     Y01 = a - b + c = A                         seed 000, eq. 1
@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from propulsor.errors import InputError, require_finite
+from propulsor.policy import PHI_OF_THETA_TOL_RAD
 
 #: one leg's support phase: the law's period in the driven angle phi (rad)
 LEG_PERIOD = math.pi / 2
@@ -32,7 +33,7 @@ LEGS = 4
 
 
 def wrap_leg(phi):
-    """Leg-local angle w = wrap(phi) into [-pi/4, pi/4) (SPEC §3, Trap 1)."""
+    """Leg-local angle w = wrap(phi) into [-pi/4, pi/4) (docs/architecture.md, «drive law»)."""
     phi = np.asarray(phi, dtype=float)
     return phi - LEG_PERIOD * np.floor((phi + math.pi / 4) / LEG_PERIOD)
 
@@ -41,6 +42,28 @@ def leg_index(phi):
     """Whole number k of leg periods with phi = w + k pi/2, w = wrap_leg(phi)."""
     phi = np.asarray(phi, dtype=float)
     return np.floor((phi + math.pi / 4) / LEG_PERIOD)
+
+
+def check_n_closes(n: int) -> None:
+    """InputError unless n driver turns per driven turn close the pair: the driver pitch curve
+    repeats every n*pi/2, so n must divide the 4 legs."""
+    if 4 % n != 0:
+        raise InputError(
+            "n", n,
+            "the driver pitch curve repeats every n*pi/2 and closes only if n divides the 4 legs: n in {1, 2, 4}",
+        )
+
+
+def invert_theta(law, theta, phi0, tol: float, max_iter: int):
+    """phi with law.theta(phi) = theta: Newton from phi0 on the monotone theta (U > 0), until
+    every step is below tol or after max_iter steps.  ``law``: any law with theta(phi), U(phi)."""
+    phi = phi0
+    for _ in range(max_iter):
+        step = (law.theta(phi) - theta) / law.U(phi)
+        phi = phi - step
+        if np.all(np.abs(step) < tol):
+            break
+    return phi
 
 
 def _length(name: str, value) -> float:
@@ -130,7 +153,7 @@ class WalkingLaw:
         return self.u * self.dX01_dphi(phi) / self.A
 
     def dU_dphi(self, phi):
-        """dU/dphi = -6 b u sin 2w / A (jumps at w = +-pi/4: SPEC Trap 2)."""
+        """dU/dphi = -6 b u sin 2w / A (jumps at w = +-pi/4: docs/architecture.md, «drive law»)."""
         return -6 * self.b * self.u * np.sin(2 * wrap_leg(phi)) / self.A
 
     def d2U_dphi2(self, phi):
@@ -152,20 +175,14 @@ class WalkingLaw:
         """v / omega = (dX01/dphi) / U (mm per rad of the driver); constant = A/u for this law."""
         return self.dX01_dphi(phi) / self.U(phi)
 
-    def phi_of_theta(self, theta, tol: float = 1e-14):
+    def phi_of_theta(self, theta, tol: float = PHI_OF_THETA_TOL_RAD):
         """Inverse of theta(phi) (Newton on the monotone theta, U > 0)."""
         theta = np.asarray(theta, dtype=float)
-        phi = theta * (2 * math.pi) / (2 * math.pi * self.n)
-        for _ in range(60):
-            step = (self.theta(phi) - theta) / self.U(phi)
-            phi = phi - step
-            if np.all(np.abs(step) < tol):
-                break
-        return phi
+        return invert_theta(self, theta, theta * (2 * math.pi) / (2 * math.pi * self.n), tol, 60)
 
     # ---- the papers' reading without the wrap (Trap 1 illustration) ------------
     def theta_unwrapped(self, phi):
-        """theta if cos 2phi were (wrongly) used over the whole turn (SPEC Trap 1).
+        """theta if cos 2phi were (wrongly) used over the whole turn (docs/architecture.md, «drive law»).
 
         u/A (A phi + 3b/2 sin 2phi): over a full turn it gives u * 2 pi, i.e.
         1.25 driver turns for seed 000 instead of 2.  Only for demonstration.

@@ -1,7 +1,10 @@
-"""Part types: parameters -> library -> outputs.  The only layer that knows all the others.
+"""Part types: parameters -> design -> proofs -> outputs.  The only layer that knows all the others.
 
-Each part type lives in its own module exposing `PART_TYPE` (a `PartType`).
-Modules are imported on demand so that `propulsor list` / `params` stay quick.
+Each part type is a package (``params``, ``design``, ``proofs``, ``outputs``) exposing `PART_TYPE`
+(a `PartType`); every build runs the one pipeline of :mod:`.pipeline` into the
+:class:`~.writer.OutputWriter` (docs/architecture.md, "The data flow of one build").  Packages are
+imported on demand so that `propulsor list` / `params` stay quick; a part that needs another
+part type's parameters or design looks it up here, it never imports the other part.
 """
 
 from __future__ import annotations
@@ -44,6 +47,7 @@ class PartType:
     summary: str
     params_cls: type
     build: Callable  # build(params, writer) -> None; writer is an OutputWriter
+    design: Callable | None = None  # design(params, ...) -> the part's frozen design
     #: estimate(params, part_file) -> SizeEstimate; may read the files the part file names (InputError)
     estimate: Callable | None = None
 

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from ..checks.result import Check
+from ..check import Check
 from ..parallel import Done, fork_pool
 from ..params import params_to_dict, read_part_meta
 
@@ -108,7 +108,7 @@ class OutputWriter:
 
     def add_checks(self, checks) -> None:
         for c in checks:
-            self.checks.append(c if isinstance(c, Check) else Check(**c))
+            self.checks.append(c)
 
     def add_note(self, text: str) -> None:
         self.notes.append(text)
@@ -141,6 +141,13 @@ class OutputWriter:
             self.add_checks(job.result())
             self.progress(f"{name}: files written and checked")
         self._solid_jobs = []
+
+    def wait_for_files(self, *names: str) -> None:
+        """Wait until the files of the named solids are written (their checks are still collected, in
+        order, by :meth:`wait_solids`)."""
+        for name, job in self._solid_jobs:
+            if name in names:
+                job.result()
 
     def close(self) -> None:
         """Stop the workers (after a failure: nothing may be written into the folder after this)."""

@@ -1,0 +1,292 @@
+"""Envelope of a cutter rolling on a gear centrode: the one centrode protocol of the tooth generator.
+
+Pure math (numpy/scipy).  Millimetres and radians.
+
+Method (Litvin & Fuentes-Aznar, *Noncircular Gears*, 2009, ch. 4; docs/architecture.md, "tooth
+generator"): the cutter centrode (rack: its rolling line; shaper: its rolling circle) rolls without
+slip on the gear centrode (pitch curve).  Both are parametrised by the common arc length ``s`` of
+the rolling, so the cutter pose in the gear frame is
+
+    θ(s) = τ_gear(s) − τ_cutter(s)                    (tangent directions coincide)
+    X(u, s) = G(s) + R(θ(s)) · (P(u) − C(s))          (the contact points coincide)
+
+with P(u) a point of the cutter outline, C(s) / G(s) the cutter / gear centrode points.  Meshing
+equation (Willis' theorem): at the instant of contact the normal of the cutter outline at P passes
+through the instantaneous centre of rotation, i.e. the current centrode contact point C(s).  For
+each cutter point it is solved for s in closed form (rack: the normal meets the rolling line;
+circle: the normal meets the rolling circle), so the envelope is evaluated point by point, exact to
+rounding and vectorised.
+
+**Centrode protocol.**  Every centrode has ``point(s)`` = G(s) (n, 2) and ``angle(s)`` = τ(s) (n,);
+a cutter centrode also has ``contact(P, N)`` = s solving the meshing equation for cutter points P
+with unit normals N.  Cutter centrodes: ``RackCentrode`` (rack), ``ExternalCircleCentrode``
+(shaper outside a gear), ``CircleCentrode`` (shaper inside a ring).  Gear centrodes:
+``CircleCentrode`` (circular gear) and ``PitchCurveCentrode`` (a non-circular pitch curve on the
+shared arc-length frame).
+
+Undercut: the envelope of the tool's straight flank is the involute *and* its mirrored branch beyond
+the cusp on the base circle; when the shift is too small the trochoid of the tool tip round crosses
+it.  The boundary of the cut region is found by trimming that self-intersection (``trim_crossing``).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import brentq, fsolve
+
+from ..errors import InputError
+from ..policy import ENVELOPE_SAMPLES_PER_FLANK, CUSP_XATOL_REL, FD_STEP_REL, ROUNDING_TOL, SOLVE_RESIDUAL_MM
+
+__all__ = [
+    "nearer_circle_crossing", "RackCentrode", "CircleCentrode", "ExternalCircleCentrode", "PitchCurveCentrode",
+    "envelope_points", "EnvelopeCurve", "trim_crossing",
+]
+
+
+def nearer_circle_crossing(P, N, centre, R: float, parameter: str, whose: str) -> np.ndarray:
+    """Meshing equation of a rolling circle: the normal lines P + λN (N unit) cross the circle of
+    radius R about `centre`; of the two crossings the one nearer to P is the pitch point of the
+    contact.  InputError naming `parameter` when a normal misses the circle."""
+    Q = np.asarray(P, float) - np.asarray(centre, float)
+    b = np.einsum("ij,ij->i", Q, N)
+    c = np.einsum("ij,ij->i", Q, Q) - R ** 2
+    disc = b * b - c
+    if np.any(disc < 0):
+        raise InputError(parameter, "normal misses the rolling circle",
+                         f"every generating point's normal must cross the {whose} rolling circle")
+    sq = np.sqrt(disc)
+    l1, l2 = -b + sq, -b - sq
+    lam = np.where(np.abs(l1) <= np.abs(l2), l1, l2)
+    return P + lam[:, None] * N
+
+
+def _rot(theta, v):
+    """Rotate vectors v (n,2) by angles theta (n,) counter-clockwise."""
+    c, s = np.cos(theta), np.sin(theta)
+    return np.column_stack([c * v[:, 0] - s * v[:, 1], s * v[:, 0] + c * v[:, 1]])
+
+
+# =========================================================================== centrodes
+@dataclass(frozen=True)
+class RackCentrode:
+    """Rolling line of a rack cutter: C(s) = (s, 0), tangent angle 0 (cutter frame)."""
+
+    def point(self, s):
+        s = np.atleast_1d(np.asarray(s, float))
+        return np.column_stack([s, np.zeros_like(s)])
+
+    def angle(self, s):
+        return np.zeros_like(np.atleast_1d(np.asarray(s, float)))
+
+    def contact(self, P, N):
+        """Meshing equation: s where the normal line P + λN meets the rolling line y = 0."""
+        lam = -P[:, 1] / N[:, 1]
+        return P[:, 0] + lam * N[:, 0]
+
+
+@dataclass(frozen=True)
+class CircleCentrode:
+    """Circle of radius R about the origin, touched at the top (0, R) at s = 0, run clockwise:
+    G(s) = R(sin(s/R), cos(s/R)), tangent angle −s/R.  Used for a circular gear's pitch
+    circle and for a shaper's rolling circle (shaper inside a ring)."""
+
+    R: float
+
+    def point(self, s):
+        s = np.atleast_1d(np.asarray(s, float))
+        return np.column_stack([self.R * np.sin(s / self.R), self.R * np.cos(s / self.R)])
+
+    def angle(self, s):
+        return -np.atleast_1d(np.asarray(s, float)) / self.R
+
+    def contact(self, P, N):
+        """Meshing equation: the normal line P + λN meets the circle; of the two crossings the
+        one on the same side of the foot of the perpendicular as P (smaller |λ|) is the pitch
+        point of the contact (involute: contact point and pitch point on the same ray of the
+        line of action)."""
+        C = nearer_circle_crossing(P, N, (0.0, 0.0), self.R, "cutter outline", "cutter's")
+        return self.R * np.arctan2(C[:, 0], C[:, 1])
+
+
+@dataclass(frozen=True)
+class ExternalCircleCentrode:
+    """Rolling circle of a shaper cutter outside the gear: centre (0, R) in the cutter frame,
+    touching the rolling line y = 0 at the origin at s = 0, C(s) = (R sin(s/R), R - R cos(s/R)),
+    tangent angle s/R (the cutter frame of ``RackCentrode`` with the line bent into a circle)."""
+
+    R: float
+
+    def point(self, s):
+        s = np.atleast_1d(np.asarray(s, float))
+        return np.column_stack([self.R * np.sin(s / self.R), self.R - self.R * np.cos(s / self.R)])
+
+    def angle(self, s):
+        return np.atleast_1d(np.asarray(s, float)) / self.R
+
+    def contact(self, P, N):
+        """Meshing equation: the normal P + lam N meets the rolling circle; the crossing nearer
+        to P is the pitch point (involute: contact and pitch point on one ray of the line of action)."""
+        C = nearer_circle_crossing(P, N, (0.0, self.R), self.R, "z0", "shaper's")
+        return self.R * np.arctan2(C[:, 0], self.R - C[:, 1])
+
+
+class PitchCurveCentrode:
+    """Gear centrode of a non-circular gear: its pitch curve (``BodyPitchCurve``) run clockwise
+    on the body from the tooth centre s_k of the shared arc-length frame (``ArcFrame``) by the
+    generation arc sg (gear on the right of travel).  ``s_k`` is one tooth centre, or an array
+    of centres matching the generation arcs passed in (many teeth at once)."""
+
+    def __init__(self, curve, frame, s_k):
+        self.curve, self.frame = curve, frame
+        self.s_k = float(s_k) if np.ndim(s_k) == 0 else np.asarray(s_k, float)
+        self._key = None
+
+    def phi(self, sg):
+        sg = np.atleast_1d(np.asarray(sg, float))
+        if self._key is not None and self._key[0] is sg:
+            return self._key[1]
+        ph = self.frame.phi(self.s_k + self.curve.sgn * sg)
+        self._key = (sg, ph)
+        return ph
+
+    def point(self, sg):
+        return self.curve.point(self.phi(sg))
+
+    def angle(self, sg):
+        d = self.curve.sgn * self.curve.dpoint(self.phi(sg))
+        return np.arctan2(d[:, 1], d[:, 0])
+
+
+def envelope_points(piece, u, cutter, gear):
+    """Envelope of one cutter-outline piece in the gear frame.
+
+    For every cutter parameter u: solve the meshing equation for the rolling arc length s,
+    then place the cutter point by the pose of that instant.  Returns (X (n,2), s (n,)).
+    """
+    P = piece.point(u)
+    T = piece.tangent(u)
+    T = T / np.linalg.norm(T, axis=1)[:, None]
+    N = np.column_stack([-T[:, 1], T[:, 0]])
+    s = cutter.contact(P, N)
+    theta = gear.angle(s) - cutter.angle(s)
+    X = gear.point(s) + _rot(theta, P - cutter.point(s))
+    return X, s
+
+
+@dataclass(frozen=True)
+class EnvelopeCurve:
+    """Exact generated curve: envelope of ``piece`` for u in [u0, u1], then mirrored about the
+    y axis (if ``mirror``) and rotated by ``rotation`` about the gear axis."""
+
+    piece: object
+    cutter: object
+    gear: object
+    u0: float
+    u1: float
+    kind: str = ""  # "fillet" | "flank"
+    rotation: float = 0.0
+    mirror: bool = False
+
+    def __call__(self, u):
+        X, _ = envelope_points(self.piece, u, self.cutter, self.gear)
+        if self.mirror:
+            X = X * np.array([-1.0, 1.0])
+        if self.rotation:
+            X = _rot(np.full(len(X), self.rotation), X)
+        return X
+
+    def at(self, u: float) -> np.ndarray:
+        return self(np.array([u]))[0]
+
+    def sample(self, n: int = ENVELOPE_SAMPLES_PER_FLANK) -> np.ndarray:
+        return self(np.linspace(self.u0, self.u1, n))
+
+    def with_range(self, u0, u1) -> "EnvelopeCurve":
+        return EnvelopeCurve(self.piece, self.cutter, self.gear, float(u0), float(u1), self.kind,
+                             self.rotation, self.mirror)
+
+    def rotated(self, angle: float) -> "EnvelopeCurve":
+        return EnvelopeCurve(self.piece, self.cutter, self.gear, self.u0, self.u1, self.kind,
+                             self.rotation + angle, self.mirror)
+
+    def mirrored(self) -> "EnvelopeCurve":
+        return EnvelopeCurve(self.piece, self.cutter, self.gear, self.u0, self.u1, self.kind,
+                             -self.rotation, not self.mirror)
+
+    def param_at_radius(self, r: float) -> float:
+        """Parameter where the curve crosses radius r (must be bracketed by [u0, u1])."""
+        f = lambda u: float(np.hypot(*self.at(u))) - r
+        fa, fb = f(self.u0), f(self.u1)
+        if fa * fb > 0:
+            raise ValueError("radius not bracketed")
+        return brentq(f, self.u0, self.u1, xtol=ROUNDING_TOL, rtol=ROUNDING_TOL, maxiter=200)
+
+
+# =========================================================================== trimming
+def _segment_crossings(A, B):
+    """All crossings of polyline A with polyline B: arrays (i, j, ta, tb)."""
+    a0, a1 = A[:-1, None, :], A[1:, None, :]
+    b0, b1 = B[None, :-1, :], B[None, 1:, :]
+    da, db = a1 - a0, b1 - b0
+    w = b0 - a0
+    den = da[..., 0] * db[..., 1] - da[..., 1] * db[..., 0]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ta = (w[..., 0] * db[..., 1] - w[..., 1] * db[..., 0]) / den
+        tb = (w[..., 0] * da[..., 1] - w[..., 1] * da[..., 0]) / den
+    ok = (np.abs(den) > 0) & (ta >= 0) & (ta <= 1) & (tb >= 0) & (tb <= 1)
+    i, j = np.nonzero(ok)
+    return i, j, ta[i, j], tb[i, j]
+
+
+def _cusp(curve: EnvelopeCurve, n: int = 2000):
+    """Parameter of a cusp (envelope velocity → 0 with reversal) of ``curve``, or None."""
+    v = np.linspace(0.0, 1.0, n)
+    u = curve.u0 + (curve.u1 - curve.u0) * v
+    d = np.diff(curve(u), axis=0)
+    rev = np.nonzero(np.einsum("ij,ij->i", d[:-1], d[1:]) < 0)[0]
+    if len(rev) == 0:
+        return None
+    k = int(rev[0])
+    lo, hi = u[k], u[k + 2]
+    step = FD_STEP_REL * abs(curve.u1 - curve.u0)
+    speed = lambda t: float(np.linalg.norm(curve.at(t + step) - curve.at(t - step)))
+    from scipy.optimize import minimize_scalar
+    res = minimize_scalar(speed, bounds=(min(lo, hi), max(lo, hi)), method="bounded",
+                          options={"xatol": CUSP_XATOL_REL * max(1.0, abs(hi))})
+    return float(res.x)
+
+
+def trim_crossing(first: EnvelopeCurve, second: EnvelopeCurve, n: int = 800):
+    """Where ``first`` (ending where ``second`` starts) crosses ``second`` away from the
+    joint, return the exact crossing parameters (u_first, u_second); None if no crossing.
+
+    If ``second`` has a cusp (the envelope of a straight tool flank beyond the interference
+    point runs back along the mirrored involute branch), only its part after the cusp can
+    bound the cut region, so the crossing is searched there.  The loop between the crossing
+    and the joint lies inside the cut region (undercut): the real boundary is ``first`` up to
+    u_first, then ``second`` from u_second.  Of several crossings the outermost loop is removed
+    (earliest on ``first``, latest on ``second``).  Samples are clustered towards the joint
+    (resp. the cusp) so that the small loops of a slight undercut are found.
+    """
+    v = np.linspace(0.0, 1.0, n)
+    ua = first.u0 + (first.u1 - first.u0) * (1.0 - (1.0 - v) ** 3)
+    uc = _cusp(second)
+    b0 = second.u0 if uc is None else uc
+    ub = b0 + (second.u1 - b0) * v ** 3
+    A, B = first(ua), second(ub)
+    i, j, ta, tb = _segment_crossings(A, B)
+    if uc is None:
+        keep = ~((i >= n - 3) & (j <= 2))  # the joint itself
+        i, j, ta, tb = i[keep], j[keep], ta[keep], tb[keep]
+    if len(i) == 0:
+        return None
+    k = np.lexsort((-j, i))[0]
+    x0 = np.array([ua[i[k]] + ta[k] * (ua[i[k] + 1] - ua[i[k]]), ub[j[k]] + tb[k] * (ub[j[k] + 1] - ub[j[k]])])
+    g = lambda y: first.at(y[0]) - second.at(y[1])
+    sol = fsolve(g, x0, xtol=ROUNDING_TOL, full_output=True)[0]
+    if np.linalg.norm(g(sol)) > SOLVE_RESIDUAL_MM:
+        raise RuntimeError("undercut crossing did not converge")
+    return float(sol[0]), float(sol[1])

@@ -1,0 +1,237 @@
+"""Generability of the non-circular pitch curves and the choice of the law's smoothing.
+
+Pure math (numpy/scipy).  A pitch curve is generable by the ISO 53 rack where it is convex with
+radius of curvature rho >= (h_a* - x) m / sin^2 alpha (rack undercut limit), and by a shaper of
+pitch radius r0 < |rho| where it is concave (docs/architecture.md, "non-circular pair").  The
+smoothing of the law near hand-over (``noncircular.SmoothedWalkingLaw``) is the smallest blend
+half-width delta that keeps both pitch curves generable; the centre distance follows from closure
+at each delta (L = pi m z_H / perimeter); its price is the hub speed ripple.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import InputError, require, require_finite, require_positive
+from ..laws.walking import HubSpeedRipple, WalkingLaw, check_n_closes
+from ..policy import SMOOTHING_DELTA_MIN_RAD, SMOOTHING_DELTA_RTOL
+from .involute import BasicRack
+from .noncircular import (DELTA_MAX_DEFAULT, CurvatureSummary, PitchCurves, SmoothedWalkingLaw, hub_speed_ripple,
+                          perimeter_per_mm, whole_teeth)
+from .noncircular_teeth import ToothSpec
+
+__all__ = ["CutterSpec", "CurveCheck", "Generability", "check_generable", "SmoothingDesign", "choose_smoothing"]
+
+
+@dataclass(frozen=True)
+class CutterSpec:
+    """Generating tools: ISO 53 rack (alpha, h_a*) with profile shifts, optional shaper.
+
+    m: module (mm); alpha: pressure angle (rad); h_a: addendum coefficient h_a*
+    of the generated tooth; x: profile shift coefficient of the driver, x_H of
+    the driven wheel; z0: tooth count of a shaper (pinion) cutter for concave
+    parts (None: no shaper, concave parts are not allowed).
+    """
+
+    m: float
+    alpha: float = math.radians(20.0)
+    h_a: float = 1.0
+    x: float = 0.0
+    x_H: float = 0.0
+    z0: int | None = None
+
+    def __post_init__(self):
+        object.__setattr__(self, "m", require_positive("m", self.m, "mm"))
+        a = require_finite("alpha", self.alpha)
+        if not 0 < a < math.pi / 2:
+            raise InputError("alpha", self.alpha, "pressure angle must be in (0, pi/2) rad")
+        object.__setattr__(self, "h_a", require_positive("h_a", self.h_a))
+        object.__setattr__(self, "x", require_finite("x", self.x))
+        object.__setattr__(self, "x_H", require_finite("x_H", self.x_H))
+        if self.z0 is not None:
+            z0 = require_finite("z0", self.z0)
+            if z0 != round(z0) or z0 < 6:
+                raise InputError("z0", self.z0, "shaper cutter tooth count must be a whole number >= 6")
+            object.__setattr__(self, "z0", int(round(z0)))
+
+    def rho_limit(self, x: float) -> float:
+        """Rack undercut limit rho >= (h_a* - x) m / sin^2 alpha (docs/architecture.md, «non-circular pair»)."""
+        return (self.h_a - x) * self.m / math.sin(self.alpha) ** 2
+
+    @property
+    def r0(self) -> float:
+        """Shaper cutter pitch radius m z0 / 2 (inf if no shaper)."""
+        return math.inf if self.z0 is None else self.m * self.z0 / 2
+
+    def shift(self, role: str) -> float:
+        """Profile shift of one gear of the pair: x of the driver, x_H of the driven wheel."""
+        require(role in ("driver", "driven"), "role", role, "must be 'driver' or 'driven'")
+        return self.x if role == "driver" else self.x_H
+
+    def tooth_spec(self, role: str, rack: BasicRack, thinning_mm: float = 0.0, tip_min_mm: float = 0.0) -> ToothSpec:
+        """The teeth these tools cut on one gear of the pair (``noncircular_teeth.ToothSpec``)."""
+        return ToothSpec(m=self.m, x=self.shift(role), thinning_mm=thinning_mm, rack=rack, z0=self.z0,
+                         tip_min_mm=tip_min_mm)
+
+
+@dataclass(frozen=True)
+class CurveCheck:
+    """Generability of one pitch curve."""
+
+    curve: str
+    rho_convex_min: float
+    rho_limit: float
+    concave: bool
+    rho_concave_min: float
+    r0: float
+    ok: bool
+    reason: str
+
+
+def _check_curve(cs: CurvatureSummary, cutter: CutterSpec, x: float) -> CurveCheck:
+    lim = cutter.rho_limit(x)
+    reasons = []
+    if cs.rho_convex_min < lim:
+        reasons.append(f"{cs.curve}: convex rho_min {cs.rho_convex_min:.3f} mm < rack undercut limit {lim:.3f} mm")
+    if cs.concave:
+        if cutter.z0 is None:
+            reasons.append(f"{cs.curve}: concave (|rho| >= {cs.rho_concave_min:.3f} mm) and no shaper cutter z0 given")
+        elif not cutter.r0 < cs.rho_concave_min:
+            reasons.append(f"{cs.curve}: concave |rho|_min {cs.rho_concave_min:.3f} mm <= shaper pitch radius "
+                           f"{cutter.r0:.3f} mm")
+    return CurveCheck(curve=cs.curve, rho_convex_min=cs.rho_convex_min, rho_limit=lim, concave=cs.concave,
+                      rho_concave_min=cs.rho_concave_min, r0=cutter.r0, ok=not reasons,
+                      reason="; ".join(reasons))
+
+
+@dataclass(frozen=True)
+class Generability:
+    driver: CurveCheck
+    driven: CurveCheck
+
+    @property
+    def ok(self) -> bool:
+        return self.driver.ok and self.driven.ok
+
+
+def check_generable(pair: PitchCurves, cutter: CutterSpec) -> Generability:
+    """Both pitch curves against the rack undercut limit (convex) and shaper / concavity (concave)."""
+    return Generability(
+        driver=_check_curve(pair.curvature("driver"), cutter, cutter.x),
+        driven=_check_curve(pair.curvature("driven"), cutter, cutter.x_H),
+    )
+
+
+@dataclass(frozen=True)
+class SmoothingDesign:
+    """The chosen smoothing: law, centre distance, checks and the price (hub speed ripple)."""
+
+    law: SmoothedWalkingLaw
+    delta: float
+    L: float
+    z_H: int
+    z: int
+    cutter: CutterSpec
+    generability: Generability
+    ripple: HubSpeedRipple
+
+    @property
+    def pair(self) -> PitchCurves:
+        return PitchCurves(self.law, self.L)
+
+    @property
+    def closure_error(self) -> float:
+        """|theta_s(2 pi) - 2 pi n| (rad)."""
+        return abs(float(self.law.theta(2 * math.pi)) - 2 * math.pi * self.law.n)
+
+
+def _evaluate(law: WalkingLaw, delta: float, cutter: CutterSpec, z_H: int):
+    try:
+        sl = SmoothedWalkingLaw(law, delta)
+    except InputError:
+        return None, None, None
+    L = math.pi * cutter.m * z_H / perimeter_per_mm(sl)
+    return sl, L, check_generable(PitchCurves(sl, L), cutter)
+
+
+def choose_smoothing(law: WalkingLaw, cutter: CutterSpec, z_H: int,
+                     delta_max: float = DELTA_MAX_DEFAULT,
+                     rtol: float = SMOOTHING_DELTA_RTOL) -> SmoothingDesign:
+    """Smallest blend half-width delta <= delta_max keeping both pitch curves generable.
+
+    The centre distance follows from closure at each delta: L = pi m z_H / perimeter.
+    Search: geometric scan of delta, then bisection to rtol between the last
+    failing and the first passing delta.  Raises InputError with the numbers
+    (curvature reached, limit, the profile shift / tooth count / smoothing that
+    would work) when no delta up to delta_max works.
+    """
+    if not isinstance(law, WalkingLaw):
+        raise InputError("law", law, "must be a WalkingLaw")
+    check_n_closes(law.n)
+    z_H = whole_teeth("z_H", z_H, law.n)
+    delta_max = require_positive("delta_max", delta_max, "rad")
+    if delta_max > math.pi / 4:
+        raise InputError("delta_max", delta_max, f"must be <= pi/4 = {math.pi / 4:.6f} rad")
+    grid = np.geomspace(SMOOTHING_DELTA_MIN_RAD, delta_max, 40)
+    prev_bad = 0.0
+    found = None
+    for d in grid:
+        sl, L, g = _evaluate(law, float(d), cutter, z_H)
+        if g is not None and g.ok:
+            found = float(d)
+            break
+        prev_bad = float(d)
+    if found is None:
+        raise _no_smoothing_error(law, cutter, z_H, delta_max)
+    lo, hi = prev_bad, found
+    while hi - lo > rtol * hi:
+        mid = 0.5 * (lo + hi)
+        sl, L, g = _evaluate(law, mid, cutter, z_H)
+        if g is not None and g.ok:
+            hi = mid
+        else:
+            lo = mid
+    sl, L, g = _evaluate(law, hi, cutter, z_H)
+    return SmoothingDesign(law=sl, delta=hi, L=L, z_H=z_H, z=z_H // law.n, cutter=cutter,
+                           generability=g, ripple=hub_speed_ripple(sl))
+
+
+def _no_smoothing_error(law, cutter, z_H, delta_max) -> InputError:
+    sl, L, g = _evaluate(law, delta_max, cutter, z_H)
+    bits = []
+    if g is None:
+        return InputError("delta_max", delta_max, "the blend makes U <= 0 before the curves become generable")
+    s2 = math.sin(cutter.alpha) ** 2
+    for chk, x, name in ((g.driver, cutter.x, "x"), (g.driven, cutter.x_H, "x_H")):
+        if chk.ok:
+            continue
+        if chk.rho_convex_min < chk.rho_limit:
+            x_need = cutter.h_a - chk.rho_convex_min * s2 / cutter.m
+            # rho and L scale with z_H at fixed m: z_H >= z_H * limit / rho_min
+            z_need = math.ceil(z_H * chk.rho_limit / chk.rho_convex_min / law.n) * law.n if chk.rho_convex_min > 0 else None
+            m_max = chk.rho_convex_min * s2 / (cutter.h_a - x) if cutter.h_a > x else math.inf
+            bits.append(
+                f"{chk.curve}: convex rho_min {chk.rho_convex_min:.3f} mm < undercut limit {chk.rho_limit:.3f} mm; "
+                f"works with {name} >= {x_need:.3f}, or z_H >= {z_need} at m = {cutter.m:g}, "
+                f"or m <= {m_max:.4f} mm at L = {L:.3f} mm"
+            )
+        if chk.concave and not chk.r0 < chk.rho_concave_min:
+            z0_max = math.ceil(2 * chk.rho_concave_min / cutter.m) - 1
+            bits.append(f"{chk.curve}: concave |rho|_min {chk.rho_concave_min:.3f} mm needs a shaper with "
+                        f"z0 <= {z0_max} (r0 < |rho|)")
+    # the smallest smoothing that would work beyond delta_max
+    more = ""
+    if delta_max < math.pi / 4:
+        for d in np.linspace(delta_max, math.pi / 4, 25)[1:]:
+            s, LL, gg = _evaluate(law, float(d), cutter, z_H)
+            if gg is not None and gg.ok:
+                more = f"; delta = {d:.4f} rad would work"
+                break
+        else:
+            more = "; no delta up to pi/4 works"
+    return InputError("delta_max", delta_max,
+                      "no blend half-width up to delta_max makes both pitch curves generable",
+                      " | ".join(bits) + more)

@@ -1,0 +1,463 @@
+"""Generated (conjugate) teeth of the non-circular walking-drive pair (seeds 000 and 002).
+
+Pure math (numpy/scipy).  Millimetres, radians.  Method: Litvin & Fuentes-Aznar, *Noncircular
+Gears* (2009), ch. 4 and 6; docs/architecture.md, "tooth generator".
+
+Both pitch curves are parametrised by the driven angle phi and share ONE arc-length frame
+s(phi) = integral sqrt(r_H^2 + r_H'^2) dphi (``ArcFrame``; rolling without slip: the driver's arc
+over the same phi is equal).  An ISO 53 rack cutter (``cutters.RackCutter``) rolls on each pitch
+curve (``envelope.envelope_points``: meshing equation solved in closed form per cutter point), the
+driver's tool shifted by +x m, the driven wheel's by -x m (one imaginary rack between the two
+centrodes: its reference line is x m off both pitch curves, so the generated pair keeps the
+centre distance and is conjugate: at each instant the two tool flanks touch the gears at the same
+point of the line of action through the pitch point).  Tooth k of the driver is centred at
+s = k p, tooth k of the driven wheel at s = (k + 1/2) p, p = pi m: the pair is phased by
+construction.  Where a pitch curve is concave (or within ``SHAPER_MARGIN_PITCHES`` pitches of a
+concave stretch) the side is cut by a shaper (pinion) cutter z0 rolling on the outside of the
+pitch curve with its pitch circle, profile shift x0 = -x_gear (it meshes with the same imaginary
+rack, so its involute generates the same flank; only the fillet differs).  Tip and root are the
+equidistants of the pitch curve at (h_a* + x) m and (h_a* + c* - x) m (the envelope of the tool's
+tip land, resp. the shaper's tip circle); tips are shortened tooth by tooth where the tip land
+would be thinner than a given minimum.  Undercut is detected per tooth side (cusp of the flank
+envelope) and trimmed.  ``geometry.noncircular_outline`` fits and chains the pieces into a
+closed outline.
+
+Body frames (the pair's assembly frame at phi = theta = 0): the driven wheel's axis at the
+origin, its pitch point of polar angle phi is the contact point when the driven wheel has
+turned by -phi (clockwise); the driver's axis at its own origin (at (L, 0) in the assembly),
+the pitch point of law angle theta sits at body polar angle pi - theta (contact on the line
+of centres when the driver has turned by +theta, counter-clockwise).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import fsolve
+
+from ..errors import InputError, require
+from ..laws.walking import LEG_PERIOD
+from ..policy import (FD_STEP_ARC_RAD, FD_STEP_PHI_RAD, FD_STEP_REL, NEWTON_STOP_MM, ROOT_XTOL_FINE,
+                      SOLVE_RESIDUAL_MM, TIP_HEIGHT_TOL_MM)
+from .cutters import CutterSide, RackCutter, ShaperCutter
+from .envelope import EnvelopeCurve, ExternalCircleCentrode, PitchCurveCentrode, envelope_points, trim_crossing
+from .involute import BasicRack
+from .noncircular import PitchCurves, leg_breakpoints, whole_pitches
+
+__all__ = [
+    "ArcFrame", "BodyPitchCurve", "ToothSpec", "ToothSide", "make_side", "GeneratedTooth", "GeneratedTeeth",
+    "generate_teeth", "SHAPER_MARGIN_PITCHES",
+]
+
+_GX, _GW = np.polynomial.legendre.leggauss(10)
+#: a tooth side is cut by the shaper when a concave stretch of its pitch curve lies within this
+#: many pitches of the tooth centre (the rack's neighbouring teeth would gouge there)
+SHAPER_MARGIN_PITCHES = 1.5
+
+
+class ArcFrame:
+    """Shared arc length s(phi) of the pair's pitch curves, s(0) = 0 (true arc length
+    ds = sqrt(r_H^2 + r_H'^2) dphi, seed 000 eq. 12 for r_H; docs/architecture.md, "closure").  Periodic per leg:
+    s(phi + pi/2) = s(phi) + leg.  Tabulated on one leg (nodes at the law's breakpoints, the
+    ends of the C2 blend windows) by 10-point Gauss-Legendre; s(phi) and its inverse phi(s)
+    are evaluated by cubic Hermite interpolation with the exact slopes ds/dphi, dphi/ds
+    (interpolation error ~1e-11 rad with the default node density, see the tests)."""
+
+    def __init__(self, pc: PitchCurves, per_piece: int = 400):
+        from scipy.interpolate import CubicHermiteSpline
+
+        self.pc = pc
+        bp = leg_breakpoints(pc.law)
+        nodes = np.unique(np.concatenate([np.linspace(a, b, per_piece + 1) for a, b in zip(bp[:-1], bp[1:])]))
+        self.nodes = nodes
+        seg = self._gauss(nodes[:-1], nodes[1:])
+        S = np.concatenate([[0.0], np.cumsum(seg)])
+        j0 = int(np.searchsorted(nodes, 0.0, side="right") - 1)
+        S0 = S[j0] + float(self._gauss(np.array([nodes[j0]]), np.array([0.0]))[0])
+        self.S = S - S0
+        self.leg = float(S[-1])
+        self.perimeter = 4.0 * self.leg
+        g = pc.ds_dphi(nodes)
+        self._s_of = CubicHermiteSpline(nodes, self.S, g)
+        self._phi_of = CubicHermiteSpline(self.S, nodes, 1.0 / g)
+
+    def _gauss(self, a, b):
+        a = np.asarray(a, float)
+        b = np.asarray(b, float)
+        x = 0.5 * (b - a)[:, None] * _GX[None, :] + 0.5 * (a + b)[:, None]
+        f = self.pc.ds_dphi(x.ravel()).reshape(x.shape)
+        return 0.5 * (b - a) * (f @ _GW)
+
+    def s_exact(self, phi):
+        """s(phi) by quadrature from the nearest node below (reference for the interpolant)."""
+        phi = np.atleast_1d(np.asarray(phi, float))
+        k = np.floor((phi + math.pi / 4) / LEG_PERIOD)
+        w = phi - k * LEG_PERIOD
+        j = np.clip(np.searchsorted(self.nodes, w, side="right") - 1, 0, len(self.nodes) - 2)
+        return self.S[j] + self._gauss(self.nodes[j], w) + k * self.leg
+
+    def s(self, phi):
+        phi = np.atleast_1d(np.asarray(phi, float))
+        k = np.floor((phi + math.pi / 4) / LEG_PERIOD)
+        return self._s_of(phi - k * LEG_PERIOD) + k * self.leg
+
+    def phi(self, s):
+        s = np.atleast_1d(np.asarray(s, float))
+        k = np.floor((s - self.S[0]) / self.leg)
+        return self._phi_of(s - k * self.leg) + k * LEG_PERIOD
+
+
+class BodyPitchCurve:
+    """One gear's pitch curve in its body frame, as a function of the driven angle phi.
+
+    role 'driven': P = r_H(phi) (cos phi, sin phi) (seed 000 eq. 12);
+    role 'driver': P = r(phi) (cos beta, sin beta), beta = pi - theta(phi), r = L - r_H
+    (seed 000 eq. 13).  ``sgn``: +1 if the generation arc (clockwise on the body, gear on the
+    right of travel) runs with phi, -1 if against it.
+    """
+
+    def __init__(self, pc: PitchCurves, role: str):
+        require(role in ("driver", "driven"), "role", role, "must be 'driver' or 'driven'")
+        self.pc, self.role = pc, role
+        self.sgn = -1.0 if role == "driven" else 1.0
+
+    def polar(self, phi):
+        """(radius, body polar angle) of the pitch point."""
+        phi = np.asarray(phi, float)
+        if self.role == "driven":
+            return self.pc.r_H(phi), phi
+        return self.pc.L - self.pc.r_H(phi), math.pi - self.pc.law.theta(phi)
+
+    def point(self, phi):
+        r, a = self.polar(phi)
+        return np.column_stack([r * np.cos(a), r * np.sin(a)])
+
+    def dpoint(self, phi):
+        """dP/dphi."""
+        phi = np.atleast_1d(np.asarray(phi, float))
+        r, a = self.polar(phi)
+        c, s = np.cos(a), np.sin(a)
+        if self.role == "driven":
+            dr, da = self.pc.dr_H(phi), 1.0
+        else:
+            dr, da = -self.pc.dr_H(phi), -self.pc.law.U(phi)
+        return np.column_stack([dr * c - r * da * s, dr * s + r * da * c])
+
+    def normal(self, phi):
+        """Unit outward normal (away from the gear body)."""
+        d = self.sgn * self.dpoint(phi)
+        d = d / np.linalg.norm(d, axis=1)[:, None]
+        return np.column_stack([-d[:, 1], d[:, 0]])
+
+    def offset(self, phi, h):
+        """Equidistant at height h (outwards > 0) - the tip (h > 0) and root (h < 0) curves."""
+        return self.point(phi) + h * self.normal(phi)
+
+    def rho(self, phi):
+        """Signed radius of curvature (> 0 convex) at the pitch point of driven angle phi."""
+        return self.pc.rho_H(phi) if self.role == "driven" else self.pc.rho(phi)
+
+
+@dataclass(frozen=True)
+class ToothSpec:
+    """Teeth of one gear of the pair.
+
+    m: module (mm); x: profile shift coefficient; thinning_mm: arc tooth-thickness reduction on
+    the pitch curve (a normal backlash j_n split evenly is j_n / (2 cos alpha) per gear);
+    rack: ISO 53 basic rack; z0: shaper teeth for concave stretches (None: none allowed);
+    tip_min_mm: least tip-land thickness before the tip is shortened; tip_floor: the tip may be
+    shortened down to (tip_floor + x) m above the pitch curve, else the teeth are pointed
+    (InputError)."""
+
+    m: float
+    x: float = 0.0
+    thinning_mm: float = 0.0
+    rack: BasicRack = BasicRack()
+    z0: int | None = None
+    tip_min_mm: float = 0.0
+    tip_floor: float = 0.5
+
+    @property
+    def h_tip(self) -> float:
+        return (self.rack.h_a_star + self.x) * self.m
+
+    @property
+    def h_root(self) -> float:
+        return (self.rack.h_fP_star - self.x) * self.m
+
+    def rack_tools(self) -> tuple[CutterSide, CutterSide]:
+        """Right (+xi, clockwise side of the tooth) and left sides of the ISO 53 rack, its space of
+        width w - thinning centred at xi = 0 (``cutters.RackCutter``)."""
+        ca = math.cos(self.rack.alpha)
+        u_top = (1.5 * (self.rack.h_a_star + abs(self.x)) + 0.5) * self.m / ca
+        return RackCutter(self.m, self.x, self.rack, self.thinning_mm).sides(u_top)
+
+    def shaper_tools(self) -> tuple[CutterSide, CutterSide]:
+        """Right and left sides of the shaper z0 (x0 = -x: it meshes with the same imaginary
+        rack), its space centred on the bottom of its rolling circle; thinning widens the
+        shaper teeth by thinning/(2 r0) of rotation per flank."""
+        require(self.z0 is not None, "z0", self.z0, "a concave pitch curve needs a shaper cutter")
+        try:
+            sh = ShaperCutter(int(self.z0), self.m, -self.x, self.rack)
+            R0 = sh.r0
+            sh.tip_round  # the tip round must fit the shaper tooth (InputError otherwise)
+        except InputError as exc:
+            raise InputError("z0", self.z0,
+                             f"the shaper z0 = {self.z0} with x0 = {-self.x:+g} (-x of the gear it cuts) cannot be made: "
+                             f"{exc}", "use a smaller profile shift (driver_shift) or another shaper") from None
+        ang = -math.pi + math.pi / sh.z0 - self.thinning_mm / (2.0 * R0)
+        base = sh.side(ExternalCircleCentrode(R0))
+        return tuple(base.placed(ang, (0.0, R0), mir) for mir in (False, True))
+
+
+@dataclass
+class ToothSide:
+    """One generated side of a tooth: fillet and flank envelopes, the cutter kind ("rack" or
+    "shaper"), whether the side is undercut (trimmed) and the driven angle phi_root of its root."""
+
+    fillet: EnvelopeCurve
+    flank: EnvelopeCurve
+    kind: str
+    undercut: bool
+    phi_root: float  # driven angle of the pitch point generating the fillet start (on the root curve)
+
+
+def _flank_has_cusp(flank: EnvelopeCurve, u1: float, n: int = 48) -> bool:
+    P = flank(np.linspace(flank.u0, u1, n))
+    d = np.diff(P, axis=0)
+    return bool(np.any(np.einsum("ij,ij->i", d[:-1], d[1:]) < 0))
+
+
+def make_side(tool: CutterSide, cen: PitchCurveCentrode) -> ToothSide:
+    """One tooth side generated by ``tool`` on the gear centrode ``cen`` (not yet trimmed)."""
+    fil, fla = tool.envelopes(cen)
+    _, s0 = envelope_points(tool.fillet, np.array([fil.u0]), tool.cutter, cen)
+    return ToothSide(fil, fla, tool.kind, False, float(cen.phi(s0)[0]))
+
+
+def _trim_undercut(side: ToothSide, u_tip: float) -> None:
+    """Undercut per tooth: the flank envelope below the tip turns back
+    (cusp) and the fillet trochoid crosses it; keep the outer boundary (``trim_crossing``)."""
+    if not _flank_has_cusp(side.flank, u_tip):
+        return
+    cross = trim_crossing(side.fillet, side.flank.with_range(side.flank.u0, u_tip))
+    if cross is not None:
+        side.fillet = side.fillet.with_range(side.fillet.u0, cross[0])
+        side.flank = side.flank.with_range(cross[1], side.flank.u1)
+        side.undercut = True
+
+
+def _tip_hit(side: ToothSide, curve: BodyPitchCurve, h: float, phi_guess: float, span: float):
+    """(u, phi) where the flank meets the tip equidistant at height h (None if it does not within
+    the flank's range): nearest pair of samples, then fsolve."""
+    fla = side.flank
+    u = np.linspace(fla.u0, fla.u1, 41)
+    X = fla(u)
+    ph = phi_guess + np.linspace(-0.6, 0.6, 121) * span
+    T = curve.offset(ph, h)
+    D = np.linalg.norm(X[:, None, :] - T[None, :, :], axis=2)
+    i, j = np.unravel_index(int(np.argmin(D)), D.shape)
+    g = lambda y: fla.at(y[0]) - curve.offset(np.array([y[1]]), h)[0]
+    sol = fsolve(g, [u[i], ph[j]], xtol=ROOT_XTOL_FINE, full_output=True)[0]
+    tol = SOLVE_RESIDUAL_MM
+    if np.linalg.norm(g(sol)) > tol or not (min(fla.u0, fla.u1) - tol <= sol[0] <= max(fla.u0, fla.u1) + tol):
+        return None
+    return float(sol[0]), float(sol[1])
+
+
+def _tip_hits_batch(sides: list, s_k: np.ndarray, ph_k: np.ndarray, curve: BodyPitchCurve, frame: ArcFrame,
+                    h: float, span: float) -> list:
+    """``_tip_hit`` for many sides at once (grouped by their cutter piece): vectorised sampling for
+    the start and a vectorised Newton iteration on (u, phi); sides that do not converge fall back
+    to ``_tip_hit``."""
+    out = [None] * len(sides)
+    groups: dict = {}
+    for i, sd in enumerate(sides):
+        groups.setdefault((id(sd.flank.piece), sd.flank.u0, sd.flank.u1), []).append(i)
+    nu, nph = 41, 121
+    for (_, u0, u1), idx in groups.items():
+        idx = np.asarray(idx)
+        n = len(idx)
+        fla = sides[idx[0]].flank
+        sk = np.asarray(s_k, float)[idx]
+        pk = np.asarray(ph_k, float)[idx]
+
+        def X(u, skk):
+            cen = PitchCurveCentrode(curve, frame, skk)
+            return envelope_points(fla.piece, u, fla.cutter, cen)[0]
+
+        ug = np.linspace(u0, u1, nu)
+        Xs = X(np.tile(ug, n), np.repeat(sk, nu)).reshape(n, nu, 2)
+        pg = pk[:, None] + np.linspace(-0.6, 0.6, nph)[None, :] * span
+        Ts = curve.offset(pg.ravel(), h).reshape(n, nph, 2)
+        D = np.linalg.norm(Xs[:, :, None, :] - Ts[:, None, :, :], axis=3).reshape(n, -1)
+        k = np.argmin(D, axis=1)
+        u = ug[k // nph]
+        ph = pg[np.arange(n), k % nph]
+        eu, ep = FD_STEP_REL * max(1.0, abs(u1 - u0)), FD_STEP_PHI_RAD
+        for _ in range(12):
+            Xu = X(u, sk)
+            T = curve.offset(ph, h)
+            G = Xu - T
+            if np.max(np.linalg.norm(G, axis=1)) < NEWTON_STOP_MM:
+                break
+            dX = (X(u + eu, sk) - Xu) / eu
+            dT = (curve.offset(ph + ep, h) - T) / ep
+            det = dX[:, 0] * (-dT[:, 1]) - dX[:, 1] * (-dT[:, 0])
+            det = np.where(np.abs(det) > 1e-300, det, 1e-300)
+            du = -(G[:, 0] * (-dT[:, 1]) - G[:, 1] * (-dT[:, 0])) / det
+            dp = -(dX[:, 0] * G[:, 1] - dX[:, 1] * G[:, 0]) / det
+            u, ph = u + du, ph + dp
+        res = np.linalg.norm(X(u, sk) - curve.offset(ph, h), axis=1)
+        for j, i in enumerate(idx):
+            tol = SOLVE_RESIDUAL_MM
+            if res[j] <= tol and min(u0, u1) - tol <= u[j] <= max(u0, u1) + tol:
+                out[i] = (float(u[j]), float(ph[j]))
+            else:
+                out[i] = _tip_hit(sides[i], curve, h, float(pk[j]), span)
+    return out
+
+
+
+
+def _arc_len(curve: BodyPitchCurve, h: float, a: float, b: float) -> float:
+    x = 0.5 * (b - a) * _GX + 0.5 * (a + b)
+    ph = x
+    # |d/dphi (P + h n)| by central differences of the exact equidistant (h small vs rho)
+    eps = FD_STEP_ARC_RAD
+    d = (curve.offset(ph + eps, h) - curve.offset(ph - eps, h)) / (2 * eps)
+    return abs(0.5 * (b - a) * float(np.dot(_GW, np.linalg.norm(d, axis=1))))
+
+
+@dataclass
+class GeneratedTooth:
+    s_centre: float
+    phi_centre: float
+    right: str
+    left: str
+    undercut: bool
+    tip_height_mm: float
+    tip_thickness_mm: float
+    shortened: bool
+
+@dataclass
+class GeneratedTeeth:
+    """The generated teeth of one gear before fitting: per tooth its two sides (right, left:
+    ``ToothSide``), its tip (height h, (u, phi) of the right and left flank ends) and its record."""
+
+    role: str
+    curve: BodyPitchCurve
+    z: int
+    n: int
+    sides: list
+    tips: list
+    teeth: list
+
+
+def _concave_zones(curve: BodyPitchCurve) -> list[tuple[float, float]]:
+    """Concave stretches of the pitch curve as intervals of the driven angle (all legs, one turn)."""
+    side = "driven" if curve.role == "driven" else "driver"
+    cs = curve.pc.curvature(side)
+    out = []
+    for a, b in cs.concave_intervals:
+        for k in range(-1, 6):
+            out.append((a + k * LEG_PERIOD, b + k * LEG_PERIOD))
+    return out
+
+
+def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame | None = None) -> GeneratedTeeth:
+    """Generated teeth on the pitch curve of one gear of the pair (see the module docstring):
+    every tooth side generated and trimmed, every tip placed (shortened where too thin).
+
+    Teeth: driven z_H = perimeter / (pi m), centres at s = (k + 1/2) p; driver z = z_H / n,
+    centres at s = k p (k = 0 .. z-1 covers the driver's first turn, phi in [0, 2 pi / n)).
+    """
+    frame = frame or ArcFrame(pc)
+    curve = BodyPitchCurve(pc, role)
+    m = spec.m
+    p = math.pi * m
+    n = pc.law.n
+    z_H = whole_pitches(frame.perimeter, m)
+    if role == "driven":
+        z, centres = z_H, (np.arange(z_H) + 0.5) * p
+    else:
+        require(z_H % n == 0, "z_H", z_H, f"must be a multiple of n = {n}")
+        z, centres = z_H // n, np.arange(z_H // n) * p
+    phic = frame.phi(centres)
+    span = 1.5 * p / float(np.min(pc.ds_dphi(np.linspace(0, math.pi / 2, 200))))  # phi of 1.5 pitches
+    zones = _concave_zones(curve)
+    rack_r, rack_l = spec.rack_tools()
+    shaper = None
+    teeth_sides = []
+    for s_k, ph_k in zip(centres, phic):
+        sides = []
+        for which, rack_tool in ((0, rack_r), (1, rack_l)):
+            tool = rack_tool
+            if zones:
+                margin = SHAPER_MARGIN_PITCHES * p
+                for a, b in zones:
+                    sa_, sb_ = frame.s(np.array([a, b]))
+                    if sa_ - margin <= s_k <= sb_ + margin:
+                        if shaper is None:
+                            shaper = spec.shaper_tools()
+                        tool = shaper[which]
+                        break
+            sides.append(make_side(tool, PitchCurveCentrode(curve, frame, s_k)))
+        teeth_sides.append(sides)
+
+    # tips: nominal height, shortened where the tip land is too thin
+    teeth, tips = [], []
+    flat = [sd for pair in teeth_sides for sd in pair]
+    nominal = _tip_hits_batch(flat, np.repeat(centres, 2), np.repeat(phic, 2), curve, frame, spec.h_tip, span)
+    for k, ((s_k, ph_k), (R, Lf)) in enumerate(zip(zip(centres, phic), teeth_sides)):
+        def hits(h, k=k):
+            if h == spec.h_tip:
+                return nominal[2 * k], nominal[2 * k + 1]
+            return _tip_hit(R, curve, h, ph_k, span), _tip_hit(Lf, curve, h, ph_k, span)
+
+        def thickness(h):
+            hr, hl = hits(h)
+            if hr is None or hl is None:
+                return -1.0, hr, hl
+            # right side is clockwise: generation arc sg > 0; left sg < 0
+            sg_r = curve.sgn * (frame.s(np.array([hr[1]]))[0] - s_k)
+            sg_l = curve.sgn * (frame.s(np.array([hl[1]]))[0] - s_k)
+            t = _arc_len(curve, h, hl[1], hr[1])
+            return (t if sg_r > sg_l else -t), hr, hl
+
+        h = spec.h_tip
+        t, hr, hl = thickness(h)
+        shortened = False
+        if t < spec.tip_min_mm:
+            # tip shortening: the largest height (bisection to 1 nm) with a tip land >= the minimum
+            h_lo = (spec.tip_floor + spec.x) * m
+            t_lo, hr_lo, hl_lo = thickness(h_lo)
+            if not t_lo >= spec.tip_min_mm:
+                why = (f"the {'shaper' if 'shaper' in (R.kind, Lf.kind) else 'rack'} flank envelope does not reach "
+                       f"{spec.tip_floor + spec.x:.2f} m above the pitch curve (generating limit of the cutter)"
+                       if hr_lo is None or hl_lo is None else
+                       f"tip land {max(t_lo, 0.0):.3f} mm < {spec.tip_min_mm:.3f} mm even with the tip shortened to "
+                       f"{spec.tip_floor + spec.x:.2f} m")
+                raise InputError(
+                    "m", m, f"{role} tooth at phi = {ph_k:.4f} rad is pointed or cannot be cut: {why}",
+                    "use a smaller profile shift, a larger shaper, more teeth or a wider smoothing")
+            lo, hi = h_lo, h
+            best = (t_lo, hr_lo, hl_lo)
+            while hi - lo > TIP_HEIGHT_TOL_MM:
+                mid = 0.5 * (lo + hi)
+                res = thickness(mid)
+                if res[0] >= spec.tip_min_mm:
+                    lo, best = mid, res
+                else:
+                    hi = mid
+            h = lo
+            t, hr, hl = best
+            shortened = True
+        _trim_undercut(R, hr[0])
+        _trim_undercut(Lf, hl[0])
+        tips.append((h, hr, hl))
+        teeth.append(GeneratedTooth(float(s_k), float(ph_k), R.kind, Lf.kind, R.undercut or Lf.undercut,
+                                    float(h), float(t), shortened))
+    return GeneratedTeeth(role, curve, z, n, teeth_sides, tips, teeth)
