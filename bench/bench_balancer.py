@@ -35,7 +35,7 @@ def main() -> int:
             rc = rc or code
 
     from propulsor.params import load_params, read_part_file
-    from propulsor.parts.balancer import BalancerParams, _mesh, balancer_solid, resolve, travel_sweep
+    from propulsor.parts.balancer import BalancerParams, balancer_solid, sweep_mesh, resolve, travel_sweep
     from propulsor.parts.road_wheel import wheel_solids
 
     f = ROOT / "parts" / "balancer.toml"
@@ -45,8 +45,8 @@ def main() -> int:
     ws, t_ws = timed(wheel_solids, m.wheel)
     m.extras["wheel_names"] = list(ws)
     t0 = time.perf_counter()
-    bm = _mesh(bal, p.sweep_chord_mm)
-    wm = [_mesh(s, p.sweep_chord_mm) for s in ws.values()]
+    bm = sweep_mesh(bal, p.sweep_chord_mm)
+    wm = [sweep_mesh(s, p.sweep_chord_mm) for s in ws.values()]
     t_mesh = time.perf_counter() - t0
     res, t_sw = timed(travel_sweep, m, bm, wm)
     print(f"balancer stages: inputs + outline {t_in:.2f} s, balancer solid {t_sol:.2f} s, wheel solids {t_ws:.2f} s, "

@@ -91,7 +91,8 @@ def test_profile_area_against_its_parts(arm):
 # ------------------------------------------------------------------ revolve helpers
 def test_revolved_section_volume_is_pappus():
     from propulsor.geometry.profile import Profile, polygon_loop
-    from propulsor.solids.revolve import cut, cylinder, fuse, revolve_section
+    from propulsor.solids.kernel import cut, cylinder, fuse
+    from propulsor.solids.revolve import revolve_section
 
     sec = Profile(polygon_loop([(20.0, 0.0), (50.0, 0.0), (50.0, 30.0), (20.0, 30.0)]))
     ring = revolve_section(sec, center=(100.0, 5.0))

@@ -177,7 +177,7 @@ def test_mass_and_centre_of_mass(result):
 
 def test_checks_and_fe_comparison(result):
     checks = result["checks"]
-    assert all(c.ok for c in checks), [c for c in checks if not c.ok]
+    assert all(c.passed for c in checks), [c for c in checks if not c.passed]
     sc = result["sigma_vM_constant"]
     # seed FE: ~300 MPa in the body (geometry assumed here, see module docstring)
     assert 250 < np.max(sc["beta_m elastic"]) < 400
@@ -190,7 +190,7 @@ def test_checks_and_fe_comparison(result):
 
 def test_failed_check_is_reported():
     a = BalancerAnalysis(DESIGN, BalancerGeometry(d_lower=60.0, D_lower=80.0, r_lower=4.0))
-    bad = [c for c in a.run()["checks"] if not c.ok]
+    bad = [c for c in a.run()["checks"] if not c.passed]
     assert any("wheel spindle" in c.name for c in bad)
 
 

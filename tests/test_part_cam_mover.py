@@ -1,5 +1,5 @@
 """Part `cam_mover` (seed 001): the fixed-cam propulsor built end to end through the CLI,
-its acceptance items asserted on the OUTPUT files (issue 4)."""
+its acceptance items asserted on the OUTPUT files."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""The planetary final drive part end to end (issue 2): build through the command line, then
+"""The planetary final drive part end to end (seed 004 ch. 4): build through the command line, then
 measure the files it wrote — manifest, report, DXF, STEP assembly, sweep table — and the
 command line's contract for bad input (exit 2, one line, nothing written)."""
 

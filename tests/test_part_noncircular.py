@@ -1,4 +1,4 @@
-"""The non-circular walking-drive pair (issue 3) end to end: build the part files through the
+"""The non-circular walking-drive pair (seeds 000, 002) end to end: build the part files through the
 command line, then measure what was written — DXF frames and loops, transmission.csv, the
 manifest's derived values and checks, the papers' tables — and the command line's contract
 for bad input (exit 2, one line, nothing written).  Plus the library pieces the part adds
@@ -396,7 +396,7 @@ def test_arc_frame_inverse_and_perimeter():
        delta=st.floats(0.02, 0.7), L=st.floats(50, 300))
 @example(a=0.0, b=38.0, c=100.0, n=4, delta=0.03125, L=50.0)  # inversion error 1.02e-10 rad found here
 def test_arc_frame_property(a, b, c, n, delta, L):
-    """The shared arc-length frame of any smoothed law: perimeter = the pitch curves' (Trap 3),
+    """The shared arc-length frame of any smoothed law: perimeter = the pitch curves' (closure by true arc length),
     s(phi + pi/2) = s(phi) + leg, phi(s) inverts s(phi); both pitch curves roll (equal arcs)."""
     from hypothesis import assume
 
@@ -443,7 +443,7 @@ def test_generated_teeth_are_conjugate_without_backlash():
 
 
 def test_module_from_centre_distance():
-    """Closure the other way round (SPEC Trap 3): L given, the module follows; the blend is the one
+    """Closure the other way round (by true arc length): L given, the module follows; the blend is the one
     chosen at m = 2.5 (the design is scale invariant: rho and the undercut limit both scale with m)."""
     from propulsor.params import load_params
     from propulsor.parts.noncircular_pair import NoncircularPairParams, design

@@ -1,4 +1,4 @@
-"""The road wheel built from parts/road_wheel.toml (seed 004 ch. 5, 7; issue 5).
+"""The road wheel built from parts/road_wheel.toml (seed 004 ch. 5, 7).
 
 One build per module; assertions read the output folder.  Kozlov's temperature is re-computed
 here independently in SI units from the part file's numbers."""
@@ -19,18 +19,6 @@ from propulsor.cli import main
 ROOT = Path(__file__).resolve().parents[1]
 PART = ROOT / "parts" / "road_wheel.toml"
 P = tomllib.loads(PART.read_text())
-
-
-@pytest.fixture(scope="module")
-def out(tmp_path_factory):
-    folder = tmp_path_factory.mktemp("road_wheel") / "road_wheel"
-    assert main(["build", str(PART), "--out", str(folder), "-q"]) == 0
-    return folder
-
-
-@pytest.fixture(scope="module")
-def manifest(out):
-    return json.loads((out / "manifest.json").read_text())
 
 
 def rows(out, name):
@@ -94,11 +82,11 @@ def test_hub_bore_holds_the_bearings_that_match_the_spindle(out):
     assert bore_radius(0.5 * L) == pytest.approx(P["hub_relief_d_mm"] / 2, abs=0.01)  # shoulders between
     # the balancer takes its spindle seats from the same file
     from propulsor.params import load_params, read_part_file
-    from propulsor.parts.balancer import BalancerParams, _spindle_section, resolve
+    from propulsor.parts.balancer import BalancerParams, resolve, spindle_section
 
     f = ROOT / "parts" / "balancer.toml"
     m = resolve(load_params(BalancerParams, read_part_file(f)[1]), f)
-    sec = _spindle_section(m)
+    sec = spindle_section(m)
     xs = np.concatenate([s.sample(0.01)[:, 0] for s in sec.outer.segments])
     assert np.isclose(xs, P["bearing_inner_d_mm"] / 2).any() and np.isclose(xs, P["bearing_outer_d_mm"] / 2).any()
 

@@ -209,6 +209,12 @@ def test_check_nothing_to_check_is_exit_2(tmp_path, capsys):
 
 # -- one build per output at a time ----------------------------------------------------------------
 
+def test_lock_file_lives_outside_the_output_folder(tmp_path):
+    a, b = of.lock_path(tmp_path / "out"), of.lock_path(tmp_path / "." / "out")
+    assert a == b and a.parent == of.lock_dir() and tmp_path not in a.parents
+    assert of.lock_path(tmp_path / "other") != a
+
+
 def test_lock_no_wait_names_the_holder_then_waits(tmp_path, wheel):
     out = tmp_path / "out"
     lock = of.OutputLock(out)
@@ -238,7 +244,7 @@ def test_concurrent_builds_take_turns(tmp_path, wheel):
     manifest = json.loads((out / "manifest.json").read_text())
     files = {p.relative_to(out).as_posix() for p in out.rglob("*") if p.is_file()}
     assert files == {e["path"] for e in manifest["files"]} | {"manifest.json"}
-    assert sorted(p.name for p in tmp_path.iterdir()) == [".out.lock", "out", "wheel.toml"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out", "wheel.toml"]
 
 
 # -- no orphans, no debris -------------------------------------------------------------------------
@@ -265,7 +271,7 @@ def test_sigkill_leaves_no_process_and_the_next_build_cleans_up(tmp_path, wheel)
         assert sorted(of.clean_stale(out)) == sorted(stale)
     finally:
         lock.release()
-    assert sorted(q.name for q in tmp_path.iterdir()) == [".out.lock", "wheel.toml"]
+    assert sorted(q.name for q in tmp_path.iterdir()) == ["wheel.toml"]
 
 
 @pytest.mark.parametrize("sig, code", [(signal.SIGTERM, 143), (signal.SIGINT, 130)])
@@ -277,7 +283,7 @@ def test_interrupt_exits_with_one_line_and_leaves_nothing(tmp_path, wheel, sig, 
     assert p.returncode == code
     assert f"interrupted by {signal.Signals(sig).name}" in _one_error_line(err)
     assert not any(_alive(k) for k in kids)
-    assert sorted(q.name for q in tmp_path.iterdir()) == [".out.lock", "wheel.toml"]
+    assert sorted(q.name for q in tmp_path.iterdir()) == ["wheel.toml"]
 
 
 def test_interrupt_during_imports_is_one_line(tmp_path, wheel):
@@ -286,7 +292,7 @@ def test_interrupt_during_imports_is_one_line(tmp_path, wheel):
     p.send_signal(signal.SIGINT)
     _, err = p.communicate(timeout=120)
     assert p.returncode == 130 and "interrupted by SIGINT" in _one_error_line(err)
-    assert sorted(q.name for q in tmp_path.iterdir()) in (["wheel.toml"], [".out.lock", "wheel.toml"])
+    assert sorted(q.name for q in tmp_path.iterdir()) == ["wheel.toml"]
 
 
 # -- atomic replacement ----------------------------------------------------------------------------

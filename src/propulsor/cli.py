@@ -1,4 +1,4 @@
-"""Command line: `propulsor build | check | list | params`.
+"""Command line: `propulsor build | print | check | list | params`.
 
 Exit codes: 0 built and every check passed; 1 built but a check failed (outputs
 kept only with --keep-failed) or `check` found invalid files; 2 bad input
@@ -57,28 +57,23 @@ def _files_read(params, part_file: Path) -> tuple[Path, ...]:
     return tuple(files)
 
 
-def cmd_build(args) -> int:
-    from . import output_folder as of
+def _load_part(part_file: Path):
+    """(part type, validated parameters, size estimate) of a part file; InputError otherwise."""
     from .params import load_params, read_part_file
     from .parts import check_size, get_part_type
-    from .progress import Progress
 
-    progress = Progress(enabled=not args.quiet)
-    part_file = Path(args.part_file)
-    try:
-        out = of.vet_target(Path(args.out) if args.out else Path("output") / part_file.stem,
-                            force=args.force, keep=(part_file,))
-        part_type_name, mapping = read_part_file(part_file)
-        part_type = get_part_type(part_type_name)
-        params = load_params(part_type.params_cls, mapping)
-        out = of.vet_target(out, force=args.force, keep=_files_read(params, part_file))
-        estimate = check_size(part_type, params, part_file)
-    except InputError as exc:
-        return _fail_input(exc)
-    if args.dry_run:
-        print(f"{part_type.name}: {part_file} is valid; would build into {out}; "
-              f"size estimate {estimate.text()}")
-        return EXIT_OK
+    part_type_name, mapping = read_part_file(part_file)
+    part_type = get_part_type(part_type_name)
+    params = load_params(part_type.params_cls, mapping)
+    return part_type, params, check_size(part_type, params, part_file)
+
+
+def _into_output(args, out: Path, keep: tuple[Path, ...], produce, progress) -> int:
+    """Run ``produce(tmp) -> (failures, what)`` into a fresh temporary folder beside `out` with the
+    lock of `out` held, then put the result in place of `out` in one step (or drop it when a check
+    failed and --keep-failed is not given).  Exit codes as in the module docstring."""
+    from . import output_folder as of
+    from .parallel import close_in_workers, kill_workers
 
     lock = of.OutputLock(out)
     tmp = None
@@ -90,19 +85,27 @@ def cmd_build(args) -> int:
                                                    file=sys.stderr, flush=True))
         except of.Busy as busy:
             raise InputError("--out", str(out), f"is being built by process {busy.pid} (--no-wait)") from None
-        from .parallel import close_in_workers
-
         close_in_workers(lock.fd)
-        of.vet_target(out, force=args.force, keep=_files_read(params, part_file))  # as it is now, after the wait
+        of.vet_target(out, force=args.force, keep=keep)  # as it is now, after the wait
         for stale in of.clean_stale(out):
             progress(f"removed {stale.name}, left by a build that was killed")
         tmp = of.make_temp(out)
-        return _build_into(args, part_type, params, part_file, out, tmp, progress)
+        failures, what = produce(tmp)
+        for f in failures:
+            print(f"propulsor: check failed: {f}", file=sys.stderr)
+        if failures and not args.keep_failed:
+            print(f"propulsor: {what}: {len(failures)} check(s) failed; nothing written "
+                  f"(use --keep-failed to keep the outputs)", file=sys.stderr)
+            return EXIT_CHECK_FAILED
+        of.replace(tmp, out)
+        if failures:
+            print(f"propulsor: {what}: built into {out} but {len(failures)} check(s) failed", file=sys.stderr)
+            return EXIT_CHECK_FAILED
+        progress(f"{what}: built into {out}, all checks passed")
+        return EXIT_OK
     except InputError as exc:
         return _fail_input(exc)
     finally:
-        from .parallel import close_in_workers, kill_workers
-
         _hold_signals()
         kill_workers()
         if tmp is not None and tmp.exists():
@@ -111,31 +114,104 @@ def cmd_build(args) -> int:
         lock.release()
 
 
-def _build_into(args, part_type, params, part_file: Path, out: Path, tmp: Path, progress) -> int:
-    """Build into `tmp`, then put it in the place of `out` (the lock is held)."""
+def cmd_build(args) -> int:
     from . import output_folder as of
-    from .parts.writer import OutputWriter
+    from .progress import Progress
 
-    writer = OutputWriter(tmp, part_type.name, params, progress=progress, source=part_file)
+    progress = Progress(enabled=not args.quiet)
+    part_file = Path(args.part_file)
     try:
-        part_type.build(params, writer)
-        failures = writer.finish()
-    finally:
-        writer.close()
-    if failures and not args.keep_failed:
-        for f in failures:
-            print(f"propulsor: check failed: {f}", file=sys.stderr)
-        print(f"propulsor: {part_type.name}: {len(failures)} check(s) failed; nothing written "
-              f"(use --keep-failed to keep the outputs)", file=sys.stderr)
-        return EXIT_CHECK_FAILED
-    of.replace(tmp, out)
-    if failures:
-        for f in failures:
-            print(f"propulsor: check failed: {f}", file=sys.stderr)
-        print(f"propulsor: {part_type.name}: built into {out} but {len(failures)} check(s) failed", file=sys.stderr)
-        return EXIT_CHECK_FAILED
-    progress(f"{part_type.name}: built into {out}, all checks passed")
-    return EXIT_OK
+        out = of.vet_target(Path(args.out) if args.out else Path("output") / part_file.stem,
+                            force=args.force, keep=(part_file,))
+        part_type, params, estimate = _load_part(part_file)
+        keep = _files_read(params, part_file)
+        out = of.vet_target(out, force=args.force, keep=keep)
+    except InputError as exc:
+        return _fail_input(exc)
+    if args.dry_run:
+        print(f"{part_type.name}: {part_file} is valid; would build into {out}; "
+              f"size estimate {estimate.text()}")
+        return EXIT_OK
+
+    def produce(tmp: Path):
+        from .parts.writer import OutputWriter
+
+        writer = OutputWriter(tmp, part_type.name, params, progress=progress, source=part_file)
+        try:
+            part_type.build(params, writer)
+            return writer.finish(), part_type.name
+        finally:
+            writer.close()
+
+    return _into_output(args, out, keep, produce, progress)
+
+
+def _scale_arg(text: str) -> float | None:
+    """'auto' → None; '3', '1:3' → 3.0 (a reduction 1:S); InputError otherwise."""
+    if text == "auto":
+        return None
+    try:
+        S = float(text.split(":", 1)[1] if text.startswith("1:") else text)
+    except ValueError:
+        raise InputError("--scale", text, "must be auto, S or 1:S with S >= 1 (e.g. 1:2.5)") from None
+    if not (S >= 1.0 and S <= 1000.0):
+        raise InputError("--scale", text, "S must be within 1 ... 1000 (a reduction 1:S)")
+    return S
+
+
+def _settings(pairs) -> dict:
+    """--set KEY=VALUE pairs as TOML values (numbers, booleans, strings)."""
+    import tomllib
+
+    out = {}
+    for item in pairs or []:
+        key, sep, value = item.partition("=")
+        if not sep or not key.strip():
+            raise InputError("--set", item, "must be KEY=VALUE, e.g. backlash_mm=0.35")
+        try:
+            out[key.strip()] = tomllib.loads(f"v = {value.strip()}")["v"]
+        except tomllib.TOMLDecodeError:
+            out[key.strip()] = value.strip()
+    return out
+
+
+def cmd_print(args) -> int:
+    """A print kit of a part file: pieces at print scale with the FDM allowances, a rig, plates."""
+    from . import output_folder as of
+    from .parts import get_kit
+    from .printing.printers import load_printer
+    from .progress import Progress
+
+    progress = Progress(enabled=not args.quiet)
+    part_file = Path(args.part_file)
+    try:
+        out = of.vet_target(Path(args.out) if args.out else Path("output") / f"{part_file.stem}_kit",
+                            force=args.force, keep=(part_file,))
+        printer = load_printer(args.printer, _settings(args.set))
+        S = _scale_arg(args.scale)
+        part_type, params, _ = _load_part(part_file)
+        make_kit = get_kit(part_type.name)
+        keep = _files_read(params, part_file)
+        out = of.vet_target(out, force=args.force, keep=keep)
+    except InputError as exc:
+        return _fail_input(exc)
+
+    def produce(tmp: Path):
+        from .parts.writer import OutputWriter
+        from .printing.kit import write_kit
+
+        progress(f"{part_type.name}: print kit for the {printer.name} printer")
+        kit = make_kit(params, printer, S)
+        writer = OutputWriter(tmp, part_type.name, params, progress=progress, source=part_file)
+        writer.report_name = "print_report.md"
+        writer.title = f"Print kit: {writer.title}"
+        try:
+            write_kit(kit, writer)
+            return writer.finish(), f"{part_type.name} print kit"
+        finally:
+            writer.close()
+
+    return _into_output(args, out, keep, produce, progress)
 
 
 def cmd_check(args) -> int:
@@ -211,6 +287,19 @@ def build_parser() -> argparse.ArgumentParser:
     b.add_argument("--keep-failed", action="store_true", help="keep the outputs of a part whose checks fail")
     b.add_argument("-q", "--quiet", action="store_true", help="no progress messages")
     b.set_defaults(func=cmd_build)
+
+    pr = sub.add_parser("print", help="a print kit: pieces at print scale with FDM allowances, a rig, plates")
+    pr.add_argument("part_file")
+    pr.add_argument("--out", help="kit folder (default output/<file name>_kit)")
+    pr.add_argument("--printer", default="generic", help="printer profile: generic, prusa_mk4, bambu_x1")
+    pr.add_argument("--scale", default="auto", help="auto (largest standard scale that fits), S or 1:S")
+    pr.add_argument("--set", action="append", metavar="KEY=VALUE", help="override a printer setting "
+                    "(e.g. backlash_mm=0.35; see printing/printers.py)")
+    pr.add_argument("--force", action="store_true", help="replace an --out folder that propulsor did not write")
+    pr.add_argument("--no-wait", action="store_true", help="exit 2 instead of waiting for the lock of --out")
+    pr.add_argument("--keep-failed", action="store_true", help="keep the kit when a check fails")
+    pr.add_argument("-q", "--quiet", action="store_true", help="no progress messages")
+    pr.set_defaults(func=cmd_print)
 
     c = sub.add_parser("check", help="validate existing output files (a file or a folder)")
     c.add_argument("path")

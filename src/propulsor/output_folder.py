@@ -6,8 +6,9 @@ A build never writes into ``--out`` directly.  It
    folder or ``/``; never a symbolic link or a file; a folder that exists may be replaced only when
    it is empty or holds nothing but what a propulsor build wrote (its ``manifest.json`` lists every
    file), unless ``force``;
-2. takes the lock of the target (:class:`OutputLock`, ``fcntl.flock`` on ``.<name>.lock`` beside
-   it, holding the builder's process id), so two builds into one folder run in turn;
+2. takes the lock of the target (:class:`OutputLock`, ``fcntl.flock`` on a lock file named by the
+   hash of the target's real path in ``$TMPDIR/propulsor-locks-<uid>/``, holding the builder's
+   process id), so two builds into one folder run in turn;
 3. with the lock held, removes what killed builds left beside the target (:func:`clean_stale`):
    their temporary folders ``.<name>.tmp-XXXXXXXX`` and, after a crash between the two renames of
    the fallback replacement, puts the old output back;
@@ -21,6 +22,7 @@ A build never writes into ``--out`` directly.  It
 from __future__ import annotations
 
 import ctypes
+import hashlib
 import errno
 import fcntl
 import json
@@ -45,8 +47,18 @@ def _old_prefix(out: Path) -> str:
     return f".{out.name}.old-"
 
 
+def lock_dir() -> Path:
+    """Where the output locks live: a folder of this user's in the system's temporary folder (nothing
+    is written beside the output for a build that ends before it makes one)."""
+    d = Path(tempfile.gettempdir()) / f"propulsor-locks-{os.getuid()}"
+    d.mkdir(mode=0o700, exist_ok=True)
+    return d
+
+
 def lock_path(out: Path) -> Path:
-    return out.parent / f".{out.name}.lock"
+    """The lock file of output folder `out`: named by the hash of its real absolute path."""
+    real = os.path.realpath(out)
+    return lock_dir() / f"{hashlib.sha256(os.fsencode(real)).hexdigest()[:32]}.lock"
 
 
 # -- vetting --------------------------------------------------------------------------------------
@@ -143,7 +155,7 @@ class Busy(Exception):
 
 
 class OutputLock:
-    """Exclusive lock of one output folder: ``fcntl.flock`` on ``.<name>.lock`` beside it.
+    """Exclusive lock of one output folder: ``fcntl.flock`` on its lock file (:func:`lock_path`).
 
     The lock file stays (removing it would let two builds lock two different files); it holds the
     process id of the build that has the lock.  The kernel drops the lock when that process dies."""
@@ -162,9 +174,9 @@ class OutputLock:
     def acquire(self, wait: bool = True, on_wait=None) -> None:
         """Take the lock; with wait=False raise :class:`Busy` when held; `on_wait(pid)` before blocking."""
         try:
-            fd = os.open(self.path, os.O_RDWR | os.O_CREAT | os.O_CLOEXEC, 0o644)
+            fd = os.open(self.path, os.O_RDWR | os.O_CREAT | os.O_CLOEXEC, 0o600)
         except OSError as exc:
-            raise InputError("--out", str(self.out), f"its folder is not writable: {exc.strerror or exc}") from None
+            raise InputError("--out", str(self.out), f"its lock {self.path} cannot be made: {exc.strerror or exc}") from None
         try:
             fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except BlockingIOError:

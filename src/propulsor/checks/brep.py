@@ -1,4 +1,4 @@
-"""Validity of B-rep solids and of their STEP round trip (SPEC §9).
+"""Validity of B-rep solids and of their STEP round trip (docs/architecture.md, "The data flow of one build").
 
 `brep_checks`: OCCT's BRepCheck_Analyzer finds the shape valid, it is exactly
 one solid, its shells are closed (BRepCheck_Shell: no free edges), its volume is
@@ -18,15 +18,8 @@ from OCP.TopExp import TopExp_Explorer
 from OCP.TopoDS import TopoDS
 
 from ..policy import ANGULAR_TOL_RAD, CHORD_TOL_MM, MESH_VOLUME_REL_TOL, STEP_VOLUME_REL_TOL
-from .result import Check
-
-
-def _shape(obj):
-    if hasattr(obj, "wrapped"):
-        return obj.wrapped
-    if hasattr(obj, "val"):
-        return obj.val().wrapped
-    return obj
+from ..check import Check
+from ..solids.kernel import occ_shape, volume  # noqa: F401  (volume: public here too)
 
 
 def _sub(shape, kind) -> list:
@@ -38,22 +31,15 @@ def _sub(shape, kind) -> list:
     return out
 
 
-def volume(shape) -> float:
-    """Volume of a shape (mm^3), OCCT Gauss integration over the faces."""
-    props = GProp_GProps()
-    BRepGProp.VolumeProperties_s(_shape(shape), props)
-    return float(props.Mass())
-
-
 def volume_from_triangulation(shape, chord_tol: float = CHORD_TOL_MM) -> float:
     """Volume of the shape's BRepMesh triangulation (mm^3), an independent
     estimate: OCCT's exact Gauss integration is wrong on some faces (an
     extrusion of a 400-point periodic interpolating B-spline: +8 %), the
     triangulated volume is not (its error is of the order chord / radius)."""
-    from ..export.mesh import _mesh_shape
+    from ..solids.tessellate import mesh_shape
 
-    sh = _shape(shape)
-    _mesh_shape(sh, chord_tol, ANGULAR_TOL_RAD, True)
+    sh = occ_shape(shape)
+    mesh_shape(sh, chord_tol, ANGULAR_TOL_RAD, True)
     props = GProp_GProps()
     BRepGProp.VolumeProperties_s(sh, props, False, False, True)
     return float(props.Mass())
@@ -68,7 +54,7 @@ def brep_checks(solid, name: str = "solid", cross_check_volume: bool = True, cho
     """Valid B-rep, exactly one solid, closed shell(s), positive volume; and
     (cross_check_volume) OCCT's exact volume agrees with the volume of a fine
     triangulation within policy.MESH_VOLUME_REL_TOL."""
-    shape = _shape(solid)
+    shape = occ_shape(solid)
     out: list[Check] = []
     if shape is None or shape.IsNull():
         return [Check.flag(f"{name}: shape exists", False, "null shape")]

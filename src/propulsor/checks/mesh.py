@@ -24,7 +24,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..policy import MESH_CHORD_LIMIT_MM, MESH_VOLUME_REL_TOL
-from .result import Check
+from ..check import Check
 
 #: pairs processed per narrow-phase chunk (bounds memory)
 _CHUNK = 400_000

@@ -1,4 +1,4 @@
-"""manifest.json: what a part folder holds and how it was made (SPEC §9).
+"""manifest.json: what a part folder holds and how it was made (docs/architecture.md, "The data flow of one build").
 
 Keys: part, inputs, derived, checks (list of {name, passed, value, limit, unit,
 message}), files (every file in the folder but the manifest itself: {path,

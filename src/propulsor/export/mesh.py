@@ -1,11 +1,9 @@
-"""Tessellation of OCCT solids and STL / 3MF output.
+"""STL / 3MF output of tessellated solids (tessellation: :mod:`propulsor.solids.tessellate`).
 
-The chord error (linear deflection) is policy.CHORD_TOL_MM (0.005 mm; SPEC §9
-demands <= 0.01 mm), the angular deflection policy.ANGULAR_TOL_RAD.  OCCT's
-BRepMesh discretises every edge once and shares it between the two faces, so
-after merging coincident nodes (KD-tree, POINT_TOL-scale radius) the triangle
-mesh of a closed solid is closed.  Files are deterministic: binary STL has a
-fixed 80-byte header; the 3MF zip is rewritten with fixed entry time stamps.
+The chord error (linear deflection) is policy.CHORD_TOL_MM (0.005 mm, below the 0.01 mm the
+outputs promise, docs/architecture.md, "The data flow of one build"), the angular deflection policy.ANGULAR_TOL_RAD.
+Files are deterministic: binary STL has a fixed 80-byte header; the 3MF zip is rewritten with
+fixed entry time stamps.
 """
 
 from __future__ import annotations
@@ -19,151 +17,12 @@ from pathlib import Path
 
 import numpy as np
 import trimesh
-from OCP.BRep import BRep_Tool
-from OCP.BRepAdaptor import BRepAdaptor_Surface
-from OCP.GeomAbs import GeomAbs_Cone, GeomAbs_Cylinder, GeomAbs_Plane, GeomAbs_SurfaceOfExtrusion
-from OCP.IMeshTools import IMeshTools_Parameters
-from OCP.BRepMesh import BRepMesh_IncrementalMesh
-from OCP.BRepTools import BRepTools
-from OCP.TopAbs import TopAbs_FACE, TopAbs_REVERSED
-from OCP.TopExp import TopExp_Explorer
-from OCP.TopLoc import TopLoc_Location
-from OCP.TopoDS import TopoDS
-from scipy.sparse import coo_matrix
-from scipy.sparse.csgraph import connected_components
-from scipy.spatial import cKDTree
 
-from ..policy import ANGULAR_TOL_RAD, CHORD_TOL_MM, MESH_CHORD_LIMIT_MM
-from .step import _shape
+from ..policy import ANGULAR_TOL_RAD, CHORD_TOL_MM
+from ..solids.tessellate import MERGE_TOL_MM, merge_close_vertices, triangulate  # noqa: F401  (public here too)
 
-#: nodes of different faces closer than this are the same node (mm)
-MERGE_TOL_MM = 1e-6
 #: fixed zip entry time (the earliest a zip can hold)
 ZIP_DATE_TIME = (1980, 1, 1, 0, 0, 0)
-
-
-def merge_close_vertices(vertices: np.ndarray, faces: np.ndarray, tol: float = MERGE_TOL_MM):
-    """Merge vertices closer than `tol` (transitively); drop faces that collapse.
-
-    Returns (vertices, faces) with vertices in order of first appearance so the
-    result does not depend on hashing.
-    """
-    v = np.asarray(vertices, float)
-    f = np.asarray(faces, np.int64)
-    n = len(v)
-    pairs = cKDTree(v).query_pairs(tol, output_type="ndarray")
-    if len(pairs):
-        g = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n))
-        _, label = connected_components(g, directed=False)
-    else:
-        label = np.arange(n)
-    # representative = first vertex of each component, in index order
-    _, first = np.unique(label, return_index=True)
-    order = np.argsort(first)
-    comp_new = np.empty(len(first), np.int64)
-    comp_new[order] = np.arange(len(first))
-    remap = comp_new[label]
-    nv = v[np.sort(first)]
-    nf = remap[f]
-    keep = (nf[:, 0] != nf[:, 1]) & (nf[:, 1] != nf[:, 2]) & (nf[:, 0] != nf[:, 2])
-    nf = nf[keep]
-    used = np.zeros(len(nv), bool)
-    used[nf.ravel()] = True
-    if not used.all():
-        idx = np.cumsum(used) - 1
-        nf = idx[nf]
-        nv = nv[used]
-    return nv, nf
-
-
-#: surfaces swept by straight lines: their exact triangulation needs no interior nodes
-_RULED = (GeomAbs_Plane, GeomAbs_Cylinder, GeomAbs_Cone, GeomAbs_SurfaceOfExtrusion)
-
-
-def _ruled_only(shape) -> bool:
-    """True when every face lies on a plane, cylinder, cone or linear extrusion (a prism of a
-    profile, a bored disc): strips between the edges' discretisations are then within the chord
-    tolerance of the surface, and BRepMesh's interior nodes only add slivers."""
-    ex = TopExp_Explorer(shape, TopAbs_FACE)
-    while ex.More():
-        if BRepAdaptor_Surface(TopoDS.Face_s(ex.Current())).GetType() not in _RULED:
-            return False
-        ex.Next()
-    return True
-
-
-def _mesh_shape(shape, chord_tol, angular_tol, parallel) -> float:
-    """Run BRepMesh; return the largest achieved deflection OCCT reports (mm)."""
-    BRepTools.Clean_s(shape)
-    prm = IMeshTools_Parameters()
-    prm.Deflection, prm.Angle, prm.Relative, prm.InParallel = chord_tol, angular_tol, False, parallel
-    if _ruled_only(shape):
-        prm.InternalVerticesMode = False
-        prm.ControlSurfaceDeflection = False
-    mesher = BRepMesh_IncrementalMesh(shape, prm)
-    if not mesher.IsDone():
-        raise RuntimeError("BRepMesh failed")
-    worst = 0.0
-    ex = TopExp_Explorer(shape, TopAbs_FACE)
-    while ex.More():
-        tri = BRep_Tool.Triangulation_s(TopoDS.Face_s(ex.Current()), TopLoc_Location())
-        if tri is None:
-            raise RuntimeError("a face has no triangulation")
-        worst = max(worst, float(tri.Deflection()))
-        ex.Next()
-    return worst
-
-
-def triangulate(
-    solid,
-    chord_tol: float = CHORD_TOL_MM,
-    angular_tol: float = ANGULAR_TOL_RAD,
-    parallel: bool = True,
-    chord_limit: float = MESH_CHORD_LIMIT_MM,
-):
-    """Mesh an OCCT shape; return (vertices (n,3), faces (m,3), deflection_mm).
-
-    BRepMesh aims at `chord_tol`; on doubly curved faces the deflection it
-    achieves can exceed the request (a sphere r = 7 mm meshed at 0.005 mm
-    reports 0.0105 mm), so while the largest achieved deflection exceeds
-    `chord_limit` the shape is meshed again with half the request (at most 4
-    times).  The returned deflection is that reported by OCCT.
-    """
-    if not (chord_tol > 0 and angular_tol > 0):
-        raise ValueError(f"chord_tol = {chord_tol!r}, angular_tol = {angular_tol!r}: must be > 0")
-    shape = _shape(solid)
-    request = chord_tol
-    achieved = _mesh_shape(shape, request, angular_tol, parallel)
-    for _ in range(4):
-        if achieved <= chord_limit:
-            break
-        request *= 0.5
-        achieved = _mesh_shape(shape, request, angular_tol, parallel)
-    verts, tris = [], []
-    offset = 0
-    ex = TopExp_Explorer(shape, TopAbs_FACE)
-    while ex.More():
-        face = TopoDS.Face_s(ex.Current())
-        loc = TopLoc_Location()
-        tri = BRep_Tool.Triangulation_s(face, loc)
-        ex.Next()
-        nn, nt = tri.NbNodes(), tri.NbTriangles()
-        node, triangle = tri.Node, tri.Triangle
-        pts = np.array([node(i).Coord() for i in range(1, nn + 1)], float).reshape(nn, 3)
-        if not loc.IsIdentity():
-            t = loc.Transformation()
-            R = np.array([[t.Value(r, c) for c in (1, 2, 3)] for r in (1, 2, 3)])
-            pts = pts @ R.T + np.array([t.Value(r, 4) for r in (1, 2, 3)])
-        ids = np.array([triangle(i).Get() for i in range(1, nt + 1)], np.int64).reshape(nt, 3) - 1
-        if face.Orientation() == TopAbs_REVERSED:
-            ids = ids[:, [0, 2, 1]]
-        verts.append(pts)
-        tris.append(ids + offset)
-        offset += nn
-    if not verts:
-        raise ValueError("shape has no faces")
-    v, f = merge_close_vertices(np.vstack(verts), np.vstack(tris))
-    return v, f, achieved
 
 
 def to_trimesh(solid, chord_tol: float = CHORD_TOL_MM, angular_tol: float = ANGULAR_TOL_RAD,

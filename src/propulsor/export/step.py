@@ -3,7 +3,7 @@
 Units are millimetres, schema AP214 (AUTOMOTIVE_DESIGN), written through OCCT's
 XCAF so that product names survive.  Output is deterministic: OCCT stamps the
 current time into the header's FILE_NAME entity; it is rewritten to the fixed
-`STEP_TIMESTAMP` so the same input gives byte-identical files (SPEC §9).
+`STEP_TIMESTAMP` so the same input gives byte-identical files.
 """
 
 from __future__ import annotations
@@ -18,27 +18,16 @@ from OCP.STEPControl import STEPControl_AsIs, STEPControl_Reader
 from OCP.TCollection import TCollection_ExtendedString
 from OCP.TDataStd import TDataStd_Name
 from OCP.TDocStd import TDocStd_Document
-from OCP.TopAbs import TopAbs_SOLID
-from OCP.TopExp import TopExp_Explorer
-from OCP.TopoDS import TopoDS, TopoDS_Shape
+from OCP.TopoDS import TopoDS_Shape
 from OCP.XCAFDoc import XCAFDoc_DocumentTool
+
+from ..solids.kernel import occ_shape, solids_of  # noqa: F401  (solids_of: public here too)
 
 STEP_TIMESTAMP = "2000-01-01T00:00:00"
 STEP_SCHEMA = "AP214IS"
 
 _TS = re.compile(r"'\d{4}-\d{2}-\d{2}T\d{2}:\d{2}:\d{2}'")
 _NAUO = re.compile(r"(NEXT_ASSEMBLY_USAGE_OCCURRENCE\(\s*)'[^']*'")
-
-
-def _shape(obj) -> TopoDS_Shape:
-    """Accept an OCP shape, a cadquery Shape or a cadquery Workplane."""
-    if isinstance(obj, TopoDS_Shape):
-        return obj
-    if hasattr(obj, "wrapped"):
-        return obj.wrapped
-    if hasattr(obj, "val"):  # Workplane
-        return obj.val().wrapped
-    raise TypeError(f"not a shape: {type(obj).__name__}")
 
 
 def _set_units() -> None:
@@ -66,7 +55,7 @@ def fix_header(path: str | Path) -> None:
 
 def write_step(solid, path: str | Path, name: str) -> Path:
     """Write one solid to STEP (mm, AP214) as a product called `name`."""
-    shape = _shape(solid)
+    shape = occ_shape(solid)
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     _set_units()
@@ -125,7 +114,7 @@ def write_assembly_step(path, components, name: str) -> Path:
             raise ValueError(f"duplicate component name {cname!r}")
         seen.add(cname)
         loc = _location(comp[2] if len(comp) > 2 else None, comp[3] if len(comp) > 3 else None)
-        assy.add(cq.Shape.cast(_shape(solid)), name=cname, loc=loc)
+        assy.add(cq.Shape.cast(occ_shape(solid)), name=cname, loc=loc)
     _set_units()
     if not exportAssembly(assy, str(path)):
         raise RuntimeError(f"STEP assembly write failed: {path}")
@@ -149,16 +138,6 @@ def read_step(path: str | Path) -> TopoDS_Shape:
     if shape is None or shape.IsNull():
         raise ValueError(f"{path}: STEP gives an empty shape")
     return shape
-
-
-def solids_of(shape) -> list:
-    """All TopoDS_Solid in a shape, in exploration order."""
-    out = []
-    ex = TopExp_Explorer(_shape(shape), TopAbs_SOLID)
-    while ex.More():
-        out.append(TopoDS.Solid_s(ex.Current()))
-        ex.Next()
-    return out
 
 
 def read_step_solids(path: str | Path) -> list:

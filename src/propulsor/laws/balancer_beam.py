@@ -65,6 +65,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.optimize import brentq
 
+from propulsor.check import Check
 from propulsor.errors import InputError, require_finite, require_positive
 from propulsor.policy import ROOT_XTOL, SECTION_DEPTH_XTOL_MM, STATICS_REL_TOL
 from propulsor.laws.suspension import SuspensionDesign
@@ -76,22 +77,10 @@ RHO_STEEL = 7.85e-6
 
 
 # ------------------------------------------------------------------- records
-@dataclass(frozen=True)
-class Check:
-    """One engineering check: value against limit; ok when value <= limit (or >= for 'min')."""
-
-    name: str
-    value: float
-    limit: float
-    unit: str
-    kind: str = "max"  # "max": value <= limit; "min": value >= limit
-    note: str = ""
-
-    @property
-    def ok(self) -> bool:
-        if self.kind == "max":
-            return bool(self.value <= self.limit)
-        return bool(self.value >= self.limit)
+def _limit_check(name: str, value: float, limit: float, unit: str, kind: str = "max", note: str = "") -> Check:
+    """value <= limit (kind "max") or value >= limit (kind "min"); the message is the note or the name."""
+    passed = value <= limit if kind == "max" else value >= limit
+    return Check(name, bool(passed), value, limit, unit, note or name)
 
 
 @dataclass(frozen=True)
@@ -539,20 +528,20 @@ class BalancerAnalysis:
             r = reactions(c.loads, self.geom.a1, self.geom.a2)
             F, M = r.residual(c.loads)
             scale = max(abs(L.F_y) for L in c.loads) * tor.R_b
-            checks.append(Check(f"{c.name}: statics residual", float(np.linalg.norm(F) + np.linalg.norm(M) / tor.R_b),
+            checks.append(_limit_check(f"{c.name}: statics residual", float(np.linalg.norm(F) + np.linalg.norm(M) / tor.R_b),
                                 STATICS_REL_TOL * scale / tor.R_b, "N"))
-            checks.append(Check(f"{c.name}: bar torque vs M_T(beta_m)",
+            checks.append(_limit_check(f"{c.name}: bar torque vs M_T(beta_m)",
                                 abs(r.bar_torque - (-c.bar_torque_expected)) / c.bar_torque_expected,
                                 STATICS_REL_TOL, "-", note="bar reacts the characteristic's torque"))
             sm = float(np.max(sig_const[c.name]))
-            checks.append(Check(f"{c.name}: constant arm sigma_vM", sm, self.sigma_allow, "MPa"))
-            checks.append(Check(f"{c.name}: equal-strength arm sigma_vM", float(np.max(sig_eq[c.name])),
+            checks.append(_limit_check(f"{c.name}: constant arm sigma_vM", sm, self.sigma_allow, "MPa"))
+            checks.append(_limit_check(f"{c.name}: equal-strength arm sigma_vM", float(np.max(sig_eq[c.name])),
                                 self.sigma_allow * (1 + STATICS_REL_TOL), "MPa"))
         for row in self.transitions():
-            checks.append(Check(f"{row['case']}: {row['where']} safety factor",
+            checks.append(_limit_check(f"{row['case']}: {row['where']} safety factor",
                                 self.sigma_yield / row["sigma_vM_peak"], self.safety, "-", kind="min",
                                 note=f"K_t = {row['K_t_bending']:.3f} (Peterson)"))
-        checks.append(Check("torsion bar shear at beta_m", float(tor.tau(tor.beta_m)), tor.tau_max, "MPa"))
+        checks.append(_limit_check("torsion bar shear at beta_m", float(tor.tau(tor.beta_m)), tor.tau_max, "MPa"))
         m_eq, sc_eq = self.arm_mass(h_eq)
         m_c, sc_c = self.arm_mass(self.geom.h)
         return {

@@ -1,7 +1,10 @@
-"""Part types: parameters -> library -> outputs.  The only layer that knows all the others.
+"""Part types: parameters -> design -> proofs -> outputs.  The only layer that knows all the others.
 
-Each part type lives in its own module exposing `PART_TYPE` (a `PartType`).
-Modules are imported on demand so that `propulsor list` / `params` stay quick.
+Each part type is a package (``params``, ``design``, ``proofs``, ``outputs``) exposing `PART_TYPE`
+(a `PartType`); every build runs the one pipeline of :mod:`.pipeline` into the
+:class:`~.writer.OutputWriter` (docs/architecture.md, "The data flow of one build").  Packages are
+imported on demand so that `propulsor list` / `params` stay quick; a part that needs another
+part type's parameters or design looks it up here, it never imports the other part.
 """
 
 from __future__ import annotations
@@ -44,6 +47,7 @@ class PartType:
     summary: str
     params_cls: type
     build: Callable  # build(params, writer) -> None; writer is an OutputWriter
+    design: Callable | None = None  # design(params, ...) -> the part's frozen design
     #: estimate(params, part_file) -> SizeEstimate; may read the files the part file names (InputError)
     estimate: Callable | None = None
 
@@ -60,6 +64,17 @@ def check_size(part_type: PartType, params, part_file: Path | None = None) -> Si
         raise InputError("size estimate", f"{est.seconds:.3g} s", f"must be <= {policy.BUILD_SECONDS_MAX:g} s on "
                          f"this machine ({est.detail}); reduce the counts named")
     return est
+
+
+#: part type name -> module of its print kit (relative to this package), ``kit(params, printer, S)``
+_KITS: dict[str, str] = {}
+
+
+def get_kit(name: str):
+    """The print-kit function of a part type; InputError when it has none yet."""
+    if name not in _KITS:
+        raise InputError("type", name, f"has no print kit yet (kits: {', '.join(sorted(_KITS)) or 'none'})")
+    return importlib.import_module(f".{_KITS[name]}", __name__).kit
 
 
 def part_type_names() -> list[str]:

@@ -69,8 +69,9 @@ def balancer(p, part_file: Path | None = None) -> SizeEstimate:
     then: solids and arm stations fixed, travel sweep ∝ steps × (0.1 mm / chord)^0.84 (the sweep meshes'
     size for the chord, measured)."""
     from .balancer import resolve
+    from .pipeline import design_of
 
-    tor = resolve(p, part_file).tor
+    tor = design_of(p, resolve, part_file).tor  # the build gets this same design
     steps = int(math.ceil(math.degrees(tor.beta_m - tor.beta0) * p.sweep_steps_per_deg)) + 1
     cpu = 66.0 + 0.01 * p.n_stations + 0.236 * steps * (0.1 / p.sweep_chord_mm) ** 0.84
     return _wall(cpu, f"travel sweep {steps} steps, sweep chord {p.sweep_chord_mm:g} mm")

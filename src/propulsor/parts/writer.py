@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from ..checks.result import Check
+from ..check import Check
 from ..parallel import Done, fork_pool
 from ..params import params_to_dict, read_part_meta
 
@@ -98,6 +98,7 @@ class OutputWriter:
         self.extra_files: list[str] = []  # assemblies and DXF, named in the report
         self._pool = None
         self._solid_jobs: list = []
+        self.report_name = "report.md"  # a print kit's is print_report.md
 
     # -- helpers -----------------------------------------------------------------
     def path(self, rel: str) -> Path:
@@ -107,7 +108,7 @@ class OutputWriter:
 
     def add_checks(self, checks) -> None:
         for c in checks:
-            self.checks.append(c if isinstance(c, Check) else Check(**c))
+            self.checks.append(c)
 
     def add_note(self, text: str) -> None:
         self.notes.append(text)
@@ -140,6 +141,13 @@ class OutputWriter:
             self.add_checks(job.result())
             self.progress(f"{name}: files written and checked")
         self._solid_jobs = []
+
+    def wait_for_files(self, *names: str) -> None:
+        """Wait until the files of the named solids are written (their checks are still collected, in
+        order, by :meth:`wait_solids`)."""
+        for name, job in self._solid_jobs:
+            if name in names:
+                job.result()
 
     def close(self) -> None:
         """Stop the workers (after a failure: nothing may be written into the folder after this)."""
@@ -209,7 +217,7 @@ class OutputWriter:
         built = [f"`{r.name}` ({', '.join(r.files.values())}; volume {r.volume_mm3:.6g} mm³)" for r in self.solids]
         built += [f"`{n}`" for n in self.extra_files]
         intro = ("Built: " + "; ".join(built) + ".") if built else ""
-        write_report(self.folder / "report.md", title=self.title, part=self.part, intro=intro, inputs=report_inputs,
+        write_report(self.folder / self.report_name, title=self.title, part=self.part, intro=intro, inputs=report_inputs,
                      derived=report_derived, checks=self.checks, tables=self.tables, plots=self.plots,
                      notes=notes)
         write_manifest(self.folder, part=self.part, inputs=inputs, derived=self.derived, checks=self.checks,

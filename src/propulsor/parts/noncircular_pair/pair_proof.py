@@ -1,4 +1,4 @@
-"""Full-cycle proof of a non-circular pair on its finished outlines (SPEC §3.2, issue 3).
+"""Full-cycle proof of a non-circular pair on its finished outlines (seed 000 eq. 9/11; docs/architecture.md, "The data flow of one build").
 
 The driven wheel (axis at the origin) turns by -phi, the driver (axis at (L, 0)) by
 +theta_law(phi) (seed 000 eq. 9/11 with the periodic wrap; the smoothed law for generated
@@ -25,11 +25,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import manifold3d as m3d
 import numpy as np
 
-from ..checks.motion import outline, transmission_sweep
-from .. import policy
+from ...checks.motion import crop_to_sector, outline, transmission_sweep
+from ... import policy
 
 
 @dataclass
@@ -111,16 +110,6 @@ class PairProof:
         }
 
 
-def _crop_section(section: m3d.CrossSection, a0: float, a1: float, r_in: float, r_out: float) -> list[np.ndarray]:
-    """Loops of ``section`` inside the annular sector a0..a1, r_in..r_out (about the origin)."""
-    n = max(8, int(math.ceil((a1 - a0) / 0.02)))
-    a = np.linspace(a0, a1, n)
-    outer = np.column_stack([r_out * np.cos(a), r_out * np.sin(a)])
-    inner = np.column_stack([r_in * np.cos(a[::-1]), r_in * np.sin(a[::-1])]) if r_in > 0 else np.zeros((1, 2))
-    wedge = m3d.CrossSection([np.ascontiguousarray(np.vstack([outer, inner]))], m3d.FillRule.Positive)
-    return [np.asarray(p, float) for p in (section ^ wedge).to_polygons()]
-
-
 def _axis_annulus(o) -> None:
     """Tighten an Outline's far-point filter: the annulus about the gear axis (the origin of its
     body frame) that holds every boundary point (a valid bound, much tighter than the one about
@@ -133,7 +122,7 @@ def _axis_annulus(o) -> None:
 
 def _outer_only(profile):
     """The outer loop of a profile as a closed polyline list (bores cannot touch the mate)."""
-    from ..geometry.profile import Profile
+    from ...geometry.profile import Profile
 
     if isinstance(profile, Profile):
         return [profile.outer.polyline(policy.MOTION_CHORD_TOL_MM)]
@@ -179,12 +168,12 @@ def prove_pair(driver_profile, driven_profile, L: float, theta_of_phi, phis, r_r
         idx = np.nonzero((phis >= edges[w]) & (phis < edges[w + 1]))[0]
         if len(idx) == 0:
             continue
-        loops = _crop_section(dvn.section, phis[idx].min() - margin_a, phis[idx].max() + margin_a, r_in, r_dvn + 1.0)
+        loops = crop_to_sector(dvn.section, phis[idx].min() - margin_a, phis[idx].max() + margin_a, r_in, r_dvn + 1.0)
         crop = outline(loops)
         _axis_annulus(crop)
         # the driver part that can come within the driven wheel's outer radius during the window
         tha, thb = float(theta[idx].min()), float(theta[idx].max())
-        dcrop = outline(_crop_section(drv.section, math.pi - thb - hw_drv, math.pi - tha + hw_drv,
+        dcrop = outline(crop_to_sector(drv.section, math.pi - thb - hw_drv, math.pi - tha + hw_drv,
                                       max(0.0, drv.r_min - 1.0), reach + 1.0))
         _axis_annulus(dcrop)
         tmap = {float(p): float(t) for p, t in zip(phis[idx], theta[idx])}

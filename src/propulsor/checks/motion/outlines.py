@@ -1,0 +1,161 @@
+"""Outlines of planar bodies: closed polylines, oriented by nesting, indexed for distance queries."""
+
+from __future__ import annotations
+
+import math
+import weakref
+from typing import Sequence
+
+import manifold3d as m3d
+import numpy as np
+from scipy.spatial import cKDTree
+
+from ... import policy
+from ...errors import InputError, require, require_positive
+from ...geometry.profile import Profile
+
+__all__ = ['row_norms', 'Outline', 'outline', 'crop_to_sector']
+
+
+def _signed_area(p: np.ndarray) -> float:
+    x, y = p[:, 0], p[:, 1]
+    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+
+
+def _points_in_polygon(pts: np.ndarray, poly: np.ndarray) -> np.ndarray:
+    """Even-odd ray casting of many points against one closed polygon."""
+    x, y = pts[:, 0][:, None], pts[:, 1][:, None]
+    a, b = poly, np.roll(poly, -1, axis=0)
+    ax, ay, bx, by = a[:, 0][None], a[:, 1][None], b[:, 0][None], b[:, 1][None]
+    cond = (ay > y) != (by > y)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        xi = ax + (y - ay) * (bx - ax) / (by - ay)
+    return (np.count_nonzero(cond & (x < xi), axis=1) % 2) == 1
+
+
+def _clean_loop(p, name: str) -> np.ndarray:
+    p = np.asarray(p, float)
+    require(p.ndim == 2 and p.shape[1] == 2, name, p.shape, "must be an (n, 2) array of points")
+    require(bool(np.all(np.isfinite(p))), name, "non-finite", "points must be finite")
+    if len(p) > 1 and np.linalg.norm(p[0] - p[-1]) <= policy.POINT_TOL_MM:
+        p = p[:-1]
+    step = np.linalg.norm(np.diff(p, axis=0, append=p[:1]), axis=1)
+    p = p[step > policy.POINT_TOL_MM]  # drop repeated vertices
+    require(len(p) >= 3, name, len(p), "a closed loop needs at least 3 distinct points")
+    return p
+
+
+def _orient_by_nesting(loops: list[np.ndarray]) -> list[np.ndarray]:
+    """Outer loops (even nesting depth) CCW, holes (odd depth) CW: material on the left."""
+    out = []
+    for i, p in enumerate(loops):
+        depth = sum(bool(_points_in_polygon(p[:1], q)[0]) for j, q in enumerate(loops) if j != i)
+        ccw = depth % 2 == 0
+        out.append(p if (_signed_area(p) > 0) == ccw else p[::-1].copy())
+    return out
+
+
+def _densify(p: np.ndarray, max_seg: float) -> np.ndarray:
+    """Insert points on the straight edges so that no edge exceeds max_seg (same polyline)."""
+    q = np.roll(p, -1, axis=0)
+    n = np.maximum(1, np.ceil(np.linalg.norm(q - p, axis=1) / max_seg).astype(int))
+    if np.all(n == 1):
+        return p
+    idx = np.repeat(np.arange(len(p)), n)
+    k = np.arange(len(idx)) - np.repeat(np.cumsum(n) - n, n)
+    t = (k / np.repeat(n, n))[:, None]
+    return p[idx] + t * (q[idx] - p[idx])
+
+
+def row_norms(V: np.ndarray) -> np.ndarray:
+    return np.sqrt(np.einsum("ij,ij->i", V, V))
+
+
+class Outline:
+    """A planar body prepared for motion checks (in its own body frame).
+
+    ``loops``: closed polylines (first point not repeated), material on the left;
+    ``section``: the manifold3d CrossSection of those loops (fill rule Positive);
+    ``points``: all vertices after subdividing long edges, with edge arrays
+    ``seg_a``/``seg_b`` (edge k runs from point k to point ``nxt[k]``), ``prev``,
+    ``loop_id``, ``arclen`` (arc length of each vertex along its loop) and a
+    cKDTree of the points; ``center``, ``r_min``, ``radius``: an annulus holding
+    every boundary point (used to discard far points before any tree query).
+    """
+
+    def __init__(self, loops: Sequence[np.ndarray], max_segment: float = policy.MOTION_MAX_SEGMENT_MM):
+        require_positive("max_segment", max_segment, "mm")
+        require(len(loops) >= 1, "loops", len(loops), "need at least one closed loop")
+        cleaned = [_clean_loop(p, f"loops[{i}]") for i, p in enumerate(loops)]
+        self.loops = _orient_by_nesting(cleaned)
+        self.section = m3d.CrossSection([np.ascontiguousarray(p) for p in self.loops], m3d.FillRule.Positive)
+        dense = [_densify(p, max_segment) for p in self.loops]
+        sizes = np.array([len(d) for d in dense])
+        starts = np.concatenate([[0], np.cumsum(sizes)[:-1]])
+        self.points = np.vstack(dense)
+        self.loop_id = np.repeat(np.arange(len(dense)), sizes)
+        local = np.arange(len(self.points)) - starts[self.loop_id]
+        self.nxt = starts[self.loop_id] + (local + 1) % sizes[self.loop_id]
+        self.prev = starts[self.loop_id] + (local - 1) % sizes[self.loop_id]
+        self.seg_a = self.points
+        self.seg_b = self.points[self.nxt]
+        self.seg_len = np.linalg.norm(self.seg_b - self.seg_a, axis=1)
+        self.half_len = 0.5 * float(self.seg_len.max())
+        cum = np.cumsum(self.seg_len)
+        loop_start_cum = (cum - self.seg_len)[starts]
+        self.arclen = cum - self.seg_len - loop_start_cum[self.loop_id]
+        self.perimeter = np.array([self.seg_len[self.loop_id == i].sum() for i in range(len(dense))])
+        self.tree = cKDTree(self.points)
+        lo, hi = self.points.min(axis=0), self.points.max(axis=0)
+        self.center = 0.5 * (lo + hi)
+        dc = np.linalg.norm(self.points - self.center, axis=1)
+        self.radius = float(dc.max())
+        self.r_min = float(dc.min())  # the whole boundary lies in the annulus r_min .. radius about center
+
+    def boundary_lower_bound(self, P: np.ndarray) -> np.ndarray:
+        """A lower bound of the distance from each point (body frame) to the boundary (annulus test)."""
+        d = row_norms(P - self.center)
+        return np.maximum(d - self.radius, self.r_min - d)
+
+    @property
+    def area(self) -> float:
+        return float(self.section.area())
+
+    def __len__(self) -> int:
+        return len(self.points)
+
+
+_OUTLINE_CACHE: "weakref.WeakKeyDictionary[Profile, dict]" = weakref.WeakKeyDictionary()
+
+
+def outline(body, chord_tol: float = policy.MOTION_CHORD_TOL_MM, max_segment: float = policy.MOTION_MAX_SEGMENT_MM) -> Outline:
+    """Outline of a Profile (sampled to chord_tol, cached per profile) or of a list of closed polylines.
+
+    An :class:`Outline` passes through unchanged.
+    """
+    if isinstance(body, Outline):
+        return body
+    if isinstance(body, Profile):
+        require_positive("chord_tol", chord_tol, "mm")
+        per = _OUTLINE_CACHE.setdefault(body, {})
+        key = (float(chord_tol), float(max_segment))
+        if key not in per:
+            per[key] = Outline(body.polylines(chord_tol), max_segment)
+        return per[key]
+    if isinstance(body, np.ndarray) and body.ndim == 2:
+        body = [body]
+    try:
+        loops = list(body)
+    except TypeError:
+        raise InputError("body", type(body).__name__, "must be a Profile, an Outline or a list of closed (n, 2) polylines") from None
+    return Outline(loops, max_segment)
+
+
+def crop_to_sector(section: m3d.CrossSection, a0: float, a1: float, r_in: float, r_out: float) -> list[np.ndarray]:
+    """Loops of ``section`` inside the annular sector a0..a1, r_in..r_out (about the origin)."""
+    n = max(8, int(math.ceil((a1 - a0) / 0.02)))
+    a = np.linspace(a0, a1, n)
+    outer = np.column_stack([r_out * np.cos(a), r_out * np.sin(a)])
+    inner = np.column_stack([r_in * np.cos(a[::-1]), r_in * np.sin(a[::-1])]) if r_in > 0 else np.zeros((1, 2))
+    wedge = m3d.CrossSection([np.ascontiguousarray(np.vstack([outer, inner]))], m3d.FillRule.Positive)
+    return [np.asarray(p, float) for p in (section ^ wedge).to_polygons()]

@@ -1,0 +1,64 @@
+"""Parameters of the planetary final drive (seed 004 ch. 4)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ... import policy
+from ...params import param
+
+__all__ = ["FinalDriveParams"]
+
+_WHY_MODULE = "the largest modules of GOST 9563 / ISO 54 series 1"
+_WHY_TEETH = "a z = 300 gear at m = 50 is 15 m across"
+_WHY_SHIFT = "past it the tooth turns pointed or the rack undercuts the root at any z"
+_WHY_WIDTH = "b = 20 modules at the largest common module: wider faces carry no more (ISO 6336 K_Hβ)"
+_WHY_DIAMETER = "the reference diameter of the largest gear (z = 300, m = 50)"
+
+
+@dataclass
+class FinalDriveParams:
+    """Parameters of the planetary final drive (ring fixed, sun in, carrier out)."""
+
+    module_mm: float = param(10.0, "mm", "module m", min=0.5, max=50.0, why=_WHY_MODULE)
+    z_sun: int = param(16, "", "sun teeth z1", min=7, max=300, integer=True, why=_WHY_TEETH)
+    z_planet: int = param(20, "", "planet teeth z2", min=7, max=300, integer=True, why=_WHY_TEETH)
+    z_ring: int = param(56, "", "ring teeth z3", min=12, max=600, integer=True, why="z1 + 2·z2 with both at their limit")
+    x_sun: float = param(0.5, "", "sun profile shift x1", min=-1.0, max=2.0, why=_WHY_SHIFT)
+    x_planet: float = param(0.5, "", "planet profile shift x2", min=-1.0, max=2.0, why=_WHY_SHIFT)
+    x_ring: float = param(1.417, "", "ring profile shift x3 (GOST 19274 sign)", min=-1.0, max=3.0,
+                          why="internal teeth turn pointed or the shaper undercuts them past it")
+    ring_shift_for_coaxiality: bool = param(
+        False, "", "replace x_ring by the shift that makes both operating centre distances equal")
+    n_planets: int = param(3, "", "number of planets k", min=1, max=12, integer=True,
+                           why="neighbouring planets of z2 >= 7 collide past 12 on any ring of z3 <= 600 that is built")
+    shaper_z0: int = param(14, "", "teeth of the shaper cutter that cuts the ring", min=6, max=200, integer=True,
+                           why="largest disc shaper cutters (GOST 9323: d0 <= 200 mm at m >= 1)")
+    shaper_x0: float = param(0.04, "", "profile shift of the shaper cutter", min=-1.5, max=1.5, why=_WHY_SHIFT)
+    width_sun_mm: float = param(80.0, "mm", "face width of the sun", min=0, min_exclusive=True, max=1000.0, why=_WHY_WIDTH)
+    width_planet_mm: float = param(75.0, "mm", "face width of a planet", min=0, min_exclusive=True, max=1000.0, why=_WHY_WIDTH)
+    width_ring_mm: float = param(80.0, "mm", "face width of the ring", min=0, min_exclusive=True, max=1000.0, why=_WHY_WIDTH)
+    tooth_thinning_mm: float = param(
+        0.15, "mm", "tooth thickness allowance E_sn of every gear (ring: space widening); "
+        "normal backlash of a mesh ≈ 2·E_sn·cos α", min=0.0, max=2.0,
+        why="ten times the largest allowance of GOST 1643 at m <= 50")
+    sun_bore_mm: float = param(80.0, "mm", "sun bore diameter (0: no bore)", min=0.0, max=15000.0, why=_WHY_DIAMETER)
+    sun_keyway: bool = param(True, "", "DIN 6885-1 keyway in the sun bore")
+    planet_bore_mm: float = param(110.0, "mm", "planet bore (bearing seat) diameter (0: no bore)", min=0.0, max=15000.0,
+                                 why=_WHY_DIAMETER)
+    ring_outer_d_mm: float = param(0.0, "mm", "ring outside diameter (0: root diameter + 8 modules)", min=0.0, max=40000.0,
+                                  why="a ring of z3 = 600, m = 50 and a rim of 100 modules")
+    ring_bolts: int = param(12, "", "mounting holes in the ring rim (0: none)", min=0, max=72, integer=True,
+                            why="a bolt every 5°, the densest flange pattern in use")
+    ring_bolt_d_mm: float = param(18.0, "mm", "mounting hole diameter", min=0, min_exclusive=True, max=200.0,
+                                 why="M180 bolts are the largest in ISO 262")
+    sweep_steps_per_deg: float = param(float(policy.PLANETARY_SWEEP_STEPS_PER_DEG), "1/deg",
+                                       "interference sweep steps per degree of carrier turn",
+                                       min=float(policy.PLANETARY_SWEEP_STEPS_PER_DEG), max=20.0,
+                                       why="0.05° steps resolve every clearance the outlines hold")
+
+    def validate(self) -> None:
+        from ..pipeline import design_of
+        from .design import design
+
+        design_of(self, design)  # raises InputError for a set that cannot be made

@@ -1,0 +1,250 @@
+"""The non-circular pair's design: law, closure, teeth of one tooth method, finished profiles.
+
+Two tooth methods:
+
+* ``generated`` (default): a C2, closure-exact blend of the law around every leg hand-over
+  (``gears.noncircular.SmoothedWalkingLaw``) whose half-width is the smallest keeping both pitch
+  curves generable (rack undercut limit rho >= (h_a* - x) m / sin^2 alpha on convex parts with the
+  driver shifted by +x and the driven wheel by -x; shaper z0 with r0 < |rho| on concave parts), or
+  given by the user; conjugate teeth enveloped by the ISO 53 rack / the shaper on one shared
+  arc-length frame (``geometry.noncircular_outline``).
+* ``sectors``: the papers' own method (seed 000 eqs. 16-52, seed 002 Tables 2-4, ``gears.sectors``)
+  on the exact law.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...errors import InputError, input_names
+from ...gears.generability import CutterSpec, SmoothingDesign, check_generable, choose_smoothing
+from ...gears.involute import BasicRack
+from ...gears.noncircular import PitchCurves, SmoothedWalkingLaw, hub_speed_ripple, perimeter_per_mm
+from ...gears.sectors import sector_hub_speed, sector_radii, sector_table
+from ...laws.walking import WalkingLaw
+from .params import NoncircularPairParams
+
+#: part-file keys of the quantities the tooth generators name in their errors
+_TOOTH_KEYS = {"m": "module_mm", "z_H": "driven_teeth", "z0": "shaper_teeth"}
+
+__all__ = ["Design", "PairDesign", "design", "pair_design", "design_generated", "design_sectors",
+           "sector_design_table", "mounting", "gear_profiles"]
+
+
+# =========================================================================== design
+@dataclass(frozen=True)
+class Design:
+    """Law, closure and teeth of one method (no files)."""
+
+    method: str
+    law: WalkingLaw
+    run_law: object          # the law the teeth realise (smoothed for generated, exact for sectors)
+    L: float
+    m: float
+    z_H: int
+    z: int
+    pc: PitchCurves
+    smoothing: object = None  # SmoothingDesign (generated)
+    table: object = None      # SectorTable (sectors)
+    driver: object = None     # GeneratedGear | SectorGear
+    driven: object = None
+    ripple: object = None     # HubSpeedRipple
+    closure_error: float = math.nan
+
+    @property
+    def smoothing_deg(self) -> float:
+        return math.degrees(self.smoothing.delta) if self.smoothing is not None else 0.0
+
+
+def _law(p: NoncircularPairParams) -> WalkingLaw:
+    return WalkingLaw(a=p.a_mm, b=p.b_mm, c=p.c_mm, n=p.driver_turns)
+
+
+def _rack(p) -> BasicRack:
+    return BasicRack(alpha=math.radians(p.pressure_angle_deg))
+
+
+def _thinning(p) -> float:
+    """Arc tooth-thickness reduction per gear: j_n split evenly, j_n / (2 cos alpha)."""
+    return p.backlash_mm / (2.0 * math.cos(math.radians(p.pressure_angle_deg)))
+
+
+def _smoothing(p, law: WalkingLaw, m: float):
+    """The blend: given (smoothing_deg > 0) or the smallest generable (choose_smoothing)."""
+    cutter = CutterSpec(m=m, alpha=math.radians(p.pressure_angle_deg), x=p.driver_shift, x_H=-p.driver_shift,
+                        z0=p.shaper_teeth)
+    z_H = p.driven_teeth
+    if p.smoothing_deg > 0:
+        sl = SmoothedWalkingLaw(law, math.radians(p.smoothing_deg))
+        L = math.pi * m * z_H / perimeter_per_mm(sl)
+        g = check_generable(PitchCurves(sl, L), cutter)
+        if not g.ok:
+            best = _smallest_generable(law, cutter, z_H)
+            raise InputError("smoothing_deg", p.smoothing_deg, "the pitch curves are not generable with this blend: "
+                             + "; ".join(c.reason for c in (g.driver, g.driven) if not c.ok), best)
+        return SmoothingDesign(law=sl, delta=sl.delta, L=L, z_H=z_H, z=z_H // law.n, cutter=cutter,
+                               generability=g, ripple=hub_speed_ripple(sl))
+    try:
+        return choose_smoothing(law, cutter, z_H, delta_max=math.radians(p.smoothing_max_deg))
+    except InputError as exc:
+        best = _smallest_generable(law, cutter, z_H) if p.smoothing_max_deg < 45.0 else "no blend up to 45 deg works"
+        raise InputError(
+            "smoothing_max_deg", p.smoothing_max_deg,
+            f"no C2 smoothing up to {p.smoothing_max_deg:g} deg keeps both pitch curves generable: "
+            f"{str(exc).split(': ', 1)[-1]} [x = driver_shift, z_H = driven_teeth, z0 = shaper_teeth, m = module_mm]",
+            best) from None
+
+
+def _smallest_generable(law, cutter, z_H) -> str:
+    try:
+        d = choose_smoothing(law, cutter, z_H, delta_max=math.pi / 4)
+    except InputError as exc:
+        return "no blend up to 45 deg works either"
+    return (f"a blend of {math.degrees(d.delta):.3f} deg would work "
+            f"(smoothing_max_deg >= {math.degrees(d.delta):.3f}; hub speed ripple {100 * d.ripple.ripple:.2f} %)")
+
+
+def design_generated(p: NoncircularPairParams, progress=lambda s: None) -> Design:
+    """Seed 000/002 law -> C2 blend -> closure -> generated teeth (docs/architecture.md, "Seed equations and their modules")."""
+    from ...gears.noncircular_teeth import ArcFrame, ToothSpec
+    from ...geometry.noncircular_outline import generate_gear
+
+    law = _law(p)
+    z_H = p.driven_teeth
+    m = p.module_mm if p.module_mm > 0 else 1.0
+    progress("generated: choosing the smoothing of the law")
+    sm = _smoothing(p, law, m)
+    if p.center_distance_mm > 0:  # module from L: the design is scale invariant (rho and limits ~ m)
+        scale = p.center_distance_mm / sm.L
+        m *= scale
+        sm = _smoothing(_replace(p, module_mm=m, center_distance_mm=0.0), law, m)
+    L = sm.L
+    pc = sm.pair
+    frame = ArcFrame(pc)
+    rack = _rack(p)
+    th = _thinning(p)
+    common = dict(m=m, thinning_mm=th, rack=rack, z0=p.shaper_teeth, tip_min_mm=p.tip_land_min_module * m)
+    g = sm.generability
+    with input_names(_TOOTH_KEYS):
+        for chk, x in ((g.driver, p.driver_shift), (g.driven, -p.driver_shift)):
+            if chk.concave:  # fail fast: the shaper this gear needs must exist
+                ToothSpec(x=x, **common).shaper_tools()
+        progress(f"generated: driver teeth ({z_H // law.n}), rack/shaper envelopes")
+        drv = generate_gear(pc, "driver", ToothSpec(x=p.driver_shift, **common), frame)
+        progress(f"generated: driven teeth ({z_H})")
+        dvn = generate_gear(pc, "driven", ToothSpec(x=-p.driver_shift, **common), frame)
+    return Design("generated", law, sm.law, L, m, z_H, z_H // law.n, pc, smoothing=sm, driver=drv, driven=dvn,
+                  ripple=sm.ripple, closure_error=sm.closure_error)
+
+
+def _replace(p, **kw):
+    import dataclasses
+
+    return dataclasses.replace(p, **kw)
+
+
+def sector_design_table(p: NoncircularPairParams):
+    """(SectorTable, L, m) of the papers' method for these parameters: L given, or from the
+    module so that the sector arc r_Hk dphi_k is pi m (the arcs are linear in L)."""
+    law = _law(p)
+    i = p.driven_teeth // 4
+    m = p.module_mm
+    if p.center_distance_mm > 0:
+        L = p.center_distance_mm
+    else:
+        L = math.pi * m / sector_table(law, 1.0, i).arc
+    return sector_table(law, L, i), L, m
+
+
+def design_sectors(p: NoncircularPairParams, progress=lambda s: None) -> Design:
+    """The papers' sector method on the exact law (seed 000 eqs. 16-52, seed 002 Tables 2-4)."""
+    from ...gears.sectors import sector_tip_thickness
+    from ...geometry.sector_outline import sector_driven_gear, sector_driver_gear
+
+    law = _law(p)
+    table, L, m = sector_design_table(p)
+    sector_radii(table, m)
+    t_drv, t_dvn = sector_tip_thickness(table, m, p.backlash_mm)
+    if not min(t_drv, t_dvn) > 0:
+        m_ok = _largest_sector_module(table, p.backlash_mm, m)
+        raise InputError("module_mm", m,
+                         f"sector teeth are pointed at the tip: tip land {min(t_drv, t_dvn):.3f} mm <= 0 "
+                         f"(driver {t_drv:.3f}, driven {t_dvn:.3f} mm) at L = {L:.4f} mm",
+                         f"the largest module with a tip land > 0 at this L is {m_ok:.4f} mm")
+    progress(f"sectors: outlines ({table.i} sectors per leg)")
+    with input_names(_TOOTH_KEYS):
+        drv = sector_driver_gear(table, m, p.backlash_mm)
+        dvn = sector_driven_gear(table, m, p.backlash_mm)
+    closure = abs(4 * float(np.sum(table.dtheta)) - 2 * math.pi * law.n)
+    return Design("sectors", law, law, L, m, 4 * table.i, 4 * table.i // law.n, PitchCurves(law, L), table=table,
+                  driver=drv, driven=dvn, ripple=sector_hub_speed(table), closure_error=closure)
+
+
+def _largest_sector_module(table, j_n, m_hi) -> float:
+    from ...gears.sectors import sector_tip_thickness
+
+    lo, hi = 0.0, m_hi
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        if min(sector_tip_thickness(table, mid, j_n)) > 0:
+            lo = mid
+        else:
+            hi = mid
+    return lo
+
+
+def design(p: NoncircularPairParams, progress=lambda s: None) -> Design:
+    return design_generated(p, progress) if p.method == "generated" else design_sectors(p, progress)
+
+
+# =========================================================================== proof
+def mounting(p: NoncircularPairParams, d: Design) -> float:
+    """Installed centre distance: the design L unless mounting_distance_mm > 0 (>= L)."""
+    if p.mounting_distance_mm <= 0:
+        return d.L
+    if p.mounting_distance_mm < d.L - 1e-9:
+        raise InputError("mounting_distance_mm", p.mounting_distance_mm,
+                         f"must be >= the design centre distance L = {d.L:.6f} mm (or 0)")
+    return p.mounting_distance_mm
+
+
+# =========================================================================== solids / files
+def _with_bore(profile, bore_d: float, keyway: bool, root_min: float, m: float, which: str):
+    from ...geometry.gear_outline import bore_loop, keyway_for_shaft
+    from ...geometry.profile import Profile
+
+    if bore_d <= 0:
+        return profile
+    name = f"{which}_bore_mm"
+    t2 = keyway_for_shaft(bore_d)[1] if keyway else 0.0
+    lim = root_min - m
+    if not bore_d / 2 + t2 < lim:
+        raise InputError(name, bore_d, f"bore{' + keyway' if keyway else ''} must stay one module inside the root: "
+                         f"bore/2 + t2 = {bore_d / 2 + t2:.3f} mm >= {lim:.3f} mm",
+                         f"largest bore about {2 * (lim - t2):.1f} mm")
+    return Profile(profile.outer, [bore_loop(bore_d, True if keyway else None)], profile.name)
+
+
+def gear_profiles(p: NoncircularPairParams, d: Design):
+    """(driver, driven) profiles with bore and keyway (InputError if they do not fit)."""
+    return (_with_bore(d.driver.profile, p.driver_bore_mm, p.keyway, d.driver.root_min_radius, d.m, "driver"),
+            _with_bore(d.driven.profile, p.driven_bore_mm, p.keyway, d.driven.root_min_radius, d.m, "driven"))
+
+
+@dataclass(frozen=True)
+class PairDesign:
+    """The part's design: the pair of one method, the finished profiles (bore, keyway), the installed
+    centre distance."""
+
+    p: NoncircularPairParams
+    d: Design
+    profiles: tuple  # (driver, driven) Profile
+    mount: float
+
+
+def pair_design(p: NoncircularPairParams) -> PairDesign:
+    d = design(p)
+    return PairDesign(p, d, gear_profiles(p, d), mounting(p, d))

@@ -1,0 +1,345 @@
+"""The non-circular pair's outputs: solids, assembly, DXF, the papers' tables, plots, checks, notes;
+and its build.
+
+Frames (the contract other tools read): the driven wheel's axis at the origin, the driver's at
+(L, 0); ``driven.dxf`` / ``driver.dxf`` hold each gear about its own axis in its phase at
+phi = theta = 0 of the assembly (the contact of law angle 0 on the line of centres).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ...gears.noncircular import PitchCurves
+from ...gears.sectors import (
+    PINION_POINT_COLUMNS, RADII_COLUMNS, SECTOR_COLUMNS, WHEEL_POINT_COLUMNS, pinion_tooth_points,
+    sector_hub_speed, sector_radii, structured_rows, wheel_space_points,
+)
+from ...laws.walking import LEG_PERIOD
+from ..pipeline import Pipeline, design_of
+from .design import Design, PairDesign, mounting, pair_design, sector_design_table
+from .params import NoncircularPairParams
+from .proofs import checks_generated, checks_sectors, proofs
+
+__all__ = ["build", "start_solids", "write_outputs", "solids", "assembly_and_dxf", "tables", "plots",
+           "checks_and_derived", "notes"]
+
+
+def start_solids(p: NoncircularPairParams, w, profiles):
+    """Extrude both gears (face width) and hand them to the writer (STEP/STL/3MF and the shared
+    checks, in its workers).  Returns (driver, driven) solids for the assembly."""
+    from ...solids.build import extrude_profile
+
+    w.progress("solids")
+    prof_drv, prof_dvn = profiles
+    s_drv = extrude_profile(prof_drv, p.face_width_mm)
+    s_dvn = extrude_profile(prof_dvn, p.face_width_mm)
+    w.add_solid("driven", s_dvn, expected_genus=1 if p.driven_bore_mm > 0 else 0)
+    w.add_solid("driver", s_drv, expected_genus=1 if p.driver_bore_mm > 0 else 0)
+    return s_drv, s_dvn
+
+
+def sector_tables(w, p: NoncircularPairParams, note_if_missing: bool = True):
+    """Table 1 (both seeds) and Tables 2-4 (seed 002) of the papers' method for these parameters."""
+    if p.driven_teeth % 4:
+        w.add_note("Sector tables not written: the papers' method needs driven_teeth = 4 x sectors per leg.")
+        return None
+    table, L, m = sector_design_table(p)
+    w.add_note(
+        f"The papers' tables for these parameters (seed 000 Table 1 -> tables/sectors.csv, seed 002 Tables 2-4 -> "
+        f"radii.csv, driver_teeth.csv, driven_spaces.csv): i = {table.i} sectors per leg, L = {L:.6f} mm "
+        f"({'given' if p.center_distance_mm > 0 else 'from the module: sector arc = pi m'}; sector arc "
+        f"{table.arc:.4f} mm), m = {m:g} mm, j_n = {p.backlash_mm:g} mm; angles in rad and deg as printed.")
+    w.add_table("sectors", list(SECTOR_COLUMNS), [[r[c] for c in SECTOR_COLUMNS] for r in table.rows()])
+    rad = sector_radii(table, m)
+    w.add_table("radii", list(RADII_COLUMNS), [[r[c] for c in RADII_COLUMNS] for r in rad.rows()])
+    for name, arr, cols in (("driver_teeth", pinion_tooth_points(table, m, p.backlash_mm), PINION_POINT_COLUMNS),
+                            ("driven_spaces", wheel_space_points(table, m, p.backlash_mm), WHEEL_POINT_COLUMNS)):
+        w.add_table(name, list(cols), [[r[c] for c in cols] for r in structured_rows(arr)])
+    return table
+
+
+def pitch_polyline(d: Design, role: str, n: int = 1441) -> np.ndarray:
+    from ...gears.noncircular_teeth import BodyPitchCurve
+
+    span = 2 * math.pi if role == "driven" else 2 * math.pi / d.law.n
+    return BodyPitchCurve(d.pc, role).point(np.linspace(0.0, span, n, endpoint=False))
+
+
+def figure2(w, d: Design, pr, other, pr_other):
+    from ...export.plots import new_figure
+
+    fig, ax = new_figure(8.0, 5.0)
+    ph = np.linspace(0.0, LEG_PERIOD, 2001)
+    ax.plot(np.degrees(ph), d.law.U(ph), "k--", lw=0.9, label="law U(phi), seed 000 eq. 15 (exact)")
+    if d.method == "generated":
+        ax.plot(np.degrees(ph), d.run_law.U(ph), "k-", lw=1.0,
+                label=f"law with C2 blend, {d.smoothing_deg:.2f} deg")
+    for dd, pp in ((d, pr), (other, pr_other)):
+        if dd is None or pp is None:
+            continue
+        x, u = pp.ratio_actual()
+        x = np.mod(x, LEG_PERIOD)
+        ax.plot(np.degrees(x), u, ".", ms=2.5, label=f"{dd.method} teeth: d theta / d phi from the outlines")
+    ax.set_xlabel("driven angle phi within one leg, deg")
+    ax.set_ylabel("gear ratio U = d theta / d phi")
+    ax.set_title("The papers' Figure 2 (seed 000), from geometry: the law vs the ratio the teeth deliver")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    w.add_plot("figure2_ratio", fig)
+
+
+def ratio_and_layout_plots(w, d: Design, pr, profiles, mount: float, table=None):
+    from ...export.plots import new_figure
+
+    fig, ax = new_figure()
+    ok = np.isfinite(pr.te_drive)
+    ax.plot(np.degrees(pr.phi), 1e3 * (pr.phi_run - pr.phi), ".-", ms=2, lw=0.6,
+            label="running position (loaded flank; least overlap where jammed)")
+    ax.set_xlabel("driven angle phi, deg")
+    ax.set_ylabel("transmission error (actual - law), mrad of the driven wheel")
+    ax2 = ax.twinx()
+    ax2.plot(np.degrees(pr.phi[ok]), pr.backlash_mm[ok], "r.", ms=2, label="backlash")
+    ax2.set_ylabel("backlash on the driven pitch curve, mm", color="r")
+    ax.set_title(f"{d.method} teeth: transmission error and backlash over the whole cycle")
+    fig.tight_layout()
+    w.add_plot("transmission_error", fig)
+
+    fig, ax = new_figure()
+    ph = np.linspace(-math.pi / 4, math.pi / 4, 4001)
+    mean = d.law.hub_speed_ratio
+    ax.plot(np.degrees(ph), d.law.hub_speed(ph) / mean, "k--", lw=0.9, label="exact law (constant)")
+    if d.method == "generated":
+        ax.plot(np.degrees(ph), d.run_law.hub_speed(ph) / mean, "b-", lw=1.0,
+                label=f"C2 blend {d.smoothing_deg:.2f} deg: ripple {100 * d.ripple.ripple:.2f} %")
+    if table is not None or d.method == "sectors":
+        from ...gears.sectors import sector_ratio
+
+        tab = table
+        if tab is not None:
+            ax.plot(np.degrees(ph), d.law.dX01_dphi(ph) / sector_ratio(tab, ph) / mean, "g-", lw=0.8,
+                    label=f"sector method (ideal teeth): ripple {100 * sector_hub_speed(tab).ripple:.2f} %")
+    ax.set_xlabel("driven angle phi within one leg, deg")
+    ax.set_ylabel("hub speed v/omega relative to its mean")
+    ax.set_title("Price of the tooth method: hub speed over one leg (seed 000 eq. 2-3)")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    w.add_plot("hub_speed", fig)
+
+    fig, ax = new_figure(6.5, 6.5)
+    for prof, off in ((profiles[1], (0.0, 0.0)), (profiles[0], (mount, 0.0))):
+        for q in prof.polylines(0.01):
+            q = np.vstack([q, q[:1]]) + np.asarray(off)
+            ax.plot(q[:, 0], q[:, 1], lw=0.5)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel("x, mm")
+    ax.set_ylabel("y, mm")
+    ax.set_title(f"pair at phi = theta = 0 ({d.method} teeth), centre distance {mount:.4f} mm")
+    fig.tight_layout()
+    w.add_plot("pair", fig)
+
+
+def _pct(x):
+    return f"{100 * x:.2f} %"
+
+
+def write_notes(w, d, pr, other, pr_other, other_note, p, mount):
+    s = pr.summary()
+    law = d.law
+    w.add_note(
+        f"Law (seed 000 eqs. 1-15, periodic per leg, SPEC Trap 1): A = a - b + c = {law.A:g} mm, "
+        f"u = n pi A / (A pi + 6 b) = {law.u:.6f}, n = {law.n}; constant hub speed v/omega = A/u = "
+        f"{law.hub_speed_ratio:.4f} mm/rad with the exact law.  Closure by true arc length (Trap 3): "
+        f"L = {d.L:.6f} mm, m = {d.m:.6f} mm, z {d.z}/{d.z_H}; the driver makes exactly n turns per driven turn "
+        f"(closure error {d.closure_error:.2g} rad).")
+    if d.method == "generated":
+        sm = d.smoothing
+        g = sm.generability
+        r = d.ripple
+        w.add_note(
+            f"Price of smoothing (SPEC Trap 2): the exact law has corners at leg hand-over (phi = 45 deg + k 90 deg); "
+            f"it is replaced there by an even degree-6 polynomial in the blend window of half-width "
+            f"{d.smoothing_deg:.4f} deg ({sm.delta:.6f} rad), matching U, U', U'' at the window ends (C2) and the "
+            f"window integral (closure exact).  It was chosen as the "
+            f"{'smallest blend' if p.smoothing_deg == 0 else 'given blend'} keeping both pitch curves generable: "
+            f"driver convex rho_min {g.driver.rho_convex_min:.3f} mm >= rack undercut limit {g.driver.rho_limit:.3f} mm "
+            f"(shift x = {p.driver_shift:+g}), driven rho_min {g.driven.rho_convex_min:.3f} mm >= {g.driven.rho_limit:.3f} mm "
+            f"(x = {-p.driver_shift:+g})"
+            + (f", driven concave |rho|_min {g.driven.rho_concave_min:.3f} mm > shaper pitch radius {g.driven.r0:.3f} mm"
+               if g.driven.concave else "")
+            + (f", driver concave |rho|_min {g.driver.rho_concave_min:.3f} mm > {g.driver.r0:.3f} mm" if g.driver.concave else "")
+            + f".  The hub speed v/omega = (dX01/dphi)/U is constant outside the windows; inside them it ripples by "
+              f"(max - min)/mean = {_pct(r.ripple)}, the minimum at phi = {math.degrees(r.phi_min):.3f} deg (hand-over) "
+              f"and the maximum at phi = {math.degrees(r.phi_max):.3f} deg (inside the window).")
+        w.add_note(
+            f"Generated teeth: ISO 53 rack (alpha = {p.pressure_angle_deg:g} deg, h_a* = 1, c* = 0.25, rho_f* = 0.38) "
+            f"rolling on each pitch curve on one shared arc-length frame; driver shift {p.driver_shift:+g}, driven "
+            f"{-p.driver_shift:+g} (one imaginary rack: the pair stays conjugate at the pitch-curve centre distance); "
+            f"{d.driven.shaper_teeth + d.driver.shaper_teeth} teeth next to concave stretches cut by a shaper z0 = "
+            f"{p.shaper_teeth} (x0 = -x of the gear); {d.driver.shortened_teeth + d.driven.shortened_teeth} tips "
+            f"shortened to a land of {p.tip_land_min_module:g} m; undercut teeth: "
+            f"{d.driver.undercut_teeth + d.driven.undercut_teeth}; backlash j_n = {p.backlash_mm:g} mm as tooth "
+            f"thinning j_n/(2 cos alpha) per gear.")
+    else:
+        w.add_note(
+            f"Sector teeth (the papers' method): {d.table.i} sectors per leg of equal arc "
+            f"{d.table.arc:.4f} mm (pi m = {math.pi * d.m:.4f} mm), base radius r - m, tip r + m, root r - 1.25 m, "
+            f"backlash as the angular correction j_n/(4 r_b), j_n = {p.backlash_mm:g} mm (seed 002 Tables 2-4).  "
+            "Transitions the papers leave open (ours): below the base circle the flank is radial down to the root; "
+            "a driven tooth between spaces i and i+1 has the tip radius of sector i+1 (the 6th point of Table 4; a "
+            "radial flank where that tip lies below the base circle of sector i); a driver space straddling two "
+            "sectors has a root whose radius passes between the two root radii by the quintic smoothstep in angle.  "
+            f"Even with ideal teeth the staircase ratio leaves a hub speed ripple of {_pct(d.ripple.ripple)}.")
+    w.add_note(
+        f"Proof on the finished outlines ({d.method}, {s['steps']} phases over the whole driven turn, "
+        f"{p.proof_phases_per_tooth} per driven tooth, manifold3d booleans, gears at the installed centre "
+        f"distance {mount:.4f} mm): overlap at the law's positions max "
+        f"{s['overlap_law_max_mm2']:.4g} mm^2 ({s['overlap_law_steps']} phases); phases without a free position "
+        f"(jam) {s['jams']}; transmission error of the loaded flank {s['te_min_rad']:.4e} .. {s['te_max_rad']:.4e} rad "
+        f"(peak-to-peak {s['te_pp_rad']:.3e} rad); backlash {s['backlash_min_mm']:.4f} .. {s['backlash_max_mm']:.4f} mm "
+        f"on the driven pitch curve; tooth pairs in contact min {s['contact_pairs_min']}, mean "
+        f"{s['contact_pairs_mean']:.3f}.")
+    if pr_other is not None:
+        so = pr_other.summary()
+        w.add_note(
+            f"Comparison with the {other.method} method for the same law, module and teeth (one leg, "
+            f"{so['steps']} phases; L = {other.L:.4f} mm): hub speed ripple {_pct(other.ripple.ripple)} vs "
+            f"{_pct(d.ripple.ripple)}; overlap at the law's positions max {so['overlap_law_max_mm2']:.4g} mm^2 "
+            f"({so['overlap_law_steps']} phases); jams {so['jams']} (least overlap up to "
+            f"{float(np.max(pr_other.least_overlap)):.4g} mm^2); transmission error peak-to-peak "
+            f"{so['te_pp_rad']:.3e} rad; backlash {so['backlash_min_mm']:.4f} .. {so['backlash_max_mm']:.4f} mm.  "
+            "plots/figure2_ratio.png shows both against the law.")
+    elif other_note:
+        w.add_note(other_note)
+
+
+
+def solids(dd: PairDesign, w, built: dict) -> None:
+    """Both gears to the writer first: their files and checks run beside the proof."""
+    built["solids"] = start_solids(dd.p, w, dd.profiles)
+
+
+def assembly_and_dxf(dd: PairDesign, w, built: dict) -> None:
+    """The pair's assembly STEP and a DXF of each gear (axis at the origin, phase phi = theta = 0)."""
+    d = dd.d
+    s_drv, s_dvn = built["solids"]
+    prof_drv, prof_dvn = dd.profiles
+    w.add_assembly("pair", [("driven", s_dvn, (0.0, 0.0, 0.0), 0.0),
+                            ("driver", s_drv, (dd.mount, 0.0, 0.0), 0.0)])
+
+    # ---- DXF (gear axis at the origin, phase phi = theta = 0 of the assembly)
+    for role, prof in (("driver", prof_drv), ("driven", prof_dvn)):
+        ref = [("polyline", {"points": pitch_polyline(d, role), "closed": True}),
+               ("point", {"p": (0.0, 0.0)})]
+        w.add_dxf(role, [prof], ref)
+
+
+def tables(dd: PairDesign, w, built: dict) -> None:
+    """The papers' tables for these parameters, the transmission table, pitch curves, teeth."""
+    p, d = dd.p, dd.d
+    pr = built["proof"]
+    table = sector_tables(w, p)
+    built["table"] = d.table if d.table is not None else table  # the sector method's table, for the plots
+    th_act = pr.theta_actual()
+    jam = ~np.isfinite(pr.phi_drive)
+    # theta_actual: the driver angle at which the outlines put the driven wheel at phi (loaded flanks
+    # touching; at a jammed phase the position of least overlap); te_run: driven running angle - law
+    w.add_table("transmission", ["phi_rad", "theta_law_rad", "theta_actual_rad", "te_run_rad", "te_drive_rad",
+                                 "backlash_mm", "pairs_drive", "overlap_law_mm2", "least_overlap_mm2", "jam"],
+                [[float(a), float(b), float(c), float(r) - float(a), float(e) if math.isfinite(e) else None,
+                  float(f) if math.isfinite(f) else None, int(g), float(h), float(i), bool(j)]
+                 for a, b, c, r, e, f, g, h, i, j in zip(pr.phi, pr.theta_law, th_act, pr.phi_run, pr.te_drive,
+                                                          pr.backlash_mm, pr.pairs_drive, pr.overlap_law,
+                                                          pr.least_overlap, jam)])
+    ph = np.linspace(-math.pi / 4, math.pi / 4, 721)
+    pcr = PitchCurves(d.run_law, d.L)
+    w.add_table("pitch_curves", ["phi_rad", "r_H_mm", "theta_rad", "r_mm", "ratio_U", "hub_speed_mm_per_rad"],
+                [[float(a), float(b), float(c), float(e), float(f), float(g)] for a, b, c, e, f, g in
+                 zip(ph, pcr.r_H(ph), d.run_law.theta(ph), pcr.r(ph), d.run_law.U(ph), d.run_law.hub_speed(ph))])
+    if d.method == "generated":
+        rows = []
+        for gear in (d.driver, d.driven):
+            for k, t in enumerate(gear.teeth):
+                rows.append([gear.role, k, t.phi_centre, t.right, t.left, t.undercut, t.tip_height_mm,
+                             t.tip_thickness_mm, t.shortened])
+        w.add_table("teeth", ["gear", "tooth", "phi_centre_rad", "cutter_right", "cutter_left", "undercut",
+                              "tip_height_mm", "tip_land_mm", "tip_shortened"], rows)
+
+
+def plots(dd: PairDesign, w, built: dict) -> None:
+    """The papers' Figure 2 from geometry, transmission error, hub speed, the pair."""
+    d = dd.d
+    pr = built["proof"]
+    other, pr_other, _ = built["other"]
+    figure2(w, d, pr, other, pr_other)
+    ratio_and_layout_plots(w, d, pr, dd.profiles, dd.mount, built["table"])
+
+
+def checks_and_derived(dd: PairDesign, w, built: dict) -> None:
+    """Closure, generability, teeth and proof checks; every derived value of the report."""
+    p, d = dd.p, dd.d
+    pr = built["proof"]
+    other, pr_other, _ = built["other"]
+    w.add_checks(checks_generated(d, pr, p) if d.method == "generated" else checks_sectors(d, pr))
+    s = pr.summary()
+    w.derived.update({
+        "center_distance_mm": d.L, "mounting_distance_mm": dd.mount, "module_mm": d.m, "driver_teeth": d.z, "driven_teeth": d.z_H,
+        "driver_turns": d.law.n, "method": d.method, "smoothing_deg": d.smoothing_deg,
+        "speed_ripple": d.ripple.ripple,
+        "speed_ripple_phi_min_deg": math.degrees(d.ripple.phi_min),
+        "speed_ripple_phi_max_deg": math.degrees(d.ripple.phi_max),
+        "hub_height_mm": d.law.A, "u": d.law.u, "hub_speed_mean_mm_per_rad": d.law.hub_speed_ratio,
+        "closure_error_rad": d.closure_error,
+        "proof_phases": s["steps"], "overlap_law_max_mm2": s["overlap_law_max_mm2"],
+        "overlap_law_phases": s["overlap_law_steps"], "jam_phases": s["jams"],
+        "te_min_rad": s["te_min_rad"], "te_max_rad": s["te_max_rad"], "te_pp_rad": s["te_pp_rad"],
+        "backlash_min_mm": s["backlash_min_mm"], "backlash_max_mm": s["backlash_max_mm"],
+        "contact_pairs_min": s["contact_pairs_min"], "contact_ratio_mean": s["contact_pairs_mean"],
+    })
+    if d.method == "generated":
+        g = d.smoothing.generability
+        w.derived.update({
+            "smoothing_rad": d.smoothing.delta,
+            "driver_rho_min_mm": g.driver.rho_convex_min, "driver_rho_limit_mm": g.driver.rho_limit,
+            "driven_rho_min_mm": g.driven.rho_convex_min, "driven_rho_limit_mm": g.driven.rho_limit,
+            "driven_concave_rho_min_mm": g.driven.rho_concave_min, "shaper_r0_mm": g.driven.r0,
+            "driver_shift": p.driver_shift, "driven_shift": -p.driver_shift,
+            "tip_shortened_teeth": d.driver.shortened_teeth + d.driven.shortened_teeth,
+            "shaper_cut_teeth": d.driver.shaper_teeth + d.driven.shaper_teeth,
+            "undercut_teeth": d.driver.undercut_teeth + d.driven.undercut_teeth,
+        })
+    else:
+        w.derived.update({"sector_arc_mm": d.table.arc, "sectors_per_leg": d.table.i})
+    if pr_other is not None:
+        so = pr_other.summary()
+        w.derived.update({f"compare_{other.method}_{k}": v for k, v in {
+            "center_distance_mm": other.L, "speed_ripple": other.ripple.ripple, "smoothing_deg": other.smoothing_deg,
+            "overlap_law_max_mm2": so["overlap_law_max_mm2"], "jam_phases": so["jams"], "proof_phases": so["steps"],
+            "te_pp_rad": so["te_pp_rad"], "backlash_min_mm": so["backlash_min_mm"],
+            "backlash_max_mm": so["backlash_max_mm"], "least_overlap_max_mm2": float(np.max(pr_other.least_overlap)),
+        }.items()})
+
+
+def notes(dd: PairDesign, w, built: dict) -> None:
+    other, pr_other, other_note = built["other"]
+    write_notes(w, dd.d, built["proof"], other, pr_other, other_note, dd.p, dd.mount)
+
+
+#: the output steps after the proofs, in the order the report and the manifest list what they add
+OUTPUT_STEPS = (assembly_and_dxf, tables, plots, checks_and_derived, notes)
+
+
+def write_outputs(p: NoncircularPairParams, w, d: Design, profiles, pr, other=None, pr_other=None,
+                  other_note: str = "", solids=None) -> None:
+    """Solids (STEP/STL/3MF with the shared checks), assembly, DXF, tables, plots, checks, report values
+    of a pair already designed and proved."""
+    dd = PairDesign(p, d, tuple(profiles), mounting(p, d))
+    built = {"solids": solids if solids is not None else start_solids(p, w, profiles), "proof": pr,
+             "other": (other, pr_other, other_note)}
+    for step in OUTPUT_STEPS:
+        step(dd, w, built)
+
+
+build = Pipeline(lambda p, w: design_of(p, pair_design), (solids, proofs) + OUTPUT_STEPS)

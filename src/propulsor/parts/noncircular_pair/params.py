@@ -1,0 +1,99 @@
+"""Parameters of the walking-drive non-circular pair (seeds 000, 002)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ...errors import InputError
+from ...laws.walking import WalkingLaw
+from ...params import param
+
+__all__ = ["METHODS", "NoncircularPairParams"]
+
+METHODS = ("generated", "sectors")
+
+
+# =========================================================================== parameters
+# =========================================================================== parameters
+
+# =========================================================================== parameters
+_WHY_MECHANISM = "a walking drive of 5 m hub height is larger than any built"
+
+
+@dataclass
+class NoncircularPairParams:
+    """Parameters of the walking-drive pair.  Defaults: seed 002 (a = 100, b = 50, c = 236.5 mm,
+    n = 4, m = 2.5, z 20/80)."""
+
+    a_mm: float = param(100.0, "mm", "hub-to-crank axis distance a (seed 000 eq. 1)", min=0.0, max=5000.0,
+                        why=_WHY_MECHANISM)
+    b_mm: float = param(50.0, "mm", "crank length b", min=0.0, max=5000.0, why=_WHY_MECHANISM)
+    c_mm: float = param(236.5, "mm", "shoe stand length c", min=0.0, max=5000.0, why=_WHY_MECHANISM)
+    driver_turns: int = param(4, "", "n: driver turns per driven (carrier) turn; 1, 2 or 4", min=1, max=4, integer=True,
+                              why="the driver curve closes only when n divides the 4 legs")
+    method: str = param("generated", "", "tooth method: generated (conjugate, default) or sectors (the papers')",
+                        choices=METHODS)
+    module_mm: float = param(2.5, "mm", "module m (0: from center_distance_mm, generated teeth only)", min=0.0, max=50.0,
+                       why="the largest modules of GOST 9563 / ISO 54 series 1")
+    driven_teeth: int = param(80, "", "z_H: driven-wheel teeth (sectors: 4 x sectors per leg)", min=4, max=480,
+                              integer=True, why="a 1.5 m pitch curve at m = 1 mm (the papers use 80 and 96)")
+    center_distance_mm: float = param(0.0, "mm", "L; 0: from module and teeth by closure (true arc length)", min=0.0,
+                                      max=10000.0, why=_WHY_MECHANISM)
+    pressure_angle_deg: float = param(20.0, "deg", "pressure angle of the ISO 53 rack", min=10.0, max=35.0,
+                                      why="the largest pressure angle of special racks; past it the tips turn pointed")
+    backlash_mm: float = param(0.16, "mm", "normal backlash j_n (seed 002: 0.16 mm)", min=0.0, max=2.0,
+                               why="ten times the paper's 0.16 mm: more is a loose coupling, not a gear")
+    driver_shift: float = param(0.5, "", "profile shift x of the driver (the driven wheel gets -x)", min=-1.0, max=1.5,
+                                 why="past it the driver teeth turn pointed")
+    shaper_teeth: int = param(20, "", "z0 of the shaper cutter for concave pitch-curve stretches", min=6, max=200,
+                              integer=True, why="largest disc shaper cutters (GOST 9323: d0 <= 200 mm at m >= 1)")
+    smoothing_deg: float = param(0.0, "deg", "half-width of the C2 blend at hand-over; 0: smallest generable",
+                                 min=0.0, max=45.0, why="one leg's support phase is 90° wide")
+    smoothing_max_deg: float = param(22.5, "deg", "largest blend half-width searched", min=0.0, max=45.0,
+                                     min_exclusive=True, why="one leg's support phase is 90° wide")
+    tip_land_min_module: float = param(0.25, "", "least tip land (in modules); thinner tips are shortened",
+                                       min=0.0, max=1.0, why="a standard tooth's tip land is about 0.6 m")
+    mounting_distance_mm: float = param(0.0, "mm", "installed centre distance (seed 000: L_ust = 144 for L = 143.5); "
+                                        "0: the design L", min=0.0, max=10000.0, why=_WHY_MECHANISM)
+    face_width_mm: float = param(20.0, "mm", "face width of both gears", min=0.0, min_exclusive=True, max=1000.0,
+                                  why="20 modules at m = 50: wider faces carry no more (ISO 6336 K_Hβ)")
+    driver_bore_mm: float = param(16.0, "mm", "driver bore diameter (0: none)", min=0.0, max=5000.0, why=_WHY_MECHANISM)
+    driven_bore_mm: float = param(40.0, "mm", "driven-wheel bore diameter (0: none)", min=0.0, max=5000.0, why=_WHY_MECHANISM)
+    keyway: bool = param(True, "", "hub keyway in each bore (DIN 6885-1 / GOST 23360-78)")
+    proof_phases_per_tooth: int = param(4, "", "phases per driven tooth in the full-cycle proof", min=4, max=64,
+                                        integer=True, why="64 phases a tooth resolve contact to 1/64 of a pitch")
+    compare_methods: bool = param(True, "", "prove the other tooth method too (2D, one leg) and report the comparison")
+
+    def validate(self) -> None:
+        if not self.a_mm < self.c_mm:
+            raise InputError("a_mm", self.a_mm, f"must be < c_mm = {self.c_mm:g}: the crank axes lie inside the "
+                             "circle of the shoe stands (seed 000: 60 < 360, seed 002: 100 < 236.5)")
+        A = self.a_mm - self.b_mm + self.c_mm
+        if not A > 0:
+            raise InputError("a_mm - b_mm + c_mm", A, "hub height Y01 = a - b + c must be > 0 mm, else the law is not positive")
+        if self.driver_turns not in (1, 2, 4):
+            raise InputError("driver_turns", self.driver_turns,
+                             "the driver pitch curve closes only if n divides the 4 legs: n in {1, 2, 4}")
+        n = self.driver_turns
+        z = self.driven_teeth
+        if z % n:
+            raise InputError("driven_teeth", z, f"must be a multiple of driver_turns = {n} (whole driver teeth)",
+                             f"nearest valid: {max(n, z // n * n)}, {(z // n + 1) * n}")
+        if self.method == "sectors":
+            if z % 4:
+                raise InputError("driven_teeth", z, "the sector method needs 4 x (sectors per leg) teeth",
+                                 f"nearest valid: {max(4, z // 4 * 4)}, {(z // 4 + 1) * 4}")
+            if not self.module_mm > 0:
+                raise InputError("module_mm", self.module_mm, "the sector method needs the module of its tooth heights (> 0 mm)")
+        else:
+            if (self.module_mm > 0) == (self.center_distance_mm > 0):
+                raise InputError("center_distance_mm", self.center_distance_mm,
+                                 "generated teeth: give either module_mm (closure fixes L) or center_distance_mm "
+                                 "(closure fixes the module), not both", f"module_mm = {self.module_mm}")
+            if self.smoothing_deg > self.smoothing_max_deg:
+                raise InputError("smoothing_deg", self.smoothing_deg, f"must be <= smoothing_max_deg = {self.smoothing_max_deg}")
+        for name in ("driver_bore_mm", "driven_bore_mm"):
+            d = getattr(self, name)
+            if self.keyway and d > 0 and not 6.0 < d <= 230.0:
+                raise InputError(name, d, "a keyway needs a bore over 6 up to 230 mm (DIN 6885-1); set keyway = false")
+        WalkingLaw(a=self.a_mm, b=self.b_mm, c=self.c_mm, n=n)  # the law's own checks

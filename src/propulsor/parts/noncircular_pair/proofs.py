@@ -1,0 +1,110 @@
+"""The non-circular pair's proofs: the full cycle on the finished outlines (:mod:`.pair_proof`),
+the other tooth method for comparison, and the checks of closure, generability, teeth and mesh."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+
+from ... import policy
+from ...check import Check
+from ...errors import InputError
+from ...gears.noncircular import PitchCurves
+from ...laws.walking import LEG_PERIOD
+from .design import Design, PairDesign, design_generated, design_sectors
+from .params import NoncircularPairParams
+
+__all__ = ["prove", "compare", "checks_generated", "checks_common", "checks_sectors", "proofs"]
+
+
+def prove(d: Design, phases_per_tooth: int, legs: int = 4, progress=lambda s: None, mount: float | None = None):
+    """Proof of the pair over ``legs`` legs (4 = the whole driven turn) with
+    ``phases_per_tooth`` phases per driven tooth (:mod:`.pair_proof`), the gears at the
+    installed centre distance ``mount`` (default the design L)."""
+    from .pair_proof import prove_pair
+
+    N = phases_per_tooth * d.z_H * legs // 4
+    phis = np.arange(N) * (legs * LEG_PERIOD / N)
+    pc = PitchCurves(d.run_law, d.L)
+    pitch = math.pi * d.m if d.method == "generated" else d.table.arc
+    progress(f"{d.method}: proof over {legs} leg(s), {N} phases")
+    return prove_pair(d.driver.profile, d.driven.profile, mount or d.L, d.run_law.theta, phis, pc.r_H,
+                      name="mesh", pitch_mm=pitch)
+
+
+def compare(p: NoncircularPairParams, d: Design, prog=lambda s: None):
+    """The other tooth method for the same law, module and teeth, proved over one leg (the pair
+    repeats per leg) at its own design centre distance.  Returns (design, proof, note); (None,
+    None, why) if it cannot be made."""
+    alt = "sectors" if d.method == "generated" else "generated"
+    try:
+        q = dataclasses.replace(p, method=alt, module_mm=d.m, center_distance_mm=0.0)
+        q.validate()
+        other = design_sectors(q, prog) if alt == "sectors" else design_generated(q, prog)
+        return other, prove(other, p.proof_phases_per_tooth, 1, prog), ""
+    except InputError as exc:
+        return None, None, f"The {alt} method is not possible for these parameters: {exc}"
+
+
+def checks_generated(d: Design, pr, p) -> list[Check]:
+    sm = d.smoothing
+    g = sm.generability
+    out = [
+        Check.at_most("law.closure_error", d.closure_error, 1e-9, "rad",
+                      f"|theta(2 pi) - 2 pi n| = {d.closure_error:.3g} rad: the driver makes exactly n = {d.law.n} turns"),
+        Check.at_most("teeth.closure_error", abs(d.pc.perimeter_driven() - d.z_H * math.pi * d.m), 1e-9, "mm",
+                      f"driven pitch perimeter vs z_H pi m = {d.z_H} x {math.pi * d.m:.6f} mm"),
+        Check.at_least("generability.driver_rho_min", g.driver.rho_convex_min, g.driver.rho_limit, "mm",
+                       f"driver convex rho_min {g.driver.rho_convex_min:.4f} mm vs rack undercut limit "
+                       f"(h_a* - x) m / sin^2 alpha = {g.driver.rho_limit:.4f} mm"),
+        Check.at_least("generability.driven_rho_min", g.driven.rho_convex_min, g.driven.rho_limit, "mm",
+                       f"driven convex rho_min {g.driven.rho_convex_min:.4f} mm vs limit {g.driven.rho_limit:.4f} mm"),
+    ]
+    for chk in (g.driver, g.driven):
+        if chk.concave:
+            out.append(Check.greater_than(f"generability.{chk.curve}_concave_rho", chk.rho_concave_min, chk.r0, "mm",
+                                          f"{chk.curve} concave |rho|_min {chk.rho_concave_min:.4f} mm vs shaper pitch "
+                                          f"radius r0 = {chk.r0:.3f} mm"))
+    for gear in (d.driver, d.driven):
+        out.append(Check.at_most(f"teeth.{gear.role}_undercut", gear.undercut_teeth, 0, "teeth",
+                                 f"{gear.undercut_teeth} of {len(gear.teeth)} {gear.role} teeth undercut"))
+        out.append(Check.at_least(f"teeth.{gear.role}_tip_land", gear.tip_thickness_min, p.tip_land_min_module * d.m - 1e-9,
+                                  "mm", f"least tip land {gear.tip_thickness_min:.4f} mm; {gear.shortened_teeth} teeth "
+                                        f"tip-shortened, {gear.shaper_teeth} cut by the shaper z0 = {p.shaper_teeth}"))
+    s = pr.summary()
+    tol = policy.OVERLAP_AREA_TOL_MM2
+    out.append(Check.at_most("mesh.overlap_area", s["overlap_law_max_mm2"], tol, "mm^2",
+                             f"max overlap {s['overlap_law_max_mm2']:.3g} mm^2 over {s['steps']} phases at the law's positions"))
+    return out + checks_common(pr)
+
+
+def checks_common(pr, prefix: str = "mesh") -> list[Check]:
+    """Proof checks; ``prefix`` 'mesh' for generated teeth, 'sectors' for the papers' teeth (separate
+    names, so that a part file can document the papers' jams as expected failures without masking
+    a failure of generated teeth)."""
+    s = pr.summary()
+    return [
+        Check.at_most(f"{prefix}.runs_without_jam", s["jams"], 0, "phases",
+                      f"{s['jams']} of {s['steps']} phases have no free position of the driven wheel "
+                      f"(least overlap up to {float(np.max(pr.least_overlap)):.4g} mm^2)"),
+        Check.greater_than(f"{prefix}.backlash_min", s["backlash_min_mm"], 0.0, "mm",
+                           f"backlash {s['backlash_min_mm']:.5f} .. {s['backlash_max_mm']:.5f} mm on the driven pitch curve"),
+        Check.at_least(f"{prefix}.contact_continuity", s["contact_pairs_min"], 1, "pairs",
+                       f"least tooth pairs in contact {s['contact_pairs_min']}, mean {s['contact_pairs_mean']:.4f}"),
+    ]
+
+
+def checks_sectors(d: Design, pr) -> list[Check]:
+    return [Check.at_most("law.closure_error", d.closure_error, 1e-9, "rad",
+                          f"|4 sum dtheta - 2 pi n| = {d.closure_error:.3g} rad (sector table, seed 000 eqs. 48-51)")] \
+        + checks_common(pr, "sectors")
+
+
+
+def proofs(dd: PairDesign, w, built: dict) -> None:
+    """The built pair over the whole cycle; the other tooth method over one leg when asked."""
+    p, d, prog = dd.p, dd.d, w.progress
+    built["proof"] = prove(d, p.proof_phases_per_tooth, 4, prog, dd.mount)
+    built["other"] = compare(p, d, prog) if p.compare_methods else (None, None, "")
