@@ -6,8 +6,13 @@ STAMP  := $(VENV)/.installed
 PART_FILES := $(sort $(wildcard parts/*.toml))
 PART_NAMES := $(patsubst parts/%.toml,%,$(PART_FILES))
 PYTEST_WORKERS ?= 2
+# part types that have a print kit (tests/test_print_kits.py checks this against parts._KITS)
+KIT_TYPES  := noncircular_pair planetary_final_drive
+KIT_FILES  := $(sort $(foreach t,$(KIT_TYPES),$(shell grep -l '^type *= *"$(t)"' $(PART_FILES))))
+KIT_NAMES  := $(patsubst parts/%.toml,print-%,$(KIT_FILES))
+PRINTER    ?= generic
 
-.PHONY: all install parts test check bench clean list $(PART_NAMES)
+.PHONY: all install parts test check bench clean list print $(PART_NAMES) $(KIT_NAMES)
 
 all: parts
 
@@ -23,6 +28,11 @@ parts: $(PART_NAMES)
 
 $(PART_NAMES): %: parts/%.toml $(STAMP)
 	$(BIN)/propulsor build $< --out output/$@
+
+print: $(KIT_NAMES)
+
+$(KIT_NAMES): print-%: parts/%.toml $(STAMP)
+	$(BIN)/propulsor print $< --printer $(PRINTER) --out output/$*_kit
 
 list: $(STAMP)
 	$(BIN)/propulsor list
