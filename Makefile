@@ -12,17 +12,25 @@ KIT_FILES  := $(sort $(foreach t,$(KIT_TYPES),$(shell grep -l '^type *= *"$(t)"'
 KIT_NAMES  := $(patsubst parts/%.toml,print-%,$(KIT_FILES))
 PRINTER    ?= generic
 
-.PHONY: all install parts test check bench clean list print $(PART_NAMES) $(KIT_NAMES)
+.PHONY: all install lock parts test check bench clean list print $(PART_NAMES) $(KIT_NAMES)
 
 all: parts
 
 install: $(STAMP)
 
-$(STAMP): pyproject.toml
+# constraints.txt pins every package to the version the outputs were proven with; `make lock`
+# renews it on purpose (a fresh venv with the newest versions allowed by pyproject.toml)
+$(STAMP): pyproject.toml constraints.txt
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install -q --upgrade pip
-	$(BIN)/python -m pip install -q -e '.[test]'
+	$(BIN)/python -m pip install -q -c constraints.txt pip
+	$(BIN)/python -m pip install -q -c constraints.txt -e '.[test]'
 	touch $@
+
+lock:
+	rm -rf .venv-lock && $(PYTHON) -m venv .venv-lock
+	.venv-lock/bin/python -m pip install -q --upgrade pip && .venv-lock/bin/python -m pip install -q -e '.[test]'
+	.venv-lock/bin/python -m pip freeze --all --exclude-editable > constraints.txt
+	rm -rf .venv-lock
 
 parts: $(PART_NAMES)
 
