@@ -158,31 +158,28 @@ def _accepted_values_obey_the_schema(data: bytes, part_type: str) -> None:
                 assert value <= m["max"], (name, value)
 
 
-def _fuzz(max_examples: int):
-    return settings(max_examples=max_examples, deadline=timedelta(seconds=60), derandomize=True,
-                    suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow,
-                                           HealthCheck.data_too_large])
-
-
-@pytest.mark.parametrize("part_type", PART_TYPES)
-def test_fuzz_part_file_contract(part_type, tmp_path_factory, capsys):
-    @_fuzz(12)
+def _fuzz(part_type: str, max_examples: int, tmp_path_factory, capsys) -> None:
+    """`max_examples` random part files of `part_type` against the contract (derandomized: the same
+    files every run)."""
+    @settings(max_examples=max_examples, deadline=timedelta(seconds=60), derandomize=True,
+              suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow,
+                                     HealthCheck.data_too_large])
     @given(data=part_files(part_type))
     def run(data):
         _contract(data, part_type, tmp_path_factory, capsys)
 
     run()
+
+
+@pytest.mark.parametrize("part_type", PART_TYPES)
+def test_fuzz_part_file_contract(part_type, tmp_path_factory, capsys):
+    _fuzz(part_type, 12, tmp_path_factory, capsys)
 
 
 @pytest.mark.sweep
 @pytest.mark.parametrize("part_type", PART_TYPES)
 def test_fuzz_part_file_contract_long(part_type, tmp_path_factory, capsys):
-    @_fuzz(300)
-    @given(data=part_files(part_type))
-    def run(data):
-        _contract(data, part_type, tmp_path_factory, capsys)
-
-    run()
+    _fuzz(part_type, 300, tmp_path_factory, capsys)
 
 
 @pytest.mark.parametrize("part_type", PART_TYPES)

@@ -550,3 +550,16 @@ def test_invalid_pairs_and_arguments_raise():
         x_sum_for_centre_distance(16, 20, 10.0, 100.0)  # a_w below a·cos α
     with pytest.raises(InputError):
         SpurGear(56, 10.0, 1.417, internal=True).d_a0  # no shaper given
+
+
+def test_pinion_tip_corner_entering_the_ring_is_found():
+    """The pinion-tip-corner branch of the internal-mesh sweep: a 20-tooth pinion (m = 3) in a 60-tooth
+    ring is conjugate at its own tip (depth 0); with its tip circle enlarged to 71 mm its tip corners
+    dig into the ring's teeth (its tip then reaches a_w + r_a1 = 95.5 mm from the ring's axis, past
+    the ring's root radius 93.75 mm: interference is certain).  Only the pinion's corners enter: the
+    ring's corners alone find nothing, so this pins the pinion branch (it failed with that branch
+    switched off)."""
+    p = GearPair(SpurGear(20, 3.0), SpurGear(60, 3.0, internal=True))
+    assert p.tip_interference_depth(samples=3001) <= 1e-9
+    assert p.a_w + 71.0 / 2 > p.gear2.d_f / 2
+    assert p.tip_interference_depth(d_a1=71.0, samples=3001) > 0.5

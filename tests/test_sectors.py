@@ -405,3 +405,19 @@ def test_bad_module_backlash_and_n(table002):
     with pytest.raises(InputError) as e:
         sector_table(WalkingLaw(a=60, b=100, c=360, n=3), L=140.0, i=24)
     assert e.value.parameter == "n" and "n divides" in str(e.value)
+
+
+def test_sector_ratio_at_every_sector(table000, table002):
+    """The staircase ratio on each sector's own interval: its midpoint, just inside both ends, and one
+    leg later, for every sector of both seeds (neighbouring sectors differ, so an index off by one
+    cannot pass)."""
+    for t in (table000, table002):
+        # neighbours differ, but for the middle pair of an even count (the law is even about w = 0)
+        assert np.count_nonzero(np.abs(np.diff(t.ratio)) < 1e-6) == (1 - t.i % 2)
+        for k in range(t.i):
+            lo, hi = t.phi[k], t.phi[k] + t.dphi[k]
+            for phi in (0.5 * (lo + hi), lo + 1e-9, hi - 1e-9):
+                assert sector_ratio(t, phi) == t.ratio[k], (t.i, k, phi)
+                assert sector_ratio(t, phi + math.pi / 2) == t.ratio[k]
+        phis = np.array([t.phi[k] + 0.5 * t.dphi[k] for k in range(t.i)])
+        assert np.array_equal(sector_ratio(t, phis), t.ratio)

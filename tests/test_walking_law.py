@@ -139,3 +139,19 @@ def test_law_properties(a, b, c, n, phi):
     assert law.theta(phi + 2 * math.pi) - law.theta(phi) == pytest.approx(2 * math.pi * n, rel=1e-9)
     # monotone
     assert law.theta(phi + 1e-3) > law.theta(phi)
+
+
+@pytest.mark.parametrize("a, b, c, n", [(60.0, 100.0, 360.0, 2), (100.0, 50.0, 236.5, 4), (80.0, 0.0, 300.0, 1)])
+def test_U_min_and_U_max_are_the_extremes_of_the_law(a, b, c, n):
+    """U_min and U_max equal the smallest and largest ratio over a dense sampling of the turn, the
+    minimum at hand-over (w = ±π/4), the maximum mid-support; for b > 0, U_min = u and U_max = u (A + 3b)/A."""
+    law = WalkingLaw(a=a, b=b, c=c, n=n)
+    phi = np.linspace(-math.pi, math.pi, 200001)
+    U = law.U(phi)
+    assert law.U_min == pytest.approx(float(U.min()), rel=1e-12)
+    assert law.U_max == pytest.approx(float(U.max()), rel=1e-12)
+    assert law.U_min == pytest.approx(float(law.U(math.pi / 4)), rel=1e-12)
+    assert law.U_max == pytest.approx(float(law.U(0.0)), rel=1e-12)
+    A = a - b + c
+    assert law.U_min == pytest.approx(n * math.pi * A / (A * math.pi + 6 * b), rel=1e-14)
+    assert law.U_max == pytest.approx(law.U_min * (A + 3 * b) / A, rel=1e-14)

@@ -60,12 +60,17 @@ def _files_read(params, part_file: Path) -> tuple[Path, ...]:
 def _load_part(part_file: Path):
     """(part type, validated parameters, size estimate) of a part file; InputError otherwise."""
     from .params import load_params, read_part_file
-    from .parts import check_size, get_part_type
+    from .parts import check_size, get_part_type, size_needs_design
 
     part_type_name, mapping = read_part_file(part_file)
     part_type = get_part_type(part_type_name)
-    params = load_params(part_type.params_cls, mapping)
-    return part_type, params, check_size(part_type, params, part_file)
+    params = load_params(part_type.params_cls, mapping, validate=False)
+    # the size estimate first where it needs only the values (a design can itself be the long part)
+    early = not size_needs_design(part_type)
+    estimate = check_size(part_type, params, part_file) if early else None
+    if callable(getattr(params, "validate", None)):
+        params.validate()
+    return part_type, params, estimate or check_size(part_type, params, part_file)
 
 
 def _into_output(args, out: Path, keep: tuple[Path, ...], produce, progress) -> int:

@@ -80,8 +80,10 @@ def _check_type(name: str, value, typ) -> None:
         raise InputError(name, value, "must be a list")
 
 
-def load_params(cls, mapping: dict[str, Any]):
-    """Build and validate the parameter dataclass `cls` from a mapping."""
+def load_params(cls, mapping: dict[str, Any], validate: bool = True):
+    """Build the parameter dataclass `cls` from a mapping: every value of its type and within its
+    limits; then, unless `validate` is False, the dataclass's own ``validate()`` (rules between
+    parameters, the design)."""
     fields = {f.name: f for f in dataclasses.fields(cls)}
     hints = get_type_hints(cls)
     unknown = sorted(set(mapping) - set(fields))
@@ -118,9 +120,8 @@ def load_params(cls, mapping: dict[str, Any]):
         v = getattr(obj, name)
         if hints[name] in (int, float) and v is not None and f.metadata.get("choices") is None:
             _check_number(name, v, f.metadata, f.metadata.get("unit", ""), integer=hints[name] is int)
-    validate = getattr(obj, "validate", None)
-    if callable(validate):
-        validate()
+    if validate and callable(getattr(obj, "validate", None)):
+        obj.validate()
     return obj
 
 

@@ -52,6 +52,14 @@ class PartType:
     estimate: Callable | None = None
 
 
+def size_needs_design(part_type: PartType) -> bool:
+    """True when the part type's size estimate needs the validated design (it runs after validation)."""
+    from .size import ESTIMATES
+
+    estimate = part_type.estimate or ESTIMATES.get(part_type.name)
+    return bool(getattr(estimate, "needs_design", False))
+
+
 def check_size(part_type: PartType, params, part_file: Path | None = None) -> SizeEstimate:
     """The build's size estimate; InputError when it cannot finish within policy.BUILD_SECONDS_MAX."""
     from .size import ESTIMATES
@@ -67,7 +75,10 @@ def check_size(part_type: PartType, params, part_file: Path | None = None) -> Si
 
 
 #: part type name -> module of its print kit (relative to this package), ``kit(params, printer, S)``
-_KITS: dict[str, str] = {}
+_KITS = {
+    "noncircular_pair": "noncircular_pair.kit",
+    "planetary_final_drive": "final_drive.kit",
+}
 
 
 def get_kit(name: str):

@@ -77,6 +77,8 @@ def balancer(p, part_file: Path | None = None) -> SizeEstimate:
     return _wall(cpu, f"travel sweep {steps} steps, sweep chord {p.sweep_chord_mm:g} mm")
 
 
+balancer.needs_design = True  # the travel's angles come from the suspension design
+
 ESTIMATES = {
     "planetary_final_drive": final_drive,
     "noncircular_pair": noncircular_pair,

@@ -68,15 +68,18 @@ def choose_scale(pieces: dict[str, tuple[float, float, float]], bed: tuple[float
 
 
 def check_printable(S: float, module_mm: float | None, min_module_mm: float,
-                    thinnest: dict[str, float] | None = None, min_feature_mm: float = 0.8) -> None:
+                    thinnest: dict[str, float] | None = None, min_feature_mm: float = 0.8,
+                    choice: ScaleChoice | None = None) -> None:
     """InputError when the scaled module or a scaled feature falls below what the printer holds.
 
-    `thinnest`: {feature name: its full-size thickness in mm} (tip lands, webs, walls)."""
+    `thinnest`: {feature name: its full-size thickness in mm} (tip lands, webs, walls); `choice`:
+    the automatic choice of S, named in the message (the bed is then what is too small)."""
     if module_mm is not None and module_mm / S < min_module_mm:
         largest = module_mm / min_module_mm
+        why = (f" — the bed is too small: {choice.reason}" if choice is not None and choice.reason != "as requested"
+               else "")
         raise InputError("--scale", f"1:{S:g}", f"the scaled module {module_mm / S:.3g} mm is below the printable "
-                         f"{min_module_mm:g} mm; print at 1:{largest:.3g} or larger (a larger printer), or "
-                         f"lower min_module_mm")
+                         f"{min_module_mm:g} mm; print at 1:{largest:.3g} or larger (a larger printer){why}")
     for name, t in (thinnest or {}).items():
         if t / S < min_feature_mm:
             raise InputError("--scale", f"1:{S:g}", f"{name} is {t / S:.3g} mm at this scale, below two line "

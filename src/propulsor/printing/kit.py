@@ -1,0 +1,188 @@
+"""A print kit: the pieces as they print, their proofs on the printed geometry, plates, report.
+
+A part type's kit function returns a :class:`Kit`: pieces (solids at print size, FDM allowances
+already in the geometry), the assembled model (pieces placed as on the desk), the checks made on
+that printed geometry (motion sweeps, fits), derived values and assembly steps.  :func:`write_kit`
+turns it into files with the shared pipeline's writer: an STL per piece with the mesh checks
+(watertight, one body, genus, no self-intersection), plates (pieces laid on their largest face,
+shelf-packed with gaps, one 3MF per plate with a named object per piece, mm), pictures of each plate
+and of the assembled model, ``print_report.md`` (scale and why, allowances, filament per plate,
+assembly steps) and the manifest.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..check import Check
+from .layout import lay_flat, pack, placed
+from .printers import Printer
+from .scale import ScaleChoice
+
+
+@dataclass
+class Piece:
+    """One printed piece: a solid at print size (mm), how many to print, its expected genus."""
+
+    name: str
+    solid: object
+    count: int = 1
+    genus: int | None = None
+    what: str = ""
+
+
+@dataclass
+class Kit:
+    part: str
+    printer: Printer
+    scale: ScaleChoice
+    pieces: list[Piece]
+    #: assembled model: (piece name, solid placed as on the desk, colour)
+    assembly: list[tuple[str, object, str]] = field(default_factory=list)
+    checks: list[Check] = field(default_factory=list)
+    derived: dict = field(default_factory=dict)
+    allowances: list[tuple[str, float, str]] = field(default_factory=list)  # (name, value mm, how applied)
+    steps: list[str] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+
+
+def piece_meshes(kit: Kit) -> dict[str, object]:
+    """Each piece's triangle mesh (chord tolerance of the exports), one per copy: name_k for count > 1."""
+    from ..export.mesh import to_trimesh
+
+    out = {}
+    for pc in kit.pieces:
+        mesh = to_trimesh(pc.solid)
+        for k in range(pc.count):
+            out[pc.name if pc.count == 1 else f"{pc.name}_{k + 1}"] = mesh
+    return out
+
+
+def plate_checks(kit: Kit, plates, flat: dict) -> list[Check]:
+    """Pieces on a plate do not touch (least gap between footprints) and every plate fits the bed."""
+    p = kit.printer
+    out = []
+    for k, plate in enumerate(plates, 1):
+        boxes = []
+        for pl in plate.placements:
+            m = placed(flat[pl.name], pl)
+            boxes.append(m.bounds)
+        lo = np.min([b[0] for b in boxes], axis=0)
+        hi = np.max([b[1] for b in boxes], axis=0)
+        inside = bool(lo[0] >= -1e-9 and lo[1] >= -1e-9 and hi[0] <= p.bed_x_mm + 1e-9 and hi[1] <= p.bed_y_mm + 1e-9
+                      and hi[2] <= p.bed_z_mm + 1e-9 and abs(lo[2]) < 1e-9)
+        out.append(Check.flag(f"plate_{k}.on_bed", inside,
+                              f"pieces span x {lo[0]:.1f} … {hi[0]:.1f}, y {lo[1]:.1f} … {hi[1]:.1f}, z 0 … {hi[2]:.1f} mm "
+                              f"on a {p.bed_x_mm:g} × {p.bed_y_mm:g} × {p.bed_z_mm:g} mm bed"))
+        gap = np.inf
+        for i in range(len(boxes)):
+            for j in range(i + 1, len(boxes)):
+                a, b = boxes[i], boxes[j]
+                g = max(b[0][0] - a[1][0], a[0][0] - b[1][0], b[0][1] - a[1][1], a[0][1] - b[1][1])
+                gap = min(gap, g)
+        if len(boxes) > 1:
+            out.append(Check.at_least(f"plate_{k}.least_gap", float(gap), 0.5 * p.piece_gap_mm, "mm",
+                                      f"least gap between the footprints of {len(boxes)} pieces"))
+    return out
+
+
+def _plate_picture(w, name: str, objects, printer: Printer) -> None:
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Polygon, Rectangle
+
+    fig, ax = plt.subplots(figsize=(6, 6 * printer.bed_y_mm / printer.bed_x_mm))
+    ax.add_patch(Rectangle((0, 0), printer.bed_x_mm, printer.bed_y_mm, fill=False, lw=1.5, ec="0.3"))
+    for k, (label, mesh) in enumerate(objects):
+        outline = mesh.vertices[:, :2]
+        try:
+            from scipy.spatial import ConvexHull
+
+            hull = outline[ConvexHull(outline).vertices]
+        except Exception:  # noqa: BLE001 - a degenerate footprint is drawn as its box
+            lo, hi = outline.min(axis=0), outline.max(axis=0)
+            hull = np.array([[lo[0], lo[1]], [hi[0], lo[1]], [hi[0], hi[1]], [lo[0], hi[1]]])
+        ax.add_patch(Polygon(hull, closed=True, fc=f"C{k % 10}", alpha=0.45, ec="k", lw=0.6))
+        c = hull.mean(axis=0)
+        ax.annotate(label, c, ha="center", va="center", fontsize=7)
+    ax.set_xlim(-5, printer.bed_x_mm + 5)
+    ax.set_ylim(-5, printer.bed_y_mm + 5)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (mm)")
+    ax.set_ylabel("y (mm)")
+    ax.set_title(f"{name}: {len(objects)} piece(s) on the {printer.name} bed, "
+                 f"{printer.bed_x_mm:g} × {printer.bed_y_mm:g} mm")
+    w.add_plot(name, fig)
+    plt.close(fig)
+
+
+def _assembly_picture(w, kit: Kit) -> None:
+    """The assembled model seen from above (each piece's mesh projected, later pieces on top)."""
+    import matplotlib.pyplot as plt
+    from matplotlib.collections import PolyCollection
+
+    from ..export.mesh import to_trimesh
+
+    fig, ax = plt.subplots(figsize=(7, 6))
+    items = [(name, to_trimesh(solid, chord_tol=0.05), colour) for name, solid, colour in kit.assembly]
+    items.sort(key=lambda it: it[1].bounds[1][2])
+    for name, mesh, colour in items:
+        up = mesh.face_normals[:, 2] > 0.5
+        tris = mesh.triangles[up][:, :, :2]
+        ax.add_collection(PolyCollection(tris, facecolors=colour, edgecolors="face", linewidths=0.2))
+    lo = np.min([m.bounds[0] for _, m, _ in items], axis=0)
+    hi = np.max([m.bounds[1] for _, m, _ in items], axis=0)
+    ax.set_xlim(lo[0] - 5, hi[0] + 5)
+    ax.set_ylim(lo[1] - 5, hi[1] + 5)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (mm)")
+    ax.set_ylabel("y (mm)")
+    ax.set_title(f"{kit.part}: the printed model assembled (top view, {kit.scale.label})")
+    w.add_plot("assembled", fig)
+    plt.close(fig)
+
+
+def write_kit(kit: Kit, w) -> None:
+    """Pieces → STL + mesh checks; plates → 3MF + pictures; assembled picture; derived, checks and
+    the report's text into the writer `w` (an OutputWriter whose report is print_report.md)."""
+    from ..checks.mesh import mesh_checks
+    from ..export.mesh import write_3mf_objects, write_stl
+
+    p = kit.printer
+    meshes = piece_meshes(kit)
+    genus = {pc.name: pc.genus for pc in kit.pieces}
+    for name, mesh in meshes.items():
+        base = name if name in genus else name.rsplit("_", 1)[0]
+        if name == base or name.endswith("_1"):
+            write_stl(mesh, w.path(f"pieces/{base}.stl"), base)
+            w.add_checks(mesh_checks(mesh, base, expected_genus=genus[base]))
+    flat = {n: lay_flat(m)[0] for n, m in meshes.items()}
+    plates = pack({n: tuple((m.bounds[1] - m.bounds[0])[:2]) for n, m in flat.items()}, p.bed_x_mm, p.bed_y_mm,
+                  p.piece_gap_mm)
+    w.add_checks(plate_checks(kit, plates, flat))
+    rows = []
+    for k, plate in enumerate(plates, 1):
+        objects = [(pl.name, placed(flat[pl.name], pl)) for pl in plate.placements]
+        write_3mf_objects(objects, w.path(f"plate_{k}.3mf"))
+        _plate_picture(w, f"plate_{k}", objects, p)
+        vol = sum(float(m.volume) for _, m in objects)
+        rows.append((k, len(objects), vol / 1000.0, vol / 1000.0 * p.density_g_cm3,
+                     ", ".join(n for n, _ in objects)))
+    w.add_table("plates", ["plate", "pieces", "volume_cm3", "mass_g", "names"], rows)
+    if kit.assembly:
+        _assembly_picture(w, kit)
+    w.derived.update({"scale_S": kit.scale.S, "plates": len(plates), "pieces": len(meshes),
+                      "filament_volume_cm3": sum(r[2] for r in rows), "filament_mass_g": sum(r[3] for r in rows)})
+    w.derived.update(kit.derived)
+    w.add_checks(kit.checks)
+    w.add_note(f"Scale {kit.scale.label} on the {p.title or p.name} "
+               f"({p.bed_x_mm:g} × {p.bed_y_mm:g} × {p.bed_z_mm:g} mm): {kit.scale.reason}.")
+    w.add_note("FDM allowances applied to the printed geometry: " + "; ".join(
+        f"{name} {value:g} mm ({how})" for name, value, how in kit.allowances) + ".")
+    w.add_note("Plates: " + "; ".join(f"plate {r[0]}: {r[1]} pieces, {r[2]:.1f} cm³, {r[3]:.0f} g of filament "
+                                       f"({p.density_g_cm3:g} g/cm³): {r[4]}" for r in rows) + ".")
+    if kit.steps:
+        w.add_note("Assembly, in order: " + " ".join(f"({k}) {s}" for k, s in enumerate(kit.steps, 1)))
+    for n in kit.notes:
+        w.add_note(n)

@@ -1,0 +1,103 @@
+"""Print kits built as a user would (`propulsor print`), proved on the printed geometry, judged by
+PrusaSlicer: the seed-002 non-circular pair and the final drive on the generic printer."""
+
+from __future__ import annotations
+
+import json
+import re
+import shutil
+from pathlib import Path
+
+import pytest
+
+from propulsor.cli import main
+from propulsor.parts import _KITS
+
+ROOT = Path(__file__).resolve().parents[1]
+needs_slicer = pytest.mark.skipif(shutil.which("prusa-slicer") is None,
+                                  reason="PrusaSlicer is not installed (apt-get install prusa-slicer)")
+
+
+@pytest.fixture(scope="module")
+def kits(tmp_path_factory):
+    out = {}
+    for name in ("ncg_seed002", "final_drive"):
+        folder = tmp_path_factory.mktemp("kits") / f"{name}_kit"
+        rc = main(["print", str(ROOT / "parts" / f"{name}.toml"), "--out", str(folder), "-q"])
+        out[name] = (rc, folder)
+    return out
+
+
+def _manifest(folder: Path) -> dict:
+    return json.loads((folder / "manifest.json").read_text())
+
+
+@pytest.mark.parametrize("name", ["ncg_seed002", "final_drive"])
+def test_kit_builds_and_proves_on_the_printed_geometry(kits, name):
+    rc, folder = kits[name]
+    assert rc == 0
+    m = _manifest(folder)
+    checks = {c["name"]: c for c in m["checks"]}
+    assert all(c["passed"] for c in checks.values()), [c["name"] for c in checks.values() if not c["passed"]]
+    assert checks["mesh.overlap_area"]["value"] <= 1e-6
+    assert checks["mesh.print_backlash_min"]["value"] >= 0.3  # the default profile's backlash
+    assert m["derived"]["print_module_mm"] >= 1.0
+    files = {e["path"] for e in m["files"]}
+    assert "print_report.md" in files and "plots/assembled.png" in files
+    plates = sorted(f for f in files if re.fullmatch(r"plate_\d+\.3mf", f))
+    assert plates and len(plates) == m["derived"]["plates"]
+    for k in range(1, len(plates) + 1):
+        assert checks[f"plate_{k}.on_bed"]["passed"]
+    # every piece one closed, oriented body of the expected genus, without self-intersection
+    pieces = sorted(Path(f).stem for f in files if f.startswith("pieces/") and f.endswith(".stl"))
+    assert len(pieces) >= 5
+    for piece in pieces:
+        for what in ("edges not shared by exactly 2 faces", "directed edges used twice", "bodies", "genus",
+                     "self-intersecting triangle pairs"):
+            assert checks[f"{piece}: {what}"]["passed"], (piece, what)
+    assert main(["check", str(folder)]) == 0
+
+
+def test_final_drive_scale_is_chosen_for_the_ring(kits):
+    rc, folder = kits["final_drive"]
+    m = _manifest(folder)
+    assert m["derived"]["scale_S"] == 4.0
+    report = (folder / "print_report.md").read_text()
+    assert "Scale 1:4" in report and "ring is" in report and "at 1:3 it does not fit" in report
+
+
+@pytest.mark.slicer
+@needs_slicer
+@pytest.mark.parametrize("name", ["ncg_seed002", "final_drive"])
+def test_every_plate_slices(kits, name, tmp_path):
+    from propulsor.printing.printers import load_printer
+    from propulsor.printing.slicer import slice_plate
+
+    printer = load_printer("generic")
+    rc, folder = kits[name]
+    for plate in sorted(folder.glob("plate_*.3mf")):
+        r = slice_plate(plate, printer.bed_shape(), tmp_path / f"{plate.stem}.gcode", printer.layer_mm, printer.nozzle_mm)
+        assert r.ok, (plate.name, r.message)
+        assert r.all_manifold and r.off_bed(printer.bed_x_mm, printer.bed_y_mm) == [], (plate.name, r.objects)
+
+
+@pytest.mark.parametrize("args, fragment", [
+    (["--printer", "ender3"], "unknown printer"),
+    (["--scale", "1:1.5"], "does not fit"),
+    (["--scale", "1:20"], "scaled module 0.5 mm is below"),
+    (["--scale", "banana"], "must be auto"),
+    (["--set", "backlash_mm=9"], "<= 2.0"),
+    (["--set", "bed_x_mm=60", "--set", "bed_y_mm=60"], "the bed is too small: ring is"),
+])
+def test_bad_print_inputs_exit_2_one_line_nothing_written(tmp_path, capsys, args, fragment):
+    out = tmp_path / "kit"
+    rc = main(["print", str(ROOT / "parts" / "final_drive.toml"), "--out", str(out), "-q", *args])
+    err = [line for line in capsys.readouterr().err.splitlines() if line.strip()]
+    assert rc == 2 and len(err) == 1 and fragment in err[0], err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_makefile_knows_the_kit_types():
+    make = (ROOT / "Makefile").read_text()
+    kit_types = re.search(r"^KIT_TYPES\s*:=\s*(.*)$", make, re.M).group(1).split()
+    assert sorted(kit_types) == sorted(_KITS)
