@@ -28,8 +28,28 @@ class Interrupted(BaseException):
         super().__init__(signum)
 
 
+#: signals received; the handler raises at once, but an exception raised inside a finaliser or a
+#: weakref callback is swallowed by Python, so the build also stops at the next safe point
+_SIGNALLED: list[int] = []
+
+
 def _raise_interrupted(signum, frame):
+    _SIGNALLED.append(signum)
     raise Interrupted(signum)
+
+
+def _unraisable(info) -> None:
+    """Python's hook for exceptions it cannot raise (in finalisers, weakref callbacks): an Interrupted
+    there is remembered in _SIGNALLED and acted on at the next safe point, not printed."""
+    if isinstance(info.exc_value, Interrupted):
+        return
+    sys.__unraisablehook__(info)
+
+
+def check_signalled() -> None:
+    """Raise Interrupted when a signal arrived whose exception may have been swallowed."""
+    if _SIGNALLED:
+        raise Interrupted(_SIGNALLED[0])
 
 
 def _hold_signals() -> None:
@@ -96,6 +116,7 @@ def _into_output(args, out: Path, keep: tuple[Path, ...], produce, progress) -> 
             progress(f"removed {stale.name}, left by a build that was killed")
         tmp = of.make_temp(out)
         failures, what = produce(tmp)
+        check_signalled()  # a swallowed interrupt: the output is not put in place
         for f in failures:
             print(f"propulsor: check failed: {f}", file=sys.stderr)
         if failures and not args.keep_failed:
@@ -123,7 +144,7 @@ def cmd_build(args) -> int:
     from . import output_folder as of
     from .progress import Progress
 
-    progress = Progress(enabled=not args.quiet)
+    progress = Progress(enabled=not args.quiet, check=check_signalled)
     part_file = Path(args.part_file)
     try:
         out = of.vet_target(Path(args.out) if args.out else Path("output") / part_file.stem,
@@ -187,7 +208,7 @@ def cmd_print(args) -> int:
     from .printing.printers import load_printer
     from .progress import Progress
 
-    progress = Progress(enabled=not args.quiet)
+    progress = Progress(enabled=not args.quiet, check=check_signalled)
     part_file = Path(args.part_file)
     try:
         out = of.vet_target(Path(args.out) if args.out else Path("output") / f"{part_file.stem}_kit",
@@ -325,6 +346,9 @@ def main(argv=None) -> int:
     """Run one command; SIGINT and SIGTERM end it with 130 / 143 and one line."""
     in_main_thread = threading.current_thread() is threading.main_thread()
     saved = {}
+    _SIGNALLED.clear()
+    saved_hook = sys.unraisablehook
+    sys.unraisablehook = _unraisable
     if in_main_thread:
         for sig in (signal.SIGINT, signal.SIGTERM):
             saved[sig] = signal.signal(sig, _raise_interrupted)
@@ -335,8 +359,12 @@ def main(argv=None) -> int:
         except SystemExit as exc:  # argparse uses 2 for usage errors, which matches bad input
             return int(exc.code or 0)
         return args.func(args)
-    except (Interrupted, KeyboardInterrupt) as exc:
-        signum = exc.signum if isinstance(exc, Interrupted) else int(signal.SIGINT)
+    except BaseException as exc:
+        # the signal's exception itself, or any exception it caused (an extension module whose
+        # initialisation it interrupted raises ImportError "initialization failed")
+        if not (_SIGNALLED or isinstance(exc, (Interrupted, KeyboardInterrupt))):
+            raise
+        signum = exc.signum if isinstance(exc, Interrupted) else (_SIGNALLED[0] if _SIGNALLED else int(signal.SIGINT))
         _hold_signals()
         from .parallel import kill_workers
 
@@ -346,6 +374,7 @@ def main(argv=None) -> int:
     finally:
         for sig, handler in saved.items():
             signal.signal(sig, handler)
+        sys.unraisablehook = saved_hook
 
 
 if __name__ == "__main__":
