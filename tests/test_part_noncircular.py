@@ -247,24 +247,24 @@ def test_paper_tables_in_the_output(table002):
     def check(name, text, key_cols):
         header, rows = _csv(table002 / "tables" / f"{name}.csv")
         by_key = {tuple(int(r[header.index(k)]) for k in key_cols): r for r in rows}
-        printed = ts._parse(text)
+        printed = ts.parse_printed_table(text)
         for cells in printed:
             key = tuple(int(c[0]) for c in cells[:len(key_cols)])
             row = by_key[key]
             for col, cell in zip(header[len(key_cols):], cells[len(key_cols):]):
                 v = row[header.index(col)]
-                ts._assert_printed(None if v in ("", "nan") else float(v), cell, f"{name} {key} {col}")
+                ts.assert_printed(None if v in ("", "nan") else float(v), cell, f"{name} {key} {col}")
         return len(printed)
 
     assert check("sectors", ts.TABLE1_SEED002, ["i"]) == 20
     assert check("driver_teeth", ts.TABLE3_SEED002, ["i", "j"]) == 50
     assert check("driven_spaces", ts.TABLE4_SEED002, ["i", "j"]) == 60
     header, rows = _csv(table002 / "tables" / "radii.csv")
-    printed = ts._parse(ts.TABLE2_SEED002)
+    printed = ts.parse_printed_table(ts.TABLE2_SEED002)
     assert len(rows) == len(printed) == 20
     for r, cells in zip(rows, printed):
         for col, cell in zip(header[1:], cells[1:]):
-            ts._assert_printed(float(r[header.index(col)]), cell, f"radii {r[0]} {col}")
+            ts.assert_printed(float(r[header.index(col)]), cell, f"radii {r[0]} {col}")
 
 
 def test_paper_case_proof_and_price(table002):
@@ -313,11 +313,11 @@ def test_seed000_paper_case(tmp_path_factory):
 
     out = _build(tmp_path_factory, "ncg_seed000_table")
     header, rows = _csv(out / "tables" / "sectors.csv")
-    printed = ts._parse(ts.TABLE1_SEED000)
+    printed = ts.parse_printed_table(ts.TABLE1_SEED000)
     assert len(rows) == len(printed) == 24
     for r, cells in zip(rows, printed):
         for col, cell in zip(header[1:], cells[1:]):
-            ts._assert_printed(float(r[header.index(col)]), cell, f"sectors {r[0]} {col}")
+            ts.assert_printed(float(r[header.index(col)]), cell, f"sectors {r[0]} {col}")
     d = _manifest(out)["derived"]
     assert d["center_distance_mm"] == 143.5 and d["mounting_distance_mm"] == 144.0
     assert d["compare_generated_jam_phases"] == 0

@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 
 from propulsor.cli import main
-from propulsor.parts import _KITS
+from propulsor.parts import kit_type_names
 
 ROOT = Path(__file__).resolve().parents[1]
 needs_slicer = pytest.mark.skipif(shutil.which("prusa-slicer") is None,
@@ -100,4 +100,4 @@ def test_bad_print_inputs_exit_2_one_line_nothing_written(tmp_path, capsys, args
 def test_makefile_knows_the_kit_types():
     make = (ROOT / "Makefile").read_text()
     kit_types = re.search(r"^KIT_TYPES\s*:=\s*(.*)$", make, re.M).group(1).split()
-    assert sorted(kit_types) == sorted(_KITS)
+    assert sorted(kit_types) == kit_type_names()

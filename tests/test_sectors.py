@@ -216,7 +216,7 @@ TABLE4_SEED002 = """
 """
 
 
-def _parse(text):
+def parse_printed_table(text):
     """Rows of (value, decimals) pairs; a lone dash -> (None, None)."""
     rows = []
     for line in text.strip().splitlines():
@@ -232,7 +232,7 @@ def _parse(text):
     return rows
 
 
-def _assert_printed(computed, printed, where):
+def assert_printed(computed, printed, where):
     """computed rounds to the printed value: |computed - printed| <= half a unit of the last digit."""
     value, dec = printed
     if value is None:
@@ -253,13 +253,13 @@ def table002():
 
 
 def _check_table1(table, text):
-    printed = _parse(text)
+    printed = parse_printed_table(text)
     rows = table.rows()
     assert len(rows) == len(printed)
     for row, cells in zip(rows, printed):
         assert row["i"] == int(cells[0][0])
         for name, cell in zip(SECTOR_COLUMNS[1:], cells[1:]):
-            _assert_printed(row[name], cell, f"row {row['i']} {name}")
+            assert_printed(row[name], cell, f"row {row['i']} {name}")
 
 
 def test_table1_seed000_every_row(table000):
@@ -297,25 +297,25 @@ def test_paper_tolerance_breaks_printed_symmetry():
 
 
 def test_table2_seed002_every_row(table002):
-    printed = _parse(TABLE2_SEED002)
+    printed = parse_printed_table(TABLE2_SEED002)
     rows = sector_radii(table002, m=2.5).rows()
     assert len(rows) == len(printed) == 20
     cols = ("theta_deg", "r_mm", "r_b_mm", "r_f_mm", "r_a_mm", "phi_deg", "r_H_mm", "r_bH_mm", "r_fH_mm", "r_aH_mm")
     for row, cells in zip(rows, printed):
         assert row["i"] == int(cells[0][0])
         for name, cell in zip(cols, cells[1:]):
-            _assert_printed(row[name], cell, f"Table 2 row {row['i']} {name}")
+            assert_printed(row[name], cell, f"Table 2 row {row['i']} {name}")
 
 
 def _check_points(arr, text, columns, n_points):
-    printed = _parse(text)
+    printed = parse_printed_table(text)
     by_key = {(int(r["i"]), int(r["j"])): r for r in structured_rows(arr)}
     assert len(arr) == 20 * n_points
     for cells in printed:
         key = (int(cells[0][0]), int(cells[1][0]))
         row = by_key[key]
         for name, cell in zip(columns[2:], cells[2:]):
-            _assert_printed(row[name], cell, f"point {key} {name}")
+            assert_printed(row[name], cell, f"point {key} {name}")
     return len(printed)
 
 
@@ -332,7 +332,7 @@ def test_table4_seed002_every_row(table002):
 def test_table3_needs_the_backlash(table002):
     """Without j_n = 0.16 mm the flank angles leave the printed digits (the rule is pinned)."""
     arr = pinion_tooth_points(table002, m=2.5, j_n=0.0)
-    printed = _parse(TABLE3_SEED002)
+    printed = parse_printed_table(TABLE3_SEED002)
     worst = 0.0
     for cells in printed:
         row = arr[(arr["i"] == cells[0][0]) & (arr["j"] == cells[1][0])][0]

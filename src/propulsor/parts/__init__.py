@@ -81,6 +81,11 @@ _KITS = {
 }
 
 
+def kit_type_names() -> list[str]:
+    """The part types that have a print kit."""
+    return sorted(_KITS)
+
+
 def get_kit(name: str):
     """The print-kit function of a part type; InputError when it has none yet."""
     if name not in _KITS:
