@@ -343,3 +343,13 @@ def test_fallback_replacement_is_recovered_after_a_crash(tmp_path):
     assert [p.name for p in of.clean_stale(out)] == [".out.tmp-deadbeef"]
     assert (out / "manifest.json").read_text() == "5"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]
+
+
+def test_a_closed_pipe_is_no_traceback():
+    """`propulsor params balancer | head -1`: the reader goes away; no traceback."""
+    p = subprocess.Popen([sys.executable, "-m", "propulsor.cli", "params", "balancer"], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, cwd=ROOT)
+    p.stdout.readline()
+    p.stdout.close()
+    err = p.stderr.read().decode()
+    assert p.wait(timeout=60) in (0, 141) and "Traceback" not in err, err

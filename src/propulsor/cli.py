@@ -9,6 +9,7 @@ kept only with --keep-failed) or `check` found invalid files; 2 bad input
 from __future__ import annotations
 
 import argparse
+import os
 import shutil
 import signal
 import sys
@@ -359,6 +360,9 @@ def main(argv=None) -> int:
         except SystemExit as exc:  # argparse uses 2 for usage errors, which matches bad input
             return int(exc.code or 0)
         return args.func(args)
+    except BrokenPipeError:  # the reader of our output went away (`propulsor params ... | head`)
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 128 + int(signal.SIGPIPE)
     except BaseException as exc:
         # the signal's exception itself, or any exception it caused (an extension module whose
         # initialisation it interrupted raises ImportError "initialization failed")
