@@ -52,19 +52,21 @@ class PartType:
     estimate: Callable | None = None
 
 
-def size_needs_design(part_type: PartType) -> bool:
-    """True when the part type's size estimate needs the validated design (it runs after validation)."""
+def _estimate_of(part_type: PartType):
+    """The part type's size estimate function (its own, or the one in :mod:`.size`), or None."""
     from .size import ESTIMATES
 
-    estimate = part_type.estimate or ESTIMATES.get(part_type.name)
-    return bool(getattr(estimate, "needs_design", False))
+    return part_type.estimate or ESTIMATES.get(part_type.name)
+
+
+def size_needs_design(part_type: PartType) -> bool:
+    """True when the part type's size estimate needs the validated design (it runs after validation)."""
+    return bool(getattr(_estimate_of(part_type), "needs_design", False))
 
 
 def check_size(part_type: PartType, params, part_file: Path | None = None) -> SizeEstimate:
     """The build's size estimate; InputError when it cannot finish within policy.BUILD_SECONDS_MAX."""
-    from .size import ESTIMATES
-
-    estimate = part_type.estimate or ESTIMATES.get(part_type.name)
+    estimate = _estimate_of(part_type)
     if estimate is None:
         return SizeEstimate(0.0, "no estimate for this part type")
     est = estimate(params, part_file)

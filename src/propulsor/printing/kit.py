@@ -48,18 +48,6 @@ class Kit:
     notes: list[str] = field(default_factory=list)
 
 
-def piece_meshes(kit: Kit) -> dict[str, object]:
-    """Each piece's triangle mesh (chord tolerance of the exports), one per copy: name_k for count > 1."""
-    from ..export.mesh import to_trimesh
-
-    out = {}
-    for pc in kit.pieces:
-        mesh = to_trimesh(pc.solid)
-        for k in range(pc.count):
-            out[pc.name if pc.count == 1 else f"{pc.name}_{k + 1}"] = mesh
-    return out
-
-
 def plate_checks(kit: Kit, plates, flat: dict) -> list[Check]:
     """Pieces on a plate do not touch (least gap between footprints) and every plate fits the bed."""
     p = kit.printer
@@ -149,14 +137,16 @@ def write_kit(kit: Kit, w) -> None:
     from ..checks.mesh import mesh_checks
     from ..export.mesh import write_3mf_objects, write_stl
 
+    from ..export.mesh import to_trimesh
+
     p = kit.printer
-    meshes = piece_meshes(kit)
-    genus = {pc.name: pc.genus for pc in kit.pieces}
-    for name, mesh in meshes.items():
-        base = name if name in genus else name.rsplit("_", 1)[0]
-        if name == base or name.endswith("_1"):
-            write_stl(mesh, w.path(f"pieces/{base}.stl"), base)
-            w.add_checks(mesh_checks(mesh, base, expected_genus=genus[base]))
+    meshes = {}  # one per printed copy: name, or name_k when more than one is printed
+    for pc in kit.pieces:
+        mesh = to_trimesh(pc.solid)
+        write_stl(mesh, w.path(f"pieces/{pc.name}.stl"), pc.name)
+        w.add_checks(mesh_checks(mesh, pc.name, expected_genus=pc.genus))
+        for k in range(pc.count):
+            meshes[pc.name if pc.count == 1 else f"{pc.name}_{k + 1}"] = mesh
     flat = {n: lay_flat(m)[0] for n, m in meshes.items()}
     plates = pack({n: tuple((m.bounds[1] - m.bounds[0])[:2]) for n, m in flat.items()}, p.bed_x_mm, p.bed_y_mm,
                   p.piece_gap_mm)
