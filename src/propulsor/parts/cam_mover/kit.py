@@ -95,7 +95,7 @@ def print_params(p: CamMoverParams, pl, S: float, printer: Printer) -> CamMoverP
     return load_params(CamMoverParams, values)
 
 
-def kit(p: CamMoverParams, printer: Printer, scale: float | None = None) -> Kit:
+def kit(p: CamMoverParams, printer: Printer, scale: float | None = None, source=None) -> Kit:
     from ...solids.build import extrude_profile
     from ...solids.kernel import cut, cylinder, fuse, moved
     from ...solids.printed import chamfer_bottom, flipped
