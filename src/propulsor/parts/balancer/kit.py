@@ -224,7 +224,9 @@ def kit(p: BalancerParams, printer: Printer, scale: float | None = None, source=
         derived={"print_R_b_mm": R, "print_travel_deg": [math.degrees(tor.beta0), math.degrees(tor.beta_m)],
                  "print_arm_bore_d_mm": arm_bore, "print_spindle_d_mm": spindle_d, "print_wheel_bore_d_mm": wheel_bore,
                  "print_post_centres_mm": [[float(v) for v in c] for c in posts],
-                 "print_arm_post_clearance_min_mm": sweep.min_clearance, "wheel_slabs": len(slabs)},
+                 "print_arm_post_clearance_min_mm": sweep.min_clearance,
+                 "print_arm_post_clearance_ends_mm": [float(sweep.clearance[0]), float(sweep.clearance[-1])],
+                 "print_arm_post_clearance_inside_min_mm": float(sweep.clearance[1:-1].min()), "wheel_slabs": len(slabs)},
         allowances=[("running clearance", clear, f"arm bore ⌀{arm_bore:.2f} on the journal boss, wheel bore "
                                                  f"⌀{wheel_bore:.2f} on the spindle, the stop posts {clear:g} mm "
                                                  f"short of the arm at β0 and β_m"),

@@ -71,6 +71,7 @@ def kit(p: RoadWheelParams, printer: Printer, scale: float | None = None, source
     # the slabs restacked: outer shape of the wheel at 1:S
     tyre_r = m.r_tyre / S
     low_row = min(a for a, _ in m.rows_z) / S
+    r_max = _max_radius(slabs)
     checks = [
         Check.at_least("fit.wheel_on_axle", (bore - under - axle_d) / 2, clear, "mm",
                        f"radial running clearance of the wheel's ⌀{bore:.2f} bore on the ⌀{axle_d:g} axle (the bore "
@@ -81,8 +82,9 @@ def kit(p: RoadWheelParams, printer: Printer, scale: float | None = None, source
                        f"the lowest tyre row (z = {low_row:.2f} mm above the hub face) over the base: the collar "
                        f"is {COLLAR_H_MM:g} mm high; the collar (r = {collar_r:.2f}) lies inside the hub (r = "
                        f"{r_hub:.2f}): the wheel turns on the collar's face only"),
-        Check.at_most("shape.tyre_radius", abs(_max_radius(slabs) - tyre_r), 1e-6, "mm",
-                      f"largest radius of the slabs {_max_radius(slabs):.4f} mm vs R_tyre/S = {tyre_r:.4f} mm"),
+        Check.at_most("shape.tyre_radius", abs(r_max - tyre_r), 1e-6, "mm",
+                      f"largest radius of the slabs {r_max:.6f} mm (exact bounding boxes) vs R_tyre/S = "
+                      f"{tyre_r:.6f} mm"),
         Check.at_most("shape.stacked_length", abs(top - max(m.z_outboard, m.rows_z[-1][1]) / S), 1e-9, "mm",
                       f"{len(slabs)} slabs stacked: {top:.3f} mm"),
     ]
@@ -105,7 +107,16 @@ def kit(p: RoadWheelParams, printer: Printer, scale: float | None = None, source
 
 
 def _max_radius(slabs) -> float:
-    from ...export.mesh import to_trimesh
-    import numpy as np
+    """Largest radius of the slabs: half the larger width of their exact (optimal) bounding boxes."""
+    from OCP.Bnd import Bnd_Box
+    from OCP.BRepBndLib import BRepBndLib
 
-    return max(float(np.hypot(*to_trimesh(s.solid, chord_tol=0.001).vertices[:, :2].T).max()) for s in slabs)
+    from ...solids.kernel import occ_shape
+
+    out = 0.0
+    for s in slabs:
+        box = Bnd_Box()
+        BRepBndLib.AddOptimal_s(occ_shape(s.solid), box, False, False)
+        x0, y0, _, x1, y1, _ = box.Get()
+        out = max(out, 0.5 * (x1 - x0), 0.5 * (y1 - y0))
+    return out
