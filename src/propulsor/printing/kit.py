@@ -24,13 +24,43 @@ from .scale import ScaleChoice
 
 @dataclass
 class Piece:
-    """One printed piece: a solid at print size (mm), how many to print, its expected genus."""
+    """One printed piece: a solid at print size (mm), how many to print, its expected genus.  The piece is
+    printed on its largest planar face with the bed-side chamfer made in its first layers
+    (:mod:`.chamfer`)."""
 
     name: str
     solid: object
     count: int = 1
     genus: int | None = None
     what: str = ""
+    #: bed-side chamfer (mm) of this piece; None: the printer's chamfer_mm
+    chamfer_mm: float | None = None
+
+
+@dataclass
+class Placed:
+    """A printed piece in the assembled model: its label, the piece's name, the 4 × 4 placement of the
+    printed piece (as :func:`place` makes it) and a colour for the picture."""
+
+    label: str
+    piece: str
+    matrix: np.ndarray
+    colour: str = "0.6"
+
+
+def place(dx: float = 0.0, dy: float = 0.0, dz: float = 0.0, rot_z: float = 0.0, flip: str | None = None,
+          z_top: float = 0.0) -> np.ndarray:
+    """4 × 4 placement: the piece optionally turned over about the x or y axis with its top z_top brought to
+    z = 0 (:func:`propulsor.solids.printed.flipped`), then turned about z by rot_z (rad), then moved."""
+    F = np.eye(4)
+    if flip is not None:
+        F = np.diag({"x": [1.0, -1.0, -1.0, 1.0], "y": [-1.0, 1.0, -1.0, 1.0]}[flip])
+        F[2, 3] = z_top
+    c, s = np.cos(rot_z), np.sin(rot_z)
+    M = np.eye(4)
+    M[:2, :2] = [[c, -s], [s, c]]
+    M[:3, 3] = (dx, dy, dz)
+    return M @ F
 
 
 @dataclass
@@ -39,8 +69,8 @@ class Kit:
     printer: Printer
     scale: ScaleChoice
     pieces: list[Piece]
-    #: assembled model: (piece name, solid placed as on the desk, colour)
-    assembly: list[tuple[str, object, str]] = field(default_factory=list)
+    #: assembled model: the printed pieces placed as on the desk
+    assembly: list[Placed] = field(default_factory=list)
     checks: list[Check] = field(default_factory=list)
     derived: dict = field(default_factory=dict)
     allowances: list[tuple[str, float, str]] = field(default_factory=list)  # (name, value mm, how applied)
@@ -105,15 +135,24 @@ def _plate_picture(w, name: str, objects, printer: Printer) -> None:
     plt.close(fig)
 
 
-def _assembly_picture(w, kit: Kit) -> None:
-    """The assembled model seen from above (each piece's mesh projected, later pieces on top)."""
+def assembled_meshes(kit: Kit, meshes: dict) -> list:
+    """[(label, mesh, colour)] of the assembled model: the printed pieces' meshes {name: mesh} placed."""
+    out = []
+    for pl in kit.assembly:
+        m = meshes[pl.piece].copy()
+        m.apply_transform(pl.matrix)
+        out.append((pl.label, m, pl.colour))
+    return out
+
+
+def _assembly_picture(w, kit: Kit, meshes: dict) -> None:
+    """The assembled model seen from above (each printed piece's mesh placed and projected, the higher
+    pieces on top)."""
     import matplotlib.pyplot as plt
     from matplotlib.collections import PolyCollection
 
-    from ..export.mesh import to_trimesh
-
     fig, ax = plt.subplots(figsize=(7, 6))
-    items = [(name, to_trimesh(solid, chord_tol=0.05), colour) for name, solid, colour in kit.assembly]
+    items = assembled_meshes(kit, meshes)
     items.sort(key=lambda it: it[1].bounds[1][2])
     for name, mesh, colour in items:
         up = mesh.face_normals[:, 2] > 0.5
@@ -135,19 +174,21 @@ def write_kit(kit: Kit, w) -> None:
     """Pieces → STL + mesh checks; plates → 3MF + pictures; assembled picture; derived, checks and
     the report's text into the writer `w` (an OutputWriter whose report is print_report.md)."""
     from ..checks.mesh import mesh_checks
-    from ..export.mesh import write_3mf_objects, write_stl
-
-    from ..export.mesh import to_trimesh
+    from ..export.mesh import to_trimesh, write_3mf_objects, write_stl
+    from .chamfer import chamfer_first_layers
 
     p = kit.printer
-    meshes = {}  # one per printed copy: name, or name_k when more than one is printed
+    flat = {}  # one per printed copy: name, or name_k when more than one is printed
+    piece_meshes = {}
     for pc in kit.pieces:
-        mesh = to_trimesh(pc.solid)
-        write_stl(mesh, w.path(f"pieces/{pc.name}.stl"), pc.name)
-        w.add_checks(mesh_checks(mesh, pc.name, expected_genus=pc.genus))
+        mesh = piece_meshes[pc.name] = to_trimesh(pc.solid)
+        # laid on its largest face, the bed-side chamfer in the first layers
+        printed = chamfer_first_layers(lay_flat(mesh)[0], p.chamfer_mm if pc.chamfer_mm is None else pc.chamfer_mm,
+                                       p.layer_mm, pc.name)
+        write_stl(printed, w.path(f"pieces/{pc.name}.stl"), pc.name)
+        w.add_checks(mesh_checks(printed, pc.name, expected_genus=pc.genus))
         for k in range(pc.count):
-            meshes[pc.name if pc.count == 1 else f"{pc.name}_{k + 1}"] = mesh
-    flat = {n: lay_flat(m)[0] for n, m in meshes.items()}
+            flat[pc.name if pc.count == 1 else f"{pc.name}_{k + 1}"] = printed
     plates = pack({n: tuple((m.bounds[1] - m.bounds[0])[:2]) for n, m in flat.items()}, p.bed_x_mm, p.bed_y_mm,
                   p.piece_gap_mm)
     w.add_checks(plate_checks(kit, plates, flat))
@@ -161,8 +202,8 @@ def write_kit(kit: Kit, w) -> None:
                      ", ".join(n for n, _ in objects)))
     w.add_table("plates", ["plate", "pieces", "volume_cm3", "mass_g", "names"], rows)
     if kit.assembly:
-        _assembly_picture(w, kit)
-    w.derived.update({"scale_S": kit.scale.S, "plates": len(plates), "pieces": len(meshes),
+        _assembly_picture(w, kit, piece_meshes)
+    w.derived.update({"scale_S": kit.scale.S, "plates": len(plates), "pieces": len(flat),
                       "filament_volume_cm3": sum(r[2] for r in rows), "filament_mass_g": sum(r[3] for r in rows)})
     w.derived.update(kit.derived)
     w.add_checks(kit.checks)

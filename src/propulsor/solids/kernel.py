@@ -193,6 +193,18 @@ def volume(shape) -> float:
     return float(props.Mass())
 
 
+def largest_radius(shape) -> float:
+    """Largest distance from the z axis of a shape whose section is round about it: half the larger
+    width of its exact (optimal) bounding box, mm."""
+    from OCP.Bnd import Bnd_Box
+    from OCP.BRepBndLib import BRepBndLib
+
+    box = Bnd_Box()
+    BRepBndLib.AddOptimal_s(occ_shape(shape), box, False, False)
+    x0, y0, _, x1, y1, _ = box.Get()
+    return max(0.5 * (x1 - x0), 0.5 * (y1 - y0))
+
+
 def mass_properties(solid, rho: float) -> tuple[float, np.ndarray]:
     """Mass (volume × rho) and centre of mass (mm) of a solid."""
     g = GProp_GProps()

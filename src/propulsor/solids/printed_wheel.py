@@ -30,6 +30,18 @@ class WheelSlab:
     web_face: str  # "bottom" | "top": where the half web lies in the wheel frame
     genus: int
 
+    def placement(self, dx: float = 0.0, dy: float = 0.0, dz: float = 0.0):
+        """4 × 4 matrix taking the printed slab to its place in the wheel frame, then moved by (dx, dy, dz)."""
+        import numpy as np
+
+        M = np.eye(4)
+        if self.web_face == "top":  # printed turned over about x: turn back
+            M = np.diag([1.0, -1.0, -1.0, 1.0])
+            M[2, 3] = self.z1 - self.z0
+        T = np.eye(4)
+        T[:3, 3] = (dx, dy, dz + self.z0)
+        return T @ M
+
 
 def _rect(r0: float, r1: float, z0: float, z1: float) -> Profile:
     return Profile(polygon_loop([(r0, z0), (r1, z0), (r1, z1), (r0, z1)]))

@@ -26,7 +26,7 @@ import numpy as np
 from ...check import Check
 from ...errors import InputError
 from ...geometry.profile import Arc, Line, Loop, Profile, circle_loop
-from ...printing.kit import Kit, Piece
+from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
 from ...printing.scale import check_printable, choose_scale
 from .design import resolve
@@ -100,8 +100,7 @@ def _rot(a: float) -> np.ndarray:
 def kit(p: BalancerParams, printer: Printer, scale: float | None = None, source=None) -> Kit:
     from ...checks.motion import Pose, rotation_matrices, sweep_pair
     from ...solids.build import extrude_profile
-    from ...solids.kernel import cylinder, fuse, moved
-    from ...solids.printed import chamfer_bottom
+    from ...solids.kernel import cylinder, fuse
     from ...solids.printed_wheel import wheel_slabs
 
     m = resolve(p, source)
@@ -150,7 +149,7 @@ def kit(p: BalancerParams, printer: Printer, scale: float | None = None, source=
     arm = fuse(extrude_profile(arm_prof, za1 - za0),
                cylinder(collar_r, za1 - za0 - 0.01, z_hub - za0, center=(R, 0.0)),
                cylinder(spindle_d / 2, z_hub - za0 - 0.01, z_end - za0, center=(R, 0.0)), name="arm")
-    arm = chamfer_bottom(arm, ch, "arm")  # printed on its inboard face: z_print = z - za0
+    arm = arm  # printed on its inboard face: z_print = z - za0
     # --- wheel slabs on the spindle
     wheel_bore = spindle_d + 2 * clear + under
     if wm.r_hub * k - wheel_bore / 2 < printer.min_feature_mm:
@@ -179,7 +178,7 @@ def kit(p: BalancerParams, printer: Printer, scale: float | None = None, source=
                 cylinder(r_journal, PLATE_T_MM + collar_top - 0.01, PLATE_T_MM + boss_top - zb), name="boss")
     post_top = 0.0 - zb  # posts reach the arm's mid-plane
     post_solids = [cylinder(POST_R_MM, PLATE_T_MM - 0.01, PLATE_T_MM + post_top, center=tuple(c)) for c in posts]
-    bracket = chamfer_bottom(fuse(plate, boss, *post_solids, name="bracket"), ch, "bracket")
+    bracket = fuse(plate, boss, *post_solids, name="bracket")
     # --- the 2D proof: the arm's printed outline over the travel against the posts
     betas = np.linspace(tor.beta0, tor.beta_m, int(math.ceil(math.degrees(tor.beta_m - tor.beta0) * STEPS_PER_DEG)) + 1)
     post_loops = [circle_loop(POST_R_MM, tuple(c)) for c in posts]
@@ -210,14 +209,14 @@ def kit(p: BalancerParams, printer: Printer, scale: float | None = None, source=
     pieces = [Piece("arm", arm, genus=len(arm_prof.holes), what=f"balancer arm R_b = {R:.2f} mm with collar and spindle "
                                                                   f"⌀{spindle_d:.2f}"),
               Piece("bracket", bracket, genus=0, what="bracket (hull side) with the journal boss and two stop posts")]
-    pieces += [Piece(s.name, chamfer_bottom(s.printed, ch, s.name), genus=s.genus,
+    pieces += [Piece(s.name, s.printed, genus=s.genus,
                      what=f"road wheel slab z {s.z0:.2f} … {s.z1:.2f} mm (printed on its half web)") for s in slabs]
     beta_st = tor.beta_st
     rot = beta_st - math.pi / 2
     wc = _rot(rot) @ np.array([R, 0.0])
-    assembly = [("bracket", moved(bracket, dz=zb - PLATE_T_MM), "0.75"),
-                ("arm", moved(arm, dz=za0, rot_z=rot), "tab:blue")]
-    assembly += [(s.name, moved(s.solid, dx=float(wc[0]), dy=float(wc[1]), dz=z_hub), ["0.3", "0.5"][j % 2])
+    assembly = [Placed("bracket", "bracket", place(dz=zb - PLATE_T_MM), "0.75"),
+                Placed("arm", "arm", place(dz=za0, rot_z=rot), "tab:blue")]
+    assembly += [Placed(s.name, s.name, s.placement(dx=float(wc[0]), dy=float(wc[1]), dz=z_hub), ["0.3", "0.5"][j % 2])
                  for j, s in enumerate(slabs)]
     return Kit(
         part="balancer", printer=printer, scale=choice, pieces=pieces, assembly=assembly, checks=checks,
@@ -231,7 +230,7 @@ def kit(p: BalancerParams, printer: Printer, scale: float | None = None, source=
                                                  f"⌀{wheel_bore:.2f} on the spindle, the stop posts {clear:g} mm "
                                                  f"short of the arm at β0 and β_m"),
                     ("hole undersize", under, "added to every hole's diameter"),
-                    ("bed-side chamfer", ch, "every piece's bottom edges")],
+                    ("bed-side chamfer", ch, "45° round the face each piece lies on, made layer by layer as the slicer sees it")],
         steps=[f"Glue the {len(slabs)} wheel slabs together in their order (wheel_1 inboard), half web to half web.",
                "Lay the bracket on the desk, boss up, and clamp or screw it down (the wheel swings out beyond it).",
                "Put the arm, spindle up, over the boss: it rests on the boss's collar.",

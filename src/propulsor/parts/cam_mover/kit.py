@@ -32,7 +32,7 @@ from ...errors import InputError
 from ...geometry import cam_outlines as co
 from ...geometry.profile import Profile, circle_loop
 from ...params import load_params, params_to_dict
-from ...printing.kit import Kit, Piece
+from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
 from ...printing.scale import check_printable, choose_scale
 from .design import plan
@@ -98,7 +98,7 @@ def print_params(p: CamMoverParams, pl, S: float, printer: Printer) -> CamMoverP
 def kit(p: CamMoverParams, printer: Printer, scale: float | None = None, source=None) -> Kit:
     from ...solids.build import extrude_profile
     from ...solids.kernel import cut, cylinder, fuse, moved
-    from ...solids.printed import chamfer_bottom, flipped
+    from ...solids.printed import flipped
 
     full = plan(p)
     choice = choose_scale(_full_size_extents(full), (printer.bed_x_mm, printer.bed_y_mm, printer.bed_z_mm), scale)
@@ -134,21 +134,21 @@ def kit(p: CamMoverParams, printer: Printer, scale: float | None = None, source=
     core = Profile(pl.core.outer, [circle_loop(cam_bore_print / 2, ccw=False)] + list(pl.core.holes[1:]), "core")
     cam = fuse(extrude_profile(plate_prof, tp), moved(extrude_profile(core, dg), dz=tp),
                moved(extrude_profile(pl.ring, dg), dz=tp), name="cam")
-    cam = chamfer_bottom(cam, ch, "cam")
-    carrier = chamfer_bottom(extrude_profile(pl.carrier.profile, t), ch, "carrier")
+    cam = cam
+    carrier = extrude_profile(pl.carrier.profile, t)
     pin_len = z["pin"][1] - z["pin"][0]
     leg = fuse(extrude_profile(pl.leg, t), cylinder(q.roller_pin_mm / 2, t - 0.01, t + pin_len), name="leg")
-    leg = chamfer_bottom(leg, ch, "leg")  # printed bar down, pin up; assembled the other way round
-    roller = chamfer_bottom(extrude_profile(roller_prof, q.roller_width_mm), min(ch, 0.25 * r_print), "roller")
+    leg = leg  # printed bar down, pin up; assembled the other way round
+    roller = extrude_profile(roller_prof, q.roller_width_mm)
     hw = 0.5 * q.leg_width_mm + q.socket_clearance_mm
     y0, y1 = q.leg_mount_mm - 1.0, q.leg_mount_mm + q.socket_depth_mm
     socket = Profile(co.leg_profile(2 * hw, -y0, y1).outer, [], "socket")
     # the shoe prints on its top face, the socket open upwards
     shoe_up = cut(extrude_profile(pl.shoe.profile, ws), moved(extrude_profile(socket, t + 1.0), dz=-1.0), name="shoe")
-    shoe = chamfer_bottom(flipped(shoe_up, ws), ch, "shoe")
+    shoe = flipped(shoe_up, ws)
     gap_c = q.carrier_axial_gap_mm
     axle_len = tp + dg + gap_c + t + AXLE_TOP_MM
-    axle = chamfer_bottom(cylinder(axle_d / 2, 0.0, axle_len), min(ch, axle_d / 8), "axle")
+    axle = cylinder(axle_d / 2, 0.0, axle_len)
     core_r = pl.H_min - q.roller_radius_mm
     spacer_D = min(2 * (core_r - 1.0), pl.carrier.slot_bottom * 2 - 2.0, axle_d + 12.0)
     spacer_hole = axle_d + 2 * clear + under
@@ -157,7 +157,7 @@ def kit(p: CamMoverParams, printer: Printer, scale: float | None = None, source=
                          f"core (radius {core_r:.2f} mm); print larger")
     spacer = extrude_profile(Profile(circle_loop(spacer_D / 2), [circle_loop(spacer_hole / 2, ccw=False)], "spacer"),
                              gap_c)
-    handle = chamfer_bottom(cylinder(HANDLE_D_MM / 2, 0.0, t + HANDLE_UP_MM), min(ch, HANDLE_D_MM / 8), "handle")
+    handle = cylinder(HANDLE_D_MM / 2, 0.0, t + HANDLE_UP_MM)
     leg_genus = 0
     pieces = [Piece("cam", cam, genus=1 + q.cam_bolt_count, what=f"fixed cam with its channel, the base"),
               Piece("carrier", carrier, genus=1 + q.carrier_bolt_count, what=f"carrier with {n} slides"),
@@ -170,19 +170,21 @@ def kit(p: CamMoverParams, printer: Printer, scale: float | None = None, source=
     # --- the model assembled at the carrier angle of the part file
     phi0 = math.radians(q.assembly_angle_deg)
     zc = z["carrier"][0]
-    assembly = [("cam", cam, "0.75"), ("axle", axle, "0.35"), ("spacer", moved(spacer, dz=tp + dg), "0.5"),
-                ("carrier", moved(carrier, dz=zc, rot_z=phi0), "tab:blue")]
+    assembly = [Placed("cam", "cam", place(), "0.75"), Placed("axle", "axle", place(), "0.35"),
+                Placed("spacer", "spacer", place(dz=tp + dg), "0.5"),
+                Placed("carrier", "carrier", place(dz=zc, rot_z=phi0), "tab:blue")]
     M = leg_poses(pl, [phi0 + 2 * math.pi * k / n for k in range(n)])
     for k in range(n):
         ang = math.atan2(M[k][1, 0], M[k][0, 0])
         x, y = float(M[k][0, 2]), float(M[k][1, 2])
-        assembly += [(f"leg_{k + 1}", moved(flipped(leg, t + pin_len, axis="y"), dz=zc - pin_len, rot_z=ang, dx=x, dy=y),
-                      "tab:orange"),
-                     (f"roller_{k + 1}", moved(roller, dz=z["roller"][0], dx=x, dy=y), "0.2"),
-                     (f"shoe_{k + 1}", moved(shoe_up, dz=zc, rot_z=ang, dx=x, dy=y), "tab:green")]
+        assembly += [Placed(f"leg_{k + 1}", "leg", place(dx=x, dy=y, dz=zc - pin_len, rot_z=ang, flip="y",
+                                                         z_top=t + pin_len), "tab:orange"),
+                     Placed(f"roller_{k + 1}", "roller", place(dx=x, dy=y, dz=z["roller"][0]), "0.2"),
+                     Placed(f"shoe_{k + 1}", "shoe", place(dx=x, dy=y, dz=zc, rot_z=ang, flip="x", z_top=ws),
+                            "tab:green")]
     hx, hy = _first_hole(q)
-    assembly.append(("handle", moved(handle, dz=zc, dx=hx * math.cos(phi0) - hy * math.sin(phi0),
-                                     dy=hx * math.sin(phi0) + hy * math.cos(phi0)), "tab:red"))
+    assembly.append(Placed("handle", "handle", place(dz=zc, dx=hx * math.cos(phi0) - hy * math.sin(phi0),
+                                                     dy=hx * math.sin(phi0) + hy * math.cos(phi0)), "tab:red"))
     # --- checks on the printed geometry
     tol = 1e-6
     rw, ro = pr["roller_working"], pr["roller_outer"]
@@ -226,7 +228,7 @@ def kit(p: CamMoverParams, printer: Printer, scale: float | None = None, source=
                                                  f"wide; rollers on pins, carrier on the axle"),
                     ("press fit", press, "axle in the cam, handle in the carrier (radial)"),
                     ("hole undersize", under, "added to every hole's diameter and to the channel's and slides' width"),
-                    ("bed-side chamfer", ch, "every piece's bottom edges")],
+                    ("bed-side chamfer", ch, "45° round the face each piece lies on, made layer by layer as the slicer sees it")],
         steps=[f"Press the axle into the cam's bore from above until it stands on the desk; put the spacer ring "
                f"over it onto the cam's core.",
                f"Push each roller onto a leg's pin (the pin points down) and each shoe onto a leg's end (the shoe's "

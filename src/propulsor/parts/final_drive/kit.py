@@ -18,10 +18,9 @@ import dataclasses
 import math
 
 from ...check import Check
-from ...errors import InputError
 from ...geometry.profile import Arc, Line, Loop, Profile, circle_loop
 from ...params import load_params, params_to_dict
-from ...printing.kit import Kit, Piece
+from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
 from ...printing.scale import check_printable, choose_scale
 from .design import body_offsets, design, planetary_set, ring_outer_d
@@ -53,8 +52,7 @@ def _stadium(length: float, r: float) -> Loop:
 def kit(p: FinalDriveParams, printer: Printer, scale: float | None = None, source=None) -> Kit:
     from ...gears.planetary_kinematics import PlanetaryKinematics
     from ...solids.build import extrude_profile
-    from ...solids.kernel import cylinder, fuse, moved
-    from ...solids.printed import chamfer_bottom, flipped
+    from ...solids.kernel import cylinder, fuse
 
     ps = planetary_set(p)
     D = ring_outer_d(p, ps)
@@ -89,9 +87,9 @@ def kit(p: FinalDriveParams, printer: Printer, scale: float | None = None, sourc
     ch = printer.chamfer_mm
     # ring and floor, one piece
     floor = extrude_profile(Profile(circle_loop(Dq / 2), [circle_loop(run_hole / 2, ccw=False)], "floor"), t_f)
-    ring = chamfer_bottom(fuse(floor, extrude_profile(ring_o.profile, t_f + b_r), name="ring with floor"), ch, "ring")
-    sun = chamfer_bottom(extrude_profile(sun_o.profile, b_s), ch, "sun")
-    planet = chamfer_bottom(extrude_profile(planet_o.profile, b_p), ch, "planet")
+    ring = fuse(floor, extrude_profile(ring_o.profile, t_f + b_r), name="ring with floor")
+    sun = extrude_profile(sun_o.profile, b_s)
+    planet = extrude_profile(planet_o.profile, b_p)
     # carrier, printed disc down and pins up; assembled the other way round
     kin = PlanetaryKinematics(q.z_sun, q.z_planet, q.z_ring, q.n_planets, qs.a_w)
     R_c = min(qs.a_w + pin_d / 2 + PIN_WALL_MM, 0.5 * abs(qs.d_a_ring) - 1.0)
@@ -99,14 +97,14 @@ def kit(p: FinalDriveParams, printer: Printer, scale: float | None = None, sourc
     pins = [cylinder(pin_d / 2, CARRIER_T_MM - 0.01, CARRIER_T_MM + pin_len,
                      center=tuple(float(v) for v in kin.planet_centre(0.0, k))) for k in range(q.n_planets)]
     disc = extrude_profile(Profile(circle_loop(R_c), [circle_loop(run_hole / 2, ccw=False)], "carrier"), CARRIER_T_MM)
-    carrier = chamfer_bottom(fuse(disc, *pins, name="carrier with pins"), ch, "carrier")
+    carrier = fuse(disc, *pins, name="carrier with pins")
     # shaft through floor, sun, carrier; crank pressed on its top
     shaft_len = t_f + b_s + GAP_MM + CARRIER_T_MM + CRANK_T_MM
-    shaft = chamfer_bottom(cylinder(shaft_d / 2, 0.0, shaft_len), min(ch, shaft_d / 8), "shaft")
+    shaft = cylinder(shaft_d / 2, 0.0, shaft_len)
     arm = Profile(_stadium(CRANK_ARM_MM, shaft_d / 2 + 5.0), [circle_loop(sun_hole / 2, ccw=False)], "crank")
-    crank = chamfer_bottom(fuse(extrude_profile(arm, CRANK_T_MM),
+    crank = fuse(extrude_profile(arm, CRANK_T_MM),
                                 cylinder(HANDLE_D_MM / 2, CRANK_T_MM - 0.01, CRANK_T_MM + HANDLE_H_MM,
-                                         center=(CRANK_ARM_MM, 0.0)), name="crank"), ch, "crank")
+                                         center=(CRANK_ARM_MM, 0.0)), name="crank")
     pieces = [Piece("ring", ring, genus=1, what=f"ring, {q.z_ring} teeth, with its floor (the base)"),
               Piece("sun", sun, genus=1, what=f"sun, {q.z_sun} teeth"),
               Piece("planet", planet, count=q.n_planets, genus=1, what=f"planet, {q.z_planet} teeth"),
@@ -115,14 +113,16 @@ def kit(p: FinalDriveParams, printer: Printer, scale: float | None = None, sourc
               Piece("crank", crank, genus=1, what="crank with handle")]
     off_ext, off_ring = body_offsets(q.z_ring)
     z_top = t_f + b_p + GAP_MM
-    assembly = [("ring", moved(ring, rot_z=kin.ring_rotation + off_ring), "0.7"),
-                ("sun", moved(sun, dz=t_f, rot_z=off_ext), "tab:orange")]
+    assembly = [Placed("ring", "ring", place(rot_z=kin.ring_rotation + off_ring), "0.7"),
+                Placed("sun", "sun", place(dz=t_f, rot_z=off_ext), "tab:orange")]
     for k in range(q.n_planets):
         c = kin.planet_centre(0.0, k)
-        assembly.append((f"planet_{k + 1}", moved(planet, dx=float(c[0]), dy=float(c[1]), dz=t_f,
-                                                  rot_z=float(kin.planet_angle(0.0, k)) + off_ext), "tab:green"))
-    assembly += [("carrier", flipped(carrier, z_top + CARRIER_T_MM + pin_len), "tab:blue"),
-                 ("shaft", shaft, "0.3"), ("crank", moved(crank, dz=shaft_len - CRANK_T_MM), "tab:red")]
+        assembly.append(Placed(f"planet_{k + 1}", "planet", place(dx=float(c[0]), dy=float(c[1]), dz=t_f,
+                                                                  rot_z=float(kin.planet_angle(0.0, k)) + off_ext),
+                               "tab:green"))
+    assembly += [Placed("carrier", "carrier", place(flip="x", z_top=z_top + CARRIER_T_MM + pin_len), "tab:blue"),
+                 Placed("shaft", "shaft", place(), "0.3"),
+                 Placed("crank", "crank", place(dz=shaft_len - CRANK_T_MM), "tab:red")]
     checks = [Check.at_most("mesh.overlap_area", overlap, 1e-6, "mm^2",
                             f"largest overlap of the {len(sweeps)} printed meshes over one carrier turn "
                             f"({len(sweeps[0].psi)} steps)"),
@@ -149,7 +149,7 @@ def kit(p: FinalDriveParams, printer: Printer, scale: float | None = None, sourc
                     ("running clearance", clear, f"planets on ⌀{pin_d:g} pins, shaft in floor and carrier"),
                     ("press fit", press, "sun and crank on the shaft (radial)"),
                     ("hole undersize", under, "added to every hole's diameter"),
-                    ("bed-side chamfer", ch, "every piece's bottom edges")],
+                    ("bed-side chamfer", ch, "45° round the face each piece lies on, made layer by layer as the slicer sees it")],
         steps=["Press the shaft into the sun from below until its end is flush with the sun's bottom face.",
                "Put the shaft through the hole in the ring's floor: the sun sits on the floor.",
                f"Put the {q.n_planets} planets into the ring, each meshing with the sun and the ring "

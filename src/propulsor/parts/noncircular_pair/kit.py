@@ -18,7 +18,7 @@ from ...check import Check
 from ...errors import InputError
 from ...geometry.profile import Profile, circle_loop
 from ...params import load_params, params_to_dict
-from ...printing.kit import Kit, Piece
+from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
 from ...printing.scale import check_printable, choose_scale
 from .design import pair_design
@@ -56,8 +56,7 @@ def _with_holes(profile: Profile, holes) -> Profile:
 
 def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, source=None) -> Kit:
     from ...solids.build import extrude_profile
-    from ...solids.printed import chamfer_bottom
-    from ...solids.kernel import cylinder, moved
+    from ...solids.kernel import cylinder
 
     full = pair_design(p)
     m, w_full = full.d.m, p.face_width_mm
@@ -101,13 +100,13 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
              for a in (math.pi + 2 * math.pi * k / n for k in range(n))]
     dvn_prof = _with_holes(dvn_prof, marks)
     ch = printer.chamfer_mm
-    driver = chamfer_bottom(extrude_profile(drv_prof, w), ch, "driver")
-    driven = chamfer_bottom(extrude_profile(dvn_prof, w), ch, "driven")
+    driver = extrude_profile(drv_prof, w)
+    driven = extrude_profile(dvn_prof, w)
     base_prof = _base_profile(L, R_boss, [d_ - 2 * press + under for d_ in pin])
-    base = chamfer_bottom(extrude_profile(base_prof, BASE_T_MM), ch, "base")
+    base = extrude_profile(base_prof, BASE_T_MM)
     pin_len = BASE_T_MM + w + 1.0
-    pins = [chamfer_bottom(cylinder(d_ / 2, 0.0, pin_len), min(ch, d_ / 8), f"pin_{k}") for k, d_ in enumerate(pin)]
-    handle = chamfer_bottom(cylinder(HANDLE_D_MM / 2, 0.0, w + HANDLE_UP_MM), min(ch, HANDLE_D_MM / 8), "handle")
+    pins = [cylinder(d_ / 2, 0.0, pin_len) for k, d_ in enumerate(pin)]
+    handle = cylinder(HANDLE_D_MM / 2, 0.0, w + HANDLE_UP_MM)
     pieces = [Piece("driver", driver, genus=2, what=f"driver, {d.z} teeth, m = {d.m:.4g} mm"),
               Piece("driven", driven, genus=1 + n, what=f"driven wheel, {d.z_H} teeth, {n} index marks"),
               Piece("base", base, genus=2, what=f"base bar, axles {L:.3f} mm apart"),
@@ -115,10 +114,11 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
               Piece("pin_driven", pins[1], genus=0, what=f"driven axle pin ⌀{pin[1]:g}"),
               Piece("handle", handle, genus=0, what=f"crank handle ⌀{HANDLE_D_MM:g}")]
     z0 = BASE_T_MM
-    assembly = [("base", base, "0.75"), ("pin_driven", pins[1], "0.4"),
-                ("pin_driver", moved(pins[0], dx=L), "0.4"),
-                ("driven", moved(driven, dz=z0), "tab:blue"), ("driver", moved(driver, dx=L, dz=z0), "tab:orange"),
-                ("handle", moved(handle, dx=L + r_h, dz=z0), "tab:red")]
+    assembly = [Placed("base", "base", place(), "0.75"), Placed("pin_driven", "pin_driven", place(), "0.4"),
+                Placed("pin_driver", "pin_driver", place(dx=L), "0.4"),
+                Placed("driven", "driven", place(dz=z0), "tab:blue"),
+                Placed("driver", "driver", place(dx=L, dz=z0), "tab:orange"),
+                Placed("handle", "handle", place(dx=L + r_h, dz=z0), "tab:red")]
     prefix = "mesh" if d.method == "generated" else "sectors"
     checks = [Check.at_most(f"{prefix}.overlap_area", s["overlap_law_max_mm2"], 1e-6, "mm^2",
                             f"printed outlines over {s['steps']} phases of the whole cycle")]
@@ -141,7 +141,7 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
                     ("running clearance", clear, f"bores ⌀{bores[0]:.2f} / ⌀{bores[1]:.2f} on pins ⌀{pin[0]:g} / ⌀{pin[1]:g}"),
                     ("press fit", press, "pins and handle interference (radial)"),
                     ("hole undersize", under, "added to every hole's diameter"),
-                    ("bed-side chamfer", ch, "every piece's bottom edges")],
+                    ("bed-side chamfer", ch, "45° round the face each piece lies on, made layer by layer as the slicer sees it")],
         steps=[f"Press the two pins into the base bar (⌀{pin[1]:g} into the hole at the bar's wide-spaced end, the "
                f"driven axle; ⌀{pin[0]:g} into the other), flat faces down.",
                "Press the handle into the small hole of the driver.",

@@ -11,7 +11,7 @@ from __future__ import annotations
 from ...check import Check
 from ...errors import InputError
 from ...geometry.profile import Profile, circle_loop
-from ...printing.kit import Kit, Piece
+from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
 from ...printing.scale import check_printable, choose_scale
 from .design import design
@@ -27,8 +27,8 @@ AXLE_TOP_MM = 3.0
 
 def kit(p: RoadWheelParams, printer: Printer, scale: float | None = None, source=None) -> Kit:
     from ...solids.build import extrude_profile
-    from ...solids.kernel import cylinder, fuse, moved
-    from ...solids.printed import chamfer_bottom
+    from ...solids.kernel import cylinder, fuse
+    from ...solids.kernel import largest_radius
     from ...solids.printed_wheel import wheel_slabs
 
     m = design(p).model
@@ -55,23 +55,23 @@ def kit(p: RoadWheelParams, printer: Printer, scale: float | None = None, source
     base = fuse(extrude_profile(Profile(circle_loop(R_base), [circle_loop(hole / 2, ccw=False)], "base"), BASE_T_MM),
                 extrude_profile(Profile(circle_loop(collar_r), [circle_loop(hole / 2, ccw=False)], "collar"),
                                 BASE_T_MM + COLLAR_H_MM), name="stand")
-    base = chamfer_bottom(base, ch, "stand")
+    base = base
     z_w = BASE_T_MM + COLLAR_H_MM  # the wheel's hub face rests on the collar
     top = slabs[-1].z1
     axle_len = z_w + top + AXLE_TOP_MM
-    axle = chamfer_bottom(cylinder(axle_d / 2, 0.0, axle_len), min(ch, axle_d / 8), "axle")
-    pieces = [Piece(s.name, chamfer_bottom(s.printed, ch, s.name), genus=s.genus,
+    axle = cylinder(axle_d / 2, 0.0, axle_len)
+    pieces = [Piece(s.name, s.printed, genus=s.genus,
                     what=f"wheel slab z {s.z0:.2f} … {s.z1:.2f} mm, printed on its {s.web_face} face (half web)")
               for s in slabs]
     pieces += [Piece("stand", base, genus=1, what=f"stand: base ⌀{2 * R_base:.1f} with the collar"),
                Piece("axle", axle, genus=0, what=f"axle ⌀{axle_d:g}")]
     colours = ["tab:gray", "0.3", "tab:gray", "0.3"]
-    assembly = [("stand", base, "0.75"), ("axle", axle, "0.4")]
-    assembly += [(s.name, moved(s.solid, dz=z_w), colours[k % 4]) for k, s in enumerate(slabs)]
+    assembly = [Placed("stand", "stand", place(), "0.75"), Placed("axle", "axle", place(), "0.4")]
+    assembly += [Placed(s.name, s.name, s.placement(dz=z_w), colours[k % 4]) for k, s in enumerate(slabs)]
     # the slabs restacked: outer shape of the wheel at 1:S
     tyre_r = m.r_tyre / S
     low_row = min(a for a, _ in m.rows_z) / S
-    r_max = _max_radius(slabs)
+    r_max = max(largest_radius(s.solid) for s in slabs)
     checks = [
         Check.at_least("fit.wheel_on_axle", (bore - under - axle_d) / 2, clear, "mm",
                        f"radial running clearance of the wheel's ⌀{bore:.2f} bore on the ⌀{axle_d:g} axle (the bore "
@@ -95,7 +95,7 @@ def kit(p: RoadWheelParams, printer: Printer, scale: float | None = None, source
         allowances=[("running clearance", clear, f"wheel bore ⌀{bore:.2f} on the ⌀{axle_d:g} axle"),
                     ("press fit", press, "axle in the stand (radial)"),
                     ("hole undersize", under, "added to every hole's diameter"),
-                    ("bed-side chamfer", ch, "every piece's bottom edges")],
+                    ("bed-side chamfer", ch, "45° round the face each piece lies on, made layer by layer as the slicer sees it")],
         steps=[f"Glue the {len(slabs)} wheel slabs together in their order (wheel_1 at the inboard side; each "
                "half web against its mate, the lightening holes in line; a pin through the bore keeps them "
                "concentric while the glue sets).",
@@ -104,19 +104,3 @@ def kit(p: RoadWheelParams, printer: Printer, scale: float | None = None, source
         notes=[f"The wheel is cut at its webs' mid-planes{' and between the rows' if len(m.rows_z) == 2 else ''} "
                "so that every slab prints on a half web without support; rim and tyre print as one ring; the hub "
                "is a plain tube (the bearing seats are in the full-size STEP)."])
-
-
-def _max_radius(slabs) -> float:
-    """Largest radius of the slabs: half the larger width of their exact (optimal) bounding boxes."""
-    from OCP.Bnd import Bnd_Box
-    from OCP.BRepBndLib import BRepBndLib
-
-    from ...solids.kernel import occ_shape
-
-    out = 0.0
-    for s in slabs:
-        box = Bnd_Box()
-        BRepBndLib.AddOptimal_s(occ_shape(s.solid), box, False, False)
-        x0, y0, _, x1, y1, _ = box.Get()
-        out = max(out, 0.5 * (x1 - x0), 0.5 * (y1 - y0))
-    return out
