@@ -24,6 +24,7 @@ _MODULES = {
     "balancer": "balancer",
     "road_wheel": "road_wheel",
     "cam_mover": "cam_mover",
+    "polysector_gear": "polysector",
 }
 
 
