@@ -170,14 +170,16 @@ def prove_position(dd, pos, steps_per_pitch: int | None = None, chord_tol: float
         integ = float(np.trapezoid(1.0 / it, uu))
         return (ph - u) / i_n + integ
 
-    def sector_free(j, ph, th, w0=2e-3):
+    def sector_free(j, ph, th, w0=2e-3, trusted=False):
         """(drive pose, coast pose, pairs at drive, drive contact point) of sector j alone from the free
-        start pose th; None when th overlaps the sector."""
+        start pose th; None when th overlaps the sector (not tested for a ``trusted`` start: one
+        extrapolated from the two steps before, whose error is far below the half backlash; the
+        overlap at the final pose is measured anyway)."""
         drv = sec_out[j]
         M1 = Pose(ph, (0.0, 0.0), (0.0, 0.0)).matrix()
         M2 = Pose(s2 * th, (0.0, 0.0), (a, 0.0)).matrix()
         rel21 = compose_poses(inverse_pose(M1), M2)
-        if (drv.section ^ gear.section.transform(rel21)).area() > policy.OVERLAP_AREA_TOL_MM2:
+        if not trusted and (drv.section ^ gear.section.transform(rel21)).area() > policy.OVERLAP_AREA_TOL_MM2:
             return None
         rel12 = inverse_pose(rel21)
         P1 = apply_pose(rel21, gear.points)
@@ -211,9 +213,10 @@ def prove_position(dd, pos, steps_per_pitch: int | None = None, chord_tol: float
                 start = last_mid[j] + (theta_n[k] - theta_n[k - 1])
             else:
                 start = te_estimate(j, phi[k])
-            if not (j in last_mid and k >= 2 and np.isfinite(drive[j][k - 2])):
+            trusted = j in last_mid and k >= 2 and np.isfinite(drive[j][k - 2])
+            if not trusted:
                 w0 = 2e-3
-            res = sector_free(j, phi[k], start, w0)
+            res = sector_free(j, phi[k], start, w0, trusted)
             if res is None or not (math.isfinite(res[0]) and math.isfinite(res[1])):
                 base = te_estimate(j, phi[k])
                 for off in np.linspace(0.0, w_max, 33)[1:]:

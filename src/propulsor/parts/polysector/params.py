@@ -50,7 +50,7 @@ class PolysectorParams:
     pin_d_mm: float = param(4.0, "mm", "locating pin hole diameter", min=1.0, max=100.0, why="as the bolts")
     web_mm: float = param(2.0, "mm", "least material around every hole and between hole and edge", min=0.5,
                           max=100.0, why="as the bolts")
-    proof_steps_per_pitch: int = param(8, "", "proof steps per conditional pitch over one sector period",
+    proof_steps_per_pitch: int = param(6, "", "proof steps per conditional pitch over one sector period",
                                        min=4, max=200, integer=True, why="200 steps resolve 0.1 µm of flank")
     friction_coefficient: float = param(0.06, "", "friction coefficient f_з in the mesh (eq. 12–14)", min=0.0,
                                         max=0.5, why="dry steel on steel")
