@@ -135,7 +135,9 @@ def test_e0_sector_teeth_lie_on_the_blank_gear(dd):
 
     pos = dd.positions[0]
     assert pos.offset == 0.0
-    blank = outline(external_gear_profile(36, 3.0, 0.0, thinning_n_mm=0.1).profile, 1e-4)
+    # the plain gear with a space on +x (the sector's mid-line; z_c = 10 is even)
+    plain = external_gear_profile(36, 3.0, 0.0, thinning_n_mm=0.1).profile.transformed(-math.pi / 2 + math.pi / 36)
+    blank = outline(plain, 1e-4)
     r_f = 54.0 - 1.25 * 3.0
     n = 0
     for f in (1, 2):
