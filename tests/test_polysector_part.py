@@ -149,30 +149,27 @@ def test_e0_sector_teeth_lie_on_the_blank_gear(dd):
     assert n > 1000
 
 
-def _write(tmp_path, **changes):
-    text = PART.read_text()
-    for k, v in changes.items():
-        lines = [ln for ln in text.splitlines() if not ln.startswith(f"{k} =")]
-        i = lines.index("[meta]")
-        lines.insert(i, f"{k} = {v}")
-        text = "\n".join(lines) + "\n"
+def _part_file_with(tmp_path, changes: dict) -> Path:
+    """The default part file's parameters with ``changes``, written as a new part file (no [meta])."""
+    kind, data = read_part_file(PART)
+    data = {**data, **changes}
+    body = "\n".join(f"{k} = {json.dumps(v)}" for k, v in data.items())
     f = tmp_path / "bad.toml"
-    f.write_text(text)
+    f.write_text(f'type = "{kind}"\n{body}\n')
     return f
 
 
 @pytest.mark.parametrize("changes, param, words", [
     ({"sector_teeth": 12}, "sector_teeth", "too large for the gaps"),       # eq. 2: no empty pitch
-    ({"conditional_teeth": "[36, 60]"}, "conditional_teeth", "largest offset"),  # past eq. 1/3
+    ({"conditional_teeth": [36, 60]}, "conditional_teeth", "largest offset"),  # past eq. 1/3
     ({"sector_teeth": 2}, "sector_teeth", "1.05"),                          # ε_s below 1.05 even at e = 0
-    ({"conditional_teeth": "[36, 40]"}, "conditional_teeth", "multiple"),  # sectors out of tooth phase
+    ({"conditional_teeth": [36, 40]}, "conditional_teeth", "multiple"),  # sectors out of tooth phase
     ({"stem_width_mm": 8.0}, "stem_width_mm", "stem"),
 ])
 def test_bad_input_exit_2_one_line_nothing_written(tmp_path, capsys, changes, param, words):
-    f = _write(tmp_path, **changes)
-    out = tmp_path / "out"
-    rc = main(["build", str(f), "--out", str(out), "-q"])
-    err = capsys.readouterr().err.strip().splitlines()
-    assert rc == 2
-    assert len(err) == 1 and param in err[0] and words in err[0], err
-    assert not out.exists() and not any(p.name.startswith(".out") for p in tmp_path.iterdir())
+    target = tmp_path / "never"
+    code = main(["build", str(_part_file_with(tmp_path, changes)), "--out", str(target), "-q"])
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert code == 2, lines
+    assert len(lines) == 1 and param in lines[0] and words in lines[0], lines
+    assert sorted(q.name for q in tmp_path.iterdir()) == ["bad.toml"]  # nothing written beside it
