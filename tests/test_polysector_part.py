@@ -90,6 +90,18 @@ def test_manifest_positions(built):
     assert pos[3]["ratio_error_max"] > 1e-2  # and off it the ratio is not constant (eq. 5-8)
     eps = [q["epsilon_s"] for q in pos]
     assert all(a > b for a, b in zip(eps, eps[1:]))
+    # ε_s also as the mean number of engaged sectors over the sampled steps (6 per pitch)
+    for q in pos:
+        assert abs(q["epsilon_s_steps"] - q["epsilon_s"]) < 0.1
+
+
+def test_friction_loss_limiting_case_and_trend(built):
+    """e = 0 is a solid pair: the measured mean loss is eq. 12/13 with C = 1 (within the sampling of the
+    path); off it C_внеш grows with the offset (the pole wanders, C2 > 1)."""
+    d = _manifest(built)["derived"]
+    assert abs(d["position1_C_ext"] - 1.0) < 0.03
+    c = [d[f"position{k}_C_ext"] for k in range(1, 5)]
+    assert all(a < b for a, b in zip(c, c[1:])) and c[-1] > 1.1
 
 
 def _section(loops):

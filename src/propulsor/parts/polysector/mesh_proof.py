@@ -49,6 +49,7 @@ class PositionProof:
     u_enter: float
     u_exit: float
     contact_points: np.ndarray  # drive contact point per step (world, mm)
+    contacts: list  # per step: (sector index, world point) of every tooth pair in contact at the actual pose
     drive_theta: dict  # sector index -> its own drive pose per step (NaN where not engaged)
     ratio_nominal: float
     chord_tol: float
@@ -139,9 +140,8 @@ def prove_position(dd, pos, steps_per_pitch: int | None = None, chord_tol: float
             angles.append((ang, f))
     cand = []
     for j, (ang, f) in enumerate(angles):
-        u0, u1 = _wrap(ang), _wrap(ang) + period
-        if u1 > -pos.u_exit - margin and u0 < pos.u_exit + margin or \
-                _wrap(ang) - 2 * math.pi + period > -pos.u_exit - margin:
+        u0 = float(_wrap(ang))  # over the period its mid-line sweeps u0 … u0 + period
+        if u0 + period > -pos.u_exit - margin and u0 < pos.u_exit + margin:
             cand.append(j)
     from ...geometry.polysector_outline import place
 
@@ -282,8 +282,34 @@ def prove_position(dd, pos, steps_per_pitch: int | None = None, chord_tol: float
     # the driving sector's mid-line angle and contact points
     drv_u = np.array([u_of(j, ph) for j, ph in zip(jdrv, phi)])
     cp = np.array([cpt[j][k] for k, j in enumerate(jdrv)])
+    # every tooth pair in contact at the actual pose: gear boundary points within the contact tolerance of
+    # a sector in contact, grouped along the gear's boundary (groups more than `merge` apart are pairs)
+    from ...checks.motion.distance import dist_each_point
+
+    contacts = []
+    for k in range(n):
+        here = []
+        M2 = Pose(s2 * theta[k], (0.0, 0.0), (a, 0.0)).matrix()
+        M1 = Pose(phi[k], (0.0, 0.0), (0.0, 0.0)).matrix()
+        rel21 = compose_poses(inverse_pose(M1), M2)  # gear body -> sector body (wheel frame at φ = 0)
+        for row, j in enumerate(cand):
+            if not (np.isfinite(D[row][k]) and (theta[k] - D[row][k]) * r_ref <= tol):
+                continue
+            P = apply_pose(rel21, gear.points)
+            near = np.nonzero(sec_out[j].boundary_lower_bound(P) <= tol)[0]
+            if len(near) == 0:
+                continue
+            near = near[dist_each_point(P[near], sec_out[j]) <= tol]
+            if len(near) == 0:
+                continue
+            order = np.argsort(gear.arclen[near])
+            idx = near[order]
+            cuts = np.nonzero(np.diff(gear.arclen[idx]) > merge)[0] + 1
+            for grp in np.split(idx, cuts):
+                here.append((j, apply_pose(M2, gear.points[grp]).mean(axis=0)))
+        contacts.append(here)
     return PositionProof(k=pos.k, phi=phi, period=period, theta=theta, theta_nominal=theta_n, driver=jdrv,
                          driver_u=drv_u, pairs=pairs, sectors_engaged=n_eng, overlap_flow=overlap, coast_room=room,
-                         phi1_measured=u_exit - u_enter, u_enter=u_enter, u_exit=u_exit, contact_points=cp,
+                         phi1_measured=u_exit - u_enter, u_enter=u_enter, u_exit=u_exit, contact_points=cp, contacts=contacts,
                          drive_theta={j: drive[j] for j in cand}, ratio_nominal=i_n, chord_tol=chord_tol,
                          r_ref=r_ref, flows=p.flows, i_s=p.sectors_per_flow)

@@ -148,6 +148,8 @@ def proof_results(dd: PolysectorDesign, w, built: dict) -> None:
                           "epsilon_s": eb, "epsilon_s_per_flow": ef, "ratio_error_max": di_max,
                           "contact_pairs_min": int(pr.pairs.min()),
                           "epsilon_s_eq4": q.eps_s, "z_cond": q.z_cond, "share_two_sectors_engaged": two,
+                          "epsilon_s_steps": float(np.mean(n_eng)),
+                          "share_two_pairs_in_contact": float(np.mean(pr.pairs >= 2)),
                           "transmission_error_pp_rad": float(np.ptp(pr.te)),
                           "proof_chord_tol_mm": pr.chord_tol, "proof_steps_per_period": len(pr.phi)})
         phi_t, th_t = full_turn(dd, pr)
@@ -229,13 +231,20 @@ def efficiency_step(dd: PolysectorDesign, w, built: dict) -> None:
     for k, q in enumerate(dd.positions):
         pr = built["proofs"][k]
         it, _ = pr.ratio_measured()
-        C = pr.contact_points
-        ok = np.isfinite(it) & np.all(np.isfinite(C), axis=1)
         a = q.a
         O2 = np.array([a, 0.0])
-        o1p = a / (1.0 + it[ok])
+        # every tooth pair in contact at every step counts once: the contact runs uniformly along each
+        # pair's path, so this is the path average of eq. 12
+        pts, its = [], []
+        for kk, here in enumerate(pr.contacts):
+            if not math.isfinite(it[kk]):
+                continue
+            for _j, pt in here:
+                pts.append(pt)
+                its.append(it[kk])
+        Cw, itc = np.array(pts).reshape(-1, 2), np.array(its)
+        o1p = a / (1.0 + itc)
         P = np.column_stack([o1p, np.zeros_like(o1p)])
-        Cw = C[ok]
         # contact normal: the tangent from C to the gear's base circle that passes nearer the pole
         v = Cw - O2
         dist = np.linalg.norm(v, axis=1)
@@ -249,13 +258,12 @@ def efficiency_step(dd: PolysectorDesign, w, built: dict) -> None:
                 T = O2 + geo.r_b2 * np.array([math.cos(base[i] + sgn * half[i]), math.sin(base[i] + sgn * half[i])])
                 dvec = Cw[i] - T
                 nrm = dvec / max(np.linalg.norm(dvec), 1e-300)
-                # distance of the pole from this line
                 rel = P[i] - T
                 cand.append((abs(rel[0] * nrm[1] - rel[1] * nrm[0]), T, nrm))
             _, T, nrm = min(cand, key=lambda c: c[0])
             best_h[i] = abs(-T[0] * nrm[1] + T[1] * nrm[0])  # distance of O1 from the line
             best_l[i] = np.linalg.norm(Cw[i] - P[i])
-        psi = loss_instant(f, best_l, it[ok], best_h)
+        psi = loss_instant(f, best_l, itc, best_h)
         ea = epsilon_alpha_pair(q.z_cond, p.gear_teeth, p.module_mm, geo.alpha)
         plain = loss_eq13(f, ea, q.z_cond, p.gear_teeth)
         r1, r2 = geo.r + q.offset, geo.r2
