@@ -6,8 +6,8 @@ numpy/scipy only.  The sector's teeth are the blank's generated teeth (ISO 53 ra
 flank B-splines, z_c of them patterned by exact rotation about the blank's centre O'.
 
 Sector (its own frame: O' at the origin, mid-line on +y; the teeth centred on the mid-line):
-teeth from mid-space to mid-space (z_c teeth span z_c pitches of the blank), cut faces radial to
-the rim radius r_rim, a rim, and a stem of width w_stem along the mid-line down to y_end.  The
+z_c teeth, cut faces radial from the end of the extreme teeth's root fillets down to the rim radius
+r_rim, a rim, and a stem of width w_stem along the mid-line down to y_end.  The
 stem carries a radial slot (the clamping bolt, fixed in the hub, slides in it: the sector is
 adjustable) and a locating pin hole beside the slot; the hub has one pin hole per position.
 """
@@ -71,19 +71,19 @@ def sector_profile(gear: GearOutline, z_c: int, lay: SectorLayout) -> Profile:
     segs = []
     c = [(j - (z_c - 1) / 2.0) * p for j in range(z_c)]
     r_f, r_a = side.r_f, side.r_a
-    a_start = h + c[0] - p / 2.0
-    a_end = h + c[-1] + p / 2.0
+    # the cut faces run radially from the fillets' ends on the root circle (no sliver of root arc)
+    a_start = h + c[0] - pr
+    a_end = h + c[-1] + pr
     require(lay.r_rim < r_f - 1e-6, "r_rim", lay.r_rim, f"must be below the root radius {r_f:.4f} mm")
     # cut face up from the rim at the right end, then the teeth
     segs.append(Line((lay.r_rim * math.cos(a_start), lay.r_rim * math.sin(a_start)),
                      (r_f * math.cos(a_start), r_f * math.sin(a_start))))
-    segs.append(Arc((0.0, 0.0), r_f, a_start, h + c[0] - pr))
     for j, cj in enumerate(c):
         segs += [s.transformed(cj) for s in (fil, fla)]
         segs.append(Arc((0.0, 0.0), r_a, h + cj - pt, h + cj + pt))
         segs += [s.transformed(cj) for s in (fla_l, fil_l)]
-        nxt = h + cj + p - pr if j < z_c - 1 else a_end
-        segs.append(Arc((0.0, 0.0), r_f, h + cj + pr, nxt))
+        if j < z_c - 1:
+            segs.append(Arc((0.0, 0.0), r_f, h + cj + pr, h + cj + p - pr))
     segs.append(Line((r_f * math.cos(a_end), r_f * math.sin(a_end)),
                      (lay.r_rim * math.cos(a_end), lay.r_rim * math.sin(a_end))))
     # rim inner arc (clockwise) to the stem, the stem, the rim arc on to the start
@@ -131,8 +131,9 @@ def blank_outline(z: int, m: float, thinning: float) -> GearOutline:
     return external_gear_profile(z, m, 0.0, thinning_n_mm=thinning)
 
 
-def mating_gear(z2: int, m: float, thinning: float, bore_d: float, phase: float) -> tuple[GearOutline, Profile]:
-    """The solid gear (rack-generated, bore with keyway) and its profile turned by ``phase``
-    (tooth 0 of the generator is on +y)."""
-    g = external_gear_profile(z2, m, 0.0, thinning_n_mm=thinning, bore_d=bore_d, keyway=True)
+def mating_gear(z2: int, m: float, thinning: float, bore_d: float, phase: float,
+                keyway: bool = True) -> tuple[GearOutline, Profile]:
+    """The solid gear (rack-generated, bore with a DIN 6885-1 keyway unless ``keyway`` is False) and its
+    profile turned by ``phase`` (tooth 0 of the generator is on +y)."""
+    g = external_gear_profile(z2, m, 0.0, thinning_n_mm=thinning, bore_d=bore_d, keyway=True if keyway else None)
     return g, g.profile.transformed(phase)

@@ -81,6 +81,7 @@ def check_size(part_type: PartType, params, part_file: Path | None = None) -> Si
 _KITS = {
     "noncircular_pair": "noncircular_pair.kit",
     "planetary_final_drive": "final_drive.kit",
+    "polysector_gear": "polysector.kit",
 }
 
 

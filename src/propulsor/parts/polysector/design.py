@@ -178,12 +178,13 @@ def design(p: PolysectorParams) -> PolysectorDesign:
     offsets = [q.offset for q in positions]
     i_s = p.sectors_per_flow
     hubs = tuple(hub_profile(lay, [(0.0 if f == 1 else math.pi / i_s) + 2 * math.pi * j / i_s for j in range(i_s)],
-                             offsets) for f in range(1, p.flows + 1))
+                             offsets, p.keyways) for f in range(1, p.flows + 1))
     # phase zero: flow 1's first sector on +x.  z_c even: a space of the sector on the mid-line, so a
     # tooth of the gear faces −x; z_c odd: a space of the gear faces −x
     phase = math.pi / 2.0 + (0.0 if p.sector_teeth % 2 == 0 else math.pi / p.gear_teeth)
     with input_names({"bore_d": "gear_bore_mm"}):
-        gear, gear_prof = mating_gear(p.gear_teeth, p.module_mm, p.tooth_thinning_mm, p.gear_bore_mm, phase)
+        gear, gear_prof = mating_gear(p.gear_teeth, p.module_mm, p.tooth_thinning_mm, p.gear_bore_mm, phase,
+                                      p.keyways)
     d = PolysectorDesign(p, geo, positions, e_max, lay, blank, sector, hubs, gear, gear_prof, phase)
     _one_flow_collisions(d)
     return d

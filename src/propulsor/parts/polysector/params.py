@@ -44,6 +44,7 @@ class PolysectorParams:
                                why="a rim of 10 modules is a full web")
     stem_width_mm: float = param(22.0, "mm", "width of a sector's stem", min=1.0, max=2000.0, why=_WHY_MM)
     shaft_d_mm: float = param(18.0, "mm", "wheel shaft (hub bore) diameter", min=3.0, max=2000.0, why=_WHY_MM)
+    keyways: bool = param(True, "", "DIN 6885-1 keyways in the hub bore and the gear bore")
     gear_bore_mm: float = param(20.0, "mm", "bore of the solid gear", min=3.0, max=2000.0, why=_WHY_MM)
     bolt_d_mm: float = param(5.5, "mm", "clamping bolt hole / slot width (M5: 5.5)", min=1.0, max=100.0,
                              why="M100 is past any sector clamp")
