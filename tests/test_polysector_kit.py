@@ -41,6 +41,7 @@ def test_polysector_kit_proves_its_printed_mesh_and_fits(kit_folder):
 
 
 @pytest.mark.slicer
+@pytest.mark.sweep  # slicing the three plates takes ~80 s: make check, not make test
 @pytest.mark.skipif(shutil.which("prusa-slicer") is None, reason="PrusaSlicer is not installed")
 def test_polysector_kit_plates_slice(kit_folder, tmp_path):
     from propulsor.printing.printers import load_printer
