@@ -104,6 +104,19 @@ def test_friction_loss_limiting_case_and_trend(built):
     assert all(a < b for a, b in zip(c, c[1:])) and c[-1] > 1.1
 
 
+def test_measured_ratio_follows_eq7_in_flank_contact(built):
+    """Eq. 5-8 measured on the outlines: wherever the driving sector is in flank contact (away from the
+    hand-over), the measured Δi is eq. 7/8's Δi of the pole of the base circles' common tangent."""
+    for k in (2, 3, 4):
+        rows = _table(built / f"tables/transmission_{k}.csv")
+        di = np.array([float(r["delta_i"]) for r in rows])
+        eq = np.array([float(r["delta_i_eq8_flank"]) for r in rows])
+        ok = np.isfinite(di)
+        close = np.abs(di[ok] - eq[ok]) < 2e-3
+        assert close.mean() > 0.7, (k, close.mean())
+        assert np.max(np.abs(eq[ok][close])) > 0.005  # and where they agree, Δi is far from 0
+
+
 def _section(loops):
     return m3d.CrossSection([np.ascontiguousarray(p) for p in loops], m3d.FillRule.EvenOdd)
 

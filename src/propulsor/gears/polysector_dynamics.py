@@ -114,8 +114,7 @@ class TorsionalModel:
         return np.sqrt(np.sort(eigh(K, M, eigvals_only=True)))
 
     def damping(self) -> tuple[float, float]:
-        M, _ = self.mass_stiffness()
-        # each link against the inertia it carries
+        """(b1, b2): each link damped at ratio ζ against the inertia it carries."""
         b1 = 2.0 * self.zeta * math.sqrt(self.c1 * (self.J3 * self.J45 / (self.J3 + self.J45) + self.J45))
         b2 = 2.0 * self.zeta * math.sqrt(self.c2 * self.J45)
         return b1, b2

@@ -17,8 +17,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import numpy as np
-
 from ..errors import require
 from .gear_outline import GearOutline, bore_loop, external_gear_profile
 from .profile import Arc, Line, Loop, Profile, circle_loop

@@ -144,8 +144,6 @@ def layout(p: PolysectorParams, geo, positions) -> object:
 def _one_flow_collisions(d: "PolysectorDesign") -> None:
     """Sectors of one flow must not touch each other (at every position; the least offset is the
     closest), nor the shaft: InputError with the overlap found (outline polygons)."""
-    from ...geometry.polysector_outline import place  # noqa: F401  (placed_sectors uses it)
-
     for pos in d.positions:
         secs = d.placed_sectors(pos, 1)
         polys = [s.outer.polyline(0.01) for s in secs]

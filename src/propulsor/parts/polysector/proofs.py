@@ -153,7 +153,6 @@ def proof_results(dd: PolysectorDesign, w, built: dict) -> None:
                           "transmission_error_pp_rad": float(np.ptp(pr.te)),
                           "proof_chord_tol_mm": pr.chord_tol, "proof_steps_per_period": len(pr.phi)})
         phi_t, th_t = full_turn(dd, pr)
-        reps = len(phi_t) // len(pr.phi)
         w.add_table(f"transmission_{q.k}",
                     ["phi_rad", "theta_rad", "gear_rotation_ccw_rad", "theta_nominal_rad", "te_rad", "i_t",
                      "delta_i", "delta_i_eq8_flank", "driving_sector", "pairs_in_contact", "sectors_engaged"],
