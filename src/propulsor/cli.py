@@ -228,7 +228,7 @@ def cmd_print(args) -> int:
         from .printing.kit import write_kit
 
         progress(f"{part_type.name}: print kit for the {printer.name} printer")
-        kit = make_kit(params, printer, S)
+        kit = make_kit(params, printer, S, source=part_file)
         writer = OutputWriter(tmp, part_type.name, params, progress=progress, source=part_file)
         writer.report_name = "print_report.md"
         writer.title = f"Print kit: {writer.title}"

@@ -47,6 +47,9 @@ class Line:
         R, o = _rot(angle), np.asarray(offset, float)
         return Line(tuple(R @ self.start + o), tuple(R @ self.end + o))
 
+    def scaled(self, k: float) -> "Line":
+        return Line(tuple(k * self.start), tuple(k * self.end))
+
 
 @dataclass(frozen=True)
 class Arc:
@@ -90,6 +93,9 @@ class Arc:
     def transformed(self, angle: float = 0.0, offset=(0.0, 0.0)) -> "Arc":
         c = _rot(angle) @ np.asarray(self.center, float) + np.asarray(offset, float)
         return Arc(tuple(c), self.radius, self.a0 + angle, self.a1 + angle)
+
+    def scaled(self, k: float) -> "Arc":
+        return Arc(tuple(k * np.asarray(self.center, float)), k * self.radius, self.a0, self.a1)
 
 
 @dataclass(frozen=True, eq=False)
@@ -142,6 +148,10 @@ class Spline:
         P = self.poles @ _rot(angle).T + np.asarray(offset, float)
         return Spline(self.knots.copy(), P, self.degree)
 
+    def scaled(self, k: float) -> "Spline":
+        """The curve scaled by k about the origin (a B-spline scales with its poles)."""
+        return Spline(self.knots.copy(), k * self.poles, self.degree)
+
 
 Segment = Line | Arc | Spline
 
@@ -181,6 +191,9 @@ class Loop:
     def transformed(self, angle: float = 0.0, offset=(0.0, 0.0)) -> "Loop":
         return Loop([s.transformed(angle, offset) for s in self.segments])
 
+    def scaled(self, k: float) -> "Loop":
+        return Loop([s.scaled(k) for s in self.segments])
+
     def oriented(self, ccw: bool = True) -> "Loop":
         return self if (self.signed_area() > 0) == ccw else self.reversed()
 
@@ -206,6 +219,10 @@ class Profile:
 
     def transformed(self, angle: float = 0.0, offset=(0.0, 0.0)) -> "Profile":
         return Profile(self.outer.transformed(angle, offset), [h.transformed(angle, offset) for h in self.holes], self.name)
+
+    def scaled(self, k: float) -> "Profile":
+        """The region scaled by k > 0 about the origin (a print kit's 1:S is k = 1/S)."""
+        return Profile(self.outer.scaled(k), [h.scaled(k) for h in self.holes], self.name)
 
     def polylines(self, chord_tol: float = CHORD_TOL_MM) -> list:
         return [l.polyline(chord_tol) for l in self.loops]

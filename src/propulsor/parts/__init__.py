@@ -77,10 +77,14 @@ def check_size(part_type: PartType, params, part_file: Path | None = None) -> Si
     return est
 
 
-#: part type name -> module of its print kit (relative to this package), ``kit(params, printer, S)``
+#: part type name -> module of its print kit (relative to this package),
+#: ``kit(params, printer, S, source=part_file)`` (the part file: files it names are read relative to it)
 _KITS = {
     "noncircular_pair": "noncircular_pair.kit",
     "planetary_final_drive": "final_drive.kit",
+    "cam_mover": "cam_mover.kit",
+    "road_wheel": "road_wheel.kit",
+    "balancer": "balancer.kit",
     "polysector_gear": "polysector.kit",
 }
 

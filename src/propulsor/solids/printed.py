@@ -22,11 +22,13 @@ from .kernel import occ_shape
 __all__ = ["chamfer_bottom", "flipped"]
 
 
-def flipped(solid, z_top: float):
-    """The solid turned over about the x axis, its former top z_top now at z = 0 (z -> z_top - z)."""
+def flipped(solid, z_top: float, axis: str = "x"):
+    """The solid turned over about the x (or y) axis, its former top z_top now at z = 0 (z -> z_top - z;
+    y -> -y about x, x -> -x about y)."""
     import cadquery as cq
 
-    return solid.rotate(cq.Vector(0, 0, 0), cq.Vector(1, 0, 0), 180).translate(cq.Vector(0, 0, z_top))
+    turn = {"x": cq.Vector(1, 0, 0), "y": cq.Vector(0, 1, 0)}[axis]
+    return solid.rotate(cq.Vector(0, 0, 0), turn, 180).translate(cq.Vector(0, 0, z_top))
 
 
 def _bottom_face(shape):

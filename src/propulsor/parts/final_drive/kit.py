@@ -50,7 +50,7 @@ def _stadium(length: float, r: float) -> Loop:
                  Line((length, r), (0.0, r)), Arc((0.0, 0.0), r, math.pi / 2, 3 * math.pi / 2)])
 
 
-def kit(p: FinalDriveParams, printer: Printer, scale: float | None = None) -> Kit:
+def kit(p: FinalDriveParams, printer: Printer, scale: float | None = None, source=None) -> Kit:
     from ...gears.planetary_kinematics import PlanetaryKinematics
     from ...solids.build import extrude_profile
     from ...solids.kernel import cylinder, fuse, moved

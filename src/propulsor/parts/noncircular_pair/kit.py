@@ -54,7 +54,7 @@ def _with_holes(profile: Profile, holes) -> Profile:
     return Profile(profile.outer, list(profile.holes) + list(holes), profile.name)
 
 
-def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None) -> Kit:
+def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, source=None) -> Kit:
     from ...solids.build import extrude_profile
     from ...solids.printed import chamfer_bottom
     from ...solids.kernel import cylinder, moved

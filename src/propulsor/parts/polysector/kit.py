@@ -60,7 +60,7 @@ def _extent(profile: Profile) -> tuple[float, float]:
     return tuple(float(v) for v in (pts.max(axis=0) - pts.min(axis=0)))
 
 
-def kit(p: PolysectorParams, printer: Printer, scale: float | None = None) -> Kit:
+def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, source=None) -> Kit:
     from ...geometry.polysector_outline import hub_profile
     from ...solids.build import extrude_profile
     from ...solids.kernel import cylinder, moved
