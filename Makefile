@@ -7,7 +7,7 @@ PART_FILES := $(sort $(wildcard parts/*.toml))
 PART_NAMES := $(patsubst parts/%.toml,%,$(PART_FILES))
 PYTEST_WORKERS ?= 2
 # part types that have a print kit (tests/test_print_kits.py checks this against parts._KITS)
-KIT_TYPES  := noncircular_pair planetary_final_drive cam_mover road_wheel balancer
+KIT_TYPES  := noncircular_pair planetary_final_drive cam_mover road_wheel balancer polysector_gear
 KIT_FILES  := $(sort $(foreach t,$(KIT_TYPES),$(shell grep -l '^type *= *"$(t)"' $(PART_FILES))))
 KIT_NAMES  := $(patsubst parts/%.toml,print-%,$(KIT_FILES))
 PRINTER    ?= generic

@@ -162,3 +162,14 @@ MESH_CHORD_LIMIT_MM = 0.01
 # --- build size (propulsor build --dry-run, parts.check_size) --------------------------------
 #: longest build accepted (s on the reference machine, 2 cores): past it the size estimate refuses
 BUILD_SECONDS_MAX = 600.0
+
+# --- composite (polysector) gear, seed 003 -------------------------------------------------------
+#: chord tolerance of the outlines in the proof of a position whose sectors are not conjugate to the
+#: gear (e > 0): the measured ratio error is ≥ 1e-3 there, the polylines resolve it to ~1e-5
+POLYSECTOR_PROOF_CHORD_TOL_MM = 1e-4
+#: the same where eq. 7 predicts no ratio error (e = 0): fine enough to resolve Δi below 1e-6
+POLYSECTOR_PROOF_CHORD_TOL_CONJUGATE_MM = 3e-5
+#: eq. 7's largest |Δi| below which a position counts as conjugate (the finer chord is used)
+POLYSECTOR_CONJUGATE_DI = 1e-4
+#: ε_s measured on the outlines must match eq. 4 within this (issue 11)
+POLYSECTOR_EPS_S_MATCH = 0.02

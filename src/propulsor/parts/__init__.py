@@ -24,6 +24,7 @@ _MODULES = {
     "balancer": "balancer",
     "road_wheel": "road_wheel",
     "cam_mover": "cam_mover",
+    "polysector_gear": "polysector",
 }
 
 
@@ -84,6 +85,7 @@ _KITS = {
     "cam_mover": "cam_mover.kit",
     "road_wheel": "road_wheel.kit",
     "balancer": "balancer.kit",
+    "polysector_gear": "polysector.kit",
 }
 
 

@@ -1,0 +1,195 @@
+"""Print kit of the composite (polysector) gear: the six sectors, one hub disc carrying both flows, the
+solid gear, a base bar with the two axles at the centre distance of the largest-offset position,
+press-fit pins, a crank handle.
+
+The gear set is designed anew at the print module (tooth counts, positions and the layout's shape
+stay; module, face width, hub, stems and holes shrink by S), every tooth thinned by E_sn so that the
+mesh has the printer's normal backlash with a margin (raised once by the shortfall when the proof
+measures less), no keyways; the bores run on printed axle pins with the running clearance.  In print
+the two flow discs become one disc between the two layers of sectors (flow 1 hangs below it, flow 2
+sits on it), so the flows cannot turn against each other; its pin holes serve both flows and every
+position.  The proof is the part's own proof of that position (:mod:`.mesh_proof`) on the printed
+outlines: overlap 0 in each flow's plane, contact never lost, and the least normal backlash.
+
+Stack (z up, the base on the desk): base 0 … t_b; flow-1 sectors from t_b + gap, the hub disc on
+them, flow-2 sectors on the disc; the gear beside them on its own axle from t_b + gap, as wide as
+the stack; the crank handle pressed into the disc between a flow-1 and a flow-2 stem.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+
+from ...check import Check
+from ...errors import InputError
+from ...geometry.profile import Arc, Line, Loop, Profile, circle_loop
+from ...params import load_params, params_to_dict
+from ...printing.kit import Kit, Piece
+from ...printing.printers import Printer
+from ...printing.scale import check_printable, choose_scale
+from .params import PolysectorParams
+
+__all__ = ["kit"]
+
+#: base bar thickness, wall round each axle pin, gap base–wheels, handle diameter and its height above the stack
+BASE_T_MM, BOSS_WALL_MM, GAP_MM, HANDLE_D_MM, HANDLE_UP_MM = 6.0, 6.0, 0.5, 6.0, 15.0
+#: printed axle pin diameter range (mm)
+PIN_D_MIN_MM, PIN_D_MAX_MM = 5.0, 12.0
+#: least normal backlash measured / designed j_n; the design starts from the target over this
+JN_MEASURED_RATIO = 0.95
+
+
+def _kit_params(p: PolysectorParams, S: float, thinning: float, wheel_bore: float, gear_bore: float):
+    q = dataclasses.replace(
+        p, module_mm=p.module_mm / S, face_width_mm=p.face_width_mm / S, hub_thickness_mm=p.hub_thickness_mm / S,
+        stem_width_mm=p.stem_width_mm / S, shaft_d_mm=wheel_bore, gear_bore_mm=gear_bore, bolt_d_mm=p.bolt_d_mm / S,
+        pin_d_mm=p.pin_d_mm / S, web_mm=p.web_mm / S, tooth_thinning_mm=thinning, keyways=False)
+    return load_params(PolysectorParams, params_to_dict(q))
+
+
+def _stadium(L: float, R: float) -> Loop:
+    return Loop([Line((0.0, -R), (L, -R)), Arc((L, 0.0), R, -math.pi / 2, math.pi / 2),
+                 Line((L, R), (0.0, R)), Arc((0.0, 0.0), R, math.pi / 2, 3 * math.pi / 2)])
+
+
+def _extent(profile: Profile) -> tuple[float, float]:
+    pts = profile.outer.polyline(0.05)
+    return tuple(float(v) for v in (pts.max(axis=0) - pts.min(axis=0)))
+
+
+def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, source=None) -> Kit:
+    from ...geometry.polysector_outline import hub_profile
+    from ...solids.build import extrude_profile
+    from ...solids.kernel import cylinder, moved
+    from ...solids.printed import chamfer_bottom
+    from ..pipeline import design_of
+    from .design import design
+    from .mesh_proof import prove_position
+    from .proofs import chord_for
+
+    full = design_of(p, design)
+    pos_full = full.positions[-1]
+    b, t = p.face_width_mm, p.hub_thickness_mm
+    stack = 2 * b + t
+    pin_full = [min(PIN_D_MAX_MM, max(PIN_D_MIN_MM, d)) for d in (p.shaft_d_mm, p.gear_bore_mm)]
+    R_boss = max(pin_full) / 2 + BOSS_WALL_MM
+    extents = {"gear": (2 * full.geo.r_a2, 2 * full.geo.r_a2, stack),
+               "hub_disc": (2 * full.layout.R_hub, 2 * full.layout.R_hub, t),
+               "sector": (*_extent(full.sector), b),
+               "base": (pos_full.a + 2 * R_boss, 2 * R_boss, BASE_T_MM)}
+    choice = choose_scale(extents, (printer.bed_x_mm, printer.bed_y_mm, printer.bed_z_mm), scale)
+    S = choice.S
+    check_printable(S, p.module_mm, printer.min_module_mm, choice=choice)
+    clear, under, press = printer.running_clearance_mm, printer.hole_undersize_mm, printer.press_fit_mm
+    pin = [min(PIN_D_MAX_MM, max(PIN_D_MIN_MM, d / S)) for d in (p.shaft_d_mm, p.gear_bore_mm)]
+    bores = [d + 2 * clear + under for d in pin]
+    alpha = math.radians(p.pressure_angle_deg)
+    j_n = printer.backlash_mm / JN_MEASURED_RATIO
+    for attempt in range(2):
+        q = _kit_params(p, S, j_n / (2 * math.cos(alpha)), bores[0], bores[1])
+        kd = design_of(q, design)
+        pos = kd.positions[-1]
+        proof = prove_position(kd, pos, None, chord_for(kd, pos))
+        jn_min = float(np.nanmin(proof.coast_room)) * kd.geo.r_b2
+        if jn_min >= printer.backlash_mm or attempt == 1:
+            break
+        j_n += 1.1 * (printer.backlash_mm - jn_min)
+    b, t = q.face_width_mm, q.hub_thickness_mm
+    lay, i_s = kd.layout, q.sectors_per_flow
+    angles = kd.sector_angles(1) + (kd.sector_angles(2) if q.flows == 2 else [])
+    disc = hub_profile(lay, angles, [x.offset for x in kd.positions], keyway=False)
+    # the crank handle's hole: between flow 1's first stem and flow 2's first, clear of every flow-2 sector
+    r_h = 0.5 * (bores[0] / 2 + lay.R_hub)
+    a_h = 0.5 * math.pi / i_s
+    c_h = (r_h * math.cos(a_h), r_h * math.sin(a_h))
+    handle_hole = HANDLE_D_MM - 2 * press + under
+    room = min(float(np.min(np.hypot(*(s.outer.polyline(0.05) - np.array(c_h)).T)))
+               for f in (1, 2)[:q.flows] for s in kd.placed_sectors(pos, f))
+    room = min(room, lay.R_hub - r_h, r_h - bores[0] / 2)
+    for hole in disc.holes[1:]:
+        hp = hole.polyline(0.05)
+        room = min(room, float(np.min(np.hypot(*(hp - np.array(c_h)).T))))
+    if room - HANDLE_D_MM / 2 < printer.min_feature_mm:
+        raise InputError("--scale", choice.label, f"the hub disc has no room for the {HANDLE_D_MM:g} mm crank handle "
+                         f"({room:.2f} mm from its centre to the nearest edge); print larger")
+    disc = Profile(disc.outer, list(disc.holes) + [circle_loop(handle_hole / 2, c_h, ccw=False)], "hub disc")
+    ch = printer.chamfer_mm
+    sector = chamfer_bottom(extrude_profile(kd.sector, b), ch, "sector")
+    hub = chamfer_bottom(extrude_profile(disc, t), ch, "hub_disc")
+    gear = chamfer_bottom(extrude_profile(kd.gear_profile, 2 * b + t), ch, "gear")
+    L = pos.a
+    R_boss = max(pin) / 2 + BOSS_WALL_MM
+    if L + 2 * R_boss > max(printer.bed_x_mm, printer.bed_y_mm) - 2 * printer.piece_gap_mm:
+        raise InputError("--scale", choice.label, f"the base bar ({L + 2 * R_boss:.1f} mm) does not fit the bed")
+    base_prof = Profile(_stadium(L, R_boss), [circle_loop((pin[0] - 2 * press + under) / 2, (0.0, 0.0), ccw=False),
+                                             circle_loop((pin[1] - 2 * press + under) / 2, (L, 0.0), ccw=False)], "base")
+    base = chamfer_bottom(extrude_profile(base_prof, BASE_T_MM), ch, "base")
+    axle_len = BASE_T_MM + GAP_MM + 2 * b + t + 1.0
+    axles = [chamfer_bottom(cylinder(d / 2, 0.0, axle_len), min(ch, d / 8), f"axle_{k}") for k, d in enumerate(pin)]
+    # sector pins: each presses through the sector into the disc (the holes print `under` small)
+    d_loc = lay.d_pin - under + 2 * press
+    d_clamp = lay.d_bolt - under + 2 * press
+    pin_len = b + t - GAP_MM
+    loc_pin = chamfer_bottom(cylinder(d_loc / 2, 0.0, pin_len), min(ch, d_loc / 8), "locating_pin")
+    clamp_pin = chamfer_bottom(cylinder(d_clamp / 2, 0.0, pin_len), min(ch, d_clamp / 8), "clamp_pin")
+    handle = chamfer_bottom(cylinder(HANDLE_D_MM / 2, 0.0, t + b + HANDLE_UP_MM), min(ch, HANDLE_D_MM / 8), "handle")
+    n_sec = q.flows * i_s
+    n_pos = len(kd.positions)
+    pieces = [Piece("gear", gear, genus=1, what=f"solid gear, {q.gear_teeth} teeth, m = {q.module_mm:.4g} mm"),
+              Piece("hub_disc", hub, genus=1 + n_sec * (1 + n_pos) + 1,
+                    what=f"hub disc of both flows, a pin hole per sector and position ({n_pos} positions)"),
+              Piece("sector", sector, count=n_sec, genus=2, what=f"sector of {q.sector_teeth} teeth"),
+              Piece("base", base, genus=2, what=f"base bar, axles {L:.3f} mm apart (position {pos.k})"),
+              Piece("axle_wheel", axles[0], genus=0, what=f"wheel axle pin ⌀{pin[0]:g}"),
+              Piece("axle_gear", axles[1], genus=0, what=f"gear axle pin ⌀{pin[1]:g}"),
+              Piece("locating_pin", loc_pin, count=n_sec, genus=0, what=f"sector locating pin ⌀{d_loc:.2f}"),
+              Piece("clamp_pin", clamp_pin, count=n_sec, genus=0, what=f"sector clamping pin ⌀{d_clamp:.2f}"),
+              Piece("handle", handle, genus=0, what=f"crank handle ⌀{HANDLE_D_MM:g}")]
+    z0 = BASE_T_MM + GAP_MM
+    assembly = [("base", base, "0.75"), ("axle_wheel", axles[0], "0.4"), ("axle_gear", moved(axles[1], dx=L), "0.4"),
+                ("hub_disc", moved(hub, dz=z0 + b), "0.6"),
+                ("gear", moved(gear, dx=L, dz=z0), "tab:blue"),
+                ("handle", moved(handle, dx=c_h[0], dy=c_h[1], dz=z0 + b), "tab:red")]
+    for f in range(1, q.flows + 1):
+        for j, ang in enumerate(kd.sector_angles(f)):
+            placed = moved(sector, dx=pos.offset * math.cos(ang), dy=pos.offset * math.sin(ang),
+                           dz=z0 + (0.0 if f == 1 else b + t), rot_z=ang - math.pi / 2)
+            assembly.append((f"sector_{f}_{j + 1}", placed, "tab:orange" if f == 1 else "tab:green"))
+    tol = 1e-6
+    checks = [Check.at_most("mesh.overlap_area", float(proof.overlap_flow.max()), tol, "mm^2",
+                            f"printed outlines, position {pos.k}, {len(proof.phi)} steps of a sector period, both flows"),
+              Check.at_least("mesh.contact_continuity", int(proof.pairs.min()), 1, "pairs",
+                             "tooth pairs in contact, both flows together"),
+              Check.at_least("mesh.print_backlash_min", jn_min, printer.backlash_mm, "mm",
+                             f"least normal backlash of the printed teeth (free turn of the gear × r_b2); designed "
+                             f"j_n = {j_n:.4f} mm")]
+    for k, role in enumerate(("wheel", "gear")):
+        checks.append(Check.at_least(f"fit.{role}_on_axle", (bores[k] - under - pin[k]) / 2, clear, "mm",
+                                     f"radial running clearance on the ⌀{pin[k]:g} axle pin"))
+    checks.append(Check.at_least("fit.sector_pins", min(d_loc - (lay.d_pin - under), d_clamp - (lay.d_bolt - under)),
+                                 2 * press - 1e-12, "mm", "the sector pins press into their printed holes"))
+    return Kit(
+        part="polysector_gear", printer=printer, scale=choice, pieces=pieces, assembly=assembly, checks=checks,
+        derived={"print_module_mm": q.module_mm, "print_center_distance_mm": L, "print_position": pos.k,
+                 "print_offset_mm": pos.offset, "print_face_width_mm": b, "print_backlash_n_design_mm": j_n,
+                 "print_backlash_n_min_mm": jn_min, "axle_wheel_d_mm": pin[0], "axle_gear_d_mm": pin[1]},
+        allowances=[("gear backlash (normal)", j_n, "every tooth thinned by j_n / (2 cos α), axes at the design a"),
+                    ("running clearance", clear, f"bores ⌀{bores[0]:.2f} / ⌀{bores[1]:.2f} on pins ⌀{pin[0]:g} / "
+                                                 f"⌀{pin[1]:g}"),
+                    ("press fit", press, "axle pins in the base, sector pins, handle (radial)"),
+                    ("hole undersize", under, "added to every running hole's diameter"),
+                    ("bed-side chamfer", ch, "every piece's bottom edges")],
+        steps=[f"Press the axle pins into the base bar: ⌀{pin[0]:g} (wheel) at the bar's first end, ⌀{pin[1]:g} "
+               f"(gear) at the other, flat faces down.",
+               f"Set the sectors at position {pos.k} (offset {pos.offset:.3f} mm): lay a sector on the disc with its "
+               f"stem along a row of pin holes, the locating pin through its pin hole into hole {pos.k} of the row "
+               f"(counted from the centre), the clamping pin through its slot into the disc's bolt hole. Three "
+               f"sectors on the underside (flow 1, the rows with the bolt hole on the first side), three on top "
+               f"(flow 2), turned half a sector pitch.",
+               "Press the handle into the disc's single hole on the top side.",
+               "Put the wheel on its axle (flow 1 down) and the gear on the other; the teeth mesh with both layers.",
+               f"Turn the handle: one turn of the wheel turns the gear {1 / pos.ratio_nominal:.4f} times; to change "
+               f"the ratio move the sectors to another row hole (and the gear axle to that position's distance)."])
