@@ -27,7 +27,7 @@ from ...check import Check
 from ...errors import InputError
 from ...geometry.profile import Arc, Line, Loop, Profile, circle_loop
 from ...params import load_params, params_to_dict
-from ...printing.kit import Kit, Piece
+from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
 from ...printing.scale import check_printable, choose_scale
 from .params import PolysectorParams
@@ -63,8 +63,7 @@ def _extent(profile: Profile) -> tuple[float, float]:
 def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, source=None) -> Kit:
     from ...geometry.polysector_outline import hub_profile
     from ...solids.build import extrude_profile
-    from ...solids.kernel import cylinder, moved
-    from ...solids.printed import chamfer_bottom
+    from ...solids.kernel import cylinder
     from ..pipeline import design_of
     from .design import design
     from .mesh_proof import prove_position
@@ -117,25 +116,25 @@ def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, sourc
                          f"({room:.2f} mm from its centre to the nearest edge); print larger")
     disc = Profile(disc.outer, list(disc.holes) + [circle_loop(handle_hole / 2, c_h, ccw=False)], "hub disc")
     ch = printer.chamfer_mm
-    sector = chamfer_bottom(extrude_profile(kd.sector, b), ch, "sector")
-    hub = chamfer_bottom(extrude_profile(disc, t), ch, "hub_disc")
-    gear = chamfer_bottom(extrude_profile(kd.gear_profile, 2 * b + t), ch, "gear")
+    sector = extrude_profile(kd.sector, b)
+    hub = extrude_profile(disc, t)
+    gear = extrude_profile(kd.gear_profile, 2 * b + t)
     L = pos.a
     R_boss = max(pin) / 2 + BOSS_WALL_MM
     if L + 2 * R_boss > max(printer.bed_x_mm, printer.bed_y_mm) - 2 * printer.piece_gap_mm:
         raise InputError("--scale", choice.label, f"the base bar ({L + 2 * R_boss:.1f} mm) does not fit the bed")
     base_prof = Profile(_stadium(L, R_boss), [circle_loop((pin[0] - 2 * press + under) / 2, (0.0, 0.0), ccw=False),
                                              circle_loop((pin[1] - 2 * press + under) / 2, (L, 0.0), ccw=False)], "base")
-    base = chamfer_bottom(extrude_profile(base_prof, BASE_T_MM), ch, "base")
+    base = extrude_profile(base_prof, BASE_T_MM)
     axle_len = BASE_T_MM + GAP_MM + 2 * b + t + 1.0
-    axles = [chamfer_bottom(cylinder(d / 2, 0.0, axle_len), min(ch, d / 8), f"axle_{k}") for k, d in enumerate(pin)]
+    axles = [cylinder(d / 2, 0.0, axle_len) for k, d in enumerate(pin)]
     # sector pins: each presses through the sector into the disc (the holes print `under` small)
     d_loc = lay.d_pin - under + 2 * press
     d_clamp = lay.d_bolt - under + 2 * press
     pin_len = b + t - GAP_MM
-    loc_pin = chamfer_bottom(cylinder(d_loc / 2, 0.0, pin_len), min(ch, d_loc / 8), "locating_pin")
-    clamp_pin = chamfer_bottom(cylinder(d_clamp / 2, 0.0, pin_len), min(ch, d_clamp / 8), "clamp_pin")
-    handle = chamfer_bottom(cylinder(HANDLE_D_MM / 2, 0.0, t + b + HANDLE_UP_MM), min(ch, HANDLE_D_MM / 8), "handle")
+    loc_pin = cylinder(d_loc / 2, 0.0, pin_len)
+    clamp_pin = cylinder(d_clamp / 2, 0.0, pin_len)
+    handle = cylinder(HANDLE_D_MM / 2, 0.0, t + b + HANDLE_UP_MM)
     n_sec = q.flows * i_s
     n_pos = len(kd.positions)
     pieces = [Piece("gear", gear, genus=1, what=f"solid gear, {q.gear_teeth} teeth, m = {q.module_mm:.4g} mm"),
@@ -149,15 +148,16 @@ def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, sourc
               Piece("clamp_pin", clamp_pin, count=n_sec, genus=0, what=f"sector clamping pin ⌀{d_clamp:.2f}"),
               Piece("handle", handle, genus=0, what=f"crank handle ⌀{HANDLE_D_MM:g}")]
     z0 = BASE_T_MM + GAP_MM
-    assembly = [("base", base, "0.75"), ("axle_wheel", axles[0], "0.4"), ("axle_gear", moved(axles[1], dx=L), "0.4"),
-                ("hub_disc", moved(hub, dz=z0 + b), "0.6"),
-                ("gear", moved(gear, dx=L, dz=z0), "tab:blue"),
-                ("handle", moved(handle, dx=c_h[0], dy=c_h[1], dz=z0 + b), "tab:red")]
+    assembly = [Placed("base", "base", place(), "0.75"), Placed("axle_wheel", "axle_wheel", place(), "0.4"),
+                Placed("axle_gear", "axle_gear", place(dx=L), "0.4"),
+                Placed("hub_disc", "hub_disc", place(dz=z0 + b), "0.6"),
+                Placed("gear", "gear", place(dx=L, dz=z0), "tab:blue"),
+                Placed("handle", "handle", place(dx=c_h[0], dy=c_h[1], dz=z0 + b), "tab:red")]
     for f in range(1, q.flows + 1):
         for j, ang in enumerate(kd.sector_angles(f)):
-            placed = moved(sector, dx=pos.offset * math.cos(ang), dy=pos.offset * math.sin(ang),
-                           dz=z0 + (0.0 if f == 1 else b + t), rot_z=ang - math.pi / 2)
-            assembly.append((f"sector_{f}_{j + 1}", placed, "tab:orange" if f == 1 else "tab:green"))
+            at = place(dx=pos.offset * math.cos(ang), dy=pos.offset * math.sin(ang),
+                       dz=z0 + (0.0 if f == 1 else b + t), rot_z=ang - math.pi / 2)
+            assembly.append(Placed(f"sector_{f}_{j + 1}", "sector", at, "tab:orange" if f == 1 else "tab:green"))
     tol = 1e-6
     checks = [Check.at_most("mesh.overlap_area", float(proof.overlap_flow.max()), tol, "mm^2",
                             f"printed outlines, position {pos.k}, {len(proof.phi)} steps of a sector period, both flows"),
@@ -181,7 +181,7 @@ def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, sourc
                                                  f"⌀{pin[1]:g}"),
                     ("press fit", press, "axle pins in the base, sector pins, handle (radial)"),
                     ("hole undersize", under, "added to every running hole's diameter"),
-                    ("bed-side chamfer", ch, "every piece's bottom edges")],
+                    ("bed-side chamfer", ch, "45° round the face each piece lies on, made layer by layer as the slicer sees it")],
         steps=[f"Press the axle pins into the base bar: ⌀{pin[0]:g} (wheel) at the bar's first end, ⌀{pin[1]:g} "
                f"(gear) at the other, flat faces down.",
                f"Set the sectors at position {pos.k} (offset {pos.offset:.3f} mm): lay a sector on the disc with its "
