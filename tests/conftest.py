@@ -26,3 +26,20 @@ def out(request, tmp_path_factory):
 def manifest(out):
     """The manifest.json of the module's build."""
     return json.loads((out / "manifest.json").read_text())
+
+
+@pytest.fixture
+def slices_cleanly(tmp_path):
+    """assert_slices(kit_folder, fullest_only): every plate (or the fullest) of a kit slices in PrusaSlicer
+    with the generic printer's bed, every object manifold and on the bed."""
+    def assert_slices(folder, fullest_only: bool = False) -> None:
+        from propulsor.printing.printers import load_printer
+        from propulsor.printing.slicer import slice_kit
+
+        results = slice_kit(folder, load_printer("generic"), tmp_path, fullest_only)
+        assert results
+        for plate, r, off in results:
+            assert r.ok, (plate, r.message)
+            assert r.all_manifold and off == [], (plate, r.objects)
+
+    return assert_slices

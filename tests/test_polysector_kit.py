@@ -44,14 +44,5 @@ def test_polysector_kit_proves_its_printed_mesh_and_fits(kit_folder):
 @pytest.mark.slicer
 @pytest.mark.sweep  # slicing the three plates takes ~80 s: make check, not make test
 @pytest.mark.skipif(shutil.which("prusa-slicer") is None, reason="PrusaSlicer is not installed")
-def test_polysector_kit_plates_slice(kit_folder, tmp_path):
-    from propulsor.printing.printers import load_printer
-    from propulsor.printing.slicer import slice_plate
-
-    pr = load_printer("generic")
-    plates = sorted(kit_folder.glob("plate_*.3mf"))
-    assert plates
-    for plate in plates:
-        res = slice_plate(plate, pr.bed_shape(), tmp_path / (plate.stem + ".gcode"), pr.layer_mm, pr.nozzle_mm)
-        assert res.ok and res.all_manifold, (plate.name, res.message)
-        assert res.off_bed(pr.bed_x_mm, pr.bed_y_mm) == []
+def test_polysector_kit_plates_slice(kit_folder, slices_cleanly):
+    slices_cleanly(kit_folder)

@@ -70,16 +70,16 @@ def test_final_drive_scale_is_chosen_for_the_ring(kits):
 @pytest.mark.slicer
 @needs_slicer
 @pytest.mark.parametrize("name", ["ncg_seed002", "final_drive"])
-def test_every_plate_slices(kits, name, tmp_path):
-    from propulsor.printing.printers import load_printer
-    from propulsor.printing.slicer import slice_plate
+def test_the_fullest_plate_slices(kits, name, slices_cleanly):
+    slices_cleanly(kits[name][1], fullest_only=True)
 
-    printer = load_printer("generic")
-    rc, folder = kits[name]
-    for plate in sorted(folder.glob("plate_*.3mf")):
-        r = slice_plate(plate, printer.bed_shape(), tmp_path / f"{plate.stem}.gcode", printer.layer_mm, printer.nozzle_mm)
-        assert r.ok, (plate.name, r.message)
-        assert r.all_manifold and r.off_bed(printer.bed_x_mm, printer.bed_y_mm) == [], (plate.name, r.objects)
+
+@pytest.mark.sweep
+@pytest.mark.slicer
+@needs_slicer
+@pytest.mark.parametrize("name", ["ncg_seed002", "final_drive"])
+def test_every_plate_slices(kits, name, slices_cleanly):
+    slices_cleanly(kits[name][1])
 
 
 @pytest.mark.parametrize("args, fragment", [

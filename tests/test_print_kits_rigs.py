@@ -108,31 +108,13 @@ def test_road_wheel_kit_slabs_restack_to_the_wheel(kits):
 @pytest.mark.slicer
 @needs_slicer
 @pytest.mark.parametrize("name", NAMES)
-def test_the_fullest_plate_slices(kits, name, tmp_path):
-    _slice(kits[name][1], tmp_path, fullest_only=True)
+def test_the_fullest_plate_slices(kits, name, slices_cleanly):
+    slices_cleanly(kits[name][1], fullest_only=True)
 
 
 @pytest.mark.sweep
 @pytest.mark.slicer
 @needs_slicer
 @pytest.mark.parametrize("name", NAMES)
-def test_every_plate_slices(kits, name, tmp_path):
-    _slice(kits[name][1], tmp_path, fullest_only=False)
-
-
-def _slice(folder: Path, tmp_path: Path, fullest_only: bool) -> None:
-    from propulsor.printing.printers import load_printer
-    from propulsor.printing.slicer import slice_plate
-
-    printer = load_printer("generic")
-    plates = sorted(folder.glob("plate_*.3mf"))
-    if fullest_only:
-        m = json.loads((folder / "manifest.json").read_text())
-        rows = (folder / "tables" / "plates.csv").read_text().splitlines()[1:]
-        counts = {int(r.split(",")[0]): int(r.split(",")[1]) for r in rows}
-        plates = [folder / f"plate_{max(counts, key=counts.get)}.3mf"]
-        assert m["derived"]["plates"] == len(counts)
-    for plate in plates:
-        r = slice_plate(plate, printer.bed_shape(), tmp_path / f"{plate.stem}.gcode", printer.layer_mm, printer.nozzle_mm)
-        assert r.ok, (plate.name, r.message)
-        assert r.all_manifold and r.off_bed(printer.bed_x_mm, printer.bed_y_mm) == [], (plate.name, r.objects)
+def test_every_plate_slices(kits, name, slices_cleanly):
+    slices_cleanly(kits[name][1])

@@ -79,3 +79,18 @@ def slice_plate(path: Path, bed_shape: str, gcode: Path, layer_mm: float = 0.2, 
     ok = r.returncode == 0 and gcode.is_file() and gcode.stat().st_size > 0
     msg = "sliced" if ok else f"exit {r.returncode}: " + ("; ".join(errors[-3:]) or r.stderr.strip()[-300:])
     return SliceResult(ok, msg, gcode.stat().st_size if gcode.is_file() else 0, info(path))
+
+
+def slice_kit(folder: Path, printer, work: Path, fullest_only: bool = False) -> list[tuple[str, SliceResult, list[str]]]:
+    """Slice the plates of a kit folder with the printer's bed (every plate, or the one holding the most
+    pieces by the kit's ``tables/plates.csv``): [(plate file name, result, objects off the bed)]."""
+    folder, work = Path(folder), Path(work)
+    plates = sorted(folder.glob("plate_*.3mf"))
+    if fullest_only:
+        rows = [r.split(",") for r in (folder / "tables" / "plates.csv").read_text().splitlines()[1:]]
+        plates = [folder / f"plate_{max(rows, key=lambda r: int(r[1]))[0]}.3mf"]
+    out = []
+    for plate in plates:
+        r = slice_plate(plate, printer.bed_shape(), work / f"{plate.stem}.gcode", printer.layer_mm, printer.nozzle_mm)
+        out.append((plate.name, r, r.off_bed(printer.bed_x_mm, printer.bed_y_mm)))
+    return out
