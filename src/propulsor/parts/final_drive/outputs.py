@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from ..pipeline import Pipeline, design_of
 from .design import FinalDriveDesign, body_offsets, design
+from .strength import strength
 from .proofs import dms, outline_checks, sheet_and_conditions, start_sweep, sweep_results
 
 __all__ = ["build", "solids", "assembly_and_drawings", "notes"]
@@ -98,5 +99,5 @@ def notes(dd: FinalDriveDesign, w, built: dict) -> None:
 
 
 build = Pipeline(lambda p, w: design_of(p, design),
-                 (sheet_and_conditions, outline_checks, start_sweep, solids, sweep_results, assembly_and_drawings,
+                 (sheet_and_conditions, strength, outline_checks, start_sweep, solids, sweep_results, assembly_and_drawings,
                   notes))

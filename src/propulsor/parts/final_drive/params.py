@@ -52,6 +52,34 @@ class FinalDriveParams:
                             why="a bolt every 5°, the densest flange pattern in use")
     ring_bolt_d_mm: float = param(18.0, "mm", "mounting hole diameter", min=0, min_exclusive=True, max=200.0,
                                  why="M180 bolts are the largest in ISO 262")
+    # --- load and strength (seed 004 ch. 4.1-4.3, ISO 6336) -------------------------------------------
+    sprocket_torque_Nm: float = param(90687.503, "N·m", "design torque of the carrier (sprocket) M_vk.max; seed 004 "
+                                      "eq. 40 with t = 0.125 m (the printed 90 690)", min=0, min_exclusive=True,
+                                      max=1e7, why="ten times the torque of the heaviest tracked vehicle drives")
+    load_share_Omega: float = param(1.09, "", "load-sharing factor Ω between the planets (seed 004 eq. 42)",
+                                    min=1.0, max=2.0, why="one planet of two carrying everything")
+    power_ratio_i_sil: float = param(4.413, "", "power ratio i_sil = 1 + p·η_ext·η_int (seed 004 eq. 41); "
+                                     "sun torque = M_vk.max·Ω/i_sil", min=1.0, max=50.0,
+                                     why="the largest single-stage planetary ratios")
+    design_speed_kmh: float = param(7.852, "km/h", "vehicle speed at the design torque (seed 004 eq. 65, V_min)",
+                                    min=0.0, max=200.0, why="faster than any tracked vehicle")
+    sprocket_teeth: int = param(15, "", "sprocket teeth z (seed 004 eq. 40)", min=6, max=60, integer=True,
+                                why="track sprockets have 9 ... 30 teeth")
+    track_pitch_mm: float = param(125.0, "mm", "track pitch t (seed 004 eq. 45)", min=20.0, max=500.0,
+                                  why="the pitch of any track link")
+    application_factor_K_A: float = param(1.0, "", "application factor K_A (1: the design torque is already the "
+                                          "largest, adhesion-limited one)", min=1.0, max=3.0,
+                                          why="ISO 6336-1 Table A.1 tops out at 2.25")
+    accuracy_grade: int = param(6, "", "ISO 1328 accuracy grade of the gears", min=3, max=8, integer=True,
+                                why="ISO 6336-1 Table 9 (K_Hα) is used for grades 3 ... 8")
+    flank_hardness_HRC: float = param(59.0, "HRC", "flank hardness (seed 004 ch. 4.1: σ_Hmax = 44·HRC)",
+                                      min=20.0, max=68.0, why="the range of hardened gear steels")
+    core_yield_MPa: float = param(785.0, "MPa", "σ_t of the gear steel (seed 004 ch. 4.1: σ_FlimM = 2.8·σ_t)",
+                                  min=100.0, max=2500.0, why="the range of gear steels")
+    bending_safety_S_Fm: float = param(1.75, "", "required bending safety S_Fm (seed 004 ch. 4.1)",
+                                       min=1.0, max=5.0, why="no code asks more")
+    contact_safety_S_Hmin: float = param(1.0, "", "required contact safety against σ_Hmax", min=1.0, max=5.0,
+                                         why="no code asks more")
     sweep_steps_per_deg: float = param(float(policy.PLANETARY_SWEEP_STEPS_PER_DEG), "1/deg",
                                        "interference sweep steps per degree of carrier turn",
                                        min=float(policy.PLANETARY_SWEEP_STEPS_PER_DEG), max=20.0,

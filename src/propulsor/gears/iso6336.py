@@ -1,0 +1,244 @@
+"""Working stresses of a spur mesh: ISO 6336-2 (pitting, method B) and ISO 6336-3 (tooth root,
+method C of the 1996 edition: load at the tip, Y_F·Y_S with Y_ε), load factors of ISO 6336-1
+(method B for K_v, method C for K_Hβ, Table 9 for K_Hα).  Spur gears only (β = 0), external pinion
+with an external or internal mate.  mm, N, MPa, radians.
+
+Contact (ISO 6336-2:2006 eq. 1–3, 9, 10, 18, 25):
+
+    σ_H0 = Z_H·Z_E·Z_ε·Z_β·√(F_t/(d_1·b) · (u + 1)/u)        u = z2/z1 (< 0 for an internal mate)
+    σ_H  = Z_B·σ_H0·√(K_A·K_v·K_Hβ·K_Hα)
+    Z_H  = √(2·cos α_w / (cos² α·sin α_w)),   Z_E = √(1/(π·((1 − ν1²)/E1 + (1 − ν2²)/E2)))
+    Z_ε  = √((4 − ε_α)/3),   Z_β = 1 (spur)
+    Z_B  = max(1, M_1),  M_1 = tan α_w / √((√(d_a1²/d_b1² − 1) − 2π/z1)·(√(d_a2²/d_b2² − 1) − (ε_α − 1)·2π/z2))
+           (external mates; Z_B = 1 for an internal mate, ISO 6336-2 5.1)
+
+Tooth root (ISO 6336-3:1996 eq. 2–3, method C: load applied at the tip, d_en = d_a):
+
+    σ_F = F_t/(b·m) · Y_F·Y_S·Y_ε·Y_β · K_A·K_v·K_Fβ·K_Fα
+    E = π/4·m − h_fP·tan α + s_pr/cos α − (1 − sin α)·ρ_fP/cos α            (eq. 22)
+    G = ρ_fP/m − h_fP/m + x,   H = 2/z·(π/2 − E/m) − π/3,   θ = 2G/z·tan θ − H   (eq. 23–25, 30° tangent)
+    s_Fn/m = z·sin(π/3 − θ) + √3·(G/cos θ − ρ_fP/m),  ρ_F/m = ρ_fP/m + 2G²/(cos θ·(z·cos² θ − 2G))
+    α_en = arccos(d_b/d_en),  γ_e = (π/2 + 2x·tan α)/z + inv α − inv α_en,  α_Fen = α_en − γ_e
+    h_Fe/m = ½·((cos γ_e − sin γ_e·tan α_Fen)·d_en/m − z·cos(π/3 − θ) − G/cos θ + ρ_fP/m)
+    Y_F = 6·(h_Fe/m)·cos α_Fen / ((s_Fn/m)²·cos α),   Y_S = (1.2 + 0.13 L)·q_s^(1/(1.21 + 2.3/L)),
+    L = s_Fn/h_Fe,  q_s = s_Fn/(2ρ_F),   Y_ε = 0.25 + 0.75/ε_α
+
+Load factors (ISO 6336-1:2006):
+
+    K_v = 1 + (K_1/(K_A·F_t/b) + K_2)·v·z_1/100·√(u²/(1 + u²))     (method B, eq. 14; spur K_2 = 0.0193,
+          K_1 by accuracy grade, Table 8; F_t/b taken >= 100 N/mm)
+    K_Hβ = 1 + c_γβ·F_βy / (2·F_m/b)  (<= 2), F_m = F_t·K_A·K_v,  F_βy = F_βx − y_β,  y_β = 0.15·F_βx
+          (<= 6 µm, hardened), F_βx = f_ma = f_Hβ of ISO 1328-1 at the grade (f_sh = 0: no shaft bending
+          for the planet on its pin and the floating sun), c_γβ = 0.85·c_γα, c_γα = 20 N/(mm·µm)
+    K_Fβ = K_Hβ^N_F,  N_F = (b/h)² / (1 + b/h + (b/h)²)                                (eq. 74)
+    K_Hα = K_Fα by Table 9 (surface-hardened spur gears, F_t·K_A/b >= 100 N/mm)
+
+The internal gear's (ring's) root stress is not computed here: ISO 6336-3 handles internal teeth with
+a substitute rack of the shaper's fillet, which this module does not carry; the ring's root is the
+thickest of the set (x3 > 1).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ..errors import InputError, require_positive
+from .involute import inv
+
+__all__ = ["Material", "STEEL", "z_e", "z_h", "z_eps", "z_b", "f_h_beta", "contact_factors", "tooth_form_factor", "ToothForm", "k_v_method_b",
+           "k_h_beta_method_c", "k_h_alpha", "MeshLoad", "MeshStress", "mesh_stress"]
+
+
+@dataclass(frozen=True)
+class Material:
+    E: float = 206000.0   # MPa
+    nu: float = 0.3
+
+
+STEEL = Material()
+
+# ISO 6336-1:2006 Table 8: K_1 of spur gears by ISO 1328 accuracy grade 3 ... 12
+_K1_SPUR = {3: 2.1, 4: 3.9, 5: 7.5, 6: 14.9, 7: 26.8, 8: 39.1, 9: 52.8, 10: 76.6, 11: 102.6, 12: 146.3}
+_K2_SPUR = 0.0193
+# ISO 6336-1:2006 Table 9: K_Hα = K_Fα, surface-hardened spur gears, K_A·F_t/b >= 100 N/mm
+_KHA_HARDENED_SPUR = {3: 1.0, 4: 1.0, 5: 1.0, 6: 1.0, 7: 1.1, 8: 1.2}
+
+
+def z_e(m1: Material = STEEL, m2: Material = STEEL) -> float:
+    """Elasticity factor Z_E, √MPa (ISO 6336-2 eq. 18)."""
+    return math.sqrt(1.0 / (math.pi * ((1 - m1.nu ** 2) / m1.E + (1 - m2.nu ** 2) / m2.E)))
+
+
+def z_h(alpha: float, alpha_w: float) -> float:
+    """Zone factor Z_H of a spur mesh (ISO 6336-2 eq. 9 with β = 0)."""
+    return math.sqrt(2.0 * math.cos(alpha_w) / (math.cos(alpha) ** 2 * math.sin(alpha_w)))
+
+
+def z_eps(eps_alpha: float) -> float:
+    """Contact ratio factor Z_ε of a spur mesh (ISO 6336-2 eq. 25)."""
+    return math.sqrt((4.0 - eps_alpha) / 3.0)
+
+
+def z_b(alpha_w, d_a1, d_b1, z1, d_a2, d_b2, z2, eps_alpha, internal: bool) -> float:
+    """Single pair contact factor Z_B of the pinion (ISO 6336-2 eq. 3–5); 1 for an internal mate."""
+    if internal:
+        return 1.0
+    f1 = math.sqrt((d_a1 / d_b1) ** 2 - 1.0) - 2.0 * math.pi / z1
+    f2 = math.sqrt((d_a2 / d_b2) ** 2 - 1.0) - (eps_alpha - 1.0) * 2.0 * math.pi / z2
+    M1 = math.tan(alpha_w) / math.sqrt(f1 * f2)
+    return max(1.0, M1)
+
+
+def contact_factors(alpha, alpha_w, eps_alpha) -> tuple[float, float, float]:
+    """(Z_H, Z_E, Z_ε) of a steel spur mesh."""
+    return z_h(alpha, alpha_w), z_e(), z_eps(eps_alpha)
+
+
+@dataclass(frozen=True)
+class ToothForm:
+    theta: float      # rad, angle of the 30° tangent construction
+    s_Fn: float       # mm, root chord at the 30° tangents
+    rho_F: float      # mm, root fillet radius there
+    h_Fe: float       # mm, bending moment arm (load at d_en)
+    alpha_Fen: float  # rad, load direction angle
+    Y_F: float
+    Y_S: float
+
+
+def tooth_form_factor(z: int, m: float, x: float, d_en: float, alpha: float = math.radians(20.0),
+                      h_fP_star: float = 1.25, rho_fP_star: float = 0.38, s_pr: float = 0.0) -> ToothForm:
+    """Y_F and Y_S of an external spur gear cut by a rack, load at diameter d_en (ISO 6336-3 eq. 22–32;
+    method C of the 1996 edition puts d_en = d_a)."""
+    require_positive("z", z)
+    h_fP, rho_fP = h_fP_star * m, rho_fP_star * m
+    E = math.pi / 4 * m - h_fP * math.tan(alpha) + s_pr / math.cos(alpha) - (1 - math.sin(alpha)) * rho_fP / math.cos(alpha)
+    G = rho_fP_star - h_fP_star + x
+    H = 2.0 / z * (math.pi / 2 - E / m) - math.pi / 3
+    theta = math.pi / 6
+    for _ in range(200):
+        new = 2.0 * G / z * math.tan(theta) - H
+        if abs(new - theta) < 1e-14:
+            theta = new
+            break
+        theta = new
+    else:  # pragma: no cover - the fixed point converges for every generable tooth
+        raise InputError("z", z, "30° tangent iteration of ISO 6336-3 did not converge")
+    s_Fn = m * (z * math.sin(math.pi / 3 - theta) + math.sqrt(3.0) * (G / math.cos(theta) - rho_fP_star))
+    rho_F = m * (rho_fP_star + 2.0 * G * G / (math.cos(theta) * (z * math.cos(theta) ** 2 - 2.0 * G)))
+    d = m * z
+    d_b = d * math.cos(alpha)
+    if not d_en > d_b:
+        raise InputError("d_en", d_en, f"must exceed the base diameter {d_b:.4f} mm")
+    a_en = math.acos(d_b / d_en)
+    g_e = (math.pi / 2 + 2.0 * x * math.tan(alpha)) / z + inv(alpha) - inv(a_en)
+    a_Fen = a_en - g_e
+    h_Fe = 0.5 * m * ((math.cos(g_e) - math.sin(g_e) * math.tan(a_Fen)) * d_en / m - z * math.cos(math.pi / 3 - theta)
+                      - G / math.cos(theta) + rho_fP_star)
+    Y_F = 6.0 * (h_Fe / m) * math.cos(a_Fen) / ((s_Fn / m) ** 2 * math.cos(alpha))
+    L = s_Fn / h_Fe
+    q_s = s_Fn / (2.0 * rho_F)
+    Y_S = (1.2 + 0.13 * L) * q_s ** (1.0 / (1.21 + 2.3 / L))
+    return ToothForm(theta, s_Fn, rho_F, h_Fe, a_Fen, Y_F, Y_S)
+
+
+def k_v_method_b(v: float, z1: int, u: float, Ft_b: float, K_A: float, grade: int) -> float:
+    """Dynamic factor K_v of a spur mesh (ISO 6336-1:2006 eq. 14, method B simplified); v in m/s at the
+    reference circle (relative to the carrier in a planetary set), F_t/b in N/mm (taken >= 100)."""
+    if grade not in _K1_SPUR:
+        raise InputError("accuracy_grade", grade, "must be an ISO 1328 grade 3 ... 12")
+    load = max(K_A * Ft_b, 100.0)
+    return 1.0 + (_K1_SPUR[grade] / load + _K2_SPUR) * v * z1 / 100.0 * math.sqrt(u * u / (1.0 + u * u))
+
+
+def f_h_beta(d: float, b: float, grade: int) -> float:
+    """Helix slope deviation f_Hβ of ISO 1328-1:1995, µm: (0.07√d + 0.45√b + 3)·2^((Q − 5)/2)."""
+    return (0.07 * math.sqrt(d) + 0.45 * math.sqrt(b) + 3.0) * 2.0 ** ((grade - 5) / 2.0)
+
+
+def k_h_beta_method_c(F_m: float, b: float, d1: float, grade: int, h: float,
+                      c_gamma_alpha: float = 20.0) -> tuple[float, float]:
+    """(K_Hβ, K_Fβ) by ISO 6336-1 method C with F_βx = f_ma = f_Hβ (no shaft bending, see module docstring)."""
+    F_bx = f_h_beta(d1, b, grade)
+    y_b = min(0.15 * F_bx, 6.0)
+    F_by = F_bx - y_b
+    c_gb = 0.85 * c_gamma_alpha
+    K_Hb = 1.0 + c_gb * F_by / (2.0 * F_m / b)
+    if K_Hb > 2.0:  # eq. 41: the contact does not span the face
+        K_Hb = math.sqrt(2.0 * c_gb * F_by / (F_m / b))
+    bh = b / h
+    N_F = bh * bh / (1.0 + bh + bh * bh)
+    return K_Hb, K_Hb ** N_F
+
+
+def k_h_alpha(grade: int) -> float:
+    """K_Hα = K_Fα of surface-hardened spur gears (ISO 6336-1:2006 Table 9)."""
+    if grade not in _KHA_HARDENED_SPUR:
+        raise InputError("accuracy_grade", grade, "Table 9 of ISO 6336-1 is used for grades 3 ... 8")
+    return _KHA_HARDENED_SPUR[grade]
+
+
+@dataclass(frozen=True)
+class MeshLoad:
+    """What loads one mesh: the pinion torque per mesh, the speed, the quality."""
+
+    T1: float          # N·m on the pinion (one mesh)
+    v: float = 0.0     # m/s at the reference circle (relative to the carrier)
+    K_A: float = 1.0
+    grade: int = 6
+
+
+@dataclass(frozen=True)
+class MeshStress:
+    F_t: float
+    b: float
+    K_A: float
+    K_v: float
+    K_Hbeta: float
+    K_Halpha: float
+    K_Fbeta: float
+    K_Falpha: float
+    Z_H: float
+    Z_E: float
+    Z_eps: float
+    Z_B: float
+    sigma_H0: float
+    sigma_H: float
+    Y_F1: float
+    Y_S1: float
+    Y_F2: float | None
+    Y_S2: float | None
+    Y_eps: float
+    sigma_F1: float
+    sigma_F2: float | None
+
+
+def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad) -> MeshStress:
+    """σ_H and σ_F of one spur mesh (a :class:`~propulsor.gears.gear_pair.GearPair`), face width b (mm)."""
+    require_positive("b", b, "mm")
+    g1, g2 = pair.gear1, pair.gear2
+    m, alpha, aw = pair.m, pair.alpha, pair.alpha_w
+    eps = pair.epsilon_alpha(d_a1, d_a2)
+    u = g2.z / g1.z * (-1.0 if pair.internal else 1.0)
+    d1 = g1.d
+    F_t = 2000.0 * load.T1 / d1
+    K_v = k_v_method_b(load.v, g1.z, abs(u), F_t / b, load.K_A, load.grade)
+    h = 0.5 * (d_a1 - g1.d_f)
+    K_Hb, K_Fb = k_h_beta_method_c(F_t * load.K_A * K_v, b, d1, load.grade, h)
+    K_Ha = k_h_alpha(load.grade)
+    Z_H, Z_E, Z_e = contact_factors(alpha, aw, eps)
+    Z_B = z_b(aw, d_a1, g1.d_b, g1.z, d_a2, g2.d_b, g2.z, eps, pair.internal)
+    s0 = Z_H * Z_E * Z_e * math.sqrt(F_t / (d1 * b) * (u + 1.0) / u)
+    sH = Z_B * s0 * math.sqrt(load.K_A * K_v * K_Hb * K_Ha)
+    rack = g1.rack
+    Y_eps = 0.25 + 0.75 / eps
+    K = load.K_A * K_v * K_Fb * K_Ha
+    f1 = tooth_form_factor(g1.z, m, g1.x, d_a1, alpha, rack.h_fP_star, rack.rho_f_star)
+    sF1 = F_t / (b * m) * f1.Y_F * f1.Y_S * Y_eps * K
+    Y_F2 = Y_S2 = sF2 = None
+    if not pair.internal:
+        f2 = tooth_form_factor(g2.z, m, g2.x, d_a2, alpha, rack.h_fP_star, rack.rho_f_star)
+        Y_F2, Y_S2 = f2.Y_F, f2.Y_S
+        sF2 = F_t / (b * m) * Y_F2 * Y_S2 * Y_eps * K
+    return MeshStress(F_t, b, load.K_A, K_v, K_Hb, K_Ha, K_Fb, K_Ha, Z_H, Z_E, Z_e, Z_B, s0, sH,
+                      f1.Y_F, f1.Y_S, Y_F2, Y_S2, Y_eps, sF1, sF2)

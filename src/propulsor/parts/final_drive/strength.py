@@ -1,0 +1,188 @@
+"""The final drive's load path and strength (seed 004 ch. 4.1–4.3): working stresses of both meshes
+by ISO 6336 at the design torque, the face width each mesh needs, the planet and carrier bearings'
+static safety (ISO 76), the carrier spline and the carrier shaft — as derived values, checks, a
+bearing table and a note with the thesis's values beside ours.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ...check import Check
+from .design import FinalDriveDesign
+
+__all__ = ["strength", "mesh_stresses", "required_face_width", "SPLINE_004", "SHAFT_004"]
+
+# seed 004 §4.2: planet bearing load eq. 44 with i = 2 bearings per planet; the carrier bearing's load
+# as Table 8 prints it (its reactions R_A, R_B of Fig. 15 are not given in the text)
+BEARINGS_PER_PLANET = 2
+CARRIER_BEARING_LOAD_TABLE8_N = 858508.0
+# seed 004 §4.3: spline Эв. 120 × 3.5 × 34, working length 140 mm, n = 1.4, K_Σ = K_pr·K_z·K_p = 2.65·1·1.4,
+# hub steel 30ХГСЛ σ_T = 630 MPa (the thesis computes [σ] with 785 MPa)
+SPLINE_004 = dict(D=120.0, m=3.5, z=34, L=140.0, n=1.4, K_pr=2.65, K_z=1.0, K_p=1.4, sigma_T_hub=630.0,
+                  sigma_T_printed=785.0)
+# seed 004 §4.3: carrier shaft, 30ХН3А σ_T = 970 MPa, lever 222 mm, moduli as printed
+SHAFT_004 = dict(L=222.0, W_i=169646.003, W_k=272271.363, sigma_T=970.0)
+
+
+def _loads(p, ps):
+    """(sun torque per mesh N·m, relative pitch-line speed of the sun m/s)."""
+    T_sun = p.sprocket_torque_Nm * p.load_share_Omega / p.power_ratio_i_sil  # seed 004 eq. 42
+    n_carrier = p.design_speed_kmh / 3.6 / (p.sprocket_teeth * p.track_pitch_mm * 1e-3)  # rev/s
+    v = math.pi * ps.sun.d * 1e-3 * n_carrier * (ps.ratio - 1.0)  # sun relative to the carrier
+    return T_sun / p.n_planets, v
+
+
+def mesh_stresses(p, ps, b_sp: float | None = None, b_pr: float | None = None):
+    """ISO 6336 stresses of (sun–planet, planet–ring) at the design torque."""
+    from ...gears.iso6336 import MeshLoad, mesh_stress
+
+    T1, v = _loads(p, ps)
+    load = MeshLoad(T1, v, p.application_factor_K_A, p.accuracy_grade)
+    b_sp = min(p.width_sun_mm, p.width_planet_mm) if b_sp is None else b_sp
+    b_pr = min(p.width_planet_mm, p.width_ring_mm) if b_pr is None else b_pr
+    sp = mesh_stress(ps.mesh_sun_planet, ps.d_a_sun, ps.d_a_planet, b_sp, load)
+    # the planet passes the sun's tangential force on to the ring (equal base-circle forces)
+    load_pr = MeshLoad(T1 * p.z_planet / p.z_sun, v, p.application_factor_K_A, p.accuracy_grade)
+    pr = mesh_stress(ps.mesh_planet_ring, ps.d_a_planet, ps.d_a_ring, b_pr, load_pr)
+    return sp, pr
+
+
+def _allowables(p):
+    sigma_Hmax = 44.0 * p.flank_hardness_HRC    # seed 004 ch. 4.1
+    sigma_FlimM = 2.8 * p.core_yield_MPa         # seed 004 ch. 4.1
+    return sigma_Hmax, sigma_FlimM
+
+
+def _margin(p, s) -> float:
+    """Smallest ratio (achieved safety / required safety) of one mesh; >= 1 passes."""
+    sHmax, sFlim = _allowables(p)
+    out = [sHmax / s.sigma_H / p.contact_safety_S_Hmin, sFlim / s.sigma_F1 / p.bending_safety_S_Fm]
+    if s.sigma_F2 is not None:
+        out.append(sFlim / s.sigma_F2 / p.bending_safety_S_Fm)
+    return min(out)
+
+
+def required_face_width(p, ps, mesh: str) -> float:
+    """Least face width (mm) at which the mesh ('sun_planet' or 'planet_ring') meets S_Hmin and S_Fm."""
+    from scipy.optimize import brentq
+
+    def f(b):
+        sp, pr = mesh_stresses(p, ps, b, b)
+        return _margin(p, sp if mesh == "sun_planet" else pr) - 1.0
+
+    lo, hi = 1e-3 * p.module_mm, 200.0 * p.module_mm
+    if f(hi) < 0:
+        return math.inf
+    return brentq(f, lo, hi, xtol=1e-6)
+
+
+def strength(dd: FinalDriveDesign, w, built: dict) -> None:
+    """Load path, ISO 6336 stresses of both meshes, bearings, spline, shaft: derived values, checks, tables."""
+    from ...geometry.involute_spline import InvoluteSpline
+    from ...laws.carrier_strength import (CARRIER_BEARING_004, PLANET_BEARING_004, shaft_equivalent_stress,
+                                          spline_allowable, spline_crushing_stress)
+    from ...laws.traction import planet_bearing_load, track_forces
+
+    p, ps = dd.p, dd.ps
+    w.progress("strength: ISO 6336 stresses, bearings, spline, shaft")
+    d = w.derived
+    sHmax, sFlim = _allowables(p)
+    T1, v = _loads(p, ps)
+    sp, pr = mesh_stresses(p, ps)
+    d.update({"design_torque_carrier_Nm": p.sprocket_torque_Nm, "sun_torque_Nm": T1 * p.n_planets,
+              "sun_torque_per_mesh_Nm": T1, "pitch_line_speed_rel_m_s": v,
+              "sigma_Hmax_allowable_MPa": sHmax, "sigma_FlimM_MPa": sFlim,
+              "sigma_Fmax_allowable_MPa": sFlim / p.bending_safety_S_Fm})
+    rows = []
+    for tag, s, gears in (("sun_planet", sp, ("sun", "planet")), ("planet_ring", pr, ("planet", "ring"))):
+        b_req = required_face_width(p, ps, tag)
+        b = s.b
+        vals = {"F_t_N": s.F_t, "b_mm": b, "K_A": s.K_A, "K_v": s.K_v, "K_Hbeta": s.K_Hbeta, "K_Halpha": s.K_Halpha,
+                "K_Fbeta": s.K_Fbeta, "K_Falpha": s.K_Falpha, "Z_H": s.Z_H, "Z_E": s.Z_E, "Z_eps": s.Z_eps,
+                "Z_B": s.Z_B, "Y_eps": s.Y_eps, "sigma_H0_MPa": s.sigma_H0, "sigma_H_MPa": s.sigma_H,
+                "S_H": sHmax / s.sigma_H, f"Y_F_{gears[0]}": s.Y_F1, f"Y_S_{gears[0]}": s.Y_S1,
+                f"sigma_F_{gears[0]}_MPa": s.sigma_F1, f"S_F_{gears[0]}": sFlim / s.sigma_F1,
+                "face_width_required_mm": b_req}
+        if s.sigma_F2 is not None:
+            vals.update({f"Y_F_{gears[1]}": s.Y_F2, f"Y_S_{gears[1]}": s.Y_S2,
+                         f"sigma_F_{gears[1]}_MPa": s.sigma_F2, f"S_F_{gears[1]}": sFlim / s.sigma_F2})
+        for k, x in vals.items():
+            d[f"strength_{tag}_{k}"] = x
+            rows.append([tag, k, x])
+        w.add_checks([
+            Check.at_least(f"strength_{tag}.S_H", sHmax / s.sigma_H, p.contact_safety_S_Hmin, "",
+                           f"ISO 6336-2 σ_H = {s.sigma_H:.1f} MPa against σ_Hmax = 44·HRC = {sHmax:.0f} MPa "
+                           f"(seed 004 ch. 4.1)"),
+            Check.at_least(f"strength_{tag}.S_F_{gears[0]}", sFlim / s.sigma_F1, p.bending_safety_S_Fm, "",
+                           f"ISO 6336-3 σ_F = {s.sigma_F1:.1f} MPa against σ_FlimM = 2.8·σ_t = {sFlim:.0f} MPa"),
+            Check.at_most(f"strength_{tag}.face_width", b_req, b, "mm",
+                          f"face width the mesh needs ({b_req:.2f} mm) within the one it has ({b:g} mm)"),
+        ])
+        if s.sigma_F2 is not None:
+            w.add_checks([Check.at_least(f"strength_{tag}.S_F_{gears[1]}", sFlim / s.sigma_F2, p.bending_safety_S_Fm,
+                                         "", f"ISO 6336-3 σ_F = {s.sigma_F2:.1f} MPa against σ_FlimM = {sFlim:.0f} MPa")])
+    w.add_table("strength_meshes", ["mesh", "quantity", "value"], rows)
+
+    # --- bearings (seed 004 §4.2, ISO 76) ---------------------------------------------------------------
+    r_vod = ps.a_w * 1e-3
+    P_sat = planet_bearing_load(p.sprocket_torque_Nm, p.load_share_Omega, r_vod, p.n_planets, BEARINGS_PER_PLANET)
+    tf = track_forces(p.sprocket_torque_Nm, p.sprocket_teeth, p.track_pitch_mm * 1e-3, 31057.0, 10, 64)
+    brows = []
+    for role, br, load, printed in (("planet", PLANET_BEARING_004, P_sat, (128700.0, 92000.0, 1.39)),
+                                    ("carrier", CARRIER_BEARING_004, CARRIER_BEARING_LOAD_TABLE8_N,
+                                     (1398120.0, 858508.0, 1.629))):
+        S0 = br.S0(load)
+        brows.append([role, br.designation, f"{br.d:g} x {br.D:g} x {br.B:g}", br.C0, br.C0_catalogue, load, S0,
+                      printed[0], printed[1], printed[2]])
+        d[f"bearing_{role}_C0_N"] = br.C0
+        d[f"bearing_{role}_load_N"] = load
+        d[f"bearing_{role}_S0"] = S0
+        w.add_checks([Check.at_least(f"bearing_{role}.S0", S0, 1.0, "",
+                                     f"ISO 76 C0 = {br.C0:.0f} N over the load {load:.0f} N ({br.designation})")])
+    w.add_table("bearings", ["role", "designation", "d_x_D_x_B_mm", "C0_ISO76_N", "C0_thesis_Table8_N", "load_N",
+                             "S0", "thesis_C0_N", "thesis_load_N", "thesis_S0"], brows)
+    d.update({"track_pull_P_t_N": tf.P_t, "sprocket_axle_load_Q_N": tf.Q})
+
+    # --- spline and shaft (seed 004 §4.3) ---------------------------------------------------------------
+    sp_ = SPLINE_004
+    spline = InvoluteSpline(sp_["D"], sp_["m"], sp_["z"])
+    sigma_sm = spline_crushing_stress(p.sprocket_torque_Nm, spline.S_F, sp_["L"])
+    allow = spline_allowable(sp_["sigma_T_hub"], sp_["n"], sp_["K_pr"], sp_["K_z"], sp_["K_p"])
+    allow_printed = spline_allowable(sp_["sigma_T_printed"], sp_["n"], sp_["K_pr"], sp_["K_z"], sp_["K_p"])
+    sh = shaft_equivalent_stress(tf.Q, SHAFT_004["L"], SHAFT_004["W_i"], p.sprocket_torque_Nm, SHAFT_004["W_k"],
+                                 SHAFT_004["sigma_T"])
+    d.update({"spline_S_u_mm3_per_mm": spline.S_F, "spline_sigma_MPa": sigma_sm, "spline_allowable_MPa": allow,
+              "spline_margin": allow / sigma_sm, "spline_margin_thesis_785MPa": allow_printed / sigma_sm,
+              "shaft_sigma_bending_MPa": sh.sigma_b, "shaft_tau_MPa": sh.tau, "shaft_sigma_eq_MPa": sh.sigma_eq,
+              "shaft_margin": sh.margin})
+    w.add_checks([
+        Check.at_least("spline.margin", allow / sigma_sm, 1.0, "",
+                       f"{spline.designation()}: σ = {sigma_sm:.3f} MPa, [σ]_sm = σ_T/(n·K_Σ) = {allow:.3f} MPa with "
+                       f"the hub steel's σ_T = {sp_['sigma_T_hub']:g} MPa (thesis: 785 MPa → {allow_printed:.3f} MPa)"),
+        Check.at_least("shaft.margin", sh.margin, 1.0, "",
+                       f"σ_eq = √(σ² + 4τ²) = {sh.sigma_eq:.3f} MPa against σ_T = {SHAFT_004['sigma_T']:g} MPa"),
+    ])
+    w.add_note(
+        f"Strength at the design torque M_vk.max = {p.sprocket_torque_Nm:.1f} N·m (seed 004 eq. 40 with t = 0.125 m; "
+        f"printed 90 690 N·m), sun torque M_vk·Ω/i_sil = {T1 * p.n_planets:.1f} N·m (thesis 22 399 N·m), "
+        f"{T1:.1f} N·m per mesh; relative pitch-line speed {v:.3f} m/s at {p.design_speed_kmh:g} km/h. "
+        f"ISO 6336 (spur, method B/C): sun–planet σ_H = {sp.sigma_H:.1f} MPa (S_H = {sHmax / sp.sigma_H:.3f}), "
+        f"σ_F sun {sp.sigma_F1:.1f} MPa (S_F = {sFlim / sp.sigma_F1:.3f}), planet {sp.sigma_F2:.1f} MPa; "
+        f"planet–ring σ_H = {pr.sigma_H:.1f} MPa (S_H = {sHmax / pr.sigma_H:.3f}), σ_F planet {pr.sigma_F1:.1f} MPa "
+        f"(S_F = {sFlim / pr.sigma_F1:.3f}). Allowables as the thesis gives them: σ_Hmax = 44·HRC = {sHmax:.0f} MPa, "
+        f"σ_FlimM = 2.8·σ_t = {sFlim:.0f} MPa, σ_Fmax = σ_FlimM/S_Fm = {sFlim / p.bending_safety_S_Fm:.0f} MPa; the thesis "
+        f"computes no working stress. Face width needed: sun–planet {d['strength_sun_planet_face_width_required_mm']:.1f} mm, "
+        f"planet–ring {d['strength_planet_ring_face_width_required_mm']:.1f} mm. The ring's root stress is not computed "
+        f"(ISO 6336-3 internal teeth; x3 > 1 gives it the thickest root of the set).")
+    w.add_note(
+        f"Bearings (ISO 76): planet bearing load eq. 44 = {P_sat:.0f} N with r_vod = a_w = {r_vod * 1e3:.3f} mm "
+        f"(thesis: r_vod = 180 mm → 91 527 N, Table 8: 92 000 N), C0 = {PLANET_BEARING_004.C0:.0f} N, "
+        f"S0 = {d['bearing_planet_S0']:.3f} (thesis 1.39); carrier bearing 3524: eq. 49 gives C0 = "
+        f"{CARRIER_BEARING_004.C0:.0f} N, Table 8 lists 1 398 120 N; at Table 8's load 858 508 N S0 = "
+        f"{d['bearing_carrier_S0']:.3f} (thesis 1.629; the text says R = 522 000 N for it). "
+        f"Spline {spline.designation()}: S_u = {spline.S_F:.2f} mm³/mm, σ = {sigma_sm:.3f} MPa (thesis 117.164), "
+        f"[σ]_sm = {allow:.3f} MPa with the hub's 630 MPa — margin {allow / sigma_sm:.3f}; the thesis uses 785 MPa: "
+        f"{allow_printed:.3f} MPa, margin {allow_printed / sigma_sm:.3f} (printed 1.29). Carrier shaft: σ = "
+        f"{sh.sigma_b:.3f} MPa, τ = {sh.tau:.3f} MPa, σ_eq = √(σ² + 4τ²) = {sh.sigma_eq:.3f} MPa (thesis 775.831, "
+        f"printed as √(σ²·4τ²)), margin {sh.margin:.3f} (thesis 1.25).")
