@@ -188,3 +188,42 @@ def test_bad_input_exit_2_one_line_nothing_written(tmp_path, capsys, changes, pa
     assert rc == 2
     assert len(err) == 1 and param in err[0]
     assert not out.exists() and not any(p.name.startswith(".out") for p in tmp_path.iterdir())
+
+
+# --- strength (seed 004 ch. 4.1-4.3, ISO 6336 / ISO 76) -------------------------------------------------
+def test_strength_of_both_meshes_bearings_spline_and_shaft_in_the_manifest(built):
+    m = _manifest(built)
+    d = m["derived"]
+    checks = {c["name"]: c for c in m["checks"]}
+    for mesh, gears in (("sun_planet", ("sun", "planet")), ("planet_ring", ("planet",))):
+        S_H = d[f"strength_{mesh}_S_H"]
+        assert S_H == pytest.approx(44 * 59 / d[f"strength_{mesh}_sigma_H_MPa"], rel=1e-12)
+        assert checks[f"strength_{mesh}.S_H"]["passed"] and S_H > 1.0
+        for g in gears:
+            S_F = d[f"strength_{mesh}_S_F_{g}"]
+            assert S_F == pytest.approx(2.8 * 785 / d[f"strength_{mesh}_sigma_F_{g}_MPa"], rel=1e-12)
+            assert checks[f"strength_{mesh}.S_F_{g}"]["passed"] and S_F > 1.75
+        # the face width each mesh needs is below the 75 mm it has
+        assert 0 < d[f"strength_{mesh}_face_width_required_mm"] < 75.0
+    assert d["sun_torque_Nm"] == pytest.approx(90687.503 * 1.09 / 4.413, rel=1e-12)
+    assert d["bearing_planet_C0_N"] == pytest.approx(128700.0)
+    assert d["bearing_planet_S0"] > 1 and checks["bearing_planet.S0"]["passed"]
+    assert d["bearing_carrier_S0"] == pytest.approx(1415838.17 / 858508.0, rel=1e-6)
+    assert d["spline_margin"] == pytest.approx(121.294 / 117.164, rel=1e-4)
+    assert d["spline_margin_thesis_785MPa"] == pytest.approx(1.29, abs=0.005)
+    assert d["shaft_sigma_eq_MPa"] == pytest.approx(775.831, abs=1e-3)
+    rows = list(csv.DictReader((built / "tables" / "bearings.csv").open()))
+    assert [r["role"] for r in rows] == ["planet", "carrier"] and rows[1]["d_x_D_x_B_mm"] == "120 x 215 x 58"
+    rep = (built / "report.md").read_text()
+    assert "thesis 22 399 N·m" in rep and "printed 1.29" in rep
+
+
+def test_too_narrow_face_exits_1_naming_the_strength_check(tmp_path, capsys):
+    """Planets of 20 mm face (the sun–planet mesh needs about 28 mm): the build fails on strength."""
+    f = _write(tmp_path, width_planet_mm=20.0)
+    out = tmp_path / "narrow"
+    rc = main(["build", str(f), "--out", str(out)])
+    text = capsys.readouterr()
+    assert rc == 1
+    said = text.out + text.err
+    assert "strength_sun_planet.S_H" in said and "strength_sun_planet.face_width" in said

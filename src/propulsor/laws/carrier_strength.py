@@ -21,8 +21,8 @@ What the printed digits say (each one in ``tests/test_carrier_strength.py``):
   instead of 1.29. The printed σ = 117.164 MPa is T/(S_u·L) with T in N·mm; the "·2π" printed in
   eq. 53 would give 0.736 MPa.
 * shaft: "√(σ_v² · 4τ²)" is printed for √(σ_v² + 4τ²); 775.831 MPa is the latter (the former
-  would be 264 918 MPa²·…). W_i = 169 646.003 mm³ is π·120³/32 (solid 120 mm section); the printed
-  W_k = 272 271.363 mm³ is not the polar modulus of that section (2·W_i = 339 292.007 mm³) — it
+  would be 264 918, not a stress). W_i = 169 646.003 mm³ is π·120³/32 (solid 120 mm section); the printed
+  W_k = 272 271.363 mm³ is not the polar modulus of that section (2·W_i = 339 292.006 mm³) — it
   is π·d³/16 of d = 111.513 mm.
 """
 

@@ -1,0 +1,98 @@
+"""Load path of seed 004: eq. 40-47 (ch. 4.1-4.2) and the traction calculation eq. 54-68 (ch. 5).
+
+Every printed number is reproduced to its printed digits, or the test shows with numbers where the
+printed value contradicts the printed inputs (see the docstring of propulsor.laws.traction)."""
+
+import math
+
+import pytest
+
+from propulsor.errors import InputError
+from propulsor.laws import traction as tr
+
+# ch. 4.1 inputs
+F, MASS, Z, ETA_GUS = 0.57, 50000.0, 15, 0.92
+
+
+def test_eq40_sprocket_torque_uses_the_pitch_of_eq45_not_the_printed_0_14():
+    M = tr.sprocket_torque(F, MASS, Z, 0.125, ETA_GUS)
+    assert round(M, 3) == 90687.503          # the value §4.3 carries on ("90687.503")
+    assert round(M, -1) == 90690             # printed result of eq. 40
+    M_printed_t = tr.sprocket_torque(F, MASS, Z, 0.14, ETA_GUS)
+    assert round(M_printed_t) == 101570      # with the t = 0.14 m eq. 40 prints
+    assert abs(M_printed_t - 90690) / 90690 > 0.1
+
+
+def test_eq41_power_ratio_and_efficiency():
+    assert round(tr.power_ratio(3.5, 0.985, 0.99), 3) == 4.413       # printed as "1 − 3,5·…" (sign)
+    assert round(1.0 - 3.5 * 0.985 * 0.99, 3) == -2.413              # what the printed sign would give
+    t = tr.final_drive_torques(90687.503, 4.5, 3.5, 0.985, 0.99, 1.09, 3)
+    assert round(t.eta_br, 3) == 0.981
+
+
+def test_eq42_43_sun_and_planet_torque():
+    M = tr.sprocket_torque(F, MASS, Z, 0.125, ETA_GUS)
+    t = tr.final_drive_torques(M, 4.5, 3.5, 0.985, 0.99, 1.09, 3)
+    assert math.floor(t.M_sol) == 22399                               # printed 22 399 (22 399.6 truncated)
+    assert round(90690 * 1.09 / (4.5 * 0.981), 1) == 22392.6         # with the printed, rounded inputs
+    # eq. 43 prints Ω in the formula but its 6 849 is M/(i_sil·n_w) without it
+    assert math.floor(M / (t.i_sil * 3)) == 6849
+    assert round(t.M_sat, 1) == 7466.5
+    assert t.M_sat == pytest.approx(t.M_sol / 3, rel=1e-12)
+
+
+def test_eq44_planet_bearing_load():
+    M = tr.sprocket_torque(F, MASS, Z, 0.125, ETA_GUS)
+    assert round(tr.planet_bearing_load(M, 1.09, 0.18, 3, 2)) == 91527
+    assert round(tr.planet_bearing_load(90690, 1.09, 0.18, 3, 2)) == 91530   # with the rounded 90 690
+
+
+def test_eq45_47_track_forces():
+    f = tr.track_forces(90687.503, 15, 0.125, 31057.0, 10, 64)
+    assert round(f.P_t, 3) == 303896.739
+    assert round(f.P_sv_raw, 3) == -231772.612
+    assert f.P_sv == 0.0
+    assert round(f.P_r, 3) == 303896.739          # printed 303 895.739: one newton short of P_t + 0
+    assert round(f.Q, 3) == round(f.P_r, 3)        # eq. 47 with P_sv = 0 (printed "√(303895,739)")
+    # eq. 45 with the printed 3.14 instead of π: 303 742.7, not the printed value
+    assert round(90687.503 * 2 * 3.14 / (15 * 0.125), 1) == 303742.7
+
+
+def test_ch5_transmission_efficiency_and_losses():
+    eta = tr.transmission_efficiency([(1, 0, 0), (0, 0, 1), (0, 0, 0), (1, 0, 1), (0, 0, 1), (0, 0, 1)])
+    assert round(eta, 3) == 0.932
+    # eq. 54: 7.28 kW for n_N = 2000; printed 7.08
+    assert round(tr.transmission_speed_loss(2000.0), 2) == 7.28
+    assert round(tr.rolling_loss_coefficient(0.034, 630.0), 4) == 0.0248            # eq. 55
+    assert round(tr.running_gear_speed_loss(tr.VEHICLE_004), 3) == 305.214          # eq. 56
+
+
+def test_ch5_engine_power_eq57_58():
+    v = tr.VEHICLE_004
+    N = tr.engine_power_required(v, 0.932, 7.08)          # with the printed 7.08 kW and η_tr = 0.932
+    assert N == pytest.approx(664.498, abs=0.006)           # printed 664.498 (ours 664.494)
+    assert round(1.2 * 664.498, 3) == pytest.approx(797.398, abs=1e-9)   # printed 797.397
+    assert abs(1.2 * 664.498 - 797.397) < 2e-3
+    N_728 = tr.engine_power_required(v, 0.932, tr.transmission_speed_loss(2000.0))
+    assert round(N_728, 3) == 664.694                       # with eq. 54 as computed
+    assert min((800.0, 1000.0, 630.0), key=lambda s: abs(s - 1.2 * N)) == 800.0     # N'_e = 800 kW
+
+
+def test_ch5_max_pull_min_speed_gears():
+    v = tr.VEHICLE_004
+    P = tr.max_traction_force(v)
+    assert round(P, 3) == 279232.837                         # printed 279 322.837 (digits transposed)
+    assert round(tr.min_speed(700.0, v.eta_gm_max, P), 3) == 7.852          # printed V_min: from the right P
+    assert round(tr.min_speed(700.0, v.eta_gm_max, 279322.837), 3) == 7.849  # from the printed P
+    q = 0.9 * v.n_N / 1428.0
+    assert round(q, 3) == 1.261
+    m_n = tr.gear_count(v.V_max, 7.852, v.K_g, q)
+    assert round(m_n, 2) == 7.03                             # printed 4.41 (and 4.794 for the "+1" form)
+    assert round(tr.progression_ratio(v.V_max, 7.852, v.K_g, 4), 3) == 1.721   # eq. 68 as printed
+
+
+def test_bad_inputs_name_the_quantity():
+    with pytest.raises(InputError, match="t"):
+        tr.sprocket_torque(F, MASS, Z, 0.0, ETA_GUS)
+    with pytest.raises(InputError, match="r_vod"):
+        tr.planet_bearing_load(1.0, 1.0, -1.0, 3, 2)
