@@ -75,6 +75,9 @@ ENVELOPE_SAMPLES_PER_FLANK = 200
 PLANETARY_SWEEP_STEPS_PER_DEG = 2
 #: chord tolerance of the gear outlines in the planetary sweep (clearances of tenths of a mm)
 PLANETARY_SWEEP_CHORD_TOL_MM = 1e-3
+#: final drive carrier: steps per degree of the sweep of the planet pins against the planets' bores
+#: (pin and bore are concentric: the clearance is the same at every step; the sweep shows it is)
+CARRIER_PIN_SWEEP_STEPS_PER_DEG = 0.5
 
 # --- involute gear sheet / planetary set (gears/involute.py, gears/planetary.py) ------------
 #: least transverse contact ratio accepted (seed 004 Table 6, "рекомендованное торцовое перекрытие")

@@ -166,5 +166,40 @@ class InvoluteSpline:
             segs.append(Arc((0.0, 0.0), r0, a + p0, a + step - p0))
         return Loop(segs)
 
+    @property
+    def d_f_shaft(self) -> float:
+        """External (shaft) flat-root diameter m (z − 1.5 + 2x) (ISO 4156 flat root: D_ie = m(z − 1.5))."""
+        return self.m * (self.z - 1.5 + 2.0 * self.x)
+
+    def shaft_loop(self, tol: float = SPLINE_FIT_TOL_MM) -> Loop:
+        """Closed outline of the external spline (the carrier's shaft), centred on the origin, one tooth
+        on +x.  The shaft tooth fills the hub space (side fit, no flank clearance): half angle ψ(r)
+        from the flat root d_f_shaft to the major diameter d_a_shaft = D − 0.2 m."""
+        r0, r1 = 0.5 * self.d_f_shaft, 0.5 * self.d_a_shaft
+        if not r0 > self.r_b:
+            raise InputError("spline_z", self.z, f"shaft root radius {r0:.4f} mm below the base radius "
+                             f"{self.r_b:.4f} mm: the flank would not be an involute")
+        step = 2.0 * math.pi / self.z
+        p0, p1 = float(self.psi(r0)), float(self.psi(r1))
+        if not (p1 > 0 and 2.0 * p0 < step):
+            raise InputError("spline_z", self.z, "the shaft teeth close at the root or vanish at the tip")
+
+        def flank(u):  # lower flank (angle −ψ), root outwards
+            u = np.asarray(u, float)
+            ps = self.psi(u)
+            return np.column_stack([u * np.cos(-ps), u * np.sin(-ps)])
+
+        lower = fit_curve(flank, r0, r1, tol=tol)
+        upper = Spline(lower.knots[0] + lower.knots[-1] - lower.knots[::-1],
+                       (lower.poles * np.array([1.0, -1.0]))[::-1].copy(), lower.degree)  # mirrored, r1 -> r0
+        segs = []
+        for k in range(self.z):
+            a = k * step
+            segs.append(lower.transformed(a))
+            segs.append(Arc((0.0, 0.0), r1, a - p1, a + p1))
+            segs.append(upper.transformed(a))
+            segs.append(Arc((0.0, 0.0), r0, a + p0, a + step - p0))
+        return Loop(segs)
+
     def designation(self) -> str:
         return f"Эв. {self.D:g} x {self.m:g} GOST 6033-80 (z = {self.z}, x = {self.x:+.3f})"

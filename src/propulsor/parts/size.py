@@ -8,7 +8,8 @@ keeps both cores busy, so its wall time is CPU / `_CORES_USED`).  They are meant
 that cannot finish in minutes (policy.BUILD_SECONDS_MAX), not to predict a build to the second.
 
 Calibration (CPU s; default part file → variant):
-final drive 28.1 → 39.2 with the sweep density doubled, → 43.8 with every tooth count doubled;
+final drive 28.1 → 39.2 with the sweep density doubled, → 43.8 with every tooth count doubled (before the
+carrier; the carrier solid, its pin sweep and the strength step add 11.5 CPU s: 24.9 → 36.4 user s);
 non-circular pair (seed 002) 25.2 → 26.5 with the proof phases doubled, → 42.6 with the teeth doubled;
 cam mover (exponential law) 18.7 → 32.7 with 4 × the sweep steps; balancer 92.7 → 161.3 with 4 × the
 travel steps, → 143.5 with the sweep chord a quarter; road wheel 17.8.
@@ -30,11 +31,12 @@ def _wall(cpu_seconds: float, detail: str) -> SizeEstimate:
 
 
 def final_drive(p, part_file: Path | None = None) -> SizeEstimate:
-    """Solids ∝ teeth of sun + planet + ring; sweep ∝ steps × meshes × √(teeth / 92)."""
+    """Solids ∝ teeth of sun + planet + ring; sweep ∝ steps × meshes × √(teeth / 92); carrier and strength
+    a fixed 11.5 CPU s."""
     teeth = p.z_sun + p.z_planet + p.z_ring
     steps = round(360.0 * p.sweep_steps_per_deg)
     meshes = 2 * p.n_planets
-    cpu = 6.0 + 0.12 * teeth + 0.00257 * steps * meshes * math.sqrt(teeth / 92.0)
+    cpu = 6.0 + 11.5 + 0.12 * teeth + 0.00257 * steps * meshes * math.sqrt(teeth / 92.0)
     return _wall(cpu, f"{teeth} teeth, sweep {steps} steps × {meshes} meshes")
 
 

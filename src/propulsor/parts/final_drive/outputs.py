@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from ..pipeline import Pipeline, design_of
 from .design import FinalDriveDesign, body_offsets, design
+from .carrier import carrier, pin_sweep_results, start_pin_sweep
 from .strength import strength
 from .proofs import dms, outline_checks, sheet_and_conditions, start_sweep, sweep_results
 
@@ -45,6 +46,8 @@ def assembly_and_drawings(dd: FinalDriveDesign, w, built: dict) -> None:
         comps.append((f"planet_{k + 1}", solids["planet"], (float(c[0]), float(c[1]), zc(p.width_planet_mm)),
                       float(kin.planet_angle(0.0, k)) + off_ext))
     comps.append(("ring", solids["ring"], (0.0, 0.0, 0.0), kin.ring_rotation + off_ring))
+    if "carrier" in solids:  # the carrier's body frame is the assembly's at carrier angle 0
+        comps.append(("carrier", solids["carrier"], (0.0, 0.0, 0.0), 0.0))
     w.add_assembly("assembly", comps)
 
     def refs(g, da, dw=()):
@@ -99,5 +102,5 @@ def notes(dd: FinalDriveDesign, w, built: dict) -> None:
 
 
 build = Pipeline(lambda p, w: design_of(p, design),
-                 (sheet_and_conditions, strength, outline_checks, start_sweep, solids, sweep_results, assembly_and_drawings,
-                  notes))
+                 (sheet_and_conditions, strength, outline_checks, start_sweep, start_pin_sweep, solids, carrier, sweep_results,
+                  pin_sweep_results, assembly_and_drawings, notes))
