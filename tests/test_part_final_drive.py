@@ -43,7 +43,7 @@ def test_every_check_passes_and_every_file_is_listed(built):
     failed = [c["name"] for c in m["checks"] if not c["passed"]]
     assert failed == []
     names = {c["name"] for c in m["checks"]}
-    for solid in ("sun", "planet", "ring"):  # the shared checks ran on every solid
+    for solid in ("sun", "planet", "ring", "carrier"):  # the shared checks ran on every solid
         for what in ("BRepCheck_Analyzer valid", "STEP round trip", "genus", "self-intersecting triangle pairs",
                      "volume vs B-rep", "edges not shared by exactly 2 faces"):
             assert f"{solid}: {what}" in names
@@ -100,12 +100,12 @@ def _area(p):
 
 
 def test_assembly_names_and_places_its_components(built):
-    assert step_instance_names(built / "assembly.step") == ["sun", "planet_1", "planet_2", "planet_3", "ring"]
+    assert step_instance_names(built / "assembly.step") == ["sun", "planet_1", "planet_2", "planet_3", "ring",
+                                                            "carrier"]
     from OCP.BRepGProp import BRepGProp
     from OCP.GProp import GProp_GProps
 
-    solids = read_step_solids(built / "assembly.step")
-    assert len(solids) == 5
+    solids = read_step_solids(built / "assembly.step")[:5]
     a_w = _manifest(built)["derived"]["a_w_sun_planet_mm"]
     centres = []
     for s in solids:
@@ -227,3 +227,34 @@ def test_too_narrow_face_exits_1_naming_the_strength_check(tmp_path, capsys):
     assert rc == 1
     said = text.out + text.err
     assert "strength_sun_planet.S_H" in said and "strength_sun_planet.face_width" in said
+
+
+def test_carrier_solid_measured_and_its_pins_clear_the_planet_bores(built):
+    """The carrier's STEP volume against its parts computed apart (cheek, pins, journal, spline section
+    from the outline's polygon area), and the pin sweep over one carrier turn."""
+    from OCP.BRepGProp import BRepGProp
+    from OCP.GProp import GProp_GProps
+
+    from propulsor.geometry.involute_spline import InvoluteSpline
+    from propulsor.parts.final_drive import carrier as car
+
+    m = _manifest(built)
+    d = m["derived"]
+    (solid,) = read_step_solids(built / "carrier.step")
+    g = GProp_GProps()
+    BRepGProp.VolumeProperties_s(solid, g)
+    a_w = d["a_w_sun_planet_mm"]
+    R, t, r_pin = a_w + 55.0, 40.0, 27.5
+    pins = 3 * math.pi * r_pin ** 2 * (80.0 + 5.0)               # cheek top (z = -5) to the ring's top face
+    journal = math.pi * 60.0 ** 2 * (58 + 40 + 10)
+    poly = InvoluteSpline(120.0, 3.5, 34).shaft_loop().polyline(1e-4)
+    area = 0.5 * abs(np.dot(poly[:, 0], np.roll(poly[:, 1], 1)) - np.dot(poly[:, 1], np.roll(poly[:, 0], 1)))
+    expected = math.pi * R ** 2 * t + pins + journal + area * 140.0
+    assert g.Mass() == pytest.approx(expected, rel=1e-5)
+    assert d["carrier_cheek_radius_mm"] == pytest.approx(R)
+    checks = {c["name"]: c for c in m["checks"]}
+    for k in (1, 2, 3):
+        assert checks[f"carrier_pins_planet{k}.overlap_area"]["value"] == 0.0
+        # pin Ø55 in the planet bore Ø110: the bearing's radial space at every step
+        assert d[f"carrier_pins_planet{k}_min_clearance_mm"] == pytest.approx(27.5, abs=2e-3)
+    assert "180 steps" in (built / "report.md").read_text()
