@@ -308,3 +308,24 @@ def test_build_is_deterministic(out, tmp_path):
     a = {f["path"]: f["sha256"] for f in json.loads((out / "manifest.json").read_text())["files"]}
     b = {f["path"]: f["sha256"] for f in json.loads((again / "manifest.json").read_text())["files"]}
     assert a == b
+
+
+# ------------------------------------------------------------------ damper heat (seed 004 ch. 6)
+def test_damper_heat_table_plot_and_values(out, manifest):
+    from propulsor import policy
+    from propulsor.laws.damper_heat import Road, Station, cooling_coefficient, simulate
+
+    d = manifest["derived"]
+    rows = table(out, "damper_heat")
+    assert len(rows) == 5 * len(policy.DAMPER_HEAT_SPEEDS_KMH)
+    assert (out / "plots" / "damper_and_tyre_heat.png").stat().st_size > 10000
+    # the unsprung mass is the built balancer plus its road wheel
+    assert d["damper_heat_m1_unsprung_kg"] == pytest.approx(d["unsprung_balancer_plus_wheel_kg"], rel=1e-12)
+    # one row recomputed apart: the 1 m bumps at 30 km/h
+    st = Station(m1=d["damper_heat_m1_unsprung_kg"], C1=2.0e6, b1=2.0e3, b2=d["damper_heat_b2_Ns_per_m"])
+    r = simulate(st, Road(0.05, 1.0), 30.0 / 3.6, policy.DAMPER_HEAT_T_END_S)
+    row = next(x for x in rows if float(x["wavelength_m"]) == 1.0 and float(x["V_kmh"]) == pytest.approx(30.0))
+    assert float(row["steady_rise_K"]) == pytest.approx(r.mean_power / cooling_coefficient(st, r.V), rel=1e-9)
+    steady = [float(x["steady_rise_K"]) for x in rows]
+    assert d["damper_heat_max_steady_rise_K"] == pytest.approx(max(steady))
+    assert "Damper heat (seed 004 ch. 6)" in (out / "report.md").read_text()

@@ -78,6 +78,9 @@ PLANETARY_SWEEP_CHORD_TOL_MM = 1e-3
 #: final drive carrier: steps per degree of the sweep of the planet pins against the planets' bores
 #: (pin and bore are concentric: the clearance is the same at every step; the sweep shows it is)
 CARRIER_PIN_SWEEP_STEPS_PER_DEG = 0.5
+#: damper heat of the balancer's station (seed 004 ch. 6): speeds (km/h) and the integrated time (s)
+DAMPER_HEAT_SPEEDS_KMH = (5.0, 10.0, 20.0, 30.0, 40.0, 50.0)
+DAMPER_HEAT_T_END_S = 30.0
 
 # --- involute gear sheet / planetary set (gears/involute.py, gears/planetary.py) ------------
 #: least transverse contact ratio accepted (seed 004 Table 6, "рекомендованное торцовое перекрытие")

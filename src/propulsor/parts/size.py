@@ -12,7 +12,7 @@ final drive 28.1 → 39.2 with the sweep density doubled, → 43.8 with every to
 carrier; the carrier solid, its pin sweep and the strength step add 11.5 CPU s: 24.9 → 36.4 user s);
 non-circular pair (seed 002) 25.2 → 26.5 with the proof phases doubled, → 42.6 with the teeth doubled;
 cam mover (exponential law) 18.7 → 32.7 with 4 × the sweep steps; balancer 92.7 → 161.3 with 4 × the
-travel steps, → 143.5 with the sweep chord a quarter; road wheel 17.8.
+travel steps, → 143.5 with the sweep chord a quarter (before the damper heat, which adds 10 CPU s); road wheel 17.8.
 """
 
 from __future__ import annotations
@@ -75,7 +75,7 @@ def balancer(p, part_file: Path | None = None) -> SizeEstimate:
 
     tor = design_of(p, resolve, part_file).tor  # the build gets this same design
     steps = int(math.ceil(math.degrees(tor.beta_m - tor.beta0) * p.sweep_steps_per_deg)) + 1
-    cpu = 66.0 + 0.01 * p.n_stations + 0.236 * steps * (0.1 / p.sweep_chord_mm) ** 0.84
+    cpu = 66.0 + 10.0 + 0.01 * p.n_stations + 0.236 * steps * (0.1 / p.sweep_chord_mm) ** 0.84
     return _wall(cpu, f"travel sweep {steps} steps, sweep chord {p.sweep_chord_mm:g} mm")
 
 

@@ -9,6 +9,7 @@ import numpy as np
 
 from ...check import Check
 from ...parallel import start as start_in_fork
+from .damper import damper_heat_results, start_damper_heat
 from ..pipeline import Pipeline, design_of
 from .design import RHO_STEEL_KG_MM3, THESIS, BalancerModel, resolve
 from .plots import characteristic_plot, side_view_plot
@@ -248,4 +249,4 @@ def notes(m: BalancerModel, w, built: dict) -> None:
 
 build = Pipeline(lambda p, w: design_of(p, resolve, getattr(w, "source", None)),
                  (suspension_outputs, strength_proof, socket_ear_pad_checks, solids_and_sweep_start,
-                  travel_sweep_checks, notes))
+                  start_damper_heat, travel_sweep_checks, damper_heat_results, notes))

@@ -1,0 +1,141 @@
+"""Heating of the telescopic damper of one road-wheel station on a sinusoidal road (seed 004 ch. 6,
+eq. 73–75, Table 11): a two-mass model integrated with scipy.
+
+    m1·z1'' = −C1·(z1 − q) − b1·(z1' − q') − C2·(z1 − z2) − b2·(z1' − z2')     unsprung mass (wheel, balancer)
+    m2·z2'' = −C2·(z2 − z1) − b2·(z2' − z1')                                    sprung mass per wheel
+    q = a·sin ωt,  ω = 2π·V / L                                                 road, height 2a, wavelength L
+    m_a·c_steel·dT/dt = b2·(z2' − z1')² − V·S·ρ_air·c_air·(T − T_env)            eq. 74–75 (damper power in,
+                                                                                 air flow out)
+
+Readings of the printed model (each shown with numbers in ``tests/test_damper_heat.py``):
+
+* the printed ODE before eq. 74 writes the sprung mass's damper term as −b2·(z1' − z2'): a negative
+  damper that feeds energy into the body (the free motion grows instead of decaying); and the unsprung
+  mass's equation carries no damper reaction.  This module uses the damper between the masses with
+  the sign that dissipates, acting on both (``as_printed=True`` integrates the printed equations).
+* eq. 75 prints t = T_env + A / ht_steel: J divided by J/(kg·K) is not a temperature; the damper's mass
+  m_a = 20 kg of Table 11 completes it (t = T_env + A/(m_a·c_steel), as the seed's ch. 7 does with its
+  "temperature coefficient" 1/(m·c)).
+* eq. 74's cooling term ∫∫ X'·R·V·S·c_air is not a power; the cooling used is the air flow through the
+  damper's surface heated to the damper's temperature, V·S·ρ_air·c_air·(T − T_env) (ρ_air is in
+  Table 11; ch. 7 Table 12 writes the same flow coefficient V·A·ρ·c_air).
+* Table 11 gives the suspension stiffness "164 400 кН/град"; it is ch. 2's c = 164 400 N/m.
+
+m1, C1 and b1 (unsprung mass, tyre-on-track stiffness and damping) are not in the seed; the caller
+gives them (the balancer part: its built balancer plus road wheel, and its stated assumptions).
+
+Units SI: kg, N/m, N·s/m, m, s, W, °C.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from propulsor.errors import require_positive
+
+__all__ = ["Station", "Road", "TABLE_11", "simulate", "DamperRun", "speed_sweep", "cooling_coefficient"]
+
+#: seed 004 Table 11
+TABLE_11 = dict(m=3125.0, m_a=20.0, c_steel=487.0, T_env=20.0, S=0.247, rho_air=1.2, V=13.889, D=6.846,
+                c_air=1005.0, C=164400.0)
+
+
+@dataclass(frozen=True)
+class Station:
+    """One road-wheel station: masses, stiffnesses, damping, the damper's thermal data."""
+
+    m1: float                 # unsprung mass, kg
+    C1: float                 # tyre/track radial stiffness, N/m
+    b1: float                 # tyre damping, N·s/m
+    m2: float = TABLE_11["m"]    # sprung mass per wheel, kg
+    C2: float = TABLE_11["C"]    # suspension stiffness at the wheel, N/m
+    b2: float = 3.426e4          # damper coefficient at the wheel, N·s/m (ch. 2 eq. 23, μ_mean)
+    m_a: float = TABLE_11["m_a"]
+    c_steel: float = TABLE_11["c_steel"]
+    S: float = TABLE_11["S"]
+    rho_air: float = TABLE_11["rho_air"]
+    c_air: float = TABLE_11["c_air"]
+    T_env: float = TABLE_11["T_env"]
+
+    def __post_init__(self):
+        for k in ("m1", "C1", "m2", "C2", "b2", "m_a", "c_steel", "S"):
+            require_positive(k, getattr(self, k))
+
+
+@dataclass(frozen=True)
+class Road:
+    height: float      # crest to trough, m (seed: 0.2 m; 0.05 m for the short bumps)
+    wavelength: float  # m
+
+    @property
+    def a(self) -> float:
+        return 0.5 * self.height
+
+
+def cooling_coefficient(st: Station, V: float) -> float:
+    """Air-flow cooling V·S·ρ_air·c_air, W/K (seed 004 eq. 74, Table 11)."""
+    return V * st.S * st.rho_air * st.c_air
+
+
+def _rhs(st: Station, road: Road, V: float, as_printed: bool):
+    w = 2.0 * math.pi * V / road.wavelength
+    a = road.a
+    k_air = cooling_coefficient(st, V)
+    heat = 1.0 / (st.m_a * st.c_steel)
+
+    def f(t, y):
+        z1, v1, z2, v2, T = y
+        q, dq = a * math.sin(w * t), a * w * math.cos(w * t)
+        if as_printed:
+            a1 = (-st.C1 * (z1 - q) - st.C2 * (z1 - z2) - st.b1 * (v1 - dq)) / st.m1
+            a2 = (-st.C2 * (z2 - z1) - st.b2 * (v1 - v2)) / st.m2
+        else:
+            Fd = st.b2 * (v2 - v1)
+            a1 = (-st.C1 * (z1 - q) - st.b1 * (v1 - dq) - st.C2 * (z1 - z2) + Fd) / st.m1
+            a2 = (-st.C2 * (z2 - z1) - Fd) / st.m2
+        P = st.b2 * (v2 - v1) ** 2
+        return [v1, a1, v2, a2, heat * (P - k_air * (T - st.T_env))]
+
+    return f, w
+
+
+@dataclass(frozen=True)
+class DamperRun:
+    V: float
+    t: np.ndarray
+    T: np.ndarray           # damper temperature, °C
+    z2: np.ndarray          # body motion, m
+    mean_power: float       # over the last excitation periods, W
+
+    @property
+    def rise(self) -> float:
+        return float(self.T[-1] - self.T[0])
+
+
+def simulate(st: Station, road: Road, V: float, t_end: float, n_out: int = 400, as_printed: bool = False,
+             rtol: float = 1e-7) -> DamperRun:
+    """Integrate the station at speed V (m/s) from rest at T_env for t_end seconds (scipy DOP853)."""
+    require_positive("t_end", t_end, "s")
+    f, w = _rhs(st, road, V, as_printed)
+    t_eval = np.linspace(0.0, t_end, n_out)
+    sol = solve_ivp(f, (0.0, t_end), [0.0, 0.0, 0.0, 0.0, st.T_env], method="DOP853", t_eval=t_eval,
+                    rtol=rtol, atol=1e-9, dense_output=True)
+    if not sol.success:  # pragma: no cover - a linear system with bounded forcing
+        raise RuntimeError(sol.message)
+    # mean damper power over the last whole periods (or the last quarter of the run at V = 0)
+    T_per = 2.0 * math.pi / w if w > 0 else t_end
+    n_per = max(1, int(0.25 * t_end / T_per))
+    ts = np.linspace(t_end - n_per * T_per, t_end, 200 * n_per + 1)
+    y = sol.sol(ts)
+    P = st.b2 * (y[3] - y[1]) ** 2
+    mean_P = float(np.trapezoid(P, ts) / (ts[-1] - ts[0])) if ts[-1] > ts[0] else 0.0
+    return DamperRun(V, sol.t, sol.y[4], sol.y[2], mean_P)
+
+
+def speed_sweep(st: Station, road: Road, speeds, t_end: float) -> list[DamperRun]:
+    """One :func:`simulate` per speed (m/s)."""
+    return [simulate(st, road, float(V), t_end) for V in speeds]
