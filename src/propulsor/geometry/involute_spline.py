@@ -145,7 +145,12 @@ class InvoluteSpline:
         Per space: involute flank (B-spline within tol of the exact involute), flat-root arc on
         D_f_hub, mirrored flank; hub-tooth tip arcs on D_a_hub between the spaces.
         """
-        r0, r1 = 0.5 * self.D_a_hub, 0.5 * self.D_f_hub
+        return self._flank_loop(0.5 * self.D_a_hub, 0.5 * self.D_f_hub, tol)
+
+    def _flank_loop(self, r0: float, r1: float, tol: float) -> Loop:
+        """z gaps of half angle ψ(r) between r0 and r1, centred on k·2π/z: flank r0 → r1 (B-spline within
+        tol of the involute), arc on r1, mirrored flank back to r0, arc on r0 to the next gap.  The hub's
+        hole (spaces, r0 = minor, r1 = major) and the shaft (teeth, r0 = root, r1 = tip) are both this."""
 
         def flank(u):  # u = r, lower flank (angle −ψ), from r0 outwards
             u = np.asarray(u, float)
@@ -179,27 +184,10 @@ class InvoluteSpline:
         if not r0 > self.r_b:
             raise InputError("spline_z", self.z, f"shaft root radius {r0:.4f} mm below the base radius "
                              f"{self.r_b:.4f} mm: the flank would not be an involute")
-        step = 2.0 * math.pi / self.z
         p0, p1 = float(self.psi(r0)), float(self.psi(r1))
-        if not (p1 > 0 and 2.0 * p0 < step):
+        if not (p1 > 0 and 2.0 * p0 < 2.0 * math.pi / self.z):
             raise InputError("spline_z", self.z, "the shaft teeth close at the root or vanish at the tip")
-
-        def flank(u):  # lower flank (angle −ψ), root outwards
-            u = np.asarray(u, float)
-            ps = self.psi(u)
-            return np.column_stack([u * np.cos(-ps), u * np.sin(-ps)])
-
-        lower = fit_curve(flank, r0, r1, tol=tol)
-        upper = Spline(lower.knots[0] + lower.knots[-1] - lower.knots[::-1],
-                       (lower.poles * np.array([1.0, -1.0]))[::-1].copy(), lower.degree)  # mirrored, r1 -> r0
-        segs = []
-        for k in range(self.z):
-            a = k * step
-            segs.append(lower.transformed(a))
-            segs.append(Arc((0.0, 0.0), r1, a - p1, a + p1))
-            segs.append(upper.transformed(a))
-            segs.append(Arc((0.0, 0.0), r0, a + p0, a + step - p0))
-        return Loop(segs)
+        return self._flank_loop(r0, r1, tol)
 
     def designation(self) -> str:
         return f"Эв. {self.D:g} x {self.m:g} GOST 6033-80 (z = {self.z}, x = {self.x:+.3f})"
