@@ -6,6 +6,11 @@ References the numbers are checked against:
   Table 10-5 "齿形系数 Y_Fa 及应力校正系数 Y_Sa" (GB/T 3480 ≡ ISO 6336-3), every row z = 17 ... 200 within 1 %.
 * Z_E = 189.8 √MPa for steel on steel (ISO 6336-2, 6.3 example value) and Z_H = 2.495 for α = 20°,
   x1 + x2 = 0, β = 0 (ISO 6336-2 Figure 5 reads 2.49 ... 2.5).
+* a complete DIN 3990 method B calculation (the method ISO 6336:1996 method B/C took over: load at the tip,
+  Y_Fa·Y_Sa·Y_ε) recorded by an independent open-source implementation, hanslhansl/din3990,
+  tests/test_1.py (z = 19/104, m = 4, x = 0.5/0.15, ρ_fP* = 0.25, d_a = 88/425.2, b = 48.64 mm,
+  F_t = 14 103.42 N): Z_H, Z_ε, Z_B, σ_H0, Y_Fa, Y_Sa, Y_ε, σ_F0 within 0.1 % (it is not a standard's
+  printed example: ISO/TR 6336-30's examples are helical and were not available here);
 * σ_H0 against the Hertz line contact at the pitch point computed independently from the radii of
   curvature (external and internal mesh).
 """
@@ -16,7 +21,7 @@ import pytest
 
 from propulsor.errors import InputError
 from propulsor.gears.gear_pair import GearPair
-from propulsor.gears.involute import SpurGear
+from propulsor.gears.involute import BasicRack, SpurGear
 from propulsor.gears.iso6336 import (MeshLoad, f_h_beta, k_h_beta_method_c, k_v_method_b, mesh_stress,
                                      tooth_form_factor, z_e, z_eps, z_h)
 from propulsor.gears.planetary import PlanetarySet
@@ -98,3 +103,23 @@ def test_final_drive_meshes_at_the_thesis_torque():
     assert pr.sigma_H < 0.6 * sp.sigma_H                     # concave ring flank
     assert 44 * 59 / sp.sigma_H > 1.0                        # within σ_Hmax = 44·HRC
     assert sp.sigma_F1 < 2198 / 1.75                         # within σ_Fmax = 1256 MPa
+
+
+def test_a_recorded_din3990_method_b_calculation():
+    """hanslhansl/din3990 tests/test_1.py: its printed intermediate values (see module docstring)."""
+    rack = BasicRack(rho_f_star=0.25)
+    pair = GearPair(SpurGear(19, 4.0, 0.5, rack), SpurGear(104, 4.0, 0.15, rack))
+    assert pair.a_w == pytest.approx(248.506843355171, rel=1e-9)
+    assert pair.epsilon_alpha(88.0, 425.2) == pytest.approx(1.5363235945832296, rel=1e-9)
+    F_t, b, m = 14103.41869503906, 48.64, 4.0
+    s = mesh_stress(pair, 88.0, 425.2, b, MeshLoad(F_t * 76.0 / 2000.0, 0.0))
+    assert s.F_t == pytest.approx(F_t, rel=1e-12)
+    assert s.Z_H == pytest.approx(2.3959406670899934, rel=1e-6)
+    assert s.Z_eps == pytest.approx(0.906214912960638, rel=1e-6)
+    assert s.Z_B == pytest.approx(1.00554704549864, rel=1e-6)
+    assert s.sigma_H0 == pytest.approx(875.3827378988153, rel=1e-3)     # Z_E 189.81 here, 189.8 there
+    assert s.Y_eps == pytest.approx(0.7381784037193403, rel=1e-6)
+    assert (s.Y_F1, s.Y_F2) == pytest.approx((2.246336378902072, 2.1616566798058514), rel=1e-3)
+    assert (s.Y_S1, s.Y_S2) == pytest.approx((1.9147262565947287, 2.008781657562889), rel=1e-3)
+    sF0 = [F_t / (b * m) * yf * ys * s.Y_eps for yf, ys in ((s.Y_F1, s.Y_S1), (s.Y_F2, s.Y_S2))]
+    assert sF0 == pytest.approx([230.15142071941582, 232.3547901900354], rel=1e-3)
