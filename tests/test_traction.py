@@ -91,6 +91,25 @@ def test_ch5_max_pull_min_speed_gears():
     assert round(tr.progression_ratio(v.V_max, 7.852, v.K_g, 4), 3) == 1.721   # eq. 68 as printed
 
 
+def test_table10_engine_characteristic_eq59_63():
+    e = tr.engine_characteristic(800.0, 2000.0)
+    # rows as printed (Table 10; its cells split over lines in the seed's text)
+    assert [round(x) for x in e["n_k"]] == [858, 1048, 1238, 1428, 1620, 1810, 2000, 2080]
+    assert [math.floor(x) for x in e["N_ek"]] == [320, 444, 542, 626, 711, 782, 800, 400]
+    assert [math.floor(x) for x in e["M_ek"]] == [3561, 4053, 4184, 4189, 4192, 4128, 3820, 1836]
+    assert round(e["N_vo"][0], 3) == 4.417 and [round(x) for x in e["N_vo"][-2:]] == [24, 26]
+    assert e["N_vsp"][0] == pytest.approx(28.0)
+    assert [math.floor(x) for x in e["N_total"]] == [41, 47, 55, 64, 75, 86, 100, 105]   # printed truncated
+    assert round(e["N_total"][5], 2) == 86.97
+    assert [math.floor(10 * x) / 10 for x in e["N_eob"][2:6]] == [486.8, 561.6, 635.9, 695.4]
+    assert [round(x) for x in (e["N_eob"][0], e["N_eob"][1], e["N_eob"][6], e["N_eob"][7])] == [279, 397, 700, 294]
+    assert [math.floor(x) for x in e["M_eob"]] == [3102, 3617, 3755, 3756, 3749, 3669, 3342, 1350]
+    # the printed cooling row is 0 in every mode, but the totals hold eq. 59's ejector losses
+    no_ej = [t - j for t, j in zip(e["N_total"], e["N_ej"])]
+    assert round(no_ej[0], 1) == 32.4 and round(e["N_ej"][0], 3) == 8.834
+    assert round(e["N_ej"][6]) == 48 and round(no_ej[6]) == 52
+
+
 def test_bad_inputs_name_the_quantity():
     with pytest.raises(InputError, match="t"):
         tr.sprocket_torque(F, MASS, Z, 0.0, ETA_GUS)

@@ -17,6 +17,9 @@ traction calculation (seed 004 ch. 4.1, 4.2 and ch. 5).
     N'_e = 1.2·N_e.ob                                                eq. 58
     P_max = (f_max·cos α_max + sin α_max)·M·g                        eq. 64
     V_min = 3600·max N_e.ob·η_gm / P_max                             eq. 65
+    n_k = n_N·n'_k,  N_ek = N'_e·N_k,  M_ek = 9550·N_ek/n_k              after eq. 58 (Table 8 of ch. 5)
+    N_ej = 0.06·N'_e·(n_k/n_N)²,  N_vo = 0.03·N'_e·(n_k/n_N)²,  N_vsp = 0.035·N'_e   eq. 59–61
+    N_e.ob = N_ek − N_ej − N_vo − N_vyp − N_vsp,  M_e.ob = 9550·N_e.ob/n_k           eq. 62–63 (Table 10)
     q = 0.9·n_N / n_M,   m_n = (lg V_max − lg V_min − lg K_g)/lg q    eq. 66
     q_ut = (V_max / (K_g·V_min))^(1/(m_n − 1))                       eq. 68
 
@@ -32,6 +35,8 @@ What the printed digits say (each one reproduced in ``tests/test_traction.py``):
 * eq. 46: P_r is printed 303 895.739 N, one newton below P_t + 0 = 303 896.739 N.
 * eq. 54 gives 7.28 kW for n_N = 2000, printed 7.08 kW; eq. 57 reproduces its printed 664.498 kW
   only with 7.08 kW and η_tr = 0.932.
+* Table 10 prints the ejector cooling N_ej (eq. 59) as 0 in every mode, yet its "total" and N_e.ob rows
+  include it: 41 kW in mode 1 = 4.417 + 28 + 8.834 (eq. 59 with n_vn = n_k), 100 kW in mode 7 = 24 + 28 + 48.
 * eq. 64 gives 279 232.837 N; printed 279 322.837 N (digits transposed). eq. 65's printed
   V_min = 7.852 km/h follows from the correct 279 232.837 N.
 * eq. 66 with the printed q = 1.261 gives m_n = 7.03, printed 4.41 (and 4.794 for the "+1" form);
@@ -50,7 +55,8 @@ from propulsor.errors import require_positive
 __all__ = ["G_ACC", "sprocket_torque", "power_ratio", "final_drive_torques", "planet_bearing_load",
            "track_forces", "TrackForces", "FinalDriveTorques", "Vehicle", "VEHICLE_004", "transmission_speed_loss",
            "rolling_loss_coefficient", "running_gear_speed_loss", "engine_power_required", "max_traction_force",
-           "min_speed", "gear_count", "progression_ratio", "transmission_efficiency"]
+           "min_speed", "gear_count", "progression_ratio", "transmission_efficiency", "ENGINE_004",
+           "engine_characteristic"]
 
 G_ACC = 9.81  # m/s², seed 004 eq. 40
 
@@ -196,3 +202,27 @@ def gear_count(V_max: float, V_min: float, K_g: float, q: float) -> float:
 def progression_ratio(V_max: float, V_min: float, K_g: float, m_n: int) -> float:
     """Refined geometric ratio step q_ut (seed 004 eq. 68)."""
     return (V_max / (K_g * V_min)) ** (1.0 / (m_n - 1))
+
+
+#: seed 004 ch. 5, "Таблица 8. Характеристики двигателя": relative speed n'_k and relative power N_k per mode
+ENGINE_004 = ((0.429, 0.4), (0.524, 0.556), (0.619, 0.678), (0.714, 0.783), (0.810, 0.889), (0.905, 0.978),
+              (1.0, 1.0), (1.04, 0.5))
+
+
+def engine_characteristic(N_e: float, n_N: float, modes=ENGINE_004, N_exhaust: float = 0.0) -> dict:
+    """External speed characteristic in the vehicle (seed 004 eq. 59–63, Table 10): per mode the speed,
+    power, torque, the losses of the engine's systems and what is left, kW, rpm, N·m."""
+    require_positive("N_e", N_e)
+    require_positive("n_N", n_N)
+    out = {k: [] for k in ("n_k", "N_ek", "M_ek", "N_ej", "N_vo", "N_vsp", "N_total", "N_eob", "M_eob")}
+    for rel_n, rel_N in modes:
+        n = n_N * rel_n
+        N = N_e * rel_N
+        ej = 0.06 * N_e * (n / n_N) ** 2
+        vo = 0.03 * N_e * (n / n_N) ** 2
+        vsp = 0.035 * N_e
+        tot = ej + vo + N_exhaust + vsp
+        for k, v in (("n_k", n), ("N_ek", N), ("M_ek", 9550.0 * N / n), ("N_ej", ej), ("N_vo", vo), ("N_vsp", vsp),
+                     ("N_total", tot), ("N_eob", N - tot), ("M_eob", 9550.0 * (N - tot) / n)):
+            out[k].append(v)
+    return out
