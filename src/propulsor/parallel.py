@@ -118,11 +118,25 @@ def fork_pool(workers: int) -> ProcessPoolExecutor | None:
     return pool
 
 
+def as_if_sent(obj):
+    """`obj` after the pickle round trip a forked worker's arguments and results go through.  Work run
+    inline gets the same copies, so that its files do not depend on where it ran (OCCT shapes are
+    pickled through their B-rep text: a -0.0 in the original comes back as 0.0)."""
+    import pickle
+
+    return pickle.loads(pickle.dumps(obj))
+
+
+def inline(fn, *args) -> Done:
+    """fn(*args) in this process, its arguments and result passed as a worker's would be."""
+    return Done(as_if_sent(fn(*as_if_sent(args))))
+
+
 def start(fn, *args):
     """Run fn(*args) in one forked process; returns a Future (a :class:`Done` when run inline)."""
     pool = fork_pool(1)
     if pool is None:
-        return Done(fn(*args))
+        return inline(fn, *args)
     fut = pool.submit(fn, *args)
     pool.shutdown(wait=False)
     return fut

@@ -22,7 +22,7 @@ from pathlib import Path
 from typing import Any
 
 from ..check import Check
-from ..parallel import Done, fork_pool, jobs_budget
+from ..parallel import fork_pool, inline, jobs_budget
 from ..params import params_to_dict, read_part_meta
 
 
@@ -127,8 +127,8 @@ class OutputWriter:
         self.progress(f"{name}: STEP, STL, 3MF and their checks (B-rep, STEP round trip, mesh)")
         pool = self._solid_pool()
         args = (str(self.folder), name, solid, expected_genus, volume, pool is not None)
-        self._solid_jobs.append((name, pool.submit(solid_files_and_checks, *args) if pool else Done(
-            solid_files_and_checks(*args))))
+        self._solid_jobs.append((name, pool.submit(solid_files_and_checks, *args) if pool else
+                                 inline(solid_files_and_checks, *args)))
         return rec
 
     def _solid_pool(self):
