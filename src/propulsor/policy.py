@@ -59,6 +59,12 @@ FD_STEP_REL = 1e-7
 FD_STEP_PHI_RAD = 1e-8
 #: central-difference step in phi for the arc length of an equidistant (rad)
 FD_STEP_ARC_RAD = 1e-6
+#: central-difference step (mm of rolling arc) of the gear's turning rate and of the residual in the
+#: meshing equation of a shaper with its own shift (gears.envelope.ShaperOnRackCentrode)
+SHAPER_MESH_FD_STEP_MM = 1e-4
+#: Newton stop of that meshing equation (mm of rolling arc) and its iteration limit
+SHAPER_MESH_STOP_MM = 1e-10
+SHAPER_MESH_ITERATIONS = 40
 #: x tolerance of the cusp search on an envelope, relative to the parameter
 CUSP_XATOL_REL = 1e-13
 #: x tolerance of the measuring-roller diameter (mm)

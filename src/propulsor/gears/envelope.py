@@ -38,10 +38,12 @@ import numpy as np
 from scipy.optimize import brentq, fsolve
 
 from ..errors import InputError
-from ..policy import ENVELOPE_SAMPLES_PER_FLANK, CUSP_XATOL_REL, FD_STEP_REL, ROUNDING_TOL, SOLVE_RESIDUAL_MM
+from ..policy import (ENVELOPE_SAMPLES_PER_FLANK, CUSP_XATOL_REL, FD_STEP_REL, ROUNDING_TOL, SHAPER_MESH_FD_STEP_MM,
+                      SHAPER_MESH_ITERATIONS, SHAPER_MESH_STOP_MM, SOLVE_RESIDUAL_MM)
 
 __all__ = [
-    "nearer_circle_crossing", "RackCentrode", "CircleCentrode", "ExternalCircleCentrode", "PitchCurveCentrode",
+    "nearer_circle_crossing", "RackCentrode", "CircleCentrode", "ExternalCircleCentrode", "ShaperOnRackCentrode",
+    "InternalCircleCentrode", "PitchCurveCentrode",
     "envelope_points", "EnvelopeCurve", "trim_crossing",
 ]
 
@@ -133,6 +135,110 @@ class ExternalCircleCentrode:
         return self.R * np.arctan2(C[:, 0], self.R - C[:, 1])
 
 
+@dataclass(frozen=True)
+class ShaperOnRackCentrode:
+    """A shaper cutter with its OWN profile shift x0 meshing with the imaginary rack that rolls on
+    the gear centrode (the gear's shift x): the gear's shift comes from the cutting position, not
+    from the shaper's x0 (Litvin & Fuentes-Aznar 2009, ch. 6: generation by a shaper as the mate of
+    the imaginary rack).
+
+    Rack frame (``RackCentrode``): rolling line eta = 0 touching the gear centrode at (s, 0).  A
+    shaper of reference radius R and shift x0 meshes with the same rack when its reference circle
+    rolls on the line eta = e = (x + x0) m (the rack's reference line lies x m above eta = 0 and
+    x0 m below the shaper's reference circle).  Gear flank, rack flank and shaper involute touch at
+    ONE point when the shaper's pitch point (s + c, e) lies on the rack flank's normal through the
+    rack's pitch point (s, 0) (Aronhold-Kennedy: the three instantaneous centres are collinear on
+    the common normal): c = +e cot(alpha) for the right flank (normal (cos a, sin a)), -e cot(alpha)
+    for the left.  So one side of a tooth is cut per pass (the shaper is re-phased per flank, as
+    for thinning).  With e = 0 this is ``ExternalCircleCentrode`` (x0 = -x).
+
+    Shaper frame as ``ExternalCircleCentrode``: centre (0, R), rolling point at the origin for
+    beta = (s + c)/R = 0.  ``point(s)`` / ``angle(s)`` are the shaper-frame point and tangent
+    direction that coincide with the rack's (s, 0) and its line, so ``envelope_points``' pose
+    X = G(s) + R(tau_g - tau_c)(P - C(s)) places the shaper exactly.
+
+    Meshing equation: the cutter normal passes through the instantaneous centre of the shaper
+    relative to the gear, I = (w_sr I_sr + k I_rg) / (w_sr + k) with w_sr = -1/R (shaper on the
+    rack), k = d tau_g / ds (rack on the gear), I_sr = (s + c, e), I_rg = (s, 0) (rack frame,
+    per unit arc).  On the involute I_sr and I_rg both lie on the normal, so the closed-form
+    shaper-on-line contact solves it for any k; on the tip round it is refined by Newton's method
+    (``contact_on``)."""
+
+    R: float
+    e: float
+    c: float
+
+    def _beta(self, s):
+        return (np.atleast_1d(np.asarray(s, float)) + self.c) / self.R
+
+    def point(self, s):
+        b = self._beta(s)
+        R = self.R
+        cb, sb = np.cos(b), np.sin(b)
+        # C_ext(beta) + R(beta) (-c, -e)
+        return np.column_stack([R * sb - cb * self.c + sb * self.e, R - R * cb - sb * self.c - cb * self.e])
+
+    def angle(self, s):
+        return self._beta(s)
+
+    def contact(self, P, N):
+        """Shaper-on-line contact (exact on the involute): the normal meets the rolling circle."""
+        return ExternalCircleCentrode(self.R).contact(P, N) - self.c
+
+    def _residual(self, s, P, N, gear):
+        R = self.R
+        b = self._beta(s)
+        xi = s + self.c
+        C = np.column_stack([R * np.sin(b), R - R * np.cos(b)])
+        Q = np.column_stack([xi, np.full_like(xi, self.e)]) + _rot(-b, P - C)
+        Nr = _rot(-b, N)
+        h = SHAPER_MESH_FD_STEP_MM
+        ta, tb = gear.angle(s - h), gear.angle(s + h)
+        k = np.angle(np.exp(1j * (tb - ta))) / (2 * h)
+        w = -1.0 / R
+        V = (w + k)[:, None] * Q - w * np.column_stack([xi, np.full_like(xi, self.e)]) \
+            - k[:, None] * np.column_stack([s, np.zeros_like(s)])
+        return V[:, 0] * Nr[:, 1] - V[:, 1] * Nr[:, 0]
+
+    def contact_on(self, P, N, gear):
+        """Meshing equation with the gear's turning rate (see the class docstring): Newton from the
+        shaper-on-line contact.  InputError naming ``z0`` when it does not converge."""
+        s = self.contact(P, N)
+        if self.e == 0.0:
+            return s
+        h = SHAPER_MESH_FD_STEP_MM
+        for _ in range(SHAPER_MESH_ITERATIONS):
+            f = self._residual(s, P, N, gear)
+            df = (self._residual(s + h, P, N, gear) - self._residual(s - h, P, N, gear)) / (2 * h)
+            df = np.where(np.abs(df) > 1e-300, df, 1e-300)
+            step = f / df
+            s = s - step
+            if np.max(np.abs(step)) < SHAPER_MESH_STOP_MM:
+                return s
+        raise InputError("z0", self.R, "the shaper's meshing equation did not converge",
+                         "the shaper is too large for the gear's curvature there")
+
+
+@dataclass(frozen=True)
+class InternalCircleCentrode:
+    """Pitch circle of an internal gear (ring) as a gear centrode for a cutter rolling inside it:
+    radius R about the origin, touched at the top (0, R) at s = 0 and run counter-clockwise, so
+    that the ring's body lies on the right of travel (as on ``PitchCurveCentrode``) and the
+    cutter's side (eta > 0 of a rack) points to the centre: G(s) = R(-sin(s/R), cos(s/R)),
+    tangent angle pi + s/R.  A rack of shift x_r rolling on it leaves a ring TOOTH of arc
+    thickness m(pi/2 + 2 x_r tan alpha) centred on +y, i.e. the ring shift of GOST 19274 /
+    ISO 21771 (space width m(pi/2 + 2 x tan alpha)) is x = -x_r."""
+
+    R: float
+
+    def point(self, s):
+        s = np.atleast_1d(np.asarray(s, float))
+        return np.column_stack([-self.R * np.sin(s / self.R), self.R * np.cos(s / self.R)])
+
+    def angle(self, s):
+        return math.pi + np.atleast_1d(np.asarray(s, float)) / self.R
+
+
 class PitchCurveCentrode:
     """Gear centrode of a non-circular gear: its pitch curve (``BodyPitchCurve``) run clockwise
     on the body from the tooth centre s_k of the shared arc-length frame (``ArcFrame``) by the
@@ -170,7 +276,7 @@ def envelope_points(piece, u, cutter, gear):
     T = piece.tangent(u)
     T = T / np.linalg.norm(T, axis=1)[:, None]
     N = np.column_stack([-T[:, 1], T[:, 0]])
-    s = cutter.contact(P, N)
+    s = cutter.contact_on(P, N, gear) if hasattr(cutter, "contact_on") else cutter.contact(P, N)
     theta = gear.angle(s) - cutter.angle(s)
     X = gear.point(s) + _rot(theta, P - cutter.point(s))
     return X, s

@@ -42,7 +42,8 @@ from ..laws.walking import LEG_PERIOD
 from ..policy import (FD_STEP_ARC_RAD, FD_STEP_PHI_RAD, FD_STEP_REL, NEWTON_STOP_MM, ROOT_XTOL_FINE,
                       SOLVE_RESIDUAL_MM, TIP_HEIGHT_TOL_MM)
 from .cutters import CutterSide, RackCutter, ShaperCutter
-from .envelope import EnvelopeCurve, ExternalCircleCentrode, PitchCurveCentrode, envelope_points, trim_crossing
+from .envelope import (EnvelopeCurve, ExternalCircleCentrode, PitchCurveCentrode, ShaperOnRackCentrode, envelope_points,
+                       trim_crossing)
 from .involute import BasicRack
 from .noncircular import PitchCurves, leg_breakpoints, whole_pitches
 
@@ -178,6 +179,7 @@ class ToothSpec:
     z0: int | None = None
     tip_min_mm: float = 0.0
     tip_floor: float = 0.5
+    shaper: ShaperCutter | None = None
 
     @property
     def h_tip(self) -> float:
@@ -195,9 +197,15 @@ class ToothSpec:
         return RackCutter(self.m, self.x, self.rack, self.thinning_mm).sides(u_top)
 
     def shaper_tools(self) -> tuple[CutterSide, CutterSide]:
-        """Right and left sides of the shaper z0 (x0 = -x: it meshes with the same imaginary
-        rack), its space centred on the bottom of its rolling circle; thinning widens the
-        shaper teeth by thinning/(2 r0) of rotation per flank."""
+        """Right and left sides of the shaper, its space centred on the bottom of its rolling
+        circle; thinning widens the shaper teeth by thinning/(2 r0) of rotation per flank.
+
+        ``shaper`` given (a catalogue cutter, ``gears.catalogue``): the shaper keeps its own x0 and
+        meshes with the gear's imaginary rack from the line e = (x + x0) m above the rack's
+        rolling line (``envelope.ShaperOnRackCentrode``), one flank per pass.  Otherwise a shaper
+        z0 with x0 = -x rolls on the pitch curve itself (``envelope.ExternalCircleCentrode``)."""
+        if self.shaper is not None:
+            return self._own_shift_shaper_tools()
         require(self.z0 is not None, "z0", self.z0, "a concave pitch curve needs a shaper cutter")
         try:
             sh = ShaperCutter(int(self.z0), self.m, -self.x, self.rack)
@@ -210,6 +218,24 @@ class ToothSpec:
         ang = -math.pi + math.pi / sh.z0 - self.thinning_mm / (2.0 * R0)
         base = sh.side(ExternalCircleCentrode(R0))
         return tuple(base.placed(ang, (0.0, R0), mir) for mir in (False, True))
+
+    def _own_shift_shaper_tools(self) -> tuple[CutterSide, CutterSide]:
+        sh = self.shaper
+        require(abs(sh.m - self.m) <= 1e-9 * self.m, "m", self.m, f"must equal the shaper's module {sh.m:g} mm")
+        try:
+            sh.tip_round  # the tip round must fit the shaper tooth (InputError otherwise)
+        except InputError as exc:
+            raise InputError("z0", sh.z0, f"the shaper z0 = {sh.z0}, x0 = {sh.x0:+g} cannot be made: {exc}") from None
+        R0 = sh.r0
+        e = (self.x + sh.x0) * self.m
+        c = e / math.tan(self.rack.alpha)
+        ang = -math.pi + math.pi / sh.z0 - self.thinning_mm / (2.0 * R0)
+        base = sh.side(ExternalCircleCentrode(R0))
+        out = []
+        for mir, cut in ((False, ShaperOnRackCentrode(R0, e, c)), (True, ShaperOnRackCentrode(R0, e, -c))):
+            b = base.placed(ang, (0.0, R0), mir)
+            out.append(CutterSide(b.fillet, b.fillet_range, b.flank, b.flank_range, cut, "shaper"))
+        return tuple(out)
 
 
 @dataclass
