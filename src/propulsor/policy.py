@@ -63,8 +63,14 @@ FD_STEP_ARC_RAD = 1e-6
 #: meshing equation of a shaper with its own shift (gears.envelope.ShaperOnRackCentrode)
 SHAPER_MESH_FD_STEP_MM = 1e-4
 #: Newton stop of that meshing equation (mm of rolling arc) and its iteration limit
-SHAPER_MESH_STOP_MM = 1e-10
-SHAPER_MESH_ITERATIONS = 40
+SHAPER_MESH_STOP_MM = 1e-8
+SHAPER_MESH_ITERATIONS = 60
+#: window (in shaper pitch radii) and samples of the bracket search of that equation
+SHAPER_MESH_WINDOW_R = 0.75
+SHAPER_MESH_SAMPLES = 48
+#: residual of that equation (relative, per mm of the distance to the instantaneous centre) below
+#: which the closed-form shaper-on-line contact is taken as exact (points of the involute)
+SHAPER_MESH_RESIDUAL = 1e-9
 #: x tolerance of the cusp search on an envelope, relative to the parameter
 CUSP_XATOL_REL = 1e-13
 #: x tolerance of the measuring-roller diameter (mm)

@@ -39,7 +39,8 @@ from scipy.optimize import brentq, fsolve
 
 from ..errors import InputError
 from ..policy import (ENVELOPE_SAMPLES_PER_FLANK, CUSP_XATOL_REL, FD_STEP_REL, ROUNDING_TOL, SHAPER_MESH_FD_STEP_MM,
-                      SHAPER_MESH_ITERATIONS, SHAPER_MESH_STOP_MM, SOLVE_RESIDUAL_MM)
+                      SHAPER_MESH_ITERATIONS, SHAPER_MESH_RESIDUAL, SHAPER_MESH_SAMPLES, SHAPER_MESH_STOP_MM,
+                      SHAPER_MESH_WINDOW_R, SOLVE_RESIDUAL_MM)
 
 __all__ = [
     "nearer_circle_crossing", "RackCentrode", "CircleCentrode", "ExternalCircleCentrode", "ShaperOnRackCentrode",
@@ -186,6 +187,9 @@ class ShaperOnRackCentrode:
         return ExternalCircleCentrode(self.R).contact(P, N) - self.c
 
     def _residual(self, s, P, N, gear):
+        """(f, lam): f = cross((w + k) Q - w I_sr - k I_rg, N) (zero when the normal of the cutter
+        point passes through the instantaneous centre I), lam = distance from the point to I along
+        its normal (rack frame)."""
         R = self.R
         b = self._beta(s)
         xi = s + self.c
@@ -198,25 +202,63 @@ class ShaperOnRackCentrode:
         w = -1.0 / R
         V = (w + k)[:, None] * Q - w * np.column_stack([xi, np.full_like(xi, self.e)]) \
             - k[:, None] * np.column_stack([s, np.zeros_like(s)])
-        return V[:, 0] * Nr[:, 1] - V[:, 1] * Nr[:, 0]
+        f = V[:, 0] * Nr[:, 1] - V[:, 1] * Nr[:, 0]
+        wk = np.where(np.abs(w + k) > 1e-300, w + k, 1e-300)
+        lam = -np.einsum("ij,ij->i", V, Nr) / wk
+        return f, lam
 
-    def contact_on(self, P, N, gear):
-        """Meshing equation with the gear's turning rate (see the class docstring): Newton from the
-        shaper-on-line contact.  InputError naming ``z0`` when it does not converge."""
-        s = self.contact(P, N)
-        if self.e == 0.0:
-            return s
-        h = SHAPER_MESH_FD_STEP_MM
+    def contact_on(self, P, N, gear, piece=None):
+        """Meshing equation with the gear's turning rate (see the class docstring).  Points of a
+        piece conjugate to the rack (``piece.conjugate_to_rack``: the shaper's involute) take the
+        closed-form shaper-on-line contact, exact there.  Of the
+        crossings of the cutter normal with the moving centrode within a window of half-width
+        ``policy.SHAPER_MESH_WINDOW_R`` r0 about the shaper-on-line contact, the one nearest to the
+        point (the convention of ``nearer_circle_crossing``), refined by bisection.
+        InputError naming ``z0`` when a normal crosses none."""
+        s0 = self.contact(P, N)
+        if self.e == 0.0 or getattr(piece, "conjugate_to_rack", False):
+            return s0  # the shaper's involute: exact (both centres on the normal)
+        f0, lam0 = self._residual(s0, P, N, gear)
+        exact = np.abs(f0) <= SHAPER_MESH_RESIDUAL * (1.0 + np.abs(lam0))
+        if np.all(exact):
+            return s0
+        out = s0.copy()
+        todo = ~exact
+        P, N, s0 = P[todo], N[todo], s0[todo]
+        if isinstance(gear, PitchCurveCentrode) and np.ndim(gear.s_k) == 1:
+            gear = PitchCurveCentrode(gear.curve, gear.frame, gear.s_k[todo])
+        out[todo] = self._bracketed(P, N, s0, gear)
+        return out
+
+    def _bracketed(self, P, N, s0, gear):
+        n = len(s0)
+        W = SHAPER_MESH_WINDOW_R * self.R
+        off = np.linspace(-W, W, SHAPER_MESH_SAMPLES)
+        S = (s0[:, None] + off[None, :]).ravel()
+        rep = lambda A: np.repeat(A, len(off), axis=0)
+        if isinstance(gear, PitchCurveCentrode) and np.ndim(gear.s_k) == 1:
+            g = PitchCurveCentrode(gear.curve, gear.frame, np.repeat(gear.s_k, len(off)))
+        else:
+            g = gear
+        f, lam = self._residual(S, rep(P), rep(N), g)
+        f, lam = f.reshape(n, -1), lam.reshape(n, -1)
+        cross = np.sign(f[:, :-1]) * np.sign(f[:, 1:]) <= 0
+        lam_mid = np.where(cross, np.abs(0.5 * (lam[:, :-1] + lam[:, 1:])), np.inf)
+        j = np.argmin(lam_mid, axis=1)
+        if not np.all(np.isfinite(lam_mid[np.arange(n), j])):
+            raise InputError("z0", self.R, "a cutter normal never passes through the instantaneous centre",
+                             "the shaper is too large for the gear's curvature there")
+        lo, hi = s0 + off[j], s0 + off[j + 1]
+        flo = f[np.arange(n), j]
+        # bisection on the bracket (the root stays bracketed)
         for _ in range(SHAPER_MESH_ITERATIONS):
-            f = self._residual(s, P, N, gear)
-            df = (self._residual(s + h, P, N, gear) - self._residual(s - h, P, N, gear)) / (2 * h)
-            df = np.where(np.abs(df) > 1e-300, df, 1e-300)
-            step = f / df
-            s = s - step
-            if np.max(np.abs(step)) < SHAPER_MESH_STOP_MM:
-                return s
-        raise InputError("z0", self.R, "the shaper's meshing equation did not converge",
-                         "the shaper is too large for the gear's curvature there")
+            sm = 0.5 * (lo + hi)
+            fm = self._residual(sm, P, N, gear)[0]
+            left = np.sign(fm) == np.sign(flo)
+            lo, flo, hi = np.where(left, sm, lo), np.where(left, fm, flo), np.where(left, hi, sm)
+            if np.max(hi - lo) < SHAPER_MESH_STOP_MM:
+                break
+        return 0.5 * (lo + hi)
 
 
 @dataclass(frozen=True)
@@ -276,7 +318,7 @@ def envelope_points(piece, u, cutter, gear):
     T = piece.tangent(u)
     T = T / np.linalg.norm(T, axis=1)[:, None]
     N = np.column_stack([-T[:, 1], T[:, 0]])
-    s = cutter.contact_on(P, N, gear) if hasattr(cutter, "contact_on") else cutter.contact(P, N)
+    s = cutter.contact_on(P, N, gear, piece) if hasattr(cutter, "contact_on") else cutter.contact(P, N)
     theta = gear.angle(s) - cutter.angle(s)
     X = gear.point(s) + _rot(theta, P - cutter.point(s))
     return X, s

@@ -77,7 +77,14 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
         tip = fit_piece(lambda ph: curve.offset(ph, h), hr[1], hl[1], tol)
         fla_l = fit_piece(Lf.flank, hl[0], Lf.flank.u0, tol)
         fil_l = fit_piece(Lf.fillet, Lf.fillet.u1, Lf.fillet.u0, tol)
-        units.append(([fil_r, fla_r, tip, fla_l, fil_l], R.phi_root, Lf.phi_root))
+        pieces = [fil_r, fla_r, tip, fla_l, fil_l]
+        # a shaper with its own x0 leaves its fillet start a few hundredths of a mm off the root
+        # equidistant (ToothSide.root_gap_mm): a straight bridge to the foot point
+        if R.root_gap_mm > OUTLINE_JOINT_TOL_MM:
+            pieces.insert(0, _line(curve.offset(np.array([R.phi_root]), -spec.h_root)[0], fil_r.start))
+        if Lf.root_gap_mm > OUTLINE_JOINT_TOL_MM:
+            pieces.append(_line(fil_l.end, curve.offset(np.array([Lf.phi_root]), -spec.h_root)[0]))
+        units.append((pieces, R.phi_root, Lf.phi_root))
     segs = []
     root_r = []
     hf = -spec.h_root
@@ -100,6 +107,13 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
     ph = np.linspace(0.0, 2 * math.pi / (1 if role == "driven" else n), 1441)
     return GeneratedGear(role, prof, teeth, min(root_r), curve.point(ph))
 
+
+
+def _line(a, b) -> Spline:
+    """Straight piece from a to b as a cubic B-spline (collinear poles)."""
+    a, b = np.asarray(a, float), np.asarray(b, float)
+    return Spline(np.array([0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0]),
+                  np.array([a, a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0, b]), 3)
 
 
 def _snap(segs: list, tol: float = OUTLINE_JOINT_TOL_MM) -> list:

@@ -29,6 +29,8 @@ from .params import NoncircularPairParams
 
 #: part-file keys of the quantities the tooth generators name in their errors
 _TOOTH_KEYS = {"m": "module_mm", "z_H": "driven_teeth", "z0": "shaper_teeth"}
+#: the same with a catalogue shaper (its z0 follows from d0 and m)
+_TOOTH_KEYS_D0 = {"m": "module_mm", "z_H": "driven_teeth", "z0": "shaper_d0_mm"}
 
 __all__ = ["Design", "PairDesign", "design", "pair_design", "design_generated", "design_sectors",
            "sector_design_table", "mounting", "gear_profiles"]
@@ -64,7 +66,21 @@ def _law(p: NoncircularPairParams) -> WalkingLaw:
 
 
 def _rack(p) -> BasicRack:
-    return BasicRack(alpha=math.radians(p.pressure_angle_deg))
+    """The ISO 53 rack of the part file's profile at its pressure angle (``gears.catalogue``)."""
+    from ...gears.catalogue import rack_profile
+
+    with input_names({"rack_profile": "rack_profile"}):
+        return rack_profile(p.rack_profile, math.radians(p.pressure_angle_deg))
+
+
+def shaper_of(p, m: float):
+    """The catalogue shaper (own z0, x0) of ``shaper_d0_mm`` at module m, or None (shaper_teeth, x0 = -x)."""
+    from ...gears.catalogue import catalogue_shaper
+
+    if p.shaper_d0_mm <= 0:
+        return None
+    with input_names({"d0": "shaper_d0_mm"}):
+        return catalogue_shaper(p.shaper_d0_mm, m, math.radians(p.pressure_angle_deg))
 
 
 def _thinning(p) -> float:
@@ -74,8 +90,9 @@ def _thinning(p) -> float:
 
 def _smoothing(p, law: WalkingLaw, m: float):
     """The blend: given (smoothing_deg > 0) or the smallest generable (choose_smoothing)."""
+    sh = shaper_of(p, m)
     cutter = CutterSpec(m=m, alpha=math.radians(p.pressure_angle_deg), x=p.driver_shift, x_H=-p.driver_shift,
-                        z0=p.shaper_teeth)
+                        z0=p.shaper_teeth if sh is None else sh.z0, shaper_x0=None if sh is None else sh.x0)
     z_H = p.driven_teeth
     if p.smoothing_deg > 0:
         sl = SmoothedWalkingLaw(law, math.radians(p.smoothing_deg))
@@ -126,9 +143,11 @@ def design_generated(p: NoncircularPairParams, progress=lambda s: None) -> Desig
     frame = ArcFrame(pc)
     rack = _rack(p)
     th = _thinning(p)
-    common = dict(m=m, thinning_mm=th, rack=rack, z0=p.shaper_teeth, tip_min_mm=p.tip_land_min_module * m)
+    sh = shaper_of(p, m)
+    common = dict(m=m, thinning_mm=th, rack=rack, z0=p.shaper_teeth if sh is None else sh.z0,
+                  tip_min_mm=p.tip_land_min_module * m, shaper=sh)
     g = sm.generability
-    with input_names(_TOOTH_KEYS):
+    with input_names(_TOOTH_KEYS if sh is None else _TOOTH_KEYS_D0):
         for chk, x in ((g.driver, p.driver_shift), (g.driven, -p.driver_shift)):
             if chk.concave:  # fail fast: the shaper this gear needs must exist
                 ToothSpec(x=x, **common).shaper_tools()

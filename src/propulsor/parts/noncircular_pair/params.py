@@ -47,6 +47,12 @@ class NoncircularPairParams:
                                  why="past it the driver teeth turn pointed")
     shaper_teeth: int = param(20, "", "z0 of the shaper cutter for concave pitch-curve stretches", min=6, max=200,
                               integer=True, why="largest disc shaper cutters (GOST 9323: d0 <= 200 mm at m >= 1)")
+    rack_profile: str = param("A", "", "ISO 53 basic rack profile of the cutting rack (A, B, C, D; ISO 53:1998 "
+                              "Table 1)", choices=("A", "B", "C", "D"))
+    shaper_d0_mm: float = param(0.0, "mm", "nominal pitch diameter of the catalogue shaper for concave stretches "
+                                "(GOST 9323 / DIN 1825: 25, 38, 50, 75, 100; its own z0 and x0); 0: a shaper of "
+                                "shaper_teeth with x0 = -x of the gear it cuts", min=0.0, max=100.0,
+                                why="the largest nominal diameter of the catalogue (gears/data/cutters.toml)")
     smoothing_deg: float = param(0.0, "deg", "half-width of the C2 blend at hand-over; 0: smallest generable",
                                  min=0.0, max=45.0, why="one leg's support phase is 90° wide")
     smoothing_max_deg: float = param(22.5, "deg", "largest blend half-width searched", min=0.0, max=45.0,
