@@ -212,8 +212,9 @@ class ShaperOnRackCentrode:
         piece conjugate to the rack (``piece.conjugate_to_rack``: the shaper's involute) take the
         closed-form shaper-on-line contact, exact there.  Of the
         crossings of the cutter normal with the moving centrode within a window of half-width
-        ``policy.SHAPER_MESH_WINDOW_R`` r0 about the shaper-on-line contact, the one nearest to the
-        point (the convention of ``nearer_circle_crossing``), refined by bisection.
+        ``policy.SHAPER_MESH_WINDOW_R`` r0 about the shaper-on-line contact s0, the one nearest to s0
+        (s0 is exact where the tip round meets the involute, so this follows the envelope's branch
+        from the flank), refined by bisection.
         InputError naming ``z0`` when a normal crosses none."""
         s0 = self.contact(P, N)
         if self.e == 0.0 or getattr(piece, "conjugate_to_rack", False):
@@ -243,7 +244,7 @@ class ShaperOnRackCentrode:
         f, lam = self._residual(S, rep(P), rep(N), g)
         f, lam = f.reshape(n, -1), lam.reshape(n, -1)
         cross = np.sign(f[:, :-1]) * np.sign(f[:, 1:]) <= 0
-        lam_mid = np.where(cross, np.abs(0.5 * (lam[:, :-1] + lam[:, 1:])), np.inf)
+        lam_mid = np.where(cross, np.abs(0.5 * (off[:-1] + off[1:]))[None, :], np.inf)
         j = np.argmin(lam_mid, axis=1)
         if not np.all(np.isfinite(lam_mid[np.arange(n), j])):
             raise InputError("z0", self.R, "a cutter normal never passes through the instantaneous centre",

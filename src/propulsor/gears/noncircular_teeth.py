@@ -274,10 +274,33 @@ def make_side(tool: CutterSide, cen: PitchCurveCentrode, h_root: float | None = 
     if h_root is None or not isinstance(tool.cutter, ShaperOnRackCentrode) or tool.cutter.e == 0.0:
         return ToothSide(fil, fla, tool.kind, False, ph0)
     curve = cen.curve
-    span = 2.0 * abs(tool.cutter.c) / float(cen.frame.pc.ds_dphi(np.array([ph0]))[0]) + FD_STEP_ARC_RAD
-    dist = lambda ph: float(np.linalg.norm(curve.offset(np.array([ph]), -h_root)[0] - X0[0]))
-    res = minimize_scalar(dist, bounds=(ph0 - span, ph0 + span), method="bounded", options={"xatol": MINIMIZE_XATOL})
-    return ToothSide(fil, fla, tool.kind, False, float(res.x), float(res.fun))
+    span = 4.0 * abs(tool.cutter.c) / float(cen.frame.pc.ds_dphi(np.array([ph0]))[0]) + FD_STEP_ARC_RAD
+    grid = ph0 + np.linspace(-span, span, 201)
+    E = curve.offset(grid, -h_root)
+
+    def foot(X):
+        """(phi of the foot on the root equidistant, signed height of X above it)."""
+        j = int(np.clip(np.argmin(np.linalg.norm(E - X[None, :], axis=1)), 1, len(grid) - 2))
+        dist = lambda ph: float(np.linalg.norm(curve.offset(np.array([ph]), -h_root)[0] - X))
+        ph = float(minimize_scalar(dist, bounds=(grid[j - 1], grid[j + 1]), method="bounded",
+                                   options={"xatol": MINIMIZE_XATOL}).x)
+        F = curve.offset(np.array([ph]), -h_root)[0]
+        return ph, float(np.dot(X - F, curve.normal(np.array([ph]))[0]))
+
+    # the tip circle of a re-phased shaper digs below the equidistant: the fillet is trimmed where it
+    # crosses it (the outline keeps the equidistant, a little more material than cut); where it
+    # stays above, the gap is bridged
+    u = np.linspace(fil.u0, fil.u1, 64)
+    heights = np.array([foot(X)[1] for X in fil(u)])
+    if heights[0] < 0.0 and np.any(heights > 0.0):
+        k = int(np.argmax(heights > 0.0))
+        from scipy.optimize import brentq
+
+        uc = brentq(lambda t: foot(fil.at(t))[1], u[k - 1], u[k], xtol=ROOT_XTOL_FINE)
+        fil = fil.with_range(uc, fil.u1)
+        return ToothSide(fil, fla, tool.kind, False, foot(fil.at(uc))[0], 0.0)
+    ph, h = foot(fil.at(fil.u0))
+    return ToothSide(fil, fla, tool.kind, False, ph, abs(h))
 
 
 def _trim_undercut(side: ToothSide, u_tip: float) -> None:
