@@ -25,6 +25,9 @@ OVERLAP_VOLUME_TOL_MM3 = 1e-3
 
 #: consecutive outline pieces meet (and a loop is closed) within this (mm)
 OUTLINE_JOINT_TOL_MM = 1e-6
+#: the same for outlines with teeth cut by a re-phased shaper (own x0): its tip hits meet the flank
+#: to a few nm (measured 4.8e-6 mm at most on seed 002), snapped like the others
+OUTLINE_JOINT_TOL_REPHASED_MM = 1e-5
 #: a finished outline (arm, shoe, carrier) must close within this (mm)
 OUTLINE_CLOSED_TOL_MM = 1e-7
 #: two radii closer than this (mm) are the same circle (sector outlines: one root arc, radial flank)
@@ -174,3 +177,16 @@ MESH_CHORD_LIMIT_MM = 0.01
 # --- build size (propulsor build --dry-run, parts.check_size) --------------------------------
 #: longest build accepted (s on the reference machine, 2 cores): past it the size estimate refuses
 BUILD_SECONDS_MAX = 600.0
+
+#: law search of the non-circular pair (gears.law_search): blend half-widths scanned (deg), hand-over
+#: values u_h / u scanned upwards for the first generable one, bisections between it and the last
+#: refused one (2^-10 of the scan step ~ 1e-5 u)
+LAW_SEARCH_DELTA_DEG = (3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 10.0, 12.0, 14.0, 17.0, 20.0, 24.0)
+LAW_SEARCH_UH_SCAN = (1.0, 1.01, 1.02, 1.03, 1.04, 1.05, 1.06, 1.07, 1.08, 1.09, 1.10, 1.12, 1.14, 1.17, 1.20)
+LAW_SEARCH_UH_BISECTIONS = 10
+#: law search: how many of the least-ripple generable blends (distinct shaper and ripple) the design
+#: tries to cut before it refuses
+LAW_SEARCH_TRIES = 4
+#: largest gap (in modules) between the fillet start of a re-phased shaper (own x0) and the root
+#: equidistant that the outline bridges with a straight piece; more is refused (InputError)
+ROOT_BRIDGE_MAX_MODULE = 0.1

@@ -44,7 +44,7 @@ from ..policy import (ENVELOPE_SAMPLES_PER_FLANK, CUSP_XATOL_REL, FD_STEP_REL, R
 
 __all__ = [
     "nearer_circle_crossing", "RackCentrode", "CircleCentrode", "ExternalCircleCentrode", "ShaperOnRackCentrode",
-    "InternalCircleCentrode", "PitchCurveCentrode",
+    "InternalCircleCentrode", "PitchCurveCentrode", "RoundEnvelope", "round_envelope",
     "envelope_points", "EnvelopeCurve", "trim_crossing",
 ]
 
@@ -372,6 +372,116 @@ class EnvelopeCurve:
         if fa * fb > 0:
             raise ValueError("radius not bracketed")
         return brentq(f, self.u0, self.u1, xtol=ROUNDING_TOL, rtol=ROUNDING_TOL, maxiter=200)
+
+
+@dataclass(frozen=True)
+class RoundEnvelope:
+    """Envelope of a tool's tip round (a circle of centre ``centre`` and radius ``rho`` in the cutter
+    frame) parametrised by the rolling arc s: the equidistant at rho of the trajectory of its centre,
+    X(s) = T(s) + side rho n(s) (n the unit normal of T').  No meshing-equation branch to choose:
+    used for the re-phased shaper (``ShaperOnRackCentrode``), whose instantaneous centre is no
+    circle.  u0 / u1 are the rolling arcs where the contact reaches the tip-land end of the round and
+    the involute (``round_envelope``).  The interface of ``EnvelopeCurve`` the generator uses."""
+
+    centre: tuple
+    rho: float
+    side: float
+    cutter: object
+    gear: object
+    u0: float
+    u1: float
+    kind: str = "fillet"
+
+    def _T(self, s):
+        s = np.atleast_1d(np.asarray(s, float))
+        C = np.repeat(np.asarray(self.centre, float)[None, :], len(s), axis=0)
+        theta = self.gear.angle(s) - self.cutter.angle(s)
+        return self.gear.point(s) + _rot(theta, C - self.cutter.point(s))
+
+    def contact_dir(self, s):
+        """Unit direction from the round's centre to the contact point, in the gear frame."""
+        s = np.atleast_1d(np.asarray(s, float))
+        h = SHAPER_MESH_FD_STEP_MM
+        d = self._T(s + h) - self._T(s - h)
+        d = d / np.linalg.norm(d, axis=1)[:, None]
+        return self.side * np.column_stack([-d[:, 1], d[:, 0]])
+
+    def __call__(self, s):
+        return self._T(s) + self.rho * self.contact_dir(s)
+
+    def at(self, s: float) -> np.ndarray:
+        return self(np.array([s]))[0]
+
+    def sample(self, n: int = ENVELOPE_SAMPLES_PER_FLANK) -> np.ndarray:
+        return self(np.linspace(self.u0, self.u1, n))
+
+    def with_range(self, u0, u1) -> "RoundEnvelope":
+        return RoundEnvelope(self.centre, self.rho, self.side, self.cutter, self.gear, float(u0), float(u1), self.kind)
+
+
+def round_envelope(fillet_piece, a_tip: float, a_flank: float, rho: float, cutter, gear) -> RoundEnvelope:
+    """The tip round's envelope from its junction with the involute (rolling arc s_f: the closed-form
+    contact of that point, exact there) to the instant its contact reaches the tip-land end a_tip,
+    followed continuously in s (``policy.SHAPER_MESH_WINDOW_R`` r0 either way).  InputError naming
+    ``z0`` when the contact never reaches the tip land."""
+    a = np.array([a_flank, a_tip])
+    P = fillet_piece.point(a)
+    T = fillet_piece.tangent(a)
+    T = T / np.linalg.norm(T, axis=1)[:, None]
+    N = np.column_stack([-T[:, 1], T[:, 0]])
+    s_f = float(cutter.contact(P[:1], N[:1])[0])
+    centre = tuple(float(v) for v in (P[0] - rho * _unit_radial(P, fillet_piece, a)[0]))
+    # which side of the centre trajectory: the one that reproduces the junction point
+    best = None
+    for side in (1.0, -1.0):
+        env = RoundEnvelope(centre, rho, side, cutter, gear, s_f, s_f)
+        X = env.at(s_f)
+        th = gear.angle(np.array([s_f])) - cutter.angle(np.array([s_f]))
+        Xj = gear.point(np.array([s_f]))[0] + _rot(th, P[:1] - cutter.point(np.array([s_f])))[0]
+        err = float(np.linalg.norm(X - Xj))
+        if best is None or err < best[0]:
+            best = (err, side)
+    side = best[1]
+    env = RoundEnvelope(centre, rho, side, cutter, gear, s_f, s_f)
+    # contact angle on the round (cutter frame) along s, relative to the junction; target: the tip end
+    W = 2.0 * SHAPER_MESH_WINDOW_R * cutter.R
+    u_tip = (P[1] - np.asarray(centre)) / rho
+    u_fl = (P[0] - np.asarray(centre)) / rho
+    target = math.atan2(u_fl[0] * u_tip[1] - u_fl[1] * u_tip[0], float(u_fl @ u_tip))
+
+    def ang(ss):
+        ss = np.atleast_1d(np.asarray(ss, float))
+        th = gear.angle(ss) - cutter.angle(ss)
+        v = _rot(-th, env.contact_dir(ss))
+        return np.arctan2(u_fl[0] * v[:, 1] - u_fl[1] * v[:, 0], v @ u_fl)
+
+    for direction in (1.0, -1.0):
+        ss = s_f + direction * np.linspace(0.0, W, SHAPER_MESH_SAMPLES * 4)
+        A = np.unwrap(ang(ss))
+        rel = (A - target) * math.copysign(1.0, target)
+        hit = np.nonzero(rel >= 0.0)[0]
+        if len(hit) and hit[0] > 0 and np.all(np.abs(A[: hit[0]]) <= abs(target)):
+            k = int(hit[0])
+            base = A[k - 1]
+            f = lambda q: float(base + np.angle(np.exp(1j * (ang(q)[0] - base))) - target)
+            s_t = brentq(f, ss[k - 1], ss[k], xtol=SHAPER_MESH_STOP_MM)
+            return env.with_range(s_t, s_f)
+    raise InputError("z0", cutter.R, "the contact of the shaper's tip round never reaches its tip land",
+                     "the shaper is too large for the gear's curvature there")
+
+
+def _unit_radial(P, piece, a):
+    """Outward unit radial of a (placed) circular piece at parameters a (from its tangent)."""
+    T = piece.tangent(a)
+    T = T / np.linalg.norm(T, axis=1)[:, None]
+    c1 = piece.point(a)
+    # the centre lies along the normal; the radial is the normal pointing away from it
+    N = np.column_stack([T[:, 1], -T[:, 0]])
+    probe = piece.point(a + 1e-3)
+    # chord midpoint bends towards the centre: pick the normal pointing away from it
+    mid = 0.5 * (c1 + probe)
+    sgn = np.sign(np.einsum("ij,ij->i", c1 - mid, N))
+    return N * np.where(sgn == 0, 1.0, sgn)[:, None]
 
 
 # =========================================================================== trimming

@@ -39,11 +39,11 @@ from scipy.optimize import fsolve, minimize_scalar
 
 from ..errors import InputError, require
 from ..laws.walking import LEG_PERIOD
-from ..policy import (FD_STEP_ARC_RAD, FD_STEP_PHI_RAD, FD_STEP_REL, MINIMIZE_XATOL, NEWTON_STOP_MM, ROOT_XTOL_FINE,
+from ..policy import (ROOT_BRIDGE_MAX_MODULE, FD_STEP_ARC_RAD, FD_STEP_PHI_RAD, FD_STEP_REL, MINIMIZE_XATOL, NEWTON_STOP_MM, ROOT_XTOL_FINE,
                       SOLVE_RESIDUAL_MM, TIP_HEIGHT_TOL_MM)
 from .cutters import CutterSide, RackCutter, ShaperCutter
 from .envelope import (EnvelopeCurve, ExternalCircleCentrode, PitchCurveCentrode, ShaperOnRackCentrode, envelope_points,
-                       trim_crossing)
+                       round_envelope, trim_crossing)
 from .involute import BasicRack
 from .noncircular import PitchCurves, leg_breakpoints, whole_pitches
 
@@ -269,10 +269,14 @@ def make_side(tool: CutterSide, cen: PitchCurveCentrode, h_root: float | None = 
     shaper with its own x0 (``ShaperOnRackCentrode``) and the root depth ``h_root``, phi_root is
     the foot of the fillet start on the root equidistant and root_gap_mm its distance."""
     fil, fla = tool.envelopes(cen)
-    X0, s0 = envelope_points(tool.fillet, np.array([fil.u0]), tool.cutter, cen)
-    ph0 = float(cen.phi(s0)[0])
     if h_root is None or not isinstance(tool.cutter, ShaperOnRackCentrode) or tool.cutter.e == 0.0:
-        return ToothSide(fil, fla, tool.kind, False, ph0)
+        X0, s0 = envelope_points(tool.fillet, np.array([fil.u0]), tool.cutter, cen)
+        return ToothSide(fil, fla, tool.kind, False, float(cen.phi(s0)[0]))
+    # re-phased shaper: the tip round's envelope followed in the rolling arc from the involute
+    a_tip, a_flank = tool.fillet_range
+    fil = round_envelope(tool.fillet, a_tip, a_flank, tool.fillet.piece.rho, tool.cutter, cen)
+    X0 = fil(np.array([fil.u0]))
+    ph0 = float(cen.phi(np.array([fil.u0]))[0])
     curve = cen.curve
     span = 4.0 * abs(tool.cutter.c) / float(cen.frame.pc.ds_dphi(np.array([ph0]))[0]) + FD_STEP_ARC_RAD
     grid = ph0 + np.linspace(-span, span, 201)
@@ -298,7 +302,8 @@ def make_side(tool: CutterSide, cen: PitchCurveCentrode, h_root: float | None = 
 
         uc = brentq(lambda t: foot(fil.at(t))[1], u[k - 1], u[k], xtol=ROOT_XTOL_FINE)
         fil = fil.with_range(uc, fil.u1)
-        return ToothSide(fil, fla, tool.kind, False, foot(fil.at(uc))[0], 0.0)
+        ph, h = foot(fil.at(uc))
+        return ToothSide(fil, fla, tool.kind, False, ph, abs(h))
     ph, h = foot(fil.at(fil.u0))
     return ToothSide(fil, fla, tool.kind, False, ph, abs(h))
 
@@ -470,7 +475,13 @@ def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame 
                             shaper = spec.shaper_tools()
                         tool = shaper[which]
                         break
-            sides.append(make_side(tool, PitchCurveCentrode(curve, frame, s_k), spec.h_root))
+            side = make_side(tool, PitchCurveCentrode(curve, frame, s_k), spec.h_root)
+            if side.root_gap_mm > ROOT_BRIDGE_MAX_MODULE * m:
+                raise InputError("z0", tool.cutter.R * 2.0 / m,
+                                 f"{role} tooth at phi = {float(frame.phi(np.array([s_k]))[0]):.4f} rad: the re-phased "
+                                 f"shaper leaves its fillet {side.root_gap_mm:.3f} mm off the root (more than "
+                                 f"{ROOT_BRIDGE_MAX_MODULE:g} m)", "a larger shaper or a wider blend")
+            sides.append(side)
         teeth_sides.append(sides)
 
     # tips: nominal height, shortened where the tip land is too thin

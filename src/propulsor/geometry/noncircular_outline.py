@@ -16,7 +16,7 @@ import numpy as np
 
 from ..gears.noncircular import PitchCurves
 from ..gears.noncircular_teeth import ArcFrame, ToothSpec, generate_teeth
-from ..policy import OUTLINE_JOINT_TOL_MM, SPLINE_FIT_TOL_MM
+from ..policy import OUTLINE_JOINT_TOL_MM, OUTLINE_JOINT_TOL_REPHASED_MM, SPLINE_FIT_TOL_MM
 from .bspline import fit_curve
 from .profile import Loop, Profile, Spline
 
@@ -102,7 +102,9 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
         root = fit_piece(lambda ph: curve.offset(ph, hf), ph_a, ph_b, tol)
         root_r.append(float(np.min(np.linalg.norm(root.poles, axis=1))))
         segs.append(root)
-    segs = _snap(segs)
+    rephased = any(sd.root_gap_mm > 0.0 or type(sd.fillet).__name__ == "RoundEnvelope"
+                   for pair in teeth_sides for sd in pair)
+    segs = _snap(segs, OUTLINE_JOINT_TOL_REPHASED_MM if rephased else OUTLINE_JOINT_TOL_MM)
     prof = Profile(Loop(segs), name=f"{role} generated z={z} m={m:g}")
     ph = np.linspace(0.0, 2 * math.pi / (1 if role == "driven" else n), 1441)
     return GeneratedGear(role, prof, teeth, min(root_r), curve.point(ph))

@@ -53,6 +53,12 @@ class NoncircularPairParams:
                                 "(GOST 9323 / DIN 1825: 25, 38, 50, 75, 100; its own z0 and x0); 0: a shaper of "
                                 "shaper_teeth with x0 = -x of the gear it cuts", min=0.0, max=100.0,
                                 why="the largest nominal diameter of the catalogue (gears/data/cutters.toml)")
+    law_search: bool = param(False, "", "search the blend shape (half-width and hand-over value) and the catalogue "
+                             "shaper for the least hub speed ripple under generability (gears/law_search.py); "
+                             "smoothing_deg, smoothing_max_deg, shaper_d0_mm and shaper_teeth are then not used")
+    center_distance_band_mm: float = param(5.0, "mm", "law search: largest |L - L_exact| (L_exact: closure of the "
+                                           "exact law at module_mm, driven_teeth)", min=0.0, min_exclusive=True,
+                                           max=100.0, why="a band of 100 mm is no longer the seed's drive")
     smoothing_deg: float = param(0.0, "deg", "half-width of the C2 blend at hand-over; 0: smallest generable",
                                  min=0.0, max=45.0, why="one leg's support phase is 90° wide")
     smoothing_max_deg: float = param(22.5, "deg", "largest blend half-width searched", min=0.0, max=45.0,
