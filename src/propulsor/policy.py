@@ -186,7 +186,9 @@ LAW_SEARCH_UH_SCAN = (1.0, 1.01, 1.02, 1.03, 1.04, 1.05, 1.06, 1.07, 1.08, 1.09,
 LAW_SEARCH_UH_BISECTIONS = 10
 #: law search: how many of the least-ripple generable blends (distinct shaper and ripple) the design
 #: tries to cut before it refuses
-LAW_SEARCH_TRIES = 4
+LAW_SEARCH_TRIES = 5
+#: ... and at most this many per shaper (so that the next shaper size gets its turn)
+LAW_SEARCH_TRIES_PER_SHAPER = 2
 #: largest gap (in modules) between the fillet start of a re-phased shaper (own x0) and the root
 #: equidistant that the outline bridges with a straight piece; more is refused (InputError)
 ROOT_BRIDGE_MAX_MODULE = 0.1

@@ -41,6 +41,7 @@ class GeneratedGear:
     teeth: list
     root_min_radius: float
     pitch_points: np.ndarray  # (n, 2) pitch curve in the body frame (reference)
+    root_gaps: tuple = ()     # straight root bridges (mm) of a re-phased shaper's sides (ToothSide.root_gap_mm)
 
     @property
     def undercut_teeth(self) -> int:
@@ -78,12 +79,16 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
         fla_l = fit_piece(Lf.flank, hl[0], Lf.flank.u0, tol)
         fil_l = fit_piece(Lf.fillet, Lf.fillet.u1, Lf.fillet.u0, tol)
         pieces = [fil_r, fla_r, tip, fla_l, fil_l]
-        # a shaper with its own x0 leaves its fillet start a few hundredths of a mm off the root
-        # equidistant (ToothSide.root_gap_mm): a straight bridge to the foot point
+        # a shaper with its own x0 cuts the root with its tip circle (ToothSide.root_piece) and may stop
+        # short of the root equidistant (ToothSide.root_gap_mm): a straight bridge to the foot point
+        if R.root_piece is not None:
+            pieces.insert(0, fit_piece(R.root_piece, R.root_piece.u0, R.root_piece.u1, tol))
+        if Lf.root_piece is not None:
+            pieces.append(fit_piece(Lf.root_piece, Lf.root_piece.u1, Lf.root_piece.u0, tol))
         if R.root_gap_mm > OUTLINE_JOINT_TOL_MM:
-            pieces.insert(0, _line(curve.offset(np.array([R.phi_root]), -spec.h_root)[0], fil_r.start))
+            pieces.insert(0, _line(curve.offset(np.array([R.phi_root]), -spec.h_root)[0], pieces[0].start))
         if Lf.root_gap_mm > OUTLINE_JOINT_TOL_MM:
-            pieces.append(_line(fil_l.end, curve.offset(np.array([Lf.phi_root]), -spec.h_root)[0]))
+            pieces.append(_line(pieces[-1].end, curve.offset(np.array([Lf.phi_root]), -spec.h_root)[0]))
         units.append((pieces, R.phi_root, Lf.phi_root))
     segs = []
     root_r = []
@@ -107,7 +112,8 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
     segs = _snap(segs, OUTLINE_JOINT_TOL_REPHASED_MM if rephased else OUTLINE_JOINT_TOL_MM)
     prof = Profile(Loop(segs), name=f"{role} generated z={z} m={m:g}")
     ph = np.linspace(0.0, 2 * math.pi / (1 if role == "driven" else n), 1441)
-    return GeneratedGear(role, prof, teeth, min(root_r), curve.point(ph))
+    gaps = tuple(float(sd.root_gap_mm) for pair in teeth_sides for sd in pair if sd.root_gap_mm > OUTLINE_JOINT_TOL_MM)
+    return GeneratedGear(role, prof, teeth, min(root_r), curve.point(ph), gaps)
 
 
 

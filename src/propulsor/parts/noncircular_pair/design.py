@@ -136,10 +136,9 @@ def _search_design(p: NoncircularPairParams, law: WalkingLaw, progress) -> Desig
     from ...gears.noncircular import centre_distance
     from ...gears.noncircular_teeth import ArcFrame, ToothSpec
     from ...geometry.noncircular_outline import generate_gear
-    from ...policy import LAW_SEARCH_TRIES
+    from ...policy import LAW_SEARCH_TRIES, LAW_SEARCH_TRIES_PER_SHAPER
 
-    require_module = p.module_mm
-    if not require_module > 0:
+    if not p.module_mm > 0:
         raise InputError("module_mm", p.module_mm, "the law search needs the module (catalogue cutters)")
     m = p.module_mm
     alpha = math.radians(p.pressure_angle_deg)
@@ -161,13 +160,15 @@ def _search_design(p: NoncircularPairParams, law: WalkingLaw, progress) -> Desig
     th = _thinning(p)
     tries = []
     seen = set()
+    per_shaper: dict = {}
     for pt in res.points:
         key = (pt.d0_mm, round(pt.ripple, 4))
-        if key in seen:
+        if key in seen or per_shaper.get(pt.d0_mm, 0) >= LAW_SEARCH_TRIES_PER_SHAPER:
             continue
         seen.add(key)
         if len(tries) >= LAW_SEARCH_TRIES:
             break
+        per_shaper[pt.d0_mm] = per_shaper.get(pt.d0_mm, 0) + 1
         entry = next(e for e in entries if e.d0_mm == pt.d0_mm)
         sh = entry.cutter(alpha)
         sl = SmoothedWalkingLaw(law, pt.delta, u_h=pt.u_h_rel * law.u)
