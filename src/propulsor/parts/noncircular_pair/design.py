@@ -80,10 +80,16 @@ def shaper_of(p, m: float):
     """The catalogue shaper (own z0, x0) of ``shaper_d0_mm`` at module m, or None (shaper_teeth, x0 = -x)."""
     from ...gears.catalogue import catalogue_shaper
 
+    alpha = math.radians(p.pressure_angle_deg)
     if p.shaper_d0_mm <= 0:
+        if p.shaper_own_x0:
+            from ...gears.cutters import ShaperCutter
+
+            with input_names({"z0": "shaper_teeth", "x0": "shaper_x0"}):
+                return ShaperCutter(p.shaper_teeth, m, p.shaper_x0, BasicRack(alpha=alpha, c_star=0.25))
         return None
     with input_names({"d0": "shaper_d0_mm"}):
-        return catalogue_shaper(p.shaper_d0_mm, m, math.radians(p.pressure_angle_deg))
+        return catalogue_shaper(p.shaper_d0_mm, m, alpha)
 
 
 def _thinning(p) -> float:
@@ -98,7 +104,9 @@ def _smoothing(p, law: WalkingLaw, m: float):
                         z0=p.shaper_teeth if sh is None else sh.z0, shaper_x0=None if sh is None else sh.x0)
     z_H = p.driven_teeth
     if p.smoothing_deg > 0:
-        sl = SmoothedWalkingLaw(law, math.radians(p.smoothing_deg))
+        with input_names({"u_h": "blend_hand_over"}):
+            sl = SmoothedWalkingLaw(law, math.radians(p.smoothing_deg),
+                                    u_h=p.blend_hand_over * law.u if p.blend_hand_over > 0 else None)
         L = math.pi * m * z_H / perimeter_per_mm(sl)
         g = check_generable(PitchCurves(sl, L), cutter)
         if not g.ok:
@@ -233,7 +241,7 @@ def design_generated(p: NoncircularPairParams, progress=lambda s: None) -> Desig
         dvn = generate_gear(pc, "driven", ToothSpec(x=-p.driver_shift, **common), frame)
     return Design("generated", law, sm.law, L, m, z_H, z_H // law.n, pc, smoothing=sm, driver=drv, driven=dvn,
                   ripple=sm.ripple, closure_error=sm.closure_error,
-                  shaper=None if sh is None else _entry_of(p, m))
+                  shaper=None if p.shaper_d0_mm <= 0 else _entry_of(p, m))
 
 
 def _entry_of(p, m):

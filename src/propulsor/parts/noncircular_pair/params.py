@@ -59,6 +59,13 @@ class NoncircularPairParams:
     center_distance_band_mm: float = param(5.0, "mm", "law search: largest |L - L_exact| (L_exact: closure of the "
                                            "exact law at module_mm, driven_teeth)", min=0.0, min_exclusive=True,
                                            max=100.0, why="a band of 100 mm is no longer the seed's drive")
+    blend_hand_over: float = param(0.0, "", "U_s at hand-over over u: the blend's second shape parameter (closure "
+                                   "by scaling U outside the windows); 0: the window-integral blend", min=0.0, max=2.0,
+                                   why="twice the mean ratio at hand-over is no longer a blend of this law")
+    shaper_own_x0: bool = param(False, "", "with shaper_d0_mm = 0: the shaper of shaper_teeth keeps its own shift "
+                                "shaper_x0 (re-phased per flank) instead of x0 = -x of the gear")
+    shaper_x0: float = param(0.0, "", "own profile shift x0 of the shaper (shaper_own_x0 = true)", min=-1.0, max=1.5,
+                             why="past it the shaper's teeth turn pointed")
     smoothing_deg: float = param(0.0, "deg", "half-width of the C2 blend at hand-over; 0: smallest generable",
                                  min=0.0, max=45.0, why="one leg's support phase is 90° wide")
     smoothing_max_deg: float = param(22.5, "deg", "largest blend half-width searched", min=0.0, max=45.0,
@@ -102,6 +109,9 @@ class NoncircularPairParams:
                 raise InputError("center_distance_mm", self.center_distance_mm,
                                  "generated teeth: give either module_mm (closure fixes L) or center_distance_mm "
                                  "(closure fixes the module), not both", f"module_mm = {self.module_mm}")
+            if self.blend_hand_over > 0 and not self.smoothing_deg > 0 and not self.law_search:
+                raise InputError("blend_hand_over", self.blend_hand_over,
+                                 "a hand-over value needs the blend half-width smoothing_deg > 0")
             if self.smoothing_deg > self.smoothing_max_deg:
                 raise InputError("smoothing_deg", self.smoothing_deg, f"must be <= smoothing_max_deg = {self.smoothing_max_deg}")
         for name in ("driver_bore_mm", "driven_bore_mm"):
