@@ -180,10 +180,10 @@ BUILD_SECONDS_MAX = 600.0
 
 #: law search of the non-circular pair (gears.law_search): blend half-widths scanned (deg), hand-over
 #: values u_h / u scanned upwards for the first generable one, bisections between it and the last
-#: refused one (2^-10 of the scan step ~ 1e-5 u)
+#: refused one (2^-7 of the scan step ~ 8e-5 u)
 LAW_SEARCH_DELTA_DEG = (3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 10.0, 12.0, 14.0, 17.0, 20.0, 24.0)
 LAW_SEARCH_UH_SCAN = (1.0, 1.01, 1.02, 1.03, 1.04, 1.05, 1.06, 1.07, 1.08, 1.09, 1.10, 1.12, 1.14, 1.17, 1.20)
-LAW_SEARCH_UH_BISECTIONS = 10
+LAW_SEARCH_UH_BISECTIONS = 7
 #: law search: how many of the least-ripple generable blends (distinct shaper and ripple) the design
 #: tries to cut before it refuses
 LAW_SEARCH_TRIES = 5
