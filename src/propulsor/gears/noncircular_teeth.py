@@ -388,7 +388,14 @@ def _tip_hit(side: ToothSide, curve: BodyPitchCurve, h: float, phi_guess: float,
     tol = SOLVE_RESIDUAL_MM
     if np.linalg.norm(g(sol)) > tol or not (min(fla.u0, fla.u1) - tol <= sol[0] <= max(fla.u0, fla.u1) + tol):
         return None
-    return float(sol[0]), float(sol[1])
+    return float(sol[0]), _near(float(sol[1]), phi_guess, curve)
+
+
+def _near(phi: float, ref: float, curve: BodyPitchCurve) -> float:
+    """phi moved by whole periods of the body pitch curve (2 pi driven, 2 pi / n driver) next to ref: a
+    solver may land on the same point one turn away."""
+    period = 2.0 * math.pi if curve.role == "driven" else 2.0 * math.pi / curve.pc.law.n
+    return float(phi - period * round((phi - ref) / period))
 
 
 def _tip_hits_batch(sides: list, s_k: np.ndarray, ph_k: np.ndarray, curve: BodyPitchCurve, frame: ArcFrame,
@@ -438,7 +445,7 @@ def _tip_hits_batch(sides: list, s_k: np.ndarray, ph_k: np.ndarray, curve: BodyP
         for j, i in enumerate(idx):
             tol = SOLVE_RESIDUAL_MM
             if res[j] <= tol and min(u0, u1) - tol <= u[j] <= max(u0, u1) + tol:
-                out[i] = (float(u[j]), float(ph[j]))
+                out[i] = (float(u[j]), _near(float(ph[j]), float(pk[j]), curve))
             else:
                 out[i] = _tip_hit(sides[i], curve, h, float(pk[j]), span)
     return out

@@ -104,6 +104,19 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
         else:  # driver: counter-clockwise = decreasing phi; one driver turn = 2 pi / n of phi
             while ph_b > ph_a:
                 ph_b -= 2 * math.pi / n
+        if abs(ph_b - ph_a) > math.pi / (1 if role == "driven" else n):
+            # the feet crossed (a re-phased shaper's space whose root land vanished): the two fillets
+            # cross above the root equidistant, both are trimmed at the crossing and meet there
+            j = (i + 1) % len(units)
+            first = segs[0] if j == 0 else nxt[0][0]
+            a_new, b_new, X = _trim_pair(segs[-1], first, tol)
+            segs[-1] = a_new
+            if j == 0:
+                segs[0] = b_new
+            else:
+                nxt[0][0] = b_new
+            root_r.append(float(np.hypot(*X)))
+            continue
         root = fit_piece(lambda ph: curve.offset(ph, hf), ph_a, ph_b, tol)
         root_r.append(float(np.min(np.linalg.norm(root.poles, axis=1))))
         segs.append(root)
@@ -115,6 +128,37 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
     gaps = tuple(float(sd.root_gap_mm) for pair in teeth_sides for sd in pair if sd.root_gap_mm > OUTLINE_JOINT_TOL_MM)
     return GeneratedGear(role, prof, teeth, min(root_r), curve.point(ph), gaps)
 
+
+
+def _trim_pair(a: Spline, b: Spline, tol: float):
+    """a ends past the start of b (their curves cross): both trimmed at the crossing, refitted.
+    RuntimeError when they do not cross."""
+    ta = np.linspace(a.knots[0], a.knots[-1], 801)
+    tb = np.linspace(b.knots[0], b.knots[-1], 801)
+    A, B = a._bs(ta), b._bs(tb)
+    best = None
+    for k in range(len(A) - 1):
+        p, r = A[k], A[k + 1] - A[k]
+        q, sv = B[:-1], B[1:] - B[:-1]
+        den = r[0] * sv[:, 1] - r[1] * sv[:, 0]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = ((q[:, 0] - p[0]) * sv[:, 1] - (q[:, 1] - p[1]) * sv[:, 0]) / den
+            u = ((q[:, 0] - p[0]) * r[1] - (q[:, 1] - p[1]) * r[0]) / den
+        hit = np.nonzero((np.abs(den) > 0) & (t >= 0) & (t <= 1) & (u >= 0) & (u <= 1))[0]
+        if len(hit):
+            m = int(hit[0])
+            best = (ta[k] + t[m] * (ta[k + 1] - ta[k]), tb[m] + u[m] * (tb[m + 1] - tb[m]))
+            break
+    if best is None:
+        raise RuntimeError("the fillets of a space whose root land vanished do not cross")
+    from scipy.optimize import fsolve
+
+    sol = fsolve(lambda y: a._bs(y[0]) - b._bs(y[1]), np.array(best), xtol=1e-13)
+    X = a._bs(sol[0])
+    a_new = fit_piece(lambda t: a._bs(np.atleast_1d(t)), a.knots[0], float(sol[0]), tol)
+    b_new = fit_piece(lambda t: b._bs(np.atleast_1d(t)), float(sol[1]), b.knots[-1], tol)
+    b_new = Spline(b_new.knots, np.vstack([a_new.end, b_new.poles[1:]]), b_new.degree)
+    return a_new, b_new, X
 
 
 def _line(a, b) -> Spline:
