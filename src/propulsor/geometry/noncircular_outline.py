@@ -108,13 +108,15 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
             # the feet crossed (a re-phased shaper's space whose root land vanished): the two fillets
             # cross above the root equidistant, both are trimmed at the crossing and meet there
             j = (i + 1) % len(units)
-            first = segs[0] if j == 0 else nxt[0][0]
-            a_new, b_new, X = _trim_pair(segs[-1], first, tol)
-            segs[-1] = a_new
+            nb = len(units[0][0])
+            head = segs[:nb] if j == 0 else nxt[0]
+            ka, kb, a_new, b_new, X = _trim_pairs(segs[-3:], head[:3], tol)
+            del segs[len(segs) - 3 + ka:]
+            segs.append(a_new)
+            head[kb] = b_new
+            del head[:kb]
             if j == 0:
-                segs[0] = b_new
-            else:
-                nxt[0][0] = b_new
+                segs[:nb] = head
             root_r.append(float(np.hypot(*X)))
             continue
         root = fit_piece(lambda ph: curve.offset(ph, hf), ph_a, ph_b, tol)
@@ -128,6 +130,19 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
     gaps = tuple(float(sd.root_gap_mm) for pair in teeth_sides for sd in pair if sd.root_gap_mm > OUTLINE_JOINT_TOL_MM)
     return GeneratedGear(role, prof, teeth, min(root_r), curve.point(ph), gaps)
 
+
+
+def _trim_pairs(tail: list, head: list, tol: float):
+    """The crossing of the last pieces ``tail`` of one tooth with the first pieces ``head`` of the next
+    nearest to their joint: (index in tail, index in head, trimmed tail piece, trimmed head piece, point)."""
+    for ka in range(len(tail) - 1, -1, -1):
+        for kb in range(len(head)):
+            try:
+                a_new, b_new, X = _trim_pair(tail[ka], head[kb], tol)
+            except RuntimeError:
+                continue
+            return ka, kb, a_new, b_new, X
+    raise RuntimeError("the fillets of a space whose root land vanished do not cross")
 
 
 def _trim_pair(a: Spline, b: Spline, tol: float):
