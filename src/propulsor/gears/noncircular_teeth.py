@@ -257,6 +257,7 @@ class ToothSide:
     phi_root: float  # driven angle of the root point (on the root equidistant) where the fillet starts
     root_gap_mm: float = 0.0
     root_piece: object = None  # re-phased shaper: envelope of its tip circle from the root to the fillet
+    fillet_is_flank: bool = False  # no fillet: the flank reaches the root equidistant (outline: one piece)
 
 
 def _flank_has_cusp(flank: EnvelopeCurve, u1: float, n: int = 48) -> bool:
@@ -318,7 +319,8 @@ def make_side(tool: CutterSide, cen: PitchCurveCentrode, h_root: float | None = 
             uc = brentq(lambda t: foot(fla.at(t))[1], uf[k - 1], uf[k], xtol=ROOT_XTOL_FINE)
             um = uc + 0.01 * (fla.u1 - uc)
             ph, h = foot(fla.at(uc))
-            return ToothSide(fla.with_range(uc, um), fla.with_range(um, fla.u1), tool.kind, False, ph, abs(h))
+            return ToothSide(fla.with_range(uc, um), fla.with_range(um, fla.u1), tool.kind, False, ph, abs(h),
+                             fillet_is_flank=True)
     # past the round the shaper's tip circle (radius r_a0 about its centre) cuts the root: its envelope,
     # followed in the rolling arc while the contact stays on the tip land, down to the equidistant
     # (trimmed there) or to its deepest point (bridged from there)
@@ -341,6 +343,11 @@ def make_side(tool: CutterSide, cen: PitchCurveCentrode, h_root: float | None = 
     v = np.column_stack([v[:, 0] * cd[:, 0] - v[:, 1] * cd[:, 1], v[:, 1] * cd[:, 0] + v[:, 0] * cd[:, 1]])
     valid = np.arccos(np.clip(v @ t_e, -1.0, 1.0)) <= lim
     n_ok = int(np.argmin(valid)) if not np.all(valid) else len(ss)
+    # the tip circle's envelope must run on from the round's (no cusp at the junction)
+    d1 = env.at(s_t) - env.at(ss[1])
+    d2 = fil.at(s_t + 1e-3 * (fil.u1 - s_t)) - X_t
+    if float(d1 @ d2) <= 0.0:
+        n_ok = 0
     if n_ok >= 2:
         hs = np.array([foot(X)[1] for X in env(ss[:n_ok])])
         below = np.nonzero(hs <= 0.0)[0]
@@ -364,7 +371,7 @@ def make_side(tool: CutterSide, cen: PitchCurveCentrode, h_root: float | None = 
 def _trim_undercut(side: ToothSide, u_tip: float) -> None:
     """Undercut per tooth: the flank envelope below the tip turns back
     (cusp) and the fillet trochoid crosses it; keep the outer boundary (``trim_crossing``)."""
-    if not _flank_has_cusp(side.flank, u_tip):
+    if side.fillet_is_flank or not _flank_has_cusp(side.flank, u_tip):
         return
     cross = trim_crossing(side.fillet, side.flank.with_range(side.flank.u0, u_tip))
     if cross is not None:

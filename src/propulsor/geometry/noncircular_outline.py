@@ -78,22 +78,24 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
         tip = fit_piece(lambda ph: curve.offset(ph, h), hr[1], hl[1], tol)
         fla_l = fit_piece(Lf.flank, hl[0], Lf.flank.u0, tol)
         fil_l = fit_piece(Lf.fillet, Lf.fillet.u1, Lf.fillet.u0, tol)
-        pieces = [fil_r, fla_r, tip, fla_l, fil_l]
+        # a side whose flank reaches the root itself (ToothSide.fillet_is_flank) is one piece
+        if R.fillet_is_flank:
+            fil_r = fla_r = fit_piece(R.flank, R.fillet.u0, hr[0], tol)
+        if Lf.fillet_is_flank:
+            fla_l = fil_l = fit_piece(Lf.flank, hl[0], Lf.fillet.u0, tol)
+        pieces = [p_ for k_, p_ in enumerate([fil_r, fla_r, tip, fla_l, fil_l])
+                  if not (k_ == 0 and R.fillet_is_flank) and not (k_ == 4 and Lf.fillet_is_flank)]
         # a shaper with its own x0 cuts the root with its tip circle (ToothSide.root_piece) and may stop
         # short of the root equidistant (ToothSide.root_gap_mm): a straight bridge to the foot point
         if R.root_piece is not None:
             pieces.insert(0, fit_piece(R.root_piece, R.root_piece.u0, R.root_piece.u1, tol))
         if Lf.root_piece is not None:
             pieces.append(fit_piece(Lf.root_piece, Lf.root_piece.u1, Lf.root_piece.u0, tol))
-        if R.root_gap_mm > OUTLINE_JOINT_TOL_MM:
-            pieces.insert(0, _line(curve.offset(np.array([R.phi_root]), -spec.h_root)[0], pieces[0].start))
-        if Lf.root_gap_mm > OUTLINE_JOINT_TOL_MM:
-            pieces.append(_line(pieces[-1].end, curve.offset(np.array([Lf.phi_root]), -spec.h_root)[0]))
-        units.append((pieces, R.phi_root, Lf.phi_root))
+        units.append((pieces, R.phi_root, Lf.phi_root, R.root_gap_mm, Lf.root_gap_mm))
     segs = []
     root_r = []
     hf = -spec.h_root
-    for i, (unit, _phr, phl) in enumerate(units):
+    for i, (unit, _phr, phl, _gr, gl) in enumerate(units):
         segs.extend(unit)
         nxt = units[(i + 1) % len(units)]
         ph_a, ph_b = phl, nxt[1]
@@ -119,7 +121,14 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
                 segs[:nb] = head
             root_r.append(float(np.hypot(*X)))
             continue
-        root = fit_piece(lambda ph: curve.offset(ph, hf), ph_a, ph_b, tol)
+        g_a, g_b = gl, nxt[3]
+        if g_a > 0.0 or g_b > 0.0:
+            # a re-phased shaper's fillet may stop short of the root equidistant (ToothSide.root_gap_mm,
+            # its foot at phi_root): the root rises linearly in phi from one fillet start to the other
+            lift = lambda ph: g_a + (g_b - g_a) * (np.asarray(ph, float) - ph_a) / (ph_b - ph_a)
+            root = fit_piece(lambda ph: curve.offset(ph, hf + lift(ph)[:, None]), ph_a, ph_b, tol)
+        else:
+            root = fit_piece(lambda ph: curve.offset(ph, hf), ph_a, ph_b, tol)
         root_r.append(float(np.min(np.linalg.norm(root.poles, axis=1))))
         segs.append(root)
     rephased = any(sd.root_gap_mm > 0.0 or type(sd.fillet).__name__ == "RoundEnvelope"
@@ -174,13 +183,6 @@ def _trim_pair(a: Spline, b: Spline, tol: float):
     b_new = fit_piece(lambda t: b._bs(np.atleast_1d(t)), float(sol[1]), b.knots[-1], tol)
     b_new = Spline(b_new.knots, np.vstack([a_new.end, b_new.poles[1:]]), b_new.degree)
     return a_new, b_new, X
-
-
-def _line(a, b) -> Spline:
-    """Straight piece from a to b as a cubic B-spline (collinear poles)."""
-    a, b = np.asarray(a, float), np.asarray(b, float)
-    return Spline(np.array([0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0]),
-                  np.array([a, a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0, b]), 3)
 
 
 def _snap(segs: list, tol: float = OUTLINE_JOINT_TOL_MM) -> list:
