@@ -65,7 +65,7 @@ FD_STEP_ARC_RAD = 1e-6
 #: central-difference step (mm of rolling arc) of the gear's turning rate and of the residual in the
 #: meshing equation of a shaper with its own shift (gears.envelope.ShaperOnRackCentrode)
 SHAPER_MESH_FD_STEP_MM = 1e-4
-#: Newton stop of that meshing equation (mm of rolling arc) and its iteration limit
+#: bisection stop of that meshing equation on the tip round (mm of rolling arc) and its iteration limit
 SHAPER_MESH_STOP_MM = 1e-8
 SHAPER_MESH_ITERATIONS = 60
 #: window (in shaper pitch radii) and samples of the bracket search of that equation
