@@ -232,7 +232,9 @@ def test_transmission_csv(seed002):
     assert phi[0] == 0.0 and np.all(np.diff(phi) > 0) and phi[-1] < 2 * math.pi
     # the smoothed law of the manifest, independently: closure exact, theta(2 pi) = 2 pi n
     d = _manifest(seed002)["derived"]
-    sl = SmoothedWalkingLaw(WalkingLaw(**SEED_002), d["smoothing_rad"])
+    law = WalkingLaw(**SEED_002)
+    u_h = d["blend_u_h_over_u"] * law.u if "blend_u_h_over_u" in d else None  # the law search's hand-over value
+    sl = SmoothedWalkingLaw(law, d["smoothing_rad"], u_h=u_h)
     assert np.allclose(th_law, sl.theta(phi), atol=1e-12)
     assert abs(float(sl.theta(2 * math.pi)) - 8 * math.pi) < 1e-9
     # the teeth deliver the law to a fraction of a tooth: |theta_actual - theta_law| < 1 mrad * U
