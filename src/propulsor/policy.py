@@ -190,5 +190,5 @@ LAW_SEARCH_TRIES = 5
 #: ... and at most this many per shaper (so that the next shaper size gets its turn)
 LAW_SEARCH_TRIES_PER_SHAPER = 2
 #: largest gap (in modules) between the fillet start of a re-phased shaper (own x0) and the root
-#: equidistant that the outline bridges with a straight piece; more is refused (InputError)
+#: equidistant that the outline closes by lifting the root; more is refused (InputError)
 ROOT_BRIDGE_MAX_MODULE = 0.1

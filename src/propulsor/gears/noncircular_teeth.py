@@ -248,7 +248,8 @@ class ToothSide:
     own x0 cuts each flank in its own pass with its pitch point ahead of the rack's by
     c = e cot(alpha) (``envelope.ShaperOnRackCentrode``); its tip circle then generates a root a few
     hundredths of a mm off the equidistant, and phi_root is the foot of the fillet start on the
-    equidistant (the outline bridges the gap with a straight piece, ``geometry.noncircular_outline``)."""
+    equidistant (the outline lifts the root linearly in phi between the fillet starts of a space,
+    ``geometry.noncircular_outline``)."""
 
     fillet: EnvelopeCurve
     flank: EnvelopeCurve

@@ -186,7 +186,7 @@ def write_notes(w, d, pr, other, pr_other, other_note, p, mount):
                       f"{e.x0:+g}, h_a0* = {e.h_a0_star:g}, rho_a0* = {e.rho_a0_star:g}"
                       f"{'; x0 and rho_a0* are ours, see gears/data/cutters.toml' if e.source == 'ours' else ''}), "
                       f"re-phased per flank so that it cuts the rack's flank (gears/envelope.py, ShaperOnRackCentrode); "
-                      f"root bridged where its fillet stops short of the root equidistant: at most "
+                      f"root lifted where its fillet stops short of the root equidistant: at most "
                       f"{_root_bridge_max(d):.3f} mm")
             from ...gears.catalogue import rack_profile
 
@@ -237,7 +237,7 @@ def write_notes(w, d, pr, other, pr_other, other_note, p, mount):
 
 
 def _root_bridge_max(d) -> float:
-    """Largest straight bridge (mm) between a re-phased shaper's fillet and the root equidistant."""
+    """Largest lift (mm) of the root where a re-phased shaper's fillet stops short of the root equidistant."""
     return float(max([0.0] + [g for gear in (d.driver, d.driven) for g in getattr(gear, "root_gaps", ())]))
 
 
