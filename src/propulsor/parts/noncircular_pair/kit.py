@@ -50,6 +50,18 @@ def _kit_params(p: NoncircularPairParams, m: float, S: float, pr: Printer, j_n: 
     return load_params(NoncircularPairParams, params_to_dict(q))
 
 
+def _found_law(p: NoncircularPairParams, d) -> NoncircularPairParams:
+    """The law and shaper the full-size design found (law_search), fixed for the print scale: the
+    catalogue lists no shaper at a print module, the shaper is the same one scaled (z0 and its own x0)."""
+    if d.search is None:
+        return p
+    pt = d.search_tries[-1][0]
+    deg = math.degrees(pt.delta)
+    return dataclasses.replace(p, law_search=False, smoothing_deg=deg, smoothing_max_deg=max(p.smoothing_max_deg, deg),
+                               blend_hand_over=pt.u_h_rel, shaper_d0_mm=0.0, shaper_teeth=d.shaper.z0,
+                               shaper_own_x0=True, shaper_x0=d.shaper.x0)
+
+
 def _with_holes(profile: Profile, holes) -> Profile:
     return Profile(profile.outer, list(profile.holes) + list(holes), profile.name)
 
@@ -75,7 +87,7 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     j_n = printer.backlash_mm / JN_MEASURED_RATIO
     alpha = math.radians(p.pressure_angle_deg)
     for attempt in range(2):
-        q = _kit_params(p, m, S, printer, j_n, bores)
+        q = _kit_params(_found_law(p, full.d), m, S, printer, j_n, bores)
         kd = pair_design(q)
         proof = prove(kd.d, q.proof_phases_per_tooth, 4, mount=kd.mount)
         s = proof.summary()
