@@ -5,11 +5,18 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 PART_FILES := $(sort $(wildcard parts/*.toml))
 PART_NAMES := $(patsubst parts/%.toml,%,$(PART_FILES))
+OUT        := output
+# a part's build is out of date when its part file, a file it names (the depfile the build writes),
+# the package's source or the installed versions (the venv stamp) are newer than its manifest
+SOURCES    := $(sort $(shell find src -type f \( -name '*.py' -o -name '*.toml' \) 2>/dev/null))
+MANIFESTS  := $(patsubst %,$(OUT)/%/manifest.json,$(PART_NAMES))
+DEPS       := $(OUT)/.deps
 PYTEST_WORKERS ?= 2
 # part types that have a print kit (tests/test_print_kits.py checks this against parts._KITS)
 KIT_TYPES  := noncircular_pair planetary_final_drive cam_mover road_wheel balancer polysector_gear
 KIT_FILES  := $(sort $(foreach t,$(KIT_TYPES),$(shell grep -l '^type *= *"$(t)"' $(PART_FILES))))
 KIT_NAMES  := $(patsubst parts/%.toml,print-%,$(KIT_FILES))
+KIT_MANIFESTS := $(patsubst parts/%.toml,$(OUT)/%_kit/manifest.json,$(KIT_FILES))
 PRINTER    ?= generic
 
 .PHONY: all install lock parts test check bench clean list print $(PART_NAMES) $(KIT_NAMES)
@@ -32,15 +39,23 @@ lock:
 	.venv-lock/bin/python -m pip freeze --all --exclude-editable > constraints.txt
 	rm -rf .venv-lock
 
-parts: $(PART_NAMES)
+parts: $(MANIFESTS)
 
-$(PART_NAMES): %: parts/%.toml $(STAMP)
-	$(BIN)/propulsor build $< --out output/$@
+# `make <name>`: that part, when out of date
+$(PART_NAMES): %: $(OUT)/%/manifest.json
 
-print: $(KIT_NAMES)
+$(OUT)/%/manifest.json: parts/%.toml $(SOURCES) $(STAMP)
+	$(BIN)/propulsor build $< --out $(OUT)/$* --depfile $(DEPS)/$*.mk
 
-$(KIT_NAMES): print-%: parts/%.toml $(STAMP)
-	$(BIN)/propulsor print $< --printer $(PRINTER) --out output/$*_kit
+print: $(KIT_MANIFESTS)
+
+$(KIT_NAMES): print-%: $(OUT)/%_kit/manifest.json
+
+$(OUT)/%_kit/manifest.json: parts/%.toml $(SOURCES) $(STAMP)
+	$(BIN)/propulsor print $< --printer $(PRINTER) --out $(OUT)/$*_kit --depfile $(DEPS)/$*_kit.mk
+
+# the files each build read (written by the builds themselves)
+-include $(wildcard $(DEPS)/*.mk)
 
 list: $(STAMP)
 	$(BIN)/propulsor list
@@ -56,4 +71,4 @@ bench: $(STAMP)
 	$(BIN)/python bench/run.py
 
 clean:
-	rm -rf output/*/ .pytest_cache .hypothesis .benchmarks
+	rm -rf $(OUT)/*/ $(DEPS) .pytest_cache .hypothesis .benchmarks

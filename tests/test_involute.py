@@ -563,3 +563,16 @@ def test_pinion_tip_corner_entering_the_ring_is_found():
     assert p.tip_interference_depth(samples=3001) <= 1e-9
     assert p.a_w + 71.0 / 2 > p.gear2.d_f / 2
     assert p.tip_interference_depth(d_a1=71.0, samples=3001) > 0.5
+
+
+def test_pinion_tip_past_the_ring_root_is_measured_as_deep_as_it_goes():
+    """A pinion tip that reaches past the ring's root circle strikes the rim (no tip clearance): the
+    sweep measures it as the radial depth past that circle.  z = 20 / 60, m = 3: a_w = 60 mm, ring root
+    radius 93.75 mm; with d_a1 = 69 mm the pinion tip reaches 94.5 mm, 0.75 mm into the rim (the tooth
+    branch alone saw about 0 here: its corners pass the ring's tooth spaces)."""
+    p = GearPair(SpurGear(20, 3.0), SpurGear(60, 3.0, internal=True))
+    reach = p.a_w + 69.0 / 2 - p.gear2.d_f / 2
+    assert reach == pytest.approx(0.75)
+    assert p.tip_interference_depth(d_a1=69.0, samples=3001) == pytest.approx(reach, abs=1e-6)
+    # with the standard tip (66 mm) the tip stays 0.75 mm inside the root circle: no interference
+    assert p.tip_interference_depth(d_a1=66.0, samples=3001) <= 1e-9

@@ -94,6 +94,21 @@ def _load_part(part_file: Path):
     return part_type, params, estimate or check_size(part_type, params, part_file)
 
 
+def _write_depfile(depfile: Path, target: Path, files) -> None:
+    """A make rule ``target: files`` (paths relative to the current folder), written in one step: the
+    files a build read besides its part file (``road_wheel_file`` …) become prerequisites of its
+    manifest."""
+    import os
+
+    def rel(p: Path) -> str:
+        return os.path.relpath(Path(p).resolve()).replace(" ", "\\ ")
+
+    depfile.parent.mkdir(parents=True, exist_ok=True)
+    tmp = depfile.with_name(depfile.name + f".tmp{os.getpid()}")
+    tmp.write_text(f"{rel(target)}: {' '.join(rel(f) for f in files)}\n")
+    os.replace(tmp, depfile)
+
+
 def _into_output(args, out: Path, keep: tuple[Path, ...], produce, progress) -> int:
     """Run ``produce(tmp) -> (failures, what)`` into a fresh temporary folder beside `out` with the
     lock of `out` held, then put the result in place of `out` in one step (or drop it when a check
@@ -129,6 +144,8 @@ def _into_output(args, out: Path, keep: tuple[Path, ...], produce, progress) -> 
             print(f"propulsor: {what}: built into {out} but {len(failures)} check(s) failed", file=sys.stderr)
             return EXIT_CHECK_FAILED
         progress(f"{what}: built into {out}, all checks passed")
+        if getattr(args, "depfile", None):
+            _write_depfile(Path(args.depfile), out / "manifest.json", keep)
         return EXIT_OK
     except InputError as exc:
         return _fail_input(exc)
@@ -313,6 +330,8 @@ def build_parser() -> argparse.ArgumentParser:
                    "build and write nothing")
     b.add_argument("--keep-failed", action="store_true", help="keep the outputs of a part whose checks fail")
     b.add_argument("-q", "--quiet", action="store_true", help="no progress messages")
+    b.add_argument("--depfile", help="after a successful build, write a make rule <out>/manifest.json: <the "
+                   "part file and every file it names> to this file (make includes it)")
     b.set_defaults(func=cmd_build)
 
     pr = sub.add_parser("print", help="a print kit: pieces at print scale with FDM allowances, a rig, plates")
@@ -326,6 +345,8 @@ def build_parser() -> argparse.ArgumentParser:
     pr.add_argument("--no-wait", action="store_true", help="exit 2 instead of waiting for the lock of --out")
     pr.add_argument("--keep-failed", action="store_true", help="keep the kit when a check fails")
     pr.add_argument("-q", "--quiet", action="store_true", help="no progress messages")
+    pr.add_argument("--depfile", help="after a successful kit, write a make rule <out>/manifest.json: <files "
+                    "read> to this file")
     pr.set_defaults(func=cmd_print)
 
     c = sub.add_parser("check", help="validate existing output files (a file or a folder)")

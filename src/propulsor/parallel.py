@@ -4,6 +4,10 @@ A part runs its long proof (a motion sweep) or the files and checks of its solid
 workers while it goes on; where `fork` is missing everything runs inline.  Forked children must
 not use OCCT's thread pool (it does not survive a fork): they mesh with parallel=False.
 
+How many: :func:`jobs_budget` (``PROPULSOR_JOBS``, or the cores shared among the builds of a
+``make -jN``); on a budget of one process everything runs inline, so that ``make -j2`` on two cores
+runs two processes.
+
 Workers never outlive the build: each asks the kernel for SIGKILL when its parent dies
 (``PR_SET_PDEATHSIG``, Linux) and leaves SIGINT to the parent, which stops them with
 :func:`kill_workers` when it is interrupted.  Inherited file descriptors named by
@@ -33,6 +37,43 @@ class Done:
 
     def result(self):
         return self.value
+
+
+def make_jobs(makeflags: str | None = None) -> int | None:
+    """The -j of a make running this process (MAKEFLAGS): N for -jN / --jobs=N, 0 for an unlimited -j,
+    None when not run by a parallel make."""
+    import re
+
+    flags = os.environ.get("MAKEFLAGS", "") if makeflags is None else makeflags
+    m = re.search(r"(?:^|\s)(?:-j\s*|--jobs=)(\d*)", flags)
+    if m is None:
+        return None
+    return int(m.group(1)) if m.group(1) else 0
+
+
+def jobs_budget() -> int:
+    """Processes one build may keep busy (itself and its forked workers).
+
+    ``PROPULSOR_JOBS`` when set (>= 1); under ``make -jN`` the machine's cores shared among the N
+    builds make may run at once (an unlimited -j: 1 each); otherwise the cores."""
+    cores = os.cpu_count() or 1
+    env = os.environ.get("PROPULSOR_JOBS", "").strip()
+    if env:
+        try:
+            return max(1, int(env))
+        except ValueError:
+            return 1
+    n = make_jobs()
+    if n is None or n == 1:
+        return cores
+    return max(1, cores // n) if n > 1 else 1
+
+
+def worker_cap(wanted: int) -> int:
+    """Forked workers a build may start beside itself: none on a budget of one process, else up to
+    the budget."""
+    b = jobs_budget()
+    return 0 if b <= 1 else min(wanted, b)
 
 
 def can_fork() -> bool:
@@ -66,8 +107,10 @@ def _worker_init(parent_pid: int, close_fds: tuple[int, ...]) -> None:
 
 
 def fork_pool(workers: int) -> ProcessPoolExecutor | None:
-    """A pool of forked workers, or None where fork is not available."""
-    if not can_fork():
+    """A pool of at most `workers` forked workers (:func:`worker_cap`), or None where fork is not
+    available or the build's budget allows no worker (the work then runs inline)."""
+    workers = worker_cap(workers)
+    if not can_fork() or workers < 1:
         return None
     pool = ProcessPoolExecutor(max_workers=workers, mp_context=mp.get_context("fork"),
                                initializer=_worker_init, initargs=(os.getpid(), tuple(sorted(_CLOSE_IN_WORKERS))))
@@ -75,11 +118,25 @@ def fork_pool(workers: int) -> ProcessPoolExecutor | None:
     return pool
 
 
+def as_if_sent(obj):
+    """`obj` after the pickle round trip a forked worker's arguments and results go through.  Work run
+    inline gets the same copies, so that its files do not depend on where it ran (OCCT shapes are
+    pickled through their B-rep text: a -0.0 in the original comes back as 0.0)."""
+    import pickle
+
+    return pickle.loads(pickle.dumps(obj))
+
+
+def inline(fn, *args) -> Done:
+    """fn(*args) in this process, its arguments and result passed as a worker's would be."""
+    return Done(as_if_sent(fn(*as_if_sent(args))))
+
+
 def start(fn, *args):
     """Run fn(*args) in one forked process; returns a Future (a :class:`Done` when run inline)."""
     pool = fork_pool(1)
     if pool is None:
-        return Done(fn(*args))
+        return inline(fn, *args)
     fut = pool.submit(fn, *args)
     pool.shutdown(wait=False)
     return fut

@@ -25,6 +25,9 @@ OVERLAP_VOLUME_TOL_MM3 = 1e-3
 
 #: consecutive outline pieces meet (and a loop is closed) within this (mm)
 OUTLINE_JOINT_TOL_MM = 1e-6
+#: the same for outlines with teeth cut by a re-phased shaper (own x0): its tip hits meet the flank
+#: to a few nm (measured 4.8e-6 mm at most on seed 002), snapped like the others
+OUTLINE_JOINT_TOL_REPHASED_MM = 1e-5
 #: a finished outline (arm, shoe, carrier) must close within this (mm)
 OUTLINE_CLOSED_TOL_MM = 1e-7
 #: two radii closer than this (mm) are the same circle (sector outlines: one root arc, radial flank)
@@ -59,6 +62,18 @@ FD_STEP_REL = 1e-7
 FD_STEP_PHI_RAD = 1e-8
 #: central-difference step in phi for the arc length of an equidistant (rad)
 FD_STEP_ARC_RAD = 1e-6
+#: central-difference step (mm of rolling arc) of the gear's turning rate and of the residual in the
+#: meshing equation of a shaper with its own shift (gears.envelope.ShaperOnRackCentrode)
+SHAPER_MESH_FD_STEP_MM = 1e-4
+#: bisection stop of that meshing equation on the tip round (mm of rolling arc) and its iteration limit
+SHAPER_MESH_STOP_MM = 1e-8
+SHAPER_MESH_ITERATIONS = 60
+#: window (in shaper pitch radii) and samples of the bracket search of that equation
+SHAPER_MESH_WINDOW_R = 0.75
+SHAPER_MESH_SAMPLES = 48
+#: residual of that equation (relative, per mm of the distance to the instantaneous centre) below
+#: which the closed-form shaper-on-line contact is taken as exact (points of the involute)
+SHAPER_MESH_RESIDUAL = 1e-9
 #: x tolerance of the cusp search on an envelope, relative to the parameter
 CUSP_XATOL_REL = 1e-13
 #: x tolerance of the measuring-roller diameter (mm)
@@ -179,3 +194,19 @@ POLYSECTOR_PROOF_CHORD_TOL_CONJUGATE_MM = 3e-5
 POLYSECTOR_CONJUGATE_DI = 1e-4
 #: ε_s measured on the outlines must match eq. 4 within this (issue 11)
 POLYSECTOR_EPS_S_MATCH = 0.02
+
+# --- non-circular pair: law search ---------------------------------------------------------------
+#: law search of the non-circular pair (gears.law_search): blend half-widths scanned (deg), hand-over
+#: values u_h / u scanned upwards for the first generable one, bisections between it and the last
+#: refused one (2^-7 of the scan step ~ 8e-5 u)
+LAW_SEARCH_DELTA_DEG = (3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 10.0, 12.0, 14.0, 17.0, 20.0, 24.0)
+LAW_SEARCH_UH_SCAN = (1.0, 1.01, 1.02, 1.03, 1.04, 1.05, 1.06, 1.07, 1.08, 1.09, 1.10, 1.12, 1.14, 1.17, 1.20)
+LAW_SEARCH_UH_BISECTIONS = 7
+#: law search: how many of the least-ripple generable blends (distinct shaper and ripple) the design
+#: tries to cut before it refuses
+LAW_SEARCH_TRIES = 5
+#: ... and at most this many per shaper (so that the next shaper size gets its turn)
+LAW_SEARCH_TRIES_PER_SHAPER = 2
+#: largest gap (in modules) between the fillet start of a re-phased shaper (own x0) and the root
+#: equidistant that the outline closes by lifting the root; more is refused (InputError)
+ROOT_BRIDGE_MAX_MODULE = 0.1

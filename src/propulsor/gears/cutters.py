@@ -80,6 +80,10 @@ class InvolutePiece:
     r_b: float
     beta: float
 
+    #: a shaper's involute meshes with the ISO 53 rack: with its own x0 the shaper-on-line contact
+    #: is exact on it (``envelope.ShaperOnRackCentrode``)
+    conjugate_to_rack = True
+
     def point(self, t):
         t = np.atleast_1d(np.asarray(t, float))
         r = self.r_b * np.sqrt(1.0 + t * t)
@@ -114,6 +118,10 @@ class PlacedPiece:
     def tangent(self, u):
         t = self._rot(self.piece.tangent(u))
         return t * np.array([-1.0, 1.0]) if self.mirror else t
+
+    @property
+    def conjugate_to_rack(self) -> bool:
+        return getattr(self.piece, "conjugate_to_rack", False)
 
 
 

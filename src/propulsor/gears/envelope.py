@@ -38,10 +38,13 @@ import numpy as np
 from scipy.optimize import brentq, fsolve
 
 from ..errors import InputError
-from ..policy import ENVELOPE_SAMPLES_PER_FLANK, CUSP_XATOL_REL, FD_STEP_REL, ROUNDING_TOL, SOLVE_RESIDUAL_MM
+from ..policy import (ENVELOPE_SAMPLES_PER_FLANK, CUSP_XATOL_REL, FD_STEP_REL, ROUNDING_TOL, SHAPER_MESH_FD_STEP_MM,
+                      SHAPER_MESH_ITERATIONS, SHAPER_MESH_RESIDUAL, SHAPER_MESH_SAMPLES, SHAPER_MESH_STOP_MM,
+                      SHAPER_MESH_WINDOW_R, SOLVE_RESIDUAL_MM)
 
 __all__ = [
-    "nearer_circle_crossing", "RackCentrode", "CircleCentrode", "ExternalCircleCentrode", "PitchCurveCentrode",
+    "nearer_circle_crossing", "RackCentrode", "CircleCentrode", "ExternalCircleCentrode", "ShaperOnRackCentrode",
+    "InternalCircleCentrode", "PitchCurveCentrode", "RoundEnvelope", "round_envelope",
     "envelope_points", "EnvelopeCurve", "trim_crossing",
 ]
 
@@ -133,6 +136,152 @@ class ExternalCircleCentrode:
         return self.R * np.arctan2(C[:, 0], self.R - C[:, 1])
 
 
+@dataclass(frozen=True)
+class ShaperOnRackCentrode:
+    """A shaper cutter with its OWN profile shift x0 meshing with the imaginary rack that rolls on
+    the gear centrode (the gear's shift x): the gear's shift comes from the cutting position, not
+    from the shaper's x0 (Litvin & Fuentes-Aznar 2009, ch. 6: generation by a shaper as the mate of
+    the imaginary rack).
+
+    Rack frame (``RackCentrode``): rolling line eta = 0 touching the gear centrode at (s, 0).  A
+    shaper of reference radius R and shift x0 meshes with the same rack when its reference circle
+    rolls on the line eta = e = (x + x0) m (the rack's reference line lies x m above eta = 0 and
+    x0 m below the shaper's reference circle).  Gear flank, rack flank and shaper involute touch at
+    ONE point when the shaper's pitch point (s + c, e) lies on the rack flank's normal through the
+    rack's pitch point (s, 0) (Aronhold-Kennedy: the three instantaneous centres are collinear on
+    the common normal): c = +e cot(alpha) for the right flank (normal (cos a, sin a)), -e cot(alpha)
+    for the left.  So one side of a tooth is cut per pass (the shaper is re-phased per flank, as
+    for thinning).  With e = 0 this is ``ExternalCircleCentrode`` (x0 = -x).
+
+    Shaper frame as ``ExternalCircleCentrode``: centre (0, R), rolling point at the origin for
+    beta = (s + c)/R = 0.  ``point(s)`` / ``angle(s)`` are the shaper-frame point and tangent
+    direction that coincide with the rack's (s, 0) and its line, so ``envelope_points``' pose
+    X = G(s) + R(tau_g - tau_c)(P - C(s)) places the shaper exactly.
+
+    Meshing equation: the cutter normal passes through the instantaneous centre of the shaper
+    relative to the gear, I = (w_sr I_sr + k I_rg) / (w_sr + k) with w_sr = -1/R (shaper on the
+    rack), k = d tau_g / ds (rack on the gear), I_sr = (s + c, e), I_rg = (s, 0) (rack frame,
+    per unit arc).  On the involute I_sr and I_rg both lie on the normal, so the closed-form
+    shaper-on-line contact solves it for any k; on the tip round it is refined by Newton's method
+    (``contact_on``)."""
+
+    R: float
+    e: float
+    c: float
+
+    def _beta(self, s):
+        return (np.atleast_1d(np.asarray(s, float)) + self.c) / self.R
+
+    def point(self, s):
+        b = self._beta(s)
+        R = self.R
+        cb, sb = np.cos(b), np.sin(b)
+        # C_ext(beta) + R(beta) (-c, -e)
+        return np.column_stack([R * sb - cb * self.c + sb * self.e, R - R * cb - sb * self.c - cb * self.e])
+
+    def angle(self, s):
+        return self._beta(s)
+
+    def contact(self, P, N):
+        """Shaper-on-line contact (exact on the involute): the normal meets the rolling circle."""
+        return ExternalCircleCentrode(self.R).contact(P, N) - self.c
+
+    def _residual(self, s, P, N, gear):
+        """(f, lam): f = cross((w + k) Q - w I_sr - k I_rg, N) (zero when the normal of the cutter
+        point passes through the instantaneous centre I), lam = distance from the point to I along
+        its normal (rack frame)."""
+        R = self.R
+        b = self._beta(s)
+        xi = s + self.c
+        C = np.column_stack([R * np.sin(b), R - R * np.cos(b)])
+        Q = np.column_stack([xi, np.full_like(xi, self.e)]) + _rot(-b, P - C)
+        Nr = _rot(-b, N)
+        h = SHAPER_MESH_FD_STEP_MM
+        ta, tb = gear.angle(s - h), gear.angle(s + h)
+        k = np.angle(np.exp(1j * (tb - ta))) / (2 * h)
+        w = -1.0 / R
+        V = (w + k)[:, None] * Q - w * np.column_stack([xi, np.full_like(xi, self.e)]) \
+            - k[:, None] * np.column_stack([s, np.zeros_like(s)])
+        f = V[:, 0] * Nr[:, 1] - V[:, 1] * Nr[:, 0]
+        wk = np.where(np.abs(w + k) > 1e-300, w + k, 1e-300)
+        lam = -np.einsum("ij,ij->i", V, Nr) / wk
+        return f, lam
+
+    def contact_on(self, P, N, gear, piece=None):
+        """Meshing equation with the gear's turning rate (see the class docstring).  Points of a
+        piece conjugate to the rack (``piece.conjugate_to_rack``: the shaper's involute) take the
+        closed-form shaper-on-line contact, exact there.  Of the
+        crossings of the cutter normal with the moving centrode within a window of half-width
+        ``policy.SHAPER_MESH_WINDOW_R`` r0 about the shaper-on-line contact s0, the one nearest to s0
+        (s0 is exact where the tip round meets the involute, so this follows the envelope's branch
+        from the flank), refined by bisection.
+        InputError naming ``z0`` when a normal crosses none."""
+        s0 = self.contact(P, N)
+        if self.e == 0.0 or getattr(piece, "conjugate_to_rack", False):
+            return s0  # the shaper's involute: exact (both centres on the normal)
+        f0, lam0 = self._residual(s0, P, N, gear)
+        exact = np.abs(f0) <= SHAPER_MESH_RESIDUAL * (1.0 + np.abs(lam0))
+        if np.all(exact):
+            return s0
+        out = s0.copy()
+        todo = ~exact
+        P, N, s0 = P[todo], N[todo], s0[todo]
+        if isinstance(gear, PitchCurveCentrode) and np.ndim(gear.s_k) == 1:
+            gear = PitchCurveCentrode(gear.curve, gear.frame, gear.s_k[todo])
+        out[todo] = self._bracketed(P, N, s0, gear)
+        return out
+
+    def _bracketed(self, P, N, s0, gear):
+        n = len(s0)
+        W = SHAPER_MESH_WINDOW_R * self.R
+        off = np.linspace(-W, W, SHAPER_MESH_SAMPLES)
+        S = (s0[:, None] + off[None, :]).ravel()
+        rep = lambda A: np.repeat(A, len(off), axis=0)
+        if isinstance(gear, PitchCurveCentrode) and np.ndim(gear.s_k) == 1:
+            g = PitchCurveCentrode(gear.curve, gear.frame, np.repeat(gear.s_k, len(off)))
+        else:
+            g = gear
+        f, lam = self._residual(S, rep(P), rep(N), g)
+        f, lam = f.reshape(n, -1), lam.reshape(n, -1)
+        cross = np.sign(f[:, :-1]) * np.sign(f[:, 1:]) <= 0
+        lam_mid = np.where(cross, np.abs(0.5 * (off[:-1] + off[1:]))[None, :], np.inf)
+        j = np.argmin(lam_mid, axis=1)
+        if not np.all(np.isfinite(lam_mid[np.arange(n), j])):
+            raise InputError("z0", self.R, "a cutter normal never passes through the instantaneous centre",
+                             "the shaper is too large for the gear's curvature there")
+        lo, hi = s0 + off[j], s0 + off[j + 1]
+        flo = f[np.arange(n), j]
+        # bisection on the bracket (the root stays bracketed)
+        for _ in range(SHAPER_MESH_ITERATIONS):
+            sm = 0.5 * (lo + hi)
+            fm = self._residual(sm, P, N, gear)[0]
+            left = np.sign(fm) == np.sign(flo)
+            lo, flo, hi = np.where(left, sm, lo), np.where(left, fm, flo), np.where(left, hi, sm)
+            if np.max(hi - lo) < SHAPER_MESH_STOP_MM:
+                break
+        return 0.5 * (lo + hi)
+
+
+@dataclass(frozen=True)
+class InternalCircleCentrode:
+    """Pitch circle of an internal gear (ring) as a gear centrode for a cutter rolling inside it:
+    radius R about the origin, touched at the top (0, R) at s = 0 and run counter-clockwise, so
+    that the ring's body lies on the right of travel (as on ``PitchCurveCentrode``) and the
+    cutter's side (eta > 0 of a rack) points to the centre: G(s) = R(-sin(s/R), cos(s/R)),
+    tangent angle pi + s/R.  A rack of shift x_r rolling on it leaves a ring TOOTH of arc
+    thickness m(pi/2 + 2 x_r tan alpha) centred on +y, i.e. the ring shift of GOST 19274 /
+    ISO 21771 (space width m(pi/2 + 2 x tan alpha)) is x = -x_r."""
+
+    R: float
+
+    def point(self, s):
+        s = np.atleast_1d(np.asarray(s, float))
+        return np.column_stack([-self.R * np.sin(s / self.R), self.R * np.cos(s / self.R)])
+
+    def angle(self, s):
+        return math.pi + np.atleast_1d(np.asarray(s, float)) / self.R
+
+
 class PitchCurveCentrode:
     """Gear centrode of a non-circular gear: its pitch curve (``BodyPitchCurve``) run clockwise
     on the body from the tooth centre s_k of the shared arc-length frame (``ArcFrame``) by the
@@ -170,7 +319,7 @@ def envelope_points(piece, u, cutter, gear):
     T = piece.tangent(u)
     T = T / np.linalg.norm(T, axis=1)[:, None]
     N = np.column_stack([-T[:, 1], T[:, 0]])
-    s = cutter.contact(P, N)
+    s = cutter.contact_on(P, N, gear, piece) if hasattr(cutter, "contact_on") else cutter.contact(P, N)
     theta = gear.angle(s) - cutter.angle(s)
     X = gear.point(s) + _rot(theta, P - cutter.point(s))
     return X, s
@@ -223,6 +372,116 @@ class EnvelopeCurve:
         if fa * fb > 0:
             raise ValueError("radius not bracketed")
         return brentq(f, self.u0, self.u1, xtol=ROUNDING_TOL, rtol=ROUNDING_TOL, maxiter=200)
+
+
+@dataclass(frozen=True)
+class RoundEnvelope:
+    """Envelope of a tool's tip round (a circle of centre ``centre`` and radius ``rho`` in the cutter
+    frame) parametrised by the rolling arc s: the equidistant at rho of the trajectory of its centre,
+    X(s) = T(s) + side rho n(s) (n the unit normal of T').  No meshing-equation branch to choose:
+    used for the re-phased shaper (``ShaperOnRackCentrode``), whose instantaneous centre is no
+    circle.  u0 / u1 are the rolling arcs where the contact reaches the tip-land end of the round and
+    the involute (``round_envelope``).  The interface of ``EnvelopeCurve`` the generator uses."""
+
+    centre: tuple
+    rho: float
+    side: float
+    cutter: object
+    gear: object
+    u0: float
+    u1: float
+    kind: str = "fillet"
+
+    def _T(self, s):
+        s = np.atleast_1d(np.asarray(s, float))
+        C = np.repeat(np.asarray(self.centre, float)[None, :], len(s), axis=0)
+        theta = self.gear.angle(s) - self.cutter.angle(s)
+        return self.gear.point(s) + _rot(theta, C - self.cutter.point(s))
+
+    def contact_dir(self, s):
+        """Unit direction from the round's centre to the contact point, in the gear frame."""
+        s = np.atleast_1d(np.asarray(s, float))
+        h = SHAPER_MESH_FD_STEP_MM
+        d = self._T(s + h) - self._T(s - h)
+        d = d / np.linalg.norm(d, axis=1)[:, None]
+        return self.side * np.column_stack([-d[:, 1], d[:, 0]])
+
+    def __call__(self, s):
+        return self._T(s) + self.rho * self.contact_dir(s)
+
+    def at(self, s: float) -> np.ndarray:
+        return self(np.array([s]))[0]
+
+    def sample(self, n: int = ENVELOPE_SAMPLES_PER_FLANK) -> np.ndarray:
+        return self(np.linspace(self.u0, self.u1, n))
+
+    def with_range(self, u0, u1) -> "RoundEnvelope":
+        return RoundEnvelope(self.centre, self.rho, self.side, self.cutter, self.gear, float(u0), float(u1), self.kind)
+
+
+def round_envelope(fillet_piece, a_tip: float, a_flank: float, rho: float, cutter, gear) -> RoundEnvelope:
+    """The tip round's envelope from its junction with the involute (rolling arc s_f: the closed-form
+    contact of that point, exact there) to the instant its contact reaches the tip-land end a_tip,
+    followed continuously in s (``policy.SHAPER_MESH_WINDOW_R`` r0 either way).  InputError naming
+    ``z0`` when the contact never reaches the tip land."""
+    a = np.array([a_flank, a_tip])
+    P = fillet_piece.point(a)
+    T = fillet_piece.tangent(a)
+    T = T / np.linalg.norm(T, axis=1)[:, None]
+    N = np.column_stack([-T[:, 1], T[:, 0]])
+    s_f = float(cutter.contact(P[:1], N[:1])[0])
+    centre = tuple(float(v) for v in (P[0] - rho * _unit_radial(P, fillet_piece, a)[0]))
+    # which side of the centre trajectory: the one that reproduces the junction point
+    best = None
+    for side in (1.0, -1.0):
+        env = RoundEnvelope(centre, rho, side, cutter, gear, s_f, s_f)
+        X = env.at(s_f)
+        th = gear.angle(np.array([s_f])) - cutter.angle(np.array([s_f]))
+        Xj = gear.point(np.array([s_f]))[0] + _rot(th, P[:1] - cutter.point(np.array([s_f])))[0]
+        err = float(np.linalg.norm(X - Xj))
+        if best is None or err < best[0]:
+            best = (err, side)
+    side = best[1]
+    env = RoundEnvelope(centre, rho, side, cutter, gear, s_f, s_f)
+    # contact angle on the round (cutter frame) along s, relative to the junction; target: the tip end
+    W = 2.0 * SHAPER_MESH_WINDOW_R * cutter.R
+    u_tip = (P[1] - np.asarray(centre)) / rho
+    u_fl = (P[0] - np.asarray(centre)) / rho
+    target = math.atan2(u_fl[0] * u_tip[1] - u_fl[1] * u_tip[0], float(u_fl @ u_tip))
+
+    def ang(ss):
+        ss = np.atleast_1d(np.asarray(ss, float))
+        th = gear.angle(ss) - cutter.angle(ss)
+        v = _rot(-th, env.contact_dir(ss))
+        return np.arctan2(u_fl[0] * v[:, 1] - u_fl[1] * v[:, 0], v @ u_fl)
+
+    for direction in (1.0, -1.0):
+        ss = s_f + direction * np.linspace(0.0, W, SHAPER_MESH_SAMPLES * 4)
+        A = np.unwrap(ang(ss))
+        rel = (A - target) * math.copysign(1.0, target)
+        hit = np.nonzero(rel >= 0.0)[0]
+        if len(hit) and hit[0] > 0 and np.all(np.abs(A[: hit[0]]) <= abs(target)):
+            k = int(hit[0])
+            base = A[k - 1]
+            f = lambda q: float(base + np.angle(np.exp(1j * (ang(q)[0] - base))) - target)
+            s_t = brentq(f, ss[k - 1], ss[k], xtol=SHAPER_MESH_STOP_MM)
+            return env.with_range(s_t, s_f)
+    raise InputError("z0", cutter.R, "the contact of the shaper's tip round never reaches its tip land",
+                     "the shaper is too large for the gear's curvature there")
+
+
+def _unit_radial(P, piece, a):
+    """Outward unit radial of a (placed) circular piece at parameters a (from its tangent)."""
+    T = piece.tangent(a)
+    T = T / np.linalg.norm(T, axis=1)[:, None]
+    c1 = piece.point(a)
+    # the centre lies along the normal; the radial is the normal pointing away from it
+    N = np.column_stack([T[:, 1], -T[:, 0]])
+    probe = piece.point(a + 1e-3)
+    # chord midpoint bends towards the centre: pick the normal pointing away from it
+    mid = 0.5 * (c1 + probe)
+    sgn = np.sign(np.einsum("ij,ij->i", c1 - mid, N))
+    return N * np.where(sgn == 0, 1.0, sgn)[:, None]
 
 
 # =========================================================================== trimming

@@ -226,8 +226,10 @@ class GearPair:
 
         Direct kinematic check: the pinion turns φ1, the ring φ1 z1/z2 in the same sense; the
         tip corners (half tooth angle at the tip) are mapped into the mate's frame and compared
-        with the mate's involute tooth (half angle ψ(r), valid above its base circle).  Conjugate
-        contact gives depth 0 (to rounding), so a positive result above ~1e-6 mm is real.
+        with the mate's involute tooth (half angle ψ(r), valid above its base circle); a corner past
+        the ring's root circle, or inside the pinion's, is in the mate's body, as deep as it is past
+        that circle (a tip striking the root: no tip clearance).  Conjugate contact gives depth 0 (to
+        rounding), so a positive result above ~1e-6 mm is real.
         """
         require(self.internal, "gear2.internal", False, "tip interference sweep is for internal pairs")
         from scipy.optimize import minimize_scalar
@@ -236,6 +238,7 @@ class GearPair:
         da1, da2 = self._tips(d_a1, d_a2)
         ra1, ra2 = 0.5 * da1, 0.5 * da2
         rf2 = 0.5 * g2.d_f
+        rf1 = 0.5 * g1.d_f
         aw = self.a_w
         z1, z2 = g1.z, g2.z
         psi_a1 = float(g1.psi_at(da1))
@@ -257,7 +260,8 @@ class GearPair:
             rel = (np.arctan2(qy, qx) - (math.pi / 2 + math.pi / z2)) / pitch
             dth = (rel - np.round(rel)) * pitch
             psi = g2.psi_at(np.where(inside, 2.0 * r, g2.d))
-            return np.where(inside, (psi - np.abs(dth)) * r, -np.inf)
+            # past the ring's root circle the corner is in the rim itself: as deep as it is past it
+            return np.where(inside, (psi - np.abs(dth)) * r, np.where(r >= rf2, r - rf2, -np.inf))
 
         def ring_corner(phi, sgn):  # depth of a ring tip corner inside the pinion teeth
             phi = np.atleast_1d(np.asarray(phi, dtype=float))
@@ -266,12 +270,13 @@ class GearPair:
             c, s = np.cos(phi), np.sin(phi)
             qx, qy = c * dx + s * dy, -s * dx + c * dy
             r = np.hypot(qx, qy)
-            inside = (r > 0.5 * g1.d_b) & (r < ra1)
+            inside = (r > max(0.5 * g1.d_b, rf1)) & (r < ra1)
             pitch = 2 * math.pi / z1
             rel = (np.arctan2(qy, qx) - math.pi / 2) / pitch
             dth = (rel - np.round(rel)) * pitch
             psi = g1.psi_at(np.where(inside, 2.0 * r, g1.d))
-            return np.where(inside, (psi - np.abs(dth)) * r, -np.inf)
+            # inside the pinion's root circle the corner is in its body: as deep as it is inside it
+            return np.where(inside, (psi - np.abs(dth)) * r, np.where(r <= rf1, rf1 - r, -np.inf))
 
         phi = np.linspace(-math.pi, math.pi, samples)
         step = phi[1] - phi[0]

@@ -33,7 +33,10 @@ class CutterSpec:
     m: module (mm); alpha: pressure angle (rad); h_a: addendum coefficient h_a*
     of the generated tooth; x: profile shift coefficient of the driver, x_H of
     the driven wheel; z0: tooth count of a shaper (pinion) cutter for concave
-    parts (None: no shaper, concave parts are not allowed).
+    parts (None: no shaper, concave parts are not allowed); shaper_x0: the shaper's own
+    profile shift (a catalogue cutter; None: x0 = -x of the gear it cuts).  A shaper of own x0
+    rolls on the equidistant of the pitch curve at e = (x + x0) m, whose concave radius is
+    |rho| - e: it cuts there when r0 < |rho| - e.
     """
 
     m: float
@@ -42,6 +45,7 @@ class CutterSpec:
     x: float = 0.0
     x_H: float = 0.0
     z0: int | None = None
+    shaper_x0: float | None = None
 
     def __post_init__(self):
         object.__setattr__(self, "m", require_positive("m", self.m, "mm"))
@@ -66,6 +70,11 @@ class CutterSpec:
         """Shaper cutter pitch radius m z0 / 2 (inf if no shaper)."""
         return math.inf if self.z0 is None else self.m * self.z0 / 2
 
+    def shaper_offset(self, x: float) -> float:
+        """Height e = (x + x0) m of the shaper's rolling circle above the pitch curve of a gear of
+        shift x (``envelope.ShaperOnRackCentrode``); 0 when the shaper's x0 is tied to -x."""
+        return 0.0 if self.shaper_x0 is None else (x + self.shaper_x0) * self.m
+
     def shift(self, role: str) -> float:
         """Profile shift of one gear of the pair: x of the driver, x_H of the driven wheel."""
         require(role in ("driver", "driven"), "role", role, "must be 'driver' or 'driven'")
@@ -86,24 +95,25 @@ class CurveCheck:
     rho_limit: float
     concave: bool
     rho_concave_min: float
-    r0: float
+    r0: float  #: radius the concave stretch must exceed: shaper r0 plus its cutting offset e
     ok: bool
     reason: str
 
 
 def _check_curve(cs: CurvatureSummary, cutter: CutterSpec, x: float) -> CurveCheck:
     lim = cutter.rho_limit(x)
+    e = cutter.shaper_offset(x)
     reasons = []
     if cs.rho_convex_min < lim:
         reasons.append(f"{cs.curve}: convex rho_min {cs.rho_convex_min:.3f} mm < rack undercut limit {lim:.3f} mm")
     if cs.concave:
         if cutter.z0 is None:
             reasons.append(f"{cs.curve}: concave (|rho| >= {cs.rho_concave_min:.3f} mm) and no shaper cutter z0 given")
-        elif not cutter.r0 < cs.rho_concave_min:
+        elif not cutter.r0 + e < cs.rho_concave_min:
             reasons.append(f"{cs.curve}: concave |rho|_min {cs.rho_concave_min:.3f} mm <= shaper pitch radius "
-                           f"{cutter.r0:.3f} mm")
+                           f"{cutter.r0:.3f} mm" + (f" + cutting offset {e:+.3f} mm" if e else ""))
     return CurveCheck(curve=cs.curve, rho_convex_min=cs.rho_convex_min, rho_limit=lim, concave=cs.concave,
-                      rho_concave_min=cs.rho_concave_min, r0=cutter.r0, ok=not reasons,
+                      rho_concave_min=cs.rho_concave_min, r0=cutter.r0 + e, ok=not reasons,
                       reason="; ".join(reasons))
 
 

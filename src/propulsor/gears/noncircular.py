@@ -55,7 +55,9 @@ class SmoothedWalkingLaw:
 
     law: WalkingLaw
     delta: float
+    u_h: float | None = None
     coef: tuple = field(init=False, repr=False)
+    eps: float = field(init=False, default=0.0)
 
     def __post_init__(self):
         if not isinstance(self.law, WalkingLaw):
@@ -78,11 +80,35 @@ class SmoothedWalkingLaw:
             -d * d * 4 * K * math.sin(2 * d),
             u + K * (1 - math.cos(2 * d)) / (2 * d),
         ])
-        object.__setattr__(self, "coef", tuple(float(v) for v in np.linalg.solve(M, rhs)))
+        if self.u_h is None:
+            object.__setattr__(self, "coef", tuple(float(v) for v in np.linalg.solve(M, rhs)))
+        else:
+            self._scaled_blend(M, rhs)
         t = np.linspace(0.0, d, 2001)
         p_min = float(np.min(self._p(t)))
         if not p_min > 0:
             raise InputError("delta", self.delta, f"blend makes U <= 0 (min {p_min:.4g}); use a smaller delta")
+
+    def _scaled_blend(self, M, rhs) -> None:
+        """The blend with a free hand-over value U_s(phi_h) = u_h (the depth of the hub-speed dip),
+        C2 at the window ends, and closure restored by scaling U by (1 - eps) OUTSIDE the windows
+        (the window's excess integral spread over the whole leg instead of a bump beside the dip):
+        p = p_A - eps p_B, p_A / p_B matching U, U', U'' at the window end (resp. with u_h / 0 at
+        the hand-over), eps = (W_A - E) / (I_leg - E + W_B), W = window integrals, E = that of the
+        exact law, I_leg = n pi / 2 (seed 000 eq. 9/11: the driver angle of one leg)."""
+        u_h = require_positive("u_h", self.u_h)
+        d = self.delta
+        M2 = M.copy()
+        M2[3] = [1.0, 0.0, 0.0, 0.0]
+        a_A = np.linalg.solve(M2, np.array([rhs[0], rhs[1], rhs[2], u_h]))
+        a_B = np.linalg.solve(M2, np.array([rhs[0], rhs[1], rhs[2], 0.0]))
+        w = np.array([1.0, 1.0 / 3, 1.0 / 5, 1.0 / 7]) * 2 * d
+        W_A, W_B = float(w @ a_A), float(w @ a_B)
+        E = 2 * d * rhs[3]
+        I_leg = self.law.n * math.pi / 2
+        eps = (W_A - E) / (I_leg - E + W_B)
+        object.__setattr__(self, "eps", float(eps))
+        object.__setattr__(self, "coef", tuple(float(v) for v in a_A - eps * a_B))
 
     # ---- forwarded constants ----------------------------------------------------
     @property
@@ -159,20 +185,36 @@ class SmoothedWalkingLaw:
     def U(self, phi):
         """Smoothed ratio U_s(phi) (periodic, period pi/2, C2)."""
         phi, t, inw = self._window(phi)
+        if self.u_h is not None:
+            return np.where(inw, self._p(t), (1.0 - self.eps) * self.law.U(phi))
         return np.where(inw, self._p(t), self.law.U(phi))
 
     def dU_dphi(self, phi):
         phi, t, inw = self._window(phi)
+        if self.u_h is not None:
+            return np.where(inw, self._dp(t), (1.0 - self.eps) * self.law.dU_dphi(phi))
         return np.where(inw, self._dp(t), self.law.dU_dphi(phi))
 
     def d2U_dphi2(self, phi):
         phi, t, inw = self._window(phi)
+        if self.u_h is not None:
+            return np.where(inw, self._d2p(t), (1.0 - self.eps) * self.law.d2U_dphi2(phi))
         return np.where(inw, self._d2p(t), self.law.d2U_dphi2(phi))
 
     def theta(self, phi):
-        """theta_s(phi) = integral_0^phi U_s, closed form: exact theta + window correction."""
+        """theta_s(phi) = integral_0^phi U_s, closed form: exact theta + window correction.
+
+        With a free hand-over value (u_h): (1 - eps) theta + eps I_leg per completed window + the
+        partial window integral of p - (1 - eps) U (window h at pi/4 + h pi/2, t = phi - pi/4 - h pi/2)."""
         phi, t, inw = self._window(phi)
         d = self.delta
+        if self.u_h is not None:
+            e = self.eps
+            h = np.round((phi - math.pi / 4 - t) / LEG_PERIOD)
+            done = h + np.where(t >= d, 1.0, 0.0)
+            part = self._P(t) + self._P(d) - (1.0 - e) * (self._F(t) + self._F(d))
+            I_leg = self.law.n * math.pi / 2
+            return (1.0 - e) * self.law.theta(phi) + e * I_leg * done + np.where(inw, part, 0.0)
         corr = self._P(t) + self._P(d) - self._F(t) - self._F(d)
         return self.law.theta(phi) + np.where(inw, corr, 0.0)
 

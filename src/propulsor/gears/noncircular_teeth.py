@@ -35,14 +35,15 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import fsolve
+from scipy.optimize import fsolve, minimize_scalar
 
 from ..errors import InputError, require
 from ..laws.walking import LEG_PERIOD
-from ..policy import (FD_STEP_ARC_RAD, FD_STEP_PHI_RAD, FD_STEP_REL, NEWTON_STOP_MM, ROOT_XTOL_FINE,
+from ..policy import (ROOT_BRIDGE_MAX_MODULE, SHAPER_MESH_STOP_MM, FD_STEP_ARC_RAD, FD_STEP_PHI_RAD, FD_STEP_REL, MINIMIZE_XATOL, NEWTON_STOP_MM, ROOT_XTOL_FINE,
                       SOLVE_RESIDUAL_MM, TIP_HEIGHT_TOL_MM)
 from .cutters import CutterSide, RackCutter, ShaperCutter
-from .envelope import EnvelopeCurve, ExternalCircleCentrode, PitchCurveCentrode, envelope_points, trim_crossing
+from .envelope import (EnvelopeCurve, ExternalCircleCentrode, PitchCurveCentrode, ShaperOnRackCentrode, envelope_points,
+                       RoundEnvelope, round_envelope, trim_crossing)
 from .involute import BasicRack
 from .noncircular import PitchCurves, leg_breakpoints, whole_pitches
 
@@ -178,6 +179,7 @@ class ToothSpec:
     z0: int | None = None
     tip_min_mm: float = 0.0
     tip_floor: float = 0.5
+    shaper: ShaperCutter | None = None
 
     @property
     def h_tip(self) -> float:
@@ -195,9 +197,15 @@ class ToothSpec:
         return RackCutter(self.m, self.x, self.rack, self.thinning_mm).sides(u_top)
 
     def shaper_tools(self) -> tuple[CutterSide, CutterSide]:
-        """Right and left sides of the shaper z0 (x0 = -x: it meshes with the same imaginary
-        rack), its space centred on the bottom of its rolling circle; thinning widens the
-        shaper teeth by thinning/(2 r0) of rotation per flank."""
+        """Right and left sides of the shaper, its space centred on the bottom of its rolling
+        circle; thinning widens the shaper teeth by thinning/(2 r0) of rotation per flank.
+
+        ``shaper`` given (a catalogue cutter, ``gears.catalogue``): the shaper keeps its own x0 and
+        meshes with the gear's imaginary rack from the line e = (x + x0) m above the rack's
+        rolling line (``envelope.ShaperOnRackCentrode``), one flank per pass.  Otherwise a shaper
+        z0 with x0 = -x rolls on the pitch curve itself (``envelope.ExternalCircleCentrode``)."""
+        if self.shaper is not None:
+            return self._own_shift_shaper_tools()
         require(self.z0 is not None, "z0", self.z0, "a concave pitch curve needs a shaper cutter")
         try:
             sh = ShaperCutter(int(self.z0), self.m, -self.x, self.rack)
@@ -211,17 +219,46 @@ class ToothSpec:
         base = sh.side(ExternalCircleCentrode(R0))
         return tuple(base.placed(ang, (0.0, R0), mir) for mir in (False, True))
 
+    def _own_shift_shaper_tools(self) -> tuple[CutterSide, CutterSide]:
+        sh = self.shaper
+        require(abs(sh.m - self.m) <= 1e-9 * self.m, "m", self.m, f"must equal the shaper's module {sh.m:g} mm")
+        try:
+            sh.tip_round  # the tip round must fit the shaper tooth (InputError otherwise)
+        except InputError as exc:
+            raise InputError("z0", sh.z0, f"the shaper z0 = {sh.z0}, x0 = {sh.x0:+g} cannot be made: {exc}") from None
+        R0 = sh.r0
+        e = (self.x + sh.x0) * self.m
+        c = e / math.tan(self.rack.alpha)
+        ang = -math.pi + math.pi / sh.z0 - self.thinning_mm / (2.0 * R0)
+        base = sh.side(ExternalCircleCentrode(R0))
+        out = []
+        for mir, cut in ((False, ShaperOnRackCentrode(R0, e, c)), (True, ShaperOnRackCentrode(R0, e, -c))):
+            b = base.placed(ang, (0.0, R0), mir)
+            out.append(CutterSide(b.fillet, b.fillet_range, b.flank, b.flank_range, cut, "shaper"))
+        return tuple(out)
+
 
 @dataclass
 class ToothSide:
     """One generated side of a tooth: fillet and flank envelopes, the cutter kind ("rack" or
-    "shaper"), whether the side is undercut (trimmed) and the driven angle phi_root of its root."""
+    "shaper"), whether the side is undercut (trimmed) and the driven angle phi_root of its root.
+
+    root_gap_mm: distance from the fillet start to the root equidistant (0 for the rack and for a
+    shaper of x0 = -x, whose tip circle generates that equidistant exactly).  A shaper with its
+    own x0 cuts each flank in its own pass with its pitch point ahead of the rack's by
+    c = e cot(alpha) (``envelope.ShaperOnRackCentrode``); its tip circle then generates a root a few
+    hundredths of a mm off the equidistant, and phi_root is the foot of the fillet start on the
+    equidistant (the outline lifts the root linearly in phi between the fillet starts of a space,
+    ``geometry.noncircular_outline``)."""
 
     fillet: EnvelopeCurve
     flank: EnvelopeCurve
     kind: str
     undercut: bool
-    phi_root: float  # driven angle of the pitch point generating the fillet start (on the root curve)
+    phi_root: float  # driven angle of the root point (on the root equidistant) where the fillet starts
+    root_gap_mm: float = 0.0
+    root_piece: object = None  # re-phased shaper: envelope of its tip circle from the root to the fillet
+    fillet_is_flank: bool = False  # no fillet: the flank reaches the root equidistant (outline: one piece)
 
 
 def _flank_has_cusp(flank: EnvelopeCurve, u1: float, n: int = 48) -> bool:
@@ -230,17 +267,112 @@ def _flank_has_cusp(flank: EnvelopeCurve, u1: float, n: int = 48) -> bool:
     return bool(np.any(np.einsum("ij,ij->i", d[:-1], d[1:]) < 0))
 
 
-def make_side(tool: CutterSide, cen: PitchCurveCentrode) -> ToothSide:
-    """One tooth side generated by ``tool`` on the gear centrode ``cen`` (not yet trimmed)."""
+def make_side(tool: CutterSide, cen: PitchCurveCentrode, h_root: float | None = None) -> ToothSide:
+    """One tooth side generated by ``tool`` on the gear centrode ``cen`` (not yet trimmed).  For a
+    shaper with its own x0 (``ShaperOnRackCentrode``) and the root depth ``h_root``, phi_root is
+    the foot of the fillet start on the root equidistant and root_gap_mm its distance."""
     fil, fla = tool.envelopes(cen)
-    _, s0 = envelope_points(tool.fillet, np.array([fil.u0]), tool.cutter, cen)
-    return ToothSide(fil, fla, tool.kind, False, float(cen.phi(s0)[0]))
+    if h_root is None or not isinstance(tool.cutter, ShaperOnRackCentrode) or tool.cutter.e == 0.0:
+        X0, s0 = envelope_points(tool.fillet, np.array([fil.u0]), tool.cutter, cen)
+        return ToothSide(fil, fla, tool.kind, False, float(cen.phi(s0)[0]))
+    # re-phased shaper: the tip round's envelope followed in the rolling arc from the involute
+    a_tip, a_flank = tool.fillet_range
+    fil = round_envelope(tool.fillet, a_tip, a_flank, tool.fillet.piece.rho, tool.cutter, cen)
+    X0 = fil(np.array([fil.u0]))
+    ph0 = float(cen.phi(np.array([fil.u0]))[0])
+    curve = cen.curve
+    span = 4.0 * abs(tool.cutter.c) / float(cen.frame.pc.ds_dphi(np.array([ph0]))[0]) + FD_STEP_ARC_RAD
+    grid = ph0 + np.linspace(-span, span, 201)
+    E = curve.offset(grid, -h_root)
+
+    def foot(X):
+        """(phi of the foot on the root equidistant, signed height of X above it)."""
+        j = int(np.clip(np.argmin(np.linalg.norm(E - X[None, :], axis=1)), 1, len(grid) - 2))
+        dist = lambda ph: float(np.linalg.norm(curve.offset(np.array([ph]), -h_root)[0] - X))
+        ph = float(minimize_scalar(dist, bounds=(grid[j - 1], grid[j + 1]), method="bounded",
+                                   options={"xatol": MINIMIZE_XATOL}).x)
+        F = curve.offset(np.array([ph]), -h_root)[0]
+        return ph, float(np.dot(X - F, curve.normal(np.array([ph]))[0]))
+
+    # the tip circle of a re-phased shaper digs below the equidistant: the fillet is trimmed where it
+    # crosses it (the outline keeps the equidistant, a little more material than cut); where it
+    # stays above, the gap is bridged
+    u = np.linspace(fil.u0, fil.u1, 64)
+    heights = np.array([foot(X)[1] for X in fil(u)])
+    if heights[0] < 0.0 and np.any(heights > 0.0):
+        k = int(np.argmax(heights > 0.0))
+        from scipy.optimize import brentq
+
+        uc = brentq(lambda t: foot(fil.at(t))[1], u[k - 1], u[k], xtol=ROOT_XTOL_FINE)
+        fil = fil.with_range(uc, fil.u1)
+        ph, h = foot(fil.at(uc))
+        return ToothSide(fil, fla, tool.kind, False, ph, abs(h))
+    if heights[-1] < 0.0:
+        # the whole round lies below the equidistant (the re-phased shaper digs deeper there): the flank
+        # is trimmed where it crosses the equidistant, its first hundredth standing in for the fillet
+        uf = np.linspace(fla.u0, fla.u1, 64)
+        hf = np.array([foot(X)[1] for X in fla(uf)])
+        up = np.nonzero(hf > 0.0)[0]
+        if len(up) and up[0] > 0:
+            k = int(up[0])
+            from scipy.optimize import brentq
+
+            uc = brentq(lambda t: foot(fla.at(t))[1], uf[k - 1], uf[k], xtol=ROOT_XTOL_FINE)
+            um = uc + 0.01 * (fla.u1 - uc)
+            ph, h = foot(fla.at(uc))
+            return ToothSide(fla.with_range(uc, um), fla.with_range(um, fla.u1), tool.kind, False, ph, abs(h),
+                             fillet_is_flank=True)
+    # past the round the shaper's tip circle (radius r_a0 about its centre) cuts the root: its envelope,
+    # followed in the rolling arc while the contact stays on the tip land, down to the equidistant
+    # (trimmed there) or to its deepest point (bridged from there)
+    R0 = tool.cutter.R
+    C0 = np.array([0.0, R0])
+    P_tip = tool.fillet.point(np.array([a_tip]))[0]
+    r_a = float(np.linalg.norm(P_tip - C0))
+    s_t = fil.u0
+    X_t = fil.at(s_t)
+    env = min((RoundEnvelope(tuple(C0), r_a, sd, tool.cutter, cen, s_t, s_t) for sd in (1.0, -1.0)),
+              key=lambda e: float(np.linalg.norm(e.at(s_t) - X_t)))
+    ang_p = tool.fillet.angle
+    ax = np.array([-math.sin(ang_p), math.cos(ang_p)]) * (np.array([-1.0, 1.0]) if tool.fillet.mirror else 1.0)
+    t_e = (P_tip - C0) / r_a
+    lim = 2.0 * math.acos(float(np.clip(t_e @ ax, -1.0, 1.0)))
+    ss = s_t + math.copysign(1.0, fil.u0 - fil.u1) * np.linspace(0.0, 2.0 * R0, 161)
+    th = cen.angle(ss) - tool.cutter.angle(ss)
+    v = np.column_stack([np.cos(-th), np.sin(-th)])
+    cd = env.contact_dir(ss)
+    v = np.column_stack([v[:, 0] * cd[:, 0] - v[:, 1] * cd[:, 1], v[:, 1] * cd[:, 0] + v[:, 0] * cd[:, 1]])
+    valid = np.arccos(np.clip(v @ t_e, -1.0, 1.0)) <= lim
+    n_ok = int(np.argmin(valid)) if not np.all(valid) else len(ss)
+    # the tip circle's envelope must run on from the round's (no cusp at the junction)
+    d1 = env.at(s_t) - env.at(ss[1])
+    d2 = fil.at(s_t + 1e-3 * (fil.u1 - s_t)) - X_t
+    if float(d1 @ d2) <= 0.0:
+        n_ok = 0
+    if n_ok >= 2:
+        hs = np.array([foot(X)[1] for X in env(ss[:n_ok])])
+        below = np.nonzero(hs <= 0.0)[0]
+        if len(below) and below[0] > 0:
+            k = int(below[0])
+            from scipy.optimize import brentq
+
+            sc = brentq(lambda q: foot(env.at(q))[1], ss[k - 1], ss[k], xtol=SHAPER_MESH_STOP_MM)
+            piece = env.with_range(sc, s_t)
+            ph, h = foot(piece.at(sc))
+            return ToothSide(fil, fla, tool.kind, False, ph, abs(h), piece)
+        k = int(np.argmin(hs))
+        if k > 0 and hs[k] < foot(X_t)[1]:
+            piece = env.with_range(ss[k], s_t)
+            ph, h = foot(piece.at(ss[k]))
+            return ToothSide(fil, fla, tool.kind, False, ph, abs(h), piece)
+    ph, h = foot(fil.at(fil.u0))
+    return ToothSide(fil, fla, tool.kind, False, ph, abs(h))
 
 
 def _trim_undercut(side: ToothSide, u_tip: float) -> None:
     """Undercut per tooth: the flank envelope below the tip turns back
     (cusp) and the fillet trochoid crosses it; keep the outer boundary (``trim_crossing``)."""
-    if not _flank_has_cusp(side.flank, u_tip):
+    if side.fillet_is_flank or not _flank_has_cusp(side.flank, u_tip):
         return
     cross = trim_crossing(side.fillet, side.flank.with_range(side.flank.u0, u_tip))
     if cross is not None:
@@ -264,7 +396,14 @@ def _tip_hit(side: ToothSide, curve: BodyPitchCurve, h: float, phi_guess: float,
     tol = SOLVE_RESIDUAL_MM
     if np.linalg.norm(g(sol)) > tol or not (min(fla.u0, fla.u1) - tol <= sol[0] <= max(fla.u0, fla.u1) + tol):
         return None
-    return float(sol[0]), float(sol[1])
+    return float(sol[0]), _near(float(sol[1]), phi_guess, curve)
+
+
+def _near(phi: float, ref: float, curve: BodyPitchCurve) -> float:
+    """phi moved by whole periods of the body pitch curve (2 pi driven, 2 pi / n driver) next to ref: a
+    solver may land on the same point one turn away."""
+    period = 2.0 * math.pi if curve.role == "driven" else 2.0 * math.pi / curve.pc.law.n
+    return float(phi - period * round((phi - ref) / period))
 
 
 def _tip_hits_batch(sides: list, s_k: np.ndarray, ph_k: np.ndarray, curve: BodyPitchCurve, frame: ArcFrame,
@@ -314,7 +453,7 @@ def _tip_hits_batch(sides: list, s_k: np.ndarray, ph_k: np.ndarray, curve: BodyP
         for j, i in enumerate(idx):
             tol = SOLVE_RESIDUAL_MM
             if res[j] <= tol and min(u0, u1) - tol <= u[j] <= max(u0, u1) + tol:
-                out[i] = (float(u[j]), float(ph[j]))
+                out[i] = (float(u[j]), _near(float(ph[j]), float(pk[j]), curve))
             else:
                 out[i] = _tip_hit(sides[i], curve, h, float(pk[j]), span)
     return out
@@ -404,7 +543,13 @@ def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame 
                             shaper = spec.shaper_tools()
                         tool = shaper[which]
                         break
-            sides.append(make_side(tool, PitchCurveCentrode(curve, frame, s_k)))
+            side = make_side(tool, PitchCurveCentrode(curve, frame, s_k), spec.h_root)
+            if side.root_gap_mm > ROOT_BRIDGE_MAX_MODULE * m:
+                raise InputError("z0", tool.cutter.R * 2.0 / m,
+                                 f"{role} tooth at phi = {float(frame.phi(np.array([s_k]))[0]):.4f} rad: the re-phased "
+                                 f"shaper leaves its fillet {side.root_gap_mm:.3f} mm off the root (more than "
+                                 f"{ROOT_BRIDGE_MAX_MODULE:g} m)", "a larger shaper or a wider blend")
+            sides.append(side)
         teeth_sides.append(sides)
 
     # tips: nominal height, shortened where the tip land is too thin

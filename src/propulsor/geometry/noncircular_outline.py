@@ -16,7 +16,7 @@ import numpy as np
 
 from ..gears.noncircular import PitchCurves
 from ..gears.noncircular_teeth import ArcFrame, ToothSpec, generate_teeth
-from ..policy import OUTLINE_JOINT_TOL_MM, SPLINE_FIT_TOL_MM
+from ..policy import OUTLINE_JOINT_TOL_MM, OUTLINE_JOINT_TOL_REPHASED_MM, SPLINE_FIT_TOL_MM
 from .bspline import fit_curve
 from .profile import Loop, Profile, Spline
 
@@ -41,6 +41,7 @@ class GeneratedGear:
     teeth: list
     root_min_radius: float
     pitch_points: np.ndarray  # (n, 2) pitch curve in the body frame (reference)
+    root_gaps: tuple = ()     # straight root bridges (mm) of a re-phased shaper's sides (ToothSide.root_gap_mm)
 
     @property
     def undercut_teeth(self) -> int:
@@ -77,11 +78,24 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
         tip = fit_piece(lambda ph: curve.offset(ph, h), hr[1], hl[1], tol)
         fla_l = fit_piece(Lf.flank, hl[0], Lf.flank.u0, tol)
         fil_l = fit_piece(Lf.fillet, Lf.fillet.u1, Lf.fillet.u0, tol)
-        units.append(([fil_r, fla_r, tip, fla_l, fil_l], R.phi_root, Lf.phi_root))
+        # a side whose flank reaches the root itself (ToothSide.fillet_is_flank) is one piece
+        if R.fillet_is_flank:
+            fil_r = fla_r = fit_piece(R.flank, R.fillet.u0, hr[0], tol)
+        if Lf.fillet_is_flank:
+            fla_l = fil_l = fit_piece(Lf.flank, hl[0], Lf.fillet.u0, tol)
+        pieces = [p_ for k_, p_ in enumerate([fil_r, fla_r, tip, fla_l, fil_l])
+                  if not (k_ == 0 and R.fillet_is_flank) and not (k_ == 4 and Lf.fillet_is_flank)]
+        # a shaper with its own x0 cuts the root with its tip circle (ToothSide.root_piece) and may stop
+        # short of the root equidistant (ToothSide.root_gap_mm): a straight bridge to the foot point
+        if R.root_piece is not None:
+            pieces.insert(0, fit_piece(R.root_piece, R.root_piece.u0, R.root_piece.u1, tol))
+        if Lf.root_piece is not None:
+            pieces.append(fit_piece(Lf.root_piece, Lf.root_piece.u1, Lf.root_piece.u0, tol))
+        units.append((pieces, R.phi_root, Lf.phi_root, R.root_gap_mm, Lf.root_gap_mm))
     segs = []
     root_r = []
     hf = -spec.h_root
-    for i, (unit, _phr, phl) in enumerate(units):
+    for i, (unit, _phr, phl, _gr, gl) in enumerate(units):
         segs.extend(unit)
         nxt = units[(i + 1) % len(units)]
         ph_a, ph_b = phl, nxt[1]
@@ -92,14 +106,83 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
         else:  # driver: counter-clockwise = decreasing phi; one driver turn = 2 pi / n of phi
             while ph_b > ph_a:
                 ph_b -= 2 * math.pi / n
-        root = fit_piece(lambda ph: curve.offset(ph, hf), ph_a, ph_b, tol)
+        if abs(ph_b - ph_a) > math.pi / (1 if role == "driven" else n):
+            # the feet crossed (a re-phased shaper's space whose root land vanished): the two fillets
+            # cross above the root equidistant, both are trimmed at the crossing and meet there
+            j = (i + 1) % len(units)
+            nb = len(units[0][0])
+            head = segs[:nb] if j == 0 else nxt[0]
+            ka, kb, a_new, b_new, X = _trim_pairs(segs[-3:], head[:3], tol)
+            del segs[len(segs) - 3 + ka:]
+            segs.append(a_new)
+            head[kb] = b_new
+            del head[:kb]
+            if j == 0:
+                segs[:nb] = head
+            root_r.append(float(np.hypot(*X)))
+            continue
+        g_a, g_b = gl, nxt[3]
+        if g_a > 0.0 or g_b > 0.0:
+            # a re-phased shaper's fillet may stop short of the root equidistant (ToothSide.root_gap_mm,
+            # its foot at phi_root): the root rises linearly in phi from one fillet start to the other
+            lift = lambda ph: g_a + (g_b - g_a) * (np.asarray(ph, float) - ph_a) / (ph_b - ph_a)
+            root = fit_piece(lambda ph: curve.offset(ph, hf + lift(ph)[:, None]), ph_a, ph_b, tol)
+        else:
+            root = fit_piece(lambda ph: curve.offset(ph, hf), ph_a, ph_b, tol)
         root_r.append(float(np.min(np.linalg.norm(root.poles, axis=1))))
         segs.append(root)
-    segs = _snap(segs)
+    rephased = any(sd.root_gap_mm > 0.0 or type(sd.fillet).__name__ == "RoundEnvelope"
+                   for pair in teeth_sides for sd in pair)
+    segs = _snap(segs, OUTLINE_JOINT_TOL_REPHASED_MM if rephased else OUTLINE_JOINT_TOL_MM)
     prof = Profile(Loop(segs), name=f"{role} generated z={z} m={m:g}")
     ph = np.linspace(0.0, 2 * math.pi / (1 if role == "driven" else n), 1441)
-    return GeneratedGear(role, prof, teeth, min(root_r), curve.point(ph))
+    gaps = tuple(float(sd.root_gap_mm) for pair in teeth_sides for sd in pair if sd.root_gap_mm > OUTLINE_JOINT_TOL_MM)
+    return GeneratedGear(role, prof, teeth, min(root_r), curve.point(ph), gaps)
 
+
+
+def _trim_pairs(tail: list, head: list, tol: float):
+    """The crossing of the last pieces ``tail`` of one tooth with the first pieces ``head`` of the next
+    nearest to their joint: (index in tail, index in head, trimmed tail piece, trimmed head piece, point)."""
+    for ka in range(len(tail) - 1, -1, -1):
+        for kb in range(len(head)):
+            try:
+                a_new, b_new, X = _trim_pair(tail[ka], head[kb], tol)
+            except RuntimeError:
+                continue
+            return ka, kb, a_new, b_new, X
+    raise RuntimeError("the fillets of a space whose root land vanished do not cross")
+
+
+def _trim_pair(a: Spline, b: Spline, tol: float):
+    """a ends past the start of b (their curves cross): both trimmed at the crossing, refitted.
+    RuntimeError when they do not cross."""
+    ta = np.linspace(a.knots[0], a.knots[-1], 801)
+    tb = np.linspace(b.knots[0], b.knots[-1], 801)
+    A, B = a._bs(ta), b._bs(tb)
+    best = None
+    for k in range(len(A) - 1):
+        p, r = A[k], A[k + 1] - A[k]
+        q, sv = B[:-1], B[1:] - B[:-1]
+        den = r[0] * sv[:, 1] - r[1] * sv[:, 0]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = ((q[:, 0] - p[0]) * sv[:, 1] - (q[:, 1] - p[1]) * sv[:, 0]) / den
+            u = ((q[:, 0] - p[0]) * r[1] - (q[:, 1] - p[1]) * r[0]) / den
+        hit = np.nonzero((np.abs(den) > 0) & (t >= 0) & (t <= 1) & (u >= 0) & (u <= 1))[0]
+        if len(hit):
+            m = int(hit[0])
+            best = (ta[k] + t[m] * (ta[k + 1] - ta[k]), tb[m] + u[m] * (tb[m + 1] - tb[m]))
+            break
+    if best is None:
+        raise RuntimeError("the fillets of a space whose root land vanished do not cross")
+    from scipy.optimize import fsolve
+
+    sol = fsolve(lambda y: a._bs(y[0]) - b._bs(y[1]), np.array(best), xtol=1e-13)
+    X = a._bs(sol[0])
+    a_new = fit_piece(lambda t: a._bs(np.atleast_1d(t)), a.knots[0], float(sol[0]), tol)
+    b_new = fit_piece(lambda t: b._bs(np.atleast_1d(t)), float(sol[1]), b.knots[-1], tol)
+    b_new = Spline(b_new.knots, np.vstack([a_new.end, b_new.poles[1:]]), b_new.degree)
+    return a_new, b_new, X
 
 
 def _snap(segs: list, tol: float = OUTLINE_JOINT_TOL_MM) -> list:

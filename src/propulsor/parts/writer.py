@@ -22,7 +22,7 @@ from pathlib import Path
 from typing import Any
 
 from ..check import Check
-from ..parallel import Done, fork_pool
+from ..parallel import fork_pool, inline, jobs_budget
 from ..params import params_to_dict, read_part_meta
 
 
@@ -47,7 +47,8 @@ def solid_files_and_checks(folder: str, name: str, solid, expected_genus, volume
     step = folder / f"{name}.step"
     write_step(solid, step, name)
     checks.append(step_roundtrip_check(solid, step, name))
-    mesh = tessellate(solid, parallel=not forked)
+    # OCCT's mesher threads only in a build allowed more than one process and not in a forked worker
+    mesh = tessellate(solid, parallel=not forked and jobs_budget() > 1)
     write_stl(mesh, folder / f"{name}.stl")
     write_3mf(mesh, folder / f"{name}.3mf", name)
     checks += mesh_checks(mesh, name, expected_genus=expected_genus, brep_volume=volume)
@@ -126,8 +127,8 @@ class OutputWriter:
         self.progress(f"{name}: STEP, STL, 3MF and their checks (B-rep, STEP round trip, mesh)")
         pool = self._solid_pool()
         args = (str(self.folder), name, solid, expected_genus, volume, pool is not None)
-        self._solid_jobs.append((name, pool.submit(solid_files_and_checks, *args) if pool else Done(
-            solid_files_and_checks(*args))))
+        self._solid_jobs.append((name, pool.submit(solid_files_and_checks, *args) if pool else
+                                 inline(solid_files_and_checks, *args)))
         return rec
 
     def _solid_pool(self):

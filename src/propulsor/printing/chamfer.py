@@ -25,6 +25,10 @@ from ..policy import CHORD_TOL_MM
 
 __all__ = ["chamfer_first_layers"]
 
+#: the eroded contours drop points within this of the line through their neighbours (mm): a fifth of
+#: the chord tolerance, so the layers' outlines stay within the tessellation's band
+SIMPLIFY_MM = 1e-3
+
 
 
 
@@ -65,7 +69,7 @@ def chamfer_first_layers(mesh, d: float, layer_mm: float, name: str = "piece"):
     eroded = []
     for k in range(n):
         inset = d - (k + 0.5) * h
-        cs = section.offset(-inset, m3d.JoinType.Round, circular_segments=_segments(inset))
+        cs = section.offset(-inset, m3d.JoinType.Round, circular_segments=_segments(inset)).simplify(SIMPLIFY_MM)
         if cs.is_empty() or len(cs.decompose()) != len(section.decompose()):
             raise InputError("chamfer_mm", d, f"{name}: eroding its bed face by {inset:.3g} mm splits or removes a part "
                              "of it (a feature narrower than twice the chamfer)")
@@ -86,9 +90,19 @@ def chamfer_first_layers(mesh, d: float, layer_mm: float, name: str = "piece"):
 
     def down_face(rings_idx, contours):
         """The planar region bounded by the contours (outer CCW, holes CW seen from +z), facing down."""
-        tri = np.asarray(m3d.triangulate(contours), np.int64)
+        tri = _triangulate_region(contours)
         idx = np.concatenate(rings_idx)
         faces.append(idx[tri][:, ::-1])
+
+    def down_band(upper_idx, upper_xy, lower_idx, lower_xy):
+        """The narrow band between the contours of a region and of its erosion, facing down: stitched
+        loop to loop (small triangles along the band), or triangulated as one region when the loops
+        cannot be paired."""
+        tris = _stitch_bands(upper_idx, upper_xy, lower_idx, lower_xy)
+        if tris is None:
+            down_face(upper_idx + [q[::-1] for q in lower_idx], list(upper_xy) + [q[::-1] for q in lower_xy])
+        else:
+            faces.append(tris)
 
     def wall(lower, upper):
         for a, b in zip(lower, upper):
@@ -98,15 +112,14 @@ def chamfer_first_layers(mesh, d: float, layer_mm: float, name: str = "piece"):
 
     # the overhang at z = d over the last layer: the section less the last eroded region
     inner = ring(eroded[-1], z_d)
-    down_face(top_loops + [q[::-1] for q in inner],
-              [V[q, :2] for q in top_loops] + [q[::-1] for q in eroded[-1]])
+    down_band(top_loops, [V[q, :2] for q in top_loops], inner, eroded[-1])
     for k in range(n - 1, -1, -1):
         z_k = lo + k * h
         lower = ring(eroded[k], z_k)
         wall(lower, inner)
         if k > 0:  # the overhang of layer k over layer k - 1
             below = ring(eroded[k - 1], z_k)
-            down_face(lower + [q[::-1] for q in below], eroded[k] + [q[::-1] for q in eroded[k - 1]])
+            down_band(lower, eroded[k], below, eroded[k - 1])
             inner = below
         else:
             down_face(lower, eroded[0])
@@ -117,6 +130,116 @@ def chamfer_first_layers(mesh, d: float, layer_mm: float, name: str = "piece"):
         raise InputError("chamfer_mm", d, f"{name}: the chamfered mesh is not closed ({len(result.faces)} faces)")
     result.metadata.update(mesh.metadata)
     return result
+
+
+def _triangulate_region(contours) -> np.ndarray:
+    """Triangles (indices into the contours' points, concatenated; counter-clockwise) of a planar region
+    bounded by closed contours (outer CCW, holes CW): the Delaunay triangulation of the contour points
+    kept inside the region when it holds every contour edge and the region's area (well-shaped
+    triangles, quick to check for intersections); ear clipping (manifold3d) otherwise."""
+    import manifold3d as m3d
+    from matplotlib.path import Path as MplPath
+    from scipy.spatial import Delaunay
+
+    pts = np.vstack(contours)
+    area = sum(_signed_area(q) for q in contours)
+    try:
+        D = Delaunay(pts)
+    except Exception:  # noqa: BLE001 - a degenerate point set: the ear clipper handles it
+        return np.asarray(m3d.triangulate(contours), np.int64)
+    T = D.simplices
+    c = pts[T].mean(axis=1)
+    inside = np.zeros(len(T), int)
+    for q in contours:  # winding parity: inside the outer loops, outside the holes
+        inside += MplPath(q).contains_points(c)
+    T = T[inside % 2 == 1]
+    a = pts[T]
+    cross = (a[:, 1, 0] - a[:, 0, 0]) * (a[:, 2, 1] - a[:, 0, 1]) - (a[:, 2, 0] - a[:, 0, 0]) * (a[:, 1, 1] - a[:, 0, 1])
+    T = np.where((cross < 0)[:, None], T[:, ::-1], T)
+    edges = {tuple(e) for t in T.tolist() for e in ((t[0], t[1]), (t[1], t[2]), (t[2], t[0]))}
+    start = 0
+    conforming = True
+    for q in contours:
+        k = np.arange(start, start + len(q))
+        if not all((int(u), int(v)) in edges for u, v in zip(k, np.roll(k, -1))):
+            conforming = False
+            break
+        start += len(q)
+    if conforming and abs(0.5 * float(np.abs(cross).sum()) - area) <= 1e-6 * max(abs(area), 1.0):
+        return T
+    return np.asarray(m3d.triangulate(contours), np.int64)
+
+
+def _signed_area(q: np.ndarray) -> float:
+    return 0.5 * float(np.dot(q[:, 0], np.roll(q[:, 1], -1)) - np.dot(q[:, 1], np.roll(q[:, 0], -1)))
+
+
+def _stitch(P: np.ndarray, Q: np.ndarray) -> np.ndarray | None:
+    """Triangles (local index pairs: (0, i) for P[i], (1, j) for Q[j]) zipping two closed loops of the
+    same orientation that bound a band: Q's points in the order of their nearest points on P (the
+    footpoints of an erosion run along the contour), P's and Q's points merged in that order.  None
+    when the zip folds (mixed orientations, or areas not adding up to the band's)."""
+    from scipy.spatial import cKDTree
+
+    n, m = len(P), len(Q)
+    foot = cKDTree(P).query(Q)[1].astype(float)
+    j0 = int(np.argmin(np.linalg.norm(Q - P[0], axis=1)))
+    raw = np.roll(foot, -j0)
+    steps = np.diff(raw)
+    steps[steps < -n / 2] += n  # unwrap the footpoints into one run along P
+    steps[steps > n / 2] -= n
+    f = (raw[0] if raw[0] < n / 2 else raw[0] - n) + np.concatenate([[0.0], np.cumsum(steps)])
+    f = np.maximum.accumulate(f)
+    i = j = 0
+    tris = []
+    while i < n or j < m:
+        nxt = f[j + 1] if j + 1 < m else f[0] + n
+        if j < m and (i >= n or nxt <= i):
+            tris.append(((0, i % n), (1, (j + 1 + j0) % m), (1, (j + j0) % m)))
+            j += 1
+        else:
+            tris.append(((0, i % n), (0, (i + 1) % n), (1, (j + j0) % m)))
+            i += 1
+    pts = [P, Q]
+    a = np.array([[pts[s][k] for s, k in t] for t in tris])
+    area = 0.5 * ((a[:, 1, 0] - a[:, 0, 0]) * (a[:, 2, 1] - a[:, 0, 1]) - (a[:, 2, 0] - a[:, 0, 0]) * (a[:, 1, 1] - a[:, 0, 1]))
+    if not (np.all(area > 0) or np.all(area < 0)):
+        return None
+    band = abs(abs(_signed_area(P)) - abs(_signed_area(Q)))
+    if abs(float(np.abs(area).sum()) - band) > 1e-6 * max(band, 1.0):  # rounding of ~1e4 small areas: 1e-9
+        return None
+    return np.array(tris)
+
+
+def _stitch_bands(upper_idx, upper_xy, lower_idx, lower_xy) -> np.ndarray | None:
+    """Down-facing triangles (vertex indices) of the bands between each loop of a region and the loop
+    of its erosion it faces (same orientation, nearest); None when the loops do not pair one to one."""
+    if len(upper_xy) != len(lower_xy):
+        return None
+    used = set()
+    out = []
+    for ui, uxy in zip(upper_idx, upper_xy):
+        sign = _signed_area(uxy) > 0
+        best, best_d = None, np.inf
+        for k, lxy in enumerate(lower_xy):
+            if k in used or (_signed_area(lxy) > 0) != sign:
+                continue
+            dist = float(np.min(np.linalg.norm(lxy - uxy[0], axis=1)))
+            if dist < best_d:
+                best, best_d = k, dist
+        if best is None:
+            return None
+        used.add(best)
+        tris = _stitch(uxy, lower_xy[best])
+        if tris is None:
+            return None
+        idx = (ui, lower_idx[best])
+        T = np.array([[idx[s][k] for s, k in t] for t in tris], np.int64)
+        xy = np.array([[(uxy if s == 0 else lower_xy[best])[k] for s, k in t] for t in tris])
+        up = ((xy[:, 1, 0] - xy[:, 0, 0]) * (xy[:, 2, 1] - xy[:, 0, 1])
+              - (xy[:, 2, 0] - xy[:, 0, 0]) * (xy[:, 1, 1] - xy[:, 0, 1])) > 0
+        out.append(np.where(up[:, None], T[:, ::-1], T))  # facing down: clockwise seen from above
+    return np.vstack(out)
 
 
 def _distinct(q: np.ndarray, tol: float = 1e-3) -> np.ndarray:

@@ -76,6 +76,9 @@ class Kit:
     allowances: list[tuple[str, float, str]] = field(default_factory=list)  # (name, value mm, how applied)
     steps: list[str] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
+    #: checks of the kit that fail as the part file documents (its [meta] expected_failures, e.g. the
+    #: papers' sector teeth that jam): reported as documented, like the part's own
+    expected_failures: list[str] = field(default_factory=list)
 
 
 def plate_checks(kit: Kit, plates, flat: dict) -> list[Check]:
@@ -206,6 +209,7 @@ def write_kit(kit: Kit, w) -> None:
     w.derived.update({"scale_S": kit.scale.S, "plates": len(plates), "pieces": len(flat),
                       "filament_volume_cm3": sum(r[2] for r in rows), "filament_mass_g": sum(r[3] for r in rows)})
     w.derived.update(kit.derived)
+    w.expected_failures |= set(kit.expected_failures)
     w.add_checks(kit.checks)
     w.add_note(f"Scale {kit.scale.label} on the {p.title or p.name} "
                f"({p.bed_x_mm:g} × {p.bed_y_mm:g} × {p.bed_z_mm:g} mm): {kit.scale.reason}.")

@@ -29,6 +29,8 @@ from .params import NoncircularPairParams
 
 #: part-file keys of the quantities the tooth generators name in their errors
 _TOOTH_KEYS = {"m": "module_mm", "z_H": "driven_teeth", "z0": "shaper_teeth"}
+#: the same with a catalogue shaper (its z0 follows from d0 and m)
+_TOOTH_KEYS_D0 = {"m": "module_mm", "z_H": "driven_teeth", "z0": "shaper_d0_mm"}
 
 __all__ = ["Design", "PairDesign", "design", "pair_design", "design_generated", "design_sectors",
            "sector_design_table", "mounting", "gear_profiles"]
@@ -53,6 +55,9 @@ class Design:
     driven: object = None
     ripple: object = None     # HubSpeedRipple
     closure_error: float = math.nan
+    search: object = None     # gears.law_search.LawSearch (law_search = true)
+    search_tries: tuple = ()  # (LawPoint, refusal or "") in the order tried
+    shaper: object = None     # catalogue.ShaperEntry of the shaper used (own x0), or None
 
     @property
     def smoothing_deg(self) -> float:
@@ -64,7 +69,27 @@ def _law(p: NoncircularPairParams) -> WalkingLaw:
 
 
 def _rack(p) -> BasicRack:
-    return BasicRack(alpha=math.radians(p.pressure_angle_deg))
+    """The ISO 53 rack of the part file's profile at its pressure angle (``gears.catalogue``)."""
+    from ...gears.catalogue import rack_profile
+
+    with input_names({"rack_profile": "rack_profile"}):
+        return rack_profile(p.rack_profile, math.radians(p.pressure_angle_deg))
+
+
+def shaper_of(p, m: float):
+    """The catalogue shaper (own z0, x0) of ``shaper_d0_mm`` at module m, or None (shaper_teeth, x0 = -x)."""
+    from ...gears.catalogue import catalogue_shaper
+
+    alpha = math.radians(p.pressure_angle_deg)
+    if p.shaper_d0_mm <= 0:
+        if p.shaper_own_x0:
+            from ...gears.cutters import ShaperCutter
+
+            with input_names({"z0": "shaper_teeth", "x0": "shaper_x0"}):
+                return ShaperCutter(p.shaper_teeth, m, p.shaper_x0, BasicRack(alpha=alpha, c_star=0.25))
+        return None
+    with input_names({"d0": "shaper_d0_mm"}):
+        return catalogue_shaper(p.shaper_d0_mm, m, alpha)
 
 
 def _thinning(p) -> float:
@@ -74,11 +99,14 @@ def _thinning(p) -> float:
 
 def _smoothing(p, law: WalkingLaw, m: float):
     """The blend: given (smoothing_deg > 0) or the smallest generable (choose_smoothing)."""
+    sh = shaper_of(p, m)
     cutter = CutterSpec(m=m, alpha=math.radians(p.pressure_angle_deg), x=p.driver_shift, x_H=-p.driver_shift,
-                        z0=p.shaper_teeth)
+                        z0=p.shaper_teeth if sh is None else sh.z0, shaper_x0=None if sh is None else sh.x0)
     z_H = p.driven_teeth
     if p.smoothing_deg > 0:
-        sl = SmoothedWalkingLaw(law, math.radians(p.smoothing_deg))
+        with input_names({"u_h": "blend_hand_over"}):
+            sl = SmoothedWalkingLaw(law, math.radians(p.smoothing_deg),
+                                    u_h=p.blend_hand_over * law.u if p.blend_hand_over > 0 else None)
         L = math.pi * m * z_H / perimeter_per_mm(sl)
         g = check_generable(PitchCurves(sl, L), cutter)
         if not g.ok:
@@ -107,8 +135,81 @@ def _smallest_generable(law, cutter, z_H) -> str:
             f"(smoothing_max_deg >= {math.degrees(d.delta):.3f}; hub speed ripple {100 * d.ripple.ripple:.2f} %)")
 
 
+def _search_design(p: NoncircularPairParams, law: WalkingLaw, progress) -> Design:
+    """law_search = true: the ranked generable blends of ``gears.law_search.search_law`` over the
+    catalogue shapers at this module; the teeth are generated for each in turn until both gears can be
+    cut (the generator refuses with the reason: tip land, generating limit of the cutter)."""
+    from ...gears.catalogue import shaper_diameters, shaper_entry
+    from ...gears.law_search import search_law
+    from ...gears.noncircular import centre_distance
+    from ...gears.noncircular_teeth import ArcFrame, ToothSpec
+    from ...geometry.noncircular_outline import generate_gear
+    from ...policy import LAW_SEARCH_TRIES, LAW_SEARCH_TRIES_PER_SHAPER
+
+    if not p.module_mm > 0:
+        raise InputError("module_mm", p.module_mm, "the law search needs the module (catalogue cutters)")
+    m = p.module_mm
+    alpha = math.radians(p.pressure_angle_deg)
+    entries = []
+    for d0 in shaper_diameters():
+        try:
+            entries.append(shaper_entry(d0, m))
+        except InputError:
+            continue
+    if not entries:
+        raise InputError("module_mm", m, "the cutter catalogue lists no shaper at this module")
+    z_H = p.driven_teeth
+    L_ref = centre_distance(law, m, z_H)
+    progress(f"law search: {len(entries)} catalogue shapers, blend half-width and hand-over value")
+    with input_names({"shaper_d0_mm": "center_distance_band_mm"}):
+        res = search_law(law, m, z_H, p.driver_shift, [(e.d0_mm, e.cutter(alpha)) for e in entries], L_ref,
+                         p.center_distance_band_mm, alpha)
+    rack = _rack(p)
+    th = _thinning(p)
+    tries = []
+    seen = set()
+    per_shaper: dict = {}
+    for pt in res.points:
+        key = (pt.d0_mm, round(pt.ripple, 4))
+        if key in seen or per_shaper.get(pt.d0_mm, 0) >= LAW_SEARCH_TRIES_PER_SHAPER:
+            continue
+        seen.add(key)
+        if len(tries) >= LAW_SEARCH_TRIES:
+            break
+        per_shaper[pt.d0_mm] = per_shaper.get(pt.d0_mm, 0) + 1
+        entry = next(e for e in entries if e.d0_mm == pt.d0_mm)
+        sh = entry.cutter(alpha)
+        sl = SmoothedWalkingLaw(law, pt.delta, u_h=pt.u_h_rel * law.u)
+        cutter = CutterSpec(m=m, alpha=alpha, x=p.driver_shift, x_H=-p.driver_shift, z0=sh.z0, shaper_x0=sh.x0)
+        pc = PitchCurves(sl, pt.L)
+        g = check_generable(pc, cutter)
+        sm = SmoothingDesign(law=sl, delta=sl.delta, L=pt.L, z_H=z_H, z=z_H // law.n, cutter=cutter,
+                             generability=g, ripple=hub_speed_ripple(sl))
+        frame = ArcFrame(pc)
+        common = dict(m=m, thinning_mm=th, rack=rack, z0=sh.z0, tip_min_mm=p.tip_land_min_module * m, shaper=sh)
+        progress(f"law search: generating the teeth of candidate {len(tries) + 1} (ripple {100 * pt.ripple:.2f} %, "
+                 f"shaper d0 {pt.d0_mm:g})")
+        try:
+            with input_names(_TOOTH_KEYS_D0):
+                drv = generate_gear(pc, "driver", ToothSpec(x=p.driver_shift, **common), frame)
+                dvn = generate_gear(pc, "driven", ToothSpec(x=-p.driver_shift, **common), frame)
+        except (InputError, RuntimeError, ValueError) as exc:
+            tries.append((pt, str(exc).split(": ", 1)[-1]))
+            continue
+        tries.append((pt, ""))
+        return Design("generated", law, sl, pt.L, m, z_H, z_H // law.n, pc, smoothing=sm, driver=drv, driven=dvn,
+                      ripple=sm.ripple, closure_error=sm.closure_error, search=res, search_tries=tuple(tries),
+                      shaper=entry)
+    raise InputError("driver_shift", p.driver_shift,
+                     f"none of the {len(tries)} least-ripple generable blends can be cut: "
+                     + "; ".join(f"d0 {t.d0_mm:g} ripple {100 * t.ripple:.2f} %: {why}" for t, why in tries),
+                     "another driver_shift, more teeth or a wider center_distance_band_mm")
+
+
 def design_generated(p: NoncircularPairParams, progress=lambda s: None) -> Design:
     """Seed 000/002 law -> C2 blend -> closure -> generated teeth (docs/architecture.md, "Seed equations and their modules")."""
+    if p.law_search:
+        return _search_design(p, _law(p), progress)
     from ...gears.noncircular_teeth import ArcFrame, ToothSpec
     from ...geometry.noncircular_outline import generate_gear
 
@@ -126,9 +227,11 @@ def design_generated(p: NoncircularPairParams, progress=lambda s: None) -> Desig
     frame = ArcFrame(pc)
     rack = _rack(p)
     th = _thinning(p)
-    common = dict(m=m, thinning_mm=th, rack=rack, z0=p.shaper_teeth, tip_min_mm=p.tip_land_min_module * m)
+    sh = shaper_of(p, m)
+    common = dict(m=m, thinning_mm=th, rack=rack, z0=p.shaper_teeth if sh is None else sh.z0,
+                  tip_min_mm=p.tip_land_min_module * m, shaper=sh)
     g = sm.generability
-    with input_names(_TOOTH_KEYS):
+    with input_names(_TOOTH_KEYS if sh is None else _TOOTH_KEYS_D0):
         for chk, x in ((g.driver, p.driver_shift), (g.driven, -p.driver_shift)):
             if chk.concave:  # fail fast: the shaper this gear needs must exist
                 ToothSpec(x=x, **common).shaper_tools()
@@ -137,7 +240,14 @@ def design_generated(p: NoncircularPairParams, progress=lambda s: None) -> Desig
         progress(f"generated: driven teeth ({z_H})")
         dvn = generate_gear(pc, "driven", ToothSpec(x=-p.driver_shift, **common), frame)
     return Design("generated", law, sm.law, L, m, z_H, z_H // law.n, pc, smoothing=sm, driver=drv, driven=dvn,
-                  ripple=sm.ripple, closure_error=sm.closure_error)
+                  ripple=sm.ripple, closure_error=sm.closure_error,
+                  shaper=None if p.shaper_d0_mm <= 0 else _entry_of(p, m))
+
+
+def _entry_of(p, m):
+    from ...gears.catalogue import shaper_entry
+
+    return shaper_entry(p.shaper_d0_mm, m)
 
 
 def _replace(p, **kw):

@@ -154,10 +154,13 @@ def write_notes(w, d, pr, other, pr_other, other_note, p, mount):
         f"{law.hub_speed_ratio:.4f} mm/rad with the exact law.  Closure by true arc length (Trap 3): "
         f"L = {d.L:.6f} mm, m = {d.m:.6f} mm, z {d.z}/{d.z_H}; the driver makes exactly n turns per driven turn "
         f"(closure error {d.closure_error:.2g} rad).")
+    if d.method == "generated" and d.search is not None:
+        _search_notes(w, d, p)
     if d.method == "generated":
         sm = d.smoothing
         g = sm.generability
         r = d.ripple
+    if d.method == "generated" and d.search is None:
         w.add_note(
             f"Price of smoothing (SPEC Trap 2): the exact law has corners at leg hand-over (phi = 45 deg + k 90 deg); "
             f"it is replaced there by an even degree-6 polynomial in the blend window of half-width "
@@ -173,12 +176,29 @@ def write_notes(w, d, pr, other, pr_other, other_note, p, mount):
             + f".  The hub speed v/omega = (dX01/dphi)/U is constant outside the windows; inside them it ripples by "
               f"(max - min)/mean = {_pct(r.ripple)}, the minimum at phi = {math.degrees(r.phi_min):.3f} deg (hand-over) "
               f"and the maximum at phi = {math.degrees(r.phi_max):.3f} deg (inside the window).")
+    if d.method == "generated":
+        if d.shaper is None:
+            shaper = f"a shaper z0 = {p.shaper_teeth} (x0 = -x of the gear)"
+            rack = f"ISO 53 rack (alpha = {p.pressure_angle_deg:g} deg, h_a* = 1, c* = 0.25, rho_f* = 0.38)"
+        else:
+            e = d.shaper
+            shaper = (f"the catalogue shaper d0 = {e.d0_mm:g} mm ({e.standard}: m = {e.m:g}, z0 = {e.z0}, own x0 = "
+                      f"{e.x0:+g}, h_a0* = {e.h_a0_star:g}, rho_a0* = {e.rho_a0_star:g}"
+                      f"{'; x0 and rho_a0* are ours, see gears/data/cutters.toml' if e.source == 'ours' else ''}), "
+                      f"re-phased per flank so that it cuts the rack's flank (gears/envelope.py, ShaperOnRackCentrode); "
+                      f"root lifted where its fillet stops short of the root equidistant: at most "
+                      f"{_root_bridge_max(d):.3f} mm")
+            from ...gears.catalogue import rack_profile
+
+            rk = rack_profile(p.rack_profile)
+            rack = (f"ISO 53:1998 rack profile {p.rack_profile} (alpha = {p.pressure_angle_deg:g} deg, h_a* = "
+                    f"{rk.h_a_star:g}, c* = {rk.c_star:g}, rho_f* = {rk.rho_f_star:g})")
         w.add_note(
-            f"Generated teeth: ISO 53 rack (alpha = {p.pressure_angle_deg:g} deg, h_a* = 1, c* = 0.25, rho_f* = 0.38) "
+            f"Generated teeth: {rack} "
             f"rolling on each pitch curve on one shared arc-length frame; driver shift {p.driver_shift:+g}, driven "
             f"{-p.driver_shift:+g} (one imaginary rack: the pair stays conjugate at the pitch-curve centre distance); "
-            f"{d.driven.shaper_teeth + d.driver.shaper_teeth} teeth next to concave stretches cut by a shaper z0 = "
-            f"{p.shaper_teeth} (x0 = -x of the gear); {d.driver.shortened_teeth + d.driven.shortened_teeth} tips "
+            f"{d.driven.shaper_teeth + d.driver.shaper_teeth} teeth next to concave stretches cut by "
+            f"{shaper}; {d.driver.shortened_teeth + d.driven.shortened_teeth} tips "
             f"shortened to a land of {p.tip_land_min_module:g} m; undercut teeth: "
             f"{d.driver.undercut_teeth + d.driven.undercut_teeth}; backlash j_n = {p.backlash_mm:g} mm as tooth "
             f"thinning j_n/(2 cos alpha) per gear.")
@@ -214,6 +234,73 @@ def write_notes(w, d, pr, other, pr_other, other_note, p, mount):
     elif other_note:
         w.add_note(other_note)
 
+
+
+def _root_bridge_max(d) -> float:
+    """Largest lift (mm) of the root where a re-phased shaper's fillet stops short of the root equidistant."""
+    return float(max([0.0] + [g for gear in (d.driver, d.driven) for g in getattr(gear, "root_gaps", ())]))
+
+
+def _search_notes(w, d, p) -> None:
+    """The law search: what was searched, what binds, the candidates tried, the papers' method beside it."""
+    res = d.search
+    best = res.points[0]
+    chosen = d.search_tries[-1][0]
+    sl = d.run_law
+    r = d.ripple
+    refused = [f"{100 * t.ripple:.2f} % (d0 {t.d0_mm:g} mm, delta {math.degrees(t.delta):.2f} deg): {why}"
+               for t, why in d.search_tries if why]
+    table = sector_design_table(p)[0] if p.driven_teeth % 4 == 0 else None
+    papers = f"; the papers' sector method (ideal teeth) {_pct(sector_hub_speed(table).ripple)}" if table is not None else ""
+    w.add_note(
+        f"Law search (issue 10, gears/law_search.py): the blend at hand-over is an even degree-6 polynomial in the "
+        f"window of half-width delta with a free hand-over value U_s(phi_h) = u_h (the depth of the hub-speed dip), "
+        f"C2 at the window ends; closure is kept exact by scaling U by (1 - eps) outside the windows instead of a "
+        f"bump beside the dip.  Searched: delta on {len(set(q.delta for q in res.points))} generable half-widths of "
+        f"the scan, at each the smallest generable u_h (scan and bisection), for every catalogue shaper at m = "
+        f"{d.m:g} mm, with the centre distance within {res.L_band:g} mm of L_exact = {res.L_ref:.3f} mm (closure of the "
+        f"exact law); {res.evaluations} laws evaluated, {len(res.points)} generable points (tables/law_search.csv, "
+        f"plots/law_search_front.png: the Pareto fronts ripple vs centre distance and ripple vs curvature margin).  "
+        f"Least screened ripple {_pct(best.ripple)} (shaper d0 {best.d0_mm:g} mm); "
+        + (f"refused by the tooth generator: {'; '.join(refused)}; " if refused else "")
+        + f"built: {_pct(r.ripple)} with delta = {math.degrees(chosen.delta):.3f} deg, u_h = {chosen.u_h_rel:.6f} u, "
+          f"eps = {sl.eps:.3e}, L = {d.L:.4f} mm, shaper d0 {chosen.d0_mm:g} mm (z0 {chosen.z0}); binding: "
+          f"{chosen.binding} (margin {chosen.margin_mm:.4f} mm); hub speed minimum at phi = "
+          f"{math.degrees(r.phi_min):.3f} deg, maximum at {math.degrees(r.phi_max):.3f} deg{papers}.")
+
+
+def law_search_outputs(w, d) -> None:
+    """tables/law_search.csv and plots/law_search_front.png (law_search = true)."""
+    res = d.search
+    tried = {(t.d0_mm, t.delta, t.u_h_rel): ("built" if not why else "refused") for t, why in d.search_tries}
+    cols = ["rank", "shaper_d0_mm", "z0", "delta_deg", "u_h_over_u", "center_distance_mm", "speed_ripple",
+            "curvature_margin_mm", "binding", "front_ripple_vs_L", "front_ripple_vs_margin", "teeth"]
+    w.add_table("law_search", cols, [[k + 1, q.d0_mm, q.z0, math.degrees(q.delta), q.u_h_rel, q.L, q.ripple,
+                                      q.margin_mm, q.binding, q.front_L, q.front_margin,
+                                      tried.get((q.d0_mm, q.delta, q.u_h_rel), "")]
+                                     for k, q in enumerate(res.points)])
+    from ...export.plots import new_figure
+
+    fig, ax0 = new_figure(9.0, 4.2)
+    fig.delaxes(ax0)
+    a1, a2 = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
+    for ax in (a1, a2):
+        ax.grid(True, lw=0.4, alpha=0.6)
+    for ax, key, front, label in ((a1, "L", "front_L", "centre distance L, mm"),
+                                  (a2, "margin_mm", "front_margin", "least curvature margin, mm")):
+        for d0 in sorted({q.d0_mm for q in res.points}):
+            qs = [q for q in res.points if q.d0_mm == d0]
+            ax.plot([getattr(q, key) for q in qs], [100 * q.ripple for q in qs], "o", ms=3, label=f"shaper d0 {d0:g}")
+        fr = sorted((q for q in res.points if getattr(q, front)), key=lambda q: getattr(q, key))
+        ax.plot([getattr(q, key) for q in fr], [100 * q.ripple for q in fr], "k-", lw=0.8, label="Pareto front")
+        for q, why in d.search_tries:
+            ax.plot(getattr(q, key), 100 * q.ripple, "rx" if why else "g*", ms=9 if not why else 7)
+        ax.set_xlabel(label)
+        ax.set_ylabel("hub speed ripple, %")
+    a1.legend(fontsize=7)
+    a1.set_title("law search: built (star), refused by the generator (x)", fontsize=9)
+    fig.tight_layout()
+    w.add_plot("law_search_front", fig)
 
 
 def solids(dd: PairDesign, w, built: dict) -> None:
@@ -258,6 +345,8 @@ def tables(dd: PairDesign, w, built: dict) -> None:
     w.add_table("pitch_curves", ["phi_rad", "r_H_mm", "theta_rad", "r_mm", "ratio_U", "hub_speed_mm_per_rad"],
                 [[float(a), float(b), float(c), float(e), float(f), float(g)] for a, b, c, e, f, g in
                  zip(ph, pcr.r_H(ph), d.run_law.theta(ph), pcr.r(ph), d.run_law.U(ph), d.run_law.hub_speed(ph))])
+    if d.method == "generated" and d.search is not None:
+        law_search_outputs(w, d)
     if d.method == "generated":
         rows = []
         for gear in (d.driver, d.driven):
@@ -310,6 +399,15 @@ def checks_and_derived(dd: PairDesign, w, built: dict) -> None:
             "shaper_cut_teeth": d.driver.shaper_teeth + d.driven.shaper_teeth,
             "undercut_teeth": d.driver.undercut_teeth + d.driven.undercut_teeth,
         })
+        if d.shaper is not None:
+            w.derived.update({"rack_profile": p.rack_profile, "shaper_d0_mm": d.shaper.d0_mm, "shaper_z0": d.shaper.z0,
+                              "shaper_x0": d.shaper.x0, "shaper_standard": d.shaper.standard,
+                              "root_bridge_max_mm": _root_bridge_max(d)})
+        if d.search is not None:
+            w.derived.update({"law_search_points": len(d.search.points), "law_search_evaluations": d.search.evaluations,
+                              "law_search_tries": len(d.search_tries), "blend_u_h_over_u": d.search_tries[-1][0].u_h_rel,
+                              "blend_eps": d.run_law.eps, "law_search_binding": d.search_tries[-1][0].binding,
+                              "law_search_best_screened_ripple": d.search.points[0].ripple})
     else:
         w.derived.update({"sector_arc_mm": d.table.arc, "sectors_per_leg": d.table.i})
     if pr_other is not None:

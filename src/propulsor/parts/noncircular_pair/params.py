@@ -47,6 +47,25 @@ class NoncircularPairParams:
                                  why="past it the driver teeth turn pointed")
     shaper_teeth: int = param(20, "", "z0 of the shaper cutter for concave pitch-curve stretches", min=6, max=200,
                               integer=True, why="largest disc shaper cutters (GOST 9323: d0 <= 200 mm at m >= 1)")
+    rack_profile: str = param("A", "", "ISO 53 basic rack profile of the cutting rack (A, B, C, D; ISO 53:1998 "
+                              "Table 1)", choices=("A", "B", "C", "D"))
+    shaper_d0_mm: float = param(0.0, "mm", "nominal pitch diameter of the catalogue shaper for concave stretches "
+                                "(GOST 9323 / DIN 1825: 25, 38, 50, 75, 100; its own z0 and x0); 0: a shaper of "
+                                "shaper_teeth with x0 = -x of the gear it cuts", min=0.0, max=100.0,
+                                why="the largest nominal diameter of the catalogue (gears/data/cutters.toml)")
+    law_search: bool = param(False, "", "search the blend shape (half-width and hand-over value) and the catalogue "
+                             "shaper for the least hub speed ripple under generability (gears/law_search.py); "
+                             "smoothing_deg, smoothing_max_deg, shaper_d0_mm and shaper_teeth are then not used")
+    center_distance_band_mm: float = param(5.0, "mm", "law search: largest |L - L_exact| (L_exact: closure of the "
+                                           "exact law at module_mm, driven_teeth)", min=0.0, min_exclusive=True,
+                                           max=100.0, why="a band of 100 mm is no longer the seed's drive")
+    blend_hand_over: float = param(0.0, "", "U_s at hand-over over u: the blend's second shape parameter (closure "
+                                   "by scaling U outside the windows); 0: the window-integral blend", min=0.0, max=2.0,
+                                   why="twice the mean ratio at hand-over is no longer a blend of this law")
+    shaper_own_x0: bool = param(False, "", "with shaper_d0_mm = 0: the shaper of shaper_teeth keeps its own shift "
+                                "shaper_x0 (re-phased per flank) instead of x0 = -x of the gear")
+    shaper_x0: float = param(0.0, "", "own profile shift x0 of the shaper (shaper_own_x0 = true)", min=-1.0, max=1.5,
+                             why="past it the shaper's teeth turn pointed")
     smoothing_deg: float = param(0.0, "deg", "half-width of the C2 blend at hand-over; 0: smallest generable",
                                  min=0.0, max=45.0, why="one leg's support phase is 90° wide")
     smoothing_max_deg: float = param(22.5, "deg", "largest blend half-width searched", min=0.0, max=45.0,
@@ -90,6 +109,9 @@ class NoncircularPairParams:
                 raise InputError("center_distance_mm", self.center_distance_mm,
                                  "generated teeth: give either module_mm (closure fixes L) or center_distance_mm "
                                  "(closure fixes the module), not both", f"module_mm = {self.module_mm}")
+            if self.blend_hand_over > 0 and not self.smoothing_deg > 0 and not self.law_search:
+                raise InputError("blend_hand_over", self.blend_hand_over,
+                                 "a hand-over value needs the blend half-width smoothing_deg > 0")
             if self.smoothing_deg > self.smoothing_max_deg:
                 raise InputError("smoothing_deg", self.smoothing_deg, f"must be <= smoothing_max_deg = {self.smoothing_max_deg}")
         for name in ("driver_bore_mm", "driven_bore_mm"):

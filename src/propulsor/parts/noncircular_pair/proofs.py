@@ -66,13 +66,15 @@ def checks_generated(d: Design, pr, p) -> list[Check]:
         if chk.concave:
             out.append(Check.greater_than(f"generability.{chk.curve}_concave_rho", chk.rho_concave_min, chk.r0, "mm",
                                           f"{chk.curve} concave |rho|_min {chk.rho_concave_min:.4f} mm vs shaper pitch "
-                                          f"radius r0 = {chk.r0:.3f} mm"))
+                                          f"radius r0 = {chk.r0:.3f} mm" + (" (r0 + cutting offset e of the catalogue "
+                                          "shaper's own x0)" if d.shaper is not None else "")))
     for gear in (d.driver, d.driven):
         out.append(Check.at_most(f"teeth.{gear.role}_undercut", gear.undercut_teeth, 0, "teeth",
                                  f"{gear.undercut_teeth} of {len(gear.teeth)} {gear.role} teeth undercut"))
         out.append(Check.at_least(f"teeth.{gear.role}_tip_land", gear.tip_thickness_min, p.tip_land_min_module * d.m - 1e-9,
                                   "mm", f"least tip land {gear.tip_thickness_min:.4f} mm; {gear.shortened_teeth} teeth "
-                                        f"tip-shortened, {gear.shaper_teeth} cut by the shaper z0 = {p.shaper_teeth}"))
+                                        f"tip-shortened, {gear.shaper_teeth} cut by the shaper z0 = "
+                                        f"{p.shaper_teeth if d.shaper is None else d.shaper.z0}"))
     s = pr.summary()
     tol = policy.OVERLAP_AREA_TOL_MM2
     out.append(Check.at_most("mesh.overlap_area", s["overlap_law_max_mm2"], tol, "mm^2",

@@ -1,0 +1,120 @@
+"""`make` behaves like make: a part is rebuilt only when its part file, a file it names, the source or
+the installed versions are newer than its manifest; the depfile a build writes; the worker budget
+under `make -jN`.  The Makefile is run with `make -n` in a copy of the project whose outputs are
+faked by their manifests' time stamps (nothing is built)."""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import time
+from pathlib import Path
+
+import pytest
+
+from propulsor import parallel
+from propulsor.cli import main
+
+ROOT = Path(__file__).resolve().parents[1]
+needs_make = pytest.mark.skipif(shutil.which("make") is None, reason="make is not installed")
+
+
+def _touch(path: Path, t: float) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    if not path.exists():
+        path.write_text("{}\n")
+    os.utime(path, (t, t))
+
+
+@pytest.fixture
+def project(tmp_path):
+    """A copy of the Makefile, part files and source; the venv stamp and every manifest up to date."""
+    for name in ("Makefile", "pyproject.toml", "constraints.txt"):
+        shutil.copy2(ROOT / name, tmp_path / name)
+    shutil.copytree(ROOT / "parts", tmp_path / "parts")
+    shutil.copytree(ROOT / "src", tmp_path / "src", ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
+    now = time.time()
+    for f in list((tmp_path / "src").rglob("*")) + list((tmp_path / "parts").glob("*")) + \
+            [tmp_path / n for n in ("Makefile", "pyproject.toml", "constraints.txt")]:
+        os.utime(f, (now - 100, now - 100))
+    _touch(tmp_path / ".venv" / ".installed", now - 50)
+    names = sorted(p.stem for p in (tmp_path / "parts").glob("*.toml"))
+    for n in names:
+        _touch(tmp_path / "output" / n / "manifest.json", now - 10)
+    (tmp_path / "output" / ".deps").mkdir()
+    (tmp_path / "output" / ".deps" / "balancer.mk").write_text(
+        "output/balancer/manifest.json: parts/balancer.toml parts/road_wheel.toml\n")
+    return tmp_path, names, now
+
+
+def _builds(folder: Path, *targets: str) -> list[str]:
+    r = subprocess.run(["make", "-n", *targets], cwd=folder, capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0, r.stderr
+    return sorted(line.split()[2] for line in r.stdout.splitlines() if " build " in line or " print " in line)
+
+
+@needs_make
+def test_nothing_changed_nothing_built(project):
+    folder, names, _ = project
+    assert len(names) >= 12
+    assert _builds(folder) == []
+    t0 = time.perf_counter()
+    subprocess.run(["make", "-q"], cwd=folder, capture_output=True, timeout=60)
+    assert time.perf_counter() - t0 < 5.0  # evaluating the Makefile itself is quick (bench: 0.03 s)
+
+
+@needs_make
+def test_one_part_file_touched_rebuilds_that_part_and_what_reads_it(project):
+    folder, names, now = project
+    os.utime(folder / "parts" / "ncg_seed002.toml", (now, now))
+    assert _builds(folder) == ["parts/ncg_seed002.toml"]
+    os.utime(folder / "parts" / "road_wheel.toml", (now, now))  # the balancer names it (its depfile)
+    assert _builds(folder) == ["parts/balancer.toml", "parts/ncg_seed002.toml", "parts/road_wheel.toml"]
+    assert _builds(folder, "ncg_seed002") == ["parts/ncg_seed002.toml"]
+
+
+@needs_make
+def test_source_or_versions_changed_rebuild_all(project):
+    folder, names, now = project
+    os.utime(folder / "src" / "propulsor" / "policy.py", (now, now))
+    assert _builds(folder) == sorted(f"parts/{n}.toml" for n in names)
+    os.utime(folder / "src" / "propulsor" / "policy.py", (now - 100, now - 100))
+    os.utime(folder / ".venv" / ".installed", (now, now))
+    assert len(_builds(folder)) == len(names)
+
+
+def test_depfile_names_the_files_a_build_read(tmp_path, monkeypatch):
+    parts = tmp_path / "parts"
+    shutil.copytree(ROOT / "parts", parts)
+    monkeypatch.chdir(tmp_path)
+    # a dry run builds nothing and writes no depfile
+    assert main(["build", "parts/balancer.toml", "--out", "output/b", "--dry-run", "-q",
+                 "--depfile", "output/.deps/b.mk"]) == 0
+    assert not (tmp_path / "output" / ".deps" / "b.mk").exists()
+    from propulsor.cli import _write_depfile
+
+    _write_depfile(Path("output/.deps/b.mk"), Path("output/b/manifest.json"),
+                   (Path("parts/balancer.toml"), tmp_path / "parts" / "road_wheel.toml"))
+    assert (tmp_path / "output/.deps/b.mk").read_text() == \
+        "output/b/manifest.json: parts/balancer.toml parts/road_wheel.toml\n"
+
+
+@pytest.mark.parametrize("flags, jobs", [("", None), (" -j2 --jobserver-auth=3,4", 2), ("k -j", 0),
+                                         ("--jobs=3", 3), ("-j1", 1), ("n", None)])
+def test_make_jobs_read_from_makeflags(flags, jobs):
+    assert parallel.make_jobs(flags) == jobs
+
+
+def test_worker_budget_under_make_j(monkeypatch):
+    monkeypatch.delenv("PROPULSOR_JOBS", raising=False)
+    monkeypatch.setattr(os, "cpu_count", lambda: 2)
+    monkeypatch.setenv("MAKEFLAGS", " -j2 --jobserver-auth=3,4")
+    assert parallel.jobs_budget() == 1 and parallel.worker_cap(2) == 0
+    assert parallel.fork_pool(2) is None  # two builds on two cores: each runs inline
+    monkeypatch.setenv("MAKEFLAGS", "")
+    assert parallel.jobs_budget() == 2 and parallel.worker_cap(2) == 2
+    monkeypatch.setenv("PROPULSOR_JOBS", "1")
+    assert parallel.worker_cap(2) == 0
+    done = parallel.start(sum, [1, 2, 3])
+    assert isinstance(done, parallel.Done) and done.result() == 6
