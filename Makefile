@@ -61,7 +61,7 @@ list: $(STAMP)
 	$(BIN)/propulsor list
 
 test: $(STAMP)
-	$(BIN)/python -m pytest -q -n $(PYTEST_WORKERS) --dist loadgroup -m "not sweep" tests
+	$(BIN)/python -m pytest -q -n $(PYTEST_WORKERS) --dist loadfile -m "not sweep" tests
 
 check: $(STAMP)
 	$(BIN)/propulsor check output/

@@ -12,7 +12,6 @@ import pytest
 from propulsor.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]
-pytestmark = pytest.mark.xdist_group("polysector_kit")  # one worker builds the kit once
 
 
 @pytest.fixture(scope="module")

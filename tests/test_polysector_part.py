@@ -20,7 +20,6 @@ from propulsor.params import load_params, read_part_file
 
 ROOT = Path(__file__).resolve().parents[1]
 PART = ROOT / "parts" / "polysector.toml"
-pytestmark = pytest.mark.xdist_group("polysector_part")  # one worker builds the part once
 
 
 @pytest.fixture(scope="module")

@@ -16,7 +16,6 @@ from propulsor.parts import kit_type_names
 ROOT = Path(__file__).resolve().parents[1]
 needs_slicer = pytest.mark.skipif(shutil.which("prusa-slicer") is None,
                                   reason="PrusaSlicer is not installed (apt-get install prusa-slicer)")
-pytestmark = pytest.mark.xdist_group("print_kits")  # one worker builds the kits once
 
 
 @pytest.fixture(scope="module")

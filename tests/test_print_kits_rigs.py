@@ -17,7 +17,6 @@ ROOT = Path(__file__).resolve().parents[1]
 NAMES = ["cam_mover", "balancer", "road_wheel"]
 needs_slicer = pytest.mark.skipif(shutil.which("prusa-slicer") is None,
                                   reason="PrusaSlicer is not installed (apt-get install prusa-slicer)")
-pytestmark = pytest.mark.xdist_group("print_kits_rigs")  # one worker builds the kits once
 
 
 @pytest.fixture(scope="module")

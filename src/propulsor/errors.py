@@ -30,6 +30,10 @@ class InputError(ValueError):
             msg += f" ({hint})"
         super().__init__(msg)
 
+    def __reduce__(self):
+        # pickled whole (a forked worker's error comes back to the build as it was raised)
+        return (type(self), (self.parameter, self.value, self.limit, self.hint))
+
 
 @contextmanager
 def input_names(names: dict[str, str]):

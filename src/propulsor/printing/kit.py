@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..check import Check
+from ..parallel import fork_pool, inline, jobs_budget
 from .layout import lay_flat, pack, placed
 from .printers import Printer
 from .scale import ScaleChoice
@@ -173,25 +174,44 @@ def _assembly_picture(w, kit: Kit, meshes: dict) -> None:
     plt.close(fig)
 
 
+def _printed_piece(solid, name: str, genus, chamfer: float, layer: float, forked: bool):
+    """(mesh as built, mesh as printed: laid on its largest face with the bed-side chamfer, its mesh
+    checks) of one piece; run in a forked worker (OCCT's mesher on one thread there)."""
+    from ..checks.mesh import mesh_checks
+    from ..export.mesh import to_trimesh
+    from .chamfer import chamfer_first_layers
+
+    mesh = to_trimesh(solid, parallel=not forked and jobs_budget() > 1)
+    printed = chamfer_first_layers(lay_flat(mesh)[0], chamfer, layer, name)
+    return mesh, printed, mesh_checks(printed, name, expected_genus=genus)
+
+
 def write_kit(kit: Kit, w) -> None:
     """Pieces → STL + mesh checks; plates → 3MF + pictures; assembled picture; derived, checks and
     the report's text into the writer `w` (an OutputWriter whose report is print_report.md)."""
-    from ..checks.mesh import mesh_checks
-    from ..export.mesh import to_trimesh, write_3mf_objects, write_stl
-    from .chamfer import chamfer_first_layers
+    from ..export.mesh import write_3mf_objects, write_stl
 
     p = kit.printer
     flat = {}  # one per printed copy: name, or name_k when more than one is printed
     piece_meshes = {}
+    # every piece tessellated, laid flat, chamfered and checked in forked workers beside each other
+    pool = fork_pool(2)
+    jobs = []
     for pc in kit.pieces:
-        mesh = piece_meshes[pc.name] = to_trimesh(pc.solid)
-        # laid on its largest face, the bed-side chamfer in the first layers
-        printed = chamfer_first_layers(lay_flat(mesh)[0], p.chamfer_mm if pc.chamfer_mm is None else pc.chamfer_mm,
-                                       p.layer_mm, pc.name)
-        write_stl(printed, w.path(f"pieces/{pc.name}.stl"), pc.name)
-        w.add_checks(mesh_checks(printed, pc.name, expected_genus=pc.genus))
-        for k in range(pc.count):
-            flat[pc.name if pc.count == 1 else f"{pc.name}_{k + 1}"] = printed
+        chamfer = p.chamfer_mm if pc.chamfer_mm is None else pc.chamfer_mm
+        args = (pc.solid, pc.name, pc.genus, chamfer, p.layer_mm, pool is not None)
+        jobs.append(pool.submit(_printed_piece, *args) if pool is not None else inline(_printed_piece, *args))
+    try:
+        for pc, job in zip(kit.pieces, jobs):
+            mesh, printed, checks = job.result()
+            piece_meshes[pc.name] = mesh
+            write_stl(printed, w.path(f"pieces/{pc.name}.stl"), pc.name)
+            w.add_checks(checks)
+            for k in range(pc.count):
+                flat[pc.name if pc.count == 1 else f"{pc.name}_{k + 1}"] = printed
+    finally:
+        if pool is not None:
+            pool.shutdown(wait=True, cancel_futures=True)
     plates = pack({n: tuple((m.bounds[1] - m.bounds[0])[:2]) for n, m in flat.items()}, p.bed_x_mm, p.bed_y_mm,
                   p.piece_gap_mm)
     w.add_checks(plate_checks(kit, plates, flat))

@@ -191,8 +191,8 @@ def _search_design(p: NoncircularPairParams, law: WalkingLaw, progress) -> Desig
                  f"shaper d0 {pt.d0_mm:g})")
         try:
             with input_names(_TOOTH_KEYS_D0):
-                drv = generate_gear(pc, "driver", ToothSpec(x=p.driver_shift, **common), frame)
-                dvn = generate_gear(pc, "driven", ToothSpec(x=-p.driver_shift, **common), frame)
+                drv, dvn = _generate_pair(pc, ToothSpec(x=p.driver_shift, **common),
+                                          ToothSpec(x=-p.driver_shift, **common), frame)
         except (InputError, RuntimeError, ValueError) as exc:
             tries.append((pt, str(exc).split(": ", 1)[-1]))
             continue
@@ -204,6 +204,17 @@ def _search_design(p: NoncircularPairParams, law: WalkingLaw, progress) -> Desig
                      f"none of the {len(tries)} least-ripple generable blends can be cut: "
                      + "; ".join(f"d0 {t.d0_mm:g} ripple {100 * t.ripple:.2f} %: {why}" for t, why in tries),
                      "another driver_shift, more teeth or a wider center_distance_band_mm")
+
+
+def _generate_pair(pc, spec_driver, spec_driven, frame):
+    """(driver, driven) generated outlines: the driver in a forked worker while this process cuts the
+    driven wheel (the two are independent; seed 000/002 teeth by the rack/shaper envelope)."""
+    from ...geometry.noncircular_outline import generate_gear
+    from ...parallel import start
+
+    job = start(generate_gear, pc, "driver", spec_driver, frame)
+    dvn = generate_gear(pc, "driven", spec_driven, frame)
+    return job.result(), dvn
 
 
 def design_generated(p: NoncircularPairParams, progress=lambda s: None) -> Design:
@@ -236,9 +247,8 @@ def design_generated(p: NoncircularPairParams, progress=lambda s: None) -> Desig
             if chk.concave:  # fail fast: the shaper this gear needs must exist
                 ToothSpec(x=x, **common).shaper_tools()
         progress(f"generated: driver teeth ({z_H // law.n}), rack/shaper envelopes")
-        drv = generate_gear(pc, "driver", ToothSpec(x=p.driver_shift, **common), frame)
-        progress(f"generated: driven teeth ({z_H})")
-        dvn = generate_gear(pc, "driven", ToothSpec(x=-p.driver_shift, **common), frame)
+        drv, dvn = _generate_pair(pc, ToothSpec(x=p.driver_shift, **common), ToothSpec(x=-p.driver_shift, **common),
+                                  frame)
     return Design("generated", law, sm.law, L, m, z_H, z_H // law.n, pc, smoothing=sm, driver=drv, driven=dvn,
                   ripple=sm.ripple, closure_error=sm.closure_error,
                   shaper=None if p.shaper_d0_mm <= 0 else _entry_of(p, m))
