@@ -1,0 +1,126 @@
+"""The pair's shared arc-length frame and the pitch curves in each gear's body frame (seeds 000 and
+002): the geometry every tooth of :mod:`.noncircular_teeth` is placed on.  Pure math (numpy).
+
+Both pitch curves are parametrised by the driven angle phi and share ONE arc-length frame
+s(phi) = integral sqrt(r_H^2 + r_H'^2) dphi (``ArcFrame``; rolling without slip: the driver's arc
+over the same phi is equal).  ``BodyPitchCurve``: a pitch curve in its gear's body frame (the
+driven wheel's point of polar angle phi; the driver's at body polar angle pi - theta).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..errors import require
+from ..laws.walking import LEG_PERIOD
+from .noncircular import PitchCurves, leg_breakpoints
+
+__all__ = ["ArcFrame", "BodyPitchCurve"]
+
+#: Gauss-Legendre nodes and weights of the arc-length integrals
+_GX, _GW = np.polynomial.legendre.leggauss(10)
+
+
+class ArcFrame:
+    """Shared arc length s(phi) of the pair's pitch curves, s(0) = 0 (true arc length
+    ds = sqrt(r_H^2 + r_H'^2) dphi, seed 000 eq. 12 for r_H; docs/architecture.md, "closure").  Periodic per leg:
+    s(phi + pi/2) = s(phi) + leg.  Tabulated on one leg (nodes at the law's breakpoints, the
+    ends of the C2 blend windows) by 10-point Gauss-Legendre; s(phi) and its inverse phi(s)
+    are evaluated by cubic Hermite interpolation with the exact slopes ds/dphi, dphi/ds
+    (interpolation error ~1e-11 rad with the default node density, see the tests)."""
+
+    def __init__(self, pc: PitchCurves, per_piece: int = 400):
+        from scipy.interpolate import CubicHermiteSpline
+
+        self.pc = pc
+        bp = leg_breakpoints(pc.law)
+        nodes = np.unique(np.concatenate([np.linspace(a, b, per_piece + 1) for a, b in zip(bp[:-1], bp[1:])]))
+        self.nodes = nodes
+        seg = self._gauss(nodes[:-1], nodes[1:])
+        S = np.concatenate([[0.0], np.cumsum(seg)])
+        j0 = int(np.searchsorted(nodes, 0.0, side="right") - 1)
+        S0 = S[j0] + float(self._gauss(np.array([nodes[j0]]), np.array([0.0]))[0])
+        self.S = S - S0
+        self.leg = float(S[-1])
+        self.perimeter = 4.0 * self.leg
+        g = pc.ds_dphi(nodes)
+        self._s_of = CubicHermiteSpline(nodes, self.S, g)
+        self._phi_of = CubicHermiteSpline(self.S, nodes, 1.0 / g)
+
+    def _gauss(self, a, b):
+        a = np.asarray(a, float)
+        b = np.asarray(b, float)
+        x = 0.5 * (b - a)[:, None] * _GX[None, :] + 0.5 * (a + b)[:, None]
+        f = self.pc.ds_dphi(x.ravel()).reshape(x.shape)
+        return 0.5 * (b - a) * (f @ _GW)
+
+    def s_exact(self, phi):
+        """s(phi) by quadrature from the nearest node below (reference for the interpolant)."""
+        phi = np.atleast_1d(np.asarray(phi, float))
+        k = np.floor((phi + math.pi / 4) / LEG_PERIOD)
+        w = phi - k * LEG_PERIOD
+        j = np.clip(np.searchsorted(self.nodes, w, side="right") - 1, 0, len(self.nodes) - 2)
+        return self.S[j] + self._gauss(self.nodes[j], w) + k * self.leg
+
+    def s(self, phi):
+        phi = np.atleast_1d(np.asarray(phi, float))
+        k = np.floor((phi + math.pi / 4) / LEG_PERIOD)
+        return self._s_of(phi - k * LEG_PERIOD) + k * self.leg
+
+    def phi(self, s):
+        s = np.atleast_1d(np.asarray(s, float))
+        k = np.floor((s - self.S[0]) / self.leg)
+        return self._phi_of(s - k * self.leg) + k * LEG_PERIOD
+
+
+class BodyPitchCurve:
+    """One gear's pitch curve in its body frame, as a function of the driven angle phi.
+
+    role 'driven': P = r_H(phi) (cos phi, sin phi) (seed 000 eq. 12);
+    role 'driver': P = r(phi) (cos beta, sin beta), beta = pi - theta(phi), r = L - r_H
+    (seed 000 eq. 13).  ``sgn``: +1 if the generation arc (clockwise on the body, gear on the
+    right of travel) runs with phi, -1 if against it.
+    """
+
+    def __init__(self, pc: PitchCurves, role: str):
+        require(role in ("driver", "driven"), "role", role, "must be 'driver' or 'driven'")
+        self.pc, self.role = pc, role
+        self.sgn = -1.0 if role == "driven" else 1.0
+
+    def polar(self, phi):
+        """(radius, body polar angle) of the pitch point."""
+        phi = np.asarray(phi, float)
+        if self.role == "driven":
+            return self.pc.r_H(phi), phi
+        return self.pc.L - self.pc.r_H(phi), math.pi - self.pc.law.theta(phi)
+
+    def point(self, phi):
+        r, a = self.polar(phi)
+        return np.column_stack([r * np.cos(a), r * np.sin(a)])
+
+    def dpoint(self, phi):
+        """dP/dphi."""
+        phi = np.atleast_1d(np.asarray(phi, float))
+        r, a = self.polar(phi)
+        c, s = np.cos(a), np.sin(a)
+        if self.role == "driven":
+            dr, da = self.pc.dr_H(phi), 1.0
+        else:
+            dr, da = -self.pc.dr_H(phi), -self.pc.law.U(phi)
+        return np.column_stack([dr * c - r * da * s, dr * s + r * da * c])
+
+    def normal(self, phi):
+        """Unit outward normal (away from the gear body)."""
+        d = self.sgn * self.dpoint(phi)
+        d = d / np.linalg.norm(d, axis=1)[:, None]
+        return np.column_stack([-d[:, 1], d[:, 0]])
+
+    def offset(self, phi, h):
+        """Equidistant at height h (outwards > 0) - the tip (h > 0) and root (h < 0) curves."""
+        return self.point(phi) + h * self.normal(phi)
+
+    def rho(self, phi):
+        """Signed radius of curvature (> 0 convex) at the pitch point of driven angle phi."""
+        return self.pc.rho_H(phi) if self.role == "driven" else self.pc.rho(phi)
