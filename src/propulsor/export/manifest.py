@@ -113,11 +113,13 @@ def library_versions() -> dict:
 
 
 def write_manifest(folder: str | Path, part: str, inputs, derived, checks, versions: dict | None = None,
-                   file_info: dict | None = None, expected_failures=()) -> Path:
+                   file_info: dict | None = None, expected_failures=(), media: dict | None = None) -> Path:
     """Write folder/manifest.json; file_info adds keys to file entries by
     relative path (e.g. {'gear.step': {'volume_mm3': ...}}); versions default
     to library_versions().  expected_failures: names of checks the part file
-    documents as failing (they are recorded, and do not make `passed` false)."""
+    documents as failing (they are recorded, and do not make `passed` false).  media: what the
+    gallery shows ({kind: [entry, ...]}, e.g. 'animations', 'models', 'pictures'; each entry a dict
+    with at least 'path'), written under the key ``media`` when not empty."""
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     files = file_entries(folder)
@@ -136,6 +138,8 @@ def write_manifest(folder: str | Path, part: str, inputs, derived, checks, versi
         "files": files,
         "versions": jsonable(versions if versions is not None else library_versions()),
     }
+    if media:
+        data["media"] = jsonable({k: v for k, v in media.items() if v})
     path = folder / MANIFEST
     path.write_text(json.dumps(data, indent=2, sort_keys=True, allow_nan=False) + "\n", encoding="utf-8")
     return path

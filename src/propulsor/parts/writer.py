@@ -11,6 +11,7 @@ A part module computes; it hands results to the writer:
     w.add_table(name, columns, rows)  CSV under tables/
     w.add_plot(name, fig)             PNG under plots/
     w.add_note(text)                  a paragraph of the report
+    w.add_media(kind, entry)          a gallery item (animation, model, picture) for the manifest
     w.finish()                        report.md + manifest.json; returns the failures
 """
 
@@ -97,6 +98,7 @@ class OutputWriter:
         self.tables: list[str] = []
         self.plots: list[str] = []
         self.extra_files: list[str] = []  # assemblies and DXF, named in the report
+        self.media: dict[str, list[dict]] = {}  # kind -> entries ({path, ...}), the manifest's "media"
         self._pool = None
         self._solid_jobs: list = []
         self.report_name = "report.md"  # a print kit's is print_report.md
@@ -113,6 +115,12 @@ class OutputWriter:
 
     def add_note(self, text: str) -> None:
         self.notes.append(text)
+
+    def add_media(self, kind: str, entry: dict) -> None:
+        """A gallery item of this build: kind 'animations', 'models' or 'pictures'; entry a dict with
+        'path' (relative to the output folder, the file written by the caller) and what the gallery
+        shows of it (title, frames, size...).  Listed in the manifest under ``media``."""
+        self.media.setdefault(kind, []).append(dict(entry))
 
     # -- solids ------------------------------------------------------------------
     def add_solid(self, name: str, solid, expected_genus: int | None = None) -> SolidRecord:
@@ -222,5 +230,5 @@ class OutputWriter:
                      derived=report_derived, checks=self.checks, tables=self.tables, plots=self.plots,
                      notes=notes)
         write_manifest(self.folder, part=self.part, inputs=inputs, derived=self.derived, checks=self.checks,
-                       expected_failures=self.expected_failures)
+                       expected_failures=self.expected_failures, media=self.media)
         return self.failures()
