@@ -72,3 +72,18 @@ def test_bad_inputs():
         Station(m1=0.0, C1=1.0, b1=0.0)
     with pytest.raises(InputError, match="t_end"):
         simulate(ST, ROAD, 1.0, 0.0)
+
+
+@pytest.mark.parametrize("road,V,as_printed", [(ROAD, 5.0, False), (Road(0.05, 1.0), 13.889, False),
+                                               (ROAD, 3.0, True)])
+def test_exact_solution_agrees_with_a_numerical_integration(road, V, as_printed):
+    """simulate() solves the linear station exactly (matrix exponential of the quadratic-form states); scipy's
+    DOP853 on the equations as written (rtol 1e-10) gives the same temperature, body motion and power."""
+    t_end = 20.0 if as_printed else 30.0
+    exact = simulate(ST, road, V, t_end, as_printed=as_printed)
+    num = simulate(ST, road, V, t_end, as_printed=as_printed, rtol=1e-10)
+    scale = np.abs(num.z2).max()
+    assert np.abs(exact.z2 - num.z2).max() <= 1e-7 * scale
+    if not as_printed:
+        assert np.abs(exact.T - num.T).max() < 1e-7
+        assert exact.mean_power == pytest.approx(num.mean_power, rel=1e-8)

@@ -1,5 +1,6 @@
 """Heating of the telescopic damper of one road-wheel station on a sinusoidal road (seed 004 ch. 6,
-eq. 73–75, Table 11): a two-mass model integrated with scipy.
+eq. 73–75, Table 11): a two-mass model, linear, solved exactly (matrix exponential; scipy's DOP853
+on the same equations is the cross-check).
 
     m1·z1'' = −C1·(z1 − q) − b1·(z1' − q') − C2·(z1 − z2) − b2·(z1' − z2')     unsprung mass (wheel, balancer)
     m2·z2'' = −C2·(z2 − z1) − b2·(z2' − z1')                                    sprung mass per wheel
@@ -82,6 +83,8 @@ def cooling_coefficient(st: Station, V: float) -> float:
 
 
 def _rhs(st: Station, road: Road, V: float, as_printed: bool):
+    """The station's equations as a right-hand side f(t, y), y = (z1, z1', z2, z2', T) (for a numerical
+    integrator: the cross-check of :func:`simulate`'s exact solution)."""
     w = 2.0 * math.pi * V / road.wavelength
     a = road.a
     k_air = cooling_coefficient(st, V)
@@ -103,6 +106,39 @@ def _rhs(st: Station, road: Road, V: float, as_printed: bool):
     return f, w
 
 
+def _system(st: Station, road: Road, V: float, as_printed: bool) -> tuple[np.ndarray, np.ndarray, float]:
+    """The station as an autonomous linear system x' = M·x, x = (z1, z1', z2, z2', s, c), with the road
+    q = s = a·sin ωt, q' = ω·c (c = a·cos ωt) carried as a harmonic oscillator; returns M, x(0), ω."""
+    w = 2.0 * math.pi * V / road.wavelength
+    m1, m2, C1, C2, b1, b2 = st.m1, st.m2, st.C1, st.C2, st.b1, st.b2
+    M = np.zeros((6, 6))
+    M[0, 1] = M[2, 3] = 1.0
+    # unsprung mass: −C1·(z1 − q) − b1·(z1' − q') − C2·(z1 − z2) [+ b2·(z2' − z1') when the damper acts on it]
+    M[1] = [-(C1 + C2) / m1, -b1 / m1, C2 / m1, 0.0, C1 / m1, b1 * w / m1]
+    # sprung mass: −C2·(z2 − z1) − b2·(z2' − z1')   (printed: − b2·(z1' − z2'))
+    M[3] = [C2 / m2, b2 / m2, -C2 / m2, -b2 / m2, 0.0, 0.0]
+    if as_printed:
+        M[3, 1], M[3, 3] = -b2 / m2, b2 / m2
+    else:
+        M[1, 1] -= b2 / m1
+        M[1, 3] += b2 / m1
+    M[4, 5], M[5, 4] = w, -w
+    x0 = np.array([0.0, 0.0, 0.0, 0.0, 0.0, road.a])
+    return M, x0, w
+
+
+def _powers(Phi: np.ndarray, x: np.ndarray, n: int) -> np.ndarray:
+    """x, Phi·x, Phi²·x, ... (n states, as rows), by doubling: rows [k, 2k) = Phi^k applied to rows [0, k)."""
+    out = np.empty((n, len(x)))
+    out[0] = x
+    k, P = 1, Phi
+    while k < n:
+        m = min(k, n - k)
+        out[k:k + m] = out[:m] @ P.T
+        k, P = k + m, P @ P if m == k else P
+    return out
+
+
 @dataclass(frozen=True)
 class DamperRun:
     V: float
@@ -117,16 +153,52 @@ class DamperRun:
 
 
 def simulate(st: Station, road: Road, V: float, t_end: float, n_out: int = 400, as_printed: bool = False,
-             rtol: float = 1e-7) -> DamperRun:
-    """Integrate the station at speed V (m/s) from rest at T_env for t_end seconds (scipy DOP853)."""
+             rtol: float | None = None) -> DamperRun:
+    """The station at speed V (m/s) from rest at T_env for t_end seconds, solved exactly.
+
+    The mechanical system is linear with harmonic forcing, so x(t) = exp(M·t)·x(0) (:func:`_system`);
+    the damper power b2·(z2' − z1')² is a quadratic form of x, whose products X = x ⊗ x obey the linear
+    X' = (M ⊗ I + I ⊗ M)·X, and the heat equation (eq. 74–75) is linear in T − T_env driven by that power.
+    The 37 states (X, T − T_env) are advanced over the output grid by one matrix exponential (scipy.linalg.expm):
+    exact to rounding, where an integrator is exact to its tolerance.  rtol given: integrate the same
+    equations with scipy's DOP853 instead (the cross-check in tests)."""
+    from scipy.linalg import expm
+
     require_positive("t_end", t_end, "s")
+    if rtol is not None:
+        return _simulate_numerically(st, road, V, t_end, n_out, as_printed, rtol)
+    M, x0, w = _system(st, road, V, as_printed)
+    t_eval = np.linspace(0.0, t_end, n_out)
+    dt = t_eval[1] - t_eval[0] if n_out > 1 else 0.0
+    n = len(x0)
+    d = np.zeros(n)
+    d[3], d[1] = 1.0, -1.0                                   # z2' − z1'
+    heat, k_air = 1.0 / (st.m_a * st.c_steel), cooling_coefficient(st, V)
+    G = np.zeros((n * n + 1, n * n + 1))
+    G[:n * n, :n * n] = np.kron(M, np.eye(n)) + np.kron(np.eye(n), M)
+    G[n * n, :n * n] = heat * st.b2 * np.kron(d, d)
+    G[n * n, n * n] = -heat * k_air
+    Y = _powers(expm(G * dt), np.append(np.kron(x0, x0), 0.0), n_out)
+    xs = _powers(expm(M * dt), x0, n_out)
+    # mean damper power over the last whole periods (or the last quarter of the run at V = 0)
+    T_per = 2.0 * math.pi / w if w > 0 else t_end
+    n_per = max(1, int(0.25 * t_end / T_per))
+    ts = np.linspace(t_end - n_per * T_per, t_end, 200 * n_per + 1)
+    xt = _powers(expm(M * (ts[1] - ts[0])), expm(M * ts[0]) @ x0, len(ts))
+    P = st.b2 * (xt @ d) ** 2
+    mean_P = float(np.trapezoid(P, ts) / (ts[-1] - ts[0])) if ts[-1] > ts[0] else 0.0
+    return DamperRun(V, t_eval, st.T_env + Y[:, -1], xs[:, 2], mean_P)
+
+
+def _simulate_numerically(st: Station, road: Road, V: float, t_end: float, n_out: int, as_printed: bool,
+                          rtol: float) -> DamperRun:
+    """:func:`simulate` by scipy's DOP853 on the equations as written (:func:`_rhs`)."""
     f, w = _rhs(st, road, V, as_printed)
     t_eval = np.linspace(0.0, t_end, n_out)
     sol = solve_ivp(f, (0.0, t_end), [0.0, 0.0, 0.0, 0.0, st.T_env], method="DOP853", t_eval=t_eval,
                     rtol=rtol, atol=1e-9, dense_output=True)
     if not sol.success:  # pragma: no cover - a linear system with bounded forcing
         raise RuntimeError(sol.message)
-    # mean damper power over the last whole periods (or the last quarter of the run at V = 0)
     T_per = 2.0 * math.pi / w if w > 0 else t_end
     n_per = max(1, int(0.25 * t_end / T_per))
     ts = np.linspace(t_end - n_per * T_per, t_end, 200 * n_per + 1)

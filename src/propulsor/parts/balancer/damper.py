@@ -96,7 +96,7 @@ def damper_heat_results(m, w, built: dict) -> None:
     w.add_note(
         f"Damper heat (seed 004 ch. 6): two-mass station, sprung {st.m2:g} kg, unsprung {st.m1:.1f} kg (built balancer "
         f"+ road wheel), C2 = {st.C2:g} N/m, damper b2 = μ_mean = {st.b2:.0f} N·s/m at the wheel, tyre on track "
-        f"C1 = {st.C1:g} N/m, b1 = {st.b1:g} N·s/m (ours), integrated with scipy (DOP853) for "
+        f"C1 = {st.C1:g} N/m, b1 = {st.b1:g} N·s/m (ours), solved exactly (matrix exponential of the linear system) over "
         f"{policy.DAMPER_HEAT_T_END_S:g} s from rest at {st.T_env:g} °C; damper {st.m_a:g} kg of steel "
         f"({st.c_steel:g} J/(kg·K)), cooled by the air flow V·S·ρ·c_air over S = {st.S:g} m². Largest steady rise "
         f"{worst[1]:.2f} K on {worst[0]} at {worst[2] * 3.6:.0f} km/h. The printed sprung-mass equation has the "
