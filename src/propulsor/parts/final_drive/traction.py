@@ -87,9 +87,11 @@ def _plot(w, tr, c, v) -> None:
 
     from ...export.plots import new_figure
 
-    fig, _ = new_figure(10.0, 7.5)
+    fig, _ = new_figure(9.0, 6.5)
     fig.clf()
-    gs = fig.add_gridspec(2, 2, width_ratios=(3.0, 1.2), height_ratios=(2.2, 1.0))
+    # fixed margins, no tight_layout: the layout pass would draw the figure once more
+    gs = fig.add_gridspec(2, 2, width_ratios=(3.0, 1.2), height_ratios=(2.2, 1.0), left=0.08, right=0.98,
+                          bottom=0.08, top=0.95, wspace=0.12, hspace=0.22)
     ax = fig.add_subplot(gs[0, 0])
     axr = fig.add_subplot(gs[0, 1], sharey=ax)
     axn = fig.add_subplot(gs[1, 0], sharex=ax)
@@ -112,5 +114,4 @@ def _plot(w, tr, c, v) -> None:
     axr.legend(fontsize=6)
     axn.set_xlabel("vehicle speed V, km/h")
     axn.set_ylabel("engine speed n, rpm")
-    fig.tight_layout()
     w.add_plot("traction_characteristic", fig)
