@@ -65,3 +65,20 @@ def test_shaft_equivalent_stress_plus_not_times():
     assert round(math.pi * 120 ** 3 / 32, 3) == 169646.003
     assert round(2 * 169646.003, 3) == 339292.006
     assert round((272271.363 * 16 / math.pi) ** (1 / 3), 3) == 111.513
+
+
+def test_table8_second_carrier_bearing_224_cannot_have_the_printed_C0():
+    """Table 8 lists bearing 224 (GOST 8338: single-row ball bearing 120 × 215 × 40) with C0 = 706 336 N and no
+    load; the text gives no inputs for it ("по методике").  ISO 76 for radial ball bearings, C0 = f0·i·Z·D_w²·cos α:
+    with a generous f0 = 20 (ISO 76's table for radial ball bearings stays below it), one row, balls as large as the
+    whole radial section (D_w = (215 − 120)/2) and as many as fit the pitch circle, C0 stays near 500 kN."""
+    d, D = 120.0, 215.0
+    D_w = (D - d) / 2.0
+    D_pw = (D + d) / 2.0
+    Z_max = math.pi * D_pw / D_w
+    bound = 20.0 * 1 * Z_max * D_w ** 2
+    assert round(bound) == 499906
+    assert bound < 706336.0                  # the printed C0 needs a roller bearing (e.g. 2224 of GOST 8328)
+    # the roller formula of eq. 48 reaches it in the same envelope (width 40 mm): a roller bearing fits the number
+    roller = static_capacity_radial_roller(30.0, D_pw, 1, int(math.pi * D_pw / 30.0), 40.0, 0.0)
+    assert roller > 706336.0

@@ -10,7 +10,9 @@ References the numbers are checked against:
   Y_Fa·Y_Sa·Y_ε) recorded by an independent open-source implementation, hanslhansl/din3990,
   tests/test_1.py (z = 19/104, m = 4, x = 0.5/0.15, ρ_fP* = 0.25, d_a = 88/425.2, b = 48.64 mm,
   F_t = 14 103.42 N): Z_H, Z_ε, Z_B, σ_H0, Y_Fa, Y_Sa, Y_ε, σ_F0 within 0.1 % (it is not a standard's
-  printed example: ISO/TR 6336-30's examples are helical and were not available here);
+  printed example; the published ISO/TR 6336-30:2017 example 1 is helical and is reproduced by the helical
+  formulas in tests/test_iso6336_helical.py, whose β = 0 limit is this module's spur mesh — for pitting only:
+  no published σ_F worked example with its numbers was found, see there);
 * σ_H0 against the Hertz line contact at the pitch point computed independently from the radii of
   curvature (external and internal mesh).
 """

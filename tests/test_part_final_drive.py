@@ -216,6 +216,30 @@ def test_strength_of_both_meshes_bearings_spline_and_shaft_in_the_manifest(built
     assert [r["role"] for r in rows] == ["planet", "carrier"] and rows[1]["d_x_D_x_B_mm"] == "120 x 215 x 58"
     rep = (built / "report.md").read_text()
     assert "thesis 22 399 N·m" in rep and "printed 1.29" in rep
+    # the allowables of seed 004 ch. 4.1 as printed: σ_FlimM = 2.8·σ_t = 2 198 MPa, σ_Fmax = 1 256 MPa; σ_Hmax = 44·HRC
+    assert d["sigma_FlimM_MPa"] == pytest.approx(2198.0) and round(d["sigma_Fmax_allowable_MPa"]) == 1256
+    assert d["sigma_Hmax_allowable_MPa"] == pytest.approx(44 * 59)
+
+
+def test_traction_characteristic_table_plot_checks_and_note(built):
+    """Seed 004 ch. 5.1.2-5.1.3 in the final drive's outputs: every Table 10 point in each of the 4 gears."""
+    m = _manifest(built)
+    d = m["derived"]
+    checks = {c["name"]: c for c in m["checks"]}
+    assert {"tables/traction_characteristic.csv", "plots/traction_characteristic.png"} <= {f["path"] for f in m["files"]}
+    rows = list(csv.DictReader((built / "tables" / "traction_characteristic.csv").open()))
+    assert len(rows) == 4 * 8
+    U = {int(r["gear"]): float(r["U_tr"]) for r in rows}
+    assert [round(U[j], 3) for j in (1, 3, 4)] == [28.655, 7.743, 4.5]          # eq. 69 as printed
+    assert round(d["traction_gear2_V_top_kmh"], 3) == 16.888
+    for r in rows:   # each point: the speed of eq. 69's ratio and f_g of ch. 5.1.3 from the row's own numbers
+        n, Ueq, V = float(r["n_k_rpm"]), float(r["U_tr"]), float(r["V_kmh"])
+        assert V == pytest.approx(0.06 * 15 * 0.125 * n / Ueq, rel=1e-5)
+        f_g = 3600 * ((float(r["N_eob_kW"]) - float(r["N_str_kW"])) * 0.932 - float(r["N_cr_kW"])) * 0.94 / (490500 * V)
+        assert float(r["f_g"]) == pytest.approx(f_g, rel=1e-3, abs=1e-5)
+    assert checks["traction.first_gear_slope"]["passed"] and checks["traction.top_gear_road"]["passed"]
+    assert d["traction_gear1_f_g_max"] == pytest.approx(0.600, abs=5e-4)
+    assert "Traction characteristic (seed 004 ch. 5.1.2–5.1.3" in (built / "report.md").read_text()
 
 
 def test_too_narrow_face_exits_1_naming_the_strength_check(tmp_path, capsys):

@@ -115,3 +115,66 @@ def test_bad_inputs_name_the_quantity():
         tr.sprocket_torque(F, MASS, Z, 0.0, ETA_GUS)
     with pytest.raises(InputError, match="r_vod"):
         tr.planet_bearing_load(1.0, 1.0, -1.0, 3, 2)
+
+
+# --- ch. 5.1.2-5.1.3: gears, ratios, traction characteristic (Fig. 18) -------------------------------------
+def test_ch512_gear_top_speeds_and_ratios_eq68_69():
+    v = tr.VEHICLE_004
+    q = tr.progression_ratio(v.V_max, 7.852, v.K_g, 4)
+    V = tr.gear_top_speeds(7.852, v.K_g, q, 4)
+    assert round(V[0], 3) == 7.852 and round(V[1], 3) == 16.888 and round(V[3], 3) == 50.0   # as printed
+    assert round(V[2], 3) == 29.059                           # printed 29.058: one in the last digit ...
+    V_min_eq65 = tr.min_speed(700.0, v.eta_gm_max, tr.max_traction_force(v))     # 7.85151 unrounded
+    q65 = tr.progression_ratio(v.V_max, V_min_eq65, v.K_g, 4)
+    assert round(tr.gear_top_speeds(V_min_eq65, v.K_g, q65, 4)[2], 3) == 29.058  # ... from eq. 65's unrounded V_min
+    # with the printed, rounded q_ut = 1.721 the speeds would not be the printed ones
+    assert [round(x, 3) for x in tr.gear_top_speeds(7.852, v.K_g, 1.721, 4)[1:]] == [16.892, 29.07, 50.03]
+    U = [tr.transmission_ratio(v.n_N, v.z, v.t, x) for x in V]
+    assert round(U[0], 3) == 28.655 and round(U[2], 3) == 7.743 and round(U[3], 3) == 4.5   # printed
+    assert round(U[1], 3) == 13.323                           # lost in the print
+    assert round(0.06 * v.n_N * v.z * v.t, 3) == 225.0       # the numerator of eq. 69
+    # top gear at the engine's rated speed runs at V_max: eq. 69 and the speed formula of 5.1.3 agree
+    assert tr.vehicle_speed(v.n_N, v.z, v.t, U[3]) == pytest.approx(v.V_max, rel=1e-12)
+
+
+def test_ch513_losses_eq70_72():
+    assert tr.transmission_speed_loss_geared(2000.0, high=False) == pytest.approx(4.0)    # eq. 70
+    assert tr.transmission_speed_loss_geared(2000.0, high=True) == pytest.approx(8.0)     # eq. 71
+    # eq. 71 and eq. 54 describe the same box at n_N: 8.0 against 7.28 (printed 7.08) kW
+    assert tr.transmission_speed_loss_geared(2000.0, True) > tr.transmission_speed_loss(2000.0) > 7.08
+    v = tr.VEHICLE_004
+    assert tr.running_gear_speed_loss(v, 50.0) == pytest.approx(305.214, abs=5e-4)      # eq. 72 at V_max = eq. 56
+
+
+def test_ch513_traction_characteristic():
+    v = tr.VEHICLE_004
+    c = tr.traction_characteristic(v, 800.0, 7.852, 4, 0.932)
+    assert len(c.f_g) == 4 and all(len(row) == 8 for row in c.f_g)
+    # the rated point (mode 7, n_N) of each gear lies at that gear's top speed
+    for j in range(4):
+        assert c.V[j][6] == pytest.approx(c.V_top[j], rel=1e-12)
+    # first gear: f_g by hand at the rated point, 3600·((700 − 4.0)·0.932 − 47.931)·0.94/(490 500·7.852)
+    N_cr = (0.02 + 0.034 - 1.46e-5 * 630) * 50000 * 9.81 * 7.852 / 3600
+    assert c.f_g[0][6] == pytest.approx(3600 * ((700.0 - 4.0) * 0.932 - N_cr) * 0.94 / (490500 * 7.852), rel=1e-9)
+    assert round(c.f_g[0][6], 3) == 0.528
+    # the steepest design slope (eq. 64: f = 0.08, α = 30°) needs f_c = 0.569: first gear reaches it only near the
+    # engine's torque peak (modes 3-5: 0.600), not at rated power (0.528) on which eq. 65 sized V_min
+    f_c_max = tr.resistance_coefficient(v.f_gr_max, math.radians(v.alpha_max_deg))
+    assert round(f_c_max, 3) == 0.569
+    assert max(c.f_g[0]) > f_c_max > c.f_g[0][6]
+    assert round(max(c.f_g[0]), 3) == 0.600
+    # top gear at V_max pulls the design road (f_c = f_gr + i = 0.04) with the air drag of eq. 57
+    air = v.K_f * v.F * (v.V_max / 3.6) ** 2 / (v.M * tr.G_ACC)
+    assert c.f_g[3][6] > v.f_gr + v.i_slope + air
+    # every gear pulls less than the one below at the same engine point
+    for j in range(3):
+        assert all(a > b for a, b in zip(c.f_g[j], c.f_g[j + 1]))
+
+
+def test_ch513_resistance_lines():
+    assert tr.resistance_coefficient(0.03, 0.0) == pytest.approx(0.03)
+    assert tr.resistance_coefficient(0.15, math.radians(30.0)) == pytest.approx(0.15 * math.sqrt(3) / 2 + 0.5)
+    assert tr.RESISTANCE_ALPHA_DEG == (0.0, 5.0, 10.0, 15.0, 20.0, 25.0, 30.0)
+    assert min(tr.RESISTANCE_F) == 0.03 and max(tr.RESISTANCE_F) == 0.15
+    with pytest.raises(InputError, match="V"):
+        tr.traction_coefficient(700.0, 4.0, 0.932, 0.0, 0.94, 50000.0, 0.0)

@@ -16,6 +16,9 @@ What the printed digits say (each one in ``tests/test_carrier_strength.py``):
 * eq. 49 (carrier bearing, D_w = 25, α = 12°, D_pw = 167.519, i = 2, z = 36, L_w = 21.4) gives
   1 415 838 N; Table 8 lists 1 398 120 N for bearing 3524 (1.3 % less), and its safety 1.629 is
   1 398 120 / 858 508 — the text says R = 522 000 N for the same bearing (K_0 = 2.68 with it).
+* Table 8's second carrier bearing "224" (GOST 8338: a ball bearing 120 × 215 × 40) with C_0 = 706 336 N and
+  no inputs: no radial ball bearing in that envelope reaches it (ISO 76 with f_0 = 20, balls as large as the
+  section and as many as fit: C_0 <= 499 906 N); a roller bearing (e.g. 2224, GOST 8328) would.
 * eq. 53: [σ]_sm = 785/(1.4·3.71) = 151.136 MPa as printed, but the text says the hub (the weaker
   part the check is made for) is 30ХГСЛ with σ_T = 630 MPa: [σ]_sm = 121.294 MPa, margin 1.035
   instead of 1.29. The printed σ = 117.164 MPa is T/(S_u·L) with T in N·mm; the "·2π" printed in

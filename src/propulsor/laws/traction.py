@@ -22,6 +22,14 @@ traction calculation (seed 004 ch. 4.1, 4.2 and ch. 5).
     N_e.ob = N_ek − N_ej − N_vo − N_vyp − N_vsp,  M_e.ob = 9550·N_e.ob/n_k           eq. 62–63 (Table 10)
     q = 0.9·n_N / n_M,   m_n = (lg V_max − lg V_min − lg K_g)/lg q    eq. 66
     q_ut = (V_max / (K_g·V_min))^(1/(m_n − 1))                       eq. 68
+    V_1max = V_min,  V_jmax = V_min·K_g·q_ut^(j−1)  (j >= 2)           after eq. 68 (ch. 5.1.2)
+    U_tr,j = 0.06·n_N·z·t / V_jmax                                   eq. 69  (total ratio, t in m)
+    N_str,n = 4.1e-6·n² − 0.0099·n + 7.4  (gears 1, 2)               eq. 70  (transmission speed losses, kW)
+    N_str,n = 4.7e-6·n² − 0.0099·n + 9    (gears 3, 4)               eq. 71
+    N_cr,Vj = (f_r + f_k)·M·g·V_kj / 3600                            eq. 72  (running-gear speed losses, kW)
+    V_kj = 0.06·z·t·n_k / U_tr,j                                     ch. 5.1.3 (printed "3.6·z_Г·n_k/(60·U)")
+    f_g = 3600·((N_e.ob − N_str)·η_tr − N_cr)·η_r / (M·g·V_kj)        ch. 5.1.3 (specific pull per gear and point)
+    f_c = f·cos α + sin α,  f = 0.03 ... 0.15,  α = 0 ... 30° by 5°    ch. 5.1.3 (resistance lines, Fig. 18)
 
 What the printed digits say (each one reproduced in ``tests/test_traction.py``):
 
@@ -41,6 +49,14 @@ What the printed digits say (each one reproduced in ``tests/test_traction.py``):
   V_min = 7.852 km/h follows from the correct 279 232.837 N.
 * eq. 66 with the printed q = 1.261 gives m_n = 7.03, printed 4.41 (and 4.794 for the "+1" form);
   eq. 68 with the chosen m_n = 4 gives the printed q_ut = 1.721.
+* ch. 5.1.2 prints the top speeds per gear 7.852, 16.888, 29.058, 50 km/h: V_min·K_g·q_ut^(j−1) with the
+  unrounded q_ut = 1.72062 (with the printed 1.721: 16.892, 29.070, 50.030); the second gear starts a step
+  K_g·q_ut = 2.15 above the first.  Of eq. 69's four ratios the text prints 28.655, 7.743 and 4.5; the second,
+  13.323, is lost in the print.  The Mathcad line before eq. 68 prints q_ut = 1.524 with a "K_k" that no
+  input defines (1.524 needs K_k = 1.80 at m_n = 4): not reproducible.
+* eq. 70/71 and f_g have no printed values (their results are Figs. 16–18, not in the text).  n_vn, the
+  gearbox input speed, is taken as the engine speed n_k (the input reducer's ratio is not given).  At n_N
+  eq. 71 gives 8.0 kW for the high gears where eq. 54 gave 7.28 kW (printed 7.08) for the same box.
 
 Units: forces N, torques N·m, power kW, speeds km/h, masses kg (as the seed).
 """
@@ -56,7 +72,9 @@ __all__ = ["G_ACC", "sprocket_torque", "power_ratio", "final_drive_torques", "pl
            "track_forces", "TrackForces", "FinalDriveTorques", "Vehicle", "VEHICLE_004", "transmission_speed_loss",
            "rolling_loss_coefficient", "running_gear_speed_loss", "engine_power_required", "max_traction_force",
            "min_speed", "gear_count", "progression_ratio", "transmission_efficiency", "ENGINE_004",
-           "engine_characteristic"]
+           "engine_characteristic", "gear_top_speeds", "transmission_ratio", "transmission_speed_loss_geared",
+           "vehicle_speed", "traction_coefficient", "resistance_coefficient", "TractionCharacteristic",
+           "traction_characteristic", "RESISTANCE_F", "RESISTANCE_ALPHA_DEG"]
 
 G_ACC = 9.81  # m/s², seed 004 eq. 40
 
@@ -226,3 +244,85 @@ def engine_characteristic(N_e: float, n_N: float, modes=ENGINE_004, N_exhaust: f
                      ("N_total", tot), ("N_eob", N - tot), ("M_eob", 9550.0 * (N - tot) / n)):
             out[k].append(v)
     return out
+
+
+# --- chapter 5.1.2-5.1.3: ratios and the traction characteristic ------------------------------------------
+#: seed 004 ch. 5.1.3: the family of resistance lines f_c, soil f = 0.03 ... 0.15 (step ours), slope 0 ... 30° by 5°
+RESISTANCE_F = (0.03, 0.06, 0.09, 0.12, 0.15)
+RESISTANCE_ALPHA_DEG = (0.0, 5.0, 10.0, 15.0, 20.0, 25.0, 30.0)
+
+
+def gear_top_speeds(V_min: float, K_g: float, q_ut: float, m_n: int) -> list[float]:
+    """Top speed of each gear, km/h (seed 004 ch. 5.1.2): V_1 = V_min, V_j = V_min·K_g·q_ut^(j−1) for j >= 2."""
+    require_positive("V_min", V_min)
+    require_positive("m_n", m_n)
+    return [V_min] + [V_min * K_g * q_ut ** (j - 1) for j in range(2, m_n + 1)]
+
+
+def transmission_ratio(n_N: float, z: int, t: float, V: float) -> float:
+    """Total transmission ratio U_tr at the top speed V (km/h) of a gear (seed 004 eq. 69); t in m, n_N rpm."""
+    require_positive("V", V)
+    return 0.06 * n_N * z * t / V
+
+
+def transmission_speed_loss_geared(n: float, high: bool) -> float:
+    """Speed losses of the gearbox at input speed n (rpm), kW: eq. 70 (gears 1, 2) or eq. 71 (gears 3, 4)."""
+    if high:
+        return 4.7e-6 * n * n - 0.0099 * n + 9.0
+    return 4.1e-6 * n * n - 0.0099 * n + 7.4
+
+
+def vehicle_speed(n_k: float, z: int, t: float, U: float) -> float:
+    """Vehicle speed V_kj = 0.06·z·t·n_k/U, km/h (seed 004 ch. 5.1.3); n_k rpm, t m."""
+    require_positive("U", U)
+    return 0.06 * z * t * n_k / U
+
+
+def traction_coefficient(N_eob: float, N_str: float, eta_tr: float, N_cr: float, eta_r: float, M: float,
+                         V: float, g: float = G_ACC) -> float:
+    """Specific pull f_g = 3600·((N_e.ob − N_str)·η_tr − N_cr)·η_r/(M·g·V) (seed 004 ch. 5.1.3); kW, kg, km/h."""
+    require_positive("V", V)
+    return 3600.0 * ((N_eob - N_str) * eta_tr - N_cr) * eta_r / (M * g * V)
+
+
+def resistance_coefficient(f: float, alpha: float) -> float:
+    """Resistance to straight motion f_c = f·cos α + sin α on a slope α (rad) (seed 004 ch. 5.1.3)."""
+    return f * math.cos(alpha) + math.sin(alpha)
+
+
+@dataclass(frozen=True)
+class TractionCharacteristic:
+    """Seed 004 Fig. 18 as numbers: per gear j (0-based) the ratio and per engine mode k the point."""
+
+    U: tuple            # U_tr per gear (eq. 69)
+    V_top: tuple        # top speed per gear, km/h
+    n_k: tuple          # engine speed per mode, rpm (Table 10)
+    N_eob: tuple        # engine power in the vehicle per mode, kW (Table 10)
+    V: tuple            # V[j][k], km/h
+    N_str: tuple        # N_str[j][k], kW (eq. 70 / 71)
+    N_cr: tuple         # N_cr[j][k], kW (eq. 72)
+    f_g: tuple          # f_g[j][k]
+
+
+def traction_characteristic(v: Vehicle, N_e: float, V_min: float, m_n: int, eta_tr: float,
+                            modes=ENGINE_004, high_from: int = 3) -> TractionCharacteristic:
+    """The traction characteristic of seed 004 ch. 5.1.2–5.1.3: gears by eq. 68–69, every Table 10 engine point
+    in every gear (eq. 70–72, f_g).  Gears >= ``high_from`` (1-based) are the "high" gears of eq. 71."""
+    q_ut = progression_ratio(v.V_max, V_min, v.K_g, m_n)
+    V_top = gear_top_speeds(V_min, v.K_g, q_ut, m_n)
+    U = [transmission_ratio(v.n_N, v.z, v.t, Vj) for Vj in V_top]
+    e = engine_characteristic(N_e, v.n_N, modes)
+    f_loss = v.f_r + rolling_loss_coefficient(v.B_0, v.D_k)
+    V, Nst, Ncr, fg = [], [], [], []
+    for j, Uj in enumerate(U):
+        high = j + 1 >= high_from
+        Vj = [vehicle_speed(n, v.z, v.t, Uj) for n in e["n_k"]]
+        sj = [transmission_speed_loss_geared(n, high) for n in e["n_k"]]
+        cj = [f_loss * v.M * G_ACC * x / 3600.0 for x in Vj]
+        gj = [traction_coefficient(N, s, eta_tr, c, v.eta_r, v.M, x) for N, s, c, x in zip(e["N_eob"], sj, cj, Vj)]
+        V.append(tuple(Vj))
+        Nst.append(tuple(sj))
+        Ncr.append(tuple(cj))
+        fg.append(tuple(gj))
+    return TractionCharacteristic(tuple(U), tuple(V_top), tuple(e["n_k"]), tuple(e["N_eob"]), tuple(V), tuple(Nst),
+                                  tuple(Ncr), tuple(fg))

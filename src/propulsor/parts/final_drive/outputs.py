@@ -6,6 +6,7 @@ from ..pipeline import Pipeline, design_of
 from .design import FinalDriveDesign, body_offsets, design
 from .carrier import carrier, pin_sweep_results, start_pin_sweep
 from .strength import strength
+from .traction import traction
 from .proofs import dms, outline_checks, sheet_and_conditions, start_sweep, sweep_results
 
 __all__ = ["build", "solids", "assembly_and_drawings", "notes"]
@@ -102,5 +103,5 @@ def notes(dd: FinalDriveDesign, w, built: dict) -> None:
 
 
 build = Pipeline(lambda p, w: design_of(p, design),
-                 (sheet_and_conditions, strength, outline_checks, start_sweep, start_pin_sweep, solids, carrier, sweep_results,
+                 (sheet_and_conditions, strength, traction, outline_checks, start_sweep, start_pin_sweep, solids, carrier, sweep_results,
                   pin_sweep_results, assembly_and_drawings, notes))

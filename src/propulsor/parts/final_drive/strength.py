@@ -172,7 +172,10 @@ def strength(dd: FinalDriveDesign, w, built: dict) -> None:
         f"planet–ring σ_H = {pr.sigma_H:.1f} MPa (S_H = {sHmax / pr.sigma_H:.3f}), σ_F planet {pr.sigma_F1:.1f} MPa "
         f"(S_F = {sFlim / pr.sigma_F1:.3f}). Allowables as the thesis gives them: σ_Hmax = 44·HRC = {sHmax:.0f} MPa, "
         f"σ_FlimM = 2.8·σ_t = {sFlim:.0f} MPa, σ_Fmax = σ_FlimM/S_Fm = {sFlim / p.bending_safety_S_Fm:.0f} MPa; the thesis "
-        f"computes no working stress. Face width needed: sun–planet {d['strength_sun_planet_face_width_required_mm']:.1f} mm, "
+        f"computes no working stress. The contact formulas used here (Z_H, Z_E, Z_ε, Z_B, σ_H0: the helical "
+        f"ones of gears/iso6336_helical.py at β = 0) reproduce the published ISO/TR 6336-30:2017 example 1 within 1 % "
+        f"(σ_H0, σ_H; tests/test_iso6336_helical.py); no published root-stress example was at hand. "
+        f"Face width needed: sun–planet {d['strength_sun_planet_face_width_required_mm']:.1f} mm, "
         f"planet–ring {d['strength_planet_ring_face_width_required_mm']:.1f} mm. The ring's root stress is not computed "
         f"(ISO 6336-3 internal teeth; x3 > 1 gives it the thickest root of the set).")
     w.add_note(
