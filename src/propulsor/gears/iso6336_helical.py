@@ -29,6 +29,24 @@ Transverse load factor (ISO 6336-1:2006 eq. 73–76, method B):
     ε_γ <= 2: K_Fα = ε_γ/2·(0.9 + 0.4·c_γα·(f_pb − y_α)/(F_tH/b))
     ε_γ > 2:  K_Fα = 0.9 + 0.4·√(2(ε_γ − 1)/ε_γ)·c_γα·(f_pb − y_α)/(F_tH/b)
     K_Hα = K_Fα within 1 ... ε_γ/(ε_α·Z_ε²);  K_Fα within 1 ... ε_γ/(0.25·ε_α + 0.75)
+
+Tooth root by ISO 6336-3:2006 method B (load at the outer point of single pair contact, taken on the virtual
+spur gear of the normal section; the 30° tangent construction of :func:`propulsor.gears.iso6336.tooth_form_factor`
+with z → z_n, d_en below):
+
+    σ_F0 = F_t/(b·m_n) · Y_F·Y_S·Y_β·Y_B·Y_DT,   σ_F = σ_F0·K_A·K_v·K_Fβ·K_Fα
+    d_n = m_n·z_n,  d_bn = d_n·cos α_n,  d_an = d_n + d_a − d,  ε_αn = ε_α/cos² β_b
+    d_en = 2·√([√((d_an/2)² − (d_bn/2)²) − π·d·cos β·cos α_n/z·(ε_αn − 1)]² + (d_bn/2)²)
+    Y_β = 1 − ε_β·β/120°  (ε_β taken <= 1, β <= 30°)
+    Y_DT = 2.366 − 0.666·ε_αn for 2.05 < ε_αn <= 2.5, 0.7 above (ISO grade <= 4 only), else 1
+    Y_B = 1.6·ln(2.242·h/s_R) for 0.5 < s_R/h < 1.2 (external), 1 from s_R/h >= 1.2
+
+Permissible root stress (ISO 6336-3:2006 method B factors, ISO 6336-5 σ_Flim):
+
+    σ_FG = σ_Flim·Y_ST·Y_NT·Y_δrelT·Y_RrelT·Y_X,   σ_FP = σ_FG/S_Fmin,   S_F = σ_FG/σ_F
+    Y_δrelT = (1 + √(ρ'·χ*))/(1 + √(ρ'·χ*_T)),  χ* = (1 + 2·q_s)/5,  χ*_T = 1.2 (q_sT = 2.5)
+    Y_RrelT = 1.674 − 0.529·(R_z + 1)^0.1 (surface/through hardened, 1 <= R_z <= 40 µm; 1.120 below 1 µm)
+    Y_X = 1.05 − 0.01·m_n (surface hardened), 1.03 − 0.006·m_n (through hardened), 1 for m_n <= 5
 """
 
 from __future__ import annotations
@@ -38,10 +56,11 @@ from dataclasses import dataclass
 
 from ..errors import InputError, require_positive
 from .involute import inv, inv_inverse
-from .iso6336 import STEEL, Material, z_e
+from .iso6336 import STEEL, Material, ToothForm, tooth_form_factor, z_e
 
 __all__ = ["HelicalPair", "z_h", "z_eps", "z_beta", "z_b_z_d", "MeshStiffness", "mesh_stiffness", "k_v_method_b",
-           "k_alpha_method_b", "k_f_beta", "Pitting", "pitting"]
+           "k_alpha_method_b", "k_f_beta", "Pitting", "pitting", "d_en", "y_beta", "y_dt", "y_b", "RootGear",
+           "ToothRoot", "tooth_root", "RHO_PRIME", "y_delta_rel_t", "y_r_rel_t", "y_x", "RootStrength", "root_strength"]
 
 # ISO 6336-1:2006 Table 8: K_1 by ISO 1328 accuracy grade 3 ... 12 and K_2, spur and helical
 _K1 = {"spur": {3: 2.1, 4: 3.9, 5: 7.5, 6: 14.9, 7: 26.8, 8: 39.1, 9: 52.8, 10: 76.6, 11: 102.6, 12: 146.3},
@@ -247,3 +266,144 @@ def pitting(pair: HelicalPair, b: float, T1: float, K_A: float, K_v: float, K_Hb
     s0 = ZH * ZE * Ze * Zb * math.sqrt(F_t / (pair.d1 * b) * (u + 1.0) / u)
     k = math.sqrt(K_A * K_v * K_Hbeta * K_Halpha)
     return Pitting(F_t, ea, eb, ZH, ZE, Ze, Zb, ZB, ZD, s0, ZB * s0 * k, ZD * s0 * k)
+
+
+# ---------------------------------------------------------------- tooth root (ISO 6336-3:2006, method B)
+
+def d_en(pair: HelicalPair, gear: int) -> float:
+    """Diameter of the outer point of single pair contact on the virtual spur gear of gear 1 or 2, mm
+    (ISO 6336-3:2006 method B, external gears; see the module docstring)."""
+    if gear not in (1, 2):
+        raise InputError("gear", gear, "must be 1 (pinion) or 2 (wheel)")
+    z, d, d_a, z_n = ((pair.z1, pair.d1, pair.d_a1, pair.z_n1) if gear == 1
+                      else (pair.z2, pair.d2, pair.d_a2, pair.z_n2))
+    an, bb = pair.alpha_n, pair.beta_b
+    eps_an = pair.eps_alpha / math.cos(bb) ** 2
+    d_n = pair.m_n * z_n
+    r_bn = 0.5 * d_n * math.cos(an)
+    r_an = 0.5 * (d_n + d_a - d)
+    g = math.sqrt(r_an * r_an - r_bn * r_bn) - math.pi * d * math.cos(pair.beta) * math.cos(an) / z * (eps_an - 1.0)
+    return 2.0 * math.sqrt(g * g + r_bn * r_bn)
+
+
+def y_beta(beta: float, eps_beta: float) -> float:
+    """Helix angle factor Y_β = 1 − ε_β·β/120° with ε_β <= 1 and β <= 30° (ISO 6336-3:2006)."""
+    return 1.0 - min(eps_beta, 1.0) * min(math.degrees(beta), 30.0) / 120.0
+
+
+def y_dt(eps_alpha_n: float, grade: int) -> float:
+    """Deep tooth factor Y_DT (ISO 6336-3:2006): below 1 only for ISO grade <= 4 and ε_αn > 2.05."""
+    if grade > 4 or eps_alpha_n <= 2.05:
+        return 1.0
+    if eps_alpha_n > 2.5:
+        return 0.7
+    return 2.366 - 0.666 * eps_alpha_n
+
+
+def y_b(s_R: float | None, h: float) -> float:
+    """Rim thickness factor Y_B of an external gear (ISO 6336-3:2006); s_R None: a solid blank."""
+    if s_R is None:
+        return 1.0
+    require_positive("s_R", s_R, "mm")
+    r = s_R / h
+    if r >= 1.2:
+        return 1.0
+    if r <= 0.5:
+        raise InputError("s_R", s_R, f"rim thickness must exceed 0.5·h = {0.5 * h:.3f} mm (ISO 6336-3 Y_B)")
+    return 1.6 * math.log(2.242 / r)
+
+
+@dataclass(frozen=True)
+class RootGear:
+    z_n: float
+    d_en: float       # mm
+    form: ToothForm   # θ, s_Fn, ρ_F, h_Fe, α_Fen, Y_F, Y_S at d_en
+    q_s: float
+    Y_B: float
+    sigma_F0: float   # MPa
+    sigma_F: float    # MPa
+
+
+@dataclass(frozen=True)
+class ToothRoot:
+    F_t: float
+    eps_alpha_n: float
+    Y_beta: float
+    Y_DT: float
+    gear1: RootGear
+    gear2: RootGear
+
+
+def tooth_root(pair: HelicalPair, b: float, T1: float, K_A: float, K_v: float, K_Fbeta: float, K_Falpha: float,
+               grade: int, h_fP_star: float = 1.25, rho_fP_star: float = 0.38, s_pr: float = 0.0,
+               s_R: tuple[float | None, float | None] = (None, None)) -> ToothRoot:
+    """σ_F0 and σ_F of pinion and wheel by ISO 6336-3:2006 method B at the pinion torque T1 (N·m), face width b (mm),
+    both gears cut by one basic rack (h_fP*, ρ_fP*, s_pr in mm); s_R the rim thicknesses (None: solid)."""
+    require_positive("b", b, "mm")
+    F_t = 2000.0 * T1 / pair.d1
+    eps_an = pair.eps_alpha / math.cos(pair.beta_b) ** 2
+    Yb, Ydt = y_beta(pair.beta, pair.eps_beta(b)), y_dt(eps_an, grade)
+    K = K_A * K_v * K_Fbeta * K_Falpha
+    gears = []
+    for g, (z_n, x, d, d_a) in enumerate(((pair.z_n1, pair.x1, pair.d1, pair.d_a1),
+                                          (pair.z_n2, pair.x2, pair.d2, pair.d_a2)), start=1):
+        den = d_en(pair, g)
+        f = tooth_form_factor(z_n, pair.m_n, x, den, pair.alpha_n, h_fP_star, rho_fP_star, s_pr)
+        h = 0.5 * (d_a - d) + (h_fP_star - x) * pair.m_n          # tooth depth h_a + h_f
+        YB = y_b(s_R[g - 1], h)
+        s0 = F_t / (b * pair.m_n) * f.Y_F * f.Y_S * Yb * YB * Ydt
+        gears.append(RootGear(z_n, den, f, f.s_Fn / (2.0 * f.rho_F), YB, s0, s0 * K))
+    return ToothRoot(F_t, eps_an, Yb, Ydt, gears[0], gears[1])
+
+
+#: slip-layer thickness ρ' (mm) of ISO 6336-3:2006 method B: case-, flame- or induction-hardened and nitrided
+#: steel (through-hardened steel: 0.0281 ... 0.0014 mm for a yield point of 500 ... 1000 MPa, pass it directly)
+RHO_PRIME = {"case_hardened": 0.0030, "nitrided": 0.1005}
+
+
+def y_delta_rel_t(q_s: float, rho_prime: float = RHO_PRIME["case_hardened"]) -> float:
+    """Relative notch sensitivity factor Y_δrelT, method B (ISO 6336-3:2006), χ* = (1 + 2·q_s)/5, ρ' in mm."""
+    require_positive("rho_prime", rho_prime, "mm")
+    return (1.0 + math.sqrt(rho_prime * (1.0 + 2.0 * q_s) / 5.0)) / (1.0 + math.sqrt(rho_prime * 1.2))
+
+
+def y_r_rel_t(R_z: float) -> float:
+    """Relative surface factor Y_RrelT of surface- or through-hardened steel (σ_B >= 800 MPa), method B
+    (ISO 6336-3:2006); R_z the root roughness, µm."""
+    if not 0.0 < R_z <= 40.0:
+        raise InputError("R_z", R_z, "root roughness must be within 0 < R_z <= 40 µm")
+    return 1.120 if R_z < 1.0 else 1.674 - 0.529 * (R_z + 1.0) ** 0.1
+
+
+def y_x(m_n: float, material: str = "surface_hardened") -> float:
+    """Size factor Y_X of the tooth root, method B (ISO 6336-3:2006); surface hardened: case-, flame-, induction-
+    hardened or nitrided steel."""
+    if material == "surface_hardened":
+        return 1.0 if m_n <= 5.0 else (1.05 - 0.01 * m_n if m_n < 25.0 else 0.8)
+    if material == "through_hardened":
+        return 1.0 if m_n <= 5.0 else (1.03 - 0.006 * m_n if m_n < 30.0 else 0.85)
+    raise InputError("material", material, "must be surface_hardened or through_hardened")
+
+
+@dataclass(frozen=True)
+class RootStrength:
+    Y_delta_relT: float
+    Y_R_relT: float
+    Y_X: float
+    sigma_FG: float   # MPa, tooth root stress limit
+    sigma_FP: float   # MPa, permissible root stress σ_FG/S_Fmin
+    S_F: float        # safety σ_FG/σ_F
+
+
+def root_strength(sigma_F: float, q_s: float, m_n: float, sigma_Flim: float, R_z: float, Y_NT: float = 1.0,
+                  S_Fmin: float = 1.0, Y_ST: float = 2.0, rho_prime: float = RHO_PRIME["case_hardened"],
+                  material: str = "surface_hardened") -> RootStrength:
+    """Limit, permissible stress and safety of one tooth root of hardened steel (ISO 6336-3:2006 method B; σ_Flim
+    of ISO 6336-5, Y_NT the life factor at the gear's load cycles)."""
+    require_positive("sigma_Flim", sigma_Flim, "MPa")
+    require_positive("S_Fmin", S_Fmin)
+    Yd = y_delta_rel_t(q_s, rho_prime)
+    Yr = y_r_rel_t(R_z)
+    Yx = y_x(m_n, material)
+    sFG = sigma_Flim * Y_ST * Y_NT * Yd * Yr * Yx
+    return RootStrength(Yd, Yr, Yx, sFG, sFG / S_Fmin, sFG / sigma_F)
