@@ -43,7 +43,8 @@ with z → z_n, d_en below):
 
 Permissible root stress (ISO 6336-3:2006 method B factors, ISO 6336-5 σ_Flim):
 
-    σ_FG = σ_Flim·Y_ST·Y_NT·Y_δrelT·Y_RrelT·Y_X,   σ_FP = σ_FG/S_Fmin,   S_F = σ_FG/σ_F
+    σ_FG = σ_Flim·Y_ST·Y_NT·Y_δrelT·Y_RrelT·Y_X·Y_M,   σ_FP = σ_FG/S_Fmin,   S_F = σ_FG/σ_F
+    (Y_M the mean stress factor: 1 for one-way bending, 0.7 for an idler's alternating bending, hardened steel)
     Y_δrelT = (1 + √(ρ'·χ*))/(1 + √(ρ'·χ*_T)),  χ* = (1 + 2·q_s)/5,  χ*_T = 1.2 (q_sT = 2.5)
     Y_RrelT = 1.674 − 0.529·(R_z + 1)^0.1 (surface/through hardened, 1 <= R_z <= 40 µm; 1.120 below 1 µm)
     Y_X = 1.05 − 0.01·m_n (surface hardened), 1.03 − 0.006·m_n (through hardened), 1 for m_n <= 5
@@ -390,6 +391,7 @@ class RootStrength:
     Y_delta_relT: float
     Y_R_relT: float
     Y_X: float
+    Y_M: float
     sigma_FG: float   # MPa, tooth root stress limit
     sigma_FP: float   # MPa, permissible root stress σ_FG/S_Fmin
     S_F: float        # safety σ_FG/σ_F
@@ -397,7 +399,7 @@ class RootStrength:
 
 def root_strength(sigma_F: float, q_s: float, m_n: float, sigma_Flim: float, R_z: float, Y_NT: float = 1.0,
                   S_Fmin: float = 1.0, Y_ST: float = 2.0, rho_prime: float = RHO_PRIME["case_hardened"],
-                  material: str = "surface_hardened") -> RootStrength:
+                  material: str = "surface_hardened", Y_M: float = 1.0) -> RootStrength:
     """Limit, permissible stress and safety of one tooth root of hardened steel (ISO 6336-3:2006 method B; σ_Flim
     of ISO 6336-5, Y_NT the life factor at the gear's load cycles)."""
     require_positive("sigma_Flim", sigma_Flim, "MPa")
@@ -405,5 +407,7 @@ def root_strength(sigma_F: float, q_s: float, m_n: float, sigma_Flim: float, R_z
     Yd = y_delta_rel_t(q_s, rho_prime)
     Yr = y_r_rel_t(R_z)
     Yx = y_x(m_n, material)
-    sFG = sigma_Flim * Y_ST * Y_NT * Yd * Yr * Yx
-    return RootStrength(Yd, Yr, Yx, sFG, sFG / S_Fmin, sFG / sigma_F)
+    if not 0.0 < Y_M <= 1.0:
+        raise InputError("Y_M", Y_M, "mean stress factor must be within 0 < Y_M <= 1")
+    sFG = sigma_Flim * Y_ST * Y_NT * Yd * Yr * Yx * Y_M
+    return RootStrength(Yd, Yr, Yx, Y_M, sFG, sFG / S_Fmin, sFG / sigma_F)
