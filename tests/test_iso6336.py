@@ -11,8 +11,10 @@ References the numbers are checked against:
   tests/test_1.py (z = 19/104, m = 4, x = 0.5/0.15, ρ_fP* = 0.25, d_a = 88/425.2, b = 48.64 mm,
   F_t = 14 103.42 N): Z_H, Z_ε, Z_B, σ_H0, Y_Fa, Y_Sa, Y_ε, σ_F0 within 0.1 % (it is not a standard's
   printed example; the published ISO/TR 6336-30:2017 example 1 is helical and is reproduced by the helical
-  formulas in tests/test_iso6336_helical.py, whose β = 0 limit is this module's spur mesh — for pitting only:
-  no published σ_F worked example with its numbers was found, see there);
+  formulas in tests/test_iso6336_helical.py, whose β = 0 limit is this module's spur mesh; the tooth form of
+  :func:`tooth_form_factor` at the method B load point and this module's σ_H0, Z_H, Z_ε, Z_B are checked against
+  two KISSsoft ISO 6336:2006 method B reports (a helical pair and a spur planetary sun–planet mesh) in
+  tests/test_iso6336_root.py — no worked example printed in a standard or textbook with σ_F numbers was found);
 * σ_H0 against the Hertz line contact at the pitch point computed independently from the radii of
   curvature (external and internal mesh).
 """

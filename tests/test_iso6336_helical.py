@@ -9,8 +9,8 @@ taken as tabulated, column "Reference", in the open-source gfsReboucas/Drivetrai
 therefore not given.  The example's K_Hβ = 1.16 comes from its shaft layout (ISO 6336-1 method C with f_sh),
 which is not modelled here: it is an input of the check, as the TR's reader would take it from the TR.
 
-The example prints no tooth-root (σ_F) values in that table; no published σ_F example was found (see the
-module docstring of tests/test_iso6336.py for the spur root-stress references).
+The example prints no tooth-root (σ_F) values in that table; the tooth-root stress (ISO 6336-3 method B) is checked
+against two recorded KISSsoft ISO 6336:2006 method B reports in tests/test_iso6336_root.py.
 """
 
 import math
