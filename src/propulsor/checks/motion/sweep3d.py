@@ -67,7 +67,8 @@ def sweep_solids_3d(mesh_a, poses_a, mesh_b, poses_b, *, search_length: float | 
     (e.g. trimesh) or a manifold3d.Manifold; poses_a/b: (n, 4, 4) homogeneous
     matrices or one (4, 4) matrix held fixed; poses_b None: B stays where it is (not
     transformed).  search_length (mm), when given, also reports the gap between the
-    solids (manifold3d min_gap, capped at search_length; 0 when they touch or overlap).
+    solids (manifold3d min_gap, capped at search_length; 0 when they touch or overlap; a step with a
+    gap > 0 has volume 0 without a boolean).
     skip_apart (with search_length): a step whose bodies' boxes (the transformed corners of
     their bounding boxes, a conservative bound) lie search_length or more apart neither
     overlaps nor comes within search_length: it is recorded as volume 0 and gap
@@ -105,7 +106,9 @@ def sweep_solids_3d(mesh_a, poses_a, mesh_b, poses_b, *, search_length: float | 
                 continue
         Ak = A.transform(np.ascontiguousarray(Ta[k][:3, :4]))
         Bk = B if b_fixed else B.transform(np.ascontiguousarray(Tb[k][:3, :4]))
-        vol[k] = (Ak ^ Bk).volume()
         if gap is not None:
             gap[k] = Ak.min_gap(Bk, float(search_length))
+            if gap[k] > 0.0:  # apart: the intersection is empty, its volume 0 without a boolean
+                continue
+        vol[k] = (Ak ^ Bk).volume()
     return Sweep3DResult(vol, gap, name)

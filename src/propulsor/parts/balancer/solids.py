@@ -96,8 +96,9 @@ def balancer_solid(m: BalancerModel):
 
 
 def sweep_mesh(solid, chord):
-    """(vertices, faces) of a solid at the sweep's chord (single-threaded BRepMesh)."""
+    """(vertices, faces) of a solid at the sweep's chord (single-threaded BRepMesh), refined until OCCT's
+    achieved deflection is within that chord (not within the exported files' 0.01 mm)."""
     from ...solids.tessellate import triangulate
 
-    V, F, _ = triangulate(solid, chord, 0.2, parallel=False)
+    V, F, _ = triangulate(solid, chord, 0.2, parallel=False, chord_limit=chord)
     return V, F
