@@ -1,0 +1,88 @@
+"""The 12 part builds of `make`, old against new, side by side in one run (issue 13).
+
+    python bench/bench_make_parts.py [OLD_REV] [NEW_REV]     # defaults: 67255f7 (before issue 13's
+                                                             # part 2) and the working tree
+
+Each revision's source tree is exported (`git archive`) to a temporary folder; every part file of the
+new tree is built with each tree's `propulsor build` (the installed venv's interpreter, the tree's
+`src/` first on PYTHONPATH), old and new alternating part by part so that both see the same machine.
+Prints, and writes to bench/results/make_parts.md, the wall time of every build, the totals and the
+old/new ratio.  Targets: new total <= 100 s, every part <= 20 s, old/new >= 2.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import tarfile
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+OUT = ROOT / "bench" / "results" / "make_parts.md"
+OLD_DEFAULT = "67255f7"
+TOTAL_TARGET_S, PART_TARGET_S, RATIO_TARGET = 100.0, 20.0, 2.0
+
+
+def export(rev: str | None, dest: Path) -> Path:
+    """The tree of `rev` (None: the working tree's src/ and parts/ as they are) in dest."""
+    if rev is None:
+        return ROOT
+    dest.mkdir(parents=True)
+    data = subprocess.run(["git", "archive", rev], cwd=ROOT, capture_output=True, check=True).stdout
+    tar = dest / "src.tar"
+    tar.write_bytes(data)
+    with tarfile.open(tar) as t:
+        t.extractall(dest, filter="data")
+    tar.unlink()
+    return dest
+
+
+def build(tree: Path, part: Path, out: Path) -> tuple[float, int]:
+    env = dict(os.environ, PYTHONPATH=str(tree / "src"))
+    env.pop("MAKEFLAGS", None)
+    t0 = time.perf_counter()
+    r = subprocess.run([sys.executable, "-m", "propulsor.cli", "build", str(tree / "parts" / part.name), "--out",
+                        str(out)], cwd=tree, env=env, capture_output=True, text=True)
+    return time.perf_counter() - t0, r.returncode
+
+
+def main(argv: list[str]) -> int:
+    old_rev = argv[1] if len(argv) > 1 else OLD_DEFAULT
+    new_rev = argv[2] if len(argv) > 2 else None
+    parts = sorted((ROOT / "parts").glob("*.toml"))
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = Path(tmp)
+        old, new = export(old_rev, tmp / "old"), export(new_rev, tmp / "new")
+        for part in parts:
+            if not (old / "parts" / part.name).is_file():
+                continue
+            t_old, rc_old = build(old, part, tmp / "out_old" / part.stem)
+            t_new, rc_new = build(new, part, tmp / "out_new" / part.stem)
+            rows.append((part.stem, t_old, rc_old, t_new, rc_new))
+            print(f"{part.stem:22s} old {t_old:6.1f} s (exit {rc_old})   new {t_new:6.1f} s (exit {rc_new})", flush=True)
+    tot_old, tot_new = sum(r[1] for r in rows), sum(r[3] for r in rows)
+    worst = max(rows, key=lambda r: r[3])
+    ok = tot_new <= TOTAL_TARGET_S and worst[3] <= PART_TARGET_S and tot_old / tot_new >= RATIO_TARGET
+    load = os.getloadavg()[0]
+    lines = ["# The part builds of `make`, old against new", "",
+             f"Measured {time.strftime('%Y-%m-%d %H:%M')} (`python bench/bench_make_parts.py {old_rev} "
+             f"{new_rev or 'working tree'}`), load average at the end {load:.2f}; targets: total <= "
+             f"{TOTAL_TARGET_S:g} s, every part <= {PART_TARGET_S:g} s, old/new >= {RATIO_TARGET:g}.", "",
+             "| part | old s | new s | old/new |", "|---|---:|---:|---:|"]
+    lines += [f"| {n} | {a:.1f}{'' if ra == 0 else f' (exit {ra})'} | {b:.1f}{'' if rb == 0 else f' (exit {rb})'} | "
+              f"{a / b:.2f} |" for n, a, ra, b, rb in rows]
+    lines += [f"| **total** | **{tot_old:.1f}** | **{tot_new:.1f}** | **{tot_old / tot_new:.2f}** |", ""]
+    OUT.parent.mkdir(parents=True, exist_ok=True)
+    OUT.write_text("\n".join(lines) + "\n")
+    print(f"total old {tot_old:.1f} s, new {tot_new:.1f} s, old/new {tot_old / tot_new:.2f}; slowest new "
+          f"{worst[0]} {worst[3]:.1f} s; {'targets met' if ok else 'targets missed'}; table in "
+          f"{OUT.relative_to(ROOT)}")
+    return 0 if all(r[2] == 0 and r[4] == 0 for r in rows) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
