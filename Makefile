@@ -39,13 +39,25 @@ lock:
 	.venv-lock/bin/python -m pip freeze --all --exclude-editable > constraints.txt
 	rm -rf .venv-lock
 
-parts: $(MANIFESTS)
+parts: $(OUT)/.built
+
+# An out-of-date part is queued; then one process builds the queue (the imports are paid once, and
+# each build keeps the machine's cores busy with its forked workers).  $(OUT)/.built is newer than
+# every manifest after a complete run, so a second `make` runs no recipe at all.
+QUEUE := $(OUT)/.build-queue
+FLUSH = if [ -s $(QUEUE) ]; then q=$$(sort -u $(QUEUE)); rm -f $(QUEUE); \
+	PROPULSOR_JOBS=$${PROPULSOR_JOBS:-$$(nproc)} $(BIN)/propulsor build $$q --depfile-dir $(DEPS); fi
+
+$(OUT)/.built: $(MANIFESTS)
+	@$(FLUSH)
+	@touch $@
 
 # `make <name>`: that part, when out of date
 $(PART_NAMES): %: $(OUT)/%/manifest.json
+	@$(FLUSH)
 
 $(OUT)/%/manifest.json: parts/%.toml $(SOURCES) $(STAMP)
-	$(BIN)/propulsor build $< --out $(OUT)/$* --depfile $(DEPS)/$*.mk
+	@mkdir -p $(OUT) && echo $< >> $(QUEUE)
 
 print: $(KIT_MANIFESTS)
 
@@ -71,4 +83,4 @@ bench: $(STAMP)
 	$(BIN)/python bench/run.py
 
 clean:
-	rm -rf $(OUT)/*/ $(DEPS) .pytest_cache .hypothesis .benchmarks
+	rm -rf $(OUT)/*/ $(DEPS) $(OUT)/.built $(QUEUE) .pytest_cache .hypothesis .benchmarks

@@ -49,16 +49,24 @@ def project(tmp_path):
 
 
 def _builds(folder: Path, *targets: str) -> list[str]:
+    """The part files `make` would build: queued for the one build process (`echo parts/x.toml >>
+    output/.build-queue`), or kits built one by one."""
     r = subprocess.run(["make", "-n", *targets], cwd=folder, capture_output=True, text=True, timeout=60)
     assert r.returncode == 0, r.stderr
-    return sorted(line.split()[2] for line in r.stdout.splitlines() if " build " in line or " print " in line)
+    queued = [line.split("echo ", 1)[1].split()[0] for line in r.stdout.splitlines()
+              if "echo " in line and ".build-queue" in line]
+    return sorted(queued + [line.split()[2] for line in r.stdout.splitlines() if " print " in line])
 
 
 @needs_make
 def test_nothing_changed_nothing_built(project):
     folder, names, _ = project
     assert len(names) >= 12
+    (folder / "output" / ".built").touch()  # a complete earlier run
     assert _builds(folder) == []
+    r = subprocess.run(["make", "-n"], cwd=folder, capture_output=True, text=True, timeout=60,
+                       env=dict(os.environ, LC_ALL="C"))
+    assert r.stdout.strip() == "make: Nothing to be done for 'all'.", r.stdout  # no recipe, not even the queue's
     t0 = time.perf_counter()
     subprocess.run(["make", "-q"], cwd=folder, capture_output=True, timeout=60)
     assert time.perf_counter() - t0 < 5.0  # evaluating the Makefile itself is quick (bench: 0.03 s)

@@ -109,7 +109,7 @@ def _write_depfile(depfile: Path, target: Path, files) -> None:
     os.replace(tmp, depfile)
 
 
-def _into_output(args, out: Path, keep: tuple[Path, ...], produce, progress) -> int:
+def _into_output(args, out: Path, keep: tuple[Path, ...], produce, progress, depfile=None) -> int:
     """Run ``produce(tmp) -> (failures, what)`` into a fresh temporary folder beside `out` with the
     lock of `out` held, then put the result in place of `out` in one step (or drop it when a check
     failed and --keep-failed is not given).  Exit codes as in the module docstring."""
@@ -144,8 +144,8 @@ def _into_output(args, out: Path, keep: tuple[Path, ...], produce, progress) -> 
             print(f"propulsor: {what}: built into {out} but {len(failures)} check(s) failed", file=sys.stderr)
             return EXIT_CHECK_FAILED
         progress(f"{what}: built into {out}, all checks passed")
-        if getattr(args, "depfile", None):
-            _write_depfile(Path(args.depfile), out / "manifest.json", keep)
+        if depfile:
+            _write_depfile(Path(depfile), out / "manifest.json", keep)
         return EXIT_OK
     except InputError as exc:
         return _fail_input(exc)
@@ -159,11 +159,25 @@ def _into_output(args, out: Path, keep: tuple[Path, ...], produce, progress) -> 
 
 
 def cmd_build(args) -> int:
+    """Build every part file given, one after the other in this process (the imports are paid once):
+    each into its own output folder; the exit code is the worst of them (2 before 1 before 0)."""
+    files = [Path(f) for f in args.part_files]
+    if len(files) > 1 and (args.out or args.depfile):
+        name = "--out" if args.out else "--depfile"
+        return _fail_input(InputError(name, args.out or args.depfile, f"names one file or folder: give one part "
+                                      f"file, not {len(files)} (several go to output/<file name>; --depfile-dir)"))
+    codes = []
+    for part_file in files:
+        depfile = args.depfile or (Path(args.depfile_dir) / f"{part_file.stem}.mk" if args.depfile_dir else None)
+        codes.append(_build_one(args, part_file, depfile))
+    return max(codes, key=lambda c: (c == EXIT_BAD_INPUT, c))
+
+
+def _build_one(args, part_file: Path, depfile: Path | None) -> int:
     from . import output_folder as of
     from .progress import Progress
 
     progress = Progress(enabled=not args.quiet, check=check_signalled)
-    part_file = Path(args.part_file)
     try:
         out = of.vet_target(Path(args.out) if args.out else Path("output") / part_file.stem,
                             force=args.force, keep=(part_file,))
@@ -187,7 +201,7 @@ def cmd_build(args) -> int:
         finally:
             writer.close()
 
-    return _into_output(args, out, keep, produce, progress)
+    return _into_output(args, out, keep, produce, progress, depfile)
 
 
 def _scale_arg(text: str) -> float | None:
@@ -255,7 +269,7 @@ def cmd_print(args) -> int:
         finally:
             writer.close()
 
-    return _into_output(args, out, keep, produce, progress)
+    return _into_output(args, out, keep, produce, progress, args.depfile)
 
 
 def cmd_check(args) -> int:
@@ -318,8 +332,9 @@ def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="propulsor", description=__doc__.splitlines()[0])
     sub = p.add_subparsers(dest="command", required=True)
 
-    b = sub.add_parser("build", help="build a part from its parameter file")
-    b.add_argument("part_file")
+    b = sub.add_parser("build", help="build parts from their parameter files (several: one after the other, "
+                       "each into output/<file name>)")
+    b.add_argument("part_files", nargs="+", metavar="part_file")
     b.add_argument("--out", help="output folder (default output/<file name>); replaced only when empty or "
                    "written by propulsor")
     b.add_argument("--force", action="store_true", help="replace an --out folder that propulsor did not write "
@@ -332,6 +347,7 @@ def build_parser() -> argparse.ArgumentParser:
     b.add_argument("-q", "--quiet", action="store_true", help="no progress messages")
     b.add_argument("--depfile", help="after a successful build, write a make rule <out>/manifest.json: <the "
                    "part file and every file it names> to this file (make includes it)")
+    b.add_argument("--depfile-dir", help="the same for each of several part files: <dir>/<file name>.mk")
     b.set_defaults(func=cmd_build)
 
     pr = sub.add_parser("print", help="a print kit: pieces at print scale with FDM allowances, a rig, plates")
