@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from itertools import chain
+
 import numpy as np
 
 from ...check import Check
@@ -21,10 +23,11 @@ def _point_seg(P: np.ndarray, A: np.ndarray, B: np.ndarray) -> tuple[np.ndarray,
 def ball_pairs(tgt: Outline, P: np.ndarray, r) -> tuple[np.ndarray, np.ndarray]:
     """(point index, edge index) pairs: edges of tgt with an end within r of each point."""
     lists = tgt.tree.query_ball_point(P, r)
-    counts = np.fromiter((len(l) for l in lists), int, len(lists))
-    if counts.sum() == 0:
+    counts = np.fromiter(map(len, lists), int, len(lists))
+    total = int(counts.sum())
+    if total == 0:
         return np.empty(0, int), np.empty(0, int)
-    verts = np.concatenate([np.asarray(l, int) for l in lists if len(l)])
+    verts = np.fromiter(chain.from_iterable(lists), int, total)
     pi = np.repeat(np.arange(len(P)), counts)
     return np.concatenate([pi, pi]), np.concatenate([verts, tgt.prev[verts]])
 
