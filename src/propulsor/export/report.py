@@ -83,18 +83,21 @@ def write_report(
     notes=(),
     part: str = "",
     plots=(),
+    views=(),
 ) -> Path:
     """Write a Markdown report.
 
     inputs / derived: dict name -> value, or name -> (value, unit[, meaning]).
     checks: list of Check (or dicts with the same keys).  tables / figures
     (alias plots): relative paths or (relative path, caption) pairs.  notes:
-    strings.  part: the part type, printed under the title.
+    strings.  part: the part type, printed under the title.  views: the isometric pictures
+    of the solids and assemblies (relative paths or (path, caption) pairs).
     """
     inputs = inputs or {}
     derived = derived or {}
     tables = _refs(tables)
     figures = _refs(list(figures) + list(plots))
+    views = _refs(views)
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     cks = [c.to_dict() if hasattr(c, "to_dict") else dict(c) for c in checks]
@@ -117,6 +120,10 @@ def write_report(
     if figures:
         lines += ["## Figures", ""]
         for p, cap in figures:
+            lines += [f"![{cap}]({p})", "", f"*{cap}*", ""]
+    if views:
+        lines += ["## Views", "", "Isometric pictures of every solid and assembly (3D models: the `.glb` files).", ""]
+        for p, cap in views:
             lines += [f"![{cap}]({p})", "", f"*{cap}*", ""]
     if notes:
         lines += ["## Notes", ""] + [f"- {n}" for n in notes] + [""]
