@@ -1,6 +1,7 @@
 """GLB (binary glTF 2.0) of an assembly, and its script twin for pages opened from disk.
 
-One node per component, named as the component of the assembly STEP, each with its own mesh and
+One node per component, named as the component of the assembly STEP (children of one root node named
+as the assembly, which turns the project's z-up frame into glTF's y-up one), each with its own mesh and
 material (a base colour from the fixed palette of :mod:`propulsor.export.render`): components that
 are the same solid (planets, legs, sectors) share the solid's vertex and index accessors, so a
 solid is stored once however often it is placed.  glTF's unit is the metre: vertex positions and
@@ -27,6 +28,7 @@ from .render import palette_colour
 MM_TO_M = 1e-3
 _ARRAY_BUFFER, _ELEMENT_ARRAY_BUFFER = 34962, 34963
 _FLOAT, _UNSIGNED_INT = 5126, 5125
+_SQRT_HALF = 0.7071067811865476
 
 
 def _pad(data: bytes, fill: bytes) -> bytes:
@@ -73,10 +75,12 @@ def write_glb(path: str | Path, name: str, meshes: dict, components) -> Path:
         if not np.allclose(m, np.eye(4), rtol=0.0, atol=1e-15):
             node["matrix"] = [float(x) for x in m.T.reshape(-1)]  # column-major
         nodes.append(node)
+    # the root: the project's z-up frame turned into glTF's y-up one (-90° about x: z -> y, y -> -z)
+    nodes.append({"name": name, "children": list(range(len(nodes))), "rotation": [-_SQRT_HALF, 0.0, 0.0, _SQRT_HALF]})
     doc = {
         "asset": {"version": "2.0", "generator": "propulsor"},
         "scene": 0,
-        "scenes": [{"name": name, "nodes": list(range(len(nodes)))}],
+        "scenes": [{"name": name, "nodes": [len(nodes) - 1]}],
         "nodes": nodes, "meshes": gl_meshes, "materials": materials,
         "accessors": accessors, "bufferViews": views, "buffers": [{"byteLength": len(blob)}],
     }

@@ -11,6 +11,20 @@ import math
 from pathlib import Path
 
 
+#: name suffix -> unit, for the report's derived-value table (names carry their units, e.g. a_w_mm)
+_SUFFIX_UNITS = (("_mm3", "mm³"), ("_mm2", "mm²"), ("_mm", "mm"), ("_deg", "deg"), ("_rad", "rad"),
+                 ("_mpa", "MPa"), ("_MPa", "MPa"), ("_kN", "kN"), ("_N", "N"), ("_Nm", "N·m"), ("_kg", "kg"),
+                 ("_s", "s"), ("_m", "m"), ("_K", "K"), ("_C", "°C"), ("_pct", "%"))
+
+
+def unit_from_name(name: str) -> str:
+    """The unit a quantity's name ends in ('' when it names none)."""
+    for suffix, unit in _SUFFIX_UNITS:
+        if name.endswith(suffix):
+            return unit
+    return ""
+
+
 def _fmt(v) -> str:
     try:
         import numpy as np

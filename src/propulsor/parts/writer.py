@@ -25,6 +25,7 @@ from typing import Any
 import numpy as np
 
 from ..check import Check
+from ..export.report import unit_from_name  # noqa: F401  (public here too)
 from ..parallel import fork_pool, inline, jobs_budget
 from ..params import params_to_dict, read_part_meta
 
@@ -83,20 +84,6 @@ def assembly_model(folder: str, name: str, meshes: dict, components) -> None:
     write_glb_script(glb)
     items = [(*meshes[key], matrix, palette_colour(k)) for k, (_, key, matrix) in enumerate(components)]
     render_iso(items, folder / VIEWS / f"{name}.png")
-
-
-#: name suffix -> unit, for the report's derived-value table (names carry their units, e.g. a_w_mm)
-_SUFFIX_UNITS = (("_mm3", "mm³"), ("_mm2", "mm²"), ("_mm", "mm"), ("_deg", "deg"), ("_rad", "rad"),
-                 ("_mpa", "MPa"), ("_MPa", "MPa"), ("_kN", "kN"), ("_N", "N"), ("_Nm", "N·m"), ("_kg", "kg"),
-                 ("_s", "s"), ("_m", "m"), ("_K", "K"), ("_C", "°C"), ("_pct", "%"))
-
-
-def unit_from_name(name: str) -> str:
-    """The unit a quantity's name ends in ('' when it names none)."""
-    for suffix, unit in _SUFFIX_UNITS:
-        if name.endswith(suffix):
-            return unit
-    return ""
 
 
 @dataclass
