@@ -60,11 +60,12 @@ section.part { border: 1px solid var(--line); border-radius: 8px; padding: 4px 1
 .badge.ok { background: var(--ok); } .badge.doc { background: var(--doc); } .badge.bad { background: var(--bad); }
 dl.values { display: grid; grid-template-columns: max-content 1fr; gap: 2px 12px; margin: 8px 0; }
 dl.values dt { color: var(--muted); } dl.values dd { margin: 0; }
-.media { display: grid; grid-template-columns: repeat(auto-fill, minmax(260px, 1fr)); gap: 10px; }
+.media { display: grid; grid-template-columns: repeat(auto-fill, minmax(165px, 1fr)); gap: 10px; }
+.media.wide { grid-template-columns: repeat(auto-fill, minmax(300px, 1fr)); }
 .media figure { margin: 0; }
 figure img { display: block; border: 1px solid var(--line); border-radius: 4px; background: #fff; }
 figcaption { font-size: 0.85em; color: var(--muted); }
-figure.viewer { margin: 8px 0; }
+figure.viewer { margin: 8px 0; max-width: 760px; }
 figure.viewer canvas { display: block; width: 100%; aspect-ratio: 4 / 3; max-height: 70vh; border: 1px solid var(--line);
                        border-radius: 4px; touch-action: none; background: #f5f7fa; }
 .links a { margin-right: 10px; white-space: nowrap; }
@@ -232,7 +233,7 @@ def _section(folder: Path, entry: dict) -> str:
     out.append(_report_links(name, folder, "print_report" if name.endswith("_kit") else "report"))
     anims = [e for e in media.get("animations", []) if isinstance(e, dict) and e.get("path")]
     if anims:
-        out.append("<h3>Motion</h3><div class=\"media\">" + "".join(_animation(name, e) for e in anims) + "</div>")
+        out.append("<h3>Motion</h3><div class=\"media wide\">" + "".join(_animation(name, e) for e in anims) + "</div>")
     models = [e for e in media.get("models", []) if isinstance(e, dict) and e.get("path")]
     out.append(_viewer(name, models))
     pics = [e for e in media.get("pictures", []) if isinstance(e, dict) and e.get("path")]
