@@ -225,7 +225,7 @@
     gl.clearColor(0.96, 0.97, 0.98, 1); gl.enable(gl.DEPTH_TEST); gl.enable(gl.CULL_FACE);
     gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
     if (!this.buffers.length) return;
-    var fov = 0.6, dist = this.radius / Math.sin(fov / 2) * 1.05 / this.zoom;
+    var fov = 0.6, dist = this.radius / Math.sin(fov / 2) * 0.85 / this.zoom;  // the sphere round the bounds, a little inside
     var dir = [Math.cos(this.pitch) * Math.sin(this.yaw), Math.sin(this.pitch), Math.cos(this.pitch) * Math.cos(this.yaw)];
     var eye = [this.centre[0] + dist * dir[0], this.centre[1] + dist * dir[1], this.centre[2] + dist * dir[2]];
     var view = lookAt(eye, this.centre, [0, 1, 0]);
