@@ -131,9 +131,19 @@ def test_gallery_status_counts_and_a_foreign_index_is_left_alone(tmp_path):
 INSPECT = """(async () => {
   const sleep = ms => new Promise(r => setTimeout(r, ms));
   const viewers = Array.from(document.querySelectorAll('figure.viewer'));
+  const settle = async f => { for (let k = 0; k < 600 && !['drawn', 'error'].includes(f.dataset.state); k++) await sleep(50); };
+  const loaded = [];
   for (const f of viewers) {
     f.scrollIntoView();
-    for (let k = 0; k < 600 && !['drawn', 'error'].includes(f.dataset.state); k++) await sleep(50);
+    await settle(f);
+    const sel = f.querySelector('select');
+    for (let i = 1; sel && i < sel.options.length; i++) {  // every GLB of the part, through the viewer
+      sel.selectedIndex = i;
+      sel.dispatchEvent(new Event('change'));
+      await settle(f);
+      loaded.push(f.dataset.state + ': ' + f.querySelector('.status').textContent);
+    }
+    if (sel && sel.options.length > 1) { sel.selectedIndex = 0; sel.dispatchEvent(new Event('change')); await settle(f); }
   }
   window.scrollTo(0, 0);
   const imgs = Array.from(document.images);
@@ -141,7 +151,7 @@ INSPECT = """(async () => {
   return {
     images: imgs.map(i => ({src: i.src, complete: i.complete, w: i.naturalWidth, h: i.naturalHeight})),
     urls: Array.from(document.querySelectorAll('[href], [src]')).map(e => e.href || e.src),
-    viewers: viewers.map(f => f.dataset.state + ': ' + f.querySelector('.status').textContent),
+    viewers: viewers.map(f => f.dataset.state + ': ' + f.querySelector('.status').textContent).concat(loaded),
     scrollWidth: document.documentElement.scrollWidth,
   };
 })()"""
@@ -205,7 +215,7 @@ def check_in_browser(folder: Path, shots: Path) -> list[str]:
         for width, name in ((PHONE_PX, "index_phone_390.png"), (DESKTOP_PX, "index_desktop_1366.png")):
             info = _inspect(page, index.as_uri(), width)
             assert info["viewers"], "the page has no 3D view"
-            _canvas_drew(page, len(info["viewers"]))
+            _canvas_drew(page, page.evaluate("document.querySelectorAll('figure.viewer').length"))
             page.evaluate("window.scrollTo(0, 0) || true")
             page.screenshot(shots / name, full=True)
         for rep in reports:

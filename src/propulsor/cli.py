@@ -1,4 +1,4 @@
-"""Command line: `propulsor build | print | check | list | params`.
+"""Command line: `propulsor build | print | gallery | check | list | params`.
 
 Exit codes: 0 built and every check passed; 1 built but a check failed (outputs
 kept only with --keep-failed) or `check` found invalid files; 2 bad input
