@@ -118,6 +118,18 @@ def test_gallery_status_counts_and_a_foreign_index_is_left_alone(tmp_path):
     assert "all 2 checks passed" in page and "documented failures: 1 of 2 checks" in page
     assert "failed: 2 of 3 checks" in page and 'href="p3_kit/print_report.html"' not in page
     assert page.count('<section class="part"') == 3 and "Print kit" in page  # the kit with its part
+    # an animation as the animation writer lists it (media.animations): shown with its frames and size
+    frames = [Image.new("RGB", (64, 48), (40 * k, 90, 160)) for k in range(5)]
+    (tmp_path / "p1" / "anim").mkdir()
+    frames[0].save(tmp_path / "p1" / "anim" / "turn.gif", save_all=True, append_images=frames[1:], duration=80)
+    m = json.loads((tmp_path / "p1" / "manifest.json").read_text())
+    m["media"] = {"animations": [{"path": "anim/turn.gif", "title": "one turn", "frames": 5, "width_px": 64,
+                                  "height_px": 48, "bytes": (tmp_path / "p1" / "anim" / "turn.gif").stat().st_size,
+                                  "frame_ms": 80, "poses": 5, "least_clearance_mm": 0.125}]}
+    (tmp_path / "p1" / "manifest.json").write_text(json.dumps(m))
+    page = render_gallery(tmp_path)
+    assert '<img src="p1/anim/turn.gif" alt="one turn, 5 frames, 64 × 48 px' in page
+    assert "least clearance 0.125 mm" in page and 'width="64" height="48"' in page
     (tmp_path / INDEX).write_text("<html>someone else's page</html>")
     assert write_gallery(tmp_path) is None and "someone" in (tmp_path / INDEX).read_text()
     assert main(["gallery", str(tmp_path), "-q"]) == 2
