@@ -60,7 +60,7 @@ section.part { border: 1px solid var(--line); border-radius: 8px; padding: 4px 1
 .badge.ok { background: var(--ok); } .badge.doc { background: var(--doc); } .badge.bad { background: var(--bad); }
 dl.values { display: grid; grid-template-columns: max-content 1fr; gap: 2px 12px; margin: 8px 0; }
 dl.values dt { color: var(--muted); } dl.values dd { margin: 0; }
-.media { display: grid; grid-template-columns: repeat(auto-fill, minmax(165px, 1fr)); gap: 10px; }
+.media { display: grid; grid-template-columns: repeat(auto-fill, minmax(140px, 1fr)); gap: 10px; }
 .media.wide { grid-template-columns: repeat(auto-fill, minmax(300px, 1fr)); }
 .media figure { margin: 0; }
 figure img { display: block; border: 1px solid var(--line); border-radius: 4px; background: #fff; }

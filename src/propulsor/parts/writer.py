@@ -225,6 +225,14 @@ class OutputWriter:
         self.add_media("pictures", {"path": f"{VIEWS}/{name}.png", "title": f"{name} (assembly)", "of": name})
         return p
 
+    def add_known_mesh(self, solid, vertices, faces) -> None:
+        """The mesh of a solid that the part made for its own work (a sweep's): an assembly holding the
+        solid uses it for its GLB and picture instead of tessellating the solid again."""
+        if id(solid) not in self._solid_keys:
+            key = self._solid_keys[id(solid)] = f"mesh_{len(self._meshes) + len(self._keep)}"
+            self._keep.append(solid)
+            self._meshes[key] = (np.asarray(vertices, np.float64), np.asarray(faces, np.int64))
+
     def _write_models(self) -> None:
         """Every assembly's GLB and picture (after :meth:`wait_solids`: the meshes are in), two at a time."""
         if not self._assemblies:

@@ -141,6 +141,8 @@ def solids_and_sweep_start(m: BalancerModel, w, built: dict) -> None:
     w.progress("sweep meshes")
     bal_mesh = sweep_mesh(bal, p.sweep_chord_mm)
     wheel_meshes = [sweep_mesh(s_, p.sweep_chord_mm) for s_ in wsol.values()]
+    for s_, (V, F) in zip(wsol.values(), wheel_meshes):  # the assembly's GLB and picture reuse them
+        w.add_known_mesh(s_, V, F)
     w.progress(f"travel sweep β0 … β_m ({int(math.ceil(math.degrees(t.beta_m - t.beta0) * p.sweep_steps_per_deg)) + 1} "
                "steps × hull + 2 neighbours), in a second process while the solids are checked")
     built["pending_sweep"] = start_in_fork(sweep_job, m, bal_mesh, wheel_meshes)
