@@ -170,8 +170,8 @@ def _regenerate_gallery(folder: Path, progress) -> Path | None:
     try:
         lock.acquire(wait=True)
         path = write_gallery(folder)
-    except (OSError, InputError) as exc:
-        print(f"propulsor: the gallery {folder / INDEX} was not written: {exc}", file=sys.stderr)
+    except Exception as exc:  # noqa: BLE001 - the build's output is in place; the page is not worth failing it
+        print(f"propulsor: the gallery {folder / INDEX} was not written: {type(exc).__name__}: {exc}", file=sys.stderr)
         return None
     finally:
         lock.release()

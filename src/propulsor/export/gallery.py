@@ -119,7 +119,8 @@ def status(manifest: dict) -> tuple[str, str]:
 
 def key_values(manifest: dict) -> list[tuple[str, str, str]]:
     """(name, value, unit) of the part type's key derived values that the manifest holds."""
-    derived = manifest.get("derived", {}) or {}
+    derived = manifest.get("derived")
+    derived = derived if isinstance(derived, dict) else {}
     patterns = KEY_VALUES.get(manifest.get("part", ""))
     names: list[str] = []
     if patterns:
@@ -220,7 +221,8 @@ def _kit(folder: Path, kit_name: str, m: dict) -> str:
 
 def _section(folder: Path, entry: dict) -> str:
     name, m = entry["name"], entry["manifest"]
-    media = m.get("media", {}) or {}
+    media = m.get("media") if isinstance(m.get("media"), dict) else {}
+    media = {k: v for k, v in media.items() if isinstance(v, list)}
     cls, text = status(m)
     title = m.get("title") or name
     out = [f'<section class="part" id="{escape(name)}">', f"<h2>{escape(title)}</h2>",
