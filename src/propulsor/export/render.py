@@ -39,9 +39,14 @@ def palette_colour(k: int) -> tuple[float, float, float]:
     return PALETTE[k % len(PALETTE)]
 
 
-def _camera() -> np.ndarray:
+#: the isometric view from below (the other side of the z = 0 plane), for assemblies whose main part is
+#: hidden under the others seen from above (the balancer's arm under its road wheel)
+VIEW_DIR_BELOW = np.array([1.0, -1.0, -1.0]) / np.sqrt(3.0)
+
+
+def _camera(view=VIEW_DIR) -> np.ndarray:
     """Rows: screen right, screen up, towards the viewer (world → camera rotation)."""
-    back = VIEW_DIR
+    back = np.asarray(view, np.float64) / np.linalg.norm(view)
     right = np.cross(np.array([0.0, 0.0, 1.0]), back)
     right /= np.linalg.norm(right)
     up = np.cross(back, right)
@@ -56,12 +61,13 @@ def _placed(vertices, transform) -> np.ndarray:
     return v @ t[:3, :3].T + t[:3, 3]
 
 
-def render_iso(items, path: str | Path, width: int = PICTURE_WIDTH_PX) -> Path:
+def render_iso(items, path: str | Path, width: int = PICTURE_WIDTH_PX, view=VIEW_DIR) -> Path:
     """Render `items` — (vertices (n, 3) mm, faces (m, 3), 4×4 placement or None, RGB 0 … 1) — into a
-    PNG at `path`, isometric, shaded, the whole scene fitted with a margin; returns the path."""
+    PNG at `path`, isometric (the camera towards `view`, z up on the screen), shaded, the whole scene
+    fitted with a margin; returns the path."""
     from PIL import Image
 
-    cam = _camera()
+    cam = _camera(view)
     tris, cols = [], []
     for vertices, faces, transform, rgb in items:
         v = _placed(vertices, transform) @ cam.T  # camera coordinates: x right, y up, z towards the viewer

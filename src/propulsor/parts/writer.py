@@ -73,17 +73,17 @@ def mesh_of(solid, forked: bool):
     return np.asarray(mesh.vertices, np.float64), np.asarray(mesh.faces, np.int64)
 
 
-def assembly_model(folder: str, name: str, meshes: dict, components) -> None:
+def assembly_model(folder: str, name: str, meshes: dict, components, from_below: bool = False) -> None:
     """``<name>.glb`` (+ ``.glb.js``) and ``views/<name>.png`` of an assembly from its solids' meshes;
-    components: (component name, solid key, 4×4 placement mm)."""
+    components: (component name, solid key, 4×4 placement mm); from_below: the picture seen from below."""
     from ..export.glb import write_glb, write_glb_script
-    from ..export.render import palette_colour, render_iso
+    from ..export.render import VIEW_DIR, VIEW_DIR_BELOW, palette_colour, render_iso
 
     folder = Path(folder)
     glb = write_glb(folder / f"{name}.glb", name, meshes, components)
     write_glb_script(glb)
     items = [(*meshes[key], matrix, palette_colour(k)) for k, (_, key, matrix) in enumerate(components)]
-    render_iso(items, folder / VIEWS / f"{name}.png")
+    render_iso(items, folder / VIEWS / f"{name}.png", view=VIEW_DIR_BELOW if from_below else VIEW_DIR)
 
 
 @dataclass
@@ -121,7 +121,7 @@ class OutputWriter:
         self._mesh_jobs: list = []  # (key, job) meshes of assembly solids that have no files of their own
         self._solid_keys: dict[int, str] = {}  # id(solid) -> its key (the solid's name)
         self._keep: list = []  # the solids keyed by id, kept alive
-        self._assemblies: list = []  # (name, [(component, solid key, 4×4 mm)])
+        self._assemblies: list = []  # (name, [(component, solid key, 4×4 mm)], picture from below)
         self.report_name = "report.md"  # a print kit's is print_report.md
 
     # -- helpers -----------------------------------------------------------------
@@ -195,8 +195,10 @@ class OutputWriter:
         self._mesh_jobs = []
         self._assemblies = []
 
-    def add_assembly(self, name: str, components) -> Path:
+    def add_assembly(self, name: str, components, picture_from_below: bool = False) -> Path:
         """components: list of (component name, solid, (x, y, z) mm, rotation about z in rad).
+        picture_from_below: the assembly's picture is the isometric view from below (its main part
+        would be hidden under the others seen from above).
 
         Beside the STEP: ``<name>.glb`` (+ ``.glb.js``) and the picture ``views/<name>.png``, made at
         :meth:`finish` from the meshes of the solids (a solid added with :meth:`add_solid` is not
@@ -218,7 +220,7 @@ class OutputWriter:
                 pool = self._solid_pool()
                 self._mesh_jobs.append((key, pool.submit(mesh_of, solid, True) if pool else inline(mesh_of, solid, False)))
             placed.append((str(comp[0]), key, placement_matrix(comp)))
-        self._assemblies.append((name, placed))
+        self._assemblies.append((name, placed, picture_from_below))
         self.extra_files += [f"{name}.glb"]
         self.add_media("models", {"path": f"{name}.glb", "script": f"{name}.glb.js", "title": name, "step": p.name,
                                   "components": [c for c, _, _ in placed], "picture": f"{VIEWS}/{name}.png"})
@@ -240,9 +242,9 @@ class OutputWriter:
         self.progress(f"GLB and pictures of {len(self._assemblies)} assembl{'y' if len(self._assemblies) == 1 else 'ies'}")
         pool = self._solid_pool()
         jobs = []
-        for name, placed in self._assemblies:
+        for name, placed, from_below in self._assemblies:
             meshes = {key: self._meshes[key] for key in dict.fromkeys(k for _, k, _ in placed)}
-            args = (str(self.folder), name, meshes, placed)
+            args = (str(self.folder), name, meshes, placed, from_below)
             jobs.append(pool.submit(assembly_model, *args) if pool else inline(assembly_model, *args))
         for job in jobs:
             job.result()
