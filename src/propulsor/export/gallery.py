@@ -67,7 +67,7 @@ figure img { display: block; border: 1px solid var(--line); border-radius: 4px; 
 figcaption { font-size: 0.85em; color: var(--muted); }
 figure.viewer { margin: 8px 0; max-width: 760px; }
 figure.viewer canvas { display: block; width: 100%; aspect-ratio: 4 / 3; max-height: 70vh; border: 1px solid var(--line);
-                       border-radius: 4px; touch-action: none; background: #f5f7fa; }
+                       border-radius: 4px; touch-action: pan-y; background: #f5f7fa; }
 .links a { margin-right: 10px; white-space: nowrap; }
 details { margin: 4px 0; } summary { cursor: pointer; }
 .files a { display: inline-block; margin-right: 10px; }

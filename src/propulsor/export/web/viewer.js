@@ -255,6 +255,7 @@
     }
     c.addEventListener("pointerdown", function (e) { last = [e.clientX, e.clientY]; c.setPointerCapture(e.pointerId); });
     c.addEventListener("pointerup", function () { last = null; });
+    c.addEventListener("pointercancel", function () { last = null; });  // a touch that scrolls the page
     c.addEventListener("pointermove", function (e) {
       if (!last) return;
       self.yaw -= (e.clientX - last[0]) * 0.01;
