@@ -38,7 +38,7 @@ FORMATS = {
     ".html": "HTML",
 }
 
-_PACKAGES = ("numpy", "scipy", "cadquery", "manifold3d", "trimesh", "ezdxf", "matplotlib")
+_PACKAGES = ("numpy", "scipy", "cadquery", "manifold3d", "trimesh", "ezdxf", "matplotlib", "pillow", "markdown")
 
 
 def jsonable(v):
