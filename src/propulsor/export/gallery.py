@@ -58,8 +58,8 @@ section.part { border: 1px solid var(--line); border-radius: 8px; padding: 4px 1
 .badge { display: inline-block; border-radius: 10px; padding: 1px 9px; color: #fff; font-size: 0.85em;
          font-weight: 600; }
 .badge.ok { background: var(--ok); } .badge.doc { background: var(--doc); } .badge.bad { background: var(--bad); }
-dl.values { display: grid; grid-template-columns: max-content 1fr; gap: 2px 12px; margin: 8px 0; }
-dl.values dt { color: var(--muted); } dl.values dd { margin: 0; }
+dl.values { display: grid; grid-template-columns: fit-content(62%) 1fr; gap: 2px 12px; margin: 8px 0; }
+dl.values dt { color: var(--muted); } dl.values dd { margin: 0; white-space: nowrap; }
 .media { display: grid; grid-template-columns: repeat(auto-fill, minmax(140px, 1fr)); gap: 10px; }
 .media.wide { grid-template-columns: repeat(auto-fill, minmax(300px, 1fr)); }
 .media figure { margin: 0; }

@@ -160,7 +160,7 @@
     this.gl = gl;
     this.prog = this.webgl2 ? program(gl, VS2, FS2) : program(gl, VS1, FS1);
     this.buffers = [];
-    this.yaw = Math.PI / 4; this.pitch = Math.asin(1 / Math.sqrt(3)); this.zoom = 1;
+    this.yaw = Math.PI / 4; this.pitch = Math.asin(1 / Math.sqrt(3)); this.zoom = 1; this.fov = 0.6;
     this.bind();
     if (this.select) this.select.addEventListener("change", this.load.bind(this));
   }
@@ -208,12 +208,26 @@
     var b = bounds(items);
     this.centre = [0, 1, 2].map(function (k) { return 0.5 * (b.lo[k] + b.hi[k]); });
     this.radius = 0.5 * Math.sqrt(dot(sub(b.hi, b.lo), sub(b.hi, b.lo))) || 1;
+    this.box = b;
     this.fit();
     this.setState("drawn", model.title + ": " + items.length + " components; drag to turn, wheel to zoom, double click to fit");
   };
 
+  Viewer.prototype.dir = function () {
+    return [Math.cos(this.pitch) * Math.sin(this.yaw), Math.sin(this.pitch), Math.cos(this.pitch) * Math.cos(this.yaw)];
+  };
+
+  /* The isometric view again, at the distance where the box's corners fill the canvas (92 %). */
   Viewer.prototype.fit = function () {
     this.yaw = Math.PI / 4; this.pitch = Math.asin(1 / Math.sqrt(3)); this.zoom = 1;
+    var back = this.dir(), right = norm(cross([0, 1, 0], back)), up = cross(back, right);
+    var c = this.canvas, aspect = (c.clientWidth || 4) / (c.clientHeight || 3), t = Math.tan(this.fov / 2) * 0.92;
+    var hw = 0, hh = 0, hd = 0, lo = this.box.lo, hi = this.box.hi, self = this;
+    [lo[0], hi[0]].forEach(function (x) { [lo[1], hi[1]].forEach(function (y) { [lo[2], hi[2]].forEach(function (z) {
+      var p = sub([x, y, z], self.centre);
+      hw = Math.max(hw, Math.abs(dot(p, right))); hh = Math.max(hh, Math.abs(dot(p, up))); hd = Math.max(hd, Math.abs(dot(p, back)));
+    }); }); });
+    this.dist0 = hd + Math.max(hh / t, hw / (t * aspect), 1e-6);
     this.draw();
   };
 
@@ -225,12 +239,10 @@
     gl.clearColor(0.96, 0.97, 0.98, 1); gl.enable(gl.DEPTH_TEST); gl.enable(gl.CULL_FACE);
     gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
     if (!this.buffers.length) return;
-    var fov = 0.6, dist = this.radius / Math.sin(fov / 2) * 0.85 / this.zoom;  // the sphere round the bounds, a little inside
-    var dir = [Math.cos(this.pitch) * Math.sin(this.yaw), Math.sin(this.pitch), Math.cos(this.pitch) * Math.cos(this.yaw)];
+    var fov = this.fov, dist = this.dist0 / this.zoom, dir = this.dir();
     var eye = [this.centre[0] + dist * dir[0], this.centre[1] + dist * dir[1], this.centre[2] + dist * dir[2]];
     var view = lookAt(eye, this.centre, [0, 1, 0]);
-    var proj = perspective(fov, w / h, Math.max(dist - 2 * this.radius, dist * 0.01), dist + 2 * this.radius);
-    if (w < h) proj = mul([w / h, 0, 0, 0, 0, w / h, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1], proj);  // fit the width too
+    var proj = perspective(fov, w / h, Math.max(dist - 1.5 * this.radius, dist * 0.01), dist + 1.5 * this.radius);
     var p = this.prog;
     gl.useProgram(p);
     gl.uniformMatrix4fv(gl.getUniformLocation(p, "u_view"), false, new Float32Array(view));
