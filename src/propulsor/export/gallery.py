@@ -59,7 +59,7 @@ section.part { border: 1px solid var(--line); border-radius: 8px; padding: 4px 1
          font-weight: 600; }
 .badge.ok { background: var(--ok); } .badge.doc { background: var(--doc); } .badge.bad { background: var(--bad); }
 dl.values { display: grid; grid-template-columns: fit-content(62%) 1fr; gap: 2px 12px; margin: 8px 0; }
-dl.values dt { color: var(--muted); } dl.values dd { margin: 0; white-space: nowrap; }
+dl.values dt { color: var(--muted); } dl.values dd { margin: 0; }
 .media { display: grid; grid-template-columns: repeat(auto-fill, minmax(140px, 1fr)); gap: 10px; }
 .media.wide { grid-template-columns: repeat(auto-fill, minmax(300px, 1fr)); }
 .media figure { margin: 0; }
@@ -231,7 +231,7 @@ def _section(folder: Path, entry: dict) -> str:
     values = key_values(m)
     if values:
         out.append('<dl class="values">' + "".join(
-            f"<dt>{escape(k)}</dt><dd>{escape(v)}{(' ' + escape(u)) if u else ''}</dd>" for k, v, u in values) + "</dl>")
+            f"<dt>{escape(k)}</dt><dd>{escape(v)}{('&nbsp;' + escape(u)) if u else ''}</dd>" for k, v, u in values) + "</dl>")
     out.append(_report_links(name, folder, "print_report" if name.endswith("_kit") else "report"))
     anims = [e for e in media.get("animations", []) if isinstance(e, dict) and e.get("path")]
     if anims:
