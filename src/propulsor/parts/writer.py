@@ -5,14 +5,16 @@ A part module computes; it hands results to the writer:
 
     w.derived.update(...)             derived values for manifest/report
     w.add_checks([...])               engineering checks of the part
-    w.add_solid(name, solid, genus)   STEP + STL + 3MF, B-rep/STEP/mesh checks
-    w.add_assembly(name, components)  assembly STEP with named, placed components
+    w.add_solid(name, solid, genus)   STEP + STL + 3MF, B-rep/STEP/mesh checks, views/<name>.png
+    w.add_assembly(name, components)  assembly STEP with named, placed components; <name>.glb (+ .glb.js)
+                                      and views/<name>.png from the solids' meshes
+    w.add_known_mesh(solid, V, F)     a mesh the part made anyway, for the assemblies' GLB and picture
     w.add_dxf(name, cut, ref)         DXF (CUT / REF layers, mm)
     w.add_table(name, columns, rows)  CSV under tables/
     w.add_plot(name, fig)             PNG under plots/
     w.add_note(text)                  a paragraph of the report
     w.add_media(kind, entry)          a gallery item (animation, model, picture) for the manifest
-    w.finish()                        report.md + manifest.json; returns the failures
+    w.finish()                        report.md (+ report.html) + manifest.json; returns the failures
 """
 
 from __future__ import annotations
