@@ -56,6 +56,27 @@ def test_every_assembly_has_a_glb_with_named_nodes_in_metres(out, manifest):
         assert base64.b64decode(script.split('"')[1]) == (out / m["path"]).read_bytes()
 
 
+def test_propulsor_check_validates_the_glb_and_catches_millimetres(out, manifest, tmp_path, monkeypatch):
+    import shutil
+
+    import propulsor.export.glb as glb
+    from propulsor.checks.files import check_file
+
+    m = manifest["media"]["models"][0]
+    assert all(c.passed for c in check_file(out / m["path"])) and len(check_file(out / m["path"])) == 4
+    # the same assembly written without the mm -> m scale: the check names the extent
+    bad = tmp_path / "bad"
+    shutil.copytree(out, bad)
+    meshes = {}
+    for c in m["components"]:
+        mesh = trimesh.load(out / f"{c}.stl", process=False)
+        meshes[c] = (mesh.vertices, mesh.faces)
+    monkeypatch.setattr(glb, "MM_TO_M", 1.0)
+    glb.write_glb(bad / m["path"], "x", meshes, [(c, c, np.eye(4)) for c in m["components"]])
+    failed = [c.name for c in check_file(bad / m["path"]) if not c.passed]
+    assert failed == [f"{m['path']}: extent vs the STEP in metres"]
+
+
 def test_every_solid_and_assembly_has_a_picture_in_the_report(out, manifest):
     pictures = manifest["media"]["pictures"]
     solids = [f["path"][:-5] for f in manifest["files"] if f["path"].endswith(".step") and "assembly" not in f["path"]]

@@ -153,8 +153,11 @@ def check_glb_file(path: Path) -> list[Check]:
                                 "one named node per component of the assembly STEP"))
     step = path.parent / str(model.get("step", ""))
     if model.get("step") and step.is_file():
-        from ..export.step import read_step
+        from ..export.step import read_step, step_instance_names
         from ..solids.kernel import bounding_box
+
+        out.append(Check.equals(f"{name}: nodes are the STEP's components", nodes, sorted(step_instance_names(step)),
+                                "", f"the component occurrences of {step.name}"))
 
         lo, hi = bounding_box(read_step(step))
         want = np.sort(np.asarray(hi, float) - np.asarray(lo, float)) * 1e-3
