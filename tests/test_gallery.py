@@ -256,21 +256,24 @@ def check_in_browser(folder: Path, shots: Path) -> list[str]:
         page.close()
     finally:
         browser.close()
-    print(f"\nscreenshots of {index}: {shots / 'index_phone_390.png'}, {shots / 'index_desktop_1366.png'}")
     return [str(index)] + [str(r) for r in reports]
 
 
 @pytest.mark.browser
-def test_gallery_and_reports_in_a_real_browser(out, tmp_path_factory):
+def test_gallery_and_reports_in_a_real_browser(out, tmp_path_factory, capsys):
     shots = Path(os.environ.get("PROPULSOR_SCREENSHOTS", tmp_path_factory.mktemp("screenshots")))
     opened = check_in_browser(out.parent, shots)
     assert len(opened) == 2
+    with capsys.disabled():  # where a person finds them (or set PROPULSOR_SCREENSHOTS)
+        print(f"\nbrowser test: screenshots in {shots}", flush=True)
 
 
 @pytest.mark.browser
 @pytest.mark.sweep
-def test_full_output_in_a_real_browser():
+def test_full_output_in_a_real_browser(capsys):
     folder = ROOT / "output"
     if not (folder / INDEX).is_file():
         pytest.skip("no output/index.html: run `make` first")
-    check_in_browser(folder, folder / "screenshots")
+    opened = check_in_browser(folder, folder / "screenshots")
+    with capsys.disabled():
+        print(f"\nbrowser test: {len(opened)} pages; screenshots in {folder / 'screenshots'}", flush=True)
