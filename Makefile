@@ -19,9 +19,9 @@ KIT_NAMES  := $(patsubst parts/%.toml,print-%,$(KIT_FILES))
 KIT_MANIFESTS := $(patsubst parts/%.toml,$(OUT)/%_kit/manifest.json,$(KIT_FILES))
 PRINTER    ?= generic
 
-.PHONY: all install lock parts test check bench clean list print $(PART_NAMES) $(KIT_NAMES)
+.PHONY: all install lock parts gallery test check bench clean list print $(PART_NAMES) $(KIT_NAMES)
 
-all: parts
+all: parts $(OUT)/index.html
 
 install: $(STAMP)
 
@@ -51,6 +51,13 @@ FLUSH = if [ -s $(QUEUE) ]; then q=$$(sort -u $(QUEUE)); rm -f $(QUEUE); \
 $(OUT)/.built: $(MANIFESTS)
 	@$(FLUSH)
 	@touch $@
+
+# the gallery of everything built in output/ (every build also rewrites it when its output is in place)
+$(OUT)/index.html: $(MANIFESTS) $(SOURCES) $(wildcard src/propulsor/export/web/*) $(STAMP)
+	$(BIN)/propulsor gallery $(OUT) -q
+
+gallery: $(STAMP)
+	$(BIN)/propulsor gallery $(OUT)
 
 # `make <name>`: that part, when out of date
 $(PART_NAMES): %: $(OUT)/%/manifest.json

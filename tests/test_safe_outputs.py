@@ -244,7 +244,9 @@ def test_concurrent_builds_take_turns(tmp_path, wheel):
     manifest = json.loads((out / "manifest.json").read_text())
     files = {p.relative_to(out).as_posix() for p in out.rglob("*") if p.is_file()}
     assert files == {e["path"] for e in manifest["files"]} | {"manifest.json"}
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["out", "wheel.toml"]
+    # beside the output only the gallery of the folder (rewritten by each build, under its own lock)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["index.html", "out", "wheel.toml"]
+    assert (tmp_path / "index.html").read_text().count("<section class=\"part\"") == 1
 
 
 # -- no orphans, no debris -------------------------------------------------------------------------

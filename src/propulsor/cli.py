@@ -1,4 +1,4 @@
-"""Command line: `propulsor build | print | check | list | params`.
+"""Command line: `propulsor build | print | gallery | check | list | params`.
 
 Exit codes: 0 built and every check passed; 1 built but a check failed (outputs
 kept only with --keep-failed) or `check` found invalid files; 2 bad input
@@ -140,6 +140,7 @@ def _into_output(args, out: Path, keep: tuple[Path, ...], produce, progress, dep
                   f"(use --keep-failed to keep the outputs)", file=sys.stderr)
             return EXIT_CHECK_FAILED
         of.replace(tmp, out)
+        _regenerate_gallery(out.parent, progress)
         if failures:
             print(f"propulsor: {what}: built into {out} but {len(failures)} check(s) failed", file=sys.stderr)
             return EXIT_CHECK_FAILED
@@ -156,6 +157,46 @@ def _into_output(args, out: Path, keep: tuple[Path, ...], produce, progress, dep
             shutil.rmtree(tmp, ignore_errors=True)
         close_in_workers(None)
         lock.release()
+
+
+def _regenerate_gallery(folder: Path, progress) -> Path | None:
+    """Rewrite ``folder/index.html`` (the gallery of every part built there) after a build put its
+    output in place.  Under the gallery's own lock, so that of two builds finishing together the later
+    one writes a page that shows both; never over an index.html propulsor did not write."""
+    from . import output_folder as of
+    from .export.gallery import INDEX, write_gallery
+
+    lock = of.OutputLock(folder / INDEX)
+    try:
+        lock.acquire(wait=True)
+        path = write_gallery(folder)
+    except Exception as exc:  # noqa: BLE001 - the build's output is in place; the page is not worth failing it
+        print(f"propulsor: the gallery {folder / INDEX} was not written: {type(exc).__name__}: {exc}", file=sys.stderr)
+        return None
+    finally:
+        lock.release()
+    if path is None:
+        progress(f"{folder / INDEX} was not written by propulsor: left as it is")
+    else:
+        progress(f"gallery: {path}")
+    return path
+
+
+def cmd_gallery(args) -> int:
+    """output/index.html: one page for every part built in the folder."""
+    from .export.gallery import INDEX, built_parts
+    from .progress import Progress
+
+    folder = Path(args.folder)
+    if not folder.is_dir():
+        return _fail_input(InputError("folder", str(folder), "must be a folder of built parts (e.g. output/)"))
+    if not built_parts(folder):
+        return _fail_input(InputError("folder", str(folder), "holds no built part (no */manifest.json)"))
+    path = _regenerate_gallery(folder, Progress(enabled=not args.quiet, check=check_signalled))
+    if path is None:
+        return _fail_input(InputError("folder", str(folder), f"its {INDEX} was not written by propulsor: "
+                                      "not replaced"))
+    return EXIT_OK
 
 
 def cmd_build(args) -> int:
@@ -373,6 +414,11 @@ def build_parser() -> argparse.ArgumentParser:
     ls = sub.add_parser("list", help="part types and the parameter files in parts/")
     ls.add_argument("--parts-dir", default="parts")
     ls.set_defaults(func=cmd_list)
+
+    g = sub.add_parser("gallery", help="output/index.html: one page for every part built in the folder")
+    g.add_argument("folder", nargs="?", default="output")
+    g.add_argument("-q", "--quiet", action="store_true", help="no progress messages")
+    g.set_defaults(func=cmd_gallery)
 
     pa = sub.add_parser("params", help="every parameter of a part type with unit, default and limits")
     pa.add_argument("part_type")

@@ -125,6 +125,48 @@ def check_dxf_file(path: Path) -> list[Check]:
     return out
 
 
+def check_glb_file(path: Path) -> list[Check]:
+    """An assembly's GLB: loads with trimesh as a scene; its mesh nodes are the components of the
+    assembly STEP beside it (the manifest's ``media.models`` entry) and the scene is in metres (the
+    STEP's extent in millimetres × 0.001, whatever the axes' order)."""
+    import numpy as np
+    import trimesh
+
+    name = path.name
+    try:
+        scene = trimesh.load(path, force="scene")
+        nodes = sorted(scene.graph.nodes_geometry)
+        if not nodes:
+            raise ValueError("no mesh node")
+    except Exception as exc:  # noqa: BLE001
+        return [Check.flag(f"{name}: loads", False, f"{type(exc).__name__}: {exc}")]
+    out = [Check.flag(f"{name}: loads", True, f"{len(nodes)} mesh nodes")]
+    model = {}
+    m = path.parent / MANIFEST
+    try:
+        media = json.loads(m.read_text(encoding="utf-8")).get("media", {}) if m.is_file() else {}
+        model = next((e for e in media.get("models", []) if isinstance(e, dict) and e.get("path") == name), {})
+    except (OSError, ValueError, AttributeError):
+        model = {}
+    if model.get("components"):
+        out.append(Check.equals(f"{name}: nodes are the assembly's components", nodes, sorted(model["components"]), "",
+                                "one named node per component of the assembly STEP"))
+    step = path.parent / str(model.get("step", ""))
+    if model.get("step") and step.is_file():
+        from ..export.step import read_step, step_instance_names
+        from ..solids.kernel import bounding_box
+
+        out.append(Check.equals(f"{name}: nodes are the STEP's components", nodes, sorted(step_instance_names(step)),
+                                "", f"the component occurrences of {step.name}"))
+
+        lo, hi = bounding_box(read_step(step))
+        want = np.sort(np.asarray(hi, float) - np.asarray(lo, float)) * 1e-3
+        got = np.sort(np.asarray(scene.extents, float))
+        out.append(Check.at_most(f"{name}: extent vs the STEP in metres", float(np.max(np.abs(got - want))), 1e-4, "m",
+                                 "glTF is in metres: the STEP's mm × 0.001"))
+    return out
+
+
 def _manifest_structure(data, folder: Path) -> tuple[list[dict], list[str]]:
     """The well-formed file entries of a manifest and what is wrong with the rest."""
     problems = []
@@ -195,6 +237,7 @@ CHECKERS = {
     ".stl": check_mesh_file,
     ".3mf": check_mesh_file,
     ".dxf": check_dxf_file,
+    ".glb": check_glb_file,
 }
 
 

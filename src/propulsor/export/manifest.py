@@ -33,9 +33,12 @@ FORMATS = {
     ".json": "JSON",
     ".toml": "TOML",
     ".txt": "text",
+    ".glb": "GLB",
+    ".js": "JavaScript",
+    ".html": "HTML",
 }
 
-_PACKAGES = ("numpy", "scipy", "cadquery", "manifold3d", "trimesh", "ezdxf", "matplotlib")
+_PACKAGES = ("numpy", "scipy", "cadquery", "manifold3d", "trimesh", "ezdxf", "matplotlib", "pillow", "markdown")
 
 
 def jsonable(v):
@@ -113,13 +116,15 @@ def library_versions() -> dict:
 
 
 def write_manifest(folder: str | Path, part: str, inputs, derived, checks, versions: dict | None = None,
-                   file_info: dict | None = None, expected_failures=(), media: dict | None = None) -> Path:
+                   file_info: dict | None = None, expected_failures=(), media: dict | None = None,
+                   title: str | None = None) -> Path:
     """Write folder/manifest.json; file_info adds keys to file entries by
     relative path (e.g. {'gear.step': {'volume_mm3': ...}}); versions default
     to library_versions().  expected_failures: names of checks the part file
     documents as failing (they are recorded, and do not make `passed` false).  media: what the
     gallery shows ({kind: [entry, ...]}, e.g. 'animations', 'models', 'pictures'; each entry a dict
-    with at least 'path'), written under the key ``media`` when not empty."""
+    with at least 'path'), written under the key ``media`` when not empty.  title: the part file's
+    ``[meta] title`` (the gallery's heading), written when given."""
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     files = file_entries(folder)
@@ -138,6 +143,8 @@ def write_manifest(folder: str | Path, part: str, inputs, derived, checks, versi
         "files": files,
         "versions": jsonable(versions if versions is not None else library_versions()),
     }
+    if title is not None:
+        data["title"] = str(title)
     if media:
         data["media"] = jsonable({k: v for k, v in media.items() if v})
     path = folder / MANIFEST

@@ -11,6 +11,20 @@ import math
 from pathlib import Path
 
 
+#: name suffix -> unit, for the report's derived-value table (names carry their units, e.g. a_w_mm)
+_SUFFIX_UNITS = (("_mm3", "mm³"), ("_mm2", "mm²"), ("_mm", "mm"), ("_deg", "deg"), ("_rad", "rad"),
+                 ("_mpa", "MPa"), ("_MPa", "MPa"), ("_kN", "kN"), ("_N", "N"), ("_Nm", "N·m"), ("_kg", "kg"),
+                 ("_s", "s"), ("_m", "m"), ("_K", "K"), ("_C", "°C"), ("_pct", "%"))
+
+
+def unit_from_name(name: str) -> str:
+    """The unit a quantity's name ends in ('' when it names none)."""
+    for suffix, unit in _SUFFIX_UNITS:
+        if name.endswith(suffix):
+            return unit
+    return ""
+
+
 def _fmt(v) -> str:
     try:
         import numpy as np
@@ -83,18 +97,21 @@ def write_report(
     notes=(),
     part: str = "",
     plots=(),
+    views=(),
 ) -> Path:
     """Write a Markdown report.
 
     inputs / derived: dict name -> value, or name -> (value, unit[, meaning]).
     checks: list of Check (or dicts with the same keys).  tables / figures
     (alias plots): relative paths or (relative path, caption) pairs.  notes:
-    strings.  part: the part type, printed under the title.
+    strings.  part: the part type, printed under the title.  views: the isometric pictures
+    of the solids and assemblies (relative paths or (path, caption) pairs).
     """
     inputs = inputs or {}
     derived = derived or {}
     tables = _refs(tables)
     figures = _refs(list(figures) + list(plots))
+    views = _refs(views)
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     cks = [c.to_dict() if hasattr(c, "to_dict") else dict(c) for c in checks]
@@ -117,6 +134,10 @@ def write_report(
     if figures:
         lines += ["## Figures", ""]
         for p, cap in figures:
+            lines += [f"![{cap}]({p})", "", f"*{cap}*", ""]
+    if views:
+        lines += ["## Views", "", "Isometric pictures of every solid and assembly (3D models: the `.glb` files).", ""]
+        for p, cap in views:
             lines += [f"![{cap}]({p})", "", f"*{cap}*", ""]
     if notes:
         lines += ["## Notes", ""] + [f"- {n}" for n in notes] + [""]

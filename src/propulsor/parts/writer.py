@@ -5,14 +5,16 @@ A part module computes; it hands results to the writer:
 
     w.derived.update(...)             derived values for manifest/report
     w.add_checks([...])               engineering checks of the part
-    w.add_solid(name, solid, genus)   STEP + STL + 3MF, B-rep/STEP/mesh checks
-    w.add_assembly(name, components)  assembly STEP with named, placed components
+    w.add_solid(name, solid, genus)   STEP + STL + 3MF, B-rep/STEP/mesh checks, views/<name>.png
+    w.add_assembly(name, components)  assembly STEP with named, placed components; <name>.glb (+ .glb.js)
+                                      and views/<name>.png from the solids' meshes
+    w.add_known_mesh(solid, V, F)     a mesh the part made anyway, for the assemblies' GLB and picture
     w.add_dxf(name, cut, ref)         DXF (CUT / REF layers, mm)
     w.add_table(name, columns, rows)  CSV under tables/
     w.add_plot(name, fig)             PNG under plots/
     w.add_note(text)                  a paragraph of the report
     w.add_media(kind, entry)          a gallery item (animation, model, picture) for the manifest
-    w.finish()                        report.md + manifest.json; returns the failures
+    w.finish()                        report.md (+ report.html) + manifest.json; returns the failures
 """
 
 from __future__ import annotations
@@ -22,17 +24,23 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from ..check import Check
+from ..export.report import unit_from_name  # noqa: F401  (public here too)
 from ..parallel import fork_pool, inline, jobs_budget
 from ..params import params_to_dict, read_part_meta
 
 
 #: forked workers writing and checking solids (the machine has 2 cores)
 SOLID_WORKERS = 2
+#: the folder of the isometric pictures of every solid and assembly
+VIEWS = "views"
 
 
-def solid_files_and_checks(folder: str, name: str, solid, expected_genus, volume: float, forked: bool) -> list:
-    """STEP, STL and 3MF of one solid in `folder` and every shared check on them (a list of Check).
+def solid_files_and_checks(folder: str, name: str, solid, expected_genus, volume: float, forked: bool):
+    """STEP, STL and 3MF of one solid in `folder`, its isometric picture ``views/<name>.png``, and every
+    shared check on them; returns (list of Check, (vertices, faces) of the mesh, for the assemblies).
 
     B-rep validity (OCCT), STEP written and re-imported (one solid, same volume), tessellation
     within the chord tolerance, mesh validity (closed, oriented, one body, genus, no
@@ -40,6 +48,7 @@ def solid_files_and_checks(folder: str, name: str, solid, expected_genus, volume
     from ..checks.brep import brep_checks, step_roundtrip_check
     from ..checks.mesh import mesh_checks
     from ..export.mesh import tessellate, write_3mf, write_stl
+    from ..export.render import palette_colour, render_iso
     from ..export.step import write_step
 
     folder = Path(folder)
@@ -53,21 +62,30 @@ def solid_files_and_checks(folder: str, name: str, solid, expected_genus, volume
     write_stl(mesh, folder / f"{name}.stl")
     write_3mf(mesh, folder / f"{name}.3mf", name)
     checks += mesh_checks(mesh, name, expected_genus=expected_genus, brep_volume=volume)
-    return checks
+    vertices, faces = np.asarray(mesh.vertices, np.float64), np.asarray(mesh.faces, np.int64)
+    render_iso([(vertices, faces, None, palette_colour(0))], folder / VIEWS / f"{name}.png")
+    return checks, (vertices, faces)
 
 
-#: name suffix -> unit, for the report's derived-value table (names carry their units, e.g. a_w_mm)
-_SUFFIX_UNITS = (("_mm3", "mm³"), ("_mm2", "mm²"), ("_mm", "mm"), ("_deg", "deg"), ("_rad", "rad"),
-                 ("_mpa", "MPa"), ("_MPa", "MPa"), ("_kN", "kN"), ("_N", "N"), ("_Nm", "N·m"), ("_kg", "kg"),
-                 ("_s", "s"), ("_m", "m"), ("_K", "K"), ("_C", "°C"), ("_pct", "%"))
+def mesh_of(solid, forked: bool):
+    """(vertices, faces) of a solid that is in an assembly but has no files of its own."""
+    from ..export.mesh import tessellate
+
+    mesh = tessellate(solid, parallel=not forked and jobs_budget() > 1)
+    return np.asarray(mesh.vertices, np.float64), np.asarray(mesh.faces, np.int64)
 
 
-def unit_from_name(name: str) -> str:
-    """The unit a quantity's name ends in ('' when it names none)."""
-    for suffix, unit in _SUFFIX_UNITS:
-        if name.endswith(suffix):
-            return unit
-    return ""
+def assembly_model(folder: str, name: str, meshes: dict, components, from_below: bool = False) -> None:
+    """``<name>.glb`` (+ ``.glb.js``) and ``views/<name>.png`` of an assembly from its solids' meshes;
+    components: (component name, solid key, 4×4 placement mm); from_below: the picture seen from below."""
+    from ..export.glb import write_glb, write_glb_script
+    from ..export.render import VIEW_DIR, VIEW_DIR_BELOW, palette_colour, render_iso
+
+    folder = Path(folder)
+    glb = write_glb(folder / f"{name}.glb", name, meshes, components)
+    write_glb_script(glb)
+    items = [(*meshes[key], matrix, palette_colour(k)) for k, (_, key, matrix) in enumerate(components)]
+    render_iso(items, folder / VIEWS / f"{name}.png", view=VIEW_DIR_BELOW if from_below else VIEW_DIR)
 
 
 @dataclass
@@ -101,6 +119,11 @@ class OutputWriter:
         self.media: dict[str, list[dict]] = {}  # kind -> entries ({path, ...}), the manifest's "media"
         self._pool = None
         self._solid_jobs: list = []
+        self._meshes: dict[str, tuple] = {}  # solid key -> (vertices, faces) mm, for the assemblies
+        self._mesh_jobs: list = []  # (key, job) meshes of assembly solids that have no files of their own
+        self._solid_keys: dict[int, str] = {}  # id(solid) -> its key (the solid's name)
+        self._keep: list = []  # the solids keyed by id, kept alive
+        self._assemblies: list = []  # (name, [(component, solid key, 4×4 mm)], picture from below)
         self.report_name = "report.md"  # a print kit's is print_report.md
 
     # -- helpers -----------------------------------------------------------------
@@ -131,6 +154,9 @@ class OutputWriter:
         volume = float(solid.Volume())
         rec = SolidRecord(name, volume, {"step": f"{name}.step", "stl": f"{name}.stl", "3mf": f"{name}.3mf"})
         self.solids.append(rec)
+        self._solid_keys[id(solid)] = name
+        self._keep.append(solid)
+        self.add_media("pictures", {"path": f"{VIEWS}/{name}.png", "title": f"{name} (solid)", "of": name})
         self.derived[f"{name}_volume_mm3"] = volume
         self.progress(f"{name}: STEP, STL, 3MF and their checks (B-rep, STEP round trip, mesh)")
         pool = self._solid_pool()
@@ -147,9 +173,13 @@ class OutputWriter:
     def wait_solids(self) -> None:
         """Collect the checks of every solid added so far (in the order they were added)."""
         for name, job in self._solid_jobs:
-            self.add_checks(job.result())
+            checks, self._meshes[name] = job.result()
+            self.add_checks(checks)
             self.progress(f"{name}: files written and checked")
         self._solid_jobs = []
+        for key, job in self._mesh_jobs:
+            self._meshes[key] = job.result()
+        self._mesh_jobs = []
 
     def wait_for_files(self, *names: str) -> None:
         """Wait until the files of the named solids are written (their checks are still collected, in
@@ -164,16 +194,62 @@ class OutputWriter:
             self._pool.shutdown(wait=True, cancel_futures=True)
             self._pool = None
         self._solid_jobs = []
+        self._mesh_jobs = []
+        self._assemblies = []
 
-    def add_assembly(self, name: str, components) -> Path:
-        """components: list of (component name, solid, (x, y, z) mm, rotation about z in rad)."""
+    def add_assembly(self, name: str, components, picture_from_below: bool = False) -> Path:
+        """components: list of (component name, solid, (x, y, z) mm, rotation about z in rad).
+        picture_from_below: the assembly's picture is the isometric view from below (its main part
+        would be hidden under the others seen from above).
+
+        Beside the STEP: ``<name>.glb`` (+ ``.glb.js``) and the picture ``views/<name>.png``, made at
+        :meth:`finish` from the meshes of the solids (a solid added with :meth:`add_solid` is not
+        tessellated again; another is tessellated once in a worker)."""
+        from ..export.glb import placement_matrix
         from ..export.step import write_assembly_step
 
         p = self.path(f"{name}.step")
         self.progress(f"{name}: assembly STEP ({len(components)} components)")
         write_assembly_step(p, components, name)
         self.extra_files.append(p.name)
+        placed = []
+        for comp in components:
+            solid = comp[1]
+            key = self._solid_keys.get(id(solid))
+            if key is None:  # a solid with no files of its own: its mesh is made once, in a worker
+                key = self._solid_keys[id(solid)] = f"{name}:{comp[0]}"
+                self._keep.append(solid)
+                pool = self._solid_pool()
+                self._mesh_jobs.append((key, pool.submit(mesh_of, solid, True) if pool else inline(mesh_of, solid, False)))
+            placed.append((str(comp[0]), key, placement_matrix(comp)))
+        self._assemblies.append((name, placed, picture_from_below))
+        self.extra_files += [f"{name}.glb"]
+        self.add_media("models", {"path": f"{name}.glb", "script": f"{name}.glb.js", "title": name, "step": p.name,
+                                  "components": [c for c, _, _ in placed], "picture": f"{VIEWS}/{name}.png"})
+        self.add_media("pictures", {"path": f"{VIEWS}/{name}.png", "title": f"{name} (assembly)", "of": name})
         return p
+
+    def add_known_mesh(self, solid, vertices, faces) -> None:
+        """The mesh of a solid that the part made for its own work (a sweep's): an assembly holding the
+        solid uses it for its GLB and picture instead of tessellating the solid again."""
+        if id(solid) not in self._solid_keys:
+            key = self._solid_keys[id(solid)] = f"mesh_{len(self._meshes) + len(self._keep)}"
+            self._keep.append(solid)
+            self._meshes[key] = (np.asarray(vertices, np.float64), np.asarray(faces, np.int64))
+
+    def _write_models(self) -> None:
+        """Every assembly's GLB and picture (after :meth:`wait_solids`: the meshes are in), two at a time."""
+        if not self._assemblies:
+            return
+        self.progress(f"GLB and pictures of {len(self._assemblies)} assembl{'y' if len(self._assemblies) == 1 else 'ies'}")
+        pool = self._solid_pool()
+        jobs = []
+        for name, placed, from_below in self._assemblies:
+            meshes = {key: self._meshes[key] for key in dict.fromkeys(k for _, k, _ in placed)}
+            args = (str(self.folder), name, meshes, placed, from_below)
+            jobs.append(pool.submit(assembly_model, *args) if pool else inline(assembly_model, *args))
+        for job in jobs:
+            job.result()
 
     # -- 2D, tables, plots --------------------------------------------------------
     def add_dxf(self, name: str, cut_profiles, ref_curves=()) -> Path:
@@ -207,10 +283,12 @@ class OutputWriter:
 
     def finish(self) -> list[str]:
         """Write report.md and manifest.json; return the unexpected check failures."""
+        from ..export.html import write_report_html
         from ..export.manifest import write_manifest
         from ..export.report import write_report
 
         self.wait_solids()
+        self._write_models()
         self.close()
 
         inputs = params_to_dict(self.params)
@@ -226,9 +304,11 @@ class OutputWriter:
         built = [f"`{r.name}` ({', '.join(r.files.values())}; volume {r.volume_mm3:.6g} mm³)" for r in self.solids]
         built += [f"`{n}`" for n in self.extra_files]
         intro = ("Built: " + "; ".join(built) + ".") if built else ""
-        write_report(self.folder / self.report_name, title=self.title, part=self.part, intro=intro, inputs=report_inputs,
-                     derived=report_derived, checks=self.checks, tables=self.tables, plots=self.plots,
-                     notes=notes)
+        views = [(e["path"], e["title"]) for e in self.media.get("pictures", [])]
+        report = write_report(self.folder / self.report_name, title=self.title, part=self.part, intro=intro,
+                              inputs=report_inputs, derived=report_derived, checks=self.checks, tables=self.tables,
+                              plots=self.plots, notes=notes, views=views)
+        write_report_html(report)
         write_manifest(self.folder, part=self.part, inputs=inputs, derived=self.derived, checks=self.checks,
-                       expected_failures=self.expected_failures, media=self.media)
+                       expected_failures=self.expected_failures, media=self.media, title=self.title)
         return self.failures()

@@ -205,6 +205,17 @@ def largest_radius(shape) -> float:
     return max(0.5 * (x1 - x0), 0.5 * (y1 - y0))
 
 
+def bounding_box(shape) -> tuple[np.ndarray, np.ndarray]:
+    """The exact (optimal) axis-aligned bounding box of a shape: (lower corner, upper corner), mm."""
+    from OCP.Bnd import Bnd_Box
+    from OCP.BRepBndLib import BRepBndLib
+
+    box = Bnd_Box()
+    BRepBndLib.AddOptimal_s(occ_shape(shape), box, False, False)
+    x0, y0, z0, x1, y1, z1 = box.Get()
+    return np.array([x0, y0, z0]), np.array([x1, y1, z1])
+
+
 def mass_properties(solid, rho: float) -> tuple[float, np.ndarray]:
     """Mass (volume × rho) and centre of mass (mm) of a solid."""
     g = GProp_GProps()

@@ -141,6 +141,8 @@ def solids_and_sweep_start(m: BalancerModel, w, built: dict) -> None:
     w.progress("sweep meshes")
     bal_mesh = sweep_mesh(bal, p.sweep_chord_mm)
     wheel_meshes = [sweep_mesh(s_, p.sweep_chord_mm) for s_ in wsol.values()]
+    for s_, (V, F) in zip(wsol.values(), wheel_meshes):  # the assembly's GLB and picture reuse them
+        w.add_known_mesh(s_, V, F)
     w.progress(f"travel sweep β0 … β_m ({int(math.ceil(math.degrees(t.beta_m - t.beta0) * p.sweep_steps_per_deg)) + 1} "
                "steps × hull + 2 neighbours), in a second process while the solids are checked")
     built["pending_sweep"] = start_in_fork(sweep_job, m, bal_mesh, wheel_meshes)
@@ -168,7 +170,7 @@ def solids_and_sweep_start(m: BalancerModel, w, built: dict) -> None:
     comps = [("balancer", bal, z_rotation(th))]
     for nm, s_ in wsol.items():
         comps.append((f"road_wheel_{nm}", s_, z_rotation(th, (p.R_b_mm, 0.0, m.z_hub))))
-    w.add_assembly("assembly_beta_st", comps)
+    w.add_assembly("assembly_beta_st", comps, picture_from_below=True)  # seen from above the wheel hides the arm
 
     # DXF of the arm's side outline (plate blank)
     refs = [("line", {"p0": (-p.upper_boss_r_mm - 10, 0.0), "p1": (p.R_b_mm + p.lower_boss_r_mm + 10, 0.0)}),

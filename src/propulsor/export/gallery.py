@@ -1,0 +1,292 @@
+"""output/index.html: one page for every part built in an output folder (issue 14).
+
+Reads the manifests and the files beside them only (every ``*/manifest.json``; a print kit
+``<name>_kit/`` is shown with its part ``<name>/``): each part with its title, its status (checks
+passed / documented failures / failed, with counts), a few key derived values with units, the
+animations (``media.animations``), an interactive 3D view of the assembly (``media.models``: the
+GLB's script twin, drawn by ``web/viewer.js``, inlined), the pictures (``media.pictures``), links to
+the HTML report, the files by format and the print kit.  The page is self-contained (inline style
+and script, relative links), so it works opened from disk, with no network.
+
+Deterministic: the same manifests give the same bytes (folders sorted, no time stamp).  Written
+through a temporary file and one rename; never over an ``index.html`` that propulsor did not write.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+from html import escape
+from importlib import resources
+from pathlib import Path
+
+from .html import page, write_atomically
+from .manifest import MANIFEST
+from .report import _fmt, unit_from_name
+
+INDEX = "index.html"
+#: the mark of a page propulsor wrote (an index.html without it is never replaced)
+GENERATOR = '<meta name="generator" content="propulsor">'
+
+#: key derived values per part type: name patterns (regular expressions), the first match of each shown
+KEY_VALUES = {
+    "noncircular_pair": [r"method", r"center_distance_mm", r"module_mm", r"driver_teeth", r"driven_teeth",
+                         r"speed_ripple", r"backlash_min_mm", r"te_pp_rad", r"contact_ratio_mean"],
+    "planetary_final_drive": [r"ratio_i_1H", r"a_w_sun_planet_mm", r"epsilon_alpha_sun_planet",
+                              r"epsilon_alpha_planet_ring", r"strength_sun_planet_S_H", r"strength_planet_ring_S_H",
+                              r"coaxiality_mismatch_mm", r"design_torque_carrier_Nm"],
+    "cam_mover": [r"law", r"hub_height_mean_mm", r"hub_height_variation_exact_mm", r"hub_speed_variation_pct",
+                  r"sigma_max_support_MPa", r"neighbour_clearance_min_mm", r"roller_overlap_max_mm2"],
+    "balancer": [r"beta0_deg", r"beta_m_deg", r"f_dyn_mm", r"mass_balancer_kg", r"min_clearance_overall_mm",
+                 r"sigma_vM_body_elastic_built_MPa", r"damper_heat_max_steady_rise_K"],
+    "road_wheel": [r"tyre_radius_mm", r"mass_wheel_kg", r"load_per_row_N", r"peak_pressure_q_m_MPa",
+                   r"T_at_V_max_C"],
+    "polysector_gear": [r"offset_max_mm", r"z_cond_max", r"z_c_eq2", r"r_blank_mm", r"r_gear_mm",
+                        r"epsilon_alpha_blank_gear"],
+}
+#: how many derived values a part type without a list shows (its first scalar ones)
+DEFAULT_KEY_VALUES = 6
+#: the file formats linked, in this order
+FILE_FORMATS = ("STEP", "STL", "3MF", "DXF", "CSV", "GLB")
+
+STYLE = """
+header { border-bottom: 1px solid var(--line); margin-bottom: 8px; }
+nav ul { list-style: none; padding: 0; margin: 6px 0; display: flex; flex-wrap: wrap; gap: 4px 14px; }
+section.part { border: 1px solid var(--line); border-radius: 8px; padding: 4px 14px 14px; margin: 18px 0; }
+.sub { color: var(--muted); margin: 0 0 6px; }
+.badge { display: inline-block; border-radius: 10px; padding: 1px 9px; color: #fff; font-size: 0.85em;
+         font-weight: 600; }
+.badge.ok { background: var(--ok); } .badge.doc { background: var(--doc); } .badge.bad { background: var(--bad); }
+dl.values { display: grid; grid-template-columns: fit-content(62%) 1fr; gap: 2px 12px; margin: 8px 0; }
+dl.values dt { color: var(--muted); } dl.values dd { margin: 0; }
+.media { display: grid; grid-template-columns: repeat(auto-fill, minmax(140px, 1fr)); gap: 10px; }
+.media.wide { grid-template-columns: repeat(auto-fill, minmax(300px, 1fr)); }
+.media figure { margin: 0; }
+figure img { display: block; border: 1px solid var(--line); border-radius: 4px; background: #fff; }
+figcaption { font-size: 0.85em; color: var(--muted); }
+figure.viewer { margin: 8px 0; max-width: 760px; }
+figure.viewer canvas { display: block; width: 100%; aspect-ratio: 4 / 3; max-height: 70vh; border: 1px solid var(--line);
+                       border-radius: 4px; touch-action: pan-y; background: #f5f7fa; }
+.links a { margin-right: 10px; white-space: nowrap; }
+details { margin: 4px 0; } summary { cursor: pointer; }
+.files a { display: inline-block; margin-right: 10px; }
+.kit { border-top: 1px dashed var(--line); margin-top: 12px; }
+"""
+
+
+def _is_part_manifest(data) -> bool:
+    return isinstance(data, dict) and isinstance(data.get("part"), str) and isinstance(data.get("files"), list)
+
+
+def _load(folder: Path) -> dict | None:
+    try:
+        data = json.loads((folder / MANIFEST).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    return data if _is_part_manifest(data) else None
+
+
+def built_parts(folder: str | Path) -> list[dict]:
+    """Every built part under `folder`: {name, manifest, kit (name, manifest) or None}, sorted by name;
+    a kit whose part is not built is an entry of its own."""
+    folder = Path(folder)
+    found = {d.name: m for d in sorted(folder.iterdir()) if d.is_dir() and not d.name.startswith(".")
+             for m in [_load(d)] if m is not None}
+    out = []
+    for name, m in found.items():
+        if name.endswith("_kit") and name[:-4] in found:
+            continue
+        kit_name = f"{name}_kit"
+        kit = (kit_name, found[kit_name]) if kit_name in found and not name.endswith("_kit") else None
+        out.append({"name": name, "manifest": m, "kit": kit})
+    return out
+
+
+def status(manifest: dict) -> tuple[str, str]:
+    """(css class, text): every check passed / documented failures / failed, with counts."""
+    checks = [c for c in manifest.get("checks", []) if isinstance(c, dict)]
+    documented = set(manifest.get("expected_failures", []))
+    failed = [c for c in checks if not c.get("passed")]
+    bad = [c for c in failed if c.get("name") not in documented]
+    n = len(checks)
+    if bad:
+        return "bad", f"failed: {len(bad)} of {n} checks" + (f" ({len(failed) - len(bad)} documented)" if len(failed) > len(bad) else "")
+    if failed:
+        return "doc", f"documented failures: {len(failed)} of {n} checks (the part file lists them)"
+    return "ok", f"all {n} checks passed"
+
+
+def key_values(manifest: dict) -> list[tuple[str, str, str]]:
+    """(name, value, unit) of the part type's key derived values that the manifest holds."""
+    derived = manifest.get("derived")
+    derived = derived if isinstance(derived, dict) else {}
+    patterns = KEY_VALUES.get(manifest.get("part", ""))
+    names: list[str] = []
+    if patterns:
+        for pat in patterns:
+            hit = next((k for k in derived if re.fullmatch(pat, k) and k not in names), None)
+            if hit is not None:
+                names.append(hit)
+    else:
+        names = [k for k, v in derived.items() if isinstance(v, (int, float, str))][:DEFAULT_KEY_VALUES]
+    return [(k, _fmt(derived[k]), unit_from_name(k)) for k in names]
+
+
+def _a(href: str, text: str) -> str:
+    return f'<a href="{escape(href)}">{escape(text)}</a>'
+
+
+def _size(n) -> str:
+    n = float(n)
+    return f"{n / 1e6:.1f} MB" if n >= 1e6 else f"{n / 1e3:.0f} kB"
+
+
+def _figure(src: str, caption: str, width=None, height=None) -> str:
+    wh = f' width="{int(width)}" height="{int(height)}"' if width and height else ""
+    return (f'<figure><img src="{escape(src)}" alt="{escape(caption)}"{wh}>'
+            f"<figcaption>{escape(caption)}</figcaption></figure>")
+
+
+def _animation(name: str, e: dict) -> str:
+    bits = [str(e.get("title") or Path(e["path"]).stem)]
+    if e.get("frames"):
+        bits.append(f"{e['frames']} frames")
+    if e.get("width_px") and e.get("height_px"):
+        bits.append(f"{e['width_px']} × {e['height_px']} px")
+    if e.get("bytes"):
+        bits.append(_size(e["bytes"]))
+    lc = e.get("least_clearance_mm")
+    if isinstance(lc, (int, float)) and math.isfinite(lc):
+        bits.append(f"least clearance {lc:.3g} mm")
+    return _figure(f"{name}/{e['path']}", ", ".join(bits), e.get("width_px"), e.get("height_px"))
+
+
+def _viewer(name: str, models: list[dict]) -> str:
+    data = [{"script": f"{name}/{m['script']}", "title": str(m.get("title", m["path"]))} for m in models
+            if m.get("script")]
+    if not data:
+        return ""
+    select = ""
+    if len(data) > 1:
+        opts = "".join(f"<option>{escape(d['title'])}</option>" for d in data)
+        select = f'<label>assembly <select aria-label="assembly">{opts}</select></label>'
+    glbs = " · ".join(_a(f"{name}/{m['path']}", m["path"]) for m in models)
+    return (f"<h3>3D</h3><figure class=\"viewer\" data-models='{escape(json.dumps(data), quote=True)}' "
+            f'data-state="waiting">{select}<canvas></canvas>'
+            f'<figcaption><span class="status">the 3D view loads when it comes into view</span> — GLB: {glbs}'
+            f"</figcaption></figure>")
+
+
+def _files(name: str, manifest: dict) -> str:
+    by_format: dict[str, list[str]] = {}
+    for f in manifest.get("files", []):
+        if isinstance(f, dict) and f.get("format") in FILE_FORMATS:
+            by_format.setdefault(f["format"], []).append(f["path"])
+    rows = []
+    for fmt in FILE_FORMATS:
+        paths = by_format.get(fmt)
+        if paths:
+            links = "".join(_a(f"{name}/{p}", p) for p in paths)
+            rows.append(f'<details><summary>{fmt} ({len(paths)})</summary><div class="files">{links}</div></details>')
+    return "".join(rows)
+
+
+def _report_links(name: str, folder: Path, stem: str) -> str:
+    links = []
+    if (folder / name / f"{stem}.html").is_file():
+        links.append(_a(f"{name}/{stem}.html", "report"))
+    if (folder / name / f"{stem}.md").is_file():
+        links.append(_a(f"{name}/{stem}.md", f"{stem}.md"))
+    links.append(_a(f"{name}/{MANIFEST}", MANIFEST))
+    return '<p class="links">' + "".join(links) + "</p>"
+
+
+def _kit(folder: Path, kit_name: str, m: dict) -> str:
+    cls, text = status(m)
+    pics = [f["path"] for f in m.get("files", []) if isinstance(f, dict) and f.get("format") == "PNG"
+            and f["path"].startswith("plots/")]
+    plates = [f["path"] for f in m.get("files", []) if isinstance(f, dict) and f.get("format") == "3MF"
+              and "/" not in f["path"]]
+    out = [f'<div class="kit"><h3>Print kit: {_a(kit_name + "/", kit_name)}</h3>',
+           f'<p><span class="badge {cls}">{escape(text)}</span></p>', _report_links(kit_name, folder, "print_report")]
+    if plates:
+        out.append('<p class="links">plates: ' + "".join(_a(f"{kit_name}/{p}", p) for p in plates) + "</p>")
+    if pics:
+        out.append('<div class="media">' + "".join(_figure(f"{kit_name}/{p}", Path(p).stem.replace("_", " "))
+                                                     for p in pics) + "</div>")
+    out.append("</div>")
+    return "".join(out)
+
+
+def _section(folder: Path, entry: dict) -> str:
+    name, m = entry["name"], entry["manifest"]
+    media = m.get("media") if isinstance(m.get("media"), dict) else {}
+    media = {k: v for k, v in media.items() if isinstance(v, list)}
+    cls, text = status(m)
+    title = m.get("title") or name
+    out = [f'<section class="part" id="{escape(name)}">', f"<h2>{escape(title)}</h2>",
+           f'<p class="sub">{_a(name + "/", name + "/")} · part type <code>{escape(m["part"])}</code> · '
+           f'<span class="badge {cls}">{escape(text)}</span></p>']
+    values = key_values(m)
+    if values:
+        out.append('<dl class="values">' + "".join(
+            f"<dt>{escape(k)}</dt><dd>{escape(v)}{('&nbsp;' + escape(u)) if u else ''}</dd>" for k, v, u in values) + "</dl>")
+    out.append(_report_links(name, folder, "print_report" if name.endswith("_kit") else "report"))
+    anims = [e for e in media.get("animations", []) if isinstance(e, dict) and e.get("path")]
+    if anims:
+        out.append("<h3>Motion</h3><div class=\"media wide\">" + "".join(_animation(name, e) for e in anims) + "</div>")
+    models = [e for e in media.get("models", []) if isinstance(e, dict) and e.get("path")]
+    out.append(_viewer(name, models))
+    pics = [e for e in media.get("pictures", []) if isinstance(e, dict) and e.get("path")]
+    if pics:
+        out.append("<h3>Pictures</h3><div class=\"media\">" + "".join(
+            _figure(f"{name}/{e['path']}", str(e.get("title", e["path"]))) for e in pics) + "</div>")
+    files = _files(name, m)
+    if files:
+        out.append("<h3>Files</h3>" + files)
+    if entry["kit"]:
+        out.append(_kit(folder, *entry["kit"]))
+    out.append("</section>")
+    return "\n".join(x for x in out if x)
+
+
+def viewer_script() -> str:
+    return resources.files(__package__).joinpath("web/viewer.js").read_text(encoding="utf-8")
+
+
+def render_gallery(folder: str | Path) -> str:
+    """The page (HTML text) of every built part in `folder`."""
+    folder = Path(folder)
+    parts = built_parts(folder)
+    counts = {"ok": 0, "doc": 0, "bad": 0}
+    for e in parts:
+        counts[status(e["manifest"])[0]] += 1
+    head = ["<header><h1>propulsor: built parts</h1>",
+            f'<p class="sub">{len(parts)} part(s) in this folder: {counts["ok"]} with every check passed, '
+            f'{counts["doc"]} with documented failures, {counts["bad"]} failed.  Each part\'s report, files and '
+            "print kit are linked below; the 3D views turn with the mouse.</p>"]
+    if parts:
+        head.append("<nav><ul>" + "".join(
+            f'<li><a href="#{escape(e["name"])}">{escape(e["name"])}</a></li>' for e in parts) + "</ul></nav>")
+    head.append("</header>")
+    body = "\n".join(head + [_section(folder, e) for e in parts])
+    return page("propulsor: built parts", body, style=STYLE, script=viewer_script())
+
+
+def write_gallery(folder: str | Path) -> Path | None:
+    """Write ``folder/index.html`` (atomically); None, writing nothing, when an ``index.html`` there is
+    not one propulsor wrote."""
+    folder = Path(folder)
+    target = folder / INDEX
+    if target.is_symlink() or (target.exists() and not _ours(target)):
+        return None
+    return write_atomically(target, render_gallery(folder))
+
+
+def _ours(path: Path) -> bool:
+    try:
+        with open(path, encoding="utf-8", errors="replace") as fh:
+            return GENERATOR in fh.read(4096)
+    except OSError:
+        return False

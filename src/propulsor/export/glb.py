@@ -1,0 +1,120 @@
+"""GLB (binary glTF 2.0) of an assembly, and its script twin for pages opened from disk.
+
+One node per component, named as the component of the assembly STEP (children of one root node named
+as the assembly, which turns the project's z-up frame into glTF's y-up one), each with its own mesh and
+material (a base colour from the fixed palette of :mod:`propulsor.export.render`): components that
+are the same solid (planets, legs, sectors) share the solid's vertex and index accessors, so a
+solid is stored once however often it is placed.  glTF's unit is the metre: vertex positions and
+node translations are the millimetres × 0.001.  Written here (not through trimesh's exporter) so
+that the bytes depend on the meshes only: JSON with sorted keys, chunks padded as the glTF 2.0
+specification asks (JSON with spaces, BIN with zeros).
+
+``<name>.glb.js`` holds the same bytes base64-encoded in a classic script, because a page opened from
+disk (file://) may not fetch() or XHR a file beside it, while a ``<script src>`` loads.
+"""
+
+from __future__ import annotations
+
+import base64
+import json
+import struct
+from pathlib import Path
+
+import numpy as np
+
+from .render import palette_colour
+
+#: glTF's unit is the metre; the project's the millimetre
+MM_TO_M = 1e-3
+_ARRAY_BUFFER, _ELEMENT_ARRAY_BUFFER = 34962, 34963
+_FLOAT, _UNSIGNED_INT = 5126, 5125
+_SQRT_HALF = 0.7071067811865476
+
+
+def _pad(data: bytes, fill: bytes) -> bytes:
+    return data + fill * (-len(data) % 4)
+
+
+def write_glb(path: str | Path, name: str, meshes: dict, components) -> Path:
+    """Write an assembly GLB.
+
+    meshes: solid key -> (vertices (n, 3) mm, faces (m, 3)); components: (component name, solid key,
+    4×4 placement in mm), in the assembly's order (the k-th gets palette colour k)."""
+    path = Path(path)
+    blob = bytearray()
+    views, accessors, geometry = [], [], {}
+
+    def view(data: bytes, target: int) -> int:
+        blob.extend(b"\0" * (-len(blob) % 4))
+        views.append({"buffer": 0, "byteOffset": len(blob), "byteLength": len(data), "target": target})
+        blob.extend(data)
+        return len(views) - 1
+
+    for key in dict.fromkeys(k for _, k, _ in components):  # first use order
+        v, f = meshes[key]
+        pos = (np.asarray(v, np.float64) * MM_TO_M).astype("<f4")
+        idx = np.asarray(f, np.int64).astype("<u4").reshape(-1)
+        accessors.append({"bufferView": view(pos.tobytes(), _ARRAY_BUFFER), "componentType": _FLOAT,
+                          "count": len(pos), "type": "VEC3",
+                          "min": [float(x) for x in pos.min(axis=0)], "max": [float(x) for x in pos.max(axis=0)]})
+        accessors.append({"bufferView": view(idx.tobytes(), _ELEMENT_ARRAY_BUFFER), "componentType": _UNSIGNED_INT,
+                          "count": len(idx), "type": "SCALAR"})
+        geometry[key] = (len(accessors) - 2, len(accessors) - 1)
+
+    nodes, gl_meshes, materials = [], [], []
+    for k, (cname, key, matrix) in enumerate(components):
+        m = np.asarray(matrix, np.float64).copy()
+        m[:3, 3] *= MM_TO_M
+        r, g, b = palette_colour(k)
+        materials.append({"name": cname, "pbrMetallicRoughness": {
+            "baseColorFactor": [r, g, b, 1.0], "metallicFactor": 0.2, "roughnessFactor": 0.6}})
+        pos, idx = geometry[key]
+        gl_meshes.append({"name": cname, "primitives": [
+            {"attributes": {"POSITION": pos}, "indices": idx, "material": k, "mode": 4}]})
+        node = {"name": cname, "mesh": k}
+        if not np.allclose(m, np.eye(4), rtol=0.0, atol=1e-15):
+            node["matrix"] = [float(x) for x in m.T.reshape(-1)]  # column-major
+        nodes.append(node)
+    # the root: the project's z-up frame turned into glTF's y-up one (-90° about x: z -> y, y -> -z)
+    nodes.append({"name": name, "children": list(range(len(nodes))), "rotation": [-_SQRT_HALF, 0.0, 0.0, _SQRT_HALF]})
+    doc = {
+        "asset": {"version": "2.0", "generator": "propulsor"},
+        "scene": 0,
+        "scenes": [{"name": name, "nodes": [len(nodes) - 1]}],
+        "nodes": nodes, "meshes": gl_meshes, "materials": materials,
+        "accessors": accessors, "bufferViews": views, "buffers": [{"byteLength": len(blob)}],
+    }
+    js = _pad(json.dumps(doc, sort_keys=True, separators=(",", ":")).encode("utf-8"), b" ")
+    bn = _pad(bytes(blob), b"\0")
+    total = 12 + 8 + len(js) + 8 + len(bn)
+    data = (struct.pack("<4sII", b"glTF", 2, total) + struct.pack("<I4s", len(js), b"JSON") + js
+            + struct.pack("<I4s", len(bn), b"BIN\0") + bn)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_bytes(data)
+    return path
+
+
+def write_glb_script(glb: str | Path) -> Path:
+    """``<glb>.js``: the GLB's bytes as base64 in a classic script that files them in
+    ``window.PROPULSOR_GLB`` under the script's own URL (the gallery's viewer inserts the script and
+    reads the bytes from there)."""
+    glb = Path(glb)
+    b64 = base64.b64encode(glb.read_bytes()).decode("ascii")
+    out = glb.with_name(glb.name + ".js")
+    out.write_text("(window.PROPULSOR_GLB = window.PROPULSOR_GLB || {})[document.currentScript.src] =\n\""
+                   + b64 + "\";\n", encoding="ascii")
+    return out
+
+
+def placement_matrix(component) -> np.ndarray:
+    """The 4×4 placement (mm) of an assembly component as :func:`export.step.write_assembly_step`
+    reads it: (name, solid, (x, y, z), rot_z_rad), (name, solid, cq.Location), ..."""
+    from .step import _location
+
+    loc = _location(component[2] if len(component) > 2 else None, component[3] if len(component) > 3 else None)
+    t = loc.wrapped.Transformation()
+    m = np.eye(4)
+    for i in range(3):
+        for j in range(4):
+            m[i, j] = t.Value(i + 1, j + 1)
+    return m
