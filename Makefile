@@ -53,7 +53,7 @@ $(OUT)/.built: $(MANIFESTS)
 	@touch $@
 
 # the gallery of everything built in output/ (every build also rewrites it when its output is in place)
-$(OUT)/index.html: $(MANIFESTS) $(SOURCES) $(wildcard src/propulsor/export/web/*) $(STAMP)
+$(OUT)/index.html: $(OUT)/.built $(SOURCES) $(wildcard src/propulsor/export/web/*) $(STAMP)
 	$(BIN)/propulsor gallery $(OUT) -q
 
 gallery: $(STAMP)
