@@ -42,7 +42,7 @@ PALETTE: tuple = (
 _INDEX = {name: k for k, (name, _) in enumerate(PALETTE)}
 _PAL_BYTES = [c for _, rgb in PALETTE for c in rgb] + [0] * (768 - 3 * len(PALETTE))
 
-HEADER_PX = 18   # title band
+HEADER_PX = 18   # one title line
 LINE_PX = 14     # one caption line
 FONT_SIZE = 11
 
@@ -142,14 +142,36 @@ def _world(shape: Shape, k: int) -> list:
     return [np.asarray(q, float) @ M[:, :2].T + M[:, 2] for q in shape.loops]
 
 
+def _hull(points: np.ndarray) -> np.ndarray:
+    """The convex hull's vertices of a point set (all of them when too few or degenerate)."""
+    from scipy.spatial import ConvexHull, QhullError
+
+    if len(points) < 4:
+        return points
+    try:
+        return points[ConvexHull(points).vertices]
+    except QhullError:
+        return points
+
+
+def _static(shape: Shape) -> bool:
+    return shape.poses is None or bool(np.all(shape.poses == shape.poses[0]))
+
+
 def _bounds(anim: Animation) -> np.ndarray:
+    """World box holding every shape in every frame (and every marker)."""
     lo, hi = np.full(2, np.inf), np.full(2, -np.inf)
     for s in anim.shapes:
-        frames = range(anim.n_frames) if s.poses is not None else (0,)
-        for k in frames:
-            for q in _world(s, k):
-                if len(q):
-                    lo, hi = np.minimum(lo, q.min(axis=0)), np.maximum(hi, q.max(axis=0))
+        pts = [np.asarray(q, float) for q in s.loops if len(q)]
+        if not pts:
+            continue
+        H = _hull(np.vstack(pts))
+        if s.poses is None:
+            W = H
+        else:
+            M = np.asarray(s.poses, float)
+            W = (np.einsum("kij,pj->kpi", M[:, :, :2], H) + M[:, None, :, 2]).reshape(-1, 2)
+        lo, hi = np.minimum(lo, W.min(axis=0)), np.maximum(hi, W.max(axis=0))
     for fm in anim.marks:
         for m in fm:
             lo, hi = np.minimum(lo, m.xy), np.maximum(hi, m.xy)
@@ -199,11 +221,33 @@ def _font():
     return ImageFont.load_default(size=FONT_SIZE)
 
 
-def _layout(anim: Animation) -> tuple:
-    """(width, height, mechanism box, trace boxes, view)."""
+def _wrap(text: str, font, width: float) -> list:
+    """``text`` (already spelled) broken at spaces into lines at most ``width`` pixels long."""
+    words, lines, cur = text.split(" "), [], ""
+    for wd in words:
+        trial = wd if not cur else cur + " " + wd
+        if cur and font.getlength(trial) > width:
+            lines.append(cur)
+            cur = wd
+        else:
+            cur = trial
+    return lines + [cur]
+
+
+def _layout(anim: Animation, font) -> tuple:
+    """(width, height, header lines, mechanism box, trace boxes, view, captions wrapped per frame)."""
     W = int(anim.width_px)
     m = anim.margin_px
-    n_cap = max((len(c) for c in anim.captions), default=0)
+    head = _wrap(spell(anim.title), font, W - 2 * m)
+    captions = []
+    for caps in anim.captions:
+        wrapped = []
+        for line in caps:
+            red = line.startswith("!")
+            wrapped += [("!" if red else "") + q for q in _wrap(spell(line.lstrip("!")), font, W - 2 * m)]
+        captions.append(wrapped)
+    n_cap = max((len(c) for c in captions), default=0)
+    top = HEADER_PX * len(head)
     trace_w = int(round(0.36 * W)) if anim.traces else 0
     mech_w = W - trace_w - 2 * m
     b = _bounds(anim)
@@ -212,17 +256,17 @@ def _layout(anim: Animation) -> tuple:
     mech_h = int(round(mech_w * min(max(aspect, lo), hi)))
     if anim.traces:  # room for the traces: at least 110 px each
         mech_h = max(mech_h, 110 * len(anim.traces))
-    H = HEADER_PX + mech_h + n_cap * LINE_PX + 2 * m
+    H = top + mech_h + n_cap * LINE_PX + 2 * m
     H += H % 2
-    box = (m, HEADER_PX + m, mech_w, mech_h)
+    box = (m, top + m, mech_w, mech_h)
     view = _View.fit(b, box)
     tboxes = []
     if anim.traces:
         n = len(anim.traces)
         th = mech_h // n
         for j in range(n):
-            tboxes.append((W - trace_w + 44, HEADER_PX + m + j * th + 14, trace_w - 44 - m, th - 34))
-    return W, H, box, tboxes, view
+            tboxes.append((W - trace_w + 44, top + m + j * th + 14, trace_w - 44 - m, th - 34))
+    return W, H, head, box, tboxes, view, captions
 
 
 def _draw_trace(d, font, tr: Trace, box: tuple, k: int) -> None:
@@ -258,38 +302,47 @@ def _draw_trace(d, font, tr: Trace, box: tuple, k: int) -> None:
         d.text((bx, by + bh + 2), spell(tr.x_label), fill=_ci("grey"), font=font)
 
 
+def _draw_shape(d, s: Shape, loops: list, bg: int) -> None:
+    edge = _ci(s.colour)
+    if not s.closed:
+        for L in loops:
+            if len(L) >= 4:
+                d.line(L, fill=edge, width=s.width)
+        return
+    for j, L in enumerate(loops):
+        if len(L) < 6:
+            continue
+        fill = (_ci(s.colour + "_fill") if j == 0 else bg) if s.fill else None
+        d.polygon(L, fill=fill, outline=edge, width=s.width)
+
+
 def render_frames(anim: Animation) -> list:
     """The frames as palette images (PIL), in order."""
     from PIL import Image, ImageDraw
 
-    W, H, box, tboxes, view = _layout(anim)
     font = _font()
+    W, H, head, box, tboxes, view, captions = _layout(anim, font)
     base = Image.new("P", (W, H), _ci("bg"))
     base.putpalette(_PAL_BYTES)
     d0 = ImageDraw.Draw(base)
     d0.fontmode = "1"
-    d0.text((anim.margin_px, 3), spell(anim.title), fill=_ci("ink"), font=font)
+    for j, line in enumerate(head):
+        d0.text((anim.margin_px, 3 + j * HEADER_PX), line, fill=_ci("ink"), font=font)
     bg = _ci("bg")
-    # the still shapes' pixel polylines once
-    still = {id(s): [_flat(view.px_of(q)) for q in _world(s, 0)] for s in anim.shapes if s.poses is None}
+    # shapes that stand still: their pixel polylines once; those below every moving one drawn once
+    still = {id(s): [_flat(view.px_of(q)) for q in _world(s, 0)] for s in anim.shapes if _static(s)}
+    n_under = 0
+    while n_under < len(anim.shapes) and _static(anim.shapes[n_under]):
+        _draw_shape(d0, anim.shapes[n_under], still[id(anim.shapes[n_under])], bg)
+        n_under += 1
     frames = []
     for k in range(anim.n_frames):
         im = base.copy()
         d = ImageDraw.Draw(im)
         d.fontmode = "1"
-        for s in anim.shapes:
-            loops = still[id(s)] if s.poses is None else [_flat(view.px_of(q)) for q in _world(s, k)]
-            edge = _ci(s.colour)
-            if not s.closed:
-                for L in loops:
-                    if len(L) >= 4:
-                        d.line(L, fill=edge, width=s.width)
-                continue
-            for j, L in enumerate(loops):
-                if len(L) < 6:
-                    continue
-                fill = (_ci(s.colour + "_fill") if j == 0 else bg) if s.fill else None
-                d.polygon(L, fill=fill, outline=edge, width=s.width)
+        for s in anim.shapes[n_under:]:
+            loops = still[id(s)] if id(s) in still else [_flat(view.px_of(q)) for q in _world(s, k)]
+            _draw_shape(d, s, loops, bg)
         for mk in (anim.marks[k] if k < len(anim.marks) else ()):
             x, y = view.px_of(np.asarray([mk.xy], float))[0]
             r = mk.radius_px
@@ -301,26 +354,27 @@ def render_frames(anim: Animation) -> list:
                 text = spell(mk.text)
                 tw = d.textlength(text, font=font)
                 tx = x + r + 4 if x + r + 4 + tw < W - 2 else x - r - 4 - tw
-                ty = min(max(y - r - 14, HEADER_PX), H - 14)
+                ty = min(max(y - r - 14, box[1]), H - 14)
                 d.rectangle([tx - 1, ty, tx + tw + 1, ty + 12], fill=bg)
                 d.text((tx, ty), text, fill=c, font=font)
         for tr, tb in zip(anim.traces, tboxes):
             _draw_trace(d, font, tr, tb, k)
-        caps = anim.captions[k] if k < len(anim.captions) else ()
+        caps = captions[k] if k < len(captions) else ()
         y = box[1] + box[3] + anim.margin_px
         for line in caps:
             colour = "red" if line.startswith("!") else "ink"
-            d.text((anim.margin_px, y), spell(line.lstrip("!")), fill=_ci(colour), font=font)
+            d.text((anim.margin_px, y), line.lstrip("!"), fill=_ci(colour), font=font)
             y += LINE_PX
         frames.append(im)
     return frames
 
 
 def encode_gif(frames: list, frame_ms: int) -> bytes:
-    """GIF bytes of palette frames (fixed palette, looping, no optimisation pass: deterministic)."""
+    """GIF bytes of palette frames (fixed palette, looping): each frame after the first holds only the
+    box that changed, its unchanged pixels transparent (Pillow's ``optimize``; deterministic)."""
     buf = io.BytesIO()
     frames[0].save(buf, format="GIF", save_all=True, append_images=frames[1:], duration=int(frame_ms), loop=0,
-                   optimize=False)
+                   optimize=True)
     return buf.getvalue()
 
 

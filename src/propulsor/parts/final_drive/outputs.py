@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from ..pipeline import Pipeline, design_of
+from .animation import carrier_turn_animation
 from .design import FinalDriveDesign, body_offsets, design
 from .carrier import carrier, pin_sweep_results, start_pin_sweep
 from .strength import strength
@@ -103,4 +104,4 @@ def notes(dd: FinalDriveDesign, w, built: dict) -> None:
 
 build = Pipeline(lambda p, w: design_of(p, design),
                  (sheet_and_conditions, strength, outline_checks, start_sweep, start_pin_sweep, solids, carrier, sweep_results,
-                  pin_sweep_results, assembly_and_drawings, notes))
+                  pin_sweep_results, assembly_and_drawings, notes, carrier_turn_animation))
