@@ -18,6 +18,7 @@ from ...geometry import cam_outlines as co
 from ...laws.cam_design import CSV_COLUMNS
 from ...laws.shoe import shoe_table
 from ..pipeline import Pipeline, design_of
+from .animation import walking_animation
 from .design import Plan, plan
 from .params import CamMoverParams
 from .proofs import engineering_checks, motion_proof_checks, spot_checks_and_tables
@@ -281,4 +282,4 @@ def plots_and_notes(dd: Plan, w, built: dict) -> None:
 
 build = Pipeline(lambda p, w: design_of(p, plan),
                  (law_and_derived, engineering_checks, tables, drawings, solids_and_assembly, motion_proof_checks,
-                  spot_checks_and_tables, plots_and_notes))
+                  spot_checks_and_tables, plots_and_notes, walking_animation))
