@@ -38,6 +38,7 @@ PALETTE: tuple = (
     ("teal", (0, 118, 130)), ("teal_fill", (160, 215, 222)),
     ("olive", (125, 118, 0)), ("olive_fill", (232, 226, 150)),
     ("steel", (75, 78, 90)), ("steel_fill", (192, 194, 204)),
+    ("rubber", (25, 25, 25)), ("rubber_fill", (80, 80, 80)),
 )
 _INDEX = {name: k for k, (name, _) in enumerate(PALETTE)}
 _PAL_BYTES = [c for _, rgb in PALETTE for c in rgb] + [0] * (768 - 3 * len(PALETTE))

@@ -17,7 +17,7 @@ import math
 import numpy as np
 
 from ...checks.motion import rotation_matrices
-from ..media import chord_for_view, loops_of, publish
+from ..media import AnimationJob, chord_for_view, every, loops_of
 from .design import Plan
 from .proofs import leg_poses
 
@@ -31,7 +31,7 @@ CLEARANCES = (("roller_outer", "roller to the outer wall"), ("leg_carrier", "leg
               ("opposite", "opposite legs"))
 
 
-def walking_animation(dd: Plan, w, built: dict) -> None:
+def walking_animation(dd: Plan, w, built: dict) -> list:
     """``anim/walking.gif``: one carrier turn of the mover at the proof's steps."""
     from ...export.animation import Animation, Mark, Shape
 
@@ -88,11 +88,11 @@ def walking_animation(dd: Plan, w, built: dict) -> None:
              f"rollers (purple) and shoes (orange), ground at the hub height (black)")
     anim = Animation(title, shapes, n, captions, marks, width_px=560,
                      keep=(int(np.nonzero(idx == least_step)[0][0]),), aspect_range=(0.8, 1.0))
-    publish(w, "walking", anim,
+    return [AnimationJob("walking", anim,
             title=f"the mover over one carrier turn: carrier, {n_legs} legs sliding, rollers in the channel, shoes "
                   f"on the ground at the hub height",
-            poses=f"every {k}th of the motion proof's {N} carrier angles (grid through the step of least clearance)",
+            poses=f"{every(k)} of the motion proof's {N} carrier angles (grid through the step of least clearance)",
             least_clearance_mm=least, steps=idx,
             pose_columns={"phi_deg": [math.degrees(x) for x in phi[idx]], "hub_height_mm": hub[idx],
                           "least_clearance_mm": C.min(axis=0)[idx],
-                          "least_clearance_between": [names[int(pair_at[s])][1] for s in idx]})
+                          "least_clearance_between": [names[int(pair_at[s])][1] for s in idx]})]

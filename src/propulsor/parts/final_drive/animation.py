@@ -17,7 +17,7 @@ import numpy as np
 
 from ...checks.motion import rotation_matrices
 from ...geometry.profile import circle_loop
-from ..media import chord_for_view, loops_of, publish
+from ..media import AnimationJob, chord_for_view, every, loops_of
 from .carrier import PIN_D_MM, _pin_centres, carrier_layout
 from .design import FinalDriveDesign, ring_outer_d
 from .proofs import member_poses
@@ -32,7 +32,7 @@ SUN_TEETH_PER_FRAME = 0.4
 WIDTH_PX_FD = 540
 
 
-def carrier_turn_animation(dd: FinalDriveDesign, w, built: dict) -> None:
+def carrier_turn_animation(dd: FinalDriveDesign, w, built: dict) -> list:
     """``anim/carrier_turn.gif``: sun, planets, ring and carrier over one carrier turn."""
     from ...export.animation import Animation, Mark, Shape
 
@@ -80,9 +80,9 @@ def carrier_turn_animation(dd: FinalDriveDesign, w, built: dict) -> None:
              f"fixed ring (grey, z = {p.z_ring}), carrier with the planet pins (green)")
     anim = Animation(title, shapes, n, captions, marks, width_px=WIDTH_PX_FD, keep=(int(np.nonzero(idx == least_step)[0][0]),),
                      aspect_range=(0.8, 1.0))
-    publish(w, "carrier_turn", anim,
+    return [AnimationJob("carrier_turn", anim,
             title=f"sun, {p.n_planets} planets, fixed ring and carrier over one carrier turn (i_1H = {ratio:.4g})",
-            poses=f"every {k}th of the interference sweep's {N} carrier angles (grid through the step of least clearance)",
+            poses=f"{every(k)} of the interference sweep's {N} carrier angles (grid through the step of least clearance)",
             least_clearance_mm=least, steps=idx,
             pose_columns={"psi_deg": [math.degrees(x) for x in psi[idx]], "least_clearance_mm": C.min(axis=0)[idx],
-                          "mesh_of_least_clearance": [sweeps[int(mesh_at[s])].name for s in idx]})
+                          "mesh_of_least_clearance": [sweeps[int(mesh_at[s])].name for s in idx]})]

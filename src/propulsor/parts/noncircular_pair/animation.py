@@ -17,7 +17,7 @@ import math
 import numpy as np
 
 from ...checks.motion import rotation_matrices
-from ..media import chord_for_view, loops_of, publish
+from ..media import AnimationJob, chord_for_view, every, loops_of
 from .design import PairDesign
 
 __all__ = ["pair_animation"]
@@ -38,7 +38,7 @@ def _ratio_and_hub_speed(d, phi):
     return np.asarray(d.run_law.U(phi), float), np.asarray(d.run_law.hub_speed(phi), float)
 
 
-def pair_animation(dd: PairDesign, w, built: dict) -> None:
+def pair_animation(dd: PairDesign, w, built: dict) -> list:
     """``anim/pair.gif``: the pair over one driven turn at the proof's phases."""
     from ...export.animation import Animation, Mark, Shape, Trace
 
@@ -95,9 +95,9 @@ def pair_animation(dd: PairDesign, w, built: dict) -> None:
     anim = Animation(title, [axes, driven, driver], n, captions, marks, traces, width_px=WIDTH_PX_PAIR,
                      keep=keep, aspect_range=(0.62, 0.8))
     what = "one driven turn" + (f", the jammed phase of largest overlap added" if worst_jam is not None else "")
-    publish(w, "pair", anim,
+    return [AnimationJob("pair", anim,
             title=f"the pair turning through one driven turn ({d.method} teeth) with U and v/ω traced",
-            poses=f"every {k}th of the proof's {N} phases ({what}; grid through the phase of least backlash)",
+            poses=f"{every(k)} of the proof's {N} phases ({what}; grid through the phase of least backlash)",
             least_clearance_mm=None if least_k is None else float(bl[least_k]), least_what="least backlash",
             steps=idx, pose_columns={"phi_rad": pr.phi[idx], "phi_run_rad": phi_run[idx],
-                                     "theta_law_rad": pr.theta_law[idx]})
+                                     "theta_law_rad": pr.theta_law[idx]})]
