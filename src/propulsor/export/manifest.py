@@ -36,7 +36,7 @@ FORMATS = {
     ".txt": "text",
 }
 
-_PACKAGES = ("numpy", "scipy", "cadquery", "manifold3d", "trimesh", "ezdxf", "matplotlib")
+_PACKAGES = ("numpy", "scipy", "cadquery", "manifold3d", "trimesh", "ezdxf", "matplotlib", "pillow")
 
 
 def jsonable(v):

@@ -116,12 +116,15 @@ def _record(w, job: AnimationJob, info) -> dict:
     w.add_table(f"anim_{job.name}", cols, None)
     least = job.least_clearance_mm
     least = None if least is None or not math.isfinite(float(least)) else float(least)
+    poses = job.poses
+    if len(kept) < job.anim.n_frames:  # thinned to stay under MAX_BYTES
+        poses += f"; of these, {len(kept)} of {job.anim.n_frames} kept to stay under {MAX_BYTES / 1e6:g} MB"
     entry = {"path": rel, "title": job.title, "frames": len(kept), "width_px": info.width_px,
-             "height_px": info.height_px, "bytes": info.bytes, "frame_ms": info.frame_ms, "poses": job.poses,
+             "height_px": info.height_px, "bytes": info.bytes, "frame_ms": info.frame_ms, "poses": poses,
              "least_clearance_mm": least}
     w.add_media("animations", entry)
     w.add_note(f"Animation `{rel}`: {job.title} — {len(kept)} frames of {info.width_px} × {info.height_px} px, "
-               f"{info.frame_ms} ms each, {info.bytes / 1024:.0f} KiB; poses: {job.poses} (table "
+               f"{info.frame_ms} ms each, {info.bytes / 1024:.0f} KiB; poses: {poses} (table "
                f"tables/anim_{job.name}.csv)" + (f"; {job.least_what} {least:.4g} mm marked in red." if least is not None
                                                   else "."))
     return entry

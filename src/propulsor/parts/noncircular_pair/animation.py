@@ -3,10 +3,10 @@
 
 Poses: the proof's phases φ_k; the driven wheel (axis at the origin) at its running angle −φ_run
 (loaded flanks touching; at a jammed phase the position of least overlap), the driver (axis at
-(L, 0)) at +θ_law(φ_k), exactly as the proof placed them.  Every k-th phase with k ≡ 1 modulo the
-phases per tooth (the teeth seem to advance a quarter tooth per frame, in the turning sense, instead
-of standing still), the grid shifted onto the phase of least backlash.  Traces: U = dθ/dφ and
-v/ω = (dX01/dφ)/U of the law the teeth realise (seed 000 eq. 2, 3, 15: the blended law for
+(L, 0)) at +θ_law(φ_k), exactly as the proof placed them.  Every k-th phase, k/(phases per tooth) a
+whole number of teeth plus 0.2 … 0.4 (the teeth are seen to advance in the turning sense instead of
+standing still; :func:`_stride`), the grid shifted onto the phase of least backlash.  Traces:
+U = dθ/dφ and v/ω = (dX01/dφ)/U of the law the teeth realise (seed 000 eq. 2, 3, 15: the blended law for
 generated teeth, the staircase of ideal sector teeth for the papers' method), at the same phases.
 """
 
@@ -38,6 +38,16 @@ def _ratio_and_hub_speed(d, phi):
     return np.asarray(d.run_law.U(phi), float), np.asarray(d.run_law.hub_speed(phi), float)
 
 
+def _stride(n_phases: int, per_tooth: int) -> int:
+    """Every k-th phase: at most about 2 × TARGET_FRAMES frames, and k/per_tooth teeth per frame a whole
+    number plus 0.2 … 0.4 (the teeth are seen to advance in the turning sense, not to stand or run back)."""
+    k0 = max(1, math.ceil(n_phases / (2 * TARGET_FRAMES)))
+    for k in range(k0, k0 + per_tooth + 1):
+        if 0.2 - 1e-9 <= (k / per_tooth) % 1.0 <= 0.4 + 1e-9:
+            return k
+    return k0
+
+
 def pair_animation(dd: PairDesign, w, built: dict) -> list:
     """``anim/pair.gif``: the pair over one driven turn at the proof's phases."""
     from ...export.animation import Animation, Mark, Shape, Trace
@@ -50,7 +60,7 @@ def pair_animation(dd: PairDesign, w, built: dict) -> list:
     jam = ~np.isfinite(pr.phi_drive)
     worst_jam = int(np.argmax(np.where(jam, pr.least_overlap, -1.0))) if jam.any() else None
     ppt = max(1, round(N / d.z_H))  # proof phases per driven tooth
-    k = ppt + 1 if N // (ppt + 1) <= 2 * TARGET_FRAMES else ppt * max(1, round(N / (ppt * TARGET_FRAMES))) + 1
+    k = _stride(N, ppt)
     start = least_k % k if least_k is not None else 0
     idx = sorted(set(range(start, N, k)) | ({worst_jam} if worst_jam is not None else set()))
     idx = np.array(idx, dtype=int)
