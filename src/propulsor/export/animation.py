@@ -16,15 +16,14 @@ returned, so that the part can say which poses the file shows.
 from __future__ import annotations
 
 import io
-import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Sequence
 
 import numpy as np
 
 __all__ = ["PALETTE", "Shape", "Mark", "Trace", "Animation", "GifInfo", "render_frames", "encode_gif",
-           "write_animation", "pick_frames", "spell"]
+           "write_animation", "spell"]
 
 #: the fixed palette: name -> RGB; a body colour has an edge (its name) and a fill (``<name>_fill``)
 PALETTE: tuple = (
@@ -392,13 +391,3 @@ def write_animation(anim: Animation, path: str | Path, max_bytes: int = 2_000_00
     p.parent.mkdir(parents=True, exist_ok=True)
     p.write_bytes(data)
     return GifInfo(str(p), tuple(idx), frames[0].width, frames[0].height, len(data), int(anim.frame_ms))
-
-
-def pick_frames(n_poses: int, target: int, must=()) -> tuple[np.ndarray, int]:
-    """(indices, k): every k-th of ``n_poses`` poses, k chosen for at most about ``target`` frames,
-    the grid shifted so that the first of ``must`` lies on it; the other poses of ``must`` added."""
-    k = max(1, int(math.ceil(n_poses / max(1, target))))
-    must = [int(i) for i in must if 0 <= int(i) < n_poses]
-    start = must[0] % k if must else 0
-    idx = set(range(start, n_poses, k)) | set(must)
-    return np.array(sorted(idx), dtype=int), k

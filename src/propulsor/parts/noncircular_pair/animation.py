@@ -24,6 +24,10 @@ __all__ = ["pair_animation"]
 
 #: about this many frames (one driven turn)
 TARGET_FRAMES = 80
+#: samples of the traced curves over the turn (besides the proof's phases)
+TRACE_SAMPLES = 2881
+#: the tooth method as the titles say it
+_METHOD = {"generated": "generated teeth", "sectors": "the papers' sector teeth"}
 #: the pair and its two traces side by side
 WIDTH_PX_PAIR = 640
 
@@ -76,11 +80,15 @@ def pair_animation(dd: PairDesign, w, built: dict) -> list:
     axes = Shape((np.array([[-0.06 * r_dvn, 0.0], [mount + 0.06 * r_drv, 0.0]]),), "grey", None, closed=False)
     U, hub = _ratio_and_hub_speed(d, pr.phi)
     deg = np.degrees(pr.phi)
-    U_ref = np.asarray(d.law.U(pr.phi), float)
-    hub_ref = np.asarray(d.law.hub_speed(pr.phi), float)
-    traces = [Trace("U = dθ/dφ", deg, U, idx, "orange", "φ, deg (one driven turn)", "{:.4f}",
-                    ref=(deg, U_ref)),
-              Trace("v/ω, mm/rad", deg, hub, idx, "blue", "φ, deg (grey: exact law)", "{:.2f}", ref=(deg, hub_ref))]
+    # the curves drawn densely (the proof's phases among them), the marker at the frame's proof phase
+    dense = np.union1d(pr.phi, np.linspace(0.0, 2.0 * math.pi, TRACE_SAMPLES))
+    at = np.searchsorted(dense, pr.phi[idx])
+    U_d, hub_d = _ratio_and_hub_speed(d, dense)
+    dd_deg = np.degrees(dense)
+    traces = [Trace("U = dθ/dφ", dd_deg, U_d, at, "orange", "φ, deg (grey: exact law)", "{:.4f}",
+                    ref=(dd_deg, np.asarray(d.law.U(dense), float))),
+              Trace("v/ω, mm/rad", dd_deg, hub_d, at, "blue", "φ, deg (grey: exact law)", "{:.2f}",
+                    ref=(dd_deg, np.asarray(d.law.hub_speed(dense), float)))]
     least_txt = (f"least backlash {bl[least_k]:.4f} mm at φ = {deg[least_k]:.2f}°" if least_k is not None
                  else "no free phase: every phase jams")
     captions, marks = [], []
@@ -99,14 +107,14 @@ def pair_animation(dd: PairDesign, w, built: dict) -> list:
                 line2 = "!" + line2
         captions.append([line1, line2])
         marks.append(mk)
-    title = (f"Non-circular pair, {d.method} teeth: driven wheel (blue, z_H = {d.z_H}), driver (orange, z = {d.z}, "
+    title = (f"Non-circular pair, {_METHOD[d.method]}: driven wheel (blue, z_H = {d.z_H}), driver (orange, z = {d.z}, "
              f"{d.law.n} turns per driven turn)")
     keep = tuple(j for j, kk in enumerate(idx) if kk in (least_k, worst_jam))
     anim = Animation(title, [axes, driven, driver], n, captions, marks, traces, width_px=WIDTH_PX_PAIR,
                      keep=keep, aspect_range=(0.62, 0.8))
     what = "one driven turn" + (f", the jammed phase of largest overlap added" if worst_jam is not None else "")
     return [AnimationJob("pair", anim,
-            title=f"the pair turning through one driven turn ({d.method} teeth) with U and v/ω traced",
+            title=f"the pair turning through one driven turn ({_METHOD[d.method]}) with U and v/ω traced",
             poses=f"{every(k)} of the proof's {N} phases ({what}; grid through the phase of least backlash)",
             least_clearance_mm=None if least_k is None else float(bl[least_k]), least_what="least backlash",
             steps=idx, pose_columns={"phi_rad": pr.phi[idx], "phi_run_rad": phi_run[idx],
