@@ -71,7 +71,8 @@ def carrier_turn_animation(dd: FinalDriveDesign, w, built: dict) -> list:
         pt = 0.5 * (r.point_a[s] + r.point_b[s])
         here = float(C[m, s])
         is_least = s == least_step
-        marks.append([Mark((float(pt[0]), float(pt[1])), f"{'LEAST ' if is_least else ''}{here:.4f} mm",
+        what = f"{here:.4f} mm" if here >= 0 else f"penetration {-here:.4f} mm"  # the sweep's sign
+        marks.append([Mark((float(pt[0]), float(pt[1])), f"{'LEAST ' if is_least else ''}{what}",
                            radius_px=8 if is_least else 5)])
         line2 = (f"least clearance over the turn {least:.4f} mm ({least_name}, ψ = {math.degrees(psi[least_step]):.1f}°)")
         captions.append([f"carrier ψ = {math.degrees(psi[s]):.1f}° (sweep step {s + 1} of {N}); least clearance now "
