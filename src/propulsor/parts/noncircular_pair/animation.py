@@ -115,7 +115,8 @@ def pair_animation(dd: PairDesign, w, built: dict) -> list:
     what = "one driven turn" + (f", the jammed phase of largest overlap added" if worst_jam is not None else "")
     return [AnimationJob("pair", anim,
             title=f"the pair turning through one driven turn ({_METHOD[d.method]}) with U and v/ω traced",
-            poses=f"{every(k)} of the proof's {N} phases ({what}; grid through the phase of least backlash)",
+            poses=f"{every(k)} of the proof's {N} phases ({what}"
+                  + ("; grid through the phase of least backlash)" if least_k is not None else ")"),
             least_clearance_mm=None if least_k is None else float(bl[least_k]), least_what="least backlash",
             steps=idx, pose_columns={"phi_rad": pr.phi[idx], "phi_run_rad": phi_run[idx],
                                      "theta_law_rad": pr.theta_law[idx]})]
