@@ -43,3 +43,60 @@ def slices_cleanly(tmp_path):
             assert r.all_manifold and off == [], (plate, r.objects)
 
     return assert_slices
+
+
+@pytest.fixture(scope="session")
+def assert_animations():
+    """assert_animations(folder, manifest, proof_tables): every GIF the manifest lists under
+    ``media.animations`` exists with the listed bytes (<= 2 MB), decodes with Pillow with the listed
+    frame count, size and frame duration; no frame is blank (more than one colour) and consecutive
+    frames differ (it moves); its frame table ``tables/anim_<name>.csv`` has a row per frame, and the
+    pose of each frame is the proof's pose at the listed proof step: ``proof_tables`` maps a GIF's
+    name to (proof table name, {frame-table column: proof-table column}).  Returns the entries."""
+    import csv
+
+    import numpy as np
+    from PIL import Image
+
+    def table(folder, name):
+        with open(folder / "tables" / f"{name}.csv", newline="") as fh:
+            rows = list(csv.DictReader(fh))
+        return rows
+
+    def check(folder, manifest, proof_tables=None):
+        entries = manifest.get("media", {}).get("animations", [])
+        assert entries, "the build lists no animation"
+        listed = {f["path"]: f for f in manifest["files"]}
+        for e in entries:
+            path = folder / e["path"]
+            name = path.stem
+            assert e["path"] == f"anim/{name}.gif" and path.is_file(), e["path"]
+            assert path.stat().st_size == e["bytes"] == listed[e["path"]]["bytes"] and e["bytes"] <= 2_000_000
+            assert e["title"] and e["poses"] and (e["least_clearance_mm"] is None or e["least_clearance_mm"] > 0)
+            with Image.open(path) as im:
+                assert im.format == "GIF" and im.size == (e["width_px"], e["height_px"])
+                assert 480 <= e["width_px"] <= 640
+                assert im.n_frames == e["frames"] >= 2
+                prev = None
+                for k in range(im.n_frames):
+                    im.seek(k)
+                    assert im.info.get("duration") == e["frame_ms"]
+                    rgb = im.convert("RGB")
+                    colours = rgb.getcolors(maxcolors=1 << 16)
+                    assert colours is None or len(colours) > 1, f"{name}: frame {k} is blank"
+                    data = rgb.tobytes()
+                    assert data != prev, f"{name}: frame {k} repeats frame {k - 1}"
+                    prev = data
+            frames = table(folder, f"anim_{name}")
+            assert [int(r["frame"]) for r in frames] == list(range(e["frames"]))
+            if proof_tables and name in proof_tables:
+                pname, cols = proof_tables[name]
+                proof = table(folder, pname)
+                for r in frames:
+                    row = proof[int(r["proof_step"])]
+                    for mine, theirs in cols.items():
+                        assert np.isclose(float(r[mine]), float(row[theirs]), rtol=1e-12, atol=1e-12), \
+                            (name, r["frame"], mine, r[mine], row[theirs])
+        return entries
+
+    return check

@@ -32,6 +32,19 @@ PART = ROOT / "parts" / "road_wheel.toml"
 PHONE_PX, DESKTOP_PX = 390, 1366
 
 
+@pytest.fixture(scope="module")
+def out(tmp_path_factory):
+    """The road wheel built as `make` builds it: into ./output/road_wheel, beside the gallery."""
+    cwd = tmp_path_factory.mktemp("gallery")
+    here = os.getcwd()
+    os.chdir(cwd)
+    try:
+        assert main(["build", str(PART), "-q"]) == 0
+    finally:
+        os.chdir(here)
+    return cwd / "output" / PART.stem
+
+
 def _stl_bounds(folder: Path, names) -> np.ndarray:
     pts = np.vstack([trimesh.load(folder / f"{n}.stl", process=False).bounds for n in names])
     return np.array([pts.min(axis=0), pts.max(axis=0)])

@@ -18,8 +18,8 @@ PACKAGE = "propulsor"
 
 #: the CAD kernel (cadquery wraps OCP, i.e. OCCT) and the boolean kernel
 KERNEL = {"cadquery", "OCP", "manifold3d"}
-#: everything that is not math: kernels, meshes, DXF, plots
-CAD_MESH_DXF_PLOT = KERNEL | {"trimesh", "ezdxf", "matplotlib"}
+#: everything that is not math: kernels, meshes, DXF, plots and pictures (PIL: animation frames)
+CAD_MESH_DXF_PLOT = KERNEL | {"trimesh", "ezdxf", "matplotlib", "PIL"}
 
 #: layers from the bottom up; a module may import its own layer and the layers of lower rank only
 #: (so the layers cannot form a cycle).  errors / policy / check (the one check result type) / the package root are the ground floor.

@@ -329,3 +329,16 @@ def test_damper_heat_table_plot_and_values(out, manifest):
     steady = [float(x["steady_rise_K"]) for x in rows]
     assert d["damper_heat_max_steady_rise_K"] == pytest.approx(max(steady))
     assert "Damper heat (seed 004 ch. 6)" in (out / "report.md").read_text()
+
+
+def test_travel_animation_at_the_sweeps_poses(out, manifest, assert_animations):
+    """Up and back down the travel at the sweep's angles (and the neighbours' angles of the sweep); the least
+    clearance marked is the sweep's least against the hull and the neighbours."""
+    cols = {"beta_deg": "beta_deg", "front_neighbour_beta_deg": "front_neighbour_beta_deg",
+            "rear_neighbour_beta_deg": "rear_neighbour_beta_deg"}
+    (e,) = assert_animations(out, manifest, {"travel": ("travel_sweep", cols)})
+    d = manifest["derived"]
+    assert e["least_clearance_mm"] == pytest.approx(min(d[f"min_clearance_{k}_mm"] for k in ("hull", "front", "rear")))
+    beta = [float(r["beta_deg"]) for r in table(out, "anim_travel")]
+    assert beta[0] == pytest.approx(d["beta0_deg"]) and max(beta) == pytest.approx(d["beta_m_deg"])
+    assert beta[-1] < beta[-2]  # and back down

@@ -352,3 +352,19 @@ def test_failing_limit_exits_1_and_writes_nothing(tmp_path, capsys):
     assert main(["build", str(f), "--out", str(out), "-q"]) == 1
     assert "law: pressure angle (eq. 17)" in capsys.readouterr().err
     assert not out.exists()
+
+
+def test_walking_animation_at_the_proofs_poses(built, assert_animations):
+    """The frames are carrier angles of the motion proof with the hub height it found there; the least
+    clearance marked is the proof's least over the roller's outer wall, the slides, the carrier and the legs."""
+    _, out, man = built
+    (e,) = assert_animations(out, man, {"walking": ("roller_sweep", {"phi_deg": "phi_deg"})})
+    _, rows = read_csv(out / "tables" / "anim_walking.csv")
+    _, hub = read_csv(out / "tables" / "hub_height.csv")
+    for r in rows:  # frame, proof_step, phi_deg, hub_height_mm, ...
+        assert float(r[3]) == pytest.approx(float(hub[int(r[1])][3]), abs=1e-9)
+    d = man["derived"]
+    named = min(d["roller_clearance_outer_mm"][0], d["leg_slide_clearance_mm"][0], d["shoe_carrier_clearance_min_mm"],
+                d["neighbour_clearance_min_mm"])
+    assert 0 < e["least_clearance_mm"] <= named + 1e-12
+    assert e["least_clearance_mm"] == pytest.approx(min(float(r[4]) for r in rows), abs=1e-12)

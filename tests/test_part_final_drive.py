@@ -282,3 +282,14 @@ def test_carrier_solid_measured_and_its_pins_clear_the_planet_bores(built):
         # pin Ø55 in the planet bore Ø110: the bearing's radial space at every step
         assert d[f"carrier_pins_planet{k}_min_clearance_mm"] == pytest.approx(27.5, abs=2e-3)
     assert "180 steps" in (built / "report.md").read_text()
+
+
+def test_carrier_turn_animation_at_the_sweeps_poses(built, assert_animations):
+    """The GIF's frames are carrier angles of the interference sweep; the least clearance it marks is the
+    sweep's least over every mesh."""
+    m = _manifest(built)
+    (e,) = assert_animations(built, m, {"carrier_turn": ("carrier_sweep", {"psi_deg": "psi_deg"})})
+    meshes = [k for k in m["derived"] if k.startswith("mesh_") and k.endswith("_min_clearance_mm")]
+    assert len(meshes) == 6
+    assert e["least_clearance_mm"] == pytest.approx(min(m["derived"][k] for k in meshes), abs=1e-12)
+    assert e["frames"] >= 90  # a carrier turn in at most 4 degrees per frame

@@ -517,3 +517,25 @@ def test_shaper_and_rack_generate_the_same_involute_on_a_circle():
                     expect = s_tooth / (2 * r) + inv(a) - (np.tan(np.arccos(rb / rr)) - np.arccos(rb / rr))
                     got = np.abs(np.angle(np.exp(1j * (ang - centre))))
                     assert np.max(np.abs(got - expect) * rr) < 1e-7, (role, x, tools[0].kind)
+
+
+@pytest.mark.parametrize("which", ["seed002", "table002"])
+def test_pair_animation_at_the_proofs_phases(which, request, assert_animations):
+    """One driven turn at the full-cycle proof's phases: the driven wheel at the running angle the proof
+    found (φ + te_run), the driver at θ_law; the least backlash marked is the proof's."""
+    out = request.getfixturevalue(which)
+    m = _manifest(out)
+    cols = {"phi_rad": "phi_rad", "theta_law_rad": "theta_law_rad"}
+    (e,) = assert_animations(out, m, {"pair": ("transmission", cols)})
+    head, rows = _csv(out / "tables" / "anim_pair.csv")
+    th, tr = _csv(out / "tables" / "transmission.csv")
+    for r in rows:
+        f, t = dict(zip(head, r)), dict(zip(th, tr[int(r[1])]))
+        assert float(f["phi_run_rad"]) == pytest.approx(float(t["phi_rad"]) + float(t["te_run_rad"]), abs=1e-12)
+    steps = [int(r[1]) for r in rows]
+    assert steps[-1] - steps[0] >= 0.95 * len(tr)  # the whole driven turn
+    least = float(m["derived"]["backlash_min_mm"])  # 'nan' where every phase jams (the papers' teeth)
+    if math.isnan(least):
+        assert e["least_clearance_mm"] is None and m["derived"]["jam_phases"] == len(tr)
+    else:
+        assert e["least_clearance_mm"] == pytest.approx(least, abs=1e-12)

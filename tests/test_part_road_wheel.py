@@ -165,3 +165,13 @@ def test_build_is_deterministic(out, tmp_path):
     a = {f["path"]: f["sha256"] for f in json.loads((out / "manifest.json").read_text())["files"]}
     b = {f["path"]: f["sha256"] for f in json.loads((again / "manifest.json").read_text())["files"]}
     assert a == b
+
+
+def test_rolling_animation(out, manifest, assert_animations):
+    """One revolution on the ground (no mechanism, no proof poses); the contact chord is Kozlov's l."""
+    (e,) = assert_animations(out, manifest)
+    assert e["path"] == "anim/rolling.gif" and e["frames"] == 36 and e["least_clearance_mm"] is None
+    with open(out / "tables" / "anim_rolling.csv", newline="") as fh:
+        angles = [float(r["wheel_angle_deg"]) for r in csv.DictReader(fh)]
+    assert np.allclose(angles, np.arange(36) * 10.0)
+    assert "anim/rolling.gif" in (out / "report.md").read_text()

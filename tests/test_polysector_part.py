@@ -198,3 +198,18 @@ def test_bad_input_exit_2_one_line_nothing_written(tmp_path, capsys, changes, pa
     assert code == 2, lines
     assert len(lines) == 1 and param in lines[0] and words in lines[0], lines
     assert sorted(q.name for q in tmp_path.iterdir()) == ["bad.toml"]  # nothing written beside it
+
+
+def test_position_animations_at_the_proofs_poses(built, assert_animations):
+    """One GIF per position over one sector period; the frames are the proof's (φ, θ) and the least
+    backlash marked is the least of that position's proof."""
+    m = _manifest(built)
+    tables = {f"position_{k}": (f"transmission_{k}", {"phi_rad": "phi_rad", "theta_rad": "theta_rad"}) for k in range(1, 5)}
+    entries = assert_animations(built, m, tables)
+    assert [e["path"] for e in entries] == [f"anim/position_{k}.gif" for k in range(1, 5)]
+    for k, e in enumerate(entries, 1):
+        with open(built / "tables" / f"anim_position_{k}.csv", newline="") as fh:
+            rows = list(csv.DictReader(fh))
+        pos = m["derived"]["positions"][k - 1]
+        assert len(rows) == pos["proof_steps_per_period"] == e["frames"]  # every step of the period
+        assert e["least_clearance_mm"] == pytest.approx(min(float(r["backlash_mm"]) for r in rows), abs=1e-12)

@@ -244,9 +244,17 @@ def test_concurrent_builds_take_turns(tmp_path, wheel):
     manifest = json.loads((out / "manifest.json").read_text())
     files = {p.relative_to(out).as_posix() for p in out.rglob("*") if p.is_file()}
     assert files == {e["path"] for e in manifest["files"]} | {"manifest.json"}
-    # beside the output only the gallery of the folder (rewritten by each build, under its own lock)
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["index.html", "out", "wheel.toml"]
-    assert (tmp_path / "index.html").read_text().count("<section class=\"part\"") == 1
+    # nothing beside an --out that is not in the default output folder (nor in a gallery folder)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out", "wheel.toml"]
+
+
+def test_concurrent_builds_in_output_share_one_gallery(tmp_path, wheel):
+    """Two builds into ./output/a and ./output/b at once: the gallery beside them (rewritten by each
+    build under its own lock) shows both."""
+    procs = [_popen("build", str(wheel), "--out", f"output/{n}", "-q", cwd=tmp_path) for n in "ab"]
+    assert [p.wait(timeout=600) for p in procs] == [0, 0]
+    page = (tmp_path / "output" / "index.html").read_text()
+    assert page.count("<section class=\"part\"") == 2
 
 
 # -- no orphans, no debris -------------------------------------------------------------------------

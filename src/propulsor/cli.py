@@ -140,7 +140,8 @@ def _into_output(args, out: Path, keep: tuple[Path, ...], produce, progress, dep
                   f"(use --keep-failed to keep the outputs)", file=sys.stderr)
             return EXIT_CHECK_FAILED
         of.replace(tmp, out)
-        _regenerate_gallery(out.parent, progress)
+        if _gallery_folder(out.parent):
+            _regenerate_gallery(out.parent, progress)
         if failures:
             print(f"propulsor: {what}: built into {out} but {len(failures)} check(s) failed", file=sys.stderr)
             return EXIT_CHECK_FAILED
@@ -157,6 +158,18 @@ def _into_output(args, out: Path, keep: tuple[Path, ...], produce, progress, dep
             shutil.rmtree(tmp, ignore_errors=True)
         close_in_workers(None)
         lock.release()
+
+
+def _gallery_folder(folder: Path) -> bool:
+    """Whether a build into a sub-folder of `folder` rewrites ``folder/index.html``: the default
+    output folder (./output), or a folder whose gallery propulsor already wrote (``propulsor gallery
+    DIR``).  Elsewhere nothing is written beside the output."""
+    from .export.gallery import INDEX, is_ours
+
+    try:
+        return folder.resolve() == Path("output").resolve() or is_ours(folder / INDEX)
+    except OSError:
+        return False
 
 
 def _regenerate_gallery(folder: Path, progress) -> Path | None:

@@ -284,6 +284,11 @@ def write_gallery(folder: str | Path) -> Path | None:
     return write_atomically(target, render_gallery(folder))
 
 
+def is_ours(path: Path) -> bool:
+    """A regular file (not a link) propulsor wrote as a gallery page."""
+    return path.is_file() and not path.is_symlink() and _ours(path)
+
+
 def _ours(path: Path) -> bool:
     try:
         with open(path, encoding="utf-8", errors="replace") as fh:

@@ -27,6 +27,7 @@ FORMATS = {
     ".dxf": "DXF",
     ".csv": "CSV",
     ".png": "PNG",
+    ".gif": "GIF",
     ".svg": "SVG",
     ".pdf": "PDF",
     ".md": "Markdown",

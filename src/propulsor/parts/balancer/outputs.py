@@ -11,6 +11,8 @@ from ...check import Check
 from ...parallel import start as start_in_fork
 from .damper import damper_heat_results, start_damper_heat
 from ..pipeline import Pipeline, design_of
+from ..media import pipeline_steps
+from .animation import travel_animation
 from .design import RHO_STEEL_KG_MM3, THESIS, BalancerModel, resolve
 from .plots import characteristic_plot, side_view_plot
 from .proofs import socket_ear_pad_checks, strength_proof, sweep_job, travel_sweep_checks
@@ -249,6 +251,8 @@ def notes(m: BalancerModel, w, built: dict) -> None:
         f"the pad face at β_m: face centre ({pc[0]:.1f}, {pc[1]:.1f}) mm, normal ({nrm[0]:.3f}, {nrm[1]:.3f}) (world).")
 
 
+start_animation, collect_animation = pipeline_steps(travel_animation)
+
 build = Pipeline(lambda p, w: design_of(p, resolve, getattr(w, "source", None)),
                  (suspension_outputs, strength_proof, socket_ear_pad_checks, solids_and_sweep_start,
-                  start_damper_heat, travel_sweep_checks, damper_heat_results, notes))
+                  start_damper_heat, travel_sweep_checks, start_animation, damper_heat_results, notes, collect_animation))

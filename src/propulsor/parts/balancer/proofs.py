@@ -319,7 +319,7 @@ def travel_sweep_checks(m: BalancerModel, w, built: dict) -> None:
 
     p, t = m.p, m.tor
     D = w.derived
-    sw = built.pop("pending_sweep").result()
+    sw = built["sweep"] = built.pop("pending_sweep").result()
     w.progress("travel sweep done")
     betas = sw["beta"]
     cols = {"beta_deg": np.degrees(betas), "f_mm": t.f(betas), "P_N": t.P(betas),

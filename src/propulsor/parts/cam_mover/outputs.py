@@ -18,6 +18,8 @@ from ...geometry import cam_outlines as co
 from ...laws.cam_design import CSV_COLUMNS
 from ...laws.shoe import shoe_table
 from ..pipeline import Pipeline, design_of
+from ..media import pipeline_steps
+from .animation import walking_animation
 from .design import Plan, plan
 from .params import CamMoverParams
 from .proofs import engineering_checks, motion_proof_checks, spot_checks_and_tables
@@ -279,6 +281,8 @@ def plots_and_notes(dd: Plan, w, built: dict) -> None:
     w.progress(f"cam_mover: built in {time.perf_counter() - built['t_start']:.1f} s")  # timings stay out of the files
 
 
+start_animation, collect_animation = pipeline_steps(walking_animation)
+
 build = Pipeline(lambda p, w: design_of(p, plan),
                  (law_and_derived, engineering_checks, tables, drawings, solids_and_assembly, motion_proof_checks,
-                  spot_checks_and_tables, plots_and_notes))
+                  start_animation, spot_checks_and_tables, plots_and_notes, collect_animation))

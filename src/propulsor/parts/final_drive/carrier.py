@@ -117,7 +117,7 @@ def carrier(dd: FinalDriveDesign, w, built: dict) -> None:
 
 def pin_sweep_results(dd: FinalDriveDesign, w, built: dict) -> None:
     """Checks and table of the pin sweep."""
-    psi, res = built.pop("pending_pin_sweep").result()
+    psi, res = built["pin_sweeps"] = built.pop("pending_pin_sweep").result()
     for r in res:
         w.add_checks(r.checks())
         w.derived[f"{r.name}_min_clearance_mm"] = float(r.clearance.min())

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 from ..pipeline import Pipeline, design_of
+from ..media import pipeline_steps
+from .animation import carrier_turn_animation
 from .design import FinalDriveDesign, body_offsets, design
 from .carrier import carrier, pin_sweep_results, start_pin_sweep
 from .strength import strength
@@ -102,6 +104,8 @@ def notes(dd: FinalDriveDesign, w, built: dict) -> None:
                f"({worst.name}); tooth thinning E_sn = {p.tooth_thinning_mm} mm per gear.")
 
 
+start_animation, collect_animation = pipeline_steps(carrier_turn_animation)
+
 build = Pipeline(lambda p, w: design_of(p, design),
-                 (sheet_and_conditions, strength, traction, outline_checks, start_sweep, start_pin_sweep, solids, carrier, sweep_results,
-                  pin_sweep_results, assembly_and_drawings, notes))
+                  (sheet_and_conditions, strength, traction, outline_checks, start_sweep, start_pin_sweep, solids, carrier,
+                   sweep_results, pin_sweep_results, start_animation, assembly_and_drawings, notes, collect_animation))

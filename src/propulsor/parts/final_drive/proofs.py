@@ -16,7 +16,7 @@ from ...parallel import start as start_in_fork
 from .design import FinalDriveDesign, body_offsets, ring_outer_d
 from .params import FinalDriveParams
 
-__all__ = ["MeshSweep", "carrier_sweep", "sheet_and_conditions", "outline_checks", "start_sweep", "sweep_results",
+__all__ = ["MeshSweep", "member_poses", "carrier_sweep", "sheet_and_conditions", "outline_checks", "start_sweep", "sweep_results",
            "dms"]
 
 
@@ -38,6 +38,24 @@ class MeshSweep:
     result: object
 
 
+def member_poses(p: FinalDriveParams, ps, psi) -> tuple:
+    """(sun, ring, [planet k]) world poses ((n, 2, 3) matrices of the outlines' body frames) at carrier
+    angles psi: sun at i_1H·ψ, planet k at its orbit position and absolute rotation, ring fixed
+    (seed 004 eq. 32; phasing in :mod:`propulsor.gears.planetary_kinematics`)."""
+    from ...checks.motion import rotation_matrices
+    from ...gears.planetary_kinematics import PlanetaryKinematics
+
+    psi = np.asarray(psi, float)
+    n = len(psi)
+    kin = PlanetaryKinematics(p.z_sun, p.z_planet, p.z_ring, p.n_planets, ps.a_w)
+    off_ext, off_ring = body_offsets(p.z_ring)
+    M_sun = rotation_matrices(kin.sun_angle(psi) + off_ext, np.zeros((n, 2)))
+    M_ring = rotation_matrices(np.full(n, kin.ring_rotation + off_ring), np.zeros((n, 2)))
+    M_pl = [rotation_matrices(kin.planet_angle(psi, k) + off_ext, kin.planet_centre(psi, k))
+            for k in range(p.n_planets)]
+    return M_sun, M_ring, M_pl
+
+
 def carrier_sweep(p: FinalDriveParams, ps, outlines, steps_per_deg: float | None = None) -> list[MeshSweep]:
     """Overlap area and least clearance of every mesh (sun–planet k, planet k–ring) over one carrier turn.
 
@@ -45,14 +63,11 @@ def carrier_sweep(p: FinalDriveParams, ps, outlines, steps_per_deg: float | None
     absolute rotation, ring fixed (seed 004 eq. 32; phasing in
     :mod:`propulsor.gears.planetary_kinematics`).  manifold3d boolean per step.
     """
-    from ...checks.motion import outline, rotation_matrices, sweep_pair_windowed
-    from ...gears.planetary_kinematics import PlanetaryKinematics
+    from ...checks.motion import outline, sweep_pair_windowed
 
     spd = steps_per_deg or p.sweep_steps_per_deg
     n = int(math.ceil(360.0 * spd))
     psi = np.arange(n) * (2.0 * math.pi / n)
-    kin = PlanetaryKinematics(p.z_sun, p.z_planet, p.z_ring, p.n_planets, ps.a_w)
-    off_ext, off_ring = body_offsets(p.z_ring)
     sun_o, planet_o, ring_o = outlines
     # outlines within 1 µm of the true curves; long edges split for the tree search (module-scaled)
     tol, seg = policy.PLANETARY_SWEEP_CHORD_TOL_MM, max(0.1, 0.05 * p.module_mm)
@@ -60,11 +75,10 @@ def carrier_sweep(p: FinalDriveParams, ps, outlines, steps_per_deg: float | None
     A_pl = outline(planet_o.profile, tol, seg)
     A_ring = outline(ring_o.profile, tol, seg)
 
-    M_sun = rotation_matrices(kin.sun_angle(psi) + off_ext, np.zeros((n, 2)))
-    M_ring = rotation_matrices(np.full(n, kin.ring_rotation + off_ring), np.zeros((n, 2)))
+    M_sun, M_ring, M_planets = member_poses(p, ps, psi)
     out = []
     for k in range(p.n_planets):
-        M_pl = rotation_matrices(kin.planet_angle(psi, k) + off_ext, kin.planet_centre(psi, k))
+        M_pl = M_planets[k]
         for tag, A, MA in (("sun", A_sun, M_sun), ("ring", A_ring, M_ring)):
             name = f"mesh_{tag}_planet{k + 1}" if tag == "sun" else f"mesh_planet{k + 1}_ring"
             r = sweep_pair_windowed(A, MA, A_pl, M_pl, reach=p.module_mm, chord_tol=tol, max_segment=seg,

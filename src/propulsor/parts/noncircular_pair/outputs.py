@@ -19,6 +19,8 @@ from ...gears.sectors import (
 )
 from ...laws.walking import LEG_PERIOD
 from ..pipeline import Pipeline, design_of
+from ..media import pipeline_steps
+from .animation import pair_animation
 from .design import Design, PairDesign, mounting, pair_design, sector_design_table
 from .params import NoncircularPairParams
 from .proofs import checks_generated, checks_sectors, proofs
@@ -426,7 +428,9 @@ def notes(dd: PairDesign, w, built: dict) -> None:
 
 
 #: the output steps after the proofs, in the order the report and the manifest list what they add
-OUTPUT_STEPS = (assembly_and_dxf, tables, plots, checks_and_derived, notes)
+start_animation, collect_animation = pipeline_steps(pair_animation)
+#: the output steps after the proofs (the animation drawn beside them)
+OUTPUT_STEPS = (start_animation, assembly_and_dxf, tables, plots, checks_and_derived, notes, collect_animation)
 
 
 def write_outputs(p: NoncircularPairParams, w, d: Design, profiles, pr, other=None, pr_other=None,

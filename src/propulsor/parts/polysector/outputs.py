@@ -5,6 +5,8 @@ from __future__ import annotations
 import math
 
 from ..pipeline import Pipeline, design_of
+from ..media import pipeline_steps
+from .animation import position_animations
 from .design import PolysectorDesign, design
 from .proofs import dynamics_step, efficiency_step, position_error_step, proof_results, start_proofs, synthesis_step
 
@@ -66,6 +68,8 @@ def assemblies_and_drawings(dd: PolysectorDesign, w, built: dict) -> None:
     w.plots.append("plots/layout.png")
 
 
+start_animations, collect_animations = pipeline_steps(position_animations)
+
 build = Pipeline(lambda p, w: design_of(p, design),
                  (synthesis_step, start_proofs, solids, position_error_step, assemblies_and_drawings, proof_results,
-                  efficiency_step, dynamics_step))
+                  start_animations, efficiency_step, dynamics_step, collect_animations))

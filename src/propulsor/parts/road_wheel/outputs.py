@@ -6,6 +6,8 @@ import math
 
 from ...solids.road_wheel import WheelModel, mass_properties, wheel_solids
 from ..pipeline import Pipeline, design_of
+from ..media import pipeline_steps
+from .animation import rolling_animation
 from .design import RoadWheelDesign, design
 from .proofs import RESONANCE_SPEEDS_MPS, kozlov_proof
 
@@ -79,4 +81,7 @@ def notes(dd: RoadWheelDesign, w, built: dict) -> None:
         f"estimate ignores that dynamic load, which the seed argues can reach the static load (36 kg × 30 g).")
 
 
-build = Pipeline(lambda p, w: design_of(p, design), (kozlov_proof, solid_outputs, notes))
+start_animation, collect_animation = pipeline_steps(rolling_animation)
+
+build = Pipeline(lambda p, w: design_of(p, design),
+                 (kozlov_proof, start_animation, solid_outputs, notes, collect_animation))

@@ -1,0 +1,81 @@
+"""The animation frame renderer (export/animation.py) and the animation of every part type."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from PIL import Image
+
+from propulsor.export.animation import Animation, Mark, Shape, Trace, encode_gif, render_frames, spell, write_animation
+
+
+def _gear(z: int, r: float) -> np.ndarray:
+    t = np.linspace(0.0, 2 * math.pi, 40 * z, endpoint=False)
+    rr = r + 0.08 * r * np.sign(np.sin(z * t))
+    return np.column_stack([rr * np.cos(t), rr * np.sin(t)])
+
+
+def _anim(n: int = 12, keep=()) -> Animation:
+    from propulsor.checks.motion import rotation_matrices
+
+    a = np.linspace(0.0, 2 * math.pi / 20, n, endpoint=False)
+    bore = np.column_stack([8 * np.cos(np.linspace(0, 2 * math.pi, 60)), 8 * np.sin(np.linspace(0, 2 * math.pi, 60))])[::-1]
+    shapes = [Shape((_gear(20, 50.0), bore), "blue", rotation_matrices(a)),
+              Shape((_gear(10, 25.0),), "orange", rotation_matrices(-2 * a, np.tile([78.0, 0.0], (n, 1)))),
+              Shape((np.array([[-60.0, -60.0], [110.0, -60.0]]),), "ink", None, closed=False)]
+    x = np.linspace(0.0, 1.0, 50)
+    tr = Trace("U", x, np.sin(6 * x), np.linspace(0, 49, n).astype(int), x_label="φ, deg")
+    return Animation("synthetic pair θ, φ", shapes, n, [[f"frame {k}", "!least 0.1 mm"] for k in range(n)],
+                     [[Mark((50.0, 0.0), "0.123 mm")] if k == 3 else [] for k in range(n)], [tr], width_px=520,
+                     keep=keep)
+
+
+def test_same_input_same_bytes(tmp_path):
+    a, b = write_animation(_anim(), tmp_path / "a.gif"), write_animation(_anim(), tmp_path / "b.gif")
+    assert (tmp_path / "a.gif").read_bytes() == (tmp_path / "b.gif").read_bytes()
+    assert a.bytes == b.bytes == (tmp_path / "a.gif").stat().st_size and a.frames == tuple(range(12))
+    with Image.open(tmp_path / "a.gif") as im:
+        assert im.n_frames == 12 and im.size == (a.width_px, a.height_px) == (520, a.height_px)
+        im.seek(3)
+        assert im.info["duration"] == 60
+        # the frame decodes to what was drawn: the fixed palette, no quantisation
+        assert im.convert("RGB").tobytes() == render_frames(_anim())[3].convert("RGB").tobytes()
+
+
+def test_the_mechanism_is_inside_the_picture_and_moves():
+    frames = render_frames(_anim())
+    W, H = frames[0].size
+    for im in frames:
+        px = np.asarray(im)
+        # the blue gear's fill (palette index of blue_fill) is drawn, and never touches the border
+        from propulsor.export.animation import _INDEX
+
+        ys, xs = np.nonzero(px == _INDEX["blue_fill"])
+        assert len(xs) > 1000 and xs.min() > 0 and ys.min() > 0 and xs.max() < W - 1
+    assert not np.array_equal(np.asarray(frames[0]), np.asarray(frames[1]))
+
+
+def test_too_large_a_gif_is_thinned_keeping_the_marked_frame(tmp_path):
+    full = len(encode_gif(render_frames(_anim()), 60))
+    info = write_animation(_anim(keep=(3,)), tmp_path / "t.gif", max_bytes=int(0.7 * full))
+    assert info.bytes <= 0.7 * full and 3 in info.frames and len(info.frames) < 12
+    with Image.open(tmp_path / "t.gif") as im:
+        assert im.n_frames == len(info.frames)
+
+
+def test_text_in_the_default_font():
+    assert spell("φ = 3°, θ ≥ β, 2 mm²") == "phi = 3°, theta >= beta, 2 mm^2"
+
+
+def test_every_part_type_animates_its_motion():
+    """Every registered part type's build starts its animations once its proof is there and records
+    them (GIF, frame table, manifest media entry) before the writer finishes; the part tests check
+    what each one writes."""
+    from propulsor.parts import get_part_type, part_type_names
+
+    for name in part_type_names():
+        steps = [getattr(s, "__name__", "") for s in get_part_type(name).build.steps]
+        assert "start_animations" in steps and steps[-1] == "collect_animations", (name, steps)
+        assert steps.index("start_animations") < steps.index("collect_animations")
