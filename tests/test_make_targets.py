@@ -127,3 +127,30 @@ def test_worker_budget_under_make_j(monkeypatch):
     assert parallel.worker_cap(2) == 0
     done = parallel.start(sum, [1, 2, 3])
     assert isinstance(done, parallel.Done) and done.result() == 6
+
+
+_STATE: list = []
+
+
+def _grow_state() -> int:
+    _STATE.append(1)
+    return len(_STATE)
+
+
+def test_several_part_files_each_build_from_the_same_process_state():
+    """`propulsor build a.toml b.toml`: each build runs in a child forked from the same state, so that it
+    writes what a build on its own writes (OCCT numbers STEP assembly occurrences with a process-wide
+    counter: in one process the second part's assembly STEP wrapped its lines differently)."""
+    from propulsor.cli import _in_child
+
+    assert [_in_child(_grow_state) for _ in range(3)] == [1, 1, 1] and _STATE == []
+
+
+def test_several_part_files_exit_with_the_worst_code(tmp_path, capfd):
+    bad = tmp_path / "bad.toml"
+    bad.write_text('type = "road_wheel"\nrows = 0\n')
+    good = ROOT / "parts" / "road_wheel.toml"
+    assert main(["build", str(good), str(bad), "--dry-run"]) == 2
+    out, err = capfd.readouterr()  # the builds' children write to the file descriptors
+    assert "road_wheel.toml is valid" in out and "rows" in err
+    assert main(["build", str(good), str(good), "--out", str(tmp_path / "o")]) == 2  # --out names one folder

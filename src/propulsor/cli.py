@@ -220,11 +220,68 @@ def cmd_build(args) -> int:
         name = "--out" if args.out else "--depfile"
         return _fail_input(InputError(name, args.out or args.depfile, f"names one file or folder: give one part "
                                       f"file, not {len(files)} (several go to output/<file name>; --depfile-dir)"))
+    if len(files) == 1:
+        return _build_one(args, files[0], args.depfile or (Path(args.depfile_dir) / f"{files[0].stem}.mk"
+                                                           if args.depfile_dir else None))
+    _preload()
     codes = []
     for part_file in files:
-        depfile = args.depfile or (Path(args.depfile_dir) / f"{part_file.stem}.mk" if args.depfile_dir else None)
-        codes.append(_build_one(args, part_file, depfile))
+        depfile = Path(args.depfile_dir) / f"{part_file.stem}.mk" if args.depfile_dir else None
+        codes.append(_in_child(_build_one, args, part_file, depfile))
     return max(codes, key=lambda c: (c == EXIT_BAD_INPUT, c))
+
+
+#: what every build imports and what costs (OCCT, cadquery, matplotlib, scipy, trimesh, manifold3d):
+#: imported once before the builds of several part files are forked
+_PRELOAD = ("propulsor.parts", "propulsor.parts.writer", "propulsor.solids.build", "propulsor.solids.kernel",
+            "propulsor.export.step", "propulsor.export.mesh", "propulsor.export.plots", "propulsor.export.dxf",
+            "propulsor.checks.mesh", "propulsor.checks.brep", "propulsor.checks.motion", "scipy.optimize",
+            "scipy.integrate", "scipy.interpolate")
+
+
+def _preload() -> None:
+    import importlib
+
+    for name in _PRELOAD:
+        importlib.import_module(name)
+
+
+def _in_child(fn, *args) -> int:
+    """fn(*args) -> exit code, in a forked child (where fork is missing: here).  Each build of several
+    starts from the same process state — OCCT's process-wide counters (the STEP writer numbers assembly
+    occurrences with one), caches, figures — so it writes the same bytes as a build on its own.  A
+    signal to this process is passed on to the child, and waited for."""
+    if not hasattr(os, "fork"):
+        return fn(*args)
+    sys.stdout.flush()
+    sys.stderr.flush()
+    pid = os.fork()
+    if pid == 0:  # the child: run, report, and leave without unwinding the parent's stack
+        code = 70
+        try:
+            code = fn(*args)
+        except Interrupted as exc:
+            from .parallel import kill_workers
+
+            _hold_signals()
+            kill_workers()
+            print(f"propulsor: interrupted by {signal.Signals(exc.signum).name}; nothing written", file=sys.stderr)
+            code = 128 + exc.signum
+        except BaseException:  # noqa: BLE001 - reported as the traceback Python would print
+            import traceback
+
+            traceback.print_exc()
+        finally:
+            sys.stdout.flush()
+            sys.stderr.flush()
+            os._exit(code)
+    try:
+        _, status = os.waitpid(pid, 0)
+    except Interrupted as exc:
+        os.kill(pid, exc.signum)
+        os.waitpid(pid, 0)
+        raise
+    return os.waitstatus_to_exitcode(status)
 
 
 def _build_one(args, part_file: Path, depfile: Path | None) -> int:
