@@ -105,7 +105,6 @@ class Outline:
         loop_start_cum = (cum - self.seg_len)[starts]
         self.arclen = cum - self.seg_len - loop_start_cum[self.loop_id]
         self.perimeter = np.array([self.seg_len[self.loop_id == i].sum() for i in range(len(dense))])
-        self.loop_start = starts  # index of each loop's first point
         self.tree = cKDTree(self.points)
         lo, hi = self.points.min(axis=0), self.points.max(axis=0)
         self.center = 0.5 * (lo + hi)
@@ -117,18 +116,6 @@ class Outline:
         """A lower bound of the distance from each point (body frame) to the boundary (annulus test)."""
         d = row_norms(P - self.center)
         return np.maximum(d - self.radius, self.r_min - d)
-
-    def winding(self, P: np.ndarray) -> np.ndarray:
-        """Winding number of the boundary about each point (body frame): > 0 inside the material
-        (the ``Positive`` fill rule of ``section``); exact for points off the boundary (crossings of
-        the ray to +x, counted +1 upwards with the point left of the edge, -1 downwards right of it)."""
-        x, y = P[:, 0][:, None], P[:, 1][:, None]
-        ax, ay = self.seg_a[:, 0][None], self.seg_a[:, 1][None]
-        bx, by = self.seg_b[:, 0][None], self.seg_b[:, 1][None]
-        left = (bx - ax) * (y - ay) - (x - ax) * (by - ay)  # > 0: point left of the edge
-        up = (ay <= y) & (by > y) & (left > 0)
-        down = (by <= y) & (ay > y) & (left < 0)
-        return np.count_nonzero(up, axis=1) - np.count_nonzero(down, axis=1)
 
     @property
     def area(self) -> float:

@@ -102,36 +102,13 @@ def _clearance_step(A: Outline, B: Outline, Ma: np.ndarray, Mb: np.ndarray, inte
         j = int(np.argmax(depth))
         pw = apply_pose(Ma, V[j:j + 1])[0]
         return -float(depth[j]), pw, pw
-    return _free_clearance(A, B, Ma, Mb, rel_ba, rel_ab)[:3]
-
-
-def _free_clearance(A: Outline, B: Outline, Ma, Mb, rel_ba, rel_ab):
-    """Least distance between the boundaries of a step without overlap (vertices to edges both ways),
-    its two world points, and whether the bodies are provably apart (see :func:`_apart`)."""
     PB = apply_pose(rel_ba, B.points)
     d1, i1, q1 = min_dist_points_to(PB, A, B)  # B vertices -> A edges (A frame)
     PA = apply_pose(rel_ab, A.points)
     d2, i2, q2 = min_dist_points_to(PA, B, A)  # A vertices -> B edges (B frame)
-    apart = _apart(A, B, PA, PB, d1, d2)
     if d1 <= d2:
-        return d1, apply_pose(Ma, q1[None])[0], apply_pose(Ma, PB[i1:i1 + 1])[0], apart
-    return d2, apply_pose(Mb, PA[i2:i2 + 1])[0], apply_pose(Mb, q2[None])[0], apart
-
-
-def _apart(A: Outline, B: Outline, PA: np.ndarray, PB: np.ndarray, d1: float, d2: float) -> bool:
-    """True when the two bodies cannot overlap at this step, so that their intersection is empty.
-
-    d1: least distance of B's vertices from A's edges, d2: of A's vertices from B's edges.  If an
-    edge of A crossed an edge of B, one end of the A edge would lie within half its length of the
-    B edge (d2 <= A.half_len) and one end of the B edge within half its length of the A edge
-    (d1 <= B.half_len); so either bound exceeded (+ a margin) means the boundaries do not cross.
-    Each loop then lies wholly inside or outside the other body, and with no loop inside
-    (winding number of one vertex per loop) the materials do not meet.
-    """
-    margin = policy.MOTION_PRUNE_MARGIN_MM
-    if not (d1 > B.half_len + margin or d2 > A.half_len + margin):
-        return False
-    return not (np.any(A.winding(PB[B.loop_start]) > 0) or np.any(B.winding(PA[A.loop_start]) > 0))
+        return d1, apply_pose(Ma, q1[None])[0], apply_pose(Ma, PB[i1:i1 + 1])[0]
+    return d2, apply_pose(Mb, PA[i2:i2 + 1])[0], apply_pose(Mb, q2[None])[0]
 
 
 def _pose_pair(poses_a, poses_b):
@@ -168,15 +145,10 @@ def sweep_pair(profile_a, poses_a, profile_b, poses_b, chord_tol: float = policy
     pb = np.zeros((N, 2))
     for k in range(N):
         rel = compose_poses(inverse_pose(Ma[k]), Mb[k])  # B body -> A body
-        # the boundary distance first: when it proves the bodies apart the intersection is empty
-        # (area 0) and the boolean is not needed
-        clear[k], pa[k], pb[k], apart = _free_clearance(A, B, Ma[k], Mb[k], rel, inverse_pose(rel))
-        if apart:
-            continue
         inter = A.section ^ B.section.transform(rel)
         area[k] = inter.area()
-        if area[k] > policy.OVERLAP_AREA_TOL_MM2:
-            clear[k], pa[k], pb[k] = _clearance_step(A, B, Ma[k], Mb[k], inter)
+        clear[k], a_pt, b_pt = _clearance_step(A, B, Ma[k], Mb[k], inter if area[k] > policy.OVERLAP_AREA_TOL_MM2 else None)
+        pa[k], pb[k] = a_pt, b_pt
     return SweepResult(ang_a, ang_b, area, clear, pa, pb, clearance_limit, name)
 
 
