@@ -121,6 +121,10 @@ MOTION_CONTACT_TOL_MM = 1e-3
 MOTION_CONTACT_MERGE_MM = 0.5
 #: largest free rotation searched for when measuring backlash (rad)
 MOTION_MAX_FREE_ANGLE_RAD = 0.2
+#: rounding margin of the distance pruning of the sweeps (far runs of vertices skipped before the
+#: exact search; it only decides what is searched, never a result: far above the rounding of
+#: millimetre coordinates, far below any clearance of interest)
+MOTION_PRUNE_MARGIN_MM = 1e-6
 
 # --- fixed cam of the driven propulsor (seed 001) ------------------------------
 #: reference integration of eq. 20 used to measure the error of the working one

@@ -36,8 +36,10 @@ def _rot_hits(P: np.ndarray, C: np.ndarray, tgt: Outline, sign: float, w: float,
     keep = np.nonzero(lb <= chord_factor * rho)[0]
     if len(keep) == 0:
         return delta, edge, tpar
-    dv, _ = tgt.tree.query(P[keep])
     reach = chord_factor * rho[keep] + tgt.half_len + 1e-12
+    # bounded query: a point farther than its reach from every vertex is no candidate, and one
+    # within it gets its exact distance (the bound is a hair above the largest reach)
+    dv, _ = tgt.tree.query(P[keep], distance_upper_bound=float(reach.max()) * (1.0 + 1e-9) + 1e-9)
     cand = keep[dv <= reach]
     if len(cand) == 0:
         return delta, edge, tpar

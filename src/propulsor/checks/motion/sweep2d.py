@@ -103,9 +103,9 @@ def _clearance_step(A: Outline, B: Outline, Ma: np.ndarray, Mb: np.ndarray, inte
         pw = apply_pose(Ma, V[j:j + 1])[0]
         return -float(depth[j]), pw, pw
     PB = apply_pose(rel_ba, B.points)
-    d1, i1, q1 = min_dist_points_to(PB, A)  # B vertices -> A edges (A frame)
+    d1, i1, q1 = min_dist_points_to(PB, A, B)  # B vertices -> A edges (A frame)
     PA = apply_pose(rel_ab, A.points)
-    d2, i2, q2 = min_dist_points_to(PA, B)  # A vertices -> B edges (B frame)
+    d2, i2, q2 = min_dist_points_to(PA, B, A)  # A vertices -> B edges (B frame)
     if d1 <= d2:
         return d1, apply_pose(Ma, q1[None])[0], apply_pose(Ma, PB[i1:i1 + 1])[0]
     return d2, apply_pose(Mb, PA[i2:i2 + 1])[0], apply_pose(Mb, q2[None])[0]
