@@ -15,7 +15,7 @@ from OCP.GeomAbs import GeomAbs_Cone, GeomAbs_Cylinder, GeomAbs_Plane, GeomAbs_S
 from OCP.IMeshTools import IMeshTools_Parameters
 from OCP.BRepMesh import BRepMesh_IncrementalMesh
 from OCP.BRepTools import BRepTools
-from OCP.TopAbs import TopAbs_FACE, TopAbs_REVERSED
+from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE, TopAbs_REVERSED
 from OCP.TopExp import TopExp_Explorer
 from OCP.TopLoc import TopLoc_Location
 from OCP.TopoDS import TopoDS
@@ -101,12 +101,14 @@ def refine_faces(shape, chord_tol, angular_tol, parallel, chord_limit) -> float:
     the surface deflection controlled on them although they are analytic (OCCT controls it on free-form
     faces only: a cone between two differently divided circles misses the request several times over)
     and no element below `chord_limit` (finer ones fold at a cone's apex).  The edges keep their
-    discretisation (the neighbours' triangulations share it), so the mesh stays closed.  Returns the
-    largest achieved deflection."""
+    discretisation (the neighbours' triangulations share it), so the mesh stays closed.  A face with a
+    degenerate edge (a cone's apex, a sphere's pole) is left as it is: the nodes inserted there crowd
+    into slivers that fold once the mesh is written in single precision (STL), and the caller's halving
+    takes it on.  Returns the largest achieved deflection."""
     ex = TopExp_Explorer(shape, TopAbs_FACE)
     while ex.More():
         face = TopoDS.Face_s(ex.Current())
-        if BRep_Tool.Triangulation_s(face, TopLoc_Location()).Deflection() > chord_limit:
+        if BRep_Tool.Triangulation_s(face, TopLoc_Location()).Deflection() > chord_limit and not _has_apex(face):
             BRepTools.Clean_s(face)
         ex.Next()
     prm = IMeshTools_Parameters()
@@ -116,6 +118,16 @@ def refine_faces(shape, chord_tol, angular_tol, parallel, chord_limit) -> float:
     if not BRepMesh_IncrementalMesh(shape, prm).IsDone():
         raise RuntimeError("BRepMesh failed")
     return _worst_deflection(shape)
+
+
+def _has_apex(face) -> bool:
+    """Whether the face has a degenerate edge (a point of its surface that an edge collapses to)."""
+    ex = TopExp_Explorer(face, TopAbs_EDGE)
+    while ex.More():
+        if BRep_Tool.Degenerated_s(TopoDS.Edge_s(ex.Current())):
+            return True
+        ex.Next()
+    return False
 
 
 def _worst_deflection(shape) -> float:
