@@ -29,7 +29,8 @@ import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
 from propulsor.errors import InputError, require_finite, require_positive
-from propulsor.laws.walking import LEG_PERIOD, HubSpeedRipple, WalkingLaw, check_n_closes, invert_theta, wrap_leg
+from propulsor.laws.walking import (LEG_PERIOD, HubSpeedRipple, WalkingLaw, check_n_closes, invert_theta, wrap_leg,
+                                    wrap_leg1)
 from propulsor.policy import CORNER_SIDE_RAD, MINIMIZE_XATOL, PHI_OF_THETA_TOL_RAD, ROOT_XTOL_FINE, TOOTH_COUNT_TOL
 
 _GAUSS_X, _GAUSS_W = np.polynomial.legendre.leggauss(96)
@@ -66,6 +67,7 @@ class SmoothedWalkingLaw:
         if d > math.pi / 4:
             raise InputError("delta", self.delta, f"blend half-width must be <= pi/4 = {math.pi / 4:.6f} rad")
         object.__setattr__(self, "delta", d)
+        object.__setattr__(self, "_K", 3 * self.law.b * self.law.u / self.law.A)
         u, K = self.law.u, self.K
         # solved in s = t/delta (well conditioned for small delta): p = sum a_k s^(2k)
         M = np.array([
@@ -84,6 +86,12 @@ class SmoothedWalkingLaw:
             object.__setattr__(self, "coef", tuple(float(v) for v in np.linalg.solve(M, rhs)))
         else:
             self._scaled_blend(M, rhs)
+        # constants of the hot functions, cached by the expressions they use (not dataclass fields)
+        object.__setattr__(self, "_1me", 1.0 - self.eps)
+        object.__setattr__(self, "_u", self.law.u)
+        object.__setattr__(self, "_Pd", float(self._P(d)))
+        object.__setattr__(self, "_Fd", float(self._F(d)))
+        object.__setattr__(self, "_I_leg", self.law.n * math.pi / 2)
         t = np.linspace(0.0, d, 2001)
         p_min = float(np.min(self._p(t)))
         if not p_min > 0:
@@ -126,7 +134,7 @@ class SmoothedWalkingLaw:
     @property
     def K(self) -> float:
         """Slope scale of the exact law at hand-over: U = u + K sin 2|t|, K = 3 b u / A."""
-        return 3 * self.law.b * self.law.u / self.law.A
+        return self._K
 
     @property
     def hub_speed_ratio(self) -> float:
@@ -186,19 +194,19 @@ class SmoothedWalkingLaw:
         """Smoothed ratio U_s(phi) (periodic, period pi/2, C2)."""
         phi, t, inw = self._window(phi)
         if self.u_h is not None:
-            return np.where(inw, self._p(t), (1.0 - self.eps) * self.law.U(phi))
+            return np.where(inw, self._p(t), self._1me * self.law.U(phi))
         return np.where(inw, self._p(t), self.law.U(phi))
 
     def dU_dphi(self, phi):
         phi, t, inw = self._window(phi)
         if self.u_h is not None:
-            return np.where(inw, self._dp(t), (1.0 - self.eps) * self.law.dU_dphi(phi))
+            return np.where(inw, self._dp(t), self._1me * self.law.dU_dphi(phi))
         return np.where(inw, self._dp(t), self.law.dU_dphi(phi))
 
     def d2U_dphi2(self, phi):
         phi, t, inw = self._window(phi)
         if self.u_h is not None:
-            return np.where(inw, self._d2p(t), (1.0 - self.eps) * self.law.d2U_dphi2(phi))
+            return np.where(inw, self._d2p(t), self._1me * self.law.d2U_dphi2(phi))
         return np.where(inw, self._d2p(t), self.law.d2U_dphi2(phi))
 
     def theta(self, phi):
@@ -212,11 +220,74 @@ class SmoothedWalkingLaw:
             e = self.eps
             h = np.round((phi - math.pi / 4 - t) / LEG_PERIOD)
             done = h + np.where(t >= d, 1.0, 0.0)
-            part = self._P(t) + self._P(d) - (1.0 - e) * (self._F(t) + self._F(d))
-            I_leg = self.law.n * math.pi / 2
-            return (1.0 - e) * self.law.theta(phi) + e * I_leg * done + np.where(inw, part, 0.0)
-        corr = self._P(t) + self._P(d) - self._F(t) - self._F(d)
+            part = self._P(t) + self._Pd - self._1me * (self._F(t) + self._Fd)
+            return self._1me * self.law.theta(phi) + e * self._I_leg * done + np.where(inw, part, 0.0)
+        corr = self._P(t) + self._Pd - self._F(t) - self._Fd
         return self.law.theta(phi) + np.where(inw, corr, 0.0)
+
+    # ---- the same functions of one finite float phi (``math``, bit-identical to the above) ----
+    def U1(self, phi: float) -> float:
+        """``U`` at one driven angle (float)."""
+        t = wrap_leg1(phi - math.pi / 4)
+        if abs(t) < self.delta:
+            a0, a1, a2, a3 = self.coef
+            s = t / self.delta
+            s2 = s * s
+            return a0 + s2 * (a1 + s2 * (a2 + s2 * a3))
+        if self.u_h is not None:
+            return self._1me * self.law.U1(phi)
+        return self.law.U1(phi)
+
+    def dU1(self, phi: float) -> float:
+        """``dU_dphi`` at one driven angle (float)."""
+        t = wrap_leg1(phi - math.pi / 4)
+        if abs(t) < self.delta:
+            a0, a1, a2, a3 = self.coef
+            d = self.delta
+            s = t / d
+            s2 = s * s
+            return s * (2 * a1 + s2 * (4 * a2 + 6 * a3 * s2)) / d
+        if self.u_h is not None:
+            return self._1me * self.law.dU1(phi)
+        return self.law.dU1(phi)
+
+    def d2U1(self, phi: float) -> float:
+        """``d2U_dphi2`` at one driven angle (float)."""
+        t = wrap_leg1(phi - math.pi / 4)
+        if abs(t) < self.delta:
+            a0, a1, a2, a3 = self.coef
+            d = self.delta
+            s = t / d
+            s2 = s * s
+            return (2 * a1 + s2 * (12 * a2 + 30 * a3 * s2)) / (d * d)
+        if self.u_h is not None:
+            return self._1me * self.law.d2U1(phi)
+        return self.law.d2U1(phi)
+
+    def _PF1(self, t: float) -> float:
+        """_P(t) + _P(delta) and _F(t) + _F(delta)-terms of ``theta`` for one float t, as there."""
+        a0, a1, a2, a3 = self.coef
+        d = self.delta
+        s = t / d
+        s2 = s * s
+        P = d * s * (a0 + s2 * (a1 / 3 + s2 * (a2 / 5 + s2 * a3 / 7)))
+        sg = 1.0 if t > 0 else (-1.0 if t < 0 else 0.0)
+        F = self._u * t + sg * self._K * (1 - math.cos(2 * t)) / 2
+        return P, F
+
+    def theta1(self, phi: float) -> float:
+        """``theta`` at one driven angle (float)."""
+        t = wrap_leg1(phi - math.pi / 4)
+        d = self.delta
+        inw = abs(t) < d
+        if self.u_h is not None:
+            h = float(round((phi - math.pi / 4 - t) / LEG_PERIOD))
+            done = h + (1.0 if t >= d else 0.0)
+            P, F = self._PF1(t)
+            part = P + self._Pd - self._1me * (F + self._Fd)
+            return self._1me * self.law.theta1(phi) + self.eps * self._I_leg * done + (part if inw else 0.0)
+        P, F = self._PF1(t)
+        return self.law.theta1(phi) + ((P + self._Pd - F - self._Fd) if inw else 0.0)
 
     def phi_of_theta(self, theta, tol: float = PHI_OF_THETA_TOL_RAD):
         """Inverse of theta_s(phi) (``walking.invert_theta``)."""
@@ -303,6 +374,11 @@ def hub_speed_ripple(law) -> HubSpeedRipple:
 
 
 # =========================================================================== pitch curves
+def _finite(p) -> bool:
+    """p is one finite real number (a solver's one-point call)."""
+    return isinstance(p, (float, int)) and math.isfinite(p)
+
+
 def _rho(r, dr, d2r):
     """Signed radius of curvature of a polar curve (> 0 convex, < 0 concave)."""
     return (r * r + dr * dr) ** 1.5 / (r * r + 2 * dr * dr - r * d2r)
@@ -355,6 +431,14 @@ class PitchCurves:
     def d2r_H(self, phi):
         U, dU, d2U = self.law.U(phi), self.law.dU_dphi(phi), self.law.d2U_dphi2(phi)
         return self.L * (d2U / (1 + U) ** 2 - 2 * dU * dU / (1 + U) ** 3)
+
+    def pitch1(self, phi: float):
+        """(U, r_H, dr_H) at one finite float phi: the operations of ``law.U``, ``r_H``, ``dr_H`` on
+        an array, in ``math`` (bit-identical; (1 + U)**2 of an array is its square)."""
+        law = self.law
+        U, dU = law.U1(phi), law.dU1(phi)
+        q = 1 + U
+        return U, self.L * U / q, self.L * dU / (q * q)
 
     def rho_H(self, phi):
         """Signed radius of curvature of the driven pitch curve at phi (mm)."""
@@ -456,22 +540,58 @@ class PitchCurves:
                                   kind="convex" if jump > 0 else "concave"))
         return out
 
+    def polar_derivatives1(self, curve: str, p: float) -> tuple[float, float, float]:
+        """(r, r', r'') of curve 'driven' (``r_H``, ``dr_H``, ``d2r_H``) or 'driver' (``r``,
+        ``r_theta``, ``r_thetatheta``) at one finite float p, for a ``SmoothedWalkingLaw``: the
+        operations those functions do for a scalar phi, in ``math`` (bit-identical).  There U, U',
+        U'' are 0-d arrays, so U**3 is the array power; 1 + U is a numpy scalar, so (1 + U)**k is
+        the scalar (libm) power, as a float's."""
+        law, L = self.law, self.L
+        p = float(p)
+        U, dU, d2U = law.U1(p), law.dU1(p), law.d2U1(p)
+        r_H = L * U / (1 + U)
+        dr_H = L * dU / (1 + U) ** 2
+        d2r_H = L * (d2U / (1 + U) ** 2 - 2 * dU * dU / (1 + U) ** 3)
+        if curve == "driven":
+            r, d, dd = r_H, dr_H, d2r_H
+        else:
+            r = L / (1 + U)
+            d = -dr_H / U
+            r_p, r_pp = -dr_H, -d2r_H
+            dd = (r_pp * U - r_p * dU) / float(np.array(U) ** 3)
+        return r, d, dd
+
     def curvature(self, curve: str) -> "CurvatureSummary":
         """Radius-of-curvature summary of one curve ('driven' or 'driver') over the cycle."""
         if curve not in ("driven", "driver"):
             raise InputError("curve", curve, "must be 'driven' or 'driver'")
-        f = self.rho_H if curve == "driven" else self.rho
+        f_arr = self.rho_H if curve == "driven" else self.rho
         if curve == "driven":
-            def den(p):
+            def den_arr(p):
                 r, d, dd = self.r_H(p), self.dr_H(p), self.d2r_H(p)
                 return r * r + 2 * d * d - r * dd
         else:
-            def den(p):
+            def den_arr(p):
                 r, d, dd = self.r(p), self.r_theta(p), self.r_thetatheta(p)
                 return r * r + 2 * d * d - r * dd
+        if isinstance(self.law, SmoothedWalkingLaw):
+            # the solvers' one-point calls (floats) in math, bit-identical (``polar_derivatives1``)
+            def f(p):
+                if not _finite(p):
+                    return f_arr(p)
+                r, d, dd = self.polar_derivatives1(curve, p)
+                return _rho(np.float64(r), d, dd)  # numpy division: +-inf where the denominator is 0
+
+            def den(p):
+                if not _finite(p):
+                    return den_arr(p)
+                r, d, dd = self.polar_derivatives1(curve, p)
+                return r * r + 2 * d * d - r * dd
+        else:
+            f, den = f_arr, den_arr
         phi = _leg_samples(self.law)
-        D = den(phi)
-        rho = f(phi)
+        D = den_arr(phi)
+        rho = f_arr(phi)
         convex = D > 0
         concave = D < 0
         cx = _extreme(f, phi[convex], rho[convex], "min") if np.any(convex) else (math.nan, math.inf)
