@@ -66,6 +66,21 @@ def nearer_circle_crossing(P, N, centre, R: float, parameter: str, whose: str) -
     return P + lam[:, None] * N
 
 
+def _nearer_circle_crossing1(px, py, nx, ny, cx, cy, R):
+    """``nearer_circle_crossing`` for one point (floats, the same operations), or None where the
+    normal misses the circle (the array function raises)."""
+    qx, qy = px - cx, py - cy
+    b = qx * nx + qy * ny
+    c = (qx * qx + qy * qy) - R ** 2
+    disc = b * b - c
+    if not disc >= 0:
+        return None
+    sq = math.sqrt(disc)
+    l1, l2 = -b + sq, -b - sq
+    lam = l1 if abs(l1) <= abs(l2) else l2
+    return px + lam * nx, py + lam * ny
+
+
 def _rot(theta, v):
     """Rotate vectors v (n,2) by angles theta (n,) counter-clockwise."""
     c, s = np.cos(theta), np.sin(theta)
@@ -88,6 +103,16 @@ class RackCentrode:
         """Meshing equation: s where the normal line P + λN meets the rolling line y = 0."""
         lam = -P[:, 1] / N[:, 1]
         return P[:, 0] + lam * N[:, 0]
+
+    # one cutter point (floats; ``envelope_points``' one-point path, the same operations)
+    def contact1(self, px, py, nx, ny, piece=None):
+        if ny == 0.0:
+            return None
+        return px + (-py / ny) * nx
+
+    def pose1(self, s: float):
+        """(C_x, C_y, angle) at one rolling arc s."""
+        return s, 0.0, 0.0
 
 
 @dataclass(frozen=True)
@@ -134,6 +159,16 @@ class ExternalCircleCentrode:
         to P is the pitch point (involute: contact and pitch point on one ray of the line of action)."""
         C = nearer_circle_crossing(P, N, (0.0, self.R), self.R, "z0", "shaper's")
         return self.R * np.arctan2(C[:, 0], self.R - C[:, 1])
+
+    # one cutter point (floats; ``envelope_points``' one-point path, the same operations)
+    def contact1(self, px, py, nx, ny, piece=None):
+        R = self.R
+        C = _nearer_circle_crossing1(px, py, nx, ny, 0.0, R, R)
+        return None if C is None else R * float(np.arctan2(C[0], R - C[1]))
+
+    def pose1(self, s: float):
+        R = self.R
+        return R * math.sin(s / R), R - R * math.cos(s / R), s / R
 
 
 @dataclass(frozen=True)
@@ -185,6 +220,20 @@ class ShaperOnRackCentrode:
     def contact(self, P, N):
         """Shaper-on-line contact (exact on the involute): the normal meets the rolling circle."""
         return ExternalCircleCentrode(self.R).contact(P, N) - self.c
+
+    # one cutter point (floats; ``envelope_points``' one-point path, the same operations)
+    def contact1(self, px, py, nx, ny, piece=None):
+        """``contact_on`` where it is closed-form (e = 0 or a piece conjugate to the rack), else None."""
+        if not (self.e == 0.0 or getattr(piece, "conjugate_to_rack", False)):
+            return None
+        s0 = ExternalCircleCentrode(self.R).contact1(px, py, nx, ny)
+        return None if s0 is None else s0 - self.c
+
+    def pose1(self, s: float):
+        R = self.R
+        b = (s + self.c) / R
+        cb, sb = math.cos(b), math.sin(b)
+        return R * sb - cb * self.c + sb * self.e, R - R * cb - sb * self.c - cb * self.e, b
 
     def _residual(self, s, P, N, gear):
         """(f, lam): f = cross((w + k) Q - w I_sr - k I_rg, N) (zero when the normal of the cutter
@@ -308,6 +357,18 @@ class PitchCurveCentrode:
         d = self.curve.sgn * self.curve.dpoint(self.phi(sg))
         return np.arctan2(d[:, 1], d[:, 0])
 
+    def pose1(self, sg: float):
+        """(G_x, G_y, tangent angle) at one generation arc sg (floats, the operations of ``point``
+        and ``angle``), or None for many tooth centres or a non-finite arc."""
+        if not isinstance(self.s_k, float):
+            return None
+        sgn = self.curve.sgn
+        ph = self.frame.phi1(self.s_k + sgn * sg)
+        if ph is None:
+            return None
+        x, y, dx, dy = self.curve._at1(ph)
+        return x, y, float(np.arctan2(sgn * dy, sgn * dx))
+
 
 def envelope_points(piece, u, cutter, gear):
     """Envelope of one cutter-outline piece in the gear frame.
@@ -315,6 +376,11 @@ def envelope_points(piece, u, cutter, gear):
     For every cutter parameter u: solve the meshing equation for the rolling arc length s,
     then place the cutter point by the pose of that instant.  Returns (X (n,2), s (n,)).
     """
+    if type(u) is np.ndarray and u.shape == (1,) and hasattr(piece, "point1") and hasattr(cutter, "contact1") \
+            and hasattr(gear, "pose1"):
+        out = _envelope_point1(piece, float(u[0]), cutter, gear)
+        if out is not None:
+            return out
     P = piece.point(u)
     T = piece.tangent(u)
     T = T / np.linalg.norm(T, axis=1)[:, None]
@@ -323,6 +389,31 @@ def envelope_points(piece, u, cutter, gear):
     theta = gear.angle(s) - cutter.angle(s)
     X = gear.point(s) + _rot(theta, P - cutter.point(s))
     return X, s
+
+
+def _envelope_point1(piece, u: float, cutter, gear):
+    """``envelope_points`` for one cutter parameter u (the solvers' one-point calls): the same
+    operations on floats (``math``; numpy only for arctan / arctan2 / the arc-length spline), so
+    bit-identical; None where the array path is needed (not closed-form, not finite, or an error
+    to raise)."""
+    if not math.isfinite(u):
+        return None
+    px, py = piece.point1(u)
+    tx, ty = piece.tangent1(u)
+    n = math.sqrt(tx * tx + ty * ty)
+    tx, ty = tx / n, ty / n
+    s = cutter.contact1(px, py, -ty, tx, piece)
+    if s is None or not math.isfinite(s):
+        return None
+    G = gear.pose1(s)
+    if G is None:
+        return None
+    gx, gy, tau = G
+    cx, cy, ca = cutter.pose1(s)
+    theta = tau - ca
+    c, sn = math.cos(theta), math.sin(theta)
+    vx, vy = px - cx, py - cy
+    return np.array([[gx + (c * vx - sn * vy), gy + (sn * vx + c * vy)]]), np.array([s])
 
 
 @dataclass(frozen=True)

@@ -226,43 +226,21 @@ class SmoothedWalkingLaw:
         return self.law.theta(phi) + np.where(inw, corr, 0.0)
 
     # ---- the same functions of one finite float phi (``math``, bit-identical to the above) ----
-    def U1(self, phi: float) -> float:
-        """``U`` at one driven angle (float)."""
-        t = wrap_leg1(phi - math.pi / 4)
-        if abs(t) < self.delta:
-            a0, a1, a2, a3 = self.coef
-            s = t / self.delta
-            s2 = s * s
-            return a0 + s2 * (a1 + s2 * (a2 + s2 * a3))
-        if self.u_h is not None:
-            return self._1me * self.law.U1(phi)
-        return self.law.U1(phi)
-
-    def dU1(self, phi: float) -> float:
-        """``dU_dphi`` at one driven angle (float)."""
+    def U_derivs1(self, phi: float) -> tuple[float, float, float]:
+        """(``U``, ``dU_dphi``, ``d2U_dphi2``) at one driven angle (float)."""
         t = wrap_leg1(phi - math.pi / 4)
         if abs(t) < self.delta:
             a0, a1, a2, a3 = self.coef
             d = self.delta
             s = t / d
             s2 = s * s
-            return s * (2 * a1 + s2 * (4 * a2 + 6 * a3 * s2)) / d
+            return (a0 + s2 * (a1 + s2 * (a2 + s2 * a3)), s * (2 * a1 + s2 * (4 * a2 + 6 * a3 * s2)) / d,
+                    (2 * a1 + s2 * (12 * a2 + 30 * a3 * s2)) / (d * d))
+        U, dU, d2U = self.law.U_derivs1(phi)
         if self.u_h is not None:
-            return self._1me * self.law.dU1(phi)
-        return self.law.dU1(phi)
-
-    def d2U1(self, phi: float) -> float:
-        """``d2U_dphi2`` at one driven angle (float)."""
-        t = wrap_leg1(phi - math.pi / 4)
-        if abs(t) < self.delta:
-            a0, a1, a2, a3 = self.coef
-            d = self.delta
-            s = t / d
-            s2 = s * s
-            return (2 * a1 + s2 * (12 * a2 + 30 * a3 * s2)) / (d * d)
-        if self.u_h is not None:
-            return self._1me * self.law.d2U1(phi)
-        return self.law.d2U1(phi)
+            e = self._1me
+            return e * U, e * dU, e * d2U
+        return U, dU, d2U
 
     def _PF1(self, t: float) -> float:
         """_P(t) + _P(delta) and _F(t) + _F(delta)-terms of ``theta`` for one float t, as there."""
@@ -435,8 +413,7 @@ class PitchCurves:
     def pitch1(self, phi: float):
         """(U, r_H, dr_H) at one finite float phi: the operations of ``law.U``, ``r_H``, ``dr_H`` on
         an array, in ``math`` (bit-identical; (1 + U)**2 of an array is its square)."""
-        law = self.law
-        U, dU = law.U1(phi), law.dU1(phi)
+        U, dU, _ = self.law.U_derivs1(phi)
         q = 1 + U
         return U, self.L * U / q, self.L * dU / (q * q)
 
@@ -540,6 +517,19 @@ class PitchCurves:
                                   kind="convex" if jump > 0 else "concave"))
         return out
 
+    def _polar_derivatives(self, curve: str, phi: np.ndarray):
+        """(r, r', r'') arrays of curve 'driven' (``r_H``, ``dr_H``, ``d2r_H``) or 'driver' (``r``,
+        ``r_theta``, ``r_thetatheta``) at the angles phi (an array), with U, U', U'' evaluated once:
+        the expressions of those functions."""
+        law, L = self.law, self.L
+        U, dU, d2U = law.U(phi), law.dU_dphi(phi), law.d2U_dphi2(phi)
+        dr_H = L * dU / (1 + U) ** 2
+        d2r_H = L * (d2U / (1 + U) ** 2 - 2 * dU * dU / (1 + U) ** 3)
+        if curve == "driven":
+            return L * U / (1 + U), dr_H, d2r_H
+        r_p, r_pp = -dr_H, -d2r_H
+        return L / (1 + U), -dr_H / U, (r_pp * U - r_p * dU) / U**3
+
     def polar_derivatives1(self, curve: str, p: float) -> tuple[float, float, float]:
         """(r, r', r'') of curve 'driven' (``r_H``, ``dr_H``, ``d2r_H``) or 'driver' (``r``,
         ``r_theta``, ``r_thetatheta``) at one finite float p, for a ``SmoothedWalkingLaw``: the
@@ -548,7 +538,7 @@ class PitchCurves:
         the scalar (libm) power, as a float's."""
         law, L = self.law, self.L
         p = float(p)
-        U, dU, d2U = law.U1(p), law.dU1(p), law.d2U1(p)
+        U, dU, d2U = law.U_derivs1(p)
         r_H = L * U / (1 + U)
         dr_H = L * dU / (1 + U) ** 2
         d2r_H = L * (d2U / (1 + U) ** 2 - 2 * dU * dU / (1 + U) ** 3)
@@ -590,8 +580,9 @@ class PitchCurves:
         else:
             f, den = f_arr, den_arr
         phi = _leg_samples(self.law)
-        D = den_arr(phi)
-        rho = f_arr(phi)
+        r, d, dd = self._polar_derivatives(curve, phi)
+        D = r * r + 2 * d * d - r * dd  # = den_arr(phi), rho = f_arr(phi): U, U', U'' computed once
+        rho = _rho(r, d, dd)
         convex = D > 0
         concave = D < 0
         cx = _extreme(f, phi[convex], rho[convex], "min") if np.any(convex) else (math.nan, math.inf)

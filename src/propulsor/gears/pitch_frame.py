@@ -74,6 +74,13 @@ class ArcFrame:
         k = np.floor((s - self.S[0]) / self.leg)
         return self._phi_of(s - k * self.leg) + k * LEG_PERIOD
 
+    def phi1(self, s: float):
+        """``phi`` of one float s (the same operations), or None if s is not finite."""
+        if not math.isfinite(s):
+            return None
+        k = float(math.floor((s - self.S[0]) / self.leg))
+        return float(self._phi_of(np.array([s - k * self.leg]))[0]) + k * LEG_PERIOD
+
 
 def _one(phi):
     """phi as one finite float when it is an array of one element (the solvers' one-point calls),

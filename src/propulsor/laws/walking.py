@@ -186,17 +186,12 @@ class WalkingLaw:
         return self._uA * (self._A * phi + self._15b * np.sin(2 * w) + self._3b * k)
 
     # ---- the same functions of one finite float phi (``math``, bit-identical to the above) ----
-    def U1(self, phi: float) -> float:
-        """``U`` at one driven angle (float)."""
-        return self._u * (self._A + self._3b * math.cos(2 * wrap_leg1(phi))) / self._A
-
-    def dU1(self, phi: float) -> float:
-        """``dU_dphi`` at one driven angle (float)."""
-        return self._m6bu * math.sin(2 * wrap_leg1(phi)) / self._A
-
-    def d2U1(self, phi: float) -> float:
-        """``d2U_dphi2`` at one driven angle (float)."""
-        return self._m12bu * math.cos(2 * wrap_leg1(phi)) / self._A
+    def U_derivs1(self, phi: float) -> tuple[float, float, float]:
+        """(``U``, ``dU_dphi``, ``d2U_dphi2``) at one driven angle (float)."""
+        w2 = 2 * wrap_leg1(phi)
+        c = math.cos(w2)
+        A = self._A
+        return self._u * (A + self._3b * c) / A, self._m6bu * math.sin(w2) / A, self._m12bu * c / A
 
     def theta1(self, phi: float) -> float:
         """``theta`` at one driven angle (float)."""
