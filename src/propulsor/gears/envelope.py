@@ -38,6 +38,7 @@ import numpy as np
 from scipy.optimize import brentq, fsolve
 
 from ..errors import InputError
+from .envelope_point import envelope_point1, nearer_circle_crossing1
 from ..policy import (ENVELOPE_SAMPLES_PER_FLANK, CUSP_XATOL_REL, FD_STEP_REL, ROUNDING_TOL, SHAPER_MESH_FD_STEP_MM,
                       SHAPER_MESH_ITERATIONS, SHAPER_MESH_RESIDUAL, SHAPER_MESH_SAMPLES, SHAPER_MESH_STOP_MM,
                       SHAPER_MESH_WINDOW_R, SOLVE_RESIDUAL_MM)
@@ -64,21 +65,6 @@ def nearer_circle_crossing(P, N, centre, R: float, parameter: str, whose: str) -
     l1, l2 = -b + sq, -b - sq
     lam = np.where(np.abs(l1) <= np.abs(l2), l1, l2)
     return P + lam[:, None] * N
-
-
-def _nearer_circle_crossing1(px, py, nx, ny, cx, cy, R):
-    """``nearer_circle_crossing`` for one point (floats, the same operations), or None where the
-    normal misses the circle (the array function raises)."""
-    qx, qy = px - cx, py - cy
-    b = qx * nx + qy * ny
-    c = (qx * qx + qy * qy) - R ** 2
-    disc = b * b - c
-    if not disc >= 0:
-        return None
-    sq = math.sqrt(disc)
-    l1, l2 = -b + sq, -b - sq
-    lam = l1 if abs(l1) <= abs(l2) else l2
-    return px + lam * nx, py + lam * ny
 
 
 def _rot(theta, v):
@@ -163,7 +149,7 @@ class ExternalCircleCentrode:
     # one cutter point (floats; ``envelope_points``' one-point path, the same operations)
     def contact1(self, px, py, nx, ny, piece=None):
         R = self.R
-        C = _nearer_circle_crossing1(px, py, nx, ny, 0.0, R, R)
+        C = nearer_circle_crossing1(px, py, nx, ny, 0.0, R, R)
         return None if C is None else R * float(np.arctan2(C[0], R - C[1]))
 
     def pose1(self, s: float):
@@ -378,7 +364,7 @@ def envelope_points(piece, u, cutter, gear):
     """
     if type(u) is np.ndarray and u.shape == (1,) and hasattr(piece, "point1") and hasattr(cutter, "contact1") \
             and hasattr(gear, "pose1"):
-        out = _envelope_point1(piece, float(u[0]), cutter, gear)
+        out = envelope_point1(piece, float(u[0]), cutter, gear)
         if out is not None:
             return out
     P = piece.point(u)
@@ -389,31 +375,6 @@ def envelope_points(piece, u, cutter, gear):
     theta = gear.angle(s) - cutter.angle(s)
     X = gear.point(s) + _rot(theta, P - cutter.point(s))
     return X, s
-
-
-def _envelope_point1(piece, u: float, cutter, gear):
-    """``envelope_points`` for one cutter parameter u (the solvers' one-point calls): the same
-    operations on floats (``math``; numpy only for arctan / arctan2 / the arc-length spline), so
-    bit-identical; None where the array path is needed (not closed-form, not finite, or an error
-    to raise)."""
-    if not math.isfinite(u):
-        return None
-    px, py = piece.point1(u)
-    tx, ty = piece.tangent1(u)
-    n = math.sqrt(tx * tx + ty * ty)
-    tx, ty = tx / n, ty / n
-    s = cutter.contact1(px, py, -ty, tx, piece)
-    if s is None or not math.isfinite(s):
-        return None
-    G = gear.pose1(s)
-    if G is None:
-        return None
-    gx, gy, tau = G
-    cx, cy, ca = cutter.pose1(s)
-    theta = tau - ca
-    c, sn = math.cos(theta), math.sin(theta)
-    vx, vy = px - cx, py - cy
-    return np.array([[gx + (c * vx - sn * vy), gy + (sn * vx + c * vy)]]), np.array([s])
 
 
 @dataclass(frozen=True)
