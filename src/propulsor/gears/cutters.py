@@ -51,6 +51,13 @@ class LinePiece:
         u = np.atleast_1d(np.asarray(u, float))
         return np.repeat(np.asarray(self.d, float)[None, :], len(u), axis=0)
 
+    def point1(self, u: float) -> tuple[float, float]:
+        """``point`` at one float u, as (x, y) floats (the same operations)."""
+        return float(self.p0[0]) + u * float(self.d[0]), float(self.p0[1]) + u * float(self.d[1])
+
+    def tangent1(self, u: float) -> tuple[float, float]:
+        return float(self.d[0]), float(self.d[1])
+
 
 @dataclass(frozen=True)
 class ArcPiece:
@@ -66,6 +73,13 @@ class ArcPiece:
     def tangent(self, a):
         a = np.atleast_1d(np.asarray(a, float))
         return np.column_stack([-np.sin(a), np.cos(a)])
+
+    def point1(self, a: float) -> tuple[float, float]:
+        """``point`` at one float a, as (x, y) floats (the same operations; math.cos = np.cos here)."""
+        return self.c[0] + self.rho * math.cos(a), self.c[1] + self.rho * math.sin(a)
+
+    def tangent1(self, a: float) -> tuple[float, float]:
+        return -math.sin(a), math.cos(a)
 
 
 @dataclass(frozen=True)
@@ -95,6 +109,18 @@ class InvolutePiece:
         psi = self.beta - (t - np.arctan(t))
         return np.column_stack([np.sin(psi) - t * np.cos(psi), np.cos(psi) + t * np.sin(psi)])
 
+    def point1(self, t: float) -> tuple[float, float]:
+        """``point`` at one float t, as (x, y) floats (the same operations; numpy's arctan, which
+        differs from math.atan)."""
+        r = self.r_b * math.sqrt(1.0 + t * t)
+        psi = self.beta - (t - float(np.arctan(t)))
+        return r * math.sin(psi), r * math.cos(psi)
+
+    def tangent1(self, t: float) -> tuple[float, float]:
+        psi = self.beta - (t - float(np.arctan(t)))
+        c, s = math.cos(psi), math.sin(psi)
+        return s - t * c, c + t * s
+
 
 @dataclass(frozen=True)
 class PlacedPiece:
@@ -122,6 +148,20 @@ class PlacedPiece:
     @property
     def conjugate_to_rack(self) -> bool:
         return getattr(self.piece, "conjugate_to_rack", False)
+
+    def _rot1(self, x: float, y: float) -> tuple[float, float]:
+        c, s = math.cos(self.angle), math.sin(self.angle)
+        return c * x - s * y, s * x + c * y
+
+    def point1(self, u: float) -> tuple[float, float]:
+        """``point`` at one float u, as (x, y) floats (the same operations)."""
+        x, y = self._rot1(*self.piece.point1(u))
+        x, y = x + float(self.offset[0]), y + float(self.offset[1])
+        return (x * -1.0, y * 1.0) if self.mirror else (x, y)
+
+    def tangent1(self, u: float) -> tuple[float, float]:
+        x, y = self._rot1(*self.piece.tangent1(u))
+        return (x * -1.0, y * 1.0) if self.mirror else (x, y)
 
 
 

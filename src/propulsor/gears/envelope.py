@@ -38,6 +38,7 @@ import numpy as np
 from scipy.optimize import brentq, fsolve
 
 from ..errors import InputError
+from .envelope_point import envelope_point1, nearer_circle_crossing1
 from ..policy import (ENVELOPE_SAMPLES_PER_FLANK, CUSP_XATOL_REL, FD_STEP_REL, ROUNDING_TOL, SHAPER_MESH_FD_STEP_MM,
                       SHAPER_MESH_ITERATIONS, SHAPER_MESH_RESIDUAL, SHAPER_MESH_SAMPLES, SHAPER_MESH_STOP_MM,
                       SHAPER_MESH_WINDOW_R, SOLVE_RESIDUAL_MM)
@@ -89,6 +90,16 @@ class RackCentrode:
         lam = -P[:, 1] / N[:, 1]
         return P[:, 0] + lam * N[:, 0]
 
+    # one cutter point (floats; ``envelope_points``' one-point path, the same operations)
+    def contact1(self, px, py, nx, ny, piece=None):
+        if ny == 0.0:
+            return None
+        return px + (-py / ny) * nx
+
+    def pose1(self, s: float):
+        """(C_x, C_y, angle) at one rolling arc s."""
+        return s, 0.0, 0.0
+
 
 @dataclass(frozen=True)
 class CircleCentrode:
@@ -134,6 +145,16 @@ class ExternalCircleCentrode:
         to P is the pitch point (involute: contact and pitch point on one ray of the line of action)."""
         C = nearer_circle_crossing(P, N, (0.0, self.R), self.R, "z0", "shaper's")
         return self.R * np.arctan2(C[:, 0], self.R - C[:, 1])
+
+    # one cutter point (floats; ``envelope_points``' one-point path, the same operations)
+    def contact1(self, px, py, nx, ny, piece=None):
+        R = self.R
+        C = nearer_circle_crossing1(px, py, nx, ny, 0.0, R, R)
+        return None if C is None else R * float(np.arctan2(C[0], R - C[1]))
+
+    def pose1(self, s: float):
+        R = self.R
+        return R * math.sin(s / R), R - R * math.cos(s / R), s / R
 
 
 @dataclass(frozen=True)
@@ -185,6 +206,20 @@ class ShaperOnRackCentrode:
     def contact(self, P, N):
         """Shaper-on-line contact (exact on the involute): the normal meets the rolling circle."""
         return ExternalCircleCentrode(self.R).contact(P, N) - self.c
+
+    # one cutter point (floats; ``envelope_points``' one-point path, the same operations)
+    def contact1(self, px, py, nx, ny, piece=None):
+        """``contact_on`` where it is closed-form (e = 0 or a piece conjugate to the rack), else None."""
+        if not (self.e == 0.0 or getattr(piece, "conjugate_to_rack", False)):
+            return None
+        s0 = ExternalCircleCentrode(self.R).contact1(px, py, nx, ny)
+        return None if s0 is None else s0 - self.c
+
+    def pose1(self, s: float):
+        R = self.R
+        b = (s + self.c) / R
+        cb, sb = math.cos(b), math.sin(b)
+        return R * sb - cb * self.c + sb * self.e, R - R * cb - sb * self.c - cb * self.e, b
 
     def _residual(self, s, P, N, gear):
         """(f, lam): f = cross((w + k) Q - w I_sr - k I_rg, N) (zero when the normal of the cutter
@@ -308,6 +343,18 @@ class PitchCurveCentrode:
         d = self.curve.sgn * self.curve.dpoint(self.phi(sg))
         return np.arctan2(d[:, 1], d[:, 0])
 
+    def pose1(self, sg: float):
+        """(G_x, G_y, tangent angle) at one generation arc sg (floats, the operations of ``point``
+        and ``angle``), or None for many tooth centres or a non-finite arc."""
+        if not isinstance(self.s_k, float):
+            return None
+        sgn = self.curve.sgn
+        ph = self.frame.phi1(self.s_k + sgn * sg)
+        if ph is None:
+            return None
+        x, y, dx, dy = self.curve._at1(ph)
+        return x, y, float(np.arctan2(sgn * dy, sgn * dx))
+
 
 def envelope_points(piece, u, cutter, gear):
     """Envelope of one cutter-outline piece in the gear frame.
@@ -315,6 +362,11 @@ def envelope_points(piece, u, cutter, gear):
     For every cutter parameter u: solve the meshing equation for the rolling arc length s,
     then place the cutter point by the pose of that instant.  Returns (X (n,2), s (n,)).
     """
+    if type(u) is np.ndarray and u.shape == (1,) and hasattr(piece, "point1") and hasattr(cutter, "contact1") \
+            and hasattr(gear, "pose1"):
+        out = envelope_point1(piece, float(u[0]), cutter, gear)
+        if out is not None:
+            return out
     P = piece.point(u)
     T = piece.tangent(u)
     T = T / np.linalg.norm(T, axis=1)[:, None]

@@ -23,222 +23,22 @@ windows.  Method background: Litvin & Fuentes-Aznar, Noncircular Gears (2009).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
 from propulsor.errors import InputError, require_finite, require_positive
-from propulsor.laws.walking import LEG_PERIOD, HubSpeedRipple, WalkingLaw, check_n_closes, invert_theta, wrap_leg
-from propulsor.policy import CORNER_SIDE_RAD, MINIMIZE_XATOL, PHI_OF_THETA_TOL_RAD, ROOT_XTOL_FINE, TOOTH_COUNT_TOL
+from propulsor.laws.walking import LEG_PERIOD, HubSpeedRipple, WalkingLaw, check_n_closes
+from propulsor.policy import CORNER_SIDE_RAD, MINIMIZE_XATOL, ROOT_XTOL_FINE, TOOTH_COUNT_TOL
+
+from .smoothed_law import SmoothedWalkingLaw  # the smoothed law, re-exported here for the callers
 
 _GAUSS_X, _GAUSS_W = np.polynomial.legendre.leggauss(96)
 #: samples per smooth piece of one leg when searching curvature / speed extremes
 _SAMPLES_PER_PIECE = 600
 #: default largest smoothing half-width searched (rad of the driven wheel)
 DELTA_MAX_DEFAULT = math.pi / 8
-
-
-# =========================================================================== smoothing
-@dataclass(frozen=True)
-class SmoothedWalkingLaw:
-    """The walking law with a C2, closure-exact blend around every leg hand-over.
-
-    law: the exact WalkingLaw; delta: half-width of the blend window (rad of
-    the driven angle phi) around phi_h = pi/4 + k pi/2, 0 < delta <= pi/4.
-    In the window, with t = phi - phi_h, U_s = c0 + c2 t^2 + c4 t^4 + c6 t^6,
-    (stored as ``coef`` = (a0..a3) of p = sum a_k (t/delta)^(2k)),
-    solved from U_s(delta) = U, U_s'(delta) = U', U_s''(delta) = U'' and
-    integral_{-delta}^{delta} U_s = integral U (the exact law is even in t:
-    U = u + K sin 2|t|, K = 3 b u / A), so the pair closes exactly.
-    """
-
-    law: WalkingLaw
-    delta: float
-    u_h: float | None = None
-    coef: tuple = field(init=False, repr=False)
-    eps: float = field(init=False, default=0.0)
-
-    def __post_init__(self):
-        if not isinstance(self.law, WalkingLaw):
-            raise InputError("law", self.law, "must be a WalkingLaw")
-        d = require_positive("delta", self.delta, "rad")
-        if d > math.pi / 4:
-            raise InputError("delta", self.delta, f"blend half-width must be <= pi/4 = {math.pi / 4:.6f} rad")
-        object.__setattr__(self, "delta", d)
-        u, K = self.law.u, self.K
-        # solved in s = t/delta (well conditioned for small delta): p = sum a_k s^(2k)
-        M = np.array([
-            [1.0, 1.0, 1.0, 1.0],
-            [0.0, 2.0, 4.0, 6.0],
-            [0.0, 2.0, 12.0, 30.0],
-            [1.0, 1.0 / 3, 1.0 / 5, 1.0 / 7],
-        ])
-        rhs = np.array([
-            u + K * math.sin(2 * d),
-            d * 2 * K * math.cos(2 * d),
-            -d * d * 4 * K * math.sin(2 * d),
-            u + K * (1 - math.cos(2 * d)) / (2 * d),
-        ])
-        if self.u_h is None:
-            object.__setattr__(self, "coef", tuple(float(v) for v in np.linalg.solve(M, rhs)))
-        else:
-            self._scaled_blend(M, rhs)
-        t = np.linspace(0.0, d, 2001)
-        p_min = float(np.min(self._p(t)))
-        if not p_min > 0:
-            raise InputError("delta", self.delta, f"blend makes U <= 0 (min {p_min:.4g}); use a smaller delta")
-
-    def _scaled_blend(self, M, rhs) -> None:
-        """The blend with a free hand-over value U_s(phi_h) = u_h (the depth of the hub-speed dip),
-        C2 at the window ends, and closure restored by scaling U by (1 - eps) OUTSIDE the windows
-        (the window's excess integral spread over the whole leg instead of a bump beside the dip):
-        p = p_A - eps p_B, p_A / p_B matching U, U', U'' at the window end (resp. with u_h / 0 at
-        the hand-over), eps = (W_A - E) / (I_leg - E + W_B), W = window integrals, E = that of the
-        exact law, I_leg = n pi / 2 (seed 000 eq. 9/11: the driver angle of one leg)."""
-        u_h = require_positive("u_h", self.u_h)
-        d = self.delta
-        M2 = M.copy()
-        M2[3] = [1.0, 0.0, 0.0, 0.0]
-        a_A = np.linalg.solve(M2, np.array([rhs[0], rhs[1], rhs[2], u_h]))
-        a_B = np.linalg.solve(M2, np.array([rhs[0], rhs[1], rhs[2], 0.0]))
-        w = np.array([1.0, 1.0 / 3, 1.0 / 5, 1.0 / 7]) * 2 * d
-        W_A, W_B = float(w @ a_A), float(w @ a_B)
-        E = 2 * d * rhs[3]
-        I_leg = self.law.n * math.pi / 2
-        eps = (W_A - E) / (I_leg - E + W_B)
-        object.__setattr__(self, "eps", float(eps))
-        object.__setattr__(self, "coef", tuple(float(v) for v in a_A - eps * a_B))
-
-    # ---- forwarded constants ----------------------------------------------------
-    @property
-    def n(self) -> int:
-        return self.law.n
-
-    @property
-    def A(self) -> float:
-        return self.law.A
-
-    @property
-    def u(self) -> float:
-        return self.law.u
-
-    @property
-    def K(self) -> float:
-        """Slope scale of the exact law at hand-over: U = u + K sin 2|t|, K = 3 b u / A."""
-        return 3 * self.law.b * self.law.u / self.law.A
-
-    @property
-    def hub_speed_ratio(self) -> float:
-        """Time-mean v/omega = A/u (unchanged: the blend keeps the leg's driver angle)."""
-        return self.law.hub_speed_ratio
-
-    @property
-    def leg_breakpoints(self) -> tuple:
-        """Leg-local angles w where U_s is only C2 (window ends), with the leg ends."""
-        d = self.delta
-        pts = [-math.pi / 4, -math.pi / 4 + d, math.pi / 4 - d, math.pi / 4]
-        return tuple(sorted(set(pts)))
-
-    # ---- the blend polynomial -----------------------------------------------------
-    def blend(self, t, order: int = 0):
-        """Blend polynomial (order 0), or its 1st / 2nd / -1st (antiderivative, odd) derivative in t.
-
-        p(t) = a0 + a1 s^2 + a2 s^4 + a3 s^6, s = t / delta.
-        """
-        a0, a1, a2, a3 = self.coef
-        d = self.delta
-        s = np.asarray(t, dtype=float) / d
-        s2 = s * s
-        if order == 0:
-            return a0 + s2 * (a1 + s2 * (a2 + s2 * a3))
-        if order == 1:
-            return s * (2 * a1 + s2 * (4 * a2 + 6 * a3 * s2)) / d
-        if order == 2:
-            return (2 * a1 + s2 * (12 * a2 + 30 * a3 * s2)) / (d * d)
-        if order == -1:
-            return d * s * (a0 + s2 * (a1 / 3 + s2 * (a2 / 5 + s2 * a3 / 7)))
-        raise InputError("order", order, "must be -1, 0, 1 or 2")
-
-    def _p(self, t):
-        return self.blend(t, 0)
-
-    def _dp(self, t):
-        return self.blend(t, 1)
-
-    def _d2p(self, t):
-        return self.blend(t, 2)
-
-    def _P(self, t):
-        return self.blend(t, -1)
-
-    def _F(self, t):
-        """Antiderivative of the exact law near hand-over, odd in t: u t + sgn t K (1 - cos 2t)/2."""
-        return self.u * t + np.sign(t) * self.K * (1 - np.cos(2 * t)) / 2
-
-    def _window(self, phi):
-        phi = np.asarray(phi, dtype=float)
-        t = wrap_leg(phi - math.pi / 4)
-        return phi, t, np.abs(t) < self.delta
-
-    # ---- law interface ------------------------------------------------------------
-    def U(self, phi):
-        """Smoothed ratio U_s(phi) (periodic, period pi/2, C2)."""
-        phi, t, inw = self._window(phi)
-        if self.u_h is not None:
-            return np.where(inw, self._p(t), (1.0 - self.eps) * self.law.U(phi))
-        return np.where(inw, self._p(t), self.law.U(phi))
-
-    def dU_dphi(self, phi):
-        phi, t, inw = self._window(phi)
-        if self.u_h is not None:
-            return np.where(inw, self._dp(t), (1.0 - self.eps) * self.law.dU_dphi(phi))
-        return np.where(inw, self._dp(t), self.law.dU_dphi(phi))
-
-    def d2U_dphi2(self, phi):
-        phi, t, inw = self._window(phi)
-        if self.u_h is not None:
-            return np.where(inw, self._d2p(t), (1.0 - self.eps) * self.law.d2U_dphi2(phi))
-        return np.where(inw, self._d2p(t), self.law.d2U_dphi2(phi))
-
-    def theta(self, phi):
-        """theta_s(phi) = integral_0^phi U_s, closed form: exact theta + window correction.
-
-        With a free hand-over value (u_h): (1 - eps) theta + eps I_leg per completed window + the
-        partial window integral of p - (1 - eps) U (window h at pi/4 + h pi/2, t = phi - pi/4 - h pi/2)."""
-        phi, t, inw = self._window(phi)
-        d = self.delta
-        if self.u_h is not None:
-            e = self.eps
-            h = np.round((phi - math.pi / 4 - t) / LEG_PERIOD)
-            done = h + np.where(t >= d, 1.0, 0.0)
-            part = self._P(t) + self._P(d) - (1.0 - e) * (self._F(t) + self._F(d))
-            I_leg = self.law.n * math.pi / 2
-            return (1.0 - e) * self.law.theta(phi) + e * I_leg * done + np.where(inw, part, 0.0)
-        corr = self._P(t) + self._P(d) - self._F(t) - self._F(d)
-        return self.law.theta(phi) + np.where(inw, corr, 0.0)
-
-    def phi_of_theta(self, theta, tol: float = PHI_OF_THETA_TOL_RAD):
-        """Inverse of theta_s(phi) (``walking.invert_theta``)."""
-        theta = np.asarray(theta, dtype=float)
-        return invert_theta(self, theta, theta / self.n, tol, 80)
-
-    def dX01_dphi(self, phi):
-        """Hub speed analogue of the mechanism (seed 000 eq. 2) - unchanged by the gear."""
-        return self.law.dX01_dphi(phi)
-
-    def hub_speed(self, phi):
-        """v / omega = (dX01/dphi) / U_s (mm per rad of the driver)."""
-        return self.dX01_dphi(phi) / self.U(phi)
-
-    @property
-    def windows(self) -> list[tuple[float, float]]:
-        """The blend windows over one driven turn [0, 2 pi): (start, end) in rad."""
-        out = []
-        for k in range(4):
-            h = math.pi / 4 + k * LEG_PERIOD
-            out.append((h - self.delta, h + self.delta))
-        return out
 
 
 def leg_breakpoints(law) -> tuple:
@@ -303,6 +103,11 @@ def hub_speed_ripple(law) -> HubSpeedRipple:
 
 
 # =========================================================================== pitch curves
+def _finite(p) -> bool:
+    """p is one finite real number (a solver's one-point call)."""
+    return isinstance(p, (float, int)) and math.isfinite(p)
+
+
 def _rho(r, dr, d2r):
     """Signed radius of curvature of a polar curve (> 0 convex, < 0 concave)."""
     return (r * r + dr * dr) ** 1.5 / (r * r + 2 * dr * dr - r * d2r)
@@ -355,6 +160,13 @@ class PitchCurves:
     def d2r_H(self, phi):
         U, dU, d2U = self.law.U(phi), self.law.dU_dphi(phi), self.law.d2U_dphi2(phi)
         return self.L * (d2U / (1 + U) ** 2 - 2 * dU * dU / (1 + U) ** 3)
+
+    def pitch1(self, phi: float):
+        """(U, r_H, dr_H) at one finite float phi: the operations of ``law.U``, ``r_H``, ``dr_H`` on
+        an array, in ``math`` (bit-identical; (1 + U)**2 of an array is its square)."""
+        U, dU, _ = self.law.U_derivs1(phi)
+        q = 1 + U
+        return U, self.L * U / q, self.L * dU / (q * q)
 
     def rho_H(self, phi):
         """Signed radius of curvature of the driven pitch curve at phi (mm)."""
@@ -456,22 +268,72 @@ class PitchCurves:
                                   kind="convex" if jump > 0 else "concave"))
         return out
 
+    def _polar_derivatives(self, curve: str, phi: np.ndarray):
+        """(r, r', r'') arrays of curve 'driven' (``r_H``, ``dr_H``, ``d2r_H``) or 'driver' (``r``,
+        ``r_theta``, ``r_thetatheta``) at the angles phi (an array), with U, U', U'' evaluated once:
+        the expressions of those functions."""
+        law, L = self.law, self.L
+        U, dU, d2U = law.U(phi), law.dU_dphi(phi), law.d2U_dphi2(phi)
+        dr_H = L * dU / (1 + U) ** 2
+        d2r_H = L * (d2U / (1 + U) ** 2 - 2 * dU * dU / (1 + U) ** 3)
+        if curve == "driven":
+            return L * U / (1 + U), dr_H, d2r_H
+        r_p, r_pp = -dr_H, -d2r_H
+        return L / (1 + U), -dr_H / U, (r_pp * U - r_p * dU) / U**3
+
+    def polar_derivatives1(self, curve: str, p: float) -> tuple[float, float, float]:
+        """(r, r', r'') of curve 'driven' (``r_H``, ``dr_H``, ``d2r_H``) or 'driver' (``r``,
+        ``r_theta``, ``r_thetatheta``) at one finite float p, for a ``SmoothedWalkingLaw``: the
+        operations those functions do for a scalar phi, in ``math`` (bit-identical).  There U, U',
+        U'' are 0-d arrays, so U**3 is the array power; 1 + U is a numpy scalar, so (1 + U)**k is
+        the scalar (libm) power, as a float's."""
+        law, L = self.law, self.L
+        p = float(p)
+        U, dU, d2U = law.U_derivs1(p)
+        r_H = L * U / (1 + U)
+        dr_H = L * dU / (1 + U) ** 2
+        d2r_H = L * (d2U / (1 + U) ** 2 - 2 * dU * dU / (1 + U) ** 3)
+        if curve == "driven":
+            r, d, dd = r_H, dr_H, d2r_H
+        else:
+            r = L / (1 + U)
+            d = -dr_H / U
+            r_p, r_pp = -dr_H, -d2r_H
+            dd = (r_pp * U - r_p * dU) / float(np.array(U) ** 3)
+        return r, d, dd
+
     def curvature(self, curve: str) -> "CurvatureSummary":
         """Radius-of-curvature summary of one curve ('driven' or 'driver') over the cycle."""
         if curve not in ("driven", "driver"):
             raise InputError("curve", curve, "must be 'driven' or 'driver'")
-        f = self.rho_H if curve == "driven" else self.rho
+        f_arr = self.rho_H if curve == "driven" else self.rho
         if curve == "driven":
-            def den(p):
+            def den_arr(p):
                 r, d, dd = self.r_H(p), self.dr_H(p), self.d2r_H(p)
                 return r * r + 2 * d * d - r * dd
         else:
-            def den(p):
+            def den_arr(p):
                 r, d, dd = self.r(p), self.r_theta(p), self.r_thetatheta(p)
                 return r * r + 2 * d * d - r * dd
+        if isinstance(self.law, SmoothedWalkingLaw):
+            # the solvers' one-point calls (floats) in math, bit-identical (``polar_derivatives1``)
+            def f(p):
+                if not _finite(p):
+                    return f_arr(p)
+                r, d, dd = self.polar_derivatives1(curve, p)
+                return _rho(np.float64(r), d, dd)  # numpy division: +-inf where the denominator is 0
+
+            def den(p):
+                if not _finite(p):
+                    return den_arr(p)
+                r, d, dd = self.polar_derivatives1(curve, p)
+                return r * r + 2 * d * d - r * dd
+        else:
+            f, den = f_arr, den_arr
         phi = _leg_samples(self.law)
-        D = den(phi)
-        rho = f(phi)
+        r, d, dd = self._polar_derivatives(curve, phi)
+        D = r * r + 2 * d * d - r * dd  # = den_arr(phi), rho = f_arr(phi): U, U', U'' computed once
+        rho = _rho(r, d, dd)
         convex = D > 0
         concave = D < 0
         cx = _extreme(f, phi[convex], rho[convex], "min") if np.any(convex) else (math.nan, math.inf)

@@ -74,6 +74,23 @@ class ArcFrame:
         k = np.floor((s - self.S[0]) / self.leg)
         return self._phi_of(s - k * self.leg) + k * LEG_PERIOD
 
+    def phi1(self, s: float):
+        """``phi`` of one float s (the same operations), or None if s is not finite."""
+        if not math.isfinite(s):
+            return None
+        k = float(math.floor((s - self.S[0]) / self.leg))
+        return float(self._phi_of(np.array([s - k * self.leg]))[0]) + k * LEG_PERIOD
+
+
+def _one(phi):
+    """phi as one finite float when it is an array of one element (the solvers' one-point calls),
+    else None (the array path)."""
+    if type(phi) is np.ndarray and phi.shape == (1,):
+        x = float(phi[0])
+        if math.isfinite(x):
+            return x
+    return None
+
 
 class BodyPitchCurve:
     """One gear's pitch curve in its body frame, as a function of the driven angle phi.
@@ -97,11 +114,19 @@ class BodyPitchCurve:
         return self.pc.L - self.pc.r_H(phi), math.pi - self.pc.law.theta(phi)
 
     def point(self, phi):
+        x = _one(phi)
+        if x is not None:
+            px, py, _, _ = self._at1(x)
+            return np.array([[px, py]])
         r, a = self.polar(phi)
         return np.column_stack([r * np.cos(a), r * np.sin(a)])
 
     def dpoint(self, phi):
         """dP/dphi."""
+        x = _one(phi)
+        if x is not None:
+            _, _, dx, dy = self._at1(x)
+            return np.array([[dx, dy]])
         phi = np.atleast_1d(np.asarray(phi, float))
         r, a = self.polar(phi)
         c, s = np.cos(a), np.sin(a)
@@ -113,13 +138,42 @@ class BodyPitchCurve:
 
     def normal(self, phi):
         """Unit outward normal (away from the gear body)."""
+        x = _one(phi)
+        if x is not None:
+            _, _, dx, dy = self._at1(x)
+            nx, ny = self._normal1(dx, dy)
+            return np.array([[nx, ny]])
         d = self.sgn * self.dpoint(phi)
         d = d / np.linalg.norm(d, axis=1)[:, None]
         return np.column_stack([-d[:, 1], d[:, 0]])
 
     def offset(self, phi, h):
         """Equidistant at height h (outwards > 0) - the tip (h > 0) and root (h < 0) curves."""
+        x = _one(phi)
+        if x is not None and isinstance(h, (float, int)):
+            px, py, dx, dy = self._at1(x)
+            nx, ny = self._normal1(dx, dy)
+            return np.array([[px + h * nx, py + h * ny]])
         return self.point(phi) + h * self.normal(phi)
+
+    # ---- one point: the operations of the array functions above on one float, in ``math`` ----
+    def _at1(self, phi: float):
+        """(x, y, dx/dphi, dy/dphi) of the pitch point of driven angle phi (one float)."""
+        pc = self.pc
+        U, r_H, dr_H = pc.pitch1(phi)
+        if self.role == "driven":
+            r, a, dr, da = r_H, phi, dr_H, 1.0
+        else:
+            r, a, dr, da = pc.L - r_H, math.pi - pc.law.theta1(phi), -dr_H, -U
+        c, s = math.cos(a), math.sin(a)
+        return r * c, r * s, dr * c - r * da * s, dr * s + r * da * c
+
+    def _normal1(self, dx: float, dy: float):
+        """Unit outward normal from dP/dphi (``normal``: sgn dP / |dP| turned by +90 degrees)."""
+        sg = self.sgn
+        dx, dy = sg * dx, sg * dy
+        n = math.sqrt(dx * dx + dy * dy)
+        return -(dy / n), dx / n
 
     def rho(self, phi):
         """Signed radius of curvature (> 0 convex) at the pitch point of driven angle phi."""

@@ -38,6 +38,12 @@ def wrap_leg(phi):
     return phi - LEG_PERIOD * np.floor((phi + math.pi / 4) / LEG_PERIOD)
 
 
+def wrap_leg1(phi: float) -> float:
+    """``wrap_leg`` of one finite float: the same operations in ``math`` (bit-identical, without
+    the array overhead; for the one-point calls of the solvers)."""
+    return phi - LEG_PERIOD * math.floor((phi + math.pi / 4) / LEG_PERIOD)
+
+
 def leg_index(phi):
     """Whole number k of leg periods with phi = w + k pi/2, w = wrap_leg(phi)."""
     phi = np.asarray(phi, dtype=float)
@@ -106,6 +112,15 @@ class WalkingLaw:
             raise InputError(
                 "a - b + c", A, "hub height Y01 = a - b + c must be > 0 mm, else the law is not positive"
             )
+        # constants of the hot functions, cached by the expressions the properties / functions use
+        # (not dataclass fields: equality, hashing and repr stay those of (a, b, c, n))
+        object.__setattr__(self, "_A", A)
+        object.__setattr__(self, "_u", self.n * math.pi * A / (A * math.pi + 6 * b))
+        object.__setattr__(self, "_3b", 3 * b)
+        object.__setattr__(self, "_m6bu", -6 * b * self._u)
+        object.__setattr__(self, "_m12bu", -12 * b * self._u)
+        object.__setattr__(self, "_uA", self._u / A)
+        object.__setattr__(self, "_15b", 1.5 * b)
         # min of A + 3b cos 2w over w in [-pi/4, pi/4) is min(A, A + 3b) (cos 2w in [0, 1])
         U_min = self.u * min(A, A + 3 * b) / A
         if not U_min > 0:
@@ -115,7 +130,7 @@ class WalkingLaw:
     @property
     def A(self) -> float:
         """Hub height Y01 = a - b + c (mm), seed 000 eq. 1."""
-        return self.a - self.b + self.c
+        return self._A
 
     @property
     def Y01(self) -> float:
@@ -125,8 +140,7 @@ class WalkingLaw:
     @property
     def u(self) -> float:
         """Reduced ratio coefficient u = n pi A / (A pi + 6 b), seed 000 eq. 10 generalised to n."""
-        A = self.A
-        return self.n * math.pi * A / (A * math.pi + 6 * self.b)
+        return self._u
 
     @property
     def hub_speed_ratio(self) -> float:
@@ -146,19 +160,19 @@ class WalkingLaw:
     # ---- functions of the driven angle phi ------------------------------------
     def dX01_dphi(self, phi):
         """Horizontal hub speed analogue dX01/dphi = A + 3 b cos 2w (mm/rad), seed 000 eq. 2."""
-        return self.A + 3 * self.b * np.cos(2 * wrap_leg(phi))
+        return self._A + self._3b * np.cos(2 * wrap_leg(phi))
 
     def U(self, phi):
         """Gear ratio U = d theta / d phi = u (A + 3b cos 2w)/A, seed 000 eq. 15 (periodic)."""
-        return self.u * self.dX01_dphi(phi) / self.A
+        return self._u * (self._A + self._3b * np.cos(2 * wrap_leg(phi))) / self._A
 
     def dU_dphi(self, phi):
         """dU/dphi = -6 b u sin 2w / A (jumps at w = +-pi/4: docs/architecture.md, «drive law»)."""
-        return -6 * self.b * self.u * np.sin(2 * wrap_leg(phi)) / self.A
+        return self._m6bu * np.sin(2 * wrap_leg(phi)) / self._A
 
     def d2U_dphi2(self, phi):
         """d2U/dphi2 = -12 b u cos 2w / A."""
-        return -12 * self.b * self.u * np.cos(2 * wrap_leg(phi)) / self.A
+        return self._m12bu * np.cos(2 * wrap_leg(phi)) / self._A
 
     def theta(self, phi):
         """Driver angle theta(phi) = integral_0^phi U dphi, exact closed form with the wrap.
@@ -169,7 +183,21 @@ class WalkingLaw:
         w = wrap_leg(phi)
         k = leg_index(phi)
         phi = np.asarray(phi, dtype=float)
-        return (self.u / self.A) * (self.A * phi + 1.5 * self.b * np.sin(2 * w) + 3 * self.b * k)
+        return self._uA * (self._A * phi + self._15b * np.sin(2 * w) + self._3b * k)
+
+    # ---- the same functions of one finite float phi (``math``, bit-identical to the above) ----
+    def U_derivs1(self, phi: float) -> tuple[float, float, float]:
+        """(``U``, ``dU_dphi``, ``d2U_dphi2``) at one driven angle (float)."""
+        w2 = 2 * wrap_leg1(phi)
+        c = math.cos(w2)
+        A = self._A
+        return self._u * (A + self._3b * c) / A, self._m6bu * math.sin(w2) / A, self._m12bu * c / A
+
+    def theta1(self, phi: float) -> float:
+        """``theta`` at one driven angle (float)."""
+        k = math.floor((phi + math.pi / 4) / LEG_PERIOD)
+        w = phi - LEG_PERIOD * k
+        return self._uA * (self._A * phi + self._15b * math.sin(2 * w) + self._3b * k)
 
     def hub_speed(self, phi):
         """v / omega = (dX01/dphi) / U (mm per rad of the driver); constant = A/u for this law."""

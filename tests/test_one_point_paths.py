@@ -1,0 +1,98 @@
+"""The one-point paths of the drive law, the pitch curves and the envelope (the solvers' calls with one
+float or a one-element array, evaluated in ``math``) give the array functions' results bit for bit:
+the same operations in the same order, so every generated tooth and output file stays byte-identical
+(issue 13).  Light: a few thousand evaluations."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from propulsor.gears.cutters import ShaperCutter
+from propulsor.gears.envelope import PitchCurveCentrode, envelope_points
+from propulsor.gears.involute import BasicRack
+from propulsor.gears.noncircular import PitchCurves, SmoothedWalkingLaw
+from propulsor.gears.noncircular_teeth import ToothSpec
+from propulsor.gears.pitch_frame import ArcFrame, BodyPitchCurve
+from propulsor.laws.walking import SEED_000, SEED_002, WalkingLaw
+
+
+def _laws():
+    for seed in (SEED_000, SEED_002):
+        law = WalkingLaw(**seed)
+        yield law
+        yield SmoothedWalkingLaw(law, 0.2)
+        yield SmoothedWalkingLaw(law, 0.12, u_h=0.75 * law.u)
+
+
+def _angles(law, n=120):
+    """Random driven angles over several turns plus the window ends and hand-overs (and their
+    neighbouring floats), where the branches switch."""
+    rng = np.random.default_rng(13)
+    d = getattr(law, "delta", 0.1)
+    edges = []
+    for k in range(-5, 6):
+        h = math.pi / 4 + k * math.pi / 2
+        for x in (h, h - d, h + d):
+            edges += [x, float(np.nextafter(x, 10.0)), float(np.nextafter(x, -10.0))]
+    return np.concatenate([rng.uniform(-9.0, 9.0, n), edges, [0.0, -0.0]])
+
+
+def _same(a, b) -> bool:
+    return np.asarray(a, float).tobytes() == np.asarray(b, float).tobytes()
+
+
+@pytest.mark.parametrize("law", list(_laws()), ids=lambda lw: type(lw).__name__)
+def test_law_one_point_equals_array(law):
+    phi = _angles(law)
+    U, dU, d2U, th = law.U(phi), law.dU_dphi(phi), law.d2U_dphi2(phi), law.theta(phi)
+    for i, p in enumerate(phi):
+        assert _same(law.U_derivs1(float(p)), (U[i], dU[i], d2U[i])), p
+        assert _same(law.theta1(float(p)), th[i]), p
+
+
+@pytest.mark.parametrize("law", list(_laws())[1:3], ids=["blend", "blend_u_h"])
+def test_pitch_curve_one_point_equals_array(law):
+    pc = PitchCurves(law, 160.0)
+    phi = _angles(law, 60)
+    for curve in ("driven", "driver"):
+        fns = (pc.r_H, pc.dr_H, pc.d2r_H) if curve == "driven" else (pc.r, pc.r_theta, pc.r_thetatheta)
+        for p in phi[::3]:
+            # a scalar phi: what rho_H / rho and the curvature search compute (numpy scalar semantics)
+            assert _same(pc.polar_derivatives1(curve, float(p)), tuple(float(f(float(p))) for f in fns)), p
+        whole = pc._polar_derivatives(curve, phi)
+        assert all(_same(w, f(phi)) for w, f in zip(whole, fns))
+    for role in ("driven", "driver"):
+        bc = BodyPitchCurve(pc, role)
+        for p in phi:
+            two = np.array([p, p])  # the array path
+            one = np.array([p])     # the one-point path
+            assert _same(bc.point(one), bc.point(two)[:1])
+            assert _same(bc.dpoint(one), bc.dpoint(two)[:1])
+            assert _same(bc.normal(one), bc.normal(two)[:1])
+            assert _same(bc.offset(one, -2.75), bc.offset(two, -2.75)[:1])
+
+
+def test_envelope_one_point_equals_array():
+    law = SmoothedWalkingLaw(WalkingLaw(**SEED_000), 0.25)
+    pc = PitchCurves(law, 160.0)
+    frame = ArcFrame(pc)
+    rng = np.random.default_rng(5)
+    hits = 0
+    for spec in (ToothSpec(m=4.0, x=0.3, z0=20, thinning_mm=0.05),
+                 ToothSpec(m=4.0, x=-0.3, shaper=ShaperCutter(20, 4.0, 0.1, BasicRack()), thinning_mm=0.05)):
+        tools = spec.rack_tools() + spec.shaper_tools()
+        for role in ("driven", "driver"):
+            curve = BodyPitchCurve(pc, role)
+            for tool in tools:
+                cen = PitchCurveCentrode(curve, frame, float(rng.uniform(0.0, frame.perimeter)))
+                for piece, (a, b) in ((tool.fillet, tool.fillet_range), (tool.flank, tool.flank_range)):
+                    for u in np.linspace(a, b, 9):
+                        X1, s1 = envelope_points(piece, np.array([u]), tool.cutter, cen)
+                        X2, s2 = envelope_points(piece, np.array([u, u]), tool.cutter, cen)
+                        assert X1.shape == (1, 2) and s1.shape == (1,)
+                        assert _same(X1, X2[:1]) and _same(s1, s2[:1]), (role, tool.kind, u)
+                        hits += 1
+    assert hits == 2 * 2 * 4 * 2 * 9
