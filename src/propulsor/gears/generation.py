@@ -18,7 +18,7 @@ centre), which is exactly the envelope of a tool shifted tangentially by thinnin
 along its normal; the span W_k shrinks by thinning·cos α.
 
 Undercut: the fillet trochoid crosses the involute when x < x_min; the boundary of the cut
-region is the fillet up to the crossing, the involute from it (``envelope.trim_crossing``).
+region is the fillet up to the crossing, the involute from it (``undercut.trim_crossing``).
 """
 
 from __future__ import annotations
@@ -31,7 +31,8 @@ import numpy as np
 from ..errors import require, require_finite, require_positive
 from ..policy import MODULE_MATCH_TOL_MM, REL_ROUNDING_TOL
 from .cutters import RackCutter, ShaperCutter
-from .envelope import CircleCentrode, EnvelopeCurve, trim_crossing
+from .envelope import CircleCentrode, EnvelopeCurve
+from .undercut import trim_crossing
 from .involute import BasicRack, inv, inv_inverse
 
 __all__ = ["GeneratedSide", "generate_external_side", "generate_internal_side"]

@@ -43,7 +43,8 @@ from ..policy import (ROOT_BRIDGE_MAX_MODULE, SHAPER_MESH_STOP_MM, FD_STEP_ARC_R
                       SOLVE_RESIDUAL_MM, TIP_HEIGHT_TOL_MM)
 from .cutters import CutterSide, RackCutter, ShaperCutter
 from .envelope import (EnvelopeCurve, ExternalCircleCentrode, PitchCurveCentrode, ShaperOnRackCentrode, envelope_points,
-                       RoundEnvelope, round_envelope, trim_crossing)
+                       RoundEnvelope, round_envelope)
+from .undercut import trim_crossing
 from .involute import BasicRack
 from .noncircular import PitchCurves, whole_pitches
 from .pitch_frame import ArcFrame, BodyPitchCurve
