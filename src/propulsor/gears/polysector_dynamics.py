@@ -119,32 +119,83 @@ class TorsionalModel:
         b2 = 2.0 * self.zeta * math.sqrt(self.c2 * self.J45)
         return b1, b2
 
-    def simulate(self, omega0: float, Pi1, Pi2, t_end: float, n_out: int = 2000, q0=None) -> DynamicsResult:
-        """Integrate eq. 10 (scipy solve_ivp, Radau) with q1 = ω0 t; Pi1(q1), Pi2(q1): Π' and Π'' of the
-        transmission (vectorised callables).  Starts from the static deflection at the mean Π'."""
-        from scipy.integrate import solve_ivp
-
+    def state_matrices(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(A, g, h) of eq. 10 as the first-order system y' = A y + g·acc + h, y = (q2, q3, q̇2, q̇3), acc = Π'' ω0²
+        (the drive's angular acceleration of gear 2)."""
         J3, J45, c1, c2, M4 = self.J3, self.J45, self.c1, self.c2, self.M4
         b1, b2 = self.damping()
         Minv = np.linalg.inv(np.array([[J3 + J45, J45], [J45, J45]]))
+        A = np.zeros((4, 4))
+        A[0, 2] = A[1, 3] = 1.0
+        A[2:, :] = Minv @ np.array([[-c1, 0.0, -b1, 0.0], [0.0, -c2, 0.0, -b2]])
+        g = np.concatenate([[0.0, 0.0], Minv @ np.array([-(J3 + J45), -J45])])
+        h = np.concatenate([[0.0, 0.0], Minv @ np.array([-M4, -M4])])
+        return A, g, h
 
-        def rhs(t, y):
-            q2, q3, v2, v3 = y
-            acc = float(Pi2(omega0 * t)) * omega0 * omega0
-            # J3 (acc + a2) + J45 (acc + a2 + a3) = −M4 − b1 v2 − c1 q2 ; J45 (acc + a2 + a3) = −M4 − b2 v3 − c2 q3
-            rhs_ = np.array([-M4 - b1 * v2 - c1 * q2 - (J3 + J45) * acc, -M4 - b2 * v3 - c2 * q3 - J45 * acc])
-            a2, a3 = Minv @ rhs_
-            return [v2, v3, a2, a3]
+    def simulate(self, omega0: float, Pi1, Pi2, t_end: float, n_out: int = 2000, q0=None,
+                 breaks=None) -> DynamicsResult:
+        """Eq. 10 with q1 = ω0 t from 0 to t_end, sampled at n_out equal steps; Pi1(q1), Pi2(q1): Π' and Π''
+        of the transmission (vectorised callables).  Starts from the static deflection at the mean Π'
+        (or from q0 = (q2, q3, q̇2, q̇3)).
 
-        y0 = [-M4 / c1, -M4 / c2, 0.0, 0.0] if q0 is None else list(q0)
+        breaks: the angles q1 at which Π'' may change its slope, Π'' being linear in between (the second
+        derivative of a cubic spline: its knots).  Given, the linear system is solved exactly: on every
+        step between two breaks or output times the forcing is a ramp, and the state with the ramp and the
+        constant load appended advances by the matrix exponential of that 7 × 7 system.  Without breaks
+        scipy's Radau (rtol 1e-8, the constant Jacobian A) integrates it."""
+        A, g, h = self.state_matrices()
+        J3, J45, M4 = self.J3, self.J45, self.M4
+        y0 = np.array([-M4 / self.c1, -M4 / self.c2, 0.0, 0.0] if q0 is None else q0, float)
         t = np.linspace(0.0, t_end, n_out)
-        sol = solve_ivp(rhs, (0.0, t_end), y0, method="Radau", t_eval=t, rtol=1e-8, atol=1e-12, max_step=t_end / n_out * 4)
-        q2, q3, v2, v3 = sol.y
-        q1 = omega0 * sol.t
+        w2 = omega0 * omega0
+        if breaks is not None:
+            Y = _ramp_forced(A, g, h, y0, t, np.asarray(breaks, float) / omega0, lambda tt: np.asarray(Pi2(omega0 * tt), float) * w2)
+        else:
+            from scipy.integrate import solve_ivp
+
+            def rhs(tt, y):
+                return A @ y + g * (float(Pi2(omega0 * tt)) * w2) + h
+
+            sol = solve_ivp(rhs, (0.0, t_end), y0, method="Radau", t_eval=t, rtol=1e-8, atol=1e-12,
+                            max_step=t_end / n_out * 4, jac=lambda tt, y: A)
+            Y = sol.y.T
+        q2, q3 = Y[:, 0], Y[:, 1]
+        q1 = omega0 * t
         P1, P2 = np.asarray(Pi1(q1), float), np.asarray(Pi2(q1), float)
-        acc = P2 * omega0 * omega0
-        a = np.array([rhs(tt, yy)[2:] for tt, yy in zip(sol.t, sol.y.T)])
+        acc = P2 * w2
+        a = Y @ A[2:].T + np.outer(acc, g[2:]) + h[2:]  # (q̈2, q̈3)
         ph3 = acc + a[:, 0]
         ph4 = ph3 + a[:, 1]
         M1 = self.J2 * P1 * acc + P1 * (J3 * ph3 + J45 * ph4 + M4)
-        return DynamicsResult(sol.t, q1, q2, q3, M1, float(np.mean(P1)) * M4)
+        return DynamicsResult(t, q1, q2, q3, M1, float(np.mean(P1)) * M4)
+
+
+def _ramp_forced(A: np.ndarray, g: np.ndarray, h: np.ndarray, y0: np.ndarray, t_out: np.ndarray,
+                 t_breaks: np.ndarray, forcing) -> np.ndarray:
+    """Exact solution of y' = A y + g f(t) + h at t_out (ascending, t_out[0] the start) for a forcing f that is
+    linear between the times t_breaks: over a step of length H with f = f0 + r τ the augmented state
+    z = (y, f, r, 1) obeys z' = M z (f' = r, r' = 0), so z(t + H) = exp(M H) z(t) (scipy.linalg.expm, the
+    steps' exponentials in one stacked call)."""
+    from scipy.linalg import expm
+
+    n = len(y0)
+    t0, t1 = float(t_out[0]), float(t_out[-1])
+    inner = t_breaks[(t_breaks > t0) & (t_breaks < t1)]
+    T = np.unique(np.concatenate([t_out, inner]))
+    H = np.diff(T)
+    F = forcing(T)
+    M = np.zeros((n + 3, n + 3))
+    M[:n, :n] = A
+    M[:n, n] = g
+    M[:n, n + 2] = h
+    M[n, n + 1] = 1.0
+    E = expm(H[:, None, None] * M[None])
+    slope = np.diff(F) / H
+    out_idx = np.searchsorted(T, t_out)
+    Y = np.empty((len(T), n))
+    Y[0] = y0
+    z = np.empty(n + 3)
+    for k in range(len(H)):
+        z[:n], z[n], z[n + 1], z[n + 2] = Y[k], F[k], slope[k], 1.0
+        Y[k + 1] = E[k, :n] @ z
+    return Y[out_idx]

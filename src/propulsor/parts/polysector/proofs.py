@@ -313,7 +313,9 @@ def dynamics_step(dd: PolysectorDesign, w, built: dict) -> None:
         Pi1 = lambda q1, d1=d1, q=q: 1.0 / q.ratio_nominal + d1(np.mod(q1, per))
         Pi2 = lambda q1, d2=d2: d2(np.mod(q1, per))
         t_end = 2 * math.pi / omega0
-        res = model.simulate(omega0, Pi1, Pi2, t_end, n_out=3000)
+        # Π'' is linear between the spline's knots, repeated every period: solved exactly
+        breaks = (x[None, :] + per * np.arange(int(math.ceil(omega0 * t_end / per)) + 1)[:, None]).ravel()
+        res = model.simulate(omega0, Pi1, Pi2, t_end, n_out=3000, breaks=breaks)
         rows.append([q.k, q.offset, res.M1_static, float(res.M1.max()), float(res.M1.min()), res.torque_factor,
                      float(np.ptp(res.q2)), float(np.ptp(res.q3))])
         w.derived[f"position{q.k}_dynamic_torque_factor"] = res.torque_factor
