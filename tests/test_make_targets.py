@@ -154,3 +154,68 @@ def test_several_part_files_exit_with_the_worst_code(tmp_path, capfd):
     out, err = capfd.readouterr()  # the builds' children write to the file descriptors
     assert "road_wheel.toml is valid" in out and "rows" in err
     assert main(["build", str(good), str(good), "--out", str(tmp_path / "o")]) == 2  # --out names one folder
+
+
+def _fake_build(args, part_file, depfile) -> int:
+    """Stands in for a build: notes when it ran and prints two lines with a pause between them."""
+    import sys as _sys
+
+    log = Path(os.environ["FAKE_BUILD_LOG"])
+    t0 = time.time()
+    print(f"{part_file.stem}: first line", file=_sys.stderr, flush=True)
+    time.sleep(0.3)
+    pool = parallel.fork_pool(2)  # halfway: the build beside it holds the other slot
+    got = pool is not None and pool._max_workers
+    if pool is not None:
+        pool.shutdown(wait=True)
+    time.sleep(0.3)
+    print(f"{part_file.stem}: second line", file=_sys.stderr, flush=True)
+    with open(log, "a") as f:
+        f.write(f"{part_file.stem} {t0} {time.time()} {got}\n")
+    return 1 if part_file.stem == "cam_linear" else 0
+
+
+def test_several_part_files_build_side_by_side_within_the_budget(tmp_path, monkeypatch, capfd):
+    """`propulsor build a b c d` on a budget of 2 processes: two builds at a time, the longest (by its size
+    estimate) first; a build's own workers only take a slot that is free (none while another build holds
+    it); each build's lines come out together; the exit code is the worst."""
+    import propulsor.cli as cli
+
+    log = tmp_path / "log"
+    monkeypatch.setenv("FAKE_BUILD_LOG", str(log))
+    monkeypatch.setenv("PROPULSOR_JOBS", "2")
+    monkeypatch.delenv("MAKEFLAGS", raising=False)
+    monkeypatch.setattr(cli, "_build_one", _fake_build)
+    names = ["road_wheel", "cam_linear", "balancer", "polysector"]
+    assert main(["build", *(str(ROOT / "parts" / f"{n}.toml") for n in names)]) == 1
+    rows = [line.split() for line in log.read_text().splitlines()]
+    assert sorted(r[0] for r in rows) == sorted(names)
+    spans = {r[0]: (float(r[1]), float(r[2])) for r in rows}
+    # never more than two at once; the first two started are the two with the largest estimates
+    for t in [s for s, _ in spans.values()]:
+        assert sum(1 for s, e in spans.values() if s <= t + 1e-3 < e) <= 2
+    started = sorted(spans, key=lambda n: spans[n][0])
+    assert set(started[:2]) == {"balancer", "polysector"} and started[-1] == "road_wheel"
+    # a build that ran beside another got no worker (its slot was taken)...
+    assert all(r[3] == "False" for r in rows)
+    _, err = capfd.readouterr()
+    lines = [ln for ln in err.splitlines() if ": first line" in ln or ": second line" in ln]
+    for k in range(0, len(lines), 2):  # ...and the lines of each build come out together
+        assert lines[k].split(":")[0] == lines[k + 1].split(":")[0]
+    assert parallel.slots_shared() is False
+
+
+def test_slots_shared_cap_the_workers(monkeypatch):
+    monkeypatch.setenv("PROPULSOR_JOBS", "3")
+    sem = parallel.share_slots(3)
+    try:
+        assert sem.acquire(block=False)  # this build's own slot
+        pool = parallel.fork_pool(4)  # up to the budget, but only two slots are free
+        assert pool is not None and pool._max_workers == 2
+        assert not sem.acquire(block=False)
+        assert parallel.start(sum, [1, 2]).result() == 3  # no slot free: runs inline
+        pool.shutdown(wait=True)  # the pool's two slots come back
+        assert sem.acquire(block=False) and sem.acquire(block=False)
+        assert not parallel.threads_ok()
+    finally:
+        parallel.share_slots(None)

@@ -6,7 +6,10 @@ not use OCCT's thread pool (it does not survive a fork): they mesh with parallel
 
 How many: :func:`jobs_budget` (``PROPULSOR_JOBS``, or the cores shared among the builds of a
 ``make -jN``); on a budget of one process everything runs inline, so that ``make -j2`` on two cores
-runs two processes.
+runs two processes.  The builds of several part files in one command run side by side and share
+that budget as process slots (:func:`share_slots`): a build's own process holds one, and each
+worker it forks takes one more when one is free (else the work runs inline), so the processes of
+all the builds never outnumber the budget.
 
 Workers never outlive the build: each asks the kernel for SIGKILL when its parent dies
 (``PR_SET_PDEATHSIG``, Linux) and leaves SIGINT to the parent, which stops them with
@@ -21,12 +24,15 @@ import ctypes
 import multiprocessing as mp
 import os
 import signal
+import threading
 import weakref
 from concurrent.futures import ProcessPoolExecutor
 
 _PR_SET_PDEATHSIG = 1
 _POOLS: "weakref.WeakSet[ProcessPoolExecutor]" = weakref.WeakSet()
 _CLOSE_IN_WORKERS: set[int] = set()
+#: the process slots shared by the builds of one command (a semaphore inherited through fork), or None
+_SLOTS = None
 
 
 class Done:
@@ -69,6 +75,41 @@ def jobs_budget() -> int:
     return max(1, cores // n) if n > 1 else 1
 
 
+def share_slots(n: int | None):
+    """Make `n` process slots shared by every process forked from now on (None: stop sharing); returns
+    the semaphore (the parent takes a slot for each build it forks and gives it back when the build has
+    ended)."""
+    global _SLOTS
+    _SLOTS = None if n is None else mp.get_context("fork").Semaphore(n)
+    return _SLOTS
+
+
+def slots_shared() -> bool:
+    return _SLOTS is not None
+
+
+def _take_slots(wanted: int) -> int:
+    """Up to `wanted` free shared slots, without waiting (all of them when none are shared)."""
+    if _SLOTS is None:
+        return wanted
+    k = 0
+    while k < wanted and _SLOTS.acquire(block=False):
+        k += 1
+    return k
+
+
+def _give_slots(k: int) -> None:
+    if _SLOTS is not None:
+        for _ in range(k):
+            _SLOTS.release()
+
+
+def threads_ok() -> bool:
+    """Whether this build may run OCCT's thread pool (BRepMesh in parallel): on a budget above one
+    process, unless the budget's slots are shared with other builds."""
+    return jobs_budget() > 1 and _SLOTS is None
+
+
 def worker_cap(wanted: int) -> int:
     """Forked workers a build may start beside itself: none on a budget of one process, else up to
     the budget."""
@@ -106,14 +147,38 @@ def _worker_init(parent_pid: int, close_fds: tuple[int, ...]) -> None:
             pass
 
 
+class _SlotPool(ProcessPoolExecutor):
+    """A pool of forked workers holding shared process slots until it is shut down (waiting) or, for a
+    single job (:func:`start`), until that job is done."""
+
+    def __init__(self, slots: int, **kw):
+        super().__init__(**kw)
+        self._slots = slots
+        self._slot_lock = threading.Lock()
+
+    def give_back(self) -> None:
+        with self._slot_lock:
+            k, self._slots = self._slots, 0
+        _give_slots(k)
+
+    def shutdown(self, wait: bool = True, *, cancel_futures: bool = False) -> None:
+        super().shutdown(wait=wait, cancel_futures=cancel_futures)
+        if wait:
+            self.give_back()
+
+
 def fork_pool(workers: int) -> ProcessPoolExecutor | None:
-    """A pool of at most `workers` forked workers (:func:`worker_cap`), or None where fork is not
-    available or the build's budget allows no worker (the work then runs inline)."""
+    """A pool of at most `workers` forked workers (:func:`worker_cap`, and no more than the shared slots
+    free now), or None where fork is not available or the build's budget allows no worker (the work
+    then runs inline)."""
     workers = worker_cap(workers)
     if not can_fork() or workers < 1:
         return None
-    pool = ProcessPoolExecutor(max_workers=workers, mp_context=mp.get_context("fork"),
-                               initializer=_worker_init, initargs=(os.getpid(), tuple(sorted(_CLOSE_IN_WORKERS))))
+    workers = _take_slots(workers)
+    if workers < 1:
+        return None
+    pool = _SlotPool(workers if _SLOTS is not None else 0, max_workers=workers, mp_context=mp.get_context("fork"),
+                     initializer=_worker_init, initargs=(os.getpid(), tuple(sorted(_CLOSE_IN_WORKERS))))
     _POOLS.add(pool)
     return pool
 
@@ -138,6 +203,7 @@ def start(fn, *args):
     if pool is None:
         return inline(fn, *args)
     fut = pool.submit(fn, *args)
+    fut.add_done_callback(lambda _f: pool.give_back())
     pool.shutdown(wait=False)
     return fut
 
@@ -154,4 +220,6 @@ def kill_workers() -> None:
             pool.shutdown(wait=False, cancel_futures=True)
         except Exception:  # noqa: BLE001 - a pool whose workers were killed is broken; that is the point
             pass
+        if isinstance(pool, _SlotPool):
+            pool.give_back()
         _POOLS.discard(pool)

@@ -28,7 +28,7 @@ import numpy as np
 
 from ..check import Check
 from ..export.report import unit_from_name  # noqa: F401  (public here too)
-from ..parallel import fork_pool, inline, jobs_budget
+from ..parallel import fork_pool, inline, threads_ok
 from ..params import params_to_dict, read_part_meta
 
 
@@ -58,7 +58,7 @@ def solid_files_and_checks(folder: str, name: str, solid, expected_genus, volume
     write_step(solid, step, name)
     checks.append(step_roundtrip_check(solid, step, name))
     # OCCT's mesher threads only in a build allowed more than one process and not in a forked worker
-    mesh = tessellate(solid, parallel=not forked and jobs_budget() > 1)
+    mesh = tessellate(solid, parallel=not forked and threads_ok())
     write_stl(mesh, folder / f"{name}.stl")
     write_3mf(mesh, folder / f"{name}.3mf", name)
     checks += mesh_checks(mesh, name, expected_genus=expected_genus, brep_volume=volume)
@@ -71,7 +71,7 @@ def mesh_of(solid, forked: bool):
     """(vertices, faces) of a solid that is in an assembly but has no files of its own."""
     from ..export.mesh import tessellate
 
-    mesh = tessellate(solid, parallel=not forked and jobs_budget() > 1)
+    mesh = tessellate(solid, parallel=not forked and threads_ok())
     return np.asarray(mesh.vertices, np.float64), np.asarray(mesh.faces, np.int64)
 
 

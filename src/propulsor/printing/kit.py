@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..check import Check
-from ..parallel import fork_pool, inline, jobs_budget
+from ..parallel import fork_pool, inline, threads_ok
 from .layout import lay_flat, pack, placed
 from .printers import Printer
 from .scale import ScaleChoice
@@ -181,7 +181,7 @@ def _printed_piece(solid, name: str, genus, chamfer: float, layer: float, forked
     from ..export.mesh import to_trimesh
     from .chamfer import chamfer_first_layers
 
-    mesh = to_trimesh(solid, parallel=not forked and jobs_budget() > 1)
+    mesh = to_trimesh(solid, parallel=not forked and threads_ok())
     printed = chamfer_first_layers(lay_flat(mesh)[0], chamfer, layer, name)
     return mesh, printed, mesh_checks(printed, name, expected_genus=genus)
 
