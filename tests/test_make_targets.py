@@ -178,7 +178,8 @@ def _fake_build(args, part_file, depfile) -> int:
 def test_several_part_files_build_side_by_side_within_the_budget(tmp_path, monkeypatch, capfd):
     """`propulsor build a b c d` on a budget of 2 processes: two builds at a time, the longest (by its size
     estimate) first; a build's own workers only take a slot that is free (none while another build holds
-    it); each build's lines come out together; the exit code is the worst."""
+    it, none while builds wait for one); each build's lines come out together; the exit code is the
+    worst."""
     import propulsor.cli as cli
 
     log = tmp_path / "log"
@@ -210,6 +211,8 @@ def test_slots_shared_cap_the_workers(monkeypatch):
     sem = parallel.share_slots(3)
     try:
         assert sem.acquire(block=False)  # this build's own slot
+        assert parallel.fork_pool(4) is None  # builds are still waiting for slots: no worker takes one
+        parallel.open_slots_to_workers()
         pool = parallel.fork_pool(4)  # up to the budget, but only two slots are free
         assert pool is not None and pool._max_workers == 2
         assert not sem.acquire(block=False)

@@ -251,12 +251,13 @@ def _longest_first(files: list[Path]) -> list[int]:
 
 def _side_by_side(args, files: list[Path], depfile, slots: int) -> list[int]:
     """Build the part files in forked children, as many at once as `slots` (the process budget, shared
-    with the children's own workers: parallel.share_slots), the longest first.  Each child's output is
+    with the children's own workers once the last build has started: parallel.share_slots), the longest
+    first.  Each child's output is
     held in a temporary file and written out whole when it ends, so that the lines of two builds do
     not interleave.  A signal stops every build."""
     import tempfile
 
-    from .parallel import share_slots
+    from .parallel import open_slots_to_workers, share_slots
 
     sem = share_slots(slots)
     pending = _longest_first(files)
@@ -275,6 +276,8 @@ def _side_by_side(args, files: list[Path], depfile, slots: int) -> list[int]:
                     print(f"propulsor: building {files[k]}", file=sys.stderr, flush=True)
                 pid = _fork(_build_one, (args, files[k], depfile(files[k])), out.fileno(), err.fileno())
                 running[pid] = (k, out, err)
+                if not pending:  # the last builds may use the slots the others leave
+                    open_slots_to_workers()
                 continue
             pid, status = os.waitpid(-1, os.WNOHANG if pending else 0)
             if pid == 0 or pid not in running:

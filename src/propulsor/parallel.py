@@ -33,6 +33,7 @@ _POOLS: "weakref.WeakSet[ProcessPoolExecutor]" = weakref.WeakSet()
 _CLOSE_IN_WORKERS: set[int] = set()
 #: the process slots shared by the builds of one command (a semaphore inherited through fork), or None
 _SLOTS = None
+_WORKERS_MAY = None  # an Event: set once the builds' workers may take free slots
 
 
 class Done:
@@ -78,10 +79,20 @@ def jobs_budget() -> int:
 def share_slots(n: int | None):
     """Make `n` process slots shared by every process forked from now on (None: stop sharing); returns
     the semaphore (the parent takes a slot for each build it forks and gives it back when the build has
-    ended)."""
-    global _SLOTS
-    _SLOTS = None if n is None else mp.get_context("fork").Semaphore(n)
+    ended).  Workers take none until :func:`open_slots_to_workers`: while builds wait for a slot a
+    worker would take it from them, and a build waiting for its worker's result leaves its own slot
+    idle."""
+    global _SLOTS, _WORKERS_MAY
+    ctx = mp.get_context("fork")
+    _SLOTS = None if n is None else ctx.Semaphore(n)
+    _WORKERS_MAY = None if n is None else ctx.Event()
     return _SLOTS
+
+
+def open_slots_to_workers() -> None:
+    """Let the builds' workers take the free shared slots (the last build has been started)."""
+    if _WORKERS_MAY is not None:
+        _WORKERS_MAY.set()
 
 
 def slots_shared() -> bool:
@@ -92,6 +103,8 @@ def _take_slots(wanted: int) -> int:
     """Up to `wanted` free shared slots, without waiting (all of them when none are shared)."""
     if _SLOTS is None:
         return wanted
+    if not _WORKERS_MAY.is_set():
+        return 0
     k = 0
     while k < wanted and _SLOTS.acquire(block=False):
         k += 1
