@@ -323,8 +323,14 @@ _PRELOAD = ("propulsor.parts", "propulsor.parts.writer", "propulsor.solids.build
 def _preload() -> None:
     import importlib
 
+    import numpy as np
+
     for name in _PRELOAD:
         importlib.import_module(name)
+    # the compiled narrow phase of the mesh checks: loaded (or compiled, once per machine) before the builds fork
+    from .checks.mesh import self_intersections
+
+    self_intersections(np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]), np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]))
 
 
 def _in_child(fn, *args) -> int:
