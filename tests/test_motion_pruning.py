@@ -1,17 +1,21 @@
-"""The shortcut of the 2D sweeps' clearance (issue 13) gives the very numbers of the full search:
-the disc pruning of ``min_dist_points_to`` (runs of source vertices far from every target vertex
-are skipped before the bounded KD-tree query) returns the same distance, point and foot bit for
-bit, in a single call and over a whole sweep."""
+"""The compiled least distance of the 2D sweeps (checks/motion/nearest.py: a vertex grid, runs of source
+points pruned by their discs) gives the very numbers of the numpy search it replaced
+(tests/nearest_reference.py, with and without its own pruning): the same distance, point and foot bit for
+bit, in single calls (near, touching, far beyond the grid, through holes) and over a whole sweep."""
 
 from __future__ import annotations
 
 import math
 
 import numpy as np
+import pytest
 
 from propulsor.checks.motion import Outline, Pose, rotation_matrices, sweep_pair
 from propulsor.checks.motion import distance, sweep2d
+from propulsor.checks.motion.nearest import grid_of, nearest_edge
 from propulsor.checks.motion.poses import apply_pose
+
+import nearest_reference as ref
 
 
 def _star(n_teeth: int, r_root: float, r_tip: float, n: int = 1200) -> np.ndarray:
@@ -21,37 +25,68 @@ def _star(n_teeth: int, r_root: float, r_tip: float, n: int = 1200) -> np.ndarra
     return np.column_stack([r * np.cos(a), r * np.sin(a)])
 
 
-def test_disc_pruning_gives_the_same_answer_bit_for_bit():
-    tgt = Outline([_star(12, 20.0, 23.0)], 0.1)
+def _same(a, b) -> bool:
+    return a[0] == b[0] and a[1] == b[1] and np.asarray(a[2]).tobytes() == np.asarray(b[2]).tobytes()
+
+
+@pytest.mark.parametrize("holes", [False, True])
+def test_compiled_nearest_equals_the_reference_bit_for_bit(holes):
+    loops = [_star(12, 20.0, 23.0)] + ([_star(5, 6.0, 7.0, 500)[::-1]] if holes else [])
+    tgt = Outline(loops, 0.1)
     src = Outline([_star(9, 14.0, 17.0, 900)], 0.1)
     assert len(src.points) > 8 * distance._CHUNK  # many discs, most of them far
-    pruned_somewhere = False
+    g = grid_of(tgt)
     rng = np.random.default_rng(7)
-    for k in range(40):
+    gaps = np.concatenate([rng.uniform(0.05, 6.0, 30), [1e-9, 0.0, 80.0, 400.0]])  # touching; far off the grid
+    for gap in gaps:
         ang = float(rng.uniform(0, 2 * math.pi))
-        gap = float(rng.uniform(0.05, 6.0))
-        M = Pose(ang, (0.0, 0.0), (23.0 + 17.0 + gap, float(rng.uniform(-3, 3)))).matrix()
+        M = Pose(ang, (0.0, 0.0), (23.0 + 17.0 + float(gap), float(rng.uniform(-3, 3)))).matrix()
         P = apply_pose(M, src.points)
-        full = distance.min_dist_points_to(P, tgt)
-        fast = distance.min_dist_points_to(P, tgt, src)
-        assert full[0] == fast[0] and full[1] == fast[1] and full[2].tobytes() == fast[2].tobytes()
-        lb = tgt.boundary_lower_bound(P)
-        keep = np.nonzero(lb <= full[0] + tgt.half_len)[0]
-        live = distance._live_points(P, keep, tgt, src, full[0] + tgt.half_len)
-        pruned_somewhere |= len(live) < len(keep)
-        assert full[1] in live  # the nearest point is never pruned
-    assert pruned_somewhere  # the shortcut is exercised, not only bypassed
+        full = ref.min_dist_points_to(P, tgt)
+        pruned = ref.min_dist_points_to(P, tgt, src)
+        got = nearest_edge(P, tgt, src)
+        assert _same(full, pruned) and _same(full, got), (gap, full, got)
+    # a body inside the hole (holes: a point set within the target's annulus, near the inner loop)
+    if holes:
+        small = Outline([_star(4, 2.0, 3.0, 300)], 0.1)
+        P = apply_pose(Pose(0.3, (0.0, 0.0), (0.5, 0.0)).matrix(), small.points)
+        assert _same(ref.min_dist_points_to(P, tgt), nearest_edge(P, tgt, small))
+    assert g.nx > 10 and g.ny > 10  # a real grid, not one cell
 
 
-def test_a_sweep_with_pruning_equals_the_sweep_without(monkeypatch):
+def test_a_compiled_sweep_equals_the_reference_sweep(monkeypatch):
     """A toothed wheel turning beside another at a varying gap (far, near and overlapping steps)."""
     A, B = [_star(12, 20.0, 23.0)], [_star(9, 14.0, 17.0, 900)]
     phi = np.linspace(0.0, 2.0 * math.pi, 24, endpoint=False)
     Mb = rotation_matrices(phi, np.column_stack([39.0 + 2.5 * np.cos(phi), np.zeros_like(phi)]))
     fast = sweep_pair(A, Pose(), B, Mb, max_segment=0.2)
     assert (fast.overlap_area > 0).any() and (fast.clearance > 1.0).any()
-    full = distance.min_dist_points_to
-    monkeypatch.setattr(sweep2d, "min_dist_points_to", lambda P, tgt, src=None: full(P, tgt))
+    monkeypatch.setattr(sweep2d, "nearest_edge", lambda P, tgt, src: ref.min_dist_points_to(P, tgt))
     slow = sweep_pair(A, Pose(), B, Mb, max_segment=0.2)
     for f in ("overlap_area", "clearance", "point_a", "point_b"):
         assert getattr(fast, f).tobytes() == getattr(slow, f).tobytes(), f
+
+
+def _brute(P, tgt):
+    """Least point-to-edge distance over every pair (the reference's arithmetic)."""
+    pi = np.repeat(np.arange(len(P)), len(tgt.points))
+    si = np.tile(np.arange(len(tgt.points)), len(P))
+    d, _ = distance._point_seg(P[pi], tgt.seg_a[si], tgt.seg_b[si])
+    return float(d.min())
+
+
+def test_long_edges_foot_mid_edge_and_far_points():
+    """Edges longer than the grid's cells (a plate 200 × 10 mm, edges not split): the nearest point is the middle
+    of an edge whose ends are 100 mm away; a body far outside the grid.  The numpy search kept only points whose
+    lower bound (from the vertices' annulus) was within the first vertex distance, and missed a point nearer to
+    an edge (here 0.5 mm against its 0.8 mm): the compiled one keeps every point within the least vertex
+    distance + half the longest edge of a vertex, and finds the exact least distance."""
+    tgt = Outline([np.array([[0.0, 0.0], [200.0, 0.0], [200.0, 10.0], [0.0, 10.0]])], 1000.0)
+    src = Outline([np.array([[99.0, 10.3], [101.0, 10.6], [100.0, 12.0]])], 1000.0)
+    for dx, dy in ((0.0, 0.0), (37.0, 0.2), (0.0, 300.0), (-400.0, -50.0)):
+        P = src.points + np.array([dx, dy])
+        got = nearest_edge(P, tgt, src)
+        assert got[0] == _brute(P, tgt), (dx, dy, got)
+    assert nearest_edge(src.points, tgt, src)[0] == pytest.approx(0.3)
+    P = src.points + np.array([37.0, 0.2])
+    assert ref.min_dist_points_to(P, tgt)[0] == pytest.approx(0.8)  # the old search's miss

@@ -14,7 +14,8 @@ from ...check import Check
 from ...errors import require, require_positive
 from .outlines import Outline, outline
 from .poses import Pose, apply_pose, compose_poses, inverse_pose, pose_stack
-from .distance import check_record, dist_each_point, min_dist_points_to
+from .distance import check_record, dist_each_point
+from .nearest import nearest_edge
 
 __all__ = ['SweepResult', 'sweep_pair', 'sweep_pair_windowed']
 
@@ -103,9 +104,9 @@ def _clearance_step(A: Outline, B: Outline, Ma: np.ndarray, Mb: np.ndarray, inte
         pw = apply_pose(Ma, V[j:j + 1])[0]
         return -float(depth[j]), pw, pw
     PB = apply_pose(rel_ba, B.points)
-    d1, i1, q1 = min_dist_points_to(PB, A, B)  # B vertices -> A edges (A frame)
+    d1, i1, q1 = nearest_edge(PB, A, B)  # B vertices -> A edges (A frame)
     PA = apply_pose(rel_ab, A.points)
-    d2, i2, q2 = min_dist_points_to(PA, B, A)  # A vertices -> B edges (B frame)
+    d2, i2, q2 = nearest_edge(PA, B, A)  # A vertices -> B edges (B frame)
     if d1 <= d2:
         return d1, apply_pose(Ma, q1[None])[0], apply_pose(Ma, PB[i1:i1 + 1])[0]
     return d2, apply_pose(Mb, PA[i2:i2 + 1])[0], apply_pose(Mb, q2[None])[0]

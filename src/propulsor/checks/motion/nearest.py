@@ -1,0 +1,187 @@
+"""Least distance from a set of points to an outline's edges, compiled with numba (the hot loop of the 2D
+motion sweeps: both directions at every step).
+
+The outline's vertices are bucketed in a uniform grid (built once per outline, body frame).  A point's
+nearest vertex is searched ring by ring of cells around it until the ring's distance exceeds the bound,
+and the source points come in runs of consecutive vertices (distance._CHUNK) each held in a disc about its first
+(radius fixed in the source body): a run whose first point is farther than bound + radius from every
+vertex is skipped whole.
+
+The answer is that of the numpy search before it (tests/nearest_reference.py: the same candidates, the
+pairs with the edges at a candidate's near vertices and their order): ub = least nearest-vertex
+distance; candidates: points within ub + half the longest edge of a vertex; their pairs (point, edge
+starting at each vertex within that radius), then (point, edge ending there); the first pair at the least
+point-to-edge distance.  One difference: the numpy search took as candidates only points whose lower bound
+was within its first vertex bound, and could miss a point nearer to the middle of a long edge than any
+point is to a vertex (tests/test_motion_pruning.py); every point within reach is a candidate here.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+__all__ = ["VertexGrid", "grid_of", "nearest_edge"]
+
+
+class VertexGrid:
+    """Uniform grid of an outline's vertices (body frame): cell (ix, iy) of side h from `origin`; the
+    vertices of cell c are ``items[start[c]:start[c + 1]]`` in ascending order."""
+
+    def __init__(self, points: np.ndarray, seg_b: np.ndarray, seg_len: np.ndarray):
+        lo, hi = points.min(axis=0), points.max(axis=0)
+        span = np.maximum(hi - lo, 1e-9)
+        # about 8 mean edges a cell side, at most 2^21 cells
+        h = max(8.0 * float(np.mean(seg_len)), math.sqrt(float(span[0] * span[1]) / float(1 << 21)), 1e-6)
+        nx, ny = int(span[0] // h) + 1, int(span[1] // h) + 1
+        ix = np.minimum(((points[:, 0] - lo[0]) / h).astype(np.int64), nx - 1)
+        iy = np.minimum(((points[:, 1] - lo[1]) / h).astype(np.int64), ny - 1)
+        cell = ix * ny + iy
+        order = np.argsort(cell, kind="stable")  # ascending vertex index within a cell
+        self.items = order.astype(np.int64)
+        self.start = np.searchsorted(cell[order], np.arange(nx * ny + 1)).astype(np.int64)
+        self.origin = lo.astype(np.float64)
+        self.seg_b = np.ascontiguousarray(seg_b, np.float64)
+        self.h, self.nx, self.ny = float(h), nx, ny
+
+
+def grid_of(outline) -> VertexGrid:
+    """The vertex grid of an Outline (cached on it)."""
+    g = getattr(outline, "_vertex_grid", None)
+    if g is None:
+        g = outline._vertex_grid = VertexGrid(outline.points, outline.seg_b, outline.seg_len)
+    return g
+
+
+@njit(cache=True)
+def _nearest_vertex(px, py, V, ox, oy, h, nx, ny, start, items, bound):
+    """Distance from (px, py) to the nearest vertex if it is <= bound, else inf (cKDTree's arithmetic:
+    the square root of dx² + dy²)."""
+    cx = min(max(int(math.floor((px - ox) / h)), 0), nx - 1)
+    cy = min(max(int(math.floor((py - oy) / h)), 0), ny - 1)
+    best = np.inf
+    r = 0
+    rmax = max(nx, ny)
+    while r <= rmax:
+        if (r - 1) * h > min(best, bound):  # every cell of this ring and beyond is farther
+            break
+        for ix in range(cx - r, cx + r + 1):
+            if ix < 0 or ix >= nx:
+                continue
+            step = 1 if (ix == cx - r or ix == cx + r) else 2 * r
+            iy = cy - r
+            while iy <= cy + r:
+                if 0 <= iy < ny:
+                    c = ix * ny + iy
+                    for k in range(start[c], start[c + 1]):
+                        v = items[k]
+                        dx = px - V[v, 0]
+                        dy = py - V[v, 1]
+                        d = math.sqrt(dx * dx + dy * dy)
+                        if d < best:
+                            best = d
+                iy += step
+        r += 1
+    return best if best <= bound else np.inf
+
+
+@njit(cache=True)
+def _nearest_edge(P, rho, V, B, prev, half_len, ox, oy, h, nx, ny, start, items, chunk, margin, ccx, ccy, r_min, r_max):
+    n = len(P)
+    nch = (n + chunk - 1) // chunk
+    # a lower bound of each point's distance from the outline: the annulus r_min .. r_max about (ccx, ccy) holds it
+    lb = np.empty(n)
+    for i in range(n):
+        dx, dy = P[i, 0] - ccx, P[i, 1] - ccy
+        dc = math.sqrt(dx * dx + dy * dy)
+        lb[i] = max(dc - r_max, r_min - dc)
+    # a first bound: the nearest vertex of the point with the least lower bound
+    i0 = 0
+    for i in range(n):
+        if lb[i] < lb[i0]:
+            i0 = i
+    ub = _nearest_vertex(P[i0, 0], P[i0, 1], V, ox, oy, h, nx, ny, start, items, np.inf)
+    # ub: the least nearest-vertex distance over every point (runs pruned by their discs)
+    # (margin: the rounding of the moved points against their body-frame discs; 1e-9: that of the bounds)
+    for c in range(nch):
+        r0 = c * chunk
+        if lb[r0] - rho[c] > ub + margin:
+            continue
+        dr = _nearest_vertex(P[r0, 0], P[r0, 1], V, ox, oy, h, nx, ny, start, items, ub + rho[c] + 2.0 * margin)
+        if dr - rho[c] > ub + margin:
+            continue
+        for i in range(r0, min(r0 + chunk, n)):
+            if lb[i] > ub + 1e-9 * (1.0 + ub):
+                continue
+            d = _nearest_vertex(P[i, 0], P[i, 1], V, ox, oy, h, nx, ny, start, items, ub)
+            if d < ub:
+                ub = d
+    R = ub + half_len
+    rb = R + 1e-12
+    best_d = np.inf
+    best_key0 = 2
+    best_key1 = 0
+    best_key2 = 0
+    best_i = -1
+    qx_best = np.nan
+    qy_best = np.nan
+    k = -1  # candidate counter (ascending point index)
+    for c in range(nch):
+        r0 = c * chunk
+        if lb[r0] - rho[c] > R + margin:
+            continue
+        dr = _nearest_vertex(P[r0, 0], P[r0, 1], V, ox, oy, h, nx, ny, start, items, R + rho[c] + 2.0 * margin)
+        if dr - rho[c] > R + margin:
+            continue
+        for i in range(r0, min(r0 + chunk, n)):
+            if lb[i] > R + 1e-9 * (1.0 + R):
+                continue
+            px, py = P[i, 0], P[i, 1]
+            if _nearest_vertex(px, py, V, ox, oy, h, nx, ny, start, items, R) > R:
+                continue
+            k += 1
+            # the vertices within rb: cells overlapping the disc
+            ix0 = min(max(int(math.floor((px - rb - ox) / h)), 0), nx - 1)
+            ix1 = min(max(int(math.floor((px + rb - ox) / h)), 0), nx - 1)
+            iy0 = min(max(int(math.floor((py - rb - oy) / h)), 0), ny - 1)
+            iy1 = min(max(int(math.floor((py + rb - oy) / h)), 0), ny - 1)
+            for ix in range(ix0, ix1 + 1):
+                for iy in range(iy0, iy1 + 1):
+                    cc = ix * ny + iy
+                    for kk in range(start[cc], start[cc + 1]):
+                        v = items[kk]
+                        dx = px - V[v, 0]
+                        dy = py - V[v, 1]
+                        if not (math.sqrt(dx * dx + dy * dy) <= rb):
+                            continue
+                        for blk in range(2):
+                            e = v if blk == 0 else prev[v]
+                            ax, ay = V[e, 0], V[e, 1]
+                            sx, sy = B[e, 0] - ax, B[e, 1] - ay
+                            dd = sx * sx + sy * sy
+                            t = ((px - ax) * sx + (py - ay) * sy) / (dd if dd > 0 else 1.0)
+                            t = min(max(t, 0.0), 1.0)
+                            qx, qy = ax + t * sx, ay + t * sy
+                            ex, ey = px - qx, py - qy
+                            d = math.sqrt(ex * ex + ey * ey)
+                            if d < best_d or (d == best_d and (blk, k, v) < (best_key0, best_key1, best_key2)):
+                                best_d, best_key0, best_key1, best_key2 = d, blk, k, v
+                                best_i, qx_best, qy_best = i, qx, qy
+    return best_d, best_i, qx_best, qy_best
+
+
+def nearest_edge(P: np.ndarray, tgt, src) -> tuple[float, int, np.ndarray]:
+    """Least distance from points P (tgt body frame; the vertices of outline `src`, rigidly moved, same order)
+    to tgt's edges: (d, index in P, foot point)."""
+    from ... import policy
+    from .distance import _CHUNK, _chunk_discs
+
+    g = grid_of(tgt)
+    _, rho, _ = _chunk_discs(src)
+    d, i, qx, qy = _nearest_edge(np.ascontiguousarray(P, np.float64), rho, tgt.points, g.seg_b, tgt.prev,
+                                 tgt.half_len, g.origin[0], g.origin[1], g.h, g.nx, g.ny, g.start, g.items, _CHUNK,
+                                 policy.MOTION_PRUNE_MARGIN_MM, float(tgt.center[0]), float(tgt.center[1]),
+                                 tgt.r_min - 1e-9 * (1.0 + tgt.radius), tgt.radius + 1e-9 * (1.0 + tgt.radius))
+    return float(d), int(i), np.array([qx, qy])
