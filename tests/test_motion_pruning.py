@@ -1,7 +1,8 @@
 """The compiled least distance of the 2D sweeps (checks/motion/nearest.py: a vertex grid, runs of source
-points pruned by their discs) gives the very numbers of the numpy search it replaced
-(tests/nearest_reference.py, with and without its own pruning): the same distance, point and foot bit for
-bit, in single calls (near, touching, far beyond the grid, through holes) and over a whole sweep."""
+points pruned by their discs) gives the very numbers of the KD-tree search (distance.min_dist_points_to,
+with and without its own pruning): the same distance, point and foot bit for bit, in single calls (near,
+touching, far beyond the grid where the tree takes over, through holes) and over a whole sweep; and the
+exact least distance where an edge is long."""
 
 from __future__ import annotations
 
@@ -15,7 +16,7 @@ from propulsor.checks.motion import distance, sweep2d
 from propulsor.checks.motion.nearest import grid_of, nearest_edge
 from propulsor.checks.motion.poses import apply_pose
 
-import nearest_reference as ref
+from propulsor.checks.motion import nearest
 
 
 def _star(n_teeth: int, r_root: float, r_tip: float, n: int = 1200) -> np.ndarray:
@@ -42,15 +43,15 @@ def test_compiled_nearest_equals_the_reference_bit_for_bit(holes):
         ang = float(rng.uniform(0, 2 * math.pi))
         M = Pose(ang, (0.0, 0.0), (23.0 + 17.0 + float(gap), float(rng.uniform(-3, 3)))).matrix()
         P = apply_pose(M, src.points)
-        full = ref.min_dist_points_to(P, tgt)
-        pruned = ref.min_dist_points_to(P, tgt, src)
+        full = distance.min_dist_points_to(P, tgt)
+        pruned = distance.min_dist_points_to(P, tgt, src)
         got = nearest_edge(P, tgt, src)
         assert _same(full, pruned) and _same(full, got), (gap, full, got)
     # a body inside the hole (holes: a point set within the target's annulus, near the inner loop)
     if holes:
         small = Outline([_star(4, 2.0, 3.0, 300)], 0.1)
         P = apply_pose(Pose(0.3, (0.0, 0.0), (0.5, 0.0)).matrix(), small.points)
-        assert _same(ref.min_dist_points_to(P, tgt), nearest_edge(P, tgt, small))
+        assert _same(distance.min_dist_points_to(P, tgt), nearest_edge(P, tgt, small))
     assert g.nx > 10 and g.ny > 10  # a real grid, not one cell
 
 
@@ -61,7 +62,7 @@ def test_a_compiled_sweep_equals_the_reference_sweep(monkeypatch):
     Mb = rotation_matrices(phi, np.column_stack([39.0 + 2.5 * np.cos(phi), np.zeros_like(phi)]))
     fast = sweep_pair(A, Pose(), B, Mb, max_segment=0.2)
     assert (fast.overlap_area > 0).any() and (fast.clearance > 1.0).any()
-    monkeypatch.setattr(sweep2d, "nearest_edge", lambda P, tgt, src: ref.min_dist_points_to(P, tgt))
+    monkeypatch.setattr(sweep2d, "nearest_edge", lambda P, tgt, src: distance.min_dist_points_to(P, tgt))
     slow = sweep_pair(A, Pose(), B, Mb, max_segment=0.2)
     for f in ("overlap_area", "clearance", "point_a", "point_b"):
         assert getattr(fast, f).tobytes() == getattr(slow, f).tobytes(), f
@@ -77,16 +78,15 @@ def _brute(P, tgt):
 
 def test_long_edges_foot_mid_edge_and_far_points():
     """Edges longer than the grid's cells (a plate 200 × 10 mm, edges not split): the nearest point is the middle
-    of an edge whose ends are 100 mm away; a body far outside the grid.  The numpy search kept only points whose
+    of an edge whose ends are 100 mm away; a body far outside the grid.  The tree's search kept only points whose
     lower bound (from the vertices' annulus) was within the first vertex distance, and missed a point nearer to
-    an edge (here 0.5 mm against its 0.8 mm): the compiled one keeps every point within the least vertex
-    distance + half the longest edge of a vertex, and finds the exact least distance."""
+    an edge (here 0.5 mm against its 0.8 mm): both now keep every point within the least vertex distance +
+    half the longest edge of a vertex, and find the exact least distance."""
     tgt = Outline([np.array([[0.0, 0.0], [200.0, 0.0], [200.0, 10.0], [0.0, 10.0]])], 1000.0)
     src = Outline([np.array([[99.0, 10.3], [101.0, 10.6], [100.0, 12.0]])], 1000.0)
     for dx, dy in ((0.0, 0.0), (37.0, 0.2), (0.0, 300.0), (-400.0, -50.0)):
         P = src.points + np.array([dx, dy])
         got = nearest_edge(P, tgt, src)
         assert got[0] == _brute(P, tgt), (dx, dy, got)
+        assert distance.min_dist_points_to(P, tgt, src)[0] == got[0]
     assert nearest_edge(src.points, tgt, src)[0] == pytest.approx(0.3)
-    P = src.points + np.array([37.0, 0.2])
-    assert ref.min_dist_points_to(P, tgt)[0] == pytest.approx(0.8)  # the old search's miss

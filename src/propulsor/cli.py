@@ -327,10 +327,15 @@ def _preload() -> None:
 
     for name in _PRELOAD:
         importlib.import_module(name)
-    # the compiled narrow phase of the mesh checks: loaded (or compiled, once per machine) before the builds fork
+    # the compiled kernels (mesh checks, sweeps): loaded (or compiled, once per machine) before the builds fork
     from .checks.mesh import self_intersections
 
     self_intersections(np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]), np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]))
+    from .checks.motion import Outline
+    from .checks.motion.nearest import nearest_edge
+
+    square = Outline([np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])], 0.5)
+    nearest_edge(square.points + 1.5, square, square)
 
 
 def _in_child(fn, *args) -> int:

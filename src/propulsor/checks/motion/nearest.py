@@ -7,13 +7,10 @@ and the source points come in runs of consecutive vertices (distance._CHUNK) eac
 (radius fixed in the source body): a run whose first point is farther than bound + radius from every
 vertex is skipped whole.
 
-The answer is that of the numpy search before it (tests/nearest_reference.py: the same candidates, the
-pairs with the edges at a candidate's near vertices and their order): ub = least nearest-vertex
-distance; candidates: points within ub + half the longest edge of a vertex; their pairs (point, edge
-starting at each vertex within that radius), then (point, edge ending there); the first pair at the least
-point-to-edge distance.  One difference: the numpy search took as candidates only points whose lower bound
-was within its first vertex bound, and could miss a point nearer to the middle of a long edge than any
-point is to a vertex (tests/test_motion_pruning.py); every point within reach is a candidate here.
+The answer is that of the KD-tree search (:func:`propulsor.checks.motion.distance.min_dist_points_to`,
+which takes over when the bodies are far apart): ub = least nearest-vertex distance; candidates: points
+within ub + half the longest edge of a vertex; their pairs (point, edge starting at each vertex within
+that radius), then (point, edge ending there); the first pair at the least point-to-edge distance.
 """
 
 from __future__ import annotations
@@ -88,15 +85,21 @@ def _nearest_vertex(px, py, V, ox, oy, h, nx, ny, start, items, bound):
 
 
 @njit(cache=True)
-def _nearest_edge(P, rho, V, B, prev, half_len, ox, oy, h, nx, ny, start, items, chunk, margin, ccx, ccy, r_min, r_max):
+def _nearest_edge(P, rho, V, B, prev, half_len, ox, oy, h, nx, ny, start, items, chunk, margin, ccx, ccy, r_min, r_max,
+                  far):
     n = len(P)
     nch = (n + chunk - 1) // chunk
-    # a lower bound of each point's distance from the outline: the annulus r_min .. r_max about (ccx, ccy) holds it
+    # a lower bound of each point's distance from the outline's vertices: the annulus r_min .. r_max about
+    # (ccx, ccy) holds them
     lb = np.empty(n)
+    lb_min = np.inf
     for i in range(n):
         dx, dy = P[i, 0] - ccx, P[i, 1] - ccy
         dc = math.sqrt(dx * dx + dy * dy)
         lb[i] = max(dc - r_max, r_min - dc)
+        lb_min = min(lb_min, lb[i])
+    if lb_min > far:  # far apart: the rings of cells to search grow as (distance / cell)²; the tree's turn
+        return -1.0, -1, np.nan, np.nan
     # a first bound: the nearest vertex of the point with the least lower bound
     i0 = 0
     for i in range(n):
@@ -172,16 +175,24 @@ def _nearest_edge(P, rho, V, B, prev, half_len, ox, oy, h, nx, ny, start, items,
     return best_d, best_i, qx_best, qy_best
 
 
+#: bodies farther apart than this many grid cells are left to the KD-tree search (distance.min_dist_points_to)
+FAR_CELLS = 3.0
+
+
 def nearest_edge(P: np.ndarray, tgt, src) -> tuple[float, int, np.ndarray]:
     """Least distance from points P (tgt body frame; the vertices of outline `src`, rigidly moved, same order)
-    to tgt's edges: (d, index in P, foot point)."""
+    to tgt's edges: (d, index in P, foot point) — from the grid, or from distance.min_dist_points_to (the same
+    answer) when every point is more than FAR_CELLS cells from tgt's vertices."""
     from ... import policy
-    from .distance import _CHUNK, _chunk_discs
+    from .distance import _CHUNK, _chunk_discs, min_dist_points_to
 
     g = grid_of(tgt)
     _, rho, _ = _chunk_discs(src)
     d, i, qx, qy = _nearest_edge(np.ascontiguousarray(P, np.float64), rho, tgt.points, g.seg_b, tgt.prev,
                                  tgt.half_len, g.origin[0], g.origin[1], g.h, g.nx, g.ny, g.start, g.items, _CHUNK,
                                  policy.MOTION_PRUNE_MARGIN_MM, float(tgt.center[0]), float(tgt.center[1]),
-                                 tgt.r_min - 1e-9 * (1.0 + tgt.radius), tgt.radius + 1e-9 * (1.0 + tgt.radius))
+                                 tgt.r_min - 1e-9 * (1.0 + tgt.radius), tgt.radius + 1e-9 * (1.0 + tgt.radius),
+                                 FAR_CELLS * g.h)
+    if i < 0:
+        return min_dist_points_to(P, tgt, src)
     return float(d), int(i), np.array([qx, qy])
