@@ -11,8 +11,11 @@ Calibration (CPU s; default part file → variant):
 final drive 28.1 → 39.2 with the sweep density doubled, → 43.8 with every tooth count doubled (before the
 carrier; the carrier solid, its pin sweep and the strength step add 11.5 CPU s: 24.9 → 36.4 user s);
 non-circular pair (seed 002) 25.2 → 26.5 with the proof phases doubled, → 42.6 with the teeth doubled;
-cam mover (exponential law) 18.7 → 32.7 with 4 × the sweep steps; balancer 92.7 → 161.3 with 4 × the
-travel steps, → 143.5 with the sweep chord a quarter (before the damper heat, which adds 10 CPU s); road wheel 17.8.
+cam mover (exponential law) 18.7 → 32.7 with 4 × the sweep steps; balancer 17.1 → 29.6 with 4 × the
+travel steps (2026-11-25: damper heat exact, the drill point's mesh measured, not halved three times; before:
+92.7 → 161.3, and → 143.5 with the sweep chord a quarter, whose exponent is kept); road wheel 17.8.
+The other models were calibrated before issue 13's speed-ups and now overestimate by a fifth to a third;
+the builds of several part files start the longest first by these estimates.
 """
 
 from __future__ import annotations
@@ -75,7 +78,7 @@ def balancer(p, part_file: Path | None = None) -> SizeEstimate:
 
     tor = design_of(p, resolve, part_file).tor  # the build gets this same design
     steps = int(math.ceil(math.degrees(tor.beta_m - tor.beta0) * p.sweep_steps_per_deg)) + 1
-    cpu = 66.0 + 10.0 + 0.01 * p.n_stations + 0.236 * steps * (0.1 / p.sweep_chord_mm) ** 0.84
+    cpu = 12.9 + 0.01 * p.n_stations + 0.0425 * steps * (0.1 / p.sweep_chord_mm) ** 0.84
     return _wall(cpu, f"travel sweep {steps} steps, sweep chord {p.sweep_chord_mm:g} mm")
 
 
@@ -83,14 +86,15 @@ balancer.needs_design = True  # the travel's angles come from the suspension des
 
 def polysector_gear(p, part_file: Path | None = None) -> SizeEstimate:
     """Design, three solids and their checks ∝ teeth of the gear and a sector; one assembly and one DXF per
-    flow per position; the proof ∝ its steps (steps per pitch × pitches per sector period), 0.09 CPU s a
-    step with the outlines within 1e-4 mm, 0.17 s at the blank's own circle (e = 0, outlines within 3e-5 mm
-    to resolve Δi below 1e-6).  Calibrated on parts/polysector.toml: 40 CPU s (proof 19 s)."""
+    flow per position; the proof ∝ its steps (steps per pitch × pitches per sector period), 0.022 CPU s a
+    step with the outlines within 1e-4 mm, 0.041 s at the blank's own circle (e = 0, outlines within 3e-5 mm
+    to resolve Δi below 1e-6).  Calibrated on parts/polysector.toml: 20.5 CPU s, 25.1 with the proof steps
+    doubled (2026-11-25; before the exact dynamics and the compiled sweeps: 40 CPU s, proof 19 s)."""
     per = p.flows * p.sectors_per_flow
     zc = [z for z in p.conditional_teeth if isinstance(z, int) and not isinstance(z, bool)]
     steps = [p.proof_steps_per_pitch * max(1, z // per) for z in zc]
-    proof = sum(n * (0.17 if z == p.blank_teeth else 0.09) for n, z in zip(steps, zc))
-    cpu = 10.0 + 0.15 * (p.gear_teeth + p.sector_teeth) + 1.0 * len(zc) * p.flows + proof
+    proof = sum(n * (0.041 if z == p.blank_teeth else 0.022) for n, z in zip(steps, zc))
+    cpu = 6.2 + 0.093 * (p.gear_teeth + p.sector_teeth) + 0.62 * len(zc) * p.flows + proof
     return _wall(cpu, f"{len(zc)} positions, proof {sum(steps)} steps, {p.gear_teeth + p.sector_teeth} teeth")
 
 
