@@ -141,7 +141,7 @@ def test_several_part_files_each_build_from_the_same_process_state():
     """`propulsor build a.toml b.toml`: each build runs in a child forked from the same state, so that it
     writes what a build on its own writes (OCCT numbers STEP assembly occurrences with a process-wide
     counter: in one process the second part's assembly STEP wrapped its lines differently)."""
-    from propulsor.batch import _in_child
+    from propulsor.cli import _in_child
 
     assert [_in_child(_grow_state) for _ in range(3)] == [1, 1, 1] and _STATE == []
 

@@ -223,19 +223,168 @@ def cmd_build(args) -> int:
     if len(files) == 1:
         return _build_one(args, files[0], args.depfile or (Path(args.depfile_dir) / f"{files[0].stem}.mk"
                                                            if args.depfile_dir else None))
-    from .batch import _in_child, _preload, _side_by_side
+    _preload()
     from .parallel import can_fork, jobs_budget
 
-    _preload()
     def depfile(part_file):
         return Path(args.depfile_dir) / f"{part_file.stem}.mk" if args.depfile_dir else None
 
     slots = jobs_budget()
     if slots > 1 and can_fork() and not args.dry_run:
-        codes = _side_by_side(_build_one, args, files, depfile, slots)
+        codes = _side_by_side(args, files, depfile, slots)
     else:
         codes = [_in_child(_build_one, args, f, depfile(f)) for f in files]
     return max(codes, key=lambda c: (c == EXIT_BAD_INPUT, c))
+
+
+def _longest_first(files: list[Path]) -> list[int]:
+    """Indices of the part files, the longest build first by its size estimate (a file that does not load
+    first of all: it fails at once), so that the builds running side by side end close together."""
+    def key(k):
+        try:
+            return -_load_part(files[k])[2].seconds, k
+        except Exception:  # noqa: BLE001 - its own build reports it
+            return -float("inf"), k
+
+    return sorted(range(len(files)), key=key)
+
+
+def _side_by_side(args, files: list[Path], depfile, slots: int) -> list[int]:
+    """Build the part files in forked children, as many at once as `slots` (the process budget, shared
+    with the children's own workers once the last build has started: parallel.share_slots), the longest
+    first.  Each child's output is
+    held in a temporary file and written out whole when it ends, so that the lines of two builds do
+    not interleave.  A signal stops every build."""
+    import tempfile
+
+    from .parallel import open_slots_to_workers, share_slots
+
+    sem = share_slots(slots)
+    pending = _longest_first(files)
+    running: dict[int, tuple[int, object, object]] = {}
+    codes: list[int] = [EXIT_OK] * len(files)
+    quiet = args.quiet
+    try:
+        while pending or running:
+            # a slot of the budget for the next build; with none running, a slot still held by a worker that
+            # was killed would never come back: start anyway after a moment
+            if pending and (sem.acquire(timeout=0.05) or (not running and not sem.acquire(timeout=2.0) and
+                                                           _started_without_slot())):
+                k = pending.pop(0)
+                out, err = tempfile.TemporaryFile(), tempfile.TemporaryFile()
+                if not quiet:
+                    print(f"propulsor: building {files[k]}", file=sys.stderr, flush=True)
+                pid = _fork(_build_one, (args, files[k], depfile(files[k])), out.fileno(), err.fileno())
+                running[pid] = (k, out, err)
+                if not pending:  # the last builds may use the slots the others leave
+                    open_slots_to_workers()
+                continue
+            pid, status = os.waitpid(-1, os.WNOHANG if pending else 0)
+            if pid == 0 or pid not in running:
+                continue
+            k, out, err = running.pop(pid)
+            sem.release()
+            codes[k] = os.waitstatus_to_exitcode(status)
+            for f, stream in ((out, sys.stdout), (err, sys.stderr)):
+                f.seek(0)
+                stream.flush()
+                os.write(stream.fileno(), f.read())
+                f.close()
+    except Interrupted as exc:
+        for pid in running:
+            try:
+                os.kill(pid, exc.signum)
+            except ProcessLookupError:
+                pass
+        for pid in running:
+            try:
+                os.waitpid(pid, 0)
+            except ChildProcessError:
+                pass
+        raise
+    finally:
+        share_slots(None)
+    return codes
+
+
+def _started_without_slot() -> bool:
+    print("propulsor: no free process slot (a killed worker kept one); building anyway", file=sys.stderr, flush=True)
+    return True
+
+
+#: what every build imports and what costs (OCCT, cadquery, matplotlib, scipy, trimesh, manifold3d):
+#: imported once before the builds of several part files are forked
+_PRELOAD = ("propulsor.parts", "propulsor.parts.writer", "propulsor.solids.build", "propulsor.solids.kernel",
+            "propulsor.export.step", "propulsor.export.mesh", "propulsor.export.plots", "propulsor.export.dxf",
+            "propulsor.checks.mesh", "propulsor.checks.brep", "propulsor.checks.motion", "scipy.optimize",
+            "scipy.integrate", "scipy.interpolate")
+
+
+def _preload() -> None:
+    import importlib
+
+    import numpy as np
+
+    for name in _PRELOAD:
+        importlib.import_module(name)
+    # the compiled kernels (mesh checks, sweeps): loaded (or compiled, once per machine) before the builds fork
+    from .checks.mesh import self_intersections
+
+    self_intersections(np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]), np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]))
+    from .checks.motion import Outline
+    from .checks.motion.nearest import nearest_edge
+
+    square = Outline([np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])], 0.5)
+    nearest_edge(square.points + 1.5, square, square)
+
+
+def _in_child(fn, *args) -> int:
+    """fn(*args) -> exit code, in a forked child (where fork is missing: here).  Each build of several
+    starts from the same process state — OCCT's process-wide counters (the STEP writer numbers assembly
+    occurrences with one), caches, figures — so it writes the same bytes as a build on its own.  A
+    signal to this process is passed on to the child, and waited for."""
+    if not hasattr(os, "fork"):
+        return fn(*args)
+    pid = _fork(fn, args)
+    try:
+        _, status = os.waitpid(pid, 0)
+    except Interrupted as exc:
+        os.kill(pid, exc.signum)
+        os.waitpid(pid, 0)
+        raise
+    return os.waitstatus_to_exitcode(status)
+
+
+def _fork(fn, args, stdout_fd: int | None = None, stderr_fd: int | None = None) -> int:
+    """Fork a child that runs fn(*args) -> exit code (its standard output and error sent to the given file
+    descriptors, when given) and leaves; returns its pid."""
+    sys.stdout.flush()
+    sys.stderr.flush()
+    pid = os.fork()
+    if pid == 0:  # the child: run, report, and leave without unwinding the parent's stack
+        if stdout_fd is not None:
+            os.dup2(stdout_fd, sys.stdout.fileno())
+        if stderr_fd is not None:
+            os.dup2(stderr_fd, sys.stderr.fileno())
+        code = 70
+        try:
+            code = fn(*args)
+        except Interrupted as exc:
+            from .parallel import kill_workers
+
+            _hold_signals()
+            kill_workers()
+            print(f"propulsor: interrupted by {signal.Signals(exc.signum).name}; nothing written", file=sys.stderr)
+            code = 128 + exc.signum
+        except BaseException:  # noqa: BLE001 - reported as the traceback Python would print
+            import traceback
+
+            traceback.print_exc()
+        finally:
+            sys.stdout.flush()
+            sys.stderr.flush()
+            os._exit(code)
+    return pid
 
 
 def _build_one(args, part_file: Path, depfile: Path | None) -> int:
