@@ -85,6 +85,17 @@ def _nearest_vertex(px, py, V, ox, oy, h, nx, ny, start, items, bound):
 
 
 @njit(cache=True)
+def _run_within(P, r0, lb_r0, rho_c, bound, margin, V, ox, oy, h, nx, ny, start, items):
+    """Whether a point of the run starting at r0 (all within rho_c of P[r0]) may lie within `bound` of a vertex:
+    first by the annulus bound of P[r0], then by its nearest vertex (margin: the rounding of the moved points
+    against their body-frame discs)."""
+    if lb_r0 - rho_c > bound + margin:
+        return False
+    dr = _nearest_vertex(P[r0, 0], P[r0, 1], V, ox, oy, h, nx, ny, start, items, bound + rho_c + 2.0 * margin)
+    return not dr - rho_c > bound + margin
+
+
+@njit(cache=True)
 def _nearest_edge(P, rho, V, B, prev, half_len, ox, oy, h, nx, ny, start, items, chunk, margin, ccx, ccy, r_min, r_max,
                   far):
     n = len(P)
@@ -110,10 +121,7 @@ def _nearest_edge(P, rho, V, B, prev, half_len, ox, oy, h, nx, ny, start, items,
     # (margin: the rounding of the moved points against their body-frame discs; 1e-9: that of the bounds)
     for c in range(nch):
         r0 = c * chunk
-        if lb[r0] - rho[c] > ub + margin:
-            continue
-        dr = _nearest_vertex(P[r0, 0], P[r0, 1], V, ox, oy, h, nx, ny, start, items, ub + rho[c] + 2.0 * margin)
-        if dr - rho[c] > ub + margin:
+        if not _run_within(P, r0, lb[r0], rho[c], ub, margin, V, ox, oy, h, nx, ny, start, items):
             continue
         for i in range(r0, min(r0 + chunk, n)):
             if lb[i] > ub + 1e-9 * (1.0 + ub):
@@ -133,10 +141,7 @@ def _nearest_edge(P, rho, V, B, prev, half_len, ox, oy, h, nx, ny, start, items,
     k = -1  # candidate counter (ascending point index)
     for c in range(nch):
         r0 = c * chunk
-        if lb[r0] - rho[c] > R + margin:
-            continue
-        dr = _nearest_vertex(P[r0, 0], P[r0, 1], V, ox, oy, h, nx, ny, start, items, R + rho[c] + 2.0 * margin)
-        if dr - rho[c] > R + margin:
+        if not _run_within(P, r0, lb[r0], rho[c], R, margin, V, ox, oy, h, nx, ny, start, items):
             continue
         for i in range(r0, min(r0 + chunk, n)):
             if lb[i] > R + 1e-9 * (1.0 + R):
