@@ -31,9 +31,11 @@ RANK = {
     "solids": 4,
     "export": 5,
     "checks": 6,
-    "params": 7, "progress": 7, "parallel": 7, "output_folder": 7,
+    "params": 7, "progress": 7, "parallel": 7, "output_folder": 7, "signals": 7,
     "printing": 7.5,
     "parts": 8,
+    "building": 8.5,
+    "batch": 8.7,
     "cli": 9,
 }
 MATH = ("laws", "gears")

@@ -101,9 +101,9 @@ def test_depfile_names_the_files_a_build_read(tmp_path, monkeypatch):
     assert main(["build", "parts/balancer.toml", "--out", "output/b", "--dry-run", "-q",
                  "--depfile", "output/.deps/b.mk"]) == 0
     assert not (tmp_path / "output" / ".deps" / "b.mk").exists()
-    from propulsor.cli import _write_depfile
+    from propulsor.building import write_depfile
 
-    _write_depfile(Path("output/.deps/b.mk"), Path("output/b/manifest.json"),
+    write_depfile(Path("output/.deps/b.mk"), Path("output/b/manifest.json"),
                    (Path("parts/balancer.toml"), tmp_path / "parts" / "road_wheel.toml"))
     assert (tmp_path / "output/.deps/b.mk").read_text() == \
         "output/b/manifest.json: parts/balancer.toml parts/road_wheel.toml\n"
@@ -141,9 +141,9 @@ def test_several_part_files_each_build_from_the_same_process_state():
     """`propulsor build a.toml b.toml`: each build runs in a child forked from the same state, so that it
     writes what a build on its own writes (OCCT numbers STEP assembly occurrences with a process-wide
     counter: in one process the second part's assembly STEP wrapped its lines differently)."""
-    from propulsor.cli import _in_child
+    from propulsor.batch import in_child
 
-    assert [_in_child(_grow_state) for _ in range(3)] == [1, 1, 1] and _STATE == []
+    assert [in_child(_grow_state) for _ in range(3)] == [1, 1, 1] and _STATE == []
 
 
 def test_several_part_files_exit_with_the_worst_code(tmp_path, capfd):
@@ -186,7 +186,7 @@ def test_several_part_files_build_side_by_side_within_the_budget(tmp_path, monke
     monkeypatch.setenv("FAKE_BUILD_LOG", str(log))
     monkeypatch.setenv("PROPULSOR_JOBS", "2")
     monkeypatch.delenv("MAKEFLAGS", raising=False)
-    monkeypatch.setattr(cli, "_build_one", _fake_build)
+    monkeypatch.setattr(cli, "build_one", _fake_build)
     names = ["road_wheel", "cam_linear", "balancer", "polysector"]
     assert main(["build", *(str(ROOT / "parts" / f"{n}.toml") for n in names)]) == 1
     rows = [line.split() for line in log.read_text().splitlines()]

@@ -1,0 +1,163 @@
+"""Several part files built by one command (`propulsor build a.toml b.toml …`, what `make` runs): the
+imports paid once, each build in a child forked from the same state, as many side by side as the
+process budget allows, the longest first."""
+
+from __future__ import annotations
+
+import os
+import signal
+import sys
+from pathlib import Path
+
+from .building import load_part
+from .signals import EXIT_OK, Interrupted, hold_signals
+
+
+def longest_first(files: list[Path]) -> list[int]:
+    """Indices of the part files, the longest build first by its size estimate (a file that does not load
+    first of all: it fails at once), so that the builds running side by side end close together."""
+    def key(k):
+        try:
+            return -load_part(files[k])[2].seconds, k
+        except Exception:  # noqa: BLE001 - its own build reports it
+            return -float("inf"), k
+
+    return sorted(range(len(files)), key=key)
+
+
+def side_by_side(args, files: list[Path], depfile, slots: int, build) -> list[int]:
+    """Build the part files (`build(args, part_file, depfile) -> exit code`) in forked children, as many at once as `slots` (the process budget, shared
+    with the children's own workers once the last build has started: parallel.share_slots), the longest
+    first.  Each child's output is
+    held in a temporary file and written out whole when it ends, so that the lines of two builds do
+    not interleave.  A signal stops every build."""
+    import tempfile
+
+    from .parallel import open_slots_to_workers, share_slots
+
+    sem = share_slots(slots)
+    pending = longest_first(files)
+    running: dict[int, tuple[int, object, object]] = {}
+    codes: list[int] = [EXIT_OK] * len(files)
+    quiet = args.quiet
+    try:
+        while pending or running:
+            # a slot of the budget for the next build; with none running, a slot still held by a worker that
+            # was killed would never come back: start anyway after a moment
+            if pending and (sem.acquire(timeout=0.05) or (not running and not sem.acquire(timeout=2.0) and
+                                                           _started_without_slot())):
+                k = pending.pop(0)
+                out, err = tempfile.TemporaryFile(), tempfile.TemporaryFile()
+                if not quiet:
+                    print(f"propulsor: building {files[k]}", file=sys.stderr, flush=True)
+                pid = fork(build, (args, files[k], depfile(files[k])), out.fileno(), err.fileno())
+                running[pid] = (k, out, err)
+                if not pending:  # the last builds may use the slots the others leave
+                    open_slots_to_workers()
+                continue
+            pid, status = os.waitpid(-1, os.WNOHANG if pending else 0)
+            if pid == 0 or pid not in running:
+                continue
+            k, out, err = running.pop(pid)
+            sem.release()
+            codes[k] = os.waitstatus_to_exitcode(status)
+            for f, stream in ((out, sys.stdout), (err, sys.stderr)):
+                f.seek(0)
+                stream.flush()
+                os.write(stream.fileno(), f.read())
+                f.close()
+    except Interrupted as exc:
+        for pid in running:
+            try:
+                os.kill(pid, exc.signum)
+            except ProcessLookupError:
+                pass
+        for pid in running:
+            try:
+                os.waitpid(pid, 0)
+            except ChildProcessError:
+                pass
+        raise
+    finally:
+        share_slots(None)
+    return codes
+
+
+def _started_without_slot() -> bool:
+    print("propulsor: no free process slot (a killed worker kept one); building anyway", file=sys.stderr, flush=True)
+    return True
+
+
+#: what every build imports and what costs (OCCT, cadquery, matplotlib, scipy, trimesh, manifold3d):
+#: imported once before the builds of several part files are forked
+PRELOAD = ("propulsor.parts", "propulsor.parts.writer", "propulsor.solids.build", "propulsor.solids.kernel",
+            "propulsor.export.step", "propulsor.export.mesh", "propulsor.export.plots", "propulsor.export.dxf",
+            "propulsor.checks.mesh", "propulsor.checks.brep", "propulsor.checks.motion", "scipy.optimize",
+            "scipy.integrate", "scipy.interpolate")
+
+
+def preload() -> None:
+    import importlib
+
+    import numpy as np
+
+    for name in PRELOAD:
+        importlib.import_module(name)
+    # the compiled kernels (mesh checks, sweeps): loaded (or compiled, once per machine) before the builds fork
+    from .checks.mesh import self_intersections
+
+    self_intersections(np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]), np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]))
+    from .checks.motion import Outline
+    from .checks.motion.nearest import nearest_edge
+
+    square = Outline([np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])], 0.5)
+    nearest_edge(square.points + 1.5, square, square)
+
+
+def in_child(fn, *args) -> int:
+    """fn(*args) -> exit code, in a forked child (where fork is missing: here).  Each build of several
+    starts from the same process state — OCCT's process-wide counters (the STEP writer numbers assembly
+    occurrences with one), caches, figures — so it writes the same bytes as a build on its own.  A
+    signal to this process is passed on to the child, and waited for."""
+    if not hasattr(os, "fork"):
+        return fn(*args)
+    pid = fork(fn, args)
+    try:
+        _, status = os.waitpid(pid, 0)
+    except Interrupted as exc:
+        os.kill(pid, exc.signum)
+        os.waitpid(pid, 0)
+        raise
+    return os.waitstatus_to_exitcode(status)
+
+
+def fork(fn, args, stdout_fd: int | None = None, stderr_fd: int | None = None) -> int:
+    """Fork a child that runs fn(*args) -> exit code (its standard output and error sent to the given file
+    descriptors, when given) and leaves; returns its pid."""
+    sys.stdout.flush()
+    sys.stderr.flush()
+    pid = os.fork()
+    if pid == 0:  # the child: run, report, and leave without unwinding the parent's stack
+        if stdout_fd is not None:
+            os.dup2(stdout_fd, sys.stdout.fileno())
+        if stderr_fd is not None:
+            os.dup2(stderr_fd, sys.stderr.fileno())
+        code = 70
+        try:
+            code = fn(*args)
+        except Interrupted as exc:
+            from .parallel import kill_workers
+
+            hold_signals()
+            kill_workers()
+            print(f"propulsor: interrupted by {signal.Signals(exc.signum).name}; nothing written", file=sys.stderr)
+            code = 128 + exc.signum
+        except BaseException:  # noqa: BLE001 - reported as the traceback Python would print
+            import traceback
+
+            traceback.print_exc()
+        finally:
+            sys.stdout.flush()
+            sys.stderr.flush()
+            os._exit(code)
+    return pid

@@ -1,0 +1,172 @@
+"""One part file (or its print kit) built into its output folder: the part file loaded and vetted, the
+build run into a temporary folder under the folder's lock and put in place in one step, the gallery
+beside it rewritten, the make depfile written."""
+
+from __future__ import annotations
+
+import shutil
+import sys
+from pathlib import Path
+
+from .errors import InputError
+from .signals import EXIT_CHECK_FAILED, EXIT_OK, check_signalled, fail_input, hold_signals
+
+def files_read(params, part_file: Path) -> tuple[Path, ...]:
+    """The part file and every file it names (string parameters ending in `_file`, relative to it)."""
+    import dataclasses
+
+    files = [part_file]
+    for f in dataclasses.fields(params):
+        v = getattr(params, f.name)
+        if f.name.endswith("_file") and isinstance(v, str) and v:
+            p = Path(v)
+            files.append(p if p.is_absolute() else part_file.resolve().parent / p)
+    return tuple(files)
+
+
+def load_part(part_file: Path):
+    """(part type, validated parameters, size estimate) of a part file; InputError otherwise."""
+    from .params import load_params, read_part_file
+    from .parts import check_size, get_part_type, size_needs_design
+
+    part_type_name, mapping = read_part_file(part_file)
+    part_type = get_part_type(part_type_name)
+    params = load_params(part_type.params_cls, mapping, validate=False)
+    # the size estimate first where it needs only the values (a design can itself be the long part)
+    early = not size_needs_design(part_type)
+    estimate = check_size(part_type, params, part_file) if early else None
+    if callable(getattr(params, "validate", None)):
+        params.validate()
+    return part_type, params, estimate or check_size(part_type, params, part_file)
+
+
+def write_depfile(depfile: Path, target: Path, files) -> None:
+    """A make rule ``target: files`` (paths relative to the current folder), written in one step: the
+    files a build read besides its part file (``road_wheel_file`` …) become prerequisites of its
+    manifest."""
+    import os
+
+    def rel(p: Path) -> str:
+        return os.path.relpath(Path(p).resolve()).replace(" ", "\\ ")
+
+    depfile.parent.mkdir(parents=True, exist_ok=True)
+    tmp = depfile.with_name(depfile.name + f".tmp{os.getpid()}")
+    tmp.write_text(f"{rel(target)}: {' '.join(rel(f) for f in files)}\n")
+    os.replace(tmp, depfile)
+
+
+def into_output(args, out: Path, keep: tuple[Path, ...], produce, progress, depfile=None) -> int:
+    """Run ``produce(tmp) -> (failures, what)`` into a fresh temporary folder beside `out` with the
+    lock of `out` held, then put the result in place of `out` in one step (or drop it when a check
+    failed and --keep-failed is not given).  Exit codes as in the module docstring."""
+    from . import output_folder as of
+    from .parallel import close_in_workers, kill_workers
+
+    lock = of.OutputLock(out)
+    tmp = None
+    try:
+        of.prepare_parent(out)
+        try:
+            lock.acquire(wait=not args.no_wait,
+                         on_wait=lambda pid: print(f"propulsor: {out} is being built by process {pid}; waiting",
+                                                   file=sys.stderr, flush=True))
+        except of.Busy as busy:
+            raise InputError("--out", str(out), f"is being built by process {busy.pid} (--no-wait)") from None
+        close_in_workers(lock.fd)
+        of.vet_target(out, force=args.force, keep=keep)  # as it is now, after the wait
+        for stale in of.clean_stale(out):
+            progress(f"removed {stale.name}, left by a build that was killed")
+        tmp = of.make_temp(out)
+        failures, what = produce(tmp)
+        check_signalled()  # a swallowed interrupt: the output is not put in place
+        for f in failures:
+            print(f"propulsor: check failed: {f}", file=sys.stderr)
+        if failures and not args.keep_failed:
+            print(f"propulsor: {what}: {len(failures)} check(s) failed; nothing written "
+                  f"(use --keep-failed to keep the outputs)", file=sys.stderr)
+            return EXIT_CHECK_FAILED
+        of.replace(tmp, out)
+        if gallery_folder(out.parent):
+            regenerate_gallery(out.parent, progress)
+        if failures:
+            print(f"propulsor: {what}: built into {out} but {len(failures)} check(s) failed", file=sys.stderr)
+            return EXIT_CHECK_FAILED
+        progress(f"{what}: built into {out}, all checks passed")
+        if depfile:
+            write_depfile(Path(depfile), out / "manifest.json", keep)
+        return EXIT_OK
+    except InputError as exc:
+        return fail_input(exc)
+    finally:
+        hold_signals()
+        kill_workers()
+        if tmp is not None and tmp.exists():
+            shutil.rmtree(tmp, ignore_errors=True)
+        close_in_workers(None)
+        lock.release()
+
+
+def gallery_folder(folder: Path) -> bool:
+    """Whether a build into a sub-folder of `folder` rewrites ``folder/index.html``: the default
+    output folder (./output), or a folder whose gallery propulsor already wrote (``propulsor gallery
+    DIR``).  Elsewhere nothing is written beside the output."""
+    from .export.gallery import INDEX, is_ours
+
+    try:
+        return folder.resolve() == Path("output").resolve() or is_ours(folder / INDEX)
+    except OSError:
+        return False
+
+
+def regenerate_gallery(folder: Path, progress) -> Path | None:
+    """Rewrite ``folder/index.html`` (the gallery of every part built there) after a build put its
+    output in place.  Under the gallery's own lock, so that of two builds finishing together the later
+    one writes a page that shows both; never over an index.html propulsor did not write."""
+    from . import output_folder as of
+    from .export.gallery import INDEX, write_gallery
+
+    lock = of.OutputLock(folder / INDEX)
+    try:
+        lock.acquire(wait=True)
+        path = write_gallery(folder)
+    except Exception as exc:  # noqa: BLE001 - the build's output is in place; the page is not worth failing it
+        print(f"propulsor: the gallery {folder / INDEX} was not written: {type(exc).__name__}: {exc}", file=sys.stderr)
+        return None
+    finally:
+        lock.release()
+    if path is None:
+        progress(f"{folder / INDEX} was not written by propulsor: left as it is")
+    else:
+        progress(f"gallery: {path}")
+    return path
+
+
+def build_one(args, part_file: Path, depfile: Path | None) -> int:
+    from . import output_folder as of
+    from .progress import Progress
+
+    progress = Progress(enabled=not args.quiet, check=check_signalled)
+    try:
+        out = of.vet_target(Path(args.out) if args.out else Path("output") / part_file.stem,
+                            force=args.force, keep=(part_file,))
+        part_type, params, estimate = load_part(part_file)
+        keep = files_read(params, part_file)
+        out = of.vet_target(out, force=args.force, keep=keep)
+    except InputError as exc:
+        return fail_input(exc)
+    if args.dry_run:
+        print(f"{part_type.name}: {part_file} is valid; would build into {out}; "
+              f"size estimate {estimate.text()}")
+        return EXIT_OK
+
+    def produce(tmp: Path):
+        from .parts.writer import OutputWriter
+
+        writer = OutputWriter(tmp, part_type.name, params, progress=progress, source=part_file)
+        try:
+            part_type.build(params, writer)
+            return writer.finish(), part_type.name
+        finally:
+            writer.close()
+
+    return into_output(args, out, keep, produce, progress, depfile)
