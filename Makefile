@@ -42,14 +42,18 @@ lock:
 parts: $(OUT)/.built
 
 # An out-of-date part is queued; then one process builds the queue (the imports are paid once, and
-# each build keeps the machine's cores busy with its forked workers).  $(OUT)/.built is newer than
-# every manifest after a complete run, so a second `make` runs no recipe at all.
+# the builds run side by side, keeping the machine's cores busy).  $(OUT)/.built is newer than every
+# manifest after a complete run, so a second `make` runs no recipe at all.  The build's recipe is
+# marked `+` so that under `make -jN` it gets make's jobserver: its builds and their workers take
+# make's tokens, and never run more processes than make allows (nor than the cores).  `+` also runs a
+# recipe under `make -n`, hence the guard: a dry run only names the queue.
 QUEUE := $(OUT)/.build-queue
-FLUSH = if [ -s $(QUEUE) ]; then q=$$(sort -u $(QUEUE)); rm -f $(QUEUE); \
-	PROPULSOR_JOBS=$${PROPULSOR_JOBS:-$$(nproc)} $(BIN)/propulsor build $$q --depfile-dir $(DEPS); fi
+DRY_RUN = $(findstring n,$(firstword -$(MAKEFLAGS)))
+FLUSH = if [ -s $(QUEUE) ]; then q=$$(sort -u $(QUEUE)); \
+	$(if $(DRY_RUN),printf "would build: %s\n" "$$q";,rm -f $(QUEUE); $(BIN)/propulsor build $$q --depfile-dir $(DEPS);) fi
 
 $(OUT)/.built: $(MANIFESTS)
-	@$(FLUSH)
+	+@$(FLUSH)
 	@touch $@
 
 # the gallery of everything built in output/ (every build also rewrites it when its output is in place)
@@ -61,7 +65,7 @@ gallery: $(STAMP)
 
 # `make <name>`: that part, when out of date
 $(PART_NAMES): %: $(OUT)/%/manifest.json
-	@$(FLUSH)
+	+@$(FLUSH)
 
 $(OUT)/%/manifest.json: parts/%.toml $(SOURCES) $(STAMP)
 	@mkdir -p $(OUT) && echo $< >> $(QUEUE)

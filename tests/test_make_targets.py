@@ -8,6 +8,7 @@ from __future__ import annotations
 import os
 import shutil
 import subprocess
+import sys
 import time
 from pathlib import Path
 
@@ -208,17 +209,125 @@ def test_several_part_files_build_side_by_side_within_the_budget(tmp_path, monke
 
 def test_slots_shared_cap_the_workers(monkeypatch):
     monkeypatch.setenv("PROPULSOR_JOBS", "3")
-    sem = parallel.share_slots(3)
+    slots = parallel.share_slots(3)
     try:
-        assert sem.acquire(block=False)  # this build's own slot
+        own = slots.take(timeout=0)  # this build's own slot
+        assert own is not None
         assert parallel.fork_pool(4) is None  # builds are still waiting for slots: no worker takes one
         parallel.open_slots_to_workers()
         pool = parallel.fork_pool(4)  # up to the budget, but only two slots are free
         assert pool is not None and pool._max_workers == 2
-        assert not sem.acquire(block=False)
+        assert slots.take(timeout=0) is None
         assert parallel.start(sum, [1, 2]).result() == 3  # no slot free: runs inline
         pool.shutdown(wait=True)  # the pool's two slots come back
-        assert sem.acquire(block=False) and sem.acquire(block=False)
+        assert slots.take(timeout=0) is not None and slots.take(timeout=0) is not None
         assert not parallel.threads_ok()
     finally:
         parallel.share_slots(None)
+
+
+@pytest.fixture
+def jobserver_pipe(monkeypatch):
+    """make's jobserver as make 4.3 hands it to a `+` recipe: a pipe holding the free tokens, named in
+    MAKEFLAGS.  Yields a function that puts k tokens in and gives the number of tokens in the pipe."""
+    r, w = os.pipe()
+    monkeypatch.setenv("MAKEFLAGS", f" -j3 --jobserver-auth={r},{w}")
+    monkeypatch.delenv("PROPULSOR_JOBS", raising=False)
+
+    def tokens(put: int = 0) -> int:
+        os.write(w, b"+" * put)
+        os.set_blocking(r, False)
+        try:
+            got = os.read(r, 64)
+        except BlockingIOError:
+            got = b""
+        os.set_blocking(r, True)
+        os.write(w, got)
+        return len(got)
+
+    yield tokens
+    os.close(r)
+    os.close(w)
+
+
+def test_jobserver_tokens_taken_without_waiting_and_given_back(jobserver_pipe):
+    assert jobserver_pipe(2) == 2
+    js = parallel.Jobserver.from_makeflags()
+    assert js is not None
+    got = [js.take(), js.take()]
+    assert got == [b"+", b"+"] and js.take() is None  # make has no third token: no wait
+    assert jobserver_pipe() == 0
+    for tok in got:
+        js.give(tok)
+    assert jobserver_pipe() == 2
+    # a recipe not marked `+` (the descriptors closed, or other files now), -j1, no -j: no jobserver
+    assert parallel.Jobserver.from_makeflags(" -j2 --jobserver-auth=97,98") is None
+    with open(__file__) as f:
+        assert parallel.Jobserver.from_makeflags(f" -j2 --jobserver-auth={f.fileno()},{f.fileno()}") is None
+    assert parallel.Jobserver.from_makeflags(" -j1") is None and parallel.Jobserver.from_makeflags("") is None
+
+
+def test_slots_under_the_jobserver_take_make_s_tokens(jobserver_pipe):
+    """A budget of 4 processes but one token free: the command's own slot and one more; a worker pool gets
+    a slot only while a token is free, and each goes back to make."""
+    jobserver_pipe(1)
+    slots = parallel.share_slots(4, parallel.Jobserver.from_makeflags())
+    try:
+        own = slots.take(timeout=0)
+        assert own == b"" and parallel.jobs_budget() == 4
+        parallel.open_slots_to_workers()
+        pool = parallel.fork_pool(3)
+        assert pool is not None and pool._max_workers == 1 and jobserver_pipe() == 0
+        assert parallel.fork_pool(1) is None  # no token: inline
+        pool.shutdown(wait=True)
+        assert jobserver_pipe() == 1
+        slots.give(own)
+    finally:
+        parallel.share_slots(None)
+
+
+@pytest.mark.parametrize("tokens", [0, 1])
+def test_several_part_files_under_make_s_jobserver(tmp_path, monkeypatch, capfd, jobserver_pipe, tokens):
+    """`make -jN` hands the build command its jobserver: builds run side by side only on make's tokens
+    (cores permitting), and every token goes back to make."""
+    import propulsor.cli as cli
+
+    log = tmp_path / "log"
+    monkeypatch.setenv("FAKE_BUILD_LOG", str(log))
+    monkeypatch.setattr(os, "cpu_count", lambda: 4)
+    monkeypatch.setattr(cli, "build_one", _fake_build)
+    jobserver_pipe(tokens)
+    names = ["road_wheel", "cam_linear", "balancer"]
+    assert main(["build", "-q", *(str(ROOT / "parts" / f"{n}.toml") for n in names)]) == 1
+    rows = [line.split() for line in log.read_text().splitlines()]
+    spans = [(float(r[1]), float(r[2])) for r in rows]
+    at_once = max(sum(1 for s, e in spans if s <= t + 1e-3 < e) for t, _ in spans)
+    assert at_once == 1 + tokens
+    assert jobserver_pipe() == tokens
+    capfd.readouterr()
+
+
+@needs_make
+def test_make_hands_its_jobserver_to_the_build_and_runs_no_recipe_under_n(project):
+    """The build recipe is marked `+`: under `make -j3` the build command finds make's jobserver (2 free
+    tokens); `make -n` with a queue left by an interrupted run names it and builds nothing."""
+    folder, _, now = project
+    fake = folder / ".venv" / "bin" / "propulsor"
+    fake.parent.mkdir(parents=True, exist_ok=True)
+    fake.write_text(f"#!{sys.executable}\nimport sys\nfrom propulsor.parallel import Jobserver\n"
+                    "js = Jobserver.from_makeflags()\ntoks = [t for t in iter(js.take, None)] if js else []\n"
+                    "[js.give(t) for t in toks]\n"
+                    "open('built.txt', 'a').write(f'{len(toks)} {sys.argv[2:-2]}\\n')\n")
+    fake.chmod(0o755)
+    os.utime(folder / "parts" / "cam_linear.toml", (now, now))
+    os.utime(folder / "parts" / "road_wheel.toml", (now, now))
+    env = {k: v for k, v in os.environ.items() if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL")}
+    env["PYTHONPATH"] = str(ROOT / "src")
+    (folder / "output" / ".build-queue").write_text("parts/road_wheel.toml\n")
+    r = subprocess.run(["make", "-n", "parts"], cwd=folder, capture_output=True, text=True, timeout=60, env=env)
+    assert r.returncode == 0 and "would build: parts/road_wheel.toml" in r.stdout, r.stdout + r.stderr
+    assert not (folder / "built.txt").exists()
+    r = subprocess.run(["make", "-j3", "parts"], cwd=folder, capture_output=True, text=True, timeout=60, env=env)
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert (folder / "built.txt").read_text().split("\n")[0] == \
+        "2 ['parts/balancer.toml', 'parts/cam_linear.toml', 'parts/road_wheel.toml']"

@@ -25,41 +25,47 @@ def longest_first(files: list[Path]) -> list[int]:
     return sorted(range(len(files)), key=key)
 
 
-def side_by_side(args, files: list[Path], depfile, slots: int, build) -> list[int]:
-    """Build the part files (`build(args, part_file, depfile) -> exit code`) in forked children, as many at once as `slots` (the process budget, shared
-    with the children's own workers once the last build has started: parallel.share_slots), the longest
-    first.  Each child's output is
-    held in a temporary file and written out whole when it ends, so that the lines of two builds do
-    not interleave.  A signal stops every build."""
+def side_by_side(args, files: list[Path], depfile, slots: int, build, jobserver=None) -> list[int]:
+    """Build the part files (``build(args, part_file, depfile) -> exit code``) in forked children, as many
+    at once as `slots` (the process budget, shared with the children's own workers once the last build
+    has started: parallel.share_slots; under make's `jobserver` a slot beyond the first also takes one
+    of make's tokens), the longest first.  Each child's output is held in a temporary file and written
+    out whole when it ends, so that the lines of two builds do not interleave.  A signal stops every
+    build."""
     import tempfile
 
     from .parallel import open_slots_to_workers, share_slots
 
-    sem = share_slots(slots)
+    pool = share_slots(slots, jobserver)
     pending = longest_first(files)
-    running: dict[int, tuple[int, object, object]] = {}
+    running: dict[int, tuple[int, object, object, bytes | None]] = {}
     codes: list[int] = [EXIT_OK] * len(files)
     quiet = args.quiet
     try:
         while pending or running:
             # a slot of the budget for the next build; with none running, a slot still held by a worker that
             # was killed would never come back: start anyway after a moment
-            if pending and (sem.acquire(timeout=0.05) or (not running and not sem.acquire(timeout=2.0) and
-                                                           _started_without_slot())):
+            slot = pool.take(timeout=0.05) if pending else None
+            if pending and slot is None and not running:
+                slot = pool.take(timeout=2.0)
+                if slot is None:
+                    _started_without_slot()
+            if pending and (slot is not None or not running):
                 k = pending.pop(0)
                 out, err = tempfile.TemporaryFile(), tempfile.TemporaryFile()
                 if not quiet:
                     print(f"propulsor: building {files[k]}", file=sys.stderr, flush=True)
                 pid = fork(build, (args, files[k], depfile(files[k])), out.fileno(), err.fileno())
-                running[pid] = (k, out, err)
+                running[pid] = (k, out, err, slot)
                 if not pending:  # the last builds may use the slots the others leave
                     open_slots_to_workers()
                 continue
             pid, status = os.waitpid(-1, os.WNOHANG if pending else 0)
             if pid == 0 or pid not in running:
                 continue
-            k, out, err = running.pop(pid)
-            sem.release()
+            k, out, err, slot = running.pop(pid)
+            if slot is not None:
+                pool.give(slot)
             codes[k] = os.waitstatus_to_exitcode(status)
             for f, stream in ((out, sys.stdout), (err, sys.stderr)):
                 f.seek(0)
@@ -72,20 +78,36 @@ def side_by_side(args, files: list[Path], depfile, slots: int, build) -> list[in
                 os.kill(pid, exc.signum)
             except ProcessLookupError:
                 pass
-        for pid in running:
+        for pid, (_k, _out, _err, slot) in running.items():
             try:
                 os.waitpid(pid, 0)
             except ChildProcessError:
                 pass
+            if slot:  # make's token goes back to make
+                pool.give(slot)
         raise
     finally:
         share_slots(None)
     return codes
 
 
-def _started_without_slot() -> bool:
+def with_jobserver(fn, slots: int, jobserver):
+    """fn() -> exit code for one build, its workers taking make's tokens (`slots` processes at most)."""
+    from .parallel import open_slots_to_workers, share_slots
+
+    pool = share_slots(slots, jobserver)
+    own = pool.take(timeout=2.0)  # the slot make started this command for
+    open_slots_to_workers()
+    try:
+        return fn()
+    finally:
+        if own is not None:
+            pool.give(own)
+        share_slots(None)
+
+
+def _started_without_slot() -> None:
     print("propulsor: no free process slot (a killed worker kept one); building anyway", file=sys.stderr, flush=True)
-    return True
 
 
 #: what every build imports and what costs (OCCT, cadquery, matplotlib, scipy, trimesh, manifold3d):

@@ -46,20 +46,29 @@ def cmd_build(args) -> int:
         name = "--out" if args.out else "--depfile"
         return fail_input(InputError(name, args.out or args.depfile, f"names one file or folder: give one part "
                                       f"file, not {len(files)} (several go to output/<file name>; --depfile-dir)"))
+    from .parallel import Jobserver, can_fork, jobs_budget
+
+    # make's jobserver (a `+` recipe under make -jN): the builds and their workers take make's tokens
+    jobserver = None if os.environ.get("PROPULSOR_JOBS", "").strip() or args.dry_run else Jobserver.from_makeflags()
+    budget = (os.cpu_count() or 1) if jobserver is not None else jobs_budget()
     if len(files) == 1:
-        return build_one(args, files[0], args.depfile or (Path(args.depfile_dir) / f"{files[0].stem}.mk"
-                                                           if args.depfile_dir else None))
+        def one():
+            return build_one(args, files[0], args.depfile or (Path(args.depfile_dir) / f"{files[0].stem}.mk"
+                                                               if args.depfile_dir else None))
+        if jobserver is None or budget < 2:
+            return one()
+        from .batch import with_jobserver
+
+        return with_jobserver(one, budget, jobserver)
     from .batch import in_child, preload, side_by_side
-    from .parallel import can_fork, jobs_budget
 
     preload()
 
     def depfile(part_file):
         return Path(args.depfile_dir) / f"{part_file.stem}.mk" if args.depfile_dir else None
 
-    slots = jobs_budget()
-    if slots > 1 and can_fork() and not args.dry_run:
-        codes = side_by_side(args, files, depfile, slots, build_one)
+    if budget > 1 and can_fork() and not args.dry_run:
+        codes = side_by_side(args, files, depfile, budget, build_one, jobserver)
     else:
         codes = [in_child(build_one, args, f, depfile(f)) for f in files]
     return max(codes, key=lambda c: (c == EXIT_BAD_INPUT, c))
