@@ -90,3 +90,22 @@ def test_long_edges_foot_mid_edge_and_far_points():
         assert got[0] == _brute(P, tgt), (dx, dy, got)
         assert distance.min_dist_points_to(P, tgt, src)[0] == got[0]
     assert nearest_edge(src.points, tgt, src)[0] == pytest.approx(0.3)
+
+
+def test_every_grid_level_gives_the_same_answer(monkeypatch):
+    """The coarser grids (for bodies far apart, chosen from the last answer) change the work, never the
+    answer: the same distance, point and foot at every level, near, through the hole and far."""
+    tgt = Outline([_star(12, 20.0, 23.0), _star(5, 6.0, 7.0, 500)[::-1]], 0.1)
+    src = Outline([_star(9, 14.0, 17.0, 900)], 0.1)
+    small = Outline([_star(4, 2.0, 3.0, 300)], 0.1)
+    cases = [(src, Pose(0.4, (0.0, 0.0), (40.0 + gap, 1.0)).matrix()) for gap in (0.0, 0.3, 4.0, 25.0, 90.0)]
+    cases.append((small, Pose(0.3, (0.0, 0.0), (0.5, 0.0)).matrix()))
+    for body, M in cases:
+        P = apply_pose(M, body.points)
+        want = distance.min_dist_points_to(P, tgt)
+        for level in range(nearest.MAX_LEVEL + 1):
+            monkeypatch.setattr(nearest, "_level_for", lambda o, d, level=level: level)
+            assert _same(nearest_edge(P, tgt, body), want), (level, want)
+    monkeypatch.undo()
+    assert nearest._level_for(tgt, 0.0) == 0 and nearest._level_for(tgt, 1e6) == nearest.MAX_LEVEL
+    assert grid_of(tgt, 2).h == pytest.approx(9.0 * grid_of(tgt).h)

@@ -27,11 +27,11 @@ class VertexGrid:
     """Uniform grid of an outline's vertices (body frame): cell (ix, iy) of side h from `origin`; the
     vertices of cell c are ``items[start[c]:start[c + 1]]`` in ascending order."""
 
-    def __init__(self, points: np.ndarray, seg_b: np.ndarray, seg_len: np.ndarray):
+    def __init__(self, points: np.ndarray, seg_b: np.ndarray, seg_len: np.ndarray, scale: float = 1.0):
         lo, hi = points.min(axis=0), points.max(axis=0)
         span = np.maximum(hi - lo, 1e-9)
-        # about 8 mean edges a cell side, at most 2^21 cells
-        h = max(8.0 * float(np.mean(seg_len)), math.sqrt(float(span[0] * span[1]) / float(1 << 21)), 1e-6)
+        # about 8 mean edges a cell side (times `scale`), at most 2^21 cells
+        h = scale * max(8.0 * float(np.mean(seg_len)), math.sqrt(float(span[0] * span[1]) / float(1 << 21)), 1e-6)
         nx, ny = int(span[0] // h) + 1, int(span[1] // h) + 1
         ix = np.minimum(((points[:, 0] - lo[0]) / h).astype(np.int64), nx - 1)
         iy = np.minimum(((points[:, 1] - lo[1]) / h).astype(np.int64), ny - 1)
@@ -44,12 +44,30 @@ class VertexGrid:
         self.h, self.nx, self.ny = float(h), nx, ny
 
 
-def grid_of(outline) -> VertexGrid:
-    """The vertex grid of an Outline (cached on it)."""
-    g = getattr(outline, "_vertex_grid", None)
+#: the grids of an outline: cells of 1, 3, 9, … times the finest side (a search costs about (distance /
+#: cell side)² cells, so bodies far apart are searched in the coarser grids)
+LEVEL_FACTOR = 3.0
+MAX_LEVEL = 4
+
+
+def grid_of(outline, level: int = 0) -> VertexGrid:
+    """The vertex grid of an Outline at `level` (cell side LEVEL_FACTOR ** level times the finest; cached on it)."""
+    grids = getattr(outline, "_vertex_grids", None)
+    if grids is None:
+        grids = outline._vertex_grids = {}
+    g = grids.get(level)
     if g is None:
-        g = outline._vertex_grid = VertexGrid(outline.points, outline.seg_b, outline.seg_len)
+        g = grids[level] = VertexGrid(outline.points, outline.seg_b, outline.seg_len, LEVEL_FACTOR ** level)
     return g
+
+
+def _level_for(outline, distance: float) -> int:
+    """The coarsest grid whose cell side is at most half `distance` (the level whose rings of cells a search
+    for that distance crosses are few), the finest for a distance below two of its cells."""
+    h0 = grid_of(outline).h
+    if not distance > 2.0 * h0:
+        return 0
+    return int(min(MAX_LEVEL, math.floor(math.log(distance / (2.0 * h0)) / math.log(LEVEL_FACTOR))))
 
 
 @njit(cache=True)
@@ -187,11 +205,15 @@ FAR_CELLS = 3.0
 def nearest_edge(P: np.ndarray, tgt, src) -> tuple[float, int, np.ndarray]:
     """Least distance from points P (tgt body frame; the vertices of outline `src`, rigidly moved, same order)
     to tgt's edges: (d, index in P, foot point) — from the grid, or from distance.min_dist_points_to (the same
-    answer) when every point is more than FAR_CELLS cells from tgt's vertices."""
+    answer) when every point is more than FAR_CELLS cells from tgt's vertices.  The grid's level follows the
+    last answer for the same two outlines (a sweep's steps are close): the answer does not depend on it."""
     from ... import policy
     from .distance import _CHUNK, _chunk_discs, min_dist_points_to
 
-    g = grid_of(tgt)
+    hints = getattr(tgt, "_nearest_hints", None)
+    if hints is None:
+        hints = tgt._nearest_hints = {}
+    g = grid_of(tgt, _level_for(tgt, hints.get(id(src), 0.0)))
     _, rho, _ = _chunk_discs(src)
     d, i, qx, qy = _nearest_edge(np.ascontiguousarray(P, np.float64), rho, tgt.points, g.seg_b, tgt.prev,
                                  tgt.half_len, g.origin[0], g.origin[1], g.h, g.nx, g.ny, g.start, g.items, _CHUNK,
@@ -199,5 +221,8 @@ def nearest_edge(P: np.ndarray, tgt, src) -> tuple[float, int, np.ndarray]:
                                  tgt.r_min - 1e-9 * (1.0 + tgt.radius), tgt.radius + 1e-9 * (1.0 + tgt.radius),
                                  FAR_CELLS * g.h)
     if i < 0:
-        return min_dist_points_to(P, tgt, src)
+        d, i, q = min_dist_points_to(P, tgt, src)
+        hints[id(src)] = d
+        return d, i, q
+    hints[id(src)] = float(d)
     return float(d), int(i), np.array([qx, qy])
