@@ -132,8 +132,11 @@ def preload() -> None:
     from .checks.motion import Outline
     from .checks.motion.nearest import nearest_edge
 
+    from .checks.motion.crossing import certainly_apart
+
     square = Outline([np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])], 0.5)
     nearest_edge(square.points + 1.5, square, square)
+    certainly_apart(square, square, square.points + 1.2, square.points - 1.2, 0.2)
 
 
 def in_child(fn, *args) -> int:

@@ -15,6 +15,7 @@ from ...errors import require, require_positive
 from .outlines import Outline, outline
 from .poses import Pose, apply_pose, compose_poses, inverse_pose, pose_stack
 from .distance import check_record, dist_each_point
+from .crossing import certainly_apart
 from .nearest import nearest_edge
 
 __all__ = ['SweepResult', 'sweep_pair', 'sweep_pair_windowed']
@@ -90,26 +91,32 @@ class SweepResult:
         return out
 
 
-def _clearance_step(A: Outline, B: Outline, Ma: np.ndarray, Mb: np.ndarray, inter) -> tuple[float, np.ndarray, np.ndarray]:
-    """Signed clearance of one step (see SweepResult) and the two world points."""
+def _boundary_distance(A: Outline, B: Outline, Ma: np.ndarray, Mb: np.ndarray):
+    """Least distance between the boundaries of A and B at one step, exact when they do not cross: (d, world
+    point on A, world point on B, B's vertices in A's frame, A's in B's)."""
     rel_ba = compose_poses(inverse_pose(Ma), Mb)  # B body -> A body
     rel_ab = inverse_pose(rel_ba)
-    if inter is not None:
-        polys = [np.asarray(p, float) for p in inter.to_polygons()]
-        V = np.vstack(polys)
-        da = dist_each_point(V, A)  # overlap vertices live in A's body frame (A kept in its frame)
-        db = dist_each_point(apply_pose(rel_ab, V), B)
-        depth = np.maximum(da, db)
-        j = int(np.argmax(depth))
-        pw = apply_pose(Ma, V[j:j + 1])[0]
-        return -float(depth[j]), pw, pw
     PB = apply_pose(rel_ba, B.points)
     d1, i1, q1 = nearest_edge(PB, A, B)  # B vertices -> A edges (A frame)
     PA = apply_pose(rel_ab, A.points)
     d2, i2, q2 = nearest_edge(PA, B, A)  # A vertices -> B edges (B frame)
     if d1 <= d2:
-        return d1, apply_pose(Ma, q1[None])[0], apply_pose(Ma, PB[i1:i1 + 1])[0]
-    return d2, apply_pose(Mb, PA[i2:i2 + 1])[0], apply_pose(Mb, q2[None])[0]
+        return d1, apply_pose(Ma, q1[None])[0], apply_pose(Ma, PB[i1:i1 + 1])[0], PB, PA
+    return d2, apply_pose(Mb, PA[i2:i2 + 1])[0], apply_pose(Mb, q2[None])[0], PB, PA
+
+
+def _penetration(A: Outline, B: Outline, Ma: np.ndarray, Mb: np.ndarray, inter) -> tuple[float, np.ndarray, np.ndarray]:
+    """Signed clearance of an overlapping step (see SweepResult: minus the boundary penetration) and its point."""
+    rel_ba = compose_poses(inverse_pose(Ma), Mb)  # B body -> A body
+    rel_ab = inverse_pose(rel_ba)
+    polys = [np.asarray(p, float) for p in inter.to_polygons()]
+    V = np.vstack(polys)
+    da = dist_each_point(V, A)  # overlap vertices live in A's body frame (A kept in its frame)
+    db = dist_each_point(apply_pose(rel_ab, V), B)
+    depth = np.maximum(da, db)
+    j = int(np.argmax(depth))
+    pw = apply_pose(Ma, V[j:j + 1])[0]
+    return -float(depth[j]), pw, pw
 
 
 def _pose_pair(poses_a, poses_b):
@@ -132,7 +139,8 @@ def sweep_pair(profile_a, poses_a, profile_b, poses_b, chord_tol: float = policy
     profile_a/b: Profile, Outline or list of closed polylines (body coordinates);
     poses_a/b: a Pose (held fixed), a sequence of Poses or an (n, 2, 3) array of
     affine matrices, one per step.  Overlap area from a manifold3d CrossSection
-    intersection; clearance from the boundaries (cKDTree candidates, exact
+    intersection (0 without it at a step where the boundaries are certainly apart:
+    :func:`~propulsor.checks.motion.crossing.certainly_apart`); clearance from the boundaries (cKDTree candidates, exact
     point-to-edge refinement in both directions: the exact distance between the
     two polylines when they do not cross).  clearance_limit (mm), when given,
     adds a minimum-clearance record to ``checks()``.
@@ -145,11 +153,16 @@ def sweep_pair(profile_a, poses_a, profile_b, poses_b, chord_tol: float = policy
     pa = np.zeros((N, 2))
     pb = np.zeros((N, 2))
     for k in range(N):
-        rel = compose_poses(inverse_pose(Ma[k]), Mb[k])  # B body -> A body
-        inter = A.section ^ B.section.transform(rel)
-        area[k] = inter.area()
-        clear[k], a_pt, b_pt = _clearance_step(A, B, Ma[k], Mb[k], inter if area[k] > policy.OVERLAP_AREA_TOL_MM2 else None)
-        pa[k], pb[k] = a_pt, b_pt
+        # the boundaries' least distance first: where it shows the bodies apart, their common area is 0
+        # without the boolean (crossing.certainly_apart)
+        d, a_pt, b_pt, PB, PA = _boundary_distance(A, B, Ma[k], Mb[k])
+        if not certainly_apart(A, B, PB, PA, d):
+            rel = compose_poses(inverse_pose(Ma[k]), Mb[k])  # B body -> A body
+            inter = A.section ^ B.section.transform(rel)
+            area[k] = inter.area()
+            if area[k] > policy.OVERLAP_AREA_TOL_MM2:
+                d, a_pt, b_pt = _penetration(A, B, Ma[k], Mb[k], inter)
+        clear[k], pa[k], pb[k] = d, a_pt, b_pt
     return SweepResult(ang_a, ang_b, area, clear, pa, pb, clearance_limit, name)
 
 
