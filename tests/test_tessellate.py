@@ -108,3 +108,67 @@ def test_apex_deflection_is_the_distance_to_the_surface(kind):
     if kind == "sphere":
         v, f, d = T.triangulate(solid, parallel=False)
         assert d <= MESH_CHORD_LIMIT_MM
+
+
+def _faces_meshed(solid, premesh: bool):
+    """(surface type, node bytes, triangle bytes) of every face of a ruled solid meshed as mesh_shape does
+    (interior vertices off), with or without the cylinder bands meshed first."""
+    from OCP.BRep import BRep_Tool
+    from OCP.BRepAdaptor import BRepAdaptor_Surface
+    from OCP.BRepMesh import BRepMesh_IncrementalMesh
+    from OCP.BRepTools import BRepTools
+    from OCP.IMeshTools import IMeshTools_Parameters
+    from OCP.TopAbs import TopAbs_FACE
+    from OCP.TopExp import TopExp_Explorer
+    from OCP.TopLoc import TopLoc_Location
+    from OCP.TopoDS import TopoDS
+
+    shape = solid.wrapped
+    BRepTools.Clean_s(shape)
+    prm = IMeshTools_Parameters()
+    prm.Deflection, prm.Angle, prm.Relative, prm.InParallel = 0.005, 0.1, False, False
+    prm.InternalVerticesMode = prm.ControlSurfaceDeflection = False
+    if premesh:
+        T._premesh_cylinders(shape, prm)
+    BRepMesh_IncrementalMesh(shape, prm)
+    out = []
+    ex = TopExp_Explorer(shape, TopAbs_FACE)
+    while ex.More():
+        face = TopoDS.Face_s(ex.Current())
+        tri = BRep_Tool.Triangulation_s(face, TopLoc_Location())
+        nodes = np.array([tri.Node(i).Coord() for i in range(1, tri.NbNodes() + 1)])
+        tris = np.array([tri.Triangle(i).Get() for i in range(1, tri.NbTriangles() + 1)])
+        out.append((str(BRepAdaptor_Surface(face).GetType()), nodes.tobytes(), tris.tobytes(), len(tris)))
+        ex.Next()
+    return out
+
+
+def test_cylinder_bands_meshed_first_keep_every_node_and_the_planes():
+    """A bored ring (road-wheel rim, 200 x 60 mm): its cylinder bands meshed first with interior vertices allowed
+    (25 times faster) get no interior node: every face has the very nodes of the single pass, the planar faces
+    the very triangles, the bands as many triangles (other diagonals)."""
+    ring = cq.Workplane("XY").circle(100.0).circle(80.0).extrude(60.0).val()
+    single, first = _faces_meshed(ring, False), _faces_meshed(ring, True)
+    assert [f[0] for f in single].count("GeomAbs_SurfaceType.GeomAbs_Cylinder") == 2
+    for (kind, nodes, tris, n), (kind2, nodes2, tris2, n2) in zip(single, first):
+        assert kind == kind2 and nodes == nodes2 and n == n2
+        if "Plane" in kind:
+            assert tris == tris2
+
+
+def test_a_face_with_interior_nodes_is_left_to_the_single_pass():
+    """The rectangle test of the parameter plane: a planar disc meshed with interior vertices has nodes inside."""
+    from OCP.BRepMesh import BRepMesh_IncrementalMesh
+    from OCP.TopAbs import TopAbs_FACE
+    from OCP.TopExp import TopExp_Explorer
+    from OCP.TopoDS import TopoDS
+
+    disc = cq.Workplane("XY").circle(50.0).extrude(10.0).val()
+    BRepMesh_IncrementalMesh(disc.wrapped, 0.01, False, 0.1, False)
+    kinds = []
+    ex = TopExp_Explorer(disc.wrapped, TopAbs_FACE)
+    while ex.More():
+        face = TopoDS.Face_s(ex.Current())
+        kinds.append((T.BRepAdaptor_Surface(face).GetType() == T.GeomAbs_Cylinder, T._boundary_nodes_only(face)))
+        ex.Next()
+    assert sorted(kinds) == [(False, False), (False, False), (True, True)]

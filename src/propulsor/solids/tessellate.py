@@ -82,15 +82,48 @@ def _ruled_only(shape) -> bool:
     return True
 
 
+def _boundary_nodes_only(face) -> bool:
+    """Whether every node of the face's triangulation lies on the border of its parameter rectangle (a
+    cylinder band between two circles and its seam: no interior node)."""
+    tri = BRep_Tool.Triangulation_s(face, TopLoc_Location())
+    if tri is None or not tri.HasUVNodes():
+        return False
+    uv = np.array([tri.UVNode(i).Coord() for i in range(1, tri.NbNodes() + 1)])
+    lo, hi = uv.min(axis=0), uv.max(axis=0)
+    tol = 1e-9 * (1.0 + np.abs(uv).max())
+    on_border = (np.abs(uv - lo) <= tol).any(axis=1) | (np.abs(uv - hi) <= tol).any(axis=1)
+    return bool(on_border.all())
+
+
+def _premesh_cylinders(shape, prm) -> None:
+    """Triangulate the cylindrical faces one by one with interior vertices allowed (OCCT inserts none on a
+    cylinder band: the same nodes, about 25 times faster than without: 0.45 -> 0.017 s for a rim band of
+    1 476 nodes); a face that got interior nodes is cleared for the whole shape's pass.  The edges keep the
+    discretisation of the whole shape's pass, so the neighbouring faces are meshed as before."""
+    cyl = IMeshTools_Parameters()
+    cyl.Deflection, cyl.Angle, cyl.Relative, cyl.InParallel = prm.Deflection, prm.Angle, False, False
+    cyl.InternalVerticesMode, cyl.ControlSurfaceDeflection = True, False
+    ex = TopExp_Explorer(shape, TopAbs_FACE)
+    while ex.More():
+        face = TopoDS.Face_s(ex.Current())
+        ex.Next()
+        if BRepAdaptor_Surface(face).GetType() != GeomAbs_Cylinder:
+            continue
+        if not BRepMesh_IncrementalMesh(face, cyl).IsDone() or not _boundary_nodes_only(face):
+            BRepTools.Clean_s(face)
+
+
 def mesh_shape(shape, chord_tol, angular_tol, parallel, chord_limit: float | None = None) -> float:
     """Run BRepMesh; return the largest achieved deflection (mm, :func:`_worst_deflection`: measured on a
-    face with a degenerate edge when `chord_limit` is given)."""
+    face with a degenerate edge when `chord_limit` is given).  A shape of ruled faces only is meshed without
+    interior vertices, its cylinder bands first (:func:`_premesh_cylinders`)."""
     BRepTools.Clean_s(shape)
     prm = IMeshTools_Parameters()
     prm.Deflection, prm.Angle, prm.Relative, prm.InParallel = chord_tol, angular_tol, False, parallel
     if _ruled_only(shape):
         prm.InternalVerticesMode = False
         prm.ControlSurfaceDeflection = False
+        _premesh_cylinders(shape, prm)
     mesher = BRepMesh_IncrementalMesh(shape, prm)
     if not mesher.IsDone():
         raise RuntimeError("BRepMesh failed")
