@@ -152,16 +152,22 @@ def sweep_pair(profile_a, poses_a, profile_b, poses_b, chord_tol: float = policy
     clear = np.zeros(N)
     pa = np.zeros((N, 2))
     pb = np.zeros((N, 2))
+    overlapped = False
     for k in range(N):
         # the boundaries' least distance first: where it shows the bodies apart, their common area is 0
-        # without the boolean (crossing.certainly_apart)
-        d, a_pt, b_pt, PB, PA = _boundary_distance(A, B, Ma[k], Mb[k])
-        if not certainly_apart(A, B, PB, PA, d):
+        # without the boolean (crossing.certainly_apart); after an overlapping step, the boolean first
+        d = None
+        if not overlapped:
+            d, a_pt, b_pt, PB, PA = _boundary_distance(A, B, Ma[k], Mb[k])
+        if d is None or not certainly_apart(A, B, PB, PA, d):
             rel = compose_poses(inverse_pose(Ma[k]), Mb[k])  # B body -> A body
             inter = A.section ^ B.section.transform(rel)
             area[k] = inter.area()
             if area[k] > policy.OVERLAP_AREA_TOL_MM2:
                 d, a_pt, b_pt = _penetration(A, B, Ma[k], Mb[k], inter)
+            elif d is None:
+                d, a_pt, b_pt, _, _ = _boundary_distance(A, B, Ma[k], Mb[k])
+        overlapped = area[k] > policy.OVERLAP_AREA_TOL_MM2
         clear[k], pa[k], pb[k] = d, a_pt, b_pt
     return SweepResult(ang_a, ang_b, area, clear, pa, pb, clearance_limit, name)
 
