@@ -137,6 +137,10 @@ def preload() -> None:
     square = Outline([np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])], 0.5)
     nearest_edge(square.points + 1.5, square, square)
     certainly_apart(square, square, square.points + 1.2, square.points - 1.2, 0.2)
+    from .checks.motion.backlash import _rot_hits
+
+    P = square.points + 1.2
+    _rot_hits(P, np.zeros(2), square, 1.0, 0.5, np.linalg.norm(P, axis=1), square.boundary_lower_bound(P))
 
 
 def in_child(fn, *args) -> int:

@@ -7,10 +7,11 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from numba import njit
 
 from .outlines import Outline
 from .poses import apply_pose
-from .distance import ball_pairs
+from .nearest import grid_of
 
 __all__ = ['free_rotation']
 
@@ -27,70 +28,123 @@ def _rot_hits(P: np.ndarray, C: np.ndarray, tgt: Outline, sign: float, w: float,
     and parameter of the hit.  An entering hit is one where the point's velocity
     points into tgt's material (material lies left of each edge), so exits and
     grazing touches do not count.
+
+    A point is a candidate when a vertex of tgt lies within its reach (the chord its
+    rotation by w sweeps, plus half the longest edge); its hits are sought on the two
+    edges at every vertex within that reach (compiled: :func:`_rot_pairs`, :func:`_rot_reduce`; the
+    numpy formulation it reproduces bit for bit is ``tests/rot_hits_reference.py``).
     """
-    m = len(P)
-    delta = np.full(m, np.inf)
-    edge = np.full(m, -1)
-    tpar = np.zeros(m)
+    g = grid_of(tgt)
     chord_factor = 2.0 * math.sin(0.5 * min(w, math.pi))
-    keep = np.nonzero(lb <= chord_factor * rho)[0]
-    if len(keep) == 0:
-        return delta, edge, tpar
-    reach = chord_factor * rho[keep] + tgt.half_len + 1e-12
-    # bounded query: a point farther than its reach from every vertex is no candidate, and one
-    # within it gets its exact distance (the bound is a hair above the largest reach)
-    dv, _ = tgt.tree.query(P[keep], distance_upper_bound=float(reach.max()) * (1.0 + 1e-9) + 1e-9)
-    cand = keep[dv <= reach]
-    if len(cand) == 0:
-        return delta, edge, tpar
-    reach = reach[dv <= reach]
-    # candidates in chunks: a wide window (disengaged teeth) must not build a huge pair list at once
-    n_near = tgt.tree.query_ball_point(P[cand[:16]], reach[:16], return_length=True)
-    chunk = max(1, int(400000 // (float(np.mean(n_near)) + 1.0)))
-    for c0 in range(0, len(cand), chunk):
-        _rot_hits_chunk(P, C, tgt, sign, w, rho, cand[c0:c0 + chunk], reach[c0:c0 + chunk], delta, edge, tpar)
+    offs, seg, Y, X, T, ok = _rot_pairs(np.ascontiguousarray(P, np.float64), float(C[0]), float(C[1]), tgt.points,
+                                        g.seg_b, tgt.prev, tgt.half_len, g.origin[0], g.origin[1], g.h, g.nx, g.ny,
+                                        g.start, g.items, float(sign), np.ascontiguousarray(rho, np.float64),
+                                        np.ascontiguousarray(lb, np.float64), chord_factor)
+    # numpy's own arctan2 (not the C library's, which differs in the last bit on about 7 % of arguments)
+    ang = sign * np.arctan2(Y, X)
+    return _rot_reduce(offs, seg, ang, T, ok, float(w))
+
+
+@njit(cache=True)
+def _rot_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, sign, rho, lb, chord_factor):
+    """The (point, edge) pairs of the rotation hits, point by point: the edges starting at each vertex within the
+    point's reach (ascending), then the edges ending there; for each pair and both roots of the circle-edge
+    intersection: the angle's sine and cosine terms (Y, X), the edge parameter (clipped) and whether the root is
+    an entering hit on the edge (its angle is checked against the window afterwards)."""
+    m = len(P)
+    offs = np.zeros(m + 1, np.int64)
+    cap = 4096
+    seg = np.empty(cap, np.int64)
+    near = np.empty(len(V), np.int64)
+    n_pairs = 0
+    for i in range(m):
+        offs[i] = n_pairs
+        if not lb[i] <= chord_factor * rho[i]:
+            continue
+        reach = chord_factor * rho[i] + half_len + 1e-12
+        px, py = P[i, 0], P[i, 1]
+        ix0 = min(max(int(math.floor((px - reach - ox) / h)), 0), nx - 1)
+        ix1 = min(max(int(math.floor((px + reach - ox) / h)), 0), nx - 1)
+        iy0 = min(max(int(math.floor((py - reach - oy) / h)), 0), ny - 1)
+        iy1 = min(max(int(math.floor((py + reach - oy) / h)), 0), ny - 1)
+        n = 0
+        r2reach = reach * reach
+        for gx in range(ix0, ix1 + 1):
+            for gy in range(iy0, iy1 + 1):
+                c = gx * ny + gy
+                for kk in range(start[c], start[c + 1]):
+                    v = items[kk]
+                    ex, ey = px - V[v, 0], py - V[v, 1]
+                    if ex * ex + ey * ey <= r2reach:
+                        near[n] = v
+                        n += 1
+        if n == 0:
+            continue
+        cand = np.sort(near[:n])
+        if n_pairs + 2 * n > cap:
+            while n_pairs + 2 * n > cap:
+                cap *= 2
+            grown = np.empty(cap, np.int64)
+            grown[:n_pairs] = seg[:n_pairs]
+            seg = grown
+        for j in range(n):
+            seg[n_pairs + j] = cand[j]
+            seg[n_pairs + n + j] = prev[cand[j]]
+        n_pairs += 2 * n
+    offs[m] = n_pairs
+    Y = np.empty((n_pairs, 2))
+    X = np.empty((n_pairs, 2))
+    T = np.empty((n_pairs, 2))
+    ok = np.zeros((n_pairs, 2), np.bool_)
+    for i in range(m):
+        ppx, ppy = P[i, 0] - cx, P[i, 1] - cy
+        r2 = rho[i] * rho[i]
+        for k in range(offs[i], offs[i + 1]):
+            s = seg[k]
+            ax, ay = V[s, 0] - cx, V[s, 1] - cy
+            dx, dy = seg_b[s, 0] - V[s, 0], seg_b[s, 1] - V[s, 1]
+            qa = dx * dx + dy * dy
+            qb = 2.0 * (ax * dx + ay * dy)
+            qc = (ax * ax + ay * ay) - r2
+            disc = qb * qb - 4.0 * qa * qc
+            real = disc >= 0.0
+            sq = math.sqrt(disc if real else 0.0)
+            for r in range(2):
+                t = ((-qb - sq) if r == 0 else (-qb + sq)) / (2.0 * qa)
+                valid = real and t >= -1e-12 and t <= 1.0 + 1e-12
+                t = min(max(t, 0.0), 1.0)
+                qx, qy = ax + t * dx, ay + t * dy
+                Y[k, r] = ppx * qy - ppy * qx
+                X[k, r] = ppx * qx + ppy * qy
+                T[k, r] = t
+                ok[k, r] = valid and sign * (qx * dx + qy * dy) > 0.0  # entering: perp(q)·perp(d) = q·d
+    return offs, seg[:n_pairs], Y, X, T, ok
+
+
+@njit(cache=True)
+def _rot_reduce(offs, seg, ang, T, ok, w):
+    """Per point: the least entering hit within the window over its pairs (the first pair on a tie; with none,
+    inf on the first pair's edge)."""
+    m = len(offs) - 1
+    delta = np.full(m, np.inf)
+    edge = np.full(m, -1, np.int64)
+    tpar = np.zeros(m)
+    for i in range(m):
+        best, best_e, best_t = np.inf, -1, 0.0
+        for k in range(offs[i], offs[i + 1]):
+            pb, pt = np.inf, 0.0
+            for r in range(2):
+                a = ang[k, r]
+                if a != a:
+                    continue
+                a = a + 2.0 * math.pi if a < -_ANG_EPS else (a if a > 0.0 else 0.0)
+                if ok[k, r] and a <= w and a < pb:
+                    pb, pt = a, T[k, r]
+            if best_e < 0 or pb < best:
+                best, best_e, best_t = pb, seg[k], pt
+        if best_e >= 0:
+            delta[i], edge[i], tpar[i] = best, best_e, best_t
     return delta, edge, tpar
-
-
-def _rot_hits_chunk(P, C, tgt: Outline, sign: float, w: float, rho, cand, reach, delta, edge, tpar) -> None:
-    """Circle-edge intersections of _rot_hits for one chunk of candidate points (fills delta, edge, tpar)."""
-    pi, si = ball_pairs(tgt, P[cand], reach)
-    if len(pi) == 0:
-        return
-    p = P[cand][pi] - C
-    r2 = rho[cand][pi] ** 2
-    a = tgt.seg_a[si] - C
-    d = tgt.seg_b[si] - tgt.seg_a[si]
-    qa = np.einsum("ij,ij->i", d, d)
-    qb = 2.0 * np.einsum("ij,ij->i", a, d)
-    qc = np.einsum("ij,ij->i", a, a) - r2
-    disc = qb * qb - 4.0 * qa * qc
-    ok = disc >= 0.0
-    sq = np.sqrt(np.where(ok, disc, 0.0))
-    best = np.full(len(pi), np.inf)
-    best_t = np.zeros(len(pi))
-    for root in ((-qb - sq) / (2.0 * qa), (-qb + sq) / (2.0 * qa)):
-        t = root
-        valid = ok & (t >= -1e-12) & (t <= 1.0 + 1e-12)
-        t = np.clip(t, 0.0, 1.0)
-        q = a + t[:, None] * d
-        ang = sign * np.arctan2(p[:, 0] * q[:, 1] - p[:, 1] * q[:, 0], np.einsum("ij,ij->i", p, q))
-        ang = np.where(ang < -_ANG_EPS, ang + 2.0 * math.pi, np.maximum(ang, 0.0))
-        # velocity of the moving point at q: sign * perp(q); material normal of the edge: perp(d)
-        entering = sign * (q[:, 0] * d[:, 0] + q[:, 1] * d[:, 1]) > 0.0  # perp(q)·perp(d) = q·d
-        valid &= entering & (ang <= w)
-        better = valid & (ang < best)
-        best = np.where(better, ang, best)
-        best_t = np.where(better, t, best_t)
-    # reduce per point
-    order = np.lexsort((best, pi))
-    first = np.ones(len(order), bool)
-    first[1:] = pi[order][1:] != pi[order][:-1]
-    sel = order[first]
-    idx = cand[pi[sel]]
-    delta[idx] = best[sel]
-    edge[idx] = si[sel]
-    tpar[idx] = best_t[sel]
 
 
 @dataclass
