@@ -52,7 +52,11 @@ DRY_RUN = $(findstring n,$(firstword -$(MAKEFLAGS)))
 FLUSH = if [ -s $(QUEUE) ]; then q=$$(sort -u $(QUEUE)); \
 	$(if $(DRY_RUN),printf "would build: %s\n" "$$q";,rm -f $(QUEUE); $(BIN)/propulsor build $$q --depfile-dir $(DEPS);) fi
 
-$(OUT)/.built: $(MANIFESTS)
+# .built also depends on what the manifests depend on: a manifest whose recipe only queued its part keeps
+# its time stamp, so make would not remake .built for it (GNU make remakes a target for a prerequisite
+# that is newer, not for one whose recipe ran); every file a build read is named in its depfile
+DEP_READ := $(sort $(shell sed 's/^[^:]*://' $(wildcard $(DEPS)/*.mk) /dev/null))
+$(OUT)/.built: $(MANIFESTS) $(PART_FILES) $(SOURCES) $(STAMP) $(DEP_READ)
 	+@$(FLUSH)
 	@touch $@
 

@@ -331,3 +331,43 @@ def test_make_hands_its_jobserver_to_the_build_and_runs_no_recipe_under_n(projec
     assert r.returncode == 0, r.stdout + r.stderr
     assert (folder / "built.txt").read_text().split("\n")[0] == \
         "2 ['parts/balancer.toml', 'parts/cam_linear.toml', 'parts/road_wheel.toml']"
+
+
+def _fake_propulsor(folder: Path) -> Path:
+    """.venv/bin/propulsor that notes the part files it was asked to build and writes their manifests."""
+    fake = folder / ".venv" / "bin" / "propulsor"
+    fake.parent.mkdir(parents=True, exist_ok=True)
+    fake.write_text(f"#!{sys.executable}\nimport sys, pathlib\n"
+                    "files = [a for a in sys.argv[2:] if a.endswith('.toml')]\n"
+                    "open('built.txt', 'a').write(' '.join(files) + '\\n')\n"
+                    "for f in files:\n"
+                    "    m = pathlib.Path('output') / pathlib.Path(f).stem / 'manifest.json'\n"
+                    "    m.parent.mkdir(parents=True, exist_ok=True); m.write_text('{}')\n")
+    fake.chmod(0o755)
+    return fake
+
+
+@needs_make
+def test_make_builds_an_edited_part_file_for_real_and_then_nothing(project):
+    """Not `make -n` but make itself: the queue of out-of-date parts is built (a manifest whose recipe only
+    queued its part keeps its time stamp, and make would not remake .built for it), once."""
+    folder, names, now = project
+    _fake_propulsor(folder)
+    _touch(folder / "output" / ".built", now - 5)
+    env = {k: v for k, v in os.environ.items() if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL")}
+
+    def make_parts() -> list[str]:
+        before = (folder / "built.txt").read_text().splitlines() if (folder / "built.txt").exists() else []
+        r = subprocess.run(["make", "parts"], cwd=folder, capture_output=True, text=True, timeout=60, env=env)
+        assert r.returncode == 0, r.stdout + r.stderr
+        after = (folder / "built.txt").read_text().splitlines() if (folder / "built.txt").exists() else []
+        return after[len(before):]
+
+    assert make_parts() == []
+    os.utime(folder / "parts" / "ncg_seed002.toml", (now, now))
+    assert make_parts() == ["parts/ncg_seed002.toml"]
+    assert make_parts() == []
+    t = time.time()  # after the last run's stamp, not in the future
+    os.utime(folder / "parts" / "road_wheel.toml", (t, t))  # the balancer read it (its depfile)
+    assert make_parts() == ["parts/balancer.toml parts/road_wheel.toml"]
+    assert make_parts() == [] and not (folder / "output" / ".build-queue").exists()
