@@ -371,3 +371,6 @@ def test_make_builds_an_edited_part_file_for_real_and_then_nothing(project):
     os.utime(folder / "parts" / "road_wheel.toml", (t, t))  # the balancer read it (its depfile)
     assert make_parts() == ["parts/balancer.toml parts/road_wheel.toml"]
     assert make_parts() == [] and not (folder / "output" / ".build-queue").exists()
+    shutil.rmtree(folder / "output" / "cam_linear")  # an output folder deleted: built again
+    assert make_parts() == ["parts/cam_linear.toml"]
+    assert make_parts() == []
