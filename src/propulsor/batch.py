@@ -9,18 +9,21 @@ import signal
 import sys
 from pathlib import Path
 
-from .building import load_part
+from .building import LOADED, load_part
 from .signals import EXIT_OK, Interrupted, hold_signals
 
 
 def longest_first(files: list[Path]) -> list[int]:
     """Indices of the part files, the longest build first by its size estimate (a file that does not load
-    first of all: it fails at once), so that the builds running side by side end close together."""
+    first of all: it fails at once), so that the builds running side by side end close together; each loaded
+    part is left in building.LOADED for its forked build."""
     def key(k):
         try:
-            return -load_part(files[k])[2].seconds, k
+            loaded = load_part(files[k])
         except Exception:  # noqa: BLE001 - its own build reports it
             return -float("inf"), k
+        LOADED[files[k]] = loaded  # the forked build takes it (building.load_part)
+        return -loaded[2].seconds, k
 
     return sorted(range(len(files)), key=key)
 
@@ -88,6 +91,7 @@ def side_by_side(args, files: list[Path], depfile, slots: int, build, jobserver=
         raise
     finally:
         share_slots(None)
+        LOADED.clear()
     return codes
 
 

@@ -24,8 +24,15 @@ def files_read(params, part_file: Path) -> tuple[Path, ...]:
     return tuple(files)
 
 
+#: part files loaded by the command that forks their builds (batch.side_by_side): a forked build takes its
+#: own entry instead of loading the file again (the parameters, and the design their validation computed)
+LOADED: dict[Path, tuple] = {}
+
+
 def load_part(part_file: Path):
     """(part type, validated parameters, size estimate) of a part file; InputError otherwise."""
+    if part_file in LOADED:
+        return LOADED.pop(part_file)
     from .params import load_params, read_part_file
     from .parts import check_size, get_part_type, size_needs_design
 
