@@ -11,7 +11,7 @@ from numba import njit
 
 from .outlines import Outline
 from .poses import apply_pose
-from .nearest import grid_of
+from .nearest import disc_cells, grid_of
 
 __all__ = ['free_rotation']
 
@@ -63,10 +63,7 @@ def _rot_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, it
             continue
         reach = chord_factor * rho[i] + half_len + 1e-12
         px, py = P[i, 0], P[i, 1]
-        ix0 = min(max(int(math.floor((px - reach - ox) / h)), 0), nx - 1)
-        ix1 = min(max(int(math.floor((px + reach - ox) / h)), 0), nx - 1)
-        iy0 = min(max(int(math.floor((py - reach - oy) / h)), 0), ny - 1)
-        iy1 = min(max(int(math.floor((py + reach - oy) / h)), 0), ny - 1)
+        ix0, ix1, iy0, iy1 = disc_cells(px, py, reach, ox, oy, h, nx, ny)
         n = 0
         r2reach = reach * reach
         for gx in range(ix0, ix1 + 1):

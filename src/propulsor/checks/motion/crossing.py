@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .nearest import grid_of
+from .nearest import disc_cells, grid_of
 
 __all__ = ["certainly_apart"]
 
@@ -46,10 +46,7 @@ def _any_crossing(P, nxt_p, prev_p, V, seg_b, prev_v, ox, oy, h, nx, ny, start, 
     edges with ends within r of each other (r: the sum of half the longest edge of each)."""
     for i in range(len(P)):
         px, py = P[i, 0], P[i, 1]
-        ix0 = min(max(int(np.floor((px - r - ox) / h)), 0), nx - 1)
-        ix1 = min(max(int(np.floor((px + r - ox) / h)), 0), nx - 1)
-        iy0 = min(max(int(np.floor((py - r - oy) / h)), 0), ny - 1)
-        iy1 = min(max(int(np.floor((py + r - oy) / h)), 0), ny - 1)
+        ix0, ix1, iy0, iy1 = disc_cells(px, py, r, ox, oy, h, nx, ny)
         for ix in range(ix0, ix1 + 1):
             for iy in range(iy0, iy1 + 1):
                 c = ix * ny + iy

@@ -20,7 +20,7 @@ import math
 import numpy as np
 from numba import njit
 
-__all__ = ["VertexGrid", "grid_of", "nearest_edge"]
+__all__ = ["VertexGrid", "grid_of", "disc_cells", "nearest_edge"]
 
 
 class VertexGrid:
@@ -68,6 +68,14 @@ def _level_for(outline, distance: float) -> int:
     if not distance > 2.0 * h0:
         return 0
     return int(min(MAX_LEVEL, math.floor(math.log(distance / (2.0 * h0)) / math.log(LEVEL_FACTOR))))
+
+
+@njit(cache=True)
+def disc_cells(px, py, r, ox, oy, h, nx, ny):
+    """The grid cells (ix0, ix1, iy0, iy1, inclusive, clamped to the grid) that the disc of radius r about
+    (px, py) overlaps."""
+    return (min(max(int(math.floor((px - r - ox) / h)), 0), nx - 1), min(max(int(math.floor((px + r - ox) / h)), 0), nx - 1),
+            min(max(int(math.floor((py - r - oy) / h)), 0), ny - 1), min(max(int(math.floor((py + r - oy) / h)), 0), ny - 1))
 
 
 @njit(cache=True)
@@ -169,10 +177,7 @@ def _nearest_edge(P, rho, V, B, prev, half_len, ox, oy, h, nx, ny, start, items,
                 continue
             k += 1
             # the vertices within rb: cells overlapping the disc
-            ix0 = min(max(int(math.floor((px - rb - ox) / h)), 0), nx - 1)
-            ix1 = min(max(int(math.floor((px + rb - ox) / h)), 0), nx - 1)
-            iy0 = min(max(int(math.floor((py - rb - oy) / h)), 0), ny - 1)
-            iy1 = min(max(int(math.floor((py + rb - oy) / h)), 0), ny - 1)
+            ix0, ix1, iy0, iy1 = disc_cells(px, py, rb, ox, oy, h, nx, ny)
             for ix in range(ix0, ix1 + 1):
                 for iy in range(iy0, iy1 + 1):
                     cc = ix * ny + iy
