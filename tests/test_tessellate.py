@@ -147,7 +147,30 @@ def test_cylinder_bands_meshed_first_keep_every_node_and_the_planes():
     """A bored ring (road-wheel rim, 200 x 60 mm): its cylinder bands meshed first with interior vertices allowed
     (25 times faster) get no interior node: every face has the very nodes of the single pass, the planar faces
     the very triangles, the bands as many triangles (other diagonals)."""
+    from OCP.BRep import BRep_Tool
+    from OCP.BRepAdaptor import BRepAdaptor_Surface
+    from OCP.BRepTools import BRepTools
+    from OCP.IMeshTools import IMeshTools_Parameters
+    from OCP.TopAbs import TopAbs_FACE
+    from OCP.TopExp import TopExp_Explorer
+    from OCP.TopLoc import TopLoc_Location
+    from OCP.TopoDS import TopoDS
+
     ring = cq.Workplane("XY").circle(100.0).circle(80.0).extrude(60.0).val()
+    # the first pass alone: the two bands meshed (boundary nodes only), the two annuli not yet
+    BRepTools.Clean_s(ring.wrapped)
+    prm = IMeshTools_Parameters()
+    prm.Deflection, prm.Angle = 0.005, 0.1
+    T._premesh_cylinders(ring.wrapped, prm)
+    meshed = []
+    ex = TopExp_Explorer(ring.wrapped, TopAbs_FACE)
+    while ex.More():
+        face = TopoDS.Face_s(ex.Current())
+        is_band = BRepAdaptor_Surface(face).GetType() == T.GeomAbs_Cylinder
+        meshed.append((is_band, BRep_Tool.Triangulation_s(face, TopLoc_Location()) is not None))
+        assert not is_band or T._boundary_nodes_only(face)
+        ex.Next()
+    assert sorted(meshed) == [(False, False), (False, False), (True, True), (True, True)]
     single, first = _faces_meshed(ring, False), _faces_meshed(ring, True)
     assert [f[0] for f in single].count("GeomAbs_SurfaceType.GeomAbs_Cylinder") == 2
     for (kind, nodes, tris, n), (kind2, nodes2, tris2, n2) in zip(single, first):
