@@ -50,10 +50,12 @@ def shell_closed(shell) -> bool:
     return BRepCheck_Shell(TopoDS.Shell_s(shell)).Closed(False) == BRepCheck_NoError
 
 
-def brep_checks(solid, name: str = "solid", cross_check_volume: bool = True, chord_tol: float = CHORD_TOL_MM) -> list[Check]:
+def brep_checks(solid, name: str = "solid", cross_check_volume: bool = True, chord_tol: float = CHORD_TOL_MM,
+                volume_mm3: float | None = None) -> list[Check]:
     """Valid B-rep, exactly one solid, closed shell(s), positive volume; and
     (cross_check_volume) OCCT's exact volume agrees with the volume of a fine
-    triangulation within policy.MESH_VOLUME_REL_TOL."""
+    triangulation within policy.MESH_VOLUME_REL_TOL.  volume_mm3: the solid's volume when the caller
+    has it (:func:`propulsor.solids.kernel.volume` of this very shape)."""
     shape = occ_shape(solid)
     out: list[Check] = []
     if shape is None or shape.IsNull():
@@ -65,7 +67,7 @@ def brep_checks(solid, name: str = "solid", cross_check_volume: bool = True, cho
     shells = _sub(shape, TopAbs_SHELL)
     n_open = sum(not shell_closed(s) for s in shells)
     out.append(Check.equals(f"{name}: open shells", n_open, 0, "", f"{len(shells)} shell(s), all closed"))
-    v = volume(shape)
+    v = volume(shape) if volume_mm3 is None else volume_mm3
     out.append(Check.greater_than(f"{name}: B-rep volume", v, 0.0, "mm^3", "positive volume (outward faces)"))
     if cross_check_volume and solids:
         vt = volume_from_triangulation(shape, chord_tol)
@@ -78,9 +80,11 @@ def brep_checks(solid, name: str = "solid", cross_check_volume: bool = True, cho
     return out
 
 
-def step_roundtrip_check(solid, step_path: str | Path, name: str | None = None, rel_tol: float = STEP_VOLUME_REL_TOL) -> Check:
+def step_roundtrip_check(solid, step_path: str | Path, name: str | None = None, rel_tol: float = STEP_VOLUME_REL_TOL,
+                         built_volume: float | None = None) -> Check:
     """Re-import the STEP file: passes when it holds exactly one solid whose
-    volume equals the built solid's within rel_tol (value: re-imported volume)."""
+    volume equals the built solid's within rel_tol (value: re-imported volume).  built_volume: the
+    built solid's volume when the caller has it (:func:`propulsor.solids.kernel.volume` of `solid`)."""
     from ..export.step import read_step_solids
 
     step_path = Path(step_path)
@@ -90,7 +94,7 @@ def step_roundtrip_check(solid, step_path: str | Path, name: str | None = None, 
         solids = read_step_solids(step_path)
     except (ValueError, FileNotFoundError) as exc:
         return Check(cname, False, None, {"solids": 1, "rel_tol": rel_tol}, "mm^3", f"STEP re-import failed: {exc}")
-    v0 = volume(solid)
+    v0 = volume(solid) if built_volume is None else built_volume
     v1 = sum(volume(s) for s in solids)
     dev = abs(v1 - v0) / abs(v0) if v0 else float("inf")
     ok = len(solids) == 1 and dev <= rel_tol

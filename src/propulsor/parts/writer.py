@@ -50,13 +50,15 @@ def solid_files_and_checks(folder: str, name: str, solid, expected_genus, volume
     from ..export.mesh import tessellate, write_3mf, write_stl
     from ..export.render import palette_colour, render_iso
     from ..export.step import write_step
+    from ..solids.kernel import volume as kernel_volume
 
     folder = Path(folder)
     # the exact-vs-triangulated volume cross-check is made below on the exported mesh itself
-    checks = list(brep_checks(solid, name, cross_check_volume=False))
+    v = kernel_volume(solid)  # of the solid as this worker has it (the B-rep check and the STEP round trip)
+    checks = list(brep_checks(solid, name, cross_check_volume=False, volume_mm3=v))
     step = folder / f"{name}.step"
     write_step(solid, step, name)
-    checks.append(step_roundtrip_check(solid, step, name))
+    checks.append(step_roundtrip_check(solid, step, name, built_volume=v))
     # OCCT's mesher threads only in a build allowed more than one process and not in a forked worker
     mesh = tessellate(solid, parallel=not forked and threads_ok())
     write_stl(mesh, folder / f"{name}.stl")
