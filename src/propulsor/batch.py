@@ -117,9 +117,9 @@ def _started_without_slot() -> None:
 #: what every build imports and what costs (OCCT, cadquery, matplotlib, scipy, trimesh, manifold3d):
 #: imported once before the builds of several part files are forked
 PRELOAD = ("propulsor.parts", "propulsor.parts.writer", "propulsor.solids.build", "propulsor.solids.kernel",
-            "propulsor.export.step", "propulsor.export.mesh", "propulsor.export.plots", "propulsor.export.dxf",
-            "propulsor.checks.mesh", "propulsor.checks.brep", "propulsor.checks.motion", "scipy.optimize",
-            "scipy.integrate", "scipy.interpolate")
+           "propulsor.export.step", "propulsor.export.mesh", "propulsor.export.plots", "propulsor.export.dxf",
+           "propulsor.checks.mesh", "propulsor.checks.brep", "propulsor.checks.motion", "scipy.optimize",
+           "scipy.integrate", "scipy.interpolate")
 
 
 def preload() -> None:

@@ -149,6 +149,9 @@ def regenerate_gallery(folder: Path, progress) -> Path | None:
 
 
 def build_one(args, part_file: Path, depfile: Path | None) -> int:
+    """Build one part file into its output folder (``--out`` or output/<file name>): vetted, built into a
+    temporary folder, put in place (:func:`into_output`); ``--dry-run`` validates and estimates only.
+    Returns the exit code (signals.py)."""
     from . import output_folder as of
     from .progress import Progress
 
