@@ -2,7 +2,9 @@
 
 `InputError` (exit 2): the input is invalid; the message is one line naming the
 parameter, its value and the limit.  `CheckFailed` (exit 1): a part built but a
-check failed.
+check failed.  `EnvironmentFailure` (exit 3): the machine refused (disk full, out of
+inodes, read-only file system, permission, a folder vanished); one line naming the
+path and the errno.
 """
 
 from __future__ import annotations
@@ -88,3 +90,28 @@ def require_positive(parameter: str, value: float, unit: str = "") -> float:
     if not v > 0:
         raise InputError(parameter, value, f"must be > 0{(' ' + unit) if unit else ''}")
     return v
+
+
+class EnvironmentFailure(RuntimeError):
+    """The file system or the machine refused an operation (exit 3): one line naming the path, the
+    errno and what was being done.  Raised for an ``OSError`` that no input could have prevented."""
+
+    def __init__(self, path, errno_: int | None, doing: str, detail: str = ""):
+        import errno as _errno
+        import os as _os
+
+        self.path = str(path)
+        self.errno = errno_
+        self.doing = doing
+        self.detail = detail
+        name = _errno.errorcode.get(errno_, "E?") if errno_ is not None else "E?"
+        text = detail or (_os.strerror(errno_) if errno_ is not None else "failed")
+        super().__init__(f"{doing} {self.path}: [{name}] {text}")
+
+    @classmethod
+    def from_oserror(cls, exc: OSError, doing: str = "cannot write") -> "EnvironmentFailure":
+        path = exc.filename if exc.filename is not None else "?"
+        return cls(path, exc.errno, doing, exc.strerror or "")
+
+    def __reduce__(self):
+        return (type(self), (self.path, self.errno, self.doing, self.detail))

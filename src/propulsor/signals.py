@@ -2,6 +2,8 @@
 
 Exit codes: 0 built and every check passed; 1 built but a check failed (outputs kept only with
 --keep-failed) or `check` found invalid files; 2 bad input (one line on stderr, nothing written);
+3 the environment refused (disk full, out of inodes, read-only file system, permission denied, a
+folder removed under the build: one line naming the path and the errno, nothing published);
 130 / 143 interrupted by SIGINT / SIGTERM (one line, no temporary folder and no worker process left).
 """
 
@@ -11,7 +13,7 @@ import signal
 import sys
 import threading
 
-EXIT_OK, EXIT_CHECK_FAILED, EXIT_BAD_INPUT = 0, 1, 2
+EXIT_OK, EXIT_CHECK_FAILED, EXIT_BAD_INPUT, EXIT_ENVIRONMENT = 0, 1, 2, 3
 
 
 class Interrupted(BaseException):
@@ -56,3 +58,8 @@ def hold_signals() -> None:
 def fail_input(exc: Exception) -> int:
     print(f"propulsor: error: {exc}", file=sys.stderr)
     return EXIT_BAD_INPUT
+
+
+def fail_environment(exc: Exception) -> int:
+    print(f"propulsor: error: {exc}", file=sys.stderr)
+    return EXIT_ENVIRONMENT
