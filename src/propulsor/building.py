@@ -4,12 +4,14 @@ beside it rewritten, the make depfile written."""
 
 from __future__ import annotations
 
+import os
 import shutil
 import sys
 from pathlib import Path
 
-from .errors import InputError
-from .signals import EXIT_CHECK_FAILED, EXIT_OK, check_signalled, fail_input, hold_signals
+from .errors import EnvironmentFailure, InputError
+from .signals import EXIT_CHECK_FAILED, EXIT_OK, check_signalled, fail_environment, fail_input, hold_signals
+
 
 def files_read(params, part_file: Path) -> tuple[Path, ...]:
     """The part file and every file it names (string parameters ending in `_file`, relative to it)."""
@@ -64,53 +66,66 @@ def write_depfile(depfile: Path, target: Path, files) -> None:
 
 def into_output(args, out: Path, keep: tuple[Path, ...], produce, progress, depfile=None) -> int:
     """Run ``produce(tmp) -> (failures, what)`` into a fresh temporary folder beside `out` with the
-    lock of `out` held, then put the result in place of `out` in one step (or drop it when a check
-    failed and --keep-failed is not given).  Exit codes as in the module docstring."""
+    lock of `out` held, check that the folder holds exactly what the manifest lists, then put the result
+    in place of `out` in one step (or drop it when a check failed and --keep-failed is not given).  The
+    gallery beside it is rewritten after the lock is let go.  Exit codes as in signals.py."""
     from . import output_folder as of
     from .parallel import close_in_workers, kill_workers
+    from .write_root import writing_into
 
     lock = of.OutputLock(out)
     tmp = None
+    published = False
     try:
-        of.prepare_parent(out)
         try:
-            lock.acquire(wait=not args.no_wait,
-                         on_wait=lambda pid: print(f"propulsor: {out} is being built by process {pid}; waiting",
-                                                   file=sys.stderr, flush=True))
-        except of.Busy as busy:
-            raise InputError("--out", str(out), f"is being built by process {busy.pid} (--no-wait)") from None
-        close_in_workers(lock.fd)
-        of.vet_target(out, force=args.force, keep=keep)  # as it is now, after the wait
-        for stale in of.clean_stale(out):
-            progress(f"removed {stale.name}, left by a build that was killed")
-        tmp = of.make_temp(out)
-        failures, what = produce(tmp)
-        check_signalled()  # a swallowed interrupt: the output is not put in place
-        for f in failures:
-            print(f"propulsor: check failed: {f}", file=sys.stderr)
-        if failures and not args.keep_failed:
-            print(f"propulsor: {what}: {len(failures)} check(s) failed; nothing written "
-                  f"(use --keep-failed to keep the outputs)", file=sys.stderr)
-            return EXIT_CHECK_FAILED
-        of.replace(tmp, out)
-        if gallery_folder(out.parent):
-            regenerate_gallery(out.parent, progress)
-        if failures:
-            print(f"propulsor: {what}: built into {out} but {len(failures)} check(s) failed", file=sys.stderr)
-            return EXIT_CHECK_FAILED
-        progress(f"{what}: built into {out}, all checks passed")
-        if depfile:
-            write_depfile(Path(depfile), out / "manifest.json", keep)
-        return EXIT_OK
+            of.prepare_parent(out)
+            try:
+                lock.acquire(wait=not args.no_wait,
+                             on_wait=lambda pid: print(f"propulsor: {out} is being built by process {pid}; waiting",
+                                                       file=sys.stderr, flush=True))
+            except of.Busy as busy:
+                raise InputError("--out", str(out), f"is being built by process {busy.pid} (--no-wait)") from None
+            close_in_workers(lock.fd)
+            of.vet_target(out, force=args.force, keep=keep)  # as it is now, after the wait
+            for stale in of.clean_stale(out):
+                progress(f"removed {stale.name}, left by a build that was killed")
+            tmp = of.make_temp(out)
+            with writing_into(tmp) as ident:
+                failures, what = produce(tmp)
+                check_signalled()  # a swallowed interrupt: the output is not put in place
+                for f in failures:
+                    print(f"propulsor: check failed: {f}", file=sys.stderr)
+                if failures and not args.keep_failed:
+                    print(f"propulsor: {what}: {len(failures)} check(s) failed; nothing written "
+                          f"(use --keep-failed to keep the outputs)", file=sys.stderr)
+                    return EXIT_CHECK_FAILED
+                of.verify_built(tmp, ident)
+                of.replace(tmp, out)
+                published = True
+        except OSError as exc:  # a write refused (a file's write names no path: the folder it went to)
+            if exc.filename is None:
+                exc.filename = str(tmp if tmp is not None else out)
+            raise EnvironmentFailure.from_oserror(exc, "cannot build:") from None
     except InputError as exc:
         return fail_input(exc)
+    except EnvironmentFailure as exc:
+        return fail_environment(exc)
     finally:
         hold_signals()
         kill_workers()
-        if tmp is not None and tmp.exists():
+        if tmp is not None and os.path.lexists(tmp):
             shutil.rmtree(tmp, ignore_errors=True)
         close_in_workers(None)
         lock.release()
+    if published and gallery_folder(out.parent):
+        regenerate_gallery(out.parent, progress)
+    if failures:
+        print(f"propulsor: {what}: built into {out} but {len(failures)} check(s) failed", file=sys.stderr)
+        return EXIT_CHECK_FAILED
+    progress(f"{what}: built into {out}, all checks passed")
+    if depfile:
+        write_depfile(Path(depfile), out / "manifest.json", keep)
+    return EXIT_OK
 
 
 def gallery_folder(folder: Path) -> bool:
@@ -157,7 +172,7 @@ def build_one(args, part_file: Path, depfile: Path | None) -> int:
 
     progress = Progress(enabled=not args.quiet, check=check_signalled)
     try:
-        out = of.vet_target(Path(args.out) if args.out else Path("output") / part_file.stem,
+        out = of.vet_target(of.out_arg(args.out) or Path("output") / part_file.stem,
                             force=args.force, keep=(part_file,))
         part_type, params, estimate = load_part(part_file)
         keep = files_read(params, part_file)

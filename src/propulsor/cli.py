@@ -2,8 +2,9 @@
 
 Exit codes: 0 built and every check passed; 1 built but a check failed (outputs
 kept only with --keep-failed) or `check` found invalid files; 2 bad input
-(one line on stderr, nothing written); 130 / 143 interrupted by SIGINT / SIGTERM
-(one line, no temporary folder and no worker process left).
+(one line on stderr, nothing written); 3 the environment refused (disk full, read-only file
+system, permission: one line naming the path and the errno, nothing published); 130 / 143
+interrupted by SIGINT / SIGTERM (one line, no temporary folder and no worker process left).
 """
 
 from __future__ import annotations
@@ -16,9 +17,9 @@ import threading
 from pathlib import Path
 
 from .building import build_one, files_read, into_output, load_part, regenerate_gallery
-from .errors import InputError
-from .signals import (EXIT_BAD_INPUT, EXIT_CHECK_FAILED, EXIT_OK, SIGNALLED, Interrupted, check_signalled, fail_input,
-                      hold_signals, raise_interrupted, unraisable)
+from .errors import EnvironmentFailure, InputError
+from .signals import (EXIT_BAD_INPUT, EXIT_CHECK_FAILED, EXIT_OK, SIGNALLED, Interrupted, check_signalled,
+                      fail_environment, fail_input, hold_signals, raise_interrupted, unraisable)
 
 
 def cmd_gallery(args) -> int:
@@ -42,9 +43,9 @@ def cmd_build(args) -> int:
     """Build every part file given, one after the other in this process (the imports are paid once):
     each into its own output folder; the exit code is the worst of them (2 before 1 before 0)."""
     files = [Path(f) for f in args.part_files]
-    if len(files) > 1 and (args.out or args.depfile):
-        name = "--out" if args.out else "--depfile"
-        return fail_input(InputError(name, args.out or args.depfile, f"names one file or folder: give one part "
+    if len(files) > 1 and (args.out is not None or args.depfile):
+        name = "--out" if args.out is not None else "--depfile"
+        return fail_input(InputError(name, args.out if args.out is not None else args.depfile, f"names one file or folder: give one part "
                                       f"file, not {len(files)} (several go to output/<file name>; --depfile-dir)"))
     from .parallel import Jobserver, can_fork, jobs_budget
 
@@ -96,10 +97,13 @@ def _settings(pairs) -> dict:
         key, sep, value = item.partition("=")
         if not sep or not key.strip():
             raise InputError("--set", item, "must be KEY=VALUE, e.g. backlash_mm=0.35")
+        if any(ord(c) < 32 or ord(c) == 127 for c in item):
+            raise InputError("--set", item, "must be one KEY=VALUE on one line (no newline or control character)")
         try:
-            out[key.strip()] = tomllib.loads(f"v = {value.strip()}")["v"]
+            parsed = tomllib.loads(f"v = {value.strip()}")
         except tomllib.TOMLDecodeError:
-            out[key.strip()] = value.strip()
+            parsed = {"v": value.strip()}
+        out[key.strip()] = parsed["v"]
     return out
 
 
@@ -113,7 +117,7 @@ def cmd_print(args) -> int:
     progress = Progress(enabled=not args.quiet, check=check_signalled)
     part_file = Path(args.part_file)
     try:
-        out = of.vet_target(Path(args.out) if args.out else Path("output") / f"{part_file.stem}_kit",
+        out = of.vet_target(of.out_arg(args.out) or Path("output") / f"{part_file.stem}_kit",
                             force=args.force, keep=(part_file,))
         printer = load_printer(args.printer, _settings(args.set))
         S = _scale_arg(args.scale)
@@ -271,10 +275,21 @@ def main(argv=None) -> int:
             args = parser.parse_args(argv)
         except SystemExit as exc:  # argparse uses 2 for usage errors, which matches bad input
             return int(exc.code or 0)
+        try:
+            os.getcwd()
+        except OSError as exc:
+            return fail_environment(EnvironmentFailure(".", exc.errno, "cannot work in the current folder",
+                                                       "it was removed or cannot be read"))
         return args.func(args)
+    except EnvironmentFailure as exc:
+        return fail_environment(exc)
     except BrokenPipeError:  # the reader of our output went away (`propulsor params ... | head`)
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 128 + int(signal.SIGPIPE)
+    except OSError as exc:  # the file system refused (disk full, read-only, permission, …): one line, exit 3
+        if SIGNALLED:
+            raise
+        return fail_environment(EnvironmentFailure.from_oserror(exc, "cannot continue:"))
     except BaseException as exc:
         # the signal's exception itself, or any exception it caused (an extension module whose
         # initialisation it interrupted raises ImportError "initialization failed")

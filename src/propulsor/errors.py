@@ -24,7 +24,10 @@ class InputError(ValueError):
         self.value = value
         self.limit = limit
         self.hint = hint
-        shown = repr(value)
+        try:
+            shown = repr(value)
+        except RecursionError:  # a value nested thousands deep (a crafted part file)
+            shown = f"<{type(value).__name__} nested too deeply to show>"
         if len(shown) > MAX_VALUE_CHARS:
             shown = shown[:MAX_VALUE_CHARS] + "…"
         msg = f"{parameter} = {shown}: {limit}"

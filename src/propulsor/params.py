@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import os
 import tomllib
 from pathlib import Path
 from typing import Any, get_type_hints
@@ -164,16 +165,37 @@ def validate_meta(meta) -> dict[str, Any]:
     return meta
 
 
+#: deepest nesting of tables and arrays a part file may have (the part types use 2)
+MAX_PART_FILE_DEPTH = 16
+
+
+def _first_too_deep(data, limit: int) -> str | None:
+    """The dotted key of the first value nested deeper than `limit`, or None (iterative: any depth)."""
+    stack = [(data, "", 0)]
+    while stack:
+        value, where, depth = stack.pop()
+        if depth > limit:
+            return where or "(top level)"
+        items = value.items() if isinstance(value, dict) else enumerate(value) if isinstance(value, list) else ()
+        for k, v in items:
+            if isinstance(v, (dict, list)):
+                stack.append((v, f"{where}.{k}" if where else str(k), depth + 1))
+    return None
+
+
 def read_part_toml(path: str | Path) -> dict[str, Any]:
-    """The TOML table of a part file, read as bytes and decoded as UTF-8 (InputError otherwise)."""
+    """The TOML table of a part file, read as bytes and decoded as UTF-8 (InputError otherwise): a regular
+    file (never a FIFO or a device) of at most MAX_PART_FILE_BYTES, nested at most MAX_PART_FILE_DEPTH."""
+    from .regular_file import read_regular
+
     path = Path(path)
     try:
-        if not path.is_file():
+        if not path.exists():
             raise InputError("part file", str(path), "does not exist")
-        size = path.stat().st_size
-        if size > MAX_PART_FILE_BYTES:
-            raise InputError("part file", str(path), f"is {size} bytes; a part file is at most {MAX_PART_FILE_BYTES}")
-        raw = path.read_bytes()
+        raw = read_regular(os.path.realpath(path), MAX_PART_FILE_BYTES)
+    except ValueError as exc:
+        raise InputError("part file", str(path), f"{exc}; a part file is a TOML file of at most "
+                         f"{MAX_PART_FILE_BYTES} bytes") from None
     except OSError as exc:
         raise InputError("part file", str(path), f"cannot be read: {exc.strerror or exc}") from None
     try:
@@ -182,9 +204,17 @@ def read_part_toml(path: str | Path) -> dict[str, Any]:
         raise InputError("part file", str(path), f"is not UTF-8 text (byte 0x{raw[exc.start]:02x} at offset "
                          f"{exc.start}); a part file is TOML") from None
     try:
-        return tomllib.loads(text)
+        data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise InputError("part file", str(path), f"is not valid TOML: {exc}") from None
+    except RecursionError:
+        raise InputError("part file", str(path), f"nests tables or arrays too deeply (at most "
+                         f"{MAX_PART_FILE_DEPTH} levels)") from None
+    deep = _first_too_deep(data, MAX_PART_FILE_DEPTH)
+    if deep is not None:
+        raise InputError("part file", str(path), f"nests tables or arrays deeper than {MAX_PART_FILE_DEPTH} "
+                         f"levels (at {deep[:80]})")
+    return data
 
 
 def read_part_meta(path: str | Path) -> dict[str, Any]:

@@ -22,6 +22,8 @@ from typing import Sequence
 
 import numpy as np
 
+from ..write_root import prepare
+
 __all__ = ["PALETTE", "Shape", "Mark", "Trace", "Animation", "GifInfo", "render_frames", "encode_gif",
            "write_animation", "spell"]
 
@@ -402,6 +404,6 @@ def write_animation(anim: Animation, path: str | Path, max_bytes: int = 2_000_00
         idx = [i for j, i in enumerate(idx) if j % 2 == 0 or i in anim.keep]
         data = encode_gif([frames[i] for i in idx], anim.frame_ms)
     p = Path(path)
-    p.parent.mkdir(parents=True, exist_ok=True)
+    prepare(p)
     p.write_bytes(data)
     return GifInfo(str(p), tuple(idx), frames[0].width, frames[0].height, len(data), int(anim.frame_ms))

@@ -19,6 +19,7 @@ from ezdxf import path as dxfpath
 
 from ..geometry.profile import Arc, Line, Loop, Profile, Spline
 from ..policy import CHORD_TOL_MM, POINT_TOL_MM
+from ..write_root import prepare
 
 CUT = "CUT"
 REF = "REF"
@@ -122,7 +123,7 @@ def write_dxf(
     reference curves are written where they are.
     """
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
+    prepare(path)
     if placements is not None and len(placements) != len(cut_profiles):
         raise ValueError(f"placements: {len(placements)} given for {len(cut_profiles)} profiles")
     old = ezdxf.options.write_fixed_meta_data_for_testing

@@ -23,6 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from .render import palette_colour
+from ..write_root import prepare
 
 #: glTF's unit is the metre; the project's the millimetre
 MM_TO_M = 1e-3
@@ -89,7 +90,7 @@ def write_glb(path: str | Path, name: str, meshes: dict, components) -> Path:
     total = 12 + 8 + len(js) + 8 + len(bn)
     data = (struct.pack("<4sII", b"glTF", 2, total) + struct.pack("<I4s", len(js), b"JSON") + js
             + struct.pack("<I4s", len(bn), b"BIN\0") + bn)
-    path.parent.mkdir(parents=True, exist_ok=True)
+    prepare(path)
     path.write_bytes(data)
     return path
 

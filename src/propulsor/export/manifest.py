@@ -17,6 +17,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ..write_root import prepare
+
 MANIFEST = "manifest.json"
 
 FORMATS = {
@@ -127,7 +129,7 @@ def write_manifest(folder: str | Path, part: str, inputs, derived, checks, versi
     with at least 'path'), written under the key ``media`` when not empty.  title: the part file's
     ``[meta] title`` (the gallery's heading), written when given."""
     folder = Path(folder)
-    folder.mkdir(parents=True, exist_ok=True)
+    prepare(folder / MANIFEST)
     files = file_entries(folder)
     for entry in files:
         extra = (file_info or {}).get(entry["path"])

@@ -20,6 +20,7 @@ import trimesh
 
 from ..policy import ANGULAR_TOL_RAD, CHORD_TOL_MM
 from ..solids.tessellate import MERGE_TOL_MM, merge_close_vertices, triangulate  # noqa: F401  (public here too)
+from ..write_root import prepare
 
 #: fixed zip entry time (the earliest a zip can hold)
 ZIP_DATE_TIME = (1980, 1, 1, 0, 0, 0)
@@ -45,7 +46,7 @@ tessellate = to_trimesh
 def write_stl(mesh: trimesh.Trimesh, path: str | Path, name: str = "") -> Path:
     """Binary STL with a fixed header (deterministic)."""
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
+    prepare(path)
     tri = np.asarray(mesh.triangles, np.float64)
     normals = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
     ln = np.linalg.norm(normals, axis=1, keepdims=True)
@@ -91,7 +92,7 @@ def write_3mf(mesh: trimesh.Trimesh, path: str | Path, name: str = "") -> Path:
     """3MF via trimesh (units mm, object called `name`), zip time stamps and
     UUIDs fixed (deterministic)."""
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
+    prepare(path)
     m = trimesh.Trimesh(vertices=np.asarray(mesh.vertices), faces=np.asarray(mesh.faces), process=False, validate=False)
     m.units = "millimeters"
     if name:
@@ -109,7 +110,7 @@ def write_3mf_objects(objects, path: str | Path) -> Path:
     """One 3MF holding several named objects [(name, mesh)] in millimetres, each placed where its
     vertices are (a print plate); zip time stamps and UUIDs fixed (deterministic)."""
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
+    prepare(path)
     scene = trimesh.Scene()
     for name, mesh in objects:
         m = trimesh.Trimesh(vertices=np.asarray(mesh.vertices), faces=np.asarray(mesh.faces), process=False,

@@ -13,6 +13,8 @@ import matplotlib
 matplotlib.use("Agg", force=False)
 import matplotlib.pyplot as plt  # noqa: E402
 
+from ..write_root import prepare  # noqa: E402
+
 _SVG_SALT = "propulsor"
 
 
@@ -26,7 +28,7 @@ def new_figure(width_in: float = 7.0, height_in: float = 4.5):
 def save_plot(path: str | Path, fig, dpi: int = 120) -> Path:
     """Save PNG or SVG (by suffix) without volatile metadata, then close the figure."""
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
+    prepare(path)
     suffix = path.suffix.lower()
     try:
         if suffix == ".png":

@@ -16,6 +16,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ..write_root import prepare
+
 #: picture width in pixels (the height follows the part's projected aspect, within 0.5 … 1 of it)
 PICTURE_WIDTH_PX = 600
 #: supersampling factor (the picture is rendered this many times larger and box-filtered down)
@@ -108,7 +110,7 @@ def render_iso(items, path: str | Path, width: int = PICTURE_WIDTH_PX, view=VIEW
         image[pix[win]] = rgb[owner[win]].astype(np.uint8)
     img = Image.fromarray(image.reshape(H, W, 3), "RGB").reduce(SUPERSAMPLE)
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
+    prepare(path)
     img.save(path, format="PNG", optimize=False, compress_level=6)
     return path
 

@@ -10,6 +10,8 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+from ..write_root import prepare
+
 
 #: name suffix -> unit, for the report's derived-value table (names carry their units, e.g. a_w_mm)
 _SUFFIX_UNITS = (("_mm3", "mm³"), ("_mm2", "mm²"), ("_mm", "mm"), ("_deg", "deg"), ("_rad", "rad"),
@@ -113,7 +115,7 @@ def write_report(
     figures = _refs(list(figures) + list(plots))
     views = _refs(views)
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
+    prepare(path)
     cks = [c.to_dict() if hasattr(c, "to_dict") else dict(c) for c in checks]
     n_fail = sum(not c["passed"] for c in cks)
     lines = [f"# {title}", ""]

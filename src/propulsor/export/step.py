@@ -22,6 +22,7 @@ from OCP.TopoDS import TopoDS_Shape
 from OCP.XCAFDoc import XCAFDoc_DocumentTool
 
 from ..solids.kernel import occ_shape, solids_of  # noqa: F401  (solids_of: public here too)
+from ..write_root import prepare
 
 STEP_TIMESTAMP = "2000-01-01T00:00:00"
 STEP_SCHEMA = "AP214IS"
@@ -57,7 +58,7 @@ def write_step(solid, path: str | Path, name: str) -> Path:
     """Write one solid to STEP (mm, AP214) as a product called `name`."""
     shape = occ_shape(solid)
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
+    prepare(path)
     _set_units()
     doc = TDocStd_Document(TCollection_ExtendedString("XmlOcaf"))
     tool = XCAFDoc_DocumentTool.ShapeTool_s(doc.Main())
@@ -105,7 +106,7 @@ def write_assembly_step(path, components, name: str) -> Path:
     if isinstance(components, (str, Path)):
         path, components = components, path
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
+    prepare(path)
     assy = cq.Assembly(name=name)
     seen = set()
     for comp in components:

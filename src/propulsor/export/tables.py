@@ -13,6 +13,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ..write_root import prepare
+
 
 def format_value(v, float_format: str | None = None) -> str:
     """One cell: bools as true/false, ints as ints, floats repr-exact or by format."""
@@ -39,7 +41,7 @@ def write_csv(path: str | Path, columns, rows=None, float_format: str | None = N
     None, or `columns` is a list of names and `rows` an iterable of sequences.
     """
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
+    prepare(path)
     if isinstance(columns, dict):
         if rows is not None:
             raise ValueError("give rows only with a list of column names")

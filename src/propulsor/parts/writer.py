@@ -20,6 +20,7 @@ A part module computes; it hands results to the writer:
 from __future__ import annotations
 
 import dataclasses
+import errno
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -30,6 +31,7 @@ from ..check import Check
 from ..export.report import unit_from_name  # noqa: F401  (public here too)
 from ..parallel import fork_pool, inline, threads_ok
 from ..params import params_to_dict, read_part_meta
+from ..write_root import prepare
 
 
 #: forked workers writing and checking solids (the machine has 2 cores)
@@ -127,12 +129,12 @@ class OutputWriter:
         self._keep: list = []  # the solids keyed by id, kept alive
         self._assemblies: list = []  # (name, [(component, solid key, 4×4 mm)], picture from below)
         self.report_name = "report.md"  # a print kit's is print_report.md
+        self.intended: set[str] = set()  # files the build means to write (relative paths), besides the media
 
     # -- helpers -----------------------------------------------------------------
     def path(self, rel: str) -> Path:
-        p = self.folder / rel
-        p.parent.mkdir(parents=True, exist_ok=True)
-        return p
+        self.intended.add(rel)
+        return prepare(self.folder / rel)
 
     def add_checks(self, checks) -> None:
         for c in checks:
@@ -155,6 +157,7 @@ class OutputWriter:
         on; :meth:`finish` collects the checks in the order the solids were added."""
         volume = float(solid.Volume())
         rec = SolidRecord(name, volume, {"step": f"{name}.step", "stl": f"{name}.stl", "3mf": f"{name}.3mf"})
+        self.intended.update(rec.files.values())
         self.solids.append(rec)
         self._solid_keys[id(solid)] = name
         self._keep.append(solid)
@@ -226,6 +229,7 @@ class OutputWriter:
             placed.append((str(comp[0]), key, placement_matrix(comp)))
         self._assemblies.append((name, placed, picture_from_below))
         self.extra_files += [f"{name}.glb"]
+        self.intended.update((f"{name}.glb", f"{name}.glb.js"))
         self.add_media("models", {"path": f"{name}.glb", "script": f"{name}.glb.js", "title": name, "step": p.name,
                                   "components": [c for c, _, _ in placed], "picture": f"{VIEWS}/{name}.png"})
         self.add_media("pictures", {"path": f"{VIEWS}/{name}.png", "title": f"{name} (assembly)", "of": name})
@@ -279,6 +283,13 @@ class OutputWriter:
         return p
 
     # -- the end -------------------------------------------------------------------
+    def intended_files(self) -> set[str]:
+        """Every file the build meant to write (relative paths): what its writers were asked for, the
+        media it lists, the report and its twin and the manifest."""
+        media = {e["path"] for entries in self.media.values() for e in entries if isinstance(e.get("path"), str)}
+        twin = self.report_name[:-3] + ".html"
+        return self.intended | media | {self.report_name, twin, "manifest.json"}
+
     def failures(self) -> list[str]:
         return [f"{c.name}: {c.message}" for c in self.checks
                 if not c.passed and c.name not in self.expected_failures]
@@ -311,6 +322,22 @@ class OutputWriter:
                               inputs=report_inputs, derived=report_derived, checks=self.checks, tables=self.tables,
                               plots=self.plots, notes=notes, views=views)
         write_report_html(report)
-        write_manifest(self.folder, part=self.part, inputs=inputs, derived=self.derived, checks=self.checks,
-                       expected_failures=self.expected_failures, media=self.media, title=self.title)
+        manifest = write_manifest(self.folder, part=self.part, inputs=inputs, derived=self.derived,
+                                  checks=self.checks, expected_failures=self.expected_failures, media=self.media,
+                                  title=self.title)
+        self.verify_written(manifest)
         return self.failures()
+
+    def verify_written(self, manifest: Path) -> None:
+        """Every file the build meant to write is in the manifest it wrote (a file lost under the build,
+        or a writer that wrote nothing, is an environment failure: nothing is published)."""
+        import json
+
+        from ..errors import EnvironmentFailure
+
+        listed = {e["path"] for e in json.loads(manifest.read_text(encoding="utf-8"))["files"]} | {"manifest.json"}
+        missing = sorted(self.intended_files() - listed)
+        if missing:
+            raise EnvironmentFailure(self.folder / missing[0], errno.ENOENT, "a file the build wrote is missing:",
+                                     f"{len(missing)} of {len(self.intended_files())} missing, the folder was "
+                                     "changed under the build")
