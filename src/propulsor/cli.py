@@ -41,7 +41,7 @@ def cmd_gallery(args) -> int:
 
 def cmd_build(args) -> int:
     """Build every part file given, one after the other in this process (the imports are paid once):
-    each into its own output folder; the exit code is the worst of them (2 before 1 before 0)."""
+    each into its own output folder; the exit code is the worst of them (2 before 3 before 1 before 0)."""
     files = [Path(f) for f in args.part_files]
     if len(files) > 1 and (args.out is not None or args.depfile):
         name = "--out" if args.out is not None else "--depfile"
