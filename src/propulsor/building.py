@@ -44,8 +44,8 @@ def vet_depfile(depfile, out: Path, out_value: str, params, part_file: Path) -> 
         return
     from .make_names import vet
 
-    vet([("--out", out_value, _make_path(out / "manifest.json"))] +
-        [(key, value, _make_path(p)) for key, value, p in named_files(params, part_file)])
+    vet([(key, value, _make_path(p)) for key, value, p in named_files(params, part_file)] +
+        [("--out", out_value, _make_path(out / "manifest.json"))])
 
 
 #: part files loaded by the command that forks their builds (batch.side_by_side): a forked build takes its
