@@ -4,6 +4,14 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 PART_FILES := $(sort $(wildcard parts/*.toml))
+# make names a part file as it is, in rules and in the shell: a part file whose name holds anything but
+# letters (any alphabet), digits and . _ - + stops make before it reads one (`propulsor build` builds it)
+BAD_PART_FILES := $(shell LC_ALL=C find parts -maxdepth 1 -name '*.toml' ! -name '.*' 2>/dev/null | \
+	LC_ALL=C grep -v '^parts/\([-A-Za-z0-9._+]\|[^ -~[:cntrl:]]\)*\.toml$$' | LC_ALL=C tr -c '[:print:]\n' '?' | \
+	sed "s/.*/'&'/")
+ifneq ($(BAD_PART_FILES),)
+$(error $(BAD_PART_FILES): make cannot name a part file with characters other than letters, digits, . _ - +; rename it, or run propulsor build on it)
+endif
 PART_NAMES := $(patsubst parts/%.toml,%,$(PART_FILES))
 OUT        := output
 # a part's build is out of date when its part file, a file it names (the depfile the build writes),
@@ -52,11 +60,18 @@ DRY_RUN = $(findstring n,$(firstword -$(MAKEFLAGS)))
 FLUSH = if [ -s $(QUEUE) ]; then q=$$(sort -u $(QUEUE)); \
 	$(if $(DRY_RUN),printf "would build: %s\n" "$$q";,rm -f $(QUEUE); $(BIN)/propulsor build $$q --depfile-dir $(DEPS);) fi
 
+# the files each build read, written by the builds themselves (escaped for make; each with an empty rule,
+# so that a file deleted since rebuilds what read it): the depfiles of the part files there are (that of
+# a part file deleted or renamed is not read)
+PROPULSOR_READ :=
+-include $(wildcard $(patsubst parts/%.toml,$(DEPS)/%.mk,$(PART_FILES)) \
+	$(patsubst parts/%.toml,$(DEPS)/%_kit.mk,$(KIT_FILES)))
+
 # .built also depends on what the manifests depend on: a manifest whose recipe only queued its part keeps
 # its time stamp, so make would not remake .built for it (GNU make remakes a target for a prerequisite
-# that is newer, not for one whose recipe ran); every file a build read is named in its depfile
-DEP_READ := $(sort $(shell sed 's/^[^:]*://' $(wildcard $(DEPS)/*.mk) /dev/null))
-$(OUT)/.built: $(MANIFESTS) $(PART_FILES) $(SOURCES) $(STAMP) $(DEP_READ)
+# that is newer, not for one whose recipe ran); every file a build read is added to PROPULSOR_READ by its
+# depfile
+$(OUT)/.built: $(MANIFESTS) $(PART_FILES) $(SOURCES) $(STAMP) $(PROPULSOR_READ)
 	+@$(FLUSH)
 	@touch $@
 
@@ -80,9 +95,6 @@ $(KIT_NAMES): print-%: $(OUT)/%_kit/manifest.json
 
 $(OUT)/%_kit/manifest.json: parts/%.toml $(SOURCES) $(STAMP)
 	$(BIN)/propulsor print $< --printer $(PRINTER) --out $(OUT)/$*_kit --depfile $(DEPS)/$*_kit.mk
-
-# the files each build read (written by the builds themselves)
--include $(wildcard $(DEPS)/*.mk)
 
 list: $(STAMP)
 	$(BIN)/propulsor list

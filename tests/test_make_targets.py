@@ -44,9 +44,21 @@ def project(tmp_path):
     for n in names:
         _touch(tmp_path / "output" / n / "manifest.json", now - 10)
     (tmp_path / "output" / ".deps").mkdir()
-    (tmp_path / "output" / ".deps" / "balancer.mk").write_text(
-        "output/balancer/manifest.json: parts/balancer.toml parts/road_wheel.toml\n")
+    _depfile(tmp_path, "balancer", "parts/balancer.toml", "parts/road_wheel.toml")
     return tmp_path, names, now
+
+
+def _depfile(folder: Path, name: str, *files: str) -> None:
+    """output/.deps/<name>.mk as a build of parts/<name>.toml that read `files` writes it."""
+    from propulsor.building import write_depfile
+
+    here = os.getcwd()
+    os.chdir(folder)
+    try:
+        write_depfile(Path("output/.deps") / f"{name}.mk", Path("output") / name / "manifest.json",
+                      [Path(f) for f in files])
+    finally:
+        os.chdir(here)
 
 
 def _builds(folder: Path, *targets: str) -> list[str]:
@@ -107,7 +119,9 @@ def test_depfile_names_the_files_a_build_read(tmp_path, monkeypatch):
     write_depfile(Path("output/.deps/b.mk"), Path("output/b/manifest.json"),
                    (Path("parts/balancer.toml"), tmp_path / "parts" / "road_wheel.toml"))
     assert (tmp_path / "output/.deps/b.mk").read_text() == \
-        "output/b/manifest.json: parts/balancer.toml parts/road_wheel.toml\n"
+        "output/b/manifest.json: parts/balancer.toml parts/road_wheel.toml\n" \
+        "parts/balancer.toml:\nparts/road_wheel.toml:\n" \
+        "PROPULSOR_READ += parts/balancer.toml parts/road_wheel.toml\n"
 
 
 @pytest.mark.parametrize("flags, jobs", [("", None), (" -j2 --jobserver-auth=3,4", 2), ("k -j", 0),
@@ -374,3 +388,131 @@ def test_make_builds_an_edited_part_file_for_real_and_then_nothing(project):
     shutil.rmtree(folder / "output" / "cam_linear")  # an output folder deleted: built again
     assert make_parts() == ["parts/cam_linear.toml"]
     assert make_parts() == []
+
+
+def _clean_env() -> dict:
+    return {k: v for k, v in os.environ.items() if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL")}
+
+
+def _make_parts(folder: Path, *goals: str) -> list[str]:
+    """The part files `make` (with a stand-in propulsor) built in one run; asserts that make succeeded."""
+    log = folder / "built.txt"
+    before = log.read_text().splitlines() if log.exists() else []
+    r = subprocess.run(["make", *(goals or ("parts",))], cwd=folder, capture_output=True, text=True, timeout=60,
+                       env=_clean_env())
+    assert r.returncode == 0, r.stdout + r.stderr
+    after = log.read_text().splitlines() if log.exists() else []
+    return after[len(before):]
+
+
+def _name_road_wheel(folder: Path, name: str) -> Path:
+    """parts/balancer.toml names parts/<name> (a copy of the road wheel) as its road_wheel_file."""
+    part = folder / "parts" / "balancer.toml"
+    part.write_text(part.read_text().replace('road_wheel_file = "road_wheel.toml"',
+                                             f'road_wheel_file = "{name}"'))
+    wheel = folder / "parts" / name
+    wheel.parent.mkdir(parents=True, exist_ok=True)
+    shutil.copy2(folder / "parts" / "road_wheel.toml", wheel)
+    return wheel
+
+
+@needs_make
+def test_a_file_name_that_would_run_code_is_refused_and_make_runs_nothing(project, monkeypatch, capfd):
+    """A road-wheel file named `rw$(shell<TAB>touch<TAB>PWNED).toml`: make cannot name it (a tab), so the
+    build refuses it before building (exit 2, one line with the key and the value, nothing written), and
+    no `make` creates PWNED."""
+    folder, _, now = project
+    _fake_propulsor(folder)
+    _touch(folder / "output" / ".built", now - 5)
+    _name_road_wheel(folder, "wheels/rw$(shell\ttouch\tPWNED).toml")
+    monkeypatch.chdir(folder)
+    capfd.readouterr()
+    assert main(["build", "parts/balancer.toml", "-q", "--out", "output/b", "--depfile", "output/.deps/b.mk"]) == 2
+    err = capfd.readouterr().err
+    assert err == "propulsor: error: road_wheel_file = 'wheels/rw$(shell\\ttouch\\tPWNED).toml': make cannot name a " \
+                  "file with a tab; rename it\n"
+    assert not (folder / "output" / "b").exists() and not (folder / "output" / ".deps" / "b.mk").exists()
+    r = subprocess.run(["make", "-n", "list"], cwd=folder, capture_output=True, text=True, timeout=60,
+                       env=_clean_env())
+    assert r.returncode == 0, r.stderr
+    assert _make_parts(folder) == ["parts/balancer.toml"]  # the stand-in builds what the real one refuses
+    assert not list(folder.rglob("PWNED"))
+
+
+@needs_make
+def test_make_with_a_named_file_whose_name_holds_make_s_characters(project):
+    """A named file `wheels/rw#1 $(shell touch PWNED).toml`: its depfile makes make neither stop ("No rule
+    to make target 'wheels/rw'") nor run anything; touching the file rebuilds the part that reads it."""
+    folder, _, now = project
+    _fake_propulsor(folder)
+    _touch(folder / "output" / ".built", now - 5)
+    wheel = _name_road_wheel(folder, "wheels/rw#1 $(shell touch PWNED).toml")
+    os.utime(wheel, (now - 100, now - 100))
+    os.utime(folder / "parts" / "balancer.toml", (now - 100, now - 100))
+    _depfile(folder, "balancer", "parts/balancer.toml", str(wheel.relative_to(folder)))
+    r = subprocess.run(["make", "-n", "list"], cwd=folder, capture_output=True, text=True, timeout=60,
+                       env=_clean_env())
+    assert r.returncode == 0, r.stderr
+    assert _make_parts(folder) == []
+    t = time.time()
+    os.utime(wheel, (t, t))
+    assert _make_parts(folder) == ["parts/balancer.toml"]
+    assert _make_parts(folder) == []
+    assert not list(folder.rglob("PWNED"))
+
+
+@needs_make
+def test_make_after_a_built_part_file_is_deleted_or_renamed(project):
+    """Depfiles of part files deleted or renamed are not read; a deleted file that a build read makes that
+    part out of date (make runs its build, which says what is missing) instead of stopping make."""
+    folder, names, now = project
+    _fake_propulsor(folder)
+    _touch(folder / "output" / ".built", now - 5)
+    for n in names:
+        _depfile(folder, n, f"parts/{n}.toml", *(["parts/road_wheel.toml"] if n == "balancer" else []))
+    assert _make_parts(folder) == []
+    (folder / "parts" / "cam_quadratic.toml").unlink()
+    assert _make_parts(folder) == []
+    (folder / "parts" / "cam_linear.toml").rename(folder / "parts" / "cam_linear2.toml")
+    assert _make_parts(folder) == ["parts/cam_linear2.toml"]
+    assert _make_parts(folder) == []
+    (folder / "parts" / "road_wheel.toml").unlink()  # the balancer read it
+    assert _make_parts(folder) == ["parts/balancer.toml"]
+
+
+@needs_make
+@pytest.mark.parametrize("name", ["my part.toml", "a$(touch PWNED).toml", "a;touch PWNED;.toml", "a#b.toml",
+                                  "a:b.toml", "a%b.toml", "a=b.toml", "a*.toml", "a\\b.toml", "a'b.toml"])
+def test_make_refuses_a_part_file_name_it_cannot_handle(project, name):
+    """make says which part file it cannot name, in one line, and stops before it reads one (nothing
+    built, nothing run from the name); `propulsor build` still takes the file."""
+    folder, _, _ = project
+    _fake_propulsor(folder)
+    shutil.copy2(folder / "parts" / "road_wheel.toml", folder / "parts" / name)
+    for goals in (["-n", "list"], ["parts"]):
+        r = subprocess.run(["make", *goals], cwd=folder, capture_output=True, text=True, timeout=60,
+                           env=dict(_clean_env(), LC_ALL="C"))
+        assert r.returncode == 2 and r.stdout == ""
+        assert len(r.stderr.splitlines()) == 1 and f"'parts/{name}': make cannot name a part file" in r.stderr
+    assert not list(folder.rglob("PWNED")) and not (folder / "built.txt").exists()
+
+
+def test_propulsor_build_takes_a_part_file_make_cannot_name(tmp_path, monkeypatch, capfd):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "parts").mkdir()
+    shutil.copy2(ROOT / "parts" / "road_wheel.toml", tmp_path / "parts" / "my wheel;1.toml")
+    assert main(["build", "parts/my wheel;1.toml", "--dry-run"]) == 0
+    assert "is valid" in capfd.readouterr().out
+    # a depfile is for make: the file is refused before anything is built
+    assert main(["build", "parts/my wheel;1.toml", "--depfile", "x.mk", "--dry-run"]) == 2
+    assert "part file = 'parts/my wheel;1.toml': make cannot name a file with a ';'" in capfd.readouterr().err
+
+
+@needs_make
+def test_make_builds_a_part_file_named_in_another_alphabet(project):
+    folder, _, now = project
+    _fake_propulsor(folder)
+    _touch(folder / "output" / ".built", now - 5)
+    shutil.copy2(folder / "parts" / "road_wheel.toml", folder / "parts" / "räder-2.toml")
+    assert _make_parts(folder) == ["parts/räder-2.toml"]
+    assert _make_parts(folder) == []

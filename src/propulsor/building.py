@@ -13,17 +13,41 @@ from .errors import EnvironmentFailure, InputError
 from .signals import EXIT_CHECK_FAILED, EXIT_OK, check_signalled, fail_environment, fail_input, hold_signals
 
 
-def files_read(params, part_file: Path) -> tuple[Path, ...]:
-    """The part file and every file it names (string parameters ending in `_file`, relative to it)."""
+def named_files(params, part_file: Path) -> tuple[tuple[str, str, Path], ...]:
+    """(key, value as written, path) of the part file and of every file it names (string parameters
+    ending in `_file`, relative to it)."""
     import dataclasses
 
-    files = [part_file]
+    files = [("part file", str(part_file), part_file)]
     for f in dataclasses.fields(params):
         v = getattr(params, f.name)
         if f.name.endswith("_file") and isinstance(v, str) and v:
             p = Path(v)
-            files.append(p if p.is_absolute() else part_file.resolve().parent / p)
+            files.append((f.name, v, p if p.is_absolute() else part_file.resolve().parent / p))
     return tuple(files)
+
+
+def files_read(params, part_file: Path) -> tuple[Path, ...]:
+    """The part file and every file it names (:func:`named_files`)."""
+    return tuple(p for _, _, p in named_files(params, part_file))
+
+
+def _make_path(p: Path) -> str:
+    """`p` relative to the current folder, as the depfile names it."""
+    import os
+
+    return os.path.relpath(Path(p).resolve())
+
+
+def vet_depfile(depfile, out: Path, out_value: str, params, part_file: Path) -> None:
+    """Before a build that writes a depfile: InputError (key and value) when make cannot name its
+    target or a file it reads (make_names.refusal); such a file builds without --depfile."""
+    if not depfile:
+        return
+    from .make_names import vet
+
+    vet([(key, value, _make_path(p)) for key, value, p in named_files(params, part_file)] +
+        [("--out", out_value, _make_path(out / "manifest.json"))])
 
 
 #: part files loaded by the command that forks their builds (batch.side_by_side): a forked build takes its
@@ -50,17 +74,17 @@ def load_part(part_file: Path):
 
 
 def write_depfile(depfile: Path, target: Path, files) -> None:
-    """A make rule ``target: files`` (paths relative to the current folder), written in one step: the
-    files a build read besides its part file (``road_wheel_file`` …) become prerequisites of its
-    manifest."""
+    """A make rule ``target: files`` (paths relative to the current folder, escaped for make), written in
+    one step: the files a build read besides its part file (``road_wheel_file`` …) become prerequisites
+    of its manifest; each also gets an empty rule and is added to PROPULSOR_READ (make_names)."""
     import os
 
-    def rel(p: Path) -> str:
-        return os.path.relpath(Path(p).resolve()).replace(" ", "\\ ")
+    from .make_names import depfile_text
 
+    text = depfile_text(_make_path(target), [_make_path(f) for f in files])
     depfile.parent.mkdir(parents=True, exist_ok=True)
     tmp = depfile.with_name(depfile.name + f".tmp{os.getpid()}")
-    tmp.write_text(f"{rel(target)}: {' '.join(rel(f) for f in files)}\n")
+    tmp.write_text(text, encoding="utf-8", errors="surrogateescape")
     os.replace(tmp, depfile)
 
 
@@ -177,6 +201,7 @@ def build_one(args, part_file: Path, depfile: Path | None) -> int:
         part_type, params, estimate = load_part(part_file)
         keep = files_read(params, part_file)
         out = of.vet_target(out, force=args.force, keep=keep)
+        vet_depfile(depfile, out, args.out or str(out), params, part_file)
     except InputError as exc:
         return fail_input(exc)
     if args.dry_run:

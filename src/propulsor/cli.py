@@ -16,7 +16,7 @@ import sys
 import threading
 from pathlib import Path
 
-from .building import build_one, files_read, into_output, load_part, regenerate_gallery
+from .building import build_one, files_read, into_output, load_part, regenerate_gallery, vet_depfile
 from .errors import EnvironmentFailure, InputError
 from .signals import (EXIT_BAD_INPUT, EXIT_CHECK_FAILED, EXIT_OK, SIGNALLED, Interrupted, check_signalled,
                       fail_environment, fail_input, hold_signals, raise_interrupted, unraisable)
@@ -125,6 +125,7 @@ def cmd_print(args) -> int:
         make_kit = get_kit(part_type.name)
         keep = files_read(params, part_file)
         out = of.vet_target(out, force=args.force, keep=keep)
+        vet_depfile(args.depfile, out, args.out or str(out), params, part_file)
     except InputError as exc:
         return fail_input(exc)
 
