@@ -107,11 +107,13 @@ def test_markdown_links_and_images_only_to_files_in_the_folder():
 
     md = ("[a](views/a.png) ![b](plots/b.png) [c](../secret.txt) [d](/etc/passwd) [e](//host/x) "
           "[f](%2e%2e/x) [g](file:///etc/passwd) [h](data:text/html,x) [i](views\\..\\..\\x) [j][r] <http://x.y>\n\n"
-          "[r]: javascript:alert(1)\n")
+          "[r]: javascript:alert(1)\n\n<script>alert(1)</script>\n\n<div onclick=\"alert(1)\">k</div>\n")
     doc = lxml.html.fragment_fromstring(markdown_to_html(md), create_parent="div")
+    assert not doc.xpath("//script|//div/div|//*[@onclick]")  # a block of raw HTML is text too
     assert [(e.tag, e.get("href") or e.get("src")) for e in doc.xpath("//a|//img")] == [
         ("a", "views/a.png"), ("img", "plots/b.png")]
-    assert doc.text_content().split() == ["a", "c", "d", "e", "f", "g", "h", "i", "j", "http://x.y"]
+    assert doc.text_content().split()[:10] == ["a", "c", "d", "e", "f", "g", "h", "i", "j", "http://x.y"]
+    assert "<script>alert(1)</script>" in doc.text_content()
 
 
 # ---- the gallery -----------------------------------------------------------------------------------
@@ -221,6 +223,24 @@ def test_gallery_renders_each_field_type_a_manifest_can_get_wrong(tmp_path, caps
     assert "media.animations[0].width_px is a string" in notes[1]
     assert "not JSON" in notes[-2] and "not JSON" in notes[-1] and "q_&lt;i&gt;x" in page and "<i>" not in page
     assert [s.get("id") for s in doc.xpath("//section")] == ["a_good"] and "fine" in page
+
+
+def test_gallery_that_cannot_be_written_is_an_environment_failure_not_a_foreign_page(tmp_path, monkeypatch, capsys):
+    import errno
+
+    import propulsor.export.gallery as gallery
+
+    (tmp_path / "p").mkdir()
+    (tmp_path / "p" / "manifest.json").write_text(json.dumps({"part": "road_wheel", "files": []}))
+
+    def full(path, text):
+        raise OSError(errno.ENOSPC, "No space left on device", str(path))
+
+    monkeypatch.setattr(gallery, "write_atomically", full)
+    assert main(["gallery", str(tmp_path), "-q"]) == 3
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and str(tmp_path / INDEX) in err[0] and "ENOSPC" in err[0], err
+    assert not (tmp_path / INDEX).exists()
 
 
 @pytest.mark.browser
