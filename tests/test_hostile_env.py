@@ -375,3 +375,19 @@ def test_set_with_a_newline_is_refused_not_half_read(wheel, tmp_path):
     assert r.returncode == 2
     assert "one KEY=VALUE on one line" in _one_error_line(r.stderr)
     assert not (tmp_path / "kit").exists()
+
+
+def test_gallery_with_a_fifo_for_a_manifest_or_a_page_does_not_hang(tmp_path, wheel):
+    folder = tmp_path / "output"
+    built = folder / "good"
+    assert _cli("build", str(wheel), "--out", str(built), "-q").returncode == 0
+    (folder / "bad").mkdir()
+    os.mkfifo(folder / "bad" / "manifest.json")
+    r = _cli("gallery", str(folder), "-q", timeout=60)
+    assert r.returncode == 0, r.stderr
+    page = (folder / "index.html").read_text()
+    assert "output/bad" in page or "bad: manifest" in page or "is a FIFO" in page
+    (folder / "index.html").unlink()
+    os.mkfifo(folder / "index.html")
+    r = _cli("gallery", str(folder), "-q", timeout=60)
+    assert r.returncode == 2 and "not written by propulsor" in _one_error_line(r.stderr)

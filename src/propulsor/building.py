@@ -164,22 +164,31 @@ def gallery_folder(folder: Path) -> bool:
         return False
 
 
-def regenerate_gallery(folder: Path, progress) -> Path | None:
-    """Rewrite ``folder/index.html`` (the gallery of every part built there) after a build put its
-    output in place.  Under the gallery's own lock, so that of two builds finishing together the later
-    one writes a page that shows both; never over an index.html propulsor did not write."""
+def write_gallery_locked(folder: Path) -> Path | None:
+    """``folder/index.html`` written under the gallery's own lock (export.gallery.write_gallery): its
+    path, or None when an index.html there is not one propulsor wrote.  Errors pass."""
     from . import output_folder as of
     from .export.gallery import INDEX, write_gallery
 
     lock = of.OutputLock(folder / INDEX)
     try:
         lock.acquire(wait=True)
-        path = write_gallery(folder)
+        return write_gallery(folder)
+    finally:
+        lock.release()
+
+
+def regenerate_gallery(folder: Path, progress) -> Path | None:
+    """Rewrite ``folder/index.html`` (the gallery of every part built there) after a build put its
+    output in place.  Under the gallery's own lock, so that of two builds finishing together the later
+    one writes a page that shows both; never over an index.html propulsor did not write."""
+    from .export.gallery import INDEX
+
+    try:
+        path = write_gallery_locked(folder)
     except Exception as exc:  # noqa: BLE001 - the build's output is in place; the page is not worth failing it
         print(f"propulsor: the gallery {folder / INDEX} was not written: {type(exc).__name__}: {exc}", file=sys.stderr)
         return None
-    finally:
-        lock.release()
     if path is None:
         progress(f"{folder / INDEX} was not written by propulsor: left as it is")
     else:

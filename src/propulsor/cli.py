@@ -16,7 +16,7 @@ import sys
 import threading
 from pathlib import Path
 
-from .building import build_one, files_read, into_output, load_part, regenerate_gallery, vet_depfile
+from .building import build_one, files_read, into_output, load_part, vet_depfile, write_gallery_locked
 from .errors import EnvironmentFailure, InputError
 from .signals import (EXIT_BAD_INPUT, EXIT_CHECK_FAILED, EXIT_OK, SIGNALLED, Interrupted, check_signalled,
                       fail_environment, fail_input, hold_signals, raise_interrupted, unraisable)
@@ -32,10 +32,17 @@ def cmd_gallery(args) -> int:
         return fail_input(InputError("folder", str(folder), "must be a folder of built parts (e.g. output/)"))
     if not built_parts(folder):
         return fail_input(InputError("folder", str(folder), "holds no built part (no */manifest.json)"))
-    path = regenerate_gallery(folder, Progress(enabled=not args.quiet, check=check_signalled))
+    progress = Progress(enabled=not args.quiet, check=check_signalled)
+    try:
+        path = write_gallery_locked(folder)
+    except EnvironmentFailure as exc:
+        return fail_environment(exc)
+    except OSError as exc:
+        return fail_environment(EnvironmentFailure.from_oserror(exc, "cannot write the gallery"))
     if path is None:
         return fail_input(InputError("folder", str(folder), f"its {INDEX} was not written by propulsor: "
                                       "not replaced"))
+    progress(f"gallery: {path}")
     return EXIT_OK
 
 

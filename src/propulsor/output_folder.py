@@ -37,6 +37,7 @@ import tempfile
 from pathlib import Path
 
 from .errors import EnvironmentFailure, InputError
+from .policy import MANIFEST_MAX_BYTES
 from .regular_file import read_regular, sha256_regular
 
 MANIFEST = "manifest.json"
@@ -363,8 +364,6 @@ def make_temp(out: Path) -> Path:
 
 # -- what is published ---------------------------------------------------------------------------
 
-#: the largest manifest.json a build or a reader accepts (bytes); a real one is below 200 kB
-MANIFEST_MAX_BYTES = 16 << 20
 
 
 def verify_built(tmp: Path, ident) -> None:

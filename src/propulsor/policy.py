@@ -13,6 +13,10 @@ ANGULAR_TOL_RAD = 0.1
 #: two points closer than this are the same point
 POINT_TOL_MM = 1e-7
 
+# --- files read back ------------------------------------------------------------
+#: the largest manifest.json a build, the gallery or a check reads (bytes); a real one is below 200 kB
+MANIFEST_MAX_BYTES = 16 << 20
+
 # --- solids / checks ----------------------------------------------------------
 #: re-imported STEP volume vs built solid, relative
 STEP_VOLUME_REL_TOL = 1e-6

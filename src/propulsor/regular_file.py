@@ -63,3 +63,12 @@ def sha256_regular(path: str | Path) -> tuple[int, str]:
         return n, h.hexdigest()
     finally:
         os.close(fd)
+
+
+def read_head(path: str | Path, n: int) -> bytes:
+    """The first `n` bytes of a regular file (any size); ValueError when it is not one."""
+    fd, _ = _open_regular(path)
+    try:
+        return os.read(fd, n)
+    finally:
+        os.close(fd)

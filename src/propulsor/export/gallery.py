@@ -1,4 +1,4 @@
-"""output/index.html: one page for every part built in an output folder (issue 14).
+"""output/index.html: one page for every part built in an output folder.
 
 Reads the manifests and the files beside them only (every ``*/manifest.json``; a print kit
 ``<name>_kit/`` is shown with its part ``<name>/``): each part with its title, its status (checks
@@ -7,6 +7,11 @@ animations (``media.animations``), an interactive 3D view of the assembly (``med
 GLB's script twin, drawn by ``web/viewer.js``, inlined), the pictures (``media.pictures``), links to
 the HTML report, the files by format and the print kit.  The page is self-contained (inline style
 and script, relative links), so it works opened from disk, with no network.
+
+Every text from a manifest (titles, names, values) is escaped; every path it names is linked only
+when it is relative, inside that part's folder and an existing regular file (gallery_manifest.py),
+and written percent-encoded.  A manifest that cannot be read, or has a field of the wrong type, is a
+note on the page ("output/<name>: manifest not readable: <reason>"); the other parts are shown.
 
 Deterministic: the same manifests give the same bytes (folders sorted, no time stamp).  Written
 through a temporary file and one rename; never over an ``index.html`` that propulsor did not write.
@@ -20,7 +25,9 @@ import re
 from html import escape
 from importlib import resources
 from pathlib import Path
+from urllib.parse import quote
 
+from .gallery_manifest import ManifestError, inside, load_manifest
 from .html import page, write_atomically
 from .manifest import MANIFEST
 from .report import _fmt, unit_from_name
@@ -72,34 +79,32 @@ figure.viewer canvas { display: block; width: 100%; aspect-ratio: 4 / 3; max-hei
 details { margin: 4px 0; } summary { cursor: pointer; }
 .files a { display: inline-block; margin-right: 10px; }
 .kit { border-top: 1px dashed var(--line); margin-top: 12px; }
+.unreadable { color: var(--bad); }
 """
 
 
-def _is_part_manifest(data) -> bool:
-    return isinstance(data, dict) and isinstance(data.get("part"), str) and isinstance(data.get("files"), list)
-
-
-def _load(folder: Path) -> dict | None:
-    try:
-        data = json.loads((folder / MANIFEST).read_text(encoding="utf-8"))
-    except (OSError, ValueError):
-        return None
-    return data if _is_part_manifest(data) else None
-
-
 def built_parts(folder: str | Path) -> list[dict]:
-    """Every built part under `folder`: {name, manifest, kit (name, manifest) or None}, sorted by name;
-    a kit whose part is not built is an entry of its own."""
+    """Every built part under `folder` (every sub-folder with a manifest.json): {name, manifest (the
+    clean manifest, gallery_manifest.py), kit (name, manifest) or None, error (why the manifest is not
+    shown) or None}, sorted by name; a kit whose part is not built is an entry of its own."""
     folder = Path(folder)
-    found = {d.name: m for d in sorted(folder.iterdir()) if d.is_dir() and not d.name.startswith(".")
-             for m in [_load(d)] if m is not None}
+    found: dict[str, tuple[dict | None, str | None]] = {}
+    for d in sorted(folder.iterdir()):
+        if d.name.startswith(".") or not d.is_dir() or not (d / MANIFEST).exists():
+            continue
+        try:
+            found[d.name] = (load_manifest(d), None)
+        except ManifestError as exc:
+            found[d.name] = (None, str(exc))
     out = []
-    for name, m in found.items():
-        if name.endswith("_kit") and name[:-4] in found:
+    for name, (m, error) in found.items():
+        if name.endswith("_kit") and name[:-4] in found and found[name[:-4]][0] is not None and m is not None:
             continue
         kit_name = f"{name}_kit"
-        kit = (kit_name, found[kit_name]) if kit_name in found and not name.endswith("_kit") else None
-        out.append({"name": name, "manifest": m, "kit": kit})
+        kit = None
+        if m is not None and not name.endswith("_kit") and kit_name in found and found[kit_name][0] is not None:
+            kit = (kit_name, found[kit_name][0])
+        out.append({"name": name, "manifest": m, "kit": kit, "error": error})
     return out
 
 
@@ -133,8 +138,14 @@ def key_values(manifest: dict) -> list[tuple[str, str, str]]:
     return [(k, _fmt(derived[k]), unit_from_name(k)) for k in names]
 
 
+def _url(path: str) -> str:
+    """A relative path as an address: every character but letters, digits, ``/ - . _ ~`` percent-encoded
+    (a ``:`` never makes it a scheme, a ``#`` or ``?`` stays part of the name)."""
+    return quote(path, safe="/")
+
+
 def _a(href: str, text: str) -> str:
-    return f'<a href="{escape(href)}">{escape(text)}</a>'
+    return f'<a href="{escape(_url(href))}">{escape(text)}</a>'
 
 
 def _size(n) -> str:
@@ -144,7 +155,7 @@ def _size(n) -> str:
 
 def _figure(src: str, caption: str, width=None, height=None) -> str:
     wh = f' width="{int(width)}" height="{int(height)}"' if width and height else ""
-    return (f'<figure><img src="{escape(src)}" alt="{escape(caption)}"{wh}>'
+    return (f'<figure><img src="{escape(_url(src))}" alt="{escape(caption)}"{wh}>'
             f"<figcaption>{escape(caption)}</figcaption></figure>")
 
 
@@ -163,7 +174,7 @@ def _animation(name: str, e: dict) -> str:
 
 
 def _viewer(name: str, models: list[dict]) -> str:
-    data = [{"script": f"{name}/{m['script']}", "title": str(m.get("title", m["path"]))} for m in models
+    data = [{"script": _url(f"{name}/{m['script']}"), "title": str(m.get("title", m["path"]))} for m in models
             if m.get("script")]
     if not data:
         return ""
@@ -194,9 +205,9 @@ def _files(name: str, manifest: dict) -> str:
 
 def _report_links(name: str, folder: Path, stem: str) -> str:
     links = []
-    if (folder / name / f"{stem}.html").is_file():
+    if inside(folder / name, f"{stem}.html"):
         links.append(_a(f"{name}/{stem}.html", "report"))
-    if (folder / name / f"{stem}.md").is_file():
+    if inside(folder / name, f"{stem}.md"):
         links.append(_a(f"{name}/{stem}.md", f"{stem}.md"))
     links.append(_a(f"{name}/{MANIFEST}", MANIFEST))
     return '<p class="links">' + "".join(links) + "</p>"
@@ -221,8 +232,7 @@ def _kit(folder: Path, kit_name: str, m: dict) -> str:
 
 def _section(folder: Path, entry: dict) -> str:
     name, m = entry["name"], entry["manifest"]
-    media = m.get("media") if isinstance(m.get("media"), dict) else {}
-    media = {k: v for k, v in media.items() if isinstance(v, list)}
+    media = m["media"]
     cls, text = status(m)
     title = m.get("title") or name
     out = [f'<section class="part" id="{escape(name)}">', f"<h2>{escape(title)}</h2>",
@@ -233,12 +243,12 @@ def _section(folder: Path, entry: dict) -> str:
         out.append('<dl class="values">' + "".join(
             f"<dt>{escape(k)}</dt><dd>{escape(v)}{('&nbsp;' + escape(u)) if u else ''}</dd>" for k, v, u in values) + "</dl>")
     out.append(_report_links(name, folder, "print_report" if name.endswith("_kit") else "report"))
-    anims = [e for e in media.get("animations", []) if isinstance(e, dict) and e.get("path")]
+    anims = media["animations"]
     if anims:
         out.append("<h3>Motion</h3><div class=\"media wide\">" + "".join(_animation(name, e) for e in anims) + "</div>")
-    models = [e for e in media.get("models", []) if isinstance(e, dict) and e.get("path")]
+    models = media["models"]
     out.append(_viewer(name, models))
-    pics = [e for e in media.get("pictures", []) if isinstance(e, dict) and e.get("path")]
+    pics = media["pictures"]
     if pics:
         out.append("<h3>Pictures</h3><div class=\"media\">" + "".join(
             _figure(f"{name}/{e['path']}", str(e.get("title", e["path"]))) for e in pics) + "</div>")
@@ -251,6 +261,12 @@ def _section(folder: Path, entry: dict) -> str:
     return "\n".join(x for x in out if x)
 
 
+def _unreadable(folder: Path, entry: dict) -> str:
+    """The note of a part whose manifest is not shown: where, and why."""
+    where = f"{folder.name}/{entry['name']}"
+    return f'<p class="unreadable">{escape(where)}: manifest not readable: {escape(entry["error"])}</p>'
+
+
 def viewer_script() -> str:
     return resources.files(__package__).joinpath("web/viewer.js").read_text(encoding="utf-8")
 
@@ -258,7 +274,8 @@ def viewer_script() -> str:
 def render_gallery(folder: str | Path) -> str:
     """The page (HTML text) of every built part in `folder`."""
     folder = Path(folder)
-    parts = built_parts(folder)
+    found = built_parts(folder)
+    parts = [e for e in found if e["manifest"] is not None]
     counts = {"ok": 0, "doc": 0, "bad": 0}
     for e in parts:
         counts[status(e["manifest"])[0]] += 1
@@ -266,9 +283,10 @@ def render_gallery(folder: str | Path) -> str:
             f'<p class="sub">{len(parts)} part(s) in this folder: {counts["ok"]} with every check passed, '
             f'{counts["doc"]} with documented failures, {counts["bad"]} failed.  Each part\'s report, files and '
             "print kit are linked below; the 3D views turn with the mouse.</p>"]
+    head += [_unreadable(folder, e) for e in found if e["manifest"] is None]
     if parts:
         head.append("<nav><ul>" + "".join(
-            f'<li><a href="#{escape(e["name"])}">{escape(e["name"])}</a></li>' for e in parts) + "</ul></nav>")
+            f'<li><a href="#{escape(_url(e["name"]))}">{escape(e["name"])}</a></li>' for e in parts) + "</ul></nav>")
     head.append("</header>")
     body = "\n".join(head + [_section(folder, e) for e in parts])
     return page("propulsor: built parts", body, style=STYLE, script=viewer_script())
@@ -290,8 +308,10 @@ def is_ours(path: Path) -> bool:
 
 
 def _ours(path: Path) -> bool:
+    """Whether `path` is a page propulsor wrote (a regular file: a FIFO or a device is never waited on)."""
+    from ..regular_file import read_head
+
     try:
-        with open(path, encoding="utf-8", errors="replace") as fh:
-            return GENERATOR in fh.read(4096)
-    except OSError:
+        return GENERATOR in read_head(path, 4096).decode("utf-8", "replace")
+    except (OSError, ValueError):
         return False

@@ -3,17 +3,27 @@
 ``report.md`` → ``report.html`` (``print_report.md`` → ``print_report.html``) beside it, converted by
 Python-Markdown (with its ``tables`` extension), so the twin has the same content — tables, images,
 links — as the Markdown.  The page is self-contained: its style sheet is inline, nothing is loaded
-from the network (it works opened from disk).  Wide tables scroll inside their own box, so the
+from the network (it works opened from disk).
+
+Text in a report comes from part files (title, notes) and is data, never markup: the conversion
+keeps no raw HTML (a ``<script>`` in the Markdown is shown as text), and a link or image is kept
+only when its address is a relative path inside the report's folder (:func:`local_url`); any other
+(``javascript:``, ``data:``, a scheme, a leading ``/``, a ``..``) is shown as its text.  Every page
+carries a Content-Security-Policy that lets it run only its own inline script (by its sha256) and
+load only files beside it (:func:`content_security_policy`).  Wide tables scroll inside their own box, so the
 page itself is as wide as the screen (a phone's too).  Deterministic: the same Markdown gives the
 same bytes.
 """
 
 from __future__ import annotations
 
+import base64
+import hashlib
 import html
 import os
 import tempfile
 from pathlib import Path
+from urllib.parse import unquote
 
 #: the style of every page the project writes (inline: nothing fetched)
 STYLE = """
@@ -38,24 +48,83 @@ th { background: var(--panel); }
 """
 
 
+def _sha256(text: str) -> str:
+    return "'sha256-" + base64.b64encode(hashlib.sha256(text.encode("utf-8")).digest()).decode("ascii") + "'"
+
+
+def content_security_policy(style: str, script: str = "") -> str:
+    """The policy of a page whose one inline style sheet is `style` and one inline script `script`
+    (the exact text between the tags): nothing but these two and files of the page's own origin (its
+    folder opened from disk) — no other inline code, no plug-in, no frame, no form, no network."""
+    scripts = f"'self' {_sha256(script)}" if script else "'none'"
+    return ("default-src 'none'; img-src 'self'; " f"style-src {_sha256(style)}; script-src {scripts}; "
+            "base-uri 'none'; form-action 'none'")
+
+
 def page(title: str, body: str, style: str = "", script: str = "") -> str:
-    """A whole HTML document: inline style (STYLE + `style`), `body` as given, an inline `script`."""
+    """A whole HTML document: inline style (STYLE + `style`), `body` as given, an inline `script`; a
+    Content-Security-Policy that lets only these two run."""
+    css = STYLE + style
+    code = f"\n{script}\n" if script else ""
+    csp = content_security_policy(css, code)  # no " < & in it: written as it is
     out = ["<!DOCTYPE html>", '<html lang="en">', "<head>", '<meta charset="utf-8">',
+           f'<meta http-equiv="Content-Security-Policy" content="{csp}">',
            '<meta name="viewport" content="width=device-width, initial-scale=1">',
            '<meta name="generator" content="propulsor">',
-           f"<title>{html.escape(title)}</title>", f"<style>{STYLE}{style}</style>", "</head>", "<body>", body]
+           f"<title>{html.escape(title)}</title>", f"<style>{css}</style>", "</head>", "<body>", body]
     if script:
-        out.append(f"<script>\n{script}\n</script>")
+        out.append(f"<script>{code}</script>")
     out += ["</body>", "</html>", ""]
     return "\n".join(out)
 
 
+def local_url(url: str) -> bool:
+    """Whether `url` (as written in an attribute, entities and all) is a relative path that stays in
+    the page's folder: no scheme (no ``:`` at all), no leading ``/``, no ``\\``, no ``..`` (also
+    percent-encoded), no white space or control character.  A bare ``#fragment`` is local."""
+    u = html.unescape(url)
+    if not u or any(ord(c) <= 0x20 or ord(c) == 0x7F or c in "\\:" for c in u) or u.startswith("/"):
+        return False
+    path = unquote(u.split("#", 1)[0].split("?", 1)[0])
+    return not any(ord(c) <= 0x20 or c in "\\:" for c in path) and ".." not in path.split("/")
+
+
+def _markdown_extension():
+    from markdown.extensions import Extension
+    from markdown.treeprocessors import Treeprocessor
+
+    class LocalLinksOnly(Treeprocessor):
+        """A link whose address is not local becomes its text; an image, its alt text."""
+
+        def run(self, root):
+            for el in root.iter():
+                if el.tag == "a" and not local_url(el.get("href", "")):
+                    el.tag = "span"
+                    el.attrib.clear()
+                elif el.tag == "img" and not local_url(el.get("src", "")):
+                    alt = el.get("alt", "")
+                    el.tag = "span"
+                    el.attrib.clear()
+                    el.text = alt
+
+    class NoRawHtml(Extension):
+        """Raw HTML in the Markdown is text (Python-Markdown's own switch: its HTML block and inline
+        HTML processors are taken out); addresses are checked (:class:`LocalLinksOnly`)."""
+
+        def extendMarkdown(self, md):
+            md.preprocessors.deregister("html_block")
+            md.inlinePatterns.deregister("html")
+            md.treeprocessors.register(LocalLinksOnly(md), "local_links_only", 1)
+
+    return NoRawHtml()
+
+
 def markdown_to_html(text: str) -> str:
-    """The body HTML of a Markdown text (Python-Markdown, tables extension); every table in a box that
-    scrolls sideways on a narrow screen."""
+    """The body HTML of a Markdown text (Python-Markdown, tables extension, raw HTML off, links and
+    images only to local files); every table in a box that scrolls sideways on a narrow screen."""
     import markdown
 
-    body = markdown.markdown(text, extensions=["tables"], output_format="html")
+    body = markdown.markdown(text, extensions=["tables", _markdown_extension()], output_format="html")
     return body.replace("<table>", '<div class="scroll"><table>').replace("</table>", "</table></div>")
 
 
@@ -63,7 +132,9 @@ def write_report_html(md_path: str | Path) -> Path:
     """``<report>.html`` beside ``<report>.md``: the same content as a self-contained page."""
     md_path = Path(md_path)
     text = md_path.read_text(encoding="utf-8")
-    title = next((ln[2:].strip() for ln in text.splitlines() if ln.startswith("# ")), md_path.stem)
+    from .report import md_plain
+
+    title = next((md_plain(ln[2:].strip()) for ln in text.splitlines() if ln.startswith("# ")), md_path.stem)
     out = md_path.with_suffix(".html")
     out.write_text(page(title, markdown_to_html(text)), encoding="utf-8")
     return out

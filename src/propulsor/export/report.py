@@ -2,12 +2,15 @@
 
 What was built, the inputs, every derived value with its unit, every check with
 value, limit and PASS/FAIL, the tables and figures, notes, and one summary line.
-The exporter only formats: values arrive computed.
+The exporter only formats: values arrive computed.  The title (and the part file's notes, through
+:func:`md_text`) are text, never Markdown or HTML: a ``<script>`` or ``[x](javascript:...)`` in them
+reads as written.
 """
 
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 
 from ..write_root import prepare
@@ -25,6 +28,23 @@ def unit_from_name(name: str) -> str:
         if name.endswith(suffix):
             return unit
     return ""
+
+
+_MD_ESCAPES = {"&": "&amp;", "<": "&lt;", ">": "&gt;"}
+
+
+def md_text(text) -> str:
+    """`text` as Markdown that shows it as written, on one line: ``<``, ``>``, ``&`` as entities (no
+    HTML can start), ``\\ ` * [ ]`` escaped by a backslash (no code span, emphasis, link or image)."""
+    one_line = re.sub(r"\s*[\r\n]+\s*", " ", str(text))
+    return re.sub(r"[&<>\\`*\[\]]", lambda m: _MD_ESCAPES.get(m.group(), "\\" + m.group()), one_line)
+
+
+def md_plain(text: str) -> str:
+    """The text that :func:`md_text` wrote (its escapes undone)."""
+    import html
+
+    return html.unescape(re.sub(r"\\([\\`*\[\]])", r"\1", text))
 
 
 def _fmt(v) -> str:
@@ -118,7 +138,7 @@ def write_report(
     prepare(path)
     cks = [c.to_dict() if hasattr(c, "to_dict") else dict(c) for c in checks]
     n_fail = sum(not c["passed"] for c in cks)
-    lines = [f"# {title}", ""]
+    lines = [f"# {md_text(title)}", ""]
     if part:
         lines += [f"Part type: `{part}`", ""]
     if intro.strip():

@@ -28,7 +28,7 @@ from typing import Any
 import numpy as np
 
 from ..check import Check
-from ..export.report import unit_from_name  # noqa: F401  (public here too)
+from ..export.report import md_text, unit_from_name  # noqa: F401  (unit_from_name: public here too)
 from ..parallel import fork_pool, inline, threads_ok
 from ..params import params_to_dict, read_part_meta
 from ..write_root import prepare
@@ -115,7 +115,8 @@ class OutputWriter:
         self.derived: dict[str, Any] = {}
         self.checks: list[Check] = []
         notes = self.meta.get("notes", [])
-        self.notes: list[str] = [notes] if isinstance(notes, str) else [str(n) for n in notes]
+        # the part file's notes are text (the report's own notes are Markdown)
+        self.notes: list[str] = [md_text(n) for n in ([notes] if isinstance(notes, str) else notes)]
         self.solids: list[SolidRecord] = []
         self.tables: list[str] = []
         self.plots: list[str] = []
