@@ -113,6 +113,7 @@ class OutputWriter:
             self.title = self.meta.get("title", part)
         self.expected_failures = set(self.meta.get("expected_failures", []))
         self.derived: dict[str, Any] = {}
+        self.described: dict[str, tuple[str, str]] = {}  # derived name -> (unit, meaning), see describe()
         self.checks: list[Check] = []
         notes = self.meta.get("notes", [])
         # the part file's notes are text (the report's own notes are Markdown)
@@ -136,6 +137,11 @@ class OutputWriter:
     def path(self, rel: str) -> Path:
         self.intended.add(rel)
         return prepare(self.folder / rel)
+
+    def describe(self, name: str, unit: str, meaning: str) -> None:
+        """The unit and the meaning of derived value `name` (what the report's table and the manifest say
+        of it); a name may be described before or after its value is set."""
+        self.described[name] = (unit, meaning)
 
     def add_checks(self, checks) -> None:
         for c in checks:
