@@ -247,17 +247,29 @@ def test_a_folder_that_holds_what_its_manifest_lists_passes(tmp_path, wheel):
 
 # -- the disk refuses ------------------------------------------------------------------------------
 
-@pytest.fixture
-def small_disk(tmp_path):
-    """A 1 MiB tmpfs with 64 inodes (root only)."""
+def _tmpfs(tmp_path, options):
     if os.geteuid() != 0:
         pytest.skip("mounting a small tmpfs needs root")
     mnt = tmp_path / "outer" / "disk"
     mnt.mkdir(parents=True)
-    r = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=1m,nr_inodes=64", "tmpfs", str(mnt)],
-                       capture_output=True, text=True)
+    r = subprocess.run(["mount", "-t", "tmpfs", "-o", options, "tmpfs", str(mnt)], capture_output=True, text=True)
     if r.returncode != 0:
         pytest.skip(f"cannot mount a tmpfs here: {r.stderr.strip()}")
+    return mnt
+
+
+@pytest.fixture
+def small_disk(tmp_path):
+    """A 1 MiB tmpfs (root only)."""
+    mnt = _tmpfs(tmp_path, "size=1m")
+    yield mnt
+    subprocess.run(["umount", "-l", str(mnt)], capture_output=True)
+
+
+@pytest.fixture
+def few_inodes(tmp_path):
+    """A roomy tmpfs with 12 inodes: out of inodes long before out of space (root only)."""
+    mnt = _tmpfs(tmp_path, "size=256m,nr_inodes=12")
     yield mnt
     subprocess.run(["umount", "-l", str(mnt)], capture_output=True)
 
@@ -269,6 +281,15 @@ def test_disk_full_is_exit_3_naming_the_path_and_errno(small_disk, wheel):
     line = _one_error_line(r.stderr)
     assert "[ENOSPC]" in line and str(small_disk) in line, line
     assert not out.exists() and not [q for q in small_disk.iterdir()]
+
+
+def test_out_of_inodes_is_exit_3_naming_the_path_and_errno(few_inodes, wheel):
+    out = few_inodes / "out"
+    r = _cli("build", str(wheel), "--out", str(out), "-q")
+    assert r.returncode == 3, r.stderr
+    line = _one_error_line(r.stderr)
+    assert "[ENOSPC]" in line and str(few_inodes) in line, line
+    assert not out.exists() and not [q for q in few_inodes.iterdir()]
 
 
 def test_read_only_file_system_is_exit_3_and_the_old_output_stays(tmp_path, small_disk, wheel):
@@ -391,3 +412,16 @@ def test_gallery_with_a_fifo_for_a_manifest_or_a_page_does_not_hang(tmp_path, wh
     os.mkfifo(folder / "index.html")
     r = _cli("gallery", str(folder), "-q", timeout=60)
     assert r.returncode == 2 and "not written by propulsor" in _one_error_line(r.stderr)
+
+
+def test_a_build_beside_a_fifo_manifest_rewrites_the_gallery_without_hanging(tmp_path, wheel):
+    """The gallery of ./output is rewritten after every build into it: a sibling whose manifest is a FIFO is
+    shown as not readable, and the build ends (it once hung there, holding its output's lock)."""
+    (tmp_path / "output" / "bad").mkdir(parents=True)
+    os.mkfifo(tmp_path / "output" / "bad" / "manifest.json")
+    r = subprocess.run([sys.executable, "-m", "propulsor.cli", "build", str(wheel), "--out", "output/good", "-q"],
+                       capture_output=True, text=True, cwd=tmp_path, timeout=300,
+                       env=dict(os.environ, PYTHONPATH=str(ROOT / "src")))
+    assert r.returncode == 0, r.stderr
+    page = (tmp_path / "output" / "index.html").read_text()
+    assert "good" in page and "is a FIFO" in page
