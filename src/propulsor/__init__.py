@@ -1,5 +1,10 @@
-"""propulsor: CAD and manufacturing-export pipeline for wheel-walking propulsors
-and tracked running gear.
+"""propulsor: CAD and manufacturing-export pipeline for wheel-walking propulsors and tracked running gear.
+
+From Python (:mod:`propulsor.api`)::
+
+    import propulsor
+    gear = propulsor.part("parts/ncg_seed002.toml", module_mm=2.5)  # or propulsor.part("noncircular_pair", ...)
+    gear.design, gear.solids, gear.assembly(), gear.profiles, gear.prove(), gear.write("out"), gear.kit()
 
 Layers (each importable alone):
     laws/, gears/   pure math (numpy/scipy only)
@@ -8,6 +13,32 @@ Layers (each importable alone):
     checks/         B-rep, mesh and motion checks (OCP, trimesh, manifold3d)
     export/         STEP, STL/3MF, DXF, CSV, plots, report, manifest
     parts/          part types: parameters -> library -> outputs
+    api.py          the Python interface above
 """
 
+from typing import TYPE_CHECKING
+
 __version__ = "0.1.0"
+__all__ = ["Part", "Build", "part", "part_types", "params", "InputError", "CheckFailed", "EnvironmentFailure",
+           "__version__"]
+
+if TYPE_CHECKING:  # pragma: no cover - for type checkers; at run time the names load on first use
+    from .api import Build, Part, params, part, part_types
+    from .errors import CheckFailed, EnvironmentFailure, InputError
+
+
+def __getattr__(name: str):
+    """The public names, imported on first use (``import propulsor`` stays fast: no CAD kernel)."""
+    if name in ("Part", "Build", "part", "part_types", "params"):
+        from . import api
+
+        return getattr(api, name)
+    if name in ("InputError", "CheckFailed", "EnvironmentFailure"):
+        from . import errors
+
+        return getattr(errors, name)
+    raise AttributeError(f"module 'propulsor' has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(list(globals()) + __all__)

@@ -218,14 +218,18 @@ def build_one(args, part_file: Path, depfile: Path | None) -> int:
               f"size estimate {estimate.text()}")
         return EXIT_OK
 
-    def produce(tmp: Path):
-        from .parts.writer import OutputWriter
+    return into_output(args, out, keep, lambda tmp: produce_build(part_type, params, part_file, tmp, progress)[:2],
+                       progress, depfile)
 
-        writer = OutputWriter(tmp, part_type.name, params, progress=progress, source=part_file)
-        try:
-            part_type.build(params, writer)
-            return writer.finish(), part_type.name
-        finally:
-            writer.close()
 
-    return into_output(args, out, keep, produce, progress, depfile)
+def produce_build(part_type, params, part_file: Path | None, folder: Path, progress):
+    """Build a part into `folder` (the files of ``propulsor build``): (unexpected check failures, what was
+    built, the finished OutputWriter)."""
+    from .parts.writer import OutputWriter
+
+    writer = OutputWriter(folder, part_type.name, params, progress=progress, source=part_file)
+    try:
+        part_type.build(params, writer)
+        return writer.finish(), part_type.name, writer
+    finally:
+        writer.close()

@@ -178,11 +178,11 @@ def cmd_check(args) -> int:
 
 def cmd_list(args) -> int:
     from .params import read_part_file
-    from .parts import get_part_type, part_type_names
+    from .parts import part_type_names, summary
 
     print("part types:")
     for name in part_type_names():
-        print(f"  {name:28s} {get_part_type(name).summary}")
+        print(f"  {name:28s} {summary(name)}")
     files = sorted(Path(args.parts_dir).glob("*.toml"))
     print(f"parameter files in {args.parts_dir}/:")
     for f in files:
@@ -196,14 +196,14 @@ def cmd_list(args) -> int:
 
 def cmd_params(args) -> int:
     from .params import describe_params
-    from .parts import get_part_type
+    from .parts import params_class, summary
 
     try:
-        pt = get_part_type(args.part_type)
+        cls = params_class(args.part_type)
     except InputError as exc:
         return fail_input(exc)
-    rows = describe_params(pt.params_cls)
-    print(f"{pt.name}: {pt.summary}")
+    rows = describe_params(cls)
+    print(f"{args.part_type}: {summary(args.part_type)}")
     print(f"{'parameter':28s} {'unit':6s} {'default':>14s}  {'limits':24s} description")
     for r in rows:
         print(f"{r['name']:28s} {r['unit']:6s} {str(r['default']):>14s}  {r['limits']:24s} {r['doc']}")

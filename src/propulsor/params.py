@@ -81,6 +81,54 @@ def _check_type(name: str, value, typ) -> None:
         raise InputError(name, value, "must be a list")
 
 
+def _check_field(f, typ, value):
+    """One field's value checked (type, choices, limits, size); returns it normalised (an int given for a
+    float parameter becomes a float); InputError naming the field otherwise."""
+    name, meta = f.name, f.metadata
+    unit = meta.get("unit", "")
+    if meta.get("choices") is not None:
+        _check_type(name, value, typ)
+        if value not in meta["choices"]:
+            raise InputError(name, value, f"must be one of {', '.join(map(str, meta['choices']))}")
+    elif typ is bool:
+        _check_type(name, value, typ)
+    elif typ in (int, float):
+        if value is None and f.default is None:
+            return value  # an optional number left out
+        _check_number(name, value, meta, unit, integer=typ is int)
+        value = int(value) if typ is int else float(value)
+    elif typ is str:
+        _check_type(name, value, typ)
+        if len(value) > MAX_STRING_CHARS:
+            raise InputError(name, value[:40] + "…", f"must be at most {MAX_STRING_CHARS} characters")
+    elif typ is list:
+        _check_type(name, value, typ)
+        if len(value) > MAX_LIST_ITEMS:
+            raise InputError(name, f"[{len(value)} items]", f"must have at most {MAX_LIST_ITEMS} items")
+    return value
+
+
+def check_fields(obj) -> None:
+    """Every field of a parameter dataclass of its type and within its limits (the defaults too: a
+    subclass may narrow limits); values normalised in place.  InputError at the first one that is not."""
+    hints = get_type_hints(type(obj))
+    for f in dataclasses.fields(obj):
+        value = getattr(obj, f.name)
+        checked = _check_field(f, hints[f.name], value)
+        if checked is not value:
+            object.__setattr__(obj, f.name, checked)
+
+
+class PartParams:
+    """Base of the part types' parameter dataclasses: constructing one in any way (directly, from a dict,
+    from a part file, with ``dataclasses.replace``) checks every field (:func:`check_fields`), so a value
+    outside its limits can never reach a design.  The rules between parameters are the class's own
+    ``validate()`` (run by :func:`load_params` and by the Python API)."""
+
+    def __post_init__(self) -> None:
+        check_fields(self)
+
+
 def load_params(cls, mapping: dict[str, Any], validate: bool = True):
     """Build the parameter dataclass `cls` from a mapping: every value of its type and within its
     limits; then, unless `validate` is False, the dataclass's own ``validate()`` (rules between
@@ -90,37 +138,11 @@ def load_params(cls, mapping: dict[str, Any], validate: bool = True):
     unknown = sorted(set(mapping) - set(fields))
     if unknown:
         raise InputError(unknown[0], mapping[unknown[0]], f"unknown parameter for this part (known: {', '.join(fields)})")
-    kwargs = {}
-    for name, value in mapping.items():
-        meta = fields[name].metadata
-        typ = hints[name]
-        unit = meta.get("unit", "")
-        if meta.get("choices") is not None:
-            _check_type(name, value, typ)
-            if value not in meta["choices"]:
-                raise InputError(name, value, f"must be one of {', '.join(map(str, meta['choices']))}")
-        elif typ is bool:
-            _check_type(name, value, typ)
-        elif typ in (int, float):
-            _check_number(name, value, meta, unit, integer=typ is int)
-            value = int(value) if typ is int else float(value)
-        elif typ is str:
-            _check_type(name, value, typ)
-            if len(value) > MAX_STRING_CHARS:
-                raise InputError(name, value[:40] + "…", f"must be at most {MAX_STRING_CHARS} characters")
-        elif typ is list:
-            _check_type(name, value, typ)
-            if len(value) > MAX_LIST_ITEMS:
-                raise InputError(name, f"[{len(value)} items]", f"must have at most {MAX_LIST_ITEMS} items")
-        kwargs[name] = value
+    # the keys as the part file gives them first (the message names the first bad one it holds)
+    kwargs = {name: _check_field(fields[name], hints[name], value) for name, value in mapping.items()}
     obj = cls(**kwargs)
-    # defaults are checked too (a subclass may narrow limits)
-    for name, f in fields.items():
-        if name in mapping:
-            continue
-        v = getattr(obj, name)
-        if hints[name] in (int, float) and v is not None and f.metadata.get("choices") is None:
-            _check_number(name, v, f.metadata, f.metadata.get("unit", ""), integer=hints[name] is int)
+    if not isinstance(obj, PartParams):
+        check_fields(obj)
     if validate and callable(getattr(obj, "validate", None)):
         obj.validate()
     return obj

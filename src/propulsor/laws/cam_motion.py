@@ -44,7 +44,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
 from propulsor import policy
 from propulsor.errors import InputError, require, require_finite, require_positive
@@ -316,6 +315,8 @@ def _integrate(mech: CamMechanism, law: CurvatureLaw, end: float, rtol: float, a
     events = [ev_cos, ev_big, ev_small]
     for e in events:
         e.terminal = True
+    from scipy.integrate import solve_ivp  # here: the parameter classes import this module (quick `params`)
+
     sol = solve_ivp(_rhs_factory(law), (0.0, end), [H0, 0.0], method="DOP853", rtol=rtol, atol=atol,
                     dense_output=True, events=events)
     if sol.status != 0:

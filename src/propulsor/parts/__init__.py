@@ -10,6 +10,8 @@ part type's parameters or design looks it up here, it never imports the other pa
 from __future__ import annotations
 
 import importlib
+import importlib.util
+import sys
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
@@ -26,6 +28,55 @@ _MODULES = {
     "cam_mover": "cam_mover",
     "polysector_gear": "polysector",
 }
+
+
+#: part type name -> (its parameter class, one line on what it is): read without importing the part's
+#: package (its CAD and proof modules), so that `propulsor list` and `params` stay quick
+_REGISTRY = {
+    "planetary_final_drive": ("FinalDriveParams", "planetary final drive: sun, planets, fixed ring (seed 004 ch. 4, "
+                              "ISO 21771)"),
+    "noncircular_pair": ("NoncircularPairParams", "non-circular gear pair of the wheel-walking propulsor drive "
+                         "(seeds 000, 002): generated or sector teeth"),
+    "balancer": ("BalancerParams", "suspension balancer with road wheel: torsion suspension calc, equal-strength "
+                 "arm, travel sweep (seed 004 ch. 2, 8)"),
+    "road_wheel": ("RoadWheelParams", "double road wheel with solid rubber tyres, Kozlov heat estimate (seed 004 "
+                   "ch. 7)"),
+    "cam_mover": ("CamMoverParams", "fixed cam (closed track), carrier, legs, rollers and shoes of the driven "
+                  "wheel-walking propulsor (seed 001)"),
+    "polysector_gear": ("PolysectorParams", "composite (polysector) gear with stepwise adjustable ratio and its "
+                        "solid mate (seed 003)"),
+}
+
+
+def summary(name: str) -> str:
+    """One line on what part type `name` is."""
+    _known(name)
+    return _REGISTRY[name][1]
+
+
+def params_class(name: str) -> type:
+    """The parameter dataclass of part type `name`, loaded from its ``params`` module alone (the part's
+    package, with its kernel and proof imports, is not run: the same module object it imports later)."""
+    _known(name)
+    mod_name = f"{__name__}.{_MODULES[name]}.params"
+    mod = sys.modules.get(mod_name)
+    if mod is None:
+        from pathlib import Path as _Path
+
+        spec = importlib.util.spec_from_file_location(mod_name, _Path(__file__).parent / _MODULES[name] / "params.py")
+        mod = importlib.util.module_from_spec(spec)
+        sys.modules[mod_name] = mod
+        try:
+            spec.loader.exec_module(mod)
+        except BaseException:
+            sys.modules.pop(mod_name, None)
+            raise
+    return getattr(mod, _REGISTRY[name][0])
+
+
+def _known(name: str) -> None:
+    if name not in _MODULES:
+        raise InputError("type", name, f"unknown part type (known: {', '.join(part_type_names())})")
 
 
 @dataclass(frozen=True)
@@ -106,7 +157,6 @@ def part_type_names() -> list[str]:
 
 
 def get_part_type(name: str) -> PartType:
-    if name not in _MODULES:
-        raise InputError("type", name, f"unknown part type (known: {', '.join(part_type_names())})")
+    _known(name)
     mod = importlib.import_module(f".{_MODULES[name]}", __name__)
     return mod.PART_TYPE

@@ -54,6 +54,9 @@ class Pipeline:
     design: Callable  # design(params, writer) -> Design (the writer gives the part file's folder)
     steps: Sequence[Callable]  # step(design, writer, built) -> None
 
+    #: a build is a callable ``build(params, writer)``; named so that ``inspect`` and ``help`` can show it
+    __name__ = "build"
+
     def __call__(self, params, w) -> None:
         d = self.design(params, w)
         built: dict = {}

@@ -132,6 +132,10 @@ class OutputWriter:
         self._assemblies: list = []  # (name, [(component, solid key, 4×4 mm)], picture from below)
         self.report_name = "report.md"  # a print kit's is print_report.md
         self.intended: set[str] = set()  # files the build means to write (relative paths), besides the media
+        # what the build made, by name, for the Python API (propulsor.api): solids, DXF profiles, assemblies
+        self.built_solids: dict[str, Any] = {}
+        self.built_profiles: dict[str, list] = {}
+        self.built_assemblies: dict[str, list] = {}
 
     # -- helpers -----------------------------------------------------------------
     def path(self, rel: str) -> Path:
@@ -165,6 +169,7 @@ class OutputWriter:
         volume = float(solid.Volume())
         rec = SolidRecord(name, volume, {"step": f"{name}.step", "stl": f"{name}.stl", "3mf": f"{name}.3mf"})
         self.intended.update(rec.files.values())
+        self.built_solids[name] = solid
         self.solids.append(rec)
         self._solid_keys[id(solid)] = name
         self._keep.append(solid)
@@ -221,6 +226,7 @@ class OutputWriter:
         from ..export.step import write_assembly_step
 
         p = self.path(f"{name}.step")
+        self.built_assemblies[name] = list(components)
         self.progress(f"{name}: assembly STEP ({len(components)} components)")
         write_assembly_step(p, components, name)
         self.extra_files.append(p.name)
@@ -269,6 +275,7 @@ class OutputWriter:
         from ..export.dxf import write_dxf
 
         p = self.path(f"{name}.dxf")
+        self.built_profiles[name] = list(cut_profiles)
         write_dxf(p, cut_profiles, list(ref_curves))
         self.extra_files.append(p.name)
         return p

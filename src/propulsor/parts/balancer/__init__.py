@@ -8,7 +8,7 @@ stresses on the built outline, socket / ear / pad, the travel sweep) → outputs
 
 from __future__ import annotations
 
-from .. import PartType
+from .. import PartType, summary
 from .design import THESIS, BalancerModel, resolve, spindle_dims, suspension_design
 from .outputs import build
 from .params import BalancerParams
@@ -21,8 +21,7 @@ __all__ = ["BalancerParams", "BalancerModel", "THESIS", "resolve", "suspension_d
 
 PART_TYPE = PartType(
     name="balancer",
-    summary="suspension balancer with road wheel: torsion suspension calc, equal-strength arm, travel sweep "
-            "(seed 004 ch. 2, 8)",
+    summary=summary("balancer"),
     params_cls=BalancerParams,
     build=build,
     design=resolve,

@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ...errors import InputError
-from ...params import param
+from ...params import PartParams, param
 
 __all__ = ["BalancerParams"]
 
@@ -13,8 +13,8 @@ _WHY_ARM = "twice the depth of the largest balancer arm"
 _WHY_AXLE = "past the axles of the heaviest road wheels"
 
 
-@dataclass
-class BalancerParams:
+@dataclass(frozen=True)
+class BalancerParams(PartParams):
     """Parameters of the suspension balancer (seed 004 ch. 2 and 8)."""
 
     # -- torsion-bar suspension, seed 004 ch. 2 ------------------------------------------------

@@ -13,7 +13,7 @@ assembly, DXF) → proofs on the exported geometry (:mod:`.proofs`).  Defaults a
 
 from __future__ import annotations
 
-from .. import PartType
+from .. import PartType, summary
 from .design import Plan, plan
 from .outputs import build, build_solids, expected_genus
 from .params import LAWS, MIN_WEB_MM, CamMoverParams
@@ -24,7 +24,7 @@ __all__ = ["CamMoverParams", "LAWS", "MIN_WEB_MM", "Plan", "plan", "PART_TYPE", 
 
 PART_TYPE = PartType(
     name="cam_mover",
-    summary="fixed cam (closed track), carrier, legs, rollers and shoes of the driven wheel-walking propulsor (seed 001)",
+    summary=summary("cam_mover"),
     params_cls=CamMoverParams,
     build=build,
     design=plan,

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 from ...errors import InputError
 from ...laws.cam_design import DesignLimits
 from ...laws.cam_motion import RETURN_MODES, CamMechanism, CurvatureLaw, ReturnPhase
-from ...params import param
+from ...params import PartParams, param
 
 __all__ = ["LAWS", "MIN_WEB_MM", "CamMoverParams"]
 
@@ -23,7 +23,7 @@ _WHY_LOAD = "100 MN along one leg"
 
 
 @dataclass(frozen=True)
-class CamMoverParams:
+class CamMoverParams(PartParams):
     """Parameters of the fixed-cam propulsor.  Seed 001 gives no numbers; all defaults ours."""
 
     # --- law of motion (seed 001 eq. 20) ---------------------------------------------------

@@ -10,7 +10,7 @@ and an interference sweep over one full carrier turn on the finished outlines
 
 from __future__ import annotations
 
-from .. import PartType
+from .. import PartType, summary
 from .design import FinalDriveDesign, design, gear_outlines, planetary_set, ring_outer_d
 from .outputs import build
 from .params import FinalDriveParams
@@ -21,7 +21,7 @@ __all__ = ["FinalDriveParams", "FinalDriveDesign", "design", "PART_TYPE", "build
 
 PART_TYPE = PartType(
     name="planetary_final_drive",
-    summary="planetary final drive: sun, planets, fixed ring (seed 004 ch. 4, ISO 21771)",
+    summary=summary("planetary_final_drive"),
     params_cls=FinalDriveParams,
     build=build,
     design=design,

@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ... import policy
-from ...params import param
+from ...params import PartParams, param
 
 __all__ = ["FinalDriveParams"]
 
@@ -16,8 +16,8 @@ _WHY_WIDTH = "b = 20 modules at the largest common module: wider faces carry no 
 _WHY_DIAMETER = "the reference diameter of the largest gear (z = 300, m = 50)"
 
 
-@dataclass
-class FinalDriveParams:
+@dataclass(frozen=True)
+class FinalDriveParams(PartParams):
     """Parameters of the planetary final drive (ring fixed, sun in, carrier out)."""
 
     module_mm: float = param(10.0, "mm", "module m", min=0.5, max=50.0, why=_WHY_MODULE)

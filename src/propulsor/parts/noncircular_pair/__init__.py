@@ -17,7 +17,7 @@ phi = theta = 0 of the assembly (the contact of law angle 0 on the line of centr
 
 from __future__ import annotations
 
-from .. import PartType
+from .. import PartType, summary
 from .design import (
     Design, PairDesign, design, design_generated, design_sectors, gear_profiles, mounting, pair_design,
     sector_design_table,
@@ -32,7 +32,7 @@ __all__ = ["NoncircularPairParams", "METHODS", "Design", "PairDesign", "design",
 
 PART_TYPE = PartType(
     name="noncircular_pair",
-    summary="non-circular gear pair of the wheel-walking propulsor drive (seeds 000, 002): generated or sector teeth",
+    summary=summary("noncircular_pair"),
     params_cls=NoncircularPairParams,
     build=build,
     design=pair_design,

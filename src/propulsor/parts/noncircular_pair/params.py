@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 from ...errors import InputError
 from ...laws.walking import WalkingLaw
-from ...params import param
+from ...params import PartParams, param
 
 __all__ = ["METHODS", "NoncircularPairParams"]
 
@@ -20,10 +20,10 @@ METHODS = ("generated", "sectors")
 _WHY_MECHANISM = "a walking drive of 5 m hub height is larger than any built"
 
 
-@dataclass
-class NoncircularPairParams:
-    """Parameters of the walking-drive pair.  Defaults: seed 002 (a = 100, b = 50, c = 236.5 mm,
-    n = 4, m = 2.5, z 20/80)."""
+@dataclass(frozen=True)
+class NoncircularPairParams(PartParams):
+    """Parameters of the walking-drive pair.  Defaults: seed 002 as ``parts/ncg_seed002.toml`` builds it
+    (a = 100, b = 50, c = 236.5 mm, n = 4, m = 2.5, z 20/80, the law searched for the least ripple)."""
 
     a_mm: float = param(100.0, "mm", "hub-to-crank axis distance a (seed 000 eq. 1)", min=0.0, max=5000.0,
                         why=_WHY_MECHANISM)
@@ -53,7 +53,7 @@ class NoncircularPairParams:
                                 "(GOST 9323 / DIN 1825: 25, 38, 50, 75, 100; its own z0 and x0); 0: a shaper of "
                                 "shaper_teeth with x0 = -x of the gear it cuts", min=0.0, max=100.0,
                                 why="the largest nominal diameter of the catalogue (gears/data/cutters.toml)")
-    law_search: bool = param(False, "", "search the blend shape (half-width and hand-over value) and the catalogue "
+    law_search: bool = param(True, "", "search the blend shape (half-width and hand-over value) and the catalogue "
                              "shaper for the least hub speed ripple under generability (gears/law_search.py); "
                              "smoothing_deg, smoothing_max_deg, shaper_d0_mm and shaper_teeth are then not used")
     center_distance_band_mm: float = param(5.0, "mm", "law search: largest |L - L_exact| (L_exact: closure of the "

@@ -10,7 +10,7 @@ dynamics (eq. 9–11, :mod:`propulsor.gears.polysector_dynamics`).
 
 from __future__ import annotations
 
-from .. import PartType
+from .. import PartType, summary
 from .design import PolysectorDesign, design
 from .outputs import build
 from .params import PolysectorParams
@@ -19,7 +19,7 @@ __all__ = ["PolysectorParams", "PolysectorDesign", "design", "build", "PART_TYPE
 
 PART_TYPE = PartType(
     name="polysector_gear",
-    summary="composite (polysector) gear with stepwise adjustable ratio and its solid mate (seed 003)",
+    summary=summary("polysector_gear"),
     params_cls=PolysectorParams,
     build=build,
     design=design,

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ...params import param
+from ...params import PartParams, param
 
 __all__ = ["PolysectorParams"]
 
@@ -12,8 +12,8 @@ _WHY_TEETH = "a blank of z = 300 at m = 20 is 6 m across; sectors of larger whee
 _WHY_MM = "the largest wheel this tool builds (z = 300, m = 20)"
 
 
-@dataclass
-class PolysectorParams:
+@dataclass(frozen=True)
+class PolysectorParams(PartParams):
     """Composite gear: i_s sectors of z_c teeth per flow cut from a blank (z, m), two flows (the second
     turned by half a sector pitch), set at the offsets of the positions; a solid gear z2 meshes with
     both flows."""

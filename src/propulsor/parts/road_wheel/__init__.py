@@ -13,7 +13,7 @@ beside it.  The track pitch for ω is ch. 7's Table 12 value L = 0.15 m.
 
 from __future__ import annotations
 
-from .. import PartType
+from .. import PartType, summary
 from ...solids.road_wheel import WheelModel, mass_properties, wheel_model, wheel_solids
 from .design import RoadWheelDesign, design
 from .outputs import build
@@ -25,7 +25,7 @@ __all__ = ["RoadWheelParams", "RoadWheelDesign", "design", "WheelModel", "wheel_
 
 PART_TYPE = PartType(
     name="road_wheel",
-    summary="double road wheel with solid rubber tyres, Kozlov heat estimate (seed 004 ch. 7)",
+    summary=summary("road_wheel"),
     params_cls=RoadWheelParams,
     build=build,
     design=design,

@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ...errors import InputError
-from ...params import param
+from ...params import PartParams, param
 from ..pipeline import design_of
 
 __all__ = ["RoadWheelParams"]
@@ -14,8 +14,8 @@ _WHY_HUB = "the hub of a 2 m wheel"
 _WHY_BEARING = "the largest rolling bearings a road wheel takes (ISO 15: d <= 1000 mm)"
 
 
-@dataclass
-class RoadWheelParams:
+@dataclass(frozen=True)
+class RoadWheelParams(PartParams):
     """Parameters of the double road wheel with solid rubber tyres."""
 
     tyre_radius_mm: float = param(315.0, "mm", "outer (rolling) radius of the tyres R (seed 004 ch. 5: D_k = 630)",

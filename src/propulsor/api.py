@@ -1,0 +1,217 @@
+"""The Python interface of propulsor: a part from its type or a part file, its design, its solids, its
+proofs and its files — the same work and the same bytes as the command line.
+
+    import propulsor
+
+    gear = propulsor.part("noncircular_pair", module_mm=2.5, driven_teeth=80)   # defaults: seed 002
+    gear = propulsor.part("parts/ncg_seed002.toml", face_width_mm=15.0)       # a part file, overridden
+    gear.params.module_mm            # validated, frozen parameters (mm, rad inside)
+    gear.design                      # computed once, frozen: what the build makes its geometry from
+    gear.solids["driven"]            # cadquery Shapes (a real build, run once and kept)
+    gear.assembly()                  # cq.Assembly with named, placed, coloured components
+    gear.profiles["driven"]          # the DXF outlines as (N, 2) arrays in mm
+    [c for c in gear.prove() if not c.passed]   # every check of the build (value, limit, pass/fail)
+    gear.write("out/gear")           # exactly the files `propulsor build` writes
+    gear.kit(printer="prusa_mk4")    # the print kit: pieces at print scale, rig, plates (not written)
+
+Bad values raise :class:`~propulsor.errors.InputError` naming the key, the value and the limit — in
+whatever way the parameters are made (keyword, part file, dict, the dataclass itself, ``replace``).
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import inspect
+import shutil
+import tempfile
+from functools import cached_property
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .errors import CheckFailed, InputError
+
+__all__ = ["Part", "Build", "part", "part_types", "params"]
+
+
+def part_types() -> list[str]:
+    """The names of the part types (``noncircular_pair``, ``planetary_final_drive`` …)."""
+    from .parts import part_type_names
+
+    return part_type_names()
+
+
+def params(part_type: str, /, **values: Any):
+    """The validated, frozen parameters of `part_type` with `values` in place of the defaults (the same
+    checks as a part file: types, limits, the rules between parameters).  InputError otherwise."""
+    from .params import load_params
+    from .parts import get_part_type
+
+    pt = get_part_type(part_type)
+    return load_params(pt.params_cls, values)
+
+
+def part(source: str | Path, /, **overrides: Any) -> "Part":
+    """A part from a part type name (its defaults) or a part file (``*.toml``), with `overrides` in place of
+    the values there.  The parameters are validated at once (InputError naming the key)."""
+    from .params import load_params, read_part_file
+    from .parts import get_part_type, part_type_names
+
+    if isinstance(source, str) and source in part_type_names():
+        return Part(source, params(source, **overrides), None)
+    path = Path(source)
+    if path.suffix != ".toml" and not path.exists():
+        raise InputError("source", str(source), f"must be a part type ({', '.join(part_type_names())}) or a part "
+                         "file (.toml)")
+    type_name, mapping = read_part_file(path)
+    pt = get_part_type(type_name)
+    return Part(type_name, load_params(pt.params_cls, {**mapping, **overrides}), path)
+
+
+@dataclasses.dataclass(frozen=True)
+class Build:
+    """What one real build of a part made (in memory; its files went to a temporary folder)."""
+
+    failures: tuple[str, ...]  # unexpected failed checks, "name: message"
+    checks: tuple  # every Check of the build, in order
+    derived: dict  # every derived value the report and the manifest give
+    solids: dict  # name -> cadquery Shape
+    profiles: dict  # DXF name -> list of Profile (geometry.profile)
+    assemblies: dict  # name -> [(component, solid, (x, y, z) mm, rotation about z rad)]
+
+
+class Part:
+    """A part: its type, validated parameters and the part file they came from (None for a type's
+    defaults).  The design is computed on first use and kept; the solids, profiles and proofs come from
+    one real build (the build ``propulsor build`` runs, into a temporary folder), run on first use."""
+
+    def __init__(self, part_type: str, params, source: Path | None = None):
+        from .parts import get_part_type
+
+        self.type: str = part_type
+        self.params = params
+        self.source: Path | None = source
+        self._pt = get_part_type(part_type)
+        if not isinstance(params, self._pt.params_cls):
+            raise InputError("params", type(params).__name__, f"must be {self._pt.params_cls.__name__}")
+
+    def __repr__(self) -> str:
+        where = f" from {self.source}" if self.source else ""
+        return f"<propulsor.Part {self.type}{where}>"
+
+    @cached_property
+    def design(self):
+        """The part's design (frozen), computed once: what the build makes its geometry from."""
+        from .parts.pipeline import design_of
+
+        fn = self._pt.design
+        if fn is None:
+            raise InputError("design", self.type, "this part type has no separate design")
+        if "source" in inspect.signature(fn).parameters:
+            return design_of(self.params, fn, self.source)
+        return design_of(self.params, fn)
+
+    @cached_property
+    def build(self) -> Build:
+        """One real build of the part (its files written to a temporary folder, then removed); run once."""
+        from .building import produce_build
+        from .progress import Progress
+        from .write_root import writing_into
+
+        folder = Path(tempfile.mkdtemp(prefix="propulsor-api-"))
+        try:
+            with writing_into(folder):
+                failures, _, w = produce_build(self._pt, self.params, self.source, folder, Progress(enabled=False))
+        finally:
+            shutil.rmtree(folder, ignore_errors=True)
+        return Build(tuple(failures), tuple(w.checks), dict(w.derived), dict(w.built_solids),
+                     dict(w.built_profiles), dict(w.built_assemblies))
+
+    @property
+    def solids(self) -> dict:
+        """name -> cadquery Shape of every solid the build writes (``<name>.step``), in mm."""
+        return self.build.solids
+
+    @property
+    def profiles(self) -> dict[str, list[np.ndarray]]:
+        """DXF name -> the closed outlines of its CUT layer as (N, 2) arrays in mm (chord ≤ 0.005 mm)."""
+        return {name: [pl for prof in profs for pl in prof.polylines()] for name, profs in self.build.profiles.items()}
+
+    def prove(self, raise_on_failure: bool = False) -> list:
+        """Every check of the build (:class:`propulsor.check.Check`: name, passed, value, limit, unit,
+        message); with `raise_on_failure`, CheckFailed for an unexpected failure."""
+        if raise_on_failure and self.build.failures:
+            raise CheckFailed(list(self.build.failures))
+        return list(self.build.checks)
+
+    def assembly(self, name: str | None = None):
+        """A ``cq.Assembly`` of the build's assembly `name` (the first one when None): named components
+        placed as in ``<name>.step``, coloured as in the gallery."""
+        import cadquery as cq
+
+        from .export.render import palette_colour
+
+        assemblies = self.build.assemblies
+        if not assemblies:
+            raise InputError("assembly", self.type, "this part has no assembly; see .solids")
+        name = name or next(iter(assemblies))
+        if name not in assemblies:
+            raise InputError("assembly", name, f"must be one of {', '.join(assemblies)}")
+        asm = cq.Assembly(name=name)
+        for k, (comp, solid, xyz, rot) in enumerate(assemblies[name]):
+            r, g, b = palette_colour(k)[:3]
+            loc = cq.Location(cq.Vector(*map(float, xyz)), cq.Vector(0, 0, 1), float(np.degrees(rot)))
+            asm.add(solid, name=str(comp), loc=loc, color=cq.Color(r / 255, g / 255, b / 255))
+        return asm
+
+    def write(self, out: str | Path, *, force: bool = False, keep_failed: bool = False) -> Path:
+        """Build into folder `out` exactly as ``propulsor build PART --out OUT`` does (the same files, the
+        same bytes; the same folder rules, lock and atomic replacement).  Returns `out`; InputError for a
+        folder that may not be used, CheckFailed when a check failed (outputs kept only with
+        `keep_failed`), EnvironmentFailure when the file system refused."""
+        from . import output_folder as of
+        from .building import files_read, into_output, produce_build
+        from .errors import EnvironmentFailure
+        from .progress import Progress
+
+        progress = Progress(enabled=False)
+        keep = files_read(self.params, self.source) if self.source else ()
+        target = of.vet_target(Path(out), force=force, keep=keep)
+        failures: list[str] = []
+
+        def produce(tmp: Path):
+            fails, what, _ = produce_build(self._pt, self.params, self.source, tmp, progress)
+            failures.extend(fails)
+            return fails, what
+
+        args = argparse.Namespace(no_wait=False, force=force, keep_failed=keep_failed)
+        import contextlib
+        import io
+        import sys
+
+        err = io.StringIO()
+        with contextlib.redirect_stderr(err):
+            code = into_output(args, target, keep, produce, progress)
+        lines = [ln.removeprefix("propulsor: error: ") for ln in err.getvalue().splitlines() if ln.strip()]
+        if code == 2:
+            raise InputError("out", str(out), lines[-1] if lines else "refused")
+        if code == 3:
+            raise EnvironmentFailure(str(out), None, "cannot write", lines[-1] if lines else "")
+        if code == 1:
+            raise CheckFailed(failures)
+        if code != 0:
+            sys.stderr.write(err.getvalue())
+            raise RuntimeError(f"the build ended with exit code {code}")
+        return target
+
+    def kit(self, printer: str = "generic", scale: float | None = None, **settings: Any):
+        """The print kit (``propulsor print``'s model, not written): pieces at print scale with the FDM
+        allowances, the rig and the plates.  `printer`: a profile name; `scale`: a reduction S (1:S) or None
+        for the largest standard scale that fits; `settings`: printer settings to override
+        (e.g. ``backlash_mm=0.35``)."""
+        from .parts import get_kit
+        from .printing.printers import load_printer
+
+        return get_kit(self.type)(self.params, load_printer(printer, settings), scale, source=self.source)

@@ -1,0 +1,160 @@
+"""The Python API (propulsor.api): the same parts, validation and bytes as the command line; the examples
+run; the public API type-checks; the commands that need no CAD kernel do not import it."""
+
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import propulsor
+from propulsor.errors import InputError
+from propulsor.params import load_params, read_part_file
+from propulsor.parts import params_class, part_type_names
+
+ROOT = Path(__file__).resolve().parents[1]
+PARTS = ROOT / "parts"
+KERNEL = ("cadquery", "OCP", "manifold3d")
+
+
+def _shas(folder: Path) -> dict[str, str]:
+    return {q.relative_to(folder).as_posix(): hashlib.sha256(q.read_bytes()).hexdigest()
+            for q in sorted(folder.rglob("*")) if q.is_file()}
+
+
+def _cli(*args, cwd=ROOT, timeout=900):
+    return subprocess.run([sys.executable, "-m", "propulsor.cli", *args], capture_output=True, text=True, cwd=cwd,
+                          timeout=timeout)
+
+
+def _same_as_build(tmp_path, part_file: Path):
+    api_out, cli_out = tmp_path / "api", tmp_path / "cli"
+    assert propulsor.part(part_file).write(api_out) == api_out.resolve() or api_out.exists()
+    r = _cli("build", str(part_file), "--out", str(cli_out), "-q")
+    assert r.returncode == 0, r.stderr
+    a, b = _shas(api_out), _shas(cli_out)
+    assert a.keys() == b.keys() and len(a) > 10
+    assert [k for k in a if a[k] != b[k]] == []
+
+
+@pytest.mark.parametrize("name", ["road_wheel", "cam_linear"])
+def test_part_write_gives_the_bytes_of_propulsor_build(tmp_path, name):
+    _same_as_build(tmp_path, PARTS / f"{name}.toml")
+
+
+@pytest.mark.sweep
+@pytest.mark.parametrize("name", ["balancer", "ncg_seed002", "final_drive", "polysector"])
+def test_part_write_gives_the_bytes_of_propulsor_build_every_part_type(tmp_path, name):
+    _same_as_build(tmp_path, PARTS / f"{name}.toml")
+
+
+def test_a_part_in_memory_solids_profiles_checks_assembly():
+    wheel = propulsor.part("road_wheel", lightening_holes=0)
+    assert wheel.type == "road_wheel" and wheel.source is None and wheel.params.lightening_holes == 0
+    assert set(wheel.solids) >= {"disc", "rim_1", "tyre_1"}
+    v = wheel.solids["disc"].Volume()
+    assert v > 1e5
+    outlines = wheel.profiles
+    assert outlines and all(pl.shape[1] == 2 and len(pl) > 3 for pls in outlines.values() for pl in pls)
+    checks = wheel.prove(raise_on_failure=True)
+    assert checks and all(c.passed for c in checks)
+    asm = wheel.assembly()
+    assert [c.name for c in asm.children][:3] == ["disc", "rim_1", "tyre_1"]
+    with pytest.raises(InputError, match="assembly = 'nope'"):
+        wheel.assembly("nope")
+
+
+@pytest.mark.parametrize("make", [
+    lambda: propulsor.part("noncircular_pair", module_mm=-3),
+    lambda: propulsor.params("noncircular_pair", module_mm=-3),
+    lambda: propulsor.part(PARTS / "ncg_seed002.toml", module_mm=-3),
+    lambda: params_class("noncircular_pair")(module_mm=-3),
+    lambda: dataclasses.replace(params_class("noncircular_pair")(), module_mm=-3),
+    lambda: load_params(params_class("noncircular_pair"), {"module_mm": -3}),
+], ids=["part(type)", "params()", "part(file, override)", "dataclass", "replace", "load_params"])
+def test_bad_values_are_refused_however_the_parameters_are_made(make):
+    with pytest.raises(InputError) as exc:
+        make()
+    assert exc.value.parameter == "module_mm" and ">= 0.0 mm" in str(exc.value)
+
+
+def test_parameters_are_frozen_and_unknown_keys_refused():
+    p = propulsor.params("road_wheel")
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        p.tyre_radius_mm = 1.0  # type: ignore[misc]
+    with pytest.raises(InputError, match="unknown parameter"):
+        propulsor.part("road_wheel", tyre_radius=300)
+    with pytest.raises(InputError, match="must be a part type"):
+        propulsor.part("no_such_type")
+
+
+@pytest.mark.parametrize("part_file", sorted(PARTS.glob("*.toml")), ids=lambda p: p.stem)
+def test_keys_equal_to_the_defaults_can_be_deleted(part_file):
+    """One source of defaults: a part file without its keys that equal the defaults gives the same
+    parameters (so the same build)."""
+    t, mapping = read_part_file(part_file)
+    cls = params_class(t)
+    defaults = {f.name: (f.default if f.default is not dataclasses.MISSING else f.default_factory())
+                for f in dataclasses.fields(cls)}
+    lean = {k: v for k, v in mapping.items() if defaults.get(k) != v}
+    assert load_params(cls, lean, validate=False) == load_params(cls, mapping, validate=False)
+
+
+def test_noncircular_defaults_are_the_seed_002_part_file():
+    _, mapping = read_part_file(PARTS / "ncg_seed002.toml")
+    assert params_class("noncircular_pair")() == load_params(params_class("noncircular_pair"), mapping,
+                                                             validate=False)
+
+
+def test_the_examples_run(tmp_path):
+    r = subprocess.run([sys.executable, str(ROOT / "examples" / "sweep_module.py")], capture_output=True, text=True,
+                       timeout=300, cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    assert "188.643" in r.stdout  # a_w of the thesis drive at m = 10 mm
+    r = subprocess.run([sys.executable, str(ROOT / "examples" / "show_in_viewer.py")], capture_output=True,
+                       text=True, timeout=300, cwd=tmp_path)
+    assert r.returncode == 0 and ("ocp_vscode" in r.stdout or not r.stdout), r.stderr
+    r = subprocess.run([sys.executable, str(ROOT / "examples" / "custom_flange.py"), str(tmp_path / "fl")],
+                       capture_output=True, text=True, timeout=600, cwd=tmp_path)
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert "all valid" in r.stdout
+    r = _cli("check", str(tmp_path / "fl" / "driver_with_flange.step"))
+    assert r.returncode == 0 and "1 file(s) checked, 0 invalid" in r.stdout
+
+
+def test_the_public_api_and_the_examples_type_check():
+    r = subprocess.run([sys.executable, "-m", "mypy", "src/propulsor/api.py", "src/propulsor/__init__.py",
+                        "examples/"], capture_output=True, text=True, cwd=ROOT, timeout=600)
+    assert r.returncode == 0, r.stdout + r.stderr
+
+
+@pytest.mark.parametrize("args", [["--help"], ["list"], ["params", "noncircular_pair"],
+                                  ["build", "parts/road_wheel.toml", "--dry-run"]])
+def test_commands_that_need_no_kernel_do_not_import_it(args):
+    code = ("import sys, runpy; sys.argv = ['propulsor'] + %r\n"
+            "try:\n    runpy.run_module('propulsor.cli', run_name='__main__')\nexcept SystemExit:\n    pass\n"
+            "print('KERNEL', sorted(m for m in sys.modules if m.split('.')[0] in %r))" % (args, KERNEL))
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=120)
+    assert "KERNEL []" in r.stdout, r.stdout[-400:] + r.stderr[-400:]
+
+
+def test_import_propulsor_loads_no_kernel_and_the_api_has_docstrings():
+    r = subprocess.run([sys.executable, "-c", "import sys, propulsor; print(sorted(m for m in sys.modules if "
+                        "m.split('.')[0] in ('cadquery', 'OCP', 'manifold3d', 'scipy', 'trimesh')))"],
+                       capture_output=True, text=True, timeout=60)
+    assert r.stdout.strip() == "[]", r.stdout + r.stderr
+    from propulsor import api
+
+    for name in api.__all__:
+        obj = getattr(api, name)
+        assert (obj.__doc__ or "").strip(), name
+    for name, member in vars(api.Part).items():
+        if not name.startswith("_"):
+            doc = getattr(member, "__doc__", None) or getattr(getattr(member, "fget", None), "__doc__", None)
+            assert (doc or "").strip(), name
+    assert json.loads(json.dumps(part_type_names()))
