@@ -53,8 +53,9 @@ trailing one).  Eq. 4 then reads
     ε_s = φ1 i_s / 2π          per flow (i_s sectors of one flow),
     ε_s = φ1 (2 i_s) / 2π      both flows together (2 i_s sectors, evenly interleaved; the seed
                                gives up overlap within one flow on purpose).
-The largest offset is the largest e with ε_s (both flows) ≥ ε_s,min = 1.05 (eq. 4's lower bound).
-Counting the whole tip land instead (its non-driving corners too) accepts offsets where the
+The largest offset is the largest e with ε_s (both flows) ≥ ε_s,min = 1.05 (eq. 4's lower bound)
+at which both driving corners still reach into the gear's tip circle (for short sectors or small
+gears the leading tooth's outer corner stops reaching it first, with ε_s still above 1.05).  Counting the whole tip land instead (its non-driving corners too) accepts offsets where the
 driving corner never reaches the gear in time: for m 4, z 30, z_c 9, i_s 3, z2 24 (thinning 0.1 mm)
 that reading gives 38.36 mm, the driving corners 33.70 mm.  ε_s ≥ 1.05 is necessary, not sufficient:
 the hand-over itself (tip-on-tip contact, snaps) is proved on the outlines by the tracked contact law
@@ -350,7 +351,8 @@ class PolysectorGeometry:
 
     def max_offset(self, eps_min: float = EPS_S_MIN) -> float:
         """Largest offset e with ε_s (all flows, driving corners) ≥ eps_min (eq. 1/3 with the closing
-        condition, eq. 4)."""
+        condition, eq. 4) at which both driving corners still reach the gear's tip circle (past it the
+        leading tooth's outer corner passes outside that circle, ε_s is undefined)."""
         f = lambda e: self.epsilon_s(e)[1] - eps_min
         if f(0.0) < 0.0:
             raise InputError("z_c", self.z_c, f"eq. 4: ε_s = {self.epsilon_s(0.0)[1]:.4f} < {eps_min} already at "
