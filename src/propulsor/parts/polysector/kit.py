@@ -23,7 +23,6 @@ import math
 
 import numpy as np
 
-from ... import policy
 from ...check import Check
 from ...errors import InputError
 from ...geometry.profile import Arc, Line, Loop, Profile, circle_loop
@@ -68,7 +67,7 @@ def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, sourc
     from ..pipeline import design_of
     from .design import design
     from .mesh_proof import prove_position
-    from .proofs import chord_for
+    from .proofs import chord_for, law_checks
 
     full = design_of(p, design)
     pos_full = full.positions[-1]
@@ -164,13 +163,10 @@ def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, sourc
                             f"printed outlines, position {pos.k}, {len(proof.phi)} steps of a sector period, both flows"),
               Check.at_least("mesh.contact_continuity", int(proof.pairs.min()), 1, "pairs",
                              "tooth pairs in contact, both flows together"),
-              Check.at_most("mesh.no_tip_on_tip", math.degrees(proof.law.tip_tip_angle()), 0.0, "deg",
-                            "wheel turn per sector period with the gear resting on tips only (tracked contact law)"),
-              Check.at_most("mesh.no_snap", math.degrees(proof.law.snap_max()), policy.POLYSECTOR_SNAP_TOL_DEG, "deg",
-                            "largest jump of the gear beyond its nominal advance within one finest step"),
               Check.at_least("mesh.print_backlash_min", jn_min, printer.backlash_mm, "mm",
                              f"least normal backlash of the printed teeth (free turn of the gear × r_b2); designed "
                              f"j_n = {j_n:.4f} mm")]
+    checks += law_checks("mesh", proof.law)
     for k, role in enumerate(("wheel", "gear")):
         checks.append(Check.at_least(f"fit.{role}_on_axle", (bores[k] - under - pin[k]) / 2, clear, "mm",
                                      f"radial running clearance on the ⌀{pin[k]:g} axle pin"))

@@ -14,13 +14,26 @@ from ...parallel import start as start_in_fork
 from .design import PolysectorDesign
 
 __all__ = ["synthesis_step", "start_proofs", "proof_results", "position_error_step", "efficiency_step",
-           "dynamics_step", "prove_positions", "chord_for", "full_turn", "eq7_max_di"]
+           "dynamics_step", "prove_positions", "chord_for", "full_turn", "eq7_max_di", "law_checks"]
 
 
 def eq7_max_di(dd: PolysectorDesign, pos) -> float:
     """Largest |Δi| of eq. 7/8 (flank contact) over the sector's engagement."""
     u = np.linspace(-pos.u_exit, pos.u_exit, 201)
     return float(np.max(np.abs((pos.ratio_nominal - dd.geo.ratio_flank(pos.offset, u)) / pos.ratio_nominal)))
+
+
+def law_checks(name: str, law) -> list:
+    """The hand-over checks of a tracked contact law (:class:`.contact_law.LawResult`): no tip-on-tip contact,
+    no snap above ``policy.POLYSECTOR_SNAP_TOL_DEG``."""
+    step = math.degrees(law.step_min)
+    return [Check.at_most(f"{name}.no_tip_on_tip", math.degrees(law.tip_tip_angle()), 0.0, "deg",
+                          f"wheel turn per sector period over which the gear rests on tips only (tip land or corner of "
+                          f"both bodies), tracked contact law, {len(law.phi)} steps down to {step:.4f}° at every "
+                          f"hand-over"),
+            Check.at_most(f"{name}.no_snap", math.degrees(law.snap_max()), policy.POLYSECTOR_SNAP_TOL_DEG, "deg",
+                          f"largest jump of the gear beyond its nominal advance within one finest step ({step:.4f}° "
+                          f"of wheel turn)")]
 
 
 def chord_for(dd: PolysectorDesign, pos) -> float:
@@ -149,14 +162,7 @@ def proof_results(dd: PolysectorDesign, w, built: dict) -> None:
             Check.equal_within(f"{name}.epsilon_s_measured", eb, q.eps_s, 0.0, policy.POLYSECTOR_EPS_S_MATCH, "",
                                f"ε_s measured on the outline's driving corners (engagement {pr.u_enter:.6f} … "
                                f"{pr.u_exit:.6f} rad) {eb:.5f} against eq. 4 {q.eps_s:.5f}"),
-            Check.at_most(f"{name}.no_tip_on_tip", tip_deg, 0.0, "deg",
-                          f"wheel turn per sector period over which the gear rests on tips only (tip land or corner of "
-                          f"both bodies), tracked contact law, {len(law.phi)} steps down to "
-                          f"{math.degrees(law.step_min):.4f}° at every hand-over"),
-            Check.at_most(f"{name}.no_snap", snap_deg, policy.POLYSECTOR_SNAP_TOL_DEG, "deg",
-                          f"largest jump of the gear beyond its nominal advance within one finest step "
-                          f"({math.degrees(law.step_min):.4f}° of wheel turn)"),
-        ])
+        ] + law_checks(name, law))
         positions.append({"offset_mm": q.offset, "center_distance_mm": q.a, "ratio_nominal": q.ratio_nominal,
                           "epsilon_s": eb, "epsilon_s_per_flow": ef, "ratio_error_max": di_max,
                           "contact_pairs_min": int(pr.pairs.min()),
