@@ -13,9 +13,11 @@ of the pair repeats; the full turn is that period repeated, and the tables list 
 * jam / overlap: θ(φ) must not pass any engaged sector's coast pose; the overlap area of the gear
   at θ(φ) with each flow's sectors (manifold3d booleans, through the outlines' sections) is reported;
 * tooth pairs in contact at θ(φ) (all flows), continuity (never 0);
-* engagement of a sector: its outline enters the gear's tip circle (measured on the outline, the
-  boundaries found by bisection): φ1 and ε_s = φ1 i_s/2π measured (eq. 4);
-* i_t(φ) = dφ/dθ of the driving sector (eq. 7 measured), Δi = (i_n − i_t)/i_n (eq. 8).
+* engagement of a sector: from its leading tooth's driving corner entering the gear's tip circle to its
+  trailing tooth's driving corner leaving it (both corners taken from the outline, the boundaries found
+  by bisection): φ1 and ε_s = φ1 i_s/2π measured (eq. 4);
+* the contact law through every hand-over with adaptive steps (:mod:`.contact_law`): contact types,
+  tip-on-tip contact, snaps, i_t from the pole of the contact normal (eq. 7 measured), Δi (eq. 8).
 """
 
 from __future__ import annotations
