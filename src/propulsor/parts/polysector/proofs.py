@@ -83,13 +83,16 @@ def synthesis_step(dd: PolysectorDesign, w, built: dict) -> None:
     w.add_table("positions", ["position", "z_cond", "offset_mm", "d_cond_mm", "center_distance_mm", "ratio_nominal",
                               "epsilon_s_per_flow", "epsilon_s", "u_exit_rad", "delta_i_eq8_max"], rows)
     top = dd.positions[-1]
+    eps_at_max = geo.epsilon_s(dd.e_max)[1]
+    why_max = (f"ε_s = {eps_at_max:.4f} there; past it the leading tooth's driving corner no longer reaches the gear's "
+               f"tip circle" if eps_at_max > EPS_S_MIN + 1e-6 else f"ε_s falls to {EPS_S_MIN} there")
     w.add_note(
         f"Synthesis (seed 003 eq. 1–4): blank z = {p.blank_teeth}, m = {p.module_mm:g} mm; {p.flows} flow(s) of "
         f"i_s = {p.sectors_per_flow} sectors of z_c = {p.sector_teeth} teeth (eq. 2: z/i_s − k with k = {geo.k_gap} "
         f"empty pitches); gear z2 = {p.gear_teeth}. Largest offset of eq. 1/3 with our closing condition "
         f"(ε_s ≥ {EPS_S_MIN} for both flows, φ1 from the leading tooth's driving corner entering the gear's tip "
         f"circle to the trailing tooth's driving corner leaving it): e_max = {dd.e_max:.4f} mm "
-        f"(z_усл ≤ {d['z_cond_max']:.2f}); at it eq. 3's corner C (δ = {cp['delta']:.5f} rad) lies on the gear's tip "
+        f"(z_усл ≤ {d['z_cond_max']:.2f}; {why_max}); at it eq. 3's corner C (δ = {cp['delta']:.5f} rad) lies on the gear's tip "
         f"circle with O1C = {cp['O1C']:.4f} mm, CD = {cp['CD']:.4f} mm, β2 = {cp['beta2']:.5f} rad (rows of eq. 1/3 "
         f"agree within {d['eq3_residual_max_mm2']:.2g} mm²). The positions are the conditional tooth counts "
         f"{list(p.conditional_teeth)} (multiples of flows·i_s = {p.flows * p.sectors_per_flow}: every sector meets "
