@@ -330,10 +330,12 @@ def track(bodies: Bodies, grid: np.ndarray, theta0: float, step_min: float = pol
     out = [cur]
     h_max = float(np.max(np.diff(grid))) if len(grid) > 1 else 0.0
     h = h_max
+    last = theta0  # the last pose found (a lost contact, NaN, is reported and the tracking goes on from it)
     for target in grid[1:]:
         while cur.phi < target - 1e-15:
             h = min(h, target - cur.phi)
-            nxt = law.pose(cur.phi + h, cur.theta if math.isfinite(cur.theta) else out[-2].theta, h)
+            last = cur.theta if math.isfinite(cur.theta) else last
+            nxt = law.pose(cur.phi + h, last, h)
             if h > step_min * (1 + 1e-9) and _refine(cur, nxt, i_n, snap_tol):
                 h = max(h / 2.0, step_min)
                 continue
