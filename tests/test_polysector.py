@@ -58,15 +58,36 @@ def test_delta_of_eq3_and_eq1_swapped_are_the_tip_corners_of_the_generated_tooth
 
 
 def test_exit_angle_at_e0_is_the_intersection_of_the_tip_circles():
-    """Hand-worked e = 0: the sector is the blank; its outer corner leaves the gear's tip circle where the two
-    tip circles cross, at λ from the line of centres: cos λ = (r_a² + a² − r_a2²)/(2 a r_a)."""
+    """Hand-worked e = 0: the sector is the blank; a tip corner at δ leaves the gear's tip circle where the two
+    tip circles cross, at λ from the line of centres: cos λ = (r_a² + a² − r_a2²)/(2 a r_a), i.e. at u = λ + δ.
+    The tip land leaves by its outer corner; a sector drives from the leading tooth's driving (outer) corner
+    entering, −(λ + δ_out), to the trailing tooth's driving corner (eq. 3's δ_in) leaving, λ + δ_in."""
     g = geo()
     a = g.center_distance(0.0)
     lam = math.acos((g.r_a ** 2 + a * a - g.r_a2 ** 2) / (2 * a * g.r_a))
-    assert g.exit_angle(0.0) == pytest.approx(lam + g.tip_land()[1], abs=1e-10)
+    d_in, d_out = g.tip_land()
+    assert g.exit_angle(0.0) == pytest.approx(lam + d_out, abs=1e-10)
+    assert g.driving_span(0.0) == pytest.approx((-(lam + d_out), lam + d_in), abs=1e-10)
     pf, pb = g.epsilon_s(0.0)
-    assert pf == pytest.approx(2 * (lam + g.tip_land()[1]) * 3 / (2 * math.pi), abs=1e-10)
+    assert pf == pytest.approx((2 * lam + d_in + d_out) * 3 / (2 * math.pi), abs=1e-10)
     assert pb == pytest.approx(2 * pf, abs=1e-12)
+
+
+def test_largest_offset_from_the_driving_corner():
+    """m 4, z 30, z_c 9, i_s 3, z2 24: counting the whole tip land (its non-driving corners too) accepts
+    offsets up to 38.36 mm; with the driving corners ε_s (both flows) falls to 1.05 at 33.70 mm, and there the
+    trailing tooth's driving corner (eq. 3's C) leaves the gear's tip circle."""
+    g = PolysectorGeometry(m=4.0, z=30, z_c=9, i_s=3, z2=24, thinning=0.1)
+    e_max = g.max_offset()
+    assert e_max == pytest.approx(33.70, abs=0.01)
+    u0, u1 = g.driving_span(e_max)
+    assert (u1 - u0) * 6 / (2 * math.pi) > EPS_S_MIN  # ε_s is still 1.14 there, but just beyond it ...
+    with pytest.raises(InputError, match="driving corner does not reach"):
+        g.driving_span(e_max + 1e-6)  # ... the leading tooth's driving corner never reaches the gear
+    # while the tip land (by its non-driving corner) still reaches far into the gear's tip circle
+    assert 2 * g.exit_angle(e_max + 4.0) * 6 / (2 * math.pi) > EPS_S_MIN
+    cp = g.corner_pose(e_max)
+    assert cp["delta"] == g.tip_land()[0] and cp["on_tip_circle"] < 1e-9
 
 
 @pytest.mark.parametrize("e", [0.0, 9.0, 18.0, 27.0])
@@ -84,11 +105,17 @@ def test_eq1_rows_hold_at_the_exit_pose(e):
     assert abs(wrong - o1c2) > 1.0
 
 
-def test_largest_offset_is_where_eps_s_falls_to_1_05():
+def test_largest_offset_is_where_eps_s_falls_to_1_05_or_the_driving_corner_stops_reaching_the_gear():
     g = geo()
     e_max = g.max_offset()
-    assert g.epsilon_s(e_max)[1] == pytest.approx(EPS_S_MIN, abs=1e-8)
-    assert g.epsilon_s(0.98 * e_max)[1] > EPS_S_MIN
+    assert e_max == pytest.approx(28.171, abs=1e-3)  # 28.264 with the part's 0.1 mm thinning
+    # default design: ε_s never falls to 1.05; the leading tooth's driving corner stops reaching the gear first
+    assert g.epsilon_s(e_max)[1] > EPS_S_MIN
+    with pytest.raises(InputError, match="driving corner does not reach"):
+        g.epsilon_s(e_max + 1e-6)
+    g2 = geo(z2=100, z_c=8)  # a larger gear: here ε_s falls to 1.05 while the corners still reach it
+    e2 = g2.max_offset()
+    assert g2.epsilon_s(e2)[1] == pytest.approx(EPS_S_MIN, abs=1e-8)
     eps = [g.epsilon_s(e)[1] for e in (0.0, 9.0, 18.0, 27.0)]
     assert all(x > y for x, y in zip(eps, eps[1:]))  # the overlap shrinks as the sectors move out
     with pytest.raises(InputError, match="eq. 4"):

@@ -27,8 +27,9 @@ def test_polysector_kit_proves_its_printed_mesh_and_fits(kit_folder):
     assert [n for n, c in by_name.items() if not c["passed"]] == []
     d = m["derived"]
     assert d["scale_S"] == 1.0 and d["print_module_mm"] == pytest.approx(3.0)
-    assert d["print_center_distance_mm"] == pytest.approx(141.0) and d["print_position"] == 4
+    assert d["print_center_distance_mm"] == pytest.approx(132.0) and d["print_position"] == 3
     assert by_name["mesh.overlap_area"]["value"] <= 1e-6
+    assert by_name["mesh.no_tip_on_tip"]["value"] == 0.0 and by_name["mesh.no_snap"]["value"] <= 0.05
     assert by_name["mesh.contact_continuity"]["value"] >= 1
     assert d["print_backlash_n_min_mm"] >= 0.3  # the generic printer's normal backlash
     stls = sorted(p.stem for p in (kit_folder / "pieces").glob("*.stl"))

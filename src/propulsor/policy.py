@@ -200,8 +200,15 @@ POLYSECTOR_PROOF_CHORD_TOL_MM = 1e-4
 POLYSECTOR_PROOF_CHORD_TOL_CONJUGATE_MM = 3e-5
 #: eq. 7's largest |Δi| below which a position counts as conjugate (the finer chord is used)
 POLYSECTOR_CONJUGATE_DI = 1e-4
-#: ε_s measured on the outlines must match eq. 4 within this (issue 11)
+#: ε_s measured on the outlines must match eq. 4 within this
 POLYSECTOR_EPS_S_MATCH = 0.02
+#: the contact law's finest step of wheel turn at a hand-over (rad; 0.0029°): steps are halved down to it
+#: while the driving sector or the contact type changes across them, or the gear jumps
+POLYSECTOR_LAW_STEP_MIN_RAD = 5e-5
+#: a step is halved while its own ratio Δφ/Δθ differs from the ratios at its ends by more than this share of i_n
+POLYSECTOR_LAW_RATIO_SPLIT = 0.01
+#: snap: the gear's angle jumps by more than this (deg) beyond its nominal advance within one finest step
+POLYSECTOR_SNAP_TOL_DEG = 0.05
 
 # --- non-circular pair: law search ---------------------------------------------------------------
 #: law search of the non-circular pair (gears.law_search): blend half-widths scanned (deg), hand-over

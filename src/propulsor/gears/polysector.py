@@ -42,17 +42,24 @@ which is why the system is one condition short).  C on the mating gear's tip cir
 the extreme tooth (the flank facing the rest of the sector); δ of eq. 1,
 (2 z_c − 1) π/(2z) − inv α + inv α_a, is no tooth point; with its inv signs swapped,
 (2 z_c − 1) π/(2z) + inv α − inv α_a, it is the *outer* tip corner of the extreme tooth.
-Closing condition (ours, the lost figure's hand-over pose): the sector is *engaged* while a
-point of its teeth lies inside the gear's tip circle (the gear, turned back, is stopped by it);
-the extreme tooth's tip land leaves that circle last through its outer corner (eq. 1's δ with
-the swapped signs) or, when the direction O'O2 falls inside the tip land, through the land's
-point nearest O2.  By the sector's symmetry entry mirrors exit, so one sector is engaged over
-φ1 = 2 u_exit of wheel turn, u_exit the mid-line angle at exit.  Eq. 4 then reads
+Closing condition (ours, the lost figure's hand-over pose): a sector can *drive* while a driving
+corner of its teeth lies inside the gear's tip circle.  The wheel turns CCW and every tooth drives
+with its CCW flank, so the trailing extreme tooth's driving corner is eq. 3's C (δ_in, the corner
+of the flank facing the rest of the sector) and the leading tooth's is its outer corner, the mirror
+of δ_out (eq. 1's δ with the swapped signs).  One sector drives over
+φ1 = u_exit(δ_in) + u_exit(δ_out) of wheel turn, u_exit(δ) the mid-line angle at which the trailing
+tooth's corner δ leaves the gear's tip circle (entry of the leading corner mirrors the exit of the
+trailing one).  Eq. 4 then reads
     ε_s = φ1 i_s / 2π          per flow (i_s sectors of one flow),
-    ε_s = φ1 (2 i_s) / 2π      both flows together (2 i_s sectors, evenly interleaved),
-φ1 *with* the tip-corner phases (our reading: eq. 3 sets the largest offset by the same tip
-corner C on the mating tip circle).  The largest offset is the largest e with ε_s (both flows)
-≥ ε_s,min = 1.05 (eq. 4's lower bound).  The flank-contact-only overlap of one flow at e = 0
+    ε_s = φ1 (2 i_s) / 2π      both flows together (2 i_s sectors, evenly interleaved; the seed
+                               gives up overlap within one flow on purpose).
+The largest offset is the largest e with ε_s (both flows) ≥ ε_s,min = 1.05 (eq. 4's lower bound)
+at which both driving corners still reach into the gear's tip circle (for short sectors or small
+gears the leading tooth's outer corner stops reaching it first, with ε_s still above 1.05).  Counting the whole tip land instead (its non-driving corners too) accepts offsets where the
+driving corner never reaches the gear in time: for m 4, z 30, z_c 9, i_s 3, z2 24 (thinning 0.1 mm)
+that reading gives 38.36 mm, the driving corners 33.70 mm.  ε_s ≥ 1.05 is necessary, not sufficient:
+the hand-over itself (tip-on-tip contact, snaps) is proved on the outlines by the tracked contact law
+(:mod:`propulsor.parts.polysector.contact_law`).  The flank-contact-only overlap of one flow at e = 0
 is (z_c − 1 + ε_α) / (z_c + k) < 1 (k empty pitches between sectors, eq. 2).
 
 Eq. 5–8 (instantaneous ratio)
@@ -278,22 +285,49 @@ class PolysectorGeometry:
         return best
 
     def exit_angle(self, e: float) -> float:
-        """u_exit: mid-line angle at which the sector's last tooth leaves the gear's tip circle
-        (closing condition of eq. 1/3, see the module docstring)."""
+        """u_exit: mid-line angle at which the sector's tip land (its last tooth) leaves the gear's tip
+        circle: the whole engagement, every pose where the sector's outline can touch the gear."""
         f = lambda u: self.tip_land_distance(e, u) - self.r_a2
+        return self._leave(f, e, "the sector's teeth do not reach the gear's tip circle")
+
+    def corner_exit(self, e: float, delta: float) -> float:
+        """Mid-line angle at which the trailing extreme tooth's tip corner at ``delta`` (from the mid-line
+        about O', on the trailing side) leaves the gear's tip circle."""
+        a = self.center_distance(e)
+
+        def f(u):
+            cx = e * math.cos(u) + self.r_a * math.cos(u - delta)
+            cy = e * math.sin(u) + self.r_a * math.sin(u - delta)
+            return math.hypot(cx - a, cy) - self.r_a2
+
+        return self._leave(f, e, "the sector's driving corner does not reach the gear's tip circle")
+
+    @staticmethod
+    def _leave(f, e: float, why: str) -> float:
         # the trailing tooth is deepest in the gear near the pose that puts it on the line of
         # centres; it leaves the tip circle past that pose
         grid = np.linspace(0.0, math.pi / 2, 721)
         vals = np.array([f(u) for u in grid])
         k = int(np.argmin(vals))
-        require(vals[k] < 0.0, "offset", e, "the sector's teeth do not reach the gear's tip circle")
+        require(vals[k] < 0.0, "offset", e, why)
         k1 = k + int(np.argmax(vals[k:] > 0.0))
         require(vals[k1] > 0.0, "offset", e, "the sector never leaves the gear's tip circle")
         return brentq(f, grid[k1 - 1], grid[k1], xtol=1e-13)
 
+    def driving_span(self, e: float) -> tuple[float, float]:
+        """(u_enter, u_exit): the mid-line angles between which a *driving* corner of the sector lies inside
+        the gear's tip circle.  The wheel turns CCW, so a tooth drives with its CCW flank: the trailing
+        tooth's driving corner is the inner one, eq. 3's δ, and it leaves last at corner_exit(δ_in); the
+        leading tooth's driving corner is its outer one, which by the sector's mirror symmetry enters at
+        −corner_exit(δ_out).  Past the offset where these no longer span a sector pitch the driving corner
+        never reaches the gear in time: the outer (non-driving) corner of the leading tooth would."""
+        d_in, d_out = self.tip_land()
+        return -self.corner_exit(e, d_out), self.corner_exit(e, d_in)
+
     def phi1(self, e: float) -> float:
-        """Wheel angle over which one sector is engaged (with the tip-corner phases)."""
-        return 2.0 * self.exit_angle(e)
+        """Wheel angle over which one sector has a driving corner in the gear's tip circle."""
+        u0, u1 = self.driving_span(e)
+        return u1 - u0
 
     def epsilon_s(self, e: float) -> tuple[float, float]:
         """Eq. 4: (ε_s per flow, ε_s all flows together) = φ1 i_s/2π, φ1 · flows · i_s / 2π."""
@@ -301,26 +335,24 @@ class PolysectorGeometry:
         return p * self.i_s / (2 * math.pi), p * self.i_s * self.flows / (2 * math.pi)
 
     def corner_pose(self, e: float) -> dict:
-        """Eq. 1/3 at the exit pose: O1C, CD, β2 and the residuals of the rows, for the corner C
-        the tip land leaves by (the report's and the tests' hand-worked check)."""
-        u = self.exit_angle(e)
+        """Eq. 1/3 at the exit pose: O1C, CD, β2 and the residuals of the rows, for eq. 3's corner C (the
+        trailing tooth's driving corner) as it leaves the gear's tip circle (the report's and the tests'
+        hand-worked check)."""
+        d = self.tip_land()[0]
+        u = self.corner_exit(e, d)
         a = self.center_distance(e)
-        d_in, d_out = self.tip_land()
         ox, oy = e * math.cos(u), e * math.sin(u)
-        best = None
-        for d in (d_out, d_in):
-            cx, cy = ox + self.r_a * math.cos(u - d), oy + self.r_a * math.sin(u - d)
-            dist = abs(math.hypot(cx - a, cy) - self.r_a2)
-            if best is None or dist < best[0]:
-                best = (dist, d, cx, cy)
-        _, d, cx, cy = best
+        cx, cy = ox + self.r_a * math.cos(u - d), oy + self.r_a * math.sin(u - d)
+        dist = abs(math.hypot(cx - a, cy) - self.r_a2)
         beta2 = math.atan2(cy, a - cx)  # angle at O2 between O2O1 and O2C
         o1c = math.hypot(cx, cy)
         return {"u_exit": u, "delta": d, "O1C": o1c, "CD": 2 * self.r_a * math.sin(d / 2), "beta2": beta2,
-                "on_tip_circle": best[0], "residuals": eq1_residuals(e, self.r_a, d, a, self.r_a2, beta2)}
+                "on_tip_circle": dist, "residuals": eq1_residuals(e, self.r_a, d, a, self.r_a2, beta2)}
 
     def max_offset(self, eps_min: float = EPS_S_MIN) -> float:
-        """Largest offset e with ε_s (all flows) ≥ eps_min (eq. 1/3 with the closing condition, eq. 4)."""
+        """Largest offset e with ε_s (all flows, driving corners) ≥ eps_min (eq. 1/3 with the closing
+        condition, eq. 4) at which both driving corners still reach the gear's tip circle (past it the
+        leading tooth's outer corner passes outside that circle, ε_s is undefined)."""
         f = lambda e: self.epsilon_s(e)[1] - eps_min
         if f(0.0) < 0.0:
             raise InputError("z_c", self.z_c, f"eq. 4: ε_s = {self.epsilon_s(0.0)[1]:.4f} < {eps_min} already at "
@@ -328,7 +360,7 @@ class PolysectorGeometry:
         def g(e):
             try:
                 return f(e)
-            except InputError:  # the teeth no longer reach the gear's tip circle
+            except InputError:  # the driving corners no longer reach the gear's tip circle
                 return -1.0
 
         lo, step = 0.0, self.m

@@ -67,7 +67,7 @@ def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, sourc
     from ..pipeline import design_of
     from .design import design
     from .mesh_proof import prove_position
-    from .proofs import chord_for
+    from .proofs import chord_for, law_checks
 
     full = design_of(p, design)
     pos_full = full.positions[-1]
@@ -166,6 +166,7 @@ def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, sourc
               Check.at_least("mesh.print_backlash_min", jn_min, printer.backlash_mm, "mm",
                              f"least normal backlash of the printed teeth (free turn of the gear × r_b2); designed "
                              f"j_n = {j_n:.4f} mm")]
+    checks += law_checks("mesh", proof.law)
     for k, role in enumerate(("wheel", "gear")):
         checks.append(Check.at_least(f"fit.{role}_on_axle", (bores[k] - under - pin[k]) / 2, clear, "mm",
                                      f"radial running clearance on the ⌀{pin[k]:g} axle pin"))

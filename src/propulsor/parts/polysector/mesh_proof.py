@@ -13,9 +13,11 @@ of the pair repeats; the full turn is that period repeated, and the tables list 
 * jam / overlap: θ(φ) must not pass any engaged sector's coast pose; the overlap area of the gear
   at θ(φ) with each flow's sectors (manifold3d booleans, through the outlines' sections) is reported;
 * tooth pairs in contact at θ(φ) (all flows), continuity (never 0);
-* engagement of a sector: its outline enters the gear's tip circle (measured on the outline, the
-  boundaries found by bisection): φ1 and ε_s = φ1 i_s/2π measured (eq. 4);
-* i_t(φ) = dφ/dθ of the driving sector (eq. 7 measured), Δi = (i_n − i_t)/i_n (eq. 8).
+* engagement of a sector: from its leading tooth's driving corner entering the gear's tip circle to its
+  trailing tooth's driving corner leaving it (both corners taken from the outline, the boundaries found
+  by bisection): φ1 and ε_s = φ1 i_s/2π measured (eq. 4);
+* the contact law through every hand-over with adaptive steps (:mod:`.contact_law`): contact types,
+  tip-on-tip contact, snaps, i_t from the pole of the contact normal (eq. 7 measured), Δi (eq. 8).
 """
 
 from __future__ import annotations
@@ -56,6 +58,7 @@ class PositionProof:
     r_ref: float
     flows: int
     i_s: int
+    law: object = None  # contact_law.LawResult over the period (adaptive steps; its samples include phi)
 
     @property
     def te(self) -> np.ndarray:
@@ -68,42 +71,53 @@ class PositionProof:
         return f, f * self.flows
 
     def ratio_measured(self) -> tuple[np.ndarray, np.ndarray]:
-        """(i_t, Δi) per step: i_t = dφ/dθ of the driving sector's own drive pose θ_j(φ), from a smoothing
-        spline of θ_j over each stretch of steps where that sector sets the gear's angle within the
-        measurement's accuracy, θ − θ_j <= 3σ (a sector out of phase at the ends of its engagement,
-        touching by a tip corner behind the driving one, is left out; smoothed within the
-        outlines' chord tolerance: each polyline lies within chord_tol of its curve, so a contact angle
-        is known to σ = 2 chord_tol / r_b2); Δi = (i_n − i_t)/i_n (eq. 8)."""
-        from scipy.interpolate import UnivariateSpline
-
-        n = len(self.phi)
-        sig = 2.0 * self.chord_tol / self.r_ref
-        slope = {}
-        for j, th in self.drive_theta.items():
-            d = np.full(n, np.nan)
-            ok = np.isfinite(th) & (self.theta - np.where(np.isfinite(th), th, -np.inf) <= 3.0 * sig)
-            k0 = 0
-            while k0 < n:
-                if not ok[k0]:
-                    k0 += 1
-                    continue
-                k1 = k0
-                while k1 + 1 < n and ok[k1 + 1]:
-                    k1 += 1
-                idx = np.arange(k0, k1 + 1)
-                if len(idx) >= 5:
-                    x = self.phi[idx]
-                    sp = UnivariateSpline(x, th[idx] - x / self.ratio_nominal, k=3, s=len(x) * sig * sig)
-                    d[idx] = sp.derivative()(x)
-                k0 = k1 + 1
-            slope[j] = d
-        te_slope = np.array([slope[int(j)][k] for k, j in enumerate(self.driver)])
-        it = 1.0 / (1.0 / self.ratio_nominal + te_slope)
-        return it, (self.ratio_nominal - it) / self.ratio_nominal
+        """(i_t, Δi) per step from the tracked contact law (the pole of the contact normal, eq. 7 measured;
+        no fit): see :mod:`.contact_law`."""
+        idx = self.law.at(self.phi)
+        return self.law.i_t[idx], self.law.delta_i[idx]
 
 
 def _wrap(a):
     return (np.asarray(a) + math.pi) % (2 * math.pi) - math.pi
+
+
+def _driving_corner_span(dd, pos, chord_tol, r_a2, O2) -> tuple[float, float]:
+    """(u_enter, u_exit) of flow 1's first sector from its outline's driving tip corners (see the caller)."""
+    from ...checks.motion import outline
+    from ...geometry.polysector_outline import place
+
+    geo = dd.geo
+    o = outline(place(dd.sector, 0.0, pos.offset), chord_tol, policy.MOTION_MAX_SEGMENT_MM)
+    rel = o.points - np.array([pos.offset, 0.0])
+    tip = rel[np.hypot(rel[:, 0], rel[:, 1]) >= geo.r_a - 2.0 * chord_tol - 1e-9]
+    beta = np.sort(np.arctan2(tip[:, 1], tip[:, 0]))  # from the mid-line, CCW
+    cuts = np.nonzero(np.diff(beta) > math.pi / dd.p.blank_teeth)[0]
+    trailing_inner = beta[cuts[0]] if len(cuts) else beta[-1]  # the last tip vertex of the CW-most tooth
+    leading_outer = beta[-1]
+
+    def inside(beta0, u):
+        c = np.array([pos.offset * math.cos(u) + geo.r_a * math.cos(u + beta0),
+                      pos.offset * math.sin(u) + geo.r_a * math.sin(u + beta0)])
+        return bool(np.hypot(*(c - O2)) < r_a2)
+
+    def boundary(beta0, lo, hi):
+        e_lo = inside(beta0, lo)
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            if inside(beta0, mid) == e_lo:
+                lo = mid
+            else:
+                hi = mid
+        return 0.5 * (lo + hi)
+
+    grid = np.linspace(0.0, math.pi / 2, 721)
+    ins = np.array([inside(trailing_inner, g) for g in grid])
+    k = int(np.argmax(ins)) + int(np.argmax(~ins[int(np.argmax(ins)):]))
+    u_exit = boundary(trailing_inner, grid[k - 1], grid[k])
+    ins = np.array([inside(leading_outer, -g) for g in grid])
+    k = int(np.argmax(ins)) + int(np.argmax(~ins[int(np.argmax(ins)):]))
+    u_enter = -boundary(leading_outer, grid[k - 1], grid[k])
+    return u_enter, u_exit
 
 
 def prove_position(dd, pos, steps_per_pitch: int | None = None, chord_tol: float = policy.MOTION_CHORD_TOL_MM):
@@ -256,29 +270,10 @@ def prove_position(dd, pos, steps_per_pitch: int | None = None, chord_tol: float
             rel21 = compose_poses(inverse_pose(M1), M2)
             overlap[k, angles[j][1] - 1] += (sec_out[j].section ^ gear.section.transform(rel21)).area()
     n_eng = np.sum([eng[j] for j in cand], axis=0)
-    # measured engagement of one sector (flow 1's first, mid-line on +x at φ = 0): entry and exit
-    # angles of its outline into the gear's tip circle, by bisection on the outline
-    j0 = 0
-    if j0 not in sec_out:
-        sec_out[j0] = outline(place(dd.sector, angles[j0][0], pos.offset), chord_tol, seg)
-
-    def boundary(lo, hi):
-        e_lo = engaged(j0, lo)
-        for _ in range(60):
-            mid = 0.5 * (lo + hi)
-            if engaged(j0, mid) == e_lo:
-                lo = mid
-            else:
-                hi = mid
-        return 0.5 * (lo + hi)
-
-    grid = np.linspace(0.0, math.pi / 2, 361)
-    e_g = np.array([engaged(j0, g) for g in grid])
-    i_out = int(np.argmax(~e_g))
-    u_exit = boundary(grid[i_out - 1], grid[i_out])
-    e_g = np.array([engaged(j0, -g) for g in grid])
-    i_in = int(np.argmax(~e_g))
-    u_enter = -boundary(grid[i_in - 1], grid[i_in])
+    # measured engagement of one sector (flow 1's first, mid-line on +x at φ = 0): the wheel angles at which
+    # the leading tooth's driving corner enters the gear's tip circle and the trailing tooth's leaves it,
+    # both corners taken from the outline (its vertices on the blank's tip circle about O'), by bisection
+    u_enter, u_exit = _driving_corner_span(dd, pos, chord_tol, r_a2, O2)
     # the driving sector's mid-line angle and contact points
     drv_u = np.array([u_of(j, ph) for j, ph in zip(jdrv, phi)])
     cp = np.array([cpt[j][k] for k, j in enumerate(jdrv)])
@@ -308,8 +303,11 @@ def prove_position(dd, pos, steps_per_pitch: int | None = None, chord_tol: float
             for grp in np.split(idx, cuts):
                 here.append((j, apply_pose(M2, gear.points[grp]).mean(axis=0)))
         contacts.append(here)
+    from .contact_law import position_bodies, track
+
+    law = track(position_bodies(dd, pos, chord_tol), np.append(phi, period), float(theta[0]))
     return PositionProof(k=pos.k, phi=phi, period=period, theta=theta, theta_nominal=theta_n, driver=jdrv,
                          driver_u=drv_u, pairs=pairs, sectors_engaged=n_eng, overlap_flow=overlap, coast_room=room,
                          phi1_measured=u_exit - u_enter, u_enter=u_enter, u_exit=u_exit, contact_points=cp, contacts=contacts,
                          drive_theta={j: drive[j] for j in cand}, ratio_nominal=i_n, chord_tol=chord_tol,
-                         r_ref=r_ref, flows=p.flows, i_s=p.sectors_per_flow)
+                         r_ref=r_ref, flows=p.flows, i_s=p.sectors_per_flow, law=law)

@@ -14,13 +14,26 @@ from ...parallel import start as start_in_fork
 from .design import PolysectorDesign
 
 __all__ = ["synthesis_step", "start_proofs", "proof_results", "position_error_step", "efficiency_step",
-           "dynamics_step", "prove_positions", "chord_for", "full_turn", "eq7_max_di"]
+           "dynamics_step", "prove_positions", "chord_for", "full_turn", "eq7_max_di", "law_checks"]
 
 
 def eq7_max_di(dd: PolysectorDesign, pos) -> float:
     """Largest |Δi| of eq. 7/8 (flank contact) over the sector's engagement."""
     u = np.linspace(-pos.u_exit, pos.u_exit, 201)
     return float(np.max(np.abs((pos.ratio_nominal - dd.geo.ratio_flank(pos.offset, u)) / pos.ratio_nominal)))
+
+
+def law_checks(name: str, law) -> list:
+    """The hand-over checks of a tracked contact law (:class:`.contact_law.LawResult`): no tip-on-tip contact,
+    no snap above ``policy.POLYSECTOR_SNAP_TOL_DEG``."""
+    step = math.degrees(law.step_min)
+    return [Check.at_most(f"{name}.no_tip_on_tip", math.degrees(law.tip_tip_angle()), 0.0, "deg",
+                          f"wheel turn per sector period over which the gear rests on tips only (tip land or corner of "
+                          f"both bodies), tracked contact law, {len(law.phi)} steps down to {step:.4f}° at every "
+                          f"hand-over"),
+            Check.at_most(f"{name}.no_snap", math.degrees(law.snap_max()), policy.POLYSECTOR_SNAP_TOL_DEG, "deg",
+                          f"largest jump of the gear beyond its nominal advance within one finest step ({step:.4f}° "
+                          f"of wheel turn)")]
 
 
 def chord_for(dd: PolysectorDesign, pos) -> float:
@@ -63,19 +76,23 @@ def synthesis_step(dd: PolysectorDesign, w, built: dict) -> None:
         rows.append([q.k, q.z_cond, q.offset, p.module_mm * q.z_cond, q.a, q.ratio_nominal, q.eps_s_flow, q.eps_s,
                      q.u_exit, eq7_max_di(dd, q)])
         w.add_checks([Check.at_least(f"position{q.k}.epsilon_s_eq4", q.eps_s, EPS_S_MIN, "",
-                                     f"eq. 4 (both flows, with the tip-corner phases): ε_s = {q.eps_s:.4f} "
+                                     f"eq. 4 (both flows, φ1 between the driving corners): ε_s = {q.eps_s:.4f} "
                                      f"(per flow {q.eps_s_flow:.4f}); the seed asks 1.05 … 1.3 at the largest offset"),
                       Check.at_most(f"position{q.k}.offset_eq3", q.offset, dd.e_max, "mm",
                                     f"offset {q.offset:g} mm within the largest offset of eq. 1/3, {dd.e_max:.4f} mm")])
     w.add_table("positions", ["position", "z_cond", "offset_mm", "d_cond_mm", "center_distance_mm", "ratio_nominal",
                               "epsilon_s_per_flow", "epsilon_s", "u_exit_rad", "delta_i_eq8_max"], rows)
     top = dd.positions[-1]
+    eps_at_max = geo.epsilon_s(dd.e_max)[1]
+    why_max = (f"ε_s = {eps_at_max:.4f} there; past it the leading tooth's driving corner no longer reaches the gear's "
+               f"tip circle" if eps_at_max > EPS_S_MIN + 1e-6 else f"ε_s falls to {EPS_S_MIN} there")
     w.add_note(
         f"Synthesis (seed 003 eq. 1–4): blank z = {p.blank_teeth}, m = {p.module_mm:g} mm; {p.flows} flow(s) of "
         f"i_s = {p.sectors_per_flow} sectors of z_c = {p.sector_teeth} teeth (eq. 2: z/i_s − k with k = {geo.k_gap} "
         f"empty pitches); gear z2 = {p.gear_teeth}. Largest offset of eq. 1/3 with our closing condition "
-        f"(ε_s ≥ {EPS_S_MIN} for both flows, φ1 with the tip-corner phases): e_max = {dd.e_max:.4f} mm "
-        f"(z_усл ≤ {d['z_cond_max']:.2f}); at it the corner C (δ = {cp['delta']:.5f} rad) lies on the gear's tip "
+        f"(ε_s ≥ {EPS_S_MIN} for both flows, φ1 from the leading tooth's driving corner entering the gear's tip "
+        f"circle to the trailing tooth's driving corner leaving it): e_max = {dd.e_max:.4f} mm "
+        f"(z_усл ≤ {d['z_cond_max']:.2f}; {why_max}); at it eq. 3's corner C (δ = {cp['delta']:.5f} rad) lies on the gear's tip "
         f"circle with O1C = {cp['O1C']:.4f} mm, CD = {cp['CD']:.4f} mm, β2 = {cp['beta2']:.5f} rad (rows of eq. 1/3 "
         f"agree within {d['eq3_residual_max_mm2']:.2g} mm²). The positions are the conditional tooth counts "
         f"{list(p.conditional_teeth)} (multiples of flows·i_s = {p.flows * p.sectors_per_flow}: every sector meets "
@@ -107,6 +124,7 @@ def full_turn(dd: PolysectorDesign, pr) -> tuple[np.ndarray, ...]:
 def proof_results(dd: PolysectorDesign, w, built: dict) -> None:
     """Checks, tables, plots and the manifest's positions from the proofs."""
     from ...export.plots import new_figure
+    from .contact_law import TYPES
 
     p, geo = dd.p, dd.geo
     proofs = {}
@@ -123,11 +141,15 @@ def proof_results(dd: PolysectorDesign, w, built: dict) -> None:
     for k, q in enumerate(dd.positions):
         pr = proofs[k]
         it, di = pr.ratio_measured()
+        law = pr.law
+        kinds = law.kind[law.at(pr.phi)]
         ef, eb = pr.eps_s_measured()
         n_eng = pr.sectors_engaged
         two = float(np.mean(n_eng >= 2))
         ov = pr.overlap_flow.max(axis=0)
-        di_max = float(np.nanmax(np.abs(di)))
+        di_max = law.ratio_error_max()
+        shares = law.shares()
+        tip_deg, snap_deg = math.degrees(law.tip_tip_angle()), math.degrees(law.snap_max())
         di_eq8 = (q.ratio_nominal - geo.ratio_flank(q.offset, pr.driver_u)) / q.ratio_nominal
         name = f"position{q.k}"
         for f in range(p.flows):
@@ -141,34 +163,47 @@ def proof_results(dd: PolysectorDesign, w, built: dict) -> None:
             Check.at_least(f"{name}.no_jam", float(np.nanmin(pr.coast_room)), 0.0, "rad",
                            "least room of the engaged sectors' other flanks at the pose the driving sector sets"),
             Check.equal_within(f"{name}.epsilon_s_measured", eb, q.eps_s, 0.0, policy.POLYSECTOR_EPS_S_MATCH, "",
-                               f"ε_s measured on the outline (engagement {pr.u_enter:.6f} … {pr.u_exit:.6f} rad) "
-                               f"{eb:.5f} against eq. 4 {q.eps_s:.5f}"),
-        ])
+                               f"ε_s measured on the outline's driving corners (engagement {pr.u_enter:.6f} … "
+                               f"{pr.u_exit:.6f} rad) {eb:.5f} against eq. 4 {q.eps_s:.5f}"),
+        ] + law_checks(name, law))
         positions.append({"offset_mm": q.offset, "center_distance_mm": q.a, "ratio_nominal": q.ratio_nominal,
                           "epsilon_s": eb, "epsilon_s_per_flow": ef, "ratio_error_max": di_max,
                           "contact_pairs_min": int(pr.pairs.min()),
                           "epsilon_s_eq4": q.eps_s, "z_cond": q.z_cond, "share_two_sectors_engaged": two,
                           "epsilon_s_steps": float(np.mean(n_eng)),
                           "share_two_pairs_in_contact": float(np.mean(pr.pairs >= 2)),
-                          "transmission_error_pp_rad": float(np.ptp(pr.te)),
-                          "proof_chord_tol_mm": pr.chord_tol, "proof_steps_per_period": len(pr.phi)})
+                          "transmission_error_pp_rad": float(np.ptp(law.te)),
+                          "proof_chord_tol_mm": pr.chord_tol, "proof_steps_per_period": len(pr.phi),
+                          "contact_shares": shares, "tip_on_tip_deg": tip_deg, "snap_max_deg": snap_deg,
+                          "contact_law_steps_per_period": len(law.phi),
+                          "contact_law_step_min_deg": math.degrees(law.step_min)})
+        w.add_table(f"contact_law_{q.k}", ["phi_rad", "theta_rad", "te_rad", "driving_sector", "contact_type", "i_t",
+                                           "delta_i"],
+                    [[law.phi[i], law.theta[i], law.te[i], int(law.driver[i]) + 1, TYPES[law.kind[i]], law.i_t[i],
+                      law.delta_i[i]] for i in range(len(law.phi))])
         phi_t, th_t = full_turn(dd, pr)
         w.add_table(f"transmission_{q.k}",
                     ["phi_rad", "theta_rad", "gear_rotation_ccw_rad", "theta_nominal_rad", "te_rad", "i_t",
-                     "delta_i", "delta_i_eq8_flank", "driving_sector", "pairs_in_contact", "sectors_engaged"],
+                     "delta_i", "delta_i_eq8_flank", "driving_sector", "pairs_in_contact", "sectors_engaged",
+                     "contact_type"],
                     [[phi_t[i], th_t[i], -th_t[i], phi_t[i] / q.ratio_nominal, th_t[i] - phi_t[i] / q.ratio_nominal,
                       it[i % len(pr.phi)], di[i % len(pr.phi)], di_eq8[i % len(pr.phi)],
                       int((pr.driver[i % len(pr.phi)] + (i // len(pr.phi))) % (p.flows * p.sectors_per_flow)) + 1,
-                      int(pr.pairs[i % len(pr.phi)]), int(n_eng[i % len(pr.phi)])] for i in range(len(phi_t))])
-        ax1.plot(np.degrees(pr.phi), pr.te * 1e3, lw=0.9, label=f"e = {q.offset:g} mm")
-        ax2.plot(np.degrees(pr.phi), di, lw=0.9, label=f"measured, e = {q.offset:g} mm")
+                      int(pr.pairs[i % len(pr.phi)]), int(n_eng[i % len(pr.phi)]), TYPES[kinds[i % len(pr.phi)]]]
+                     for i in range(len(phi_t))])
+        ax1.plot(np.degrees(law.phi), law.te * 1e3, lw=0.9, label=f"e = {q.offset:g} mm")
+        ax2.plot(np.degrees(law.phi), law.delta_i, lw=0.9, label=f"measured, e = {q.offset:g} mm")
         ax2.plot(np.degrees(pr.phi), di_eq8, lw=0.7, ls="--", label=f"eq. 7/8 (flank), e = {q.offset:g} mm")
         w.add_note(
             f"Position {q.k} (z_усл = {q.z_cond}, e = {q.offset:g} mm, a = {q.a:g} mm, i_n = {q.ratio_nominal:.5f}): "
             f"{len(pr.phi)} steps over one sector period, outlines within {pr.chord_tol:g} mm. ε_s measured "
             f"{eb:.4f} (per flow {ef:.4f}) against eq. 4 {q.eps_s:.4f}; two sectors engaged over {100 * two:.1f} % of "
             f"the turn; tooth pairs in contact {int(pr.pairs.min())} … {int(pr.pairs.max())}; transmission error "
-            f"{1e3 * float(np.ptp(pr.te)):.4f} mrad peak to peak; |Δi| up to {di_max:.3g} measured, "
+            f"{1e3 * float(np.ptp(law.te)):.4f} mrad peak to peak; contact law tracked in {len(law.phi)} steps "
+            f"(down to {math.degrees(law.step_min):.4f}° at the hand-overs): "
+            + ", ".join(f"{t} {100 * v:.2f} %" for t, v in shares.items())
+            + f" of the turn, tip on tip {tip_deg:.4f}° per period, largest snap {snap_deg:.4f}° (limit "
+            f"{policy.POLYSECTOR_SNAP_TOL_DEG:g}°); |Δi| up to {di_max:.3g} (pole of the contact normal), "
             f"{float(np.max(np.abs(di_eq8))):.3g} by eq. 7/8 for a flank contact of the driving sector at the same "
             f"steps ({eq7_max_di(dd, q):.3g} over its whole engagement); overlap {float(ov.max()):.2g} mm².")
     ax1.set_ylabel("θ − φ/i_n, mrad")
