@@ -27,7 +27,7 @@ KIT_NAMES  := $(patsubst parts/%.toml,print-%,$(KIT_FILES))
 KIT_MANIFESTS := $(patsubst parts/%.toml,$(OUT)/%_kit/manifest.json,$(KIT_FILES))
 PRINTER    ?= generic
 
-.PHONY: all install lock parts gallery test check bench clean list print $(PART_NAMES) $(KIT_NAMES)
+.PHONY: all install lock parts gallery test check bench clean list print docs $(PART_NAMES) $(KIT_NAMES)
 
 all: parts $(OUT)/index.html
 
@@ -101,6 +101,11 @@ list: $(STAMP)
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q -n $(PYTEST_WORKERS) --dist loadfile -m "not sweep" tests
+
+# the API reference from the docstrings (pdoc), warnings as errors
+docs: $(STAMP)
+	rm -rf docs/api
+	$(BIN)/python -W error -m pdoc propulsor propulsor.api -o docs/api
 
 check: $(STAMP)
 	$(BIN)/propulsor check output/
