@@ -217,22 +217,23 @@ ROOT_BRIDGE_MAX_MODULE = 0.1
 
 # --- files read by `propulsor check` (checks/safe_read.py, checks/formats.py) ---------------------
 # Checked before a byte is parsed: a larger file is invalid, unread.  The largest outputs of the 13
-# parts are 7.6 MB (STEP), 7.0 MB (STL), 3.3 MB (GLB), 2.0 MB (3MF), 1.3 MB (DXF) and 42 kB
-# (manifest); the limits leave about ten times that and keep `check` under CHECK_MEMORY_CEILING.
+# parts are 7.6 MB (STEP), 7.0 MB (STL), 3.3 MB (GLB), 2.0 MB (3MF, 11.5 MB unzipped), 1.3 MB (DXF)
+# and 42 kB (manifest); the limits leave four to ten times that and keep the check of a valid file
+# at the limit under CHECK_MEMORY_CEILING (a 32 MiB binary STL: 1.5 GB peak resident, 31 s).
 MIB = 1 << 20
 #: largest file read, by kind (bytes)
 READ_LIMIT_BYTES = {
     "manifest": 16 * MIB,
-    "step": 64 * MIB,
-    "stl": 64 * MIB,  # binary: 84 + 50 n bytes, n <= 1.34 M triangles
-    "stl_ascii": 32 * MIB,
-    "3mf": 32 * MIB,  # the zip as stored
+    "step": 32 * MIB,  # OCCT: the 7.6 MB STEP peaks at 0.55 GB resident
+    "stl": 32 * MIB,  # binary: 84 + 50 n bytes, n <= 671 k triangles (the largest part: 140 k)
+    "stl_ascii": 16 * MIB,
+    "3mf": 16 * MIB,  # the zip as stored
     "dxf": 16 * MIB,
-    "glb": 64 * MIB,
+    "glb": 32 * MIB,
 }
 #: a 3MF: its members decompressed, in total (declared sizes and what decompression yields), and
 #: how many members it may hold
-THREEMF_UNZIPPED_MAX_BYTES = 128 * MIB
+THREEMF_UNZIPPED_MAX_BYTES = 24 * MIB  # ~82 bytes a triangle: ~300 k triangles (22 MiB: 1.07 GB peak)
 THREEMF_MEMBERS_MAX = 4096
 #: a GLB's JSON chunk (the rest are binary buffers, bounded by the file)
 GLB_JSON_MAX_BYTES = 16 * MIB
