@@ -91,6 +91,13 @@ def test_stl_claiming_4e9_triangles(tmp_path):
     invalid(tmp_path, "binary STL declares 4000000000 triangles")
 
 
+def test_stl_of_stacked_triangles(tmp_path):
+    """4600 copies of one triangle: every vertex pair and triangle pair is close (n^2 / 2)."""
+    tri = struct.pack("<12fH", 0, 0, 1, 0, 0, 0, 10, 0, 0, 0, 10, 0, 0)
+    (tmp_path / "stack.stl").write_bytes(b"\0" * 80 + struct.pack("<I", 4600) + tri * 4600)
+    invalid(tmp_path, "self-intersecting triangle pairs: not tested: more than")
+
+
 def _zip_bomb(path: Path, members: int, each: int):
     block = b"\0" * (1 << 20)
     with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED, compresslevel=9) as zf:

@@ -237,11 +237,13 @@ THREEMF_UNZIPPED_MAX_BYTES = 24 * MIB  # ~82 bytes a triangle: ~300 k triangles 
 THREEMF_MEMBERS_MAX = 4096
 #: a GLB's JSON chunk (the rest are binary buffers, bounded by the file)
 GLB_JSON_MAX_BYTES = 16 * MIB
+#: nodes, meshes, accessors (and every other list) of a GLB, each (an assembly has tens of components)
+GLB_ITEMS_MAX = 10_000
 #: a file listed in a manifest is hashed only up to this size (a larger one is a mismatch)
 HASH_LIMIT_BYTES = 1024 * MIB
 #: a mesh's triangle boxes may overlap in at most this many pairs before the self-intersection
 #: test gives up (a real mesh has ~10 per triangle; a hostile one n^2 / 2)
-MESH_BOX_PAIRS_MAX = 20_000_000
+MESH_BOX_PAIRS_MAX = 10_000_000
 #: DXF coordinates, radii and arc radii (mm): the largest part is an assembly of ~1 m; 100 m is far
 #: beyond any running gear and keeps the flattening of an arc to a few thousand points
 DXF_COORD_MAX_MM = 1e5

@@ -133,7 +133,7 @@ def check_mesh_file(path: Path) -> list[Check]:
     except Refused as exc:
         return [Check.flag(f"{name}: loads", False, str(exc))]
     try:
-        mesh = load_mesh(io.BytesIO(data), file_type=kind)
+        mesh = load_mesh(io.BytesIO(data), file_type=kind, max_pairs=MESH_BOX_PAIRS_MAX)
         del data
         if len(mesh.faces) == 0:
             raise ValueError("no triangles")
@@ -317,7 +317,8 @@ def check_manifest_file(path: Path) -> list[Check]:
     out.append(Check.equals(f"{name}: sha256 mismatches", len(wrong_hash), 0, "", ", ".join(wrong_hash) or "hashes as recorded"))
     listed = {e["path"] for e in files}
     present, _ = walk(folder)
-    unlisted = [rel for rel in (q.relative_to(folder).as_posix() for q in present) if rel != MANIFEST and rel not in listed]
+    unlisted = [rel for rel in (q.relative_to(folder).as_posix() for q in present)
+                if rel != MANIFEST and rel not in listed]
     out.append(Check.equals(f"{name}: unlisted files", len(unlisted), 0, "", ", ".join(unlisted) or "every file listed"))
     documented = {f for f in data.get("expected_failures", []) if isinstance(f, str)}
     failed = [c.get("name") if isinstance(c, dict) else repr(c) for c in data["checks"]

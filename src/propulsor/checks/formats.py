@@ -9,8 +9,9 @@ beyond the limits of policy.py:
 * 3MF: member count and declared sizes before decompressing, then decompression itself bounded
   (declared sizes can lie);
 * GLB: the header's length is the file's, each chunk lies within the file, the JSON chunk is bounded
-  and parses, buffers, views and accessors lie within the binary chunk, no external URIs, and the
-  nodes form a forest (children in range, each node reached once from the roots);
+  and parses, buffers, views and accessors lie within the binary chunk and are not too many, no
+  external URIs, and the nodes form a forest (children in range, each node reached once from the
+  roots);
 * DXF: coordinates, radii and arc radii finite and within policy.DXF_COORD_MAX_MM, and the points
   the arcs flatten to within policy.DXF_POINTS_MAX, before anything is flattened.
 """
@@ -23,8 +24,8 @@ import math
 import struct
 import zipfile
 
-from ..policy import (CHORD_TOL_MM, DXF_COORD_MAX_MM, DXF_POINTS_MAX, GLB_JSON_MAX_BYTES, READ_LIMIT_BYTES,
-                      THREEMF_MEMBERS_MAX, THREEMF_UNZIPPED_MAX_BYTES)
+from ..policy import (CHORD_TOL_MM, DXF_COORD_MAX_MM, DXF_POINTS_MAX, GLB_ITEMS_MAX, GLB_JSON_MAX_BYTES,
+                      READ_LIMIT_BYTES, THREEMF_MEMBERS_MAX, THREEMF_UNZIPPED_MAX_BYTES)
 from .safe_read import Refused
 
 
@@ -100,6 +101,8 @@ def _list(gltf: dict, key: str) -> list:
     v = gltf.get(key, [])
     if not isinstance(v, list) or not all(isinstance(x, dict) for x in v):
         raise Refused(f"'{key}' is not a list of objects")
+    if len(v) > GLB_ITEMS_MAX:
+        raise Refused(f"{len(v)} {key}: more than {GLB_ITEMS_MAX}")
     return v
 
 
