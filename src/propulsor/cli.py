@@ -155,12 +155,17 @@ def cmd_print(args) -> int:
 
 
 def cmd_check(args) -> int:
-    from .checks.files import check_path
+    from .checks.files import check_path, one_line
+    from .checks.memory import memory_ceiling
 
     path = Path(args.path)
-    if not path.exists():
+    if not os.path.lexists(path):
         return fail_input(InputError("PATH", str(path), "does not exist"))
-    results = check_path(path)
+    try:
+        with memory_ceiling():
+            results = check_path(path)
+    except EnvironmentFailure as exc:
+        return fail_environment(exc)
     if not results:
         return fail_input(InputError("PATH", str(path), "holds no STEP, STL, 3MF, DXF or manifest.json to check"))
     n_bad = 0
@@ -169,9 +174,9 @@ def cmd_check(args) -> int:
         n_bad += bool(bad)
         status = "FAIL" if bad else "ok"
         if bad or args.verbose:
-            print(f"{status:4s} {file}")
+            print(f"{status:4s} {one_line(file)}")
             for c in (checks if args.verbose else bad):
-                print(f"     {'PASS' if c.passed else 'FAIL'} {c.name}: {c.message}")
+                print(f"     {'PASS' if c.passed else 'FAIL'} {one_line(c.name)}: {one_line(c.message)}")
     print(f"{len(results)} file(s) checked, {n_bad} invalid")
     return EXIT_CHECK_FAILED if n_bad else EXIT_OK
 

@@ -225,3 +225,41 @@ LAW_SEARCH_TRIES_PER_SHAPER = 2
 #: largest gap (in modules) between the fillet start of a re-phased shaper (own x0) and the root
 #: equidistant that the outline closes by lifting the root; more is refused (InputError)
 ROOT_BRIDGE_MAX_MODULE = 0.1
+
+# --- files read by `propulsor check` (checks/safe_read.py, checks/formats.py) ---------------------
+# Checked before a byte is parsed: a larger file is invalid, unread.  The largest outputs of the 13
+# parts are 7.6 MB (STEP), 7.0 MB (STL), 3.3 MB (GLB), 2.0 MB (3MF, 11.5 MB unzipped), 1.3 MB (DXF)
+# and 42 kB (manifest); the limits leave four to ten times that and keep the check of a valid file
+# at the limit under CHECK_MEMORY_CEILING (a 32 MiB binary STL: 1.5 GB peak resident, 31 s).
+MIB = 1 << 20
+#: largest file read, by kind (bytes)
+READ_LIMIT_BYTES = {
+    "manifest": 16 * MIB,
+    "step": 32 * MIB,  # OCCT: the 7.6 MB STEP peaks at 0.55 GB resident
+    "stl": 32 * MIB,  # binary: 84 + 50 n bytes, n <= 671 k triangles (the largest part: 140 k)
+    "stl_ascii": 16 * MIB,
+    "3mf": 16 * MIB,  # the zip as stored
+    "dxf": 16 * MIB,
+    "glb": 32 * MIB,
+}
+#: a 3MF: its members decompressed, in total (declared sizes and what decompression yields), and
+#: how many members it may hold
+THREEMF_UNZIPPED_MAX_BYTES = 24 * MIB  # ~82 bytes a triangle: ~300 k triangles (22 MiB: 1.07 GB peak)
+THREEMF_MEMBERS_MAX = 4096
+#: a GLB's JSON chunk (the rest are binary buffers, bounded by the file)
+GLB_JSON_MAX_BYTES = 16 * MIB
+#: nodes, meshes, accessors (and every other list) of a GLB, each (an assembly has tens of components)
+GLB_ITEMS_MAX = 10_000
+#: a file listed in a manifest is hashed only up to this size (a larger one is a mismatch)
+HASH_LIMIT_BYTES = 1024 * MIB
+#: a mesh's triangle boxes may overlap in at most this many pairs before the self-intersection
+#: test gives up (a real mesh has ~10 per triangle; a hostile one n^2 / 2)
+MESH_BOX_PAIRS_MAX = 10_000_000
+#: DXF coordinates, radii and arc radii (mm): the largest part is an assembly of ~1 m; 100 m is far
+#: beyond any running gear and keeps the flattening of an arc to a few thousand points
+DXF_COORD_MAX_MM = 1e5
+#: points of all the flattened curves of one DXF (a 1.3 MB real drawing flattens to ~100 k)
+DXF_POINTS_MAX = 4_000_000
+#: peak memory of `propulsor check` (bytes of address space): the limits above keep it below; the
+#: whole output/ of the 13 parts needs ~1.1 GB resident
+CHECK_MEMORY_CEILING = 2048 * MIB

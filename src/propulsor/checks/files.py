@@ -13,19 +13,53 @@ For a folder (recursively) or one file:
 * manifest.json: every listed file exists with the recorded size and sha256,
   every file of the folder is listed, the recorded checks all passed.
 Returns {file path: [Check, ...]}, files in sorted order.
+
+Nothing is trusted: every file is read through checks.safe_read (regular files only, no symbolic
+link followed inside a folder, sizes bounded by policy.READ_LIMIT_BYTES) and vetted by
+checks.formats before a library parses it; whatever fails inside a file's check makes that file
+invalid with a one-line reason.  A FIFO, device, socket or symbolic link leading out of the folder
+is invalid without being opened.
 """
 
 from __future__ import annotations
 
+import io
 import json
+import os
+import unicodedata
 from pathlib import Path
 
 import numpy as np
 
-from ..policy import MESH_VOLUME_REL_TOL, STEP_VOLUME_REL_TOL
+from ..errors import EnvironmentFailure
+from ..policy import CHECK_MEMORY_CEILING, MESH_BOX_PAIRS_MAX, MESH_VOLUME_REL_TOL, STEP_VOLUME_REL_TOL
+from . import formats
 from .result import Check
+from .safe_read import Refused, opened, read_bytes, sha256_and_size, walk
 
 MANIFEST = "manifest.json"
+
+#: manifests parsed during one check, by (path, device, inode, size, mtime): each is read once
+_MANIFESTS: dict[tuple, object] = {}
+
+
+def load_manifest(path: Path):
+    """The parsed manifest at `path` (read through safe_read), or None when it is missing, not a
+    regular file, too large or malformed (its own check reports why)."""
+    try:
+        st = os.lstat(path)
+    except OSError:
+        return None
+    key = (str(path), st.st_dev, st.st_ino, st.st_size, st.st_mtime_ns)
+    if key not in _MANIFESTS:
+        try:
+            data = json.loads(read_bytes(path, "manifest").decode("utf-8"))
+        except (Refused, ValueError, RecursionError):
+            data = None
+        if len(_MANIFESTS) > 64:
+            _MANIFESTS.clear()
+        _MANIFESTS[key] = data
+    return _MANIFESTS[key]
 
 
 def _manifest_entry(file: Path) -> dict:
@@ -33,11 +67,8 @@ def _manifest_entry(file: Path) -> dict:
     or the manifest is malformed (the manifest's own check reports that)."""
     for folder in [file.parent, *file.parent.parents]:
         m = folder / MANIFEST
-        if m.is_file():
-            try:
-                data = json.loads(m.read_text(encoding="utf-8"))
-            except (OSError, ValueError):
-                return {}
+        if os.path.lexists(m):
+            data = load_manifest(m)
             if not isinstance(data, dict) or not isinstance(data.get("files"), list):
                 return {}
             rel = file.relative_to(folder).as_posix()
@@ -66,8 +97,12 @@ def check_step_file(path: Path) -> list[Check]:
 
     name = path.name
     try:
-        solids = read_step_solids(path)
-    except Exception as exc:  # noqa: BLE001 - any reader failure is a failed check
+        with opened(path, "step") as f:
+            try:
+                solids = read_step_solids(f.lib_path)
+            except Exception as exc:  # noqa: BLE001 - any reader failure is a failed check
+                raise Refused(str(exc).replace(f.lib_path, name)) from None
+    except Refused as exc:
         return [Check.flag(f"{name}: STEP parses", False, str(exc))]
     out = [Check.flag(f"{name}: STEP parses", True, "read and transferred by OCCT"),
            Check.at_least(f"{name}: solids", len(solids), 1, "", "one or more solids")]
@@ -88,8 +123,18 @@ def check_mesh_file(path: Path) -> list[Check]:
     from .mesh import mesh_checks
 
     name = path.name
+    kind = "3mf" if path.suffix.lower() == ".3mf" else "stl"
     try:
-        mesh = load_mesh(path)
+        data = read_bytes(path, kind)
+        if kind == "stl":
+            formats.stl_kind(data)
+        else:
+            formats.check_3mf_zip(data)
+    except Refused as exc:
+        return [Check.flag(f"{name}: loads", False, str(exc))]
+    try:
+        mesh = load_mesh(io.BytesIO(data), file_type=kind, max_pairs=MESH_BOX_PAIRS_MAX)
+        del data
         if len(mesh.faces) == 0:
             raise ValueError("no triangles")
     except Exception as exc:  # noqa: BLE001
@@ -103,16 +148,30 @@ def check_mesh_file(path: Path) -> list[Check]:
         expected_genus=entry.get("genus"),
         expected_bodies=entry.get("bodies"),
         volume_rel_tol=MESH_VOLUME_REL_TOL,
+        max_box_pairs=MESH_BOX_PAIRS_MAX,
     )
     return out
 
 
 def check_dxf_file(path: Path) -> list[Check]:
-    from ..export.dxf import CUT, polygon_area, read_dxf
+    import ezdxf
+
+    from ..export.dxf import CUT, dxf_summary, polygon_area
 
     name = path.name
     try:
-        info = read_dxf(path)
+        with opened(path, "dxf") as f:
+            doc = ezdxf.readfile(f.lib_path)
+    except Refused as exc:
+        return [Check.flag(f"{name}: DXF parses", False, str(exc))]
+    except Exception as exc:  # noqa: BLE001
+        return [Check.flag(f"{name}: DXF parses", False, f"{type(exc).__name__}: {exc}")]
+    try:
+        formats.check_dxf_doc(doc)
+    except Refused as exc:
+        return [Check.flag(f"{name}: DXF within bounds", False, str(exc))]
+    try:
+        info = dxf_summary(doc)
     except Exception as exc:  # noqa: BLE001
         return [Check.flag(f"{name}: DXF parses", False, f"{type(exc).__name__}: {exc}")]
     out = [Check.flag(f"{name}: DXF parses", True, f"DXF {info['version']}")]
@@ -134,7 +193,13 @@ def check_glb_file(path: Path) -> list[Check]:
 
     name = path.name
     try:
-        scene = trimesh.load(path, force="scene")
+        data = read_bytes(path, "glb")
+        formats.check_glb(data)
+    except Refused as exc:
+        return [Check.flag(f"{name}: loads", False, str(exc))]
+    try:
+        scene = trimesh.load(io.BytesIO(data), file_type="glb", force="scene")
+        del data
         nodes = sorted(scene.graph.nodes_geometry)
         if not nodes:
             raise ValueError("no mesh node")
@@ -142,24 +207,34 @@ def check_glb_file(path: Path) -> list[Check]:
         return [Check.flag(f"{name}: loads", False, f"{type(exc).__name__}: {exc}")]
     out = [Check.flag(f"{name}: loads", True, f"{len(nodes)} mesh nodes")]
     model = {}
-    m = path.parent / MANIFEST
+    data = load_manifest(path.parent / MANIFEST)
     try:
-        media = json.loads(m.read_text(encoding="utf-8")).get("media", {}) if m.is_file() else {}
+        media = data.get("media", {}) if isinstance(data, dict) else {}
         model = next((e for e in media.get("models", []) if isinstance(e, dict) and e.get("path") == name), {})
-    except (OSError, ValueError, AttributeError):
+    except (AttributeError, TypeError):
         model = {}
     if model.get("components"):
         out.append(Check.equals(f"{name}: nodes are the assembly's components", nodes, sorted(model["components"]), "",
                                 "one named node per component of the assembly STEP"))
-    step = path.parent / str(model.get("step", ""))
-    if model.get("step") and step.is_file():
+    step_name = model.get("step")
+    if isinstance(step_name, str) and step_name and (Path(step_name).name != step_name or step_name == ".."):
+        return out + [Check.flag(f"{name}: assembly STEP in the folder", False,
+                                 f"the manifest names {step_name!r}, not a file beside {name}")]
+    step = path.parent / str(step_name or "")
+    if step_name and os.path.lexists(step):
         from ..export.step import read_step, step_instance_names
         from ..solids.kernel import bounding_box
 
-        out.append(Check.equals(f"{name}: nodes are the STEP's components", nodes, sorted(step_instance_names(step)),
+        try:
+            with opened(step, "step") as f:
+                names = sorted(step_instance_names(f.lib_path))
+                shape = read_step(f.lib_path)
+        except Refused as exc:
+            return out + [Check.flag(f"{name}: assembly STEP readable", False, f"{step.name} {exc}")]
+        out.append(Check.equals(f"{name}: nodes are the STEP's components", nodes, names,
                                 "", f"the component occurrences of {step.name}"))
 
-        lo, hi = bounding_box(read_step(step))
+        lo, hi = bounding_box(shape)
         want = np.sort(np.asarray(hi, float) - np.asarray(lo, float)) * 1e-3
         got = np.sort(np.asarray(scene.extents, float))
         out.append(Check.at_most(f"{name}: extent vs the STEP in metres", float(np.max(np.abs(got - want))), 1e-4, "m",
@@ -190,34 +265,60 @@ def _manifest_structure(data, folder: Path) -> tuple[list[dict], list[str]]:
     return entries, problems
 
 
-def check_manifest_file(path: Path) -> list[Check]:
-    from ..export.manifest import file_entries, sha256_of
+def _listed_file(p: Path, entry: dict, hashes: dict) -> str | None:
+    """What is wrong with one listed file ('missing', 'size', 'sha256' or a reason), None when it is as
+    recorded.  Hashes are taken once per path."""
+    size = entry.get("bytes")
+    size = size if isinstance(size, int) and not isinstance(size, bool) else None
+    if p not in hashes:
+        try:
+            hashes[p] = sha256_and_size(p, size)
+        except Refused as exc:
+            hashes[p] = ("missing" if str(exc) == "no such file" else str(exc), -1)
+    digest, got = hashes[p]
+    if got < 0:
+        return digest
+    if size is None or got != size:
+        return "size"
+    return None if digest == entry.get("sha256") else "sha256"
 
+
+def check_manifest_file(path: Path) -> list[Check]:
+    """The manifest parses, and the folder holds exactly the files it lists, each with the recorded
+    size and sha256 (a missing, changed or unreadable listed file makes the folder invalid)."""
     name = path.name
     folder = path.parent
     try:
-        data = json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, ValueError) as exc:
-        return [Check.flag(f"{name}: parses", False, f"{type(exc).__name__}: {exc}")]
+        data = json.loads(read_bytes(path, "manifest").decode("utf-8"))
+    except (Refused, ValueError, RecursionError) as exc:
+        return [Check.flag(f"{name}: parses", False, str(exc) if isinstance(exc, Refused)
+                           else f"{type(exc).__name__}: {exc}")]
     files, problems = _manifest_structure(data, folder)
     if problems:
         return [Check.flag(f"{name}: parses", False, "; ".join(problems))]
     out = [Check.flag(f"{name}: parses", True, f"{len(files)} files listed")]
-    missing, wrong_size, wrong_hash = [], [], []
+    missing, wrong_size, wrong_hash, unreadable = [], [], [], []
+    hashes: dict = {}
     for e in files:
-        p = folder / e["path"]
-        if not p.is_file():
+        what = _listed_file(folder / e["path"], e, hashes)
+        if what == "missing":
             missing.append(e["path"])
-            continue
-        if p.stat().st_size != e.get("bytes"):
+        elif what == "size":  # another size is another hash: both are reported
             wrong_size.append(e["path"])
-        if sha256_of(p) != e.get("sha256"):
             wrong_hash.append(e["path"])
+        elif what == "sha256":
+            wrong_hash.append(e["path"])
+        elif what is not None:
+            unreadable.append(f"{e['path']} ({what})")
     out.append(Check.equals(f"{name}: listed files missing", len(missing), 0, "", "missing: " + ", ".join(missing) if missing else "all listed files exist"))
+    out.append(Check.equals(f"{name}: listed files unreadable", len(unreadable), 0, "",
+                            ", ".join(unreadable) or "all listed files are regular files within the limit"))
     out.append(Check.equals(f"{name}: size mismatches", len(wrong_size), 0, "", ", ".join(wrong_size) or "sizes as recorded"))
     out.append(Check.equals(f"{name}: sha256 mismatches", len(wrong_hash), 0, "", ", ".join(wrong_hash) or "hashes as recorded"))
     listed = {e["path"] for e in files}
-    unlisted = [e["path"] for e in file_entries(folder) if e["path"] not in listed]
+    present, _ = walk(folder)
+    unlisted = [rel for rel in (q.relative_to(folder).as_posix() for q in present)
+                if rel != MANIFEST and rel not in listed]
     out.append(Check.equals(f"{name}: unlisted files", len(unlisted), 0, "", ", ".join(unlisted) or "every file listed"))
     documented = {f for f in data.get("expected_failures", []) if isinstance(f, str)}
     failed = [c.get("name") if isinstance(c, dict) else repr(c) for c in data["checks"]
@@ -241,32 +342,69 @@ CHECKERS = {
 }
 
 
+def _checker(name: str):
+    return check_manifest_file if name == MANIFEST else CHECKERS.get(Path(name).suffix.lower())
+
+
 def check_file(path: str | Path) -> list[Check]:
-    """Checks of one file (empty list for formats without checks).  Never raises: a checker that
-    fails on a malformed file makes that file invalid, with the reason."""
+    """Checks of one file (empty list for formats without checks).  Never raises but
+    EnvironmentFailure: a checker that fails on a malformed file makes that file invalid, with the
+    reason."""
     p = Path(path)
-    fn = check_manifest_file if p.name == MANIFEST else CHECKERS.get(p.suffix.lower())
+    fn = _checker(p.name)
     if fn is None:
         return []
     try:
         return fn(p)
+    except EnvironmentFailure:
+        raise
+    except Refused as exc:
+        return [Check.flag(f"{p.name}: readable", False, str(exc))]
+    except MemoryError:
+        return [Check.flag(f"{p.name}: readable", False, f"out of memory: checking it needs more than "
+                           f"the ceiling of {CHECK_MEMORY_CEILING >> 20} MiB")]
     except Exception as exc:  # noqa: BLE001 - whatever breaks on a malformed file is a failed check
         return [Check.flag(f"{p.name}: readable", False, f"{type(exc).__name__}: {exc}")]
 
 
 def check_path(path: str | Path) -> dict[str, list[Check]]:
     """Check a file or every checkable file under a folder: {path: checks}; {} when there is
-    nothing to check (no STEP, STL, 3MF, DXF or manifest)."""
+    nothing to check (no STEP, STL, 3MF, DXF or manifest).  Symbolic links inside a folder are not
+    followed (one leading out of it is invalid), FIFOs, devices and sockets are invalid unopened;
+    the path given itself is followed when it is a symbolic link.  Raises EnvironmentFailure when
+    the machine refuses to list or read."""
     p = Path(path)
-    if not p.exists():
+    _MANIFESTS.clear()
+    if not os.path.lexists(p):
         return {str(p): [Check.flag(f"{p}: exists", False, "no such file or folder")]}
-    files = [p] if p.is_file() else sorted(q for q in p.rglob("*") if q.is_file())
     out: dict[str, list[Check]] = {}
+    if not p.is_dir():
+        if _checker(p.name) is not None:
+            out[str(p)] = check_file(Path(os.path.realpath(p)))
+        return out
+    files, bad = walk(p)
     for f in files:
         cks = check_file(f)
         if cks:
             out[str(f)] = cks
-    return out
+    for f, why in bad.items():
+        out[str(f)] = [Check.flag(f"{f.name}: regular file in the folder", False, why)]
+    return dict(sorted(out.items()))
+
+
+def _escaped(ch: str) -> bool:
+    cat = unicodedata.category(ch)
+    return cat[0] == "C" or cat in ("Zl", "Zp")
+
+
+def one_line(text) -> str:
+    """`text` with control, format and line-separator characters escaped (file names and manifest
+    text are data: they never start a line of their own nor move the cursor)."""
+    s = str(text)
+    if not any(_escaped(ch) for ch in s):
+        return s
+    return "".join((f"\\x{ord(ch):02x}" if ord(ch) < 0x100 else f"\\u{ord(ch):04x}" if ord(ch) < 0x10000
+                    else f"\\U{ord(ch):08x}") if _escaped(ch) else ch for ch in s)
 
 
 def summary(results: dict[str, list[Check]]) -> tuple[int, int]:
@@ -282,9 +420,9 @@ def format_results(results: dict[str, list[Check]], verbose: bool = False) -> st
     lines = []
     for path, cks in results.items():
         bad = [c for c in cks if not c.passed]
-        lines.append(f"{'FAIL' if bad else 'PASS'} {path} ({len(cks)} checks)")
+        lines.append(f"{'FAIL' if bad else 'PASS'} {one_line(path)} ({len(cks)} checks)")
         for c in cks if verbose else bad:
-            lines.append(f"    {c}")
+            lines.append(f"    {one_line(c)}")
     n, failed = summary(results)
     lines.append(f"{len(results)} files, {n} checks, {failed} failed")
     return "\n".join(lines)

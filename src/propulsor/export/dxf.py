@@ -11,6 +11,7 @@ creation / update dates and GUIDs are written as fixed values.
 from __future__ import annotations
 
 import math
+from itertools import islice
 from pathlib import Path
 
 import ezdxf
@@ -18,7 +19,7 @@ import numpy as np
 from ezdxf import path as dxfpath
 
 from ..geometry.profile import Arc, Line, Loop, Profile, Spline
-from ..policy import CHORD_TOL_MM, POINT_TOL_MM
+from ..policy import CHORD_TOL_MM, DXF_POINTS_MAX, POINT_TOL_MM
 from ..write_root import prepare
 
 CUT = "CUT"
@@ -183,7 +184,9 @@ def _entity_points(e, chord_tol: float) -> np.ndarray:
     if e.dxftype() == "LWPOLYLINE":
         return _lwpolyline_points(e, chord_tol)
     p = dxfpath.make_path(e)
-    pts = np.array([(v.x, v.y) for v in p.flattening(chord_tol, segments=4)], float)
+    pts = np.array([(v.x, v.y) for v in islice(p.flattening(chord_tol, segments=4), DXF_POINTS_MAX + 1)], float)
+    if len(pts) > DXF_POINTS_MAX:
+        raise ValueError(f"{e.dxftype()} flattens to more than {DXF_POINTS_MAX} points")
     return pts
 
 
@@ -205,7 +208,11 @@ def _is_closed(e) -> bool:
 def read_dxf(path: str | Path, chord_tol: float = CHORD_TOL_MM) -> dict:
     """Summary of a DXF: units, and per layer the closed loops (point arrays,
     last point not repeated) and the entities that are not closed loops."""
-    doc = ezdxf.readfile(str(path))
+    return dxf_summary(ezdxf.readfile(str(path)), chord_tol)
+
+
+def dxf_summary(doc, chord_tol: float = CHORD_TOL_MM) -> dict:
+    """:func:`read_dxf` of a document already read (ezdxf)."""
     layers: dict[str, dict] = {}
     for e in doc.modelspace():
         lay = layers.setdefault(e.dxf.layer, {"loops": [], "open": []})

@@ -122,9 +122,12 @@ def write_3mf_objects(objects, path: str | Path) -> Path:
     return path
 
 
-def load_mesh(path: str | Path) -> trimesh.Trimesh:
-    """Load STL / 3MF into one Trimesh with merged vertices (no repair)."""
-    path = Path(path)
-    loaded = trimesh.load(str(path), force="mesh", process=False)
-    v, f = merge_close_vertices(np.asarray(loaded.vertices), np.asarray(loaded.faces), MERGE_TOL_MM)
+def load_mesh(path: str | Path, file_type: str | None = None, max_pairs: int | None = None) -> trimesh.Trimesh:
+    """Load STL / 3MF into one Trimesh with merged vertices (no repair); `path` may be a binary file
+    object when `file_type` ('stl', '3mf') is given; max_pairs: see merge_close_vertices."""
+    if file_type is None:
+        loaded = trimesh.load(str(Path(path)), force="mesh", process=False)
+    else:
+        loaded = trimesh.load(path, file_type=file_type, force="mesh", process=False)
+    v, f = merge_close_vertices(np.asarray(loaded.vertices), np.asarray(loaded.faces), MERGE_TOL_MM, max_pairs)
     return trimesh.Trimesh(vertices=v, faces=f, process=False, validate=False)

@@ -32,21 +32,33 @@ __all__ = ["MERGE_TOL_MM", "merge_close_vertices", "mesh_shape", "triangulate"]
 MERGE_TOL_MM = 1e-6
 
 
-def merge_close_vertices(vertices: np.ndarray, faces: np.ndarray, tol: float = MERGE_TOL_MM):
+def merge_close_vertices(vertices: np.ndarray, faces: np.ndarray, tol: float = MERGE_TOL_MM,
+                         max_pairs: int | None = None):
     """Merge vertices closer than `tol` (transitively); drop faces that collapse.
 
     Returns (vertices, faces) with vertices in order of first appearance so the
-    result does not depend on hashing.
+    result does not depend on hashing.  Equal vertices are merged first (a stack of equal
+    vertices costs no pairs); with `max_pairs`, more close pairs of distinct points than that
+    raise ValueError before they are listed.
     """
     v = np.asarray(vertices, float)
     f = np.asarray(faces, np.int64)
     n = len(v)
-    pairs = cKDTree(v).query_pairs(tol, output_type="ndarray")
-    if len(pairs):
-        g = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n))
-        _, label = connected_components(g, directed=False)
+    if n:
+        u, inv = np.unique(v, axis=0, return_inverse=True)
+        inv = inv.reshape(-1)
     else:
-        label = np.arange(n)
+        u, inv = v, np.arange(0)
+    tree = cKDTree(u)
+    if max_pairs is not None and len(u) and (int(tree.count_neighbors(tree, tol)) - len(u)) // 2 > max_pairs:
+        raise ValueError(f"more than {max_pairs} pairs of vertices closer than {tol} mm")
+    pairs = tree.query_pairs(tol, output_type="ndarray")
+    if len(pairs):
+        g = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(len(u), len(u)))
+        _, label = connected_components(g, directed=False)
+        label = label[inv]
+    else:
+        label = inv
     # representative = first vertex of each component, in index order
     _, first = np.unique(label, return_index=True)
     order = np.argsort(first)
