@@ -200,7 +200,7 @@ POLYSECTOR_PROOF_CHORD_TOL_MM = 1e-4
 POLYSECTOR_PROOF_CHORD_TOL_CONJUGATE_MM = 3e-5
 #: eq. 7's largest |Δi| below which a position counts as conjugate (the finer chord is used)
 POLYSECTOR_CONJUGATE_DI = 1e-4
-#: ε_s measured on the outlines must match eq. 4 within this (issue 11)
+#: ε_s measured on the outlines must match eq. 4 within this
 POLYSECTOR_EPS_S_MATCH = 0.02
 
 # --- non-circular pair: law search ---------------------------------------------------------------
