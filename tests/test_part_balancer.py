@@ -12,10 +12,10 @@ DXF), not the code that wrote it.  What is accepted:
 
 from __future__ import annotations
 
-import re
 import csv
 import json
 import math
+import re
 from pathlib import Path
 
 import numpy as np

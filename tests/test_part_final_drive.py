@@ -4,10 +4,10 @@ command line's contract for bad input (exit 2, one line, nothing written)."""
 
 from __future__ import annotations
 
-import re
 import csv
 import json
 import math
+import re
 import shutil
 from pathlib import Path
 
