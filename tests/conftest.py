@@ -100,3 +100,46 @@ def assert_animations():
         return entries
 
     return check
+
+
+def _derived_paths(derived: dict):
+    """(path, keys) of every derived value: ``name``, ``name.key`` in a dict, ``name[].key`` in the dicts
+    of a list (keys: the names on the way, outermost first)."""
+    def walk(path, keys, v):
+        yield path, keys
+        if isinstance(v, dict):
+            for k, x in v.items():
+                yield from walk(f"{path}.{k}", keys + [k], x)
+        elif isinstance(v, list) and v and all(isinstance(x, dict) for x in v):
+            for k in dict.fromkeys(k for x in v for k in x):
+                yield from walk(f"{path}[].{k}", keys + [k], next(x[k] for x in v if k in x))
+
+    for name, value in derived.items():
+        yield from walk(name, [name], value)
+
+
+@pytest.fixture(scope="session")
+def assert_explained():
+    """assert_explained(folder): every derived value of the build's manifest has a glossary entry with a
+    meaning and a unit that agrees with its name's suffix (a name without one: no unit a suffix could
+    name); the report's derived table shows each top-level value's unit and meaning."""
+    from propulsor.export.units import SUFFIX_UNITS, unit_of_path
+
+    def check(folder) -> None:
+        m = json.loads((folder / "manifest.json").read_text())
+        glossary = m["glossary"]
+        report = (folder / "report.md").read_text()
+        for path, keys in _derived_paths(m["derived"]):
+            assert path in glossary, path
+            unit, meaning = glossary[path]["unit"], glossary[path]["meaning"]
+            assert meaning.strip(), path
+            named = unit_of_path(keys)
+            assert unit == named if named else unit not in SUFFIX_UNITS.values(), (path, unit, named)
+            if len(keys) == 1:
+                from propulsor.export.report import md_text
+
+                row = [r for r in report.splitlines() if r.startswith(f"| {path} | ")]
+                assert row and f"| {unit} |" in row[-1] and md_text(meaning.split(" seed ")[0])[:20] in row[-1], path
+        assert any(c["name"] == "report: every derived value explained" and c["passed"] for c in m["checks"])
+
+    return check

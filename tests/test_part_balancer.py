@@ -15,6 +15,7 @@ from __future__ import annotations
 import csv
 import json
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -328,7 +329,7 @@ def test_damper_heat_table_plot_and_values(out, manifest):
     assert float(row["steady_rise_K"]) == pytest.approx(r.mean_power / cooling_coefficient(st, r.V), rel=1e-9)
     steady = [float(x["steady_rise_K"]) for x in rows]
     assert d["damper_heat_max_steady_rise_K"] == pytest.approx(max(steady))
-    assert "Damper heat (seed 004 ch. 6)" in (out / "report.md").read_text()
+    assert re.search(r"Damper heat \(\[\d\] ch. 6\)", (out / "report.md").read_text())  # seed 004, cited
 
 
 def test_travel_animation_at_the_sweeps_poses(out, manifest, assert_animations):
@@ -342,3 +343,7 @@ def test_travel_animation_at_the_sweeps_poses(out, manifest, assert_animations):
     beta = [float(r["beta_deg"]) for r in table(out, "anim_travel")]
     assert beta[0] == pytest.approx(d["beta0_deg"]) and max(beta) == pytest.approx(d["beta_m_deg"])
     assert beta[-1] < beta[-2]  # and back down
+
+
+def test_every_derived_value_has_a_unit_and_a_meaning(out, assert_explained):
+    assert_explained(out)

@@ -368,3 +368,7 @@ def test_walking_animation_at_the_proofs_poses(built, assert_animations):
                 d["neighbour_clearance_min_mm"])
     assert 0 < e["least_clearance_mm"] <= named + 1e-12
     assert e["least_clearance_mm"] == pytest.approx(min(float(r[4]) for r in rows), abs=1e-12)
+
+
+def test_every_derived_value_has_a_unit_and_a_meaning(built, assert_explained):
+    assert_explained(built[1])

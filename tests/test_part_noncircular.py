@@ -539,3 +539,8 @@ def test_pair_animation_at_the_proofs_phases(which, request, assert_animations):
         assert e["least_clearance_mm"] is None and m["derived"]["jam_phases"] == len(tr)
     else:
         assert e["least_clearance_mm"] == pytest.approx(least, abs=1e-12)
+
+
+@pytest.mark.parametrize("which", ["seed002", "seed000", "table002"])
+def test_every_derived_value_has_a_unit_and_a_meaning(request, which, assert_explained):
+    assert_explained(request.getfixturevalue(which))

@@ -175,3 +175,7 @@ def test_rolling_animation(out, manifest, assert_animations):
         angles = [float(r["wheel_angle_deg"]) for r in csv.DictReader(fh)]
     assert np.allclose(angles, np.arange(36) * 10.0)
     assert "anim/rolling.gif" in (out / "report.md").read_text()
+
+
+def test_every_derived_value_has_a_unit_and_a_meaning(out, assert_explained):
+    assert_explained(out)

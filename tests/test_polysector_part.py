@@ -216,3 +216,7 @@ def test_position_animations_at_the_proofs_poses(built, assert_animations):
         pos = m["derived"]["positions"][k - 1]
         assert len(rows) == pos["proof_steps_per_period"] == e["frames"]  # every step of the period
         assert e["least_clearance_mm"] == pytest.approx(min(float(r["backlash_mm"]) for r in rows), abs=1e-12)
+
+
+def test_every_derived_value_has_a_unit_and_a_meaning(built, assert_explained):
+    assert_explained(built)

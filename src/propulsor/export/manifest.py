@@ -1,6 +1,7 @@
 """manifest.json: what a part folder holds and how it was made (docs/architecture.md, "The data flow of one build").
 
-Keys: part, inputs, derived, checks (list of {name, passed, value, limit, unit,
+Keys: part, inputs, derived, glossary (the unit and meaning of every derived value, by path:
+``name``, ``name.key`` in a dict, ``name[].key`` in the dicts of a list), checks (list of {name, passed, value, limit, unit,
 message}), files (every file in the folder but the manifest itself: {path,
 format, bytes, sha256}, sorted by path), versions.  No time stamps; keys sorted;
 numpy values converted; non-finite floats written as strings ('nan', 'inf').
@@ -120,14 +121,15 @@ def library_versions() -> dict:
 
 def write_manifest(folder: str | Path, part: str, inputs, derived, checks, versions: dict | None = None,
                    file_info: dict | None = None, expected_failures=(), media: dict | None = None,
-                   title: str | None = None) -> Path:
+                   title: str | None = None, glossary: dict | None = None) -> Path:
     """Write folder/manifest.json; file_info adds keys to file entries by
     relative path (e.g. {'gear.step': {'volume_mm3': ...}}); versions default
     to library_versions().  expected_failures: names of checks the part file
     documents as failing (they are recorded, and do not make `passed` false).  media: what the
     gallery shows ({kind: [entry, ...]}, e.g. 'animations', 'models', 'pictures'; each entry a dict
     with at least 'path'), written under the key ``media`` when not empty.  title: the part file's
-    ``[meta] title`` (the gallery's heading), written when given."""
+    ``[meta] title`` (the gallery's heading), written when given.  glossary: {path: {"unit", "meaning"}}
+    of every derived value (export.glossary), written when given."""
     folder = Path(folder)
     prepare(folder / MANIFEST)
     files = file_entries(folder)
@@ -148,6 +150,8 @@ def write_manifest(folder: str | Path, part: str, inputs, derived, checks, versi
     }
     if title is not None:
         data["title"] = str(title)
+    if glossary is not None:
+        data["glossary"] = jsonable(glossary)
     if media:
         data["media"] = jsonable({k: v for k, v in media.items() if v})
     path = folder / MANIFEST

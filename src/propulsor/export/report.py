@@ -1,7 +1,9 @@
 """report.md: the human-readable account of one built part.
 
-What was built, the inputs, every derived value with its unit, every check with
-value, limit and PASS/FAIL, the tables and figures, notes, and one summary line.
+A summary first (PASSED / FAILED, the key derived values with their units, the failed checks), then
+what was built, the inputs, every derived value with its unit and meaning, every check with value,
+limit and PASS/FAIL, the tables, figures and views, the notes, and the References: every source the
+report names, numbered in the order it first names them (:mod:`.references`).
 The exporter only formats: values arrive computed.  The title (and the part file's notes, through
 :func:`md_text`) are text, never Markdown or HTML: a ``<script>`` or ``[x](javascript:...)`` in them
 reads as written.
@@ -16,18 +18,7 @@ from pathlib import Path
 from ..write_root import prepare
 
 
-#: name suffix -> unit, for the report's derived-value table (names carry their units, e.g. a_w_mm)
-_SUFFIX_UNITS = (("_mm3", "mm³"), ("_mm2", "mm²"), ("_mm", "mm"), ("_deg", "deg"), ("_rad", "rad"),
-                 ("_mpa", "MPa"), ("_MPa", "MPa"), ("_kN", "kN"), ("_N", "N"), ("_Nm", "N·m"), ("_kg", "kg"),
-                 ("_s", "s"), ("_m", "m"), ("_K", "K"), ("_C", "°C"), ("_pct", "%"))
-
-
-def unit_from_name(name: str) -> str:
-    """The unit a quantity's name ends in ('' when it names none)."""
-    for suffix, unit in _SUFFIX_UNITS:
-        if name.endswith(suffix):
-            return unit
-    return ""
+from .units import unit_from_name  # noqa: F401  (the report's units come from the names)
 
 
 _MD_ESCAPES = {"&": "&amp;", "<": "&lt;", ">": "&gt;"}
@@ -120,6 +111,7 @@ def write_report(
     part: str = "",
     plots=(),
     views=(),
+    key_values=(),
 ) -> Path:
     """Write a Markdown report.
 
@@ -127,8 +119,12 @@ def write_report(
     checks: list of Check (or dicts with the same keys).  tables / figures
     (alias plots): relative paths or (relative path, caption) pairs.  notes:
     strings.  part: the part type, printed under the title.  views: the isometric pictures
-    of the solids and assemblies (relative paths or (path, caption) pairs).
+    of the solids and assemblies (relative paths or (path, caption) pairs).  key_values: names of
+    derived values the summary shows (those present, in this order).
     """
+    from .references import Citer
+
+    cite = Citer()
     inputs = inputs or {}
     derived = derived or {}
     tables = _refs(tables)
@@ -138,35 +134,55 @@ def write_report(
     prepare(path)
     cks = [c.to_dict() if hasattr(c, "to_dict") else dict(c) for c in checks]
     n_fail = sum(not c["passed"] for c in cks)
-    lines = [f"# {md_text(title)}", ""]
+    lines = [f"# {cite(md_text(title))}", ""]
     if part:
         lines += [f"Part type: `{part}`", ""]
+    lines += ["## Summary", ""]
+    if n_fail:
+        lines += [f"**FAILED: {n_fail} of {len(cks)} checks failed.**", ""]
+    else:
+        lines += [f"**PASSED: all {len(cks)} checks passed.**", ""]
+    derived_rows = [tuple(cite(c) for c in r) for r in _value_rows(derived)]
+    by_name = {r[0]: r for r in derived_rows}
+    key_rows = [by_name[k] for k in key_values if k in by_name]
+    if key_rows:
+        lines += ["Key values:", ""] + _table(["name", "value", "unit", "meaning"], key_rows) + [""]
+    failed = [c for c in cks if not c["passed"]]
+    if failed:
+        lines += ["Failed checks:", ""]
+        lines += [f"- {cite(_cell(c['name']))}: {_fmt(c['value'])} against the limit {_fmt(c['limit'])} "
+                  f"{c.get('unit', '')}".rstrip() + (f" ({cite(c['message'])})" if c.get("message") else "")
+                  for c in failed] + [""]
     if intro.strip():
-        lines += [intro.strip(), ""]
-    lines += ["## Inputs", ""] + _table(["name", "value", "unit", "meaning"], _value_rows(inputs)) + [""]
-    lines += ["## Derived values", ""] + _table(["name", "value", "unit", "meaning"], _value_rows(derived)) + [""]
+        lines += [cite(intro.strip()), ""]
+    input_rows = [tuple(cite(c) for c in r) for r in _value_rows(inputs)]
+    lines += ["## Inputs", ""] + _table(["name", "value", "unit", "meaning"], input_rows) + [""]
+    lines += ["## Derived values", ""] + _table(["name", "value", "unit", "meaning"], derived_rows) + [""]
     lines += ["## Checks", ""]
     rows = [
-        (c["name"], _fmt(c["value"]), _fmt(c["limit"]), c.get("unit", ""), "PASS" if c["passed"] else "**FAIL**", c.get("message", ""))
+        (cite(c["name"]), _fmt(c["value"]), _fmt(c["limit"]), c.get("unit", ""), "PASS" if c["passed"] else "**FAIL**",
+         cite(c.get("message", "")))
         for c in cks
     ]
     lines += _table(["check", "value", "limit", "unit", "result", "note"], rows) + [""]
     if tables:
-        lines += ["## Tables", ""] + [f"- [{p}]({p}): {cap}" for p, cap in tables] + [""]
+        lines += ["## Tables", ""] + [f"- [{p}]({p}): {cite(cap)}" for p, cap in tables] + [""]
     if figures:
         lines += ["## Figures", ""]
         for p, cap in figures:
+            cap = cite(cap)
             lines += [f"![{cap}]({p})", "", f"*{cap}*", ""]
     if views:
         lines += ["## Views", "", "Isometric pictures of every solid and assembly (3D models: the `.glb` files).", ""]
         for p, cap in views:
+            cap = cite(cap)
             lines += [f"![{cap}]({p})", "", f"*{cap}*", ""]
     if notes:
-        lines += ["## Notes", ""] + [f"- {n}" for n in notes] + [""]
-    if n_fail:
-        summary = f"**FAILED: {n_fail} of {len(cks)} checks failed.**"
-    else:
-        summary = f"**PASSED: all {len(cks)} checks passed.**"
-    lines += ["## Summary", "", summary, ""]
+        lines += ["## Notes", ""] + [f"- {cite(n)}" for n in notes] + [""]
+    refs = cite.references()
+    if refs:
+        lines += ["## References", ""]
+        for r in refs:
+            lines += [r, ""]
     path.write_text("\n".join(lines), encoding="utf-8")
     return path

@@ -1,5 +1,5 @@
 """The least hub-speed ripple of the walking-drive pair under generability: a search over the blend
-shape and the catalogue shaper (issue 10).
+shape and the catalogue shaper.
 
 Pure math (numpy/scipy).  The blend (``noncircular.SmoothedWalkingLaw`` with a free hand-over value
 u_h) has two shape parameters: its half-width delta and the value U_s = u_h at hand-over (the depth

@@ -208,7 +208,7 @@ class WalkingLaw:
         theta = np.asarray(theta, dtype=float)
         return invert_theta(self, theta, theta * (2 * math.pi) / (2 * math.pi * self.n), tol, 60)
 
-    # ---- the papers' reading without the wrap (Trap 1 illustration) ------------
+    # ---- the papers' reading without the wrap (why the law is wrapped per leg) ------------
     def theta_unwrapped(self, phi):
         """theta if cos 2phi were (wrongly) used over the whole turn (docs/architecture.md, «drive law»).
 

@@ -156,6 +156,27 @@ def part_type_names() -> list[str]:
     return sorted(_MODULES)
 
 
+def _glossary_module(name: str):
+    if name not in _MODULES:
+        return None
+    try:
+        return importlib.import_module(f".{_MODULES[name]}.glossary", __name__)
+    except ModuleNotFoundError:
+        return None
+
+
+def glossary_of(name: str) -> dict:
+    """The part type's glossary of derived values ({name: (unit, meaning)}, see export.glossary); {} if none."""
+    mod = _glossary_module(name)
+    return dict(getattr(mod, "GLOSSARY", {})) if mod else {}
+
+
+def key_values_of(name: str) -> list[str]:
+    """The derived values a report's summary shows for the part type."""
+    mod = _glossary_module(name)
+    return list(getattr(mod, "KEY_VALUES", ())) if mod else []
+
+
 def get_part_type(name: str) -> PartType:
     _known(name)
     mod = importlib.import_module(f".{_MODULES[name]}", __name__)

@@ -1,4 +1,4 @@
-"""Animations of a part's proven motion, handed to the writer (issue 14, "See it move").
+"""Animations of a part's proven motion, handed to the writer.
 
 Each part type gathers, in its own ``animation.py``, the poses its proof evaluated (every k-th, always
 with the pose of least clearance or backlash) and its outlines placed by them, as

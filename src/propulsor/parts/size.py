@@ -14,7 +14,7 @@ non-circular pair (seed 002) 25.2 → 26.5 with the proof phases doubled, → 42
 cam mover (exponential law) 18.7 → 32.7 with 4 × the sweep steps; balancer 17.1 → 29.6 with 4 × the
 travel steps (2026-11-25: damper heat exact, the drill point's mesh measured, not halved three times; before:
 92.7 → 161.3, and → 143.5 with the sweep chord a quarter, whose exponent is kept); road wheel 17.8.
-The other models were calibrated before issue 13's speed-ups and now overestimate by a fifth to a third;
+The other models were calibrated before the later build speed-ups and now overestimate by a fifth to a third;
 the builds of several part files start the longest first by these estimates.
 """
 

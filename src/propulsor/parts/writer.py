@@ -28,6 +28,7 @@ from typing import Any
 import numpy as np
 
 from ..check import Check
+from ..export.glossary import manifest_glossary
 from ..export.report import md_text, unit_from_name  # noqa: F401  (unit_from_name: public here too)
 from ..parallel import fork_pool, inline, threads_ok
 from ..params import params_to_dict, read_part_meta
@@ -318,11 +319,15 @@ class OutputWriter:
         self._write_models()
         self.close()
 
+        self.add_checks([self.explained_check()])
         inputs = params_to_dict(self.params)
         notes = list(self.notes)
         report_inputs = {f.name: (inputs[f.name], f.metadata.get("unit", ""), f.metadata.get("doc", ""))
                          for f in dataclasses.fields(self.params)}
-        report_derived = {k: (v, unit_from_name(k)) for k, v in self.derived.items()}
+        explained = self.explained()
+        by_path = {e.path: e for e in explained}
+        report_derived = {k: (v, by_path[k].unit, by_path[k].meaning) if k in by_path else (v, unit_from_name(k), "")
+                          for k, v in self.derived.items()}
         expected = [c for c in self.checks if not c.passed and c.name in self.expected_failures]
         if expected:
             notes.append("Checks that fail as documented in the part file ([meta] expected_failures): "
@@ -334,13 +339,38 @@ class OutputWriter:
         views = [(e["path"], e["title"]) for e in self.media.get("pictures", [])]
         report = write_report(self.folder / self.report_name, title=self.title, part=self.part, intro=intro,
                               inputs=report_inputs, derived=report_derived, checks=self.checks, tables=self.tables,
-                              plots=self.plots, notes=notes, views=views)
+                              plots=self.plots, notes=notes, views=views, key_values=self.key_values())
         write_report_html(report)
         manifest = write_manifest(self.folder, part=self.part, inputs=inputs, derived=self.derived,
                                   checks=self.checks, expected_failures=self.expected_failures, media=self.media,
-                                  title=self.title)
+                                  title=self.title, glossary=manifest_glossary(explained))
         self.verify_written(manifest)
         return self.failures()
+
+    # -- what the derived values mean ----------------------------------------------------
+    def explained(self):
+        """(entries, missing): every derived value's path with its unit and meaning, from the part type's
+        glossary and :meth:`describe` (which wins), and the paths nobody explained."""
+        from ..export.glossary import Glossary, explain
+        from . import glossary_of
+
+        entries, self._unexplained = explain(self.derived, Glossary(glossary_of(self.part), described=self.described))
+        return entries
+
+    def explained_check(self) -> Check:
+        """Every derived value has a meaning (a value added without one fails the build)."""
+        self.explained()
+        missing = self._unexplained
+        return Check("report: every derived value explained", not missing, len(missing), 0, "",
+                     "every derived value has a unit and a meaning" if not missing else
+                     "no meaning (add it to the part type's glossary or describe() it): " + ", ".join(missing[:5])
+                     + (f" and {len(missing) - 5} more" if len(missing) > 5 else ""))
+
+    def key_values(self) -> list[str]:
+        """The derived values the report's summary shows."""
+        from . import key_values_of
+
+        return key_values_of(self.part)
 
     def verify_written(self, manifest: Path) -> None:
         """Every file the build meant to write is in the manifest it wrote (a file lost under the build,

@@ -1,5 +1,5 @@
 """The balancer with its road wheel through the travel β0 … β_m at the poses of the travel sweep, side
-view, against the hull and the neighbouring stations (issue 14).
+view, against the hull and the neighbouring stations.
 
 Poses: the sweep's angles β (:func:`.proofs.travel_sweep`, ``sweep_steps_per_deg``; β from the downward
 vertical, seed 004 eq. 5): the arm's outline turned about the torsion axis by β − 90°, the wheel on its

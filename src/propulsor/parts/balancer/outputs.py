@@ -42,7 +42,7 @@ def suspension_rows(m: BalancerModel) -> list:
         ("static travel", "f_st", "11", t.f_st / 1000, "m", T["f_st_m"], ""),
         ("full travel", "f_full", "11", t.f_full / 1000, "m", T["f_full_m"], ""),
         ("dynamic travel", "f_dyn", "12", t.f_dyn / 1000, "m", T["f_dyn_m"], ""),
-        ("elastic force at beta_m", "P(beta_m)", "13", t.P_m, "N", None, "SPEC §5: ≈ 94 kN"),
+        ("elastic force at beta_m", "P(beta_m)", "13", t.P_m, "N", None, "≈ 94 kN: three times the static wheel load"),
         ("torsion bar torque at beta_m", "M_T(beta_m)", "13", t.M_T_max / 1000, "N m", None, ""),
         ("specific potential energy (refined)", "lambda_ut", "16", t.lambda_ut / 1000, "m", T["lambda_ut_m"],
          "eq. 16 with d_T = 46 mm; with the unrounded d_T_dyn 0.8215 m"),

@@ -65,7 +65,7 @@ class BalancerParams(PartParams):
     d_rod_mm: float = param(40.0, "mm", "damper rod diameter", min=0.0,
                             max=500.0, why="past the rods of the largest dampers")
     # -- strength ----------------------------------------------------------------------------
-    yield_MPa: float = param(930.0, "MPa", "yield of 40ХН2МА after quench 850 °C and temper (seed §8.3)", min=100.0,
+    yield_MPa: float = param(930.0, "MPa", "yield of 40ХН2МА after quench 850 °C and temper (seed 004 §8.3)", min=100.0,
                              max=3000.0, why="past the strongest steels")
     safety: float = param(1.5, "", "required safety factor on yield (allowable = yield / safety)", min=1.0,
                           max=10.0, why="a safety factor past 10 is no design")
@@ -122,9 +122,9 @@ class BalancerParams(PartParams):
                           why="GOST 6033-80 tabulates fewer teeth")
     spline_length_mm: float = param(120.0, "mm", "spline engagement length l", min=5.0,
                                     max=1000.0, why="engagement past 2 D carries no more")
-    spline_n: float = param(1.4, "", "crushing safety n (GOST 21425; seed §4.3: 1.4)", min=1.0,
+    spline_n: float = param(1.4, "", "crushing safety n (GOST 21425; seed 004 §4.3: 1.4)", min=1.0,
                             max=10.0, why="a safety factor past 10 is no design")
-    spline_K_sum: float = param(3.71, "", "load concentration K_Σ (seed §4.3: 1 × 2.65 × 1.4)", min=1.0,
+    spline_K_sum: float = param(3.71, "", "load concentration K_Σ (seed 004 §4.3: 1 × 2.65 × 1.4)", min=1.0,
                                 max=20.0, why="past any tabulated load concentration")
     bolt_bore_d_mm: float = param(22.0, "mm", "torsion-bar retaining-bolt bore through the upper axle", min=2.0,
                                   max=500.0, why=_WHY_AXLE)

@@ -291,7 +291,7 @@ def socket_ear_pad_checks(m: BalancerModel, w, built: dict) -> None:
     F_stop = ([c_ for c_ in an.cases if c_.name == "stop"][0].loads[1].F_y) * -1.0
     pad_p = F_stop / (p.stop_pad_length_mm * p.arm_width_mm)
     w.add_checks([
-        Check.at_most("spline socket crushing (GOST 21425, seed §4.3)", sig_cr, cr_allow, "MPa",
+        Check.at_most("spline socket crushing (GOST 21425, seed 004 §4.3)", sig_cr, cr_allow, "MPa",
                       f"{sp.designation()}, l = {p.spline_length_mm:g} mm, T = M_T(β_m) = {t.M_T_max / 1e6:.3f} kN m; "
                       f"[σ] = {p.yield_MPa:g}/({p.spline_n:g} × {p.spline_K_sum:g})"),
         Check.at_least("socket wall torsion safety", p.yield_MPa / (math.sqrt(3) * tau_sock), p.safety, "",

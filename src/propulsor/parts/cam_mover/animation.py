@@ -1,4 +1,4 @@
-"""The cam mover walking at the poses of its motion proofs (issue 14).
+"""The cam mover walking at the poses of its motion proofs.
 
 Poses: the proof's carrier angles φ (``sweep_steps`` per turn, :func:`.proofs.motion_proofs`): the fixed
 cam with its channel, the carrier turned by φ, each leg j (with its roller and shoe) placed by

@@ -272,7 +272,7 @@ def plots_and_notes(dd: Plan, w, built: dict) -> None:
     plots(w, pl, built["law_table"], built["proofs"])
     w.add_note(
         "Seed 001 gives the method, not the numbers: the dimensions, loads, materials and limits are ours "
-        "(SPEC §4: R0 + r + C = 320 mm like the driving propulsor). The working wall of the channel is the "
+        "(the hub height R0 + r + C = 320 mm is that of the driving propulsor). The working wall of the channel is the "
         "roller envelope at exactly r from the designed roller-centre path (the springs and the ground load "
         "press the roller onto it, so the hub height is exact there); the outer guide wall is at "
         f"r + {c:g} mm. The law is used as K(|φ|) (even) unless symmetric_law = false. The return phase is "

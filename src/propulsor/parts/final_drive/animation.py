@@ -1,4 +1,4 @@
-"""The final drive over one carrier turn at the poses of its interference sweep (issue 14).
+"""The final drive over one carrier turn at the poses of its interference sweep.
 
 Poses: the sweep's carrier angles ψ (:func:`.proofs.carrier_sweep`, ``sweep_steps_per_deg``), the
 members placed by :func:`.proofs.member_poses`, the same placement the sweep used (seed 004 eq. 32):

@@ -1,5 +1,5 @@
 """The non-circular pair turning through one driven turn at the poses of its full-cycle proof
-(:mod:`.pair_proof`), with the ratio U and the hub speed v/ω traced beside it (issue 14).
+(:mod:`.pair_proof`), with the ratio U and the hub speed v/ω traced beside it.
 
 Poses: the proof's phases φ_k; the driven wheel (axis at the origin) at its running angle −φ_run
 (loaded flanks touching; at a jammed phase the position of least overlap), the driver (axis at

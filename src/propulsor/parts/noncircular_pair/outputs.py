@@ -151,9 +151,9 @@ def write_notes(w, d, pr, other, pr_other, other_note, p, mount):
     s = pr.summary()
     law = d.law
     w.add_note(
-        f"Law (seed 000 eqs. 1-15, periodic per leg, SPEC Trap 1): A = a - b + c = {law.A:g} mm, "
+        f"Law (seed 000 eqs. 1-15, wrapped to be periodic per leg): A = a - b + c = {law.A:g} mm, "
         f"u = n pi A / (A pi + 6 b) = {law.u:.6f}, n = {law.n}; constant hub speed v/omega = A/u = "
-        f"{law.hub_speed_ratio:.4f} mm/rad with the exact law.  Closure by true arc length (Trap 3): "
+        f"{law.hub_speed_ratio:.4f} mm/rad with the exact law.  Closure by true arc length (the pitch curves' lengths, not chords): "
         f"L = {d.L:.6f} mm, m = {d.m:.6f} mm, z {d.z}/{d.z_H}; the driver makes exactly n turns per driven turn "
         f"(closure error {d.closure_error:.2g} rad).")
     if d.method == "generated" and d.search is not None:
@@ -164,7 +164,7 @@ def write_notes(w, d, pr, other, pr_other, other_note, p, mount):
         r = d.ripple
     if d.method == "generated" and d.search is None:
         w.add_note(
-            f"Price of smoothing (SPEC Trap 2): the exact law has corners at leg hand-over (phi = 45 deg + k 90 deg); "
+            f"Price of smoothing: the exact law has corners at leg hand-over (phi = 45 deg + k 90 deg); "
             f"it is replaced there by an even degree-6 polynomial in the blend window of half-width "
             f"{d.smoothing_deg:.4f} deg ({sm.delta:.6f} rad), matching U, U', U'' at the window ends (C2) and the "
             f"window integral (closure exact).  It was chosen as the "
@@ -255,7 +255,7 @@ def _search_notes(w, d, p) -> None:
     table = sector_design_table(p)[0] if p.driven_teeth % 4 == 0 else None
     papers = f"; the papers' sector method (ideal teeth) {_pct(sector_hub_speed(table).ripple)}" if table is not None else ""
     w.add_note(
-        f"Law search (issue 10, gears/law_search.py): the blend at hand-over is an even degree-6 polynomial in the "
+        f"Law search (gears/law_search.py): the blend at hand-over is an even degree-6 polynomial in the "
         f"window of half-width delta with a free hand-over value U_s(phi_h) = u_h (the depth of the hub-speed dip), "
         f"C2 at the window ends; closure is kept exact by scaling U by (1 - eps) outside the windows instead of a "
         f"bump beside the dip.  Searched: delta on {len(set(q.delta for q in res.points))} generable half-widths of "

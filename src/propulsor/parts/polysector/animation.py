@@ -1,5 +1,5 @@
 """The composite wheel and the solid gear at each position, at the poses of the position's mesh proof
-(issue 14): one GIF per position, ``anim/position_<k>.gif``.
+: one GIF per position, ``anim/position_<k>.gif``.
 
 Poses: the proof's wheel angles φ over one sector period (:mod:`.mesh_proof`; the turn repeats the
 period: the sectors are one outline turned by exactly that angle and the gear advances whole pitches)

@@ -1,4 +1,4 @@
-"""The road wheel rolling through one revolution on flat ground (issue 14).
+"""The road wheel rolling through one revolution on flat ground.
 
 The wheel has no mechanism and no motion proof: the frames are 36 wheel angles 10° apart (one
 revolution; with the lightening holes spaced 360°/holes the web is seen to turn).  The tyre stands

@@ -1,0 +1,76 @@
+"""What the suspension balancer's derived values mean (export.glossary).  Equation numbers are those
+of seed 004 ch. 2 (suspension) and ch. 8 (balancer); β is the balancer's angle, f the wheel travel."""
+
+#: the derived values the report's summary shows
+KEY_VALUES = ("P_at_beta_m_N", "f_dyn_mm", "sigma_vM_max_built_MPa", "sigma_allow_MPa", "mass_balancer_kg",
+              "min_clearance_overall_mm", "damper_heat_max_steady_rise_K")
+
+GLOSSARY = {
+    # suspension calculation (seed 004 ch. 2)
+    "gamma_m_deg": ("deg", "largest twist γ_m of the torsion bar (eq. 7)"),
+    "gamma_st_deg": ("deg", "static twist γ_st of the torsion bar (eq. 8)"),
+    "beta0_deg": ("deg", "mounting angle β0 of the balancer, wheel hanging free (eq. 9)"),
+    "beta_m_deg": ("deg", "full-travel angle β_m of the balancer (eq. 10)"),
+    "f_st_mm": ("mm", "static wheel travel f_st (eq. 11)"),
+    "f_full_mm": ("mm", "full wheel travel f_full (eq. 11)"),
+    "f_dyn_mm": ("mm", "dynamic wheel travel f_dyn = f_full − f_st (eq. 12)"),
+    "P_at_beta_m_N": ("N", "elastic force at the wheel at full travel β_m (eq. 13)"),
+    "M_T_max_Nm": ("N·m", "torsion bar torque at full travel β_m (eq. 13)"),
+    "lambda_ut_mm": ("mm", "specific potential energy λ_ut of the suspension (eq. 16)"),
+    "c_prime_printed_lambda_N/m": ("N/m", "equal-energy stiffness c' with the λ printed in seed 004 (eq. 20/24)"),
+    "c_static_N/m": ("N/m", "stiffness at the wheel near the static travel (tangent of the characteristic)"),
+    "mu_mean_eq23_Ns/m": ("N·s/m", "mean damper coefficient at the wheel μ_mean (eq. 23)"),
+    "R_k_comp_max_N": ("N", "compression force limit of the damper at the wheel (eq. 27)"),
+    "L_a_mm": ("mm", "arm of the damper's ear about the balancer axis (eq. 28)"),
+    "R_a_comp_max_N": ("N", "damper rod force in compression (eq. 28)"),
+    "R_a_reb_max_N": ("N", "damper rod force in rebound (eq. 28)"),
+    "D_piston_mm": ("mm", "damper piston diameter at the largest pressure, full area (eq. 28)"),
+    "station_pitch_mm": ("mm", "spacing of the road-wheel stations along the hull"),
+    # geometry, masses, stresses (seed 004 ch. 8)
+    "<solid>_volume_mm3": ("mm³", "volume of the solid {solid} (exact, from its B-rep)"),
+    "mass_balancer_kg": ("kg", "mass of the balancer (steel)"),
+    "mass_wheel_kg": ("kg", "mass of the road wheel"),
+    "centre_of_mass_balancer_mm": ("mm", "centre of mass of the balancer (x, y, z)"),
+    "centre_of_mass_wheel_mm": ("mm", "centre of mass of the road wheel in the balancer's frame (x, y, z)"),
+    "mass_arm_prism_beam_model_kg": ("kg", "mass of the arm as the beam model's prisms see it"),
+    "com_arm_prism_station_mm": ("mm", "station of the arm's centre of mass along the beam model"),
+    "unsprung_balancer_plus_wheel_kg": ("kg", "unsprung mass: balancer and road wheel"),
+    "e_w_wheel_mid_plane_mm": ("mm", "axial offset of the wheel's mid-plane from the balancer's mid-plane"),
+    "eq5_ground_clearance_minus_track_mm": ("mm", "ground clearance less the track's thickness (eq. 5)"),
+    "fender_over_wheel_top_at_beta_m_mm": ("mm", "height of the fender over the wheel's top at full travel"),
+    "wheel_bottom_below_axis_at_beta0_mm": ("mm", "depth of the wheel's bottom below the balancer axis at β0"),
+    "stop_pad_face_at_beta_m_mm": ("mm", "point of the stop pad's face at full travel (x, y)"),
+    "stop_pad_normal_at_beta_max": ("", "unit normal of the stop pad's face at the largest travel (x, y)"),
+    "h_equal_strength_range_mm": ("mm", "least and largest height of the arm's equal-strength section"),
+    "K_t_spindle_bending": ("", "stress concentration factor K_t in bending at the spindle's shoulder (Peterson)"),
+    "K_t_upper_bending": ("", "stress concentration factor K_t in bending at the upper axle's shoulder (Peterson)"),
+    "K_t_upper_torsion": ("", "stress concentration factor K_t in torsion at the upper axle's shoulder (Peterson)"),
+    "sigma_allow_MPa": ("MPa", "allowable von Mises stress of the balancer: yield over the safety factor"),
+    "sigma_vM_max_built_MPa": ("MPa", "largest von Mises stress in the built balancer per load case"),
+    "sigma_vM_constant_ref_MPa": ("MPa", "largest von Mises stress of a constant-section reference arm per load case"),
+    "sigma_vM_body_elastic_built_MPa": ("MPa", "von Mises stress through the arm's body, elastic load case"),
+    "transition_peak_max_MPa": ("MPa", "largest stress peak at the arm's section transitions"),
+    # travel sweep
+    "sweep_steps": ("", "balancer angles of the travel sweep from β0 to β_m"),
+    "min_clearance_<what>_mm": ("mm", "least clearance over the travel sweep: {what}"),
+    "min_clearance_<what>_where": ("", "where the least clearance ({what}) is: angle, bodies and point"),
+    # damper heat (seed 004 ch. 6)
+    "damper_heat_m1_unsprung_kg": ("kg", "unsprung mass m1 of the damper heat model"),
+    "damper_heat_b2_Ns_per_m": ("N·s/m", "damper coefficient b2 at the wheel of the damper heat model"),
+    "damper_heat_max_steady_rise_K": ("K", "largest steady temperature rise of the damper over the roads of seed 004"),
+    "damper_heat_max_steady_rise_road": ("", "the road of the largest steady rise"),
+    "damper_heat_max_steady_rise_speed_kmh": ("km/h", "the speed of the largest steady rise"),
+    "damper_heat_rise_at_<V>mps_L<L>_K": ("K", "steady temperature rise of the damper at {V} m/s on the road of "
+                                               "wavelength {L} m (seed 004 Table 11)"),
+    # print kit
+    "print_R_b_mm": ("mm", "balancer arm length of the printed model"),
+    "print_travel_deg": ("deg", "travel of the printed balancer (β0, β_m)"),
+    "print_arm_bore_d_mm": ("mm", "bore of the printed arm on its journal"),
+    "print_spindle_d_mm": ("mm", "diameter of the printed spindle"),
+    "print_wheel_bore_d_mm": ("mm", "bore of the printed wheel"),
+    "print_post_centres_mm": ("mm", "centres of the printed stop posts (x, y)"),
+    "print_arm_post_clearance_min_mm": ("mm", "least clearance of the printed arm to the stop posts over its travel"),
+    "print_arm_post_clearance_ends_mm": ("mm", "clearance of the printed arm to the stop posts at β0 and β_m"),
+    "print_arm_post_clearance_inside_min_mm": ("mm", "least clearance of the printed arm to the posts inside the travel"),
+    "wheel_slabs": ("", "slabs the printed wheel is cut into (glued in order)"),
+}

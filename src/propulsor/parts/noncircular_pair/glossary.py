@@ -1,0 +1,80 @@
+"""What the noncircular pair's derived values mean (export.glossary)."""
+
+#: the derived values the report's summary shows
+KEY_VALUES = ("method", "center_distance_mm", "driver_teeth", "driven_teeth", "speed_ripple", "te_pp_rad",
+              "jam_phases", "backlash_min_mm")
+
+_PAIR = {
+    "center_distance_mm": ("mm", "centre distance L of the pitch curves"),
+    "speed_ripple": ("", "ripple of the hub's horizontal speed over a leg: (max − min) / mean of v/ω"),
+    "smoothing_deg": ("deg", "width of the law's smoothing around each leg hand-over"),
+    "overlap_law_max_mm2": ("mm²", "largest overlap of the tooth outlines turned by the law over the motion proof"),
+    "jam_phases": ("", "phases of the motion proof where the driven gear cannot follow the law (teeth jam)"),
+    "proof_phases": ("", "phases (driver positions) the motion proof checks over the driven gear's turn"),
+    "te_pp_rad": ("rad", "peak-to-peak transmission error of the driven gear against the law"),
+    "backlash_min_mm": ("mm", "least circumferential backlash over the motion proof"),
+    "backlash_max_mm": ("mm", "largest circumferential backlash over the motion proof"),
+    "least_overlap_max_mm2": ("mm²", "largest overlap left at the driven angle of least overlap over the proof"),
+}
+
+GLOSSARY = {
+    **_PAIR,
+    "mounting_distance_mm": ("mm", "centre distance the pair is mounted at (the DXF and the assembly)"),
+    "module_mm": ("mm", "module m of the teeth"),
+    "driver_teeth": ("", "teeth z of the driver (on the engine side)"),
+    "driven_teeth": ("", "teeth z_H of the driven gear (on the hub)"),
+    "driver_turns": ("", "driver turns n per driven turn (legs of the propulsor)"),
+    "method": ("", "how the teeth were made: generated (conjugate, by a shaper or rack) or sectors (the papers' "
+                   "involute sectors, seed 000 and seed 002)"),
+    "speed_ripple_phi_min_deg": ("deg", "hub angle φ of the least hub speed"),
+    "speed_ripple_phi_max_deg": ("deg", "hub angle φ of the largest hub speed"),
+    "hub_height_mm": ("mm", "hub height A = a − b + c of the propulsor (seed 000 eq. 1-15)"),
+    "u": ("", "reduced ratio coefficient u = n π A / (A π + 6 b) (seed 000 eq. 10)"),
+    "hub_speed_mean_mm_per_rad": ("mm/rad", "hub speed analogue v/ω = A / u: horizontal hub travel per driver radian"),
+    "closure_error_rad": ("rad", "closure of the pitch curves: the driven angle left over after one driven turn"),
+    "overlap_law_phases": ("", "phases of the motion proof where the outlines turned by the law overlap"),
+    "te_min_rad": ("rad", "least transmission error of the driven gear against the law"),
+    "te_max_rad": ("rad", "largest transmission error of the driven gear against the law"),
+    "contact_pairs_min": ("", "least number of tooth pairs in contact over the motion proof"),
+    "contact_ratio_mean": ("", "mean number of tooth pairs in contact over the motion proof"),
+    "smoothing_rad": ("rad", "width δ of the law's smoothing around each leg hand-over"),
+    "driver_rho_min_mm": ("mm", "least convex radius of curvature of the driver's pitch curve"),
+    "driver_rho_limit_mm": ("mm", "least convex radius of curvature the driver's generating cutter can cut "
+                                  "without undercut"),
+    "driven_rho_min_mm": ("mm", "least convex radius of curvature of the driven pitch curve"),
+    "driven_rho_limit_mm": ("mm", "least convex radius of curvature the driven gear's cutter can cut without undercut"),
+    "driven_concave_rho_min_mm": ("mm", "least concave radius of curvature of the driven pitch curve (must exceed "
+                                        "the shaper's radius)"),
+    "shaper_r0_mm": ("mm", "pitch radius r0 of the shaper cutter"),
+    "driver_shift": ("", "profile shift coefficient of the driver"),
+    "driven_shift": ("", "profile shift coefficient of the driven gear (the driver's, opposite)"),
+    "tip_shortened_teeth": ("", "teeth of both gears whose tips were shortened (a pointed tip cut back)"),
+    "shaper_cut_teeth": ("", "teeth of both gears cut by the shaper (the others by the rack)"),
+    "undercut_teeth": ("", "teeth of both gears undercut by their cutter"),
+    "rack_profile": ("", "basic rack profile of the cutter (ISO 53 A, B, C or D)"),
+    "shaper_d0_mm": ("mm", "pitch diameter d0 of the catalogue shaper cutter"),
+    "shaper_z0": ("", "teeth z0 of the catalogue shaper cutter"),
+    "shaper_x0": ("", "profile shift x0 of the catalogue shaper cutter"),
+    "shaper_standard": ("", "standard of the catalogue shaper cutter"),
+    "root_bridge_max_mm": ("mm", "largest bridge of the root fillet between the shaper-cut and rack-cut teeth"),
+    "law_search_points": ("", "laws screened by the law search"),
+    "law_search_evaluations": ("", "law evaluations the law search made"),
+    "law_search_tries": ("", "searches run (each with a wider smoothing when the last could not be cut)"),
+    "blend_u_h_over_u": ("", "ratio U at hand-over over u: the chosen blend's second shape parameter"),
+    "blend_eps": ("", "the chosen blend's first shape parameter ε"),
+    "law_search_binding": ("", "the limit that binds the chosen law (what stops a smaller ripple)"),
+    "law_search_best_screened_ripple": ("", "hub speed ripple of the best law found by the screening"),
+    "sector_arc_mm": ("mm", "pitch-curve arc of one involute sector (seed 000 Table 1)"),
+    "sectors_per_leg": ("", "involute sectors i per leg of the driven gear"),
+    **{f"compare_<other>_{k}": (unit, f"{meaning}, with the teeth made by the other method ({{other}}), for comparison")
+       for k, (unit, meaning) in _PAIR.items()},
+    # print kit
+    "print_module_mm": ("mm", "module of the printed gears"),
+    "print_center_distance_mm": ("mm", "centre distance of the printed pair"),
+    "print_face_width_mm": ("mm", "face width of the printed gears"),
+    "print_backlash_n_design_mm": ("mm", "normal backlash the printed teeth are thinned for"),
+    "print_backlash_n_min_mm": ("mm", "least normal backlash of the printed pair"),
+    "print_backlash_t_max_mm": ("mm", "largest circumferential backlash of the printed pair"),
+    "pin_driver_d_mm": ("mm", "diameter of the printed driver's pin"),
+    "pin_driven_d_mm": ("mm", "diameter of the printed driven gear's pin"),
+}
