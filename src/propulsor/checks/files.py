@@ -106,16 +106,31 @@ def check_step_file(path: Path) -> list[Check]:
         return [Check.flag(f"{name}: STEP parses", False, str(exc))]
     out = [Check.flag(f"{name}: STEP parses", True, "read and transferred by OCCT"),
            Check.at_least(f"{name}: solids", len(solids), 1, "", "one or more solids")]
+    entry = _manifest_entry(path)
     for k, s in enumerate(solids):
         for c in brep_checks(s, f"{name}: solid {k + 1}"):
             if c.name.endswith(": solids"):
                 continue  # each item is one solid by construction
             out.append(c)
-    entry = _manifest_entry(path)
+        out += _step_mesh_checks(s, f"{name}: solid {k + 1} mesh", entry.get("genus") if len(solids) == 1 else None)
     if "volume_mm3" in entry and solids:
         total = sum(volume(s) for s in solids)
         out.append(Check.equal_within(f"{name}: volume vs manifest", total, float(entry["volume_mm3"]), rel_tol=STEP_VOLUME_REL_TOL, unit="mm^3"))
     return out
+
+
+def _step_mesh_checks(solid, name: str, genus) -> list[Check]:
+    """The mesh checks on a STEP solid's own tessellation (what a slicer or a CAM package meshes): closed,
+    oriented, one body, the genus the manifest records, no self-intersection, volume against the B-rep."""
+    from ..export.mesh import tessellate
+    from .brep import volume
+    from .mesh import mesh_checks
+
+    try:
+        mesh = tessellate(solid, parallel=False)
+    except Exception as exc:  # noqa: BLE001 - a solid OCCT cannot mesh is a failed check
+        return [Check.flag(f"{name}: tessellates", False, f"{type(exc).__name__}: {exc}")]
+    return mesh_checks(mesh, name, expected_genus=genus, brep_volume=volume(solid), max_box_pairs=MESH_BOX_PAIRS_MAX)
 
 
 def check_mesh_file(path: Path) -> list[Check]:

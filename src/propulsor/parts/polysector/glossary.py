@@ -49,6 +49,16 @@ GLOSSARY = {
     "positions[].transmission_error_pp_rad": ("rad", "peak-to-peak transmission error over the motion proof"),
     "positions[].proof_chord_tol_mm": ("mm", "chord tolerance of the outlines in the motion proof"),
     "positions[].proof_steps_per_period": ("", "steps of the motion proof per tooth period"),
+    "positions[].contact_shares": ("", "share of one sector period (wheel turn) spent in each contact type of the "
+                                   "tracked contact law: flank on flank, sector tip on gear flank, gear tip on "
+                                   "sector flank, tip on tip"),
+    "positions[].tip_on_tip_deg": ("deg", "wheel turn per sector period during which the contact is tip on tip "
+                                   "(tip land or corner of both bodies); must be 0"),
+    "positions[].snap_max_deg": ("deg", "largest jump of the gear beyond its nominal advance within the contact "
+                                 "law's finest step (the gear snapping forward at a hand-over)"),
+    "positions[].contact_law_steps_per_period": ("", "poses of the tracked contact law over one sector period "
+                                                 "(refined around every hand-over)"),
+    "positions[].contact_law_step_min_deg": ("deg", "finest wheel step of the tracked contact law"),
     # print kit
     "print_module_mm": ("mm", "module of the printed gears"),
     "print_center_distance_mm": ("mm", "centre distance of the printed pair"),
