@@ -179,6 +179,10 @@ def _write(tmp_path, **changes):
     ({"x_sun": 1.6}, "x"),                # the sun tooth is pointed at its tip
     ({"n_planets": 5}, "n_planets"),      # (16 + 56)/5 is not whole: the planets cannot be assembled
     ({"module_mm": "nan"}, "module_mm"),
+    ({"service_life_h": 0.0}, "service_life_h"),
+    ({"sigma_Hlim_MPa": 2500.0}, "sigma_Hlim_MPa"),
+    ({"root_roughness_Rz_um": 50.0}, "root_roughness_Rz_um"),
+    ({"oil_viscosity_40_mm2_s": "\"thick\""}, "oil_viscosity_40_mm2_s"),
 ])
 def test_bad_input_exit_2_one_line_nothing_written(tmp_path, capsys, changes, param):
     f = _write(tmp_path, **changes)
@@ -196,15 +200,21 @@ def test_strength_of_both_meshes_bearings_spline_and_shaft_in_the_manifest(built
     d = m["derived"]
     checks = {c["name"]: c for c in m["checks"]}
     for mesh, gears in (("sun_planet", ("sun", "planet")), ("planet_ring", ("planet",))):
-        S_H = d[f"strength_{mesh}_S_H"]
+        S_H = d[f"strength_{mesh}_S_H_static"]
         assert S_H == pytest.approx(44 * 59 / d[f"strength_{mesh}_sigma_H_MPa"], rel=1e-12)
-        assert checks[f"strength_{mesh}.S_H"]["passed"] and S_H > 1.0
+        assert checks[f"strength_{mesh}.S_H_static"]["passed"] and S_H > 1.0
+        assert "S_H static (σ_Hmax = 44·HRC" in checks[f"strength_{mesh}.S_H_static"]["message"]
+        assert f"strength_{mesh}.S_H" not in checks      # the static check is not called the ISO safety
         for g in gears:
-            S_F = d[f"strength_{mesh}_S_F_{g}"]
-            assert S_F == pytest.approx(2.8 * 785 / d[f"strength_{mesh}_sigma_F_{g}_MPa"], rel=1e-12)
-            assert checks[f"strength_{mesh}.S_F_{g}"]["passed"] and S_F > 1.75
+            S_F = d[f"strength_{mesh}_S_F_{g}_static"]
+            assert S_F == pytest.approx(2.8 * 785 / d[f"strength_{mesh}_sigma_F_{g}_method_B_MPa"], rel=1e-12)
+            assert checks[f"strength_{mesh}.S_F_{g}_static"]["passed"] and S_F > 1.75
+            assert d[f"strength_{mesh}_sigma_F_{g}_method_C_MPa"] > 0
         # the face width each mesh needs is below the 75 mm it has
         assert 0 < d[f"strength_{mesh}_face_width_required_mm"] < 75.0
+    # the sun's torsional wind-up in K_Hβ (ISO 6336-1 method C f_sh): 1.063 without it
+    assert round(d["strength_sun_planet_K_Hbeta"], 3) == 1.112
+    assert round(d["strength_planet_ring_K_Hbeta"], 3) == 1.064
     assert d["sun_torque_Nm"] == pytest.approx(90687.503 * 1.09 / 4.413, rel=1e-12)
     assert d["bearing_planet_C0_N"] == pytest.approx(128700.0)
     assert d["bearing_planet_S0"] > 1 and checks["bearing_planet.S0"]["passed"]
@@ -250,7 +260,7 @@ def test_too_narrow_face_exits_1_naming_the_strength_check(tmp_path, capsys):
     text = capsys.readouterr()
     assert rc == 1
     said = text.out + text.err
-    assert "strength_sun_planet.S_H" in said and "strength_sun_planet.face_width" in said
+    assert "strength_sun_planet.S_H_static" in said and "strength_sun_planet.face_width" in said
 
 
 def test_carrier_solid_measured_and_its_pins_clear_the_planet_bores(built):
@@ -293,3 +303,44 @@ def test_carrier_turn_animation_at_the_sweeps_poses(built, assert_animations):
     assert len(meshes) == 6
     assert e["least_clearance_mm"] == pytest.approx(min(m["derived"][k] for k in meshes), abs=1e-12)
     assert e["frames"] >= 90  # a carrier turn in at most 4 degrees per frame
+
+
+def test_fatigue_safeties_and_factor_table(built):
+    """ISO 6336-2/-3 fatigue for the default 100 h at the design torque: checks per flank and root, the lives,
+    and the factor table with a clause and a basis for every factor of the four calculations."""
+    m = _manifest(built)
+    d = m["derived"]
+    checks = {c["name"]: c for c in m["checks"]}
+    flanks = [("sun_planet", "sun"), ("sun_planet", "planet"), ("planet_ring", "planet"), ("planet_ring", "ring")]
+    for mesh, g in flanks:
+        c = checks[f"strength_{mesh}.S_H_pitting_{g}"]
+        assert c["passed"] and c["value"] == d[f"strength_{mesh}_S_H_pitting_{g}"] and c["limit"] == 1.0
+    for mesh, g in flanks[:3]:
+        c = checks[f"strength_{mesh}.S_F_fatigue_{g}"]
+        assert c["passed"] and c["limit"] == 1.4
+    # the sun is the weakest flank: 100 h of its 4.4e6 cycles give S_H ≈ 1.09; it reaches S_Hmin at ≈ 320 h
+    assert d["load_cycles_per_hour_sun"] == pytest.approx(3600 * 3 * 3.5 * 7.852 / 3.6 / (15 * 0.125), rel=1e-12)
+    assert d["load_cycles_per_hour_planet"] == pytest.approx(d["load_cycles_per_hour_sun"] / 3 * 16 / 20, rel=1e-12)
+    assert 1.0 < d["strength_sun_planet_S_H_pitting_sun"] < d["strength_sun_planet_S_H_pitting_planet"]
+    assert 100.0 < d["strength_sun_planet_pitting_life_sun_h"] < 1000.0
+    rows = list(csv.DictReader((built / "tables" / "strength_factors.csv").open()))
+    calcs = {(r["mesh"], r["calculation"]) for r in rows}
+    assert calcs == {("sun_planet", "pitting"), ("sun_planet", "bending"), ("planet_ring", "pitting"),
+                     ("planet_ring", "bending")}
+    assert all(r["source"] and r["basis"] for r in rows)
+    by = {(r["mesh"], r["calculation"], r["factor"]): r for r in rows}
+    for calc in ("pitting", "bending"):
+        for f in ("F_t", "b", "K_A", "K_v", "K_Hbeta", "f_sh", "F_betax"):
+            assert (("sun_planet", calc, f)) in by
+    for f in ("Z_H", "Z_E", "Z_eps", "Z_B", "Z_D", "K_Halpha", "Z_NT", "Z_L", "Z_v", "Z_R", "Z_W", "Z_X", "sigma_HG"):
+        assert ("planet_ring", "pitting", f) in by
+    for f in ("K_Fbeta", "K_Falpha", "d_en", "Y_F", "Y_S", "Y_F_C", "Y_eps", "Y_NT", "Y_delta_relT", "Y_R_relT",
+              "Y_X", "Y_M"):
+        assert ("sun_planet", "bending", f) in by
+    assert "d_1 = 160 mm" in by[("sun_planet", "pitting", "F_t")]["basis"]
+    assert "E = 206 000 MPa, ν = 0.3" in by[("sun_planet", "pitting", "Z_E")]["basis"]
+    assert by[("sun_planet", "pitting", "Z_H")]["source"].startswith("ISO 6336-2 cl. 6")
+    assert float(by[("sun_planet", "pitting", "K_Hbeta")]["value"]) == pytest.approx(d["strength_sun_planet_K_Hbeta"])
+    rep = (built / "report.md").read_text()
+    assert "ISO 6336 factor table, Sun–planet pitting: F_t = 93331.61 N" in rep
+    assert "Fatigue (ISO 6336-2 pitting, ISO 6336-3 method B bending" in rep

@@ -131,6 +131,8 @@ def strength(dd: FinalDriveDesign, w, built: dict) -> None:
                        "root stress by ISO 6336-3:2006 method B (load at the outer point of single contact); the checks use it")
             w.describe(f"strength_{tag}_sigma_F_{g}_method_C_MPa", "MPa",
                        "root stress by ISO 6336-3:1996 method C (load at the tip, Y_ε), for comparison")
+            w.describe(f"strength_{tag}_Y_F_method_C_{g}", "", "form factor Y_F, load at the tip (method C)")
+            w.describe(f"strength_{tag}_Y_S_method_C_{g}", "", "stress correction factor Y_S, load at the tip (method C)")
             w.describe(f"strength_{tag}_S_F_{g}_static", "",
                        "static bending safety σ_FlimM/σ_F (method B), σ_FlimM = 2.8·σ_t (seed 004 ch. 4.1)")
             checks.append(Check.at_least(
