@@ -148,3 +148,18 @@ def test_pitting_and_root_fatigue_safety_assemble_the_factors():
     sFG = 425.0 * 2.0 * 30.0 ** 0.115 * Yd * Yr * (1.05 - 0.01 * 10.0)
     assert sun.sigma_FG == pytest.approx(sFG, rel=1e-12) and sun.S_F == pytest.approx(sFG / 400.0, rel=1e-12)
     assert planet.Y_M == 0.7 and planet.sigma_FG == pytest.approx(0.7 * sFG, rel=1e-12)
+
+
+def test_single_pair_contact_factors_of_sun_and_planet():
+    ps, T1, v, s = _final_drive_sun_planet(True)
+    m = ps.mesh_sun_planet
+    a1 = math.sqrt((ps.d_a_sun / ps.sun.d_b) ** 2 - 1.0)
+    a2 = math.sqrt((ps.d_a_planet / ps.planet.d_b) ** 2 - 1.0)
+    eps = s.eps_alpha
+    M1 = math.tan(m.alpha_w) / math.sqrt((a1 - 2 * math.pi / 16) * (a2 - (eps - 1) * 2 * math.pi / 20))
+    M2 = math.tan(m.alpha_w) / math.sqrt((a2 - 2 * math.pi / 20) * (a1 - (eps - 1) * 2 * math.pi / 16))
+    assert (s.Z_B, s.Z_D) == pytest.approx((max(1.0, M1), max(1.0, M2)), rel=1e-12)
+    assert s.Z_B > s.Z_D > 1.0
+    assert s.sigma_H_wheel == pytest.approx(s.sigma_H * M2 / M1, rel=1e-12)
+    ring = mesh_stress(ps.mesh_planet_ring, ps.d_a_planet, ps.d_a_ring, 75.0, MeshLoad(T1 * 20 / 16, v))
+    assert ring.Z_B == ring.Z_D == 1.0 and ring.sigma_H_wheel == ring.sigma_H

@@ -328,19 +328,31 @@ def test_fatigue_safeties_and_factor_table(built):
     assert calcs == {("sun_planet", "pitting"), ("sun_planet", "bending"), ("planet_ring", "pitting"),
                      ("planet_ring", "bending")}
     assert all(r["source"] and r["basis"] for r in rows)
-    by = {(r["mesh"], r["calculation"], r["factor"]): r for r in rows}
+    by = {(r["mesh"], r["calculation"], r["gear"], r["factor"]): r for r in rows}
+    assert len(by) == len(rows)                   # one row per factor of each gear of each calculation
     for calc in ("pitting", "bending"):
         for f in ("F_t", "b", "K_A", "K_v", "K_Hbeta", "f_sh", "F_betax"):
-            assert (("sun_planet", calc, f)) in by
-    for f in ("Z_H", "Z_E", "Z_eps", "Z_B", "Z_D", "K_Halpha", "Z_NT", "Z_L", "Z_v", "Z_R", "Z_W", "Z_X", "sigma_HG"):
-        assert ("planet_ring", "pitting", f) in by
-    for f in ("K_Fbeta", "K_Falpha", "d_en", "Y_F", "Y_S", "Y_F_C", "Y_eps", "Y_NT", "Y_delta_relT", "Y_R_relT",
-              "Y_X", "Y_M"):
-        assert ("sun_planet", "bending", f) in by
-    assert "d_1 = 160 mm" in by[("sun_planet", "pitting", "F_t")]["basis"]
-    assert "E = 206 000 MPa, ν = 0.3" in by[("sun_planet", "pitting", "Z_E")]["basis"]
-    assert by[("sun_planet", "pitting", "Z_H")]["source"].startswith("ISO 6336-2 cl. 6")
-    assert float(by[("sun_planet", "pitting", "K_Hbeta")]["value"]) == pytest.approx(d["strength_sun_planet_K_Hbeta"])
+            assert ("sun_planet", calc, "", f) in by
+    for f in ("Z_H", "Z_E", "Z_eps", "Z_B", "Z_D", "K_Halpha"):
+        assert ("planet_ring", "pitting", "", f) in by
+    for g in ("planet", "ring"):
+        for f in ("sigma_H", "N_L", "Z_NT", "Z_L", "Z_v", "Z_R", "Z_W", "Z_X", "sigma_HG", "S_H", "S_H_static"):
+            assert ("planet_ring", "pitting", g, f) in by
+    for g in ("sun", "planet"):
+        for f in ("d_en", "Y_F", "Y_S", "sigma_F", "Y_F_C", "Y_S_C", "Y_eps", "sigma_F_C", "Y_NT", "Y_delta_relT",
+                  "Y_R_relT", "Y_X", "Y_M", "sigma_FG", "S_F", "S_F_static"):
+            assert ("sun_planet", "bending", g, f) in by
+    assert ("sun_planet", "bending", "", "K_Fbeta") in by and ("planet_ring", "bending", "ring", "Y_F") not in by
+    assert [float(by[("sun_planet", "bending", g, "Y_M")]["value"]) for g in ("sun", "planet")] == [1.0, 0.7]
+    assert float(by[("sun_planet", "bending", "planet", "sigma_F")]["value"]) == pytest.approx(
+        d["strength_sun_planet_sigma_F_planet_method_B_MPa"], rel=1e-12)
+    assert float(by[("sun_planet", "pitting", "sun", "S_H")]["value"]) == pytest.approx(
+        d["strength_sun_planet_S_H_pitting_sun"], rel=1e-12)
+    assert "d_1 = 160 mm" in by[("sun_planet", "pitting", "", "F_t")]["basis"]
+    assert "E = 206 000 MPa, ν = 0.3" in by[("sun_planet", "pitting", "", "Z_E")]["basis"]
+    assert by[("sun_planet", "pitting", "", "Z_H")]["source"].startswith("ISO 6336-2 cl. 6")
+    assert float(by[("sun_planet", "pitting", "", "K_Hbeta")]["value"]) == pytest.approx(
+        d["strength_sun_planet_K_Hbeta"], rel=1e-12)
     rep = (built / "report.md").read_text()
     assert "ISO 6336 factor table, Sun–planet pitting: F_t = 93331.61 N" in rep
     assert "Fatigue (ISO 6336-2 pitting, ISO 6336-3 method B bending" in rep

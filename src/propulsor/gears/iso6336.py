@@ -11,6 +11,7 @@ Contact (ISO 6336-2:2006 eq. 1–3, 9, 10, 18, 25):
     Z_ε  = √((4 − ε_α)/3),   Z_β = 1 (spur)
     Z_B  = max(1, M_1),  M_1 = tan α_w / √((√(d_a1²/d_b1² − 1) − 2π/z1)·(√(d_a2²/d_b2² − 1) − (ε_α − 1)·2π/z2))
            (external mates; Z_B = 1 for an internal mate, ISO 6336-2 5.1)
+    Z_D  = max(1, M_2) for the wheel (M_1 with pinion and wheel exchanged); σ_H of the wheel = Z_D·σ_H0·√(...)
 
 Tooth root (ISO 6336-3:1996 eq. 2–3, method C: load applied at the tip, d_en = d_a):
 

@@ -97,7 +97,7 @@ def fatigue_rows(p, ps, sp, pr, v: float):
                ("K_Fbeta", s.K_Fbeta, "", "K_Hβ^N_F")]
         # -- pitting
         sig = {g1: s.sigma_H, g2: s.sigma_H_wheel}
-        prow = common + khb + [
+        prow = [(*t, "") for t in common + khb + [
             ("K_Halpha", s.K_Halpha, "", f"Table 9, surface-hardened spur, grade {p.accuracy_grade}"),
             ("Z_H", s.Z_H, "", f"α = 20°, α_w = {math.degrees(mesh.alpha_w):.4f}°"),
             ("Z_E", s.Z_E, "√MPa", "steel on steel: E = 206 000 MPa, ν = 0.3 both"),
@@ -106,30 +106,30 @@ def fatigue_rows(p, ps, sp, pr, v: float):
             ("Z_B", s.Z_B, "", f"{g1}: max(1, M_1)" + (" (internal mate: 1)" if mesh.internal else "")),
             ("Z_D", s.Z_D, "", f"{g2}: max(1, M_2)" + (" (internal wheel: 1)" if mesh.internal else "")),
             ("sigma_H0", s.sigma_H0, "MPa", "Z_H·Z_E·Z_ε·Z_β·√(F_t/(d_1·b)·(u + 1)/u)"),
-        ]
+        ]]
         for g, zf in ((g1, "Z_B"), (g2, "Z_D")):
             P = pitting_safety(sig[g], p.sigma_Hlim_MPa, cph[g] * p.service_life_h, p.oil_viscosity_40_mm2_s, v,
                                p.flank_roughness_Rz_um, p.flank_roughness_Rz_um, rr, p.pitting_safety_S_Hmin)
             need = p.pitting_safety_S_Hmin * sig[g] / (P.sigma_HG / P.Z_NT)
             hours = _hours(cycles_at_z_nt(need), cph[g] * 1.0)
             pit[(tag, g)] = (P, hours)
-            prow += [
-                ("sigma_H", sig[g], "MPa", f"{g}: {zf}·σ_H0·√(K_A·K_v·K_Hβ·K_Hα)"),
-                ("N_L", P.N_L, "", f"{g}: {cph[g]:.0f} cycles/h × {p.service_life_h:g} h"),
-                ("Z_NT", P.Z_NT, "", f"{g}: case-hardened steel at N_L"),
+            prow += [(*t, g) for t in [
+                ("sigma_H", sig[g], "MPa", f"{zf}·σ_H0·√(K_A·K_v·K_Hβ·K_Hα)"),
+                ("N_L", P.N_L, "", f"{cph[g]:.0f} cycles/h × {p.service_life_h:g} h"),
+                ("Z_NT", P.Z_NT, "", f"case-hardened steel at N_L"),
                 ("Z_L", P.Z_L, "", f"ν_40 = {p.oil_viscosity_40_mm2_s:g} mm²/s, σ_Hlim = {p.sigma_Hlim_MPa:g} MPa"),
                 ("Z_v", P.Z_v, "", f"v = {v:.3f} m/s"),
                 ("Z_R", P.Z_R, "", f"R_z = {p.flank_roughness_Rz_um:g} µm, ρ_red = {rr:.3f} mm, R_z10 = {P.R_z10:.3f} µm"),
                 ("Z_W", P.Z_W, "", "both flanks case-hardened"),
                 ("Z_X", P.Z_X, "", "size factor of pitting"),
                 ("sigma_Hlim", p.sigma_Hlim_MPa, "MPa", "part parameter sigma_Hlim_MPa"),
-                ("sigma_HG", P.sigma_HG, "MPa", f"{g}: pitting limit at N_L"),
-                ("S_H", P.S_H, "", f"{g}: required {p.pitting_safety_S_Hmin:g}"),
-                ("S_H_static", sHmax / sig[g], "", f"{g}: 44·HRC = {sHmax:.0f} MPa over σ_H"),
-            ]
+                ("sigma_HG", P.sigma_HG, "MPa", f"pitting limit at N_L"),
+                ("S_H", P.S_H, "", f"required {p.pitting_safety_S_Hmin:g}"),
+                ("S_H_static", sHmax / sig[g], "", f"44·HRC = {sHmax:.0f} MPa over σ_H"),
+            ]]
         rows += [[tag, "pitting", *r] for r in prow]
         # -- bending (method B checks, method C beside)
-        brow = common + khb + kfb + [("K_Falpha", s.K_Falpha, "", f"Table 9, grade {p.accuracy_grade}")]
+        brow = [(*t, "") for t in common + khb + kfb + [("K_Falpha", s.K_Falpha, "", f"Table 9, grade {p.accuracy_grade}")]]
         gears = [(g1, G1, da[g1], s.root1_B, s.d_en1, s.sigma_F1_B, s.Y_F1, s.Y_S1, s.sigma_F1)]
         if s.sigma_F2_B is not None:
             gears.append((g2, G2, da[g2], s.root2_B, s.d_en2, s.sigma_F2_B, s.Y_F2, s.Y_S2, s.sigma_F2))
@@ -141,31 +141,31 @@ def fatigue_rows(p, ps, sp, pr, v: float):
             need = p.bending_fatigue_safety_S_Fmin * sF / (R.sigma_FG / R.Y_NT)
             hours = _hours(cycles_at_y_nt(need), cph[g] * 1.0)
             root[(tag, g)] = (R, hours)
-            brow += [
-                ("d_en", d_en, "mm", f"{g}: outer point of single contact (d_a = {d_a:.3f} mm, ε_α = {s.eps_alpha:.4f})"),
-                ("Y_F", tf.Y_F, "", f"{g}: method B, s_Fn = {tf.s_Fn:.3f} mm, h_Fe = {tf.h_Fe:.3f} mm"),
-                ("Y_S", tf.Y_S, "", f"{g}: method B, ρ_F = {tf.rho_F:.3f} mm"),
-                ("q_s", q_s, "", f"{g}: s_Fn/(2·ρ_F)"),
+            brow += [(*t, g) for t in [
+                ("d_en", d_en, "mm", f"outer point of single contact (d_a = {d_a:.3f} mm, ε_α = {s.eps_alpha:.4f})"),
+                ("Y_F", tf.Y_F, "", f"method B, s_Fn = {tf.s_Fn:.3f} mm, h_Fe = {tf.h_Fe:.3f} mm"),
+                ("Y_S", tf.Y_S, "", f"method B, ρ_F = {tf.rho_F:.3f} mm"),
+                ("q_s", q_s, "", f"s_Fn/(2·ρ_F)"),
                 ("Y_beta", 1.0, "", "β = 0"), ("Y_B", 1.0, "", "solid rim"), ("Y_DT", 1.0, "", "ε_α < 2.05"),
-                ("sigma_F", sF, "MPa", f"{g}: F_t/(b·m)·Y_F·Y_S·K_A·K_v·K_Fβ·K_Fα, m = {mesh.m:g} mm (method B: the checks use it)"),
-                ("Y_F_C", YFc, "", f"{g}: load at the tip d_a = {d_a:.3f} mm"),
-                ("Y_S_C", YSc, "", f"{g}: load at the tip"),
+                ("sigma_F", sF, "MPa", f"F_t/(b·m)·Y_F·Y_S·K_A·K_v·K_Fβ·K_Fα, m = {mesh.m:g} mm (method B: the checks use it)"),
+                ("Y_F_C", YFc, "", f"load at the tip d_a = {d_a:.3f} mm"),
+                ("Y_S_C", YSc, "", f"load at the tip"),
                 ("Y_eps", s.Y_eps, "", f"ε_α = {s.eps_alpha:.4f}"),
-                ("sigma_F_C", sFc, "MPa", f"{g}: F_t/(b·m)·Y_F·Y_S·Y_ε·K (method C, for comparison)"),
-                ("N_L", R.N_L, "", f"{g}: {cph[g]:.0f} cycles/h × {p.service_life_h:g} h"),
+                ("sigma_F_C", sFc, "MPa", f"F_t/(b·m)·Y_F·Y_S·Y_ε·K (method C, for comparison)"),
+                ("N_L", R.N_L, "", f"{cph[g]:.0f} cycles/h × {p.service_life_h:g} h"),
                 ("Y_ST", R.Y_ST, "", "stress correction factor of the test gear"),
-                ("Y_NT", R.Y_NT, "", f"{g}: case-hardened steel at N_L"),
-                ("Y_delta_relT", R.Y_delta_relT, "", f"{g}: q_s = {q_s:.3f}, ρ' = 0.003 mm (case-hardened)"),
+                ("Y_NT", R.Y_NT, "", f"case-hardened steel at N_L"),
+                ("Y_delta_relT", R.Y_delta_relT, "", f"q_s = {q_s:.3f}, ρ' = 0.003 mm (case-hardened)"),
                 ("Y_R_relT", R.Y_R_relT, "", f"root R_z = {p.root_roughness_Rz_um:g} µm"),
                 ("Y_X", R.Y_X, "", f"m = {mesh.m:g} mm, surface-hardened"),
-                ("Y_M", R.Y_M, "", f"{g}: " + ("idler, bent both ways" if idler else "bent one way")),
+                ("Y_M", R.Y_M, "", "idler, bent both ways" if idler else "bent one way"),
                 ("sigma_Flim", p.sigma_Flim_MPa, "MPa", "part parameter sigma_Flim_MPa"),
-                ("sigma_FG", R.sigma_FG, "MPa", f"{g}: root stress limit at N_L"),
-                ("S_F", R.S_F, "", f"{g}: required {p.bending_fatigue_safety_S_Fmin:g}"),
-                ("S_F_static", sFlim / sF, "", f"{g}: 2.8·σ_t = {sFlim:.0f} MPa over σ_F"),
-            ]
+                ("sigma_FG", R.sigma_FG, "MPa", f"root stress limit at N_L"),
+                ("S_F", R.S_F, "", f"required {p.bending_fatigue_safety_S_Fmin:g}"),
+                ("S_F_static", sFlim / sF, "", f"2.8·σ_t = {sFlim:.0f} MPa over σ_F"),
+            ]]
         rows += [[tag, "bending", *r] for r in brow]
-    rows = [[t, c, sym, val, unit, _SRC[sym], basis] for t, c, sym, val, unit, basis in rows]
+    rows = [[t, c, gear, sym, val, unit, _SRC[sym], basis] for t, c, sym, val, unit, basis, gear in rows]
     return rows, pit, root
 
 
@@ -207,7 +207,7 @@ def fatigue(dd: FinalDriveDesign, w, built: dict) -> None:
     d.update({f"load_cycles_per_hour_{g}": x for g, x in cph.items()})
     for g in cph:
         w.describe(f"load_cycles_per_hour_{g}", "1/h", f"load cycles of a {g} tooth per hour at the design speed")
-    w.add_table("strength_factors", ["mesh", "calculation", "factor", "value", "unit", "source", "basis"], rows)
+    w.add_table("strength_factors", ["mesh", "calculation", "gear", "factor", "value", "unit", "source", "basis"], rows)
     w.add_note(
         f"Fatigue (ISO 6336-2 pitting, ISO 6336-3 method B bending, limits of ISO 6336-5) for {p.service_life_h:g} h "
         f"at the design torque and {p.design_speed_kmh:g} km/h (seed 004 prints no duty: this running time is the "
@@ -220,8 +220,8 @@ def fatigue(dd: FinalDriveDesign, w, built: dict) -> None:
     for tag, calc, title in (("sun_planet", "pitting", "Sun–planet pitting"), ("sun_planet", "bending", "Sun–planet bending"),
                              ("planet_ring", "pitting", "Planet–ring pitting"),
                              ("planet_ring", "bending", "Planet–ring bending")):
-        items = [f"{r[2]} = {_fmt(r[3])}{(' ' + r[4]) if r[4] else ''} ({r[5]}; {r[6]})" for r in rows
-                 if r[0] == tag and r[1] == calc]
+        items = [f"{r[3]}{(' of the ' + r[2]) if r[2] else ''} = {_fmt(r[4])}{(' ' + r[5]) if r[5] else ''} "
+                 f"({r[6]}; {r[7]})" for r in rows if r[0] == tag and r[1] == calc]
         w.add_note(f"ISO 6336 factor table, {title}: " + "; ".join(items) + ".")
 
 
