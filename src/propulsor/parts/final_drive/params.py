@@ -85,11 +85,13 @@ class FinalDriveParams:
                                   "endure (load cycles of each gear follow from its speed relative to the carrier; "
                                   "seed 004 prints no duty)", min=0, min_exclusive=True, max=200000.0,
                                   why="23 years of running day and night")
-    sigma_Hlim_MPa: float = param(1500.0, "MPa", "pitting endurance limit σ_Hlim of the flank (ISO 6336-5:2003, "
-                                  "case-hardened wrought steel, quality MQ: 1500; ML 1300, ME 1650)",
+    sigma_Hlim_MPa: float = param(1500.0, "MPa", "pitting endurance limit σ_Hlim of the flank (seed 004: carburized "
+                                  "18Х2Н4МА at 59 HRC; ISO 6336-5:2003, case-hardened wrought steel, quality MQ: "
+                                  "1500; ML 1300, ME 1650)",
                                   min=200.0, max=2000.0, why="above ISO 6336-5's best case-hardened steel (ME 1650)")
-    sigma_Flim_MPa: float = param(425.0, "MPa", "bending endurance limit σ_Flim of the root (ISO 6336-5:2003, "
-                                  "case-hardened wrought steel, quality MQ, core hardness >= 25 HRC: 425; ME 525)",
+    sigma_Flim_MPa: float = param(425.0, "MPa", "bending endurance limit σ_Flim of the root (carburized 18Х2Н4МА; "
+                                  "ISO 6336-5:2003, case-hardened wrought steel, quality MQ, core hardness >= 25 HRC: "
+                                  "425; ML 312, ME 525)",
                                   min=100.0, max=800.0, why="above ISO 6336-5's best case-hardened steel (ME 525)")
     flank_roughness_Rz_um: float = param(3.0, "µm", "mean peak-to-valley roughness R_z of the flanks (ground)",
                                          min=0.1, max=40.0, why="a rough hobbed flank")
