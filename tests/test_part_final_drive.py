@@ -356,3 +356,50 @@ def test_fatigue_safeties_and_factor_table(built):
     rep = (built / "report.md").read_text()
     assert "ISO 6336 factor table, Sun–planet pitting: F_t = 93331.61 N" in rep
     assert "Fatigue (ISO 6336-2 pitting, ISO 6336-3 method B bending" in rep
+
+
+class _Writer:
+    """The parts of the output writer the fatigue step uses."""
+
+    def __init__(self):
+        self.derived, self.described, self.checks, self.notes, self.tables = {}, {}, [], [], {}
+
+    def progress(self, *_):
+        pass
+
+    def describe(self, name, unit, meaning):
+        self.described[name] = (unit, meaning)
+
+    def add_checks(self, checks):
+        self.checks += list(checks)
+
+    def add_note(self, text):
+        self.notes.append(text)
+
+    def add_table(self, name, columns, rows):
+        self.tables[name] = (columns, rows)
+
+
+def test_fatigue_life_is_where_the_safety_meets_its_minimum():
+    """At the life the step reports, running that long gives the minimum safety exactly; ten times the default
+    fails the sun's pitting and the planet's bending fatigue checks; every value written is described."""
+    from propulsor.parts.final_drive.design import design
+    from propulsor.parts.final_drive.fatigue import fatigue
+
+    _, mp = read_part_file(PART)
+    p = load_params(FinalDriveParams, mp)
+    w = _Writer()
+    fatigue(design(p), w, {})
+    assert set(w.derived) <= set(w.described) and all(c.passed for c in w.checks)
+    life_H, life_F = w.derived["strength_sun_planet_pitting_life_sun_h"], w.derived["strength_sun_planet_bending_life_planet_h"]
+    assert w.derived["strength_sun_planet_bending_life_sun_h"] == math.inf
+    for hours, key in ((life_H, "strength_sun_planet_S_H_pitting_sun"), (life_F, "strength_sun_planet_S_F_fatigue_planet")):
+        p.service_life_h = hours
+        w = _Writer()
+        fatigue(design(p), w, {})
+        assert w.derived[key] == pytest.approx(1.0 if "S_H" in key else 1.4, rel=1e-9)
+    p.service_life_h = 1000.0
+    w = _Writer()
+    fatigue(design(p), w, {})
+    assert {c.name for c in w.checks if not c.passed} == {"strength_sun_planet.S_H_pitting_sun",
+                                                          "strength_sun_planet.S_F_fatigue_planet"}

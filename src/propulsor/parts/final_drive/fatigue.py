@@ -190,7 +190,7 @@ def fatigue(dd: FinalDriveDesign, w, built: dict) -> None:
             f"strength_{tag}.S_H_pitting_{g}", P.S_H, p.pitting_safety_S_Hmin, "",
             f"ISO 6336-2 pitting fatigue: σ_HG = {P.sigma_HG:.1f} MPa (σ_Hlim = {p.sigma_Hlim_MPa:g} MPa, "
             f"Z_NT = {P.Z_NT:.4f} at N_L = {P.N_L:.3g}) over σ_H = {P.sigma_HG / P.S_H:.1f} MPa"))
-        said.append(f"{tag.replace('_', '–')} {g} S_H = {P.S_H:.3f} (life to S_Hmin {hours:.4g} h)")
+        said.append(f"{tag.replace('_', '–')} mesh, {g} flank S_H = {P.S_H:.3f} ({_life(hours, 'S_Hmin')})")
     for (tag, g), (R, hours) in root.items():
         d[f"strength_{tag}_S_F_fatigue_{g}"] = R.S_F
         d[f"strength_{tag}_bending_life_{g}_h"] = hours
@@ -201,7 +201,7 @@ def fatigue(dd: FinalDriveDesign, w, built: dict) -> None:
             f"strength_{tag}.S_F_fatigue_{g}", R.S_F, p.bending_fatigue_safety_S_Fmin, "",
             f"ISO 6336-3 bending fatigue (method B): σ_FG = {R.sigma_FG:.1f} MPa (σ_Flim = {p.sigma_Flim_MPa:g} MPa, "
             f"Y_NT = {R.Y_NT:.4f} at N_L = {R.N_L:.3g}, Y_M = {R.Y_M:g}) over σ_F = {R.sigma_FG / R.S_F:.1f} MPa"))
-        said.append(f"{tag.replace('_', '–')} {g} S_F = {R.S_F:.3f} (life to S_Fmin {hours:.4g} h)")
+        said.append(f"{tag.replace('_', '–')} mesh, {g} root S_F = {R.S_F:.3f} ({_life(hours, 'S_Fmin')})")
     w.add_checks(checks)
     cph = cycles_per_hour(p, ps)
     d.update({f"load_cycles_per_hour_{g}": x for g, x in cph.items()})
@@ -223,6 +223,12 @@ def fatigue(dd: FinalDriveDesign, w, built: dict) -> None:
         items = [f"{r[3]}{(' of the ' + r[2]) if r[2] else ''} = {_fmt(r[4])}{(' ' + r[5]) if r[5] else ''} "
                  f"({r[6]}; {r[7]})" for r in rows if r[0] == tag and r[1] == calc]
         w.add_note(f"ISO 6336 factor table, {title}: " + "; ".join(items) + ".")
+
+
+def _life(hours: float, what: str) -> str:
+    if hours == math.inf:
+        return f"never falls to {what}: the life factor's floor 0.85 at 1e10 cycles keeps it above"
+    return f"falls to {what} after {hours:.4g} h"
 
 
 def _fmt(x: float) -> str:
