@@ -181,6 +181,10 @@ def _write(tmp_path, **changes):
     ({"x_sun": 1.6}, "x"),                # the sun tooth is pointed at its tip
     ({"n_planets": 5}, "n_planets"),      # (16 + 56)/5 is not whole: the planets cannot be assembled
     ({"module_mm": "nan"}, "module_mm"),
+    ({"service_life_h": 0.0}, "service_life_h"),
+    ({"sigma_Hlim_MPa": 2500.0}, "sigma_Hlim_MPa"),
+    ({"root_roughness_Rz_um": 50.0}, "root_roughness_Rz_um"),
+    ({"oil_viscosity_40_mm2_s": "\"thick\""}, "oil_viscosity_40_mm2_s"),
 ])
 def test_bad_input_exit_2_one_line_nothing_written(tmp_path, capsys, changes, param):
     f = _write(tmp_path, **changes)
@@ -198,15 +202,21 @@ def test_strength_of_both_meshes_bearings_spline_and_shaft_in_the_manifest(built
     d = m["derived"]
     checks = {c["name"]: c for c in m["checks"]}
     for mesh, gears in (("sun_planet", ("sun", "planet")), ("planet_ring", ("planet",))):
-        S_H = d[f"strength_{mesh}_S_H"]
+        S_H = d[f"strength_{mesh}_S_H_static"]
         assert S_H == pytest.approx(44 * 59 / d[f"strength_{mesh}_sigma_H_MPa"], rel=1e-12)
-        assert checks[f"strength_{mesh}.S_H"]["passed"] and S_H > 1.0
+        assert checks[f"strength_{mesh}.S_H_static"]["passed"] and S_H > 1.0
+        assert "S_H static (σ_Hmax = 44·HRC" in checks[f"strength_{mesh}.S_H_static"]["message"]
+        assert f"strength_{mesh}.S_H" not in checks      # the static check is not called the ISO safety
         for g in gears:
-            S_F = d[f"strength_{mesh}_S_F_{g}"]
-            assert S_F == pytest.approx(2.8 * 785 / d[f"strength_{mesh}_sigma_F_{g}_MPa"], rel=1e-12)
-            assert checks[f"strength_{mesh}.S_F_{g}"]["passed"] and S_F > 1.75
+            S_F = d[f"strength_{mesh}_S_F_{g}_static"]
+            assert S_F == pytest.approx(2.8 * 785 / d[f"strength_{mesh}_sigma_F_{g}_method_B_MPa"], rel=1e-12)
+            assert checks[f"strength_{mesh}.S_F_{g}_static"]["passed"] and S_F > 1.75
+            assert d[f"strength_{mesh}_sigma_F_{g}_method_C_MPa"] > 0
         # the face width each mesh needs is below the 75 mm it has
         assert 0 < d[f"strength_{mesh}_face_width_required_mm"] < 75.0
+    # the sun's torsional wind-up in K_Hβ (ISO 6336-1 method C f_sh): 1.063 without it
+    assert round(d["strength_sun_planet_K_Hbeta"], 3) == 1.112
+    assert round(d["strength_planet_ring_K_Hbeta"], 3) == 1.064
     assert d["sun_torque_Nm"] == pytest.approx(90687.503 * 1.09 / 4.413, rel=1e-12)
     assert d["bearing_planet_C0_N"] == pytest.approx(128700.0)
     assert d["bearing_planet_S0"] > 1 and checks["bearing_planet.S0"]["passed"]
@@ -252,7 +262,7 @@ def test_too_narrow_face_exits_1_naming_the_strength_check(tmp_path, capsys):
     text = capsys.readouterr()
     assert rc == 1
     said = text.out + text.err
-    assert "strength_sun_planet.S_H" in said and "strength_sun_planet.face_width" in said
+    assert "strength_sun_planet.S_H_static" in said and "strength_sun_planet.face_width" in said
 
 
 def test_carrier_solid_measured_and_its_pins_clear_the_planet_bores(built):
@@ -299,3 +309,103 @@ def test_carrier_turn_animation_at_the_sweeps_poses(built, assert_animations):
 
 def test_every_derived_value_has_a_unit_and_a_meaning(built, assert_explained):
     assert_explained(built)
+
+
+def test_fatigue_safeties_and_factor_table(built):
+    """ISO 6336-2/-3 fatigue for the default 100 h at the design torque: checks per flank and root, the lives,
+    and the factor table with a clause and a basis for every factor of the four calculations."""
+    m = _manifest(built)
+    d = m["derived"]
+    checks = {c["name"]: c for c in m["checks"]}
+    flanks = [("sun_planet", "sun"), ("sun_planet", "planet"), ("planet_ring", "planet"), ("planet_ring", "ring")]
+    for mesh, g in flanks:
+        c = checks[f"strength_{mesh}.S_H_pitting_{g}"]
+        assert c["passed"] and c["value"] == d[f"strength_{mesh}_S_H_pitting_{g}"] and c["limit"] == 1.0
+    for mesh, g in flanks[:3]:
+        c = checks[f"strength_{mesh}.S_F_fatigue_{g}"]
+        assert c["passed"] and c["limit"] == 1.4
+    # the sun is the weakest flank: 100 h of its 4.4e6 cycles give S_H ≈ 1.09; it reaches S_Hmin at ≈ 320 h
+    assert d["load_cycles_per_hour_sun"] == pytest.approx(3600 * 3 * 3.5 * 7.852 / 3.6 / (15 * 0.125), rel=1e-12)
+    assert d["load_cycles_per_hour_planet"] == pytest.approx(d["load_cycles_per_hour_sun"] / 3 * 16 / 20, rel=1e-12)
+    assert 1.0 < d["strength_sun_planet_S_H_pitting_sun"] < d["strength_sun_planet_S_H_pitting_planet"]
+    assert 100.0 < d["strength_sun_planet_pitting_life_sun_h"] < 1000.0
+    rows = list(csv.DictReader((built / "tables" / "strength_factors.csv").open()))
+    calcs = {(r["mesh"], r["calculation"]) for r in rows}
+    assert calcs == {("sun_planet", "pitting"), ("sun_planet", "bending"), ("planet_ring", "pitting"),
+                     ("planet_ring", "bending")}
+    assert all(r["source"] and r["basis"] for r in rows)
+    by = {(r["mesh"], r["calculation"], r["gear"], r["factor"]): r for r in rows}
+    assert len(by) == len(rows)                   # one row per factor of each gear of each calculation
+    for calc in ("pitting", "bending"):
+        for f in ("F_t", "b", "K_A", "K_v", "K_Hbeta", "f_sh", "F_betax"):
+            assert ("sun_planet", calc, "", f) in by
+    for f in ("Z_H", "Z_E", "Z_eps", "Z_B", "Z_D", "K_Halpha"):
+        assert ("planet_ring", "pitting", "", f) in by
+    for g in ("planet", "ring"):
+        for f in ("sigma_H", "N_L", "Z_NT", "Z_L", "Z_v", "Z_R", "Z_W", "Z_X", "sigma_HG", "S_H", "S_H_static"):
+            assert ("planet_ring", "pitting", g, f) in by
+    for g in ("sun", "planet"):
+        for f in ("d_en", "Y_F", "Y_S", "sigma_F", "Y_F_C", "Y_S_C", "Y_eps", "sigma_F_C", "Y_NT", "Y_delta_relT",
+                  "Y_R_relT", "Y_X", "Y_M", "sigma_FG", "S_F", "S_F_static"):
+            assert ("sun_planet", "bending", g, f) in by
+    assert ("sun_planet", "bending", "", "K_Fbeta") in by and ("planet_ring", "bending", "ring", "Y_F") not in by
+    assert [float(by[("sun_planet", "bending", g, "Y_M")]["value"]) for g in ("sun", "planet")] == [1.0, 0.7]
+    assert float(by[("sun_planet", "bending", "planet", "sigma_F")]["value"]) == pytest.approx(
+        d["strength_sun_planet_sigma_F_planet_method_B_MPa"], rel=1e-12)
+    assert float(by[("sun_planet", "pitting", "sun", "S_H")]["value"]) == pytest.approx(
+        d["strength_sun_planet_S_H_pitting_sun"], rel=1e-12)
+    assert "d_1 = 160 mm" in by[("sun_planet", "pitting", "", "F_t")]["basis"]
+    assert "E = 206 000 MPa, ν = 0.3" in by[("sun_planet", "pitting", "", "Z_E")]["basis"]
+    assert by[("sun_planet", "pitting", "", "Z_H")]["source"].startswith("ISO 6336-2 cl. 6")
+    assert float(by[("sun_planet", "pitting", "", "K_Hbeta")]["value"]) == pytest.approx(
+        d["strength_sun_planet_K_Hbeta"], rel=1e-12)
+    rep = (built / "report.md").read_text()
+    assert "ISO 6336 factor table, Sun–planet pitting: F_t = 93331.61 N" in rep
+    assert "Fatigue (ISO 6336-2 pitting, ISO 6336-3 method B bending" in rep
+
+
+class _Writer:
+    """The parts of the output writer the fatigue step uses."""
+
+    def __init__(self):
+        self.derived, self.described, self.checks, self.notes, self.tables = {}, {}, [], [], {}
+
+    def progress(self, *_):
+        pass
+
+    def describe(self, name, unit, meaning):
+        self.described[name] = (unit, meaning)
+
+    def add_checks(self, checks):
+        self.checks += list(checks)
+
+    def add_note(self, text):
+        self.notes.append(text)
+
+    def add_table(self, name, columns, rows):
+        self.tables[name] = (columns, rows)
+
+
+def test_fatigue_life_is_where_the_safety_meets_its_minimum():
+    """At the life the step reports, running that long gives the minimum safety exactly; ten times the default
+    fails the sun's pitting and the planet's bending fatigue checks; every value written is described."""
+    from propulsor.parts.final_drive.design import design
+    from propulsor.parts.final_drive.fatigue import fatigue
+
+    _, mp = read_part_file(PART)
+    p = load_params(FinalDriveParams, mp)
+    w = _Writer()
+    fatigue(design(p), w, {})
+    assert set(w.derived) <= set(w.described) and all(c.passed for c in w.checks)
+    life_H, life_F = w.derived["strength_sun_planet_pitting_life_sun_h"], w.derived["strength_sun_planet_bending_life_planet_h"]
+    assert w.derived["strength_sun_planet_bending_life_sun_h"] == math.inf
+    for hours, key in ((life_H, "strength_sun_planet_S_H_pitting_sun"), (life_F, "strength_sun_planet_S_F_fatigue_planet")):
+        p = dataclasses.replace(p, service_life_h=hours)
+        w = _Writer()
+        fatigue(design(p), w, {})
+        assert w.derived[key] == pytest.approx(1.0 if "S_H" in key else 1.4, rel=1e-9)
+    p = dataclasses.replace(p, service_life_h=1000.0)
+    w = _Writer()
+    fatigue(design(p), w, {})
+    assert {c.name for c in w.checks if not c.passed} == {"strength_sun_planet.S_H_pitting_sun",
+                                                          "strength_sun_planet.S_F_fatigue_planet"}

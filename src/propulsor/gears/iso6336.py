@@ -1,6 +1,6 @@
 """Working stresses of a spur mesh: ISO 6336-2 (pitting, method B) and ISO 6336-3 (tooth root,
 method C of the 1996 edition: load at the tip, Y_F·Y_S with Y_ε), load factors of ISO 6336-1
-(method B for K_v, method C for K_Hβ, Table 9 for K_Hα).  Spur gears only (β = 0), external pinion
+(method B for K_v, method C for K_Hβ, Table 9 for K_Hα); the root stress also by method B of ISO 6336-3:2006.  Spur gears only (β = 0), external pinion
 with an external or internal mate.  mm, N, MPa, radians.
 
 Contact (ISO 6336-2:2006 eq. 1–3, 9, 10, 18, 25):
@@ -11,6 +11,7 @@ Contact (ISO 6336-2:2006 eq. 1–3, 9, 10, 18, 25):
     Z_ε  = √((4 − ε_α)/3),   Z_β = 1 (spur)
     Z_B  = max(1, M_1),  M_1 = tan α_w / √((√(d_a1²/d_b1² − 1) − 2π/z1)·(√(d_a2²/d_b2² − 1) − (ε_α − 1)·2π/z2))
            (external mates; Z_B = 1 for an internal mate, ISO 6336-2 5.1)
+    Z_D  = max(1, M_2) for the wheel (M_1 with pinion and wheel exchanged); σ_H of the wheel = Z_D·σ_H0·√(...)
 
 Tooth root (ISO 6336-3:1996 eq. 2–3, method C: load applied at the tip, d_en = d_a):
 
@@ -27,11 +28,21 @@ Load factors (ISO 6336-1:2006):
 
     K_v = 1 + (K_1/(K_A·F_t/b) + K_2)·v·z_1/100·√(u²/(1 + u²))     (method B, eq. 14; spur K_2 = 0.0193,
           K_1 by accuracy grade, Table 8; F_t/b taken >= 100 N/mm)
-    K_Hβ = 1 + c_γβ·F_βy / (2·F_m/b)  (<= 2), F_m = F_t·K_A·K_v,  F_βy = F_βx − y_β,  y_β = 0.15·F_βx
-          (<= 6 µm, hardened), F_βx = f_ma = f_Hβ of ISO 1328-1 at the grade (f_sh = 0: no shaft bending
-          for the planet on its pin and the floating sun), c_γβ = 0.85·c_γα, c_γα = 20 N/(mm·µm)
-    K_Fβ = K_Hβ^N_F,  N_F = (b/h)² / (1 + b/h + (b/h)²)                                (eq. 74)
+    K_Hβ = 1 + c_γβ·F_βy / (2·F_m/b)  (<= 2; above: √(2·c_γβ·F_βy/(F_m/b))), F_m = F_t·K_A·K_v,
+          F_βy = F_βx − y_β,  y_β = 0.15·F_βx (<= 6 µm, hardened),  F_βx = 1.33·f_sh + f_ma (method C),
+          f_ma = f_Hβ of ISO 1328-1 at the grade, c_γβ = 0.85·c_γα, c_γα = 20 N/(mm·µm)
+    f_sh = 0.023·(F_m/b)·(b/d_1)²  µm  (ISO 6336-1 method C, the pinion's torsional deformation: the
+          term of a pinion whose shaft bending is nil, as for the floating sun; 0 for a pinion that passes
+          no torque through its body, as a planet on its pin)
+    K_Fβ = K_Hβ^N_F,  N_F = (b/h)² / (1 + b/h + (b/h)²),  h = (d_a1 − d_f1)/2
     K_Hα = K_Fα by Table 9 (surface-hardened spur gears, F_t·K_A/b >= 100 N/mm)
+
+Tooth root by method B of ISO 6336-3:2006 beside method C: the same Y_F, Y_S construction with the load
+at the outer point of single pair contact, no Y_ε (Y_β = Y_B = Y_DT = 1 for a spur gear of solid rim and
+ε_α < 2):
+
+    d_en = 2·√((√(r_a² − r_b²) − p_b·(ε_α − 1))² + r_b²),   p_b = π·m·cos α
+    σ_F = F_t/(b·m) · Y_F·Y_S · K_A·K_v·K_Fβ·K_Fα
 
 The internal gear's (ring's) root stress is not computed here: ISO 6336-3 handles internal teeth with
 a substitute rack of the shaper's fillet, which this module does not carry; the ring's root is the
@@ -46,8 +57,9 @@ from dataclasses import dataclass
 from ..errors import InputError, require_positive
 from .involute import inv
 
-__all__ = ["Material", "STEEL", "z_e", "z_h", "z_eps", "z_b", "f_h_beta", "contact_factors", "tooth_form_factor", "ToothForm", "k_v_method_b",
-           "k_h_beta_method_c", "k_h_alpha", "MeshLoad", "MeshStress", "mesh_stress"]
+__all__ = ["Material", "STEEL", "z_e", "z_h", "z_eps", "z_b", "z_d", "f_h_beta", "contact_factors", "tooth_form_factor",
+           "ToothForm", "k_v_method_b", "f_sh_torsion", "FaceLoad", "face_load_method_c", "k_h_beta_method_c",
+           "k_h_alpha", "d_en_single_contact", "MeshLoad", "MeshStress", "mesh_stress"]
 
 
 @dataclass(frozen=True)
@@ -88,6 +100,14 @@ def z_b(alpha_w, d_a1, d_b1, z1, d_a2, d_b2, z2, eps_alpha, internal: bool) -> f
     f2 = math.sqrt((d_a2 / d_b2) ** 2 - 1.0) - (eps_alpha - 1.0) * 2.0 * math.pi / z2
     M1 = math.tan(alpha_w) / math.sqrt(f1 * f2)
     return max(1.0, M1)
+
+
+def z_d(alpha_w, d_a1, d_b1, z1, d_a2, d_b2, z2, eps_alpha, internal: bool) -> float:
+    """Single pair contact factor Z_D of the wheel (ISO 6336-2 eq. 3–5: M_2, the inner point of single
+    contact on the wheel); 1 for an internal wheel."""
+    if internal:
+        return 1.0
+    return z_b(alpha_w, d_a2, d_b2, z2, d_a1, d_b1, z1, eps_alpha, False)
 
 
 def contact_factors(alpha, alpha_w, eps_alpha) -> tuple[float, float, float]:
@@ -156,19 +176,50 @@ def f_h_beta(d: float, b: float, grade: int) -> float:
     return (0.07 * math.sqrt(d) + 0.45 * math.sqrt(b) + 3.0) * 2.0 ** ((grade - 5) / 2.0)
 
 
-def k_h_beta_method_c(F_m: float, b: float, d1: float, grade: int, h: float,
-                      c_gamma_alpha: float = 20.0) -> tuple[float, float]:
-    """(K_Hβ, K_Fβ) by ISO 6336-1 method C with F_βx = f_ma = f_Hβ (no shaft bending, see module docstring)."""
-    F_bx = f_h_beta(d1, b, grade)
+def f_sh_torsion(F_m: float, b: float, d1: float) -> float:
+    """Pinion torsional deformation f_sh, µm, of ISO 6336-1 method C with no shaft bending:
+    0.023·(F_m/b)·(b/d_1)² (F_m in N, b and d_1 in mm)."""
+    return 0.023 * (F_m / b) * (b / d1) ** 2
+
+
+@dataclass(frozen=True)
+class FaceLoad:
+    """The steps of K_Hβ, K_Fβ by ISO 6336-1 method C (µm, N/(mm·µm), N/mm)."""
+
+    f_sh: float
+    f_ma: float
+    F_betax: float
+    y_beta: float
+    F_betay: float
+    c_gamma_beta: float
+    F_m_b: float
+    K_Hbeta: float
+    h: float
+    N_F: float
+    K_Fbeta: float
+
+
+def face_load_method_c(F_m: float, b: float, d1: float, grade: int, h: float, c_gamma_alpha: float = 20.0,
+                       f_sh: float = 0.0) -> FaceLoad:
+    """K_Hβ and K_Fβ by ISO 6336-1 method C: F_βx = 1.33·f_sh + f_ma, f_ma = f_Hβ (see module docstring)."""
+    f_ma = f_h_beta(d1, b, grade)
+    F_bx = 1.33 * f_sh + f_ma
     y_b = min(0.15 * F_bx, 6.0)
     F_by = F_bx - y_b
     c_gb = 0.85 * c_gamma_alpha
     K_Hb = 1.0 + c_gb * F_by / (2.0 * F_m / b)
-    if K_Hb > 2.0:  # eq. 41: the contact does not span the face
+    if K_Hb > 2.0:  # the contact does not span the face
         K_Hb = math.sqrt(2.0 * c_gb * F_by / (F_m / b))
     bh = b / h
     N_F = bh * bh / (1.0 + bh + bh * bh)
-    return K_Hb, K_Hb ** N_F
+    return FaceLoad(f_sh, f_ma, F_bx, y_b, F_by, c_gb, F_m / b, K_Hb, h, N_F, K_Hb ** N_F)
+
+
+def k_h_beta_method_c(F_m: float, b: float, d1: float, grade: int, h: float,
+                      c_gamma_alpha: float = 20.0, f_sh: float = 0.0) -> tuple[float, float]:
+    """(K_Hβ, K_Fβ) by ISO 6336-1 method C with F_βx = 1.33·f_sh + f_ma (see module docstring)."""
+    f = face_load_method_c(F_m, b, d1, grade, h, c_gamma_alpha, f_sh)
+    return f.K_Hbeta, f.K_Fbeta
 
 
 def k_h_alpha(grade: int) -> float:
@@ -178,14 +229,24 @@ def k_h_alpha(grade: int) -> float:
     return _KHA_HARDENED_SPUR[grade]
 
 
+def d_en_single_contact(d_a: float, d_b: float, m: float, alpha: float, eps_alpha: float) -> float:
+    """Diameter of the outer point of single pair contact of an external spur gear (ISO 6336-3:2006 method B):
+    the tip point moved (ε_α − 1) base pitches down the line of action."""
+    r_b = 0.5 * d_b
+    g = math.sqrt((0.5 * d_a) ** 2 - r_b ** 2) - math.pi * m * math.cos(alpha) * (eps_alpha - 1.0)
+    return 2.0 * math.sqrt(g * g + r_b * r_b)
+
+
 @dataclass(frozen=True)
 class MeshLoad:
-    """What loads one mesh: the pinion torque per mesh, the speed, the quality."""
+    """What loads one mesh: the pinion torque per mesh, the speed, the quality; `pinion_torsion`: the pinion
+    passes its torque through its body (a sun), so its torsional deformation f_sh enters K_Hβ."""
 
     T1: float          # N·m on the pinion (one mesh)
     v: float = 0.0     # m/s at the reference circle (relative to the carrier)
     K_A: float = 1.0
     grade: int = 6
+    pinion_torsion: bool = False
 
 
 @dataclass(frozen=True)
@@ -204,13 +265,30 @@ class MeshStress:
     Z_B: float
     sigma_H0: float
     sigma_H: float
-    Y_F1: float
+    Y_F1: float          # method C (load at the tip), Y_ε applied
     Y_S1: float
     Y_F2: float | None
     Y_S2: float | None
     Y_eps: float
     sigma_F1: float
     sigma_F2: float | None
+    # --- the basis and the other method
+    d1: float = 0.0              # mm, the pinion's reference diameter F_t is taken on
+    u: float = 0.0               # z2/z1, negative for an internal mate
+    eps_alpha: float = 0.0
+    Z_D: float = 1.0
+    face: FaceLoad | None = None
+    root1_B: ToothForm | None = None     # method B (outer point of single contact), no Y_ε
+    root2_B: ToothForm | None = None
+    d_en1: float = 0.0
+    d_en2: float | None = None
+    sigma_F1_B: float = 0.0
+    sigma_F2_B: float | None = None
+
+    @property
+    def sigma_H_wheel(self) -> float:
+        """σ_H of the wheel: Z_D instead of Z_B (ISO 6336-2)."""
+        return self.sigma_H / self.Z_B * self.Z_D
 
 
 def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad) -> MeshStress:
@@ -224,10 +302,14 @@ def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad) -> Mes
     F_t = 2000.0 * load.T1 / d1
     K_v = k_v_method_b(load.v, g1.z, abs(u), F_t / b, load.K_A, load.grade)
     h = 0.5 * (d_a1 - g1.d_f)
-    K_Hb, K_Fb = k_h_beta_method_c(F_t * load.K_A * K_v, b, d1, load.grade, h)
+    F_m = F_t * load.K_A * K_v
+    f_sh = f_sh_torsion(F_m, b, d1) if load.pinion_torsion else 0.0
+    face = face_load_method_c(F_m, b, d1, load.grade, h, f_sh=f_sh)
+    K_Hb, K_Fb = face.K_Hbeta, face.K_Fbeta
     K_Ha = k_h_alpha(load.grade)
     Z_H, Z_E, Z_e = contact_factors(alpha, aw, eps)
     Z_B = z_b(aw, d_a1, g1.d_b, g1.z, d_a2, g2.d_b, g2.z, eps, pair.internal)
+    Z_D = z_d(aw, d_a1, g1.d_b, g1.z, d_a2, g2.d_b, g2.z, eps, pair.internal)
     s0 = Z_H * Z_E * Z_e * math.sqrt(F_t / (d1 * b) * (u + 1.0) / u)
     sH = Z_B * s0 * math.sqrt(load.K_A * K_v * K_Hb * K_Ha)
     rack = g1.rack
@@ -235,10 +317,19 @@ def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad) -> Mes
     K = load.K_A * K_v * K_Fb * K_Ha
     f1 = tooth_form_factor(g1.z, m, g1.x, d_a1, alpha, rack.h_fP_star, rack.rho_f_star)
     sF1 = F_t / (b * m) * f1.Y_F * f1.Y_S * Y_eps * K
-    Y_F2 = Y_S2 = sF2 = None
+    d_en1 = d_en_single_contact(d_a1, g1.d_b, m, alpha, eps)
+    b1 = tooth_form_factor(g1.z, m, g1.x, d_en1, alpha, rack.h_fP_star, rack.rho_f_star)
+    sF1_B = F_t / (b * m) * b1.Y_F * b1.Y_S * K
+    Y_F2 = Y_S2 = sF2 = b2 = d_en2 = sF2_B = None
     if not pair.internal:
-        f2 = tooth_form_factor(g2.z, m, g2.x, d_a2, alpha, rack.h_fP_star, rack.rho_f_star)
+        rack2 = g2.rack
+        f2 = tooth_form_factor(g2.z, m, g2.x, d_a2, alpha, rack2.h_fP_star, rack2.rho_f_star)
         Y_F2, Y_S2 = f2.Y_F, f2.Y_S
         sF2 = F_t / (b * m) * Y_F2 * Y_S2 * Y_eps * K
+        d_en2 = d_en_single_contact(d_a2, g2.d_b, m, alpha, eps)
+        b2 = tooth_form_factor(g2.z, m, g2.x, d_en2, alpha, rack2.h_fP_star, rack2.rho_f_star)
+        sF2_B = F_t / (b * m) * b2.Y_F * b2.Y_S * K
     return MeshStress(F_t, b, load.K_A, K_v, K_Hb, K_Ha, K_Fb, K_Ha, Z_H, Z_E, Z_e, Z_B, s0, sH,
-                      f1.Y_F, f1.Y_S, Y_F2, Y_S2, Y_eps, sF1, sF2)
+                      f1.Y_F, f1.Y_S, Y_F2, Y_S2, Y_eps, sF1, sF2,
+                      d1=d1, u=u, eps_alpha=eps, Z_D=Z_D, face=face, root1_B=b1, root2_B=b2, d_en1=d_en1,
+                      d_en2=d_en2, sigma_F1_B=sF1_B, sigma_F2_B=sF2_B)

@@ -8,6 +8,7 @@ from .animation import carrier_turn_animation
 from .design import FinalDriveDesign, body_offsets, design
 from .carrier import carrier, pin_sweep_results, start_pin_sweep
 from .strength import strength
+from .fatigue import fatigue
 from .traction import traction
 from .proofs import dms, outline_checks, sheet_and_conditions, start_sweep, sweep_results
 
@@ -107,5 +108,5 @@ def notes(dd: FinalDriveDesign, w, built: dict) -> None:
 start_animation, collect_animation = pipeline_steps(carrier_turn_animation)
 
 build = Pipeline(lambda p, w: design_of(p, design),
-                  (sheet_and_conditions, strength, traction, outline_checks, start_sweep, start_pin_sweep, solids, carrier,
+                  (sheet_and_conditions, strength, fatigue, traction, outline_checks, start_sweep, start_pin_sweep, solids, carrier,
                    sweep_results, pin_sweep_results, start_animation, assembly_and_drawings, notes, collect_animation))

@@ -78,8 +78,32 @@ class FinalDriveParams(PartParams):
                                   min=100.0, max=2500.0, why="the range of gear steels")
     bending_safety_S_Fm: float = param(1.75, "", "required bending safety S_Fm (seed 004 ch. 4.1)",
                                        min=1.0, max=5.0, why="no code asks more")
-    contact_safety_S_Hmin: float = param(1.0, "", "required contact safety against σ_Hmax", min=1.0, max=5.0,
-                                         why="no code asks more")
+    contact_safety_S_Hmin: float = param(1.0, "", "required static contact safety against σ_Hmax = 44·HRC",
+                                         min=1.0, max=5.0, why="no code asks more")
+    # --- fatigue (ISO 6336-2/-3/-5); seed 004 prints no duty, no oil and no roughness: stated defaults ------
+    service_life_h: float = param(100.0, "h", "running time at the design torque and speed that the gears must "
+                                  "endure (load cycles of each gear follow from its speed relative to the carrier; "
+                                  "seed 004 prints no duty)", min=0, min_exclusive=True, max=200000.0,
+                                  why="23 years of running day and night")
+    sigma_Hlim_MPa: float = param(1500.0, "MPa", "pitting endurance limit σ_Hlim of the flank (seed 004: carburized "
+                                  "18Х2Н4МА at 59 HRC; ISO 6336-5:2003, case-hardened wrought steel, quality MQ: "
+                                  "1500; ML 1300, ME 1650)",
+                                  min=200.0, max=2000.0, why="above ISO 6336-5's best case-hardened steel (ME 1650)")
+    sigma_Flim_MPa: float = param(425.0, "MPa", "bending endurance limit σ_Flim of the root (carburized 18Х2Н4МА; "
+                                  "ISO 6336-5:2003, case-hardened wrought steel, quality MQ, core hardness >= 25 HRC: "
+                                  "425; ML 312, ME 525)",
+                                  min=100.0, max=800.0, why="above ISO 6336-5's best case-hardened steel (ME 525)")
+    flank_roughness_Rz_um: float = param(3.0, "µm", "mean peak-to-valley roughness R_z of the flanks (ground)",
+                                         min=0.1, max=40.0, why="a rough hobbed flank")
+    root_roughness_Rz_um: float = param(10.0, "µm", "mean peak-to-valley roughness R_z of the tooth root (hobbed, "
+                                        "not ground)", min=0.1, max=40.0,
+                                        why="the range of ISO 6336-3's surface factor Y_RrelT")
+    oil_viscosity_40_mm2_s: float = param(220.0, "mm²/s", "kinematic viscosity ν_40 of the gear oil at 40 °C "
+                                          "(ISO VG 220)", min=10.0, max=3200.0, why="ISO VG 3200, the thickest grade")
+    pitting_safety_S_Hmin: float = param(1.0, "", "required pitting fatigue safety S_Hmin (ISO 6336-2)",
+                                         min=1.0, max=5.0, why="no code asks more")
+    bending_fatigue_safety_S_Fmin: float = param(1.4, "", "required bending fatigue safety S_Fmin (ISO 6336-3)",
+                                                 min=1.0, max=5.0, why="no code asks more")
     sweep_steps_per_deg: float = param(float(policy.PLANETARY_SWEEP_STEPS_PER_DEG), "1/deg",
                                        "interference sweep steps per degree of carrier turn",
                                        min=float(policy.PLANETARY_SWEEP_STEPS_PER_DEG), max=20.0,

@@ -1,5 +1,6 @@
 """The final drive's load path and strength (seed 004 ch. 4.1–4.3): working stresses of both meshes
-by ISO 6336 at the design torque, the face width each mesh needs, the planet and carrier bearings'
+by ISO 6336 at the design torque, their static safeties against the thesis's allowables (σ_Hmax = 44·HRC,
+σ_FlimM = 2.8·σ_t; the fatigue safeties are in :mod:`.fatigue`), the face width each mesh needs, the planet and carrier bearings'
 static safety (ISO 76), the carrier spline and the carrier shaft — as derived values, checks, a
 bearing table and a note with the thesis's values beside ours.
 """
@@ -38,7 +39,8 @@ def mesh_stresses(p, ps, b_sp: float | None = None, b_pr: float | None = None):
     from ...gears.iso6336 import MeshLoad, mesh_stress
 
     T1, v = _loads(p, ps)
-    load = MeshLoad(T1, v, p.application_factor_K_A, p.accuracy_grade)
+    # the sun passes the whole input torque through its body: its torsional wind-up enters K_Hβ (f_sh)
+    load = MeshLoad(T1, v, p.application_factor_K_A, p.accuracy_grade, pinion_torsion=True)
     b_sp = min(p.width_sun_mm, p.width_planet_mm) if b_sp is None else b_sp
     b_pr = min(p.width_planet_mm, p.width_ring_mm) if b_pr is None else b_pr
     sp = mesh_stress(ps.mesh_sun_planet, ps.d_a_sun, ps.d_a_planet, b_sp, load)
@@ -55,16 +57,17 @@ def _allowables(p):
 
 
 def _margin(p, s) -> float:
-    """Smallest ratio (achieved safety / required safety) of one mesh; >= 1 passes."""
+    """Smallest ratio (achieved static safety / required safety) of one mesh, root stresses by method B;
+    >= 1 passes."""
     sHmax, sFlim = _allowables(p)
-    out = [sHmax / s.sigma_H / p.contact_safety_S_Hmin, sFlim / s.sigma_F1 / p.bending_safety_S_Fm]
-    if s.sigma_F2 is not None:
-        out.append(sFlim / s.sigma_F2 / p.bending_safety_S_Fm)
+    out = [sHmax / s.sigma_H / p.contact_safety_S_Hmin, sFlim / s.sigma_F1_B / p.bending_safety_S_Fm]
+    if s.sigma_F2_B is not None:
+        out.append(sFlim / s.sigma_F2_B / p.bending_safety_S_Fm)
     return min(out)
 
 
 def required_face_width(p, ps, mesh: str) -> float:
-    """Least face width (mm) at which the mesh ('sun_planet' or 'planet_ring') meets S_Hmin and S_Fm."""
+    """Least face width (mm) at which the mesh ('sun_planet' or 'planet_ring') meets the static S_Hmin and S_Fm."""
     from scipy.optimize import brentq
 
     def f(b):
@@ -98,30 +101,45 @@ def strength(dd: FinalDriveDesign, w, built: dict) -> None:
     for tag, s, gears in (("sun_planet", sp, ("sun", "planet")), ("planet_ring", pr, ("planet", "ring"))):
         b_req = required_face_width(p, ps, tag)
         b = s.b
+        roots = [(gears[0], s.sigma_F1, s.sigma_F1_B, s.Y_F1, s.Y_S1)]
+        if s.sigma_F2 is not None:
+            roots.append((gears[1], s.sigma_F2, s.sigma_F2_B, s.Y_F2, s.Y_S2))
         vals = {"F_t_N": s.F_t, "b_mm": b, "K_A": s.K_A, "K_v": s.K_v, "K_Hbeta": s.K_Hbeta, "K_Halpha": s.K_Halpha,
                 "K_Fbeta": s.K_Fbeta, "K_Falpha": s.K_Falpha, "Z_H": s.Z_H, "Z_E": s.Z_E, "Z_eps": s.Z_eps,
                 "Z_B": s.Z_B, "Y_eps": s.Y_eps, "sigma_H0_MPa": s.sigma_H0, "sigma_H_MPa": s.sigma_H,
-                "S_H": sHmax / s.sigma_H, f"Y_F_{gears[0]}": s.Y_F1, f"Y_S_{gears[0]}": s.Y_S1,
-                f"sigma_F_{gears[0]}_MPa": s.sigma_F1, f"S_F_{gears[0]}": sFlim / s.sigma_F1,
-                "face_width_required_mm": b_req}
-        if s.sigma_F2 is not None:
-            vals.update({f"Y_F_{gears[1]}": s.Y_F2, f"Y_S_{gears[1]}": s.Y_S2,
-                         f"sigma_F_{gears[1]}_MPa": s.sigma_F2, f"S_F_{gears[1]}": sFlim / s.sigma_F2})
+                "S_H_static": sHmax / s.sigma_H}
+        for g, sC, sB, YF, YS in roots:
+            vals.update({f"Y_F_method_C_{g}": YF, f"Y_S_method_C_{g}": YS, f"sigma_F_{g}_method_C_MPa": sC,
+                         f"sigma_F_{g}_method_B_MPa": sB, f"S_F_{g}_static": sFlim / sB})
+        vals["face_width_required_mm"] = b_req
         for k, x in vals.items():
             d[f"strength_{tag}_{k}"] = x
             rows.append([tag, k, x])
-        w.add_checks([
-            Check.at_least(f"strength_{tag}.S_H", sHmax / s.sigma_H, p.contact_safety_S_Hmin, "",
-                           f"ISO 6336-2 σ_H = {s.sigma_H:.1f} MPa against σ_Hmax = 44·HRC = {sHmax:.0f} MPa "
-                           f"(seed 004 ch. 4.1)"),
-            Check.at_least(f"strength_{tag}.S_F_{gears[0]}", sFlim / s.sigma_F1, p.bending_safety_S_Fm, "",
-                           f"ISO 6336-3 σ_F = {s.sigma_F1:.1f} MPa against σ_FlimM = 2.8·σ_t = {sFlim:.0f} MPa"),
+        w.describe(f"strength_{tag}_S_H_static", "", "static contact safety σ_Hmax/σ_H, σ_Hmax = 44·HRC (seed 004 ch. 4.1)")
+        w.describe(f"strength_{tag}_face_width_required_mm", "mm",
+                   "least face width meeting the static S_H and S_F (root stress by ISO 6336-3 method B)")
+        checks = [
+            Check.at_least(f"strength_{tag}.S_H_static", sHmax / s.sigma_H, p.contact_safety_S_Hmin, "",
+                           f"S_H static (σ_Hmax = 44·HRC = {sHmax:.0f} MPa, seed 004 ch. 4.1) over ISO 6336-2 "
+                           f"σ_H = {s.sigma_H:.1f} MPa at the design torque"),
             Check.at_most(f"strength_{tag}.face_width", b_req, b, "mm",
-                          f"face width the mesh needs ({b_req:.2f} mm) within the one it has ({b:g} mm)"),
-        ])
-        if s.sigma_F2 is not None:
-            w.add_checks([Check.at_least(f"strength_{tag}.S_F_{gears[1]}", sFlim / s.sigma_F2, p.bending_safety_S_Fm,
-                                         "", f"ISO 6336-3 σ_F = {s.sigma_F2:.1f} MPa against σ_FlimM = {sFlim:.0f} MPa")])
+                          f"face width the mesh needs for the static checks ({b_req:.2f} mm) within the one it "
+                          f"has ({b:g} mm)"),
+        ]
+        for g, sC, sB, YF, YS in roots:
+            w.describe(f"strength_{tag}_sigma_F_{g}_method_B_MPa", "MPa",
+                       "root stress by ISO 6336-3:2006 method B (load at the outer point of single contact); the checks use it")
+            w.describe(f"strength_{tag}_sigma_F_{g}_method_C_MPa", "MPa",
+                       "root stress by ISO 6336-3:1996 method C (load at the tip, Y_ε), for comparison")
+            w.describe(f"strength_{tag}_Y_F_method_C_{g}", "", "form factor Y_F, load at the tip (method C)")
+            w.describe(f"strength_{tag}_Y_S_method_C_{g}", "", "stress correction factor Y_S, load at the tip (method C)")
+            w.describe(f"strength_{tag}_S_F_{g}_static", "",
+                       "static bending safety σ_FlimM/σ_F (method B), σ_FlimM = 2.8·σ_t (seed 004 ch. 4.1)")
+            checks.append(Check.at_least(
+                f"strength_{tag}.S_F_{g}_static", sFlim / sB, p.bending_safety_S_Fm, "",
+                f"S_F static (σ_FlimM = 2.8·σ_t = {sFlim:.0f} MPa, seed 004 ch. 4.1) over ISO 6336-3 method B "
+                f"σ_F = {sB:.1f} MPa (method C: {sC:.1f} MPa)"))
+        w.add_checks(checks)
     w.add_table("strength_meshes", ["mesh", "quantity", "value"], rows)
 
     # --- bearings (seed 004 §4.2, ISO 76) ---------------------------------------------------------------
@@ -167,10 +185,13 @@ def strength(dd: FinalDriveDesign, w, built: dict) -> None:
         f"Strength at the design torque M_vk.max = {p.sprocket_torque_Nm:.1f} N·m (seed 004 eq. 40 with t = 0.125 m; "
         f"printed 90 690 N·m), sun torque M_vk·Ω/i_sil = {T1 * p.n_planets:.1f} N·m (thesis 22 399 N·m), "
         f"{T1:.1f} N·m per mesh; relative pitch-line speed {v:.3f} m/s at {p.design_speed_kmh:g} km/h. "
-        f"ISO 6336 (spur, method B/C): sun–planet σ_H = {sp.sigma_H:.1f} MPa (S_H = {sHmax / sp.sigma_H:.3f}), "
-        f"σ_F sun {sp.sigma_F1:.1f} MPa (S_F = {sFlim / sp.sigma_F1:.3f}), planet {sp.sigma_F2:.1f} MPa; "
-        f"planet–ring σ_H = {pr.sigma_H:.1f} MPa (S_H = {sHmax / pr.sigma_H:.3f}), σ_F planet {pr.sigma_F1:.1f} MPa "
-        f"(S_F = {sFlim / pr.sigma_F1:.3f}). Allowables as the thesis gives them: σ_Hmax = 44·HRC = {sHmax:.0f} MPa, "
+        f"ISO 6336 (spur; K_Hβ by method C with the sun's torsional deformation f_sh): sun–planet σ_H = "
+        f"{sp.sigma_H:.1f} MPa (S_H static = 44·HRC/σ_H = {sHmax / sp.sigma_H:.3f}), σ_F by method B sun "
+        f"{sp.sigma_F1_B:.1f} MPa (S_F static = {sFlim / sp.sigma_F1_B:.3f}), planet {sp.sigma_F2_B:.1f} MPa "
+        f"(method C: {sp.sigma_F1:.1f}, {sp.sigma_F2:.1f} MPa); planet–ring σ_H = {pr.sigma_H:.1f} MPa "
+        f"(S_H static = {sHmax / pr.sigma_H:.3f}), σ_F planet {pr.sigma_F1_B:.1f} MPa by method B "
+        f"(S_F static = {sFlim / pr.sigma_F1_B:.3f}; method C {pr.sigma_F1:.1f} MPa). These static safeties set the "
+        f"working stresses at the peak torque against the thesis's allowables: σ_Hmax = 44·HRC = {sHmax:.0f} MPa, "
         f"σ_FlimM = 2.8·σ_t = {sFlim:.0f} MPa, σ_Fmax = σ_FlimM/S_Fm = {sFlim / p.bending_safety_S_Fm:.0f} MPa; the thesis "
         f"computes no working stress. The contact formulas used here (Z_H, Z_E, Z_ε, Z_B, σ_H0: the helical "
         f"ones of gears/iso6336_helical.py at β = 0) reproduce the published ISO/TR 6336-30:2017 example 1 within 1 % "
