@@ -105,7 +105,7 @@ test: $(STAMP)
 # the API reference from the docstrings (pdoc), warnings as errors
 docs: $(STAMP)
 	rm -rf docs/api
-	$(BIN)/python -W error -m pdoc propulsor propulsor.api -o docs/api
+	$(BIN)/python -W error -m pdoc propulsor.api propulsor.errors propulsor.check -o docs/api
 
 check: $(STAMP)
 	$(BIN)/propulsor check output/

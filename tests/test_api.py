@@ -157,3 +157,12 @@ def test_import_propulsor_loads_no_kernel_and_the_api_has_docstrings():
             doc = getattr(member, "__doc__", None) or getattr(getattr(member, "fget", None), "__doc__", None)
             assert (doc or "").strip(), name
     assert json.loads(json.dumps(part_type_names()))
+
+
+def test_the_api_reference_builds_without_a_warning(tmp_path):
+    """What `make docs` runs (pdoc, warnings as errors)."""
+    r = subprocess.run([sys.executable, "-W", "error", "-m", "pdoc", "propulsor.api", "propulsor.errors",
+                        "propulsor.check", "-o", str(tmp_path)], capture_output=True, text=True, cwd=ROOT, timeout=300)
+    assert r.returncode == 0, r.stderr[-2000:]
+    page = (tmp_path / "propulsor" / "api.html").read_text()
+    assert "def part" in page or "part(" in page
