@@ -161,7 +161,7 @@ def _search_design(p: NoncircularPairParams, law: WalkingLaw, progress) -> Desig
     z_H = p.driven_teeth
     L_ref = centre_distance(law, m, z_H)
     progress(f"law search: {len(entries)} catalogue shapers, blend half-width and hand-over value")
-    with input_names({"shaper_d0_mm": "center_distance_band_mm"}):
+    with input_names({"L_band": "center_distance_band_mm"}):
         res = search_law(law, m, z_H, p.driver_shift, [(e.d0_mm, e.cutter(alpha)) for e in entries], L_ref,
                          p.center_distance_band_mm, alpha)
     rack = _rack(p)
