@@ -390,6 +390,50 @@ def test_seed000_unshifted_refused_with_numbers(tmp_path, capsys):
     assert not (tmp_path / "out").exists()
 
 
+@pytest.mark.parametrize("part, change, param", [
+    ("ncg_seed000", {"center_distance_band_mm": "0.01"}, "center_distance_band_mm = 0.01: no blend keeps both"),
+    ("ncg_seed002", {"law_search": "false", "smoothing_deg": "3.0"}, "smoothing_deg = 3.0: the pitch curves are not"),
+    ("ncg_seed000", {"law_search": "false", "smoothing_max_deg": "6.0"}, "smoothing_max_deg = 6.0: no C2 smoothing"),
+    ("ncg_seed000", {"law_search": "false", "shaper_teeth": "60"}, "needs a shaper with z0 <= 21"),
+    ("ncg_seed002", {"module_mm": "0.3"}, "module_mm = 0.3: the cutter catalogue lists no shaper"),
+    ("ncg_seed002", {"mounting_distance_mm": "100.0"}, "mounting_distance_mm = 100.0: must be >= the design"),
+])
+def test_dry_run_refuses_what_the_build_refuses(tmp_path, capsys, part, change, param):
+    """Files the dry run called valid and the build refused seconds later: the dry run runs the same screen
+    (generability of the blend, the law search's band, the catalogue shaper at the module, the shaper a
+    concave stretch needs, the installed centre distance) and prints the build's own line; nothing written."""
+    text = (PARTS / f"{part}.toml").read_text()
+    for k, v in change.items():
+        text, n = re.subn(rf"(?m)^{k}\s*=.*$", f"{k} = {v}", text)
+        if not n:
+            text = text.replace("[meta]", f"{k} = {v}\n\n[meta]", 1)
+    f = tmp_path / "bad.toml"
+    f.write_text(text)
+    out = tmp_path / "out"
+    lines = []
+    for extra in (["--dry-run"], []):
+        rc = main(["build", str(f), "--out", str(out), "-q", *extra])
+        err = capsys.readouterr().err.strip().splitlines()
+        assert rc == 2 and len(err) == 1 and param in err[0], err
+        lines.append(err[0])
+    assert lines[0] == lines[1]
+    assert not out.exists() and [p.name for p in tmp_path.iterdir()] == ["bad.toml"]
+
+
+def test_build_reuses_the_dry_runs_screen(monkeypatch):
+    """The screen runs once per part file: the build's design takes the law search of the validation."""
+    import propulsor.gears.law_search as ls
+    from propulsor.building import load_part
+    from propulsor.parts.noncircular_pair.design import screened
+
+    calls = []
+    real = ls.search_law
+    monkeypatch.setattr(ls, "search_law", lambda *a, **k: calls.append(1) or real(*a, **k))
+    _, p, _ = load_part(PARTS / "ncg_seed002.toml")
+    assert len(calls) == 1
+    assert screened(p).search is screened(p).search and len(calls) == 1
+
+
 # --------------------------------------------------------------------------- library pieces
 def test_arc_frame_inverse_and_perimeter():
     from propulsor.gears.noncircular_teeth import ArcFrame
