@@ -218,3 +218,12 @@ LAW_SEARCH_TRIES_PER_SHAPER = 2
 #: largest gap (in modules) between the fillet start of a re-phased shaper (own x0) and the root
 #: equidistant that the outline closes by lifting the root; more is refused (InputError)
 ROOT_BRIDGE_MAX_MODULE = 0.1
+
+# --- non-circular pair: as-built speed (parts/noncircular_pair/as_built.py) ----------------------------
+#: the loaded contact law is split where its slope changes by more than this inside an interval (a change of
+#: 0.2 % of the hub speed) ...
+AS_BUILT_SLOPE_TOL = 2e-3
+#: ... down to intervals of this width (rad of the driven wheel; 1e-5 rad ~ 1 micrometre on its pitch curve)
+AS_BUILT_STEP_MIN_RAD = 1e-5
+#: at most this many contact positions measured beyond the proof's (about 35 ms each)
+AS_BUILT_EVALUATIONS_MAX = 600
