@@ -70,7 +70,10 @@ def load_part(part_file: Path):
     estimate = check_size(part_type, params, part_file) if early else None
     if callable(getattr(params, "validate", None)):
         params.validate()
-    return part_type, params, estimate or check_size(part_type, params, part_file)
+    estimate = estimate or check_size(part_type, params, part_file)
+    if callable(getattr(params, "screen", None)):
+        params.screen()  # what the build would refuse before making any geometry (may take seconds)
+    return part_type, params, estimate
 
 
 def write_depfile(depfile: Path, target: Path, files) -> None:

@@ -263,3 +263,12 @@ DXF_POINTS_MAX = 4_000_000
 #: peak memory of `propulsor check` (bytes of address space): the limits above keep it below; the
 #: whole output/ of the 13 parts needs ~1.1 GB resident
 CHECK_MEMORY_CEILING = 2048 * MIB
+
+# --- non-circular pair: as-built speed (parts/noncircular_pair/as_built.py) ----------------------------
+#: the loaded contact law is split where its slope changes by more than this inside an interval (a change of
+#: 0.2 % of the hub speed) ...
+AS_BUILT_SLOPE_TOL = 2e-3
+#: ... down to intervals of this width (rad of the driven wheel; 1e-5 rad ~ 1 micrometre on its pitch curve)
+AS_BUILT_STEP_MIN_RAD = 1e-5
+#: at most this many contact positions measured beyond the proof's (about 35 ms each)
+AS_BUILT_EVALUATIONS_MAX = 600

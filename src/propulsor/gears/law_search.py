@@ -84,8 +84,8 @@ def search_law(law: WalkingLaw, m: float, z_H: int, x: float, shapers, L_ref: fl
                alpha: float = math.radians(20.0), h_a: float = 1.0) -> LawSearch:
     """Scan the blend (delta on ``policy.LAW_SEARCH_DELTA_DEG``, smallest generable u_h by bisection)
     for every shaper of ``shapers`` ((d0_mm, ShaperCutter) pairs, the driven wheel's shift -x, the
-    driver's +x).  InputError naming ``shaper_d0_mm`` when no point is generable within the band
-    |L - L_ref| <= L_band."""
+    driver's +x).  InputError naming ``L_band`` (its value, the band and L_ref in the limit) when no
+    point is generable within the band |L - L_ref| <= L_band."""
     u = law.u
     pts = []
     n_eval = 0
@@ -128,8 +128,10 @@ def search_law(law: WalkingLaw, m: float, z_H: int, x: float, shapers, L_ref: fl
             pts.append(LawPoint(float(d0), int(sh.z0), float(delta), float(hi), float(L),
                                 float(hub_speed_ripple(sl).ripple), float(margin), binding))
     if not pts:
-        raise InputError("shaper_d0_mm", [d for d, _ in shapers],
-                         f"no blend keeps both pitch curves generable with L within {L_band:g} mm of {L_ref:.3f} mm",
+        d0s = ", ".join(f"{d:g}" for d, _ in shapers)
+        raise InputError("L_band", L_band,
+                         f"no blend keeps both pitch curves generable with |L - L_exact| <= {L_band:g} mm "
+                         f"(L_exact = {L_ref:.3f} mm) for the shapers d0 = {d0s} mm at m = {m:g} mm",
                          "a larger driver_shift, more teeth or a larger band")
     rip = np.array([p.ripple for p in pts])
     fL = pareto(np.array([p.L for p in pts]), rip, larger_is_better=False)

@@ -32,8 +32,8 @@ _TOOTH_KEYS = {"m": "module_mm", "z_H": "driven_teeth", "z0": "shaper_teeth"}
 #: the same with a catalogue shaper (its z0 follows from d0 and m)
 _TOOTH_KEYS_D0 = {"m": "module_mm", "z_H": "driven_teeth", "z0": "shaper_d0_mm"}
 
-__all__ = ["Design", "PairDesign", "design", "pair_design", "design_generated", "design_sectors",
-           "sector_design_table", "mounting", "gear_profiles"]
+__all__ = ["Design", "PairDesign", "Screen", "screen", "screened", "design", "pair_design", "design_generated",
+           "design_sectors", "sector_design_table", "mounting", "gear_profiles"]
 
 
 # =========================================================================== design
@@ -135,16 +135,55 @@ def _smallest_generable(law, cutter, z_H) -> str:
             f"(smoothing_max_deg >= {math.degrees(d.delta):.3f}; hub speed ripple {100 * d.ripple.ripple:.2f} %)")
 
 
-def _search_design(p: NoncircularPairParams, law: WalkingLaw, progress) -> Design:
-    """law_search = true: the ranked generable blends of ``gears.law_search.search_law`` over the
-    catalogue shapers at this module; the teeth are generated for each in turn until both gears can be
-    cut (the generator refuses with the reason: tip land, generating limit of the cutter)."""
+@dataclass(frozen=True)
+class Screen:
+    """What the design settles before any outline is made (:func:`screen`): the module, the blend and the
+    catalogue shaper (generated teeth), the ranked points of the law search, the sector table."""
+
+    m: float
+    smoothing: object = None  # SmoothingDesign (generated, no law search)
+    shaper: object = None     # the shaper of ``shaper_of`` (None: shaper_teeth with x0 = -x)
+    search: object = None     # gears.law_search.LawSearch (law_search = true)
+    entries: tuple = ()       # catalogue.ShaperEntry at the module (law_search = true)
+    sector: tuple = ()        # (SectorTable, L, m) of the sector method
+
+
+def screen(p: NoncircularPairParams) -> Screen:
+    """Every refusal of the inputs that needs no outline: the generability screen (rack undercut limit,
+    shaper against concave stretches) of the given or smallest blend, the law search within
+    center_distance_band_mm, the catalogue shaper at the module, the shaper the concave stretches need, the
+    sector teeth's tip land, the installed centre distance.  ``propulsor build --dry-run`` runs it (so a file
+    it calls valid is not refused later for these), and the build uses its result (``pipeline.design_of``)."""
+    law = _law(p)
+    if p.method == "sectors":
+        return _screen_sectors(p)
+    _rack(p)
+    if p.law_search:
+        return _screen_search(p, law)
+    m = p.module_mm if p.module_mm > 0 else 1.0
+    sm = _smoothing(p, law, m)
+    if p.center_distance_mm > 0:  # module from L: the design is scale invariant (rho and limits ~ m)
+        m *= p.center_distance_mm / sm.L
+        sm = _smoothing(_replace(p, module_mm=m, center_distance_mm=0.0), law, m)
+    sh = shaper_of(p, m)
+    common = dict(m=m, thinning_mm=_thinning(p), rack=_rack(p), z0=p.shaper_teeth if sh is None else sh.z0,
+                  tip_min_mm=p.tip_land_min_module * m, shaper=sh)
+    from ...gears.noncircular_teeth import ToothSpec
+
+    g = sm.generability
+    with input_names(_TOOTH_KEYS if sh is None else _TOOTH_KEYS_D0):
+        for chk, x in ((g.driver, p.driver_shift), (g.driven, -p.driver_shift)):
+            if chk.concave:  # the shaper this gear needs must exist
+                ToothSpec(x=x, **common).shaper_tools()
+    _mounting_fits(p, sm.L)
+    return Screen(m, smoothing=sm, shaper=sh)
+
+
+def _screen_search(p: NoncircularPairParams, law: WalkingLaw) -> Screen:
+    """The law search's refusals: no module, no catalogue shaper at it, no generable blend within the band."""
     from ...gears.catalogue import shaper_diameters, shaper_entry
     from ...gears.law_search import search_law
     from ...gears.noncircular import centre_distance
-    from ...gears.noncircular_teeth import ArcFrame, ToothSpec
-    from ...geometry.noncircular_outline import generate_gear
-    from ...policy import LAW_SEARCH_TRIES, LAW_SEARCH_TRIES_PER_SHAPER
 
     if not p.module_mm > 0:
         raise InputError("module_mm", p.module_mm, "the law search needs the module (catalogue cutters)")
@@ -158,12 +197,56 @@ def _search_design(p: NoncircularPairParams, law: WalkingLaw, progress) -> Desig
             continue
     if not entries:
         raise InputError("module_mm", m, "the cutter catalogue lists no shaper at this module")
-    z_H = p.driven_teeth
-    L_ref = centre_distance(law, m, z_H)
-    progress(f"law search: {len(entries)} catalogue shapers, blend half-width and hand-over value")
-    with input_names({"shaper_d0_mm": "center_distance_band_mm"}):
-        res = search_law(law, m, z_H, p.driver_shift, [(e.d0_mm, e.cutter(alpha)) for e in entries], L_ref,
+    L_ref = centre_distance(law, m, p.driven_teeth)
+    with input_names({"L_band": "center_distance_band_mm"}):
+        res = search_law(law, m, p.driven_teeth, p.driver_shift, [(e.d0_mm, e.cutter(alpha)) for e in entries], L_ref,
                          p.center_distance_band_mm, alpha)
+    _mounting_fits(p, min(q.L for q in res.points))  # the candidate built has one of these L
+    return Screen(m, search=res, entries=tuple(entries))
+
+
+def _screen_sectors(p: NoncircularPairParams) -> Screen:
+    """The sector method's refusals: radii, pointed tips, the installed centre distance."""
+    from ...gears.sectors import sector_tip_thickness
+
+    table, L, m = sector_design_table(p)
+    sector_radii(table, m)
+    t_drv, t_dvn = sector_tip_thickness(table, m, p.backlash_mm)
+    if not min(t_drv, t_dvn) > 0:
+        m_ok = _largest_sector_module(table, p.backlash_mm, m)
+        raise InputError("module_mm", m,
+                         f"sector teeth are pointed at the tip: tip land {min(t_drv, t_dvn):.3f} mm <= 0 "
+                         f"(driver {t_drv:.3f}, driven {t_dvn:.3f} mm) at L = {L:.4f} mm",
+                         f"the largest module with a tip land > 0 at this L is {m_ok:.4f} mm")
+    _mounting_fits(p, L)
+    return Screen(m, sector=(table, L, m))
+
+
+def _mounting_fits(p: NoncircularPairParams, L: float) -> None:
+    if 0 < p.mounting_distance_mm < L - 1e-9:
+        raise InputError("mounting_distance_mm", p.mounting_distance_mm,
+                         f"must be >= the design centre distance L = {L:.6f} mm (or 0)")
+
+
+def screened(p: NoncircularPairParams) -> Screen:
+    """:func:`screen` once per parameter values (the dry run's result is the build's)."""
+    from ..pipeline import design_of
+
+    return design_of(p, screen)
+
+
+def _search_design(p: NoncircularPairParams, law: WalkingLaw, progress) -> Design:
+    """law_search = true: the ranked generable blends of ``gears.law_search.search_law`` over the
+    catalogue shapers at this module; the teeth are generated for each in turn until both gears can be
+    cut (the generator refuses with the reason: tip land, generating limit of the cutter)."""
+    from ...gears.noncircular_teeth import ArcFrame, ToothSpec
+    from ...policy import LAW_SEARCH_TRIES, LAW_SEARCH_TRIES_PER_SHAPER
+
+    progress("law search: catalogue shapers, blend half-width and hand-over value")
+    scr = screened(p)
+    m, res, entries = scr.m, scr.search, scr.entries
+    alpha = math.radians(p.pressure_angle_deg)
+    z_H = p.driven_teeth
     rack = _rack(p)
     th = _thinning(p)
     tries = []
@@ -226,26 +309,17 @@ def design_generated(p: NoncircularPairParams, progress=lambda s: None) -> Desig
 
     law = _law(p)
     z_H = p.driven_teeth
-    m = p.module_mm if p.module_mm > 0 else 1.0
     progress("generated: choosing the smoothing of the law")
-    sm = _smoothing(p, law, m)
-    if p.center_distance_mm > 0:  # module from L: the design is scale invariant (rho and limits ~ m)
-        scale = p.center_distance_mm / sm.L
-        m *= scale
-        sm = _smoothing(_replace(p, module_mm=m, center_distance_mm=0.0), law, m)
+    scr = screened(p)  # the blend, the module and the shaper; the refusals that need no outline
+    m, sm, sh = scr.m, scr.smoothing, scr.shaper
     L = sm.L
     pc = sm.pair
     frame = ArcFrame(pc)
     rack = _rack(p)
     th = _thinning(p)
-    sh = shaper_of(p, m)
     common = dict(m=m, thinning_mm=th, rack=rack, z0=p.shaper_teeth if sh is None else sh.z0,
                   tip_min_mm=p.tip_land_min_module * m, shaper=sh)
-    g = sm.generability
     with input_names(_TOOTH_KEYS if sh is None else _TOOTH_KEYS_D0):
-        for chk, x in ((g.driver, p.driver_shift), (g.driven, -p.driver_shift)):
-            if chk.concave:  # fail fast: the shaper this gear needs must exist
-                ToothSpec(x=x, **common).shaper_tools()
         progress(f"generated: driver teeth ({z_H // law.n}), rack/shaper envelopes")
         drv, dvn = _generate_pair(pc, ToothSpec(x=p.driver_shift, **common), ToothSpec(x=-p.driver_shift, **common),
                                   frame)
@@ -281,19 +355,10 @@ def sector_design_table(p: NoncircularPairParams):
 
 def design_sectors(p: NoncircularPairParams, progress=lambda s: None) -> Design:
     """The papers' sector method on the exact law (seed 000 eqs. 16-52, seed 002 Tables 2-4)."""
-    from ...gears.sectors import sector_tip_thickness
     from ...geometry.sector_outline import sector_driven_gear, sector_driver_gear
 
     law = _law(p)
-    table, L, m = sector_design_table(p)
-    sector_radii(table, m)
-    t_drv, t_dvn = sector_tip_thickness(table, m, p.backlash_mm)
-    if not min(t_drv, t_dvn) > 0:
-        m_ok = _largest_sector_module(table, p.backlash_mm, m)
-        raise InputError("module_mm", m,
-                         f"sector teeth are pointed at the tip: tip land {min(t_drv, t_dvn):.3f} mm <= 0 "
-                         f"(driver {t_drv:.3f}, driven {t_dvn:.3f} mm) at L = {L:.4f} mm",
-                         f"the largest module with a tip land > 0 at this L is {m_ok:.4f} mm")
+    table, L, m = screened(p).sector
     progress(f"sectors: outlines ({table.i} sectors per leg)")
     with input_names(_TOOTH_KEYS):
         drv = sector_driver_gear(table, m, p.backlash_mm)

@@ -14,9 +14,6 @@ METHODS = ("generated", "sectors")
 
 
 # =========================================================================== parameters
-# =========================================================================== parameters
-
-# =========================================================================== parameters
 _WHY_MECHANISM = "a walking drive of 5 m hub height is larger than any built"
 
 
@@ -119,3 +116,11 @@ class NoncircularPairParams(PartParams):
             if self.keyway and d > 0 and not 6.0 < d <= 230.0:
                 raise InputError(name, d, "a keyway needs a bore over 6 up to 230 mm (DIN 6885-1); set keyway = false")
         WalkingLaw(a=self.a_mm, b=self.b_mm, c=self.c_mm, n=n)  # the law's own checks
+
+    def screen(self) -> None:
+        """The refusals of a build that need no outline (``design.screen``: generability of the blend, the
+        law search within its band, the cutters, the sector teeth's tips); a second or two, so it runs
+        after the size estimate, and the build reuses its result."""
+        from .design import screened
+
+        screened(self)
