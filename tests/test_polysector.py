@@ -300,3 +300,13 @@ def test_torsional_model_exact_solution_under_a_spline_transmission_matches_a_ti
     radau = mdl.simulate(om, Pi1, Pi2, t_end, 1500)
     assert np.abs(radau.M1 - ex.M1).max() <= 1e-5 * float(np.ptp(ex.M1))
     assert radau.torque_factor == pytest.approx(ex.torque_factor, rel=1e-6)
+
+
+def test_a_sector_of_one_tooth_is_refused():
+    """z_c = 1 leaves room for the empty pitch (eq. 2) but a sector needs two teeth to hand over."""
+    from propulsor.errors import InputError
+    from propulsor.gears.polysector import PolysectorGeometry
+
+    PolysectorGeometry(m=4.0, z=30, z_c=2, i_s=3, z2=24)
+    with pytest.raises(InputError, match=r"z_c = 1: must be >= 2"):
+        PolysectorGeometry(m=4.0, z=30, z_c=1, i_s=3, z2=24)

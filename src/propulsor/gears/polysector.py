@@ -257,10 +257,6 @@ class PolysectorGeometry:
         """i_n = r2 / r_усл (eq. 8's r2/(a − r2))."""
         return self.r2 / (self.r + e)
 
-    def phase_ok(self, e: float) -> bool:
-        q = self.z_cond(e) / (2 * self.i_s if self.flows == 2 else self.i_s)
-        return abs(q - round(q)) < 1e-9
-
     # --- eq. 1/3/4 --------------------------------------------------------------------------
     def tip_land(self) -> tuple[float, float]:
         """(δ_in, δ_out): the extreme tooth's tip land spans these angles from the mid-line about O'
