@@ -168,7 +168,9 @@ class Part:
 
     def write(self, out: str | Path, *, force: bool = False, keep_failed: bool = False) -> Path:
         """Build into folder `out` exactly as ``propulsor build PART --out OUT`` does (the same files, the
-        same bytes; the same folder rules, lock and atomic replacement).  Returns `out`; InputError for a
+        same bytes; the same folder rules, lock and atomic replacement).  Byte for byte as a build on its
+        own is the first build of a process: after other builds in the same interpreter, OCCT's STEP
+        writer may break the lines of an assembly's STEP elsewhere (the same entities and values).  Returns `out`; InputError for a
         folder that may not be used, CheckFailed when a check failed (outputs kept only with
         `keep_failed`), EnvironmentFailure when the file system refused."""
         from . import output_folder as of
