@@ -18,8 +18,8 @@ from __future__ import annotations
 from .errors import InputError
 
 #: written with a backslash in front: among a rule's prerequisites, in its target list
-_PREREQ_SPECIAL = frozenset(" #:|")
-_TARGET_SPECIAL = frozenset(" #:%")
+_PREREQ_META = frozenset(" #:|")
+_TARGET_META = frozenset(" #:%")
 
 _NAMED = {"\t": "a tab", "\n": "a newline", "\r": "a carriage return",
           ";": "a ';' (make reads a recipe after it)", "=": "an '=' (make reads a variable assignment)",
@@ -51,7 +51,7 @@ def escape(name: str, target: bool = False) -> str:
     why = refusal(name)
     if why is not None:
         raise ValueError(f"make cannot name a file with {why}")
-    special = _TARGET_SPECIAL if target else _PREREQ_SPECIAL
+    special = _TARGET_META if target else _PREREQ_META
     out: list[str] = []
     i, n = 0, len(name)
     while i < n:
