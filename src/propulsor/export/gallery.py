@@ -4,7 +4,7 @@ Reads the manifests and the files beside them only (every ``*/manifest.json``; a
 ``<name>_kit/`` is shown with its part ``<name>/``): each part with its title, its status (checks
 passed / documented failures / failed, with counts), a few key derived values with units, the
 animations (``media.animations``), an interactive 3D view of the assembly (``media.models``: the
-GLB's script twin, drawn by ``web/viewer.js``, inlined), the pictures (``media.pictures``), links to
+GLB's script twin, drawn by ``web/viewer.js`` with the vendored three.js, both inlined), the pictures (``media.pictures``), links to
 the HTML report, the files by format and the print kit.  The page is self-contained (inline style
 and script, relative links), so it works opened from disk, with no network.
 
@@ -74,7 +74,13 @@ figure img { display: block; border: 1px solid var(--line); border-radius: 4px; 
 figcaption { font-size: 0.85em; color: var(--muted); }
 figure.viewer { margin: 8px 0; max-width: 760px; }
 figure.viewer canvas { display: block; width: 100%; aspect-ratio: 4 / 3; max-height: 70vh; border: 1px solid var(--line);
-                       border-radius: 4px; touch-action: pan-y; background: #f5f7fa; }
+                       border-radius: 4px; touch-action: none; background: #f5f7fa; }
+.tools { display: flex; flex-wrap: wrap; gap: 4px 18px; align-items: flex-start; margin: 4px 0; font-size: 0.9em; }
+.tools ul { list-style: none; padding: 0; margin: 4px 0; columns: 2 180px; }
+.tools li.picked { background: var(--panel); font-weight: 600; }
+.tools .swatch { display: inline-block; width: 0.9em; height: 0.9em; margin: 0 5px 0 3px; border: 1px solid var(--line);
+                 vertical-align: -0.1em; }
+.tools input[type=range] { width: 140px; vertical-align: middle; }
 .links a { margin-right: 10px; white-space: nowrap; }
 details { margin: 4px 0; } summary { cursor: pointer; }
 .files a { display: inline-block; margin-right: 10px; }
@@ -268,7 +274,10 @@ def _unreadable(folder: Path, entry: dict) -> str:
 
 
 def viewer_script() -> str:
-    return resources.files(__package__).joinpath("web/viewer.js").read_text(encoding="utf-8")
+    """The 3D views' script: three.js as vendored (``web/three.min.js``, ``make viewer-lib``), then ours
+    (``web/viewer.js``), one inline script."""
+    web = resources.files(__package__).joinpath("web")
+    return "\n".join(web.joinpath(f).read_text(encoding="utf-8") for f in ("three.min.js", "viewer.js"))
 
 
 def render_gallery(folder: str | Path) -> str:
