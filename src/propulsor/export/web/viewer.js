@@ -314,8 +314,11 @@
     var io = new IntersectionObserver(function (entries) {
       entries.forEach(function (en) {
         var v = en.target.propulsorView;
-        if (en.isIntersecting && !v && !en.target.hasAttribute("data-failed")) v = start(en.target);
-        if (!v) { en.target.setAttribute("data-failed", ""); return; }
+        if (!v && en.isIntersecting && !en.target.hasAttribute("data-tried")) {
+          en.target.setAttribute("data-tried", "");
+          v = start(en.target);
+        }
+        if (!v) return;
         v.visible = en.isIntersecting;
         if (v.visible) v.schedule();
       });
