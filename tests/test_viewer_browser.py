@@ -25,6 +25,16 @@ VIEWS = 30
 BACKGROUND = np.array([245, 247, 250])
 
 
+#: counts the WebGL contexts the page makes (run before the page's own script)
+COUNT_CONTEXTS = """(() => { const get = HTMLCanvasElement.prototype.getContext; window.webglContexts = 0;
+  HTMLCanvasElement.prototype.getContext = function (kind, ...rest) {
+    if (/webgl/.test(kind) && !this.__counted) { this.__counted = true; window.webglContexts++; }
+    return get.call(this, kind, ...rest); }; })();"""
+#: a browser keeps this many WebGL contexts of a page at most (Chromium: 16, 8 on a phone); beyond, the
+#: oldest is lost and its view goes blank
+MAX_CONTEXTS = 8
+
+
 @pytest.fixture(scope="module")
 def page30(tmp_path_factory):
     """A gallery of 30 road wheels, opened from disk in headless Chromium: (page, folder)."""
@@ -42,6 +52,7 @@ def page30(tmp_path_factory):
     browser = Chromium(exe)
     try:
         page = browser.page()
+        page.send("Page.addScriptToEvaluateOnNewDocument", source=COUNT_CONTEXTS)
         page.open((folder / INDEX).as_uri(), 1366)
         yield page
         page.close()
@@ -79,6 +90,7 @@ def test_thirty_views_on_one_page_all_draw(page30):
         px = _shot(page30, k).reshape(-1, 3)
         colours = len(np.unique(px, axis=0))
         assert colours > 20, f"3D view {k}: the canvas shows {colours} colour(s): nothing drawn"
+    assert page30.evaluate("window.webglContexts") <= MAX_CONTEXTS  # so none is ever lost to the limit
     assert page30.errors == []
 
 
