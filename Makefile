@@ -27,7 +27,7 @@ KIT_NAMES  := $(patsubst parts/%.toml,print-%,$(KIT_FILES))
 KIT_MANIFESTS := $(patsubst parts/%.toml,$(OUT)/%_kit/manifest.json,$(KIT_FILES))
 PRINTER    ?= generic
 
-.PHONY: all install lock parts gallery test check bench clean list print docs $(PART_NAMES) $(KIT_NAMES)
+.PHONY: all install lock parts gallery test check bench clean list print docs viewer-lib validate-glb $(PART_NAMES) $(KIT_NAMES)
 
 all: parts $(OUT)/index.html
 
@@ -96,6 +96,21 @@ $(KIT_NAMES): print-%: $(OUT)/%_kit/manifest.json
 $(OUT)/%_kit/manifest.json: parts/%.toml $(SOURCES) $(STAMP)
 	$(BIN)/propulsor print $< --printer $(PRINTER) --out $(OUT)/$*_kit --depfile $(DEPS)/$*_kit.mk
 
+# the 3D viewer's library, vendored: three.js bundled (web/bundle.mjs, esbuild) into one script the pages
+# inline, so that they work opened from disk with nothing fetched; its version is pinned in web/package.json
+# and web/package-lock.json (change it there, then `make viewer-lib` and commit the three files it writes)
+WEB_STAMP := web/node_modules/.package-lock.json
+$(WEB_STAMP): web/package.json web/package-lock.json
+	cd web && npm ci --no-audit --no-fund
+	touch $@
+
+viewer-lib: $(WEB_STAMP)
+	cd web && node bundle.mjs
+
+# the Khronos glTF validator (npm's gltf-validator) over every GLB in output/: 0 errors and 0 warnings
+validate-glb: $(WEB_STAMP)
+	node web/validate_glb.mjs $(OUT)
+
 list: $(STAMP)
 	$(BIN)/propulsor list
 
@@ -107,8 +122,9 @@ docs: $(STAMP)
 	rm -rf docs/api
 	$(BIN)/python -W error -m pdoc propulsor.api propulsor.errors propulsor.check -o docs/api
 
-check: $(STAMP)
+check: $(STAMP) $(WEB_STAMP)
 	$(BIN)/propulsor check output/
+	node web/validate_glb.mjs $(OUT)
 	$(BIN)/python -m pytest -q -m sweep tests
 
 bench: $(STAMP)

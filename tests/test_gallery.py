@@ -23,6 +23,7 @@ from PIL import Image
 
 from propulsor.cli import main
 from propulsor.export.gallery import INDEX, key_values, render_gallery, status, write_gallery
+from propulsor.export.gallery_values import number
 from propulsor.export.glb import write_glb
 from propulsor.export.render import render_iso
 from propulsor.export.step import step_instance_names
@@ -134,7 +135,7 @@ def test_build_writes_the_gallery_beside_its_output(out, manifest):
     cls, text = status(manifest)
     assert cls == "ok" and f"all {len(manifest['checks'])} checks passed" == text
     values = key_values(manifest)
-    assert ("tyre_radius_mm", f"{manifest['derived']['tyre_radius_mm']:.6g}", "mm") in values
+    assert ("tyre radius", number(manifest["derived"]["tyre_radius_mm"]), "mm") in values
     assert f"{out.name}/road_wheel_assembly.glb.js" in page
 
 

@@ -4,7 +4,7 @@ Reads the manifests and the files beside them only (every ``*/manifest.json``; a
 ``<name>_kit/`` is shown with its part ``<name>/``): each part with its title, its status (checks
 passed / documented failures / failed, with counts), a few key derived values with units, the
 animations (``media.animations``), an interactive 3D view of the assembly (``media.models``: the
-GLB's script twin, drawn by ``web/viewer.js``, inlined), the pictures (``media.pictures``), links to
+GLB's script twin, drawn by ``web/viewer.js`` with the vendored three.js, both inlined), the pictures (``media.pictures``), links to
 the HTML report, the files by format and the print kit.  The page is self-contained (inline style
 and script, relative links), so it works opened from disk, with no network.
 
@@ -30,7 +30,7 @@ from urllib.parse import quote
 from .gallery_manifest import ManifestError, inside, load_manifest
 from .html import page, write_atomically
 from .manifest import MANIFEST
-from .report import _fmt, unit_from_name
+from .gallery_values import failed_names, label, names_text, position_title, value_text
 
 INDEX = "index.html"
 #: the mark of a page propulsor wrote (an index.html without it is never replaced)
@@ -68,13 +68,19 @@ section.part { border: 1px solid var(--line); border-radius: 8px; padding: 4px 1
 dl.values { display: grid; grid-template-columns: fit-content(62%) 1fr; gap: 2px 12px; margin: 8px 0; }
 dl.values dt { color: var(--muted); } dl.values dd { margin: 0; }
 .media { display: grid; grid-template-columns: repeat(auto-fill, minmax(140px, 1fr)); gap: 10px; }
-.media.wide { grid-template-columns: repeat(auto-fill, minmax(300px, 1fr)); }
+.media.anim { display: flex; flex-wrap: wrap; gap: 10px; } .media.anim figure { max-width: 100%; }
 .media figure { margin: 0; }
 figure img { display: block; border: 1px solid var(--line); border-radius: 4px; background: #fff; }
 figcaption { font-size: 0.85em; color: var(--muted); }
 figure.viewer { margin: 8px 0; max-width: 760px; }
 figure.viewer canvas { display: block; width: 100%; aspect-ratio: 4 / 3; max-height: 70vh; border: 1px solid var(--line);
-                       border-radius: 4px; touch-action: pan-y; background: #f5f7fa; }
+                       border-radius: 4px; touch-action: none; background: #f5f7fa; }
+.tools { display: flex; flex-wrap: wrap; gap: 4px 18px; align-items: flex-start; margin: 4px 0; font-size: 0.9em; }
+.tools ul { list-style: none; padding: 0; margin: 4px 0; columns: 2 180px; }
+.tools li.picked { background: var(--panel); font-weight: 600; }
+.tools .swatch { display: inline-block; width: 0.9em; height: 0.9em; margin: 0 5px 0 3px; border: 1px solid var(--line);
+                 vertical-align: -0.1em; }
+.tools input[type=range] { width: 140px; vertical-align: middle; }
 .links a { margin-right: 10px; white-space: nowrap; }
 details { margin: 4px 0; } summary { cursor: pointer; }
 .files a { display: inline-block; margin-right: 10px; }
@@ -109,21 +115,22 @@ def built_parts(folder: str | Path) -> list[dict]:
 
 
 def status(manifest: dict) -> tuple[str, str]:
-    """(css class, text): every check passed / documented failures / failed, with counts."""
+    """(css class, text): every check passed / documented failures / failed, with counts and the names
+    of the checks that failed."""
     checks = [c for c in manifest.get("checks", []) if isinstance(c, dict)]
-    documented = set(manifest.get("expected_failures", []))
-    failed = [c for c in checks if not c.get("passed")]
-    bad = [c for c in failed if c.get("name") not in documented]
+    bad, documented = failed_names(manifest)
     n = len(checks)
     if bad:
-        return "bad", f"failed: {len(bad)} of {n} checks" + (f" ({len(failed) - len(bad)} documented)" if len(failed) > len(bad) else "")
-    if failed:
-        return "doc", f"documented failures: {len(failed)} of {n} checks (the part file lists them)"
+        return "bad", (f"failed: {len(bad)} of {n} checks: {names_text(bad)}"
+                       + (f" (documented: {names_text(documented)})" if documented else ""))
+    if documented:
+        return "doc", f"documented failures: {len(documented)} of {n} checks: {names_text(documented)} (the part file lists them)"
     return "ok", f"all {n} checks passed"
 
 
 def key_values(manifest: dict) -> list[tuple[str, str, str]]:
-    """(name, value, unit) of the part type's key derived values that the manifest holds."""
+    """(label, value, unit) of the part type's key derived values that the manifest holds: labelled from
+    the manifest's glossary (else the name), rounded for a reader (gallery_values.py)."""
     derived = manifest.get("derived")
     derived = derived if isinstance(derived, dict) else {}
     patterns = KEY_VALUES.get(manifest.get("part", ""))
@@ -135,7 +142,12 @@ def key_values(manifest: dict) -> list[tuple[str, str, str]]:
                 names.append(hit)
     else:
         names = [k for k, v in derived.items() if isinstance(v, (int, float, str))][:DEFAULT_KEY_VALUES]
-    return [(k, _fmt(derived[k]), unit_from_name(k)) for k in names]
+    glossary = manifest.get("glossary") or {}
+    out = []
+    for k in names:
+        text, unit = label(k, glossary)
+        out.append((text, value_text(derived[k], manifest.get("part", "")), unit))
+    return out
 
 
 def _url(path: str) -> str:
@@ -160,6 +172,7 @@ def _figure(src: str, caption: str, width=None, height=None) -> str:
 
 
 def _animation(name: str, e: dict) -> str:
+    """An animation at its own size (narrower only on a narrower screen), linked to its file."""
     bits = [str(e.get("title") or Path(e["path"]).stem)]
     if e.get("frames"):
         bits.append(f"{e['frames']} frames")
@@ -170,18 +183,25 @@ def _animation(name: str, e: dict) -> str:
     lc = e.get("least_clearance_mm")
     if isinstance(lc, (int, float)) and math.isfinite(lc):
         bits.append(f"least clearance {lc:.3g} mm")
-    return _figure(f"{name}/{e['path']}", ", ".join(bits), e.get("width_px"), e.get("height_px"))
+    src, caption = f"{name}/{e['path']}", ", ".join(bits)
+    w, h = e.get("width_px"), e.get("height_px")
+    wh = f' width="{int(w)}" height="{int(h)}"' if w and h else ""
+    return (f'<figure><a href="{escape(_url(src))}"><img src="{escape(_url(src))}" alt="{escape(caption)}"{wh}></a>'
+            f"<figcaption>{escape(caption)} · {_a(src, 'full size')}</figcaption></figure>")
 
 
-def _viewer(name: str, models: list[dict]) -> str:
-    data = [{"script": _url(f"{name}/{m['script']}"), "title": str(m.get("title", m["path"]))} for m in models
-            if m.get("script")]
+def _viewer(name: str, models: list[dict], manifest: dict) -> str:
+    """The 3D view of the part's assemblies (a polysector gear's positions named by offset and ratio)."""
+    data = [{"script": _url(f"{name}/{m['script']}"),
+             "title": position_title(manifest, k) or str(m.get("title", m["path"]))}
+            for k, m in enumerate(models) if m.get("script")]
     if not data:
         return ""
     select = ""
     if len(data) > 1:
         opts = "".join(f"<option>{escape(d['title'])}</option>" for d in data)
-        select = f'<label>assembly <select aria-label="assembly">{opts}</select></label>'
+        what = "position" if manifest.get("part") == "polysector_gear" else "assembly"
+        select = f'<label>{what} <select aria-label="assembly">{opts}</select></label>'
     glbs = " · ".join(_a(f"{name}/{m['path']}", m["path"]) for m in models)
     return (f"<h3>3D</h3><figure class=\"viewer\" data-models='{escape(json.dumps(data), quote=True)}' "
             f'data-state="waiting">{select}<canvas></canvas>'
@@ -241,13 +261,14 @@ def _section(folder: Path, entry: dict) -> str:
     values = key_values(m)
     if values:
         out.append('<dl class="values">' + "".join(
-            f"<dt>{escape(k)}</dt><dd>{escape(v)}{('&nbsp;' + escape(u)) if u else ''}</dd>" for k, v, u in values) + "</dl>")
+            f"<dt>{escape(k)}</dt><dd>{escape(v)}{('&nbsp;' + escape(u)) if u and not v.startswith('—') else ''}</dd>"
+            for k, v, u in values) + "</dl>")
     out.append(_report_links(name, folder, "print_report" if name.endswith("_kit") else "report"))
     anims = media["animations"]
     if anims:
-        out.append("<h3>Motion</h3><div class=\"media wide\">" + "".join(_animation(name, e) for e in anims) + "</div>")
+        out.append("<h3>Motion</h3><div class=\"media anim\">" + "".join(_animation(name, e) for e in anims) + "</div>")
     models = media["models"]
-    out.append(_viewer(name, models))
+    out.append(_viewer(name, models, m))
     pics = media["pictures"]
     if pics:
         out.append("<h3>Pictures</h3><div class=\"media\">" + "".join(
@@ -268,7 +289,10 @@ def _unreadable(folder: Path, entry: dict) -> str:
 
 
 def viewer_script() -> str:
-    return resources.files(__package__).joinpath("web/viewer.js").read_text(encoding="utf-8")
+    """The 3D views' script: three.js as vendored (``web/three.min.js``, ``make viewer-lib``), then ours
+    (``web/viewer.js``), one inline script."""
+    web = resources.files(__package__).joinpath("web")
+    return "\n".join(web.joinpath(f).read_text(encoding="utf-8") for f in ("three.min.js", "viewer.js"))
 
 
 def render_gallery(folder: str | Path) -> str:

@@ -119,8 +119,11 @@ def clean_manifest(data, part_dir: Path) -> dict:
                 del e["least_clearance_mm"]
             kept.append(e)
         shown[kind] = kept
+    glossary = data.get("glossary")
+    glossary = {k: {f: g[f] for f in ("unit", "meaning") if isinstance(g.get(f), str)}
+                for k, g in (glossary.items() if isinstance(glossary, dict) else ()) if isinstance(g, dict)}
     return {"part": part, "title": title, "checks": checks, "expected_failures": list(expected),
-            "derived": derived, "files": files, "media": shown}
+            "derived": derived, "files": files, "media": shown, "glossary": glossary}
 
 
 def load_manifest(part_dir: Path) -> dict:

@@ -4,7 +4,8 @@ One node per component, named as the component of the assembly STEP (children of
 as the assembly, which turns the project's z-up frame into glTF's y-up one), each with its own mesh and
 material (a base colour from the fixed palette of :mod:`propulsor.export.render`): components that
 are the same solid (planets, legs, sectors) share the solid's vertex and index accessors, so a
-solid is stored once however often it is placed.  glTF's unit is the metre: vertex positions and
+solid is stored once however often it is placed.  Each vertex carries a shading normal (NORMAL:
+smooth across tangent edges, split at feature edges; :mod:`propulsor.export.normals`).  glTF's unit is the metre: vertex positions and
 node translations are the millimetres × 0.001.  Written here (not through trimesh's exporter) so
 that the bytes depend on the meshes only: JSON with sorted keys, chunks padded as the glTF 2.0
 specification asks (JSON with spaces, BIN with zeros).
@@ -22,6 +23,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .normals import smooth_normals
 from .render import palette_colour
 from ..write_root import prepare
 
@@ -52,15 +54,18 @@ def write_glb(path: str | Path, name: str, meshes: dict, components) -> Path:
         return len(views) - 1
 
     for key in dict.fromkeys(k for _, k, _ in components):  # first use order
-        v, f = meshes[key]
-        pos = (np.asarray(v, np.float64) * MM_TO_M).astype("<f4")
+        v, n, f = smooth_normals(*meshes[key])
+        pos = (v * MM_TO_M).astype("<f4")
+        nrm = n.astype("<f4")
         idx = np.asarray(f, np.int64).astype("<u4").reshape(-1)
         accessors.append({"bufferView": view(pos.tobytes(), _ARRAY_BUFFER), "componentType": _FLOAT,
                           "count": len(pos), "type": "VEC3",
                           "min": [float(x) for x in pos.min(axis=0)], "max": [float(x) for x in pos.max(axis=0)]})
+        accessors.append({"bufferView": view(nrm.tobytes(), _ARRAY_BUFFER), "componentType": _FLOAT,
+                          "count": len(nrm), "type": "VEC3"})
         accessors.append({"bufferView": view(idx.tobytes(), _ELEMENT_ARRAY_BUFFER), "componentType": _UNSIGNED_INT,
                           "count": len(idx), "type": "SCALAR"})
-        geometry[key] = (len(accessors) - 2, len(accessors) - 1)
+        geometry[key] = (len(accessors) - 3, len(accessors) - 2, len(accessors) - 1)
 
     nodes, gl_meshes, materials = [], [], []
     for k, (cname, key, matrix) in enumerate(components):
@@ -69,9 +74,9 @@ def write_glb(path: str | Path, name: str, meshes: dict, components) -> Path:
         r, g, b = palette_colour(k)
         materials.append({"name": cname, "pbrMetallicRoughness": {
             "baseColorFactor": [r, g, b, 1.0], "metallicFactor": 0.2, "roughnessFactor": 0.6}})
-        pos, idx = geometry[key]
+        pos, nrm, idx = geometry[key]
         gl_meshes.append({"name": cname, "primitives": [
-            {"attributes": {"POSITION": pos}, "indices": idx, "material": k, "mode": 4}]})
+            {"attributes": {"NORMAL": nrm, "POSITION": pos}, "indices": idx, "material": k, "mode": 4}]})
         node = {"name": cname, "mesh": k}
         if not np.allclose(m, np.eye(4), rtol=0.0, atol=1e-15):
             node["matrix"] = [float(x) for x in m.T.reshape(-1)]  # column-major
