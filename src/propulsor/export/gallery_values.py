@@ -12,7 +12,8 @@ from __future__ import annotations
 
 import math
 
-from .report import _SUFFIX_UNITS, _fmt, unit_from_name
+from .report import _fmt
+from .units import name_stem, unit_from_name
 
 #: what a value that is not a number means, by part type (else NO_VALUE)
 NO_VALUE_WHY = {"noncircular_pair": "no free position: the pair jams", "polysector_gear": "no free position"}
@@ -55,7 +56,7 @@ def label(name: str, glossary: dict) -> tuple[str, str]:
     unit = g.get("unit") if isinstance(g.get("unit"), str) else unit_from_name(name)
     meaning = g.get("meaning") if isinstance(g.get("meaning"), str) and g.get("meaning").strip() else None
     if meaning is None:
-        stem = next((name[: -len(suf)] for suf, _ in _SUFFIX_UNITS if name.endswith(suf)), name)
+        stem = name_stem(name)
         meaning = stem.replace("_", " ").strip() or name
     return meaning, unit
 

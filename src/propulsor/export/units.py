@@ -71,6 +71,16 @@ def unit_from_name(name: str) -> str:
     return ""
 
 
+def name_stem(name: str) -> str:
+    """`name` without the unit suffix it ends in (``pitch_line_speed_rel_m_s`` → ``pitch_line_speed_rel``)."""
+    name = str(name)
+    if unit_from_name(name):
+        for suffix, _ in _BY_LENGTH:
+            if name.endswith(suffix) and len(name) > len(suffix):
+                return name[: -len(suffix)]
+    return name
+
+
 def unit_of_path(keys) -> str:
     """The unit of a nested value reached through `keys` (outermost first; list items have no key):
     the outermost key that names a unit, else ''."""
