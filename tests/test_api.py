@@ -75,12 +75,12 @@ def test_a_part_in_memory_solids_profiles_checks_assembly():
 
 @pytest.mark.parametrize("make", [
     lambda: propulsor.part("noncircular_pair", module_mm=-3),
-    lambda: propulsor.params("noncircular_pair", module_mm=-3),
+    lambda: propulsor.parameters("noncircular_pair", module_mm=-3),
     lambda: propulsor.part(PARTS / "ncg_seed002.toml", module_mm=-3),
     lambda: params_class("noncircular_pair")(module_mm=-3),
     lambda: dataclasses.replace(params_class("noncircular_pair")(), module_mm=-3),
     lambda: load_params(params_class("noncircular_pair"), {"module_mm": -3}),
-], ids=["part(type)", "params()", "part(file, override)", "dataclass", "replace", "load_params"])
+], ids=["part(type)", "parameters()", "part(file, override)", "dataclass", "replace", "load_params"])
 def test_bad_values_are_refused_however_the_parameters_are_made(make):
     with pytest.raises(InputError) as exc:
         make()
@@ -88,7 +88,7 @@ def test_bad_values_are_refused_however_the_parameters_are_made(make):
 
 
 def test_parameters_are_frozen_and_unknown_keys_refused():
-    p = propulsor.params("road_wheel")
+    p = propulsor.parameters("road_wheel")
     with pytest.raises(dataclasses.FrozenInstanceError):
         p.tyre_radius_mm = 1.0  # type: ignore[misc]
     with pytest.raises(InputError, match="unknown parameter"):

@@ -564,7 +564,7 @@ def test_module_from_centre_distance():
     from propulsor.params import load_params
     from propulsor.parts.noncircular_pair import NoncircularPairParams, design
 
-    d = design(load_params(NoncircularPairParams, dict(module_mm=0.0, center_distance_mm=130.0)))
+    d = design(load_params(NoncircularPairParams, dict(module_mm=0.0, center_distance_mm=130.0, law_search=False)))
     assert d.L == 130.0 and d.m == pytest.approx(2.5 * 130.0 / 124.33187266550188, rel=1e-9)
     assert d.pc.perimeter_driven() == pytest.approx(80 * math.pi * d.m, rel=1e-12)
     assert d.smoothing_deg == pytest.approx(8.4747, abs=1e-3)

@@ -33,7 +33,7 @@ import numpy as np
 
 from .errors import CheckFailed, InputError
 
-__all__ = ["Part", "Build", "part", "part_types", "params"]
+__all__ = ["Part", "Build", "part", "part_types", "parameters"]
 
 
 def part_types() -> list[str]:
@@ -43,7 +43,7 @@ def part_types() -> list[str]:
     return part_type_names()
 
 
-def params(part_type: str, /, **values: Any):
+def parameters(part_type: str, /, **values: Any):
     """The validated, frozen parameters of `part_type` with `values` in place of the defaults (the same
     checks as a part file: types, limits, the rules between parameters).  InputError otherwise."""
     from .params import load_params
@@ -60,7 +60,7 @@ def part(source: str | Path, /, **overrides: Any) -> "Part":
     from .parts import get_part_type, part_type_names
 
     if isinstance(source, str) and source in part_type_names():
-        return Part(source, params(source, **overrides), None)
+        return Part(source, parameters(source, **overrides), None)
     path = Path(source)
     if path.suffix != ".toml" and not path.exists():
         raise InputError("source", str(source), f"must be a part type ({', '.join(part_type_names())}) or a part "

@@ -88,13 +88,14 @@ def polysector_gear(p, part_file: Path | None = None) -> SizeEstimate:
     """Design, three solids and their checks ∝ teeth of the gear and a sector; one assembly and one DXF per
     flow per position; the proof ∝ its steps (steps per pitch × pitches per sector period), 0.022 CPU s a
     step with the outlines within 1e-4 mm, 0.041 s at the blank's own circle (e = 0, outlines within 3e-5 mm
-    to resolve Δi below 1e-6).  Calibrated on parts/polysector.toml: 20.5 CPU s, 25.1 with the proof steps
-    doubled (2026-11-25; before the exact dynamics and the compiled sweeps: 40 CPU s, proof 19 s)."""
+    to resolve Δi below 1e-6); the tracked contact law ≈ 3.7 CPU s a position (refined at every hand-over).
+    Calibrated on parts/polysector.toml: 29 CPU s with three positions and the contact law (2026-11-25;
+    20.5 with four positions before it)."""
     per = p.flows * p.sectors_per_flow
     zc = [z for z in p.conditional_teeth if isinstance(z, int) and not isinstance(z, bool)]
     steps = [p.proof_steps_per_pitch * max(1, z // per) for z in zc]
     proof = sum(n * (0.041 if z == p.blank_teeth else 0.022) for n, z in zip(steps, zc))
-    cpu = 6.2 + 0.093 * (p.gear_teeth + p.sector_teeth) + 0.62 * len(zc) * p.flows + proof
+    cpu = 6.2 + 0.093 * (p.gear_teeth + p.sector_teeth) + 0.62 * len(zc) * p.flows + proof + 3.7 * len(zc)
     return _wall(cpu, f"{len(zc)} positions, proof {sum(steps)} steps, {p.gear_teeth + p.sector_teeth} teeth")
 
 
