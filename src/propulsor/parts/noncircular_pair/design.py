@@ -79,12 +79,15 @@ def _law(p: NoncircularPairParams, source=None):
         return FourierLaw(p.driver_turns, tuple(float(v) for v in p.fourier_cos), tuple(float(v) for v in p.fourier_sin))
     from pathlib import Path
 
+    from ...laws.pitch_curve_law import PitchCurveLaw, read_pitch_curve
     from ...laws.table_law import TableLaw, read_law_table
 
-    f = Path(p.law_file)
+    f = Path(p.law_file if p.law == "table" else p.pitch_curve_file)
     if not f.is_absolute():
         f = (Path(source).resolve().parent if source is not None else Path.cwd()) / f
-    return TableLaw(*read_law_table(f))
+    if p.law == "table":
+        return TableLaw(*read_law_table(f))
+    return PitchCurveLaw(*read_pitch_curve(f), p.driver_turns)
 
 
 def _design_smooth(p: NoncircularPairParams, law, progress) -> Design:

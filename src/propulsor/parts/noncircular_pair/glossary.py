@@ -75,6 +75,8 @@ GLOSSARY = {
     "ratio_max": ("", "largest gear ratio U = dθ/dφ of the law"),
     "eccentricity": ("", "eccentricity e of the elliptical driver"),
     "focal_parameter_mm": ("mm", "focal parameter p of the elliptical driver: r1 = p / (1 + e cos θ)"),
+    "pitch_curve_center_distance_mm": ("mm", "centre distance L0 of the driver's pitch curve as the part file gives it"),
+    "pitch_curve_scale": ("", "scale L / L0 of the pair against the pitch curve given (so that it holds the teeth)"),
     # print kit
     "print_module_mm": ("mm", "module of the printed gears"),
     "print_center_distance_mm": ("mm", "centre distance of the printed pair"),

@@ -59,6 +59,10 @@ _LAW_TEXT = {
     "fourier": "phi(theta) = theta / k + sum_j (c_j cos j theta + s_j sin j theta), k = {k}, {J} harmonic(s)",
     "table": "the part file's table of {rows} rows over one period of {P:g} deg, a periodic quintic spline of "
              "theta(phi) - n phi through them",
+    "pitch_curve": "the driver's pitch curve of the part file ({rows} rows, a periodic quintic spline r(a)) with "
+                   "its conjugate driven wheel of {k} lobe(s): closure integral r / (L0 - r) dtheta = 2 pi / k at "
+                   "L0 = {L0:.6f} mm as given, the pair scaled by L / L0 = {S:.6f} so that its perimeter holds the "
+                   "teeth",
 }
 
 
@@ -68,7 +72,8 @@ def law_notes(w, d, pr, p, mount, s) -> None:
     g = d.smoothing.generability
     text = _LAW_TEXT[law.kind].format(
         e=getattr(law, "e", 0.0), k=law.n, q=getattr(law, "q", 0.0), J=len(getattr(law, "_j", ())),
-        rows=len(getattr(law, "driven_deg", ())), P=math.degrees(law.period))
+        rows=getattr(law, "rows", len(getattr(law, "driven_deg", ()))), P=math.degrees(law.period),
+        L0=getattr(law, "L0", 0.0), S=d.L / getattr(law, "L0", d.L))
     w.add_note(
         f"Law ({law.kind}): {text}.  U = d theta / d phi from {float(np.min(law.U(np.linspace(0, law.period, 4001)))):.6f} "
         f"to {float(np.max(law.U(np.linspace(0, law.period, 4001)))):.6f}; {law.periods} period(s) per driven turn, "
@@ -123,6 +128,8 @@ def law_derived(dd: PairDesign, w, pr, s) -> None:
     })
     if law.kind == "elliptical":
         w.derived.update({"eccentricity": law.e, "focal_parameter_mm": law.q * d.L})
+    if law.kind == "pitch_curve":
+        w.derived.update({"pitch_curve_center_distance_mm": law.L0, "pitch_curve_scale": d.L / law.L0})
     if d.shaper is not None:
         w.derived.update({"rack_profile": p.rack_profile, "shaper_d0_mm": d.shaper.d0_mm, "shaper_z0": d.shaper.z0,
                           "shaper_x0": d.shaper.x0, "shaper_standard": d.shaper.standard})

@@ -12,13 +12,14 @@ __all__ = ["METHODS", "LAWS", "LAW_KEYS", "NoncircularPairParams"]
 
 METHODS = ("generated", "sectors")
 #: the drive laws a part file can name (``law = "..."``)
-LAWS = ("walking", "elliptical", "fourier", "table")
+LAWS = ("walking", "elliptical", "fourier", "table", "pitch_curve")
 #: the keys that belong to one law only: a part file of another law may not set them
 LAW_KEYS = {
     "walking": ("a_mm", "b_mm", "c_mm", "blend_hand_over", "smoothing_deg"),
     "elliptical": ("eccentricity",),
     "fourier": ("fourier_cos", "fourier_sin"),
     "table": ("law_file",),
+    "pitch_curve": ("pitch_curve_file",),
 }
 
 
@@ -37,7 +38,8 @@ class NoncircularPairParams(PartParams):
     c_mm: float = param(236.5, "mm", "shoe stand length c", min=0.0, max=5000.0, why=_WHY_MECHANISM)
     law: str = param("walking", "", "drive law: walking (a_mm, b_mm, c_mm, driver_turns), elliptical "
                      "(eccentricity, driver_turns lobes of the driven wheel), fourier (fourier_cos, fourier_sin, "
-                     "driver_turns), table (law_file)", choices=LAWS)
+                     "driver_turns), table (law_file), pitch_curve (pitch_curve_file, driver_turns lobes of the driven wheel)",
+                     choices=LAWS)
     driver_turns: int = param(4, "", "n: driver turns per driven (carrier) turn; walking: 1, 2 or 4; elliptical and "
                               "fourier: the driven wheel's lobes k (driver turns per driven turn); table: from the "
                               "table", min=1, max=12, integer=True,
@@ -49,6 +51,9 @@ class NoncircularPairParams(PartParams):
     fourier_sin: list = param([], "rad", "fourier law: s_j of the same series")
     law_file: str = param("", "", "table law: CSV with columns driver_deg,driven_deg over one period (relative to "
                           "the part file; the first row is the origin, the last closes the period)")
+    pitch_curve_file: str = param("", "", "pitch_curve law: CSV with columns angle_deg,radius_mm, the driver's pitch "
+                                  "curve over one turn (relative to the part file; scaled so its perimeter holds the "
+                                  "teeth)")
     method: str = param("generated", "", "tooth method: generated (conjugate, default) or sectors (the papers')",
                         choices=METHODS)
     module_mm: float = param(2.5, "mm", "module m (0: from center_distance_mm, generated teeth only)", min=0.0, max=50.0,
@@ -124,6 +129,8 @@ class NoncircularPairParams(PartParams):
                     raise InputError(f"{key}[{i}]", v, "must be a number (rad)")
         if self.law == "table" and not self.law_file:
             raise InputError("law_file", "", "law = \"table\" needs the CSV file of its angles")
+        if self.law == "pitch_curve" and not self.pitch_curve_file:
+            raise InputError("pitch_curve_file", "", "law = \"pitch_curve\" needs the CSV file of the driver's curve")
         if self.law == "elliptical":
             from ...laws.ratio_laws import EllipticalLaw
 
