@@ -1,7 +1,8 @@
 """What the noncircular pair's derived values mean (export.glossary)."""
 
 #: the derived values the report's summary shows
-KEY_VALUES = ("method", "center_distance_mm", "driver_teeth", "driven_teeth", "speed_ripple", "te_pp_rad",
+KEY_VALUES = ("law", "method", "center_distance_mm", "driver_teeth", "driven_teeth", "speed_ripple", "ratio_min",
+              "ratio_max", "te_pp_rad",
               "jam_phases", "backlash_min_mm")
 
 _PAIR = {
