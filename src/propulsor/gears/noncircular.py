@@ -1,4 +1,5 @@
-"""Pitch curves of the non-circular pair of the wheel-walking propulsor drive.
+"""Pitch curves of the non-circular pair of the wheel-walking propulsor drive, or of any drive law
+(``laws.law.Law``: the walking law, its blend, elliptical, Fourier, table, pitch-curve laws).
 
 Driven (carrier) wheel r_H(phi), driver r(theta) for centre distance L and a
 ratio law U(phi) = d theta / d phi (seed 000, eqs. 4-7, 12-13):

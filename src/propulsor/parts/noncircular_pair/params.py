@@ -1,4 +1,4 @@
-"""Parameters of the walking-drive non-circular pair (seeds 000, 002)."""
+"""Parameters of the non-circular pair: the walking drive (seeds 000, 002) or another law (``law``)."""
 
 from __future__ import annotations
 
