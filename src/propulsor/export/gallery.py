@@ -38,8 +38,9 @@ GENERATOR = '<meta name="generator" content="propulsor">'
 
 #: key derived values per part type: name patterns (regular expressions), the first match of each shown
 KEY_VALUES = {
-    "noncircular_pair": [r"method", r"center_distance_mm", r"module_mm", r"driver_teeth", r"driven_teeth",
-                         r"speed_ripple", r"backlash_min_mm", r"te_pp_rad", r"contact_ratio_mean"],
+    "noncircular_pair": [r"law", r"method", r"center_distance_mm", r"module_mm", r"driver_teeth", r"driven_teeth",
+                         r"speed_ripple", r"ratio_min", r"ratio_max", r"backlash_min_mm", r"te_pp_rad",
+                         r"contact_ratio_mean"],
     "planetary_final_drive": [r"ratio_i_1H", r"a_w_sun_planet_mm", r"epsilon_alpha_sun_planet",
                               r"epsilon_alpha_planet_ring", r"strength_sun_planet_S_H", r"strength_planet_ring_S_H",
                               r"coaxiality_mismatch_mm", r"design_torque_carrier_Nm"],

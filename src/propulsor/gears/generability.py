@@ -211,27 +211,9 @@ def choose_smoothing(law: WalkingLaw, cutter: CutterSpec, z_H: int,
 
 def _no_smoothing_error(law, cutter, z_H, delta_max) -> InputError:
     sl, L, g = _evaluate(law, delta_max, cutter, z_H)
-    bits = []
     if g is None:
         return InputError("delta_max", delta_max, "the blend makes U <= 0 before the curves become generable")
-    s2 = math.sin(cutter.alpha) ** 2
-    for chk, x, name in ((g.driver, cutter.x, "x"), (g.driven, cutter.x_H, "x_H")):
-        if chk.ok:
-            continue
-        if chk.rho_convex_min < chk.rho_limit:
-            x_need = cutter.h_a - chk.rho_convex_min * s2 / cutter.m
-            # rho and L scale with z_H at fixed m: z_H >= z_H * limit / rho_min
-            z_need = math.ceil(z_H * chk.rho_limit / chk.rho_convex_min / law.n) * law.n if chk.rho_convex_min > 0 else None
-            m_max = chk.rho_convex_min * s2 / (cutter.h_a - x) if cutter.h_a > x else math.inf
-            bits.append(
-                f"{chk.curve}: convex rho_min {chk.rho_convex_min:.3f} mm < undercut limit {chk.rho_limit:.3f} mm; "
-                f"works with {name} >= {x_need:.3f}, or z_H >= {z_need} at m = {cutter.m:g}, "
-                f"or m <= {m_max:.4f} mm at L = {L:.3f} mm"
-            )
-        if chk.concave and not chk.r0 < chk.rho_concave_min:
-            z0_max = math.ceil(2 * chk.rho_concave_min / cutter.m) - 1
-            bits.append(f"{chk.curve}: concave |rho|_min {chk.rho_concave_min:.3f} mm needs a shaper with "
-                        f"z0 <= {z0_max} (r0 < |rho|)")
+    bits = remedies(g, cutter, z_H, law.n, L)
     # the smallest smoothing that would work beyond delta_max
     more = ""
     if delta_max < math.pi / 4:
@@ -245,3 +227,28 @@ def _no_smoothing_error(law, cutter, z_H, delta_max) -> InputError:
     return InputError("delta_max", delta_max,
                       "no blend half-width up to delta_max makes both pitch curves generable",
                       " | ".join(bits) + more)
+
+
+def remedies(g: Generability, cutter: CutterSpec, z_H: int, n: int, L: float) -> list[str]:
+    """What would make each failing pitch curve generable: the profile shift, the teeth or the module
+    (convex stretches against the rack undercut limit), the shaper's teeth (concave stretches)."""
+    bits = []
+    s2 = math.sin(cutter.alpha) ** 2
+    for chk, x, name in ((g.driver, cutter.x, "x"), (g.driven, cutter.x_H, "x_H")):
+        if chk.ok:
+            continue
+        if chk.rho_convex_min < chk.rho_limit:
+            x_need = cutter.h_a - chk.rho_convex_min * s2 / cutter.m
+            # rho and L scale with z_H at fixed m: z_H >= z_H * limit / rho_min
+            z_need = math.ceil(z_H * chk.rho_limit / chk.rho_convex_min / n) * n if chk.rho_convex_min > 0 else None
+            m_max = chk.rho_convex_min * s2 / (cutter.h_a - x) if cutter.h_a > x else math.inf
+            bits.append(
+                f"{chk.curve}: convex rho_min {chk.rho_convex_min:.3f} mm < undercut limit {chk.rho_limit:.3f} mm; "
+                f"works with {name} >= {x_need:.3f}, or z_H >= {z_need} at m = {cutter.m:g}, "
+                f"or m <= {m_max:.4f} mm at L = {L:.3f} mm"
+            )
+        if chk.concave and not chk.r0 < chk.rho_concave_min:
+            z0_max = math.ceil(2 * chk.rho_concave_min / cutter.m) - 1
+            bits.append(f"{chk.curve}: concave |rho|_min {chk.rho_concave_min:.3f} mm needs a shaper with "
+                        f"z0 <= {z0_max} (r0 < |rho|)")
+    return bits

@@ -1,4 +1,5 @@
-"""Pitch curves of the non-circular pair of the wheel-walking propulsor drive.
+"""Pitch curves of the non-circular pair of the wheel-walking propulsor drive, or of any drive law
+(``laws.law.Law``: the walking law, its blend, elliptical, Fourier, table, pitch-curve laws).
 
 Driven (carrier) wheel r_H(phi), driver r(theta) for centre distance L and a
 ratio law U(phi) = d theta / d phi (seed 000, eqs. 4-7, 12-13):
@@ -29,7 +30,8 @@ import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
 from propulsor.errors import InputError, require_finite, require_positive
-from propulsor.laws.walking import LEG_PERIOD, HubSpeedRipple, WalkingLaw, check_n_closes
+from propulsor.laws.law import require_law
+from propulsor.laws.walking import HubSpeedRipple
 from propulsor.policy import CORNER_SIDE_RAD, MINIMIZE_XATOL, ROOT_XTOL_FINE, TOOTH_COUNT_TOL
 
 from .smoothed_law import SmoothedWalkingLaw  # the smoothed law, re-exported here for the callers
@@ -42,14 +44,13 @@ DELTA_MAX_DEFAULT = math.pi / 8
 
 
 def leg_breakpoints(law) -> tuple:
-    """Ends of the smooth pieces of one leg, phi in [-pi/4, pi/4] (the blend windows' ends)."""
-    if isinstance(law, SmoothedWalkingLaw):
-        return law.leg_breakpoints
-    return (-math.pi / 4, math.pi / 4)
+    """Ends of the smooth pieces of the law's reference period (one leg of the walking law,
+    phi in [-pi/4, pi/4]; the blend windows' ends): ``law.breakpoints``."""
+    return law.breakpoints
 
 
 def _has_corners(law) -> bool:
-    return isinstance(law, WalkingLaw) and law.b > 0
+    return bool(law.corner_phis)
 
 
 def _leg_samples(law, per_piece: int = _SAMPLES_PER_PIECE) -> np.ndarray:
@@ -63,7 +64,8 @@ def _leg_samples(law, per_piece: int = _SAMPLES_PER_PIECE) -> np.ndarray:
 
 
 def _leg_integral(law, f) -> float:
-    """integral over one leg phi in [-pi/4, pi/4] of f(phi), Gauss-Legendre per smooth piece."""
+    """integral over the law's reference period (one leg, phi in [-pi/4, pi/4]) of f(phi),
+    Gauss-Legendre per smooth piece."""
     bp = leg_breakpoints(law)
     total = 0.0
     for a, b in zip(bp[:-1], bp[1:]):
@@ -128,7 +130,7 @@ class Corner:
 class PitchCurves:
     """Pitch curves of the pair for centre distance L (mm) and a ratio law.
 
-    law: WalkingLaw (exact, with corners) or SmoothedWalkingLaw.
+    law: any drive law (``laws.law.Law``): the walking law (exact, with corners), its blend, ...
     Driven curve: polar r_H(phi), phi the driven body angle.  Driver curve:
     polar r(theta); functions named r*(phi) give the driver radius and its
     theta-derivatives at the point in contact when the driven angle is phi
@@ -142,9 +144,7 @@ class PitchCurves:
     L: float
 
     def __post_init__(self):
-        if not isinstance(self.law, (WalkingLaw, SmoothedWalkingLaw)):
-            raise InputError("law", self.law, "must be a WalkingLaw or SmoothedWalkingLaw")
-        check_n_closes(self.law.n)
+        require_law(self.law)
         object.__setattr__(self, "L", require_positive("L", self.L, "mm"))
 
     # ---- driven ---------------------------------------------------------------------
@@ -214,8 +214,8 @@ class PitchCurves:
         return np.hypot(self.r_H(phi), self.dr_H(phi))
 
     def perimeter_driven(self) -> float:
-        """Perimeter of the driven pitch curve (mm) = 4 x one leg."""
-        return 4 * _leg_integral(self.law, self.ds_dphi)
+        """Perimeter of the driven pitch curve (mm) = its periods (4 legs of the walking law) x one."""
+        return self.law.periods * _leg_integral(self.law, self.ds_dphi)
 
     def perimeter_driver(self) -> float:
         """Perimeter of the driver pitch curve over one driver turn (mm), integrated in theta.
@@ -225,9 +225,9 @@ class PitchCurves:
         pieces split at the images of the law's breakpoints (needs n | 4).
         """
         n = self.law.n
-        legs = 4 // n  # driver turn = 4/n legs of the driven wheel
+        legs = self.law.periods // n  # driver turn = periods/n periods (legs) of the driven wheel
         bp = leg_breakpoints(self.law)
-        phis = sorted({k * LEG_PERIOD + w for k in range(legs) for w in bp})
+        phis = sorted({k * self.law.period + w for k in range(legs) for w in bp})
         ths = self.law.theta(np.array(phis))
         total = 0.0
         for a, b in zip(ths[:-1], ths[1:]):
@@ -238,20 +238,20 @@ class PitchCurves:
 
     # ---- corners / curvature ------------------------------------------------------
     def corners(self) -> list[Corner]:
-        """Corners of both pitch curves (exact law only; [] when smoothed).
+        """Corners of both pitch curves (the law's ``corner_phis``; [] for a smooth law).
 
-        4 notches/tips on the driven curve (one per hand-over), 4/n on the driver
-        body (its hand-overs repeat every turn).  angle: body polar angle.
+        One notch/tip per period on the driven curve (4: one per hand-over of the walking law),
+        periods/n on the driver body (its corners repeat every turn).  angle: body polar angle.
         """
         if not _has_corners(self.law):
             return []
         out = []
         eps = CORNER_SIDE_RAD
         seen = set()
-        for k in range(4):
-            ph = math.pi / 4 + k * LEG_PERIOD
+        at = [c + k * self.law.period for k in range(self.law.periods) for c in self.law.corner_phis]
+        for ph in at:
             for curve in ("driven", "driver"):
-                if curve == "driver":  # the driver turns n times: 4/n distinct tips on its body
+                if curve == "driver":  # the driver turns n times: periods/n distinct tips on its body
                     key = round(float(self.law.theta(ph)) % (2 * math.pi), 9)
                     if key in seen:
                         continue
@@ -315,7 +315,7 @@ class PitchCurves:
             def den_arr(p):
                 r, d, dd = self.r(p), self.r_theta(p), self.r_thetatheta(p)
                 return r * r + 2 * d * d - r * dd
-        if isinstance(self.law, SmoothedWalkingLaw):
+        if self.law.scalar_path:
             # the solvers' one-point calls (floats) in math, bit-identical (``polar_derivatives1``)
             def f(p):
                 if not _finite(p):
@@ -345,8 +345,9 @@ class PitchCurves:
             for k in range(len(phi) - 1):
                 if s[k] != s[k + 1] and s[k] != 0 and s[k + 1] != 0:
                     edges.append(brentq(lambda p: float(den(p)), phi[k], phi[k + 1], xtol=ROOT_XTOL_FINE))
-            lo = -math.pi / 4
-            pts = [lo] + edges + [math.pi / 4]
+            bp = leg_breakpoints(self.law)
+            lo = bp[0]
+            pts = [lo] + edges + [bp[-1]]
             for a, b in zip(pts[:-1], pts[1:]):
                 if den(0.5 * (a + b)) < 0:
                     intervals.append((a, b))
@@ -355,7 +356,7 @@ class PitchCurves:
             cc_phi, cc_rho = cc
         else:
             cc_phi, cc_rho = math.nan, math.inf
-        corners = [c for c in self.corners() if c.curve == curve and c.phi == math.pi / 4]
+        corners = [c for c in self.corners() if c.curve == curve and c.phi in self.law.corner_phis]
         corner = corners[0] if corners else None
         rho_convex_min = cx[1]
         phi_convex = cx[0]
@@ -374,7 +375,8 @@ class PitchCurves:
 
 @dataclass(frozen=True)
 class CurvatureSummary:
-    """Radius of curvature of one pitch curve over one leg (angles: driven phi, leg-local).
+    """Radius of curvature of one pitch curve over one period of the law (one leg of the walking law;
+    angles: driven phi, period-local).
 
     rho_convex_min: smallest radius on convex parts (0 at a convex corner);
     rho_concave_min: smallest |radius| on concave parts (inf if none, 0 at a

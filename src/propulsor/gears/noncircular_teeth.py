@@ -38,7 +38,6 @@ import numpy as np
 from scipy.optimize import fsolve, minimize_scalar
 
 from ..errors import InputError, require
-from ..laws.walking import LEG_PERIOD
 from ..policy import (ROOT_BRIDGE_MAX_MODULE, SHAPER_MESH_STOP_MM, FD_STEP_ARC_RAD, FD_STEP_PHI_RAD, FD_STEP_REL, MINIMIZE_XATOL, NEWTON_STOP_MM, ROOT_XTOL_FINE,
                       SOLVE_RESIDUAL_MM, TIP_HEIGHT_TOL_MM)
 from .cutters import CutterSide, RackCutter, ShaperCutter
@@ -395,13 +394,16 @@ class GeneratedTeeth:
 
 
 def _concave_zones(curve: BodyPitchCurve) -> list[tuple[float, float]]:
-    """Concave stretches of the pitch curve as intervals of the driven angle (all legs, one turn)."""
+    """Concave stretches of the pitch curve as intervals of the driven angle (all periods (legs) of
+    the law over one turn, with one more on each side)."""
     side = "driven" if curve.role == "driven" else "driver"
     cs = curve.pc.curvature(side)
+    law = curve.pc.law
+    P = law.period
     out = []
     for a, b in cs.concave_intervals:
-        for k in range(-1, 6):
-            out.append((a + k * LEG_PERIOD, b + k * LEG_PERIOD))
+        for k in range(-1, law.periods + 2):
+            out.append((a + k * P, b + k * P))
     return out
 
 

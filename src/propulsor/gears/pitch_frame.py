@@ -14,7 +14,6 @@ import math
 import numpy as np
 
 from ..errors import require
-from ..laws.walking import LEG_PERIOD
 from .noncircular import PitchCurves, leg_breakpoints
 
 __all__ = ["ArcFrame", "BodyPitchCurve"]
@@ -26,7 +25,7 @@ _GX, _GW = np.polynomial.legendre.leggauss(10)
 class ArcFrame:
     """Shared arc length s(phi) of the pair's pitch curves, s(0) = 0 (true arc length
     ds = sqrt(r_H^2 + r_H'^2) dphi, seed 000 eq. 12 for r_H; docs/architecture.md, "closure").  Periodic per leg:
-    s(phi + pi/2) = s(phi) + leg.  Tabulated on one leg (nodes at the law's breakpoints, the
+    s(phi + P) = s(phi) + leg (P: the law's period, pi/2 for the walking law).  Tabulated on one period (nodes at the law's breakpoints, the
     ends of the C2 blend windows) by 10-point Gauss-Legendre; s(phi) and its inverse phi(s)
     are evaluated by cubic Hermite interpolation with the exact slopes ds/dphi, dphi/ds
     (interpolation error ~1e-11 rad with the default node density, see the tests).  phi(s) is
@@ -38,6 +37,8 @@ class ArcFrame:
         from scipy.interpolate import CubicHermiteSpline
 
         self.pc = pc
+        #: the law's period in phi (one leg of the walking law) and -period_start (pi/4 there)
+        self.period, self._p0 = pc.law.period, -pc.law.period_start
         bp = leg_breakpoints(pc.law)
         nodes = np.unique(np.concatenate([np.linspace(a, b, per_piece + 1) for a, b in zip(bp[:-1], bp[1:])]))
         self.nodes = nodes
@@ -47,7 +48,7 @@ class ArcFrame:
         S0 = S[j0] + float(self._gauss(np.array([nodes[j0]]), np.array([0.0]))[0])
         self.S = S - S0
         self.leg = float(S[-1])
-        self.perimeter = 4.0 * self.leg
+        self.perimeter = float(pc.law.periods) * self.leg
         g = pc.ds_dphi(nodes)
         self._s_of = CubicHermiteSpline(nodes, self.S, g)
         self._phi_of = CubicHermiteSpline(self.S, nodes, 1.0 / g)
@@ -63,15 +64,15 @@ class ArcFrame:
     def s_exact(self, phi):
         """s(phi) by quadrature from the nearest node below (reference for the interpolant)."""
         phi = np.atleast_1d(np.asarray(phi, float))
-        k = np.floor((phi + math.pi / 4) / LEG_PERIOD)
-        w = phi - k * LEG_PERIOD
+        k = np.floor((phi + self._p0) / self.period)
+        w = phi - k * self.period
         j = np.clip(np.searchsorted(self.nodes, w, side="right") - 1, 0, len(self.nodes) - 2)
         return self.S[j] + self._gauss(self.nodes[j], w) + k * self.leg
 
     def s(self, phi):
         phi = np.atleast_1d(np.asarray(phi, float))
-        k = np.floor((phi + math.pi / 4) / LEG_PERIOD)
-        return self._s_of(phi - k * LEG_PERIOD) + k * self.leg
+        k = np.floor((phi + self._p0) / self.period)
+        return self._s_of(phi - k * self.period) + k * self.leg
 
     def _inverse(self, w):
         """phi in the tabulated leg of arc length w: the inverse interpolant, then one Newton step on
@@ -82,14 +83,14 @@ class ArcFrame:
     def phi(self, s):
         s = np.atleast_1d(np.asarray(s, float))
         k = np.floor((s - self.S[0]) / self.leg)
-        return self._inverse(s - k * self.leg) + k * LEG_PERIOD
+        return self._inverse(s - k * self.leg) + k * self.period
 
     def phi1(self, s: float):
         """``phi`` of one float s (the same operations), or None if s is not finite."""
         if not math.isfinite(s):
             return None
         k = float(math.floor((s - self.S[0]) / self.leg))
-        return float(self._inverse(np.array([s - k * self.leg]))[0]) + k * LEG_PERIOD
+        return float(self._inverse(np.array([s - k * self.leg]))[0]) + k * self.period
 
 
 def _one(phi):

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from propulsor.errors import InputError, require_positive
-from propulsor.laws.walking import LEG_PERIOD, WalkingLaw, invert_theta, wrap_leg, wrap_leg1
+from propulsor.laws.walking import LEG_PERIOD, LEGS, WalkingLaw, invert_theta, wrap_leg, wrap_leg1
 from propulsor.policy import PHI_OF_THETA_TOL_RAD
 
 __all__ = ["SmoothedWalkingLaw"]
@@ -39,6 +39,19 @@ class SmoothedWalkingLaw:
     u_h: float | None = None
     coef: tuple = field(init=False, repr=False)
     eps: float = field(init=False, default=0.0)
+
+    # ---- the law interface (``laws.law.Law``) ---------------------------------------
+    kind = "walking"
+    period = LEG_PERIOD
+    period_start = -math.pi / 4
+    periods = LEGS
+    corner_phis = ()
+    #: ``U_derivs1`` / ``theta1`` reproduce ``U`` ... / ``theta`` bit for bit: the solvers use them
+    scalar_path = True
+
+    @property
+    def breakpoints(self) -> tuple:
+        return self.leg_breakpoints
 
     def __post_init__(self):
         if not isinstance(self.law, WalkingLaw):

@@ -94,6 +94,24 @@ class WalkingLaw:
     c: float
     n: int
 
+    # ---- the law interface (``laws.law.Law``) ---------------------------------------
+    kind = "walking"
+    period = LEG_PERIOD
+    period_start = -math.pi / 4
+    periods = LEGS
+    #: the one-float functions are used by the array paths' callers only (``laws.law.Law``)
+    scalar_path = False
+
+    @property
+    def breakpoints(self) -> tuple:
+        """Ends of the smooth pieces of one leg: the leg itself (the corner sits at its ends)."""
+        return (-math.pi / 4, math.pi / 4)
+
+    @property
+    def corner_phis(self) -> tuple:
+        """The leg hand-over phi = pi/4, where U' jumps (b > 0)."""
+        return (math.pi / 4,) if self.b > 0 else ()
+
     def __post_init__(self):
         a = _length("a", self.a)
         b = _length("b", self.b)

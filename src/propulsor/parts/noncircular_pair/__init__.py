@@ -1,4 +1,6 @@
-"""Non-circular gear pair of the driving wheel-walking propulsor (seeds 000 and 002).
+"""Non-circular gear pair of the driving wheel-walking propulsor (seeds 000 and 002), or of any law the
+part file names (``law = "elliptical" | "fourier" | "table" | "pitch_curve"``: ``laws.law``; such a law
+has no corners, so no blend, and no hub: the output speed ratio is reported instead of the hub speed).
 
 law (seed 000 eqs. 1-15, periodic per leg) -> pitch curves r_H(phi), r(theta) (seed 000 eqs. 12-13)
 closed by true arc length -> teeth -> finished outlines -> full-cycle proof on the outlines

@@ -18,6 +18,7 @@ import numpy as np
 
 from ...checks.motion import rotation_matrices
 from ..media import AnimationJob, chord_for_view, every, loops_of
+from ...laws.law import is_walking
 from .design import PairDesign
 
 __all__ = ["pair_animation"]
@@ -39,6 +40,9 @@ def _ratio_and_hub_speed(d, phi):
 
         U = np.asarray(sector_ratio(d.table, phi), float)
         return U, np.asarray(d.law.dX01_dphi(phi), float) / U
+    if not is_walking(d.law):  # no hub: the output speed ratio (driven over driver speed) 1/U
+        U = np.asarray(d.run_law.U(phi), float)
+        return U, 1.0 / U
     return np.asarray(d.run_law.U(phi), float), np.asarray(d.run_law.hub_speed(phi), float)
 
 
@@ -85,17 +89,20 @@ def pair_animation(dd: PairDesign, w, built: dict) -> list:
     at = np.searchsorted(dense, pr.phi[idx])
     U_d, hub_d = _ratio_and_hub_speed(d, dense)
     dd_deg = np.degrees(dense)
+    walking = is_walking(d.law)
     traces = [Trace("U = dθ/dφ", dd_deg, U_d, at, "orange", "φ, deg (grey: exact law)", "{:.4f}",
                     ref=(dd_deg, np.asarray(d.law.U(dense), float))),
               Trace("v/ω, mm/rad", dd_deg, hub_d, at, "blue", "φ, deg (grey: exact law)", "{:.2f}",
-                    ref=(dd_deg, np.asarray(d.law.hub_speed(dense), float)))]
+                    ref=(dd_deg, np.asarray(d.law.hub_speed(dense), float))) if walking else
+              Trace("ω_H/ω = 1/U", dd_deg, hub_d, at, "blue", f"φ, deg ({d.law.kind} law)", "{:.4f}")]
     least_txt = (f"least backlash {bl[least_k]:.4f} mm at φ = {deg[least_k]:.2f}°" if least_k is not None
                  else "no free phase: every phase jams")
     captions, marks = [], []
     for j, kk in enumerate(idx):
         pitch_pt = (float(pr.r_ref[kk]), 0.0)
         line1 = (f"φ = {deg[kk]:7.2f}° (proof phase {kk + 1} of {N}), θ = {math.degrees(pr.theta_law[kk]):8.2f}°, "
-                 f"U = {U[kk]:.4f}, v/ω = {hub[kk]:.2f} mm/rad")
+                 + (f"U = {U[kk]:.4f}, v/ω = {hub[kk]:.2f} mm/rad" if walking else
+                    f"U = {U[kk]:.4f}, ω_H/ω = {hub[kk]:.4f}"))
         if jam[kk]:
             line2 = f"!JAM: no free position of the driven wheel; least overlap {pr.least_overlap[kk]:.4g} mm²"
             mk = [Mark(pitch_pt, f"jam {pr.least_overlap[kk]:.3g} mm²")]
@@ -114,7 +121,8 @@ def pair_animation(dd: PairDesign, w, built: dict) -> list:
                      keep=keep, aspect_range=(0.62, 0.8))
     what = "one driven turn" + (f", the jammed phase of largest overlap added" if worst_jam is not None else "")
     return [AnimationJob("pair", anim,
-            title=f"the pair turning through one driven turn ({_METHOD[d.method]}) with U and v/ω traced",
+            title=f"the pair turning through one driven turn ({_METHOD[d.method]}) with U and "
+                  f"{'v/ω' if walking else 'ω_H/ω'} traced",
             poses=f"{every(k)} of the proof's {N} phases ({what}"
                   + ("; grid through the phase of least backlash)" if least_k is not None else ")"),
             least_clearance_mm=None if least_k is None else float(bl[least_k]), least_what="least backlash",

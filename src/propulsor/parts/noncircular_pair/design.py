@@ -24,6 +24,7 @@ from ...gears.generability import CutterSpec, SmoothingDesign, check_generable, 
 from ...gears.involute import BasicRack
 from ...gears.noncircular import PitchCurves, SmoothedWalkingLaw, hub_speed_ripple, perimeter_per_mm
 from ...gears.sectors import sector_hub_speed, sector_radii, sector_table
+from ...laws.law import is_walking
 from ...laws.walking import WalkingLaw
 from .params import NoncircularPairParams
 
@@ -42,7 +43,7 @@ class Design:
     """Law, closure and teeth of one method (no files)."""
 
     method: str
-    law: WalkingLaw
+    law: object              # the part file's law (laws.law.Law)
     run_law: object          # the law the teeth realise (smoothed for generated, exact for sectors)
     L: float
     m: float
@@ -64,8 +65,95 @@ class Design:
         return math.degrees(self.smoothing.delta) if self.smoothing is not None else 0.0
 
 
-def _law(p: NoncircularPairParams) -> WalkingLaw:
-    return WalkingLaw(a=p.a_mm, b=p.b_mm, c=p.c_mm, n=p.driver_turns)
+def _law(p: NoncircularPairParams, source=None):
+    """The part file's drive law (``laws.law.Law``); a table law's file relative to the part file ``source``."""
+    if p.law == "walking":
+        return WalkingLaw(a=p.a_mm, b=p.b_mm, c=p.c_mm, n=p.driver_turns)
+    if p.law == "elliptical":
+        from ...laws.ratio_laws import EllipticalLaw
+
+        return EllipticalLaw(p.eccentricity, p.driver_turns)
+    if p.law == "fourier":
+        from ...laws.ratio_laws import FourierLaw
+
+        return FourierLaw(p.driver_turns, tuple(float(v) for v in p.fourier_cos), tuple(float(v) for v in p.fourier_sin))
+    from pathlib import Path
+
+    from ...laws.pitch_curve_law import PitchCurveLaw, read_pitch_curve
+    from ...laws.table_law import TableLaw, read_law_table
+
+    f = Path(p.law_file if p.law == "table" else p.pitch_curve_file)
+    if not f.is_absolute():
+        f = (Path(source).resolve().parent if source is not None else Path.cwd()) / f
+    if p.law == "table":
+        return TableLaw(*read_law_table(f))
+    return PitchCurveLaw(*read_pitch_curve(f), p.driver_turns)
+
+
+def _design_smooth(p: NoncircularPairParams, law, progress) -> Design:
+    """A law without corners (elliptical, Fourier, table): no blend; closure fixes L (or the module),
+    both pitch curves must be generable with the module, the teeth and the cutters (law_search: the
+    catalogue shapers at this module, largest first, where a pitch curve is concave), then the teeth."""
+    from ...gears.catalogue import shaper_diameters, shaper_entry
+    from ...gears.generability import remedies
+    from ...gears.noncircular import centre_distance, module_for
+    from ...gears.noncircular_teeth import ArcFrame, ToothSpec
+
+    z_H = p.driven_teeth
+    with input_names({"z_H": "driven_teeth", "m": "module_mm", "L": "center_distance_mm"}):
+        if p.module_mm > 0:
+            m = p.module_mm
+            L = centre_distance(law, m, z_H)
+        else:
+            L = p.center_distance_mm
+            m = module_for(law, L, z_H)
+    pc = PitchCurves(law, L)
+    alpha = math.radians(p.pressure_angle_deg)
+    own = shaper_of(p, m)
+    cands = [(None if p.shaper_d0_mm <= 0 else _entry_of(p, m), own)]
+    concave = pc.curvature("driver").concave or pc.curvature("driven").concave
+    if p.law_search and concave:  # a shaper only where a pitch curve is concave
+        entries = []
+        for d0 in sorted(shaper_diameters(), reverse=True):
+            try:
+                entries.append(shaper_entry(d0, m))
+            except InputError:
+                continue
+        cands = [(e, e.cutter(alpha)) for e in entries] or cands
+    progress(f"generated: generability of the {law.kind} law at m = {m:g}, z {z_H // law.n}/{z_H}")
+    rack, th = _rack(p), _thinning(p)
+    frame = None
+    tries = []
+    for entry, sh in cands:
+        cutter = CutterSpec(m=m, alpha=alpha, x=p.driver_shift, x_H=-p.driver_shift,
+                            z0=p.shaper_teeth if sh is None else sh.z0, shaper_x0=None if sh is None else sh.x0)
+        g = check_generable(pc, cutter)
+        if not g.ok:
+            tries.append("; ".join(remedies(g, cutter, z_H, law.n, L)))
+            if not (g.driver.concave or g.driven.concave) or not p.law_search:
+                break  # the rack limits: no other shaper helps
+            continue
+        frame = frame or ArcFrame(pc)
+        common = dict(m=m, thinning_mm=th, rack=rack, z0=cutter.z0, tip_min_mm=p.tip_land_min_module * m, shaper=sh)
+        progress(f"generated: driver teeth ({z_H // law.n}), rack/shaper envelopes")
+        try:
+            with input_names(_TOOTH_KEYS if entry is None else _TOOTH_KEYS_D0):
+                drv, dvn = _generate_pair(pc, ToothSpec(x=p.driver_shift, **common),
+                                          ToothSpec(x=-p.driver_shift, **common), frame)
+        except (InputError, RuntimeError, ValueError) as exc:
+            if not p.law_search or not (g.driver.concave or g.driven.concave):
+                raise
+            tries.append(f"shaper d0 {entry.d0_mm:g}: {str(exc).split(': ', 1)[-1]}")
+            continue
+        sm = SmoothingDesign(law=law, delta=0.0, L=L, z_H=z_H, z=z_H // law.n, cutter=cutter, generability=g,
+                             ripple=None)
+        return Design("generated", law, law, L, m, z_H, z_H // law.n, pc, smoothing=sm, driver=drv, driven=dvn,
+                      closure_error=sm.closure_error, shaper=entry)
+    raise InputError("driver_shift" if not tries or "convex" in tries[0] else "shaper_teeth",
+                     p.driver_shift if not tries or "convex" in tries[0] else p.shaper_teeth,
+                     f"the {law.kind} law's pitch curves are not generable at m = {m:g}, z {z_H // law.n}/{z_H}, "
+                     f"L = {L:.3f} mm with the catalogue cutters",
+                     " | ".join(tries))
 
 
 def _rack(p) -> BasicRack:
@@ -300,14 +388,16 @@ def _generate_pair(pc, spec_driver, spec_driven, frame):
     return job.result(), dvn
 
 
-def design_generated(p: NoncircularPairParams, progress=lambda s: None) -> Design:
+def design_generated(p: NoncircularPairParams, progress=lambda s: None, source=None) -> Design:
     """Seed 000/002 law -> C2 blend -> closure -> generated teeth (docs/architecture.md, "Seed equations and their modules")."""
+    law = _law(p, source)
+    if not is_walking(law):
+        return _design_smooth(p, law, progress)
     if p.law_search:
-        return _search_design(p, _law(p), progress)
+        return _search_design(p, law, progress)
     from ...gears.noncircular_teeth import ArcFrame, ToothSpec
     from ...geometry.noncircular_outline import generate_gear
 
-    law = _law(p)
     z_H = p.driven_teeth
     progress("generated: choosing the smoothing of the law")
     scr = screened(p)  # the blend, the module and the shaper; the refusals that need no outline
@@ -381,8 +471,8 @@ def _largest_sector_module(table, j_n, m_hi) -> float:
     return lo
 
 
-def design(p: NoncircularPairParams, progress=lambda s: None) -> Design:
-    return design_generated(p, progress) if p.method == "generated" else design_sectors(p, progress)
+def design(p: NoncircularPairParams, progress=lambda s: None, source=None) -> Design:
+    return design_generated(p, progress, source) if p.method == "generated" else design_sectors(p, progress)
 
 
 # =========================================================================== proof
@@ -430,6 +520,7 @@ class PairDesign:
     mount: float
 
 
-def pair_design(p: NoncircularPairParams) -> PairDesign:
-    d = design(p)
+def pair_design(p: NoncircularPairParams, source=None) -> PairDesign:
+    """The pair of the part file ``source`` (a table law's file is read relative to it)."""
+    d = design(p, source=source)
     return PairDesign(p, d, gear_profiles(p, d), mounting(p, d))

@@ -1,7 +1,8 @@
 """What the noncircular pair's derived values mean (export.glossary)."""
 
 #: the derived values the report's summary shows
-KEY_VALUES = ("method", "center_distance_mm", "driver_teeth", "driven_teeth", "speed_ripple", "te_pp_rad",
+KEY_VALUES = ("law", "method", "center_distance_mm", "driver_teeth", "driven_teeth", "speed_ripple", "ratio_min",
+              "ratio_max", "te_pp_rad",
               "jam_phases", "backlash_min_mm")
 
 _PAIR = {
@@ -68,6 +69,15 @@ GLOSSARY = {
     "sectors_per_leg": ("", "involute sectors i per leg of the driven gear"),
     **{f"compare_<other>_{k}": (unit, f"{meaning}, with the teeth made by the other method ({{other}}), for comparison")
        for k, (unit, meaning) in _PAIR.items()},
+    # laws without a hub (elliptical, fourier, table)
+    "law": ("", "the drive law the part file names (walking, elliptical, fourier, table)"),
+    "law_periods": ("", "periods of the law per driven turn: lobes of the driven wheel"),
+    "ratio_min": ("", "least gear ratio U = dθ/dφ of the law"),
+    "ratio_max": ("", "largest gear ratio U = dθ/dφ of the law"),
+    "eccentricity": ("", "eccentricity e of the elliptical driver"),
+    "focal_parameter_mm": ("mm", "focal parameter p of the elliptical driver: r1 = p / (1 + e cos θ)"),
+    "pitch_curve_center_distance_mm": ("mm", "centre distance L0 of the driver's pitch curve as the part file gives it"),
+    "pitch_curve_scale": ("", "scale L / L0 of the pair against the pitch curve given (so that it holds the teeth)"),
     # print kit
     "print_module_mm": ("mm", "module of the printed gears"),
     "print_center_distance_mm": ("mm", "centre distance of the printed pair"),

@@ -41,7 +41,7 @@ def _extent(profile: Profile) -> tuple[float, float]:
     return tuple(float(v) for v in (pts.max(axis=0) - pts.min(axis=0)))
 
 
-def _pitch_extents(p: NoncircularPairParams):
+def _pitch_extents(p: NoncircularPairParams, source=None):
     """(m, L, extents) of the pair from its unblended pitch curves (seed 000 eqs. 12-13) at the module:
     each gear's bounding box of its pitch curve grown by the addendum m (1 + |x|) and 2 % (the blend
     and the search move the curves by less), without cutting a tooth."""
@@ -50,7 +50,7 @@ def _pitch_extents(p: NoncircularPairParams):
     from ...gears.noncircular import PitchCurves, centre_distance
     from .design import _law
 
-    law, m = _law(p), p.module_mm
+    law, m = _law(p, source), p.module_mm
     L = centre_distance(law, m, p.driven_teeth)
     pc = PitchCurves(law, L)
     phi = np.linspace(0.0, 2.0 * math.pi, 4001)
@@ -66,8 +66,9 @@ def _pitch_extents(p: NoncircularPairParams):
 
 
 def _kit_params(p: NoncircularPairParams, m: float, S: float, pr: Printer, j_n: float, bores) -> NoncircularPairParams:
+    walking = {} if p.law != "walking" else dict(a_mm=p.a_mm / S, b_mm=p.b_mm / S, c_mm=p.c_mm / S)
     q = dataclasses.replace(
-        p, module_mm=m / S, center_distance_mm=0.0, a_mm=p.a_mm / S, b_mm=p.b_mm / S, c_mm=p.c_mm / S,
+        p, module_mm=m / S, center_distance_mm=0.0, **walking,
         face_width_mm=p.face_width_mm / S, backlash_mm=j_n, keyway=False, mounting_distance_mm=0.0,
         compare_methods=False, driver_bore_mm=bores[0], driven_bore_mm=bores[1],
         tip_land_min_module=max(p.tip_land_min_module, pr.min_feature_mm / (m / S)))
@@ -77,6 +78,9 @@ def _kit_params(p: NoncircularPairParams, m: float, S: float, pr: Printer, j_n: 
 def _found_law(p: NoncircularPairParams, d) -> NoncircularPairParams:
     """The law and shaper the full-size design found (law_search), fixed for the print scale: the
     catalogue lists no shaper at a print module, the shaper is the same one scaled (z0 and its own x0)."""
+    if d.search is None and d.shaper is not None and p.law != "walking":  # a smooth law's catalogue shaper
+        return dataclasses.replace(p, law_search=False, shaper_d0_mm=0.0, shaper_teeth=d.shaper.z0,
+                                   shaper_own_x0=True, shaper_x0=d.shaper.x0)
     if d.search is None:
         return p
     pt = d.search_tries[-1][0]
@@ -112,12 +116,12 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     if p.law_search and p.module_mm > 0:
         # the searched law at full size is also the one at 1:1: the scale from the pitch curves, and at
         # 1:1 the printed pair searched and cut once (a print module has no catalogue shaper)
-        m, L_est, extents = _pitch_extents(p)
+        m, L_est, extents = _pitch_extents(p, source)
         choice = choose_scale(extents, bed, scale)
         if choice.S != 1.0:
-            full = pair_design(p)
+            full = pair_design(p, source)
     else:
-        full = pair_design(p)
+        full = pair_design(p, source)
     if full is not None:
         m, L_est = full.d.m, full.mount
         extents = {"driver": (*_extent(full.profiles[0]), p.face_width_mm),
@@ -137,7 +141,7 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     alpha = math.radians(p.pressure_angle_deg)
     for attempt in range(2):
         q = _kit_params(p if full is None else _found_law(p, full.d), m, S, printer, j_n, bores)
-        kd = pair_design(q)
+        kd = pair_design(q, source)
         proof = prove(kd.d, q.proof_phases_per_tooth, 4, mount=kd.mount)
         s = proof.summary()
         jn_min = s["backlash_min_mm"] * math.cos(alpha)

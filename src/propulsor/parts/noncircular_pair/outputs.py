@@ -17,6 +17,8 @@ from ...gears.sectors import (
     PINION_POINT_COLUMNS, RADII_COLUMNS, SECTOR_COLUMNS, WHEEL_POINT_COLUMNS, pinion_tooth_points,
     sector_hub_speed, sector_radii, structured_rows, wheel_space_points,
 )
+from ...laws.law import is_walking
+from .law_outputs import law_derived, law_figure, law_notes, speed_ratio_plot
 from ...laws.walking import LEG_PERIOD
 from ..pipeline import Pipeline, design_of
 from ..media import pipeline_steps
@@ -74,6 +76,8 @@ def figure2(w, d: Design, pr, other, pr_other):
     from ...export.plots import new_figure
 
     fig, ax = new_figure(8.0, 5.0)
+    if not is_walking(d.law):
+        return law_figure(w, d, pr, fig, ax)
     ph = np.linspace(0.0, LEG_PERIOD, 2001)
     ax.plot(np.degrees(ph), d.law.U(ph), "k--", lw=0.9, label="law U(phi), seed 000 eq. 15 (exact)")
     if d.method == "generated":
@@ -109,6 +113,10 @@ def ratio_and_layout_plots(w, d: Design, pr, profiles, mount: float, table=None)
     fig.tight_layout()
     w.add_plot("transmission_error", fig)
 
+    if not is_walking(d.law):
+        speed_ratio_plot(w, d)
+        _pair_plot(w, d, profiles, mount)
+        return
     fig, ax = new_figure()
     ph = np.linspace(-math.pi / 4, math.pi / 4, 4001)
     mean = d.law.hub_speed_ratio
@@ -129,6 +137,11 @@ def ratio_and_layout_plots(w, d: Design, pr, profiles, mount: float, table=None)
     ax.legend(fontsize=7)
     fig.tight_layout()
     w.add_plot("hub_speed", fig)
+    _pair_plot(w, d, profiles, mount)
+
+
+def _pair_plot(w, d: Design, profiles, mount: float):
+    from ...export.plots import new_figure
 
     fig, ax = new_figure(6.5, 6.5)
     for prof, off in ((profiles[1], (0.0, 0.0)), (profiles[0], (mount, 0.0))):
@@ -150,6 +163,8 @@ def _pct(x):
 def write_notes(w, d, pr, other, pr_other, other_note, p, mount):
     s = pr.summary()
     law = d.law
+    if not is_walking(law):
+        return law_notes(w, d, pr, p, mount, s)
     w.add_note(
         f"Law (seed 000 eqs. 1-15, wrapped to be periodic per leg): A = a - b + c = {law.A:g} mm, "
         f"u = n pi A / (A pi + 6 b) = {law.u:.6f}, n = {law.n}; constant hub speed v/omega = A/u = "
@@ -329,7 +344,7 @@ def tables(dd: PairDesign, w, built: dict) -> None:
     """The papers' tables for these parameters, the transmission table, pitch curves, teeth."""
     p, d = dd.p, dd.d
     pr = built["proof"]
-    table = sector_tables(w, p)
+    table = sector_tables(w, p) if p.law == "walking" else None  # the papers' tables: the walking law's
     built["table"] = d.table if d.table is not None else table  # the sector method's table, for the plots
     th_act = pr.theta_actual()
     jam = ~np.isfinite(pr.phi_drive)
@@ -342,11 +357,17 @@ def tables(dd: PairDesign, w, built: dict) -> None:
                  for a, b, c, r, e, f, g, h, i, j in zip(pr.phi, pr.theta_law, th_act, pr.phi_run, pr.te_drive,
                                                           pr.backlash_mm, pr.pairs_drive, pr.overlap_law,
                                                           pr.least_overlap, jam)])
-    ph = np.linspace(-math.pi / 4, math.pi / 4, 721)
     pcr = PitchCurves(d.run_law, d.L)
-    w.add_table("pitch_curves", ["phi_rad", "r_H_mm", "theta_rad", "r_mm", "ratio_U", "hub_speed_mm_per_rad"],
-                [[float(a), float(b), float(c), float(e), float(f), float(g)] for a, b, c, e, f, g in
-                 zip(ph, pcr.r_H(ph), d.run_law.theta(ph), pcr.r(ph), d.run_law.U(ph), d.run_law.hub_speed(ph))])
+    if not is_walking(d.law):
+        ph = np.linspace(0.0, 2 * math.pi, 1441)
+        w.add_table("pitch_curves", ["phi_rad", "r_H_mm", "theta_rad", "r_mm", "ratio_U"],
+                    [[float(a), float(b), float(c), float(e), float(f)] for a, b, c, e, f in
+                     zip(ph, pcr.r_H(ph), d.run_law.theta(ph), pcr.r(ph), d.run_law.U(ph))])
+    ph = np.linspace(-math.pi / 4, math.pi / 4, 721)
+    if is_walking(d.law):
+        w.add_table("pitch_curves", ["phi_rad", "r_H_mm", "theta_rad", "r_mm", "ratio_U", "hub_speed_mm_per_rad"],
+                    [[float(a), float(b), float(c), float(e), float(f), float(g)] for a, b, c, e, f, g in
+                     zip(ph, pcr.r_H(ph), d.run_law.theta(ph), pcr.r(ph), d.run_law.U(ph), d.run_law.hub_speed(ph))])
     if d.method == "generated" and d.search is not None:
         law_search_outputs(w, d)
     if d.method == "generated":
@@ -375,6 +396,8 @@ def checks_and_derived(dd: PairDesign, w, built: dict) -> None:
     other, pr_other, _ = built["other"]
     w.add_checks(checks_generated(d, pr, p) if d.method == "generated" else checks_sectors(d, pr))
     s = pr.summary()
+    if not is_walking(d.law):
+        return law_derived(dd, w, pr, s)
     w.derived.update({
         "center_distance_mm": d.L, "mounting_distance_mm": dd.mount, "module_mm": d.m, "driver_teeth": d.z, "driven_teeth": d.z_H,
         "driver_turns": d.law.n, "method": d.method, "smoothing_deg": d.smoothing_deg,
@@ -487,4 +510,4 @@ def write_outputs(p: NoncircularPairParams, w, d: Design, profiles, pr, other=No
         step(dd, w, built)
 
 
-build = Pipeline(lambda p, w: design_of(p, pair_design), (solids, proofs) + OUTPUT_STEPS)
+build = Pipeline(lambda p, w: design_of(p, pair_design, getattr(w, "source", None)), (solids, proofs) + OUTPUT_STEPS)

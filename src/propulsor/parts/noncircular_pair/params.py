@@ -1,4 +1,4 @@
-"""Parameters of the walking-drive non-circular pair (seeds 000, 002)."""
+"""Parameters of the non-circular pair: the walking drive (seeds 000, 002) or another law (``law``)."""
 
 from __future__ import annotations
 
@@ -8,9 +8,19 @@ from ...errors import InputError
 from ...laws.walking import WalkingLaw
 from ...params import PartParams, param
 
-__all__ = ["METHODS", "NoncircularPairParams"]
+__all__ = ["METHODS", "LAWS", "LAW_KEYS", "NoncircularPairParams"]
 
 METHODS = ("generated", "sectors")
+#: the drive laws a part file can name (``law = "..."``)
+LAWS = ("walking", "elliptical", "fourier", "table", "pitch_curve")
+#: the keys that belong to one law only: a part file of another law may not set them
+LAW_KEYS = {
+    "walking": ("a_mm", "b_mm", "c_mm", "blend_hand_over", "smoothing_deg"),
+    "elliptical": ("eccentricity",),
+    "fourier": ("fourier_cos", "fourier_sin"),
+    "table": ("law_file",),
+    "pitch_curve": ("pitch_curve_file",),
+}
 
 
 # =========================================================================== parameters
@@ -26,8 +36,24 @@ class NoncircularPairParams(PartParams):
                         why=_WHY_MECHANISM)
     b_mm: float = param(50.0, "mm", "crank length b", min=0.0, max=5000.0, why=_WHY_MECHANISM)
     c_mm: float = param(236.5, "mm", "shoe stand length c", min=0.0, max=5000.0, why=_WHY_MECHANISM)
-    driver_turns: int = param(4, "", "n: driver turns per driven (carrier) turn; 1, 2 or 4", min=1, max=4, integer=True,
-                              why="the driver curve closes only when n divides the 4 legs")
+    law: str = param("walking", "", "drive law: walking (a_mm, b_mm, c_mm, driver_turns), elliptical "
+                     "(eccentricity, driver_turns lobes of the driven wheel), fourier (fourier_cos, fourier_sin, "
+                     "driver_turns), table (law_file), pitch_curve (pitch_curve_file, driver_turns lobes of the driven wheel)",
+                     choices=LAWS)
+    driver_turns: int = param(4, "", "n: driver turns per driven (carrier) turn; walking: 1, 2 or 4; elliptical and "
+                              "fourier: the driven wheel's lobes k (driver turns per driven turn); table: from the "
+                              "table", min=1, max=12, integer=True,
+                              why="a 12-lobe driven wheel: every lobe narrower than 30 deg")
+    eccentricity: float = param(0.0, "", "elliptical law: eccentricity e of the driver ellipse, turning about a "
+                                "focus", min=0.0, max=0.9, why="the driven wheel's radius L - r1 nearly vanishes")
+    fourier_cos: list = param([], "rad", "fourier law: c_j of phi(theta) = theta / k + sum_j (c_j cos j theta + s_j "
+                              "sin j theta), j = 1, 2, ...")
+    fourier_sin: list = param([], "rad", "fourier law: s_j of the same series")
+    law_file: str = param("", "", "table law: CSV with columns driver_deg,driven_deg over one period (relative to "
+                          "the part file; the first row is the origin, the last closes the period)")
+    pitch_curve_file: str = param("", "", "pitch_curve law: CSV with columns angle_deg,radius_mm, the driver's pitch "
+                                  "curve over one turn (relative to the part file; scaled so its perimeter holds the "
+                                  "teeth)")
     method: str = param("generated", "", "tooth method: generated (conjugate, default) or sectors (the papers')",
                         choices=METHODS)
     module_mm: float = param(2.5, "mm", "module m (0: from center_distance_mm, generated teeth only)", min=0.0, max=50.0,
@@ -80,7 +106,46 @@ class NoncircularPairParams(PartParams):
                                         integer=True, why="64 phases a tooth resolve contact to 1/64 of a pitch")
     compare_methods: bool = param(True, "", "prove the other tooth method too (2D, one leg) and report the comparison")
 
+    def _validate_law_keys(self) -> None:
+        """Keys of another law are refused (set to anything but their default)."""
+        import dataclasses
+
+        defaults = {f.name: (f.default if f.default is not dataclasses.MISSING else f.default_factory())
+                    for f in dataclasses.fields(self)}
+        for other, keys in LAW_KEYS.items():
+            if other == self.law:
+                continue
+            for k in keys:
+                if getattr(self, k) != defaults[k]:
+                    raise InputError(k, getattr(self, k), f"is a key of law = \"{other}\", not of law = "
+                                     f"\"{self.law}\" (its keys: {', '.join(LAW_KEYS[self.law]) or 'none'})")
+        if self.law != "walking":
+            if self.method != "generated":
+                raise InputError("method", self.method, "the sector method is the walking law's (the papers'); "
+                                 f"law = \"{self.law}\" has generated teeth")
+        for key in ("fourier_cos", "fourier_sin"):
+            for i, v in enumerate(getattr(self, key)):
+                if isinstance(v, bool) or not isinstance(v, (int, float)):
+                    raise InputError(f"{key}[{i}]", v, "must be a number (rad)")
+        if self.law == "table" and not self.law_file:
+            raise InputError("law_file", "", "law = \"table\" needs the CSV file of its angles")
+        if self.law == "pitch_curve" and not self.pitch_curve_file:
+            raise InputError("pitch_curve_file", "", "law = \"pitch_curve\" needs the CSV file of the driver's curve")
+        if self.law == "elliptical":
+            from ...laws.ratio_laws import EllipticalLaw
+
+            EllipticalLaw(self.eccentricity, self.driver_turns)
+        if self.law == "fourier":
+            from ...laws.ratio_laws import FourierLaw
+
+            FourierLaw(self.driver_turns, tuple(float(v) for v in self.fourier_cos),
+                       tuple(float(v) for v in self.fourier_sin))
+
     def validate(self) -> None:
+        self._validate_law_keys()
+        if self.law != "walking":
+            self._validate_common(self.driver_turns if self.law != "table" else 1)
+            return
         if not self.a_mm < self.c_mm:
             raise InputError("a_mm", self.a_mm, f"must be < c_mm = {self.c_mm:g}: the crank axes lie inside the "
                              "circle of the shoe stands (seed 000: 60 < 360, seed 002: 100 < 236.5)")
@@ -91,6 +156,12 @@ class NoncircularPairParams(PartParams):
             raise InputError("driver_turns", self.driver_turns,
                              "the driver pitch curve closes only if n divides the 4 legs: n in {1, 2, 4}")
         n = self.driver_turns
+        z = self.driven_teeth
+        self._validate_common(n)
+        WalkingLaw(a=self.a_mm, b=self.b_mm, c=self.c_mm, n=n)  # the law's own checks
+
+    def _validate_common(self, n: int) -> None:
+        """The rules of every law: whole driver teeth, the tooth method's inputs, bores."""
         z = self.driven_teeth
         if z % n:
             raise InputError("driven_teeth", z, f"must be a multiple of driver_turns = {n} (whole driver teeth)",
@@ -115,7 +186,6 @@ class NoncircularPairParams(PartParams):
             d = getattr(self, name)
             if self.keyway and d > 0 and not 6.0 < d <= 230.0:
                 raise InputError(name, d, "a keyway needs a bore over 6 up to 230 mm (DIN 6885-1); set keyway = false")
-        WalkingLaw(a=self.a_mm, b=self.b_mm, c=self.c_mm, n=n)  # the law's own checks
 
     def screen(self) -> None:
         """The refusals of a build that need no outline (``design.screen``: generability of the blend, the
@@ -123,4 +193,6 @@ class NoncircularPairParams(PartParams):
         after the size estimate, and the build reuses its result."""
         from .design import screened
 
+        if self.law != "walking":
+            return  # the screen knows the walking law's blend and search; other laws are screened by the build
         screened(self)

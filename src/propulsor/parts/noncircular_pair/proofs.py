@@ -12,6 +12,7 @@ from ... import policy
 from ...check import Check
 from ...errors import InputError
 from ...gears.noncircular import PitchCurves
+from ...laws.law import is_walking
 from ...laws.walking import LEG_PERIOD
 from .design import Design, PairDesign, design_generated, design_sectors
 from .params import NoncircularPairParams
@@ -39,6 +40,8 @@ def compare(p: NoncircularPairParams, d: Design, prog=lambda s: None):
     repeats per leg) at its own design centre distance.  Returns (design, proof, note); (None,
     None, why) if it cannot be made."""
     alt = "sectors" if d.method == "generated" else "generated"
+    if not is_walking(d.law):
+        return None, None, f"The sector method exists for the walking law only (this pair's law: {d.law.kind})."
     try:
         q = dataclasses.replace(p, method=alt, module_mm=d.m, center_distance_mm=0.0)
         q.validate()

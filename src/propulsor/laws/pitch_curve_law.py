@@ -1,0 +1,140 @@
+"""A drive law from the driver's pitch curve (a shape-driven design): ``angle_deg,radius_mm`` rows.
+
+The driver's pitch curve r(a) in polar form about its axis (a counter-clockwise on the driver body, the
+row of angle 0 in contact at the start: it points at the driven wheel) through the rows by a periodic
+quintic spline; the driven wheel is its conjugate with k lobes (k driver turns per driven turn).  With
+the driver angle theta = -a (the wheels turn in opposite senses, ``gears.pitch_frame``): closure
+integral_0^2pi r / (L0 - r) dtheta = 2 pi / k fixes the centre distance L0 of the curve as given, and
+
+    phi(theta) = integral_0^theta r / (L0 - r) dtheta,   U = d theta / d phi = (L0 - r) / r.
+
+The law (``laws.law.Law``) is the spline of theta(phi) through dense samples of that integral
+(``table_law.TableLaw``); the pair is then scaled so that its pitch perimeter holds the teeth
+(``scale`` = L / L0 is reported).  Rows must have strictly increasing angles within one turn and
+radii > 0 (a curve through the axis is refused, naming the row).
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import InputError
+from .table_law import MAX_BYTES, TableLaw
+
+__all__ = ["PitchCurveLaw", "parse_pitch_curve", "read_pitch_curve"]
+
+COLUMNS = ("angle_deg", "radius_mm")
+MIN_ROWS = 8
+MAX_ROWS = 100_000
+#: samples of phi(theta) per driver turn the law's spline goes through
+SAMPLES = 2048
+_GX, _GW = np.polynomial.legendre.leggauss(12)
+
+
+def _bad(key, row, value, limit, column=""):
+    return InputError(f"{key} row {row}{(' ' + column) if column else ''}", value, limit)
+
+
+def parse_pitch_curve(text: str, key: str = "pitch_curve_file"):
+    """(angle_deg, radius_mm) of a CSV text with the header ``angle_deg,radius_mm``."""
+    rows = [r for r in csv.reader(io.StringIO(text)) if r and any(c.strip() for c in r)]
+    if not rows or tuple(c.strip() for c in rows[0]) != COLUMNS:
+        raise InputError(key, ",".join(rows[0])[:80] if rows else "(empty)", "the header must be angle_deg,radius_mm")
+    data = rows[1:]
+    if len(data) > MAX_ROWS:
+        raise InputError(key, f"{len(data)} rows", f"at most {MAX_ROWS} rows")
+    a, r = [], []
+    for i, row in enumerate(data, start=1):
+        try:
+            x, y = (float(c) for c in row) if len(row) == 2 else (math.nan, None)
+        except ValueError:
+            raise _bad(key, i, ",".join(row)[:80], "two numbers") from None
+        if y is None:
+            raise _bad(key, i, ",".join(row)[:80], "two columns: angle_deg,radius_mm")
+        if not (math.isfinite(x) and math.isfinite(y)):
+            raise _bad(key, i, ",".join(row)[:80], "finite numbers")
+        a.append(x)
+        r.append(y)
+    return tuple(a), tuple(r)
+
+
+def read_pitch_curve(path: Path, key: str = "pitch_curve_file"):
+    path = Path(path)
+    try:
+        with open(path, "rb") as f:
+            raw = f.read(MAX_BYTES + 1)
+    except OSError as exc:
+        raise InputError(key, str(path), f"cannot be read: {exc.strerror or exc}") from None
+    if len(raw) > MAX_BYTES:
+        raise InputError(key, str(path), f"a pitch curve table is at most {MAX_BYTES} bytes")
+    try:
+        return parse_pitch_curve(raw.decode("utf-8-sig"), key)
+    except UnicodeDecodeError:
+        raise InputError(key, str(path), "must be UTF-8 text") from None
+
+
+def _curve(angle_deg, radius_mm, key):
+    """Periodic quintic spline r(a) (a in rad, period 2 pi) through the rows, checked."""
+    from scipy.interpolate import make_interp_spline
+
+    a, r = np.asarray(angle_deg, float), np.asarray(radius_mm, float)
+    if len(a) < MIN_ROWS:
+        raise InputError(key, f"{len(a)} rows", f"a pitch curve needs at least {MIN_ROWS} rows over one turn")
+    for i in range(len(a)):
+        if not r[i] > 0:
+            raise _bad(key, i + 1, float(r[i]), "the pitch curve must not reach or cross the axis: radius > 0 mm",
+                       "radius_mm")
+        if i and not a[i] > a[i - 1]:
+            raise _bad(key, i + 1, float(a[i]), f"must be strictly increasing (row {i}: {a[i - 1]:g})", "angle_deg")
+    closed = abs(a[-1] - a[0] - 360.0) < 1e-9
+    if a[-1] - a[0] > 360.0 or (closed and abs(r[-1] - r[0]) > 1e-9 * r[0]):
+        raise _bad(key, len(a), float(a[-1]), f"the rows span one turn: angles up to {a[0] + 360:g} deg "
+                   "(that row only to close the curve, with the first row's radius)", "angle_deg")
+    if not closed:
+        a, r = np.append(a, a[0] + 360.0), np.append(r, r[0])
+    x = np.radians(a - a[0])
+    x[-1] = 2 * math.pi
+    return make_interp_spline(x, r, k=5, bc_type="periodic"), math.radians(a[0]), len(a)
+
+
+class PitchCurveLaw(TableLaw):
+    """The law of a driver pitch curve with a conjugate k-lobe driven wheel (module docstring)."""
+
+    kind = "pitch_curve"
+
+    def __init__(self, angle_deg, radius_mm, k: int, key: str = "pitch_curve_file"):
+        from scipy.optimize import brentq
+
+        spl, a0, rows = _curve(angle_deg, radius_mm, key)
+        kf = float(k)
+        if kf != round(kf) or not 1 <= kf <= 12:
+            raise InputError("driver_turns", k, "lobes of the driven wheel must be a whole number 1 .. 12")
+        k = int(round(kf))
+        # Gauss-Legendre on SAMPLES segments of the driver turn: theta = -a (a from the first row)
+        edges = np.linspace(0.0, 2 * math.pi, SAMPLES + 1)
+        h = np.diff(edges)[:, None]
+        t = edges[:-1, None] + 0.5 * h * (_GX[None, :] + 1)
+        r_t = spl(np.mod(-t, 2 * math.pi))
+        r_max = max(float(np.max(spl(np.linspace(0.0, 2 * math.pi, 20 * SAMPLES)))), float(np.max(r_t)))
+
+        def closure(L):
+            return float(np.sum(0.5 * h * (r_t / (L - r_t)) @ _GW[:, None])) - 2 * math.pi / k
+
+        L0 = brentq(closure, r_max * (1 + 1e-9), r_max * 1e6, xtol=1e-13 * r_max, rtol=4e-15)
+        seg = (0.5 * h * (r_t / (L0 - r_t)) @ _GW[:, None])[:, 0]
+        phi = np.concatenate([[0.0], np.cumsum(seg)])
+        phi *= (2 * math.pi / k) / phi[-1]  # closure to the last bit
+        object.__setattr__(self, "L0", float(L0))
+        object.__setattr__(self, "rows", rows)
+        object.__setattr__(self, "first_angle", a0)
+        object.__setattr__(self, "_r", spl)
+        TableLaw.__init__(self, tuple(np.degrees(edges)), tuple(np.degrees(phi)), key)
+
+    def driver_radius_given(self, theta):
+        """The given curve's radius (mm, unscaled) at driver angle theta."""
+        return self._r(np.mod(-np.asarray(theta, float), 2 * math.pi))

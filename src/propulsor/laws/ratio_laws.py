@@ -1,0 +1,220 @@
+"""Drive laws of a non-circular pair given by the user (``laws.law.Law``): elliptical, Fourier series.
+
+Angles in rad: phi the driven angle, theta the driver angle, theta(0) = 0, U = d theta / d phi.
+Both laws have k lobes on the driven wheel and k driver turns per driven turn: period 2 pi / k in phi.
+
+* ``EllipticalLaw(e, k)``: the driver is an ellipse of eccentricity e turning about a focus,
+  r1 = p / (1 + e cos theta); the driven wheel, r2 = L - r1, has k lobes (k = 1: two equal
+  ellipses, 1:1; Litvin & Fuentes-Aznar, Noncircular Gears, 2009, ch. 3-4).  Closure
+  integral_0^2pi r1 / (L - r1) dtheta = 2 pi / k with q = p / L:
+  2 pi q / sqrt((1 - q)^2 - e^2) = 2 pi / k, i.e. (k^2 - 1) q^2 + 2 q - (1 - e^2) = 0.
+  Then phi(theta) = (2/k) atan(c tan(theta/2)), c = sqrt((1 - q - e) / (1 - q + e)), and
+  U = (1 - q + e cos theta) / q, from (1 - e)/(1 + e) to (1 + e)/(1 - e) at k = 1.
+* ``FourierLaw(k, cos, sin)``: phi(theta) = theta / k + sum_j (c_j cos j theta + s_j sin j theta)
+  (the form ncgears takes), shifted by the constant - sum c_j so that phi(0) = 0 (a rotation of the
+  driven wheel); d phi / d theta must stay > 0.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import InputError, require_finite
+
+__all__ = ["EllipticalLaw", "FourierLaw"]
+
+#: largest eccentricity of an elliptical law (the driven wheel's radius L - r1 -> 0 as e -> 1)
+E_MAX = 0.9
+#: largest lobe count of a driven wheel
+LOBES_MAX = 12
+#: samples of d phi / d theta over one driver turn when checking it stays > 0
+_FOURIER_CHECK_SAMPLES = 20000
+
+
+def _lobes(value) -> int:
+    k = require_finite("driver_turns", value)
+    if k != round(k) or not 1 <= k <= LOBES_MAX:
+        raise InputError("driver_turns", value, f"lobes of the driven wheel must be a whole number 1 .. {LOBES_MAX}")
+    return int(round(k))
+
+
+class _PeriodicLaw:
+    """What the k-lobe laws share: period 2 pi / k, k driver turns per driven turn, one smooth piece."""
+
+    scalar_path = False
+    corner_phis = ()
+
+    @property
+    def n(self) -> int:
+        return self.k
+
+    @property
+    def periods(self) -> int:
+        return self.k
+
+    @property
+    def period(self) -> float:
+        return 2 * math.pi / self.k
+
+    @property
+    def period_start(self) -> float:
+        return -math.pi / self.k
+
+    @property
+    def breakpoints(self) -> tuple:
+        return (-math.pi / self.k, math.pi / self.k)
+
+    def U_derivs1(self, phi: float) -> tuple:
+        p = np.array([float(phi)])
+        return float(self.U(p)[0]), float(self.dU_dphi(p)[0]), float(self.d2U_dphi2(p)[0])
+
+    def theta1(self, phi: float) -> float:
+        return float(self.theta(np.array([float(phi)]))[0])
+
+    @property
+    def U_min(self) -> float:
+        return float(np.min(self.U(np.linspace(-math.pi / self.k, math.pi / self.k, 4001))))
+
+    @property
+    def U_max(self) -> float:
+        return float(np.max(self.U(np.linspace(-math.pi / self.k, math.pi / self.k, 4001))))
+
+
+@dataclass(frozen=True)
+class EllipticalLaw(_PeriodicLaw):
+    """Elliptical driver about a focus, e its eccentricity, k lobes of the driven wheel."""
+
+    e: float
+    k: int = 1
+
+    kind = "elliptical"
+
+    def __post_init__(self):
+        e = require_finite("eccentricity", self.e)
+        if not 0.0 <= e < 1.0:
+            raise InputError("eccentricity", self.e, "an ellipse has 0 <= e < 1")
+        if e > E_MAX:
+            raise InputError("eccentricity", self.e, f"must be <= {E_MAX}: the driven wheel's radius L - r1 "
+                             "nearly vanishes at the driver's far vertex")
+        k = _lobes(self.k)
+        object.__setattr__(self, "e", e)
+        object.__setattr__(self, "k", k)
+        # closure: (k^2 - 1) q^2 + 2 q - (1 - e^2) = 0, q = p / L
+        if k == 1:
+            q = (1 - e * e) / 2
+        else:
+            q = (-1 + math.sqrt(1 + (k * k - 1) * (1 - e * e))) / (k * k - 1)
+        if not 1 - q - e > 0:
+            raise InputError("eccentricity", self.e, f"with {k} lobes the driven wheel's radius L - r1 reaches 0 "
+                             f"(q = p/L = {q:.4f} >= 1 - e)")
+        object.__setattr__(self, "q", q)
+        object.__setattr__(self, "_alpha", 1 - q)
+        object.__setattr__(self, "_c", math.sqrt((1 - q - e) / (1 - q + e)))
+
+    def driver_radius_rel(self, theta):
+        """Driver radius over L at driver angle theta: q / (1 + e cos theta)."""
+        return self.q / (1 + self.e * np.cos(np.asarray(theta, dtype=float)))
+
+    def theta(self, phi):
+        x = self.k * np.asarray(phi, dtype=float) / 2
+        j = np.floor(x / math.pi + 0.5)
+        w = x - j * math.pi
+        return 2 * (np.arctan(np.tan(w) / self._c) + j * math.pi)
+
+    def phi_of_theta(self, theta, tol: float = 0.0):
+        th = np.asarray(theta, dtype=float) / 2
+        j = np.floor(th / math.pi + 0.5)
+        w = th - j * math.pi
+        return (2.0 / self.k) * (np.arctan(self._c * np.tan(w)) + j * math.pi)
+
+    def U(self, phi):
+        return (self._alpha + self.e * np.cos(self.theta(phi))) / self.q
+
+    def dU_dphi(self, phi):
+        th = self.theta(phi)
+        return -self.e * np.sin(th) / self.q * (self._alpha + self.e * np.cos(th)) / self.q
+
+    def d2U_dphi2(self, phi):
+        th = self.theta(phi)
+        U = (self._alpha + self.e * np.cos(th)) / self.q
+        dU = -self.e * np.sin(th) / self.q * U
+        return -self.e / self.q * (np.cos(th) * U * U + np.sin(th) * dU)
+
+
+@dataclass(frozen=True)
+class FourierLaw(_PeriodicLaw):
+    """phi(theta) = theta / k + sum_j (c_j cos j theta + s_j sin j theta) - sum_j c_j (rad)."""
+
+    k: int
+    cos: tuple = ()
+    sin: tuple = ()
+
+    kind = "fourier"
+
+    def __post_init__(self):
+        k = _lobes(self.k)
+        c = tuple(require_finite(f"fourier_cos[{i}]", v) for i, v in enumerate(self.cos))
+        s = tuple(require_finite(f"fourier_sin[{i}]", v) for i, v in enumerate(self.sin))
+        object.__setattr__(self, "k", k)
+        object.__setattr__(self, "cos", c)
+        object.__setattr__(self, "sin", s)
+        J = max(len(c), len(s))
+        object.__setattr__(self, "_j", np.arange(1, J + 1, dtype=float))
+        object.__setattr__(self, "_c", np.array(c + (0.0,) * (J - len(c))))
+        object.__setattr__(self, "_s", np.array(s + (0.0,) * (J - len(s))))
+        object.__setattr__(self, "_c0", float(np.sum(self._c)))
+        th = np.linspace(0.0, 2 * math.pi, _FOURIER_CHECK_SAMPLES, endpoint=False)
+        g = self._g(th, 1)
+        i = int(np.argmin(g))
+        if not g[i] > 0:
+            key = "fourier_cos" if len(c) else "fourier_sin"
+            raise InputError(key, list(c if len(c) else s),
+                             f"d phi / d theta = {g[i]:.4g} <= 0 at theta = {math.degrees(th[i]):.2f} deg: the "
+                             "driven wheel would stop or turn back (the ratio must stay > 0)")
+
+    def _g(self, theta, order: int):
+        """phi(theta) (order 0) or its 1st / 2nd / 3rd derivative in theta."""
+        th = np.asarray(theta, dtype=float)
+        if not len(self._j):
+            return {0: th / self.k, 1: np.full_like(th, 1.0 / self.k)}.get(order, np.zeros_like(th))
+        a = np.multiply.outer(th, self._j)
+        j = self._j
+        cs, sn = np.cos(a), np.sin(a)
+        if order == 0:
+            return th / self.k + cs @ self._c + sn @ self._s - self._c0
+        if order == 1:
+            return 1.0 / self.k + sn @ (-j * self._c) + cs @ (j * self._s)
+        if order == 2:
+            return cs @ (-j * j * self._c) + sn @ (-j * j * self._s)
+        return sn @ (j ** 3 * self._c) + cs @ (-j ** 3 * self._s)
+
+    def phi_of_theta(self, theta, tol: float = 0.0):
+        return self._g(theta, 0)
+
+    def theta(self, phi):
+        """Inverse of phi(theta): Newton from k phi on the monotone phi(theta), steps bounded."""
+        phi = np.asarray(phi, dtype=float)
+        th = self.k * phi
+        for _ in range(100):
+            step = (self._g(th, 0) - phi) / self._g(th, 1)
+            step = np.clip(step, -0.5, 0.5)
+            th = th - step
+            if np.all(np.abs(step) < 1e-12):
+                break
+        return th - (self._g(th, 0) - phi) / self._g(th, 1)  # one more step: at rounding level
+
+    def U(self, phi):
+        return 1.0 / self._g(self.theta(phi), 1)
+
+    def dU_dphi(self, phi):
+        th = self.theta(phi)
+        g1, g2 = self._g(th, 1), self._g(th, 2)
+        return -g2 / g1 ** 3
+
+    def d2U_dphi2(self, phi):
+        th = self.theta(phi)
+        g1, g2, g3 = self._g(th, 1), self._g(th, 2), self._g(th, 3)
+        return (3 * g2 * g2 - g3 * g1) / g1 ** 5

@@ -1,0 +1,182 @@
+"""A drive law given as a table of angles (``laws.law.Law``): ``driver_deg,driven_deg`` over one period.
+
+The first row is the origin of both angles (theta = phi = 0); the last closes the period: the driven
+span P must divide 360 deg (``periods`` = 360 / P lobes) and over those periods the driver makes a
+whole number n of turns, n dividing the periods (the driver curve closes).  Between the rows a
+periodic quintic spline of theta(phi) - n phi: U = d theta / d phi is C3, and repeats with period P.
+Both columns must be strictly increasing (U > 0); the spline's U is checked > 0 too.
+Refusals name the key (``law_file``), the first bad row (1 = the first data row) and the limit.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import InputError
+from .walking import invert_theta
+
+__all__ = ["TableLaw", "read_law_table", "parse_law_table"]
+
+#: columns of a law table, in this order
+COLUMNS = ("driver_deg", "driven_deg")
+#: least data rows (a quintic spline needs 6 points)
+MIN_ROWS = 7
+#: most data rows read
+MAX_ROWS = 100_000
+#: largest file read (bytes)
+MAX_BYTES = 8 << 20
+#: tolerance on whole periods and whole driver turns (deg)
+CLOSE_TOL_DEG = 1e-6
+#: pieces of one period for the quadratures (Gauss per piece: the spline's knots are only C4)
+PIECES = 16
+#: samples per period when checking the spline's ratio stays > 0
+_CHECK_SAMPLES = 20000
+
+
+def _bad(key: str, row: int, value, limit: str, column: str = "") -> InputError:
+    """InputError naming the key, the data row (1 = the first after the header) and its column."""
+    return InputError(f"{key} row {row}{(' ' + column) if column else ''}", value, limit)
+
+
+def parse_law_table(text: str, key: str = "law_file") -> tuple[tuple[float, ...], tuple[float, ...]]:
+    """(driver_deg, driven_deg) of a CSV text with the header ``driver_deg,driven_deg``."""
+    rows = list(csv.reader(io.StringIO(text)))
+    rows = [r for r in rows if r and any(c.strip() for c in r)]
+    if not rows:
+        raise InputError(key, "(empty)", "a law table needs the header driver_deg,driven_deg and its rows")
+    head = tuple(c.strip() for c in rows[0])
+    if head != COLUMNS:
+        raise InputError(key, ",".join(head)[:80], "the header must be driver_deg,driven_deg")
+    data = rows[1:]
+    if len(data) > MAX_ROWS:
+        raise InputError(key, f"{len(data)} rows", f"at most {MAX_ROWS} rows")
+    th, ph = [], []
+    for i, r in enumerate(data, start=1):
+        if len(r) != 2:
+            raise _bad(key, i, ",".join(r)[:80], "two columns: driver_deg,driven_deg")
+        try:
+            a, b = float(r[0]), float(r[1])
+        except ValueError:
+            raise _bad(key, i, ",".join(r)[:80], "two numbers") from None
+        if not (math.isfinite(a) and math.isfinite(b)):
+            raise _bad(key, i, ",".join(r)[:80], "finite numbers")
+        th.append(a)
+        ph.append(b)
+    return tuple(th), tuple(ph)
+
+
+def read_law_table(path: Path, key: str = "law_file") -> tuple[tuple[float, ...], tuple[float, ...]]:
+    """``parse_law_table`` of a file (InputError naming ``key`` if it cannot be read)."""
+    path = Path(path)
+    try:
+        with open(path, "rb") as f:
+            raw = f.read(MAX_BYTES + 1)
+    except OSError as exc:
+        raise InputError(key, str(path), f"cannot be read: {exc.strerror or exc}") from None
+    if len(raw) > MAX_BYTES:
+        raise InputError(key, str(path), f"a law table is at most {MAX_BYTES} bytes")
+    try:
+        text = raw.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        raise InputError(key, str(path), "must be UTF-8 text") from None
+    return parse_law_table(text, key)
+
+
+@dataclass(frozen=True)
+class TableLaw:
+    """theta(phi) through the rows (driver_deg, driven_deg) of one period (see the module docstring)."""
+
+    driver_deg: tuple
+    driven_deg: tuple
+    key: str = "law_file"
+
+    kind = "table"
+    scalar_path = False
+    corner_phis = ()
+    period_start = 0.0
+
+    def __post_init__(self):
+        from scipy.interpolate import make_interp_spline
+
+        th, ph, key = np.asarray(self.driver_deg, float), np.asarray(self.driven_deg, float), self.key
+        if len(th) != len(ph) or len(th) < MIN_ROWS:
+            raise InputError(key, f"{len(th)} rows", f"a law table needs at least {MIN_ROWS} rows over one period")
+        for i in range(1, len(th)):
+            for col, v in (("driver_deg", th), ("driven_deg", ph)):
+                if not v[i] > v[i - 1]:
+                    raise _bad(key, i + 1, float(v[i]),
+                               f"must be strictly increasing (row {i}: {v[i - 1]:g}): the ratio must stay > 0", col)
+        span_ph, span_th = ph[-1] - ph[0], th[-1] - th[0]
+        N = 360.0 / span_ph
+        if not abs(N - round(N)) * span_ph < CLOSE_TOL_DEG:
+            raise _bad(key, len(th), float(ph[-1]),
+                       f"the last row closes the period: the driven span {span_ph:g} deg must divide 360 deg",
+                       "driven_deg")
+        N = int(round(N))
+        n = span_th * N / 360.0
+        if not (abs(n - round(n)) * 360.0 / N < CLOSE_TOL_DEG and round(n) >= 1):
+            raise _bad(key, len(th), float(th[-1]),
+                       f"over {N} periods of {span_ph:g} deg the driver must make whole turns, not {n:.6g}",
+                       "driver_deg")
+        n = int(round(n))
+        if N % n:
+            raise _bad(key, len(th), float(th[-1]),
+                       f"{n} driver turns per driven turn must divide the {N} periods (the driver curve closes)",
+                       "driver_deg")
+        x = np.radians(ph - ph[0])
+        P = 2 * math.pi / N
+        x[-1] = P
+        slope = n / 1.0  # mean d theta / d phi = n turns per driven turn
+        y = np.radians(th - th[0]) - slope * x
+        y[-1] = y[0]
+        spl = make_interp_spline(x, y, k=5, bc_type="periodic")
+        object.__setattr__(self, "n", n)
+        object.__setattr__(self, "periods", N)
+        object.__setattr__(self, "period", P)
+        # the smooth pieces the quadratures and samplings split at: rows, at most PIECES of them
+        idx = np.unique(np.round(np.linspace(0, len(x) - 1, min(PIECES, len(x) - 1) + 1)).astype(int))
+        object.__setattr__(self, "breakpoints", tuple(float(v) for v in x[idx]))
+        object.__setattr__(self, "_slope", float(slope))
+        object.__setattr__(self, "_s", (spl, spl.derivative(1), spl.derivative(2), spl.derivative(3)))
+        xs = np.linspace(0.0, P, _CHECK_SAMPLES)
+        U = self.U(xs)
+        j = int(np.argmin(U))
+        if not U[j] > 0:
+            row = int(np.searchsorted(x, xs[j], side="right"))
+            raise _bad(key, row, float(ph[row - 1]),
+                       f"the spline through the rows has a ratio U = {U[j]:.4g} <= 0 near it: more rows or a "
+                       "smoother table", "driven_deg")
+
+    def _w(self, phi):
+        phi = np.asarray(phi, dtype=float)
+        return phi - self.period * np.floor(phi / self.period)
+
+    def theta(self, phi):
+        phi = np.asarray(phi, dtype=float)
+        return self._slope * phi + self._s[0](self._w(phi))
+
+    def U(self, phi):
+        return self._slope + self._s[1](self._w(phi))
+
+    def dU_dphi(self, phi):
+        return self._s[2](self._w(phi))
+
+    def d2U_dphi2(self, phi):
+        return self._s[3](self._w(phi))
+
+    def phi_of_theta(self, theta, tol: float = 1e-14):
+        theta = np.asarray(theta, dtype=float)
+        return invert_theta(self, theta, theta / self._slope, tol, 80)
+
+    def U_derivs1(self, phi: float) -> tuple:
+        p = np.array([float(phi)])
+        return float(self.U(p)[0]), float(self.dU_dphi(p)[0]), float(self.d2U_dphi2(p)[0])
+
+    def theta1(self, phi: float) -> float:
+        return float(self.theta(np.array([float(phi)]))[0])
