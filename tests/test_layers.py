@@ -35,10 +35,14 @@ RANK = {
     "printing": 7.5,
     "parts": 8,
     "building": 8.5,
+    "api": 8.6,
     "batch": 8.7,
+    "study": 8.8,
     "cli": 9,
 }
 MATH = ("laws", "gears")
+#: the layers whose public names the package root re-exports lazily (``propulsor.part``, ``propulsor.explore``)
+FACADE_OF = {"api", "study", "errors"}
 
 
 @dataclass(frozen=True)
@@ -147,8 +151,11 @@ def test_parts_import_no_kernel():
 
 
 def test_layers_import_only_downwards_so_they_form_no_cycle():
+    # the package root's public names are loaded on first use from the layers that make them (api,
+    # study): a facade above everything, imported by no layer for anything but plain values
     bad = [f"{imp} ({imp.layer} may not import {imp.target_layer})" for imp in IMPORTS
-           if imp.internal and imp.target_layer != imp.layer and RANK[imp.target_layer] >= RANK[imp.layer]]
+           if imp.internal and imp.target_layer != imp.layer and RANK[imp.target_layer] >= RANK[imp.layer]
+           and not (imp.module == PACKAGE and imp.target_layer in FACADE_OF)]
     assert bad == []
 
 
