@@ -210,6 +210,14 @@ def test_resume_runs_only_the_rest_and_a_failing_variant_is_a_row(cluster, tmp_p
     assert again.ran == 2
     rows = read_rows(out)
     assert sorted(int(r["variant"]) for r in rows) == [1, 2, 3, 4, 5, 6]
+    # --build-best: the best variant built fully, with its own parameters
+    from propulsor.study import build_best_variants
+
+    layer, best = again.ranked[0]
+    assert build_best_variants(load_study(study), again, 1) == [out / "best" / "1"]
+    inputs = json.loads((out / "best" / "1" / "manifest.json").read_text())["inputs"]
+    assert (inputs["load_N"], inputs["hub_outer_d_mm"]) == (best["load_N"], best["hub_outer_d_mm"]) == \
+        (min(r["load_N"] for r in again.rows if r["status"] == "ok"), 210.0)
 
 
 def test_a_worker_killed_mid_study_every_variant_exactly_once(tmp_path):
