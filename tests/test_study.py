@@ -246,3 +246,23 @@ def test_a_worker_killed_mid_study_every_variant_exactly_once(tmp_path):
     assert len(outcome.rows) == 9
     survivor = f":{c.workers[1].pid}"
     assert any(r["worker"].endswith(survivor) for r in rows)
+
+
+def test_study_page_escapes_the_study_text_and_links_built_variants(tmp_path):
+    from propulsor.study.page import write_page
+    from propulsor.study.results import ranked
+    from propulsor.study.spec import load_study
+
+    study = load_study(write(tmp_path, STUDY.replace('title = "road wheel: tyre width x load"',
+                                                     'title = "<script>alert(1)</script> & co"')))
+    rows = [{"variant": k, "key": f"k{k}", "tyre_width_mm": 70.0, "load_N": 30000.0 + k, "T_at_V_max_C": 100.0 + k,
+             "peak_pressure_q_m_MPa": 3.0 - k, "contact_length_l_mm": 1.0, "all_checks_passed": True,
+             "status": "ok", "reason": "", "failed_checks": '<img src=x onerror="alert(2)">', "seconds": 1.0,
+             "worker": "w"} for k in (1, 2)]
+    (tmp_path / "variants" / "k2").mkdir(parents=True)
+    (tmp_path / "variants" / "k2" / "report.html").write_text("x")
+    page = write_page(tmp_path, study, rows, ranked(study, rows)).read_text()
+    assert "<script>alert" not in page and "&lt;script&gt;alert(1)&lt;/script&gt; &amp; co" in page
+    assert "<img src=x" not in page and "&lt;img src=x onerror=&quot;alert(2)&quot;&gt;" in page
+    assert '<a href="variants/k2/report.html">2</a>' in page and 'href="variants/k1/' not in page
+    assert page.count('<tr class="front">') == 2  # neither dominates the other

@@ -54,4 +54,7 @@ def build_best_variants(spec, outcome, k: int, progress=None) -> list[Path]:
         except CheckFailed:
             pass
         made.append(target)
+    from .page import write_page
+
+    write_page(outcome.folder, spec, outcome.rows, outcome.ranked, built_best=len(made))
     return made

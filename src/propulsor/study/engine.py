@@ -124,6 +124,9 @@ def run(study: Study, out: Path, *, scheduler: str | None = None, workers: int |
         rank = ranked(study, rows)
         write_front(out, study, rank)
         plot_front(out, study, rows, rank)
+        from .page import write_page
+
+        write_page(out, study, rows, rank)
         return Outcome(rows, rank, len(todo), seconds, n_workers, out)
     finally:
         if own:
