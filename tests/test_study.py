@@ -266,3 +266,40 @@ def test_study_page_escapes_the_study_text_and_links_built_variants(tmp_path):
     assert "<img src=x" not in page and "&lt;img src=x onerror=&quot;alert(2)&quot;&gt;" in page
     assert '<a href="variants/k2/report.html">2</a>' in page and 'href="variants/k1/' not in page
     assert page.count('<tr class="front">') == 2  # neither dominates the other
+
+
+def test_interrupted_study_keeps_the_finished_rows_and_resume_runs_the_rest(tmp_path):
+    import psutil
+
+    study = write(tmp_path, STUDY.replace("tyre_width_mm = [70.0, 90.0]", "tyre_width_mm = [70.0, 80.0, 90.0]"))
+    out = tmp_path / "out"
+    env = {**os.environ, "PYTHONPATH": str(ROOT / "src")}
+    cmd = [str(BIN / "propulsor"), "explore", str(study), "--out", str(out), "--workers", "1"]
+    proc = subprocess.Popen(cmd, env=env, stderr=subprocess.PIPE, text=True, cwd=tmp_path)
+    children: set[int] = set()
+    deadline = time.monotonic() + 240
+    while time.monotonic() < deadline and proc.poll() is None:
+        children |= {c.pid for c in psutil.Process(proc.pid).children(recursive=True)}
+        if (out / "results.csv").is_file() and len((out / "results.csv").read_text().splitlines()) >= 2:
+            break
+        time.sleep(0.2)
+    proc.send_signal(signal.SIGINT)
+    _, err = proc.communicate(timeout=120)
+    assert proc.returncode == 130, err
+    assert err.strip().splitlines()[-1] == ("propulsor: interrupted by SIGINT; the finished variants are in "
+                                             "results.csv (--resume runs the rest)")
+    kept = read_rows(out)
+    assert 1 <= len(kept) < 9
+    # no worker left behind (multiprocessing's resource tracker leaves when it sees its parent gone)
+    procs = []
+    for pid in children:
+        try:
+            procs.append(psutil.Process(pid))
+        except psutil.NoSuchProcess:
+            pass
+    gone, alive = psutil.wait_procs(procs, timeout=30)
+    assert children and not alive, [p.cmdline() for p in alive]
+    assert main(["explore", str(study), "--out", str(out), "--workers", "1", "--resume", "-q"]) == 0
+    rows = read_rows(out)
+    assert sorted(int(r["variant"]) for r in rows) == list(range(1, 10))
+    assert rows[:len(kept)] == kept  # the finished rows kept as they were

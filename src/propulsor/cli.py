@@ -321,6 +321,7 @@ def main(argv=None) -> int:
     if in_main_thread:
         for sig in (signal.SIGINT, signal.SIGTERM):
             saved[sig] = signal.signal(sig, raise_interrupted)
+    args = None
     try:
         parser = build_parser()
         try:
@@ -352,7 +353,9 @@ def main(argv=None) -> int:
         from .parallel import kill_workers
 
         kill_workers()
-        print(f"propulsor: interrupted by {signal.Signals(signum).name}; nothing written", file=sys.stderr)
+        kept = ("the finished variants are in results.csv (--resume runs the rest)"
+                if getattr(args, "command", None) == "explore" else "nothing written")
+        print(f"propulsor: interrupted by {signal.Signals(signum).name}; {kept}", file=sys.stderr)
         return 128 + signum
     finally:
         for sig, handler in saved.items():
