@@ -49,9 +49,13 @@ def connect(scheduler: str | None, workers: int | None):
             raise InputError("--scheduler", scheduler, f"no Dask scheduler answers there ({type(exc).__name__}); "
                              "start one with `dask scheduler` and workers with `dask worker ADDRESS`") from None
         return client, None
+    import dask
+
     n = workers or os.cpu_count() or 1
-    cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=None,
-                           silence_logs=logging.CRITICAL)
+    # a build forks its own workers (the solids' files and checks): the worker processes may not be daemons
+    with dask.config.set({"distributed.worker.daemon": False}):
+        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=None,
+                               silence_logs=logging.CRITICAL)
     return Client(cluster, set_as_default=False), cluster
 
 

@@ -98,6 +98,17 @@ def _failures(checks, expected) -> list[str]:
     return [c.name for c in checks if not c.passed and c.name not in expected]
 
 
+def _may_fork() -> None:
+    """A build forks its own workers (the solids' files and checks, the proofs), which a daemonic process
+    may not do; a Dask worker under a nanny is one unless started with DASK_DISTRIBUTED__WORKER__DAEMON=False.
+    Those workers die with it (parallel.py: PR_SET_PDEATHSIG), so the flag is lifted for this process."""
+    import multiprocessing
+
+    proc = multiprocessing.current_process()
+    if proc.daemon:
+        proc._config["daemon"] = False
+
+
 def evaluate(part_type: str, base: dict, source: str | None, values: dict, depth: str, wanted: tuple,
              build_dir: str | None = None) -> dict:
     """The row of one variant: {"values": {name: value}, "all_checks_passed", "failed_checks", "status",
@@ -118,6 +129,7 @@ def evaluate(part_type: str, base: dict, source: str | None, values: dict, depth
         if depth == "design":
             derived, checks = design_values(part)
         else:
+            _may_fork()
             if depth == "build" and build_dir:
                 try:
                     part.write(build_dir, force=True, keep_failed=True)
