@@ -303,3 +303,22 @@ def test_interrupted_study_keeps_the_finished_rows_and_resume_runs_the_rest(tmp_
     rows = read_rows(out)
     assert sorted(int(r["variant"]) for r in rows) == list(range(1, 10))
     assert rows[:len(kept)] == kept  # the finished rows kept as they were
+
+
+def test_proof_depth_on_the_local_cluster_runs_the_whole_build(tmp_path):
+    """The default engine (a LocalCluster): a proof is the whole build, run inside a Dask worker process
+    (which forks the build's own workers), its solids' values in the row."""
+    study = write(tmp_path, f"""
+[study]
+part = "{WHEEL}"
+depth = "proof"
+[vary]
+tyre_width_mm = [90.0]
+[objectives]
+minimize = ["mass_wheel_kg"]
+require = ["all_checks_passed"]
+""")
+    assert main(["explore", str(study), "--out", str(tmp_path / "out"), "--workers", "1", "-q"]) == 0
+    (row,) = read_rows(tmp_path / "out")
+    assert (row["status"], row["all_checks_passed"], row["reason"]) == ("ok", "true", "")
+    assert 100.0 < float(row["mass_wheel_kg"]) < 150.0

@@ -225,6 +225,9 @@ def cmd_explore(args) -> int:
     try:
         if args.workers is not None and not 1 <= args.workers <= 1024:
             raise InputError("--workers", args.workers, "must be within 1 ... 1024")
+        if args.workers is not None and args.scheduler:
+            raise InputError("--workers", args.workers, "sizes the local cluster; with --scheduler the cluster's own "
+                             "workers run the study")
         if args.build_best < 0:
             raise InputError("--build-best", args.build_best, "must be >= 0")
         study = load_study(args.study)
