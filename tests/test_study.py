@@ -322,3 +322,16 @@ require = ["all_checks_passed"]
     (row,) = read_rows(tmp_path / "out")
     assert (row["status"], row["all_checks_passed"], row["reason"]) == ("ok", "true", "")
     assert 100.0 < float(row["mass_wheel_kg"]) < 150.0
+
+
+def test_all_checks_passed_is_not_vacuously_true_where_no_check_ran():
+    from propulsor.study.results import requirement_failure
+    from propulsor.study.spec import Requirement
+
+    class S:  # the two fields requirement_failure reads
+        depth = "design"
+        require = (Requirement("all_checks_passed"),)
+
+    assert requirement_failure(S, {"all_checks_passed": True}) == ""
+    assert requirement_failure(S, {"all_checks_passed": None}).startswith("all_checks_passed: no check runs at depth design")
+    assert requirement_failure(S, {"all_checks_passed": False, "failed_checks": "a.b"}) == "all_checks_passed: failed a.b"

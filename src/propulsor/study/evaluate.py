@@ -143,7 +143,7 @@ def evaluate(part_type: str, base: dict, source: str | None, values: dict, depth
             if Path(source).is_file():
                 expected = set(read_part_meta(source).get("expected_failures", []))
         failed = _failures(checks, expected)
-        row["all_checks_passed"] = not failed
+        row["all_checks_passed"] = (not failed) if checks else None  # no check ran: not vacuously true
         row["failed_checks"] = "; ".join(failed)
         row["values"] = {n: _plain(derived[n]) for n in wanted if n in derived}
         missing = [n for n in wanted if n not in derived]
