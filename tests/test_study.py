@@ -335,3 +335,15 @@ def test_all_checks_passed_is_not_vacuously_true_where_no_check_ran():
     assert requirement_failure(S, {"all_checks_passed": True}) == ""
     assert requirement_failure(S, {"all_checks_passed": None}).startswith("all_checks_passed: no check runs at depth design")
     assert requirement_failure(S, {"all_checks_passed": False, "failed_checks": "a.b"}) == "all_checks_passed: failed a.b"
+
+
+def test_a_sampler_draws_within_the_ranges_reproducibly(tmp_path):
+    from propulsor.study.spec import load_study
+
+    text = STUDY.replace('title = "road wheel: tyre width x load"', 'sample = 7\nseed = 3').replace(
+        "tyre_width_mm = [70.0, 90.0]", "lightening_holes = { from = 2, to = 8 }").replace(", step = 10000.0", "")
+    a, b = load_study(write(tmp_path, text)), load_study(write(tmp_path, text, "t.toml"))
+    assert a.variants == b.variants and len(a.variants) == 7
+    assert all(isinstance(v["lightening_holes"], int) and 2 <= v["lightening_holes"] <= 8 for v in a.variants)
+    assert all(30000.0 <= v["load_N"] <= 50000.0 for v in a.variants)
+    assert load_study(write(tmp_path, text.replace("seed = 3", "seed = 4"), "u.toml")).variants != a.variants
