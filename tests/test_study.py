@@ -347,3 +347,27 @@ def test_a_sampler_draws_within_the_ranges_reproducibly(tmp_path):
     assert all(isinstance(v["lightening_holes"], int) and 2 <= v["lightening_holes"] <= 8 for v in a.variants)
     assert all(30000.0 <= v["load_N"] <= 50000.0 for v in a.variants)
     assert load_study(write(tmp_path, text.replace("seed = 3", "seed = 4"), "u.toml")).variants != a.variants
+
+
+def _evaluate_in(queue, part_file: str, depth: str, wanted: tuple) -> None:
+    from propulsor.params import read_part_file
+    from propulsor.study.evaluate import evaluate
+
+    type_name, base = read_part_file(part_file)
+    queue.put(evaluate(type_name, base, part_file, {}, depth, wanted))
+
+
+def test_a_variant_evaluates_in_a_daemonic_worker_process():
+    """`dask worker` runs its tasks in a daemonic process under its nanny; the seed-002 design forks the
+    tooth generation, which a daemonic process may not do unless the evaluation lifts the flag."""
+    import multiprocessing as mp
+
+    ctx = mp.get_context("fork")
+    q = ctx.Queue()
+    p = ctx.Process(target=_evaluate_in, args=(q, str(ROOT / "parts" / "ncg_seed002.toml"), "design",
+                                               ("speed_ripple", "center_distance_mm")), daemon=True)
+    p.start()
+    row = q.get(timeout=300)
+    p.join()
+    assert (row["status"], row["reason"]) == ("ok", ""), row
+    assert 0.0 < row["values"]["speed_ripple"] < 0.05

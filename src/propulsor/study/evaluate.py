@@ -99,7 +99,7 @@ def _failures(checks, expected) -> list[str]:
 
 
 def _may_fork() -> None:
-    """A build forks its own workers (the solids' files and checks, the proofs), which a daemonic process
+    """A build (and a design) forks its own workers (solids' files and checks, proofs, teeth), which a daemonic process
     may not do; a Dask worker under a nanny is one unless started with DASK_DISTRIBUTED__WORKER__DAEMON=False.
     Those workers die with it (parallel.py: PR_SET_PDEATHSIG), so the flag is lifted for this process."""
     import multiprocessing
@@ -121,6 +121,7 @@ def evaluate(part_type: str, base: dict, source: str | None, values: dict, depth
     t0 = time.perf_counter()
     row = {"values": {}, "all_checks_passed": None, "failed_checks": "", "status": "ok", "reason": "",
            "worker": f"{socket.gethostname()}:{os.getpid()}"}
+    _may_fork()  # before the design: a design may fork too (the non-circular teeth)
     try:
         pt = get_part_type(part_type)
         params = load_params(pt.params_cls, {**base, **values})
@@ -129,7 +130,6 @@ def evaluate(part_type: str, base: dict, source: str | None, values: dict, depth
         if depth == "design":
             derived, checks = design_values(part)
         else:
-            _may_fork()
             if depth == "build" and build_dir:
                 try:
                     part.write(build_dir, force=True, keep_failed=True)
