@@ -54,7 +54,7 @@ def connect(scheduler: str | None, workers: int | None):
     n = workers or os.cpu_count() or 1
     # a build forks its own workers (the solids' files and checks): the worker processes may not be daemons
     with dask.config.set({"distributed.worker.daemon": False}):
-        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=None,
+        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address="127.0.0.1:0",  # any free port
                                silence_logs=logging.CRITICAL)
     return Client(cluster, set_as_default=False), cluster
 
