@@ -78,7 +78,7 @@ def on_cluster(study, out: Path, n_workers: int) -> tuple[float, list[float]]:
     import dask
 
     with dask.config.set({"distributed.worker.daemon": False}):  # as the engine's own local cluster
-        cluster = LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True, dashboard_address=None,
+        cluster = LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True, dashboard_address="127.0.0.1:0",
                                silence_logs=logging.CRITICAL)
     with cluster, Client(cluster, set_as_default=False) as client:
         client.run(_warm, study)

@@ -52,9 +52,10 @@ def connect(scheduler: str | None, workers: int | None):
     import dask
 
     n = workers or os.cpu_count() or 1
-    # a build forks its own workers (the solids' files and checks): the worker processes may not be daemons
+    # a build forks its own workers (the solids' files and checks): the worker processes may not be daemons;
+    # the cluster's HTTP server on any free port of 127.0.0.1
     with dask.config.set({"distributed.worker.daemon": False}):
-        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address="127.0.0.1:0",  # any free port
+        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address="127.0.0.1:0",
                                silence_logs=logging.CRITICAL)
     return Client(cluster, set_as_default=False), cluster
 
