@@ -14,17 +14,19 @@ Layers (each importable alone):
     export/         STEP, STL/3MF, DXF, CSV, plots, report, manifest
     parts/          part types: parameters -> library -> outputs
     api.py          the Python interface above
+    study/          design studies: many variants on a Dask cluster, one table, the Pareto front
 """
 
 from typing import TYPE_CHECKING
 
 __version__ = "0.1.0"
-__all__ = ["Part", "Build", "part", "part_types", "parameters", "InputError", "CheckFailed", "EnvironmentFailure",
-           "__version__"]
+__all__ = ["Part", "Build", "part", "part_types", "parameters", "explore", "InputError", "CheckFailed",
+           "EnvironmentFailure", "__version__"]
 
 if TYPE_CHECKING:  # pragma: no cover - for type checkers; at run time the names load on first use
     from .api import Build, Part, parameters, part, part_types
     from .errors import CheckFailed, EnvironmentFailure, InputError
+    from .study import explore
 
 
 def __getattr__(name: str):
@@ -33,6 +35,10 @@ def __getattr__(name: str):
         from . import api
 
         return getattr(api, name)
+    if name == "explore":
+        from .study import explore
+
+        return explore
     if name in ("InputError", "CheckFailed", "EnvironmentFailure"):
         from . import errors
 

@@ -1,4 +1,4 @@
-"""Command line: `propulsor build | print | gallery | check | list | params`.
+"""Command line: `propulsor build | print | gallery | check | list | params | explore`.
 
 Exit codes: 0 built and every check passed; 1 built but a check failed (outputs
 kept only with --keep-failed) or `check` found invalid files; 2 bad input
@@ -215,6 +215,35 @@ def cmd_params(args) -> int:
     return EXIT_OK
 
 
+def cmd_explore(args) -> int:
+    """A design study: every variant of the study file evaluated on a Dask cluster, one table, ranked."""
+    from .progress import Progress
+    from .study import build_best_variants, load_study
+    from .study.engine import run
+
+    progress = Progress(enabled=not args.quiet, check=check_signalled)
+    try:
+        if args.workers is not None and not 1 <= args.workers <= 1024:
+            raise InputError("--workers", args.workers, "must be within 1 ... 1024")
+        if args.workers is not None and args.scheduler:
+            raise InputError("--workers", args.workers, "sizes the local cluster; with --scheduler the cluster's own "
+                             "workers run the study")
+        if args.build_best < 0:
+            raise InputError("--build-best", args.build_best, "must be >= 0")
+        study = load_study(args.study)
+        out = Path(args.out) if args.out else Path("output") / Path(args.study).stem
+        outcome = run(study, out, scheduler=args.scheduler, workers=args.workers, resume=args.resume,
+                      progress=progress)
+    except InputError as exc:
+        return fail_input(exc)
+    ok = sum(r["status"] == "ok" for r in outcome.rows)
+    progress(f"{len(outcome.rows)} variants ({outcome.ran} run now, {outcome.seconds:.1f} s): {ok} meet every "
+             f"requirement; {out / 'results.csv'}, {out / 'front.csv'}, {out / 'pareto_front.png'}")
+    if args.build_best:
+        build_best_variants(study, outcome, args.build_best, progress=progress)
+    return EXIT_OK
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="propulsor", description=__doc__.splitlines()[0])
     sub = p.add_subparsers(dest="command", required=True)
@@ -269,6 +298,19 @@ def build_parser() -> argparse.ArgumentParser:
     pa = sub.add_parser("params", help="every parameter of a part type with unit, default and limits")
     pa.add_argument("part_type")
     pa.set_defaults(func=cmd_params)
+
+    ex = sub.add_parser("explore", help="a design study: the variants of a study file on a Dask cluster, "
+                        "one table, the Pareto front")
+    ex.add_argument("study", help="the study file (studies/*.toml)")
+    ex.add_argument("--out", help="the study's folder (default output/<study file name>)")
+    ex.add_argument("--scheduler", help="the address of a running Dask scheduler (tcp://host:8786); default: "
+                    "a local cluster of worker processes")
+    ex.add_argument("--workers", type=int, help="worker processes of the local cluster (default: the cores)")
+    ex.add_argument("--resume", action="store_true", help="keep the rows of results.csv and run only the rest")
+    ex.add_argument("--build-best", type=int, default=0, metavar="K", help="then build the K best variants "
+                    "fully into <out>/best/<rank>/")
+    ex.add_argument("-q", "--quiet", action="store_true", help="no progress line")
+    ex.set_defaults(func=cmd_explore)
     return p
 
 
@@ -282,6 +324,7 @@ def main(argv=None) -> int:
     if in_main_thread:
         for sig in (signal.SIGINT, signal.SIGTERM):
             saved[sig] = signal.signal(sig, raise_interrupted)
+    args = None
     try:
         parser = build_parser()
         try:
@@ -313,7 +356,9 @@ def main(argv=None) -> int:
         from .parallel import kill_workers
 
         kill_workers()
-        print(f"propulsor: interrupted by {signal.Signals(signum).name}; nothing written", file=sys.stderr)
+        kept = ("the finished variants are in results.csv (--resume runs the rest)"
+                if getattr(args, "command", None) == "explore" else "nothing written")
+        print(f"propulsor: interrupted by {signal.Signals(signum).name}; {kept}", file=sys.stderr)
         return 128 + signum
     finally:
         for sig, handler in saved.items():

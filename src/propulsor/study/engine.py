@@ -1,0 +1,168 @@
+"""The study engine: the variants as tasks of a Dask distributed cluster — by default a LocalCluster of
+worker processes on this machine's cores, or an existing cluster (``dask scheduler`` / ``dask worker``)
+at --scheduler.  Rows are written as the variants finish; the scheduler re-runs the variant of a worker
+that died on another worker, and each variant is one row of the table, whatever happened to it."""
+
+from __future__ import annotations
+
+import json
+import logging
+import math
+import os
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..errors import InputError
+from .evaluate import evaluate
+from .results import Table, plot_front, ranked, requirement_failure, write_front
+from .spec import Study, variant_key
+
+#: the marker that says a folder holds a study propulsor wrote (it may be written over)
+MARKER = "study.json"
+#: seconds to wait for a scheduler to answer
+CONNECT_TIMEOUT_S = 10
+
+
+@dataclass
+class Outcome:
+    rows: list
+    ranked: list
+    ran: int  # variants evaluated by this run (the others came from the table: --resume)
+    seconds: float
+    workers: int
+    folder: Path
+
+
+def connect(scheduler: str | None, workers: int | None):
+    """(client, cluster or None): a client of the scheduler at `scheduler`, or of a new LocalCluster of
+    `workers` processes (the machine's cores when None).  InputError when no scheduler answers."""
+    for name in ("distributed", "distributed.worker", "distributed.scheduler", "distributed.nanny",
+                 "distributed.core", "distributed.comm", "distributed.batched", "tornado"):
+        logging.getLogger(name).setLevel(logging.CRITICAL)
+    from distributed import Client, LocalCluster
+
+    if scheduler:
+        try:
+            client = Client(scheduler, timeout=CONNECT_TIMEOUT_S, set_as_default=False)
+        except (OSError, TimeoutError, ValueError) as exc:
+            raise InputError("--scheduler", scheduler, f"no Dask scheduler answers there ({type(exc).__name__}); "
+                             "start one with `dask scheduler` and workers with `dask worker ADDRESS`") from None
+        return client, None
+    import dask
+
+    n = workers or os.cpu_count() or 1
+    # a build forks its own workers (the solids' files and checks): the worker processes may not be daemons;
+    # the cluster's HTTP server on any free port of 127.0.0.1
+    with dask.config.set({"distributed.worker.daemon": False}):
+        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address="127.0.0.1:0",
+                               silence_logs=logging.CRITICAL)
+    return Client(cluster, set_as_default=False), cluster
+
+
+def vet_folder(out: Path) -> None:
+    """`out` may hold the study: missing, empty, or a study folder propulsor wrote (InputError)."""
+    if out.is_symlink() or (out.exists() and not out.is_dir()):
+        raise InputError("--out", str(out), "must be a folder (not a file or a link)")
+    if out.is_dir() and any(out.iterdir()) and not (out / MARKER).is_file():
+        raise InputError("--out", str(out), f"holds files but no {MARKER}: not a study folder; choose another")
+
+
+class Rate:
+    """The progress line: count, rate, time left."""
+
+    def __init__(self, total: int, before: int, progress):
+        self.total, self.before, self.progress = total, before, progress
+        self.t0 = time.perf_counter()
+        self.n = 0
+
+    def tick(self, row: dict) -> None:
+        self.n += 1
+        dt = time.perf_counter() - self.t0
+        rate = self.n / dt * 60 if dt > 0 else 0.0
+        left = self.total - self.before - self.n
+        eta = left / (self.n / dt) if self.n and dt > 0 else math.inf
+        bar = "#" * int(20 * (self.before + self.n) / max(self.total, 1))
+        self.progress(f"[{bar:20s}] {self.before + self.n}/{self.total} variants, {rate:.1f} per min, "
+                      f"{'about ' + _span(eta) + ' left' if left else 'done'}; variant {row['variant']}: "
+                      f"{row['status']}")
+
+
+def _span(s: float) -> str:
+    if not math.isfinite(s):
+        return "?"
+    return f"{s:.0f} s" if s < 120 else f"{s / 60:.0f} min"
+
+
+def run(study: Study, out: Path, *, scheduler: str | None = None, workers: int | None = None,
+        resume: bool = False, progress=lambda msg: None, client=None) -> Outcome:
+    """Run the study into folder `out`: results.csv, front.csv, pareto_front.png (and variants/ at depth
+    build).  Nothing is written before the study file, the folder and the scheduler are known good."""
+    from .. import __version__
+
+    vet_folder(out)
+    own = client is None
+    cluster = None
+    if own:
+        client, cluster = connect(scheduler, workers)
+    try:
+        n_workers = len(client.scheduler_info().get("workers", {}))
+        out.mkdir(parents=True, exist_ok=True)
+        (out / MARKER).write_text(json.dumps({"study": str(study.path), "title": study.title, "part": str(study.part_file),
+                                              "depth": study.depth, "version": __version__}, indent=1) + "\n",
+                                  encoding="utf-8")
+        table = Table(out, study, resume)
+        try:
+            done = table.done_keys()
+            keys = [variant_key(study, v, __version__) for v in study.variants]
+            todo = [(i, v, k) for i, (v, k) in enumerate(zip(study.variants, keys), 1) if k not in done]
+            table.rows = [r for r in table.rows if str(r["key"]) in set(keys)]
+            before = len(study.variants) - len(todo)
+            progress(f"{study.title}: {len(study.variants)} variants at depth {study.depth} on {n_workers} Dask "
+                     f"worker(s)" + (f"; {before} already in {table.path}" if before else ""))
+            t0 = time.perf_counter()
+            _evaluate_all(client, study, out, todo, table, Rate(len(study.variants), before, progress))
+            seconds = time.perf_counter() - t0
+        finally:
+            table.close()
+        rows = sorted(table.rows, key=lambda r: int(r["variant"]))
+        rank = ranked(study, rows)
+        write_front(out, study, rank)
+        plot_front(out, study, rows, rank)
+        from .page import write_page
+
+        write_page(out, study, rows, rank)
+        return Outcome(rows, rank, len(todo), seconds, n_workers, out)
+    finally:
+        if own:
+            client.close()
+            if cluster is not None:
+                cluster.close()
+
+
+def _evaluate_all(client, study: Study, out: Path, todo, table: Table, rate: Rate) -> None:
+    from distributed import as_completed
+
+    wanted = study.values
+    source = str(study.part_file)
+    futures = {}
+    for i, values, key in todo:
+        build_dir = str((out / "variants" / key).resolve()) if study.depth == "build" else None
+        fut = client.submit(evaluate, study.part_type, study.base, source, values, study.depth, wanted, build_dir,
+                            key=f"propulsor-variant-{key}", pure=False, retries=1)
+        futures[fut] = (i, values, key)
+    for fut in as_completed(list(futures), loop=client.loop):
+        i, values, key = futures.pop(fut)
+        try:
+            res = fut.result()
+        except Exception as exc:  # the task itself was lost (its workers kept dying): a row saying so
+            res = {"values": {}, "all_checks_passed": None, "failed_checks": "", "status": "error",
+                   "reason": f"{type(exc).__name__}: {exc}", "seconds": None, "worker": ""}
+        row = {"variant": i, "key": key, **values, **res.pop("values"), **res}
+        if row["status"] == "ok":
+            why = requirement_failure(study, row)
+            if why:
+                row["status"], row["reason"] = "rejected", why
+        table.add(row)
+        fut.release()
+        rate.tick(row)

@@ -1,0 +1,158 @@
+"""One variant of a study, evaluated where it runs (a Dask worker, or inline): a row of plain values.
+
+Depths: ``design`` computes the part's design and the output steps that need no solid (derived values
+and checks from the same code as a build, so the same numbers); ``proof`` runs the whole build (every
+check, the full-cycle proofs) into a temporary folder and keeps no file; ``build`` writes the
+variant's files (``propulsor build``'s) into a folder of the study.  The design is computed once and
+reused by the proof (the part's design cache).  Only the row travels back: the arrays stay here.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import shutil
+import socket
+import tempfile
+import time
+from pathlib import Path
+
+from ..errors import CheckFailed, InputError
+
+#: part type -> the output steps (by name) that make derived values and checks from the design alone
+DESIGN_STEPS = {
+    "planetary_final_drive": ("sheet_and_conditions", "strength", "fatigue", "traction", "outline_checks"),
+    "road_wheel": ("kozlov_proof",),
+    "cam_mover": ("law_and_derived",),
+}
+
+
+def _plain(v):
+    """A table cell: numbers, booleans and short text; anything else as its text."""
+    if v is None or isinstance(v, (bool, int, str)):
+        return v
+    if isinstance(v, float):
+        return v
+    try:
+        import numpy as np
+
+        if isinstance(v, np.generic):
+            return v.item()
+    except ImportError:  # pragma: no cover
+        pass
+    return str(v)
+
+
+def _noncircular_design_values(part) -> dict:
+    """The noncircular pair's derived values that come from its design alone (the build's names and
+    expressions: parts/noncircular_pair/outputs.py, checks_and_derived)."""
+    dd = part.design
+    d = dd.d
+    out = {"center_distance_mm": d.L, "mounting_distance_mm": dd.mount, "module_mm": d.m, "driver_teeth": d.z,
+           "driven_teeth": d.z_H, "driver_turns": d.law.n, "method": d.method, "smoothing_deg": d.smoothing_deg,
+           "speed_ripple": d.ripple.ripple, "speed_ripple_phi_min_deg": math.degrees(d.ripple.phi_min),
+           "speed_ripple_phi_max_deg": math.degrees(d.ripple.phi_max), "hub_height_mm": d.law.A, "u": d.law.u,
+           "hub_speed_mean_mm_per_rad": d.law.hub_speed_ratio, "closure_error_rad": d.closure_error}
+    if d.method == "generated":
+        g = d.smoothing.generability
+        out.update({"smoothing_rad": d.smoothing.delta,
+                    "driver_rho_min_mm": g.driver.rho_convex_min, "driver_rho_limit_mm": g.driver.rho_limit,
+                    "driven_rho_min_mm": g.driven.rho_convex_min, "driven_rho_limit_mm": g.driven.rho_limit,
+                    "driven_concave_rho_min_mm": g.driven.rho_concave_min, "shaper_r0_mm": g.driven.r0,
+                    "tip_shortened_teeth": d.driver.shortened_teeth + d.driven.shortened_teeth,
+                    "shaper_cut_teeth": d.driver.shaper_teeth + d.driven.shaper_teeth,
+                    "undercut_teeth": d.driver.undercut_teeth + d.driven.undercut_teeth})
+        if d.shaper is not None:
+            out.update({"shaper_d0_mm": d.shaper.d0_mm, "shaper_z0": d.shaper.z0, "shaper_x0": d.shaper.x0})
+    return out, []
+
+
+def design_values(part) -> tuple[dict, list]:
+    """(derived values, checks) of the part's design and of its output steps that need no solid."""
+    if part.type == "noncircular_pair":
+        return _noncircular_design_values(part)
+    design = part.design
+    names = DESIGN_STEPS.get(part.type, ())
+    if not names:
+        return {}, []
+    from ..parts.writer import OutputWriter
+    from ..write_root import writing_into
+
+    steps = {getattr(s, "__name__", ""): s for s in part._pt.build.steps}
+    folder = Path(tempfile.mkdtemp(prefix="propulsor-study-"))
+    try:
+        with writing_into(folder):
+            w = OutputWriter(folder, part.type, part.params, source=part.source)
+            try:
+                built: dict = {}
+                for name in names:
+                    steps[name](design, w, built)
+            finally:
+                w.close()
+        return dict(w.derived), list(w.checks)
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+
+
+def _failures(checks, expected) -> list[str]:
+    return [c.name for c in checks if not c.passed and c.name not in expected]
+
+
+def _may_fork() -> None:
+    """A build (and a design) forks its own workers (solids' files and checks, proofs, teeth), which a daemonic process
+    may not do; a Dask worker under a nanny is one unless started with DASK_DISTRIBUTED__WORKER__DAEMON=False.
+    Those workers die with it (parallel.py: PR_SET_PDEATHSIG), so the flag is lifted for this process."""
+    import multiprocessing
+
+    proc = multiprocessing.current_process()
+    if proc.daemon:
+        proc._config["daemon"] = False
+
+
+def evaluate(part_type: str, base: dict, source: str | None, values: dict, depth: str, wanted: tuple,
+             build_dir: str | None = None) -> dict:
+    """The row of one variant: {"values": {name: value}, "all_checks_passed", "failed_checks", "status",
+    "reason", "seconds", "worker"}.  Never raises for the variant's own trouble (bad values, a failed
+    check, an exception of the build): the row says it."""
+    from ..api import Part
+    from ..params import load_params
+    from ..parts import get_part_type
+
+    t0 = time.perf_counter()
+    row = {"values": {}, "all_checks_passed": None, "failed_checks": "", "status": "ok", "reason": "",
+           "worker": f"{socket.gethostname()}:{os.getpid()}"}
+    _may_fork()  # before the design: a design may fork too (the non-circular teeth)
+    try:
+        pt = get_part_type(part_type)
+        params = load_params(pt.params_cls, {**base, **values})
+        part = Part(part_type, params, Path(source) if source else None)
+        part.design  # computed once; the proof below reuses it
+        if depth == "design":
+            derived, checks = design_values(part)
+        else:
+            if depth == "build" and build_dir:
+                try:
+                    part.write(build_dir, force=True, keep_failed=True)
+                except CheckFailed:
+                    pass
+            derived, checks = part.build.derived, list(part.build.checks)
+        expected = set()
+        if source:
+            from ..params import read_part_meta
+
+            if Path(source).is_file():
+                expected = set(read_part_meta(source).get("expected_failures", []))
+        failed = _failures(checks, expected)
+        row["all_checks_passed"] = (not failed) if checks else None  # no check ran: not vacuously true
+        row["failed_checks"] = "; ".join(failed)
+        row["values"] = {n: _plain(derived[n]) for n in wanted if n in derived}
+        missing = [n for n in wanted if n not in derived]
+        if missing:
+            row["status"] = "error"
+            row["reason"] = f"{missing[0]}: not computed at depth {depth}"
+    except InputError as exc:
+        row["status"], row["reason"] = "input error", str(exc)
+    except Exception as exc:  # the variant's own failure is a row, never the end of the study
+        row["status"], row["reason"] = "error", f"{type(exc).__name__}: {exc}"
+    row["seconds"] = time.perf_counter() - t0
+    return row

@@ -1,0 +1,77 @@
+"""study.html: the study's page — the Pareto front, the table of every variant (sortable by any column),
+each variant linked to its files where the study made them (depth build: variants/<key>/; --build-best:
+best/<rank>/).  Every text from the study file and the table is escaped."""
+
+from __future__ import annotations
+
+import html
+from pathlib import Path
+
+from .results import FRONT_PNG, cell, columns
+from .spec import Study
+
+PAGE = "study.html"
+
+_SCRIPT = """
+document.querySelectorAll('th').forEach(function (th, col) {
+  th.addEventListener('click', function () {
+    var body = th.closest('table').tBodies[0], rows = Array.prototype.slice.call(body.rows);
+    var dir = th.dataset.dir === 'asc' ? -1 : 1; th.dataset.dir = dir === 1 ? 'asc' : 'desc';
+    rows.sort(function (a, b) {
+      var x = a.cells[col].dataset.v, y = b.cells[col].dataset.v, nx = parseFloat(x), ny = parseFloat(y);
+      if (!isNaN(nx) && !isNaN(ny)) return dir * (nx - ny);
+      return dir * x.localeCompare(y);
+    });
+    rows.forEach(function (r) { body.appendChild(r); });
+  });
+});
+"""
+
+_STYLE = ("body{font-family:sans-serif;margin:1.5em}table{border-collapse:collapse;font-size:12px}"
+          "th,td{border:1px solid #ccc;padding:2px 6px;text-align:right}th{cursor:pointer;background:#eee}"
+          "tr.front td{background:#fde8e8}td.t{text-align:left}")
+
+
+def _link(folder: Path, row: dict, best: dict) -> str:
+    for rel in ([f"best/{best[row['variant']]}/report.html"] if row["variant"] in best else []) + \
+               [f"variants/{row['key']}/report.html"]:
+        if (folder / rel).is_file():
+            return rel
+    return ""
+
+
+def write_page(folder: Path, study: Study, rows: list[dict], rank: list[tuple[int, dict]], built_best: int = 0) -> Path:
+    """Write study.html into `folder`; returns its path."""
+    e = html.escape
+    layer_of = {r["variant"]: layer for layer, r in rank}
+    rank_of = {r["variant"]: k for k, (_, r) in enumerate(rank, 1)}
+    best = {v: k for v, k in rank_of.items() if k <= built_best}
+    cols = ["rank", "pareto_layer", *columns(study)]
+    head = "".join(f"<th>{e(c)}</th>" for c in cols)
+    body = []
+    for r in sorted(rows, key=lambda r: (rank_of.get(r["variant"], 10**9), int(r["variant"]))):
+        vals = {"rank": rank_of.get(r["variant"]), "pareto_layer": layer_of.get(r["variant"]), **r}
+        link = _link(folder, r, best)
+        cells = []
+        for c in cols:
+            text = cell(vals.get(c))
+            shown = e(text)
+            if c == "variant" and link:
+                shown = f'<a href="{e(link, quote=True)}">{shown}</a>'
+            cls = ' class="t"' if c in ("reason", "failed_checks", "status", "worker", "key") else ""
+            cells.append(f'<td{cls} data-v="{e(text, quote=True)}">{shown}</td>')
+        tr = ' class="front"' if layer_of.get(r["variant"]) == 1 else ""
+        body.append(f"<tr{tr}>{''.join(cells)}</tr>")
+    objectives = ", ".join(f"{'minimize' if n in study.minimize else 'maximize'} {n}" for n in study.objectives)
+    req = "; ".join(str(q) for q in study.require) or "none"
+    img = f'<p><img src="{FRONT_PNG}" alt="Pareto front"></p>' if (folder / FRONT_PNG).is_file() else ""
+    text = (f"<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>{e(study.title)}</title>"
+            f"<style>{_STYLE}</style></head><body><h1>{e(study.title)}</h1>"
+            f"<p>{len(rows)} variants of {e(study.part_file.name)} ({e(study.part_type)}) at depth {e(study.depth)}; "
+            f"{e(objectives)}; requirements: {e(req)}; {len(rank)} meet them (the front is shaded). "
+            f"Click a column to sort; a variant's number links to its files where the study built them.</p>"
+            f"{img}<table><thead><tr>{head}</tr></thead><tbody>{''.join(body)}</tbody></table>"
+            f"<script>{_SCRIPT}</script></body></html>\n")
+    path = folder / PAGE
+    path.write_text(text, encoding="utf-8")
+    return path
