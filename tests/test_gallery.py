@@ -135,7 +135,9 @@ def test_build_writes_the_gallery_beside_its_output(out, manifest):
     cls, text = status(manifest)
     assert cls == "ok" and f"all {len(manifest['checks'])} checks passed" == text
     values = key_values(manifest)
-    assert ("tyre radius", number(manifest["derived"]["tyre_radius_mm"]), "mm") in values
+    # labelled by the manifest's glossary (its meaning), with the unit and rounding of the gallery
+    meaning = manifest["glossary"]["tyre_radius_mm"]["meaning"]
+    assert (meaning, number(manifest["derived"]["tyre_radius_mm"]), "mm") in values
     assert f"{out.name}/road_wheel_assembly.glb.js" in page
 
 
