@@ -118,7 +118,7 @@ def cmd_print(args) -> int:
     """A print kit of a part file: pieces at print scale with the FDM allowances, a rig, plates."""
     from . import output_folder as of
     from .parts import get_kit
-    from .printing.printers import load_printer
+    from .printing.printers import is_profile_path, load_printer
     from .progress import Progress
 
     progress = Progress(enabled=not args.quiet, check=check_signalled)
@@ -126,11 +126,13 @@ def cmd_print(args) -> int:
     try:
         out = of.vet_target(of.out_arg(args.out) or Path("output") / f"{part_file.stem}_kit",
                             force=args.force, keep=(part_file,))
-        printer = load_printer(args.printer, _settings(args.set))
+        printer = load_printer(args.printer, _settings(args.set), bed=args.bed)
         S = _scale_arg(args.scale)
         part_type, params, _ = load_part(part_file)
         make_kit = get_kit(part_type.name)
         keep = files_read(params, part_file)
+        if args.bed is None and is_profile_path(args.printer):
+            keep += (Path(args.printer),)  # the kit depends on the user's profile file too
         out = of.vet_target(out, force=args.force, keep=keep)
         vet_depfile(args.depfile, out, args.out or str(out), params, part_file)
     except InputError as exc:
@@ -191,6 +193,11 @@ def cmd_list(args) -> int:
         except InputError as exc:
             t = f"(invalid: {exc})"
         print(f"  {f.name:28s} {t}")
+    from .printing.printers import load_printer, printer_names
+
+    print("printer profiles (propulsor print --printer NAME, or the path of your own .toml, or --bed WxDxH):")
+    for name in printer_names():
+        print(f"  {name:28s} {load_printer(name).label}")
     return EXIT_OK
 
 
@@ -235,7 +242,10 @@ def build_parser() -> argparse.ArgumentParser:
     pr = sub.add_parser("print", help="a print kit: pieces at print scale with FDM allowances, a rig, plates")
     pr.add_argument("part_file")
     pr.add_argument("--out", help="kit folder (default output/<file name>_kit)")
-    pr.add_argument("--printer", default="generic", help="printer profile: generic, prusa_mk4, bambu_x1")
+    pr.add_argument("--printer", default="generic", help="a built-in printer profile (propulsor list names them) "
+                    "or the path of your own profile file (TOML: bed_x_mm, bed_y_mm, bed_z_mm, ...)")
+    pr.add_argument("--bed", help="a quick profile: the bed WIDTHxDEPTHxHEIGHT in mm (e.g. 180x180x180), the "
+                    "generic printer's other settings")
     pr.add_argument("--scale", default="auto", help="auto (largest standard scale that fits), S or 1:S")
     pr.add_argument("--set", action="append", metavar="KEY=VALUE", help="override a printer setting "
                     "(e.g. backlash_mm=0.35; see printing/printers.py)")

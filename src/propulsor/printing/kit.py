@@ -213,7 +213,7 @@ def write_kit(kit: Kit, w) -> None:
         if pool is not None:
             pool.shutdown(wait=True, cancel_futures=True)
     plates = pack({n: tuple((m.bounds[1] - m.bounds[0])[:2]) for n, m in flat.items()}, p.bed_x_mm, p.bed_y_mm,
-                  p.piece_gap_mm)
+                  p.piece_gap_mm, p.margin_mm)
     w.add_checks(plate_checks(kit, plates, flat))
     rows = []
     for k, plate in enumerate(plates, 1):
@@ -226,13 +226,13 @@ def write_kit(kit: Kit, w) -> None:
     w.add_table("plates", ["plate", "pieces", "volume_cm3", "mass_g", "names"], rows)
     if kit.assembly:
         _assembly_picture(w, kit, piece_meshes)
-    w.derived.update({"scale_S": kit.scale.S, "plates": len(plates), "pieces": len(flat),
+    w.derived.update({"printer": p.name, "bed_mm": list(p.bed), "scale_S": kit.scale.S, "plates": len(plates), "pieces": len(flat),
                       "filament_volume_cm3": sum(r[2] for r in rows), "filament_mass_g": sum(r[3] for r in rows)})
     w.derived.update(kit.derived)
     w.expected_failures |= set(kit.expected_failures)
     w.add_checks(kit.checks)
-    w.add_note(f"Scale {kit.scale.label} on the {p.title or p.name} "
-               f"({p.bed_x_mm:g} × {p.bed_y_mm:g} × {p.bed_z_mm:g} mm): {kit.scale.reason}.")
+    w.add_note(f"Printer: {p.label}, {p.margin_mm:g} mm margins along the bed's edges.")
+    w.add_note(f"Scale {kit.scale.label}: {kit.scale.reason}.")
     w.add_note("FDM allowances applied to the printed geometry: " + "; ".join(
         f"{name} {value:g} mm ({how})" for name, value, how in kit.allowances) + ".")
     w.add_note("Plates: " + "; ".join(f"plate {r[0]}: {r[1]} pieces, {r[2]:.1f} cm³, {r[3]:.0f} g of filament "

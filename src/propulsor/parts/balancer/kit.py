@@ -122,7 +122,7 @@ def kit(p: BalancerParams, printer: Printer, scale: float | None = None, source=
     extents = {"arm": (float(ext[0]), float(ext[1]), spindle_top + 0.5 * b),
                "wheel": (2 * wm.r_tyre, 2 * wm.r_tyre, wheel_len),
                "bracket": (float(reach[0]), float(reach[1]), b)}
-    choice = choose_scale(extents, (printer.bed_x_mm, printer.bed_y_mm, printer.bed_z_mm), scale)
+    choice = choose_scale(extents, printer.bed, scale, margin=printer.margin_mm)
     S = choice.S
     k = 1.0 / S
     check_printable(S, None, printer.min_module_mm, choice=choice, min_feature_mm=printer.min_feature_mm,

@@ -101,7 +101,7 @@ def kit(p: CamMoverParams, printer: Printer, scale: float | None = None, source=
     from ...solids.printed import flipped
 
     full = plan(p)
-    choice = choose_scale(_full_size_extents(full), (printer.bed_x_mm, printer.bed_y_mm, printer.bed_z_mm), scale)
+    choice = choose_scale(_full_size_extents(full), printer.bed, scale, margin=printer.margin_mm)
     S = choice.S
     clear, under, press = printer.running_clearance_mm, printer.hole_undersize_mm, printer.press_fit_mm
     check_printable(S, None, printer.min_module_mm, choice=choice, min_feature_mm=printer.min_feature_mm,

@@ -60,7 +60,7 @@ def kit(p: FinalDriveParams, printer: Printer, scale: float | None = None, sourc
     extents = {"ring": (D, D, p.width_ring_mm), "sun": (ps.d_a_sun, ps.d_a_sun, p.width_sun_mm),
                "planet": (ps.d_a_planet, ps.d_a_planet, p.width_planet_mm),
                "carrier": (2 * ps.a_w + ps.d_a_planet, 2 * ps.a_w + ps.d_a_planet, p.width_planet_mm)}
-    choice = choose_scale(extents, bed, scale)
+    choice = choose_scale(extents, bed, scale, margin=printer.margin_mm)
     S = choice.S
     check_printable(S, p.module_mm, printer.min_module_mm, choice=choice)
     clear, under, press = printer.running_clearance_mm, printer.hole_undersize_mm, printer.press_fit_mm

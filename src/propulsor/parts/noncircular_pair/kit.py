@@ -113,7 +113,7 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
         # the searched law at full size is also the one at 1:1: the scale from the pitch curves, and at
         # 1:1 the printed pair searched and cut once (a print module has no catalogue shaper)
         m, L_est, extents = _pitch_extents(p)
-        choice = choose_scale(extents, bed, scale)
+        choice = choose_scale(extents, bed, scale, margin=printer.margin_mm)
         if choice.S != 1.0:
             full = pair_design(p)
     else:
@@ -122,12 +122,12 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
         m, L_est = full.d.m, full.mount
         extents = {"driver": (*_extent(full.profiles[0]), p.face_width_mm),
                    "driven": (*_extent(full.profiles[1]), p.face_width_mm)}
-        choice = choose_scale(extents, bed, scale)
+        choice = choose_scale(extents, bed, scale, margin=printer.margin_mm)
     S = choice.S
     pin = [min(PIN_D_MAX_MM, max(PIN_D_MIN_MM, b / S)) for b in (p.driver_bore_mm, p.driven_bore_mm)]
     R_boss = max(pin) / 2 + BOSS_WALL_MM
     base_len = L_est / S + 2 * R_boss
-    if base_len > max(printer.bed_x_mm, printer.bed_y_mm) - 2 * printer.piece_gap_mm:
+    if base_len > max(printer.bed_x_mm, printer.bed_y_mm) - 2 * printer.margin_mm:
         raise InputError("--scale", choice.label, f"the base bar ({base_len:.1f} mm) does not fit the bed")
     check_printable(S, m, printer.min_module_mm, choice=choice)
     clear, under, press = printer.running_clearance_mm, printer.hole_undersize_mm, printer.press_fit_mm

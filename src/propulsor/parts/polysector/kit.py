@@ -79,7 +79,7 @@ def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, sourc
                "hub_disc": (2 * full.layout.R_hub, 2 * full.layout.R_hub, t),
                "sector": (*_extent(full.sector), b),
                "base": (pos_full.a + 2 * R_boss, 2 * R_boss, BASE_T_MM)}
-    choice = choose_scale(extents, (printer.bed_x_mm, printer.bed_y_mm, printer.bed_z_mm), scale)
+    choice = choose_scale(extents, printer.bed, scale, margin=printer.margin_mm)
     S = choice.S
     check_printable(S, p.module_mm, printer.min_module_mm, choice=choice)
     clear, under, press = printer.running_clearance_mm, printer.hole_undersize_mm, printer.press_fit_mm
@@ -121,7 +121,7 @@ def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, sourc
     gear = extrude_profile(kd.gear_profile, 2 * b + t)
     L = pos.a
     R_boss = max(pin) / 2 + BOSS_WALL_MM
-    if L + 2 * R_boss > max(printer.bed_x_mm, printer.bed_y_mm) - 2 * printer.piece_gap_mm:
+    if L + 2 * R_boss > max(printer.bed_x_mm, printer.bed_y_mm) - 2 * printer.margin_mm:
         raise InputError("--scale", choice.label, f"the base bar ({L + 2 * R_boss:.1f} mm) does not fit the bed")
     base_prof = Profile(_stadium(L, R_boss), [circle_loop((pin[0] - 2 * press + under) / 2, (0.0, 0.0), ccw=False),
                                              circle_loop((pin[1] - 2 * press + under) / 2, (L, 0.0), ccw=False)], "base")

@@ -34,7 +34,7 @@ def kit(p: RoadWheelParams, printer: Printer, scale: float | None = None, source
     m = design(p).model
     width = max(m.z_outboard, m.rows_z[-1][1]) - m.z_inboard
     choice = choose_scale({"wheel": (2 * m.r_tyre, 2 * m.r_tyre, width)},
-                          (printer.bed_x_mm, printer.bed_y_mm, printer.bed_z_mm), scale)
+                          printer.bed, scale, margin=printer.margin_mm)
     S = choice.S
     check_printable(S, None, printer.min_module_mm, choice=choice, min_feature_mm=printer.min_feature_mm,
                     thinnest={"the web": p.web_thickness_mm / 2, "the rim and tyre ring": p.rim_thickness_mm
