@@ -77,6 +77,10 @@ class Kit:
     allowances: list[tuple[str, float, str]] = field(default_factory=list)  # (name, value mm, how applied)
     steps: list[str] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
+    #: pins in their holes, measured on the pieces (:mod:`.fits`)
+    fits: list = field(default_factory=list)
+    #: bought parts: steel pins that may replace printed ones (instead_of: the piece), or that the kit needs
+    hardware: list = field(default_factory=list)
     #: checks of the kit that fail as the part file documents (its [meta] expected_failures, e.g. the
     #: papers' sector teeth that jam): reported as documented, like the part's own
     expected_failures: list[str] = field(default_factory=list)
@@ -212,6 +216,9 @@ def write_kit(kit: Kit, w) -> None:
     finally:
         if pool is not None:
             pool.shutdown(wait=True, cancel_futures=True)
+    from .fits import measure
+
+    w.add_checks([measure(f, piece_meshes, p) for f in kit.fits])
     plates = pack({n: tuple((m.bounds[1] - m.bounds[0])[:2]) for n, m in flat.items()}, p.bed_x_mm, p.bed_y_mm,
                   p.piece_gap_mm, p.margin_mm)
     w.add_checks(plate_checks(kit, plates, flat))
@@ -237,6 +244,10 @@ def write_kit(kit: Kit, w) -> None:
         f"{name} {value:g} mm ({how})" for name, value, how in kit.allowances) + ".")
     w.add_note("Plates: " + "; ".join(f"plate {r[0]}: {r[1]} pieces, {r[2]:.1f} cm³, {r[3]:.0f} g of filament "
                                        f"({p.density_g_cm3:g} g/cm³): {r[4]}" for r in rows) + ".")
+    if kit.hardware:
+        w.add_note("Hardware a maker may use instead of printed pins (the holes fit either): " + "; ".join(
+            f"{h.count} × {h.what}" + (f" (instead of the printed {h.instead_of})" if h.instead_of else "")
+            for h in kit.hardware) + ".")
     if kit.steps:
         w.add_note("Assembly, in order: " + " ".join(f"({k}) {s}" for k, s in enumerate(kit.steps, 1)))
     for n in kit.notes:

@@ -34,17 +34,16 @@ from ...geometry.profile import Profile, circle_loop
 from ...params import load_params, params_to_dict
 from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
-from ...printing.scale import check_printable, choose_scale
+from ...printing.hardware import PRINTED_PIN_MIN_MM, dowel, mm, pin_diameter
+from ...printing.scale import STANDARD_SCALES, check_printable, choose_scale
 from .design import plan
-from .params import CamMoverParams
+from .params import MIN_WEB_MM, CamMoverParams
 from .proofs import leg_poses, motion_proofs
 
 __all__ = ["kit", "print_params"]
 
 #: printed axle diameter range, handle diameter and height above the carrier, axle stick-out (mm)
 AXLE_D_MIN_MM, AXLE_D_MAX_MM, HANDLE_D_MM, HANDLE_UP_MM, AXLE_TOP_MM = 5.0, 12.0, 6.0, 15.0, 2.0
-#: least printed roller pin (mm): a thinner one breaks off the leg
-PIN_D_MIN_MM = 4.0
 #: least thickness of the printed spacer between cam and carrier (mm): five 0.2 mm layers
 SPACER_T_MIN_MM = 1.0
 #: added to every drawn running clearance (mm): the sweep measures on polylines within the motion chord
@@ -67,6 +66,28 @@ def _full_size_extents(pl) -> dict:
             "leg": (p.leg_width_mm, leg_len, p.carrier_thickness_mm + z["pin"][1] - z["pin"][0])}
 
 
+def _pin_room(p: CamMoverParams, S: float, printer: Printer) -> float:
+    """Room for the roller pin at 1:S: the leg's width less its webs, the roller's less its wall and bore."""
+    bore_clear = 2 * printer.running_clearance_mm + printer.hole_undersize_mm
+    return min(p.leg_width_mm / S - 2 * MIN_WEB_MM, 2 * p.roller_radius_mm / S - bore_clear - 2 * MIN_WEB_MM)
+
+
+def roller_pin(p: CamMoverParams, S: float, printer: Printer, choice=None) -> float:
+    """The printed roller pin at 1:S: the full-size pin ÷ S as a standard diameter within the leg's and
+    the roller's room, at least the printable least; InputError saying at which scale it fits."""
+    room = _pin_room(p, S, printer)
+    d = pin_diameter(p.roller_pin_mm / S, room)
+    if d is None:
+        ok = [T for T in STANDARD_SCALES if T < S and _pin_room(p, T, printer) >= PRINTED_PIN_MIN_MM]
+        cam_d = 2.0 * (p.R0_mm + 2 * p.roller_radius_mm)
+        hint = (f"; it fits at 1:{ok[-1]:g} (a bed of about {mm(cam_d / ok[-1] + 2 * printer.margin_mm)} mm for the "
+                f"cam)" if ok else "")
+        raise InputError("--scale", f"1:{S:g}", f"the leg ({mm(p.leg_width_mm / S)} mm wide) has room for a "
+                         f"⌀{mm(max(room, 0.0))} mm roller pin, below the printable ⌀{PRINTED_PIN_MIN_MM:g} mm "
+                         f"(a web of {MIN_WEB_MM:g} mm each side){hint}")
+    return d
+
+
 def print_params(p: CamMoverParams, pl, S: float, printer: Printer) -> CamMoverParams:
     """The part's parameters at print scale 1:S with the law of `pl` and the printer's allowances."""
     clear, under = printer.running_clearance_mm, printer.hole_undersize_mm
@@ -84,7 +105,7 @@ def print_params(p: CamMoverParams, pl, S: float, printer: Printer) -> CamMoverP
                   groove_axial_gap_mm=max(p.groove_axial_gap_mm / S, clear),
                   carrier_axial_gap_mm=max(p.carrier_axial_gap_mm / S, SPACER_T_MIN_MM),
                   socket_clearance_mm=max(under / 2 - printer.press_fit_mm, 0.0),
-                  roller_pin_mm=max(p.roller_pin_mm / S, PIN_D_MIN_MM),
+                  roller_pin_mm=roller_pin(p, S, printer),
                   axle_diameter_mm=min(AXLE_D_MAX_MM, max(AXLE_D_MIN_MM, p.axle_diameter_mm / S)),
                   # the handle is pressed into the first sprocket hole, the others stay as drawn
                   carrier_bolt_hole_mm=HANDLE_D_MM - 2 * printer.press_fit_mm + under,
@@ -107,6 +128,7 @@ def kit(p: CamMoverParams, printer: Printer, scale: float | None = None, source=
     check_printable(S, None, printer.min_module_mm, choice=choice, min_feature_mm=printer.min_feature_mm,
                     thinnest={"the shoe rim": p.shoe_rim_mm, "the cam rim": p.cam_rim_mm,
                               "the roller's wall round its pin": p.roller_radius_mm - p.roller_pin_mm / 2})
+    roller_pin(p, S, printer, choice)  # refused with the scale that works
     try:
         q = print_params(p, full, S, printer)
         pl = plan(q)
