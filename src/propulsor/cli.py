@@ -95,6 +95,18 @@ def _scale_arg(text: str) -> float | None:
     return S
 
 
+def _slice_arg(text: str) -> bool:
+    """--slice auto|yes|no: whether the kit's plates are sliced (auto: when PrusaSlicer is installed)."""
+    from .printing.slicer import slicer_path
+
+    if text not in ("auto", "yes", "no"):
+        raise InputError("--slice", text, "must be auto, yes or no")
+    if text == "yes" and slicer_path() is None:
+        raise InputError("--slice", text, "prusa-slicer is not installed (Debian/Ubuntu: apt-get install prusa-slicer); "
+                         "--slice no estimates the filament instead")
+    return text == "yes" or (text == "auto" and slicer_path() is not None)
+
+
 def _settings(pairs) -> dict:
     """--set KEY=VALUE pairs as TOML values (numbers, booleans, strings)."""
     import tomllib
@@ -127,6 +139,7 @@ def cmd_print(args) -> int:
         out = of.vet_target(of.out_arg(args.out) or Path("output") / f"{part_file.stem}_kit",
                             force=args.force, keep=(part_file,))
         printer = load_printer(args.printer, _settings(args.set), bed=args.bed)
+        sliced = _slice_arg(args.slice)
         S = _scale_arg(args.scale)
         part_type, params, _ = load_part(part_file)
         make_kit = get_kit(part_type.name)
@@ -148,7 +161,7 @@ def cmd_print(args) -> int:
         writer.report_name = "print_report.md"
         writer.title = f"Print kit: {writer.title}"
         try:
-            write_kit(kit, writer)
+            write_kit(kit, writer, sliced)
             return writer.finish(), f"{part_type.name} print kit"
         finally:
             writer.close()
@@ -249,6 +262,9 @@ def build_parser() -> argparse.ArgumentParser:
     pr.add_argument("--scale", default="auto", help="auto (largest standard scale that fits), S or 1:S")
     pr.add_argument("--set", action="append", metavar="KEY=VALUE", help="override a printer setting "
                     "(e.g. backlash_mm=0.35; see printing/printers.py)")
+    pr.add_argument("--slice", default="auto", help="auto (when PrusaSlicer is installed), yes or no: slice every "
+                    "plate with the printer's settings for the print time and filament (slow: tens of seconds a "
+                    "plate); no: estimate the filament")
     pr.add_argument("--force", action="store_true", help="replace an --out folder that propulsor did not write")
     pr.add_argument("--no-wait", action="store_true", help="exit 2 instead of waiting for the lock of --out")
     pr.add_argument("--keep-failed", action="store_true", help="keep the kit when a check fails")

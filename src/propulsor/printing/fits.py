@@ -49,7 +49,8 @@ def pin_radius(mesh, at=(0.0, 0.0), z=None, reach: float | None = None) -> float
     larger piece)."""
     v = np.asarray(mesh.vertices)
     if z is not None:
-        v = v[(v[:, 2] >= z[0] - 1e-9) & (v[:, 2] <= z[1] + 1e-9)]
+        # above the face the pin stands on (its vertices there are the face's too)
+        v = v[(v[:, 2] > z[0] + 1e-3) & (v[:, 2] <= z[1] + 1e-9)]
     r = np.hypot(v[:, 0] - at[0], v[:, 1] - at[1])
     if reach is not None:
         r = r[r <= reach]

@@ -56,6 +56,18 @@ class Printer:
                                 why="a tenth of the smallest bed")
     density_g_cm3: float = param(1.24, "g/cm^3", "filament density (PLA: 1.24)", min=0.5, max=3.0,
                                  why="past any filament")
+    # --- print settings: the kit's time and filament are for these (sliced, or estimated without a slicer)
+    material: str = param("PLA", "", "filament", choices=("PLA", "PETG", "ABS", "ASA"))
+    filament_d_mm: float = param(1.75, "mm", "filament diameter", choices=(1.75, 2.85))
+    perimeters: int = param(3, "", "perimeters (walls) round every layer: pins and bosses are mostly wall",
+                            min=1, max=10, why="a 4 mm pin is all wall at 3")
+    infill_percent: float = param(15.0, "%", "infill density", min=0.0, max=100.0, why="solid")
+    top_layers: int = param(5, "", "solid top layers", min=0, max=30, why="6 mm of 0.2 mm layers")
+    bottom_layers: int = param(4, "", "solid bottom layers", min=0, max=30, why="6 mm of 0.2 mm layers")
+    nozzle_temp_c: float = param(210.0, "°C", "nozzle temperature (PLA 200 ... 220)", min=150.0, max=320.0,
+                                 why="the hottest common hot ends")
+    bed_temp_c: float = param(60.0, "°C", "bed temperature (PLA 55 ... 65)", min=0.0, max=130.0,
+                              why="the hottest common beds")
 
     @property
     def line_width(self) -> float:
@@ -74,6 +86,26 @@ class Printer:
     def label(self) -> str:
         """The printer as the report names it."""
         return f"{self.title or self.name} ({self.bed_x_mm:g} × {self.bed_y_mm:g} × {self.bed_z_mm:g} mm)"
+
+    @property
+    def settings_text(self) -> str:
+        """The print settings as a maker sets them in the slicer."""
+        return (f"{self.material} {self.filament_d_mm:g} mm, nozzle {self.nozzle_mm:g} mm at {self.nozzle_temp_c:g} °C, "
+                f"bed {self.bed_temp_c:g} °C, layer {self.layer_mm:g} mm, {self.perimeters} perimeters, "
+                f"{self.top_layers} top / {self.bottom_layers} bottom layers, {self.infill_percent:g} % infill, "
+                f"no supports")
+
+    def slicer_args(self) -> list[str]:
+        """PrusaSlicer's command-line options for these settings (bed, nozzle, layers, walls, infill,
+        filament, temperatures)."""
+        return ["--bed-shape", self.bed_shape(), "--max-print-height", f"{self.bed_z_mm:g}",
+                "--nozzle-diameter", f"{self.nozzle_mm:g}", "--layer-height", f"{self.layer_mm:g}",
+                "--perimeters", str(self.perimeters), "--fill-density", f"{self.infill_percent:g}%",
+                "--top-solid-layers", str(self.top_layers), "--bottom-solid-layers", str(self.bottom_layers),
+                "--filament-type", self.material, "--filament-diameter", f"{self.filament_d_mm:g}",
+                "--filament-density", f"{self.density_g_cm3:g}", "--temperature", f"{self.nozzle_temp_c:g}",
+                "--first-layer-temperature", f"{self.nozzle_temp_c + 5:g}", "--bed-temperature",
+                f"{self.bed_temp_c:g}", "--first-layer-bed-temperature", f"{self.bed_temp_c:g}"]
 
     def bed_shape(self) -> str:
         """The bed as PrusaSlicer's --bed-shape: corners x,y in mm."""

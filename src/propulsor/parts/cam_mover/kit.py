@@ -32,6 +32,7 @@ from ...errors import InputError
 from ...geometry import cam_outlines as co
 from ...geometry.profile import Profile, circle_loop
 from ...params import load_params, params_to_dict
+from ...printing.fits import Fit
 from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
 from ...printing.hardware import PRINTED_PIN_MIN_MM, dowel, mm, pin_diameter
@@ -225,19 +226,20 @@ def kit(p: CamMoverParams, printer: Printer, scale: float | None = None, source=
                                      f"{what}: least clearance over the turn {res.min_clearance:.4f} mm"
                                      + (f" − {shrink:g} mm (the inner feature prints narrower)" if shrink else "")))
     checks += [
-        Check.at_least("fit.roller_on_pin", q.roller_bore_clearance_mm / 2 - under / 2, clear, "mm",
-                       f"radial running clearance of each roller on its ⌀{q.roller_pin_mm:.2f} pin"),
-        Check.at_least("fit.carrier_on_axle", (q.carrier_bore_mm - under - axle_d) / 2, clear, "mm",
-                       f"radial running clearance of the carrier on the ⌀{axle_d:g} axle"),
-        Check.at_least("fit.axle_in_cam", axle_d - (cam_bore_print - under), 2 * press - 1e-12, "mm",
-                       f"diametral interference of the axle in the cam ({press:g} mm radial)"),
         Check.at_least("fit.roller_axial_gap", q.groove_axial_gap_mm, clear, "mm",
                        "axial gap of the roller to the channel floor and top"),
         Check.at_least("fit.spacer_thickness", gap_c, SPACER_T_MIN_MM, "mm",
                        "the spacer keeps the carrier clear of the cam's top"),
     ]
+    fits = [Fit("roller_on_pin", "leg", "roller", (0.0, 0.0), "running", "each roller turns on its leg's pin",
+                pin_z=(t, t + pin_len)),
+            Fit("carrier_on_axle", "axle", "carrier", (0.0, 0.0), "running", "the carrier turns on the axle"),
+            Fit("spacer_on_axle", "axle", "spacer", (0.0, 0.0), "running", "the spacer ring over the axle"),
+            Fit("axle_in_cam", "axle", "cam", (0.0, 0.0), "press", "the axle pressed into the cam"),
+            Fit("handle_in_carrier", "handle", "carrier", _first_hole(q), "press", "the handle pressed into the carrier")]
     hub = pr["hub"]
     return Kit(
+        fits=fits,
         part="cam_mover", printer=printer, scale=choice, pieces=pieces, assembly=assembly, checks=checks,
         derived={"print_hub_height_mm": pl.mech.hub_height, "print_hub_height_mean_mm": float(hub["hub"].mean()),
                  "print_roller_radius_mm": r_print, "print_channel_width_mm": 2 * q.roller_radius_mm

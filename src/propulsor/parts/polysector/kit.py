@@ -27,6 +27,7 @@ from ...check import Check
 from ...errors import InputError
 from ...geometry.profile import Arc, Line, Loop, Profile, circle_loop
 from ...params import load_params, params_to_dict
+from ...printing.fits import Fit
 from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
 from ...printing.scale import check_printable, choose_scale
@@ -166,12 +167,15 @@ def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, sourc
               Check.at_least("mesh.print_backlash_min", jn_min, printer.backlash_mm, "mm",
                              f"least normal backlash of the printed teeth (free turn of the gear × r_b2); designed "
                              f"j_n = {j_n:.4f} mm")]
-    for k, role in enumerate(("wheel", "gear")):
-        checks.append(Check.at_least(f"fit.{role}_on_axle", (bores[k] - under - pin[k]) / 2, clear, "mm",
-                                     f"radial running clearance on the ⌀{pin[k]:g} axle pin"))
     checks.append(Check.at_least("fit.sector_pins", min(d_loc - (lay.d_pin - under), d_clamp - (lay.d_bolt - under)),
                                  2 * press - 1e-12, "mm", "the sector pins press into their printed holes"))
+    fits = [Fit("wheel_on_axle", "axle_wheel", "hub_disc", (0.0, 0.0), "running", "the wheel turns on its axle"),
+            Fit("gear_on_axle", "axle_gear", "gear", (0.0, 0.0), "running", "the gear turns on its axle"),
+            Fit("axle_wheel_in_base", "axle_wheel", "base", (0.0, 0.0), "press", "pressed into the base"),
+            Fit("axle_gear_in_base", "axle_gear", "base", (L, 0.0), "press", "pressed into the base"),
+            Fit("handle_in_disc", "handle", "hub_disc", c_h, "press", "the handle pressed into the disc")]
     return Kit(
+        fits=fits,
         part="polysector_gear", printer=printer, scale=choice, pieces=pieces, assembly=assembly, checks=checks,
         derived={"print_module_mm": q.module_mm, "print_center_distance_mm": L, "print_position": pos.k,
                  "print_offset_mm": pos.offset, "print_face_width_mm": b, "print_backlash_n_design_mm": j_n,

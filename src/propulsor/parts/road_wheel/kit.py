@@ -11,6 +11,7 @@ from __future__ import annotations
 from ...check import Check
 from ...errors import InputError
 from ...geometry.profile import Profile, circle_loop
+from ...printing.fits import Fit
 from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
 from ...printing.scale import check_printable, choose_scale
@@ -73,11 +74,6 @@ def kit(p: RoadWheelParams, printer: Printer, scale: float | None = None, source
     low_row = min(a for a, _ in m.rows_z) / S
     r_max = max(largest_radius(s.solid) for s in slabs)
     checks = [
-        Check.at_least("fit.wheel_on_axle", (bore - under - axle_d) / 2, clear, "mm",
-                       f"radial running clearance of the wheel's ⌀{bore:.2f} bore on the ⌀{axle_d:g} axle (the bore "
-                       f"is drawn {under:g} mm larger for the hole's undersize)"),
-        Check.at_least("fit.axle_in_stand", axle_d - (hole - under), 2 * press - 1e-12, "mm",
-                       f"diametral interference of the axle in the stand ({press:g} mm radial)"),
         Check.at_least("motion.wheel_above_base", COLLAR_H_MM + low_row, clear, "mm",
                        f"the lowest tyre row (z = {low_row:.2f} mm above the hub face) over the base: the collar "
                        f"is {COLLAR_H_MM:g} mm high; the collar (r = {collar_r:.2f}) lies inside the hub (r = "
@@ -88,7 +84,11 @@ def kit(p: RoadWheelParams, printer: Printer, scale: float | None = None, source
         Check.at_most("shape.stacked_length", abs(top - max(m.z_outboard, m.rows_z[-1][1]) / S), 1e-9, "mm",
                       f"{len(slabs)} slabs stacked: {top:.3f} mm"),
     ]
+    fits = [Fit(f"{s.name}_on_axle", "axle", s.name, (0.0, 0.0), "running", "the wheel turns on the axle")
+            for s in slabs]
+    fits.append(Fit("axle_in_stand", "axle", "stand", (0.0, 0.0), "press", "the axle pressed into the stand"))
     return Kit(
+        fits=fits,
         part="road_wheel", printer=printer, scale=choice, pieces=pieces, assembly=assembly, checks=checks,
         derived={"print_tyre_radius_mm": tyre_r, "print_wheel_length_mm": top, "axle_d_mm": axle_d,
                  "wheel_bore_d_mm": bore, "wheel_slabs": len(slabs)},
