@@ -17,7 +17,7 @@ ROOT = Path(__file__).resolve().parents[1]
 @pytest.fixture(scope="module")
 def kit_folder(tmp_path_factory):
     folder = tmp_path_factory.mktemp("polykit") / "polysector_kit"
-    assert main(["print", str(ROOT / "parts" / "polysector.toml"), "--out", str(folder), "-q"]) == 0
+    assert main(["print", str(ROOT / "parts" / "polysector.toml"), "--out", str(folder), "-q", "--slice", "no"]) == 0
     return folder
 
 

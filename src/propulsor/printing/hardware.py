@@ -61,3 +61,19 @@ def dowel(d: float, length: float, count: int, piece: str, use: str) -> Hardware
 def least_scale_for(room_full: float, need: float) -> float:
     """The largest reduction S with room_full / S ≥ need (room in full-size mm)."""
     return room_full / need if need > 0 else math.inf
+
+
+#: depth of the flat along a printed pin, × its diameter: the pin prints lying on it
+PIN_FLAT = 0.1
+
+
+def side_pin(d: float, length: float):
+    """A printed pin of diameter d (axis z, 0 … length) with a flat along its side PIN_FLAT × d deep: it is
+    laid on that flat (its largest face once it is longer than 1.25 d), so its layers run along it — a pin
+    printed standing breaks between two layers.  Its round part keeps the diameter d for the holes."""
+    from ..solids.kernel import box, cut, cylinder
+
+    r = d / 2
+    x0 = r - PIN_FLAT * d
+    return cut(cylinder(r, 0.0, length), box(r + 1.0 - x0, d + 2.0, length + 2.0, corner=(x0, -r - 1.0, -1.0)),
+               name="pin")

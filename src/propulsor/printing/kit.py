@@ -34,7 +34,8 @@ class Piece:
     count: int = 1
     genus: int | None = None
     what: str = ""
-    #: bed-side chamfer (mm) of this piece; None: the printer's chamfer_mm
+    #: bed-side chamfer (mm) of this piece; None: the printer's chamfer_mm (0 for pins lying on their flat,
+    #: :func:`.hardware.side_pin`: their walls are round at the bed)
     chamfer_mm: float | None = None
 
 

@@ -35,7 +35,7 @@ from ...params import load_params, params_to_dict
 from ...printing.fits import Fit
 from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
-from ...printing.hardware import PRINTED_PIN_MIN_MM, dowel, mm, pin_diameter
+from ...printing.hardware import PRINTED_PIN_MIN_MM, dowel, mm, pin_diameter, side_pin
 from ...printing.scale import STANDARD_SCALES, check_printable, choose_scale
 from .design import plan
 from .params import MIN_WEB_MM, CamMoverParams
@@ -171,7 +171,7 @@ def kit(p: CamMoverParams, printer: Printer, scale: float | None = None, source=
     shoe = flipped(shoe_up, ws)
     gap_c = q.carrier_axial_gap_mm
     axle_len = tp + dg + gap_c + t + AXLE_TOP_MM
-    axle = cylinder(axle_d / 2, 0.0, axle_len)
+    axle = side_pin(axle_d, axle_len)
     core_r = pl.H_min - q.roller_radius_mm
     spacer_D = min(2 * (core_r - 1.0), pl.carrier.slot_bottom * 2 - 2.0, axle_d + 12.0)
     spacer_hole = axle_d + 2 * clear + under
@@ -180,16 +180,16 @@ def kit(p: CamMoverParams, printer: Printer, scale: float | None = None, source=
                          f"core (radius {core_r:.2f} mm); print larger")
     spacer = extrude_profile(Profile(circle_loop(spacer_D / 2), [circle_loop(spacer_hole / 2, ccw=False)], "spacer"),
                              gap_c)
-    handle = cylinder(HANDLE_D_MM / 2, 0.0, t + HANDLE_UP_MM)
+    handle = side_pin(HANDLE_D_MM, t + HANDLE_UP_MM)
     leg_genus = 0
     pieces = [Piece("cam", cam, genus=1 + q.cam_bolt_count, what=f"fixed cam with its channel, the base"),
               Piece("carrier", carrier, genus=1 + q.carrier_bolt_count, what=f"carrier with {n} slides"),
               Piece("leg", leg, count=n, genus=leg_genus, what=f"leg with its roller pin ⌀{q.roller_pin_mm:.2f}"),
               Piece("roller", roller, count=n, genus=1, what=f"roller ⌀{2 * r_print:.2f}"),
               Piece("shoe", shoe, count=n, genus=0, what="support shoe"),
-              Piece("axle", axle, genus=0, what=f"axle ⌀{axle_d:g}"),
+              Piece("axle", axle, genus=0, what=f"axle ⌀{axle_d:g}", chamfer_mm=0.0),
               Piece("spacer", spacer, genus=1, what=f"spacer ring, {gap_c:.2f} mm"),
-              Piece("handle", handle, genus=0, what=f"crank handle ⌀{HANDLE_D_MM:g}")]
+              Piece("handle", handle, genus=0, what=f"crank handle ⌀{HANDLE_D_MM:g}", chamfer_mm=0.0)]
     # --- the model assembled at the carrier angle of the part file
     phi0 = math.radians(q.assembly_angle_deg)
     zc = z["carrier"][0]

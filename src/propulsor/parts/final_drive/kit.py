@@ -21,6 +21,7 @@ from ...check import Check
 from ...geometry.profile import Arc, Line, Loop, Profile, circle_loop
 from ...params import load_params, params_to_dict
 from ...printing.fits import Fit
+from ...printing.hardware import side_pin
 from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
 from ...printing.scale import check_printable, choose_scale
@@ -101,7 +102,7 @@ def kit(p: FinalDriveParams, printer: Printer, scale: float | None = None, sourc
     carrier = fuse(disc, *pins, name="carrier with pins")
     # shaft through floor, sun, carrier; crank pressed on its top
     shaft_len = t_f + b_s + GAP_MM + CARRIER_T_MM + CRANK_T_MM
-    shaft = cylinder(shaft_d / 2, 0.0, shaft_len)
+    shaft = side_pin(shaft_d, shaft_len)
     arm = Profile(_stadium(CRANK_ARM_MM, shaft_d / 2 + 5.0), [circle_loop(sun_hole / 2, ccw=False)], "crank")
     crank = fuse(extrude_profile(arm, CRANK_T_MM),
                                 cylinder(HANDLE_D_MM / 2, CRANK_T_MM - 0.01, CRANK_T_MM + HANDLE_H_MM,
@@ -110,7 +111,7 @@ def kit(p: FinalDriveParams, printer: Printer, scale: float | None = None, sourc
               Piece("sun", sun, genus=1, what=f"sun, {q.z_sun} teeth"),
               Piece("planet", planet, count=q.n_planets, genus=1, what=f"planet, {q.z_planet} teeth"),
               Piece("carrier", carrier, genus=1, what=f"carrier with {q.n_planets} pins ⌀{pin_d:g}"),
-              Piece("shaft", shaft, genus=0, what=f"sun shaft ⌀{shaft_d:g}"),
+              Piece("shaft", shaft, genus=0, what=f"sun shaft ⌀{shaft_d:g}", chamfer_mm=0.0),
               Piece("crank", crank, genus=1, what="crank with handle")]
     off_ext, off_ring = body_offsets(q.z_ring)
     z_top = t_f + b_p + GAP_MM

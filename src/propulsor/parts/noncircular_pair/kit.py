@@ -21,7 +21,7 @@ from ...params import load_params, params_to_dict
 from ...printing.fits import Fit
 from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
-from ...printing.hardware import PRINTED_PIN_MIN_MM, STANDARD_PIN_D, Hardware, dowel, mm, standard_at_most
+from ...printing.hardware import PRINTED_PIN_MIN_MM, STANDARD_PIN_D, Hardware, dowel, mm, standard_at_most, side_pin
 from ...printing.scale import check_printable, choose_scale
 from .design import pair_design
 from .params import NoncircularPairParams
@@ -207,14 +207,14 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     base_prof = _base_profile(L, R_boss, [d_ - 2 * press + under for d_ in pin])
     base = extrude_profile(base_prof, BASE_T_MM)
     pin_len = BASE_T_MM + w + 1.0
-    pins = [cylinder(d_ / 2, 0.0, pin_len) for k, d_ in enumerate(pin)]
-    handle = cylinder(handle_d / 2, 0.0, w + HANDLE_UP_MM)
+    pins = [side_pin(d_, pin_len) for d_ in pin]
+    handle = side_pin(handle_d, w + HANDLE_UP_MM)
     pieces = [Piece("driver", driver, genus=2, what=f"driver, {d.z} teeth, m = {d.m:.4g} mm"),
               Piece("driven", driven, genus=1 + n, what=f"driven wheel, {d.z_H} teeth, {n} index marks"),
               Piece("base", base, genus=2, what=f"base bar, axles {L:.3f} mm apart"),
-              Piece("pin_driver", pins[0], genus=0, what=f"driver axle pin ⌀{pin[0]:g}"),
-              Piece("pin_driven", pins[1], genus=0, what=f"driven axle pin ⌀{pin[1]:g}"),
-              Piece("handle", handle, genus=0, what=f"crank handle ⌀{handle_d:g}")][:6 if handle_printed else 5]
+              Piece("pin_driver", pins[0], genus=0, what=f"driver axle pin ⌀{pin[0]:g}", chamfer_mm=0.0),
+              Piece("pin_driven", pins[1], genus=0, what=f"driven axle pin ⌀{pin[1]:g}", chamfer_mm=0.0),
+              Piece("handle", handle, genus=0, what=f"crank handle ⌀{handle_d:g}", chamfer_mm=0.0)][:6 if handle_printed else 5]
     hardware = [dowel(pin[0], pin_len, 1, "pin_driver", "the driver's axle"),
                 dowel(pin[1], pin_len, 1, "pin_driven", "the driven wheel's axle")]
     if handle_printed:

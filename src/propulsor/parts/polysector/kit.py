@@ -28,6 +28,7 @@ from ...errors import InputError
 from ...geometry.profile import Arc, Line, Loop, Profile, circle_loop
 from ...params import load_params, params_to_dict
 from ...printing.fits import Fit
+from ...printing.hardware import side_pin
 from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
 from ...printing.scale import check_printable, choose_scale
@@ -128,14 +129,14 @@ def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, sourc
                                              circle_loop((pin[1] - 2 * press + under) / 2, (L, 0.0), ccw=False)], "base")
     base = extrude_profile(base_prof, BASE_T_MM)
     axle_len = BASE_T_MM + GAP_MM + 2 * b + t + 1.0
-    axles = [cylinder(d / 2, 0.0, axle_len) for k, d in enumerate(pin)]
+    axles = [side_pin(d, axle_len) for d in pin]
     # sector pins: each presses through the sector into the disc (the holes print `under` small)
     d_loc = lay.d_pin - under + 2 * press
     d_clamp = lay.d_bolt - under + 2 * press
     pin_len = b + t - GAP_MM
-    loc_pin = cylinder(d_loc / 2, 0.0, pin_len)
-    clamp_pin = cylinder(d_clamp / 2, 0.0, pin_len)
-    handle = cylinder(HANDLE_D_MM / 2, 0.0, t + b + HANDLE_UP_MM)
+    loc_pin = side_pin(d_loc, pin_len)
+    clamp_pin = side_pin(d_clamp, pin_len)
+    handle = side_pin(HANDLE_D_MM, t + b + HANDLE_UP_MM)
     n_sec = q.flows * i_s
     n_pos = len(kd.positions)
     pieces = [Piece("gear", gear, genus=1, what=f"solid gear, {q.gear_teeth} teeth, m = {q.module_mm:.4g} mm"),
@@ -143,11 +144,11 @@ def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, sourc
                     what=f"hub disc of both flows, a pin hole per sector and position ({n_pos} positions)"),
               Piece("sector", sector, count=n_sec, genus=2, what=f"sector of {q.sector_teeth} teeth"),
               Piece("base", base, genus=2, what=f"base bar, axles {L:.3f} mm apart (position {pos.k})"),
-              Piece("axle_wheel", axles[0], genus=0, what=f"wheel axle pin ⌀{pin[0]:g}"),
-              Piece("axle_gear", axles[1], genus=0, what=f"gear axle pin ⌀{pin[1]:g}"),
-              Piece("locating_pin", loc_pin, count=n_sec, genus=0, what=f"sector locating pin ⌀{d_loc:.2f}"),
-              Piece("clamp_pin", clamp_pin, count=n_sec, genus=0, what=f"sector clamping pin ⌀{d_clamp:.2f}"),
-              Piece("handle", handle, genus=0, what=f"crank handle ⌀{HANDLE_D_MM:g}")]
+              Piece("axle_wheel", axles[0], genus=0, what=f"wheel axle pin ⌀{pin[0]:g}", chamfer_mm=0.0),
+              Piece("axle_gear", axles[1], genus=0, what=f"gear axle pin ⌀{pin[1]:g}", chamfer_mm=0.0),
+              Piece("locating_pin", loc_pin, count=n_sec, genus=0, what=f"sector locating pin ⌀{d_loc:.2f}", chamfer_mm=0.0),
+              Piece("clamp_pin", clamp_pin, count=n_sec, genus=0, what=f"sector clamping pin ⌀{d_clamp:.2f}", chamfer_mm=0.0),
+              Piece("handle", handle, genus=0, what=f"crank handle ⌀{HANDLE_D_MM:g}", chamfer_mm=0.0)]
     z0 = BASE_T_MM + GAP_MM
     assembly = [Placed("base", "base", place(), "0.75"), Placed("axle_wheel", "axle_wheel", place(), "0.4"),
                 Placed("axle_gear", "axle_gear", place(dx=L), "0.4"),

@@ -12,6 +12,7 @@ from ...check import Check
 from ...errors import InputError
 from ...geometry.profile import Profile, circle_loop
 from ...printing.fits import Fit
+from ...printing.hardware import side_pin
 from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
 from ...printing.scale import check_printable, choose_scale
@@ -60,12 +61,12 @@ def kit(p: RoadWheelParams, printer: Printer, scale: float | None = None, source
     z_w = BASE_T_MM + COLLAR_H_MM  # the wheel's hub face rests on the collar
     top = slabs[-1].z1
     axle_len = z_w + top + AXLE_TOP_MM
-    axle = cylinder(axle_d / 2, 0.0, axle_len)
+    axle = side_pin(axle_d, axle_len)
     pieces = [Piece(s.name, s.printed, genus=s.genus,
                     what=f"wheel slab z {s.z0:.2f} … {s.z1:.2f} mm, printed on its {s.web_face} face (half web)")
               for s in slabs]
     pieces += [Piece("stand", base, genus=1, what=f"stand: base ⌀{2 * R_base:.1f} with the collar"),
-               Piece("axle", axle, genus=0, what=f"axle ⌀{axle_d:g}")]
+               Piece("axle", axle, genus=0, what=f"axle ⌀{axle_d:g}", chamfer_mm=0.0)]
     colours = ["tab:gray", "0.3", "tab:gray", "0.3"]
     assembly = [Placed("stand", "stand", place(), "0.75"), Placed("axle", "axle", place(), "0.4")]
     assembly += [Placed(s.name, s.name, s.placement(dz=z_w), colours[k % 4]) for k, s in enumerate(slabs)]
