@@ -78,6 +78,8 @@ class Kit:
     allowances: list[tuple[str, float, str]] = field(default_factory=list)  # (name, value mm, how applied)
     steps: list[str] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
+    #: the labels of `assembly` each step places (one list a step; the guide's step pictures)
+    step_parts: list = field(default_factory=list)
     #: pins in their holes, measured on the pieces (:mod:`.fits`)
     fits: list = field(default_factory=list)
     #: bought parts: steel pins that may replace printed ones (instead_of: the piece), or that the kit needs
@@ -198,9 +200,13 @@ def write_kit(kit: Kit, w, sliced: bool = False) -> None:
     from .planning import TABLE_COLUMNS, PlatePlan, estimate_g, hours, slice_plates, table_rows
     from .slicer import slicer_path
 
+    from .coupon import coupon_pieces
+
     p = kit.printer
     flat = {}  # one per printed copy: name, or name_k when more than one is printed
     piece_meshes = {}
+    coupon = coupon_pieces(p)
+    kit.pieces = [pc for pc in kit.pieces if not pc.name.startswith("coupon")] + coupon
     # every piece tessellated, laid flat, chamfered and checked in forked workers beside each other
     pool = fork_pool(2)
     jobs = []
@@ -222,8 +228,12 @@ def write_kit(kit: Kit, w, sliced: bool = False) -> None:
     from .fits import measure
 
     w.add_checks([measure(f, piece_meshes, p) for f in kit.fits])
-    plates = pack({n: tuple((m.bounds[1] - m.bounds[0])[:2]) for n, m in flat.items()}, p.bed_x_mm, p.bed_y_mm,
-                  p.piece_gap_mm, p.margin_mm)
+    def feet(names):
+        return {n: tuple((flat[n].bounds[1] - flat[n].bounds[0])[:2]) for n in names}
+
+    first = [pc.name for pc in coupon]  # the coupon prints first, on a plate of its own
+    plates = pack(feet(first), p.bed_x_mm, p.bed_y_mm, p.piece_gap_mm, p.margin_mm)
+    plates += pack(feet([n for n in flat if n not in first]), p.bed_x_mm, p.bed_y_mm, p.piece_gap_mm, p.margin_mm)
     w.add_checks(plate_checks(kit, plates, flat))
     plans, paths = [], []
     for k, plate in enumerate(plates, 1):
@@ -239,6 +249,9 @@ def write_kit(kit: Kit, w, sliced: bool = False) -> None:
     w.add_table("plates", TABLE_COLUMNS, table_rows(plans))
     if kit.assembly:
         _assembly_picture(w, kit, piece_meshes)
+    from .guide import write_guide
+
+    write_guide(kit, w, plans, assembled_meshes(kit, piece_meshes) if kit.assembly else [], sliced, w.title)
     w.derived.update({"printer": p.name, "bed_mm": list(p.bed), "scale_S": kit.scale.S, "plates": len(plates),
                       "pieces": len(flat), "pieces_volume_cm3": sum(q.volume_cm3 for q in plans),
                       "filament_estimate_g": sum(q.estimate_g for q in plans), "infill_percent": p.infill_percent})
@@ -248,6 +261,8 @@ def write_kit(kit: Kit, w, sliced: bool = False) -> None:
     w.derived.update(kit.derived)
     w.expected_failures |= set(kit.expected_failures)
     w.add_checks(kit.checks)
+    w.add_note("The maker's guide — what to print, with what, how long, the hardware, the clearance coupon and the "
+               "assembly with pictures — is [print_guide.md](print_guide.md).")
     w.add_note(f"Printer: {p.label}, {p.margin_mm:g} mm margins along the bed's edges.")
     w.add_note(f"Scale {kit.scale.label}: {kit.scale.reason}.")
     w.add_note("FDM allowances applied to the printed geometry: " + "; ".join(

@@ -221,6 +221,7 @@ def kit(p: BalancerParams, printer: Printer, scale: float | None = None, source=
                  pin_at=(R, 0.0), pin_z=(z_hub - za0, z_end - za0)) for s in slabs]
     return Kit(
         fits=fits,
+        step_parts=[[s.name for s in slabs], ["bracket"], ["arm"], [], []],
         part="balancer", printer=printer, scale=choice, pieces=pieces, assembly=assembly, checks=checks,
         derived={"print_R_b_mm": R, "print_travel_deg": [math.degrees(tor.beta0), math.degrees(tor.beta_m)],
                  "print_arm_bore_d_mm": arm_bore, "print_spindle_d_mm": spindle_d, "print_wheel_bore_d_mm": wheel_bore,

@@ -240,6 +240,8 @@ def kit(p: CamMoverParams, printer: Printer, scale: float | None = None, source=
     hub = pr["hub"]
     return Kit(
         fits=fits,
+        step_parts=[["cam", "axle", "spacer"], [f"{what}_{k + 1}" for k in range(n) for what in ("leg", "roller", "shoe")],
+                    ["carrier"], ["handle"], []],
         part="cam_mover", printer=printer, scale=choice, pieces=pieces, assembly=assembly, checks=checks,
         derived={"print_hub_height_mm": pl.mech.hub_height, "print_hub_height_mean_mm": float(hub["hub"].mean()),
                  "print_roller_radius_mm": r_print, "print_channel_width_mm": 2 * q.roller_radius_mm

@@ -144,6 +144,8 @@ def kit(p: FinalDriveParams, printer: Printer, scale: float | None = None, sourc
              Fit("crank_on_shaft", "shaft", "crank", (0.0, 0.0), "press", "the crank pressed on the shaft")]
     return Kit(
         fits=fits,
+        step_parts=[["sun", "shaft"], ["ring"], [f"planet_{k + 1}" for k in range(q.n_planets)], ["carrier"], ["crank"],
+                    []],
         part="planetary_final_drive", printer=printer, scale=choice, pieces=pieces, assembly=assembly, checks=checks,
         derived={"print_module_mm": q.module_mm, "print_a_w_mm": qs.a_w, "print_ring_outer_d_mm": Dq,
                  "print_tooth_thinning_mm": thinning, "print_least_flank_clearance_mm": least,

@@ -244,6 +244,7 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     return Kit(
         part="noncircular_pair", printer=printer, scale=choice, pieces=pieces, assembly=assembly, checks=checks,
         hardware=hardware, fits=fits,
+        step_parts=[["base", "pin_driven", "pin_driver"], ["driver", "handle"], ["driven"], []],
         derived={"print_module_mm": d.m, "print_center_distance_mm": L, "print_face_width_mm": w,
                  "print_backlash_n_design_mm": j_n, "print_backlash_n_min_mm": jn_min,
                  "print_backlash_t_max_mm": s["backlash_max_mm"], "pin_driver_d_mm": pin[0], "pin_driven_d_mm": pin[1]},

@@ -90,6 +90,7 @@ def kit(p: RoadWheelParams, printer: Printer, scale: float | None = None, source
     fits.append(Fit("axle_in_stand", "axle", "stand", (0.0, 0.0), "press", "the axle pressed into the stand"))
     return Kit(
         fits=fits,
+        step_parts=[[s.name for s in slabs], ["stand", "axle"], []],
         part="road_wheel", printer=printer, scale=choice, pieces=pieces, assembly=assembly, checks=checks,
         derived={"print_tyre_radius_mm": tyre_r, "print_wheel_length_mm": top, "axle_d_mm": axle_d,
                  "wheel_bore_d_mm": bore, "wheel_slabs": len(slabs)},
