@@ -72,3 +72,89 @@ def test_an_unknown_printer_says_how_to_give_one():
         load_printer("prusa_mini_plus")
     with pytest.raises(InputError, match="no such profile file"):
         load_printer("nowhere/my_printer.toml")
+
+
+# --- kits on a 180 mm bed: one fast case here; every part file on every profile in make check -----------
+
+import json  # noqa: E402
+import shutil  # noqa: E402
+
+needs_slicer = pytest.mark.skipif(shutil.which("prusa-slicer") is None,
+                                  reason="PrusaSlicer is not installed (apt-get install prusa-slicer)")
+
+
+def _kit(tmp_path, part: str, *args) -> tuple[int, Path, dict | None]:
+    out = tmp_path / f"{part}_kit"
+    rc = main(["print", str(ROOT / "parts" / f"{part}.toml"), "--out", str(out), "-q", "--slice", "no", *args])
+    m = json.loads((out / "manifest.json").read_text()) if rc == 0 else None
+    return rc, out, m
+
+
+def _assert_sound(m: dict) -> None:
+    bad = [c["name"] for c in m["checks"] if not c["passed"] and c["name"] not in m.get("expected_failures", [])]
+    assert bad == []
+
+
+def test_the_seed_002_pair_prints_on_a_180_mm_bed_with_unequal_pins(tmp_path):
+    rc, out, m = _kit(tmp_path, "ncg_seed002", "--printer", "prusa_mini")
+    assert rc == 0
+    _assert_sound(m)
+    d, checks = m["derived"], {c["name"]: c for c in m["checks"]}
+    assert d["scale_S"] == 1.5 and d["printer"] == "prusa_mini" and d["bed_mm"] == [180.0, 180.0, 180.0]
+    # the bores 16 / 40 mm: pins of unequal standard diameters, each measured in its own hole
+    assert (d["pin_driver_d_mm"], d["pin_driven_d_mm"]) == (10.0, 12.0)
+    for name in ("pin_driver_in_base", "pin_driven_in_base", "driver_on_pin", "driven_on_pin", "handle_in_driver"):
+        assert checks[f"fit.{name}"]["passed"] and "measured" in checks[f"fit.{name}"]["message"]
+    guide = (out / "print_guide.md").read_text()
+    assert "Prusa MINI+" in guide and "⌀10 mm steel dowel pin" in guide and "clearance" in guide
+    assert "Prusa MINI+, 180 × 180 mm bed" in (out / "print_report.md").read_text()
+    for pic in ("assembled_side", "exploded", "step_1", "step_2", "step_3"):
+        assert (out / "plots" / f"{pic}.png").is_file()
+
+
+@pytest.mark.slicer
+@needs_slicer
+def test_road_wheel_on_a_quick_180_bed_and_its_coupon_plate_slices(tmp_path):
+    from propulsor.printing.slicer import slice_plate
+
+    rc, out, m = _kit(tmp_path, "road_wheel", "--bed", "180x180x180")
+    assert rc == 0
+    _assert_sound(m)
+    assert m["derived"]["scale_S"] == 4.0 and m["derived"]["printer"] == "bed_180x180x180"
+    p = load_printer("generic", bed="180x180x180")
+    r = slice_plate(out / "plate_1.3mf", p.bed_shape(), tmp_path / "p1.gcode", args=p.slicer_args())
+    assert r.ok and r.all_manifold and r.off_bed(180.0, 180.0) == [] and r.stats["time_s"] > 0
+
+
+def _profiles() -> list[tuple[str, list[str]]]:
+    """Every built-in profile and a quick --bed, one of each distinct printer (profiles that differ only in
+    their names build the same kit)."""
+    import dataclasses
+
+    seen, out = set(), []
+    for name, args in [(n, ["--printer", n]) for n in printer_names()] + [("bed180", ["--bed", "180x180x180"])]:
+        p = load_printer(name, bed="180x180x180") if name == "bed180" else load_printer(name)
+        key = tuple(v for f, v in dataclasses.asdict(p).items() if f not in ("name", "title"))
+        if key not in seen:
+            seen.add(key)
+            out.append((name, args))
+    return out
+
+
+PART_FILES = sorted(f.stem for f in (ROOT / "parts").glob("*.toml"))
+
+
+@pytest.mark.sweep
+@pytest.mark.slicer
+@needs_slicer
+@pytest.mark.parametrize("profile, args", _profiles(), ids=[n for n, _ in _profiles()])
+@pytest.mark.parametrize("part", PART_FILES)
+def test_every_part_file_prints_on_every_profile_and_slices(tmp_path, part, profile, args):
+    from propulsor.printing.slicer import slice_kit
+
+    rc, out, m = _kit(tmp_path, part, *args)
+    assert rc == 0
+    _assert_sound(m)
+    p = load_printer(profile, bed="180x180x180") if profile == "bed180" else load_printer(profile)
+    for plate, r, off in slice_kit(out, p, tmp_path):
+        assert r.ok and r.all_manifold and off == [], (plate, r.message, r.objects)
