@@ -83,6 +83,12 @@ def choose_scale(pieces: dict[str, tuple[float, float, float]], bed: tuple[float
                      "choose a larger printer")
 
 
+def larger(S: float) -> str:
+    """What works when a piece is too small at 1:S: the next larger standard scale, on a larger bed."""
+    bigger = [T for T in STANDARD_SCALES if T < S]
+    return f"print at 1:{bigger[-1]:g} (a larger bed)" if bigger else "it is too small even at full size"
+
+
 def check_printable(S: float, module_mm: float | None, min_module_mm: float,
                     thinnest: dict[str, float] | None = None, min_feature_mm: float = 0.8,
                     choice: ScaleChoice | None = None) -> None:
@@ -90,13 +96,19 @@ def check_printable(S: float, module_mm: float | None, min_module_mm: float,
 
     `thinnest`: {feature name: its full-size thickness in mm} (tip lands, webs, walls); `choice`:
     the automatic choice of S, named in the message (the bed is then what is too small)."""
+    def works(limit: float) -> str:
+        """The smallest standard reduction at most `limit` (the scale that prints it)."""
+        ok = [T for T in STANDARD_SCALES if T <= limit + 1e-9]
+        return f"1:{ok[-1]:g}" if ok else "full size"
+
     if module_mm is not None and module_mm / S < min_module_mm:
         largest = module_mm / min_module_mm
         why = (f" — the bed is too small: {choice.reason}" if choice is not None and choice.reason != "as requested"
                else "")
         raise InputError("--scale", f"1:{S:g}", f"the scaled module {module_mm / S:.3g} mm is below the printable "
-                         f"{min_module_mm:g} mm; print at 1:{largest:.3g} or larger (a larger printer){why}")
+                         f"{min_module_mm:g} mm; print at {works(largest)} or larger (a larger printer){why}")
     for name, t in (thinnest or {}).items():
         if t / S < min_feature_mm:
             raise InputError("--scale", f"1:{S:g}", f"{name} is {t / S:.3g} mm at this scale, below two line "
-                             f"widths ({min_feature_mm:g} mm); print larger or thicken it")
+                             f"widths ({min_feature_mm:g} mm); it prints at {works(t / min_feature_mm)} or larger (a "
+                             f"larger printer), or thicken it")

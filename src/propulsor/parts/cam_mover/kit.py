@@ -36,7 +36,7 @@ from ...printing.fits import Fit
 from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
 from ...printing.hardware import PRINTED_PIN_MIN_MM, dowel, mm, pin_diameter, side_pin
-from ...printing.scale import STANDARD_SCALES, check_printable, choose_scale
+from ...printing.scale import STANDARD_SCALES, check_printable, choose_scale, larger
 from .design import plan
 from .params import MIN_WEB_MM, CamMoverParams
 from .proofs import leg_poses, motion_proofs
@@ -139,7 +139,7 @@ def kit(p: CamMoverParams, printer: Printer, scale: float | None = None, source=
     r_print = q.roller_radius_mm - clear - under / 2 - DRAW_MARGIN_MM
     if r_print - q.roller_pin_mm / 2 - q.roller_bore_clearance_mm / 2 < printer.min_feature_mm:
         raise InputError("--scale", choice.label, f"the printed roller (radius {r_print:.2f} mm) keeps less than two "
-                         f"line widths round its ⌀{q.roller_pin_mm:.2f} mm pin; print larger")
+                         f"line widths round its ⌀{q.roller_pin_mm:.2f} mm pin; {larger(choice.S)}")
     roller_prof = co.roller_profile(r_print, q.roller_pin_mm + q.roller_bore_clearance_mm)
     pl = dataclasses.replace(pl, roller=roller_prof)
     z = pl.z
@@ -177,7 +177,7 @@ def kit(p: CamMoverParams, printer: Printer, scale: float | None = None, source=
     spacer_hole = axle_d + 2 * clear + under
     if spacer_D / 2 - spacer_hole / 2 < printer.min_feature_mm:
         raise InputError("--scale", choice.label, f"the spacer round the ⌀{axle_d:g} mm axle has no room on the cam "
-                         f"core (radius {core_r:.2f} mm); print larger")
+                         f"core (radius {core_r:.2f} mm); {larger(choice.S)}")
     spacer = extrude_profile(Profile(circle_loop(spacer_D / 2), [circle_loop(spacer_hole / 2, ccw=False)], "spacer"),
                              gap_c)
     handle = side_pin(HANDLE_D_MM, t + HANDLE_UP_MM)
@@ -240,6 +240,8 @@ def kit(p: CamMoverParams, printer: Printer, scale: float | None = None, source=
     hub = pr["hub"]
     return Kit(
         fits=fits,
+        hardware=[dowel(axle_d, axle_len, 1, "axle", "the axle"),
+                  dowel(HANDLE_D_MM, t + HANDLE_UP_MM, 1, "handle", "the crank handle")],
         step_parts=[["cam", "axle", "spacer"], [f"{what}_{k + 1}" for k in range(n) for what in ("leg", "roller", "shoe")],
                     ["carrier"], ["handle"], []],
         part="cam_mover", printer=printer, scale=choice, pieces=pieces, assembly=assembly, checks=checks,

@@ -21,7 +21,7 @@ from ...check import Check
 from ...geometry.profile import Arc, Line, Loop, Profile, circle_loop
 from ...params import load_params, params_to_dict
 from ...printing.fits import Fit
-from ...printing.hardware import side_pin
+from ...printing.hardware import dowel, side_pin
 from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
 from ...printing.scale import check_printable, choose_scale
@@ -144,6 +144,7 @@ def kit(p: FinalDriveParams, printer: Printer, scale: float | None = None, sourc
              Fit("crank_on_shaft", "shaft", "crank", (0.0, 0.0), "press", "the crank pressed on the shaft")]
     return Kit(
         fits=fits,
+        hardware=[dowel(shaft_d, shaft_len, 1, "shaft", "the sun's shaft")],
         step_parts=[["sun", "shaft"], ["ring"], [f"planet_{k + 1}" for k in range(q.n_planets)], ["carrier"], ["crank"],
                     []],
         part="planetary_final_drive", printer=printer, scale=choice, pieces=pieces, assembly=assembly, checks=checks,

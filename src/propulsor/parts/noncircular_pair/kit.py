@@ -22,7 +22,7 @@ from ...printing.fits import Fit
 from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
 from ...printing.hardware import PRINTED_PIN_MIN_MM, STANDARD_PIN_D, Hardware, dowel, mm, standard_at_most, side_pin
-from ...printing.scale import check_printable, choose_scale
+from ...printing.scale import check_printable, choose_scale, larger
 from .design import pair_design
 from .params import NoncircularPairParams
 from .proofs import checks_common, prove
@@ -126,14 +126,6 @@ def _documented_jam(source, prefix: str) -> list[str]:
     return [f"{prefix}.overlap_area", f"{prefix}.print_backlash_min"]
 
 
-def _larger(S: float) -> str:
-    """What would work when the driver is too small at 1:S: the next larger standard scale (a larger bed)."""
-    from ...printing.scale import STANDARD_SCALES
-
-    bigger = [T for T in STANDARD_SCALES if T < S]
-    return f"print at 1:{bigger[-1]:g} (a larger bed)" if bigger else "the driver needs a larger module"
-
-
 def _with_holes(profile: Profile, holes) -> Profile:
     return Profile(profile.outer, list(profile.holes) + list(holes), profile.name)
 
@@ -191,7 +183,7 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     if rig is None or rig[0] != pin[0]:
         raise InputError("--scale", choice.label, f"the driver (root radius {mm(d.driver.root_min_radius)} mm) has no "
                          f"room for a ⌀{HANDLE_STEEL_MIN_MM:g} mm handle beside a ⌀{PRINTED_PIN_MIN_MM:g} mm pin; "
-                         f"{_larger(S)}")
+                         f"{larger(S)}")
     handle_d, r_h = rig[1], rig[2]
     handle_printed = handle_d >= HANDLE_PRINTED_MIN_MM
     handle_hole = handle_d - 2 * press + under

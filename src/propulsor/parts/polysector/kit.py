@@ -28,10 +28,10 @@ from ...errors import InputError
 from ...geometry.profile import Arc, Line, Loop, Profile, circle_loop
 from ...params import load_params, params_to_dict
 from ...printing.fits import Fit
-from ...printing.hardware import side_pin
+from ...printing.hardware import dowel, side_pin
 from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
-from ...printing.scale import check_printable, choose_scale
+from ...printing.scale import check_printable, choose_scale, larger
 from ...printing.scale import fits as fits_bed
 from .params import PolysectorParams
 
@@ -134,7 +134,7 @@ def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, sourc
         room = min(room, float(np.min(np.hypot(*(hp - np.array(c_h)).T))))
     if room - HANDLE_D_MM / 2 < printer.min_feature_mm:
         raise InputError("--scale", choice.label, f"the hub disc has no room for the {HANDLE_D_MM:g} mm crank handle "
-                         f"({room:.2f} mm from its centre to the nearest edge); print larger")
+                         f"({room:.2f} mm from its centre to the nearest edge); {larger(choice.S)}")
     disc = Profile(disc.outer, list(disc.holes) + [circle_loop(handle_hole / 2, c_h, ccw=False)], "hub disc")
     ch = printer.chamfer_mm
     sector = extrude_profile(kd.sector, b)
@@ -206,6 +206,9 @@ def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, sourc
             Fit("handle_in_disc", "handle", "hub_disc", c_h, "press", "the handle pressed into the disc")]
     return Kit(
         fits=fits,
+        hardware=[dowel(pin[0], axle_len, 1, "axle_wheel", "the wheel's axle"),
+                  dowel(pin[1], axle_len, 1, "axle_gear", "the gear's axle"),
+                  dowel(HANDLE_D_MM, t + b + HANDLE_UP_MM, 1, "handle", "the crank handle")],
         step_parts=[["base", "axle_wheel", "axle_gear"],
                     ["hub_disc"] + [f"sector_{f}_{j + 1}" for f in range(1, q.flows + 1) for j in range(len(kd.sector_angles(f)))],
                     ["handle"], ["gear"], []],

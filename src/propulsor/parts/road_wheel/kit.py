@@ -12,10 +12,10 @@ from ...check import Check
 from ...errors import InputError
 from ...geometry.profile import Profile, circle_loop
 from ...printing.fits import Fit
-from ...printing.hardware import side_pin
+from ...printing.hardware import dowel, side_pin
 from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
-from ...printing.scale import check_printable, choose_scale
+from ...printing.scale import check_printable, choose_scale, larger
 from .design import design
 from .params import RoadWheelParams
 
@@ -47,7 +47,7 @@ def kit(p: RoadWheelParams, printer: Printer, scale: float | None = None, source
     r_hub = m.r_hub / S
     if r_hub - bore / 2 < printer.min_feature_mm:
         raise InputError("--scale", choice.label, f"the printed hub (radius {r_hub:.2f} mm) keeps less than two line "
-                         f"widths round its ⌀{bore:.2f} mm bore; print larger")
+                         f"widths round its ⌀{bore:.2f} mm bore; {larger(choice.S)}")
     slabs = wheel_slabs(m, S, bore)
     ch = printer.chamfer_mm
     # stand: base disc with a collar under the hub, the axle pressed into both
@@ -90,6 +90,7 @@ def kit(p: RoadWheelParams, printer: Printer, scale: float | None = None, source
     fits.append(Fit("axle_in_stand", "axle", "stand", (0.0, 0.0), "press", "the axle pressed into the stand"))
     return Kit(
         fits=fits,
+        hardware=[dowel(axle_d, axle_len, 1, "axle", "the axle")],
         step_parts=[[s.name for s in slabs], ["stand", "axle"], []],
         part="road_wheel", printer=printer, scale=choice, pieces=pieces, assembly=assembly, checks=checks,
         derived={"print_tyre_radius_mm": tyre_r, "print_wheel_length_mm": top, "axle_d_mm": axle_d,
