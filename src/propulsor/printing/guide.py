@@ -73,7 +73,7 @@ def write_guide(kit, w, plans, items, sliced: bool, title: str) -> None:
     if items:
         side = picture(w, "assembled_side", items, f"{kit.part}: side view", view=SIDE)
         span = max(float(m.bounds[1][2] - m.bounds[0][2]) for _, m, _ in items)
-        expl = picture(w, "exploded", exploded(items, 0.6 * span + 5.0), f"{kit.part}: exploded view")
+        expl = picture(w, "exploded", exploded(items, 1.0 * span + 5.0), f"{kit.part}: exploded view")
         lines += [f"![side view]({side})", "", f"![exploded view]({expl})", ""]
     pics = step_pictures(w, kit, items) if items else []
     for k, step in enumerate(kit.steps, 1):

@@ -54,14 +54,14 @@ def draw(ax, items, view=THREE_QUARTER, dim: set | None = None) -> None:
 
 
 def exploded(items, gap: float):
-    """The items moved apart along z in the order of their lowest point: each `gap` above the last."""
-    order = sorted(range(len(items)), key=lambda k: (items[k][1].bounds[0][2], k))
-    out = list(items)
-    for rank, k in enumerate(order):
-        label, mesh, colour = items[k]
+    """The items moved apart along z by their level (the height of their lowest point, to 0.1 mm): each
+    level `gap` above the one below; pieces on one level move together."""
+    levels = sorted({round(float(m.bounds[0][2]), 1) for _, m, _ in items})
+    out = []
+    for label, mesh, colour in items:
         m = mesh.copy()
-        m.apply_translation((0.0, 0.0, rank * gap))
-        out[k] = (label, m, colour)
+        m.apply_translation((0.0, 0.0, levels.index(round(float(mesh.bounds[0][2]), 1)) * gap))
+        out.append((label, m, colour))
     return out
 
 

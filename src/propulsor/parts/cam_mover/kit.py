@@ -184,8 +184,8 @@ def kit(p: CamMoverParams, printer: Printer, scale: float | None = None, source=
     leg_genus = 0
     pieces = [Piece("cam", cam, genus=1 + q.cam_bolt_count, what=f"fixed cam with its channel, the base"),
               Piece("carrier", carrier, genus=1 + q.carrier_bolt_count, what=f"carrier with {n} slides"),
-              Piece("leg", leg, count=n, genus=leg_genus, what=f"leg with its roller pin ⌀{q.roller_pin_mm:.2f}"),
-              Piece("roller", roller, count=n, genus=1, what=f"roller ⌀{2 * r_print:.2f}"),
+              Piece("leg", leg, count=n, genus=leg_genus, what=f"leg with its roller pin ⌀{q.roller_pin_mm:g}"),
+              Piece("roller", roller, count=n, genus=1, what=f"roller ⌀{2 * r_print:.1f}"),
               Piece("shoe", shoe, count=n, genus=0, what="support shoe"),
               Piece("axle", axle, genus=0, what=f"axle ⌀{axle_d:g}", chamfer_mm=0.0),
               Piece("spacer", spacer, genus=1, what=f"spacer ring, {gap_c:.2f} mm"),
