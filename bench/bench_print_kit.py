@@ -1,4 +1,4 @@
-"""Benchmark of the print kits (target: the seed-002 kit <= 30 s here), and every other part type's kit.
+"""Benchmark of the print kits (target: the seed-002 kit <= 30 s here, slicing excluded: --slice no), and every other part type's kit.
 
 Times `propulsor print` as a user runs it, in a fresh process (imports included), into a temporary
 folder, and splits the kit's own stages in a warm process: the printed pair's design and full-cycle
@@ -21,7 +21,7 @@ def cli_time(part: str) -> tuple[float, int]:
     with tempfile.TemporaryDirectory() as d:
         t0 = time.perf_counter()
         r = subprocess.run([sys.executable, "-m", "propulsor.cli", "print", str(ROOT / "parts" / f"{part}.toml"),
-                            "--out", str(Path(d) / "kit"), "-q"], cwd=ROOT)
+                            "--out", str(Path(d) / "kit"), "-q", "--slice", "no"], cwd=ROOT)
         return time.perf_counter() - t0, r.returncode
 
 

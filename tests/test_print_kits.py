@@ -23,7 +23,7 @@ def kits(tmp_path_factory):
     out = {}
     for name in ("ncg_seed002", "final_drive"):
         folder = tmp_path_factory.mktemp("kits") / f"{name}_kit"
-        rc = main(["print", str(ROOT / "parts" / f"{name}.toml"), "--out", str(folder), "-q"])
+        rc = main(["print", str(ROOT / "parts" / f"{name}.toml"), "--out", str(folder), "-q", "--slice", "no"])
         out[name] = (rc, folder)
     return out
 

@@ -24,7 +24,7 @@ def kits(tmp_path_factory):
     out = {}
     for name in NAMES:
         folder = tmp_path_factory.mktemp("kits") / f"{name}_kit"
-        rc = main(["print", str(ROOT / "parts" / f"{name}.toml"), "--out", str(folder), "-q"])
+        rc = main(["print", str(ROOT / "parts" / f"{name}.toml"), "--out", str(folder), "-q", "--slice", "no"])
         out[name] = (rc, folder, json.loads((folder / "manifest.json").read_text()) if rc == 0 else None)
     return out
 

@@ -51,3 +51,26 @@ def test_check_printable_default_least_feature_is_two_line_widths():
     check_printable(1.0, None, 1.0, thinnest={"tip land": 0.8})
     with pytest.raises(InputError, match=r"tip land is 0\.79 mm at this scale, below two line widths \(0\.8 mm\)"):
         check_printable(1.0, None, 1.0, thinnest={"tip land": 0.79})
+
+
+def test_the_automatic_scale_keeps_the_layout_s_margins():
+    # a ring 690.4 mm across: 172.6 mm at 1:4 fits a 180 mm bed, not the 170 mm within its 5 mm margins
+    ring = {"ring": (690.4, 690.4, 80.0)}
+    bed = (180.0, 180.0, 180.0)
+    assert choose_scale(ring, bed).S == 4.0
+    c = choose_scale(ring, bed, margin=5.0)
+    assert c.S == 5.0 and "at 1:4 it does not fit the 180 × 180 × 180 mm bed with 5 mm margins" in c.reason
+    with pytest.raises(InputError, match=r"with 5 mm margins; every piece fits at 1:5"):
+        choose_scale(ring, bed, requested=4.0, margin=5.0)
+
+
+def test_refusals_name_the_standard_scale_that_works():
+    from propulsor.printing.scale import larger
+
+    # module 2.2 mm, printable 1 mm: 1:2.2 is no standard scale, 1:2 is
+    with pytest.raises(InputError, match=r"print at 1:2 or larger"):
+        check_printable(3.0, 2.2, 1.0)
+    # a 2.2 mm web is 0.55 mm at 1:4; two line widths (0.8 mm) at 1:2.75, so 1:2.5
+    with pytest.raises(InputError, match=r"web is 0\.55 mm at this scale.*it prints at 1:2\.5 or larger"):
+        check_printable(4.0, None, 1.0, thinnest={"web": 2.2})
+    assert larger(2.5) == "print at 1:2 (a larger bed)" and larger(1.5) == "print at 1:1 (a larger bed)"

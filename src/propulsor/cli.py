@@ -95,6 +95,18 @@ def _scale_arg(text: str) -> float | None:
     return S
 
 
+def _slice_arg(text: str) -> bool:
+    """--slice auto|yes|no: whether the kit's plates are sliced (auto: when PrusaSlicer is installed)."""
+    from .printing.slicer import slicer_path
+
+    if text not in ("auto", "yes", "no"):
+        raise InputError("--slice", text, "must be auto, yes or no")
+    if text == "yes" and slicer_path() is None:
+        raise InputError("--slice", text, "prusa-slicer is not installed (Debian/Ubuntu: apt-get install prusa-slicer); "
+                         "--slice no estimates the filament instead")
+    return text == "yes" or (text == "auto" and slicer_path() is not None)
+
+
 def _settings(pairs) -> dict:
     """--set KEY=VALUE pairs as TOML values (numbers, booleans, strings)."""
     import tomllib
@@ -118,7 +130,7 @@ def cmd_print(args) -> int:
     """A print kit of a part file: pieces at print scale with the FDM allowances, a rig, plates."""
     from . import output_folder as of
     from .parts import get_kit
-    from .printing.printers import load_printer
+    from .printing.printers import is_profile_path, load_printer
     from .progress import Progress
 
     progress = Progress(enabled=not args.quiet, check=check_signalled)
@@ -126,11 +138,14 @@ def cmd_print(args) -> int:
     try:
         out = of.vet_target(of.out_arg(args.out) or Path("output") / f"{part_file.stem}_kit",
                             force=args.force, keep=(part_file,))
-        printer = load_printer(args.printer, _settings(args.set))
+        printer = load_printer(args.printer, _settings(args.set), bed=args.bed)
+        sliced = _slice_arg(args.slice)
         S = _scale_arg(args.scale)
         part_type, params, _ = load_part(part_file)
         make_kit = get_kit(part_type.name)
         keep = files_read(params, part_file)
+        if args.bed is None and is_profile_path(args.printer):
+            keep += (Path(args.printer),)  # the kit depends on the user's profile file too
         out = of.vet_target(out, force=args.force, keep=keep)
         vet_depfile(args.depfile, out, args.out or str(out), params, part_file)
     except InputError as exc:
@@ -146,7 +161,7 @@ def cmd_print(args) -> int:
         writer.report_name = "print_report.md"
         writer.title = f"Print kit: {writer.title}"
         try:
-            write_kit(kit, writer)
+            write_kit(kit, writer, sliced)
             return writer.finish(), f"{part_type.name} print kit"
         finally:
             writer.close()
@@ -196,6 +211,11 @@ def cmd_list(args) -> int:
         except InputError as exc:
             t = f"(invalid: {exc})"
         print(f"  {f.name:28s} {t}")
+    from .printing.printers import load_printer, printer_names
+
+    print("printer profiles (propulsor print --printer NAME, or the path of your own .toml, or --bed WxDxH):")
+    for name in printer_names():
+        print(f"  {name:28s} {load_printer(name).label}")
     return EXIT_OK
 
 
@@ -269,10 +289,16 @@ def build_parser() -> argparse.ArgumentParser:
     pr = sub.add_parser("print", help="a print kit: pieces at print scale with FDM allowances, a rig, plates")
     pr.add_argument("part_file")
     pr.add_argument("--out", help="kit folder (default output/<file name>_kit)")
-    pr.add_argument("--printer", default="generic", help="printer profile: generic, prusa_mk4, bambu_x1")
+    pr.add_argument("--printer", default="generic", help="a built-in printer profile (propulsor list names them) "
+                    "or the path of your own profile file (TOML: bed_x_mm, bed_y_mm, bed_z_mm, ...)")
+    pr.add_argument("--bed", help="a quick profile: the bed WIDTHxDEPTHxHEIGHT in mm (e.g. 180x180x180), the "
+                    "generic printer's other settings")
     pr.add_argument("--scale", default="auto", help="auto (largest standard scale that fits), S or 1:S")
     pr.add_argument("--set", action="append", metavar="KEY=VALUE", help="override a printer setting "
                     "(e.g. backlash_mm=0.35; see printing/printers.py)")
+    pr.add_argument("--slice", default="auto", help="auto (when PrusaSlicer is installed), yes or no: slice every "
+                    "plate with the printer's settings for the print time and filament (slow: tens of seconds a "
+                    "plate); no: estimate the filament")
     pr.add_argument("--force", action="store_true", help="replace an --out folder that propulsor did not write")
     pr.add_argument("--no-wait", action="store_true", help="exit 2 instead of waiting for the lock of --out")
     pr.add_argument("--keep-failed", action="store_true", help="keep the kit when a check fails")

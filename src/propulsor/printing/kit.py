@@ -34,7 +34,8 @@ class Piece:
     count: int = 1
     genus: int | None = None
     what: str = ""
-    #: bed-side chamfer (mm) of this piece; None: the printer's chamfer_mm
+    #: bed-side chamfer (mm) of this piece; None: the printer's chamfer_mm (0 for pins lying on their flat,
+    #: :func:`.hardware.side_pin`: their walls are round at the bed)
     chamfer_mm: float | None = None
 
 
@@ -77,6 +78,12 @@ class Kit:
     allowances: list[tuple[str, float, str]] = field(default_factory=list)  # (name, value mm, how applied)
     steps: list[str] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
+    #: the labels of `assembly` each step places (one list a step; the guide's step pictures)
+    step_parts: list = field(default_factory=list)
+    #: pins in their holes, measured on the pieces (:mod:`.fits`)
+    fits: list = field(default_factory=list)
+    #: bought parts: steel pins that may replace printed ones (instead_of: the piece), or that the kit needs
+    hardware: list = field(default_factory=list)
     #: checks of the kit that fail as the part file documents (its [meta] expected_failures, e.g. the
     #: papers' sector teeth that jam): reported as documented, like the part's own
     expected_failures: list[str] = field(default_factory=list)
@@ -186,14 +193,20 @@ def _printed_piece(solid, name: str, genus, chamfer: float, layer: float, forked
     return mesh, printed, mesh_checks(printed, name, expected_genus=genus)
 
 
-def write_kit(kit: Kit, w) -> None:
+def write_kit(kit: Kit, w, sliced: bool = False) -> None:
     """Pieces → STL + mesh checks; plates → 3MF + pictures; assembled picture; derived, checks and
     the report's text into the writer `w` (an OutputWriter whose report is print_report.md)."""
     from ..export.mesh import write_3mf_objects, write_stl
+    from .planning import TABLE_COLUMNS, PlatePlan, estimate_g, hours, slice_plates, table_rows
+    from .slicer import slicer_path
+
+    from .coupon import coupon_pieces
 
     p = kit.printer
     flat = {}  # one per printed copy: name, or name_k when more than one is printed
     piece_meshes = {}
+    coupon = coupon_pieces(p)
+    kit.pieces = [pc for pc in kit.pieces if not pc.name.startswith("coupon")] + coupon
     # every piece tessellated, laid flat, chamfered and checked in forked workers beside each other
     pool = fork_pool(2)
     jobs = []
@@ -212,31 +225,62 @@ def write_kit(kit: Kit, w) -> None:
     finally:
         if pool is not None:
             pool.shutdown(wait=True, cancel_futures=True)
-    plates = pack({n: tuple((m.bounds[1] - m.bounds[0])[:2]) for n, m in flat.items()}, p.bed_x_mm, p.bed_y_mm,
-                  p.piece_gap_mm)
+    from .fits import measure
+
+    w.add_checks([measure(f, piece_meshes, p) for f in kit.fits])
+    def feet(names):
+        return {n: tuple((flat[n].bounds[1] - flat[n].bounds[0])[:2]) for n in names}
+
+    first = [pc.name for pc in coupon]  # the coupon prints first, on a plate of its own
+    plates = pack(feet(first), p.bed_x_mm, p.bed_y_mm, p.piece_gap_mm, p.margin_mm)
+    plates += pack(feet([n for n in flat if n not in first]), p.bed_x_mm, p.bed_y_mm, p.piece_gap_mm, p.margin_mm)
     w.add_checks(plate_checks(kit, plates, flat))
-    rows = []
+    plans, paths = [], []
     for k, plate in enumerate(plates, 1):
         objects = [(pl.name, placed(flat[pl.name], pl)) for pl in plate.placements]
         write_3mf_objects(objects, w.path(f"plate_{k}.3mf"))
+        paths.append(w.path(f"plate_{k}.3mf"))
         _plate_picture(w, f"plate_{k}", objects, p)
         vol = sum(float(m.volume) for _, m in objects)
-        rows.append((k, len(objects), vol / 1000.0, vol / 1000.0 * p.density_g_cm3,
-                     ", ".join(n for n, _ in objects)))
-    w.add_table("plates", ["plate", "pieces", "volume_cm3", "mass_g", "names"], rows)
+        plans.append(PlatePlan(k, len(objects), vol / 1000.0, estimate_g([m for _, m in objects], p),
+                               ", ".join(n for n, _ in objects)))
+    if sliced:
+        w.add_checks(slice_plates(plans, paths, p, w.progress))
+    w.add_table("plates", TABLE_COLUMNS, table_rows(plans))
     if kit.assembly:
         _assembly_picture(w, kit, piece_meshes)
-    w.derived.update({"scale_S": kit.scale.S, "plates": len(plates), "pieces": len(flat),
-                      "filament_volume_cm3": sum(r[2] for r in rows), "filament_mass_g": sum(r[3] for r in rows)})
+    from .guide import write_guide
+
+    write_guide(kit, w, plans, assembled_meshes(kit, piece_meshes) if kit.assembly else [], sliced, w.title)
+    w.derived.update({"printer": p.name, "bed_mm": list(p.bed), "scale_S": kit.scale.S, "plates": len(plates),
+                      "pieces": len(flat), "pieces_volume_cm3": sum(q.volume_cm3 for q in plans),
+                      "filament_estimate_g": sum(q.estimate_g for q in plans), "infill_percent": p.infill_percent})
+    if sliced and all(q.time_s is not None for q in plans):
+        w.derived.update({"print_time_s": sum(q.time_s for q in plans),
+                          "filament_sliced_g": sum(q.filament_g for q in plans)})
     w.derived.update(kit.derived)
     w.expected_failures |= set(kit.expected_failures)
     w.add_checks(kit.checks)
-    w.add_note(f"Scale {kit.scale.label} on the {p.title or p.name} "
-               f"({p.bed_x_mm:g} × {p.bed_y_mm:g} × {p.bed_z_mm:g} mm): {kit.scale.reason}.")
+    w.add_note("The maker's guide — what to print, with what, how long, the hardware, the clearance coupon and the "
+               "assembly with pictures — is [print_guide.md](print_guide.md).")
+    w.add_note(f"Printer: {p.label}, {p.margin_mm:g} mm margins along the bed's edges.")
+    w.add_note(f"Scale {kit.scale.label}: {kit.scale.reason}.")
     w.add_note("FDM allowances applied to the printed geometry: " + "; ".join(
         f"{name} {value:g} mm ({how})" for name, value, how in kit.allowances) + ".")
-    w.add_note("Plates: " + "; ".join(f"plate {r[0]}: {r[1]} pieces, {r[2]:.1f} cm³, {r[3]:.0f} g of filament "
-                                       f"({p.density_g_cm3:g} g/cm³): {r[4]}" for r in rows) + ".")
+    w.add_note(f"Print settings: {p.settings_text}.")
+    if sliced:
+        w.add_note("Plates, sliced by PrusaSlicer with these settings: " + "; ".join(
+            f"plate {q.plate}: {q.pieces} pieces, {hours(q.time_s)}, {q.filament_g or 0:.0f} g ({q.filament_m or 0:.1f} m)"
+            f" of filament: {q.names}" for q in plans) + ".")
+    else:
+        w.add_note("Plates (not sliced: " + ("PrusaSlicer is not installed" if slicer_path() is None else
+                                             "--slice no") + f"; filament estimated at {p.infill_percent:g} % infill "
+                   f"and {p.perimeters} perimeters, {p.density_g_cm3:g} g/cm³): " + "; ".join(
+                       f"plate {q.plate}: {q.pieces} pieces, about {q.estimate_g:.0f} g: {q.names}" for q in plans) + ".")
+    if kit.hardware:
+        w.add_note("Hardware a maker may use instead of printed pins (the holes fit either): " + "; ".join(
+            f"{h.count} × {h.what}" + (f" (instead of the printed {h.instead_of})" if h.instead_of else "")
+            for h in kit.hardware) + ".")
     if kit.steps:
         w.add_note("Assembly, in order: " + " ".join(f"({k}) {s}" for k, s in enumerate(kit.steps, 1)))
     for n in kit.notes:

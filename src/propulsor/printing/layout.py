@@ -64,10 +64,12 @@ class Plate:
     placements: list[Placement] = field(default_factory=list)
 
 
-def pack(footprints: dict[str, tuple[float, float]], bed_x: float, bed_y: float, gap: float) -> list[Plate]:
+def pack(footprints: dict[str, tuple[float, float]], bed_x: float, bed_y: float, gap: float,
+         margin: float | None = None) -> list[Plate]:
     """Shelf packing of rectangular footprints {name: (x, y)} on beds of bed_x × bed_y with `gap`
-    between pieces and to the bed's edge.  Deterministic (ties broken by name)."""
-    usable_x, usable_y = bed_x - 2 * gap, bed_y - 2 * gap
+    between pieces and `margin` (None: the gap) to the bed's edge.  Deterministic (ties broken by name)."""
+    margin = gap if margin is None else margin
+    usable_x, usable_y = bed_x - 2 * margin, bed_y - 2 * margin
     items = []
     for name, (w, d) in footprints.items():
         if w <= usable_x and d <= usable_y:
@@ -77,7 +79,7 @@ def pack(footprints: dict[str, tuple[float, float]], bed_x: float, bed_y: float,
             turned = True
         else:
             raise InputError("piece", name, f"{w:.1f} × {d:.1f} mm does not fit the {bed_x:g} × {bed_y:g} mm bed "
-                             f"with {gap:g} mm margins")
+                             f"with {margin:g} mm margins")
         items.append((name, (d, w) if turned else (w, d), turned))
     items.sort(key=lambda it: (-it[1][1], -it[1][0], it[0]))
     plates: list[Plate] = []
@@ -89,7 +91,7 @@ def pack(footprints: dict[str, tuple[float, float]], bed_x: float, bed_y: float,
             plate = Plate()
             plates.append(plate)
             x, y, shelf_d = 0.0, 0.0, 0.0
-        plate.placements.append(Placement(name, gap + x, gap + y, turned))
+        plate.placements.append(Placement(name, margin + x, margin + y, turned))
         x += w + gap
         shelf_d = max(shelf_d, d)
     return plates

@@ -1,15 +1,20 @@
 """Printer profiles for print kits: bed, nozzle, layer and the FDM allowances, as data.
 
-Profiles live as TOML files in ``printers/`` beside this module (``generic``, ``prusa_mk4``,
-``bambu_x1``); every allowance has a default from common desktop-FDM practice (0.4 mm nozzle,
-0.2 mm layers) and may be overridden by name.  The values are validated like part parameters.
+Built-in profiles live as TOML files in ``printers/`` beside this module (``propulsor print --printer
+NAME``); a user's own printer is a TOML file of the same keys (``--printer my_printer.toml``: its
+bed_x_mm, bed_y_mm and bed_z_mm are required), or a bed alone (``--bed 180x180x180``).  Every
+allowance has a default from common desktop-FDM practice (0.4 mm nozzle, 0.2 mm layers) and may be
+overridden by name.  The values are validated like part parameters.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import os
+import re
 from dataclasses import dataclass
 from importlib import resources
+from pathlib import Path
 
 from ..errors import InputError
 from ..params import load_params, param
@@ -27,6 +32,10 @@ class Printer:
     bed_x_mm: float = param(220.0, "mm", "bed width (x)", min=50.0, max=1000.0, why=_WHY_BED)
     bed_y_mm: float = param(220.0, "mm", "bed depth (y)", min=50.0, max=1000.0, why=_WHY_BED)
     bed_z_mm: float = param(250.0, "mm", "largest print height (z)", min=50.0, max=1000.0, why=_WHY_BED)
+    shape: str = param("rectangle", "", "bed outline (a rectangle bed_x_mm × bed_y_mm from the origin)",
+                       choices=("rectangle",))
+    margin_mm: float = param(5.0, "mm", "keep-out along the bed's edges (clips, purge line)", min=0.0, max=50.0,
+                             why="a tenth of the smallest bed")
     nozzle_mm: float = param(0.4, "mm", "nozzle diameter", min=0.1, max=1.2, why="the largest common nozzles")
     layer_mm: float = param(0.2, "mm", "layer height", min=0.05, max=0.8, why="at most 2/3 of the largest nozzle")
     line_width_mm: float = param(0.0, "mm", "extrusion width (0: the nozzle diameter)", min=0.0, max=2.0,
@@ -47,6 +56,18 @@ class Printer:
                                 why="a tenth of the smallest bed")
     density_g_cm3: float = param(1.24, "g/cm^3", "filament density (PLA: 1.24)", min=0.5, max=3.0,
                                  why="past any filament")
+    # --- print settings: the kit's time and filament are for these (sliced, or estimated without a slicer)
+    material: str = param("PLA", "", "filament", choices=("PLA", "PETG", "ABS", "ASA"))
+    filament_d_mm: float = param(1.75, "mm", "filament diameter", choices=(1.75, 2.85))
+    perimeters: int = param(3, "", "perimeters (walls) round every layer: pins and bosses are mostly wall",
+                            min=1, max=10, why="a 4 mm pin is all wall at 3")
+    infill_percent: float = param(15.0, "%", "infill density", min=0.0, max=100.0, why="solid")
+    top_layers: int = param(5, "", "solid top layers", min=0, max=30, why="6 mm of 0.2 mm layers")
+    bottom_layers: int = param(4, "", "solid bottom layers", min=0, max=30, why="6 mm of 0.2 mm layers")
+    nozzle_temp_c: float = param(210.0, "°C", "nozzle temperature (PLA 200 ... 220)", min=150.0, max=320.0,
+                                 why="the hottest common hot ends")
+    bed_temp_c: float = param(60.0, "°C", "bed temperature (PLA 55 ... 65)", min=0.0, max=130.0,
+                              why="the hottest common beds")
 
     @property
     def line_width(self) -> float:
@@ -57,10 +78,43 @@ class Printer:
         """Least wall, tip land or web: two line widths."""
         return 2.0 * self.line_width
 
+    @property
+    def bed(self) -> tuple[float, float, float]:
+        return (self.bed_x_mm, self.bed_y_mm, self.bed_z_mm)
+
+    @property
+    def label(self) -> str:
+        """The printer as the report names it."""
+        return f"{self.title or self.name} ({self.bed_x_mm:g} × {self.bed_y_mm:g} × {self.bed_z_mm:g} mm)"
+
+    @property
+    def settings_text(self) -> str:
+        """The print settings as a maker sets them in the slicer."""
+        return (f"{self.material} {self.filament_d_mm:g} mm, nozzle {self.nozzle_mm:g} mm at {self.nozzle_temp_c:g} °C, "
+                f"bed {self.bed_temp_c:g} °C, layer {self.layer_mm:g} mm, {self.perimeters} perimeters, "
+                f"{self.top_layers} top / {self.bottom_layers} bottom layers, {self.infill_percent:g} % infill, "
+                f"no supports")
+
+    def slicer_args(self) -> list[str]:
+        """PrusaSlicer's command-line options for these settings (bed, nozzle, layers, walls, infill,
+        filament, temperatures)."""
+        return ["--bed-shape", self.bed_shape(), "--max-print-height", f"{self.bed_z_mm:g}",
+                "--nozzle-diameter", f"{self.nozzle_mm:g}", "--layer-height", f"{self.layer_mm:g}",
+                "--perimeters", str(self.perimeters), "--fill-density", f"{self.infill_percent:g}%",
+                "--top-solid-layers", str(self.top_layers), "--bottom-solid-layers", str(self.bottom_layers),
+                "--filament-type", self.material, "--filament-diameter", f"{self.filament_d_mm:g}",
+                "--filament-density", f"{self.density_g_cm3:g}", "--temperature", f"{self.nozzle_temp_c:g}",
+                "--first-layer-temperature", f"{self.nozzle_temp_c + 5:g}", "--bed-temperature",
+                f"{self.bed_temp_c:g}", "--first-layer-bed-temperature", f"{self.bed_temp_c:g}"]
+
     def bed_shape(self) -> str:
         """The bed as PrusaSlicer's --bed-shape: corners x,y in mm."""
         x, y = self.bed_x_mm, self.bed_y_mm
         return f"0x0,{x:g}x0,{x:g}x{y:g},0x{y:g}"
+
+
+#: keys a user's profile file must give (a bed of unknown size is no printer)
+REQUIRED_IN_FILE = ("bed_x_mm", "bed_y_mm", "bed_z_mm")
 
 
 def printer_names() -> list[str]:
@@ -68,14 +122,63 @@ def printer_names() -> list[str]:
     return sorted(p.name[:-5] for p in folder.iterdir() if p.name.endswith(".toml"))
 
 
-def load_printer(name: str, overrides: dict | None = None) -> Printer:
-    """The profile called `name` with `overrides` (validated; InputError naming the key)."""
+def is_profile_path(name: str) -> bool:
+    """`--printer` names a file (a path or a .toml name), not a built-in profile."""
+    return name.endswith(".toml") or os.sep in name or "/" in name
+
+
+def _read_profile_file(path: str) -> dict:
+    """The TOML table of a user's profile file (InputError on --printer naming why not)."""
+    from ..params import read_part_toml
+
+    if not os.path.lexists(path):
+        raise InputError("--printer", path, "no such profile file (a built-in name, or the path of your profile)")
+    try:
+        data = read_part_toml(path)
+    except InputError as exc:
+        raise InputError("--printer", path, exc.limit.replace("a part file is", "a printer profile is")) from None
+    missing = [k for k in REQUIRED_IN_FILE if k not in data]
+    if missing:
+        raise InputError(f"printer.{missing[0]}", "missing", f"a printer profile gives its bed size in mm "
+                         f"({', '.join(REQUIRED_IN_FILE)}) in {path}")
+    data.setdefault("name", Path(path).stem)
+    data.setdefault("title", f"{data['name']} (profile {Path(path).name})")
+    return data
+
+
+def parse_bed(text: str) -> dict:
+    """'180x180x180' (or 180×180×180, 180x180 with the height = the width): the bed keys of a quick
+    profile; InputError naming --bed otherwise."""
+    parts = re.split(r"\s*[x×X*]\s*", text.strip())
+    try:
+        vals = [float(v) for v in parts]
+    except ValueError:
+        vals = []
+    if len(vals) not in (2, 3) or not all(v == v for v in vals):
+        raise InputError("--bed", text, "must be WIDTHxDEPTHxHEIGHT in mm, e.g. 180x180x180")
+    if len(vals) == 2:
+        vals.append(min(vals))
+    x, y, z = vals
+    return {"name": f"bed_{x:g}x{y:g}x{z:g}", "title": f"your printer (--bed {x:g}x{y:g}x{z:g}), 0.4 mm nozzle",
+            "bed_x_mm": x, "bed_y_mm": y, "bed_z_mm": z}
+
+
+def load_printer(name: str, overrides: dict | None = None, bed: str | None = None) -> Printer:
+    """The profile `name` (a built-in name or a profile file's path) with `overrides` (validated;
+    InputError naming the key); `bed`: a quick profile from --bed WxDxH instead."""
     import tomllib
 
-    if name not in printer_names():
-        raise InputError("--printer", name, f"unknown printer (known: {', '.join(printer_names())})")
-    text = resources.files(__package__).joinpath("printers").joinpath(f"{name}.toml").read_text(encoding="utf-8")
-    data = tomllib.loads(text)
+    if bed is not None:
+        data = parse_bed(bed)
+    elif is_profile_path(name):
+        data = _read_profile_file(name)
+    elif name not in printer_names():
+        raise InputError("--printer", name, f"unknown printer (built in: {', '.join(printer_names())}; or the path "
+                         f"of your own profile, e.g. my_printer.toml with bed_x_mm, bed_y_mm, bed_z_mm; or --bed "
+                         f"180x180x180)")
+    else:
+        text = resources.files(__package__).joinpath("printers").joinpath(f"{name}.toml").read_text(encoding="utf-8")
+        data = tomllib.loads(text)
     for key, value in (overrides or {}).items():
         if key in ("name", "title"):
             raise InputError(f"print.{key}", value, "is the profile's own; choose another --printer")
@@ -85,4 +188,20 @@ def load_printer(name: str, overrides: dict | None = None) -> Printer:
     if unknown:
         raise InputError(f"print.{unknown[0]}", data[unknown[0]], f"unknown printer setting (known: "
                          f"{', '.join(sorted(known - {'name', 'title'}))})")
-    return load_params(Printer, data)
+    for key in ("bed_x_mm", "bed_y_mm", "bed_z_mm", "margin_mm"):
+        if key in data:
+            _named(key, data[key])
+    try:
+        return load_params(Printer, data)
+    except InputError as exc:
+        if exc.parameter in known:
+            raise InputError(f"printer.{exc.parameter}", exc.value, exc.limit, exc.hint) from None
+        raise
+
+
+def _named(key: str, value) -> None:
+    """A bed size that is not a positive number: InputError naming the key before the limits do."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise InputError(f"printer.{key}", value, "must be a number of mm")
+    if not value > 0 and key.startswith("bed_"):
+        raise InputError(f"printer.{key}", value, "must be a positive size in mm")

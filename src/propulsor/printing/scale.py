@@ -1,8 +1,8 @@
 """The scale of a print kit: the largest standard scale at which every piece fits the bed.
 
 Scales are reductions 1:S with S from the model-making series below.  A piece fits when its
-laid-flat extents (x, y, z), divided by S, fit the bed in x and y (either way round) and the
-printable height in z.  The kit then refuses scales that make teeth or walls unprintable
+laid-flat extents (x, y, z), divided by S, fit the bed less its edge margins in x and y (either way
+round: the margins are those the plates are laid out with) and the printable height in z.  The kit then refuses scales that make teeth or walls unprintable
 (:func:`check_printable`).
 """
 
@@ -35,22 +35,38 @@ def fits(extents, bed) -> bool:
     return z <= bz and ((x <= bx and y <= by) or (y <= bx and x <= by))
 
 
+def _bed_text(bed, margin: float) -> str:
+    text = f"{bed[0]:g} × {bed[1]:g} × {bed[2]:g} mm bed"
+    return text + (f" with {margin:g} mm margins" if margin else "")
+
+
+def smallest_fitting(extents, bed, margin: float = 0.0) -> float | None:
+    """The smallest standard reduction S at which one piece's extents fit (None: none does)."""
+    usable = (bed[0] - 2 * margin, bed[1] - 2 * margin, bed[2])
+    return next((S for S in STANDARD_SCALES if fits([v / S for v in extents], usable)), None)
+
+
 def choose_scale(pieces: dict[str, tuple[float, float, float]], bed: tuple[float, float, float],
-                 requested: float | None = None) -> ScaleChoice:
-    """The scale for `pieces` {name: laid-flat extents in mm at full size} on `bed` (mm).
+                 requested: float | None = None, margin: float = 0.0) -> ScaleChoice:
+    """The scale for `pieces` {name: laid-flat extents in mm at full size} on `bed` (mm) less `margin`
+    along each edge (the plates' edge margin).
 
     `requested`: a reduction S given by the user (checked to fit); None: the largest standard
     scale (smallest S) at which every piece fits, with the piece that decided it named."""
+    usable = (bed[0] - 2 * margin, bed[1] - 2 * margin, bed[2])
+    where = _bed_text(bed, margin)
+
     def too_big(S):
-        return [n for n, e in pieces.items() if not fits([v / S for v in e], bed)]
+        return [n for n, e in pieces.items() if not fits([v / S for v in e], usable)]
 
     if requested is not None:
         bad = too_big(requested)
         if bad:
             e = pieces[bad[0]]
+            works = max(smallest_fitting(e, bed, margin) or STANDARD_SCALES[-1] for e in pieces.values())
             raise InputError("--scale", f"1:{requested:g}", f"{bad[0]} ({e[0] / requested:.1f} × "
-                             f"{e[1] / requested:.1f} × {e[2] / requested:.1f} mm) does not fit the "
-                             f"{bed[0]:g} × {bed[1]:g} × {bed[2]:g} mm bed")
+                             f"{e[1] / requested:.1f} × {e[2] / requested:.1f} mm) does not fit the {where}; "
+                             f"every piece fits at 1:{works:g}")
         return ScaleChoice(requested, "as requested")
     for S in STANDARD_SCALES:
         if not too_big(S):
@@ -61,10 +77,16 @@ def choose_scale(pieces: dict[str, tuple[float, float, float]], bed: tuple[float
             name = too_big(prev)[0]
             e = pieces[name]
             return ScaleChoice(S, f"{name} is {e[0]:.1f} × {e[1]:.1f} × {e[2]:.1f} mm; at 1:{prev:g} it does "
-                                  f"not fit the {bed[0]:g} × {bed[1]:g} × {bed[2]:g} mm bed, at 1:{S:g} it does")
+                                  f"not fit the {where}, at 1:{S:g} it does")
     name = too_big(STANDARD_SCALES[-1])[0]
     raise InputError("--scale", "auto", f"{name} does not fit the bed even at 1:{STANDARD_SCALES[-1]:g}; "
                      "choose a larger printer")
+
+
+def larger(S: float) -> str:
+    """What works when a piece is too small at 1:S: the next larger standard scale, on a larger bed."""
+    bigger = [T for T in STANDARD_SCALES if T < S]
+    return f"print at 1:{bigger[-1]:g} (a larger bed)" if bigger else "it is too small even at full size"
 
 
 def check_printable(S: float, module_mm: float | None, min_module_mm: float,
@@ -74,13 +96,19 @@ def check_printable(S: float, module_mm: float | None, min_module_mm: float,
 
     `thinnest`: {feature name: its full-size thickness in mm} (tip lands, webs, walls); `choice`:
     the automatic choice of S, named in the message (the bed is then what is too small)."""
+    def works(limit: float) -> str:
+        """The smallest standard reduction at most `limit` (the scale that prints it)."""
+        ok = [T for T in STANDARD_SCALES if T <= limit + 1e-9]
+        return f"1:{ok[-1]:g}" if ok else "full size"
+
     if module_mm is not None and module_mm / S < min_module_mm:
         largest = module_mm / min_module_mm
         why = (f" — the bed is too small: {choice.reason}" if choice is not None and choice.reason != "as requested"
                else "")
         raise InputError("--scale", f"1:{S:g}", f"the scaled module {module_mm / S:.3g} mm is below the printable "
-                         f"{min_module_mm:g} mm; print at 1:{largest:.3g} or larger (a larger printer){why}")
+                         f"{min_module_mm:g} mm; print at {works(largest)} or larger (a larger printer){why}")
     for name, t in (thinnest or {}).items():
         if t / S < min_feature_mm:
             raise InputError("--scale", f"1:{S:g}", f"{name} is {t / S:.3g} mm at this scale, below two line "
-                             f"widths ({min_feature_mm:g} mm); print larger or thicken it")
+                             f"widths ({min_feature_mm:g} mm); it prints at {works(t / min_feature_mm)} or larger (a "
+                             f"larger printer), or thicken it")

@@ -32,19 +32,19 @@ from ...errors import InputError
 from ...geometry import cam_outlines as co
 from ...geometry.profile import Profile, circle_loop
 from ...params import load_params, params_to_dict
+from ...printing.fits import Fit
 from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
-from ...printing.scale import check_printable, choose_scale
+from ...printing.hardware import PRINTED_PIN_MIN_MM, dowel, mm, pin_diameter, side_pin
+from ...printing.scale import STANDARD_SCALES, check_printable, choose_scale, larger
 from .design import plan
-from .params import CamMoverParams
+from .params import MIN_WEB_MM, CamMoverParams
 from .proofs import leg_poses, motion_proofs
 
 __all__ = ["kit", "print_params"]
 
 #: printed axle diameter range, handle diameter and height above the carrier, axle stick-out (mm)
 AXLE_D_MIN_MM, AXLE_D_MAX_MM, HANDLE_D_MM, HANDLE_UP_MM, AXLE_TOP_MM = 5.0, 12.0, 6.0, 15.0, 2.0
-#: least printed roller pin (mm): a thinner one breaks off the leg
-PIN_D_MIN_MM = 4.0
 #: least thickness of the printed spacer between cam and carrier (mm): five 0.2 mm layers
 SPACER_T_MIN_MM = 1.0
 #: added to every drawn running clearance (mm): the sweep measures on polylines within the motion chord
@@ -67,6 +67,28 @@ def _full_size_extents(pl) -> dict:
             "leg": (p.leg_width_mm, leg_len, p.carrier_thickness_mm + z["pin"][1] - z["pin"][0])}
 
 
+def _pin_room(p: CamMoverParams, S: float, printer: Printer) -> float:
+    """Room for the roller pin at 1:S: the leg's width less its webs, the roller's less its wall and bore."""
+    bore_clear = 2 * printer.running_clearance_mm + printer.hole_undersize_mm
+    return min(p.leg_width_mm / S - 2 * MIN_WEB_MM, 2 * p.roller_radius_mm / S - bore_clear - 2 * MIN_WEB_MM)
+
+
+def roller_pin(p: CamMoverParams, S: float, printer: Printer, choice=None) -> float:
+    """The printed roller pin at 1:S: the full-size pin ÷ S as a standard diameter within the leg's and
+    the roller's room, at least the printable least; InputError saying at which scale it fits."""
+    room = _pin_room(p, S, printer)
+    d = pin_diameter(p.roller_pin_mm / S, room)
+    if d is None:
+        ok = [T for T in STANDARD_SCALES if T < S and _pin_room(p, T, printer) >= PRINTED_PIN_MIN_MM]
+        cam_d = 2.0 * (p.R0_mm + 2 * p.roller_radius_mm)
+        hint = (f"; it fits at 1:{ok[-1]:g} (a bed of about {mm(cam_d / ok[-1] + 2 * printer.margin_mm)} mm for the "
+                f"cam)" if ok else "")
+        raise InputError("--scale", f"1:{S:g}", f"the leg ({mm(p.leg_width_mm / S)} mm wide) has room for a "
+                         f"⌀{mm(max(room, 0.0))} mm roller pin, below the printable ⌀{PRINTED_PIN_MIN_MM:g} mm "
+                         f"(a web of {MIN_WEB_MM:g} mm each side){hint}")
+    return d
+
+
 def print_params(p: CamMoverParams, pl, S: float, printer: Printer) -> CamMoverParams:
     """The part's parameters at print scale 1:S with the law of `pl` and the printer's allowances."""
     clear, under = printer.running_clearance_mm, printer.hole_undersize_mm
@@ -84,7 +106,7 @@ def print_params(p: CamMoverParams, pl, S: float, printer: Printer) -> CamMoverP
                   groove_axial_gap_mm=max(p.groove_axial_gap_mm / S, clear),
                   carrier_axial_gap_mm=max(p.carrier_axial_gap_mm / S, SPACER_T_MIN_MM),
                   socket_clearance_mm=max(under / 2 - printer.press_fit_mm, 0.0),
-                  roller_pin_mm=max(p.roller_pin_mm / S, PIN_D_MIN_MM),
+                  roller_pin_mm=roller_pin(p, S, printer),
                   axle_diameter_mm=min(AXLE_D_MAX_MM, max(AXLE_D_MIN_MM, p.axle_diameter_mm / S)),
                   # the handle is pressed into the first sprocket hole, the others stay as drawn
                   carrier_bolt_hole_mm=HANDLE_D_MM - 2 * printer.press_fit_mm + under,
@@ -101,12 +123,13 @@ def kit(p: CamMoverParams, printer: Printer, scale: float | None = None, source=
     from ...solids.printed import flipped
 
     full = plan(p)
-    choice = choose_scale(_full_size_extents(full), (printer.bed_x_mm, printer.bed_y_mm, printer.bed_z_mm), scale)
+    choice = choose_scale(_full_size_extents(full), printer.bed, scale, margin=printer.margin_mm)
     S = choice.S
     clear, under, press = printer.running_clearance_mm, printer.hole_undersize_mm, printer.press_fit_mm
     check_printable(S, None, printer.min_module_mm, choice=choice, min_feature_mm=printer.min_feature_mm,
                     thinnest={"the shoe rim": p.shoe_rim_mm, "the cam rim": p.cam_rim_mm,
                               "the roller's wall round its pin": p.roller_radius_mm - p.roller_pin_mm / 2})
+    roller_pin(p, S, printer, choice)  # refused with the scale that works
     try:
         q = print_params(p, full, S, printer)
         pl = plan(q)
@@ -116,7 +139,7 @@ def kit(p: CamMoverParams, printer: Printer, scale: float | None = None, source=
     r_print = q.roller_radius_mm - clear - under / 2 - DRAW_MARGIN_MM
     if r_print - q.roller_pin_mm / 2 - q.roller_bore_clearance_mm / 2 < printer.min_feature_mm:
         raise InputError("--scale", choice.label, f"the printed roller (radius {r_print:.2f} mm) keeps less than two "
-                         f"line widths round its ⌀{q.roller_pin_mm:.2f} mm pin; print larger")
+                         f"line widths round its ⌀{q.roller_pin_mm:.2f} mm pin; {larger(choice.S)}")
     roller_prof = co.roller_profile(r_print, q.roller_pin_mm + q.roller_bore_clearance_mm)
     pl = dataclasses.replace(pl, roller=roller_prof)
     z = pl.z
@@ -148,25 +171,25 @@ def kit(p: CamMoverParams, printer: Printer, scale: float | None = None, source=
     shoe = flipped(shoe_up, ws)
     gap_c = q.carrier_axial_gap_mm
     axle_len = tp + dg + gap_c + t + AXLE_TOP_MM
-    axle = cylinder(axle_d / 2, 0.0, axle_len)
+    axle = side_pin(axle_d, axle_len)
     core_r = pl.H_min - q.roller_radius_mm
     spacer_D = min(2 * (core_r - 1.0), pl.carrier.slot_bottom * 2 - 2.0, axle_d + 12.0)
     spacer_hole = axle_d + 2 * clear + under
     if spacer_D / 2 - spacer_hole / 2 < printer.min_feature_mm:
         raise InputError("--scale", choice.label, f"the spacer round the ⌀{axle_d:g} mm axle has no room on the cam "
-                         f"core (radius {core_r:.2f} mm); print larger")
+                         f"core (radius {core_r:.2f} mm); {larger(choice.S)}")
     spacer = extrude_profile(Profile(circle_loop(spacer_D / 2), [circle_loop(spacer_hole / 2, ccw=False)], "spacer"),
                              gap_c)
-    handle = cylinder(HANDLE_D_MM / 2, 0.0, t + HANDLE_UP_MM)
+    handle = side_pin(HANDLE_D_MM, t + HANDLE_UP_MM)
     leg_genus = 0
     pieces = [Piece("cam", cam, genus=1 + q.cam_bolt_count, what=f"fixed cam with its channel, the base"),
               Piece("carrier", carrier, genus=1 + q.carrier_bolt_count, what=f"carrier with {n} slides"),
-              Piece("leg", leg, count=n, genus=leg_genus, what=f"leg with its roller pin ⌀{q.roller_pin_mm:.2f}"),
-              Piece("roller", roller, count=n, genus=1, what=f"roller ⌀{2 * r_print:.2f}"),
+              Piece("leg", leg, count=n, genus=leg_genus, what=f"leg with its roller pin ⌀{q.roller_pin_mm:g}"),
+              Piece("roller", roller, count=n, genus=1, what=f"roller ⌀{2 * r_print:.1f}"),
               Piece("shoe", shoe, count=n, genus=0, what="support shoe"),
-              Piece("axle", axle, genus=0, what=f"axle ⌀{axle_d:g}"),
+              Piece("axle", axle, genus=0, what=f"axle ⌀{axle_d:g}", chamfer_mm=0.0),
               Piece("spacer", spacer, genus=1, what=f"spacer ring, {gap_c:.2f} mm"),
-              Piece("handle", handle, genus=0, what=f"crank handle ⌀{HANDLE_D_MM:g}")]
+              Piece("handle", handle, genus=0, what=f"crank handle ⌀{HANDLE_D_MM:g}", chamfer_mm=0.0)]
     # --- the model assembled at the carrier angle of the part file
     phi0 = math.radians(q.assembly_angle_deg)
     zc = z["carrier"][0]
@@ -203,19 +226,24 @@ def kit(p: CamMoverParams, printer: Printer, scale: float | None = None, source=
                                      f"{what}: least clearance over the turn {res.min_clearance:.4f} mm"
                                      + (f" − {shrink:g} mm (the inner feature prints narrower)" if shrink else "")))
     checks += [
-        Check.at_least("fit.roller_on_pin", q.roller_bore_clearance_mm / 2 - under / 2, clear, "mm",
-                       f"radial running clearance of each roller on its ⌀{q.roller_pin_mm:.2f} pin"),
-        Check.at_least("fit.carrier_on_axle", (q.carrier_bore_mm - under - axle_d) / 2, clear, "mm",
-                       f"radial running clearance of the carrier on the ⌀{axle_d:g} axle"),
-        Check.at_least("fit.axle_in_cam", axle_d - (cam_bore_print - under), 2 * press - 1e-12, "mm",
-                       f"diametral interference of the axle in the cam ({press:g} mm radial)"),
         Check.at_least("fit.roller_axial_gap", q.groove_axial_gap_mm, clear, "mm",
                        "axial gap of the roller to the channel floor and top"),
         Check.at_least("fit.spacer_thickness", gap_c, SPACER_T_MIN_MM, "mm",
                        "the spacer keeps the carrier clear of the cam's top"),
     ]
+    fits = [Fit("roller_on_pin", "leg", "roller", (0.0, 0.0), "running", "each roller turns on its leg's pin",
+                pin_z=(t, t + pin_len)),
+            Fit("carrier_on_axle", "axle", "carrier", (0.0, 0.0), "running", "the carrier turns on the axle"),
+            Fit("spacer_on_axle", "axle", "spacer", (0.0, 0.0), "running", "the spacer ring over the axle"),
+            Fit("axle_in_cam", "axle", "cam", (0.0, 0.0), "press", "the axle pressed into the cam"),
+            Fit("handle_in_carrier", "handle", "carrier", _first_hole(q), "press", "the handle pressed into the carrier")]
     hub = pr["hub"]
     return Kit(
+        fits=fits,
+        hardware=[dowel(axle_d, axle_len, 1, "axle", "the axle"),
+                  dowel(HANDLE_D_MM, t + HANDLE_UP_MM, 1, "handle", "the crank handle")],
+        step_parts=[["cam", "axle", "spacer"], [f"{what}_{k + 1}" for k in range(n) for what in ("leg", "roller", "shoe")],
+                    ["carrier"], ["handle"], []],
         part="cam_mover", printer=printer, scale=choice, pieces=pieces, assembly=assembly, checks=checks,
         derived={"print_hub_height_mm": pl.mech.hub_height, "print_hub_height_mean_mm": float(hub["hub"].mean()),
                  "print_roller_radius_mm": r_print, "print_channel_width_mm": 2 * q.roller_radius_mm

@@ -18,9 +18,11 @@ from ...check import Check
 from ...errors import InputError
 from ...geometry.profile import Profile, circle_loop
 from ...params import load_params, params_to_dict
+from ...printing.fits import Fit
 from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
-from ...printing.scale import check_printable, choose_scale
+from ...printing.hardware import PRINTED_PIN_MIN_MM, STANDARD_PIN_D, Hardware, dowel, mm, standard_at_most, side_pin
+from ...printing.scale import check_printable, choose_scale, larger
 from .design import pair_design
 from .params import NoncircularPairParams
 from .proofs import checks_common, prove
@@ -34,6 +36,33 @@ BASE_T_MM, BOSS_WALL_MM, HANDLE_D_MM, HANDLE_UP_MM, MARK_D_MM = 6.0, 6.0, 6.0, 1
 JN_MEASURED_RATIO = 0.95
 #: least and largest printed pin diameter (mm): stiff enough, and no larger than needed
 PIN_D_MIN_MM, PIN_D_MAX_MM = 5.0, 12.0
+#: washer under each wheel, cap pressed on each pin's top above it, the wheels' axial play (mm)
+WASHER_T_MM, CAP_H_MM, PLAY_MM = 1.0, 3.0, 0.3
+#: least handle: printed, and a steel pin below it (mm)
+HANDLE_PRINTED_MIN_MM, HANDLE_STEEL_MIN_MM = 4.0, 2.0
+
+
+def _pin(wanted: float, least: float = PIN_D_MIN_MM) -> float:
+    """A printed axle pin: the standard diameter at most min(12, max(least, wanted))."""
+    return standard_at_most(min(PIN_D_MAX_MM, max(least, wanted)))
+
+
+def rig_sizes(R_root: float, m: float, wanted: float, printer: Printer):
+    """(driver pin, handle diameter, handle radius) that fit inside the driver's root circle R_root
+    (print size): the largest standard pin down to the printable least whose bore leaves room for a
+    handle (the profile's 6 mm, else the largest standard one, printed down to 4 mm, steel below); None
+    when none does."""
+    clear, under, minf = printer.running_clearance_mm, printer.hole_undersize_mm, printer.min_feature_mm
+    start = _pin(wanted)
+    for d in [s for s in reversed(STANDARD_PIN_D) if PRINTED_PIN_MIN_MM <= s <= start]:
+        rb = (d + 2 * clear + under) / 2
+        r_h = 0.5 * (rb + R_root)
+        if r_h - HANDLE_D_MM / 2 - rb >= minf and R_root - m - r_h - HANDLE_D_MM / 2 >= minf:
+            return d, HANDLE_D_MM, r_h
+        h = standard_at_most(R_root - m - rb - 2 * minf)
+        if h is not None and h >= HANDLE_STEEL_MIN_MM:
+            return d, min(h, HANDLE_D_MM), 0.5 * (rb + R_root - m)
+    return None
 
 
 def _extent(profile: Profile) -> tuple[float, float]:
@@ -117,7 +146,7 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
         # the searched law at full size is also the one at 1:1: the scale from the pitch curves, and at
         # 1:1 the printed pair searched and cut once (a print module has no catalogue shaper)
         m, L_est, extents = _pitch_extents(p, source)
-        choice = choose_scale(extents, bed, scale)
+        choice = choose_scale(extents, bed, scale, margin=printer.margin_mm)
         if choice.S != 1.0:
             full = pair_design(p, source)
     else:
@@ -126,12 +155,16 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
         m, L_est = full.d.m, full.mount
         extents = {"driver": (*_extent(full.profiles[0]), p.face_width_mm),
                    "driven": (*_extent(full.profiles[1]), p.face_width_mm)}
-        choice = choose_scale(extents, bed, scale)
+        choice = choose_scale(extents, bed, scale, margin=printer.margin_mm)
     S = choice.S
-    pin = [min(PIN_D_MAX_MM, max(PIN_D_MIN_MM, b / S)) for b in (p.driver_bore_mm, p.driven_bore_mm)]
+    pin = [_pin(b / S) for b in (p.driver_bore_mm, p.driven_bore_mm)]
+    if full is not None:  # the driver's pin sized for the handle beside it (the root radius scales as 1/S)
+        rig = rig_sizes(full.d.driver.root_min_radius / S, m / S, p.driver_bore_mm / S, printer)
+        if rig is not None:
+            pin[0] = rig[0]
     R_boss = max(pin) / 2 + BOSS_WALL_MM
     base_len = L_est / S + 2 * R_boss
-    if base_len > max(printer.bed_x_mm, printer.bed_y_mm) - 2 * printer.piece_gap_mm:
+    if base_len > max(printer.bed_x_mm, printer.bed_y_mm) - 2 * printer.margin_mm:
         raise InputError("--scale", choice.label, f"the base bar ({base_len:.1f} mm) does not fit the bed")
     check_printable(S, m, printer.min_module_mm, choice=choice)
     clear, under, press = printer.running_clearance_mm, printer.hole_undersize_mm, printer.press_fit_mm
@@ -152,14 +185,16 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     w = q.face_width_mm
     drv_prof, dvn_prof = kd.profiles
     # the crank handle's hole in the driver, the index marks in the driven wheel
-    r_h = 0.5 * (bores[0] / 2 + d.driver.root_min_radius)
-    if not (r_h - HANDLE_D_MM / 2 - bores[0] / 2 >= printer.min_feature_mm
-            and d.driver.root_min_radius - d.m - r_h - HANDLE_D_MM / 2 >= printer.min_feature_mm):
-        raise InputError("--scale", choice.label, f"the driver (root radius {d.driver.root_min_radius:.1f} mm) has no "
-                         f"room for the {HANDLE_D_MM:g} mm crank handle beside its {bores[0]:.2f} mm bore; print larger")
-    handle_hole = HANDLE_D_MM - 2 * press + under
+    rig = rig_sizes(d.driver.root_min_radius, d.m, pin[0], printer)
+    if rig is None or rig[0] != pin[0]:
+        raise InputError("--scale", choice.label, f"the driver (root radius {mm(d.driver.root_min_radius)} mm) has no "
+                         f"room for a ⌀{HANDLE_STEEL_MIN_MM:g} mm handle beside a ⌀{PRINTED_PIN_MIN_MM:g} mm pin; "
+                         f"{larger(S)}")
+    handle_d, r_h = rig[1], rig[2]
+    handle_printed = handle_d >= HANDLE_PRINTED_MIN_MM
+    handle_hole = handle_d - 2 * press + under
     drv_prof = _with_holes(drv_prof, [circle_loop(handle_hole / 2, (r_h, 0.0), ccw=False)])
-    r_mark = 0.5 * (bores[1] / 2 + d.driven.root_min_radius)
+    r_mark = 0.5 * (bores[1] / 2 + d.driven.root_min_radius)  # the index marks' radius
     n = q.driver_turns
     marks = [circle_loop(MARK_D_MM / 2, (r_mark * math.cos(a), r_mark * math.sin(a)), ccw=False)
              for a in (math.pi + 2 * math.pi * k / n for k in range(n))]
@@ -169,21 +204,58 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     driven = extrude_profile(dvn_prof, w)
     base_prof = _base_profile(L, R_boss, [d_ - 2 * press + under for d_ in pin])
     base = extrude_profile(base_prof, BASE_T_MM)
-    pin_len = BASE_T_MM + w + 1.0
-    pins = [cylinder(d_ / 2, 0.0, pin_len) for k, d_ in enumerate(pin)]
-    handle = cylinder(HANDLE_D_MM / 2, 0.0, w + HANDLE_UP_MM)
+    pin_len = BASE_T_MM + WASHER_T_MM + w + PLAY_MM + CAP_H_MM
+    pins = [side_pin(d_, pin_len) for d_ in pin]
+    handle = side_pin(handle_d, w + HANDLE_UP_MM)
+    # a washer under each wheel (it runs on the pin), a cap pressed on the pin above it (keeps the wheel on);
+    # the driver's cap clears the handle, the driven's the index marks
+    cap_od = [min(pin[0] + 6.0, 2 * (r_h - handle_d / 2 - 0.5)), min(pin[1] + 6.0, 2 * (r_mark - MARK_D_MM / 2 - 0.5))]
+    cap_id = [d_ - 2 * press + under for d_ in pin]
+    # a cap with no room for its wall beside the handle or the marks is left out (a push-on washer instead)
+    capped = [(o - i) / 2 >= printer.min_feature_mm for o, i in zip(cap_od, cap_id)]
+    rings = []
+    for k, role in enumerate(("driver", "driven")):
+        washer = extrude_profile(Profile(circle_loop(pin[k] / 2 + 3.0), [circle_loop(bores[k] / 2, ccw=False)],
+                                         "washer"), WASHER_T_MM)
+        cap = extrude_profile(Profile(circle_loop(cap_od[k] / 2), [circle_loop(cap_id[k] / 2, ccw=False)], "cap"),
+                              CAP_H_MM)
+        rings += [Piece(f"washer_{role}", washer, genus=1, what=f"washer under the {role}, {WASHER_T_MM:g} mm",
+                        chamfer_mm=0.0),
+                  Piece(f"cap_{role}", cap, genus=1, what=f"cap pressed on the {role}'s pin", chamfer_mm=0.0)][:2 if capped[k] else 1]
     pieces = [Piece("driver", driver, genus=2, what=f"driver, {d.z} teeth, m = {d.m:.4g} mm"),
               Piece("driven", driven, genus=1 + n, what=f"driven wheel, {d.z_H} teeth, {n} index marks"),
               Piece("base", base, genus=2, what=f"base bar, axles {L:.3f} mm apart"),
-              Piece("pin_driver", pins[0], genus=0, what=f"driver axle pin ⌀{pin[0]:g}"),
-              Piece("pin_driven", pins[1], genus=0, what=f"driven axle pin ⌀{pin[1]:g}"),
-              Piece("handle", handle, genus=0, what=f"crank handle ⌀{HANDLE_D_MM:g}")]
-    z0 = BASE_T_MM
+              Piece("pin_driver", pins[0], genus=0, what=f"driver axle pin ⌀{pin[0]:g}", chamfer_mm=0.0),
+              Piece("pin_driven", pins[1], genus=0, what=f"driven axle pin ⌀{pin[1]:g}", chamfer_mm=0.0),
+              Piece("handle", handle, genus=0, what=f"crank handle ⌀{handle_d:g}", chamfer_mm=0.0)][:6 if handle_printed else 5]
+    pieces += rings
+    hardware = [dowel(pin[0], pin_len, 1, "pin_driver", "the driver's axle"),
+                dowel(pin[1], pin_len, 1, "pin_driven", "the driven wheel's axle")]
+    hardware += [Hardware(f"DIN 125 / ISO 7089 washer for M{d_:g} — runs under the "
+                          f"{role} on its pin", 1, f"washer_{role}") for d_, role in zip(pin, ("driver", "driven"))
+                 if d_ == int(d_)]
+    hardware += [Hardware(f"push-on retaining washer (starlock) for a ⌀{d_:g} mm steel pin — keeps the {role} on "
+                          f"(no room for a printed cap beside the {'handle' if role == 'driver' else 'marks'})", 1, "")
+                 for d_, role, c in zip(pin, ("driver", "driven"), capped) if not c]
+    if handle_printed:
+        hardware.append(dowel(handle_d, w + HANDLE_UP_MM, 1, "handle", "the crank handle"))
+    else:
+        hardware.append(Hardware(f"⌀{handle_d:g} mm steel pin {mm(w + HANDLE_UP_MM)} mm long — the crank handle "
+                                 f"(needed: no printed handle this thin holds)", 1, ""))
+    z0 = BASE_T_MM + WASHER_T_MM
+    z_cap = z0 + w + PLAY_MM
+    rings_at = [Placed("washer_driven", "washer_driven", place(dz=BASE_T_MM), "0.5"),
+                Placed("washer_driver", "washer_driver", place(dx=L, dz=BASE_T_MM), "0.5"),
+                Placed("cap_driven", "cap_driven", place(dz=z_cap), "0.3"),
+                Placed("cap_driver", "cap_driver", place(dx=L, dz=z_cap), "0.3")]
+    rings_at = [r for r in rings_at if not (r.label == "cap_driver" and not capped[0])
+                and not (r.label == "cap_driven" and not capped[1])]
     assembly = [Placed("base", "base", place(), "0.75"), Placed("pin_driven", "pin_driven", place(), "0.4"),
                 Placed("pin_driver", "pin_driver", place(dx=L), "0.4"),
                 Placed("driven", "driven", place(dz=z0), "tab:blue"),
                 Placed("driver", "driver", place(dx=L, dz=z0), "tab:orange"),
-                Placed("handle", "handle", place(dx=L + r_h, dz=z0), "tab:red")]
+                Placed("handle", "handle", place(dx=L + r_h, dz=z0), "tab:red")][:6 if handle_printed else 5]
+    assembly += rings_at
     prefix = "mesh" if d.method == "generated" else "sectors"
     checks = [Check.at_most(f"{prefix}.overlap_area", s["overlap_law_max_mm2"], 1e-6, "mm^2",
                             f"printed outlines over {s['steps']} phases of the whole cycle")]
@@ -191,14 +263,22 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     checks.append(Check.at_least(f"{prefix}.print_backlash_min", jn_min, printer.backlash_mm, "mm",
                                  f"least normal backlash of the printed teeth over the cycle (circumferential "
                                  f"{s['backlash_min_mm']:.4f} mm × cos α); designed j_n = {j_n:.4f} mm"))
+    fits = [Fit("driver_on_pin", "pin_driver", "driver", (0.0, 0.0), "running", "the driver turns on its pin"),
+            Fit("driven_on_pin", "pin_driven", "driven", (0.0, 0.0), "running", "the driven wheel turns on its pin"),
+            Fit("pin_driven_in_base", "pin_driven", "base", (0.0, 0.0), "press", "pressed into the base"),
+            Fit("pin_driver_in_base", "pin_driver", "base", (L, 0.0), "press", "pressed into the base")]
     for k, role in enumerate(("driver", "driven")):
-        checks.append(Check.at_least(f"fit.{role}_on_pin", (bores[k] - under - pin[k]) / 2, clear, "mm",
-                                     f"radial running clearance of the {role} on its ⌀{pin[k]:g} pin (the bore is "
-                                     f"drawn {under:g} mm larger for the hole's undersize)"))
-    checks.append(Check.at_least("fit.pins_in_base", min(pin) - max(d_ - 2 * press for d_ in pin), 0.0, "mm",
-                                 f"the pins press into the base with {press:g} mm radial interference"))
+        fits += [Fit(f"washer_{role}_on_pin", f"pin_{role}", f"washer_{role}", (0.0, 0.0), "running",
+                     f"the washer under the {role}"),
+                 Fit(f"cap_{role}_on_pin", f"pin_{role}", f"cap_{role}", (0.0, 0.0), "press",
+                     f"the cap keeps the {role} on its pin")][:2 if capped[k] else 1]
+    if handle_printed:
+        fits.append(Fit("handle_in_driver", "handle", "driver", (r_h, 0.0), "press", "pressed into the driver"))
     return Kit(
         part="noncircular_pair", printer=printer, scale=choice, pieces=pieces, assembly=assembly, checks=checks,
+        hardware=hardware, fits=fits,
+        step_parts=[["base", "pin_driven", "pin_driver"], ["washer_driven", "washer_driver"], ["driver", "handle"],
+                    ["driven"], [r.label for r in rings_at if r.label.startswith("cap")], []],
         derived={"print_module_mm": d.m, "print_center_distance_mm": L, "print_face_width_mm": w,
                  "print_backlash_n_design_mm": j_n, "print_backlash_n_min_mm": jn_min,
                  "print_backlash_t_max_mm": s["backlash_max_mm"], "pin_driver_d_mm": pin[0], "pin_driven_d_mm": pin[1]},
@@ -209,9 +289,13 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
                     ("bed-side chamfer", ch, "45° round the face each piece lies on, made layer by layer as the slicer sees it")],
         steps=[f"Press the two pins into the base bar (⌀{pin[1]:g} into the hole at the bar's wide-spaced end, the "
                f"driven axle; ⌀{pin[0]:g} into the other), flat faces down.",
+               "Put a washer over each pin (the larger hole on the larger pin).",
                "Press the handle into the small hole of the driver.",
                "Put the driven wheel on its pin with its mark 1 (the index hole on the line of centres, away from "
                "the driver) and the driver on its pin with the handle towards the driven wheel; the teeth mesh.",
+               f"Press a cap (or a push-on washer, see the hardware) onto each pin until it is flush with the pin's "
+               f"top: it stands {PLAY_MM:g} mm above the wheel, which turns freely and stays on when the model is "
+               f"lifted.",
                f"Turn the handle: each driver turn the next of the driven wheel's {n} marks reaches the line of centres; "
                f"{n} turns bring the driven wheel once round, its speed varying as the walking law asks."],
         expected_failures=_documented_jam(source, prefix),

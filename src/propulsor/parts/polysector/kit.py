@@ -1,5 +1,5 @@
 """Print kit of the composite (polysector) gear: the six sectors, one hub disc carrying both flows, the
-solid gear, a base bar with the two axles at the centre distance of the largest-offset position,
+solid gear, a base with the wheel's axle and a hole for the gear's axle at every position's centre distance,
 press-fit pins, a crank handle.
 
 The gear set is designed anew at the print module (tooth counts, positions and the layout's shape
@@ -27,9 +27,12 @@ from ...check import Check
 from ...errors import InputError
 from ...geometry.profile import Arc, Line, Loop, Profile, circle_loop
 from ...params import load_params, params_to_dict
+from ...printing.fits import Fit
+from ...printing.hardware import dowel, side_pin
 from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
-from ...printing.scale import check_printable, choose_scale
+from ...printing.scale import check_printable, choose_scale, larger
+from ...printing.scale import fits as fits_bed
 from .params import PolysectorParams
 
 __all__ = ["kit"]
@@ -55,6 +58,23 @@ def _stadium(L: float, R: float) -> Loop:
                  Line((L, R), (0.0, R)), Arc((0.0, 0.0), R, math.pi / 2, 3 * math.pi / 2)])
 
 
+def base_holes(centre_distances, hole_d: float, wall: float) -> list[tuple[float, float]]:
+    """Centres of the gear axle's holes in the base, one a position: hole k at its centre distance a_k
+    from the wheel's axle (at the origin), turned about it so that neighbouring holes keep `wall`
+    between them; the last position's on the x axis."""
+    a = list(centre_distances)
+    need = hole_d + wall
+    step = 2.0 * math.asin(min(1.0, 0.5 * need / min(a))) if len(a) > 1 else 0.0
+    n = len(a)
+    return [(r * math.cos(-(n - 1 - k) * step), r * math.sin(-(n - 1 - k) * step)) for k, r in enumerate(a)]
+
+
+def _base_extents(centres, R: float) -> tuple[float, float]:
+    xs = [0.0] + [c[0] for c in centres]
+    ys = [0.0] + [c[1] for c in centres]
+    return max(xs) - min(xs) + 2 * R, max(ys) - min(ys) + 2 * R
+
+
 def _extent(profile: Profile) -> tuple[float, float]:
     pts = profile.outer.polyline(0.05)
     return tuple(float(v) for v in (pts.max(axis=0) - pts.min(axis=0)))
@@ -78,8 +98,9 @@ def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, sourc
     extents = {"gear": (2 * full.geo.r_a2, 2 * full.geo.r_a2, stack),
                "hub_disc": (2 * full.layout.R_hub, 2 * full.layout.R_hub, t),
                "sector": (*_extent(full.sector), b),
-               "base": (pos_full.a + 2 * R_boss, 2 * R_boss, BASE_T_MM)}
-    choice = choose_scale(extents, (printer.bed_x_mm, printer.bed_y_mm, printer.bed_z_mm), scale)
+               "base": (*_base_extents(base_holes([x.a for x in full.positions], max(pin_full), BOSS_WALL_MM),
+                                       R_boss), BASE_T_MM)}
+    choice = choose_scale(extents, printer.bed, scale, margin=printer.margin_mm)
     S = choice.S
     check_printable(S, p.module_mm, printer.min_module_mm, choice=choice)
     clear, under, press = printer.running_clearance_mm, printer.hole_undersize_mm, printer.press_fit_mm
@@ -113,7 +134,7 @@ def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, sourc
         room = min(room, float(np.min(np.hypot(*(hp - np.array(c_h)).T))))
     if room - HANDLE_D_MM / 2 < printer.min_feature_mm:
         raise InputError("--scale", choice.label, f"the hub disc has no room for the {HANDLE_D_MM:g} mm crank handle "
-                         f"({room:.2f} mm from its centre to the nearest edge); print larger")
+                         f"({room:.2f} mm from its centre to the nearest edge); {larger(choice.S)}")
     disc = Profile(disc.outer, list(disc.holes) + [circle_loop(handle_hole / 2, c_h, ccw=False)], "hub disc")
     ch = printer.chamfer_mm
     sector = extrude_profile(kd.sector, b)
@@ -121,32 +142,41 @@ def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, sourc
     gear = extrude_profile(kd.gear_profile, 2 * b + t)
     L = pos.a
     R_boss = max(pin) / 2 + BOSS_WALL_MM
-    if L + 2 * R_boss > max(printer.bed_x_mm, printer.bed_y_mm) - 2 * printer.piece_gap_mm:
-        raise InputError("--scale", choice.label, f"the base bar ({L + 2 * R_boss:.1f} mm) does not fit the bed")
-    base_prof = Profile(_stadium(L, R_boss), [circle_loop((pin[0] - 2 * press + under) / 2, (0.0, 0.0), ccw=False),
-                                             circle_loop((pin[1] - 2 * press + under) / 2, (L, 0.0), ccw=False)], "base")
+    # the gear axle's hole for every position, each at its centre distance from the wheel's axle
+    holes_at = base_holes([x.a for x in kd.positions], pin[1], max(printer.min_feature_mm, 2.0))
+    bx, by = _base_extents(holes_at, R_boss)
+    if not fits_bed((bx, by, BASE_T_MM), (printer.bed_x_mm - 2 * printer.margin_mm,
+                                      printer.bed_y_mm - 2 * printer.margin_mm, printer.bed_z_mm)):
+        raise InputError("--scale", choice.label, f"the base ({bx:.0f} × {by:.0f} mm) does not fit the bed; a larger "
+                         f"reduction fits")
+    from ..balancer.kit import _hull_loop
+
+    base_prof = Profile(_hull_loop([((0.0, 0.0), R_boss)] + [(c, R_boss) for c in holes_at]),
+                        [circle_loop((pin[0] - 2 * press + under) / 2, (0.0, 0.0), ccw=False)]
+                        + [circle_loop((pin[1] - 2 * press + under) / 2, c, ccw=False) for c in holes_at], "base")
     base = extrude_profile(base_prof, BASE_T_MM)
     axle_len = BASE_T_MM + GAP_MM + 2 * b + t + 1.0
-    axles = [cylinder(d / 2, 0.0, axle_len) for k, d in enumerate(pin)]
+    axles = [side_pin(d, axle_len) for d in pin]
     # sector pins: each presses through the sector into the disc (the holes print `under` small)
     d_loc = lay.d_pin - under + 2 * press
     d_clamp = lay.d_bolt - under + 2 * press
     pin_len = b + t - GAP_MM
-    loc_pin = cylinder(d_loc / 2, 0.0, pin_len)
-    clamp_pin = cylinder(d_clamp / 2, 0.0, pin_len)
-    handle = cylinder(HANDLE_D_MM / 2, 0.0, t + b + HANDLE_UP_MM)
+    loc_pin = side_pin(d_loc, pin_len)
+    clamp_pin = side_pin(d_clamp, pin_len)
+    handle = side_pin(HANDLE_D_MM, t + b + HANDLE_UP_MM)
     n_sec = q.flows * i_s
     n_pos = len(kd.positions)
     pieces = [Piece("gear", gear, genus=1, what=f"solid gear, {q.gear_teeth} teeth, m = {q.module_mm:.4g} mm"),
               Piece("hub_disc", hub, genus=1 + n_sec * (1 + n_pos) + 1,
                     what=f"hub disc of both flows, a pin hole per sector and position ({n_pos} positions)"),
               Piece("sector", sector, count=n_sec, genus=2, what=f"sector of {q.sector_teeth} teeth"),
-              Piece("base", base, genus=2, what=f"base bar, axles {L:.3f} mm apart (position {pos.k})"),
-              Piece("axle_wheel", axles[0], genus=0, what=f"wheel axle pin ⌀{pin[0]:g}"),
-              Piece("axle_gear", axles[1], genus=0, what=f"gear axle pin ⌀{pin[1]:g}"),
-              Piece("locating_pin", loc_pin, count=n_sec, genus=0, what=f"sector locating pin ⌀{d_loc:.2f}"),
-              Piece("clamp_pin", clamp_pin, count=n_sec, genus=0, what=f"sector clamping pin ⌀{d_clamp:.2f}"),
-              Piece("handle", handle, genus=0, what=f"crank handle ⌀{HANDLE_D_MM:g}")]
+              Piece("base", base, genus=1 + len(holes_at), what=f"base with the gear axle's hole for each of the "
+                    f"{len(holes_at)} positions ({', '.join(f'{x.a:.1f}' for x in kd.positions)} mm from the wheel's)"),
+              Piece("axle_wheel", axles[0], genus=0, what=f"wheel axle pin ⌀{pin[0]:g}", chamfer_mm=0.0),
+              Piece("axle_gear", axles[1], genus=0, what=f"gear axle pin ⌀{pin[1]:g}", chamfer_mm=0.0),
+              Piece("locating_pin", loc_pin, count=n_sec, genus=0, what=f"sector locating pin ⌀{d_loc:.2f}", chamfer_mm=0.0),
+              Piece("clamp_pin", clamp_pin, count=n_sec, genus=0, what=f"sector clamping pin ⌀{d_clamp:.2f}", chamfer_mm=0.0),
+              Piece("handle", handle, genus=0, what=f"crank handle ⌀{HANDLE_D_MM:g}", chamfer_mm=0.0)]
     z0 = BASE_T_MM + GAP_MM
     assembly = [Placed("base", "base", place(), "0.75"), Placed("axle_wheel", "axle_wheel", place(), "0.4"),
                 Placed("axle_gear", "axle_gear", place(dx=L), "0.4"),
@@ -167,12 +197,22 @@ def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, sourc
                              f"least normal backlash of the printed teeth (free turn of the gear × r_b2); designed "
                              f"j_n = {j_n:.4f} mm")]
     checks += law_checks("mesh", proof.law)
-    for k, role in enumerate(("wheel", "gear")):
-        checks.append(Check.at_least(f"fit.{role}_on_axle", (bores[k] - under - pin[k]) / 2, clear, "mm",
-                                     f"radial running clearance on the ⌀{pin[k]:g} axle pin"))
     checks.append(Check.at_least("fit.sector_pins", min(d_loc - (lay.d_pin - under), d_clamp - (lay.d_bolt - under)),
                                  2 * press - 1e-12, "mm", "the sector pins press into their printed holes"))
+    fits = [Fit("wheel_on_axle", "axle_wheel", "hub_disc", (0.0, 0.0), "running", "the wheel turns on its axle"),
+            Fit("gear_on_axle", "axle_gear", "gear", (0.0, 0.0), "running", "the gear turns on its axle"),
+            Fit("axle_wheel_in_base", "axle_wheel", "base", (0.0, 0.0), "press", "pressed into the base"),
+            *[Fit(f"axle_gear_in_base_position_{x.k}", "axle_gear", "base", c, "press",
+                  f"the gear axle's hole of position {x.k}") for x, c in zip(kd.positions, holes_at)],
+            Fit("handle_in_disc", "handle", "hub_disc", c_h, "press", "the handle pressed into the disc")]
     return Kit(
+        fits=fits,
+        hardware=[dowel(pin[0], axle_len, 1, "axle_wheel", "the wheel's axle"),
+                  dowel(pin[1], axle_len, 1, "axle_gear", "the gear's axle"),
+                  dowel(HANDLE_D_MM, t + b + HANDLE_UP_MM, 1, "handle", "the crank handle")],
+        step_parts=[["base", "axle_wheel", "axle_gear"],
+                    ["hub_disc"] + [f"sector_{f}_{j + 1}" for f in range(1, q.flows + 1) for j in range(len(kd.sector_angles(f)))],
+                    ["handle"], ["gear"], []],
         part="polysector_gear", printer=printer, scale=choice, pieces=pieces, assembly=assembly, checks=checks,
         derived={"print_module_mm": q.module_mm, "print_center_distance_mm": L, "print_position": pos.k,
                  "print_offset_mm": pos.offset, "print_face_width_mm": b, "print_backlash_n_design_mm": j_n,
@@ -183,8 +223,9 @@ def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, sourc
                     ("press fit", press, "axle pins in the base, sector pins, handle (radial)"),
                     ("hole undersize", under, "added to every running hole's diameter"),
                     ("bed-side chamfer", ch, "45° round the face each piece lies on, made layer by layer as the slicer sees it")],
-        steps=[f"Press the axle pins into the base bar: ⌀{pin[0]:g} (wheel) at the bar's first end, ⌀{pin[1]:g} "
-               f"(gear) at the other, flat faces down.",
+        steps=[f"Press the axle pins into the base: ⌀{pin[0]:g} (wheel) into the single hole, ⌀{pin[1]:g} (gear) into "
+               f"the hole of position {pos.k}, the last of the row of {len(holes_at)} (one a position, each at its "
+               f"centre distance from the wheel's axle).",
                f"Set the sectors at position {pos.k} (offset {pos.offset:.3f} mm): lay a sector on the disc with its "
                f"stem along a row of pin holes, the locating pin through its pin hole into hole {pos.k} of the row "
                f"(counted from the centre), the clamping pin through its slot into the disc's bolt hole. Three "
@@ -193,4 +234,4 @@ def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, sourc
                "Press the handle into the disc's single hole on the top side.",
                "Put the wheel on its axle (flow 1 down) and the gear on the other; the teeth mesh with both layers.",
                f"Turn the handle: one turn of the wheel turns the gear {1 / pos.ratio_nominal:.4f} times; to change "
-               f"the ratio move the sectors to another row hole (and the gear axle to that position's distance)."])
+               f"the ratio move the sectors to another row hole and the gear axle to that position's hole in the base."])

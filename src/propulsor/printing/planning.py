@@ -1,0 +1,83 @@
+"""Print planning: how long each plate prints and how much filament it takes, at the stated settings.
+
+Where PrusaSlicer is installed (and the kit is sliced), each plate is sliced with the printer's bed
+and print settings (:meth:`.printers.Printer.slicer_args`) and the time and filament are read from the
+G-code's comments; the plate must slice with every object manifold and on the bed (checks).  Without
+it, the filament is estimated from the pieces at the stated infill: the walls (perimeters × line
+width over the surface, at most the volume) solid, the rest at the infill density — and the report
+says that the plate was not sliced.
+"""
+
+from __future__ import annotations
+
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..check import Check
+
+
+@dataclass
+class PlatePlan:
+    plate: int
+    pieces: int
+    volume_cm3: float  # the pieces' solid volume
+    estimate_g: float  # filament at the stated infill, estimated from the pieces
+    names: str
+    time_s: int | None = None  # sliced: PrusaSlicer's normal-mode estimate
+    filament_g: float | None = None  # sliced
+    filament_m: float | None = None  # sliced
+
+
+def estimate_g(meshes, printer) -> float:
+    """Filament (g) of pieces at the printer's infill: a shell of perimeters × line width over the
+    surface (at most the piece's volume) solid, the rest at the infill density."""
+    total = 0.0
+    shell_t = max(printer.perimeters * printer.line_width,
+                  0.5 * (printer.top_layers + printer.bottom_layers) * printer.layer_mm)
+    for m in meshes:
+        vol = float(m.volume)
+        shell = min(vol, float(m.area) * shell_t)
+        total += shell + printer.infill_percent / 100.0 * (vol - shell)
+    return total / 1000.0 * printer.density_g_cm3
+
+
+def hours(seconds: int | None) -> str:
+    """A print time as a maker reads it: 3 h 25 min, 45 min."""
+    if seconds is None:
+        return "—"
+    h, m = divmod(int(round(seconds / 60.0)), 60)
+    return f"{h} h {m:02d} min" if h else f"{m} min"
+
+
+def slice_plates(plans: list[PlatePlan], plate_paths: list[Path], printer, progress) -> list[Check]:
+    """Slice every plate with the printer's settings; fill each plan's time and filament; the checks:
+    each plate slices, every object manifold and on the bed."""
+    from .slicer import slice_plate
+
+    checks = []
+    with tempfile.TemporaryDirectory(prefix="propulsor-slice-") as work:
+        for plan, path in zip(plans, plate_paths):
+            progress(f"slicing plate {plan.plate} of {len(plans)} with PrusaSlicer")
+            r = slice_plate(path, printer.bed_shape(), Path(work) / f"plate_{plan.plate}.gcode",
+                            args=printer.slicer_args())
+            off = r.off_bed(printer.bed_x_mm, printer.bed_y_mm)
+            ok = r.ok and r.all_manifold and not off and "time_s" in r.stats and "filament_g" in r.stats
+            checks.append(Check.flag(f"plate_{plan.plate}.sliced", ok,
+                                     f"PrusaSlicer: {r.message}; {len(r.objects)} object(s), manifold: "
+                                     f"{'all' if r.all_manifold else 'not all'}; off the bed: {off or 'none'}"))
+            if ok:
+                plan.time_s = int(r.stats["time_s"])
+                plan.filament_g = float(r.stats["filament_g"])
+                plan.filament_m = float(r.stats.get("filament_mm", 0.0)) / 1000.0
+    return checks
+
+
+def table_rows(plans: list[PlatePlan]) -> list[tuple]:
+    return [(p.plate, p.pieces, p.volume_cm3, p.estimate_g, "" if p.time_s is None else p.time_s,
+             "" if p.filament_g is None else p.filament_g, "" if p.filament_m is None else p.filament_m, p.names)
+            for p in plans]
+
+
+TABLE_COLUMNS = ["plate", "pieces", "volume_cm3", "estimate_g", "sliced_time_s", "sliced_filament_g",
+                 "sliced_filament_m", "names"]

@@ -1,0 +1,160 @@
+"""Printer profiles as a user gives them: a built-in name, the path of their own profile file, or a
+bed alone (--bed); the refusals name the key, and the kit's report names the printer used."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from propulsor.cli import main
+from propulsor.errors import InputError
+from propulsor.printing.printers import load_printer, parse_bed, printer_names
+
+ROOT = Path(__file__).resolve().parents[1]
+#: the built-in beds (x, y, z) of the printers makers name most
+BEDS = {"prusa_mini": (180, 180, 180), "prusa_mk4": (250, 210, 220), "prusa_xl": (360, 360, 360),
+        "bambu_a1_mini": (180, 180, 180), "bambu_a1": (256, 256, 256), "bambu_p1": (256, 256, 256),
+        "bambu_x1": (256, 256, 256), "creality_ender3": (220, 220, 250), "voron_24_350": (350, 350, 340)}
+
+
+@pytest.mark.parametrize("name", sorted(BEDS))
+def test_built_in_profiles_have_their_printer_s_bed(name):
+    p = load_printer(name)
+    assert p.bed == BEDS[name] and p.name == name and p.title and p.margin_mm == 5.0
+
+
+def test_every_built_in_profile_loads():
+    for name in printer_names():
+        assert load_printer(name).bed_x_mm >= 50
+
+
+def test_a_profile_file_of_the_user_s_own_printer(tmp_path):
+    f = tmp_path / "my_printer.toml"
+    f.write_text('title = "my MINI+"\nbed_x_mm = 180\nbed_y_mm = 175\nbed_z_mm = 170\nmargin_mm = 3\n'
+                 'nozzle_mm = 0.6\n')
+    p = load_printer(str(f), {"backlash_mm": 0.35})
+    assert p.bed == (180.0, 175.0, 170.0) and p.margin_mm == 3.0 and p.nozzle_mm == 0.6
+    assert p.name == "my_printer" and p.backlash_mm == 0.35 and "my MINI+" in p.label
+
+
+@pytest.mark.parametrize("text, key, fragment", [
+    ("bed_x_mm = 180\nbed_z_mm = 180\n", "printer.bed_y_mm", "missing"),
+    ("bed_x_mm = 180\nbed_y_mm = -180\nbed_z_mm = 180\n", "printer.bed_y_mm", "positive"),
+    ("bed_x_mm = 0\nbed_y_mm = 180\nbed_z_mm = 180\n", "printer.bed_x_mm", "positive"),
+    ("bed_x_mm = 180\nbed_y_mm = 180\nbed_z_mm = 'tall'\n", "printer.bed_z_mm", "number"),
+    ("bed_x_mm = 180\nbed_y_mm = 180\nbed_z_mm = 180\nshape = 'circle'\n", "printer.shape", "rectangle"),
+    ("bed_x_mm = 180\nbed_y_mm = 180\nbed_z_mm = 180\ncolour = 1\n", "print.colour", "unknown printer setting"),
+])
+def test_a_bad_profile_file_exits_2_naming_the_key(tmp_path, capsys, text, key, fragment):
+    f = tmp_path / "printer.toml"
+    f.write_text(text)
+    out = tmp_path / "kit"
+    rc = main(["print", str(ROOT / "parts" / "road_wheel.toml"), "--printer", str(f), "--out", str(out), "-q"])
+    err = [line for line in capsys.readouterr().err.splitlines() if line.strip()]
+    assert rc == 2 and len(err) == 1 and err[0].startswith(f"propulsor: error: {key} = ") and fragment in err[0], err
+    assert not out.exists()
+
+
+def test_bed_gives_a_quick_profile():
+    p = load_printer("generic", bed="180x180x180")
+    assert p.bed == (180.0, 180.0, 180.0) and "--bed 180x180x180" in p.label
+    assert parse_bed("250 × 210 × 220")["bed_y_mm"] == 210.0
+    for bad in ("180", "180x", "axbxc", "180x180x180x1"):
+        with pytest.raises(InputError, match="--bed = "):
+            parse_bed(bad)
+    with pytest.raises(InputError, match=r"printer\.bed_x_mm = 40\.0: must be >= 50"):
+        load_printer("generic", bed="40x180x180")
+
+
+def test_an_unknown_printer_says_how_to_give_one():
+    with pytest.raises(InputError, match="or the path of your own profile.*--bed 180x180x180"):
+        load_printer("prusa_mini_plus")
+    with pytest.raises(InputError, match="no such profile file"):
+        load_printer("nowhere/my_printer.toml")
+
+
+# --- kits on a 180 mm bed: one fast case here; every part file on every profile in make check -----------
+
+import json  # noqa: E402
+import shutil  # noqa: E402
+
+needs_slicer = pytest.mark.skipif(shutil.which("prusa-slicer") is None,
+                                  reason="PrusaSlicer is not installed (apt-get install prusa-slicer)")
+
+
+def _kit(tmp_path, part: str, *args) -> tuple[int, Path, dict | None]:
+    out = tmp_path / f"{part}_kit"
+    rc = main(["print", str(ROOT / "parts" / f"{part}.toml"), "--out", str(out), "-q", "--slice", "no", *args])
+    m = json.loads((out / "manifest.json").read_text()) if rc == 0 else None
+    return rc, out, m
+
+
+def _assert_sound(m: dict) -> None:
+    bad = [c["name"] for c in m["checks"] if not c["passed"] and c["name"] not in m.get("expected_failures", [])]
+    assert bad == []
+
+
+def test_the_seed_002_pair_prints_on_a_180_mm_bed_with_unequal_pins(tmp_path):
+    rc, out, m = _kit(tmp_path, "ncg_seed002", "--printer", "prusa_mini")
+    assert rc == 0
+    _assert_sound(m)
+    d, checks = m["derived"], {c["name"]: c for c in m["checks"]}
+    assert d["scale_S"] == 1.5 and d["printer"] == "prusa_mini" and d["bed_mm"] == [180.0, 180.0, 180.0]
+    # the bores 16 / 40 mm: pins of unequal standard diameters, each measured in its own hole
+    assert (d["pin_driver_d_mm"], d["pin_driven_d_mm"]) == (10.0, 12.0)
+    for name in ("pin_driver_in_base", "pin_driven_in_base", "driver_on_pin", "driven_on_pin", "handle_in_driver"):
+        assert checks[f"fit.{name}"]["passed"] and "measured" in checks[f"fit.{name}"]["message"]
+    guide = (out / "print_guide.md").read_text()
+    assert "Prusa MINI+" in guide and "⌀10 mm steel dowel pin" in guide and "clearance" in guide
+    assert "Prusa MINI+, 180 × 180 mm bed" in (out / "print_report.md").read_text()
+    for pic in ("assembled_side", "exploded", "step_1", "step_2", "step_3"):
+        assert (out / "plots" / f"{pic}.png").is_file()
+
+
+@pytest.mark.slicer
+@needs_slicer
+def test_road_wheel_on_a_quick_180_bed_and_its_coupon_plate_slices(tmp_path):
+    from propulsor.printing.slicer import slice_plate
+
+    rc, out, m = _kit(tmp_path, "road_wheel", "--bed", "180x180x180")
+    assert rc == 0
+    _assert_sound(m)
+    assert m["derived"]["scale_S"] == 4.0 and m["derived"]["printer"] == "bed_180x180x180"
+    p = load_printer("generic", bed="180x180x180")
+    r = slice_plate(out / "plate_1.3mf", p.bed_shape(), tmp_path / "p1.gcode", args=p.slicer_args())
+    assert r.ok and r.all_manifold and r.off_bed(180.0, 180.0) == [] and r.stats["time_s"] > 0
+
+
+def _profiles() -> list[tuple[str, list[str]]]:
+    """Every built-in profile and a quick --bed, one of each distinct printer (profiles that differ only in
+    their names build the same kit)."""
+    import dataclasses
+
+    seen, out = set(), []
+    for name, args in [(n, ["--printer", n]) for n in printer_names()] + [("bed180", ["--bed", "180x180x180"])]:
+        p = load_printer(name, bed="180x180x180") if name == "bed180" else load_printer(name)
+        key = tuple(v for f, v in dataclasses.asdict(p).items() if f not in ("name", "title"))
+        if key not in seen:
+            seen.add(key)
+            out.append((name, args))
+    return out
+
+
+PART_FILES = sorted(f.stem for f in (ROOT / "parts").glob("*.toml"))
+
+
+@pytest.mark.sweep
+@pytest.mark.slicer
+@needs_slicer
+@pytest.mark.parametrize("profile, args", _profiles(), ids=[n for n, _ in _profiles()])
+@pytest.mark.parametrize("part", PART_FILES)
+def test_every_part_file_prints_on_every_profile_and_slices(tmp_path, part, profile, args):
+    from propulsor.printing.slicer import slice_kit
+
+    rc, out, m = _kit(tmp_path, part, *args)
+    assert rc == 0
+    _assert_sound(m)
+    p = load_printer(profile, bed="180x180x180") if profile == "bed180" else load_printer(profile)
+    for plate, r, off in slice_kit(out, p, tmp_path):
+        assert r.ok and r.all_manifold and off == [], (plate, r.message, r.objects)

@@ -1,0 +1,99 @@
+"""Print planning (printing/planning.py, slicer.py): the kit's print time and filament are PrusaSlicer's
+for the stated settings; without a slicer the filament is estimated at the stated infill."""
+
+from __future__ import annotations
+
+import csv
+import re
+import shutil
+import subprocess
+
+import pytest
+import trimesh
+
+from propulsor.printing.planning import estimate_g, hours
+from propulsor.printing.printers import load_printer
+from propulsor.printing.slicer import duration_s, gcode_stats
+
+needs_slicer = pytest.mark.skipif(shutil.which("prusa-slicer") is None,
+                                  reason="PrusaSlicer is not installed (apt-get install prusa-slicer)")
+
+TAIL = """; filament used [mm] = 7028.44
+; filament used [cm3] = 16.91
+; filament used [g] = 20.96
+; total filament used [g] = 20.96
+; total filament cost = 0.00
+; estimated printing time (normal mode) = 1d 2h 17m 3s
+"""
+
+
+def test_gcode_comments_are_read():
+    s = gcode_stats(TAIL)
+    assert s == {"time_s": 86400 + 2 * 3600 + 17 * 60 + 3, "filament_mm": 7028.44, "filament_cm3": 16.91,
+                 "filament_g": 20.96}
+    assert duration_s("45m 0s") == 2700 and duration_s("12s") == 12
+    assert gcode_stats("; nothing here\n") == {}
+    assert hours(8220) == "2 h 17 min" and hours(2700) == "45 min"
+
+
+def test_the_estimate_is_at_the_stated_infill_not_solid():
+    p = load_printer("generic")  # 15 % infill, 3 perimeters of 0.4 mm
+    cube = trimesh.creation.box(extents=(40.0, 40.0, 40.0))
+    solid_g = 64.0 * p.density_g_cm3
+    g = estimate_g([cube], p)
+    shell = 6 * 1600.0 * 1.2 / 1000.0  # cm³: the surface × 3 × 0.4 mm
+    assert g == pytest.approx((shell + 0.15 * (64.0 - shell)) * p.density_g_cm3)
+    assert 0.2 * solid_g < g < 0.5 * solid_g
+    full = load_printer("generic", {"infill_percent": 100.0})
+    assert estimate_g([cube], full) == pytest.approx(solid_g)
+    # a thin pin is all wall: solid whatever the infill
+    pin = trimesh.creation.cylinder(radius=1.0, height=20.0, sections=64)
+    assert estimate_g([pin], p) == pytest.approx(float(pin.volume) / 1000.0 * p.density_g_cm3)
+
+
+def _tiny_kit(printer):
+    from propulsor.printing.kit import Kit, Piece
+    from propulsor.printing.scale import ScaleChoice
+    from propulsor.solids.kernel import cylinder
+
+    pieces = [Piece("puck", cylinder(8.0, 0.0, 3.0), genus=0), Piece("peg", cylinder(4.0, 0.0, 6.0), genus=0)]
+    return Kit(part="road_wheel", printer=printer, scale=ScaleChoice(1.0, "test"), pieces=pieces)
+
+
+@pytest.mark.slicer
+@needs_slicer
+def test_report_time_and_filament_are_prusaslicer_s_for_the_same_settings(tmp_path):
+    from propulsor.params import load_params
+    from propulsor.parts.road_wheel.params import RoadWheelParams
+    from propulsor.parts.writer import OutputWriter
+    from propulsor.printing.kit import write_kit
+
+    printer = load_printer("prusa_mini", {"infill_percent": 25.0, "perimeters": 4})
+    out = tmp_path / "kit"
+    out.mkdir()
+    w = OutputWriter(out, "road_wheel", load_params(RoadWheelParams, {}))
+    w.report_name = "print_report.md"
+    try:
+        write_kit(_tiny_kit(printer), w, sliced=True)
+        assert w.finish() == []
+    finally:
+        w.close()
+    rows = list(csv.DictReader((out / "tables" / "plates.csv").open()))
+    assert len(rows) == 2 and rows[0]["names"] == "coupon, coupon_pin, coupon_key"  # the coupon prints first
+    # the same plate sliced here with the settings written out by hand
+    gcode = tmp_path / "same.gcode"
+    r = subprocess.run(["prusa-slicer", "--export-gcode", "--dont-arrange", "--bed-shape", "0x0,180x0,180x180,0x180",
+                        "--nozzle-diameter", "0.4", "--layer-height", "0.2", "--perimeters", "4", "--fill-density",
+                        "25%", "--top-solid-layers", "5", "--bottom-solid-layers", "4", "--filament-diameter", "1.75",
+                        "--filament-density", "1.24", "--temperature", "210", "--bed-temperature", "60",
+                        "--max-print-height", "180", "--first-layer-temperature", "215",
+                        "--first-layer-bed-temperature", "60", "--filament-type", "PLA",
+                        "--output", str(gcode), str(out / "plate_2.3mf")],
+                       capture_output=True, text=True, env={"PATH": "/usr/bin:/bin", "HOME": "/tmp", "LC_ALL": "C"})
+    assert r.returncode == 0, r.stderr[-500:]
+    text = gcode.read_text()
+    t = re.search(r"^; estimated printing time \(normal mode\) = (.+)$", text, re.M).group(1)
+    g = float(re.search(r"^; total filament used \[g\] = ([0-9.]+)", text, re.M).group(1))
+    assert int(rows[1]["sliced_time_s"]) == duration_s(t) and float(rows[1]["sliced_filament_g"]) == g
+    report = (out / "print_report.md").read_text()
+    assert f"{hours(duration_s(t))}, {g:.0f} g" in report and "25 % infill" in report and "4 perimeters" in report
