@@ -25,6 +25,14 @@ COMMON = {
     "pieces": ("", "printed pieces, every copy counted"),
     "filament_volume_cm3": ("cm³", "filament volume of all plates"),
     "filament_mass_g": ("g", "filament mass of all plates at the printer's filament density"),
+    "printer": ("", "the printer profile the kit was made for"),
+    "bed_mm": ("mm", "build volume of the printer: x, y, z"),
+    "pieces_volume_cm3": ("cm³", "solid volume of every printed piece (100 % infill)"),
+    "filament_estimate_g": ("g", "filament estimated at the profile's infill, perimeters and top/bottom layers "
+                                 "(used where the plates were not sliced)"),
+    "infill_percent": ("%", "sparse infill of the print settings"),
+    "print_time_s": ("s", "printing time of all plates, from PrusaSlicer's G-code (normal mode)"),
+    "filament_sliced_g": ("g", "filament of all plates, from PrusaSlicer's G-code"),
 }
 
 _PLACEHOLDER = re.compile(r"<([A-Za-z_][A-Za-z0-9_]*)>")
