@@ -24,7 +24,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
-from .table_law import MAX_BYTES, TableLaw
+from .table_law import TableLaw, read_table_text
 
 __all__ = ["PitchCurveLaw", "parse_pitch_curve", "read_pitch_curve"]
 
@@ -64,18 +64,8 @@ def parse_pitch_curve(text: str, key: str = "pitch_curve_file"):
 
 
 def read_pitch_curve(path: Path, key: str = "pitch_curve_file"):
-    path = Path(path)
-    try:
-        with open(path, "rb") as f:
-            raw = f.read(MAX_BYTES + 1)
-    except OSError as exc:
-        raise InputError(key, str(path), f"cannot be read: {exc.strerror or exc}") from None
-    if len(raw) > MAX_BYTES:
-        raise InputError(key, str(path), f"a pitch curve table is at most {MAX_BYTES} bytes")
-    try:
-        return parse_pitch_curve(raw.decode("utf-8-sig"), key)
-    except UnicodeDecodeError:
-        raise InputError(key, str(path), "must be UTF-8 text") from None
+    """``parse_pitch_curve`` of a file (InputError naming ``key`` if it cannot be read)."""
+    return parse_pitch_curve(read_table_text(path, key, "a pitch curve table"), key)
 
 
 def _curve(angle_deg, radius_mm, key):

@@ -71,21 +71,27 @@ def parse_law_table(text: str, key: str = "law_file") -> tuple[tuple[float, ...]
     return tuple(th), tuple(ph)
 
 
-def read_law_table(path: Path, key: str = "law_file") -> tuple[tuple[float, ...], tuple[float, ...]]:
-    """``parse_law_table`` of a file (InputError naming ``key`` if it cannot be read)."""
+def read_table_text(path: Path, key: str, what: str) -> str:
+    """The UTF-8 text of a CSV table a part file names under `key`: a regular file (never a FIFO or a
+    device, never waited on) of at most MAX_BYTES; InputError naming `key` otherwise."""
+    from ..regular_file import read_regular
+
     path = Path(path)
     try:
-        with open(path, "rb") as f:
-            raw = f.read(MAX_BYTES + 1)
+        raw = read_regular(path, MAX_BYTES)
     except OSError as exc:
         raise InputError(key, str(path), f"cannot be read: {exc.strerror or exc}") from None
-    if len(raw) > MAX_BYTES:
-        raise InputError(key, str(path), f"a law table is at most {MAX_BYTES} bytes")
+    except ValueError as exc:
+        raise InputError(key, str(path), f"{exc}; {what} is a CSV file of at most {MAX_BYTES} bytes") from None
     try:
-        text = raw.decode("utf-8-sig")
+        return raw.decode("utf-8-sig")
     except UnicodeDecodeError:
         raise InputError(key, str(path), "must be UTF-8 text") from None
-    return parse_law_table(text, key)
+
+
+def read_law_table(path: Path, key: str = "law_file") -> tuple[tuple[float, ...], tuple[float, ...]]:
+    """``parse_law_table`` of a file (InputError naming ``key`` if it cannot be read)."""
+    return parse_law_table(read_table_text(path, key, "a law table"), key)
 
 
 @dataclass(frozen=True)
