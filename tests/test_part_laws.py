@@ -87,3 +87,20 @@ def test_an_elliptical_pair_not_generable_says_what_would_make_it_so():
     with pytest.raises(InputError, match=r"^driver_shift = 0\.0: the elliptical law's pitch curves are not generable "
                                          r".*works with x >= .*or z_H >= \d+"):
         design(p)
+
+
+def test_inputs_listed_are_the_laws_own():
+    """The report and manifest list the inputs that apply: a walking pair's as before the other laws
+    existed (no ``law``, no other law's keys); an elliptical pair's without a_mm, b_mm, c_mm."""
+    from propulsor.params import applying_inputs
+    from propulsor.parts.noncircular_pair.params import LAW_KEYS, NoncircularPairParams
+
+    walking = applying_inputs(NoncircularPairParams())
+    assert "law" not in walking and "a_mm" in walking
+    assert not {k for law, keys in LAW_KEYS.items() if law != "walking" for k in keys} & set(walking)
+    ell = NoncircularPairParams(law="elliptical", eccentricity=0.3, driver_turns=1)
+    listed = applying_inputs(ell)
+    assert listed["law"] == "elliptical" and listed["eccentricity"] == 0.3
+    assert not {"a_mm", "b_mm", "c_mm", "law_file", "fourier_cos"} & set(listed)
+    assert ell.meaning("driver_turns").startswith("k: lobes")
+    assert NoncircularPairParams().meaning("driver_turns") == "n: driver turns per driven (carrier) turn; 1, 2 or 4"

@@ -128,6 +128,15 @@ class PartParams:
     def __post_init__(self) -> None:
         check_fields(self)
 
+    def applies(self, name: str) -> bool:
+        """Whether the input `name` applies to this design (is listed in the report and the manifest).
+        Every field by default; a part type whose inputs depend on a choice (a law) narrows it."""
+        return True
+
+    def meaning(self, name: str) -> str:
+        """The meaning of the input `name` for this design: its documented text by default."""
+        return next(f.metadata.get("doc", "") for f in dataclasses.fields(self) if f.name == name)
+
 
 def load_params(cls, mapping: dict[str, Any], validate: bool = True):
     """Build the parameter dataclass `cls` from a mapping: every value of its type and within its
@@ -261,3 +270,10 @@ def read_part_file(path: str | Path) -> tuple[str, dict[str, Any]]:
 
 def params_to_dict(obj) -> dict[str, Any]:
     return {f.name: getattr(obj, f.name) for f in dataclasses.fields(obj)}
+
+
+def applying_inputs(obj) -> dict[str, Any]:
+    """The inputs that apply to this design (``obj.applies``), in field order: what a report and a
+    manifest list.  The others hold their defaults (setting them is refused), so nothing is lost."""
+    applies = getattr(obj, "applies", lambda name: True)
+    return {f.name: getattr(obj, f.name) for f in dataclasses.fields(obj) if applies(f.name)}

@@ -31,7 +31,7 @@ from ..check import Check
 from ..export.glossary import manifest_glossary
 from ..export.report import md_text, unit_from_name  # noqa: F401  (unit_from_name: public here too)
 from ..parallel import fork_pool, inline, threads_ok
-from ..params import params_to_dict, read_part_meta
+from ..params import applying_inputs, read_part_meta
 from ..write_root import prepare
 
 
@@ -320,10 +320,12 @@ class OutputWriter:
         self.close()
 
         self.add_checks([self.explained_check()])
-        inputs = params_to_dict(self.params)
+        inputs = applying_inputs(self.params)
         notes = list(self.notes)
-        report_inputs = {f.name: (inputs[f.name], f.metadata.get("unit", ""), f.metadata.get("doc", ""))
-                         for f in dataclasses.fields(self.params)}
+        meaning = getattr(self.params, "meaning", lambda name: None)
+        report_inputs = {f.name: (inputs[f.name], f.metadata.get("unit", ""),
+                                  meaning(f.name) or f.metadata.get("doc", ""))
+                         for f in dataclasses.fields(self.params) if f.name in inputs}
         explained = self.explained()
         by_path = {e.path: e for e in explained}
         report_derived = {k: (v, by_path[k].unit, by_path[k].meaning) if k in by_path else (v, unit_from_name(k), "")

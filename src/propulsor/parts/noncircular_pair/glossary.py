@@ -70,7 +70,7 @@ GLOSSARY = {
     **{f"compare_<other>_{k}": (unit, f"{meaning}, with the teeth made by the other method ({{other}}), for comparison")
        for k, (unit, meaning) in _PAIR.items()},
     # laws without a hub (elliptical, fourier, table)
-    "law": ("", "the drive law the part file names (walking, elliptical, fourier, table)"),
+    "law": ("", "the drive law the part file names (walking, elliptical, fourier, table, pitch_curve)"),
     "law_periods": ("", "periods of the law per driven turn: lobes of the driven wheel"),
     "ratio_min": ("", "least gear ratio U = dθ/dφ of the law"),
     "ratio_max": ("", "largest gear ratio U = dθ/dφ of the law"),

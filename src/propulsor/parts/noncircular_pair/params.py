@@ -141,6 +141,27 @@ class NoncircularPairParams(PartParams):
             FourierLaw(self.driver_turns, tuple(float(v) for v in self.fourier_cos),
                        tuple(float(v) for v in self.fourier_sin))
 
+    #: what ``driver_turns`` means under each law (the report states the one that applies)
+    _DRIVER_TURNS_MEANING = {
+        "walking": "n: driver turns per driven (carrier) turn; 1, 2 or 4",
+        "elliptical": "k: lobes of the driven wheel (driver turns per driven turn)",
+        "fourier": "k: driver turns per driven turn (the law's theta / k)",
+        "table": "driver turns per driven turn: from the table",
+        "pitch_curve": "k: lobes of the driven wheel (driver turns per driven turn)",
+    }
+
+    def applies(self, name: str) -> bool:
+        """The law's own keys and every shared one; another law's keys (refused when set) are not
+        listed, nor ``law`` itself for the default walking law."""
+        if name == "law":
+            return self.law != "walking"
+        return not any(name in keys for other, keys in LAW_KEYS.items() if other != self.law)
+
+    def meaning(self, name: str) -> str:
+        if name == "driver_turns":
+            return self._DRIVER_TURNS_MEANING[self.law]
+        return super().meaning(name)
+
     def validate(self) -> None:
         self._validate_law_keys()
         if self.law != "walking":
