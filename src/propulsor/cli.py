@@ -258,7 +258,7 @@ def cmd_explore(args) -> int:
         return fail_input(exc)
     ok = sum(r["status"] == "ok" for r in outcome.rows)
     progress(f"{len(outcome.rows)} variants ({outcome.ran} run now, {outcome.seconds:.1f} s): {ok} meet every "
-             f"requirement; {out / 'results.csv'}, {out / 'front.csv'}, {out / 'pareto_front.png'}")
+             f"requirement; {out / 'results.csv'} (and .parquet), {out / 'front.csv'}, {out / 'study.html'}")
     if args.build_best:
         build_best_variants(study, outcome, args.build_best, progress=progress)
     return EXIT_OK

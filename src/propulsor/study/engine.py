@@ -15,8 +15,9 @@ from pathlib import Path
 
 from ..errors import InputError
 from .evaluate import evaluate
-from .results import Table, plot_front, ranked, requirement_failure, write_front
+from .results import plot_front, ranked, requirement_failure, write_front
 from .spec import Study, variant_key
+from .table import Table
 
 #: the marker that says a folder holds a study propulsor wrote (it may be written over)
 MARKER = "study.json"
@@ -68,6 +69,20 @@ def vet_folder(out: Path) -> None:
         raise InputError("--out", str(out), f"holds files but no {MARKER}: not a study folder; choose another")
 
 
+def write_marker(out: Path, study: Study, rows=None, rank=None) -> None:
+    """study.json: what the folder holds (the gallery reads it); with the rows once the study is done."""
+    from .. import __version__
+    from ..export.html import write_atomically
+
+    info = {"study": str(study.path), "title": study.title, "part": str(study.part_file), "depth": study.depth,
+            "version": __version__}
+    if rows is not None:
+        info.update({"variants": len(rows), "meeting_requirements": len(rank),
+                     "front": [r["variant"] for layer, r in rank if layer == 1],
+                     "objectives": {n: ("minimize" if n in study.minimize else "maximize") for n in study.objectives}})
+    write_atomically(out / MARKER, json.dumps(info, indent=1) + "\n")
+
+
 class Rate:
     """The progress line: count, rate, time left."""
 
@@ -96,8 +111,8 @@ def _span(s: float) -> str:
 
 def run(study: Study, out: Path, *, scheduler: str | None = None, workers: int | None = None,
         resume: bool = False, progress=lambda msg: None, client=None) -> Outcome:
-    """Run the study into folder `out`: results.csv, front.csv, pareto_front.png (and variants/ at depth
-    build).  Nothing is written before the study file, the folder and the scheduler are known good."""
+    """Run the study into folder `out`: results.csv, results.parquet, front.csv, pareto_front.png, study.html
+    (and variants/ at depth build).  Nothing is written before the study file, the folder and the scheduler are known good."""
     from .. import __version__
 
     vet_folder(out)
@@ -108,15 +123,12 @@ def run(study: Study, out: Path, *, scheduler: str | None = None, workers: int |
     try:
         n_workers = len(client.scheduler_info().get("workers", {}))
         out.mkdir(parents=True, exist_ok=True)
-        (out / MARKER).write_text(json.dumps({"study": str(study.path), "title": study.title, "part": str(study.part_file),
-                                              "depth": study.depth, "version": __version__}, indent=1) + "\n",
-                                  encoding="utf-8")
-        table = Table(out, study, resume)
+        write_marker(out, study)
+        keys = [variant_key(study, v, __version__) for v in study.variants]
+        table = Table(out, study, resume, keys)
         try:
             done = table.done_keys()
-            keys = [variant_key(study, v, __version__) for v in study.variants]
             todo = [(i, v, k) for i, (v, k) in enumerate(zip(study.variants, keys), 1) if k not in done]
-            table.rows = [r for r in table.rows if str(r["key"]) in set(keys)]
             before = len(study.variants) - len(todo)
             progress(f"{study.title}: {len(study.variants)} variants at depth {study.depth} on {n_workers} Dask "
                      f"worker(s)" + (f"; {before} already in {table.path}" if before else ""))
@@ -128,10 +140,11 @@ def run(study: Study, out: Path, *, scheduler: str | None = None, workers: int |
         rows = sorted(table.rows, key=lambda r: int(r["variant"]))
         rank = ranked(study, rows)
         write_front(out, study, rank)
-        plot_front(out, study, rows, rank)
+        points = plot_front(out, study, rows, rank)
         from .page import write_page
 
-        write_page(out, study, rows, rank)
+        write_page(out, study, rows, rank, points=points)
+        write_marker(out, study, rows, rank)
         return Outcome(rows, rank, len(todo), seconds, n_workers, out)
     finally:
         if own:
