@@ -450,3 +450,33 @@ def test_the_table_read_back_for_resume_keeps_text_keys_and_drops_stale_and_cut_
     assert [r["key"] for r in rows] == ["1234e567", "abcdef"] and rows[0]["T_at_V_max_C"] == repr(1.1)
     pq_rows = parquet_is_csv(out)
     assert pq_rows[0]["peak_pressure_q_m_MPa"] == 1 / 3 and pq_rows[0]["contact_length_l_mm"] is None
+
+
+def test_a_study_in_the_gallery_folder_is_linked_from_the_gallery(tmp_path, monkeypatch, capsys):
+    """`propulsor explore --out output/X` (the gallery's folder) rewrites output/index.html with the study:
+    its title (escaped), counts, front picture and page, whose points link to the variants;
+    `propulsor gallery` of a folder holding only studies writes it too; a broken study.json is a note."""
+    monkeypatch.chdir(tmp_path)
+    study = write(tmp_path, STUDY.replace('title = "road wheel: tyre width x load"', 'title = "<b>wheel</b> & co"')
+                  .replace("load_N = { from = 30000.0, to = 50000.0, step = 10000.0 }", "load_N = [30000.0]"))
+    assert main(["explore", str(study), "--out", "output/wheel_study", "--workers", "1", "-q"]) == 0
+    index = (tmp_path / "output" / "index.html").read_text()
+    assert '<a href="wheel_study/study.html">&lt;b&gt;wheel&lt;/b&gt; &amp; co</a>' in index
+    assert "<b>wheel" not in index and "depth design · 2 variants · " in index
+    assert '<img src="wheel_study/pareto_front.png"' in index and 'href="wheel_study/results.parquet"' in index
+    assert '<a href="#design-studies">design studies</a>' in index
+    page = (tmp_path / "output" / "wheel_study" / "study.html").read_text()
+    rows = read_rows(tmp_path / "output" / "wheel_study")
+    met = [r for r in rows if r["status"] == "ok"]
+    assert page.count("<area ") == len(met) + sum(r["status"] == "rejected" for r in rows) >= 1
+    for r in met:
+        assert f'href="#v{r["variant"]}"' in page and f'<tr id="v{r["variant"]}"' in page
+    # the gallery command on a folder of studies only; a study.json that is not JSON is a note
+    (tmp_path / "output" / "index.html").unlink()
+    bad = tmp_path / "output" / "broken"
+    bad.mkdir()
+    (bad / "study.json").write_text("{<script>")
+    (bad / "study.html").write_text("x")
+    assert main(["gallery", "output", "-q"]) == 0
+    index = (tmp_path / "output" / "index.html").read_text()
+    assert "wheel_study/study.html" in index and "broken: study.json not readable: " in index
