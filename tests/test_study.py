@@ -480,3 +480,43 @@ def test_a_study_in_the_gallery_folder_is_linked_from_the_gallery(tmp_path, monk
     assert main(["gallery", "output", "-q"]) == 0
     index = (tmp_path / "output" / "index.html").read_text()
     assert "wheel_study/study.html" in index and "broken: study.json not readable: " in index
+
+
+def test_a_variant_runs_on_one_core_and_the_longest_are_submitted_first(monkeypatch, tmp_path):
+    """A variant's build runs inline (a budget of one process: no forked helpers, no OCCT threads) so the
+    cluster's one-thread workers fill the cores; the variants go to the scheduler longest first by the
+    part's size estimate."""
+    import distributed
+
+    from propulsor import parallel
+    from propulsor.study import engine, load_study
+    from propulsor.study import evaluate as ev
+
+    monkeypatch.delenv("PROPULSOR_JOBS", raising=False)
+    seen = []
+    monkeypatch.setattr(ev, "_evaluate", lambda *a: seen.append(parallel.jobs_budget()) or {})
+    ev.evaluate("road_wheel", {}, None, {}, "design", ())
+    assert seen == [1] and "PROPULSOR_JOBS" not in os.environ
+
+    study = load_study(write(tmp_path, f"""
+[study]
+part = "{ROOT / 'parts' / 'ncg_seed002.toml'}"
+depth = "proof"
+[vary]
+driven_teeth = [64, 96, 80]
+[objectives]
+minimize = ["speed_ripple"]
+"""))
+    submitted = []
+
+    class Client:
+        loop = None
+
+        def submit(self, fn, *args, key, priority, **kw):
+            submitted.append((args[3]["driven_teeth"], priority))
+            return key
+
+    monkeypatch.setattr(distributed, "as_completed", lambda futures, loop=None: [])
+    todo = [(i, v, f"k{i}") for i, v in enumerate(study.variants, 1)]
+    engine._evaluate_all(Client(), study, tmp_path, todo, None, None)
+    assert submitted == [(96, 3), (80, 2), (64, 1)]

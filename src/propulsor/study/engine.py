@@ -153,16 +153,35 @@ def run(study: Study, out: Path, *, scheduler: str | None = None, workers: int |
                 cluster.close()
 
 
+def expected_seconds(study: Study, values: dict) -> float:
+    """The variant's build time by the part type's size estimate (parts/size.py), from its values alone;
+    0 where the estimate needs the design or the values are refused (such a variant fails fast)."""
+    from ..params import load_params
+    from ..parts import check_size, get_part_type, size_needs_design
+
+    try:
+        pt = get_part_type(study.part_type)
+        if size_needs_design(pt):
+            return 0.0
+        params = load_params(pt.params_cls, {**study.base, **values}, validate=False)
+        return float(check_size(pt, params, study.part_file).seconds)
+    except Exception:  # noqa: BLE001 - the variant's own trouble is its row's, not the order's
+        return 0.0
+
+
 def _evaluate_all(client, study: Study, out: Path, todo, table: Table, rate: Rate) -> None:
+    """Submit every variant, the longest first by the size estimate (the last tasks short, so that no
+    worker idles at the end while another finishes a long one); a row as each finishes."""
     from distributed import as_completed
 
     wanted = study.values
     source = str(study.part_file)
     futures = {}
-    for i, values, key in todo:
+    order = sorted(todo, key=lambda t: (-expected_seconds(study, t[1]), t[0]))
+    for j, (i, values, key) in enumerate(order):
         build_dir = str((out / "variants" / key).resolve()) if study.depth == "build" else None
         fut = client.submit(evaluate, study.part_type, study.base, source, values, study.depth, wanted, build_dir,
-                            key=f"propulsor-variant-{key}", pure=False, retries=1)
+                            key=f"propulsor-variant-{key}", pure=False, retries=1, priority=len(order) - j)
         futures[fut] = (i, values, key)
     for fut in as_completed(list(futures), loop=client.loop):
         i, values, key = futures.pop(fut)
