@@ -42,7 +42,7 @@ def found_studies(folder: str | Path) -> list[dict]:
     from ..regular_file import read_regular
 
     folder = Path(folder)
-    out = []
+    out: list[dict] = []
     for d in sorted(folder.iterdir()):
         if d.name.startswith(".") or not d.is_dir() or not inside(d, MARKER) or not inside(d, PAGE):
             continue

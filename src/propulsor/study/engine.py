@@ -74,8 +74,8 @@ def write_marker(out: Path, study: Study, rows=None, rank=None) -> None:
     from .. import __version__
     from ..export.html import write_atomically
 
-    info = {"study": str(study.path), "title": study.title, "part": str(study.part_file), "depth": study.depth,
-            "version": __version__}
+    info: dict = {"study": str(study.path), "title": study.title, "part": str(study.part_file), "depth": study.depth,
+                  "version": __version__}
     if rows is not None:
         info.update({"variants": len(rows), "meeting_requirements": len(rank),
                      "front": [r["variant"] for layer, r in rank if layer == 1],
