@@ -24,8 +24,11 @@ What is measured, and how (each the same for the three runs):
   process's max RSS (and that of any process it forked), read on the worker after the study.
 The rows of the three runs are checked equal (the objectives, to the last digit).
 
-Measured here (2 cores shared with other work, load average 5-10, so not the targets' conditions):
-see the note of the last run below.  The 100-variant numbers are taken on an idle machine.
+Measured here with ``bench/bench_study.py 6`` (2 cores shared with other work, load average 5.3 rising to
+10.2 during the run, so not the targets' conditions): inline 238.4 s (39.7 s a variant); 1 worker 313.6 s
+(1.15 per min), 2 workers 159.2 s (2.26 per min): ratio 1.97; overhead +31.5 % (the inline run had the
+lighter load: not a measure of the engine); peak memory about 1.05 GB per worker (+61 MB forked); rows equal
+to the inline ones.  The 100-variant numbers are taken on an idle machine.
 """
 
 from __future__ import annotations
