@@ -1,30 +1,50 @@
 """Benchmark: a design study on the Dask engine with 1 worker and with 2 workers, against the same
-evaluations called inline (one after the other in this process).
+evaluations called inline (one after the other in this process), in one run.
 
 Run: .venv/bin/python bench/bench_study.py [variants] [depth] [part file]
 Default: 100 `proof`-depth variants of the seed-002 pair (parts/ncg_seed002.toml; face width and
-backlash sampled, so every variant does the same work).  Targets: time(1 worker) / time(2 workers)
->= 1.8 (the work scales with the cores) and the engine's overhead per variant <= 5 % against inline.
-Prints variants per minute and the peak memory (max RSS) of each worker.  The workers are warmed up
-(the project imported, one variant evaluated) before the clock starts, as the inline loop is.
+backlash sampled, so every variant does about the same work).  Needs both cores idle (the ratio is
+the point): run it alone; a shared machine gives a smaller ratio.  A short check that it works:
+``bench/bench_study.py 6``.
 
-Measured here (2 cores shared with other work, load average 5-10): 4 proof-depth seed-002 variants —
-inline 31.1 s a variant; 1 worker 123.3 s (1.9 per min), 2 workers 79.6 s (3.0 per min): ratio 1.55; engine
-overhead -0.9 % a variant; peak memory 0.9 GB per worker (max RSS; the build's forked workers beside it).
-16 design-depth final-drive variants: 0.55 s inline, 140 per min on 1 worker, 179 per min on 2 (ratio 1.28
-under load average 6; 0.7 GB per worker).  The inline time is the mean of the first 4 variants only, so the
-overhead figure is within its noise (-22 % to -1 % measured).  The 100-variant run (about 50 min on one
-worker here) was not made.
+What is measured, and how (each the same for the three runs):
+- inline: the N variants by :func:`propulsor.study.evaluate.evaluate`, one after the other, in this
+  process — the baseline;
+- 1 worker / 2 workers: the same N variants through the engine (:func:`propulsor.study.engine.run`:
+  submit, gather, the table written as each finishes, the front, the page) on a LocalCluster of that
+  many worker processes, as the engine makes its own: one thread per worker, numpy's BLAS / OpenMP
+  threads at 1 (set here before numpy loads, so this process and every worker inherits them; Dask's
+  nanny sets the same), each variant on one core (the build's forked helpers and OCCT's threads off:
+  evaluate.one_process), the longest submitted first, only the row travelling back;
+- warm-up before each clock starts: this process, and each worker (``client.run`` on every worker),
+  imports the project and evaluates the base part file once (not one of the N variants), so neither
+  process start-up nor imports are timed;
+- overhead = (1-worker wall − inline wall) / inline wall (target <= 5 %); ratio = 1-worker wall /
+  2-worker wall (target >= 1.8); variants per minute = N / wall; peak memory per worker = the worker
+  process's max RSS (and that of any process it forked), read on the worker after the study.
+The rows of the three runs are checked equal (the objectives, to the last digit).
+
+Measured here with ``bench/bench_study.py 6`` (2 cores shared with other work, load average 5.3 rising to
+10.2 during the run, so not the targets' conditions): inline 238.4 s (39.7 s a variant); 1 worker 313.6 s
+(1.15 per min), 2 workers 159.2 s (2.26 per min): ratio 1.97; overhead +31.5 % (the inline run had the
+lighter load: not a measure of the engine); peak memory about 1.05 GB per worker (+61 MB forked); rows equal
+to the inline ones.  The 100-variant numbers are taken on an idle machine.
 """
 
 from __future__ import annotations
 
-import logging
-import resource
-import sys
-import tempfile
-import time
-from pathlib import Path
+import os
+
+for _name in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUMEXPR_NUM_THREADS",
+              "VECLIB_MAXIMUM_THREADS", "NUMBA_NUM_THREADS"):
+    os.environ.setdefault(_name, "1")  # before numpy loads: this process and the workers it starts
+
+import logging  # noqa: E402
+import resource  # noqa: E402
+import sys  # noqa: E402
+import tempfile  # noqa: E402
+import time  # noqa: E402
+from pathlib import Path  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 TARGET_RATIO, TARGET_OVERHEAD = 1.8, 0.05
@@ -61,65 +81,96 @@ minimize = ["ring_outer_d_mm"]
     return p
 
 
-def _maxrss_mb() -> float:
-    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+def _worker_facts() -> dict:
+    """On a worker: its peak memory (MB, itself and any process it forked) and its thread settings."""
+    import threading
+
+    own = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+    kids = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024.0
+    return {"rss_mb": own, "children_rss_mb": kids, "OMP_NUM_THREADS": os.environ.get("OMP_NUM_THREADS"),
+            "OPENBLAS_NUM_THREADS": os.environ.get("OPENBLAS_NUM_THREADS"), "threads": threading.active_count()}
 
 
 def _warm(study) -> None:
+    """Import the project and evaluate the base part once (not one of the study's variants)."""
     from propulsor.study.evaluate import evaluate
 
-    v = study.variants[0]
-    evaluate(study.part_type, study.base, str(study.part_file), v, study.depth, study.values)
+    evaluate(study.part_type, study.base, str(study.part_file), {}, study.depth, study.values)
 
 
-def on_cluster(study, out: Path, n_workers: int) -> tuple[float, list[float]]:
+def inline(study) -> tuple[float, dict]:
+    from propulsor.study.evaluate import evaluate
+
+    _warm(study)
+    t0 = time.perf_counter()
+    rows = {}
+    for i, v in enumerate(study.variants, 1):
+        rows[i] = evaluate(study.part_type, study.base, str(study.part_file), v, study.depth, study.values)
+    return time.perf_counter() - t0, rows
+
+
+def on_cluster(study, out: Path, n_workers: int) -> tuple[float, dict, list[dict]]:
+    import dask
     from distributed import Client, LocalCluster
 
     from propulsor.study.engine import run
 
-    import dask
-
     with dask.config.set({"distributed.worker.daemon": False}):  # as the engine's own local cluster
-        cluster = LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True, dashboard_address="127.0.0.1:0",
-                               silence_logs=logging.CRITICAL)
+        cluster = LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True,
+                               dashboard_address="127.0.0.1:0", silence_logs=logging.CRITICAL)
     with cluster, Client(cluster, set_as_default=False) as client:
+        info = client.scheduler_info()["workers"]
+        assert len(info) == n_workers and all(w["nthreads"] == 1 for w in info.values()), info
         client.run(_warm, study)
         t0 = time.perf_counter()
         outcome = run(study, out, client=client)
         dt = time.perf_counter() - t0
-        rss = list(client.run(_maxrss_mb).values())
-    bad = [r for r in outcome.rows if r["status"] not in ("ok", "rejected")]
-    if bad:
-        print(f"  {len(bad)} variants did not evaluate: {bad[0]['reason']}")
-    return dt, rss
+        facts = list(client.run(_worker_facts).values())
+    return dt, {r["variant"]: r for r in outcome.rows}, facts
+
+
+def _same(rows_inline: dict, rows: dict, names) -> int:
+    """How many variants differ from the inline run in a value asked for (0: the engine changes nothing)."""
+    bad = 0
+    for i, r in rows_inline.items():
+        if any(repr(r["values"].get(n)) != repr(rows[i].get(n)) for n in names):
+            bad += 1
+    return bad
 
 
 def main(n: int = 100, depth: str = "proof", part: str = "parts/ncg_seed002.toml") -> int:
     from propulsor.study import load_study
-    from propulsor.study.evaluate import evaluate
 
+    load_before = os.getloadavg()[0]
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         study = load_study(_study_file(tmp, n, depth, (ROOT / part).resolve()))
         n = len(study.variants)
-        _warm(study)
-        k_inline = max(1, min(n, 4))
-        t0 = time.perf_counter()
-        for v in study.variants[:k_inline]:
-            evaluate(study.part_type, study.base, str(study.part_file), v, study.depth, study.values)
-        inline = (time.perf_counter() - t0) / k_inline
-        t1, rss1 = on_cluster(study, tmp / "w1", 1)
-        t2, rss2 = on_cluster(study, tmp / "w2", 2)
+        t0, rows0 = inline(study)
+        t1, rows1, facts1 = on_cluster(study, tmp / "w1", 1)
+        t2, rows2, facts2 = on_cluster(study, tmp / "w2", 2)
+    bad = [r["reason"] for r in rows0.values() if r["status"] != "ok"]
     ratio = t1 / t2
-    overhead = t1 / (n * inline) - 1.0
-    print(f"{n} {depth}-depth variants of {part}: inline {inline:.2f} s per variant (first {k_inline}); "
-          f"1 worker {t1:.1f} s ({n / t1 * 60:.1f} per min), 2 workers {t2:.1f} s ({n / t2 * 60:.1f} per min); "
-          f"ratio {ratio:.2f} (target >= {TARGET_RATIO}); engine overhead per variant {overhead * 100:+.1f} % "
-          f"(target <= {TARGET_OVERHEAD * 100:.0f} %); peak memory per worker {max(rss1):.0f} MB (1 worker), "
-          f"{', '.join(f'{x:.0f}' for x in rss2)} MB (2 workers)")
-    return 0 if ratio >= TARGET_RATIO and overhead <= TARGET_OVERHEAD else 1
+    overhead = (t1 - t0) / t0
+    differ = _same(rows0, rows1, study.values) + _same(rows0, rows2, study.values)
+
+    def mem(facts):
+        return ", ".join(f"{f['rss_mb']:.0f}" + (f" (+{f['children_rss_mb']:.0f} forked)" if f["children_rss_mb"] else "")
+                         for f in facts)
+
+    print(f"{n} {depth}-depth variants of {part} ({len(bad)} not ok{': ' + bad[0] if bad else ''}):\n"
+          f"  inline     {t0:8.1f} s  {n / t0 * 60:6.2f} per min  ({t0 / n:.2f} s a variant)\n"
+          f"  1 worker   {t1:8.1f} s  {n / t1 * 60:6.2f} per min  peak memory {mem(facts1)} MB\n"
+          f"  2 workers  {t2:8.1f} s  {n / t2 * 60:6.2f} per min  peak memory {mem(facts2)} MB per worker\n"
+          f"  ratio 1 worker / 2 workers {ratio:.2f} (target >= {TARGET_RATIO}); engine overhead "
+          f"(1 worker - inline) / inline {overhead * 100:+.1f} % (target <= {TARGET_OVERHEAD * 100:.0f} %)\n"
+          f"  workers: 1 thread each, OMP_NUM_THREADS={facts2[0]['OMP_NUM_THREADS']}, "
+          f"OPENBLAS_NUM_THREADS={facts2[0]['OPENBLAS_NUM_THREADS']}; rows differing from inline: {differ}; "
+          f"load average before/after: {load_before:.1f}/{os.getloadavg()[0]:.1f}")
+    return 0 if ratio >= TARGET_RATIO and overhead <= TARGET_OVERHEAD and not differ else 1
 
 
 if __name__ == "__main__":
     a = sys.argv[1:]
-    sys.exit(main(int(a[0]) if a else 100, a[1] if len(a) > 1 else "proof", a[2] if len(a) > 2 else "parts/ncg_seed002.toml"))
+    sys.exit(main(int(a[0]) if a else 100, a[1] if len(a) > 1 else "proof",
+                  a[2] if len(a) > 2 else "parts/ncg_seed002.toml"))

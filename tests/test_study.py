@@ -50,6 +50,29 @@ def read_rows(folder: Path) -> list[dict]:
         return list(csv.DictReader(f))
 
 
+def parquet_is_csv(folder: Path) -> list[dict]:
+    """results.parquet holds the rows of results.csv, each cell the CSV's value read as its column's type
+    (floats to the last digit); returns the Parquet rows."""
+    import math
+
+    import pyarrow.parquet as pq
+
+    table = pq.read_table(folder / "results.parquet")
+    csv_rows = read_rows(folder)
+    assert table.column_names == list(csv_rows[0]) if csv_rows else True
+    kind = {f.name: str(f.type) for f in table.schema}
+    read = {"int64": int, "double": float, "bool": lambda t: {"true": True, "false": False}[t], "string": str}
+    pq_rows = table.to_pylist()
+    assert len(pq_rows) == len(csv_rows)
+    for p, c in zip(pq_rows, csv_rows):
+        for name, text in c.items():
+            want = None if text == "" else read[kind[name]](text)
+            got = p[name]
+            assert type(got) is type(want) and (got == want or (isinstance(got, float) and math.isnan(got)
+                                                                and math.isnan(want))), (name, got, text)
+    return pq_rows
+
+
 # ---- study files checked whole: exit 2, one line naming it, nothing written -------------------------
 
 @pytest.mark.parametrize("change, named", [
@@ -188,6 +211,10 @@ def test_study_on_a_real_scheduler_each_row_is_the_variant_alone(cluster, tmp_pa
     derived = json.loads((tmp_path / "built" / "manifest.json").read_text())["derived"]
     for name in ("T_at_V_max_C", "peak_pressure_q_m_MPa", "contact_length_l_mm"):
         assert one[name] == repr(derived[name]), (name, one[name], derived[name])
+    # results.parquet: the same rows, typed columns
+    pq_rows = parquet_is_csv(out)
+    assert [type(pq_rows[0][c]) for c in ("variant", "key", "tyre_width_mm", "T_at_V_max_C", "all_checks_passed")] \
+        == [int, str, float, float, bool]
     front = list(csv.DictReader(open(out / "front.csv", newline="")))
     assert front and front[0]["pareto_layer"] == "1"
     assert (out / "pareto_front.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
@@ -199,8 +226,14 @@ def test_resume_runs_only_the_rest_and_a_failing_variant_is_a_row(cluster, tmp_p
 
     study = write(tmp_path, STUDY.replace("tyre_width_mm = [70.0, 90.0]", "hub_outer_d_mm = [210.0, 150.0]"))
     out = tmp_path / "out"
-    first = run(load_study(study), out, scheduler=cluster.address)
-    assert first.ran == 6
+    seen = []
+
+    def progress(msg):  # results.parquet is rewritten as each variant finishes
+        if "variants," in msg:
+            seen.append(len(parquet_is_csv(out)))
+
+    first = run(load_study(study), out, scheduler=cluster.address, progress=progress)
+    assert first.ran == 6 and seen == [1, 2, 3, 4, 5, 6]
     bad = [r for r in first.rows if r["hub_outer_d_mm"] == 150.0]
     assert len(bad) == 3 and all(r["status"] == "input error" and r["reason"].startswith("hub_outer_d_mm = 150.0")
                                  for r in bad)
@@ -210,6 +243,7 @@ def test_resume_runs_only_the_rest_and_a_failing_variant_is_a_row(cluster, tmp_p
     assert again.ran == 2
     rows = read_rows(out)
     assert sorted(int(r["variant"]) for r in rows) == [1, 2, 3, 4, 5, 6]
+    assert sorted(r["variant"] for r in parquet_is_csv(out)) == [1, 2, 3, 4, 5, 6]
     # --build-best: the best variant built fully, with its own parameters
     from propulsor.study import build_best_variants
 
@@ -261,11 +295,25 @@ def test_study_page_escapes_the_study_text_and_links_built_variants(tmp_path):
              "worker": "w"} for k in (1, 2)]
     (tmp_path / "variants" / "k2").mkdir(parents=True)
     (tmp_path / "variants" / "k2" / "report.html").write_text("x")
-    page = write_page(tmp_path, study, rows, ranked(study, rows)).read_text()
+    from propulsor.study.results import plot_front
+
+    rank = ranked(study, rows)
+    points = plot_front(tmp_path, study, rows, rank)
+    page = write_page(tmp_path, study, rows, rank, points=points).read_text()
+    # each point of the picture linked to its variant: its files, else its row of the table
+    from PIL import Image
+
+    w, h = Image.open(tmp_path / "pareto_front.png").size
+    assert sorted(v for v, _, _ in points) == [1, 2] and all(0 < x < w and 0 < y < h for _, x, y in points)
+    (x1, y1), (x2, y2) = [(x, y) for _, x, y in sorted(points)]
+    assert x2 > x1 and y2 > y1  # variant 2: the larger T_at_V_max_C (x) and the smaller pressure (y, down)
+    assert f'coords="{x2},{y2},6" href="variants/k2/report.html"' in page
+    assert f'coords="{x1},{y1},6" href="#v1"' in page and '<tr id="v1" class="front">' in page
+    assert 'usemap="#front"' in page and '<map name="front">' in page
     assert "<script>alert" not in page and "&lt;script&gt;alert(1)&lt;/script&gt; &amp; co" in page
     assert "<img src=x" not in page and "&lt;img src=x onerror=&quot;alert(2)&quot;&gt;" in page
     assert '<a href="variants/k2/report.html">2</a>' in page and 'href="variants/k1/' not in page
-    assert page.count('<tr class="front">') == 2  # neither dominates the other
+    assert page.count(' class="front">') == 2  # neither dominates the other
 
 
 def test_interrupted_study_keeps_the_finished_rows_and_resume_runs_the_rest(tmp_path):
@@ -371,3 +419,104 @@ def test_a_variant_evaluates_in_a_daemonic_worker_process():
     p.join()
     assert (row["status"], row["reason"]) == ("ok", ""), row
     assert 0.0 < row["values"]["speed_ripple"] < 0.05
+
+
+def test_the_table_read_back_for_resume_keeps_text_keys_and_drops_stale_and_cut_rows(tmp_path):
+    """--resume reads results.csv back as typed columns (a key of digits and an e stays text), keeps only
+    this study's variants, leaves out a line cut short, and writes both files anew with the same rows."""
+    from propulsor.study import load_study
+    from propulsor.study.table import Table
+
+    study = load_study(write(tmp_path, STUDY))
+    out = tmp_path / "out"
+    out.mkdir()
+
+    def row(k, key):
+        return {"variant": k, "key": key, "tyre_width_mm": 70.0, "load_N": 30000.0, "T_at_V_max_C": 0.1 + k,
+                "peak_pressure_q_m_MPa": 1 / 3, "contact_length_l_mm": None, "all_checks_passed": k == 1,
+                "status": "ok", "reason": "", "failed_checks": "", "seconds": 1.5, "worker": "h:1"}
+
+    t = Table(out, study, False)
+    for k, key in enumerate(("1234e567", "0000000000000001", "abcdef"), 1):
+        t.add(row(k, key))
+    t.close()
+    text = (out / "results.csv").read_text()
+    (out / "results.csv").write_text(text[:-5])  # the last line cut short
+    t = Table(out, study, True, keys=["1234e567", "abcdef"])  # the second row is another version's
+    assert [r["key"] for r in t.rows] == ["1234e567"] and t.done_keys() == {"1234e567"}
+    t.add(row(3, "abcdef"))
+    t.close()
+    rows = read_rows(out)
+    assert [r["key"] for r in rows] == ["1234e567", "abcdef"] and rows[0]["T_at_V_max_C"] == repr(1.1)
+    pq_rows = parquet_is_csv(out)
+    assert pq_rows[0]["peak_pressure_q_m_MPa"] == 1 / 3 and pq_rows[0]["contact_length_l_mm"] is None
+
+
+def test_a_study_in_the_gallery_folder_is_linked_from_the_gallery(tmp_path, monkeypatch, capsys):
+    """`propulsor explore --out output/X` (the gallery's folder) rewrites output/index.html with the study:
+    its title (escaped), counts, front picture and page, whose points link to the variants;
+    `propulsor gallery` of a folder holding only studies writes it too; a broken study.json is a note."""
+    monkeypatch.chdir(tmp_path)
+    study = write(tmp_path, STUDY.replace('title = "road wheel: tyre width x load"', 'title = "<b>wheel</b> & co"')
+                  .replace("load_N = { from = 30000.0, to = 50000.0, step = 10000.0 }", "load_N = [30000.0]"))
+    assert main(["explore", str(study), "--out", "output/wheel_study", "--workers", "1", "-q"]) == 0
+    index = (tmp_path / "output" / "index.html").read_text()
+    assert '<a href="wheel_study/study.html">&lt;b&gt;wheel&lt;/b&gt; &amp; co</a>' in index
+    assert "<b>wheel" not in index and "depth design · 2 variants · " in index
+    assert '<img src="wheel_study/pareto_front.png"' in index and 'href="wheel_study/results.parquet"' in index
+    assert '<a href="#design-studies">design studies</a>' in index
+    page = (tmp_path / "output" / "wheel_study" / "study.html").read_text()
+    rows = read_rows(tmp_path / "output" / "wheel_study")
+    met = [r for r in rows if r["status"] == "ok"]
+    assert page.count("<area ") == len(met) + sum(r["status"] == "rejected" for r in rows) >= 1
+    for r in met:
+        assert f'href="#v{r["variant"]}"' in page and f'<tr id="v{r["variant"]}"' in page
+    # the gallery command on a folder of studies only; a study.json that is not JSON is a note
+    (tmp_path / "output" / "index.html").unlink()
+    bad = tmp_path / "output" / "broken"
+    bad.mkdir()
+    (bad / "study.json").write_text("{<script>")
+    (bad / "study.html").write_text("x")
+    assert main(["gallery", "output", "-q"]) == 0
+    index = (tmp_path / "output" / "index.html").read_text()
+    assert "wheel_study/study.html" in index and "broken: study.json not readable: " in index
+
+
+def test_a_variant_runs_on_one_core_and_the_longest_are_submitted_first(monkeypatch, tmp_path):
+    """A variant's build runs inline (a budget of one process: no forked helpers, no OCCT threads) so the
+    cluster's one-thread workers fill the cores; the variants go to the scheduler longest first by the
+    part's size estimate."""
+    import distributed
+
+    from propulsor import parallel
+    from propulsor.study import engine, load_study
+    from propulsor.study import evaluate as ev
+
+    monkeypatch.delenv("PROPULSOR_JOBS", raising=False)
+    seen = []
+    monkeypatch.setattr(ev, "_evaluate", lambda *a: seen.append(parallel.jobs_budget()) or {})
+    ev.evaluate("road_wheel", {}, None, {}, "design", ())
+    assert seen == [1] and "PROPULSOR_JOBS" not in os.environ
+
+    study = load_study(write(tmp_path, f"""
+[study]
+part = "{ROOT / 'parts' / 'ncg_seed002.toml'}"
+depth = "proof"
+[vary]
+driven_teeth = [64, 96, 80]
+[objectives]
+minimize = ["speed_ripple"]
+"""))
+    submitted = []
+
+    class Client:
+        loop = None
+
+        def submit(self, fn, *args, key, priority, **kw):
+            submitted.append((args[3]["driven_teeth"], priority))
+            return key
+
+    monkeypatch.setattr(distributed, "as_completed", lambda futures, loop=None: [])
+    todo = [(i, v, f"k{i}") for i, v in enumerate(study.variants, 1)]
+    engine._evaluate_all(Client(), study, tmp_path, todo, None, None)
+    assert submitted == [(96, 3), (80, 2), (64, 1)]

@@ -16,7 +16,8 @@ import sys
 import threading
 from pathlib import Path
 
-from .building import build_one, files_read, into_output, load_part, vet_depfile, write_gallery_locked
+from .building import (build_one, files_read, gallery_folder, into_output, load_part, regenerate_gallery, vet_depfile,
+                       write_gallery_locked)
 from .errors import EnvironmentFailure, InputError
 from .signals import (EXIT_BAD_INPUT, EXIT_CHECK_FAILED, EXIT_OK, SIGNALLED, Interrupted, check_signalled,
                       fail_environment, fail_input, hold_signals, raise_interrupted, unraisable)
@@ -25,13 +26,15 @@ from .signals import (EXIT_BAD_INPUT, EXIT_CHECK_FAILED, EXIT_OK, SIGNALLED, Int
 def cmd_gallery(args) -> int:
     """output/index.html: one page for every part built in the folder."""
     from .export.gallery import INDEX, built_parts
+    from .export.gallery_studies import found_studies
     from .progress import Progress
 
     folder = Path(args.folder)
     if not folder.is_dir():
         return fail_input(InputError("folder", str(folder), "must be a folder of built parts (e.g. output/)"))
-    if not built_parts(folder):
-        return fail_input(InputError("folder", str(folder), "holds no built part (no */manifest.json)"))
+    if not built_parts(folder) and not found_studies(folder):
+        return fail_input(InputError("folder", str(folder), "holds no built part (no */manifest.json) and no "
+                                     "design study (no */study.json)"))
     progress = Progress(enabled=not args.quiet, check=check_signalled)
     try:
         path = write_gallery_locked(folder)
@@ -258,9 +261,11 @@ def cmd_explore(args) -> int:
         return fail_input(exc)
     ok = sum(r["status"] == "ok" for r in outcome.rows)
     progress(f"{len(outcome.rows)} variants ({outcome.ran} run now, {outcome.seconds:.1f} s): {ok} meet every "
-             f"requirement; {out / 'results.csv'}, {out / 'front.csv'}, {out / 'pareto_front.png'}")
+             f"requirement; {out / 'results.csv'} (and .parquet), {out / 'front.csv'}, {out / 'study.html'}")
     if args.build_best:
         build_best_variants(study, outcome, args.build_best, progress=progress)
+    if gallery_folder(out.parent):  # the study in a gallery's folder (./output): the gallery links its page
+        regenerate_gallery(out.parent, progress)
     return EXIT_OK
 
 

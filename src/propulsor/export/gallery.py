@@ -297,9 +297,12 @@ def viewer_script() -> str:
 
 
 def render_gallery(folder: str | Path) -> str:
-    """The page (HTML text) of every built part in `folder`."""
+    """The page (HTML text) of every built part in `folder` (and of its design studies: gallery_studies.py)."""
+    from .gallery_studies import STYLE as STUDY_STYLE, found_studies, studies_section
+
     folder = Path(folder)
     found = built_parts(folder)
+    studies = found_studies(folder)
     parts = [e for e in found if e["manifest"] is not None]
     counts = {"ok": 0, "doc": 0, "bad": 0}
     for e in parts:
@@ -309,12 +312,15 @@ def render_gallery(folder: str | Path) -> str:
             f'{counts["doc"]} with documented failures, {counts["bad"]} failed.  Each part\'s report, files and '
             "print kit are linked below; the 3D views turn with the mouse.</p>"]
     head += [_unreadable(folder, e) for e in found if e["manifest"] is None]
-    if parts:
-        head.append("<nav><ul>" + "".join(
-            f'<li><a href="#{escape(_url(e["name"]))}">{escape(e["name"])}</a></li>' for e in parts) + "</ul></nav>")
+    nav = [f'<li><a href="#{escape(_url(e["name"]))}">{escape(e["name"])}</a></li>' for e in parts]
+    if studies:
+        nav.append('<li><a href="#design-studies">design studies</a></li>')
+    if nav:
+        head.append("<nav><ul>" + "".join(nav) + "</ul></nav>")
     head.append("</header>")
-    body = "\n".join(head + [_section(folder, e) for e in parts])
-    return page("propulsor: built parts", body, style=STYLE, script=viewer_script())
+    body = "\n".join(head + [_section(folder, e) for e in parts] + ([studies_section(studies)] if studies else []))
+    return page("propulsor: built parts", body, style=STYLE + (STUDY_STYLE if studies else ""),
+                script=viewer_script())
 
 
 def write_gallery(folder: str | Path) -> Path | None:

@@ -55,6 +55,8 @@ def build_best_variants(spec, outcome, k: int, progress=None) -> list[Path]:
             pass
         made.append(target)
     from .page import write_page
+    from .results import plot_front
 
-    write_page(outcome.folder, spec, outcome.rows, outcome.ranked, built_best=len(made))
+    points = plot_front(outcome.folder, spec, outcome.rows, outcome.ranked)
+    write_page(outcome.folder, spec, outcome.rows, outcome.ranked, built_best=len(made), points=points)
     return made

@@ -15,8 +15,9 @@ from pathlib import Path
 
 from ..errors import InputError
 from .evaluate import evaluate
-from .results import Table, plot_front, ranked, requirement_failure, write_front
+from .results import plot_front, ranked, requirement_failure, write_front
 from .spec import Study, variant_key
+from .table import Table
 
 #: the marker that says a folder holds a study propulsor wrote (it may be written over)
 MARKER = "study.json"
@@ -68,6 +69,20 @@ def vet_folder(out: Path) -> None:
         raise InputError("--out", str(out), f"holds files but no {MARKER}: not a study folder; choose another")
 
 
+def write_marker(out: Path, study: Study, rows=None, rank=None) -> None:
+    """study.json: what the folder holds (the gallery reads it); with the rows once the study is done."""
+    from .. import __version__
+    from ..export.html import write_atomically
+
+    info: dict = {"study": str(study.path), "title": study.title, "part": str(study.part_file), "depth": study.depth,
+                  "version": __version__}
+    if rows is not None:
+        info.update({"variants": len(rows), "meeting_requirements": len(rank),
+                     "front": [r["variant"] for layer, r in rank if layer == 1],
+                     "objectives": {n: ("minimize" if n in study.minimize else "maximize") for n in study.objectives}})
+    write_atomically(out / MARKER, json.dumps(info, indent=1) + "\n")
+
+
 class Rate:
     """The progress line: count, rate, time left."""
 
@@ -96,8 +111,8 @@ def _span(s: float) -> str:
 
 def run(study: Study, out: Path, *, scheduler: str | None = None, workers: int | None = None,
         resume: bool = False, progress=lambda msg: None, client=None) -> Outcome:
-    """Run the study into folder `out`: results.csv, front.csv, pareto_front.png (and variants/ at depth
-    build).  Nothing is written before the study file, the folder and the scheduler are known good."""
+    """Run the study into folder `out`: results.csv, results.parquet, front.csv, pareto_front.png, study.html
+    (and variants/ at depth build).  Nothing is written before the study file, the folder and the scheduler are known good."""
     from .. import __version__
 
     vet_folder(out)
@@ -108,15 +123,12 @@ def run(study: Study, out: Path, *, scheduler: str | None = None, workers: int |
     try:
         n_workers = len(client.scheduler_info().get("workers", {}))
         out.mkdir(parents=True, exist_ok=True)
-        (out / MARKER).write_text(json.dumps({"study": str(study.path), "title": study.title, "part": str(study.part_file),
-                                              "depth": study.depth, "version": __version__}, indent=1) + "\n",
-                                  encoding="utf-8")
-        table = Table(out, study, resume)
+        write_marker(out, study)
+        keys = [variant_key(study, v, __version__) for v in study.variants]
+        table = Table(out, study, resume, keys)
         try:
             done = table.done_keys()
-            keys = [variant_key(study, v, __version__) for v in study.variants]
             todo = [(i, v, k) for i, (v, k) in enumerate(zip(study.variants, keys), 1) if k not in done]
-            table.rows = [r for r in table.rows if str(r["key"]) in set(keys)]
             before = len(study.variants) - len(todo)
             progress(f"{study.title}: {len(study.variants)} variants at depth {study.depth} on {n_workers} Dask "
                      f"worker(s)" + (f"; {before} already in {table.path}" if before else ""))
@@ -128,10 +140,11 @@ def run(study: Study, out: Path, *, scheduler: str | None = None, workers: int |
         rows = sorted(table.rows, key=lambda r: int(r["variant"]))
         rank = ranked(study, rows)
         write_front(out, study, rank)
-        plot_front(out, study, rows, rank)
+        points = plot_front(out, study, rows, rank)
         from .page import write_page
 
-        write_page(out, study, rows, rank)
+        write_page(out, study, rows, rank, points=points)
+        write_marker(out, study, rows, rank)
         return Outcome(rows, rank, len(todo), seconds, n_workers, out)
     finally:
         if own:
@@ -140,16 +153,35 @@ def run(study: Study, out: Path, *, scheduler: str | None = None, workers: int |
                 cluster.close()
 
 
+def expected_seconds(study: Study, values: dict) -> float:
+    """The variant's build time by the part type's size estimate (parts/size.py), from its values alone;
+    0 where the estimate needs the design or the values are refused (such a variant fails fast)."""
+    from ..params import load_params
+    from ..parts import check_size, get_part_type, size_needs_design
+
+    try:
+        pt = get_part_type(study.part_type)
+        if size_needs_design(pt):
+            return 0.0
+        params = load_params(pt.params_cls, {**study.base, **values}, validate=False)
+        return float(check_size(pt, params, study.part_file).seconds)
+    except Exception:  # noqa: BLE001 - the variant's own trouble is its row's, not the order's
+        return 0.0
+
+
 def _evaluate_all(client, study: Study, out: Path, todo, table: Table, rate: Rate) -> None:
+    """Submit every variant, the longest first by the size estimate (the last tasks short, so that no
+    worker idles at the end while another finishes a long one); a row as each finishes."""
     from distributed import as_completed
 
     wanted = study.values
     source = str(study.part_file)
     futures = {}
-    for i, values, key in todo:
+    order = sorted(todo, key=lambda t: (-expected_seconds(study, t[1]), t[0]))
+    for j, (i, values, key) in enumerate(order):
         build_dir = str((out / "variants" / key).resolve()) if study.depth == "build" else None
         fut = client.submit(evaluate, study.part_type, study.base, source, values, study.depth, wanted, build_dir,
-                            key=f"propulsor-variant-{key}", pure=False, retries=1)
+                            key=f"propulsor-variant-{key}", pure=False, retries=1, priority=len(order) - j)
         futures[fut] = (i, values, key)
     for fut in as_completed(list(futures), loop=client.loop):
         i, values, key = futures.pop(fut)

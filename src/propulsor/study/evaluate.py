@@ -15,6 +15,7 @@ import shutil
 import socket
 import tempfile
 import time
+from contextlib import contextmanager
 from pathlib import Path
 
 from ..errors import CheckFailed, InputError
@@ -109,11 +110,32 @@ def _may_fork() -> None:
         proc._config["daemon"] = False
 
 
+@contextmanager
+def one_process():
+    """The variant on one core: the build's own forked workers and OCCT's mesh threads off (a budget of
+    one process, PROPULSOR_JOBS=1: the same values, computed inline), so that the cluster's workers — one
+    thread each, one per core — fill the cores, not a variant's helpers competing with the next variant."""
+    saved = os.environ.get("PROPULSOR_JOBS")
+    os.environ["PROPULSOR_JOBS"] = "1"
+    try:
+        yield
+    finally:
+        if saved is None:
+            os.environ.pop("PROPULSOR_JOBS", None)
+        else:
+            os.environ["PROPULSOR_JOBS"] = saved
+
+
 def evaluate(part_type: str, base: dict, source: str | None, values: dict, depth: str, wanted: tuple,
              build_dir: str | None = None) -> dict:
     """The row of one variant: {"values": {name: value}, "all_checks_passed", "failed_checks", "status",
     "reason", "seconds", "worker"}.  Never raises for the variant's own trouble (bad values, a failed
-    check, an exception of the build): the row says it."""
+    check, an exception of the build): the row says it.  Runs on one core (:func:`one_process`)."""
+    with one_process():
+        return _evaluate(part_type, base, source, values, depth, wanted, build_dir)
+
+
+def _evaluate(part_type, base, source, values, depth, wanted, build_dir) -> dict:
     from ..api import Part
     from ..params import load_params
     from ..parts import get_part_type

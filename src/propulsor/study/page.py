@@ -1,6 +1,6 @@
-"""study.html: the study's page — the Pareto front, the table of every variant (sortable by any column),
-each variant linked to its files where the study made them (depth build: variants/<key>/; --build-best:
-best/<rank>/).  Every text from the study file and the table is escaped."""
+"""study.html: the study's page — the Pareto front (each point linked), the table of every variant
+(sortable by any column), each variant linked to its files where the study made them (depth build:
+variants/<key>/; --build-best: best/<rank>/).  Every text from the study file and the table is escaped."""
 
 from __future__ import annotations
 
@@ -40,8 +40,29 @@ def _link(folder: Path, row: dict, best: dict) -> str:
     return ""
 
 
-def write_page(folder: Path, study: Study, rows: list[dict], rank: list[tuple[int, dict]], built_best: int = 0) -> Path:
-    """Write study.html into `folder`; returns its path."""
+def _front_map(folder: Path, points, rows: list[dict], study: Study, best: dict) -> str:
+    """The picture of the front with each point linked to its variant (its files where the study built
+    them, else its row of the table)."""
+    if not (folder / FRONT_PNG).is_file():
+        return ""
+    e = html.escape
+    by_variant = {r["variant"]: r for r in rows}
+    areas = []
+    for variant, x, y in points or ():
+        r = by_variant.get(variant)
+        if r is None:
+            continue
+        href = _link(folder, r, best) or f"#v{variant}"
+        title = f"variant {variant}: " + ", ".join(f"{n} = {cell(r.get(n))}" for n in study.objectives)
+        areas.append(f'<area shape="circle" coords="{x},{y},6" href="{e(href, quote=True)}" '
+                     f'alt="{e(title, quote=True)}" title="{e(title, quote=True)}">')
+    return (f'<p><img src="{FRONT_PNG}" alt="Pareto front" usemap="#front"></p>'
+            f'<map name="front">{"".join(areas)}</map>')
+
+
+def write_page(folder: Path, study: Study, rows: list[dict], rank: list[tuple[int, dict]], built_best: int = 0,
+               points=None) -> Path:
+    """Write study.html into `folder`; returns its path.  `points`: where plot_front drew each variant."""
     e = html.escape
     layer_of = {r["variant"]: layer for layer, r in rank}
     rank_of = {r["variant"]: k for k, (_, r) in enumerate(rank, 1)}
@@ -61,15 +82,16 @@ def write_page(folder: Path, study: Study, rows: list[dict], rank: list[tuple[in
             cls = ' class="t"' if c in ("reason", "failed_checks", "status", "worker", "key") else ""
             cells.append(f'<td{cls} data-v="{e(text, quote=True)}">{shown}</td>')
         tr = ' class="front"' if layer_of.get(r["variant"]) == 1 else ""
-        body.append(f"<tr{tr}>{''.join(cells)}</tr>")
+        body.append(f'<tr id="v{int(r["variant"])}"{tr}>{"".join(cells)}</tr>')
     objectives = ", ".join(f"{'minimize' if n in study.minimize else 'maximize'} {n}" for n in study.objectives)
     req = "; ".join(str(q) for q in study.require) or "none"
-    img = f'<p><img src="{FRONT_PNG}" alt="Pareto front"></p>' if (folder / FRONT_PNG).is_file() else ""
+    img = _front_map(folder, points, rows, study, best)
     text = (f"<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>{e(study.title)}</title>"
             f"<style>{_STYLE}</style></head><body><h1>{e(study.title)}</h1>"
             f"<p>{len(rows)} variants of {e(study.part_file.name)} ({e(study.part_type)}) at depth {e(study.depth)}; "
             f"{e(objectives)}; requirements: {e(req)}; {len(rank)} meet them (the front is shaded). "
-            f"Click a column to sort; a variant's number links to its files where the study built them.</p>"
+            f"Click a column to sort; a variant's number, and its point on the picture, link to its files where the "
+            f"study built them (else a point links to its row).</p>"
             f"{img}<table><thead><tr>{head}</tr></thead><tbody>{''.join(body)}</tbody></table>"
             f"<script>{_SCRIPT}</script></body></html>\n")
     path = folder / PAGE

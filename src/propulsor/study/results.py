@@ -1,5 +1,5 @@
-"""The study's table (results.csv, a row per variant as it finishes; read back for --resume), the
-ranking (Pareto layers) and the Pareto front's picture."""
+"""The study's ranking (Pareto layers), front.csv and the Pareto front's picture; the table's columns
+(the table itself, results.csv and results.parquet: table.py)."""
 
 from __future__ import annotations
 
@@ -7,10 +7,8 @@ import csv
 import math
 from pathlib import Path
 
-from ..errors import InputError
 from .spec import ALL_CHECKS, Study
 
-RESULTS = "results.csv"
 FRONT = "front.csv"
 FRONT_PNG = "pareto_front.png"
 TAIL = ("all_checks_passed", "status", "reason", "failed_checks", "seconds", "worker")
@@ -21,7 +19,7 @@ def columns(study: Study) -> list[str]:
 
 
 def cell(v) -> str:
-    """A value as the table writes it: floats to the last digit (repr), booleans as true / false."""
+    """A value as the tables write it: floats to the last digit (repr), booleans as true / false."""
     if v is None:
         return ""
     if isinstance(v, bool):
@@ -29,58 +27,6 @@ def cell(v) -> str:
     if isinstance(v, float):
         return repr(v)
     return str(v)
-
-
-def parse_cell(text: str):
-    if text == "":
-        return None
-    if text in ("true", "false"):
-        return text == "true"
-    try:
-        return int(text)
-    except ValueError:
-        pass
-    try:
-        return float(text)
-    except ValueError:
-        return text
-
-
-class Table:
-    """results.csv, appended a row at a time (flushed: an interrupted study keeps what finished)."""
-
-    def __init__(self, folder: Path, study: Study, resume: bool):
-        self.path = folder / RESULTS
-        self.cols = columns(study)
-        self.rows: list[dict] = []
-        if resume and self.path.is_file():
-            with open(self.path, newline="", encoding="utf-8") as f:
-                reader = csv.reader(f)
-                header = next(reader, None)
-                if header != self.cols:
-                    raise InputError("--resume", str(self.path), "the table there has other columns (another study "
-                                     "or other objectives): choose another --out or run without --resume")
-                for rec in reader:
-                    if len(rec) == len(self.cols):
-                        self.rows.append({c: parse_cell(v) for c, v in zip(self.cols, rec)})
-            self._f = open(self.path, "a", newline="", encoding="utf-8")
-            self._w = csv.writer(self._f)
-        else:
-            self._f = open(self.path, "w", newline="", encoding="utf-8")
-            self._w = csv.writer(self._f)
-            self._w.writerow(self.cols)
-            self._f.flush()
-
-    def done_keys(self) -> set[str]:
-        return {str(r["key"]) for r in self.rows}
-
-    def add(self, row: dict) -> None:
-        self.rows.append(row)
-        self._w.writerow([cell(row.get(c)) for c in self.cols])
-        self._f.flush()
-
-    def close(self) -> None:
-        self._f.close()
 
 
 def ranked(study: Study, rows: list[dict]) -> list[tuple[int, dict]]:
@@ -115,10 +61,11 @@ def write_front(folder: Path, study: Study, rank: list[tuple[int, dict]]) -> Non
             w.writerow([k, layer] + [cell(r.get(c)) for c in cols[2:]])
 
 
-def plot_front(folder: Path, study: Study, rows: list[dict], rank: list[tuple[int, dict]]) -> Path | None:
+def plot_front(folder: Path, study: Study, rows: list[dict], rank: list[tuple[int, dict]]) -> list[tuple]:
     """pareto_front.png: every variant that met the requirements (grey), the front (red, joined), the
     variants refused by a requirement (x); the first two objectives on the axes (one: against the
-    variant number)."""
+    variant number).  Returns where each variant is drawn: (variant, x, y) in the picture's pixels from
+    its top left corner (the study page links the points)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -159,10 +106,16 @@ def plot_front(folder: Path, study: Study, rows: list[dict], rank: list[tuple[in
     if front or others or refused:
         ax.legend(fontsize=8)
     fig.tight_layout()
-    path = folder / FRONT_PNG
-    fig.savefig(path)
+    fig.savefig(folder / FRONT_PNG)
+    height = fig.get_size_inches()[1] * fig.dpi
+    points = []
+    for r in [*refused, *others, *front]:
+        (x,), (y,) = xy([r])
+        px, py = ax.transData.transform((x, y))
+        if math.isfinite(px) and math.isfinite(py):
+            points.append((r["variant"], int(round(px)), int(round(height - py))))
     plt.close(fig)
-    return path
+    return points
 
 
 def requirement_failure(study: Study, row: dict) -> str:
