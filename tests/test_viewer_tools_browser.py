@@ -2,7 +2,7 @@
 moving assembly (a plate that stands still, an arm that turns through the poses of its motion, a block):
 the report draws its 3D view after its summary; the wheel zooms toward the cursor (the point under it
 stays under it); a two-finger pinch zooms; the exploded view moves the parts apart; the motion slider
-moves the arm; no console error.
+moves the arm; the first view looks from the direction the model names; no console error.
 """
 
 from __future__ import annotations
@@ -54,7 +54,8 @@ def report_page(tmp_path_factory):
     write_glb_script(write_glb(folder / "asm.glb", "asm", meshes, comps, [(info, moves)]))
     md = folder / "report.md"
     md.write_text(REPORT, encoding="utf-8")
-    write_report_html(md, [{"path": "asm.glb", "script": "asm.glb.js", "title": "asm"}])
+    # seen from below first, as the balancer's assembly is (its arm would hide under its wheel from above)
+    write_report_html(md, [{"path": "asm.glb", "script": "asm.glb.js", "title": "asm", "view_dir": [1.0, -1.0, -1.0]}])
     browser = Chromium(exe)
     try:
         page = browser.page()
@@ -164,4 +165,12 @@ def test_the_exploded_view_moves_the_parts_apart(report_page):
     _js(report_page, f"const s = {ex}; s.value = '0'; s.dispatchEvent(new Event('input')); return 1;")
     _settle(report_page, 0)
     assert np.allclose(_js(report_page, spread), near, atol=1e-6)  # and back together
+    assert report_page.errors == []
+
+
+def test_the_first_view_looks_from_the_direction_the_model_names(report_page):
+    _fit(report_page)
+    d = np.array(_js(report_page, "return v.camera.position.clone().sub(v.controls.target).normalize().toArray();"))
+    # the part's (1, -1, -1) (z up) is glTF's (1, -1, 1) (y up): from below
+    assert np.allclose(d, np.array([1.0, -1.0, 1.0]) / math.sqrt(3.0), atol=1e-6), d
     assert report_page.errors == []
