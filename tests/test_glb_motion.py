@@ -108,3 +108,22 @@ def test_an_assembly_without_motion_is_written_as_before(tmp_path):
     doc, _ = gltf_of(write_glb(tmp_path / "asm.glb", "asm", meshes, placed(P0)))
     assert "animations" not in doc and "matrix" in doc["nodes"][1]
     assert all("target" in v for v in doc["bufferViews"])
+
+
+def test_the_validator_script_fails_on_a_warning_alone(tmp_path):
+    """`make check` runs web/validate_glb.mjs over every GLB: a warning fails it as an error does."""
+    node = shutil.which("node")
+    if node is None or not (ROOT / "web" / "node_modules" / "gltf-validator").is_dir():
+        pytest.skip("the glTF validator needs node and `make validate-glb`'s web/node_modules")
+    good = write_glb(tmp_path / "good.glb", "asm", {"s": box(1, 1, 1)}, [("a", "s", np.eye(4))])
+    doc, blob = gltf_of(good)
+    doc["nodes"][0]["wobble"] = 1  # an unexpected property: a warning, no error
+    js = json.dumps(doc).encode()
+    js += b" " * (-len(js) % 4)
+    bad = tmp_path / "bad.glb"
+    bad.write_bytes(struct.pack("<4sII", b"glTF", 2, 12 + 8 + len(js) + 8 + len(blob)) + struct.pack("<I4s", len(js), b"JSON")
+                    + js + struct.pack("<I4s", len(blob), b"BIN\0") + blob)
+    r = subprocess.run([node, str(ROOT / "web" / "validate_glb.mjs"), str(tmp_path)], capture_output=True, text=True)
+    assert r.returncode == 1, r.stdout + r.stderr
+    assert "bad.glb: 0 errors, 1 warnings" in r.stdout and "UNEXPECTED_PROPERTY" in r.stdout
+    assert "good.glb: 0 errors, 0 warnings" in r.stdout and "2 GLB file(s), 1 with errors or warnings" in r.stdout

@@ -1,9 +1,10 @@
 /* propulsor's 3D views: the assemblies' GLB files drawn with three.js (vendored: three.min.js, inlined
  * before this script; window.PROPULSOR_THREE), for a page opened from disk.
  *
- * What three.js does: the GLB (GLTFLoader), the drawing (WebGLRenderer, lights, clipping planes), and the
+ * What three.js does: the GLB (GLTFLoader), the drawing (WebGLRenderer, lights, clipping planes), the
  * camera's controls (OrbitControls: left drag turns, right drag / shift+drag / two fingers pan, wheel and
- * pinch zoom toward the cursor).  What stays ours, because no library does it for this page:
+ * pinch zoom toward the cursor), picking (Raycaster) and the motion's poses (AnimationMixer plays the
+ * GLB's animation).  What stays ours, because no library does it for this page:
  *  - the GLB's bytes come from a classic script twin (<name>.glb.js, in window.PROPULSOR_GLB under its
  *    own URL): a page opened from file:// may not fetch() the GLB beside it;
  *  - any number of views on one page: ONE WebGL context (one renderer, its canvas never shown) draws
@@ -12,8 +13,10 @@
  *    and every view drawn again when it is restored;
  *  - the tools under a view: the part list (show / hide, colour; a click on a part picks it), the
  *    section plane (x, y or z of the part's frame, and where), the exploded view (components moved
- *    away from the assembly's centre), a double click fits the view again.
- * Figures: <figure class="viewer" data-models='[{"script": "...glb.js", "title": "..."}]'> holding a
+ *    away from the assembly's centre), the motion (a slider through the poses of the GLB's first
+ *    animation, one key per pose, and play / pause), a double click fits the view again.
+ * Figures: <figure class="viewer" data-models='[{"script": "...glb.js", "title": "...", "view": [x, y, z]}]'>
+ * ("view": the first camera direction, y up; optional) holding a
  * <canvas>, an optional <select>, a .status line.  data-state = waiting | loading | drawn | error | lost
  * ("drawn" once the image is in the view's canvas).
  */
