@@ -3,7 +3,7 @@
 export {
   WebGLRenderer, Scene, PerspectiveCamera, OrthographicCamera, Group, Mesh, Box3, Vector2, Vector3, Plane,
   Color, AmbientLight, HemisphereLight, DirectionalLight, MeshStandardMaterial, DoubleSide, Raycaster,
-  SRGBColorSpace, NoToneMapping, MathUtils, Matrix4, Quaternion, REVISION,
+  SRGBColorSpace, NoToneMapping, MathUtils, Matrix4, Quaternion, REVISION, AnimationMixer,
 } from "three";
 export { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 export { GLTFLoader } from "three/examples/jsm/loaders/GLTFLoader.js";

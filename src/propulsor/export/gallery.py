@@ -4,7 +4,7 @@ Reads the manifests and the files beside them only (every ``*/manifest.json``; a
 ``<name>_kit/`` is shown with its part ``<name>/``): each part with its title, its status (checks
 passed / documented failures / failed, with counts), a few key derived values with units, the
 animations (``media.animations``), an interactive 3D view of the assembly (``media.models``: the
-GLB's script twin, drawn by ``web/viewer.js`` with the vendored three.js, both inlined), the pictures (``media.pictures``), links to
+GLB's script twin, drawn by ``web/viewer.js`` with the vendored three.js, both inlined; viewer_page.py), the pictures (``media.pictures``), links to
 the HTML report, the files by format and the print kit.  The page is self-contained (inline style
 and script, relative links), so it works opened from disk, with no network.
 
@@ -19,11 +19,9 @@ through a temporary file and one rename; never over an ``index.html`` that propu
 
 from __future__ import annotations
 
-import json
 import math
 import re
 from html import escape
-from importlib import resources
 from pathlib import Path
 from urllib.parse import quote
 
@@ -31,6 +29,7 @@ from .gallery_manifest import ManifestError, inside, load_manifest
 from .html import page, write_atomically
 from .manifest import MANIFEST
 from .gallery_values import failed_names, label, names_text, position_title, value_text
+from .viewer_page import VIEWER_STYLE, viewer_figure, viewer_script  # noqa: F401  (viewer_script: public here too)
 
 INDEX = "index.html"
 #: the mark of a page propulsor wrote (an index.html without it is never replaced)
@@ -73,15 +72,6 @@ dl.values dt { color: var(--muted); } dl.values dd { margin: 0; }
 .media figure { margin: 0; }
 figure img { display: block; border: 1px solid var(--line); border-radius: 4px; background: #fff; }
 figcaption { font-size: 0.85em; color: var(--muted); }
-figure.viewer { margin: 8px 0; max-width: 760px; }
-figure.viewer canvas { display: block; width: 100%; aspect-ratio: 4 / 3; max-height: 70vh; border: 1px solid var(--line);
-                       border-radius: 4px; touch-action: none; background: #f5f7fa; }
-.tools { display: flex; flex-wrap: wrap; gap: 4px 18px; align-items: flex-start; margin: 4px 0; font-size: 0.9em; }
-.tools ul { list-style: none; padding: 0; margin: 4px 0; columns: 2 180px; }
-.tools li.picked { background: var(--panel); font-weight: 600; }
-.tools .swatch { display: inline-block; width: 0.9em; height: 0.9em; margin: 0 5px 0 3px; border: 1px solid var(--line);
-                 vertical-align: -0.1em; }
-.tools input[type=range] { width: 140px; vertical-align: middle; }
 .links a { margin-right: 10px; white-space: nowrap; }
 details { margin: 4px 0; } summary { cursor: pointer; }
 .files a { display: inline-block; margin-right: 10px; }
@@ -193,21 +183,9 @@ def _animation(name: str, e: dict) -> str:
 
 def _viewer(name: str, models: list[dict], manifest: dict) -> str:
     """The 3D view of the part's assemblies (a polysector gear's positions named by offset and ratio)."""
-    data = [{"script": _url(f"{name}/{m['script']}"),
-             "title": position_title(manifest, k) or str(m.get("title", m["path"]))}
-            for k, m in enumerate(models) if m.get("script")]
-    if not data:
-        return ""
-    select = ""
-    if len(data) > 1:
-        opts = "".join(f"<option>{escape(d['title'])}</option>" for d in data)
-        what = "position" if manifest.get("part") == "polysector_gear" else "assembly"
-        select = f'<label>{what} <select aria-label="assembly">{opts}</select></label>'
-    glbs = " · ".join(_a(f"{name}/{m['path']}", m["path"]) for m in models)
-    return (f"<h3>3D</h3><figure class=\"viewer\" data-models='{escape(json.dumps(data), quote=True)}' "
-            f'data-state="waiting">{select}<canvas></canvas>'
-            f'<figcaption><span class="status">the 3D view loads when it comes into view</span> — GLB: {glbs}'
-            f"</figcaption></figure>")
+    titles = [position_title(manifest, k) for k in range(len(models))]
+    what = "position" if manifest.get("part") == "polysector_gear" else "assembly"
+    return viewer_figure(models, f"{name}/", titles, what)
 
 
 def _files(name: str, manifest: dict) -> str:
@@ -289,13 +267,6 @@ def _unreadable(folder: Path, entry: dict) -> str:
     return f'<p class="unreadable">{escape(where)}: manifest not readable: {escape(entry["error"])}</p>'
 
 
-def viewer_script() -> str:
-    """The 3D views' script: three.js as vendored (``web/three.min.js``, ``make viewer-lib``), then ours
-    (``web/viewer.js``), one inline script."""
-    web = resources.files(__package__).joinpath("web")
-    return "\n".join(web.joinpath(f).read_text(encoding="utf-8") for f in ("three.min.js", "viewer.js"))
-
-
 def render_gallery(folder: str | Path) -> str:
     """The page (HTML text) of every built part in `folder` (and of its design studies: gallery_studies.py)."""
     from .gallery_studies import STYLE as STUDY_STYLE, found_studies, studies_section
@@ -319,7 +290,7 @@ def render_gallery(folder: str | Path) -> str:
         head.append("<nav><ul>" + "".join(nav) + "</ul></nav>")
     head.append("</header>")
     body = "\n".join(head + [_section(folder, e) for e in parts] + ([studies_section(studies)] if studies else []))
-    return page("propulsor: built parts", body, style=STYLE + (STUDY_STYLE if studies else ""),
+    return page("propulsor: built parts", body, style=STYLE + VIEWER_STYLE + (STUDY_STYLE if studies else ""),
                 script=viewer_script())
 
 

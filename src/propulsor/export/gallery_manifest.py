@@ -21,10 +21,13 @@ from .manifest import MANIFEST
 _TEXT = (lambda v: isinstance(v, str), "a string")
 _COUNT = (lambda v: isinstance(v, int) and not isinstance(v, bool) and v >= 0, "a whole number >= 0")
 _NUMBER = (lambda v: isinstance(v, (int, float)) and not isinstance(v, bool), "a number")
+_DIRECTION = (lambda v: isinstance(v, list) and len(v) == 3 and all(
+    isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x) for x in v)
+    and any(x != 0 for x in v), "three finite numbers, not all 0")
 MEDIA_FIELDS = {
     "animations": {"path": _TEXT, "title": _TEXT, "frames": _COUNT, "width_px": _COUNT, "height_px": _COUNT,
                    "bytes": _COUNT, "least_clearance_mm": _NUMBER},
-    "models": {"path": _TEXT, "script": _TEXT, "title": _TEXT},
+    "models": {"path": _TEXT, "script": _TEXT, "title": _TEXT, "view_dir": _DIRECTION},
     "pictures": {"path": _TEXT, "title": _TEXT},
 }
 #: the suffix of a model's script (the GLB's script twin): no other file is loaded as a script

@@ -128,15 +128,30 @@ def markdown_to_html(text: str) -> str:
     return body.replace("<table>", '<div class="scroll"><table>').replace("</table>", "</table></div>")
 
 
-def write_report_html(md_path: str | Path) -> Path:
-    """``<report>.html`` beside ``<report>.md``: the same content as a self-contained page."""
+#: where a report's 3D view goes: after its summary, before the first long table
+_VIEW_BEFORE = "<h2>Inputs</h2>"
+
+
+def write_report_html(md_path: str | Path, models=()) -> Path:
+    """``<report>.html`` beside ``<report>.md``: the same content as a self-contained page; with
+    `models` (the build's ``media.models`` entries) the 3D view of its assemblies after the summary
+    (the gallery's viewer, inlined: it works opened from disk)."""
     md_path = Path(md_path)
     text = md_path.read_text(encoding="utf-8")
     from .report import md_plain
+    from .viewer_page import VIEWER_STYLE, viewer_figure, viewer_script
 
     title = next((md_plain(ln[2:].strip()) for ln in text.splitlines() if ln.startswith("# ")), md_path.stem)
+    body = markdown_to_html(text)
+    figure = viewer_figure(list(models), "", heading="<h2>3D view</h2>")
+    if figure:
+        at = body.find(_VIEW_BEFORE)
+        body = body + figure if at < 0 else body[:at] + figure + "\n" + body[at:]
+        html_text = page(title, body, style=VIEWER_STYLE, script=viewer_script())
+    else:
+        html_text = page(title, body)
     out = md_path.with_suffix(".html")
-    out.write_text(page(title, markdown_to_html(text)), encoding="utf-8")
+    out.write_text(html_text, encoding="utf-8")
     return out
 
 

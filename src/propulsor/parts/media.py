@@ -12,7 +12,7 @@ contract) and names it in the report.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -61,6 +61,11 @@ class AnimationJob:
     steps: object
     pose_columns: dict
     least_what: str = "least clearance"
+    #: the same poses in the 3D view: the assembly (its GLB) whose components move, and for each moving
+    #: component (its name in the assembly) its (frames, 2, 3) poses in the assembly's x-y plane and the
+    #: pose (2, 3) that the assembly shows it at (the component is moved by pose · reference⁻¹)
+    assembly: str = ""
+    nodes: dict = field(default_factory=dict)
 
 
 def _render(jobs_and_paths) -> list:
@@ -123,10 +128,15 @@ def _record(w, job: AnimationJob, info) -> dict:
              "height_px": info.height_px, "bytes": info.bytes, "frame_ms": info.frame_ms, "poses": poses,
              "least_clearance_mm": least}
     w.add_media("animations", entry)
+    if job.assembly and job.nodes:
+        w.add_motion(job.assembly, {"name": job.name, "title": job.title, "frame_ms": info.frame_ms,
+                                    "steps": cols["proof_step"], "poses": poses},
+                     {c: (np.asarray(P, float)[kept], np.asarray(ref, float)) for c, (P, ref) in job.nodes.items()})
+    in_3d = f"; the same poses move the 3D view of `{job.assembly}.glb`" if job.assembly and job.nodes else ""
     w.add_note(f"Animation `{rel}`: {job.title} — {len(kept)} frames of {info.width_px} × {info.height_px} px, "
                f"{info.frame_ms} ms each, {info.bytes / 1024:.0f} KiB; poses: {poses} (table "
-               f"tables/anim_{job.name}.csv)" + (f"; {job.least_what} {least:.4g} mm marked in red." if least is not None
-                                                  else "."))
+               f"tables/anim_{job.name}.csv{in_3d})" + (f"; {job.least_what} {least:.4g} mm marked in red."
+                                                         if least is not None else "."))
     return entry
 
 

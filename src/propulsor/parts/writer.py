@@ -14,6 +14,7 @@ A part module computes; it hands results to the writer:
     w.add_plot(name, fig)             PNG under plots/
     w.add_note(text)                  a paragraph of the report
     w.add_media(kind, entry)          a gallery item (animation, model, picture) for the manifest
+    w.add_motion(assembly, info, nodes) the proof's poses of an assembly's moving components (its GLB's animation)
     w.finish()                        report.md (+ report.html) + manifest.json; returns the failures
 """
 
@@ -80,14 +81,16 @@ def mesh_of(solid, forked: bool):
     return np.asarray(mesh.vertices, np.float64), np.asarray(mesh.faces, np.int64)
 
 
-def assembly_model(folder: str, name: str, meshes: dict, components, from_below: bool = False) -> None:
+def assembly_model(folder: str, name: str, meshes: dict, components, from_below: bool = False,
+                   motions=()) -> None:
     """``<name>.glb`` (+ ``.glb.js``) and ``views/<name>.png`` of an assembly from its solids' meshes;
-    components: (component name, solid key, 4×4 placement mm); from_below: the picture seen from below."""
+    components: (component name, solid key, 4×4 placement mm); from_below: the picture seen from below;
+    motions: the GLB's animations (:func:`export.glb.write_glb`)."""
     from ..export.glb import write_glb, write_glb_script
     from ..export.render import VIEW_DIR, VIEW_DIR_BELOW, palette_colour, render_iso
 
     folder = Path(folder)
-    glb = write_glb(folder / f"{name}.glb", name, meshes, components)
+    glb = write_glb(folder / f"{name}.glb", name, meshes, components, motions)
     write_glb_script(glb)
     items = [(*meshes[key], matrix, palette_colour(k)) for k, (_, key, matrix) in enumerate(components)]
     render_iso(items, folder / VIEWS / f"{name}.png", view=VIEW_DIR_BELOW if from_below else VIEW_DIR)
@@ -131,6 +134,7 @@ class OutputWriter:
         self._solid_keys: dict[int, str] = {}  # id(solid) -> its key (the solid's name)
         self._keep: list = []  # the solids keyed by id, kept alive
         self._assemblies: list = []  # (name, [(component, solid key, 4×4 mm)], picture from below)
+        self._motions: dict[str, list] = {}  # assembly name -> [(info, {component: (poses, reference)})]
         self.report_name = "report.md"  # a print kit's is print_report.md
         self.intended: set[str] = set()  # files the build means to write (relative paths), besides the media
         # what the build made, by name, for the Python API (propulsor.api): solids, DXF profiles, assemblies
@@ -214,6 +218,7 @@ class OutputWriter:
         self._solid_jobs = []
         self._mesh_jobs = []
         self._assemblies = []
+        self._motions = {}
 
     def add_assembly(self, name: str, components, picture_from_below: bool = False) -> Path:
         """components: list of (component name, solid, (x, y, z) mm, rotation about z in rad).
@@ -244,8 +249,13 @@ class OutputWriter:
         self._assemblies.append((name, placed, picture_from_below))
         self.extra_files += [f"{name}.glb"]
         self.intended.update((f"{name}.glb", f"{name}.glb.js"))
-        self.add_media("models", {"path": f"{name}.glb", "script": f"{name}.glb.js", "title": name, "step": p.name,
-                                  "components": [c for c, _, _ in placed], "picture": f"{VIEWS}/{name}.png"})
+        model = {"path": f"{name}.glb", "script": f"{name}.glb.js", "title": name, "step": p.name,
+                 "components": [c for c, _, _ in placed], "picture": f"{VIEWS}/{name}.png"}
+        if picture_from_below:  # the 3D view's first direction too (the part's frame, z up)
+            from ..export.render import VIEW_DIR_BELOW
+
+            model["view_dir"] = [float(x) for x in VIEW_DIR_BELOW]
+        self.add_media("models", model)
         self.add_media("pictures", {"path": f"{VIEWS}/{name}.png", "title": f"{name} (assembly)", "of": name})
         return p
 
@@ -257,6 +267,31 @@ class OutputWriter:
             self._keep.append(solid)
             self._meshes[key] = (np.asarray(vertices, np.float64), np.asarray(faces, np.int64))
 
+    def add_motion(self, assembly: str, info: dict, nodes: dict) -> None:
+        """The poses of the components of `assembly` (added before :meth:`finish`) that move: its GLB gets
+        them as an animation (one key per pose, shown by the 3D view's slider).  info: name, title,
+        frame_ms, steps (the proof's step of each pose), poses (what they are); nodes: component name ->
+        ((frames, 2, 3) poses in the assembly's x-y plane, (2, 3) the pose the assembly shows it at)."""
+        self._motions.setdefault(assembly, []).append((dict(info), dict(nodes)))
+
+    def _motion_placements(self, name: str, placed) -> list:
+        """The animations of assembly `name`: (info, {component index: (frames, 4, 4) placements mm}); each
+        moving component placed at pose · reference⁻¹ · its assembly placement."""
+        from ..export.glb import lift_planar
+
+        out = []
+        for info, nodes in self._motions.get(name, []):
+            index = {c: k for k, (c, _, _) in enumerate(placed)}
+            unknown = sorted(set(nodes) - set(index))
+            if unknown:
+                raise ValueError(f"motion {info.get('name')!r} of {name}: no component {unknown[0]!r}")
+            moves = {}
+            for c, (poses, ref) in nodes.items():
+                back = np.linalg.inv(lift_planar(ref))
+                moves[index[c]] = np.einsum("kij,jl,lm->kim", lift_planar(poses), back, placed[index[c]][2])
+            out.append((info, moves))
+        return out
+
     def _write_models(self) -> None:
         """Every assembly's GLB and picture (after :meth:`wait_solids`: the meshes are in), two at a time."""
         if not self._assemblies:
@@ -266,7 +301,7 @@ class OutputWriter:
         jobs = []
         for name, placed, from_below in self._assemblies:
             meshes = {key: self._meshes[key] for key in dict.fromkeys(k for _, k, _ in placed)}
-            args = (str(self.folder), name, meshes, placed, from_below)
+            args = (str(self.folder), name, meshes, placed, from_below, self._motion_placements(name, placed))
             jobs.append(pool.submit(assembly_model, *args) if pool else inline(assembly_model, *args))
         for job in jobs:
             job.result()
@@ -342,7 +377,7 @@ class OutputWriter:
         report = write_report(self.folder / self.report_name, title=self.title, part=self.part, intro=intro,
                               inputs=report_inputs, derived=report_derived, checks=self.checks, tables=self.tables,
                               plots=self.plots, notes=notes, views=views, key_values=self.key_values())
-        write_report_html(report)
+        write_report_html(report, self.media.get("models", ()))
         manifest = write_manifest(self.folder, part=self.part, inputs=inputs, derived=self.derived,
                                   checks=self.checks, expected_failures=self.expected_failures, media=self.media,
                                   title=self.title, glossary=manifest_glossary(explained))

@@ -1,9 +1,10 @@
 /* propulsor's 3D views: the assemblies' GLB files drawn with three.js (vendored: three.min.js, inlined
  * before this script; window.PROPULSOR_THREE), for a page opened from disk.
  *
- * What three.js does: the GLB (GLTFLoader), the drawing (WebGLRenderer, lights, clipping planes), and the
+ * What three.js does: the GLB (GLTFLoader), the drawing (WebGLRenderer, lights, clipping planes), the
  * camera's controls (OrbitControls: left drag turns, right drag / shift+drag / two fingers pan, wheel and
- * pinch zoom toward the cursor).  What stays ours, because no library does it for this page:
+ * pinch zoom toward the cursor), picking (Raycaster) and the motion's poses (AnimationMixer plays the
+ * GLB's animation).  What stays ours, because no library does it for this page:
  *  - the GLB's bytes come from a classic script twin (<name>.glb.js, in window.PROPULSOR_GLB under its
  *    own URL): a page opened from file:// may not fetch() the GLB beside it;
  *  - any number of views on one page: ONE WebGL context (one renderer, its canvas never shown) draws
@@ -12,8 +13,10 @@
  *    and every view drawn again when it is restored;
  *  - the tools under a view: the part list (show / hide, colour; a click on a part picks it), the
  *    section plane (x, y or z of the part's frame, and where), the exploded view (components moved
- *    away from the assembly's centre), a double click fits the view again.
- * Figures: <figure class="viewer" data-models='[{"script": "...glb.js", "title": "..."}]'> holding a
+ *    away from the assembly's centre), the motion (a slider through the poses of the GLB's first
+ *    animation, one key per pose, and play / pause), a double click fits the view again.
+ * Figures: <figure class="viewer" data-models='[{"script": "...glb.js", "title": "...", "view": [x, y, z]}]'>
+ * ("view": the first camera direction, y up; optional) holding a
  * <canvas>, an optional <select>, a .status line.  data-state = waiting | loading | drawn | error | lost
  * ("drawn" once the image is in the view's canvas).
  */
@@ -103,7 +106,7 @@
       var b64 = (window.PROPULSOR_GLB || {})[script.src];
       if (!b64) return self.fail(model.script + " did not define its model");
       try {
-        new T.GLTFLoader().parse(decode64(b64), "", function (gltf) { self.show(gltf.scene, model); },
+        new T.GLTFLoader().parse(decode64(b64), "", function (gltf) { self.show(gltf.scene, model, gltf.animations); },
                                  function (e) { self.fail(model.script + ": " + (e.message || e)); });
       } catch (e) { self.fail(model.script + ": " + (e.message || e)); }
     };
@@ -117,8 +120,9 @@
   };
 
   /* The assembly: its root node (named as the assembly) holds one node per component. */
-  View.prototype.show = function (root, model) {
+  View.prototype.show = function (root, model, clips) {
     var self = this;
+    this.stop();
     if (this.root) {
       this.scene.remove(this.root);
       this.root.traverse(function (o) { if (o.geometry) o.geometry.dispose(); if (o.material) o.material.dispose(); });
@@ -143,11 +147,13 @@
       var a = p.parent.worldToLocal(centre.clone()), b = p.parent.worldToLocal(c);
       p.userData.away = b.sub(a);
     });
+    this.motion = clips && clips.length ? this.motionOf(root, clips[0]) : null;
+    this.model = model;
     this.buildTools();
+    if (this.motion) this.setFrame(0);
     this.applyExplode();
     this.applySection();
     this.fit();
-    this.model = model;
     this.drawnText = model.title + ": " + this.parts.length + " components; drag to turn, right drag or shift+drag " +
       "to pan, wheel or pinch to zoom, double click to fit";
     this.dirty = true;
@@ -161,7 +167,8 @@
     var aspect = (this.canvas.clientWidth || 4) / (this.canvas.clientHeight || 3);
     var half = T.MathUtils.degToRad(this.camera.fov / 2), fit = Math.min(half, Math.atan(Math.tan(half) * aspect));
     var dist = r / Math.sin(fit) * 0.92;
-    this.camera.position.copy(centre).add(new T.Vector3(1, 0.8, 1).normalize().multiplyScalar(dist));
+    var d = this.model && this.model.view ? new T.Vector3().fromArray(this.model.view) : new T.Vector3(1, 0.8, 1);
+    this.camera.position.copy(centre).add(d.normalize().multiplyScalar(dist));
     this.camera.near = dist / 100; this.camera.far = dist * 10;
     this.controls.target.copy(centre);
     this.controls.update();
@@ -189,6 +196,50 @@
     if (g.isContextLost()) return;
     c.getContext("2d").drawImage(r.domElement, 0, 0);
     if (this.dirty) { this.dirty = false; this.setState("drawn", this.drawnText); }
+  };
+
+  // ---- the motion: the GLB's first animation, one key per proof pose (STEP interpolation), played by
+  // three's AnimationMixer at the key's own time (so a slider position is exactly one pose)
+  View.prototype.motionOf = function (root, clip) {
+    var mixer = new T.AnimationMixer(root), action = mixer.clipAction(clip), times = clip.tracks[0].times;
+    var extras = clip.userData || {};  // the animation's glTF extras: title, steps, poses
+    var step = times.length > 1 ? times[1] - times[0] : 0.06;
+    clip.duration = times[times.length - 1] + step;  // the last pose lasts a frame too (never wraps to 0)
+    action.play();
+    return { mixer: mixer, times: times, step: step, frame: 0, timer: null, clip: clip, extras: extras };
+  };
+
+  /* Pose j of the motion: the mixer places the moving components; the exploded view moves them from there. */
+  View.prototype.setFrame = function (j) {
+    var m = this.motion;
+    if (!m) return;
+    m.frame = j;
+    this.parts.forEach(function (p) { p.position.copy(p.userData.home); });
+    m.mixer.setTime(m.times[j]);
+    this.parts.forEach(function (p) { p.userData.home = p.position.clone(); });
+    this.applyExplode();
+    if (m.slider) m.slider.value = String(j);
+    if (m.label) m.label.textContent = "pose " + (j + 1) + " of " + m.times.length +
+      (m.steps ? " (proof step " + (m.steps[j] + 1) + ")" : "");
+    this.schedule();
+  };
+
+  View.prototype.play = function () {
+    var self = this, m = this.motion;
+    if (!m || m.timer) return;
+    m.button.textContent = "pause";
+    m.timer = setInterval(function () {
+      if (!self.visible) return;
+      self.setFrame((m.frame + 1) % m.times.length);
+    }, Math.max(30, m.step * 1000));
+  };
+
+  View.prototype.stop = function () {
+    var m = this.motion;
+    if (!m || !m.timer) return;
+    clearInterval(m.timer);
+    m.timer = null;
+    m.button.textContent = "play";
   };
 
   // ---- the tools
@@ -237,6 +288,24 @@
     }
     [on, axis, at].forEach(function (x) { x.addEventListener("input", update); x.addEventListener("change", update); });
     t.appendChild(sec);
+
+    var m = this.motion;
+    if (m) {
+      var mo = el("div", { class: "row motion" });
+      m.button = el("button", { type: "button", "aria-label": "play the motion" }, "play");
+      m.slider = el("input", { type: "range", min: "0", max: String(m.times.length - 1), step: "1", value: "0",
+                               "aria-label": "motion pose" });
+      m.label = el("span", { class: "pose" });
+      m.steps = Array.isArray(m.extras.steps) ? m.extras.steps : null;
+      m.title = typeof m.extras.title === "string" ? m.extras.title : "";
+      m.button.addEventListener("click", function () { if (m.timer) self.stop(); else self.play(); });
+      m.slider.addEventListener("input", function () { self.stop(); self.setFrame(Number(m.slider.value)); });
+      var moLabel = el("label", {}, "motion ");
+      moLabel.appendChild(m.slider);
+      mo.appendChild(m.button); mo.appendChild(moLabel); mo.appendChild(m.label);
+      if (m.title) mo.title = m.title;
+      t.appendChild(mo);
+    }
 
     if (this.parts.length > 1) {
       var ex = el("div", { class: "row" }), exLabel = el("label", {}, "exploded ");

@@ -67,6 +67,10 @@ def travel_animation(m: BalancerModel, w, built: dict) -> list:
         if name in pairs:
             shapes += _station(m, pairs[name]["neighbour_beta"][idx], x0, chord, "teal")
     shapes += _station(m, betas[idx], 0.0, chord, "blue")
+    # the 3D view of the assembly at β_st: arm and wheel turn together about the torsion axis (z) to each β
+    arm = rotation_matrices(betas[idx] - 0.5 * math.pi)
+    at_st = rotation_matrices([t.beta_st - 0.5 * math.pi])[0]
+    nodes = {c: (arm, at_st) for c in built.get("assembly_components", ())}
     axes = [(0.0, 0.0)] + [(x0, 0.0) for x0 in (m.pitch, -m.pitch)]
     marks, captions = [], []
     for s in idx:
@@ -96,4 +100,5 @@ def travel_animation(m: BalancerModel, w, built: dict) -> list:
             least_clearance_mm=least, steps=idx,
             pose_columns={"beta_deg": [math.degrees(b) for b in betas[idx]],
                           **{f"{name}_neighbour_beta_deg": [math.degrees(b) for b in pairs[name]["neighbour_beta"][idx]]
-                             for name in ("front", "rear") if name in pairs}})]
+                             for name in ("front", "rear") if name in pairs}},
+            assembly="assembly_beta_st", nodes=nodes)]

@@ -173,6 +173,7 @@ def solids_and_sweep_start(m: BalancerModel, w, built: dict) -> None:
     for nm, s_ in wsol.items():
         comps.append((f"road_wheel_{nm}", s_, z_rotation(th, (p.R_b_mm, 0.0, m.z_hub))))
     w.add_assembly("assembly_beta_st", comps, picture_from_below=True)  # seen from above the wheel hides the arm
+    built["assembly_components"] = [c[0] for c in comps]  # they all turn with the arm (the 3D view's motion)
 
     # DXF of the arm's side outline (plate blank)
     refs = [("line", {"p0": (-p.upper_boss_r_mm - 10, 0.0), "p1": (p.R_b_mm + p.lower_boss_r_mm + 10, 0.0)}),

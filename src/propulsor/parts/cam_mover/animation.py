@@ -54,6 +54,12 @@ def walking_animation(dd: Plan, w, built: dict) -> list:
     shapes = [Shape(loops_of(pl.plate, chord), "steel"), Shape(loops_of(pl.ring, chord), "brown"),
               Shape(loops_of(pl.core, chord), "brown")]
     legs = [leg_poses(pl, phi[idx] + 2.0 * math.pi * j / n_legs) for j in range(n_legs)]
+    # the 3D view of the assembly (carrier at assembly_angle_deg): carrier, legs, rollers, shoes at the same poses
+    a0 = math.radians(p.assembly_angle_deg)
+    nodes = {"carrier": (car, rotation_matrices([a0])[0])}
+    for j, M in enumerate(legs):
+        ref = leg_poses(pl, np.array([a0 + 2.0 * math.pi * j / n_legs]))[0]
+        nodes.update({f"{what}_{j + 1}": (M, ref) for what in ("leg", "roller", "shoe")})
     # drawn as seen through the carrier: its outline, the legs, the rollers (in the channel, under the legs)
     shapes.append(Shape(loops_of(pl.carrier.profile, chord), "green", car, fill=False, width=2))
     shapes += [Shape(loops_of(pl.leg, chord), "blue", M) for M in legs]
@@ -95,4 +101,5 @@ def walking_animation(dd: Plan, w, built: dict) -> list:
             least_clearance_mm=least, steps=idx,
             pose_columns={"phi_deg": [math.degrees(x) for x in phi[idx]], "hub_height_mm": hub[idx],
                           "least_clearance_mm": C.min(axis=0)[idx],
-                          "least_clearance_between": [names[int(pair_at[s])][1] for s in idx]})]
+                          "least_clearance_between": [names[int(pair_at[s])][1] for s in idx]},
+            assembly="assembly", nodes=nodes)]

@@ -51,6 +51,12 @@ def carrier_turn_animation(dd: FinalDriveDesign, w, built: dict) -> list:
     idx = np.arange(least_step % k, N, k)
     n = len(idx)
     M_sun, M_ring, M_pl = member_poses(p, ps, psi[idx])
+    # the 3D view of the assembly (at carrier angle 0): the same poses; the ring stands still
+    R_sun, _, R_pl = member_poses(p, ps, np.zeros(1))
+    nodes = {"sun": (M_sun, R_sun[0])}
+    nodes.update({f"planet_{j + 1}": (M, R[0]) for j, (M, R) in enumerate(zip(M_pl, R_pl))})
+    if "carrier" in built.get("solids", {}):
+        nodes["carrier"] = (rotation_matrices(psi[idx]), rotation_matrices([0.0])[0])
     R = 0.5 * ring_outer_d(p, ps)
     chord = chord_for_view(2.0 * R, 0.95 * WIDTH_PX_FD)
     sun_o, planet_o, ring_o = dd.outlines
@@ -86,4 +92,5 @@ def carrier_turn_animation(dd: FinalDriveDesign, w, built: dict) -> list:
             poses=f"{every(k)} of the interference sweep's {N} carrier angles (grid through the step of least clearance)",
             least_clearance_mm=least, steps=idx,
             pose_columns={"psi_deg": [math.degrees(x) for x in psi[idx]], "least_clearance_mm": C.min(axis=0)[idx],
-                          "mesh_of_least_clearance": [sweeps[int(mesh_at[s])].name for s in idx]})]
+                          "mesh_of_least_clearance": [sweeps[int(mesh_at[s])].name for s in idx]},
+            assembly="assembly", nodes=nodes)]

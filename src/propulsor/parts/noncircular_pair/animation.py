@@ -81,6 +81,9 @@ def pair_animation(dd: PairDesign, w, built: dict) -> list:
     driven = Shape(loops_of(prof_dvn, chord), "blue", rotation_matrices(-phi_run[idx]))
     driver = Shape(loops_of(prof_drv, chord), "orange",
                    rotation_matrices(pr.theta_law[idx], np.tile([mount, 0.0], (n, 1))))
+    # the 3D view of the pair (assembly at φ = θ = 0: driven at the origin, driver at (L, 0)): the same poses
+    nodes = {"driven": (driven.poses, rotation_matrices([0.0])[0]),
+             "driver": (driver.poses, rotation_matrices([0.0], [[mount, 0.0]])[0])}
     axes = Shape((np.array([[-0.06 * r_dvn, 0.0], [mount + 0.06 * r_drv, 0.0]]),), "grey", None, closed=False)
     U, hub = _ratio_and_hub_speed(d, pr.phi)
     deg = np.degrees(pr.phi)
@@ -127,4 +130,4 @@ def pair_animation(dd: PairDesign, w, built: dict) -> list:
                   + ("; grid through the phase of least backlash)" if least_k is not None else ")"),
             least_clearance_mm=None if least_k is None else float(bl[least_k]), least_what="least backlash",
             steps=idx, pose_columns={"phi_rad": pr.phi[idx], "phi_run_rad": phi_run[idx],
-                                     "theta_law_rad": pr.theta_law[idx]})]
+                                     "theta_law_rad": pr.theta_law[idx]}, assembly="pair", nodes=nodes)]

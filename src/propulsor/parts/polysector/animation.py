@@ -47,6 +47,11 @@ def position_animations(dd: PolysectorDesign, w, built: dict) -> list:
         chord = chord_for_view(extent)
         wheel = rotation_matrices(pr.phi[idx])
         gear = rotation_matrices(-pr.theta[idx], np.tile([q.a, 0.0], (n, 1)))
+        # the 3D view of the position's assembly (at phase zero): hubs and sectors turn with the wheel
+        still = rotation_matrices([0.0])[0]
+        nodes = {c: (wheel, still) for c in ["hub_flow1"] + (["hub_flow2"] if p.flows == 2 else [])
+                 + [f"sector_flow{f}_{i + 1}" for f in range(1, p.flows + 1) for i in range(len(dd.sector_angles(f)))]}
+        nodes["gear"] = (gear, rotation_matrices([0.0], [[q.a, 0.0]])[0])
         shapes = [Shape(loops_of(dd.hubs[0], chord), "steel", wheel)]
         for f, colour in ((2, "purple"), (1, "blue")):
             if f <= p.flows:
@@ -76,5 +81,6 @@ def position_animations(dd: PolysectorDesign, w, built: dict) -> list:
                       "over one sector period (grid through the step of least backlash)",
                 least_clearance_mm=least, least_what="least backlash", steps=idx,
                 pose_columns={"phi_rad": pr.phi[idx], "theta_rad": pr.theta[idx],
-                              "backlash_mm": room_mm[idx], "pairs_in_contact": pr.pairs[idx]}))
+                              "backlash_mm": room_mm[idx], "pairs_in_contact": pr.pairs[idx]},
+                assembly=f"assembly_{q.k}", nodes=nodes))
     return jobs
