@@ -32,6 +32,8 @@ E_MAX = 0.9
 LOBES_MAX = 12
 #: samples of d phi / d theta over one driver turn when checking it stays > 0
 _FOURIER_CHECK_SAMPLES = 20000
+#: points of the table of theta over one period that starts the Fourier law's Newton iteration
+_GUESS_POINTS = 1024
 #: arrays of at most this many points take the Fourier law's one-point path (``FourierLaw._small``)
 _SMALL = 8
 
@@ -185,6 +187,7 @@ class FourierLaw(_PeriodicLaw):
         object.__setattr__(self, "_terms", tuple((float(j), float(cj), float(sj))
                                                  for j, cj, sj in zip(self._j, self._c, self._s) if cj or sj))
         object.__setattr__(self, "_last", (math.nan, math.nan))
+        object.__setattr__(self, "_last_arr", (b"", None, None))
         th = np.linspace(0.0, 2 * math.pi, _FOURIER_CHECK_SAMPLES, endpoint=False)
         g = self._g(th, 1)
         i = int(np.argmin(g))
@@ -193,6 +196,11 @@ class FourierLaw(_PeriodicLaw):
             raise InputError(key, list(c if len(c) else s),
                              f"d phi / d theta = {g[i]:.4g} <= 0 at theta = {math.degrees(th[i]):.2f} deg: the "
                              "driven wheel would stop or turn back (the ratio must stay > 0)")
+        ph = np.linspace(0.0, self.period, _GUESS_POINTS + 1)
+        T = self._newton(ph, self.k * ph)
+        T[0], T[-1] = 0.0, 2 * math.pi
+        object.__setattr__(self, "_T", T)
+        object.__setattr__(self, "_T_list", T.tolist())
 
     def _g(self, theta, order: int):
         """phi(theta) (order 0) or its 1st / 2nd / 3rd derivative in theta."""
@@ -228,7 +236,15 @@ class FourierLaw(_PeriodicLaw):
         if small is not None:
             return small
         phi = np.asarray(phi, dtype=float)
-        th = self.k * phi
+        key = phi.tobytes()
+        last = self._last_arr
+        if last[0] == key and last[1] == phi.shape:
+            return last[2].copy()
+        th = self._newton(phi, self._guess(phi))
+        object.__setattr__(self, "_last_arr", (key, phi.shape, th))  # U, U', U'' of one phi in turn
+        return th.copy()
+
+    def _newton(self, phi, th):
         for _ in range(100):
             step = (self._g(th, 0) - phi) / self._g(th, 1)
             step = np.clip(step, -0.5, 0.5)
@@ -236,6 +252,17 @@ class FourierLaw(_PeriodicLaw):
             if np.all(np.abs(step) < 1e-12):
                 break
         return th - (self._g(th, 0) - phi) / self._g(th, 1)  # one more step: at rounding level
+
+    def _guess(self, phi):
+        """theta(phi) interpolated in the table of one period (a start for Newton within about 1e-6 rad):
+        theta(phi + P) = theta(phi) + 2 pi."""
+        P, T = self.period, self._T
+        m = np.floor(phi / P)
+        x = (phi - m * P) * (_GUESS_POINTS / P)
+        i = np.clip(np.floor(x), 0, _GUESS_POINTS - 1)
+        t = x - i
+        i = np.nan_to_num(i).astype(int)
+        return 2 * math.pi * m + (1 - t) * T[i] + t * T[i + 1]
 
     def U(self, phi):
         small = self._small(phi, 0)
@@ -274,7 +301,13 @@ class FourierLaw(_PeriodicLaw):
         last = self._last
         if last[0] == phi:
             return last[1]
-        th = self.k * phi
+        P = self.period
+        m = math.floor(phi / P)
+        x = (phi - m * P) * (_GUESS_POINTS / P)
+        i = min(max(int(x), 0), _GUESS_POINTS - 1)
+        t = x - i
+        T = self._T_list
+        th = 2 * math.pi * m + (1 - t) * T[i] + t * T[i + 1]
         for _ in range(100):
             g0, g1 = self._g01(th)
             step = min(max((g0 - phi) / g1, -0.5), 0.5)
