@@ -94,3 +94,24 @@ def test_the_shipped_part_files_of_other_laws_pass_the_dry_run(name, tmp_path, c
     out = capsys.readouterr()
     assert rc == 0, out.err
     assert " is valid; would build into " in out.out
+
+
+def test_speed_ratio_plot_shows_the_law_beside_the_speed_the_teeth_deliver():
+    """A law without a hub: the output speed plot has the law's 1/U and the measured d phi / d theta."""
+    from types import SimpleNamespace
+
+    import numpy as np
+
+    from propulsor.laws.ratio_laws import EllipticalLaw
+    from propulsor.parts.noncircular_pair.law_outputs import speed_ratio_plot
+
+    law = EllipticalLaw(0.3, 1)
+    x = np.linspace(0.0, 2 * math.pi, 41)[:-1]
+    pr = SimpleNamespace(ratio_actual=lambda: (x, law.U(x) * 1.01))
+    plots = {}
+    w = SimpleNamespace(add_plot=lambda name, fig: plots.setdefault(name, fig))
+    speed_ratio_plot(w, SimpleNamespace(law=law, run_law=law), pr)
+    lines = plots["speed_ratio"].axes[0].get_lines()
+    assert len(lines) == 2
+    xs, ys = lines[1].get_data()
+    assert len(xs) == 40 and np.allclose(ys, 1.0 / (1.01 * law.U(x)))
