@@ -33,7 +33,7 @@ LOBES_MAX = 12
 #: samples of d phi / d theta over one driver turn when checking it stays > 0
 _FOURIER_CHECK_SAMPLES = 20000
 #: points of the table of theta over one period that starts the Fourier law's Newton iteration
-_GUESS_POINTS = 1024
+_GUESS_POINTS = 4096
 #: arrays of at most this many points take the Fourier law's one-point path (``FourierLaw._small``)
 _SMALL = 8
 
@@ -199,8 +199,11 @@ class FourierLaw(_PeriodicLaw):
         ph = np.linspace(0.0, self.period, _GUESS_POINTS + 1)
         T = self._newton(ph, self.k * ph)
         T[0], T[-1] = 0.0, 2 * math.pi
+        D = (self.period / _GUESS_POINTS) / self._g(T, 1)  # d theta per grid step: h U
         object.__setattr__(self, "_T", T)
+        object.__setattr__(self, "_D", D)
         object.__setattr__(self, "_T_list", T.tolist())
+        object.__setattr__(self, "_D_list", D.tolist())
 
     def _g(self, theta, order: int):
         """phi(theta) (order 0) or its 1st / 2nd / 3rd derivative in theta."""
@@ -254,15 +257,17 @@ class FourierLaw(_PeriodicLaw):
         return th - (self._g(th, 0) - phi) / self._g(th, 1)  # one more step: at rounding level
 
     def _guess(self, phi):
-        """theta(phi) interpolated in the table of one period (a start for Newton within about 1e-6 rad):
-        theta(phi + P) = theta(phi) + 2 pi."""
-        P, T = self.period, self._T
+        """theta(phi) by cubic Hermite interpolation in the table of one period (theta and its slope U; a
+        start for Newton within about 1e-12 rad): theta(phi + P) = theta(phi) + 2 pi."""
+        P, T, D = self.period, self._T, self._D
         m = np.floor(phi / P)
         x = (phi - m * P) * (_GUESS_POINTS / P)
         i = np.clip(np.floor(x), 0, _GUESS_POINTS - 1)
         t = x - i
         i = np.nan_to_num(i).astype(int)
-        return 2 * math.pi * m + (1 - t) * T[i] + t * T[i + 1]
+        t2, t3 = t * t, t * t * t
+        return (2 * math.pi * m + (2 * t3 - 3 * t2 + 1) * T[i] + (t3 - 2 * t2 + t) * D[i]
+                + (3 * t2 - 2 * t3) * T[i + 1] + (t3 - t2) * D[i + 1])
 
     def U(self, phi):
         small = self._small(phi, 0)
@@ -306,8 +311,10 @@ class FourierLaw(_PeriodicLaw):
         x = (phi - m * P) * (_GUESS_POINTS / P)
         i = min(max(int(x), 0), _GUESS_POINTS - 1)
         t = x - i
-        T = self._T_list
-        th = 2 * math.pi * m + (1 - t) * T[i] + t * T[i + 1]
+        T, D = self._T_list, self._D_list
+        t2, t3 = t * t, t * t * t
+        th = (2 * math.pi * m + (2 * t3 - 3 * t2 + 1) * T[i] + (t3 - 2 * t2 + t) * D[i]
+              + (3 * t2 - 2 * t3) * T[i + 1] + (t3 - t2) * D[i + 1])
         for _ in range(100):
             g0, g1 = self._g01(th)
             step = min(max((g0 - phi) / g1, -0.5), 0.5)
