@@ -76,8 +76,12 @@ def _import_solid_work() -> None:
     """The modules :func:`solid_files_and_checks` runs (mesh, checks, STEP, pictures), imported before the
     workers are forked: each worker then starts with them instead of importing them again."""
     from ..checks import brep, mesh  # noqa: F401
+    from ..checks.tri_tri import pairs_intersect
     from ..export import mesh as _mesh, render, step  # noqa: F401
     from ..solids import kernel  # noqa: F401
+
+    none = np.zeros(0, np.int64)  # the compiled narrow phase loaded from numba's cache, no pair to test
+    pairs_intersect(np.zeros((3, 3)), np.zeros((1, 3), np.int64), none, none, np.zeros((1, 3)), np.zeros(1), 1e-9)
 
 
 def mesh_of(solid, forked: bool):
