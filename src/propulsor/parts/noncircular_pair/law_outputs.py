@@ -48,7 +48,7 @@ def speed_ratio_plot(w, d: Design, pr=None):
     if pr is not None:
         x, u = pr.ratio_actual()
         ok = np.isfinite(u) & (u > 0)
-        ax.plot(np.degrees(np.mod(x[ok], 2 * math.pi)), 1.0 / u[ok], ".", ms=2.5,
+        ax.plot(np.degrees(np.mod(x[ok], 2 * math.pi)), 1.0 / u[ok], "C1.", ms=3,
                 label="generated teeth: d phi / d theta from the outlines")
     ax.set_xlabel("driven angle phi, deg")
     ax.set_ylabel("output speed ratio omega_H / omega = 1/U")
