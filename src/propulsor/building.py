@@ -72,8 +72,18 @@ def load_part(part_file: Path):
         params.validate()
     estimate = estimate or check_size(part_type, params, part_file)
     if callable(getattr(params, "screen", None)):
-        params.screen()  # what the build would refuse before making any geometry (may take seconds)
+        _screen(params, part_file)  # what the build would refuse before making any geometry (may take seconds)
     return part_type, params, estimate
+
+
+def _screen(params, part_file: Path) -> None:
+    """``params.screen()``; with the part file where the screen reads the files it names (``source``)."""
+    import inspect
+
+    if "source" in inspect.signature(params.screen).parameters:
+        params.screen(source=part_file)
+    else:
+        params.screen()
 
 
 def write_depfile(depfile: Path, target: Path, files) -> None:

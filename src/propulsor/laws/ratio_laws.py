@@ -32,6 +32,10 @@ E_MAX = 0.9
 LOBES_MAX = 12
 #: samples of d phi / d theta over one driver turn when checking it stays > 0
 _FOURIER_CHECK_SAMPLES = 20000
+#: points of the table of theta over one period that starts the Fourier law's Newton iteration
+_GUESS_POINTS = 4096
+#: arrays of at most this many points take the Fourier law's one-point path (``FourierLaw._small``)
+_SMALL = 8
 
 
 def _lobes(value) -> int:
@@ -143,6 +147,20 @@ class EllipticalLaw(_PeriodicLaw):
         dU = -self.e * np.sin(th) / self.q * U
         return -self.e / self.q * (np.cos(th) * U * U + np.sin(th) * dU)
 
+    def theta1(self, phi: float) -> float:
+        """``theta`` at one float phi, in ``math``."""
+        x = self.k * float(phi) / 2
+        j = math.floor(x / math.pi + 0.5)
+        return 2 * (math.atan(math.tan(x - j * math.pi) / self._c) + j * math.pi)
+
+    def U_derivs1(self, phi: float) -> tuple:
+        """(U, dU/dphi, d2U/dphi2) at one float phi, from one theta(phi)."""
+        th = self.theta1(phi)
+        c, s = math.cos(th), math.sin(th)
+        U = (self._alpha + self.e * c) / self.q
+        dU = -self.e * s / self.q * U
+        return U, dU, -self.e / self.q * (c * U * U + s * dU)
+
 
 @dataclass(frozen=True)
 class FourierLaw(_PeriodicLaw):
@@ -166,6 +184,10 @@ class FourierLaw(_PeriodicLaw):
         object.__setattr__(self, "_c", np.array(c + (0.0,) * (J - len(c))))
         object.__setattr__(self, "_s", np.array(s + (0.0,) * (J - len(s))))
         object.__setattr__(self, "_c0", float(np.sum(self._c)))
+        object.__setattr__(self, "_terms", tuple((float(j), float(cj), float(sj))
+                                                 for j, cj, sj in zip(self._j, self._c, self._s) if cj or sj))
+        object.__setattr__(self, "_last", (math.nan, math.nan))
+        object.__setattr__(self, "_last_arr", (b"", None, None))
         th = np.linspace(0.0, 2 * math.pi, _FOURIER_CHECK_SAMPLES, endpoint=False)
         g = self._g(th, 1)
         i = int(np.argmin(g))
@@ -174,6 +196,14 @@ class FourierLaw(_PeriodicLaw):
             raise InputError(key, list(c if len(c) else s),
                              f"d phi / d theta = {g[i]:.4g} <= 0 at theta = {math.degrees(th[i]):.2f} deg: the "
                              "driven wheel would stop or turn back (the ratio must stay > 0)")
+        ph = np.linspace(0.0, self.period, _GUESS_POINTS + 1)
+        T = self._newton(ph, self.k * ph)
+        T[0], T[-1] = 0.0, 2 * math.pi
+        D = (self.period / _GUESS_POINTS) / self._g(T, 1)  # d theta per grid step: h U
+        object.__setattr__(self, "_T", T)
+        object.__setattr__(self, "_D", D)
+        object.__setattr__(self, "_T_list", T.tolist())
+        object.__setattr__(self, "_D_list", D.tolist())
 
     def _g(self, theta, order: int):
         """phi(theta) (order 0) or its 1st / 2nd / 3rd derivative in theta."""
@@ -194,10 +224,30 @@ class FourierLaw(_PeriodicLaw):
     def phi_of_theta(self, theta, tol: float = 0.0):
         return self._g(theta, 0)
 
+    def _small(self, phi, i: int):
+        """The one-point path (``U_derivs1``: index i of (U, U', U''); -1: theta) on an array of a few
+        points, where numpy's per-call cost is the whole price; None for a larger array."""
+        phi = np.asarray(phi, dtype=float)
+        if phi.size > _SMALL or not np.all(np.isfinite(phi)):
+            return None
+        f = self.theta1 if i < 0 else (lambda x: self.U_derivs1(x)[i])
+        return np.array([f(x) for x in phi.ravel().tolist()], dtype=float).reshape(phi.shape)
+
     def theta(self, phi):
         """Inverse of phi(theta): Newton from k phi on the monotone phi(theta), steps bounded."""
+        small = self._small(phi, -1)
+        if small is not None:
+            return small
         phi = np.asarray(phi, dtype=float)
-        th = self.k * phi
+        key = phi.tobytes()
+        last = self._last_arr
+        if last[0] == key and last[1] == phi.shape:
+            return last[2].copy()
+        th = self._newton(phi, self._guess(phi))
+        object.__setattr__(self, "_last_arr", (key, phi.shape, th))  # U, U', U'' of one phi in turn
+        return th.copy()
+
+    def _newton(self, phi, th):
         for _ in range(100):
             step = (self._g(th, 0) - phi) / self._g(th, 1)
             step = np.clip(step, -0.5, 0.5)
@@ -206,15 +256,83 @@ class FourierLaw(_PeriodicLaw):
                 break
         return th - (self._g(th, 0) - phi) / self._g(th, 1)  # one more step: at rounding level
 
+    def _guess(self, phi):
+        """theta(phi) by cubic Hermite interpolation in the table of one period (theta and its slope U; a
+        start for Newton within about 1e-12 rad): theta(phi + P) = theta(phi) + 2 pi."""
+        P, T, D = self.period, self._T, self._D
+        m = np.floor(phi / P)
+        x = (phi - m * P) * (_GUESS_POINTS / P)
+        i = np.clip(np.floor(x), 0, _GUESS_POINTS - 1)
+        t = x - i
+        i = np.nan_to_num(i).astype(int)
+        t2, t3 = t * t, t * t * t
+        return (2 * math.pi * m + (2 * t3 - 3 * t2 + 1) * T[i] + (t3 - 2 * t2 + t) * D[i]
+                + (3 * t2 - 2 * t3) * T[i + 1] + (t3 - t2) * D[i + 1])
+
     def U(self, phi):
-        return 1.0 / self._g(self.theta(phi), 1)
+        small = self._small(phi, 0)
+        return small if small is not None else 1.0 / self._g(self.theta(phi), 1)
 
     def dU_dphi(self, phi):
+        small = self._small(phi, 1)
+        if small is not None:
+            return small
         th = self.theta(phi)
         g1, g2 = self._g(th, 1), self._g(th, 2)
         return -g2 / g1 ** 3
 
     def d2U_dphi2(self, phi):
+        small = self._small(phi, 2)
+        if small is not None:
+            return small
         th = self.theta(phi)
         g1, g2, g3 = self._g(th, 1), self._g(th, 2), self._g(th, 3)
         return (3 * g2 * g2 - g3 * g1) / g1 ** 5
+
+    # ---- one point (a float), in ``math``: the tooth generator's calls, one at a time ----------------
+    def _g01(self, th: float) -> tuple:
+        """(phi(theta), d phi / d theta) at one float theta."""
+        g0, g1 = th / self.k, 1.0 / self.k
+        for j, c, s in self._terms:
+            ca, sa = math.cos(j * th), math.sin(j * th)
+            g0 += c * ca + s * sa
+            g1 += j * (s * ca - c * sa)
+        return g0 - self._c0, g1
+
+    def theta1(self, phi: float) -> float:
+        """``theta`` at one float phi: the same Newton iteration in ``math`` (equal to rounding), the last
+        point remembered (the generator asks for U and theta of one phi in turn)."""
+        phi = float(phi)
+        last = self._last
+        if last[0] == phi:
+            return last[1]
+        P = self.period
+        m = math.floor(phi / P)
+        x = (phi - m * P) * (_GUESS_POINTS / P)
+        i = min(max(int(x), 0), _GUESS_POINTS - 1)
+        t = x - i
+        T, D = self._T_list, self._D_list
+        t2, t3 = t * t, t * t * t
+        th = (2 * math.pi * m + (2 * t3 - 3 * t2 + 1) * T[i] + (t3 - 2 * t2 + t) * D[i]
+              + (3 * t2 - 2 * t3) * T[i + 1] + (t3 - t2) * D[i + 1])
+        for _ in range(100):
+            g0, g1 = self._g01(th)
+            step = min(max((g0 - phi) / g1, -0.5), 0.5)
+            th -= step
+            if abs(step) < 1e-12:
+                break
+        g0, g1 = self._g01(th)
+        th -= (g0 - phi) / g1
+        object.__setattr__(self, "_last", (phi, th))
+        return th
+
+    def U_derivs1(self, phi: float) -> tuple:
+        """(U, dU/dphi, d2U/dphi2) at one float phi, from one inversion theta(phi)."""
+        th = self.theta1(phi)
+        g1, g2, g3 = 1.0 / self.k, 0.0, 0.0
+        for j, c, s in self._terms:
+            ca, sa = math.cos(j * th), math.sin(j * th)
+            g1 += j * (s * ca - c * sa)
+            g2 -= j * j * (c * ca + s * sa)
+            g3 += j ** 3 * (c * sa - s * ca)
+        return 1.0 / g1, -g2 / g1 ** 3, (3 * g2 * g2 - g3 * g1) / g1 ** 5

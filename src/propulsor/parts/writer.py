@@ -73,6 +73,18 @@ def solid_files_and_checks(folder: str, name: str, solid, expected_genus, volume
     return checks, (vertices, faces)
 
 
+def _import_solid_work() -> None:
+    """The modules :func:`solid_files_and_checks` runs (mesh, checks, STEP, pictures), imported before the
+    workers are forked: each worker then starts with them instead of importing them again."""
+    from ..checks import brep, mesh  # noqa: F401
+    from ..checks.tri_tri import pairs_intersect
+    from ..export import mesh as _mesh, render, step  # noqa: F401
+    from ..solids import kernel  # noqa: F401
+
+    none = np.zeros(0, np.int64)  # the compiled narrow phase loaded from numba's cache, no pair to test
+    pairs_intersect(np.zeros((3, 3)), np.zeros((1, 3), np.int64), none, none, np.zeros((1, 3)), np.zeros(1), 1e-9)
+
+
 def mesh_of(solid, forked: bool):
     """(vertices, faces) of a solid that is in an assembly but has no files of its own."""
     from ..export.mesh import tessellate
@@ -189,6 +201,7 @@ class OutputWriter:
 
     def _solid_pool(self):
         if self._pool is None:
+            _import_solid_work()  # once here, not once in every forked worker
             self._pool = fork_pool(SOLID_WORKERS)
         return self._pool
 

@@ -90,72 +90,6 @@ def _law(p: NoncircularPairParams, source=None):
     return PitchCurveLaw(*read_pitch_curve(f), p.driver_turns)
 
 
-def _design_smooth(p: NoncircularPairParams, law, progress) -> Design:
-    """A law without corners (elliptical, Fourier, table): no blend; closure fixes L (or the module),
-    both pitch curves must be generable with the module, the teeth and the cutters (law_search: the
-    catalogue shapers at this module, largest first, where a pitch curve is concave), then the teeth."""
-    from ...gears.catalogue import shaper_diameters, shaper_entry
-    from ...gears.generability import remedies
-    from ...gears.noncircular import centre_distance, module_for
-    from ...gears.noncircular_teeth import ArcFrame, ToothSpec
-
-    z_H = p.driven_teeth
-    with input_names({"z_H": "driven_teeth", "m": "module_mm", "L": "center_distance_mm"}):
-        if p.module_mm > 0:
-            m = p.module_mm
-            L = centre_distance(law, m, z_H)
-        else:
-            L = p.center_distance_mm
-            m = module_for(law, L, z_H)
-    pc = PitchCurves(law, L)
-    alpha = math.radians(p.pressure_angle_deg)
-    own = shaper_of(p, m)
-    cands = [(None if p.shaper_d0_mm <= 0 else _entry_of(p, m), own)]
-    concave = pc.curvature("driver").concave or pc.curvature("driven").concave
-    if p.law_search and concave:  # a shaper only where a pitch curve is concave
-        entries = []
-        for d0 in sorted(shaper_diameters(), reverse=True):
-            try:
-                entries.append(shaper_entry(d0, m))
-            except InputError:
-                continue
-        cands = [(e, e.cutter(alpha)) for e in entries] or cands
-    progress(f"generated: generability of the {law.kind} law at m = {m:g}, z {z_H // law.n}/{z_H}")
-    rack, th = _rack(p), _thinning(p)
-    frame = None
-    tries = []
-    for entry, sh in cands:
-        cutter = CutterSpec(m=m, alpha=alpha, x=p.driver_shift, x_H=-p.driver_shift,
-                            z0=p.shaper_teeth if sh is None else sh.z0, shaper_x0=None if sh is None else sh.x0)
-        g = check_generable(pc, cutter)
-        if not g.ok:
-            tries.append("; ".join(remedies(g, cutter, z_H, law.n, L)))
-            if not (g.driver.concave or g.driven.concave) or not p.law_search:
-                break  # the rack limits: no other shaper helps
-            continue
-        frame = frame or ArcFrame(pc)
-        common = dict(m=m, thinning_mm=th, rack=rack, z0=cutter.z0, tip_min_mm=p.tip_land_min_module * m, shaper=sh)
-        progress(f"generated: driver teeth ({z_H // law.n}), rack/shaper envelopes")
-        try:
-            with input_names(_TOOTH_KEYS if entry is None else _TOOTH_KEYS_D0):
-                drv, dvn = _generate_pair(pc, ToothSpec(x=p.driver_shift, **common),
-                                          ToothSpec(x=-p.driver_shift, **common), frame)
-        except (InputError, RuntimeError, ValueError) as exc:
-            if not p.law_search or not (g.driver.concave or g.driven.concave):
-                raise
-            tries.append(f"shaper d0 {entry.d0_mm:g}: {str(exc).split(': ', 1)[-1]}")
-            continue
-        sm = SmoothingDesign(law=law, delta=0.0, L=L, z_H=z_H, z=z_H // law.n, cutter=cutter, generability=g,
-                             ripple=None)
-        return Design("generated", law, law, L, m, z_H, z_H // law.n, pc, smoothing=sm, driver=drv, driven=dvn,
-                      closure_error=sm.closure_error, shaper=entry)
-    raise InputError("driver_shift" if not tries or "convex" in tries[0] else "shaper_teeth",
-                     p.driver_shift if not tries or "convex" in tries[0] else p.shaper_teeth,
-                     f"the {law.kind} law's pitch curves are not generable at m = {m:g}, z {z_H // law.n}/{z_H}, "
-                     f"L = {L:.3f} mm with the catalogue cutters",
-                     " | ".join(tries))
-
-
 def _rack(p) -> BasicRack:
     """The ISO 53 rack of the part file's profile at its pressure angle (``gears.catalogue``)."""
     from ...gears.catalogue import rack_profile
@@ -234,15 +168,22 @@ class Screen:
     search: object = None     # gears.law_search.LawSearch (law_search = true)
     entries: tuple = ()       # catalogue.ShaperEntry at the module (law_search = true)
     sector: tuple = ()        # (SectorTable, L, m) of the sector method
+    smooth: object = None     # smooth_law.SmoothScreen of a law without corners
 
 
-def screen(p: NoncircularPairParams) -> Screen:
+def screen(p: NoncircularPairParams, source=None) -> Screen:
     """Every refusal of the inputs that needs no outline: the generability screen (rack undercut limit,
     shaper against concave stretches) of the given or smallest blend, the law search within
     center_distance_band_mm, the catalogue shaper at the module, the shaper the concave stretches need, the
     sector teeth's tip land, the installed centre distance.  ``propulsor build --dry-run`` runs it (so a file
-    it calls valid is not refused later for these), and the build uses its result (``pipeline.design_of``)."""
-    law = _law(p)
+    it calls valid is not refused later for these), and the build uses its result (``pipeline.design_of``).
+    A law without corners is screened by ``smooth_law.screen_smooth`` (its files relative to ``source``)."""
+    law = _law(p, source)
+    if not is_walking(law):
+        from .smooth_law import screen_smooth
+
+        scr = screen_smooth(p, law)
+        return Screen(scr.m, smooth=scr)
     if p.method == "sectors":
         return _screen_sectors(p)
     _rack(p)
@@ -316,10 +257,13 @@ def _mounting_fits(p: NoncircularPairParams, L: float) -> None:
                          f"must be >= the design centre distance L = {L:.6f} mm (or 0)")
 
 
-def screened(p: NoncircularPairParams) -> Screen:
-    """:func:`screen` once per parameter values (the dry run's result is the build's)."""
+def screened(p: NoncircularPairParams, source=None) -> Screen:
+    """:func:`screen` once per parameter values (the dry run's result is the build's); a law read from a
+    file is screened once per part file ``source`` too."""
     from ..pipeline import design_of
 
+    if p.law in ("table", "pitch_curve"):
+        return design_of(p, screen, None if source is None else str(source))
     return design_of(p, screen)
 
 
@@ -390,9 +334,11 @@ def _generate_pair(pc, spec_driver, spec_driven, frame):
 
 def design_generated(p: NoncircularPairParams, progress=lambda s: None, source=None) -> Design:
     """Seed 000/002 law -> C2 blend -> closure -> generated teeth (docs/architecture.md, "Seed equations and their modules")."""
+    if p.law != "walking":
+        from .smooth_law import design_smooth
+
+        return design_smooth(p, screened(p, source).smooth, progress)
     law = _law(p, source)
-    if not is_walking(law):
-        return _design_smooth(p, law, progress)
     if p.law_search:
         return _search_design(p, law, progress)
     from ...gears.noncircular_teeth import ArcFrame, ToothSpec

@@ -37,13 +37,19 @@ def law_figure(w, d: Design, pr, fig, ax):
     w.add_plot("figure2_ratio", fig)
 
 
-def speed_ratio_plot(w, d: Design):
-    """A law without a hub: the output speed ratio omega_H / omega = 1/U over one driven turn."""
+def speed_ratio_plot(w, d: Design, pr=None):
+    """A law without a hub: the output speed ratio omega_H / omega = 1/U over one driven turn, the law's
+    beside the one the teeth deliver (the proof's running positions, ``pr``)."""
     from ...export.plots import new_figure
 
     fig, ax = new_figure()
     ph = np.linspace(0.0, 2 * math.pi, 4001)
-    ax.plot(np.degrees(ph), 1.0 / d.run_law.U(ph), "b-", lw=1.0, label=f"{d.law.kind} law")
+    ax.plot(np.degrees(ph), 1.0 / d.run_law.U(ph), "b-", lw=1.0, label=f"{d.law.kind} law (the part file's)")
+    if pr is not None:
+        x, u = pr.ratio_actual()
+        ok = np.isfinite(u) & (u > 0)
+        ax.plot(np.degrees(np.mod(x[ok], 2 * math.pi)), 1.0 / u[ok], "C1.", ms=3,
+                label="generated teeth: d phi / d theta from the outlines")
     ax.set_xlabel("driven angle phi, deg")
     ax.set_ylabel("output speed ratio omega_H / omega = 1/U")
     ax.set_title("Output speed over one driven turn (driven over driver speed)")
@@ -100,7 +106,7 @@ def law_notes(w, d, pr, p, mount, s) -> None:
         f"error {s['te_min_rad']:.4e} .. {s['te_max_rad']:.4e} rad (peak-to-peak {s['te_pp_rad']:.3e} rad); backlash "
         f"{s['backlash_min_mm']:.4f} .. {s['backlash_max_mm']:.4f} mm; tooth pairs in contact min "
         f"{s['contact_pairs_min']}, mean {s['contact_pairs_mean']:.3f}.  plots/figure2_ratio.png: the law given beside "
-        "the ratio the teeth deliver; plots/speed_ratio.png: the output speed over the turn.")
+        "the ratio the teeth deliver; plots/speed_ratio.png: the output speed over the turn, the law's beside the teeth's.")
 
 
 def law_derived(dd: PairDesign, w, pr, s) -> None:

@@ -114,7 +114,7 @@ def ratio_and_layout_plots(w, d: Design, pr, profiles, mount: float, table=None)
     w.add_plot("transmission_error", fig)
 
     if not is_walking(d.law):
-        speed_ratio_plot(w, d)
+        speed_ratio_plot(w, d, pr)
         _pair_plot(w, d, profiles, mount)
         return
     fig, ax = new_figure()

@@ -208,12 +208,11 @@ class NoncircularPairParams(PartParams):
             if self.keyway and d > 0 and not 6.0 < d <= 230.0:
                 raise InputError(name, d, "a keyway needs a bore over 6 up to 230 mm (DIN 6885-1); set keyway = false")
 
-    def screen(self) -> None:
-        """The refusals of a build that need no outline (``design.screen``: generability of the blend, the
-        law search within its band, the cutters, the sector teeth's tips); a second or two, so it runs
-        after the size estimate, and the build reuses its result."""
+    def screen(self, source=None) -> None:
+        """The refusals of a build that need no outline (``design.screen``: generability of the blend or of
+        the law's pitch curves with the catalogue cutters, the law search within its band, the sector teeth's
+        tips); a second or two, so it runs after the size estimate, and the build reuses its result.  A law
+        read from a file (``law_file``, ``pitch_curve_file``) is read relative to the part file ``source``."""
         from .design import screened
 
-        if self.law != "walking":
-            return  # the screen knows the walking law's blend and search; other laws are screened by the build
-        screened(self)
+        screened(self, source)
