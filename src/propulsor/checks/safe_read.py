@@ -14,7 +14,6 @@ checked here, so the file they read is the one that was checked.
 from __future__ import annotations
 
 import errno
-import hashlib
 import os
 import stat
 from contextlib import contextmanager
@@ -23,26 +22,15 @@ from pathlib import Path
 
 from ..errors import EnvironmentFailure
 from ..policy import HASH_LIMIT_BYTES, READ_LIMIT_BYTES
+from ..regular_file import CHUNK, NotRegular, hash_fd, open_regular, what_is  # noqa: F401  (what_is: public here too)
 
-_FLAGS = (os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_CLOEXEC", 0)
-          | getattr(os, "O_NOCTTY", 0))
 #: errors of the machine, not of the file: the check stops with exit 3
 _ENVIRONMENT_ERRNOS = {errno.EACCES, errno.EPERM, errno.EIO, errno.EMFILE, errno.ENFILE, errno.ENOMEM}
-_CHUNK = 1 << 20
+_CHUNK = CHUNK
 
 
 class Refused(Exception):
     """A file the check will not read (or could not), with the one-line reason."""
-
-
-def what_is(mode: int) -> str:
-    """'a FIFO', 'a folder', ... for a file mode."""
-    for test, name in ((stat.S_ISREG, "a regular file"), (stat.S_ISDIR, "a folder"), (stat.S_ISLNK, "a symbolic link"),
-                       (stat.S_ISFIFO, "a FIFO"), (stat.S_ISCHR, "a character device"),
-                       (stat.S_ISBLK, "a block device"), (stat.S_ISSOCK, "a socket")):
-        if test(mode):
-            return name
-    return "not a regular file"
 
 
 def _os_error(exc: OSError, path, doing: str):
@@ -104,16 +92,14 @@ def opened(path, kind: str | None = None, limit: int | None = None):
     if st.st_size > lim:
         raise Refused(_too_large(st.st_size, lim, kind))
     try:
-        fd = os.open(path, _FLAGS)
+        fd, st = open_regular(path)
+    except NotRegular as exc:
+        raise Refused(str(exc)) from None
     except OSError as exc:
         raise _os_error(exc, path, "cannot read") from None
     try:
-        st = os.fstat(fd)
-        if not stat.S_ISREG(st.st_mode):
-            raise Refused(f"is {what_is(st.st_mode)}, not a regular file")
         if st.st_size > lim:
             raise Refused(_too_large(st.st_size, lim, kind))
-        os.set_blocking(fd, True)
         yield SafeFile(fd, st.st_size, path)
     finally:
         os.close(fd)
@@ -135,17 +121,11 @@ def sha256_and_size(path, expected_size: int | None = None) -> tuple[str, int]:
     with opened(path, limit=HASH_LIMIT_BYTES) as f:
         if expected_size is not None and f.size != expected_size:
             return "", f.size
-        h = hashlib.sha256()
-        os.lseek(f.fd, 0, os.SEEK_SET)
-        while True:
-            try:
-                block = os.read(f.fd, _CHUNK)
-            except OSError as exc:
-                raise _os_error(exc, path, "cannot read") from None
-            if not block:
-                break
-            h.update(block)
-        return h.hexdigest(), f.size
+        try:
+            _, digest = hash_fd(f.fd)
+        except OSError as exc:
+            raise _os_error(exc, path, "cannot read") from None
+        return digest, f.size
 
 
 def walk(root) -> tuple[list[Path], dict[Path, str]]:
