@@ -81,6 +81,7 @@ def test_the_proof_writer_keeps_values_and_refuses_files():
     w = ProofWriter("road_wheel", params)
     w.derived["x_mm"] = 1.5
     w.add_table("t", ["a"], [[1]])
+    w.add_table("d", {"a": [1, 2]}, None)  # write_csv's other form: a dict of columns
     fig, _ = new_figure()
     w.add_plot("p", fig)
     assert not plt.fignum_exists(fig.number)  # dropped, not kept open

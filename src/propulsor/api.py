@@ -97,7 +97,8 @@ class Proof:
 class Part:
     """A part: its type, validated parameters and the part file they came from (None for a type's
     defaults).  The design is computed on first use and kept; the solids, profiles and proofs come from
-    one real build (the build ``propulsor build`` runs, into a temporary folder), run on first use."""
+    one real build (the build ``propulsor build`` runs, into a temporary folder), run on first use;
+    :attr:`proof_run` is the design and its proofs alone (no solid, no file), where the part type declares them."""
 
     def __init__(self, part_type: str, params, source: Path | None = None):
         from .parts import get_part_type

@@ -18,13 +18,13 @@ __all__ = ["ProofWriter"]
 
 class ProofWriter(OutputWriter):
     """Values only: ``derived``, ``described``, ``checks``, ``notes``, ``tables`` and ``table_rows``
-    (name -> (columns, rows)); plots are dropped (the figure closed), DXF outlines kept in
+    (name -> (columns, rows) as the step gave them); plots are dropped (the figure closed), DXF outlines kept in
     ``built_profiles``."""
 
     def __init__(self, part: str, params, progress=None, source: Path | None = None):
         super().__init__(Path("."), part, params, progress=progress, source=source)
         self.folder = None  # nothing is written: a step that needs the folder is no proof step
-        self.table_rows: dict[str, tuple[list, list]] = {}
+        self.table_rows: dict[str, tuple] = {}
 
     def _no_file(self, what: str):
         raise RuntimeError(f"{self.part}: a proof step asked for {what}; proof steps make values and checks only")
@@ -46,7 +46,7 @@ class ProofWriter(OutputWriter):
 
     def add_table(self, name: str, columns, rows):
         self.tables.append(f"tables/{name}.csv")
-        self.table_rows[name] = (list(columns), list(rows))
+        self.table_rows[name] = (columns, rows)  # as given (export.tables.write_csv's forms: also a dict of columns)
 
     def add_plot(self, name: str, fig):
         import matplotlib.pyplot as plt
