@@ -157,11 +157,12 @@ class Part:
         """The design and the part type's proof steps only (the full-cycle proofs, their checks and derived
         values: no solid, no file), run once.  A part type that declares no proof steps runs its whole
         build (:attr:`build`) instead."""
+        from .parts.pipeline import Pipeline
         from .parts.proof_writer import ProofWriter
         from .progress import Progress
 
         pipeline = self._pt.build
-        if not getattr(pipeline, "proves_alone", False):
+        if not (isinstance(pipeline, Pipeline) and pipeline.proves_alone):
             b = self.build
             return Proof(b.failures, b.checks, b.derived, True)
         w = ProofWriter(self.type, self.params, progress=Progress(enabled=False), source=self.source)
