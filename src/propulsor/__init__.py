@@ -20,18 +20,18 @@ Layers (each importable alone):
 from typing import TYPE_CHECKING
 
 __version__ = "0.1.0"
-__all__ = ["Part", "Build", "part", "part_types", "parameters", "explore", "InputError", "CheckFailed",
+__all__ = ["Part", "Build", "Proof", "part", "part_types", "parameters", "explore", "InputError", "CheckFailed",
            "EnvironmentFailure", "__version__"]
 
 if TYPE_CHECKING:  # pragma: no cover - for type checkers; at run time the names load on first use
-    from .api import Build, Part, parameters, part, part_types
+    from .api import Build, Part, Proof, parameters, part, part_types
     from .errors import CheckFailed, EnvironmentFailure, InputError
     from .study import explore
 
 
 def __getattr__(name: str):
     """The public names, imported on first use (``import propulsor`` stays fast: no CAD kernel)."""
-    if name in ("Part", "Build", "part", "part_types", "parameters"):
+    if name in ("Part", "Build", "Proof", "part", "part_types", "parameters"):
         from . import api
 
         return getattr(api, name)

@@ -11,6 +11,8 @@ proofs and its files — the same work and the same bytes as the command line.
     gear.assembly()                  # cq.Assembly with named, placed, coloured components
     gear.profiles["driven"]          # the DXF outlines as (N, 2) arrays in mm
     [c for c in gear.prove() if not c.passed]   # every check of the build (value, limit, pass/fail)
+    gear.prove(depth="proof")        # the design's and the full-cycle proofs' checks only: no solid, no file
+    gear.proof_run.derived           # their derived values (the build's, to the last digit)
     gear.write("out/gear")           # exactly the files `propulsor build` writes
     gear.kit(printer="prusa_mk4")    # the print kit: pieces at print scale, rig, plates (not written)
 
@@ -33,7 +35,7 @@ import numpy as np
 
 from .errors import CheckFailed, InputError
 
-__all__ = ["Part", "Build", "part", "part_types", "parameters"]
+__all__ = ["Part", "Build", "Proof", "part", "part_types", "parameters"]
 
 
 def part_types() -> list[str]:
@@ -82,10 +84,21 @@ class Build:
     assemblies: dict  # name -> [(component, solid, (x, y, z) mm, rotation about z rad)]
 
 
+@dataclasses.dataclass(frozen=True)
+class Proof:
+    """What the design and the full-cycle proofs of a part gave, without its solids or files (in memory)."""
+
+    failures: tuple[str, ...]  # unexpected failed checks, "name: message"
+    checks: tuple  # the Checks of the design and the proofs, in the build's order
+    derived: dict  # their derived values (the same values the build's manifest gives them)
+    whole_build: bool  # True where the part type declares no proof steps: this is its whole build's
+
+
 class Part:
     """A part: its type, validated parameters and the part file they came from (None for a type's
     defaults).  The design is computed on first use and kept; the solids, profiles and proofs come from
-    one real build (the build ``propulsor build`` runs, into a temporary folder), run on first use."""
+    one real build (the build ``propulsor build`` runs, into a temporary folder), run on first use;
+    :attr:`proof_run` is the design and its proofs alone (no solid, no file), where the part type declares them."""
 
     def __init__(self, part_type: str, params, source: Path | None = None):
         from .parts import get_part_type
@@ -139,12 +152,38 @@ class Part:
         """DXF name -> the closed outlines of its CUT layer as (N, 2) arrays in mm (chord ≤ 0.005 mm)."""
         return {name: [pl for prof in profs for pl in prof.polylines()] for name, profs in self.build.profiles.items()}
 
-    def prove(self, raise_on_failure: bool = False) -> list:
-        """Every check of the build (:class:`propulsor.check.Check`: name, passed, value, limit, unit,
-        message); with `raise_on_failure`, CheckFailed for an unexpected failure."""
-        if raise_on_failure and self.build.failures:
-            raise CheckFailed(list(self.build.failures))
-        return list(self.build.checks)
+    @cached_property
+    def proof_run(self) -> Proof:
+        """The design and the part type's proof steps only (the full-cycle proofs, their checks and derived
+        values: no solid, no file), run once.  A part type that declares no proof steps runs its whole
+        build (:attr:`build`) instead."""
+        from .parts.pipeline import Pipeline
+        from .parts.proof_writer import ProofWriter
+        from .progress import Progress
+
+        pipeline = self._pt.build
+        if not (isinstance(pipeline, Pipeline) and pipeline.proves_alone):
+            b = self.build
+            return Proof(b.failures, b.checks, b.derived, True)
+        w = ProofWriter(self.type, self.params, progress=Progress(enabled=False), source=self.source)
+        try:
+            pipeline.prove(self.params, w)
+            failures = w.finish()
+        finally:
+            w.close()
+        return Proof(tuple(failures), tuple(w.checks), dict(w.derived), False)
+
+    def prove(self, raise_on_failure: bool = False, depth: str = "build") -> list:
+        """The checks (:class:`propulsor.check.Check`: name, passed, value, limit, unit, message) of
+        `depth` ``"build"``: every check of the build; ``"proof"``: those of the design and the full-cycle
+        proofs only (:attr:`proof_run`: no solid, no file).  With `raise_on_failure`, CheckFailed for an
+        unexpected failure among them."""
+        if depth not in ("build", "proof"):
+            raise InputError("depth", depth, "must be build or proof")
+        run = self.build if depth == "build" else self.proof_run
+        if raise_on_failure and run.failures:
+            raise CheckFailed(list(run.failures))
+        return list(run.checks)
 
     def assembly(self, name: str | None = None):
         """A ``cq.Assembly`` of the build's assembly `name` (the first one when None): named components

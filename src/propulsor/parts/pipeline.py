@@ -8,6 +8,12 @@ and runs the shared checks on them (B-rep, STEP round trip, mesh), then the repo
 manifest (docs/architecture.md, "The data flow of one build").  ``built`` is a dict in which a step leaves
 what a later step needs (the solids, a proof running in a forked worker).
 
+A part type may declare which of its steps are its proofs (``proof_steps``): the steps that make the
+full-cycle proofs, their checks and the derived values, from the design alone — no solid, no file.
+:meth:`Pipeline.prove` runs the design and those steps only, in the build's order, into a writer that keeps
+values and writes nothing (:class:`~propulsor.parts.proof_writer.ProofWriter`): the same code as the
+build, so the same numbers (a design study's ``proof`` depth, :attr:`propulsor.Part.proof_run`).
+
 The design is computed once per parameter values (:func:`design_of`): where validating the
 parameters computes it (final drive, road wheel, the balancer's suspension, a cam with a given law)
 the build gets that same object; where the design is a long generation or search (non-circular
@@ -49,16 +55,41 @@ def design_of(params, design_fn: Callable, *args):
 
 @dataclass(frozen=True)
 class Pipeline:
-    """``build(params, writer)`` of a part type: its design, then each output step in order."""
+    """``build(params, writer)`` of a part type: its design, then each output step in order.
+
+    ``proof_steps``: the steps (each one of ``steps``) that prove the design without its solids or files,
+    or None where the part type declares none (its proof is the whole build)."""
 
     design: Callable  # design(params, writer) -> Design (the writer gives the part file's folder)
     steps: Sequence[Callable]  # step(design, writer, built) -> None
+    proof_steps: Sequence[Callable] | None = None
 
     #: a build is a callable ``build(params, writer)``; named so that ``inspect`` and ``help`` can show it
     __name__ = "build"
 
+    def __post_init__(self) -> None:
+        if self.proof_steps is not None:
+            stray = [s for s in self.proof_steps if not any(s is t for t in self.steps)]
+            if stray:
+                raise ValueError(f"proof step {getattr(stray[0], '__name__', stray[0])!r} is not a step of the build")
+
     def __call__(self, params, w) -> None:
+        self._run(params, w, self.steps)
+
+    @property
+    def proves_alone(self) -> bool:
+        """Whether the part type declares its proof steps (else its proof is the whole build)."""
+        return self.proof_steps is not None
+
+    def prove(self, params, w) -> None:
+        """The design, then only the proof steps, in the order the build runs them (the same derived
+        values and checks as the build's, without its solids and files)."""
+        if self.proof_steps is None:
+            raise ValueError("this part type declares no proof steps: its proof is the whole build")
+        self._run(params, w, [s for s in self.steps if any(s is t for t in self.proof_steps)])
+
+    def _run(self, params, w, steps) -> None:
         d = self.design(params, w)
         built: dict = {}
-        for step in self.steps:
+        for step in steps:
             step(d, w, built)

@@ -1,19 +1,19 @@
 """One variant of a study, evaluated where it runs (a Dask worker, or inline): a row of plain values.
 
 Depths: ``design`` computes the part's design and the output steps that need no solid (derived values
-and checks from the same code as a build, so the same numbers); ``proof`` runs the whole build (every
-check, the full-cycle proofs) into a temporary folder and keeps no file; ``build`` writes the
-variant's files (``propulsor build``'s) into a folder of the study.  The design is computed once and
-reused by the proof (the part's design cache).  Only the row travels back: the arrays stay here.
+and checks from the same code as a build, so the same numbers); ``proof`` adds the full-cycle proofs:
+the design and the part type's proof steps (:attr:`propulsor.Part.proof_run`: their checks and derived
+values, no solid and no file; a part type that declares none runs its whole build into a temporary
+folder and keeps no file); ``build`` writes the variant's files (``propulsor build``'s) into a folder of
+the study.  The design is computed once and reused by the proof (the part's design cache).  Only the
+row travels back: the arrays stay here.
 """
 
 from __future__ import annotations
 
 import math
 import os
-import shutil
 import socket
-import tempfile
 import time
 from contextlib import contextmanager
 from pathlib import Path
@@ -76,23 +76,17 @@ def design_values(part) -> tuple[dict, list]:
     names = DESIGN_STEPS.get(part.type, ())
     if not names:
         return {}, []
-    from ..parts.writer import OutputWriter
-    from ..write_root import writing_into
+    from ..parts.proof_writer import ProofWriter
 
     steps = {getattr(s, "__name__", ""): s for s in part._pt.build.steps}
-    folder = Path(tempfile.mkdtemp(prefix="propulsor-study-"))
+    w = ProofWriter(part.type, part.params, source=part.source)  # values only: no file, no folder
     try:
-        with writing_into(folder):
-            w = OutputWriter(folder, part.type, part.params, source=part.source)
-            try:
-                built: dict = {}
-                for name in names:
-                    steps[name](design, w, built)
-            finally:
-                w.close()
-        return dict(w.derived), list(w.checks)
+        built: dict = {}
+        for name in names:
+            steps[name](design, w, built)
     finally:
-        shutil.rmtree(folder, ignore_errors=True)
+        w.close()
+    return dict(w.derived), list(w.checks)
 
 
 def _failures(checks, expected) -> list[str]:
@@ -151,6 +145,9 @@ def _evaluate(part_type, base, source, values, depth, wanted, build_dir) -> dict
         part.design  # computed once; the proof below reuses it
         if depth == "design":
             derived, checks = design_values(part)
+        elif depth == "proof":
+            run = part.proof_run  # the design's and the proofs' checks and values; no solid, no file
+            derived, checks = run.derived, list(run.checks)
         else:
             if depth == "build" and build_dir:
                 try:
@@ -171,7 +168,8 @@ def _evaluate(part_type, base, source, values, depth, wanted, build_dir) -> dict
         missing = [n for n in wanted if n not in derived]
         if missing:
             row["status"] = "error"
-            row["reason"] = f"{missing[0]}: not computed at depth {depth}"
+            row["reason"] = f"{missing[0]}: not computed at depth {depth}" + (
+                " (depth build computes it)" if depth != "build" else "")
     except InputError as exc:
         row["status"], row["reason"] = "input error", str(exc)
     except Exception as exc:  # the variant's own failure is a row, never the end of the study

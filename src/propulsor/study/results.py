@@ -124,7 +124,7 @@ def requirement_failure(study: Study, row: dict) -> str:
         value = row.get("all_checks_passed") if req.name == ALL_CHECKS else row.get(req.name)
         if not req.holds(value):
             if req.name == ALL_CHECKS and value is None:
-                return f"{ALL_CHECKS}: no check runs at depth {study.depth} for this part (depth proof runs them all)"
+                return f"{ALL_CHECKS}: no check runs at depth {study.depth} for this part (depth proof runs the proofs' checks, build all)"
             if req.name == ALL_CHECKS:
                 return f"{ALL_CHECKS}: failed {row.get('failed_checks') or '?'}"
             return f"{req} does not hold ({req.name} = {cell(value) or 'none'})"

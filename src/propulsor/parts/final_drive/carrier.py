@@ -24,7 +24,7 @@ from ... import policy
 from ...parallel import start as start_in_fork
 from .design import FinalDriveDesign, body_offsets
 
-__all__ = ["carrier_solid", "carrier_layout", "pin_sweep", "start_pin_sweep", "carrier", "pin_sweep_results"]
+__all__ = ["carrier_solid", "carrier_layout", "pin_sweep", "start_pin_sweep", "carrier", "carrier_values", "pin_sweep_results"]
 
 CHEEK_T_MM, GAP_MM, SPACER_MM = 40.0, 5.0, 10.0
 PIN_D_MM = 55.0                      # planet bearing bore (seed 004 Table 8, bearing 10231…)
@@ -109,6 +109,10 @@ def carrier(dd: FinalDriveDesign, w, built: dict) -> None:
     solid = carrier_solid(dd)
     w.add_solid("carrier", solid, expected_genus=0)
     built.setdefault("solids", {})["carrier"] = solid
+
+
+def carrier_values(dd: FinalDriveDesign, w, built: dict) -> None:
+    """The carrier's sizes (from its layout: no solid)."""
     L = carrier_layout(dd)
     w.derived.update({"carrier_cheek_radius_mm": L["R_cheek"], "carrier_pin_d_mm": PIN_D_MM,
                       "carrier_journal_d_mm": JOURNAL_D_MM, "carrier_spline_length_mm": SPLINE_LENGTH_MM,

@@ -6,7 +6,7 @@ from ..pipeline import Pipeline, design_of
 from ..media import pipeline_steps
 from .animation import carrier_turn_animation
 from .design import FinalDriveDesign, body_offsets, design
-from .carrier import carrier, pin_sweep_results, start_pin_sweep
+from .carrier import carrier, carrier_values, pin_sweep_results, start_pin_sweep
 from .strength import strength
 from .fatigue import fatigue
 from .traction import traction
@@ -107,6 +107,13 @@ def notes(dd: FinalDriveDesign, w, built: dict) -> None:
 
 start_animation, collect_animation = pipeline_steps(carrier_turn_animation)
 
+#: the sheet, the set's conditions, strength, fatigue, traction, the generated outlines and both sweeps over one
+#: carrier turn (meshes, carrier pins): every check and derived value of the build but the solids' (their
+#: volumes and file checks) — from the design and its 2D outlines (Pipeline.prove)
+PROOF_STEPS = (sheet_and_conditions, strength, fatigue, traction, outline_checks, start_sweep, start_pin_sweep,
+               carrier_values, sweep_results, pin_sweep_results)
+
 build = Pipeline(lambda p, w: design_of(p, design),
                   (sheet_and_conditions, strength, fatigue, traction, outline_checks, start_sweep, start_pin_sweep, solids, carrier,
-                   sweep_results, pin_sweep_results, start_animation, assembly_and_drawings, notes, collect_animation))
+                   carrier_values, sweep_results, pin_sweep_results, start_animation, assembly_and_drawings, notes,
+                   collect_animation), proof_steps=PROOF_STEPS)

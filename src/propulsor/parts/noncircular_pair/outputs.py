@@ -510,4 +510,9 @@ def write_outputs(p: NoncircularPairParams, w, d: Design, profiles, pr, other=No
         step(dd, w, built)
 
 
-build = Pipeline(lambda p, w: design_of(p, pair_design, getattr(w, "source", None)), (solids, proofs) + OUTPUT_STEPS)
+#: the full-cycle proof (and the other method's, the as-built speed) and every check and derived value of the
+#: report: from the 2D outlines at the installed centre distance, no solid (Pipeline.prove)
+PROOF_STEPS = (proofs, checks_and_derived)
+
+build = Pipeline(lambda p, w: design_of(p, pair_design, getattr(w, "source", None)), (solids, proofs) + OUTPUT_STEPS,
+                 proof_steps=PROOF_STEPS)
