@@ -18,14 +18,38 @@ needs_slicer = pytest.mark.skipif(shutil.which("prusa-slicer") is None,
                                   reason="PrusaSlicer is not installed (apt-get install prusa-slicer)")
 
 
+#: the fits each kit measures on its printed pieces, as the kit's build measured them (fit_mutations.py)
+RECORDED: dict[str, dict] = {}
+
+
 @pytest.fixture(scope="module")
 def kits(tmp_path_factory):
+    from fit_mutations import recording
+
     out = {}
     for name in ("ncg_seed002", "final_drive"):
         folder = tmp_path_factory.mktemp("kits") / f"{name}_kit"
-        rc = main(["print", str(ROOT / "parts" / f"{name}.toml"), "--out", str(folder), "-q", "--slice", "no"])
+        with recording(RECORDED.setdefault(name, {})):
+            rc = main(["print", str(ROOT / "parts" / f"{name}.toml"), "--out", str(folder), "-q", "--slice", "no"])
         out[name] = (rc, folder)
     return out
+
+
+FITS = {"ncg_seed002": ["driver_on_pin", "driven_on_pin", "pin_driven_in_base", "pin_driver_in_base",
+                        "washer_driver_on_pin", "cap_driver_on_pin", "washer_driven_on_pin", "cap_driven_on_pin",
+                        "handle_in_driver"],
+        "final_drive": ["planet_on_pin_1", "planet_on_pin_2", "planet_on_pin_3", "shaft_in_floor", "shaft_in_carrier",
+                        "sun_on_shaft", "crank_on_shaft"]}
+
+
+@pytest.mark.parametrize("name, fit", [(n, f) for n, fits in FITS.items() for f in fits])
+def test_each_fit_check_fails_under_its_mutation(kits, name, fit):
+    """The fit passes on the kit's printed pieces and fails with its pin grown by the running clearance
+    (running fits), or shrunk to no interference and grown past what a printed wall takes (press fits)."""
+    from fit_mutations import assert_fails_under_mutation
+
+    assert sorted(RECORDED[name]) == sorted(FITS[name])  # every fit the kit measures is listed here
+    assert_fails_under_mutation(RECORDED[name], fit)
 
 
 def _manifest(folder: Path) -> dict:
