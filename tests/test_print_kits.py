@@ -24,15 +24,36 @@ RECORDED: dict[str, dict] = {}
 
 @pytest.fixture(scope="module")
 def kits(tmp_path_factory):
+    import propulsor.parts.noncircular_pair.kit as ncg
     from fit_mutations import recording
+
+    real = ncg.pair_design
+
+    def counted(p, source=None):
+        DESIGNS.append(p.module_mm)
+        return real(p, source)
 
     out = {}
     for name in ("ncg_seed002", "final_drive"):
         folder = tmp_path_factory.mktemp("kits") / f"{name}_kit"
-        with recording(RECORDED.setdefault(name, {})):
+        with recording(RECORDED.setdefault(name, {})), pytest.MonkeyPatch.context() as mp:
+            mp.setattr(ncg, "pair_design", counted)
             rc = main(["print", str(ROOT / "parts" / f"{name}.toml"), "--out", str(folder), "-q", "--slice", "no"])
         out[name] = (rc, folder)
     return out
+
+
+#: the pair designs the seed-002 kit made (their modules)
+DESIGNS: list[float] = []
+
+
+def test_the_seed_002_kit_designs_its_printed_pair_once(kits):
+    """On the generic printer the seed-002 pair prints at 1:1 although its padded pitch estimate does not
+    fit: the printed pair is searched and cut once at 1:1 and its own outlines decide; no full-size
+    design is made only to learn the scale."""
+    assert kits["ncg_seed002"][0] == 0
+    assert _manifest(kits["ncg_seed002"][1])["derived"]["scale_S"] == 1.0
+    assert DESIGNS == [2.5]
 
 
 FITS = {"ncg_seed002": ["driver_on_pin", "driven_on_pin", "pin_driven_in_base", "pin_driver_in_base",
