@@ -8,7 +8,9 @@ differ between them:
   title (e.g. the Bambu A1, P1 and X1: the same 256 mm bed, nozzle, margins and allowances) get the
   same kit, computed once — the same pieces, placed for their own printer;
 - **the printed pieces** (tessellation, bed-side chamfer and mesh checks of each solid), computed once
-  for the same solid;
+  for the same solid; the clearance coupon made once for the same allowances, whatever the bed;
+- **the pictures of the assembled model** (side, exploded, step views), drawn once for the same meshes
+  placed alike under the same title;
 - **the noncircular pair's design** at the same parameters (the full-size pair whose size sets the
   scale, and the printed pair at one scale with one printer's allowances), whichever bed asked;
 - **the slicing** (:class:`SharedSlicer`): a plate file with the same bytes (same pieces at the same
@@ -23,6 +25,8 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 from pathlib import Path
+
+import numpy as np
 
 from propulsor.printing.printers import Printer, load_printer, printer_names
 
@@ -88,10 +92,63 @@ class KitMemo:
             return self.pieces[key][1]
 
         self._mp = monkeypatch
+        self._share_pictures()
+        import propulsor.printing.coupon as coupon
+
+        real_coupon = coupon.coupon_pieces
+        coupons: dict = {}
+
+        def coupon_pieces(printer):  # the same coupon for the same allowances, whatever the bed
+            key = _print_settings(printer)
+            if key not in coupons:
+                coupons[key] = real_coupon(printer)
+            return list(coupons[key])
+
+        monkeypatch.setattr(coupon, "coupon_pieces", coupon_pieces)
         monkeypatch.setattr(parts, "get_kit", get_kit)
         # the pieces made in this process (no forked workers), so that the memo sees them
         monkeypatch.setattr(kit_mod, "fork_pool", lambda n: None)
         monkeypatch.setattr(kit_mod, "inline", inline)
+
+    def _share_pictures(self) -> None:
+        """The pictures of the assembled model (guide and report) drawn once for the same meshes, placed
+        alike under the same title: a kit equal but for its printer's name draws the same picture."""
+        import propulsor.printing.guide as guide
+        import propulsor.printing.kit as kit_mod
+
+        self.pictures: dict = {}
+        self.hits["picture"] = 0
+
+        def digest(mesh) -> str:
+            return hashlib.sha1(np.ascontiguousarray(mesh.vertices).tobytes()
+                                + np.ascontiguousarray(mesh.faces).tobytes()).hexdigest()
+
+        def shared(w, name: str, key, draw) -> str:
+            rel = f"plots/{name}.png"
+            if key in self.pictures:
+                self.hits["picture"] += 1
+                w.path(rel).write_bytes(self.pictures[key])
+                w.plots.append(rel)
+            else:
+                draw()
+                self.pictures[key] = w.path(rel).read_bytes()
+            return rel
+
+        real_picture, real_assembled = guide.picture, kit_mod._assembly_picture
+
+        def picture(w, name, items, title, *args, **kwargs):
+            key = ("view", name, title, repr(args), repr(sorted(kwargs.items(), key=lambda kv: kv[0])),
+                   tuple((label, str(colour), digest(m)) for label, m, colour in items))
+            return shared(w, name, key, lambda: real_picture(w, name, items, title, *args, **kwargs))
+
+        def assembly_picture(w, kit, meshes):
+            key = ("assembled", kit.part, kit.scale.label,
+                   tuple((pl.label, pl.piece, np.asarray(pl.matrix).tobytes(), str(pl.colour)) for pl in kit.assembly),
+                   tuple((n, digest(m)) for n, m in sorted(meshes.items())))
+            shared(w, "assembled", key, lambda: real_assembled(w, kit, meshes))
+
+        self._mp.setattr(guide, "picture", picture)
+        self._mp.setattr(kit_mod, "_assembly_picture", assembly_picture)
 
     def _share_pair_design(self) -> None:
         import propulsor.parts.noncircular_pair.kit as ncg

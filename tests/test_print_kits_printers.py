@@ -160,8 +160,11 @@ def test_every_part_file_prints_on_every_profile_and_slices(tmp_path, monkeypatc
     memo, slicer = KitMemo(monkeypatch), SharedSlicer(tmp_path)
     failures, t0, n_kits, n_plates = [], time.perf_counter(), 0, 0
     # the smallest beds first: a plate sliced on a bed is not sliced again for a profile whose bed holds it
+    took = []
     for label, args, printer in sorted(_sweep_profiles(), key=lambda pr: (pr[2].bed_x_mm * pr[2].bed_y_mm, pr[0])):
+        t = time.perf_counter()
         rc, out, m = _kit(tmp_path / label, part, *args)
+        took.append(f"{label} {time.perf_counter() - t:.0f} s")
         if rc != 0:
             failures.append(f"{label}: propulsor print exited {rc}")
             continue
@@ -174,5 +177,6 @@ def test_every_part_file_prints_on_every_profile_and_slices(tmp_path, monkeypatc
     t1 = time.perf_counter()
     sliced = slicer.failures()
     print(f"\n{part}: {n_kits} kits built in {t1 - t0:.0f} s (shared: {memo.hits}); {n_plates} plates, "
-          f"{len(slicer.runs)} slicer runs, done {time.perf_counter() - t1:.0f} s after the last kit")
+          f"{len(slicer.runs)} slicer runs, done {time.perf_counter() - t1:.0f} s after the last kit; kits: "
+          + ", ".join(took))
     assert failures + sliced == []
