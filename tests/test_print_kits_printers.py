@@ -151,7 +151,7 @@ def test_every_part_file_prints_on_every_profile_and_slices(tmp_path, monkeypatc
     """Every profile builds its own kit of the part file (exit 0, its checks pass, every plate on its bed);
     then every plate slices in PrusaSlicer with every object manifold and on that profile's bed.  What
     cannot differ between profiles is computed once (tests/kit_sweep.py): run it all with
-    `.venv/bin/python -m pytest -q -m sweep tests/test_print_kits_printers.py` (make check), a few part files
+    `.venv/bin/python -m pytest -q -n 2 -m sweep tests/test_print_kits_printers.py` (make check), a few part files
     with -k, a few profiles with PROPULSOR_SWEEP_PROFILES."""
     import time
 
