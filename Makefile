@@ -122,10 +122,13 @@ docs: $(STAMP)
 	rm -rf docs/api
 	$(BIN)/python -W error -m pdoc propulsor.api propulsor.errors propulsor.check -o docs/api
 
+# the print kits' sweep (every part file on every printer profile, one test a part file) runs its part files
+# side by side
 check: $(STAMP) $(WEB_STAMP)
 	$(BIN)/propulsor check output/
 	node web/validate_glb.mjs $(OUT)
-	$(BIN)/python -m pytest -q -m sweep tests
+	$(BIN)/python -m pytest -q -m sweep tests --ignore=tests/test_print_kits_printers.py
+	$(BIN)/python -m pytest -q -n $(PYTEST_WORKERS) --dist load -m sweep tests/test_print_kits_printers.py
 
 bench: $(STAMP)
 	$(BIN)/python bench/run.py

@@ -14,11 +14,33 @@ from propulsor.cli import main
 ROOT = Path(__file__).resolve().parents[1]
 
 
+#: the fits the kit measures on its printed pieces, as the kit's build measured them (fit_mutations.py)
+RECORDED: dict = {}
+
+
 @pytest.fixture(scope="module")
 def kit_folder(tmp_path_factory):
+    from fit_mutations import recording
+
     folder = tmp_path_factory.mktemp("polykit") / "polysector_kit"
-    assert main(["print", str(ROOT / "parts" / "polysector.toml"), "--out", str(folder), "-q", "--slice", "no"]) == 0
+    with recording(RECORDED):
+        assert main(["print", str(ROOT / "parts" / "polysector.toml"), "--out", str(folder), "-q", "--slice", "no"]) == 0
     return folder
+
+
+FITS = ["wheel_on_axle", "gear_on_axle", "axle_wheel_in_base", "axle_gear_in_base_position_1",
+        "axle_gear_in_base_position_2", "axle_gear_in_base_position_3",
+        "handle_in_disc"]
+
+
+@pytest.mark.parametrize("fit", FITS)
+def test_each_fit_check_fails_under_its_mutation(kit_folder, fit):
+    """The fit passes on the kit's printed pieces and fails with its pin grown by the running clearance
+    (running fits), or shrunk to no interference and grown past what a printed wall takes (press fits)."""
+    from fit_mutations import assert_fails_under_mutation
+
+    assert sorted(RECORDED) == sorted(FITS)  # every fit the kit measures is listed here
+    assert_fails_under_mutation(RECORDED, fit)
 
 
 def test_polysector_kit_proves_its_printed_mesh_and_fits(kit_folder):

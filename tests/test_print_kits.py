@@ -18,14 +18,59 @@ needs_slicer = pytest.mark.skipif(shutil.which("prusa-slicer") is None,
                                   reason="PrusaSlicer is not installed (apt-get install prusa-slicer)")
 
 
+#: the fits each kit measures on its printed pieces, as the kit's build measured them (fit_mutations.py)
+RECORDED: dict[str, dict] = {}
+
+
 @pytest.fixture(scope="module")
 def kits(tmp_path_factory):
+    import propulsor.parts.noncircular_pair.kit as ncg
+    from fit_mutations import recording
+
+    real = ncg.pair_design
+
+    def counted(p, source=None):
+        DESIGNS.append(p.module_mm)
+        return real(p, source)
+
     out = {}
     for name in ("ncg_seed002", "final_drive"):
         folder = tmp_path_factory.mktemp("kits") / f"{name}_kit"
-        rc = main(["print", str(ROOT / "parts" / f"{name}.toml"), "--out", str(folder), "-q", "--slice", "no"])
+        with recording(RECORDED.setdefault(name, {})), pytest.MonkeyPatch.context() as mp:
+            mp.setattr(ncg, "pair_design", counted)
+            rc = main(["print", str(ROOT / "parts" / f"{name}.toml"), "--out", str(folder), "-q", "--slice", "no"])
         out[name] = (rc, folder)
     return out
+
+
+#: the pair designs the seed-002 kit made (their modules)
+DESIGNS: list[float] = []
+
+
+def test_the_seed_002_kit_designs_its_printed_pair_once(kits):
+    """On the generic printer the seed-002 pair prints at 1:1 although its padded pitch estimate does not
+    fit: the printed pair is searched and cut once at 1:1 and its own outlines decide; no full-size
+    design is made only to learn the scale."""
+    assert kits["ncg_seed002"][0] == 0
+    assert _manifest(kits["ncg_seed002"][1])["derived"]["scale_S"] == 1.0
+    assert DESIGNS == [2.5]
+
+
+FITS = {"ncg_seed002": ["driver_on_pin", "driven_on_pin", "pin_driven_in_base", "pin_driver_in_base",
+                        "washer_driver_on_pin", "cap_driver_on_pin", "washer_driven_on_pin", "cap_driven_on_pin",
+                        "handle_in_driver"],
+        "final_drive": ["planet_on_pin_1", "planet_on_pin_2", "planet_on_pin_3", "shaft_in_floor", "shaft_in_carrier",
+                        "sun_on_shaft", "crank_on_shaft"]}
+
+
+@pytest.mark.parametrize("name, fit", [(n, f) for n, fits in FITS.items() for f in fits])
+def test_each_fit_check_fails_under_its_mutation(kits, name, fit):
+    """The fit passes on the kit's printed pieces and fails with its pin grown by the running clearance
+    (running fits), or shrunk to no interference and grown past what a printed wall takes (press fits)."""
+    from fit_mutations import assert_fails_under_mutation
+
+    assert sorted(RECORDED[name]) == sorted(FITS[name])  # every fit the kit measures is listed here
+    assert_fails_under_mutation(RECORDED[name], fit)
 
 
 def _manifest(folder: Path) -> dict:

@@ -126,35 +126,57 @@ def test_road_wheel_on_a_quick_180_bed_and_its_coupon_plate_slices(tmp_path):
     assert r.ok and r.all_manifold and r.off_bed(180.0, 180.0) == [] and r.stats["time_s"] > 0
 
 
-def _profiles() -> list[tuple[str, list[str]]]:
-    """Every built-in profile and a quick --bed, one of each distinct printer (profiles that differ only in
-    their names build the same kit)."""
-    import dataclasses
-
-    seen, out = set(), []
-    for name, args in [(n, ["--printer", n]) for n in printer_names()] + [("bed180", ["--bed", "180x180x180"])]:
-        p = load_printer(name, bed="180x180x180") if name == "bed180" else load_printer(name)
-        key = tuple(v for f, v in dataclasses.asdict(p).items() if f not in ("name", "title"))
-        if key not in seen:
-            seen.add(key)
-            out.append((name, args))
-    return out
-
-
 PART_FILES = sorted(f.stem for f in (ROOT / "parts").glob("*.toml"))
+
+
+def _sweep_profiles():
+    """The sweep's profiles: every one, or those named in PROPULSOR_SWEEP_PROFILES (comma-separated labels,
+    e.g. bed180,prusa_mini,bambu_a1_mini: the 180 mm beds)."""
+    import os
+
+    from kit_sweep import profiles
+
+    wanted = [w.strip() for w in os.environ.get("PROPULSOR_SWEEP_PROFILES", "").split(",") if w.strip()]
+    every = profiles()
+    unknown = sorted(set(wanted) - {label for label, _, _ in every})
+    assert not unknown, f"PROPULSOR_SWEEP_PROFILES names no profile {unknown}"
+    return [pr for pr in every if not wanted or pr[0] in wanted]
 
 
 @pytest.mark.sweep
 @pytest.mark.slicer
 @needs_slicer
-@pytest.mark.parametrize("profile, args", _profiles(), ids=[n for n, _ in _profiles()])
 @pytest.mark.parametrize("part", PART_FILES)
-def test_every_part_file_prints_on_every_profile_and_slices(tmp_path, part, profile, args):
-    from propulsor.printing.slicer import slice_kit
+def test_every_part_file_prints_on_every_profile_and_slices(tmp_path, monkeypatch, part):
+    """Every profile builds its own kit of the part file (exit 0, its checks pass, every plate on its bed);
+    then every plate slices in PrusaSlicer with every object manifold and on that profile's bed.  What
+    cannot differ between profiles is computed once (tests/kit_sweep.py): run it all with
+    `.venv/bin/python -m pytest -q -n 2 -m sweep tests/test_print_kits_printers.py` (make check), a few part files
+    with -k, a few profiles with PROPULSOR_SWEEP_PROFILES."""
+    import time
 
-    rc, out, m = _kit(tmp_path, part, *args)
-    assert rc == 0
-    _assert_sound(m)
-    p = load_printer(profile, bed="180x180x180") if profile == "bed180" else load_printer(profile)
-    for plate, r, off in slice_kit(out, p, tmp_path):
-        assert r.ok and r.all_manifold and off == [], (plate, r.message, r.objects)
+    from kit_sweep import KitMemo, SharedSlicer
+
+    memo, slicer = KitMemo(monkeypatch), SharedSlicer(tmp_path)
+    failures, t0, n_kits, n_plates = [], time.perf_counter(), 0, 0
+    # the smallest beds first: a plate sliced on a bed is not sliced again for a profile whose bed holds it
+    took = []
+    for label, args, printer in sorted(_sweep_profiles(), key=lambda pr: (pr[2].bed_x_mm * pr[2].bed_y_mm, pr[0])):
+        t = time.perf_counter()
+        rc, out, m = _kit(tmp_path / label, part, *args)
+        took.append(f"{label} {time.perf_counter() - t:.0f} s")
+        if rc != 0:
+            failures.append(f"{label}: propulsor print exited {rc}")
+            continue
+        bad = [c["name"] for c in m["checks"] if not c["passed"] and c["name"] not in m.get("expected_failures", [])]
+        on_bed = [c for c in m["checks"] if c["name"].startswith("plate_") and c["name"].endswith(".on_bed")]
+        if bad or not on_bed or m["derived"]["printer"] != printer.name:
+            failures.append(f"{label}: failed checks {bad}, {len(on_bed)} plates")
+        n_kits += 1
+        n_plates += slicer.add(label, out, printer)
+    t1 = time.perf_counter()
+    sliced = slicer.failures()
+    print(f"\n{part}: {n_kits} kits built in {t1 - t0:.0f} s (shared: {memo.hits}); {n_plates} plates, "
+          f"{len(slicer.runs)} slicer runs, done {time.perf_counter() - t1:.0f} s after the last kit; kits: "
+          + ", ".join(took))
+    assert failures + sliced == []

@@ -19,14 +19,37 @@ needs_slicer = pytest.mark.skipif(shutil.which("prusa-slicer") is None,
                                   reason="PrusaSlicer is not installed (apt-get install prusa-slicer)")
 
 
+#: the fits each kit measures on its printed pieces, as the kit's build measured them (fit_mutations.py)
+RECORDED: dict[str, dict] = {}
+
+
 @pytest.fixture(scope="module")
 def kits(tmp_path_factory):
+    from fit_mutations import recording
+
     out = {}
     for name in NAMES:
         folder = tmp_path_factory.mktemp("kits") / f"{name}_kit"
-        rc = main(["print", str(ROOT / "parts" / f"{name}.toml"), "--out", str(folder), "-q", "--slice", "no"])
+        with recording(RECORDED.setdefault(name, {})):
+            rc = main(["print", str(ROOT / "parts" / f"{name}.toml"), "--out", str(folder), "-q", "--slice", "no"])
         out[name] = (rc, folder, json.loads((folder / "manifest.json").read_text()) if rc == 0 else None)
     return out
+
+
+FITS = {"cam_mover": ["roller_on_pin", "carrier_on_axle", "spacer_on_axle", "axle_in_cam", "handle_in_carrier"],
+        "balancer": ["arm_on_boss", "wheel_1_on_spindle", "wheel_2_on_spindle", "wheel_3_on_spindle",
+                     "wheel_4_on_spindle"],
+        "road_wheel": ["wheel_1_on_axle", "wheel_2_on_axle", "wheel_3_on_axle", "wheel_4_on_axle", "axle_in_stand"]}
+
+
+@pytest.mark.parametrize("name, fit", [(n, f) for n, fits in FITS.items() for f in fits])
+def test_each_fit_check_fails_under_its_mutation(kits, name, fit):
+    """The fit passes on the kit's printed pieces and fails with its pin grown by the running clearance
+    (running fits), or shrunk to no interference and grown past what a printed wall takes (press fits)."""
+    from fit_mutations import assert_fails_under_mutation
+
+    assert sorted(RECORDED[name]) == sorted(FITS[name])  # every fit the kit measures is listed here
+    assert_fails_under_mutation(RECORDED[name], fit)
 
 
 def _checks(m: dict) -> dict:

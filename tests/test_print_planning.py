@@ -96,4 +96,44 @@ def test_report_time_and_filament_are_prusaslicer_s_for_the_same_settings(tmp_pa
     g = float(re.search(r"^; total filament used \[g\] = ([0-9.]+)", text, re.M).group(1))
     assert int(rows[1]["sliced_time_s"]) == duration_s(t) and float(rows[1]["sliced_filament_g"]) == g
     report = (out / "print_report.md").read_text()
-    assert f"{hours(duration_s(t))}, {g:.0f} g" in report and "25 % infill" in report and "4 perimeters" in report
+    assert f"| plate 2 | 2 | {hours(duration_s(t))} | {g:.0f} g |" in report
+    assert "25 % infill" in report and "4 perimeters" in report
+
+
+def test_the_kit_report_is_maker_first_and_the_full_size_inputs_are_an_appendix(tmp_path):
+    """print_report.md opens with what to print (printer, settings, plates with time or filament), then the
+    hardware and assembly; the part file's inputs (the full-size design's: a 40 mm bore, an M8 tap drill)
+    come last, labelled as such."""
+    from propulsor.params import load_params
+    from propulsor.parts.road_wheel.params import RoadWheelParams
+    from propulsor.parts.writer import OutputWriter
+    from propulsor.printing.hardware import Hardware
+    from propulsor.printing.kit import write_kit
+    from propulsor.printing.scale import ScaleChoice
+
+    kit = _tiny_kit(load_printer("prusa_mini"))
+    kit.scale = ScaleChoice(2.0, "the puck is 360 mm; at 1:1.5 it does not fit")
+    kit.steps = ["Put the peg <b>into</b> the puck.", "Turn it."]
+    kit.hardware = [Hardware("⌀4 mm steel dowel pin, 6 mm long", 1, "peg")]
+    out = tmp_path / "kit"
+    out.mkdir()
+    w = OutputWriter(out, "road_wheel", load_params(RoadWheelParams, {}))
+    w.report_name = "print_report.md"
+    try:
+        write_kit(kit, w, sliced=False)
+        assert w.finish() == []
+    finally:
+        w.close()
+    text = (out / "print_report.md").read_text()
+    heads = [line for line in text.splitlines() if line.startswith("## ")]
+    assert heads[:3] == ["## What to print", "## Assembly", "## Summary"], heads
+    assert [h for h in heads if h != "## References"][-1] == "## Appendix: the full-size design's inputs (the part file; the model prints at 1:2)"
+    lead = text.split("## Summary")[0]
+    assert "Prusa MINI+, 180 × 180 mm bed" in lead and "Scale 1:2: the puck is 360 mm" in lead
+    assert "15 % infill" in lead and "| plate 2 | 2 | not sliced | about " in lead
+    assert "1. Put the peg &lt;b&gt;into&lt;/b&gt; the puck." in lead and "2. Turn it." in lead
+    assert "- 1 × ⌀4 mm steel dowel pin, 6 mm long (instead of the printed `peg`)" in lead
+    # the full-size inputs are not where a maker starts reading
+    first_input = min(text.index(f"| {f} |") for f in ("tyre_radius_mm", "tyre_width_mm"))
+    assert first_input > text.index("## Appendix")
+    assert "<h2>What to print</h2>" in (out / "print_report.html").read_text()

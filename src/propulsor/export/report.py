@@ -112,6 +112,9 @@ def write_report(
     plots=(),
     views=(),
     key_values=(),
+    lead=(),
+    inputs_heading: str = "Inputs",
+    inputs_last: bool = False,
 ) -> Path:
     """Write a Markdown report.
 
@@ -120,7 +123,10 @@ def write_report(
     (alias plots): relative paths or (relative path, caption) pairs.  notes:
     strings.  part: the part type, printed under the title.  views: the isometric pictures
     of the solids and assemblies (relative paths or (path, caption) pairs).  key_values: names of
-    derived values the summary shows (those present, in this order).
+    derived values the summary shows (those present, in this order).  lead: Markdown lines placed first,
+    before the summary (a print kit's: what to print, with what, how long, then the assembly).
+    inputs_heading / inputs_last: the inputs' section's heading, and whether it closes the report (an
+    appendix, before the references) instead of following the summary.
     """
     from .references import Citer
 
@@ -137,6 +143,7 @@ def write_report(
     lines = [f"# {cite(md_text(title))}", ""]
     if part:
         lines += [f"Part type: `{part}`", ""]
+    lines += [cite(line) for line in lead]
     lines += ["## Summary", ""]
     if n_fail:
         lines += [f"**FAILED: {n_fail} of {len(cks)} checks failed.**", ""]
@@ -156,7 +163,9 @@ def write_report(
     if intro.strip():
         lines += [cite(intro.strip()), ""]
     input_rows = [tuple(cite(c) for c in r) for r in _value_rows(inputs)]
-    lines += ["## Inputs", ""] + _table(["name", "value", "unit", "meaning"], input_rows) + [""]
+    inputs_section = [f"## {inputs_heading}", ""] + _table(["name", "value", "unit", "meaning"], input_rows) + [""]
+    if not inputs_last:
+        lines += inputs_section
     lines += ["## Derived values", ""] + _table(["name", "value", "unit", "meaning"], derived_rows) + [""]
     lines += ["## Checks", ""]
     rows = [
@@ -179,6 +188,8 @@ def write_report(
             lines += [f"![{cap}]({p})", "", f"*{cap}*", ""]
     if notes:
         lines += ["## Notes", ""] + [f"- {cite(n)}" for n in notes] + [""]
+    if inputs_last:
+        lines += inputs_section
     refs = cite.references()
     if refs:
         lines += ["## References", ""]

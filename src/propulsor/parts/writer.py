@@ -148,6 +148,11 @@ class OutputWriter:
         self._assemblies: list = []  # (name, [(component, solid key, 4×4 mm)], picture from below)
         self._motions: dict[str, list] = {}  # assembly name -> [(info, {component: (poses, reference)})]
         self.report_name = "report.md"  # a print kit's is print_report.md
+        #: Markdown lines the report opens with (a kit's: what to print, then the assembly), and the inputs'
+        #: heading, as an appendix at the end when inputs_last (a kit's inputs are the full-size design's)
+        self.report_lead: list[str] = []
+        self.inputs_heading = "Inputs"
+        self.inputs_last = False
         self.intended: set[str] = set()  # files the build means to write (relative paths), besides the media
         # what the build made, by name, for the Python API (propulsor.api): solids, DXF profiles, assemblies
         self.built_solids: dict[str, Any] = {}
@@ -389,7 +394,8 @@ class OutputWriter:
         views = [(e["path"], e["title"]) for e in self.media.get("pictures", [])]
         report = write_report(self.folder / self.report_name, title=self.title, part=self.part, intro=intro,
                               inputs=report_inputs, derived=report_derived, checks=self.checks, tables=self.tables,
-                              plots=self.plots, notes=notes, views=views, key_values=self.key_values())
+                              plots=self.plots, notes=notes, views=views, key_values=self.key_values(),
+                              lead=self.report_lead, inputs_heading=self.inputs_heading, inputs_last=self.inputs_last)
         write_report_html(report, self.media.get("models", ()))
         manifest = write_manifest(self.folder, part=self.part, inputs=inputs, derived=self.derived,
                                   checks=self.checks, expected_failures=self.expected_failures, media=self.media,

@@ -22,6 +22,25 @@ def _table(head, rows) -> list[str]:
     return out + ["| " + " | ".join(_cell(c) for c in row) + " |" for row in rows] + [""]
 
 
+def plates_lines(p, plans, sliced: bool) -> list[str]:
+    """The plates as a maker prints them (Markdown): a table of each plate's pieces, time and filament,
+    then the totals (PrusaSlicer's for the printer's settings), or the estimate when not sliced."""
+    total_t = sum(q.time_s or 0 for q in plans) if sliced else None
+    rows = []
+    for q in plans:
+        rows.append([f"plate {q.plate}", str(q.pieces), hours(q.time_s) if sliced else "not sliced",
+                     f"{q.filament_g:.0f} g" if sliced and q.filament_g is not None else f"about {q.estimate_g:.0f} g",
+                     q.names])
+    lines = _table(["plate", "pieces", "time", "filament", "what"], rows)
+    if sliced:
+        lines += [f"In all: {hours(total_t)} of printing, {sum(q.filament_g or 0 for q in plans):.0f} g of "
+                  f"filament (PrusaSlicer's estimate for these settings).", ""]
+    else:
+        lines += [f"Not sliced (PrusaSlicer is not installed, or `--slice no`): the filament is estimated at "
+                  f"{p.infill_percent:g} % infill and {p.perimeters} perimeters; no print time.", ""]
+    return lines
+
+
 def step_pictures(w, kit, items) -> list[str | None]:
     """One picture a step: the pieces placed by then, the step's own in colour (kit.step_parts: the
     labels each step adds)."""
@@ -50,19 +69,7 @@ def write_guide(kit, w, plans, items, sliced: bool, title: str) -> None:
     lines += [f"Settings: {md_text(p.settings_text)}. Every piece lies on the face it is laid on in the plate "
               f"files (`plate_<k>.3mf`, one object a piece, mm); pins, axles and handles lie on the flat along "
               f"their side so that their layers run along them.", ""]
-    total_t = sum(q.time_s or 0 for q in plans) if sliced else None
-    rows = []
-    for q in plans:
-        rows.append([f"plate {q.plate}", str(q.pieces), hours(q.time_s) if sliced else "not sliced",
-                     f"{q.filament_g:.0f} g" if sliced and q.filament_g is not None else f"about {q.estimate_g:.0f} g",
-                     q.names])
-    lines += _table(["plate", "pieces", "time", "filament", "what"], rows)
-    if sliced:
-        lines += [f"In all: {hours(total_t)} of printing, {sum(q.filament_g or 0 for q in plans):.0f} g of "
-                  f"filament (PrusaSlicer's estimate for these settings).", ""]
-    else:
-        lines += [f"Not sliced (PrusaSlicer is not installed, or `--slice no`): the filament is estimated at "
-                  f"{p.infill_percent:g} % infill and {p.perimeters} perimeters; no print time.", ""]
+    lines += plates_lines(p, plans, sliced)
     lines += _table(["piece", "count", "what"], [[pc.name, str(pc.count), pc.what] for pc in kit.pieces])
     if kit.hardware:
         lines += ["## 2. Hardware", "", "Steel pins fit the same holes as the printed ones:", ""]

@@ -197,8 +197,7 @@ def write_kit(kit: Kit, w, sliced: bool = False) -> None:
     """Pieces → STL + mesh checks; plates → 3MF + pictures; assembled picture; derived, checks and
     the report's text into the writer `w` (an OutputWriter whose report is print_report.md)."""
     from ..export.mesh import write_3mf_objects, write_stl
-    from .planning import TABLE_COLUMNS, PlatePlan, estimate_g, hours, slice_plates, table_rows
-    from .slicer import slicer_path
+    from .planning import TABLE_COLUMNS, PlatePlan, estimate_g, slice_plates, table_rows
 
     from .coupon import coupon_pieces
 
@@ -261,27 +260,40 @@ def write_kit(kit: Kit, w, sliced: bool = False) -> None:
     w.derived.update(kit.derived)
     w.expected_failures |= set(kit.expected_failures)
     w.add_checks(kit.checks)
+    _report_lead(kit, w, plans, sliced)
     w.add_note("The maker's guide — what to print, with what, how long, the hardware, the clearance coupon and the "
                "assembly with pictures — is [print_guide.md](print_guide.md).")
-    w.add_note(f"Printer: {p.label}, {p.margin_mm:g} mm margins along the bed's edges.")
-    w.add_note(f"Scale {kit.scale.label}: {kit.scale.reason}.")
     w.add_note("FDM allowances applied to the printed geometry: " + "; ".join(
         f"{name} {value:g} mm ({how})" for name, value, how in kit.allowances) + ".")
-    w.add_note(f"Print settings: {p.settings_text}.")
-    if sliced:
-        w.add_note("Plates, sliced by PrusaSlicer with these settings: " + "; ".join(
-            f"plate {q.plate}: {q.pieces} pieces, {hours(q.time_s)}, {q.filament_g or 0:.0f} g ({q.filament_m or 0:.1f} m)"
-            f" of filament: {q.names}" for q in plans) + ".")
-    else:
-        w.add_note("Plates (not sliced: " + ("PrusaSlicer is not installed" if slicer_path() is None else
-                                             "--slice no") + f"; filament estimated at {p.infill_percent:g} % infill "
-                   f"and {p.perimeters} perimeters, {p.density_g_cm3:g} g/cm³): " + "; ".join(
-                       f"plate {q.plate}: {q.pieces} pieces, about {q.estimate_g:.0f} g: {q.names}" for q in plans) + ".")
-    if kit.hardware:
-        w.add_note("Hardware a maker may use instead of printed pins (the holes fit either): " + "; ".join(
-            f"{h.count} × {h.what}" + (f" (instead of the printed {h.instead_of})" if h.instead_of else "")
-            for h in kit.hardware) + ".")
-    if kit.steps:
-        w.add_note("Assembly, in order: " + " ".join(f"({k}) {s}" for k, s in enumerate(kit.steps, 1)))
     for n in kit.notes:
         w.add_note(n)
+
+
+def _report_lead(kit: Kit, w, plans, sliced: bool) -> None:
+    """The kit report opens as a maker reads it: what to print, on which printer with which settings, how
+    long and how much filament, then the hardware and the assembly; the proofs follow, and the inputs
+    (those of the full-size design, from the part file) close it as an appendix."""
+    from ..export.report import md_text
+    from .guide import plates_lines
+    from .slicer import slicer_path
+
+    p = kit.printer
+    lead = ["## What to print", "",
+            f"Printer: {md_text(p.label)}, {p.margin_mm:g} mm margins along the bed's edges. "
+            f"Scale {kit.scale.label}: {md_text(kit.scale.reason)}.", "",
+            f"Print settings: {md_text(p.settings_text)}.", ""]
+    lead += plates_lines(p, plans, sliced)
+    if not sliced and slicer_path() is None:
+        lead += ["PrusaSlicer is not installed here: with it (`apt-get install prusa-slicer`) `propulsor print` "
+                 "slices every plate for its print time and filament.", ""]
+    lead += ["## Assembly", ""]
+    if kit.hardware:
+        lead += ["Hardware a maker may use instead of printed pins (the holes fit either):", ""]
+        lead += [f"- {h.count} × {md_text(h.what)}" + (f" (instead of the printed `{md_text(h.instead_of)}`)"
+                                                       if h.instead_of else "") for h in kit.hardware] + [""]
+    lead += [f"{k}. {md_text(step)}" for k, step in enumerate(kit.steps, 1)] + [""]
+    lead += ["The pictures of every step, the side and exploded views and the clearance coupon are in the "
+             "maker's guide, [print_guide.md](print_guide.md).", ""]
+    w.report_lead = lead
+    w.inputs_heading = f"Appendix: the full-size design's inputs (the part file; the model prints at {kit.scale.label})"
+    w.inputs_last = True

@@ -53,12 +53,15 @@ def hours(seconds: int | None) -> str:
 def slice_plates(plans: list[PlatePlan], plate_paths: list[Path], printer, progress) -> list[Check]:
     """Slice every plate with the printer's settings; fill each plan's time and filament; the checks:
     each plate slices, every object manifold and on the bed."""
+    import time
+
     from .slicer import slice_plate
 
     checks = []
+    t0 = time.perf_counter()
     with tempfile.TemporaryDirectory(prefix="propulsor-slice-") as work:
         for plan, path in zip(plans, plate_paths):
-            progress(f"slicing plate {plan.plate} of {len(plans)} with PrusaSlicer")
+            progress(f"slicing plate {plan.plate} of {len(plans)} with PrusaSlicer (--slice no skips it)")
             r = slice_plate(path, printer.bed_shape(), Path(work) / f"plate_{plan.plate}.gcode",
                             args=printer.slicer_args())
             off = r.off_bed(printer.bed_x_mm, printer.bed_y_mm)
@@ -70,6 +73,7 @@ def slice_plates(plans: list[PlatePlan], plate_paths: list[Path], printer, progr
                 plan.time_s = int(r.stats["time_s"])
                 plan.filament_g = float(r.stats["filament_g"])
                 plan.filament_m = float(r.stats.get("filament_mm", 0.0)) / 1000.0
+    progress(f"PrusaSlicer sliced {len(plans)} plate(s) in {time.perf_counter() - t0:.0f} s")
     return checks
 
 

@@ -22,7 +22,7 @@ from ...printing.fits import Fit
 from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
 from ...printing.hardware import PRINTED_PIN_MIN_MM, STANDARD_PIN_D, Hardware, dowel, mm, standard_at_most, side_pin
-from ...printing.scale import check_printable, choose_scale, larger
+from ...printing.scale import ScaleChoice, check_printable, choose_scale, larger
 from .design import pair_design
 from .params import NoncircularPairParams
 from .proofs import checks_common, prove
@@ -136,18 +136,35 @@ def _with_holes(profile: Profile, holes) -> Profile:
     return Profile(profile.outer, list(profile.holes) + list(holes), profile.name)
 
 
-def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, source=None) -> Kit:
+def _pitch_fits(p: NoncircularPairParams, extents: dict, printer: Printer) -> bool:
+    """The pitch curves alone (the estimate's extents less its 2 % and addendum) fit the bed at 1:1: the
+    printed pair may then fit at full size although the padded estimate does not."""
+    from ...printing.scale import fits
+
+    grow = p.module_mm * (1.0 + abs(p.driver_shift))
+    usable = (printer.bed_x_mm - 2 * printer.margin_mm, printer.bed_y_mm - 2 * printer.margin_mm, printer.bed_z_mm)
+    return all(fits((e[0] / 1.02 - 2 * grow, e[1] / 1.02 - 2 * grow, e[2]), usable) for e in extents.values())
+
+
+def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, source=None,
+        full_size_first: bool = True) -> Kit:
+    """The kit; full_size_first: where only the padded estimate keeps a searched pair from 1:1, the
+    printed pair is searched and cut at 1:1 first and its own outlines decide (the full-size design is
+    made only when they do not fit: then the kit is made again without this shortcut)."""
     from ...solids.build import extrude_profile
     from ...solids.kernel import cylinder
 
     bed = (printer.bed_x_mm, printer.bed_y_mm, printer.bed_z_mm)
     full = None
+    at_1_first = False
     if p.law_search and p.module_mm > 0:
         # the searched law at full size is also the one at 1:1: the scale from the pitch curves, and at
         # 1:1 the printed pair searched and cut once (a print module has no catalogue shaper)
         m, L_est, extents = _pitch_extents(p, source)
         choice = choose_scale(extents, bed, scale, margin=printer.margin_mm)
-        if choice.S != 1.0:
+        if choice.S != 1.0 and scale is None and full_size_first and _pitch_fits(p, extents, printer):
+            choice, at_1_first = ScaleChoice(1.0, "every piece fits the bed at full size"), True
+        elif choice.S != 1.0:
             full = pair_design(p, source)
     else:
         full = pair_design(p, source)
@@ -165,6 +182,8 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     R_boss = max(pin) / 2 + BOSS_WALL_MM
     base_len = L_est / S + 2 * R_boss
     if base_len > max(printer.bed_x_mm, printer.bed_y_mm) - 2 * printer.margin_mm:
+        if at_1_first:
+            return kit(p, printer, scale, source, full_size_first=False)
         raise InputError("--scale", choice.label, f"the base bar ({base_len:.1f} mm) does not fit the bed")
     check_printable(S, m, printer.min_module_mm, choice=choice)
     clear, under, press = printer.running_clearance_mm, printer.hole_undersize_mm, printer.press_fit_mm
@@ -186,6 +205,10 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     drv_prof, dvn_prof = kd.profiles
     # the crank handle's hole in the driver, the index marks in the driven wheel
     rig = rig_sizes(d.driver.root_min_radius, d.m, pin[0], printer)
+    if at_1_first:
+        real = {"driver": (*_extent(drv_prof), w), "driven": (*_extent(dvn_prof), w)}
+        if choose_scale(real, bed, None, margin=printer.margin_mm).S != 1.0 or rig is None or rig[0] != pin[0]:
+            return kit(p, printer, scale, source, full_size_first=False)  # the printed pair does not fit at 1:1
     if rig is None or rig[0] != pin[0]:
         raise InputError("--scale", choice.label, f"the driver (root radius {mm(d.driver.root_min_radius)} mm) has no "
                          f"room for a ⌀{HANDLE_STEEL_MIN_MM:g} mm handle beside a ⌀{PRINTED_PIN_MIN_MM:g} mm pin; "
