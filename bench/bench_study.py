@@ -1,7 +1,7 @@
 """Benchmark: a design study on the Dask engine with 1 worker and with 2 workers, against the same
 evaluations called inline (one after the other in this process), in one run.
 
-Run: .venv/bin/python bench/bench_study.py [variants] [depth] [part file]
+Run: .venv/bin/python bench/bench_study.py [variants] [depth] [part file] [inline count]
 Default: 100 `proof`-depth variants of the seed-002 pair (parts/ncg_seed002.toml; face width and
 backlash sampled, so every variant does about the same work).  A proof-depth variant is the pair's design
 (law search, teeth) and its proof steps (the full-cycle proof, the other method's, the as-built speed, every
@@ -11,7 +11,8 @@ the point): run it alone; a shared machine gives a smaller ratio.  A short check
 
 What is measured, and how (each the same for the three runs):
 - inline: the N variants by :func:`propulsor.study.evaluate.evaluate`, one after the other, in this
-  process — the baseline;
+  process — the baseline (with an inline count K < N, the first K of them, and the inline time of all N
+  is K's scaled by what the N cost against those K on the 1-worker cluster: each row's own seconds);
 - 1 worker / 2 workers: the same N variants through the engine (:func:`propulsor.study.engine.run`:
   submit, gather, the table written as each finishes, the front, the page) on a LocalCluster of that
   many worker processes, as the engine makes its own: one thread per worker, numpy's BLAS / OpenMP
@@ -21,7 +22,8 @@ What is measured, and how (each the same for the three runs):
 - warm-up before each clock starts: this process, and each worker (``client.run`` on every worker),
   imports the project and evaluates the base part file once (not one of the N variants), so neither
   process start-up nor imports are timed;
-- overhead = (1-worker wall − inline wall) / inline wall (target <= 5 %); ratio = 1-worker wall /
+- overhead = (1-worker wall − inline wall) / inline wall (target <= 5 %); beside it, the 1-worker wall
+  against the sum of the evaluations' own times on that worker (what the engine adds around them); ratio = 1-worker wall /
   2-worker wall (target >= 1.8); variants per minute = N / wall; peak memory per worker = the worker
   process's max RSS (and that of any process it forked), read on the worker after the study.
 The rows of the three runs are checked equal (the objectives, to the last digit).
@@ -104,13 +106,14 @@ def _warm(study) -> None:
     evaluate(study.part_type, study.base, str(study.part_file), {}, study.depth, study.values)
 
 
-def inline(study) -> tuple[float, dict]:
+def inline(study, k: int) -> tuple[float, dict]:
+    """The first `k` variants evaluated one after the other in this process: (wall, rows by variant)."""
     from propulsor.study.evaluate import evaluate
 
     _warm(study)
     t0 = time.perf_counter()
     rows = {}
-    for i, v in enumerate(study.variants, 1):
+    for i, v in enumerate(study.variants[:k], 1):
         rows[i] = evaluate(study.part_type, study.base, str(study.part_file), v, study.depth, study.values)
     return time.perf_counter() - t0, rows
 
@@ -144,7 +147,7 @@ def _same(rows_inline: dict, rows: dict, names) -> int:
     return bad
 
 
-def main(n: int = 100, depth: str = "proof", part: str = "parts/ncg_seed002.toml") -> int:
+def main(n: int = 100, depth: str = "proof", part: str = "parts/ncg_seed002.toml", k: int | None = None) -> int:
     from propulsor.study import load_study
 
     load_before = os.getloadavg()[0]
@@ -152,12 +155,19 @@ def main(n: int = 100, depth: str = "proof", part: str = "parts/ncg_seed002.toml
         tmp = Path(tmp)
         study = load_study(_study_file(tmp, n, depth, (ROOT / part).resolve()))
         n = len(study.variants)
-        t0, rows0 = inline(study)
+        k = n if k is None else max(1, min(k, n))
+        t0, rows0 = inline(study, k)
         t1, rows1, facts1 = on_cluster(study, tmp / "w1", 1)
         t2, rows2, facts2 = on_cluster(study, tmp / "w2", 2)
-    bad = [r["reason"] for r in rows0.values() if r["status"] != "ok"]
+    bad = [r["reason"] for r in rows1.values() if r["status"] != "ok"]
     ratio = t1 / t2
-    overhead = (t1 - t0) / t0
+    # the evaluations' own time on the 1-worker cluster (each row's seconds, measured around the same call)
+    s1 = sum(r["seconds"] for r in rows1.values())
+    s1_k = sum(rows1[i]["seconds"] for i in rows0)
+    # inline time of all N: measured when k = N; else the first k scaled by the variants' measured cost
+    t0_all = t0 if k == n else t0 * s1 / s1_k
+    overhead = (t1 - t0_all) / t0_all
+    engine = (t1 - s1) / s1
     differ = _same(rows0, rows1, study.values) + _same(rows0, rows2, study.values)
 
     def mem(facts):
@@ -165,11 +175,13 @@ def main(n: int = 100, depth: str = "proof", part: str = "parts/ncg_seed002.toml
                          for f in facts)
 
     print(f"{n} {depth}-depth variants of {part} ({len(bad)} not ok{': ' + bad[0] if bad else ''}):\n"
-          f"  inline     {t0:8.1f} s  {n / t0 * 60:6.2f} per min  ({t0 / n:.2f} s a variant)\n"
+          f"  inline     {t0:8.1f} s  for {k} of the {n} ({t0 / k:.2f} s a variant; the same {k} took "
+          f"{s1_k / k:.2f} s each on the worker){'' if k == n else f'; all {n} estimated {t0_all:.1f} s'}\n"
           f"  1 worker   {t1:8.1f} s  {n / t1 * 60:6.2f} per min  peak memory {mem(facts1)} MB\n"
           f"  2 workers  {t2:8.1f} s  {n / t2 * 60:6.2f} per min  peak memory {mem(facts2)} MB per worker\n"
           f"  ratio 1 worker / 2 workers {ratio:.2f} (target >= {TARGET_RATIO}); engine overhead "
-          f"(1 worker - inline) / inline {overhead * 100:+.1f} % (target <= {TARGET_OVERHEAD * 100:.0f} %)\n"
+          f"(1 worker - inline) / inline {overhead * 100:+.1f} % (target <= {TARGET_OVERHEAD * 100:.0f} %); "
+          f"1-worker wall against the evaluations' own time on it {engine * 100:+.1f} %\n"
           f"  workers: 1 thread each, OMP_NUM_THREADS={facts2[0]['OMP_NUM_THREADS']}, "
           f"OPENBLAS_NUM_THREADS={facts2[0]['OPENBLAS_NUM_THREADS']}; rows differing from inline: {differ}; "
           f"load average before/after: {load_before:.1f}/{os.getloadavg()[0]:.1f}")
@@ -179,4 +191,4 @@ def main(n: int = 100, depth: str = "proof", part: str = "parts/ncg_seed002.toml
 if __name__ == "__main__":
     a = sys.argv[1:]
     sys.exit(main(int(a[0]) if a else 100, a[1] if len(a) > 1 else "proof",
-                  a[2] if len(a) > 2 else "parts/ncg_seed002.toml"))
+                  a[2] if len(a) > 2 else "parts/ncg_seed002.toml", int(a[3]) if len(a) > 3 else None))
