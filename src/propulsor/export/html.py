@@ -20,8 +20,6 @@ from __future__ import annotations
 import base64
 import hashlib
 import html
-import os
-import tempfile
 from pathlib import Path
 from urllib.parse import unquote
 
@@ -158,14 +156,6 @@ def write_report_html(md_path: str | Path, models=()) -> Path:
 def write_atomically(path: str | Path, text: str) -> Path:
     """Write `text` to `path` through a temporary file in the same folder and one rename, so that a
     reader (or a second writer) sees the old file or the new one, never a part."""
-    path = Path(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as fh:
-            fh.write(text)
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-    return path
+    from ..atomic_file import replace_atomically
+
+    return replace_atomically(path, lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))

@@ -12,10 +12,9 @@ from __future__ import annotations
 
 import csv
 import io
-import os
-import tempfile
 from pathlib import Path
 
+from ..atomic_file import replace_atomically
 from ..errors import InputError
 from .results import cell, columns
 from .spec import Study
@@ -87,16 +86,7 @@ def write_parquet(path: Path, cols: list[str], rows: list[dict]) -> Path:
     types = {"int": pa.int64(), "float": pa.float64(), "bool": pa.bool_(), "text": pa.string()}
     schema = pa.schema([pa.field(c, types[k[c]]) for c in cols])
     table = pa.table({c: pa.array([r[c] for r in data], type=types[k[c]]) for c in cols}, schema=schema)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    os.close(fd)
-    try:
-        pq.write_table(table, tmp)
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-    return path
+    return replace_atomically(path, lambda tmp: pq.write_table(table, tmp))
 
 
 def read_parquet(path: Path) -> list[dict]:
@@ -135,14 +125,14 @@ class Table:
         if resume and self.path.is_file():
             wanted = None if keys is None else set(keys)
             self.rows = [r for r in read_csv(self.path, self.cols) if wanted is None or r["key"] in wanted]
-        fd, tmp = tempfile.mkstemp(prefix=f".{RESULTS}.", suffix=".tmp", dir=folder)
-        with os.fdopen(fd, "w", newline="", encoding="utf-8") as f:
-            w = csv.writer(f)
-            w.writerow(self.cols)
-            for r in self.rows:
-                w.writerow([cell(r.get(c)) for c in self.cols])
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, self.path)
+        def header_and_rows(tmp: str) -> None:
+            with open(tmp, "w", newline="", encoding="utf-8") as f:
+                w = csv.writer(f)
+                w.writerow(self.cols)
+                for r in self.rows:
+                    w.writerow([cell(r.get(c)) for c in self.cols])
+
+        replace_atomically(self.path, header_and_rows)
         self._f = open(self.path, "a", newline="", encoding="utf-8")
         self._w = csv.writer(self._f)
         write_parquet(self.parquet, self.cols, self.rows)
