@@ -104,3 +104,18 @@ def test_inputs_listed_are_the_laws_own():
     assert not {"a_mm", "b_mm", "c_mm", "law_file", "fourier_cos"} & set(listed)
     assert ell.meaning("driver_turns").startswith("k: lobes")
     assert NoncircularPairParams().meaning("driver_turns") == "n: driver turns per driven (carrier) turn; 1, 2 or 4"
+
+
+def test_a_law_without_a_hub_proves_on_one_core():
+    """The proof of an elliptical pair in one process (a study's proof depth, ``make``'s busy queue): no
+    as-built hub speed is asked of a law without a hub (it raised AttributeError when run inline)."""
+    from pathlib import Path
+
+    from propulsor.params import read_part_file
+    from propulsor.study.evaluate import evaluate
+
+    part = Path(__file__).resolve().parents[1] / "parts" / "ncg_elliptical.toml"
+    ptype, base = read_part_file(part)
+    row = evaluate(ptype, base, str(part), {}, "proof", ("center_distance_mm",))
+    assert row["status"] == "ok", row["reason"]
+    assert row["values"]["center_distance_mm"] > 0

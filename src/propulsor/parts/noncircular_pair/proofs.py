@@ -111,10 +111,12 @@ def checks_sectors(d: Design, pr) -> list[Check]:
 def proofs(dd: PairDesign, w, built: dict) -> None:
     """The built pair over the whole cycle; the other tooth method over one leg when asked."""
     from ...parallel import start
+    from ...laws.law import is_walking
     from .as_built import as_built
 
     p, d, prog = dd.p, dd.d, w.progress
     built["proof"] = prove(d, p.proof_phases_per_tooth, 4, prog, dd.mount)
-    prog("as-built speed: the loaded contact law resolved around every change of contact")
-    built["as_built"] = start(as_built, d, dd.mount, built["proof"])  # beside the other method's proof
+    if is_walking(d.law):  # a hub, and its speed: a law without one has its output speed from the proof
+        prog("as-built speed: the loaded contact law resolved around every change of contact")
+        built["as_built"] = start(as_built, d, dd.mount, built["proof"])  # beside the other method's proof
     built["other"] = compare(p, d, prog) if p.compare_methods else (None, None, "")
