@@ -28,15 +28,13 @@ What is measured, and how (each the same for the three runs):
   process's max RSS (and that of any process it forked), read on the worker after the study.
 The rows of the three runs are checked equal (the objectives, to the last digit).
 
-Measured here with ``bench/bench_study.py 6`` (2 cores shared with other work, load average 5.3 rising to
-10.2 during the run, so not the targets' conditions): inline 238.4 s (39.7 s a variant); 1 worker 313.6 s
-(1.15 per min), 2 workers 159.2 s (2.26 per min): ratio 1.97; overhead +31.5 % (the inline run had the
-lighter load: not a measure of the engine); peak memory about 1.05 GB per worker (+61 MB forked); rows equal
-to the inline ones.  Those numbers are of the former proof depth, which ran the whole build (solids, their
-files and checks) for each variant; the design and proof steps alone take about a quarter of its CPU time
-(one variant, face width 17.3 mm and backlash 0.15 mm, imports of the part's modules included, measured with
-time.process_time on the shared machine: 19.2 CPU s and 28.5 s wall before, 9.2 CPU s and 13.6 s wall after).  The 100-variant numbers
-are taken on an idle machine.
+Measured here with ``bench/bench_study.py 100`` on an idle machine (load 1.4 before, 2.3 after; the proof
+depth of design + proof steps, no solid): inline 750.5 s (7.50 s a variant); 1 worker 838.5 s (7.16 per min),
+2 workers 425.7 s (14.09 per min): ratio 1.97; overhead against inline +11.7 % (target 5 %: not met), while the
+1-worker wall is only +0.1 % over the evaluations' own time on the worker: the engine adds nothing measurable,
+the same evaluation runs slower inside a Dask worker (8.37 s against 7.50 s a variant; with the worker's
+statistical profiler off, 6 variants: +9.3 %, so not the profiler); peak memory 627-658 MB per worker
+(+61 MB forked); 0 rows differing from inline.
 """
 
 from __future__ import annotations
