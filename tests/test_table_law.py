@@ -11,6 +11,7 @@ from propulsor.errors import InputError
 from propulsor.gears.noncircular import PitchCurves, SmoothedWalkingLaw, centre_distance
 from propulsor.laws.table_law import TableLaw, parse_law_table, read_law_table
 from propulsor.laws.walking import SEED_000, SEED_002, WalkingLaw
+from outline_points import dense
 
 
 def _csv(th_deg, ph_deg) -> str:
@@ -93,16 +94,6 @@ def test_malformed_tables_are_refused(text, match):
         parse_law_table(text)
 
 
-def _dense(loops, h):
-    out = []
-    for q in loops:
-        q = np.vstack([q, q[:1]])
-        for p0, p1 in zip(q[:-1], q[1:]):
-            n = max(1, int(np.hypot(*(p1 - p0)) / h) + 1)
-            out.append(p0 + np.outer(np.arange(n) / n, p1 - p0))
-    return np.vstack(out)
-
-
 def test_table_of_the_walking_laws_samples_gives_the_walking_driver_within_1_um():
     """Same law -> same teeth: the seed-002 driver (20 teeth, x = +0.5) generated on the blended walking
     law and on the table of its samples every 1/16 deg of one leg, at the same centre distance."""
@@ -117,5 +108,5 @@ def test_table_of_the_walking_laws_samples_gives_the_walking_driver_within_1_um(
     L = centre_distance(sl, 2.5, 80)
     walking, table = (generate_gear(PitchCurves(law, L), "driver", ToothSpec(m=2.5, x=0.5, z0=20)).profile
                       for law in (sl, tl))
-    d = cKDTree(_dense(walking.polylines(0.0001), 0.0005)).query(np.vstack(table.polylines(0.0001)))[0]
+    d = cKDTree(dense(walking.polylines(0.0001), 0.0005)).query(np.vstack(table.polylines(0.0001)))[0]
     assert float(np.max(d)) < 1e-3
