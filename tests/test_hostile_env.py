@@ -425,3 +425,15 @@ def test_a_build_beside_a_fifo_manifest_rewrites_the_gallery_without_hanging(tmp
     assert r.returncode == 0, r.stderr
     page = (tmp_path / "output" / "index.html").read_text()
     assert "good" in page and "is a FIFO" in page
+
+
+def test_a_step_writer_failure_is_the_machines_when_the_folder_takes_no_file(tmp_path):
+    """OCCT's STEP writer fails without an errno; where the folder takes no new file (here /proc) the
+    failure is the machine's (exit 3), elsewhere the writer's own."""
+    from propulsor.errors import EnvironmentFailure
+    from propulsor.export.step import _write_failed
+
+    assert isinstance(_write_failed(Path("/proc/a.step"), "STEP write"), EnvironmentFailure)
+    err = _write_failed(tmp_path / "a.step", "STEP write")
+    assert type(err) is RuntimeError and "STEP write failed" in str(err)
+    assert list(tmp_path.iterdir()) == []  # the probe is gone

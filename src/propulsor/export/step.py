@@ -54,6 +54,28 @@ def fix_header(path: str | Path) -> None:
     p.write_bytes(head.encode("latin-1") + body.encode("latin-1"))
 
 
+def _write_failed(path: Path, what: str) -> Exception:
+    """Why OCCT's writer failed (it gives no errno): a folder that takes no new file of 64 KiB is the
+    machine's refusal (EnvironmentFailure, exit 3: disk or inodes full, read-only, no permission); else
+    the writer's own failure."""
+    import os
+    import tempfile
+
+    from ..errors import EnvironmentFailure
+
+    try:
+        fd, probe = tempfile.mkstemp(prefix=".probe.", dir=path.parent)
+        try:
+            os.write(fd, bytes(65536))
+            os.fsync(fd)
+        finally:
+            os.close(fd)
+            os.unlink(probe)
+    except OSError as exc:
+        return EnvironmentFailure(path, exc.errno, "cannot write", exc.strerror or "")
+    return RuntimeError(f"{what} failed: {path}")
+
+
 def write_step(solid, path: str | Path, name: str) -> Path:
     """Write one solid to STEP (mm, AP214) as a product called `name`."""
     shape = occ_shape(solid)
@@ -69,7 +91,7 @@ def write_step(solid, path: str | Path, name: str) -> Path:
     if not writer.Transfer(doc, STEPControl_AsIs):
         raise RuntimeError(f"STEP transfer failed for {name}")
     if writer.Write(str(path)) != IFSelect_RetDone:
-        raise RuntimeError(f"STEP write failed: {path}")
+        raise _write_failed(path, "STEP write")
     fix_header(path)
     return path
 
@@ -118,7 +140,7 @@ def write_assembly_step(path, components, name: str) -> Path:
         assy.add(cq.Shape.cast(occ_shape(solid)), name=cname, loc=loc)
     _set_units()
     if not exportAssembly(assy, str(path)):
-        raise RuntimeError(f"STEP assembly write failed: {path}")
+        raise _write_failed(path, "STEP assembly write")
     fix_header(path)
     return path
 
