@@ -45,7 +45,6 @@ for _name in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUM
               "VECLIB_MAXIMUM_THREADS", "NUMBA_NUM_THREADS"):
     os.environ.setdefault(_name, "1")  # before numpy loads: this process and the workers it starts
 
-import logging  # noqa: E402
 import resource  # noqa: E402
 import sys  # noqa: E402
 import tempfile  # noqa: E402
@@ -117,14 +116,11 @@ def inline(study, k: int) -> tuple[float, dict]:
 
 
 def on_cluster(study, out: Path, n_workers: int) -> tuple[float, dict, list[dict]]:
-    import dask
-    from distributed import Client, LocalCluster
+    from distributed import Client
 
-    from propulsor.study.engine import run
+    from propulsor.study.engine import local_cluster, run
 
-    with dask.config.set({"distributed.worker.daemon": False}):  # as the engine's own local cluster
-        cluster = LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True,
-                               dashboard_address="127.0.0.1:0", silence_logs=logging.CRITICAL)
+    cluster = local_cluster(n_workers)  # the engine's own local cluster
     with cluster, Client(cluster, set_as_default=False) as client:
         info = client.scheduler_info()["workers"]
         assert len(info) == n_workers and all(w["nthreads"] == 1 for w in info.values()), info

@@ -372,6 +372,26 @@ require = ["all_checks_passed"]
     assert 100.0 < float(row["mass_wheel_kg"]) < 150.0
 
 
+def _worker_settings() -> tuple:
+    import dask
+
+    return (os.environ.get("MALLOC_TRIM_THRESHOLD_"), os.environ.get("OPENBLAS_NUM_THREADS"),
+            dask.config.get("distributed.worker.profile.enabled"), dask.config.get("distributed.worker.daemon"))
+
+
+def test_the_local_cluster_workers_run_a_variant_as_this_process_would():
+    """No MALLOC_TRIM_THRESHOLD_ in a worker's environment (Dask's nanny sets it by default: it switches
+    off glibc's dynamic mmap threshold and a proof runs 4-6 % slower), BLAS at one thread, no statistical
+    profiler sampling the evaluation, and workers that may fork."""
+    from distributed import Client
+
+    from propulsor.study.engine import local_cluster
+
+    with local_cluster(1) as cluster, Client(cluster, set_as_default=False) as client:
+        (settings,) = client.run(_worker_settings).values()
+    assert settings == (None, "1", False, False)
+
+
 def test_all_checks_passed_is_not_vacuously_true_where_no_check_ran():
     from propulsor.study.results import requirement_failure
     from propulsor.study.spec import Requirement
