@@ -73,6 +73,24 @@ def test_a_part_in_memory_solids_profiles_checks_assembly():
         wheel.assembly("nope")
 
 
+def test_a_written_part_is_not_built_again(tmp_path, monkeypatch):
+    """After .write, .build / .solids / .prove() are the build that was written (a study at depth build
+    writes each variant and reads its values: one build, not two); the values are the manifest's."""
+    import propulsor.building as building
+
+    calls = []
+    real = building.produce_build
+    monkeypatch.setattr(building, "produce_build", lambda *a, **k: calls.append(1) or real(*a, **k))
+    wheel = propulsor.part("road_wheel", lightening_holes=0)
+    wheel.write(tmp_path / "w")
+    assert calls == [1]
+    checks = wheel.prove(raise_on_failure=True)
+    assert set(wheel.solids) >= {"disc", "rim_1", "tyre_1"} and calls == [1]
+    manifest = json.loads((tmp_path / "w" / "manifest.json").read_text())
+    assert len(checks) == len(manifest["checks"]) > 0
+    assert wheel.build.derived["mass_wheel_kg"] == manifest["derived"]["mass_wheel_kg"]
+
+
 @pytest.mark.parametrize("make", [
     lambda: propulsor.part("noncircular_pair", module_mm=-3),
     lambda: propulsor.parameters("noncircular_pair", module_mm=-3),

@@ -97,7 +97,8 @@ class Proof:
 class Part:
     """A part: its type, validated parameters and the part file they came from (None for a type's
     defaults).  The design is computed on first use and kept; the solids, profiles and proofs come from
-    one real build (the build ``propulsor build`` runs, into a temporary folder), run on first use;
+    one real build (the build ``propulsor build`` runs, into a temporary folder), run on first use (or the
+    build :meth:`write` made);
     :attr:`proof_run` is the design and its proofs alone (no solid, no file), where the part type declares them."""
 
     def __init__(self, part_type: str, params, source: Path | None = None):
@@ -223,8 +224,11 @@ class Part:
         failures: list[str] = []
 
         def produce(tmp: Path):
-            fails, what, _ = produce_build(self._pt, self.params, self.source, tmp, progress)
+            fails, what, w = produce_build(self._pt, self.params, self.source, tmp, progress)
             failures.extend(fails)
+            # the build just written is this part's build: .build, .solids, .prove() reuse it
+            self.__dict__["build"] = Build(tuple(fails), tuple(w.checks), dict(w.derived), dict(w.built_solids),
+                                           dict(w.built_profiles), dict(w.built_assemblies))
             return fails, what
 
         args = argparse.Namespace(no_wait=False, force=force, keep_failed=keep_failed)
