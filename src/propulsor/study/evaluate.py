@@ -6,8 +6,7 @@ the design and the part type's proof steps (:attr:`propulsor.Part.proof_run`: th
 values, no solid and no file; a part type that declares none runs its whole build into a temporary
 folder and keeps no file); ``build`` writes the variant's files (``propulsor build``'s) into a folder of
 the study (one build: the values read from the build written).  The design is computed once and reused by
-the proof (the part's design cache).  Only the
-row travels back: the arrays stay here.
+the proof (the part's design cache).  Only the row travels back: the arrays stay here.
 """
 
 from __future__ import annotations
