@@ -7,6 +7,7 @@ headless Chromium only enables with ``--enable-unsafe-swiftshader``.
 from __future__ import annotations
 
 import base64
+import contextlib
 import itertools
 import json
 import shutil
@@ -25,6 +26,25 @@ def find_chromium() -> str | None:
         if p:
             return p
     return None
+
+
+@contextlib.contextmanager
+def headless_page():
+    """A tab of a headless Chromium started for the with-block (closed after it); the test is skipped
+    where no Chromium is installed."""
+    import pytest
+
+    exe = find_chromium()
+    if exe is None:
+        pytest.skip("the browser tests need headless Chromium: install Debian's chromium package "
+                    "(.ci/run does) — `chromium` was not found on PATH")
+    browser = Chromium(exe)
+    try:
+        page = browser.page()
+        yield page
+        page.close()
+    finally:
+        browser.close()
 
 
 class Page:

@@ -251,18 +251,12 @@ def _canvas_drew(page, n: int) -> None:
 def check_in_browser(folder: Path, shots: Path) -> list[str]:
     """Open folder/index.html and every report page from disk at phone and desktop width; assert as the
     issue asks; write the two screenshots of the page into `shots`.  Returns the pages opened."""
-    from cdp_browser import Chromium, find_chromium
+    from cdp_browser import headless_page
 
-    exe = find_chromium()
-    if exe is None:
-        pytest.skip("the browser tests need headless Chromium: install Debian's chromium package "
-                    "(.ci/run does) — `chromium` was not found on PATH")
     index = folder / INDEX
     reports = sorted(list(folder.glob("*/report.html")) + list(folder.glob("*/print_report.html")))
     assert index.is_file() and reports
-    browser = Chromium(exe)
-    try:
-        page = browser.page()
+    with headless_page() as page:
         shots.mkdir(parents=True, exist_ok=True)
         for width, name in ((PHONE_PX, "index_phone_390.png"), (DESKTOP_PX, "index_desktop_1366.png")):
             info = _inspect(page, index.as_uri(), width)
@@ -272,9 +266,6 @@ def check_in_browser(folder: Path, shots: Path) -> list[str]:
             page.screenshot(shots / name, full=True)
         for rep in reports:
             _inspect(page, rep.as_uri(), PHONE_PX)
-        page.close()
-    finally:
-        browser.close()
     return [str(index)] + [str(r) for r in reports]
 
 

@@ -247,17 +247,12 @@ def test_gallery_that_cannot_be_written_is_an_environment_failure_not_a_foreign_
 def test_injected_payloads_do_not_run_in_a_browser(tmp_path):
     """The poisoned report, print report and gallery opened from disk in headless Chromium: no payload
     marks the page, and the gallery's own viewer still runs (its script, the GLB's script beside it)."""
-    from cdp_browser import Chromium, find_chromium
+    from cdp_browser import headless_page
 
-    exe = find_chromium()
-    if exe is None:
-        pytest.skip("the browser tests need headless Chromium (Debian package chromium)")
     reports = [write_poisoned_report(tmp_path / k, name) for k, name in (("a", "report.md"), ("b", "print_report.md"))]
     gallery = poisoned_gallery(tmp_path / "g")
     (gallery / "index.html").write_text(render_gallery(gallery), encoding="utf-8")
-    browser = Chromium(exe)
-    try:
-        page = browser.page()
+    with headless_page() as page:
         for url in [r.as_uri() for r in reports] + [(gallery / "index.html").as_uri()]:
             page.open(url, 1000)
             state = page.evaluate("""(async () => {
@@ -274,7 +269,4 @@ def test_injected_payloads_do_not_run_in_a_browser(tmp_path):
             assert state["pwned"] is None, (url, state)
             if url.endswith(INDEX):
                 assert state["viewers"] and all(v != "waiting" for v in state["viewers"]), state  # our script ran
-        page.close()
-    finally:
-        browser.close()
     assert not os.path.exists(tmp_path / "pwned")

@@ -38,26 +38,18 @@ MAX_CONTEXTS = 8
 @pytest.fixture(scope="module")
 def page30(tmp_path_factory):
     """A gallery of 30 road wheels, opened from disk in headless Chromium: (page, folder)."""
-    from cdp_browser import Chromium, find_chromium
+    from cdp_browser import headless_page
 
-    exe = find_chromium()
-    if exe is None:
-        pytest.skip("the browser tests need headless Chromium (Debian's chromium package)")
-    folder = tmp_path_factory.mktemp("views")
-    one = folder / "rw00"
-    assert main(["build", str(PART), "--out", str(one), "-q"]) == 0
-    for k in range(1, VIEWS):
-        shutil.copytree(one, folder / f"rw{k:02d}")
-    assert write_gallery(folder) is not None
-    browser = Chromium(exe)
-    try:
-        page = browser.page()
+    with headless_page() as page:
+        folder = tmp_path_factory.mktemp("views")
+        one = folder / "rw00"
+        assert main(["build", str(PART), "--out", str(one), "-q"]) == 0
+        for k in range(1, VIEWS):
+            shutil.copytree(one, folder / f"rw{k:02d}")
+        assert write_gallery(folder) is not None
         page.send("Page.addScriptToEvaluateOnNewDocument", source=COUNT_CONTEXTS)
         page.open((folder / INDEX).as_uri(), 1366)
         yield page
-        page.close()
-    finally:
-        browser.close()
 
 
 def _shot(page, k: int) -> np.ndarray:

@@ -36,11 +36,8 @@ REPORT = """# A moving test assembly
 @pytest.fixture(scope="module")
 def report_page(tmp_path_factory):
     """The report.html of a moving assembly, opened from disk in headless Chromium: the page."""
-    from cdp_browser import Chromium, find_chromium
+    from cdp_browser import headless_page
 
-    exe = find_chromium()
-    if exe is None:
-        pytest.skip("the browser tests need headless Chromium (Debian's chromium package)")
     folder = tmp_path_factory.mktemp("report")
     meshes = {"plate": box(120, 80, 4), "arm": box(70, 12, 8), "block": box(20, 20, 20)}
     lift = lambda x, y: lift_planar(rotation_matrices([0.0], [[x, y]])[0])  # noqa: E731
@@ -56,15 +53,10 @@ def report_page(tmp_path_factory):
     md.write_text(REPORT, encoding="utf-8")
     # seen from below first, as the balancer's assembly is (its arm would hide under its wheel from above)
     write_report_html(md, [{"path": "asm.glb", "script": "asm.glb.js", "title": "asm", "view_dir": [1.0, -1.0, -1.0]}])
-    browser = Chromium(exe)
-    try:
-        page = browser.page()
+    with headless_page() as page:
         page.open((folder / "report.html").as_uri(), 1000)
         assert _settle(page, 0) == "drawn"
         yield page
-        page.close()
-    finally:
-        browser.close()
 
 
 def _js(page, body: str):
