@@ -107,8 +107,8 @@ def pin_radius(mesh, at=(0.0, 0.0), z=None, reach: float | None = None) -> float
     return float(np.max(r))
 
 
-def measure(fit: Fit, meshes: dict, printer) -> Check:
-    """The fit's check on the pieces' meshes {name: mesh in the piece's own frame}."""
+def measure(fit: Fit | Rim, meshes: dict, printer) -> Check:
+    """The fit's (or rim's) check on the pieces' meshes {name: mesh in the piece's own frame}."""
     if isinstance(fit, Rim):
         return _measure_rim(fit, meshes[fit.piece], printer)
     under = printer.hole_undersize_mm
