@@ -30,7 +30,8 @@ def kit_folder(tmp_path_factory):
 
 FITS = ["wheel_on_axle", "gear_on_axle", "axle_wheel_in_base", "axle_gear_in_base_position_1",
         "axle_gear_in_base_position_2", "axle_gear_in_base_position_3",
-        "handle_in_disc"]
+        "handle_in_disc", "locating_pin_in_sector", "clamp_pin_in_sector_slot",
+        *[f"{pin}_pin_in_disc_sector_{f}_{j}" for f in (1, 2) for j in (1, 2, 3) for pin in ("locating", "clamp")]]
 
 
 @pytest.mark.parametrize("fit", FITS)
@@ -41,6 +42,26 @@ def test_each_fit_check_fails_under_its_mutation(kit_folder, fit):
 
     assert sorted(RECORDED) == sorted(FITS)  # every fit the kit measures is listed here
     assert_fails_under_mutation(RECORDED, fit)
+
+
+def test_the_sector_pins_are_measured_against_their_printed_holes(kit_folder):
+    """Each sector pin presses into the hole of the printed sector and of the printed disc: the pins
+    swapped (the locating pin in the clamping pin's holes and back) fail; the design-number check that
+    could not fail is gone."""
+    from dataclasses import replace
+
+    from propulsor.printing.fits import measure
+
+    m = json.loads((kit_folder / "manifest.json").read_text())
+    assert "fit.sector_pins" not in {c["name"] for c in m["checks"]}
+    for name in ("locating_pin_in_sector", "clamp_pin_in_sector_slot", "locating_pin_in_disc_sector_2_3",
+                 "clamp_pin_in_disc_sector_1_2"):
+        fit, meshes, printer, check = RECORDED[name]
+        assert check.passed and "interference 0.05" in check.message, check.message
+        other = "clamp_pin" if fit.pin == "locating_pin" else "locating_pin"
+        pins = {other: RECORDED["clamp_pin_in_sector_slot" if other == "clamp_pin" else "locating_pin_in_sector"][1][other]}
+        swapped = measure(replace(fit, pin=other), {**meshes, **pins}, printer)
+        assert not swapped.passed, swapped.message
 
 
 def test_polysector_kit_proves_its_printed_mesh_and_fits(kit_folder):

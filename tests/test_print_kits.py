@@ -59,8 +59,8 @@ def test_the_seed_002_kit_designs_its_printed_pair_once(kits):
 FITS = {"ncg_seed002": ["driver_on_pin", "driven_on_pin", "pin_driven_in_base", "pin_driver_in_base",
                         "washer_driver_on_pin", "cap_driver_on_pin", "washer_driven_on_pin", "cap_driven_on_pin",
                         "handle_in_driver"],
-        "final_drive": ["planet_on_pin_1", "planet_on_pin_2", "planet_on_pin_3", "shaft_in_floor", "shaft_in_carrier",
-                        "sun_on_shaft", "crank_on_shaft"]}
+        "final_drive": ["planet_on_pin_1", "planet_on_pin_2", "planet_on_pin_3", "pins_on_carrier", "shaft_in_floor",
+                        "shaft_in_carrier", "sun_on_shaft", "crank_on_shaft"]}
 
 
 @pytest.mark.parametrize("name, fit", [(n, f) for n, fits in FITS.items() for f in fits])
@@ -71,6 +71,25 @@ def test_each_fit_check_fails_under_its_mutation(kits, name, fit):
 
     assert sorted(RECORDED[name]) == sorted(FITS[name])  # every fit the kit measures is listed here
     assert_fails_under_mutation(RECORDED[name], fit)
+
+
+def test_the_carrier_wall_is_measured_on_the_printed_carrier(kits):
+    """The wall between the carrier's pins and its rim is read off the printed carrier: 6 mm as drawn
+    (less the tessellated rim's sagitta); a pin moved outward, grown or the disc shrunk by just more than
+    the wall beyond two line widths fails it, by just less still passes (the check is sharp)."""
+    from fit_mutations import measure, rim_cases
+
+    fit, meshes, printer, check = RECORDED["final_drive"]["pins_on_carrier"]
+    assert check.passed and check.value == pytest.approx(6.0, abs=2e-3), check.message
+    carrier = meshes["carrier"]
+    slack = check.value - printer.min_feature_mm
+    for delta, fails in ((slack + 0.02, True), (slack - 0.02, False)):
+        for what, mutated in rim_cases(fit, carrier, delta, k=1):
+            c = measure(fit, {"carrier": mutated}, printer)
+            assert c.passed is not fails, (what, c.message)
+            if fails:
+                assert c.value == pytest.approx(printer.min_feature_mm - 0.02, abs=2e-3), (what, c.message)
+                assert "least at pin 2" in c.message, c.message
 
 
 def _manifest(folder: Path) -> dict:

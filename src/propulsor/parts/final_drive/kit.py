@@ -20,7 +20,7 @@ import math
 from ...check import Check
 from ...geometry.profile import Arc, Line, Loop, Profile, circle_loop
 from ...params import load_params, params_to_dict
-from ...printing.fits import Fit
+from ...printing.fits import Fit, Rim
 from ...printing.hardware import dowel, side_pin
 from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
@@ -132,12 +132,14 @@ def kit(p: FinalDriveParams, printer: Printer, scale: float | None = None, sourc
                              f"twice the least flank clearance at the nominal positions ({least:.4f} mm): a lower "
                              f"bound of the normal backlash of every printed mesh; E_sn = {thinning:.4f} mm per gear"),
               Check.greater_than("fit.carrier_inside_ring", 0.5 * abs(qs.d_a_ring) - R_c, 0.0, "mm",
-                                 f"carrier radius {R_c:.2f} mm inside the ring's tip circle"),
-              Check.at_least("fit.pins_on_carrier", R_c - qs.a_w - pin_d / 2, printer.min_feature_mm, "mm",
-                             f"carrier rim outside the pins (two line widths at least)")]
+                                 f"carrier radius {R_c:.2f} mm inside the ring's tip circle")]
     fits = [Fit(f"planet_on_pin_{k + 1}", "carrier", "planet", (0.0, 0.0), "running", "each planet turns on its pin",
                 pin_at=tuple(float(v) for v in kin.planet_centre(0.0, k)), pin_z=(CARRIER_T_MM, CARRIER_T_MM + pin_len))
             for k in range(q.n_planets)]
+    fits.append(Rim("pins_on_carrier", "carrier", tuple(tuple(float(v) for v in kin.planet_centre(0.0, k))
+                                                         for k in range(q.n_planets)),
+                    disc_z=(0.0, CARRIER_T_MM), pin_z=(CARRIER_T_MM, CARRIER_T_MM + pin_len),
+                    what="the carrier's rim outside its pins"))
     fits += [Fit("shaft_in_floor", "shaft", "ring", (0.0, 0.0), "running", "the shaft turns in the ring's floor"),
              Fit("shaft_in_carrier", "shaft", "carrier", (0.0, 0.0), "running", "the carrier turns on the shaft"),
              Fit("sun_on_shaft", "shaft", "sun", (0.0, 0.0), "press", "the sun pressed on the shaft"),
