@@ -48,26 +48,42 @@ def solid_files_and_checks(folder: str, name: str, solid, expected_genus, volume
 
     B-rep validity (OCCT), STEP written and re-imported (one solid, same volume), tessellation
     within the chord tolerance, mesh validity (closed, oriented, one body, genus, no
-    self-intersection, volume against the B-rep)."""
+    self-intersection, volume against the B-rep).  The two halves, :func:`solid_step_and_checks` and
+    :func:`solid_mesh_and_checks`, are independent: the writer runs them in two workers at once."""
+    checks = solid_step_and_checks(folder, name, solid)
+    mesh_checks, mesh = solid_mesh_and_checks(folder, name, solid, expected_genus, volume, forked)
+    return checks + mesh_checks, mesh
+
+
+def solid_step_and_checks(folder: str, name: str, solid) -> list:
+    """The B-rep checks of one solid, its STEP file and the STEP round trip; returns the checks."""
     from ..checks.brep import brep_checks, step_roundtrip_check
-    from ..checks.mesh import mesh_checks
-    from ..export.mesh import tessellate, write_3mf, write_stl
-    from ..export.render import palette_colour, render_iso
     from ..export.step import write_step
     from ..solids.kernel import volume as kernel_volume
 
     folder = Path(folder)
-    # the exact-vs-triangulated volume cross-check is made below on the exported mesh itself
+    # the exact-vs-triangulated volume cross-check is made on the exported mesh itself
     v = kernel_volume(solid)  # of the solid as this worker has it (the B-rep check and the STEP round trip)
     checks = list(brep_checks(solid, name, cross_check_volume=False, volume_mm3=v))
     step = folder / f"{name}.step"
     write_step(solid, step, name)
     checks.append(step_roundtrip_check(solid, step, name, built_volume=v))
+    return checks
+
+
+def solid_mesh_and_checks(folder: str, name: str, solid, expected_genus, volume: float, forked: bool):
+    """STL and 3MF of one solid, the mesh checks and ``views/<name>.png``; returns (list of Check,
+    (vertices, faces) of the mesh)."""
+    from ..checks.mesh import mesh_checks
+    from ..export.mesh import tessellate, write_3mf, write_stl
+    from ..export.render import palette_colour, render_iso
+
+    folder = Path(folder)
     # OCCT's mesher threads only in a build allowed more than one process and not in a forked worker
     mesh = tessellate(solid, parallel=not forked and threads_ok())
     write_stl(mesh, folder / f"{name}.stl")
     write_3mf(mesh, folder / f"{name}.3mf", name)
-    checks += mesh_checks(mesh, name, expected_genus=expected_genus, brep_volume=volume)
+    checks = mesh_checks(mesh, name, expected_genus=expected_genus, brep_volume=volume)
     vertices, faces = np.asarray(mesh.vertices, np.float64), np.asarray(mesh.faces, np.int64)
     render_iso([(vertices, faces, None, palette_colour(0))], folder / VIEWS / f"{name}.png")
     return checks, (vertices, faces)
@@ -106,6 +122,18 @@ def assembly_model(folder: str, name: str, meshes: dict, components, from_below:
     write_glb_script(glb)
     items = [(*meshes[key], matrix, palette_colour(k)) for k, (_, key, matrix) in enumerate(components)]
     render_iso(items, folder / VIEWS / f"{name}.png", view=VIEW_DIR_BELOW if from_below else VIEW_DIR)
+
+
+class _Joined:
+    """The two jobs of one solid as one: result() is (the checks, STEP's first, the mesh's after; the mesh)."""
+
+    def __init__(self, step_job, mesh_job):
+        self.step_job, self.mesh_job = step_job, mesh_job
+
+    def result(self):
+        checks = self.step_job.result()
+        mesh_checks, mesh = self.mesh_job.result()
+        return checks + mesh_checks, mesh
 
 
 @dataclass
@@ -199,10 +227,23 @@ class OutputWriter:
         self.derived[f"{name}_volume_mm3"] = volume
         self.progress(f"{name}: STEP, STL, 3MF and their checks (B-rep, STEP round trip, mesh)")
         pool = self._solid_pool()
-        args = (str(self.folder), name, solid, expected_genus, volume, pool is not None)
-        self._solid_jobs.append((name, pool.submit(solid_files_and_checks, *args) if pool else
-                                 inline(solid_files_and_checks, *args)))
+        folder = str(self.folder)
+        if pool is None:  # in this process: the STEP and its checks, then the mesh (one copy of the solid)
+            self._solid_jobs.append((name, inline(solid_files_and_checks, folder, name, solid, expected_genus,
+                                                  volume, False)))
+            return rec
+        # two jobs, the longer (the mesh) first: the two workers share one large solid's work
+        mesh_job = pool.submit(solid_mesh_and_checks, folder, name, solid, expected_genus, volume, True)
+        step_job = pool.submit(solid_step_and_checks, folder, name, solid)
+        self._solid_jobs.append((name, _Joined(step_job, mesh_job)))
         return rec
+
+    def warm_up(self) -> None:
+        """While the design is computed in another process (:func:`propulsor.parts.pipeline.design_apart`):
+        import the modules the solids and the assembly need and start the solids' workers."""
+        import cadquery  # noqa: F401  (the solids' wrapper, the assembly STEP)
+
+        self._solid_pool()
 
     def _solid_pool(self):
         if self._pool is None:
