@@ -1,0 +1,101 @@
+"""A build's work side by side: the design computed in a forked process while the build imports and starts
+its workers (pipeline.design_apart), and each solid's files as two worker jobs whose checks come back as
+one solid's, in the order of the work done in one process."""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+
+import pytest
+
+from propulsor.errors import InputError
+from propulsor.parts.pipeline import Pipeline, design_of
+
+
+@dataclass
+class P:
+    a: float = 1.0
+
+
+class Writer:
+    """What a design reads of the writer (source), and the warm-up the build runs meanwhile."""
+
+    source = None
+
+    def __init__(self):
+        self.warmed = []
+
+    def warm_up(self):
+        self.warmed.append(os.getpid())
+
+
+def inner(p):
+    return {"pid": os.getpid(), "value": 2.0 * p.a}
+
+
+def outer(p, w):
+    return ("D", design_of(p, inner))
+
+
+def run(pipeline, params, w):
+    got = []
+    Pipeline(pipeline.design, (lambda d, w_, built: got.append(d),), design_apart=pipeline.design_apart)(params, w)
+    return got[0]
+
+
+def test_the_design_runs_in_another_process_while_the_build_warms_up_and_its_designs_join_the_cache(monkeypatch):
+    monkeypatch.setenv("PROPULSOR_JOBS", "2")
+    p, w = P(3.0), Writer()
+    d = run(Pipeline(outer, (), design_apart=True), p, w)
+    assert d[0] == "D" and d[1]["value"] == 6.0
+    assert d[1]["pid"] != os.getpid()  # computed in the forked process
+    assert w.warmed == [os.getpid()]  # the build warmed up meanwhile, here
+    # the inner design computed there is this process's cached design now: not computed again
+    assert design_of(p, inner) is d[1]
+
+
+def test_on_a_budget_of_one_process_the_design_runs_here_without_warm_up(monkeypatch):
+    monkeypatch.setenv("PROPULSOR_JOBS", "1")
+    w = Writer()
+    d = run(Pipeline(outer, (), design_apart=True), P(), w)
+    assert d[1]["pid"] == os.getpid() and w.warmed == []
+    # a part type that does not declare it keeps its design here too
+    monkeypatch.setenv("PROPULSOR_JOBS", "2")
+    d = run(Pipeline(outer, ()), P(), w)
+    assert d[1]["pid"] == os.getpid() and w.warmed == []
+
+
+def refuse(p, w):
+    raise InputError("driver_shift", 0.5, "no catalogue cutter generates this law")
+
+
+def test_a_design_refused_in_the_forked_process_is_refused_here_with_its_message(monkeypatch):
+    monkeypatch.setenv("PROPULSOR_JOBS", "2")
+    with pytest.raises(InputError, match="driver_shift = 0.5: no catalogue cutter generates this law"):
+        run(Pipeline(refuse, (), design_apart=True), P(), Writer())
+
+
+def test_a_solid_split_over_two_workers_gives_the_checks_and_mesh_of_one_process(tmp_path, monkeypatch):
+    import cadquery as cq
+    import numpy as np
+
+    from propulsor.parallel import as_if_sent
+    from propulsor.parts.writer import OutputWriter, solid_files_and_checks
+
+    solid = cq.Workplane("XY").box(30.0, 20.0, 8.0).faces(">Z").workplane().hole(6.0).val()
+    (tmp_path / "one" / "views").mkdir(parents=True)
+    alone, (V, F) = solid_files_and_checks(str(tmp_path / "one"), "part", as_if_sent(solid), 1, solid.Volume(), True)
+    monkeypatch.setenv("PROPULSOR_JOBS", "2")
+    w = OutputWriter(tmp_path / "two", "test", None)
+    try:
+        w.add_solid("part", solid, expected_genus=1)
+        assert w._pool is not None  # the work went to the workers
+        w.wait_solids()
+    finally:
+        w.close()
+    assert [(c.name, c.passed, c.value) for c in w.checks] == [(c.name, c.passed, c.value) for c in alone]
+    assert [c.name for c in w.checks][:2] == ["part: BRepCheck_Analyzer valid", "part: solids"]
+    assert np.array_equal(w._meshes["part"][0], V) and np.array_equal(w._meshes["part"][1], F)
+    for name in ("part.step", "part.stl", "part.3mf", "views/part.png"):
+        assert (tmp_path / "two" / name).read_bytes() == (tmp_path / "one" / name).read_bytes()
