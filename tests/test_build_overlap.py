@@ -99,3 +99,27 @@ def test_a_solid_split_over_two_workers_gives_the_checks_and_mesh_of_one_process
     assert np.array_equal(w._meshes["part"][0], V) and np.array_equal(w._meshes["part"][1], F)
     for name in ("part.step", "part.stl", "part.3mf", "views/part.png"):
         assert (tmp_path / "two" / name).read_bytes() == (tmp_path / "one" / name).read_bytes()
+
+
+def test_a_gear_fitted_in_two_processes_has_the_outline_fitted_in_one(monkeypatch):
+    import numpy as np
+
+    from propulsor.gears.noncircular import PitchCurves, centre_distance
+    from propulsor.gears.noncircular_teeth import ToothSpec
+    from propulsor.geometry import noncircular_outline as no
+    from propulsor.laws.ratio_laws import FourierLaw
+
+    monkeypatch.setenv("PROPULSOR_JOBS", "2")
+    law = FourierLaw(2, (0.0, 0.01), (-0.03,))
+    pc = PitchCurves(law, centre_distance(law, 2.0, 24))
+
+    def outline():
+        segs = no.generate_gear(pc, "driven", ToothSpec(m=2.0)).profile.loops[0].segments
+        return [(s.knots, s.poles) for s in segs]
+
+    monkeypatch.setattr(no, "SPLIT_FIT_TEETH", 10**6)
+    one = outline()
+    monkeypatch.setattr(no, "SPLIT_FIT_TEETH", 2)
+    two = outline()
+    assert len(one) == len(two) > 24
+    assert all(np.array_equal(a[0], b[0]) and np.array_equal(a[1], b[1]) for a, b in zip(one, two))
