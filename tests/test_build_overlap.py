@@ -76,12 +76,13 @@ def test_a_design_refused_in_the_forked_process_is_refused_here_with_its_message
         run(Pipeline(refuse, (), design_apart=True), P(), Writer())
 
 
-def test_a_solid_split_over_two_workers_gives_the_checks_and_mesh_of_one_process(tmp_path, monkeypatch):
+def test_a_solid_and_an_assembly_split_over_two_workers_give_the_checks_mesh_and_files_of_one_process(tmp_path, monkeypatch):
     import cadquery as cq
     import numpy as np
 
     from propulsor.parallel import as_if_sent
-    from propulsor.parts.writer import OutputWriter, solid_files_and_checks
+    from propulsor.export.glb import placement_matrix
+    from propulsor.parts.writer import OutputWriter, assembly_model, solid_files_and_checks
 
     solid = cq.Workplane("XY").box(30.0, 20.0, 8.0).faces(">Z").workplane().hole(6.0).val()
     (tmp_path / "one" / "views").mkdir(parents=True)
@@ -91,13 +92,17 @@ def test_a_solid_split_over_two_workers_gives_the_checks_and_mesh_of_one_process
     try:
         w.add_solid("part", solid, expected_genus=1)
         assert w._pool is not None  # the work went to the workers
+        w.add_assembly("asm", [("part", solid, (5.0, 0.0, 0.0), 0.3)])
         w.wait_solids()
+        w._write_models()  # the GLB and the picture as two jobs
     finally:
         w.close()
+    assembly_model(str(tmp_path / "one"), "asm", {"part": (V, F)},
+                   [("part", "part", placement_matrix(("part", solid, (5.0, 0.0, 0.0), 0.3)))])
     assert [(c.name, c.passed, c.value) for c in w.checks] == [(c.name, c.passed, c.value) for c in alone]
     assert [c.name for c in w.checks][:2] == ["part: BRepCheck_Analyzer valid", "part: solids"]
     assert np.array_equal(w._meshes["part"][0], V) and np.array_equal(w._meshes["part"][1], F)
-    for name in ("part.step", "part.stl", "part.3mf", "views/part.png"):
+    for name in ("part.step", "part.stl", "part.3mf", "views/part.png", "asm.glb", "asm.glb.js", "views/asm.png"):
         assert (tmp_path / "two" / name).read_bytes() == (tmp_path / "one" / name).read_bytes()
 
 

@@ -113,15 +113,26 @@ def assembly_model(folder: str, name: str, meshes: dict, components, from_below:
                    motions=()) -> None:
     """``<name>.glb`` (+ ``.glb.js``) and ``views/<name>.png`` of an assembly from its solids' meshes;
     components: (component name, solid key, 4×4 placement mm); from_below: the picture seen from below;
-    motions: the GLB's animations (:func:`export.glb.write_glb`)."""
+    motions: the GLB's animations (:func:`export.glb.write_glb`).  The two halves,
+    :func:`assembly_glb` and :func:`assembly_picture`, are independent (the writer runs them side by side)."""
+    assembly_glb(folder, name, meshes, components, motions)
+    assembly_picture(folder, name, meshes, components, from_below)
+
+
+def assembly_glb(folder: str, name: str, meshes: dict, components, motions=()) -> None:
+    """``<name>.glb`` and ``<name>.glb.js`` of an assembly (:func:`assembly_model`)."""
     from ..export.glb import write_glb, write_glb_script
+
+    glb = write_glb(Path(folder) / f"{name}.glb", name, meshes, components, motions)
+    write_glb_script(glb)
+
+
+def assembly_picture(folder: str, name: str, meshes: dict, components, from_below: bool = False) -> None:
+    """``views/<name>.png`` of an assembly (:func:`assembly_model`)."""
     from ..export.render import VIEW_DIR, VIEW_DIR_BELOW, palette_colour, render_iso
 
-    folder = Path(folder)
-    glb = write_glb(folder / f"{name}.glb", name, meshes, components, motions)
-    write_glb_script(glb)
     items = [(*meshes[key], matrix, palette_colour(k)) for k, (_, key, matrix) in enumerate(components)]
-    render_iso(items, folder / VIEWS / f"{name}.png", view=VIEW_DIR_BELOW if from_below else VIEW_DIR)
+    render_iso(items, Path(folder) / VIEWS / f"{name}.png", view=VIEW_DIR_BELOW if from_below else VIEW_DIR)
 
 
 class _Joined:
@@ -361,7 +372,11 @@ class OutputWriter:
         for name, placed, from_below in self._assemblies:
             meshes = {key: self._meshes[key] for key in dict.fromkeys(k for _, k, _ in placed)}
             args = (str(self.folder), name, meshes, placed, from_below, self._motion_placements(name, placed))
-            jobs.append(pool.submit(assembly_model, *args) if pool else inline(assembly_model, *args))
+            if pool is None:
+                jobs.append(inline(assembly_model, *args))
+            else:  # the GLB and the picture side by side
+                jobs.append(pool.submit(assembly_glb, *args[:4], args[5]))
+                jobs.append(pool.submit(assembly_picture, *args[:5]))
         for job in jobs:
             job.result()
 
