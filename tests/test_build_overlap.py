@@ -128,3 +128,19 @@ def test_a_gear_fitted_in_two_processes_has_the_outline_fitted_in_one(monkeypatc
     two = outline()
     assert len(one) == len(two) > 24
     assert all(np.array_equal(a[0], b[0]) and np.array_equal(a[1], b[1]) for a, b in zip(one, two))
+
+
+def test_cadquery_is_imported_without_vtk_and_its_vtk_functions_load_it_when_used():
+    import subprocess
+    import sys
+
+    code = (
+        "import sys\n"
+        "from propulsor.solids.cq_import import import_cadquery\n"
+        "cq = import_cadquery()\n"
+        "loaded = sorted(m for m in sys.modules if m.startswith('vtkmodules') or m.startswith('OCP.IVtk'))\n"
+        "s = cq.Workplane().box(10, 20, 30).val()\n"
+        "print(loaded, round(s.Volume(), 6), s.toVtkPolyData(0.1).GetNumberOfPoints() > 0)\n"
+    )
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert r.stdout.split() == ["[]", "6000.0", "True"]

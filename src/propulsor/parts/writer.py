@@ -252,8 +252,9 @@ class OutputWriter:
     def warm_up(self) -> None:
         """While the design is computed in another process (:func:`propulsor.parts.pipeline.design_apart`):
         import the modules the solids and the assembly need and start the solids' workers."""
-        import cadquery  # noqa: F401  (the solids' wrapper, the assembly STEP)
+        from ..solids.cq_import import import_cadquery
 
+        import_cadquery()  # the solids' wrapper, the assembly STEP (VTK loaded only if ever used)
         self._solid_pool()
 
     def _solid_pool(self):
