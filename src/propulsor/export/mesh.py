@@ -73,7 +73,8 @@ def _fixed_uuids(xml: bytes) -> bytes:
 
 
 def _deterministic_zip(data: bytes) -> bytes:
-    """Rewrite a zip with fixed entry times and attributes (same order), UUIDs fixed."""
+    """Rewrite a zip with fixed entry times and attributes (same order), UUIDs fixed, each entry deflated
+    here (trimesh's zip is written stored: its bodies are compressed once, not twice)."""
     out = io.BytesIO()
     with zipfile.ZipFile(io.BytesIO(data)) as zin, zipfile.ZipFile(out, "w") as zout:
         for info in zin.infolist():
@@ -99,9 +100,9 @@ def write_3mf(mesh: trimesh.Trimesh, path: str | Path, name: str = "") -> Path:
         scene = trimesh.Scene()
         scene.add_geometry(m, geom_name=name, node_name=name)
         scene.units = "millimeters"
-        data = trimesh.exchange.threemf.export_3MF(scene)
+        data = trimesh.exchange.threemf.export_3MF(scene, compression=zipfile.ZIP_STORED)
     else:
-        data = trimesh.exchange.threemf.export_3MF(m)
+        data = trimesh.exchange.threemf.export_3MF(m, compression=zipfile.ZIP_STORED)
     path.write_bytes(_deterministic_zip(data))
     return path
 
@@ -118,7 +119,7 @@ def write_3mf_objects(objects, path: str | Path) -> Path:
         m.units = "millimeters"
         scene.add_geometry(m, geom_name=name, node_name=name)
     scene.units = "millimeters"
-    path.write_bytes(_deterministic_zip(trimesh.exchange.threemf.export_3MF(scene)))
+    path.write_bytes(_deterministic_zip(trimesh.exchange.threemf.export_3MF(scene, compression=zipfile.ZIP_STORED)))
     return path
 
 

@@ -69,29 +69,7 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
     teeth_sides, tips, teeth = g.sides, g.tips, g.teeth
     # fit and chain (counter-clockwise on the body: increasing polar angle)
     order = list(range(z)) if role == "driven" else list(range(z - 1, -1, -1))
-    units = []
-    for k in order:
-        R, Lf = teeth_sides[k]
-        h, hr, hl = tips[k]
-        fil_r = fit_piece(R.fillet, R.fillet.u0, R.fillet.u1, tol)
-        fla_r = fit_piece(R.flank, R.flank.u0, hr[0], tol)
-        tip = fit_piece(lambda ph: curve.offset(ph, h), hr[1], hl[1], tol)
-        fla_l = fit_piece(Lf.flank, hl[0], Lf.flank.u0, tol)
-        fil_l = fit_piece(Lf.fillet, Lf.fillet.u1, Lf.fillet.u0, tol)
-        # a side whose flank reaches the root itself (ToothSide.fillet_is_flank) is one piece
-        if R.fillet_is_flank:
-            fil_r = fla_r = fit_piece(R.flank, R.fillet.u0, hr[0], tol)
-        if Lf.fillet_is_flank:
-            fla_l = fil_l = fit_piece(Lf.flank, hl[0], Lf.fillet.u0, tol)
-        pieces = [p_ for k_, p_ in enumerate([fil_r, fla_r, tip, fla_l, fil_l])
-                  if not (k_ == 0 and R.fillet_is_flank) and not (k_ == 4 and Lf.fillet_is_flank)]
-        # a shaper with its own x0 cuts the root with its tip circle (ToothSide.root_piece) and may stop
-        # short of the root equidistant (ToothSide.root_gap_mm): a straight bridge to the foot point
-        if R.root_piece is not None:
-            pieces.insert(0, fit_piece(R.root_piece, R.root_piece.u0, R.root_piece.u1, tol))
-        if Lf.root_piece is not None:
-            pieces.append(fit_piece(Lf.root_piece, Lf.root_piece.u1, Lf.root_piece.u0, tol))
-        units.append((pieces, R.phi_root, Lf.phi_root, R.root_gap_mm, Lf.root_gap_mm))
+    units = _fit_units(curve, teeth_sides, tips, order, tol)
     segs = []
     root_r = []
     hf = -spec.h_root
@@ -139,6 +117,70 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
     gaps = tuple(float(sd.root_gap_mm) for pair in teeth_sides for sd in pair if sd.root_gap_mm > OUTLINE_JOINT_TOL_MM)
     return GeneratedGear(role, prof, teeth, min(root_r), curve.point(ph), gaps)
 
+
+
+#: teeth from which a gear's pieces are fitted in two processes (this one and a forked one), half each
+SPLIT_FIT_TEETH = 40
+#: (curve, teeth sides, tips, tol) of the fits a forked process makes (read there: the fork copies it)
+_FITS = None
+
+
+def _fit_units(curve, teeth_sides, tips, order, tol) -> list:
+    """The fitted pieces of the teeth in ``order`` (one unit per tooth: pieces, root angles, root gaps).
+    From SPLIT_FIT_TEETH teeth on, the first half is fitted in a forked process while this one fits the
+    second (the same pieces: every tooth is fitted on its own); an error is the first tooth's, as in one
+    process."""
+    global _FITS
+    from ..parallel import start
+
+    if len(order) < SPLIT_FIT_TEETH:
+        return _fit_teeth(curve, teeth_sides, tips, order, tol)
+    half = len(order) // 2
+    _FITS = (curve, teeth_sides, tips, tol)
+    try:
+        job = start(_fit_forked, order[:half])  # the fork (or the inline fits) happens here
+    finally:
+        _FITS = None
+    try:
+        second, error = _fit_teeth(curve, teeth_sides, tips, order[half:], tol), None
+    except Exception as exc:  # noqa: BLE001 - raised below, after the first half's own error if any
+        second, error = None, exc
+    first = job.result()
+    if error is not None:
+        raise error
+    return first + second
+
+
+def _fit_forked(order) -> list:
+    curve, teeth_sides, tips, tol = _FITS
+    return _fit_teeth(curve, teeth_sides, tips, order, tol)
+
+
+def _fit_teeth(curve, teeth_sides, tips, order, tol) -> list:
+    units = []
+    for k in order:
+        R, Lf = teeth_sides[k]
+        h, hr, hl = tips[k]
+        fil_r = fit_piece(R.fillet, R.fillet.u0, R.fillet.u1, tol)
+        fla_r = fit_piece(R.flank, R.flank.u0, hr[0], tol)
+        tip = fit_piece(lambda ph: curve.offset(ph, h), hr[1], hl[1], tol)
+        fla_l = fit_piece(Lf.flank, hl[0], Lf.flank.u0, tol)
+        fil_l = fit_piece(Lf.fillet, Lf.fillet.u1, Lf.fillet.u0, tol)
+        # a side whose flank reaches the root itself (ToothSide.fillet_is_flank) is one piece
+        if R.fillet_is_flank:
+            fil_r = fla_r = fit_piece(R.flank, R.fillet.u0, hr[0], tol)
+        if Lf.fillet_is_flank:
+            fla_l = fil_l = fit_piece(Lf.flank, hl[0], Lf.fillet.u0, tol)
+        pieces = [p_ for k_, p_ in enumerate([fil_r, fla_r, tip, fla_l, fil_l])
+                  if not (k_ == 0 and R.fillet_is_flank) and not (k_ == 4 and Lf.fillet_is_flank)]
+        # a shaper with its own x0 cuts the root with its tip circle (ToothSide.root_piece) and may stop
+        # short of the root equidistant (ToothSide.root_gap_mm): a straight bridge to the foot point
+        if R.root_piece is not None:
+            pieces.insert(0, fit_piece(R.root_piece, R.root_piece.u0, R.root_piece.u1, tol))
+        if Lf.root_piece is not None:
+            pieces.append(fit_piece(Lf.root_piece, Lf.root_piece.u1, Lf.root_piece.u0, tol))
+        units.append((pieces, R.phi_root, Lf.phi_root, R.root_gap_mm, Lf.root_gap_mm))
+    return units
 
 
 def _trim_pairs(tail: list, head: list, tol: float):

@@ -35,21 +35,61 @@ __all__ = ["design_of", "Pipeline"]
 
 #: id(parameter object) -> [(key, design)], dropped with the parameter object
 _DESIGNS: dict[int, list] = {}
+#: (design callable, parameters, writer) of the design a forked process computes (read there: the fork
+#: copies it; nothing is pickled on the way in)
+_APART = None
 
 
 def design_of(params, design_fn: Callable, *args):
     """``design_fn(params, *args)``, computed once per parameter values (and args) for as long as the
     parameter object lives; recomputed when a field of the parameters has changed since."""
     key = (design_fn.__module__, design_fn.__qualname__, params_to_dict(params), args)
-    if id(params) not in _DESIGNS:
-        _DESIGNS[id(params)] = []
-        weakref.finalize(params, _DESIGNS.pop, id(params), None)
-    store = _DESIGNS[id(params)]
+    store = _store_of(params)
     for k, d in store:
         if k == key:
             return d
     d = design_fn(params, *args)
     store.append((copy.deepcopy(key), d))
+    return d
+
+
+def _store_of(params) -> list:
+    if id(params) not in _DESIGNS:
+        _DESIGNS[id(params)] = []
+        weakref.finalize(params, _DESIGNS.pop, id(params), None)
+    return _DESIGNS[id(params)]
+
+
+def _design_in_child():
+    """In the forked process: the design, and every design computed on the way (:func:`design_of`)."""
+    design, params, w = _APART
+    d = design(params, w)
+    return d, _DESIGNS.get(id(params), [])
+
+
+def design_apart(design: Callable, params, w):
+    """``design(params, w)`` computed in a forked process while this one calls ``w.warm_up()`` (imports
+    the output steps' modules, starts the solids' workers); the designs it computed on the way join this
+    process's cache (:func:`design_of`).  In this process, without warm-up, where no worker may be
+    forked (a budget of one process, slots shared by several builds, no fork)."""
+    global _APART
+    from ..parallel import fork_pool, slots_shared
+
+    pool = None if slots_shared() or not callable(getattr(w, "warm_up", None)) else fork_pool(1)
+    if pool is None:
+        return design(params, w)
+    _APART = (design, params, w)
+    try:
+        job = pool.submit(_design_in_child)  # the fork happens here
+    finally:
+        _APART = None
+    job.add_done_callback(lambda _f: pool.give_back())
+    pool.shutdown(wait=False)
+    w.warm_up()
+    d, computed = job.result()
+    store = _store_of(params)
+    known = [k for k, _ in store]
+    store.extend((k, v) for k, v in computed if k not in known)
     return d
 
 
@@ -63,6 +103,9 @@ class Pipeline:
     design: Callable  # design(params, writer) -> Design (the writer gives the part file's folder)
     steps: Sequence[Callable]  # step(design, writer, built) -> None
     proof_steps: Sequence[Callable] | None = None
+    #: the build's design may run in a forked process (:func:`design_apart`): it only reads the writer
+    #: and its result pickles exactly
+    design_apart: bool = False
 
     #: a build is a callable ``build(params, writer)``; named so that ``inspect`` and ``help`` can show it
     __name__ = "build"
@@ -74,7 +117,7 @@ class Pipeline:
                 raise ValueError(f"proof step {getattr(stray[0], '__name__', stray[0])!r} is not a step of the build")
 
     def __call__(self, params, w) -> None:
-        self._run(params, w, self.steps)
+        self._run(params, w, self.steps, apart=self.design_apart)
 
     @property
     def proves_alone(self) -> bool:
@@ -88,8 +131,8 @@ class Pipeline:
             raise ValueError("this part type declares no proof steps: its proof is the whole build")
         self._run(params, w, [s for s in self.steps if any(s is t for t in self.proof_steps)])
 
-    def _run(self, params, w, steps) -> None:
-        d = self.design(params, w)
+    def _run(self, params, w, steps, apart: bool = False) -> None:
+        d = design_apart(self.design, params, w) if apart else self.design(params, w)
         built: dict = {}
         for step in steps:
             step(d, w, built)

@@ -48,26 +48,42 @@ def solid_files_and_checks(folder: str, name: str, solid, expected_genus, volume
 
     B-rep validity (OCCT), STEP written and re-imported (one solid, same volume), tessellation
     within the chord tolerance, mesh validity (closed, oriented, one body, genus, no
-    self-intersection, volume against the B-rep)."""
+    self-intersection, volume against the B-rep).  The two halves, :func:`solid_step_and_checks` and
+    :func:`solid_mesh_and_checks`, are independent: the writer runs them in two workers at once."""
+    checks = solid_step_and_checks(folder, name, solid)
+    mesh_checks, mesh = solid_mesh_and_checks(folder, name, solid, expected_genus, volume, forked)
+    return checks + mesh_checks, mesh
+
+
+def solid_step_and_checks(folder: str, name: str, solid) -> list:
+    """The B-rep checks of one solid, its STEP file and the STEP round trip; returns the checks."""
     from ..checks.brep import brep_checks, step_roundtrip_check
-    from ..checks.mesh import mesh_checks
-    from ..export.mesh import tessellate, write_3mf, write_stl
-    from ..export.render import palette_colour, render_iso
     from ..export.step import write_step
     from ..solids.kernel import volume as kernel_volume
 
     folder = Path(folder)
-    # the exact-vs-triangulated volume cross-check is made below on the exported mesh itself
+    # the exact-vs-triangulated volume cross-check is made on the exported mesh itself
     v = kernel_volume(solid)  # of the solid as this worker has it (the B-rep check and the STEP round trip)
     checks = list(brep_checks(solid, name, cross_check_volume=False, volume_mm3=v))
     step = folder / f"{name}.step"
     write_step(solid, step, name)
     checks.append(step_roundtrip_check(solid, step, name, built_volume=v))
+    return checks
+
+
+def solid_mesh_and_checks(folder: str, name: str, solid, expected_genus, volume: float, forked: bool):
+    """STL and 3MF of one solid, the mesh checks and ``views/<name>.png``; returns (list of Check,
+    (vertices, faces) of the mesh)."""
+    from ..checks.mesh import mesh_checks
+    from ..export.mesh import tessellate, write_3mf, write_stl
+    from ..export.render import palette_colour, render_iso
+
+    folder = Path(folder)
     # OCCT's mesher threads only in a build allowed more than one process and not in a forked worker
     mesh = tessellate(solid, parallel=not forked and threads_ok())
     write_stl(mesh, folder / f"{name}.stl")
     write_3mf(mesh, folder / f"{name}.3mf", name)
-    checks += mesh_checks(mesh, name, expected_genus=expected_genus, brep_volume=volume)
+    checks = mesh_checks(mesh, name, expected_genus=expected_genus, brep_volume=volume)
     vertices, faces = np.asarray(mesh.vertices, np.float64), np.asarray(mesh.faces, np.int64)
     render_iso([(vertices, faces, None, palette_colour(0))], folder / VIEWS / f"{name}.png")
     return checks, (vertices, faces)
@@ -97,15 +113,38 @@ def assembly_model(folder: str, name: str, meshes: dict, components, from_below:
                    motions=()) -> None:
     """``<name>.glb`` (+ ``.glb.js``) and ``views/<name>.png`` of an assembly from its solids' meshes;
     components: (component name, solid key, 4×4 placement mm); from_below: the picture seen from below;
-    motions: the GLB's animations (:func:`export.glb.write_glb`)."""
+    motions: the GLB's animations (:func:`export.glb.write_glb`).  The two halves,
+    :func:`assembly_glb` and :func:`assembly_picture`, are independent (the writer runs them side by side)."""
+    assembly_glb(folder, name, meshes, components, motions)
+    assembly_picture(folder, name, meshes, components, from_below)
+
+
+def assembly_glb(folder: str, name: str, meshes: dict, components, motions=()) -> None:
+    """``<name>.glb`` and ``<name>.glb.js`` of an assembly (:func:`assembly_model`)."""
     from ..export.glb import write_glb, write_glb_script
+
+    glb = write_glb(Path(folder) / f"{name}.glb", name, meshes, components, motions)
+    write_glb_script(glb)
+
+
+def assembly_picture(folder: str, name: str, meshes: dict, components, from_below: bool = False) -> None:
+    """``views/<name>.png`` of an assembly (:func:`assembly_model`)."""
     from ..export.render import VIEW_DIR, VIEW_DIR_BELOW, palette_colour, render_iso
 
-    folder = Path(folder)
-    glb = write_glb(folder / f"{name}.glb", name, meshes, components, motions)
-    write_glb_script(glb)
     items = [(*meshes[key], matrix, palette_colour(k)) for k, (_, key, matrix) in enumerate(components)]
-    render_iso(items, folder / VIEWS / f"{name}.png", view=VIEW_DIR_BELOW if from_below else VIEW_DIR)
+    render_iso(items, Path(folder) / VIEWS / f"{name}.png", view=VIEW_DIR_BELOW if from_below else VIEW_DIR)
+
+
+class _Joined:
+    """The two jobs of one solid as one: result() is (the checks, STEP's first, the mesh's after; the mesh)."""
+
+    def __init__(self, step_job, mesh_job):
+        self.step_job, self.mesh_job = step_job, mesh_job
+
+    def result(self):
+        checks = self.step_job.result()
+        mesh_checks, mesh = self.mesh_job.result()
+        return checks + mesh_checks, mesh
 
 
 @dataclass
@@ -199,10 +238,24 @@ class OutputWriter:
         self.derived[f"{name}_volume_mm3"] = volume
         self.progress(f"{name}: STEP, STL, 3MF and their checks (B-rep, STEP round trip, mesh)")
         pool = self._solid_pool()
-        args = (str(self.folder), name, solid, expected_genus, volume, pool is not None)
-        self._solid_jobs.append((name, pool.submit(solid_files_and_checks, *args) if pool else
-                                 inline(solid_files_and_checks, *args)))
+        folder = str(self.folder)
+        if pool is None:  # in this process: the STEP and its checks, then the mesh (one copy of the solid)
+            self._solid_jobs.append((name, inline(solid_files_and_checks, folder, name, solid, expected_genus,
+                                                  volume, False)))
+            return rec
+        # two jobs, the longer (the mesh) first: the two workers share one large solid's work
+        mesh_job = pool.submit(solid_mesh_and_checks, folder, name, solid, expected_genus, volume, True)
+        step_job = pool.submit(solid_step_and_checks, folder, name, solid)
+        self._solid_jobs.append((name, _Joined(step_job, mesh_job)))
         return rec
+
+    def warm_up(self) -> None:
+        """While the design is computed in another process (:func:`propulsor.parts.pipeline.design_apart`):
+        import the modules the solids and the assembly need and start the solids' workers."""
+        from ..solids.cq_import import import_cadquery
+
+        import_cadquery()  # the solids' wrapper, the assembly STEP (VTK loaded only if ever used)
+        self._solid_pool()
 
     def _solid_pool(self):
         if self._pool is None:
@@ -320,7 +373,11 @@ class OutputWriter:
         for name, placed, from_below in self._assemblies:
             meshes = {key: self._meshes[key] for key in dict.fromkeys(k for _, k, _ in placed)}
             args = (str(self.folder), name, meshes, placed, from_below, self._motion_placements(name, placed))
-            jobs.append(pool.submit(assembly_model, *args) if pool else inline(assembly_model, *args))
+            if pool is None:
+                jobs.append(inline(assembly_model, *args))
+            else:  # the GLB and the picture side by side
+                jobs.append(pool.submit(assembly_glb, *args[:4], args[5]))
+                jobs.append(pool.submit(assembly_picture, *args[:5]))
         for job in jobs:
             job.result()
 

@@ -10,7 +10,6 @@ import numpy as np
 from ... import policy
 from ...check import Check
 from ...errors import require, require_positive
-from ...solids.kernel import manifold
 from .distance import check_record
 
 __all__ = ['box_corners', 'box_of', 'box_gap', 'Sweep3DResult', 'sweep_solids_3d']
@@ -74,6 +73,8 @@ def sweep_solids_3d(mesh_a, poses_a, mesh_b, poses_b, *, search_length: float | 
     overlaps nor comes within search_length: it is recorded as volume 0 and gap
     search_length without a boolean.
     """
+    from ...solids.kernel import manifold  # here: the kernel module loads OCP, which the 2D proofs never need
+
     A, B = manifold(mesh_a, "mesh_a"), manifold(mesh_b, "mesh_b")
     b_fixed = poses_b is None
     if b_fixed:

@@ -38,9 +38,10 @@ def start_solids(p: NoncircularPairParams, w, profiles):
 
     w.progress("solids")
     prof_drv, prof_dvn = profiles
-    s_drv = extrude_profile(prof_drv, p.face_width_mm)
+    # the driven wheel (the larger work) goes to the workers before the driver is extruded
     s_dvn = extrude_profile(prof_dvn, p.face_width_mm)
     w.add_solid("driven", s_dvn, expected_genus=1 if p.driven_bore_mm > 0 else 0)
+    s_drv = extrude_profile(prof_drv, p.face_width_mm)
     w.add_solid("driver", s_drv, expected_genus=1 if p.driver_bore_mm > 0 else 0)
     return s_drv, s_dvn
 
@@ -515,4 +516,4 @@ def write_outputs(p: NoncircularPairParams, w, d: Design, profiles, pr, other=No
 PROOF_STEPS = (proofs, checks_and_derived)
 
 build = Pipeline(lambda p, w: design_of(p, pair_design, getattr(w, "source", None)), (solids, proofs) + OUTPUT_STEPS,
-                 proof_steps=PROOF_STEPS)
+                 proof_steps=PROOF_STEPS, design_apart=True)

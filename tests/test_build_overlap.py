@@ -1,0 +1,147 @@
+"""A build's work side by side: the design computed in a forked process while the build imports and starts
+its workers (pipeline.design_apart); each solid's files, and an assembly's GLB and picture, as two worker
+jobs giving the checks and files of the work done in one process; a large gear's pieces fitted in two
+processes; cadquery imported without VTK."""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+
+import pytest
+
+from propulsor.errors import InputError
+from propulsor.parts.pipeline import Pipeline, design_of
+
+
+@dataclass
+class P:
+    a: float = 1.0
+
+
+class Writer:
+    """What a design reads of the writer (source), and the warm-up the build runs meanwhile."""
+
+    source = None
+
+    def __init__(self):
+        self.warmed = []
+
+    def warm_up(self):
+        self.warmed.append(os.getpid())
+
+
+def inner(p):
+    return {"pid": os.getpid(), "value": 2.0 * p.a}
+
+
+def outer(p, w):
+    return ("D", design_of(p, inner))
+
+
+def run(pipeline, params, w):
+    got = []
+    Pipeline(pipeline.design, (lambda d, w_, built: got.append(d),), design_apart=pipeline.design_apart)(params, w)
+    return got[0]
+
+
+def test_the_design_runs_in_another_process_while_the_build_warms_up_and_its_designs_join_the_cache(monkeypatch):
+    monkeypatch.setenv("PROPULSOR_JOBS", "2")
+    p, w = P(3.0), Writer()
+    d = run(Pipeline(outer, (), design_apart=True), p, w)
+    assert d[0] == "D" and d[1]["value"] == 6.0
+    assert d[1]["pid"] != os.getpid()  # computed in the forked process
+    assert w.warmed == [os.getpid()]  # the build warmed up meanwhile, here
+    # the inner design computed there is this process's cached design now: not computed again
+    assert design_of(p, inner) is d[1]
+
+
+def test_on_a_budget_of_one_process_the_design_runs_here_without_warm_up(monkeypatch):
+    monkeypatch.setenv("PROPULSOR_JOBS", "1")
+    w = Writer()
+    d = run(Pipeline(outer, (), design_apart=True), P(), w)
+    assert d[1]["pid"] == os.getpid() and w.warmed == []
+    # a part type that does not declare it keeps its design here too
+    monkeypatch.setenv("PROPULSOR_JOBS", "2")
+    d = run(Pipeline(outer, ()), P(), w)
+    assert d[1]["pid"] == os.getpid() and w.warmed == []
+
+
+def refuse(p, w):
+    raise InputError("driver_shift", 0.5, "no catalogue cutter generates this law")
+
+
+def test_a_design_refused_in_the_forked_process_is_refused_here_with_its_message(monkeypatch):
+    monkeypatch.setenv("PROPULSOR_JOBS", "2")
+    with pytest.raises(InputError, match="driver_shift = 0.5: no catalogue cutter generates this law"):
+        run(Pipeline(refuse, (), design_apart=True), P(), Writer())
+
+
+def test_a_solid_and_an_assembly_split_over_two_workers_give_the_checks_mesh_and_files_of_one_process(tmp_path, monkeypatch):
+    import cadquery as cq
+    import numpy as np
+
+    from propulsor.parallel import as_if_sent
+    from propulsor.export.glb import placement_matrix
+    from propulsor.parts.writer import OutputWriter, assembly_model, solid_files_and_checks
+
+    solid = cq.Workplane("XY").box(30.0, 20.0, 8.0).faces(">Z").workplane().hole(6.0).val()
+    (tmp_path / "one" / "views").mkdir(parents=True)
+    alone, (V, F) = solid_files_and_checks(str(tmp_path / "one"), "part", as_if_sent(solid), 1, solid.Volume(), True)
+    monkeypatch.setenv("PROPULSOR_JOBS", "2")
+    w = OutputWriter(tmp_path / "two", "test", None)
+    try:
+        w.add_solid("part", solid, expected_genus=1)
+        assert w._pool is not None  # the work went to the workers
+        w.add_assembly("asm", [("part", solid, (5.0, 0.0, 0.0), 0.3)])
+        w.wait_solids()
+        w._write_models()  # the GLB and the picture as two jobs
+    finally:
+        w.close()
+    assembly_model(str(tmp_path / "one"), "asm", {"part": (V, F)},
+                   [("part", "part", placement_matrix(("part", solid, (5.0, 0.0, 0.0), 0.3)))])
+    assert [(c.name, c.passed, c.value) for c in w.checks] == [(c.name, c.passed, c.value) for c in alone]
+    assert [c.name for c in w.checks][:2] == ["part: BRepCheck_Analyzer valid", "part: solids"]
+    assert np.array_equal(w._meshes["part"][0], V) and np.array_equal(w._meshes["part"][1], F)
+    for name in ("part.step", "part.stl", "part.3mf", "views/part.png", "asm.glb", "asm.glb.js", "views/asm.png"):
+        assert (tmp_path / "two" / name).read_bytes() == (tmp_path / "one" / name).read_bytes()
+
+
+def test_a_gear_fitted_in_two_processes_has_the_outline_fitted_in_one(monkeypatch):
+    import numpy as np
+
+    from propulsor.gears.noncircular import PitchCurves, centre_distance
+    from propulsor.gears.noncircular_teeth import ToothSpec
+    from propulsor.geometry import noncircular_outline as no
+    from propulsor.laws.ratio_laws import FourierLaw
+
+    monkeypatch.setenv("PROPULSOR_JOBS", "2")
+    law = FourierLaw(2, (0.0, 0.01), (-0.03,))
+    pc = PitchCurves(law, centre_distance(law, 2.0, 24))
+
+    def outline():
+        segs = no.generate_gear(pc, "driven", ToothSpec(m=2.0)).profile.loops[0].segments
+        return [(s.knots, s.poles) for s in segs]
+
+    monkeypatch.setattr(no, "SPLIT_FIT_TEETH", 10**6)
+    one = outline()
+    monkeypatch.setattr(no, "SPLIT_FIT_TEETH", 2)
+    two = outline()
+    assert len(one) == len(two) > 24
+    assert all(np.array_equal(a[0], b[0]) and np.array_equal(a[1], b[1]) for a, b in zip(one, two))
+
+
+def test_cadquery_is_imported_without_vtk_and_its_vtk_functions_load_it_when_used():
+    import subprocess
+    import sys
+
+    code = (
+        "import sys\n"
+        "from propulsor.solids.cq_import import import_cadquery\n"
+        "cq = import_cadquery()\n"
+        "loaded = sorted(m for m in sys.modules if m.startswith('vtkmodules') or m.startswith('OCP.IVtk'))\n"
+        "s = cq.Workplane().box(10, 20, 30).val()\n"
+        "print(loaded, round(s.Volume(), 6), s.toVtkPolyData(0.1).GetNumberOfPoints() > 0)\n"
+    )
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert r.stdout.split() == ["[]", "6000.0", "True"]
