@@ -28,13 +28,15 @@ What is measured, and how (each the same for the three runs):
   process's max RSS (and that of any process it forked), read on the worker after the study.
 The rows of the three runs are checked equal (the objectives, to the last digit).
 
-Measured here with ``bench/bench_study.py 100`` on an idle machine (load 1.4 before, 2.3 after; the proof
-depth of design + proof steps, no solid): inline 750.5 s (7.50 s a variant); 1 worker 838.5 s (7.16 per min),
-2 workers 425.7 s (14.09 per min): ratio 1.97; overhead against inline +11.7 % (target 5 %: not met), while the
-1-worker wall is only +0.1 % over the evaluations' own time on the worker: the engine adds nothing measurable,
-the same evaluation runs slower inside a Dask worker (8.37 s against 7.50 s a variant; with the worker's
-statistical profiler off, 6 variants: +9.3 %, so not the profiler); peak memory 627-658 MB per worker
-(+61 MB forked); 0 rows differing from inline.
+Measured here with ``bench/bench_study.py 100`` on an idle machine (load 1.3 before, 2.2 after; the proof
+depth of design + proof steps, no solid): inline 749.3 s (7.49 s a variant); 1 worker 780.8 s (7.68 per min),
+2 workers 397.9 s (15.08 per min): ratio 1.96; overhead against inline +4.2 % (target 5 %), the 1-worker wall
++0.2 % over the evaluations' own time on the worker; peak memory 315 MB on the 1-worker cluster, 353 and
+353 MB per worker on the 2-worker one (+61 MB forked); 0 rows differing from inline.  Before the engine's
+worker settings (``study/engine.py`` WORKER_CONFIG: no MALLOC_TRIM_THRESHOLD_ from Dask's nanny, no statistical
+profiler, health polled once a second) the same run gave +11.7 % (inline 750.5 s, 1 worker 838.5 s) and
+627-658 MB a worker: with the nanny's trim threshold set, glibc's dynamic mmap threshold is off and every
+array over 128 KiB is mapped afresh.
 """
 
 from __future__ import annotations
