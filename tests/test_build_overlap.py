@@ -114,13 +114,14 @@ def test_a_gear_fitted_in_two_processes_has_the_outline_fitted_in_one(monkeypatc
     from propulsor.gears.noncircular_teeth import ToothSpec
     from propulsor.geometry import noncircular_outline as no
     from propulsor.laws.ratio_laws import FourierLaw
+    from propulsor.parallel import start
 
     monkeypatch.setenv("PROPULSOR_JOBS", "2")
     law = FourierLaw(2, (0.0, 0.01), (-0.03,))
     pc = PitchCurves(law, centre_distance(law, 2.0, 24))
 
     def outline():
-        segs = no.generate_gear(pc, "driven", ToothSpec(m=2.0)).profile.loops[0].segments
+        segs = no.generate_gear(pc, "driven", ToothSpec(m=2.0), start=start).profile.loops[0].segments
         return [(s.knots, s.poles) for s in segs]
 
     monkeypatch.setattr(no, "SPLIT_FIT_TEETH", 10**6)

@@ -61,15 +61,18 @@ class GeneratedGear:
 
 
 def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame | None = None,
-                  tol: float = SPLINE_FIT_TOL_MM) -> GeneratedGear:
+                  tol: float = SPLINE_FIT_TOL_MM, start=None) -> GeneratedGear:
     """Closed outline of the generated teeth of one gear of the pair (``generate_teeth``), fitted
-    and chained counter-clockwise on the body (increasing polar angle)."""
+    and chained counter-clockwise on the body (increasing polar angle).  `start(fn, *args)`, when given,
+    runs ``fn(*args)`` beside this process and returns an object whose ``result()`` gives its value (the
+    caller's process pool: this layer forks nothing itself): half the teeth of a large gear are fitted
+    that way."""
     g = generate_teeth(pc, role, spec, frame)
     curve, z, n, m = g.curve, g.z, g.n, spec.m
     teeth_sides, tips, teeth = g.sides, g.tips, g.teeth
     # fit and chain (counter-clockwise on the body: increasing polar angle)
     order = list(range(z)) if role == "driven" else list(range(z - 1, -1, -1))
-    units = _fit_units(curve, teeth_sides, tips, order, tol)
+    units = _fit_units(curve, teeth_sides, tips, order, tol, start)
     segs = []
     root_r = []
     hf = -spec.h_root
@@ -125,15 +128,14 @@ SPLIT_FIT_TEETH = 40
 _FITS = None
 
 
-def _fit_units(curve, teeth_sides, tips, order, tol) -> list:
+def _fit_units(curve, teeth_sides, tips, order, tol, start=None) -> list:
     """The fitted pieces of the teeth in ``order`` (one unit per tooth: pieces, root angles, root gaps).
-    From SPLIT_FIT_TEETH teeth on, the first half is fitted in a forked process while this one fits the
-    second (the same pieces: every tooth is fitted on its own); an error is the first tooth's, as in one
-    process."""
+    From SPLIT_FIT_TEETH teeth on, with a `start`, the first half is fitted by ``start`` (a forked process)
+    while this one fits the second (the same pieces: every tooth is fitted on its own); an error is the
+    first tooth's, as in one process."""
     global _FITS
-    from ..parallel import start
 
-    if len(order) < SPLIT_FIT_TEETH:
+    if start is None or len(order) < SPLIT_FIT_TEETH:
         return _fit_teeth(curve, teeth_sides, tips, order, tol)
     half = len(order) // 2
     _FITS = (curve, teeth_sides, tips, tol)

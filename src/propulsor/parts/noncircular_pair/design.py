@@ -326,9 +326,11 @@ def _generate_pair(pc, spec_driver, spec_driven, frame):
     driven wheel (the two are independent; seed 000/002 teeth by the rack/shaper envelope)."""
     from ...geometry.noncircular_outline import generate_gear
     from ...parallel import start
+    from ...policy import SPLINE_FIT_TOL_MM
 
-    job = start(generate_gear, pc, "driver", spec_driver, frame)
-    dvn = generate_gear(pc, "driven", spec_driven, frame)
+    # each may fit half its teeth in one more forked process (where the budget has a free slot)
+    job = start(generate_gear, pc, "driver", spec_driver, frame, SPLINE_FIT_TOL_MM, start)
+    dvn = generate_gear(pc, "driven", spec_driven, frame, SPLINE_FIT_TOL_MM, start)
     return job.result(), dvn
 
 
