@@ -15,8 +15,9 @@ the process and its children (forked workers included).  ``ncg_elliptical.toml``
 target: a whole build <= 10 s).
 
 Run it on an idle machine: the numbers are wall times (the ratio's target: ours <= 0.3 x ncgears').
-Measured here (2 cores, idle, two runs one after the other): ncgears 35.04 / 35.25 s wall (37.60 / 37.67 CPU s);
-ours 10.17 / 9.71 s wall (17.20 / 16.96 CPU s): ratio 0.290 / 0.275; ``ncg_elliptical.toml`` 7.61 / 7.52 s wall.
+Measured here (2 cores, idle; three runs): ncgears 35.04 / 35.25 / 34.36 s wall (37.60 / 37.67 / 36.27 CPU s);
+ours 10.17 / 9.71 / 10.18 s wall (17.20 / 16.96 / 17.30 CPU s): ratio 0.290 / 0.275 / 0.296 (the third began at
+load 2.0, just after a test run); ``ncg_elliptical.toml`` 7.61 / 7.52 / 7.50 s wall.
 """
 
 from __future__ import annotations
