@@ -372,12 +372,12 @@ class OutputWriter:
         jobs = []
         for name, placed, from_below in self._assemblies:
             meshes = {key: self._meshes[key] for key in dict.fromkeys(k for _, k, _ in placed)}
-            args = (str(self.folder), name, meshes, placed, from_below, self._motion_placements(name, placed))
+            folder, motions = str(self.folder), self._motion_placements(name, placed)
             if pool is None:
-                jobs.append(inline(assembly_model, *args))
+                jobs.append(inline(assembly_model, folder, name, meshes, placed, from_below, motions))
             else:  # the GLB and the picture side by side
-                jobs.append(pool.submit(assembly_glb, *args[:4], args[5]))
-                jobs.append(pool.submit(assembly_picture, *args[:5]))
+                jobs.append(pool.submit(assembly_glb, folder, name, meshes, placed, motions))
+                jobs.append(pool.submit(assembly_picture, folder, name, meshes, placed, from_below))
         for job in jobs:
             job.result()
 
