@@ -96,8 +96,9 @@ def kit(p: FinalDriveParams, printer: Printer, scale: float | None = None, sourc
     kin = PlanetaryKinematics(q.z_sun, q.z_planet, q.z_ring, q.n_planets, qs.a_w)
     R_c = min(qs.a_w + pin_d / 2 + PIN_WALL_MM, 0.5 * abs(qs.d_a_ring) - 1.0)
     pin_len = b_p - 1.0
-    pins = [cylinder(pin_d / 2, CARRIER_T_MM - 0.01, CARRIER_T_MM + pin_len,
-                     center=tuple(float(v) for v in kin.planet_centre(0.0, k))) for k in range(q.n_planets)]
+    #: the planets' pins on the carrier, as drawn (x, y) mm
+    pins_at = tuple(tuple(float(v) for v in kin.planet_centre(0.0, k)) for k in range(q.n_planets))
+    pins = [cylinder(pin_d / 2, CARRIER_T_MM - 0.01, CARRIER_T_MM + pin_len, center=c) for c in pins_at]
     disc = extrude_profile(Profile(circle_loop(R_c), [circle_loop(run_hole / 2, ccw=False)], "carrier"), CARRIER_T_MM)
     carrier = fuse(disc, *pins, name="carrier with pins")
     # shaft through floor, sun, carrier; crank pressed on its top
@@ -134,12 +135,10 @@ def kit(p: FinalDriveParams, printer: Printer, scale: float | None = None, sourc
               Check.greater_than("fit.carrier_inside_ring", 0.5 * abs(qs.d_a_ring) - R_c, 0.0, "mm",
                                  f"carrier radius {R_c:.2f} mm inside the ring's tip circle")]
     fits = [Fit(f"planet_on_pin_{k + 1}", "carrier", "planet", (0.0, 0.0), "running", "each planet turns on its pin",
-                pin_at=tuple(float(v) for v in kin.planet_centre(0.0, k)), pin_z=(CARRIER_T_MM, CARRIER_T_MM + pin_len))
+                pin_at=pins_at[k], pin_z=(CARRIER_T_MM, CARRIER_T_MM + pin_len))
             for k in range(q.n_planets)]
-    fits.append(Rim("pins_on_carrier", "carrier", tuple(tuple(float(v) for v in kin.planet_centre(0.0, k))
-                                                         for k in range(q.n_planets)),
-                    disc_z=(0.0, CARRIER_T_MM), pin_z=(CARRIER_T_MM, CARRIER_T_MM + pin_len),
-                    what="the carrier's rim outside its pins"))
+    fits.append(Rim("pins_on_carrier", "carrier", pins_at, disc_z=(0.0, CARRIER_T_MM),
+                    pin_z=(CARRIER_T_MM, CARRIER_T_MM + pin_len), what="the carrier's rim outside its pins"))
     fits += [Fit("shaft_in_floor", "shaft", "ring", (0.0, 0.0), "running", "the shaft turns in the ring's floor"),
              Fit("shaft_in_carrier", "shaft", "carrier", (0.0, 0.0), "running", "the carrier turns on the shaft"),
              Fit("sun_on_shaft", "shaft", "sun", (0.0, 0.0), "press", "the sun pressed on the shaft"),
