@@ -264,11 +264,36 @@ DXF_POINTS_MAX = 4_000_000
 #: whole output/ of the 13 parts needs ~1.1 GB resident
 CHECK_MEMORY_CEILING = 2048 * MIB
 
-# --- non-circular pair: as-built speed (parts/noncircular_pair/as_built.py) ----------------------------
-#: the loaded contact law is split where its slope changes by more than this inside an interval (a change of
-#: 0.2 % of the hub speed) ...
-AS_BUILT_SLOPE_TOL = 2e-3
-#: ... down to intervals of this width (rad of the driven wheel; 1e-5 rad ~ 1 micrometre on its pitch curve)
-AS_BUILT_STEP_MIN_RAD = 1e-5
-#: at most this many contact positions measured beyond the proof's (about 35 ms each)
-AS_BUILT_EVALUATIONS_MAX = 600
+# --- non-circular pair: as built (parts/noncircular_pair/as_built.py) ------------------------------------------
+#: default limits of the as-built checks (each a part-file parameter): the as-built hub speed ripple may exceed the
+#: law's by this (a share: 0.005 = half a point) ...
+AS_BUILT_RIPPLE_MARGIN = 0.005
+#: ... a change of contact may change the driven speed by at most this share of the law's ...
+AS_BUILT_SPEED_STEP_MAX = 0.02
+#: ... the load may sit on a tooth's corner for at most this much driver angle in a row (deg) ...
+AS_BUILT_CORNER_RUN_MAX_DEG = 0.5
+#: ... and a tooth keeps at least this share of its addendum (a tip shortened below it is named)
+TOOTH_HEIGHT_MIN_SHARE = 0.1
+
+# --- contact events of a gear pair (checks/motion/contact_events.py) ------------------------------------------
+#: the loaded contact is sampled every this many degrees of the driver (the resolution of the independent contact
+#: code the as-built transmission is compared with) ...
+CONTACT_STEP_DRIVER_DEG = 0.05
+#: ... and every change of the contact's state (tooth pair, kind) is bisected down to this (rad of the driven
+#: wheel; 1e-6 rad ~ 0.1 micrometre on a pitch curve of 100 mm)
+CONTACT_EVENT_STEP_RAD = 1e-5
+#: at most this many contact measurements for one direction of one span
+CONTACT_EVALUATIONS_MAX = 200_000
+#: a vertex where the outline turns by more than this is a corner (a tooth's tip corners turn by 40-90 deg; a
+#: flank sampled at 1e-4 mm chord turns by under 2 deg from one vertex to the next)
+CONTACT_CORNER_TURN_DEG = 20.0
+#: a contact on an edge within this of a corner of that outline is a contact at that corner (mm)
+CONTACT_CORNER_NEAR_MM = 2e-3
+#: a sample is found from its neighbour's contact: the driven wheel placed this far (rad) on the free side of it
+CONTACT_TRACK_MARGIN_RAD = 3e-4
+#: first window of a full search from the law's position (rad; grown 4x until a contact is found)
+CONTACT_SEARCH_START_RAD = 3e-3
+#: the speed before / after a change of state is the chord over at least this much driven angle (rad)
+CONTACT_STEP_WINDOW_RAD = 2e-5
+#: a stretch departs from the law where the driven speed is off the law's by more than this share
+CONTACT_STRETCH_SPEED_TOL = 0.01

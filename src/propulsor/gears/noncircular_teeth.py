@@ -68,7 +68,9 @@ class ToothSpec:
     rack: ISO 53 basic rack; z0: shaper teeth for concave stretches (None: none allowed);
     tip_min_mm: least tip-land thickness before the tip is shortened; tip_floor: the tip may be
     shortened down to (tip_floor + x) m above the pitch curve, else the teeth are pointed
-    (InputError)."""
+    (InputError); tip_max_mm: the largest tip height above the pitch curve (0: none), a tip shortening of
+    every tooth whose tool would cut it higher (GOST 19274's cure of tip interference in an internal mesh:
+    where the mate's pitch curve is concave the tips meet the mate's teeth outside the line of action)."""
 
     m: float
     x: float = 0.0
@@ -78,10 +80,17 @@ class ToothSpec:
     tip_min_mm: float = 0.0
     tip_floor: float = 0.5
     shaper: ShaperCutter | None = None
+    tip_max_mm: float = 0.0
 
     @property
     def h_tip(self) -> float:
         return (self.rack.h_a_star + self.x) * self.m
+
+    @property
+    def h_tip_cut(self) -> float:
+        """The tip height the teeth are cut to before any shortening of a pointed tip: (h_a* + x) m, at most
+        ``tip_max_mm`` when that is given."""
+        return min(self.h_tip, self.tip_max_mm) if self.tip_max_mm > 0 else self.h_tip
 
     @property
     def h_root(self) -> float:
@@ -456,10 +465,11 @@ def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame 
     # tips: nominal height, shortened where the tip land is too thin
     teeth, tips = [], []
     flat = [sd for pair in teeth_sides for sd in pair]
-    nominal = _tip_hits_batch(flat, np.repeat(centres, 2), np.repeat(phic, 2), curve, frame, spec.h_tip, span)
+    h_cut = spec.h_tip_cut
+    nominal = _tip_hits_batch(flat, np.repeat(centres, 2), np.repeat(phic, 2), curve, frame, h_cut, span)
     for k, ((s_k, ph_k), (R, Lf)) in enumerate(zip(zip(centres, phic), teeth_sides)):
         def hits(h, k=k):
-            if h == spec.h_tip:
+            if h == h_cut:
                 return nominal[2 * k], nominal[2 * k + 1]
             return _tip_hit(R, curve, h, ph_k, span), _tip_hit(Lf, curve, h, ph_k, span)
 
@@ -473,7 +483,7 @@ def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame 
             t = _arc_len(curve, h, hl[1], hr[1])
             return (t if sg_r > sg_l else -t), hr, hl
 
-        h = spec.h_tip
+        h = h_cut
         t, hr, hl = thickness(h)
         shortened = False
         if t < spec.tip_min_mm:

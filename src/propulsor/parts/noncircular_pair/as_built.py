@@ -1,20 +1,19 @@
-"""The as-built hub speed of a pair: the loaded contact law of the finished outlines, resolved around every
-change of contact, and the hub speed ripple from its derivative.
+"""The pair as built: its transmission measured on the finished outlines, in both directions, by contact events.
 
-The full-cycle proof samples the loaded flank's transmission error te(phi) (driver at theta_law(phi), the driven
-wheel turned back until the outlines touch: ``pair_proof``) at ``proof_phases_per_tooth`` phases per tooth.  That
-is enough for overlap and backlash, not for a derivative: where the contact leaves the conjugate flanks (a tip
-corner of the leaving pair touching the mate's flank, or one corner sliding over a flank) te bends within a
-fraction of a step, and a spline through the column smears or misses it.  Here te is resolved by bisection:
-an interval is split while its midpoint departs from the chord by more than ``slope_tol`` x width / 4 (a change
-of slope of more than ``slope_tol`` inside it), down to ``h_min``.  The driven wheel runs at
-phi_a = phi + te(phi) while the driver turns by theta_law(phi), so the hub speed per driver radian is
+Both directions of the loaded contact (``checks.motion.contact_events``: the driver at the law's angle, the driven
+wheel turned until the outlines touch; drive: the driver's loaded flanks pushing; reverse: the other flanks, as when
+the driver turns the other way) over one period of the pair (one leg of the walking law when the driven teeth
+divide into the legs, else the whole turn), sampled every ``policy.CONTACT_STEP_DRIVER_DEG`` of driver and every
+change of the tooth pair or the contact kind located to ``policy.CONTACT_EVENT_STEP_RAD``.
 
-    v/omega = dX01/dphi (phi_a) * (1 + te'(phi)) / U(phi)           (seed 000 eq. 2-3)
+For each direction: the driven speed over the law's (1 + te'), the largest step of it across a change of contact
+state, the share of the cycle on a corner, the stretches that depart from the law, the transmission error
+peak-to-peak, and for the walking law the hub speed the outlines deliver (seed 000 eq. 2-3),
 
-with te' the chord slopes of the resolved samples and U the law the teeth realise; the ripple is
-(max - min) / mean with the mean A/u of every closed law (``laws.walking.HubSpeedRipple``).  A pair whose
-tooth count per leg is whole repeats per leg, and one leg is resolved.
+    v/omega = dX01/dphi (phi + te) * (1 + te'(phi)) / U(phi),
+
+its ripple (max - min) / mean with the mean A/u of the closed law.  The least backlash is the gap between the two
+directions' contacts, (te_reverse - te_drive) r_H(phi), on every sample of either.
 """
 
 from __future__ import annotations
@@ -24,56 +23,93 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ... import policy
-from ...laws.walking import LEG_PERIOD
+from ...checks.motion.contact_events import DRIVE, REVERSE, ContactLaw, PairOutlines, resolve_contact
+from ...laws.law import is_walking
 
-__all__ = ["AsBuilt", "resolve_contact_law", "as_built_speed", "as_built"]
+__all__ = ["AsBuilt", "HubSpeed", "as_built_speed", "pair_outlines", "contact_direction", "combine", "as_built",
+           "period_span"]
+
+
+@dataclass(frozen=True)
+class HubSpeed:
+    """The hub speed v/omega the outlines deliver in one direction (walking law)."""
+
+    ripple: float        #: (max - min) / mean
+    v_min_rel: float     #: least v/omega over its mean A/u
+    v_max_rel: float
+    phi_min: float       #: driven angle of the least (rad)
+    phi_max: float
 
 
 @dataclass(frozen=True)
 class AsBuilt:
-    """The as-built hub speed over the resolved stretch (one leg or the whole turn)."""
+    """Both directions' contact laws over ``span`` and what follows from them."""
 
-    phi: np.ndarray      #: resolved driven law angles (rad)
-    te: np.ndarray       #: loaded-flank transmission error there (rad)
-    ripple: float        #: (max - min) / mean of v/omega
-    v_min_rel: float     #: least v/omega over its mean
-    v_max_rel: float
-    phi_min: float       #: driven angle of the least speed within the leg (rad)
-    phi_max: float
-    finest_step: float   #: the narrowest resolved interval (rad)
-    evaluations: int     #: contact positions measured beyond the proof's
+    drive: ContactLaw
+    reverse: ContactLaw
+    span: float                          #: driven angle resolved (rad): one period of the pair
+    hub: tuple                           #: (HubSpeed drive, HubSpeed reverse), or () for a law without a hub
+    backlash_min_mm: float
+    backlash_max_mm: float
+    backlash_min_phi: float
 
     @property
-    def te_slope_extremes(self) -> tuple[float, float]:
-        s = np.diff(self.te) / np.diff(self.phi)
-        return float(s.min()), float(s.max())
+    def directions(self) -> tuple[ContactLaw, ContactLaw]:
+        return self.drive, self.reverse
+
+    @property
+    def ripple(self) -> float:
+        """The larger as-built hub speed ripple of the two directions (walking law), nan without a hub."""
+        return max(h.ripple for h in self.hub) if self.hub else math.nan
+
+    @property
+    def step_max(self) -> float:
+        return max(c.step_max for c in self.directions)
+
+    @property
+    def speed_min(self) -> float:
+        return min(c.speed_min for c in self.directions)
+
+    @property
+    def speed_max(self) -> float:
+        return max(c.speed_max for c in self.directions)
+
+    @property
+    def edge_share(self) -> float:
+        return max(c.edge_share for c in self.directions)
+
+    def corner_run_max_deg(self) -> tuple[float, str]:
+        """The longest run of driver angle with the load on a corner (deg) and where (direction, driver deg)."""
+        best, where = 0.0, ""
+        for c in self.directions:
+            run, at = _longest_corner_run(c)
+            if run > best:
+                best, where = run, f"{c.name} at driver {at:.3f} deg"
+        return best, where
+
+    @property
+    def evaluations(self) -> int:
+        return self.drive.evaluations + self.reverse.evaluations
 
 
-def resolve_contact_law(evaluate, phi, te, slope_tol: float, h_min: float, max_evals: int):
-    """(phi, te, evaluations): the samples (phi, te) refined by bisection where the chord is not the law:
-    ``evaluate(array of phi) -> array of te`` measures new points, level by level; an interval is split
-    while |te(mid) - chord(mid)| > slope_tol (b - a) / 4 and (b - a) / 2 >= h_min, at most ``max_evals``
-    measurements in all.  Intervals with a non-finite end are left as they are."""
-    pts = {float(x): float(y) for x, y in zip(phi, te)}
-    xs = sorted(pts)
-    todo = [(a, b) for a, b in zip(xs[:-1], xs[1:]) if math.isfinite(pts[a]) and math.isfinite(pts[b])]
-    n = 0
-    while todo and n < max_evals:
-        todo = todo[:max_evals - n]
-        mids = np.array([0.5 * (a + b) for a, b in todo])
-        vals = np.asarray(evaluate(mids), float)
-        n += len(mids)
-        nxt = []
-        for (a, b), m, v in zip(todo, mids, vals):
-            pts[float(m)] = float(v)
-            if not math.isfinite(v):
-                continue
-            if abs(v - 0.5 * (pts[a] + pts[b])) > slope_tol * (b - a) / 4 and (b - a) / 2 >= h_min:
-                nxt += [(a, float(m)), (float(m), b)]
-        todo = nxt
-    xs = np.array(sorted(pts))
-    return xs, np.array([pts[x] for x in xs]), n
+def _longest_corner_run(c: ContactLaw) -> tuple[float, float]:
+    """(deg of driver, its start in deg) of the longest run of consecutive samples on a corner."""
+    corner = (c.kind > 0) & np.isfinite(c.te)
+    best, at, i, n = 0.0, math.nan, 0, len(corner)
+    while i < n:
+        if not corner[i]:
+            i += 1
+            continue
+        j = i
+        while j + 1 < n and corner[j + 1]:
+            j += 1
+        lo = c.theta[i - 1] if i > 0 else c.theta[i]       # the run reaches at most to the neighbouring samples
+        hi = c.theta[j + 1] if j + 1 < n else c.theta[j]
+        run = math.degrees(0.5 * ((c.theta[i] - lo) + (hi - c.theta[j])) + (c.theta[j] - c.theta[i]))
+        if run > best:
+            best, at = run, math.degrees(c.theta[i])
+        i = j + 1
+    return best, at
 
 
 def as_built_speed(law, run_law, phi, te, samples: int = 20001):
@@ -86,37 +122,81 @@ def as_built_speed(law, run_law, phi, te, samples: int = 20001):
     return grid, law.dX01_dphi(grid + t) * (1.0 + slope[k]) / run_law.U(grid)
 
 
-def as_built(d, mount: float, pr) -> AsBuilt | None:
-    """The as-built speed of design ``d`` (generated or sector teeth) at the installed centre distance from
-    its full-cycle proof ``pr``; None where the proof found a jam (no running position: no speed)."""
-    from ...gears.noncircular import PitchCurves
-    from .pair_proof import prove_pair
+def period_span(d) -> float:
+    """The driven angle after which the pair repeats: one period of the law when its periods hold whole driven
+    teeth, else the whole turn."""
+    law = d.run_law
+    periods = int(getattr(law, "periods", 1) or 1)
+    return 2 * math.pi / periods if periods > 1 and d.z_H % periods == 0 else 2 * math.pi
 
-    if pr.jams or not np.all(np.isfinite(pr.phi_drive)):
+
+def _tooth_angles(d):
+    """Body polar angles of the tooth centres: (driver, driven); None for teeth without a record (sectors)."""
+    drv, dvn = d.driver, d.driven
+    if not (hasattr(drv, "teeth") and drv.teeth and hasattr(drv.teeth[0], "phi_centre")):
         return None
-    one_leg = d.z_H % 4 == 0
-    span = LEG_PERIOD if one_leg else 2 * math.pi
-    sel = pr.phi < span - 1e-12
-    phi = np.append(pr.phi[sel], span)
-    te = np.append(pr.te_drive[sel], pr.te_drive[0])  # periodic: the pair repeats per leg / per turn
-    pc = PitchCurves(d.run_law, d.L)
-    pitch = math.pi * d.m if d.method == "generated" else d.table.arc
+    th = d.run_law.theta
+    driven = np.array([t.phi_centre for t in dvn.teeth])
+    driver = math.pi - np.asarray(th(np.array([t.phi_centre for t in drv.teeth])), float)
+    return driver, driven
 
-    def evaluate(ph):
-        ph = np.asarray(ph, float)
-        order = np.argsort(ph)
-        r = prove_pair(d.driver.profile, d.driven.profile, mount, d.run_law.theta, ph[order], pc.r_H,
-                       name="as_built", pitch_mm=pitch)
-        out = np.empty(len(ph))
-        out[order] = r.phi_drive - ph[order]
-        return out
 
-    xs, ys, n = resolve_contact_law(evaluate, phi, te, policy.AS_BUILT_SLOPE_TOL, policy.AS_BUILT_STEP_MIN_RAD,
-                                    policy.AS_BUILT_EVALUATIONS_MAX)
-    ok = np.isfinite(ys)
-    xs, ys = xs[ok], ys[ok]
-    grid, v = as_built_speed(d.law, d.run_law, xs, ys)
+def _teeth_from_corners(o, turn, corner) -> np.ndarray:
+    """Tooth centres of an outline without a tooth record: the mid-angles of its convex corners taken in pairs."""
+    idx = np.nonzero(corner & (turn > 0))[0]
+    a = np.sort(np.arctan2(o.points[idx, 1], o.points[idx, 0]))
+    if len(a) < 2:
+        return np.zeros(1)
+    return np.array([0.5 * (a[i] + a[i + 1]) for i in range(0, len(a) - 1, 2)])
+
+
+def pair_outlines(d, mount: float) -> PairOutlines:
+    """The pair's outer outlines at the installed centre distance, prepared for contact events."""
+    from ...checks.motion import outline
+    from .pair_proof import _outer_only
+
+    drv, dvn = outline(_outer_only(d.driver.profile)), outline(_outer_only(d.driven.profile))
+    teeth = _tooth_angles(d)
+    pair = PairOutlines(drv, dvn, mount, *(teeth if teeth is not None else (np.zeros(1), np.zeros(1))))
+    if teeth is None:
+        pair.driver_teeth = _teeth_from_corners(drv, pair.turn_drv, pair.corner_drv)
+        pair.driven_teeth = _teeth_from_corners(dvn, pair.turn_dvn, pair.corner_dvn)
+    return pair
+
+
+def contact_direction(d, mount: float, direction: int, step_driver_rad: float | None = None) -> ContactLaw:
+    """One direction's resolved contact over one period of the pair (a worker job)."""
+    return resolve_contact(pair_outlines(d, mount), d.run_law.theta, 0.0, period_span(d), direction,
+                           step_driver_rad=step_driver_rad)
+
+
+def _hub(d, c: ContactLaw) -> HubSpeed:
+    ok = np.isfinite(c.te)
+    grid, v = as_built_speed(d.law, d.run_law, c.phi[ok], c.te[ok])
     mean = d.law.hub_speed_ratio
     i, j = int(np.argmin(v)), int(np.argmax(v))
-    return AsBuilt(xs, ys, float((v[j] - v[i]) / mean), float(v[i] / mean), float(v[j] / mean), float(grid[i]),
-                   float(grid[j]), float(np.min(np.diff(xs))), n)
+    return HubSpeed(float((v[j] - v[i]) / mean), float(v[i] / mean), float(v[j] / mean), float(grid[i]), float(grid[j]))
+
+
+def combine(d, drive: ContactLaw, reverse: ContactLaw) -> AsBuilt:
+    """The as-built values of the two directions' contact laws."""
+    from ...gears.noncircular import PitchCurves
+
+    x = np.union1d(drive.phi, reverse.phi)
+    okd, okr = np.isfinite(drive.te), np.isfinite(reverse.te)
+    ted = np.interp(x, drive.phi[okd], drive.te[okd])
+    ter = np.interp(x, reverse.phi[okr], reverse.te[okr])
+    r_H = np.asarray(PitchCurves(d.run_law, d.L).r_H(x), float)
+    bl = (ter - ted) * r_H
+    k = int(np.argmin(bl))
+    hub = (_hub(d, drive), _hub(d, reverse)) if is_walking(d.law) else ()
+    return AsBuilt(drive, reverse, float(drive.phi[-1] - drive.phi[0]), hub, float(bl[k]), float(np.max(bl)),
+                   float(x[k]))
+
+
+def as_built(d, mount: float, pr=None, step_driver_rad: float | None = None) -> AsBuilt | None:
+    """Both directions in this process; None where the proof ``pr`` found a jam (no running position)."""
+    if pr is not None and (pr.jams or not np.all(np.isfinite(pr.phi_drive))):
+        return None
+    return combine(d, contact_direction(d, mount, DRIVE, step_driver_rad),
+                   contact_direction(d, mount, REVERSE, step_driver_rad))

@@ -196,7 +196,8 @@ def screen(p: NoncircularPairParams, source=None) -> Screen:
         sm = _smoothing(_replace(p, module_mm=m, center_distance_mm=0.0), law, m)
     sh = shaper_of(p, m)
     common = dict(m=m, thinning_mm=_thinning(p), rack=_rack(p), z0=p.shaper_teeth if sh is None else sh.z0,
-                  tip_min_mm=p.tip_land_min_module * m, shaper=sh)
+                  tip_min_mm=p.tip_land_min_module * m, shaper=sh,
+                  tip_max_mm=p.tip_height_max_module * m)
     from ...gears.noncircular_teeth import ToothSpec
 
     g = sm.generability
@@ -301,7 +302,8 @@ def _search_design(p: NoncircularPairParams, law: WalkingLaw, progress) -> Desig
         sm = SmoothingDesign(law=sl, delta=sl.delta, L=pt.L, z_H=z_H, z=z_H // law.n, cutter=cutter,
                              generability=g, ripple=hub_speed_ripple(sl))
         frame = ArcFrame(pc)
-        common = dict(m=m, thinning_mm=th, rack=rack, z0=sh.z0, tip_min_mm=p.tip_land_min_module * m, shaper=sh)
+        common = dict(m=m, thinning_mm=th, rack=rack, z0=sh.z0, tip_min_mm=p.tip_land_min_module * m, shaper=sh,
+                  tip_max_mm=p.tip_height_max_module * m)
         progress(f"law search: generating the teeth of candidate {len(tries) + 1} (ripple {100 * pt.ripple:.2f} %, "
                  f"shaper d0 {pt.d0_mm:g})")
         try:
@@ -356,7 +358,8 @@ def design_generated(p: NoncircularPairParams, progress=lambda s: None, source=N
     rack = _rack(p)
     th = _thinning(p)
     common = dict(m=m, thinning_mm=th, rack=rack, z0=p.shaper_teeth if sh is None else sh.z0,
-                  tip_min_mm=p.tip_land_min_module * m, shaper=sh)
+                  tip_min_mm=p.tip_land_min_module * m, shaper=sh,
+                  tip_max_mm=p.tip_height_max_module * m)
     with input_names(_TOOTH_KEYS if sh is None else _TOOTH_KEYS_D0):
         progress(f"generated: driver teeth ({z_H // law.n}), rack/shaper envelopes")
         drv, dvn = _generate_pair(pc, ToothSpec(x=p.driver_shift, **common), ToothSpec(x=-p.driver_shift, **common),

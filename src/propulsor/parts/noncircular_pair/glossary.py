@@ -12,14 +12,44 @@ _PAIR = {
     "overlap_law_max_mm2": ("mm²", "largest overlap of the tooth outlines turned by the law over the motion proof"),
     "jam_phases": ("", "phases of the motion proof where the driven gear cannot follow the law (teeth jam)"),
     "proof_phases": ("", "phases (driver positions) the motion proof checks over the driven gear's turn"),
-    "te_pp_rad": ("rad", "peak-to-peak transmission error of the driven gear against the law"),
-    "backlash_min_mm": ("mm", "least circumferential backlash over the motion proof"),
-    "backlash_max_mm": ("mm", "largest circumferential backlash over the motion proof"),
+    "te_pp_rad": ("rad", "peak-to-peak transmission error of the driven gear against the law, as built (the drive "
+                         "flanks' contact resolved by contact events)"),
+    "backlash_min_mm": ("mm", "least circumferential backlash as built: the gap between the two directions' contacts "
+                              "on the driven pitch curve"),
+    "backlash_max_mm": ("mm", "largest circumferential backlash as built on the driven pitch curve"),
     "least_overlap_max_mm2": ("mm²", "largest overlap left at the driven angle of least overlap over the proof"),
+}
+
+#: the pair as built (parts/noncircular_pair/as_built_outputs.py): both directions' contact on the finished outlines
+AS_BUILT = {
+    "te_min_rad": ("rad", "least transmission error of the loaded (drive) flanks as built: actual driven angle - law"),
+    "te_max_rad": ("rad", "largest transmission error of the loaded (drive) flanks as built"),
+    "te_pp_reverse_rad": ("rad", "peak-to-peak transmission error as built, reverse direction"),
+    "backlash_min_phi_deg": ("deg", "driven angle of the least backlash"),
+    "speed_as_built_min": ("", "least driven speed over the law's at the same driver angle, drive direction"),
+    "speed_as_built_max": ("", "largest driven speed over the law's, drive direction"),
+    "speed_as_built_reverse_min": ("", "least driven speed over the law's, reverse direction"),
+    "speed_as_built_reverse_max": ("", "largest driven speed over the law's, reverse direction"),
+    "speed_step_max": ("", "largest change of the driven speed (share of the law's) across a change of contact, drive"),
+    "speed_step_reverse_max": ("", "largest change of the driven speed across a change of contact, reverse"),
+    "corner_contact_share": ("", "share of the driver's turning with the load on a tooth corner, drive"),
+    "corner_contact_reverse_share": ("", "share of the driver's turning with the load on a tooth corner, reverse"),
+    "corner_run_max_deg": ("deg", "longest run of driver angle with the load on a tooth corner (either direction)"),
+    "as_built_span_deg": ("deg", "driven angle resolved: one period after which the pair repeats"),
+    "as_built_evaluations": ("", "contact positions measured for the as-built transmission (both directions)"),
+    "as_built_stretches": ("", "stretches whose driven speed departs from the law's or whose contact is on a corner"),
+    "speed_ripple_as_built": ("", "(max - min)/mean of the hub speed v/omega the finished outlines deliver, the larger of the two directions; speed_ripple is the law's"),
+    "speed_ripple_as_built_drive": ("", "as-built hub speed ripple, drive direction"),
+    "speed_ripple_as_built_reverse": ("", "as-built hub speed ripple, reverse direction"),
+    "speed_as_built_min_rel": ("", "least as-built hub speed over its mean A/u (drive)"),
+    "speed_as_built_max_rel": ("", "largest as-built hub speed over its mean A/u (drive)"),
+    "speed_as_built_phi_min_deg": ("deg", "driven angle within a leg of the least as-built hub speed (drive)"),
+    "speed_as_built_phi_max_deg": ("deg", "driven angle within a leg of the largest as-built hub speed (drive)"),
 }
 
 GLOSSARY = {
     **_PAIR,
+    **AS_BUILT,
     "mounting_distance_mm": ("mm", "centre distance the pair is mounted at (the DXF and the assembly)"),
     "module_mm": ("mm", "module m of the teeth"),
     "driver_teeth": ("", "teeth z of the driver (on the engine side)"),
@@ -34,8 +64,6 @@ GLOSSARY = {
     "hub_speed_mean_mm_per_rad": ("mm/rad", "hub speed analogue v/ω = A / u: horizontal hub travel per driver radian"),
     "closure_error_rad": ("rad", "closure of the pitch curves: the driven angle left over after one driven turn"),
     "overlap_law_phases": ("", "phases of the motion proof where the outlines turned by the law overlap"),
-    "te_min_rad": ("rad", "least transmission error of the driven gear against the law"),
-    "te_max_rad": ("rad", "largest transmission error of the driven gear against the law"),
     "contact_pairs_min": ("", "least number of tooth pairs in contact over the motion proof"),
     "contact_ratio_mean": ("", "mean number of tooth pairs in contact over the motion proof"),
     "smoothing_rad": ("rad", "width δ of the law's smoothing around each leg hand-over"),

@@ -23,6 +23,7 @@ from ...laws.walking import LEG_PERIOD
 from ..pipeline import Pipeline, design_of
 from ..media import pipeline_steps
 from .animation import pair_animation
+from .as_built_outputs import as_built_values
 from .design import Design, PairDesign, mounting, pair_design, sector_design_table
 from .params import NoncircularPairParams
 from .proofs import checks_generated, checks_sectors, proofs
@@ -398,7 +399,8 @@ def checks_and_derived(dd: PairDesign, w, built: dict) -> None:
     w.add_checks(checks_generated(d, pr, p) if d.method == "generated" else checks_sectors(d, pr))
     s = pr.summary()
     if not is_walking(d.law):
-        return law_derived(dd, w, pr, s)
+        law_derived(dd, w, pr, s)
+        return as_built_values(w, dd, built)
     w.derived.update({
         "center_distance_mm": d.L, "mounting_distance_mm": dd.mount, "module_mm": d.m, "driver_teeth": d.z, "driven_teeth": d.z_H,
         "driver_turns": d.law.n, "method": d.method, "smoothing_deg": d.smoothing_deg,
@@ -445,48 +447,6 @@ def checks_and_derived(dd: PairDesign, w, built: dict) -> None:
             "te_pp_rad": so["te_pp_rad"], "backlash_min_mm": so["backlash_min_mm"],
             "backlash_max_mm": so["backlash_max_mm"], "least_overlap_max_mm2": float(np.max(pr_other.least_overlap)),
         }.items()})
-
-
-def as_built_values(w, dd: PairDesign, built: dict) -> None:
-    """The as-built hub speed beside the law's (derived values, described; a note)."""
-    from .as_built import as_built
-
-    job = built.get("as_built")
-    ab = job.result() if job is not None else as_built(dd.d, dd.mount, built["proof"])
-    law = dd.d.ripple
-    if ab is None:
-        w.add_note("As-built hub speed: not defined - the proof found phases without a running position (jam).")
-        return
-    w.derived.update({"speed_ripple_as_built": ab.ripple, "speed_as_built_min_rel": ab.v_min_rel,
-                      "speed_as_built_max_rel": ab.v_max_rel,
-                      "speed_as_built_phi_min_deg": math.degrees(ab.phi_min),
-                      "speed_as_built_phi_max_deg": math.degrees(ab.phi_max),
-                      "as_built_step_min_rad": ab.finest_step, "as_built_evaluations": ab.evaluations})
-    w.describe("speed_ripple_as_built", "", "(max - min)/mean of the hub speed v/omega the finished outlines deliver "
-               "under load (loaded flanks touching at the installed centre distance), from the derivative of the "
-               "contact law resolved around every change of contact; speed_ripple is the law's")
-    w.describe("speed_as_built_min_rel", "", "least as-built hub speed over its mean A/u")
-    w.describe("speed_as_built_max_rel", "", "largest as-built hub speed over its mean A/u")
-    w.describe("speed_as_built_phi_min_deg", "deg", "driven angle within a leg of the least as-built hub speed")
-    w.describe("speed_as_built_phi_max_deg", "deg", "driven angle within a leg of the largest as-built hub speed")
-    w.describe("as_built_step_min_rad", "rad", "narrowest interval of driven angle the contact law was resolved to")
-    w.describe("as_built_evaluations", "", "contact positions measured beyond the proof's to resolve the contact law")
-    s_lo, s_hi = ab.te_slope_extremes
-    w.add_note(
-        f"As-built hub speed: the loaded flank's transmission error te(phi) of the proof, resolved by bisection "
-        f"wherever its slope changes by more than {100 * policy_slope_tol():.1f} % inside an interval (down to "
-        f"{ab.finest_step:.2e} rad; {ab.evaluations} more contact positions), gives v/omega = dX01/dphi(phi + te) "
-        f"(1 + te')/U: ripple {_pct(ab.ripple)} against {_pct(law.ripple)} of the law; least "
-        f"{ab.v_min_rel:.4f} of the mean at phi = {math.degrees(ab.phi_min):.3f} deg, largest {ab.v_max_rel:.4f} at "
-        f"{math.degrees(ab.phi_max):.3f} deg (te' from {s_lo:+.4f} to {s_hi:+.4f}).  Where the contact leaves "
-        f"the conjugate flanks (a tip corner of the leaving pair on the mate's flank) the slope of te jumps within a "
-        f"fraction of a proof step; tables/transmission.csv keeps the proof's own phases.")
-
-
-def policy_slope_tol() -> float:
-    from ... import policy
-
-    return policy.AS_BUILT_SLOPE_TOL
 
 
 def notes(dd: PairDesign, w, built: dict) -> None:

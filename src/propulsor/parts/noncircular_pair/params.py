@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ... import policy
 from ...errors import InputError
 from ...laws.walking import WalkingLaw
 from ...params import PartParams, param
@@ -95,6 +96,11 @@ class NoncircularPairParams(PartParams):
                                      min_exclusive=True, why="one leg's support phase is 90° wide")
     tip_land_min_module: float = param(0.25, "", "least tip land (in modules); thinner tips are shortened",
                                        min=0.0, max=1.0, why="a standard tooth's tip land is about 0.6 m")
+    tip_height_max_module: float = param(0.0, "", "largest tip height above the pitch curve (in modules) of the "
+                                         "teeth of both wheels; 0: (1 + x) m. Where a pitch curve is concave the "
+                                         "mate's long tips touch its teeth outside the line of action (tip "
+                                         "interference of an internal mesh): shorten them", min=0.0, max=3.0,
+                                         why="a tooth of the ISO 53 rack with the largest shift reaches 2.5 m")
     mounting_distance_mm: float = param(0.0, "mm", "installed centre distance (seed 000: L_ust = 144 for L = 143.5); "
                                         "0: the design L", min=0.0, max=10000.0, why=_WHY_MECHANISM)
     face_width_mm: float = param(20.0, "mm", "face width of both gears", min=0.0, min_exclusive=True, max=1000.0,
@@ -104,6 +110,19 @@ class NoncircularPairParams(PartParams):
     keyway: bool = param(True, "", "hub keyway in each bore (DIN 6885-1 / GOST 23360-78)")
     proof_phases_per_tooth: int = param(4, "", "phases per driven tooth in the full-cycle proof", min=4, max=64,
                                         integer=True, why="64 phases a tooth resolve contact to 1/64 of a pitch")
+    as_built_ripple_margin: float = param(policy.AS_BUILT_RIPPLE_MARGIN, "", "as built: the hub speed ripple the finished outlines deliver "
+                                          "(both directions) may exceed the law's by this share (0.005: half a "
+                                          "point; walking law)", min=0.0, max=1.0,
+                                          why="a ripple twice the mean is no longer a walking drive")
+    speed_step_max: float = param(policy.AS_BUILT_SPEED_STEP_MAX, "", "as built: the largest change of the driven speed, as a share of the "
+                                  "law's, across a change of the tooth pair or contact kind (an impact)",
+                                  min=0.0, min_exclusive=True, max=1.0, why="a step of the whole speed is a stop")
+    corner_run_max_deg: float = param(policy.AS_BUILT_CORNER_RUN_MAX_DEG, "deg", "as built: the longest run of driver angle with the load on a "
+                                      "tooth's corner (tip or root) instead of its flank", min=0.0, max=360.0,
+                                      why="one driver turn")
+    tooth_height_min_share: float = param(policy.TOOTH_HEIGHT_MIN_SHARE, "", "least share of its addendum a tooth keeps when its tip is "
+                                          "shortened (a lower one is named and fails)", min=0.0, max=1.0,
+                                          why="a share of the whole addendum")
     compare_methods: bool = param(True, "", "prove the other tooth method too (2D, one leg) and report the comparison")
 
     def _validate_law_keys(self) -> None:

@@ -111,12 +111,16 @@ def checks_sectors(d: Design, pr) -> list[Check]:
 def proofs(dd: PairDesign, w, built: dict) -> None:
     """The built pair over the whole cycle; the other tooth method over one leg when asked."""
     from ...parallel import start
-    from ...laws.law import is_walking
-    from .as_built import as_built
+    from ...checks.motion.contact_events import DRIVE, REVERSE
+    from .as_built import contact_direction
 
     p, d, prog = dd.p, dd.d, w.progress
     built["proof"] = prove(d, p.proof_phases_per_tooth, 4, prog, dd.mount)
-    if is_walking(d.law):  # a hub, and its speed: a law without one has its output speed from the proof
-        prog("as-built speed: the loaded contact law resolved around every change of contact")
-        built["as_built"] = start(as_built, d, dd.mount, built["proof"])  # beside the other method's proof
+    pr = built["proof"]
+    if pr.jams or not np.all(np.isfinite(pr.phi_drive)):
+        built["as_built"] = ()  # no running position: no transmission as built
+    else:
+        prog("as built: both directions' contact on the finished outlines, resolved by contact events")
+        # the two directions beside each other and beside the other method's proof
+        built["as_built"] = (start(contact_direction, d, dd.mount, DRIVE), start(contact_direction, d, dd.mount, REVERSE))
     built["other"] = compare(p, d, prog) if p.compare_methods else (None, None, "")

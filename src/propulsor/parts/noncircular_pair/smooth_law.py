@@ -59,7 +59,7 @@ def _tooth_common(p, m: float, cutter, sh) -> dict:
     from .design import _rack, _thinning
 
     return dict(m=m, thinning_mm=_thinning(p), rack=_rack(p), z0=cutter.z0, tip_min_mm=p.tip_land_min_module * m,
-                shaper=sh)
+                shaper=sh, tip_max_mm=p.tip_height_max_module * m)
 
 
 def screen_smooth(p, law) -> SmoothScreen:

@@ -1,0 +1,443 @@
+"""The loaded contact of a gear pair on its finished outlines, resolved by contact events.
+
+The driver is placed at the law's angle theta(phi); the driven wheel is turned from the law's position until its
+outline first touches the driver's (drive: turned back, the driver's loaded flanks pushing; reverse: turned on,
+the other flanks, as when the driver turns the other way).  Each contact is a vertex of one polyline meeting an
+edge of the other (:func:`.backlash._rot_hits`, exact for the polylines); its *state* is
+
+* the contact kind: ``flank`` (neither outline at a corner there), ``driver tip corner`` / ``driven tip corner``
+  (the contact at a convex corner of that outline: the tip land meets the flank), ``driver root corner`` /
+  ``driven root corner`` (a concave corner);
+* the tooth of each wheel it lies on (nearest tooth centre by polar angle in the wheel's body frame).
+
+The transmission is sampled every ``step`` of driver angle (``policy.CONTACT_STEP_DRIVER_DEG``), and every
+interval whose ends are in different states is bisected down to ``h_min`` of driven angle
+(``policy.CONTACT_EVENT_STEP_RAD``), so that each change of the tooth pair or the contact kind is located to
+``h_min`` and a stretch in another state that starts or ends between two samples is found when at least
+2 ``h_min`` wide.  A sample is found from the previous one's contact: the driven wheel is placed a little on
+the free side of it and turned through a small window (a full search from the law's position when that finds
+nothing), which keeps one measurement under a millisecond.
+
+Driven speed over the law's at the same driver angle: (d phi_actual / d theta) / (d phi / d theta) =
+1 + d te / d phi, te = phi_actual - phi (the chord slopes of the resolved samples: piecewise constant).
+A *step* is the change of that speed across a change of state (the last interval of the one state against the
+first of the next, each at least ``step_window`` wide): what the mate feels as an impact.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ... import policy
+from .backlash import _rot_hits
+from .outlines import Outline, row_norms
+
+__all__ = ["KINDS", "PairOutlines", "ContactLaw", "Stretch", "resolve_contact", "contact_law"]
+
+#: contact kinds, by code
+KINDS = ("flank", "driver tip corner", "driven tip corner", "driver root corner", "driven root corner")
+DRIVE, REVERSE = 1, -1
+
+
+def _turning(o: Outline) -> np.ndarray:
+    """Turning angle (rad, + convex for material on the left) of the outline at each vertex."""
+    a = o.seg_b - o.seg_a
+    ang = np.arctan2(a[:, 1], a[:, 0])
+    return (ang - ang[o.prev] + math.pi) % (2 * math.pi) - math.pi
+
+
+def _sorted_by_angle(o: Outline, r_min: float):
+    """Indices of the vertices farther than r_min from the body axis, sorted by polar angle, and the angles."""
+    r = row_norms(o.points)
+    keep = np.nonzero(r > r_min)[0]
+    a = np.arctan2(o.points[keep, 1], o.points[keep, 0])
+    order = np.argsort(a, kind="stable")
+    return keep[order], a[order]
+
+
+def _window(order: np.ndarray, angs: np.ndarray, centre: float, hw: float) -> np.ndarray:
+    """The vertices (of ``order``) whose polar angle lies within centre +- hw (wrapped)."""
+    if hw >= math.pi:
+        return order
+    c = (centre + math.pi) % (2 * math.pi) - math.pi
+    parts = []
+    for k in (-1, 0, 1):
+        lo, hi = c - hw + 2 * math.pi * k, c + hw + 2 * math.pi * k
+        parts.append(order[np.searchsorted(angs, lo):np.searchsorted(angs, hi)])
+    return np.concatenate(parts)
+
+
+def _rot(a: float) -> np.ndarray:
+    c, s = math.cos(a), math.sin(a)
+    return np.array([[c, -s], [s, c]])
+
+
+def _nearest_tooth(centres: np.ndarray, angle: float) -> int:
+    d = np.abs((angle - centres + math.pi) % (2 * math.pi) - math.pi)
+    return int(np.argmin(d))
+
+
+class PairOutlines:
+    """A pair's outer outlines prepared for contact events.
+
+    ``driver``, ``driven``: :class:`.outlines.Outline` in their body frames (axis at the origin); the driven
+    wheel's axis is the assembly origin, the driver's at (L, 0); at phase phi the driven wheel is turned by
+    -phi and the driver by +theta (an external pair).  ``driver_teeth``, ``driven_teeth``: body polar angles
+    of the tooth centres (rad), to name the teeth in contact.  ``corner_deg``: a vertex whose outline turns by
+    more than this is a corner."""
+
+    def __init__(self, driver: Outline, driven: Outline, L: float, driver_teeth, driven_teeth,
+                 corner_deg: float = policy.CONTACT_CORNER_TURN_DEG):
+        self.drv, self.dvn, self.L = driver, driven, float(L)
+        self.driver_teeth = np.asarray(driver_teeth, float)
+        self.driven_teeth = np.asarray(driven_teeth, float)
+        lim = math.radians(corner_deg)
+        self.turn_drv, self.turn_dvn = _turning(driver), _turning(driven)
+        self.corner_drv = np.abs(self.turn_drv) > lim
+        self.corner_dvn = np.abs(self.turn_dvn) > lim
+        r_drv, r_dvn = row_norms(driver.points), row_norms(driven.points)
+        R1, R2 = float(r_drv.max()), float(r_dvn.max())
+        self.o1, self.a1 = _sorted_by_angle(driven, self.L - R1 - 1.0)
+        self.o2, self.a2 = _sorted_by_angle(driver, self.L - R2 - 1.0)
+        # half-widths (about the line of centres) of the body angles that can come within reach of the mate,
+        # widened by the largest free rotation searched
+        self.R1, self.R2 = R1, R2
+        self.hw_dvn = self._half_width(r_dvn, R1)
+        self.hw_drv = self._half_width(r_drv, R2)
+
+    def _half_width(self, r: np.ndarray, R_mate: float) -> float:
+        """Largest angle from the line of centres of a point at radius r (of these) within R_mate + 1 of
+        the mate's axis at distance L."""
+        L = self.L
+        rr = np.linspace(max(float(r.min()), 1e-3), float(r.max()), 64)
+        c = np.clip((L * L + rr * rr - (R_mate + 1.0) ** 2) / (2 * L * rr), -1.0, 1.0)
+        return float(np.max(np.arccos(c))) + 0.02
+
+    def _hits(self, phi_a: float, theta: float, sign: float, w: float):
+        """First entering hit when the driven wheel, at actual angle phi_a, turns by sign (+1: back, the
+        drive flanks) through at most w rad: (delta, side, vertex, edge, t); side 1: a driven vertex on a driver
+        edge, side 2: a driver vertex on a driven edge."""
+        L = self.L
+        i1 = _window(self.o1, self.a1, phi_a, self.hw_dvn + w)
+        i2 = _window(self.o2, self.a2, math.pi - theta, self.hw_drv + w)
+        R_th, R_ph = _rot(-theta), _rot(-phi_a)
+        P1 = ((self.dvn.points[i1] @ R_ph.T) - (L, 0.0)) @ R_th.T
+        C1 = np.array([-L, 0.0]) @ R_th.T
+        P2 = ((self.drv.points[i2] @ _rot(theta).T) + (L, 0.0)) @ _rot(phi_a).T
+        # only the points that can come within the mate's outer circle: a driven point turning by w about the
+        # driven axis moves by at most w R2; a driver point turns about the driven axis in the driven frame
+        far1 = row_norms(P1) <= self.R1 + w * self.R2 + 1e-6
+        far2 = row_norms(P2) <= self.R2 + 1e-6
+        i1, P1 = i1[far1], P1[far1]
+        i2, P2 = i2[far2], P2[far2]
+        rho1 = row_norms(P1 - C1)
+        rho2 = row_norms(P2)
+        d1, e1, t1 = _rot_hits(P1, C1, self.drv, sign, w, rho1, self.drv.boundary_lower_bound(P1))
+        d2, e2, t2 = _rot_hits(P2, np.zeros(2), self.dvn, -sign, w, rho2, self.dvn.boundary_lower_bound(P2))
+        k1 = int(np.argmin(d1)) if len(d1) else -1
+        k2 = int(np.argmin(d2)) if len(d2) else -1
+        m1 = d1[k1] if k1 >= 0 else math.inf
+        m2 = d2[k2] if k2 >= 0 else math.inf
+        if not (math.isfinite(m1) or math.isfinite(m2)):
+            return math.inf, 0, -1, -1, 0.0
+        if m1 <= m2:
+            return float(m1), 1, int(i1[k1]), int(e1[k1]), float(t1[k1])
+        return float(m2), 2, int(i2[k2]), int(e2[k2]), float(t2[k2])
+
+    def contact(self, phi: float, theta: float, direction: int, prev_te: float | None = None, dphi: float = 0.0):
+        """(te, kind, driver tooth, driven tooth, contact point in the driven body frame) at law phase phi
+        (driver at theta): the driven wheel turned from the law's position until the outlines touch (direction
+        DRIVE: back; REVERSE: on).  te = actual - law (rad); nan where nothing touches within the largest free
+        rotation.  ``prev_te``: the te of a sample ``dphi`` away, from which the search starts (a margin of
+        ``policy.CONTACT_TRACK_MARGIN_RAD`` + 2 |dphi| on the free side: te changes by less than |dphi| unless the
+        driven speed is off the law's by more than 100 %)."""
+        sign = 1.0 if direction == DRIVE else -1.0
+        hit = None
+        if prev_te is not None and math.isfinite(prev_te):
+            # start a margin on the free side of the neighbouring sample's contact, search a window of twice that
+            m = policy.CONTACT_TRACK_MARGIN_RAD + 2.0 * abs(dphi)
+            h = self._hits(phi + prev_te + sign * m, theta, sign, 2.0 * m)
+            if math.isfinite(h[0]) and h[0] > 1e-3 * m:
+                hit, te = h, prev_te + sign * (m - h[0])
+        if hit is None:
+            w = policy.CONTACT_SEARCH_START_RAD
+            while True:
+                h = self._hits(phi, theta, sign, w)
+                if math.isfinite(h[0]) or w >= policy.MOTION_MAX_FREE_ANGLE_RAD:
+                    break
+                w = min(4.0 * w, policy.MOTION_MAX_FREE_ANGLE_RAD)
+            if not math.isfinite(h[0]):
+                return math.nan, -1, -1, -1, np.full(2, np.nan)
+            hit, te = h, -sign * h[0]
+        _, side, v, e, t = hit
+        # contact point in each body frame
+        phi_a = phi + te
+        if side == 1:
+            p_dvn = self.dvn.points[v]
+            p_drv = _world_to_driver(_driven_to_world(p_dvn, phi_a), theta, self.L)
+        else:
+            a, b = self.dvn.seg_a[e], self.dvn.seg_b[e]
+            p_dvn = a + t * (b - a)
+            p_drv = self.drv.points[v]
+        kind = self._kind(side, v, e, t)
+        tooth_dvn = _nearest_tooth(self.driven_teeth, math.atan2(p_dvn[1], p_dvn[0]))
+        tooth_drv = _nearest_tooth(self.driver_teeth, math.atan2(p_drv[1], p_drv[0]))
+        return te, kind, tooth_drv, tooth_dvn, np.asarray(p_dvn, float)
+
+    def _kind(self, side: int, v: int, e: int, t: float) -> int:
+        """Contact kind code: the vertex's own corner, else a corner of the other outline within
+        ``policy.CONTACT_CORNER_NEAR_MM`` of the hit on its edge, else flank."""
+        near = policy.CONTACT_CORNER_NEAR_MM
+        if side == 1:   # driven vertex v on driver edge e
+            own, own_turn, other, other_turn, oo = self.corner_dvn, self.turn_dvn, self.corner_drv, self.turn_drv, self.drv
+            own_code, other_code = 2, 1
+        else:
+            own, own_turn, other, other_turn, oo = self.corner_drv, self.turn_drv, self.corner_dvn, self.turn_dvn, self.dvn
+            own_code, other_code = 1, 2
+        if own[v]:
+            return own_code if own_turn[v] > 0 else own_code + 2
+        L = oo.seg_len[e]
+        for idx, dist in ((e, t * L), (oo.nxt[e], (1.0 - t) * L)):
+            if other[idx] and dist <= near:
+                return other_code if other_turn[idx] > 0 else other_code + 2
+        return 0
+
+
+def _driven_to_world(p, phi_a):
+    return _rot(-phi_a) @ np.asarray(p, float)
+
+
+def _world_to_driver(p, theta, L):
+    return _rot(-theta) @ (np.asarray(p, float) - (L, 0.0))
+
+
+@dataclass(frozen=True)
+class Stretch:
+    """A stretch of the cycle whose driven speed departs from the law's or whose contact is on a corner."""
+
+    theta_from_deg: float
+    theta_to_deg: float
+    phi_from_rad: float
+    phi_to_rad: float
+    kinds: tuple
+    driver_teeth: tuple
+    driven_teeth: tuple
+    speed_min: float   #: least driven speed over the law's in the stretch
+    speed_max: float
+
+
+@dataclass
+class ContactLaw:
+    """The resolved loaded contact of one direction over a span of the law (arrays over the samples, sorted)."""
+
+    direction: int
+    phi: np.ndarray
+    theta: np.ndarray
+    te: np.ndarray
+    kind: np.ndarray
+    driver_tooth: np.ndarray
+    driven_tooth: np.ndarray
+    evaluations: int
+    step_window: float = field(default=policy.CONTACT_STEP_WINDOW_RAD)
+
+    @property
+    def name(self) -> str:
+        return "drive" if self.direction == DRIVE else "reverse"
+
+    @property
+    def ok(self) -> np.ndarray:
+        return np.isfinite(self.te)
+
+    def _state(self) -> np.ndarray:
+        return np.stack([self.kind, self.driver_tooth, self.driven_tooth], axis=1)
+
+    @property
+    def slope(self) -> np.ndarray:
+        """Chord slope d te / d phi of every interval between neighbouring samples."""
+        return np.diff(self.te) / np.diff(self.phi)
+
+    @property
+    def speed(self) -> np.ndarray:
+        """Driven speed over the law's at the same driver angle on every interval: 1 + d te / d phi."""
+        return 1.0 + self.slope
+
+    @property
+    def speed_min(self) -> float:
+        return float(np.nanmin(self.speed))
+
+    @property
+    def speed_max(self) -> float:
+        return float(np.nanmax(self.speed))
+
+    @property
+    def te_pp(self) -> float:
+        te = self.te[self.ok]
+        return float(np.ptp(te)) if len(te) else math.nan
+
+    def _interval_state(self):
+        """Per interval: the state of both ends when they agree, else None (an interval holding a change)."""
+        st = self._state()
+        same = np.all(st[1:] == st[:-1], axis=1)
+        return st[:-1], same
+
+    @property
+    def edge_share(self) -> float:
+        """Share of the driver's turning over the span with the contact on a corner (intervals whose ends are
+        both on a corner; a change interval counts half to each side)."""
+        dth = np.diff(self.theta)
+        k0, k1 = self.kind[:-1] != 0, self.kind[1:] != 0
+        w = 0.5 * (k0.astype(float) + k1.astype(float))
+        return float(np.sum(w * dth) / np.sum(dth))
+
+    def events(self) -> list[tuple[float, float, float, tuple, tuple]]:
+        """Every change of state: (phi, speed before, speed after, state before, state after); the speeds are
+        the chord slopes over at least ``step_window`` of driven angle on each side within one state."""
+        st = self._state()
+        sp = self.speed
+        out = []
+        change = np.nonzero(np.any(st[1:] != st[:-1], axis=1))[0]
+        for i in change:
+            before = self._side_speed(i, -1, st[i])
+            after = self._side_speed(i + 1, 1, st[i + 1])
+            if before is None or after is None:
+                continue
+            out.append((float(0.5 * (self.phi[i] + self.phi[i + 1])), before, after,
+                        tuple(int(x) for x in st[i]), tuple(int(x) for x in st[i + 1])))
+        del sp
+        return out
+
+    def _side_speed(self, j: int, way: int, state) -> float | None:
+        """Chord speed from sample j over at least step_window within ``state`` (way -1: backwards)."""
+        st = self._state()
+        k = j
+        n = len(self.phi)
+        while 0 <= k + way < n and np.all(st[k + way] == state) and abs(self.phi[k + way] - self.phi[j]) < self.step_window:
+            k += way
+        if 0 <= k + way < n and np.all(st[k + way] == state):
+            k += way
+        if k == j:
+            return None
+        a, b = (k, j) if way < 0 else (j, k)
+        if not (math.isfinite(self.te[a]) and math.isfinite(self.te[b])):
+            return None
+        return 1.0 + (self.te[b] - self.te[a]) / (self.phi[b] - self.phi[a])
+
+    @property
+    def step_max(self) -> float:
+        """Largest change of the driven speed (over the law's) across a change of contact state."""
+        ev = self.events()
+        return max((abs(b - a) for _, a, b, _, _ in ev), default=0.0)
+
+    def step_at(self) -> tuple[float, float] | None:
+        """(phi, driver angle) of the largest step."""
+        ev = self.events()
+        if not ev:
+            return None
+        k = int(np.argmax([abs(b - a) for _, a, b, _, _ in ev]))
+        phi = ev[k][0]
+        return phi, float(np.interp(phi, self.phi, self.theta))
+
+    def stretches(self, speed_tol: float = policy.CONTACT_STRETCH_SPEED_TOL) -> list[Stretch]:
+        """The runs of intervals whose speed departs from the law's by more than ``speed_tol`` or whose contact
+        is on a corner, merged when they touch."""
+        sp = self.speed
+        bad = (np.abs(sp - 1.0) > speed_tol) | (self.kind[:-1] != 0) | (self.kind[1:] != 0)
+        bad &= np.isfinite(sp)
+        out = []
+        i, n = 0, len(sp)
+        while i < n:
+            if not bad[i]:
+                i += 1
+                continue
+            j = i
+            while j + 1 < n and bad[j + 1]:
+                j += 1
+            sl = slice(i, j + 2)
+            kinds = tuple(sorted({KINDS[k] for k in self.kind[sl] if k >= 0}))
+            out.append(Stretch(math.degrees(self.theta[i]), math.degrees(self.theta[j + 1]), float(self.phi[i]),
+                               float(self.phi[j + 1]), kinds, tuple(sorted({int(t) for t in self.driver_tooth[sl]})),
+                               tuple(sorted({int(t) for t in self.driven_tooth[sl]})), float(np.min(sp[i:j + 1])),
+                               float(np.max(sp[i:j + 1]))))
+            i = j + 1
+        return out
+
+
+def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, direction: int, *,
+                    step_driver_rad: float | None = None, h_min: float = policy.CONTACT_EVENT_STEP_RAD,
+                    max_evals: int = policy.CONTACT_EVALUATIONS_MAX) -> ContactLaw:
+    """The loaded contact of ``direction`` over phi0..phi1 (driven law angles): sampled every
+    ``step_driver_rad`` of driver angle (default ``policy.CONTACT_STEP_DRIVER_DEG``) and every change of state
+    bisected down to ``h_min`` (see the module docstring); at most ``max_evals`` measurements."""
+    step = step_driver_rad if step_driver_rad is not None else math.radians(policy.CONTACT_STEP_DRIVER_DEG)
+    th0, th1 = float(theta_of_phi(np.array([phi0]))[0]), float(theta_of_phi(np.array([phi1]))[0])
+    n = max(2, int(math.ceil(abs(th1 - th0) / step)) + 1)
+    # uniform in driver angle: phi of each theta by interpolation on a fine table, then refined by Newton
+    grid = _phi_of_theta(theta_of_phi, phi0, phi1, np.linspace(th0, th1, n))
+    grid[0], grid[-1] = phi0, phi1
+    samples: dict[float, tuple] = {}
+    evals = 0
+
+    def measure(phis, seed=None, seed_phi=None):
+        nonlocal evals
+        th = np.asarray(theta_of_phi(np.asarray(phis, float)), float)
+        prev, prev_phi = seed, seed_phi
+        out = []
+        for p, t in zip(phis, th):
+            r = pair.contact(float(p), float(t), direction, prev, 0.0 if prev_phi is None else float(p) - prev_phi)
+            evals += 1
+            prev, prev_phi = (r[0], float(p)) if math.isfinite(r[0]) else (None, None)
+            out.append((float(t),) + tuple(r))
+        return out
+
+    for p, r in zip(grid, measure(grid)):
+        samples[float(p)] = r
+    # bisect every interval whose ends differ in state
+    def state(r):
+        return (r[2], r[3], r[4])
+
+    xs = sorted(samples)
+    todo = [(a, b) for a, b in zip(xs[:-1], xs[1:]) if state(samples[a]) != state(samples[b])]
+    while todo and evals < max_evals:
+        mids = []
+        for a, b in todo:
+            if b - a > 2.0 * h_min:
+                mids.append((a, b, 0.5 * (a + b)))
+        if not mids:
+            break
+        nxt = []
+        for a, b, m in mids[:max(0, max_evals - evals)]:
+            r = measure([m], samples[a][1], a)[0]
+            samples[m] = r
+            if state(r) != state(samples[a]):
+                nxt.append((a, m))
+            if state(r) != state(samples[b]):
+                nxt.append((m, b))
+        todo = nxt
+    xs = np.array(sorted(samples))
+    rows = [samples[x] for x in xs]
+    return ContactLaw(direction, xs, np.array([r[0] for r in rows]), np.array([r[1] for r in rows]),
+                      np.array([r[2] for r in rows], int), np.array([r[3] for r in rows], int),
+                      np.array([r[4] for r in rows], int), evals)
+
+
+def _phi_of_theta(theta_of_phi, phi0: float, phi1: float, thetas: np.ndarray) -> np.ndarray:
+    """Driven law angles of the driver angles ``thetas`` (theta increasing with phi): a table of 4097 points,
+    then two Newton steps with a centred difference."""
+    tab = np.linspace(phi0, phi1, 4097)
+    tt = np.asarray(theta_of_phi(tab), float)
+    phi = np.interp(thetas, tt, tab)
+    for _ in range(3):
+        h = 1e-7
+        f = np.asarray(theta_of_phi(phi), float) - thetas
+        df = (np.asarray(theta_of_phi(phi + h), float) - np.asarray(theta_of_phi(phi - h), float)) / (2 * h)
+        phi = phi - f / df
+    return phi
+
+
+def contact_law(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, **kw) -> tuple[ContactLaw, ContactLaw]:
+    """Both directions: (drive, reverse)."""
+    return (resolve_contact(pair, theta_of_phi, phi0, phi1, DRIVE, **kw),
+            resolve_contact(pair, theta_of_phi, phi0, phi1, REVERSE, **kw))

@@ -1,0 +1,175 @@
+"""The pair as built in the report: derived values, checks, the table of stretches that depart from the law and
+the plot of the driven speed in both directions (:mod:`.as_built`)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ...check import Check
+from ...checks.motion.contact_events import KINDS
+from ...laws.law import is_walking
+from .as_built import AsBuilt, as_built, combine
+
+__all__ = ["as_built_values", "as_built_checks", "tooth_height_check", "stretch_rows"]
+
+_STRETCH_COLUMNS = ["direction", "driver_from_deg", "driver_to_deg", "driven_from_deg", "driven_to_deg", "kinds",
+                    "driver_teeth", "driven_teeth", "speed_min_rel", "speed_max_rel"]
+
+
+def _result(dd, built: dict) -> AsBuilt | None:
+    jobs = built.get("as_built")
+    if jobs is None:
+        return as_built(dd.d, dd.mount, built["proof"])
+    if jobs == ():
+        return None
+    return combine(dd.d, jobs[0].result(), jobs[1].result())
+
+
+def tooth_height_check(d, p) -> Check | None:
+    """Every tooth keeps ``p.tooth_height_min_share`` of its addendum (h_a* + x) m (the driver shifted by +x, the
+    driven wheel by -x); the teeth below are named (generated teeth)."""
+    from .design import _rack
+
+    if d.method != "generated":
+        return None
+    share_min = p.tooth_height_min_share
+    h_a_star = _rack(p).h_a_star
+    low, least, shortened = [], (math.inf, ""), 0
+    for gear, x in ((d.driver, p.driver_shift), (d.driven, -p.driver_shift)):
+        h_a = (h_a_star + x) * d.m
+        for k, t in enumerate(gear.teeth):
+            share = t.tip_height_mm / h_a
+            shortened += bool(t.shortened)
+            if share < least[0]:
+                least = (share, f"{gear.role} tooth {k}")
+            if share < share_min:
+                low.append(f"{gear.role} {k} ({share:.3f})")
+    msg = (f"least share of the addendum {least[0]:.3f} ({least[1]}); {shortened} tips shortened where pointed"
+           + (f"; below {share_min:g}: " + ", ".join(low) if low else ""))
+    return Check.at_least("teeth.tooth_height", least[0], share_min, "", msg)
+
+
+def as_built_checks(ab: AsBuilt, p, law_ripple: float | None) -> list[Check]:
+    """The as-built checks, each with its part-file limit."""
+    out = []
+    if ab.hub:
+        lim = law_ripple + p.as_built_ripple_margin
+        dr, rv = ab.hub
+        out.append(Check.at_most("as_built.hub_speed_ripple", ab.ripple, lim, "",
+                                 f"hub speed ripple as built {100 * dr.ripple:.3f} % (drive), {100 * rv.ripple:.3f} % "
+                                 f"(reverse) against the law's {100 * law_ripple:.3f} % + {100 * p.as_built_ripple_margin:g} "
+                                 "points"))
+    steps = []
+    for c in ab.directions:
+        at = c.step_at()
+        steps.append(f"{c.name} {100 * c.step_max:.3f} %" + (f" at driver {math.degrees(at[1]):.3f} deg" if at else ""))
+    out.append(Check.at_most("as_built.speed_step", ab.step_max, p.speed_step_max, "",
+                             "largest change of the driven speed across a change of contact: " + "; ".join(steps)))
+    run, where = ab.corner_run_max_deg()
+    out.append(Check.at_most("as_built.corner_load", run, p.corner_run_max_deg, "deg",
+                             f"longest run of driver angle with the load on a tooth corner {run:.3f} deg"
+                             + (f" ({where})" if where else "") + f"; share of the cycle on a corner "
+                             f"{100 * ab.drive.edge_share:.2f} % (drive), {100 * ab.reverse.edge_share:.2f} % (reverse)"))
+    lost = sum(int(np.count_nonzero(~np.isfinite(c.te))) for c in ab.directions)
+    out.append(Check.at_most("as_built.contact", lost, 0, "samples",
+                             f"{lost} samples without a contact within the largest free rotation"))
+    return out
+
+
+def stretch_rows(ab: AsBuilt) -> list[list]:
+    rows = []
+    for c in ab.directions:
+        for s in c.stretches():
+            rows.append([c.name, s.theta_from_deg, s.theta_to_deg, math.degrees(s.phi_from_rad),
+                         math.degrees(s.phi_to_rad), "; ".join(s.kinds), " ".join(map(str, s.driver_teeth)),
+                         " ".join(map(str, s.driven_teeth)), s.speed_min, s.speed_max])
+    return rows
+
+
+def _plot(w, d, ab: AsBuilt) -> None:
+    from ...export.plots import new_figure
+
+    fig, ax = new_figure()
+    for c, style in zip(ab.directions, ("C0-", "C3-")):
+        x = np.repeat(np.degrees(c.phi), 2)[1:-1]
+        y = np.repeat(c.speed, 2)
+        ax.plot(x, y, style, lw=0.7, label=f"{c.name}: {c.speed_min:.4f} .. {c.speed_max:.4f}")
+    ax.axhline(1.0, color="k", ls="--", lw=0.8, label="the law")
+    ax.set_xlabel("driven angle phi over one period, deg")
+    ax.set_ylabel("driven speed over the law's at the same driver angle")
+    ax.set_title("As built: the driven speed the finished outlines deliver, both directions")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    w.add_plot("as_built_speed", fig)
+    if ab.hub:
+        from .as_built import as_built_speed
+
+        fig, ax = new_figure()
+        mean = d.law.hub_speed_ratio
+        ph = np.linspace(ab.drive.phi[0], ab.drive.phi[-1], 4001)
+        ax.plot(np.degrees(ph), d.run_law.hub_speed(ph) / mean, "k--", lw=0.9,
+                label=f"the law (blend): ripple {100 * d.ripple.ripple:.2f} %")
+        for c, h, style in zip(ab.directions, ab.hub, ("C0-", "C3-")):
+            ok = np.isfinite(c.te)
+            g, v = as_built_speed(d.law, d.run_law, c.phi[ok], c.te[ok])
+            ax.plot(np.degrees(g), v / mean, style, lw=0.6, label=f"as built, {c.name}: ripple {100 * h.ripple:.2f} %")
+        ax.set_xlabel("driven angle phi, deg")
+        ax.set_ylabel("hub speed v/omega over its mean")
+        ax.set_title("As built: hub speed over one leg (seed 000 eq. 2-3)")
+        ax.legend(fontsize=7)
+        fig.tight_layout()
+        w.add_plot("as_built_hub_speed", fig)
+
+
+def as_built_values(w, dd, built: dict) -> None:
+    """Derived values, checks, the stretches' table, plots and a note of the pair as built."""
+    d, p = dd.d, dd.p
+    ab = _result(dd, built)
+    hc = tooth_height_check(d, p)
+    if hc is not None:
+        w.add_checks([hc])
+    if ab is None:
+        w.add_note("As built: not measured - the proof found phases without a running position (jam).")
+        return
+    walking = is_walking(d.law)
+    w.add_checks(as_built_checks(ab, p, d.ripple.ripple if walking else None))
+    dr, rv = ab.drive, ab.reverse
+    vals = {
+        "te_min_rad": float(np.nanmin(dr.te)), "te_max_rad": float(np.nanmax(dr.te)), "te_pp_rad": dr.te_pp,
+        "te_pp_reverse_rad": rv.te_pp,
+        "backlash_min_mm": ab.backlash_min_mm, "backlash_max_mm": ab.backlash_max_mm,
+        "backlash_min_phi_deg": math.degrees(ab.backlash_min_phi),
+        "speed_as_built_min": dr.speed_min, "speed_as_built_max": dr.speed_max,
+        "speed_as_built_reverse_min": rv.speed_min, "speed_as_built_reverse_max": rv.speed_max,
+        "speed_step_max": dr.step_max, "speed_step_reverse_max": rv.step_max,
+        "corner_contact_share": dr.edge_share, "corner_contact_reverse_share": rv.edge_share,
+        "corner_run_max_deg": ab.corner_run_max_deg()[0],
+        "as_built_span_deg": math.degrees(ab.span), "as_built_evaluations": ab.evaluations,
+        "as_built_stretches": len(stretch_rows(ab)),
+    }
+    if walking:
+        h0, h1 = ab.hub
+        vals.update({"speed_ripple_as_built": ab.ripple, "speed_ripple_as_built_drive": h0.ripple,
+                     "speed_ripple_as_built_reverse": h1.ripple, "speed_as_built_min_rel": h0.v_min_rel,
+                     "speed_as_built_max_rel": h0.v_max_rel, "speed_as_built_phi_min_deg": math.degrees(h0.phi_min),
+                     "speed_as_built_phi_max_deg": math.degrees(h0.phi_max)})
+    w.derived.update(vals)  # their meanings: the part type's glossary (AS_BUILT)
+    w.add_table("as_built_stretches", _STRETCH_COLUMNS, stretch_rows(ab))
+    _plot(w, d, ab)
+    from ... import policy
+
+    hub = (f"hub speed ripple as built {100 * ab.hub[0].ripple:.2f} % (drive) and {100 * ab.hub[1].ripple:.2f} % "
+           f"(reverse) against the law's {100 * d.ripple.ripple:.2f} %; " if walking else "")
+    w.add_note(
+        f"As built: both directions' loaded contact on the finished outlines at the installed centre distance, "
+        f"sampled every {policy.CONTACT_STEP_DRIVER_DEG:g} deg of driver over one period ({math.degrees(ab.span):.1f} "
+        f"deg of the driven wheel) and every change of the tooth pair or contact kind ({', '.join(KINDS)}) located "
+        f"to {policy.CONTACT_EVENT_STEP_RAD:g} rad ({ab.evaluations} contact positions): {hub}driven speed over the "
+        f"law's {dr.speed_min:.4f} .. {dr.speed_max:.4f} (drive), {rv.speed_min:.4f} .. {rv.speed_max:.4f} "
+        f"(reverse); largest step at a change of contact {100 * ab.step_max:.2f} %; transmission error "
+        f"peak-to-peak {dr.te_pp:.3e} rad (drive), {rv.te_pp:.3e} rad (reverse); least backlash "
+        f"{ab.backlash_min_mm:.4f} mm; load on a corner {100 * dr.edge_share:.2f} % / {100 * rv.edge_share:.2f} % "
+        f"of the cycle.  tables/as_built_stretches.csv lists every stretch whose speed is off the law's by more than "
+        f"{100 * policy.CONTACT_STRETCH_SPEED_TOL:g} % or whose contact is on a corner.")
