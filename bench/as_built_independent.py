@@ -19,8 +19,11 @@ How it works
     is placed at theta, both outlines are cropped to a box around the pitch point, and
     the driven wheel is turned away from the law position phi until the outlines first
     touch (overlap area > 1e-9 mm^2), bisected to --tol rad:
-      drive   = turned back (te < 0): the driver's loaded flanks push the driven forward,
-      reverse = turned forward (te > 0).
+      drive   = turned back (te < 0).  Why: at the pitch point (r_H, 0) the driver turning
+                +theta (about (L, 0)) moves in -y, and so does the driven wheel going
+                forward (turned -phi); the driver's loaded flank pushes the driven flank
+                lying on its -y side, and turning the driven back (+y) closes that gap;
+      reverse = turned forward (te > 0), the other flanks.
     te = actual driven angle - phi.  The search is warm-started from the previous sample.
   * Speeds are secants between consecutive samples: 1 + d te / d phi.  Hub speed
     v/omega = (A + 3 b cos 2w) (1 + te') / U(phi), w = phi + te wrapped into [-P/2, P/2);
@@ -73,7 +76,7 @@ def polar_radius(xy, ang):
     """Radius of a star-shaped closed curve (about the origin) at polar angles ang."""
     a = np.arctan2(xy[:, 1], xy[:, 0])
     o = np.argsort(a)
-    r = np.hypot(xy[o, 0], xy[o, 1])
+    r = np.hypot(xy[:, 0], xy[:, 1])
     return np.interp(np.mod(ang + np.pi, 2 * np.pi) - np.pi, a[o], r[o], period=2 * np.pi)
 
 
@@ -108,6 +111,7 @@ class Mesh:
 
     def __init__(self, drv, dvn, L, law, half):
         self.drv, self.dvn, self.L, self.law, self.half = drv, dvn, L, law, half
+        self.jams = 0  # placements whose outlines overlap at the law's own position
 
     def place(self, th):
         phi = float(self.law.phi_of(th))
@@ -127,6 +131,7 @@ class Mesh:
     def contact(self, s, guess, tol, dt=3e-4, tmax=0.05):
         """First touch turning the driven by s*t, t >= 0, from the law position; te or nan."""
         if self.overlap(0.0):
+            self.jams += 1
             return np.nan
         t0 = max(s * guess, 0.0) if np.isfinite(guess) else 0.0
         lo = max(t0 - dt, 0.0)
@@ -162,7 +167,7 @@ def speeds(law, th, phi, te, A, b):
     pm, tm = 0.5 * (phi[1:] + phi[:-1]), 0.5 * (te[1:] + te[:-1])
     sp = 1.0 + np.diff(te) / np.diff(phi)
     w = np.mod(pm + tm + law.P / 2, law.P) - law.P / 2
-    hub = (A + 3 * b * np.cos(2 * np.pi / law.P * w)) * sp / law.U(pm)
+    hub = (A + 3 * b * np.cos(2 * w)) * sp / law.U(pm)
     return pm, sp, hub
 
 
@@ -175,6 +180,7 @@ def main():
     ap.add_argument("--tol", type=float, default=1e-8, help="bisection tolerance, rad")
     ap.add_argument("--crop-mm", type=float, default=None, help="half size of the mesh box (default 4 m)")
     ap.add_argument("--refine", type=int, default=10)
+    ap.add_argument("--csv", type=Path, default=None, help="write the samples (theta, phi, te drive, te reverse)")
     args = ap.parse_args()
     t_start = time.time()
     man = json.loads((args.build / "manifest.json").read_text())
@@ -200,11 +206,14 @@ def main():
     e_r = np.max(np.abs(polar_radius(ref_r, np.pi - tab["theta_rad"]) - tab["r_mm"]))
     e_m = np.max(np.abs(polar_radius(ref_r, np.pi + tab["theta_rad"]) - tab["r_mm"]))
     e_U = np.max(np.abs(law.U(tab["phi_rad"]) - tab["ratio_U"]))
+    hub_law = (A + 3 * b * np.cos(2 * tab["phi_rad"])) / tab["ratio_U"]
+    e_hub = np.max(np.abs(hub_law - tab["hub_speed_mm_per_rad"]))
     e_L = np.max(np.abs(tab["r_H_mm"] + tab["r_mm"] - L))
     print(f"check: REF driven r(phi) vs r_H {e_h:.1e} mm; REF driver r(pi-theta) vs r {e_r:.1e} mm "
-          f"(mirrored {e_m:.1e}); r_H + r - L {e_L:.1e} mm; spline U vs table {e_U:.1e}")
+          f"(mirrored {e_m:.1e});\n       r_H + r - L {e_L:.1e} mm; spline U vs table {e_U:.1e}; (A + 3b cos 2phi)/U vs table "
+          f"hub speed {e_hub:.1e} mm/rad; law ripple from table {np.ptp(hub_law) / (A / u):.6f}")
 
-    m = d["module_mm"] if "module_mm" in d else 2.0
+    m = d.get("module_mm", 2.0)
     mesh = Mesh(drv, dvn, L, law, args.crop_mm or 4 * m)
     th0 = float(law.theta(args.start_deg * math.pi / 180))
     span = math.radians(args.span_deg) if args.span_deg else n * law.P
@@ -239,8 +248,10 @@ def main():
     arr = np.array([data[k] for k in keys])
     th = th0 + dth / R * keys
     phi, ted, ter = arr.T
+    if args.csv:
+        np.savetxt(args.csv, np.column_stack([th, arr]), delimiter=",", fmt="%.12g",
+                   header="theta_rad,phi_rad,te_drive_rad,te_reverse_rad", comments="")
 
-    rows = []
     res_dir = {}
     for name, te, pre in (("drive", ted, ""), ("reverse", ter, "reverse_")):
         ok = np.isfinite(te)
@@ -280,7 +291,7 @@ def main():
     partial = span < n * law.P - 1e-9
     print(f"\ndriver span {span_deg:.3f} deg from phi = {args.start_deg} deg, step {math.degrees(dth):.4f} deg, "
           f"{len(res)} coarse + {nref} refined samples ({len(centres)} windows), tol {args.tol:g} rad, "
-          f"no contact: drive {r['bad']}, reverse {q['bad']}"
+          f"no contact: drive {r['bad']}, reverse {q['bad']} (of which overlapping at the law: {mesh.jams})"
           + ("  [PARTIAL span: manifest values cover the full period]" if partial else ""))
     print(f"{'quantity':32s} {'independent':>14s} {'manifest':>14s}  {'diff':>11s}  accept")
     for name, mine, theirs, kind, lim in table:

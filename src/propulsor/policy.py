@@ -291,9 +291,14 @@ CONTACT_CORNER_TURN_DEG = 20.0
 CONTACT_CORNER_NEAR_MM = 2e-3
 #: a sample is found from its neighbour's contact: the driven wheel placed this far (rad) on the free side of it
 CONTACT_TRACK_MARGIN_RAD = 3e-4
+#: ... at most this far (rad): less than half the backlash of any pair the proofs pass (0.1 mm on 100 mm)
+CONTACT_TRACK_MARGIN_MAX_RAD = 1e-3
 #: first window of a full search from the law's position (rad; grown 4x until a contact is found)
 CONTACT_SEARCH_START_RAD = 3e-3
 #: the speed before / after a change of state is the chord over at least this much driven angle (rad)
 CONTACT_STEP_WINDOW_RAD = 2e-5
 #: a stretch departs from the law where the driven speed is off the law's by more than this share
 CONTACT_STRETCH_SPEED_TOL = 0.01
+#: a tolerance case (parts/noncircular_pair/tolerance.py) samples the whole driven turn every this many degrees
+#: of driver (every change of contact still bisected): about 1/10 of the as-built resolution's cost
+TOLERANCE_STEP_DRIVER_DEG = 0.5

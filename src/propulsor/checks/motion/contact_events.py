@@ -152,15 +152,17 @@ class PairOutlines:
         (driver at theta): the driven wheel turned from the law's position until the outlines touch (direction
         DRIVE: back; REVERSE: on).  te = actual - law (rad); nan where nothing touches within the largest free
         rotation.  ``prev_te``: the te of a sample ``dphi`` away, from which the search starts (a margin of
-        ``policy.CONTACT_TRACK_MARGIN_RAD`` + 2 |dphi| on the free side: te changes by less than |dphi| unless the
-        driven speed is off the law's by more than 100 %)."""
+        ``policy.CONTACT_TRACK_MARGIN_RAD`` + |dphi| / 4 on the free side, at most ``CONTACT_TRACK_MARGIN_MAX_RAD``;
+        a contact found within a fifth of it of the start is searched again from the law's position)."""
         sign = 1.0 if direction == DRIVE else -1.0
         hit = None
         if prev_te is not None and math.isfinite(prev_te):
-            # start a margin on the free side of the neighbouring sample's contact, search a window of twice that
-            m = policy.CONTACT_TRACK_MARGIN_RAD + 2.0 * abs(dphi)
+            # start a margin on the free side of the neighbouring sample's contact (less than the backlash), search
+            # a window of twice that; a contact that moved more than most of the margin to the free side may have
+            # been passed: then the full search
+            m = min(policy.CONTACT_TRACK_MARGIN_RAD + 0.25 * abs(dphi), policy.CONTACT_TRACK_MARGIN_MAX_RAD)
             h = self._hits(phi + prev_te + sign * m, theta, sign, 2.0 * m)
-            if math.isfinite(h[0]) and h[0] > 1e-3 * m:
+            if math.isfinite(h[0]) and 0.2 * m < h[0]:
                 hit, te = h, prev_te + sign * (m - h[0])
         if hit is None:
             w = policy.CONTACT_SEARCH_START_RAD
