@@ -12,7 +12,8 @@ from ...checks.motion.contact_events import KINDS
 from ...laws.law import is_walking
 from .as_built import AsBuilt, as_built, combine
 
-__all__ = ["as_built_values", "as_built_checks", "tooth_height_check", "stretch_rows"]
+__all__ = ["as_built_values", "as_built_checks", "tooth_height_check", "stretch_rows", "tolerance_values",
+           "tolerance_check"]
 
 _STRETCH_COLUMNS = ["direction", "driver_from_deg", "driver_to_deg", "driven_from_deg", "driven_to_deg", "kinds",
                     "driver_teeth", "driven_teeth", "speed_min_rel", "speed_max_rel"]
@@ -132,7 +133,7 @@ def as_built_values(w, dd, built: dict) -> None:
         w.add_checks([hc])
     if ab is None:
         w.add_note("As built: not measured - the proof found phases without a running position (jam).")
-        return
+        return tolerance_values(w, dd, built)
     walking = is_walking(d.law)
     w.add_checks(as_built_checks(ab, p, d.ripple.ripple if walking else None))
     dr, rv = ab.drive, ab.reverse
@@ -173,3 +174,71 @@ def as_built_values(w, dd, built: dict) -> None:
         f"{ab.backlash_min_mm:.4f} mm; load on a corner {100 * dr.edge_share:.2f} % / {100 * rv.edge_share:.2f} % "
         f"of the cycle.  tables/as_built_stretches.csv lists every stretch whose speed is off the law's by more than "
         f"{100 * policy.CONTACT_STRETCH_SPEED_TOL:g} % or whose contact is on a corner.")
+    tolerance_values(w, dd, built)
+
+
+_TOL_COLUMNS = ["case", "dL_um", "e_driver_um", "psi_driver_deg", "e_driven_um", "psi_driven_deg", "t_driver_um",
+                "t_driven_um", "te_pp_drive_rad", "te_pp_reverse_rad", "backlash_min_mm", "backlash_min_phi_deg",
+                "step_max", "step_driver_deg", "lost_samples"]
+
+
+def tolerance_check(tol, worst, step_limit: float) -> Check:
+    """No jam and no loss of contact at the worst case of the tolerances: every corner keeps backlash and a contact
+    at every sample, and no change of contact steps the driven speed by more than ``step_limit``."""
+    bad = []
+    for r in worst:
+        if r.jam:
+            bad.append(f"{r.case.name}: jam (backlash {r.backlash_min_mm:.4f} mm at driven "
+                       f"{math.degrees(r.backlash_min_phi):.2f} deg)")
+        if r.lost or r.step_max > step_limit:
+            bad.append(f"{r.case.name}: contact lost ({r.lost} samples without contact; speed step "
+                       f"{100 * r.step_max:.2f} % at driver {math.degrees(r.step_theta):.2f} deg)")
+    least = min(r.backlash_min_mm for r in worst)
+    msg = (f"least backlash {least:.4f} mm over the worst-case corners of {tol.source}; largest speed step "
+           f"{100 * max(r.step_max for r in worst):.2f} %" + ("; " + "; ".join(bad) if bad else ""))
+    return Check("tolerance.worst_case", not bad, least, 0.0, "mm", msg)
+
+
+def tolerance_rows(results) -> list[list]:
+    return [[r.case.name, 1e3 * r.case.dL, 1e3 * r.case.e_driver, math.degrees(r.case.psi_driver),
+             1e3 * r.case.e_driven, math.degrees(r.case.psi_driven), 1e3 * r.case.t_driver, 1e3 * r.case.t_driven,
+             r.te_pp_drive, r.te_pp_reverse, r.backlash_min_mm, math.degrees(r.backlash_min_phi), r.step_max,
+             math.degrees(r.step_theta), r.lost] for r in results]
+
+
+def tolerance_values(w, dd, built: dict) -> None:
+    """The pair made within the part file's accuracy grade: the cases' table, derived values, the worst-case check."""
+    job = built.get("tolerance")
+    if not job:
+        return
+    tol, jobs = job
+    rs = [j.result() for j in jobs]
+    worst, mc = rs[:4], rs[4:]
+    p = dd.p
+    w.add_checks([tolerance_check(tol, worst, p.speed_step_max)])
+    w.add_table("tolerance_cases", _TOL_COLUMNS, tolerance_rows(rs))
+    vals = {"tolerance_grade": p.tolerance_grade, "tolerance_f_a_mm": tol.f_a,
+            "tolerance_runout_driver_mm": 2 * tol.e_driver, "tolerance_runout_driven_mm": 2 * tol.e_driven,
+            "tolerance_thinning_max_mm": tol.t_hi,
+            "tolerance_backlash_min_mm": min(r.backlash_min_mm for r in worst),
+            "tolerance_te_pp_max_rad": max(max(r.te_pp_drive, r.te_pp_reverse) for r in worst),
+            "tolerance_step_max": max(r.step_max for r in worst), "tolerance_samples": len(mc)}
+    if mc:
+        bl = np.array([r.backlash_min_mm for r in mc])
+        te = np.array([max(r.te_pp_drive, r.te_pp_reverse) for r in mc])
+        vals.update({"tolerance_backlash_min_p5_mm": float(np.percentile(bl, 5)),
+                     "tolerance_backlash_min_p50_mm": float(np.percentile(bl, 50)),
+                     "tolerance_te_pp_p50_rad": float(np.percentile(te, 50)),
+                     "tolerance_te_pp_p95_rad": float(np.percentile(te, 95))})
+    w.derived.update(vals)
+    w.add_note(
+        f"As made ({tol.source}): the as-built transmission of the pair within these tolerances, both directions over "
+        f"the whole driven turn, at the 4 worst-case corners (tight: L - f_a with the thickest teeth; loose: L + f_a "
+        f"with the thinnest; each with the wheels' run-outs in phase and opposed) and {len(mc)} Monte Carlo cases "
+        f"(seed {p.tolerance_seed}): least backlash {vals['tolerance_backlash_min_mm']:.4f} mm at the worst case, "
+        f"transmission error peak-to-peak up to {vals['tolerance_te_pp_max_rad']:.3e} rad, largest speed step "
+        f"{100 * vals['tolerance_step_max']:.2f} %"
+        + (f"; Monte Carlo least backlash 5 % / 50 %: {vals['tolerance_backlash_min_p5_mm']:.4f} / "
+           f"{vals['tolerance_backlash_min_p50_mm']:.4f} mm, TE peak-to-peak 50 % / 95 %: "
+           f"{vals['tolerance_te_pp_p50_rad']:.3e} / {vals['tolerance_te_pp_p95_rad']:.3e} rad" if mc else "")
+        + ".  tables/tolerance_cases.csv lists every case.")

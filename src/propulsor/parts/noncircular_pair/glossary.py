@@ -45,6 +45,19 @@ AS_BUILT = {
     "speed_as_built_max_rel": ("", "largest as-built hub speed over its mean A/u (drive)"),
     "speed_as_built_phi_min_deg": ("deg", "driven angle within a leg of the least as-built hub speed (drive)"),
     "speed_as_built_phi_max_deg": ("deg", "driven angle within a leg of the largest as-built hub speed (drive)"),
+    "tolerance_grade": ("", "ISO 1328 accuracy grade the pair was measured as made within"),
+    "tolerance_f_a_mm": ("mm", "centre-distance allowance +- f_a = IT/2 of the grade (as made)"),
+    "tolerance_runout_driver_mm": ("mm", "radial run-out tolerance F_r of the driver (ISO 1328-2)"),
+    "tolerance_runout_driven_mm": ("mm", "radial run-out tolerance F_r of the driven wheel (ISO 1328-2)"),
+    "tolerance_thinning_max_mm": ("mm", "largest thinning of a flank along its normal (as made)"),
+    "tolerance_backlash_min_mm": ("mm", "least backlash over the worst-case corners of the tolerances"),
+    "tolerance_te_pp_max_rad": ("rad", "largest transmission error peak-to-peak over the worst-case corners"),
+    "tolerance_step_max": ("", "largest speed step at a change of contact over the worst-case corners"),
+    "tolerance_samples": ("", "Monte Carlo cases of the pair as made"),
+    "tolerance_backlash_min_p5_mm": ("mm", "least backlash of the pair as made: 5th percentile of the Monte Carlo"),
+    "tolerance_backlash_min_p50_mm": ("mm", "least backlash of the pair as made: median of the Monte Carlo"),
+    "tolerance_te_pp_p50_rad": ("rad", "transmission error peak-to-peak as made: median of the Monte Carlo"),
+    "tolerance_te_pp_p95_rad": ("rad", "transmission error peak-to-peak as made: 95th percentile of the Monte Carlo"),
 }
 
 GLOSSARY = {

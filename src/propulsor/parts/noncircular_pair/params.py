@@ -123,6 +123,15 @@ class NoncircularPairParams(PartParams):
     tooth_height_min_share: float = param(policy.TOOTH_HEIGHT_MIN_SHARE, "", "least share of its addendum a tooth keeps when its tip is "
                                           "shortened (a lower one is named and fails)", min=0.0, max=1.0,
                                           why="a share of the whole addendum")
+    tolerance_grade: int = param(0, "", "as made: the accuracy grade of ISO 1328 (5 ... 12) whose run-out, centre-"
+                                 "distance and thickness tolerances the as-built transmission is measured within "
+                                 "(worst-case corners and tolerance_samples Monte Carlo cases; a print kit uses its "
+                                 "printer's accuracy instead); 0: not measured", min=0, max=12, integer=True,
+                                 why="ISO 1328's coarsest grade")
+    tolerance_samples: int = param(8, "", "as made: Monte Carlo cases beside the worst-case corners", min=0,
+                                   max=200, integer=True, why="about 16 CPU s a case for a pair of 80 teeth")
+    tolerance_seed: int = param(1, "", "as made: the seed of the Monte Carlo cases (the same seed, the same cases)",
+                                min=0, max=2**31 - 1, integer=True, why="a 31-bit seed")
     compare_methods: bool = param(True, "", "prove the other tooth method too (2D, one leg) and report the comparison")
 
     def _validate_law_keys(self) -> None:
@@ -203,6 +212,9 @@ class NoncircularPairParams(PartParams):
     def _validate_common(self, n: int) -> None:
         """The rules of every law: whole driver teeth, the tooth method's inputs, bores."""
         z = self.driven_teeth
+        if 0 < self.tolerance_grade < 5:
+            raise InputError("tolerance_grade", self.tolerance_grade, "must be 0 (not measured) or 5 ... 12 (ISO 1328; "
+                             "the run-out formula holds from grade 5)")
         if z % n:
             raise InputError("driven_teeth", z, f"must be a multiple of driver_turns = {n} (whole driver teeth)",
                              f"nearest valid: {max(n, z // n * n)}, {(z // n + 1) * n}")

@@ -123,4 +123,11 @@ def proofs(dd: PairDesign, w, built: dict) -> None:
         prog("as built: both directions' contact on the finished outlines, resolved by contact events")
         # the two directions beside each other and beside the other method's proof
         built["as_built"] = (start(contact_direction, d, dd.mount, DRIVE), start(contact_direction, d, dd.mount, REVERSE))
+        if p.tolerance_grade:
+            from .tolerance import iso1328, monte_carlo_cases, run_case, worst_cases
+
+            tol = iso1328(d, dd.mount, p.tolerance_grade, math.radians(p.pressure_angle_deg))
+            prog(f"as made: {4 + p.tolerance_samples} cases within {tol.source}")
+            cases = worst_cases(tol) + monte_carlo_cases(tol, p.tolerance_samples, p.tolerance_seed)
+            built["tolerance"] = (tol, [start(run_case, d, dd.mount, c) for c in cases])
     built["other"] = compare(p, d, prog) if p.compare_methods else (None, None, "")
