@@ -302,3 +302,6 @@ CONTACT_STRETCH_SPEED_TOL = 0.01
 #: a tolerance case (parts/noncircular_pair/tolerance.py) samples the whole driven turn every this many degrees
 #: of driver (every change of contact still bisected): about 1/10 of the as-built resolution's cost
 TOLERANCE_STEP_DRIVER_DEG = 0.5
+#: dimensional accuracy of a desktop FDM print in xy (mm): every edge within +- this of the drawn one (0.1 ... 0.2;
+#: the tolerance study of a print kit)
+PRINT_XY_ACCURACY_MM = 0.15

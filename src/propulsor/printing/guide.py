@@ -94,7 +94,10 @@ def write_guide(kit, w, plans, items, sliced: bool, title: str) -> None:
               f"`--set press_fit_mm={p.press_fit_mm + 0.05:g}` (or a drop of glue).",
               f"- Gears that grind: `--set backlash_mm={p.backlash_mm + 0.1:g}`; gears that knock: "
               f"`{max(0.1, p.backlash_mm - 0.1):g}`.",
-              "", "The proofs of the printed geometry are in [print_report.md](print_report.md).", ""]
+              ""]
+    if kit.guide_notes:
+        lines += ["## 6. As printed", ""] + [md_text(t) + "\n" for t in kit.guide_notes]
+    lines += ["The proofs of the printed geometry are in [print_report.md](print_report.md).", ""]
     path = w.path("print_guide.md")
     path.write_text("\n".join(lines), encoding="utf-8")
     w.path("print_guide.html")

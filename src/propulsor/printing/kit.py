@@ -87,6 +87,8 @@ class Kit:
     #: checks of the kit that fail as the part file documents (its [meta] expected_failures, e.g. the
     #: papers' sector teeth that jam): reported as documented, like the part's own
     expected_failures: list[str] = field(default_factory=list)
+    #: paragraphs of the guide's section "As printed": the printed pair within the printer's accuracy
+    guide_notes: list[str] = field(default_factory=list)
 
 
 def plate_checks(kit: Kit, plates, flat: dict) -> list[Check]:

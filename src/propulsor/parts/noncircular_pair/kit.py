@@ -119,6 +119,32 @@ def _found_law(p: NoncircularPairParams, d) -> NoncircularPairParams:
                                shaper_own_x0=True, shaper_x0=d.shaper.x0)
 
 
+def _as_printed(p: NoncircularPairParams, kd, printer: Printer) -> tuple[list, list[str]]:
+    """With the part file's tolerance_grade set: the printed pair within the printer's xy accuracy and the pins'
+    running clearance (``tolerance.printed``), its worst-case corners and Monte Carlo cases: (checks, guide text)."""
+    from ... import policy
+    from .as_built_outputs import tolerance_check
+    from .tolerance import monte_carlo_cases, printed, run_case, worst_cases
+
+    if not p.tolerance_grade or kd.d.method != "generated":
+        return [], []
+    tol = printed(policy.PRINT_XY_ACCURACY_MM, printer.running_clearance_mm)
+    worst = [run_case(kd.d, kd.mount, c) for c in worst_cases(tol)]
+    mc = [run_case(kd.d, kd.mount, c) for c in monte_carlo_cases(tol, p.tolerance_samples, p.tolerance_seed)]
+    chk = tolerance_check(tol, worst, p.speed_step_max)
+    text = [f"The printed pair within {tol.source}: least backlash {min(r.backlash_min_mm for r in worst):.3f} mm "
+            f"at the worst case ({'; '.join(f'{r.case.name} {r.backlash_min_mm:.3f} mm' for r in worst)})."]
+    if mc:
+        bl = sorted(r.backlash_min_mm for r in mc)
+        jams = sum(r.jam for r in mc)
+        text.append(f"Of {len(mc)} printed pairs drawn within these tolerances (seed {p.tolerance_seed}) {jams} jam; "
+                    f"their least backlash runs from {bl[0]:.3f} to {bl[-1]:.3f} mm.")
+    text.append("It runs as drawn at every corner." if chk.passed else
+                f"At the worst case it does not: {chk.message}. Print the clearance coupon first (section 3); where "
+                f"it shows your printer over-sizing, give the gears more backlash (--set backlash_mm=...).")
+    return [chk], text
+
+
 def _documented_jam(source, prefix: str) -> list[str]:
     """The kit's motion checks, when the part file documents that its teeth jam ([meta] expected_failures
     holds <prefix>.runs_without_jam): the printed pair overlaps for the same reason."""
@@ -280,9 +306,11 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
                 Placed("handle", "handle", place(dx=L + r_h, dz=z0), "tab:red")][:6 if handle_printed else 5]
     assembly += rings_at
     prefix = "mesh" if d.method == "generated" else "sectors"
+    printed_tol = _as_printed(p, kd, printer)
     checks = [Check.at_most(f"{prefix}.overlap_area", s["overlap_law_max_mm2"], 1e-6, "mm^2",
                             f"printed outlines over {s['steps']} phases of the whole cycle")]
     checks += checks_common(proof, prefix)
+    checks += printed_tol[0]
     checks.append(Check.at_least(f"{prefix}.print_backlash_min", jn_min, printer.backlash_mm, "mm",
                                  f"least normal backlash of the printed teeth over the cycle (circumferential "
                                  f"{s['backlash_min_mm']:.4f} mm × cos α); designed j_n = {j_n:.4f} mm"))
@@ -322,6 +350,7 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
                f"Turn the handle: each driver turn the next of the driven wheel's {n} marks reaches the line of centres; "
                f"{n} turns bring the driven wheel once round, its speed varying as the walking law asks."],
         expected_failures=_documented_jam(source, prefix),
+        guide_notes=printed_tol[1],
         notes=[] if not _documented_jam(source, prefix) else [
             "The part file documents that the papers' sector teeth jam (its [meta] expected_failures); the kit "
             "prints those teeth at print scale with the printer's backlash, and they still overlap: printed, the "
