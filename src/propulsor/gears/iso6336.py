@@ -10,8 +10,9 @@ Contact (ISO 6336-2:2006 eq. 1–3, 9, 10, 18, 25):
     Z_H  = √(2·cos α_w / (cos² α·sin α_w)),   Z_E = √(1/(π·((1 − ν1²)/E1 + (1 − ν2²)/E2)))
     Z_ε  = √((4 − ε_α)/3),   Z_β = 1 (spur)
     Z_B  = max(1, M_1),  M_1 = tan α_w / √((√(d_a1²/d_b1² − 1) − 2π/z1)·(√(d_a2²/d_b2² − 1) − (ε_α − 1)·2π/z2))
-           (external mates; Z_B = 1 for an internal mate, ISO 6336-2 5.1)
-    Z_D  = max(1, M_2) for the wheel (M_1 with pinion and wheel exchanged); σ_H of the wheel = Z_D·σ_H0·√(...)
+           (ISO 6336-2:2019, 6.2; an internal wheel with z2 < 0: its bracket √(d_a2²/d_b2² − 1) + (ε_α − 1)·2π/|z2|)
+    Z_D  = max(1, M_2) for the wheel (M_1 with pinion and wheel exchanged), 1 for an internal wheel;
+           σ_H of the wheel = Z_D·σ_H0·√(...)
 
 Tooth root (ISO 6336-3:1996 eq. 2–3, method C: load applied at the tip, d_en = d_a):
 
@@ -93,18 +94,24 @@ def z_eps(eps_alpha: float) -> float:
 
 
 def z_b(alpha_w, d_a1, d_b1, z1, d_a2, d_b2, z2, eps_alpha, internal: bool) -> float:
-    """Single pair contact factor Z_B of the pinion (ISO 6336-2 eq. 3–5); 1 for an internal mate."""
-    if internal:
-        return 1.0
+    """Single pair contact factor Z_B of the pinion, ISO 6336-2:2019, 6.2 (spur gears, ε_β = 0): Z_B = max(1, M_1),
+
+        M_1 = tan α_w / √((√(d_a1²/d_b1² − 1) − 2π/z1)·(√(d_a2²/d_b2² − 1) − (ε_α − 1)·2π/z2))
+
+    the ratio of the radii of curvature at the pitch point to those at the pinion's inner point of single pair
+    contact B.  An internal wheel enters with the standard's sign convention (z2, d_a2, d_b2 negative), so its
+    second bracket becomes √(d_a2²/d_b2² − 1) + (ε_α − 1)·2π/|z2|: the ring's (concave) radius of curvature at B,
+    its tip point moved (ε_α − 1) base pitches into the path of contact.  Only Z_D of an internal wheel is 1."""
     f1 = math.sqrt((d_a1 / d_b1) ** 2 - 1.0) - 2.0 * math.pi / z1
-    f2 = math.sqrt((d_a2 / d_b2) ** 2 - 1.0) - (eps_alpha - 1.0) * 2.0 * math.pi / z2
+    sgn = -1.0 if internal else 1.0
+    f2 = math.sqrt((d_a2 / d_b2) ** 2 - 1.0) - sgn * (eps_alpha - 1.0) * 2.0 * math.pi / z2
     M1 = math.tan(alpha_w) / math.sqrt(f1 * f2)
     return max(1.0, M1)
 
 
 def z_d(alpha_w, d_a1, d_b1, z1, d_a2, d_b2, z2, eps_alpha, internal: bool) -> float:
-    """Single pair contact factor Z_D of the wheel (ISO 6336-2 eq. 3–5: M_2, the inner point of single
-    contact on the wheel); 1 for an internal wheel."""
+    """Single pair contact factor Z_D of the wheel, ISO 6336-2:2019, 6.2: max(1, M_2), M_2 being M_1 with pinion
+    and wheel exchanged (the wheel's inner point of single contact D); 1 for an internal wheel (6.2)."""
     if internal:
         return 1.0
     return z_b(alpha_w, d_a2, d_b2, z2, d_a1, d_b1, z1, eps_alpha, False)

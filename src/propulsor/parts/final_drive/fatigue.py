@@ -103,7 +103,8 @@ def fatigue_rows(p, ps, sp, pr, v: float):
             ("Z_E", s.Z_E, "√MPa", "steel on steel: E = 206 000 MPa, ν = 0.3 both"),
             ("Z_eps", s.Z_eps, "", f"√((4 − ε_α)/3), ε_α = {s.eps_alpha:.4f}"),
             ("Z_beta", 1.0, "", "β = 0"),
-            ("Z_B", s.Z_B, "", f"{g1}: max(1, M_1)" + (" (internal mate: 1)" if mesh.internal else "")),
+            ("Z_B", s.Z_B, "", f"{g1}: max(1, M_1)" + (" with the ring's internal geometry (z2, d_a2, d_b2 < 0)"
+                                                         if mesh.internal else "")),
             ("Z_D", s.Z_D, "", f"{g2}: max(1, M_2)" + (" (internal wheel: 1)" if mesh.internal else "")),
             ("sigma_H0", s.sigma_H0, "MPa", "Z_H·Z_E·Z_ε·Z_β·√(F_t/(d_1·b)·(u + 1)/u)"),
         ]]
