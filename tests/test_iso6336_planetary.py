@@ -51,3 +51,45 @@ def test_z_b_of_the_planet_in_the_ring_mesh_is_m1_with_the_rings_internal_geomet
     assert s.eps_alpha == pytest.approx(eps, rel=1e-12)
     assert s.Z_B == pytest.approx(M1, rel=1e-12) and s.Z_D == 1.0
     assert s.sigma_H == pytest.approx(M1 * s.sigma_H_wheel, rel=1e-12)
+
+
+def test_sun_f_sh_takes_the_torque_of_all_three_meshes():
+    """ISO 6336-1:2019, clause 7, method C: f_sh = 0.023·(F_m/b)·(b/d_1)² is the pinion body's torsional wind-up
+    under the torque it carries.  The sun meshes with three planets over the same face width, so its body twists
+    under three meshes' torque: f_sh = 0.023·(3·F_m/b)·(b/d_1)².  By hand, b = 75 mm, d_1 = 160 mm, grade 6:
+
+        F_t = 2000·T/d_1 = 2000·7466.93/160 = 93 331.6 N;  F_t/b = 1244.4 N/mm
+        K_v = 1 + (14.9/(F_t/b) + 0.0193)·v·z_1/100·√(u²/(1 + u²)),  u = 20/16 = 1.25  → 1.0097
+        F_m/b = F_t·K_v/b = 1256.6 N/mm;  f_sh = 0.023·3·1256.6·(75/160)² = 19.05 µm   (one mesh: 6.35 µm)
+        f_ma = f_Hβ(ISO 1328-1, d = 160, b = 75, grade 6) = (0.07·√160 + 0.45·√75 + 3)·√2 = 11.01 µm
+        F_βx = 1.33·f_sh + f_ma = 36.35 µm;  F_βy = 0.85·F_βx (y_β = 0.15·F_βx < 6 µm) = 30.90 µm
+        K_Hβ = 1 + c_γβ·F_βy/(2·F_m/b) = 1 + 0.85·20·30.90/(2·1256.6) = 1.209   (one mesh's torque: 1.112)
+    """
+    ps = _set()
+    F_t = 2000.0 * T_MESH / 160.0
+    K_v = 1.0 + (14.9 / (F_t / 75.0) + 0.0193) * V_REL * 16 / 100.0 * math.sqrt(1.25 ** 2 / (1.0 + 1.25 ** 2))
+    Fm_b = F_t * K_v / 75.0
+    f_sh = 0.023 * 3 * Fm_b * (75.0 / 160.0) ** 2
+    f_ma = (0.07 * math.sqrt(160.0) + 0.45 * math.sqrt(75.0) + 3.0) * math.sqrt(2.0)
+    F_bx = 1.33 * f_sh + f_ma
+    K_Hb = 1.0 + 0.85 * 20.0 * (F_bx - 0.15 * F_bx) / (2.0 * Fm_b)
+    assert round(K_Hb, 3) == 1.209
+    s = mesh_stress(ps.mesh_sun_planet, ps.d_a_sun, ps.d_a_planet, 75.0,
+                    MeshLoad(T_MESH, V_REL, 1.0, 6, pinion_torsion=True, pinion_meshes=3))
+    assert s.face.f_sh == pytest.approx(f_sh, rel=1e-12) and s.K_Hbeta == pytest.approx(K_Hb, rel=1e-12)
+
+
+def test_the_final_drive_passes_the_planet_count_to_the_suns_wind_up():
+    """The part's own stresses: the sun–planet mesh's f_sh is three meshes' (see above), at the part's face width."""
+    from propulsor.params import load_params, read_part_file
+    from propulsor.parts.final_drive import FinalDriveParams
+    from propulsor.parts.final_drive.design import planetary_set
+    from propulsor.parts.final_drive.strength import mesh_stresses
+    from pathlib import Path
+
+    _, mp = read_part_file(Path(__file__).resolve().parents[1] / "parts" / "final_drive_thesis.toml")
+    p = load_params(FinalDriveParams, mp)
+    sp, _ = mesh_stresses(p, planetary_set(p))
+    # b = 75 mm (the thesis's planets): F_m/b as above, f_sh = 0.023·3·(F_m/b)·(75/160)²
+    assert sp.face.f_sh == pytest.approx(0.023 * 3 * sp.face.F_m_b * (75.0 / 160.0) ** 2, rel=1e-12)
+    assert round(sp.K_Hbeta, 3) == 1.209

@@ -32,8 +32,9 @@ Load factors (ISO 6336-1:2006):
     K_Hβ = 1 + c_γβ·F_βy / (2·F_m/b)  (<= 2; above: √(2·c_γβ·F_βy/(F_m/b))), F_m = F_t·K_A·K_v,
           F_βy = F_βx − y_β,  y_β = 0.15·F_βx (<= 6 µm, hardened),  F_βx = 1.33·f_sh + f_ma (method C),
           f_ma = f_Hβ of ISO 1328-1 at the grade, c_γβ = 0.85·c_γα, c_γα = 20 N/(mm·µm)
-    f_sh = 0.023·(F_m/b)·(b/d_1)²  µm  (ISO 6336-1 method C, the pinion's torsional deformation: the
-          term of a pinion whose shaft bending is nil, as for the floating sun; 0 for a pinion that passes
+    f_sh = 0.023·(n·F_m/b)·(b/d_1)²  µm  (ISO 6336-1:2019 clause 7, method C, the pinion's torsional deformation:
+          the term of a pinion whose shaft bending is nil, as for the floating sun; n the meshes whose torque the
+          pinion's body carries — a sun meshing with n planets twists under all n; 0 for a pinion that passes
           no torque through its body, as a planet on its pin)
     K_Fβ = K_Hβ^N_F,  N_F = (b/h)² / (1 + b/h + (b/h)²),  h = (d_a1 − d_f1)/2
     K_Hα = K_Fα by Table 9 (surface-hardened spur gears, F_t·K_A/b >= 100 N/mm)
@@ -183,10 +184,14 @@ def f_h_beta(d: float, b: float, grade: int) -> float:
     return (0.07 * math.sqrt(d) + 0.45 * math.sqrt(b) + 3.0) * 2.0 ** ((grade - 5) / 2.0)
 
 
-def f_sh_torsion(F_m: float, b: float, d1: float) -> float:
-    """Pinion torsional deformation f_sh, µm, of ISO 6336-1 method C with no shaft bending:
-    0.023·(F_m/b)·(b/d_1)² (F_m in N, b and d_1 in mm)."""
-    return 0.023 * (F_m / b) * (b / d1) ** 2
+def f_sh_torsion(F_m: float, b: float, d1: float, n_meshes: int = 1) -> float:
+    """Pinion torsional deformation f_sh, µm, ISO 6336-1:2019, clause 7, method C, with no shaft bending:
+    0.023·(n·F_m/b)·(b/d_1)² (F_m in N per mesh, b and d_1 in mm).  n: the meshes whose torque the pinion's body
+    carries over the face width — a pinion meshing with several gears (a sun with n planets) twists under
+    the sum of their torques, n·F_m, not under one mesh's."""
+    if int(n_meshes) != n_meshes or n_meshes < 1:
+        raise InputError("n_meshes", n_meshes, "must be a whole number of meshes >= 1")
+    return 0.023 * (n_meshes * F_m / b) * (b / d1) ** 2
 
 
 @dataclass(frozen=True)
@@ -247,13 +252,15 @@ def d_en_single_contact(d_a: float, d_b: float, m: float, alpha: float, eps_alph
 @dataclass(frozen=True)
 class MeshLoad:
     """What loads one mesh: the pinion torque per mesh, the speed, the quality; `pinion_torsion`: the pinion
-    passes its torque through its body (a sun), so its torsional deformation f_sh enters K_Hβ."""
+    passes its torque through its body (a sun), so its torsional deformation f_sh enters K_Hβ; `pinion_meshes`: the
+    number of meshes whose torque that body carries (the sun: every planet's), which f_sh takes as the torque."""
 
     T1: float          # N·m on the pinion (one mesh)
     v: float = 0.0     # m/s at the reference circle (relative to the carrier)
     K_A: float = 1.0
     grade: int = 6
     pinion_torsion: bool = False
+    pinion_meshes: int = 1   # meshes whose torque twists the pinion's body (a sun: the number of planets)
 
 
 @dataclass(frozen=True)
@@ -310,7 +317,7 @@ def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad) -> Mes
     K_v = k_v_method_b(load.v, g1.z, abs(u), F_t / b, load.K_A, load.grade)
     h = 0.5 * (d_a1 - g1.d_f)
     F_m = F_t * load.K_A * K_v
-    f_sh = f_sh_torsion(F_m, b, d1) if load.pinion_torsion else 0.0
+    f_sh = f_sh_torsion(F_m, b, d1, load.pinion_meshes) if load.pinion_torsion else 0.0
     face = face_load_method_c(F_m, b, d1, load.grade, h, f_sh=f_sh)
     K_Hb, K_Fb = face.K_Hbeta, face.K_Fbeta
     K_Ha = k_h_alpha(load.grade)

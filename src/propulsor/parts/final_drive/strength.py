@@ -39,8 +39,10 @@ def mesh_stresses(p, ps, b_sp: float | None = None, b_pr: float | None = None):
     from ...gears.iso6336 import MeshLoad, mesh_stress
 
     T1, v = _loads(p, ps)
-    # the sun passes the whole input torque through its body: its torsional wind-up enters K_Hβ (f_sh)
-    load = MeshLoad(T1, v, p.application_factor_K_A, p.accuracy_grade, pinion_torsion=True)
+    # the sun passes the whole input torque through its body: its torsional wind-up under all n_planets meshes'
+    # torque enters K_Hβ (f_sh, ISO 6336-1 method C)
+    load = MeshLoad(T1, v, p.application_factor_K_A, p.accuracy_grade, pinion_torsion=True,
+                    pinion_meshes=p.n_planets)
     b_sp = min(p.width_sun_mm, p.width_planet_mm) if b_sp is None else b_sp
     b_pr = min(p.width_planet_mm, p.width_ring_mm) if b_pr is None else b_pr
     sp = mesh_stress(ps.mesh_sun_planet, ps.d_a_sun, ps.d_a_planet, b_sp, load)
