@@ -96,6 +96,29 @@ def test_dxf_units_layers_and_one_outer_loop(built):
     assert 2 * r == pytest.approx(_manifest(built)["derived"]["d_a_planet_mm"], abs=1e-6)
 
 
+def test_every_sheet_describes_the_solid_that_is_written(built):
+    """One planet serves both meshes with one tip: the smaller of its two, shortened in the sun mesh (GOST 16532:
+    d_a2 = d2 + 2(h_a* + x2 − Δy)m = 200 + 2·(1 + 0.5 − 0.1357)·10 = 227.286 mm), which its DXF outline reaches.
+    Both sheets give that tip, and s_na and ε_α on it: ε_α = (ρ_a1 − ρ_a2 + a_w·sin α_w)/p_b with ρ_a1 = ½√(d_a1² −
+    d_b1²) of the tip made (the unshortened 230 mm would give 1.430, the solid meshes at 1.349)."""
+    d = _manifest(built)["derived"]
+    loops = read_dxf_loops(built / "planet.dxf")
+    d_a_dxf = 2 * max(np.hypot(p[:, 0], p[:, 1]).max() for p in loops)
+    sheets = {}
+    for mesh in ("sun_planet", "planet_ring"):
+        rows = list(csv.reader((built / "tables" / f"sheet_{mesh}.csv").open()))
+        sheets[mesh] = {r[1]: r[3:] for r in rows[1:]}
+    planet_col = {"sun_planet": 1, "planet_ring": 0}
+    for mesh, col in planet_col.items():
+        assert float(sheets[mesh]["d_a"][col]) == pytest.approx(d_a_dxf, abs=1e-6)
+        assert float(sheets[mesh]["s_na"][col]) == pytest.approx(d["s_na_planet_mm"], rel=1e-12)
+        assert float(sheets[mesh]["E_sn"][col]) == 0.15
+    assert float(sheets["planet_ring"]["epsilon_alpha"][0]) == pytest.approx(d["epsilon_alpha_planet_ring"], rel=1e-12)
+    assert round(float(sheets["planet_ring"]["epsilon_alpha"][0]), 3) == 1.349
+    assert float(sheets["sun_planet"]["d_a"][0]) == pytest.approx(d["d_a_sun_mm"], rel=1e-12)
+    assert float(sheets["planet_ring"]["d_a"][1]) == pytest.approx(d["d_a_ring_mm"], rel=1e-12)
+
+
 def _area(p):
     x, y = p[:, 0], p[:, 1]
     return 0.5 * (np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
