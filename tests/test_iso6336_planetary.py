@@ -26,7 +26,7 @@ def test_z_b_of_the_planet_in_the_ring_mesh_is_m1_with_the_rings_internal_geomet
 
     planet: d_b1 = 200·cos 20° = 187.939 mm, d_a1 = 227.286 mm (its tip as made: shortened in the sun mesh),
     ring: d_b2 = 560·cos 20° = 526.228 mm, d_a2 = 568.536 mm; cos α_w = 180·cos 20°/188.643 → α_w = 26.281°;
-    ε_α = (ρ_a1 − ρ_a2 + a_w·sin α_w)/p_b = (63.948 − 108.239 + 83.530)/29.521 = 1.3291 ... (computed below)
+    ε_α = (ρ_a1 − ρ_a2 + a_w·sin α_w)/p_b = 1.349 (computed below)
     → M_1 = 1.2194 (the thesis prints 1.205); σ_H of the planet's flank = Z_B·σ_H0·√(K_A·K_v·K_Hβ·K_Hα)
     rises by that factor over the ring's (Z_D = 1): 793 → 967 MPa."""
     ps = _set()
@@ -93,3 +93,44 @@ def test_the_final_drive_passes_the_planet_count_to_the_suns_wind_up():
     # b = 75 mm (the thesis's planets): F_m/b as above, f_sh = 0.023·3·(F_m/b)·(75/160)²
     assert sp.face.f_sh == pytest.approx(0.023 * 3 * sp.face.F_m_b * (75.0 / 160.0) ** 2, rel=1e-12)
     assert round(sp.K_Hbeta, 3) == 1.209
+
+
+def test_the_thesis_sets_planet_ring_mesh_is_rated_at_the_carriers_centre_distance():
+    """The thesis's ring shift x3 = 1.417 gives the planet–ring pair a_w = 187.997 mm from its shifts, but the
+    carrier holds the planets at the sun–planet a_w = 188.643 mm: the mesh runs there, and its α_w, ε_α, Z_H and
+    Z_B are taken there (ISO 21771: cos α_w = a·cos α/a_w with a = m·(z3 − z2)/2 = 180 mm):
+
+        cos α_w = 180·cos 20°/188.643 → α_w = 26.281° (the shifts' 187.997 mm: 25.82°)
+        ε_α = (ρ_a1 − ρ_a2 + a_w·sin α_w)/p_b, ρ_a = ½√(d_a² − d_b²) of the planet (227.286 mm) and the ring
+              (567.452 mm, its tip as made with x3 = 1.417) → 1.398 (at the shifts' 187.997 mm: 1.348)
+        Z_B = M_1 of ISO 6336-2:2019, 6.2 with the ring's internal geometry → 1.219 (at 187.997 mm: 1.205, the
+        value the thesis prints)."""
+    from propulsor.params import load_params, read_part_file
+    from propulsor.parts.final_drive import FinalDriveParams
+    from propulsor.parts.final_drive.design import planetary_set
+    from propulsor.parts.final_drive.strength import mesh_stresses
+    from pathlib import Path
+
+    _, mp = read_part_file(Path(__file__).resolve().parents[1] / "parts" / "final_drive_thesis.toml")
+    p = load_params(FinalDriveParams, mp)
+    ps = planetary_set(p)
+    assert round(ps.mesh_planet_ring.a_w, 3) == 187.997 and round(ps.a_w, 3) == 188.643
+    a_w = ps.a_w
+    alpha_w = math.acos(180.0 * math.cos(ALPHA) / a_w)
+    d_b1, d_b2 = 200.0 * math.cos(ALPHA), 560.0 * math.cos(ALPHA)
+    d_a1, d_a2 = ps.d_a_planet, ps.d_a_ring
+    assert (round(d_a1, 3), round(d_a2, 3)) == (227.286, 567.452)
+    r1, r2 = 0.5 * math.sqrt(d_a1 ** 2 - d_b1 ** 2), 0.5 * math.sqrt(d_a2 ** 2 - d_b2 ** 2)
+    p_b = math.pi * 10.0 * math.cos(ALPHA)
+    eps = (r1 - r2 + a_w * math.sin(alpha_w)) / p_b
+    f1 = math.sqrt((d_a1 / d_b1) ** 2 - 1.0) - 2.0 * math.pi / 20
+    f2 = math.sqrt((d_a2 / d_b2) ** 2 - 1.0) + (eps - 1.0) * 2.0 * math.pi / 56
+    Z_B = math.tan(alpha_w) / math.sqrt(f1 * f2)
+    Z_H = math.sqrt(2.0 * math.cos(alpha_w) / (math.cos(ALPHA) ** 2 * math.sin(alpha_w)))
+    _, pr = mesh_stresses(p, ps)
+    assert pr.eps_alpha == pytest.approx(eps, rel=1e-12) and round(eps, 3) == 1.398
+    assert (pr.Z_B, pr.Z_H) == pytest.approx((Z_B, Z_H), rel=1e-12) and round(Z_B, 3) == 1.219
+    assert pr.a_w == a_w and pr.alpha_w == pytest.approx(alpha_w, rel=1e-12)
+    # the shifts' centre distance gives the thesis's Z_B = 1.205: the value quoted beside ours in the report
+    own = mesh_stress(ps.mesh_planet_ring, d_a1, d_a2, 75.0, MeshLoad(T_MESH * 20 / 16, V_REL))
+    assert round(own.Z_B, 3) == 1.205 and own.a_w == pytest.approx(187.99721650532422, rel=1e-12)

@@ -61,7 +61,7 @@ from .involute import inv
 
 __all__ = ["Material", "STEEL", "z_e", "z_h", "z_eps", "z_b", "z_d", "f_h_beta", "contact_factors", "tooth_form_factor",
            "ToothForm", "k_v_method_b", "f_sh_torsion", "FaceLoad", "face_load_method_c", "k_h_beta_method_c",
-           "k_h_alpha", "d_en_single_contact", "MeshLoad", "MeshStress", "mesh_stress"]
+           "k_h_alpha", "d_en_single_contact", "MeshLoad", "MeshStress", "operating_angle", "mesh_stress"]
 
 
 @dataclass(frozen=True)
@@ -298,6 +298,8 @@ class MeshStress:
     d_en2: float | None = None
     sigma_F1_B: float = 0.0
     sigma_F2_B: float | None = None
+    a_w: float = 0.0             # mm, the centre distance the mesh runs at
+    alpha_w: float = 0.0         # rad, its operating pressure angle
 
     @property
     def sigma_H_wheel(self) -> float:
@@ -305,12 +307,34 @@ class MeshStress:
         return self.sigma_H / self.Z_B * self.Z_D
 
 
-def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad) -> MeshStress:
-    """σ_H and σ_F of one spur mesh (a :class:`~propulsor.gears.gear_pair.GearPair`), face width b (mm)."""
+def operating_angle(pair, a_w: float | None) -> float:
+    """Operating pressure angle α_w of a pair run at the centre distance a_w (mm): cos α_w = a·cos α/a_w
+    (ISO 21771, a = m·(z2 ± z1)/2); None: the pair's own α_w from its shifts."""
+    if a_w is None:
+        return pair.alpha_w
+    require_positive("a_w", a_w, "mm")
+    c = pair.a * math.cos(pair.alpha) / a_w
+    if not 0.0 < c < 1.0:
+        raise InputError("a_w", a_w, f"no involute mesh at this centre distance (a·cos α/a_w = {c:.6f})")
+    return math.acos(c)
+
+
+def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad, a_w: float | None = None) -> MeshStress:
+    """σ_H and σ_F of one spur mesh (a :class:`~propulsor.gears.gear_pair.GearPair`), face width b (mm), tips
+    d_a1, d_a2 as made.  a_w: the centre distance the mesh runs at when its mounting sets it (a planet on its
+    carrier pin), which may differ from the one of the shifts; α_w, ε_α, Z_H, Z_B and Z_D are then taken there:
+    cos α_w = a·cos α/a_w, ε_α = (ρ_a1 ± ρ_a2 ∓ a_w·sin α_w)/p_b (ISO 21771; ± external/internal)."""
     require_positive("b", b, "mm")
     g1, g2 = pair.gear1, pair.gear2
-    m, alpha, aw = pair.m, pair.alpha, pair.alpha_w
-    eps = pair.epsilon_alpha(d_a1, d_a2)
+    m, alpha = pair.m, pair.alpha
+    aw = operating_angle(pair, a_w)
+    a_w_run = pair.a_w if a_w is None else a_w
+    if a_w is None:
+        eps = pair.epsilon_alpha(d_a1, d_a2)
+    else:
+        r1, r2 = g1.rho_at(d_a1), g2.rho_at(d_a2)
+        g = a_w_run * math.sin(aw)
+        eps = ((r1 - r2 + g) if pair.internal else (r1 + r2 - g)) / g1.p_b
     u = g2.z / g1.z * (-1.0 if pair.internal else 1.0)
     d1 = g1.d
     F_t = 2000.0 * load.T1 / d1
@@ -346,4 +370,4 @@ def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad) -> Mes
     return MeshStress(F_t, b, load.K_A, K_v, K_Hb, K_Ha, K_Fb, K_Ha, Z_H, Z_E, Z_e, Z_B, s0, sH,
                       f1.Y_F, f1.Y_S, Y_F2, Y_S2, Y_eps, sF1, sF2,
                       d1=d1, u=u, eps_alpha=eps, Z_D=Z_D, face=face, root1_B=b1, root2_B=b2, d_en1=d_en1,
-                      d_en2=d_en2, sigma_F1_B=sF1_B, sigma_F2_B=sF2_B)
+                      d_en2=d_en2, sigma_F1_B=sF1_B, sigma_F2_B=sF2_B, a_w=a_w_run, alpha_w=aw)

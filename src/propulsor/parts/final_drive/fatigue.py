@@ -75,7 +75,7 @@ def fatigue_rows(p, ps, sp, pr, v: float):
                                    ("planet_ring", pr, ps.mesh_planet_ring, ("planet", "ring"))):
         G1, G2 = mesh.gear1, mesh.gear2
         f = s.face
-        rr = rho_red(G1.d_b, G2.d_b, mesh.alpha_w, mesh.internal)
+        rr = rho_red(G1.d_b, G2.d_b, s.alpha_w, mesh.internal)   # at the centre distance the carrier makes
         common = [
             ("F_t", s.F_t, "N", f"2000·T_1/d_1, T_1 = {s.F_t * s.d1 / 2000.0:.1f} N·m per mesh on d_1 = {s.d1:g} mm "
                                 f"(the {g1}'s reference diameter)"),
@@ -99,7 +99,7 @@ def fatigue_rows(p, ps, sp, pr, v: float):
         sig = {g1: s.sigma_H, g2: s.sigma_H_wheel}
         prow = [(*t, "") for t in common + khb + [
             ("K_Halpha", s.K_Halpha, "", f"Table 9, surface-hardened spur, grade {p.accuracy_grade}"),
-            ("Z_H", s.Z_H, "", f"α = 20°, α_w = {math.degrees(mesh.alpha_w):.4f}°"),
+            ("Z_H", s.Z_H, "", f"α = 20°, α_w = {math.degrees(s.alpha_w):.4f}° at a_w = {s.a_w:.3f} mm (the carrier's)"),
             ("Z_E", s.Z_E, "√MPa", "steel on steel: E = 206 000 MPa, ν = 0.3 both"),
             ("Z_eps", s.Z_eps, "", f"√((4 − ε_α)/3), ε_α = {s.eps_alpha:.4f}"),
             ("Z_beta", 1.0, "", "β = 0"),

@@ -48,7 +48,9 @@ def mesh_stresses(p, ps, b_sp: float | None = None, b_pr: float | None = None):
     sp = mesh_stress(ps.mesh_sun_planet, ps.d_a_sun, ps.d_a_planet, b_sp, load)
     # the planet passes the sun's tangential force on to the ring (equal base-circle forces)
     load_pr = MeshLoad(T1 * p.z_planet / p.z_sun, v, p.application_factor_K_A, p.accuracy_grade)
-    pr = mesh_stress(ps.mesh_planet_ring, ps.d_a_planet, ps.d_a_ring, b_pr, load_pr)
+    # one centre distance per mesh, the one the carrier makes: the planets sit on the sun–planet a_w, so the
+    # planet–ring mesh runs there too (a set that is not coaxial runs it off the a_w of its shifts)
+    pr = mesh_stress(ps.mesh_planet_ring, ps.d_a_planet, ps.d_a_ring, b_pr, load_pr, a_w=ps.a_w)
     return sp, pr
 
 
@@ -201,6 +203,19 @@ def strength(dd: FinalDriveDesign, w, built: dict) -> None:
         f"Face width needed: sun–planet {d['strength_sun_planet_face_width_required_mm']:.1f} mm, "
         f"planet–ring {d['strength_planet_ring_face_width_required_mm']:.1f} mm. The ring's root stress is not computed "
         f"(ISO 6336-3 internal teeth; x3 > 1 gives it the thickest root of the set).")
+    if abs(ps.coaxiality_mismatch) > 1e-9:
+        from ...gears.iso6336 import MeshLoad, mesh_stress
+
+        own = mesh_stress(ps.mesh_planet_ring, ps.d_a_planet, ps.d_a_ring, pr.b,
+                          MeshLoad(T1 * p.z_planet / p.z_sun, v, p.application_factor_K_A, p.accuracy_grade))
+        w.add_note(
+            f"The planet–ring mesh is rated at the centre distance the carrier makes, a_w = {pr.a_w:.3f} mm "
+            f"(α_w = {math.degrees(pr.alpha_w):.4f}°, ε_α = {pr.eps_alpha:.4f}, Z_H = {pr.Z_H:.4f}, Z_B = {pr.Z_B:.4f}, "
+            f"σ_H = {pr.sigma_H:.1f} MPa), not at the {ps.mesh_planet_ring.a_w:.3f} mm of its shifts, which the thesis "
+            f"uses (there: α_w = {math.degrees(own.alpha_w):.4f}°, ε_α = {own.eps_alpha:.4f}, Z_H = {own.Z_H:.4f}, "
+            f"Z_B = {own.Z_B:.4f} — the thesis prints 1.205 —, σ_H = {own.sigma_H:.1f} MPa). The set is not coaxial: "
+            f"the planets sit on the sun–planet centre distance, so the planet–ring teeth run "
+            f"{pr.a_w - own.a_w:.3f} mm deeper than their shifts provide for (the overlap the sweep reports).")
     w.add_note(
         f"Bearings (ISO 76): planet bearing load eq. 44 = {P_sat:.0f} N with r_vod = a_w = {r_vod * 1e3:.3f} mm "
         f"(thesis: r_vod = 180 mm → 91 527 N, Table 8: 92 000 N), C0 = {PLANET_BEARING_004.C0:.0f} N, "
