@@ -32,7 +32,10 @@ _SRC = {
     "N_L": "ISO 6336-2 cl. 11 / ISO 6336-3 cl. 11 (load cycles)", "Z_NT": "ISO 6336-2 cl. 11, Table 2",
     "Z_L": "ISO 6336-2 cl. 12 method B", "Z_v": "ISO 6336-2 cl. 12 method B", "Z_R": "ISO 6336-2 cl. 12 method B",
     "Z_W": "ISO 6336-2 cl. 13 (both flanks case-hardened)", "Z_X": "ISO 6336-2 cl. 14",
-    "sigma_Hlim": "ISO 6336-5:2003 (case-hardened wrought steel)", "sigma_HG": "ISO 6336-2 cl. 5 (σ_Hlim·Z_NT·Z_L·Z_v·Z_R·Z_W·Z_X)",
+    "Z_LvR": "ISO 6336-2:2019 5.4 method B (static to reference, log-log)",
+    "Y_delta_relT_static": "ISO 6336-3:2019 cl. 12 method B (static, case-hardened)",
+    "Y_dRX": "ISO 6336-3:2019 5.4 method B (static to reference, log-log)",
+    "sigma_Hlim": "ISO 6336-5:2003 (case-hardened wrought steel)", "sigma_HG": "ISO 6336-2 cl. 5 (σ_Hlim·Z_NT·(Z_L·Z_v·Z_R at N_L)·Z_W·Z_X)",
     "S_H": "ISO 6336-2 cl. 5 (σ_HG/σ_H)", "S_H_static": "seed 004 ch. 4.1 (σ_Hmax = 44·HRC over σ_H)",
     "d_en": "ISO 6336-3 cl. 6 method B (outer point of single contact)", "Y_F": "ISO 6336-3 cl. 6 method B",
     "Y_S": "ISO 6336-3 cl. 7 method B", "q_s": "ISO 6336-3 cl. 7 (s_Fn/(2·ρ_F))",
@@ -44,7 +47,7 @@ _SRC = {
     "Y_delta_relT": "ISO 6336-3 cl. 12 method B", "Y_R_relT": "ISO 6336-3 cl. 13 method B",
     "Y_X": "ISO 6336-3 cl. 14", "Y_M": "ISO 6336-3 cl. 5 (idler: 0.7)",
     "sigma_Flim": "ISO 6336-5:2003 (case-hardened wrought steel)",
-    "sigma_FG": "ISO 6336-3 cl. 5 (σ_Flim·Y_ST·Y_NT·Y_δrelT·Y_RrelT·Y_X·Y_M)", "S_F": "ISO 6336-3 cl. 5 (σ_FG/σ_F)",
+    "sigma_FG": "ISO 6336-3 cl. 5 (σ_Flim·Y_ST·Y_NT·(Y_δrelT·Y_RrelT·Y_X at N_L)·Y_M)", "S_F": "ISO 6336-3 cl. 5 (σ_FG/σ_F)",
     "S_F_static": "seed 004 ch. 4.1 (σ_FlimM = 2.8·σ_t over σ_F, method B)",
 }
 
@@ -63,7 +66,7 @@ def _hours(cycles: float, per_hour: float) -> float:
 
 def fatigue_rows(p, ps, sp, pr, v: float):
     """(rows of the factor table, {(mesh, gear): (Pitting, hours)}, {(mesh, gear): (RootFatigue, hours)})."""
-    from ...gears.iso6336_life import (cycles_at_y_nt, cycles_at_z_nt, pitting_safety, rho_red,
+    from ...gears.iso6336_life import (N_STATIC_F, N_STATIC_H, cycles_at_limit, pitting_safety, rho_red,
                                        root_fatigue_safety)
 
     cph = cycles_per_hour(p, ps)
@@ -111,8 +114,7 @@ def fatigue_rows(p, ps, sp, pr, v: float):
         for g, zf in ((g1, "Z_B"), (g2, "Z_D")):
             P = pitting_safety(sig[g], p.sigma_Hlim_MPa, cph[g] * p.service_life_h, p.oil_viscosity_40_mm2_s, v,
                                p.flank_roughness_Rz_um, p.flank_roughness_Rz_um, rr, p.pitting_safety_S_Hmin)
-            need = p.pitting_safety_S_Hmin * sig[g] / (P.sigma_HG / P.Z_NT)
-            hours = _hours(cycles_at_z_nt(need), cph[g] * 1.0)
+            hours = _hours(cycles_at_limit(P.limit_at, p.pitting_safety_S_Hmin * sig[g], N_STATIC_H), cph[g] * 1.0)
             pit[(tag, g)] = (P, hours)
             prow += [(*t, g) for t in [
                 ("sigma_H", sig[g], "MPa", f"{zf}·σ_H0·√(K_A·K_v·K_Hβ·K_Hα)"),
@@ -123,6 +125,8 @@ def fatigue_rows(p, ps, sp, pr, v: float):
                 ("Z_R", P.Z_R, "", f"R_z = {p.flank_roughness_Rz_um:g} µm, ρ_red = {rr:.3f} mm, R_z10 = {P.R_z10:.3f} µm"),
                 ("Z_W", P.Z_W, "", "both flanks case-hardened"),
                 ("Z_X", P.Z_X, "", "size factor of pitting"),
+                ("Z_LvR", P.Z_LvR, "", f"Z_L·Z_v·Z_R at N_L: reference {P.Z_L * P.Z_v * P.Z_R:.4f} (N >= 5e7), "
+                                       f"static 1 (N <= 1e5), log-log between, w = {P.w:.4f}"),
                 ("sigma_Hlim", p.sigma_Hlim_MPa, "MPa", "part parameter sigma_Hlim_MPa"),
                 ("sigma_HG", P.sigma_HG, "MPa", f"pitting limit at N_L"),
                 ("S_H", P.S_H, "", f"required {p.pitting_safety_S_Hmin:g}"),
@@ -138,9 +142,8 @@ def fatigue_rows(p, ps, sp, pr, v: float):
             idler = g == "planet"
             q_s = tf.s_Fn / (2.0 * tf.rho_F)
             R = root_fatigue_safety(sF, q_s, mesh.m, p.sigma_Flim_MPa, p.root_roughness_Rz_um,
-                                    cph[g] * p.service_life_h, p.bending_fatigue_safety_S_Fmin, idler)
-            need = p.bending_fatigue_safety_S_Fmin * sF / (R.sigma_FG / R.Y_NT)
-            hours = _hours(cycles_at_y_nt(need), cph[g] * 1.0)
+                                    cph[g] * p.service_life_h, p.bending_fatigue_safety_S_Fmin, idler, Y_S=tf.Y_S)
+            hours = _hours(cycles_at_limit(R.limit_at, p.bending_fatigue_safety_S_Fmin * sF, N_STATIC_F), cph[g] * 1.0)
             root[(tag, g)] = (R, hours)
             brow += [(*t, g) for t in [
                 ("d_en", d_en, "mm", f"outer point of single contact (d_a = {d_a:.3f} mm, ε_α = {s.eps_alpha:.4f})"),
@@ -160,6 +163,10 @@ def fatigue_rows(p, ps, sp, pr, v: float):
                 ("Y_R_relT", R.Y_R_relT, "", f"root R_z = {p.root_roughness_Rz_um:g} µm"),
                 ("Y_X", R.Y_X, "", f"m = {mesh.m:g} mm, surface-hardened"),
                 ("Y_M", R.Y_M, "", "idler, bent both ways" if idler else "bent one way"),
+                ("Y_delta_relT_static", R.Y_delta_relT_static, "", f"0.44·Y_S + 0.12, Y_S = {tf.Y_S:.4f}"),
+                ("Y_dRX", R.Y_dRX, "", f"Y_δrelT·Y_RrelT·Y_X at N_L: reference "
+                                       f"{R.Y_delta_relT * R.Y_R_relT * R.Y_X:.4f} (N >= 3e6), static "
+                                       f"{R.Y_delta_relT_static:.4f} (N <= 1e3), log-log between, w = {R.w:.4f}"),
                 ("sigma_Flim", p.sigma_Flim_MPa, "MPa", "part parameter sigma_Flim_MPa"),
                 ("sigma_FG", R.sigma_FG, "MPa", f"root stress limit at N_L"),
                 ("S_F", R.S_F, "", f"required {p.bending_fatigue_safety_S_Fmin:g}"),
