@@ -46,9 +46,8 @@ at the outer point of single pair contact, no Y_ε (Y_β = Y_B = Y_DT = 1 for a 
     d_en = 2·√((√(r_a² − r_b²) − p_b·(ε_α − 1))² + r_b²),   p_b = π·m·cos α
     σ_F = F_t/(b·m) · Y_F·Y_S · K_A·K_v·K_Fβ·K_Fα
 
-The internal gear's (ring's) root stress is not computed here: ISO 6336-3 handles internal teeth with
-a substitute rack of the shaper's fillet, which this module does not carry; the ring's root is the
-thickest of the set (x3 > 1).
+The internal gear's (ring's) root: ISO 6336-3:2019's substitute rack (:mod:`propulsor.gears.iso6336_internal`),
+when the caller gives its thickness as made, the cutter's tip radius and its rim (:class:`InternalRoot`).
 """
 
 from __future__ import annotations
@@ -61,7 +60,7 @@ from .involute import inv
 
 __all__ = ["Material", "STEEL", "z_e", "z_h", "z_eps", "z_b", "z_d", "f_h_beta", "contact_factors", "tooth_form_factor",
            "ToothForm", "k_v_method_b", "f_sh_torsion", "FaceLoad", "face_load_method_c", "k_h_beta_method_c",
-           "k_h_alpha", "d_en_single_contact", "MeshLoad", "MeshStress", "operating_angle", "mesh_stress"]
+           "k_h_alpha", "d_en_single_contact", "MeshLoad", "MeshStress", "operating_angle", "InternalRoot", "mesh_stress"]
 
 
 @dataclass(frozen=True)
@@ -299,6 +298,7 @@ class MeshStress:
     sigma_F1_B: float = 0.0
     sigma_F2_B: float | None = None
     a_w: float = 0.0             # mm, the centre distance the mesh runs at
+    Y_B2: float = 1.0            # rim thickness factor of the wheel (an internal wheel's rim)
     alpha_w: float = 0.0         # rad, its operating pressure angle
 
     @property
@@ -319,11 +319,25 @@ def operating_angle(pair, a_w: float | None) -> float:
     return math.acos(c)
 
 
-def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad, a_w: float | None = None) -> MeshStress:
+@dataclass(frozen=True)
+class InternalRoot:
+    """What the root of an internal wheel needs beyond the pair (ISO 6336-3:2019, internal gears): its arc tooth
+    thickness on the reference circle as made (mm), the fillet radius ρ_fP2 (the generating cutter's tip radius,
+    mm) and the rim under the root s_R (mm)."""
+
+    s: float
+    rho_fP: float
+    s_R: float
+
+
+def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad, a_w: float | None = None,
+                internal_root: InternalRoot | None = None) -> MeshStress:
     """σ_H and σ_F of one spur mesh (a :class:`~propulsor.gears.gear_pair.GearPair`), face width b (mm), tips
     d_a1, d_a2 as made.  a_w: the centre distance the mesh runs at when its mounting sets it (a planet on its
     carrier pin), which may differ from the one of the shifts; α_w, ε_α, Z_H, Z_B and Z_D are then taken there:
-    cos α_w = a·cos α/a_w, ε_α = (ρ_a1 ± ρ_a2 ∓ a_w·sin α_w)/p_b (ISO 21771; ± external/internal)."""
+    cos α_w = a·cos α/a_w, ε_α = (ρ_a1 ± ρ_a2 ∓ a_w·sin α_w)/p_b (ISO 21771; ± external/internal).
+    internal_root: the internal wheel's root is rated too (:mod:`propulsor.gears.iso6336_internal`), with Y_B of
+    its rim; without it an internal wheel's root stress stays None."""
     require_positive("b", b, "mm")
     g1, g2 = pair.gear1, pair.gear2
     m, alpha = pair.m, pair.alpha
@@ -359,6 +373,18 @@ def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad, a_w: f
     b1 = tooth_form_factor(g1.z, m, g1.x, d_en1, alpha, rack.h_fP_star, rack.rho_f_star)
     sF1_B = F_t / (b * m) * b1.Y_F * b1.Y_S * K
     Y_F2 = Y_S2 = sF2 = b2 = d_en2 = sF2_B = None
+    Y_B2 = 1.0
+    if pair.internal and internal_root is not None:
+        from .iso6336_internal import d_en_internal, internal_tooth_form, y_b_internal
+
+        ir = internal_root
+        Y_B2 = y_b_internal(ir.s_R, m)
+        f2 = internal_tooth_form(g2.d, g2.d_f, ir.s, m, ir.rho_fP, d_a2, alpha)
+        Y_F2, Y_S2 = f2.Y_F, f2.Y_S
+        sF2 = F_t / (b * m) * Y_F2 * Y_S2 * Y_eps * Y_B2 * K
+        d_en2 = d_en_internal(d_a2, g2.d_b, m, alpha, eps)
+        b2 = internal_tooth_form(g2.d, g2.d_f, ir.s, m, ir.rho_fP, d_en2, alpha)
+        sF2_B = F_t / (b * m) * b2.Y_F * b2.Y_S * Y_B2 * K
     if not pair.internal:
         rack2 = g2.rack
         f2 = tooth_form_factor(g2.z, m, g2.x, d_a2, alpha, rack2.h_fP_star, rack2.rho_f_star)
@@ -370,4 +396,4 @@ def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad, a_w: f
     return MeshStress(F_t, b, load.K_A, K_v, K_Hb, K_Ha, K_Fb, K_Ha, Z_H, Z_E, Z_e, Z_B, s0, sH,
                       f1.Y_F, f1.Y_S, Y_F2, Y_S2, Y_eps, sF1, sF2,
                       d1=d1, u=u, eps_alpha=eps, Z_D=Z_D, face=face, root1_B=b1, root2_B=b2, d_en1=d_en1,
-                      d_en2=d_en2, sigma_F1_B=sF1_B, sigma_F2_B=sF2_B, a_w=a_w_run, alpha_w=aw)
+                      d_en2=d_en2, sigma_F1_B=sF1_B, sigma_F2_B=sF2_B, a_w=a_w_run, alpha_w=aw, Y_B2=Y_B2)

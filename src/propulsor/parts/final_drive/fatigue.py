@@ -39,7 +39,7 @@ _SRC = {
     "S_H": "ISO 6336-2 cl. 5 (σ_HG/σ_H)", "S_H_static": "seed 004 ch. 4.1 (σ_Hmax = 44·HRC over σ_H)",
     "d_en": "ISO 6336-3 cl. 6 method B (outer point of single contact)", "Y_F": "ISO 6336-3 cl. 6 method B",
     "Y_S": "ISO 6336-3 cl. 7 method B", "q_s": "ISO 6336-3 cl. 7 (s_Fn/(2·ρ_F))",
-    "Y_beta": "ISO 6336-3 cl. 8 (spur: 1)", "Y_B": "ISO 6336-3 cl. 9 (solid rim: 1)",
+    "Y_beta": "ISO 6336-3 cl. 8 (spur: 1)", "Y_B": "ISO 6336-3 cl. 9 (rim thickness factor)",
     "Y_DT": "ISO 6336-3 cl. 9 (ε_α < 2.05: 1)", "sigma_F": "ISO 6336-3 cl. 5 method B",
     "Y_F_C": "ISO 6336-3:1996 method C (load at the tip)", "Y_S_C": "ISO 6336-3:1996 method C",
     "Y_eps": "ISO 6336-3:1996 (0.25 + 0.75/ε_α)", "sigma_F_C": "ISO 6336-3:1996 method C, for comparison",
@@ -147,10 +147,15 @@ def fatigue_rows(p, ps, sp, pr, v: float):
             root[(tag, g)] = (R, hours)
             brow += [(*t, g) for t in [
                 ("d_en", d_en, "mm", f"outer point of single contact (d_a = {d_a:.3f} mm, ε_α = {s.eps_alpha:.4f})"),
-                ("Y_F", tf.Y_F, "", f"method B, s_Fn = {tf.s_Fn:.3f} mm, h_Fe = {tf.h_Fe:.3f} mm"),
+                ("Y_F", tf.Y_F, "", f"method B, s_Fn = {tf.s_Fn:.3f} mm, h_Fe = {tf.h_Fe:.3f} mm"
+                                    + (", internal gear: substitute rack, ρ_fP = the shaper's tip radius"
+                                       if G.internal else "")),
                 ("Y_S", tf.Y_S, "", f"method B, ρ_F = {tf.rho_F:.3f} mm"),
                 ("q_s", q_s, "", f"s_Fn/(2·ρ_F)"),
-                ("Y_beta", 1.0, "", "β = 0"), ("Y_B", 1.0, "", "solid rim"), ("Y_DT", 1.0, "", "ε_α < 2.05"),
+                ("Y_beta", 1.0, "", "β = 0"),
+                ("Y_B", s.Y_B2 if G.internal else 1.0, "",
+                 "internal gear: the rim under the root (1 from s_R >= 3.5·m)" if G.internal else "solid rim"),
+                ("Y_DT", 1.0, "", "ε_α < 2.05"),
                 ("sigma_F", sF, "MPa", f"F_t/(b·m)·Y_F·Y_S·K_A·K_v·K_Fβ·K_Fα, m = {mesh.m:g} mm (method B: the checks use it)"),
                 ("Y_F_C", YFc, "", f"load at the tip d_a = {d_a:.3f} mm"),
                 ("Y_S_C", YSc, "", f"load at the tip"),

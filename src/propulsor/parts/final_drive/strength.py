@@ -34,6 +34,16 @@ def _loads(p, ps):
     return T_sun / p.n_planets, v
 
 
+def ring_root(p, ps):
+    """The ring's root as made for ISO 6336-3 (internal gear): arc tooth thickness on d3 less the space widening
+    E_sn, the shaper's tip radius as its fillet, the rim under the root."""
+    from ...gears.iso6336 import InternalRoot
+    from .design import ring_outer_d
+
+    return InternalRoot(ps.ring.s - p.tooth_thinning_mm, p.shaper_tip_radius_star * p.module_mm,
+                        0.5 * (ring_outer_d(p, ps) - ps.ring.d_f))
+
+
 def mesh_stresses(p, ps, b_sp: float | None = None, b_pr: float | None = None):
     """ISO 6336 stresses of (sun–planet, planet–ring) at the design torque."""
     from ...gears.iso6336 import MeshLoad, mesh_stress
@@ -50,7 +60,8 @@ def mesh_stresses(p, ps, b_sp: float | None = None, b_pr: float | None = None):
     load_pr = MeshLoad(T1 * p.z_planet / p.z_sun, v, p.application_factor_K_A, p.accuracy_grade)
     # one centre distance per mesh, the one the carrier makes: the planets sit on the sun–planet a_w, so the
     # planet–ring mesh runs there too (a set that is not coaxial runs it off the a_w of its shifts)
-    pr = mesh_stress(ps.mesh_planet_ring, ps.d_a_planet, ps.d_a_ring, b_pr, load_pr, a_w=ps.a_w)
+    pr = mesh_stress(ps.mesh_planet_ring, ps.d_a_planet, ps.d_a_ring, b_pr, load_pr, a_w=ps.a_w,
+                     internal_root=ring_root(p, ps))
     return sp, pr
 
 
@@ -201,8 +212,9 @@ def strength(dd: FinalDriveDesign, w, built: dict) -> None:
         f"ones of gears/iso6336_helical.py at β = 0) reproduce the published ISO/TR 6336-30:2017 example 1 within 1 % "
         f"(σ_H0, σ_H; tests/test_iso6336_helical.py); no published root-stress example was at hand. "
         f"Face width needed: sun–planet {d['strength_sun_planet_face_width_required_mm']:.1f} mm, "
-        f"planet–ring {d['strength_planet_ring_face_width_required_mm']:.1f} mm. The ring's root stress is not computed "
-        f"(ISO 6336-3 internal teeth; x3 > 1 gives it the thickest root of the set).")
+        f"planet–ring {d['strength_planet_ring_face_width_required_mm']:.1f} mm. The ring's root by ISO 6336-3 for "
+        f"internal gears (substitute rack with the shaper's tip radius {p.shaper_tip_radius_star * p.module_mm:g} mm "
+        f"as its fillet): σ_F {pr.sigma_F2_B:.1f} MPa by method B (S_F static = {sFlim / pr.sigma_F2_B:.3f}).")
     if abs(ps.coaxiality_mismatch) > 1e-9:
         from ...gears.iso6336 import MeshLoad, mesh_stress
 
