@@ -181,3 +181,48 @@ def test_finite_life_takes_the_influence_factors_between_the_static_and_the_refe
     sFG = 425.0 * 2.0 * (3e6 / N) ** 0.115 * Y_ref ** (1.0 - wF) * Y_st ** wF * 0.7
     R = life.root_fatigue_safety(sp.sigma_F2_B, q_s, 10.0, 425.0, 10.0, N, 1.4, True, Y_S=tf.Y_S)
     assert R.sigma_FG == pytest.approx(sFG, rel=1e-12) and R.S_F == pytest.approx(sFG / sp.sigma_F2_B, rel=1e-12)
+
+
+def _form_by_hand(z, x, d_en, E_sn, m=10.0, h_fP=12.5, rho=3.8):
+    """ISO 6336-3:2019, 6.2 (30° tangent construction) written out, with the thickness allowance E_sn the way the
+    solids are cut (the rack's tooth widened by E_sn at the same depth): E gains E_sn/2, γ_e loses E_sn/d."""
+    a = ALPHA
+    E = math.pi / 4 * m - h_fP * math.tan(a) - (1 - math.sin(a)) * rho / math.cos(a) + E_sn / 2
+    G = rho / m - h_fP / m + x
+    H = 2.0 / z * (math.pi / 2 - E / m) - math.pi / 3
+    th = math.pi / 6
+    for _ in range(100):
+        th = 2 * G / z * math.tan(th) - H
+    s_Fn = m * (z * math.sin(math.pi / 3 - th) + math.sqrt(3) * (G / math.cos(th) - rho / m))
+    rho_F = rho + 2 * m * G * G / (math.cos(th) * (z * math.cos(th) ** 2 - 2 * G))
+    d = m * z
+    a_en = math.acos(d * math.cos(a) / d_en)
+    g_e = (math.pi / 2 + 2 * x * math.tan(a)) / z - E_sn / d + (math.tan(a) - a) - (math.tan(a_en) - a_en)
+    a_F = a_en - g_e
+    h_Fe = 0.5 * m * ((math.cos(g_e) - math.sin(g_e) * math.tan(a_F)) * d_en / m - z * math.cos(math.pi / 3 - th)
+                      - G / math.cos(th) + rho / m)
+    Y_F = 6 * (h_Fe / m) * math.cos(a_F) / ((s_Fn / m) ** 2 * math.cos(a))
+    L, q = s_Fn / h_Fe, s_Fn / (2 * rho_F)
+    return s_Fn, Y_F, (1.2 + 0.13 * L) * q ** (1 / (1.21 + 2.3 / L))
+
+
+def test_the_form_factors_are_those_of_the_thinned_teeth_the_solids_have():
+    """The solids are cut with the allowance E_sn = 0.15 mm (arc thickness on d): the root chord s_Fn of the
+    sun and the planet shrinks by 0.14 mm and Y_F·Y_S grows by 0.94 % each (a radial infeed of the hob, x_E, would
+    also deepen the root, which the solid's is not).  The final drive's method B roots (load at the outer point of
+    single contact) are those of the thinned teeth."""
+    from propulsor.params import load_params, read_part_file
+    from propulsor.parts.final_drive import FinalDriveParams
+    from propulsor.parts.final_drive.design import planetary_set
+    from propulsor.parts.final_drive.strength import mesh_stresses
+    from pathlib import Path
+
+    _, mp = read_part_file(Path(__file__).resolve().parents[1] / "parts" / "final_drive.toml")
+    p = load_params(FinalDriveParams, mp)
+    assert p.tooth_thinning_mm == 0.15
+    sp, _ = mesh_stresses(p, planetary_set(p))
+    for z, root, d_en in ((16, sp.root1_B, sp.d_en1), (20, sp.root2_B, sp.d_en2)):
+        s0, YF0, YS0 = _form_by_hand(z, 0.5, d_en, 0.0)
+        s1, YF1, YS1 = _form_by_hand(z, 0.5, d_en, 0.15)
+        assert (root.s_Fn, root.Y_F, root.Y_S) == pytest.approx((s1, YF1, YS1), rel=1e-9)
+        assert round(s0 - s1, 2) == 0.14 and round(100 * (YF1 * YS1 / (YF0 * YS0) - 1), 2) == 0.94

@@ -134,12 +134,21 @@ class ToothForm:
 
 
 def tooth_form_factor(z: int, m: float, x: float, d_en: float, alpha: float = math.radians(20.0),
-                      h_fP_star: float = 1.25, rho_fP_star: float = 0.38, s_pr: float = 0.0) -> ToothForm:
+                      h_fP_star: float = 1.25, rho_fP_star: float = 0.38, s_pr: float = 0.0,
+                      E_sn: float = 0.0) -> ToothForm:
     """Y_F and Y_S of an external spur gear cut by a rack, load at diameter d_en (ISO 6336-3 eq. 22–32;
-    method C of the 1996 edition puts d_en = d_a)."""
+    method C of the 1996 edition puts d_en = d_a).
+
+    E_sn: the tooth thickness allowance the gear is made with (arc thickness on d, mm, the reduction), cut as the
+    solids are: the rack's tooth widened by E_sn at the same depth (each flank moved E_sn/2 along the pitch line,
+    the root circle kept), so E = π/4·m − h_fP·tan α + s_pr/cos α − (1 − sin α)·ρ_fP/cos α + E_sn/2 and the
+    tooth's half angle at d_en, γ_e, loses E_sn/d (ISO 6336-3:2019, 6.2: the form factor of the tooth as generated)."""
     require_positive("z", z)
+    if not (math.isfinite(E_sn) and E_sn >= 0.0):
+        raise InputError("E_sn", E_sn, "tooth thickness allowance must be >= 0 mm")
     h_fP, rho_fP = h_fP_star * m, rho_fP_star * m
-    E = math.pi / 4 * m - h_fP * math.tan(alpha) + s_pr / math.cos(alpha) - (1 - math.sin(alpha)) * rho_fP / math.cos(alpha)
+    E = (math.pi / 4 * m - h_fP * math.tan(alpha) + s_pr / math.cos(alpha)
+         - (1 - math.sin(alpha)) * rho_fP / math.cos(alpha) + 0.5 * E_sn)
     G = rho_fP_star - h_fP_star + x
     H = 2.0 / z * (math.pi / 2 - E / m) - math.pi / 3
     theta = math.pi / 6
@@ -158,7 +167,7 @@ def tooth_form_factor(z: int, m: float, x: float, d_en: float, alpha: float = ma
     if not d_en > d_b:
         raise InputError("d_en", d_en, f"must exceed the base diameter {d_b:.4f} mm")
     a_en = math.acos(d_b / d_en)
-    g_e = (math.pi / 2 + 2.0 * x * math.tan(alpha)) / z + inv(alpha) - inv(a_en)
+    g_e = (math.pi / 2 + 2.0 * x * math.tan(alpha)) / z - E_sn / d + inv(alpha) - inv(a_en)
     a_Fen = a_en - g_e
     h_Fe = 0.5 * m * ((math.cos(g_e) - math.sin(g_e) * math.tan(a_Fen)) * d_en / m - z * math.cos(math.pi / 3 - theta)
                       - G / math.cos(theta) + rho_fP_star)
@@ -331,13 +340,14 @@ class InternalRoot:
 
 
 def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad, a_w: float | None = None,
-                internal_root: InternalRoot | None = None) -> MeshStress:
+                internal_root: InternalRoot | None = None, E_sn: float = 0.0) -> MeshStress:
     """σ_H and σ_F of one spur mesh (a :class:`~propulsor.gears.gear_pair.GearPair`), face width b (mm), tips
     d_a1, d_a2 as made.  a_w: the centre distance the mesh runs at when its mounting sets it (a planet on its
     carrier pin), which may differ from the one of the shifts; α_w, ε_α, Z_H, Z_B and Z_D are then taken there:
     cos α_w = a·cos α/a_w, ε_α = (ρ_a1 ± ρ_a2 ∓ a_w·sin α_w)/p_b (ISO 21771; ± external/internal).
     internal_root: the internal wheel's root is rated too (:mod:`propulsor.gears.iso6336_internal`), with Y_B of
-    its rim; without it an internal wheel's root stress stays None."""
+    its rim; without it an internal wheel's root stress stays None.  E_sn: the tooth thickness allowance the external
+    gears are made with (see :func:`tooth_form_factor`); an internal wheel's is in its ``internal_root.s``."""
     require_positive("b", b, "mm")
     g1, g2 = pair.gear1, pair.gear2
     m, alpha = pair.m, pair.alpha
@@ -367,10 +377,10 @@ def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad, a_w: f
     rack = g1.rack
     Y_eps = 0.25 + 0.75 / eps
     K = load.K_A * K_v * K_Fb * K_Ha
-    f1 = tooth_form_factor(g1.z, m, g1.x, d_a1, alpha, rack.h_fP_star, rack.rho_f_star)
+    f1 = tooth_form_factor(g1.z, m, g1.x, d_a1, alpha, rack.h_fP_star, rack.rho_f_star, E_sn=E_sn)
     sF1 = F_t / (b * m) * f1.Y_F * f1.Y_S * Y_eps * K
     d_en1 = d_en_single_contact(d_a1, g1.d_b, m, alpha, eps)
-    b1 = tooth_form_factor(g1.z, m, g1.x, d_en1, alpha, rack.h_fP_star, rack.rho_f_star)
+    b1 = tooth_form_factor(g1.z, m, g1.x, d_en1, alpha, rack.h_fP_star, rack.rho_f_star, E_sn=E_sn)
     sF1_B = F_t / (b * m) * b1.Y_F * b1.Y_S * K
     Y_F2 = Y_S2 = sF2 = b2 = d_en2 = sF2_B = None
     Y_B2 = 1.0
@@ -387,11 +397,11 @@ def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad, a_w: f
         sF2_B = F_t / (b * m) * b2.Y_F * b2.Y_S * Y_B2 * K
     if not pair.internal:
         rack2 = g2.rack
-        f2 = tooth_form_factor(g2.z, m, g2.x, d_a2, alpha, rack2.h_fP_star, rack2.rho_f_star)
+        f2 = tooth_form_factor(g2.z, m, g2.x, d_a2, alpha, rack2.h_fP_star, rack2.rho_f_star, E_sn=E_sn)
         Y_F2, Y_S2 = f2.Y_F, f2.Y_S
         sF2 = F_t / (b * m) * Y_F2 * Y_S2 * Y_eps * K
         d_en2 = d_en_single_contact(d_a2, g2.d_b, m, alpha, eps)
-        b2 = tooth_form_factor(g2.z, m, g2.x, d_en2, alpha, rack2.h_fP_star, rack2.rho_f_star)
+        b2 = tooth_form_factor(g2.z, m, g2.x, d_en2, alpha, rack2.h_fP_star, rack2.rho_f_star, E_sn=E_sn)
         sF2_B = F_t / (b * m) * b2.Y_F * b2.Y_S * K
     return MeshStress(F_t, b, load.K_A, K_v, K_Hb, K_Ha, K_Fb, K_Ha, Z_H, Z_E, Z_e, Z_B, s0, sH,
                       f1.Y_F, f1.Y_S, Y_F2, Y_S2, Y_eps, sF1, sF2,

@@ -147,7 +147,8 @@ def fatigue_rows(p, ps, sp, pr, v: float):
             root[(tag, g)] = (R, hours)
             brow += [(*t, g) for t in [
                 ("d_en", d_en, "mm", f"outer point of single contact (d_a = {d_a:.3f} mm, ε_α = {s.eps_alpha:.4f})"),
-                ("Y_F", tf.Y_F, "", f"method B, s_Fn = {tf.s_Fn:.3f} mm, h_Fe = {tf.h_Fe:.3f} mm"
+                ("Y_F", tf.Y_F, "", f"method B, s_Fn = {tf.s_Fn:.3f} mm, h_Fe = {tf.h_Fe:.3f} mm, the tooth as made "
+                                    f"(thinned by E_sn = {p.tooth_thinning_mm:g} mm)"
                                     + (", internal gear: substitute rack, ρ_fP = the shaper's tip radius"
                                        if G.internal else "")),
                 ("Y_S", tf.Y_S, "", f"method B, ρ_F = {tf.rho_F:.3f} mm"),

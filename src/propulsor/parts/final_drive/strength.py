@@ -55,13 +55,14 @@ def mesh_stresses(p, ps, b_sp: float | None = None, b_pr: float | None = None):
                     pinion_meshes=p.n_planets)
     b_sp = min(p.width_sun_mm, p.width_planet_mm) if b_sp is None else b_sp
     b_pr = min(p.width_planet_mm, p.width_ring_mm) if b_pr is None else b_pr
-    sp = mesh_stress(ps.mesh_sun_planet, ps.d_a_sun, ps.d_a_planet, b_sp, load)
+    # the root's form factors of the teeth as made: thinned by the allowance E_sn of the solids
+    sp = mesh_stress(ps.mesh_sun_planet, ps.d_a_sun, ps.d_a_planet, b_sp, load, E_sn=p.tooth_thinning_mm)
     # the planet passes the sun's tangential force on to the ring (equal base-circle forces)
     load_pr = MeshLoad(T1 * p.z_planet / p.z_sun, v, p.application_factor_K_A, p.accuracy_grade)
     # one centre distance per mesh, the one the carrier makes: the planets sit on the sun–planet a_w, so the
     # planet–ring mesh runs there too (a set that is not coaxial runs it off the a_w of its shifts)
     pr = mesh_stress(ps.mesh_planet_ring, ps.d_a_planet, ps.d_a_ring, b_pr, load_pr, a_w=ps.a_w,
-                     internal_root=ring_root(p, ps))
+                     internal_root=ring_root(p, ps), E_sn=p.tooth_thinning_mm)
     return sp, pr
 
 
