@@ -60,7 +60,8 @@ from .involute import inv
 
 __all__ = ["Material", "STEEL", "z_e", "z_h", "z_eps", "z_b", "z_d", "f_h_beta", "contact_factors", "tooth_form_factor",
            "ToothForm", "k_v_method_b", "f_sh_torsion", "FaceLoad", "face_load_method_c", "k_h_beta_method_c",
-           "k_h_alpha", "d_en_single_contact", "MeshLoad", "MeshStress", "operating_angle", "InternalRoot", "mesh_stress"]
+           "k_h_alpha", "d_en_single_contact", "MeshLoad", "MeshStress", "operating_angle", "InternalRoot", "root_face_width",
+           "mesh_stress"]
 
 
 @dataclass(frozen=True)
@@ -308,6 +309,8 @@ class MeshStress:
     sigma_F2_B: float | None = None
     a_w: float = 0.0             # mm, the centre distance the mesh runs at
     Y_B2: float = 1.0            # rim thickness factor of the wheel (an internal wheel's rim)
+    b_F1: float = 0.0            # mm, face widths the roots are bent over (pinion, wheel)
+    b_F2: float = 0.0
     alpha_w: float = 0.0         # rad, its operating pressure angle
 
     @property
@@ -328,6 +331,12 @@ def operating_angle(pair, a_w: float | None) -> float:
     return math.acos(c)
 
 
+def root_face_width(b_gear: float, b_mesh: float, m: float) -> float:
+    """Face width a gear's root is bent over, mm (ISO 6336-3:2019, 5.2): the mesh's common face b_mesh plus at most
+    one module beyond each of its ends, within the gear's own face b_gear."""
+    return min(b_gear, b_mesh + 2.0 * m)
+
+
 @dataclass(frozen=True)
 class InternalRoot:
     """What the root of an internal wheel needs beyond the pair (ISO 6336-3:2019, internal gears): its arc tooth
@@ -340,15 +349,20 @@ class InternalRoot:
 
 
 def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad, a_w: float | None = None,
-                internal_root: InternalRoot | None = None, E_sn: float = 0.0) -> MeshStress:
+                internal_root: InternalRoot | None = None, E_sn: float = 0.0,
+                b_F: tuple[float, float] | None = None) -> MeshStress:
     """σ_H and σ_F of one spur mesh (a :class:`~propulsor.gears.gear_pair.GearPair`), face width b (mm), tips
     d_a1, d_a2 as made.  a_w: the centre distance the mesh runs at when its mounting sets it (a planet on its
     carrier pin), which may differ from the one of the shifts; α_w, ε_α, Z_H, Z_B and Z_D are then taken there:
     cos α_w = a·cos α/a_w, ε_α = (ρ_a1 ± ρ_a2 ∓ a_w·sin α_w)/p_b (ISO 21771; ± external/internal).
     internal_root: the internal wheel's root is rated too (:mod:`propulsor.gears.iso6336_internal`), with Y_B of
     its rim; without it an internal wheel's root stress stays None.  E_sn: the tooth thickness allowance the external
-    gears are made with (see :func:`tooth_form_factor`); an internal wheel's is in its ``internal_root.s``."""
+    gears are made with (see :func:`tooth_form_factor`); an internal wheel's is in its ``internal_root.s``.
+    b_F: the face widths (mm) each root is bent over, pinion and wheel (default b both): ISO 6336-3:2019, 5.2 —
+    the wider gear's root may be taken as the narrower face plus at most one module on each side
+    (:func:`root_face_width`)."""
     require_positive("b", b, "mm")
+    bF1, bF2 = (b, b) if b_F is None else (require_positive("b_F1", b_F[0], "mm"), require_positive("b_F2", b_F[1], "mm"))
     g1, g2 = pair.gear1, pair.gear2
     m, alpha = pair.m, pair.alpha
     aw = operating_angle(pair, a_w)
@@ -378,10 +392,10 @@ def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad, a_w: f
     Y_eps = 0.25 + 0.75 / eps
     K = load.K_A * K_v * K_Fb * K_Ha
     f1 = tooth_form_factor(g1.z, m, g1.x, d_a1, alpha, rack.h_fP_star, rack.rho_f_star, E_sn=E_sn)
-    sF1 = F_t / (b * m) * f1.Y_F * f1.Y_S * Y_eps * K
+    sF1 = F_t / (bF1 * m) * f1.Y_F * f1.Y_S * Y_eps * K
     d_en1 = d_en_single_contact(d_a1, g1.d_b, m, alpha, eps)
     b1 = tooth_form_factor(g1.z, m, g1.x, d_en1, alpha, rack.h_fP_star, rack.rho_f_star, E_sn=E_sn)
-    sF1_B = F_t / (b * m) * b1.Y_F * b1.Y_S * K
+    sF1_B = F_t / (bF1 * m) * b1.Y_F * b1.Y_S * K
     Y_F2 = Y_S2 = sF2 = b2 = d_en2 = sF2_B = None
     Y_B2 = 1.0
     if pair.internal and internal_root is not None:
@@ -391,19 +405,20 @@ def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad, a_w: f
         Y_B2 = y_b_internal(ir.s_R, m)
         f2 = internal_tooth_form(g2.d, g2.d_f, ir.s, m, ir.rho_fP, d_a2, alpha)
         Y_F2, Y_S2 = f2.Y_F, f2.Y_S
-        sF2 = F_t / (b * m) * Y_F2 * Y_S2 * Y_eps * Y_B2 * K
+        sF2 = F_t / (bF2 * m) * Y_F2 * Y_S2 * Y_eps * Y_B2 * K
         d_en2 = d_en_internal(d_a2, g2.d_b, m, alpha, eps)
         b2 = internal_tooth_form(g2.d, g2.d_f, ir.s, m, ir.rho_fP, d_en2, alpha)
-        sF2_B = F_t / (b * m) * b2.Y_F * b2.Y_S * Y_B2 * K
+        sF2_B = F_t / (bF2 * m) * b2.Y_F * b2.Y_S * Y_B2 * K
     if not pair.internal:
         rack2 = g2.rack
         f2 = tooth_form_factor(g2.z, m, g2.x, d_a2, alpha, rack2.h_fP_star, rack2.rho_f_star, E_sn=E_sn)
         Y_F2, Y_S2 = f2.Y_F, f2.Y_S
-        sF2 = F_t / (b * m) * Y_F2 * Y_S2 * Y_eps * K
+        sF2 = F_t / (bF2 * m) * Y_F2 * Y_S2 * Y_eps * K
         d_en2 = d_en_single_contact(d_a2, g2.d_b, m, alpha, eps)
         b2 = tooth_form_factor(g2.z, m, g2.x, d_en2, alpha, rack2.h_fP_star, rack2.rho_f_star, E_sn=E_sn)
-        sF2_B = F_t / (b * m) * b2.Y_F * b2.Y_S * K
+        sF2_B = F_t / (bF2 * m) * b2.Y_F * b2.Y_S * K
     return MeshStress(F_t, b, load.K_A, K_v, K_Hb, K_Ha, K_Fb, K_Ha, Z_H, Z_E, Z_e, Z_B, s0, sH,
                       f1.Y_F, f1.Y_S, Y_F2, Y_S2, Y_eps, sF1, sF2,
                       d1=d1, u=u, eps_alpha=eps, Z_D=Z_D, face=face, root1_B=b1, root2_B=b2, d_en1=d_en1,
-                      d_en2=d_en2, sigma_F1_B=sF1_B, sigma_F2_B=sF2_B, a_w=a_w_run, alpha_w=aw, Y_B2=Y_B2)
+                      d_en2=d_en2, sigma_F1_B=sF1_B, sigma_F2_B=sF2_B, a_w=a_w_run, alpha_w=aw, Y_B2=Y_B2,
+                      b_F1=bF1, b_F2=bF2)

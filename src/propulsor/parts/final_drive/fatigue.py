@@ -39,6 +39,7 @@ _SRC = {
     "S_H": "ISO 6336-2 cl. 5 (σ_HG/σ_H)", "S_H_static": "seed 004 ch. 4.1 (σ_Hmax = 44·HRC over σ_H)",
     "d_en": "ISO 6336-3 cl. 6 method B (outer point of single contact)", "Y_F": "ISO 6336-3 cl. 6 method B",
     "Y_S": "ISO 6336-3 cl. 7 method B", "q_s": "ISO 6336-3 cl. 7 (s_Fn/(2·ρ_F))",
+    "b_F": "ISO 6336-3:2019 5.2 (wider face: narrower + at most 1 module each side)",
     "Y_beta": "ISO 6336-3 cl. 8 (spur: 1)", "Y_B": "ISO 6336-3 cl. 9 (rim thickness factor)",
     "Y_DT": "ISO 6336-3 cl. 9 (ε_α < 2.05: 1)", "sigma_F": "ISO 6336-3 cl. 5 method B",
     "Y_F_C": "ISO 6336-3:1996 method C (load at the tip)", "Y_S_C": "ISO 6336-3:1996 method C",
@@ -135,10 +136,10 @@ def fatigue_rows(p, ps, sp, pr, v: float):
         rows += [[tag, "pitting", *r] for r in prow]
         # -- bending (method B checks, method C beside)
         brow = [(*t, "") for t in common + khb + kfb + [("K_Falpha", s.K_Falpha, "", f"Table 9, grade {p.accuracy_grade}")]]
-        gears = [(g1, G1, da[g1], s.root1_B, s.d_en1, s.sigma_F1_B, s.Y_F1, s.Y_S1, s.sigma_F1)]
+        gears = [(g1, G1, da[g1], s.root1_B, s.d_en1, s.sigma_F1_B, s.Y_F1, s.Y_S1, s.sigma_F1, s.b_F1)]
         if s.sigma_F2_B is not None:
-            gears.append((g2, G2, da[g2], s.root2_B, s.d_en2, s.sigma_F2_B, s.Y_F2, s.Y_S2, s.sigma_F2))
-        for g, G, d_a, tf, d_en, sF, YFc, YSc, sFc in gears:
+            gears.append((g2, G2, da[g2], s.root2_B, s.d_en2, s.sigma_F2_B, s.Y_F2, s.Y_S2, s.sigma_F2, s.b_F2))
+        for g, G, d_a, tf, d_en, sF, YFc, YSc, sFc, bF in gears:
             idler = g == "planet"
             q_s = tf.s_Fn / (2.0 * tf.rho_F)
             R = root_fatigue_safety(sF, q_s, mesh.m, p.sigma_Flim_MPa, p.root_roughness_Rz_um,
@@ -157,7 +158,10 @@ def fatigue_rows(p, ps, sp, pr, v: float):
                 ("Y_B", s.Y_B2 if G.internal else 1.0, "",
                  "internal gear: the rim under the root (1 from s_R >= 3.5·m)" if G.internal else "solid rim"),
                 ("Y_DT", 1.0, "", "ε_α < 2.05"),
-                ("sigma_F", sF, "MPa", f"F_t/(b·m)·Y_F·Y_S·K_A·K_v·K_Fβ·K_Fα, m = {mesh.m:g} mm (method B: the checks use it)"),
+                ("b_F", bF, "mm", f"face the root is bent over: the common {s.b:g} mm plus at most one module each "
+                                  f"side, within the {g}'s own face"),
+                ("sigma_F", sF, "MPa", f"F_t/(b_F·m)·Y_F·Y_S·Y_B·K_A·K_v·K_Fβ·K_Fα, m = {mesh.m:g} mm "
+                                       f"(method B: the checks use it)"),
                 ("Y_F_C", YFc, "", f"load at the tip d_a = {d_a:.3f} mm"),
                 ("Y_S_C", YSc, "", f"load at the tip"),
                 ("Y_eps", s.Y_eps, "", f"ε_α = {s.eps_alpha:.4f}"),

@@ -45,24 +45,32 @@ def ring_root(p, ps):
 
 
 def mesh_stresses(p, ps, b_sp: float | None = None, b_pr: float | None = None):
-    """ISO 6336 stresses of (sun–planet, planet–ring) at the design torque."""
-    from ...gears.iso6336 import MeshLoad, mesh_stress
+    """ISO 6336 stresses of (sun–planet, planet–ring) at the design torque.  b_sp, b_pr: common face widths to try
+    (the face width search; every root then bent over that width), by default the design's (each root over the
+    common face plus at most one module each side within its own face, ISO 6336-3:2019 5.2)."""
+    from ...gears.iso6336 import MeshLoad, mesh_stress, root_face_width
 
     T1, v = _loads(p, ps)
     # the sun passes the whole input torque through its body: its torsional wind-up under all n_planets meshes'
     # torque enters K_Hβ (f_sh, ISO 6336-1 method C)
     load = MeshLoad(T1, v, p.application_factor_K_A, p.accuracy_grade, pinion_torsion=True,
                     pinion_meshes=p.n_planets)
-    b_sp = min(p.width_sun_mm, p.width_planet_mm) if b_sp is None else b_sp
-    b_pr = min(p.width_planet_mm, p.width_ring_mm) if b_pr is None else b_pr
+    m = p.module_mm
+    bF_sp = bF_pr = None
+    if b_sp is None:   # the design's faces: each root over the common face plus at most a module each side
+        b_sp = min(p.width_sun_mm, p.width_planet_mm)
+        bF_sp = (root_face_width(p.width_sun_mm, b_sp, m), root_face_width(p.width_planet_mm, b_sp, m))
+    if b_pr is None:
+        b_pr = min(p.width_planet_mm, p.width_ring_mm)
+        bF_pr = (root_face_width(p.width_planet_mm, b_pr, m), root_face_width(p.width_ring_mm, b_pr, m))
     # the root's form factors of the teeth as made: thinned by the allowance E_sn of the solids
-    sp = mesh_stress(ps.mesh_sun_planet, ps.d_a_sun, ps.d_a_planet, b_sp, load, E_sn=p.tooth_thinning_mm)
+    sp = mesh_stress(ps.mesh_sun_planet, ps.d_a_sun, ps.d_a_planet, b_sp, load, E_sn=p.tooth_thinning_mm, b_F=bF_sp)
     # the planet passes the sun's tangential force on to the ring (equal base-circle forces)
     load_pr = MeshLoad(T1 * p.z_planet / p.z_sun, v, p.application_factor_K_A, p.accuracy_grade)
     # one centre distance per mesh, the one the carrier makes: the planets sit on the sun–planet a_w, so the
     # planet–ring mesh runs there too (a set that is not coaxial runs it off the a_w of its shifts)
     pr = mesh_stress(ps.mesh_planet_ring, ps.d_a_planet, ps.d_a_ring, b_pr, load_pr, a_w=ps.a_w,
-                     internal_root=ring_root(p, ps), E_sn=p.tooth_thinning_mm)
+                     internal_root=ring_root(p, ps), E_sn=p.tooth_thinning_mm, b_F=bF_pr)
     return sp, pr
 
 
