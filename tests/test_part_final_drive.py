@@ -379,6 +379,18 @@ def test_fatigue_safeties_and_factor_table(built):
         d["strength_sun_planet_sigma_F_planet_method_B_MPa"], rel=1e-12)
     assert float(by[("sun_planet", "pitting", "sun", "S_H")]["value"]) == pytest.approx(
         d["strength_sun_planet_S_H_pitting_sun"], rel=1e-12)
+    # each factor's method and the life point it is taken at: the gear's N_L for the life factors and what they
+    # make; the reference point for the factors the life interpolates (ISO 6336-2/-3 method B, 5.4)
+    N_sun = 3600 * 3 * 3.5 * 7.852 / 3.6 / (15 * 0.125) * 100.0          # 4.397e6 cycles in 100 h
+    for f, method in (("K_v", "B"), ("K_Hbeta", "C"), ("f_sh", "C"), ("Z_B", "B"), ("Z_NT", "B")):
+        assert by[("sun_planet", "pitting", "sun" if f == "Z_NT" else "", f)]["method"] == method
+    for f in ("Z_NT", "Z_LvR", "sigma_HG", "S_H"):
+        assert float(by[("sun_planet", "pitting", "sun", f)]["N_L"]) == pytest.approx(N_sun, rel=1e-3)
+    for f in ("Z_L", "Z_v", "Z_R"):
+        assert by[("planet_ring", "pitting", "ring", f)]["N_L"] == "5e7 (reference)"
+    assert by[("sun_planet", "bending", "planet", "Y_delta_relT_static")]["N_L"] == "1e3 (static)"
+    assert by[("sun_planet", "bending", "planet", "Y_F_C")]["method"] == "C"
+    assert by[("planet_ring", "bending", "ring", "Y_NT")]["N_L"] != "" and by[("sun_planet", "pitting", "", "F_t")]["N_L"] == ""
     assert "d_1 = 160 mm" in by[("sun_planet", "pitting", "", "F_t")]["basis"]
     assert "E = 206 000 MPa, ν = 0.3" in by[("sun_planet", "pitting", "", "Z_E")]["basis"]
     assert by[("sun_planet", "pitting", "", "Z_H")]["source"].startswith("ISO 6336-2 cl. 6")

@@ -1,6 +1,8 @@
 """The final drive's fatigue strength by ISO 6336 (pitting: part 2, bending: part 3, limits: part 5) for a service
 life at the design torque, and the factor table of every strength calculation (sun–planet and planet–ring;
-pitting and bending): each factor with its value, the clause of ISO 6336 it comes from and its basis.
+pitting and bending): each factor with its value, the method (A/B/C) it is determined by, the life point it is taken
+at (the gear's N_L, or the static / reference point of a factor the life interpolates), the clause of ISO 6336 it
+comes from (the 2006 editions' clause numbers unless a 2019 clause is named) and its basis.
 
 Load cycles per hour of running at the design speed (every gear counted relative to the carrier):
 sun n_s·k, planet n_s·z1/z2 (each flank once per turn in each mesh; its root is bent both ways, Y_M = 0.7),
@@ -20,14 +22,14 @@ __all__ = ["fatigue", "cycles_per_hour", "fatigue_rows"]
 _SRC = {
     "F_t": "ISO 6336-1 cl. 3 (F_t = 2000·T_1/d_1)", "b": "ISO 6336-2 cl. 5 (common face width)",
     "u": "ISO 6336-2 cl. 5 (u = z2/z1, < 0 internal)", "K_A": "ISO 6336-1 cl. 5 / Annex A",
-    "K_v": "ISO 6336-1 cl. 6.3 method B, Table 8", "f_sh": "ISO 6336-1 cl. 7 method C (torsion of the pinion)",
+    "K_v": "ISO 6336-1 cl. 6.3 method B, Table 8", "f_sh": "ISO 6336-1 cl. 7 method C (torsion of the pinion under all its meshes' torque)",
     "f_ma": "ISO 6336-1 cl. 7 method C (f_ma = f_Hβ, ISO 1328-1)", "F_betax": "ISO 6336-1 cl. 7 method C",
     "y_beta": "ISO 6336-1 cl. 7 (running-in, hardened)", "F_betay": "ISO 6336-1 cl. 7 (F_βx − y_β)",
     "c_gamma_beta": "ISO 6336-1 cl. 9 (0.85·c_γα, c_γα = 20)", "K_Hbeta": "ISO 6336-1 cl. 7 method C",
     "N_F": "ISO 6336-1 cl. 7 (K_Fβ exponent)", "K_Fbeta": "ISO 6336-1 cl. 7 (K_Hβ^N_F)",
     "K_Halpha": "ISO 6336-1 cl. 8, Table 9", "K_Falpha": "ISO 6336-1 cl. 8, Table 9",
     "Z_H": "ISO 6336-2 cl. 6 (eq. 9)", "Z_E": "ISO 6336-2 cl. 8 (eq. 18)", "Z_eps": "ISO 6336-2 cl. 9 (eq. 25)",
-    "Z_beta": "ISO 6336-2 cl. 10 (spur: 1)", "Z_B": "ISO 6336-2 cl. 7 (M_1)", "Z_D": "ISO 6336-2 cl. 7 (M_2)",
+    "Z_beta": "ISO 6336-2 cl. 10 (spur: 1)", "Z_B": "ISO 6336-2:2019 6.2 (M_1; an internal mate with z2 < 0)", "Z_D": "ISO 6336-2:2019 6.2 (M_2; internal wheel: 1)",
     "sigma_H0": "ISO 6336-2 cl. 5 (eq. 2)", "sigma_H": "ISO 6336-2 cl. 5 (eq. 1, 3)",
     "N_L": "ISO 6336-2 cl. 11 / ISO 6336-3 cl. 11 (load cycles)", "Z_NT": "ISO 6336-2 cl. 11, Table 2",
     "Z_L": "ISO 6336-2 cl. 12 method B", "Z_v": "ISO 6336-2 cl. 12 method B", "Z_R": "ISO 6336-2 cl. 12 method B",
@@ -51,6 +53,24 @@ _SRC = {
     "sigma_FG": "ISO 6336-3 cl. 5 (σ_Flim·Y_ST·Y_NT·(Y_δrelT·Y_RrelT·Y_X at N_L)·Y_M)", "S_F": "ISO 6336-3 cl. 5 (σ_FG/σ_F)",
     "S_F_static": "seed 004 ch. 4.1 (σ_FlimM = 2.8·σ_t over σ_F, method B)",
 }
+
+
+# the method (ISO 6336 A/B/C) each factor is determined by; "" for a quantity of the load or the geometry
+_METHOD = {
+    "K_v": "B", "f_sh": "C", "f_ma": "C", "F_betax": "C", "y_beta": "C", "F_betay": "C", "c_gamma_beta": "C",
+    "K_Hbeta": "C", "N_F": "C", "K_Fbeta": "C", "K_Halpha": "C", "K_Falpha": "C",
+    "Z_H": "B", "Z_E": "B", "Z_eps": "B", "Z_beta": "B", "Z_B": "B", "Z_D": "B", "sigma_H0": "B", "sigma_H": "B",
+    "Z_NT": "B", "Z_L": "B", "Z_v": "B", "Z_R": "B", "Z_W": "B", "Z_X": "B", "Z_LvR": "B", "sigma_HG": "B",
+    "S_H": "B", "d_en": "B", "Y_F": "B", "Y_S": "B", "q_s": "B", "Y_beta": "B", "Y_B": "B", "Y_DT": "B",
+    "b_F": "B", "sigma_F": "B", "Y_F_C": "C", "Y_S_C": "C", "Y_eps": "C", "sigma_F_C": "C", "Y_ST": "B",
+    "Y_NT": "B", "Y_delta_relT": "B", "Y_R_relT": "B", "Y_X": "B", "Y_M": "B", "Y_delta_relT_static": "B",
+    "Y_dRX": "B", "sigma_FG": "B", "S_F": "B",
+}
+# the life point a life-dependent factor is taken at: the gear's N_L, or the reference / static point
+_AT_N_L = {"N_L", "Z_NT", "Z_LvR", "sigma_HG", "S_H", "Y_NT", "Y_dRX", "sigma_FG", "S_F"}
+_AT_POINT = {"Z_L": "5e7 (reference)", "Z_v": "5e7 (reference)", "Z_R": "5e7 (reference)",
+             "Y_delta_relT": "3e6 (reference)", "Y_R_relT": "3e6 (reference)", "Y_X": "3e6 (reference)",
+             "Y_delta_relT_static": "1e3 (static)"}
 
 
 def cycles_per_hour(p, ps) -> dict[str, float]:
@@ -183,7 +203,15 @@ def fatigue_rows(p, ps, sp, pr, v: float):
                 ("S_F_static", sFlim / sF, "", f"2.8·σ_t = {sFlim:.0f} MPa over σ_F"),
             ]]
         rows += [[tag, "bending", *r] for r in brow]
-    rows = [[t, c, gear, sym, val, unit, _SRC[sym], basis] for t, c, sym, val, unit, basis, gear in rows]
+    def life_point(tag, calc, gear, sym):
+        if sym in _AT_POINT:
+            return _AT_POINT[sym]
+        if sym in _AT_N_L and gear:
+            return f"{(pit if calc == 'pitting' else root)[(tag, gear)][0].N_L:.4g}"
+        return ""
+
+    rows = [[t, c, gear, sym, val, unit, _METHOD.get(sym, ""), life_point(t, c, gear, sym), _SRC[sym], basis]
+            for t, c, sym, val, unit, basis, gear in rows]
     return rows, pit, root
 
 
@@ -225,7 +253,8 @@ def fatigue(dd: FinalDriveDesign, w, built: dict) -> None:
     d.update({f"load_cycles_per_hour_{g}": x for g, x in cph.items()})
     for g in cph:
         w.describe(f"load_cycles_per_hour_{g}", "1/h", f"load cycles of a {g} tooth per hour at the design speed")
-    w.add_table("strength_factors", ["mesh", "calculation", "gear", "factor", "value", "unit", "source", "basis"], rows)
+    w.add_table("strength_factors", ["mesh", "calculation", "gear", "factor", "value", "unit", "method", "N_L",
+                                     "source", "basis"], rows)
     w.add_note(
         f"Fatigue (ISO 6336-2 pitting, ISO 6336-3 method B bending, limits of ISO 6336-5) for {p.service_life_h:g} h "
         f"at the design torque and {p.design_speed_kmh:g} km/h (seed 004 prints no duty: this running time is the "
@@ -239,7 +268,8 @@ def fatigue(dd: FinalDriveDesign, w, built: dict) -> None:
                              ("planet_ring", "pitting", "Planet–ring pitting"),
                              ("planet_ring", "bending", "Planet–ring bending")):
         items = [f"{r[3]}{(' of the ' + r[2]) if r[2] else ''} = {_fmt(r[4])}{(' ' + r[5]) if r[5] else ''} "
-                 f"({r[6]}; {r[7]})" for r in rows if r[0] == tag and r[1] == calc]
+                 f"({r[8]}{'; method ' + r[6] if r[6] else ''}{'; at N = ' + r[7] if r[7] else ''}; {r[9]})"
+                 for r in rows if r[0] == tag and r[1] == calc]
         w.add_note(f"ISO 6336 factor table, {title}: " + "; ".join(items) + ".")
 
 
