@@ -150,7 +150,7 @@ def test_finite_life_takes_the_influence_factors_between_the_static_and_the_refe
         → S_H 2.1364 → 2.0899 at b = 75 mm (−2.2 %: the reference product 1.037 counts only 40 % at this life)
     root of the planet (sun mesh, Y_M = 0.7): Y_δrelT,static = 0.44·Y_S + 0.12, Y_RrelT,static = Y_X,static = 1;
         w = log(3e6/N)/log(3e6/1e3);  σ_FG = 425·2·Y_NT·P_ref^(1 − w)·P_static^w·0.7
-        → S_F 1.3820 → 1.3924 at b = 75 mm (the issue of the 75 mm planet is not this: see the part files)."""
+        → S_F 1.3820 → 1.3924 at b = 75 mm (still below 1.4: the part files say what the 75 mm planet needs)."""
     from propulsor.gears import iso6336_life as life
 
     ps = _set()

@@ -172,7 +172,8 @@ def fatigue_rows(p, ps, sp, pr, v: float):
                                     f"(thinned by E_sn = {p.tooth_thinning_mm:g} mm)"
                                     + (", internal gear: substitute rack, ρ_fP = the shaper's tip radius"
                                        if G.internal else "")),
-                ("Y_S", tf.Y_S, "", f"method B, ρ_F = {tf.rho_F:.3f} mm"),
+                ("Y_S", tf.Y_S, "", f"method B, ρ_F = {tf.rho_F:.3f} mm"
+                                    + ("" if 1.0 <= q_s < 8.0 else f"; q_s = {q_s:.2f} outside the formula's 1 <= q_s < 8")),
                 ("q_s", q_s, "", f"s_Fn/(2·ρ_F)"),
                 ("Y_beta", 1.0, "", "β = 0"),
                 ("Y_B", s.Y_B2 if G.internal else 1.0, "",
