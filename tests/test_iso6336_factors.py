@@ -137,17 +137,23 @@ def test_lubricant_speed_and_roughness_factors():
 
 
 def test_pitting_and_root_fatigue_safety_assemble_the_factors():
+    # at N_L = 1e6 (between the static 1e5 and the reference 5e7) Z_L·Z_v·Z_R goes from its reference value to the
+    # static 1 on the log-log line: w = log(5e7/1e6)/log(5e7/1e5) (tests/test_iso6336_planetary.py by hand)
     P = life.pitting_safety(1600.0, 1500.0, 1e6, 220.0, 2.0, 3.0, 3.0, 20.0, S_Hmin=1.0)
-    sHG = 1500.0 * 50.0 ** 0.0756 * P.Z_L * P.Z_v * P.Z_R
+    w = math.log(50.0) / math.log(500.0)
+    sHG = 1500.0 * 50.0 ** 0.0756 * (P.Z_L * P.Z_v * P.Z_R) ** (1.0 - w)
     assert (P.sigma_HG, P.S_H, P.Z_W, P.Z_X) == pytest.approx((sHG, sHG / 1600.0, 1.0, 1.0), rel=1e-12)
-    q_s = 1.9
-    sun = life.root_fatigue_safety(400.0, q_s, 10.0, 425.0, 10.0, 1e5)
-    planet = life.root_fatigue_safety(400.0, q_s, 10.0, 425.0, 10.0, 1e5, idler=True)
+    q_s, Y_S = 1.9, 1.95
+    sun = life.root_fatigue_safety(400.0, q_s, 10.0, 425.0, 10.0, 3e6, Y_S=Y_S)
+    planet = life.root_fatigue_safety(400.0, q_s, 10.0, 425.0, 10.0, 3e6, idler=True, Y_S=Y_S)
     Yd = (1 + math.sqrt(0.003 * (1 + 2 * q_s) / 5)) / (1 + math.sqrt(0.003 * 1.2))
     Yr = 1.674 - 0.529 * 11.0 ** 0.1
-    sFG = 425.0 * 2.0 * 30.0 ** 0.115 * Yd * Yr * (1.05 - 0.01 * 10.0)
+    sFG = 425.0 * 2.0 * 1.0 * Yd * Yr * (1.05 - 0.01 * 10.0)     # the reference point: Y_NT = 1
     assert sun.sigma_FG == pytest.approx(sFG, rel=1e-12) and sun.S_F == pytest.approx(sFG / 400.0, rel=1e-12)
     assert planet.Y_M == 0.7 and planet.sigma_FG == pytest.approx(0.7 * sFG, rel=1e-12)
+    # the static point (1e3 cycles and below): Y_NT = 2.5, Y_δrelT = 0.44·Y_S + 0.12, Y_RrelT = Y_X = 1
+    st = life.root_fatigue_safety(400.0, q_s, 10.0, 425.0, 10.0, 1e3, Y_S=Y_S)
+    assert st.sigma_FG == pytest.approx(425.0 * 2.0 * 2.5 * (0.44 * Y_S + 0.12), rel=1e-12)
 
 
 def test_single_pair_contact_factors_of_sun_and_planet():
@@ -162,4 +168,5 @@ def test_single_pair_contact_factors_of_sun_and_planet():
     assert s.Z_B > s.Z_D > 1.0
     assert s.sigma_H_wheel == pytest.approx(s.sigma_H * M2 / M1, rel=1e-12)
     ring = mesh_stress(ps.mesh_planet_ring, ps.d_a_planet, ps.d_a_ring, 75.0, MeshLoad(T1 * 20 / 16, v))
-    assert ring.Z_B == ring.Z_D == 1.0 and ring.sigma_H_wheel == ring.sigma_H
+    # ISO 6336-2:2019, 6.2: the internal wheel's Z_D is 1, the planet's Z_B is M_1 (tests/test_iso6336_planetary.py)
+    assert ring.Z_D == 1.0 and ring.Z_B > 1.2 and ring.sigma_H_wheel == pytest.approx(ring.sigma_H / ring.Z_B, rel=1e-12)

@@ -96,6 +96,29 @@ def test_dxf_units_layers_and_one_outer_loop(built):
     assert 2 * r == pytest.approx(_manifest(built)["derived"]["d_a_planet_mm"], abs=1e-6)
 
 
+def test_every_sheet_describes_the_solid_that_is_written(built):
+    """One planet serves both meshes with one tip: the smaller of its two, shortened in the sun mesh (GOST 16532:
+    d_a2 = d2 + 2(h_a* + x2 − Δy)m = 200 + 2·(1 + 0.5 − 0.1357)·10 = 227.286 mm), which its DXF outline reaches.
+    Both sheets give that tip, and s_na and ε_α on it: ε_α = (ρ_a1 − ρ_a2 + a_w·sin α_w)/p_b with ρ_a1 = ½√(d_a1² −
+    d_b1²) of the tip made (the unshortened 230 mm would give 1.430, the solid meshes at 1.349)."""
+    d = _manifest(built)["derived"]
+    loops = read_dxf_loops(built / "planet.dxf")
+    d_a_dxf = 2 * max(np.hypot(p[:, 0], p[:, 1]).max() for p in loops)
+    sheets = {}
+    for mesh in ("sun_planet", "planet_ring"):
+        rows = list(csv.reader((built / "tables" / f"sheet_{mesh}.csv").open()))
+        sheets[mesh] = {r[1]: r[3:] for r in rows[1:]}
+    planet_col = {"sun_planet": 1, "planet_ring": 0}
+    for mesh, col in planet_col.items():
+        assert float(sheets[mesh]["d_a"][col]) == pytest.approx(d_a_dxf, abs=1e-6)
+        assert float(sheets[mesh]["s_na"][col]) == pytest.approx(d["s_na_planet_mm"], rel=1e-12)
+        assert float(sheets[mesh]["E_sn"][col]) == 0.15
+    assert float(sheets["planet_ring"]["epsilon_alpha"][0]) == pytest.approx(d["epsilon_alpha_planet_ring"], rel=1e-12)
+    assert round(float(sheets["planet_ring"]["epsilon_alpha"][0]), 3) == 1.349
+    assert float(sheets["sun_planet"]["d_a"][0]) == pytest.approx(d["d_a_sun_mm"], rel=1e-12)
+    assert float(sheets["planet_ring"]["d_a"][1]) == pytest.approx(d["d_a_ring_mm"], rel=1e-12)
+
+
 def _area(p):
     x, y = p[:, 0], p[:, 1]
     return 0.5 * (np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
@@ -201,7 +224,7 @@ def test_strength_of_both_meshes_bearings_spline_and_shaft_in_the_manifest(built
     m = _manifest(built)
     d = m["derived"]
     checks = {c["name"]: c for c in m["checks"]}
-    for mesh, gears in (("sun_planet", ("sun", "planet")), ("planet_ring", ("planet",))):
+    for mesh, gears in (("sun_planet", ("sun", "planet")), ("planet_ring", ("planet", "ring"))):
         S_H = d[f"strength_{mesh}_S_H_static"]
         assert S_H == pytest.approx(44 * 59 / d[f"strength_{mesh}_sigma_H_MPa"], rel=1e-12)
         assert checks[f"strength_{mesh}.S_H_static"]["passed"] and S_H > 1.0
@@ -214,9 +237,10 @@ def test_strength_of_both_meshes_bearings_spline_and_shaft_in_the_manifest(built
             assert d[f"strength_{mesh}_sigma_F_{g}_method_C_MPa"] > 0
         # the face width each mesh needs is below the 75 mm it has
         assert 0 < d[f"strength_{mesh}_face_width_required_mm"] < 75.0
-    # the sun's torsional wind-up in K_Hβ (ISO 6336-1 method C f_sh): 1.063 without it
-    assert round(d["strength_sun_planet_K_Hbeta"], 3) == 1.112
-    assert round(d["strength_planet_ring_K_Hbeta"], 3) == 1.064
+    # the sun's torsional wind-up under all three meshes' torque in K_Hβ (ISO 6336-1 method C f_sh), b = 80 mm
+    # (the part file's planets): f_sh = 0.023·3·(F_m/b)·(80/160)² (tests/test_iso6336_planetary.py does it by hand)
+    assert round(d["strength_sun_planet_K_Hbeta"], 3) == 1.234
+    assert round(d["strength_planet_ring_K_Hbeta"], 3) == 1.069
     assert d["sun_torque_Nm"] == pytest.approx(90687.503 * 1.09 / 4.413, rel=1e-12)
     assert d["bearing_planet_C0_N"] == pytest.approx(128700.0)
     assert d["bearing_planet_S0"] > 1 and checks["bearing_planet.S0"]["passed"]
@@ -321,7 +345,7 @@ def test_fatigue_safeties_and_factor_table(built):
     for mesh, g in flanks:
         c = checks[f"strength_{mesh}.S_H_pitting_{g}"]
         assert c["passed"] and c["value"] == d[f"strength_{mesh}_S_H_pitting_{g}"] and c["limit"] == 1.0
-    for mesh, g in flanks[:3]:
+    for mesh, g in flanks:             # the ring's root too (ISO 6336-3, internal gear)
         c = checks[f"strength_{mesh}.S_F_fatigue_{g}"]
         assert c["passed"] and c["limit"] == 1.4
     # the sun is the weakest flank: 100 h of its 4.4e6 cycles give S_H ≈ 1.09; it reaches S_Hmin at ≈ 320 h
@@ -348,12 +372,25 @@ def test_fatigue_safeties_and_factor_table(built):
         for f in ("d_en", "Y_F", "Y_S", "sigma_F", "Y_F_C", "Y_S_C", "Y_eps", "sigma_F_C", "Y_NT", "Y_delta_relT",
                   "Y_R_relT", "Y_X", "Y_M", "sigma_FG", "S_F", "S_F_static"):
             assert ("sun_planet", "bending", g, f) in by
-    assert ("sun_planet", "bending", "", "K_Fbeta") in by and ("planet_ring", "bending", "ring", "Y_F") not in by
+    assert ("sun_planet", "bending", "", "K_Fbeta") in by and ("planet_ring", "bending", "ring", "Y_F") in by
+    assert float(by[("planet_ring", "bending", "ring", "Y_M")]["value"]) == 1.0        # bent one way
     assert [float(by[("sun_planet", "bending", g, "Y_M")]["value"]) for g in ("sun", "planet")] == [1.0, 0.7]
     assert float(by[("sun_planet", "bending", "planet", "sigma_F")]["value"]) == pytest.approx(
         d["strength_sun_planet_sigma_F_planet_method_B_MPa"], rel=1e-12)
     assert float(by[("sun_planet", "pitting", "sun", "S_H")]["value"]) == pytest.approx(
         d["strength_sun_planet_S_H_pitting_sun"], rel=1e-12)
+    # each factor's method and the life point it is taken at: the gear's N_L for the life factors and what they
+    # make; the reference point for the factors the life interpolates (ISO 6336-2/-3 method B, 5.4)
+    N_sun = 3600 * 3 * 3.5 * 7.852 / 3.6 / (15 * 0.125) * 100.0          # 4.397e6 cycles in 100 h
+    for f, method in (("K_v", "B"), ("K_Hbeta", "C"), ("f_sh", "C"), ("Z_B", "B"), ("Z_NT", "B")):
+        assert by[("sun_planet", "pitting", "sun" if f == "Z_NT" else "", f)]["method"] == method
+    for f in ("Z_NT", "Z_LvR", "sigma_HG", "S_H"):
+        assert float(by[("sun_planet", "pitting", "sun", f)]["N_L"]) == pytest.approx(N_sun, rel=1e-3)
+    for f in ("Z_L", "Z_v", "Z_R"):
+        assert by[("planet_ring", "pitting", "ring", f)]["N_L"] == "5e7 (reference)"
+    assert by[("sun_planet", "bending", "planet", "Y_delta_relT_static")]["N_L"] == "1e3 (static)"
+    assert by[("sun_planet", "bending", "planet", "Y_F_C")]["method"] == "C"
+    assert by[("planet_ring", "bending", "ring", "Y_NT")]["N_L"] != "" and by[("sun_planet", "pitting", "", "F_t")]["N_L"] == ""
     assert "d_1 = 160 mm" in by[("sun_planet", "pitting", "", "F_t")]["basis"]
     assert "E = 206 000 MPa, ν = 0.3" in by[("sun_planet", "pitting", "", "Z_E")]["basis"]
     assert by[("sun_planet", "pitting", "", "Z_H")]["source"].startswith("ISO 6336-2 cl. 6")

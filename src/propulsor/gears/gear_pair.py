@@ -306,11 +306,15 @@ class GearPair:
         """Wheel/ring tooth thickness on its tip as made in this pair (ring tip must be ≥ d_b2)."""
         return self.gear2.tip_thickness(self.d_a2)
 
-    def sheet(self, D: float | None = None) -> list[tuple[str, str, str, float | None, float | None]]:
+    def sheet(self, D: float | None = None, d_a1: float | None = None,
+              d_a2: float | None = None) -> list[tuple[str, str, str, float | None, float | None]]:
         """The calculation sheet as rows (quantity, symbol, unit, gear 1, gear 2); pair quantities in
-        the gear-1 column.  Tips are the ones made for this pair.  ``D``: measuring roller diameter
-        (default: each gear's :attr:`SpurGear.D_recommended`)."""
+        the gear-1 column.  Tips: ``d_a1``, ``d_a2`` as the gears are made (a planet serves two meshes and
+        has one tip); by default the ones made for this pair.  Every tip-dependent row (d_a, h_c, s_na,
+        ρ_p, ε_α) is taken on these tips.  ``D``: measuring roller diameter (default: each gear's
+        :attr:`SpurGear.D_recommended`)."""
         g1, g2 = self.gear1, self.gear2
+        da1, da2 = self._tips(d_a1, d_a2)
         deg = math.degrees
         rows: list[tuple[str, str, str, float | None, float | None]] = [
             ("number of teeth", "z", "-", g1.z, g2.z),
@@ -323,13 +327,13 @@ class GearPair:
             ("centre distance modification coefficient", "y", "-", self.y, None),
             ("tip shortening coefficient", "delta_y", "-", self.delta_y, None),
             ("reference diameter", "d", "mm", g1.d, g2.d),
-            ("tip diameter", "d_a", "mm", self.d_a1, self.d_a2),
+            ("tip diameter", "d_a", "mm", da1, da2),
             ("root diameter", "d_f", "mm", g1.d_f, g2.d_f),
             ("operating pitch diameter", "d_w", "mm", self.d_w1, self.d_w2),
             ("base diameter", "d_b", "mm", g1.d_b, g2.d_b),
             ("reference tooth thickness", "s_n", "mm", g1.s_n, g2.s_n),
             ("constant chord", "s_c", "mm", g1.s_c, g2.s_c),
-            ("height to constant chord", "h_c", "mm", g1.h_c(self.d_a1), g2.h_c(self.d_a2)),
+            ("height to constant chord", "h_c", "mm", g1.h_c(da1), g2.h_c(da2)),
             ("teeth (ring: spaces) spanned", "k", "-", g1.k_W, g2.k_W),
             ("base tangent length", "W_k", "mm", g1.W_k, g2.W_k),
         ]
@@ -345,9 +349,9 @@ class GearPair:
         ]
         try:
             rows += [
-                ("tooth thickness on tip circle", "s_na", "mm", self.s_na1, self.s_na2),
-                ("radius of curvature at lowest active point", "rho_p", "mm", self.rho_p1(), self.rho_p2()),
-                ("transverse contact ratio", "epsilon_alpha", "-", self.epsilon_alpha(), None),
+                ("tooth thickness on tip circle", "s_na", "mm", g1.tip_thickness(da1), g2.tip_thickness(da2)),
+                ("radius of curvature at lowest active point", "rho_p", "mm", self.rho_p1(da2), self.rho_p2(da1)),
+                ("transverse contact ratio", "epsilon_alpha", "-", self.epsilon_alpha(da1, da2), None),
             ]
         except InputError:  # a ring tip inside its base circle: these are undefined
             pass

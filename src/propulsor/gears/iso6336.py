@@ -10,8 +10,9 @@ Contact (ISO 6336-2:2006 eq. 1–3, 9, 10, 18, 25):
     Z_H  = √(2·cos α_w / (cos² α·sin α_w)),   Z_E = √(1/(π·((1 − ν1²)/E1 + (1 − ν2²)/E2)))
     Z_ε  = √((4 − ε_α)/3),   Z_β = 1 (spur)
     Z_B  = max(1, M_1),  M_1 = tan α_w / √((√(d_a1²/d_b1² − 1) − 2π/z1)·(√(d_a2²/d_b2² − 1) − (ε_α − 1)·2π/z2))
-           (external mates; Z_B = 1 for an internal mate, ISO 6336-2 5.1)
-    Z_D  = max(1, M_2) for the wheel (M_1 with pinion and wheel exchanged); σ_H of the wheel = Z_D·σ_H0·√(...)
+           (ISO 6336-2:2019, 6.2; an internal wheel with z2 < 0: its bracket √(d_a2²/d_b2² − 1) + (ε_α − 1)·2π/|z2|)
+    Z_D  = max(1, M_2) for the wheel (M_1 with pinion and wheel exchanged), 1 for an internal wheel;
+           σ_H of the wheel = Z_D·σ_H0·√(...)
 
 Tooth root (ISO 6336-3:1996 eq. 2–3, method C: load applied at the tip, d_en = d_a):
 
@@ -31,8 +32,9 @@ Load factors (ISO 6336-1:2006):
     K_Hβ = 1 + c_γβ·F_βy / (2·F_m/b)  (<= 2; above: √(2·c_γβ·F_βy/(F_m/b))), F_m = F_t·K_A·K_v,
           F_βy = F_βx − y_β,  y_β = 0.15·F_βx (<= 6 µm, hardened),  F_βx = 1.33·f_sh + f_ma (method C),
           f_ma = f_Hβ of ISO 1328-1 at the grade, c_γβ = 0.85·c_γα, c_γα = 20 N/(mm·µm)
-    f_sh = 0.023·(F_m/b)·(b/d_1)²  µm  (ISO 6336-1 method C, the pinion's torsional deformation: the
-          term of a pinion whose shaft bending is nil, as for the floating sun; 0 for a pinion that passes
+    f_sh = 0.023·(n·F_m/b)·(b/d_1)²  µm  (ISO 6336-1:2019 clause 7, method C, the pinion's torsional deformation:
+          the term of a pinion whose shaft bending is nil, as for the floating sun; n the meshes whose torque the
+          pinion's body carries — a sun meshing with n planets twists under all n; 0 for a pinion that passes
           no torque through its body, as a planet on its pin)
     K_Fβ = K_Hβ^N_F,  N_F = (b/h)² / (1 + b/h + (b/h)²),  h = (d_a1 − d_f1)/2
     K_Hα = K_Fα by Table 9 (surface-hardened spur gears, F_t·K_A/b >= 100 N/mm)
@@ -44,9 +46,8 @@ at the outer point of single pair contact, no Y_ε (Y_β = Y_B = Y_DT = 1 for a 
     d_en = 2·√((√(r_a² − r_b²) − p_b·(ε_α − 1))² + r_b²),   p_b = π·m·cos α
     σ_F = F_t/(b·m) · Y_F·Y_S · K_A·K_v·K_Fβ·K_Fα
 
-The internal gear's (ring's) root stress is not computed here: ISO 6336-3 handles internal teeth with
-a substitute rack of the shaper's fillet, which this module does not carry; the ring's root is the
-thickest of the set (x3 > 1).
+The internal gear's (ring's) root: ISO 6336-3:2019's substitute rack (:mod:`propulsor.gears.iso6336_internal`),
+when the caller gives its thickness as made, the cutter's tip radius and its rim (:class:`InternalRoot`).
 """
 
 from __future__ import annotations
@@ -59,7 +60,8 @@ from .involute import inv
 
 __all__ = ["Material", "STEEL", "z_e", "z_h", "z_eps", "z_b", "z_d", "f_h_beta", "contact_factors", "tooth_form_factor",
            "ToothForm", "k_v_method_b", "f_sh_torsion", "FaceLoad", "face_load_method_c", "k_h_beta_method_c",
-           "k_h_alpha", "d_en_single_contact", "MeshLoad", "MeshStress", "mesh_stress"]
+           "k_h_alpha", "d_en_single_contact", "MeshLoad", "MeshStress", "operating_angle", "InternalRoot", "root_face_width",
+           "mesh_stress"]
 
 
 @dataclass(frozen=True)
@@ -93,18 +95,24 @@ def z_eps(eps_alpha: float) -> float:
 
 
 def z_b(alpha_w, d_a1, d_b1, z1, d_a2, d_b2, z2, eps_alpha, internal: bool) -> float:
-    """Single pair contact factor Z_B of the pinion (ISO 6336-2 eq. 3–5); 1 for an internal mate."""
-    if internal:
-        return 1.0
+    """Single pair contact factor Z_B of the pinion, ISO 6336-2:2019, 6.2 (spur gears, ε_β = 0): Z_B = max(1, M_1),
+
+        M_1 = tan α_w / √((√(d_a1²/d_b1² − 1) − 2π/z1)·(√(d_a2²/d_b2² − 1) − (ε_α − 1)·2π/z2))
+
+    the ratio of the radii of curvature at the pitch point to those at the pinion's inner point of single pair
+    contact B.  An internal wheel enters with the standard's sign convention (z2, d_a2, d_b2 negative), so its
+    second bracket becomes √(d_a2²/d_b2² − 1) + (ε_α − 1)·2π/|z2|: the ring's (concave) radius of curvature at B,
+    its tip point moved (ε_α − 1) base pitches into the path of contact.  Only Z_D of an internal wheel is 1."""
     f1 = math.sqrt((d_a1 / d_b1) ** 2 - 1.0) - 2.0 * math.pi / z1
-    f2 = math.sqrt((d_a2 / d_b2) ** 2 - 1.0) - (eps_alpha - 1.0) * 2.0 * math.pi / z2
+    sgn = -1.0 if internal else 1.0
+    f2 = math.sqrt((d_a2 / d_b2) ** 2 - 1.0) - sgn * (eps_alpha - 1.0) * 2.0 * math.pi / z2
     M1 = math.tan(alpha_w) / math.sqrt(f1 * f2)
     return max(1.0, M1)
 
 
 def z_d(alpha_w, d_a1, d_b1, z1, d_a2, d_b2, z2, eps_alpha, internal: bool) -> float:
-    """Single pair contact factor Z_D of the wheel (ISO 6336-2 eq. 3–5: M_2, the inner point of single
-    contact on the wheel); 1 for an internal wheel."""
+    """Single pair contact factor Z_D of the wheel, ISO 6336-2:2019, 6.2: max(1, M_2), M_2 being M_1 with pinion
+    and wheel exchanged (the wheel's inner point of single contact D); 1 for an internal wheel (6.2)."""
     if internal:
         return 1.0
     return z_b(alpha_w, d_a2, d_b2, z2, d_a1, d_b1, z1, eps_alpha, False)
@@ -127,12 +135,21 @@ class ToothForm:
 
 
 def tooth_form_factor(z: int, m: float, x: float, d_en: float, alpha: float = math.radians(20.0),
-                      h_fP_star: float = 1.25, rho_fP_star: float = 0.38, s_pr: float = 0.0) -> ToothForm:
+                      h_fP_star: float = 1.25, rho_fP_star: float = 0.38, s_pr: float = 0.0,
+                      E_sn: float = 0.0) -> ToothForm:
     """Y_F and Y_S of an external spur gear cut by a rack, load at diameter d_en (ISO 6336-3 eq. 22–32;
-    method C of the 1996 edition puts d_en = d_a)."""
+    method C of the 1996 edition puts d_en = d_a).
+
+    E_sn: the tooth thickness allowance the gear is made with (arc thickness on d, mm, the reduction), cut as the
+    solids are: the rack's tooth widened by E_sn at the same depth (each flank moved E_sn/2 along the pitch line,
+    the root circle kept), so E = π/4·m − h_fP·tan α + s_pr/cos α − (1 − sin α)·ρ_fP/cos α + E_sn/2 and the
+    tooth's half angle at d_en, γ_e, loses E_sn/d (ISO 6336-3:2019, 6.2: the form factor of the tooth as generated)."""
     require_positive("z", z)
+    if not (math.isfinite(E_sn) and E_sn >= 0.0):
+        raise InputError("E_sn", E_sn, "tooth thickness allowance must be >= 0 mm")
     h_fP, rho_fP = h_fP_star * m, rho_fP_star * m
-    E = math.pi / 4 * m - h_fP * math.tan(alpha) + s_pr / math.cos(alpha) - (1 - math.sin(alpha)) * rho_fP / math.cos(alpha)
+    E = (math.pi / 4 * m - h_fP * math.tan(alpha) + s_pr / math.cos(alpha)
+         - (1 - math.sin(alpha)) * rho_fP / math.cos(alpha) + 0.5 * E_sn)
     G = rho_fP_star - h_fP_star + x
     H = 2.0 / z * (math.pi / 2 - E / m) - math.pi / 3
     theta = math.pi / 6
@@ -151,7 +168,7 @@ def tooth_form_factor(z: int, m: float, x: float, d_en: float, alpha: float = ma
     if not d_en > d_b:
         raise InputError("d_en", d_en, f"must exceed the base diameter {d_b:.4f} mm")
     a_en = math.acos(d_b / d_en)
-    g_e = (math.pi / 2 + 2.0 * x * math.tan(alpha)) / z + inv(alpha) - inv(a_en)
+    g_e = (math.pi / 2 + 2.0 * x * math.tan(alpha)) / z - E_sn / d + inv(alpha) - inv(a_en)
     a_Fen = a_en - g_e
     h_Fe = 0.5 * m * ((math.cos(g_e) - math.sin(g_e) * math.tan(a_Fen)) * d_en / m - z * math.cos(math.pi / 3 - theta)
                       - G / math.cos(theta) + rho_fP_star)
@@ -176,10 +193,14 @@ def f_h_beta(d: float, b: float, grade: int) -> float:
     return (0.07 * math.sqrt(d) + 0.45 * math.sqrt(b) + 3.0) * 2.0 ** ((grade - 5) / 2.0)
 
 
-def f_sh_torsion(F_m: float, b: float, d1: float) -> float:
-    """Pinion torsional deformation f_sh, µm, of ISO 6336-1 method C with no shaft bending:
-    0.023·(F_m/b)·(b/d_1)² (F_m in N, b and d_1 in mm)."""
-    return 0.023 * (F_m / b) * (b / d1) ** 2
+def f_sh_torsion(F_m: float, b: float, d1: float, n_meshes: int = 1) -> float:
+    """Pinion torsional deformation f_sh, µm, ISO 6336-1:2019, clause 7, method C, with no shaft bending:
+    0.023·(n·F_m/b)·(b/d_1)² (F_m in N per mesh, b and d_1 in mm).  n: the meshes whose torque the pinion's body
+    carries over the face width — a pinion meshing with several gears (a sun with n planets) twists under
+    the sum of their torques, n·F_m, not under one mesh's."""
+    if int(n_meshes) != n_meshes or n_meshes < 1:
+        raise InputError("n_meshes", n_meshes, "must be a whole number of meshes >= 1")
+    return 0.023 * (n_meshes * F_m / b) * (b / d1) ** 2
 
 
 @dataclass(frozen=True)
@@ -240,13 +261,15 @@ def d_en_single_contact(d_a: float, d_b: float, m: float, alpha: float, eps_alph
 @dataclass(frozen=True)
 class MeshLoad:
     """What loads one mesh: the pinion torque per mesh, the speed, the quality; `pinion_torsion`: the pinion
-    passes its torque through its body (a sun), so its torsional deformation f_sh enters K_Hβ."""
+    passes its torque through its body (a sun), so its torsional deformation f_sh enters K_Hβ; `pinion_meshes`: the
+    number of meshes whose torque that body carries (the sun: every planet's), which f_sh takes as the torque."""
 
     T1: float          # N·m on the pinion (one mesh)
     v: float = 0.0     # m/s at the reference circle (relative to the carrier)
     K_A: float = 1.0
     grade: int = 6
     pinion_torsion: bool = False
+    pinion_meshes: int = 1   # meshes whose torque twists the pinion's body (a sun: the number of planets)
 
 
 @dataclass(frozen=True)
@@ -284,6 +307,11 @@ class MeshStress:
     d_en2: float | None = None
     sigma_F1_B: float = 0.0
     sigma_F2_B: float | None = None
+    a_w: float = 0.0             # mm, the centre distance the mesh runs at
+    Y_B2: float = 1.0            # rim thickness factor of the wheel (an internal wheel's rim)
+    b_F1: float = 0.0            # mm, face widths the roots are bent over (pinion, wheel)
+    b_F2: float = 0.0
+    alpha_w: float = 0.0         # rad, its operating pressure angle
 
     @property
     def sigma_H_wheel(self) -> float:
@@ -291,19 +319,67 @@ class MeshStress:
         return self.sigma_H / self.Z_B * self.Z_D
 
 
-def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad) -> MeshStress:
-    """σ_H and σ_F of one spur mesh (a :class:`~propulsor.gears.gear_pair.GearPair`), face width b (mm)."""
+def operating_angle(pair, a_w: float | None) -> float:
+    """Operating pressure angle α_w of a pair run at the centre distance a_w (mm): cos α_w = a·cos α/a_w
+    (ISO 21771, a = m·(z2 ± z1)/2); None: the pair's own α_w from its shifts."""
+    if a_w is None:
+        return pair.alpha_w
+    require_positive("a_w", a_w, "mm")
+    c = pair.a * math.cos(pair.alpha) / a_w
+    if not 0.0 < c < 1.0:
+        raise InputError("a_w", a_w, f"no involute mesh at this centre distance (a·cos α/a_w = {c:.6f})")
+    return math.acos(c)
+
+
+def root_face_width(b_gear: float, b_mesh: float, m: float) -> float:
+    """Face width a gear's root is bent over, mm (ISO 6336-3:2019, 5.2): the mesh's common face b_mesh plus at most
+    one module beyond each of its ends, within the gear's own face b_gear."""
+    return min(b_gear, b_mesh + 2.0 * m)
+
+
+@dataclass(frozen=True)
+class InternalRoot:
+    """What the root of an internal wheel needs beyond the pair (ISO 6336-3:2019, internal gears): its arc tooth
+    thickness on the reference circle as made (mm), the fillet radius ρ_fP2 (the generating cutter's tip radius,
+    mm) and the rim under the root s_R (mm)."""
+
+    s: float
+    rho_fP: float
+    s_R: float
+
+
+def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad, a_w: float | None = None,
+                internal_root: InternalRoot | None = None, E_sn: float = 0.0,
+                b_F: tuple[float, float] | None = None) -> MeshStress:
+    """σ_H and σ_F of one spur mesh (a :class:`~propulsor.gears.gear_pair.GearPair`), face width b (mm), tips
+    d_a1, d_a2 as made.  a_w: the centre distance the mesh runs at when its mounting sets it (a planet on its
+    carrier pin), which may differ from the one of the shifts; α_w, ε_α, Z_H, Z_B and Z_D are then taken there:
+    cos α_w = a·cos α/a_w, ε_α = (ρ_a1 ± ρ_a2 ∓ a_w·sin α_w)/p_b (ISO 21771; ± external/internal).
+    internal_root: the internal wheel's root is rated too (:mod:`propulsor.gears.iso6336_internal`), with Y_B of
+    its rim; without it an internal wheel's root stress stays None.  E_sn: the tooth thickness allowance the external
+    gears are made with (see :func:`tooth_form_factor`); an internal wheel's is in its ``internal_root.s``.
+    b_F: the face widths (mm) each root is bent over, pinion and wheel (default b both): ISO 6336-3:2019, 5.2 —
+    the wider gear's root may be taken as the narrower face plus at most one module on each side
+    (:func:`root_face_width`)."""
     require_positive("b", b, "mm")
+    bF1, bF2 = (b, b) if b_F is None else (require_positive("b_F1", b_F[0], "mm"), require_positive("b_F2", b_F[1], "mm"))
     g1, g2 = pair.gear1, pair.gear2
-    m, alpha, aw = pair.m, pair.alpha, pair.alpha_w
-    eps = pair.epsilon_alpha(d_a1, d_a2)
+    m, alpha = pair.m, pair.alpha
+    aw = operating_angle(pair, a_w)
+    a_w_run = pair.a_w if a_w is None else a_w
+    if a_w is None:
+        eps = pair.epsilon_alpha(d_a1, d_a2)
+    else:
+        r1, r2 = g1.rho_at(d_a1), g2.rho_at(d_a2)
+        g = a_w_run * math.sin(aw)
+        eps = ((r1 - r2 + g) if pair.internal else (r1 + r2 - g)) / g1.p_b
     u = g2.z / g1.z * (-1.0 if pair.internal else 1.0)
     d1 = g1.d
     F_t = 2000.0 * load.T1 / d1
     K_v = k_v_method_b(load.v, g1.z, abs(u), F_t / b, load.K_A, load.grade)
     h = 0.5 * (d_a1 - g1.d_f)
     F_m = F_t * load.K_A * K_v
-    f_sh = f_sh_torsion(F_m, b, d1) if load.pinion_torsion else 0.0
+    f_sh = f_sh_torsion(F_m, b, d1, load.pinion_meshes) if load.pinion_torsion else 0.0
     face = face_load_method_c(F_m, b, d1, load.grade, h, f_sh=f_sh)
     K_Hb, K_Fb = face.K_Hbeta, face.K_Fbeta
     K_Ha = k_h_alpha(load.grade)
@@ -315,21 +391,34 @@ def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad) -> Mes
     rack = g1.rack
     Y_eps = 0.25 + 0.75 / eps
     K = load.K_A * K_v * K_Fb * K_Ha
-    f1 = tooth_form_factor(g1.z, m, g1.x, d_a1, alpha, rack.h_fP_star, rack.rho_f_star)
-    sF1 = F_t / (b * m) * f1.Y_F * f1.Y_S * Y_eps * K
+    f1 = tooth_form_factor(g1.z, m, g1.x, d_a1, alpha, rack.h_fP_star, rack.rho_f_star, E_sn=E_sn)
+    sF1 = F_t / (bF1 * m) * f1.Y_F * f1.Y_S * Y_eps * K
     d_en1 = d_en_single_contact(d_a1, g1.d_b, m, alpha, eps)
-    b1 = tooth_form_factor(g1.z, m, g1.x, d_en1, alpha, rack.h_fP_star, rack.rho_f_star)
-    sF1_B = F_t / (b * m) * b1.Y_F * b1.Y_S * K
+    b1 = tooth_form_factor(g1.z, m, g1.x, d_en1, alpha, rack.h_fP_star, rack.rho_f_star, E_sn=E_sn)
+    sF1_B = F_t / (bF1 * m) * b1.Y_F * b1.Y_S * K
     Y_F2 = Y_S2 = sF2 = b2 = d_en2 = sF2_B = None
+    Y_B2 = 1.0
+    if pair.internal and internal_root is not None:
+        from .iso6336_internal import d_en_internal, internal_tooth_form, y_b_internal
+
+        ir = internal_root
+        Y_B2 = y_b_internal(ir.s_R, m)
+        f2 = internal_tooth_form(g2.d, g2.d_f, ir.s, m, ir.rho_fP, d_a2, alpha)
+        Y_F2, Y_S2 = f2.Y_F, f2.Y_S
+        sF2 = F_t / (bF2 * m) * Y_F2 * Y_S2 * Y_eps * Y_B2 * K
+        d_en2 = d_en_internal(d_a2, g2.d_b, m, alpha, eps)
+        b2 = internal_tooth_form(g2.d, g2.d_f, ir.s, m, ir.rho_fP, d_en2, alpha)
+        sF2_B = F_t / (bF2 * m) * b2.Y_F * b2.Y_S * Y_B2 * K
     if not pair.internal:
         rack2 = g2.rack
-        f2 = tooth_form_factor(g2.z, m, g2.x, d_a2, alpha, rack2.h_fP_star, rack2.rho_f_star)
+        f2 = tooth_form_factor(g2.z, m, g2.x, d_a2, alpha, rack2.h_fP_star, rack2.rho_f_star, E_sn=E_sn)
         Y_F2, Y_S2 = f2.Y_F, f2.Y_S
-        sF2 = F_t / (b * m) * Y_F2 * Y_S2 * Y_eps * K
+        sF2 = F_t / (bF2 * m) * Y_F2 * Y_S2 * Y_eps * K
         d_en2 = d_en_single_contact(d_a2, g2.d_b, m, alpha, eps)
-        b2 = tooth_form_factor(g2.z, m, g2.x, d_en2, alpha, rack2.h_fP_star, rack2.rho_f_star)
-        sF2_B = F_t / (b * m) * b2.Y_F * b2.Y_S * K
+        b2 = tooth_form_factor(g2.z, m, g2.x, d_en2, alpha, rack2.h_fP_star, rack2.rho_f_star, E_sn=E_sn)
+        sF2_B = F_t / (bF2 * m) * b2.Y_F * b2.Y_S * K
     return MeshStress(F_t, b, load.K_A, K_v, K_Hb, K_Ha, K_Fb, K_Ha, Z_H, Z_E, Z_e, Z_B, s0, sH,
                       f1.Y_F, f1.Y_S, Y_F2, Y_S2, Y_eps, sF1, sF2,
                       d1=d1, u=u, eps_alpha=eps, Z_D=Z_D, face=face, root1_B=b1, root2_B=b2, d_en1=d_en1,
-                      d_en2=d_en2, sigma_F1_B=sF1_B, sigma_F2_B=sF2_B)
+                      d_en2=d_en2, sigma_F1_B=sF1_B, sigma_F2_B=sF2_B, a_w=a_w_run, alpha_w=aw, Y_B2=Y_B2,
+                      b_F1=bF1, b_F2=bF2)

@@ -17,6 +17,17 @@ Z_X clause 14):
           ρ_i = ½·d_bi·tan α_w (ρ_2 < 0 for an internal wheel)
     Z_W = 1 (both flanks case-hardened),   Z_X = 1 (the standard's value for the pitting size factor)
 
+Finite life (method B: ISO 6336-2:2019, 5.4, and ISO 6336-3:2019, 5.4 — the permissible stress of the limited life
+range lies on the straight line, in log-log scale, between the static and the reference point): Z_L·Z_v·Z_R and
+Y_δrelT·Y_RrelT·Y_X are their static values at and below N_static, their reference values at and above N_ref, and
+between
+
+    P(N_L) = P_ref·(P_static/P_ref)^w,   w = log(N_ref/N_L)/log(N_ref/N_static)
+    pitting (case-hardened): N_static = 1e5, N_ref = 5e7, (Z_L·Z_v·Z_R)_static = 1
+    root (case-hardened):    N_static = 1e3, N_ref = 3e6, Y_RrelT,static = Y_X,static = 1,
+                             Y_δrelT,static = (0.44·Y_S + 0.12)/(0.44·Y_ST + 0.12) = 0.44·Y_S + 0.12 (Y_ST = 2)
+(Z_NT and Y_NT of Tables 2 and 3 are that same line for the life factor: Z_NT = 1.6^w, Y_NT = 2.5^w.)
+
 Tooth root (ISO 6336-3:2006 clause 5, basic formulae, method B factors; Y_δrelT, Y_RrelT, Y_X of
 :mod:`propulsor.gears.iso6336_helical`):
 
@@ -25,6 +36,7 @@ Tooth root (ISO 6336-3:2006 clause 5, basic formulae, method B factors; Y_δrelT
         N_L <= 1e3: 2.5;   1e3 < N_L <= 3e6: (3e6/N_L)^0.115;   3e6 < N_L <= 1e10: (3e6/N_L)^0.02;
         above 1e10: 0.85
     Y_M = 0.7 for an idler (a planet: its teeth bent both ways), 1 otherwise (case-hardened steel)
+    (Y_δrelT·Y_RrelT·Y_X between the static and the reference point: see "Finite life" above)
 """
 
 from __future__ import annotations
@@ -35,7 +47,13 @@ from dataclasses import dataclass
 from ..errors import InputError, require_positive
 
 __all__ = ["z_nt", "y_nt", "cycles_at_z_nt", "cycles_at_y_nt", "z_l", "z_v", "z_r", "rho_red", "Pitting", "pitting_safety", "RootFatigue",
-           "root_fatigue_safety"]
+           "root_fatigue_safety", "N_STATIC_H", "N_REF_H", "N_STATIC_F", "N_REF_F", "life_weight", "between_static_and_reference",
+           "y_delta_rel_t_static", "cycles_at_limit"]
+
+#: load cycles of the static and the reference point of case-hardened steel: pitting (ISO 6336-2:2019 Table 2)
+#: and tooth root (ISO 6336-3:2019 Table 3)
+N_STATIC_H, N_REF_H = 1e5, 5e7
+N_STATIC_F, N_REF_F = 1e3, 3e6
 
 
 def _cycles(N_L: float) -> float:
@@ -84,6 +102,44 @@ def cycles_at_y_nt(Y: float) -> float:
     if Y <= (3e6 / 1e10) ** 0.02:
         return math.inf
     return 3e6 / Y ** (1.0 / (0.115 if Y >= 1.0 else 0.02))
+
+
+def life_weight(N_L: float, N_static: float, N_ref: float) -> float:
+    """w = log(N_ref/N_L)/log(N_ref/N_static) within 0 ... 1: the place of N_L between the reference (0) and the
+    static point (1) on the log-log line of method B (ISO 6336-2:2019, 5.4; ISO 6336-3:2019, 5.4)."""
+    N = _cycles(N_L)
+    if N <= N_static:
+        return 1.0
+    if N >= N_ref:
+        return 0.0
+    return math.log(N_ref / N) / math.log(N_ref / N_static)
+
+
+def between_static_and_reference(P_static: float, P_ref: float, N_L: float, N_static: float, N_ref: float) -> float:
+    """A product of influence factors at N_L load cycles, method B: P_ref·(P_static/P_ref)^w (module docstring)."""
+    require_positive("P_static", P_static)
+    require_positive("P_ref", P_ref)
+    return P_ref * (P_static / P_ref) ** life_weight(N_L, N_static, N_ref)
+
+
+def y_delta_rel_t_static(Y_S: float, Y_ST: float = 2.0) -> float:
+    """Relative notch sensitivity factor for static stress of case-hardened steel, method B (ISO 6336-3:2019,
+    clause 12): Y_δrelT = (0.44·Y_S + 0.12)/(0.44·Y_ST + 0.12)."""
+    require_positive("Y_S", Y_S)
+    return (0.44 * Y_S + 0.12) / (0.44 * Y_ST + 0.12)
+
+
+def cycles_at_limit(limit, target: float, N_lo: float, N_hi: float = 1e10) -> float:
+    """Load cycles at which a falling limit stress ``limit(N)`` meets ``target``: 0 if it is already below at N_lo,
+    inf if it is still above at N_hi (the life factors' floor)."""
+    from scipy.optimize import brentq
+
+    if limit(N_lo) < target:
+        return 0.0
+    if limit(N_hi) >= target:
+        return math.inf
+    lg = brentq(lambda x: limit(10.0 ** x) - target, math.log10(N_lo), math.log10(N_hi), xtol=1e-13, rtol=1e-15)
+    return 10.0 ** lg
 
 
 def _c_zl(sigma_Hlim: float) -> float:
@@ -136,18 +192,28 @@ class Pitting:
     sigma_HG: float   # MPa, pitting stress limit at N_L
     sigma_HP: float   # MPa, σ_HG/S_Hmin
     S_H: float        # σ_HG/σ_H
+    Z_LvR: float = 1.0    # Z_L·Z_v·Z_R at N_L (between the static 1 and the reference product Z_L·Z_v·Z_R)
+    w: float = 0.0        # place of N_L between the reference (0) and the static point (1)
+
+    def limit_at(self, N: float) -> float:
+        """σ_HG (MPa) of this flank at N load cycles."""
+        P = between_static_and_reference(1.0, self.Z_L * self.Z_v * self.Z_R, N, N_STATIC_H, N_REF_H)
+        return self.sigma_HG / (self.Z_NT * self.Z_LvR) * z_nt(N) * P
 
 
 def pitting_safety(sigma_H: float, sigma_Hlim: float, N_L: float, nu40: float, v: float, R_z1: float,
                    R_z2: float, rho_red_mm: float, S_Hmin: float = 1.0) -> Pitting:
-    """Pitting fatigue safety of one flank of case-hardened steel (ISO 6336-2:2006)."""
+    """Pitting fatigue safety of one flank of case-hardened steel at N_L load cycles (ISO 6336-2:2019, method B; the
+    reference-life Z_L·Z_v·Z_R taken to N_L between the static and the reference point, 5.4)."""
     require_positive("sigma_Hlim", sigma_Hlim, "MPa")
     require_positive("sigma_H", sigma_H, "MPa")
     ZN, ZL, Zv = z_nt(N_L), z_l(nu40, sigma_Hlim), z_v(v, sigma_Hlim)
     ZR, Rz10 = z_r(R_z1, R_z2, rho_red_mm, sigma_Hlim)
     ZW = ZX = 1.0
-    sHG = sigma_Hlim * ZN * ZL * Zv * ZR * ZW * ZX
-    return Pitting(N_L, ZN, ZL, Zv, ZR, Rz10, ZW, ZX, sHG, sHG / S_Hmin, sHG / sigma_H)
+    P = between_static_and_reference(1.0, ZL * Zv * ZR, N_L, N_STATIC_H, N_REF_H)
+    sHG = sigma_Hlim * ZN * P * ZW * ZX
+    return Pitting(N_L, ZN, ZL, Zv, ZR, Rz10, ZW, ZX, sHG, sHG / S_Hmin, sHG / sigma_H, P,
+                   life_weight(N_L, N_STATIC_H, N_REF_H))
 
 
 @dataclass(frozen=True)
@@ -162,15 +228,29 @@ class RootFatigue:
     sigma_FG: float   # MPa, root stress limit at N_L
     sigma_FP: float   # MPa, σ_FG/S_Fmin
     S_F: float        # σ_FG/σ_F
+    Y_delta_relT_static: float = 1.0
+    Y_dRX: float = 1.0    # Y_δrelT·Y_RrelT·Y_X at N_L (between the static and the reference product)
+    w: float = 0.0        # place of N_L between the reference (0) and the static point (1)
+
+    def limit_at(self, N: float) -> float:
+        """σ_FG (MPa) of this root at N load cycles."""
+        P = between_static_and_reference(self.Y_delta_relT_static, self.Y_delta_relT * self.Y_R_relT * self.Y_X, N,
+                                         N_STATIC_F, N_REF_F)
+        return self.sigma_FG / (self.Y_NT * self.Y_dRX) * y_nt(N) * P
 
 
 def root_fatigue_safety(sigma_F: float, q_s: float, m: float, sigma_Flim: float, R_z: float, N_L: float,
-                        S_Fmin: float = 1.0, idler: bool = False) -> RootFatigue:
-    """Bending fatigue safety of one case-hardened tooth root (ISO 6336-3:2006 method B; q_s the notch
-    parameter of the method B tooth form)."""
+                        S_Fmin: float = 1.0, idler: bool = False, *, Y_S: float) -> RootFatigue:
+    """Bending fatigue safety of one case-hardened tooth root at N_L load cycles (ISO 6336-3:2019 method B; q_s and
+    Y_S of the method B tooth form; the reference-life Y_δrelT·Y_RrelT·Y_X taken to N_L between the static and the
+    reference point, 5.4)."""
     from .iso6336_helical import root_strength
 
     Y_M = 0.7 if idler else 1.0
     Yn = y_nt(N_L)
     r = root_strength(sigma_F, q_s, m, sigma_Flim, R_z, Y_NT=Yn, S_Fmin=S_Fmin, Y_M=Y_M)
-    return RootFatigue(N_L, 2.0, Yn, r.Y_delta_relT, r.Y_R_relT, r.Y_X, r.Y_M, r.sigma_FG, r.sigma_FP, r.S_F)
+    Yd_st = y_delta_rel_t_static(Y_S)
+    P = between_static_and_reference(Yd_st, r.Y_delta_relT * r.Y_R_relT * r.Y_X, N_L, N_STATIC_F, N_REF_F)
+    sFG = sigma_Flim * 2.0 * Yn * P * Y_M
+    return RootFatigue(N_L, 2.0, Yn, r.Y_delta_relT, r.Y_R_relT, r.Y_X, r.Y_M, sFG, sFG / S_Fmin, sFG / sigma_F,
+                       Yd_st, P, life_weight(N_L, N_STATIC_F, N_REF_F))

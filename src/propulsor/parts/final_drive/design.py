@@ -73,7 +73,8 @@ def gear_outlines(p: FinalDriveParams, ps):
     planet = external_gear_profile(p.z_planet, m, p.x_planet, d_a=ps.d_a_planet,
                                    thinning_n_mm=p.tooth_thinning_mm, bore_d=p.planet_bore_mm or None)
     ring = internal_gear_profile(p.z_ring, m, ps.x_ring, ps.d_a_ring, p.shaper_z0, p.shaper_x0,
-                                 outer_d=ring_outer_d(p, ps), thinning_n_mm=p.tooth_thinning_mm)
+                                 outer_d=ring_outer_d(p, ps), rho_a0_star=p.shaper_tip_radius_star,
+                                 thinning_n_mm=p.tooth_thinning_mm)
     if p.ring_bolts:
         D = ring_outer_d(p, ps)
         r_bc = 0.5 * (0.5 * D + 0.5 * ps.ring.d_f)

@@ -35,6 +35,10 @@ class FinalDriveParams(PartParams):
     shaper_z0: int = param(14, "", "teeth of the shaper cutter that cuts the ring", min=6, max=200, integer=True,
                            why="largest disc shaper cutters (GOST 9323: d0 <= 200 mm at m >= 1)")
     shaper_x0: float = param(0.04, "", "profile shift of the shaper cutter", min=-1.5, max=1.5, why=_WHY_SHIFT)
+    shaper_tip_radius_star: float = param(
+        0.1, "", "tip radius ρ_a0* of the shaper cutter, in modules: it rounds the ring's root (the fillet radius of "
+        "the ring's substitute rack in ISO 6336-3)", min=0.02, max=0.5,
+        why="half a module is past any shaper tooth's tip land (a narrower tooth refuses less: its rounds must not meet)")
     width_sun_mm: float = param(80.0, "mm", "face width of the sun", min=0, min_exclusive=True, max=1000.0, why=_WHY_WIDTH)
     width_planet_mm: float = param(75.0, "mm", "face width of a planet", min=0, min_exclusive=True, max=1000.0, why=_WHY_WIDTH)
     width_ring_mm: float = param(80.0, "mm", "face width of the ring", min=0, min_exclusive=True, max=1000.0, why=_WHY_WIDTH)

@@ -125,8 +125,12 @@ def sheet_and_conditions(dd: FinalDriveDesign, w, built: dict) -> None:
     except InputError:
         pass
     cols = ["quantity", "symbol", "unit", "gear_1", "gear_2"]
-    w.add_table("sheet_sun_planet", cols, [list(r) for r in sp.sheet()])
-    w.add_table("sheet_planet_ring", cols, [list(r) for r in pr.sheet()])
+    # each sheet on the tips the solids are made with: one planet serves both meshes with the smaller of its two
+    # tips (shortened in the sun mesh), which the planet–ring pair alone would leave unshortened
+    t = p.tooth_thinning_mm
+    made = [("tooth thickness allowance of the solids (ring: space widening)", "E_sn", "mm", t, t)]
+    w.add_table("sheet_sun_planet", cols, [list(r) for r in sp.sheet(d_a1=ps.d_a_sun, d_a2=ps.d_a_planet) + made])
+    w.add_table("sheet_planet_ring", cols, [list(r) for r in pr.sheet(d_a1=ps.d_a_planet, d_a2=ps.d_a_ring) + made])
     w.add_table("conditions", ["name", "passed", "value", "limit", "unit", "message"],
                 [[c.name, c.passed, c.value, c.limit, c.unit, c.message] for c in ps.conditions()])
 

@@ -34,19 +34,43 @@ def _loads(p, ps):
     return T_sun / p.n_planets, v
 
 
+def ring_root(p, ps):
+    """The ring's root as made for ISO 6336-3 (internal gear): arc tooth thickness on d3 less the space widening
+    E_sn, the shaper's tip radius as its fillet, the rim under the root."""
+    from ...gears.iso6336 import InternalRoot
+    from .design import ring_outer_d
+
+    return InternalRoot(ps.ring.s - p.tooth_thinning_mm, p.shaper_tip_radius_star * p.module_mm,
+                        0.5 * (ring_outer_d(p, ps) - ps.ring.d_f))
+
+
 def mesh_stresses(p, ps, b_sp: float | None = None, b_pr: float | None = None):
-    """ISO 6336 stresses of (sun–planet, planet–ring) at the design torque."""
-    from ...gears.iso6336 import MeshLoad, mesh_stress
+    """ISO 6336 stresses of (sun–planet, planet–ring) at the design torque.  b_sp, b_pr: common face widths to try
+    (the face width search; every root then bent over that width), by default the design's (each root over the
+    common face plus at most one module each side within its own face, ISO 6336-3:2019 5.2)."""
+    from ...gears.iso6336 import MeshLoad, mesh_stress, root_face_width
 
     T1, v = _loads(p, ps)
-    # the sun passes the whole input torque through its body: its torsional wind-up enters K_Hβ (f_sh)
-    load = MeshLoad(T1, v, p.application_factor_K_A, p.accuracy_grade, pinion_torsion=True)
-    b_sp = min(p.width_sun_mm, p.width_planet_mm) if b_sp is None else b_sp
-    b_pr = min(p.width_planet_mm, p.width_ring_mm) if b_pr is None else b_pr
-    sp = mesh_stress(ps.mesh_sun_planet, ps.d_a_sun, ps.d_a_planet, b_sp, load)
+    # the sun passes the whole input torque through its body: its torsional wind-up under all n_planets meshes'
+    # torque enters K_Hβ (f_sh, ISO 6336-1 method C)
+    load = MeshLoad(T1, v, p.application_factor_K_A, p.accuracy_grade, pinion_torsion=True,
+                    pinion_meshes=p.n_planets)
+    m = p.module_mm
+    bF_sp = bF_pr = None
+    if b_sp is None:   # the design's faces: each root over the common face plus at most a module each side
+        b_sp = min(p.width_sun_mm, p.width_planet_mm)
+        bF_sp = (root_face_width(p.width_sun_mm, b_sp, m), root_face_width(p.width_planet_mm, b_sp, m))
+    if b_pr is None:
+        b_pr = min(p.width_planet_mm, p.width_ring_mm)
+        bF_pr = (root_face_width(p.width_planet_mm, b_pr, m), root_face_width(p.width_ring_mm, b_pr, m))
+    # the root's form factors of the teeth as made: thinned by the allowance E_sn of the solids
+    sp = mesh_stress(ps.mesh_sun_planet, ps.d_a_sun, ps.d_a_planet, b_sp, load, E_sn=p.tooth_thinning_mm, b_F=bF_sp)
     # the planet passes the sun's tangential force on to the ring (equal base-circle forces)
     load_pr = MeshLoad(T1 * p.z_planet / p.z_sun, v, p.application_factor_K_A, p.accuracy_grade)
-    pr = mesh_stress(ps.mesh_planet_ring, ps.d_a_planet, ps.d_a_ring, b_pr, load_pr)
+    # one centre distance per mesh, the one the carrier makes: the planets sit on the sun–planet a_w, so the
+    # planet–ring mesh runs there too (a set that is not coaxial runs it off the a_w of its shifts)
+    pr = mesh_stress(ps.mesh_planet_ring, ps.d_a_planet, ps.d_a_ring, b_pr, load_pr, a_w=ps.a_w,
+                     internal_root=ring_root(p, ps), E_sn=p.tooth_thinning_mm, b_F=bF_pr)
     return sp, pr
 
 
@@ -185,11 +209,12 @@ def strength(dd: FinalDriveDesign, w, built: dict) -> None:
         f"Strength at the design torque M_vk.max = {p.sprocket_torque_Nm:.1f} N·m (seed 004 eq. 40 with t = 0.125 m; "
         f"printed 90 690 N·m), sun torque M_vk·Ω/i_sil = {T1 * p.n_planets:.1f} N·m (thesis 22 399 N·m), "
         f"{T1:.1f} N·m per mesh; relative pitch-line speed {v:.3f} m/s at {p.design_speed_kmh:g} km/h. "
-        f"ISO 6336 (spur; K_Hβ by method C with the sun's torsional deformation f_sh): sun–planet σ_H = "
-        f"{sp.sigma_H:.1f} MPa (S_H static = 44·HRC/σ_H = {sHmax / sp.sigma_H:.3f}), σ_F by method B sun "
+        f"ISO 6336 (spur; K_Hβ by method C with the sun's torsional deformation f_sh under all {p.n_planets} meshes' "
+        f"torque): sun–planet σ_H = {sp.sigma_H:.1f} MPa (S_H static = 44·HRC/σ_H = {sHmax / sp.sigma_H:.3f}), σ_F by method B sun "
         f"{sp.sigma_F1_B:.1f} MPa (S_F static = {sFlim / sp.sigma_F1_B:.3f}), planet {sp.sigma_F2_B:.1f} MPa "
         f"(method C: {sp.sigma_F1:.1f}, {sp.sigma_F2:.1f} MPa); planet–ring σ_H = {pr.sigma_H:.1f} MPa "
-        f"(S_H static = {sHmax / pr.sigma_H:.3f}), σ_F planet {pr.sigma_F1_B:.1f} MPa by method B "
+        f"(the planet's flank, Z_B = {pr.Z_B:.4f}; the ring's {pr.sigma_H_wheel:.1f} MPa; S_H static = "
+        f"{sHmax / pr.sigma_H:.3f}), σ_F planet {pr.sigma_F1_B:.1f} MPa by method B "
         f"(S_F static = {sFlim / pr.sigma_F1_B:.3f}; method C {pr.sigma_F1:.1f} MPa). These static safeties set the "
         f"working stresses at the peak torque against the thesis's allowables: σ_Hmax = 44·HRC = {sHmax:.0f} MPa, "
         f"σ_FlimM = 2.8·σ_t = {sFlim:.0f} MPa, σ_Fmax = σ_FlimM/S_Fm = {sFlim / p.bending_safety_S_Fm:.0f} MPa; the thesis "
@@ -197,8 +222,22 @@ def strength(dd: FinalDriveDesign, w, built: dict) -> None:
         f"ones of gears/iso6336_helical.py at β = 0) reproduce the published ISO/TR 6336-30:2017 example 1 within 1 % "
         f"(σ_H0, σ_H; tests/test_iso6336_helical.py); no published root-stress example was at hand. "
         f"Face width needed: sun–planet {d['strength_sun_planet_face_width_required_mm']:.1f} mm, "
-        f"planet–ring {d['strength_planet_ring_face_width_required_mm']:.1f} mm. The ring's root stress is not computed "
-        f"(ISO 6336-3 internal teeth; x3 > 1 gives it the thickest root of the set).")
+        f"planet–ring {d['strength_planet_ring_face_width_required_mm']:.1f} mm. The ring's root by ISO 6336-3 for "
+        f"internal gears (substitute rack with the shaper's tip radius {p.shaper_tip_radius_star * p.module_mm:g} mm "
+        f"as its fillet): σ_F {pr.sigma_F2_B:.1f} MPa by method B (S_F static = {sFlim / pr.sigma_F2_B:.3f}).")
+    if abs(ps.coaxiality_mismatch) > 1e-9:
+        from ...gears.iso6336 import MeshLoad, mesh_stress
+
+        own = mesh_stress(ps.mesh_planet_ring, ps.d_a_planet, ps.d_a_ring, pr.b,
+                          MeshLoad(T1 * p.z_planet / p.z_sun, v, p.application_factor_K_A, p.accuracy_grade))
+        w.add_note(
+            f"The planet–ring mesh is rated at the centre distance the carrier makes, a_w = {pr.a_w:.3f} mm "
+            f"(α_w = {math.degrees(pr.alpha_w):.4f}°, ε_α = {pr.eps_alpha:.4f}, Z_H = {pr.Z_H:.4f}, Z_B = {pr.Z_B:.4f}, "
+            f"σ_H = {pr.sigma_H:.1f} MPa), not at the {ps.mesh_planet_ring.a_w:.3f} mm of its shifts, which the thesis "
+            f"uses (there: α_w = {math.degrees(own.alpha_w):.4f}°, ε_α = {own.eps_alpha:.4f}, Z_H = {own.Z_H:.4f}, "
+            f"Z_B = {own.Z_B:.4f} — the thesis prints 1.205 —, σ_H = {own.sigma_H:.1f} MPa). The set is not coaxial: "
+            f"the planets sit on the sun–planet centre distance, so the planet–ring teeth run "
+            f"{pr.a_w - own.a_w:.3f} mm deeper than their shifts provide for (the overlap the sweep reports).")
     w.add_note(
         f"Bearings (ISO 76): planet bearing load eq. 44 = {P_sat:.0f} N with r_vod = a_w = {r_vod * 1e3:.3f} mm "
         f"(thesis: r_vod = 180 mm → 91 527 N, Table 8: 92 000 N), C0 = {PLANET_BEARING_004.C0:.0f} N, "
