@@ -81,3 +81,32 @@ def test_the_worst_case_check_fails_when_the_tolerances_outgrow_the_backlash(ell
     bad = [run_case(d, d.L, c, step) for c in worst_cases(wide)[:1]]
     chk = tolerance_check(wide, bad, p.speed_step_max)
     assert not chk.passed and "tight, run-outs in phase: jam" in chk.message
+
+
+def test_a_study_may_minimise_and_require_the_as_built_and_as_made_values(tmp_path):
+    """The derived values of the pair as built and as made are a study's objectives and requirements like any
+    other (their meanings in the part type's glossary); a name no manifest gives is still refused."""
+    from propulsor.errors import InputError
+    from propulsor.study.spec import load_study
+
+    text = f"""
+[study]
+part = "{PARTS / 'ncg_seed002.toml'}"
+depth = "proof"
+title = "as built"
+
+[vary]
+module_mm = [2.5]
+
+[objectives]
+minimize = ["speed_ripple_as_built", "tolerance_te_pp_p95_rad"]
+require = ["speed_step_max <= 0.02", "corner_run_max_deg <= 0.5", "tolerance_backlash_min_mm >= 0.05"]
+record = ["te_pp_reverse_rad", "as_built_stretches"]
+"""
+    f = tmp_path / "s.toml"
+    f.write_text(text, encoding="utf-8")
+    s = load_study(f)
+    assert s.minimize == ("speed_ripple_as_built", "tolerance_te_pp_p95_rad")
+    f.write_text(text.replace("speed_step_max <= 0.02", "speed_stepmax <= 0.02"), encoding="utf-8")
+    with pytest.raises(InputError, match="speed_stepmax"):
+        load_study(f)
