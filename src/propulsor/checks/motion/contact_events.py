@@ -279,12 +279,6 @@ class ContactLaw:
         te = self.te[self.ok]
         return float(np.ptp(te)) if len(te) else math.nan
 
-    def _interval_state(self):
-        """Per interval: the state of both ends when they agree, else None (an interval holding a change)."""
-        st = self._state()
-        same = np.all(st[1:] == st[:-1], axis=1)
-        return st[:-1], same
-
     @property
     def edge_share(self) -> float:
         """Share of the driver's turning over the span with the contact on a corner (intervals whose ends are
@@ -298,7 +292,6 @@ class ContactLaw:
         """Every change of state: (phi, speed before, speed after, state before, state after); the speeds are
         the chord slopes over at least ``step_window`` of driven angle on each side within one state."""
         st = self._state()
-        sp = self.speed
         out = []
         change = np.nonzero(np.any(st[1:] != st[:-1], axis=1))[0]
         for i in change:
@@ -308,7 +301,6 @@ class ContactLaw:
                 continue
             out.append((float(0.5 * (self.phi[i] + self.phi[i + 1])), before, after,
                         tuple(int(x) for x in st[i]), tuple(int(x) for x in st[i + 1])))
-        del sp
         return out
 
     def _side_speed(self, j: int, way: int, state) -> float | None:
