@@ -35,7 +35,7 @@ from ... import policy
 from .backlash import _rot_hits
 from .outlines import Outline, row_norms
 
-__all__ = ["KINDS", "PairOutlines", "ContactLaw", "Stretch", "resolve_contact", "contact_law"]
+__all__ = ["KINDS", "PairOutlines", "ContactLaw", "Stretch", "resolve_contact", "contact_law", "runs"]
 
 #: contact kinds, by code
 KINDS = ("flank", "driver tip corner", "driven tip corner", "driver root corner", "driven root corner")
@@ -341,22 +341,34 @@ class ContactLaw:
         bad = (np.abs(sp - 1.0) > speed_tol) | (self.kind[:-1] != 0) | (self.kind[1:] != 0)
         bad &= np.isfinite(sp)
         out = []
-        i, n = 0, len(sp)
-        while i < n:
-            if not bad[i]:
-                i += 1
-                continue
-            j = i
-            while j + 1 < n and bad[j + 1]:
-                j += 1
+        for i, j in runs(bad):
             sl = slice(i, j + 2)
             kinds = tuple(sorted({KINDS[k] for k in self.kind[sl] if k >= 0}))
             out.append(Stretch(math.degrees(self.theta[i]), math.degrees(self.theta[j + 1]), float(self.phi[i]),
                                float(self.phi[j + 1]), kinds, tuple(sorted({int(t) for t in self.driver_tooth[sl]})),
                                tuple(sorted({int(t) for t in self.driven_tooth[sl]})), float(np.min(sp[i:j + 1])),
                                float(np.max(sp[i:j + 1]))))
-            i = j + 1
         return out
+
+    def corner_run_max(self) -> tuple[float, float]:
+        """(deg of driver, its start in deg) of the longest run of consecutive samples with the load on a corner;
+        a run reaches half-way to the neighbouring samples on either side."""
+        best, at = 0.0, math.nan
+        n = len(self.kind)
+        for i, j in runs((self.kind > 0) & np.isfinite(self.te)):
+            lo = self.theta[i - 1] if i > 0 else self.theta[i]
+            hi = self.theta[j + 1] if j + 1 < n else self.theta[j]
+            run = math.degrees(0.5 * ((self.theta[i] - lo) + (hi - self.theta[j])) + (self.theta[j] - self.theta[i]))
+            if run > best:
+                best, at = run, math.degrees(self.theta[i])
+        return best, at
+
+
+def runs(mask) -> list[tuple[int, int]]:
+    """(first, last) index of every run of True in ``mask``."""
+    m = np.asarray(mask, bool).astype(np.int8)
+    d = np.diff(np.concatenate([[0], m, [0]]))
+    return list(zip(np.nonzero(d == 1)[0].tolist(), (np.nonzero(d == -1)[0] - 1).tolist()))
 
 
 def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, direction: int, *,

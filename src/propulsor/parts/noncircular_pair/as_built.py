@@ -82,7 +82,7 @@ class AsBuilt:
         """The longest run of driver angle with the load on a corner (deg) and where (direction, driver deg)."""
         best, where = 0.0, ""
         for c in self.directions:
-            run, at = _longest_corner_run(c)
+            run, at = c.corner_run_max()
             if run > best:
                 best, where = run, f"{c.name} at driver {at:.3f} deg"
         return best, where
@@ -90,26 +90,6 @@ class AsBuilt:
     @property
     def evaluations(self) -> int:
         return self.drive.evaluations + self.reverse.evaluations
-
-
-def _longest_corner_run(c: ContactLaw) -> tuple[float, float]:
-    """(deg of driver, its start in deg) of the longest run of consecutive samples on a corner."""
-    corner = (c.kind > 0) & np.isfinite(c.te)
-    best, at, i, n = 0.0, math.nan, 0, len(corner)
-    while i < n:
-        if not corner[i]:
-            i += 1
-            continue
-        j = i
-        while j + 1 < n and corner[j + 1]:
-            j += 1
-        lo = c.theta[i - 1] if i > 0 else c.theta[i]       # the run reaches at most to the neighbouring samples
-        hi = c.theta[j + 1] if j + 1 < n else c.theta[j]
-        run = math.degrees(0.5 * ((c.theta[i] - lo) + (hi - c.theta[j])) + (c.theta[j] - c.theta[i]))
-        if run > best:
-            best, at = run, math.degrees(c.theta[i])
-        i = j + 1
-    return best, at
 
 
 def as_built_speed(law, run_law, phi, te, samples: int = 20001):
