@@ -45,12 +45,22 @@ def final_drive(p, part_file: Path | None = None) -> SizeEstimate:
 
 def noncircular_pair(p, part_file: Path | None = None) -> SizeEstimate:
     """Design, outlines and solids ∝ teeth of both gears; proof ∝ phases (the other method's proof
-    when compared: one leg, a quarter of them)."""
+    when compared: one leg, a quarter of them); as built: 1.2 ms a contact position, both directions over one
+    period (a leg of the walking law, else the turn) every 0.05° of driver and about 120 positions a driven tooth
+    at the changes of contact; as made: each tolerance case the same over the whole turn every 0.5°."""
+    from .. import policy
+
     z_H = p.driven_teeth
     teeth = z_H + z_H // p.driver_turns
     phases = z_H * p.proof_phases_per_tooth
     cpu = 6.5 + 0.174 * teeth * (1.25 if p.compare_methods else 1.0) + 0.004 * phases * teeth / 100.0
-    return _wall(cpu, f"{teeth} teeth, proof {phases} phases")
+    periods = 4 if p.law == "walking" and z_H % 4 == 0 else 1
+    driver_deg = 360.0 * p.driver_turns
+    contact = 2 * 1.2e-3 * (driver_deg / periods / policy.CONTACT_STEP_DRIVER_DEG + 120 * z_H / periods)
+    cases = (4 + p.tolerance_samples) if p.tolerance_grade else 0
+    made = cases * 2 * 1.2e-3 * (driver_deg / policy.TOLERANCE_STEP_DRIVER_DEG + 120 * z_H)
+    cpu += contact + made
+    return _wall(cpu, f"{teeth} teeth, proof {phases} phases" + (f", {cases} tolerance cases" if cases else ""))
 
 
 def cam_mover(p, part_file: Path | None = None) -> SizeEstimate:
