@@ -14,7 +14,7 @@ from ... import policy
 from ...errors import InputError, require, require_positive
 from ...geometry.profile import Profile
 
-__all__ = ['row_norms', 'Outline', 'outline', 'crop_to_sector']
+__all__ = ['row_norms', 'Outline', 'outline', 'crop_to_sector', 'offset_outline']
 
 
 def _signed_area(p: np.ndarray) -> float:
@@ -159,3 +159,14 @@ def crop_to_sector(section: m3d.CrossSection, a0: float, a1: float, r_in: float,
     inner = np.column_stack([r_in * np.cos(a[::-1]), r_in * np.sin(a[::-1])]) if r_in > 0 else np.zeros((1, 2))
     wedge = m3d.CrossSection([np.ascontiguousarray(np.vstack([outer, inner]))], m3d.FillRule.Positive)
     return [np.asarray(p, float) for p in (section ^ wedge).to_polygons()]
+
+
+def offset_outline(o: Outline, inward: float, shift=(0.0, 0.0)) -> Outline:
+    """The outline's outer loop offset along its normals by ``inward`` (mm; material removed, < 0: added; round
+    joins) and translated by ``shift``: a part made thinner or thicker, or turning off its axis."""
+    loops = o.loops
+    if inward != 0.0:
+        cs = o.section.offset(-inward, m3d.JoinType.Round, 2.0, 64)
+        loops = [np.asarray(p, float) for p in cs.to_polygons() if len(p) >= 3]
+        loops = [max(loops, key=lambda p: abs(_signed_area(p)))]
+    return Outline([p + np.asarray(shift, float) for p in loops])

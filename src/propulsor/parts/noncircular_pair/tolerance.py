@@ -31,9 +31,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ... import policy
-from ...checks.motion import outline
 from ...checks.motion.contact_events import DRIVE, REVERSE, PairOutlines, resolve_contact
-from ...checks.motion.outlines import Outline
+from ...checks.motion.outlines import Outline, offset_outline
 
 __all__ = ["Tolerances", "Case", "CaseResult", "ToleranceStudy", "iso1328", "printed", "worst_cases",
            "monte_carlo_cases", "run_case", "tolerance_study"]
@@ -142,20 +141,7 @@ def monte_carlo_cases(tol: Tolerances, n: int, seed: int) -> list[Case]:
 
 def _changed(o: Outline, e: float, psi: float, t: float) -> Outline:
     """The outline made: flanks offset inward by t (outward for t < 0), its centre e off the rotation axis."""
-    import manifold3d as m3d
-
-    loops = o.loops
-    if t != 0.0:
-        cs = o.section.offset(-t, m3d.JoinType.Round, 2.0, 64)
-        loops = [np.asarray(p, float) for p in cs.to_polygons() if len(p) >= 3]
-        loops = [max(loops, key=lambda p: abs(_area(p)))]
-    shift = np.array([e * math.cos(psi), e * math.sin(psi)])
-    return Outline([p + shift for p in loops])
-
-
-def _area(p) -> float:
-    x, y = p[:, 0], p[:, 1]
-    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+    return offset_outline(o, t, (e * math.cos(psi), e * math.sin(psi)))
 
 
 def run_case(d, mount: float, case: Case, step_driver_rad: float | None = None) -> CaseResult:
