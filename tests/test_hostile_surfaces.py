@@ -1,0 +1,136 @@
+"""The newer surfaces under attack: what a rebuild may remove, studies sharing a folder, a scheduler that
+never answers, big tables read back, law tables that cost minutes, model data the viewer reads.
+
+Every refusal is one line, exit 2 (bad input, naming the key) or 3 (the environment, naming the path and the
+errno), never a traceback; nothing is deleted that the command did not write."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from propulsor import output_folder as of
+from propulsor.errors import EnvironmentFailure
+
+ROOT = Path(__file__).resolve().parents[1]
+SMALL_WHEEL = 'type = "road_wheel"\nlightening_holes = 0\n'
+
+
+def _cli(*args, cwd=None, env=None, timeout=600):
+    return subprocess.run([sys.executable, "-m", "propulsor.cli", *args], capture_output=True, text=True,
+                          cwd=cwd or ROOT, timeout=timeout, env=env)
+
+
+def _popen(*args, env=None):
+    return subprocess.Popen([sys.executable, "-m", "propulsor.cli", *args], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, cwd=ROOT, env=env)
+
+
+def _one_error_line(stderr: str) -> str:
+    lines = [line for line in stderr.splitlines() if line.strip()]
+    assert len(lines) == 1, stderr
+    assert "Traceback" not in stderr
+    return lines[0]
+
+
+@pytest.fixture
+def wheel(tmp_path):
+    f = tmp_path / "wheel.toml"
+    f.write_text(SMALL_WHEEL)
+    return f
+
+
+def _folder(path: Path, files: dict[str, str]) -> Path:
+    path.mkdir(parents=True, exist_ok=True)
+    for rel, text in files.items():
+        (path / rel).parent.mkdir(parents=True, exist_ok=True)
+        (path / rel).write_text(text)
+    return path
+
+
+# -- 1. the swap removes only the previous build's own files ---------------------------------------
+
+def test_a_file_saved_into_out_during_the_build_is_never_deleted_by_the_swap(tmp_path):
+    """Saved after the build began: the swap is refused (exit 3 by EnvironmentFailure), the file and the old
+    output stay where they were."""
+    out = _folder(tmp_path / "out", {"manifest.json": "old", "tables/a.csv": "1"})
+    before = of.snapshot(out)
+    (out / "mine.txt").write_text("precious")
+    (out / "notes").mkdir()
+    new = _folder(tmp_path / ".out.tmp-aaaaaaaa", {"manifest.json": "new"})
+    with pytest.raises(EnvironmentFailure, match="changed during the build"):
+        of.replace(new, out, before)
+    assert (out / "mine.txt").read_text() == "precious" and (out / "notes").is_dir()
+    assert (out / "manifest.json").read_text() == "old"
+
+
+def test_a_file_changed_in_out_during_the_build_is_not_the_old_builds_own(tmp_path):
+    out = _folder(tmp_path / "out", {"manifest.json": "old", "report.md": "as built"})
+    before = of.snapshot(out)
+    time.sleep(0.01)
+    (out / "report.md").write_text("my edits, longer")
+    new = _folder(tmp_path / ".out.tmp-aaaaaaaa", {"manifest.json": "new"})
+    with pytest.raises(EnvironmentFailure):
+        of.replace(new, out, before)
+    assert (out / "report.md").read_text() == "my edits, longer"
+
+
+@pytest.mark.parametrize("fallback", [False, True])
+def test_a_file_saved_in_the_instant_of_the_swap_is_kept(tmp_path, fallback):
+    """Saved between the last look and the exchange itself: the exchange is undone, the file stays."""
+    out = _folder(tmp_path / "out", {"manifest.json": "old"})
+    before = of.snapshot(out)
+    new = _folder(tmp_path / ".out.tmp-aaaaaaaa", {"manifest.json": "new"})
+    calls = []
+
+    def exchange(a, b):
+        if not calls:
+            (out / "late.txt").write_text("saved at the swap")
+        calls.append(1)
+        return False if fallback else of.rename_exchange(a, b)
+
+    with pytest.raises(EnvironmentFailure):
+        of.replace(new, out, before, exchange=exchange)
+    assert (out / "late.txt").read_text() == "saved at the swap"
+    assert (out / "manifest.json").read_text() == "old"
+
+
+def test_the_swap_removes_the_old_output_and_keeps_only_the_new(tmp_path):
+    out = _folder(tmp_path / "out", {"manifest.json": "old", "tables/a.csv": "1"})
+    before = of.snapshot(out)
+    new = _folder(tmp_path / ".out.tmp-aaaaaaaa", {"manifest.json": "new"})
+    assert of.replace(new, out, before) is None
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]
+    assert (out / "manifest.json").read_text() == "new" and not (out / "tables").exists()
+
+
+def test_what_appears_in_the_old_output_while_it_is_removed_is_kept_beside_it(tmp_path):
+    out = tmp_path / "out"
+    old = _folder(tmp_path / ".out.old-aaaaaaaa", {"manifest.json": "old", "tables/a.csv": "1"})
+    own = of.snapshot(old)
+    (old / "tables" / "late.csv").write_text("mine")
+    kept = of.discard(old, own, out)
+    assert kept is not None and kept.name.startswith("out.kept-")
+    assert (kept / "tables" / "late.csv").read_text() == "mine" and not (kept / "manifest.json").exists()
+
+
+def test_a_build_does_not_delete_a_file_saved_into_out_while_it_runs(tmp_path, wheel):
+    out = tmp_path / "out"
+    out.mkdir()  # an empty folder: taken without --force
+    p = _popen("build", str(wheel), "--out", str(out), "-q")
+    t0 = time.monotonic()
+    while p.poll() is None and time.monotonic() - t0 < 300:
+        if any((t / "tables").exists() for t in tmp_path.glob(".out.tmp-*")):
+            break
+        time.sleep(0.02)
+    (out / "thesis.docx").write_text("a week of work")
+    _, err = p.communicate(timeout=300)
+    assert p.returncode == 3, err
+    assert "changed during the build" in _one_error_line(err)
+    assert (out / "thesis.docx").read_text() == "a week of work"
+    assert not list(tmp_path.glob(".out.*"))
