@@ -134,3 +134,76 @@ def test_a_build_does_not_delete_a_file_saved_into_out_while_it_runs(tmp_path, w
     assert "changed during the build" in _one_error_line(err)
     assert (out / "thesis.docx").read_text() == "a week of work"
     assert not list(tmp_path.glob(".out.*"))
+
+
+# -- 2. a study owns its folder as a build does ----------------------------------------------------
+
+WHEEL_PART = ROOT / "parts" / "road_wheel.toml"
+ONE_VARIANT = f"""
+[study]
+part = "{WHEEL_PART}"
+depth = "design"
+
+[vary]
+tyre_width_mm = [70.0]
+
+[objectives]
+minimize = ["T_at_V_max_C"]
+"""
+
+
+def test_a_study_takes_the_lock_of_its_folder(tmp_path, capsys):
+    from propulsor.cli import main
+
+    study = tmp_path / "s.toml"
+    study.write_text(ONE_VARIANT)
+    out = tmp_path / "out"
+    lock = of.OutputLock(out)
+    lock.acquire(wait=False)  # a build (or another study) of that folder
+    try:
+        assert main(["explore", str(study), "--out", str(out), "--no-wait", "-q"]) == 2
+    finally:
+        lock.release()
+    line = _one_error_line(capsys.readouterr().err)
+    assert f"is in use by process {os.getpid()}" in line, line
+    assert not out.exists()
+
+
+def test_a_study_waiting_for_a_build_vets_the_folder_the_build_left(tmp_path, capsys):
+    """The build that held the folder wrote a part there: the study refuses it (exit 2) once it has the lock,
+    before any cluster starts, and leaves the build's files alone."""
+    import threading
+
+    from propulsor.cli import main
+
+    study = tmp_path / "s.toml"
+    study.write_text(ONE_VARIANT)
+    out = tmp_path / "out"
+    lock = of.OutputLock(out)
+    lock.acquire(wait=False)
+    codes = []
+    t = threading.Thread(target=lambda: codes.append(main(["explore", str(study), "--out", str(out), "-q"])))
+    t.start()
+    time.sleep(1.0)
+    _folder(out, {"manifest.json": '{"part": "road_wheel", "files": [], "versions": {"propulsor": "0"}}'})
+    lock.release()
+    t.join(timeout=120)
+    assert codes == [2]
+    err = capsys.readouterr().err
+    assert "is in use by process" in err and "not a study folder" in err and "Traceback" not in err
+    assert sorted(p.name for p in out.iterdir()) == ["manifest.json"]
+
+
+def test_build_best_never_deletes_files_it_did_not_write(tmp_path, capsys):
+    from propulsor.cli import main
+
+    study = tmp_path / "s.toml"
+    study.write_text(ONE_VARIANT)
+    out = tmp_path / "out"
+    mine = _folder(out / "best" / "1", {"my_notes.txt": "keep me"})
+    (out / "study.json").write_text("{}")  # a study folder of before
+    code = main(["explore", str(study), "--out", str(out), "--workers", "1", "--build-best", "1", "-q"])
+    line = _one_error_line(capsys.readouterr().err)
+    assert code == 2 and "--build-best" in line and "best/1" in line, line
+    assert (mine / "my_notes.txt").read_text() == "keep me"
+    assert not (out / "results.csv").exists()  # refused before any work

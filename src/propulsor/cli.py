@@ -241,7 +241,7 @@ def cmd_params(args) -> int:
 def cmd_explore(args) -> int:
     """A design study: every variant of the study file evaluated on a Dask cluster, one table, ranked."""
     from .progress import Progress
-    from .study import build_best_variants, load_study
+    from .study import load_study
     from .study.engine import run
 
     progress = Progress(enabled=not args.quiet, check=check_signalled)
@@ -256,14 +256,12 @@ def cmd_explore(args) -> int:
         study = load_study(args.study)
         out = Path(args.out) if args.out else Path("output") / Path(args.study).stem
         outcome = run(study, out, scheduler=args.scheduler, workers=args.workers, resume=args.resume,
-                      progress=progress)
+                      progress=progress, build_best=args.build_best, wait=not args.no_wait)
     except InputError as exc:
         return fail_input(exc)
     ok = sum(r["status"] == "ok" for r in outcome.rows)
     progress(f"{len(outcome.rows)} variants ({outcome.ran} run now, {outcome.seconds:.1f} s): {ok} meet every "
              f"requirement; {out / 'results.csv'} (and .parquet), {out / 'front.csv'}, {out / 'study.html'}")
-    if args.build_best:
-        build_best_variants(study, outcome, args.build_best, progress=progress)
     if gallery_folder(out.parent):  # the study in a gallery's folder (./output): the gallery links its page
         regenerate_gallery(out.parent, progress)
     return EXIT_OK
@@ -340,6 +338,8 @@ def build_parser() -> argparse.ArgumentParser:
     ex.add_argument("--resume", action="store_true", help="keep the rows of results.csv and run only the rest")
     ex.add_argument("--build-best", type=int, default=0, metavar="K", help="then build the K best variants "
                     "fully into <out>/best/<rank>/")
+    ex.add_argument("--no-wait", action="store_true", help="exit 2 instead of waiting when another study or "
+                    "build holds the lock of --out")
     ex.add_argument("-q", "--quiet", action="store_true", help="no progress line")
     ex.set_defaults(func=cmd_explore)
     return p

@@ -151,7 +151,7 @@ def _mount_inside(real: Path) -> str | None:
     return None
 
 
-def _representable(out: Path) -> None:
+def representable(out: Path) -> None:
     """InputError unless `out` is a path every writer of a build can use (UTF-8, within the length limits)."""
     raw = os.fsencode(out)
     try:
@@ -173,7 +173,7 @@ def vet_target(out: Path, force: bool = False, keep: tuple[Path, ...] = ()) -> P
 
     `keep`: files the build reads (the part file and the files it names) that must stay outside."""
     out = Path(os.path.abspath(out))
-    _representable(out)
+    representable(out)
     if out.is_symlink():
         raise InputError("--out", str(out), "is a symbolic link; give the folder it points to")
     real = out.resolve()

@@ -10,6 +10,7 @@ import logging
 import math
 import os
 import time
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -86,12 +87,47 @@ def local_cluster(n: int):
                             silence_logs=logging.CRITICAL)
 
 
-def vet_folder(out: Path) -> None:
-    """`out` may hold the study: missing, empty, or a study folder propulsor wrote (InputError)."""
+def vet_folder(out: Path, build_best: int = 0) -> None:
+    """`out` may hold the study: a UTF-8 path within the length limits, missing, empty, or a study folder
+    propulsor wrote; the folders ``best/<rank>/`` that `build_best` writes empty or a propulsor build's
+    (the rules of ``propulsor build --out`` without --force).  InputError otherwise."""
+    from .. import output_folder as of
+
+    of.representable(Path(os.path.abspath(out)))
     if out.is_symlink() or (out.exists() and not out.is_dir()):
         raise InputError("--out", str(out), "must be a folder (not a file or a link)")
     if out.is_dir() and any(out.iterdir()) and not (out / MARKER).is_file():
         raise InputError("--out", str(out), f"holds files but no {MARKER}: not a study folder; choose another")
+    for rank in range(1, build_best + 1):
+        best = out / "best" / str(rank)
+        if os.path.lexists(best):
+            try:
+                of.vet_target(best)
+            except InputError as exc:
+                raise InputError("--build-best", build_best, f"{best}: {exc.limit}") from None
+
+
+@contextmanager
+def holding(out: Path, wait: bool = True):
+    """The study's folder locked for the whole study (its build-best too): the lock of a build's output
+    (output_folder.OutputLock, ``.<name>.lock`` beside it), so that one study or one build owns a folder at
+    a time.  With `wait` False a held lock is InputError; else one line says whom it waits for."""
+    import sys
+
+    from .. import output_folder as of
+
+    of.representable(Path(os.path.abspath(out)))
+    of.prepare_parent(out)
+    lock = of.OutputLock(out)
+    try:
+        lock.acquire(wait=wait, on_wait=lambda pid: print(f"propulsor: {out} is in use by process {pid}; waiting",
+                                                          file=sys.stderr, flush=True))
+    except of.Busy as busy:
+        raise InputError("--out", str(out), f"is in use by process {busy.pid} (--no-wait)") from None
+    try:
+        yield lock
+    finally:
+        lock.release()
 
 
 def write_marker(out: Path, study: Study, rows=None, rank=None) -> None:
@@ -135,12 +171,25 @@ def _span(s: float) -> str:
 
 
 def run(study: Study, out: Path, *, scheduler: str | None = None, workers: int | None = None,
-        resume: bool = False, progress=lambda msg: None, client=None) -> Outcome:
+        resume: bool = False, progress=lambda msg: None, client=None, build_best: int = 0,
+        wait: bool = True) -> Outcome:
     """Run the study into folder `out`: results.csv, results.parquet, front.csv, pareto_front.png, study.html
-    (and variants/ at depth build).  Nothing is written before the study file, the folder and the scheduler are known good."""
+    (and variants/ at depth build; best/<rank>/ of the `build_best` best).  The folder is locked for all of it
+    (:func:`holding`); nothing is written before the study file, the folder and the scheduler are known good."""
+    with holding(out, wait=wait):
+        vet_folder(out, build_best)  # as it is now, with the lock held
+        outcome = _run(study, out, scheduler=scheduler, workers=workers, resume=resume, progress=progress,
+                       client=client)
+        if build_best:
+            from . import _build_best
+
+            _build_best(study, outcome, build_best, progress=progress)
+        return outcome
+
+
+def _run(study: Study, out: Path, *, scheduler, workers, resume, progress, client) -> Outcome:
     from .. import __version__
 
-    vet_folder(out)
     own = client is None
     cluster = None
     if own:

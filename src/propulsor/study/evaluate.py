@@ -151,7 +151,7 @@ def _evaluate(part_type, base, source, values, depth, wanted, build_dir) -> dict
         else:
             if depth == "build" and build_dir:
                 try:
-                    part.write(build_dir, force=True, keep_failed=True)
+                    part.write(build_dir, keep_failed=True)  # a folder only a build wrote is replaced
                 except CheckFailed:
                     pass
             derived, checks = part.build.derived, list(part.build.checks)
