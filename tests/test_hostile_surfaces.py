@@ -207,3 +207,103 @@ def test_build_best_never_deletes_files_it_did_not_write(tmp_path, capsys):
     assert code == 2 and "--build-best" in line and "best/1" in line, line
     assert (mine / "my_notes.txt").read_text() == "keep me"
     assert not (out / "results.csv").exists()  # refused before any work
+
+
+# -- 4. a scheduler that never answers, or has no worker ------------------------------------------
+
+BIN = Path(sys.executable).parent
+
+
+def _listener(behaviour: str):
+    """A TCP listener on 127.0.0.1 that accepts and then never answers ('silent') or sends garbage."""
+    import socket
+    import threading
+
+    srv = socket.socket()
+    srv.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+    srv.bind(("127.0.0.1", 0))
+    srv.listen(8)
+    held = []
+
+    def serve():
+        while True:
+            try:
+                conn, _ = srv.accept()
+            except OSError:
+                return
+            held.append(conn)
+            if behaviour == "garbage":
+                try:
+                    conn.sendall(os.urandom(64) + b"\xff" * 64)
+                except OSError:
+                    pass
+
+    threading.Thread(target=serve, daemon=True).start()
+    return srv, f"tcp://127.0.0.1:{srv.getsockname()[1]}"
+
+
+@pytest.mark.parametrize("behaviour", ["silent", "garbage"])
+def test_a_listener_that_never_answers_like_a_scheduler_is_exit_2_within_seconds(tmp_path, behaviour):
+    srv, address = _listener(behaviour)
+    study = tmp_path / "s.toml"
+    study.write_text(ONE_VARIANT)
+    t0 = time.monotonic()
+    try:
+        r = _cli("explore", str(study), "--out", str(tmp_path / "out"), "--scheduler", address, "-q", timeout=60)
+    finally:
+        srv.close()
+    assert time.monotonic() - t0 < 40
+    assert r.returncode == 2, r.stderr
+    line = _one_error_line(r.stderr)
+    assert "--scheduler" in line and "no Dask scheduler answers" in line, line
+    assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("address", ["tls://127.0.0.1:8786", "ws://127.0.0.1:8786", "ucx://127.0.0.1:8786", "--",
+                                     "", "tcp://127.0.0.1:99999", "tcp://a b:1"])
+def test_a_scheduler_address_other_than_tcp_is_one_line(tmp_path, address, capsys):
+    from propulsor.cli import main
+
+    study = tmp_path / "s.toml"
+    study.write_text(ONE_VARIANT)
+    t0 = time.monotonic()
+    assert main(["explore", str(study), "--out", str(tmp_path / "out"), f"--scheduler={address}", "-q"]) == 2
+    assert time.monotonic() - t0 < 5
+    line = _one_error_line(capsys.readouterr().err)
+    assert "--scheduler" in line, line
+
+
+def test_a_scheduler_without_workers_is_exit_3_after_the_stated_wait(tmp_path):
+    import socket
+
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    log = open(tmp_path / "dask.log", "w")
+    sched = subprocess.Popen([str(BIN / "dask"), "scheduler", "--host", "127.0.0.1", "--port", str(port),
+                              "--no-dashboard"], stdout=log, stderr=subprocess.STDOUT, cwd=tmp_path)
+    try:
+        from propulsor.study.cluster import probe
+
+        deadline = time.monotonic() + 60
+        while True:
+            try:
+                probe(f"tcp://127.0.0.1:{port}", 2)
+                break
+            except Exception:
+                assert time.monotonic() < deadline
+                time.sleep(0.5)
+        study = tmp_path / "s.toml"
+        study.write_text(ONE_VARIANT)
+        t0 = time.monotonic()
+        r = _cli("explore", str(study), "--out", str(tmp_path / "out"), "--scheduler", f"tcp://127.0.0.1:{port}",
+                 "--worker-wait", "2", "-q", timeout=90)
+        assert time.monotonic() - t0 < 60
+        assert r.returncode == 3, r.stderr
+        line = _one_error_line(r.stderr)
+        assert f"tcp://127.0.0.1:{port}" in line and "[ETIMEDOUT]" in line and "--worker-wait" in line, line
+        assert not of.lock_path(tmp_path / "out").exists()
+    finally:
+        sched.terminate()
+        sched.wait(timeout=10)
+        log.close()

@@ -94,9 +94,9 @@ def test_bad_study_file_exit_2_one_line_nothing_written(tmp_path, capsys, change
 
 
 def test_unreachable_scheduler_exit_2_nothing_written(tmp_path, capsys, monkeypatch):
-    from propulsor.study import engine
+    from propulsor.study import cluster
 
-    monkeypatch.setattr(engine, "CONNECT_TIMEOUT_S", 2)
+    monkeypatch.setattr(cluster, "ANSWER_TIMEOUT_S", 2)
     with socket.socket() as s:  # a port nobody listens on
         s.bind(("127.0.0.1", 0))
         port = s.getsockname()[1]

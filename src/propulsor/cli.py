@@ -246,17 +246,28 @@ def cmd_explore(args) -> int:
 
     progress = Progress(enabled=not args.quiet, check=check_signalled)
     try:
-        if args.workers is not None and not 1 <= args.workers <= 1024:
-            raise InputError("--workers", args.workers, "must be within 1 ... 1024")
-        if args.workers is not None and args.scheduler:
+        cores = os.cpu_count() or 1
+        if args.workers is not None and not 1 <= args.workers <= cores:
+            raise InputError("--workers", args.workers, f"must be within 1 ... {cores} (this machine's cores: a "
+                             "variant runs on one core)")
+        if args.scheduler is not None:
+            from .study.cluster import scheduler_address
+
+            scheduler_address(args.scheduler)
+        if args.workers is not None and args.scheduler is not None:
             raise InputError("--workers", args.workers, "sizes the local cluster; with --scheduler the cluster's own "
                              "workers run the study")
+        if args.worker_wait is not None:
+            from .study.cluster import worker_wait
+
+            worker_wait(args.worker_wait)
         if args.build_best < 0:
             raise InputError("--build-best", args.build_best, "must be >= 0")
         study = load_study(args.study)
         out = Path(args.out) if args.out else Path("output") / Path(args.study).stem
         outcome = run(study, out, scheduler=args.scheduler, workers=args.workers, resume=args.resume,
-                      progress=progress, build_best=args.build_best, wait=not args.no_wait)
+                      progress=progress, build_best=args.build_best, wait=not args.no_wait,
+                      worker_wait=args.worker_wait)
     except InputError as exc:
         return fail_input(exc)
     ok = sum(r["status"] == "ok" for r in outcome.rows)
@@ -334,7 +345,10 @@ def build_parser() -> argparse.ArgumentParser:
     ex.add_argument("--out", help="the study's folder (default output/<study file name>)")
     ex.add_argument("--scheduler", help="the address of a running Dask scheduler (tcp://host:8786); default: "
                     "a local cluster of worker processes")
-    ex.add_argument("--workers", type=int, help="worker processes of the local cluster (default: the cores)")
+    ex.add_argument("--workers", type=int, help="worker processes of the local cluster (default and most: the "
+                    "cores)")
+    ex.add_argument("--worker-wait", type=float, metavar="S", help="seconds to wait for a Dask worker when the "
+                    "cluster has none, at the start or when every worker has left (default 60); then exit 3")
     ex.add_argument("--resume", action="store_true", help="keep the rows of results.csv and run only the rest")
     ex.add_argument("--build-best", type=int, default=0, metavar="K", help="then build the K best variants "
                     "fully into <out>/best/<rank>/")

@@ -22,8 +22,6 @@ from .table import Table
 
 #: the marker that says a folder holds a study propulsor wrote (it may be written over)
 MARKER = "study.json"
-#: seconds to wait for a scheduler to answer
-CONNECT_TIMEOUT_S = 10
 
 
 @dataclass
@@ -36,20 +34,32 @@ class Outcome:
     folder: Path
 
 
-def connect(scheduler: str | None, workers: int | None):
+def connect(scheduler: str | None, workers: int | None, worker_wait: float | None = None, progress=lambda msg: None):
     """(client, cluster or None): a client of the scheduler at `scheduler`, or of a new LocalCluster of
-    `workers` processes (the machine's cores when None).  InputError when no scheduler answers."""
+    `workers` processes (the machine's cores when None).  InputError when the address is not tcp://HOST:PORT
+    or no scheduler answers there within cluster.ANSWER_TIMEOUT_S (connection, handshake and answer);
+    EnvironmentFailure when it has no worker after `worker_wait` s (cluster.WORKER_WAIT_S when None)."""
+    from . import cluster as dask_cluster
+    from .cluster import WORKER_WAIT_S, probe, scheduler_address, wait_for_workers
+
     for name in ("distributed", "distributed.worker", "distributed.scheduler", "distributed.nanny",
-                 "distributed.core", "distributed.comm", "distributed.batched", "tornado"):
+                 "distributed.core", "distributed.comm", "distributed.batched", "distributed.client", "tornado"):
         logging.getLogger(name).setLevel(logging.CRITICAL)
     from distributed import Client
 
-    if scheduler:
+    if scheduler is not None:
+        address = scheduler_address(scheduler)
+        probe(address)  # bounded: a listener that never answers is refused here, before any Client exists
         try:
-            client = Client(scheduler, timeout=CONNECT_TIMEOUT_S, set_as_default=False)
+            client = Client(address, timeout=dask_cluster.ANSWER_TIMEOUT_S, set_as_default=False)
         except (OSError, TimeoutError, ValueError) as exc:
             raise InputError("--scheduler", scheduler, f"no Dask scheduler answers there ({type(exc).__name__}); "
                              "start one with `dask scheduler` and workers with `dask worker ADDRESS`") from None
+        try:
+            wait_for_workers(client, address, WORKER_WAIT_S if worker_wait is None else worker_wait, progress)
+        except BaseException:
+            client.close()
+            raise
         return client, None
     n = workers or os.cpu_count() or 1
     cluster = local_cluster(n)
@@ -172,14 +182,14 @@ def _span(s: float) -> str:
 
 def run(study: Study, out: Path, *, scheduler: str | None = None, workers: int | None = None,
         resume: bool = False, progress=lambda msg: None, client=None, build_best: int = 0,
-        wait: bool = True) -> Outcome:
+        wait: bool = True, worker_wait: float | None = None) -> Outcome:
     """Run the study into folder `out`: results.csv, results.parquet, front.csv, pareto_front.png, study.html
     (and variants/ at depth build; best/<rank>/ of the `build_best` best).  The folder is locked for all of it
     (:func:`holding`); nothing is written before the study file, the folder and the scheduler are known good."""
     with holding(out, wait=wait):
         vet_folder(out, build_best)  # as it is now, with the lock held
         outcome = _run(study, out, scheduler=scheduler, workers=workers, resume=resume, progress=progress,
-                       client=client)
+                       client=client, worker_wait=worker_wait)
         if build_best:
             from . import _build_best
 
@@ -187,13 +197,15 @@ def run(study: Study, out: Path, *, scheduler: str | None = None, workers: int |
         return outcome
 
 
-def _run(study: Study, out: Path, *, scheduler, workers, resume, progress, client) -> Outcome:
+def _run(study: Study, out: Path, *, scheduler, workers, resume, progress, client, worker_wait) -> Outcome:
     from .. import __version__
+    from .cluster import WORKER_WAIT_S
 
     own = client is None
     cluster = None
+    wait_s = WORKER_WAIT_S if worker_wait is None else worker_wait
     if own:
-        client, cluster = connect(scheduler, workers)
+        client, cluster = connect(scheduler, workers, wait_s, progress)
     try:
         n_workers = len(client.scheduler_info().get("workers", {}))
         out.mkdir(parents=True, exist_ok=True)
@@ -207,7 +219,8 @@ def _run(study: Study, out: Path, *, scheduler, workers, resume, progress, clien
             progress(f"{study.title}: {len(study.variants)} variants at depth {study.depth} on {n_workers} Dask "
                      f"worker(s)" + (f"; {before} already in {table.path}" if before else ""))
             t0 = time.perf_counter()
-            _evaluate_all(client, study, out, todo, table, Rate(len(study.variants), before, progress))
+            _evaluate_all(client, study, out, todo, table, Rate(len(study.variants), before, progress),
+                          scheduler or "the local cluster", wait_s)
             seconds = time.perf_counter() - t0
         finally:
             table.close()
@@ -243,10 +256,14 @@ def expected_seconds(study: Study, values: dict) -> float:
         return 0.0
 
 
-def _evaluate_all(client, study: Study, out: Path, todo, table: Table, rate: Rate) -> None:
+def _evaluate_all(client, study: Study, out: Path, todo, table: Table, rate: Rate, where: str = "",
+                  worker_wait: float = 60.0) -> None:
     """Submit every variant, the longest first by the size estimate (the last tasks short, so that no
-    worker idles at the end while another finishes a long one); a row as each finishes."""
+    worker idles at the end while another finishes a long one); a row as each finishes.  When the cluster
+    has had no worker for `worker_wait` s, EnvironmentFailure (the finished rows are in the table)."""
     from distributed import as_completed
+
+    from .cluster import no_worker
 
     wanted = study.values
     source = str(study.part_file)
@@ -257,18 +274,38 @@ def _evaluate_all(client, study: Study, out: Path, todo, table: Table, rate: Rat
         fut = client.submit(evaluate, study.part_type, study.base, source, values, study.depth, wanted, build_dir,
                             key=f"propulsor-variant-{key}", pure=False, retries=1, priority=len(order) - j)
         futures[fut] = (i, values, key)
-    for fut in as_completed(list(futures), loop=client.loop):
-        i, values, key = futures.pop(fut)
-        try:
-            res = fut.result()
-        except Exception as exc:  # the task itself was lost (its workers kept dying): a row saying so
-            res = {"values": {}, "all_checks_passed": None, "failed_checks": "", "status": "error",
-                   "reason": f"{type(exc).__name__}: {exc}", "seconds": None, "worker": ""}
-        row = {"variant": i, "key": key, **values, **res.pop("values"), **res}
-        if row["status"] == "ok":
-            why = requirement_failure(study, row)
-            if why:
-                row["status"], row["reason"] = "rejected", why
-        table.add(row)
-        fut.release()
-        rate.tick(row)
+    finished = as_completed(list(futures), loop=client.loop)
+    looked = alone_since = None
+    while not finished.is_empty():
+        batch = finished.next_batch(block=False)
+        if not batch:
+            now = time.monotonic()
+            if looked is None or now - looked >= 1.0:  # are there workers at all? (once a second)
+                looked = now
+                if client.nthreads():
+                    alone_since = None
+                elif alone_since is None:
+                    alone_since = now
+                elif now - alone_since > worker_wait:
+                    raise no_worker(where, worker_wait, during=True)
+            time.sleep(0.05)
+            continue
+        for fut in batch:
+            _row(study, futures.pop(fut), fut, table, rate)
+
+
+def _row(study: Study, which, fut, table: Table, rate: Rate) -> None:
+    i, values, key = which
+    try:
+        res = fut.result()
+    except Exception as exc:  # the task itself was lost (its workers kept dying): a row saying so
+        res = {"values": {}, "all_checks_passed": None, "failed_checks": "", "status": "error",
+               "reason": f"{type(exc).__name__}: {exc}", "seconds": None, "worker": ""}
+    row = {"variant": i, "key": key, **values, **res.pop("values"), **res}
+    if row["status"] == "ok":
+        why = requirement_failure(study, row)
+        if why:
+            row["status"], row["reason"] = "rejected", why
+    table.add(row)
+    fut.release()
+    rate.tick(row)
