@@ -307,3 +307,110 @@ def test_a_scheduler_without_workers_is_exit_3_after_the_stated_wait(tmp_path):
         sched.terminate()
         sched.wait(timeout=10)
         log.close()
+
+
+# -- 5. results.csv read back as a stream, bounded ---------------------------------------------------
+
+def _study(tmp_path):
+    from propulsor.study import load_study
+
+    study = tmp_path / "s.toml"
+    study.write_text(ONE_VARIANT)
+    return load_study(study)
+
+
+def _header(study) -> str:
+    from propulsor.study.results import columns
+
+    return ",".join(columns(study)) + "\n"
+
+
+def test_resume_reads_results_csv_as_a_stream(tmp_path):
+    """20 MB of rows of other variants: read a line at a time, the memory is the rows kept, not the file."""
+    import tracemalloc
+
+    from propulsor.study.table import read_csv
+
+    study = _study(tmp_path)
+    cols = _header(study).strip().split(",")
+    line = ",".join(["7", "stale"] + ["1.5"] * (len(cols) - 2)) + "\n"
+    path = tmp_path / "results.csv"
+    with open(path, "w") as f:
+        f.write(_header(study))
+        f.write(line * (20_000_000 // len(line)))
+        f.write(line.replace("stale", "mine").replace("7,", "9,", 1))
+    tracemalloc.start()
+    try:
+        rows = read_csv(path, cols, keys=["mine"])
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert [(r["variant"], r["key"]) for r in rows] == [(1, "mine")]  # numbered by the key's place
+    assert peak < 4_000_000, peak
+
+
+def test_resume_refuses_a_results_csv_larger_than_the_limit_by_its_size(tmp_path, monkeypatch):
+    from propulsor.study import table
+    from propulsor.study.table import read_csv
+
+    study = _study(tmp_path)
+    path = tmp_path / "results.csv"
+    path.write_text(_header(study))
+    os.truncate(path, 3 << 30)  # 3 GB, sparse: never read
+    with pytest.raises(of.InputError, match="more than the"):
+        read_csv(path, _header(study).strip().split(","), keys=["k"])
+    monkeypatch.setattr(table, "RESULTS_MAX_BYTES", 10)
+    os.truncate(path, 100)
+    with pytest.raises(of.InputError, match="--resume"):
+        read_csv(path, _header(study).strip().split(","), keys=["k"])
+
+
+@pytest.mark.parametrize("tamper", ["not utf-8", "huge field", "nul byte"])
+def test_a_tampered_results_csv_is_one_line_exit_2(tmp_path, tamper, capsys):
+    from propulsor.cli import main
+
+    study_file = tmp_path / "s.toml"
+    study_file.write_text(ONE_VARIANT)
+    study = _study(tmp_path)
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "study.json").write_text("{}")
+    body = {"not utf-8": b"1,k\xff\xfe,1\n", "huge field": b'1,"' + b"x" * 200_000 + b'",1\n',
+            "nul byte": b"1,k\x00,\x00\n"}[tamper]
+    (out / "results.csv").write_bytes(_header(study).encode() + body)
+    code = main(["explore", str(study_file), "--out", str(out), "--resume", "--workers", "1", "-q"])
+    err = capsys.readouterr().err
+    if tamper == "nul byte":  # a row of no key of this study: left out, the study runs
+        assert code == 0 and "Traceback" not in err, err
+        return
+    line = _one_error_line(err)
+    assert code == 2 and "--resume" in line, line
+
+
+def test_a_repeated_row_does_not_survive_resume(tmp_path):
+    from propulsor.study.table import read_csv
+
+    study = _study(tmp_path)
+    cols = _header(study).strip().split(",")
+    line = ",".join(["1", "k1"] + ["2.5"] * (len(cols) - 2)) + "\n"
+    path = tmp_path / "results.csv"
+    path.write_text(_header(study) + line + line + line.replace("2.5", "3.5"))
+    rows = read_csv(path, cols, keys=["k1", "k2"])
+    assert len(rows) == 1
+
+
+def test_results_parquet_is_not_rewritten_for_every_row(tmp_path, monkeypatch):
+    from propulsor.study import table
+
+    study = _study(tmp_path)
+    calls = []
+    real = table.write_parquet
+    monkeypatch.setattr(table, "write_parquet", lambda *a: calls.append(1) or real(*a))
+    t = table.Table(tmp_path, study, False)
+    for k in range(1, 501):
+        t.add({"variant": k, "key": f"k{k}", "tyre_width_mm": 70.0, "T_at_V_max_C": 1.0 * k, "status": "ok"})
+    assert len(calls) <= 2
+    t.close()
+    import pyarrow.parquet as pq
+
+    assert pq.read_table(tmp_path / "results.parquet").num_rows == 500
