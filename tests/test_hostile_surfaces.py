@@ -414,3 +414,67 @@ def test_results_parquet_is_not_rewritten_for_every_row(tmp_path, monkeypatch):
     import pyarrow.parquet as pq
 
     assert pq.read_table(tmp_path / "results.parquet").num_rows == 500
+
+
+# -- 6. a law table's work bounded, its hints within the limits --------------------------------------
+
+TABLE_PART = (ROOT / "parts" / "ncg_table.toml").read_text()
+
+
+def _law_table(path: Path, rows: int, noise: float) -> Path:
+    """theta = 2 phi + 0.2 sin 2 phi over 180 deg of the driven wheel, `rows` rows, the inner rows moved by
+    `noise` of a row's driver step (a table from a noisy measurement)."""
+    import numpy as np
+
+    ph = np.linspace(0.0, 180.0, rows)
+    x = np.radians(ph)
+    th = np.degrees(2 * x + 0.2 * np.sin(2 * x))
+    th[1:-1] += np.random.default_rng(1).uniform(-noise, noise, rows - 2) * (360.0 / rows)
+    th[-1] = 360.0
+    path.write_text("driver_deg,driven_deg\n" + "".join(f"{float(a)!r},{float(b)!r}\n" for a, b in zip(th, ph)))
+    return path
+
+
+@pytest.mark.parametrize("rows, noise", [(100_000, 0.3), (20_000, 0.3)])
+def test_a_noisy_law_table_within_the_row_limit_is_refused_in_seconds(tmp_path, rows, noise):
+    _law_table(tmp_path / "law.csv", rows, noise)
+    part = tmp_path / "p.toml"
+    part.write_text(TABLE_PART.replace("ncg_table_law.csv", "law.csv"))
+    t0 = time.monotonic()
+    r = _cli("build", str(part), "--dry-run", timeout=90)
+    assert time.monotonic() - t0 < 45
+    assert r.returncode == 2, r.stderr
+    line = _one_error_line(r.stderr)
+    assert line.startswith("propulsor: error: law_file") and "None" not in line, line
+
+
+def test_a_smooth_law_table_of_the_most_rows_is_screened_in_seconds(tmp_path):
+    _law_table(tmp_path / "law.csv", 100_000, 0.0)
+    part = tmp_path / "p.toml"
+    part.write_text(TABLE_PART.replace("ncg_table_law.csv", "law.csv"))
+    t0 = time.monotonic()
+    r = _cli("build", str(part), "--dry-run", timeout=90)
+    assert r.returncode == 0, r.stderr
+    assert time.monotonic() - t0 < 45
+
+
+def test_generability_hints_stay_within_the_parameters_limits():
+    import math
+    import re
+
+    from propulsor.gears.generability import CurveCheck, CutterSpec, Generability, remedies
+
+    cutter = CutterSpec(m=2.0, alpha=math.radians(20.0), x=0.5, x_H=-0.5, z0=20)
+    limits = {"x": (-1.0, 1.5), "x_H": (-1.5, 1.0), "z_H": (4, 480), "m": (0.0, 50.0), "z0": (6, 200)}
+    for rho in (-12.5, 0.0, 1e-6, 0.5):
+        bad = CurveCheck(curve="driver", rho_convex_min=rho, rho_limit=8.5, concave=True, rho_concave_min=rho * 0.01,
+                         r0=20.0, ok=False, reason="")
+        ok = CurveCheck(curve="driven", rho_convex_min=50.0, rho_limit=8.5, concave=False, rho_concave_min=math.inf,
+                        r0=20.0, ok=True, reason="")
+        text = "; ".join(remedies(Generability(bad, ok), cutter, 60, 2, 120.0, limits))
+        assert "None" not in text, text
+        for name, value in re.findall(r"\b(x|x_H|z_H|z0) (?:>=|<=) (-?[0-9.]+)", text):
+            lo, hi = limits[name]
+            assert lo <= float(value) <= hi, text
+        for value in re.findall(r"\bm <= (-?[0-9.e+-]+) mm", text):
+            assert 0 < float(value) <= 50, text
