@@ -478,3 +478,151 @@ def test_generability_hints_stay_within_the_parameters_limits():
             assert lo <= float(value) <= hi, text
         for value in re.findall(r"\bm <= (-?[0-9.e+-]+) mm", text):
             assert 0 < float(value) <= 50, text
+
+
+# -- 3. the viewer never runs model data; check validates what it reads ------------------------------
+
+def _bomb_glb(nodes: int = 9_999, vertices: int = 30_000) -> bytes:
+    """A GLB within every size limit whose nodes all instance one mesh: nodes × vertices / 3 triangles drawn."""
+    import json
+    import struct
+
+    blob = bytes(12 * vertices)
+    doc = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+           "nodes": [{"children": list(range(1, nodes))}] + [{"mesh": 0} for _ in range(1, nodes)],
+           "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+           "accessors": [{"bufferView": 0, "componentType": 5126, "count": vertices, "type": "VEC3",
+                          "min": [0, 0, 0], "max": [0, 0, 0]}],
+           "bufferViews": [{"buffer": 0, "byteLength": len(blob)}], "buffers": [{"byteLength": len(blob)}]}
+    js = json.dumps(doc).encode()
+    js += b" " * (-len(js) % 4)
+    total = 12 + 8 + len(js) + 8 + len(blob)
+    return (struct.pack("<4sII", b"glTF", 2, total) + struct.pack("<I4s", len(js), b"JSON") + js
+            + struct.pack("<I4s", len(blob), b"BIN\0") + blob)
+
+
+@pytest.fixture(scope="module")
+def built_wheel(tmp_path_factory):
+    """A road wheel built once (as `propulsor build` writes it), in a gallery folder of its own."""
+    folder = tmp_path_factory.mktemp("gallery")
+    part = folder / "wheel.toml"
+    part.write_text(SMALL_WHEEL)
+    r = _cli("build", str(part), "--out", str(folder / "wheel"), "-q")
+    assert r.returncode == 0, r.stderr
+    return folder / "wheel"
+
+
+def _rehash(folder: Path, rel: str) -> None:
+    """The manifest made to list `rel` as it is now (an attacker who can write the folder can do this)."""
+    import hashlib
+    import json
+
+    m = json.loads((folder / "manifest.json").read_text())
+    data = (folder / rel).read_bytes()
+    entry = {"path": rel, "format": "JS" if rel.endswith(".js") else "HTML", "bytes": len(data),
+             "sha256": hashlib.sha256(data).hexdigest()}
+    m["files"] = [f for f in m["files"] if f.get("path") != rel] + [entry]
+    (folder / "manifest.json").write_text(json.dumps(m))
+
+
+def test_no_page_loads_a_script_from_the_part_folder(built_wheel, tmp_path):
+    import re
+    import shutil
+
+    from propulsor.export.gallery import render_gallery
+
+    folder = tmp_path / "g"
+    shutil.copytree(built_wheel, folder / "wheel")
+    evil = "document.documentElement.dataset.pwned = '1';\n"
+    (folder / "wheel" / "road_wheel_assembly.glb.js").write_text(evil)
+    _rehash(folder / "wheel", "road_wheel_assembly.glb.js")
+    for page in ((folder / "wheel" / "report.html").read_text(), render_gallery(folder)):
+        csp = re.search(r'http-equiv="Content-Security-Policy" content="([^"]*)"', page).group(1)
+        script_src = csp.split("script-src")[1].split(";")[0].split()
+        assert script_src and all(s.startswith("'sha256-") for s in script_src), csp  # no 'self': no script file
+        assert not re.search(r"<script[^>]*\bsrc=", page) and ".glb.js" not in page.split("<script>")[0]
+        assert 'class="propulsor-glb"' in page  # the model is on the page, as data
+
+
+def test_check_refuses_a_page_that_runs_a_script_propulsor_did_not_write(built_wheel, tmp_path):
+    import shutil
+
+    from propulsor.checks.files import check_file
+
+    folder = tmp_path / "wheel"
+    shutil.copytree(built_wheel, folder)
+    assert all(c.passed for c in check_file(folder / "report.html"))
+    page = (folder / "report.html").read_text()
+    attacks = {
+        "a script file": page.replace("</body>", '<script src="road_wheel_assembly.glb.js"></script></body>'),
+        "a policy allowing script files": page.replace("script-src 'sha256-", "script-src 'self' 'sha256-", 1),
+        "another inline script": page.replace("<script>\n", "<script>\nalert(1);\n", 1),
+        "a script before the policy": page.replace('<meta charset="utf-8">', '<meta charset="utf-8"><script>x</script>'),
+    }
+    for what, text in attacks.items():
+        (folder / "report.html").write_text(text)
+        _rehash(folder, "report.html")
+        checks = check_file(folder / "report.html")
+        assert not all(c.passed for c in checks), what
+
+
+def test_a_glb_drawing_too_many_triangles_is_invalid_alone_in_a_folder_and_on_a_page(built_wheel, tmp_path):
+    import base64
+    import re
+    import shutil
+
+    from propulsor.checks.files import check_path
+    from propulsor.export.viewer_page import model_data
+
+    bomb = _bomb_glb()
+    (tmp_path / "bomb.glb").write_bytes(bomb)
+    alone = check_path(tmp_path / "bomb.glb")[str(tmp_path / "bomb.glb")]
+    assert not alone[0].passed and "triangles" in alone[0].message, alone
+    assert model_data(tmp_path / "bomb.glb")[0] is None  # never put on a page
+    folder = tmp_path / "wheel"
+    shutil.copytree(built_wheel, folder)
+    (folder / "road_wheel_assembly.glb").write_bytes(bomb)
+    page = (folder / "report.html").read_text()
+    page = re.sub(r'(class="propulsor-glb">)[^<]*', lambda m: m.group(1) + base64.b64encode(bomb).decode(), page)
+    (folder / "report.html").write_text(page)
+    for rel in ("road_wheel_assembly.glb", "report.html"):
+        _rehash(folder, rel)
+    results = check_path(folder)
+    for rel in ("road_wheel_assembly.glb", "report.html"):
+        assert not all(c.passed for c in results[str(folder / rel)]), rel
+
+
+def test_the_viewer_refuses_what_check_refuses(tmp_path):
+    """web/viewer.js's own model check (run in node): the bomb is refused by its triangles, a GLB with an
+    external URI and a cycle of nodes too; a sound GLB passes."""
+    import json
+    import shutil
+    import struct
+
+    if not shutil.which("node"):
+        pytest.skip("needs node to run web/viewer.js's model check")
+    harness = tmp_path / "h.js"
+    harness.write_text(
+        "global.window = {}; global.document = {readyState: 'complete', querySelectorAll: () => []};\n"
+        "global.IntersectionObserver = function () { this.observe = function () {}; };\n"
+        f"require({json.dumps(str(ROOT / 'src/propulsor/export/web/viewer.js'))});\n"
+        "const b = require('fs').readFileSync(process.argv[2]);\n"
+        "console.log(window.PROPULSOR_VIEWER.glbProblem(b.buffer.slice(b.byteOffset, b.byteOffset + b.byteLength)));\n")
+
+    def glb(doc, blob=b""):
+        js = json.dumps(doc).encode()
+        js += b" " * (-len(js) % 4)
+        return (struct.pack("<4sII", b"glTF", 2, 20 + len(js) + (8 + len(blob) if blob else 0))
+                + struct.pack("<I4s", len(js), b"JSON") + js + (struct.pack("<I4s", len(blob), b"BIN\0") + blob
+                                                                if blob else b""))
+
+    cases = {"bomb": (_bomb_glb(), "triangles"),
+             "uri": (glb({"asset": {"version": "2.0"}, "buffers": [{"uri": "x.bin", "byteLength": 4}]}), "external"),
+             "cycle": (glb({"asset": {"version": "2.0"}, "nodes": [{"children": [1]}, {"children": [0]}]}), "cycle"),
+             "sound": (glb({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{}]}), "")}
+    for name, (data, want) in cases.items():
+        (tmp_path / f"{name}.glb").write_bytes(data)
+        out = subprocess.run(["node", str(harness), str(tmp_path / f"{name}.glb")], capture_output=True, text=True,
+                             timeout=60)
+        assert out.returncode == 0, out.stderr
+        assert (want in out.stdout) if want else out.stdout.strip() == "", (name, out.stdout)

@@ -34,6 +34,7 @@ import numpy as np
 from ..errors import EnvironmentFailure
 from ..policy import CHECK_MEMORY_CEILING, MESH_BOX_PAIRS_MAX, MESH_VOLUME_REL_TOL, STEP_VOLUME_REL_TOL
 from . import formats
+from .pages import check_html_file
 from .result import Check
 from .safe_read import Refused, opened, read_bytes, sha256_and_size, walk
 
@@ -354,6 +355,7 @@ CHECKERS = {
     ".3mf": check_mesh_file,
     ".dxf": check_dxf_file,
     ".glb": check_glb_file,
+    ".html": check_html_file,
 }
 
 

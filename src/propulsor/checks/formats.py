@@ -10,8 +10,9 @@ beyond the limits of policy.py:
   (declared sizes can lie);
 * GLB: the header's length is the file's, each chunk lies within the file, the JSON chunk is bounded
   and parses, buffers, views and accessors lie within the binary chunk and are not too many, no
-  external URIs, and the nodes form a forest (children in range, each node reached once from the
-  roots);
+  external URIs, the nodes form a forest (children in range, each node reached once from the
+  roots), and the triangles its nodes draw (a mesh counted for every node instancing it) are within
+  policy.GLB_DRAWN_TRIANGLES_MAX, its primitives within policy.GLB_ITEMS_MAX: the 3D view's own budget;
 * DXF: coordinates, radii and arc radii finite and within policy.DXF_COORD_MAX_MM, and the points
   the arcs flatten to within policy.DXF_POINTS_MAX, before anything is flattened.
 """
@@ -24,8 +25,8 @@ import math
 import struct
 import zipfile
 
-from ..policy import (CHORD_TOL_MM, DXF_COORD_MAX_MM, DXF_POINTS_MAX, GLB_ITEMS_MAX, GLB_JSON_MAX_BYTES,
-                      READ_LIMIT_BYTES, THREEMF_MEMBERS_MAX, THREEMF_UNZIPPED_MAX_BYTES)
+from ..policy import (CHORD_TOL_MM, DXF_COORD_MAX_MM, DXF_POINTS_MAX, GLB_DRAWN_TRIANGLES_MAX, GLB_ITEMS_MAX,
+                      GLB_JSON_MAX_BYTES, READ_LIMIT_BYTES, THREEMF_MEMBERS_MAX, THREEMF_UNZIPPED_MAX_BYTES)
 from .safe_read import Refused
 
 
@@ -138,7 +139,41 @@ def check_glb(data: bytes) -> dict:
     bin_len = next((m for kind, _, m in chunks[1:] if kind == _BIN), 0)
     _check_buffers(gltf, bin_len, len(data))
     _check_nodes(gltf)
+    drawn_triangles(gltf)
     return gltf
+
+
+def drawn_triangles(gltf: dict) -> int:
+    """Triangles the 3D view draws of a sound GLB's JSON (after :func:`check_glb`'s node checks): each node's
+    mesh once per node (a mesh instanced by many nodes counts each time), a primitive's triangles from its
+    index count (else its vertex count; strips and fans n - 2; lines and points one per item).  Refused
+    past policy.GLB_DRAWN_TRIANGLES_MAX, and past policy.GLB_ITEMS_MAX primitives in all its meshes."""
+    meshes, accessors = _list(gltf, "meshes"), _list(gltf, "accessors")
+    per_mesh, primitives = [], 0
+    for k, mesh in enumerate(meshes):
+        prims = mesh.get("primitives", [])
+        if not isinstance(prims, list) or not all(isinstance(p, dict) for p in prims):
+            raise Refused(f"meshes[{k}].primitives is not a list of objects")
+        primitives += len(prims)
+        if primitives > GLB_ITEMS_MAX:
+            raise Refused(f"more than {GLB_ITEMS_MAX} primitives in its meshes")
+        n = 0
+        for j, prim in enumerate(prims):
+            attrs = prim.get("attributes", {})
+            if not isinstance(attrs, dict):
+                raise Refused(f"meshes[{k}].primitives[{j}].attributes is not an object")
+            source = prim["indices"] if "indices" in prim else attrs.get("POSITION")
+            if source is None:
+                continue
+            count = _size(accessors[_index(source, len(accessors), f"meshes[{k}].primitives[{j}] accessor")]
+                          .get("count"), f"meshes[{k}].primitives[{j}] count")
+            mode = prim.get("mode", 4)
+            n += count // 3 if mode == 4 else max(count - 2, 0) if mode in (5, 6) else count
+        per_mesh.append(n)
+    total = sum(per_mesh[node["mesh"]] for node in _list(gltf, "nodes") if "mesh" in node)
+    if total > GLB_DRAWN_TRIANGLES_MAX:
+        raise Refused(f"its nodes draw {total} triangles, more than the {GLB_DRAWN_TRIANGLES_MAX} the 3D view draws")
+    return total
 
 
 def _check_buffers(gltf: dict, bin_len: int, file_len: int) -> None:
