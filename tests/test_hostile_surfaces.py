@@ -626,3 +626,107 @@ def test_the_viewer_refuses_what_check_refuses(tmp_path):
                              timeout=60)
         assert out.returncode == 0, out.stderr
         assert (want in out.stdout) if want else out.stdout.strip() == "", (name, out.stdout)
+
+
+# -- Numbers: one parser for every number that enters ------------------------------------------------
+
+@pytest.mark.parametrize("value, named", [
+    ("1" + "0" * 400, "load_N"),       # an integer beyond any float
+    ("1" + "0" * 5000, "part file"),   # past Python's 4300-digit conversion limit
+    ("5e-324", "load_N"),              # subnormal
+    ("1e308", "load_N"),
+    ("nan", "load_N"),
+])
+def test_a_part_file_number_out_of_the_computable_range_is_one_line(tmp_path, value, named):
+    part = tmp_path / "p.toml"
+    part.write_text(f'type = "road_wheel"\nload_N = {value}\n')
+    r = _cli("build", str(part), "--dry-run", timeout=120)
+    assert r.returncode == 2, r.stderr
+    assert _one_error_line(r.stderr).startswith(f"propulsor: error: {named}")
+
+
+@pytest.mark.parametrize("option, value", [
+    ("--scale", "١٨٠"), ("--scale", "1_8_0"), ("--scale", "inf"), ("--bed", "١٨٠x180x180"), ("--bed", "1_8_0x180x180"),
+    ("--set", "backlash_mm=٠.٣"), ("--set", "backlash_mm=0_3"), ("--set", "backlash_mm=1e999"),
+    ("--set", "a=" + "[" * 3000 + "]" * 3000), ("--set", "backlash_mm=" + "9" * 5000),
+])
+def test_a_command_line_number_is_plain_ascii_and_finite(option, value):
+    r = _cli("print", str(WHEEL_PART), f"{option}={value}", "--slice", "no", "--out", "/nonexistent/kit", timeout=120)
+    assert r.returncode == 2, r.stderr
+    line = _one_error_line(r.stderr)
+    assert option in line, line
+
+
+@pytest.mark.parametrize("option", ["--out", "--printer", "--scale", "--set"])
+def test_an_option_given_the_end_of_options_as_its_value_is_one_line(option):
+    r = _cli("print", str(WHEEL_PART), f"{option}=--", "--slice", "no", timeout=60)
+    assert r.returncode == 2 and option in _one_error_line(r.stderr), r.stderr
+
+
+@pytest.mark.parametrize("row, why", [
+    ("1_0.0,10.0", "plain digits"), ("١٠.٠,10.0", "plain digits"), ("1e308,10.0", "within"),
+    ("5e-324,10.0", "too small"), ('"' + "x" * 200_000 + '",1', "CSV"),
+])
+def test_a_law_table_cell_is_a_plain_finite_number(tmp_path, row, why):
+    from propulsor.errors import InputError
+    from propulsor.laws.table_law import parse_law_table
+
+    text = "driver_deg,driven_deg\n0.0,0.0\n" + row + "\n20.0,20.0\n"
+    with pytest.raises(InputError, match=why) as exc:
+        parse_law_table(text)
+    assert str(exc.value).startswith("law_file")
+
+
+def test_law_table_rows_closer_than_rounding_are_refused():
+    from propulsor.errors import InputError
+    from propulsor.laws.table_law import TableLaw
+
+    th = [0.0, 10.0, 10.0 + 1e-300, 20.0, 30.0, 40.0, 50.0, 60.0, 360.0]
+    ph = [0.0, 5.0, 5.0 + 1e-12, 10.0, 15.0, 20.0, 25.0, 30.0, 180.0]
+    with pytest.raises(InputError, match="strictly increasing"):
+        TableLaw(tuple(th), tuple(ph))
+
+
+def test_a_file_that_is_not_a_table_echoes_nothing_of_it(tmp_path):
+    from propulsor.errors import InputError
+    from propulsor.laws.pitch_curve_law import parse_pitch_curve
+    from propulsor.laws.table_law import parse_law_table
+
+    secret = "AWS_SECRET=hunter2\x00PATH=/usr/bin\x00"
+    for parse in (parse_law_table, parse_pitch_curve):
+        with pytest.raises(InputError) as exc:
+            parse(secret)
+        assert "hunter2" not in str(exc.value) and "AWS" not in str(exc.value)
+
+
+def test_the_api_takes_numpy_numbers_and_byte_paths_and_copies_lists():
+    import numpy as np
+
+    import propulsor
+
+    p = propulsor.part(os.fsencode(str(WHEEL_PART)), tyre_width_mm=np.float64(80.0), lightening_holes=np.int64(0))
+    assert p.params.tyre_width_mm == 80.0 and type(p.params.lightening_holes) is int
+    teeth = [36, 42, 48]
+    q = propulsor.part("polysector_gear", conditional_teeth=teeth)
+    teeth.append(54)
+    assert q.params.conditional_teeth == [36, 42, 48]
+    for bad in (np.bool_(True), np.array([1.0, 2.0]), 10 ** 400, 5e-324):
+        with pytest.raises(propulsor.InputError, match="load_N"):
+            propulsor.part("road_wheel", load_N=bad)
+
+
+@pytest.mark.parametrize("vary", [
+    "tyre_width_mm = { from = 70.0, to = 90.0, step = 5e-324 }",
+    "tyre_width_mm = { from = [70.0], to = 90.0, step = 10.0 }",
+    "tyre_width_mm = { from = 'a', to = 90.0, step = 10.0 }",
+    "tyre_width_mm = { from = true, to = 90.0, step = 10.0 }",
+    "tyre_width_mm = [70.0, 1" + "0" * 400 + "]",
+])
+def test_a_study_range_that_is_no_range_of_numbers_is_exit_2_before_any_work(tmp_path, vary, capsys):
+    from propulsor.cli import main
+
+    study = tmp_path / "s.toml"
+    study.write_text(ONE_VARIANT.replace("tyre_width_mm = [70.0]", vary))
+    assert main(["explore", str(study), "--out", str(tmp_path / "out"), "-q"]) == 2
+    assert "tyre_width_mm" in _one_error_line(capsys.readouterr().err)
+    assert not (tmp_path / "out").exists()

@@ -539,7 +539,11 @@ minimize = ["speed_ripple"]
             submitted.append((args[3]["driven_teeth"], priority))
             return key
 
-    monkeypatch.setattr(distributed, "as_completed", lambda futures, loop=None: [])
+    class Finished:  # as_completed of no future: nothing left to wait for
+        def is_empty(self):
+            return True
+
+    monkeypatch.setattr(distributed, "as_completed", lambda futures, loop=None: Finished())
     todo = [(i, v, f"k{i}") for i, v in enumerate(study.variants, 1)]
     engine._evaluate_all(Client(), study, tmp_path, todo, None, None)
     assert submitted == [(96, 3), (80, 2), (64, 1)]

@@ -63,13 +63,27 @@ def part(source: str | Path, /, **overrides: Any) -> "Part":
 
     if isinstance(source, str) and source in part_type_names():
         return Part(source, parameters(source, **overrides), None)
-    path = Path(source)
+    path = as_path(source, "source")
     if path.suffix != ".toml" and not path.exists():
         raise InputError("source", str(source), f"must be a part type ({', '.join(part_type_names())}) or a part "
                          "file (.toml)")
     type_name, mapping = read_part_file(path)
     pt = get_part_type(type_name)
     return Part(type_name, load_params(pt.params_cls, {**mapping, **overrides}), path)
+
+
+def as_path(value, key: str) -> Path:
+    """A path given as text, bytes (the file system's own encoding) or os.PathLike; InputError naming `key`
+    for anything else or an empty one."""
+    import os
+
+    try:
+        path = Path(os.fsdecode(bytes(value)) if isinstance(value, (bytes, bytearray)) else os.fspath(value))
+    except (TypeError, ValueError):
+        raise InputError(key, value, "must be a path (text, bytes or a pathlib.Path)") from None
+    if not str(path) or str(path) == ".":
+        raise InputError(key, value, "must name a file or folder")
+    return path
 
 
 @dataclasses.dataclass(frozen=True)
@@ -220,7 +234,7 @@ class Part:
 
         progress = Progress(enabled=False)
         keep = files_read(self.params, self.source) if self.source else ()
-        target = of.vet_target(Path(out), force=force, keep=keep)
+        target = of.vet_target(as_path(out, "out"), force=force, keep=keep)
         failures: list[str] = []
 
         def produce(tmp: Path):

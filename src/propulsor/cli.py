@@ -87,12 +87,14 @@ def cmd_build(args) -> int:
 
 def _scale_arg(text: str) -> float | None:
     """'auto' → None; '3', '1:3' → 3.0 (a reduction 1:S); InputError otherwise."""
+    from .numbers import parse
+
     if text == "auto":
         return None
     try:
-        S = float(text.split(":", 1)[1] if text.startswith("1:") else text)
-    except ValueError:
-        raise InputError("--scale", text, "must be auto, S or 1:S with S >= 1 (e.g. 1:2.5)") from None
+        S = float(parse(text.split(":", 1)[1] if text.startswith("1:") else text, "--scale"))
+    except InputError:
+        raise InputError("--scale", text, "must be auto, S or 1:S with S >= 1 in plain digits (e.g. 1:2.5)") from None
     if not (S >= 1.0 and S <= 1000.0):
         raise InputError("--scale", text, "S must be within 1 ... 1000 (a reduction 1:S)")
     return S
@@ -121,10 +123,20 @@ def _settings(pairs) -> dict:
             raise InputError("--set", item, "must be KEY=VALUE, e.g. backlash_mm=0.35")
         if any(ord(c) < 32 or ord(c) == 127 for c in item):
             raise InputError("--set", item, "must be one KEY=VALUE on one line (no newline or control character)")
+        from .numbers import parse
+
+        if value.strip()[:1].isdigit() or value.strip()[:1] in ("+", "-", "."):  # a number: the one parser
+            out[key.strip()] = parse(value, f"--set {key.strip()}")
+            continue
         try:
             parsed = tomllib.loads(f"v = {value.strip()}")
-        except tomllib.TOMLDecodeError:
+        except RecursionError:
+            raise InputError("--set", item[:40], "nests arrays or tables too deeply") from None
+        except ValueError:  # not TOML: a word, taken as text
             parsed = {"v": value.strip()}
+        from .numbers import nesting
+
+        nesting(parsed["v"], f"--set {key.strip()}", 2)
         out[key.strip()] = parsed["v"]
     return out
 
@@ -359,6 +371,21 @@ def build_parser() -> argparse.ArgumentParser:
     return p
 
 
+#: the options that take a list (all others take one text)
+_LISTS = {"part_files": str, "set": str}
+
+
+def _valueless(args) -> str | None:
+    """The option whose value argparse turned into a list (``--out=--``: it drops the "--"), or None."""
+    for dest, value in vars(args).items():
+        if dest in _LISTS:
+            if isinstance(value, list) and not all(isinstance(v, str) for v in value):
+                return f"--{dest.replace('_', '-')}"
+        elif isinstance(value, list):
+            return f"--{dest.replace('_', '-')}"
+    return None
+
+
 def main(argv=None) -> int:
     """Run one command; SIGINT and SIGTERM end it with 130 / 143 and one line."""
     in_main_thread = threading.current_thread() is threading.main_thread()
@@ -376,6 +403,10 @@ def main(argv=None) -> int:
             args = parser.parse_args(argv)
         except SystemExit as exc:  # argparse uses 2 for usage errors, which matches bad input
             return int(exc.code or 0)
+        bad = _valueless(args)
+        if bad is not None:
+            return fail_input(InputError(bad, "--", "needs a value ('--' ends the options; write ./-- for a file "
+                                         "named --)"))
         try:
             os.getcwd()
         except OSError as exc:

@@ -27,8 +27,11 @@ def explore(study: str | Path, out: str | Path | None = None, *, scheduler: str 
     whole study (as a build's output is): `wait` False refuses a folder in use instead of waiting."""
     from .engine import run
 
+    from ..api import as_path
+
+    study = as_path(study, "study")
     spec = load_study(study)
-    folder = Path(out) if out is not None else Path("output") / Path(study).stem
+    folder = as_path(out, "out") if out is not None else Path("output") / study.stem
     return run(spec, folder, scheduler=scheduler, workers=workers, resume=resume,
                progress=progress or (lambda msg: None), build_best=build_best, wait=wait)
 

@@ -150,11 +150,15 @@ def _values_of(name: str, spec, fld, sampling: bool) -> list | tuple:
     integer = fld[1] is int
     if sampling:
         return (lo, hi, integer)
-    step = spec["step"]
-    if isinstance(step, bool) or not isinstance(step, (int, float)) or not step > 0 or not math.isfinite(step):
+    from ..numbers import number
+
+    step = number(spec["step"], f"{where}.step")
+    if not step > 0:
         raise InputError(f"{where}.step", step, "must be a number > 0")
     if integer and not isinstance(step, int):
         raise InputError(f"{where}.step", step, "must be a whole number (the parameter is whole)")
+    if (hi - lo) / step > MAX_VARIANTS:  # before counting: a step of 5e-324 names more values than a float holds
+        raise InputError(where, spec, f"names more than {MAX_VARIANTS} values")
     n = int(math.floor((hi - lo) / step + 1e-9)) + 1
     if n > MAX_VARIANTS:
         raise InputError(where, spec, f"names more than {MAX_VARIANTS} values")
@@ -231,10 +235,18 @@ def load_study(path: str | Path) -> Study:
         raise InputError("STUDY", str(path), str(exc)) from None
     except OSError as exc:
         raise InputError("STUDY", str(path), f"cannot be read ({exc.strerror or exc})") from None
+    from ..numbers import nesting
+    from ..params import toml_error
+
     try:
         doc = tomllib.loads(raw.decode("utf-8"))
-    except (UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
-        raise InputError("STUDY", str(path), f"is not valid TOML: {str(exc).splitlines()[0]}") from None
+    except UnicodeDecodeError as exc:
+        raise InputError("STUDY", str(path), f"is not UTF-8 ({exc.reason} at byte {exc.start})") from None
+    except ValueError as exc:  # TOMLDecodeError, or an integer of more than 4 300 digits
+        raise InputError("STUDY", str(path), toml_error(exc)) from None
+    except RecursionError:
+        raise InputError("STUDY", str(path), "nests arrays or tables too deeply") from None
+    nesting(doc, "STUDY", 4)
     for key, value in doc.items():
         if key not in _KEYS:
             raise InputError(key, value, "unknown section of a study file (study, vary, objectives)")

@@ -32,13 +32,13 @@ def parse_cell(text: str):
         return None
     if text in ("true", "false"):
         return text == "true"
-    try:
-        return int(text)
-    except ValueError:
-        pass
-    try:
+    if text in ("nan", "inf", "-inf"):  # a float the table wrote (results.cell: repr)
         return float(text)
-    except ValueError:
+    from ..numbers import parse
+
+    try:
+        return parse(text, "cell")  # plain ASCII digits only: "١٨٠" or "1_8_0" stay text
+    except InputError:
         return text
 
 
