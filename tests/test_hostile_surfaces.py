@@ -730,3 +730,74 @@ def test_a_study_range_that_is_no_range_of_numbers_is_exit_2_before_any_work(tmp
     assert main(["explore", str(study), "--out", str(tmp_path / "out"), "-q"]) == 2
     assert "tyre_width_mm" in _one_error_line(capsys.readouterr().err)
     assert not (tmp_path / "out").exists()
+
+
+# -- Studies ---------------------------------------------------------------------------------------
+
+def test_a_design_depth_variant_of_a_law_without_a_hub_is_a_row_of_values():
+    from propulsor.params import read_part_file
+    from propulsor.study.evaluate import evaluate
+
+    part = ROOT / "parts" / "ncg_elliptical.toml"
+    _, base = read_part_file(part)
+    row = evaluate("noncircular_pair", base, str(part), {}, "design", ("center_distance_mm", "ratio_min", "eccentricity"))
+    assert row["status"] == "ok", row["reason"]
+    assert round(row["values"]["center_distance_mm"], 4) == 76.7573 and row["values"]["eccentricity"] == 0.3
+
+
+def test_a_tex_like_title_or_name_is_drawn_as_written(tmp_path):
+    from propulsor.study import load_study
+    from propulsor.study.page import write_page
+    from propulsor.study.results import plot_front, ranked
+
+    study_file = tmp_path / "s.toml"
+    study_file.write_text(ONE_VARIANT.replace("[study]", '[study]\ntitle = "$\\\\x$ and $\\\\frac{a}{$"'))
+    study = load_study(study_file)
+    rows = [{"variant": k, "key": f"k{k}", "tyre_width_mm": 70.0 + k, "T_at_V_max_C": 100.0 + k, "status": "ok"}
+            for k in (1, 2)]
+    rank = ranked(study, rows)
+    assert plot_front(tmp_path, study, rows, rank)
+    page = write_page(tmp_path, study, rows, rank).read_text()
+    assert "Content-Security-Policy" in page and "$\\x$" in page
+
+
+def test_a_local_cluster_leaves_no_scratch_space_even_when_interrupted(tmp_path):
+    import signal
+
+    study = tmp_path / "s.toml"
+    study.write_text(ONE_VARIANT.replace("tyre_width_mm = [70.0]", "tyre_width_mm = [70.0, 75.0, 80.0, 85.0, 90.0]"))
+    scratch = tmp_path / "tmp"
+    scratch.mkdir()
+    env = dict(os.environ, TMPDIR=str(scratch))
+    out = tmp_path / "out"
+    p = _popen("explore", str(study), "--out", str(out), "--workers", "1", env=env)
+    t0 = time.monotonic()
+    while p.poll() is None and time.monotonic() - t0 < 240:
+        if (out / "results.csv").is_file() and len((out / "results.csv").read_text().splitlines()) >= 2:
+            break
+        time.sleep(0.2)
+    p.send_signal(signal.SIGINT)
+    _, err = p.communicate(timeout=120)
+    assert p.returncode == 130, err
+    time.sleep(1.0)
+    left = [q for q in scratch.rglob("*") if "dirlock" in q.name or q.name.startswith(("dask", "propulsor-dask"))]
+    assert not left, left
+
+
+@pytest.mark.parametrize("what", ["fifo", "link out", "not finished"])
+def test_the_gallery_says_why_it_does_not_show_a_study(tmp_path, what):
+    from propulsor.export.gallery import render_gallery
+
+    study = tmp_path / "st"
+    study.mkdir()
+    if what == "fifo":
+        os.mkfifo(study / "study.json")
+        (study / "study.html").write_text("<p>x</p>")
+    elif what == "link out":
+        (tmp_path / "elsewhere.json").write_text("{}")
+        (study / "study.json").symlink_to(tmp_path / "elsewhere.json")
+        (study / "study.html").write_text("<p>x</p>")
+    else:
+        (study / "study.json").write_text('{"title": "t"}')
+    page = render_gallery(tmp_path)
+    assert "st: " in page and ("not readable" in page or "no study.html yet" in page), what

@@ -61,8 +61,17 @@ def connect(scheduler: str | None, workers: int | None, worker_wait: float | Non
             client.close()
             raise
         return client, None
+    import shutil
+    import tempfile
+
     n = workers or os.cpu_count() or 1
-    cluster = local_cluster(n)
+    scratch = tempfile.mkdtemp(prefix="propulsor-dask-")
+    try:
+        cluster = local_cluster(n, scratch)
+    except BaseException:
+        shutil.rmtree(scratch, ignore_errors=True)
+        raise
+    cluster.propulsor_scratch = scratch  # removed when the study lets the cluster go
     return Client(cluster, set_as_default=False), cluster
 
 
@@ -86,15 +95,18 @@ WORKER_CONFIG = {
 }
 
 
-def local_cluster(n: int):
+def local_cluster(n: int, directory: str | None = None):
     """A LocalCluster of `n` worker processes of one thread each, with :data:`WORKER_CONFIG`; its HTTP
-    server on any free port of 127.0.0.1."""
+    server on any free port of 127.0.0.1; the workers' scratch space (their ``worker-*.dirlock`` files) in
+    `directory` when given (the engine's own temporary folder, removed with the cluster even on Ctrl-C)."""
     import dask
     from distributed import LocalCluster
 
-    with dask.config.set(WORKER_CONFIG):
+    extra = {"local_directory": directory} if directory else {}
+    config = {**WORKER_CONFIG, "temporary-directory": directory} if directory else WORKER_CONFIG
+    with dask.config.set(config):
         return LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address="127.0.0.1:0",
-                            silence_logs=logging.CRITICAL)
+                            silence_logs=logging.CRITICAL, **extra)
 
 
 def vet_folder(out: Path, build_best: int = 0) -> None:
@@ -227,17 +239,31 @@ def _run(study: Study, out: Path, *, scheduler, workers, resume, progress, clien
         rows = sorted(table.rows, key=lambda r: int(r["variant"]))
         rank = ranked(study, rows)
         write_front(out, study, rank)
-        points = plot_front(out, study, rows, rank)
+        try:
+            points = plot_front(out, study, rows, rank)
+        except OSError:
+            raise
+        except Exception as exc:  # noqa: BLE001 - the picture is not worth the study: the page without it
+            (out / "pareto_front.png").unlink(missing_ok=True)
+            progress(f"the Pareto front's picture was not drawn ({type(exc).__name__}: {exc})")
+            points = None
         from .page import write_page
 
         write_page(out, study, rows, rank, points=points)
         write_marker(out, study, rows, rank)
         return Outcome(rows, rank, len(todo), seconds, n_workers, out)
+    except OSError as exc:  # a write refused without a name (a full disk): the study's folder
+        if exc.filename is None:
+            exc.filename = str(out)
+        raise
     finally:
         if own:
             client.close()
             if cluster is not None:
                 cluster.close()
+                import shutil
+
+                shutil.rmtree(getattr(cluster, "propulsor_scratch", ""), ignore_errors=True)
 
 
 def expected_seconds(study: Study, values: dict) -> float:
