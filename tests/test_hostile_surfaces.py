@@ -801,3 +801,40 @@ def test_the_gallery_says_why_it_does_not_show_a_study(tmp_path, what):
         (study / "study.json").write_text('{"title": "t"}')
     page = render_gallery(tmp_path)
     assert "st: " in page and ("not readable" in page or "no study.html yet" in page), what
+
+
+# -- check ---------------------------------------------------------------------------------------------
+
+def test_a_glb_of_hundreds_of_thousands_of_primitives_is_invalid_not_a_memory_error(tmp_path):
+    import json
+    import struct
+
+    blob = bytes(36)
+    prims = [{"attributes": {"POSITION": 0}}] * 330_000
+    doc = {"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+           "meshes": [{"primitives": prims}],
+           "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
+           "bufferViews": [{"buffer": 0, "byteLength": 36}], "buffers": [{"byteLength": 36}]}
+    js = json.dumps(doc).encode()
+    js += b" " * (-len(js) % 4)
+    glb = (struct.pack("<4sII", b"glTF", 2, 20 + len(js) + 8 + len(blob)) + struct.pack("<I4s", len(js), b"JSON")
+           + js + struct.pack("<I4s", len(blob), b"BIN\0") + blob)
+    (tmp_path / "many.glb").write_bytes(glb)
+    r = _cli("check", str(tmp_path / "many.glb"), timeout=300)
+    assert r.returncode == 1 and "Traceback" not in r.stderr + r.stdout, r.stderr
+    assert "primitives" in r.stdout, r.stdout
+
+
+def test_a_dxf_that_needs_too_much_memory_says_out_of_memory(tmp_path, monkeypatch):
+    import ezdxf
+
+    from propulsor.checks.files import check_file
+
+    (tmp_path / "a.dxf").write_text("0\nEOF\n")
+
+    def no_memory(*a, **k):
+        raise MemoryError()
+
+    monkeypatch.setattr(ezdxf, "readfile", no_memory)
+    (c,) = check_file(tmp_path / "a.dxf")
+    assert not c.passed and c.message.startswith("out of memory"), c.message
