@@ -838,3 +838,21 @@ def test_a_dxf_that_needs_too_much_memory_says_out_of_memory(tmp_path, monkeypat
     monkeypatch.setattr(ezdxf, "readfile", no_memory)
     (c,) = check_file(tmp_path / "a.dxf")
     assert not c.passed and c.message.startswith("out of memory"), c.message
+
+
+def test_a_design_depth_objective_the_part_does_not_compute_is_refused_up_front(tmp_path, capsys):
+    from propulsor.cli import main
+
+    study = tmp_path / "s.toml"
+    study.write_text(f"""
+[study]
+part = "{ROOT / 'parts' / 'ncg_elliptical.toml'}"
+depth = "design"
+[vary]
+face_width_mm = [15.0]
+[objectives]
+minimize = ["speed_ripple"]
+""")
+    assert main(["explore", str(study), "--out", str(tmp_path / "out"), "-q"]) == 2
+    line = _one_error_line(capsys.readouterr().err)
+    assert "objectives.minimize = 'speed_ripple'" in line and "not computed at depth design" in line, line

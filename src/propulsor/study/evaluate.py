@@ -203,8 +203,8 @@ def _evaluate(part_type, base, source, values, depth, wanted, build_dir) -> dict
         missing = [n for n in wanted if n not in derived]
         if missing:
             row["status"] = "error"
-            row["reason"] = f"{missing[0]}: not computed at depth {depth}" + (
-                " (depth build computes it)" if depth != "build" else "")
+            row["reason"] = f"{missing[0]}: not computed at depth {depth} for this variant" + (
+                " (a deeper depth may compute it)" if depth != "build" else "")
     except InputError as exc:
         row["status"], row["reason"] = "input error", str(exc)
     except Exception as exc:  # the variant's own failure is a row, never the end of the study

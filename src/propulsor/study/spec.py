@@ -320,6 +320,15 @@ def load_study(path: str | Path) -> Study:
                 base_values = _base_design_names(type_name, base, part_file)
             if n not in base_values:
                 raise InputError(f"objectives.{where}", n, f"is not a derived value of a {type_name} manifest")
+    if depth == "design":  # every name must be one the design gives (the base part's, as each variant's)
+        if base_values is None:
+            base_values = _base_design_names(type_name, base, part_file)
+        for where, names in (("minimize", minimize), ("maximize", maximize), ("record", record),
+                             ("require", tuple(r.name for r in require))):
+            for n in names:
+                if n != ALL_CHECKS and n not in base_values:
+                    raise InputError(f"objectives.{where}", n, f"is not computed at depth design for this {type_name} "
+                                     f"(its design gives {len(base_values)} values); depth proof or build may give it")
     if not minimize and not maximize:
         raise InputError("objectives", obj, "must name at least one value to minimize or maximize")
     return Study(path, title, part_file, type_name, base, depth, varied, variants, minimize, maximize, require, record)
