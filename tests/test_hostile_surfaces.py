@@ -856,3 +856,29 @@ minimize = ["speed_ripple"]
     assert main(["explore", str(study), "--out", str(tmp_path / "out"), "-q"]) == 2
     line = _one_error_line(capsys.readouterr().err)
     assert "objectives.minimize = 'speed_ripple'" in line and "not computed at depth design" in line, line
+
+
+def test_part_write_from_two_threads_builds_both_and_leaves_stderr_alone(tmp_path):
+    import threading
+
+    import propulsor
+
+    part = tmp_path / "wheel.toml"
+    part.write_text(SMALL_WHEEL)
+    saved = sys.stderr
+    errors, outs = [], []
+
+    def write(k):
+        try:
+            outs.append(propulsor.part(part).write(tmp_path / f"out{k}"))
+        except BaseException as exc:  # noqa: BLE001
+            errors.append(exc)
+
+    threads = [threading.Thread(target=write, args=(k,)) for k in range(2)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join(timeout=600)
+    assert not errors, errors
+    assert sys.stderr is saved
+    assert all((o / "manifest.json").is_file() for o in outs) and len(outs) == 2

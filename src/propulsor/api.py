@@ -27,6 +27,7 @@ import dataclasses
 import inspect
 import shutil
 import tempfile
+import threading
 from functools import cached_property
 from pathlib import Path
 from typing import Any
@@ -86,6 +87,12 @@ def as_path(value, key: str) -> Path:
     return path
 
 
+#: one build at a time in a process: a build's worker pools, its clean-up (which stops every worker of the
+#: process) and its redirection of sys.stderr are the process's, so builds from several threads run in turn
+#: (each would take the cores anyway); re-entrant, as a write may run the design first
+_BUILDING = threading.RLock()
+
+
 @dataclasses.dataclass(frozen=True)
 class Build:
     """What one real build of a part made (in memory; its files went to a temporary folder)."""
@@ -137,9 +144,10 @@ class Part:
         fn = self._pt.design
         if fn is None:
             raise InputError("design", self.type, "this part type has no separate design")
-        if "source" in inspect.signature(fn).parameters:
-            return design_of(self.params, fn, self.source)
-        return design_of(self.params, fn)
+        with _BUILDING:
+            if "source" in inspect.signature(fn).parameters:
+                return design_of(self.params, fn, self.source)
+            return design_of(self.params, fn)
 
     @cached_property
     def build(self) -> Build:
@@ -150,7 +158,7 @@ class Part:
 
         folder = Path(tempfile.mkdtemp(prefix="propulsor-api-"))
         try:
-            with writing_into(folder):
+            with _BUILDING, writing_into(folder):
                 failures, _, w = produce_build(self._pt, self.params, self.source, folder, Progress(enabled=False))
         finally:
             shutil.rmtree(folder, ignore_errors=True)
@@ -180,12 +188,13 @@ class Part:
         if not (isinstance(pipeline, Pipeline) and pipeline.proves_alone):
             b = self.build
             return Proof(b.failures, b.checks, b.derived, True)
-        w = ProofWriter(self.type, self.params, progress=Progress(enabled=False), source=self.source)
-        try:
-            pipeline.prove(self.params, w)
-            failures = w.finish()
-        finally:
-            w.close()
+        with _BUILDING:
+            w = ProofWriter(self.type, self.params, progress=Progress(enabled=False), source=self.source)
+            try:
+                pipeline.prove(self.params, w)
+                failures = w.finish()
+            finally:
+                w.close()
         return Proof(tuple(failures), tuple(w.checks), dict(w.derived), False)
 
     def prove(self, raise_on_failure: bool = False, depth: str = "build") -> list:
@@ -251,7 +260,7 @@ class Part:
         import sys
 
         err = io.StringIO()
-        with contextlib.redirect_stderr(err):
+        with _BUILDING, contextlib.redirect_stderr(err):
             code = into_output(args, target, keep, produce, progress)
         lines = [ln.removeprefix("propulsor: error: ") for ln in err.getvalue().splitlines() if ln.strip()]
         if code == 2:
