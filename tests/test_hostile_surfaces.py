@@ -882,3 +882,16 @@ def test_part_write_from_two_threads_builds_both_and_leaves_stderr_alone(tmp_pat
     assert not errors, errors
     assert sys.stderr is saved
     assert all((o / "manifest.json").is_file() for o in outs) and len(outs) == 2
+
+
+@pytest.mark.parametrize("out", ["long", "not utf-8"])
+def test_a_study_out_that_no_writer_can_use_is_refused_before_any_cluster(tmp_path, out):
+    study = tmp_path / "s.toml"
+    study.write_text(ONE_VARIANT)
+    target = str(tmp_path) + ("/" + "x" * 200) * 25 if out == "long" else os.fsdecode(bytes(tmp_path) + b"/o\xff")
+    t0 = time.monotonic()
+    r = subprocess.run([sys.executable, "-m", "propulsor.cli", "explore", str(study), "--out", target, "-q"],
+                       capture_output=True, cwd=ROOT, timeout=120)
+    err = r.stderr.decode("utf-8", "replace")
+    assert r.returncode == 2, err
+    assert "--out" in _one_error_line(err) and time.monotonic() - t0 < 20
