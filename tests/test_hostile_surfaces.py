@@ -895,3 +895,24 @@ def test_a_study_out_that_no_writer_can_use_is_refused_before_any_cluster(tmp_pa
     err = r.stderr.decode("utf-8", "replace")
     assert r.returncode == 2, err
     assert "--out" in _one_error_line(err) and time.monotonic() - t0 < 20
+
+
+def test_a_study_on_a_full_disk_is_exit_3_naming_its_folder_and_leaves_no_empty_page(tmp_path):
+    if os.geteuid() != 0:
+        pytest.skip("mounting a small tmpfs needs root")
+    mnt = tmp_path / "disk"
+    mnt.mkdir()
+    r = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=24k", "tmpfs", str(mnt)], capture_output=True, text=True)
+    if r.returncode != 0:
+        pytest.skip(f"cannot mount a tmpfs here: {r.stderr.strip()}")
+    try:
+        study = tmp_path / "s.toml"
+        study.write_text(ONE_VARIANT.replace("tyre_width_mm = [70.0]", "tyre_width_mm = [70.0, 80.0]"))
+        r = _cli("explore", str(study), "--out", str(mnt / "st"), "--workers", "1", "-q", timeout=300)
+        assert r.returncode == 3, r.stderr
+        line = _one_error_line(r.stderr)
+        assert "[ENOSPC]" in line and str(mnt) in line and "?:" not in line, line
+        page = mnt / "st" / "study.html"
+        assert not page.exists() or page.stat().st_size > 0
+    finally:
+        subprocess.run(["umount", "-l", str(mnt)], capture_output=True)
