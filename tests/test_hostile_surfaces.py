@@ -916,3 +916,36 @@ def test_a_study_on_a_full_disk_is_exit_3_naming_its_folder_and_leaves_no_empty_
         assert not page.exists() or page.stat().st_size > 0
     finally:
         subprocess.run(["umount", "-l", str(mnt)], capture_output=True)
+
+
+# -- Messages that name what is at fault -------------------------------------------------------------
+
+def test_a_fourier_law_refusal_names_the_series_at_fault():
+    from propulsor.errors import InputError
+    from propulsor.laws.ratio_laws import FourierLaw
+
+    with pytest.raises(InputError) as exc:
+        FourierLaw(1, (0.01,), (2.0,))  # the sine terms turn the driven wheel back
+    assert exc.value.parameter == "fourier_sin", exc.value
+    with pytest.raises(InputError) as exc:
+        FourierLaw(1, (2.0,), (0.01,))
+    assert exc.value.parameter == "fourier_cos", exc.value
+
+
+def test_a_pitch_curve_refusal_names_no_row_the_file_does_not_have(monkeypatch):
+    import math
+
+    from propulsor.errors import InputError
+    from propulsor.laws import pitch_curve_law
+
+    def refuse(self, *a, **k):  # the law of the conjugate wheel refused at one of its own samples
+        raise InputError("pitch_curve_file row 1324 driven_deg", 123.4, "the spline through the rows has a ratio "
+                         "U = -0.1 <= 0 near it: more rows or a smoother table")
+
+    monkeypatch.setattr(pitch_curve_law.TableLaw, "__init__", refuse)
+    angles = [5.0 * k for k in range(72)]
+    radii = [40.0 + 5.0 * math.cos(math.radians(a)) for a in angles]
+    with pytest.raises(InputError) as exc:
+        pitch_curve_law.PitchCurveLaw(angles, radii, 1)
+    assert exc.value.parameter == "pitch_curve_file" and "1324" not in str(exc.value) \
+        and "driven_deg" not in str(exc.value), exc.value
