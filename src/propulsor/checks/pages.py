@@ -41,11 +41,10 @@ _SCRIPT_END = re.compile(r"</script", re.IGNORECASE)
 @lru_cache(maxsize=1)
 def known_scripts() -> frozenset:
     """The CSP sources (sha256) of every script propulsor puts on a page."""
-    from ..export.html import script_hash
+    from ..export.html import TABLE_SORT_SCRIPT, script_hash
     from ..export.viewer_page import viewer_script
-    from ..study.page import SCRIPT
 
-    return frozenset({script_hash(viewer_script()), script_hash(SCRIPT)})
+    return frozenset({script_hash(viewer_script()), script_hash(TABLE_SORT_SCRIPT)})
 
 
 def _policy_problem(csp: str) -> str:

@@ -5,7 +5,7 @@ assembly, a data block of the same page: ``<script type="application/octet-strea
 class="propulsor-glb">`` holding the GLB's bytes in base64.  A script element of that type is data the
 browser never runs; the viewer decodes it, checks it (header, chunks, lists, no external URI, the nodes a
 forest, the triangles drawn within the budget) and hands it to three.js's loader.  The GLB is read here
-bounded and checked as ``propulsor check`` checks a GLB (checks.formats.check_glb) before a byte of it is
+bounded and checked as ``propulsor check`` checks a GLB (export/glb_check.py) before a byte of it is
 put on the page; a page carries at most policy.PAGE_MODEL_BYTES_MAX of them.  The page's one executable
 script is the vendored three.js (``web/three.min.js``, ``make viewer-lib``) followed by ours
 (``web/viewer.js``), inline, allowed by its sha256 alone: no file beside the page is ever loaded as a script,
@@ -57,19 +57,18 @@ DATA_CLASS = "propulsor-glb"
 
 def model_data(path) -> tuple[str | None, int, str]:
     """(the GLB's bytes in base64, their number, "") when the file at `path` is a GLB the viewer may draw —
-    a regular file within policy's GLB limit that checks.formats.check_glb accepts (sound, bounded, within
+    a regular file within policy's GLB limit that export.glb_check.check_glb accepts (sound, bounded, within
     the drawn-triangle budget) —, else (None, 0, why not)."""
     import base64
 
-    from ..checks.formats import check_glb
-    from ..checks.safe_read import Refused
     from ..policy import READ_LIMIT_BYTES
     from ..regular_file import read_regular
+    from .glb_check import check_glb
 
     try:
         data = read_regular(path, READ_LIMIT_BYTES["glb"])
         check_glb(data)
-    except (OSError, ValueError, Refused) as exc:
+    except (OSError, ValueError) as exc:  # glb_check.Refused and regular_file.NotRegular are ValueErrors
         return None, 0, str(getattr(exc, "strerror", None) or exc)
     return base64.b64encode(data).decode("ascii"), len(data), ""
 

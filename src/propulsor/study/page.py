@@ -7,27 +7,12 @@ from __future__ import annotations
 import html
 from pathlib import Path
 
-from ..export.html import page, write_atomically
+from ..export.html import TABLE_SORT_SCRIPT as SCRIPT, page, write_atomically
 from .results import FRONT_PNG, cell, columns
 from .spec import Study
 
 PAGE = "study.html"
 
-#: the page's one script (sorting the table); `propulsor check` knows it by its hash
-SCRIPT = """
-document.querySelectorAll('th').forEach(function (th, col) {
-  th.addEventListener('click', function () {
-    var body = th.closest('table').tBodies[0], rows = Array.prototype.slice.call(body.rows);
-    var dir = th.dataset.dir === 'asc' ? -1 : 1; th.dataset.dir = dir === 1 ? 'asc' : 'desc';
-    rows.sort(function (a, b) {
-      var x = a.cells[col].dataset.v, y = b.cells[col].dataset.v, nx = parseFloat(x), ny = parseFloat(y);
-      if (!isNaN(nx) && !isNaN(ny)) return dir * (nx - ny);
-      return dir * x.localeCompare(y);
-    });
-    rows.forEach(function (r) { body.appendChild(r); });
-  });
-});
-"""
 
 _STYLE = ("body{font-family:sans-serif;margin:1.5em}table{border-collapse:collapse;font-size:12px}"
           "th,td{border:1px solid #ccc;padding:2px 6px;text-align:right}th{cursor:pointer;background:#eee}"
