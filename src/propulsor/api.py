@@ -25,6 +25,7 @@ from __future__ import annotations
 import argparse
 import dataclasses
 import inspect
+import os
 import shutil
 import tempfile
 import threading
@@ -56,7 +57,7 @@ def parameters(part_type: str, /, **values: Any):
     return load_params(pt.params_cls, values)
 
 
-def part(source: str | Path, /, **overrides: Any) -> "Part":
+def part(source: "str | bytes | os.PathLike[str]", /, **overrides: Any) -> "Part":
     """A part from a part type name (its defaults) or a part file (``*.toml``), with `overrides` in place of
     the values there.  The parameters are validated at once (InputError naming the key)."""
     from .params import load_params, read_part_file
@@ -76,8 +77,6 @@ def part(source: str | Path, /, **overrides: Any) -> "Part":
 def as_path(value, key: str) -> Path:
     """A path given as text, bytes (the file system's own encoding) or os.PathLike; InputError naming `key`
     for anything else or an empty one."""
-    import os
-
     try:
         path = Path(os.fsdecode(bytes(value)) if isinstance(value, (bytes, bytearray)) else os.fspath(value))
     except (TypeError, ValueError):
@@ -229,7 +228,7 @@ class Part:
             asm.add(solid, name=str(comp), loc=loc, color=cq.Color(r / 255, g / 255, b / 255))
         return asm
 
-    def write(self, out: str | Path, *, force: bool = False, keep_failed: bool = False) -> Path:
+    def write(self, out: "str | bytes | os.PathLike[str]", *, force: bool = False, keep_failed: bool = False) -> Path:
         """Build into folder `out` exactly as ``propulsor build PART --out OUT`` does (the same files, the
         same bytes; the same folder rules, lock and atomic replacement).  Byte for byte as a build on its
         own is the first build of a process: after other builds in the same interpreter, OCCT's STEP
