@@ -626,3 +626,32 @@ def test_the_viewer_refuses_what_check_refuses(tmp_path):
                              timeout=60)
         assert out.returncode == 0, out.stderr
         assert (want in out.stdout) if want else out.stdout.strip() == "", (name, out.stdout)
+
+
+@pytest.mark.browser
+def test_the_viewer_in_a_browser_refuses_a_model_that_draws_too_much_and_runs_no_file_beside_it(tmp_path):
+    """A page whose model data block was swapped for the 9 999-node bomb, and a script beside it named as the
+    old twin: the view says why it draws nothing (no freeze), and nothing beside the page runs."""
+    import base64
+    import re
+
+    from cdp_browser import headless_page
+    from test_viewer_page import tiny_glb
+
+    from propulsor.export.html import write_report_html
+
+    (tmp_path / "asm.glb").write_bytes(tiny_glb())
+    (tmp_path / "report.md").write_text("# r\n\n## Inputs\n\nx\n", encoding="utf-8")
+    page = write_report_html(tmp_path / "report.md", [{"path": "asm.glb", "title": "asm"}])
+    text = re.sub(r'(class="propulsor-glb">)[^<]*', lambda m: m.group(1) + base64.b64encode(_bomb_glb()).decode(),
+                  page.read_text())
+    page.write_text(text.replace("</body>", '<script src="asm.glb.js"></script></body>'))
+    (tmp_path / "asm.glb.js").write_text("document.documentElement.dataset.pwned = '1';\n")
+    with headless_page() as b:
+        b.open(page.as_uri(), 1000)
+        state = b.evaluate("""(async () => { const f = document.querySelector('figure.viewer');
+            f.scrollIntoView({block: 'center'});
+            for (let i = 0; i < 400 && !['drawn', 'error'].includes(f.dataset.state); i++) await new Promise(r => setTimeout(r, 50));
+            return {state: f.dataset.state, text: f.querySelector('.status').textContent,
+                    pwned: document.documentElement.dataset.pwned || null}; })()""")
+    assert state["state"] == "error" and "triangles" in state["text"] and state["pwned"] is None, state
