@@ -22,7 +22,7 @@ ROOT = Path(__file__).resolve().parents[1]
 
 def main(folder: str = str(ROOT / "output")) -> int:
     from propulsor.export.gallery import built_parts, render_gallery
-    from propulsor.export.glb import write_glb, write_glb_script
+    from propulsor.export.glb import write_glb
     from propulsor.export.render import palette_colour, render_iso
 
     folder = Path(folder)
@@ -59,7 +59,7 @@ def main(folder: str = str(ROOT / "output")) -> int:
                 comps.append((node, node, M))
                 items.append((*parts_meshes[node], M, palette_colour(j)))
             t1 = time.process_time()  # only the writing counts (reading the GLB back is the bench's own)
-            write_glb_script(write_glb(tmp / f"a{k}.glb", model["title"], parts_meshes, comps))
+            write_glb(tmp / f"a{k}.glb", model["title"], parts_meshes, comps)
             render_iso(items, tmp / f"a{k}.png")
             t_asm += time.process_time() - t1
         print(f"{e['name']:24s} {len(meshes):7d} {t_pic:10.2f} {len(models):10d} {t_asm:13.2f}"

@@ -66,8 +66,10 @@ def test_every_assembly_has_a_glb_with_named_nodes_in_metres(out, manifest):
         assert 0.5 < scene.extents.max() < 1.0  # the wheel is ~630 mm across
         colours = {tuple(g.visual.material.baseColorFactor) for g in scene.geometry.values()}
         assert len(colours) == len(m["components"])  # a distinct colour per component
-        script = (out / m["script"]).read_text()  # the GLB's bytes for a page opened from disk
-        assert base64.b64decode(script.split('"')[1]) == (out / m["path"]).read_bytes()
+        assert "script" not in m and not (out / (m["path"] + ".js")).exists()  # no script twin: the pages carry it
+        block = re.search(r'<script type="application/octet-stream" id="glb-[0-9a-f]{16}" class="propulsor-glb">'
+                          r'([^<]*)</script>', (out / "report.html").read_text()).group(1)
+        assert base64.b64decode(block) == (out / m["path"]).read_bytes()  # the GLB's bytes for a page from disk
 
 
 def test_propulsor_check_validates_the_glb_and_catches_millimetres(out, manifest, tmp_path, monkeypatch):
@@ -115,7 +117,7 @@ def test_report_html_twin_has_the_reports_tables_and_links(out):
     assert {"tables/tyre_temperature.csv", "views/disc.png"} <= md_links
     # every link and image, and no other but the 3D view's model
     assert set(re.findall(r'(?:href|src)="([^"#]+)"', page)) == md_links | {"road_wheel_assembly.glb"}
-    assert "road_wheel_assembly.glb.js" in page.split("<h2>Inputs</h2>")[0]  # the 3D view before the tables
+    assert 'class="propulsor-glb"' in page.split("<h2>Inputs</h2>")[0]  # the 3D view before the tables
 
 
 def test_pictures_and_glb_are_deterministic(out, manifest, tmp_path):
@@ -141,7 +143,9 @@ def test_build_writes_the_gallery_beside_its_output(out, manifest):
     # labelled by the manifest's glossary (its meaning), with the unit and rounding of the gallery
     meaning = manifest["glossary"]["tyre_radius_mm"]["meaning"]
     assert (meaning, number(manifest["derived"]["tyre_radius_mm"]), "mm") in values
-    assert f"{out.name}/road_wheel_assembly.glb.js" in page
+    from propulsor.export.viewer_page import block_id
+
+    assert f'id="{block_id(out.name + "/road_wheel_assembly.glb")}"' in page
 
 
 def test_gallery_status_counts_and_a_foreign_index_is_left_alone(tmp_path):

@@ -66,10 +66,11 @@ def test_polysector_positions_and_full_size_animations(tmp_path):
     (tmp_path / "ps" / "anim").mkdir()
     Image.new("RGB", (640, 480)).save(tmp_path / "ps" / "anim" / "a.gif")
     models = []
+    from test_viewer_page import tiny_glb
+
     for k in range(1, 3):
-        for f in (f"assembly_{k}.glb", f"assembly_{k}.glb.js"):
-            (tmp_path / "ps" / f).write_text("x")
-        models.append({"path": f"assembly_{k}.glb", "script": f"assembly_{k}.glb.js", "title": f"assembly_{k}"})
+        (tmp_path / "ps" / f"assembly_{k}.glb").write_bytes(tiny_glb())
+        models.append({"path": f"assembly_{k}.glb", "title": f"assembly_{k}"})
     m = {"part": "polysector_gear", "files": [], "checks": [], "expected_failures": [],
          "derived": {"positions": [{"offset_mm": 0.0, "ratio_nominal": 1.1111111}, {"offset_mm": 18.0, "ratio_nominal": 0.8333333}]},
          "media": {"models": models, "animations": [{"path": "anim/a.gif", "title": "t", "width_px": 640, "height_px": 480}]}}

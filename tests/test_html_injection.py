@@ -42,8 +42,11 @@ def assert_inert(page: str, scripts: int = 0) -> lxml.html.HtmlElement:
     """No executable form in `page`: at most `scripts` inline scripts (ours) and no script file, no
     on* attribute, no javascript:/data: address, no frame, object, embed or svg; the CSP meta there."""
     doc = lxml.html.document_fromstring(page)
-    found = doc.xpath("//script")
-    assert len(found) <= scripts and all(s.get("src") is None for s in found), [lxml.html.tostring(s)[:80] for s in found]
+    data = doc.xpath('//script[@type="application/octet-stream"]')  # the 3D view's model data: never run
+    assert all(re.fullmatch(r"[A-Za-z0-9+/=]*", s.text or "") and s.get("class") == "propulsor-glb" for s in data)
+    found = [s for s in doc.xpath("//script") if s not in data]
+    assert len(found) <= scripts and all(s.get("src") is None for s in doc.xpath("//script")), \
+        [lxml.html.tostring(s)[:80] for s in found]
     for el in doc.iter():
         if not isinstance(el.tag, str):
             continue
@@ -129,8 +132,10 @@ def poisoned_gallery(folder: Path) -> Path:
         (good / sub).mkdir(parents=True, exist_ok=True)
     (good / "views" / "wheel.png").write_bytes(b"\x89PNG\r\n\x1a\n")
     (good / "anim" / "turn.gif").write_bytes(b"GIF89a")
-    (good / "wheel.glb").write_bytes(b"glTF")
-    (good / "wheel.glb.js").write_text("(window.PROPULSOR_GLB = window.PROPULSOR_GLB || {});\n")
+    from test_viewer_page import tiny_glb
+
+    (good / "wheel.glb").write_bytes(tiny_glb())
+    (good / "wheel.glb.js").write_text(MARK + ";\n")  # a script twin of an older build: never loaded
     (good / "report.html").write_text("<p>report</p>")
     (good / "link.png").symlink_to(folder / "secret.png")  # a link out of the folder
     bad_paths = ["../../../../etc/evil.js", "../evil.js", "/etc/passwd", "javascript:alert(1)", "data:text/html,x",
@@ -166,7 +171,7 @@ def test_gallery_shows_manifest_text_as_text_and_links_only_files_in_the_part(tm
     page = render_gallery(folder)
     doc = assert_inert(page, scripts=1)
     assert doc.xpath("//h2")[0].text_content() == "Title " + ALL
-    assert doc.xpath("//script")[0].text.strip().startswith("/*")  # ours: the viewer
+    assert doc.xpath("//script[not(@type)]")[0].text.strip().startswith("/*")  # ours: the viewer
     for el in doc.xpath("//*[@href or @src]"):
         url = el.get("href") or el.get("src")
         if url.startswith("#"):
@@ -175,7 +180,10 @@ def test_gallery_shows_manifest_text_as_text_and_links_only_files_in_the_part(tm
         assert target.is_relative_to(folder.resolve()) and target.exists(), url
         assert target != folder.resolve() / "secret.png"
     models = [m for f in doc.xpath("//figure[@class='viewer']/@data-models") for m in json.loads(f)]
-    assert [m["script"] for m in models] == ["good/wheel.glb.js"]  # no other script, nothing from outside
+    from propulsor.export.viewer_page import block_id
+
+    assert models and {m["block"] for m in models} == {block_id("good/wheel.glb")}  # nothing from outside
+    assert page.count('class="propulsor-glb"') == 1 and not re.search(r"src=[^>]*\.js", page)
     srcs = sorted(doc.xpath("//img/@src"))
     assert srcs == ["good/anim/turn.gif", "good/views/wheel.png"]
     assert 'href="javascript%3Aalert%281%29%3Bx/"' in page  # the odd folder's name is a path, not a scheme
@@ -194,7 +202,7 @@ def test_gallery_renders_each_field_type_a_manifest_can_get_wrong(tmp_path, caps
         "f_check": {"part": "road_wheel", "files": [], "checks": ["x"]},
         "g_files": {"part": "road_wheel", "files": [{"path": 3, "format": "STEP"}]},
         "h_derived": {"part": "road_wheel", "files": [], "derived": [1]},
-        "i_models": {"part": "road_wheel", "files": [], "media": {"models": [{"path": "m.glb", "script": ["x"]}]}},
+        "i_models": {"part": "road_wheel", "files": [], "media": {"models": [{"path": "m.glb", "title": ["x"]}]}},
         "j_part": {"part": 1, "files": []},
         "k_expected": {"part": "road_wheel", "files": [], "expected_failures": [None, 1]},
         "l_list": [1, 2, 3],
@@ -246,7 +254,7 @@ def test_gallery_that_cannot_be_written_is_an_environment_failure_not_a_foreign_
 @pytest.mark.browser
 def test_injected_payloads_do_not_run_in_a_browser(tmp_path):
     """The poisoned report, print report and gallery opened from disk in headless Chromium: no payload
-    marks the page, and the gallery's own viewer still runs (its script, the GLB's script beside it)."""
+    marks the page, and the gallery's own viewer still runs (its script, the GLB carried as data)."""
     from cdp_browser import headless_page
 
     reports = [write_poisoned_report(tmp_path / k, name) for k, name in (("a", "report.md"), ("b", "print_report.md"))]

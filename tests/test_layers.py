@@ -25,6 +25,7 @@ CAD_MESH_DXF_PLOT = KERNEL | {"trimesh", "ezdxf", "matplotlib", "PIL"}
 #: (so the layers cannot form a cycle).  errors / policy / check (the one check result type) / the package root are the ground floor.
 RANK = {
     "errors": 0, "policy": 0, "check": 0, "write_root": 0, "regular_file": 0, "atomic_file": 0, "make_names": 0.5, PACKAGE: 0,
+    "numbers": 0.5,
     "laws": 1,
     "gears": 2,
     "geometry": 3,

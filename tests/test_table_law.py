@@ -85,8 +85,8 @@ def test_a_table_whose_spline_ratio_dips_below_zero_is_refused():
 
 @pytest.mark.parametrize("text, match", [
     ("theta,phi\n0,0\n", r"header must be driver_deg,driven_deg"),
-    ("driver_deg,driven_deg\n0,0\n1,x\n", r"^law_file row 2 = '1,x': two numbers"),
-    ("driver_deg,driven_deg\n0,0\n1,nan\n", r"^law_file row 2 = '1,nan': finite numbers"),
+    ("driver_deg,driven_deg\n0,0\n1,x\n", r"^law_file row 2 driven_deg = 'x': must be a number in plain digits"),
+    ("driver_deg,driven_deg\n0,0\n1,nan\n", r"^law_file row 2 driven_deg = 'nan': must be a number in plain digits"),
     ("driver_deg,driven_deg\n0,0,3\n", r"^law_file row 1 = '0,0,3': two columns"),
 ])
 def test_malformed_tables_are_refused(text, match):

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from propulsor.checks.motion import rotation_matrices
-from propulsor.export.glb import lift_planar, write_glb, write_glb_script
+from propulsor.export.glb import lift_planar, write_glb
 from propulsor.export.html import write_report_html
 from test_glb_motion import box
 from test_viewer_browser import _model_pixels, _settle, _shot
@@ -48,11 +48,11 @@ def report_page(tmp_path_factory):
     poses = rotation_matrices(angles, np.tile([30.0, 40.0], (FRAMES, 1)))
     moves = {1: lift_planar(poses) @ np.linalg.inv(lift(30.0, 40.0)) @ comps[1][2]}
     info = {"name": "turn", "frame_ms": 60, "title": "the arm turning", "steps": list(range(0, 2 * FRAMES, 2))}
-    write_glb_script(write_glb(folder / "asm.glb", "asm", meshes, comps, [(info, moves)]))
+    write_glb(folder / "asm.glb", "asm", meshes, comps, [(info, moves)])
     md = folder / "report.md"
     md.write_text(REPORT, encoding="utf-8")
     # seen from below first, as the balancer's assembly is (its arm would hide under its wheel from above)
-    write_report_html(md, [{"path": "asm.glb", "script": "asm.glb.js", "title": "asm", "view_dir": [1.0, -1.0, -1.0]}])
+    write_report_html(md, [{"path": "asm.glb", "title": "asm", "view_dir": [1.0, -1.0, -1.0]}])
     with headless_page() as page:
         page.open((folder / "report.html").as_uri(), 1000)
         assert _settle(page, 0) == "drawn"

@@ -25,8 +25,10 @@ from __future__ import annotations
 import argparse
 import dataclasses
 import inspect
+import os
 import shutil
 import tempfile
+import threading
 from functools import cached_property
 from pathlib import Path
 from typing import Any
@@ -55,7 +57,7 @@ def parameters(part_type: str, /, **values: Any):
     return load_params(pt.params_cls, values)
 
 
-def part(source: str | Path, /, **overrides: Any) -> "Part":
+def part(source: "str | bytes | os.PathLike[str]", /, **overrides: Any) -> "Part":
     """A part from a part type name (its defaults) or a part file (``*.toml``), with `overrides` in place of
     the values there.  The parameters are validated at once (InputError naming the key)."""
     from .params import load_params, read_part_file
@@ -63,13 +65,31 @@ def part(source: str | Path, /, **overrides: Any) -> "Part":
 
     if isinstance(source, str) and source in part_type_names():
         return Part(source, parameters(source, **overrides), None)
-    path = Path(source)
+    path = as_path(source, "source")
     if path.suffix != ".toml" and not path.exists():
         raise InputError("source", str(source), f"must be a part type ({', '.join(part_type_names())}) or a part "
                          "file (.toml)")
     type_name, mapping = read_part_file(path)
     pt = get_part_type(type_name)
     return Part(type_name, load_params(pt.params_cls, {**mapping, **overrides}), path)
+
+
+def as_path(value, key: str) -> Path:
+    """A path given as text, bytes (the file system's own encoding) or os.PathLike; InputError naming `key`
+    for anything else or an empty one."""
+    try:
+        path = Path(os.fsdecode(bytes(value)) if isinstance(value, (bytes, bytearray)) else os.fspath(value))
+    except (TypeError, ValueError):
+        raise InputError(key, value, "must be a path (text, bytes or a pathlib.Path)") from None
+    if not str(path) or str(path) == ".":
+        raise InputError(key, value, "must name a file or folder")
+    return path
+
+
+#: one build at a time in a process: a build's worker pools, its clean-up (which stops every worker of the
+#: process) and its redirection of sys.stderr are the process's, so builds from several threads run in turn
+#: (each would take the cores anyway); re-entrant, as a write may run the design first
+_BUILDING = threading.RLock()
 
 
 @dataclasses.dataclass(frozen=True)
@@ -123,9 +143,10 @@ class Part:
         fn = self._pt.design
         if fn is None:
             raise InputError("design", self.type, "this part type has no separate design")
-        if "source" in inspect.signature(fn).parameters:
-            return design_of(self.params, fn, self.source)
-        return design_of(self.params, fn)
+        with _BUILDING:
+            if "source" in inspect.signature(fn).parameters:
+                return design_of(self.params, fn, self.source)
+            return design_of(self.params, fn)
 
     @cached_property
     def build(self) -> Build:
@@ -136,7 +157,7 @@ class Part:
 
         folder = Path(tempfile.mkdtemp(prefix="propulsor-api-"))
         try:
-            with writing_into(folder):
+            with _BUILDING, writing_into(folder):
                 failures, _, w = produce_build(self._pt, self.params, self.source, folder, Progress(enabled=False))
         finally:
             shutil.rmtree(folder, ignore_errors=True)
@@ -166,12 +187,13 @@ class Part:
         if not (isinstance(pipeline, Pipeline) and pipeline.proves_alone):
             b = self.build
             return Proof(b.failures, b.checks, b.derived, True)
-        w = ProofWriter(self.type, self.params, progress=Progress(enabled=False), source=self.source)
-        try:
-            pipeline.prove(self.params, w)
-            failures = w.finish()
-        finally:
-            w.close()
+        with _BUILDING:
+            w = ProofWriter(self.type, self.params, progress=Progress(enabled=False), source=self.source)
+            try:
+                pipeline.prove(self.params, w)
+                failures = w.finish()
+            finally:
+                w.close()
         return Proof(tuple(failures), tuple(w.checks), dict(w.derived), False)
 
     def prove(self, raise_on_failure: bool = False, depth: str = "build") -> list:
@@ -206,7 +228,7 @@ class Part:
             asm.add(solid, name=str(comp), loc=loc, color=cq.Color(r / 255, g / 255, b / 255))
         return asm
 
-    def write(self, out: str | Path, *, force: bool = False, keep_failed: bool = False) -> Path:
+    def write(self, out: "str | bytes | os.PathLike[str]", *, force: bool = False, keep_failed: bool = False) -> Path:
         """Build into folder `out` exactly as ``propulsor build PART --out OUT`` does (the same files, the
         same bytes; the same folder rules, lock and atomic replacement).  Byte for byte as a build on its
         own is the first build of a process: after other builds in the same interpreter, OCCT's STEP
@@ -220,7 +242,7 @@ class Part:
 
         progress = Progress(enabled=False)
         keep = files_read(self.params, self.source) if self.source else ()
-        target = of.vet_target(Path(out), force=force, keep=keep)
+        target = of.vet_target(as_path(out, "out"), force=force, keep=keep)
         failures: list[str] = []
 
         def produce(tmp: Path):
@@ -237,7 +259,7 @@ class Part:
         import sys
 
         err = io.StringIO()
-        with contextlib.redirect_stderr(err):
+        with _BUILDING, contextlib.redirect_stderr(err):
             code = into_output(args, target, keep, produce, progress)
         lines = [ln.removeprefix("propulsor: error: ") for ln in err.getvalue().splitlines() if ln.strip()]
         if code == 2:

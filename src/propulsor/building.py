@@ -126,6 +126,7 @@ def into_output(args, out: Path, keep: tuple[Path, ...], produce, progress, depf
             of.vet_target(out, force=args.force, keep=keep)  # as it is now, after the wait
             for stale in of.clean_stale(out):
                 progress(f"removed {stale.name}, left by a build that was killed")
+            before = of.snapshot(out)  # what the swap may remove: nothing saved there from now on
             tmp = of.make_temp(out)
             with writing_into(tmp) as ident:
                 failures, what = produce(tmp)
@@ -137,7 +138,7 @@ def into_output(args, out: Path, keep: tuple[Path, ...], produce, progress, depf
                           f"(use --keep-failed to keep the outputs)", file=sys.stderr)
                     return EXIT_CHECK_FAILED
                 of.verify_built(tmp, ident)
-                of.replace(tmp, out)
+                of.replace(tmp, out, before)
                 published = True
         except OSError as exc:  # a write refused (a file's write names no path: the folder it went to)
             if exc.filename is None:

@@ -87,12 +87,14 @@ def cmd_build(args) -> int:
 
 def _scale_arg(text: str) -> float | None:
     """'auto' → None; '3', '1:3' → 3.0 (a reduction 1:S); InputError otherwise."""
+    from .numbers import parse
+
     if text == "auto":
         return None
     try:
-        S = float(text.split(":", 1)[1] if text.startswith("1:") else text)
-    except ValueError:
-        raise InputError("--scale", text, "must be auto, S or 1:S with S >= 1 (e.g. 1:2.5)") from None
+        S = float(parse(text.split(":", 1)[1] if text.startswith("1:") else text, "--scale"))
+    except InputError:
+        raise InputError("--scale", text, "must be auto, S or 1:S with S >= 1 in plain digits (e.g. 1:2.5)") from None
     if not (S >= 1.0 and S <= 1000.0):
         raise InputError("--scale", text, "S must be within 1 ... 1000 (a reduction 1:S)")
     return S
@@ -121,10 +123,20 @@ def _settings(pairs) -> dict:
             raise InputError("--set", item, "must be KEY=VALUE, e.g. backlash_mm=0.35")
         if any(ord(c) < 32 or ord(c) == 127 for c in item):
             raise InputError("--set", item, "must be one KEY=VALUE on one line (no newline or control character)")
+        from .numbers import parse
+
+        if value.strip()[:1].isdigit() or value.strip()[:1] in ("+", "-", "."):  # a number: the one parser
+            out[key.strip()] = parse(value, f"--set {key.strip()}")
+            continue
         try:
             parsed = tomllib.loads(f"v = {value.strip()}")
-        except tomllib.TOMLDecodeError:
+        except RecursionError:
+            raise InputError("--set", item[:40], "nests arrays or tables too deeply") from None
+        except ValueError:  # not TOML: a word, taken as text
             parsed = {"v": value.strip()}
+        from .numbers import nesting
+
+        nesting(parsed["v"], f"--set {key.strip()}", 2)
         out[key.strip()] = parsed["v"]
     return out
 
@@ -241,29 +253,38 @@ def cmd_params(args) -> int:
 def cmd_explore(args) -> int:
     """A design study: every variant of the study file evaluated on a Dask cluster, one table, ranked."""
     from .progress import Progress
-    from .study import build_best_variants, load_study
+    from .study import load_study
     from .study.engine import run
 
     progress = Progress(enabled=not args.quiet, check=check_signalled)
     try:
-        if args.workers is not None and not 1 <= args.workers <= 1024:
-            raise InputError("--workers", args.workers, "must be within 1 ... 1024")
-        if args.workers is not None and args.scheduler:
+        cores = os.cpu_count() or 1
+        if args.workers is not None and not 1 <= args.workers <= cores:
+            raise InputError("--workers", args.workers, f"must be within 1 ... {cores} (this machine's cores: a "
+                             "variant runs on one core)")
+        if args.scheduler is not None:
+            from .study.cluster import scheduler_address
+
+            scheduler_address(args.scheduler)
+        if args.workers is not None and args.scheduler is not None:
             raise InputError("--workers", args.workers, "sizes the local cluster; with --scheduler the cluster's own "
                              "workers run the study")
+        if args.worker_wait is not None:
+            from .study.cluster import worker_wait
+
+            worker_wait(args.worker_wait)
         if args.build_best < 0:
             raise InputError("--build-best", args.build_best, "must be >= 0")
         study = load_study(args.study)
         out = Path(args.out) if args.out else Path("output") / Path(args.study).stem
         outcome = run(study, out, scheduler=args.scheduler, workers=args.workers, resume=args.resume,
-                      progress=progress)
+                      progress=progress, build_best=args.build_best, wait=not args.no_wait,
+                      worker_wait=args.worker_wait)
     except InputError as exc:
         return fail_input(exc)
     ok = sum(r["status"] == "ok" for r in outcome.rows)
     progress(f"{len(outcome.rows)} variants ({outcome.ran} run now, {outcome.seconds:.1f} s): {ok} meet every "
              f"requirement; {out / 'results.csv'} (and .parquet), {out / 'front.csv'}, {out / 'study.html'}")
-    if args.build_best:
-        build_best_variants(study, outcome, args.build_best, progress=progress)
     if gallery_folder(out.parent):  # the study in a gallery's folder (./output): the gallery links its page
         regenerate_gallery(out.parent, progress)
     return EXIT_OK
@@ -336,13 +357,33 @@ def build_parser() -> argparse.ArgumentParser:
     ex.add_argument("--out", help="the study's folder (default output/<study file name>)")
     ex.add_argument("--scheduler", help="the address of a running Dask scheduler (tcp://host:8786); default: "
                     "a local cluster of worker processes")
-    ex.add_argument("--workers", type=int, help="worker processes of the local cluster (default: the cores)")
+    ex.add_argument("--workers", type=int, help="worker processes of the local cluster (default and most: the "
+                    "cores)")
+    ex.add_argument("--worker-wait", type=float, metavar="S", help="seconds to wait for a Dask worker when the "
+                    "cluster has none, at the start or when every worker has left (default 60); then exit 3")
     ex.add_argument("--resume", action="store_true", help="keep the rows of results.csv and run only the rest")
     ex.add_argument("--build-best", type=int, default=0, metavar="K", help="then build the K best variants "
                     "fully into <out>/best/<rank>/")
+    ex.add_argument("--no-wait", action="store_true", help="exit 2 instead of waiting when another study or "
+                    "build holds the lock of --out")
     ex.add_argument("-q", "--quiet", action="store_true", help="no progress line")
     ex.set_defaults(func=cmd_explore)
     return p
+
+
+#: the options that take a list (all others take one text)
+_LISTS = {"part_files": str, "set": str}
+
+
+def _valueless(args) -> str | None:
+    """The option whose value argparse turned into a list (``--out=--``: it drops the "--"), or None."""
+    for dest, value in vars(args).items():
+        if dest in _LISTS:
+            if isinstance(value, list) and not all(isinstance(v, str) for v in value):
+                return f"--{dest.replace('_', '-')}"
+        elif isinstance(value, list):
+            return f"--{dest.replace('_', '-')}"
+    return None
 
 
 def main(argv=None) -> int:
@@ -362,6 +403,10 @@ def main(argv=None) -> int:
             args = parser.parse_args(argv)
         except SystemExit as exc:  # argparse uses 2 for usage errors, which matches bad input
             return int(exc.code or 0)
+        bad = _valueless(args)
+        if bad is not None:
+            return fail_input(InputError(bad, "--", "needs a value ('--' ends the options; write ./-- for a file "
+                                         "named --)"))
         try:
             os.getcwd()
         except OSError as exc:

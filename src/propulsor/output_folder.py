@@ -19,7 +19,11 @@ A build never writes into ``--out`` directly.  It
 6. puts the finished folder in place in one step (:func:`replace`): Linux ``renameat2`` with
    ``RENAME_EXCHANGE`` swaps old and new, so a reader sees the old complete output or the new
    complete output, never none or a mix; where the call is missing, rename-aside then rename-in,
-   recovered by step 3 of the next build.
+   recovered by step 3 of the next build.  The old output is compared with what was there when the
+   lock was taken (:func:`snapshot`) before and after the swap: anything saved or changed there
+   since then is not the previous build's own, so the swap is undone (nothing published, exit 3);
+   the old output is then removed file by file, only what the snapshot holds, and a file that
+   appears even then is kept (:func:`discard`).
 """
 
 from __future__ import annotations
@@ -33,6 +37,7 @@ import re
 import secrets
 import shutil
 import stat
+import sys
 import tempfile
 from pathlib import Path
 
@@ -146,7 +151,7 @@ def _mount_inside(real: Path) -> str | None:
     return None
 
 
-def _representable(out: Path) -> None:
+def representable(out: Path) -> None:
     """InputError unless `out` is a path every writer of a build can use (UTF-8, within the length limits)."""
     raw = os.fsencode(out)
     try:
@@ -168,7 +173,7 @@ def vet_target(out: Path, force: bool = False, keep: tuple[Path, ...] = ()) -> P
 
     `keep`: files the build reads (the part file and the files it names) that must stay outside."""
     out = Path(os.path.abspath(out))
-    _representable(out)
+    representable(out)
     if out.is_symlink():
         raise InputError("--out", str(out), "is a symbolic link; give the folder it points to")
     real = out.resolve()
@@ -420,15 +425,103 @@ def rename_exchange(a: Path, b: Path) -> bool:
     raise OSError(err, os.strerror(err), str(a))
 
 
-def replace(tmp: Path, out: Path, exchange=rename_exchange) -> None:
-    """Put the finished folder `tmp` in the place of `out` in one step, then delete the old output."""
+def snapshot(folder: Path) -> dict[str, tuple]:
+    """What `folder` holds now, links not followed: relative path → (kind, inode, size, mtime in ns) of
+    every entry (a folder's size and time left out: they change with its entries, which are listed).
+    Empty when the folder does not exist."""
+    out: dict[str, tuple] = {}
+    if not os.path.isdir(folder) or os.path.islink(folder):
+        return out
+    for dirpath, dirnames, filenames in os.walk(folder):
+        for name in dirnames + filenames:
+            full = os.path.join(dirpath, name)
+            try:
+                st = os.lstat(full)
+            except FileNotFoundError:
+                continue
+            rel = os.path.relpath(full, folder).replace(os.sep, "/")
+            kind = stat.S_IFMT(st.st_mode)
+            out[rel] = (kind, st.st_ino) if kind == stat.S_IFDIR else (kind, st.st_ino, st.st_size, st.st_mtime_ns)
+    return out
+
+
+def not_own(folder: Path, before: dict[str, tuple]) -> list[str]:
+    """Entries of `folder` that are not in its snapshot `before` (saved, replaced or changed since)."""
+    now = snapshot(folder)
+    return sorted(rel for rel, e in now.items() if before.get(rel) != e)
+
+
+def _refuse_changed(out: Path, changed: list[str]):
+    raise EnvironmentFailure(out / changed[0], errno.EEXIST, "the output folder changed during the build:",
+                             f"{len(changed)} entr{'y' if len(changed) == 1 else 'ies'} saved or changed there since "
+                             "the build began (not the previous build's own); nothing published, the old output "
+                             "intact")
+
+
+def discard(folder: Path, own: dict[str, tuple], out: Path) -> Path | None:
+    """Remove from `folder` only the entries of `own` (its snapshot: same path and inode), deepest first,
+    then the folder.  Anything else found there is kept: the folder is renamed ``<out>.kept-XXXXXXXX``
+    beside `out` and that path returned (None when everything went)."""
+    for rel in sorted((r for r, e in own.items() if e[0] != stat.S_IFDIR), key=lambda r: -r.count("/")):
+        p = folder / rel
+        try:
+            st = os.lstat(p)
+        except FileNotFoundError:
+            continue
+        if (stat.S_IFMT(st.st_mode), st.st_ino) == own[rel][:2]:
+            os.unlink(p)
+    for rel in sorted((r for r, e in own.items() if e[0] == stat.S_IFDIR), key=lambda r: -r.count("/")):
+        try:
+            os.rmdir(folder / rel)
+        except OSError:
+            pass
+    try:
+        os.rmdir(folder)
+        return None
+    except FileNotFoundError:
+        return None
+    except OSError:
+        kept = out.parent / f"{out.name}.kept-{secrets.token_hex(4)}"
+        os.rename(folder, kept)
+        return kept
+
+
+def replace(tmp: Path, out: Path, before: dict[str, tuple] | None = None, exchange=rename_exchange) -> Path | None:
+    """Put the finished folder `tmp` in the place of `out` in one step, then remove the old output.
+
+    `before`: the snapshot of `out` taken when the build began (with its lock held).  An entry of `out`
+    not in it — a file saved there, or one changed, while the build ran — is not the previous build's
+    own: checked before the swap and again on the swapped-out folder, which is swapped back (nothing
+    published: EnvironmentFailure, exit 3).  The old output is then removed entry by entry (:func:`discard`);
+    returns where anything that appeared even in that instant was kept (else None)."""
+    if before is None:
+        before = snapshot(out)
+    built = snapshot(tmp)
+    changed = not_own(out, before)
+    if changed:
+        _refuse_changed(out, changed)
     if not out.exists():
         os.rename(tmp, out)
-        return
+        return None
     if exchange(tmp, out):
-        shutil.rmtree(tmp)  # now the old output
-        return
-    old = out.parent / (_old_prefix(out) + secrets.token_hex(4))
-    os.rename(out, old)
-    os.rename(tmp, out)
-    shutil.rmtree(old)
+        old = tmp
+        changed = not_own(old, before)
+        if changed:
+            exchange(tmp, out)  # back: the old output (with what was saved there) in its place
+            kept = discard(tmp, built, out)
+            if kept is not None:
+                print(f"propulsor: {kept}: kept what was saved into {out} while the build was swapped in",
+                      file=sys.stderr)
+            _refuse_changed(out, changed)
+    else:
+        old = out.parent / (_old_prefix(out) + secrets.token_hex(4))
+        os.rename(out, old)
+        changed = not_own(old, before)
+        if changed:
+            os.rename(old, out)
+            _refuse_changed(out, changed)
+        os.rename(tmp, out)
+    kept = discard(old, before, out)
+    if kept is not None:
+        print(f"propulsor: {kept}: kept what was saved into {out} while its old output was removed", file=sys.stderr)
+    return kept

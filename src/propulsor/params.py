@@ -16,6 +16,7 @@ import tomllib
 from pathlib import Path
 from typing import Any, get_type_hints
 
+from . import numbers
 from .errors import InputError
 
 #: largest part file read (a part file is a few kB of TOML)
@@ -51,20 +52,26 @@ def _limit_text(meta) -> str:
 
 
 def _check_number(name: str, value, meta, unit: str, integer: bool = False):
+    """`value` as a Python number within the field's limits (numbers.number: finite, within ±2**53, not
+    subnormal; a numpy scalar taken as its Python value); InputError naming `name` otherwise."""
+    if not isinstance(value, (bool, int, float)) and hasattr(value, "item"):
+        value = numbers.number(value, name)  # numpy's integers and floats are numbers too
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise InputError(name, value, ("must be a whole number" if integer else "must be a number")
                          + (f" in {unit}" if unit else ""))
-    if not math.isfinite(float(value)):
+    if isinstance(value, float) and not math.isfinite(value):
         raise InputError(name, value, "must be a finite number")
     if (integer or meta.get("integer")) and isinstance(value, float):
         raise InputError(name, value, "must be a whole number, written without a decimal point"
                          if float(value).is_integer() else "must be a whole number")
+    value = numbers.number(value, name)
     lo, hi = meta.get("min"), meta.get("max")
     u = f" {unit}" if unit else ""
     if lo is not None and (value < lo or (meta["min_exclusive"] and value == lo)):
         raise InputError(name, value, f"must be {'>' if meta['min_exclusive'] else '>='} {lo}{u}")
     if hi is not None and (value > hi or (meta["max_exclusive"] and value == hi)):
         raise InputError(name, value, f"must be {'<' if meta['max_exclusive'] else '<='} {hi}{u}")
+    return value
 
 
 def _check_type(name: str, value, typ) -> None:
@@ -95,17 +102,31 @@ def _check_field(f, typ, value):
     elif typ in (int, float):
         if value is None and f.default is None:
             return value  # an optional number left out
-        _check_number(name, value, meta, unit, integer=typ is int)
+        value = _check_number(name, value, meta, unit, integer=typ is int)
         value = int(value) if typ is int else float(value)
     elif typ is str:
         _check_type(name, value, typ)
         if len(value) > MAX_STRING_CHARS:
             raise InputError(name, value[:40] + "…", f"must be at most {MAX_STRING_CHARS} characters")
     elif typ is list:
+        if isinstance(value, tuple):
+            value = list(value)
         _check_type(name, value, typ)
         if len(value) > MAX_LIST_ITEMS:
             raise InputError(name, f"[{len(value)} items]", f"must have at most {MAX_LIST_ITEMS} items")
+        numbers.nesting(value, name, 2)
+        # the parameters' own copy (a caller's list changed afterwards changes nothing), its numbers checked
+        value = [_list_item(name, k, x) for k, x in enumerate(value)]
     return value
+
+
+def _list_item(name: str, k: int, x):
+    """An item of a list parameter: a number checked (numbers.number), a list copied, text as it is."""
+    if isinstance(x, (list, tuple)):
+        return [_list_item(name, k, y) for y in x]
+    if isinstance(x, str):
+        return x
+    return numbers.number(x, f"{name}[{k}]")
 
 
 def check_fields(obj) -> None:
@@ -214,6 +235,14 @@ def _first_too_deep(data, limit: int) -> str | None:
     return None
 
 
+def toml_error(exc: ValueError) -> str:
+    """The one-line reason a TOML text was refused (tomllib's, or Python's own limit on long integers)."""
+    text = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+    if "digits" in text and "integer string conversion" in text:
+        return "is not valid TOML: it holds an integer of more than 4300 digits"
+    return f"is not valid TOML: {text[:160]}"
+
+
 def read_part_toml(path: str | Path) -> dict[str, Any]:
     """The TOML table of a part file, read as bytes and decoded as UTF-8 (InputError otherwise): a regular
     file (never a FIFO or a device) of at most MAX_PART_FILE_BYTES, nested at most MAX_PART_FILE_DEPTH."""
@@ -236,8 +265,8 @@ def read_part_toml(path: str | Path) -> dict[str, Any]:
                          f"{exc.start}); a part file is TOML") from None
     try:
         data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError("part file", str(path), f"is not valid TOML: {exc}") from None
+    except ValueError as exc:  # TOMLDecodeError, or an integer of more than 4 300 digits
+        raise InputError("part file", str(path), toml_error(exc)) from None
     except RecursionError:
         raise InputError("part file", str(path), f"nests tables or arrays too deeply (at most "
                          f"{MAX_PART_FILE_DEPTH} levels)") from None

@@ -241,6 +241,8 @@ READ_LIMIT_BYTES = {
     "3mf": 16 * MIB,  # the zip as stored
     "dxf": 16 * MIB,
     "glb": 32 * MIB,
+    # a page: the gallery carries its parts' GLBs inline as data (at most PAGE_MODEL_BYTES_MAX, base64)
+    "html": 96 * MIB,
 }
 #: a 3MF: its members decompressed, in total (declared sizes and what decompression yields), and
 #: how many members it may hold
@@ -248,8 +250,15 @@ THREEMF_UNZIPPED_MAX_BYTES = 24 * MIB  # ~82 bytes a triangle: ~300 k triangles 
 THREEMF_MEMBERS_MAX = 4096
 #: a GLB's JSON chunk (the rest are binary buffers, bounded by the file)
 GLB_JSON_MAX_BYTES = 16 * MIB
-#: nodes, meshes, accessors (and every other list) of a GLB, each (an assembly has tens of components)
+#: nodes, meshes, accessors (and every other list) of a GLB, each (an assembly has tens of components); the
+#: primitives of all its meshes together too
 GLB_ITEMS_MAX = 10_000
+#: triangles a GLB makes the 3D view draw: every node's mesh counted once per node that instances it (the
+#: largest output, 3.3 MB, draws about 0.1 M); the viewer (web/viewer.js) refuses more, `check` too
+GLB_DRAWN_TRIANGLES_MAX = 2_000_000
+#: GLB bytes one page carries inline as model data (the gallery of every part in a folder): a model past
+#: it is not drawn on that page (its report's page draws it)
+PAGE_MODEL_BYTES_MAX = 64 * MIB
 #: a file listed in a manifest is hashed only up to this size (a larger one is a mismatch)
 HASH_LIMIT_BYTES = 1024 * MIB
 #: a mesh's triangle boxes may overlap in at most this many pairs before the self-intersection

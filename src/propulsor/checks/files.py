@@ -34,6 +34,7 @@ import numpy as np
 from ..errors import EnvironmentFailure
 from ..policy import CHECK_MEMORY_CEILING, MESH_BOX_PAIRS_MAX, MESH_VOLUME_REL_TOL, STEP_VOLUME_REL_TOL
 from . import formats
+from .pages import check_html_file
 from .result import Check
 from .safe_read import Refused, opened, read_bytes, sha256_and_size, walk
 
@@ -129,7 +130,7 @@ def _step_mesh_checks(solid, name: str, genus) -> list[Check]:
     try:
         mesh = tessellate(solid, parallel=False)
     except Exception as exc:  # noqa: BLE001 - a solid OCCT cannot mesh is a failed check
-        return [Check.flag(f"{name}: tessellates", False, f"{type(exc).__name__}: {exc}")]
+        return [Check.flag(f"{name}: tessellates", False, _why(exc))]
     return mesh_checks(mesh, name, expected_genus=genus, brep_volume=volume(solid), max_box_pairs=MESH_BOX_PAIRS_MAX)
 
 
@@ -153,7 +154,7 @@ def check_mesh_file(path: Path) -> list[Check]:
         if len(mesh.faces) == 0:
             raise ValueError("no triangles")
     except Exception as exc:  # noqa: BLE001
-        return [Check.flag(f"{name}: loads", False, f"{type(exc).__name__}: {exc}")]
+        return [Check.flag(f"{name}: loads", False, _why(exc))]
     entry = _manifest_entry(path)
     out = [Check.flag(f"{name}: loads", True, f"{len(mesh.faces)} triangles, {len(mesh.vertices)} vertices")]
     out += mesh_checks(
@@ -180,7 +181,7 @@ def check_dxf_file(path: Path) -> list[Check]:
     except Refused as exc:
         return [Check.flag(f"{name}: DXF parses", False, str(exc))]
     except Exception as exc:  # noqa: BLE001
-        return [Check.flag(f"{name}: DXF parses", False, f"{type(exc).__name__}: {exc}")]
+        return [Check.flag(f"{name}: DXF parses", False, _why(exc))]
     try:
         formats.check_dxf_doc(doc)
     except Refused as exc:
@@ -188,7 +189,7 @@ def check_dxf_file(path: Path) -> list[Check]:
     try:
         info = dxf_summary(doc)
     except Exception as exc:  # noqa: BLE001
-        return [Check.flag(f"{name}: DXF parses", False, f"{type(exc).__name__}: {exc}")]
+        return [Check.flag(f"{name}: DXF parses", False, _why(exc))]
     out = [Check.flag(f"{name}: DXF parses", True, f"DXF {info['version']}")]
     out.append(Check.equals(f"{name}: $INSUNITS", info["insunits"], 4, "", "drawing units millimetres (4)"))
     cut = info["layers"].get(CUT, {"loops": [], "open": []})
@@ -219,7 +220,7 @@ def check_glb_file(path: Path) -> list[Check]:
         if not nodes:
             raise ValueError("no mesh node")
     except Exception as exc:  # noqa: BLE001
-        return [Check.flag(f"{name}: loads", False, f"{type(exc).__name__}: {exc}")]
+        return [Check.flag(f"{name}: loads", False, _why(exc))]
     out = [Check.flag(f"{name}: loads", True, f"{len(nodes)} mesh nodes")]
     model = {}
     data = load_manifest(path.parent / MANIFEST)
@@ -307,7 +308,7 @@ def check_manifest_file(path: Path) -> list[Check]:
         data = json.loads(read_bytes(path, "manifest").decode("utf-8"))
     except (Refused, ValueError, RecursionError) as exc:
         return [Check.flag(f"{name}: parses", False, str(exc) if isinstance(exc, Refused)
-                           else f"{type(exc).__name__}: {exc}")]
+                           else _why(exc))]
     files, problems = _manifest_structure(data, folder)
     if problems:
         return [Check.flag(f"{name}: parses", False, "; ".join(problems))]
@@ -354,11 +355,20 @@ CHECKERS = {
     ".3mf": check_mesh_file,
     ".dxf": check_dxf_file,
     ".glb": check_glb_file,
+    ".html": check_html_file,
 }
 
 
 def _checker(name: str):
     return check_manifest_file if name == MANIFEST else CHECKERS.get(Path(name).suffix.lower())
+
+
+def _why(exc: BaseException) -> str:
+    """The reason a library's failure on a file gives: "out of memory" for a MemoryError (the check's
+    address-space ceiling met), else the exception's name and text."""
+    if isinstance(exc, MemoryError):
+        return f"out of memory: checking it needs more than the ceiling of {CHECK_MEMORY_CEILING >> 20} MiB"
+    return f"{type(exc).__name__}: {exc}"
 
 
 def check_file(path: str | Path) -> list[Check]:
@@ -375,11 +385,10 @@ def check_file(path: str | Path) -> list[Check]:
         raise
     except Refused as exc:
         return [Check.flag(f"{p.name}: readable", False, str(exc))]
-    except MemoryError:
-        return [Check.flag(f"{p.name}: readable", False, f"out of memory: checking it needs more than "
-                           f"the ceiling of {CHECK_MEMORY_CEILING >> 20} MiB")]
+    except MemoryError as exc:
+        return [Check.flag(f"{p.name}: readable", False, _why(exc))]
     except Exception as exc:  # noqa: BLE001 - whatever breaks on a malformed file is a failed check
-        return [Check.flag(f"{p.name}: readable", False, f"{type(exc).__name__}: {exc}")]
+        return [Check.flag(f"{p.name}: readable", False, _why(exc))]
 
 
 def check_path(path: str | Path) -> dict[str, list[Check]]:

@@ -4,7 +4,8 @@ Reads the manifests and the files beside them only (every ``*/manifest.json``; a
 ``<name>_kit/`` is shown with its part ``<name>/``): each part with its title, its status (checks
 passed / documented failures / failed, with counts), a few key derived values with units, the
 animations (``media.animations``), an interactive 3D view of the assembly (``media.models``: the
-GLB's script twin, drawn by ``web/viewer.js`` with the vendored three.js, both inlined; viewer_page.py), the pictures (``media.pictures``), links to
+GLB read, checked and carried on the page as a data block, drawn by ``web/viewer.js`` with the vendored
+three.js, both inlined; viewer_page.py), the pictures (``media.pictures``), links to
 the HTML report, the files by format and the print kit.  The page is self-contained (inline style
 and script, relative links), so it works opened from disk, with no network.
 
@@ -181,11 +182,12 @@ def _animation(name: str, e: dict) -> str:
             f"<figcaption>{escape(caption)} · {_a(src, 'full size')}</figcaption></figure>")
 
 
-def _viewer(name: str, models: list[dict], manifest: dict) -> str:
-    """The 3D view of the part's assemblies (a polysector gear's positions named by offset and ratio)."""
+def _viewer(folder: Path, name: str, models: list[dict], manifest: dict, budget: dict) -> str:
+    """The 3D view of the part's assemblies (a polysector gear's positions named by offset and ratio), its
+    GLBs carried as data blocks within the page's `budget`."""
     titles = [position_title(manifest, k) for k in range(len(models))]
     what = "position" if manifest.get("part") == "polysector_gear" else "assembly"
-    return viewer_figure(models, f"{name}/", titles, what)
+    return viewer_figure(models, f"{name}/", titles, what, folder=folder / name, budget=budget)
 
 
 def _files(name: str, manifest: dict) -> str:
@@ -229,7 +231,7 @@ def _kit(folder: Path, kit_name: str, m: dict) -> str:
     return "".join(out)
 
 
-def _section(folder: Path, entry: dict) -> str:
+def _section(folder: Path, entry: dict, budget: dict) -> str:
     name, m = entry["name"], entry["manifest"]
     media = m["media"]
     cls, text = status(m)
@@ -247,7 +249,7 @@ def _section(folder: Path, entry: dict) -> str:
     if anims:
         out.append("<h3>Motion</h3><div class=\"media anim\">" + "".join(_animation(name, e) for e in anims) + "</div>")
     models = media["models"]
-    out.append(_viewer(name, models, m))
+    out.append(_viewer(folder, name, models, m, budget))
     pics = media["pictures"]
     if pics:
         out.append("<h3>Pictures</h3><div class=\"media\">" + "".join(
@@ -289,7 +291,11 @@ def render_gallery(folder: str | Path) -> str:
     if nav:
         head.append("<nav><ul>" + "".join(nav) + "</ul></nav>")
     head.append("</header>")
-    body = "\n".join(head + [_section(folder, e) for e in parts] + ([studies_section(studies)] if studies else []))
+    from .viewer_page import page_budget
+
+    budget = page_budget()  # the GLB bytes this page carries, shared by its parts in order
+    body = "\n".join(head + [_section(folder, e, budget) for e in parts]
+                     + ([studies_section(studies)] if studies else []))
     return page("propulsor: built parts", body, style=STYLE + VIEWER_STYLE + (STUDY_STYLE if studies else ""),
                 script=viewer_script())
 

@@ -4,7 +4,7 @@ it links checked against the part's folder.
 A manifest is data from disk (written by propulsor, or edited, or damaged): :func:`load_manifest`
 returns a clean copy of the fields the gallery reads, or raises :class:`ManifestError` naming the
 first field of the wrong type (the gallery then shows a note instead of the part).  A path (a
-picture, an animation, a model and its script, a file) is kept only when it is relative, stays
+picture, an animation, a model, a file) is kept only when it is relative, stays
 inside the part's folder (after links are followed) and names an existing regular file
 (:func:`inside`); any other entry is left out.
 """
@@ -27,11 +27,11 @@ _DIRECTION = (lambda v: isinstance(v, list) and len(v) == 3 and all(
 MEDIA_FIELDS = {
     "animations": {"path": _TEXT, "title": _TEXT, "frames": _COUNT, "width_px": _COUNT, "height_px": _COUNT,
                    "bytes": _COUNT, "least_clearance_mm": _NUMBER},
-    "models": {"path": _TEXT, "script": _TEXT, "title": _TEXT, "view_dir": _DIRECTION},
+    "models": {"path": _TEXT, "title": _TEXT, "view_dir": _DIRECTION},
     "pictures": {"path": _TEXT, "title": _TEXT},
 }
-#: the suffix of a model's script (the GLB's script twin): no other file is loaded as a script
-SCRIPT_SUFFIX = ".glb.js"
+#: the suffix of a model (a GLB, carried on the page as data: no file of a part's folder is loaded as a script)
+MODEL_SUFFIX = ".glb"
 
 
 class ManifestError(ValueError):
@@ -115,8 +115,9 @@ def clean_manifest(data, part_dir: Path) -> dict:
         for e in entries:
             if not inside(part_dir, e.get("path")):
                 continue
-            if "script" in e and not (e["script"].endswith(SCRIPT_SUFFIX) and inside(part_dir, e["script"])):
-                del e["script"]
+            if kind == "models" and not e["path"].endswith(MODEL_SUFFIX):
+                continue
+            e.pop("script", None)  # the GLB's script twin of older builds: never loaded
             lc = e.get("least_clearance_mm")
             if lc is not None and not math.isfinite(lc):
                 del e["least_clearance_mm"]

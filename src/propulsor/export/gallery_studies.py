@@ -43,8 +43,25 @@ def found_studies(folder: str | Path) -> list[dict]:
 
     folder = Path(folder)
     out: list[dict] = []
+    import os
+
+    from ..regular_file import NotRegular, open_regular
+
     for d in sorted(folder.iterdir()):
-        if d.name.startswith(".") or not d.is_dir() or not inside(d, MARKER) or not inside(d, PAGE):
+        if d.name.startswith(".") or not d.is_dir() or d.is_symlink() or not os.path.lexists(d / MARKER):
+            continue
+        if not inside(d, MARKER):  # a study.json that is a FIFO, a device, a link out of the folder …: said so
+            try:
+                fd, _ = open_regular(d / MARKER)
+                os.close(fd)
+                why = "is not a regular file inside the folder"
+            except (NotRegular, OSError) as exc:
+                why = str(getattr(exc, "strerror", None) or exc)
+            out.append({"name": d.name, "info": None, "error": f"{MARKER} not readable: {why}"})
+            continue
+        if not inside(d, PAGE):
+            out.append({"name": d.name, "info": None, "error": f"no {PAGE} yet (a study not finished, or "
+                        f"interrupted: propulsor explore --resume finishes it)"})
             continue
         try:
             data = json.loads(read_regular(d / MARKER, MAX_BYTES).decode("utf-8"))

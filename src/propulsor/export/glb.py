@@ -15,13 +15,12 @@ An assembly may move (:meth:`parts.writer.OutputWriter.add_motion`): each motion
 poses themselves, nothing between), at the GIF's frame times; a moving component's node then carries
 its placement as translation and rotation (glTF animates those, not a matrix).
 
-``<name>.glb.js`` holds the same bytes base64-encoded in a classic script, because a page opened from
-disk (file://) may not fetch() or XHR a file beside it, while a ``<script src>`` loads.
+A page that shows the GLB carries its bytes as a data block (``export/viewer_page.py``): a page opened
+from disk (file://) may not fetch() or XHR a file beside it, and no file beside a page is run as a script.
 """
 
 from __future__ import annotations
 
-import base64
 import json
 import struct
 from pathlib import Path
@@ -150,18 +149,6 @@ def write_glb(path: str | Path, name: str, meshes: dict, components, motions=())
     prepare(path)
     path.write_bytes(data)
     return path
-
-
-def write_glb_script(glb: str | Path) -> Path:
-    """``<glb>.js``: the GLB's bytes as base64 in a classic script that files them in
-    ``window.PROPULSOR_GLB`` under the script's own URL (the gallery's viewer inserts the script and
-    reads the bytes from there)."""
-    glb = Path(glb)
-    b64 = base64.b64encode(glb.read_bytes()).decode("ascii")
-    out = glb.with_name(glb.name + ".js")
-    out.write_text("(window.PROPULSOR_GLB = window.PROPULSOR_GLB || {})[document.currentScript.src] =\n\""
-                   + b64 + "\";\n", encoding="ascii")
-    return out
 
 
 def placement_matrix(component) -> np.ndarray:

@@ -46,15 +46,34 @@ th { background: var(--panel); }
 """
 
 
+#: the study page's one script (its table sorted by a click on a column; study/page.py); `propulsor
+#: check` knows it by its hash (checks/pages.py)
+TABLE_SORT_SCRIPT = """
+document.querySelectorAll('th').forEach(function (th, col) {
+  th.addEventListener('click', function () {
+    var body = th.closest('table').tBodies[0], rows = Array.prototype.slice.call(body.rows);
+    var dir = th.dataset.dir === 'asc' ? -1 : 1; th.dataset.dir = dir === 1 ? 'asc' : 'desc';
+    rows.sort(function (a, b) {
+      var x = a.cells[col].dataset.v, y = b.cells[col].dataset.v, nx = parseFloat(x), ny = parseFloat(y);
+      if (!isNaN(nx) && !isNaN(ny)) return dir * (nx - ny);
+      return dir * x.localeCompare(y);
+    });
+    rows.forEach(function (r) { body.appendChild(r); });
+  });
+});
+"""
+
+
 def _sha256(text: str) -> str:
     return "'sha256-" + base64.b64encode(hashlib.sha256(text.encode("utf-8")).digest()).decode("ascii") + "'"
 
 
 def content_security_policy(style: str, script: str = "") -> str:
     """The policy of a page whose one inline style sheet is `style` and one inline script `script`
-    (the exact text between the tags): nothing but these two and files of the page's own origin (its
-    folder opened from disk) — no other inline code, no plug-in, no frame, no form, no network."""
-    scripts = f"'self' {_sha256(script)}" if script else "'none'"
+    (the exact text between the tags): nothing runs but that script, by its sha256 — no script file (not
+    even one beside the page: a part folder's files are data), no other inline code, no plug-in, no frame,
+    no form, no network; images from the page's own folder."""
+    scripts = _sha256(script) if script else "'none'"
     return ("default-src 'none'; img-src 'self'; " f"style-src {_sha256(style)}; script-src {scripts}; "
             "base-uri 'none'; form-action 'none'")
 
@@ -141,7 +160,7 @@ def write_report_html(md_path: str | Path, models=()) -> Path:
 
     title = next((md_plain(ln[2:].strip()) for ln in text.splitlines() if ln.startswith("# ")), md_path.stem)
     body = markdown_to_html(text)
-    figure = viewer_figure(list(models), "", heading="<h2>3D view</h2>")
+    figure = viewer_figure(list(models), "", heading="<h2>3D view</h2>", folder=md_path.parent)
     if figure:
         at = body.find(_VIEW_BEFORE)
         body = body + figure if at < 0 else body[:at] + figure + "\n" + body[at:]
@@ -151,6 +170,11 @@ def write_report_html(md_path: str | Path, models=()) -> Path:
     out = md_path.with_suffix(".html")
     out.write_text(html_text, encoding="utf-8")
     return out
+
+
+def script_hash(script: str) -> str:
+    """The CSP source (``'sha256-…'``) of `script` as :func:`page` writes it between its tags."""
+    return _sha256(f"\n{script}\n")
 
 
 def write_atomically(path: str | Path, text: str) -> Path:

@@ -169,14 +169,14 @@ def _evaluate(law: WalkingLaw, delta: float, cutter: CutterSpec, z_H: int):
 
 def choose_smoothing(law: WalkingLaw, cutter: CutterSpec, z_H: int,
                      delta_max: float = DELTA_MAX_DEFAULT,
-                     rtol: float = SMOOTHING_DELTA_RTOL) -> SmoothingDesign:
+                     rtol: float = SMOOTHING_DELTA_RTOL, limits: dict | None = None) -> SmoothingDesign:
     """Smallest blend half-width delta <= delta_max keeping both pitch curves generable.
 
     The centre distance follows from closure at each delta: L = pi m z_H / perimeter.
     Search: geometric scan of delta, then bisection to rtol between the last
     failing and the first passing delta.  Raises InputError with the numbers
     (curvature reached, limit, the profile shift / tooth count / smoothing that
-    would work) when no delta up to delta_max works.
+    would work, within `limits`: :func:`remedies`) when no delta up to delta_max works.
     """
     if not isinstance(law, WalkingLaw):
         raise InputError("law", law, "must be a WalkingLaw")
@@ -195,7 +195,7 @@ def choose_smoothing(law: WalkingLaw, cutter: CutterSpec, z_H: int,
             break
         prev_bad = float(d)
     if found is None:
-        raise _no_smoothing_error(law, cutter, z_H, delta_max)
+        raise _no_smoothing_error(law, cutter, z_H, delta_max, limits)
     lo, hi = prev_bad, found
     while hi - lo > rtol * hi:
         mid = 0.5 * (lo + hi)
@@ -209,11 +209,11 @@ def choose_smoothing(law: WalkingLaw, cutter: CutterSpec, z_H: int,
                            generability=g, ripple=hub_speed_ripple(sl))
 
 
-def _no_smoothing_error(law, cutter, z_H, delta_max) -> InputError:
+def _no_smoothing_error(law, cutter, z_H, delta_max, limits=None) -> InputError:
     sl, L, g = _evaluate(law, delta_max, cutter, z_H)
     if g is None:
         return InputError("delta_max", delta_max, "the blend makes U <= 0 before the curves become generable")
-    bits = remedies(g, cutter, z_H, law.n, L)
+    bits = remedies(g, cutter, z_H, law.n, L, limits)
     # the smallest smoothing that would work beyond delta_max
     more = ""
     if delta_max < math.pi / 4:
@@ -229,26 +229,49 @@ def _no_smoothing_error(law, cutter, z_H, delta_max) -> InputError:
                       " | ".join(bits) + more)
 
 
-def remedies(g: Generability, cutter: CutterSpec, z_H: int, n: int, L: float) -> list[str]:
+def remedies(g: Generability, cutter: CutterSpec, z_H: int, n: int, L: float, limits: dict | None = None) -> list[str]:
     """What would make each failing pitch curve generable: the profile shift, the teeth or the module
-    (convex stretches against the rack undercut limit), the shaper's teeth (concave stretches)."""
+    (convex stretches against the rack undercut limit), the shaper's teeth (concave stretches).
+
+    `limits`: {"x": (lo, hi), "x_H": …, "z_H": …, "m": …, "z0": …}, the ranges the part's parameters allow;
+    a remedy outside its range (or not a finite number) is not offered, and when none is left the text says
+    that no value within the limits works."""
+    limits = limits or {}
+
+    def within(name, v):
+        lo, hi = limits.get(name, (-math.inf, math.inf))
+        return v is not None and math.isfinite(v) and lo <= v <= hi
+
     bits = []
     s2 = math.sin(cutter.alpha) ** 2
     for chk, x, name in ((g.driver, cutter.x, "x"), (g.driven, cutter.x_H, "x_H")):
         if chk.ok:
             continue
         if chk.rho_convex_min < chk.rho_limit:
-            x_need = cutter.h_a - chk.rho_convex_min * s2 / cutter.m
-            # rho and L scale with z_H at fixed m: z_H >= z_H * limit / rho_min
-            z_need = math.ceil(z_H * chk.rho_limit / chk.rho_convex_min / n) * n if chk.rho_convex_min > 0 else None
-            m_max = chk.rho_convex_min * s2 / (cutter.h_a - x) if cutter.h_a > x else math.inf
-            bits.append(
-                f"{chk.curve}: convex rho_min {chk.rho_convex_min:.3f} mm < undercut limit {chk.rho_limit:.3f} mm; "
-                f"works with {name} >= {x_need:.3f}, or z_H >= {z_need} at m = {cutter.m:g}, "
-                f"or m <= {m_max:.4f} mm at L = {L:.3f} mm"
-            )
+            head = f"{chk.curve}: convex rho_min {chk.rho_convex_min:.3f} mm < undercut limit {chk.rho_limit:.3f} mm"
+            options = []
+            if chk.rho_convex_min > 0:
+                x_need = cutter.h_a - chk.rho_convex_min * s2 / cutter.m
+                # rho and L scale with z_H at fixed m: z_H >= z_H * limit / rho_min
+                z_need = math.ceil(z_H * chk.rho_limit / chk.rho_convex_min / n) * n
+                m_max = chk.rho_convex_min * s2 / (cutter.h_a - x) if cutter.h_a > x else math.inf
+                if within(name, x_need):
+                    options.append(f"{name} >= {x_need:.3f}")
+                if within("z_H", z_need):
+                    options.append(f"z_H >= {z_need} at m = {cutter.m:g}")
+                if within("m", m_max) and m_max > 0:
+                    options.append(f"m <= {m_max:.4g} mm at L = {L:.3f} mm")
+            if options:
+                bits.append(f"{head}; works with {', or '.join(options)}")
+            else:
+                bits.append(f"{head}; no profile shift, tooth count or module within their limits makes it "
+                            "generable (a smoother law)")
         if chk.concave and not chk.r0 < chk.rho_concave_min:
             z0_max = math.ceil(2 * chk.rho_concave_min / cutter.m) - 1
-            bits.append(f"{chk.curve}: concave |rho|_min {chk.rho_concave_min:.3f} mm needs a shaper with "
-                        f"z0 <= {z0_max} (r0 < |rho|)")
+            if within("z0", z0_max) and z0_max >= 1:
+                bits.append(f"{chk.curve}: concave |rho|_min {chk.rho_concave_min:.3f} mm needs a shaper with "
+                            f"z0 <= {z0_max} (r0 < |rho|)")
+            else:
+                bits.append(f"{chk.curve}: concave |rho|_min {chk.rho_concave_min:.3f} mm: no shaper within the "
+                            "limits fits inside it (r0 < |rho|; a smoother law)")
     return bits

@@ -39,6 +39,9 @@ from .smoothed_law import SmoothedWalkingLaw  # the smoothed law, re-exported he
 _GAUSS_X, _GAUSS_W = np.polynomial.legendre.leggauss(96)
 #: samples per smooth piece of one leg when searching curvature / speed extremes
 _SAMPLES_PER_PIECE = 600
+#: most sign changes of a pitch curve's curvature over one period (32 concave stretches): a law past it is
+#: noise no cutter follows, refused before its root-findings (one per change) take minutes
+MAX_CURVATURE_FLIPS = 64
 #: default largest smoothing half-width searched (rad of the driven wheel)
 DELTA_MAX_DEFAULT = math.pi / 8
 
@@ -303,9 +306,16 @@ class PitchCurves:
         return r, d, dd
 
     def curvature(self, curve: str) -> "CurvatureSummary":
-        """Radius-of-curvature summary of one curve ('driven' or 'driver') over the cycle."""
+        """Radius-of-curvature summary of one curve ('driven' or 'driver') over the cycle; computed once per
+        pair and curve (every cutter tried against these curves reads the same summary)."""
         if curve not in ("driven", "driver"):
             raise InputError("curve", curve, "must be 'driven' or 'driver'")
+        cache = self.__dict__.setdefault("_curvature_cache", {})
+        if curve not in cache:
+            cache[curve] = self._curvature(curve)
+        return cache[curve]
+
+    def _curvature(self, curve: str) -> "CurvatureSummary":
         f_arr = self.rho_H if curve == "driven" else self.rho
         if curve == "driven":
             def den_arr(p):
@@ -341,10 +351,15 @@ class PitchCurves:
         intervals = []
         if np.any(concave):
             s = np.sign(D)
+            flips = np.flatnonzero((s[:-1] != s[1:]) & (s[:-1] != 0) & (s[1:] != 0))
+            if len(flips) > MAX_CURVATURE_FLIPS:  # a noisy law: its root-findings would grow with the noise
+                raise InputError(getattr(self.law, "key", "law"), f"{len(flips)} changes of curvature",
+                                 f"the {curve} pitch curve turns from convex to concave and back {len(flips)} times "
+                                 f"over one period, more than {MAX_CURVATURE_FLIPS}: no cutter generates such a curve; "
+                                 "a smoother law (fewer or smoother rows of a table)")
             edges = []
-            for k in range(len(phi) - 1):
-                if s[k] != s[k + 1] and s[k] != 0 and s[k + 1] != 0:
-                    edges.append(brentq(lambda p: float(den(p)), phi[k], phi[k + 1], xtol=ROOT_XTOL_FINE))
+            for k in flips:
+                edges.append(brentq(lambda p: float(den(p)), phi[k], phi[k + 1], xtol=ROOT_XTOL_FINE))
             bp = leg_breakpoints(self.law)
             lo = bp[0]
             pts = [lo] + edges + [bp[-1]]

@@ -16,21 +16,21 @@ radii > 0 (a curve through the axis is refused, naming the row).
 
 from __future__ import annotations
 
-import csv
-import io
 import math
 from pathlib import Path
 
 import numpy as np
 
 from ..errors import InputError
-from .table_law import TableLaw, read_table_text
+from .table_law import TableLaw, read_table_text, row_numbers, table_rows
 
 __all__ = ["PitchCurveLaw", "parse_pitch_curve", "read_pitch_curve"]
 
 COLUMNS = ("angle_deg", "radius_mm")
 MIN_ROWS = 8
 MAX_ROWS = 100_000
+#: largest radius of a pitch curve row (mm): a 10 m wheel
+RADIUS_MAX_MM = 1e4
 #: samples of phi(theta) per driver turn the law's spline goes through
 SAMPLES = 2048
 _GX, _GW = np.polynomial.legendre.leggauss(12)
@@ -42,22 +42,11 @@ def _bad(key, row, value, limit, column=""):
 
 def parse_pitch_curve(text: str, key: str = "pitch_curve_file"):
     """(angle_deg, radius_mm) of a CSV text with the header ``angle_deg,radius_mm``."""
-    rows = [r for r in csv.reader(io.StringIO(text)) if r and any(c.strip() for c in r)]
-    if not rows or tuple(c.strip() for c in rows[0]) != COLUMNS:
-        raise InputError(key, ",".join(rows[0])[:80] if rows else "(empty)", "the header must be angle_deg,radius_mm")
-    data = rows[1:]
-    if len(data) > MAX_ROWS:
-        raise InputError(key, f"{len(data)} rows", f"at most {MAX_ROWS} rows")
     a, r = [], []
-    for i, row in enumerate(data, start=1):
-        try:
-            x, y = (float(c) for c in row) if len(row) == 2 else (math.nan, None)
-        except ValueError:
-            raise _bad(key, i, ",".join(row)[:80], "two numbers") from None
-        if y is None:
-            raise _bad(key, i, ",".join(row)[:80], "two columns: angle_deg,radius_mm")
-        if not (math.isfinite(x) and math.isfinite(y)):
-            raise _bad(key, i, ",".join(row)[:80], "finite numbers")
+    for i, row in enumerate(table_rows(text, key, COLUMNS, MAX_ROWS), start=1):
+        x, y = row_numbers(key, i, row, COLUMNS)
+        if not y <= RADIUS_MAX_MM:
+            raise _bad(key, i, y, f"a radius of at most {RADIUS_MAX_MM:g} mm", "radius_mm")
         a.append(x)
         r.append(y)
     return tuple(a), tuple(r)
@@ -79,8 +68,9 @@ def _curve(angle_deg, radius_mm, key):
         if not r[i] > 0:
             raise _bad(key, i + 1, float(r[i]), "the pitch curve must not reach or cross the axis: radius > 0 mm",
                        "radius_mm")
-        if i and not a[i] > a[i - 1]:
-            raise _bad(key, i + 1, float(a[i]), f"must be strictly increasing (row {i}: {a[i - 1]:g})", "angle_deg")
+        if i and not a[i] - a[i - 1] > 1e-9 * 360.0:
+            raise _bad(key, i + 1, float(a[i]), f"must be strictly increasing (row {i}: {a[i - 1]:g}) by more than "
+                       "3.6e-07 deg", "angle_deg")
     closed = abs(a[-1] - a[0] - 360.0) < 1e-9
     if a[-1] - a[0] > 360.0 or (closed and abs(r[-1] - r[0]) > 1e-9 * r[0]):
         raise _bad(key, len(a), float(a[-1]), f"the rows span one turn: angles up to {a[0] + 360:g} deg "
@@ -123,7 +113,14 @@ class PitchCurveLaw(TableLaw):
         object.__setattr__(self, "rows", rows)
         object.__setattr__(self, "first_angle", a0)
         object.__setattr__(self, "_r", spl)
-        TableLaw.__init__(self, tuple(np.degrees(edges)), tuple(np.degrees(phi)), key)
+        try:
+            TableLaw.__init__(self, tuple(np.degrees(edges)), tuple(np.degrees(phi)), key)
+        except InputError as exc:  # about the law's own samples, not a row of the file: no row named
+            if not exc.parameter.startswith(f"{key} row"):
+                raise
+            why = exc.limit.split(":")[0].replace("the spline through the rows", "the law of the conjugate wheel")
+            raise InputError(key, f"{rows} rows", f"{why} (between the curve's rows): a smoother curve, or rows "
+                             "where its radius turns fastest") from None
 
     def driver_radius_given(self, theta):
         """The given curve's radius (mm, unscaled) at driver angle theta."""

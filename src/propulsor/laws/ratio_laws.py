@@ -192,8 +192,12 @@ class FourierLaw(_PeriodicLaw):
         g = self._g(th, 1)
         i = int(np.argmin(g))
         if not g[i] > 0:
-            key = "fourier_cos" if len(c) else "fourier_sin"
-            raise InputError(key, list(c if len(c) else s),
+            # the series that pulls d phi / d theta down there (the sum of its terms' slopes, the more negative)
+            t = th[i]
+            by_cos = float(np.sum(-self._j * self._c * np.sin(self._j * t)))
+            by_sin = float(np.sum(self._j * self._s * np.cos(self._j * t)))
+            key = "fourier_cos" if by_cos <= by_sin else "fourier_sin"
+            raise InputError(key, list(c if key == "fourier_cos" else s),
                              f"d phi / d theta = {g[i]:.4g} <= 0 at theta = {math.degrees(th[i]):.2f} deg: the "
                              "driven wheel would stop or turn back (the ratio must stay > 0)")
         ph = np.linspace(0.0, self.period, _GUESS_POINTS + 1)

@@ -21,7 +21,7 @@ import numpy as np
 from ..errors import InputError
 from .walking import invert_theta
 
-__all__ = ["TableLaw", "read_law_table", "parse_law_table"]
+__all__ = ["TableLaw", "read_law_table", "parse_law_table", "table_rows", "row_numbers"]
 
 #: columns of a law table, in this order
 COLUMNS = ("driver_deg", "driven_deg")
@@ -31,6 +31,8 @@ MIN_ROWS = 7
 MAX_ROWS = 100_000
 #: largest file read (bytes)
 MAX_BYTES = 8 << 20
+#: least step between two rows, as a share of the table's span (rows 1e-300 apart are one row)
+MIN_GAP = 1e-9
 #: tolerance on whole periods and whole driver turns (deg)
 CLOSE_TOL_DEG = 1e-6
 #: pieces of one period for the quadratures (Gauss per piece: the spline's knots are only C4)
@@ -44,28 +46,60 @@ def _bad(key: str, row: int, value, limit: str, column: str = "") -> InputError:
     return InputError(f"{key} row {row}{(' ' + column) if column else ''}", value, limit)
 
 
+#: longest field of a table's row (a number is at most numbers.MAX_CHARS; the rest is a refusal's)
+FIELD_MAX_CHARS = 256
+#: largest angle of a table row (deg): a period's rows lie within a few turns
+ANGLE_MAX_DEG = 1e5
+
+
+def table_rows(text: str, key: str, columns: tuple[str, str], max_rows: int) -> list[list[str]]:
+    """The data rows (lists of fields) of a CSV table text whose first non-empty row is `columns`; blank
+    rows left out.  InputError naming `key` for another header, a field over FIELD_MAX_CHARS (a row or the
+    header of a file that is no table echoes nothing of it), more than `max_rows` rows, or CSV that does
+    not parse."""
+    old = csv.field_size_limit(FIELD_MAX_CHARS)
+    try:
+        rows = []
+        for r in csv.reader(io.StringIO(text)):
+            if r and any(c.strip() for c in r):
+                rows.append(r)
+                if len(rows) > max_rows + 1:
+                    raise InputError(key, f"more than {max_rows} rows", f"at most {max_rows} rows")
+    except csv.Error as exc:
+        raise InputError(key, f"row {len(rows) + 1}", f"is not a CSV table {','.join(columns)} ({exc})") from None
+    finally:
+        csv.field_size_limit(old)
+    if not rows:
+        raise InputError(key, "(empty)", f"a table needs the header {','.join(columns)} and its rows")
+    if tuple(c.strip() for c in rows[0]) != columns:
+        raise InputError(key, "(its first line)", f"the header must be {','.join(columns)}: not a table of this kind")
+    return rows[1:]
+
+
+def row_numbers(key: str, i: int, r: list[str], columns: tuple[str, str]) -> tuple[float, float]:
+    """The two numbers of data row `i` (numbers.parse: plain ASCII digits, finite, not subnormal) within
+    ±ANGLE_MAX_DEG for an angle; InputError naming the row otherwise."""
+    from ..numbers import parse
+
+    if len(r) != 2:
+        raise _bad(key, i, ",".join(r)[:80], f"two columns: {','.join(columns)}")
+    out = []
+    for col, cell in zip(columns, r):
+        try:
+            v = float(parse(cell, key))
+        except InputError as exc:
+            raise _bad(key, i, cell.strip()[:40], exc.limit, col) from None
+        if col.endswith("_deg") and abs(v) > ANGLE_MAX_DEG:
+            raise _bad(key, i, v, f"an angle within ±{ANGLE_MAX_DEG:g} deg", col)
+        out.append(v)
+    return out[0], out[1]
+
+
 def parse_law_table(text: str, key: str = "law_file") -> tuple[tuple[float, ...], tuple[float, ...]]:
     """(driver_deg, driven_deg) of a CSV text with the header ``driver_deg,driven_deg``."""
-    rows = list(csv.reader(io.StringIO(text)))
-    rows = [r for r in rows if r and any(c.strip() for c in r)]
-    if not rows:
-        raise InputError(key, "(empty)", "a law table needs the header driver_deg,driven_deg and its rows")
-    head = tuple(c.strip() for c in rows[0])
-    if head != COLUMNS:
-        raise InputError(key, ",".join(head)[:80], "the header must be driver_deg,driven_deg")
-    data = rows[1:]
-    if len(data) > MAX_ROWS:
-        raise InputError(key, f"{len(data)} rows", f"at most {MAX_ROWS} rows")
     th, ph = [], []
-    for i, r in enumerate(data, start=1):
-        if len(r) != 2:
-            raise _bad(key, i, ",".join(r)[:80], "two columns: driver_deg,driven_deg")
-        try:
-            a, b = float(r[0]), float(r[1])
-        except ValueError:
-            raise _bad(key, i, ",".join(r)[:80], "two numbers") from None
-        if not (math.isfinite(a) and math.isfinite(b)):
-            raise _bad(key, i, ",".join(r)[:80], "finite numbers")
+    for i, r in enumerate(table_rows(text, key, COLUMNS, MAX_ROWS), start=1):
+        a, b = row_numbers(key, i, r, COLUMNS)
         th.append(a)
         ph.append(b)
     return tuple(th), tuple(ph)
@@ -113,11 +147,14 @@ class TableLaw:
         th, ph, key = np.asarray(self.driver_deg, float), np.asarray(self.driven_deg, float), self.key
         if len(th) != len(ph) or len(th) < MIN_ROWS:
             raise InputError(key, f"{len(th)} rows", f"a law table needs at least {MIN_ROWS} rows over one period")
-        for i in range(1, len(th)):
-            for col, v in (("driver_deg", th), ("driven_deg", ph)):
-                if not v[i] > v[i - 1]:
-                    raise _bad(key, i + 1, float(v[i]),
-                               f"must be strictly increasing (row {i}: {v[i - 1]:g}): the ratio must stay > 0", col)
+        for col, v in (("driver_deg", th), ("driven_deg", ph)):
+            gap = MIN_GAP * max(float(v[-1] - v[0]), 0.0)  # rows closer than that: a ratio of rounding errors
+            bad = np.flatnonzero(~(np.diff(v) > gap))
+            if len(bad):
+                i = int(bad[0]) + 1
+                raise _bad(key, i + 1, float(v[i]), f"must be strictly increasing (row {i}: {v[i - 1]:g})"
+                           + (f" by more than {gap:.3g} deg" if v[i] > v[i - 1] else "") + ": the ratio must stay > 0",
+                           col)
         span_ph, span_th = ph[-1] - ph[0], th[-1] - th[0]
         N = 360.0 / span_ph
         if not abs(N - round(N)) * span_ph < CLOSE_TOL_DEG:

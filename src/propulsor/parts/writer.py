@@ -6,7 +6,7 @@ A part module computes; it hands results to the writer:
     w.derived.update(...)             derived values for manifest/report
     w.add_checks([...])               engineering checks of the part
     w.add_solid(name, solid, genus)   STEP + STL + 3MF, B-rep/STEP/mesh checks, views/<name>.png
-    w.add_assembly(name, components)  assembly STEP with named, placed components; <name>.glb (+ .glb.js)
+    w.add_assembly(name, components)  assembly STEP with named, placed components; <name>.glb
                                       and views/<name>.png from the solids' meshes
     w.add_known_mesh(solid, V, F)     a mesh the part made anyway, for the assemblies' GLB and picture
     w.add_dxf(name, cut, ref)         DXF (CUT / REF layers, mm)
@@ -111,7 +111,7 @@ def mesh_of(solid, forked: bool):
 
 def assembly_model(folder: str, name: str, meshes: dict, components, from_below: bool = False,
                    motions=()) -> None:
-    """``<name>.glb`` (+ ``.glb.js``) and ``views/<name>.png`` of an assembly from its solids' meshes;
+    """``<name>.glb`` and ``views/<name>.png`` of an assembly from its solids' meshes;
     components: (component name, solid key, 4×4 placement mm); from_below: the picture seen from below;
     motions: the GLB's animations (:func:`export.glb.write_glb`).  The two halves,
     :func:`assembly_glb` and :func:`assembly_picture`, are independent (the writer runs them side by side)."""
@@ -120,11 +120,10 @@ def assembly_model(folder: str, name: str, meshes: dict, components, from_below:
 
 
 def assembly_glb(folder: str, name: str, meshes: dict, components, motions=()) -> None:
-    """``<name>.glb`` and ``<name>.glb.js`` of an assembly (:func:`assembly_model`)."""
-    from ..export.glb import write_glb, write_glb_script
+    """``<name>.glb`` of an assembly (:func:`assembly_model`): the pages that show it carry its bytes as data."""
+    from ..export.glb import write_glb
 
-    glb = write_glb(Path(folder) / f"{name}.glb", name, meshes, components, motions)
-    write_glb_script(glb)
+    write_glb(Path(folder) / f"{name}.glb", name, meshes, components, motions)
 
 
 def assembly_picture(folder: str, name: str, meshes: dict, components, from_below: bool = False) -> None:
@@ -296,7 +295,7 @@ class OutputWriter:
         picture_from_below: the assembly's picture is the isometric view from below (its main part
         would be hidden under the others seen from above).
 
-        Beside the STEP: ``<name>.glb`` (+ ``.glb.js``) and the picture ``views/<name>.png``, made at
+        Beside the STEP: ``<name>.glb`` and the picture ``views/<name>.png``, made at
         :meth:`finish` from the meshes of the solids (a solid added with :meth:`add_solid` is not
         tessellated again; another is tessellated once in a worker)."""
         from ..export.glb import placement_matrix
@@ -319,8 +318,8 @@ class OutputWriter:
             placed.append((str(comp[0]), key, placement_matrix(comp)))
         self._assemblies.append((name, placed, picture_from_below))
         self.extra_files += [f"{name}.glb"]
-        self.intended.update((f"{name}.glb", f"{name}.glb.js"))
-        model = {"path": f"{name}.glb", "script": f"{name}.glb.js", "title": name, "step": p.name,
+        self.intended.add(f"{name}.glb")
+        model = {"path": f"{name}.glb", "title": name, "step": p.name,
                  "components": [c for c, _, _ in placed], "picture": f"{VIEWS}/{name}.png"}
         if picture_from_below:  # the 3D view's first direction too (the part's frame, z up)
             from ..export.render import VIEW_DIR_BELOW

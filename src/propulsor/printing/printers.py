@@ -149,13 +149,15 @@ def _read_profile_file(path: str) -> dict:
 def parse_bed(text: str) -> dict:
     """'180x180x180' (or 180×180×180, 180x180 with the height = the width): the bed keys of a quick
     profile; InputError naming --bed otherwise."""
-    parts = re.split(r"\s*[x×X*]\s*", text.strip())
-    try:
-        vals = [float(v) for v in parts]
-    except ValueError:
-        vals = []
-    if len(vals) not in (2, 3) or not all(v == v for v in vals):
+    from ..numbers import parse
+
+    parts = re.split(r"\s*[x×X*]\s*", text.strip()) if isinstance(text, str) else []
+    if len(parts) not in (2, 3):
         raise InputError("--bed", text, "must be WIDTHxDEPTHxHEIGHT in mm, e.g. 180x180x180")
+    try:
+        vals = [float(parse(v, "--bed")) for v in parts]
+    except InputError:
+        raise InputError("--bed", text, "must be WIDTHxDEPTHxHEIGHT in mm in plain digits, e.g. 180x180x180") from None
     if len(vals) == 2:
         vals.append(min(vals))
     x, y, z = vals

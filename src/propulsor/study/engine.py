@@ -10,6 +10,7 @@ import logging
 import math
 import os
 import time
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -21,8 +22,6 @@ from .table import Table
 
 #: the marker that says a folder holds a study propulsor wrote (it may be written over)
 MARKER = "study.json"
-#: seconds to wait for a scheduler to answer
-CONNECT_TIMEOUT_S = 10
 
 
 @dataclass
@@ -35,23 +34,44 @@ class Outcome:
     folder: Path
 
 
-def connect(scheduler: str | None, workers: int | None):
+def connect(scheduler: str | None, workers: int | None, worker_wait: float | None = None, progress=lambda msg: None):
     """(client, cluster or None): a client of the scheduler at `scheduler`, or of a new LocalCluster of
-    `workers` processes (the machine's cores when None).  InputError when no scheduler answers."""
+    `workers` processes (the machine's cores when None).  InputError when the address is not tcp://HOST:PORT
+    or no scheduler answers there within cluster.ANSWER_TIMEOUT_S (connection, handshake and answer);
+    EnvironmentFailure when it has no worker after `worker_wait` s (cluster.WORKER_WAIT_S when None)."""
+    from . import cluster as dask_cluster
+    from .cluster import WORKER_WAIT_S, probe, scheduler_address, wait_for_workers
+
     for name in ("distributed", "distributed.worker", "distributed.scheduler", "distributed.nanny",
-                 "distributed.core", "distributed.comm", "distributed.batched", "tornado"):
+                 "distributed.core", "distributed.comm", "distributed.batched", "distributed.client", "tornado"):
         logging.getLogger(name).setLevel(logging.CRITICAL)
     from distributed import Client
 
-    if scheduler:
+    if scheduler is not None:
+        address = scheduler_address(scheduler)
+        probe(address)  # bounded: a listener that never answers is refused here, before any Client exists
         try:
-            client = Client(scheduler, timeout=CONNECT_TIMEOUT_S, set_as_default=False)
+            client = Client(address, timeout=dask_cluster.ANSWER_TIMEOUT_S, set_as_default=False)
         except (OSError, TimeoutError, ValueError) as exc:
             raise InputError("--scheduler", scheduler, f"no Dask scheduler answers there ({type(exc).__name__}); "
                              "start one with `dask scheduler` and workers with `dask worker ADDRESS`") from None
+        try:
+            wait_for_workers(client, address, WORKER_WAIT_S if worker_wait is None else worker_wait, progress)
+        except BaseException:
+            client.close()
+            raise
         return client, None
+    import shutil
+    import tempfile
+
     n = workers or os.cpu_count() or 1
-    cluster = local_cluster(n)
+    scratch = tempfile.mkdtemp(prefix="propulsor-dask-")
+    try:
+        cluster = local_cluster(n, scratch)
+    except BaseException:
+        shutil.rmtree(scratch, ignore_errors=True)
+        raise
+    cluster.propulsor_scratch = scratch  # removed when the study lets the cluster go
     return Client(cluster, set_as_default=False), cluster
 
 
@@ -75,23 +95,61 @@ WORKER_CONFIG = {
 }
 
 
-def local_cluster(n: int):
+def local_cluster(n: int, directory: str | None = None):
     """A LocalCluster of `n` worker processes of one thread each, with :data:`WORKER_CONFIG`; its HTTP
-    server on any free port of 127.0.0.1."""
+    server on any free port of 127.0.0.1; the workers' scratch space (their ``worker-*.dirlock`` files) in
+    `directory` when given (the engine's own temporary folder, removed with the cluster even on Ctrl-C)."""
     import dask
     from distributed import LocalCluster
 
-    with dask.config.set(WORKER_CONFIG):
+    extra = {"local_directory": directory} if directory else {}
+    config = {**WORKER_CONFIG, "temporary-directory": directory} if directory else WORKER_CONFIG
+    with dask.config.set(config):
         return LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address="127.0.0.1:0",
-                            silence_logs=logging.CRITICAL)
+                            silence_logs=logging.CRITICAL, **extra)
 
 
-def vet_folder(out: Path) -> None:
-    """`out` may hold the study: missing, empty, or a study folder propulsor wrote (InputError)."""
+def vet_folder(out: Path, build_best: int = 0) -> None:
+    """`out` may hold the study: a UTF-8 path within the length limits, missing, empty, or a study folder
+    propulsor wrote; the folders ``best/<rank>/`` that `build_best` writes empty or a propulsor build's
+    (the rules of ``propulsor build --out`` without --force).  InputError otherwise."""
+    from .. import output_folder as of
+
+    of.representable(Path(os.path.abspath(out)))
     if out.is_symlink() or (out.exists() and not out.is_dir()):
         raise InputError("--out", str(out), "must be a folder (not a file or a link)")
     if out.is_dir() and any(out.iterdir()) and not (out / MARKER).is_file():
         raise InputError("--out", str(out), f"holds files but no {MARKER}: not a study folder; choose another")
+    for rank in range(1, build_best + 1):
+        best = out / "best" / str(rank)
+        if os.path.lexists(best):
+            try:
+                of.vet_target(best)
+            except InputError as exc:
+                raise InputError("--build-best", build_best, f"{best}: {exc.limit}") from None
+
+
+@contextmanager
+def holding(out: Path, wait: bool = True):
+    """The study's folder locked for the whole study (its build-best too): the lock of a build's output
+    (output_folder.OutputLock, ``.<name>.lock`` beside it), so that one study or one build owns a folder at
+    a time.  With `wait` False a held lock is InputError; else one line says whom it waits for."""
+    import sys
+
+    from .. import output_folder as of
+
+    of.representable(Path(os.path.abspath(out)))
+    of.prepare_parent(out)
+    lock = of.OutputLock(out)
+    try:
+        lock.acquire(wait=wait, on_wait=lambda pid: print(f"propulsor: {out} is in use by process {pid}; waiting",
+                                                          file=sys.stderr, flush=True))
+    except of.Busy as busy:
+        raise InputError("--out", str(out), f"is in use by process {busy.pid} (--no-wait)") from None
+    try:
+        yield lock
+    finally:
+        lock.release()
 
 
 def write_marker(out: Path, study: Study, rows=None, rank=None) -> None:
@@ -135,16 +193,31 @@ def _span(s: float) -> str:
 
 
 def run(study: Study, out: Path, *, scheduler: str | None = None, workers: int | None = None,
-        resume: bool = False, progress=lambda msg: None, client=None) -> Outcome:
+        resume: bool = False, progress=lambda msg: None, client=None, build_best: int = 0,
+        wait: bool = True, worker_wait: float | None = None) -> Outcome:
     """Run the study into folder `out`: results.csv, results.parquet, front.csv, pareto_front.png, study.html
-    (and variants/ at depth build).  Nothing is written before the study file, the folder and the scheduler are known good."""
-    from .. import __version__
+    (and variants/ at depth build; best/<rank>/ of the `build_best` best).  The folder is locked for all of it
+    (:func:`holding`); nothing is written before the study file, the folder and the scheduler are known good."""
+    with holding(out, wait=wait):
+        vet_folder(out, build_best)  # as it is now, with the lock held
+        outcome = _run(study, out, scheduler=scheduler, workers=workers, resume=resume, progress=progress,
+                       client=client, worker_wait=worker_wait)
+        if build_best:
+            from . import _build_best
 
-    vet_folder(out)
+            _build_best(study, outcome, build_best, progress=progress)
+        return outcome
+
+
+def _run(study: Study, out: Path, *, scheduler, workers, resume, progress, client, worker_wait) -> Outcome:
+    from .. import __version__
+    from .cluster import WORKER_WAIT_S
+
     own = client is None
     cluster = None
+    wait_s = WORKER_WAIT_S if worker_wait is None else worker_wait
     if own:
-        client, cluster = connect(scheduler, workers)
+        client, cluster = connect(scheduler, workers, wait_s, progress)
     try:
         n_workers = len(client.scheduler_info().get("workers", {}))
         out.mkdir(parents=True, exist_ok=True)
@@ -158,24 +231,39 @@ def run(study: Study, out: Path, *, scheduler: str | None = None, workers: int |
             progress(f"{study.title}: {len(study.variants)} variants at depth {study.depth} on {n_workers} Dask "
                      f"worker(s)" + (f"; {before} already in {table.path}" if before else ""))
             t0 = time.perf_counter()
-            _evaluate_all(client, study, out, todo, table, Rate(len(study.variants), before, progress))
+            _evaluate_all(client, study, out, todo, table, Rate(len(study.variants), before, progress),
+                          scheduler or "the local cluster", wait_s)
             seconds = time.perf_counter() - t0
         finally:
             table.close()
         rows = sorted(table.rows, key=lambda r: int(r["variant"]))
         rank = ranked(study, rows)
         write_front(out, study, rank)
-        points = plot_front(out, study, rows, rank)
+        try:
+            points = plot_front(out, study, rows, rank)
+        except OSError:
+            raise
+        except Exception as exc:  # noqa: BLE001 - the picture is not worth the study: the page without it
+            (out / "pareto_front.png").unlink(missing_ok=True)
+            progress(f"the Pareto front's picture was not drawn ({type(exc).__name__}: {exc})")
+            points = None
         from .page import write_page
 
         write_page(out, study, rows, rank, points=points)
         write_marker(out, study, rows, rank)
         return Outcome(rows, rank, len(todo), seconds, n_workers, out)
+    except OSError as exc:  # a write refused without a name (a full disk): the study's folder
+        if exc.filename is None:
+            exc.filename = str(out)
+        raise
     finally:
         if own:
             client.close()
             if cluster is not None:
                 cluster.close()
+                import shutil
+
+                shutil.rmtree(getattr(cluster, "propulsor_scratch", ""), ignore_errors=True)
 
 
 def expected_seconds(study: Study, values: dict) -> float:
@@ -194,10 +282,14 @@ def expected_seconds(study: Study, values: dict) -> float:
         return 0.0
 
 
-def _evaluate_all(client, study: Study, out: Path, todo, table: Table, rate: Rate) -> None:
+def _evaluate_all(client, study: Study, out: Path, todo, table: Table, rate: Rate, where: str = "",
+                  worker_wait: float = 60.0) -> None:
     """Submit every variant, the longest first by the size estimate (the last tasks short, so that no
-    worker idles at the end while another finishes a long one); a row as each finishes."""
+    worker idles at the end while another finishes a long one); a row as each finishes.  When the cluster
+    has had no worker for `worker_wait` s, EnvironmentFailure (the finished rows are in the table)."""
     from distributed import as_completed
+
+    from .cluster import no_worker
 
     wanted = study.values
     source = str(study.part_file)
@@ -208,18 +300,38 @@ def _evaluate_all(client, study: Study, out: Path, todo, table: Table, rate: Rat
         fut = client.submit(evaluate, study.part_type, study.base, source, values, study.depth, wanted, build_dir,
                             key=f"propulsor-variant-{key}", pure=False, retries=1, priority=len(order) - j)
         futures[fut] = (i, values, key)
-    for fut in as_completed(list(futures), loop=client.loop):
-        i, values, key = futures.pop(fut)
-        try:
-            res = fut.result()
-        except Exception as exc:  # the task itself was lost (its workers kept dying): a row saying so
-            res = {"values": {}, "all_checks_passed": None, "failed_checks": "", "status": "error",
-                   "reason": f"{type(exc).__name__}: {exc}", "seconds": None, "worker": ""}
-        row = {"variant": i, "key": key, **values, **res.pop("values"), **res}
-        if row["status"] == "ok":
-            why = requirement_failure(study, row)
-            if why:
-                row["status"], row["reason"] = "rejected", why
-        table.add(row)
-        fut.release()
-        rate.tick(row)
+    finished = as_completed(list(futures), loop=client.loop)
+    looked = alone_since = None
+    while not finished.is_empty():
+        batch = finished.next_batch(block=False)
+        if not batch:
+            now = time.monotonic()
+            if looked is None or now - looked >= 1.0:  # are there workers at all? (once a second)
+                looked = now
+                if client.nthreads():
+                    alone_since = None
+                elif alone_since is None:
+                    alone_since = now
+                elif now - alone_since > worker_wait:
+                    raise no_worker(where, worker_wait, during=True)
+            time.sleep(0.05)
+            continue
+        for fut in batch:
+            _row(study, futures.pop(fut), fut, table, rate)
+
+
+def _row(study: Study, which, fut, table: Table, rate: Rate) -> None:
+    i, values, key = which
+    try:
+        res = fut.result()
+    except Exception as exc:  # the task itself was lost (its workers kept dying): a row saying so
+        res = {"values": {}, "all_checks_passed": None, "failed_checks": "", "status": "error",
+               "reason": f"{type(exc).__name__}: {exc}", "seconds": None, "worker": ""}
+    row = {"variant": i, "key": key, **values, **res.pop("values"), **res}
+    if row["status"] == "ok":
+        why = requirement_failure(study, row)
+        if why:
+            row["status"], row["reason"] = "rejected", why
+    table.add(row)
+    fut.release()
+    rate.tick(row)

@@ -44,11 +44,46 @@ def _plain(v):
     return str(v)
 
 
-def _noncircular_design_values(part) -> dict:
+def _smooth_law_design_values(part) -> tuple[dict, list]:
+    """The design-only derived values of a pair whose law has no hub (elliptical, Fourier, table, pitch
+    curve): the build's names and expressions (parts/noncircular_pair/law_outputs.py, law_derived)."""
+    import numpy as np
+
+    dd, p = part.design, part.params
+    d = dd.d
+    law = d.law
+    g = d.smoothing.generability
+    U = law.U(np.linspace(0.0, law.period, 4001))
+    out = {"center_distance_mm": d.L, "mounting_distance_mm": dd.mount, "module_mm": d.m, "driver_teeth": d.z,
+           "driven_teeth": d.z_H, "driver_turns": law.n, "method": d.method, "law": law.kind, "law_periods": law.periods,
+           "ratio_min": float(np.min(U)), "ratio_max": float(np.max(U)), "closure_error_rad": d.closure_error,
+           "driver_rho_min_mm": g.driver.rho_convex_min, "driver_rho_limit_mm": g.driver.rho_limit,
+           "driven_rho_min_mm": g.driven.rho_convex_min, "driven_rho_limit_mm": g.driven.rho_limit,
+           "driven_concave_rho_min_mm": g.driven.rho_concave_min, "shaper_r0_mm": g.driven.r0,
+           "driver_shift": p.driver_shift, "driven_shift": 0.0 - p.driver_shift,
+           "tip_shortened_teeth": d.driver.shortened_teeth + d.driven.shortened_teeth,
+           "shaper_cut_teeth": d.driver.shaper_teeth + d.driven.shaper_teeth,
+           "undercut_teeth": d.driver.undercut_teeth + d.driven.undercut_teeth}
+    if law.kind == "elliptical":
+        out.update({"eccentricity": law.e, "focal_parameter_mm": law.q * d.L})
+    if law.kind == "pitch_curve":
+        out.update({"pitch_curve_center_distance_mm": law.L0, "pitch_curve_scale": d.L / law.L0})
+    if d.shaper is not None:
+        out.update({"rack_profile": p.rack_profile, "shaper_d0_mm": d.shaper.d0_mm, "shaper_z0": d.shaper.z0,
+                    "shaper_x0": d.shaper.x0, "shaper_standard": d.shaper.standard})
+    return out, []
+
+
+def _noncircular_design_values(part) -> tuple[dict, list]:
     """The noncircular pair's derived values that come from its design alone (the build's names and
-    expressions: parts/noncircular_pair/outputs.py, checks_and_derived)."""
+    expressions: parts/noncircular_pair/outputs.py, checks_and_derived; a law without a hub:
+    :func:`_smooth_law_design_values`)."""
+    from ..laws.law import is_walking
+
     dd = part.design
     d = dd.d
+    if not is_walking(d.law):
+        return _smooth_law_design_values(part)
     out = {"center_distance_mm": d.L, "mounting_distance_mm": dd.mount, "module_mm": d.m, "driver_teeth": d.z,
            "driven_teeth": d.z_H, "driver_turns": d.law.n, "method": d.method, "smoothing_deg": d.smoothing_deg,
            "speed_ripple": d.ripple.ripple, "speed_ripple_phi_min_deg": math.degrees(d.ripple.phi_min),
@@ -151,7 +186,7 @@ def _evaluate(part_type, base, source, values, depth, wanted, build_dir) -> dict
         else:
             if depth == "build" and build_dir:
                 try:
-                    part.write(build_dir, force=True, keep_failed=True)
+                    part.write(build_dir, keep_failed=True)  # a folder only a build wrote is replaced
                 except CheckFailed:
                     pass
             derived, checks = part.build.derived, list(part.build.checks)
@@ -168,8 +203,8 @@ def _evaluate(part_type, base, source, values, depth, wanted, build_dir) -> dict
         missing = [n for n in wanted if n not in derived]
         if missing:
             row["status"] = "error"
-            row["reason"] = f"{missing[0]}: not computed at depth {depth}" + (
-                " (depth build computes it)" if depth != "build" else "")
+            row["reason"] = f"{missing[0]}: not computed at depth {depth} for this variant" + (
+                " (a deeper depth may compute it)" if depth != "build" else "")
     except InputError as exc:
         row["status"], row["reason"] = "input error", str(exc)
     except Exception as exc:  # the variant's own failure is a row, never the end of the study

@@ -7,25 +7,12 @@ from __future__ import annotations
 import html
 from pathlib import Path
 
+from ..export.html import TABLE_SORT_SCRIPT as SCRIPT, page, write_atomically
 from .results import FRONT_PNG, cell, columns
 from .spec import Study
 
 PAGE = "study.html"
 
-_SCRIPT = """
-document.querySelectorAll('th').forEach(function (th, col) {
-  th.addEventListener('click', function () {
-    var body = th.closest('table').tBodies[0], rows = Array.prototype.slice.call(body.rows);
-    var dir = th.dataset.dir === 'asc' ? -1 : 1; th.dataset.dir = dir === 1 ? 'asc' : 'desc';
-    rows.sort(function (a, b) {
-      var x = a.cells[col].dataset.v, y = b.cells[col].dataset.v, nx = parseFloat(x), ny = parseFloat(y);
-      if (!isNaN(nx) && !isNaN(ny)) return dir * (nx - ny);
-      return dir * x.localeCompare(y);
-    });
-    rows.forEach(function (r) { body.appendChild(r); });
-  });
-});
-"""
 
 _STYLE = ("body{font-family:sans-serif;margin:1.5em}table{border-collapse:collapse;font-size:12px}"
           "th,td{border:1px solid #ccc;padding:2px 6px;text-align:right}th{cursor:pointer;background:#eee}"
@@ -86,14 +73,10 @@ def write_page(folder: Path, study: Study, rows: list[dict], rank: list[tuple[in
     objectives = ", ".join(f"{'minimize' if n in study.minimize else 'maximize'} {n}" for n in study.objectives)
     req = "; ".join(str(q) for q in study.require) or "none"
     img = _front_map(folder, points, rows, study, best)
-    text = (f"<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>{e(study.title)}</title>"
-            f"<style>{_STYLE}</style></head><body><h1>{e(study.title)}</h1>"
-            f"<p>{len(rows)} variants of {e(study.part_file.name)} ({e(study.part_type)}) at depth {e(study.depth)}; "
-            f"{e(objectives)}; requirements: {e(req)}; {len(rank)} meet them (the front is shaded). "
-            f"Click a column to sort; a variant's number, and its point on the picture, link to its files where the "
-            f"study built them (else a point links to its row).</p>"
-            f"{img}<table><thead><tr>{head}</tr></thead><tbody>{''.join(body)}</tbody></table>"
-            f"<script>{_SCRIPT}</script></body></html>\n")
-    path = folder / PAGE
-    path.write_text(text, encoding="utf-8")
-    return path
+    body_html = (f"<h1>{e(study.title)}</h1>"
+                 f"<p>{len(rows)} variants of {e(study.part_file.name)} ({e(study.part_type)}) at depth "
+                 f"{e(study.depth)}; {e(objectives)}; requirements: {e(req)}; {len(rank)} meet them (the front is "
+                 f"shaded). Click a column to sort; a variant's number, and its point on the picture, link to its "
+                 f"files where the study built them (else a point links to its row).</p>"
+                 f"{img}<table><thead><tr>{head}</tr></thead><tbody>{''.join(body)}</tbody></table>")
+    return write_atomically(folder / PAGE, page(study.title, body_html, style=_STYLE, script=SCRIPT))

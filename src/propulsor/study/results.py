@@ -72,6 +72,7 @@ def plot_front(folder: Path, study: Study, rows: list[dict], rank: list[tuple[in
     import matplotlib.pyplot as plt
 
     objs = study.objectives
+    tex = _plain  # every text of the picture as written: a "$" never starts matplotlib's mathtext
     front = [r for layer, r in rank if layer == 1]
     others = [r for layer, r in rank if layer > 1]
     refused = [r for r in rows if r.get("status") == "rejected"
@@ -95,13 +96,13 @@ def plot_front(folder: Path, study: Study, rows: list[dict], rank: list[tuple[in
                 x, y = xy([r])
                 ax.annotate(str(r["variant"]), (x[0], y[0]), fontsize=7, xytext=(3, 3), textcoords="offset points")
     if len(objs) >= 2:
-        ax.set_xlabel(f"{objs[0]} ({'min' if objs[0] in study.minimize else 'max'})")
-        ax.set_ylabel(f"{objs[1]} ({'min' if objs[1] in study.minimize else 'max'})")
+        ax.set_xlabel(tex(f"{objs[0]} ({'min' if objs[0] in study.minimize else 'max'})"))
+        ax.set_ylabel(tex(f"{objs[1]} ({'min' if objs[1] in study.minimize else 'max'})"))
     else:
         ax.set_xlabel("variant")
-        ax.set_ylabel(f"{objs[0]} ({'min' if objs[0] in study.minimize else 'max'})")
+        ax.set_ylabel(tex(f"{objs[0]} ({'min' if objs[0] in study.minimize else 'max'})"))
     extra = f"; front over {', '.join(objs)}" if len(objs) > 2 else ""
-    ax.set_title(f"{study.title}: {len(rank)} of {len(rows)} variants meet the requirements{extra}", fontsize=9)
+    ax.set_title(tex(f"{study.title}: {len(rank)} of {len(rows)} variants meet the requirements{extra}"), fontsize=9)
     ax.grid(True, alpha=0.3)
     if front or others or refused:
         ax.legend(fontsize=8)
@@ -116,6 +117,11 @@ def plot_front(folder: Path, study: Study, rows: list[dict], rank: list[tuple[in
             points.append((r["variant"], int(round(px)), int(round(height - py))))
     plt.close(fig)
     return points
+
+
+def _plain(text: str) -> str:
+    """`text` for matplotlib as it is written: "$" escaped (no mathtext), control characters as spaces."""
+    return "".join(" " if ord(c) < 32 else c for c in str(text)).replace("$", r"\$")
 
 
 def requirement_failure(study: Study, row: dict) -> str:

@@ -150,11 +150,15 @@ def _values_of(name: str, spec, fld, sampling: bool) -> list | tuple:
     integer = fld[1] is int
     if sampling:
         return (lo, hi, integer)
-    step = spec["step"]
-    if isinstance(step, bool) or not isinstance(step, (int, float)) or not step > 0 or not math.isfinite(step):
+    from ..numbers import number
+
+    step = number(spec["step"], f"{where}.step")
+    if not step > 0:
         raise InputError(f"{where}.step", step, "must be a number > 0")
     if integer and not isinstance(step, int):
         raise InputError(f"{where}.step", step, "must be a whole number (the parameter is whole)")
+    if (hi - lo) / step > MAX_VARIANTS:  # before counting: a step of 5e-324 names more values than a float holds
+        raise InputError(where, spec, f"names more than {MAX_VARIANTS} values")
     n = int(math.floor((hi - lo) / step + 1e-9)) + 1
     if n > MAX_VARIANTS:
         raise InputError(where, spec, f"names more than {MAX_VARIANTS} values")
@@ -231,10 +235,18 @@ def load_study(path: str | Path) -> Study:
         raise InputError("STUDY", str(path), str(exc)) from None
     except OSError as exc:
         raise InputError("STUDY", str(path), f"cannot be read ({exc.strerror or exc})") from None
+    from ..numbers import nesting
+    from ..params import toml_error
+
     try:
         doc = tomllib.loads(raw.decode("utf-8"))
-    except (UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
-        raise InputError("STUDY", str(path), f"is not valid TOML: {str(exc).splitlines()[0]}") from None
+    except UnicodeDecodeError as exc:
+        raise InputError("STUDY", str(path), f"is not UTF-8 ({exc.reason} at byte {exc.start})") from None
+    except ValueError as exc:  # TOMLDecodeError, or an integer of more than 4 300 digits
+        raise InputError("STUDY", str(path), toml_error(exc)) from None
+    except RecursionError:
+        raise InputError("STUDY", str(path), "nests arrays or tables too deeply") from None
+    nesting(doc, "STUDY", 4)
     for key, value in doc.items():
         if key not in _KEYS:
             raise InputError(key, value, "unknown section of a study file (study, vary, objectives)")
@@ -308,6 +320,15 @@ def load_study(path: str | Path) -> Study:
                 base_values = _base_design_names(type_name, base, part_file)
             if n not in base_values:
                 raise InputError(f"objectives.{where}", n, f"is not a derived value of a {type_name} manifest")
+    if depth == "design":  # every name must be one the design gives (the base part's, as each variant's)
+        if base_values is None:
+            base_values = _base_design_names(type_name, base, part_file)
+        for where, names in (("minimize", minimize), ("maximize", maximize), ("record", record),
+                             ("require", tuple(r.name for r in require))):
+            for n in names:
+                if n != ALL_CHECKS and n not in base_values:
+                    raise InputError(f"objectives.{where}", n, f"is not computed at depth design for this {type_name} "
+                                     f"(its design gives {len(base_values)} values); depth proof or build may give it")
     if not minimize and not maximize:
         raise InputError("objectives", obj, "must name at least one value to minimize or maximize")
     return Study(path, title, part_file, type_name, base, depth, varied, variants, minimize, maximize, require, record)

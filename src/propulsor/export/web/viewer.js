@@ -5,8 +5,10 @@
  * camera's controls (OrbitControls: left drag turns, right drag / shift+drag / two fingers pan, wheel and
  * pinch zoom toward the cursor), picking (Raycaster) and the motion's poses (AnimationMixer plays the
  * GLB's animation).  What stays ours, because no library does it for this page:
- *  - the GLB's bytes come from a classic script twin (<name>.glb.js, in window.PROPULSOR_GLB under its
- *    own URL): a page opened from file:// may not fetch() the GLB beside it;
+ *  - the GLB's bytes come from a data block of the page (<script type="application/octet-stream">, base64,
+ *    never run): a page opened from file:// may not fetch() the GLB beside it, and no file beside the page
+ *    is ever run; the bytes are checked before three.js reads them (glbProblem: header, chunks, lists,
+ *    no external URI, the nodes a forest, at most MAX_TRIANGLES drawn);
  *  - any number of views on one page: ONE WebGL context (one renderer, its canvas never shown) draws
  *    each view in turn and copies the image into the view's own 2D canvas; a view is loaded when it
  *    comes into sight and drawn only when it changes while in sight; a lost context is waited for,
@@ -15,8 +17,8 @@
  *    section plane (x, y or z of the part's frame, and where), the exploded view (components moved
  *    away from the assembly's centre), the motion (a slider through the poses of the GLB's first
  *    animation, one key per pose, and play / pause), a double click fits the view again.
- * Figures: <figure class="viewer" data-models='[{"script": "...glb.js", "title": "...", "view": [x, y, z]}]'>
- * ("view": the first camera direction, y up; optional) holding a
+ * Figures: <figure class="viewer" data-models='[{"block": "glb-...", "title": "...", "view": [x, y, z]}]'>
+ * ("block": the id of the model's data block; "view": the first camera direction, y up; optional) holding a
  * <canvas>, an optional <select>, a .status line.  data-state = waiting | loading | drawn | error | lost
  * ("drawn" once the image is in the view's canvas).
  */
@@ -28,6 +30,76 @@
     var bin = atob(text), out = new Uint8Array(bin.length);
     for (var i = 0; i < bin.length; i++) out[i] = bin.charCodeAt(i);
     return out.buffer;
+  }
+
+  // the limits of a model (policy.py: READ_LIMIT_BYTES["glb"], GLB_JSON_MAX_BYTES, GLB_ITEMS_MAX,
+  // GLB_DRAWN_TRIANGLES_MAX; `propulsor check` refuses the same)
+  var MAX_GLB_BYTES = 32 * 1048576, MAX_JSON_BYTES = 16 * 1048576, MAX_ITEMS = 10000, MAX_TRIANGLES = 2000000;
+  var DATA_TYPE = "application/octet-stream";
+
+  function index(v, n) { return typeof v === "number" && v % 1 === 0 && v >= 0 && v < n; }
+
+  /* Why the GLB in `buf` may not be drawn, or "" : checked before three.js parses a byte of it. */
+  function glbProblem(buf) {
+    if (buf.byteLength < 20 || buf.byteLength > MAX_GLB_BYTES) return buf.byteLength + " bytes: not a GLB within the limit";
+    var dv = new DataView(buf);
+    if (dv.getUint32(0, true) !== 0x46546C67 || dv.getUint32(4, true) !== 2) return "not a glTF 2 binary";
+    if (dv.getUint32(8, true) !== buf.byteLength) return "its header's length is not its size";
+    var n = dv.getUint32(12, true);
+    if (dv.getUint32(16, true) !== 0x4E4F534A || n > MAX_JSON_BYTES || n > buf.byteLength - 20) return "no JSON chunk within it";
+    var at = 20 + n;
+    while (at < buf.byteLength) {
+      if (at + 8 > buf.byteLength || dv.getUint32(at, true) > buf.byteLength - at - 8) return "a chunk runs past its end";
+      at += 8 + dv.getUint32(at, true);
+    }
+    var g;
+    try { g = JSON.parse(new TextDecoder("utf-8", { fatal: true }).decode(new Uint8Array(buf, 20, n))); }
+    catch (e) { return "its JSON does not parse"; }
+    if (!g || typeof g !== "object" || Array.isArray(g)) return "its JSON is not an object";
+    var keys = ["nodes", "meshes", "accessors", "bufferViews", "buffers", "images", "textures", "materials",
+                "scenes", "animations", "samplers", "skins", "cameras"];
+    for (var k = 0; k < keys.length; k++) {
+      var v = g[keys[k]];
+      if (v === undefined) continue;
+      if (!Array.isArray(v) || v.length > MAX_ITEMS) return keys[k] + ": not a list of at most " + MAX_ITEMS;
+    }
+    var uris = (g.buffers || []).concat(g.images || []);
+    for (k = 0; k < uris.length; k++) if (!uris[k] || typeof uris[k] !== "object" || "uri" in uris[k]) return "it names an external file";
+    var nodes = g.nodes || [], meshes = g.meshes || [], acc = g.accessors || [], parent = [], perMesh = [], prims = 0;
+    for (k = 0; k < meshes.length; k++) {
+      var p = meshes[k] && meshes[k].primitives, tri = 0;
+      if (!Array.isArray(p)) return "meshes[" + k + "] has no list of primitives";
+      prims += p.length;
+      if (prims > MAX_ITEMS) return "more than " + MAX_ITEMS + " primitives";
+      for (var j = 0; j < p.length; j++) {
+        var src = p[j] && ("indices" in p[j] ? p[j].indices : p[j].attributes && p[j].attributes.POSITION);
+        if (src === undefined) continue;
+        if (!index(src, acc.length) || !acc[src] || !index(acc[src].count, 4294967296)) return "a primitive's accessor is not in the file";
+        var c = acc[src].count, mode = "mode" in p[j] ? p[j].mode : 4;
+        tri += mode === 4 ? Math.floor(c / 3) : (mode === 5 || mode === 6) ? Math.max(c - 2, 0) : c;
+      }
+      perMesh.push(tri);
+    }
+    var drawn = 0;
+    for (k = 0; k < nodes.length; k++) {
+      var node = nodes[k];
+      if (!node || typeof node !== "object") return "nodes[" + k + "] is not an object";
+      if ("mesh" in node) {
+        if (!index(node.mesh, meshes.length)) return "nodes[" + k + "] names no mesh of the file";
+        drawn += perMesh[node.mesh];
+      }
+      var ch = node.children || [];
+      if (!Array.isArray(ch)) return "nodes[" + k + "].children is not a list";
+      for (j = 0; j < ch.length; j++) {
+        if (!index(ch[j], nodes.length) || ch[j] === k || parent[ch[j]] !== undefined) return "its nodes are not a tree";
+        parent[ch[j]] = k;
+      }
+    }
+    for (k = 0; k < nodes.length; k++) {  // every node reaches a root within nodes.length steps: no cycle
+      for (var up = k, steps = 0; parent[up] !== undefined; up = parent[up]) if (++steps > nodes.length) return "its nodes form a cycle";
+    }
+    if (drawn > MAX_TRIANGLES) return "it draws " + drawn + " triangles, more than the " + MAX_TRIANGLES + " this view draws";
+    return "";
   }
 
   function el(tag, attrs, text) {
@@ -101,17 +173,17 @@
   View.prototype.load = function () {
     var self = this, model = this.models[this.select ? this.select.selectedIndex : 0];
     this.setState("loading", "loading " + model.title + " …");
-    var script = el("script", { src: model.script });
-    script.onload = function () {
-      var b64 = (window.PROPULSOR_GLB || {})[script.src];
-      if (!b64) return self.fail(model.script + " did not define its model");
-      try {
-        new T.GLTFLoader().parse(decode64(b64), "", function (gltf) { self.show(gltf.scene, model, gltf.animations); },
-                                 function (e) { self.fail(model.script + ": " + (e.message || e)); });
-      } catch (e) { self.fail(model.script + ": " + (e.message || e)); }
-    };
-    script.onerror = function () { self.fail("cannot load " + model.script); };
-    document.head.appendChild(script);
+    var block = typeof model.block === "string" ? document.getElementById(model.block) : null;
+    if (!block || block.tagName !== "SCRIPT" || block.type !== DATA_TYPE) return self.fail(model.title + ": its model is not on this page");
+    var text = block.textContent, buf;
+    if (text.length > Math.ceil(MAX_GLB_BYTES / 3) * 4 + 8) return self.fail(model.title + ": its model is larger than " + MAX_GLB_BYTES + " bytes");
+    try { buf = decode64(text.trim()); } catch (e) { return self.fail(model.title + ": its model is not base64"); }
+    var why = glbProblem(buf);
+    if (why) return self.fail(model.title + ": not drawn: " + why);
+    try {
+      new T.GLTFLoader().parse(buf, "", function (gltf) { self.show(gltf.scene, model, gltf.animations); },
+                               function (e) { self.fail(model.title + ": " + (e.message || e)); });
+    } catch (e) { self.fail(model.title + ": " + (e.message || e)); }
   };
 
   View.prototype.fail = function (text) {
@@ -395,6 +467,7 @@
     figures.forEach(function (f) { io.observe(f); });
   }
 
+  window.PROPULSOR_VIEWER = { glbProblem: glbProblem };  // the model check, for tests
   if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", init);
   else init();
 })();

@@ -138,7 +138,9 @@ def _smoothing(p, law: WalkingLaw, m: float):
         return SmoothingDesign(law=sl, delta=sl.delta, L=L, z_H=z_H, z=z_H // law.n, cutter=cutter,
                                generability=g, ripple=hub_speed_ripple(sl))
     try:
-        return choose_smoothing(law, cutter, z_H, delta_max=math.radians(p.smoothing_max_deg))
+        from .smooth_law import _limits
+
+        return choose_smoothing(law, cutter, z_H, delta_max=math.radians(p.smoothing_max_deg), limits=_limits(p))
     except InputError as exc:
         best = _smallest_generable(law, cutter, z_H) if p.smoothing_max_deg < 45.0 else "no blend up to 45 deg works"
         raise InputError(

@@ -55,6 +55,21 @@ def _cutters(p, law, m: float, pc) -> list:
     return cands
 
 
+def _limits(p) -> dict:
+    """The ranges of the parameters a generability hint may name (their fields' limits): the driver's
+    profile shift x (the driven wheel's x_H = -x), the driven teeth z_H, the module m, the shaper's z0."""
+    import dataclasses
+
+    meta = {f.name: f.metadata for f in dataclasses.fields(p)}
+
+    def rng(name):
+        return (meta[name]["min"], meta[name]["max"])
+
+    x_lo, x_hi = rng("driver_shift")
+    return {"x": (x_lo, x_hi), "x_H": (-x_hi, -x_lo), "z_H": rng("driven_teeth"), "m": rng("module_mm"),
+            "z0": rng("shaper_teeth")}
+
+
 def _tooth_common(p, m: float, cutter, sh) -> dict:
     from .design import _rack, _thinning
 
@@ -87,7 +102,7 @@ def screen_smooth(p, law) -> SmoothScreen:
         cutter = CutterSpec(m=m, alpha=alpha, x=p.driver_shift, x_H=-p.driver_shift,
                             z0=p.shaper_teeth if sh is None else sh.z0, shaper_x0=None if sh is None else sh.x0)
         g = check_generable(pc, cutter)
-        why = "" if g.ok else "; ".join(remedies(g, cutter, z_H, law.n, L))
+        why = "" if g.ok else "; ".join(remedies(g, cutter, z_H, law.n, L, _limits(p)))
         if not why:  # the shaper the concave stretches need must exist
             try:
                 with input_names(_TOOTH_KEYS if entry is None else _TOOTH_KEYS_D0):
