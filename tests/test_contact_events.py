@@ -104,3 +104,22 @@ def test_a_bump_on_one_tooth_is_found_named_and_measured(spur):
 def test_contact_kinds_are_the_documented_ones():
     assert KINDS[0] == "flank" and set(KINDS[1:]) == {"driver tip corner", "driven tip corner", "driver root corner",
                                                       "driven root corner"}
+
+
+def test_a_pair_set_apart_loses_contact_and_the_check_says_so(spur):
+    """Mutation: the spur pair mounted 5 mm apart: no tooth reaches the mate within the largest free rotation; every
+    sample is without contact and the as-built contact check fails naming the count."""
+    from types import SimpleNamespace
+
+    from propulsor.parts.noncircular_pair.as_built import AsBuilt
+    from propulsor.parts.noncircular_pair.as_built_outputs import as_built_checks
+
+    pair, driver, driven, t1, t2 = spur
+    po = PairOutlines(outline(driver), outline(driven), pair.a_w + 5.0, t1, t2)
+    span = 2 * math.pi / Z2
+    dr, rv = (resolve_contact(po, _law, 0.0, span, d, step_driver_rad=math.radians(0.5)) for d in (DRIVE, REVERSE))
+    assert not np.isfinite(dr.te).any() and not np.isfinite(rv.te).any()
+    ab = AsBuilt(dr, rv, span, (), math.nan, math.nan, math.nan)
+    p = SimpleNamespace(speed_step_max=0.02, corner_run_max_deg=0.5, as_built_ripple_margin=0.005)
+    (chk,) = [c for c in as_built_checks(ab, p, None) if c.name == "as_built.contact"]
+    assert not chk.passed and chk.value == len(dr.te) + len(rv.te)
