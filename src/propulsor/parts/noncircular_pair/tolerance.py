@@ -154,7 +154,10 @@ def run_case(d, mount: float, case: Case, step_driver_rad: float | None = None) 
     dvn = _changed(base.dvn, case.e_driven, case.psi_driven, case.t_driven)
     po = PairOutlines(drv, dvn, mount + case.dL, base.driver_teeth, base.driven_teeth)
     step = step_driver_rad if step_driver_rad is not None else math.radians(policy.TOLERANCE_STEP_DRIVER_DEG)
-    dr, rv = (resolve_contact(po, d.run_law.theta, 0.0, 2 * math.pi, k, step_driver_rad=step) for k in (DRIVE, REVERSE))
+    # a jammed case has no running position: its contact changes everywhere; bounded to a few times the samples
+    cap = int(4 * 360.0 * d.law.n / math.degrees(step)) + 1000
+    dr, rv = (resolve_contact(po, d.run_law.theta, 0.0, 2 * math.pi, k, step_driver_rad=step, max_evals=cap)
+              for k in (DRIVE, REVERSE))
     x = np.union1d(dr.phi, rv.phi)
     okd, okr = np.isfinite(dr.te), np.isfinite(rv.te)
     gap = (np.interp(x, rv.phi[okr], rv.te[okr]) - np.interp(x, dr.phi[okd], dr.te[okd]))
