@@ -190,7 +190,7 @@ def tolerance_check(tol, worst, step_limit: float) -> Check:
         if r.jam:
             bad.append(f"{r.case.name}: jam (backlash {r.backlash_min_mm:.4f} mm at driven "
                        f"{math.degrees(r.backlash_min_phi):.2f} deg)")
-        if r.lost or r.step_max > step_limit:
+        elif r.lost or r.step_max > step_limit:  # (a jammed case has no running position: no speed to speak of)
             bad.append(f"{r.case.name}: contact lost ({r.lost} samples without contact; speed step "
                        f"{100 * r.step_max:.2f} % at driver {math.degrees(r.step_theta):.2f} deg)")
     least = min(r.backlash_min_mm for r in worst)
