@@ -21,21 +21,7 @@ ROOT = Path(__file__).resolve().parents[1]
 SMALL_WHEEL = 'type = "road_wheel"\nlightening_holes = 0\n'
 
 
-def _cli(*args, cwd=None, env=None, timeout=600):
-    return subprocess.run([sys.executable, "-m", "propulsor.cli", *args], capture_output=True, text=True,
-                          cwd=cwd or ROOT, timeout=timeout, env=env)
-
-
-def _popen(*args, env=None):
-    return subprocess.Popen([sys.executable, "-m", "propulsor.cli", *args], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True, cwd=ROOT, env=env)
-
-
-def _one_error_line(stderr: str) -> str:
-    lines = [line for line in stderr.splitlines() if line.strip()]
-    assert len(lines) == 1, stderr
-    assert "Traceback" not in stderr
-    return lines[0]
+from test_hostile_env import _cli, _one_error_line, _popen  # noqa: E402 - the command-line helpers of the first round
 
 
 @pytest.fixture

@@ -46,32 +46,10 @@ def _plain(v):
 
 def _smooth_law_design_values(part) -> tuple[dict, list]:
     """The design-only derived values of a pair whose law has no hub (elliptical, Fourier, table, pitch
-    curve): the build's names and expressions (parts/noncircular_pair/law_outputs.py, law_derived)."""
-    import numpy as np
+    curve): the build's own (parts/noncircular_pair/law_outputs.py, law_design_values)."""
+    from ..parts.noncircular_pair.law_outputs import law_design_values
 
-    dd, p = part.design, part.params
-    d = dd.d
-    law = d.law
-    g = d.smoothing.generability
-    U = law.U(np.linspace(0.0, law.period, 4001))
-    out = {"center_distance_mm": d.L, "mounting_distance_mm": dd.mount, "module_mm": d.m, "driver_teeth": d.z,
-           "driven_teeth": d.z_H, "driver_turns": law.n, "method": d.method, "law": law.kind, "law_periods": law.periods,
-           "ratio_min": float(np.min(U)), "ratio_max": float(np.max(U)), "closure_error_rad": d.closure_error,
-           "driver_rho_min_mm": g.driver.rho_convex_min, "driver_rho_limit_mm": g.driver.rho_limit,
-           "driven_rho_min_mm": g.driven.rho_convex_min, "driven_rho_limit_mm": g.driven.rho_limit,
-           "driven_concave_rho_min_mm": g.driven.rho_concave_min, "shaper_r0_mm": g.driven.r0,
-           "driver_shift": p.driver_shift, "driven_shift": 0.0 - p.driver_shift,
-           "tip_shortened_teeth": d.driver.shortened_teeth + d.driven.shortened_teeth,
-           "shaper_cut_teeth": d.driver.shaper_teeth + d.driven.shaper_teeth,
-           "undercut_teeth": d.driver.undercut_teeth + d.driven.undercut_teeth}
-    if law.kind == "elliptical":
-        out.update({"eccentricity": law.e, "focal_parameter_mm": law.q * d.L})
-    if law.kind == "pitch_curve":
-        out.update({"pitch_curve_center_distance_mm": law.L0, "pitch_curve_scale": d.L / law.L0})
-    if d.shaper is not None:
-        out.update({"rack_profile": p.rack_profile, "shaper_d0_mm": d.shaper.d0_mm, "shaper_z0": d.shaper.z0,
-                    "shaper_x0": d.shaper.x0, "shaper_standard": d.shaper.standard})
-    return out, []
+    return law_design_values(part.design), []
 
 
 def _noncircular_design_values(part) -> tuple[dict, list]:

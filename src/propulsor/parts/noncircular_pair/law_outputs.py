@@ -109,21 +109,17 @@ def law_notes(w, d, pr, p, mount, s) -> None:
         "the ratio the teeth deliver; plots/speed_ratio.png: the output speed over the turn, the law's beside the teeth's.")
 
 
-def law_derived(dd: PairDesign, w, pr, s) -> None:
-    """Derived values of a law without a hub (elliptical, Fourier, table)."""
+def law_design_values(dd: PairDesign) -> dict:
+    """The derived values of a law without a hub (elliptical, Fourier, table, pitch curve) that come from its
+    design alone: the build's, and a design-depth study's."""
     p, d = dd.p, dd.d
     law = d.law
     g = d.smoothing.generability
     U = law.U(np.linspace(0.0, law.period, 4001))
-    w.derived.update({
+    out = {
         "center_distance_mm": d.L, "mounting_distance_mm": dd.mount, "module_mm": d.m, "driver_teeth": d.z,
         "driven_teeth": d.z_H, "driver_turns": law.n, "method": d.method, "law": law.kind, "law_periods": law.periods,
         "ratio_min": float(np.min(U)), "ratio_max": float(np.max(U)), "closure_error_rad": d.closure_error,
-        "proof_phases": s["steps"], "overlap_law_max_mm2": s["overlap_law_max_mm2"],
-        "overlap_law_phases": s["overlap_law_steps"], "jam_phases": s["jams"],
-        "te_min_rad": s["te_min_rad"], "te_max_rad": s["te_max_rad"], "te_pp_rad": s["te_pp_rad"],
-        "backlash_min_mm": s["backlash_min_mm"], "backlash_max_mm": s["backlash_max_mm"],
-        "contact_pairs_min": s["contact_pairs_min"], "contact_ratio_mean": s["contact_pairs_mean"],
         "driver_rho_min_mm": g.driver.rho_convex_min, "driver_rho_limit_mm": g.driver.rho_limit,
         "driven_rho_min_mm": g.driven.rho_convex_min, "driven_rho_limit_mm": g.driven.rho_limit,
         "driven_concave_rho_min_mm": g.driven.rho_concave_min, "shaper_r0_mm": g.driven.r0,
@@ -131,11 +127,24 @@ def law_derived(dd: PairDesign, w, pr, s) -> None:
         "tip_shortened_teeth": d.driver.shortened_teeth + d.driven.shortened_teeth,
         "shaper_cut_teeth": d.driver.shaper_teeth + d.driven.shaper_teeth,
         "undercut_teeth": d.driver.undercut_teeth + d.driven.undercut_teeth,
-    })
+    }
     if law.kind == "elliptical":
-        w.derived.update({"eccentricity": law.e, "focal_parameter_mm": law.q * d.L})
+        out.update({"eccentricity": law.e, "focal_parameter_mm": law.q * d.L})
     if law.kind == "pitch_curve":
-        w.derived.update({"pitch_curve_center_distance_mm": law.L0, "pitch_curve_scale": d.L / law.L0})
+        out.update({"pitch_curve_center_distance_mm": law.L0, "pitch_curve_scale": d.L / law.L0})
     if d.shaper is not None:
-        w.derived.update({"rack_profile": p.rack_profile, "shaper_d0_mm": d.shaper.d0_mm, "shaper_z0": d.shaper.z0,
-                          "shaper_x0": d.shaper.x0, "shaper_standard": d.shaper.standard})
+        out.update({"rack_profile": p.rack_profile, "shaper_d0_mm": d.shaper.d0_mm, "shaper_z0": d.shaper.z0,
+                    "shaper_x0": d.shaper.x0, "shaper_standard": d.shaper.standard})
+    return out
+
+
+def law_derived(dd: PairDesign, w, pr, s) -> None:
+    """Derived values of a law without a hub (elliptical, Fourier, table): the design's and the proof's."""
+    w.derived.update(law_design_values(dd))
+    w.derived.update({
+        "proof_phases": s["steps"], "overlap_law_max_mm2": s["overlap_law_max_mm2"],
+        "overlap_law_phases": s["overlap_law_steps"], "jam_phases": s["jams"],
+        "te_min_rad": s["te_min_rad"], "te_max_rad": s["te_max_rad"], "te_pp_rad": s["te_pp_rad"],
+        "backlash_min_mm": s["backlash_min_mm"], "backlash_max_mm": s["backlash_max_mm"],
+        "contact_pairs_min": s["contact_pairs_min"], "contact_ratio_mean": s["contact_pairs_mean"],
+    })
