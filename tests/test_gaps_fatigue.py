@@ -17,24 +17,7 @@ from propulsor.parts.final_drive.fatigue import fatigue
 PART = Path(__file__).resolve().parents[1] / "parts" / "final_drive.toml"
 
 
-class _Writer:
-    def __init__(self):
-        self.derived, self.described, self.checks, self.notes, self.tables = {}, {}, [], [], {}
-
-    def progress(self, *_):
-        pass
-
-    def describe(self, name, unit, meaning):
-        self.described[name] = (unit, meaning)
-
-    def add_checks(self, checks):
-        self.checks += list(checks)
-
-    def add_note(self, text):
-        self.notes.append(text)
-
-    def add_table(self, name, columns, rows):
-        self.tables[name] = (columns, rows)
+from test_part_final_drive import _Writer  # noqa: E402 - the output writer's parts the fatigue step uses
 
 
 @pytest.fixture(scope="module")
