@@ -27,7 +27,7 @@ KIT_NAMES  := $(patsubst parts/%.toml,print-%,$(KIT_FILES))
 KIT_MANIFESTS := $(patsubst parts/%.toml,$(OUT)/%_kit/manifest.json,$(KIT_FILES))
 PRINTER    ?= generic
 
-.PHONY: all install lock parts gallery test check bench clean list print docs viewer-lib validate-glb $(PART_NAMES) $(KIT_NAMES)
+.PHONY: all install lock parts gallery test check bench mutation clean list print docs viewer-lib validate-glb $(PART_NAMES) $(KIT_NAMES)
 
 all: parts $(OUT)/index.html
 
@@ -132,6 +132,12 @@ check: $(STAMP) $(WEB_STAMP)
 
 bench: $(STAMP)
 	$(BIN)/python bench/run.py
+
+# mutation testing (mutmut) of the modules whose numbers a user trusts, each against the tests that reach it, with
+# a score per module (mutation/targets.toml, mutation/equivalent.toml); MODULE=<target or module file> runs one.
+# Not in `make test`: all targets take hours on two cores (mutation/README.md gives the times)
+mutation: $(STAMP)
+	$(BIN)/python mutation/run.py $(if $(MODULE),--module $(MODULE))
 
 clean:
 	rm -rf $(OUT)/*/ $(DEPS) $(OUT)/.built $(QUEUE) .pytest_cache .hypothesis .benchmarks
