@@ -317,9 +317,9 @@ PRINT_XY_ACCURACY_MM = 0.15
 
 # --- load per tooth (gears/tooth_load.py, parts/noncircular_pair/tooth_load_outputs.py) ------------------------
 #: the tooth pairs that can take load are measured every this many degrees of the driver over one period ...
-TOOTH_LOAD_STEP_DRIVER_DEG = 0.25
-#: ... and every change of the set of loaded pairs is bisected this many times (0.25 deg / 2^7 = 0.002 deg: a
-#: contact point moved by about 1 micrometre along a flank of 30 mm radius)
+TOOTH_LOAD_STEP_DRIVER_DEG = 0.5
+#: ... and every change of the set of loaded pairs is bisected this many times (0.5 deg / 2^7 = 0.004 deg: a
+#: contact point moved by about 2 micrometres along a flank of 30 mm radius)
 TOOTH_LOAD_REFINE_STEPS = 7
 #: the flanks' and fillets' curvature is fitted on the outline sampled to this chord tolerance (mm; points on the
 #: exact curve 0.008 mm apart at m = 2.5) ...

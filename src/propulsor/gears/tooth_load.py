@@ -172,19 +172,6 @@ class DenseOutline:
         return self.tree.query(np.atleast_2d(q))[1]
 
 
-def _side(o: DenseOutline, i: int, way: int, half_len: float) -> list:
-    """Vertices from i along ``way`` (+1 / -1) within ``half_len`` of arc length, ending at a corner."""
-    n, out, s, j = len(o), [], 0.0, i
-    while s < half_len and len(out) < n - 1:
-        jn = (j + way) % n
-        s += o.seg_len[j] if way > 0 else o.seg_len[jn]
-        out.append(jn)
-        if o.corner[jn]:
-            break
-        j = jn
-    return out
-
-
 def _fit(o: DenseOutline, i: int, idx, t) -> float:
     idx = np.asarray(idx)
     if len(idx) < 5:
@@ -202,14 +189,26 @@ def curvature_at(o: DenseOutline, i: int, half_len: float) -> float:
     vertices within ``half_len`` of arc length on either side, in the frame of the tangent at i, stopping at a corner;
     κ = 2c2/(1 + c1²)^1.5.  At a corner vertex (a contact on a tooth's tip edge) each side is fitted alone and the
     more curved one taken: Hertz does not hold at an edge; its flank's radius is the nearest stated value."""
-    ahead, back = _side(o, i, 1, half_len), _side(o, i, -1, half_len)
-    if not o.corner[i]:
-        return _fit(o, i, [i] + ahead + back, o.tangent[i])
     n = len(o)
+    K = int(min(n // 2 - 1, math.ceil(2.0 * half_len / max(float(o.seg_len[i]), 1e-9)) + 2))
+    off = np.arange(-K, K + 1)
+    idx = (i + off) % n
+    c = np.concatenate([[0.0], np.cumsum(o.seg_len[idx])])
+    s = c[:-1] - c[K]                     # arc length of each vertex from vertex i
+    keep = np.abs(s) <= half_len
+    cor = o.corner[idx]
+    ahead = np.nonzero(cor[K + 1:])[0]
+    back = np.nonzero(cor[:K][::-1])[0]
+    hi = K + 1 + int(ahead[0]) if len(ahead) else 2 * K      # the last vertex ahead (a corner ends the piece)
+    lo = K - 1 - int(back[0]) if len(back) else 0
+    j = np.arange(2 * K + 1)
+    if not o.corner[i]:
+        sel = keep & (j >= lo) & (j <= hi)
+        return _fit(o, i, idx[sel], o.tangent[i])
     d_ahead = o.points[(i + 1) % n] - o.points[i]
     d_back = o.points[i] - o.points[(i - 1) % n]
-    ks = [_fit(o, i, [i] + ahead, d_ahead / np.linalg.norm(d_ahead)),
-          _fit(o, i, [i] + back, d_back / np.linalg.norm(d_back))]
+    ks = [_fit(o, i, idx[keep & (j >= K) & (j <= hi)], d_ahead / np.linalg.norm(d_ahead)),
+          _fit(o, i, idx[keep & (j <= K) & (j >= lo)], d_back / np.linalg.norm(d_back))]
     ks = [k for k in ks if math.isfinite(k)]
     return max(ks, key=abs) if ks else math.nan
 
@@ -280,7 +279,7 @@ def root_section(o: DenseOutline, tooth: int, centres: np.ndarray, axis: np.ndar
     half = math.radians(angle_deg)
     A_lo, i_lo = _crossing(o, idx, ax, half)
     A_hi, i_hi = _crossing(o, idx[::-1], ax, half)
-    w = 0.15 * m
+    w = 0.05 * m
     r_lo = -1.0 / curvature_at(o, i_lo, w) if i_lo >= 0 else math.nan
     r_hi = -1.0 / curvature_at(o, i_hi, w) if i_hi >= 0 else math.nan
     return RootSection(tooth, A_lo, A_hi, r_lo, r_hi, ax)
