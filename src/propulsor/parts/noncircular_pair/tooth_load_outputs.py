@@ -59,7 +59,7 @@ FACTOR_SOURCES = {
 PHASE_COLUMNS = ["driver_deg", "driven_deg", "T1_Nm", "T2_Nm", "pairs_loaded", "driver_tooth", "driven_tooth",
                  "gap_um", "share", "F_n_N", "l1_mm", "l2_mm", "rho_driver_mm", "rho_driven_mm", "sigma_H_MPa",
                  "sigma_F_driver_MPa", "sigma_F_driven_MPa", "h_Fe_driver_mm", "h_Fe_driven_mm", "Y_F_driver",
-                 "Y_S_driver", "Y_F_driven", "Y_S_driven", "corner"]
+                 "Y_S_driver", "Y_F_driven", "Y_S_driven", "corner", "r_driver_mm", "r_driven_mm"]
 PEAK_COLUMNS = ["gear", "tooth", "measured_as", "cycles_per_driven_turn", "F_n_max_N", "sigma_H_max_MPa",
                 "sigma_H_at_driver_deg", "sigma_F_max_MPa", "sigma_F_at_driver_deg", "s_Fn_mm", "rho_F_mm", "S_H",
                 "S_F"]
@@ -275,13 +275,17 @@ def analyse(d, mount: float, p, c_phi, c_te, phi0: float, span: float, step_deg:
                          c.driven_tooth, 1e3 * c.gap * c.l2, F / Ftot, F, c.l1, c.l2, rho1, rho2, sH,
                          od.get("sigma_F", math.nan), on.get("sigma_F", math.nan), od.get("h_Fe", math.nan),
                          on.get("h_Fe", math.nan), od.get("Y_F", math.nan), od.get("Y_S", math.nan),
-                         on.get("Y_F", math.nan), on.get("Y_S", math.nan), " ".join(corner)])
+                         on.get("Y_F", math.nan), on.get("Y_S", math.nan), " ".join(corner),
+                         float(np.hypot(*c.p_driver)), float(np.hypot(*c.p_driven))])
     theta_all = np.array([r["theta"] for r in recs])
     z = {"driver": len(d.driver.teeth), "driven": len(d.driven.teeth)}
     n_turns = d.law.n
-    # teeth per period: a tooth j stands for j mod q in the other periods
-    repeat = {"driver": min(z["driver"], int(round(z["driver"] * n_turns * span / (2 * math.pi)))),
-              "driven": min(z["driven"], int(round(z["driven"] * span / (2 * math.pi))))}
+    # teeth per period of the pair: a tooth j stands for j mod q in the other periods
+    from .as_built import period_span
+
+    per = period_span(d)
+    repeat = {"driver": max(1, min(z["driver"], int(round(z["driver"] * n_turns * per / (2 * math.pi))))),
+              "driven": max(1, min(z["driven"], int(round(z["driven"] * per / (2 * math.pi)))))}
     peaks = {g: _fold(peaks[g], repeat[g]) for g in peaks}
     return ToothLoad(
         rows=rows, theta=theta_all, phi=np.array([r["phi"] for r in recs]), T1=np.array([r["T1"] for r in recs]),
@@ -327,15 +331,16 @@ def summary(tl: ToothLoad, p) -> dict:
     for g in ("driver", "driven"):
         pk = tl.peaks[g]
         _, Z_NT, Y_NT = _life(tl, p, g)
-        F = {j: v.F for j, v in pk.items() if v.F > 0}
-        sF = {j: v.sF for j, v in pk.items() if v.sF > 0}
-        sH = {j: v.sH for j, v in pk.items() if v.sH > 0}
+        F = {j: v.F for j, v in pk.items() if v.F > 0} or {-1: math.nan}
+        sF = {j: v.sF for j, v in pk.items() if v.sF > 0} or {-1: math.nan}
+        sH = {j: v.sH for j, v in pk.items() if v.sH > 0} or {-1: math.nan}
         jF, jH = max(sF, key=sF.get), max(sH, key=sH.get)
+        nan = _Peak(math.nan, math.nan, math.nan, math.nan, math.nan)
         out.update({
             f"tooth_load_{g}_sigma_F_max_MPa": sF[jF], f"tooth_load_{g}_sigma_F_worst_tooth": jF,
-            f"tooth_load_{g}_sigma_F_worst_driver_deg": pk[jF].sF_at,
+            f"tooth_load_{g}_sigma_F_worst_driver_deg": pk.get(jF, nan).sF_at,
             f"tooth_load_{g}_sigma_H_max_MPa": sH[jH], f"tooth_load_{g}_sigma_H_worst_tooth": jH,
-            f"tooth_load_{g}_sigma_H_worst_driver_deg": pk[jH].sH_at,
+            f"tooth_load_{g}_sigma_H_worst_driver_deg": pk.get(jH, nan).sH_at,
             f"tooth_load_{g}_F_n_max_N": max(F.values()),
             f"tooth_load_{g}_uneven_F": max(F.values()) / min(F.values()),
             f"tooth_load_{g}_uneven_sigma_F": max(sF.values()) / min(sF.values()),
@@ -346,7 +351,7 @@ def summary(tl: ToothLoad, p) -> dict:
         sH_all.append(out[f"tooth_load_{g}_S_H_min"])
         sF_all.append(out[f"tooth_load_{g}_S_F_min"])
     out.update({
-        "tooth_load_S_H_min": min(sH_all), "tooth_load_S_F_min": min(sF_all),
+        "tooth_load_S_H_min": float(np.min(sH_all)), "tooth_load_S_F_min": float(np.min(sF_all)),
         "tooth_load_T1_max_Nm": float(np.max(tl.T1)), "tooth_load_T1_min_Nm": float(np.min(tl.T1)),
         "tooth_load_T2_max_Nm": float(np.max(tl.T2)), "tooth_load_T2_min_Nm": float(np.min(tl.T2)),
         "tooth_load_pairs_min": int(np.min(tl.loaded)), "tooth_load_pairs_max": int(np.max(tl.loaded)),
