@@ -1,4 +1,4 @@
-"""The load per tooth of the pair over its cycle (issue 37; seed 002: "one of the expected drawbacks of the design
+"""The load per tooth of the pair over its cycle (seed 002: "one of the expected drawbacks of the design
 will be the uneven distribution of the load between different teeth"): the load case over one period, its sharing
 between the tooth pairs in contact on the finished outlines, the contact stress of every pair and the root stress of
 every tooth at every phase, the peak of each tooth, its safeties against the material's limits, the load cycles of
