@@ -314,3 +314,17 @@ TOLERANCE_STEP_DRIVER_DEG = 0.5
 #: dimensional accuracy of a desktop FDM print in xy (mm): every edge within +- this of the drawn one (0.1 ... 0.2;
 #: the tolerance study of a print kit)
 PRINT_XY_ACCURACY_MM = 0.15
+
+# --- load per tooth (gears/tooth_load.py, parts/noncircular_pair/tooth_load_outputs.py) ------------------------
+#: the tooth pairs that can take load are measured every this many degrees of the driver over one period ...
+TOOTH_LOAD_STEP_DRIVER_DEG = 0.5
+#: ... and every change of the set of loaded pairs is bisected this many times (0.5 deg / 2^7 = 0.004 deg: a
+#: contact point moved by about 2 micrometres along a flank of 30 mm radius)
+TOOTH_LOAD_REFINE_STEPS = 7
+#: the flanks' and fillets' curvature is fitted on the outline sampled to this chord tolerance (mm; points on the
+#: exact curve 0.008 mm apart at m = 2.5) ...
+TOOTH_LOAD_DENSE_CHORD_MM = 1e-5
+#: ... over this many modules of arc length on either side of the point (flank) and of the 30 deg point (fillet)
+TOOTH_LOAD_FLANK_FIT_MODULE = 0.12
+#: a pair whose gap is more than this many times the single pair's deflection under the whole load is not listed
+TOOTH_LOAD_GAP_WINDOW_DEFLECTIONS = 4.0

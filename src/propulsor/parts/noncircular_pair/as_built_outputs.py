@@ -133,6 +133,7 @@ def as_built_values(w, dd, built: dict) -> None:
         w.add_checks([hc])
     if ab is None:
         w.add_note("As built: not measured - the proof found phases without a running position (jam).")
+        _tooth_load(w, dd, built, None)
         return tolerance_values(w, dd, built)
     walking = is_walking(d.law)
     w.add_checks(as_built_checks(ab, p, d.ripple.ripple if walking else None))
@@ -174,7 +175,15 @@ def as_built_values(w, dd, built: dict) -> None:
         f"{ab.backlash_min_mm:.4f} mm; load on a corner {100 * dr.edge_share:.2f} % / {100 * rv.edge_share:.2f} % "
         f"of the cycle.  tables/as_built_stretches.csv lists every stretch whose speed is off the law's by more than "
         f"{100 * policy.CONTACT_STRETCH_SPEED_TOL:g} % or whose contact is on a corner.")
+    _tooth_load(w, dd, built, ab)
     tolerance_values(w, dd, built)
+
+
+def _tooth_load(w, dd, built: dict, ab) -> None:
+    """The load per tooth on the as-built contact (:mod:`.tooth_load_outputs`; nothing without a load case)."""
+    from .tooth_load_outputs import tooth_load_values
+
+    tooth_load_values(w, dd, built, ab)
 
 
 _TOL_COLUMNS = ["case", "dL_um", "e_driver_um", "psi_driver_deg", "e_driven_um", "psi_driven_deg", "t_driver_um",

@@ -60,9 +60,44 @@ AS_BUILT = {
     "tolerance_te_pp_p95_rad": ("rad", "transmission error peak-to-peak as made: 95th percentile of the Monte Carlo"),
 }
 
+#: the load per tooth (parts/noncircular_pair/tooth_load_outputs.py), with a load case in the part file
+TOOTH_LOAD = {
+    **{f"tooth_load_{g}_{k}": (unit, f"{text} ({g})") for g in ("driver", "driven") for k, (unit, text) in {
+        "sigma_F_max_MPa": ("MPa", "largest root stress of any tooth over the cycle (ISO 6336-3 30° section of the real tooth, load at its point of application)"),
+        "sigma_F_worst_tooth": ("", "the tooth with the largest root stress"),
+        "sigma_F_worst_driver_deg": ("deg", "driver angle within the period of the largest root stress"),
+        "sigma_H_max_MPa": ("MPa", "largest contact stress on any tooth's flank over the cycle (Hertz with the measured flank radii)"),
+        "sigma_H_worst_tooth": ("", "the tooth with the largest contact stress"),
+        "sigma_H_worst_driver_deg": ("deg", "driver angle within the period of the largest contact stress"),
+        "F_n_max_N": ("N", "largest normal force on any tooth"),
+        "uneven_F": ("", "the most over the least loaded tooth: ratio of the teeth's peak normal forces"),
+        "uneven_sigma_F": ("", "the most over the least loaded tooth: ratio of the teeth's peak root stresses"),
+        "S_H_min": ("", "least contact safety σ_Hlim·Z_NT/σ_H of the teeth"),
+        "S_F_min": ("", "least root safety σ_FE·Y_NT/σ_F of the teeth"),
+        "cycles_per_driven_turn": ("", "load cycles of each tooth per driven turn"),
+    }.items()},
+    "tooth_load_S_H_min": ("", "least contact safety of all teeth of both wheels (load per tooth)"),
+    "tooth_load_S_F_min": ("", "least root safety of all teeth of both wheels (load per tooth)"),
+    "tooth_load_T1_max_Nm": ("N·m", "largest driver torque over the cycle (load case)"),
+    "tooth_load_T1_min_Nm": ("N·m", "least driver torque over the cycle"),
+    "tooth_load_T2_max_Nm": ("N·m", "largest driven (carrier) torque over the cycle, T1·U·η"),
+    "tooth_load_T2_min_Nm": ("N·m", "least driven (carrier) torque over the cycle"),
+    "tooth_load_pairs_min": ("", "least number of tooth pairs carrying load at a phase"),
+    "tooth_load_pairs_max": ("", "largest number of tooth pairs carrying load at a phase"),
+    "tooth_load_pairs_mean": ("", "mean number of tooth pairs carrying load over the phases measured"),
+    "tooth_load_c_prime_min": ("N/(mm·µm)", "least single stiffness c′ of a tooth pair (ISO 6336-1, local equivalent gears)"),
+    "tooth_load_c_prime_max": ("N/(mm·µm)", "largest single stiffness c′ of a tooth pair"),
+    "tooth_load_Z_E": ("√MPa", "elasticity factor Z_E of the gear material (ISO 6336-2)"),
+    "tooth_load_phases": ("", "phases the load per tooth was measured at over one period"),
+    "tooth_load_material": ("", "gear material of the load per tooth (catalogue name)"),
+    "tooth_load_sigma_Hlim_MPa": ("MPa", "contact stress limit σ_Hlim of the material"),
+    "tooth_load_sigma_FE_MPa": ("MPa", "root stress limit σ_FE = σ_Flim·Y_ST of the material"),
+}
+
 GLOSSARY = {
     **_PAIR,
     **AS_BUILT,
+    **TOOTH_LOAD,
     "mounting_distance_mm": ("mm", "centre distance the pair is mounted at (the DXF and the assembly)"),
     "module_mm": ("mm", "module m of the teeth"),
     "driver_teeth": ("", "teeth z of the driver (on the engine side)"),

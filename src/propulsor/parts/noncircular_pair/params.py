@@ -9,7 +9,7 @@ from ...errors import InputError
 from ...laws.walking import WalkingLaw
 from ...params import PartParams, param
 
-__all__ = ["METHODS", "LAWS", "LAW_KEYS", "NoncircularPairParams"]
+__all__ = ["METHODS", "LAWS", "LAW_KEYS", "LOAD_KEYS", "NoncircularPairParams"]
 
 METHODS = ("generated", "sectors")
 #: the drive laws a part file can name (``law = "..."``)
@@ -22,6 +22,12 @@ LAW_KEYS = {
     "table": ("law_file",),
     "pitch_curve": ("pitch_curve_file",),
 }
+
+
+#: the load per tooth's keys (listed in a report and a manifest only when a load is given)
+LOAD_KEYS = ("load_driver_torque_Nm", "load_power_W", "load_driver_speed_rpm", "load_vehicle_mass_kg",
+             "load_rolling_resistance", "load_propulsors", "load_efficiency", "load_K_A", "load_K_v", "load_K_beta",
+             "gear_material", "load_life_hours", "load_S_Hmin", "load_S_Fmin")
 
 
 # =========================================================================== parameters
@@ -133,6 +139,41 @@ class NoncircularPairParams(PartParams):
     tolerance_seed: int = param(1, "", "as made: the seed of the Monte Carlo cases (the same seed, the same cases)",
                                 min=0, max=2**31 - 1, integer=True, why="a 31-bit seed")
     compare_methods: bool = param(True, "", "prove the other tooth method too (2D, one leg) and report the comparison")
+    # --- the load per tooth (parts/noncircular_pair/tooth_load_outputs.py): off unless a load is given ---------
+    load_driver_torque_Nm: float = param(0.0, "N·m", "load per tooth: the driver's torque T1 (constant; the driven "
+                                         "torque follows T2 = T1·U·eta); 0: no torque load", min=0.0, max=1e6,
+                                         why="the torque of a 1 MW engine at 10 rpm")
+    load_power_W: float = param(0.0, "W", "load per tooth: the driver's power P at load_driver_speed_rpm (T1 = P/omega1); "
+                                "0: no power load", min=0.0, max=1e8, why="a 100 MW drive")
+    load_driver_speed_rpm: float = param(0.0, "rpm", "load per tooth: the driver's speed (a power load, the load "
+                                         "cycles of load_life_hours)", min=0.0, max=1e5, why="a 100 000 rpm spindle")
+    load_vehicle_mass_kg: float = param(0.0, "kg", "load per tooth (walking law): the vehicle's mass M; the carrier "
+                                        "torque T2 = f·M·g/N_p·dX01/dphi (rolling resistance per driven propulsor, "
+                                        "seed 004 eq. 40), T1 = T2/(U·eta); 0: no vehicle load", min=0.0, max=1e6,
+                                        why="a 1000 t vehicle")
+    load_rolling_resistance: float = param(0.08, "", "load per tooth: rolling resistance coefficient f of the ground "
+                                           "(seed 004 ch. 5: 0.015 on a road, f_max = 0.08)", min=0.0, max=1.0,
+                                           why="a resistance equal to the weight")
+    load_propulsors: int = param(4, "", "load per tooth: driven propulsors sharing the vehicle's resistance", min=1,
+                                 max=64, integer=True, why="32 wheels a side")
+    load_efficiency: float = param(0.97, "", "load per tooth: efficiency eta of the mesh (T2 = T1·U·eta)", min=0.0,
+                                   min_exclusive=True, max=1.0, why="no loss")
+    load_K_A: float = param(1.0, "", "load per tooth: application factor K_A (ISO 6336-1 Annex A)", min=1.0, max=3.0,
+                            why="ISO 6336-1 Table A.1 tops out at 2.25")
+    load_K_v: float = param(1.0, "", "load per tooth: dynamic factor K_v (ISO 6336-1 cl. 6; 1 for a slow walking "
+                            "drive)", min=1.0, max=3.0, why="a resonant mesh")
+    load_K_beta: float = param(1.0, "", "load per tooth: face load factor K_Hbeta = K_Fbeta (ISO 6336-1 cl. 7)",
+                               min=1.0, max=3.0, why="the contact on a third of the face")
+    gear_material: str = param("steel_through_MQ", "", "load per tooth: the material of both gears "
+                               "(gears/data/gear_materials.toml: steels of ISO 6336-5, printed PLA, PETG, nylon)",
+                               choices=("steel_case_MQ", "steel_through_MQ", "PLA", "PETG", "nylon"))
+    load_life_hours: float = param(0.0, "h", "load per tooth: running time at the load (load cycles of each tooth "
+                                   "from load_driver_speed_rpm); 0: rated at the endurance limit", min=0.0,
+                                   max=200000.0, why="23 years of running day and night")
+    load_S_Hmin: float = param(1.0, "", "load per tooth: required contact safety S_H (ISO 6336-2)", min=0.5, max=5.0,
+                               why="no code asks more")
+    load_S_Fmin: float = param(1.4, "", "load per tooth: required root safety S_F (ISO 6336-3)", min=0.5, max=5.0,
+                               why="no code asks more")
 
     def _validate_law_keys(self) -> None:
         """Keys of another law are refused (set to anything but their default)."""
@@ -178,11 +219,18 @@ class NoncircularPairParams(PartParams):
         "pitch_curve": "k: lobes of the driven wheel (driver turns per driven turn)",
     }
 
+    @property
+    def load_given(self) -> bool:
+        """A load case for the load per tooth is given (a driver torque, a power or a vehicle)."""
+        return self.load_driver_torque_Nm > 0 or self.load_power_W > 0 or self.load_vehicle_mass_kg > 0
+
     def applies(self, name: str) -> bool:
         """The law's own keys and every shared one; another law's keys (refused when set) are not
-        listed, nor ``law`` itself for the default walking law."""
+        listed, nor ``law`` itself for the default walking law, nor the load per tooth's keys without a load."""
         if name == "law":
             return self.law != "walking"
+        if name in LOAD_KEYS and not self.load_given:
+            return False
         return not any(name in keys for other, keys in LAW_KEYS.items() if other != self.law)
 
     def meaning(self, name: str) -> str:
@@ -190,8 +238,29 @@ class NoncircularPairParams(PartParams):
             return self._DRIVER_TURNS_MEANING[self.law]
         return super().meaning(name)
 
+    def _validate_load(self) -> None:
+        """The load per tooth: one load case at most, each with what it needs."""
+        given = [k for k in ("load_driver_torque_Nm", "load_power_W", "load_vehicle_mass_kg") if getattr(self, k) > 0]
+        if len(given) > 1:
+            raise InputError(given[1], getattr(self, given[1]), f"give one load case only: {given[0]} is set too")
+        if not given:
+            return
+        if self.method != "generated":
+            raise InputError(given[0], getattr(self, given[0]), "the load per tooth needs generated teeth (method = "
+                             "\"generated\"; the sector teeth have no tooth record)")
+        if self.load_vehicle_mass_kg > 0 and self.law != "walking":
+            raise InputError("load_vehicle_mass_kg", self.load_vehicle_mass_kg, f"a vehicle load needs the walking law "
+                             f"(its hub speed dX01/dphi); law = \"{self.law}\": give load_driver_torque_Nm")
+        if self.load_power_W > 0 and not self.load_driver_speed_rpm > 0:
+            raise InputError("load_driver_speed_rpm", self.load_driver_speed_rpm,
+                             "a power load needs the driver's speed (> 0 rpm)")
+        if self.load_life_hours > 0 and not self.load_driver_speed_rpm > 0:
+            raise InputError("load_driver_speed_rpm", self.load_driver_speed_rpm,
+                             "load_life_hours needs the driver's speed (> 0 rpm) to count the load cycles")
+
     def validate(self) -> None:
         self._validate_law_keys()
+        self._validate_load()
         if self.law != "walking":
             self._validate_common(self.driver_turns if self.law != "table" else 1)
             return

@@ -1,0 +1,128 @@
+"""Every tooth pair that can take load at a phase of a pair, measured on the finished outlines: the as-built contact
+of :mod:`.contact_events` (the driven wheel turned from the law's position until the outlines touch) extended to the
+pairs that do not touch yet but would under a small further rotation — each with its rotational gap, its contact
+point in both body frames, the contact normal and its lever arms about both axes.
+
+At law phase phi (driver at theta(phi)) the driven wheel is placed a margin on the free side of the as-built contact
+(te, from the resolved contact law) and turned (drive: back) through margin + ``window``; every vertex of either
+outline whose circle enters the other outline within that rotation is a hit (:func:`.backlash._rot_hits`, exact for the
+polylines); the hits are grouped by tooth pair (nearest tooth centre by polar angle in each body frame) and each
+pair keeps its first hit.  The pair hit first is the one touching (gap 0); another pair's gap is its extra rotation
+(rad of the driven wheel).  The force a pair carries acts along the normal of the edge hit (world frame: driven axis
+at the origin, driver axis at (L, 0)); its lever arms are l2 = |X × n| about the driven axis and l1 about the driver's.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ... import policy
+from .backlash import _rot_hits
+from .contact_events import DRIVE, PairOutlines, _rot, _window
+from .outlines import row_norms
+
+__all__ = ["PairContact", "phase_contacts"]
+
+
+@dataclass(frozen=True)
+class PairContact:
+    """One tooth pair that can take load at one phase."""
+
+    driver_tooth: int
+    driven_tooth: int
+    gap: float            #: rad of the driven wheel beyond the first contact
+    p_driver: np.ndarray  #: contact point, driver body frame (mm)
+    p_driven: np.ndarray  #: contact point, driven body frame
+    x: np.ndarray         #: contact point, world frame
+    n: np.ndarray         #: unit normal along the force on the driven tooth, world frame
+    l1: float             #: lever arm of the normal about the driver's axis, mm
+    l2: float             #: about the driven axis, mm
+    edge_of: str          #: "driver" or "driven": whose edge the hit lies on (the other's vertex)
+    vertex: int           #: that vertex (index into the other outline's points)
+
+
+def _all_hits(pair: PairOutlines, phi_a: float, theta: float, sign: float, w: float):
+    """Every entering hit within w of the driven wheel turning from phi_a: (delta, side, vertex, edge, t) arrays
+    (side 1: a driven vertex on a driver edge, 2: a driver vertex on a driven edge); :meth:`PairOutlines._hits`
+    without the reduction to the first."""
+    L = pair.L
+    i1 = _window(pair.o1, pair.a1, phi_a, pair.hw_dvn + w)
+    i2 = _window(pair.o2, pair.a2, math.pi - theta, pair.hw_drv + w)
+    R_th, R_ph = _rot(-theta), _rot(-phi_a)
+    P1 = ((pair.dvn.points[i1] @ R_ph.T) - (L, 0.0)) @ R_th.T
+    C1 = np.array([-L, 0.0]) @ R_th.T
+    P2 = ((pair.drv.points[i2] @ _rot(theta).T) + (L, 0.0)) @ _rot(phi_a).T
+    near1 = row_norms(P1) <= pair.R1 + w * pair.R2 + 1e-6
+    near2 = row_norms(P2) <= pair.R2 + 1e-6
+    i1, P1, i2, P2 = i1[near1], P1[near1], i2[near2], P2[near2]
+    d1, e1, t1 = _rot_hits(P1, C1, pair.drv, sign, w, row_norms(P1 - C1), pair.drv.boundary_lower_bound(P1))
+    d2, e2, t2 = _rot_hits(P2, np.zeros(2), pair.dvn, -sign, w, row_norms(P2), pair.dvn.boundary_lower_bound(P2))
+    k1, k2 = np.isfinite(d1), np.isfinite(d2)
+    return (np.concatenate([d1[k1], d2[k2]]), np.concatenate([np.ones(k1.sum(), int), np.full(k2.sum(), 2)]),
+            np.concatenate([i1[k1], i2[k2]]), np.concatenate([e1[k1], e2[k2]]), np.concatenate([t1[k1], t2[k2]]))
+
+
+def _nearest(centres: np.ndarray, ang: np.ndarray) -> np.ndarray:
+    d = np.abs((ang[:, None] - centres[None, :] + math.pi) % (2 * math.pi) - math.pi)
+    return np.argmin(d, axis=1)
+
+
+def phase_contacts(pair: PairOutlines, phi: float, theta: float, te: float, window: float,
+                   direction: int = DRIVE, margin: float = policy.CONTACT_TRACK_MARGIN_RAD):
+    """(te as measured, [PairContact ...] sorted by gap) at law phase phi with the driver at theta; ``te``: the
+    as-built contact's driven offset there (a start value, e.g. interpolated from the resolved contact law);
+    ``window``: the largest gap (rad) a pair may have to be listed.  (nan, []) where nothing touches."""
+    sign = 1.0 if direction == DRIVE else -1.0
+    for mg in (margin, 4.0 * margin, 16.0 * margin):
+        start = phi + te + sign * mg
+        d, side, v, e, t = _all_hits(pair, start, theta, sign, mg + window)
+        if len(d) and float(np.min(d)) > 0.2 * mg:
+            break
+    else:
+        if not len(d):
+            return math.nan, []
+    dmin = float(np.min(d))
+    drv, dvn = pair.drv, pair.dvn
+    # contact points in both body frames
+    p_dvn = np.where((side == 1)[:, None], dvn.points[np.where(side == 1, v, 0)],
+                     dvn.seg_a[np.where(side == 2, e, 0)] + t[:, None] * (dvn.seg_b[np.where(side == 2, e, 0)]
+                                                                           - dvn.seg_a[np.where(side == 2, e, 0)]))
+    e_drv = np.where(side == 1, e, 0)
+    p_drv_edge = drv.seg_a[e_drv] + t[:, None] * (drv.seg_b[e_drv] - drv.seg_a[e_drv])
+    p_drv = np.where((side == 2)[:, None], drv.points[np.where(side == 2, v, 0)], p_drv_edge)
+    t_dvn = _nearest(pair.driven_teeth, np.arctan2(p_dvn[:, 1], p_dvn[:, 0]))
+    t_drv = _nearest(pair.driver_teeth, np.arctan2(p_drv[:, 1], p_drv[:, 0]))
+    out = {}
+    for k in np.argsort(d, kind="stable"):
+        key = (int(t_drv[k]), int(t_dvn[k]))
+        if key in out:
+            continue
+        out[key] = k
+    res = []
+    L = pair.L
+    for (a, b), k in out.items():
+        phi_c = start - sign * float(d[k])
+        R_dvn = _rot(-phi_c)
+        x = R_dvn @ p_dvn[k]
+        if side[k] == 1:   # the driver's edge: its left normal points into the driver; the force on the driven is -
+            s = drv.seg_b[e[k]] - drv.seg_a[e[k]]
+            nb = -np.array([-s[1], s[0]]) / math.hypot(s[0], s[1])
+            n = _rot(theta) @ nb
+        else:              # the driven edge: its left normal points into the driven wheel, along the force
+            s = dvn.seg_b[e[k]] - dvn.seg_a[e[k]]
+            n = R_dvn @ (np.array([-s[1], s[0]]) / math.hypot(s[0], s[1]))
+        tau2 = float(x[0] * n[1] - x[1] * n[0])
+        r1 = x - (L, 0.0)
+        tau1 = float(r1[0] * n[1] - r1[1] * n[0])
+        # drive (sign +1): the force turns the driven wheel on (clockwise, tau2 < 0) and holds the driver back
+        # (its reaction -n turns the driver clockwise against its counter-clockwise running: tau1 > 0)
+        l2, l1 = -sign * tau2, sign * tau1
+        if l2 <= 0 or l1 <= 0:
+            continue    # a force that would not pass torque from the driver to the driven wheel
+        res.append(PairContact(a, b, float(d[k]) - dmin, p_drv[k].copy(), p_dvn[k].copy(), x, n, l1, l2,
+                               "driver" if side[k] == 1 else "driven", int(v[k])))
+    res.sort(key=lambda c: c.gap)
+    return (start - sign * dmin) - phi, res
