@@ -119,9 +119,16 @@ def _tracked_files() -> list[str]:
     return [f for f in out.split("\0") if f]
 
 
+def scratch_of(target: Target, modules: list[str]) -> Path:
+    """The scratch folder of a target, or of one module of it (mutmut keeps the results of one set of modules)."""
+    if sorted(modules) == sorted(target.modules()):
+        return SCRATCH / target.name
+    return SCRATCH / (target.name + "-" + "-".join(Path(m).stem for m in modules))
+
+
 def sync_scratch(target: Target, modules: list[str], fresh: bool) -> Path:
     """Copy the project's files into the target's scratch folder (only what changed) and write mutmut's settings."""
-    scratch = SCRATCH / target.name
+    scratch = scratch_of(target, modules)
     if fresh and scratch.exists():
         shutil.rmtree(scratch)
     scratch.mkdir(parents=True, exist_ok=True)
@@ -295,7 +302,7 @@ def main(argv: list[str] | None = None) -> int:
     low = []
     all_used = set()
     for target, modules in select(targets, args.module):
-        scratch = SCRATCH / target.name
+        scratch = scratch_of(target, modules)
         elapsed = 0.0
         if not args.report_only:
             scratch = sync_scratch(target, modules, args.fresh)

@@ -1,0 +1,190 @@
+"""Study files (study/spec.py) with the whole of each answer: every refusal's parameter, value and text, the
+variants of lists, ranges and samplers, requirements of each operator, the variant key.  The cases
+`make mutation MODULE=study` found no test for (mutation/README.md)."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+from propulsor.errors import InputError
+from propulsor.study.spec import (ALL_CHECKS, MAX_STUDY_BYTES, MAX_VARIANTS, Requirement, _requirement, load_study,
+                                  variant_key)
+
+ROOT = Path(__file__).resolve().parents[1]
+WHEEL = ROOT / "parts" / "road_wheel.toml"
+
+BASE = {
+    "study": f'part = "{WHEEL}"\ndepth = "design"',
+    "vary": "tyre_width_mm = [70.0, 90.0]",
+    "objectives": 'minimize = ["T_at_V_max_C"]',
+}
+
+
+def _text(**sections) -> str:
+    parts = {**BASE, **sections}
+    return "".join(f"[{k}]\n{v}\n\n" for k, v in parts.items() if v is not None)
+
+
+def _load(tmp_path, text: str, name: str = "s.toml"):
+    p = tmp_path / name
+    p.write_text(text, encoding="utf-8")
+    return load_study(p)
+
+
+def _refused(tmp_path, text: str) -> tuple:
+    with pytest.raises(InputError) as e:
+        _load(tmp_path, text)
+    return e.value.parameter, e.value.value, e.value.limit
+
+
+def test_a_study_read_whole(tmp_path):
+    s = _load(tmp_path, _text(study=f'part = "{WHEEL}"\ndepth = "design"\ntitle = "widths"',
+                              vary="tyre_width_mm = [70.0, 90.0, 70.0]\nrow_gap_mm = { from = 10.0, to = 12.0, "
+                                   "step = 1.0 }",
+                              objectives='minimize = ["T_at_V_max_C"]\nmaximize = ["tyre_width_mm_out"]\n'
+                                         'require = ["all_checks_passed", "T_at_V_max_C <= 125"]\nrecord = []'
+                              .replace('maximize = ["tyre_width_mm_out"]\n', '')))
+    assert s.title == "widths" and s.part_type == "road_wheel" and s.depth == "design"
+    assert s.part_file == WHEEL.resolve() and s.varied == ("tyre_width_mm", "row_gap_mm")
+    # a list keeps its first of each value; the grid is the product in the order written
+    assert [tuple(v.values()) for v in s.variants] == [(70.0, 10.0), (70.0, 11.0), (70.0, 12.0), (90.0, 10.0),
+                                                        (90.0, 11.0), (90.0, 12.0)]
+    assert s.require == (Requirement(ALL_CHECKS), Requirement("T_at_V_max_C", "<=", 125.0))
+    assert s.objectives == ("T_at_V_max_C",) and s.values == ("T_at_V_max_C",)
+    # no title: the file's name
+    assert _load(tmp_path, _text(), "wheel study.toml").title == "wheel study"
+
+
+@pytest.mark.parametrize("sections, want", [
+    (dict(extra="a = 1"), ("extra", {"a": 1}, "unknown section of a study file (study, vary, objectives)")),
+    (dict(study=f'part = "{WHEEL}"\nspeed = 1'), ("study.speed", 1, "unknown key (known: depth, part, sample, seed, "
+                                                                    "title)")),
+    (dict(objectives='minimise = ["T_at_V_max_C"]'),
+     ("objectives.minimise", ["T_at_V_max_C"], "unknown key (known: maximize, minimize, record, require)")),
+    (dict(study='depth = "design"'), ("study.part", None, "must name the base part file (a path relative to the "
+                                                          "study file)")),
+    (dict(study='part = ""'), ("study.part", "", "must name the base part file (a path relative to the study file)")),
+    (dict(study=f'part = "{WHEEL}"\ndepth = "full"'), ("study.depth", "full", "must be one of design, proof, build")),
+    (dict(study=f'part = "{WHEEL}"\ntitle = 3'), ("study.title", 3, "must be a string")),
+    (dict(study=f'part = "{WHEEL}"\nsample = 0'), ("study.sample", 0, f"must be a whole number of variants within "
+                                                                      f"1 ... {MAX_VARIANTS}")),
+    (dict(study=f'part = "{WHEEL}"\nsample = {MAX_VARIANTS + 1}'),
+     ("study.sample", MAX_VARIANTS + 1, f"must be a whole number of variants within 1 ... {MAX_VARIANTS}")),
+    (dict(study=f'part = "{WHEEL}"\nsample = true'),
+     ("study.sample", True, f"must be a whole number of variants within 1 ... {MAX_VARIANTS}")),
+    (dict(study=f'part = "{WHEEL}"\nsample = 2.0'),
+     ("study.sample", 2.0, f"must be a whole number of variants within 1 ... {MAX_VARIANTS}")),
+    (dict(study=f'part = "{WHEEL}"\nseed = 1.5'), ("study.seed", 1.5, "must be a whole number")),
+    (dict(study=f'part = "{WHEEL}"\nseed = false'), ("study.seed", False, "must be a whole number")),
+    (dict(vary=""), ("vary", {}, "must name at least one parameter to vary")),
+    (dict(vary="type = [1]"), ("vary.type", [1], "unknown parameter of road_wheel (see `propulsor params "
+                                                 "road_wheel`)")),
+    (dict(vary="tyre_width_mm = []"), ("vary.tyre_width_mm", [], "must name at least one value")),
+    (dict(vary="tyre_width_mm = 70.0"), ("vary.tyre_width_mm", 70.0, "must be a list of values or a range "
+                                                                     "{ from = A, to = B, step = S }")),
+    (dict(vary="tyre_width_mm = { from = 70.0, to = 90.0, stride = 1.0 }"),
+     ("vary.tyre_width_mm.stride", 1.0, "unknown key (from, to, step)")),
+    (dict(vary="tyre_width_mm = { from = 70.0, step = 1.0 }"),
+     ("vary.tyre_width_mm", {"from": 70.0, "step": 1.0}, "a range needs from, to and step (step only without a "
+                                                         "sampler)")),
+    (dict(vary="tyre_width_mm = { to = 70.0, step = 1.0 }"),
+     ("vary.tyre_width_mm", {"to": 70.0, "step": 1.0}, "a range needs from, to and step (step only without a "
+                                                       "sampler)")),
+    (dict(vary="tyre_width_mm = { from = 90.0, to = 70.0, step = 1.0 }"),
+     ("vary.tyre_width_mm", {"from": 90.0, "to": 70.0, "step": 1.0}, "to must be >= from")),
+    (dict(vary="tyre_width_mm = { from = 70.0, to = 90.0, step = -1.0 }"),
+     ("vary.tyre_width_mm.step", -1.0, "must be a number > 0")),
+    (dict(vary="tyre_width_mm = { from = 70.0, to = 170.0, step = 0.0001 }"),
+     ("vary.tyre_width_mm", {"from": 70.0, "to": 170.0, "step": 0.0001}, f"names more than {MAX_VARIANTS} values")),
+    (dict(objectives='minimize = "T_at_V_max_C"'),
+     ("objectives.minimize", "T_at_V_max_C", "must be a list of names (strings)")),
+    (dict(objectives='minimize = [1]'), ("objectives.minimize", [1], "must be a list of names (strings)")),
+    (dict(objectives='record = ["nonsense_value"]'),
+     ("objectives.record", "nonsense_value", "is not a derived value of a road_wheel manifest")),
+    (dict(objectives='require = [3]'),
+     ("objectives.require", 3, 'must be strings: "all_checks_passed" or "NAME >= NUMBER"')),
+    (dict(objectives='require = ["T_at_V_max_C <= inf"]'),
+     ("objectives.require", "T_at_V_max_C <= inf", 'must be "all_checks_passed" or "NAME OP NUMBER" (OP one of >=, '
+                                                   '<=, >, <, ==, !=)')),
+    (dict(objectives='require = ["T_at_V_max_C <= 1e999"]'),
+     ("objectives.require", "T_at_V_max_C <= 1e999", "the bound must be a finite number")),
+])
+def test_each_refusal_in_full(tmp_path, sections, want):
+    assert _refused(tmp_path, _text(**sections)) == want
+
+
+def test_a_whole_parameter_takes_whole_steps_and_ranges(tmp_path):
+    s = _load(tmp_path, _text(vary="lightening_holes = { from = 1, to = 3, step = 1 }"))
+    assert [v["lightening_holes"] for v in s.variants] == [1, 2, 3] and all(isinstance(v["lightening_holes"], int) for v in s.variants)
+    assert _refused(tmp_path, _text(vary="lightening_holes = { from = 1, to = 3, step = 0.5 }")) == (
+        "vary.lightening_holes.step", 0.5, "must be a whole number (the parameter is whole)")
+
+
+def test_a_grid_too_large_is_refused_before_it_is_made(tmp_path):
+    big = "tyre_width_mm = { from = 60.0, to = 99.999, step = 0.001 }\nrow_gap_mm = [10.0, 11.0, 12.0]"
+    assert _refused(tmp_path, _text(vary=big)) == ("vary", "120000 variants",
+                                                   f"a grid of at most {MAX_VARIANTS} variants (or a sampler)")
+
+
+def test_a_sampler_draws_within_the_ranges_and_from_the_lists(tmp_path):
+    text = _text(study=f'part = "{WHEEL}"\nsample = 40\nseed = 7',
+                 vary="tyre_width_mm = { from = 70.0, to = 90.0 }\nlightening_holes = { from = 1, to = 3 }\n"
+                      "row_gap_mm = [10.0, 12.0]")
+    s = _load(tmp_path, text)
+    assert 1 < len(s.variants) <= 40
+    assert all(70.0 <= v["tyre_width_mm"] <= 90.0 and isinstance(v["tyre_width_mm"], float) for v in s.variants)
+    assert {v["lightening_holes"] for v in s.variants} == {1, 2, 3}
+    assert {v["row_gap_mm"] for v in s.variants} == {10.0, 12.0}
+    assert len({tuple(sorted(v.items())) for v in s.variants}) == len(s.variants)  # each drawn once
+    # the same seed draws the same; another seed others
+    assert _load(tmp_path, text).variants == s.variants
+    assert _load(tmp_path, text.replace("seed = 7", "seed = 8")).variants != s.variants
+    # a sampler of one draw of a one-value grid: one variant
+    one = _load(tmp_path, _text(study=f'part = "{WHEEL}"\nsample = 5', vary="row_gap_mm = [10.0]"))
+    assert one.variants == ({"row_gap_mm": 10.0},)
+
+
+@pytest.mark.parametrize("text, value, holds", [
+    ("a >= 1", 1.0, True), ("a >= 1", 0.9, False), ("a > 1", 1.0, False), ("a > 1", 1.1, True),
+    ("a <= 1", 1.0, True), ("a <= 1", 1.1, False), ("a < 1", 1.0, False), ("a < 1", 0.9, True),
+    ("a == 1", 1.0, True), ("a == 1", 1.5, False), ("a != 1", 1.5, True), ("a != 1", 1.0, False),
+    ("a >= -2.5e-1", -0.25, True), ("a == true", True, True), ("a == false", True, False),
+    ("a >= 1", None, False), ("a >= 1", math.nan, False), ("a >= 1", "x", False),
+])
+def test_requirements_of_each_operator(text, value, holds):
+    assert _requirement(text).holds(value) is holds
+
+
+def test_requirement_text_and_the_checks_pseudo_value():
+    r = _requirement("  S_H.min >= 1.2 ")
+    assert (r.name, r.op, r.bound, str(r)) == ("S_H.min", ">=", 1.2, "S_H.min >= 1.2")
+    a = _requirement(" all_checks_passed ")
+    assert a == Requirement(ALL_CHECKS) and str(a) == ALL_CHECKS
+    assert a.holds(True) and not a.holds(1) and not a.holds(None)
+
+
+def test_variant_key_is_the_parameters_the_depth_and_the_version(tmp_path):
+    s = _load(tmp_path, _text())
+    k = variant_key(s, {"tyre_width_mm": 70.0}, "1.0")
+    assert len(k) == 16 and int(k, 16) >= 0
+    assert k == variant_key(s, {"tyre_width_mm": 70.0}, "1.0")
+    assert k != variant_key(s, {"tyre_width_mm": 90.0}, "1.0")
+    assert k != variant_key(s, {"tyre_width_mm": 70.0}, "1.1")
+
+
+def test_a_study_file_too_large_or_not_text_is_refused(tmp_path):
+    p = tmp_path / "big.toml"
+    p.write_bytes(b"#" * (MAX_STUDY_BYTES + 1))
+    with pytest.raises(InputError) as e:
+        load_study(p)
+    assert e.value.parameter == "STUDY"
+    p.write_bytes(b"[study]\ntitle = \"\xff\"\n")
+    with pytest.raises(InputError) as e:
+        load_study(p)
+    assert e.value.limit.startswith("is not UTF-8") and "at byte 17" in e.value.limit
+    with pytest.raises(InputError) as e:
+        load_study(tmp_path / "missing.toml")
+    assert e.value.parameter == "STUDY"
