@@ -123,3 +123,85 @@ def test_plot_front_with_nothing_ranked_still_draws(tmp_path):
 
 def test_plain_text_for_the_picture():
     assert _plain("a $b$\tc\n") == r"a \$b\$ c "
+
+
+def _drawn(tmp_path, monkeypatch, study, rows):
+    """plot_front's figure as drawn (its closing kept back), and the points it returns."""
+    import matplotlib.pyplot as plt
+
+    kept = []
+    monkeypatch.setattr(plt, "close", lambda fig: kept.append(fig))
+    pts = plot_front(tmp_path, study, rows, ranked(study, rows))
+    assert len(kept) == 1
+    return kept[0], pts
+
+
+def test_the_picture_draws_what_it_says(tmp_path, monkeypatch):
+    from matplotlib.colors import to_rgba
+
+    s = _study(minimize=["a"], maximize=["b"], title="Wheel $x$")
+    rows = _rows((1.0, 4.0), (2.0, 5.0), (4.0, 6.0), (3.0, 3.0), (2.5, 5.0))
+    rows[4]["status"] = "rejected"
+    fig, pts = _drawn(tmp_path, monkeypatch, s, rows)
+    assert tuple(fig.get_size_inches()) == (7.0, 5.0) and fig.dpi == 100
+    ax = fig.axes[0]
+    assert ax.get_xlabel() == "a (min)" and ax.get_ylabel() == "b (max)"
+    assert ax.get_title() == r"Wheel \$x\$: 4 of 5 variants meet the requirements"
+    assert ax.title.get_fontsize() == 9
+    refused, others = ax.collections
+    assert refused.get_offsets().tolist() == [[2.5, 5.0]] and refused.get_label() == "refused by a requirement"
+    assert tuple(refused.get_facecolor()[0]) == to_rgba("0.6") or tuple(refused.get_edgecolor()[0]) == to_rgba("0.6")
+    assert others.get_offsets().tolist() == [[3.0, 3.0]] and others.get_label() == "meets the requirements"
+    assert tuple(others.get_facecolor()[0]) == to_rgba("0.45") and others.get_sizes().tolist() == [18.0]
+    # the front joined in the order of its first objective, red, round markers of 5 pt
+    (line,) = ax.lines
+    assert line.get_xdata().tolist() == [1.0, 2.0, 4.0] and line.get_ydata().tolist() == [4.0, 5.0, 6.0]
+    assert line.get_label() == "Pareto front" and line.get_color() == "tab:red"
+    assert (line.get_marker(), line.get_linestyle(), line.get_markersize()) == ("o", "-", 5.0)
+    # each front variant named beside its point, 3 pt right and up, in 7 pt
+    notes = [(t.get_text(), t.xy, t.get_fontsize(), t.xyann, t.anncoords) for t in ax.texts]
+    assert notes == [("1", (1.0, 4.0), 7.0, (3, 3), "offset points"), ("2", (2.0, 5.0), 7.0, (3, 3), "offset points"),
+                     ("3", (4.0, 6.0), 7.0, (3, 3), "offset points")]
+    assert [t.get_text() for t in ax.get_legend().get_texts()] == [
+        "refused by a requirement", "meets the requirements", "Pareto front"]
+    assert ax.get_legend().get_texts()[0].get_fontsize() == 8
+    assert all(g.get_visible() for g in ax.get_xgridlines()) and ax.get_xgridlines()[0].get_alpha() == 0.3
+    assert sorted(v for v, *_ in pts) == [1, 2, 3, 4, 5]
+    import matplotlib
+    assert matplotlib.get_backend().lower() == "agg"
+
+
+def test_the_picture_of_three_objectives_and_of_one(tmp_path, monkeypatch):
+    s3 = _study(minimize=["a", "b", "c"])
+    rows = _rows((1.0, 2.0, 3.0), (2.0, 1.0, 3.0), (3.0, 3.0, "n/a"), names=("a", "b", "c"))
+    rows[2]["status"] = "rejected"  # refused: drawn by its first two objectives, whatever the third is
+    fig, pts = _drawn(tmp_path, monkeypatch, s3, rows)
+    ax = fig.axes[0]
+    assert ax.get_title() == "t: 2 of 3 variants meet the requirements; front over a, b, c"
+    assert ax.get_xlabel() == "a (min)" and ax.get_ylabel() == "b (min)"
+    assert ax.collections[0].get_offsets().tolist() == [[3.0, 3.0]]
+    s1 = _study(maximize=["a"])
+    fig, _ = _drawn(tmp_path, monkeypatch, s1, _rows((1.0,), (3.0,), names=("a",)))
+    ax = fig.axes[0]
+    assert (ax.get_xlabel(), ax.get_ylabel()) == ("variant", "a (max)")
+    assert ax.get_title() == "t: 2 of 2 variants meet the requirements"
+    fig, _ = _drawn(tmp_path, monkeypatch, _study(minimize=["a"]), _rows((1.0,), (3.0,), names=("a",)))
+    assert fig.axes[0].get_ylabel() == "a (min)"
+    # nothing to draw: no legend
+    fig, _ = _drawn(tmp_path, monkeypatch, s3, _rows((1.0, 2.0, 3.0), names=("a", "b", "c"), status="failed"))
+    assert fig.axes[0].get_legend() is None
+    # only refused variants: a legend all the same
+    fig, _ = _drawn(tmp_path, monkeypatch, s3, _rows((1.0, 2.0, 3.0), names=("a", "b", "c"), status="rejected"))
+    assert [t.get_text() for t in fig.axes[0].get_legend().get_texts()] == ["refused by a requirement"]
+
+
+def test_points_off_the_axes_are_not_linked(tmp_path, monkeypatch):
+    s = _study(minimize=["a", "b"])
+    rows = _rows((1.0, 2.0), (2.0, 1.0), (3.0, math.inf))
+    rows[2]["status"] = "rejected"
+    fig, pts = _drawn(tmp_path, monkeypatch, s, rows)
+    assert sorted(v for v, *_ in pts) == [1, 2]
+
+
+def test_plain_keeps_the_space_and_what_follows():
+    assert _plain(" ! ") == " ! "
