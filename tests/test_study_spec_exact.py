@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from propulsor.errors import InputError
-from propulsor.study.spec import (ALL_CHECKS, MAX_STUDY_BYTES, MAX_VARIANTS, Requirement, _requirement, load_study,
+from propulsor.study.spec import (ALL_CHECKS, MAX_STUDY_BYTES, MAX_VARIANTS, Requirement, Study, _requirement, load_study,
                                   variant_key)
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -111,6 +111,8 @@ def test_a_study_read_whole(tmp_path):
                                                    '<=, >, <, ==, !=)')),
     (dict(objectives='require = ["T_at_V_max_C <= 1e999"]'),
      ("objectives.require", "T_at_V_max_C <= 1e999", "the bound must be a finite number")),
+    (dict(objectives='record = ["T_at_V_max_C"]'),
+     ("objectives", {"record": ["T_at_V_max_C"]}, "must name at least one value to minimize or maximize")),
 ])
 def test_each_refusal_in_full(tmp_path, sections, want):
     assert _refused(tmp_path, _text(**sections)) == want
@@ -188,3 +190,89 @@ def test_a_study_file_too_large_or_not_text_is_refused(tmp_path):
     with pytest.raises(InputError) as e:
         load_study(tmp_path / "missing.toml")
     assert e.value.parameter == "STUDY"
+
+
+@pytest.mark.parametrize("sections, want", [
+    # a varied value checked as a part file's: its limit with its unit, a choice, a type
+    (dict(vary="tyre_width_mm = [70.0, 500.0]"), ("tyre_width_mm", 500.0, "must be <= 400.0 mm")),
+    (dict(vary="rows = [1, 3]"), ("rows", 3, "must be one of 1, 2")),
+    (dict(vary='tyre_width_mm = ["wide"]'), ("tyre_width_mm", "wide", "must be a number")),
+    # every objective name is checked, each list, every name of it (not only the first)
+    (dict(objectives='minimize = ["T_at_V_max_C", "nonsense"]'),
+     ("objectives.minimize", "nonsense", "is not a derived value of a road_wheel manifest")),
+    (dict(objectives='maximize = ["nonsense"]'),
+     ("objectives.maximize", "nonsense", "is not a derived value of a road_wheel manifest")),
+    (dict(objectives='require = ["all_checks_passed", "nonsense >= 1"]'),
+     ("objectives.require", "nonsense", "is not a derived value of a road_wheel manifest")),
+    (dict(objectives='require = "nonsense >= 1"'),
+     ("objectives.require", "nonsense", "is not a derived value of a road_wheel manifest")),
+])
+def test_each_refusal_of_a_value_or_name_in_full(tmp_path, sections, want):
+    assert _refused(tmp_path, _text(**sections)) == want
+
+
+def test_a_section_that_is_not_a_table_and_a_file_that_is_not_toml(tmp_path):
+    assert _refused(tmp_path, "vary = 3\n" + _text(vary=None)) == ("vary", 3, "must be a table")
+    p = tmp_path / "bad.toml"
+    p.write_text("[study\n", encoding="utf-8")
+    with pytest.raises(InputError) as e:
+        load_study(p)
+    assert (e.value.parameter, e.value.value) == ("STUDY", str(p)) and "line 1" in e.value.limit
+    p.write_text(_text(vary="tyre_width_mm = [[[[[[70.0]]]]]]"), encoding="utf-8")
+    with pytest.raises(InputError) as e:
+        load_study(p)
+    assert (e.value.parameter, e.value.value, e.value.limit) == (
+        "STUDY", "<nested more than 4 deep>", "must nest arrays and tables at most 4 deep")
+    p.write_text(_text(vary="tyre_width_mm = [[[70.0]]]"), encoding="utf-8")  # 4 deep: read, then refused as a value
+    with pytest.raises(InputError) as e:
+        load_study(p)
+    assert e.value.parameter == "tyre_width_mm"
+    p.write_text("[study]\n" + "x = [" * 2000 + "]" * 2000 + "\n", encoding="utf-8")
+    with pytest.raises(InputError) as e:
+        load_study(p)
+    assert (e.value.parameter, e.value.value) == ("STUDY", str(p))
+    assert e.value.limit in ("nests arrays or tables too deeply", "must nest arrays and tables at most 4 deep") \
+        or "line" in e.value.limit
+    with pytest.raises(InputError) as e:
+        load_study(tmp_path)  # a folder
+    assert (e.value.parameter, e.value.value) == ("STUDY", str(tmp_path)) and e.value.limit
+
+
+def test_a_study_without_a_seed_draws_as_seed_zero(tmp_path):
+    text = _text(study=f'part = "{WHEEL}"\nsample = 6', vary="tyre_width_mm = { from = 70.0, to = 90.0 }")
+    assert _load(tmp_path, text).variants == _load(tmp_path, text.replace("sample = 6", "sample = 6\nseed = 0")).variants
+
+
+def test_the_largest_sample_and_range_are_taken(tmp_path):
+    s = _load(tmp_path, _text(study=f'part = "{WHEEL}"\nsample = {MAX_VARIANTS}', vary="rows = [1, 2]"))
+    assert len(s.variants) == 2
+    s = _load(tmp_path, _text(vary=f"tyre_width_mm = {{ from = 10.0, to = {10.0 + (MAX_VARIANTS - 1) * 0.001!r}, "
+                                   "step = 0.001 }"))
+    assert len(s.variants) == MAX_VARIANTS
+
+
+def test_depth_proof_takes_values_the_design_does_not_give(tmp_path):
+    # the wheel's mass comes from its solids (a build), not its design: refused at depth design, taken at depth proof
+    objectives = 'minimize = ["T_at_V_max_C"]\nrecord = ["mass_wheel_kg"]'
+    assert _refused(tmp_path, _text(objectives=objectives)) == (
+        "objectives.record", "mass_wheel_kg", "is not computed at depth design for this road_wheel (its design gives "
+        "19 values); depth proof or build may give it")
+    s = _load(tmp_path, _text(study=f'part = "{WHEEL}"\ndepth = "proof"', objectives=objectives))
+    assert s.record == ("mass_wheel_kg",) and s.depth == "proof"
+
+
+def test_decimals_of_a_number():
+    from propulsor.study.spec import _decimals
+
+    assert [_decimals(x) for x in (0.25, 3, 70.1, 1e-05, 1.5e20, 2.0)] == [2, 1, 1, 12, 12, 1]
+
+
+def test_the_variant_key_is_stable():
+    """--resume finds its rows by this key: a change of its recipe makes every finished variant run again."""
+    s = Study(Path("s.toml"), "t", WHEEL, "road_wheel", {"rows": 2}, "design", ("x",), (), (), (), (), ())
+    import hashlib
+    import json
+
+    want = hashlib.sha256(json.dumps({"type": "road_wheel", "base": {"rows": 2}, "values": {"x": 1.5},
+                                      "depth": "design", "version": "0.1.0"}, sort_keys=True).encode()).hexdigest()
+    assert variant_key(s, {"x": 1.5}, "0.1.0") == want[:16]
