@@ -51,17 +51,19 @@ def parameters(part_type: str, /, **values: Any):
     """The validated, frozen parameters of `part_type` with `values` in place of the defaults (the same
     checks as a part file: types, limits, the rules between parameters).  InputError otherwise."""
     from .params import load_params
-    from .parts import get_part_type
+    from .parts import get_part_type, vet
 
     pt = get_part_type(part_type)
-    return load_params(pt.params_cls, values)
+    params = load_params(pt.params_cls, values, validate=False)
+    vet(pt, params)
+    return params
 
 
 def part(source: "str | bytes | os.PathLike[str]", /, **overrides: Any) -> "Part":
     """A part from a part type name (its defaults) or a part file (``*.toml``), with `overrides` in place of
     the values there.  The parameters are validated at once (InputError naming the key)."""
     from .params import load_params, read_part_file
-    from .parts import get_part_type, part_type_names
+    from .parts import get_part_type, part_type_names, vet
 
     if isinstance(source, str) and source in part_type_names():
         return Part(source, parameters(source, **overrides), None)
@@ -71,7 +73,9 @@ def part(source: "str | bytes | os.PathLike[str]", /, **overrides: Any) -> "Part
                          "file (.toml)")
     type_name, mapping = read_part_file(path)
     pt = get_part_type(type_name)
-    return Part(type_name, load_params(pt.params_cls, {**mapping, **overrides}), path)
+    params = load_params(pt.params_cls, {**mapping, **overrides}, validate=False)
+    vet(pt, params, path)
+    return Part(type_name, params, path)
 
 
 def as_path(value, key: str) -> Path:

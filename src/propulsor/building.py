@@ -60,7 +60,7 @@ def load_part(part_file: Path):
     if part_file in LOADED:
         return LOADED.pop(part_file)
     from .params import load_params, read_part_file
-    from .parts import check_size, get_part_type, size_needs_design
+    from .parts import check_size, get_part_type, size_needs_design, vet
 
     part_type_name, mapping = read_part_file(part_file)
     part_type = get_part_type(part_type_name)
@@ -68,22 +68,9 @@ def load_part(part_file: Path):
     # the size estimate first where it needs only the values (a design can itself be the long part)
     early = not size_needs_design(part_type)
     estimate = check_size(part_type, params, part_file) if early else None
-    if callable(getattr(params, "validate", None)):
-        params.validate()
+    vet(part_type, params, part_file)  # the rules between fields, then the design's own feasibility (may take seconds)
     estimate = estimate or check_size(part_type, params, part_file)
-    if callable(getattr(params, "screen", None)):
-        _screen(params, part_file)  # what the build would refuse before making any geometry (may take seconds)
     return part_type, params, estimate
-
-
-def _screen(params, part_file: Path) -> None:
-    """``params.screen()``; with the part file where the screen reads the files it names (``source``)."""
-    import inspect
-
-    if "source" in inspect.signature(params.screen).parameters:
-        params.screen(source=part_file)
-    else:
-        params.screen()
 
 
 def write_depfile(depfile: Path, target: Path, files) -> None:
