@@ -28,7 +28,7 @@ def explore(study: str | Path, out: str | Path | None = None, *, scheduler: str 
     whole study (as a build's output is): `wait` False refuses a folder in use instead of waiting."""
     from .engine import run
 
-    from ..api import as_path
+    from ..building import as_path
 
     study = as_path(study, "study")
     spec = load_study(study)

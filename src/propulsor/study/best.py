@@ -13,32 +13,34 @@ def build_best_variants(spec, outcome, k: int, progress=None) -> list[Path]:
     not built, said by `progress`)."""
     from .folder import holding
 
-    with holding(outcome.folder):
+    with holding(outcome.folder, progress=progress):
         return build_best(spec, outcome, k, progress)
 
 
 def build_best(spec, outcome, k: int, progress=None) -> list[Path]:
-    from ..api import Part
+    """The `k` best variants built by the build service (``building.build``) into <folder>/best/<rank>/, a failed
+    check kept; a rank whose folder may not be used is a notice to `progress`, not the study's end.  Then the
+    front's picture and the study page again (they link the built ranks)."""
+    from ..building import Loaded, build
     from ..errors import CheckFailed, EnvironmentFailure, InputError
     from ..params import load_params
     from ..parts import get_part_type
+    from ..progress import Reporter
 
     pt = get_part_type(spec.part_type)
     made = []
-    say = progress or (lambda msg: None)
+    say = Reporter.of(progress)
     for rank, (_, row) in enumerate(outcome.ranked[:k], 1):
         values = {n: row[n] for n in spec.varied}
         say(f"best {rank}: variant {row['variant']} ({', '.join(f'{n} = {v}' for n, v in values.items())})")
-        part = Part(spec.part_type, load_params(pt.params_cls, {**spec.base, **values}), spec.part_file)
+        part = Loaded(pt, load_params(pt.params_cls, {**spec.base, **values}), spec.part_file)
         target = outcome.folder / "best" / str(rank)
         try:
-            part.write(target, keep_failed=True)  # never with force: nothing there is deleted that a build did not write
+            build(part, target, keep_failed=True)  # never with force: nothing there is deleted that a build did not write
         except CheckFailed:
             pass
         except (InputError, EnvironmentFailure) as exc:
-            import sys
-
-            print(f"propulsor: best {rank} not built: {exc}", file=sys.stderr)
+            say.notice(f"best {rank} not built: {exc}")
             continue
         made.append(target)
     from .page import write_page

@@ -175,7 +175,7 @@ def run(study: Study, out: Path, *, scheduler: str | None = None, workers: int |
     """Run the study into folder `out`: results.csv, results.parquet, front.csv, pareto_front.png, study.html
     (and variants/ at depth build; best/<rank>/ of the `build_best` best).  The folder is locked for all of it
     (:func:`holding`); nothing is written before the study file, the folder and the scheduler are known good."""
-    with holding(out, wait=wait):
+    with holding(out, wait=wait, progress=progress):
         vet_folder(out, build_best)  # as it is now, with the lock held
         outcome = _run(study, out, scheduler=scheduler, workers=workers, resume=resume, progress=progress,
                        client=client, worker_wait=worker_wait)
