@@ -224,7 +224,12 @@ class Part:
         allowances, the rig and the plates.  `printer`: a profile name; `scale`: a reduction S (1:S) or None
         for the largest standard scale that fits; `settings`: printer settings to override
         (e.g. ``backlash_mm=0.35``)."""
+        from .building import TURN
+        from .parallel import Workers
         from .parts import get_kit
         from .printing.printers import load_printer
 
-        return get_kit(self.type)(self.params, load_printer(printer, settings), scale, source=self.source)
+        make_kit = get_kit(self.type)
+        profile = load_printer(printer, settings)
+        with Workers(), TURN:  # the kit's own workers, ended with it
+            return make_kit(self.params, profile, scale, source=self.source)
