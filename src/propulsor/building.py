@@ -249,20 +249,23 @@ def as_path(value, key: str) -> Path:
 
 
 def build(part: Loaded, out, *, force: bool = False, keep_failed: bool = False, wait: bool = True,
-          progress=None) -> BuildResult:
+          progress=None, vetted: bool = False) -> BuildResult:
     """Build `part` into folder `out` (text, bytes or a path): the files ``propulsor build`` writes, under the
     folder's rules (vetted, locked, built into a temporary folder, put in place in one step).  `progress`:
-    a callback for the :class:`~.progress.Event` s on the way (None: none).  See :func:`publish` for what
-    it raises."""
+    a callback for the :class:`~.progress.Event` s on the way (None: none).  `vetted`: `out` is already the
+    absolute folder :func:`target` made of it with this part's files (the command line vets before it loads
+    the part file); it is vetted again once the lock is held either way.  See :func:`publish` for what it
+    raises."""
     keep = part.files_read
-    out = target(out, Path("output") / (part.source.stem if part.source else part.part_type.name), force, keep)
+    if not vetted:
+        out = target(out, Path("output") / (part.source.stem if part.source else part.part_type.name), force, keep)
     return publish(out, keep, lambda tmp, say: produce_build(part.part_type, part.params, part.source, tmp, say),
                    force=force, keep_failed=keep_failed, wait=wait, progress=progress)
 
 
 def build_kit(part: Loaded, out, printer, *, scale: float | None = None, sliced: bool = False,
               force: bool = False, keep_failed: bool = False, wait: bool = True, progress=None,
-              printer_file: Path | None = None) -> BuildResult:
+              printer_file: Path | None = None, vetted: bool = False) -> BuildResult:
     """The print kit of `part` on `printer` (a ``printing.printers.Printer``) into folder `out`: pieces at print
     scale 1:`scale` (None: the largest standard scale that fits) with the FDM allowances, the rig, the plates
     (sliced when `sliced`), ``print_report.md``.  `printer_file`: the user's profile file the kit also depends
@@ -271,8 +274,9 @@ def build_kit(part: Loaded, out, printer, *, scale: float | None = None, sliced:
 
     make_kit = get_kit(part.part_type.name)
     keep = part.files_read + ((printer_file,) if printer_file is not None else ())
-    stem = part.source.stem if part.source else part.part_type.name
-    out = target(out, Path("output") / f"{stem}_kit", force, keep)
+    if not vetted:
+        stem = part.source.stem if part.source else part.part_type.name
+        out = target(out, Path("output") / f"{stem}_kit", force, keep)
     name = part.part_type.name
 
     def produce(tmp: Path, say):

@@ -151,7 +151,7 @@ def build_one(args, part_file: Path, depfile: Path | None) -> int:
         return EXIT_OK
     try:
         result = building.build(part, out, force=args.force, keep_failed=args.keep_failed, wait=not args.no_wait,
-                                progress=render)
+                                progress=render, vetted=True)
     except (InputError, EnvironmentFailure, CheckFailed) as exc:
         return fail(exc)
     if depfile:
@@ -239,7 +239,7 @@ def cmd_print(args) -> int:
     try:
         result = building.build_kit(part, out, printer, scale=S, sliced=sliced, force=args.force,
                                     keep_failed=args.keep_failed, wait=not args.no_wait, progress=render,
-                                    printer_file=profile)
+                                    printer_file=profile, vetted=True)
     except (InputError, EnvironmentFailure, CheckFailed) as exc:
         return fail(exc)
     if args.depfile:
