@@ -154,3 +154,22 @@ def test_the_contracts_break_under_a_mutation(tmp_path, module, line, contract):
 def test_the_source_keeps_every_contract():
     r = _lint(SRC)
     assert r.returncode == 0, r.stdout[-3000:]
+
+
+def test_below_the_command_line_nothing_prints():
+    """The build service and everything below it report through values, exceptions and progress events: no
+    ``print`` and no ``sys.stdout`` / ``sys.stderr`` outside the command-line face (cli.py, batch.py)."""
+    import ast
+
+    face = {SRC / PACKAGE / "cli.py", SRC / PACKAGE / "batch.py", SRC / PACKAGE / "__main__.py"}
+    bad = []
+    for path in sorted((SRC / PACKAGE).rglob("*.py")):
+        if path in face:
+            continue
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"), str(path))):
+            if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "print":
+                bad.append(f"{path.relative_to(SRC)}:{node.lineno} print()")
+            if (isinstance(node, ast.Attribute) and node.attr in ("stdout", "stderr")
+                    and isinstance(node.value, ast.Name) and node.value.id == "sys"):
+                bad.append(f"{path.relative_to(SRC)}:{node.lineno} sys.{node.attr}")
+    assert bad == [], "\n".join(bad)
