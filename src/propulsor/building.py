@@ -186,40 +186,45 @@ def publish(out: Path, keep: tuple[Path, ...], produce: Callable, *, force: bool
     lock = of.OutputLock(out)
     tmp = None
     failures: list[str] = []
+    workers = Workers().open()  # this build's workers: killed when it ends
     try:
-        with Workers() as workers:  # this build's workers: killed when it ends (signals held meanwhile)
+        try:
+            of.prepare_parent(out)
             try:
-                of.prepare_parent(out)
-                try:
-                    lock.acquire(wait=wait, on_wait=lambda pid: say.notice(f"{out} is being built by process "
-                                                                           f"{pid}; waiting"))
-                except of.Busy as busy:
-                    raise FolderBusy(str(out), busy.pid) from None
-                workers.close_in_workers(lock.fd)
-                of.vet_target(out, force=force, keep=keep)  # as it is now, after the wait
-                for stale in of.clean_stale(out):
-                    say(f"removed {stale.name}, left by a build that was killed")
-                before = of.snapshot(out)  # what the swap may remove: nothing saved there from now on
-                tmp = of.make_temp(out)
-                with writing_into(tmp) as ident:
-                    with TURN:
-                        failures, what, w = produce(tmp, say)
-                    check_signalled()  # a swallowed interrupt: the output is not put in place
-                    for f in failures:
-                        say.notice(f"check failed: {f}")
-                    if failures and not keep_failed:  # nothing published; what was made is in the error
-                        raise CheckFailed(failures, what=what, result=_result(out, what, w, failures, keep))
-                    of.verify_built(tmp, ident)
-                    of.replace(tmp, out, before, notice=say.notice)
-            except OSError as exc:  # a write refused (a file's write names no path: the folder it went to)
-                if exc.filename is None:
-                    exc.filename = str(tmp if tmp is not None else out)
-                raise EnvironmentFailure.from_oserror(exc, "cannot build:") from None
+                lock.acquire(wait=wait, on_wait=lambda pid: say.notice(f"{out} is being built by process "
+                                                                       f"{pid}; waiting"))
+            except of.Busy as busy:
+                raise FolderBusy(str(out), busy.pid) from None
+            workers.close_in_workers(lock.fd)
+            of.vet_target(out, force=force, keep=keep)  # as it is now, after the wait
+            for stale in of.clean_stale(out):
+                say(f"removed {stale.name}, left by a build that was killed")
+            before = of.snapshot(out)  # what the swap may remove: nothing saved there from now on
+            tmp = of.make_temp(out)
+            with writing_into(tmp) as ident:
+                with TURN:
+                    failures, what, w = produce(tmp, say)
+                check_signalled()  # a swallowed interrupt: the output is not put in place
+                for f in failures:
+                    say.notice(f"check failed: {f}")
+                if failures and not keep_failed:  # nothing published; what was made is in the error
+                    raise CheckFailed(failures, what=what, result=_result(out, what, w, failures, keep))
+                of.verify_built(tmp, ident)
+                of.replace(tmp, out, before, notice=say.notice)
+        except OSError as exc:  # a write refused (a file's write names no path: the folder it went to)
+            if exc.filename is None:
+                exc.filename = str(tmp if tmp is not None else out)
+            raise EnvironmentFailure.from_oserror(exc, "cannot build:") from None
     finally:
-        with held_signals():  # a second Ctrl-C must not leave debris
-            if tmp is not None and os.path.lexists(tmp):
-                shutil.rmtree(tmp, ignore_errors=True)
-            lock.release()
+        with held_signals():  # a second Ctrl-C must not leave debris: workers, temporary folder, lock
+            try:
+                workers.close()
+            finally:
+                try:
+                    if tmp is not None and os.path.lexists(tmp):
+                        shutil.rmtree(tmp, ignore_errors=True)
+                finally:
+                    lock.release()
     page = regenerate_gallery(out.parent, say) if gallery_folder(out.parent) else None
     result = _result(out, what, w, failures, keep, page)
     if failures:

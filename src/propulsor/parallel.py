@@ -246,24 +246,33 @@ class Workers:
         self._lock = threading.Lock()
         self._token = None
 
-    def __enter__(self) -> "Workers":
+    def open(self) -> "Workers":
+        """Make this the current build's workers (in this thread / context); returns itself."""
         self._token = _CURRENT.set(self)
         return self
+
+    def close(self) -> None:
+        """Kill what is left of this build's workers, forget its descriptors, and stop being the current one
+        (the caller holds off SIGINT / SIGTERM meanwhile: :meth:`__exit__` does)."""
+        try:
+            self.kill()
+        finally:
+            if self._token is not None:
+                _CURRENT.reset(self._token)
+                self._token = None
+            with _CLOSE_LOCK:
+                for fd in self._fds:
+                    _CLOSE_IN_WORKERS.discard(fd)
+            self._fds.clear()
+
+    def __enter__(self) -> "Workers":
+        return self.open()
 
     def __exit__(self, *exc) -> None:
         from .signals import held_signals
 
         with held_signals():
-            try:
-                self.kill()
-            finally:
-                if self._token is not None:
-                    _CURRENT.reset(self._token)
-                    self._token = None
-                with _CLOSE_LOCK:
-                    for fd in self._fds:
-                        _CLOSE_IN_WORKERS.discard(fd)
-                self._fds.clear()
+            self.close()
 
     def adopt(self, pool: ProcessPoolExecutor) -> None:
         with self._lock:
