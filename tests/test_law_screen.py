@@ -74,13 +74,14 @@ def test_the_build_without_the_screen_refuses_with_the_same_line(tmp_path):
     from propulsor.errors import InputError
     from propulsor.params import load_params, read_part_file
     from propulsor.parts.noncircular_pair import NoncircularPairParams, pair_design
+    from propulsor.parts.noncircular_pair.feasibility import screen
 
     keys = BAD["fourier"][0]
     part = tmp_path / "bad.toml"
     part.write_text(_COMMON + keys)
     p = load_params(NoncircularPairParams, read_part_file(part)[1])
     with pytest.raises(InputError) as screened:
-        p.screen(source=part)
+        screen(p, source=part)
     q = load_params(NoncircularPairParams, read_part_file(part)[1])
     with pytest.raises(InputError) as built:
         pair_design(q, source=part)

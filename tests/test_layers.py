@@ -1,174 +1,175 @@
-"""Layer contracts of ``src/propulsor`` (docs/architecture.md, "layers"), read from the source.
+"""What import-linter cannot say about the layers of ``src/propulsor`` (docs/architecture.md, «Layers»).
 
-Every ``import`` and ``from ... import`` of every module counts, at module level or inside a
-function (the part modules import lazily).  A module's layer is its first package below
-``propulsor`` (``gears/involute.py`` -> ``gears``); top-level modules are layers of their own.
+The contracts themselves — the layers, the independence of the part packages, no CAD kernel in the math
+layers, no kernel in the part types — are import-linter's (``[tool.importlinter]`` in pyproject.toml,
+``lint-imports`` in ``make test``).  Here: every top-level module has its layer in that contract (a new one must
+be placed), no import cycle anywhere (grimp, which import-linter uses, finds them), grimp sees the imports inside
+functions, and the contracts do fail on the two mutations the issue names.
 """
 
 from __future__ import annotations
 
-import ast
-from dataclasses import dataclass
+import os
+import shutil
+import subprocess
+import sys
+import tomllib
 from pathlib import Path
 
 import pytest
 
-SRC = Path(__file__).resolve().parents[1] / "src"
+ROOT = Path(__file__).resolve().parents[1]
+SRC = ROOT / "src"
 PACKAGE = "propulsor"
+CONFIG = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["tool"]["importlinter"]
+LINT = Path(sys.executable).parent / "lint-imports"
 
-#: the CAD kernel (cadquery wraps OCP, i.e. OCCT) and the boolean kernel
-KERNEL = {"cadquery", "OCP", "manifold3d"}
-#: everything that is not math: kernels, meshes, DXF, plots and pictures (PIL: animation frames)
-CAD_MESH_DXF_PLOT = KERNEL | {"trimesh", "ezdxf", "matplotlib", "PIL"}
-
-#: layers from the bottom up; a module may import its own layer and the layers of lower rank only
-#: (so the layers cannot form a cycle).  errors / policy / check (the one check result type) / the package root are the ground floor.
-RANK = {
-    "errors": 0, "policy": 0, "check": 0, "write_root": 0, "regular_file": 0, "atomic_file": 0, "make_names": 0.5, PACKAGE: 0,
-    "numbers": 0.5,
-    "laws": 1,
-    "gears": 2,
-    "geometry": 3,
-    "solids": 4,
-    "export": 5,
-    "checks": 6,
-    "params": 7, "progress": 7, "parallel": 7, "output_folder": 7, "signals": 7,
-    "printing": 7.5,
-    "parts": 8,
-    "building": 8.5,
-    "api": 8.6,
-    "batch": 8.7,
-    "api": 8.6,
-    "study": 8.8,
-    "cli": 9,
-}
-MATH = ("laws", "gears")
-#: the layers whose public names the package root re-exports lazily (``propulsor.part``, ``propulsor.explore``)
-FACADE_OF = {"api", "study", "errors"}
+grimp = pytest.importorskip("grimp", reason="import-linter (and its grimp) are in the test extra: make install")
 
 
-@dataclass(frozen=True)
-class Import:
-    module: str  # importing module, dotted
-    line: int
-    target: str  # imported module, dotted (a propulsor module or a third-party top-level package)
-
-    @property
-    def layer(self) -> str:
-        return layer_of(self.module)
-
-    @property
-    def internal(self) -> bool:
-        return self.target == PACKAGE or self.target.startswith(PACKAGE + ".")
-
-    @property
-    def target_layer(self) -> str:
-        return layer_of(self.target) if self.internal else self.target.split(".")[0]
-
-    def __str__(self) -> str:
-        path = self.module.replace(".", "/") + ".py"
-        return f"src/{path}:{self.line} imports {self.target}"
+def _graph():
+    return grimp.build_graph(PACKAGE, include_external_packages=False, cache_dir=None)
 
 
-def layer_of(module: str) -> str:
-    parts = module.split(".")
-    return parts[1] if len(parts) > 1 else PACKAGE
+GRAPH = _graph()
 
 
-def _is_module(dotted: str) -> bool:
-    p = SRC.joinpath(*dotted.split("."))
-    return p.with_suffix(".py").is_file() or (p / "__init__.py").is_file()
+def _contract(contract_id: str) -> dict:
+    return next(c for c in CONFIG["contracts"] if c.get("id") == contract_id)
 
 
-def imports_of(path: Path) -> list[Import]:
-    rel = path.relative_to(SRC).with_suffix("")
-    parts = list(rel.parts)
-    is_pkg = parts[-1] == "__init__"
-    if is_pkg:
-        parts = parts[:-1]
-    module = ".".join(parts)
-    package = parts if is_pkg else parts[:-1]
-    out = []
-    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"), str(path))):
-        if isinstance(node, ast.Import):
-            out += [Import(module, node.lineno, a.name) for a in node.names]
-        elif isinstance(node, ast.ImportFrom):
-            if node.level:
-                base = package[: len(package) - (node.level - 1)]
-                stem = ".".join(base + ([node.module] if node.module else []))
-            else:
-                stem = node.module
-            for a in node.names:  # `from propulsor import policy` imports the module propulsor.policy
-                sub = f"{stem}.{a.name}"
-                out.append(Import(module, node.lineno, sub if _is_module(sub) else stem))
+def _layer_modules() -> set[str]:
+    names = set()
+    for layer in _contract("layers")["layers"]:
+        for part in layer.replace("|", ":").split(":"):
+            names.add(part.strip())
+    return names
+
+
+def test_every_top_level_module_has_its_layer():
+    """A new top-level module or package must be placed in the layers contract (and in the docs)."""
+    top = {m for m in GRAPH.modules if m.count(".") == 1}
+    assert top - _layer_modules() == set(), "not in [tool.importlinter] layers: " + ", ".join(sorted(top - _layer_modules()))
+    assert _layer_modules() - top == set(), "in the layers contract but no module: " + ", ".join(sorted(_layer_modules() - top))
+
+
+def _cycles(graph) -> list[list[str]]:
+    """The strongly connected groups of more than one module (Tarjan, iterative), each sorted."""
+    index, low, on, stack, out = {}, {}, set(), [], []
+    counter = 0
+    for root in sorted(graph.modules):
+        if root in index:
+            continue
+        work = [(root, iter(sorted(graph.find_modules_directly_imported_by(root))))]
+        index[root] = low[root] = counter
+        counter += 1
+        stack.append(root)
+        on.add(root)
+        while work:
+            v, it = work[-1]
+            w = next(it, None)
+            if w is not None:
+                if w not in index:
+                    index[w] = low[w] = counter
+                    counter += 1
+                    stack.append(w)
+                    on.add(w)
+                    work.append((w, iter(sorted(graph.find_modules_directly_imported_by(w)))))
+                elif w in on:
+                    low[v] = min(low[v], index[w])
+                continue
+            work.pop()
+            if work:
+                low[work[-1][0]] = min(low[work[-1][0]], low[v])
+            if low[v] == index[v]:
+                group = []
+                while True:
+                    w = stack.pop()
+                    on.discard(w)
+                    group.append(w)
+                    if w == v:
+                        break
+                if len(group) > 1:
+                    out.append(sorted(group))
     return out
 
 
-def all_imports() -> list[Import]:
-    return [imp for p in sorted((SRC / PACKAGE).rglob("*.py")) for imp in imports_of(p)]
+def test_no_import_cycle_in_the_package():
+    """No module reaches itself through its imports (those inside functions count): the groups grimp's graph
+    holds, each with one of its arrows back."""
+    found = _cycles(GRAPH)
+    shown = []
+    for group in found:
+        members = set(group)
+        arrows = [f"{a} -> {b}" for a in group for b in sorted(GRAPH.find_modules_directly_imported_by(a)) if b in members]
+        shown.append(f"{len(group)} modules: " + "; ".join(arrows[:6]))
+    assert found == [], "\n".join(shown)
 
 
-IMPORTS = all_imports()
+def test_the_cycle_finder_finds_a_cycle():
+    g = grimp.ImportGraph()
+    for m in ("p", "p.a", "p.b", "p.c"):
+        g.add_module(m)
+    g.add_import(importer="p.a", imported="p.b")
+    g.add_import(importer="p.b", imported="p.a")
+    g.add_import(importer="p.c", imported="p.a")
+    assert _cycles(g) == [["p.a", "p.b"]]
 
 
-def _violations(layers, forbidden_layers=(), forbidden_libraries=()) -> list[str]:
+def test_grimp_sees_imports_inside_functions():
+    """The graph holds the lazy imports the part modules use (and relative imports resolved to the module)."""
+    assert GRAPH.direct_import_exists(importer="propulsor.parts.noncircular_pair.design",
+                                      imported="propulsor.geometry.noncircular_outline")
+    assert GRAPH.direct_import_exists(importer="propulsor.gears.noncircular_teeth", imported="propulsor.gears.envelope")
+    assert GRAPH.direct_import_exists(importer="propulsor.laws.shoe", imported="propulsor.policy")
+
+
+def _lint(src: Path) -> subprocess.CompletedProcess:
+    env = {**os.environ, "PYTHONPATH": str(src)}
+    return subprocess.run([str(LINT), "--config", str(ROOT / "pyproject.toml"), "--no-cache"], capture_output=True,
+                          text=True, cwd=ROOT, env=env, timeout=300)
+
+
+@pytest.mark.skipif(not LINT.exists(), reason="lint-imports not installed (make install)")
+@pytest.mark.parametrize("module, line, contract", [
+    ("gears/involute.py", "import cadquery  # mutation\n", "The math and 2D layers import no CAD kernel"),
+    ("parts/balancer/design.py", "from ..cam_mover import params as _mutation  # mutation\n",
+     "Part packages are independent"),
+], ids=["cadquery_in_gears", "cam_mover_in_balancer"])
+def test_the_contracts_break_under_a_mutation(tmp_path, module, line, contract):
+    """The source as it is keeps every contract; with the one line added, the contract named breaks."""
+    src = tmp_path / "src"
+    shutil.copytree(SRC / PACKAGE, src / PACKAGE, ignore=shutil.ignore_patterns("__pycache__", "web"))
+    target = src / PACKAGE / module
+    text = target.read_text(encoding="utf-8")
+    cut = text.index("\n\n", text.index("from __future__ import annotations")) + 1
+    target.write_text(text[:cut] + line + text[cut:], encoding="utf-8")
+    r = _lint(src)
+    assert r.returncode != 0, r.stdout
+    broken = [ln for ln in r.stdout.splitlines() if ln.endswith("BROKEN")]
+    assert any(contract in ln for ln in broken) or contract in r.stdout.split("Broken contracts")[-1], r.stdout
+
+
+@pytest.mark.skipif(not LINT.exists(), reason="lint-imports not installed (make install)")
+def test_the_source_keeps_every_contract():
+    r = _lint(SRC)
+    assert r.returncode == 0, r.stdout[-3000:]
+
+
+def test_below_the_command_line_nothing_prints():
+    """The build service and everything below it report through values, exceptions and progress events: no
+    ``print`` and no ``sys.stdout`` / ``sys.stderr`` outside the command-line face (cli.py, batch.py)."""
+    import ast
+
+    face = {SRC / PACKAGE / "cli.py", SRC / PACKAGE / "batch.py", SRC / PACKAGE / "__main__.py"}
     bad = []
-    for imp in IMPORTS:
-        if imp.layer not in layers:
+    for path in sorted((SRC / PACKAGE).rglob("*.py")):
+        if path in face:
             continue
-        if imp.internal and imp.target_layer in forbidden_layers:
-            bad.append(str(imp))
-        if not imp.internal and imp.target_layer in forbidden_libraries:
-            bad.append(str(imp))
-    return bad
-
-
-def test_every_layer_is_known():
-    """A new top-level module or package must be given its place in RANK (and in the docs)."""
-    layers = {imp.layer for imp in IMPORTS} | {imp.target_layer for imp in IMPORTS if imp.internal}
-    assert layers <= set(RANK), sorted(layers - set(RANK))
-
-
-def test_math_layers_import_no_cad_mesh_dxf_or_plot_library():
-    assert _violations(MATH, forbidden_libraries=CAD_MESH_DXF_PLOT) == []
-
-
-def test_math_layers_import_nothing_above_them():
-    upper = {"geometry", "solids", "checks", "export", "parts", "params", "cli", "progress", "parallel"}
-    assert _violations(MATH, forbidden_layers=upper) == []
-    assert _violations(("laws",), forbidden_layers={"gears"}) == []
-
-
-def test_geometry_imports_no_solids_checks_export_parts_nor_any_kernel():
-    upper = {"solids", "checks", "export", "parts", "params", "cli", "progress", "parallel"}
-    assert _violations(("geometry",), forbidden_layers=upper, forbidden_libraries=CAD_MESH_DXF_PLOT) == []
-
-
-def test_checks_and_exports_never_import_parts():
-    assert _violations(("checks", "export", "solids"), forbidden_layers={"parts", "cli", "params"}) == []
-
-
-def test_parts_import_no_kernel():
-    assert _violations(("parts",), forbidden_libraries=KERNEL) == []
-
-
-def test_layers_import_only_downwards_so_they_form_no_cycle():
-    # the package root's public names are loaded on first use from the layers that make them (api,
-    # study): a facade above everything, imported by no layer for anything but plain values
-    bad = [f"{imp} ({imp.layer} may not import {imp.target_layer})" for imp in IMPORTS
-           if imp.internal and imp.target_layer != imp.layer and RANK[imp.target_layer] >= RANK[imp.layer]
-           and not (imp.module == PACKAGE and imp.target_layer in FACADE_OF)]
-    assert bad == []
-
-
-def test_nothing_imports_the_api_but_the_root_and_the_command_line():
-    users = {imp.module for imp in IMPORTS if imp.internal and imp.target_layer == "api"}
-    assert users <= {PACKAGE, "propulsor.cli", "propulsor.study"} | {m for m in users if m.startswith("propulsor.study.")}
-
-
-def test_the_contracts_see_imports_inside_functions():
-    """The parser itself: lazy imports count, relative imports resolve to the module."""
-    found = {(imp.module, imp.target) for imp in IMPORTS}
-    assert ("propulsor.parts.noncircular_pair.design", "propulsor.geometry.noncircular_outline") in found
-    assert ("propulsor.gears.noncircular_teeth", "propulsor.gears.envelope") in found
-    assert ("propulsor.laws.shoe", "propulsor.policy") in found
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"), str(path))):
+            if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "print":
+                bad.append(f"{path.relative_to(SRC)}:{node.lineno} print()")
+            if (isinstance(node, ast.Attribute) and node.attr in ("stdout", "stderr")
+                    and isinstance(node.value, ast.Name) and node.value.id == "sys"):
+                bad.append(f"{path.relative_to(SRC)}:{node.lineno} sys.{node.attr}")
+    assert bad == [], "\n".join(bad)

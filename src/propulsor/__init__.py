@@ -19,7 +19,8 @@ Layers (each importable alone):
 
 from typing import TYPE_CHECKING
 
-__version__ = "0.1.0"
+from .version import __version__
+
 __all__ = ["Part", "Build", "Proof", "part", "part_types", "parameters", "explore", "InputError", "CheckFailed",
            "EnvironmentFailure", "__version__"]
 

@@ -22,22 +22,18 @@ whatever way the parameters are made (keyword, part file, dict, the dataclass it
 
 from __future__ import annotations
 
-import argparse
 import dataclasses
-import inspect
 import os
-import shutil
-import tempfile
-import threading
 from functools import cached_property
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from .building import as_path
 from .errors import CheckFailed, InputError
 
-__all__ = ["Part", "Build", "Proof", "part", "part_types", "parameters"]
+__all__ = ["Part", "Build", "Proof", "part", "part_types", "parameters", "as_path"]
 
 
 def part_types() -> list[str]:
@@ -51,17 +47,19 @@ def parameters(part_type: str, /, **values: Any):
     """The validated, frozen parameters of `part_type` with `values` in place of the defaults (the same
     checks as a part file: types, limits, the rules between parameters).  InputError otherwise."""
     from .params import load_params
-    from .parts import get_part_type
+    from .parts import get_part_type, vet
 
     pt = get_part_type(part_type)
-    return load_params(pt.params_cls, values)
+    params = load_params(pt.params_cls, values, validate=False)
+    vet(pt, params)
+    return params
 
 
 def part(source: "str | bytes | os.PathLike[str]", /, **overrides: Any) -> "Part":
     """A part from a part type name (its defaults) or a part file (``*.toml``), with `overrides` in place of
     the values there.  The parameters are validated at once (InputError naming the key)."""
     from .params import load_params, read_part_file
-    from .parts import get_part_type, part_type_names
+    from .parts import get_part_type, part_type_names, vet
 
     if isinstance(source, str) and source in part_type_names():
         return Part(source, parameters(source, **overrides), None)
@@ -71,25 +69,9 @@ def part(source: "str | bytes | os.PathLike[str]", /, **overrides: Any) -> "Part
                          "file (.toml)")
     type_name, mapping = read_part_file(path)
     pt = get_part_type(type_name)
-    return Part(type_name, load_params(pt.params_cls, {**mapping, **overrides}), path)
-
-
-def as_path(value, key: str) -> Path:
-    """A path given as text, bytes (the file system's own encoding) or os.PathLike; InputError naming `key`
-    for anything else or an empty one."""
-    try:
-        path = Path(os.fsdecode(bytes(value)) if isinstance(value, (bytes, bytearray)) else os.fspath(value))
-    except (TypeError, ValueError):
-        raise InputError(key, value, "must be a path (text, bytes or a pathlib.Path)") from None
-    if not str(path) or str(path) == ".":
-        raise InputError(key, value, "must name a file or folder")
-    return path
-
-
-#: one build at a time in a process: a build's worker pools, its clean-up (which stops every worker of the
-#: process) and its redirection of sys.stderr are the process's, so builds from several threads run in turn
-#: (each would take the cores anyway); re-entrant, as a write may run the design first
-_BUILDING = threading.RLock()
+    params = load_params(pt.params_cls, {**mapping, **overrides}, validate=False)
+    vet(pt, params, path)
+    return Part(type_name, params, path)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -102,6 +84,12 @@ class Build:
     solids: dict  # name -> cadquery Shape
     profiles: dict  # DXF name -> list of Profile (geometry.profile)
     assemblies: dict  # name -> [(component, solid, (x, y, z) mm, rotation about z rad)]
+
+    @classmethod
+    def of(cls, result) -> "Build":
+        """The in-memory side of the build service's result (``building.BuildResult``)."""
+        return cls(tuple(result.failures), tuple(result.checks), dict(result.derived), dict(result.solids),
+                   dict(result.profiles), dict(result.assemblies))
 
 
 @dataclasses.dataclass(frozen=True)
@@ -130,6 +118,9 @@ class Part:
         self._pt = get_part_type(part_type)
         if not isinstance(params, self._pt.params_cls):
             raise InputError("params", type(params).__name__, f"must be {self._pt.params_cls.__name__}")
+        from .building import Loaded
+
+        self._loaded = Loaded(self._pt, params, source)  # what the build service builds
 
     def __repr__(self) -> str:
         where = f" from {self.source}" if self.source else ""
@@ -138,31 +129,16 @@ class Part:
     @cached_property
     def design(self):
         """The part's design (frozen), computed once: what the build makes its geometry from."""
-        from .parts.pipeline import design_of
+        from .building import design
 
-        fn = self._pt.design
-        if fn is None:
-            raise InputError("design", self.type, "this part type has no separate design")
-        with _BUILDING:
-            if "source" in inspect.signature(fn).parameters:
-                return design_of(self.params, fn, self.source)
-            return design_of(self.params, fn)
+        return design(self._loaded)
 
     @cached_property
     def build(self) -> Build:
         """One real build of the part (its files written to a temporary folder, then removed); run once."""
-        from .building import produce_build
-        from .progress import Progress
-        from .write_root import writing_into
+        from .building import build_in_memory
 
-        folder = Path(tempfile.mkdtemp(prefix="propulsor-api-"))
-        try:
-            with _BUILDING, writing_into(folder):
-                failures, _, w = produce_build(self._pt, self.params, self.source, folder, Progress(enabled=False))
-        finally:
-            shutil.rmtree(folder, ignore_errors=True)
-        return Build(tuple(failures), tuple(w.checks), dict(w.derived), dict(w.built_solids),
-                     dict(w.built_profiles), dict(w.built_assemblies))
+        return Build.of(build_in_memory(self._loaded))
 
     @property
     def solids(self) -> dict:
@@ -179,22 +155,13 @@ class Part:
         """The design and the part type's proof steps only (the full-cycle proofs, their checks and derived
         values: no solid, no file), run once.  A part type that declares no proof steps runs its whole
         build (:attr:`build`) instead."""
-        from .parts.pipeline import Pipeline
-        from .parts.proof_writer import ProofWriter
-        from .progress import Progress
+        from .building import prove, proves_alone
 
-        pipeline = self._pt.build
-        if not (isinstance(pipeline, Pipeline) and pipeline.proves_alone):
+        if not proves_alone(self._loaded):
             b = self.build
             return Proof(b.failures, b.checks, b.derived, True)
-        with _BUILDING:
-            w = ProofWriter(self.type, self.params, progress=Progress(enabled=False), source=self.source)
-            try:
-                pipeline.prove(self.params, w)
-                failures = w.finish()
-            finally:
-                w.close()
-        return Proof(tuple(failures), tuple(w.checks), dict(w.derived), False)
+        r = prove(self._loaded)
+        return Proof(r.failures, r.checks, r.derived, r.whole_build)
 
     def prove(self, raise_on_failure: bool = False, depth: str = "build") -> list:
         """The checks (:class:`propulsor.check.Check`: name, passed, value, limit, unit, message) of
@@ -228,57 +195,41 @@ class Part:
             asm.add(solid, name=str(comp), loc=loc, color=cq.Color(r / 255, g / 255, b / 255))
         return asm
 
-    def write(self, out: "str | bytes | os.PathLike[str]", *, force: bool = False, keep_failed: bool = False) -> Path:
+    def write(self, out: "str | bytes | os.PathLike[str]", *, force: bool = False, keep_failed: bool = False,
+              wait: bool = True, progress=None) -> Path:
         """Build into folder `out` exactly as ``propulsor build PART --out OUT`` does (the same files, the
-        same bytes; the same folder rules, lock and atomic replacement).  Byte for byte as a build on its
-        own is the first build of a process: after other builds in the same interpreter, OCCT's STEP
-        writer may break the lines of an assembly's STEP elsewhere (the same entities and values).  Returns `out`; InputError for a
-        folder that may not be used, CheckFailed when a check failed (outputs kept only with
-        `keep_failed`), EnvironmentFailure when the file system refused."""
-        from . import output_folder as of
-        from .building import files_read, into_output, produce_build
-        from .errors import EnvironmentFailure
-        from .progress import Progress
+        same bytes; the same folder rules, lock and atomic replacement), through the same build service
+        (``building.build``).  Byte for byte as a build on its own is the first build of a process: after other
+        builds in the same interpreter, OCCT's STEP writer may break the lines of an assembly's STEP elsewhere
+        (the same entities and values).  `wait`: wait for another build holding the folder (False:
+        ``FolderBusy``, an InputError); `progress`: a callback for the build's events
+        (:class:`propulsor.progress.Event`, a str with a ``kind``).  Returns the folder; InputError for a folder
+        that may not be used, CheckFailed when a check failed (outputs kept only with `keep_failed`),
+        EnvironmentFailure when the file system refused.  Safe from several threads at once: each build
+        owns its folder, lock and worker processes."""
+        from .building import build
 
-        progress = Progress(enabled=False)
-        keep = files_read(self.params, self.source) if self.source else ()
-        target = of.vet_target(as_path(out, "out"), force=force, keep=keep)
-        failures: list[str] = []
-
-        def produce(tmp: Path):
-            fails, what, w = produce_build(self._pt, self.params, self.source, tmp, progress)
-            failures.extend(fails)
-            # the build just written is this part's build: .build, .solids, .prove() reuse it
-            self.__dict__["build"] = Build(tuple(fails), tuple(w.checks), dict(w.derived), dict(w.built_solids),
-                                           dict(w.built_profiles), dict(w.built_assemblies))
-            return fails, what
-
-        args = argparse.Namespace(no_wait=False, force=force, keep_failed=keep_failed)
-        import contextlib
-        import io
-        import sys
-
-        err = io.StringIO()
-        with _BUILDING, contextlib.redirect_stderr(err):
-            code = into_output(args, target, keep, produce, progress)
-        lines = [ln.removeprefix("propulsor: error: ") for ln in err.getvalue().splitlines() if ln.strip()]
-        if code == 2:
-            raise InputError("out", str(out), lines[-1] if lines else "refused")
-        if code == 3:
-            raise EnvironmentFailure(str(out), None, "cannot write", lines[-1] if lines else "")
-        if code == 1:
-            raise CheckFailed(failures)
-        if code != 0:
-            sys.stderr.write(err.getvalue())
-            raise RuntimeError(f"the build ended with exit code {code}")
-        return target
+        try:
+            result = build(self._loaded, as_path(out, "out"), force=force, keep_failed=keep_failed, wait=wait,
+                           progress=progress)
+        except CheckFailed as exc:
+            if exc.result is not None:  # the build that was made: .build, .solids, .prove() reuse it
+                self.__dict__["build"] = Build.of(exc.result)
+            raise
+        self.__dict__["build"] = Build.of(result)  # the build just written is this part's build
+        return result.out
 
     def kit(self, printer: str = "generic", scale: float | None = None, **settings: Any):
         """The print kit (``propulsor print``'s model, not written): pieces at print scale with the FDM
         allowances, the rig and the plates.  `printer`: a profile name; `scale`: a reduction S (1:S) or None
         for the largest standard scale that fits; `settings`: printer settings to override
         (e.g. ``backlash_mm=0.35``)."""
+        from .building import TURN
+        from .parallel import Workers
         from .parts import get_kit
         from .printing.printers import load_printer
 
-        return get_kit(self.type)(self.params, load_printer(printer, settings), scale, source=self.source)
+        make_kit = get_kit(self.type)
+        profile = load_printer(printer, settings)
+        with Workers(), TURN:  # the kit's own workers, ended with it
+            return make_kit(self.params, profile, scale, source=self.source)

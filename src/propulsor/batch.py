@@ -1,6 +1,7 @@
 """Several part files built by one command (`propulsor build a.toml b.toml …`, what `make` runs): the
 imports paid once, each build in a child forked from the same state, as many side by side as the
-process budget allows, the longest first."""
+process budget allows, the longest first.  Part of the command line's face (it runs the command line's
+``build_one`` in each child and gathers their exit codes and output); the builds are the build service's."""
 
 from __future__ import annotations
 
@@ -9,8 +10,8 @@ import signal
 import sys
 from pathlib import Path
 
-from .building import LOADED, load_part
-from .signals import EXIT_OK, Interrupted, hold_signals
+from .building import LOADED, load
+from .signals import Interrupted, hold_signals
 
 
 def longest_first(files: list[Path]) -> list[int]:
@@ -19,11 +20,11 @@ def longest_first(files: list[Path]) -> list[int]:
     part is left in building.LOADED for its forked build."""
     def key(k):
         try:
-            loaded = load_part(files[k])
+            loaded = load(files[k])
         except Exception:  # noqa: BLE001 - its own build reports it
             return -float("inf"), k
-        LOADED[files[k]] = loaded  # the forked build takes it (building.load_part)
-        return -loaded[2].seconds, k
+        LOADED[files[k]] = loaded  # the forked build takes it (building.load)
+        return -loaded.estimate.seconds, k
 
     return sorted(range(len(files)), key=key)
 
@@ -42,7 +43,7 @@ def side_by_side(args, files: list[Path], depfile, slots: int, build, jobserver=
     pool = share_slots(slots, jobserver)
     pending = longest_first(files)
     running: dict[int, tuple[int, object, object, bytes | None]] = {}
-    codes: list[int] = [EXIT_OK] * len(files)
+    codes: list[int] = [0] * len(files)  # each the exit code its build ends with
     quiet = args.quiet
     try:
         while pending or running:

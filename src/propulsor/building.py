@@ -1,23 +1,83 @@
-"""One part file (or its print kit) built into its output folder: the part file loaded and vetted, the
-build run into a temporary folder under the folder's lock and put in place in one step, the gallery
-beside it rewritten, the make depfile written."""
+"""The build service: one part (or its print kit) built into its output folder — the one core below both faces.
+
+    part = load(Path("parts/road_wheel.toml"))                 # Loaded: part type, validated parameters, estimate
+    result = build(part, Path("output/road_wheel"), progress=print)   # BuildResult, or an exception
+
+It speaks values and exceptions: :func:`build` and :func:`build_kit` return a :class:`BuildResult` and raise
+the typed errors of :mod:`.errors` — ``InputError`` (bad input, found before any work; ``FolderBusy`` when the
+folder's lock is held and ``wait`` is False), ``CheckFailed`` (built, a check failed: nothing published unless
+``keep_failed``), ``EnvironmentFailure`` (the file system refused).  It prints nothing and knows no exit code:
+what happens on the way goes as :class:`~.progress.Event` s to the ``progress`` callback.  The command line
+(``cli.py``) parses the arguments, calls it, renders the events and turns each exception into its exit code and
+one line; the Python API (``api.py``) calls it directly.
+
+Each build owns its worker processes (:class:`~.parallel.Workers`): builds in several threads of one process,
+or in a long-running process (a notebook, a Dask worker), neither see nor stop each other's.  The CAD kernel and
+the plotting library hold process-wide state, so the build steps themselves (:data:`TURN`) take turns between
+threads; the locks, folders, workers and clean-up of each build are its own.
+"""
 
 from __future__ import annotations
 
+import dataclasses
 import os
 import shutil
-import sys
+import threading
 from pathlib import Path
+from typing import Callable
 
-from .errors import EnvironmentFailure, InputError
-from .signals import EXIT_CHECK_FAILED, EXIT_OK, check_signalled, fail_environment, fail_input, hold_signals
+from .errors import CheckFailed, EnvironmentFailure, FolderBusy
+from .progress import Reporter
+from .signals import check_signalled, held_signals
+
+__all__ = ["Loaded", "BuildResult", "ProofResult", "load", "target", "build", "build_kit", "build_in_memory", "design",
+           "prove", "publish",
+           "as_path", "files_read", "named_files", "vet_depfile", "write_depfile", "gallery_folder", "regenerate_gallery",
+           "write_gallery_locked", "TURN"]
+
+#: the build steps of one process take turns between threads: OCCT's STEP writer numbers assembly occurrences
+#: with a process-wide counter, matplotlib's state is the process's, and a fork while another thread is inside
+#: the kernel would copy its held locks.  Re-entrant (a write may run the design first).  Folders, locks,
+#: workers and clean-up are each build's own and do not take it.
+TURN = threading.RLock()
+
+
+@dataclasses.dataclass(frozen=True)
+class Loaded:
+    """A part ready to build: its type (``parts.PartType``), validated parameters, the part file they came from
+    (None for a type's defaults or a Python caller's values) and the size estimate (None when not made)."""
+
+    part_type: object
+    params: object
+    source: Path | None = None
+    estimate: object = None
+
+    @property
+    def files_read(self) -> tuple[Path, ...]:
+        """The part file and every file it names (() without a part file)."""
+        return files_read(self.params, self.source) if self.source is not None else ()
+
+
+@dataclasses.dataclass(frozen=True)
+class BuildResult:
+    """What one build put in place: the folder, what was built, every check and derived value, the solids,
+    outlines and assemblies it made (in memory), the files it read and the gallery page it rewrote."""
+
+    out: Path
+    what: str
+    checks: tuple
+    derived: dict
+    solids: dict
+    profiles: dict
+    assemblies: dict
+    failures: tuple[str, ...] = ()
+    files_read: tuple[Path, ...] = ()
+    gallery: Path | None = None
 
 
 def named_files(params, part_file: Path) -> tuple[tuple[str, str, Path], ...]:
     """(key, value as written, path) of the part file and of every file it names (string parameters
     ending in `_file`, relative to it)."""
-    import dataclasses
-
     files = [("part file", str(part_file), part_file)]
     for f in dataclasses.fields(params):
         v = getattr(params, f.name)
@@ -34,8 +94,6 @@ def files_read(params, part_file: Path) -> tuple[Path, ...]:
 
 def _make_path(p: Path) -> str:
     """`p` relative to the current folder, as the depfile names it."""
-    import os
-
     return os.path.relpath(Path(p).resolve())
 
 
@@ -52,15 +110,16 @@ def vet_depfile(depfile, out: Path, out_value: str, params, part_file: Path) -> 
 
 #: part files loaded by the command that forks their builds (batch.side_by_side): a forked build takes its
 #: own entry instead of loading the file again (the parameters, and the design their validation computed)
-LOADED: dict[Path, tuple] = {}
+LOADED: dict[Path, "Loaded"] = {}
 
 
-def load_part(part_file: Path):
-    """(part type, validated parameters, size estimate) of a part file; InputError otherwise."""
+def load(part_file: Path) -> Loaded:
+    """The part file read and its parameters checked as far as anything can be before a build: fields, the
+    rules between them, the size estimate and the design's own feasibility (``parts.vet``).  InputError."""
     if part_file in LOADED:
         return LOADED.pop(part_file)
     from .params import load_params, read_part_file
-    from .parts import check_size, get_part_type, size_needs_design
+    from .parts import check_size, get_part_type, size_needs_design, vet
 
     part_type_name, mapping = read_part_file(part_file)
     part_type = get_part_type(part_type_name)
@@ -68,102 +127,253 @@ def load_part(part_file: Path):
     # the size estimate first where it needs only the values (a design can itself be the long part)
     early = not size_needs_design(part_type)
     estimate = check_size(part_type, params, part_file) if early else None
-    if callable(getattr(params, "validate", None)):
-        params.validate()
+    vet(part_type, params, part_file)  # the rules between fields, then the design's own feasibility (may take seconds)
     estimate = estimate or check_size(part_type, params, part_file)
-    if callable(getattr(params, "screen", None)):
-        _screen(params, part_file)  # what the build would refuse before making any geometry (may take seconds)
-    return part_type, params, estimate
+    return Loaded(part_type, params, part_file, estimate)
 
 
-def _screen(params, part_file: Path) -> None:
-    """``params.screen()``; with the part file where the screen reads the files it names (``source``)."""
-    import inspect
+def load_part(part_file: Path):
+    """(part type, validated parameters, size estimate) of a part file (:func:`load`)."""
+    loaded = load(part_file)
+    return loaded.part_type, loaded.params, loaded.estimate
 
-    if "source" in inspect.signature(params.screen).parameters:
-        params.screen(source=part_file)
+
+def target(out, default: Path, force: bool = False, keep: tuple[Path, ...] = ()) -> Path:
+    """The absolute output folder a build may use: `out` (text, bytes or a path; None: `default`), vetted
+    (output_folder.vet_target: not a protected folder, nothing there propulsor did not write unless `force`,
+    none of the files in `keep` inside).  InputError naming ``--out``."""
+    from . import output_folder as of
+
+    if out is None:
+        chosen = default
+    elif isinstance(out, str):
+        chosen = of.out_arg(out)
     else:
-        params.screen()
+        chosen = Path(os.fsdecode(out)) if isinstance(out, (bytes, bytearray)) else Path(out)
+    return of.vet_target(chosen, force=force, keep=keep)
 
 
 def write_depfile(depfile: Path, target: Path, files) -> None:
     """A make rule ``target: files`` (paths relative to the current folder, escaped for make), written in
     one step: the files a build read besides its part file (``road_wheel_file`` …) become prerequisites
     of its manifest; each also gets an empty rule and is added to PROPULSOR_READ (make_names)."""
-    import os
-
     from .make_names import depfile_text
 
     text = depfile_text(_make_path(target), [_make_path(f) for f in files])
     depfile.parent.mkdir(parents=True, exist_ok=True)
     tmp = depfile.with_name(depfile.name + f".tmp{os.getpid()}")
-    tmp.write_text(text, encoding="utf-8", errors="surrogateescape")
-    os.replace(tmp, depfile)
+    try:
+        tmp.write_text(text, encoding="utf-8", errors="surrogateescape")
+        os.replace(tmp, depfile)
+    finally:
+        if os.path.lexists(tmp):
+            os.unlink(tmp)
 
 
-def into_output(args, out: Path, keep: tuple[Path, ...], produce, progress, depfile=None) -> int:
-    """Run ``produce(tmp) -> (failures, what)`` into a fresh temporary folder beside `out` with the
-    lock of `out` held, check that the folder holds exactly what the manifest lists, then put the result
-    in place of `out` in one step (or drop it when a check failed and --keep-failed is not given).  The
-    gallery beside it is rewritten after the lock is let go.  Exit codes as in signals.py."""
+def publish(out: Path, keep: tuple[Path, ...], produce: Callable, *, force: bool = False,
+            keep_failed: bool = False, wait: bool = True, progress=None) -> BuildResult:
+    """Run ``produce(tmp, say) -> (failures, what, writer)`` into a fresh temporary folder beside `out` with the
+    lock of `out` held and this build's own workers, check that the folder holds exactly what the manifest
+    lists, then put it in place of `out` in one step (or drop it when a check failed and not `keep_failed`).
+    The gallery beside it is rewritten after the lock is let go.  Returns the :class:`BuildResult`; raises
+    FolderBusy (held, `wait` False), InputError, EnvironmentFailure, CheckFailed (with ``.out`` set when the
+    failed build was kept)."""
     from . import output_folder as of
-    from .parallel import close_in_workers, kill_workers
+    from .parallel import Workers
     from .write_root import writing_into
 
+    say = Reporter.of(progress)
     lock = of.OutputLock(out)
     tmp = None
-    published = False
+    failures: list[str] = []
+    workers = Workers().open()  # this build's workers: killed when it ends
     try:
         try:
             of.prepare_parent(out)
             try:
-                lock.acquire(wait=not args.no_wait,
-                             on_wait=lambda pid: print(f"propulsor: {out} is being built by process {pid}; waiting",
-                                                       file=sys.stderr, flush=True))
+                lock.acquire(wait=wait, on_wait=lambda pid: say.notice(f"{out} is being built by process "
+                                                                       f"{pid}; waiting"))
             except of.Busy as busy:
-                raise InputError("--out", str(out), f"is being built by process {busy.pid} (--no-wait)") from None
-            close_in_workers(lock.fd)
-            of.vet_target(out, force=args.force, keep=keep)  # as it is now, after the wait
+                raise FolderBusy(str(out), busy.pid) from None
+            workers.close_in_workers(lock.fd)
+            of.vet_target(out, force=force, keep=keep)  # as it is now, after the wait
             for stale in of.clean_stale(out):
-                progress(f"removed {stale.name}, left by a build that was killed")
+                say(f"removed {stale.name}, left by a build that was killed")
             before = of.snapshot(out)  # what the swap may remove: nothing saved there from now on
             tmp = of.make_temp(out)
             with writing_into(tmp) as ident:
-                failures, what = produce(tmp)
+                with TURN:
+                    failures, what, w = produce(tmp, say)
                 check_signalled()  # a swallowed interrupt: the output is not put in place
                 for f in failures:
-                    print(f"propulsor: check failed: {f}", file=sys.stderr)
-                if failures and not args.keep_failed:
-                    print(f"propulsor: {what}: {len(failures)} check(s) failed; nothing written "
-                          f"(use --keep-failed to keep the outputs)", file=sys.stderr)
-                    return EXIT_CHECK_FAILED
+                    say.notice(f"check failed: {f}")
+                if failures and not keep_failed:  # nothing published; what was made is in the error
+                    raise CheckFailed(failures, what=what, result=_result(out, what, w, failures, keep))
                 of.verify_built(tmp, ident)
-                of.replace(tmp, out, before)
-                published = True
+                of.replace(tmp, out, before, notice=say.notice)
         except OSError as exc:  # a write refused (a file's write names no path: the folder it went to)
             if exc.filename is None:
                 exc.filename = str(tmp if tmp is not None else out)
             raise EnvironmentFailure.from_oserror(exc, "cannot build:") from None
-    except InputError as exc:
-        return fail_input(exc)
-    except EnvironmentFailure as exc:
-        return fail_environment(exc)
     finally:
-        hold_signals()
-        kill_workers()
-        if tmp is not None and os.path.lexists(tmp):
-            shutil.rmtree(tmp, ignore_errors=True)
-        close_in_workers(None)
-        lock.release()
-    if published and gallery_folder(out.parent):
-        regenerate_gallery(out.parent, progress)
+        with held_signals():  # a second Ctrl-C must not leave debris: workers, temporary folder, lock
+            try:
+                workers.close()
+            finally:
+                try:
+                    if tmp is not None and os.path.lexists(tmp):
+                        shutil.rmtree(tmp, ignore_errors=True)
+                finally:
+                    lock.release()
+    page = regenerate_gallery(out.parent, say) if gallery_folder(out.parent) else None
+    result = _result(out, what, w, failures, keep, page)
     if failures:
-        print(f"propulsor: {what}: built into {out} but {len(failures)} check(s) failed", file=sys.stderr)
-        return EXIT_CHECK_FAILED
-    progress(f"{what}: built into {out}, all checks passed")
-    if depfile:
-        write_depfile(Path(depfile), out / "manifest.json", keep)
-    return EXIT_OK
+        raise CheckFailed(failures, what=what, out=out, result=result)
+    say(f"{what}: built into {out}, all checks passed")
+    return result
+
+
+def _result(out: Path, what: str, w, failures, keep, page: Path | None = None) -> BuildResult:
+    return BuildResult(out, what, tuple(w.checks), dict(w.derived), dict(getattr(w, "built_solids", {})),
+                       dict(getattr(w, "built_profiles", {})), dict(getattr(w, "built_assemblies", {})),
+                       tuple(failures), tuple(keep), page)
+
+
+def as_path(value, key: str) -> Path:
+    """A path given as text, bytes (the file system's own encoding) or os.PathLike; InputError naming `key`
+    for anything else or an empty one."""
+    from .errors import InputError
+
+    try:
+        path = Path(os.fsdecode(bytes(value)) if isinstance(value, (bytes, bytearray)) else os.fspath(value))
+    except (TypeError, ValueError):
+        raise InputError(key, value, "must be a path (text, bytes or a pathlib.Path)") from None
+    if not str(path) or str(path) == ".":
+        raise InputError(key, value, "must name a file or folder")
+    return path
+
+
+def build(part: Loaded, out, *, force: bool = False, keep_failed: bool = False, wait: bool = True,
+          progress=None, vetted: bool = False) -> BuildResult:
+    """Build `part` into folder `out` (text, bytes or a path): the files ``propulsor build`` writes, under the
+    folder's rules (vetted, locked, built into a temporary folder, put in place in one step).  `progress`:
+    a callback for the :class:`~.progress.Event` s on the way (None: none).  `vetted`: `out` is already the
+    absolute folder :func:`target` made of it with this part's files (the command line vets before it loads
+    the part file); it is vetted again once the lock is held either way.  See :func:`publish` for what it
+    raises."""
+    keep = part.files_read
+    if not vetted:
+        out = target(out, Path("output") / (part.source.stem if part.source else part.part_type.name), force, keep)
+    return publish(out, keep, lambda tmp, say: produce_build(part.part_type, part.params, part.source, tmp, say),
+                   force=force, keep_failed=keep_failed, wait=wait, progress=progress)
+
+
+def build_kit(part: Loaded, out, printer, *, scale: float | None = None, sliced: bool = False,
+              force: bool = False, keep_failed: bool = False, wait: bool = True, progress=None,
+              printer_file: Path | None = None, vetted: bool = False) -> BuildResult:
+    """The print kit of `part` on `printer` (a ``printing.printers.Printer``) into folder `out`: pieces at print
+    scale 1:`scale` (None: the largest standard scale that fits) with the FDM allowances, the rig, the plates
+    (sliced when `sliced`), ``print_report.md``.  `printer_file`: the user's profile file the kit also depends
+    on.  As :func:`build` otherwise."""
+    from .parts import get_kit
+
+    make_kit = get_kit(part.part_type.name)
+    keep = part.files_read + ((printer_file,) if printer_file is not None else ())
+    if not vetted:
+        stem = part.source.stem if part.source else part.part_type.name
+        out = target(out, Path("output") / f"{stem}_kit", force, keep)
+    name = part.part_type.name
+
+    def produce(tmp: Path, say):
+        from .parts.writer import OutputWriter
+        from .printing.kit import write_kit
+
+        say(f"{name}: print kit for the {printer.name} printer")
+        kit = make_kit(part.params, printer, scale, source=part.source)
+        writer = OutputWriter(tmp, name, part.params, progress=say, source=part.source)
+        writer.report_name = "print_report.md"
+        writer.title = f"Print kit: {writer.title}"
+        try:
+            write_kit(kit, writer, sliced)
+            return writer.finish(), f"{name} print kit", writer
+        finally:
+            writer.close()
+
+    return publish(out, keep, produce, force=force, keep_failed=keep_failed, wait=wait, progress=progress)
+
+
+def build_in_memory(part: Loaded, progress=None) -> BuildResult:
+    """One real build of `part` into a temporary folder (removed after): its checks, values, solids, outlines
+    and assemblies in memory (``BuildResult.out`` names the folder it was written to, gone by now).  Never
+    raises CheckFailed: the failures are in the result."""
+    import tempfile
+
+    from .parallel import Workers
+    from .write_root import writing_into
+
+    say = Reporter.of(progress)
+    folder = Path(tempfile.mkdtemp(prefix="propulsor-api-"))
+    try:
+        with Workers(), writing_into(folder), TURN:
+            failures, what, w = produce_build(part.part_type, part.params, part.source, folder, say)
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+    return _result(folder, what, w, failures, part.files_read)
+
+
+def design(part: Loaded):
+    """The part's design (frozen), computed once per parameter values (``pipeline.design_of``: the dry run's,
+    the proofs' and the build's are the same object).  InputError for a part type without a separate design."""
+    import inspect
+
+    from .errors import InputError
+    from .parallel import Workers
+    from .parts.pipeline import design_of
+
+    fn = part.part_type.design
+    if fn is None:
+        raise InputError("design", part.part_type.name, "this part type has no separate design")
+    with Workers(), TURN:
+        if "source" in inspect.signature(fn).parameters:
+            return design_of(part.params, fn, part.source)
+        return design_of(part.params, fn)
+
+
+@dataclasses.dataclass(frozen=True)
+class ProofResult:
+    """What the design and the full-cycle proofs of a part gave, without its solids or files (in memory)."""
+
+    failures: tuple[str, ...]  # unexpected failed checks, "name: message"
+    checks: tuple  # the Checks of the design and the proofs, in the build's order
+    derived: dict  # their derived values (the same values the build's manifest gives them)
+    whole_build: bool  # True where the part type declares no proof steps: this is its whole build's
+
+
+def proves_alone(part: Loaded) -> bool:
+    """Whether the part type declares proof steps (``Pipeline.proves_alone``): else its proof is its build."""
+    from .parts.pipeline import Pipeline
+
+    pipeline = part.part_type.build
+    return isinstance(pipeline, Pipeline) and pipeline.proves_alone
+
+
+def prove(part: Loaded, progress=None) -> ProofResult:
+    """The design and the part type's proof steps only (the full-cycle proofs, their checks and derived values:
+    no solid, no file); a part type that declares none runs its whole build in memory (:func:`build_in_memory`)."""
+    if not proves_alone(part):
+        b = build_in_memory(part, progress)
+        return ProofResult(b.failures, b.checks, b.derived, True)
+    from .parallel import Workers
+    from .parts.proof_writer import ProofWriter
+
+    with Workers(), TURN:
+        w = ProofWriter(part.part_type.name, part.params, progress=Reporter.of(progress), source=part.source)
+        try:
+            part.part_type.build.prove(part.params, w)
+            failures = w.finish()
+        finally:
+            w.close()
+    return ProofResult(tuple(failures), tuple(w.checks), dict(w.derived), False)
 
 
 def gallery_folder(folder: Path) -> bool:
@@ -182,9 +392,9 @@ def write_gallery_locked(folder: Path) -> Path | None:
     """``folder/index.html`` written under the gallery's own lock (export.gallery.write_gallery): its
     path, or None when an index.html there is not one propulsor wrote.  Errors pass."""
     from . import output_folder as of
-    from .export.gallery import INDEX, write_gallery
+    from .export.gallery import write_gallery
 
-    lock = of.OutputLock(folder / INDEX)
+    lock = of.OutputLock(folder / "index.html")
     try:
         lock.acquire(wait=True)
         return write_gallery(folder)
@@ -192,48 +402,24 @@ def write_gallery_locked(folder: Path) -> Path | None:
         lock.release()
 
 
-def regenerate_gallery(folder: Path, progress) -> Path | None:
+def regenerate_gallery(folder: Path, progress=None) -> Path | None:
     """Rewrite ``folder/index.html`` (the gallery of every part built there) after a build put its
     output in place.  Under the gallery's own lock, so that of two builds finishing together the later
-    one writes a page that shows both; never over an index.html propulsor did not write."""
+    one writes a page that shows both; never over an index.html propulsor did not write.  A page that cannot
+    be written is a notice, not the build's failure (its output is in place)."""
     from .export.gallery import INDEX
 
+    say = Reporter.of(progress)
     try:
         path = write_gallery_locked(folder)
     except Exception as exc:  # noqa: BLE001 - the build's output is in place; the page is not worth failing it
-        print(f"propulsor: the gallery {folder / INDEX} was not written: {type(exc).__name__}: {exc}", file=sys.stderr)
+        say.notice(f"the gallery {folder / INDEX} was not written: {type(exc).__name__}: {exc}")
         return None
     if path is None:
-        progress(f"{folder / INDEX} was not written by propulsor: left as it is")
+        say(f"{folder / INDEX} was not written by propulsor: left as it is")
     else:
-        progress(f"gallery: {path}")
+        say(f"gallery: {path}")
     return path
-
-
-def build_one(args, part_file: Path, depfile: Path | None) -> int:
-    """Build one part file into its output folder (``--out`` or output/<file name>): vetted, built into a
-    temporary folder, put in place (:func:`into_output`); ``--dry-run`` validates and estimates only.
-    Returns the exit code (signals.py)."""
-    from . import output_folder as of
-    from .progress import Progress
-
-    progress = Progress(enabled=not args.quiet, check=check_signalled)
-    try:
-        out = of.vet_target(of.out_arg(args.out) or Path("output") / part_file.stem,
-                            force=args.force, keep=(part_file,))
-        part_type, params, estimate = load_part(part_file)
-        keep = files_read(params, part_file)
-        out = of.vet_target(out, force=args.force, keep=keep)
-        vet_depfile(depfile, out, args.out or str(out), params, part_file)
-    except InputError as exc:
-        return fail_input(exc)
-    if args.dry_run:
-        print(f"{part_type.name}: {part_file} is valid; would build into {out}; "
-              f"size estimate {estimate.text()}")
-        return EXIT_OK
-
-    return into_output(args, out, keep, lambda tmp: produce_build(part_type, params, part_file, tmp, progress)[:2],
-                       progress, depfile)
 
 
 def produce_build(part_type, params, part_file: Path | None, folder: Path, progress):

@@ -14,20 +14,67 @@ import os
 import signal
 import sys
 import threading
+import time
 from pathlib import Path
 
-from .building import (build_one, files_read, gallery_folder, into_output, load_part, regenerate_gallery, vet_depfile,
-                       write_gallery_locked)
-from .errors import EnvironmentFailure, InputError
-from .signals import (EXIT_BAD_INPUT, EXIT_CHECK_FAILED, EXIT_OK, SIGNALLED, Interrupted, check_signalled,
-                      fail_environment, fail_input, hold_signals, raise_interrupted, unraisable)
+from . import building
+from .building import gallery_folder, regenerate_gallery, vet_depfile, write_depfile, write_gallery_locked
+from .errors import CheckFailed, EnvironmentFailure, InputError
+from .signals import SIGNALLED, Interrupted, check_signalled, hold_signals, raise_interrupted, unraisable
+
+#: the exit codes (README, «Command line»): the command line's alone; the build service raises exceptions
+EXIT_OK, EXIT_CHECK_FAILED, EXIT_BAD_INPUT, EXIT_ENVIRONMENT = 0, 1, 2, 3
+
+
+class Renderer:
+    """The command line's face of the build's events (``progress.Event``): a step of the work as
+    ``[  t s] message`` on stderr with the time since the start (none with -q), a notice as
+    ``propulsor: message`` (always).  Before each it checks for a signal whose exception was swallowed: a safe
+    point to stop."""
+
+    def __init__(self, quiet: bool = False, stream=None):
+        self.quiet = quiet
+        self.stream = stream
+        self.t0 = time.perf_counter()
+
+    def __call__(self, event) -> None:
+        check_signalled()
+        stream = self.stream or sys.stderr
+        if getattr(event, "kind", "progress") == "notice":
+            print(f"propulsor: {event}", file=stream, flush=True)
+        elif not self.quiet:
+            print(f"[{time.perf_counter() - self.t0:6.1f} s] {event}", file=stream, flush=True)
+
+
+def fail_input(exc: Exception) -> int:
+    print(f"propulsor: error: {exc}", file=sys.stderr)
+    return EXIT_BAD_INPUT
+
+
+def fail_environment(exc: Exception) -> int:
+    print(f"propulsor: error: {exc}", file=sys.stderr)
+    return EXIT_ENVIRONMENT
+
+
+def fail(exc: Exception) -> int:
+    """The exit code of an exception of the build service, and its one line on stderr."""
+    if isinstance(exc, CheckFailed):
+        n = len(exc.failures)
+        if exc.out is not None:
+            print(f"propulsor: {exc.what}: built into {exc.out} but {n} check(s) failed", file=sys.stderr)
+        else:
+            print(f"propulsor: {exc.what}: {n} check(s) failed; nothing written (use --keep-failed to keep the "
+                  f"outputs)", file=sys.stderr)
+        return EXIT_CHECK_FAILED
+    if isinstance(exc, EnvironmentFailure):
+        return fail_environment(exc)
+    return fail_input(exc)
 
 
 def cmd_gallery(args) -> int:
     """output/index.html: one page for every part built in the folder."""
     from .export.gallery import INDEX, built_parts
     from .export.gallery_studies import found_studies
-    from .progress import Progress
 
     folder = Path(args.folder)
     if not folder.is_dir():
@@ -35,7 +82,7 @@ def cmd_gallery(args) -> int:
     if not built_parts(folder) and not found_studies(folder):
         return fail_input(InputError("folder", str(folder), "holds no built part (no */manifest.json) and no "
                                      "design study (no */study.json)"))
-    progress = Progress(enabled=not args.quiet, check=check_signalled)
+    progress = Renderer(args.quiet)
     try:
         path = write_gallery_locked(folder)
     except EnvironmentFailure as exc:
@@ -83,6 +130,33 @@ def cmd_build(args) -> int:
     else:
         codes = [in_child(build_one, args, f, depfile(f)) for f in files]
     return max(codes, key=lambda c: (c == EXIT_BAD_INPUT, c))
+
+
+def build_one(args, part_file: Path, depfile: Path | None) -> int:
+    """Build one part file into its output folder (``--out`` or output/<file name>) through the build service;
+    ``--dry-run`` validates and estimates only.  Returns the exit code."""
+    from . import output_folder as of
+
+    render = Renderer(args.quiet)
+    try:
+        out = building.target(args.out, Path("output") / part_file.stem, args.force, keep=(part_file,))
+        part = building.load(part_file)
+        out = of.vet_target(out, force=args.force, keep=part.files_read)
+        vet_depfile(depfile, out, args.out or str(out), part.params, part_file)
+    except InputError as exc:
+        return fail_input(exc)
+    if args.dry_run:
+        print(f"{part.part_type.name}: {part_file} is valid; would build into {out}; "
+              f"size estimate {part.estimate.text()}")
+        return EXIT_OK
+    try:
+        result = building.build(part, out, force=args.force, keep_failed=args.keep_failed, wait=not args.no_wait,
+                                progress=render, vetted=True)
+    except (InputError, EnvironmentFailure, CheckFailed) as exc:
+        return fail(exc)
+    if depfile:
+        write_depfile(Path(depfile), result.out / "manifest.json", result.files_read)
+    return EXIT_OK
 
 
 def _scale_arg(text: str) -> float | None:
@@ -146,42 +220,31 @@ def cmd_print(args) -> int:
     from . import output_folder as of
     from .parts import get_kit
     from .printing.printers import is_profile_path, load_printer
-    from .progress import Progress
 
-    progress = Progress(enabled=not args.quiet, check=check_signalled)
+    render = Renderer(args.quiet)
     part_file = Path(args.part_file)
     try:
-        out = of.vet_target(of.out_arg(args.out) or Path("output") / f"{part_file.stem}_kit",
-                            force=args.force, keep=(part_file,))
+        out = building.target(args.out, Path("output") / f"{part_file.stem}_kit", args.force, keep=(part_file,))
         printer = load_printer(args.printer, _settings(args.set), bed=args.bed)
         sliced = _slice_arg(args.slice)
         S = _scale_arg(args.scale)
-        part_type, params, _ = load_part(part_file)
-        make_kit = get_kit(part_type.name)
-        keep = files_read(params, part_file)
-        if args.bed is None and is_profile_path(args.printer):
-            keep += (Path(args.printer),)  # the kit depends on the user's profile file too
+        part = building.load(part_file)
+        get_kit(part.part_type.name)  # a part type without a kit is refused here
+        profile = Path(args.printer) if args.bed is None and is_profile_path(args.printer) else None
+        keep = part.files_read + ((profile,) if profile is not None else ())  # the user's profile file too
         out = of.vet_target(out, force=args.force, keep=keep)
-        vet_depfile(args.depfile, out, args.out or str(out), params, part_file)
+        vet_depfile(args.depfile, out, args.out or str(out), part.params, part_file)
     except InputError as exc:
         return fail_input(exc)
-
-    def produce(tmp: Path):
-        from .parts.writer import OutputWriter
-        from .printing.kit import write_kit
-
-        progress(f"{part_type.name}: print kit for the {printer.name} printer")
-        kit = make_kit(params, printer, S, source=part_file)
-        writer = OutputWriter(tmp, part_type.name, params, progress=progress, source=part_file)
-        writer.report_name = "print_report.md"
-        writer.title = f"Print kit: {writer.title}"
-        try:
-            write_kit(kit, writer, sliced)
-            return writer.finish(), f"{part_type.name} print kit"
-        finally:
-            writer.close()
-
-    return into_output(args, out, keep, produce, progress, args.depfile)
+    try:
+        result = building.build_kit(part, out, printer, scale=S, sliced=sliced, force=args.force,
+                                    keep_failed=args.keep_failed, wait=not args.no_wait, progress=render,
+                                    printer_file=profile, vetted=True)
+    except (InputError, EnvironmentFailure, CheckFailed) as exc:
+        return fail(exc)
+    if args.depfile:
+        write_depfile(Path(args.depfile), result.out / "manifest.json", result.files_read)
+    return EXIT_OK
 
 
 def cmd_check(args) -> int:
@@ -252,11 +315,10 @@ def cmd_params(args) -> int:
 
 def cmd_explore(args) -> int:
     """A design study: every variant of the study file evaluated on a Dask cluster, one table, ranked."""
-    from .progress import Progress
     from .study import load_study
     from .study.engine import run
 
-    progress = Progress(enabled=not args.quiet, check=check_signalled)
+    progress = Renderer(args.quiet)
     try:
         cores = os.cpu_count() or 1
         if args.workers is not None and not 1 <= args.workers <= cores:

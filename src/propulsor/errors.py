@@ -1,7 +1,8 @@
-"""Errors the command line turns into exit codes.
+"""The errors of propulsor: what the build service raises and the command line turns into exit codes.
 
 `InputError` (exit 2): the input is invalid; the message is one line naming the
-parameter, its value and the limit.  `CheckFailed` (exit 1): a part built but a
+parameter, its value and the limit (`FolderBusy`, an InputError: the output folder is held by another
+build and the caller would not wait).  `CheckFailed` (exit 1): a part built but a
 check failed.  `EnvironmentFailure` (exit 3): the machine refused (disk full, out of
 inodes, read-only file system, permission, a folder vanished); one line naming the
 path and the errno.
@@ -63,11 +64,32 @@ def input_names(names: dict[str, str]):
 
 
 class CheckFailed(RuntimeError):
-    """A built part failed one or more checks."""
+    """A built part failed one or more checks (exit 1): `failures` ("name: message"), `what` was built and,
+    when the failed build was kept (``keep_failed``), the folder `out` it was put in and its `result`."""
 
-    def __init__(self, failures: list[str]):
+    def __init__(self, failures: list[str], what: str = "", out=None, result=None):
         self.failures = list(failures)
+        self.what = what
+        self.out = out
+        self.result = result
         super().__init__("; ".join(self.failures))
+
+    def __reduce__(self):
+        return (type(self), (self.failures, self.what, self.out, None))
+
+
+class FolderBusy(InputError):
+    """The folder is held by another build or study (its lock) and the caller would not wait (exit 2):
+    `folder` and the holder's process id `pid`."""
+
+    def __init__(self, folder: str, pid: str, doing: str = "is being built", key: str = "--out"):
+        self.folder = folder
+        self.pid = pid
+        self.doing = doing
+        super().__init__(key, folder, f"{doing} by process {pid} (--no-wait)")
+
+    def __reduce__(self):
+        return (type(self), (self.folder, self.pid, self.doing, self.parameter))
 
 
 def require(cond: bool, parameter: str, value, limit: str, hint: str = "") -> None:

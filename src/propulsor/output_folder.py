@@ -37,7 +37,6 @@ import re
 import secrets
 import shutil
 import stat
-import sys
 import tempfile
 from pathlib import Path
 
@@ -486,14 +485,15 @@ def discard(folder: Path, own: dict[str, tuple], out: Path) -> Path | None:
         return kept
 
 
-def replace(tmp: Path, out: Path, before: dict[str, tuple] | None = None, exchange=rename_exchange) -> Path | None:
+def replace(tmp: Path, out: Path, before: dict[str, tuple] | None = None, exchange=rename_exchange,
+            notice=lambda message: None) -> Path | None:
     """Put the finished folder `tmp` in the place of `out` in one step, then remove the old output.
 
     `before`: the snapshot of `out` taken when the build began (with its lock held).  An entry of `out`
     not in it — a file saved there, or one changed, while the build ran — is not the previous build's
     own: checked before the swap and again on the swapped-out folder, which is swapped back (nothing
     published: EnvironmentFailure, exit 3).  The old output is then removed entry by entry (:func:`discard`);
-    returns where anything that appeared even in that instant was kept (else None)."""
+    returns where anything that appeared even in that instant was kept (else None), also said to `notice`."""
     if before is None:
         before = snapshot(out)
     built = snapshot(tmp)
@@ -510,8 +510,7 @@ def replace(tmp: Path, out: Path, before: dict[str, tuple] | None = None, exchan
             exchange(tmp, out)  # back: the old output (with what was saved there) in its place
             kept = discard(tmp, built, out)
             if kept is not None:
-                print(f"propulsor: {kept}: kept what was saved into {out} while the build was swapped in",
-                      file=sys.stderr)
+                notice(f"{kept}: kept what was saved into {out} while the build was swapped in")
             _refuse_changed(out, changed)
     else:
         old = out.parent / (_old_prefix(out) + secrets.token_hex(4))
@@ -523,5 +522,5 @@ def replace(tmp: Path, out: Path, before: dict[str, tuple] | None = None, exchan
         os.rename(tmp, out)
     kept = discard(old, before, out)
     if kept is not None:
-        print(f"propulsor: {kept}: kept what was saved into {out} while its old output was removed", file=sys.stderr)
+        notice(f"{kept}: kept what was saved into {out} while its old output was removed")
     return kept

@@ -13,15 +13,19 @@ all the builds never outnumber the budget.  Under make's jobserver (:class:`Jobs
 marked ``+`` run by ``make -jN``) every slot beyond the one make started the command for also takes
 one of make's tokens, so make's jobs and ours together stay within N.
 
-Workers never outlive the build: each asks the kernel for SIGKILL when its parent dies
-(``PR_SET_PDEATHSIG``, Linux) and leaves SIGINT to the parent, which stops them with
-:func:`kill_workers` when it is interrupted.  Inherited file descriptors named by
-:func:`close_in_workers` (the output lock) are closed in every worker, so a worker never holds
-the build's lock.
+Workers belong to the build that started them: a build runs inside :class:`Workers` (a context manager;
+the current one is a context variable, so each thread, and each task of an event loop, has its own), every pool
+forked while it is current is its own, and leaving it kills what is left of them — never another build's, so
+builds in several threads of one process (a notebook, a Dask worker) neither see nor stop each other's
+processes.  Workers never outlive the build either: each asks the kernel for SIGKILL when its parent dies
+(``PR_SET_PDEATHSIG``, Linux) and leaves SIGINT to the parent; the command line, ending on a signal, stops every
+worker of the process (:func:`kill_workers`).  The output locks of every build of the process
+(:meth:`Workers.close_in_workers`) are closed in every worker forked, so a worker never holds a build's lock.
 """
 
 from __future__ import annotations
 
+import contextvars
 import ctypes
 import multiprocessing as mp
 import os
@@ -31,8 +35,13 @@ import weakref
 from concurrent.futures import ProcessPoolExecutor
 
 _PR_SET_PDEATHSIG = 1
+#: every pool of the process (for :func:`kill_workers`, the command line's end)
 _POOLS: "weakref.WeakSet[ProcessPoolExecutor]" = weakref.WeakSet()
+#: file descriptors closed in every worker forked: the output locks of the builds running in this process
 _CLOSE_IN_WORKERS: set[int] = set()
+_CLOSE_LOCK = threading.Lock()
+#: the Workers of the build running in this thread (context), or None outside a build
+_CURRENT: "contextvars.ContextVar[Workers | None]" = contextvars.ContextVar("propulsor_workers", default=None)
 #: the process slots shared by the builds of one command (a semaphore inherited through fork), or None
 _SLOTS = None
 _WORKERS_MAY = None  # an Event: set once the builds' workers may take free slots
@@ -225,12 +234,95 @@ def can_fork() -> bool:
     return "fork" in mp.get_all_start_methods()
 
 
-def close_in_workers(fd: int | None) -> None:
-    """Close file descriptor `fd` in workers forked from now on (None: forget every one)."""
-    if fd is None:
-        _CLOSE_IN_WORKERS.clear()
-    else:
-        _CLOSE_IN_WORKERS.add(fd)
+class Workers:
+    """The worker processes of one build (a context manager): every pool forked while it is the current one
+    belongs to it, and leaving the block kills what is left of them (with SIGINT / SIGTERM held off meanwhile)
+    and forgets the descriptors it named with :meth:`close_in_workers`.  Nested blocks (a design computed
+    inside a build) own their own pools; the outer one resumes after."""
+
+    def __init__(self):
+        self._pools: list[ProcessPoolExecutor] = []
+        self._fds: list[int] = []
+        self._lock = threading.Lock()
+        self._token = None
+
+    def open(self) -> "Workers":
+        """Make this the current build's workers (in this thread / context); returns itself."""
+        self._token = _CURRENT.set(self)
+        return self
+
+    def close(self) -> None:
+        """Kill what is left of this build's workers, forget its descriptors, and stop being the current one
+        (the caller holds off SIGINT / SIGTERM meanwhile: :meth:`__exit__` does)."""
+        try:
+            self.kill()
+        finally:
+            if self._token is not None:
+                _CURRENT.reset(self._token)
+                self._token = None
+            with _CLOSE_LOCK:
+                for fd in self._fds:
+                    _CLOSE_IN_WORKERS.discard(fd)
+            self._fds.clear()
+
+    def __enter__(self) -> "Workers":
+        return self.open()
+
+    def __exit__(self, *exc) -> None:
+        from .signals import held_signals
+
+        with held_signals():
+            self.close()
+
+    def adopt(self, pool: ProcessPoolExecutor) -> None:
+        with self._lock:
+            self._pools.append(pool)
+
+    def close_in_workers(self, fd: int) -> None:
+        """Close file descriptor `fd` (this build's output lock) in every worker forked from now on, this build's
+        and any other build's of the process, for as long as this block runs."""
+        with _CLOSE_LOCK:
+            _CLOSE_IN_WORKERS.add(fd)
+        self._fds.append(fd)
+
+    def kill(self) -> None:
+        """Kill this build's workers that are still running and drop its pools (their slots given back)."""
+        with self._lock:
+            pools, self._pools = self._pools, []
+        _kill_pools(pools)
+
+
+def current_workers() -> "Workers | None":
+    """The Workers of the build running in this thread (context), or None."""
+    return _CURRENT.get()
+
+
+def _close_fds() -> tuple[int, ...]:
+    with _CLOSE_LOCK:
+        return tuple(sorted(_CLOSE_IN_WORKERS))
+
+
+def _kill_pools(pools) -> None:
+    """Kill the processes of `pools` at once, wait for them, drop the pools and give back their slots."""
+    procs = [proc for pool in pools for proc in getattr(pool, "_procs", {}).values()]
+    for proc in procs:
+        try:
+            proc.kill()
+        except (OSError, ValueError):  # gone already, or closed
+            pass
+    for proc in procs:
+        try:
+            proc.join(timeout=5)
+        except (AssertionError, ValueError):  # not ours to join (a fork of a fork) or closed
+            pass
+    for pool in pools:
+        try:
+            pool.shutdown(wait=False, cancel_futures=True)
+        except Exception:  # noqa: BLE001 - a pool whose workers were killed is broken; that is the point
+            pass
+        if isinstance(pool, _SlotPool):
+            pool.give_back()
+        _POOLS.discard(pool)
 
 
 def _worker_init(parent_pid: int, close_fds: tuple[int, ...]) -> None:
@@ -259,6 +351,12 @@ class _SlotPool(ProcessPoolExecutor):
         super().__init__(**kw)
         self._slots = slots
         self._slot_lock = threading.Lock()
+        self._procs: dict = {}  # pid -> Process: kept past shutdown(wait=False), which forgets them
+
+    def submit(self, fn, /, *args, **kwargs):
+        fut = super().submit(fn, *args, **kwargs)
+        self._procs.update(self._processes or {})  # the fork context starts every worker at the first submit
+        return fut
 
     def give_back(self) -> None:
         with self._slot_lock:
@@ -283,8 +381,11 @@ def fork_pool(workers: int) -> ProcessPoolExecutor | None:
     if workers < 1:
         return None
     pool = _SlotPool(slots if isinstance(slots, list) else [], max_workers=workers, mp_context=mp.get_context("fork"),
-                     initializer=_worker_init, initargs=(os.getpid(), tuple(sorted(_CLOSE_IN_WORKERS))))
+                     initializer=_worker_init, initargs=(os.getpid(), _close_fds()))
     _POOLS.add(pool)
+    owner = _CURRENT.get()
+    if owner is not None:  # the running build's: killed when it ends, whatever its thread
+        owner.adopt(pool)
     return pool
 
 
@@ -314,17 +415,11 @@ def start(fn, *args):
 
 
 def kill_workers() -> None:
-    """Kill every worker process at once (the build was interrupted or failed) and drop the pools."""
+    """Kill every worker process of this process at once and drop every pool: the command line's end after a
+    signal (the process is going; a build's own workers go with its :class:`Workers` block)."""
+    _kill_pools(list(_POOLS))
     children = mp.active_children()
     for proc in children:
         proc.kill()
     for proc in children:
         proc.join(timeout=5)
-    for pool in list(_POOLS):
-        try:
-            pool.shutdown(wait=False, cancel_futures=True)
-        except Exception:  # noqa: BLE001 - a pool whose workers were killed is broken; that is the point
-            pass
-        if isinstance(pool, _SlotPool):
-            pool.give_back()
-        _POOLS.discard(pool)

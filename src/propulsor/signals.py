@@ -1,10 +1,9 @@
-"""Exit codes, and SIGINT / SIGTERM turned into an exception a build can clean up after.
+"""SIGINT and SIGTERM turned into an exception a build can clean up after.
 
-Exit codes: 0 built and every check passed; 1 built but a check failed (outputs kept only with
---keep-failed) or `check` found invalid files; 2 bad input (one line on stderr, nothing written);
-3 the environment refused (disk full, out of inodes, read-only file system, permission denied, a
-folder removed under the build: one line naming the path and the errno, nothing published);
-130 / 143 interrupted by SIGINT / SIGTERM (one line, no temporary folder and no worker process left).
+The command line installs :func:`raise_interrupted` for both signals (``cli.main``): a signal then raises
+:class:`Interrupted` wherever the build is, every ``finally`` of the build runs (workers killed, temporary
+folder removed, lock let go) with further signals held off (:func:`held_signals`), and the command line ends
+with 128 + the signal's number and one line.  Nothing here prints or knows an exit code.
 """
 
 from __future__ import annotations
@@ -13,7 +12,8 @@ import signal
 import sys
 import threading
 
-EXIT_OK, EXIT_CHECK_FAILED, EXIT_BAD_INPUT, EXIT_ENVIRONMENT = 0, 1, 2, 3
+__all__ = ["Interrupted", "SIGNALLED", "raise_interrupted", "unraisable", "check_signalled", "hold_signals",
+           "held_signals"]
 
 
 class Interrupted(BaseException):
@@ -49,17 +49,26 @@ def check_signalled() -> None:
 
 
 def hold_signals() -> None:
-    """Ignore further SIGINT / SIGTERM while cleaning up (a second Ctrl-C must not leave debris)."""
+    """Ignore further SIGINT / SIGTERM from now on (the command line, ending after an interruption)."""
     if threading.current_thread() is threading.main_thread():
         signal.signal(signal.SIGINT, signal.SIG_IGN)
         signal.signal(signal.SIGTERM, signal.SIG_IGN)
 
 
-def fail_input(exc: Exception) -> int:
-    print(f"propulsor: error: {exc}", file=sys.stderr)
-    return EXIT_BAD_INPUT
+class held_signals:
+    """SIGINT / SIGTERM ignored for the block (a clean-up a second Ctrl-C must not cut short), then the
+    handlers as they were — unless a signal has arrived (:data:`SIGNALLED`): the process is ending, and they stay
+    ignored until the command line has said so.  Only the main thread can change handlers; elsewhere a no-op."""
 
+    def __enter__(self):
+        self.saved = {}
+        if threading.current_thread() is threading.main_thread():
+            for sig in (signal.SIGINT, signal.SIGTERM):
+                self.saved[sig] = signal.signal(sig, signal.SIG_IGN)
+        return self
 
-def fail_environment(exc: Exception) -> int:
-    print(f"propulsor: error: {exc}", file=sys.stderr)
-    return EXIT_ENVIRONMENT
+    def __exit__(self, *exc) -> None:
+        if SIGNALLED:
+            return
+        for sig, handler in self.saved.items():
+            signal.signal(sig, handler if handler is not None else signal.SIG_DFL)

@@ -102,7 +102,7 @@ def library_versions() -> dict:
     """Versions of Python and the libraries that shape the outputs."""
     from importlib import metadata
 
-    from .. import __version__
+    from ..version import __version__
 
     v = {"python": platform.python_version(), "propulsor": __version__}
     for name in _PACKAGES:

@@ -57,6 +57,7 @@ from dataclasses import dataclass
 
 from ..errors import InputError, require_positive
 from .involute import inv
+from .tooth_form import ToothForm
 
 __all__ = ["Material", "STEEL", "z_e", "z_h", "z_eps", "z_b", "z_d", "f_h_beta", "contact_factors", "tooth_form_factor",
            "ToothForm", "k_v_method_b", "f_sh_torsion", "FaceLoad", "face_load_method_c", "k_h_beta_method_c",
@@ -121,17 +122,6 @@ def z_d(alpha_w, d_a1, d_b1, z1, d_a2, d_b2, z2, eps_alpha, internal: bool) -> f
 def contact_factors(alpha, alpha_w, eps_alpha) -> tuple[float, float, float]:
     """(Z_H, Z_E, Z_ε) of a steel spur mesh."""
     return z_h(alpha, alpha_w), z_e(), z_eps(eps_alpha)
-
-
-@dataclass(frozen=True)
-class ToothForm:
-    theta: float      # rad, angle of the 30° tangent construction
-    s_Fn: float       # mm, root chord at the 30° tangents
-    rho_F: float      # mm, root fillet radius there
-    h_Fe: float       # mm, bending moment arm (load at d_en)
-    alpha_Fen: float  # rad, load direction angle
-    Y_F: float
-    Y_S: float
 
 
 def tooth_form_factor(z: int, m: float, x: float, d_en: float, alpha: float = math.radians(20.0),

@@ -28,7 +28,7 @@ from __future__ import annotations
 import math
 
 from ..errors import InputError, require_positive
-from .iso6336 import ToothForm
+from .tooth_form import ToothForm
 
 __all__ = ["d_en_internal", "internal_tooth_form", "y_b_internal"]
 

@@ -241,3 +241,35 @@ def polygon_loop(points) -> Loop:
     return Loop([Line(tuple(p[i]), tuple(p[(i + 1) % len(p)])) for i in range(len(p))])
 
 
+def hull_of_circles(circles) -> Loop:
+    """The convex hull of circles [((x, y), r)] as arcs and lines (the arcs' ends on the circles,
+    tangent to within the 0.5° sampling that finds them)."""
+    from scipy.spatial import ConvexHull
+
+    a = np.radians(np.arange(0.0, 360.0, 0.5))
+    pts, owner, ang = [], [], []
+    for i, ((x, y), r) in enumerate(circles):
+        pts.append(np.column_stack([x + r * np.cos(a), y + r * np.sin(a)]))
+        owner += [i] * len(a)
+        ang.append(a)
+    pts, owner, ang = np.vstack(pts), np.array(owner), np.concatenate(ang)
+    v = ConvexHull(pts).vertices  # counter-clockwise
+    start = next(j for j in range(len(v)) if owner[v[j]] != owner[v[j - 1]])
+    v = np.roll(v, -start)
+    runs = []
+    for idx in v:
+        if runs and runs[-1][0] == owner[idx]:
+            runs[-1][1].append(ang[idx])
+        else:
+            runs.append((owner[idx], [ang[idx]]))
+    segs = []
+    for j, (i, angles) in enumerate(runs):
+        (cx, cy), r = circles[i]
+        a0 = angles[0]
+        a1 = a0 + float(np.sum(np.mod(np.diff(angles), 2 * math.pi)))
+        arc = Arc((cx, cy), r, a0, a1)
+        if segs:
+            segs.append(Line(tuple(segs[-1].end), tuple(arc.start)))
+        segs.append(arc)
+    segs.append(Line(tuple(segs[-1].end), tuple(segs[0].start)))
+    return Loop(segs)

@@ -18,6 +18,7 @@ from typing import Callable
 
 from .. import policy
 from ..errors import InputError
+from .size import SizeEstimate
 
 #: part type name -> module (relative to this package)
 _MODULES = {
@@ -80,20 +81,6 @@ def _known(name: str) -> None:
 
 
 @dataclass(frozen=True)
-class SizeEstimate:
-    """What a build will cost, estimated from the parameters before any work.
-
-    `seconds`: the build's time on the reference machine (2 cores), from a cost model calibrated on
-    the part files in parts/; `detail`: what the model counts (teeth, samples, sweep steps)."""
-
-    seconds: float
-    detail: str
-
-    def text(self) -> str:
-        return f"≈ {self.seconds:.3g} s ({self.detail})"
-
-
-@dataclass(frozen=True)
 class PartType:
     name: str
     summary: str
@@ -102,6 +89,19 @@ class PartType:
     design: Callable | None = None  # design(params, ...) -> the part's frozen design
     #: estimate(params, part_file) -> SizeEstimate; may read the files the part file names (InputError)
     estimate: Callable | None = None
+    #: feasible(params, part_file) -> None: InputError when the design cannot be made (generability, closure, a
+    #: set that does not assemble) — what the parameters cannot tell from their fields (:func:`vet`)
+    feasible: Callable | None = None
+
+
+def vet(part_type: PartType, params, part_file: Path | None = None) -> None:
+    """Everything the parameters of a part can be refused for before any work: the rules between their fields
+    (``params.validate()``), then the design's own feasibility (``part_type.feasible``: generability, closure;
+    a file the part file names read relative to `part_file`).  InputError (parameter, value, limit)."""
+    if callable(getattr(params, "validate", None)):
+        params.validate()
+    if part_type.feasible is not None:
+        part_type.feasible(params, part_file)
 
 
 def _estimate_of(part_type: PartType):

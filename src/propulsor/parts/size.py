@@ -21,15 +21,29 @@ the builds of several part files start the longest first by these estimates.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from pathlib import Path
 
-from . import SizeEstimate
+
+@dataclass(frozen=True)
+class SizeEstimate:
+    """What a build will cost, estimated from the parameters before any work.
+
+    `seconds`: the build's time on the reference machine (2 cores), from a cost model calibrated on
+    the part files in parts/; `detail`: what the model counts (teeth, samples, sweep steps)."""
+
+    seconds: float
+    detail: str
+
+    def text(self) -> str:
+        return f"≈ {self.seconds:.3g} s ({self.detail})"
+
 
 #: a build keeps about this many cores busy (main process and its forked workers)
 _CORES_USED = 1.8
 
 
-def _wall(cpu_seconds: float, detail: str) -> SizeEstimate:
+def wall(cpu_seconds: float, detail: str) -> SizeEstimate:
     return SizeEstimate(cpu_seconds / _CORES_USED, detail)
 
 
@@ -40,7 +54,7 @@ def final_drive(p, part_file: Path | None = None) -> SizeEstimate:
     steps = round(360.0 * p.sweep_steps_per_deg)
     meshes = 2 * p.n_planets
     cpu = 6.0 + 11.5 + 0.12 * teeth + 0.00257 * steps * meshes * math.sqrt(teeth / 92.0)
-    return _wall(cpu, f"{teeth} teeth, sweep {steps} steps × {meshes} meshes")
+    return wall(cpu, f"{teeth} teeth, sweep {steps} steps × {meshes} meshes")
 
 
 def noncircular_pair(p, part_file: Path | None = None) -> SizeEstimate:
@@ -60,7 +74,7 @@ def noncircular_pair(p, part_file: Path | None = None) -> SizeEstimate:
     cases = (4 + p.tolerance_samples) if p.tolerance_grade else 0
     made = cases * 2 * 1.2e-3 * (driver_deg / policy.TOLERANCE_STEP_DRIVER_DEG + 120 * z_H)
     cpu += contact + made
-    return _wall(cpu, f"{teeth} teeth, proof {phases} phases" + (f", {cases} tolerance cases" if cases else ""))
+    return wall(cpu, f"{teeth} teeth, proof {phases} phases" + (f", {cases} tolerance cases" if cases else ""))
 
 
 def cam_mover(p, part_file: Path | None = None) -> SizeEstimate:
@@ -68,7 +82,7 @@ def cam_mover(p, part_file: Path | None = None) -> SizeEstimate:
     chord (∝ √ size), 6.5 ms per sweep step, 3 s more for the law search."""
     size = max(1.0, (p.R0_mm + p.roller_radius_mm + p.stand_C_mm) / 320.0)
     cpu = 14.0 * math.sqrt(size) + 0.0065 * p.sweep_steps * math.sqrt(size) + (3.2 if p.law == "searched" else 0.0)
-    return _wall(cpu, f"{p.sweep_steps} sweep steps, hub height {p.R0_mm + p.roller_radius_mm + p.stand_C_mm:g} mm")
+    return wall(cpu, f"{p.sweep_steps} sweep steps, hub height {p.R0_mm + p.roller_radius_mm + p.stand_C_mm:g} mm")
 
 
 def road_wheel(p, part_file: Path | None = None) -> SizeEstimate:
@@ -76,23 +90,8 @@ def road_wheel(p, part_file: Path | None = None) -> SizeEstimate:
     size = max(1.0, p.tyre_radius_mm / 315.0)
     holes = p.rows * p.lightening_holes
     cpu = (4.0 + 1.0 * p.rows + 0.4 * holes) * math.sqrt(size) * 1.4
-    return _wall(cpu, f"{p.rows} row(s), {holes} lightening holes, R = {p.tyre_radius_mm:g} mm")
+    return wall(cpu, f"{p.rows} row(s), {holes} lightening holes, R = {p.tyre_radius_mm:g} mm")
 
-
-def balancer(p, part_file: Path | None = None) -> SizeEstimate:
-    """Resolves everything the build needs (the road wheel file it names included: InputError),
-    then: solids and arm stations fixed, travel sweep ∝ steps × (0.1 mm / chord)^0.84 (the sweep meshes'
-    size for the chord, measured)."""
-    from .balancer import resolve
-    from .pipeline import design_of
-
-    tor = design_of(p, resolve, part_file).tor  # the build gets this same design
-    steps = int(math.ceil(math.degrees(tor.beta_m - tor.beta0) * p.sweep_steps_per_deg)) + 1
-    cpu = 12.9 + 0.01 * p.n_stations + 0.0425 * steps * (0.1 / p.sweep_chord_mm) ** 0.84
-    return _wall(cpu, f"travel sweep {steps} steps, sweep chord {p.sweep_chord_mm:g} mm")
-
-
-balancer.needs_design = True  # the travel's angles come from the suspension design
 
 def polysector_gear(p, part_file: Path | None = None) -> SizeEstimate:
     """Design, three solids and their checks ∝ teeth of the gear and a sector; one assembly and one DXF per
@@ -106,7 +105,7 @@ def polysector_gear(p, part_file: Path | None = None) -> SizeEstimate:
     steps = [p.proof_steps_per_pitch * max(1, z // per) for z in zc]
     proof = sum(n * (0.041 if z == p.blank_teeth else 0.022) for n, z in zip(steps, zc))
     cpu = 6.2 + 0.093 * (p.gear_teeth + p.sector_teeth) + 0.62 * len(zc) * p.flows + proof + 3.7 * len(zc)
-    return _wall(cpu, f"{len(zc)} positions, proof {sum(steps)} steps, {p.gear_teeth + p.sector_teeth} teeth")
+    return wall(cpu, f"{len(zc)} positions, proof {sum(steps)} steps, {p.gear_teeth + p.sector_teeth} teeth")
 
 
 ESTIMATES = {
@@ -115,5 +114,4 @@ ESTIMATES = {
     "noncircular_pair": noncircular_pair,
     "cam_mover": cam_mover,
     "road_wheel": road_wheel,
-    "balancer": balancer,
 }

@@ -22,7 +22,7 @@ def coupon_pieces(printer):
     from ..geometry.profile import Profile, circle_loop, polygon_loop
     from ..solids.build import extrude_profile
     from ..solids.kernel import box
-    from .kit import Piece
+    from .piece import Piece
 
     under = printer.hole_undersize_mm
     n = len(STEPS)

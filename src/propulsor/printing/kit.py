@@ -19,24 +19,9 @@ import numpy as np
 from ..check import Check
 from ..parallel import fork_pool, inline, threads_ok
 from .layout import lay_flat, pack, placed
+from .piece import Piece
 from .printers import Printer
 from .scale import ScaleChoice
-
-
-@dataclass
-class Piece:
-    """One printed piece: a solid at print size (mm), how many to print, its expected genus.  The piece is
-    printed on its largest planar face with the bed-side chamfer made in its first layers
-    (:mod:`.chamfer`)."""
-
-    name: str
-    solid: object
-    count: int = 1
-    genus: int | None = None
-    what: str = ""
-    #: bed-side chamfer (mm) of this piece; None: the printer's chamfer_mm (0 for pins lying on their flat,
-    #: :func:`.hardware.side_pin`: their walls are round at the bed)
-    chamfer_mm: float | None = None
 
 
 @dataclass

@@ -10,12 +10,12 @@ import logging
 import math
 import os
 import time
-from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import InputError
 from .evaluate import evaluate
+from .folder import holding
 from .results import plot_front, ranked, requirement_failure, write_front
 from .spec import Study, variant_key
 from .table import Table
@@ -129,32 +129,9 @@ def vet_folder(out: Path, build_best: int = 0) -> None:
                 raise InputError("--build-best", build_best, f"{best}: {exc.limit}") from None
 
 
-@contextmanager
-def holding(out: Path, wait: bool = True):
-    """The study's folder locked for the whole study (its build-best too): the lock of a build's output
-    (output_folder.OutputLock, ``.<name>.lock`` beside it), so that one study or one build owns a folder at
-    a time.  With `wait` False a held lock is InputError; else one line says whom it waits for."""
-    import sys
-
-    from .. import output_folder as of
-
-    of.representable(Path(os.path.abspath(out)))
-    of.prepare_parent(out)
-    lock = of.OutputLock(out)
-    try:
-        lock.acquire(wait=wait, on_wait=lambda pid: print(f"propulsor: {out} is in use by process {pid}; waiting",
-                                                          file=sys.stderr, flush=True))
-    except of.Busy as busy:
-        raise InputError("--out", str(out), f"is in use by process {busy.pid} (--no-wait)") from None
-    try:
-        yield lock
-    finally:
-        lock.release()
-
-
 def write_marker(out: Path, study: Study, rows=None, rank=None) -> None:
     """study.json: what the folder holds (the gallery reads it); with the rows once the study is done."""
-    from .. import __version__
+    from ..version import __version__
     from ..export.html import write_atomically
 
     info: dict = {"study": str(study.path), "title": study.title, "part": str(study.part_file), "depth": study.depth,
@@ -198,19 +175,19 @@ def run(study: Study, out: Path, *, scheduler: str | None = None, workers: int |
     """Run the study into folder `out`: results.csv, results.parquet, front.csv, pareto_front.png, study.html
     (and variants/ at depth build; best/<rank>/ of the `build_best` best).  The folder is locked for all of it
     (:func:`holding`); nothing is written before the study file, the folder and the scheduler are known good."""
-    with holding(out, wait=wait):
+    with holding(out, wait=wait, progress=progress):
         vet_folder(out, build_best)  # as it is now, with the lock held
         outcome = _run(study, out, scheduler=scheduler, workers=workers, resume=resume, progress=progress,
                        client=client, worker_wait=worker_wait)
         if build_best:
-            from . import _build_best
+            from .best import build_best as build_the_best
 
-            _build_best(study, outcome, build_best, progress=progress)
+            build_the_best(study, outcome, build_best, progress=progress)
         return outcome
 
 
 def _run(study: Study, out: Path, *, scheduler, workers, resume, progress, client, worker_wait) -> Outcome:
-    from .. import __version__
+    from ..version import __version__
     from .cluster import WORKER_WAIT_S
 
     own = client is None

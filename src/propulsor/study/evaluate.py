@@ -16,6 +16,7 @@ import os
 import socket
 import time
 from contextlib import contextmanager
+from functools import cached_property
 from pathlib import Path
 
 from ..errors import CheckFailed, InputError
@@ -102,6 +103,53 @@ def design_values(part) -> tuple[dict, list]:
     return dict(w.derived), list(w.checks)
 
 
+class Variant:
+    """One variant as the build service knows it (``building.Loaded``): its design, proofs and build computed
+    once each, by the service's own functions (``building.design``, ``prove``, ``build_in_memory``, ``build``)."""
+
+    def __init__(self, part_type, params, source: Path | None = None):
+        from ..building import Loaded
+
+        self.type = part_type.name
+        self._pt = part_type
+        self.params = params
+        self.source = source
+        self.loaded = Loaded(part_type, params, source)
+
+    @cached_property
+    def design(self):
+        from ..building import design
+
+        return design(self.loaded)
+
+    @cached_property
+    def build(self):
+        """The build's result (``building.BuildResult``): in memory, or the one :meth:`write` put in place."""
+        from ..building import build_in_memory
+
+        return build_in_memory(self.loaded)
+
+    @cached_property
+    def proof_run(self):
+        """The design's and the proofs' checks and values (no solid, no file); the whole build where the part
+        type declares no proof steps."""
+        from ..building import ProofResult, prove, proves_alone
+
+        if not proves_alone(self.loaded):
+            b = self.build
+            return ProofResult(b.failures, b.checks, b.derived, True)
+        return prove(self.loaded)
+
+    def write(self, out) -> None:
+        """Build into `out` (``propulsor build``'s files and rules, a failed check kept); its result is the build."""
+        from ..building import build
+
+        try:
+            self.__dict__["build"] = build(self.loaded, out, keep_failed=True)
+        except CheckFailed as exc:
+            self.__dict__["build"] = exc.result
+
+
 def _failures(checks, expected) -> list[str]:
     return [c.name for c in checks if not c.passed and c.name not in expected]
 
@@ -143,7 +191,6 @@ def evaluate(part_type: str, base: dict, source: str | None, values: dict, depth
 
 
 def _evaluate(part_type, base, source, values, depth, wanted, build_dir) -> dict:
-    from ..api import Part
     from ..params import load_params
     from ..parts import get_part_type
 
@@ -154,7 +201,7 @@ def _evaluate(part_type, base, source, values, depth, wanted, build_dir) -> dict
     try:
         pt = get_part_type(part_type)
         params = load_params(pt.params_cls, {**base, **values})
-        part = Part(part_type, params, Path(source) if source else None)
+        part = Variant(pt, params, Path(source) if source else None)
         part.design  # computed once; the proof below reuses it
         if depth == "design":
             derived, checks = design_values(part)
@@ -163,10 +210,7 @@ def _evaluate(part_type, base, source, values, depth, wanted, build_dir) -> dict
             derived, checks = run.derived, list(run.checks)
         else:
             if depth == "build" and build_dir:
-                try:
-                    part.write(build_dir, keep_failed=True)  # a folder only a build wrote is replaced
-                except CheckFailed:
-                    pass
+                part.write(build_dir)  # a folder only a build wrote is replaced; a failed check is kept
             derived, checks = part.build.derived, list(part.build.checks)
         expected = set()
         if source:

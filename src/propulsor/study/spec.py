@@ -209,12 +209,12 @@ def is_manifest_value(part_type: str, name: str) -> bool:
 def _base_design_names(part_type: str, base: dict, part_file: Path) -> set[str]:
     """The names of the derived values the base part's design gives (those the glossary leaves to the
     build's own descriptions); the base part's InputError as it is."""
-    from ..api import Part
     from ..params import load_params
     from ..parts import get_part_type
-    from .evaluate import design_values
+    from .evaluate import Variant, design_values
 
-    part = Part(part_type, load_params(get_part_type(part_type).params_cls, dict(base)), part_file)
+    pt = get_part_type(part_type)
+    part = Variant(pt, load_params(pt.params_cls, dict(base)), part_file)
     derived, _ = design_values(part)
     return set(derived)
 

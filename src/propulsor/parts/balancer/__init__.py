@@ -9,7 +9,8 @@ stresses on the built outline, socket / ear / pad, the travel sweep) → outputs
 from __future__ import annotations
 
 from .. import PartType, summary
-from .design import THESIS, BalancerModel, resolve, spindle_dims, suspension_design
+from .design import THESIS, BalancerModel, feasible, resolve, spindle_dims, suspension_design
+from .estimate import estimate
 from .outputs import build
 from .params import BalancerParams
 from .proofs import hull_envelope, travel_sweep
@@ -25,4 +26,6 @@ PART_TYPE = PartType(
     params_cls=BalancerParams,
     build=build,
     design=resolve,
+    feasible=feasible,
+    estimate=estimate,
 )

@@ -30,7 +30,7 @@ from ...params import load_params, read_part_file
 from ..pipeline import design_of
 from .params import BalancerParams
 
-__all__ = ["BalancerModel", "THESIS", "RHO_STEEL_KG_MM3", "suspension_design", "resolve", "spindle_dims"]
+__all__ = ["feasible", "BalancerModel", "THESIS", "RHO_STEEL_KG_MM3", "suspension_design", "resolve", "spindle_dims"]
 
 RHO_STEEL_KG_MM3 = 7.85e-6
 
@@ -114,7 +114,7 @@ class BalancerModel:
 
 
 def _wheel_inputs(p: BalancerParams, source: Path | None):
-    from .. import get_part_type
+    from .. import get_part_type, vet
 
     road_wheel = get_part_type("road_wheel")  # a part type is looked up, never imported
 
@@ -127,7 +127,8 @@ def _wheel_inputs(p: BalancerParams, source: Path | None):
     if typ != "road_wheel":
         raise InputError("road_wheel_file", p.road_wheel_file, f"names part type {typ!r}, not 'road_wheel'")
     try:
-        wp = load_params(road_wheel.params_cls, mapping)
+        wp = load_params(road_wheel.params_cls, mapping, validate=False)
+        vet(road_wheel, wp, f)
     except InputError as exc:
         raise InputError(f"{exc.parameter} (in {f.name})", exc.value, exc.limit) from None
     return f, wp, design_of(wp, road_wheel.design).model
@@ -245,3 +246,10 @@ def spindle_dims(p: BalancerParams, wp, z_hub: float) -> dict:
     z_cross = 0.5 * (s1[1] + s2[0])
     return {"spindle_seat_1": s1, "spindle_seat_2": s2, "spindle_end": z_end, "z_cross": z_cross,
             "spindle_relief_r": rr}
+
+
+def feasible(p, source=None) -> None:
+    """InputError (parameter, value, limit) when the seed's suspension cannot be made: the design computed once (the
+    build reuses it, :func:`~propulsor.parts.pipeline.design_of`).  What the parameters cannot tell from their
+    fields; run by the dry run and the Python API after ``validate()`` (``parts.vet``)."""
+    design_of(p, suspension_design)

@@ -25,7 +25,7 @@ import numpy as np
 
 from ...check import Check
 from ...errors import InputError
-from ...geometry.profile import Arc, Line, Loop, Profile, circle_loop
+from ...geometry.profile import Profile, circle_loop, hull_of_circles
 from ...printing.fits import Fit
 from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
@@ -58,40 +58,6 @@ def _dist_point_poly(pt, poly: np.ndarray) -> float:
     d = b - a
     t = np.clip(((pt - a) * d).sum(axis=1) / np.maximum((d * d).sum(axis=1), 1e-300), 0.0, 1.0)
     return float(np.min(np.linalg.norm(a + t[:, None] * d - pt, axis=1)))
-
-
-def _hull_loop(circles) -> Loop:
-    """The convex hull of circles [((x, y), r)] as arcs and lines (the arcs' ends on the circles,
-    tangent to within the 0.5° sampling that finds them)."""
-    from scipy.spatial import ConvexHull
-
-    a = np.radians(np.arange(0.0, 360.0, 0.5))
-    pts, owner, ang = [], [], []
-    for i, ((x, y), r) in enumerate(circles):
-        pts.append(np.column_stack([x + r * np.cos(a), y + r * np.sin(a)]))
-        owner += [i] * len(a)
-        ang.append(a)
-    pts, owner, ang = np.vstack(pts), np.array(owner), np.concatenate(ang)
-    v = ConvexHull(pts).vertices  # counter-clockwise
-    start = next(j for j in range(len(v)) if owner[v[j]] != owner[v[j - 1]])
-    v = np.roll(v, -start)
-    runs = []
-    for idx in v:
-        if runs and runs[-1][0] == owner[idx]:
-            runs[-1][1].append(ang[idx])
-        else:
-            runs.append((owner[idx], [ang[idx]]))
-    segs = []
-    for j, (i, angles) in enumerate(runs):
-        (cx, cy), r = circles[i]
-        a0 = angles[0]
-        a1 = a0 + float(np.sum(np.mod(np.diff(angles), 2 * math.pi)))
-        arc = Arc((cx, cy), r, a0, a1)
-        if segs:
-            segs.append(Line(tuple(segs[-1].end), tuple(arc.start)))
-        segs.append(arc)
-    segs.append(Line(tuple(segs[-1].end), tuple(segs[0].start)))
-    return Loop(segs)
 
 
 def _rot(a: float) -> np.ndarray:
@@ -171,7 +137,7 @@ def kit(p: BalancerParams, printer: Printer, scale: float | None = None, source=
             c = c + side * np.array([0.0, gap - d])
         posts.append(_rot(beta - math.pi / 2) @ c)
     boss_top = za0 + (za1 - za0)  # flush with the arm's outboard face
-    plate_loop = _hull_loop([((0.0, 0.0), r_journal + RIM_MM)] + [(tuple(c), POST_R_MM + RIM_MM) for c in posts])
+    plate_loop = hull_of_circles([((0.0, 0.0), r_journal + RIM_MM)] + [(tuple(c), POST_R_MM + RIM_MM) for c in posts])
     plate = extrude_profile(Profile(plate_loop, [], "bracket"), PLATE_T_MM)
     # bracket in its own frame: plate 0 … PLATE_T (its top face is the hull side zb), boss and posts above
     collar_top = za0 - zb  # the upper collar the arm rests on: from the bracket face to the arm

@@ -172,10 +172,6 @@ class BalancerParams(PartParams):
                                  f"wheel numbers must be whole numbers 1 ... n_wheels_side = {self.n_wheels_side}")
         if len(set(self.damped_wheels)) != len(self.damped_wheels):
             raise InputError("damped_wheels", self.damped_wheels, "one damper per wheel")
-        from ..pipeline import design_of
-        from .design import suspension_design
-
-        design_of(self, suspension_design)
         if not self.h_min_mm < self.h_max_mm:
             raise InputError("h_min_mm", self.h_min_mm, f"must be < h_max_mm = {self.h_max_mm:g}")
         z_c0 = -0.5 * self.arm_width_mm - self.upper_collar_mm

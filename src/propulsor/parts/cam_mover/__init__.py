@@ -14,7 +14,7 @@ assembly, DXF) → proofs on the exported geometry (:mod:`.proofs`).  Defaults a
 from __future__ import annotations
 
 from .. import PartType, summary
-from .design import Plan, plan
+from .design import Plan, feasible, plan
 from .outputs import build, build_solids, expected_genus
 from .params import LAWS, MIN_WEB_MM, CamMoverParams
 from .proofs import hub_height_from_outline, motion_proofs, profile_fd_check, spot_checks_3d
@@ -28,4 +28,5 @@ PART_TYPE = PartType(
     params_cls=CamMoverParams,
     build=build,
     design=plan,
+    feasible=feasible,
 )

@@ -25,7 +25,7 @@ from ...laws.cam_motion import CamMechanism, CurvatureLaw, cam_motion
 from ...laws.shoe import shoe_loop_check, shoe_table
 from .params import MIN_WEB_MM, CamMoverParams
 
-__all__ = ["Plan", "plan"]
+__all__ = ["feasible", "Plan", "plan"]
 
 
 @dataclass(frozen=True)
@@ -197,3 +197,14 @@ def plan(p: CamMoverParams) -> Plan:
     evaluation = evaluate(mech, law, limits, ret, estimate_error=True)
     return Plan(p, mech, law, motion, search, evaluation, H_min, H_max, wr, orr, rim_radius, Rmin, where,
                 working, outer, path, core, ring, plate_prof, shoe, leg, roller, carrier, z)
+
+
+def feasible(p, source=None) -> None:
+    """InputError (parameter, value, limit) when a fixed law's mechanism cannot be made (law, shoe, curvature,
+    fits): the plan computed once (the build reuses it, :func:`~propulsor.parts.pipeline.design_of`).  A
+    searched law is checked the same way by the build after the search, which the size estimate bounds first.
+    Run by the dry run and the Python API after ``validate()`` (``parts.vet``)."""
+    if p.law != "searched":
+        from ..pipeline import design_of
+
+        design_of(p, plan)

@@ -163,16 +163,9 @@ class CamMoverParams(PartParams):
 
     # ------------------------------------------------------------------ validation
     def validate(self) -> None:
-        """Cross-parameter checks (InputError: parameter, value, limit).  For a fixed law the
-        whole design is computed here (law, shoe, curvature, fits), once (the build reuses it); a
-        searched law is checked the same way by the build after the search, which the size
-        estimate bounds first."""
-        from ..pipeline import design_of
-        from .design import plan
-
+        """Cross-parameter checks (InputError: parameter, value, limit).  Whether a fixed law's mechanism can
+        be made (law, shoe, curvature, fits) is the design's own question (:func:`.design.feasible`)."""
         self.static_checks()
-        if self.law != "searched":
-            design_of(self, plan)
 
     def static_checks(self) -> None:
         if self.law == "searched":

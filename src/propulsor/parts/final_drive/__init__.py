@@ -11,7 +11,7 @@ and an interference sweep over one full carrier turn on the finished outlines
 from __future__ import annotations
 
 from .. import PartType, summary
-from .design import FinalDriveDesign, design, gear_outlines, planetary_set, ring_outer_d
+from .design import FinalDriveDesign, design, feasible, gear_outlines, planetary_set, ring_outer_d
 from .outputs import build
 from .params import FinalDriveParams
 from .proofs import MeshSweep, carrier_sweep
@@ -25,4 +25,5 @@ PART_TYPE = PartType(
     params_cls=FinalDriveParams,
     build=build,
     design=design,
+    feasible=feasible,
 )

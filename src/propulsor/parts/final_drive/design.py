@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from ...errors import InputError
 from .params import FinalDriveParams
 
-__all__ = ["FinalDriveDesign", "design", "planetary_set", "ring_outer_d", "gear_outlines", "body_offsets"]
+__all__ = ["feasible", "FinalDriveDesign", "design", "planetary_set", "ring_outer_d", "gear_outlines", "body_offsets"]
 
 
 @dataclass(frozen=True)
@@ -102,3 +102,12 @@ def body_offsets(z_ring: int) -> tuple[float, float]:
     External gears are generated with tooth 0 on +y; the ring with a space on +y (its neighbouring
     tooth at +y + π/z)."""
     return -0.5 * math.pi, -0.5 * math.pi - math.pi / z_ring
+
+
+def feasible(p, source=None) -> None:
+    """InputError (parameter, value, limit) when the set cannot be made: the design computed once (the
+    build reuses it, :func:`~propulsor.parts.pipeline.design_of`).  What the parameters cannot tell from their
+    fields; run by the dry run and the Python API after ``validate()`` (``parts.vet``)."""
+    from ..pipeline import design_of
+
+    design_of(p, design)

@@ -307,12 +307,3 @@ class NoncircularPairParams(PartParams):
             d = getattr(self, name)
             if self.keyway and d > 0 and not 6.0 < d <= 230.0:
                 raise InputError(name, d, "a keyway needs a bore over 6 up to 230 mm (DIN 6885-1); set keyway = false")
-
-    def screen(self, source=None) -> None:
-        """The refusals of a build that need no outline (``design.screen``: generability of the blend or of
-        the law's pitch curves with the catalogue cutters, the law search within its band, the sector teeth's
-        tips); a second or two, so it runs after the size estimate, and the build reuses its result.  A law
-        read from a file (``law_file``, ``pitch_curve_file``) is read relative to the part file ``source``."""
-        from .design import screened
-
-        screened(self, source)

@@ -38,11 +38,11 @@ def _cutters(p, law, m: float, pc) -> list:
     """(entry, shaper) in the order tried: the part file's own, or with law_search and a concave pitch
     curve every catalogue shaper at this module, largest first."""
     from ...gears.catalogue import shaper_diameters, shaper_entry
-    from .design import _entry_of, shaper_of
+    from .cutting import entry_of, shaper_of
 
     alpha = math.radians(p.pressure_angle_deg)
     own = shaper_of(p, m)
-    cands = [(None if p.shaper_d0_mm <= 0 else _entry_of(p, m), own)]
+    cands = [(None if p.shaper_d0_mm <= 0 else entry_of(p, m), own)]
     concave = pc.curvature("driver").concave or pc.curvature("driven").concave
     if p.law_search and concave:  # a shaper only where a pitch curve is concave
         entries = []
@@ -55,7 +55,7 @@ def _cutters(p, law, m: float, pc) -> list:
     return cands
 
 
-def _limits(p) -> dict:
+def generability_limits(p) -> dict:
     """The ranges of the parameters a generability hint may name (their fields' limits): the driver's
     profile shift x (the driven wheel's x_H = -x), the driven teeth z_H, the module m, the shaper's z0."""
     import dataclasses
@@ -71,9 +71,9 @@ def _limits(p) -> dict:
 
 
 def _tooth_common(p, m: float, cutter, sh) -> dict:
-    from .design import _rack, _thinning
+    from .cutting import rack_of, thinning
 
-    return dict(m=m, thinning_mm=_thinning(p), rack=_rack(p), z0=cutter.z0, tip_min_mm=p.tip_land_min_module * m,
+    return dict(m=m, thinning_mm=thinning(p), rack=rack_of(p), z0=cutter.z0, tip_min_mm=p.tip_land_min_module * m,
                 shaper=sh, tip_max_mm=p.tip_height_max_module * m)
 
 
@@ -84,7 +84,7 @@ def screen_smooth(p, law) -> SmoothScreen:
     from ...gears.generability import CutterSpec, check_generable, remedies
     from ...gears.noncircular import PitchCurves, centre_distance, module_for
     from ...gears.noncircular_teeth import ToothSpec
-    from .design import _TOOTH_KEYS, _TOOTH_KEYS_D0, _mounting_fits, _rack
+    from .cutting import TOOTH_KEYS, TOOTH_KEYS_D0, mounting_fits, rack_of
 
     z_H = p.driven_teeth
     with input_names({"z_H": "driven_teeth", "m": "module_mm", "L": "center_distance_mm"}):
@@ -94,7 +94,7 @@ def screen_smooth(p, law) -> SmoothScreen:
         else:
             L = p.center_distance_mm
             m = module_for(law, L, z_H)
-    _rack(p)
+    rack_of(p)
     pc = PitchCurves(law, L)
     alpha = math.radians(p.pressure_angle_deg)
     out = []
@@ -102,10 +102,10 @@ def screen_smooth(p, law) -> SmoothScreen:
         cutter = CutterSpec(m=m, alpha=alpha, x=p.driver_shift, x_H=-p.driver_shift,
                             z0=p.shaper_teeth if sh is None else sh.z0, shaper_x0=None if sh is None else sh.x0)
         g = check_generable(pc, cutter)
-        why = "" if g.ok else "; ".join(remedies(g, cutter, z_H, law.n, L, _limits(p)))
+        why = "" if g.ok else "; ".join(remedies(g, cutter, z_H, law.n, L, generability_limits(p)))
         if not why:  # the shaper the concave stretches need must exist
             try:
-                with input_names(_TOOTH_KEYS if entry is None else _TOOTH_KEYS_D0):
+                with input_names(TOOTH_KEYS if entry is None else TOOTH_KEYS_D0):
                     for chk, x in ((g.driver, p.driver_shift), (g.driven, -p.driver_shift)):
                         if chk.concave:
                             ToothSpec(x=x, **_tooth_common(p, m, cutter, sh)).shaper_tools()
@@ -117,7 +117,7 @@ def screen_smooth(p, law) -> SmoothScreen:
     scr = SmoothScreen(law, m, L, pc, tuple(out))
     if not scr.generable:
         raise _not_generable(p, scr, [c[4] for c in out])
-    _mounting_fits(p, L)
+    mounting_fits(p, L)
     return scr
 
 
@@ -135,7 +135,7 @@ def design_smooth(p, scr: SmoothScreen, progress):
     """The teeth of the screened cutters in turn (law_search: the next one where a generator refuses)."""
     from ...gears.generability import SmoothingDesign
     from ...gears.noncircular_teeth import ArcFrame, ToothSpec
-    from .design import _TOOTH_KEYS, _TOOTH_KEYS_D0, Design, _generate_pair
+    from .cutting import TOOTH_KEYS, TOOTH_KEYS_D0, Design, generate_pair
 
     law, m, L, pc = scr.law, scr.m, scr.L, scr.pc
     z_H = p.driven_teeth
@@ -150,8 +150,8 @@ def design_smooth(p, scr: SmoothScreen, progress):
         common = _tooth_common(p, m, cutter, sh)
         progress(f"generated: driver teeth ({z_H // law.n}), rack/shaper envelopes")
         try:
-            with input_names(_TOOTH_KEYS if entry is None else _TOOTH_KEYS_D0):
-                drv, dvn = _generate_pair(pc, ToothSpec(x=p.driver_shift, **common),
+            with input_names(TOOTH_KEYS if entry is None else TOOTH_KEYS_D0):
+                drv, dvn = generate_pair(pc, ToothSpec(x=p.driver_shift, **common),
                                           ToothSpec(x=-p.driver_shift, **common), frame)
         except (InputError, RuntimeError, ValueError) as exc:
             if not p.law_search or not (g.driver.concave or g.driven.concave):

@@ -12,7 +12,7 @@ the tooth position error (eq. 15–22), the friction loss (eq. 12–14) and the 
 from __future__ import annotations
 
 from .. import PartType, summary
-from .design import PolysectorDesign, design
+from .design import PolysectorDesign, design, feasible
 from .outputs import build
 from .params import PolysectorParams
 
@@ -24,4 +24,5 @@ PART_TYPE = PartType(
     params_cls=PolysectorParams,
     build=build,
     design=design,
+    feasible=feasible,
 )

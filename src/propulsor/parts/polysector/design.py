@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from ...errors import InputError, input_names
 from .params import PolysectorParams
 
-__all__ = ["Position", "PolysectorDesign", "design", "synthesis"]
+__all__ = ["feasible", "Position", "PolysectorDesign", "design", "synthesis"]
 
 
 @dataclass(frozen=True)
@@ -186,3 +186,12 @@ def design(p: PolysectorParams) -> PolysectorDesign:
     d = PolysectorDesign(p, geo, positions, e_max, lay, blank, sector, hubs, gear, gear_prof, phase)
     _one_flow_collisions(d)
     return d
+
+
+def feasible(p, source=None) -> None:
+    """InputError (parameter, value, limit) when the positions (synthesis, eq. 1-4) cannot be made: the design computed once (the
+    build reuses it, :func:`~propulsor.parts.pipeline.design_of`).  What the parameters cannot tell from their
+    fields; run by the dry run and the Python API after ``validate()`` (``parts.vet``)."""
+    from ..pipeline import design_of
+
+    design_of(p, design)

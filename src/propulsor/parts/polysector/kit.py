@@ -174,9 +174,9 @@ def kit(p: PolysectorParams, printer: Printer, scale: float | None = None, sourc
                                       printer.bed_y_mm - 2 * printer.margin_mm, printer.bed_z_mm)):
         raise InputError("--scale", choice.label, f"the base ({bx:.0f} × {by:.0f} mm) does not fit the bed; a larger "
                          f"reduction fits")
-    from ..balancer.kit import _hull_loop
+    from ...geometry.profile import hull_of_circles
 
-    base_prof = Profile(_hull_loop([((0.0, 0.0), R_boss)] + [(c, R_boss) for c in holes_at]),
+    base_prof = Profile(hull_of_circles([((0.0, 0.0), R_boss)] + [(c, R_boss) for c in holes_at]),
                         [circle_loop((pin[0] - 2 * press + under) / 2, (0.0, 0.0), ccw=False)]
                         + [circle_loop((pin[1] - 2 * press + under) / 2, c, ccw=False) for c in holes_at], "base")
     base = extrude_profile(base_prof, BASE_T_MM)

@@ -74,7 +74,5 @@ class PolysectorParams(PartParams):
     load_torque_Nm: float = param(20.0, "N·m", "resisting torque M4 on wheel 4", min=0.0, max=1e6, why="a 1 MN·m drive")
 
     def validate(self) -> None:
-        from ..pipeline import design_of
-        from .design import design
-
-        design_of(self, design)  # the synthesis (eq. 1-4): refuses positions that cannot be made
+        """Nothing between fields to check here: the synthesis (eq. 1-4) refuses positions that cannot be made
+        (:func:`.design.feasible`, run by the dry run and the Python API after this)."""

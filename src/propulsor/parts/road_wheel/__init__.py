@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from .. import PartType, summary
 from ...solids.road_wheel import WheelModel, mass_properties, wheel_model, wheel_solids
-from .design import RoadWheelDesign, design
+from .design import RoadWheelDesign, design, feasible
 from .outputs import build
 from .params import RoadWheelParams
 from .proofs import kozlov_table
@@ -29,4 +29,5 @@ PART_TYPE = PartType(
     params_cls=RoadWheelParams,
     build=build,
     design=design,
+    feasible=feasible,
 )

@@ -6,7 +6,6 @@ from dataclasses import dataclass
 
 from ...errors import InputError
 from ...params import PartParams, param
-from ..pipeline import design_of
 
 __all__ = ["RoadWheelParams"]
 
@@ -58,9 +57,8 @@ class RoadWheelParams(PartParams):
     rho_rubber_kg_m3: float = param(1150.0, "kg/m^3", "density of the tyres", min=500.0, max=3000.0, why="the densest filled rubbers")
 
     def validate(self) -> None:
-        from .design import design
-
-        design_of(self, design)  # raises InputError for geometry that cannot be made
+        """Kozlov's deflection against the rubber (eq. 79); whether the geometry can be made is the design's
+        own question (:func:`.design.feasible`)."""
         tyre = self.tyre()
         P_row = self.load_N / self.rows
         lam = float(tyre.contact_length(P_row)) ** 2 / (8.0 * self.tyre_radius_mm)

@@ -1,0 +1,146 @@
+"""The build service below both faces (building.py): builds from several threads of one process, a command-line
+build beside an API build, each build's own workers, values and exceptions instead of printed lines."""
+
+from __future__ import annotations
+
+import os
+import sys
+import threading
+import time
+
+import pytest
+
+import propulsor
+from propulsor import building, parallel
+from propulsor.cli import main
+from propulsor.errors import CheckFailed, FolderBusy, InputError
+from propulsor.progress import NOTICE, PROGRESS, Event
+
+SMALL_WHEEL = 'type = "road_wheel"\nlightening_holes = 0\n'
+
+
+def _checked(folder) -> bool:
+    """`propulsor check` on the folder: every file valid (exit 0)."""
+    return main(["check", str(folder)]) == 0
+
+
+def _in_threads(jobs, timeout=900):
+    """Run the callables at once, one thread each; (results, errors) in their order."""
+    results, errors = [None] * len(jobs), [None] * len(jobs)
+
+    def run(k):
+        try:
+            results[k] = jobs[k]()
+        except BaseException as exc:  # noqa: BLE001 - reported by the test
+            errors[k] = exc
+
+    threads = [threading.Thread(target=run, args=(k,)) for k in range(len(jobs))]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join(timeout=timeout)
+    assert not any(t.is_alive() for t in threads), "a build never ended"
+    return results, errors
+
+
+def test_part_write_from_four_threads_at_once(tmp_path):
+    part = tmp_path / "wheel.toml"
+    part.write_text(SMALL_WHEEL)
+    saved = sys.stderr
+    outs = [tmp_path / f"out{k}" for k in range(4)]
+    results, errors = _in_threads([lambda o=o: propulsor.part(part).write(o) for o in outs])
+    assert errors == [None] * 4, errors
+    assert results == [o.resolve() for o in outs]
+    assert sys.stderr is saved
+    assert all(_checked(o) for o in outs)
+    assert not parallel._CLOSE_IN_WORKERS  # every build forgot its lock when it ended
+
+
+def test_a_command_line_build_beside_an_api_build_in_one_process(tmp_path, capsys):
+    part = tmp_path / "wheel.toml"
+    part.write_text(SMALL_WHEEL)
+    cli_out, api_out = tmp_path / "cli", tmp_path / "api"
+    events = []
+    results, errors = _in_threads([
+        lambda: main(["build", str(part), "--out", str(cli_out), "-q"]),
+        lambda: propulsor.part(part).write(api_out, progress=events.append),
+    ])
+    assert errors == [None, None], errors
+    assert results == [0, api_out.resolve()]
+    assert _checked(cli_out) and _checked(api_out)
+    assert capsys.readouterr().err == ""  # -q: the command line's build says nothing; the API's prints nothing
+    assert events and all(isinstance(e, Event) and e.kind in (PROGRESS, NOTICE) for e in events)
+    assert events[-1] == f"road_wheel: built into {api_out.resolve()}, all checks passed"
+    manifests = [(o / "manifest.json").read_bytes() for o in (cli_out, api_out)]
+    assert len(manifests[0]) > 0 and len(manifests[1]) > 0
+
+
+def _slow(seconds):
+    time.sleep(seconds)
+    return os.getpid()
+
+
+def test_a_build_kills_its_own_workers_and_no_other_builds(monkeypatch):
+    """Two builds in two threads: the one that ends first kills its own workers, the other's go on (before
+    issue 38 the first build's end killed every worker of the process: BrokenProcessPool)."""
+    monkeypatch.setenv("PROPULSOR_JOBS", "2")
+    with parallel.Workers():
+        pool = parallel.fork_pool(1)
+        assert pool is not None
+        slow = pool.submit(_slow, 2.0)
+        mine = list(pool._procs.values())
+
+        def other_build():
+            with parallel.Workers():
+                other = parallel.fork_pool(1)
+                other.submit(_slow, 0.0).result()
+                left = other.submit(_slow, 30.0)  # still running when this build ends
+                theirs = list(other._procs.values())
+            assert left.cancelled() or left.done() or not any(p.is_alive() for p in theirs)
+            return theirs
+
+        theirs, errors = _in_threads([other_build])
+        assert errors == [None], errors
+        assert not any(p.is_alive() for p in theirs[0])  # the other build's end killed its worker
+        assert slow.result(timeout=30) == mine[0].pid  # ours went on
+        assert all(p.is_alive() for p in mine)
+    assert not any(p.is_alive() for p in mine)  # our end killed ours
+
+
+def test_the_service_raises_and_prints_nothing(tmp_path, capsys):
+    """Bad input, a busy folder and a failed check are exceptions with the values in them; not a line printed."""
+    part_file = tmp_path / "wheel.toml"
+    part_file.write_text(SMALL_WHEEL)
+    part = building.load(part_file)
+    (tmp_path / "mine").mkdir()
+    (tmp_path / "mine" / "notes.txt").write_text("keep me")
+    with pytest.raises(InputError) as bad:
+        building.build(part, tmp_path / "mine")
+    assert bad.value.parameter == "--out" and "use --force" in str(bad.value)
+
+    from propulsor import output_folder as of
+
+    lock = of.OutputLock(tmp_path / "held")
+    lock.acquire()
+    try:
+        with pytest.raises(FolderBusy) as busy:
+            building.build(part, tmp_path / "held", wait=False)
+    finally:
+        lock.release()
+    assert busy.value.pid == str(os.getpid()) and isinstance(busy.value, InputError)
+    assert str(busy.value).endswith(f"is being built by process {os.getpid()} (--no-wait)")
+
+    class Made:  # what a build whose one check failed hands back (nothing published, nothing verified)
+        checks, derived = (), {"made_up": 1.0}
+
+    real = building.produce_build
+    building.produce_build = lambda *a, **k: (["made up: for the test"], "road_wheel", Made())
+    try:
+        with pytest.raises(CheckFailed) as failed:
+            building.build(part, tmp_path / "failed")
+    finally:
+        building.produce_build = real
+    assert failed.value.failures == ["made up: for the test"] and failed.value.out is None
+    assert failed.value.what == "road_wheel" and failed.value.result.derived == {"made_up": 1.0}
+    assert not (tmp_path / "failed").exists()
+    assert capsys.readouterr() == ("", "")
