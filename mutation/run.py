@@ -180,6 +180,18 @@ def run_mutmut(scratch: Path, jobs: int, names: list[str]) -> float:
     return elapsed
 
 
+def _tests_hash(scratch: Path, target: Target) -> str:
+    """sha256 over the target's test files (and the shared conftest) as the scratch copy has them."""
+    import hashlib
+
+    h = hashlib.sha256()
+    files = sorted({t.split("::")[0] for t in target.tests} | {"tests/conftest.py"})
+    for rel in files:
+        p = scratch / rel
+        h.update(rel.encode() + b"\0" + (p.read_bytes() if p.exists() else b"") + b"\0")
+    return h.hexdigest()
+
+
 @dataclass
 class Score:
     module: str
@@ -309,6 +321,15 @@ def main(argv: list[str] | None = None) -> int:
             print(f"target {target.name}: mutating {len(modules)} module(s); mutmut's log: {scratch / 'mutmut.log'}",
                   flush=True)
             elapsed = run_mutmut(scratch, args.jobs, [])
+            # mutmut re-tests a mutant when its function changes, not when a test is added: after a change of the
+            # tests, the survivors of the last run are tested again, by name
+            stamp, now = scratch / "tests.sha256", _tests_hash(scratch, target)
+            if stamp.exists() and stamp.read_text() != now:
+                _, again, _ = read_results(scratch, modules, equivalents)
+                if again:
+                    print(f"target {target.name}: the tests changed; {len(again)} survivor(s) tested again", flush=True)
+                    elapsed += run_mutmut(scratch, args.jobs, [name for name, *_ in again])
+            stamp.write_text(now)
         scores, survivors, used = read_results(scratch, modules, equivalents)
         all_used |= used
         report(target, scratch, scores, survivors, elapsed)
