@@ -134,7 +134,7 @@ def _iso(p, d):
     from propulsor.gears.gear_pair import GearPair
     from propulsor.gears.involute import SpurGear
     from propulsor.gears.iso6336 import MeshLoad, mesh_stress
-    from propulsor.parts.noncircular_pair.design import _thinning
+    from propulsor.parts.noncircular_pair.cutting import thinning as _thinning
 
     r = [float(np.max(np.hypot(*g.profile.outer.polyline(1e-5).T))) for g in (d.driver, d.driven)]
     pair = GearPair(SpurGear(20, 2.5, 0.5), SpurGear(40, 2.5, -0.5))
