@@ -118,6 +118,7 @@ class HandLoad:
     S_Hmin: float
     ratings: tuple          #: Rating per printed material
     load_case: str
+    contacts: tuple = ()    #: the resolved contact laws the pair was placed by, [(direction, ContactLaw)]
 
     @property
     def survivors(self) -> list[str]:
@@ -234,11 +235,13 @@ def _worst(per_direction, key: str):
     return best
 
 
-def hand_load(q, kd, r_h_mm: float, force_N: float = policy.KIT_HAND_FORCE_N, names=None) -> HandLoad | None:
+def hand_load(q, kd, r_h_mm: float, force_N: float | None = None, names=None, contacts=None) -> HandLoad | None:
     """The hand on the crank of the kit whose printed pair is ``kd`` (the kit's own design: ``kd.d`` mounted at
-    ``kd.mount``) made from the kit's parameters ``q``, its handle at ``r_h_mm``; each material of ``names`` (the
-    printed ones of the catalogue by default) rated in both directions.  None for teeth without a tooth record (the
-    papers' sector teeth: the load per tooth needs generated teeth)."""
+    ``kd.mount``) made from the kit's parameters ``q``, its handle at ``r_h_mm``, pushed with ``force_N``
+    (``policy.KIT_HAND_FORCE_N`` by default); each material of ``names`` (the printed ones of the catalogue by
+    default) rated in both directions; ``contacts``: the pair's resolved contact laws [(direction, ContactLaw)] of
+    both directions where known (``HandLoad.contacts`` of an earlier rating of the same pair).  None for teeth
+    without a tooth record (the papers' sector teeth: the load per tooth needs generated teeth)."""
     from ...checks.motion.contact_events import DRIVE, REVERSE
     from .as_built import contact_direction, period_span
     from .tooth_load_outputs import analyse, summary
@@ -247,10 +250,12 @@ def hand_load(q, kd, r_h_mm: float, force_N: float = policy.KIT_HAND_FORCE_N, na
     if d.method != "generated":
         return None
     names = printed_materials() if names is None else list(names)
+    force_N = policy.KIT_HAND_FORCE_N if force_N is None else force_N
     T1 = hand_torque_Nm(force_N, r_h_mm)
     step = math.radians(policy.KIT_HAND_LOAD_CONTACT_STEP_DEG)
     span = period_span(d)
-    contacts = [(dr, contact_direction(d, kd.mount, dr, step)) for dr in (DRIVE, REVERSE)]
+    if contacts is None:
+        contacts = tuple((dr, contact_direction(d, kd.mount, dr, step)) for dr in (DRIVE, REVERSE))
     ratings, load_case = [], ""
     for name in names:
         ql = dataclasses.replace(q, load_driver_torque_Nm=T1, load_power_W=0.0, load_vehicle_mass_kg=0.0,
@@ -269,4 +274,4 @@ def hand_load(q, kd, r_h_mm: float, force_N: float = policy.KIT_HAND_FORCE_N, na
         ratings.append(Rating(name, runs[0][1].material, S_F, S_H, sF, sH, root, flank, q.load_S_Fmin,
                               q.load_S_Hmin, float(force_N), tuple(runs)))
     return HandLoad(float(force_N), float(r_h_mm), T1, d.m, q.face_width_mm, q.load_S_Fmin, q.load_S_Hmin,
-                    tuple(ratings), load_case)
+                    tuple(ratings), load_case, tuple(contacts))
