@@ -173,6 +173,8 @@ GLOSSARY = {
     "hand_load_S_Hmin": ("", "contact safety S_H a printed material must reach under the hand (the part file's "
                              "load_S_Hmin)"),
     "hand_load_survivors": ("", "the printed materials whose teeth survive the hand on the crank"),
+    "hand_load_root_unrated_teeth": ("", "loaded teeth whose root is not rated under the hand: ISO 6336-3's 30° "
+                                         "section is not found on their outline"),
     "hand_load_<material>_S_F_min": ("", "least root safety σ_FE/σ_F of the printed teeth in {material} under the "
                                          "hand, both wheels and directions"),
     "hand_load_<material>_S_H_min": ("", "least contact safety σ_Hlim/σ_H of the printed teeth in {material} under "
