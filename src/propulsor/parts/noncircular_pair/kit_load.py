@@ -67,6 +67,12 @@ def printed_materials() -> list[str]:
     return [name for name, m in materials().items() if m.static]
 
 
+def _tooth_key(t: str):
+    """'driven 8' before 'driven 10'."""
+    g, j = t.split()
+    return g, int(j)
+
+
 def _join(names) -> str:
     names = list(names)
     return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
@@ -155,7 +161,7 @@ class HandLoad:
         return self._none(b, required, bad) + self._unrated()
 
     def _unrated(self) -> str:
-        teeth = sorted({t for r in self.ratings for t in r.unrated}, key=lambda t: (t.split()[0], int(t.split()[1])))
+        teeth = sorted({t for r in self.ratings for t in r.unrated}, key=_tooth_key)
         if not teeth:
             return ""
         return (f" The roots of {len(teeth)} teeth ({', '.join(teeth)}) are not rated: ISO 6336-3's 30° section is "
@@ -194,7 +200,7 @@ class HandLoad:
         out = {"hand_load_force_N": self.force_N, "hand_load_crank_radius_mm": self.r_h_mm,
                "hand_load_T1_Nm": self.T1_Nm, "hand_load_S_Fmin": self.S_Fmin, "hand_load_S_Hmin": self.S_Hmin,
                "hand_load_survivors": self.survivors,
-               "hand_load_root_unrated_teeth": sorted({t for r in self.ratings for t in r.unrated})}
+               "hand_load_root_unrated_teeth": sorted({t for r in self.ratings for t in r.unrated}, key=_tooth_key)}
         for r in self.ratings:
             out.update({f"hand_load_{r.name}_S_F_min": r.S_F, f"hand_load_{r.name}_S_H_min": r.S_H,
                         f"hand_load_{r.name}_sigma_F_max_MPa": r.sigma_F_max_MPa,
