@@ -12,7 +12,8 @@ differ between them:
 - **the pictures of the assembled model** (side, exploded, step views), drawn once for the same meshes
   placed alike under the same title;
 - **the noncircular pair's design** at the same parameters (the full-size pair whose size sets the
-  scale, and the printed pair at one scale with one printer's allowances), whichever bed asked;
+  scale, and the printed pair at one scale with one printer's allowances), whichever bed asked, and the
+  rating of that printed pair under the hand on its crank (the same pair, the same handle radius);
 - **the slicing** (:class:`SharedSlicer`): a plate file with the same bytes (same pieces at the same
   places) and the same print settings is sliced once by PrusaSlicer, on a bed that every profile that
   laid it out holds (the beds are rectangles from the origin), and every object's extents are checked
@@ -61,7 +62,7 @@ class KitMemo:
         self.kits: dict = {}
         self.pieces: dict = {}
         self.designs: dict = {}
-        self.hits = {"kit": 0, "piece": 0, "design": 0}
+        self.hits = {"kit": 0, "piece": 0, "design": 0, "hand_load": 0}
         real_get_kit = parts.get_kit
 
         def get_kit(name):
@@ -167,6 +168,18 @@ class KitMemo:
 
         pair_design._memo = self
         self._mp.setattr(ncg, "pair_design", pair_design)
+        real_hand = ncg.hand_load
+        hands: dict = {}
+
+        def hand_load(q, kd, r_h, *args, **kw):  # the same printed pair (memoised above) and crank: the same rating
+            key = (repr(q), id(kd), r_h, args, repr(sorted(kw.items())))
+            if key in hands:
+                self.hits["hand_load"] += 1
+            else:
+                hands[key] = (kd, real_hand(q, kd, r_h, *args, **kw))  # kd kept: its id stays its own
+            return hands[key][1]
+
+        self._mp.setattr(ncg, "hand_load", hand_load)
 
 
 class SharedSlicer:

@@ -122,6 +122,38 @@ def test_kit_builds_and_proves_on_the_printed_geometry(kits, name):
     assert main(["check", str(folder)]) == 0
 
 
+def test_the_seed_002_guide_says_which_material_survives_the_hand_on_the_crank(kits):
+    """The kit rates its printed pair under a firm hand on its crank for every printed material: the manifest holds
+    the torque (the hand force times the handle's radius) and each material's safeties, the guide says which
+    material survives with the same numbers, the report's table lists them."""
+    import csv
+
+    from propulsor import policy
+
+    rc, folder = kits["ncg_seed002"]
+    m = _manifest(folder)
+    v = m["derived"]
+    assert v["hand_load_force_N"] == policy.KIT_HAND_FORCE_N
+    assert v["hand_load_T1_Nm"] == pytest.approx(v["hand_load_force_N"] * v["hand_load_crank_radius_mm"] / 1000)
+    checks = {c["name"]: c for c in m["checks"]}
+    assert checks["hand_load.equilibrium"]["passed"], checks["hand_load.equilibrium"]["message"]
+    names = ("PLA", "PETG", "nylon")
+    assert v["hand_load_survivors"] == [n for n in names if v[f"hand_load_{n}_survives"]]
+    guide = (folder / "print_guide.md").read_text().replace("\\", "")
+    said = {n: (float(a), float(b)) for n, a, b in re.findall(r"(PLA|PETG|nylon) S_F ([\d.]+), S_H ([\d.]+)", guide)}
+    assert set(said) == set(names)
+    for n in names:
+        assert said[n][0] == pytest.approx(v[f"hand_load_{n}_S_F_min"], abs=0.005)
+        assert said[n][1] == pytest.approx(v[f"hand_load_{n}_S_H_min"], abs=0.005)
+    assert f"T1 = {v['hand_load_T1_Nm']:.3f} N·m" in guide
+    if len(v["hand_load_survivors"]) == 3:
+        assert "PLA, PETG and nylon all survive it" in guide
+    assert "static limits of flat-printed bars" in guide
+    rows = list(csv.DictReader((folder / "tables" / "hand_load.csv").open()))
+    assert [r["material"] for r in rows] == list(names)
+    assert "hand_load_PLA_S_F_min" in m["glossary"]
+
+
 def test_final_drive_scale_is_chosen_for_the_ring(kits):
     rc, folder = kits["final_drive"]
     m = _manifest(folder)

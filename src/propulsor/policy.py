@@ -328,3 +328,16 @@ TOOTH_LOAD_DENSE_CHORD_MM = 1e-5
 TOOTH_LOAD_FLANK_FIT_MODULE = 0.12
 #: a pair whose gap is more than this many times the single pair's deflection under the whole load is not listed
 TOOTH_LOAD_GAP_WINDOW_DEFLECTIONS = 4.0
+
+# --- a print kit's hand on the crank (parts/noncircular_pair/kit_load.py) ----------------------------------------
+#: the force a hand puts on the crank handle of a print kit (N, tangential; the kit's load case is this force at the
+#: handle's radius, the driven wheel held).  A stated assumption: a firm one-hand push on a small handle held
+#: between thumb and fingers, the order of the thumb-finger (tips) grip strength MIL-STD-1472D (1989) gives for
+#: control forces, 48 N (momentary hold, 5th-percentile man; FAA Human Factors Design Standard HF-STD-001, 2003,
+#: Exhibit 14.5.2.1).  A strong hand round the handle pushes several times more: the guide gives the force each
+#: printed material takes.
+KIT_HAND_FORCE_N = 50.0
+#: the kit's pair is placed at each phase from its contact law resolved every this many degrees of the driver: start
+#: values only, each phase's contact is measured anew (on the elliptical kit the safeties agree with those from the
+#: 0.05 deg law to 4 digits, in a fifth of the time)
+KIT_HAND_LOAD_CONTACT_STEP_DEG = 0.5

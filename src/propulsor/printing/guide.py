@@ -1,6 +1,7 @@
 """The maker's guide of a kit (``print_guide.md`` and ``.html``): what to print, with what settings, how
-long and how much filament, the hardware, then the assembly step by step with pictures — the side view,
-the exploded view and one picture a step — and what to change when parts are tight or loose.
+long and how much filament, which material survives a hand on the crank (where the kit rates it), the hardware,
+then the assembly step by step with pictures — the side view, the exploded view and one picture a step — and what
+to change when parts are tight or loose.
 
 Text from the part file (its title) and the kit's own names is written as text (escaped Markdown).
 """
@@ -71,6 +72,10 @@ def write_guide(kit, w, plans, items, sliced: bool, title: str) -> None:
               f"their side so that their layers run along them.", ""]
     lines += plates_lines(p, plans, sliced)
     lines += _table(["piece", "count", "what"], [[pc.name, str(pc.count), pc.what] for pc in kit.pieces])
+    if kit.material_notes:
+        lines += ["### Which material: a hand on the crank", ""] + [md_text(t) + "\n" for t in kit.material_notes]
+        if kit.material_table is not None:
+            lines += _table(*kit.material_table)
     if kit.hardware:
         lines += ["## 2. Hardware", "", "Steel pins fit the same holes as the printed ones:", ""]
         lines += [f"- {h.count} × {md_text(h.what)}" + (f" (instead of the printed `{md_text(h.instead_of)}`)"

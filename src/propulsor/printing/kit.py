@@ -74,6 +74,12 @@ class Kit:
     expected_failures: list[str] = field(default_factory=list)
     #: paragraphs of the guide's section "As printed": the printed pair within the printer's accuracy
     guide_notes: list[str] = field(default_factory=list)
+    #: paragraphs of the guide's "Which material" (what to print it in: the hand on the crank against each printed
+    #: material) and its table (head, rows) or None
+    material_notes: list[str] = field(default_factory=list)
+    material_table: tuple | None = None
+    #: tables of the kit report: (name, columns, rows), written as tables/<name>.csv
+    tables: list = field(default_factory=list)
 
 
 def plate_checks(kit: Kit, plates, flat: dict) -> list[Check]:
@@ -245,6 +251,8 @@ def write_kit(kit: Kit, w, sliced: bool = False) -> None:
         w.derived.update({"print_time_s": sum(q.time_s for q in plans),
                           "filament_sliced_g": sum(q.filament_g for q in plans)})
     w.derived.update(kit.derived)
+    for name, columns, rows in kit.tables:
+        w.add_table(name, columns, rows)
     w.expected_failures |= set(kit.expected_failures)
     w.add_checks(kit.checks)
     _report_lead(kit, w, plans, sliced)

@@ -163,4 +163,30 @@ GLOSSARY = {
     "print_backlash_t_max_mm": ("mm", "largest circumferential backlash of the printed pair"),
     "pin_driver_d_mm": ("mm", "diameter of the printed driver's pin"),
     "pin_driven_d_mm": ("mm", "diameter of the printed driven gear's pin"),
+    # the hand on the print kit's crank (kit_load.py)
+    "hand_load_force_N": ("N", "force of a firm hand on the kit's crank handle, tangential (a stated assumption: "
+                               "policy.KIT_HAND_FORCE_N)"),
+    "hand_load_crank_radius_mm": ("mm", "radius r_h of the kit's crank handle from the driver's axis, as built"),
+    "hand_load_T1_Nm": ("N·m", "driver torque T1 = F_hand·r_h of the hand on the crank (the kit's load case, the driven "
+                               "wheel held)"),
+    "hand_load_S_Fmin": ("", "root safety S_F a printed material must reach under the hand (the part file's load_S_Fmin)"),
+    "hand_load_S_Hmin": ("", "contact safety S_H a printed material must reach under the hand (the part file's "
+                             "load_S_Hmin)"),
+    "hand_load_survivors": ("", "the printed materials whose teeth survive the hand on the crank"),
+    "hand_load_root_unrated_teeth": ("", "loaded teeth whose root is not rated under the hand: ISO 6336-3's 30° "
+                                         "section is not found on their outline"),
+    "hand_load_<material>_S_F_min": ("", "least root safety σ_FE/σ_F of the printed teeth in {material} under the "
+                                         "hand, both wheels and directions"),
+    "hand_load_<material>_S_H_min": ("", "least contact safety σ_Hlim/σ_H of the printed teeth in {material} under "
+                                         "the hand"),
+    "hand_load_<material>_sigma_F_max_MPa": ("MPa", "largest root stress of the printed teeth in {material} under the "
+                                                    "hand"),
+    "hand_load_<material>_sigma_H_max_MPa": ("MPa", "largest contact stress of the printed teeth in {material} under "
+                                                    "the hand"),
+    "hand_load_<material>_root_worst": ("", "the tooth and direction of the least root safety in {material}"),
+    "hand_load_<material>_flank_worst": ("", "the tooth and direction of the least contact safety in {material}"),
+    "hand_load_<material>_force_allow_N": ("N", "hand force the printed teeth in {material} take at the required "
+                                                "safeties (estimate: root stress in proportion to the load, contact "
+                                                "stress to its square root)"),
+    "hand_load_<material>_survives": ("", "the printed teeth in {material} survive the hand on the crank"),
 }

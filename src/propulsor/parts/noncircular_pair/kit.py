@@ -6,7 +6,9 @@ The printed pair is designed anew at the print module (the law, closure and teet
 invariant; module, centre distance and face width shrink by S), with the tooth thinning set for the
 printer's normal backlash (``backlash_mm`` of the pair = the printer's; raised once by the shortfall
 when the full-cycle proof measures less), no keyways, bores for the pins with the running clearance
-and the holes' undersize.  The proof runs on the printed outlines over the whole cycle.
+and the holes' undersize.  The proof runs on the printed outlines over the whole cycle.  The hand on the crank
+(:mod:`.kit_load`): the torque a firm hand puts on the handle at its radius, rated on that printed pair for every
+printed material; the guide says which material survives it.
 """
 
 from __future__ import annotations
@@ -24,6 +26,7 @@ from ...printing.printers import Printer
 from ...printing.hardware import PRINTED_PIN_MIN_MM, STANDARD_PIN_D, Hardware, dowel, mm, standard_at_most, side_pin
 from ...printing.scale import ScaleChoice, check_printable, choose_scale, larger
 from .design import pair_design
+from .kit_load import TABLE_COLUMNS as HAND_TABLE_COLUMNS, hand_load
 from .params import NoncircularPairParams
 from .proofs import checks_common, prove
 
@@ -307,10 +310,12 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     assembly += rings_at
     prefix = "mesh" if d.method == "generated" else "sectors"
     printed_tol = _as_printed(p, kd, printer)
+    hand, hand_text = _hand_on_crank(q, kd, proof, r_h)
     checks = [Check.at_most(f"{prefix}.overlap_area", s["overlap_law_max_mm2"], 1e-6, "mm^2",
                             f"printed outlines over {s['steps']} phases of the whole cycle")]
     checks += checks_common(proof, prefix)
     checks += printed_tol[0]
+    checks += hand.checks() if hand is not None else []
     checks.append(Check.at_least(f"{prefix}.print_backlash_min", jn_min, printer.backlash_mm, "mm",
                                  f"least normal backlash of the printed teeth over the cycle (circumferential "
                                  f"{s['backlash_min_mm']:.4f} mm × cos α); designed j_n = {j_n:.4f} mm"))
@@ -332,7 +337,8 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
                     ["driven"], [r.label for r in rings_at if r.label.startswith("cap")], []],
         derived={"print_module_mm": d.m, "print_center_distance_mm": L, "print_face_width_mm": w,
                  "print_backlash_n_design_mm": j_n, "print_backlash_n_min_mm": jn_min,
-                 "print_backlash_t_max_mm": s["backlash_max_mm"], "pin_driver_d_mm": pin[0], "pin_driven_d_mm": pin[1]},
+                 "print_backlash_t_max_mm": s["backlash_max_mm"], "pin_driver_d_mm": pin[0], "pin_driven_d_mm": pin[1],
+                 **(hand.derived() if hand is not None else {})},
         allowances=[("gear backlash (normal)", j_n, "teeth thinned by j_n / (2 cos α) each, axes at the design L"),
                     ("running clearance", clear, f"bores ⌀{bores[0]:.2f} / ⌀{bores[1]:.2f} on pins ⌀{pin[0]:g} / ⌀{pin[1]:g}"),
                     ("press fit", press, "pins and handle interference (radial)"),
@@ -351,10 +357,28 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
                f"{n} turns bring the driven wheel once round, its speed varying as the walking law asks."],
         expected_failures=_documented_jam(source, prefix),
         guide_notes=printed_tol[1],
-        notes=[] if not _documented_jam(source, prefix) else [
+        material_notes=hand_text, material_table=hand.guide_table() if hand is not None else None,
+        tables=[("hand_load", HAND_TABLE_COLUMNS, hand.table_rows())] if hand is not None else [],
+        notes=([] if not _documented_jam(source, prefix) else [
             "The part file documents that the papers' sector teeth jam (its [meta] expected_failures); the kit "
             "prints those teeth at print scale with the printer's backlash, and they still overlap: printed, the "
             "pair shows the jam the generated teeth (ncg_seed000.toml / ncg_seed002.toml) remove."])
+        + ([hand.note()] if hand is not None else hand_text))
+
+
+def _hand_on_crank(q: NoncircularPairParams, kd, proof, r_h: float):
+    """(HandLoad or None, the guide's paragraphs): the torque a hand puts on the crank, rated on the printed pair
+    for every printed material (:mod:`.kit_load`); not rated for the papers' sector teeth (no tooth record) nor a
+    pair the proof finds jammed (no running position to load)."""
+    import numpy as np
+
+    if kd.d.method != "generated":
+        return None, ["The hand on the crank is not rated: the papers' sector teeth have no tooth record for the load "
+                      "per tooth (the generated teeth have)."]
+    if proof.jams or not np.all(np.isfinite(proof.phi_drive)):
+        return None, ["The hand on the crank is not rated: the printed pair jams (no running position to load)."]
+    hand = hand_load(q, kd, r_h)
+    return hand, hand.guide_lines()
 
 
 def _base_profile(L: float, R: float, holes_d) -> Profile:

@@ -22,7 +22,7 @@ import numpy as np
 from ... import policy
 from ...check import Check
 
-__all__ = ["ToothLoad", "analyse", "tooth_load_values", "FACTOR_SOURCES", "PHASE_COLUMNS", "PEAK_COLUMNS"]
+__all__ = ["ToothLoad", "analyse", "summary", "equilibrium", "tooth_load_values", "FACTOR_SOURCES", "PHASE_COLUMNS", "PEAK_COLUMNS"]
 
 #: every factor of the report's factor table with its source
 FACTOR_SOURCES = {
@@ -143,10 +143,12 @@ def _loads(p, d, phi):
                    rolling_resistance=p.load_rolling_resistance, propulsors=p.load_propulsors, dX01_dphi=dX)
 
 
-def analyse(d, mount: float, p, c_phi, c_te, phi0: float, span: float, step_deg: float | None = None) -> ToothLoad:
+def analyse(d, mount: float, p, c_phi, c_te, phi0: float, span: float, step_deg: float | None = None,
+            direction: int = 1) -> ToothLoad:
     """The load per tooth over the law phases phi0 .. phi0 + span of design ``d`` mounted at ``mount`` under the part
-    file's load case; ``c_phi``, ``c_te``: the drive direction's resolved contact (as-built driven offset te at the
-    law phases c_phi) the driven wheel is placed by."""
+    file's load case; ``c_phi``, ``c_te``: the resolved contact of ``direction`` (as-built driven offset te at the
+    law phases c_phi; ``checks.motion.contact_events.DRIVE`` = 1, the driver turning counter-clockwise, or REVERSE =
+    -1: the other flanks loaded) the driven wheel is placed by."""
     from ...checks.motion.contact_events import _phi_of_theta
     from ...checks.motion.mesh_load import phase_contacts
     from ...gears.gear_materials import material
@@ -199,7 +201,7 @@ def analyse(d, mount: float, p, c_phi, c_te, phi0: float, span: float, step_deg:
         if theta is None:
             theta = float(th(np.array([phi]))[0])
         te0 = float(np.interp(phi, cp, c_te_ok))
-        te, cs = phase_contacts(pair, phi, theta, te0, window)
+        te, cs = phase_contacts(pair, phi, theta, te0, window, direction)
         T1, T2 = float(np.interp(phi, tab, T1t)), float(np.interp(phi, tab, T2t))
         if not cs:
             return dict(phi=phi, theta=theta, te=math.nan, cs=[], F=np.zeros(0), T1=T1, T2=T2)
@@ -366,7 +368,6 @@ def summary(tl: ToothLoad, p) -> dict:
 def checks(tl: ToothLoad, vals: dict, p) -> list[Check]:
     mat = tl.material
     static = " (static limits of a printed material, not a fatigue rating)" if mat.static else ""
-    missing = [f"{g} {j}" for g in ("driver", "driven") for j, s in tl.sections[g].items() if not s.ok]
     out = [
         Check.at_least("tooth_load.S_H", vals["tooth_load_S_H_min"], p.load_S_Hmin, "",
                        f"least contact safety sigma_Hlim Z_NT / sigma_H over every tooth: driver "
@@ -383,13 +384,20 @@ def checks(tl: ToothLoad, vals: dict, p) -> list[Check]:
                        f"{vals['tooth_load_driven_S_F_min']:.3f} (tooth {vals['tooth_load_driven_sigma_F_worst_tooth']}, "
                        f"sigma_F {vals['tooth_load_driven_sigma_F_max_MPa']:.1f} MPa); {p.gear_material} sigma_FE = "
                        f"{mat.sigma_FE_MPa:g} MPa{static}"),
-        Check("tooth_load.equilibrium", tl.lost == 0 and not missing and tl.imbalance <= 1e-9,
-              max(tl.imbalance, float(tl.lost + len(missing))), 1e-9, "",
-              f"{tl.lost} of {len(tl.theta)} phases without a loaded pair; {len(missing)} teeth without a 30 deg "
-              f"section" + (f" ({', '.join(missing)})" if missing else "") + f"; largest |sum F l1 - T1| / T1 "
-              f"{tl.imbalance:.2e}"),
+        equilibrium(tl),
     ]
     return out
+
+
+def equilibrium(tl: ToothLoad, name: str = "tooth_load.equilibrium", what: str = "") -> Check:
+    """The analysis is whole: a loaded pair at every phase, every loaded tooth's 30 deg section found, and the pairs'
+    forces balance the driver torque (Σ F·l1 = T1); ``what`` opens the message (the load case it is of)."""
+    missing = [f"{g} {j}" for g in ("driver", "driven") for j, s in tl.sections[g].items() if not s.ok]
+    return Check(name, tl.lost == 0 and not missing and tl.imbalance <= 1e-9,
+                 max(tl.imbalance, float(tl.lost + len(missing))), 1e-9, "",
+                 what + f"{tl.lost} of {len(tl.theta)} phases without a loaded pair; {len(missing)} teeth without a "
+                 f"30 deg section" + (f" ({', '.join(missing)})" if missing else "") + f"; largest |sum F l1 - T1| / "
+                 f"T1 {tl.imbalance:.2e}")
 
 
 def _plot(w, tl: ToothLoad, p) -> None:
