@@ -116,7 +116,7 @@ list: $(STAMP)
 
 # the layer contracts first (import-linter, [tool.importlinter] in pyproject.toml), then the tests
 test: $(STAMP)
-	$(BIN)/lint-imports --config pyproject.toml
+	$(BIN)/lint-imports pyproject.toml
 	$(BIN)/python -m pytest -q -n $(PYTEST_WORKERS) --dist loadfile -m "not sweep" tests
 
 # the API reference from the docstrings (pdoc), warnings as errors

@@ -111,9 +111,8 @@ class EllipticalLaw(_PeriodicLaw):
             q = (1 - e * e) / 2
         else:
             q = (-1 + math.sqrt(1 + (k * k - 1) * (1 - e * e))) / (k * k - 1)
-        if not 1 - q - e > 0:
-            raise InputError("eccentricity", self.e, f"with {k} lobes the driven wheel's radius L - r1 reaches 0 "
-                             f"(q = p/L = {q:.4f} >= 1 - e)")
+        # the driven wheel's radius at the driver's far vertex, L (1 - q - e), stays > 0 for every k: q = (1 - e^2) /
+        # (1 + sqrt(1 + (k^2 - 1)(1 - e^2))) <= (1 - e^2) / 2, so 1 - q - e >= (1 - e)^2 / 2 > 0
         object.__setattr__(self, "q", q)
         object.__setattr__(self, "_alpha", 1 - q)
         object.__setattr__(self, "_c", math.sqrt((1 - q - e) / (1 - q + e)))

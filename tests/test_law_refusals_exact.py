@@ -1,0 +1,166 @@
+"""Every refusal of a law table, a pitch curve and an elliptical law with the whole of its answer (parameter, value,
+limit), and the tables that are taken at their edges.  The cases `make mutation MODULE=laws` found no test for
+(mutation/README.md)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from propulsor.errors import InputError
+from propulsor.laws.pitch_curve_law import PitchCurveLaw, parse_pitch_curve, read_pitch_curve
+from propulsor.laws.ratio_laws import E_MAX, EllipticalLaw
+from propulsor.laws.table_law import (ANGLE_MAX_DEG, FIELD_MAX_CHARS, MAX_BYTES, parse_law_table, read_law_table,
+                                      read_table_text, row_numbers, table_rows)
+
+
+def _err(fn, *a, **kw):
+    with pytest.raises(InputError) as e:
+        fn(*a, **kw)
+    return e.value.parameter, e.value.value, e.value.limit
+
+
+HEAD = "driver_deg,driven_deg\n"
+
+
+@pytest.mark.parametrize("text, want", [
+    ("", ("law_file", "(empty)", "a table needs the header driver_deg,driven_deg and its rows")),
+    ("\n , \n", ("law_file", "(empty)", "a table needs the header driver_deg,driven_deg and its rows")),
+    ("a,b\n1,2\n", ("law_file", "(its first line)", "the header must be driver_deg,driven_deg: not a table of this "
+                                                    "kind")),
+    (HEAD + "1,2,3\n", ("law_file row 1", "1,2,3", "two columns: driver_deg,driven_deg")),
+    (HEAD + "0,0\n1\n", ("law_file row 2", "1", "two columns: driver_deg,driven_deg")),
+    (HEAD + "0,0\nx,1\n", ("law_file row 2 driver_deg", "x", "must be a number")),
+    (HEAD + "0,0\n1, y \n", ("law_file row 2 driven_deg", "y", "must be a number")),
+    (HEAD + f"0,0\n{ANGLE_MAX_DEG * 1.5:g},1\n", ("law_file row 2 driver_deg", 150000.0, "an angle within ±100000 deg")),
+    (HEAD + f"0,0\n1,{-ANGLE_MAX_DEG * 1.5:g}\n", ("law_file row 2 driven_deg", -150000.0,
+                                                   "an angle within ±100000 deg")),
+])
+def test_each_refusal_of_a_law_tables_text(text, want):
+    got = _err(parse_law_table, text)
+    assert got[:2] == want[:2] and got[2].startswith(want[2]), got
+
+
+def test_header_with_spaces_and_blank_rows_is_a_table():
+    th, ph = parse_law_table(" driver_deg , driven_deg \n\n0,0\n ,\n 10.5 ,2.5\n")
+    assert (th, ph) == ((0.0, 10.5), (0.0, 2.5))
+    assert row_numbers("k", 3, [str(ANGLE_MAX_DEG), "-1"], ("driver_deg", "driven_deg")) == (ANGLE_MAX_DEG, -1.0)
+
+
+def test_too_many_rows_and_too_long_a_field():
+    assert _err(table_rows, HEAD + "0,0\n" * 4, "k", ("driver_deg", "driven_deg"), 3) == (
+        "k", "more than 3 rows", "at most 3 rows")
+    assert len(table_rows(HEAD + "0,0\n" * 3, "k", ("driver_deg", "driven_deg"), 3)) == 3
+    p, v, limit = _err(table_rows, HEAD + "0," + "1" * (FIELD_MAX_CHARS + 1) + "\n", "k",
+                       ("driver_deg", "driven_deg"), 10)
+    assert (p, v) == ("k", "row 2") and limit.startswith("is not a CSV table driver_deg,driven_deg (field larger")
+
+
+def test_a_table_file_that_cannot_be_read(tmp_path):
+    f = tmp_path / "law.csv"
+    f.write_bytes(b"\xef\xbb\xbf" + (HEAD + "0,0\n").encode())  # a BOM is read past
+    assert read_table_text(f, "law_file", "a law table").startswith("driver_deg")
+    f.write_bytes(b"driver_deg,driven_deg\n\xff,0\n")
+    assert _err(read_law_table, f) == ("law_file", str(f), "must be UTF-8 text")
+    assert _err(read_law_table, tmp_path / "none.csv", "k")[:2] == ("k", str(tmp_path / "none.csv"))
+    assert _err(read_law_table, tmp_path / "none.csv", "k")[2].startswith("cannot be read: ")
+    f.write_bytes(b"#" * (MAX_BYTES + 1))
+    p, v, limit = _err(read_law_table, f)
+    assert (p, v) == ("law_file", str(f)) and limit.endswith(f"; a law table is a CSV file of at most {MAX_BYTES} "
+                                                             "bytes")
+
+
+# ---- pitch curves --------------------------------------------------------------------------------------------
+
+def _ellipse_rows(n=16, e=0.2, p=40.0, closed=False):
+    a = np.linspace(0.0, 360.0, n + (1 if closed else 0), endpoint=closed)
+    return [float(x) for x in a], [float(y) for y in p / (1 + e * np.cos(np.radians(a)))]
+
+
+@pytest.mark.parametrize("change, want", [
+    (lambda a, r: (a[:7], r[:7]), ("pitch_curve_file", "7 rows", "a pitch curve needs at least 8 rows over one turn")),
+    (lambda a, r: (a, r[:3] + [0.0] + r[4:]), ("pitch_curve_file row 4 radius_mm", 0.0,
+                                              "the pitch curve must not reach or cross the axis: radius > 0 mm")),
+    (lambda a, r: (a[:3] + [a[2]] + a[4:], r), ("pitch_curve_file row 4 angle_deg", 45.0,
+                                               "must be strictly increasing (row 3: 45) by more than 3.6e-07 deg")),
+    (lambda a, r: (a[:-1] + [361.0], r), ("pitch_curve_file row 16 angle_deg", 361.0,
+                                         "the rows span one turn: angles up to 360 deg (that row only to close the "
+                                         "curve, with the first row's radius)")),
+    (lambda a, r: (a + [360.0], r + [r[0] * 1.01]), ("pitch_curve_file row 17 angle_deg", 360.0,
+                                                     "the rows span one turn: angles up to 360 deg (that row only to "
+                                                     "close the curve, with the first row's radius)")),
+])
+def test_each_refusal_of_a_pitch_curve(change, want):
+    a, r = change(*_ellipse_rows())
+    assert _err(PitchCurveLaw, a, r, 1) == want
+
+
+@pytest.mark.parametrize("k", [0, 13, 1.5])
+def test_lobes_of_a_pitch_curve(k):
+    a, r = _ellipse_rows()
+    assert _err(PitchCurveLaw, a, r, k) == ("driver_turns", k, "lobes of the driven wheel must be a whole number "
+                                                               "1 .. 12")
+
+
+def test_a_pitch_curve_of_exactly_its_least_rows_and_closed_or_open():
+    a, r = _ellipse_rows(8)
+    law = PitchCurveLaw(a, r, 1)
+    assert law.rows == 9 and law.first_angle == 0.0  # the rows and the one that closes the curve
+    ac, rc = _ellipse_rows(8, closed=True)
+    closed = PitchCurveLaw(ac, rc, 1)
+    assert closed.L0 == law.L0
+    phi = np.linspace(-2.0, 2.0, 9)
+    np.testing.assert_array_equal(closed.U(phi), law.U(phi))
+    # the first row's angle is the curve's start: turned rows, the same curve turned
+    shifted = PitchCurveLaw([x + 30.0 for x in a], r, 1)
+    assert shifted.first_angle == pytest.approx(math.radians(30.0))
+    assert shifted.L0 == pytest.approx(law.L0, rel=1e-12)
+
+
+def test_a_pitch_curve_file(tmp_path):
+    a, r = _ellipse_rows(8)
+    f = tmp_path / "curve.csv"
+    f.write_text("angle_deg,radius_mm\n" + "".join(f"{x!r},{y!r}\n" for x, y in zip(a, r)), encoding="utf-8")
+    assert read_pitch_curve(f) == (tuple(a), tuple(r))
+    assert parse_pitch_curve(f.read_text()) == (tuple(a), tuple(r))
+    assert _err(parse_pitch_curve, "angle_deg,radius_mm\n0,x\n") == (
+        "pitch_curve_file row 1 radius_mm", "x", "must be a number in plain digits (0-9, '.', an exponent e±NNN)")
+    assert _err(parse_pitch_curve, "driver_deg,driven_deg\n0,1\n") == (
+        "pitch_curve_file", "(its first line)", "the header must be angle_deg,radius_mm: not a table of this kind")
+    assert _err(read_pitch_curve, tmp_path / "none.csv")[:2] == ("pitch_curve_file", str(tmp_path / "none.csv"))
+
+
+# ---- elliptical law ------------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("e, k, want", [
+    (-0.1, 1, ("eccentricity", -0.1, "an ellipse has 0 <= e < 1")),
+    (1.0, 1, ("eccentricity", 1.0, "an ellipse has 0 <= e < 1")),
+    (E_MAX + 1e-9, 1, ("eccentricity", E_MAX + 1e-9, f"must be <= {E_MAX}: the driven wheel's radius L - r1 nearly "
+                                                     "vanishes at the driver's far vertex")),
+    (0.3, 0, ("driver_turns", 0, "lobes of the driven wheel must be a whole number 1 .. 12")),
+    (0.3, 2.5, ("driver_turns", 2.5, "lobes of the driven wheel must be a whole number 1 .. 12")),
+    (math.nan, 1, ("eccentricity", math.nan, "must be a finite number")),
+])
+def test_each_refusal_of_an_ellipse(e, k, want):
+    got = _err(EllipticalLaw, e, k)
+    assert got[0] == want[0] and got[2] == want[2]
+    assert got[1] == want[1] or (isinstance(want[1], float) and math.isnan(want[1]) and math.isnan(got[1]))
+
+
+@pytest.mark.parametrize("k", range(1, 13))
+def test_every_ellipse_keeps_the_driven_radius_at_the_far_vertex(k):
+    """L (1 - q - e) > 0 for every lobe count up to the largest eccentricity: (1 - e)^2 / 2 at least."""
+    law = EllipticalLaw(E_MAX, k)
+    assert 1 - law.q - E_MAX >= (1 - E_MAX) ** 2 / 2 - 1e-15
+
+
+def test_the_largest_ellipse_and_its_fields():
+    law = EllipticalLaw(E_MAX, 1)
+    assert (law.e, law.k, law.n, law.periods) == (E_MAX, 1, 1, 1)
+    assert law.q == pytest.approx((1 - E_MAX ** 2) / 2)
+    law2 = EllipticalLaw(0.5, 2.0)
+    assert law2.k == 2 and isinstance(law2.k, int)
+    assert law2.period == pytest.approx(math.pi) and law2.period_start == pytest.approx(-math.pi / 2)
+    assert law2.breakpoints == pytest.approx((-math.pi / 2, math.pi / 2))
