@@ -27,7 +27,7 @@ def built():
     """(kit, the kit's parameters q, its printed design kd): the kit made as `propulsor print` makes it, its printed
     pair caught where the kit designs it."""
     import propulsor.parts.noncircular_pair.kit as ncg
-    from propulsor.cli import load_part
+    from propulsor.building import load_part
     from propulsor.printing.printers import load_printer
 
     _, p, _ = load_part(PART)

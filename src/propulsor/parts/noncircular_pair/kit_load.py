@@ -1,7 +1,6 @@
 """The load case of a non-circular pair's print kit: the torque a hand puts on the kit's crank, rated on the printed
-pair for every printed material of the catalogue, and the verdict the maker's guide gives (issue 37, "Safety and
-life": "for a print kit: the torque a hand can put on the crank is the load case, and the guide says which material
-survives it").
+pair for every printed material of the catalogue, and the verdict the maker's guide gives (for a print kit the
+torque a hand can put on the crank is the load case, and the guide says which material survives it).
 
 Load case: the hand's force F_hand (``policy.KIT_HAND_FORCE_N``, a stated assumption with its ergonomics source)
 tangential at the radius r_h of the crank handle as the kit builds it (:func:`.kit.rig_sizes`), the driven wheel
@@ -231,8 +230,8 @@ class HandLoad:
     def note(self) -> str:
         """The report's note: the load case, the model and every material's numbers."""
         tl = self.ratings[0].analyses[0][1]
-        return (f"The hand on the crank (parts/noncircular_pair/kit_load.py; issue 37: for a print kit the torque a "
-                f"hand can put on the crank is the load case): F_hand = {self.force_N:g} N (a stated assumption: a firm "
+        return (f"The hand on the crank (parts/noncircular_pair/kit_load.py: for a print kit the torque a hand can "
+                f"put on the crank is the load case): F_hand = {self.force_N:g} N (a stated assumption: a firm "
                 f"one-hand push on a small handle, of the order of MIL-STD-1472D's thumb-finger grip of 48 N, "
                 f"policy.KIT_HAND_FORCE_N) tangential at the handle's radius r_h = {self.r_h_mm:.3f} mm, the driven "
                 f"wheel held: T1 = F_hand·r_h = {self.T1_Nm:.4f} N·m; {self.load_case}.  Rated on the printed pair "
