@@ -164,3 +164,113 @@ def test_the_largest_ellipse_and_its_fields():
     assert law2.k == 2 and isinstance(law2.k, int)
     assert law2.period == pytest.approx(math.pi) and law2.period_start == pytest.approx(-math.pi / 2)
     assert law2.breakpoints == pytest.approx((-math.pi / 2, math.pi / 2))
+
+
+# ---- a law table's rows as a law (TableLaw) ---------------------------------------------------------------------
+
+from propulsor.laws.table_law import MIN_ROWS, PIECES, TableLaw  # noqa: E402
+
+
+def _rows(n=13, span_ph=90.0, turns=1.0, wobble=0.02):
+    """n rows of one period: driven 0 .. span_ph, driver 0 .. 360 turns span_ph / 90 ... a smooth ratio."""
+    ph = np.linspace(0.0, span_ph, n)
+    th = ph * (360.0 * turns / span_ph) + np.degrees(wobble * np.sin(2 * np.pi * ph / span_ph))
+    return [float(x) for x in th], [float(y) for y in ph]
+
+
+def test_each_refusal_of_a_law_tables_rows_in_full():
+    th, ph = _rows()
+    assert _err(TableLaw, tuple(th[:6]), tuple(ph[:6])) == ("law_file", "6 rows",
+                                                            f"a law table needs at least {MIN_ROWS} rows over one period")
+    assert _err(TableLaw, tuple(th), tuple(ph[:-1]), "k") == ("k", "13 rows",
+                                                              f"a law table needs at least {MIN_ROWS} rows over one period")
+    bad = th[:4] + [th[2]] + th[5:]
+    assert _err(TableLaw, tuple(bad), tuple(ph)) == (
+        "law_file row 5 driver_deg", th[2], f"must be strictly increasing (row 4: {th[3]:g}): the ratio must stay > 0")
+    close = ph[:4] + [ph[3] + 1e-9] + ph[5:]
+    assert _err(TableLaw, tuple(th), tuple(close)) == (
+        "law_file row 5 driven_deg", ph[3] + 1e-9,
+        f"must be strictly increasing (row 4: {ph[3]:g}) by more than {1e-9 * 90:.3g} deg: the ratio must stay > 0")
+    assert _err(TableLaw, tuple(th), tuple(ph[:-1] + [100.0])) == (
+        "law_file row 13 driven_deg", 100.0, "the last row closes the period: the driven span 100 deg must divide "
+                                             "360 deg")
+    assert _err(TableLaw, tuple(th[:-1] + [350.0]), tuple(ph)) == (
+        "law_file row 13 driver_deg", 350.0, "over 4 periods of 90 deg the driver must make whole turns, not 3.88889")
+    th3, ph3 = _rows(span_ph=120.0, turns=2 / 3)  # 3 periods, 2 driver turns: 2 does not divide 3
+    assert _err(TableLaw, tuple(th3), tuple(ph3)) == (
+        "law_file row 13 driver_deg", 240.0, "2 driver turns per driven turn must divide the 3 periods (the driver "
+                                             "curve closes)")
+
+
+def test_a_law_table_that_is_just_taken():
+    th, ph = _rows(n=MIN_ROWS)
+    law = TableLaw(tuple(th), tuple(ph))
+    assert (law.n, law.periods) == (4, 4) and law.period == pytest.approx(math.pi / 2)
+    # the driven span off the period by less than the closing tolerance is the period
+    ph2 = ph[:-1] + [90.0 + 2e-7]
+    law2 = TableLaw(tuple(th), tuple(ph2))
+    assert law2.period == pytest.approx(math.pi / 2, abs=1e-15)
+    # the breakpoints: every row, at most PIECES + 1 of them, the period's ends included
+    assert law.breakpoints == pytest.approx(tuple(np.radians(ph)))
+    big = TableLaw(*map(tuple, _rows(n=4 * PIECES + 1)))
+    assert len(big.breakpoints) == PIECES + 1 and big.breakpoints[0] == 0.0
+    assert big.breakpoints[-1] == pytest.approx(math.pi / 2)
+    # the law wraps: theta(phi + P) = theta(phi) + 2 pi n / periods, also far out and below 0
+    phi = np.array([-10.0, -0.3, 0.2, 7.5, 40.0])
+    np.testing.assert_allclose(big.theta(phi + big.period) - big.theta(phi), 2 * math.pi, atol=1e-12)
+    np.testing.assert_allclose(big.phi_of_theta(big.theta(phi)), phi, atol=1e-10)
+
+
+def test_a_two_turn_table():
+    th, ph = _rows(span_ph=180.0, turns=0.5)  # 2 periods of 180 deg, half a driver turn each: n = 1
+    law = TableLaw(tuple(th), tuple(ph))
+    assert (law.n, law.periods) == (1, 2)
+    np.testing.assert_allclose(law.theta(np.array([2 * math.pi])), 2 * math.pi, atol=1e-12)
+
+
+def test_a_law_table_file_names_its_key_in_a_row_refusal(tmp_path):
+    f = tmp_path / "law.csv"
+    f.write_text("driver_deg,driven_deg\n0,x\n", encoding="utf-8")
+    assert _err(read_law_table, f, "my_key")[0] == "my_key row 1 driven_deg"
+
+
+# ---- the law interface (laws/law.py) ---------------------------------------------------------------------------
+
+from propulsor.laws.law import is_walking, require_law  # noqa: E402
+
+
+class _Fake:
+    kind = "fake"
+    period_start = 0.0
+    breakpoints = (0.0, 1.0)
+    corner_phis = ()
+    scalar_path = False
+
+    def __init__(self, n, periods, period):
+        self.n, self.periods, self.period = n, periods, period
+
+    def U(self, phi): ...
+    def dU_dphi(self, phi): ...
+    def d2U_dphi2(self, phi): ...
+    def theta(self, phi): ...
+    def phi_of_theta(self, theta): ...
+    def U_derivs1(self, phi): ...
+    def theta1(self, phi): ...
+
+
+def test_require_law_in_full():
+    assert _err(require_law, object()) == ("law", "object", "must be a drive law (laws.law.Law: U, theta, period, n)")
+    assert _err(require_law, _Fake(2, 3, 2 * math.pi / 3)) == (
+        "n", 2, "the driver pitch curve repeats every n periods of the law and closes only if n divides its 3 periods "
+                "per driven turn")
+    assert _err(require_law, _Fake(1, 0, 1.0))[0] == "n"
+    assert _err(require_law, _Fake(2, 4, math.pi / 2 + 1e-9)) == (
+        "period", math.pi / 2 + 1e-9, "4 periods must make one driven turn (2 pi)")
+    require_law(_Fake(2, 4, math.pi / 2))
+
+
+def test_is_walking():
+    from propulsor.laws.walking import WalkingLaw
+
+    assert is_walking(WalkingLaw(100.0, 50.0, 236.5, 4))
+    assert not is_walking(EllipticalLaw(0.3)) and not is_walking(object()) and not is_walking(_Fake(1, 1, 1.0))
