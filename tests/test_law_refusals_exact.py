@@ -274,3 +274,35 @@ def test_is_walking():
 
     assert is_walking(WalkingLaw(100.0, 50.0, 236.5, 4))
     assert not is_walking(EllipticalLaw(0.3)) and not is_walking(object()) and not is_walking(_Fake(1, 1, 1.0))
+
+
+def test_pitch_curve_rows_at_their_edges():
+    a, r = _ellipse_rows(8)
+    # a radius past the largest a wheel has
+    text = "angle_deg,radius_mm\n" + "".join(f"{x!r},{y!r}\n" for x, y in zip(a, r[:2] + [2e4] + r[3:]))
+    assert _err(parse_pitch_curve, text) == ("pitch_curve_file row 3 radius_mm", 20000.0,
+                                             "a radius of at most 10000 mm")
+    # a tiny curve (radii under 1 mm) is a curve
+    tiny = PitchCurveLaw(a, [y / 50.0 for y in r], 1)
+    assert tiny.L0 == pytest.approx(PitchCurveLaw(a, r, 1).L0 / 50.0, rel=1e-9)
+    # rows 3.605e-7 deg apart are two rows (the curve's spline then swings between them: the conjugate wheel is
+    # refused, naming no row); 3e-7 apart, one (the row is named)
+    a2 = a[:3] + [a[2] + 3.605e-7] + a[4:]
+    assert _err(PitchCurveLaw, a2, r, 1) == (
+        "pitch_curve_file", "9 rows", "the conjugate wheel's angles would not increase (between the curve's rows): a "
+                                      "smoother curve, or rows where its radius turns fastest")
+    assert _err(PitchCurveLaw, a[:3] + [a[2] + 3e-7] + a[4:], r, 1)[0] == "pitch_curve_file row 4 angle_deg"
+    # a closing row's radius must be the first row's to 1e-9 of it
+    closed_a = a + [a[0] + 360.0]
+    PitchCurveLaw(closed_a, r + [r[0] * (1 + 0.5e-9)], 1)
+    assert _err(PitchCurveLaw, closed_a, r + [r[0] * (1 + 2e-9)], 1)[0] == "pitch_curve_file row 9 angle_deg"
+
+
+def test_a_pitch_curve_starting_elsewhere_closed_or_open():
+    a, r = _ellipse_rows(12)
+    a30 = [x + 30.0 for x in a]
+    open_ = PitchCurveLaw(a30, r, 1)
+    closed = PitchCurveLaw(a30 + [390.0], r + [r[0]], 1)
+    phi = np.linspace(-2.0, 2.0, 9)
+    np.testing.assert_allclose(closed.U(phi), open_.U(phi), rtol=1e-12)
+    assert closed.L0 == pytest.approx(open_.L0, rel=1e-12) and closed.first_angle == pytest.approx(math.radians(30))

@@ -118,7 +118,8 @@ class PitchCurveLaw(TableLaw):
         except InputError as exc:  # about the law's own samples, not a row of the file: no row named
             if not exc.parameter.startswith(f"{key} row"):
                 raise
-            why = exc.limit.split(":")[0].replace("the spline through the rows", "the law of the conjugate wheel")
+            why = ("the conjugate wheel's angles would not increase" if "strictly increasing" in exc.limit
+                   else exc.limit.split(":")[0].replace("the spline through the rows", "the law of the conjugate wheel"))
             raise InputError(key, f"{rows} rows", f"{why} (between the curve's rows): a smoother curve, or rows "
                              "where its radius turns fastest") from None
 
