@@ -30,6 +30,7 @@ from typing import Any
 
 import numpy as np
 
+from .building import ProofResult as Proof  # what the design and the full-cycle proofs gave
 from .building import as_path
 from .errors import CheckFailed, InputError
 
@@ -90,16 +91,6 @@ class Build:
         """The in-memory side of the build service's result (``building.BuildResult``)."""
         return cls(tuple(result.failures), tuple(result.checks), dict(result.derived), dict(result.solids),
                    dict(result.profiles), dict(result.assemblies))
-
-
-@dataclasses.dataclass(frozen=True)
-class Proof:
-    """What the design and the full-cycle proofs of a part gave, without its solids or files (in memory)."""
-
-    failures: tuple[str, ...]  # unexpected failed checks, "name: message"
-    checks: tuple  # the Checks of the design and the proofs, in the build's order
-    derived: dict  # their derived values (the same values the build's manifest gives them)
-    whole_build: bool  # True where the part type declares no proof steps: this is its whole build's
 
 
 class Part:

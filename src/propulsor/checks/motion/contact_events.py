@@ -116,10 +116,10 @@ class PairOutlines:
         c = np.clip((L * L + rr * rr - (R_mate + 1.0) ** 2) / (2 * L * rr), -1.0, 1.0)
         return float(np.max(np.arccos(c))) + 0.02
 
-    def _hits(self, phi_a: float, theta: float, sign: float, w: float):
-        """First entering hit when the driven wheel, at actual angle phi_a, turns by sign (+1: back, the
-        drive flanks) through at most w rad: (delta, side, vertex, edge, t); side 1: a driven vertex on a driver
-        edge, side 2: a driver vertex on a driven edge."""
+    def _all_hits(self, phi_a: float, theta: float, sign: float, w: float):
+        """Every hit within w when the driven wheel, at actual angle phi_a, turns by sign (+1: back, the drive
+        flanks): (i1, d1, e1, t1) of the driven vertices on driver edges and (i2, d2, e2, t2) of the driver
+        vertices on driven edges (vertex, turn to the hit, edge, place on the edge; inf where none)."""
         L = self.L
         i1 = _window(self.o1, self.a1, phi_a, self.hw_dvn + w)
         i2 = _window(self.o2, self.a2, math.pi - theta, self.hw_drv + w)
@@ -137,6 +137,13 @@ class PairOutlines:
         rho2 = row_norms(P2)
         d1, e1, t1 = _rot_hits(P1, C1, self.drv, sign, w, rho1, self.drv.boundary_lower_bound(P1))
         d2, e2, t2 = _rot_hits(P2, np.zeros(2), self.dvn, -sign, w, rho2, self.dvn.boundary_lower_bound(P2))
+        return (i1, d1, e1, t1), (i2, d2, e2, t2)
+
+    def _hits(self, phi_a: float, theta: float, sign: float, w: float):
+        """First entering hit when the driven wheel, at actual angle phi_a, turns by sign (+1: back, the
+        drive flanks) through at most w rad: (delta, side, vertex, edge, t); side 1: a driven vertex on a driver
+        edge, side 2: a driver vertex on a driven edge."""
+        (i1, d1, e1, t1), (i2, d2, e2, t2) = self._all_hits(phi_a, theta, sign, w)
         k1 = int(np.argmin(d1)) if len(d1) else -1
         k2 = int(np.argmin(d2)) if len(d2) else -1
         m1 = d1[k1] if k1 >= 0 else math.inf

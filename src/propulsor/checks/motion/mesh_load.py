@@ -20,9 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ... import policy
-from .backlash import _rot_hits
-from .contact_events import DRIVE, PairOutlines, _rot, _window
-from .outlines import row_norms
+from .contact_events import DRIVE, PairOutlines, _rot
 
 __all__ = ["PairContact", "phase_contacts"]
 
@@ -48,18 +46,7 @@ def _all_hits(pair: PairOutlines, phi_a: float, theta: float, sign: float, w: fl
     """Every entering hit within w of the driven wheel turning from phi_a: (delta, side, vertex, edge, t) arrays
     (side 1: a driven vertex on a driver edge, 2: a driver vertex on a driven edge); :meth:`PairOutlines._hits`
     without the reduction to the first."""
-    L = pair.L
-    i1 = _window(pair.o1, pair.a1, phi_a, pair.hw_dvn + w)
-    i2 = _window(pair.o2, pair.a2, math.pi - theta, pair.hw_drv + w)
-    R_th, R_ph = _rot(-theta), _rot(-phi_a)
-    P1 = ((pair.dvn.points[i1] @ R_ph.T) - (L, 0.0)) @ R_th.T
-    C1 = np.array([-L, 0.0]) @ R_th.T
-    P2 = ((pair.drv.points[i2] @ _rot(theta).T) + (L, 0.0)) @ _rot(phi_a).T
-    near1 = row_norms(P1) <= pair.R1 + w * pair.R2 + 1e-6
-    near2 = row_norms(P2) <= pair.R2 + 1e-6
-    i1, P1, i2, P2 = i1[near1], P1[near1], i2[near2], P2[near2]
-    d1, e1, t1 = _rot_hits(P1, C1, pair.drv, sign, w, row_norms(P1 - C1), pair.drv.boundary_lower_bound(P1))
-    d2, e2, t2 = _rot_hits(P2, np.zeros(2), pair.dvn, -sign, w, row_norms(P2), pair.dvn.boundary_lower_bound(P2))
+    (i1, d1, e1, t1), (i2, d2, e2, t2) = pair._all_hits(phi_a, theta, sign, w)
     k1, k2 = np.isfinite(d1), np.isfinite(d2)
     return (np.concatenate([d1[k1], d2[k2]]), np.concatenate([np.ones(k1.sum(), int), np.full(k2.sum(), 2)]),
             np.concatenate([i1[k1], i2[k2]]), np.concatenate([e1[k1], e2[k2]]), np.concatenate([t1[k1], t2[k2]]))
