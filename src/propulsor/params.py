@@ -159,6 +159,16 @@ class PartParams:
         return next(f.metadata.get("doc", "") for f in dataclasses.fields(self) if f.name == name)
 
 
+def unknown_key_limit(key: str, known) -> str:
+    """The refusal of an unknown key: the closest known names first ("did you mean"), then all of them."""
+    import difflib
+
+    known = list(known)
+    close = difflib.get_close_matches(str(key), known, n=3, cutoff=0.6)
+    hint = f"did you mean {' or '.join(close)}? " if close else ""
+    return f"unknown parameter for this part ({hint}known: {', '.join(known)})"
+
+
 def load_params(cls, mapping: dict[str, Any], validate: bool = True):
     """Build the parameter dataclass `cls` from a mapping: every value of its type and within its
     limits; then, unless `validate` is False, the dataclass's own ``validate()`` (rules between
@@ -167,7 +177,7 @@ def load_params(cls, mapping: dict[str, Any], validate: bool = True):
     hints = get_type_hints(cls)
     unknown = sorted(set(mapping) - set(fields))
     if unknown:
-        raise InputError(unknown[0], mapping[unknown[0]], f"unknown parameter for this part (known: {', '.join(fields)})")
+        raise InputError(unknown[0], mapping[unknown[0]], unknown_key_limit(unknown[0], fields))
     # the keys as the part file gives them first (the message names the first bad one it holds)
     kwargs = {name: _check_field(fields[name], hints[name], value) for name, value in mapping.items()}
     obj = cls(**kwargs)

@@ -71,13 +71,6 @@ class _PeriodicLaw:
     def breakpoints(self) -> tuple:
         return (-math.pi / self.k, math.pi / self.k)
 
-    def U_derivs1(self, phi: float) -> tuple:
-        p = np.array([float(phi)])
-        return float(self.U(p)[0]), float(self.dU_dphi(p)[0]), float(self.d2U_dphi2(p)[0])
-
-    def theta1(self, phi: float) -> float:
-        return float(self.theta(np.array([float(phi)]))[0])
-
     @property
     def U_min(self) -> float:
         return float(np.min(self.U(np.linspace(-math.pi / self.k, math.pi / self.k, 4001))))
@@ -302,13 +295,8 @@ class FourierLaw(_PeriodicLaw):
             g1 += j * (s * ca - c * sa)
         return g0 - self._c0, g1
 
-    def theta1(self, phi: float) -> float:
-        """``theta`` at one float phi: the same Newton iteration in ``math`` (equal to rounding), the last
-        point remembered (the generator asks for U and theta of one phi in turn)."""
-        phi = float(phi)
-        last = self._last
-        if last[0] == phi:
-            return last[1]
+    def _guess1(self, phi: float) -> float:
+        """``_guess`` at one float phi, in ``math``."""
         P = self.period
         m = math.floor(phi / P)
         x = (phi - m * P) * (_GUESS_POINTS / P)
@@ -316,8 +304,17 @@ class FourierLaw(_PeriodicLaw):
         t = x - i
         T, D = self._T_list, self._D_list
         t2, t3 = t * t, t * t * t
-        th = (2 * math.pi * m + (2 * t3 - 3 * t2 + 1) * T[i] + (t3 - 2 * t2 + t) * D[i]
-              + (3 * t2 - 2 * t3) * T[i + 1] + (t3 - t2) * D[i + 1])
+        return (2 * math.pi * m + (2 * t3 - 3 * t2 + 1) * T[i] + (t3 - 2 * t2 + t) * D[i]
+                + (3 * t2 - 2 * t3) * T[i + 1] + (t3 - t2) * D[i + 1])
+
+    def theta1(self, phi: float) -> float:
+        """``theta`` at one float phi: the same Newton iteration in ``math`` (equal to rounding), the last
+        point remembered (the generator asks for U and theta of one phi in turn)."""
+        phi = float(phi)
+        last = self._last
+        if last[0] == phi:
+            return last[1]
+        th = self._guess1(phi)
         for _ in range(100):
             g0, g1 = self._g01(th)
             step = min(max((g0 - phi) / g1, -0.5), 0.5)

@@ -139,10 +139,8 @@ class WalkingLaw:
         object.__setattr__(self, "_m12bu", -12 * b * self._u)
         object.__setattr__(self, "_uA", self._u / A)
         object.__setattr__(self, "_15b", 1.5 * b)
-        # min of A + 3b cos 2w over w in [-pi/4, pi/4) is min(A, A + 3b) (cos 2w in [0, 1])
-        U_min = self.u * min(A, A + 3 * b) / A
-        if not U_min > 0:
-            raise InputError("U_min", U_min, "gear ratio U(phi) must be > 0 everywhere")
+        # U > 0 everywhere needs no check of its own: with A > 0 and b >= 0, U = u (A + 3b cos 2w) / A >= u > 0
+        # (cos 2w in [0, 1] on a leg)
 
     # ---- constants -----------------------------------------------------------
     @property
