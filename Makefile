@@ -38,12 +38,12 @@ install: $(STAMP)
 $(STAMP): pyproject.toml constraints.txt
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install -q -c constraints.txt pip
-	$(BIN)/python -m pip install -q -c constraints.txt -e '.[test]'
+	$(BIN)/python -m pip install -q -c constraints.txt -e '.[test,docs]'
 	touch $@
 
 lock:
 	rm -rf .venv-lock && $(PYTHON) -m venv .venv-lock
-	.venv-lock/bin/python -m pip install -q --upgrade pip && .venv-lock/bin/python -m pip install -q -e '.[test]'
+	.venv-lock/bin/python -m pip install -q --upgrade pip && .venv-lock/bin/python -m pip install -q -e '.[test,docs]'
 	.venv-lock/bin/python -m pip freeze --all --exclude-editable > constraints.txt
 	rm -rf .venv-lock
 
@@ -119,10 +119,14 @@ test: $(STAMP)
 	$(BIN)/lint-imports pyproject.toml
 	$(BIN)/python -m pytest -q -n $(PYTEST_WORKERS) --dist loadfile -m "not sweep" tests
 
-# the API reference from the docstrings (pdoc), warnings as errors
+# the user guide (mkdocs-material, docs/ -> site/, warnings are errors): the API reference from the docstrings
+# first (pdoc into docs/api/, warnings as errors), then the site, whose reference pages docs/hooks.py generates
+# from the code (docs/gen_reference.py); the docs extra is installed from constraints.txt when missing
 docs: $(STAMP)
+	$(BIN)/python -c "import mkdocs, material" 2>/dev/null || $(BIN)/python -m pip install -q -c constraints.txt -e '.[docs]'
 	rm -rf docs/api
 	$(BIN)/python -W error -m pdoc propulsor.api propulsor.errors propulsor.check -o docs/api
+	NO_MKDOCS_2_WARNING=1 $(BIN)/python -m mkdocs build --strict --clean
 
 # the print kits' sweep (every part file on every printer profile, one test a part file) runs its part files
 # side by side
@@ -142,4 +146,4 @@ mutation: $(STAMP)
 	$(BIN)/python mutation/run.py $(if $(MODULE),--module $(MODULE))
 
 clean:
-	rm -rf $(OUT)/*/ $(DEPS) $(OUT)/.built $(QUEUE) .pytest_cache .hypothesis .benchmarks
+	rm -rf $(OUT)/*/ $(DEPS) $(OUT)/.built $(QUEUE) .pytest_cache .hypothesis .benchmarks site
