@@ -96,3 +96,23 @@ def test_cli_list_names_part_files():
     assert r.returncode == 0
     for f in sorted((ROOT / "parts").glob("*.toml")):
         assert f.name in r.stdout
+
+
+def test_version_on_the_command_line_and_in_python():
+    import propulsor
+    from propulsor.version import __version__
+
+    out = subprocess.run([sys.executable, "-m", "propulsor", "--version"], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == f"propulsor {__version__}" and propulsor.__version__ == __version__
+
+
+def test_a_mistyped_key_is_answered_with_the_closest_names():
+    from propulsor.parts import get_part_type
+
+    with pytest.raises(InputError) as e:
+        load_params(get_part_type("noncircular_pair").params_cls, {"modul_mm": 3})
+    assert e.value.parameter == "modul_mm"
+    assert e.value.limit.startswith("unknown parameter for this part (did you mean module_mm? known: ")
+    with pytest.raises(InputError) as e:
+        load_params(get_part_type("noncircular_pair").params_cls, {"zzzz": 3})
+    assert e.value.limit.startswith("unknown parameter for this part (known: ")

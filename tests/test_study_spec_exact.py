@@ -276,3 +276,15 @@ def test_the_variant_key_is_stable():
     want = hashlib.sha256(json.dumps({"type": "road_wheel", "base": {"rows": 2}, "values": {"x": 1.5},
                                       "depth": "design", "version": "0.1.0"}, sort_keys=True).encode()).hexdigest()
     assert variant_key(s, {"x": 1.5}, "0.1.0") == want[:16]
+
+
+def test_a_mistyped_name_is_answered_with_the_closest_ones(tmp_path):
+    with pytest.raises(InputError) as e:
+        _load(tmp_path, _text(objectives='minimize = ["T_at_V_max"]'))
+    assert (e.value.parameter, e.value.hint) == ("objectives.minimize", "did you mean T_at_V_max_C or n_at_V_max_rpm or heat_at_V_max_Q_W?")
+    with pytest.raises(InputError) as e:
+        _load(tmp_path, _text(vary="tyre_widht_mm = [70.0]"))
+    assert (e.value.parameter, e.value.hint) == ("vary.tyre_widht_mm", "did you mean tyre_width_mm?")
+    with pytest.raises(InputError) as e:
+        _load(tmp_path, _text(objectives='minimize = ["qqqqqqqq"]'))
+    assert e.value.hint == ""

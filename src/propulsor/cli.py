@@ -354,6 +354,9 @@ def cmd_explore(args) -> int:
 
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="propulsor", description=__doc__.splitlines()[0])
+    from .version import __version__
+
+    p.add_argument("--version", action="version", version=f"propulsor {__version__}")
     sub = p.add_subparsers(dest="command", required=True)
 
     b = sub.add_parser("build", help="build parts from their parameter files (several: one after the other, "
