@@ -284,7 +284,7 @@ def test_a_mistyped_name_is_answered_with_the_closest_ones(tmp_path):
     assert (e.value.parameter, e.value.hint) == ("objectives.minimize", "did you mean T_at_V_max_C or n_at_V_max_rpm or heat_at_V_max_Q_W?")
     with pytest.raises(InputError) as e:
         _load(tmp_path, _text(vary="tyre_widht_mm = [70.0]"))
-    assert (e.value.parameter, e.value.hint) == ("vary.tyre_widht_mm", "did you mean tyre_width_mm?")
+    assert (e.value.parameter, e.value.hint) == ("vary.tyre_widht_mm", "did you mean tyre_width_mm or tyre_radius_mm or tyre_thickness_mm?")
     with pytest.raises(InputError) as e:
         _load(tmp_path, _text(objectives='minimize = ["qqqqqqqq"]'))
     assert e.value.hint == ""
