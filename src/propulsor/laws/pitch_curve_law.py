@@ -105,7 +105,14 @@ class PitchCurveLaw(TableLaw):
         def closure(L):
             return float(np.sum(0.5 * h * (r_t / (L - r_t)) @ _GW[:, None])) - 2 * math.pi / k
 
-        L0 = brentq(closure, r_max * (1 + 1e-9), r_max * 1e6, xtol=1e-13 * r_max, rtol=4e-15)
+        lo = r_max * (1 + 1e-9)
+        if not closure(lo) > 0:
+            # analytically the closure grows without bound as L comes down to the largest radius; sampled, a peak
+            # narrower than the law's samples leaves it below 2 pi / k: no centre distance the law can resolve
+            raise InputError(key, f"{rows} rows", f"no centre distance closes a {k}-lobe driven wheel at the law's "
+                             f"{SAMPLES} samples a turn: the curve's largest radius is a peak too narrow to follow "
+                             "(a smoother curve, or more lobes)")
+        L0 = brentq(closure, lo, r_max * 1e6, xtol=1e-13 * r_max, rtol=4e-15)
         seg = (0.5 * h * (r_t / (L0 - r_t)) @ _GW[:, None])[:, 0]
         phi = np.concatenate([[0.0], np.cumsum(seg)])
         phi *= (2 * math.pi / k) / phi[-1]  # closure to the last bit
