@@ -116,3 +116,20 @@ def test_a_mistyped_key_is_answered_with_the_closest_names():
     with pytest.raises(InputError) as e:
         load_params(get_part_type("noncircular_pair").params_cls, {"zzzz": 3})
     assert e.value.limit.startswith("unknown parameter for this part (known: ")
+
+
+def test_params_of_a_printer_profile_and_the_law_keys_first():
+    out = subprocess.run([sys.executable, "-m", "propulsor", "params", "printer"], capture_output=True, text=True,
+                         check=True).stdout.splitlines()
+    assert out[0].startswith("printer: a printer profile") and any(l.split()[0] == "backlash_mm" for l in out[2:])
+    out = subprocess.run([sys.executable, "-m", "propulsor", "params", "noncircular_pair"], capture_output=True,
+                         text=True, check=True).stdout.splitlines()
+    names = [l.split()[0] for l in out[2:]]
+    assert names[:2] == ["law", "driver_turns"] and names.index("pitch_curve_file") < names.index("a_mm")
+
+
+def test_a_missing_part_file_is_said_once():
+    out = subprocess.run([sys.executable, "-m", "propulsor", "build", "/nonexistent/x.toml"], capture_output=True,
+                         text=True)
+    assert out.returncode == 2
+    assert out.stderr.strip() == "propulsor: error: part file = '/nonexistent/x.toml': does not exist"

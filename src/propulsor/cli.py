@@ -301,12 +301,19 @@ def cmd_params(args) -> int:
     from .params import describe_params
     from .parts import params_class, summary
 
-    try:
-        cls = params_class(args.part_type)
-    except InputError as exc:
-        return fail_input(exc)
+    if args.part_type == "printer":  # a printer profile's settings (--printer FILE, --set KEY=VALUE)
+        from .printing.printers import Printer
+
+        cls, what = Printer, ("a printer profile: the keys of your own profile file (propulsor print --printer "
+                              "FILE.toml) and of --set KEY=VALUE")
+    else:
+        try:
+            cls = params_class(args.part_type)
+        except InputError as exc:
+            return fail_input(exc)
+        what = summary(args.part_type)
     rows = describe_params(cls)
-    print(f"{args.part_type}: {summary(args.part_type)}")
+    print(f"{args.part_type}: {what}")
     print(f"{'parameter':28s} {'unit':6s} {'default':>14s}  {'limits':24s} description")
     for r in rows:
         print(f"{r['name']:28s} {r['unit']:6s} {str(r['default']):>14s}  {r['limits']:24s} {r['doc']}")
@@ -386,7 +393,7 @@ def build_parser() -> argparse.ArgumentParser:
                     "generic printer's other settings")
     pr.add_argument("--scale", default="auto", help="auto (largest standard scale that fits), S or 1:S")
     pr.add_argument("--set", action="append", metavar="KEY=VALUE", help="override a printer setting "
-                    "(e.g. backlash_mm=0.35; see printing/printers.py)")
+                    "(e.g. backlash_mm=0.35; every setting: propulsor params printer)")
     pr.add_argument("--slice", default="auto", help="auto (when PrusaSlicer is installed), yes or no: slice every "
                     "plate with the printer's settings for the print time and filament (slow: tens of seconds a "
                     "plate); no: estimate the filament")
@@ -412,8 +419,9 @@ def build_parser() -> argparse.ArgumentParser:
     g.add_argument("-q", "--quiet", action="store_true", help="no progress messages")
     g.set_defaults(func=cmd_gallery)
 
-    pa = sub.add_parser("params", help="every parameter of a part type with unit, default and limits")
-    pa.add_argument("part_type")
+    pa = sub.add_parser("params", help="every parameter of a part type (or of a printer profile: params printer) "
+                        "with unit, default and limits")
+    pa.add_argument("part_type", help="a part type (propulsor list names them) or printer")
     pa.set_defaults(func=cmd_params)
 
     ex = sub.add_parser("explore", help="a design study: the variants of a study file on a Dask cluster, "

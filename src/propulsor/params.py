@@ -191,7 +191,9 @@ def load_params(cls, mapping: dict[str, Any], validate: bool = True):
 def describe_params(cls) -> list[dict]:
     """Every parameter with unit, default, limits, description (for `propulsor params`)."""
     rows = []
-    for f in dataclasses.fields(cls):
+    first = tuple(getattr(cls, "params_order", ()))  # the names a class lists first (the rest in field order)
+    fields = sorted(dataclasses.fields(cls), key=lambda f: first.index(f.name) if f.name in first else len(first))
+    for f in fields:
         m = f.metadata
         default = f.default if f.default is not dataclasses.MISSING else (
             f.default_factory() if f.default_factory is not dataclasses.MISSING else None)
@@ -259,9 +261,9 @@ def read_part_toml(path: str | Path) -> dict[str, Any]:
     from .regular_file import read_regular
 
     path = Path(path)
+    if not path.exists():
+        raise InputError("part file", str(path), "does not exist")
     try:
-        if not path.exists():
-            raise InputError("part file", str(path), "does not exist")
         raw = read_regular(os.path.realpath(path), MAX_PART_FILE_BYTES)
     except ValueError as exc:
         raise InputError("part file", str(path), f"{exc}; a part file is a TOML file of at most "

@@ -36,8 +36,8 @@ _MODULES = {
 _REGISTRY = {
     "planetary_final_drive": ("FinalDriveParams", "planetary final drive: sun, planets, fixed ring (seed 004 ch. 4, "
                               "ISO 21771)"),
-    "noncircular_pair": ("NoncircularPairParams", "non-circular gear pair of the wheel-walking propulsor drive "
-                         "(seeds 000, 002): generated or sector teeth"),
+    "noncircular_pair": ("NoncircularPairParams", "non-circular gear pair of any ratio law (elliptical, Fourier, "
+                         "table, pitch curve; the walking drive of seeds 000, 002): generated or sector teeth"),
     "balancer": ("BalancerParams", "suspension balancer with road wheel: torsion suspension calc, equal-strength "
                  "arm, travel sweep (seed 004 ch. 2, 8)"),
     "road_wheel": ("RoadWheelParams", "double road wheel with solid rubber tyres, Kozlov heat estimate (seed 004 "

@@ -100,9 +100,9 @@ GLOSSARY = {
     **TOOTH_LOAD,
     "mounting_distance_mm": ("mm", "centre distance the pair is mounted at (the DXF and the assembly)"),
     "module_mm": ("mm", "module m of the teeth"),
-    "driver_teeth": ("", "teeth z of the driver (on the engine side)"),
-    "driven_teeth": ("", "teeth z_H of the driven gear (on the hub)"),
-    "driver_turns": ("", "driver turns n per driven turn (legs of the propulsor)"),
+    "driver_teeth": ("", "teeth z of the driver (the wheel the input turns)"),
+    "driven_teeth": ("", "teeth z_H of the driven wheel (the output; the hub in a walking propulsor)"),
+    "driver_turns": ("", "driver turns n per driven turn (the driven wheel's lobes; the legs for the walking law)"),
     "method": ("", "how the teeth were made: generated (conjugate, by a shaper or rack) or sectors (the papers' "
                    "involute sectors, seed 000 and seed 002)"),
     "speed_ripple_phi_min_deg": ("deg", "hub angle φ of the least hub speed"),

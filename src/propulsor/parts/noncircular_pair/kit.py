@@ -202,18 +202,36 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
         extents = {"driver": (*_extent(full.profiles[0]), p.face_width_mm),
                    "driven": (*_extent(full.profiles[1]), p.face_width_mm)}
         choice = choose_scale(extents, bed, scale, margin=printer.margin_mm)
-    S = choice.S
-    pin = [_pin(b / S) for b in (p.driver_bore_mm, p.driven_bore_mm)]
-    if full is not None:  # the driver's pin sized for the handle beside it (the root radius scales as 1/S)
-        rig = rig_sizes(full.d.driver.root_min_radius / S, m / S, p.driver_bore_mm / S, printer)
-        if rig is not None:
-            pin[0] = rig[0]
-    R_boss = max(pin) / 2 + BOSS_WALL_MM
-    base_len = L_est / S + 2 * R_boss
-    if base_len > max(printer.bed_x_mm, printer.bed_y_mm) - 2 * printer.margin_mm:
+    def rig_at(S):
+        """The pins and the base bar's length at reduction S."""
+        pin = [_pin(b / S) for b in (p.driver_bore_mm, p.driven_bore_mm)]
+        if full is not None:  # the driver's pin sized for the handle beside it (the root radius scales as 1/S)
+            rig = rig_sizes(full.d.driver.root_min_radius / S, m / S, p.driver_bore_mm / S, printer)
+            if rig is not None:
+                pin[0] = rig[0]
+        return pin, L_est / S + 2 * (max(pin) / 2 + BOSS_WALL_MM)
+
+    longest = max(printer.bed_x_mm, printer.bed_y_mm) - 2 * printer.margin_mm
+    pin, base_len = rig_at(choice.S)
+    if base_len > longest:
         if at_1_first:
             return kit(p, printer, scale, source, full_size_first=False)
-        raise InputError("--scale", choice.label, f"the base bar ({base_len:.1f} mm) does not fit the bed")
+        from ...printing.scale import STANDARD_SCALES
+
+        # the rig's base bar (the centre distance and two bosses) is a piece too: the scale that fits it
+        works = next((T for T in STANDARD_SCALES if T > choice.S and rig_at(T)[1] <= longest), None)
+        if scale is not None or works is None:
+            bar = f"the rig's base bar ({base_len:.1f} mm at {choice.label}) does not fit the bed's {longest:g} mm " \
+                  f"(its longer side less {printer.margin_mm:g} mm margins)"
+            if scale is not None:
+                raise InputError("--scale", choice.label, bar + (f"; it fits at 1:{works:g}" if works else
+                                                                 "; a larger printer"))
+            raise InputError("printer", printer.name, bar + f" even at 1:{STANDARD_SCALES[-1]:g}; a larger printer")
+        choice = ScaleChoice(works, f"the rig's base bar is {base_len:.1f} mm at {choice.label}, longer than the "
+                                    f"bed's {longest:g} mm; at 1:{works:g} it fits")
+        pin, base_len = rig_at(works)
+    S = choice.S
+    R_boss = max(pin) / 2 + BOSS_WALL_MM
     check_printable(S, m, printer.min_module_mm, choice=choice)
     clear, under, press = printer.running_clearance_mm, printer.hole_undersize_mm, printer.press_fit_mm
     bores = [d + 2 * clear + under for d in pin]
@@ -354,7 +372,7 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
                f"top: it stands {PLAY_MM:g} mm above the wheel, which turns freely and stays on when the model is "
                f"lifted.",
                f"Turn the handle: each driver turn the next of the driven wheel's {n} marks reaches the line of centres; "
-               f"{n} turns bring the driven wheel once round, its speed varying as the walking law asks."],
+               f"{n} turns bring the driven wheel once round, its speed varying as the law asks."],
         expected_failures=_documented_jam(source, prefix),
         guide_notes=printed_tol[1],
         material_notes=hand_text, material_table=hand.guide_table() if hand is not None else None,

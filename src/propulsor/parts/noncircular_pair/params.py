@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 from dataclasses import dataclass
 
 from ... import policy
@@ -38,6 +40,11 @@ _WHY_MECHANISM = "a walking drive of 5 m hub height is larger than any built"
 class NoncircularPairParams(PartParams):
     """Parameters of the walking-drive pair.  Defaults: seed 002 as ``parts/ncg_seed002.toml`` builds it
     (a = 100, b = 50, c = 236.5 mm, n = 4, m = 2.5, z 20/80, the law searched for the least ripple)."""
+
+    #: `propulsor params` and the reference list the law and its own keys first, the walking law's a, b, c after
+    #: the others' (a class attribute, not a field)
+    params_order: ClassVar[tuple] = ("law", "driver_turns", "eccentricity", "fourier_cos", "fourier_sin", "law_file",
+                                     "pitch_curve_file", "a_mm", "b_mm", "c_mm")
 
     a_mm: float = param(100.0, "mm", "hub-to-crank axis distance a (seed 000 eq. 1)", min=0.0, max=5000.0,
                         why=_WHY_MECHANISM)
