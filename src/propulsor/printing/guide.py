@@ -91,7 +91,8 @@ def write_guide(kit, w, plans, items, sliced: bool, title: str) -> None:
     for k, step in enumerate(kit.steps, 1):
         lines += [f"{k}. {md_text(step)}", ""]
         if k <= len(pics) and pics[k - 1]:
-            lines += [f"   ![step {k}]({pics[k - 1]})", ""]
+            # indented by four: the picture stays inside its step's item, and the steps one list numbered 1, 2, 3 …
+            lines += [f"    ![step {k}]({pics[k - 1]})", ""]
     lines += ["## 5. Tight or loose?", "",
               f"- A wheel that binds on its pin: `--set running_clearance_mm={p.running_clearance_mm + 0.1:g}`; "
               f"one that wobbles: `{max(0.1, p.running_clearance_mm - 0.1):g}`.",
@@ -102,7 +103,8 @@ def write_guide(kit, w, plans, items, sliced: bool, title: str) -> None:
               ""]
     if kit.guide_notes:
         lines += ["## 6. As printed", ""] + [md_text(t) + "\n" for t in kit.guide_notes]
-    lines += ["The proofs of the printed geometry are in [print_report.md](print_report.md).", ""]
+    lines += ["The proofs of the printed geometry are in [print_report.html](print_report.html) (its text: "
+              "[print_report.md](print_report.md)).", ""]
     path = w.path("print_guide.md")
     path.write_text("\n".join(lines), encoding="utf-8")
     w.path("print_guide.html")
