@@ -8,6 +8,7 @@ skirt as well as the pieces — must lie on the bed, half its line width include
 
 from __future__ import annotations
 
+import functools
 import re
 import shutil
 import subprocess
@@ -91,10 +92,15 @@ def test_a_margin_too_small_for_the_default_skirt_brings_it_in_or_drops_it():
 
 # --- every plate of a kit, sliced by PrusaSlicer with its default skirt --------------------------------------------
 
+@functools.cache
+def _slicer_help() -> str:
+    return subprocess.run(["prusa-slicer", "--help-fff"], capture_output=True, text=True, timeout=120,
+                          env={"PATH": "/usr/bin:/bin", "HOME": "/tmp", "LC_ALL": "C"}).stdout
+
+
 def _slicer_default(option: str) -> str:
     """The installed PrusaSlicer's default of a command-line option (its --help-fff)."""
-    text = subprocess.run(["prusa-slicer", "--help-fff"], capture_output=True, text=True, timeout=120,
-                          env={"PATH": "/usr/bin:/bin", "HOME": "/tmp", "LC_ALL": "C"}).stdout
+    text = _slicer_help()
     m = re.search(rf"^ --{option} N\s.*?default: ([^)]+)\)", text, re.M | re.S)
     assert m, f"prusa-slicer --help-fff names no default of --{option}"
     return m.group(1).strip()
