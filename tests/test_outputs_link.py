@@ -9,6 +9,7 @@ same kit as ``road_wheel_kit``) and a two-variant study of it, in one gallery fo
 
 from __future__ import annotations
 
+import json
 import math
 import re
 import shutil
@@ -48,6 +49,13 @@ def folder(tmp_path_factory) -> Path:
     assert main(["print", str(WHEEL), "--out", str(out / "my_wheel_print"), "-q", "--slice", "no"]) == 0
     shutil.copytree(out / "my_wheel_print", out / "road_wheel_kit")
     assert main(["explore", str(study), "--out", str(out / "wheel_study"), "--workers", "1", "-q"]) == 0
+    # a sector-method pair as its manifest records it: the teeth jam, so backlash and transmission error are
+    # not numbers (NaN in the manifest's JSON)
+    (out / "sector_pair").mkdir()
+    (out / "sector_pair" / "manifest.json").write_text(json.dumps(
+        {"part": "noncircular_pair", "title": "sector pair", "files": [], "checks": [], "expected_failures": [],
+         "derived": {"method": "sectors", "speed_ripple": 0.07869341195173282, "backlash_min_mm": math.nan,
+                     "te_pp_rad": math.nan, "center_distance_mm": 79.54009282751963}}))
     assert main(["gallery", str(out), "-q"]) == 0
     return out
 
@@ -63,6 +71,14 @@ def test_the_gallery_links_each_kit_s_guide_and_shows_a_kit_under_another_name(f
     card = index[index.index('<section class="part" id="my_wheel_print">'):]
     card = card[:card.index("</section>")]
     assert "my_wheel_print/report.html" not in card and "my_wheel_print/print_guide.html" in card
+
+
+def test_the_gallery_says_why_a_value_is_not_a_number_and_a_ripple_in_per_cent(folder):
+    index = (folder / "index.html").read_text(encoding="utf-8")
+    card = index[index.index('<section class="part" id="sector_pair">'):]
+    card = card[:card.index("</section>")]
+    assert "<dd>7.869&nbsp;%</dd>" in card and "<dd>79.54&nbsp;mm</dd>" in card
+    assert card.count("<dd>— (no free position: the pair jams)</dd>") == 2 and "nan" not in card.lower()
 
 
 def test_the_kit_report_links_the_guide_s_html_and_the_guide_the_report_s(folder):
