@@ -149,3 +149,10 @@ def test_the_pages_in_a_real_browser_no_nan_no_sideways_scroll_and_the_guide_lin
             if p.name == "print_report.html" and "print_guide.html" not in got["links"]:
                 bad.append(f"{p.relative_to(folder)} links no print_guide.html")
     assert bad == []
+
+
+def test_a_report_never_shows_nan():
+    from propulsor.export.report import NOT_DEFINED, _fmt
+
+    assert _fmt(math.nan) == NOT_DEFINED and _fmt([1.5, math.nan]) == f"[1.5, {NOT_DEFINED}]"
+    assert _fmt(math.inf) == "∞" and _fmt(-math.inf) == "−∞" and _fmt(0.125) == "0.125"
