@@ -122,6 +122,9 @@ def _plate_picture(w, name: str, objects, printer: Printer) -> None:
 
     fig, ax = plt.subplots(figsize=(6, 6 * printer.bed_y_mm / printer.bed_x_mm))
     ax.add_patch(Rectangle((0, 0), printer.bed_x_mm, printer.bed_y_mm, fill=False, lw=1.5, ec="0.3"))
+    m = printer.margin_mm  # the pieces stay inside it: the slicer's skirt lies between it and the bed's edge
+    ax.add_patch(Rectangle((m, m), printer.bed_x_mm - 2 * m, printer.bed_y_mm - 2 * m, fill=False, lw=0.8, ec="0.6",
+                           ls="--"))
     for k, (label, mesh) in enumerate(objects):
         outline = mesh.vertices[:, :2]
         try:
