@@ -69,7 +69,10 @@ def write_guide(kit, w, plans, items, sliced: bool, title: str) -> None:
     lines += ["## 1. What to print", ""]
     lines += [f"Settings: {md_text(p.settings_text)}. Every piece lies on the face it is laid on in the plate "
               f"files (`plate_<k>.3mf`, one object a piece, mm); pins, axles and handles lie on the flat along "
-              f"their side so that their layers run along them.", ""]
+              f"their side so that their layers run along them.", "",
+              f"Each plate file carries these settings as a PrusaSlicer project (open it as a project: the printer "
+              f"gets what the times and grams below assume); its pieces sit centred on the bed, at least "
+              f"{p.margin_mm:g} mm from its edges, so that the slicer's skirt stays on the bed.", ""]
     lines += plates_lines(p, plans, sliced)
     lines += _table(["piece", "count", "what"], [[pc.name, str(pc.count), pc.what] for pc in kit.pieces])
     if kit.material_notes:
