@@ -46,7 +46,7 @@ def kits(tmp_path_factory):
 
 #: the pair designs the seed-002 kit made (their modules)
 DESIGNS: list[float] = []
-#: the generic printer with a 230 mm bed for the seed-002 pair: its 1:1 driven wheel (about 209 mm) fits the
+#: the generic printer with a 230 mm bed for the seed-002 pair: its 1:1 driven wheel (204 ... 210 mm) fits the
 #: 214 mm within the 8 mm margins the slicer's skirt needs, its padded pitch estimate (215.5 mm) does not.  (On
 #: the generic 220 mm bed the wheel and its skirt do not fit at 1:1: the kit prints at 1:1.5 there.)
 BEDS = {"ncg_seed002": ["--set", "bed_x_mm=230", "--set", "bed_y_mm=230"]}
