@@ -78,7 +78,7 @@ def test_the_gallery_says_why_a_value_is_not_a_number_and_a_ripple_in_per_cent(f
     card = index[index.index('<section class="part" id="sector_pair">'):]
     card = card[:card.index("</section>")]
     assert "<dd>7.869&nbsp;%</dd>" in card and "<dd>79.54&nbsp;mm</dd>" in card
-    assert card.count("<dd>— (no free position: the pair jams)</dd>") == 2 and "nan" not in card.lower()
+    assert card.count("<dd>— (sector method: not defined, its teeth jam)</dd>") == 2 and "nan" not in card.lower()
 
 
 def test_the_kit_report_links_the_guide_s_html_and_the_guide_the_report_s(folder):

@@ -29,7 +29,7 @@ from urllib.parse import quote
 from .gallery_manifest import ManifestError, inside, load_manifest
 from .html import page, write_atomically
 from .manifest import MANIFEST
-from .gallery_values import failed_names, label, names_text, position_title, value_text
+from .gallery_values import SECTOR_WHY, failed_names, label, names_text, position_title, value_text
 from .viewer_page import VIEWER_STYLE, viewer_figure, viewer_script  # noqa: F401  (viewer_script: public here too)
 
 INDEX = "index.html"
@@ -136,6 +136,8 @@ def key_values(manifest: dict) -> list[tuple[str, str, str]]:
     else:
         names = [k for k, v in derived.items() if isinstance(v, (int, float, str))][:DEFAULT_KEY_VALUES]
     glossary = manifest.get("glossary") or {}
+    sectors = manifest.get("part") == "noncircular_pair" and derived.get("method") == "sectors"
+    why = SECTOR_WHY if sectors else None
     out = []
     for k in names:
         text, unit = label(k, glossary)
@@ -143,7 +145,7 @@ def key_values(manifest: dict) -> list[tuple[str, str, str]]:
         if not unit and "ripple" in k and isinstance(v, float) and math.isfinite(v):  # a fraction: in per cent
             out.append((text, value_text(100.0 * v), "%"))
             continue
-        out.append((text, value_text(v, manifest.get("part", "")), unit))
+        out.append((text, value_text(v, manifest.get("part", ""), why), unit))
     return out
 
 
