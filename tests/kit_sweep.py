@@ -16,8 +16,8 @@ differ between them:
   rating of that printed pair under the hand on its crank (the same pair, the same handle radius);
 - **the slicing** (:class:`SharedSlicer`): a plate file with the same bytes (same pieces at the same
   places) and the same print settings is sliced once by PrusaSlicer, on a bed that every profile that
-  laid it out holds (the beds are rectangles from the origin), and every object's extents are checked
-  against each profile's own bed.  The G-code's time and filament do not depend on the bed's size.
+  laid it out holds (the beds are rectangles from the origin), and every object's extents and every
+  extrusion of the G-code (skirt too) are checked against each profile's own bed.  The G-code's time and filament do not depend on the bed's size.
   The slicing runs beside the building of the next profile's kit.
 """
 
@@ -225,6 +225,8 @@ class SharedSlicer:
         for label, plate, printer, fut in self.members:
             r = fut.result()
             off = r.off_bed(printer.bed_x_mm, printer.bed_y_mm)
+            if r.ok:  # every line the G-code lays (the skirt too) on this profile's bed
+                off += r.extrusions_off_bed(printer.bed_x_mm, printer.bed_y_mm)
             off += [f"object {j} above {printer.bed_z_mm:g} mm" for j, o in enumerate(r.objects, 1)
                     if float(o.get("max_z", o.get("size_z", 0.0))) > printer.bed_z_mm + 1e-3]
             if not (r.ok and r.all_manifold and not off and r.stats.get("time_s", 0) > 0):

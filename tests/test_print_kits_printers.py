@@ -21,7 +21,7 @@ BEDS = {"prusa_mini": (180, 180, 180), "prusa_mk4": (250, 210, 220), "prusa_xl":
 @pytest.mark.parametrize("name", sorted(BEDS))
 def test_built_in_profiles_have_their_printer_s_bed(name):
     p = load_printer(name)
-    assert p.bed == BEDS[name] and p.name == name and p.title and p.margin_mm == 5.0
+    assert p.bed == BEDS[name] and p.name == name and p.title and p.margin_mm == 8.0  # the default skirt's room
 
 
 def test_every_built_in_profile_loads():

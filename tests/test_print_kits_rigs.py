@@ -93,14 +93,14 @@ def test_cam_mover_kit_runs_in_its_channel_with_the_running_clearance(kits):
 def test_balancer_kit_swings_from_post_to_post(kits):
     _, _, m = kits["balancer"]
     d, c = m["derived"], _checks(m)
-    assert d["scale_S"] == 3.0  # the 630 mm wheel decides
+    assert d["scale_S"] == 4.0  # the 630 mm wheel decides: 210 mm at 1:3 leaves no room for the slicer's skirt
     assert d["print_travel_deg"] == pytest.approx([18.796, 114.839], abs=1e-3)
     # the posts stop the arm at both ends of the travel and nowhere inside it
     assert c["motion.arm_vs_posts.overlap_area"]["value"] <= 1e-6
     assert d["print_arm_post_clearance_min_mm"] == pytest.approx(0.26, abs=1e-3)
     assert d["print_arm_post_clearance_ends_mm"] == pytest.approx([0.26, 0.26], abs=1e-3)
     assert d["print_arm_post_clearance_inside_min_mm"] > 0.26
-    assert math.isclose(d["print_R_b_mm"], 120.0)
+    assert math.isclose(d["print_R_b_mm"], 90.0)
 
 
 def test_road_wheel_kit_slabs_restack_to_the_wheel(kits):
@@ -109,9 +109,10 @@ def test_road_wheel_kit_slabs_restack_to_the_wheel(kits):
 
     _, folder, m = kits["road_wheel"]
     d = m["derived"]
-    assert d["scale_S"] == 3.0 and d["wheel_slabs"] == 4  # two rows: cut at both webs and between the rows
-    assert d["print_tyre_radius_mm"] == pytest.approx(105.0)
-    assert d["print_wheel_length_mm"] == pytest.approx(265.0 / 3)
+    # 1:4: the 630 mm wheel at 1:3 (210 mm) does not fit the 220 mm bed less the 8 mm margins of the slicer's skirt
+    assert d["scale_S"] == 4.0 and d["wheel_slabs"] == 4  # two rows: cut at both webs and between the rows
+    assert d["print_tyre_radius_mm"] == pytest.approx(630.0 / 2 / 4)
+    assert d["print_wheel_length_mm"] == pytest.approx(265.0 / 4)
     # every slab stands on a half web: the bed-side layer is a full annulus from the hub to the tyre
     heights = []
     for k in range(1, 5):
@@ -121,10 +122,10 @@ def test_road_wheel_kit_slabs_restack_to_the_wheel(kits):
         layer = manifold(mesh, f"wheel_{k}").slice(float(lo[2]) + 0.5)  # above the 0.4 mm chamfer
         assert len(layer.decompose()) == 1  # one region: the half web joins hub and ring on the first layers
         x0, y0, x1, y1 = layer.bounds()
-        assert (x1 - x0) / 2 == pytest.approx(105.0, abs=0.05) and (y1 - y0) / 2 == pytest.approx(105.0, abs=0.05)
+        assert (x1 - x0) / 2 == pytest.approx(78.75, abs=0.05) and (y1 - y0) / 2 == pytest.approx(78.75, abs=0.05)
         # the bore and the six lightening holes go through that layer
         assert len(layer.to_polygons()) == 1 + 1 + 6
-    assert sum(heights) == pytest.approx(265.0 / 3, abs=1e-6)
+    assert sum(heights) == pytest.approx(265.0 / 4, abs=1e-6)
 
 
 @pytest.mark.slicer

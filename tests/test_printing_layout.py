@@ -81,6 +81,10 @@ def test_shelf_packing_keeps_pieces_apart_and_on_the_bed():
             assert pl.x >= 5.0 - 1e-9 and pl.y >= 5.0 - 1e-9
             assert pl.x + w <= 215.0 + 1e-9 and pl.y + d <= 215.0 + 1e-9
             rects.append((pl.x, pl.y, pl.x + w, pl.y + d))
+        # the plate's block of pieces centred on the bed: as much room left as right, in front as behind
+        lo = np.min([r[:2] for r in rects], axis=0)
+        hi = np.max([r[2:] for r in rects], axis=0)
+        assert lo == pytest.approx(220.0 - hi, abs=1e-9)
         for i, a in enumerate(rects):
             for b in rects[i + 1:]:
                 gap = max(b[0] - a[2], a[0] - b[2], b[1] - a[3], a[1] - b[3])

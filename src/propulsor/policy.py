@@ -341,3 +341,19 @@ KIT_HAND_FORCE_N = 50.0
 #: values only, each phase's contact is measured anew (on the elliptical kit the safeties agree with those from the
 #: 0.05 deg law to 4 digits, in a fifth of the time)
 KIT_HAND_LOAD_CONTACT_STEP_DEG = 0.5
+
+# --- plates as a slicer takes them (printing/layout.py, printing/printers.py) ---------------------------------------
+#: the skirt a slicer draws round a plate's first layer: PrusaSlicer's defaults (skirts = 1 loop, skirt_distance = 6 mm
+#: from the objects, or from their brim), carried in each plate's slicer settings (Metadata/Slic3r_PE.config)
+SLICER_SKIRTS = 1
+SLICER_SKIRT_DISTANCE_MM = 6.0
+#: the brim the plates' settings ask for (mm; 0: none, PrusaSlicer's default; a brim pushes the skirt out by its width)
+SLICER_BRIM_MM = 0.0
+#: the widest first-layer line of the skirt (mm): PrusaSlicer's first_layer_extrusion_width 200 % of its default
+#: first-layer height 0.35 mm
+SLICER_FIRST_LAYER_LINE_MM = 0.7
+#: room kept beyond the skirt's outer edge to the bed's edge (mm): the bed's clips, a slicer's rounding
+SLICER_EDGE_ROOM_MM = 1.0
+#: the pieces' least distance to the bed's edge (a printer profile's default margin_mm): the brim, the skirt's
+#: distance and its loops, and the room beyond them (0 + 6 + 0.7 + 1 = 7.7, rounded up to whole mm)
+PLATE_MARGIN_MM = 8.0

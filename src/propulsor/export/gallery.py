@@ -29,7 +29,7 @@ from urllib.parse import quote
 from .gallery_manifest import ManifestError, inside, load_manifest
 from .html import page, write_atomically
 from .manifest import MANIFEST
-from .gallery_values import failed_names, label, names_text, position_title, value_text
+from .gallery_values import SECTOR_WHY, failed_names, label, names_text, position_title, value_text
 from .viewer_page import VIEWER_STYLE, viewer_figure, viewer_script  # noqa: F401  (viewer_script: public here too)
 
 INDEX = "index.html"
@@ -122,7 +122,8 @@ def status(manifest: dict) -> tuple[str, str]:
 
 def key_values(manifest: dict) -> list[tuple[str, str, str]]:
     """(label, value, unit) of the part type's key derived values that the manifest holds: labelled from
-    the manifest's glossary (else the name), rounded for a reader (gallery_values.py)."""
+    the manifest's glossary (else the name), rounded for a reader (gallery_values.py); a ripple (a fraction)
+    in per cent."""
     derived = manifest.get("derived")
     derived = derived if isinstance(derived, dict) else {}
     patterns = KEY_VALUES.get(manifest.get("part", ""))
@@ -135,10 +136,16 @@ def key_values(manifest: dict) -> list[tuple[str, str, str]]:
     else:
         names = [k for k, v in derived.items() if isinstance(v, (int, float, str))][:DEFAULT_KEY_VALUES]
     glossary = manifest.get("glossary") or {}
+    sectors = manifest.get("part") == "noncircular_pair" and derived.get("method") == "sectors"
+    why = SECTOR_WHY if sectors else None
     out = []
     for k in names:
         text, unit = label(k, glossary)
-        out.append((text, value_text(derived[k], manifest.get("part", "")), unit))
+        v = derived[k]
+        if not unit and "ripple" in k and isinstance(v, float) and math.isfinite(v):  # a fraction: in per cent
+            out.append((text, value_text(100.0 * v), "%"))
+            continue
+        out.append((text, value_text(v, manifest.get("part", ""), why), unit))
     return out
 
 
@@ -204,29 +211,44 @@ def _files(name: str, manifest: dict) -> str:
     return "".join(rows)
 
 
+def _is_kit(folder: Path, name: str) -> bool:
+    """A print kit's folder: ``<part>_kit``, or one a kit was built into under another name (``propulsor print
+    --out``), known by its report ``print_report.md``."""
+    return name.endswith("_kit") or inside(folder / name, "print_report.md") is not None
+
+
 def _report_links(name: str, folder: Path, stem: str) -> str:
+    """The report (HTML, then its Markdown), a kit's print guide, and the manifest."""
     links = []
     if inside(folder / name, f"{stem}.html"):
         links.append(_a(f"{name}/{stem}.html", "report"))
+    if stem == "print_report" and inside(folder / name, "print_guide.html"):
+        links.append(_a(f"{name}/print_guide.html", "print guide"))
     if inside(folder / name, f"{stem}.md"):
         links.append(_a(f"{name}/{stem}.md", f"{stem}.md"))
     links.append(_a(f"{name}/{MANIFEST}", MANIFEST))
     return '<p class="links">' + "".join(links) + "</p>"
 
 
-def _kit(folder: Path, kit_name: str, m: dict) -> str:
-    cls, text = status(m)
-    pics = [f["path"] for f in m.get("files", []) if isinstance(f, dict) and f.get("format") == "PNG"
-            and f["path"].startswith("plots/")]
-    plates = [f["path"] for f in m.get("files", []) if isinstance(f, dict) and f.get("format") == "3MF"
-              and "/" not in f["path"]]
-    out = [f'<div class="kit"><h3>Print kit: {_a(kit_name + "/", kit_name)}</h3>',
-           f'<p><span class="badge {cls}">{escape(text)}</span></p>', _report_links(kit_name, folder, "print_report")]
+def _kit_media(kit_name: str, m: dict) -> list[str]:
+    """A kit's plates (3MF) and pictures (``plots/*.png``), as its manifest lists them."""
+    files = [f for f in m.get("files", []) if isinstance(f, dict) and isinstance(f.get("path"), str)]
+    pics = [f["path"] for f in files if f.get("format") == "PNG" and f["path"].startswith("plots/")]
+    plates = [f["path"] for f in files if f.get("format") == "3MF" and "/" not in f["path"]]
+    out = []
     if plates:
         out.append('<p class="links">plates: ' + "".join(_a(f"{kit_name}/{p}", p) for p in plates) + "</p>")
     if pics:
         out.append('<div class="media">' + "".join(_figure(f"{kit_name}/{p}", Path(p).stem.replace("_", " "))
                                                      for p in pics) + "</div>")
+    return out
+
+
+def _kit(folder: Path, kit_name: str, m: dict) -> str:
+    cls, text = status(m)
+    out = [f'<div class="kit"><h3>Print kit: {_a(kit_name + "/", kit_name)}</h3>',
+           f'<p><span class="badge {cls}">{escape(text)}</span></p>', _report_links(kit_name, folder, "print_report")]
+    out += _kit_media(kit_name, m)
     out.append("</div>")
     return "".join(out)
 
@@ -244,7 +266,10 @@ def _section(folder: Path, entry: dict, budget: dict) -> str:
         out.append('<dl class="values">' + "".join(
             f"<dt>{escape(k)}</dt><dd>{escape(v)}{('&nbsp;' + escape(u)) if u and not v.startswith('—') else ''}</dd>"
             for k, v, u in values) + "</dl>")
-    out.append(_report_links(name, folder, "print_report" if name.endswith("_kit") else "report"))
+    kit = _is_kit(folder, name)
+    out.append(_report_links(name, folder, "print_report" if kit else "report"))
+    if kit:  # a kit without its part: its plates and pictures here
+        out += _kit_media(name, m)
     anims = media["animations"]
     if anims:
         out.append("<h3>Motion</h3><div class=\"media anim\">" + "".join(_animation(name, e) for e in anims) + "</div>")

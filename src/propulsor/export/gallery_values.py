@@ -18,6 +18,8 @@ from .units import name_stem, unit_from_name
 #: what a value that is not a number means, by part type (else NO_VALUE)
 NO_VALUE_WHY = {"noncircular_pair": "no free position: the pair jams", "polysector_gear": "no free position"}
 NO_VALUE = "not defined for this design"
+#: the same for a non-circular pair with the papers' sector teeth (``method = "sectors"``), which jam
+SECTOR_WHY = "sector method: not defined, its teeth jam"
 #: at most this many check names on a badge (then "and n more")
 BADGE_NAMES = 4
 
@@ -36,16 +38,18 @@ def number(v: float) -> str:
     return text.replace(",", "\u2009")
 
 
-def value_text(v, part: str = "") -> str:
-    """A derived value as the gallery shows it (a list or table as the report shows it)."""
+def value_text(v, part: str = "", why: str | None = None) -> str:
+    """A derived value as the gallery shows it (a list or table as the report shows it); `why`: what a value
+    that is not a number means (else by part type)."""
+    why = why or NO_VALUE_WHY.get(part, NO_VALUE)
     if isinstance(v, bool):
         return "yes" if v else "no"
     if isinstance(v, (int, float)):
         if isinstance(v, float) and not math.isfinite(v):
-            return f"— ({NO_VALUE_WHY.get(part, NO_VALUE)})" if math.isnan(v) else ("∞" if v > 0 else "−∞")
+            return f"— ({why})" if math.isnan(v) else ("∞" if v > 0 else "−∞")
         return number(float(v)) if isinstance(v, float) else str(v)
     if v is None:
-        return f"— ({NO_VALUE_WHY.get(part, NO_VALUE)})"
+        return f"— ({why})"
     return _fmt(v)
 
 

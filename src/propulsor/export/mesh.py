@@ -72,21 +72,43 @@ def _fixed_uuids(xml: bytes) -> bytes:
     return _UUID.sub(lambda m: f'UUID="{uuid.uuid5(uuid.NAMESPACE_OID, f"{seed}:{next(counter)}")}"'.encode(), xml)
 
 
-def _deterministic_zip(data: bytes) -> bytes:
+def _deterministic_zip(data: bytes, extra: dict[str, bytes] | None = None) -> bytes:
     """Rewrite a zip with fixed entry times and attributes (same order), UUIDs fixed, each entry deflated
-    here (trimesh's zip is written stored: its bodies are compressed once, not twice)."""
+    here (trimesh's zip is written stored: its bodies are compressed once, not twice); `extra` entries
+    {name: body} appended after them, alike."""
     out = io.BytesIO()
+
+    def put(zout, name: str, body: bytes) -> None:
+        zi = zipfile.ZipInfo(name, date_time=ZIP_DATE_TIME)
+        zi.compress_type = zipfile.ZIP_DEFLATED
+        zi.external_attr = 0o644 << 16
+        zi.create_system = 3
+        zout.writestr(zi, body, compress_type=zipfile.ZIP_DEFLATED, compresslevel=6)
+
     with zipfile.ZipFile(io.BytesIO(data)) as zin, zipfile.ZipFile(out, "w") as zout:
         for info in zin.infolist():
-            zi = zipfile.ZipInfo(info.filename, date_time=ZIP_DATE_TIME)
-            zi.compress_type = zipfile.ZIP_DEFLATED
-            zi.external_attr = 0o644 << 16
-            zi.create_system = 3
             body = zin.read(info.filename)
             if info.filename.endswith((".model", ".rels", ".xml")):
                 body = _fixed_uuids(body)
-            zout.writestr(zi, body, compress_type=zipfile.ZIP_DEFLATED, compresslevel=6)
+            put(zout, info.filename, body)
+        for name, body in (extra or {}).items():
+            put(zout, name, body)
     return out.getvalue()
+
+
+#: where PrusaSlicer (and its forks) keep a project's print settings inside a 3MF
+SLICER_CONFIG_ENTRY = "Metadata/Slic3r_PE.config"
+
+
+def slicer_config_text(config: dict[str, str]) -> str:
+    """PrusaSlicer's configuration text ("; key = value" lines, keys sorted) of `config`."""
+    lines = ["; the print kit's settings, written by propulsor: PrusaSlicer reads them with the plate"]
+    for key in sorted(config):
+        value = str(config[key])
+        if "\n" in value or "\r" in value:
+            raise ValueError(f"a slicer setting is one line: {key}")
+        lines.append(f"; {key} = {value}")
+    return "\n".join(lines) + "\n"
 
 
 def write_3mf(mesh: trimesh.Trimesh, path: str | Path, name: str = "") -> Path:
@@ -107,9 +129,10 @@ def write_3mf(mesh: trimesh.Trimesh, path: str | Path, name: str = "") -> Path:
     return path
 
 
-def write_3mf_objects(objects, path: str | Path) -> Path:
+def write_3mf_objects(objects, path: str | Path, slicer_config: dict[str, str] | None = None) -> Path:
     """One 3MF holding several named objects [(name, mesh)] in millimetres, each placed where its
-    vertices are (a print plate); zip time stamps and UUIDs fixed (deterministic)."""
+    vertices are (a print plate); zip time stamps and UUIDs fixed (deterministic).  `slicer_config`:
+    the print settings {PrusaSlicer key: value} the plate carries (``Metadata/Slic3r_PE.config``)."""
     path = Path(path)
     prepare(path)
     scene = trimesh.Scene()
@@ -119,7 +142,9 @@ def write_3mf_objects(objects, path: str | Path) -> Path:
         m.units = "millimeters"
         scene.add_geometry(m, geom_name=name, node_name=name)
     scene.units = "millimeters"
-    path.write_bytes(_deterministic_zip(trimesh.exchange.threemf.export_3MF(scene, compression=zipfile.ZIP_STORED)))
+    extra = {SLICER_CONFIG_ENTRY: slicer_config_text(slicer_config).encode()} if slicer_config else None
+    path.write_bytes(_deterministic_zip(trimesh.exchange.threemf.export_3MF(scene, compression=zipfile.ZIP_STORED),
+                                        extra))
     return path
 
 

@@ -38,6 +38,10 @@ def md_plain(text: str) -> str:
     return html.unescape(re.sub(r"\\([\\`*\[\]])", r"\1", text))
 
 
+#: a value that is not a number (NaN) as reports show it
+NOT_DEFINED = "— (not defined)"
+
+
 def _fmt(v) -> str:
     try:
         import numpy as np
@@ -51,8 +55,8 @@ def _fmt(v) -> str:
     if isinstance(v, bool):
         return "yes" if v else "no"
     if isinstance(v, float):
-        if not math.isfinite(v):
-            return str(v)
+        if not math.isfinite(v):  # never "nan" on a page: what it means
+            return NOT_DEFINED if math.isnan(v) else ("∞" if v > 0 else "−∞")
         return f"{v:.6g}"
     if isinstance(v, dict):
         return ", ".join(f"{k}: {_fmt(x)}" for k, x in v.items())

@@ -69,7 +69,10 @@ def write_guide(kit, w, plans, items, sliced: bool, title: str) -> None:
     lines += ["## 1. What to print", ""]
     lines += [f"Settings: {md_text(p.settings_text)}. Every piece lies on the face it is laid on in the plate "
               f"files (`plate_<k>.3mf`, one object a piece, mm); pins, axles and handles lie on the flat along "
-              f"their side so that their layers run along them.", ""]
+              f"their side so that their layers run along them.", "",
+              f"Each plate file carries these settings as a PrusaSlicer project (open it as a project: the printer "
+              f"gets what the times and grams below assume); its pieces sit centred on the bed, at least "
+              f"{p.margin_mm:g} mm from its edges, so that the slicer's skirt stays on the bed.", ""]
     lines += plates_lines(p, plans, sliced)
     lines += _table(["piece", "count", "what"], [[pc.name, str(pc.count), pc.what] for pc in kit.pieces])
     if kit.material_notes:
@@ -91,7 +94,8 @@ def write_guide(kit, w, plans, items, sliced: bool, title: str) -> None:
     for k, step in enumerate(kit.steps, 1):
         lines += [f"{k}. {md_text(step)}", ""]
         if k <= len(pics) and pics[k - 1]:
-            lines += [f"   ![step {k}]({pics[k - 1]})", ""]
+            # indented by four: the picture stays inside its step's item, and the steps one list numbered 1, 2, 3 …
+            lines += [f"    ![step {k}]({pics[k - 1]})", ""]
     lines += ["## 5. Tight or loose?", "",
               f"- A wheel that binds on its pin: `--set running_clearance_mm={p.running_clearance_mm + 0.1:g}`; "
               f"one that wobbles: `{max(0.1, p.running_clearance_mm - 0.1):g}`.",
@@ -102,7 +106,8 @@ def write_guide(kit, w, plans, items, sliced: bool, title: str) -> None:
               ""]
     if kit.guide_notes:
         lines += ["## 6. As printed", ""] + [md_text(t) + "\n" for t in kit.guide_notes]
-    lines += ["The proofs of the printed geometry are in [print_report.md](print_report.md).", ""]
+    lines += ["The proofs of the printed geometry are in [print_report.html](print_report.html) (its text: "
+              "[print_report.md](print_report.md)).", ""]
     path = w.path("print_guide.md")
     path.write_text("\n".join(lines), encoding="utf-8")
     w.path("print_guide.html")

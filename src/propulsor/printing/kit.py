@@ -93,11 +93,17 @@ def plate_checks(kit: Kit, plates, flat: dict) -> list[Check]:
             boxes.append(m.bounds)
         lo = np.min([b[0] for b in boxes], axis=0)
         hi = np.max([b[1] for b in boxes], axis=0)
-        inside = bool(lo[0] >= -1e-9 and lo[1] >= -1e-9 and hi[0] <= p.bed_x_mm + 1e-9 and hi[1] <= p.bed_y_mm + 1e-9
-                      and hi[2] <= p.bed_z_mm + 1e-9 and abs(lo[2]) < 1e-9)
+        m = p.margin_mm
+        inside = bool(lo[0] >= m - 1e-9 and lo[1] >= m - 1e-9 and hi[0] <= p.bed_x_mm - m + 1e-9
+                      and hi[1] <= p.bed_y_mm - m + 1e-9 and hi[2] <= p.bed_z_mm + 1e-9 and abs(lo[2]) < 1e-9)
         out.append(Check.flag(f"plate_{k}.on_bed", inside,
                               f"pieces span x {lo[0]:.1f} … {hi[0]:.1f}, y {lo[1]:.1f} … {hi[1]:.1f}, z 0 … {hi[2]:.1f} mm "
-                              f"on a {p.bed_x_mm:g} × {p.bed_y_mm:g} × {p.bed_z_mm:g} mm bed"))
+                              f"on a {p.bed_x_mm:g} × {p.bed_y_mm:g} × {p.bed_z_mm:g} mm bed, at least {m:g} mm from "
+                              f"its edges (the slicer's skirt)"))
+        centre = 0.5 * (lo[:2] + hi[:2])
+        off = float(np.max(np.abs(centre - [0.5 * p.bed_x_mm, 0.5 * p.bed_y_mm])))
+        out.append(Check.at_most(f"plate_{k}.centred", off, 1e-6, "mm",
+                                 f"the pieces' block centred on the bed (centre at x {centre[0]:.1f}, y {centre[1]:.1f} mm)"))
         gap = np.inf
         for i in range(len(boxes)):
             for j in range(i + 1, len(boxes)):
@@ -116,6 +122,9 @@ def _plate_picture(w, name: str, objects, printer: Printer) -> None:
 
     fig, ax = plt.subplots(figsize=(6, 6 * printer.bed_y_mm / printer.bed_x_mm))
     ax.add_patch(Rectangle((0, 0), printer.bed_x_mm, printer.bed_y_mm, fill=False, lw=1.5, ec="0.3"))
+    m = printer.margin_mm  # the pieces stay inside it: the slicer's skirt lies between it and the bed's edge
+    ax.add_patch(Rectangle((m, m), printer.bed_x_mm - 2 * m, printer.bed_y_mm - 2 * m, fill=False, lw=0.8, ec="0.6",
+                           ls="--"))
     for k, (label, mesh) in enumerate(objects):
         outline = mesh.vertices[:, :2]
         try:
@@ -230,7 +239,7 @@ def write_kit(kit: Kit, w, sliced: bool = False) -> None:
     plans, paths = [], []
     for k, plate in enumerate(plates, 1):
         objects = [(pl.name, placed(flat[pl.name], pl)) for pl in plate.placements]
-        write_3mf_objects(objects, w.path(f"plate_{k}.3mf"))
+        write_3mf_objects(objects, w.path(f"plate_{k}.3mf"), p.slicer_config())
         paths.append(w.path(f"plate_{k}.3mf"))
         _plate_picture(w, f"plate_{k}", objects, p)
         vol = sum(float(m.volume) for _, m in objects)
@@ -257,11 +266,20 @@ def write_kit(kit: Kit, w, sliced: bool = False) -> None:
     w.add_checks(kit.checks)
     _report_lead(kit, w, plans, sliced)
     w.add_note("The maker's guide — what to print, with what, how long, the hardware, the clearance coupon and the "
-               "assembly with pictures — is [print_guide.md](print_guide.md).")
+               "assembly with pictures — is [print_guide.html](print_guide.html) (its text: "
+               "[print_guide.md](print_guide.md)).")
     w.add_note("FDM allowances applied to the printed geometry: " + "; ".join(
         f"{name} {value:g} mm ({how})" for name, value, how in kit.allowances) + ".")
     for n in kit.notes:
         w.add_note(n)
+
+
+def _skirt_text(p: Printer) -> str:
+    """The skirt the plates' settings ask for, as the report says it."""
+    loops, distance = p.skirt()
+    if not loops:
+        return "no room for a skirt: the plates ask for none"
+    return f"room for the slicer's skirt, {loops} loop {distance:g} mm out of the pieces"
 
 
 def _report_lead(kit: Kit, w, plans, sliced: bool) -> None:
@@ -274,7 +292,8 @@ def _report_lead(kit: Kit, w, plans, sliced: bool) -> None:
 
     p = kit.printer
     lead = ["## What to print", "",
-            f"Printer: {md_text(p.label)}, {p.margin_mm:g} mm margins along the bed's edges. "
+            f"Printer: {md_text(p.label)}; each plate's pieces centred on the bed, at least {p.margin_mm:g} mm from "
+            f"its edges ({_skirt_text(p)}), and each plate file carries these print settings for the slicer. "
             f"Scale {kit.scale.label}: {md_text(kit.scale.reason)}.", "",
             f"Print settings: {md_text(p.settings_text)}.", ""]
     lead += plates_lines(p, plans, sliced)
@@ -288,7 +307,7 @@ def _report_lead(kit: Kit, w, plans, sliced: bool) -> None:
                                                        if h.instead_of else "") for h in kit.hardware] + [""]
     lead += [f"{k}. {md_text(step)}" for k, step in enumerate(kit.steps, 1)] + [""]
     lead += ["The pictures of every step, the side and exploded views and the clearance coupon are in the "
-             "maker's guide, [print_guide.md](print_guide.md).", ""]
+             "maker's guide, [print_guide.html](print_guide.html).", ""]
     w.report_lead = lead
     w.inputs_heading = f"Appendix: the full-size design's inputs (the part file; the model prints at {kit.scale.label})"
     w.inputs_last = True

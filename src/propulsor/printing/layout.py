@@ -4,7 +4,9 @@ A piece is a triangle mesh (trimesh).  :func:`lay_flat` turns it so that its lar
 (the largest coplanar facet, by area) lies on the bed, z = 0, and moves its footprint's corner to
 the origin.  :func:`pack` places footprints on as few plates as a shelf packer manages: pieces by
 decreasing depth, left to right along a shelf, a new shelf above the deepest piece of the last,
-a new plate when the bed is full; a piece is turned by 90° when only that fits.
+a new plate when the bed is full; a piece is turned by 90° when only that fits.  Each plate's pieces are
+then centred on the bed as one block: the room left over is shared between the opposite edges, none of
+them nearer to an edge than the margin (which holds the slicer's skirt, policy.PLATE_MARGIN_MM).
 """
 
 from __future__ import annotations
@@ -67,7 +69,8 @@ class Plate:
 def pack(footprints: dict[str, tuple[float, float]], bed_x: float, bed_y: float, gap: float,
          margin: float | None = None) -> list[Plate]:
     """Shelf packing of rectangular footprints {name: (x, y)} on beds of bed_x × bed_y with `gap`
-    between pieces and `margin` (None: the gap) to the bed's edge.  Deterministic (ties broken by name)."""
+    between pieces and at least `margin` (None: the gap) to the bed's edge, each plate's block of pieces
+    centred on the bed.  Deterministic (ties broken by name)."""
     margin = gap if margin is None else margin
     usable_x, usable_y = bed_x - 2 * margin, bed_y - 2 * margin
     items = []
@@ -83,6 +86,7 @@ def pack(footprints: dict[str, tuple[float, float]], bed_x: float, bed_y: float,
         items.append((name, (d, w) if turned else (w, d), turned))
     items.sort(key=lambda it: (-it[1][1], -it[1][0], it[0]))
     plates: list[Plate] = []
+    sizes = {name: size for name, size, _ in items}
     plate, x, y, shelf_d = None, 0.0, 0.0, 0.0
     for name, (w, d), turned in items:
         if plate is not None and x + w > usable_x + 1e-9:  # next shelf
@@ -94,7 +98,22 @@ def pack(footprints: dict[str, tuple[float, float]], bed_x: float, bed_y: float,
         plate.placements.append(Placement(name, margin + x, margin + y, turned))
         x += w + gap
         shelf_d = max(shelf_d, d)
+    for plate in plates:
+        _centre(plate, sizes, bed_x, bed_y)
     return plates
+
+
+def _centre(plate: Plate, sizes: dict[str, tuple[float, float]], bed_x: float, bed_y: float) -> None:
+    """Move a plate's pieces as one block so that their joint footprint is centred on the bed."""
+    lo_x = min(p.x for p in plate.placements)
+    lo_y = min(p.y for p in plate.placements)
+    hi_x = max(p.x + sizes[p.name][0] for p in plate.placements)
+    hi_y = max(p.y + sizes[p.name][1] for p in plate.placements)
+    dx = 0.5 * (bed_x - (hi_x - lo_x)) - lo_x
+    dy = 0.5 * (bed_y - (hi_y - lo_y)) - lo_y
+    for p in plate.placements:
+        p.x += dx
+        p.y += dy
 
 
 def placed(mesh: trimesh.Trimesh, p: Placement) -> trimesh.Trimesh:

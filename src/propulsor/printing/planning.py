@@ -52,7 +52,7 @@ def hours(seconds: int | None) -> str:
 
 def slice_plates(plans: list[PlatePlan], plate_paths: list[Path], printer, progress) -> list[Check]:
     """Slice every plate with the printer's settings; fill each plan's time and filament; the checks:
-    each plate slices, every object manifold and on the bed."""
+    each plate slices, every object manifold and on the bed, every extrusion of its G-code on the bed."""
     import time
 
     from .slicer import slice_plate
@@ -65,6 +65,8 @@ def slice_plates(plans: list[PlatePlan], plate_paths: list[Path], printer, progr
             r = slice_plate(path, printer.bed_shape(), Path(work) / f"plate_{plan.plate}.gcode",
                             args=printer.slicer_args())
             off = r.off_bed(printer.bed_x_mm, printer.bed_y_mm)
+            if r.ok:  # the skirt and brim too: every line the G-code lays lies on the bed
+                off += r.extrusions_off_bed(printer.bed_x_mm, printer.bed_y_mm)
             ok = r.ok and r.all_manifold and not off and "time_s" in r.stats and "filament_g" in r.stats
             checks.append(Check.flag(f"plate_{plan.plate}.sliced", ok,
                                      f"PrusaSlicer: {r.message}; {len(r.objects)} object(s), manifold: "

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
 
+from .. import policy
 from ..errors import InputError
 from ..params import load_params, param
 
@@ -34,8 +35,9 @@ class Printer:
     bed_z_mm: float = param(250.0, "mm", "largest print height (z)", min=50.0, max=1000.0, why=_WHY_BED)
     shape: str = param("rectangle", "", "bed outline (a rectangle bed_x_mm × bed_y_mm from the origin)",
                        choices=("rectangle",))
-    margin_mm: float = param(5.0, "mm", "keep-out along the bed's edges (clips, purge line)", min=0.0, max=50.0,
-                             why="a tenth of the smallest bed")
+    margin_mm: float = param(policy.PLATE_MARGIN_MM, "mm", "least distance of the pieces to the bed's edges: room "
+                             "for the slicer's skirt (PrusaSlicer's default, 6 mm out) and the bed's clips", min=0.0,
+                             max=50.0, why="a tenth of the smallest bed")
     nozzle_mm: float = param(0.4, "mm", "nozzle diameter", min=0.1, max=1.2, why="the largest common nozzles")
     layer_mm: float = param(0.2, "mm", "layer height", min=0.05, max=0.8, why="at most 2/3 of the largest nozzle")
     line_width_mm: float = param(0.0, "mm", "extrusion width (0: the nozzle diameter)", min=0.0, max=2.0,
@@ -95,23 +97,51 @@ class Printer:
                 f"{self.top_layers} top / {self.bottom_layers} bottom layers, {self.infill_percent:g} % infill, "
                 f"no supports")
 
+    def skirt(self) -> tuple[int, float]:
+        """(loops, distance mm) of the skirt the plates' settings ask for: PrusaSlicer's default skirt
+        (policy.SLICER_SKIRTS, SLICER_SKIRT_DISTANCE_MM) when the margin holds it with its line and the room
+        beyond; else one brought in to fit, or none (0, 0) when not even 1 mm does."""
+        room = self.margin_mm - policy.SLICER_BRIM_MM - policy.SLICER_SKIRTS * policy.SLICER_FIRST_LAYER_LINE_MM \
+            - policy.SLICER_EDGE_ROOM_MM
+        if room >= policy.SLICER_SKIRT_DISTANCE_MM:
+            return policy.SLICER_SKIRTS, policy.SLICER_SKIRT_DISTANCE_MM
+        return (policy.SLICER_SKIRTS, float(int(room))) if room >= 1.0 else (0, 0.0)
+
+    def slicer_config(self) -> dict[str, str]:
+        """The kit's print settings as PrusaSlicer's configuration keys and values (bed, nozzle, layers, walls,
+        infill, filament, temperatures, skirt and brim): the plates carry them (``Metadata/Slic3r_PE.config``)
+        and :meth:`slicer_args` gives them on the command line, so that a plate opened in the slicer prints what
+        the kit's times and grams were sliced with."""
+        loops, distance = self.skirt()
+        return {"bed_shape": self.bed_shape(), "max_print_height": f"{self.bed_z_mm:g}",
+                "nozzle_diameter": f"{self.nozzle_mm:g}", "layer_height": f"{self.layer_mm:g}",
+                "perimeters": str(self.perimeters), "fill_density": f"{self.infill_percent:g}%",
+                "top_solid_layers": str(self.top_layers), "bottom_solid_layers": str(self.bottom_layers),
+                "filament_type": self.material, "filament_diameter": f"{self.filament_d_mm:g}",
+                "filament_density": f"{self.density_g_cm3:g}", "temperature": f"{self.nozzle_temp_c:g}",
+                "first_layer_temperature": f"{self.nozzle_temp_c + 5:g}", "bed_temperature": f"{self.bed_temp_c:g}",
+                "first_layer_bed_temperature": f"{self.bed_temp_c:g}", "support_material": "0",
+                "skirts": str(loops), "skirt_distance": f"{distance:g}", "brim_width": f"{policy.SLICER_BRIM_MM:g}"}
+
     def slicer_args(self) -> list[str]:
-        """PrusaSlicer's command-line options for these settings (bed, nozzle, layers, walls, infill,
-        filament, temperatures)."""
-        return ["--bed-shape", self.bed_shape(), "--max-print-height", f"{self.bed_z_mm:g}",
-                "--nozzle-diameter", f"{self.nozzle_mm:g}", "--layer-height", f"{self.layer_mm:g}",
-                "--perimeters", str(self.perimeters), "--fill-density", f"{self.infill_percent:g}%",
-                "--top-solid-layers", str(self.top_layers), "--bottom-solid-layers", str(self.bottom_layers),
-                "--filament-type", self.material, "--filament-diameter", f"{self.filament_d_mm:g}",
-                "--filament-density", f"{self.density_g_cm3:g}", "--temperature", f"{self.nozzle_temp_c:g}",
-                "--first-layer-temperature", f"{self.nozzle_temp_c + 5:g}", "--bed-temperature",
-                f"{self.bed_temp_c:g}", "--first-layer-bed-temperature", f"{self.bed_temp_c:g}"]
+        """PrusaSlicer's command-line options for these settings (:meth:`slicer_config`)."""
+        out = []
+        for key, value in self.slicer_config().items():
+            flag = key.replace("_", "-")
+            if key in _SLICER_SWITCHES:  # an on/off option is a flag of its own: --support-material, --no-...
+                out.append(f"--{flag}" if value == "1" else f"--no-{flag}")
+            else:
+                out += [f"--{flag}", value]
+        return out
 
     def bed_shape(self) -> str:
         """The bed as PrusaSlicer's --bed-shape: corners x,y in mm."""
         x, y = self.bed_x_mm, self.bed_y_mm
         return f"0x0,{x:g}x0,{x:g}x{y:g},0x{y:g}"
 
+
+#: PrusaSlicer's on/off options among :meth:`Printer.slicer_config`'s keys
+_SLICER_SWITCHES = frozenset({"support_material"})
 
 #: keys a user's profile file must give (a bed of unknown size is no printer)
 REQUIRED_IN_FILE = ("bed_x_mm", "bed_y_mm", "bed_z_mm")

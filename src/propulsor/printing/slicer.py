@@ -5,7 +5,8 @@ Runs the command-line ``prusa-slicer`` (Debian package ``prusa-slicer``) when in
 ``--export-gcode --dont-arrange`` with the printer's bed and print settings
 (:meth:`.printers.Printer.slicer_args`) must exit 0 and write G-code, and ``--info`` must report
 ``manifold = yes`` for every object.  The G-code's own comments give the print time (normal mode)
-and the filament (mm, cm³, g): :func:`gcode_stats`.
+and the filament (mm, cm³, g): :func:`gcode_stats`; its moves that extrude, where the nozzle lays
+filament (skirt and brim too, not only the objects): :func:`extrusion_extents`.
 """
 
 from __future__ import annotations
@@ -32,6 +33,22 @@ class SliceResult:
     objects: list[dict] = field(default_factory=list)  # --info per object: name, manifold, size_*
     #: from the G-code's comments: time_s, filament_mm, filament_cm3, filament_g (:func:`gcode_stats`)
     stats: dict = field(default_factory=dict)
+
+    #: where the G-code extrudes (:func:`extrusion_extents`), None when not sliced
+    extrusion: dict | None = None
+
+    def extrusions_off_bed(self, bed_x: float, bed_y: float, tol: float = 1e-3) -> list[str]:
+        """Where the G-code lays filament off the bed (the lines' half widths counted): a sentence each."""
+        e = self.extrusion
+        if not e or not e["moves"]:
+            return ["no extrusion found"]
+        out = [f"{e['unplaced']} extruding move(s) before any X/Y"] if e["unplaced"] else []
+        for a, hi in (("x", bed_x), ("y", bed_y)):
+            if e[f"min_{a}"] < -tol:
+                out.append(f"{a} = {e[f'min_{a}']:.2f} mm < 0 (line {e[f'min_{a}_line']})")
+            if e[f"max_{a}"] > hi + tol:
+                out.append(f"{a} = {e[f'max_{a}']:.2f} mm > {hi:g} (line {e[f'max_{a}_line']})")
+        return out
 
     @property
     def all_manifold(self) -> bool:
@@ -100,6 +117,62 @@ def gcode_stats(text: str) -> dict:
     return out
 
 
+_WORD = re.compile(r"([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+))")
+
+
+def extrusion_extents(lines) -> dict:
+    """Where a G-code lays filament: the least and greatest x and y reached by a G0/G1 move that extrudes
+    (E above the last E in absolute mode M82, E > 0 in relative mode M83; G92 resets E), each end of the
+    move widened by half its line width (PrusaSlicer's ``;WIDTH:`` comments), with the G-code line of each
+    extreme; `moves`: the number of such moves, `unplaced`: those before any X and Y was known."""
+    x = y = None
+    e_abs, e_last, width = True, 0.0, 0.0
+    ext = {"moves": 0, "unplaced": 0}
+    for n, raw in enumerate(lines, 1):
+        line = raw.split(";", 1)[0].strip().upper()
+        if not line:
+            if raw.startswith(";WIDTH:"):
+                try:
+                    width = float(raw[7:])
+                except ValueError:
+                    pass
+            continue
+        words = dict(_WORD.findall(line))
+        code = line.split(None, 1)[0]
+        if code == "M82":
+            e_abs = True
+        elif code == "M83":
+            e_abs = False
+        elif code == "G92" and "E" in words:
+            e_last = float(words["E"])
+        elif code in ("G0", "G1", "G00", "G01"):
+            x0, y0 = x, y
+            x = float(words["X"]) if "X" in words else x
+            y = float(words["Y"]) if "Y" in words else y
+            if "E" not in words:
+                continue
+            e = float(words["E"])
+            extrudes = e > e_last + 1e-9 if e_abs else e > 1e-9
+            if e_abs:
+                e_last = e
+            if not extrudes:
+                continue
+            ext["moves"] += 1
+            if x is None or y is None:
+                ext["unplaced"] += 1
+                continue
+            h = 0.5 * width
+            for px, py in ((x0, y0), (x, y)):
+                if px is None or py is None:
+                    continue
+                for a, v in (("x", px), ("y", py)):
+                    if v - h < ext.get(f"min_{a}", float("inf")):
+                        ext[f"min_{a}"], ext[f"min_{a}_line"] = v - h, n
+                    if v + h > ext.get(f"max_{a}", float("-inf")):
+                        ext[f"max_{a}"], ext[f"max_{a}_line"] = v + h, n
+    return ext
+
+
 def slice_plate(path: Path, bed_shape: str, gcode: Path, layer_mm: float = 0.2, nozzle_mm: float = 0.4,
                 args: list[str] | None = None) -> SliceResult:
     """Slice one plate with the printer's bed (or with `args`, the printer's slicer_args, which hold the
@@ -114,17 +187,19 @@ def slice_plate(path: Path, bed_shape: str, gcode: Path, layer_mm: float = 0.2, 
               if "error" in line.lower() and "[trace]" not in line and "[debug]" not in line]
     ok = r.returncode == 0 and gcode.is_file() and gcode.stat().st_size > 0
     msg = "sliced" if ok else f"exit {r.returncode}: " + ("; ".join(errors[-3:]) or r.stderr.strip()[-300:])
-    stats = {}
+    stats, extrusion = {}, None
     if ok:
         with open(gcode, "rb") as fh:  # the comments are at the end
             fh.seek(max(0, gcode.stat().st_size - 64 * 1024))
             stats = gcode_stats(fh.read().decode("utf-8", "replace"))
-    return SliceResult(ok, msg, gcode.stat().st_size if gcode.is_file() else 0, info(path), stats)
+        with open(gcode, encoding="utf-8", errors="replace") as fh:
+            extrusion = extrusion_extents(fh)
+    return SliceResult(ok, msg, gcode.stat().st_size if gcode.is_file() else 0, info(path), stats, extrusion)
 
 
 def slice_kit(folder: Path, printer, work: Path, fullest_only: bool = False) -> list[tuple[str, SliceResult, list[str]]]:
     """Slice the plates of a kit folder with the printer's bed (every plate, or the one holding the most
-    pieces by the kit's ``tables/plates.csv``): [(plate file name, result, objects off the bed)]."""
+    pieces by the kit's ``tables/plates.csv``): [(plate file name, result, objects and extrusions off the bed)]."""
     folder, work = Path(folder), Path(work)
     plates = sorted(folder.glob("plate_*.3mf"))
     if fullest_only:
@@ -133,5 +208,6 @@ def slice_kit(folder: Path, printer, work: Path, fullest_only: bool = False) -> 
     out = []
     for plate in plates:
         r = slice_plate(plate, printer.bed_shape(), work / f"{plate.stem}.gcode", args=printer.slicer_args())
-        out.append((plate.name, r, r.off_bed(printer.bed_x_mm, printer.bed_y_mm)))
+        off = r.off_bed(printer.bed_x_mm, printer.bed_y_mm)
+        out.append((plate.name, r, off + (r.extrusions_off_bed(printer.bed_x_mm, printer.bed_y_mm) if r.ok else [])))
     return out
