@@ -32,14 +32,14 @@ def _table_csv() -> str:
 #: (law keys, the file the law names, its text, words of the refusal)
 BAD = {
     "elliptical": ('law = "elliptical"\neccentricity = 0.6\ndriver_turns = 1\nmodule_mm = 2.5\ndriven_teeth = 16\n'
-                   'driver_shift = 0.0\n', None, None, r"works with x >= 0\.337, or z_H >= 25"),
+                   'driver_shift = 0.0\n', None, None, r"works with driver_shift >= 0\.337, or driven_teeth >= 25"),
     "fourier": ('law = "fourier"\ndriver_turns = 4\nfourier_sin = [-0.12, 0.0, 0.0, 0.0]\nmodule_mm = 2.5\n'
-                'driven_teeth = 80\ndriver_shift = 0.5\n', None, None, r"works with x_H >= 0\.304, or z_H >= 176"),
+                'driven_teeth = 80\ndriver_shift = 0.5\n', None, None, r"works with driver_shift <= -0\.304, or driven_teeth >= 176"),
     "table": ('law = "table"\nlaw_file = "law.csv"\nmodule_mm = 2.0\ndriven_teeth = 60\ndriver_shift = -0.8\n',
-              "law.csv", _table_csv, r"works with x >= -0\.632, or z_H >= 68"),
+              "law.csv", _table_csv, r"works with driver_shift >= -0\.632, or driven_teeth >= 68"),
     "pitch_curve": ('law = "pitch_curve"\npitch_curve_file = "curve.csv"\ndriver_turns = 1\nmodule_mm = 2.5\n'
                     'driven_teeth = 40\ndriver_shift = 0.5\n', "curve.csv", _pitch_curve_csv,
-                    r"concave \|rho\|_min [\d.]+ mm needs a shaper with z0 <= 8"),
+                    r"concave \|rho\|_min [\d.]+ mm needs a shaper with shaper_teeth <= 8"),
 }
 
 

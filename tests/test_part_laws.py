@@ -85,7 +85,7 @@ def test_an_elliptical_pair_not_generable_says_what_would_make_it_so():
     p = _params(**{**ELLIPTICAL, "eccentricity": 0.6, "driven_teeth": 12, "driver_shift": 0.0,
                    "driver_bore_mm": 0.0, "driven_bore_mm": 0.0})
     with pytest.raises(InputError, match=r"^driver_shift = 0\.0: the elliptical law's pitch curves are not generable "
-                                         r".*works with x >= .*or z_H >= \d+"):
+                                         r".*works with driver_shift >= .*or driven_teeth >= \d+"):
         design(p)
 
 

@@ -432,7 +432,7 @@ def test_seed000_unshifted_refused_with_numbers(tmp_path, capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert rc == 2 and len(err) == 1
     msg = err[0]
-    for piece in ("rho_min 12.98", "undercut limit 17.097", "x >= 0.24", "z_H >= 128", "m <= 1.519",
+    for piece in ("rho_min 12.98", "undercut limit 17.097", "driver_shift >= 0.24", "driven_teeth >= 128", "module_mm <= 1.519",
                   "blend of 29.7", "ripple 16.2"):
         assert piece in msg, piece
     assert not (tmp_path / "out").exists()
@@ -442,7 +442,7 @@ def test_seed000_unshifted_refused_with_numbers(tmp_path, capsys):
     ("ncg_seed000", {"center_distance_band_mm": "0.01"}, "center_distance_band_mm = 0.01: no blend keeps both"),
     ("ncg_seed002", {"law_search": "false", "smoothing_deg": "3.0"}, "smoothing_deg = 3.0: the pitch curves are not"),
     ("ncg_seed000", {"law_search": "false", "smoothing_max_deg": "6.0"}, "smoothing_max_deg = 6.0: no C2 smoothing"),
-    ("ncg_seed000", {"law_search": "false", "shaper_teeth": "60"}, "needs a shaper with z0 <= 21"),
+    ("ncg_seed000", {"law_search": "false", "shaper_teeth": "60"}, "needs a shaper with shaper_teeth <= 21"),
     ("ncg_seed002", {"module_mm": "0.3"}, "module_mm = 0.3: the cutter catalogue lists no shaper"),
     ("ncg_seed002", {"mounting_distance_mm": "100.0"}, "mounting_distance_mm = 100.0: must be >= the design"),
 ])

@@ -26,7 +26,7 @@ import threading
 from pathlib import Path
 from typing import Callable
 
-from .errors import CheckFailed, EnvironmentFailure, FolderBusy
+from .errors import CheckFailed, EnvironmentFailure, FolderBusy, InputError
 from .progress import Reporter
 from .signals import check_signalled, held_signals
 
@@ -126,10 +126,25 @@ def load(part_file: Path) -> Loaded:
     params = load_params(part_type.params_cls, mapping, validate=False)
     # the size estimate first where it needs only the values (a design can itself be the long part)
     early = not size_needs_design(part_type)
-    estimate = check_size(part_type, params, part_file) if early else None
-    vet(part_type, params, part_file)  # the rules between fields, then the design's own feasibility (may take seconds)
-    estimate = estimate or check_size(part_type, params, part_file)
+    try:
+        estimate = check_size(part_type, params, part_file) if early else None
+        vet(part_type, params, part_file)  # the rules between fields, then the design's own feasibility (may take s)
+        estimate = estimate or check_size(part_type, params, part_file)
+    except InputError as exc:
+        raise default_named(exc, mapping, part_type.params_cls) from None
     return Loaded(part_type, params, part_file, estimate)
+
+
+def default_named(exc: InputError, mapping: dict, params_cls) -> InputError:
+    """`exc` as it is, or, where it names a parameter the part file does not set, with that said: the value is the
+    part type's default (a user reading "driver_shift = 0.5" looks for a line that is not there)."""
+    names = {f.name for f in dataclasses.fields(params_cls)}
+    if type(exc) is not InputError or exc.parameter not in names or exc.parameter in mapping:
+        return exc
+    said = f"{exc.parameter} is not in the part file: {exc.value!r} is its default"
+    out = InputError(exc.parameter, exc.value, exc.limit, f"{exc.hint}; {said}" if exc.hint else said)
+    out.__dict__.update({k: v for k, v in exc.__dict__.items() if k not in ("parameter", "value", "limit", "hint")})
+    return out
 
 
 def load_part(part_file: Path):

@@ -357,3 +357,7 @@ SLICER_EDGE_ROOM_MM = 1.0
 #: the pieces' least distance to the bed's edge (a printer profile's default margin_mm): the brim, the skirt's
 #: distance and its loops, and the room beyond them (0 + 6 + 0.7 + 1 = 7.7, rounded up to whole mm)
 PLATE_MARGIN_MM = 8.0
+
+#: the smallest module a non-circular pair takes (mm): the smallest of ISO 54 and GOST 9563 (0.05 mm); below it the
+#: solvers meet the limits of double precision at the part's other lengths (a scipy warning, then a refusal)
+MODULE_MIN_MM = 0.05

@@ -169,7 +169,8 @@ def _evaluate(law: WalkingLaw, delta: float, cutter: CutterSpec, z_H: int):
 
 def choose_smoothing(law: WalkingLaw, cutter: CutterSpec, z_H: int,
                      delta_max: float = DELTA_MAX_DEFAULT,
-                     rtol: float = SMOOTHING_DELTA_RTOL, limits: dict | None = None) -> SmoothingDesign:
+                     rtol: float = SMOOTHING_DELTA_RTOL, limits: dict | None = None,
+                     keys: dict | None = None) -> SmoothingDesign:
     """Smallest blend half-width delta <= delta_max keeping both pitch curves generable.
 
     The centre distance follows from closure at each delta: L = pi m z_H / perimeter.
@@ -195,7 +196,7 @@ def choose_smoothing(law: WalkingLaw, cutter: CutterSpec, z_H: int,
             break
         prev_bad = float(d)
     if found is None:
-        raise _no_smoothing_error(law, cutter, z_H, delta_max, limits)
+        raise _no_smoothing_error(law, cutter, z_H, delta_max, limits, keys)
     lo, hi = prev_bad, found
     while hi - lo > rtol * hi:
         mid = 0.5 * (lo + hi)
@@ -209,18 +210,21 @@ def choose_smoothing(law: WalkingLaw, cutter: CutterSpec, z_H: int,
                            generability=g, ripple=hub_speed_ripple(sl))
 
 
-def _no_smoothing_error(law, cutter, z_H, delta_max, limits=None) -> InputError:
+def _no_smoothing_error(law, cutter, z_H, delta_max, limits=None, keys=None) -> InputError:
+    """`keys`: the part's names of the quantities (:func:`remedies`; "delta": the blend's half-width key, in deg)."""
+    keys = keys or {}
     sl, L, g = _evaluate(law, delta_max, cutter, z_H)
     if g is None:
         return InputError("delta_max", delta_max, "the blend makes U <= 0 before the curves become generable")
-    bits = remedies(g, cutter, z_H, law.n, L, limits)
+    bits = remedies(g, cutter, z_H, law.n, L, limits, keys)
     # the smallest smoothing that would work beyond delta_max
     more = ""
     if delta_max < math.pi / 4:
         for d in np.linspace(delta_max, math.pi / 4, 25)[1:]:
             s, LL, gg = _evaluate(law, float(d), cutter, z_H)
             if gg is not None and gg.ok:
-                more = f"; delta = {d:.4f} rad would work"
+                more = (f"; {keys['delta']} >= {math.degrees(d):.2f} would work" if "delta" in keys
+                        else f"; delta = {d:.4f} rad would work")
                 break
         else:
             more = "; no delta up to pi/4 works"
@@ -229,14 +233,28 @@ def _no_smoothing_error(law, cutter, z_H, delta_max, limits=None) -> InputError:
                       " | ".join(bits) + more)
 
 
-def remedies(g: Generability, cutter: CutterSpec, z_H: int, n: int, L: float, limits: dict | None = None) -> list[str]:
+def remedies(g: Generability, cutter: CutterSpec, z_H: int, n: int, L: float, limits: dict | None = None,
+             keys: dict | None = None) -> list[str]:
     """What would make each failing pitch curve generable: the profile shift, the teeth or the module
     (convex stretches against the rack undercut limit), the shaper's teeth (concave stretches).
 
     `limits`: {"x": (lo, hi), "x_H": …, "z_H": …, "m": …, "z0": …}, the ranges the part's parameters allow;
     a remedy outside its range (or not a finite number) is not offered, and when none is left the text says
-    that no value within the limits works."""
+    that no value within the limits works.  `keys`: the names a part file gives these quantities
+    ({"x": "driver_shift", "x_H": "-driver_shift", "z_H": "driven_teeth", "m": "module_mm", "z0": "shaper_teeth"};
+    a leading "-" is the negative of that key, so x_H >= v reads driver_shift <= -v); None: the symbols."""
     limits = limits or {}
+    keys = keys or {}
+
+    def at_least(name, v, fmt):
+        """`name >= v` in the part's key (its negative turned round)."""
+        key = keys.get(name, name)
+        if key.startswith("-"):
+            return f"{key[1:]} <= {format(-v, fmt)}"
+        return f"{key} >= {format(v, fmt)}"
+
+    def key(name):
+        return keys.get(name, name)
 
     def within(name, v):
         lo, hi = limits.get(name, (-math.inf, math.inf))
@@ -256,11 +274,11 @@ def remedies(g: Generability, cutter: CutterSpec, z_H: int, n: int, L: float, li
                 z_need = math.ceil(z_H * chk.rho_limit / chk.rho_convex_min / n) * n
                 m_max = chk.rho_convex_min * s2 / (cutter.h_a - x) if cutter.h_a > x else math.inf
                 if within(name, x_need):
-                    options.append(f"{name} >= {x_need:.3f}")
+                    options.append(at_least(name, x_need, ".3f"))
                 if within("z_H", z_need):
-                    options.append(f"z_H >= {z_need} at m = {cutter.m:g}")
+                    options.append(f"{key('z_H')} >= {z_need} at {key('m')} = {cutter.m:g}")
                 if within("m", m_max) and m_max > 0:
-                    options.append(f"m <= {m_max:.4g} mm at L = {L:.3f} mm")
+                    options.append(f"{key('m')} <= {m_max:.4g} mm at L = {L:.3f} mm")
             if options:
                 bits.append(f"{head}; works with {', or '.join(options)}")
             else:
@@ -270,7 +288,7 @@ def remedies(g: Generability, cutter: CutterSpec, z_H: int, n: int, L: float, li
             z0_max = math.ceil(2 * chk.rho_concave_min / cutter.m) - 1
             if within("z0", z0_max) and z0_max >= 1:
                 bits.append(f"{chk.curve}: concave |rho|_min {chk.rho_concave_min:.3f} mm needs a shaper with "
-                            f"z0 <= {z0_max} (r0 < |rho|)")
+                            f"{key('z0')} <= {z0_max} (r0 < |rho|)")
             else:
                 bits.append(f"{chk.curve}: concave |rho|_min {chk.rho_concave_min:.3f} mm: no shaper within the "
                             "limits fits inside it (r0 < |rho|; a smoother law)")

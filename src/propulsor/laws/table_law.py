@@ -123,6 +123,18 @@ def read_table_text(path: Path, key: str, what: str) -> str:
         raise InputError(key, str(path), "must be UTF-8 text") from None
 
 
+def _closing_row_hint(th, ph) -> str:
+    """Where the table stops one even step short of a period, the row that would close it (the first row one
+    period on): a table lists its closing row, the first row's driver and driven angles plus one period's."""
+    d_th, d_ph = th[-1] - th[-2], ph[-1] - ph[-2]
+    span_ph, span_th = ph[-1] - ph[0] + d_ph, th[-1] - th[0] + d_th
+    N = 360.0 / span_ph
+    n = span_th * round(N) / 360.0
+    if abs(N - round(N)) * span_ph < CLOSE_TOL_DEG and abs(n - round(n)) * 360.0 / round(N) < CLOSE_TOL_DEG:
+        return f" (the rows seem to stop one step short: add the closing row {th[0] + span_th:g},{ph[0] + span_ph:g})"
+    return ""
+
+
 def read_law_table(path: Path, key: str = "law_file") -> tuple[tuple[float, ...], tuple[float, ...]]:
     """``parse_law_table`` of a file (InputError naming ``key`` if it cannot be read)."""
     return parse_law_table(read_table_text(path, key, "a law table"), key)
@@ -159,8 +171,8 @@ class TableLaw:
         N = 360.0 / span_ph
         if not abs(N - round(N)) * span_ph < CLOSE_TOL_DEG:
             raise _bad(key, len(th), float(ph[-1]),
-                       f"the last row closes the period: the driven span {span_ph:g} deg must divide 360 deg",
-                       "driven_deg")
+                       f"the last row closes the period: the driven span {span_ph:g} deg must divide 360 deg"
+                       + _closing_row_hint(th, ph), "driven_deg")
         N = int(round(N))
         n = span_th * N / 360.0
         if not (abs(n - round(n)) * 360.0 / N < CLOSE_TOL_DEG and round(n) >= 1):

@@ -42,15 +42,16 @@ def _smoothing(p, law: WalkingLaw, m: float):
         return SmoothingDesign(law=sl, delta=sl.delta, L=L, z_H=z_H, z=z_H // law.n, cutter=cutter,
                                generability=g, ripple=hub_speed_ripple(sl))
     try:
-        from .smooth_law import generability_limits
+        from .smooth_law import PART_KEYS, generability_limits
 
-        return choose_smoothing(law, cutter, z_H, delta_max=math.radians(p.smoothing_max_deg), limits=generability_limits(p))
+        return choose_smoothing(law, cutter, z_H, delta_max=math.radians(p.smoothing_max_deg),
+                                limits=generability_limits(p), keys={**PART_KEYS, "delta": "smoothing_max_deg"})
     except InputError as exc:
         best = _smallest_generable(law, cutter, z_H) if p.smoothing_max_deg < 45.0 else "no blend up to 45 deg works"
         raise InputError(
             "smoothing_max_deg", p.smoothing_max_deg,
             f"no C2 smoothing up to {p.smoothing_max_deg:g} deg keeps both pitch curves generable: "
-            f"{str(exc).split(': ', 1)[-1]} [x = driver_shift, z_H = driven_teeth, z0 = shaper_teeth, m = module_mm]",
+            f"{str(exc).split(': ', 1)[-1]}",
             best) from None
 
 

@@ -266,6 +266,9 @@ class NoncircularPairParams(PartParams):
                              "load_life_hours needs the driver's speed (> 0 rpm) to count the load cycles")
 
     def validate(self) -> None:
+        if 0 < self.module_mm < policy.MODULE_MIN_MM:
+            raise InputError("module_mm", self.module_mm, f"must be 0 (from center_distance_mm) or >= "
+                             f"{policy.MODULE_MIN_MM:g} mm, the smallest module of ISO 54 / GOST 9563")
         self._validate_law_keys()
         self._validate_load()
         if self.law != "walking":

@@ -55,6 +55,11 @@ def _cutters(p, law, m: float, pc) -> list:
     return cands
 
 
+#: the part file's keys of the quantities a generability remedy names (the driven wheel's shift is -driver_shift)
+PART_KEYS = {"x": "driver_shift", "x_H": "-driver_shift", "z_H": "driven_teeth", "m": "module_mm",
+             "z0": "shaper_teeth"}
+
+
 def generability_limits(p) -> dict:
     """The ranges of the parameters a generability hint may name (their fields' limits): the driver's
     profile shift x (the driven wheel's x_H = -x), the driven teeth z_H, the module m, the shaper's z0."""
@@ -102,7 +107,7 @@ def screen_smooth(p, law) -> SmoothScreen:
         cutter = CutterSpec(m=m, alpha=alpha, x=p.driver_shift, x_H=-p.driver_shift,
                             z0=p.shaper_teeth if sh is None else sh.z0, shaper_x0=None if sh is None else sh.x0)
         g = check_generable(pc, cutter)
-        why = "" if g.ok else "; ".join(remedies(g, cutter, z_H, law.n, L, generability_limits(p)))
+        why = "" if g.ok else "; ".join(remedies(g, cutter, z_H, law.n, L, generability_limits(p), PART_KEYS))
         if not why:  # the shaper the concave stretches need must exist
             try:
                 with input_names(TOOTH_KEYS if entry is None else TOOTH_KEYS_D0):
