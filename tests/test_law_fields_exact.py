@@ -218,3 +218,21 @@ def test_theta_remembers_its_last_array_by_its_values_and_shape():
     np.testing.assert_array_equal(again.ravel(), th)
     th[0] = 99.0  # the caller's copy, not the remembered one
     assert law.theta(phi)[0] != 99.0
+
+
+def test_a_law_table_one_row_short_of_its_period_is_told_the_row_that_closes_it():
+    from propulsor.laws.table_law import TableLaw
+
+    short = ([30.0 * i for i in range(12)], [15.0 * i for i in range(12)])  # 0 ... 330, 0 ... 165: 360,180 missing
+    assert _err(TableLaw, *short) == (
+        "law_file row 12 driven_deg", 165.0, "the last row closes the period: the driven span 165 deg must divide "
+                                             "360 deg (the rows seem to stop one step short: add the closing row "
+                                             "360,180)")
+    TableLaw(tuple(short[0] + [360.0]), tuple(short[1] + [180.0]))  # with it, a law
+    # a 4-period table (driven 1 ... 91) one step short: the closing row is one period on, not one turn
+    four = ([22.5 * i for i in range(8)], [11.25 * i + 1.0 for i in range(8)])
+    assert _err(TableLaw, *four)[2].endswith("(the rows seem to stop one step short: add the closing row 180,91)")
+    TableLaw(tuple(four[0] + [180.0]), tuple(four[1] + [91.0]))
+    # rows that do not stop one even step short: no row to suggest
+    assert _err(TableLaw, [0.0, 40, 80, 120, 160, 200, 240, 300], [0.0, 20, 40, 60, 80, 100, 120, 170])[2] == (
+        "the last row closes the period: the driven span 170 deg must divide 360 deg")
