@@ -236,3 +236,14 @@ def test_a_law_table_one_row_short_of_its_period_is_told_the_row_that_closes_it(
     # rows that do not stop one even step short: no row to suggest
     assert _err(TableLaw, [0.0, 40, 80, 120, 160, 200, 240, 300], [0.0, 20, 40, 60, 80, 100, 120, 170])[2] == (
         "the last row closes the period: the driven span 170 deg must divide 360 deg")
+
+
+def test_lobes_are_counted_on_the_driven_pitch_curve():
+    from propulsor.laws.pitch_curve_law import PitchCurveLaw
+    from propulsor.parts.noncircular_pair.law_outputs import lobes_text
+
+    a = np.linspace(0.0, 360.0, 72, endpoint=False)
+    oval = PitchCurveLaw(tuple(a), tuple(40 / (1 + 0.2 * np.cos(np.radians(2 * a)))), 1)  # 2-fold, k = 1
+    assert [lobes_text(x) for x in (EllipticalLaw(0.3), EllipticalLaw(0.2, 2), FourierLaw(3, (0.02,), (0.03,)),
+                                    oval, EllipticalLaw(0.0))] == [
+        "1 lobe", "2 lobes", "3 lobes", "2 lobes", "a round wheel (no lobes)"]

@@ -60,16 +60,26 @@ def speed_ratio_plot(w, d: Design, pr=None):
 
 _LAW_TEXT = {
     "elliptical": "the driver an ellipse about a focus, r1 = p / (1 + e cos theta), e = {e:g}, the driven wheel "
-                  "r2 = L - r1 with {k} lobe(s); closure integral r1 / (L - r1) dtheta = 2 pi / k gives p / L = {q:.6f} "
+                  "r2 = L - r1 with {lobes}; closure integral r1 / (L - r1) dtheta = 2 pi / k gives p / L = {q:.6f} "
                   "(Litvin & Fuentes-Aznar, Noncircular Gears, 2009, ch. 3-4)",
     "fourier": "phi(theta) = theta / k + sum_j (c_j cos j theta + s_j sin j theta), k = {k}, {J} harmonic(s)",
     "table": "the part file's table of {rows} rows over one period of {P:g} deg, a periodic quintic spline of "
              "theta(phi) - n phi through them",
     "pitch_curve": "the driver's pitch curve of the part file ({rows} rows, a periodic quintic spline r(a)) with "
-                   "its conjugate driven wheel of {k} lobe(s): closure integral r / (L0 - r) dtheta = 2 pi / k at "
+                   "its conjugate driven wheel of {lobes}: closure integral r / (L0 - r) dtheta = 2 pi / k at "
                    "L0 = {L0:.6f} mm as given, the pair scaled by L / L0 = {S:.6f} so that its perimeter holds the "
                    "teeth",
 }
+
+
+def lobes_text(law, samples: int = 4096) -> str:
+    """The driven wheel's lobes counted on its pitch curve: the maxima of its radius r2 = L U / (1 + U), i.e. of U,
+    over one driven turn (a 2-fold oval driver with k = 1 makes a 2-lobe driven wheel); "a round wheel" for none."""
+    U = np.asarray(law.U(np.linspace(0.0, 2 * math.pi, samples, endpoint=False)), float)
+    if float(np.ptp(U)) <= 1e-9 * float(np.mean(U)):
+        return "a round wheel (no lobes)"
+    lobes = int(np.count_nonzero((U > np.roll(U, 1)) & (U >= np.roll(U, -1))))
+    return f"{lobes} lobe" + ("" if lobes == 1 else "s")
 
 
 def law_notes(w, d, pr, p, mount, s) -> None:
@@ -77,7 +87,7 @@ def law_notes(w, d, pr, p, mount, s) -> None:
     law = d.law
     g = d.smoothing.generability
     text = _LAW_TEXT[law.kind].format(
-        e=getattr(law, "e", 0.0), k=law.n, q=getattr(law, "q", 0.0), J=len(getattr(law, "_j", ())),
+        e=getattr(law, "e", 0.0), k=law.n, lobes=lobes_text(law), q=getattr(law, "q", 0.0), J=len(getattr(law, "_j", ())),
         rows=getattr(law, "rows", len(getattr(law, "driven_deg", ()))), P=math.degrees(law.period),
         L0=getattr(law, "L0", 0.0), S=d.L / getattr(law, "L0", d.L))
     w.add_note(
