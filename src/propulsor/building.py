@@ -113,20 +113,24 @@ def vet_depfile(depfile, out: Path, out_value: str, params, part_file: Path) -> 
 LOADED: dict[Path, "Loaded"] = {}
 
 
-def load(part_file: Path) -> Loaded:
+def load(part_file: Path, progress=None) -> Loaded:
     """The part file read and its parameters checked as far as anything can be before a build: fields, the
-    rules between them, the size estimate and the design's own feasibility (``parts.vet``).  InputError."""
+    rules between them, the size estimate and the design's own feasibility (``parts.vet``).  InputError.
+    `progress`: a callback for the steps on the way (the part type's imports, the feasibility)."""
     if part_file in LOADED:
         return LOADED.pop(part_file)
+    say = Reporter.of(progress)
     from .params import load_params, read_part_file
     from .parts import check_size, get_part_type, size_needs_design, vet
 
     part_type_name, mapping = read_part_file(part_file)
+    say(f"{part_type_name}: loading the part type (CAD kernel, checks)")
     part_type = get_part_type(part_type_name)
     params = load_params(part_type.params_cls, mapping, validate=False)
     # the size estimate first where it needs only the values (a design can itself be the long part)
     early = not size_needs_design(part_type)
     estimate = check_size(part_type, params, part_file) if early else None
+    say(f"{part_type_name}: checking the parameters and the design's feasibility")
     vet(part_type, params, part_file)  # the rules between fields, then the design's own feasibility (may take seconds)
     estimate = estimate or check_size(part_type, params, part_file)
     return Loaded(part_type, params, part_file, estimate)

@@ -20,30 +20,11 @@ from pathlib import Path
 from . import building
 from .building import gallery_folder, regenerate_gallery, vet_depfile, write_depfile, write_gallery_locked
 from .errors import CheckFailed, EnvironmentFailure, InputError
+from .render import Renderer
 from .signals import SIGNALLED, Interrupted, check_signalled, hold_signals, raise_interrupted, unraisable
 
 #: the exit codes (README, «Command line»): the command line's alone; the build service raises exceptions
 EXIT_OK, EXIT_CHECK_FAILED, EXIT_BAD_INPUT, EXIT_ENVIRONMENT = 0, 1, 2, 3
-
-
-class Renderer:
-    """The command line's face of the build's events (``progress.Event``): a step of the work as
-    ``[  t s] message`` on stderr with the time since the start (none with -q), a notice as
-    ``propulsor: message`` (always).  Before each it checks for a signal whose exception was swallowed: a safe
-    point to stop."""
-
-    def __init__(self, quiet: bool = False, stream=None):
-        self.quiet = quiet
-        self.stream = stream
-        self.t0 = time.perf_counter()
-
-    def __call__(self, event) -> None:
-        check_signalled()
-        stream = self.stream or sys.stderr
-        if getattr(event, "kind", "progress") == "notice":
-            print(f"propulsor: {event}", file=stream, flush=True)
-        elif not self.quiet:
-            print(f"[{time.perf_counter() - self.t0:6.1f} s] {event}", file=stream, flush=True)
 
 
 def fail_input(exc: Exception) -> int:
@@ -82,7 +63,7 @@ def cmd_gallery(args) -> int:
     if not built_parts(folder) and not found_studies(folder):
         return fail_input(InputError("folder", str(folder), "holds no built part (no */manifest.json) and no "
                                      "design study (no */study.json)"))
-    progress = Renderer(args.quiet)
+    progress = Renderer(args.quiet, live=False)
     try:
         path = write_gallery_locked(folder)
     except EnvironmentFailure as exc:
@@ -135,17 +116,23 @@ def cmd_build(args) -> int:
 def build_one(args, part_file: Path, depfile: Path | None) -> int:
     """Build one part file into its output folder (``--out`` or output/<file name>) through the build service;
     ``--dry-run`` validates and estimates only.  Returns the exit code."""
+    with Renderer(args.quiet) as render:
+        return _build_one(args, part_file, depfile, render)
+
+
+def _build_one(args, part_file: Path, depfile: Path | None, render: Renderer) -> int:
     from . import output_folder as of
 
-    render = Renderer(args.quiet)
+    render(f"{part_file}: reading the part file")
     try:
         out = building.target(args.out, Path("output") / part_file.stem, args.force, keep=(part_file,))
-        part = building.load(part_file)
+        part = building.load(part_file, progress=render)
         out = of.vet_target(out, force=args.force, keep=part.files_read)
         vet_depfile(depfile, out, args.out or str(out), part.params, part_file)
     except InputError as exc:
         return fail_input(exc)
     if args.dry_run:
+        render.close()
         print(f"{part.part_type.name}: {part_file} is valid; would build into {out}; "
               f"size estimate {part.estimate.text()}")
         return EXIT_OK
@@ -217,18 +204,23 @@ def _settings(pairs) -> dict:
 
 def cmd_print(args) -> int:
     """A print kit of a part file: pieces at print scale with the FDM allowances, a rig, plates."""
+    with Renderer(args.quiet) as render:
+        return _print(args, render)
+
+
+def _print(args, render: Renderer) -> int:
+    part_file = Path(args.part_file)
+    render(f"{part_file}: reading the part file and the printer profile")
     from . import output_folder as of
     from .parts import get_kit
     from .printing.printers import is_profile_path, load_printer
 
-    render = Renderer(args.quiet)
-    part_file = Path(args.part_file)
     try:
         out = building.target(args.out, Path("output") / f"{part_file.stem}_kit", args.force, keep=(part_file,))
         printer = load_printer(args.printer, _settings(args.set), bed=args.bed)
         sliced = _slice_arg(args.slice)
         S = _scale_arg(args.scale)
-        part = building.load(part_file)
+        part = building.load(part_file, progress=render)
         get_kit(part.part_type.name)  # a part type without a kit is refused here
         profile = Path(args.printer) if args.bed is None and is_profile_path(args.printer) else None
         keep = part.files_read + ((profile,) if profile is not None else ())  # the user's profile file too
@@ -315,10 +307,15 @@ def cmd_params(args) -> int:
 
 def cmd_explore(args) -> int:
     """A design study: every variant of the study file evaluated on a Dask cluster, one table, ranked."""
+    with Renderer(args.quiet) as progress:
+        return _explore(args, progress)
+
+
+def _explore(args, progress: Renderer) -> int:
+    progress(f"{args.study}: reading the study file")
     from .study import load_study
     from .study.engine import run
 
-    progress = Renderer(args.quiet)
     try:
         cores = os.cpu_count() or 1
         if args.workers is not None and not 1 <= args.workers <= cores:
