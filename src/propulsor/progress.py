@@ -27,7 +27,7 @@ PROGRESS, NOTICE = "progress", "notice"
 #: the least time between two count events of one Reporter (the first and the last of a phase always go)
 COUNT_EVERY_S = 0.1
 
-__all__ = ["Event", "Reporter", "PROGRESS", "NOTICE", "COUNT_EVERY_S"]
+__all__ = ["Event", "Reporter", "PROGRESS", "NOTICE", "COUNT_EVERY_S", "counter"]
 
 
 class Event(str):
@@ -95,3 +95,11 @@ class Reporter:
     def notice(self, message: str) -> None:
         if self.callback is not None:
             self.callback(Event(message, NOTICE))
+
+
+def counter(progress, phase: str, total: int, unit: str = "") -> Callable[[int], None]:
+    """``tick(done)``: `done` of `total` of the step `phase` through `progress` when it is a :class:`Reporter`
+    (which reports 0 of `total` now); with any other callback (text only) or none, a tick that does nothing."""
+    if isinstance(progress, Reporter):
+        return progress.counter(phase, total, unit)
+    return lambda done: None

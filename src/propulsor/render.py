@@ -4,7 +4,7 @@
   them one live line (rich, transient: gone when the command ends) with a spinner, the step, its count and bar
   when it counts ("proof: phase 120/400") and the time left at its pace.
 * Elsewhere (a pipe, a log file, make's output): plain lines only, one per step; a step that counts prints
-  its first count and then at most one line each :data:`PLAIN_EVERY_S`, with the time left.
+  its first count, then at most one line each :data:`PLAIN_EVERY_S` with the time left, and its last.
 * ``-q``: nothing but the notices.
 
 A notice is ``propulsor: message`` either way, quiet or not.  Several builds side by side (``batch``) each send
@@ -57,6 +57,12 @@ def _eta(done, total, started: float, now: float) -> float | None:
     return (now - started) / done * max(0, total - done)
 
 
+def _with_eta(text: str, done, total, eta) -> str:
+    """`text` of a count with the time left at its pace (not when done, unknown, or the text gives its own)."""
+    left = eta_text(eta) if done is not None and total is not None and 0 < done < total else ""
+    return f"{text}, {left}" if left and " left" not in text else text
+
+
 def _isatty(stream) -> bool:
     try:
         return bool(stream.isatty())
@@ -105,12 +111,11 @@ class Renderer:
                 self._line(self._stamp(now, phase if counted and done == 0 else str(event)))
             self._show(phase, done, total, eta, new)
             return
-        if counted and not new and now - self._printed < PLAIN_EVERY_S:
+        if counted and not new and done < total and now - self._printed < PLAIN_EVERY_S:
             return
         if counted:
             self._printed = now
-        left = eta_text(eta) if counted and 0 < done < total else ""
-        self._line(self._stamp(now, f"{event}, {left}" if left else str(event)))
+        self._line(self._stamp(now, _with_eta(str(event), done, total, eta)))
 
     def _stamp(self, now: float, text: str) -> str:
         return f"[{now - self.t0:6.1f} s] {text}"
@@ -267,13 +272,12 @@ class Board:
                                   completed=done or 0, count=f"{done}/{total}" if counted else "",
                                   eta=eta_text(eta))
             return
-        if counted and not new and now - row["printed"] < PLAIN_EVERY_S:
+        if counted and not new and done < total and now - row["printed"] < PLAIN_EVERY_S:
             return
         if counted:
             row["printed"] = now
-        left = eta_text(eta) if counted and 0 < done < total else ""
-        text = ev.get("text", phase)
-        self.line(f"[{now - self.t0:6.1f} s] {row['name']}: {text}" + (f", {left}" if left else ""))
+        text = _with_eta(ev.get("text", phase), done, total, eta)
+        self.line(f"[{now - self.t0:6.1f} s] {row['name']}: {text}")
 
     def end(self, key) -> None:
         """Build `key` ended: its live line goes."""
