@@ -99,17 +99,20 @@ def cmd_build(args) -> int:
         from .batch import with_jobserver
 
         return with_jobserver(one, budget, jobserver)
-    from .batch import in_child, preload, side_by_side
+    with Renderer(args.quiet) as render:
+        render(f"{len(files)} part files: loading the CAD kernel and the checks")
+        from .batch import in_child, preload, side_by_side
 
-    preload()
+        preload()
 
-    def depfile(part_file):
-        return Path(args.depfile_dir) / f"{part_file.stem}.mk" if args.depfile_dir else None
+        def depfile(part_file):
+            return Path(args.depfile_dir) / f"{part_file.stem}.mk" if args.depfile_dir else None
 
-    if budget > 1 and can_fork() and not args.dry_run:
-        codes = side_by_side(args, files, depfile, budget, build_one, jobserver)
-    else:
-        codes = [in_child(build_one, args, f, depfile(f)) for f in files]
+        if budget > 1 and can_fork() and not args.dry_run:
+            codes = side_by_side(args, files, depfile, budget, build_one, jobserver, progress=render)
+        else:
+            render.close()
+            codes = [in_child(build_one, args, f, depfile(f)) for f in files]
     return max(codes, key=lambda c: (c == EXIT_BAD_INPUT, c))
 
 

@@ -32,13 +32,17 @@ __all__ = ["Renderer", "Board", "eta_text", "forward_to", "PLAIN_EVERY_S"]
 _RUNNING: list = []
 #: a pipe to the command that forked this build (batch.side_by_side), or None
 _FORWARD_FD: int | None = None
+#: the steps are printed by the Board of the command that forked this build: its Renderers print notices only
+_SHOWN_THERE = False
 
 
-def forward_to(fd: int | None) -> None:
+def forward_to(fd: int | None, shown_there: bool = False) -> None:
     """Send every event of this process's Renderers also to `fd` (one JSON line each), for the Board of the
-    command that forked this build; None stops it."""
-    global _FORWARD_FD
-    _FORWARD_FD = fd
+    command that forked this build; None stops it.  `shown_there`: the Board prints the steps (not a terminal),
+    so the Renderers here print the notices only (the build's output, written out when it ends, would repeat
+    them)."""
+    global _FORWARD_FD, _SHOWN_THERE
+    _FORWARD_FD, _SHOWN_THERE = fd, bool(shown_there and fd is not None)
 
 
 def eta_text(seconds: float | None) -> str:
@@ -96,7 +100,7 @@ class Renderer:
         if getattr(event, "kind", "progress") == "notice":
             self._line(f"propulsor: {event}")
             return
-        if self.quiet:
+        if self.quiet or _SHOWN_THERE:
             return
         now = time.perf_counter()
         phase = getattr(event, "phase", None) or str(event)
@@ -277,7 +281,9 @@ class Board:
         if counted:
             row["printed"] = now
         text = _with_eta(ev.get("text", phase), done, total, eta)
-        self.line(f"[{now - self.t0:6.1f} s] {row['name']}: {text}")
+        if not text.startswith(f"{row['name']}: "):
+            text = f"{row['name']}: {text}"
+        self.line(f"[{now - self.t0:6.1f} s] {text}")
 
     def end(self, key) -> None:
         """Build `key` ended: its live line goes."""
