@@ -292,8 +292,11 @@ def build_kit(part: Loaded, out, printer, *, scale: float | None = None, sliced:
         from .parts.writer import OutputWriter
         from .printing.kit import write_kit
 
+        import inspect
+
         say(f"{name}: print kit for the {printer.name} printer")
-        kit = make_kit(part.params, printer, scale, source=part.source)
+        told = {"progress": say} if "progress" in inspect.signature(make_kit).parameters else {}
+        kit = make_kit(part.params, printer, scale, source=part.source, **told)
         writer = OutputWriter(tmp, name, part.params, progress=say, source=part.source)
         writer.report_name = "print_report.md"
         writer.title = f"Print kit: {writer.title}"

@@ -13,8 +13,8 @@ whose ``phase`` is the step's own message and whose ``done`` / ``total`` are set
 the command line draws a bar with an estimate of the time left.  The counts of one Reporter are throttled to
 :data:`COUNT_EVERY_S` (the first and the last of a phase always go), so a loop may report every turn.
 
-The command line renders them (``cli.Renderer``: one line each on stderr); the Python API passes them to the
-caller's callback, or drops them.
+The command line renders them (``render.Renderer``: a line per step on stderr, a live line on a terminal); the
+Python API passes them to the caller's callback, or drops them.
 """
 
 from __future__ import annotations

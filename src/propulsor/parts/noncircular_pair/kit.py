@@ -176,10 +176,12 @@ def _pitch_fits(p: NoncircularPairParams, extents: dict, printer: Printer) -> bo
 
 
 def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, source=None,
-        full_size_first: bool = True) -> Kit:
+        full_size_first: bool = True, progress=None) -> Kit:
     """The kit; full_size_first: where only the padded estimate keeps a searched pair from 1:1, the
     printed pair is searched and cut at 1:1 first and its own outlines decide (the full-size design is
-    made only when they do not fit: then the kit is made again without this shortcut)."""
+    made only when they do not fit: then the kit is made again without this shortcut).  `progress`: told the
+    steps (the designs, the printed pair's proof and its phases)."""
+    say = progress or (lambda msg: None)
     from ...solids.build import extrude_profile
     from ...solids.kernel import cylinder
 
@@ -194,8 +196,10 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
         if choice.S != 1.0 and scale is None and full_size_first and _pitch_fits(p, extents, printer):
             choice, at_1_first = ScaleChoice(1.0, "every piece fits the bed at full size"), True
         elif choice.S != 1.0:
+            say("kit: the full-size pair's design")
             full = pair_design(p, source)
     else:
+        say("kit: the full-size pair's design")
         full = pair_design(p, source)
     if full is not None:
         m, L_est = full.d.m, full.mount
@@ -212,7 +216,7 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     base_len = L_est / S + 2 * R_boss
     if base_len > max(printer.bed_x_mm, printer.bed_y_mm) - 2 * printer.margin_mm:
         if at_1_first:
-            return kit(p, printer, scale, source, full_size_first=False)
+            return kit(p, printer, scale, source, full_size_first=False, progress=progress)
         raise InputError("--scale", choice.label, f"the base bar ({base_len:.1f} mm) does not fit the bed")
     check_printable(S, m, printer.min_module_mm, choice=choice)
     clear, under, press = printer.running_clearance_mm, printer.hole_undersize_mm, printer.press_fit_mm
@@ -222,8 +226,9 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     alpha = math.radians(p.pressure_angle_deg)
     for attempt in range(2):
         q = _kit_params(p if full is None else _found_law(p, full.d), m, S, printer, j_n, bores)
+        say(f"kit: the printed pair's design at 1:{S:g}" + (" (thinned again)" if attempt else ""))
         kd = pair_design(q, source)
-        proof = prove(kd.d, q.proof_phases_per_tooth, 4, mount=kd.mount)
+        proof = prove(kd.d, q.proof_phases_per_tooth, 4, say, mount=kd.mount)
         s = proof.summary()
         jn_min = s["backlash_min_mm"] * math.cos(alpha)
         if not (jn_min < printer.backlash_mm and math.isfinite(jn_min)) or attempt == 1:
@@ -237,7 +242,7 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     if at_1_first:
         real = {"driver": (*_extent(drv_prof), w), "driven": (*_extent(dvn_prof), w)}
         if choose_scale(real, bed, None, margin=printer.margin_mm).S != 1.0 or rig is None or rig[0] != pin[0]:
-            return kit(p, printer, scale, source, full_size_first=False)  # the printed pair does not fit at 1:1
+            return kit(p, printer, scale, source, full_size_first=False, progress=progress)  # the printed pair does not fit at 1:1
     if rig is None or rig[0] != pin[0]:
         raise InputError("--scale", choice.label, f"the driver (root radius {mm(d.driver.root_min_radius)} mm) has no "
                          f"room for a ⌀{HANDLE_STEEL_MIN_MM:g} mm handle beside a ⌀{PRINTED_PIN_MIN_MM:g} mm pin; "
