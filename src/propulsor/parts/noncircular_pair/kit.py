@@ -122,18 +122,29 @@ def _found_law(p: NoncircularPairParams, d) -> NoncircularPairParams:
                                shaper_own_x0=True, shaper_x0=d.shaper.x0)
 
 
-def _as_printed(p: NoncircularPairParams, kd, printer: Printer) -> tuple[list, list[str]]:
+def _as_printed(p: NoncircularPairParams, kd, printer: Printer, progress=None) -> tuple[list, list[str]]:
     """With the part file's tolerance_grade set: the printed pair within the printer's xy accuracy and the pins'
-    running clearance (``tolerance.printed``), its worst-case corners and Monte Carlo cases: (checks, guide text)."""
+    running clearance (``tolerance.printed``), its worst-case corners and Monte Carlo cases: (checks, guide text).
+    `progress`: told the cases run (a count)."""
     from ... import policy
+    from ...progress import counter
     from .as_built_outputs import tolerance_check
     from .tolerance import monte_carlo_cases, printed, run_case, worst_cases
 
     if not p.tolerance_grade or kd.d.method != "generated":
         return [], []
     tol = printed(policy.PRINT_XY_ACCURACY_MM, printer.running_clearance_mm)
-    worst = [run_case(kd.d, kd.mount, c) for c in worst_cases(tol)]
-    mc = [run_case(kd.d, kd.mount, c) for c in monte_carlo_cases(tol, p.tolerance_samples, p.tolerance_seed)]
+    corners, draws = worst_cases(tol), monte_carlo_cases(tol, p.tolerance_samples, p.tolerance_seed)
+    tick = counter(progress, "kit: the printed pair within the printer's tolerances", len(corners) + len(draws),
+                   "case")
+
+    def run(k: int, c):
+        r = run_case(kd.d, kd.mount, c)
+        tick(k + 1)
+        return r
+
+    worst = [run(k, c) for k, c in enumerate(corners)]
+    mc = [run(len(corners) + k, c) for k, c in enumerate(draws)]
     chk = tolerance_check(tol, worst, p.speed_step_max)
     text = [f"The printed pair within {tol.source}: least backlash {min(r.backlash_min_mm for r in worst):.3f} mm "
             f"at the worst case ({'; '.join(f'{r.case.name} {r.backlash_min_mm:.3f} mm' for r in worst)})."]
@@ -257,6 +268,7 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
              for a in (math.pi + 2 * math.pi * k / n for k in range(n))]
     dvn_prof = _with_holes(dvn_prof, marks)
     ch = printer.chamfer_mm
+    say("kit: solids (the pair, the base, pins, washers and caps)")
     driver = extrude_profile(drv_prof, w)
     driven = extrude_profile(dvn_prof, w)
     base_prof = _base_profile(L, R_boss, [d_ - 2 * press + under for d_ in pin])
@@ -314,7 +326,8 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
                 Placed("handle", "handle", place(dx=L + r_h, dz=z0), "tab:red")][:6 if handle_printed else 5]
     assembly += rings_at
     prefix = "mesh" if d.method == "generated" else "sectors"
-    printed_tol = _as_printed(p, kd, printer)
+    printed_tol = _as_printed(p, kd, printer, progress)
+    say("kit: the hand on the crank")
     hand, hand_text = _hand_on_crank(q, kd, proof, r_h)
     checks = [Check.at_most(f"{prefix}.overlap_area", s["overlap_law_max_mm2"], 1e-6, "mm^2",
                             f"printed outlines over {s['steps']} phases of the whole cycle")]
