@@ -185,3 +185,49 @@ def test_forwarded_events(tmp_path, monkeypatch):
     monkeypatch.setattr(render, "_FORWARD_FD", None)
     with os.fdopen(rfd, "rb") as f:
         assert json.loads(f.readline()) == dict(kind="progress", text="proof: 2/5", phase="proof", done=2, total=5)
+
+
+def _fake_build(args, part_file, depfile):
+    """A build that reports as a real one does (its own Renderer, a step, a count, a notice)."""
+    import time
+
+    with Renderer(args.quiet) as r:
+        say = Reporter(r)
+        say(f"{part_file.stem}: solids")
+        tick = say.counter(f"{part_file.stem}: proof", 3, "phase")
+        for i in range(1, 4):
+            time.sleep(0.05)
+            tick(i)
+        say.notice(f"{part_file.stem}: a notice")
+    return 0
+
+
+@pytest.mark.parametrize("quiet", [False, True])
+def test_builds_side_by_side_report_through_the_board(monkeypatch, capfd, quiet):
+    """`propulsor build a b` (what make runs), stderr not a terminal: each build's steps and counts come as
+    plain lines while it runs, named by its part file, and are not repeated when its own output is written
+    out at its end (that keeps its notices); -q: the notices only."""
+    from pathlib import Path
+
+    import propulsor.cli as cli
+
+    root = Path(__file__).resolve().parents[1]
+    monkeypatch.setenv("PROPULSOR_JOBS", "2")
+    monkeypatch.delenv("MAKEFLAGS", raising=False)
+    monkeypatch.setattr(cli, "build_one", _fake_build)
+    files = [str(root / "parts" / f"{n}.toml") for n in ("road_wheel", "cam_linear")]
+    assert cli.main(["build", *files] + (["-q"] if quiet else [])) == 0
+    err = capfd.readouterr().err.splitlines()
+    notices = [ln for ln in err if ln.endswith(": a notice")]
+    assert sorted(notices) == ["propulsor: cam_linear: a notice", "propulsor: road_wheel: a notice"]
+    if quiet:
+        assert err == notices
+        return
+    assert err[0] == "[   0.0 s] 2 part files: loading the CAD kernel and the checks"
+    for f, stem in zip(files, ("road_wheel", "cam_linear")):
+        mine = [ln for ln in err if f in ln or ln.startswith(f"propulsor: {stem}")]
+        assert f"propulsor: building {f}" in mine
+        assert sum(ln.endswith(f"{f}: {stem}: solids") for ln in err) == 1, err  # the board's, while it runs
+        assert not any(ln.endswith(f"s] {stem}: solids") for ln in err), err  # not again in its output at its end
+        assert any(ln.endswith(f"{f}: {stem}: proof: phase 0/3") for ln in mine), err
+        assert any(ln.endswith(f"{f}: {stem}: proof: phase 3/3") for ln in mine), err

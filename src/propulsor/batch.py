@@ -54,7 +54,7 @@ def side_by_side(args, files: list[Path], depfile, slots: int, build, jobserver=
     running: dict[int, tuple[int, object, object, bytes | None]] = {}
     pipes: dict[int, int] = {}  # pid -> the read end of its events' pipe
     codes: list[int] = [0] * len(files)  # each the exit code its build ends with
-    board = Board(args.quiet)
+    board = Board(args.quiet, t0=getattr(progress, "t0", None))
 
     def drain(timeout: float) -> None:
         if not pipes:

@@ -227,10 +227,10 @@ class Board:
     on a terminal one live line per build (its part file, step, count and time left), elsewhere one plain
     line per step of each (a counting step as :class:`Renderer` prints it), nothing when `quiet`."""
 
-    def __init__(self, quiet: bool = False, stream=None, live: bool | None = None):
+    def __init__(self, quiet: bool = False, stream=None, live: bool | None = None, t0: float | None = None):
         self.quiet = quiet
         self.stream = stream
-        self.t0 = time.perf_counter()
+        self.t0 = time.perf_counter() if t0 is None else t0  # the command's start (its Renderer's t0)
         self.live = (not quiet) and (_isatty(stream or sys.stderr) if live is None else bool(live))
         self._progress = None
         self._rows: dict[object, dict] = {}
