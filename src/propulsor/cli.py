@@ -2,7 +2,7 @@
 
 Exit codes: 0 built and every check passed; 1 built but a check failed (outputs
 kept only with --keep-failed) or `check` found invalid files; 2 bad input
-(one line on stderr, nothing written); 3 the environment refused (disk full, read-only file
+(one line on stderr after the progress lines, nothing written); 3 the environment refused (disk full, read-only file
 system, permission: one line naming the path and the errno, nothing published); 130 / 143
 interrupted by SIGINT / SIGTERM (one line, no temporary folder and no worker process left).
 """
