@@ -39,13 +39,14 @@ def side_by_side(args, files: list[Path], depfile, slots: int, build, jobserver=
     at once as `slots` (the process budget, shared with the children's own workers once the last build
     has started: parallel.share_slots; under make's `jobserver` a slot beyond the first also takes one
     of make's tokens), the longest first.  Each child's output is held in a temporary file and written
-    out whole when it ends, so that the lines of two builds do not interleave.  A signal stops every
-    build."""
+    out whole when it ends, so that the lines of two builds do not interleave; meanwhile each sends its events
+    through a pipe to a :class:`~.render.Board` (one live line per build on a terminal, a plain line per step
+    elsewhere).  `progress`: told the part files checked before the first build starts (then closed).  A
+    signal stops every build."""
+    import select
     import tempfile
 
     from .parallel import open_slots_to_workers, share_slots
-
-    import select
 
     pool = share_slots(slots, jobserver)
     pending = longest_first(files, progress)
