@@ -100,3 +100,30 @@ def test_quiet_build_prints_nothing_on_success(tmp_path):
 def test_dry_run_quiet_prints_the_answer_only(tmp_path):
     code, got, out = _lines("build", str(ROOT / "parts" / "road_wheel.toml"), "--dry-run", "-q")
     assert code == 0 and got == [] and "is valid" in out
+
+
+def test_on_a_terminal_a_live_line_that_goes_when_the_command_ends(tmp_path):
+    """stderr a terminal (a pty): the steps as lines and a live line drawn for a terminal under them, the cursor
+    shown again at the end, stdout's answer intact; nothing of the live line left in a file written."""
+    import pty
+
+    master, slave = pty.openpty()
+    p = subprocess.Popen([sys.executable, "-m", "propulsor.cli", "build", str(ROOT / "parts" / "road_wheel.toml"),
+                          "--dry-run"], stdin=subprocess.DEVNULL, stdout=slave, stderr=slave, cwd=tmp_path)
+    os.close(slave)
+    data = b""
+    while True:
+        try:
+            chunk = os.read(master, 65536)
+        except OSError:  # EIO: the terminal's last writer has gone
+            break
+        if not chunk:
+            break
+        data += chunk
+    os.close(master)
+    assert p.wait(timeout=120) == 0
+    text = data.decode("utf-8", "replace")
+    assert "road_wheel.toml: reading the part file" in text and "is valid" in text
+    assert "\x1b[?25l" in text and "\x1b[?25h" in text  # the live line hid the cursor and gave it back
+    assert text.index("\x1b[?25h") < text.index("is valid")  # closed before the answer is printed
+    assert list(tmp_path.iterdir()) == []
