@@ -231,3 +231,20 @@ def test_builds_side_by_side_report_through_the_board(monkeypatch, capfd, quiet)
         assert not any(ln.endswith(f"s] {stem}: solids") for ln in err), err  # not again in its output at its end
         assert any(ln.endswith(f"{f}: {stem}: proof: phase 0/3") for ln in mine), err
         assert any(ln.endswith(f"{f}: {stem}: proof: phase 3/3") for ln in mine), err
+
+
+class _Terminal(io.StringIO):
+    def isatty(self) -> bool:
+        return True
+
+
+@pytest.mark.parametrize("makeflags, live", [(None, True), ("", True), (" -j2 --jobserver-auth=3,4", False),
+                                             (" -j", False)])
+def test_live_on_a_terminal_but_not_under_a_parallel_make(monkeypatch, makeflags, live):
+    """`make -jN` may run other commands drawing on the same terminal at once: plain lines there."""
+    if makeflags is None:
+        monkeypatch.delenv("MAKEFLAGS", raising=False)
+    else:
+        monkeypatch.setenv("MAKEFLAGS", makeflags)
+    assert Renderer(stream=_Terminal()).live is live and Board(stream=_Terminal()).live is live
+    assert not Renderer(quiet=True, stream=_Terminal()).live

@@ -1,6 +1,6 @@
 """The command line's face of the build's events (:mod:`.progress`): what a running command shows on stderr.
 
-* On a terminal: each new step as a line ``[  t s] message`` (t: the time since the command started) and under
+* On a terminal (not under ``make -jN``, whose other jobs may draw on it too): each new step as a line ``[  t s] message`` (t: the time since the command started) and under
   them one live line (rich, transient: gone when the command ends) with a spinner, the step, its count and bar
   when it counts ("proof: phase 120/400") and the time left at its pace.
 * Elsewhere (a pipe, a log file, make's output): plain lines only, one per step; a step that counts prints
@@ -74,6 +74,14 @@ def _isatty(stream) -> bool:
         return False
 
 
+def _live_on(stream) -> bool:
+    """Whether to draw live lines on `stream`: a terminal, and not under a parallel make (``make -jN`` may run
+    other commands that draw on the same terminal at once: plain lines there)."""
+    from .parallel import make_jobs
+
+    return _isatty(stream) and make_jobs() in (None, 1)
+
+
 class Renderer:
     """The events of one command on `stream` (default: sys.stderr at the time of each event): live on a
     terminal (`live` None: when `stream` is one), plain lines elsewhere, nothing but notices when `quiet`.
@@ -84,7 +92,7 @@ class Renderer:
         self.quiet = quiet
         self.stream = stream
         self.t0 = time.perf_counter()
-        self.live = (not quiet) and (_isatty(stream or sys.stderr) if live is None else bool(live))
+        self.live = (not quiet) and (_live_on(stream or sys.stderr) if live is None else bool(live))
         self._progress = None  # the rich Progress, started at the first event
         self._task = None
         self._phase: str | None = None
@@ -231,7 +239,7 @@ class Board:
         self.quiet = quiet
         self.stream = stream
         self.t0 = time.perf_counter() if t0 is None else t0  # the command's start (its Renderer's t0)
-        self.live = (not quiet) and (_isatty(stream or sys.stderr) if live is None else bool(live))
+        self.live = (not quiet) and (_live_on(stream or sys.stderr) if live is None else bool(live))
         self._progress = None
         self._rows: dict[object, dict] = {}
 
