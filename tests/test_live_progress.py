@@ -248,3 +248,46 @@ def test_live_on_a_terminal_but_not_under_a_parallel_make(monkeypatch, makeflags
         monkeypatch.setenv("MAKEFLAGS", makeflags)
     assert Renderer(stream=_Terminal()).live is live and Board(stream=_Terminal()).live is live
     assert not Renderer(quiet=True, stream=_Terminal()).live
+
+
+def _ticking_job(n: int) -> int:
+    import time
+
+    from propulsor.parallel import tick
+
+    for i in range(1, n + 1):
+        time.sleep(0.02)
+        tick(i, n)
+    return n
+
+
+@pytest.mark.parametrize("jobs", ["1", "2"])
+def test_a_job_counts_to_the_build_that_started_it(monkeypatch, jobs):
+    """parallel.start(..., counter=): a job's ticks reach the counter — at once when it runs inline (a budget of
+    one process), through a pipe while parallel.result waits for it when forked (the last always)."""
+    from propulsor import parallel
+
+    monkeypatch.setenv("PROPULSOR_JOBS", jobs)
+    monkeypatch.delenv("MAKEFLAGS", raising=False)
+    got = []
+    with parallel.Workers():
+        job = parallel.start(_ticking_job, 20, counter=lambda done, total: got.append((done, total)))
+        assert parallel.result(job) == 20
+        assert parallel.result(parallel.start(_ticking_job, 3)) == 3  # without a counter: as before
+    if jobs == "1":
+        assert isinstance(job, parallel.Done) and got == [(i, 20) for i in range(1, 21)]
+    else:
+        assert not isinstance(job, parallel.Done) and got[-1] == (20, 20) and 1 <= len(got) < 20
+        assert job.propulsor_ticks.fd == -1  # its pipe closed once collected
+    assert parallel._TICK is None
+
+
+def test_a_count_read_late_paces_from_its_first_count(clock):
+    """A worker's count read only when the build waits for it starts at, say, 2500/7200: the time left is at
+    the pace from there, not as if those 2500 had taken no time."""
+    out = io.StringIO()
+    r = Renderer(stream=out, live=False)
+    r(Event("c: 2500/7200", PROGRESS, "c", 2500, 7200))
+    clock.t += 10
+    r(Event("c: 3000/7200", PROGRESS, "c", 3000, 7200))
+    assert out.getvalue().splitlines()[-1] == "[  10.0 s] c: 3000/7200, about 84 s left"

@@ -27,7 +27,7 @@ PROGRESS, NOTICE = "progress", "notice"
 #: the least time between two count events of one Reporter (the first and the last of a phase always go)
 COUNT_EVERY_S = 0.1
 
-__all__ = ["Event", "Reporter", "PROGRESS", "NOTICE", "COUNT_EVERY_S", "counter"]
+__all__ = ["Event", "Reporter", "PROGRESS", "NOTICE", "COUNT_EVERY_S", "counter", "count_to"]
 
 
 class Event(str):
@@ -103,3 +103,11 @@ def counter(progress, phase: str, total: int, unit: str = "") -> Callable[[int],
     if isinstance(progress, Reporter):
         return progress.counter(phase, total, unit)
     return lambda done: None
+
+
+def count_to(progress, phase: str, unit: str = "") -> Callable[[int, int], None] | None:
+    """``count(done, total)`` of the step `phase` through `progress` when it is a :class:`Reporter` (for work
+    whose total is known as it runs: ``parallel.start``'s counter); None otherwise."""
+    if isinstance(progress, Reporter):
+        return lambda done, total: progress.count(phase, done, total, unit)
+    return None

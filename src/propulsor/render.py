@@ -49,16 +49,17 @@ def eta_text(seconds: float | None) -> str:
     """'about 12 s left', 'about 3 min left' ('' when unknown)."""
     if seconds is None or not seconds >= 0 or seconds == float("inf"):
         return ""
-    if seconds < 60:
+    if seconds < 100:
         return f"about {max(1, round(seconds))} s left"
     return f"about {seconds / 60:.0f} min left" if seconds < 5940 else f"about {seconds / 3600:.1f} h left"
 
 
-def _eta(done, total, started: float, now: float) -> float | None:
-    """The time left at the pace so far: (now - started) / done * (total - done); None before any is done."""
-    if done is None or total is None or done <= 0 or total <= 0:
+def _eta(done, total, started: float, now: float, done0: int = 0) -> float | None:
+    """The time left at the pace since the step's first count (`done0` done at `started`): (now - started) /
+    (done - done0) * (total - done); None before more is done."""
+    if done is None or total is None or done <= done0 or total <= 0:
         return None
-    return (now - started) / done * max(0, total - done)
+    return (now - started) / (done - done0) * max(0, total - done)
 
 
 def _with_eta(text: str, done, total, eta) -> str:
@@ -97,6 +98,7 @@ class Renderer:
         self._task = None
         self._phase: str | None = None
         self._phase_t0 = self.t0
+        self._phase_done0 = 0
         self._printed = -float("inf")  # when the last plain line of a counting step was printed
         self._closed = False
 
@@ -115,9 +117,9 @@ class Renderer:
         done, total = getattr(event, "done", None), getattr(event, "total", None)
         counted = done is not None and total is not None
         new = phase != self._phase
-        if new:
-            self._phase, self._phase_t0 = phase, now
-        eta = _eta(done, total, self._phase_t0, now) if counted else None
+        if new:  # a count that starts late (a worker's, read when the build waits for it) paces from its first
+            self._phase, self._phase_t0, self._phase_done0 = phase, now, (done or 0) if counted else 0
+        eta = _eta(done, total, self._phase_t0, now, self._phase_done0) if counted else None
         if self.live and not self._closed:
             if new:
                 self._line(self._stamp(now, phase if counted and done == 0 else str(event)))
@@ -277,8 +279,8 @@ class Board:
         counted = done is not None and total is not None
         new = phase != row["phase"]
         if new:
-            row["phase"], row["t"] = phase, now
-        eta = _eta(done, total, row["t"], now) if counted else None
+            row["phase"], row["t"], row["done0"] = phase, now, (done or 0) if counted else 0
+        eta = _eta(done, total, row["t"], now, row["done0"]) if counted else None
         if self.live:
             self._progress.update(row["task"], description=f"{row['name']}: {phase}", total=total if counted else None,
                                   completed=done or 0, count=f"{done}/{total}" if counted else "",

@@ -25,17 +25,19 @@ def _result(dd, built: dict, progress=None) -> AsBuilt | None:
         return as_built(dd.d, dd.mount, built["proof"])
     if jobs == ():
         return None
-    return combine(dd.d, *_collected(jobs, progress, "as built: contact events", "direction"))
+    return combine(dd.d, *_collected(jobs, progress, "as built: both directions' contact", "direction"))
 
 
 def _collected(jobs, progress, phase: str, unit: str) -> list:
     """The results of the jobs in their order, counted as they come when some run in workers (those run in
     this process were counted when they ran)."""
-    from ...parallel import Done
+    from ...parallel import Done, result
     from ...progress import counter
 
     if all(isinstance(j, Done) for j in jobs):
         return [j.result() for j in jobs]
+    if any(hasattr(j, "propulsor_ticks") for j in jobs):  # they count themselves while they are waited for
+        return [result(j) for j in jobs]
     tick = counter(progress, phase, len(jobs), unit)
     out = []
     for k, j in enumerate(jobs):

@@ -127,7 +127,7 @@ def _counted(job, tick, k: int):
 def proofs(dd: PairDesign, w, built: dict) -> None:
     """The built pair over the whole cycle; the other tooth method over one leg when asked."""
     from ...parallel import start
-    from ...progress import counter
+    from ...progress import count_to, counter
     from ...checks.motion.contact_events import DRIVE, REVERSE
     from .as_built import contact_direction
 
@@ -139,10 +139,10 @@ def proofs(dd: PairDesign, w, built: dict) -> None:
     else:
         prog("as built: both directions' contact on the finished outlines, resolved by contact events")
         # the two directions beside each other and beside the other method's proof (in this process when no
-        # worker is free: then each start is the work itself, counted)
-        tick = counter(prog, "as built: contact events", 2, "direction")
-        built["as_built"] = tuple(_counted(start(contact_direction, d, dd.mount, way), tick, k + 1)
-                                  for k, way in enumerate((DRIVE, REVERSE)))
+        # worker is free: then each start is the work itself); their sampled positions counted
+        built["as_built"] = tuple(start(contact_direction, d, dd.mount, way,
+                                        counter=count_to(prog, f"as built: {name} contact", "position"))
+                                  for way, name in ((DRIVE, "drive"), (REVERSE, "reverse")))
         if p.tolerance_grade:
             from .tolerance import iso1328, monte_carlo_cases, run_case, worst_cases
 
