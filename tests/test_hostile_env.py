@@ -13,6 +13,7 @@ import errno
 import hashlib
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -45,7 +46,9 @@ def _popen(*args, env=None):
 
 
 def _one_error_line(stderr: str) -> str:
-    lines = [line for line in stderr.splitlines() if line.strip()]
+    """The one line of a refusal; the progress lines before it (``[  t s] …``: the command says what it reads
+    within a second, before it finds what it refuses) are not counted."""
+    lines = [line for line in stderr.splitlines() if line.strip() and not re.match(r"\[ *\d+\.\d s\] ", line)]
     assert len(lines) == 1, stderr
     assert "Traceback" not in stderr
     return lines[0]

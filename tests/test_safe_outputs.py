@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -38,7 +39,9 @@ def _popen(*args, cwd=None):
 
 
 def _one_error_line(stderr: str) -> str:
-    lines = [line for line in stderr.splitlines() if line.strip()]
+    """The one line of a refusal; the progress lines before it (``[  t s] …``: the command says what it reads
+    within a second, before it finds what it refuses) are not counted."""
+    lines = [line for line in stderr.splitlines() if line.strip() and not re.match(r"\[ *\d+\.\d s\] ", line)]
     assert len(lines) == 1, stderr
     assert "Traceback" not in stderr
     return lines[0]

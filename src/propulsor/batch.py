@@ -11,42 +11,63 @@ import sys
 from pathlib import Path
 
 from .building import LOADED, load
+from .progress import Reporter
+from .render import Board, forward_to
 from .signals import Interrupted, hold_signals
 
 
-def longest_first(files: list[Path]) -> list[int]:
+def longest_first(files: list[Path], progress=None) -> list[int]:
     """Indices of the part files, the longest build first by its size estimate (a file that does not load
     first of all: it fails at once), so that the builds running side by side end close together; each loaded
-    part is left in building.LOADED for its forked build."""
-    def key(k):
+    part is left in building.LOADED for its forked build.  `progress`: told the files checked (a count)."""
+    tick = Reporter.of(progress).counter("checking the part files", len(files), "file")
+    keys = {}
+    for k in range(len(files)):
         try:
             loaded = load(files[k])
         except Exception:  # noqa: BLE001 - its own build reports it
-            return -float("inf"), k
-        LOADED[files[k]] = loaded  # the forked build takes it (building.load)
-        return -loaded.estimate.seconds, k
+            keys[k] = (-float("inf"), k)
+        else:
+            LOADED[files[k]] = loaded  # the forked build takes it (building.load)
+            keys[k] = (-loaded.estimate.seconds, k)
+        tick(k + 1)
+    return sorted(range(len(files)), key=keys.__getitem__)
 
-    return sorted(range(len(files)), key=key)
 
-
-def side_by_side(args, files: list[Path], depfile, slots: int, build, jobserver=None) -> list[int]:
+def side_by_side(args, files: list[Path], depfile, slots: int, build, jobserver=None, progress=None) -> list[int]:
     """Build the part files (``build(args, part_file, depfile) -> exit code``) in forked children, as many
     at once as `slots` (the process budget, shared with the children's own workers once the last build
     has started: parallel.share_slots; under make's `jobserver` a slot beyond the first also takes one
     of make's tokens), the longest first.  Each child's output is held in a temporary file and written
-    out whole when it ends, so that the lines of two builds do not interleave.  A signal stops every
-    build."""
+    out whole when it ends, so that the lines of two builds do not interleave; meanwhile each sends its events
+    through a pipe to a :class:`~.render.Board` (one live line per build on a terminal, a plain line per step
+    elsewhere).  `progress`: told the part files checked before the first build starts (then closed).  A
+    signal stops every build."""
+    import select
     import tempfile
 
     from .parallel import open_slots_to_workers, share_slots
 
     pool = share_slots(slots, jobserver)
-    pending = longest_first(files)
+    pending = longest_first(files, progress)
+    if progress is not None and hasattr(progress, "close"):
+        progress.close()
     running: dict[int, tuple[int, object, object, bytes | None]] = {}
+    pipes: dict[int, int] = {}  # pid -> the read end of its events' pipe
     codes: list[int] = [0] * len(files)  # each the exit code its build ends with
-    quiet = args.quiet
+    board = Board(args.quiet, t0=getattr(progress, "t0", None))
+
+    def drain(timeout: float) -> None:
+        if not pipes:
+            return
+        ready, _, _ = select.select(list(pipes.values()), [], [], timeout)
+        for pid, fd in list(pipes.items()):
+            if fd in ready:
+                _read_into(board, pid, fd)
+
     try:
         while pending or running:
+            drain(0.0)
             # a slot of the budget for the next build; with none running, a slot still held by a worker that
             # was killed would never come back: start anyway after a moment
             slot = pool.take(timeout=0.05) if pending else None
@@ -57,24 +78,32 @@ def side_by_side(args, files: list[Path], depfile, slots: int, build, jobserver=
             if pending and (slot is not None or not running):
                 k = pending.pop(0)
                 out, err = tempfile.TemporaryFile(), tempfile.TemporaryFile()
-                if not quiet:
-                    print(f"propulsor: building {files[k]}", file=sys.stderr, flush=True)
-                pid = fork(build, (args, files[k], depfile(files[k])), out.fileno(), err.fileno())
+                rfd, wfd = os.pipe()
+                os.set_blocking(rfd, False)
+                pid = fork(_forwarding, (build, wfd, tuple(pipes.values()) + (rfd,), not board.live, args,
+                                         files[k], depfile(files[k])), out.fileno(), err.fileno())
+                os.close(wfd)
+                pipes[pid] = rfd
+                board.start(pid, str(files[k]))
                 running[pid] = (k, out, err, slot)
                 if not pending:  # the last builds may use the slots the others leave
                     open_slots_to_workers()
                 continue
-            pid, status = os.waitpid(-1, os.WNOHANG if pending else 0)
+            if not pending:
+                drain(0.2)
+            pid, status = os.waitpid(-1, os.WNOHANG)
             if pid == 0 or pid not in running:
                 continue
             k, out, err, slot = running.pop(pid)
             if slot is not None:
                 pool.give(slot)
             codes[k] = os.waitstatus_to_exitcode(status)
+            _read_into(board, pid, pipes[pid])
+            os.close(pipes.pop(pid))
+            board.end(pid)
             for f, stream in ((out, sys.stdout), (err, sys.stderr)):
                 f.seek(0)
-                stream.flush()
-                os.write(stream.fileno(), f.read())
+                board.write(stream, f.read())
                 f.close()
     except Interrupted as exc:
         for pid in running:
@@ -91,9 +120,35 @@ def side_by_side(args, files: list[Path], depfile, slots: int, build, jobserver=
                 pool.give(slot)
         raise
     finally:
+        board.close()
+        for fd in pipes.values():
+            os.close(fd)
         share_slots(None)
         LOADED.clear()
     return codes
+
+
+def _read_into(board: Board, key, fd: int) -> None:
+    """What build `key`'s pipe holds now, to the board."""
+    while True:
+        try:
+            data = os.read(fd, 65536)
+        except (BlockingIOError, InterruptedError):
+            return
+        if not data:
+            return
+        board.feed(key, data)
+
+
+def _forwarding(build, wfd: int, close: tuple[int, ...], shown_there: bool, *args) -> int:
+    """In a forked build: its events also to `wfd` (never blocking it: a full pipe drops them), the read ends of
+    the pipes in `close` closed, its steps printed by the board alone when `shown_there` (plain lines: its own
+    output, written out when it ends, keeps its notices and errors); then ``build(*args)``."""
+    for fd in close:
+        os.close(fd)
+    os.set_blocking(wfd, False)
+    forward_to(wfd, shown_there)
+    return build(*args)
 
 
 def with_jobserver(fn, slots: int, jobserver):

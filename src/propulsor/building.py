@@ -113,21 +113,25 @@ def vet_depfile(depfile, out: Path, out_value: str, params, part_file: Path) -> 
 LOADED: dict[Path, "Loaded"] = {}
 
 
-def load(part_file: Path) -> Loaded:
+def load(part_file: Path, progress=None) -> Loaded:
     """The part file read and its parameters checked as far as anything can be before a build: fields, the
-    rules between them, the size estimate and the design's own feasibility (``parts.vet``).  InputError."""
+    rules between them, the size estimate and the design's own feasibility (``parts.vet``).  InputError.
+    `progress`: a callback for the steps on the way (the part type's imports, the feasibility)."""
     if part_file in LOADED:
         return LOADED.pop(part_file)
+    say = Reporter.of(progress)
     from .params import load_params, read_part_file
     from .parts import check_size, get_part_type, size_needs_design, vet
 
     part_type_name, mapping = read_part_file(part_file)
+    say(f"{part_type_name}: loading the part type (CAD kernel, checks)")
     part_type = get_part_type(part_type_name)
     params = load_params(part_type.params_cls, mapping, validate=False)
     # the size estimate first where it needs only the values (a design can itself be the long part)
     early = not size_needs_design(part_type)
     try:
         estimate = check_size(part_type, params, part_file) if early else None
+        say(f"{part_type_name}: checking the parameters and the design's feasibility")
         vet(part_type, params, part_file)  # the rules between fields, then the design's own feasibility (may take s)
         estimate = estimate or check_size(part_type, params, part_file)
     except InputError as exc:
@@ -303,8 +307,11 @@ def build_kit(part: Loaded, out, printer, *, scale: float | None = None, sliced:
         from .parts.writer import OutputWriter
         from .printing.kit import write_kit
 
+        import inspect
+
         say(f"{name}: print kit for the {printer.name} printer")
-        kit = make_kit(part.params, printer, scale, source=part.source)
+        told = {"progress": say} if "progress" in inspect.signature(make_kit).parameters else {}
+        kit = make_kit(part.params, printer, scale, source=part.source, **told)
         writer = OutputWriter(tmp, name, part.params, progress=say, source=part.source)
         writer.report_name = "print_report.md"
         writer.title = f"Print kit: {writer.title}"

@@ -2,7 +2,7 @@
 
 Exit codes: 0 built and every check passed; 1 built but a check failed (outputs
 kept only with --keep-failed) or `check` found invalid files; 2 bad input
-(one line on stderr, nothing written); 3 the environment refused (disk full, read-only file
+(one line on stderr after the progress lines, nothing written); 3 the environment refused (disk full, read-only file
 system, permission: one line naming the path and the errno, nothing published); 130 / 143
 interrupted by SIGINT / SIGTERM (one line, no temporary folder and no worker process left).
 """
@@ -20,30 +20,11 @@ from pathlib import Path
 from . import building
 from .building import gallery_folder, regenerate_gallery, vet_depfile, write_depfile, write_gallery_locked
 from .errors import CheckFailed, EnvironmentFailure, InputError
+from .render import Renderer
 from .signals import SIGNALLED, Interrupted, check_signalled, hold_signals, raise_interrupted, unraisable
 
 #: the exit codes (README, «Command line»): the command line's alone; the build service raises exceptions
 EXIT_OK, EXIT_CHECK_FAILED, EXIT_BAD_INPUT, EXIT_ENVIRONMENT = 0, 1, 2, 3
-
-
-class Renderer:
-    """The command line's face of the build's events (``progress.Event``): a step of the work as
-    ``[  t s] message`` on stderr with the time since the start (none with -q), a notice as
-    ``propulsor: message`` (always).  Before each it checks for a signal whose exception was swallowed: a safe
-    point to stop."""
-
-    def __init__(self, quiet: bool = False, stream=None):
-        self.quiet = quiet
-        self.stream = stream
-        self.t0 = time.perf_counter()
-
-    def __call__(self, event) -> None:
-        check_signalled()
-        stream = self.stream or sys.stderr
-        if getattr(event, "kind", "progress") == "notice":
-            print(f"propulsor: {event}", file=stream, flush=True)
-        elif not self.quiet:
-            print(f"[{time.perf_counter() - self.t0:6.1f} s] {event}", file=stream, flush=True)
 
 
 def fail_input(exc: Exception) -> int:
@@ -82,7 +63,7 @@ def cmd_gallery(args) -> int:
     if not built_parts(folder) and not found_studies(folder):
         return fail_input(InputError("folder", str(folder), "holds no built part (no */manifest.json) and no "
                                      "design study (no */study.json)"))
-    progress = Renderer(args.quiet)
+    progress = Renderer(args.quiet, live=False)
     try:
         path = write_gallery_locked(folder)
     except EnvironmentFailure as exc:
@@ -118,34 +99,43 @@ def cmd_build(args) -> int:
         from .batch import with_jobserver
 
         return with_jobserver(one, budget, jobserver)
-    from .batch import in_child, preload, side_by_side
+    with Renderer(args.quiet) as render:
+        render(f"{len(files)} part files: loading the CAD kernel and the checks")
+        from .batch import in_child, preload, side_by_side
 
-    preload()
+        preload()
 
-    def depfile(part_file):
-        return Path(args.depfile_dir) / f"{part_file.stem}.mk" if args.depfile_dir else None
+        def depfile(part_file):
+            return Path(args.depfile_dir) / f"{part_file.stem}.mk" if args.depfile_dir else None
 
-    if budget > 1 and can_fork() and not args.dry_run:
-        codes = side_by_side(args, files, depfile, budget, build_one, jobserver)
-    else:
-        codes = [in_child(build_one, args, f, depfile(f)) for f in files]
+        if budget > 1 and can_fork() and not args.dry_run:
+            codes = side_by_side(args, files, depfile, budget, build_one, jobserver, progress=render)
+        else:
+            render.close()
+            codes = [in_child(build_one, args, f, depfile(f)) for f in files]
     return max(codes, key=lambda c: (c == EXIT_BAD_INPUT, c))
 
 
 def build_one(args, part_file: Path, depfile: Path | None) -> int:
     """Build one part file into its output folder (``--out`` or output/<file name>) through the build service;
     ``--dry-run`` validates and estimates only.  Returns the exit code."""
+    with Renderer(args.quiet) as render:
+        return _build_one(args, part_file, depfile, render)
+
+
+def _build_one(args, part_file: Path, depfile: Path | None, render: Renderer) -> int:
     from . import output_folder as of
 
-    render = Renderer(args.quiet)
+    render(f"{part_file}: reading the part file")
     try:
         out = building.target(args.out, Path("output") / part_file.stem, args.force, keep=(part_file,))
-        part = building.load(part_file)
+        part = building.load(part_file, progress=render)
         out = of.vet_target(out, force=args.force, keep=part.files_read)
         vet_depfile(depfile, out, args.out or str(out), part.params, part_file)
     except InputError as exc:
         return fail_input(exc)
     if args.dry_run:
+        render.close()
         print(f"{part.part_type.name}: {part_file} is valid; would build into {out}; "
               f"size estimate {part.estimate.text()}")
         return EXIT_OK
@@ -217,18 +207,23 @@ def _settings(pairs) -> dict:
 
 def cmd_print(args) -> int:
     """A print kit of a part file: pieces at print scale with the FDM allowances, a rig, plates."""
+    with Renderer(args.quiet) as render:
+        return _print(args, render)
+
+
+def _print(args, render: Renderer) -> int:
+    part_file = Path(args.part_file)
+    render(f"{part_file}: reading the part file and the printer profile")
     from . import output_folder as of
     from .parts import get_kit
     from .printing.printers import is_profile_path, load_printer
 
-    render = Renderer(args.quiet)
-    part_file = Path(args.part_file)
     try:
         out = building.target(args.out, Path("output") / f"{part_file.stem}_kit", args.force, keep=(part_file,))
         printer = load_printer(args.printer, _settings(args.set), bed=args.bed)
         sliced = _slice_arg(args.slice)
         S = _scale_arg(args.scale)
-        part = building.load(part_file)
+        part = building.load(part_file, progress=render)
         get_kit(part.part_type.name)  # a part type without a kit is refused here
         profile = Path(args.printer) if args.bed is None and is_profile_path(args.printer) else None
         keep = part.files_read + ((profile,) if profile is not None else ())  # the user's profile file too
@@ -322,10 +317,15 @@ def cmd_params(args) -> int:
 
 def cmd_explore(args) -> int:
     """A design study: every variant of the study file evaluated on a Dask cluster, one table, ranked."""
+    with Renderer(args.quiet) as progress:
+        return _explore(args, progress)
+
+
+def _explore(args, progress: Renderer) -> int:
+    progress(f"{args.study}: reading the study file")
     from .study import load_study
     from .study.engine import run
 
-    progress = Renderer(args.quiet)
     try:
         cores = os.cpu_count() or 1
         if args.workers is not None and not 1 <= args.workers <= cores:

@@ -403,15 +403,124 @@ def inline(fn, *args) -> Done:
     return Done(as_if_sent(fn(*as_if_sent(args))))
 
 
-def start(fn, *args):
-    """Run fn(*args) in one forked process; returns a Future (a :class:`Done` when run inline)."""
+def start(fn, *args, counter=None):
+    """Run fn(*args) in one forked process; returns a Future (a :class:`Done` when run inline).  `counter`:
+    ``counter(done, total)`` told how far the job has come where it calls :func:`tick` — at once when run
+    inline, while :func:`result` waits for it when forked (through a pipe)."""
+    global _TICK
     pool = fork_pool(1)
     if pool is None:
-        return inline(fn, *args)
-    fut = pool.submit(fn, *args)
+        if counter is None:
+            return inline(fn, *args)
+        before, _TICK = _TICK, counter
+        try:
+            return inline(fn, *args)
+        finally:
+            _TICK = before
+    if counter is None:
+        fut = pool.submit(fn, *args)
+    else:
+        r, w = os.pipe()
+        os.set_blocking(r, False)
+        os.set_blocking(w, False)  # a full pipe drops the worker's ticks, never holds its work
+        try:
+            fut = pool.submit(_ticking, w, fn, *args)  # the fork context forks the worker here: it has `w`
+        finally:
+            os.close(w)
+        fut.propulsor_ticks = _Ticks(r, counter)
     fut.add_done_callback(lambda _f: pool.give_back())
     pool.shutdown(wait=False)
     return fut
+
+
+#: where :func:`tick` goes in this process: a pipe's write end (a forked job started with a counter), the
+#: counter itself (a job run inline), or None
+_TICK = None
+_TICK_LAST = [-float("inf")]
+
+
+def tick(done: int, total: int) -> None:
+    """A job's progress, `done` of `total`, to the build that started it with a counter (:func:`start`); from
+    a worker at most ten a second (and the last).  Nothing otherwise."""
+    t = _TICK
+    if t is None:
+        return
+    if callable(t):
+        t(done, total)
+        return
+    import time
+
+    now = time.monotonic()
+    if done < total and now - _TICK_LAST[0] < 0.1:
+        return
+    _TICK_LAST[0] = now
+    try:
+        os.write(t, f"{int(done)} {int(total)}\n".encode())
+    except OSError:  # full (the build is not reading yet) or gone: dropped
+        pass
+
+
+def _ticking(fd: int, fn, *args):
+    """In a worker: fn(*args) with :func:`tick` writing to `fd`."""
+    global _TICK
+    _TICK = fd
+    try:
+        return fn(*args)
+    finally:
+        _TICK = None
+        os.close(fd)
+
+
+class _Ticks:
+    """The read end of a forked job's progress pipe and the counter its ticks go to."""
+
+    def __init__(self, fd: int, counter):
+        self.fd, self.counter, self.buf = fd, counter, b""
+
+    def drain(self) -> None:
+        if self.fd < 0:
+            return
+        last = None
+        while True:
+            try:
+                data = os.read(self.fd, 65536)
+            except (BlockingIOError, InterruptedError):
+                break
+            if not data:
+                break
+            self.buf += data
+            *lines, self.buf = self.buf.split(b"\n")
+            if lines:
+                last = lines[-1]
+        if last:
+            done, total = (int(x) for x in last.split())
+            self.counter(done, total)
+
+    def close(self) -> None:
+        if self.fd >= 0:
+            os.close(self.fd)
+            self.fd = -1
+
+    def __del__(self):
+        self.close()
+
+
+def result(job):
+    """``job.result()``; for a job started with a counter (:func:`start`), its ticks passed to the counter
+    while it runs."""
+    ticks = getattr(job, "propulsor_ticks", None)
+    if ticks is None:
+        return job.result()
+    import concurrent.futures as cf
+
+    try:
+        while not job.done():
+            cf.wait([job], timeout=0.1)
+            ticks.drain()
+        ticks.drain()
+    finally:
+        ticks.close()
+    return job.result()
 
 
 def kill_workers() -> None:

@@ -8,31 +8,52 @@ event is its message (a ``str``: a callback that takes text works as it is) with
 * ``NOTICE`` — something the user must see even when quiet: a wait for another build's lock, a check that
   failed, a file kept aside, a page that could not be written.
 
-The command line renders them (``cli.Renderer``: one line each on stderr); the Python API passes them to the
-caller's callback, or drops them.
+A step that counts (``say.count(phase, done, total, unit)``: "proof: phase 120/400") is a ``PROGRESS`` event
+whose ``phase`` is the step's own message and whose ``done`` / ``total`` are set (``None`` on a plain step):
+the command line draws a bar with an estimate of the time left.  The counts of one Reporter are throttled to
+:data:`COUNT_EVERY_S` (the first and the last of a phase always go), so a loop may report every turn.
+
+The command line renders them (``render.Renderer``: a line per step on stderr, a live line on a terminal); the
+Python API passes them to the caller's callback, or drops them.
 """
 
 from __future__ import annotations
 
+import time
 from typing import Callable
 
 PROGRESS, NOTICE = "progress", "notice"
 
-__all__ = ["Event", "Reporter", "PROGRESS", "NOTICE"]
+#: the least time between two count events of one Reporter (the first and the last of a phase always go)
+COUNT_EVERY_S = 0.1
+
+__all__ = ["Event", "Reporter", "PROGRESS", "NOTICE", "COUNT_EVERY_S", "counter", "count_to"]
 
 
 class Event(str):
-    """One thing a build reports: the message (the event is that text) and its kind (PROGRESS or NOTICE)."""
+    """One thing a build reports: the message (the event is that text) and its kind (PROGRESS or NOTICE); a
+    count also has its ``phase`` (the message without the count), ``done`` and ``total``."""
 
     kind: str
+    phase: str
+    done: int | None
+    total: int | None
 
-    def __new__(cls, message: str, kind: str = PROGRESS) -> "Event":
+    def __new__(cls, message: str, kind: str = PROGRESS, phase: str | None = None, done: int | None = None,
+                total: int | None = None) -> "Event":
         self = super().__new__(cls, message)
         self.kind = kind
+        self.phase = str(message) if phase is None else phase
+        self.done, self.total = done, total
         return self
 
+    @property
+    def counted(self) -> bool:
+        """Whether the event is a count (``done`` of ``total``)."""
+        return self.done is not None and self.total is not None
+
     def __reduce__(self):
-        return (type(self), (str(self), self.kind))
+        return (type(self), (str(self), self.kind, self.phase, self.done, self.total))
 
 
 class Reporter:
@@ -41,6 +62,8 @@ class Reporter:
 
     def __init__(self, callback: Callable[[Event], object] | None = None):
         self.callback = callback
+        self._phase: str | None = None
+        self._last = -float("inf")
 
     @classmethod
     def of(cls, progress) -> "Reporter":
@@ -51,6 +74,40 @@ class Reporter:
         if self.callback is not None:
             self.callback(Event(message, PROGRESS))
 
+    def count(self, phase: str, done: int, total: int, unit: str = "") -> None:
+        """`done` of `total` (`unit`s: "phase", "sample") of the step `phase`: the event "phase: unit done/total",
+        at most one each :data:`COUNT_EVERY_S` (the first of a phase and the last, done == total, always)."""
+        if self.callback is None:
+            return
+        now = time.monotonic()
+        first = phase != self._phase
+        if not (first or done >= total or now - self._last >= COUNT_EVERY_S):
+            return
+        self._phase, self._last = phase, now
+        what = f"{unit} {done}/{total}" if unit else f"{done}/{total}"
+        self.callback(Event(f"{phase}: {what}", PROGRESS, phase, int(done), int(total)))
+
+    def counter(self, phase: str, total: int, unit: str = "") -> Callable[[int], None]:
+        """``tick(done)`` reporting `done` of `total` of `phase` (:meth:`count`); reports 0 of `total` now."""
+        self.count(phase, 0, total, unit)
+        return lambda done: self.count(phase, done, total, unit)
+
     def notice(self, message: str) -> None:
         if self.callback is not None:
             self.callback(Event(message, NOTICE))
+
+
+def counter(progress, phase: str, total: int, unit: str = "") -> Callable[[int], None]:
+    """``tick(done)``: `done` of `total` of the step `phase` through `progress` when it is a :class:`Reporter`
+    (which reports 0 of `total` now); with any other callback (text only) or none, a tick that does nothing."""
+    if isinstance(progress, Reporter):
+        return progress.counter(phase, total, unit)
+    return lambda done: None
+
+
+def count_to(progress, phase: str, unit: str = "") -> Callable[[int, int], None] | None:
+    """``count(done, total)`` of the step `phase` through `progress` when it is a :class:`Reporter` (for work
+    whose total is known as it runs: ``parallel.start``'s counter); None otherwise."""
+    if isinstance(progress, Reporter):
+        return lambda done, total: progress.count(phase, done, total, unit)
+    return None

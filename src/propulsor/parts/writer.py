@@ -264,6 +264,7 @@ class OutputWriter:
 
     def wait_solids(self) -> None:
         """Collect the checks of every solid added so far (in the order they were added)."""
+        self._count_solid_jobs()
         for name, job in self._solid_jobs:
             checks, self._meshes[name] = job.result()
             self.add_checks(checks)
@@ -272,6 +273,24 @@ class OutputWriter:
         for key, job in self._mesh_jobs:
             self._meshes[key] = job.result()
         self._mesh_jobs = []
+
+    def _count_solid_jobs(self) -> None:
+        """Wait for the solids' jobs still running in workers, counting them as they end (progress only: their
+        results are collected in order after)."""
+        import concurrent.futures as cf
+
+        from ..progress import counter
+
+        futures = [f for _, job in self._solid_jobs
+                   for f in ((job.step_job, job.mesh_job) if isinstance(job, _Joined) else (job,))]
+        pending = {f for f in futures if isinstance(f, cf.Future) and not f.done()}
+        if not pending or len(futures) < 2:
+            return
+        tick = counter(self.progress, "solids: STEP, STL, 3MF and their checks", len(futures), "job")
+        tick(len(futures) - len(pending))
+        while pending:
+            _, pending = cf.wait(pending, return_when=cf.FIRST_COMPLETED)
+            tick(len(futures) - len(pending))
 
     def wait_for_files(self, *names: str) -> None:
         """Wait until the files of the named solids are written (their checks are still collected, in

@@ -209,15 +209,22 @@ def write_kit(kit: Kit, w, sliced: bool = False) -> None:
     coupon = coupon_pieces(p)
     kit.pieces = [pc for pc in kit.pieces if not pc.name.startswith("coupon")] + coupon
     # every piece tessellated, laid flat, chamfered and checked in forked workers beside each other
+    from ..progress import counter
+
     pool = fork_pool(2)
+    tick = counter(w.progress, "kit: pieces tessellated, laid flat and checked", len(kit.pieces), "piece")
     jobs = []
-    for pc in kit.pieces:
+    for k, pc in enumerate(kit.pieces, 1):
         chamfer = p.chamfer_mm if pc.chamfer_mm is None else pc.chamfer_mm
         args = (pc.solid, pc.name, pc.genus, chamfer, p.layer_mm, pool is not None)
         jobs.append(pool.submit(_printed_piece, *args) if pool is not None else inline(_printed_piece, *args))
+        if pool is None:
+            tick(k)
     try:
-        for pc, job in zip(kit.pieces, jobs):
+        for k, (pc, job) in enumerate(zip(kit.pieces, jobs), 1):
             mesh, printed, checks = job.result()
+            if pool is not None:
+                tick(k)
             piece_meshes[pc.name] = mesh
             write_stl(printed, w.path(f"pieces/{pc.name}.stl"), pc.name)
             w.add_checks(checks)
@@ -237,6 +244,7 @@ def write_kit(kit: Kit, w, sliced: bool = False) -> None:
     plates += pack(feet([n for n in flat if n not in first]), p.bed_x_mm, p.bed_y_mm, p.piece_gap_mm, p.margin_mm)
     w.add_checks(plate_checks(kit, plates, flat))
     plans, paths = [], []
+    tick = counter(w.progress, "kit: plates and their pictures", len(plates), "plate")
     for k, plate in enumerate(plates, 1):
         objects = [(pl.name, placed(flat[pl.name], pl)) for pl in plate.placements]
         write_3mf_objects(objects, w.path(f"plate_{k}.3mf"), p.slicer_config())
@@ -245,6 +253,7 @@ def write_kit(kit: Kit, w, sliced: bool = False) -> None:
         vol = sum(float(m.volume) for _, m in objects)
         plans.append(PlatePlan(k, len(objects), vol / 1000.0, estimate_g([m for _, m in objects], p),
                                ", ".join(n for n, _ in objects)))
+        tick(k)
     if sliced:
         w.add_checks(slice_plates(plans, paths, p, w.progress))
     w.add_table("plates", TABLE_COLUMNS, table_rows(plans))

@@ -59,9 +59,11 @@ def slice_plates(plans: list[PlatePlan], plate_paths: list[Path], printer, progr
 
     checks = []
     t0 = time.perf_counter()
+    from ..progress import counter
+
+    tick = counter(progress, "slicing the plates with PrusaSlicer (--slice no skips it)", len(plans), "plate")
     with tempfile.TemporaryDirectory(prefix="propulsor-slice-") as work:
-        for plan, path in zip(plans, plate_paths):
-            progress(f"slicing plate {plan.plate} of {len(plans)} with PrusaSlicer (--slice no skips it)")
+        for k, (plan, path) in enumerate(zip(plans, plate_paths), 1):
             r = slice_plate(path, printer.bed_shape(), Path(work) / f"plate_{plan.plate}.gcode",
                             args=printer.slicer_args())
             off = r.off_bed(printer.bed_x_mm, printer.bed_y_mm)
@@ -75,6 +77,7 @@ def slice_plates(plans: list[PlatePlan], plate_paths: list[Path], printer, progr
                 plan.time_s = int(r.stats["time_s"])
                 plan.filament_g = float(r.stats["filament_g"])
                 plan.filament_m = float(r.stats.get("filament_mm", 0.0)) / 1000.0
+            tick(k)
     progress(f"PrusaSlicer sliced {len(plans)} plate(s) in {time.perf_counter() - t0:.0f} s")
     return checks
 

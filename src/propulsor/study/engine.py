@@ -65,6 +65,7 @@ def connect(scheduler: str | None, workers: int | None, worker_wait: float | Non
     import tempfile
 
     n = workers or os.cpu_count() or 1
+    progress(f"starting a local Dask cluster of {n} worker process(es)")
     scratch = tempfile.mkdtemp(prefix="propulsor-dask-")
     try:
         cluster = local_cluster(n, scratch)
@@ -144,12 +145,21 @@ def write_marker(out: Path, study: Study, rows=None, rank=None) -> None:
 
 
 class Rate:
-    """The progress line: count, rate, time left."""
+    """The progress of the variants: a count event (``progress.Event``: phase "variants", done, total) whose text
+    gives the count, the rate, the time left and the variant that ended; "variants 0/N" when it starts."""
+
+    PHASE = "variants"
 
     def __init__(self, total: int, before: int, progress):
         self.total, self.before, self.progress = total, before, progress
         self.t0 = time.perf_counter()
         self.n = 0
+        self._say(f"{before}/{total} variants", before)
+
+    def _say(self, text: str, done: int) -> None:
+        from ..progress import PROGRESS, Event
+
+        self.progress(Event(text, PROGRESS, self.PHASE, done, self.total))
 
     def tick(self, row: dict) -> None:
         self.n += 1
@@ -157,10 +167,9 @@ class Rate:
         rate = self.n / dt * 60 if dt > 0 else 0.0
         left = self.total - self.before - self.n
         eta = left / (self.n / dt) if self.n and dt > 0 else math.inf
-        bar = "#" * int(20 * (self.before + self.n) / max(self.total, 1))
-        self.progress(f"[{bar:20s}] {self.before + self.n}/{self.total} variants, {rate:.1f} per min, "
-                      f"{'about ' + _span(eta) + ' left' if left else 'done'}; variant {row['variant']}: "
-                      f"{row['status']}")
+        self._say(f"{self.before + self.n}/{self.total} variants, {rate:.1f} per min, "
+                  f"{'about ' + _span(eta) + ' left' if left else 'done'}; variant {row['variant']}: "
+                  f"{row['status']}", self.before + self.n)
 
 
 def _span(s: float) -> str:

@@ -380,10 +380,11 @@ def runs(mask) -> list[tuple[int, int]]:
 
 def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, direction: int, *,
                     step_driver_rad: float | None = None, h_min: float = policy.CONTACT_EVENT_STEP_RAD,
-                    max_evals: int = policy.CONTACT_EVALUATIONS_MAX) -> ContactLaw:
+                    max_evals: int = policy.CONTACT_EVALUATIONS_MAX, tick=None) -> ContactLaw:
     """The loaded contact of ``direction`` over phi0..phi1 (driven law angles): sampled every
     ``step_driver_rad`` of driver angle (default ``policy.CONTACT_STEP_DRIVER_DEG``) and every change of state
-    bisected down to ``h_min`` (see the module docstring); at most ``max_evals`` measurements."""
+    bisected down to ``h_min`` (see the module docstring); at most ``max_evals`` measurements.  ``tick(done,
+    total)``: told the sampled positions measured (progress only)."""
     step = step_driver_rad if step_driver_rad is not None else math.radians(policy.CONTACT_STEP_DRIVER_DEG)
     th0, th1 = float(theta_of_phi(np.array([phi0]))[0]), float(theta_of_phi(np.array([phi1]))[0])
     n = max(2, int(math.ceil(abs(th1 - th0) / step)) + 1)
@@ -393,7 +394,7 @@ def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, 
     samples: dict[float, tuple] = {}
     evals = 0
 
-    def measure(phis, seed=None, seed_phi=None):
+    def measure(phis, seed=None, seed_phi=None, tick=None):
         nonlocal evals
         th = np.asarray(theta_of_phi(np.asarray(phis, float)), float)
         prev, prev_phi = seed, seed_phi
@@ -403,9 +404,11 @@ def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, 
             evals += 1
             prev, prev_phi = (r[0], float(p)) if math.isfinite(r[0]) else (None, None)
             out.append((float(t),) + tuple(r))
+            if tick is not None:
+                tick(len(out), len(phis))
         return out
 
-    for p, r in zip(grid, measure(grid)):
+    for p, r in zip(grid, measure(grid, tick=tick)):
         samples[float(p)] = r
     # bisect every interval whose ends differ in state
     def state(r):

@@ -109,8 +109,9 @@ def _section_polys(cs) -> list:
     return [np.asarray(q, float) for q in cs.to_polygons()]
 
 
-def motion_proofs(pl: Plan, shoe_loops: list, channel_loops: list) -> dict:
-    """The 2D sweeps and the hub-height proof on the exported outlines."""
+def motion_proofs(pl: Plan, shoe_loops: list, channel_loops: list, tick=None) -> dict:
+    """The 2D sweeps and the hub-height proof on the exported outlines; ``tick(done)``: told how many of the
+    sweeps (7; 8 with four legs or more) are done after each (progress only)."""
     from ...checks.motion import Pose, outline, sweep_pair
 
     p = pl.params
@@ -130,16 +131,25 @@ def motion_proofs(pl: Plan, shoe_loops: list, channel_loops: list) -> dict:
     ring_loops = [q for q, d in zip(channel_loops, depth) if d <= 1]
     core_loops = [q for q, d in zip(channel_loops, depth) if d >= 2]
     roller = outline(pl.roller)
+
+    def done() -> None:
+        if tick is not None:
+            tick(sum(k != "phi" for k in out))
+
     out["roller_working"] = sweep_pair(core_loops, Pose(), roller, legM,
                                        name="roller_vs_working_wall", max_segment=0.5)
+    done()
     out["roller_outer"] = sweep_pair(ring_loops, Pose(), roller, legM,
                                      name="roller_vs_outer_wall", max_segment=0.5)
+    done()
     # --- hub height on flat ground from the exported shoe outline
     pts = np.vstack(shoe_loops)
     out["hub"] = hub_height_from_outline(pl, pts, phi)
+    done()
     # the same with the exact shoe curve (the splines of the STEP solid), for comparison
     exact = pl.shoe.profile.outer.polyline(policy.MOTION_CHORD_TOL_MM)
     out["hub_exact"] = hub_height_from_outline(pl, exact, phi)
+    done()
     # --- legs and shoes against the carrier and each other (one axial layer)
     cm = 1e-3
     body_cs = outline(pl.shoe.profile, cm, 1.0).section + outline(pl.leg, cm, 1.0).section
@@ -148,13 +158,17 @@ def motion_proofs(pl: Plan, shoe_loops: list, channel_loops: list) -> dict:
     carM = rotation_matrices(phi)
     out["leg_carrier"] = sweep_pair(car, carM, outline(pl.leg, cm, 1.0), legM, name="leg_vs_carrier_slide",
                                     max_segment=1.0)
+    done()
     out["shoe_carrier"] = sweep_pair(car, carM, outline(pl.shoe.profile, cm, 1.0), legM, name="shoe_vs_carrier",
                                      max_segment=1.0)
+    done()
     nb = leg_poses(pl, phi + 2.0 * math.pi / n)
     out["neighbours"] = sweep_pair(body, legM, body, nb, name="neighbouring_legs", max_segment=1.0)
+    done()
     if n >= 4:
         op = leg_poses(pl, phi + 2.0 * math.pi * (n // 2) / n)
         out["opposite"] = sweep_pair(body, legM, body, op, name="opposite_legs", max_segment=1.0)
+        done()
     return out
 
 
@@ -239,7 +253,10 @@ def motion_proof_checks(dd: Plan, w, built: dict) -> None:
     lim = p.limits()
     n = mech.n_legs
     w.progress(f"cam_mover: motion proofs ({p.sweep_steps} steps per turn)")
-    pr = built["proofs"] = motion_proofs(pl, built["shoe_loops"], built["channel_loops"])
+    from ...progress import counter
+
+    tick = counter(w.progress, "cam_mover: motion proofs", 7 + (int(p.n_legs) >= 4), "sweep")
+    pr = built["proofs"] = motion_proofs(pl, built["shoe_loops"], built["channel_loops"], tick)
     tol = policy.OVERLAP_AREA_TOL_MM2
     rw, ro = pr["roller_working"], pr["roller_outer"]
     c = p.channel_clearance_mm

@@ -19,13 +19,31 @@ _STRETCH_COLUMNS = ["direction", "driver_from_deg", "driver_to_deg", "driven_fro
                     "driver_teeth", "driven_teeth", "speed_min_rel", "speed_max_rel"]
 
 
-def _result(dd, built: dict) -> AsBuilt | None:
+def _result(dd, built: dict, progress=None) -> AsBuilt | None:
     jobs = built.get("as_built")
     if jobs is None:
         return as_built(dd.d, dd.mount, built["proof"])
     if jobs == ():
         return None
-    return combine(dd.d, jobs[0].result(), jobs[1].result())
+    return combine(dd.d, *_collected(jobs, progress, "as built: both directions' contact", "direction"))
+
+
+def _collected(jobs, progress, phase: str, unit: str) -> list:
+    """The results of the jobs in their order, counted as they come when some run in workers (those run in
+    this process were counted when they ran)."""
+    from ...parallel import Done, result
+    from ...progress import counter
+
+    if all(isinstance(j, Done) for j in jobs):
+        return [j.result() for j in jobs]
+    if any(hasattr(j, "propulsor_ticks") for j in jobs):  # they count themselves while they are waited for
+        return [result(j) for j in jobs]
+    tick = counter(progress, phase, len(jobs), unit)
+    out = []
+    for k, j in enumerate(jobs):
+        out.append(j.result())
+        tick(k + 1)
+    return out
 
 
 def tooth_height_check(d, p) -> Check | None:
@@ -127,7 +145,7 @@ def _plot(w, d, ab: AsBuilt) -> None:
 def as_built_values(w, dd, built: dict) -> None:
     """Derived values, checks, the stretches' table, plots and a note of the pair as built."""
     d, p = dd.d, dd.p
-    ab = _result(dd, built)
+    ab = _result(dd, built, w.progress)
     hc = tooth_height_check(d, p)
     if hc is not None:
         w.add_checks([hc])
@@ -221,7 +239,7 @@ def tolerance_values(w, dd, built: dict) -> None:
     if not job:
         return
     tol, jobs = job
-    rs = [j.result() for j in jobs]
+    rs = _collected(jobs, w.progress, "as made: tolerance cases", "case")
     worst, mc = rs[:4], rs[4:]
     p = dd.p
     w.add_checks([tolerance_check(tol, worst, p.speed_step_max)])

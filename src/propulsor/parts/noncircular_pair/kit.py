@@ -122,18 +122,29 @@ def _found_law(p: NoncircularPairParams, d) -> NoncircularPairParams:
                                shaper_own_x0=True, shaper_x0=d.shaper.x0)
 
 
-def _as_printed(p: NoncircularPairParams, kd, printer: Printer) -> tuple[list, list[str]]:
+def _as_printed(p: NoncircularPairParams, kd, printer: Printer, progress=None) -> tuple[list, list[str]]:
     """With the part file's tolerance_grade set: the printed pair within the printer's xy accuracy and the pins'
-    running clearance (``tolerance.printed``), its worst-case corners and Monte Carlo cases: (checks, guide text)."""
+    running clearance (``tolerance.printed``), its worst-case corners and Monte Carlo cases: (checks, guide text).
+    `progress`: told the cases run (a count)."""
     from ... import policy
+    from ...progress import counter
     from .as_built_outputs import tolerance_check
     from .tolerance import monte_carlo_cases, printed, run_case, worst_cases
 
     if not p.tolerance_grade or kd.d.method != "generated":
         return [], []
     tol = printed(policy.PRINT_XY_ACCURACY_MM, printer.running_clearance_mm)
-    worst = [run_case(kd.d, kd.mount, c) for c in worst_cases(tol)]
-    mc = [run_case(kd.d, kd.mount, c) for c in monte_carlo_cases(tol, p.tolerance_samples, p.tolerance_seed)]
+    corners, draws = worst_cases(tol), monte_carlo_cases(tol, p.tolerance_samples, p.tolerance_seed)
+    tick = counter(progress, "kit: the printed pair within the printer's tolerances", len(corners) + len(draws),
+                   "case")
+
+    def run(k: int, c):
+        r = run_case(kd.d, kd.mount, c)
+        tick(k + 1)
+        return r
+
+    worst = [run(k, c) for k, c in enumerate(corners)]
+    mc = [run(len(corners) + k, c) for k, c in enumerate(draws)]
     chk = tolerance_check(tol, worst, p.speed_step_max)
     text = [f"The printed pair within {tol.source}: least backlash {min(r.backlash_min_mm for r in worst):.3f} mm "
             f"at the worst case ({'; '.join(f'{r.case.name} {r.backlash_min_mm:.3f} mm' for r in worst)})."]
@@ -176,10 +187,12 @@ def _pitch_fits(p: NoncircularPairParams, extents: dict, printer: Printer) -> bo
 
 
 def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, source=None,
-        full_size_first: bool = True) -> Kit:
+        full_size_first: bool = True, progress=None) -> Kit:
     """The kit; full_size_first: where only the padded estimate keeps a searched pair from 1:1, the
     printed pair is searched and cut at 1:1 first and its own outlines decide (the full-size design is
-    made only when they do not fit: then the kit is made again without this shortcut)."""
+    made only when they do not fit: then the kit is made again without this shortcut).  `progress`: told the
+    steps (the designs, the printed pair's proof and its phases)."""
+    say = progress or (lambda msg: None)
     from ...solids.build import extrude_profile
     from ...solids.kernel import cylinder
 
@@ -194,8 +207,10 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
         if choice.S != 1.0 and scale is None and full_size_first and _pitch_fits(p, extents, printer):
             choice, at_1_first = ScaleChoice(1.0, "every piece fits the bed at full size"), True
         elif choice.S != 1.0:
+            say("kit: the full-size pair's design")
             full = pair_design(p, source)
     else:
+        say("kit: the full-size pair's design")
         full = pair_design(p, source)
     if full is not None:
         m, L_est = full.d.m, full.mount
@@ -215,7 +230,7 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     pin, base_len = rig_at(choice.S)
     if base_len > longest:
         if at_1_first:
-            return kit(p, printer, scale, source, full_size_first=False)
+            return kit(p, printer, scale, source, full_size_first=False, progress=progress)
         from ...printing.scale import STANDARD_SCALES
 
         # the rig's base bar (the centre distance and two bosses) is a piece too: the scale that fits it
@@ -240,8 +255,9 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     alpha = math.radians(p.pressure_angle_deg)
     for attempt in range(2):
         q = _kit_params(p if full is None else _found_law(p, full.d), m, S, printer, j_n, bores)
+        say(f"kit: the printed pair's design at 1:{S:g}" + (" (thinned again)" if attempt else ""))
         kd = pair_design(q, source)
-        proof = prove(kd.d, q.proof_phases_per_tooth, 4, mount=kd.mount)
+        proof = prove(kd.d, q.proof_phases_per_tooth, 4, say, mount=kd.mount)
         s = proof.summary()
         jn_min = s["backlash_min_mm"] * math.cos(alpha)
         if not (jn_min < printer.backlash_mm and math.isfinite(jn_min)) or attempt == 1:
@@ -255,7 +271,7 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     if at_1_first:
         real = {"driver": (*_extent(drv_prof), w), "driven": (*_extent(dvn_prof), w)}
         if choose_scale(real, bed, None, margin=printer.margin_mm).S != 1.0 or rig is None or rig[0] != pin[0]:
-            return kit(p, printer, scale, source, full_size_first=False)  # the printed pair does not fit at 1:1
+            return kit(p, printer, scale, source, full_size_first=False, progress=progress)  # the printed pair does not fit at 1:1
     if rig is None or rig[0] != pin[0]:
         raise InputError("--scale", choice.label, f"the driver (root radius {mm(d.driver.root_min_radius)} mm) has no "
                          f"room for a ⌀{HANDLE_STEEL_MIN_MM:g} mm handle beside a ⌀{PRINTED_PIN_MIN_MM:g} mm pin; "
@@ -270,6 +286,7 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
              for a in (math.pi + 2 * math.pi * k / n for k in range(n))]
     dvn_prof = _with_holes(dvn_prof, marks)
     ch = printer.chamfer_mm
+    say("kit: solids (the pair, the base, pins, washers and caps)")
     driver = extrude_profile(drv_prof, w)
     driven = extrude_profile(dvn_prof, w)
     base_prof = _base_profile(L, R_boss, [d_ - 2 * press + under for d_ in pin])
@@ -327,7 +344,8 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
                 Placed("handle", "handle", place(dx=L + r_h, dz=z0), "tab:red")][:6 if handle_printed else 5]
     assembly += rings_at
     prefix = "mesh" if d.method == "generated" else "sectors"
-    printed_tol = _as_printed(p, kd, printer)
+    printed_tol = _as_printed(p, kd, printer, progress)
+    say("kit: the hand on the crank")
     hand, hand_text = _hand_on_crank(q, kd, proof, r_h)
     checks = [Check.at_most(f"{prefix}.overlap_area", s["overlap_law_max_mm2"], 1e-6, "mm^2",
                             f"printed outlines over {s['steps']} phases of the whole cycle")]

@@ -130,10 +130,11 @@ def _outer_only(profile):
 
 
 def prove_pair(driver_profile, driven_profile, L: float, theta_of_phi, phis, r_ref, *, name: str = "mesh",
-               windows: int | None = None, pitch_mm: float | None = None) -> PairProof:
+               windows: int | None = None, pitch_mm: float | None = None, tick=None) -> PairProof:
     """Full-cycle proof of the pair (see the module docstring).  ``theta_of_phi``: vectorised law
     theta(phi) (rad); ``r_ref``: vectorised driven pitch radius r_H(phi) (mm); ``pitch_mm``:
-    tooth pitch on the pitch curve (sets the search span of non-conjugate teeth)."""
+    tooth pitch on the pitch curve (sets the search span of non-conjugate teeth); ``tick(done)``: told the
+    phases done after each window (progress only)."""
     drv = outline(_outer_only(driver_profile))
     dvn = outline(_outer_only(driven_profile))
     _axis_annulus(drv)
@@ -202,6 +203,8 @@ def prove_pair(driver_profile, driven_profile, L: float, theta_of_phi, phis, r_r
             pdrv[k] = phis[k] + off - t1.free_back[0]
             pcst[k] = phis[k] + off + t1.free_fwd[0]
             nd[k], nc[k] = t1.pairs_drive[0], t1.pairs_coast[0]
+        if tick is not None:
+            tick(int(idx.max()) + 1)
     return PairProof(phis, theta, overlap, offset, least, pdrv, pcst, nd, nc, rr, name)
 
 

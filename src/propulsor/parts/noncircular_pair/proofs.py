@@ -30,9 +30,16 @@ def prove(d: Design, phases_per_tooth: int, legs: int = 4, progress=lambda s: No
     phis = np.arange(N) * (legs * LEG_PERIOD / N)
     pc = PitchCurves(d.run_law, d.L)
     pitch = math.pi * d.m if d.method == "generated" else d.table.arc
-    progress(f"{d.method}: proof over {legs} leg(s), {N} phases")
+    from ...progress import counter
+
+    if is_walking(d.law):
+        span = f"{legs} leg(s)"
+    else:
+        span = "the whole driven turn" if legs == 4 else f"{legs}/4 of the driven turn"
+    phase = f"{d.method}: proof over {span}"
+    progress(f"{phase}, {N} phases")
     return prove_pair(d.driver.profile, d.driven.profile, mount or d.L, d.run_law.theta, phis, pc.r_H,
-                      name="mesh", pitch_mm=pitch)
+                      name="mesh", pitch_mm=pitch, tick=counter(progress, phase, N, "phase"))
 
 
 def compare(p: NoncircularPairParams, d: Design, prog=lambda s: None):
@@ -108,9 +115,19 @@ def checks_sectors(d: Design, pr) -> list[Check]:
 
 
 
+def _counted(job, tick, k: int):
+    """`job` as it is; `tick(k)` when it is already done (run in this process: no worker was free)."""
+    from ...parallel import Done
+
+    if isinstance(job, Done):
+        tick(k)
+    return job
+
+
 def proofs(dd: PairDesign, w, built: dict) -> None:
     """The built pair over the whole cycle; the other tooth method over one leg when asked."""
     from ...parallel import start
+    from ...progress import count_to, counter
     from ...checks.motion.contact_events import DRIVE, REVERSE
     from .as_built import contact_direction
 
@@ -121,13 +138,18 @@ def proofs(dd: PairDesign, w, built: dict) -> None:
         built["as_built"] = ()  # no running position: no transmission as built
     else:
         prog("as built: both directions' contact on the finished outlines, resolved by contact events")
-        # the two directions beside each other and beside the other method's proof
-        built["as_built"] = (start(contact_direction, d, dd.mount, DRIVE), start(contact_direction, d, dd.mount, REVERSE))
+        # the two directions beside each other and beside the other method's proof (in this process when no
+        # worker is free: then each start is the work itself); their sampled positions counted
+        built["as_built"] = tuple(start(contact_direction, d, dd.mount, way,
+                                        counter=count_to(prog, f"as built: {name} contact", "position"))
+                                  for way, name in ((DRIVE, "drive"), (REVERSE, "reverse")))
         if p.tolerance_grade:
             from .tolerance import iso1328, monte_carlo_cases, run_case, worst_cases
 
             tol = iso1328(d, dd.mount, p.tolerance_grade, math.radians(p.pressure_angle_deg))
             prog(f"as made: {4 + p.tolerance_samples} cases within {tol.source}")
             cases = worst_cases(tol) + monte_carlo_cases(tol, p.tolerance_samples, p.tolerance_seed)
-            built["tolerance"] = (tol, [start(run_case, d, dd.mount, c) for c in cases])
+            tick = counter(prog, "as made: tolerance cases", len(cases), "case")
+            built["tolerance"] = (tol, [_counted(start(run_case, d, dd.mount, c), tick, k + 1)
+                                        for k, c in enumerate(cases)])
     built["other"] = compare(p, d, prog) if p.compare_methods else (None, None, "")

@@ -1,0 +1,293 @@
+"""Live progress (issue 39, «long silences»): count events and their throttle (progress.Reporter.count), the
+command line's renderer on a terminal (a rich live line) and elsewhere (plain lines, throttled, with the time
+left), -q, and the board of several builds side by side."""
+
+from __future__ import annotations
+
+import io
+import json
+import pickle
+
+import pytest
+
+from propulsor import render
+from propulsor.progress import COUNT_EVERY_S, NOTICE, PROGRESS, Event, Reporter, counter
+from propulsor.render import Board, Renderer, eta_text
+
+
+class Clock:
+    """time.monotonic / time.perf_counter under the test's hand."""
+
+    def __init__(self, t: float = 1000.0):
+        self.t = t
+
+    def __call__(self) -> float:
+        return self.t
+
+
+@pytest.fixture
+def clock(monkeypatch):
+    c = Clock()
+    monkeypatch.setattr("propulsor.progress.time.monotonic", c)
+    monkeypatch.setattr("propulsor.render.time.perf_counter", c)
+    return c
+
+
+def test_count_events_are_throttled_first_and_last_always(clock):
+    got = []
+    say = Reporter(got.append)
+    for i in range(1001):  # a loop reporting every turn, all within one instant
+        say.count("proof", i, 1000, "phase")
+    assert [(e.done, e.total) for e in got] == [(0, 1000), (1000, 1000)]
+    assert got[0] == "proof: phase 0/1000" and got[0].phase == "proof" and got[0].kind == PROGRESS
+    got.clear()
+    say.count("proof", 1, 10)  # at the same instant as the last: held back
+    clock.t += 1.0
+    say.count("proof", 1, 10)
+    clock.t += COUNT_EVERY_S / 2
+    say.count("proof", 2, 10)  # too soon after the last one
+    clock.t += COUNT_EVERY_S
+    say.count("proof", 3, 10)
+    assert [e.done for e in got] == [1, 3] and got[1] == "proof: 3/10"
+
+
+def test_a_new_phase_always_goes(clock):
+    got = []
+    say = Reporter(got.append)
+    say.count("a", 1, 5)
+    say.count("b", 1, 5)  # same instant, another phase
+    assert [e.phase for e in got] == ["a", "b"]
+
+
+def test_counter_and_plain_callbacks():
+    got = []
+    tick = counter(Reporter(got.append), "as made: tolerance cases", 32, "case")
+    assert got[-1] == "as made: tolerance cases: case 0/32"
+    tick(32)
+    assert got[-1].done == 32
+    texts = []
+    counter(texts.append, "x", 3)(3)  # a callback that takes text only: no counts
+    counter(None, "x", 3)(3)
+    assert texts == []
+
+
+def test_events_pickle_with_their_counts():
+    e = pickle.loads(pickle.dumps(Event("p: 3/7", PROGRESS, "p", 3, 7)))
+    assert (str(e), e.kind, e.phase, e.done, e.total, e.counted) == ("p: 3/7", PROGRESS, "p", 3, 7, True)
+    plain = pickle.loads(pickle.dumps(Event("solids")))
+    assert plain.phase == "solids" and not plain.counted
+
+
+def test_plain_lines_one_per_phase_the_counts_throttled_with_time_left(clock):
+    out = io.StringIO()
+    r = Renderer(stream=out, live=False)
+    r(Event("solids"))
+    clock.t += 1.0
+    for i in range(11):
+        r(Event(f"proof: phase {i}/10", PROGRESS, "proof", i, 10))
+        clock.t += 1.0  # one a second: a line at the first, after PLAIN_EVERY_S, and the last
+    r(Event("report"))
+    lines = out.getvalue().splitlines()
+    assert lines[0] == "[   0.0 s] solids"
+    assert lines[1] == "[   1.0 s] proof: phase 0/10"
+    assert lines[2].startswith("[   6.0 s] proof: phase 5/10, about 5 s left")
+    assert lines[3] == "[  11.0 s] proof: phase 10/10"
+    assert lines[4] == "[  12.0 s] report" and len(lines) == 5
+
+
+def test_plain_counts_that_give_their_own_time_left_get_none_added(clock):
+    out = io.StringIO()
+    r = Renderer(stream=out, live=False)
+    r(Event("0/4 variants", PROGRESS, "variants", 0, 4))
+    clock.t += 10
+    r(Event("2/4 variants, 12 per min, about 10 s left; variant 2: ok", PROGRESS, "variants", 2, 4))
+    assert out.getvalue().splitlines()[-1] == "[  10.0 s] 2/4 variants, 12 per min, about 10 s left; variant 2: ok"
+
+
+def test_quiet_prints_the_notices_only():
+    out = io.StringIO()
+    r = Renderer(quiet=True, stream=out, live=None)
+    r(Event("solids"))
+    r(Event("proof: 1/2", PROGRESS, "proof", 1, 2))
+    r(Event("output is being built by process 7; waiting", NOTICE))
+    r.close()
+    assert out.getvalue() == "propulsor: output is being built by process 7; waiting\n"
+    assert not r.live
+
+
+def test_not_a_terminal_is_plain_by_itself():
+    out = io.StringIO()
+    assert not Renderer(stream=out).live
+    assert Renderer(stream=out, live=True).live
+
+
+def test_live_line_on_a_terminal(clock):
+    out = io.StringIO()
+    r = Renderer(stream=out, live=True)
+    r(Event("solids"))
+    r(Event("proof: phase 0/40", PROGRESS, "proof", 0, 40))
+    clock.t += 2.0
+    r(Event("proof: phase 20/40", PROGRESS, "proof", 20, 40))
+    r._progress.refresh()
+    drawn = out.getvalue()
+    r.close()
+    assert "\x1b[" in drawn  # drawn for a terminal (cursor and colour codes)
+    assert "20/40" in drawn and "about 2 s left" in drawn  # the count and the time left at its pace
+    assert "[   0.0 s] solids" in drawn and "[   0.0 s] proof" in drawn  # each new step stays as a line
+    assert "phase 20/40" not in drawn.split("[   0.0 s] proof")[1].split("\n")[0]  # counts only on the live line
+    r(Event("after"))  # closed: plain lines
+    assert out.getvalue().endswith("after\n")
+
+
+def test_eta_text():
+    assert eta_text(None) == "" and eta_text(0.2) == "about 1 s left"
+    assert eta_text(42.4) == "about 42 s left" and eta_text(600) == "about 10 min left"
+
+
+def test_board_plain_one_line_per_step_of_each_build(clock):
+    out = io.StringIO()
+    b = Board(stream=out, live=False)
+    b.start(1, "parts/a.toml")
+    b.start(2, "parts/b.toml")
+    ev = [dict(kind="progress", text="solids", phase="solids", done=None, total=None),
+          dict(kind="progress", text="proof: 0/4", phase="proof", done=0, total=4),
+          dict(kind="progress", text="proof: 1/4", phase="proof", done=1, total=4),  # throttled
+          dict(kind="notice", text="check failed: x", phase="check failed: x", done=None, total=None)]  # its stderr's
+    data = "".join(json.dumps(e) + "\n" for e in ev).encode()
+    b.feed(1, data[:17])  # a line in pieces
+    b.feed(1, data[17:])
+    b.end(1)
+    b.close()
+    assert out.getvalue().splitlines() == ["propulsor: building parts/a.toml", "propulsor: building parts/b.toml",
+                                           "[   0.0 s] parts/a.toml: solids", "[   0.0 s] parts/a.toml: proof: 0/4"]
+
+
+def test_board_live_lines(clock):
+    out = io.StringIO()
+    b = Board(stream=out, live=True)
+    b.start(1, "parts/a.toml")
+    b.start(2, "parts/b.toml")
+    b.feed(2, (json.dumps(dict(kind="progress", text="proof: 3/9", phase="proof", done=3, total=9)) + "\n").encode())
+    b._progress.refresh()
+    b.close()
+    drawn = out.getvalue()
+    assert "parts/a.toml" in drawn and "parts/b.toml: proof" in drawn and "3/9" in drawn and "\x1b[" in drawn
+
+
+def test_forwarded_events(tmp_path, monkeypatch):
+    import os
+
+    rfd, wfd = os.pipe()
+    monkeypatch.setattr(render, "_FORWARD_FD", wfd)
+    r = Renderer(quiet=True, stream=io.StringIO(), live=False)
+    r(Event("proof: 2/5", PROGRESS, "proof", 2, 5))
+    os.close(wfd)
+    monkeypatch.setattr(render, "_FORWARD_FD", None)
+    with os.fdopen(rfd, "rb") as f:
+        assert json.loads(f.readline()) == dict(kind="progress", text="proof: 2/5", phase="proof", done=2, total=5)
+
+
+def _fake_build(args, part_file, depfile):
+    """A build that reports as a real one does (its own Renderer, a step, a count, a notice)."""
+    import time
+
+    with Renderer(args.quiet) as r:
+        say = Reporter(r)
+        say(f"{part_file.stem}: solids")
+        tick = say.counter(f"{part_file.stem}: proof", 3, "phase")
+        for i in range(1, 4):
+            time.sleep(0.05)
+            tick(i)
+        say.notice(f"{part_file.stem}: a notice")
+    return 0
+
+
+@pytest.mark.parametrize("quiet", [False, True])
+def test_builds_side_by_side_report_through_the_board(monkeypatch, capfd, quiet):
+    """`propulsor build a b` (what make runs), stderr not a terminal: each build's steps and counts come as
+    plain lines while it runs, named by its part file, and are not repeated when its own output is written
+    out at its end (that keeps its notices); -q: the notices only."""
+    from pathlib import Path
+
+    import propulsor.cli as cli
+
+    root = Path(__file__).resolve().parents[1]
+    monkeypatch.setenv("PROPULSOR_JOBS", "2")
+    monkeypatch.delenv("MAKEFLAGS", raising=False)
+    monkeypatch.setattr(cli, "build_one", _fake_build)
+    files = [str(root / "parts" / f"{n}.toml") for n in ("road_wheel", "cam_linear")]
+    assert cli.main(["build", *files] + (["-q"] if quiet else [])) == 0
+    err = capfd.readouterr().err.splitlines()
+    notices = [ln for ln in err if ln.endswith(": a notice")]
+    assert sorted(notices) == ["propulsor: cam_linear: a notice", "propulsor: road_wheel: a notice"]
+    if quiet:
+        assert err == notices
+        return
+    assert err[0] == "[   0.0 s] 2 part files: loading the CAD kernel and the checks"
+    for f, stem in zip(files, ("road_wheel", "cam_linear")):
+        mine = [ln for ln in err if f in ln or ln.startswith(f"propulsor: {stem}")]
+        assert f"propulsor: building {f}" in mine
+        assert sum(ln.endswith(f"{f}: {stem}: solids") for ln in err) == 1, err  # the board's, while it runs
+        assert not any(ln.endswith(f"s] {stem}: solids") for ln in err), err  # not again in its output at its end
+        assert any(ln.endswith(f"{f}: {stem}: proof: phase 0/3") for ln in mine), err
+        assert any(ln.endswith(f"{f}: {stem}: proof: phase 3/3") for ln in mine), err
+
+
+class _Terminal(io.StringIO):
+    def isatty(self) -> bool:
+        return True
+
+
+@pytest.mark.parametrize("makeflags, live", [(None, True), ("", True), (" -j2 --jobserver-auth=3,4", False),
+                                             (" -j", False)])
+def test_live_on_a_terminal_but_not_under_a_parallel_make(monkeypatch, makeflags, live):
+    """`make -jN` may run other commands drawing on the same terminal at once: plain lines there."""
+    if makeflags is None:
+        monkeypatch.delenv("MAKEFLAGS", raising=False)
+    else:
+        monkeypatch.setenv("MAKEFLAGS", makeflags)
+    assert Renderer(stream=_Terminal()).live is live and Board(stream=_Terminal()).live is live
+    assert not Renderer(quiet=True, stream=_Terminal()).live
+
+
+def _ticking_job(n: int) -> int:
+    import time
+
+    from propulsor.parallel import tick
+
+    for i in range(1, n + 1):
+        time.sleep(0.02)
+        tick(i, n)
+    return n
+
+
+@pytest.mark.parametrize("jobs", ["1", "2"])
+def test_a_job_counts_to_the_build_that_started_it(monkeypatch, jobs):
+    """parallel.start(..., counter=): a job's ticks reach the counter — at once when it runs inline (a budget of
+    one process), through a pipe while parallel.result waits for it when forked (the last always)."""
+    from propulsor import parallel
+
+    monkeypatch.setenv("PROPULSOR_JOBS", jobs)
+    monkeypatch.delenv("MAKEFLAGS", raising=False)
+    got = []
+    with parallel.Workers():
+        job = parallel.start(_ticking_job, 20, counter=lambda done, total: got.append((done, total)))
+        assert parallel.result(job) == 20
+        assert parallel.result(parallel.start(_ticking_job, 3)) == 3  # without a counter: as before
+    if jobs == "1":
+        assert isinstance(job, parallel.Done) and got == [(i, 20) for i in range(1, 21)]
+    else:
+        assert not isinstance(job, parallel.Done) and got[-1] == (20, 20) and 1 <= len(got) < 20
+        assert job.propulsor_ticks.fd == -1  # its pipe closed once collected
+    assert parallel._TICK is None
+
+
+def test_a_count_read_late_paces_from_its_first_count(clock):
+    """A worker's count read only when the build waits for it starts at, say, 2500/7200: the time left is at
+    the pace from there, not as if those 2500 had taken no time."""
+    out = io.StringIO()
+    r = Renderer(stream=out, live=False)
+    r(Event("c: 2500/7200", PROGRESS, "c", 2500, 7200))
+    clock.t += 10
+    r(Event("c: 3000/7200", PROGRESS, "c", 3000, 7200))
+    assert out.getvalue().splitlines()[-1] == "[  10.0 s] c: 3000/7200, about 84 s left"
