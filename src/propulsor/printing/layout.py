@@ -82,7 +82,8 @@ def pack(footprints: dict[str, tuple[float, float]], bed_x: float, bed_y: float,
             turned = True
         else:
             raise InputError("piece", name, f"{w:.1f} × {d:.1f} mm does not fit the {bed_x:g} × {bed_y:g} mm bed "
-                             f"with {margin:g} mm margins")
+                             f"with {margin:g} mm margins", f"a bed of at least {math.ceil(max(w, d) + 2 * margin):g} "
+                             f"× {math.ceil(min(w, d) + 2 * margin):g} mm")
         items.append((name, (d, w) if turned else (w, d), turned))
     items.sort(key=lambda it: (-it[1][1], -it[1][0], it[0]))
     plates: list[Plate] = []
