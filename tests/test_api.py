@@ -6,6 +6,7 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -242,6 +243,13 @@ def test_kept_files_stand_for_a_build_only_while_what_it_read_is_unchanged(tmp_p
     assert not kept.current()
     part_file.write_text('type = "road_wheel"\n')
     assert kept.current()
+    pid = os.fork()
+    if pid == 0:  # a forked process (a worker, a Dask task) that lets go of its copy leaves the folder
+        try:
+            kept.drop()
+        finally:
+            os._exit(0)
+    assert os.waitpid(pid, 0)[1] == 0 and kept.current()
     part_file.unlink()
     assert not kept.current()
     del kept

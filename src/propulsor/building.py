@@ -265,17 +265,25 @@ def _digests(paths) -> dict:
     return out
 
 
+def _remove_kept(folder: str, owner: int) -> None:
+    """Remove a kept build's folder — in the process that made it only (a forked worker or a forked build
+    that lets go of its copy of the object leaves it)."""
+    if os.getpid() == owner:
+        shutil.rmtree(folder, ignore_errors=True)
+
+
 class KeptFiles:
     """The files a build made in memory wrote, kept in its private temporary folder for a later
     :func:`build` into an output folder (copied there under the folder's rules instead of building again).
-    The folder is removed when this object is collected, by :meth:`drop`, or when the interpreter exits."""
+    The folder is removed when this object is collected, by :meth:`drop`, or when the interpreter exits (by
+    the process that made it only)."""
 
     def __init__(self, folder: Path, read: dict):
         import weakref
 
         self.folder = Path(folder)
         self.read = dict(read)  # {file the build read: (size, sha256)} taken before it started
-        self._remove = weakref.finalize(self, shutil.rmtree, str(self.folder), True)
+        self._remove = weakref.finalize(self, _remove_kept, str(self.folder), os.getpid())
 
     def current(self) -> bool:
         """Whether the files may stand for a new build: still there, and every file the build read (the
