@@ -324,3 +324,34 @@ print(json.dumps({{"calls": len(calls), "html": html, "values": dict(values),
     glbs = [base64.b64decode("".join(inner.blocks))]
     assert glbs[0][:4] == b"glTF"
     assert "mass_wheel_kg" in got["html"]
+
+
+def test_a_pairs_solids_come_from_its_solid_steps_without_a_build_or_a_file(tmp_path, monkeypatch):
+    """A non-circular pair declares its solid steps: .solids, .assembly(), .profiles run the design and those
+    steps only (seconds; no build, nothing in the temporary folder), and the solids are the design's
+    outlines extruded by the face width."""
+    import tempfile
+
+    import numpy as np
+
+    import propulsor.building as building
+
+    calls = []
+    real = building.produce_build
+    monkeypatch.setattr(building, "produce_build", lambda *a, **k: calls.append(1) or real(*a, **k))
+    (tmp_path / "tmp").mkdir()
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path / "tmp"))
+    gear = propulsor.part(PARTS / "ncg_elliptical.toml")
+    solids = gear.solids
+    assert sorted(solids) == ["driven", "driver"] and [c.name for c in gear.assembly().children] == ["driven", "driver"]
+    assert sorted(gear.profiles) == ["driven", "driver"]
+    assert calls == [] and "build" not in gear.__dict__ and list((tmp_path / "tmp").iterdir()) == []
+
+    def area(pl):
+        return 0.5 * abs(np.dot(pl[:, 0], np.roll(pl[:, 1], -1)) - np.dot(pl[:, 1], np.roll(pl[:, 0], -1)))
+
+    for role, profile in zip(("driver", "driven"), gear.design.profiles):
+        outer, *holes = profile.polylines()
+        expected = (area(outer) - sum(area(h) for h in holes)) * gear.params.face_width_mm
+        assert solids[role].Volume() == pytest.approx(expected, rel=1e-4)
+        assert gear.shapes.derived[f"{role}_volume_mm3"] == solids[role].Volume()

@@ -7,7 +7,7 @@ proofs and its files — the same work and the same bytes as the command line.
     gear = propulsor.part("parts/ncg_seed002.toml", face_width_mm=15.0)       # a part file, overridden
     gear.params.module_mm            # validated, frozen parameters (mm, rad inside)
     gear.design                      # computed once, frozen: what the build makes its geometry from
-    gear.solids["driven"]            # cadquery Shapes (a real build, run once and kept)
+    gear.solids["driven"]            # cadquery Shapes (the design and the solid steps: no file; else the build)
     gear.assembly()                  # cq.Assembly with named, placed, coloured components
     gear.profiles["driven"]          # the DXF outlines as (N, 2) arrays in mm
     [c for c in gear.prove() if not c.passed]   # every check of the build (value, limit, pass/fail)
@@ -260,15 +260,29 @@ class Part:
         run = self.proof_run
         return Values(run.derived, run.glossary, "build" if run.whole_build else "proof")
 
+    @cached_property
+    def shapes(self):
+        """The solids, assemblies and DXF outlines alone (``building.SolidsResult``): where the part type
+        declares the steps that make them (a non-circular pair), the design and those steps only — no file,
+        no check, seconds —, else from its whole build (:attr:`build`); once a build was made, its own."""
+        from .building import SolidsResult, solids, solids_alone
+
+        if "build" in self.__dict__ or not solids_alone(self._loaded):
+            b = self.build
+            return SolidsResult(b.solids, b.profiles, b.assemblies,
+                                {k: v for k, v in b.derived.items() if k.endswith("_volume_mm3")})
+        return solids(self._loaded)
+
     @property
     def solids(self) -> dict:
-        """name -> cadquery Shape of every solid the build writes (``<name>.step``), in mm."""
-        return self.build.solids
+        """name -> cadquery Shape of every solid the build writes (``<name>.step``), in mm (:attr:`shapes`:
+        without the build's files where the part type allows)."""
+        return self.shapes.solids
 
     @property
     def profiles(self) -> dict[str, list[np.ndarray]]:
         """DXF name -> the closed outlines of its CUT layer as (N, 2) arrays in mm (chord ≤ 0.005 mm)."""
-        return {name: [pl for prof in profs for pl in prof.polylines()] for name, profs in self.build.profiles.items()}
+        return {name: [pl for prof in profs for pl in prof.polylines()] for name, profs in self.shapes.profiles.items()}
 
     @cached_property
     def proof_run(self) -> Proof:
@@ -301,7 +315,7 @@ class Part:
 
         from .export.render import palette_colour
 
-        assemblies = self.build.assemblies
+        assemblies = self.shapes.assemblies
         if not assemblies:
             raise InputError("assembly", self.type, "this part has no assembly; see .solids")
         name = name or next(iter(assemblies))

@@ -31,7 +31,7 @@ from .progress import Reporter
 from .signals import check_signalled, held_signals
 
 __all__ = ["Loaded", "BuildResult", "ProofResult", "KeptFiles", "load", "target", "build", "build_kit", "build_in_memory", "design",
-           "prove", "publish",
+           "prove", "solids", "solids_alone", "SolidsResult", "publish",
            "as_path", "files_read", "named_files", "vet_depfile", "write_depfile", "gallery_folder", "regenerate_gallery",
            "write_gallery_locked", "TURN"]
 
@@ -459,6 +459,45 @@ def prove(part: Loaded, progress=None) -> ProofResult:
         finally:
             w.close()
     return ProofResult(tuple(failures), tuple(w.checks), dict(w.derived), False, glossary_of_writer(w))
+
+
+@dataclasses.dataclass(frozen=True)
+class SolidsResult:
+    """What the design and the solid steps of a part made, without their files or checks (in memory)."""
+
+    solids: dict  # name -> cadquery Shape (the solids the build writes as <name>.step)
+    profiles: dict  # DXF name -> list of Profile
+    assemblies: dict  # name -> [(component, solid, (x, y, z) mm, rotation about z rad)]
+    derived: dict  # each solid's <name>_volume_mm3
+
+
+def solids_alone(part: Loaded) -> bool:
+    """Whether the part type declares its solid steps (``Pipeline.solids_alone``): else its solids come
+    from its whole build."""
+    from .parts.pipeline import Pipeline
+
+    pipeline = part.part_type.build
+    return isinstance(pipeline, Pipeline) and pipeline.solids_alone
+
+
+def solids(part: Loaded, progress=None) -> SolidsResult:
+    """The design and the part type's solid steps only: the solids, assemblies and DXF outlines the build
+    makes, without writing a file or running the files' checks; a part type that declares no solid steps
+    runs its whole build in memory (:func:`build_in_memory`)."""
+    if not solids_alone(part):
+        b = build_in_memory(part, progress)
+        return SolidsResult(b.solids, b.profiles, b.assemblies,
+                            {k: v for k, v in b.derived.items() if k.endswith("_volume_mm3")})
+    from .parallel import Workers
+    from .parts.proof_writer import SolidWriter
+
+    with Workers(), TURN:
+        w = SolidWriter(part.part_type.name, part.params, progress=Reporter.of(progress), source=part.source)
+        try:
+            part.part_type.build.solids(part.params, w)
+        finally:
+            w.close()
+    return SolidsResult(dict(w.built_solids), dict(w.built_profiles), dict(w.built_assemblies), dict(w.derived))
 
 
 def gallery_folder(folder: Path) -> bool:
