@@ -225,10 +225,13 @@ class Part:
         lead = f"<p><b>{e(self.type)}</b>{' — ' + e(str(self.source)) if self.source else ''}: {e(status)}</p>"
         folder = b.result.files.folder if b.result is not None and b.result.files is not None else \
             (b.result.out if b.result is not None else None)
-        doc = view_page(folder) if folder is not None else None
+        try:
+            doc = view_page(folder) if folder is not None else None
+        except (OSError, ValueError):  # a written folder changed since (the kept one is private)
+            doc = None
         view = (f'<iframe title="{e(self.type)}" sandbox="allow-scripts" style="width: 100%; height: 640px; '
                 f'border: 0" srcdoc="{e(doc, quote=True)}"></iframe>') if doc else \
-            '<p>(no 3D view: this build wrote no assembly)</p>'
+            '<p>(no 3D view: no assembly of this build to show)</p>'
         from .parts import key_values_of
 
         keys = [k for k in key_values_of(self.type) if k in b.derived] or list(b.derived)
@@ -332,11 +335,12 @@ class Part:
               wait: bool = True, progress=None) -> Path:
         """Build into folder `out` exactly as ``propulsor build PART --out OUT`` does (the same files, the
         same bytes; the same folder rules, lock and atomic replacement), through the same build service
-        (``building.build``).  When this part was built already (:attr:`build`, :attr:`solids`,
-        :meth:`prove`, a previous write), the files of that build are copied into the folder instead of building
-        again — unless the part file or a file it names changed since (then it builds).  Byte for byte as a
-        build on its own is the first build of a process: after other builds in the same interpreter, OCCT's
-        STEP writer may break the lines of an assembly's STEP elsewhere (the same entities and values).  `wait`: wait for another build holding the folder (False:
+        (``building.build``).  When this part was built already in memory (:attr:`build`, :meth:`prove`,
+        :attr:`solids` where they need the build, the notebook's view), the files of that build are copied into
+        the folder instead of building again — unless the part file or a file it names changed since (then it
+        builds).  Byte for byte as a build on its own is the first build of a process: after other builds in
+        the same interpreter, OCCT's STEP writer may break the lines of an assembly's STEP elsewhere (the same
+        entities and values).  `wait`: wait for another build holding the folder (False:
         ``FolderBusy``, an InputError); `progress`: a callback for the build's events
         (:class:`propulsor.progress.Event`, a str with a ``kind``).  Returns the folder; InputError for a folder
         that may not be used, CheckFailed when a check failed (outputs kept only with `keep_failed`),
