@@ -248,8 +248,9 @@ def _result(out: Path, what: str, w, failures, keep, page: Path | None = None) -
 
 def glossary_of_writer(w) -> dict:
     """{path: (unit, meaning)} of every derived value of writer `w` that has a meaning (the manifest's
-    ``glossary``: the part type's glossary and what the build described)."""
-    return {e.path: (e.unit, e.meaning) for e in w.explained()}
+    ``glossary``: the part type's glossary and what the build described); {} for a writer that keeps none."""
+    explained = getattr(w, "explained", None)
+    return {e.path: (e.unit, e.meaning) for e in explained()} if explained is not None else {}
 
 
 def _digests(paths) -> dict:
