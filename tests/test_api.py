@@ -6,6 +6,7 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -188,3 +189,169 @@ def test_the_api_reference_builds_without_a_warning(tmp_path):
     assert r.returncode == 0, r.stderr[-2000:]
     page = (tmp_path / "propulsor" / "api.html").read_text()
     assert "def part" in page or "part(" in page
+
+
+def test_values_are_a_read_only_mapping_with_units_and_meanings():
+    """Part.values / Build.values: a mapping and attributes, the glossary's unit and meaning, a table."""
+    from propulsor.api import Values
+
+    derived = {"center_distance_mm": 101.25, "law": "elliptical", "sigma_MPa": {"stop": 12.5}}
+    glossary = {"center_distance_mm": ("mm", "installed centre distance <L>"), "law": ("", "the law"),
+                "sigma_MPa": ("MPa", "stress"), "sigma_MPa.stop": ("MPa", "stress: stop")}
+    v = Values(derived, glossary, "proof")
+    assert v.center_distance_mm == v["center_distance_mm"] == 101.25 and v.depth == "proof"
+    assert dict(v) == derived and len(v) == 3 and "law" in v and "center_distance_mm" in dir(v)
+    assert v.unit("center_distance_mm") == "mm" and v.meaning("sigma_MPa.stop") == "stress: stop"
+    assert v.unit("law") == ""
+    with pytest.raises(AttributeError, match="no derived value 'nope' at depth proof"):
+        v.nope
+    with pytest.raises(KeyError):
+        v.unit("nope")
+    with pytest.raises(AttributeError):
+        v.center_distance_mm = 1.0
+    with pytest.raises(TypeError):
+        v["law"] = "x"  # type: ignore[index]
+    derived["center_distance_mm"] = 0.0  # the mapping is its own copy
+    assert v.center_distance_mm == 101.25
+    lines = repr(v).splitlines()
+    assert lines[0] == "<propulsor.Values: 3 derived values, depth proof>"
+    assert lines[1].split() == ["center_distance_mm", "101.25", "mm"]
+    page = v._repr_html_()
+    assert "installed centre distance &lt;L&gt;" in page and "<L>" not in page
+
+
+def test_kept_files_stand_for_a_build_only_while_what_it_read_is_unchanged(tmp_path):
+    """A write after a build copies its files only when the part file (and every file it names) is as
+    the build read it, and the kept folder is removed with its owner."""
+    import gc
+
+    from propulsor.building import KeptFiles, _digests
+
+    part_file = tmp_path / "p.toml"
+    part_file.write_text('type = "road_wheel"\n')
+    folder = tmp_path / "kept"
+    (folder / "tables").mkdir(parents=True)
+    (folder / "manifest.json").write_text("{}")
+    (folder / "tables" / "t.csv").write_text("a\n1\n")
+    kept = KeptFiles(folder, _digests([part_file]))
+    assert kept.current()
+    into = tmp_path / "into"
+    into.mkdir()
+    kept.copy_into(into)
+    assert _shas(into) == _shas(folder)
+    part_file.write_text('type = "road_wheel"\n# a comment\n')  # the same parameters, other bytes
+    assert not kept.current()
+    part_file.write_text('type = "road_wheel"\n')
+    assert kept.current()
+    pid = os.fork()
+    if pid == 0:  # a forked process (a worker, a Dask task) that lets go of its copy leaves the folder
+        try:
+            kept.drop()
+        finally:
+            os._exit(0)
+    assert os.waitpid(pid, 0)[1] == 0 and kept.current()
+    part_file.unlink()
+    assert not kept.current()
+    del kept
+    gc.collect()
+    assert not folder.exists()
+
+
+def test_a_part_built_then_written_is_built_once_the_bytes_of_propulsor_build_and_shown_in_a_notebook(tmp_path):
+    """.solids then .write(): one build (its files copied), the bytes of `propulsor build`; the values of
+    the build are the manifest's with its units; _repr_html_ draws the build's GLB in the viewer, every text
+    escaped.  In a fresh interpreter, as a script or a notebook's kernel is."""
+    import base64
+    from html.parser import HTMLParser
+
+    part_file = tmp_path / 'wheel <&"> 1.toml'
+    part_file.write_text((PARTS / "road_wheel.toml").read_text())
+    api_out, cli_out = tmp_path / "api", tmp_path / "cli"
+    script = f"""
+import json, propulsor, propulsor.building as b
+calls = []
+real = b.produce_build
+b.produce_build = lambda *a, **k: calls.append(1) or real(*a, **k)
+wheel = propulsor.part({str(part_file)!r})
+assert set(wheel.solids) >= {{"disc", "rim_1"}} and calls == [1]
+html = wheel._repr_html_()
+wheel.write({str(api_out)!r})
+assert calls == [1], calls
+values = wheel.build.values
+print(json.dumps({{"calls": len(calls), "html": html, "values": dict(values),
+                  "units": {{k: values.unit(k) for k in values}}, "depth": wheel.values.depth,
+                  "proof": dict(wheel.values)}}))
+"""
+    r = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, cwd=ROOT, timeout=900)
+    assert r.returncode == 0, r.stderr[-3000:]
+    got = json.loads(r.stdout.splitlines()[-1])
+    r = _cli("build", str(part_file), "--out", str(cli_out), "-q")
+    assert r.returncode == 0, r.stderr
+    a, b = _shas(api_out), _shas(cli_out)
+    assert a.keys() == b.keys() and len(a) > 10
+    assert [k for k in a if a[k] != b[k]] == []
+    manifest = json.loads((cli_out / "manifest.json").read_text())
+    assert got["values"] == manifest["derived"]
+    assert got["units"] == {k: manifest["glossary"][k]["unit"] for k in manifest["derived"]}
+    assert all(got["proof"][k] == manifest["derived"][k] for k in got["proof"])
+
+    class Page(HTMLParser):
+        def __init__(self):
+            super().__init__()
+            self.srcdoc, self.blocks, self.text, self._block = [], [], [], False
+
+        def handle_starttag(self, tag, attrs):
+            a = dict(attrs)
+            if tag == "iframe":
+                self.srcdoc.append(a["srcdoc"])
+            self._block = tag == "script" and a.get("class") == "propulsor-glb"
+
+        def handle_data(self, data):
+            (self.blocks if self._block else self.text).append(data)
+
+        def handle_endtag(self, tag):
+            self._block = False
+
+    outer = Page()
+    outer.feed(got["html"])
+    outer.close()
+    assert 'wheel <&"> 1.toml' in "".join(outer.text) and 'wheel <&"> 1.toml' not in got["html"]
+    assert 'wheel &lt;&amp;&quot;&gt; 1.toml' in got["html"]
+    assert len(outer.srcdoc) == 1
+    inner = Page()
+    inner.feed(outer.srcdoc[0])
+    inner.close()
+    glbs = [base64.b64decode("".join(inner.blocks))]
+    assert glbs[0][:4] == b"glTF"
+    assert "mass_wheel_kg" in got["html"]
+
+
+def test_a_pairs_solids_come_from_its_solid_steps_without_a_build_or_a_file(tmp_path, monkeypatch):
+    """A non-circular pair declares its solid steps: .solids, .assembly(), .profiles run the design and those
+    steps only (seconds; no build, nothing in the temporary folder), and the solids are the design's
+    outlines extruded by the face width."""
+    import tempfile
+
+    import numpy as np
+
+    import propulsor.building as building
+
+    calls = []
+    real = building.produce_build
+    monkeypatch.setattr(building, "produce_build", lambda *a, **k: calls.append(1) or real(*a, **k))
+    (tmp_path / "tmp").mkdir()
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path / "tmp"))
+    gear = propulsor.part(PARTS / "ncg_elliptical.toml")
+    solids = gear.solids
+    assert sorted(solids) == ["driven", "driver"] and [c.name for c in gear.assembly().children] == ["driven", "driver"]
+    assert sorted(gear.profiles) == ["driven", "driver"]
+    assert calls == [] and "build" not in gear.__dict__ and list((tmp_path / "tmp").iterdir()) == []
+
+    def area(pl):
+        return 0.5 * abs(np.dot(pl[:, 0], np.roll(pl[:, 1], -1)) - np.dot(pl[:, 1], np.roll(pl[:, 0], -1)))
+
+    for role, profile in zip(("driver", "driven"), gear.design.profiles):
+        outer, *holes = profile.polylines()
+        expected = (area(outer) - sum(area(h) for h in holes)) * gear.params.face_width_mm
+        assert solids[role].Volume() == pytest.approx(expected, rel=1e-4)
+        assert gear.shapes.derived[f"{role}_volume_mm3"] == solids[role].Volume()

@@ -30,8 +30,8 @@ from .errors import CheckFailed, EnvironmentFailure, FolderBusy, InputError
 from .progress import Reporter
 from .signals import check_signalled, held_signals
 
-__all__ = ["Loaded", "BuildResult", "ProofResult", "load", "target", "build", "build_kit", "build_in_memory", "design",
-           "prove", "publish",
+__all__ = ["Loaded", "BuildResult", "ProofResult", "KeptFiles", "load", "target", "build", "build_kit", "build_in_memory", "design",
+           "prove", "solids", "solids_alone", "SolidsResult", "publish",
            "as_path", "files_read", "named_files", "vet_depfile", "write_depfile", "gallery_folder", "regenerate_gallery",
            "write_gallery_locked", "TURN"]
 
@@ -73,6 +73,10 @@ class BuildResult:
     failures: tuple[str, ...] = ()
     files_read: tuple[Path, ...] = ()
     gallery: Path | None = None
+    #: path of every derived value -> (unit, meaning): the manifest's ``glossary``
+    glossary: dict = dataclasses.field(default_factory=dict)
+    #: the build's files kept for a later :func:`build` into a folder (:func:`build_in_memory` with `keep_files`)
+    files: "KeptFiles | None" = dataclasses.field(default=None, repr=False, compare=False)
 
 
 def named_files(params, part_file: Path) -> tuple[tuple[str, str, Path], ...]:
@@ -253,9 +257,73 @@ def publish(out: Path, keep: tuple[Path, ...], produce: Callable, *, force: bool
 
 
 def _result(out: Path, what: str, w, failures, keep, page: Path | None = None) -> BuildResult:
+    if isinstance(w, BuildResult):  # the files of a build made before, copied (build's `reuse`)
+        return dataclasses.replace(w, out=out, what=what, failures=tuple(failures), files_read=tuple(keep),
+                                   gallery=page)
     return BuildResult(out, what, tuple(w.checks), dict(w.derived), dict(getattr(w, "built_solids", {})),
                        dict(getattr(w, "built_profiles", {})), dict(getattr(w, "built_assemblies", {})),
-                       tuple(failures), tuple(keep), page)
+                       tuple(failures), tuple(keep), page, glossary_of_writer(w))
+
+
+def glossary_of_writer(w) -> dict:
+    """{path: (unit, meaning)} of every derived value of writer `w` that has a meaning (the manifest's
+    ``glossary``: the part type's glossary and what the build described); {} for a writer that keeps none."""
+    explained = getattr(w, "explained", None)
+    return {e.path: (e.unit, e.meaning) for e in explained()} if explained is not None else {}
+
+
+def _digests(paths) -> dict:
+    """{path: (size, sha256)} of each file (None for one that cannot be read as a regular file)."""
+    from .regular_file import sha256_regular
+
+    out: dict = {}
+    for p in paths:
+        try:
+            out[Path(p)] = sha256_regular(p)
+        except (OSError, ValueError):
+            out[Path(p)] = None
+    return out
+
+
+def _remove_kept(folder: str, owner: int) -> None:
+    """Remove a kept build's folder — in the process that made it only (a forked worker or a forked build
+    that lets go of its copy of the object leaves it)."""
+    if os.getpid() == owner:
+        shutil.rmtree(folder, ignore_errors=True)
+
+
+class KeptFiles:
+    """The files a build made in memory wrote, kept in its private temporary folder for a later
+    :func:`build` into an output folder (copied there under the folder's rules instead of building again).
+    The folder is removed when this object is collected, by :meth:`drop`, or when the interpreter exits (by
+    the process that made it only)."""
+
+    def __init__(self, folder: Path, read: dict):
+        import weakref
+
+        self.folder = Path(folder)
+        self.read = dict(read)  # {file the build read: (size, sha256)} taken before it started
+        self._remove = weakref.finalize(self, _remove_kept, str(self.folder), os.getpid())
+
+    def current(self) -> bool:
+        """Whether the files may stand for a new build: still there, and every file the build read (the
+        part file and the files it names) unchanged since."""
+        return self._remove.alive and (self.folder / "manifest.json").is_file() and \
+            _digests(self.read) == self.read
+
+    def copy_into(self, folder: Path) -> None:
+        """Every kept file into `folder` (existing, empty): sub-folders made as the build makes them, each
+        file's bytes copied (new files, their times now: as written by a build)."""
+        from .write_root import prepare
+
+        for dirpath, _, filenames in os.walk(self.folder):
+            rel = os.path.relpath(dirpath, self.folder)
+            for name in sorted(filenames):
+                shutil.copyfile(os.path.join(dirpath, name), prepare(Path(folder) / rel / name))
+
+    def drop(self) -> None:
+        """Remove the kept folder now."""
+        self._remove()
 
 
 def as_path(value, key: str) -> Path:
@@ -273,18 +341,28 @@ def as_path(value, key: str) -> Path:
 
 
 def build(part: Loaded, out, *, force: bool = False, keep_failed: bool = False, wait: bool = True,
-          progress=None, vetted: bool = False) -> BuildResult:
+          progress=None, vetted: bool = False, reuse: BuildResult | None = None) -> BuildResult:
     """Build `part` into folder `out` (text, bytes or a path): the files ``propulsor build`` writes, under the
     folder's rules (vetted, locked, built into a temporary folder, put in place in one step).  `progress`:
     a callback for the :class:`~.progress.Event` s on the way (None: none).  `vetted`: `out` is already the
     absolute folder :func:`target` made of it with this part's files (the command line vets before it loads
-    the part file); it is vetted again once the lock is held either way.  See :func:`publish` for what it
+    the part file); it is vetted again once the lock is held either way.  `reuse`: a build of this same
+    part made before by :func:`build_in_memory` with its files kept — its files are copied into the
+    temporary folder instead of building again (the same bytes: they are that build's), when they are still
+    there and no file the build read has changed since (else it builds).  See :func:`publish` for what it
     raises."""
     keep = part.files_read
     if not vetted:
         out = target(out, Path("output") / (part.source.stem if part.source else part.part_type.name), force, keep)
-    return publish(out, keep, lambda tmp, say: produce_build(part.part_type, part.params, part.source, tmp, say),
-                   force=force, keep_failed=keep_failed, wait=wait, progress=progress)
+
+    def produce(tmp: Path, say):
+        if reuse is not None and reuse.files is not None and reuse.files.current():
+            say(f"{reuse.what}: the files of the build made in memory")
+            reuse.files.copy_into(tmp)
+            return list(reuse.failures), reuse.what, reuse
+        return produce_build(part.part_type, part.params, part.source, tmp, say)
+
+    return publish(out, keep, produce, force=force, keep_failed=keep_failed, wait=wait, progress=progress)
 
 
 def build_kit(part: Loaded, out, printer, *, scale: float | None = None, sliced: bool = False,
@@ -324,9 +402,10 @@ def build_kit(part: Loaded, out, printer, *, scale: float | None = None, sliced:
     return publish(out, keep, produce, force=force, keep_failed=keep_failed, wait=wait, progress=progress)
 
 
-def build_in_memory(part: Loaded, progress=None) -> BuildResult:
-    """One real build of `part` into a temporary folder (removed after): its checks, values, solids, outlines
-    and assemblies in memory (``BuildResult.out`` names the folder it was written to, gone by now).  Never
+def build_in_memory(part: Loaded, progress=None, keep_files: bool = False) -> BuildResult:
+    """One real build of `part` into a private temporary folder: its checks, values, solids, outlines
+    and assemblies in memory.  The folder is removed after, or with `keep_files` kept as
+    ``BuildResult.files`` (:class:`KeptFiles`, removed with it) for a later :func:`build`'s `reuse`.  Never
     raises CheckFailed: the failures are in the result."""
     import tempfile
 
@@ -334,13 +413,19 @@ def build_in_memory(part: Loaded, progress=None) -> BuildResult:
     from .write_root import writing_into
 
     say = Reporter.of(progress)
+    read = _digests(part.files_read) if keep_files else {}
     folder = Path(tempfile.mkdtemp(prefix="propulsor-api-"))
+    kept = False
     try:
         with Workers(), writing_into(folder), TURN:
             failures, what, w = produce_build(part.part_type, part.params, part.source, folder, say)
+        result = _result(folder, what, w, failures, part.files_read)
+        if keep_files:
+            result, kept = dataclasses.replace(result, files=KeptFiles(folder, read)), True
     finally:
-        shutil.rmtree(folder, ignore_errors=True)
-    return _result(folder, what, w, failures, part.files_read)
+        if not kept:
+            shutil.rmtree(folder, ignore_errors=True)
+    return result
 
 
 def design(part: Loaded):
@@ -369,6 +454,7 @@ class ProofResult:
     checks: tuple  # the Checks of the design and the proofs, in the build's order
     derived: dict  # their derived values (the same values the build's manifest gives them)
     whole_build: bool  # True where the part type declares no proof steps: this is its whole build's
+    glossary: dict = dataclasses.field(default_factory=dict)  # path -> (unit, meaning), as the manifest's
 
 
 def proves_alone(part: Loaded) -> bool:
@@ -384,7 +470,7 @@ def prove(part: Loaded, progress=None) -> ProofResult:
     no solid, no file); a part type that declares none runs its whole build in memory (:func:`build_in_memory`)."""
     if not proves_alone(part):
         b = build_in_memory(part, progress)
-        return ProofResult(b.failures, b.checks, b.derived, True)
+        return ProofResult(b.failures, b.checks, b.derived, True, b.glossary)
     from .parallel import Workers
     from .parts.proof_writer import ProofWriter
 
@@ -395,7 +481,46 @@ def prove(part: Loaded, progress=None) -> ProofResult:
             failures = w.finish()
         finally:
             w.close()
-    return ProofResult(tuple(failures), tuple(w.checks), dict(w.derived), False)
+    return ProofResult(tuple(failures), tuple(w.checks), dict(w.derived), False, glossary_of_writer(w))
+
+
+@dataclasses.dataclass(frozen=True)
+class SolidsResult:
+    """What the design and the solid steps of a part made, without their files or checks (in memory)."""
+
+    solids: dict  # name -> cadquery Shape (the solids the build writes as <name>.step)
+    profiles: dict  # DXF name -> list of Profile
+    assemblies: dict  # name -> [(component, solid, (x, y, z) mm, rotation about z rad)]
+    derived: dict  # each solid's <name>_volume_mm3
+
+
+def solids_alone(part: Loaded) -> bool:
+    """Whether the part type declares its solid steps (``Pipeline.solids_alone``): else its solids come
+    from its whole build."""
+    from .parts.pipeline import Pipeline
+
+    pipeline = part.part_type.build
+    return isinstance(pipeline, Pipeline) and pipeline.solids_alone
+
+
+def solids(part: Loaded, progress=None) -> SolidsResult:
+    """The design and the part type's solid steps only: the solids, assemblies and DXF outlines the build
+    makes, without writing a file or running the files' checks; a part type that declares no solid steps
+    runs its whole build in memory (:func:`build_in_memory`)."""
+    if not solids_alone(part):
+        b = build_in_memory(part, progress)
+        return SolidsResult(b.solids, b.profiles, b.assemblies,
+                            {k: v for k, v in b.derived.items() if k.endswith("_volume_mm3")})
+    from .parallel import Workers
+    from .parts.proof_writer import SolidWriter
+
+    with Workers(), TURN:
+        w = SolidWriter(part.part_type.name, part.params, progress=Reporter.of(progress), source=part.source)
+        try:
+            part.part_type.build.solids(part.params, w)
+        finally:
+            w.close()
+    return SolidsResult(dict(w.built_solids), dict(w.built_profiles), dict(w.built_assemblies), dict(w.derived))
 
 
 def gallery_folder(folder: Path) -> bool:

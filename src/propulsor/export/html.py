@@ -183,3 +183,24 @@ def write_atomically(path: str | Path, text: str) -> Path:
     from ..atomic_file import replace_atomically
 
     return replace_atomically(path, lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))
+
+
+def view_page(folder: str | Path, lead: str = "") -> str | None:
+    """A whole page (:func:`page`) with the 3D view of the assemblies a build wrote into `folder` (its
+    manifest's ``media.models``: the GLBs, checked and inlined as the report's, and the vendored three.js: it
+    needs no network) after `lead` (HTML, escaped by the caller); None when the build wrote no model.  What a
+    notebook shows of a part (``propulsor.Part._repr_html_``)."""
+    import json
+
+    from ..policy import MANIFEST_MAX_BYTES
+    from ..regular_file import read_regular
+    from .viewer_page import VIEWER_STYLE, viewer_figure, viewer_script
+
+    folder = Path(folder)
+    manifest = json.loads(read_regular(folder / "manifest.json", MANIFEST_MAX_BYTES).decode("utf-8"))
+    models = [m for m in manifest.get("media", {}).get("models", []) if isinstance(m, dict)]
+    figure = viewer_figure(models, "", heading="", folder=folder)
+    if not figure:
+        return None
+    return page(str(manifest.get("title") or manifest.get("part") or "part"), lead + figure, style=VIEWER_STYLE,
+                script=viewer_script())

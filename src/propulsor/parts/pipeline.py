@@ -98,7 +98,9 @@ class Pipeline:
     """``build(params, writer)`` of a part type: its design, then each output step in order.
 
     ``proof_steps``: the steps (each one of ``steps``) that prove the design without its solids or files,
-    or None where the part type declares none (its proof is the whole build)."""
+    or None where the part type declares none (its proof is the whole build).  ``solid_steps``: the steps
+    that make the solids, the assemblies and the DXF outlines from the design alone (no file, no check), or
+    None (the solids come from the whole build)."""
 
     design: Callable  # design(params, writer) -> Design (the writer gives the part file's folder)
     steps: Sequence[Callable]  # step(design, writer, built) -> None
@@ -106,15 +108,16 @@ class Pipeline:
     #: the build's design may run in a forked process (:func:`design_apart`): it only reads the writer
     #: and its result pickles exactly
     design_apart: bool = False
+    solid_steps: Sequence[Callable] | None = None
 
     #: a build is a callable ``build(params, writer)``; named so that ``inspect`` and ``help`` can show it
     __name__ = "build"
 
     def __post_init__(self) -> None:
-        if self.proof_steps is not None:
-            stray = [s for s in self.proof_steps if not any(s is t for t in self.steps)]
+        for kind, declared in (("proof", self.proof_steps), ("solid", self.solid_steps)):
+            stray = [s for s in declared or () if not any(s is t for t in self.steps)]
             if stray:
-                raise ValueError(f"proof step {getattr(stray[0], '__name__', stray[0])!r} is not a step of the build")
+                raise ValueError(f"{kind} step {getattr(stray[0], '__name__', stray[0])!r} is not a step of the build")
 
     def __call__(self, params, w) -> None:
         self._run(params, w, self.steps, apart=self.design_apart)
@@ -130,6 +133,18 @@ class Pipeline:
         if self.proof_steps is None:
             raise ValueError("this part type declares no proof steps: its proof is the whole build")
         self._run(params, w, [s for s in self.steps if any(s is t for t in self.proof_steps)])
+
+    @property
+    def solids_alone(self) -> bool:
+        """Whether the part type declares the steps that make its solids (else they come from its build)."""
+        return self.solid_steps is not None
+
+    def solids(self, params, w) -> None:
+        """The design, then only the solid steps, in the build's order (the build's solids, assemblies and
+        outlines, without their files and checks: a :class:`~.proof_writer.SolidWriter`)."""
+        if self.solid_steps is None:
+            raise ValueError("this part type declares no solid steps: its solids come from the whole build")
+        self._run(params, w, [s for s in self.steps if any(s is t for t in self.solid_steps)])
 
     def _run(self, params, w, steps, apart: bool = False) -> None:
         d = design_apart(self.design, params, w) if apart else self.design(params, w)

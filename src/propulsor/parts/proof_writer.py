@@ -13,7 +13,7 @@ from pathlib import Path
 
 from .writer import OutputWriter
 
-__all__ = ["ProofWriter"]
+__all__ = ["ProofWriter", "SolidWriter"]
 
 
 class ProofWriter(OutputWriter):
@@ -57,3 +57,16 @@ class ProofWriter(OutputWriter):
         """The unexpected check failures (nothing to write)."""
         self.close()
         return self.failures()
+
+
+class SolidWriter(ProofWriter):
+    """What a part's solid steps make (:meth:`propulsor.parts.pipeline.Pipeline.solids`): the solids
+    (``built_solids``, and each one's ``<name>_volume_mm3``), the assemblies (``built_assemblies``) and the DXF
+    outlines (``built_profiles``), in memory; no file is written and none of the files' checks runs."""
+
+    def add_solid(self, name: str, solid, expected_genus=None):
+        self.built_solids[name] = solid
+        self.derived[f"{name}_volume_mm3"] = float(solid.Volume())
+
+    def add_assembly(self, name: str, components, picture_from_below: bool = False):
+        self.built_assemblies[name] = list(components)

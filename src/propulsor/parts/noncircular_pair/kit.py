@@ -25,6 +25,7 @@ from ...printing.kit import Kit, Piece, Placed, place
 from ...printing.printers import Printer
 from ...printing.hardware import PRINTED_PIN_MIN_MM, STANDARD_PIN_D, Hardware, dowel, mm, standard_at_most, side_pin
 from ...printing.scale import ScaleChoice, check_printable, choose_scale, larger
+from ..pipeline import design_of
 from .design import pair_design
 from .kit_load import TABLE_COLUMNS as HAND_TABLE_COLUMNS, hand_load
 from .params import NoncircularPairParams
@@ -208,10 +209,10 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
             choice, at_1_first = ScaleChoice(1.0, "every piece fits the bed at full size"), True
         elif choice.S != 1.0:
             say("kit: the full-size pair's design")
-            full = pair_design(p, source)
+            full = design_of(p, pair_design, source)  # the part's own design (Part.design), made once
     else:
         say("kit: the full-size pair's design")
-        full = pair_design(p, source)
+        full = design_of(p, pair_design, source)
     if full is not None:
         m, L_est = full.d.m, full.mount
         extents = {"driver": (*_extent(full.profiles[0]), p.face_width_mm),

@@ -476,4 +476,4 @@ def write_outputs(p: NoncircularPairParams, w, d: Design, profiles, pr, other=No
 PROOF_STEPS = (proofs, checks_and_derived)
 
 build = Pipeline(lambda p, w: design_of(p, pair_design, getattr(w, "source", None)), (solids, proofs) + OUTPUT_STEPS,
-                 proof_steps=PROOF_STEPS, design_apart=True)
+                 proof_steps=PROOF_STEPS, design_apart=True, solid_steps=(solids, assembly_and_dxf))
