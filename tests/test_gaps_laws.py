@@ -68,7 +68,7 @@ def _curve(rows, e=0.3, p=30.0, closed=False):
 def test_pitch_curve_of_exactly_min_rows_is_accepted_and_one_fewer_refused():  # P1
     assert CURVE_MIN_ROWS == 8
     law = PitchCurveLaw(*_curve(8), 1)
-    assert law.rows == 9  # 8 given, the closing row added
+    assert law.rows == 8  # the 8 rows given (the closing row added is not counted: the report names the file's rows)
     with pytest.raises(InputError, match=r"7 rows.*at least 8 rows"):
         PitchCurveLaw(*_curve(7), 1)
 

@@ -182,12 +182,12 @@ def test_a_pitch_curve_too_sharp_for_the_law_is_refused_in_the_users_terms():
 
     # a peak one row wide among 3600: the conjugate law's spline turns back between the curve's rows
     assert _err(PitchCurveLaw, *_spike(3600, 2.0), 1) == (
-        "pitch_curve_file", "3601 rows", "the law of the conjugate wheel has a ratio U = -0.7083 <= 0 near it "
+        "pitch_curve_file", "3600 rows", "the law of the conjugate wheel has a ratio U = -0.7083 <= 0 near it "
                                          "(between the curve's rows): a smoother curve, or rows where its radius "
                                          "turns fastest")
     # higher still: no centre distance closes the turn at the law's samples (was scipy's ValueError, a traceback)
     assert _err(PitchCurveLaw, *_spike(3600, 3.0), 1, key="my_curve") == (
-        "my_curve", "3601 rows", "no centre distance closes a 1-lobe driven wheel at the law's 2048 samples a turn: "
+        "my_curve", "3600 rows", "no centre distance closes a 1-lobe driven wheel at the law's 2048 samples a turn: "
                                  "the curve's largest radius is a peak too narrow to follow (a smoother curve, or "
                                  "more lobes)")
 

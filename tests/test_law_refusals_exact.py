@@ -107,10 +107,10 @@ def test_lobes_of_a_pitch_curve(k):
 def test_a_pitch_curve_of_exactly_its_least_rows_and_closed_or_open():
     a, r = _ellipse_rows(8)
     law = PitchCurveLaw(a, r, 1)
-    assert law.rows == 9 and law.first_angle == 0.0  # the rows and the one that closes the curve
+    assert law.rows == 8 and law.first_angle == 0.0  # the rows as given (the closing one added is not counted)
     ac, rc = _ellipse_rows(8, closed=True)
     closed = PitchCurveLaw(ac, rc, 1)
-    assert closed.L0 == law.L0
+    assert closed.L0 == law.L0 and closed.rows == 9  # its closing row is one of its rows
     phi = np.linspace(-2.0, 2.0, 9)
     np.testing.assert_array_equal(closed.U(phi), law.U(phi))
     # the first row's angle is the curve's start: turned rows, the same curve turned
@@ -289,7 +289,7 @@ def test_pitch_curve_rows_at_their_edges():
     # refused, naming no row); 3e-7 apart, one (the row is named)
     a2 = a[:3] + [a[2] + 3.605e-7] + a[4:]
     assert _err(PitchCurveLaw, a2, r, 1) == (
-        "pitch_curve_file", "9 rows", "the conjugate wheel's angles would not increase (between the curve's rows): a "
+        "pitch_curve_file", "8 rows", "the conjugate wheel's angles would not increase (between the curve's rows): a "
                                       "smoother curve, or rows where its radius turns fastest")
     assert _err(PitchCurveLaw, a[:3] + [a[2] + 3e-7] + a[4:], r, 1)[0] == "pitch_curve_file row 4 angle_deg"
     # a closing row's radius must be the first row's to 1e-9 of it

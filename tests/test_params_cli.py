@@ -136,3 +136,11 @@ def test_a_missing_part_file_is_said_once():
     assert out.returncode == 2
     assert out.stderr.strip().splitlines()[-1] == "propulsor: error: part file = '/nonexistent/x.toml': does not exist"
     assert out.stderr.count("does not exist") == 1
+
+
+def test_a_mistyped_printer_setting_is_answered_with_the_closest_names():
+    from propulsor.printing.printers import load_printer
+
+    with pytest.raises(InputError) as e:
+        load_printer("generic", {"backlash": 0.3})
+    assert (e.value.parameter, e.value.hint) == ("print.backlash", "did you mean backlash_mm?")

@@ -288,3 +288,11 @@ def test_a_mistyped_name_is_answered_with_the_closest_ones(tmp_path):
     with pytest.raises(InputError) as e:
         _load(tmp_path, _text(objectives='minimize = ["qqqqqqqq"]'))
     assert e.value.hint == ""
+
+
+def test_a_list_parameter_varies_by_whole_lists(tmp_path):
+    """A list parameter's values are lists (was a TypeError traceback: a list cannot be a dict key)."""
+    pair = ROOT / "parts" / "ncg_fourier_3lobe.toml"
+    st = _load(tmp_path, f'[study]\npart = "{pair}"\ndepth = "design"\n[vary]\nfourier_sin = [[0.03, 0.006], '
+                         '[0.05, 0.006], [0.03, 0.006]]\n[objectives]\nminimize = ["center_distance_mm"]\n')
+    assert [v["fourier_sin"] for v in st.variants] == [[0.03, 0.006], [0.05, 0.006]]

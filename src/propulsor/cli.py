@@ -389,8 +389,8 @@ def build_parser() -> argparse.ArgumentParser:
     pr.add_argument("--out", help="kit folder (default output/<file name>_kit)")
     pr.add_argument("--printer", default="generic", help="a built-in printer profile (propulsor list names them) "
                     "or the path of your own profile file (TOML: bed_x_mm, bed_y_mm, bed_z_mm, ...)")
-    pr.add_argument("--bed", help="a quick profile: the bed WIDTHxDEPTHxHEIGHT in mm (e.g. 180x180x180), the "
-                    "generic printer's other settings")
+    pr.add_argument("--bed", help="a quick profile: the bed WIDTHxDEPTHxHEIGHT in mm (e.g. 180x180x180; "
+                    "WIDTHxDEPTH: the height is the smaller side), the generic printer's other settings")
     pr.add_argument("--scale", default="auto", help="auto (largest standard scale that fits), S or 1:S")
     pr.add_argument("--set", action="append", metavar="KEY=VALUE", help="override a printer setting "
                     "(e.g. backlash_mm=0.35; every setting: propulsor params printer)")

@@ -58,7 +58,8 @@ def read_pitch_curve(path: Path, key: str = "pitch_curve_file"):
 
 
 def _curve(angle_deg, radius_mm, key):
-    """Periodic quintic spline r(a) (a in rad, period 2 pi) through the rows, checked."""
+    """Periodic quintic spline r(a) (a in rad, period 2 pi) through the rows, checked; with the rows' start angle
+    (rad) and their count as given (a closing row added here is not counted)."""
     from scipy.interpolate import make_interp_spline
 
     a, r = np.asarray(angle_deg, float), np.asarray(radius_mm, float)
@@ -79,7 +80,7 @@ def _curve(angle_deg, radius_mm, key):
         a, r = np.append(a, a[0] + 360.0), np.append(r, r[0])
     x = np.radians(a - a[0])
     x[-1] = 2 * math.pi
-    return make_interp_spline(x, r, k=5, bc_type="periodic"), math.radians(a[0]), len(a)
+    return make_interp_spline(x, r, k=5, bc_type="periodic"), math.radians(a[0]), len(angle_deg)
 
 
 class PitchCurveLaw(TableLaw):

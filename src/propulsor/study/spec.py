@@ -134,7 +134,8 @@ def _values_of(name: str, spec, fld, sampling: bool) -> list | tuple:
             raise InputError(where, spec, "must name at least one value")
         for v in spec:
             _check_value(name, v, fld)
-        return list(dict.fromkeys(spec))
+        # each value once, in order (a list parameter's values are lists: told apart by their text)
+        return list({json.dumps(v, sort_keys=True): v for v in spec}.values())
     if not isinstance(spec, dict):
         raise InputError(where, spec, "must be a list of values or a range { from = A, to = B, step = S }")
     unknown = set(spec) - {"from", "to", "step"}
