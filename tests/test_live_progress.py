@@ -291,3 +291,11 @@ def test_a_count_read_late_paces_from_its_first_count(clock):
     clock.t += 10
     r(Event("c: 3000/7200", PROGRESS, "c", 3000, 7200))
     assert out.getvalue().splitlines()[-1] == "[  10.0 s] c: 3000/7200, about 84 s left"
+
+
+def test_no_time_left_from_the_first_few_items_of_a_step():
+    from propulsor.render import _eta
+
+    assert _eta(4, 216, 100.0, 101.8) is None  # 4 of 216 in 1.8 s: too few to give a pace
+    assert _eta(30, 216, 100.0, 101.0) == pytest.approx(1.0 / 30 * 186)  # a tenth done: the pace
+    assert _eta(4, 216, 100.0, 104.0) == pytest.approx(4.0 / 4 * 212)  # 3 s spent: the pace
