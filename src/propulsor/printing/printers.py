@@ -37,7 +37,7 @@ class Printer:
                        choices=("rectangle",))
     margin_mm: float = param(policy.PLATE_MARGIN_MM, "mm", "least distance of the pieces to the bed's edges: room "
                              "for the slicer's skirt (PrusaSlicer's default, 6 mm out) and the bed's clips", min=0.0,
-                             max=50.0, why="a tenth of the smallest bed")
+                             max=50.0, why="margins of 50 mm leave nothing of a 100 mm bed")
     nozzle_mm: float = param(0.4, "mm", "nozzle diameter", min=0.1, max=1.2, why="the largest common nozzles")
     layer_mm: float = param(0.2, "mm", "layer height", min=0.05, max=0.8, why="at most 2/3 of the largest nozzle")
     line_width_mm: float = param(0.0, "mm", "extrusion width (0: the nozzle diameter)", min=0.0, max=2.0,
@@ -49,13 +49,14 @@ class Printer:
     press_fit_mm: float = param(0.05, "mm", "radial interference of a press fit (FDM: 0 ... 0.1)", min=0.0,
                                 max=0.5, why="past it printed parts split")
     hole_undersize_mm: float = param(0.15, "mm", "how much smaller than drawn holes print (diameter; FDM: "
-                                     "0.1 ... 0.2), added to every hole", min=0.0, max=1.0, why=_WHY_FIT)
+                                     "0.1 ... 0.2), added to every hole", min=0.0, max=1.0,
+                                     why="holes 1 mm small want a calibrated printer, not an allowance")
     chamfer_mm: float = param(0.4, "mm", "chamfer of bed-side edges against the first layers' spread "
-                              "(elephant's foot; 0.3 ... 0.5)", min=0.0, max=2.0, why="five layers")
+                              "(elephant's foot; 0.3 ... 0.5)", min=0.0, max=2.0, why="ten layers of 0.2 mm")
     min_module_mm: float = param(1.0, "mm", "least printable module (smaller teeth are mush)", min=0.2, max=10.0,
                                  why="any printer prints module 10")
     piece_gap_mm: float = param(5.0, "mm", "gap between pieces on a plate", min=1.0, max=50.0,
-                                why="a tenth of the smallest bed")
+                                why="a gap of half a 100 mm bed")
     density_g_cm3: float = param(1.24, "g/cm^3", "filament density (PLA: 1.24)", min=0.5, max=3.0,
                                  why="past any filament")
     # --- print settings: the kit's time and filament are for these (sliced, or estimated without a slicer)

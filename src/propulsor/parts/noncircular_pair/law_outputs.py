@@ -38,7 +38,7 @@ def law_figure(w, d: Design, pr, fig, ax):
 
 
 def speed_ratio_plot(w, d: Design, pr=None):
-    """A law without a hub: the output speed ratio omega_H / omega = 1/U over one driven turn, the law's
+    """A law without a hub: the output speed ratio omega_driven / omega_driver = 1/U over one driven turn, the law's
     beside the one the teeth deliver (the proof's running positions, ``pr``)."""
     from ...export.plots import new_figure
 
@@ -51,7 +51,7 @@ def speed_ratio_plot(w, d: Design, pr=None):
         ax.plot(np.degrees(np.mod(x[ok], 2 * math.pi)), 1.0 / u[ok], "C1.", ms=3,
                 label="generated teeth: d phi / d theta from the outlines")
     ax.set_xlabel("driven angle phi, deg")
-    ax.set_ylabel("output speed ratio omega_H / omega = 1/U")
+    ax.set_ylabel("output speed ratio omega_driven / omega_driver = 1/U")
     ax.set_title("Output speed over one driven turn (driven over driver speed)")
     ax.legend(fontsize=7)
     fig.tight_layout()

@@ -34,6 +34,8 @@ LOAD_KEYS = ("load_driver_torque_Nm", "load_power_W", "load_driver_speed_rpm", "
 
 # =========================================================================== parameters
 _WHY_MECHANISM = "a walking drive of 5 m hub height is larger than any built"
+#: the upper limit of a pair's own lengths (centre distances, bores), law-neutral
+_WHY_PAIR = "a gear pair 10 m across (bores of 5 m) is larger than any built"
 
 
 @dataclass(frozen=True)
@@ -75,7 +77,7 @@ class NoncircularPairParams(PartParams):
     driven_teeth: int = param(80, "", "z_H: driven-wheel teeth (sectors: 4 x sectors per leg)", min=4, max=480,
                               integer=True, why="a 1.5 m pitch curve at m = 1 mm (the papers use 80 and 96)")
     center_distance_mm: float = param(0.0, "mm", "L; 0: from module and teeth by closure (true arc length)", min=0.0,
-                                      max=10000.0, why=_WHY_MECHANISM)
+                                      max=10000.0, why=_WHY_PAIR)
     pressure_angle_deg: float = param(20.0, "deg", "pressure angle of the ISO 53 rack", min=10.0, max=35.0,
                                       why="the largest pressure angle of special racks; past it the tips turn pointed")
     backlash_mm: float = param(0.16, "mm", "normal backlash j_n (seed 002: 0.16 mm)", min=0.0, max=2.0,
@@ -115,11 +117,11 @@ class NoncircularPairParams(PartParams):
                                          "interference of an internal mesh): shorten them", min=0.0, max=3.0,
                                          why="a tooth of the ISO 53 rack with the largest shift reaches 2.5 m")
     mounting_distance_mm: float = param(0.0, "mm", "installed centre distance (seed 000: L_ust = 144 for L = 143.5); "
-                                        "0: the design L", min=0.0, max=10000.0, why=_WHY_MECHANISM)
+                                        "0: the design L", min=0.0, max=10000.0, why=_WHY_PAIR)
     face_width_mm: float = param(20.0, "mm", "face width of both gears", min=0.0, min_exclusive=True, max=1000.0,
                                   why="20 modules at m = 50: wider faces carry no more (ISO 6336 K_Hβ)")
-    driver_bore_mm: float = param(16.0, "mm", "driver bore diameter (0: none)", min=0.0, max=5000.0, why=_WHY_MECHANISM)
-    driven_bore_mm: float = param(40.0, "mm", "driven-wheel bore diameter (0: none)", min=0.0, max=5000.0, why=_WHY_MECHANISM)
+    driver_bore_mm: float = param(16.0, "mm", "driver bore diameter (0: none)", min=0.0, max=5000.0, why=_WHY_PAIR)
+    driven_bore_mm: float = param(40.0, "mm", "driven-wheel bore diameter (0: none)", min=0.0, max=5000.0, why=_WHY_PAIR)
     keyway: bool = param(True, "", "hub keyway in each bore (DIN 6885-1 / GOST 23360-78)")
     proof_phases_per_tooth: int = param(4, "", "phases per driven tooth in the full-cycle proof", min=4, max=64,
                                         integer=True, why="64 phases a tooth resolve contact to 1/64 of a pitch")
