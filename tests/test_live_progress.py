@@ -299,3 +299,18 @@ def test_no_time_left_from_the_first_few_items_of_a_step():
     assert _eta(4, 216, 100.0, 101.8) is None  # 4 of 216 in 1.8 s: too few to give a pace
     assert _eta(30, 216, 100.0, 101.0) == pytest.approx(1.0 / 30 * 186)  # a tenth done: the pace
     assert _eta(4, 216, 100.0, 104.0) == pytest.approx(4.0 / 4 * 212)  # 3 s spent: the pace
+
+
+def test_check_counts_the_files_it_checks(tmp_path):
+    """`propulsor check` of a folder: the files with checks counted (the others are not models)."""
+    from propulsor.checks.files import check_path
+    from propulsor.progress import Reporter
+
+    (tmp_path / "a.stl").write_bytes(b"solid a\nendsolid a\n")
+    (tmp_path / "b.dxf").write_text("0\nEOF\n")
+    (tmp_path / "notes.csv").write_text("x\n1\n")
+    seen = []
+    check_path(tmp_path, progress=Reporter(seen.append))
+    counts = [(e.done, e.total) for e in seen if getattr(e, "total", None) is not None]
+    assert counts[0] == (0, 2) and counts[-1] == (2, 2)
+    assert seen[0] == f"check: reading {tmp_path}"

@@ -250,8 +250,11 @@ def cmd_check(args) -> int:
     if not os.path.lexists(path):
         return fail_input(InputError("PATH", str(path), "does not exist"))
     try:
-        with memory_ceiling():
-            results = check_path(path)
+        # the files' count on a terminal only: a script reading check's stderr gets its refusals alone
+        from .progress import Reporter
+
+        with memory_ceiling(), Renderer(not sys.stderr.isatty()) as render:
+            results = check_path(path, progress=Reporter(render))
     except EnvironmentFailure as exc:
         return fail_environment(exc)
     if not results:

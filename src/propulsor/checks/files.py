@@ -391,12 +391,12 @@ def check_file(path: str | Path) -> list[Check]:
         return [Check.flag(f"{p.name}: readable", False, _why(exc))]
 
 
-def check_path(path: str | Path) -> dict[str, list[Check]]:
+def check_path(path: str | Path, progress=None) -> dict[str, list[Check]]:
     """Check a file or every checkable file under a folder: {path: checks}; {} when there is
     nothing to check (no STEP, STL, 3MF, DXF or manifest).  Symbolic links inside a folder are not
     followed (one leading out of it is invalid), FIFOs, devices and sockets are invalid unopened;
     the path given itself is followed when it is a symbolic link.  Raises EnvironmentFailure when
-    the machine refuses to list or read."""
+    the machine refuses to list or read.  `progress`: a progress.Reporter for the files' count."""
     p = Path(path)
     _MANIFESTS.clear()
     if not os.path.lexists(p):
@@ -406,9 +406,20 @@ def check_path(path: str | Path) -> dict[str, list[Check]]:
         if _checker(p.name) is not None:
             out[str(p)] = check_file(Path(os.path.realpath(p)))
         return out
+    # `progress`: a progress.Reporter (called with a step, .count(phase, done, total, unit)) or None; duck-typed,
+    # the checks sit below the progress layer
+    count = getattr(progress, "count", None)
+    if progress is not None:
+        progress(f"check: reading {p}")
     files, bad = walk(p)
-    for f in files:
+    files = [f for f in files if _checker(f.name) is not None]  # the formats with checks (check_file: [] else)
+    phase = f"check: {len(files)} file(s) to check under {p}"
+    if count is not None:
+        count(phase, 0, len(files), "file")
+    for k, f in enumerate(files, start=1):
         cks = check_file(f)
+        if count is not None:
+            count(phase, k, len(files), "file")
         if cks:
             out[str(f)] = cks
     for f, why in bad.items():
