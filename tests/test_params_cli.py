@@ -144,3 +144,37 @@ def test_a_mistyped_printer_setting_is_answered_with_the_closest_names():
     with pytest.raises(InputError) as e:
         load_printer("generic", {"backlash": 0.3})
     assert (e.value.parameter, e.value.hint) == ("print.backlash", "did you mean backlash_mm?")
+
+
+def test_a_refused_default_is_said_to_be_the_default_and_a_written_value_is_not():
+    from propulsor.building import default_named
+    from propulsor.parts import get_part_type
+
+    cls = get_part_type("noncircular_pair").params_cls
+    exc = InputError("driver_shift", 0.5, "not generable", "driver_shift <= -0.337")
+    said = default_named(exc, {"law": "elliptical"}, cls)
+    assert (said.parameter, said.value, said.limit) == ("driver_shift", 0.5, "not generable")
+    assert said.hint == "driver_shift <= -0.337; driver_shift is not in the part file: 0.5 is its default"
+    assert default_named(exc, {"driver_shift": 0.5}, cls) is exc  # written in the part file: as it is
+    other = InputError("center_distance_band_mm x", 1, "x")  # not a field of the part: as it is
+    assert default_named(other, {}, cls) is other
+
+
+@pytest.mark.parametrize("m, refused", [(0.0001, True), (0.049, True), (0.05, False), (0.0, False)])
+def test_a_module_below_the_smallest_standard_one_is_refused_before_the_build(m, refused):
+    from propulsor.parts import get_part_type
+
+    cls = get_part_type("noncircular_pair").params_cls
+    mapping = {"law": "elliptical", "eccentricity": 0.3, "driver_turns": 1, "module_mm": m, "driven_teeth": 30,
+               "center_distance_mm": 0.0 if m else 80.0}
+    if refused:
+        with pytest.raises(InputError) as e:
+            load_params(cls, mapping)
+        assert (e.value.parameter, e.value.value, e.value.limit) == (
+            "module_mm", m, "must be 0 (from center_distance_mm) or >= 0.05 mm, the smallest module of ISO 54 / "
+                            "GOST 9563")
+    else:
+        try:
+            load_params(cls, mapping)
+        except InputError as exc:
+            assert exc.parameter != "module_mm", exc

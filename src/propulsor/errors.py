@@ -98,6 +98,15 @@ def require(cond: bool, parameter: str, value, limit: str, hint: str = "") -> No
         raise InputError(parameter, value, limit, hint)
 
 
+def did_you_mean(name, known) -> str:
+    """The hint for a mistyped `name`: "did you mean a or b?" with up to three of `known` closest to it ('' when
+    none is close), for every refusal of an unknown key (part files, studies, printer settings)."""
+    import difflib
+
+    close = difflib.get_close_matches(str(name), list(known), n=3, cutoff=0.6)
+    return f"did you mean {' or '.join(close)}?" if close else ""
+
+
 def require_finite(parameter: str, value: float) -> float:
     import math
 

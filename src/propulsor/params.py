@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Any, get_type_hints
 
 from . import numbers
-from .errors import InputError
+from .errors import InputError, did_you_mean
 
 #: largest part file read (a part file is a few kB of TOML)
 MAX_PART_FILE_BYTES = 1 << 20
@@ -161,12 +161,9 @@ class PartParams:
 
 def unknown_key_limit(key: str, known) -> str:
     """The refusal of an unknown key: the closest known names first ("did you mean"), then all of them."""
-    import difflib
-
     known = list(known)
-    close = difflib.get_close_matches(str(key), known, n=3, cutoff=0.6)
-    hint = f"did you mean {' or '.join(close)}? " if close else ""
-    return f"unknown parameter for this part ({hint}known: {', '.join(known)})"
+    hint = did_you_mean(key, known)
+    return f"unknown parameter for this part ({hint + ' ' if hint else ''}known: {', '.join(known)})"
 
 
 def load_params(cls, mapping: dict[str, Any], validate: bool = True):

@@ -123,14 +123,24 @@ def read_table_text(path: Path, key: str, what: str) -> str:
         raise InputError(key, str(path), "must be UTF-8 text") from None
 
 
+def _whole_periods(span_ph: float) -> float | None:
+    """N, the periods per driven turn, when the driven span divides 360 deg (to CLOSE_TOL_DEG); None otherwise."""
+    N = 360.0 / span_ph
+    return float(round(N)) if abs(N - round(N)) * span_ph < CLOSE_TOL_DEG else None
+
+
+def _whole_turns(span_th: float, N: float) -> tuple[float, float]:
+    """n, the driver turns per driven turn over N periods of the driver span, and how far from whole it is (deg)."""
+    n = span_th * N / 360.0
+    return n, abs(n - round(n)) * 360.0 / N
+
+
 def _closing_row_hint(th, ph) -> str:
     """Where the table stops one even step short of a period, the row that would close it (the first row one
     period on): a table lists its closing row, the first row's driver and driven angles plus one period's."""
-    d_th, d_ph = th[-1] - th[-2], ph[-1] - ph[-2]
-    span_ph, span_th = ph[-1] - ph[0] + d_ph, th[-1] - th[0] + d_th
-    N = 360.0 / span_ph
-    n = span_th * round(N) / 360.0
-    if abs(N - round(N)) * span_ph < CLOSE_TOL_DEG and abs(n - round(n)) * 360.0 / round(N) < CLOSE_TOL_DEG:
+    span_ph, span_th = ph[-1] - ph[0] + (ph[-1] - ph[-2]), th[-1] - th[0] + (th[-1] - th[-2])
+    N = _whole_periods(span_ph)
+    if N is not None and _whole_turns(span_th, N)[1] < CLOSE_TOL_DEG:
         return f" (the rows seem to stop one step short: add the closing row {th[0] + span_th:g},{ph[0] + span_ph:g})"
     return ""
 
@@ -168,14 +178,14 @@ class TableLaw:
                            + (f" by more than {gap:.3g} deg" if v[i] > v[i - 1] else "") + ": the ratio must stay > 0",
                            col)
         span_ph, span_th = ph[-1] - ph[0], th[-1] - th[0]
-        N = 360.0 / span_ph
-        if not abs(N - round(N)) * span_ph < CLOSE_TOL_DEG:
+        N = _whole_periods(span_ph)
+        if N is None:
             raise _bad(key, len(th), float(ph[-1]),
                        f"the last row closes the period: the driven span {span_ph:g} deg must divide 360 deg"
                        + _closing_row_hint(th, ph), "driven_deg")
-        N = int(round(N))
-        n = span_th * N / 360.0
-        if not (abs(n - round(n)) * 360.0 / N < CLOSE_TOL_DEG and round(n) >= 1):
+        N = int(N)
+        n, off = _whole_turns(span_th, N)
+        if not (off < CLOSE_TOL_DEG and round(n) >= 1):
             raise _bad(key, len(th), float(th[-1]),
                        f"over {N} periods of {span_ph:g} deg the driver must make whole turns, not {n:.6g}",
                        "driver_deg")

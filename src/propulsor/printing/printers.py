@@ -17,7 +17,7 @@ from importlib import resources
 from pathlib import Path
 
 from .. import policy
-from ..errors import InputError
+from ..errors import InputError, did_you_mean
 from ..params import load_params, param
 
 _WHY_BED = "the largest desktop printers (about 1 m)"
@@ -219,12 +219,10 @@ def load_printer(name: str, overrides: dict | None = None, bed: str | None = Non
     known = {f.name for f in dataclasses.fields(Printer)}
     unknown = sorted(set(data) - known)
     if unknown:
-        import difflib
-
-        close = difflib.get_close_matches(unknown[0], sorted(known - {"name", "title"}), n=3, cutoff=0.6)
+        settable = sorted(known - {"name", "title"})
         raise InputError(f"print.{unknown[0]}", data[unknown[0]], f"unknown printer setting (known: "
-                         f"{', '.join(sorted(known - {'name', 'title'}))})",
-                         f"did you mean {' or '.join(close)}?" if close else "propulsor params printer lists them")
+                         f"{', '.join(settable)})",
+                         did_you_mean(unknown[0], settable) or "propulsor params printer lists them")
     for key in ("bed_x_mm", "bed_y_mm", "bed_z_mm", "margin_mm"):
         if key in data:
             _named(key, data[key])

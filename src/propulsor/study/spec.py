@@ -31,7 +31,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from ..errors import InputError
+from ..errors import InputError, did_you_mean
 
 DEPTHS = ("design", "proof", "build")
 #: most variants a study may name (a grid grows fast: refused before anything runs)
@@ -199,14 +199,6 @@ def _requirement(text) -> Requirement:
     return Requirement(m.group(1), m.group(2), bound)
 
 
-def _did_you_mean(name, known) -> str:
-    """The closest of `known` to a mistyped `name`, as a hint ('' when none is close)."""
-    import difflib
-
-    close = difflib.get_close_matches(str(name), list(known), n=3, cutoff=0.6)
-    return f"did you mean {' or '.join(close)}?" if close else ""
-
-
 def _glossary_names(part_type: str) -> list[str]:
     """The derived values the part type's glossary names exactly (not its patterns)."""
     from ..export.glossary import Glossary
@@ -298,7 +290,7 @@ def load_study(path: str | Path) -> Study:
     for name, spec in vary.items():
         if name not in fields or name == "type":
             raise InputError(f"vary.{name}", spec, f"unknown parameter of {type_name} (see `propulsor params {type_name}`)",
-                             _did_you_mean(name, [f for f in fields if f != "type"]))
+                             did_you_mean(name, [f for f in fields if f != "type"]))
         values[name] = _values_of(name, spec, fields[name], sample is not None)
     varied = tuple(values)
     if sample is None:
@@ -338,7 +330,7 @@ def load_study(path: str | Path) -> Study:
                 base_values = _base_design_names(type_name, base, part_file)
             if n not in base_values:
                 raise InputError(f"objectives.{where}", n, f"is not a derived value of a {type_name} manifest",
-                                 _did_you_mean(n, sorted(set(_glossary_names(type_name)) | set(base_values))))
+                                 did_you_mean(n, sorted(set(_glossary_names(type_name)) | set(base_values))))
     if depth == "design":  # every name must be one the design gives (the base part's, as each variant's)
         if base_values is None:
             base_values = _base_design_names(type_name, base, part_file)
