@@ -55,7 +55,7 @@ def _rot_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, it
     offs = np.zeros(m + 1, np.int64)
     cap = 4096
     seg = np.empty(cap, np.int64)
-    near = np.empty(len(V), np.int64)
+    near = np.empty(min(len(V), 256), np.int64)  # grown on demand (an outline's size each call costs a page mapping)
     n_pairs = 0
     for i in range(m):
         offs[i] = n_pairs
@@ -73,11 +73,22 @@ def _rot_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, it
                     v = items[kk]
                     ex, ey = px - V[v, 0], py - V[v, 1]
                     if ex * ex + ey * ey <= r2reach:
+                        if n == len(near):
+                            bigger = np.empty(2 * n, np.int64)
+                            bigger[:n] = near
+                            near = bigger
                         near[n] = v
                         n += 1
         if n == 0:
             continue
-        cand = np.sort(near[:n])
+        for a in range(1, n):  # ascending (insertion sort: a few vertices, no allocation)
+            x = near[a]
+            b = a - 1
+            while b >= 0 and near[b] > x:
+                near[b + 1] = near[b]
+                b -= 1
+            near[b + 1] = x
+        cand = near
         if n_pairs + 2 * n > cap:
             while n_pairs + 2 * n > cap:
                 cap *= 2

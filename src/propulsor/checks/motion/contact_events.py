@@ -30,9 +30,11 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+from numba import njit
 
 from ... import policy
-from .backlash import _rot_hits
+from .backlash import _ANG_EPS, _rot_pairs
+from .nearest import grid_of
 from .outlines import Outline, row_norms
 
 __all__ = ["KINDS", "PairOutlines", "ContactLaw", "Stretch", "resolve_contact", "contact_law", "runs"]
@@ -116,43 +118,37 @@ class PairOutlines:
         c = np.clip((L * L + rr * rr - (R_mate + 1.0) ** 2) / (2 * L * rr), -1.0, 1.0)
         return float(np.max(np.arccos(c))) + 0.02
 
+    def _target(self, o: Outline) -> tuple:
+        """What the compiled hit search needs of a target outline (its vertex grid, edges and annulus)."""
+        g = grid_of(o)
+        return (np.ascontiguousarray(o.points, np.float64), g.seg_b, o.prev, float(o.half_len), float(g.origin[0]),
+                float(g.origin[1]), float(g.h), int(g.nx), int(g.ny), g.start, g.items, float(o.center[0]),
+                float(o.center[1]), float(o.radius), float(o.r_min))
+
+    @property
+    def _kernel_args(self) -> tuple:
+        k = self.__dict__.get("_kargs")
+        if k is None:
+            k = self.__dict__["_kargs"] = (
+                self.L, np.ascontiguousarray(self.dvn.points, np.float64), self.o1, self.a1, float(self.hw_dvn),
+                np.ascontiguousarray(self.drv.points, np.float64), self.o2, self.a2, float(self.hw_drv),
+                float(self.R1), float(self.R2)) + self._target(self.drv) + self._target(self.dvn)
+        return k
+
     def _all_hits(self, phi_a: float, theta: float, sign: float, w: float):
         """Every hit within w when the driven wheel, at actual angle phi_a, turns by sign (+1: back, the drive
         flanks): (i1, d1, e1, t1) of the driven vertices on driver edges and (i2, d2, e2, t2) of the driver
-        vertices on driven edges (vertex, turn to the hit, edge, place on the edge; inf where none)."""
-        L = self.L
-        i1 = _window(self.o1, self.a1, phi_a, self.hw_dvn + w)
-        i2 = _window(self.o2, self.a2, math.pi - theta, self.hw_drv + w)
-        R_th, R_ph = _rot(-theta), _rot(-phi_a)
-        P1 = ((self.dvn.points[i1] @ R_ph.T) - (L, 0.0)) @ R_th.T
-        C1 = np.array([-L, 0.0]) @ R_th.T
-        P2 = ((self.drv.points[i2] @ _rot(theta).T) + (L, 0.0)) @ _rot(phi_a).T
-        # only the points that can come within the mate's outer circle: a driven point turning by w about the
-        # driven axis moves by at most w R2; a driver point turns about the driven axis in the driven frame
-        far1 = row_norms(P1) <= self.R1 + w * self.R2 + 1e-6
-        far2 = row_norms(P2) <= self.R2 + 1e-6
-        i1, P1 = i1[far1], P1[far1]
-        i2, P2 = i2[far2], P2[far2]
-        rho1 = row_norms(P1 - C1)
-        rho2 = row_norms(P2)
-        d1, e1, t1 = _rot_hits(P1, C1, self.drv, sign, w, rho1, self.drv.boundary_lower_bound(P1))
-        d2, e2, t2 = _rot_hits(P2, np.zeros(2), self.dvn, -sign, w, rho2, self.dvn.boundary_lower_bound(P2))
+        vertices on driven edges (vertex, turn to the hit, edge, place on the edge; inf where none).  Compiled:
+        :func:`_pair_hits`."""
+        i1, d1, e1, t1, i2, d2, e2, t2 = _pair_hits(float(phi_a), float(theta), float(sign), float(w),
+                                                    *self._kernel_args)
         return (i1, d1, e1, t1), (i2, d2, e2, t2)
 
     def _hits(self, phi_a: float, theta: float, sign: float, w: float):
         """First entering hit when the driven wheel, at actual angle phi_a, turns by sign (+1: back, the
         drive flanks) through at most w rad: (delta, side, vertex, edge, t); side 1: a driven vertex on a driver
-        edge, side 2: a driver vertex on a driven edge."""
-        (i1, d1, e1, t1), (i2, d2, e2, t2) = self._all_hits(phi_a, theta, sign, w)
-        k1 = int(np.argmin(d1)) if len(d1) else -1
-        k2 = int(np.argmin(d2)) if len(d2) else -1
-        m1 = d1[k1] if k1 >= 0 else math.inf
-        m2 = d2[k2] if k2 >= 0 else math.inf
-        if not (math.isfinite(m1) or math.isfinite(m2)):
-            return math.inf, 0, -1, -1, 0.0
-        if m1 <= m2:
-            return float(m1), 1, int(i1[k1]), int(e1[k1]), float(t1[k1])
-        return float(m2), 2, int(i2[k2]), int(e2[k2]), float(t2[k2])
+        edge, side 2: a driver vertex on a driven edge.  Compiled: :func:`_first_hit`."""
+        return _first_hit(float(phi_a), float(theta), float(sign), float(w), *self._kernel_args)
 
     def contact(self, phi: float, theta: float, direction: int, prev_te: float | None = None, dphi: float = 0.0):
         """(te, kind, driver tooth, driven tooth, contact point in the driven body frame) at law phase phi
@@ -213,6 +209,129 @@ class PairOutlines:
             if other[idx] and dist <= near:
                 return other_code if other_turn[idx] > 0 else other_code + 2
         return 0
+
+
+@njit(cache=True)
+def _window_nb(order, angs, centre, hw):
+    """:func:`_window` compiled (the same vertices in the same order)."""
+    if hw >= math.pi:
+        return order.copy()
+    c = (centre + math.pi) % (2 * math.pi) - math.pi
+    bounds = np.empty(6, np.int64)
+    n = 0
+    for i in range(3):
+        k = i - 1
+        lo, hi = c - hw + 2 * math.pi * k, c + hw + 2 * math.pi * k
+        bounds[2 * i], bounds[2 * i + 1] = np.searchsorted(angs, lo), np.searchsorted(angs, hi)
+        n += max(bounds[2 * i + 1] - bounds[2 * i], 0)
+    out = np.empty(n, np.int64)
+    n = 0
+    for i in range(3):
+        for j in range(bounds[2 * i], bounds[2 * i + 1]):
+            out[n] = order[j]
+            n += 1
+    return out
+
+
+@njit(cache=True)
+def _side_hits(idx, V, c1, s1, tx, c2, s2, sign, w, r_keep, cx, cy, tgt):
+    """The hits of one side: the vertices ``V[idx]`` placed by a turn (c1, s1), a shift (tx, 0) and a turn (c2, s2)
+    into the target's body frame, those within ``r_keep`` of its axis kept, each turned by sign·δ about (cx, cy)
+    until it enters the target (:func:`.backlash._rot_pairs` / ``_rot_reduce``): (vertex, delta, edge, t)."""
+    (tV, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, ccx, ccy, radius, r_min) = tgt
+    m = len(idx)
+    P = np.empty((m, 2))
+    keep = np.empty(m, np.int64)
+    n = 0
+    for j in range(m):
+        x, y = V[idx[j], 0], V[idx[j], 1]
+        u = x * c1 + y * (-s1) + tx
+        v = x * s1 + y * c1
+        px = u * c2 + v * (-s2)
+        py = u * s2 + v * c2
+        if math.sqrt(px * px + py * py) <= r_keep:
+            P[n, 0], P[n, 1] = px, py
+            keep[n] = idx[j]
+            n += 1
+    P = P[:n]
+    rho = np.empty(n)
+    lb = np.empty(n)
+    for j in range(n):
+        dx, dy = P[j, 0] - cx, P[j, 1] - cy
+        rho[j] = math.sqrt(dx * dx + dy * dy)
+        ex, ey = P[j, 0] - ccx, P[j, 1] - ccy
+        d = math.sqrt(ex * ex + ey * ey)
+        lb[j] = max(d - radius, r_min - d)
+    chord_factor = 2.0 * math.sin(0.5 * min(w, math.pi))
+    offs, seg, Y, X, T, ok = _rot_pairs(P, cx, cy, tV, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, sign,
+                                        rho, lb, chord_factor)
+    delta = np.full(n, np.inf)
+    edge = np.full(n, -1, np.int64)
+    tpar = np.zeros(n)
+    for i in range(n):
+        best, best_e, best_t = np.inf, -1, 0.0
+        for k in range(offs[i], offs[i + 1]):
+            pb, pt = np.inf, 0.0
+            for r in range(2):
+                a = sign * math.atan2(Y[k, r], X[k, r])
+                if a != a:
+                    continue
+                a = a + 2.0 * math.pi if a < -_ANG_EPS else (a if a > 0.0 else 0.0)
+                if ok[k, r] and a <= w and a < pb:
+                    pb, pt = a, T[k, r]
+            if best_e < 0 or pb < best:
+                best, best_e, best_t = pb, seg[k], pt
+        if best_e >= 0:
+            delta[i], edge[i], tpar[i] = best, best_e, best_t
+    return keep[:n], delta, edge, tpar
+
+
+@njit(cache=True)
+def _pair_hits(phi_a, theta, sign, w, L, dvn_V, o1, a1, hw_dvn, drv_V, o2, a2, hw_drv, R1, R2,
+               t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14,
+               u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14):
+    """:meth:`PairOutlines._all_hits` compiled: the driven vertices within the window about the line of centres put
+    into the driver's frame (turned by -phi_a, shifted by -L, turned by -theta) turning about the driven axis there
+    (sign) onto the driver's edges, and the driver vertices put into the driven frame turning the other way onto
+    the driven edges.  Each rotation of a point is written out (x c - y s, x s + y c), the same on every machine."""
+    drv_t = (t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14)
+    dvn_t = (u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14)
+    i1 = _window_nb(o1, a1, phi_a, hw_dvn + w)
+    i2 = _window_nb(o2, a2, math.pi - theta, hw_drv + w)
+    cp, sp = math.cos(-phi_a), math.sin(-phi_a)
+    ct, st = math.cos(-theta), math.sin(-theta)
+    # the driven axis in the driver's frame: (-L, 0) turned by -theta
+    cx1 = -L * ct + 0.0 * (-st)
+    cy1 = -L * st + 0.0 * ct
+    k1, d1, e1, q1 = _side_hits(i1, dvn_V, cp, sp, -L, ct, st, sign, w, R1 + w * R2 + 1e-6, cx1, cy1, drv_t)
+    k2, d2, e2, q2 = _side_hits(i2, drv_V, math.cos(theta), math.sin(theta), L, math.cos(phi_a), math.sin(phi_a),
+                                -sign, w, R2 + 1e-6, 0.0, 0.0, dvn_t)
+    return k1, d1, e1, q1, k2, d2, e2, q2
+
+
+@njit(cache=True)
+def _first_hit(phi_a, theta, sign, w, L, dvn_V, o1, a1, hw_dvn, drv_V, o2, a2, hw_drv, R1, R2,
+               t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14,
+               u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14):
+    """:meth:`PairOutlines._hits` compiled: the first entering hit (delta, side, vertex, edge, t) of
+    :func:`_pair_hits` (the first least on a tie, side 1 before side 2)."""
+    i1, d1, e1, t1_, i2, d2, e2, t2_ = _pair_hits(phi_a, theta, sign, w, L, dvn_V, o1, a1, hw_dvn, drv_V, o2, a2,
+                                                  hw_drv, R1, R2, t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11,
+                                                  t12, t13, t14, u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11,
+                                                  u12, u13, u14)
+    k1, m1 = -1, np.inf
+    for k in range(len(d1)):
+        if k1 < 0 or d1[k] < m1:
+            k1, m1 = k, d1[k]
+    k2, m2 = -1, np.inf
+    for k in range(len(d2)):
+        if k2 < 0 or d2[k] < m2:
+            k2, m2 = k, d2[k]
+    if not (m1 < np.inf or m2 < np.inf):
+        return np.inf, 0, -1, -1, 0.0
+    if m1 <= m2:
+        return m1, 1, i1[k1], e1[k1], t1_[k1]
+    return m2, 2, i2[k2], e2[k2], t2_[k2]
 
 
 def _driven_to_world(p, phi_a):
