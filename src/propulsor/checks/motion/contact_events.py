@@ -380,7 +380,11 @@ class ContactLaw:
         return np.isfinite(self.te)
 
     def _state(self) -> np.ndarray:
-        return np.stack([self.kind, self.driver_tooth, self.driven_tooth], axis=1)
+        """(kind, driver tooth, driven tooth) of every sample (computed once: the samples never change)."""
+        st = self.__dict__.get("_state_rows")
+        if st is None:
+            st = self.__dict__["_state_rows"] = np.stack([self.kind, self.driver_tooth, self.driven_tooth], axis=1)
+        return st
 
     @property
     def slope(self) -> np.ndarray:
@@ -416,7 +420,14 @@ class ContactLaw:
 
     def events(self) -> list[tuple[float, float, float, tuple, tuple]]:
         """Every change of state: (phi, speed before, speed after, state before, state after); the speeds are
-        the chord slopes over at least ``step_window`` of driven angle on each side within one state."""
+        the chord slopes over at least ``step_window`` of driven angle on each side within one state (computed
+        once)."""
+        ev = self.__dict__.get("_events")
+        if ev is None:
+            ev = self.__dict__["_events"] = self._find_events()
+        return list(ev)
+
+    def _find_events(self) -> list[tuple[float, float, float, tuple, tuple]]:
         st = self._state()
         out = []
         change = np.nonzero(np.any(st[1:] != st[:-1], axis=1))[0]
