@@ -6,7 +6,9 @@ the design and the part type's proof steps (:attr:`propulsor.Part.proof_run`: th
 values, no solid and no file; a part type that declares none runs its whole build into a temporary
 folder and keeps no file); ``build`` writes the variant's files (``propulsor build``'s) into a folder of
 the study (one build: the values read from the build written).  The design is computed once and reused by
-the proof (the part's design cache).  Only the row travels back: the arrays stay here.
+the proof (the part's design cache).  Only the row travels back: the arrays stay here.  At proof depth a
+switch that only adds values the study does not read is off (:data:`ONLY_WHEN_READ`: the noncircular pair's
+comparison with the other tooth method runs when an objective, constraint or report names a ``compare_`` value).
 """
 
 from __future__ import annotations
@@ -27,6 +29,27 @@ DESIGN_STEPS = {
     "road_wheel": ("kozlov_proof",),
     "cam_mover": ("law_and_derived",),
 }
+
+
+#: part type -> (parameter, prefix): a switch that only adds derived values named with that prefix (and no check);
+#: a proof-depth variant runs it only when the study reads one of them (the noncircular pair's comparison with the
+#: other tooth method: a second design and proof, 3.5 CPU s of the seed-002 pair's 10)
+ONLY_WHEN_READ = {
+    "noncircular_pair": ("compare_methods", "compare_"),
+}
+
+
+def asked(part_type: str, params, depth: str, wanted) -> object:
+    """`params` with the switches of :data:`ONLY_WHEN_READ` off at proof depth when no value the study reads
+    comes from them (at build depth the files are the part file's, comparison included)."""
+    import dataclasses
+
+    rule = ONLY_WHEN_READ.get(part_type)
+    if rule is None or depth != "proof" or not getattr(params, rule[0]):
+        return params
+    if any(str(n).startswith(rule[1]) for n in wanted):
+        return params
+    return dataclasses.replace(params, **{rule[0]: False})
 
 
 def _plain(v):
@@ -200,7 +223,7 @@ def _evaluate(part_type, base, source, values, depth, wanted, build_dir) -> dict
     _may_fork()  # before the design: a design may fork too (the non-circular teeth)
     try:
         pt = get_part_type(part_type)
-        params = load_params(pt.params_cls, {**base, **values})
+        params = asked(part_type, load_params(pt.params_cls, {**base, **values}), depth, wanted)
         part = Variant(pt, params, Path(source) if source else None)
         part.design  # computed once; the proof below reuses it
         if depth == "design":
