@@ -38,7 +38,7 @@ def _rot_hits(P: np.ndarray, C: np.ndarray, tgt: Outline, sign: float, w: float,
     chord_factor = 2.0 * math.sin(0.5 * min(w, math.pi))
     offs, seg, Y, X, T, ok = _rot_pairs(np.ascontiguousarray(P, np.float64), float(C[0]), float(C[1]), tgt.points,
                                         g.seg_b, tgt.prev, tgt.half_len, g.origin[0], g.origin[1], g.h, g.nx, g.ny,
-                                        g.start, g.items, float(sign), np.ascontiguousarray(rho, np.float64),
+                                        g.start, g.items, g.near, float(sign), np.ascontiguousarray(rho, np.float64),
                                         np.ascontiguousarray(lb, np.float64), chord_factor)
     # numpy's own arctan2 (not the C library's, which differs in the last bit on about 7 % of arguments)
     ang = sign * np.arctan2(Y, X)
@@ -46,11 +46,14 @@ def _rot_hits(P: np.ndarray, C: np.ndarray, tgt: Outline, sign: float, w: float,
 
 
 @njit(cache=True)
-def _rot_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, sign, rho, lb, chord_factor):
+def _rot_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, near_cell, sign, rho, lb,
+               chord_factor):
     """The (point, edge) pairs of the rotation hits, point by point: the edges starting at each vertex within the
     point's reach (ascending), then the edges ending there; for each pair and both roots of the circle-edge
     intersection: the angle's sine and cosine terms (Y, X), the edge parameter (clipped) and whether the root is
-    an entering hit on the edge (its angle is checked against the window afterwards)."""
+    an entering hit on the edge (its angle is checked against the window afterwards).  A point whose reach is at
+    most a cell and whose cell has no vertex within one cell (``near_cell``, :class:`.nearest.VertexGrid`) has none
+    within its reach: skipped without a search."""
     m = len(P)
     offs = np.zeros(m + 1, np.int64)
     cap = 4096
@@ -63,6 +66,10 @@ def _rot_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, it
             continue
         reach = chord_factor * rho[i] + half_len + 1e-12
         px, py = P[i, 0], P[i, 1]
+        if reach <= h:
+            c0 = min(max(int(math.floor((px - ox) / h)), 0), nx - 1) * ny + min(max(int(math.floor((py - oy) / h)), 0), ny - 1)
+            if not near_cell[c0]:
+                continue
         ix0, ix1, iy0, iy1 = disc_cells(px, py, reach, ox, oy, h, nx, ny)
         n = 0
         r2reach = reach * reach

@@ -122,7 +122,7 @@ class PairOutlines:
         """What the compiled hit search needs of a target outline (its vertex grid, edges and annulus)."""
         g = grid_of(o)
         return (np.ascontiguousarray(o.points, np.float64), g.seg_b, o.prev, float(o.half_len), float(g.origin[0]),
-                float(g.origin[1]), float(g.h), int(g.nx), int(g.ny), g.start, g.items, float(o.center[0]),
+                float(g.origin[1]), float(g.h), int(g.nx), int(g.ny), g.start, g.items, g.near, float(o.center[0]),
                 float(o.center[1]), float(o.radius), float(o.r_min))
 
     @property
@@ -238,7 +238,7 @@ def _side_hits(idx, V, c1, s1, tx, c2, s2, sign, w, r_keep, cx, cy, tgt):
     """The hits of one side: the vertices ``V[idx]`` placed by a turn (c1, s1), a shift (tx, 0) and a turn (c2, s2)
     into the target's body frame, those within ``r_keep`` of its axis kept, each turned by sign·δ about (cx, cy)
     until it enters the target (:func:`.backlash._rot_pairs` / ``_rot_reduce``): (vertex, delta, edge, t)."""
-    (tV, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, ccx, ccy, radius, r_min) = tgt
+    (tV, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, near, ccx, ccy, radius, r_min) = tgt
     m = len(idx)
     P = np.empty((m, 2))
     keep = np.empty(m, np.int64)
@@ -263,8 +263,8 @@ def _side_hits(idx, V, c1, s1, tx, c2, s2, sign, w, r_keep, cx, cy, tgt):
         d = math.sqrt(ex * ex + ey * ey)
         lb[j] = max(d - radius, r_min - d)
     chord_factor = 2.0 * math.sin(0.5 * min(w, math.pi))
-    offs, seg, Y, X, T, ok = _rot_pairs(P, cx, cy, tV, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, sign,
-                                        rho, lb, chord_factor)
+    offs, seg, Y, X, T, ok = _rot_pairs(P, cx, cy, tV, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, near,
+                                        sign, rho, lb, chord_factor)
     delta = np.full(n, np.inf)
     edge = np.full(n, -1, np.int64)
     tpar = np.zeros(n)
@@ -288,14 +288,14 @@ def _side_hits(idx, V, c1, s1, tx, c2, s2, sign, w, r_keep, cx, cy, tgt):
 
 @njit(cache=True)
 def _pair_hits(phi_a, theta, sign, w, L, dvn_V, o1, a1, hw_dvn, drv_V, o2, a2, hw_drv, R1, R2,
-               t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14,
-               u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14):
+               t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14, t15,
+               u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14, u15):
     """:meth:`PairOutlines._all_hits` compiled: the driven vertices within the window about the line of centres put
     into the driver's frame (turned by -phi_a, shifted by -L, turned by -theta) turning about the driven axis there
     (sign) onto the driver's edges, and the driver vertices put into the driven frame turning the other way onto
     the driven edges.  Each rotation of a point is written out (x c - y s, x s + y c), the same on every machine."""
-    drv_t = (t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14)
-    dvn_t = (u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14)
+    drv_t = (t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14, t15)
+    dvn_t = (u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14, u15)
     i1 = _window_nb(o1, a1, phi_a, hw_dvn + w)
     i2 = _window_nb(o2, a2, math.pi - theta, hw_drv + w)
     cp, sp = math.cos(-phi_a), math.sin(-phi_a)
@@ -311,14 +311,14 @@ def _pair_hits(phi_a, theta, sign, w, L, dvn_V, o1, a1, hw_dvn, drv_V, o2, a2, h
 
 @njit(cache=True)
 def _first_hit(phi_a, theta, sign, w, L, dvn_V, o1, a1, hw_dvn, drv_V, o2, a2, hw_drv, R1, R2,
-               t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14,
-               u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14):
+               t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14, t15,
+               u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14, u15):
     """:meth:`PairOutlines._hits` compiled: the first entering hit (delta, side, vertex, edge, t) of
     :func:`_pair_hits` (the first least on a tie, side 1 before side 2)."""
     i1, d1, e1, t1_, i2, d2, e2, t2_ = _pair_hits(phi_a, theta, sign, w, L, dvn_V, o1, a1, hw_dvn, drv_V, o2, a2,
                                                   hw_drv, R1, R2, t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11,
-                                                  t12, t13, t14, u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11,
-                                                  u12, u13, u14)
+                                                  t12, t13, t14, t15, u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10,
+                                                  u11, u12, u13, u14, u15)
     k1, m1 = -1, np.inf
     for k in range(len(d1)):
         if k1 < 0 or d1[k] < m1:

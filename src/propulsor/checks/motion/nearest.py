@@ -42,6 +42,14 @@ class VertexGrid:
         self.origin = lo.astype(np.float64)
         self.seg_b = np.ascontiguousarray(seg_b, np.float64)
         self.h, self.nx, self.ny = float(h), nx, ny
+        # near[c]: a vertex lies in cell c or one of its 8 neighbours (a disc of radius <= h about a point of cell c,
+        # or of the edge cell a point outside the grid is clamped to, overlaps those cells only)
+        occ = np.pad((np.diff(self.start) > 0).reshape(nx, ny), 1)
+        near = np.zeros((nx, ny), bool)
+        for dx in range(3):
+            for dy in range(3):
+                near |= occ[dx:dx + nx, dy:dy + ny]
+        self.near = near.ravel().astype(np.bool_)
 
 
 #: the grids of an outline: cells of 1, 3, 9, … times the finest side (a search costs about (distance /
