@@ -78,8 +78,18 @@ def _rot(a: float) -> np.ndarray:
 
 
 def _nearest_tooth(centres: np.ndarray, angle: float) -> int:
-    d = np.abs((angle - centres + math.pi) % (2 * math.pi) - math.pi)
-    return int(np.argmin(d))
+    """The tooth whose centre (body polar angle) is nearest to ``angle`` (the first on a tie)."""
+    return int(_nearest_tooth_nb(centres, float(angle)))
+
+
+@njit(cache=True)
+def _nearest_tooth_nb(centres, angle):
+    best, k = np.inf, -1
+    for i in range(len(centres)):
+        d = abs((angle - centres[i] + math.pi) % (2 * math.pi) - math.pi)
+        if k < 0 or d < best:
+            best, k = d, i
+    return k
 
 
 class PairOutlines:

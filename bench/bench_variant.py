@@ -1,0 +1,85 @@
+"""Benchmark (issue 40): the CPU seconds of one design-study variant at proof depth, and where they go.
+
+    .venv/bin/python bench/bench_variant.py [part file ...] [--repeat N] [--profile]
+
+Default: the seed-002 pair (parts/ncg_seed002.toml, walking law, generated teeth) and its Fourier form
+(parts/ncg_fourier_seed002.toml).  A variant is what a study's worker computes for one row at ``depth = "proof"``
+(:func:`propulsor.study.evaluate.evaluate`): the design (law search, teeth), the whole-cycle proof, the as-built
+contact in both directions, the per-tooth load and every derived value and check of the report, no solid and no
+file, on one core (``PROPULSOR_JOBS=1``, as the study's workers run).  The study reads ``speed_ripple`` and
+``center_distance_mm`` (so the other tooth method's comparison is skipped: ``evaluate.ONLY_WHEN_READ``).
+
+Each part: one warm-up variant (imports, numba's compiled kernels loaded from their cache), then ``--repeat``
+variants with the face width changed (a new design each: nothing is reused between them), each timed by the
+process's CPU clock (``time.process_time``).  The target: <= 1.0 CPU s a variant.  ``--profile``: cProfile of the
+last variant, the 25 functions of most own time.
+
+Measured (2 cores, shared with two other jobs; CPU s a variant, the least of three):
+- before (86d800c): seed-002 pair 28.3 (with the comparison), Fourier form 25.6;
+- after the compiled contact search, the states computed once and the comparison only when read (2023885):
+  seed-002 pair 13.7, Fourier form 13.3.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+import time
+import tomllib
+from pathlib import Path
+
+os.environ["PROPULSOR_JOBS"] = "1"  # one core, as a study's worker runs a variant
+
+ROOT = Path(__file__).resolve().parents[1]
+TARGET_CPU_S = 1.0
+WANTED = ("speed_ripple", "center_distance_mm")
+
+
+def variants(part: Path, repeat: int, profile: bool) -> list[float]:
+    from propulsor.study.evaluate import evaluate
+
+    base = tomllib.loads(part.read_text(encoding="utf-8"))
+    ptype = base.pop("type")
+    base.pop("meta", None)
+    width = float(base.get("face_width_mm", 20.0))
+    row = evaluate(ptype, base, str(part), {"face_width_mm": width}, "proof", WANTED)  # warm-up
+    if row["status"] != "ok":
+        raise SystemExit(f"{part}: {row['status']}: {row['reason']}")
+    times = []
+    for k in range(repeat):
+        prof = None
+        if profile and k == repeat - 1:
+            import cProfile
+
+            prof = cProfile.Profile()
+            prof.enable()
+        t0 = time.process_time()
+        row = evaluate(ptype, base, str(part), {"face_width_mm": width + 1.0 + k}, "proof", WANTED)
+        times.append(time.process_time() - t0)
+        if prof is not None:
+            import pstats
+
+            prof.disable()
+            pstats.Stats(prof).sort_stats("tottime").print_stats(25)
+        if row["status"] != "ok":
+            raise SystemExit(f"{part}: {row['status']}: {row['reason']}")
+    return times
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("parts", nargs="*", default=["parts/ncg_seed002.toml", "parts/ncg_fourier_seed002.toml"])
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--profile", action="store_true")
+    a = ap.parse_args(argv)
+    for p in a.parts:
+        t = variants(ROOT / p, a.repeat, a.profile)
+        best = min(t)
+        print(f"{p}: CPU s a variant {' / '.join(f'{x:.2f}' for x in t)} (least {best:.2f}; target "
+              f"{TARGET_CPU_S:.1f}: {'met' if best <= TARGET_CPU_S else 'not met'})", flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
