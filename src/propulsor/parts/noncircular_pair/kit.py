@@ -200,7 +200,9 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     bed = (printer.bed_x_mm, printer.bed_y_mm, printer.bed_z_mm)
     full = None
     at_1_first = False
-    if p.law_search and p.module_mm > 0:
+    # a bore the part file does not give is sized from the full-size gear: its design is then made first
+    sized = p.driver_bore_mm is None or p.driven_bore_mm is None
+    if p.law_search and p.module_mm > 0 and not sized:
         # the searched law at full size is also the one at 1:1: the scale from the pitch curves, and at
         # 1:1 the printed pair searched and cut once (a print module has no catalogue shaper)
         m, L_est, extents = _pitch_extents(p, source)
@@ -220,9 +222,10 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
         choice = choose_scale(extents, bed, scale, margin=printer.margin_mm)
     def rig_at(S):
         """The pins and the base bar's length at reduction S."""
-        pin = [_pin(b / S) for b in (p.driver_bore_mm, p.driven_bore_mm)]
+        given = p if full is None else full.p  # the full-size bores (a sized one's diameter where not given)
+        pin = [_pin(b / S) for b in (given.driver_bore_mm, given.driven_bore_mm)]
         if full is not None:  # the driver's pin sized for the handle beside it (the root radius scales as 1/S)
-            rig = rig_sizes(full.d.driver.root_min_radius / S, m / S, p.driver_bore_mm / S, printer)
+            rig = rig_sizes(full.d.driver.root_min_radius / S, m / S, given.driver_bore_mm / S, printer)
             if rig is not None:
                 pin[0] = rig[0]
         return pin, L_est / S + 2 * (max(pin) / 2 + BOSS_WALL_MM)

@@ -36,12 +36,16 @@ LOAD_KEYS = ("load_driver_torque_Nm", "load_power_W", "load_driver_speed_rpm", "
 _WHY_MECHANISM = "a walking drive of 5 m hub height is larger than any built"
 #: the upper limit of a pair's own lengths (centre distances, bores), law-neutral
 _WHY_PAIR = "a gear pair 10 m across (bores of 5 m) is larger than any built"
+#: what a bore the part file does not give is (parts/noncircular_pair/bores.py)
+_SIZED = ("sized from the gear: the largest standard shaft (ISO 775) of d <= the least root radius (a body 2 d "
+          "across) whose bore and keyway stay one module inside the root; the report says which and why")
 
 
 @dataclass(frozen=True)
 class NoncircularPairParams(PartParams):
     """Parameters of the walking-drive pair.  Defaults: seed 002 as ``parts/ncg_seed002.toml`` builds it
-    (a = 100, b = 50, c = 236.5 mm, n = 4, m = 2.5, z 20/80, the law searched for the least ripple)."""
+    (a = 100, b = 50, c = 236.5 mm, n = 4, m = 2.5, z 20/80, the law searched for the least ripple); the bores, which
+    the seed's file gives (16 / 40 mm), sized from the gear when not given."""
 
     #: `propulsor params` and the reference list the law and its own keys first, the walking law's a, b, c after
     #: the others' (a class attribute, not a field)
@@ -120,9 +124,12 @@ class NoncircularPairParams(PartParams):
                                         "0: the design L", min=0.0, max=10000.0, why=_WHY_PAIR)
     face_width_mm: float = param(20.0, "mm", "face width of both gears", min=0.0, min_exclusive=True, max=1000.0,
                                   why="20 modules at m = 50: wider faces carry no more (ISO 6336 K_Hβ)")
-    driver_bore_mm: float = param(16.0, "mm", "driver bore diameter (0: none)", min=0.0, max=5000.0, why=_WHY_PAIR)
-    driven_bore_mm: float = param(40.0, "mm", "driven-wheel bore diameter (0: none)", min=0.0, max=5000.0, why=_WHY_PAIR)
-    keyway: bool = param(True, "", "hub keyway in each bore (DIN 6885-1 / GOST 23360-78)")
+    driver_bore_mm: float = param(None, "mm", "driver bore diameter (0: none); not given: " + _SIZED, min=0.0,
+                                  max=5000.0, why=_WHY_PAIR)
+    driven_bore_mm: float = param(None, "mm", "driven-wheel bore diameter (0: none); not given: " + _SIZED, min=0.0,
+                                  max=5000.0, why=_WHY_PAIR)
+    keyway: bool = param(True, "", "keyway in each bore (DIN 6885-1 / GOST 23360-78); a sized bore takes one, or none "
+                         "when no keyed bore fits")
     proof_phases_per_tooth: int = param(4, "", "phases per driven tooth in the full-cycle proof", min=4, max=64,
                                         integer=True, why="64 phases a tooth resolve contact to 1/64 of a pitch")
     as_built_ripple_margin: float = param(policy.AS_BUILT_RIPPLE_MARGIN, "", "as built: the hub speed ripple the finished outlines deliver "
@@ -317,5 +324,5 @@ class NoncircularPairParams(PartParams):
                 raise InputError("smoothing_deg", self.smoothing_deg, f"must be <= smoothing_max_deg = {self.smoothing_max_deg}")
         for name in ("driver_bore_mm", "driven_bore_mm"):
             d = getattr(self, name)
-            if self.keyway and d > 0 and not 6.0 < d <= 230.0:
+            if self.keyway and d is not None and d > 0 and not 6.0 < d <= 230.0:
                 raise InputError(name, d, "a keyway needs a bore over 6 up to 230 mm (DIN 6885-1); set keyway = false")
