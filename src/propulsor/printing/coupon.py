@@ -14,7 +14,15 @@ from .hardware import side_pin
 #: the five steps (mm): radial clearance of the holes; the slots' extra width over the profile's backlash
 STEPS = (-0.1, 0.0, 0.1, 0.2, 0.3)
 PIN_D, PIN_L, KEY_W, KEY_T, KEY_L = 5.0, 20.0, 3.0, 2.0, 24.0
-BAR_T, PITCH, SLOT_DEPTH = 4.0, 11.0, 8.0
+#: the bar: thickness, the holes' and slots' pitch, the slots' depth, and the bar beyond the first and last hole (the
+#: notch's corner clear of the first hole): 2 × 6 + 4 × 11 = 56 mm long, so that the coupon plate fits an 80 × 80 mm
+#: bed inside its margins (policy.PLATE_MARGIN_MM: 64 mm left)
+BAR_T, PITCH, SLOT_DEPTH, BAR_END = 4.0, 11.0, 8.0, 6.0
+
+
+def bar_length() -> float:
+    """The bar's length (mm): its ends and the steps' pitches."""
+    return 2 * BAR_END + PITCH * (len(STEPS) - 1)
 
 
 def coupon_pieces(printer):
@@ -26,16 +34,16 @@ def coupon_pieces(printer):
 
     under = printer.hole_undersize_mm
     n = len(STEPS)
-    length = PITCH * (n + 1)
+    length = bar_length()
     depth = 2 * SLOT_DEPTH + PIN_D + 8.0
     # outline with the slots open at y = 0 and a notch at the first end (x = 0, y = depth)
     pts = [(0.0, 0.0)]
     for k, step in enumerate(STEPS):
-        x = PITCH * (k + 1)
+        x = BAR_END + PITCH * k
         half = 0.5 * (KEY_W + printer.backlash_mm + step)
         pts += [(x - half, 0.0), (x - half, SLOT_DEPTH), (x + half, SLOT_DEPTH), (x + half, 0.0)]
     pts += [(length, 0.0), (length, depth), (3.0, depth), (0.0, depth - 3.0)]
-    holes = [circle_loop(0.5 * (PIN_D + 2 * step + under), (PITCH * (k + 1), depth - 4.0 - PIN_D / 2), ccw=False)
+    holes = [circle_loop(0.5 * (PIN_D + 2 * step + under), (BAR_END + PITCH * k, depth - 4.0 - PIN_D / 2), ccw=False)
              for k, step in enumerate(STEPS)]
     bar = extrude_profile(Profile(polygon_loop(pts), holes, "coupon"), BAR_T)
     return [Piece("coupon", bar, genus=n, what="clearance coupon: holes −0.1 … +0.3 mm, slots backlash −0.1 … +0.3 mm"),
