@@ -120,3 +120,28 @@ def test_the_sized_bore_is_the_largest_standard_shaft_with_its_hub_and_rim(keywa
             assert b.d_mm == (ok[-1] if ok else 0.0), (r_f, m)
             assert b.keyway == (keyway and b.d_mm > 0)
     assert size_bore(10.0, 4.0, True).d_mm == 9.0  # the keyway binds: a 10 mm bore's reaches 6.4 mm > 10 - 4
+
+
+def test_the_report_says_the_bores_sized_and_names_its_two_least_backlashes(small, tmp_path):
+    """One build of the small pair: the bores as built are derived values with the rule in a note; the least backlash
+    of the motion proof's phases (the check) and the one over every contact position (backlash_min_mm) are named as
+    the two things they are, each number where its name is."""
+    import json
+    import re
+
+    out = tmp_path / "out"
+    assert main(["build", str(small), "--out", str(out), "-q"]) == 0
+    m = json.loads((out / "manifest.json").read_text())
+    d = m["derived"]
+    assert (d["driver_bore_mm"], d["driven_bore_mm"]) == (8.0, 16.0)
+    assert m["inputs"]["driver_bore_mm"] is None  # the input: not given
+    notes = (out / "report.md").read_text()
+    assert "Bores sized from the gear (the part file gives no driver_bore_mm and no driven_bore_mm" in notes
+    check = next(c for c in m["checks"] if c["name"] == "mesh.backlash_min")
+    steps = 40 * 4  # driven_teeth × proof_phases_per_tooth
+    assert f"at the proof's {steps} phases" in check["message"] and "backlash_min_mm" in check["message"]
+    said = re.search(r"least backlash ([0-9.]+) mm \(backlash_min_mm, over every contact position; the motion "
+                     r"proof's (\d+) phases alone give ([0-9.]+) mm\)", notes)
+    assert said is not None
+    assert float(said.group(1)) == pytest.approx(d["backlash_min_mm"], abs=5e-6)
+    assert float(said.group(3)) == pytest.approx(check["value"], abs=5e-6) and int(said.group(2)) == steps

@@ -15,7 +15,8 @@ _PAIR = {
     "te_pp_rad": ("rad", "peak-to-peak transmission error of the driven gear against the law, as built (the drive "
                          "flanks' contact resolved by contact events)"),
     "backlash_min_mm": ("mm", "least circumferential backlash as built: the gap between the two directions' contacts "
-                              "on the driven pitch curve"),
+                              "on the driven pitch curve, over every contact position (the check mesh.backlash_min: "
+                              "at the motion proof's phases)"),
     "backlash_max_mm": ("mm", "largest circumferential backlash as built on the driven pitch curve"),
     "least_overlap_max_mm2": ("mm²", "largest overlap left at the driven angle of least overlap over the proof"),
 }
