@@ -46,18 +46,28 @@ def coupon_pieces(printer):
     holes = [circle_loop(0.5 * (PIN_D + 2 * step + under), (BAR_END + PITCH * k, depth - 4.0 - PIN_D / 2), ccw=False)
              for k, step in enumerate(STEPS)]
     bar = extrude_profile(Profile(polygon_loop(pts), holes, "coupon"), BAR_T)
-    return [Piece("coupon", bar, genus=n, what="clearance coupon: holes −0.1 … +0.3 mm, slots backlash −0.1 … +0.3 mm"),
+    return [Piece("coupon", bar, genus=n, what=f"clearance coupon: holes {_marks()} mm radial clearance for the "
+                  f"⌀{PIN_D:g} mm pin; slots the {KEY_W:g} mm key plus {_gaps(printer)} mm"),
             Piece("coupon_pin", side_pin(PIN_D, PIN_L), genus=0, what=f"coupon test pin ⌀{PIN_D:g}", chamfer_mm=0.0),
             Piece("coupon_key", box(KEY_W, KEY_L, KEY_T), genus=0, what=f"coupon key {KEY_W:g} mm (a tooth)")]
+
+
+def _marks() -> str:
+    """The holes' radial clearances from the notched end, as the coupon's piece and the guide both say them."""
+    return ", ".join(f"{s:+.1f}" if s else "0" for s in STEPS)
+
+
+def _gaps(printer) -> str:
+    """The slots' gaps over the key from the notched end: the profile's backlash and the steps."""
+    return ", ".join(f"{printer.backlash_mm + s:.1f}" for s in STEPS)
 
 
 def advice(printer) -> list[str]:
     """What the coupon tells, as steps a maker follows (Markdown-safe text)."""
     c, j, p = printer.running_clearance_mm, printer.backlash_mm, printer.press_fit_mm
-    marks = ", ".join(f"{s:+.1f}" if s else "0" for s in STEPS)
     return [
-        f"Print plate 1 (the coupon) first. Its holes are, from the notched end: {marks} mm radial clearance "
-        f"for the ⌀{PIN_D:g} mm pin; its slots, from the same end, are the key's {KEY_W:g} mm plus {', '.join(f'{j + s:.1f}' for s in STEPS)} mm.",
+        f"Print plate 1 (the coupon) first. Its holes are, from the notched end: {_marks()} mm radial clearance "
+        f"for the ⌀{PIN_D:g} mm pin; its slots, from the same end, are the key's {KEY_W:g} mm plus {_gaps(printer)} mm.",
         f"Running fit: find the tightest hole in which the pin turns freely by hand. This kit is drawn for "
         f"{c:g} mm; if that hole is +0.3 use `--set running_clearance_mm=0.35`, if it is +0.1 or 0 use "
         f"`--set running_clearance_mm=` that value (at least 0.1).",

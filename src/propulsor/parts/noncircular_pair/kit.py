@@ -173,6 +173,19 @@ def _documented_jam(source, prefix: str) -> list[str]:
     return [f"{prefix}.overlap_area", f"{prefix}.print_backlash_min"]
 
 
+def _keep_on_step(capped) -> str:
+    """The assembly step that keeps the wheels on their pins: a printed cap where there is room for one, else the
+    push-on retaining washer the hardware lists (``capped``: (driver, driven))."""
+    if all(capped):
+        return (f"Press a cap onto each pin until it is flush with the pin's top: it stands {PLAY_MM:g} mm above the "
+                f"wheel, which turns freely and stays on when the model is lifted.")
+    keepers = [f"press the cap onto the {role}'s pin until it is flush with the pin's top" if c else
+               f"push the retaining washer (starlock, in the hardware) onto the {role}'s pin down to {PLAY_MM:g} mm "
+               f"above the wheel" for role, c in zip(("driver", "driven wheel"), capped)]
+    return (keepers[0][0].upper() + keepers[0][1:] + "; " + keepers[1] + ": each wheel turns freely and stays on when "
+            "the model is lifted.")
+
+
 def _with_holes(profile: Profile, holes) -> Profile:
     return Profile(profile.outer, list(profile.holes) + list(holes), profile.name)
 
@@ -390,9 +403,7 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
                "Press the handle into the small hole of the driver.",
                "Put the driven wheel on its pin with its mark 1 (the index hole on the line of centres, away from "
                "the driver) and the driver on its pin with the handle towards the driven wheel; the teeth mesh.",
-               f"Press a cap (or a push-on washer, see the hardware) onto each pin until it is flush with the pin's "
-               f"top: it stands {PLAY_MM:g} mm above the wheel, which turns freely and stays on when the model is "
-               f"lifted.",
+               _keep_on_step(capped),
                f"Turn the handle: each driver turn the next of the driven wheel's {n} marks reaches the line of centres; "
                f"{n} turns bring the driven wheel once round, its speed varying as the law asks."],
         expected_failures=_documented_jam(source, prefix),

@@ -96,11 +96,13 @@ class NoncircularPairParams(PartParams):
                                 "(GOST 9323 / DIN 1825: 25, 38, 50, 75, 100; its own z0 and x0); 0: a shaper of "
                                 "shaper_teeth with x0 = -x of the gear it cuts", min=0.0, max=100.0,
                                 why="the largest nominal diameter of the catalogue (gears/data/cutters.toml)")
-    law_search: bool = param(True, "", "search the blend shape (half-width and hand-over value) and the catalogue "
-                             "shaper for the least hub speed ripple under generability (gears/law_search.py); "
-                             "smoothing_deg, smoothing_max_deg, shaper_d0_mm and shaper_teeth are then not used")
-    center_distance_band_mm: float = param(5.0, "mm", "law search: largest |L - L_exact| (L_exact: closure of the "
-                                           "exact law at module_mm, driven_teeth)", min=0.0, min_exclusive=True,
+    law_search: bool = param(True, "", "search the cutters: where a pitch curve is concave, the catalogue shapers at "
+                             "the module, largest first, until both gears can be cut (shaper_d0_mm and shaper_teeth "
+                             "are then not used); walking law: with the blend shape (half-width and hand-over value) "
+                             "for the least ripple of the driven (hub) speed under generability (gears/law_search.py; "
+                             "smoothing_deg and smoothing_max_deg then not used either)")
+    center_distance_band_mm: float = param(5.0, "mm", "walking law's search: largest |L - L_exact| (L_exact: "
+                                           "closure of the exact law at module_mm, driven_teeth)", min=0.0, min_exclusive=True,
                                            max=100.0, why="a band of 100 mm is no longer the seed's drive")
     blend_hand_over: float = param(0.0, "", "U_s at hand-over over u: the blend's second shape parameter (closure "
                                    "by scaling U outside the windows); 0: the window-integral blend", min=0.0, max=2.0,
@@ -154,7 +156,8 @@ class NoncircularPairParams(PartParams):
                                    max=200, integer=True, why="about 16 CPU s a case for a pair of 80 teeth")
     tolerance_seed: int = param(1, "", "as made: the seed of the Monte Carlo cases (the same seed, the same cases)",
                                 min=0, max=2**31 - 1, integer=True, why="a 31-bit seed")
-    compare_methods: bool = param(True, "", "prove the other tooth method too (2D, one leg) and report the comparison")
+    compare_methods: bool = param(True, "", "walking law: prove the other tooth method too (2D, one leg) and report "
+                                  "the comparison (the sector method is the walking law's)")
     # --- the load per tooth (parts/noncircular_pair/tooth_load_outputs.py): off unless a load is given ---------
     load_driver_torque_Nm: float = param(0.0, "N·m", "load per tooth: the driver's torque T1 (constant; the driven "
                                          "torque follows T2 = T1·U·eta); 0: no torque load", min=0.0, max=1e6,
