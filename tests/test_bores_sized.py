@@ -145,3 +145,20 @@ def test_the_report_says_the_bores_sized_and_names_its_two_least_backlashes(smal
     assert said is not None
     assert float(said.group(1)) == pytest.approx(d["backlash_min_mm"], abs=5e-6)
     assert float(said.group(3)) == pytest.approx(check["value"], abs=5e-6) and int(said.group(2)) == steps
+
+
+def test_a_kit_of_the_small_pair_takes_its_pins_from_the_sized_bores_on_an_80_mm_bed(small, tmp_path):
+    """The print kit of the pair without bores: its full-size design sizes them (8 / 16 mm), the pins follow (the
+    driven wheel's the largest printed pin, 12 mm, below its 16 mm bore); every plate, the coupon's first, on the
+    80 x 80 mm bed inside its margins."""
+    import json
+
+    out = tmp_path / "kit"
+    assert main(["print", str(small), "--bed", "80x80x80", "--slice", "no", "--out", str(out), "-q"]) == 0
+    m = json.loads((out / "manifest.json").read_text())
+    d = m["derived"]
+    assert d["scale_S"] == 1.0 and d["pin_driven_d_mm"] == 12.0 and d["pin_driver_d_mm"] <= 8.0
+    assert [c["name"] for c in m["checks"] if not c["passed"]] == []
+    plates = {c["name"] for c in m["checks"] if c["name"].endswith(".on_bed")}
+    assert "plate_1.on_bed" in plates and len(plates) >= 2
+    assert "coupon, coupon_pin, coupon_key" in (out / "print_guide.md").read_text()

@@ -173,6 +173,10 @@ def _documented_jam(source, prefix: str) -> list[str]:
     return [f"{prefix}.overlap_area", f"{prefix}.print_backlash_min"]
 
 
+#: the wheels as the guide names them
+_WHEEL = {"driver": "driver", "driven": "driven wheel"}
+
+
 def _keep_on_step(capped) -> str:
     """The assembly step that keeps the wheels on their pins: a printed cap where there is room for one, else the
     push-on retaining washer the hardware lists (``capped``: (driver, driven))."""
@@ -323,9 +327,9 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
                                          "washer"), WASHER_T_MM)
         cap = extrude_profile(Profile(circle_loop(cap_od[k] / 2), [circle_loop(cap_id[k] / 2, ccw=False)], "cap"),
                               CAP_H_MM)
-        rings += [Piece(f"washer_{role}", washer, genus=1, what=f"washer under the {role}, {WASHER_T_MM:g} mm",
+        rings += [Piece(f"washer_{role}", washer, genus=1, what=f"washer under the {_WHEEL[role]}, {WASHER_T_MM:g} mm",
                         chamfer_mm=0.0),
-                  Piece(f"cap_{role}", cap, genus=1, what=f"cap pressed on the {role}'s pin", chamfer_mm=0.0)][:2 if capped[k] else 1]
+                  Piece(f"cap_{role}", cap, genus=1, what=f"cap pressed on the {_WHEEL[role]}'s pin", chamfer_mm=0.0)][:2 if capped[k] else 1]
     pieces = [Piece("driver", driver, genus=2, what=f"driver, {d.z} teeth, m = {d.m:.4g} mm"),
               Piece("driven", driven, genus=1 + n, what=f"driven wheel, {d.z_H} teeth, {n} index marks"),
               Piece("base", base, genus=2, what=f"base bar, axles {L:.3f} mm apart"),
@@ -336,9 +340,9 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     hardware = [dowel(pin[0], pin_len, 1, "pin_driver", "the driver's axle"),
                 dowel(pin[1], pin_len, 1, "pin_driven", "the driven wheel's axle")]
     hardware += [Hardware(f"DIN 125 / ISO 7089 washer for M{d_:g} — runs under the "
-                          f"{role} on its pin", 1, f"washer_{role}") for d_, role in zip(pin, ("driver", "driven"))
+                          f"{_WHEEL[role]} on its pin", 1, f"washer_{role}") for d_, role in zip(pin, ("driver", "driven"))
                  if d_ == int(d_)]
-    hardware += [Hardware(f"push-on retaining washer (starlock) for a ⌀{d_:g} mm steel pin — keeps the {role} on "
+    hardware += [Hardware(f"push-on retaining washer (starlock) for a ⌀{d_:g} mm steel pin — keeps the {_WHEEL[role]} on "
                           f"(no room for a printed cap beside the {'handle' if role == 'driver' else 'marks'})", 1, "")
                  for d_, role, c in zip(pin, ("driver", "driven"), capped) if not c]
     if handle_printed:
@@ -378,9 +382,9 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
             Fit("pin_driver_in_base", "pin_driver", "base", (L, 0.0), "press", "pressed into the base")]
     for k, role in enumerate(("driver", "driven")):
         fits += [Fit(f"washer_{role}_on_pin", f"pin_{role}", f"washer_{role}", (0.0, 0.0), "running",
-                     f"the washer under the {role}"),
+                     f"the washer under the {_WHEEL[role]}"),
                  Fit(f"cap_{role}_on_pin", f"pin_{role}", f"cap_{role}", (0.0, 0.0), "press",
-                     f"the cap keeps the {role} on its pin")][:2 if capped[k] else 1]
+                     f"the cap keeps the {_WHEEL[role]} on its pin")][:2 if capped[k] else 1]
     if handle_printed:
         fits.append(Fit("handle_in_driver", "handle", "driver", (r_h, 0.0), "press", "pressed into the driver"))
     return Kit(
