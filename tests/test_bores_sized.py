@@ -137,6 +137,7 @@ def test_the_report_says_the_bores_sized_and_names_its_two_least_backlashes(smal
     assert m["inputs"]["driver_bore_mm"] is None  # the input: not given
     notes = (out / "report.md").read_text()
     assert "Bores sized from the gear (the part file gives no driver_bore_mm and no driven_bore_mm" in notes
+    assert "| driver_bore_mm |  | mm | not given: sized from the gear, the largest standard shaft" in notes
     check = next(c for c in m["checks"] if c["name"] == "mesh.backlash_min")
     steps = 40 * 4  # driven_teeth × proof_phases_per_tooth
     assert f"at the proof's {steps} phases" in check["message"] and "backlash_min_mm" in check["message"]

@@ -37,8 +37,9 @@ _WHY_MECHANISM = "a walking drive of 5 m hub height is larger than any built"
 #: the upper limit of a pair's own lengths (centre distances, bores), law-neutral
 _WHY_PAIR = "a gear pair 10 m across (bores of 5 m) is larger than any built"
 #: what a bore the part file does not give is (parts/noncircular_pair/bores.py)
-_SIZED = ("sized from the gear: the largest standard shaft (ISO 775) of d <= the least root radius (a body 2 d "
-          "across) whose bore and keyway stay one module inside the root; the report says which and why")
+_SIZED_RULE = ("the largest standard shaft (ISO 775) of d <= the least root radius (a body 2 d across) whose bore "
+               "and keyway stay one module inside the root")
+_SIZED = f"sized from the gear: {_SIZED_RULE}; the report says which and why"
 
 
 @dataclass(frozen=True)
@@ -255,6 +256,9 @@ class NoncircularPairParams(PartParams):
     def meaning(self, name: str) -> str:
         if name == "driver_turns":
             return self._DRIVER_TURNS_MEANING[self.law]
+        if name in ("driver_bore_mm", "driven_bore_mm") and getattr(self, name) is None:
+            return (f"not given: sized from the gear, {_SIZED_RULE}; the derived {name} is the bore as built, a note "
+                    "says why")
         return super().meaning(name)
 
     def _validate_load(self) -> None:
