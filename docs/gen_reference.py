@@ -82,7 +82,7 @@ def part_pages() -> dict[str, str]:
         lines.append("## Parameters\n\nEvery key a part file of this type may hold (`type = \"" + t + "\"`), "
                      "with its unit, default, limits and meaning; a key left out takes its default.\n\n")
         rows = [[code(r["name"]), esc(r["unit"]), code(repr(r["default"])) if r["default"] not in ("", None)
-                 else esc(repr(r["default"])), esc(r["limits"]), esc(r["doc"])] for r in describe_params(params_class(t))]
+                 else "(not given)" if r["default"] is None else esc(repr(r["default"])), esc(r["limits"]), esc(r["doc"])] for r in describe_params(params_class(t))]
         lines.append(table(["parameter", "unit", "default", "limits", "meaning"], rows))
         key = key_values_of(t)
         lines.append("\n## Derived values\n\nThe values a build computes (the manifest's `derived`, the report's "

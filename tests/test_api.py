@@ -129,9 +129,13 @@ def test_keys_equal_to_the_defaults_can_be_deleted(part_file):
 
 
 def test_noncircular_defaults_are_the_seed_002_part_file():
+    """The defaults are seed 002's part file but for its bores: the file writes 16 / 40 mm, the defaults leave them
+    out (sized from the gear, parts/noncircular_pair/bores.py)."""
     _, mapping = read_part_file(PARTS / "ncg_seed002.toml")
-    assert params_class("noncircular_pair")() == load_params(params_class("noncircular_pair"), mapping,
-                                                             validate=False)
+    cls = params_class("noncircular_pair")
+    assert (mapping["driver_bore_mm"], mapping["driven_bore_mm"]) == (16.0, 40.0)
+    assert cls().driver_bore_mm is None and cls().driven_bore_mm is None
+    assert cls(driver_bore_mm=16.0, driven_bore_mm=40.0) == load_params(cls, mapping, validate=False)
 
 
 def test_the_examples_run(tmp_path):

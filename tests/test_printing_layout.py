@@ -134,3 +134,27 @@ def test_a_packed_plate_slices_in_prusaslicer(tmp_path):
     off = write_3mf_objects([("block", objs[0][1].copy().apply_translation([300.0, 0, 0]))], tmp_path / "off.3mf")
     r2 = slice_plate(off, printer.bed_shape(), tmp_path / "off.gcode")
     assert not r2.ok or r2.off_bed(printer.bed_x_mm, printer.bed_y_mm) == ["object 1"]
+
+
+def test_the_clearance_coupon_fits_an_80_mm_bed_inside_its_margins():
+    """The coupon's plate (bar, test pin, key; each laid on its largest face) packs on one 80 × 80 mm plate with
+    policy.PLATE_MARGIN_MM to every edge, and keeps its five holes and slots at their pitch."""
+    from propulsor import policy
+    from propulsor.export.mesh import to_trimesh
+    from propulsor.printing import coupon
+
+    pr = load_printer("generic", bed="80x80x80")
+    assert pr.margin_mm == policy.PLATE_MARGIN_MM
+    flat = {pc.name: lay_flat(to_trimesh(pc.solid))[0] for pc in coupon.coupon_pieces(pr)}
+    feet = {n: tuple((m.bounds[1] - m.bounds[0])[:2]) for n, m in flat.items()}
+    bar = sorted(feet["coupon"])
+    assert bar[1] == pytest.approx(coupon.bar_length(), abs=1e-3)
+    assert coupon.bar_length() <= 80 - 2 * policy.PLATE_MARGIN_MM
+    plates = pack(feet, pr.bed_x_mm, pr.bed_y_mm, pr.piece_gap_mm, pr.margin_mm)
+    assert len(plates) == 1
+    for pl in plates[0].placements:
+        lo, hi = placed(flat[pl.name], pl).bounds
+        assert lo[0] >= pr.margin_mm - 1e-6 and lo[1] >= pr.margin_mm - 1e-6
+        assert hi[0] <= 80 - pr.margin_mm + 1e-6 and hi[1] <= 80 - pr.margin_mm + 1e-6
+    # the bar keeps its five through holes (genus 5) and its five slots open at its edge
+    assert flat["coupon"].euler_number == 2 - 2 * len(coupon.STEPS)

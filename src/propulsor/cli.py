@@ -314,7 +314,7 @@ def cmd_params(args) -> int:
     print(f"{args.part_type}: {what}")
     print(f"{'parameter':28s} {'unit':6s} {'default':>14s}  {'limits':24s} description")
     for r in rows:
-        print(f"{r['name']:28s} {r['unit']:6s} {str(r['default']):>14s}  {r['limits']:24s} {r['doc']}")
+        print(f"{r['name']:28s} {r['unit']:6s} {'(not given)' if r['default'] is None else str(r['default']):>14s}  {r['limits']:24s} {r['doc']}")
     return EXIT_OK
 
 

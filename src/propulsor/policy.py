@@ -358,6 +358,20 @@ SLICER_EDGE_ROOM_MM = 1.0
 #: distance and its loops, and the room beyond them (0 + 6 + 0.7 + 1 = 7.7, rounded up to whole mm)
 PLATE_MARGIN_MM = 8.0
 
+# --- bores of a non-circular pair (parts/noncircular_pair/bores.py) -------------------------------------------------
+#: the least rim a bore (with its keyway) leaves below a gear's least root radius, in modules: a given bore that leaves
+#: less is refused, a sized one never does
+BORE_RIM_MIN_MODULES = 1.0
+#: a bore the part file does not give is the largest standard shaft whose diameter d is at most the gear's least root
+#: radius: the gear's body about it is at least BORE_HUB_RATIO d across (a steel hub's proportion, about 1.8 ... 2 d)
+BORE_HUB_RATIO = 2.0
+#: the shaft diameters a sized bore is chosen from (mm): ISO 775 / DIN 748-1 cylindrical shaft ends (6 ... 220), and
+#: 3, 4, 5 (ISO 2338 dowel pins) for a plain bore below them
+BORE_STANDARD_D_MM = (3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0, 10.0, 11.0, 12.0, 14.0, 16.0, 18.0, 19.0, 20.0, 22.0, 24.0,
+                      25.0, 28.0, 30.0, 32.0, 35.0, 38.0, 40.0, 42.0, 45.0, 48.0, 50.0, 55.0, 56.0, 60.0, 63.0, 65.0,
+                      70.0, 71.0, 75.0, 80.0, 85.0, 90.0, 95.0, 100.0, 110.0, 120.0, 125.0, 130.0, 140.0, 150.0, 160.0,
+                      170.0, 180.0, 190.0, 200.0, 220.0)
+
 #: the smallest module a non-circular pair takes (mm): the smallest of ISO 54 and GOST 9563 (0.05 mm); below it the
 #: solvers meet the limits of double precision at the part's other lengths (a scipy warning, then a refusal)
 MODULE_MIN_MM = 0.05

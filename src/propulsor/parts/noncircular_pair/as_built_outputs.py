@@ -180,6 +180,7 @@ def as_built_values(w, dd, built: dict) -> None:
     _plot(w, d, ab)
     from ... import policy
 
+    proof = built["proof"].summary()  # the motion proof's phase samples, beside the contact positions resolved here
     hub = (f"hub speed ripple as built {100 * ab.hub[0].ripple:.2f} % (drive) and {100 * ab.hub[1].ripple:.2f} % "
            f"(reverse) against the law's {100 * d.ripple.ripple:.2f} %; " if walking else "")
     w.add_note(
@@ -190,7 +191,8 @@ def as_built_values(w, dd, built: dict) -> None:
         f"law's {dr.speed_min:.4f} .. {dr.speed_max:.4f} (drive), {rv.speed_min:.4f} .. {rv.speed_max:.4f} "
         f"(reverse); largest step at a change of contact {100 * ab.step_max:.2f} %; transmission error "
         f"peak-to-peak {dr.te_pp:.3e} rad (drive), {rv.te_pp:.3e} rad (reverse); least backlash "
-        f"{ab.backlash_min_mm:.4f} mm; load on a corner {100 * dr.edge_share:.2f} % / {100 * rv.edge_share:.2f} % "
+        f"{ab.backlash_min_mm:.5f} mm (backlash_min_mm, over every contact position; the motion proof's "
+        f"{proof['steps']} phases alone give {proof['backlash_min_mm']:.5f} mm); load on a corner {100 * dr.edge_share:.2f} % / {100 * rv.edge_share:.2f} % "
         f"of the cycle.  tables/as_built_stretches.csv lists every stretch whose speed is off the law's by more than "
         f"{100 * policy.CONTACT_STRETCH_SPEED_TOL:g} % or whose contact is on a corner.")
     _tooth_load(w, dd, built, ab)

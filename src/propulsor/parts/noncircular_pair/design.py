@@ -24,6 +24,7 @@ from ...gears.generability import CutterSpec, SmoothingDesign, check_generable
 from ...gears.noncircular import PitchCurves, SmoothedWalkingLaw, hub_speed_ripple
 from ...gears.sectors import sector_hub_speed
 from ...laws.walking import WalkingLaw
+from .bores import Bore, bores, with_bores
 from .cutting import TOOTH_KEYS, TOOTH_KEYS_D0, Design, entry_of, generate_pair, law_of, rack_of, thinning
 from .feasibility import Screen, screen, screened, sector_design_table
 from .params import NoncircularPairParams
@@ -32,7 +33,7 @@ from .params import NoncircularPairParams
 _law, _rack = law_of, rack_of
 
 __all__ = ["Design", "PairDesign", "Screen", "screen", "screened", "design", "pair_design", "design_generated",
-           "design_sectors", "sector_design_table", "mounting", "gear_profiles"]
+           "design_sectors", "sector_design_table", "mounting", "gear_profiles", "bores"]
 
 
 # =========================================================================== design
@@ -155,26 +156,20 @@ def mounting(p: NoncircularPairParams, d: Design) -> float:
 
 
 # =========================================================================== solids / files
-def _with_bore(profile, bore_d: float, keyway: bool, root_min: float, m: float, which: str):
-    from ...geometry.gear_outline import bore_loop, keyway_for_shaft
+def _with_bore(profile, bore: Bore):
+    from ...geometry.gear_outline import bore_loop
     from ...geometry.profile import Profile
 
-    if bore_d <= 0:
+    if bore.d_mm <= 0:
         return profile
-    name = f"{which}_bore_mm"
-    t2 = keyway_for_shaft(bore_d)[1] if keyway else 0.0
-    lim = root_min - m
-    if not bore_d / 2 + t2 < lim:
-        raise InputError(name, bore_d, f"bore{' + keyway' if keyway else ''} must stay one module inside the root: "
-                         f"bore/2 + t2 = {bore_d / 2 + t2:.3f} mm >= {lim:.3f} mm",
-                         f"largest bore about {2 * (lim - t2):.1f} mm")
-    return Profile(profile.outer, [bore_loop(bore_d, True if keyway else None)], profile.name)
+    return Profile(profile.outer, [bore_loop(bore.d_mm, True if bore.keyway else None)], profile.name)
 
 
-def gear_profiles(p: NoncircularPairParams, d: Design):
-    """(driver, driven) profiles with bore and keyway (InputError if they do not fit)."""
-    return (_with_bore(d.driver.profile, p.driver_bore_mm, p.keyway, d.driver.root_min_radius, d.m, "driver"),
-            _with_bore(d.driven.profile, p.driven_bore_mm, p.keyway, d.driven.root_min_radius, d.m, "driven"))
+def gear_profiles(p: NoncircularPairParams, d: Design, chosen: tuple[Bore, Bore] | None = None):
+    """(driver, driven) profiles with bore and keyway: the bores ``chosen`` (default: :func:`.bores.bores`, a given
+    bore checked, InputError when it does not fit; a bore not given sized from the gear)."""
+    drv, dvn = bores(p, d) if chosen is None else chosen
+    return _with_bore(d.driver.profile, drv), _with_bore(d.driven.profile, dvn)
 
 
 @dataclass(frozen=True)
@@ -182,13 +177,15 @@ class PairDesign:
     """The part's design: the pair of one method, the finished profiles (bore, keyway), the installed
     centre distance."""
 
-    p: NoncircularPairParams
+    p: NoncircularPairParams  # the bores as built (a sized bore's diameter where the part file gives none)
     d: Design
     profiles: tuple  # (driver, driven) Profile
     mount: float
+    bores: tuple = ()  # (driver, driven) bores.Bore: given or sized, and why
 
 
 def pair_design(p: NoncircularPairParams, source=None) -> PairDesign:
     """The pair of the part file ``source`` (a table law's file is read relative to it)."""
     d = design(p, source=source)
-    return PairDesign(p, d, gear_profiles(p, d), mounting(p, d))
+    chosen = bores(p, d)
+    return PairDesign(with_bores(p, chosen), d, gear_profiles(p, d, chosen), mounting(p, d), chosen)

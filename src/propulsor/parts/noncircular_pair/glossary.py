@@ -15,7 +15,8 @@ _PAIR = {
     "te_pp_rad": ("rad", "peak-to-peak transmission error of the driven gear against the law, as built (the drive "
                          "flanks' contact resolved by contact events)"),
     "backlash_min_mm": ("mm", "least circumferential backlash as built: the gap between the two directions' contacts "
-                              "on the driven pitch curve"),
+                              "on the driven pitch curve, over every contact position (the check mesh.backlash_min: "
+                              "at the motion proof's phases)"),
     "backlash_max_mm": ("mm", "largest circumferential backlash as built on the driven pitch curve"),
     "least_overlap_max_mm2": ("mm²", "largest overlap left at the driven angle of least overlap over the proof"),
 }
@@ -141,6 +142,10 @@ GLOSSARY = {
     "blend_eps": ("", "the chosen blend's first shape parameter ε"),
     "law_search_binding": ("", "the limit that binds the chosen law (what stops a smaller ripple)"),
     "law_search_best_screened_ripple": ("", "hub speed ripple of the best law found by the screening"),
+    "driver_bore_mm": ("mm", "the driver's bore as built, sized from the gear (the part file gives none; 0: no bore "
+                             "fits; the notes say the rule)"),
+    "driven_bore_mm": ("mm", "the driven wheel's bore as built, sized from the gear (the part file gives none; 0: no "
+                             "bore fits; the notes say the rule)"),
     "sector_arc_mm": ("mm", "pitch-curve arc of one involute sector (seed 000 Table 1)"),
     "sectors_per_leg": ("", "involute sectors i per leg of the driven gear"),
     **{f"compare_<other>_{k}": (unit, f"{meaning}, with the teeth made by the other method ({{other}}), for comparison")

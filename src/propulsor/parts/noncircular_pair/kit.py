@@ -173,6 +173,23 @@ def _documented_jam(source, prefix: str) -> list[str]:
     return [f"{prefix}.overlap_area", f"{prefix}.print_backlash_min"]
 
 
+#: the wheels as the guide names them
+_WHEEL = {"driver": "driver", "driven": "driven wheel"}
+
+
+def _keep_on_step(capped) -> str:
+    """The assembly step that keeps the wheels on their pins: a printed cap where there is room for one, else the
+    push-on retaining washer the hardware lists (``capped``: (driver, driven))."""
+    if all(capped):
+        return (f"Press a cap onto each pin until it is flush with the pin's top: it stands {PLAY_MM:g} mm above the "
+                f"wheel, which turns freely and stays on when the model is lifted.")
+    keepers = [f"press the cap onto the {role}'s pin until it is flush with the pin's top" if c else
+               f"push the retaining washer (starlock, in the hardware) onto the {role}'s pin down to {PLAY_MM:g} mm "
+               f"above the wheel" for role, c in zip(("driver", "driven wheel"), capped)]
+    return (keepers[0][0].upper() + keepers[0][1:] + "; " + keepers[1] + ": each wheel turns freely and stays on when "
+            "the model is lifted.")
+
+
 def _with_holes(profile: Profile, holes) -> Profile:
     return Profile(profile.outer, list(profile.holes) + list(holes), profile.name)
 
@@ -200,7 +217,9 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     bed = (printer.bed_x_mm, printer.bed_y_mm, printer.bed_z_mm)
     full = None
     at_1_first = False
-    if p.law_search and p.module_mm > 0:
+    # a bore the part file does not give is sized from the full-size gear: its design is then made first
+    sized = p.driver_bore_mm is None or p.driven_bore_mm is None
+    if p.law_search and p.module_mm > 0 and not sized:
         # the searched law at full size is also the one at 1:1: the scale from the pitch curves, and at
         # 1:1 the printed pair searched and cut once (a print module has no catalogue shaper)
         m, L_est, extents = _pitch_extents(p, source)
@@ -220,9 +239,10 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
         choice = choose_scale(extents, bed, scale, margin=printer.margin_mm)
     def rig_at(S):
         """The pins and the base bar's length at reduction S."""
-        pin = [_pin(b / S) for b in (p.driver_bore_mm, p.driven_bore_mm)]
+        given = p if full is None else full.p  # the full-size bores (a sized one's diameter where not given)
+        pin = [_pin(b / S) for b in (given.driver_bore_mm, given.driven_bore_mm)]
         if full is not None:  # the driver's pin sized for the handle beside it (the root radius scales as 1/S)
-            rig = rig_sizes(full.d.driver.root_min_radius / S, m / S, p.driver_bore_mm / S, printer)
+            rig = rig_sizes(full.d.driver.root_min_radius / S, m / S, given.driver_bore_mm / S, printer)
             if rig is not None:
                 pin[0] = rig[0]
         return pin, L_est / S + 2 * (max(pin) / 2 + BOSS_WALL_MM)
@@ -307,9 +327,9 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
                                          "washer"), WASHER_T_MM)
         cap = extrude_profile(Profile(circle_loop(cap_od[k] / 2), [circle_loop(cap_id[k] / 2, ccw=False)], "cap"),
                               CAP_H_MM)
-        rings += [Piece(f"washer_{role}", washer, genus=1, what=f"washer under the {role}, {WASHER_T_MM:g} mm",
+        rings += [Piece(f"washer_{role}", washer, genus=1, what=f"washer under the {_WHEEL[role]}, {WASHER_T_MM:g} mm",
                         chamfer_mm=0.0),
-                  Piece(f"cap_{role}", cap, genus=1, what=f"cap pressed on the {role}'s pin", chamfer_mm=0.0)][:2 if capped[k] else 1]
+                  Piece(f"cap_{role}", cap, genus=1, what=f"cap pressed on the {_WHEEL[role]}'s pin", chamfer_mm=0.0)][:2 if capped[k] else 1]
     pieces = [Piece("driver", driver, genus=2, what=f"driver, {d.z} teeth, m = {d.m:.4g} mm"),
               Piece("driven", driven, genus=1 + n, what=f"driven wheel, {d.z_H} teeth, {n} index marks"),
               Piece("base", base, genus=2, what=f"base bar, axles {L:.3f} mm apart"),
@@ -320,9 +340,9 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     hardware = [dowel(pin[0], pin_len, 1, "pin_driver", "the driver's axle"),
                 dowel(pin[1], pin_len, 1, "pin_driven", "the driven wheel's axle")]
     hardware += [Hardware(f"DIN 125 / ISO 7089 washer for M{d_:g} — runs under the "
-                          f"{role} on its pin", 1, f"washer_{role}") for d_, role in zip(pin, ("driver", "driven"))
+                          f"{_WHEEL[role]} on its pin", 1, f"washer_{role}") for d_, role in zip(pin, ("driver", "driven"))
                  if d_ == int(d_)]
-    hardware += [Hardware(f"push-on retaining washer (starlock) for a ⌀{d_:g} mm steel pin — keeps the {role} on "
+    hardware += [Hardware(f"push-on retaining washer (starlock) for a ⌀{d_:g} mm steel pin — keeps the {_WHEEL[role]} on "
                           f"(no room for a printed cap beside the {'handle' if role == 'driver' else 'marks'})", 1, "")
                  for d_, role, c in zip(pin, ("driver", "driven"), capped) if not c]
     if handle_printed:
@@ -362,9 +382,9 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
             Fit("pin_driver_in_base", "pin_driver", "base", (L, 0.0), "press", "pressed into the base")]
     for k, role in enumerate(("driver", "driven")):
         fits += [Fit(f"washer_{role}_on_pin", f"pin_{role}", f"washer_{role}", (0.0, 0.0), "running",
-                     f"the washer under the {role}"),
+                     f"the washer under the {_WHEEL[role]}"),
                  Fit(f"cap_{role}_on_pin", f"pin_{role}", f"cap_{role}", (0.0, 0.0), "press",
-                     f"the cap keeps the {role} on its pin")][:2 if capped[k] else 1]
+                     f"the cap keeps the {_WHEEL[role]} on its pin")][:2 if capped[k] else 1]
     if handle_printed:
         fits.append(Fit("handle_in_driver", "handle", "driver", (r_h, 0.0), "press", "pressed into the driver"))
     return Kit(
@@ -387,9 +407,7 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
                "Press the handle into the small hole of the driver.",
                "Put the driven wheel on its pin with its mark 1 (the index hole on the line of centres, away from "
                "the driver) and the driver on its pin with the handle towards the driven wheel; the teeth mesh.",
-               f"Press a cap (or a push-on washer, see the hardware) onto each pin until it is flush with the pin's "
-               f"top: it stands {PLAY_MM:g} mm above the wheel, which turns freely and stays on when the model is "
-               f"lifted.",
+               _keep_on_step(capped),
                f"Turn the handle: each driver turn the next of the driven wheel's {n} marks reaches the line of centres; "
                f"{n} turns bring the driven wheel once round, its speed varying as the law asks."],
         expected_failures=_documented_jam(source, prefix),

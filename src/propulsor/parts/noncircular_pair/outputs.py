@@ -24,7 +24,8 @@ from ..pipeline import Pipeline, design_of
 from ..media import pipeline_steps
 from .animation import pair_animation
 from .as_built_outputs import as_built_values
-from .design import Design, PairDesign, mounting, pair_design, sector_design_table
+from .bores import sized_derived, sized_note, with_bores
+from .design import Design, PairDesign, bores, mounting, pair_design, sector_design_table
 from .params import NoncircularPairParams
 from .proofs import checks_generated, checks_sectors, proofs
 
@@ -392,7 +393,13 @@ def plots(dd: PairDesign, w, built: dict) -> None:
 
 
 def checks_and_derived(dd: PairDesign, w, built: dict) -> None:
-    """Closure, generability, teeth and proof checks; every derived value of the report."""
+    """Closure, generability, teeth and proof checks; every derived value of the report (the bores sized from
+    the gear last, where the part file gives none)."""
+    _checks_and_derived(dd, w, built)
+    w.derived.update(sized_derived(dd.bores))
+
+
+def _checks_and_derived(dd: PairDesign, w, built: dict) -> None:
     p, d = dd.p, dd.d
     pr = built["proof"]
     other, pr_other, _ = built["other"]
@@ -452,6 +459,8 @@ def checks_and_derived(dd: PairDesign, w, built: dict) -> None:
 def notes(dd: PairDesign, w, built: dict) -> None:
     other, pr_other, other_note = built["other"]
     write_notes(w, dd.d, built["proof"], other, pr_other, other_note, dd.p, dd.mount)
+    if sized_note(dd.bores):
+        w.add_note(sized_note(dd.bores))
 
 
 #: the output steps after the proofs, in the order the report and the manifest list what they add
@@ -464,7 +473,9 @@ def write_outputs(p: NoncircularPairParams, w, d: Design, profiles, pr, other=No
                   other_note: str = "", solids=None) -> None:
     """Solids (STEP/STL/3MF with the shared checks), assembly, DXF, tables, plots, checks, report values
     of a pair already designed and proved."""
-    dd = PairDesign(p, d, tuple(profiles), mounting(p, d))
+    chosen = bores(p, d)
+    p = with_bores(p, chosen)
+    dd = PairDesign(p, d, tuple(profiles), mounting(p, d), chosen)
     built = {"solids": solids if solids is not None else start_solids(p, w, profiles), "proof": pr,
              "other": (other, pr_other, other_note)}
     for step in OUTPUT_STEPS:

@@ -36,12 +36,17 @@ LOAD_KEYS = ("load_driver_torque_Nm", "load_power_W", "load_driver_speed_rpm", "
 _WHY_MECHANISM = "a walking drive of 5 m hub height is larger than any built"
 #: the upper limit of a pair's own lengths (centre distances, bores), law-neutral
 _WHY_PAIR = "a gear pair 10 m across (bores of 5 m) is larger than any built"
+#: what a bore the part file does not give is (parts/noncircular_pair/bores.py)
+_SIZED_RULE = ("the largest standard shaft (ISO 775) of d <= the least root radius (a body 2 d across) whose bore "
+               "and keyway stay one module inside the root")
+_SIZED = f"sized from the gear: {_SIZED_RULE}; the report says which and why"
 
 
 @dataclass(frozen=True)
 class NoncircularPairParams(PartParams):
     """Parameters of the walking-drive pair.  Defaults: seed 002 as ``parts/ncg_seed002.toml`` builds it
-    (a = 100, b = 50, c = 236.5 mm, n = 4, m = 2.5, z 20/80, the law searched for the least ripple)."""
+    (a = 100, b = 50, c = 236.5 mm, n = 4, m = 2.5, z 20/80, the law searched for the least ripple); the bores, which
+    the seed's file gives (16 / 40 mm), sized from the gear when not given."""
 
     #: `propulsor params` and the reference list the law and its own keys first, the walking law's a, b, c after
     #: the others' (a class attribute, not a field)
@@ -92,11 +97,13 @@ class NoncircularPairParams(PartParams):
                                 "(GOST 9323 / DIN 1825: 25, 38, 50, 75, 100; its own z0 and x0); 0: a shaper of "
                                 "shaper_teeth with x0 = -x of the gear it cuts", min=0.0, max=100.0,
                                 why="the largest nominal diameter of the catalogue (gears/data/cutters.toml)")
-    law_search: bool = param(True, "", "search the blend shape (half-width and hand-over value) and the catalogue "
-                             "shaper for the least hub speed ripple under generability (gears/law_search.py); "
-                             "smoothing_deg, smoothing_max_deg, shaper_d0_mm and shaper_teeth are then not used")
-    center_distance_band_mm: float = param(5.0, "mm", "law search: largest |L - L_exact| (L_exact: closure of the "
-                                           "exact law at module_mm, driven_teeth)", min=0.0, min_exclusive=True,
+    law_search: bool = param(True, "", "search the cutters: where a pitch curve is concave, the catalogue shapers at "
+                             "the module, largest first, until both gears can be cut (shaper_d0_mm and shaper_teeth "
+                             "are then not used); walking law: with the blend shape (half-width and hand-over value) "
+                             "for the least ripple of the driven (hub) speed under generability (gears/law_search.py; "
+                             "smoothing_deg and smoothing_max_deg then not used either)")
+    center_distance_band_mm: float = param(5.0, "mm", "walking law's search: largest |L - L_exact| (L_exact: "
+                                           "closure of the exact law at module_mm, driven_teeth)", min=0.0, min_exclusive=True,
                                            max=100.0, why="a band of 100 mm is no longer the seed's drive")
     blend_hand_over: float = param(0.0, "", "U_s at hand-over over u: the blend's second shape parameter (closure "
                                    "by scaling U outside the windows); 0: the window-integral blend", min=0.0, max=2.0,
@@ -120,9 +127,12 @@ class NoncircularPairParams(PartParams):
                                         "0: the design L", min=0.0, max=10000.0, why=_WHY_PAIR)
     face_width_mm: float = param(20.0, "mm", "face width of both gears", min=0.0, min_exclusive=True, max=1000.0,
                                   why="20 modules at m = 50: wider faces carry no more (ISO 6336 K_Hβ)")
-    driver_bore_mm: float = param(16.0, "mm", "driver bore diameter (0: none)", min=0.0, max=5000.0, why=_WHY_PAIR)
-    driven_bore_mm: float = param(40.0, "mm", "driven-wheel bore diameter (0: none)", min=0.0, max=5000.0, why=_WHY_PAIR)
-    keyway: bool = param(True, "", "hub keyway in each bore (DIN 6885-1 / GOST 23360-78)")
+    driver_bore_mm: float = param(None, "mm", "driver bore diameter (0: none); not given: " + _SIZED, min=0.0,
+                                  max=5000.0, why=_WHY_PAIR)
+    driven_bore_mm: float = param(None, "mm", "driven-wheel bore diameter (0: none); not given: " + _SIZED, min=0.0,
+                                  max=5000.0, why=_WHY_PAIR)
+    keyway: bool = param(True, "", "keyway in each bore (DIN 6885-1 / GOST 23360-78); a sized bore takes one, or none "
+                         "when no keyed bore fits")
     proof_phases_per_tooth: int = param(4, "", "phases per driven tooth in the full-cycle proof", min=4, max=64,
                                         integer=True, why="64 phases a tooth resolve contact to 1/64 of a pitch")
     as_built_ripple_margin: float = param(policy.AS_BUILT_RIPPLE_MARGIN, "", "as built: the hub speed ripple the finished outlines deliver "
@@ -147,7 +157,8 @@ class NoncircularPairParams(PartParams):
                                    max=200, integer=True, why="about 16 CPU s a case for a pair of 80 teeth")
     tolerance_seed: int = param(1, "", "as made: the seed of the Monte Carlo cases (the same seed, the same cases)",
                                 min=0, max=2**31 - 1, integer=True, why="a 31-bit seed")
-    compare_methods: bool = param(True, "", "prove the other tooth method too (2D, one leg) and report the comparison")
+    compare_methods: bool = param(True, "", "walking law: prove the other tooth method too (2D, one leg) and report "
+                                  "the comparison (the sector method is the walking law's)")
     # --- the load per tooth (parts/noncircular_pair/tooth_load_outputs.py): off unless a load is given ---------
     load_driver_torque_Nm: float = param(0.0, "N·m", "load per tooth: the driver's torque T1 (constant; the driven "
                                          "torque follows T2 = T1·U·eta); 0: no torque load", min=0.0, max=1e6,
@@ -245,6 +256,9 @@ class NoncircularPairParams(PartParams):
     def meaning(self, name: str) -> str:
         if name == "driver_turns":
             return self._DRIVER_TURNS_MEANING[self.law]
+        if name in ("driver_bore_mm", "driven_bore_mm") and getattr(self, name) is None:
+            return (f"not given: sized from the gear, {_SIZED_RULE}; the derived {name} is the bore as built, a note "
+                    "says why")
         return super().meaning(name)
 
     def _validate_load(self) -> None:
@@ -317,5 +331,5 @@ class NoncircularPairParams(PartParams):
                 raise InputError("smoothing_deg", self.smoothing_deg, f"must be <= smoothing_max_deg = {self.smoothing_max_deg}")
         for name in ("driver_bore_mm", "driven_bore_mm"):
             d = getattr(self, name)
-            if self.keyway and d > 0 and not 6.0 < d <= 230.0:
+            if self.keyway and d is not None and d > 0 and not 6.0 < d <= 230.0:
                 raise InputError(name, d, "a keyway needs a bore over 6 up to 230 mm (DIN 6885-1); set keyway = false")

@@ -102,7 +102,9 @@ def checks_common(pr, prefix: str = "mesh") -> list[Check]:
                       f"{s['jams']} of {s['steps']} phases have no free position of the driven wheel "
                       f"(least overlap up to {float(np.max(pr.least_overlap)):.4g} mm^2)"),
         Check.greater_than(f"{prefix}.backlash_min", s["backlash_min_mm"], 0.0, "mm",
-                           f"backlash {s['backlash_min_mm']:.5f} .. {s['backlash_max_mm']:.5f} mm on the driven pitch curve"),
+                           f"backlash {s['backlash_min_mm']:.5f} .. {s['backlash_max_mm']:.5f} mm on the driven pitch curve "
+                           f"at the proof's {s['steps']} phases (the least as built, between them too: the derived "
+                           f"backlash_min_mm)"),
         Check.at_least(f"{prefix}.contact_continuity", s["contact_pairs_min"], 1, "pairs",
                        f"least tooth pairs in contact {s['contact_pairs_min']}, mean {s['contact_pairs_mean']:.4f}"),
     ]
