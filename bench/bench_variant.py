@@ -6,7 +6,7 @@ Default: the seed-002 pair (parts/ncg_seed002.toml, walking law, generated teeth
 (parts/ncg_fourier_seed002.toml).  A variant is what a study's worker computes for one row at ``depth = "proof"``
 (:func:`propulsor.study.evaluate.evaluate`): the design (law search, teeth), the whole-cycle proof, the as-built
 contact in both directions, the per-tooth load and every derived value and check of the report, no solid and no
-file, on one core (``PROPULSOR_JOBS=1``, as the study's workers run).  The study reads ``speed_ripple`` and
+file, on one core (``PROPULSOR_JOBS=1``, as the study's workers run).  The study reads ``speed_as_built_min`` and
 ``center_distance_mm`` (so the other tooth method's comparison is skipped: ``evaluate.ONLY_WHEN_READ``).
 
 Each part: one warm-up variant (imports, numba's compiled kernels loaded from their cache), then ``--repeat``
@@ -14,10 +14,13 @@ variants with the face width changed (a new design each: nothing is reused betwe
 process's CPU clock (``time.process_time``).  The target: <= 1.0 CPU s a variant.  ``--profile``: cProfile of the
 last variant, the 25 functions of most own time.
 
-Measured (2 cores, shared with two other jobs; CPU s a variant, the least of three):
-- before (86d800c): seed-002 pair 28.3 (with the comparison), Fourier form 25.6;
-- after the compiled contact search, the states computed once and the comparison only when read (2023885):
-  seed-002 pair 13.7, Fourier form 13.3.
+Measured (2 cores, the other one running a mutation test; CPU s a variant, three each, old and new one after the
+other): before (86d800c) the seed-002 pair 27.14 / 27.23 / 34.75 (the comparison with the sector method included),
+its Fourier form 27.79 / 25.06 / 26.73; after the compiled contact search, the states computed once and the
+comparison only when read (a5eae93) 13.58 / 13.00 / 13.18 and 18.31 / 18.25 / 18.97.  Of what remains (the Fourier
+form, cProfile): the design 8 s (the teeth's envelope points through scalar law calls and bounded minimisations 4 s,
+B-spline fitting of 600 pieces 4 s), the as-built contact 2 x 10 935 measurements at 0.18-0.23 ms, the per-tooth
+load 3 s, the whole-cycle proof 2 s.
 """
 
 from __future__ import annotations
@@ -33,7 +36,7 @@ os.environ["PROPULSOR_JOBS"] = "1"  # one core, as a study's worker runs a varia
 
 ROOT = Path(__file__).resolve().parents[1]
 TARGET_CPU_S = 1.0
-WANTED = ("speed_ripple", "center_distance_mm")
+WANTED = ("speed_as_built_min", "center_distance_mm")
 
 
 def variants(part: Path, repeat: int, profile: bool) -> list[float]:
