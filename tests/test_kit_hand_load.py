@@ -195,7 +195,11 @@ def test_a_weaker_material_flips_its_own_verdict_only(built, monkeypatch):
     kit, q, kd, hand = built
     v = kit.derived
     _weaker(monkeypatch, {"PLA": (20.0, 1.0)})
-    weak = hand_load(q, kd, v["hand_load_crank_radius_mm"], names=["PLA", "PETG"], contacts=hand.contacts)
+    told = []
+    weak = hand_load(q, kd, v["hand_load_crank_radius_mm"], names=["PLA", "PETG"], contacts=hand.contacts,
+                     count=lambda done, total: told.append((done, total)))
+    # the progress line counts the ratings: each material in each direction, the first said before any work
+    assert told == [(0, 4), (1, 4), (2, 4), (3, 4), (4, 4)]
     pla, petg = weak.ratings
     assert pla.S_F == pytest.approx(v["hand_load_PLA_S_F_min"] / 20.0, rel=1e-9)
     assert petg.S_F == pytest.approx(v["hand_load_PETG_S_F_min"], rel=1e-9)

@@ -367,7 +367,7 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     prefix = "mesh" if d.method == "generated" else "sectors"
     printed_tol = _as_printed(p, kd, printer, progress)
     say("kit: the hand on the crank")
-    hand, hand_text = _hand_on_crank(q, kd, proof, r_h)
+    hand, hand_text = _hand_on_crank(q, kd, proof, r_h, progress)
     checks = [Check.at_most(f"{prefix}.overlap_area", s["overlap_law_max_mm2"], 1e-6, "mm^2",
                             f"printed outlines over {s['steps']} phases of the whole cycle")]
     checks += checks_common(proof, prefix)
@@ -421,7 +421,7 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
         + ([hand.note()] if hand is not None else hand_text))
 
 
-def _hand_on_crank(q: NoncircularPairParams, kd, proof, r_h: float):
+def _hand_on_crank(q: NoncircularPairParams, kd, proof, r_h: float, progress=None):
     """(HandLoad or None, the guide's paragraphs): the torque a hand puts on the crank, rated on the printed pair
     for every printed material (:mod:`.kit_load`); not rated for the papers' sector teeth (no tooth record) nor a
     pair the proof finds jammed (no running position to load)."""
@@ -432,7 +432,9 @@ def _hand_on_crank(q: NoncircularPairParams, kd, proof, r_h: float):
                       "per tooth (the generated teeth have)."]
     if proof.jams or not np.all(np.isfinite(proof.phi_drive)):
         return None, ["The hand on the crank is not rated: the printed pair jams (no running position to load)."]
-    hand = hand_load(q, kd, r_h)
+    from ...progress import count_to
+
+    hand = hand_load(q, kd, r_h, count=count_to(progress, "kit: the hand on the crank", "rating"))
     return hand, hand.guide_lines()
 
 

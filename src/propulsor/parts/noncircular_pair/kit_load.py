@@ -260,13 +260,15 @@ def _worst(per_direction, key: str):
     return best
 
 
-def hand_load(q, kd, r_h_mm: float, force_N: float | None = None, names=None, contacts=None) -> HandLoad | None:
+def hand_load(q, kd, r_h_mm: float, force_N: float | None = None, names=None, contacts=None,
+              count=None) -> HandLoad | None:
     """The hand on the crank of the kit whose printed pair is ``kd`` (the kit's own design: ``kd.d`` mounted at
     ``kd.mount``) made from the kit's parameters ``q``, its handle at ``r_h_mm``, pushed with ``force_N``
     (``policy.KIT_HAND_FORCE_N`` by default); each material of ``names`` (the printed ones of the catalogue by
     default) rated in both directions; ``contacts``: the pair's resolved contact laws [(direction, ContactLaw)] of
     both directions where known (``HandLoad.contacts`` of an earlier rating of the same pair).  None for teeth
-    without a tooth record (the papers' sector teeth: the load per tooth needs generated teeth)."""
+    without a tooth record (the papers' sector teeth: the load per tooth needs generated teeth).  ``count(done,
+    total)``: told the ratings done (a material in one direction each; progress only)."""
     from ...checks.motion.contact_events import DRIVE, REVERSE
     from .as_built import contact_direction, period_span
     from .tooth_load_outputs import analyse, summary
@@ -282,6 +284,9 @@ def hand_load(q, kd, r_h_mm: float, force_N: float | None = None, names=None, co
     if contacts is None:
         contacts = tuple((dr, contact_direction(d, kd.mount, dr, step)) for dr in (DRIVE, REVERSE))
     ratings, load_case = [], ""
+    total = len(contacts) * len(names)
+    if count is not None:
+        count(0, total)
     for name in names:
         ql = dataclasses.replace(q, load_driver_torque_Nm=T1, load_power_W=0.0, load_vehicle_mass_kg=0.0,
                                  load_life_hours=0.0, load_K_A=1.0, load_K_v=1.0, load_K_beta=1.0, gear_material=name)
@@ -294,6 +299,8 @@ def hand_load(q, kd, r_h_mm: float, force_N: float | None = None, names=None, co
             runs.append((dr, tl))
             vals.append((dr, summary(tl, ql)))
             load_case = tl.load_case
+            if count is not None:
+                count(len(contacts) * len(ratings) + len(runs), total)
         S_F, sF, root = _worst(vals, "S_F")
         S_H, sH, flank = _worst(vals, "S_H")
         unrated = tuple(sorted({f"{g} {j}" for _, tl in runs for g in ("driver", "driven")
