@@ -347,3 +347,27 @@ def test_travel_animation_at_the_sweeps_poses(out, manifest, assert_animations):
 
 def test_every_derived_value_has_a_unit_and_a_meaning(out, assert_explained):
     assert_explained(out)
+
+
+def test_the_travel_sweep_counts_its_bodies_to_the_build_that_started_it(monkeypatch):
+    """The travel sweep runs in a worker beside the solids' checks; the build's progress line counts the bodies the
+    balancer with its wheel has been swept against (the hull, the front and the rear neighbour), the first count
+    before any work (issue 39: no silent phase).  Coarse meshes and steps: the count, not the gaps, is tested."""
+    import dataclasses
+
+    from propulsor.parallel import result, start
+    from propulsor.params import load_params, read_part_file
+    from propulsor.parts.balancer import BalancerParams, balancer_solid, resolve, sweep_mesh, travel_sweep
+    from propulsor.parts.road_wheel import wheel_solids
+
+    monkeypatch.setenv("PROPULSOR_JOBS", "1")  # inline: the counts arrive in order
+    p = dataclasses.replace(load_params(BalancerParams, read_part_file(PART)[1]), sweep_steps_per_deg=1.0,
+                            sweep_chord_mm=1.0)
+    m = resolve(p, PART)
+    ws = wheel_solids(m.wheel)
+    m.extras["wheel_names"] = list(ws)
+    told = []
+    res = result(start(travel_sweep, m, sweep_mesh(balancer_solid(m), 1.0), [sweep_mesh(s, 1.0) for s in ws.values()],
+                       counter=lambda done, total: told.append((done, total))))
+    assert list(res["pairs"]) == ["hull", "front", "rear"]
+    assert told == [(0, 3), (1, 3), (2, 3), (3, 3)]

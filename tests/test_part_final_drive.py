@@ -447,3 +447,20 @@ def test_fatigue_life_is_where_the_safety_meets_its_minimum():
     fatigue(design(p), w, {})
     assert {c.name for c in w.checks if not c.passed} == {"strength_sun_planet.S_H_pitting_sun",
                                                           "strength_sun_planet.S_F_fatigue_planet"}
+
+
+def test_the_interference_sweep_counts_its_meshes_to_the_build_that_started_it(monkeypatch):
+    """The mesh sweep runs in a worker beside the solids; the build's progress line counts the meshes it has swept
+    (each planet's sun and ring mesh), the first count before any work (issue 39: no silent phase)."""
+    from propulsor.parallel import result, start
+
+    monkeypatch.setenv("PROPULSOR_JOBS", "1")  # inline: the counts arrive in order, as the worker sends them
+    _, mp = read_part_file(THESIS)
+    p = dataclasses.replace(load_params(FinalDriveParams, mp), n_planets=2)
+    ps = planetary_set(p)
+    told = []
+    sweeps = result(start(carrier_sweep, p, ps, gear_outlines(p, ps), 0.02,
+                          counter=lambda done, total: told.append((done, total))))
+    assert [s.name for s in sweeps] == ["mesh_sun_planet1", "mesh_planet1_ring", "mesh_sun_planet2",
+                                        "mesh_planet2_ring"]
+    assert told == [(0, 4), (1, 4), (2, 4), (3, 4), (4, 4)]

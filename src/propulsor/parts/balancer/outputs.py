@@ -147,7 +147,10 @@ def solids_and_sweep_start(m: BalancerModel, w, built: dict) -> None:
         w.add_known_mesh(s_, V, F)
     w.progress(f"travel sweep β0 … β_m ({int(math.ceil(math.degrees(t.beta_m - t.beta0) * p.sweep_steps_per_deg)) + 1} "
                "steps × hull + 2 neighbours), in a second process while the solids are checked")
-    built["pending_sweep"] = start_in_fork(sweep_job, m, bal_mesh, wheel_meshes)
+    from ...progress import count_to
+
+    built["pending_sweep"] = start_in_fork(sweep_job, m, bal_mesh, wheel_meshes,
+                                           counter=count_to(w.progress, "travel sweep", "body"))
     w.add_solid("balancer", bal, expected_genus=3)
     mass, com = mass_properties(bal, RHO_STEEL_KG_MM3)
     wm_tot, wm_com = 0.0, np.zeros(3)

@@ -114,6 +114,7 @@ def travel_sweep(m: BalancerModel, bal_mesh, wheel_meshes) -> dict:
     selected steps with a growing window, so that its least gap is still exact."""
     from ...checks.motion import sweep_solids_3d
     from ...checks.proximity import nearest_points
+    from ...parallel import tick
     from ...solids.kernel import manifold
 
     p, tor = m.p, m.tor
@@ -141,6 +142,7 @@ def travel_sweep(m: BalancerModel, bal_mesh, wheel_meshes) -> dict:
     targets = {"hull": None, "front": m.pitch, "rear": -m.pitch}
     res["timing_s"]["setup"] = clock() - t0
     Ta = np.array([_rz(b - math.pi / 2) for b in betas])
+    tick(0, len(targets))  # the bodies swept against, to the build that started this (parallel.start's counter)
     for name, off in targets.items():
         t0 = clock()
         nb, cdist = np.full(n, np.nan), np.full(n, np.nan)
@@ -181,6 +183,7 @@ def travel_sweep(m: BalancerModel, bal_mesh, wheel_meshes) -> dict:
         dd["what"] = _which(m, pa, betas[k], bal_mesh, wheel_meshes)
         res["pairs"][name] = dd
         res["timing_s"][f"{name}_where"] = clock() - t0
+        tick(len(res["pairs"]), len(targets))
     dist, pa, pb = nearest_points(mb, wheel_all, own_gap + 2.0)
     res["own_where"] = (pa, pb, dist)
     return res

@@ -64,6 +64,7 @@ def carrier_sweep(p: FinalDriveParams, ps, outlines, steps_per_deg: float | None
     :mod:`propulsor.gears.planetary_kinematics`).  manifold3d boolean per step.
     """
     from ...checks.motion import outline, sweep_pair_windowed
+    from ...parallel import tick
 
     spd = steps_per_deg or p.sweep_steps_per_deg
     n = int(math.ceil(360.0 * spd))
@@ -77,6 +78,7 @@ def carrier_sweep(p: FinalDriveParams, ps, outlines, steps_per_deg: float | None
 
     M_sun, M_ring, M_planets = member_poses(p, ps, psi)
     out = []
+    tick(0, 2 * p.n_planets)  # the meshes swept, to the build that started this (parallel.start's counter)
     for k in range(p.n_planets):
         M_pl = M_planets[k]
         for tag, A, MA in (("sun", A_sun, M_sun), ("ring", A_ring, M_ring)):
@@ -84,6 +86,7 @@ def carrier_sweep(p: FinalDriveParams, ps, outlines, steps_per_deg: float | None
             r = sweep_pair_windowed(A, MA, A_pl, M_pl, reach=p.module_mm, chord_tol=tol, max_segment=seg,
                                     name=name, clearance_limit=0.0)
             out.append(MeshSweep(name, psi, r.overlap_area, r.clearance, r))
+            tick(len(out), 2 * p.n_planets)
     return out
 
 
@@ -156,7 +159,10 @@ def start_sweep(dd: FinalDriveDesign, w, built: dict) -> None:
     p = dd.p
     w.progress(f"interference sweep over one carrier turn ({int(math.ceil(360 * p.sweep_steps_per_deg))} steps), "
                f"in a second process while the solids are built")
-    built["pending_sweep"] = start_in_fork(carrier_sweep, p, dd.ps, dd.outlines)
+    from ...progress import count_to
+
+    built["pending_sweep"] = start_in_fork(carrier_sweep, p, dd.ps, dd.outlines,
+                                           counter=count_to(w.progress, "interference sweep", "mesh"))
 
 
 def sweep_results(dd: FinalDriveDesign, w, built: dict) -> None:
