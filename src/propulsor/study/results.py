@@ -104,6 +104,11 @@ def plot_front(folder: Path, study: Study, rows: list[dict], rank: list[tuple[in
     extra = f"; front over {', '.join(objs)}" if len(objs) > 2 else ""
     ax.set_title(tex(f"{study.title}: {len(rank)} of {len(rows)} variants meet the requirements{extra}"), fontsize=9)
     ax.grid(True, alpha=0.3)
+    from matplotlib.ticker import ScalarFormatter
+
+    for axis in (ax.xaxis, ax.yaxis):  # the values themselves on the ticks, never "1e-6 + 1.7026e-1"
+        if isinstance(axis.get_major_formatter(), ScalarFormatter):
+            axis.get_major_formatter().set_useOffset(False)
     if front or others or refused:
         ax.legend(fontsize=8)
     fig.tight_layout()
