@@ -100,7 +100,7 @@ def test_each_refusal_of_a_pitch_curve(change, want):
 @pytest.mark.parametrize("k", [0, 13, 1.5])
 def test_lobes_of_a_pitch_curve(k):
     a, r = _ellipse_rows()
-    assert _err(PitchCurveLaw, a, r, k) == ("driver_turns", k, "lobes of the driven wheel must be a whole number "
+    assert _err(PitchCurveLaw, a, r, k) == ("driver_turns", k, "driver turns per driven turn must be a whole number "
                                                                "1 .. 12")
 
 

@@ -94,7 +94,7 @@ class PitchCurveLaw(TableLaw):
         spl, a0, rows = _curve(angle_deg, radius_mm, key)
         kf = float(k)
         if kf != round(kf) or not 1 <= kf <= 12:
-            raise InputError("driver_turns", k, "lobes of the driven wheel must be a whole number 1 .. 12")
+            raise InputError("driver_turns", k, "driver turns per driven turn must be a whole number 1 .. 12")
         k = int(round(kf))
         # Gauss-Legendre on SAMPLES segments of the driver turn: theta = -a (a from the first row)
         edges = np.linspace(0.0, 2 * math.pi, SAMPLES + 1)

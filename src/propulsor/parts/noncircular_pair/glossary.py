@@ -152,7 +152,7 @@ GLOSSARY = {
        for k, (unit, meaning) in _PAIR.items()},
     # laws without a hub (elliptical, fourier, table)
     "law": ("", "the drive law the part file names (walking, elliptical, fourier, table, pitch_curve)"),
-    "law_periods": ("", "periods of the law per driven turn: lobes of the driven wheel"),
+    "law_periods": ("", "periods of the law per driven turn as the law declares them (the driven wheel's lobes, counted on its curve in the law line, may be more: a driver pitch curve's own symmetry multiplies them)"),
     "ratio_min": ("", "least gear ratio U = dθ/dφ of the law"),
     "ratio_max": ("", "largest gear ratio U = dθ/dφ of the law"),
     "eccentricity": ("", "eccentricity e of the elliptical driver"),

@@ -331,7 +331,7 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
                         chamfer_mm=0.0),
                   Piece(f"cap_{role}", cap, genus=1, what=f"cap pressed on the {_WHEEL[role]}'s pin", chamfer_mm=0.0)][:2 if capped[k] else 1]
     pieces = [Piece("driver", driver, genus=2, what=f"driver, {d.z} teeth, m = {d.m:.4g} mm"),
-              Piece("driven", driven, genus=1 + n, what=f"driven wheel, {d.z_H} teeth, {n} index marks"),
+              Piece("driven", driven, genus=1 + n, what=f"driven wheel, {d.z_H} teeth, {n} index mark{'s' if n != 1 else ''}"),
               Piece("base", base, genus=2, what=f"base bar, axles {L:.3f} mm apart"),
               Piece("pin_driver", pins[0], genus=0, what=f"driver axle pin ⌀{pin[0]:g}", chamfer_mm=0.0),
               Piece("pin_driven", pins[1], genus=0, what=f"driven axle pin ⌀{pin[1]:g}", chamfer_mm=0.0),
@@ -408,8 +408,10 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
                "Put the driven wheel on its pin with its mark 1 (the index hole on the line of centres, away from "
                "the driver) and the driver on its pin with the handle towards the driven wheel; the teeth mesh.",
                _keep_on_step(capped),
-               f"Turn the handle: each driver turn the next of the driven wheel's {n} marks reaches the line of centres; "
-               f"{n} turns bring the driven wheel once round, its speed varying as the law asks."],
+               (f"Turn the handle: each driver turn the next of the driven wheel's {n} marks reaches the line of centres; "
+                f"{n} turns bring the driven wheel once round, its speed varying as the law asks." if n != 1 else
+                "Turn the handle: one driver turn brings the driven wheel once round (its mark back on the line of "
+                "centres), its speed varying as the law asks.")],
         expected_failures=_documented_jam(source, prefix),
         guide_notes=printed_tol[1],
         material_notes=hand_text, material_table=hand.guide_table() if hand is not None else None,

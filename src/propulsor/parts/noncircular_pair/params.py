@@ -59,7 +59,7 @@ class NoncircularPairParams(PartParams):
     c_mm: float = param(236.5, "mm", "shoe stand length c", min=0.0, max=5000.0, why=_WHY_MECHANISM)
     law: str = param("walking", "", "drive law: walking (a_mm, b_mm, c_mm, driver_turns), elliptical "
                      "(eccentricity, driver_turns lobes of the driven wheel), fourier (fourier_cos, fourier_sin, "
-                     "driver_turns), table (law_file), pitch_curve (pitch_curve_file, driver_turns lobes of the driven wheel)",
+                     "driver_turns), table (law_file), pitch_curve (pitch_curve_file, driver_turns driver turns per driven turn)",
                      choices=LAWS)
     driver_turns: int = param(4, "", "n: driver turns per driven (carrier) turn; walking: 1, 2 or 4; elliptical and "
                               "fourier: the driven wheel's lobes k (driver turns per driven turn); table: from the "
@@ -236,7 +236,7 @@ class NoncircularPairParams(PartParams):
         "elliptical": "k: lobes of the driven wheel (driver turns per driven turn)",
         "fourier": "k: driver turns per driven turn (the law's theta / k)",
         "table": "driver turns per driven turn: from the table",
-        "pitch_curve": "k: lobes of the driven wheel (driver turns per driven turn)",
+        "pitch_curve": "k: driver turns per driven turn (the driven wheel's lobes: k times the driver curve's own)",
     }
 
     @property
