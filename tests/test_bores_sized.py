@@ -73,12 +73,33 @@ def test_a_bore_written_is_kept_and_one_too_large_is_refused_naming_key_value_li
     dd = propulsor.part(small, driven_bore_mm=12.0).design
     assert dd.p.driven_bore_mm == 12.0 and not dd.bores[1].sized and dd.bores[0].sized
     assert _hole_radii(dd.profiles[1])[0] == pytest.approx(6.0, abs=1e-6)
+    r_f, m = dd.d.driven.root_min_radius, dd.d.m
+    # a bore over the pitch curve's bound: refused before any tooth is cut (the dry run refuses what the build does)
+    from propulsor.parts.noncircular_pair.bores import root_bound
+    from propulsor.parts.noncircular_pair.feasibility import screened
+
+    scr = screened(dd.p, small)
+    bound = root_bound(scr.smooth.pc, "driven", m)
+    assert r_f < bound < r_f + 2.0 * m  # an upper bound of the cut root, and a close one
     with pytest.raises(InputError) as exc:
-        propulsor.part(small, driven_bore_mm=40.0).design
+        propulsor.part(small, driven_bore_mm=40.0)
     e = exc.value
-    r_f = dd.d.driven.root_min_radius
     assert (e.parameter, e.value) == ("driven_bore_mm", 40.0)
-    assert "one module inside the root" in e.limit and f"{r_f - dd.d.m:.3f} mm" in e.limit
+    assert "one module inside the root, which lies inside the pitch curve" in e.limit
+    assert f"{bound - m:.3f} mm" in e.limit and "leave driven_bore_mm out" in e.hint
+    big = small.parent / "big_bore.toml"
+    big.write_text(SMALL + "driven_bore_mm = 40.0\n")
+    assert main(["build", str(big), "--dry-run", "-q"]) == 2
+    assert main(["build", str(small), "--dry-run", "-q"]) == 0
+    # a bore between the bound and the cut root: passes the dry run, refused by the design on the cut root
+    t2 = keyway_for_shaft(28.0)[1]
+    assert r_f - m <= 14.0 + t2 < bound - m
+    gear = propulsor.part(small, driven_bore_mm=28.0)
+    with pytest.raises(InputError) as exc:
+        gear.design
+    e = exc.value
+    assert (e.parameter, e.value) == ("driven_bore_mm", 28.0)
+    assert "one module inside the root" in e.limit and f"{r_f - m:.3f} mm" in e.limit
     assert "leave driven_bore_mm out" in e.hint
 
 

@@ -17,7 +17,8 @@ from ... import policy
 from ...errors import InputError
 from ...geometry.gear_outline import KEYWAY_TABLE, keyway_for_shaft
 
-__all__ = ["Bore", "bore_limit", "size_bore", "bores", "with_bores", "check_given", "sized_derived", "sized_note"]
+__all__ = ["Bore", "bore_limit", "size_bore", "bores", "with_bores", "check_given", "sized_derived", "sized_note",
+           "root_bound", "check_given_on_pitch_curves"]
 
 #: DIN 6885-1's shaft range (over, up to), mm
 _KEYED = (KEYWAY_TABLE[0][0], KEYWAY_TABLE[-1][1])
@@ -114,3 +115,46 @@ def sized_note(chosen) -> str:
     return ("Bores sized from the gear (the part file gives no " + " and no ".join(
         f"{which}_bore_mm" for which, b in zip(("driver", "driven"), chosen) if b.sized) + "; give one to choose it): "
         + "; ".join(said) + ".")
+
+
+def root_bound(pc, which: str, m: float, samples: int = 4096) -> float:
+    """An upper bound (mm) of the least root radius of the ``which`` gear ("driver" / "driven") from the pitch curves
+    ``pc`` alone (``gears.noncircular.PitchCurves``), before any tooth is cut: the largest pitch radius within one
+    pitch (pi m of arc) either way of the least.  A tooth space lies within half a pitch of any point of the pitch
+    curve, and its root lies inside the curve (every cutter reaches below its centrode), so the least root radius is
+    at most the pitch radius somewhere in that window.  Sampled: the window widened by the largest arc between two
+    samples and the bound raised by the largest change of radius between two samples."""
+    import numpy as np
+
+    phi = np.linspace(0.0, 2.0 * np.pi, samples + 1)
+    r = np.asarray(pc.r(phi) if which == "driver" else pc.r_H(phi), float)
+    ds = np.asarray(pc.ds_dphi(phi), float)
+    s = np.concatenate([[0.0], np.cumsum(0.5 * (ds[1:] + ds[:-1]) * np.diff(phi))])  # contact arc: both curves'
+    per = float(s[-1])
+    k = int(np.argmin(r))
+    reach = np.pi * m + float(np.max(np.diff(s)))
+    gap = np.abs(s - s[k])
+    near = np.minimum(gap, per - gap) <= reach
+    return float(np.max(r[near])) + float(np.max(np.abs(np.diff(r))))
+
+
+def check_given_on_pitch_curves(p, pc, m: float) -> None:
+    """A bore the part file gives, refused before any tooth is cut when it reaches the rim below the root for certain
+    (:func:`root_bound`): the dry run refuses it as the build does (the build's own check, on the cut root, then
+    refuses the bores between the two)."""
+    rim = policy.BORE_RIM_MIN_MODULES
+    for which in ("driver", "driven"):
+        name = f"{which}_bore_mm"
+        d = getattr(p, name)
+        if d is None or d <= 0:
+            continue
+        bound = root_bound(pc, which, m)
+        t2 = _t2(d, p.keyway)
+        lim = bound - rim * m
+        if not d / 2 + t2 < lim:
+            raise InputError(name, d, f"bore{' + keyway' if p.keyway else ''} must stay "
+                             f"{'one module' if rim == 1 else f'{rim:g} modules'} inside the root, which lies inside "
+                             f"the pitch curve: bore/2 + t2 = {d / 2 + t2:.3f} mm >= {lim:.3f} mm (the {which}'s "
+                             f"largest pitch radius within a pitch of its least, {bound:.3f} mm, less "
+                             f"{rim * m:.3f} mm)",
+                             f"largest bore under {2 * (lim - t2):.1f} mm; leave {name} out to size it from the gear")

@@ -202,5 +202,13 @@ def _largest_sector_module(table, j_n, m_hi) -> float:
 
 
 def feasible(p: NoncircularPairParams, source=None) -> None:
-    """The part type's feasibility (``parts.vet``): :func:`screened`, its result kept for the design."""
-    screened(p, source)
+    """The part type's feasibility (``parts.vet``): :func:`screened`, its result kept for the design; a bore the part
+    file gives that surely reaches the root (``bores.check_given_on_pitch_curves``, where the screen settles the pitch
+    curves: a law without corners, or the walking law's given or smallest blend)."""
+    from .bores import check_given_on_pitch_curves
+
+    scr = screened(p, source)
+    if scr.smooth is not None:
+        check_given_on_pitch_curves(p, scr.smooth.pc, scr.smooth.m)
+    elif scr.smoothing is not None:
+        check_given_on_pitch_curves(p, PitchCurves(scr.smoothing.law, scr.smoothing.L), scr.m)
