@@ -297,8 +297,11 @@ def test_no_time_left_from_the_first_few_items_of_a_step():
     from propulsor.render import _eta
 
     assert _eta(4, 216, 100.0, 101.8) is None  # 4 of 216 in 1.8 s: too few to give a pace
-    assert _eta(30, 216, 100.0, 101.0) == pytest.approx(1.0 / 30 * 186)  # a tenth done: the pace
-    assert _eta(4, 216, 100.0, 104.0) == pytest.approx(4.0 / 4 * 212)  # 3 s spent: the pace
+    assert _eta(4, 240, 100.0, 119.1) is None  # 4 of 240 in 19 s (the trial's "19 min left", 2 s left): still too few
+    assert _eta(11, 216, 100.0, 101.0) == pytest.approx(1.0 / 11 * 205)  # a twentieth done: the pace
+    assert _eta(10, 216, 100.0, 101.0) is None
+    assert _eta(4, 216, 100.0, 130.0) == pytest.approx(30.0 / 4 * 212)  # 30 s spent: the pace
+    assert _eta(4, 216, 100.0, 129.9) is None
 
 
 def test_check_counts_the_files_it_checks(tmp_path):
