@@ -126,3 +126,31 @@ def test_edges_of_the_search_name_the_right_piece_and_scale():
     with pytest.raises(InputError) as e:
         check_printable(4.0, 3.0, 0.8)
     assert "print at 1:3 or larger" in e.value.limit
+
+
+def test_a_bed_too_small_for_the_printable_module_is_refused_as_the_bed_with_the_least_bed_that_prints_it():
+    """The scale the bed forces makes the module unprintable: the bed is refused (the user never gave a scale), with
+    the least square bed that prints the kit at the smallest reduction the module allows — and that bed does."""
+    from propulsor.printing.scale import least_bed
+
+    pieces = {"wheel": (120.0, 110.0, 8.0), "pinion": (40.0, 40.0, 8.0)}
+    bed = (50.0, 50.0, 50.0)
+    choice = choose_scale(pieces, bed, margin=8.0)
+    assert choice.S == 4.0  # 120 / 4 = 30 <= 50 - 16 = 34; at 1:3, 40 > 34
+    with pytest.raises(InputError) as e:
+        check_printable(choice.S, 2.5, 1.0, choice=choice)
+    assert (e.value.parameter, e.value.value) == ("--bed", "50x50x50")
+    assert e.value.limit == ("too small for this kit: " + choice.reason + "; at 1:4 the module would be 0.625 mm, "
+                             "below the printable 1 mm")
+    assert e.value.hint == "a bed of at least 72 x 72 x 4 mm prints it at 1:2.5 (module 1 mm): --bed 72x72x50, or a " \
+                           "larger printer"
+    # the pieces at 1:2.5 need 48 + 16 mm; the clearance coupon's 56 mm bar (printed at full size) 72
+    assert least_bed(pieces, 2.5, 8.0) == (72.0, 72.0, 3.2)
+    # that bed prints it: the scale chosen there is 1:2.5 and its module is printable
+    there = choose_scale(pieces, (72.0, 72.0, 50.0), margin=8.0)
+    assert there.S == 2.5
+    check_printable(there.S, 2.5, 1.0, choice=there)
+    # a requested scale is refused as the scale, as before
+    with pytest.raises(InputError) as e:
+        check_printable(4.0, 2.5, 1.0, choice=choose_scale(pieces, bed, requested=4.0, margin=8.0))
+    assert e.value.parameter == "--scale"

@@ -8,7 +8,9 @@ round: the margins are those the plates are laid out with) and the printable hei
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import math
+from dataclasses import dataclass, field
+from typing import Callable
 
 from ..errors import InputError
 
@@ -18,10 +20,14 @@ STANDARD_SCALES = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0, 12.0, 15.0
 
 @dataclass(frozen=True)
 class ScaleChoice:
-    """The reduction S (print = real / S) and why it was chosen."""
+    """The reduction S (print = real / S) and why it was chosen.  An automatic choice also carries the bed it was made
+    for and ``bed_at(T)``: the least bed (x, y, z, mm; square) that holds every piece at 1:T with the plates' margins,
+    so that a refusal of the scale can say which bed prints the kit (:func:`check_printable`)."""
 
     S: float
     reason: str
+    bed: tuple = field(default=(), compare=False)
+    bed_at: Callable | None = field(default=None, compare=False)
 
     @property
     def label(self) -> str:
@@ -46,6 +52,15 @@ def smallest_fitting(extents, bed, margin: float = 0.0) -> float | None:
     return next((S for S in STANDARD_SCALES if fits([v / S for v in extents], usable)), None)
 
 
+def least_bed(pieces: dict[str, tuple[float, float, float]], T: float, margin: float = 0.0) -> tuple:
+    """The least square bed (side, side, height; mm) on which every piece fits at 1:T with `margin` along each edge,
+    and the clearance coupon (printed at full size whatever the scale: :mod:`.coupon`)."""
+    from .coupon import bar_length
+
+    side = max(max(max(e[0], e[1]) for e in pieces.values()) / T, bar_length()) + 2 * margin
+    return (side, side, max(e[2] for e in pieces.values()) / T)
+
+
 def choose_scale(pieces: dict[str, tuple[float, float, float]], bed: tuple[float, float, float],
                  requested: float | None = None, margin: float = 0.0) -> ScaleChoice:
     """The scale for `pieces` {name: laid-flat extents in mm at full size} on `bed` (mm) less `margin`
@@ -68,16 +83,17 @@ def choose_scale(pieces: dict[str, tuple[float, float, float]], bed: tuple[float
                              f"{e[1] / requested:.1f} × {e[2] / requested:.1f} mm) does not fit the {where}; "
                              f"every piece fits at 1:{works:g}")
         return ScaleChoice(requested, "as requested")
+    auto = dict(bed=tuple(bed), bed_at=lambda T: least_bed(pieces, T, margin))
     for S in STANDARD_SCALES:
         if not too_big(S):
             if S == 1.0:
-                return ScaleChoice(S, "every piece fits the bed at full size")
+                return ScaleChoice(S, "every piece fits the bed at full size", **auto)
             # the piece that needed the reduction: the one that does not fit at the next larger scale
             prev = STANDARD_SCALES[STANDARD_SCALES.index(S) - 1]
             name = too_big(prev)[0]
             e = pieces[name]
             return ScaleChoice(S, f"{name} is {e[0]:.1f} × {e[1]:.1f} × {e[2]:.1f} mm; at 1:{prev:g} it does "
-                                  f"not fit the {where}, at 1:{S:g} it does")
+                                  f"not fit the {where}, at 1:{S:g} it does", **auto)
     name = too_big(STANDARD_SCALES[-1])[0]
     raise InputError("--scale", "auto", f"{name} does not fit the bed even at 1:{STANDARD_SCALES[-1]:g}; "
                      "choose a larger printer")
@@ -103,8 +119,18 @@ def check_printable(S: float, module_mm: float | None, min_module_mm: float,
 
     if module_mm is not None and module_mm / S < min_module_mm:
         largest = module_mm / min_module_mm
-        why = (f" — the bed is too small: {choice.reason}" if choice is not None and choice.reason != "as requested"
-               else "")
+        auto = choice is not None and choice.reason != "as requested"
+        if auto and choice.bed_at is not None and choice.bed:
+            # the scale was the bed's choice: the bed is what is refused, with the least bed that prints the kit
+            T = max(T for T in STANDARD_SCALES if T <= largest + 1e-9) if largest >= 1.0 - 1e-9 else 1.0
+            x, y, z = (math.ceil(v - 1e-9) for v in choice.bed_at(T))  # whole mm, up
+            b = choice.bed
+            raise InputError("--bed", f"{b[0]:g}x{b[1]:g}x{b[2]:g}",
+                             f"too small for this kit: {choice.reason}; at {choice.label} the module would be "
+                             f"{module_mm / S:.3g} mm, below the printable {min_module_mm:g} mm",
+                             f"a bed of at least {x} x {y} x {z} mm prints it at 1:{T:g} (module "
+                             f"{module_mm / T:.3g} mm): --bed {x}x{y}x{max(z, math.ceil(b[2])):g}, or a larger printer")
+        why = f" — the bed is too small: {choice.reason}" if auto else ""
         raise InputError("--scale", f"1:{S:g}", f"the scaled module {module_mm / S:.3g} mm is below the printable "
                          f"{min_module_mm:g} mm; print at {works(largest)} or larger (a larger printer){why}")
     for name, t in (thinnest or {}).items():

@@ -263,8 +263,16 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
                 raise InputError("--scale", choice.label, bar + (f"; it fits at 1:{works:g}" if works else
                                                                  "; a larger printer"))
             raise InputError("printer", printer.name, bar + f" even at 1:{STANDARD_SCALES[-1]:g}; a larger printer")
+        pieces_bed = choice.bed_at
+
+        def bed_at(T):
+            """The least bed at 1:T: the pieces', its side at least the base bar with the margins."""
+            x, y, z = pieces_bed(T) if pieces_bed is not None else (0.0, 0.0, 0.0)
+            side = max(x, rig_at(T)[1] + 2 * printer.margin_mm)
+            return side, side, z
+
         choice = ScaleChoice(works, f"the rig's base bar is {base_len:.1f} mm at {choice.label}, longer than the "
-                                    f"bed's {longest:g} mm; at 1:{works:g} it fits")
+                                    f"bed's {longest:g} mm; at 1:{works:g} it fits", bed=bed, bed_at=bed_at)
         pin, base_len = rig_at(works)
     S = choice.S
     R_boss = max(pin) / 2 + BOSS_WALL_MM
