@@ -221,6 +221,7 @@ def _evaluate(part_type, base, source, values, depth, wanted, build_dir) -> dict
     row = {"values": {}, "all_checks_passed": None, "failed_checks": "", "status": "ok", "reason": "",
            "worker": f"{socket.gethostname()}:{os.getpid()}"}
     _may_fork()  # before the design: a design may fork too (the non-circular teeth)
+    pt = None
     try:
         pt = get_part_type(part_type)
         params = asked(part_type, load_params(pt.params_cls, {**base, **values}), depth, wanted)
@@ -251,6 +252,10 @@ def _evaluate(part_type, base, source, values, depth, wanted, build_dir) -> dict
             row["reason"] = f"{missing[0]}: not computed at depth {depth} for this variant" + (
                 " (a deeper depth may compute it)" if depth != "build" else "")
     except InputError as exc:
+        if pt is not None:  # a value the study's files never write is the part type's default: said, as the dry run
+            from ..building import default_named
+
+            exc = default_named(exc, {**base, **values}, pt.params_cls)
         row["status"], row["reason"] = "input error", str(exc)
     except Exception as exc:  # the variant's own failure is a row, never the end of the study
         row["status"], row["reason"] = "error", f"{type(exc).__name__}: {exc}"

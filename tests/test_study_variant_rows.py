@@ -1,4 +1,4 @@
-"""A proof-depth variant runs the other tooth method's design and proof only when the study reads one of its
+"""A study variant's row.  A proof-depth variant runs the other tooth method's design and proof only when the study reads one of its
 ``compare_`` values (issue 40: the comparison only when asked); at build depth, and where the study reads one, the
 part file's switch stands."""
 
@@ -32,3 +32,19 @@ def test_the_comparison_stays_where_it_is_read_at_build_depth_or_off_already():
     assert asked("noncircular_pair", off, "proof", ("compare_sectors_te_pp_rad",)) is off
     assert asked("planetary_final_drive", p, "proof", ()) is p
     assert ONLY_WHEN_READ["noncircular_pair"] == ("compare_methods", "compare_")
+
+
+def test_a_row_refused_for_a_default_says_it_is_the_default():
+    """A variant refused for a value neither the part file nor the study writes: the row's reason says that it is the
+    part type's default, as the dry run does (issue 39's trial: the study's rows left it out)."""
+    from propulsor.study.evaluate import evaluate
+
+    base = {"law": "elliptical", "eccentricity": 0.2, "compare_methods": False}
+    row = evaluate("noncircular_pair", base, None, {"driver_turns": 3}, "design", ("center_distance_mm",))
+    assert row["status"] == "input error"
+    assert row["reason"] == ("driven_teeth = 80: must be a multiple of driver_turns = 3 (whole driver teeth) (nearest "
+                             "valid: 78, 81; driven_teeth is not in the part file: 80 is its default)")
+    written = evaluate("noncircular_pair", {**base, "driven_teeth": 80}, None, {"driver_turns": 3}, "design",
+                       ("center_distance_mm",))
+    assert written["reason"] == ("driven_teeth = 80: must be a multiple of driver_turns = 3 (whole driver teeth) "
+                                 "(nearest valid: 78, 81)")
