@@ -53,10 +53,10 @@ class NoncircularPairParams(PartParams):
     params_order: ClassVar[tuple] = ("law", "driver_turns", "eccentricity", "fourier_cos", "fourier_sin", "law_file",
                                      "pitch_curve_file", "a_mm", "b_mm", "c_mm")
 
-    a_mm: float = param(100.0, "mm", "hub-to-crank axis distance a (seed 000 eq. 1)", min=0.0, max=5000.0,
+    a_mm: float = param(100.0, "mm", "walking law: hub-to-crank axis distance a (seed 000 eq. 1)", min=0.0, max=5000.0,
                         why=_WHY_MECHANISM)
-    b_mm: float = param(50.0, "mm", "crank length b", min=0.0, max=5000.0, why=_WHY_MECHANISM)
-    c_mm: float = param(236.5, "mm", "shoe stand length c", min=0.0, max=5000.0, why=_WHY_MECHANISM)
+    b_mm: float = param(50.0, "mm", "walking law: crank length b", min=0.0, max=5000.0, why=_WHY_MECHANISM)
+    c_mm: float = param(236.5, "mm", "walking law: shoe stand length c", min=0.0, max=5000.0, why=_WHY_MECHANISM)
     law: str = param("walking", "", "drive law: walking (a_mm, b_mm, c_mm, driver_turns), elliptical "
                      "(eccentricity, driver_turns lobes of the driven wheel), fourier (fourier_cos, fourier_sin, "
                      "driver_turns), table (law_file), pitch_curve (pitch_curve_file, driver_turns driver turns per driven turn)",
