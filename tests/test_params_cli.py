@@ -118,6 +118,14 @@ def test_a_mistyped_key_is_answered_with_the_closest_names():
     with pytest.raises(InputError) as e:
         load_params(get_part_type("noncircular_pair").params_cls, {"zzzz": 3})
     assert e.value.limit.startswith("unknown parameter for this part (known: ")
+    # a mistyped choice: the choices listed and the closest named (trial 2: law = 'pitchcurve')
+    with pytest.raises(InputError) as e:
+        load_params(get_part_type("noncircular_pair").params_cls, {"law": "pitchcurve"})
+    assert (e.value.parameter, e.value.value, e.value.hint) == ("law", "pitchcurve", "did you mean pitch_curve?")
+    assert e.value.limit == "must be one of walking, elliptical, fourier, table, pitch_curve"
+    with pytest.raises(InputError) as e:
+        load_params(get_part_type("noncircular_pair").params_cls, {"law": "zzz"})
+    assert e.value.hint == ""
 
 
 def test_params_of_a_printer_profile_and_the_law_keys_first():

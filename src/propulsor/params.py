@@ -96,7 +96,8 @@ def _check_field(f, typ, value):
     if meta.get("choices") is not None:
         _check_type(name, value, typ)
         if value not in meta["choices"]:
-            raise InputError(name, value, f"must be one of {', '.join(map(str, meta['choices']))}")
+            raise InputError(name, value, f"must be one of {', '.join(map(str, meta['choices']))}",
+                             did_you_mean(value, map(str, meta["choices"])) if isinstance(value, str) else "")
     elif typ is bool:
         _check_type(name, value, typ)
     elif typ in (int, float):
