@@ -70,6 +70,10 @@ def test_polysector_kit_proves_its_printed_mesh_and_fits(kit_folder):
     assert [n for n, c in by_name.items() if not c["passed"]] == []
     d = m["derived"]
     assert d["scale_S"] == 1.0 and d["print_module_mm"] == pytest.approx(3.0)
+    # its title names the printer (two kits of one part, for two printers, are told apart in the gallery)
+    from propulsor.printing.printers import load_printer
+
+    assert m["title"].startswith("Print kit: ") and m["title"].endswith(f", for {load_printer('generic').label}")
     assert d["print_center_distance_mm"] == pytest.approx(132.0) and d["print_position"] == 3
     assert by_name["mesh.overlap_area"]["value"] <= 1e-6
     assert by_name["mesh.no_tip_on_tip"]["value"] == 0.0 and by_name["mesh.no_snap"]["value"] <= 0.05

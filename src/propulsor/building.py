@@ -392,7 +392,7 @@ def build_kit(part: Loaded, out, printer, *, scale: float | None = None, sliced:
         kit = make_kit(part.params, printer, scale, source=part.source, **told)
         writer = OutputWriter(tmp, name, part.params, progress=say, source=part.source)
         writer.report_name = "print_report.md"
-        writer.title = f"Print kit: {writer.title}"
+        writer.title = f"Print kit: {writer.title}, for {printer.label}"  # two kits of one part tell apart
         try:
             write_kit(kit, writer, sliced)
             return writer.finish(), f"{name} print kit", writer
