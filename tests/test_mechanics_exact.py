@@ -63,3 +63,271 @@ def test_shaft_equivalent_stress_refusals():
     assert (sh.sigma_b, sh.tau) == (100.0, 50.0)
     assert sh.sigma_eq == pytest.approx(math.sqrt(100.0 ** 2 + 4 * 50.0 ** 2), rel=1e-15)
     assert sh.margin == pytest.approx(970.0 / math.sqrt(20000.0), rel=1e-15)
+
+
+# ============================================================== tyre_heat.py (seed 004 ch. 7, eq. 76-80, Table 12)
+
+def _tyre(**kw):
+    from propulsor.laws.tyre_heat import SolidTyre
+
+    args = dict(R=315.0, b=90.0, H=40.0, E=6.0, alpha=60.0)
+    args.update(kw)
+    return SolidTyre(**args)
+
+
+def test_tyre_speed_refusals_and_speed_zero():
+    from propulsor.laws.tyre_heat import air_cooling_coefficient, n_rpm, track_frequency
+
+    assert refused(track_frequency, 4.0, 0.0) == "t_track = 0.0: must be > 0 m"
+    assert refused(track_frequency, -1.0, 0.15) == "V = -1.0: speeds must be finite and >= 0 m/s"
+    assert refused(track_frequency, [1.0, float("nan")], 0.15) == "V = [1.0, nan]: speeds must be finite and >= 0 m/s"
+    assert refused(track_frequency, [float("inf")], 0.15).startswith("V = [inf]: ")
+    assert float(track_frequency(0.0, 0.15)) == 0.0
+    assert float(track_frequency(3.0, 0.5)) == pytest.approx(2 * math.pi * 3.0 / 0.5, rel=1e-15)
+    assert refused(air_cooling_coefficient, 4.0, 0.0) == "A_heatexchange = 0.0: must be > 0 m^2"
+    assert refused(air_cooling_coefficient, 4.0, 0.002, 0.0) == "rho_air = 0.0: must be > 0 kg/m^3"
+    assert refused(air_cooling_coefficient, 4.0, 0.002, 1.2, 0.0) == "c_air = 0.0: must be > 0 J/(kg K)"
+    assert refused(air_cooling_coefficient, -4.0, 0.002) == "V = -4.0: speeds must be finite and >= 0 m/s"
+    assert refused(air_cooling_coefficient, [float("nan")], 0.002) == "V = [nan]: speeds must be finite and >= 0 m/s"
+    assert float(air_cooling_coefficient(0.0, 0.002)) == 0.0
+    # the defaults are air's: rho 1.2 kg/m^3, c 1005 J/(kg K)
+    assert float(air_cooling_coefficient(2.0, 0.5)) == pytest.approx(2.0 * 0.5 * 1.2 * 1005.0, rel=1e-15)
+    assert float(air_cooling_coefficient(2.0, 0.5, 1.0, 1000.0)) == pytest.approx(1000.0, rel=1e-15)
+    assert refused(n_rpm, 10.0, 0.0) == "R = 0.0: must be > 0 mm"
+    assert refused(n_rpm, -5.0, 315.0) == "V = -5.0: speeds must be finite and >= 0 km/h"
+    assert refused(n_rpm, [float("inf")], 315.0) == "V = [inf]: speeds must be finite and >= 0 km/h"
+    assert float(n_rpm(0.0, 315.0)) == 0.0
+    # 36 km/h on R = 500 mm: 10 m/s / (2 pi 0.5 m) rev/s; the printed 60 V / (3.6 pi R) is twice that
+    assert float(n_rpm(36.0, 500.0)) == pytest.approx(600.0 / math.pi, rel=1e-15)
+    assert float(n_rpm(36.0, 500.0, True)) == pytest.approx(1200.0 / math.pi, rel=1e-15)
+    assert float(n_rpm(36.0, 500.0, as_printed=False)) == pytest.approx(600.0 / math.pi, rel=1e-15)
+
+
+def test_tyre_table12_coefficient_refusals():
+    from propulsor.laws.tyre_heat import G_ACC, heating_coefficient, inertial_load
+
+    assert refused(heating_coefficient, 0.0, 1420.0) == "m_rubber = 0.0: must be > 0 kg"
+    assert refused(heating_coefficient, 0.336, 0.0) == "c_rubber = 0.0: must be > 0 J/(kg K)"
+    assert heating_coefficient(2.0, 500.0) == 1.0 / 1000.0
+    assert refused(inertial_load, 0.0, 30.0) == "mass = 0.0: must be > 0 kg"
+    assert refused(inertial_load, 36.0, 0.0) == "accel_g = 0.0: must be > 0"
+    assert G_ACC == 9.81
+    assert inertial_load(2.0, 3.0) == pytest.approx(2.0 * 3.0 * 9.81, rel=1e-15)
+
+
+def test_tyre_surface_refusals_and_both_sides_of_H_below_R():
+    from propulsor.laws.tyre_heat import tyre_surface
+
+    assert refused(tyre_surface, 0.0, 90.0, 40.0) == "R = 0.0: must be > 0 mm"
+    assert refused(tyre_surface, 315.0, 0.0, 40.0) == "b = 0.0: must be > 0 mm"
+    assert refused(tyre_surface, 315.0, 90.0, 0.0) == "H = 0.0: must be > 0 mm"
+    assert refused(tyre_surface, 315.0, 90.0, 315.0) == "H = 315.0: rubber thickness must be < R = 315 mm"
+    assert refused(tyre_surface, 315.5, 90.0, 400.0) == "H = 400.0: rubber thickness must be < R = 315.5 mm"
+    # just below R: a full disc of rubber, 2 pi R^2 sides minus a hair
+    assert tyre_surface(100.0, 10.0, 99.0) == pytest.approx(2 * math.pi * (100.0 ** 2 - 1.0) + 2 * math.pi * 1000.0,
+                                                            rel=1e-15)
+    assert tyre_surface(100.0, 10.0, 20.0) == pytest.approx(2 * math.pi * (10000.0 - 6400.0) + 2 * math.pi * 1000.0,
+                                                            rel=1e-15)
+
+
+def test_solid_tyre_refusals_in_full():
+    assert refused(_tyre, R=0.0) == "R = 0.0: must be > 0 mm"
+    assert refused(_tyre, b=-1.0) == "b = -1.0: must be > 0 mm"
+    assert refused(_tyre, H=0.0) == "H = 0.0: must be > 0 mm"
+    assert refused(_tyre, H=315.0) == "H = 315.0: rubber thickness must be < R = 315 mm"
+    assert refused(_tyre, E=0.0) == "E = 0.0: must be > 0 MPa"
+    assert refused(_tyre, alpha=0.0) == "alpha = 0.0: must be > 0 W/(m^2 K)"
+    assert refused(_tyre, psi=float("nan")) == "psi = nan: must be a finite number"
+    for psi in (0.0, 1.0, -0.1, 1.5):
+        assert refused(_tyre, psi=psi) == f"psi = {psi!r}: internal friction must lie in (0, 1) (seed: 0.25 ... 0.5)"
+    assert refused(_tyre, F=0.0) == "F = 0.0: must be > 0 mm^2"
+
+
+def test_solid_tyre_keeps_floats_and_its_defaults():
+    t = _tyre(R="315", b=90, H=40, E=6, alpha=60, psi="0.4", F="5e5")   # text and integers from a file: floats
+    assert (t.R, t.b, t.H, t.E, t.alpha, t.psi, t.F) == (315.0, 90.0, 40.0, 6.0, 60.0, 0.4, 5e5)
+    assert all(type(v) is float for v in (t.R, t.b, t.H, t.E, t.alpha, t.psi, t.F))
+    # psi just inside (0, 1) is taken
+    assert _tyre(psi=1e-9).psi == 1e-9
+    assert _tyre(psi=0.999999).psi == 0.999999
+    d = _tyre()
+    assert d.psi == 0.35
+    assert d.F == pytest.approx(2 * math.pi * (315.0 ** 2 - 275.0 ** 2) + 2 * math.pi * 315.0 * 90.0, rel=1e-15)
+    assert _tyre(F=1234.5).F == 1234.5
+
+
+def test_solid_tyre_load_refusals():
+    t = _tyre()
+    assert refused(t.contact_length, 0.0) == "P = 0.0: tyre load must be finite and > 0 N"
+    assert refused(t.q_m, -3) == "P = -3.0: tyre load must be finite and > 0 N"
+    assert refused(t.q_mean, [1.0, float("nan")]) == "P = [1.0, nan]: tyre load must be finite and > 0 N"
+    assert refused(t.work_per_turn, [2.0, 0.0]) == "P = [2.0, 0.0]: tyre load must be finite and > 0 N"
+    assert refused(t.deflection, float("inf")) == "P = inf: tyre load must be finite and > 0 N"
+    assert float(t.contact_length(1e-6)) > 0
+
+
+def test_solid_tyre_deflection_limit_both_sides():
+    # l = 2 cbrt(H/R) sqrt(R P / (E b)), lambda = l^2 / (8 R) = cbrt(H/R)^2 P / (2 E b): lambda = H at
+    # P* = 2 E b H / cbrt(H/R)^2
+    R, b, H, E = 100.0, 10.0, 8.0, 1.0
+    t = _tyre(R=R, b=b, H=H, E=E)
+    P_star = 2 * E * b * H / (H / R) ** (2 / 3)
+    below = 0.999 * P_star
+    assert float(t.deflection(below)) == pytest.approx(0.999 * H, rel=1e-12)
+    msg = refused(t.deflection, 1.001 * P_star)
+    lam = 1.001 * H
+    assert msg == f"P = {float(1.001 * P_star)!r}: deflection {lam:.4g} mm reaches the rubber thickness H = 8 mm"
+    msg = refused(t.deflection, [below, 1.002 * P_star, 0.5 * P_star])
+    assert msg == (f"P = {float(1.002 * P_star)!r}: deflection {1.002 * H:.4g} mm reaches the rubber thickness "
+                   f"H = 8 mm")
+
+
+def test_solid_tyre_chain_exact():
+    R, b, H, E, alpha, psi, F = 200.0, 50.0, 30.0, 4.0, 40.0, 0.3, 3e5
+    t = _tyre(R=R, b=b, H=H, E=E, alpha=alpha, psi=psi, F=F)
+    P, V = 5000.0, 30.0
+    l = 2 * (H / R) ** (1 / 3) * math.sqrt(R * P / (E * b))
+    lam = l * l / (8 * R)
+    q = 4 * P / (math.pi * b * l)
+    A = math.pi * q * lam * b * R * (1 - lam / (2 * R)) / 1000.0
+    n = 60 * V / (3.6 * 2 * math.pi * R / 1000.0)
+    Q = psi * A * n / 60
+    assert float(t.contact_length(P)) == pytest.approx(l, rel=1e-14)
+    assert float(t.deflection(P)) == pytest.approx(lam, rel=1e-14)
+    assert float(t.q_m(P)) == pytest.approx(q, rel=1e-14)
+    assert float(t.q_mean(P)) == pytest.approx(P / (b * l), rel=1e-14)
+    assert float(t.work_per_turn(P)) == pytest.approx(A, rel=1e-14)
+    assert float(t.heat_rate(P, V)) == pytest.approx(Q, rel=1e-14)
+    assert float(t.heat_rate(P, V, True)) == pytest.approx(2 * Q, rel=1e-14)
+    assert float(t.heat_rate(P, V, as_printed_n=True)) == pytest.approx(2 * Q, rel=1e-14)
+    assert float(t.temperature(P, V)) == pytest.approx(20.0 + Q / (alpha * F * 1e-6), rel=1e-14)
+    assert float(t.temperature(P, V, -5.0)) == pytest.approx(-5.0 + Q / (alpha * F * 1e-6), rel=1e-14)
+    assert float(t.temperature(P, V, 0.0, True)) == pytest.approx(2 * Q / (alpha * F * 1e-6), rel=1e-14)
+    assert float(t.temperature(P, V, t_air=0.0, as_printed_n=True)) == pytest.approx(2 * Q / (alpha * F * 1e-6),
+                                                                                     rel=1e-14)
+    assert refused(t.temperature, P, V, float("inf")) == "t_air = inf: must be a finite number"
+    # arrays broadcast
+    T = t.temperature(np.array([P, 2 * P]), np.array([V, V]))
+    assert T.shape == (2,)
+
+
+def test_solid_tyre_temperature_curve_exact():
+    t = _tyre(R=200.0, b=50.0, H=30.0, E=4.0, alpha=40.0, psi=0.3, F=3e5)
+    c = t.temperature_curve(5000.0, 60.0, 10.0, 3)
+    assert set(c) == {"V_kmh", "n_rpm", "Q_W", "T_C"}
+    assert c["V_kmh"].tolist() == [0.0, 30.0, 60.0]
+    assert c["n_rpm"] == pytest.approx([0.0, 30 / 3.6 / (2 * math.pi * 0.2) * 60, 60 / 3.6 / (2 * math.pi * 0.2) * 60],
+                                       rel=1e-14)
+    Q = t.heat_rate(5000.0, 30.0)
+    assert c["Q_W"] == pytest.approx([0.0, float(Q), 2 * float(Q)], rel=1e-14)
+    assert c["T_C"] == pytest.approx([10.0, 10.0 + float(Q) / 12.0, 10.0 + 2 * float(Q) / 12.0], rel=1e-14)
+    d = t.temperature_curve(5000.0, 60.0)        # defaults: t_air 20, 51 samples
+    assert len(d["V_kmh"]) == 51 and d["T_C"][0] == 20.0
+    assert len(t.temperature_curve(5000.0, 60.0, num=2)["V_kmh"]) == 2
+    assert len(t.temperature_curve(5000.0, 60.0, num=2.7)["V_kmh"]) == 2
+    assert refused(t.temperature_curve, 5000.0, 60.0, num=1) == "num = 1: need >= 2 samples"
+    assert refused(t.temperature_curve, 5000.0, 0.0) == "V_max = 0.0: must be > 0 km/h"
+
+
+# ============================================================== damper_heat.py (seed 004 ch. 6, eq. 73-75, Table 11)
+
+def test_damper_station_refusals_and_table11_defaults():
+    from propulsor.laws.damper_heat import Station
+
+    for k in ("m1", "C1", "m2", "C2", "b2", "m_a", "c_steel", "S"):
+        kw = dict(m1=400.0, C1=2.0e6, b1=2.0e3)
+        kw[k] = 0.0
+        assert refused(Station, **kw) == f"{k} = 0.0: must be > 0"
+        kw[k] = -1.0
+        assert refused(Station, **kw) == f"{k} = -1.0: must be > 0"
+    st = Station(m1=400.0, C1=2.0e6, b1=0.0)          # no tyre damping is allowed
+    assert (st.m2, st.C2, st.b2, st.m_a, st.c_steel, st.S, st.rho_air, st.c_air, st.T_env) == (
+        3125.0, 164400.0, 3.426e4, 20.0, 487.0, 0.247, 1.2, 1005.0, 20.0)
+
+
+def test_damper_cooling_coefficient_exact():
+    from propulsor.laws.damper_heat import Station, cooling_coefficient
+
+    st = Station(m1=1.0, C1=1.0, b1=0.0, S=0.5, rho_air=2.0, c_air=1000.0)
+    assert cooling_coefficient(st, 3.0) == 3.0 * 0.5 * 2.0 * 1000.0
+
+
+def _station_numbers():
+    from propulsor.laws.damper_heat import Station
+
+    return Station(m1=2.0, C1=30.0, b1=5.0, m2=7.0, C2=11.0, b2=3.0, m_a=4.0, c_steel=0.5, S=0.25, rho_air=2.0,
+                   c_air=8.0, T_env=10.0)
+
+
+def test_damper_system_matrix_written_out():
+    from propulsor.laws.damper_heat import Road, _system
+
+    st = _station_numbers()
+    m1, C1, b1, m2, C2, b2 = 2.0, 30.0, 5.0, 7.0, 11.0, 3.0
+    M, x0, w = _system(st, Road(0.4, 2.0), 3.0, False)
+    assert w == pytest.approx(2 * math.pi * 3.0 / 2.0, rel=1e-15)
+    E = np.zeros((6, 6))
+    E[0, 1] = E[2, 3] = 1.0
+    E[1] = [-(C1 + C2) / m1, -(b1 + b2) / m1, C2 / m1, b2 / m1, C1 / m1, b1 * w / m1]
+    E[3] = [C2 / m2, b2 / m2, -C2 / m2, -b2 / m2, 0, 0]
+    E[4, 5], E[5, 4] = w, -w
+    assert M == pytest.approx(E, rel=1e-15, abs=0)
+    assert x0.tolist() == [0.0, 0.0, 0.0, 0.0, 0.0, 0.2]
+    P, x0p, wp = _system(st, Road(0.4, 2.0), 3.0, True)
+    E[1] = [-(C1 + C2) / m1, -b1 / m1, C2 / m1, 0.0, C1 / m1, b1 * w / m1]
+    E[3] = [C2 / m2, -b2 / m2, -C2 / m2, b2 / m2, 0, 0]        # printed: - b2 (z1' - z2')
+    assert P == pytest.approx(E, rel=1e-15, abs=0)
+    assert x0p.tolist() == [0.0, 0.0, 0.0, 0.0, 0.0, 0.2] and wp == w
+
+
+def test_damper_right_hand_side_written_out():
+    from propulsor.laws.damper_heat import Road, _rhs
+
+    st = _station_numbers()
+    road = Road(0.4, 2.0)
+    V, t = 3.0, 0.3
+    y = [0.01, -0.2, 0.03, 0.5, 35.0]
+    w = 2 * math.pi * V / 2.0
+    q, dq = 0.2 * math.sin(w * t), 0.2 * w * math.cos(w * t)
+    k_air = V * 0.25 * 2.0 * 8.0
+    P = 3.0 * (0.5 + 0.2) ** 2
+    dT = (P - k_air * (35.0 - 10.0)) / (4.0 * 0.5)
+    f, wf = _rhs(st, road, V, False)
+    assert wf == pytest.approx(w, rel=1e-15)
+    Fd = 3.0 * (0.5 + 0.2)
+    a1 = (-30.0 * (0.01 - q) - 5.0 * (-0.2 - dq) - 11.0 * (0.01 - 0.03) + Fd) / 2.0
+    a2 = (-11.0 * (0.03 - 0.01) - Fd) / 7.0
+    assert f(t, y) == pytest.approx([-0.2, a1, 0.5, a2, dT], rel=1e-14)
+    f, _ = _rhs(st, road, V, True)
+    a1 = (-30.0 * (0.01 - q) - 11.0 * (0.01 - 0.03) - 5.0 * (-0.2 - dq)) / 2.0
+    a2 = (-11.0 * (0.03 - 0.01) - 3.0 * (-0.2 - 0.5)) / 7.0
+    assert f(t, y) == pytest.approx([-0.2, a1, 0.5, a2, dT], rel=1e-14)
+
+
+def test_damper_powers_by_doubling():
+    from propulsor.laws.damper_heat import _powers
+
+    rng = np.random.default_rng(7)
+    Phi = rng.normal(size=(4, 4)) / 2
+    x = rng.normal(size=4)
+    for n in range(1, 12):
+        out = _powers(Phi, x, n)
+        want = np.array([np.linalg.matrix_power(Phi, k) @ x for k in range(n)])
+        assert out.shape == (n, 4)
+        assert out == pytest.approx(want, rel=1e-12, abs=1e-12)
+
+
+def test_damper_simulate_refusal_and_grid():
+    from propulsor.laws.damper_heat import Road, simulate
+
+    st = _station_numbers()
+    assert refused(simulate, st, Road(0.4, 2.0), 1.0, 0.0) == "t_end = 0.0: must be > 0 s"
+    r = simulate(st, Road(0.4, 2.0), 1.0, 2.0, n_out=5)
+    assert r.t.tolist() == [0.0, 0.5, 1.0, 1.5, 2.0]
+    assert r.V == 1.0 and r.T[0] == 10.0 and r.z2[0] == 0.0
+    assert len(simulate(st, Road(0.4, 2.0), 1.0, 2.0).t) == 400
+    one = simulate(st, Road(0.4, 2.0), 1.0, 2.0, n_out=1)
+    assert one.t.tolist() == [0.0] and one.T.tolist() == [10.0]
+    # at rest on the road (V = 0) nothing moves and nothing heats
+    rest = simulate(st, Road(0.4, 2.0), 0.0, 2.0, n_out=3)
+    assert rest.T.tolist() == [10.0, 10.0, 10.0] and rest.mean_power == 0.0 and rest.rise == 0.0
