@@ -331,3 +331,176 @@ def test_damper_simulate_refusal_and_grid():
     # at rest on the road (V = 0) nothing moves and nothing heats
     rest = simulate(st, Road(0.4, 2.0), 0.0, 2.0, n_out=3)
     assert rest.T.tolist() == [10.0, 10.0, 10.0] and rest.mean_power == 0.0 and rest.rise == 0.0
+
+
+# ============================================================== traction.py (seed 004 ch. 4.1-4.2, ch. 5)
+
+def test_traction_sprocket_torque_exact_and_refusals():
+    from propulsor.laws import traction as tr
+
+    assert tr.G_ACC == 9.81
+    good = dict(f=0.5, M=2000.0, z=12, t=0.2, eta_gus=0.8)
+    assert tr.sprocket_torque(**good) == pytest.approx(0.5 * 2000.0 * 9.81 * 12 * 0.2 / (2 * math.pi * 0.8),
+                                                       rel=1e-15)
+    assert tr.sprocket_torque(**good, g=10.0) == pytest.approx(0.5 * 2000.0 * 10.0 * 12 * 0.2 / (2 * math.pi * 0.8),
+                                                               rel=1e-15)
+    for name in ("f", "M", "z", "t", "eta_gus"):
+        assert refused(tr.sprocket_torque, **{**good, name: 0}) == f"{name} = 0: must be > 0"
+
+
+def test_traction_final_drive_torques_exact_and_refusals():
+    from propulsor.laws import traction as tr
+
+    assert tr.power_ratio(2.0, 0.9, 0.8) == pytest.approx(1.0 + 2.0 * 0.9 * 0.8, rel=1e-15)
+    t = tr.final_drive_torques(1000.0, 5.0, 2.0, 0.9, 0.8, 1.5, 4)
+    i_sil = 1.0 + 2.0 * 0.9 * 0.8
+    eta = i_sil / 5.0
+    assert (t.M_vk, t.i_br) == (1000.0, 5.0)
+    assert t.i_sil == pytest.approx(i_sil, rel=1e-15)
+    assert t.eta_br == pytest.approx(eta, rel=1e-15)
+    assert t.M_sol == pytest.approx(1000.0 * 1.5 / (5.0 * eta), rel=1e-14)
+    assert t.M_sat == pytest.approx(1000.0 * 1.5 / (5.0 * 4 * eta), rel=1e-14)
+    assert t.M_ring == pytest.approx(1000.0 - 1000.0 / i_sil, rel=1e-14)
+    assert refused(tr.final_drive_torques, 0.0, 5.0, 2.0, 0.9, 0.8, 1.5, 4) == "M_vk = 0.0: must be > 0"
+    assert refused(tr.final_drive_torques, 1000.0, 5.0, 2.0, 0.9, 0.8, 1.5, 0) == "n_w = 0: must be > 0"
+    assert tr.planet_bearing_load(1000.0, 1.5, 0.2, 3, 2) == pytest.approx(1000.0 * 1.5 / (0.2 * 3 * 2), rel=1e-15)
+    assert refused(tr.planet_bearing_load, 1000.0, 1.5, 0.0, 3, 2) == "r_vod = 0.0: must be > 0"
+
+
+def test_traction_track_forces_both_sides_of_the_slack_clamp():
+    from propulsor.laws import traction as tr
+
+    # P_t = 2 pi M / (z t); raw = P_0 - P_t / (1 + z_sv / z_rab)
+    P_t = 2 * math.pi * 1000.0 / (10 * 0.5)
+    raw = 5000.0 - P_t / (1.0 + 3 / 4)
+    f = tr.track_forces(1000.0, 10, 0.5, 5000.0, 3, 4)
+    assert f.P_t == pytest.approx(P_t, rel=1e-15)
+    assert f.P_sv_raw == pytest.approx(raw, rel=1e-15) and raw > 0
+    assert f.P_sv == pytest.approx(raw, rel=1e-15)
+    assert f.P_r == pytest.approx(raw + P_t, rel=1e-15)
+    c = math.cos(math.radians(30.0))
+    assert f.Q == pytest.approx(math.sqrt(raw ** 2 + (raw + P_t) ** 2 + 2 * raw * (raw + P_t) * c), rel=1e-15)
+    g = tr.track_forces(1000.0, 10, 0.5, 5000.0, 3, 4, wrap_deg=60.0)
+    assert g.Q == pytest.approx(math.sqrt(raw ** 2 + (raw + P_t) ** 2 + raw * (raw + P_t)), rel=1e-14)
+    low = tr.track_forces(1000.0, 10, 0.5, 100.0, 3, 4)       # a slack side that would push: clamped to 0
+    assert low.P_sv_raw < 0 and low.P_sv == 0.0 and low.P_r == pytest.approx(P_t, rel=1e-15)
+    assert low.Q == pytest.approx(P_t, rel=1e-15)
+    assert refused(tr.track_forces, 1000.0, 10, 0.0, 5000.0, 3, 4) == "t = 0.0: must be > 0"
+
+
+def test_traction_vehicle_defaults_are_seed_004_ch5():
+    from propulsor.laws import traction as tr
+
+    v = tr.Vehicle()
+    assert (v.M, v.V_max, v.K_f, v.F, v.eta_gm_max, v.alpha_max_deg, v.i_slope, v.f_gr, v.f_gr_max, v.n_N, v.K_g,
+            v.z, v.t, v.D_k, v.eta_r, v.f_r, v.B_0) == (50000.0, 50.0, 0.6, 10.293, 0.87, 30.0, 0.025, 0.015, 0.08,
+                                                        2000.0, 1.25, 15, 0.125, 630.0, 0.94, 0.02, 0.034)
+
+
+def test_traction_losses_and_power_exact():
+    from propulsor.laws import traction as tr
+
+    assert tr.transmission_efficiency([]) == 1.0
+    assert tr.transmission_efficiency([(2, 1, 3), (1, 0, 2)]) == pytest.approx(
+        0.985 ** 3 * 0.96 * 0.99 ** 5, rel=1e-15)
+    assert tr.transmission_speed_loss(1500.0) == pytest.approx(4.57e-6 * 1500.0 ** 2 - 15.0 + 9.0, rel=1e-15)
+    assert tr.rolling_loss_coefficient(0.05, 1000.0) == pytest.approx(0.05 - 0.0146, rel=1e-15)
+    v = tr.Vehicle(M=1000.0, V_max=36.0, K_f=0.5, F=2.0, i_slope=0.01, f_gr=0.02, D_k=500.0, eta_r=0.9,
+                   f_r=0.03, B_0=0.04)
+    f_k = 0.04 - 1.46e-5 * 500.0
+    assert tr.running_gear_speed_loss(v) == pytest.approx((0.03 + f_k) * 1000.0 * 9.81 * 36.0 / 3600.0, rel=1e-14)
+    assert tr.running_gear_speed_loss(v, 18.0) == pytest.approx((0.03 + f_k) * 1000.0 * 9.81 * 18.0 / 3600.0,
+                                                                rel=1e-14)
+    road = 0.03 * 1000.0 * 9.81 * 36.0 / (3600.0 * 0.9)
+    air = 0.5 * 2.0 * 36.0 ** 3 / (3.6 ** 3 * 1e3 * 0.9)
+    N_sgm = (0.03 + f_k) * 1000.0 * 9.81 * 36.0 / 3600.0
+    assert tr.engine_power_required(v, 0.8, 2.5) == pytest.approx((road + air + N_sgm) / 0.8 + 2.5, rel=1e-14)
+    w = tr.Vehicle(M=1000.0, alpha_max_deg=20.0, f_gr_max=0.1)
+    a = math.radians(20.0)
+    assert tr.max_traction_force(w) == pytest.approx((0.1 * math.cos(a) + math.sin(a)) * 1000.0 * 9.81, rel=1e-15)
+    assert tr.min_speed(100.0, 0.8, 2e5) == pytest.approx(3600.0 * 100.0 * 0.8 / 2e5, rel=1e-15)
+
+
+def test_traction_gears_exact():
+    from propulsor.laws import traction as tr
+
+    assert tr.gear_count(60.0, 5.0, 1.5, 1.3) == pytest.approx(
+        (math.log(60.0) - math.log(5.0) - math.log(1.5)) / math.log(1.3), rel=1e-14)
+    assert tr.progression_ratio(60.0, 5.0, 1.5, 5) == pytest.approx((60.0 / 7.5) ** 0.25, rel=1e-15)
+    assert tr.gear_top_speeds(5.0, 1.5, 2.0, 4) == pytest.approx([5.0, 15.0, 30.0, 60.0], rel=1e-15)
+    assert tr.gear_top_speeds(5.0, 1.5, 2.0, 1) == [5.0]
+    assert refused(tr.gear_top_speeds, 0.0, 1.5, 2.0, 4) == "V_min = 0.0: must be > 0"
+    assert refused(tr.gear_top_speeds, 5.0, 1.5, 2.0, 0) == "m_n = 0: must be > 0"
+    assert tr.transmission_ratio(1800.0, 12, 0.2, 30.0) == pytest.approx(0.06 * 1800.0 * 12 * 0.2 / 30.0, rel=1e-15)
+    assert refused(tr.transmission_ratio, 1800.0, 12, 0.2, 0.0) == "V = 0.0: must be > 0"
+    assert tr.transmission_speed_loss_geared(1500.0, True) == pytest.approx(4.7e-6 * 1500.0 ** 2 - 14.85 + 9.0,
+                                                                            rel=1e-14)
+    assert tr.transmission_speed_loss_geared(1500.0, False) == pytest.approx(4.1e-6 * 1500.0 ** 2 - 14.85 + 7.4,
+                                                                             rel=1e-14)
+    assert tr.vehicle_speed(1800.0, 12, 0.2, 8.0) == pytest.approx(0.06 * 12 * 0.2 * 1800.0 / 8.0, rel=1e-15)
+    assert refused(tr.vehicle_speed, 1800.0, 12, 0.2, 0.0) == "U = 0.0: must be > 0"
+    assert tr.traction_coefficient(300.0, 10.0, 0.9, 20.0, 0.95, 1000.0, 20.0) == pytest.approx(
+        3600.0 * ((300.0 - 10.0) * 0.9 - 20.0) * 0.95 / (1000.0 * 9.81 * 20.0), rel=1e-14)
+    assert tr.traction_coefficient(300.0, 10.0, 0.9, 20.0, 0.95, 1000.0, 20.0, g=10.0) == pytest.approx(
+        3600.0 * ((300.0 - 10.0) * 0.9 - 20.0) * 0.95 / (1000.0 * 10.0 * 20.0), rel=1e-14)
+    assert refused(tr.traction_coefficient, 300.0, 10.0, 0.9, 20.0, 0.95, 1000.0, 0.0) == "V = 0.0: must be > 0"
+    assert tr.resistance_coefficient(0.1, 0.3) == pytest.approx(0.1 * math.cos(0.3) + math.sin(0.3), rel=1e-15)
+
+
+def test_traction_engine_characteristic_exact():
+    from propulsor.laws import traction as tr
+
+    assert tr.ENGINE_004[0] == (0.429, 0.4) and tr.ENGINE_004[-1] == (1.04, 0.5) and len(tr.ENGINE_004) == 8
+    e = tr.engine_characteristic(500.0, 2000.0, modes=((0.5, 0.6), (1.0, 1.0)), N_exhaust=7.0)
+    n = [1000.0, 2000.0]
+    N = [300.0, 500.0]
+    ej = [0.06 * 500.0 * 0.25, 0.06 * 500.0]
+    vo = [0.03 * 500.0 * 0.25, 0.03 * 500.0]
+    vsp = 0.035 * 500.0
+    tot = [ej[k] + vo[k] + 7.0 + vsp for k in range(2)]
+    assert e["n_k"] == n and e["N_ek"] == N
+    assert e["M_ek"] == pytest.approx([9550.0 * 300.0 / 1000.0, 9550.0 * 500.0 / 2000.0], rel=1e-15)
+    assert e["N_ej"] == pytest.approx(ej, rel=1e-15) and e["N_vo"] == pytest.approx(vo, rel=1e-15)
+    assert e["N_vsp"] == pytest.approx([vsp, vsp], rel=1e-15)
+    assert e["N_total"] == pytest.approx(tot, rel=1e-15)
+    assert e["N_eob"] == pytest.approx([N[k] - tot[k] for k in range(2)], rel=1e-14)
+    assert e["M_eob"] == pytest.approx([9550.0 * (N[k] - tot[k]) / n[k] for k in range(2)], rel=1e-14)
+    d = tr.engine_characteristic(500.0, 2000.0)                  # Table 8's modes, no exhaust loss
+    assert d["n_k"] == pytest.approx([2000.0 * a for a, _ in tr.ENGINE_004], rel=1e-15)
+    assert d["N_total"][6] == pytest.approx(0.06 * 500 + 0.03 * 500 + 0.035 * 500, rel=1e-15)
+    assert refused(tr.engine_characteristic, 0.0, 2000.0) == "N_e = 0.0: must be > 0"
+    assert refused(tr.engine_characteristic, 500.0, 0.0) == "n_N = 0.0: must be > 0"
+
+
+def test_traction_characteristic_exact():
+    from propulsor.laws import traction as tr
+
+    v = tr.Vehicle(M=20000.0, V_max=40.0, K_g=1.5, n_N=1800.0, z=12, t=0.2, D_k=500.0, eta_r=0.9, f_r=0.03,
+                   B_0=0.04)
+    modes = ((0.5, 0.6), (1.0, 1.0))
+    c = tr.traction_characteristic(v, 400.0, 5.0, 3, 0.85, modes=modes, high_from=2)
+    q = (40.0 / (1.5 * 5.0)) ** 0.5
+    V_top = [5.0, 7.5 * q, 7.5 * q * q]          # V_j = V_min K_g q^(j-1), j >= 2
+    assert c.V_top == pytest.approx(V_top, rel=1e-14)
+    U = [0.06 * 1800.0 * 12 * 0.2 / x for x in V_top]
+    assert c.U == pytest.approx(U, rel=1e-14)
+    e = tr.engine_characteristic(400.0, 1800.0, modes)
+    assert c.n_k == tuple(e["n_k"]) and c.N_eob == tuple(e["N_eob"])
+    f_loss = 0.03 + 0.04 - 1.46e-5 * 500.0
+    for j in range(3):
+        high = j >= 1
+        for k, n in enumerate(e["n_k"]):
+            Vx = 0.06 * 12 * 0.2 * n / U[j]
+            s = (4.7e-6 * n * n - 0.0099 * n + 9.0) if high else (4.1e-6 * n * n - 0.0099 * n + 7.4)
+            cr = f_loss * 20000.0 * 9.81 * Vx / 3600.0
+            assert c.V[j][k] == pytest.approx(Vx, rel=1e-14)
+            assert c.N_str[j][k] == pytest.approx(s, rel=1e-14)
+            assert c.N_cr[j][k] == pytest.approx(cr, rel=1e-14)
+            assert c.f_g[j][k] == pytest.approx(3600.0 * ((e["N_eob"][k] - s) * 0.85 - cr) * 0.9 / (20000.0 * 9.81 * Vx),
+                                                rel=1e-13)
+    # defaults: Table 8's eight modes, gears 3 and up high (eq. 71)
+    d = tr.traction_characteristic(v, 400.0, 5.0, 4, 0.85)
+    assert len(d.n_k) == 8 and len(d.V) == 4 and all(len(row) == 8 for row in d.f_g)
+    n0 = d.n_k[0]
+    assert d.N_str[1][0] == pytest.approx(4.1e-6 * n0 * n0 - 0.0099 * n0 + 7.4, rel=1e-14)
+    assert d.N_str[2][0] == pytest.approx(4.7e-6 * n0 * n0 - 0.0099 * n0 + 9.0, rel=1e-14)
