@@ -504,3 +504,251 @@ def test_traction_characteristic_exact():
     n0 = d.n_k[0]
     assert d.N_str[1][0] == pytest.approx(4.1e-6 * n0 * n0 - 0.0099 * n0 + 7.4, rel=1e-14)
     assert d.N_str[2][0] == pytest.approx(4.7e-6 * n0 * n0 - 0.0099 * n0 + 9.0, rel=1e-14)
+
+
+# ============================================================== shoe.py (seed 001 eq. 1-7, 11-13)
+
+def _dsinc_series(x: float) -> float:
+    """d/dx (sin x / x) = sum_k>=1 (-1)^k 2k x^(2k-1) / (2k+1)!, summed in 50-digit decimals."""
+    from decimal import Decimal, getcontext
+
+    getcontext().prec = 50
+    X = Decimal(x)
+    s, fact = Decimal(0), Decimal(1)
+    for k in range(1, 30):
+        fact *= (2 * k) * (2 * k + 1)                 # (2k+1)!
+        s += (-1) ** k * 2 * k * X ** (2 * k - 1) / fact
+    return float(s)
+
+
+def test_shoe_sinc_and_its_derivative_on_both_sides_of_the_series_switch():
+    from propulsor import policy
+    from propulsor.laws.shoe import _dsinc, _sinc
+
+    assert policy.SINC_SERIES_BELOW == 1e-2
+    assert _sinc(0.0) == 1.0
+    assert _sinc(np.array([0.3, -2.0])) == pytest.approx([math.sin(0.3) / 0.3, math.sin(2.0) / 2.0], rel=1e-15)
+    # the series side (|x| < 0.01) is exact to rounding; the closed form loses digits to cancellation near 0.01
+    for x, rel in ((0.0, 0), (1e-6, 1e-15), (1e-3, 1e-15), (-0.004, 1e-15), (0.0099, 1e-14), (-0.0099, 1e-14),
+                   (0.0101, 1e-11), (-0.0101, 1e-11), (0.05, 1e-13), (-0.5, 1e-14), (2.0, 1e-14), (7.5, 1e-14)):
+        assert float(_dsinc(x)) == pytest.approx(_dsinc_series(x), rel=rel, abs=1e-300), x
+    xs = np.array([0.0, 0.0099, -0.02, 3.0])
+    assert _dsinc(xs) == pytest.approx([_dsinc_series(v) for v in xs], rel=1e-12, abs=1e-300)
+
+
+def test_shoe_polyline_self_intersection_cases():
+    from propulsor.laws.shoe import _segments_intersect
+
+    assert not _segments_intersect(np.array([[0.0, 0.0], [1.0, 0.0]]))
+    assert not _segments_intersect(np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]]))
+    # a Z folded back over its first segment crosses it
+    assert _segments_intersect(np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, -1.0]]))
+    # the same three segments, the last one stopping short of the first: no crossing
+    assert not _segments_intersect(np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 0.5]]))
+    # a convex arc never crosses itself
+    t = np.linspace(0.0, 3.0, 40)
+    assert not _segments_intersect(np.column_stack([np.cos(t), np.sin(t)]))
+    # a loop (more than a full turn) does
+    t = np.linspace(0.0, 7.0, 60)
+    assert _segments_intersect(np.column_stack([(1 + 0.05 * t) * np.cos(t), (1 + 0.05 * t) * np.sin(t) + 0.3 * t]))
+    # touching only at a segment's end (t = 0 or 1) is not a crossing; parallel segments never cross
+    assert not _segments_intersect(np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0], [1.0, 0.0]]))
+    assert not _segments_intersect(np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [-1.0, 1.0]]))
+    # a crossing of segments 0 and 2 in the middle of both (t = u = 1/2)
+    assert _segments_intersect(np.array([[0.0, 0.0], [2.0, 0.0], [1.5, 1.0], [1.0, -1.0]]))
+    # crossing the last segment only
+    assert _segments_intersect(np.array([[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.5, -1.0]]))
+
+
+def _hand_table(radius, X=None, Y=None):
+    from propulsor.laws.shoe import ShoeTable
+
+    radius = np.asarray(radius, dtype=float)
+    n = len(radius)
+    phi = np.linspace(-0.5, 0.5, n)
+    X = np.linspace(0.0, 1.0, n) if X is None else np.asarray(X, float)
+    Y = np.zeros(n) if Y is None else np.asarray(Y, float)
+    z = np.zeros(n)
+    return ShoeTable(phi=phi, Y1=z, dY1=z, Y2=z, X_B=X, Y_B=Y, rho=z, alpha=z, radius=radius)
+
+
+def test_shoe_loop_check_both_sides_of_the_radius_limit():
+    from propulsor.laws.shoe import shoe_loop_check
+
+    c = shoe_loop_check(_hand_table([3.0, 2.0, 0.5, 4.0, 5.0]))
+    assert (c.radius_min, c.phi_at_min, c.self_intersecting, c.ok) == (0.5, 0.0, False, True)
+    assert type(c.radius_min) is float and type(c.phi_at_min) is float
+    assert shoe_loop_check(_hand_table([3.0, 2.0, 0.0, 4.0, 5.0])).ok is False          # 0 is not > 0
+    assert shoe_loop_check(_hand_table([3.0, 2.0, 0.5, 4.0, 5.0]), 0.5).ok is False
+    assert shoe_loop_check(_hand_table([3.0, 2.0, 0.5, 4.0, 5.0]), 0.49).ok is True
+    c = shoe_loop_check(_hand_table([-1.0, 2.0, 0.5, 4.0, 5.0]))
+    assert (c.radius_min, c.phi_at_min, c.ok) == (-1.0, -0.5, False)
+    crossing = _hand_table([1.0, 1.0, 1.0, 1.0], X=[0.0, 2.0, 2.0, 1.0], Y=[0.0, 0.0, 1.0, -1.0])
+    c = shoe_loop_check(crossing)
+    assert c.self_intersecting is True and c.ok is False and c.radius_min == 1.0
+
+
+def test_shoe_arc_length_is_the_trapezoid_of_the_radius():
+    from propulsor.laws.shoe import shoe_arc_length
+
+    tab = _hand_table([1.0, 3.0, 2.0, 5.0, 4.0])       # phi step 0.25
+    assert shoe_arc_length(tab) == pytest.approx(0.25 * (0.5 + 3 + 2 + 5 + 2), rel=1e-15)
+    assert type(shoe_arc_length(tab)) is float
+
+
+class _FakeMotion:
+    """A motion with a known hub speed and cam path (duck-typed for hub_travel_per_step and _depth)."""
+
+    def __init__(self, s):
+        from types import SimpleNamespace
+
+        self.mech = SimpleNamespace(phi_s=s)
+
+    def hub_speed(self, phi):
+        return 3.0 + np.asarray(phi) ** 2 + np.asarray(phi) ** 3
+
+    def H_derivs(self, phi):
+        phi = np.asarray(phi, dtype=float)
+        return 100.0 + 10.0 * phi ** 2, None, None, None
+
+
+def test_shoe_hub_travel_per_step_and_depth_by_hand():
+    from propulsor.laws.shoe import _depth, hub_travel_per_step
+
+    m = _FakeMotion(0.6)
+    for n in (5, 2001):
+        phi = np.linspace(-0.6, 0.6, n)
+        want = float(np.trapezoid(3.0 + phi ** 2 + phi ** 3, phi))
+        assert hub_travel_per_step(m, n) == pytest.approx(want, rel=1e-14)
+    phi = np.linspace(-0.6, 0.6, 2001)
+    assert hub_travel_per_step(m) == pytest.approx(float(np.trapezoid(3.0 + phi ** 2, phi)), rel=1e-14)
+    assert hub_travel_per_step(m, 3) == pytest.approx(0.6 * (3.36 + 2 * 3.0 + 3.36) / 2 * 2 / 2, rel=1e-14)
+    p = np.array([0.2, -0.4])
+    XB, YB = np.array([5.0, -3.0]), np.array([30.0, 40.0])
+    want = (100.0 + 10.0 * p ** 2 + YB) * np.cos(p) + XB * np.sin(p)
+    assert _depth(m, p, XB, YB) == pytest.approx(want, rel=1e-15)
+
+
+def _cam(kind="quadratic", k0=0.017, **mech):
+    from propulsor.laws.cam_motion import CamMechanism, CurvatureLaw, cam_motion
+
+    return cam_motion(CamMechanism(**mech), CurvatureLaw(kind, k0))
+
+
+def test_shoe_table_against_eq7_eq11_eq13_written_out():
+    from propulsor.laws.shoe import shoe_table
+
+    cm = _cam()
+    sup = cm.support
+    phi = np.array([-0.7, -0.3, 0.2, 0.5, 0.78])
+    tab = shoe_table(sup, phi)
+    d = sup.derivs(phi)
+    H, H1, H2 = d["H"], d["H1"], d["H2"]
+    Y1 = H1 / np.tan(phi) - H                                                 # eq. 7 with eq. 1
+    dY1 = H2 / np.tan(phi) - H1 / np.sin(phi) ** 2 - H1
+    Y2 = 320.0 - (H + Y1) * np.cos(phi)                                       # R0 + r + C = 320 mm
+    XB, YB = Y2 * np.sin(phi), Y1 + Y2 * np.cos(phi)                          # eq. 11
+    assert tab.phi.tolist() == phi.tolist()
+    assert tab.Y1 == pytest.approx(Y1, rel=1e-8)
+    assert tab.dY1 == pytest.approx(dY1, rel=1e-8)
+    assert tab.Y2 == pytest.approx(Y2, rel=1e-9)
+    assert tab.X_B == pytest.approx(XB, rel=1e-9)
+    assert tab.Y_B == pytest.approx(YB, rel=1e-8)
+    assert tab.rho == pytest.approx(np.sqrt(XB ** 2 + YB ** 2), rel=1e-9)             # eq. 13
+    assert tab.alpha == pytest.approx(np.arctan2(XB, YB), rel=1e-8)                   # eq. 12
+    assert tab.radius == pytest.approx(Y2 - dY1 * np.sin(phi), rel=1e-8)
+    # a scalar angle gives one row; at phi = 0 the limit Y1 = H''(0) - H(0) and Y1' = 0 (even law)
+    z = shoe_table(sup, 0.0)
+    d0 = sup.derivs(0.0)
+    assert z.Y1.shape == (1,)
+    assert z.Y1[0] == pytest.approx(d0["H2"][0] - d0["H"][0], abs=1e-9)
+    assert z.dY1[0] == pytest.approx(0.0, abs=1e-9)
+    assert z.X_B[0] == 0.0 and z.alpha[0] == 0.0
+    assert z.Y2[0] == pytest.approx(320.0 - d0["H"][0] - z.Y1[0], rel=1e-15)
+    # near 0 (the series side of sin x / x) the table is eq. 7 still
+    p = np.array([-3e-3, 1e-3, 4e-3])
+    e = shoe_table(sup, p)
+    d = sup.derivs(p)
+    assert e.Y1 == pytest.approx(d["H1"] / np.tan(p) - d["H"], abs=1e-7)
+    assert e.dY1 == pytest.approx(d["H2"] / np.tan(p) - d["H1"] / np.sin(p) ** 2 - d["H1"], abs=1e-4)
+    h = 1e-4
+    fd = (shoe_table(sup, 0.3 + h).Y1 - shoe_table(sup, 0.3 - h).Y1) / (2 * h)
+    assert shoe_table(sup, 0.3).dY1 == pytest.approx(fd, rel=1e-6)
+
+
+def test_shoe_table_of_an_odd_law_uses_both_sides():
+    from propulsor.laws.cam_motion import CamMechanism, CurvatureLaw, cam_motion
+    from propulsor.laws.shoe import shoe_table
+
+    cm = cam_motion(CamMechanism(), CurvatureLaw("linear", 0.005, symmetric=False))
+    phi = np.array([-0.6, -0.25, 0.25, 0.6])
+    tab = shoe_table(cm.support, phi)
+    d = cm.support.derivs(phi)
+    Y1 = d["H1"] / np.tan(phi) - d["H"]
+    assert tab.Y1 == pytest.approx(Y1, rel=1e-7)
+    assert tab.dY1 == pytest.approx(d["H2"] / np.tan(phi) - d["H1"] / np.sin(phi) ** 2 - d["H1"], rel=1e-7)
+
+
+def test_shoe_footprint_ratio_and_travel_by_hand_on_a_real_cam():
+    from propulsor.laws.shoe import footprint_ratio, hub_travel_per_step, shoe_table
+
+    cm = _cam()
+    s = math.pi / 4
+    for n in (2001, 301):
+        phi = np.linspace(-s, s, n)
+        travel = float(np.trapezoid(cm.hub_speed(phi), phi))
+        arc = float(np.trapezoid(shoe_table(cm.support, phi).radius, phi))
+        assert hub_travel_per_step(cm, n) == pytest.approx(travel, rel=1e-14)
+        assert footprint_ratio(cm, n) == pytest.approx(arc / travel, rel=1e-13)
+        if n == 2001:
+            assert hub_travel_per_step(cm) == pytest.approx(travel, rel=1e-14)
+            assert footprint_ratio(cm) == pytest.approx(arc / travel, rel=1e-13)
+
+
+def _brute_depth(cm, legs, n=400001):
+    from propulsor.laws.shoe import _depth, shoe_table
+
+    s = cm.mech.phi_s
+    grid = np.linspace(-s, s, n)
+    tab = shoe_table(cm.support, grid)
+    return [float(np.max(_depth(cm, np.full_like(grid, pl), tab.X_B, tab.Y_B))) for pl in legs]
+
+
+def test_shoe_hub_height_on_flat_finds_the_lowest_point_of_every_leg():
+    """A cam whose idle shoe digs into the ground (an odd law): the hub height on flat is not constant, and the
+    refined search equals a brute force over 100 001 shoe points to 1e-6 mm, where 41 samples are mm off."""
+    from propulsor.laws.cam_motion import CamMechanism, CurvatureLaw, cam_motion
+    from propulsor.laws.shoe import hub_height_on_flat
+
+    cm = cam_motion(CamMechanism(), CurvatureLaw("linear", 0.005, symmetric=False), estimate_error=False)
+    phi = np.array([0.0, 0.7])
+    hh = hub_height_on_flat(cm, phi, n_shoe=41)
+    want = [max(_brute_depth(cm, cm.leg_angles(p), 100001)) for p in phi]
+    assert hh == pytest.approx(want, abs=1e-6)
+    assert hub_height_on_flat(cm, 0.7).tolist() == pytest.approx([want[1]], abs=1e-6)
+    assert want[1] - 320.0 > 1.0                 # a cam that does not keep the hub level
+    coarse = max(_brute_depth(cm, cm.leg_angles(0.7), 41))
+    assert want[1] - coarse > 1e-4
+    # a single grid point (n_shoe = 1) is taken as it is
+    one = hub_height_on_flat(cm, phi, n_shoe=1)
+    from propulsor.laws.shoe import _depth, shoe_table
+
+    t = shoe_table(cm.support, np.array([-cm.mech.phi_s]))
+    want1 = [max(float(_depth(cm, np.array([pl]), t.X_B, t.Y_B)[0]) for pl in cm.leg_angles(p)) for p in phi]
+    assert one == pytest.approx(want1, rel=1e-14)
+
+
+def test_shoe_return_ground_clearance_of_the_idle_legs():
+    from propulsor.laws.shoe import return_ground_clearance
+
+    cm = _cam()
+    for p in (-0.6, 0.0, 0.3):
+        idle = [p + 2 * math.pi * j / 4 for j in (1, 2, 3)]
+        for n in (801, 101):
+            want = 320.0 - max(_brute_depth(cm, idle, n))
+            got = return_ground_clearance(cm, p, n) if n != 801 else return_ground_clearance(cm, p)
+            assert got.shape == (1,) and got[0] == pytest.approx(want, rel=1e-13)
+    both = return_ground_clearance(cm, np.array([0.1, -0.2]), 201)
+    assert both == pytest.approx([320.0 - max(_brute_depth(cm, [0.1 + 2 * math.pi * j / 4 for j in (1, 2, 3)], 201)),
+                                  320.0 - max(_brute_depth(cm, [-0.2 + 2 * math.pi * j / 4 for j in (1, 2, 3)], 201))],
+                                 rel=1e-13)
