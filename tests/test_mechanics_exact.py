@@ -752,3 +752,254 @@ def test_shoe_return_ground_clearance_of_the_idle_legs():
     assert both == pytest.approx([320.0 - max(_brute_depth(cm, [0.1 + 2 * math.pi * j / 4 for j in (1, 2, 3)], 201)),
                                   320.0 - max(_brute_depth(cm, [-0.2 + 2 * math.pi * j / 4 for j in (1, 2, 3)], 201))],
                                  rel=1e-13)
+
+
+# ============================================================== suspension.py (seed 004 ch. 2, eq. 1-28)
+
+def test_suspension_free_functions_exact():
+    from propulsor.laws import suspension as s
+
+    assert s.G_ACC == 9.81
+    P, R, b, t = 30000.0, 350.0, 0.7, 1500.0
+    assert s.torsion_bar_diameter(P, R, b, t) == pytest.approx((64 * P * R * math.sin(b) / (math.pi * t)) ** (1 / 3),
+                                                                rel=1e-15)
+    assert s.equivalent_stiffness(0.8, 30000.0, 0.5) == pytest.approx(2 * 0.8 * 30000.0 / 0.25, rel=1e-15)
+    assert s.pitch_stiffness(4e5, 1.5, 8.0) == pytest.approx(2 * math.pi ** 2 * 4e5 / (2.25 * 8.0), rel=1e-15)
+    assert s.pitch_period(4e5, 2e5, 8.0) == pytest.approx(math.sqrt(2 * math.pi ** 2 * 4e5 / (2e5 * 8.0)), rel=1e-15)
+    ln = math.log(12.0)
+    assert s.mean_damping_coefficient(2e5, 4e5, 8.0, 5.0, 12.0) == pytest.approx(
+        math.sqrt(2) * ln / 5.0 * math.sqrt(2e5 * 4e5 * 8.0 / (4 * math.pi ** 2 + ln * ln)), rel=1e-14)
+    assert s.rebound_damping_max(2e5, 1.5, 500.0, 80.0) == pytest.approx(2e5 * 1.5 / (4 * math.log(500.0 / 80.0)),
+                                                                         rel=1e-15)
+    R = (4e5 * 0.6 * 9.81 - 1.5e5 * 8 * 0.05 * 9.81) / 9.81 / (2 * 3)
+    assert s.compression_force_max(4e5, 1.5e5, 8, 0.05, 3, 0.6) == pytest.approx(R, rel=1e-14)
+    R5 = (4e5 * 0.5 * 9.81 - 1.5e5 * 8 * 0.05 * 9.81) / 9.81 / (2 * 3)
+    assert s.compression_force_max(4e5, 1.5e5, 8, 0.05, 3) == pytest.approx(R5, rel=1e-14)
+    assert s.rod_force_ratio(0.4) == 2.5 and s.rod_force_ratio(0.4, "lever") == 2.5
+    assert s.rod_force_ratio(0.4, "literal") == 0.4
+    assert s.damper_ear_arm(360.0, 0.4) == 144.0 and s.damper_ear_arm(360.0, 0.4, "lever") == 144.0
+    assert s.damper_ear_arm(360.0, 0.4, "literal") == 900.0
+    assert s.piston_diameter(1000.0, 2.0) == pytest.approx(math.sqrt(4000.0 / (2 * math.pi)), rel=1e-15)
+    assert s.piston_diameter(1000.0, 2.0, 30.0) == pytest.approx(math.sqrt(4000.0 / (2 * math.pi) + 900.0), rel=1e-15)
+    assert s.piston_diameter(1000.0, 2.0, 0.0) == s.piston_diameter(1000.0, 2.0)
+
+
+def test_suspension_free_function_refusals_in_full():
+    from propulsor.laws import suspension as s
+
+    assert refused(s.torsion_bar_diameter, 0.0, 360.0, 0.7, 1600.0) == "P_st = 0.0: must be > 0 N"
+    assert refused(s.torsion_bar_diameter, 1.0, 0.0, 0.7, 1600.0) == "R_b = 0.0: must be > 0 mm"
+    assert refused(s.torsion_bar_diameter, 1.0, 360.0, 0.7, 0.0) == "tau_max = 0.0: must be > 0 MPa"
+    assert refused(s.torsion_bar_diameter, 1.0, 360.0, float("nan"), 1.0) == "beta_st = nan: must be a finite number"
+    for b in (0.0, math.pi, -0.1, 4.0):
+        assert refused(s.torsion_bar_diameter, 1.0, 360.0, b, 1.0) == f"beta_st = {b!r}: must lie in (0, pi) rad"
+    assert s.torsion_bar_diameter(1.0, 1.0, 1e-9, 1.0) > 0 and s.torsion_bar_diameter(1.0, 1.0, 3.14159, 1.0) > 0
+    assert refused(s.equivalent_stiffness, 0.0, 1.0, 1.0) == "lambda_ut = 0.0: must be > 0"
+    assert refused(s.equivalent_stiffness, 1.0, 0.0, 1.0) == "P_st = 0.0: must be > 0 N"
+    assert refused(s.equivalent_stiffness, 1.0, 1.0, 0.0) == "f_full = 0.0: must be > 0"
+    for fn in (s.pitch_stiffness, s.pitch_period):
+        assert refused(fn, 0.0, 1.0, 1.0) == "I_y = 0.0: must be > 0 kg m^2"
+        assert refused(fn, 1.0, 1.0, 0.0) == "sum_l2 = 0.0: must be > 0 m^2"
+    assert refused(s.pitch_stiffness, 1.0, 0.0, 1.0) == "T_phi = 0.0: must be > 0 s"
+    assert refused(s.pitch_period, 1.0, 0.0, 1.0) == "c = 0.0: must be > 0 N/m"
+    m = s.mean_damping_coefficient
+    assert refused(m, 0.0, 1.0, 1.0, 1.0, 2.0) == "c = 0.0: must be > 0 N/m"
+    assert refused(m, 1.0, 0.0, 1.0, 1.0, 2.0) == "I_y = 0.0: must be > 0 kg m^2"
+    assert refused(m, 1.0, 1.0, 0.0, 1.0, 2.0) == "sum_l2 = 0.0: must be > 0 m^2"
+    assert refused(m, 1.0, 1.0, 1.0, 0.0, 2.0) == "sum_la2 = 0.0: must be > 0 m^2"
+    assert refused(m, 1.0, 1.0, 1.0, 1.0, float("inf")) == "nu = inf: must be a finite number"
+    assert refused(m, 1.0, 1.0, 1.0, 1.0, 1.0) == "nu = 1.0: amplitude ratio over one period must be > 1"
+    assert m(1.0, 1.0, 1.0, 1.0, 1.0 + 1e-9) > 0
+    r = s.rebound_damping_max
+    assert refused(r, 0.0, 1.0, 2.0, 1.0) == "c = 0.0: must be > 0 N/m"
+    assert refused(r, 1.0, 0.0, 2.0, 1.0) == "T_phi = 0.0: must be > 0 s"
+    assert refused(r, 1.0, 1.0, 0.0, 1.0) == "f_full = 0.0: must be > 0"
+    assert refused(r, 1.0, 1.0, 2.0, 0.0) == "f_st = 0.0: must be > 0"
+    assert refused(r, 1.0, 1.0, 2.0, 2.0) == "f_full = 2.0: must exceed f_st = 2"
+    assert refused(r, 1.0, 1.0, 2.0, 2.5) == "f_full = 2.0: must exceed f_st = 2.5"
+    assert r(1.0, 1.0, 2.0 + 1e-9, 2.0) > 0
+    c = s.compression_force_max
+    assert refused(c, 0.0, 1.0, 8, 0.05, 3) == "G_p = 0.0: must be > 0 N"
+    assert refused(c, 1.0, 0.0, 8, 0.05, 3) == "c = 0.0: must be > 0 N/m"
+    assert refused(c, 1.0, 1.0, 0, 0.05, 3) == "n_side = 0: must be > 0"
+    assert refused(c, 1.0, 1.0, 8, 0.0, 3) == "h_n = 0.0: must be > 0 m"
+    assert refused(c, 1.0, 1.0, 8, 0.05, 0) == "n_a_side = 0: must be > 0"
+    assert refused(c, 1.0, 1.0, 8, 0.05, 3, 0.0) == "zdd_over_g = 0.0: must be > 0"
+    # R = 0 exactly: G_p zdd = c n h  (1000 * 0.5 = 100 * 10 * 0.5)
+    assert refused(c, 1000.0, 100.0, 10, 0.5, 2) == "h_n = 0.5: bump too high: compression force limit 0 N <= 0"
+    assert refused(c, 1000.0, 100.0, 10, 0.6, 2) == "h_n = 0.6: bump too high: compression force limit -25 N <= 0"
+    assert c(1000.0, 100.0, 10, 0.4, 2) == pytest.approx(25.0, rel=1e-13)
+    assert refused(s.rod_force_ratio, 0.0) == "i_a = 0.0: must be > 0"
+    assert refused(s.rod_force_ratio, 0.4, "lever arm") == \
+        "damper_reading = 'lever arm': must be one of ('lever', 'literal')"
+    assert refused(s.damper_ear_arm, 0.0, 0.4) == "R_b = 0.0: must be > 0"
+    assert refused(s.damper_ear_arm, 360.0, 0.4, "x") == "damper_reading = 'x': must be one of ('lever', 'literal')"
+    assert refused(s.piston_diameter, 0.0, 20.0) == "F_rod = 0.0: must be > 0 N"
+    assert refused(s.piston_diameter, 1.0, 0.0) == "p_max = 0.0: must be > 0 MPa"
+    assert refused(s.piston_diameter, 1.0, 1.0, float("nan")) == "d_rod = nan: must be a finite number"
+    assert refused(s.piston_diameter, 1.0, 1.0, -1e-9) == "d_rod = -1e-09: must be >= 0 mm"
+
+
+def test_suspension_deg_limits_both_sides():
+    from propulsor.laws.suspension import _deg
+
+    assert _deg("a", "10", 0.0, 180.0) == 10.0
+    assert _deg("a", 1e-9, 0.0, 180.0) == 1e-9 and _deg("a", 179.999, 0.0, 180.0) == 179.999
+    assert refused(_deg, "a", 0.0, 0.0, 180.0) == "a = 0.0: must lie in (0, 180) deg"
+    assert refused(_deg, "a", 180.0, 0.0, 180.0) == "a = 180.0: must lie in (0, 180) deg"
+    assert refused(_deg, "b", -180.5, -180.0, 180.0) == "b = -180.5: must lie in (-180, 180) deg"
+    assert refused(_deg, "b", None, -180.0, 180.0) == "b = None: must be a number"
+
+
+def _torsion(**kw):
+    from propulsor.laws.suspension import TorsionSuspension
+
+    return TorsionSuspension(**kw)
+
+
+def test_torsion_suspension_refusals_in_full():
+    assert refused(_torsion, P_st=0.0) == "P_st = 0.0: must be > 0 N"
+    assert refused(_torsion, R_b=0.0) == "R_b = 0.0: must be > 0 mm"
+    assert refused(_torsion, d_T=0.0) == "d_T = 0.0: must be > 0 mm"
+    assert refused(_torsion, L_T=0.0) == "L_T = 0.0: must be > 0 mm"
+    assert refused(_torsion, tau_max=0.0) == "tau_max = 0.0: must be > 0 MPa"
+    assert refused(_torsion, G=0.0) == "G = 0.0: must be > 0 MPa"
+    assert refused(_torsion, beta_st_deg=180.0) == "beta_st_deg = 180.0: must lie in (0, 180) deg"
+    assert refused(_torsion, beta0_deg=-181.0) == "beta0_deg = -181.0: must lie in (-180, 180) deg"
+    assert refused(_torsion, beta0_deg=43.144) == \
+        "beta0_deg = 43.144: must be < beta_st_deg = 43.144 (travel angles out of order)"
+    assert refused(_torsion, beta_m_deg=180.0) == "beta_m_deg = 180.0: must lie in (-180, 180) deg"
+    assert refused(_torsion, beta_m_deg=43.144) == \
+        "beta_m_deg = 43.144: must be > beta_st_deg = 43.144 (travel angles out of order)"
+    # a bar so thin the static twist passes half a turn
+    assert refused(_torsion, d_T=10.0) == "d_T = 10.0: static twist gamma_st >= 180 deg: bar far too thin"
+    msg = refused(_torsion, d_T=29.0)
+    t = dict(P_st=31490.0, R_b=360.0, b=math.radians(43.144), d=29.0, L=2000.0, tau=1600.0, G=83000.0)
+    g_st = 32 * t["P_st"] * t["R_b"] * math.sin(t["b"]) * t["L"] / (math.pi * t["d"] ** 4 * t["G"])
+    g_m = 2 * t["tau"] * t["L"] / (t["G"] * t["d"])
+    assert g_st < math.pi and g_st >= g_m
+    assert msg == (f"d_T = 29.0: torsion bar yields under the static load: gamma_st = {math.degrees(g_st):.6g} "
+                   f">= gamma_m = {math.degrees(g_m):.6g} deg (tau > [tau] = 1600 MPa)")
+    # beta0 adopted below zero: the balancer would swing through the vertical
+    assert refused(_torsion, beta0_deg=-1.0, beta_m_deg=60.0) == (
+        "beta0_deg = -1.0: must be > 0 deg: the balancer may not swing through the downward vertical "
+        "(f(beta) would not be monotonic, P(beta) < 0)")
+    assert _torsion(beta0_deg=1e-6, beta_m_deg=60.0).beta0_deg == 1e-6
+
+
+def test_torsion_suspension_stored_values_and_travel_exact():
+    t = _torsion(P_st="30000", R_b=350, beta_st_deg=40, d_T=48, L_T=2100, tau_max=1500, G=80000)
+    assert (t.P_st, t.R_b, t.beta_st_deg, t.d_T, t.L_T, t.tau_max, t.G) == (30000.0, 350.0, 40.0, 48.0, 2100.0,
+                                                                              1500.0, 80000.0)
+    assert all(type(v) is float for v in (t.P_st, t.R_b, t.beta_st_deg, t.d_T, t.L_T, t.tau_max, t.G))
+    b_st = math.radians(40.0)
+    g_st = 32 * 30000.0 * 350.0 * math.sin(b_st) * 2100.0 / (math.pi * 48.0 ** 4 * 80000.0)
+    b0 = b_st - g_st
+    k = 80000.0 * math.pi * 48.0 ** 4 / 32 / 2100.0
+    beta = np.array([b0, 0.9, 1.3])
+    assert t.f(beta) == pytest.approx(350.0 * (math.cos(b0) - np.cos(beta)), rel=1e-14, abs=1e-12)
+    assert t.M_T(beta) == pytest.approx(k * (beta - b0), rel=1e-14, abs=1e-9)
+    assert t.P(beta[1:]) == pytest.approx(k * (beta[1:] - b0) / (350.0 * np.sin(beta[1:])), rel=1e-14)
+    assert t.tau(beta) == pytest.approx(80000.0 * 48.0 * (beta - b0) / 4200.0, rel=1e-14, abs=1e-12)
+    assert float(t.f(0.9)) == pytest.approx(350.0 * (math.cos(b0) - math.cos(0.9)), rel=1e-14)
+    c = t.characteristic(5)
+    b_m = b0 + 2 * 1500.0 * 2100.0 / (80000.0 * 48.0)
+    assert c["beta"] == pytest.approx(np.linspace(b0, b_m, 5), rel=1e-15)
+    assert c["f"] == pytest.approx(t.f(c["beta"]), rel=1e-15) and c["P"] == pytest.approx(t.P(c["beta"]), rel=1e-15)
+    assert c["M_T"] == pytest.approx(t.M_T(c["beta"]), rel=1e-15)
+    assert len(t.characteristic()["beta"]) == 201
+    assert len(t.characteristic(2)["beta"]) == 2 and len(t.characteristic(2.9)["beta"]) == 2
+    assert refused(t.characteristic, 1) == "num = 1: need >= 2 samples"
+    # adopted angles are kept (as floats) and used
+    a = _torsion(beta0_deg="19", beta_m_deg=115)
+    assert (a.beta0_deg, a.beta_m_deg) == (19.0, 115.0) and type(a.beta_m_deg) is float
+    assert a.beta0 == pytest.approx(math.radians(19.0), rel=1e-15)
+    assert a.beta_m == pytest.approx(math.radians(115.0), rel=1e-15)
+
+
+def test_torsion_suspension_yield_at_beta_m_both_sides():
+    # the adopted beta_m at exactly beta0 + gamma_m is accepted (tau = [tau]), a hair beyond is refused
+    t = _torsion()
+    bm = math.degrees(t.beta0 + t.gamma_m)
+    assert _torsion(beta_m_deg=bm).beta_m_deg == bm
+    over = bm + 0.01
+    msg = refused(_torsion, beta_m_deg=over)
+    tau_m = t.G * t.d_T * (math.radians(over) - t.beta0) / (2 * t.L_T)
+    assert msg == (f"beta_m_deg = {over!r}: torsion bar yields at beta_m: tau = {tau_m:.6g} MPa > [tau] = 1600 MPa "
+                   f"(twist {math.degrees(math.radians(over) - t.beta0):.6g} > gamma_m = "
+                   f"{math.degrees(t.gamma_m):.6g} deg)")
+    # the beta_m computed from eq. 10 past 180 deg: refused with its value
+    msg = refused(_torsion, beta_st_deg=150.0, L_T=4000.0)
+    t = _torsion(beta_st_deg=150.0, L_T=4000.0, beta_m_deg=179.0)       # the same bar with beta_m adopted
+    assert msg == f"beta_m_deg = {math.degrees(t.beta0 + t.gamma_m)!r}" + (
+        ": must be < 180 deg (P(beta) = M / (R_b sin beta) is singular there)")
+
+
+def _design(**kw):
+    from propulsor.laws.suspension import SuspensionDesign
+
+    args = dict(wheel_x_m=(-2.0, -0.5, 1.0, 2.5), damper_x_m=(-2.0, 2.5))
+    args.update(kw)
+    return SuspensionDesign(**args)
+
+
+def test_suspension_design_refusals_in_full():
+    assert refused(_design, torsion=3) == "torsion = 3: must be a TorsionSuspension"
+    assert refused(_design, G_p=0.0) == "G_p = 0.0: must be > 0 N"
+    assert refused(_design, I_y_kgm2=0.0) == "I_y_kgm2 = 0.0: must be > 0 kg m^2"
+    assert refused(_design, wheel_x_m=(1.0, float("nan"))) == "wheel_x_m = nan: must be a finite number"
+    assert refused(_design, wheel_x_m=(1.0,), damper_x_m=(1.0,)) == \
+        "wheel_x_m = (1.0,): need >= 2 wheel positions per side"
+    assert refused(_design, wheel_x_m=(1.0, 1.0, 2.0)) == "wheel_x_m = (1.0, 1.0, 2.0): wheel positions must be distinct"
+    assert refused(_design, damper_x_m=(float("inf"),)) == "damper_x_m = inf: must be a finite number"
+    assert refused(_design, damper_x_m=()) == "damper_x_m = (): need >= 1 damped wheel per side"
+    assert refused(_design, damper_x_m=(-2.0, 2.4)) == "damper_x_m = 2.4: a damper must sit on a wheel of wheel_x_m"
+    assert refused(_design, damper_x_m=(-2.0 + 2e-9,)) == \
+        f"damper_x_m = {-2.0 + 2e-9!r}: a damper must sit on a wheel of wheel_x_m"
+    assert _design(damper_x_m=(-2.0 + 5e-10,)).damper_x_m == (-2.0 + 5e-10,)
+    assert refused(_design, damper_x_m=(-2.0, -2.0)) == "damper_x_m = (-2.0, -2.0): one damper per wheel"
+    assert refused(_design, T_phi=0.0) == "T_phi = 0.0: must be > 0 s"
+    assert refused(_design, nu=float("nan")) == "nu = nan: must be a finite number"
+    assert refused(_design, nu=1.0) == "nu = 1.0: must be > 1"
+    assert refused(_design, reb_factor=float("inf")) == "reb_factor = inf: must be a finite number"
+    for rf in (0.0, 1.0000001):
+        assert refused(_design, reb_factor=rf) == f"reb_factor = {rf!r}: must lie in (0, 1] (seed: 0.8 ... 0.9)"
+    assert _design(reb_factor=1.0).reb_factor == 1.0 and _design(nu=1.0001).nu == 1.0001
+    assert refused(_design, h_n_m=0.0) == "h_n_m = 0.0: must be > 0 m"
+    assert refused(_design, zdd_over_g=0.0) == "zdd_over_g = 0.0: must be > 0"
+    assert refused(_design, i_a=0.0) == "i_a = 0.0: must be > 0"
+    assert refused(_design, damper_reading="x") == "damper_reading = 'x': must be one of ('lever', 'literal')"
+    assert refused(_design, p_max=0.0) == "p_max = 0.0: must be > 0 MPa"
+    assert refused(_design, d_rod=float("nan")) == "d_rod = nan: must be a finite number"
+    assert refused(_design, d_rod=-0.5) == "d_rod = -0.5: must be >= 0 mm"
+    assert _design(d_rod=0.0).d_rod == 0.0
+
+
+def test_suspension_design_stores_floats_and_defaults():
+    d = _design(G_p="4e5", I_y_kgm2=4, wheel_x_m=[-2, "1"], damper_x_m=["-2"], T_phi="1.5", h_n_m="0.04",
+                zdd_over_g="0.6", i_a="0.5", p_max="25")
+    assert (d.G_p, d.I_y_kgm2, d.wheel_x_m, d.damper_x_m, d.T_phi, d.h_n_m, d.zdd_over_g, d.i_a, d.p_max) == (
+        4e5, 4.0, (-2.0, 1.0), (-2.0,), 1.5, 0.04, 0.6, 0.5, 25.0)
+    assert all(type(v) is float for v in (d.G_p, d.I_y_kgm2, d.T_phi, d.h_n_m, d.zdd_over_g, d.i_a, d.p_max)
+               + d.wheel_x_m + d.damper_x_m)
+    e = _design()
+    assert (e.G_p, e.I_y_kgm2, e.T_phi, e.nu, e.reb_factor, e.h_n_m, e.zdd_over_g, e.i_a, e.damper_reading,
+            e.p_max, e.d_rod) == (473000.0, 421100.0, 1.8, 13.5, 0.85, 0.05, 0.5, 0.453, "lever", 20.0, 40.0)
+
+
+def test_suspension_uniform_wheel_positions_and_thesis_design():
+    from propulsor.laws.suspension import thesis_design, uniform_wheel_positions
+
+    assert uniform_wheel_positions(3, 4.0) == (-2.0, 0.0, 2.0)
+    assert uniform_wheel_positions(3, 4.0, 1.0) == (-1.0, 1.0, 3.0)
+    assert uniform_wheel_positions(2.0, 4.0, 0.0) == (0.0, 4.0)
+    assert all(type(x) is float for x in uniform_wheel_positions(3, 4.0))
+    assert refused(uniform_wheel_positions, 0, 4.0) == "n_side = 0: must be > 0"
+    assert refused(uniform_wheel_positions, 1, 4.0) == "n_side = 1: need >= 2 wheels"
+    assert refused(uniform_wheel_positions, 3, 0.0) == "base_m = 0.0: must be > 0 m"
+    assert refused(uniform_wheel_positions, 3, 4.0, float("nan")) == "x_cg_m = nan: must be a finite number"
+    d = thesis_design()
+    xs = tuple(float(x) for x in np.linspace(0.0, 6.846, 8) - 3.423)
+    assert d.wheel_x_m == pytest.approx(xs, rel=1e-15)
+    assert d.damper_x_m == pytest.approx((xs[0], xs[1], xs[6], xs[7]), rel=1e-15)
+    assert d.torsion.P_st == 31490.0 and d.torsion.beta0_deg is None and d.T_phi == 1.8
