@@ -1003,3 +1003,198 @@ def test_suspension_uniform_wheel_positions_and_thesis_design():
     assert d.wheel_x_m == pytest.approx(xs, rel=1e-15)
     assert d.damper_x_m == pytest.approx((xs[0], xs[1], xs[6], xs[7]), rel=1e-15)
     assert d.torsion.P_st == 31490.0 and d.torsion.beta0_deg is None and d.T_phi == 1.8
+
+
+# ============================================================== balancer_beam.py (seed 004 ch. 8)
+
+def test_balancer_limit_check_both_sides():
+    from propulsor.laws.balancer_beam import _limit_check
+
+    c = _limit_check("x", 2.0, 2.0, "MPa")
+    assert (c.name, c.passed, c.value, c.limit, c.unit) == ("x", True, 2.0, 2.0, "MPa")
+    assert _limit_check("x", 2.0000001, 2.0, "MPa").passed is False
+    assert _limit_check("x", 2.0, 2.0, "-", kind="min").passed is True
+    assert _limit_check("x", 1.9999999, 2.0, "-", kind="min").passed is False
+    assert _limit_check("x", 3.0, 2.0, "-", "min").passed is True
+    assert _limit_check("name", 1.0, 2.0, "-").message == "name"
+    assert _limit_check("name", 1.0, 2.0, "-", note="why").message == "why"
+
+
+def test_balancer_point_load_refusals_and_floats():
+    from propulsor.laws.balancer_beam import PointLoad
+
+    p = PointLoad("w", "1", 2, 3, 4)
+    assert (p.s, p.z, p.F_x, p.F_y) == (1.0, 2.0, 3.0, 4.0) and all(type(v) is float for v in (p.s, p.z, p.F_x, p.F_y))
+    for k in ("s", "z", "F_x", "F_y"):
+        kw = dict(s=1.0, z=2.0, F_x=3.0, F_y=4.0)
+        kw[k] = float("nan")
+        assert refused(PointLoad, "w", **kw) == f"w.{k} = nan: must be a finite number"
+
+
+def test_balancer_geometry_refusals_in_full():
+    from propulsor.laws.balancer_beam import BalancerGeometry as G
+
+    for k in ("b", "h", "s_stop", "a1", "a2", "d_upper", "D_upper", "r_upper", "d_lower", "D_lower", "r_lower",
+              "h_min", "h_max"):
+        assert refused(G, **{k: 0.0}) == f"{k} = 0.0: must be > 0 mm"
+    assert refused(G, e_w=float("nan")) == "e_w = nan: must be a finite number"
+    assert refused(G, e_a=float("inf")) == "e_a = inf: must be a finite number"
+    assert refused(G, t_wall=0.0) == "t_wall = 0.0: must be > 0 mm"
+    assert refused(G, t_wall=30.0) == "t_wall = 30.0: must be < b/2 = 30 mm"
+    assert refused(G, t_wall=20.0) == "t_wall = 20.0: must be < h_min/2 = 20 mm"
+    assert G(t_wall=19.99).t_wall == 19.99 and G(t_wall=29.0, h_min=60.0).t_wall == 29.0
+    assert refused(G, a1=200.0) == "a2 = 200.0: second bearing must lie beyond a1 = 200 mm"
+    assert refused(G, h_min=400.0) == "h_min = 400.0: must be < h_max = 400 mm"
+    assert refused(G, D_upper=110.0) == "D_upper = 110.0: shoulder must exceed the journal d_upper = 110 mm"
+    assert refused(G, D_lower=90.0) == "D_lower = 90.0: shoulder must exceed the spindle d_lower = 90 mm"
+    assert refused(G, d_upper_bore=float("nan")) == "d_upper_bore = nan: must be a finite number"
+    assert refused(G, d_upper_bore=110.0) == "d_upper_bore = 110.0: must lie in [0, d_upper = 110) mm"
+    assert refused(G, d_upper_bore=-1.0) == "d_upper_bore = -1.0: must lie in [0, d_upper = 110) mm"
+    assert refused(G, d_lower_bore=90.0) == "d_lower_bore = 90.0: must lie in [0, d_lower = 90) mm"
+    assert G(d_upper_bore=109.9, d_lower_bore="89.9").d_lower_bore == 89.9
+    assert refused(G, e_w=30.0) == "e_w = 30.0: wheel mid-plane must lie outboard of the arm face b/2 = 30 mm"
+    g = G(e_w=30.001, b="60", e_a=5)
+    assert g.e_w == 30.001 and g.b == 60.0 and type(g.e_a) is float and type(g.d_upper_bore) is float
+    d = G()
+    assert (d.b, d.h, d.t_wall, d.e_w, d.e_a, d.s_stop, d.a1, d.a2, d.d_upper, d.D_upper, d.r_upper, d.d_lower,
+            d.D_lower, d.r_lower, d.h_min, d.h_max, d.d_upper_bore, d.d_lower_bore) == (
+        60.0, 120.0, None, 150.0, 0.0, 300.0, 60.0, 200.0, 110.0, 150.0, 6.0, 90.0, 130.0, 6.0, 40.0, 400.0, 0.0, 0.0)
+
+
+def _rect_torsion_reference(a, b, terms=40):
+    """Timoshenko & Goodier §109 for a >= b, summed here with many terms."""
+    J = a * b ** 3 / 3 * (1 - 192 * b / (math.pi ** 5 * a) * sum(math.tanh(n * math.pi * a / (2 * b)) / n ** 5
+                                                                   for n in range(1, 2 * terms, 2)))
+    s = sum(1 / (n ** 2 * math.cosh(min(n * math.pi * a / (2 * b), 700.0))) for n in range(1, 2 * terms, 2))
+    return J, b / J * (1 - 8 / math.pi ** 2 * s)
+
+
+def test_balancer_rect_torsion_and_sections_exact():
+    from propulsor.laws.balancer_beam import RectSection, _rect_torsion
+
+    for a, b in ((120.0, 60.0), (60.0, 120.0), (50.0, 50.0), (400.0, 10.0)):
+        J, k = _rect_torsion(a, b)
+        Jr, kr = _rect_torsion_reference(max(a, b), min(a, b))            # the module's 40 terms
+        assert J == pytest.approx(Jr, rel=1e-13) and k == pytest.approx(kr, rel=1e-13)
+        Jc, kc = _rect_torsion_reference(max(a, b), min(a, b), 4000)     # converged: 40 terms are within 1e-8
+        assert J == pytest.approx(Jc, rel=1e-8) and k == pytest.approx(kc, rel=1e-8)
+    # two terms only: a coarser value (the default is 40)
+    assert _rect_torsion(50.0, 50.0, 1)[0] != pytest.approx(_rect_torsion(50.0, 50.0)[0], rel=1e-6)
+    assert _rect_torsion(50.0, 50.0, 40) == _rect_torsion(50.0, 50.0)
+    s = RectSection(60, "100")
+    assert (s.b, s.h, s.t) == (60.0, 100.0, None) and type(s.b) is float
+    assert s.A == 6000.0 and s.I_z == 60 * 100 ** 3 / 12 and s.I_y == 100 * 60 ** 3 / 12
+    assert s.W_z == pytest.approx(60 * 100 ** 2 / 6, rel=1e-15) and s.W_y == pytest.approx(100 * 60 ** 2 / 6, rel=1e-15)
+    J, k = _rect_torsion(100.0, 60.0)
+    assert s.J_t == J and float(s.tau_torsion(-2e6)) == pytest.approx(2e6 * k, rel=1e-15)
+    assert float(s.tau_shear_y(-6000.0)) == pytest.approx(1.5, rel=1e-15)
+    hs = RectSection(60.0, 100.0, 5)
+    assert hs.t == 5.0 and type(hs.t) is float
+    assert hs.A == 6000.0 - 50 * 90 and hs.I_y == pytest.approx((100 * 60 ** 3 - 90 * 50 ** 3) / 12, rel=1e-15)
+    Q = (60 * 100 ** 2 - 50 * 90 ** 2) / 8
+    assert float(hs.tau_shear_y(1000.0)) == pytest.approx(1000.0 * Q / (hs.I_z * 10.0), rel=1e-15)
+    assert refused(RectSection, 0.0, 1.0) == "b = 0.0: must be > 0 mm"
+    assert refused(RectSection, 1.0, 0.0) == "h = 0.0: must be > 0 mm"
+    assert refused(RectSection, 10.0, 20.0, 0.0) == "t = 0.0: must be > 0 mm"
+    assert refused(RectSection, 10.0, 20.0, 5.0) == "t = 5.0: wall must be < half of min(b, h) = 5 mm"
+    assert refused(RectSection, 20.0, 10.0, 5.0) == "t = 5.0: wall must be < half of min(b, h) = 5 mm"
+    assert RectSection(10.0, 20.0, 4.999).t == 4.999
+
+
+def test_balancer_von_mises_three_points_exact():
+    from propulsor.laws.balancer_beam import RectSection
+
+    for t in (None, 6.0):
+        s = RectSection(60.0, 100.0, t)
+        N, V, T, My, Mz = -3000.0, 2000.0, -1.5e6, 2e6, -4e6
+        sN, sz, sy = 3000.0 / s.A, 4e6 / s.W_z, 2e6 / s.W_y
+        tT, tV = float(s.tau_torsion(T)), float(s.tau_shear_y(V))
+        tc = 0.0 if t is None else tT
+        p = [math.sqrt((sN + sz) ** 2 + 3 * tT ** 2), math.sqrt((sN + sy) ** 2 + 3 * (tT + tV) ** 2),
+             math.sqrt((sN + sz + sy) ** 2 + 3 * tc ** 2)]
+        assert float(s.von_mises(N, V, T, My, Mz)) == pytest.approx(max(p), rel=1e-14)
+        # each point can be the largest: the y-faces (bending M_z), the z-faces (shear), the corner
+        assert float(s.von_mises(0.0, 0.0, 3e6, 0.0, 1e3)) == pytest.approx(
+            max(math.sqrt((1e3 / s.W_z) ** 2 + 3 * float(s.tau_torsion(3e6)) ** 2),
+                math.sqrt(3) * float(s.tau_torsion(3e6)),
+                math.sqrt((1e3 / s.W_z) ** 2 + 3 * (0 if t is None else float(s.tau_torsion(3e6))) ** 2)), rel=1e-14)
+        assert float(s.von_mises(0.0, 5e4, 0.0, 1e3, 0.0)) == pytest.approx(
+            math.sqrt((1e3 / s.W_y) ** 2 + 3 * float(s.tau_shear_y(5e4)) ** 2), rel=1e-14)
+    solid = RectSection(60.0, 100.0)
+    # corner of a solid section: no torsional shear there
+    assert float(solid.von_mises(0.0, 0.0, 1e3, 5e6, 5e6)) == pytest.approx(5e6 / solid.W_z + 5e6 / solid.W_y,
+                                                                           rel=1e-12)
+    assert float(RectSection(60.0, 100.0, 6.0).von_mises(0.0, 0.0, 1e6, 5e6, 5e6)) == pytest.approx(
+        math.sqrt((5e6 / RectSection(60.0, 100.0, 6.0).W_z + 5e6 / RectSection(60.0, 100.0, 6.0).W_y) ** 2
+                  + 3 * float(RectSection(60.0, 100.0, 6.0).tau_torsion(1e6)) ** 2), rel=1e-12)
+
+
+def _kt_reference(D, d, r, load):
+    h = (D - d) / 2
+    x = h / r
+    u = math.sqrt(x)
+    if load == "bending" and x <= 2:
+        C = (0.947 + 1.206 * u - 0.131 * x, 0.022 - 3.405 * u + 0.915 * x, 0.869 + 1.777 * u - 0.555 * x,
+             -0.810 + 0.422 * u - 0.260 * x)
+    elif load == "bending":
+        C = (1.232 + 0.832 * u - 0.008 * x, -3.813 + 0.968 * u - 0.260 * x, 7.423 - 4.868 * u + 0.869 * x,
+             -3.839 + 3.070 * u - 0.600 * x)
+    else:
+        C = (0.905 + 0.783 * u - 0.075 * x, -0.437 - 1.969 * u + 0.553 * x, 1.557 + 1.073 * u - 0.578 * x,
+             -1.061 + 0.171 * u + 0.086 * x)
+    q = 2 * h / D
+    return C[0] + C[1] * q + C[2] * q ** 2 + C[3] * q ** 3
+
+
+def test_balancer_peterson_fits_exact_and_their_ranges():
+    """Pilkey & Pilkey Charts 3.10 / 3.12 (Roark Table 17.1 case 17) at points of every branch and range end."""
+    from propulsor.laws.balancer_beam import kt_shoulder_fillet as kt
+
+    D, d = 150.0, 110.0                                    # h = 20
+    for r in (200.0, 20.0, 10.0001, 10.0, 9.9999, 4.0, 1.0):  # h/r = 0.1, 1, 2-, 2, 2+, 5, 20
+        assert kt(D, d, r) == pytest.approx(_kt_reference(D, d, r, "bending"), rel=1e-14), r
+        assert kt(D, d, r, "bending") == kt(D, d, r)
+    for r in (80.0, 20.0, 5.0):                             # h/r = 0.25, 1, 4
+        assert kt(D, d, r, "torsion") == pytest.approx(_kt_reference(D, d, r, "torsion"), rel=1e-14), r
+    # the default upper axle: K_t = 2.05 bending, 1.61 torsion (module docstring)
+    assert round(kt(150.0, 110.0, 6.0), 2) == 2.05 and round(kt(150.0, 110.0, 6.0, "torsion"), 2) == 1.61
+    assert refused(kt, 150.0, 110.0, 201.0) == "r = 201.0: h/r = 0.0995 outside Peterson's bending fit 0.1 ... 20"
+    assert refused(kt, 150.0, 110.0, 0.999) == "r = 0.999: h/r = 20.02 outside Peterson's bending fit 0.1 ... 20"
+    assert refused(kt, 150.0, 110.0, 81.0, "torsion") == "r = 81.0: h/r = 0.2469 outside Peterson's torsion fit 0.25 ... 4"
+    assert refused(kt, 150.0, 110.0, 4.99, "torsion") == "r = 4.99: h/r = 4.008 outside Peterson's torsion fit 0.25 ... 4"
+    assert refused(kt, 150.0, 110.0, 6.0, "shear") == "load = 'shear': must be 'bending' or 'torsion'"
+    assert refused(kt, 0.0, 110.0, 6.0) == "D = 0.0: must be > 0 mm"
+    assert refused(kt, 150.0, 0.0, 6.0) == "d = 0.0: must be > 0 mm"
+    assert refused(kt, 150.0, 110.0, 0.0) == "r = 0.0: must be > 0 mm"
+    assert refused(kt, 110.0, 110.0, 6.0) == "D = 110.0: shoulder must exceed the shaft d = 110 mm"
+
+
+def test_balancer_statics_by_hand():
+    from propulsor.laws.balancer_beam import PointLoad, internal_forces, moment_about, reactions
+
+    loads = (PointLoad("a", 300.0, 100.0, -2000.0, 5000.0), PointLoad("b", 120.0, -20.0, 400.0, -1000.0))
+    # (r - p) x F with r = (s, 0, z), F = (F_x, F_y, 0): (-z F_y, z F_x, s F_y) about the origin
+    M0 = np.array([-100 * 5000.0 + -(-20) * -1000.0, 100 * -2000.0 + -20 * 400.0, 300 * 5000.0 + 120 * -1000.0])
+    assert moment_about(loads, (0, 0, 0)) == pytest.approx(M0, rel=1e-15)
+    p = (10.0, 0.0, -30.0)
+    Mp = np.array([-(130) * 5000.0 - (10) * -1000.0, 130 * -2000.0 + 10 * 400.0, 290 * 5000.0 + 110 * -1000.0])
+    assert moment_about(loads, p) == pytest.approx(Mp, rel=1e-15)
+    r = reactions(loads, 60, 200)
+    assert (r.z1, r.z2) == (-60.0, -200.0)
+    F, M = r.residual(loads)
+    assert np.abs(F).max() < 1e-9 and np.abs(M).max() < 1e-6
+    assert r.bar_torque == pytest.approx(-M0[2], rel=1e-15)
+    # x: B1 + B2 = -F_x; moment about y: -60 B1x - 200 B2x = -M_y
+    Fx = -2000.0 + 400.0
+    A = np.array([[1.0, 1.0], [-60.0, -200.0]])
+    assert [r.bearing1[0], r.bearing2[0]] == pytest.approx(np.linalg.solve(A, [-Fx, -M0[1]]), rel=1e-12)
+    assert [r.bearing1[1], r.bearing2[1]] == pytest.approx(np.linalg.solve(A, [-4000.0, M0[0]]), rel=1e-12)
+    assert r.bearing1[2] == 0.0 and r.bearing2[2] == 0.0
+    f = internal_forces(loads, [0.0, 120.0, 200.0, 300.0])
+    # at 0: both loads outboard; at 120 only "a" (strictly outboard); at 300 none
+    assert f["N"].tolist() == [-1600.0, -2000.0, -2000.0, 0.0]
+    assert f["V_y"].tolist() == [4000.0, 5000.0, 5000.0, 0.0]
+    assert f["T"].tolist() == [-100 * 5000.0 + 20 * -1000.0, -500000.0, -500000.0, 0.0]
+    assert f["M_y"].tolist() == [100 * -2000.0 - 20 * 400.0, -200000.0, -200000.0, 0.0]
+    assert f["M_z"].tolist() == [300 * 5000.0 + 120 * -1000.0, 180 * 5000.0, 100 * 5000.0, 0.0]
+    assert internal_forces(loads, 0.0)["N"].shape == (1,)
