@@ -1198,3 +1198,190 @@ def test_balancer_statics_by_hand():
     assert f["M_y"].tolist() == [100 * -2000.0 - 20 * 400.0, -200000.0, -200000.0, 0.0]
     assert f["M_z"].tolist() == [300 * 5000.0 + 120 * -1000.0, 180 * 5000.0, 100 * 5000.0, 0.0]
     assert internal_forces(loads, 0.0)["N"].shape == (1,)
+
+
+def test_balancer_load_cases_exact_and_refusals():
+    from propulsor.laws.balancer_beam import BalancerGeometry, load_cases
+    from propulsor.laws.suspension import thesis_design
+
+    d = thesis_design()
+    tor = d.torsion
+    b, R, MT, Pm = tor.beta_m, tor.R_b, tor.M_T_max, tor.P_m
+    g = BalancerGeometry(e_w=140.0, e_a=12.0, s_stop=250.0)
+    cs = load_cases(d, g, 2.5)
+    assert [c.name for c in cs] == ["beta_m elastic", "beta_m + damper", "stop"]
+    assert all(c.beta == b and c.bar_torque_expected == MT for c in cs)
+    (w,) = cs[0].loads
+    assert (w.name, w.s, w.z) == ("wheel", R, 140.0)
+    assert (w.F_x, w.F_y) == pytest.approx((-Pm * math.cos(b), Pm * math.sin(b)), rel=1e-15)
+    w, ear = cs[1].loads
+    L_a, Fa = d.L_a, d.R_a_comp_max
+    Pw = (MT + Fa * L_a) / (R * math.sin(b))
+    assert (ear.name, ear.s, ear.z, ear.F_x, ear.F_y) == ("damper ear", L_a, 12.0, 0.0, -Fa)
+    assert (w.F_x, w.F_y) == pytest.approx((-Pw * math.cos(b), Pw * math.sin(b)), rel=1e-15)
+    w, stop = cs[2].loads
+    Ps = 2.5 * Pm
+    assert (w.F_x, w.F_y) == pytest.approx((-Ps * math.cos(b), Ps * math.sin(b)), rel=1e-15)
+    assert (stop.name, stop.s, stop.z, stop.F_x) == ("stop pad", 250.0, 0.0, 0.0)
+    assert stop.F_y == pytest.approx(-(Ps * R * math.sin(b) - MT) / 250.0, rel=1e-14)
+    assert load_cases(d, g)[2].loads[0].F_y == pytest.approx(2.0 * Pm * math.sin(b), rel=1e-15)   # default k_stop 2
+    assert load_cases(d, g, 1.0)[2].loads[1].F_y == pytest.approx(0.0, abs=1e-6)                # k = 1: pad idle
+    assert refused(load_cases, d, g, float("nan")) == "k_stop = nan: must be a finite number"
+    assert refused(load_cases, d, g, 0.999) == \
+        "k_stop = 0.999: stop load factor must be >= 1 (the stop carries the excess over P(beta_m))"
+    assert refused(load_cases, d, BalancerGeometry(s_stop=360.001)) == \
+        "s_stop = 360.001: stop pad must lie on the arm, <= R_b = 360 mm"
+    assert load_cases(d, BalancerGeometry(s_stop=360.0))[2].loads[1].s == 360.0
+    from propulsor.laws.suspension import SuspensionDesign
+
+    lit = SuspensionDesign(wheel_x_m=d.wheel_x_m, damper_x_m=d.damper_x_m, damper_reading="literal")
+    assert refused(load_cases, lit, g) == (f"i_a = 0.453: damper ear arm L_a = {360 / 0.453:.4g} mm lies beyond the "
+                                           f"balancer R_b = 360 mm (reading 'literal')")
+    edge = SuspensionDesign(wheel_x_m=d.wheel_x_m, damper_x_m=d.damper_x_m, i_a=1.0)   # the ear at the wheel
+    assert load_cases(edge, g)[1].loads[1].s == 360.0
+
+
+def test_balancer_equal_strength_depth_branches():
+    from propulsor.laws.balancer_beam import BalancerGeometry, RectSection, equal_strength_depth
+
+    g = BalancerGeometry()
+    f = {"N": np.array([0.0, 0.0, 0.0]), "V_y": np.array([0.0, 0.0, 0.0]), "T": np.array([0.0, 0.0, 0.0]),
+         "M_y": np.array([0.0, 0.0, 0.0]), "M_z": np.array([1e3, 6e7, 60 * 40.0 ** 2 / 6 * 100.0])}
+    h = equal_strength_depth(f, g, 100.0)
+    # M_z / (b h^2 / 6) = 100 MPa: h = sqrt(6 M / (100 b)); the third station sits exactly on h_min
+    assert h[0] == 40.0 and h[2] == 40.0
+    assert h[1] == pytest.approx(math.sqrt(6 * 6e7 / (100.0 * 60.0)), abs=1e-8)
+    assert float(RectSection(60.0, h[1]).von_mises(0, 0, 0, 0, 6e7)) == pytest.approx(100.0, rel=1e-10)
+    assert refused(equal_strength_depth, f, g, 0.0) == "sigma_allow = 0.0: must be > 0 MPa"
+    big = {k: v[1:2] for k, v in f.items()}
+    big["M_z"] = np.array([60 * 400.0 ** 2 / 6 * 100.0 * 1.001])
+    assert refused(equal_strength_depth, big, g, 100.0) == (
+        "h_max = 400.0: even h_max leaves sigma_vM > 100 MPa at a station; widen the arm (b) or raise h_max")
+    big["M_z"] = np.array([60 * 400.0 ** 2 / 6 * 100.0])                 # exactly at h_max: allowed
+    assert equal_strength_depth(big, g, 100.0)[0] == pytest.approx(400.0, abs=1e-8)
+
+
+def test_balancer_analysis_refusals_defaults_and_stations():
+    from propulsor.laws.balancer_beam import YIELD_40KhN2MA, BalancerAnalysis, BalancerGeometry
+    from propulsor.laws.suspension import thesis_design
+
+    d = thesis_design()
+    assert YIELD_40KhN2MA == 930.0
+    a = BalancerAnalysis(d)
+    assert (a.k_stop, a.sigma_yield, a.safety, a.n_stations) == (2.0, 930.0, 1.5, 73)
+    assert a.geom == BalancerGeometry() and a.sigma_allow == 620.0
+    assert a.s == pytest.approx(np.arange(73) * 360.0 / 73, rel=1e-14) and len(a.s) == 73
+    b = BalancerAnalysis(d, sigma_yield="900", safety=1.0, n_stations=3.7)
+    assert (b.sigma_yield, b.n_stations) == (900.0, 3) and type(b.sigma_yield) is float and type(b.n_stations) is int
+    assert b.s.tolist() == [0.0, 120.0, 240.0] and b.sigma_allow == 900.0
+    assert refused(BalancerAnalysis, d, sigma_yield=0.0) == "sigma_yield = 0.0: must be > 0 MPa"
+    assert refused(BalancerAnalysis, d, safety=float("nan")) == "safety = nan: must be a finite number"
+    assert refused(BalancerAnalysis, d, safety=0.999) == "safety = 0.999: safety factor must be >= 1"
+    assert refused(BalancerAnalysis, d, n_stations=2) == "n_stations = 2: need >= 3 stations"
+    assert [c.name for c in a.cases] == ["beta_m elastic", "beta_m + damper", "stop"]
+    assert BalancerAnalysis(d, k_stop=3.0).cases[2].loads[0].F_y == pytest.approx(
+        3.0 * d.torsion.P_m * math.sin(d.torsion.beta_m), rel=1e-15)
+
+
+def test_balancer_stresses_mass_and_transitions_by_hand():
+    from propulsor.laws.balancer_beam import (RHO_STEEL, BalancerAnalysis, BalancerGeometry, RectSection,
+                                              internal_forces, kt_shoulder_fillet, moment_about)
+    from propulsor.laws.suspension import thesis_design
+
+    d = thesis_design()
+    g = BalancerGeometry(d_upper_bore=30.0, d_lower_bore=20.0)
+    a = BalancerAnalysis(d, g, n_stations=4)
+    s = np.array([0.0, 90.0, 180.0, 270.0])
+    h = np.array([150.0, 120.0, 90.0, 60.0])
+    st = a.stresses(h)
+    for c in a.cases:
+        f = internal_forces(c.loads, s)
+        want = [float(RectSection(60.0, h[i]).von_mises(f["N"][i], f["V_y"][i], f["T"][i], f["M_y"][i], f["M_z"][i]))
+                for i in range(4)]
+        assert st[c.name] == pytest.approx(want, rel=1e-15)
+        assert a.forces(c)["M_z"] == pytest.approx(f["M_z"], rel=1e-15)
+    assert a.stresses(100.0)["stop"].shape == (4,)
+    # mass: the prism's areas with the last station's area carried to R_b, trapezoid rule
+    A = 60.0 * np.array([150.0, 120.0, 90.0, 60.0, 60.0])
+    ss = np.array([0.0, 90.0, 180.0, 270.0, 360.0])
+    m, sc = a.arm_mass(h)
+    assert RHO_STEEL == 7.85e-6
+    assert m == pytest.approx(RHO_STEEL * float(np.trapezoid(A, ss)), rel=1e-14)
+    assert sc == pytest.approx(float(np.trapezoid(A * ss, ss) / np.trapezoid(A, ss)), rel=1e-14)
+    m0, _ = a.arm_mass()
+    h_eq = a.envelope_depth()
+    assert m0 == pytest.approx(a.arm_mass(h_eq)[0], rel=1e-15)
+    from propulsor.laws.balancer_beam import equal_strength_depth
+
+    assert h_eq.tolist() == np.max([equal_strength_depth(a.forces(c), g, 620.0) for c in a.cases], axis=0).tolist()
+    # transitions: upper fillet at the inboard face, spindle fillet with the wheel load alone
+    rows = a.transitions()
+    assert [(r["case"], r["where"]) for r in rows] == [
+        (c.name, w) for c in a.cases for w in ("upper axle fillet", "wheel spindle fillet")]
+    kb_u, kt_u = kt_shoulder_fillet(150.0, 110.0, 6.0), kt_shoulder_fillet(150.0, 110.0, 6.0, "torsion")
+    kb_l = kt_shoulder_fillet(130.0, 90.0, 6.0)
+    W_u = math.pi * (110.0 ** 4 - 30.0 ** 4) / (32 * 110.0)
+    W_l = math.pi * (90.0 ** 4 - 20.0 ** 4) / (32 * 90.0)
+    for k, c in enumerate(a.cases):
+        up, sp = rows[2 * k], rows[2 * k + 1]
+        M = moment_about(c.loads, (0.0, 0.0, -30.0))
+        sb, tt = math.hypot(M[0], M[1]) / W_u, abs(M[2]) / (2 * W_u)
+        assert (up["K_t_bending"], up["K_t_torsion"]) == (kb_u, kt_u)
+        assert up["sigma_nom"] == pytest.approx(sb, rel=1e-14) and up["tau_nom"] == pytest.approx(tt, rel=1e-14)
+        assert up["sigma_vM_nom"] == pytest.approx(math.sqrt(sb ** 2 + 3 * tt ** 2), rel=1e-14)
+        assert up["sigma_vM_peak"] == pytest.approx(math.sqrt((kb_u * sb) ** 2 + 3 * (kt_u * tt) ** 2), rel=1e-14)
+        w = c.loads[0]
+        Ms = moment_about([w], (360.0, 0.0, 30.0))
+        sbl = math.hypot(Ms[0], Ms[1]) / W_l
+        assert (sp["K_t_bending"], sp["K_t_torsion"], sp["tau_nom"]) == (kb_l, 1.0, 0.0)
+        assert sp["sigma_nom"] == pytest.approx(sbl, rel=1e-14) and sp["sigma_vM_nom"] == sp["sigma_nom"]
+        assert sp["sigma_vM_peak"] == pytest.approx(kb_l * sbl, rel=1e-14)
+    # the stop pad at the wheel station but in the arm (z = 0 <= b/2) does not bend the spindle
+    pad = BalancerAnalysis(d, BalancerGeometry(s_stop=360.0))
+    stop = pad.cases[2]
+    assert stop.loads[1].s == 360.0
+    Ms = moment_about(stop.loads[:1], (360.0, 0.0, 30.0))
+    assert pad.transitions()[5]["sigma_nom"] == pytest.approx(math.hypot(Ms[0], Ms[1]) / (math.pi * 90.0 ** 3 / 32),
+                                                              rel=1e-14)
+
+
+def test_balancer_run_checks_exact():
+    from propulsor.laws.balancer_beam import BalancerAnalysis, reactions
+    from propulsor.laws.suspension import thesis_design
+
+    d = thesis_design()
+    a = BalancerAnalysis(d, n_stations=12)
+    r = a.run()
+    checks = {c.name: c for c in r["checks"]}
+    tor = d.torsion
+    for c in a.cases:
+        re = reactions(c.loads, 60.0, 200.0)
+        F, M = re.residual(c.loads)
+        scale = max(abs(L.F_y) for L in c.loads) * 360.0
+        k = checks[f"{c.name}: statics residual"]
+        assert k.value == pytest.approx(float(np.linalg.norm(F) + np.linalg.norm(M) / 360.0), rel=1e-9, abs=1e-12)
+        assert k.limit == pytest.approx(1e-9 * scale / 360.0, rel=1e-15) and k.unit == "N" and k.passed
+        k = checks[f"{c.name}: bar torque vs M_T(beta_m)"]
+        assert k.value == pytest.approx(abs(re.bar_torque + c.bar_torque_expected) / c.bar_torque_expected, abs=1e-15)
+        assert (k.limit, k.unit, k.message) == (1e-9, "-", "bar reacts the characteristic's torque")
+        k = checks[f"{c.name}: constant arm sigma_vM"]
+        assert k.value == float(np.max(r["sigma_vM_constant"][c.name])) and k.limit == 620.0 and k.unit == "MPa"
+        k = checks[f"{c.name}: equal-strength arm sigma_vM"]
+        assert k.value == float(np.max(r["sigma_vM_equal_strength"][c.name]))
+        assert k.limit == pytest.approx(620.0 * (1 + 1e-9), rel=1e-15)
+    for row in r["transitions"]:
+        k = checks[f"{row['case']}: {row['where']} safety factor"]
+        assert k.value == pytest.approx(930.0 / row["sigma_vM_peak"], rel=1e-15) and k.limit == 1.5
+        assert k.message == f"K_t = {row['K_t_bending']:.3f} (Peterson)" and k.unit == "-"
+    k = checks["torsion bar shear at beta_m"]
+    assert (k.value, k.limit, k.unit) == (pytest.approx(float(tor.tau(tor.beta_m)), rel=1e-15), 1600.0, "MPa")
+    assert len(r["checks"]) == 3 * 4 + 6 + 1
+    assert r["s"].tolist() == a.s.tolist()
+    assert r["h_equal_strength"] == pytest.approx(a.envelope_depth(), rel=1e-15)
+    m_eq, sc_eq = a.arm_mass(r["h_equal_strength"])
+    m_c, sc_c = a.arm_mass(120.0)
+    assert (r["mass_equal_strength_kg"], r["com_equal_strength_mm"]) == pytest.approx((m_eq, sc_eq), rel=1e-15)
+    assert (r["mass_constant_kg"], r["com_constant_mm"]) == pytest.approx((m_c, sc_c), rel=1e-15)
+    assert r["sigma_vM_constant"]["stop"] == pytest.approx(a.stresses(120.0)["stop"], rel=1e-15)
+    assert r["forces"]["stop"]["M_z"] == pytest.approx(a.forces(a.cases[2])["M_z"], rel=1e-15)
+    assert len(r["transitions"]) == 6
