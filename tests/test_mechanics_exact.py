@@ -135,6 +135,8 @@ def test_solid_tyre_refusals_in_full():
     assert refused(_tyre, b=-1.0) == "b = -1.0: must be > 0 mm"
     assert refused(_tyre, H=0.0) == "H = 0.0: must be > 0 mm"
     assert refused(_tyre, H=315.0) == "H = 315.0: rubber thickness must be < R = 315 mm"
+    assert refused(_tyre, H=315.0, F=1e5) == "H = 315.0: rubber thickness must be < R = 315 mm"   # F given too
+    assert _tyre(H=314.999, F=1e5).H == 314.999
     assert refused(_tyre, E=0.0) == "E = 0.0: must be > 0 MPa"
     assert refused(_tyre, alpha=0.0) == "alpha = 0.0: must be > 0 W/(m^2 K)"
     assert refused(_tyre, psi=float("nan")) == "psi = nan: must be a finite number"
@@ -162,6 +164,7 @@ def test_solid_tyre_load_refusals():
     assert refused(t.q_m, -3) == "P = -3.0: tyre load must be finite and > 0 N"
     assert refused(t.q_mean, [1.0, float("nan")]) == "P = [1.0, nan]: tyre load must be finite and > 0 N"
     assert refused(t.work_per_turn, [2.0, 0.0]) == "P = [2.0, 0.0]: tyre load must be finite and > 0 N"
+    assert refused(t.work_per_turn, [2, -1]) == "P = [2.0, -1.0]: tyre load must be finite and > 0 N"   # as read
     assert refused(t.deflection, float("inf")) == "P = inf: tyre load must be finite and > 0 N"
     assert float(t.contact_length(1e-6)) > 0
 
@@ -177,6 +180,10 @@ def test_solid_tyre_deflection_limit_both_sides():
     msg = refused(t.deflection, 1.001 * P_star)
     lam = 1.001 * H
     assert msg == f"P = {float(1.001 * P_star)!r}: deflection {lam:.4g} mm reaches the rubber thickness H = 8 mm"
+    # exactly at H (H/R = 1/8, E = b = 1: l = sqrt(R P), lambda = P / 8 = H at P = 64): refused, it "reaches" H
+    exact = _tyre(R=64.0, b=1.0, H=8.0, E=1.0)
+    assert refused(exact.deflection, 64.0) == "P = 64.0: deflection 8 mm reaches the rubber thickness H = 8 mm"
+    assert float(exact.deflection(63.0)) == pytest.approx(63.0 / 8.0, rel=1e-15)
     msg = refused(t.deflection, [below, 1.002 * P_star, 0.5 * P_star])
     assert msg == (f"P = {float(1.002 * P_star)!r}: deflection {1.002 * H:.4g} mm reaches the rubber thickness "
                    f"H = 8 mm")
