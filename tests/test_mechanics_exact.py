@@ -1392,3 +1392,187 @@ def test_balancer_run_checks_exact():
     assert r["sigma_vM_constant"]["stop"] == pytest.approx(a.stresses(120.0)["stop"], rel=1e-15)
     assert r["forces"]["stop"]["M_z"] == pytest.approx(a.forces(a.cases[2])["M_z"], rel=1e-15)
     assert len(r["transitions"]) == 6
+
+
+# ============================================================== cam_design.py (seed 001, after eq. 29)
+
+def test_cam_design_limits_refusals_both_sides_and_defaults():
+    from propulsor.laws.cam_design import DesignLimits as L
+
+    d = L()
+    assert (d.gamma_max_deg, d.R_factor, d.sigma_allow, d.shoe_radius_min, d.footprint_ratio_max, d.cam_core_min,
+            d.hub_height_tol, d.ground_clearance_min, d.return_lift_max) == (30.0, 1.5, 1500.0, 0.0, 0.85, 40.0, 0.01,
+                                                                           0.0, None)
+    assert refused(L, gamma_max_deg=float("nan")) == "gamma_max_deg = nan: must be a finite number"
+    for g in (0.0, 90.0):
+        assert refused(L, gamma_max_deg=g) == f"gamma_max_deg = {g!r}: must be in (0, 90) deg"
+    assert L(gamma_max_deg=1e-9).gamma_max_deg == 1e-9 and L(gamma_max_deg=89.999).gamma_max_deg == 89.999
+    assert refused(L, R_factor=0.0) == "R_factor = 0.0: must be > 0"
+    assert refused(L, sigma_allow=0.0) == "sigma_allow = 0.0: must be > 0 MPa"
+    assert refused(L, shoe_radius_min=float("inf")) == "shoe_radius_min = inf: must be a finite number"
+    assert refused(L, shoe_radius_min=-1e-9) == "shoe_radius_min = -1e-09: must be >= 0 mm"
+    assert refused(L, footprint_ratio_max=0.0) == "footprint_ratio_max = 0.0: must be > 0"
+    assert refused(L, cam_core_min=float("nan")) == "cam_core_min = nan: must be a finite number"
+    assert refused(L, cam_core_min=-1e-9) == "cam_core_min = -1e-09: must be >= 0 mm"
+    assert refused(L, hub_height_tol=0.0) == "hub_height_tol = 0.0: must be > 0 mm"
+    assert refused(L, return_lift_max=float("nan")) == "return_lift_max = nan: must be a finite number"
+    assert refused(L, return_lift_max=-1e-9) == "return_lift_max = -1e-09: must be >= 0 mm (or None: no limit)"
+    assert refused(L, ground_clearance_min=float("nan")) == "ground_clearance_min = nan: must be a finite number"
+    assert refused(L, ground_clearance_min=-1e-9) == "ground_clearance_min = -1e-09: must be >= 0 mm"
+    z = L(shoe_radius_min=0.0, cam_core_min=0.0, return_lift_max=0.0, ground_clearance_min=0.0)
+    assert (z.shoe_radius_min, z.cam_core_min, z.return_lift_max, z.ground_clearance_min) == (0.0, 0.0, 0.0, 0.0)
+
+
+def test_cam_design_search_grid_refusals_and_laws():
+    from propulsor.laws.cam_design import SearchGrid
+
+    d = SearchGrid()
+    assert (d.linear_k0, d.quadratic_k0, d.exponential_k0, d.exponential_k1, d.symmetric) == (
+        (-0.004, 0.03, 60), (-0.004, 0.05, 60), (0.0, 0.012, 13), (-2.0, 2.0, 11), True)
+    assert len(d.laws()) == 60 + 60 + 13 * 11
+    for name in ("linear_k0", "quadratic_k0", "exponential_k0", "exponential_k1"):
+        for bad in ((0.03, 0.0, 5), (0.0, 0.05, 2.5), (0.0, 0.05, -1), (0.0, float("nan"), 3), (0.0, 1.0), [0, 1, 2, 3],
+                    "0.0"):
+            assert refused(SearchGrid, **{name: bad}) == \
+                f"SearchGrid.{name} = {bad!r}: must be (lo, hi, n) with lo <= hi and a whole n >= 0"
+        assert getattr(SearchGrid(**{name: [0.01, 0.01, 0]}), name) == [0.01, 0.01, 0]     # lo = hi, n = 0, a list
+    g = SearchGrid(linear_k0=(0.0, 0.02, 3), quadratic_k0=(0.01, 0.01, 1), exponential_k0=(0.001, 0.002, 2),
+                   exponential_k1=(-1.0, 1.0, 2), symmetric=False)
+    laws = g.laws()
+    assert [(L.kind, L.k0, L.k1, L.symmetric) for L in laws] == [
+        ("linear", 0.0, 0.0, False), ("linear", 0.01, 0.0, False), ("linear", 0.02, 0.0, False),
+        ("quadratic", 0.01, 0.0, False),
+        ("exponential", 0.001, -1.0, False), ("exponential", 0.001, 1.0, False),
+        ("exponential", 0.002, -1.0, False), ("exponential", 0.002, 1.0, False)]
+    assert all(type(L.k0) is float and type(L.k1) is float for L in laws)
+    assert all(L.symmetric for L in SearchGrid(linear_k0=(0.0, 0.02, 2), quadratic_k0=(0, 0, 0),
+                                               exponential_k0=(0, 0, 0), exponential_k1=(0, 0, 0)).laws())
+
+
+def test_cam_design_min_positive():
+    from propulsor.laws.cam_design import _min_positive
+
+    assert _min_positive([3.0, -1.0, 0.0, 2.0, float("inf"), float("nan")]) == 2.0
+    assert _min_positive([-1.0, 0.0]) == math.inf and _min_positive([]) == math.inf
+    assert type(_min_positive(np.array([5, 7]))) is float and _min_positive([1e-300]) == 1e-300
+
+
+def test_cam_design_evaluate_row_written_out():
+    from propulsor import policy
+    from propulsor.laws.cam_design import DesignLimits, evaluate
+    from propulsor.laws.cam_motion import CamMechanism, CurvatureLaw, cam_motion
+    from propulsor.laws.shoe import shoe_loop_check, shoe_table
+
+    mech, law = CamMechanism(), CurvatureLaw("quadratic", 0.017)
+    row = evaluate(mech, law, DesignLimits())
+    cm = cam_motion(mech, law)
+    s = math.pi / 4
+    tab = cm.table(np.linspace(0.0, 2 * math.pi, policy.CAM_TURN_SAMPLES))
+    phi = np.linspace(-s, s, policy.CAM_SUPPORT_SAMPLES)
+    hs = cm.hub_speed(phi)
+    st = shoe_table(cm.support, phi)
+    travel = float(np.trapezoid(hs, phi))
+    H_end = float(cm.support.state(np.array([s]))[0][0])
+    assert (row["law"], row["k0"], row["k1"], row["label"], row["feasible"], row["violations"]) == (
+        "quadratic", 0.017, 0.0, "K = 0.017·φ²", True, "")
+    assert row["hub_speed_variation_pct"] == pytest.approx(100 * (hs.max() - hs.min()) / (travel / (2 * s)), rel=1e-12)
+    assert row["gamma_max_deg"] == pytest.approx(math.degrees(np.max(np.abs(tab.gamma))), rel=1e-12)
+    assert row["gamma_max_support_deg"] == pytest.approx(math.degrees(np.max(np.abs(tab.gamma[tab.support]))),
+                                                         rel=1e-12)
+    Rp = tab.R_profile[np.isfinite(tab.R_profile) & (tab.R_profile > 0)]
+    assert row["R_min_mm"] == pytest.approx(float(Rp.min()), rel=1e-12) and row["R_outer_min_mm"] == math.inf
+    assert row["undercut"] is False and row["shoe_self_intersecting"] is False
+    assert row["sigma_max_MPa"] == pytest.approx(float(np.max(tab.sigma_H[tab.support])), rel=1e-12)
+    assert row["sigma_return_max_MPa"] == pytest.approx(float(np.max(tab.sigma_H[~tab.support])), rel=1e-12)
+    assert row["shoe_radius_min_mm"] == pytest.approx(shoe_loop_check(st).radius_min, rel=1e-12)
+    assert row["footprint_ratio"] == pytest.approx(float(np.trapezoid(st.radius, phi)) / travel, rel=1e-12)
+    assert (row["H_min_mm"], row["H_max_mm"]) == pytest.approx((float(tab.H.min()), float(tab.H.max())), rel=1e-12)
+    assert row["H_support_end_mm"] == pytest.approx(H_end, rel=1e-12)
+    assert row["return_lift_mm"] == pytest.approx(float(tab.H.max()) - H_end, rel=1e-12)
+    assert math.isnan(row["H_error_mm"]) and math.isnan(row["hub_height_variation_mm"])
+    assert math.isnan(row["ground_clearance_min_mm"])
+    est = evaluate(mech, law, DesignLimits(), estimate_error=True)
+    assert 0 < est["H_error_mm"] <= 1e-6
+
+
+def test_cam_design_evaluate_each_limit_both_sides():
+    from propulsor.laws.cam_design import DesignLimits, evaluate
+    from propulsor.laws.cam_motion import CamMechanism, CurvatureLaw
+
+    mech, law = CamMechanism(), CurvatureLaw("quadratic", 0.017)
+    row = evaluate(mech, law, DesignLimits())
+    g, Rm, sg = row["gamma_max_deg"], row["R_min_mm"], max(row["sigma_max_MPa"], row["sigma_return_max_MPa"])
+    fr, core, lift, rs = row["footprint_ratio"], row["H_min_mm"] - 20.0, row["return_lift_mm"], row["shoe_radius_min_mm"]
+    ok = dict(gamma_max_deg=g, R_factor=Rm / 20.0, sigma_allow=sg, footprint_ratio_max=fr, cam_core_min=core,
+              return_lift_max=lift, shoe_radius_min=rs * 0.999)
+    assert evaluate(mech, law, DesignLimits(**ok))["violations"] == ""       # every value on its limit passes
+    v = evaluate(mech, law, DesignLimits(gamma_max_deg=g * 0.999))["violations"]
+    assert v == f"pressure angle {g:.2f}° > {g * 0.999:g}°"
+    v = evaluate(mech, law, DesignLimits(R_factor=Rm / 20.0 * 1.001))["violations"]
+    assert v == f"cam radius of curvature {Rm:.2f} mm < {Rm / 20.0 * 1.001:g}·r = {Rm * 1.001:g} mm"
+    v = evaluate(mech, law, DesignLimits(sigma_allow=sg * 0.999))["violations"]
+    assert v == f"Hertz stress {sg:.0f} MPa > {sg * 0.999:g} MPa"
+    v = evaluate(mech, law, DesignLimits(shoe_radius_min=rs))["violations"]
+    assert v == f"shoe cusp/loop (min radius {rs:.2f} mm, self-intersecting False)"
+    v = evaluate(mech, law, DesignLimits(footprint_ratio_max=fr * 0.999))["violations"]
+    assert v == f"footprint ratio {fr:.4f} > {fr * 0.999:g}"
+    v = evaluate(mech, law, DesignLimits(cam_core_min=core * 1.001))["violations"]
+    assert v == f"cam core H_min − r = {core:.2f} mm < {core * 1.001:g} mm"
+    r = evaluate(mech, law, DesignLimits(return_lift_max=lift * 0.999))
+    assert r["violations"] == f"return lift {lift:.2f} mm > {lift * 0.999:g} mm" and r["feasible"] is False
+    both = evaluate(mech, law, DesignLimits(gamma_max_deg=g * 0.999, cam_core_min=core * 1.001))["violations"]
+    assert both == f"pressure angle {g:.2f}° > {g * 0.999:g}°; cam core H_min − r = {core:.2f} mm < {core * 1.001:g} mm"
+
+
+def test_cam_design_evaluate_blow_up_and_undercut_rows():
+    from propulsor.laws.cam_design import DesignLimits, evaluate
+    from propulsor.laws.cam_motion import CamMechanism, CurvatureLaw, cam_motion
+
+    mech = CamMechanism()
+    law = CurvatureLaw("linear", 0.2)
+    with pytest.raises(InputError) as e:
+        cam_motion(mech, law)
+    row = evaluate(mech, law, DesignLimits())
+    assert row["violations"] == f"blow-up: {e.value}" and row["feasible"] is False
+    assert math.isnan(row["gamma_max_deg"]) and row["undercut"] is False and row["label"] == law.label()
+    # a straight path (K = 0): gamma = phi reaches 45 deg at the support's ends (more in the return)
+    z = evaluate(mech, CurvatureLaw("zero"), DesignLimits())
+    assert z["gamma_max_support_deg"] == pytest.approx(45.0, abs=1e-6) and z["gamma_max_deg"] > 45.0
+    assert z["violations"].startswith(f"pressure angle {z['gamma_max_deg']:.2f}° > 30°")
+
+
+def test_cam_design_verify_messages_and_margins():
+    from propulsor.laws.cam_design import DesignLimits, _margins, verify
+    from propulsor.laws.cam_motion import CamMechanism, CurvatureLaw, cam_motion
+    from propulsor.laws.shoe import hub_height_on_flat, return_ground_clearance
+
+    mech = CamMechanism()
+    law = CurvatureLaw("linear", 0.005, symmetric=False)          # an idle shoe digs in: the hub rises
+    cm = cam_motion(mech, law, estimate_error=False)
+    phi = np.linspace(-math.pi / 4, math.pi / 4, 5)
+    hh = hub_height_on_flat(cm, phi, n_shoe=601)
+    clr = return_ground_clearance(cm, phi[1:-1], n_shoe=601)
+    v = verify(mech, law, DesignLimits(), n_phi=5)
+    var = float(hh.max() - hh.min())
+    assert v["hub_height_variation_mm"] == pytest.approx(var, rel=1e-12)
+    assert v["hub_height_mean_mm"] == pytest.approx(float(hh.mean()), rel=1e-12)
+    assert v["ground_clearance_min_mm"] == pytest.approx(float(clr.min()), rel=1e-12)
+    assert var > 0.01 and float(clr.min()) < 0
+    assert v["verify_violations"] == (f"hub height on flat varies {var:.4g} mm > 0.01 mm; idle shoe ground clearance "
+                                      f"{float(clr.min()):.4g} mm < 0 mm")
+    ok = verify(mech, law, DesignLimits(hub_height_tol=var, ground_clearance_min=0.0), n_phi=5)
+    assert ok["verify_violations"] == f"idle shoe ground clearance {float(clr.min()):.4g} mm < 0 mm"
+    good = CurvatureLaw("quadratic", 0.017)
+    g = verify(mech, good, DesignLimits())                         # default: 19 angles
+    cmg = cam_motion(mech, good, estimate_error=False)
+    p19 = np.linspace(-math.pi / 4, math.pi / 4, 19)
+    c19 = return_ground_clearance(cmg, p19[1:-1], n_shoe=601)
+    assert g["ground_clearance_min_mm"] == pytest.approx(float(c19.min()), rel=1e-12) and g["verify_violations"] == ""
+    tight = verify(mech, good, DesignLimits(ground_clearance_min=float(c19.min())))
+    assert tight["verify_violations"] == ""                          # on the limit passes
+    row = dict(gamma_max_deg=24.0, R_min_mm=45.0, R_outer_min_mm=60.0, sigma_max_MPa=900.0, sigma_return_max_MPa=1200.0,
+               footprint_ratio=0.68, H_min_mm=80.0)
+    m = _margins(row, DesignLimits(), mech)
+    assert m == pytest.approx({"pressure angle": 0.2, "cam radius of curvature": 0.5, "Hertz stress": 0.2,
+                               "footprint ratio": 0.2, "cam core": 0.5}, rel=1e-12)
+    assert _margins(row, DesignLimits(cam_core_min=0.0), mech)["cam core"] == math.inf
