@@ -1576,3 +1576,26 @@ def test_cam_design_verify_messages_and_margins():
     assert m == pytest.approx({"pressure angle": 0.2, "cam radius of curvature": 0.5, "Hertz stress": 0.2,
                                "footprint ratio": 0.2, "cam core": 0.5}, rel=1e-12)
     assert _margins(row, DesignLimits(cam_core_min=0.0), mech)["cam core"] == math.inf
+
+
+def test_damper_mean_power_window_on_a_lightly_damped_start():
+    """A light damper (b2 = 3 kN s/m) still ringing from rest: the mean power depends on its window (the last
+    max(1, int(t_end / 4T)) whole periods, 200 samples a period), and the exact solution and DOP853 on the
+    equations as written agree on it to 1e-8 - each with its own window."""
+    from propulsor.laws.damper_heat import Road, Station, simulate
+
+    st = Station(m1=400.0, C1=2.0e6, b1=2.0e3, b2=3e3)
+    road = Road(0.1, 4.0)
+    got = {}
+    for V, t_end in ((8.0, 1.2), (8.0, 2.0), (8.0, 5.1), (2.0, 7.0)):
+        e = simulate(st, road, V, t_end, n_out=50)
+        n = simulate(st, road, V, t_end, n_out=50, rtol=1e-11)
+        assert e.mean_power == pytest.approx(n.mean_power, rel=1e-8), (V, t_end)
+        assert e.T == pytest.approx(n.T, abs=1e-8) and e.z2 == pytest.approx(n.z2, abs=1e-9)
+        assert e.t.tolist() == n.t.tolist() and e.V == n.V == V
+        got[(V, t_end)] = e.mean_power
+    assert abs(got[(8.0, 1.2)] / got[(8.0, 2.0)] - 1) > 0.1            # the window matters here
+    # n_out = 2: the start and the end, the end as a finer grid has it
+    two = simulate(st, road, 8.0, 2.0, n_out=2)
+    assert two.T[-1] == pytest.approx(simulate(st, road, 8.0, 2.0, n_out=9).T[-1], rel=1e-12)
+    assert two.z2[-1] == pytest.approx(simulate(st, road, 8.0, 2.0, n_out=9).z2[-1], rel=1e-9)
