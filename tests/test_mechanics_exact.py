@@ -1599,3 +1599,232 @@ def test_damper_mean_power_window_on_a_lightly_damped_start():
     two = simulate(st, road, 8.0, 2.0, n_out=2)
     assert two.T[-1] == pytest.approx(simulate(st, road, 8.0, 2.0, n_out=9).T[-1], rel=1e-12)
     assert two.z2[-1] == pytest.approx(simulate(st, road, 8.0, 2.0, n_out=9).z2[-1], rel=1e-9)
+
+
+# ============================================================== cam_motion.py (seed 001, eq. 6-20)
+
+def test_cam_mechanism_refusals_both_sides():
+    from propulsor.laws.cam_motion import CamMechanism as M
+
+    for k in ("R0", "r", "C", "b", "P", "E1", "E2"):
+        assert refused(M, **{k: 0.0}) == f"{k} = 0.0: must be > 0"
+    assert refused(M, P_return=float("nan")) == "P_return = nan: must be a finite number"
+    assert refused(M, P_return=-1e-9) == "P_return = -1e-09: must be >= 0 N"
+    assert refused(M, channel_clearance=float("inf")) == "channel_clearance = inf: must be a finite number"
+    assert refused(M, channel_clearance=-1e-9) == "channel_clearance = -1e-09: must be >= 0 mm"
+    assert M(P_return=0.0, channel_clearance=0.0).P_return == 0.0
+    for n in (2, 13, 4.0, "4"):
+        assert refused(M, n_legs=n) == f"n_legs = {n!r}: must be an integer in [3, 12] (seed 001: 4)"
+    assert M(n_legs=3).phi_s == pytest.approx(math.pi / 3) and M(n_legs=np.int64(12)).phi_s == pytest.approx(
+        math.pi / 12)
+
+
+def test_cam_curvature_law_refusals_values_and_labels():
+    from propulsor.laws.cam_motion import LAW_KINDS, CurvatureLaw as C
+
+    assert LAW_KINDS == ("zero", "linear", "quadratic", "exponential")
+    assert refused(C, "cubic") == \
+        "CurvatureLaw.kind = 'cubic': must be one of ('zero', 'linear', 'quadratic', 'exponential')"
+    assert refused(C, "linear", float("nan")) == "CurvatureLaw.k0 = nan: must be a finite number"
+    assert refused(C, "exponential", 0.1, float("inf")) == "CurvatureLaw.k1 = inf: must be a finite number"
+    assert refused(C, "zero", 0.1) == "CurvatureLaw.k0 = 0.1: must be 0 for kind 'zero'"
+    assert refused(C, "linear", 0.1, 0.2) == "CurvatureLaw.k1 = 0.2: only the 'exponential' law uses k1"
+    assert refused(C, "exponential", 0.1, 50.001) == "CurvatureLaw.k1 = 50.001: must satisfy |k1| <= 50 1/rad"
+    assert refused(C, "exponential", 0.1, -50.001) == "CurvatureLaw.k1 = -50.001: must satisfy |k1| <= 50 1/rad"
+    assert C("exponential", 0.1, -50.0).k1 == -50.0
+    d = C()
+    assert (d.kind, d.k0, d.k1, d.symmetric) == ("quadratic", 0.0, 0.0, True)
+    p = np.array([-0.5, 0.0, 0.25])
+    for sym in (True, False):
+        x = np.abs(p) if sym else p
+        sg = np.where(p < 0, -1.0, 1.0) if sym else 1.0
+        assert C("zero", symmetric=sym).K(p).tolist() == [0.0, 0.0, 0.0]
+        assert C("zero", symmetric=sym).dK(p).tolist() == [0.0, 0.0, 0.0]
+        assert C("linear", 0.3, symmetric=sym).K(p) == pytest.approx(0.3 * x, rel=1e-15)
+        assert C("linear", 0.3, symmetric=sym).dK(p) == pytest.approx(sg * 0.3 * np.ones(3), rel=1e-15)
+        assert C("quadratic", 0.3, symmetric=sym).K(p) == pytest.approx(0.3 * x * x, rel=1e-15)
+        assert C("quadratic", 0.3, symmetric=sym).dK(p) == pytest.approx(sg * 0.6 * x, rel=1e-15)
+        assert C("exponential", 0.3, 1.5, symmetric=sym).K(p) == pytest.approx(0.3 * np.exp(1.5 * x), rel=1e-15)
+        assert C("exponential", 0.3, 1.5, symmetric=sym).dK(p) == pytest.approx(sg * 0.45 * np.exp(1.5 * x), rel=1e-15)
+    assert C("linear", 0.3, symmetric=False).dK(-0.5) == 0.3          # odd law: K' > 0 on both sides
+    assert C("linear", 0.3).dK(-0.5) == -0.3 and C("linear", 0.3).dK(0.0) == 0.3
+    assert C("linear", symmetric=False).is_even is False and C("quadratic", symmetric=False).is_even is True
+    assert C("zero", symmetric=False).is_even is True and C("exponential", 0.1, 1.0).is_even is True
+    assert C("zero").label() == "K = 0"
+    assert C("linear", 0.0123456789).label() == "K = 0.0123457·|φ|"
+    assert C("linear", 0.5, symmetric=False).label() == "K = 0.5·φ"
+    assert C("quadratic", 0.017).label() == "K = 0.017·φ²"
+    assert C("exponential", 0.004, 0.6).label() == "K = 0.004·exp(0.6·|φ|)"
+    assert C("exponential", 0.004, -0.6, symmetric=False).label() == "K = 0.004·exp(-0.6·φ)"
+
+
+def test_cam_return_phase_refusals():
+    from propulsor.laws.cam_motion import RETURN_MODES, ReturnPhase as R
+
+    assert RETURN_MODES == ("min_gamma", "min_jerk", "top") and R().mode == "min_gamma" and R().H_top is None
+    assert refused(R, "jerk") == "ReturnPhase.mode = 'jerk': must be one of ('min_gamma', 'min_jerk', 'top')"
+    assert refused(R, "top") == "ReturnPhase.H_top = None: required by mode 'top'"
+    assert refused(R, "top", 0.0) == "ReturnPhase.H_top = 0.0: must be > 0 mm"
+    assert refused(R, "min_jerk", 150.0) == "ReturnPhase.H_top = 150.0: only mode 'top' takes H_top"
+    assert R("top", 150.0).H_top == 150.0
+
+
+def test_cam_rhs_and_support_derivatives_written_out():
+    from propulsor.laws.cam_motion import CamMechanism, CurvatureLaw, _rhs_factory, solve_support
+
+    for law, K in ((CurvatureLaw("zero"), lambda p: 0.0), (CurvatureLaw("linear", 0.01), lambda p: 0.01 * abs(p)),
+                   (CurvatureLaw("linear", 0.01, symmetric=False), lambda p: 0.01 * p),
+                   (CurvatureLaw("quadratic", 0.02), lambda p: 0.02 * p * p),
+                   (CurvatureLaw("exponential", 0.004, 0.6), lambda p: 0.004 * math.exp(0.6 * abs(p))),
+                   (CurvatureLaw("exponential", 0.004, 0.6, symmetric=False), lambda p: 0.004 * math.exp(0.6 * p))):
+        f = _rhs_factory(law)
+        for p in (-0.4, 0.3):
+            rho, g = 120.0, 0.2
+            assert f(p, [rho, g]) == pytest.approx([rho * math.tan(g), 1 - rho * K(p) / math.cos(g)], rel=1e-15)
+    law = CurvatureLaw("quadratic", 0.017)
+    sp = solve_support(CamMechanism(), law, estimate_error=False)
+    assert sp.H_error_mm is None and (sp.rtol, sp.atol) == (1e-11, 1e-11)
+    phi = np.array([-0.6, 0.0, 0.7])
+    d = sp.derivs(phi)
+    H, g = sp.state(phi)
+    K = 0.017 * phi ** 2
+    t, c = np.tan(g), np.cos(g)
+    assert d["H"].tolist() == H.tolist() and d["gamma"].tolist() == g.tolist() and d["phi"].tolist() == phi.tolist()
+    assert d["H1"] == pytest.approx(H * t, rel=1e-15, abs=1e-300)
+    assert d["K"] == pytest.approx(K, rel=1e-15) and d["g"] == pytest.approx(H * K / c, rel=1e-15)
+    assert d["dgamma"] == pytest.approx(1 - H * K / c, rel=1e-15)
+    assert d["H2"] == pytest.approx(H * t * t + H * (1 - H * K / c) / c ** 2, rel=1e-14)
+    assert d["dg"] == pytest.approx((H * t * K + H * 0.034 * np.abs(phi) * np.sign(phi)) / c
+                                    + H * K / c * t * (1 - H * K / c), rel=1e-13, abs=1e-15)
+    # the ODE's own check: H' by central differences of the dense solution
+    h = 1e-5
+    fd = (sp.state(phi[[0, 2]] + h)[0] - sp.state(phi[[0, 2]] - h)[0]) / (2 * h)
+    assert d["H1"][[0, 2]] == pytest.approx(fd, rel=1e-7)
+    assert H[1] == 110.0 and g[1] == 0.0                     # H(0) = H0 = R0 + r, gamma(0) = 0
+    s = math.pi / 4
+    assert sp.state(s * (1 + 1e-13))[0].shape == (1,)        # the support end, rounded, is taken
+    assert refused(sp.state, [0.0, s * 1.001]) == f"phi = {s * 1.001!r}: support phase is |φ| <= 0.785398 rad"
+    assert refused(sp.state, -s * 1.001) == f"phi = {s * 1.001!r}: support phase is |φ| <= 0.785398 rad"
+    # an odd law integrates both sides; its negative side differs from the mirror
+    odd = solve_support(CamMechanism(), CurvatureLaw("linear", 0.005, symmetric=False), estimate_error=True)
+    Hn, gn = odd.state(np.array([-0.5]))
+    Hp, gp = odd.state(np.array([0.5]))
+    assert abs(Hn[0] - Hp[0]) > 1.0 and 0 < odd.H_error_mm <= 1e-6
+    even = solve_support(CamMechanism(), law)
+    He, ge = even.state(np.array([-0.5, 0.5]))
+    assert He[0] == He[1] and ge[0] == -ge[1]
+    q, dq = sp.delta_over_phi(np.array([0.5]))
+    # q = (gamma - phi) / phi
+    assert q[0] == pytest.approx((sp.state(0.5)[1][0] - 0.5) / 0.5, rel=1e-10)
+
+
+def test_cam_straight_path_closed_form_and_blow_up_message():
+    """K = 0: the roller path is the straight line H = H0 / cos(phi), gamma = phi (seed 001, eq. 20)."""
+    from propulsor.laws.cam_motion import CamMechanism, CurvatureLaw, solve_support
+
+    sp = solve_support(CamMechanism(), CurvatureLaw("zero"))
+    phi = np.linspace(-0.78, 0.78, 7)
+    H, g = sp.state(phi)
+    assert H == pytest.approx(110.0 / np.cos(phi), rel=1e-10) and g == pytest.approx(phi, abs=1e-10)
+    with pytest.raises(InputError) as e:
+        solve_support(CamMechanism(), CurvatureLaw("linear", 0.2))
+    m = str(e.value)
+    assert m.startswith("CurvatureLaw.k0 = 0.2: roller path of eq. 20 must stay regular (cos γ > 0.001, 0 < ρ < ∞) "
+                        "over the support phase |φ| <= 45°; it blows up (")
+    assert m.endswith("° (K = 0.2·|φ|)")
+    with pytest.raises(InputError) as e:
+        solve_support(CamMechanism(), CurvatureLaw("exponential", 0.2, 1.0))
+    assert str(e.value).startswith("CurvatureLaw(k0, k1) = (0.2, 1.0): roller path of eq. 20 must stay regular")
+
+
+def test_cam_quintic_pieces_exact():
+    from propulsor.laws.cam_motion import ReturnCurve, _mono_row, _quintic_gram
+
+    G = _quintic_gram()
+    # int_0^1 (t^k)''' (t^m)''' dt = k(k-1)(k-2) m(m-1)(m-2) / (k + m - 5)
+    want = np.zeros((6, 6))
+    for k in (3, 4, 5):
+        for m in (3, 4, 5):
+            want[k, m] = (k * (k - 1) * (k - 2)) * (m * (m - 1) * (m - 2)) / (k + m - 5)
+    assert G.tolist() == want.tolist() and G[3, 3] == 36.0 and G[5, 5] == 3600.0 / 5 and G[2, 5] == 0.0
+    assert _mono_row(0.5, 0).tolist() == [1.0, 0.5, 0.25, 0.125, 0.0625, 0.03125]
+    assert _mono_row(2.0, 2).tolist() == [0.0, 0.0, 2.0, 12.0, 48.0, 160.0]
+    assert _mono_row(1.0, 3).tolist() == [0.0, 0.0, 0.0, 6.0, 24.0, 60.0]
+    end_a, end_b = (140.0, 30.0, -20.0), (138.0, -28.0, -25.0)
+    a, b = math.pi / 4, 7 * math.pi / 4
+    for top in (None, 170.0):
+        rc = ReturnCurve.build(end_a, end_b, a, b, top)
+        assert rc.a == a and rc.L == pytest.approx(0.75 * math.pi, rel=1e-15) and rc.coef.shape == (2, 6)
+        for phi, end in ((a, end_a), (b, end_b)):
+            vals = [float(v[0]) for v in rc.derivs(np.array([phi]), 2)]
+            assert vals == pytest.approx(list(end), rel=1e-10)
+        left = rc.derivs(np.array([math.pi - 1e-9]))
+        right = rc.derivs(np.array([math.pi + 1e-9]))
+        for m in range(3):
+            assert float(left[m][0]) == pytest.approx(float(right[m][0]), rel=1e-6, abs=1e-5)
+        if top is not None:
+            assert float(rc.derivs(np.array([math.pi]), 0)[0][0]) == pytest.approx(170.0, rel=1e-12)
+        # the derivatives are those of the values: central differences
+        p, h = np.array([2.0, 4.5]), 1e-5
+        d = rc.derivs(p)
+        for m in range(3):
+            fd = (rc.derivs(p + h, m + 1)[m] - rc.derivs(p - h, m + 1)[m]) / (2 * h)
+            assert d[m + 1] == pytest.approx(fd, rel=1e-6, abs=1e-6)
+        assert len(rc.derivs(p)) == 4 and len(rc.derivs(p, 1)) == 2
+    # minimum jerk: any other C2 closure with the same ends has a larger integral of H'''^2
+    free = ReturnCurve.build(end_a, end_b, a, b, None)
+    pinned = ReturnCurve.build(end_a, end_b, a, b, 170.0)
+    phi = np.linspace(a, b, 20001)
+    jerk = lambda rc: float(np.trapezoid(rc.derivs(phi)[3] ** 2, phi))  # noqa: E731
+    assert jerk(free) < jerk(pinned)
+
+
+def test_cam_motion_turn_written_out():
+    from propulsor.laws.cam_motion import CamMechanism, CurvatureLaw, ReturnPhase, cam_motion
+
+    m = CamMechanism(channel_clearance=0.3, P_return=400.0)
+    cm = cam_motion(m, CurvatureLaw("quadratic", 0.017), ReturnPhase("top", 160.0), estimate_error=False)
+    s = math.pi / 4
+    assert cm.wrap(np.array([-s, s, 2 * math.pi - s, 7.0])) == pytest.approx([-s, s, -s, 7.0 - 2 * math.pi],
+                                                                                rel=1e-15)
+    assert cm.leg_angles(0.1) == pytest.approx([0.1, 0.1 + math.pi / 2, 0.1 + math.pi, 0.1 + 1.5 * math.pi],
+                                               rel=1e-15)
+    assert cm.leg_angles(np.array([0.0, 0.2])).shape == (2, 4)
+    assert float(cm.ret.derivs(np.array([math.pi]), 0)[0][0]) == pytest.approx(160.0, rel=1e-10)
+    phi = np.array([0.3, s, 2.0, 5.0, 2 * math.pi + 0.3])
+    H, H1, H2, sup = cm.H_derivs(phi)
+    assert sup.tolist() == [True, True, False, False, True]
+    d = cm.support.derivs(np.array([0.3, s]))
+    assert H[:2] == pytest.approx(d["H"], rel=1e-14) and H1[:2] == pytest.approx(d["H1"], rel=1e-13)
+    r = cm.ret.derivs(np.array([2.0, 5.0]), 2)
+    assert H[2:4] == pytest.approx(r[0], rel=1e-14) and H2[2:4] == pytest.approx(r[2], rel=1e-13)
+    assert H[4] == pytest.approx(H[0], rel=1e-14)
+    hs = cm.hub_speed(np.array([0.3, 0.3 + math.pi / 2, -0.2]))
+    d3 = cm.support.derivs(np.array([0.3, -0.2]))
+    assert hs == pytest.approx([d3["H1"][0] * math.sin(0.3) + 320.0, d3["H1"][0] * math.sin(0.3) + 320.0,
+                                d3["H1"][1] * math.sin(-0.2) + 320.0], rel=1e-13)
+    t = cm.table(phi)
+    gam = np.arctan2(H1, H)
+    K = (H * H + 2 * H1 * H1 - H * H2) / (H * H + H1 * H1) ** 1.5
+    psi = phi - gam
+    assert t.gamma == pytest.approx(gam, rel=1e-15) and t.K_path == pytest.approx(K, rel=1e-13)
+    assert t.dgamma == pytest.approx(1 - H * K / np.cos(gam), rel=1e-13)
+    assert t.psi == pytest.approx(psi, rel=1e-15)
+    assert t.X == pytest.approx(H * np.sin(phi) - 20 * np.sin(psi), rel=1e-14)
+    assert t.Y == pytest.approx(H * np.cos(phi) - 20 * np.cos(psi), rel=1e-14)
+    assert t.X_outer == pytest.approx(H * np.sin(phi) + 20.3 * np.sin(psi), rel=1e-14)
+    assert t.Y_outer == pytest.approx(H * np.cos(phi) + 20.3 * np.cos(psi), rel=1e-14)
+    R = 1 / K - 20
+    assert t.R_profile == pytest.approx(R, rel=1e-13) and t.R_outer == pytest.approx(-(1 / K + 20.3), rel=1e-13)
+    assert t.R_path == pytest.approx(1 / K, rel=1e-13)
+    E = 2 * 2.1e5 * 2.1e5 / (4.2e5)
+    P = np.where(sup, 5000.0, 400.0)
+    arg = P * E / (20.0 * np.cos(gam)) * (1 / 20 + 1 / R)
+    ok = (arg > 0) & ~((K > 0) & (R <= 0))
+    assert t.sigma_H[ok] == pytest.approx(0.418 * np.sqrt(arg[ok]), rel=1e-13)
+    assert t.hub_speed == pytest.approx(cm.hub_speed(phi), rel=1e-15)
+    assert t.support.tolist() == sup.tolist() and t.H.tolist() == H.tolist()
+    # the straight support path (K = 0) has an infinite radius and the roller's own curvature in Hertz
+    z = cam_motion(CamMechanism(), CurvatureLaw("zero"), ReturnPhase("min_jerk"), estimate_error=False).table(
+        np.array([0.2]))
+    assert abs(z.K_path[0]) < 1e-9
