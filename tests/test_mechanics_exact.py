@@ -1828,3 +1828,17 @@ def test_cam_motion_turn_written_out():
     z = cam_motion(CamMechanism(), CurvatureLaw("zero"), ReturnPhase("min_jerk"), estimate_error=False).table(
         np.array([0.2]))
     assert abs(z.K_path[0]) < 1e-9
+
+
+def test_damper_speed_sweep_is_one_run_a_speed():
+    from propulsor.laws.damper_heat import Road, speed_sweep, simulate
+
+    st = _station_numbers()
+    road = Road(0.4, 2.0)
+    runs = speed_sweep(st, road, [1, 2.5], 1.5)
+    assert [r.V for r in runs] == [1.0, 2.5] and type(runs[0].V) is float
+    for r, V in zip(runs, (1.0, 2.5)):
+        one = simulate(st, road, V, 1.5)
+        assert r.T.tolist() == one.T.tolist() and r.z2.tolist() == one.z2.tolist()
+        assert r.mean_power == one.mean_power and len(r.t) == 400 and r.t[-1] == 1.5
+    assert speed_sweep(st, road, [], 1.5) == []
