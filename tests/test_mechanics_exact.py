@@ -1842,3 +1842,43 @@ def test_damper_speed_sweep_is_one_run_a_speed():
         assert r.T.tolist() == one.T.tolist() and r.z2.tolist() == one.z2.tolist()
         assert r.mean_power == one.mean_power and len(r.t) == 400 and r.t[-1] == 1.5
     assert speed_sweep(st, road, [], 1.5) == []
+
+
+def test_damper_numerical_path_at_rest_and_on_a_slow_road():
+    """V = 0 (omega = 0: the window is the whole run) and omega = 0.63 rad/s < 1 (one period of 10 s, the last
+    of a 30 s run): the exact solution and DOP853 agree on the window's mean power."""
+    from propulsor.laws.damper_heat import Road, Station, simulate
+
+    st = _station_numbers()
+    rest = simulate(st, Road(0.4, 2.0), 0.0, 2.0, n_out=3, rtol=1e-10)
+    assert rest.T.tolist() == [10.0, 10.0, 10.0] and rest.mean_power == 0.0 and rest.z2.tolist() == [0.0, 0.0, 0.0]
+    light = Station(m1=400.0, C1=2.0e6, b1=2.0e3, b2=3e3)
+    road = Road(0.1, 2.0)
+    V = 0.2                                                   # omega = 2 pi 0.2 / 2 = 0.628 rad/s, T = 10 s
+    e = simulate(light, road, V, 30.0, n_out=31)
+    n = simulate(light, road, V, 30.0, n_out=31, rtol=1e-11)
+    assert e.mean_power == pytest.approx(n.mean_power, rel=1e-6)
+    whole = simulate(light, road, V, 10.0, n_out=11)          # the same window alone, from rest: a different mean
+    assert abs(whole.mean_power / e.mean_power - 1) > 1e-6
+    assert e.t[1] == 1.0 and e.T[-1] == pytest.approx(n.T[-1], abs=1e-9)
+
+
+def test_damper_run_shorter_than_one_road_period_averages_the_whole_run():
+    """Bug fixed: a run shorter than one road period (t_end = 5 s, T = 6.67 s) averaged the power over a window
+    starting before t = 0, the motion extrapolated backwards (exact: 6e7 W, DOP853's dense output: 4e19 W); now
+    the window is the whole run, as at V = 0."""
+    from scipy.integrate import solve_ivp
+
+    from propulsor.laws.damper_heat import Road, Station, _rhs, simulate
+
+    light = Station(m1=400.0, C1=2.0e6, b1=2.0e3, b2=3e3)
+    road = Road(0.1, 1.0)
+    V, t_end = 0.15, 5.0                                      # omega = 0.94 rad/s, T = 6.67 s > t_end
+    f, w = _rhs(light, road, V, False)
+    assert 2 * math.pi / w > t_end
+    sol = solve_ivp(f, (0.0, t_end), [0, 0, 0, 0, 20.0], method="DOP853", rtol=1e-12, atol=1e-13, dense_output=True)
+    ts = np.linspace(0.0, t_end, 201)                          # the module's 200 samples of one window
+    y = sol.sol(ts)
+    want = float(np.trapezoid(3e3 * (y[3] - y[1]) ** 2, ts) / t_end)
+    assert simulate(light, road, V, t_end).mean_power == pytest.approx(want, rel=1e-6)
+    assert simulate(light, road, V, t_end, rtol=1e-11).mean_power == pytest.approx(want, rel=1e-6)
