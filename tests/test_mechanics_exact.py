@@ -964,6 +964,10 @@ def test_suspension_design_refusals_in_full():
     assert refused(_design, damper_x_m=(-2.0 + 2e-9,)) == \
         f"damper_x_m = {-2.0 + 2e-9!r}: a damper must sit on a wheel of wheel_x_m"
     assert _design(damper_x_m=(-2.0 + 5e-10,)).damper_x_m == (-2.0 + 5e-10,)
+    # exactly the tolerance (1e-9 m) off a wheel still sits on it
+    assert _design(wheel_x_m=(0.0, 2.0), damper_x_m=(1e-9,)).damper_x_m == (1e-9,)
+    assert refused(_design, wheel_x_m=(0.0, 2.0), damper_x_m=(1.0000001e-9,)) == \
+        "damper_x_m = 1.0000001e-09: a damper must sit on a wheel of wheel_x_m"
     assert refused(_design, damper_x_m=(-2.0, -2.0)) == "damper_x_m = (-2.0, -2.0): one damper per wheel"
     assert refused(_design, T_phi=0.0) == "T_phi = 0.0: must be > 0 s"
     assert refused(_design, nu=float("nan")) == "nu = nan: must be a finite number"
