@@ -836,6 +836,7 @@ def test_suspension_free_function_refusals_in_full():
     assert refused(c, 1000.0, 100.0, 10, 0.5, 2) == "h_n = 0.5: bump too high: compression force limit 0 N <= 0"
     assert refused(c, 1000.0, 100.0, 10, 0.6, 2) == "h_n = 0.6: bump too high: compression force limit -25 N <= 0"
     assert c(1000.0, 100.0, 10, 0.4, 2) == pytest.approx(25.0, rel=1e-13)
+    assert c(1000.0, 100.0, 10, 0.499, 2) == pytest.approx(0.25, rel=1e-9)          # a small positive limit
     assert refused(s.rod_force_ratio, 0.0) == "i_a = 0.0: must be > 0"
     assert refused(s.rod_force_ratio, 0.4, "lever arm") == \
         "damper_reading = 'lever arm': must be one of ('lever', 'literal')"
@@ -892,6 +893,17 @@ def test_torsion_suspension_refusals_in_full():
         "beta0_deg = -1.0: must be > 0 deg: the balancer may not swing through the downward vertical "
         "(f(beta) would not be monotonic, P(beta) < 0)")
     assert _torsion(beta0_deg=1e-6, beta_m_deg=60.0).beta0_deg == 1e-6
+    assert refused(_torsion, beta0_deg=0.0, beta_m_deg=60.0) == (
+        "beta0_deg = 0.0: must be > 0 deg: the balancer may not swing through the downward vertical "
+        "(f(beta) would not be monotonic, P(beta) < 0)")
+    # an adopted beta0 so low that eq. 10's beta_m = beta0 + gamma_m stays below beta_st
+    t = dict(tau=1600.0, L=500.0, G=83000.0, d=46.0)
+    g_m = 2 * t["tau"] * t["L"] / (t["G"] * t["d"])
+    b_m = math.radians(10.0) + g_m
+    assert b_m < math.radians(170.0)
+    assert refused(_torsion, beta_st_deg=170.0, beta0_deg=10.0, L_T=500.0) == (
+        f"beta0_deg = {math.degrees(math.radians(10.0))!r}: travel angles out of order: need beta0 < beta_st = 170 "
+        f"< beta_m = {math.degrees(b_m):.6g} deg")
 
 
 def test_torsion_suspension_stored_values_and_travel_exact():
