@@ -169,7 +169,7 @@ def simulate(st: Station, road: Road, V: float, t_end: float, n_out: int = 400, 
         return _simulate_numerically(st, road, V, t_end, n_out, as_printed, rtol)
     M, x0, w = _system(st, road, V, as_printed)
     t_eval = np.linspace(0.0, t_end, n_out)
-    dt = t_eval[1] - t_eval[0] if n_out > 1 else 0.0
+    dt = t_end / (n_out - 1) if n_out > 1 else 0.0   # np.linspace's step, exactly
     n = len(x0)
     d = np.zeros(n)
     d[3], d[1] = 1.0, -1.0                                   # z2' − z1'
@@ -180,13 +180,14 @@ def simulate(st: Station, road: Road, V: float, t_end: float, n_out: int = 400, 
     G[n * n, n * n] = -heat * k_air
     Y = _powers(expm(G * dt), np.append(np.kron(x0, x0), 0.0), n_out)
     xs = _powers(expm(M * dt), x0, n_out)
-    # mean damper power over the last whole periods (or the last quarter of the run at V = 0)
+    # mean damper power over the last whole periods (about a quarter of the run); the whole run at V = 0 or when
+    # the run is shorter than one period (a window starting before t = 0 would extrapolate the motion backwards)
     T_per = 2.0 * math.pi / w if w > 0 else t_end
     n_per = max(1, int(0.25 * t_end / T_per))
-    ts = np.linspace(t_end - n_per * T_per, t_end, 200 * n_per + 1)
+    ts = np.linspace(t_end - min(n_per * T_per, t_end), t_end, 200 * n_per + 1)
     xt = _powers(expm(M * (ts[1] - ts[0])), expm(M * ts[0]) @ x0, len(ts))
     P = st.b2 * (xt @ d) ** 2
-    mean_P = float(np.trapezoid(P, ts) / (ts[-1] - ts[0])) if ts[-1] > ts[0] else 0.0
+    mean_P = float(np.trapezoid(P, ts) / (ts[-1] - ts[0]))  # never an empty window: t_end > 0, T_per > 0
     return DamperRun(V, t_eval, st.T_env + Y[:, -1], xs[:, 2], mean_P)
 
 
@@ -201,10 +202,10 @@ def _simulate_numerically(st: Station, road: Road, V: float, t_end: float, n_out
         raise RuntimeError(sol.message)
     T_per = 2.0 * math.pi / w if w > 0 else t_end
     n_per = max(1, int(0.25 * t_end / T_per))
-    ts = np.linspace(t_end - n_per * T_per, t_end, 200 * n_per + 1)
+    ts = np.linspace(t_end - min(n_per * T_per, t_end), t_end, 200 * n_per + 1)
     y = sol.sol(ts)
     P = st.b2 * (y[3] - y[1]) ** 2
-    mean_P = float(np.trapezoid(P, ts) / (ts[-1] - ts[0])) if ts[-1] > ts[0] else 0.0
+    mean_P = float(np.trapezoid(P, ts) / (ts[-1] - ts[0]))  # never an empty window: t_end > 0, T_per > 0
     return DamperRun(V, sol.t, sol.y[4], sol.y[2], mean_P)
 
 
