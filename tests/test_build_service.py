@@ -144,3 +144,24 @@ def test_the_service_raises_and_prints_nothing(tmp_path, capsys):
     assert failed.value.what == "road_wheel" and failed.value.result.derived == {"made_up": 1.0}
     assert not (tmp_path / "failed").exists()
     assert capsys.readouterr() == ("", "")
+
+
+def _answer():
+    return 42
+
+
+def test_a_worker_never_closes_a_descriptor_number_taken_since_by_a_pipe(tmp_path):
+    """A build's output lock is closed in every worker it forks, by its number; a lock closed before the build's
+    block ends leaves that number free, and the next pool's own call queue takes it (the lowest free number).  The
+    worker closes the number only while it still names the lock's file (device and inode): else it would close its
+    own queue and die with "Bad file descriptor" (CI: a build after other builds in one test process)."""
+    from propulsor.parallel import Workers, result, start
+
+    with Workers() as w:
+        locks = [open(tmp_path / f"lock{k}", "w") for k in range(12)]
+        for f in locks:
+            w.close_in_workers(f.fileno())
+        for f in locks:
+            f.close()  # their numbers are free, and still listed: the pool's pipes take some of them
+        assert [result(start(_answer)) for _ in range(3)] == [42, 42, 42]
+    assert not parallel._CLOSE_IN_WORKERS

@@ -188,7 +188,7 @@ def test_every_plate_slices(kits, name, slices_cleanly):
     (["--scale", "1:20"], "scaled module 0.5 mm is below"),
     (["--scale", "banana"], "must be auto"),
     (["--set", "backlash_mm=9"], "<= 2.0"),
-    (["--set", "bed_x_mm=60", "--set", "bed_y_mm=60"], "the bed is too small: ring is"),
+    (["--set", "bed_x_mm=60", "--set", "bed_y_mm=60"], "too small for this kit: ring is"),
 ])
 def test_bad_print_inputs_exit_2_one_line_nothing_written(tmp_path, capsys, args, fragment):
     out = tmp_path / "kit"

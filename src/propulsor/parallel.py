@@ -37,8 +37,11 @@ from concurrent.futures import ProcessPoolExecutor
 _PR_SET_PDEATHSIG = 1
 #: every pool of the process (for :func:`kill_workers`, the command line's end)
 _POOLS: "weakref.WeakSet[ProcessPoolExecutor]" = weakref.WeakSet()
-#: file descriptors closed in every worker forked: the output locks of the builds running in this process
-_CLOSE_IN_WORKERS: set[int] = set()
+#: file descriptors closed in every worker forked: the output locks of the builds running in this process, each with
+#: the (device, inode) of the file it was opened on, so that a worker closes it only while the number still names that
+#: file (a lock closed before its build's block ends leaves a number that a pool's own pipe may take next: the worker
+#: would close its call queue, "Bad file descriptor")
+_CLOSE_IN_WORKERS: dict[int, tuple[int, int]] = {}
 _CLOSE_LOCK = threading.Lock()
 #: the Workers of the build running in this thread (context), or None outside a build
 _CURRENT: "contextvars.ContextVar[Workers | None]" = contextvars.ContextVar("propulsor_workers", default=None)
@@ -262,7 +265,7 @@ class Workers:
                 self._token = None
             with _CLOSE_LOCK:
                 for fd in self._fds:
-                    _CLOSE_IN_WORKERS.discard(fd)
+                    _CLOSE_IN_WORKERS.pop(fd, None)
             self._fds.clear()
 
     def __enter__(self) -> "Workers":
@@ -281,8 +284,9 @@ class Workers:
     def close_in_workers(self, fd: int) -> None:
         """Close file descriptor `fd` (this build's output lock) in every worker forked from now on, this build's
         and any other build's of the process, for as long as this block runs."""
+        st = os.fstat(fd)
         with _CLOSE_LOCK:
-            _CLOSE_IN_WORKERS.add(fd)
+            _CLOSE_IN_WORKERS[fd] = (st.st_dev, st.st_ino)
         self._fds.append(fd)
 
     def kill(self) -> None:
@@ -297,9 +301,10 @@ def current_workers() -> "Workers | None":
     return _CURRENT.get()
 
 
-def _close_fds() -> tuple[int, ...]:
+def _close_fds() -> tuple[tuple[int, int, int], ...]:
+    """(fd, device, inode) of every descriptor a worker forked now closes (:data:`_CLOSE_IN_WORKERS`)."""
     with _CLOSE_LOCK:
-        return tuple(sorted(_CLOSE_IN_WORKERS))
+        return tuple(sorted((fd, *key) for fd, key in _CLOSE_IN_WORKERS.items()))
 
 
 def _kill_pools(pools) -> None:
@@ -325,7 +330,7 @@ def _kill_pools(pools) -> None:
         _POOLS.discard(pool)
 
 
-def _worker_init(parent_pid: int, close_fds: tuple[int, ...]) -> None:
+def _worker_init(parent_pid: int, close_fds: tuple[tuple[int, int, int], ...]) -> None:
     """In a fresh worker: die with the parent, leave SIGINT to it, drop the parent's locks."""
     try:
         libc = ctypes.CDLL(None, use_errno=True)
@@ -336,9 +341,11 @@ def _worker_init(parent_pid: int, close_fds: tuple[int, ...]) -> None:
         os._exit(1)
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
-    for fd in close_fds:
+    for fd, dev, ino in close_fds:
         try:
-            os.close(fd)
+            st = os.fstat(fd)
+            if (st.st_dev, st.st_ino) == (dev, ino):  # still the lock file, not a number taken since (a pipe)
+                os.close(fd)
         except OSError:
             pass
 
