@@ -33,7 +33,7 @@ import numpy as np
 from numba import njit
 
 from ... import policy
-from .backlash import _ANG_EPS, _rot_pairs
+from .backlash import _rot_pairs, _rot_reduce
 from .nearest import grid_of
 from .outlines import Outline, row_norms
 
@@ -275,24 +275,11 @@ def _side_hits(idx, V, c1, s1, tx, c2, s2, sign, w, r_keep, cx, cy, tgt):
     chord_factor = 2.0 * math.sin(0.5 * min(w, math.pi))
     offs, seg, Y, X, T, ok = _rot_pairs(P, cx, cy, tV, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, near,
                                         sign, rho, lb, chord_factor)
-    delta = np.full(n, np.inf)
-    edge = np.full(n, -1, np.int64)
-    tpar = np.zeros(n)
-    for i in range(n):
-        best, best_e, best_t = np.inf, -1, 0.0
-        for k in range(offs[i], offs[i + 1]):
-            pb, pt = np.inf, 0.0
-            for r in range(2):
-                a = sign * math.atan2(Y[k, r], X[k, r])
-                if a != a:
-                    continue
-                a = a + 2.0 * math.pi if a < -_ANG_EPS else (a if a > 0.0 else 0.0)
-                if ok[k, r] and a <= w and a < pb:
-                    pb, pt = a, T[k, r]
-            if best_e < 0 or pb < best:
-                best, best_e, best_t = pb, seg[k], pt
-        if best_e >= 0:
-            delta[i], edge[i], tpar[i] = best, best_e, best_t
+    ang = np.empty_like(Y)
+    for k in range(Y.shape[0]):
+        for r in range(2):
+            ang[k, r] = sign * math.atan2(Y[k, r], X[k, r])
+    delta, edge, tpar = _rot_reduce(offs, seg, ang, T, ok, w)
     return keep[:n], delta, edge, tpar
 
 
