@@ -287,7 +287,7 @@ def test_random_and_mutated_files_never_traceback(tmp_path_factory, cases):
     signal.alarm(20)
     try:
         with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-            code = main(["check", str(folder)])
+            code = main(["check", "-q", str(folder)])
     finally:
         signal.alarm(0)
         signal.signal(signal.SIGALRM, old)

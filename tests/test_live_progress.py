@@ -317,3 +317,132 @@ def test_check_counts_the_files_it_checks(tmp_path):
     counts = [(e.done, e.total) for e in seen if getattr(e, "total", None) is not None]
     assert counts[0] == (0, 2) and counts[-1] == (2, 2)
     assert seen[0] == f"check: reading {tmp_path}"
+
+
+def _ticks_then_nests(n: int) -> int:
+    """In a worker: its own ticks, and a nested job (started without a counter) that ticks too."""
+    from propulsor.parallel import result, start, tick
+
+    import time
+
+    tick(1, n)
+    assert result(start(_ticking_job, 7)) == 7  # the nested job's ticks are not this job's
+    time.sleep(0.5)  # (the pump reads what came meanwhile)
+    for i in range(2, n + 1):
+        tick(i, n)
+    return n
+
+
+@pytest.mark.parametrize("jobs", ["1", "2", "3"])  # inline; the nested job forked from the worker
+def test_a_forked_jobs_ticks_reach_the_counter_while_the_build_works_on(monkeypatch, jobs):
+    """The build does other work after starting a counted job (the seed-002 pair's animations and assembly while
+    both contact directions run): the job's count is shown as it comes, not when the build waits for the result
+    (before: 8 s of silence, then "7201/7201" at once).  A nested job's ticks stay out of its count."""
+    import time
+
+    from propulsor import parallel
+
+    monkeypatch.setenv("PROPULSOR_JOBS", jobs)
+    monkeypatch.delenv("MAKEFLAGS", raising=False)
+    got = []
+    with parallel.Workers():
+        job = parallel.start(_ticking_job, 30, counter=lambda done, total: got.append((done, total)))
+        deadline = time.monotonic() + 30.0
+        while not got and time.monotonic() < deadline:  # busy here, never in parallel.result
+            sum(range(10000))
+        seen_before_result = list(got)
+        assert parallel.result(job) == 30
+        nested = parallel.start(_ticks_then_nests, 5, counter=lambda done, total: got.append((done, total)))
+        assert parallel.result(nested) == 5
+    assert seen_before_result and seen_before_result[0][1] == 30
+    assert got[-1] == (5, 5) and all(total in (30, 5) for _, total in got)
+    assert not parallel._LIVE_TICKS
+
+
+class _Params:
+    """Parameters (the designs are kept beside the parameter object)."""
+
+
+def _design_says(params, w):
+    w.progress("the design's first step")
+    w.progress.count("the design's teeth", 3, 3, "tooth")
+    return ("designed", params)
+
+
+def test_the_design_computed_apart_shows_its_steps(monkeypatch):
+    """The design computed in a forked process while the build loads the CAD kernel (pipeline.design_apart) shows
+    its steps and counts (before: none of them, 4-7 s of silence on the seed-002 pair)."""
+    from propulsor import parallel
+    from propulsor.parts.pipeline import design_apart
+
+    monkeypatch.setenv("PROPULSOR_JOBS", "2")
+    monkeypatch.delenv("MAKEFLAGS", raising=False)
+    got = []
+
+    class W:
+        progress = Reporter(got.append)
+
+        def warm_up(self):
+            got.append("warm-up")
+
+    params = _Params()
+    with parallel.Workers():
+        made = design_apart(_design_says, params, W())
+    assert made[0] == "designed" and isinstance(made[1], _Params)
+    events = [e for e in got if e != "warm-up"]
+    assert [str(e) for e in events] == ["the design's first step", "the design's teeth: tooth 3/3"]
+    assert events[1].counted and events[1].phase == "the design's teeth" and "warm-up" in got
+
+
+def test_counts_of_jobs_side_by_side_are_one_count(clock):
+    from propulsor.progress import count_shared
+
+    got = []
+    a, b = count_shared(Reporter(got.append), "contact", 2, "position")
+    a(10, 100)  # b not heard from: taken as large as a
+    clock.t += 1.0
+    b(5, 80)
+    clock.t += 1.0
+    a(100, 100)
+    clock.t += 1.0
+    b(80, 80)
+    assert [(e.done, e.total) for e in got] == [(10, 200), (15, 180), (105, 180), (180, 180)]
+    assert got[0] == "contact: position 10/200"
+    assert count_shared(lambda e: None, "contact", 2) == [None, None]
+
+
+def test_two_counts_at_once_keep_their_own_pace_and_lines(clock):
+    """A worker's count and the build's own interleave: each keeps its pace, and the live view prints a step's
+    line once, not at every switch."""
+    out = io.StringIO()
+    r = Renderer(stream=out, live=True)
+    for i in range(0, 11):
+        r(Event(f"a: {i}/10", PROGRESS, "a", i, 10))
+        r(Event(f"b: {10 * i}/100", PROGRESS, "b", 10 * i, 100))
+        clock.t += 1.0
+    r.close()
+    drawn = out.getvalue()
+    assert drawn.count("[   0.0 s] a") == 1 and drawn.count("[   0.0 s] b") == 1 and drawn.count(" s] ") == 2
+    out = io.StringIO()
+    clock.t = 1000.0
+    r = Renderer(stream=out, live=False)
+    r(Event("a: 0/10", PROGRESS, "a", 0, 10))
+    clock.t += 4.0
+    r(Event("b: 50/100", PROGRESS, "b", 50, 100))
+    clock.t += 2.0
+    r(Event("a: 6/10", PROGRESS, "a", 6, 10))  # 6 in 6 s: 4 s left (b's count between did not restart a's pace)
+    assert out.getvalue().splitlines()[-1] == "[   6.0 s] a: 6/10, about 4 s left"
+
+
+def test_check_in_a_pipe_shows_its_count_and_q_silences_it(tmp_path, capsys):
+    """`propulsor check` shows its steps as the other commands do when its stderr is a pipe or a log (before: only
+    on a terminal, 39 s of silence over one pair's folder); -q leaves stderr to the refusals."""
+    from propulsor.cli import main
+
+    (tmp_path / "a.stl").write_bytes(b"solid a\nendsolid a\n")
+    (tmp_path / "b.dxf").write_text("0\nEOF\n")
+    main(["check", str(tmp_path)])
+    err = capsys.readouterr().err
+    assert f"check: reading {tmp_path}" in err and "2/2" in err
+    main(["check", "-q", str(tmp_path)])
+    assert capsys.readouterr().err == ""

@@ -250,10 +250,11 @@ def cmd_check(args) -> int:
     if not os.path.lexists(path):
         return fail_input(InputError("PATH", str(path), "does not exist"))
     try:
-        # the files' count on a terminal only: a script reading check's stderr gets its refusals alone
+        # the files' count as the other commands show theirs (a live line on a terminal, plain lines in a pipe or a
+        # log); -q: a script reading check's stderr gets its refusals alone
         from .progress import Reporter
 
-        with memory_ceiling(), Renderer(not sys.stderr.isatty()) as render:
+        with memory_ceiling(), Renderer(args.quiet) as render:
             results = check_path(path, progress=Reporter(render))
     except EnvironmentFailure as exc:
         return fail_environment(exc)
@@ -411,6 +412,8 @@ def build_parser() -> argparse.ArgumentParser:
     c = sub.add_parser("check", help="validate existing output files (a file or a folder)")
     c.add_argument("path")
     c.add_argument("-v", "--verbose", action="store_true")
+    c.add_argument("-q", "--quiet", action="store_true", help="no progress messages (the files checked are still "
+                   "counted on stdout)")
     c.set_defaults(func=cmd_check)
 
     ls = sub.add_parser("list", help="part types and the parameter files in parts/")

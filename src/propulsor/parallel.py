@@ -341,6 +341,8 @@ def _worker_init(parent_pid: int, close_fds: tuple[tuple[int, int, int], ...]) -
         os._exit(1)
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    global _TICK
+    _TICK = None  # a job's ticks are its own process's (:func:`_ticking` sets them), not a forking job's
     for fd, dev, ino in close_fds:
         try:
             st = os.fstat(fd)
@@ -417,9 +419,7 @@ def start(fn, *args, counter=None):
     global _TICK
     pool = fork_pool(1)
     if pool is None:
-        if counter is None:
-            return inline(fn, *args)
-        before, _TICK = _TICK, counter
+        before, _TICK = _TICK, counter  # a job without a counter ticks to none (not to a job it runs within)
         try:
             return inline(fn, *args)
         finally:
@@ -434,7 +434,8 @@ def start(fn, *args, counter=None):
             fut = pool.submit(_ticking, w, fn, *args)  # the fork context forks the worker here: it has `w`
         finally:
             os.close(w)
-        fut.propulsor_ticks = _Ticks(r, counter)
+        fut.propulsor_ticks = _Ticks(r, counter, fut)
+        _pump_add(fut.propulsor_ticks)
     fut.add_done_callback(lambda _f: pool.give_back())
     pool.shutdown(wait=False)
     return fut
@@ -479,10 +480,10 @@ def _ticking(fd: int, fn, *args):
 
 
 class _Ticks:
-    """The read end of a forked job's progress pipe and the counter its ticks go to."""
+    """The read end of a forked job's progress pipe, the counter its ticks go to and the job."""
 
-    def __init__(self, fd: int, counter):
-        self.fd, self.counter, self.buf = fd, counter, b""
+    def __init__(self, fd: int, counter, job=None):
+        self.fd, self.counter, self.job, self.buf = fd, counter, job, b""
 
     def drain(self) -> None:
         if self.fd < 0:
@@ -512,21 +513,153 @@ class _Ticks:
         self.close()
 
 
+class _Events(_Ticks):
+    """The read end of a forked job's event pipe (:func:`forward_events`): every event passed to `counter` (the
+    build's progress), in order."""
+
+    def drain(self) -> None:
+        if self.fd < 0:
+            return
+        import json
+
+        from .progress import Event
+
+        while True:
+            try:
+                data = os.read(self.fd, 65536)
+            except (BlockingIOError, InterruptedError):
+                break
+            if not data:
+                break
+            self.buf += data
+            *lines, self.buf = self.buf.split(b"\n")
+            for raw in lines:
+                try:
+                    ev = json.loads(raw)
+                except ValueError:
+                    continue
+                self.counter(Event(ev["text"], ev["kind"], ev["phase"], ev["done"], ev["total"]))
+
+
+def event_pipe(progress, job_of):
+    """``job_of(fd)`` — a call that forks a job holding `fd`, the write end of a pipe — with the job's events
+    (written by :func:`forward_events` in the job) passed to `progress` while it runs (the pump's thread) and to
+    the last before :func:`result` returns.  Returns the job."""
+    r, w = os.pipe()
+    os.set_blocking(r, False)
+    os.set_blocking(w, False)
+    try:
+        job = job_of(w)
+    finally:
+        os.close(w)
+    job.propulsor_ticks = _Events(r, progress, job)
+    _pump_add(job.propulsor_ticks)
+    return job
+
+
+def forward_events(fd: int):
+    """In a forked job: a progress callback writing each event to `fd` (:func:`event_pipe`) as one JSON line; a full
+    pipe drops the event (never holds the work)."""
+    import json
+
+    def send(event) -> None:
+        rec = dict(text=str(event), kind=getattr(event, "kind", "progress"),
+                   phase=getattr(event, "phase", None) or str(event), done=getattr(event, "done", None),
+                   total=getattr(event, "total", None))
+        try:
+            os.write(fd, (json.dumps(rec) + "\n").encode())
+        except OSError:
+            pass
+
+    return send
+
+
+# -- the pump: the ticks of the forked jobs passed to their counters while the build's own thread works on (before,
+# a job's count was read only when the build waited for its result: silent seconds, then "7201/7201" at once)
+#: the counters are called holding this lock (the pump's thread or a thread waiting in :func:`result`); a fork holds it
+#: too (:func:`_before_fork`), so that no child is forked while a counter draws (a print's lock copied held)
+_CALLBACK_LOCK = threading.RLock()
+#: the ticks of the forked jobs still running, each drained by the pump every :data:`PUMP_EVERY_S`
+_LIVE_TICKS: list[_Ticks] = []
+_PUMP: list = [None]  # the pump's thread while there are live ticks
+#: how often the pump reads the workers' ticks (the workers write at most ten a second)
+PUMP_EVERY_S = 0.1
+
+
+def _pump_add(ticks: _Ticks) -> None:
+    with _CALLBACK_LOCK:
+        _LIVE_TICKS.append(ticks)
+        if _PUMP[0] is None:
+            _PUMP[0] = threading.Thread(target=_pump, name="propulsor-ticks", daemon=True)
+            _PUMP[0].start()
+
+
+def _pump() -> None:
+    """Drain every live job's ticks into its counter until none is left (then the thread ends); a job done is drained
+    once more and dropped.  A counter's error (an interruption's, raised at the display's safe point) is the
+    build's thread's to meet: here the job is only dropped."""
+    import time
+
+    while True:
+        time.sleep(PUMP_EVERY_S)
+        with _CALLBACK_LOCK:
+            for t in list(_LIVE_TICKS):
+                done = t.job is None or t.job.done()
+                try:
+                    t.drain()
+                except BaseException:  # noqa: BLE001 - the counter's own; the build's thread meets its cause
+                    done = True
+                if done:
+                    _LIVE_TICKS.remove(t)
+                    t.close()
+            if not _LIVE_TICKS:
+                _PUMP[0] = None
+                return
+
+
+def _before_fork() -> None:
+    _CALLBACK_LOCK.acquire()
+
+
+def _after_fork_in_parent() -> None:
+    _CALLBACK_LOCK.release()
+
+
+def _after_fork_in_child() -> None:
+    """A child has no pump and none of its parent's jobs."""
+    global _CALLBACK_LOCK
+    _CALLBACK_LOCK = threading.RLock()
+    _LIVE_TICKS.clear()
+    _PUMP[0] = None
+
+
+if hasattr(os, "register_at_fork"):
+    os.register_at_fork(before=_before_fork, after_in_parent=_after_fork_in_parent,
+                        after_in_child=_after_fork_in_child)
+
+
+def callback_lock():
+    """The lock held while a worker's tick is passed to its counter (render's fork hooks take it first)."""
+    return _CALLBACK_LOCK
+
+
 def result(job):
-    """``job.result()``; for a job started with a counter (:func:`start`), its ticks passed to the counter
-    while it runs."""
+    """``job.result()``; for a job started with a counter (:func:`start`), its ticks passed to the counter while it
+    runs (by the pump's thread, also while this thread works on), the last of them before this returns."""
     ticks = getattr(job, "propulsor_ticks", None)
     if ticks is None:
         return job.result()
     import concurrent.futures as cf
 
-    try:
-        while not job.done():
-            cf.wait([job], timeout=0.1)
+    while not job.done():  # in steps: a signal's handler runs between them
+        cf.wait([job], timeout=0.1)
+    with _CALLBACK_LOCK:
+        if ticks in _LIVE_TICKS:
+            _LIVE_TICKS.remove(ticks)
+        try:
             ticks.drain()
-        ticks.drain()
-    finally:
-        ticks.close()
+        finally:
+            ticks.close()
     return job.result()
 
 

@@ -27,7 +27,7 @@ PROGRESS, NOTICE = "progress", "notice"
 #: the least time between two count events of one Reporter (the first and the last of a phase always go)
 COUNT_EVERY_S = 0.1
 
-__all__ = ["Event", "Reporter", "PROGRESS", "NOTICE", "COUNT_EVERY_S", "counter", "count_to"]
+__all__ = ["Event", "Reporter", "PROGRESS", "NOTICE", "COUNT_EVERY_S", "counter", "count_to", "count_shared"]
 
 
 class Event(str):
@@ -62,8 +62,9 @@ class Reporter:
 
     def __init__(self, callback: Callable[[Event], object] | None = None):
         self.callback = callback
-        self._phase: str | None = None
-        self._last = -float("inf")
+        #: each counting step's last count's time (several steps may count at once: a worker's, read by the pump's
+        #: thread, beside the build's own)
+        self._last: dict[str, float] = {}
 
     @classmethod
     def of(cls, progress) -> "Reporter":
@@ -80,10 +81,11 @@ class Reporter:
         if self.callback is None:
             return
         now = time.monotonic()
-        first = phase != self._phase
-        if not (first or done >= total or now - self._last >= COUNT_EVERY_S):
+        last = self._last.get(phase)
+        first = last is None
+        if not (first or done >= total or now - last >= COUNT_EVERY_S):
             return
-        self._phase, self._last = phase, now
+        self._last[phase] = now
         what = f"{unit} {done}/{total}" if unit else f"{done}/{total}"
         self.callback(Event(f"{phase}: {what}", PROGRESS, phase, int(done), int(total)))
 
@@ -111,3 +113,24 @@ def count_to(progress, phase: str, unit: str = "") -> Callable[[int, int], None]
     if isinstance(progress, Reporter):
         return lambda done, total: progress.count(phase, done, total, unit)
     return None
+
+
+def count_shared(progress, phase: str, parts: int, unit: str = "") -> list:
+    """`parts` ``count(done, total)`` callbacks (``parallel.start``'s counters of jobs that share one step, such as the
+    two directions of a contact run side by side) reported as one count of the step `phase`: the sum of the parts'
+    done of the sum of their totals; a part not yet heard from is taken as large as the mean of those heard from (its
+    own total replaces that when it comes).  A list of `parts` Nones when `progress` is not a :class:`Reporter`."""
+    if not isinstance(progress, Reporter):
+        return [None] * parts
+    seen: dict[int, tuple[int, int]] = {}
+
+    def part(k: int):
+        def count(done: int, total: int) -> None:
+            seen[k] = (int(done), int(total))
+            done_sum = sum(d for d, _ in seen.values())
+            known = sum(t for _, t in seen.values())
+            total_sum = known + round(known / len(seen)) * (parts - len(seen))
+            progress.count(phase, done_sum, total_sum, unit)
+        return count
+
+    return [part(k) for k in range(parts)]

@@ -17,6 +17,7 @@ from __future__ import annotations
 import json
 import os
 import sys
+import threading
 import time
 
 from .signals import check_signalled
@@ -66,6 +67,19 @@ def _eta(done, total, started: float, now: float, done0: int = 0) -> float | Non
     return (now - started) / (done - done0) * max(0, total - done)
 
 
+def _pace(paces: dict, phase: str, done: int, now: float) -> list:
+    """The pace of the counting step `phase` at this count, `[t, done0, printed, new, done]`: its first count's time
+    and done, its last plain line's time, whether this count starts it (a first count, or a count that went back: the
+    same step run again).  Counts of several steps may interleave (a worker's beside the build's own): each has its
+    own.  `done`: the last count."""
+    pace = paces.get(phase)
+    if pace is None or done < pace[4] or (done == 0 and pace[4] > 0):
+        pace = paces[phase] = [now, done, -float("inf"), True, done]
+    else:
+        pace[3], pace[4] = False, done
+    return pace
+
+
 def _with_eta(text: str, done, total, eta) -> str:
     """`text` of a count with the time left at its pace (not when done, unknown, or the text gives its own)."""
     left = eta_text(eta) if done is not None and total is not None and 0 < done < total else ""
@@ -100,15 +114,22 @@ class Renderer:
         self.live = (not quiet) and (_live_on(stream or sys.stderr) if live is None else bool(live))
         self._progress = None  # the rich Progress, started at the first event
         self._task = None
-        self._phase: str | None = None
-        self._phase_t0 = self.t0
-        self._phase_done0 = 0
-        self._printed = -float("inf")  # when the last plain line of a counting step was printed
+        self._phase: str | None = None  # the step in the live line
+        #: each counting step's pace (its first count's time and done) and its last plain line's time: two counts
+        #: running at once (a worker's beside the build's own) each keep their own
+        self._paces: dict[str, list] = {}
         self._closed = False
+        #: held while an event is shown: a worker's tick comes from the pump's thread (parallel.result)
+        self._lock = threading.RLock()
 
     # -- the events
     def __call__(self, event) -> None:
-        check_signalled()
+        if threading.current_thread() is threading.main_thread():
+            check_signalled()
+        with self._lock:
+            self._event(event)
+
+    def _event(self, event) -> None:
         if _FORWARD_FD is not None:
             _forward(event)
         if getattr(event, "kind", "progress") == "notice":
@@ -120,19 +141,20 @@ class Renderer:
         phase = getattr(event, "phase", None) or str(event)
         done, total = getattr(event, "done", None), getattr(event, "total", None)
         counted = done is not None and total is not None
-        new = phase != self._phase
-        if new:  # a count that starts late (a worker's, read when the build waits for it) paces from its first
-            self._phase, self._phase_t0, self._phase_done0 = phase, now, (done or 0) if counted else 0
-        eta = _eta(done, total, self._phase_t0, now, self._phase_done0) if counted else None
+        pace = _pace(self._paces, phase, done, now) if counted else None
+        new = pace[3] if counted else phase != self._phase
+        eta = _eta(done, total, pace[0], now, pace[1]) if counted else None
         if self.live and not self._closed:
             if new:
                 self._line(self._stamp(now, phase if counted and done == 0 else str(event)))
-            self._show(phase, done, total, eta, new)
+            self._show(phase, done, total, eta, phase != self._phase)
+            self._phase = phase
             return
-        if counted and not new and done < total and now - self._printed < PLAIN_EVERY_S:
+        self._phase = phase
+        if counted and not new and done < total and now - pace[2] < PLAIN_EVERY_S:
             return
         if counted:
-            self._printed = now
+            pace[2] = now
         self._line(self._stamp(now, _with_eta(str(event), done, total, eta)))
 
     def _stamp(self, now: float, text: str) -> str:
@@ -216,13 +238,19 @@ def _hooks() -> None:
 
 
 def _before_fork() -> None:
+    from .parallel import callback_lock
+
+    callback_lock().acquire()  # first: the workers' ticks are drawn holding it, then a live line's lock
     for p in _RUNNING:
         p.live._lock.acquire()
 
 
 def _after_in_parent() -> None:
+    from .parallel import callback_lock
+
     for p in reversed(_RUNNING):
         p.live._lock.release()
+    callback_lock().release()
 
 
 def _after_in_child() -> None:
@@ -251,8 +279,7 @@ class Board:
 
     def start(self, key, name: str) -> None:
         """Build `key` (its part file `name`) started."""
-        row = self._rows[key] = dict(name=name, phase=None, t=time.perf_counter(), printed=-float("inf"), task=None,
-                                     buf=b"")
+        row = self._rows[key] = dict(name=name, phase=None, paces={}, task=None, buf=b"")
         if self.quiet:
             return
         if self.live:
@@ -281,19 +308,19 @@ class Board:
         now = time.perf_counter()
         phase, done, total = ev.get("phase") or ev.get("text", ""), ev.get("done"), ev.get("total")
         counted = done is not None and total is not None
-        new = phase != row["phase"]
-        if new:
-            row["phase"], row["t"], row["done0"] = phase, now, (done or 0) if counted else 0
-        eta = _eta(done, total, row["t"], now, row["done0"]) if counted else None
+        pace = _pace(row["paces"], phase, done, now) if counted else None
+        new = pace[3] if counted else phase != row["phase"]
+        row["phase"] = phase
+        eta = _eta(done, total, pace[0], now, pace[1]) if counted else None
         if self.live:
             self._progress.update(row["task"], description=f"{row['name']}: {phase}", total=total if counted else None,
                                   completed=done or 0, count=f"{done}/{total}" if counted else "",
                                   eta=eta_text(eta))
             return
-        if counted and not new and done < total and now - row["printed"] < PLAIN_EVERY_S:
+        if counted and not new and done < total and now - pace[2] < PLAIN_EVERY_S:
             return
         if counted:
-            row["printed"] = now
+            pace[2] = now
         text = _with_eta(ev.get("text", phase), done, total, eta)
         if not text.startswith(f"{row['name']}: "):
             text = f"{row['name']}: {text}"

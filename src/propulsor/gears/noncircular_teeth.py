@@ -416,9 +416,11 @@ def _concave_zones(curve: BodyPitchCurve) -> list[tuple[float, float]]:
     return out
 
 
-def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame | None = None) -> GeneratedTeeth:
+def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame | None = None,
+                   tick=None) -> GeneratedTeeth:
     """Generated teeth on the pitch curve of one gear of the pair (see the module docstring):
-    every tooth side generated and trimmed, every tip placed (shortened where too thin).
+    every tooth side generated and trimmed, every tip placed (shortened where too thin).  ``tick(done, z)``, when
+    given, is told each tooth whose two sides are generated (progress only).
 
     Teeth: driven z_H = perimeter / (pi m), centres at s = (k + 1/2) p; driver z = z_H / n,
     centres at s = k p (k = 0 .. z-1 covers the driver's first turn, phi in [0, 2 pi / n)).
@@ -461,6 +463,8 @@ def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame 
                                  f"{ROOT_BRIDGE_MAX_MODULE:g} m)", "a larger shaper or a wider blend")
             sides.append(side)
         teeth_sides.append(sides)
+        if tick is not None:
+            tick(len(teeth_sides), z)
 
     # tips: nominal height, shortened where the tip land is too thin
     teeth, tips = [], []

@@ -61,18 +61,20 @@ class GeneratedGear:
 
 
 def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame | None = None,
-                  tol: float = SPLINE_FIT_TOL_MM, start=None) -> GeneratedGear:
+                  tol: float = SPLINE_FIT_TOL_MM, start=None, tick=None) -> GeneratedGear:
     """Closed outline of the generated teeth of one gear of the pair (``generate_teeth``), fitted
     and chained counter-clockwise on the body (increasing polar angle).  `start(fn, *args)`, when given,
     runs ``fn(*args)`` beside this process and returns an object whose ``result()`` gives its value (the
     caller's process pool: this layer forks nothing itself): half the teeth of a large gear are fitted
-    that way."""
-    g = generate_teeth(pc, role, spec, frame)
+    that way.  ``tick(done, total)``, when given, is told the teeth generated, then those fitted here (total: twice
+    the teeth; progress only)."""
+    g = generate_teeth(pc, role, spec, frame, None if tick is None else (lambda k, z: tick(k, 2 * z)))
     curve, z, n, m = g.curve, g.z, g.n, spec.m
     teeth_sides, tips, teeth = g.sides, g.tips, g.teeth
     # fit and chain (counter-clockwise on the body: increasing polar angle)
     order = list(range(z)) if role == "driven" else list(range(z - 1, -1, -1))
-    units = _fit_units(curve, teeth_sides, tips, order, tol, start)
+    units = _fit_units(curve, teeth_sides, tips, order, tol, start,
+                       None if tick is None else (lambda k: tick(min(2 * z, z + k), 2 * z)))
     segs = []
     root_r = []
     hf = -spec.h_root
@@ -128,15 +130,16 @@ SPLIT_FIT_TEETH = 40
 _FITS = None
 
 
-def _fit_units(curve, teeth_sides, tips, order, tol, start=None) -> list:
+def _fit_units(curve, teeth_sides, tips, order, tol, start=None, tick=None) -> list:
     """The fitted pieces of the teeth in ``order`` (one unit per tooth: pieces, root angles, root gaps).
     From SPLIT_FIT_TEETH teeth on, with a `start`, the first half is fitted by ``start`` (a forked process)
     while this one fits the second (the same pieces: every tooth is fitted on its own); an error is the
-    first tooth's, as in one process."""
+    first tooth's, as in one process.  ``tick(done)``: told the teeth fitted (those of the first half when it is
+    done)."""
     global _FITS
 
     if start is None or len(order) < SPLIT_FIT_TEETH:
-        return _fit_teeth(curve, teeth_sides, tips, order, tol)
+        return _fit_teeth(curve, teeth_sides, tips, order, tol, tick)
     half = len(order) // 2
     _FITS = (curve, teeth_sides, tips, tol)
     try:
@@ -144,10 +147,12 @@ def _fit_units(curve, teeth_sides, tips, order, tol, start=None) -> list:
     finally:
         _FITS = None
     try:
-        second, error = _fit_teeth(curve, teeth_sides, tips, order[half:], tol), None
+        second, error = _fit_teeth(curve, teeth_sides, tips, order[half:], tol, tick), None
     except Exception as exc:  # noqa: BLE001 - raised below, after the first half's own error if any
         second, error = None, exc
     first = job.result()
+    if tick is not None:
+        tick(len(order))
     if error is not None:
         raise error
     return first + second
@@ -158,7 +163,7 @@ def _fit_forked(order) -> list:
     return _fit_teeth(curve, teeth_sides, tips, order, tol)
 
 
-def _fit_teeth(curve, teeth_sides, tips, order, tol) -> list:
+def _fit_teeth(curve, teeth_sides, tips, order, tol, tick=None) -> list:
     units = []
     for k in order:
         R, Lf = teeth_sides[k]
@@ -182,6 +187,8 @@ def _fit_teeth(curve, teeth_sides, tips, order, tol) -> list:
         if Lf.root_piece is not None:
             pieces.append(fit_piece(Lf.root_piece, Lf.root_piece.u1, Lf.root_piece.u0, tol))
         units.append((pieces, R.phi_root, Lf.phi_root, R.root_gap_mm, Lf.root_gap_mm))
+        if tick is not None:
+            tick(len(units))
     return units
 
 

@@ -40,15 +40,16 @@ _DESIGNS: dict[int, list] = {}
 _APART = None
 
 
-def design_of(params, design_fn: Callable, *args):
+def design_of(params, design_fn: Callable, *args, progress=None):
     """``design_fn(params, *args)``, computed once per parameter values (and args) for as long as the
-    parameter object lives; recomputed when a field of the parameters has changed since."""
+    parameter object lives; recomputed when a field of the parameters has changed since.  `progress`, when given,
+    is passed on as ``design_fn(..., progress=progress)`` (it is not part of the key)."""
     key = (design_fn.__module__, design_fn.__qualname__, params_to_dict(params), args)
     store = _store_of(params)
     for k, d in store:
         if k == key:
             return d
-    d = design_fn(params, *args)
+    d = design_fn(params, *args) if progress is None else design_fn(params, *args, progress=progress)
     store.append((copy.deepcopy(key), d))
     return d
 
@@ -60,9 +61,15 @@ def _store_of(params) -> list:
     return _DESIGNS[id(params)]
 
 
-def _design_in_child():
-    """In the forked process: the design, and every design computed on the way (:func:`design_of`)."""
+def _design_in_child(fd: int | None = None):
+    """In the forked process: the design, and every design computed on the way (:func:`design_of`); its progress
+    (the writer's) sent to the build through `fd` (``parallel.forward_events``)."""
     design, params, w = _APART
+    if fd is not None and getattr(w, "progress", None) is not None:
+        from ..parallel import forward_events
+        from ..progress import Reporter
+
+        w.progress = Reporter(forward_events(fd))
     d = design(params, w)
     return d, _DESIGNS.get(id(params), [])
 
@@ -70,23 +77,29 @@ def _design_in_child():
 def design_apart(design: Callable, params, w):
     """``design(params, w)`` computed in a forked process while this one calls ``w.warm_up()`` (imports
     the output steps' modules, starts the solids' workers); the designs it computed on the way join this
-    process's cache (:func:`design_of`).  In this process, without warm-up, where no worker may be
-    forked (a budget of one process, slots shared by several builds, no fork)."""
+    process's cache (:func:`design_of`), its progress shown as it comes.  In this process, without warm-up, where no
+    worker may be forked (a budget of one process, slots shared by several builds, no fork)."""
     global _APART
-    from ..parallel import fork_pool, slots_shared
+    from ..parallel import event_pipe, fork_pool, result, slots_shared
+    from ..progress import Reporter
 
     pool = None if slots_shared() or not callable(getattr(w, "warm_up", None)) else fork_pool(1)
     if pool is None:
         return design(params, w)
     _APART = (design, params, w)
+    said = getattr(w, "progress", None)
+    shown = said.callback if isinstance(said, Reporter) else said
     try:
-        job = pool.submit(_design_in_child)  # the fork happens here
+        if shown is None:
+            job = pool.submit(_design_in_child)  # the fork happens here
+        else:
+            job = event_pipe(shown, lambda fd: pool.submit(_design_in_child, fd))
     finally:
         _APART = None
     job.add_done_callback(lambda _f: pool.give_back())
     pool.shutdown(wait=False)
     w.warm_up()
-    d, computed = job.result()
+    d, computed = result(job)
     store = _store_of(params)
     known = [k for k, _ in store]
     store.extend((k, v) for k, v in computed if k not in known)

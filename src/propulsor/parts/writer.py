@@ -253,6 +253,8 @@ class OutputWriter:
         import the modules the solids and the assembly need and start the solids' workers."""
         from ..solids.cq_import import import_cadquery
 
+        # the kernel's libraries load holding the interpreter's lock: the design's steps are shown when it is loaded
+        self.progress("loading the CAD kernel (OCCT) while the design is computed beside it")
         import_cadquery()  # the solids' wrapper, the assembly STEP (VTK loaded only if ever used)
         self._solid_pool()
 

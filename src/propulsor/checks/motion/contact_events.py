@@ -511,7 +511,8 @@ def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, 
     """The loaded contact of ``direction`` over phi0..phi1 (driven law angles): sampled every
     ``step_driver_rad`` of driver angle (default ``policy.CONTACT_STEP_DRIVER_DEG``) and every change of state
     bisected down to ``h_min`` (see the module docstring); at most ``max_evals`` measurements.  ``tick(done,
-    total)``: told the sampled positions measured (progress only)."""
+    total)``: told the positions measured, sampled then bisected (the total of the bisections estimated, exact at the
+    end; progress only)."""
     step = step_driver_rad if step_driver_rad is not None else math.radians(policy.CONTACT_STEP_DRIVER_DEG)
     th0, th1 = float(theta_of_phi(np.array([phi0]))[0]), float(theta_of_phi(np.array([phi1]))[0])
     n = max(2, int(math.ceil(abs(th1 - th0) / step)) + 1)
@@ -543,6 +544,9 @@ def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, 
 
     xs = sorted(samples)
     todo = [(a, b) for a, b in zip(xs[:-1], xs[1:]) if state(samples[a]) != state(samples[b])]
+    # the progress's total from here: each change bisected about log2(step / 2 h_min) times (one half holds it)
+    span = max((b - a for a, b in todo), default=0.0)
+    est = n + len(todo) * max(0, math.ceil(math.log2(span / (2.0 * h_min)))) if span > 2.0 * h_min else n
     while todo and evals < max_evals:
         mids = []
         for a, b in todo:
@@ -554,11 +558,15 @@ def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, 
         for a, b, m in mids[:max(0, max_evals - evals)]:
             r = measure([m], samples[a][1], a)[0]
             samples[m] = r
+            if tick is not None:
+                tick(evals, max(est, evals + 1))
             if state(r) != state(samples[a]):
                 nxt.append((a, m))
             if state(r) != state(samples[b]):
                 nxt.append((m, b))
         todo = nxt
+    if tick is not None:
+        tick(evals, evals)
     xs = np.array(sorted(samples))
     rows = [samples[x] for x in xs]
     return ContactLaw(direction, xs, np.array([r[0] for r in rows]), np.array([r[1] for r in rows]),

@@ -146,6 +146,7 @@ def as_built_values(w, dd, built: dict) -> None:
     """Derived values, checks, the stretches' table, plots and a note of the pair as built."""
     d, p = dd.d, dd.p
     ab = _result(dd, built, w.progress)
+    w.progress("as built: speeds, transmission error, backlash and stretches from the contact positions")
     hc = tooth_height_check(d, p)
     if hc is not None:
         w.add_checks([hc])
@@ -177,6 +178,7 @@ def as_built_values(w, dd, built: dict) -> None:
                      "speed_as_built_phi_max_deg": math.degrees(h0.phi_max)})
     w.derived.update(vals)  # their meanings: the part type's glossary (AS_BUILT)
     w.add_table("as_built_stretches", _STRETCH_COLUMNS, stretch_rows(ab))
+    w.progress("as built: the plot of the driven speed and the transmission error")
     _plot(w, d, ab)
     from ... import policy
 

@@ -117,14 +117,17 @@ def mounting_fits(p: NoncircularPairParams, L: float) -> None:
                          f"must be >= the design centre distance L = {L:.6f} mm (or 0)")
 
 
-def generate_pair(pc, spec_driver, spec_driven, frame):
+def generate_pair(pc, spec_driver, spec_driven, frame, progress=None):
     """(driver, driven) generated outlines: the driver in a forked worker while this process cuts the
-    driven wheel (the two are independent; seed 000/002 teeth by the rack/shaper envelope)."""
+    driven wheel (the two are independent; seed 000/002 teeth by the rack/shaper envelope).  `progress`: counts the
+    driven wheel's teeth generated and fitted (the driver's, beside it, are fewer)."""
     from ...geometry.noncircular_outline import generate_gear
     from ...parallel import start
     from ...policy import SPLINE_FIT_TOL_MM
+    from ...progress import count_to
 
     # each may fit half its teeth in one more forked process (where the budget has a free slot)
     job = start(generate_gear, pc, "driver", spec_driver, frame, SPLINE_FIT_TOL_MM, start)
-    dvn = generate_gear(pc, "driven", spec_driven, frame, SPLINE_FIT_TOL_MM, start)
+    dvn = generate_gear(pc, "driven", spec_driven, frame, SPLINE_FIT_TOL_MM, start,
+                        count_to(progress, "generated: the driven wheel's teeth cut and fitted", "step"))
     return job.result(), dvn

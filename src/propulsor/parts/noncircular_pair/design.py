@@ -78,7 +78,7 @@ def _search_design(p: NoncircularPairParams, law: WalkingLaw, progress) -> Desig
         try:
             with input_names(TOOTH_KEYS_D0):
                 drv, dvn = generate_pair(pc, ToothSpec(x=p.driver_shift, **common),
-                                          ToothSpec(x=-p.driver_shift, **common), frame)
+                                          ToothSpec(x=-p.driver_shift, **common), frame, progress)
         except (InputError, RuntimeError, ValueError) as exc:
             tries.append((pt, str(exc).split(": ", 1)[-1]))
             continue
@@ -117,9 +117,9 @@ def design_generated(p: NoncircularPairParams, progress=lambda s: None, source=N
                   tip_min_mm=p.tip_land_min_module * m, shaper=sh,
                   tip_max_mm=p.tip_height_max_module * m)
     with input_names(TOOTH_KEYS if sh is None else TOOTH_KEYS_D0):
-        progress(f"generated: driver teeth ({z_H // law.n}), rack/shaper envelopes")
+        progress(f"generated: the teeth of both wheels ({z_H // law.n} and {z_H}), rack/shaper envelopes")
         drv, dvn = generate_pair(pc, ToothSpec(x=p.driver_shift, **common), ToothSpec(x=-p.driver_shift, **common),
-                                  frame)
+                                  frame, progress)
     return Design("generated", law, sm.law, L, m, z_H, z_H // law.n, pc, smoothing=sm, driver=drv, driven=dvn,
                   ripple=sm.ripple, closure_error=sm.closure_error,
                   shaper=None if p.shaper_d0_mm <= 0 else entry_of(p, m))
@@ -184,8 +184,8 @@ class PairDesign:
     bores: tuple = ()  # (driver, driven) bores.Bore: given or sized, and why
 
 
-def pair_design(p: NoncircularPairParams, source=None) -> PairDesign:
-    """The pair of the part file ``source`` (a table law's file is read relative to it)."""
-    d = design(p, source=source)
+def pair_design(p: NoncircularPairParams, source=None, progress=lambda s: None) -> PairDesign:
+    """The pair of the part file ``source`` (a table law's file is read relative to it); `progress` told its steps."""
+    d = design(p, progress, source=source)
     chosen = bores(p, d)
     return PairDesign(with_bores(p, chosen), d, gear_profiles(p, d, chosen), mounting(p, d), chosen)

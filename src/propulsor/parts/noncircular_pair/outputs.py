@@ -486,5 +486,5 @@ def write_outputs(p: NoncircularPairParams, w, d: Design, profiles, pr, other=No
 #: report: from the 2D outlines at the installed centre distance, no solid (Pipeline.prove)
 PROOF_STEPS = (proofs, checks_and_derived)
 
-build = Pipeline(lambda p, w: design_of(p, pair_design, getattr(w, "source", None)), (solids, proofs) + OUTPUT_STEPS,
+build = Pipeline(lambda p, w: design_of(p, pair_design, getattr(w, "source", None), progress=w.progress), (solids, proofs) + OUTPUT_STEPS,
                  proof_steps=PROOF_STEPS, design_apart=True, solid_steps=(solids, assembly_and_dxf))

@@ -129,7 +129,7 @@ def _counted(job, tick, k: int):
 def proofs(dd: PairDesign, w, built: dict) -> None:
     """The built pair over the whole cycle; the other tooth method over one leg when asked."""
     from ...parallel import start
-    from ...progress import count_to, counter
+    from ...progress import count_shared, counter
     from ...checks.motion.contact_events import DRIVE, REVERSE
     from .as_built import contact_direction
 
@@ -142,9 +142,9 @@ def proofs(dd: PairDesign, w, built: dict) -> None:
         prog("as built: both directions' contact on the finished outlines, resolved by contact events")
         # the two directions beside each other and beside the other method's proof (in this process when no
         # worker is free: then each start is the work itself); their sampled positions counted
-        built["as_built"] = tuple(start(contact_direction, d, dd.mount, way,
-                                        counter=count_to(prog, f"as built: {name} contact", "position"))
-                                  for way, name in ((DRIVE, "drive"), (REVERSE, "reverse")))
+        counts = count_shared(prog, "as built: contact in both directions", 2, "position")
+        built["as_built"] = tuple(start(contact_direction, d, dd.mount, way, counter=count)
+                                  for way, count in zip((DRIVE, REVERSE), counts))
         if p.tolerance_grade:
             from .tolerance import iso1328, monte_carlo_cases, run_case, worst_cases
 

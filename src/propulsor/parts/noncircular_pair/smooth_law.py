@@ -153,11 +153,11 @@ def design_smooth(p, scr: SmoothScreen, progress):
             continue
         frame = frame or ArcFrame(pc)
         common = _tooth_common(p, m, cutter, sh)
-        progress(f"generated: driver teeth ({z_H // law.n}), rack/shaper envelopes")
+        progress(f"generated: the teeth of both wheels ({z_H // law.n} and {z_H}), rack/shaper envelopes")
         try:
             with input_names(TOOTH_KEYS if entry is None else TOOTH_KEYS_D0):
                 drv, dvn = generate_pair(pc, ToothSpec(x=p.driver_shift, **common),
-                                          ToothSpec(x=-p.driver_shift, **common), frame)
+                                          ToothSpec(x=-p.driver_shift, **common), frame, progress)
         except (InputError, RuntimeError, ValueError) as exc:
             if not p.law_search or not (g.driver.concave or g.driven.concave):
                 raise

@@ -21,6 +21,7 @@ import numpy as np
 
 from ... import policy
 from ...check import Check
+from ...progress import count_to
 
 __all__ = ["ToothLoad", "analyse", "summary", "equilibrium", "tooth_load_values", "FACTOR_SOURCES", "PHASE_COLUMNS", "PEAK_COLUMNS"]
 
@@ -144,11 +145,12 @@ def _loads(p, d, phi):
 
 
 def analyse(d, mount: float, p, c_phi, c_te, phi0: float, span: float, step_deg: float | None = None,
-            direction: int = 1) -> ToothLoad:
+            direction: int = 1, tick=None) -> ToothLoad:
     """The load per tooth over the law phases phi0 .. phi0 + span of design ``d`` mounted at ``mount`` under the part
     file's load case; ``c_phi``, ``c_te``: the resolved contact of ``direction`` (as-built driven offset te at the
     law phases c_phi; ``checks.motion.contact_events.DRIVE`` = 1, the driver turning counter-clockwise, or REVERSE =
-    -1: the other flanks loaded) the driven wheel is placed by."""
+    -1: the other flanks loaded) the driven wheel is placed by.  ``tick(done, total)``: told the sampled
+    positions evaluated (progress only)."""
     from ...checks.motion.contact_events import _phi_of_theta
     from ...checks.motion.mesh_load import phase_contacts
     from ...gears.gear_materials import material
@@ -213,7 +215,11 @@ def analyse(d, mount: float, p, c_phi, c_te, phi0: float, span: float, step_deg:
     def key(r):
         return frozenset((c.driver_tooth, c.driven_tooth) for c, f in zip(r["cs"], r["F"]) if f > 0)
 
-    recs = [evaluate(float(x), float(t)) for x, t in zip(grid, np.linspace(th0, th1, n))]
+    recs = []
+    for x, t in zip(grid, np.linspace(th0, th1, n)):
+        recs.append(evaluate(float(x), float(t)))
+        if tick is not None:
+            tick(len(recs), n)
     # every change of the set of loaded pairs, bisected
     extra = []
     for a, bb in zip(recs[:-1], recs[1:]):
@@ -469,7 +475,8 @@ def tooth_load_values(w, dd, built: dict, ab) -> None:
         return
     w.progress("load per tooth: sharing, contact and root stress of every tooth over the period")
     dr = ab.drive
-    tl = analyse(d, dd.mount, p, dr.phi, dr.te, float(dr.phi[0]), ab.span)
+    tl = analyse(d, dd.mount, p, dr.phi, dr.te, float(dr.phi[0]), ab.span,
+                 tick=count_to(w.progress, "load per tooth: sampled positions", "position"))
     vals = summary(tl, p)
     w.derived.update(vals)
     w.add_checks(checks(tl, vals, p))
