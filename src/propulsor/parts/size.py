@@ -10,7 +10,9 @@ that cannot finish in minutes (policy.BUILD_SECONDS_MAX), not to predict a build
 Calibration (CPU s; default part file → variant):
 final drive 28.1 → 39.2 with the sweep density doubled, → 43.8 with every tooth count doubled (before the
 carrier; the carrier solid, its pin sweep and the strength step add 11.5 CPU s: 24.9 → 36.4 user s);
-non-circular pair (seed 002) 25.2 → 26.5 with the proof phases doubled, → 42.6 with the teeth doubled;
+non-circular pair (seed 002) 25.2 → 26.5 with the proof phases doubled, → 42.6 with the teeth doubled (2026-11-28:
+its as-built contact recalibrated after the compiled search, 1.2 → 0.3 ms a position, over one period of the pair:
+`bench/bench_size_estimates.py` gives estimate / measured CPU 0.73 .. 1.18 on the ten ncg part files);
 cam mover (exponential law) 18.7 → 32.7 with 4 × the sweep steps; balancer 17.1 → 29.6 with 4 × the
 travel steps (2026-11-25: damper heat exact, the drill point's mesh measured, not halved three times; before:
 92.7 → 161.3, and → 143.5 with the sweep chord a quarter, whose exponent is kept); road wheel 17.8.
@@ -35,8 +37,14 @@ class SizeEstimate:
     seconds: float
     detail: str
 
+    @property
+    def cpu_seconds(self) -> float:
+        """The build's CPU seconds (its process and its workers): what a busy machine stretches over more time."""
+        return self.seconds * _CORES_USED
+
     def text(self) -> str:
-        return f"≈ {self.seconds:.3g} s ({self.detail})"
+        return (f"≈ {self.seconds:.2g} s on two idle cores ({self.cpu_seconds:.2g} CPU s: longer on a busy machine; "
+                f"{self.detail})" if self.seconds > 0 else self.detail)
 
 
 #: a build keeps about this many cores busy (main process and its forked workers)
@@ -49,32 +57,52 @@ def wall(cpu_seconds: float, detail: str) -> SizeEstimate:
 
 def final_drive(p, part_file: Path | None = None) -> SizeEstimate:
     """Solids ∝ teeth of sun + planet + ring; sweep ∝ steps × meshes × √(teeth / 92); carrier and strength
-    a fixed 11.5 CPU s."""
+    a fixed 11.5 CPU s; the rest fixed 12 CPU s (45-59 measured on the two part files, 2026-11-28, against 39.6
+    estimated with 6)."""
     teeth = p.z_sun + p.z_planet + p.z_ring
     steps = round(360.0 * p.sweep_steps_per_deg)
     meshes = 2 * p.n_planets
-    cpu = 6.0 + 11.5 + 0.12 * teeth + 0.00257 * steps * meshes * math.sqrt(teeth / 92.0)
+    cpu = 12.0 + 11.5 + 0.12 * teeth + 0.00257 * steps * meshes * math.sqrt(teeth / 92.0)
     return wall(cpu, f"{teeth} teeth, sweep {steps} steps × {meshes} meshes")
+
+
+def _pair_periods(p, part_file: Path | None) -> int:
+    """The periods the as-built contact covers one of (``as_built.period_span``): the walking law's four legs, a smooth
+    law's periods (its lobes), when the driven teeth divide into them; else one (the whole turn).  The smooth law is
+    the dry run's own screen (:func:`~propulsor.parts.noncircular_pair.feasibility.screened`: computed once)."""
+    if p.law == "walking":
+        periods = 4
+    else:
+        from .noncircular_pair.feasibility import screened
+
+        smooth = screened(p, part_file).smooth
+        periods = int(getattr(getattr(smooth, "law", None), "periods", 1) or 1)
+    return periods if periods > 1 and p.driven_teeth % periods == 0 else 1
 
 
 def noncircular_pair(p, part_file: Path | None = None) -> SizeEstimate:
     """Design, outlines and solids ∝ teeth of both gears; proof ∝ phases (the other method's proof
-    when compared: one leg, a quarter of them); as built: 1.2 ms a contact position, both directions over one
-    period (a leg of the walking law, else the turn) every 0.05° of driver and about 120 positions a driven tooth
-    at the changes of contact; as made: each tolerance case the same over the whole turn every 0.5°."""
+    when compared: one leg, a quarter of them); as built: 0.3 ms a contact position, both directions over one
+    period of the pair (the driver's turns of a period every 0.05°, and about 190 positions a driven tooth at the
+    changes of contact: 2 × (7 200 + 3 735) on the seed-002 Fourier pair, measured); as made: each tolerance case
+    the same over the whole turn every 0.5°."""
     from .. import policy
 
     z_H = p.driven_teeth
     teeth = z_H + z_H // p.driver_turns
     phases = z_H * p.proof_phases_per_tooth
     cpu = 6.5 + 0.174 * teeth * (1.25 if p.compare_methods else 1.0) + 0.004 * phases * teeth / 100.0
-    periods = 4 if p.law == "walking" and z_H % 4 == 0 else 1
+    periods = _pair_periods(p, part_file)
     driver_deg = 360.0 * p.driver_turns
-    contact = 2 * 1.2e-3 * (driver_deg / periods / policy.CONTACT_STEP_DRIVER_DEG + 120 * z_H / periods)
+    contact = 2 * _CONTACT_S * (driver_deg / periods / policy.CONTACT_STEP_DRIVER_DEG + 190 * z_H / periods)
     cases = (4 + p.tolerance_samples) if p.tolerance_grade else 0
-    made = cases * 2 * 1.2e-3 * (driver_deg / policy.TOLERANCE_STEP_DRIVER_DEG + 120 * z_H)
+    made = cases * 2 * _CONTACT_S * (driver_deg / policy.TOLERANCE_STEP_DRIVER_DEG + 190 * z_H)
     cpu += contact + made
     return wall(cpu, f"{teeth} teeth, proof {phases} phases" + (f", {cases} tolerance cases" if cases else ""))
+
+
+#: CPU seconds of one as-built contact position (the compiled search and its Python around it)
+_CONTACT_S = 0.3e-3
 
 
 def cam_mover(p, part_file: Path | None = None) -> SizeEstimate:
@@ -99,12 +127,13 @@ def polysector_gear(p, part_file: Path | None = None) -> SizeEstimate:
     step with the outlines within 1e-4 mm, 0.041 s at the blank's own circle (e = 0, outlines within 3e-5 mm
     to resolve Δi below 1e-6); the tracked contact law ≈ 3.7 CPU s a position (refined at every hand-over).
     Calibrated on parts/polysector.toml: 29 CPU s with three positions and the contact law (2026-11-25;
-    20.5 with four positions before it)."""
+    20.5 with four positions before it); 51.7 CPU s measured on 2026-11-28 (a loaded machine), the fixed part raised
+    from 6.2 to 20 CPU s."""
     per = p.flows * p.sectors_per_flow
     zc = [z for z in p.conditional_teeth if isinstance(z, int) and not isinstance(z, bool)]
     steps = [p.proof_steps_per_pitch * max(1, z // per) for z in zc]
     proof = sum(n * (0.041 if z == p.blank_teeth else 0.022) for n, z in zip(steps, zc))
-    cpu = 6.2 + 0.093 * (p.gear_teeth + p.sector_teeth) + 0.62 * len(zc) * p.flows + proof + 3.7 * len(zc)
+    cpu = 20.0 + 0.093 * (p.gear_teeth + p.sector_teeth) + 0.62 * len(zc) * p.flows + proof + 3.7 * len(zc)
     return wall(cpu, f"{len(zc)} positions, proof {sum(steps)} steps, {p.gear_teeth + p.sector_teeth} teeth")
 
 
