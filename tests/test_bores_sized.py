@@ -184,3 +184,52 @@ def test_a_kit_of_the_small_pair_takes_its_pins_from_the_sized_bores_on_an_80_mm
     plates = {c["name"] for c in m["checks"] if c["name"].endswith(".on_bed")}
     assert "plate_1.on_bed" in plates and len(plates) >= 2
     assert "coupon, coupon_pin, coupon_key" in (out / "print_guide.md").read_text()
+
+
+def _with_driven_bore(name: str, bore: float, tmp_path):
+    from pathlib import Path
+
+    src = Path(__file__).resolve().parents[1] / "parts" / f"{name}.toml"
+    text = "\n".join(f"driven_bore_mm = {bore}" if ln.startswith("driven_bore_mm") else ln
+                     for ln in src.read_text().splitlines())
+    f = tmp_path / f"{name}_bore_{bore:g}.toml"
+    f.write_text(text + "\n")
+    return f
+
+
+def test_the_dry_run_refuses_a_bore_the_law_search_cannot_carry(tmp_path):
+    """The seed-002 pair by the law search (generated teeth): a driven bore over the root of every blend it ranked is
+    refused by the dry run (before: valid, then refused after the teeth were cut); one under all of them passes."""
+    from propulsor.parts.noncircular_pair.bores import root_bound
+    from propulsor.parts.noncircular_pair.feasibility import _candidate_curves, screened
+
+    f = _with_driven_bore("ncg_seed002", 170.0, tmp_path)
+    with pytest.raises(InputError) as exc:
+        propulsor.part(f)
+    e = exc.value
+    assert (e.parameter, e.value) == ("driven_bore_mm", 170.0) and "lies inside the pitch curve" in e.limit
+    ok = propulsor.part(_with_driven_bore("ncg_seed002", 40.0, tmp_path))
+    scr = screened(ok.params, None)
+    curves = _candidate_curves(ok.params, scr)
+    bounds = [root_bound(c, "driven", scr.m) for c in curves]
+    assert len(curves) > 1 and f"{max(bounds) - scr.m:.3f} mm" in e.limit  # the most any candidate allows
+    assert "may fit is 160 mm (the cut root decides)" in e.hint
+    assert main(["build", str(f), "--dry-run", "-q"]) == 2
+
+
+def test_the_dry_run_checks_a_sector_pairs_bore_on_its_cut_root(tmp_path):
+    """The sector method's outlines are quick: the dry run checks a given bore on them as the build does, and
+    names the largest standard bore that fits (before: valid, then refused by the build)."""
+    f = _with_driven_bore("ncg_seed002_table", 170.0, tmp_path)
+    assert main(["build", str(f), "--dry-run", "-q"]) == 2
+    with pytest.raises(InputError) as exc:
+        propulsor.part(f)
+    e = exc.value
+    assert (e.parameter, e.value) == ("driven_bore_mm", 170.0)
+    gear = propulsor.part(_with_driven_bore("ncg_seed002_table", 40.0, tmp_path))
+    r_f, m = gear.design.d.driven.root_min_radius, gear.design.d.m
+    assert f">= {r_f - m:.3f} mm" in e.limit and "the largest standard bore that fits is 150 mm" in e.hint
+    t2 = keyway_for_shaft(150.0)[1]
+    assert 75.0 + t2 < r_f - m  # 150 fits: keyed, a module of rim under the root
+    nxt = min(d for d in policy.BORE_STANDARD_D_MM if d > 150.0)
+    assert nxt / 2 + keyway_for_shaft(nxt)[1] >= r_f - m  # the next standard size does not

@@ -44,6 +44,25 @@ def bore_limit(root_min: float, m: float) -> float:
     return root_min - policy.BORE_RIM_MIN_MODULES * m
 
 
+def largest_bore(lim: float, keyway: bool) -> float | None:
+    """The largest standard bore (``policy.BORE_STANDARD_D_MM``, keyed within DIN 6885-1's range when `keyway`) whose
+    radius with its keyway's depth t2 stays under `lim` (mm); None when none does."""
+    fits = [d for d in policy.BORE_STANDARD_D_MM
+            if (not keyway or _KEYED[0] < d <= _KEYED[1]) and d / 2 + _t2(d, keyway) < lim]
+    return fits[-1] if fits else None
+
+
+def _remedy(name: str, lim: float, keyway: bool, bound: bool = False) -> str:
+    """The refusal's remedy: the largest standard bore under `lim` (`bound`: a limit from the pitch curves, which the
+    cut root may lower)."""
+    d = largest_bore(lim, keyway)
+    best = ((f"the largest standard bore that may fit is {d:g} mm (the cut root decides)" if bound else
+             f"the largest standard bore that fits is {d:g} mm") if d is not None else
+            f"no standard{' keyed' if keyway else ''} bore fits" + ("; keyway = false allows a plain one" if keyway
+                                                                      else ""))
+    return f"{best}; leave {name} out to size it from the gear"
+
+
 def check_given(name: str, d: float, keyway: bool, root_min: float, m: float) -> None:
     """A bore the part file gives: InputError (key, value, limit) when it or its keyway reaches the rim below the
     root."""
@@ -55,8 +74,7 @@ def check_given(name: str, d: float, keyway: bool, root_min: float, m: float) ->
         rim = policy.BORE_RIM_MIN_MODULES
         raise InputError(name, d, f"bore{' + keyway' if keyway else ''} must stay "
                          f"{'one module' if rim == 1 else f'{rim:g} modules'} inside the root: "
-                         f"bore/2 + t2 = {d / 2 + t2:.3f} mm >= {lim:.3f} mm",
-                         f"largest bore about {2 * (lim - t2):.1f} mm; leave {name} out to size it from the gear")
+                         f"bore/2 + t2 = {d / 2 + t2:.3f} mm >= {lim:.3f} mm", _remedy(name, lim, keyway))
 
 
 def size_bore(root_min: float, m: float, keyway: bool) -> Bore:
@@ -141,14 +159,16 @@ def root_bound(pc, which: str, m: float, samples: int = 4096) -> float:
 def check_given_on_pitch_curves(p, pc, m: float) -> None:
     """A bore the part file gives, refused before any tooth is cut when it reaches the rim below the root for certain
     (:func:`root_bound`): the dry run refuses it as the build does (the build's own check, on the cut root, then
-    refuses the bores between the two)."""
+    refuses the bores between the two).  `pc`: the pitch curves, or a list of the pitch curves the design may build
+    (the law search's candidates): a bore is refused when it reaches the root on every one of them."""
     rim = policy.BORE_RIM_MIN_MODULES
+    pcs = pc if isinstance(pc, (list, tuple)) else [pc]
     for which in ("driver", "driven"):
         name = f"{which}_bore_mm"
         d = getattr(p, name)
-        if d is None or d <= 0:
+        if d is None or d <= 0 or not pcs:
             continue
-        bound = root_bound(pc, which, m)
+        bound = max(root_bound(c, which, m) for c in pcs)
         t2 = _t2(d, p.keyway)
         lim = bound - rim * m
         if not d / 2 + t2 < lim:
@@ -157,4 +177,13 @@ def check_given_on_pitch_curves(p, pc, m: float) -> None:
                              f"the pitch curve: bore/2 + t2 = {d / 2 + t2:.3f} mm >= {lim:.3f} mm (the {which}'s "
                              f"largest pitch radius within a pitch of its least, {bound:.3f} mm, less "
                              f"{rim * m:.3f} mm)",
-                             f"largest bore under {2 * (lim - t2):.1f} mm; leave {name} out to size it from the gear")
+                             _remedy(name, lim, p.keyway, bound=True))
+
+
+def check_given_on_design(p, d) -> None:
+    """The bores the part file gives, checked on the design's cut roots as the build checks them (:func:`bores`)."""
+    for which, gear in (("driver", d.driver), ("driven", d.driven)):
+        name = f"{which}_bore_mm"
+        given = getattr(p, name)
+        if given is not None:
+            check_given(name, given, p.keyway, gear.root_min_radius, d.m)

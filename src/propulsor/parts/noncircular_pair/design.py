@@ -141,7 +141,11 @@ def design_sectors(p: NoncircularPairParams, progress=lambda s: None) -> Design:
 
 
 def design(p: NoncircularPairParams, progress=lambda s: None, source=None) -> Design:
-    return design_generated(p, progress, source) if p.method == "generated" else design_sectors(p, progress)
+    if p.method == "generated":
+        return design_generated(p, progress, source)
+    from ..pipeline import design_of
+
+    return design_of(p, design_sectors, progress=progress)  # the dry run's (its bores are checked on the outlines)
 
 
 # =========================================================================== proof

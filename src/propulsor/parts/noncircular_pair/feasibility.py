@@ -201,14 +201,28 @@ def _largest_sector_module(table, j_n, m_hi) -> float:
     return lo
 
 
+def _candidate_curves(p: NoncircularPairParams, scr: Screen) -> list:
+    """The pitch curves of every blend the law search ranked (the design builds one of them)."""
+    law = law_of(p)
+    return [PitchCurves(SmoothedWalkingLaw(law, pt.delta, u_h=pt.u_h_rel * law.u), pt.L) for pt in scr.search.points]
+
+
 def feasible(p: NoncircularPairParams, source=None) -> None:
     """The part type's feasibility (``parts.vet``): :func:`screened`, its result kept for the design; a bore the part
     file gives that surely reaches the root (``bores.check_given_on_pitch_curves``, where the screen settles the pitch
-    curves: a law without corners, or the walking law's given or smallest blend)."""
-    from .bores import check_given_on_pitch_curves
+    curves: a law without corners, the walking law's given or smallest blend, every blend the law search ranked), or
+    that reaches the sector method's cut root (its outlines are quick: the build's own check on them)."""
+    from .bores import check_given_on_design, check_given_on_pitch_curves
 
     scr = screened(p, source)
     if scr.smooth is not None:
         check_given_on_pitch_curves(p, scr.smooth.pc, scr.smooth.m)
     elif scr.smoothing is not None:
         check_given_on_pitch_curves(p, PitchCurves(scr.smoothing.law, scr.smoothing.L), scr.m)
+    elif scr.search is not None and (p.driver_bore_mm or p.driven_bore_mm):
+        check_given_on_pitch_curves(p, _candidate_curves(p, scr), scr.m)
+    elif scr.sector:
+        from ..pipeline import design_of
+        from .design import design_sectors
+
+        check_given_on_design(p, design_of(p, design_sectors))  # the sector outlines are quick: the build's own check
