@@ -165,3 +165,38 @@ def test_a_worker_never_closes_a_descriptor_number_taken_since_by_a_pipe(tmp_pat
             f.close()  # their numbers are free, and still listed: the pool's pipes take some of them
         assert [result(start(_answer)) for _ in range(3)] == [42, 42, 42]
     assert not parallel._CLOSE_IN_WORKERS
+
+
+def _sleep_and_say(seconds: float) -> int:
+    import time
+
+    time.sleep(seconds)
+    return os.getpid()
+
+
+@pytest.mark.parametrize("signalled", [True, False])
+def test_an_interrupted_build_kills_its_solid_workers_a_failed_one_waits_for_them(tmp_path, monkeypatch, signalled):
+    """The trial's Ctrl-C took 10-17 s: the writer's close waited for the solids' jobs in its workers.  Interrupted
+    (a signal recorded), close kills them at once; after a plain failure it lets them finish (nothing is written
+    into the folder after close either way)."""
+    from propulsor import parallel, signals
+    from propulsor.parts.writer import OutputWriter
+
+    monkeypatch.setenv("PROPULSOR_JOBS", "3")
+    monkeypatch.delenv("MAKEFLAGS", raising=False)
+    with parallel.Workers():
+        w = OutputWriter(tmp_path, "x", None)
+        pool = w._solid_pool()
+        job = pool.submit(_sleep_and_say, 6.0 if signalled else 1.0)
+        procs = list(pool._processes.values())
+        while not any(p.is_alive() for p in procs):
+            pass
+        if signalled:
+            monkeypatch.setattr(signals, "SIGNALLED", [2])
+            import propulsor.parts.writer  # noqa: F401 - close reads signals.SIGNALLED at the call
+        w.close()
+        if signalled:
+            assert all(p.exitcode == -9 for p in procs), [p.exitcode for p in procs]  # SIGKILL, not finished
+            assert job.done() and job.exception() is not None
+        else:
+            assert job.result() in {p.pid for p in procs}  # waited for: finished normally

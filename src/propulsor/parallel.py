@@ -307,6 +307,11 @@ def _close_fds() -> tuple[tuple[int, int, int], ...]:
         return tuple(sorted((fd, *key) for fd, key in _CLOSE_IN_WORKERS.items()))
 
 
+def kill_pool(pool: ProcessPoolExecutor) -> None:
+    """Kill the processes of `pool` at once (an interrupted build does not wait for its workers' jobs)."""
+    _kill_pools([pool])
+
+
 def _kill_pools(pools) -> None:
     """Kill the processes of `pools` at once, wait for them, drop the pools and give back their slots."""
     procs = [proc for pool in pools for proc in getattr(pool, "_procs", {}).values()]
@@ -600,9 +605,15 @@ def _pump() -> None:
     build's thread's to meet: here the job is only dropped."""
     import time
 
+    from .signals import SIGNALLED
+
     while True:
         time.sleep(PUMP_EVERY_S)
         with _CALLBACK_LOCK:
+            if SIGNALLED:  # interrupted: the build is ending, its workers' counts are not shown any more
+                for t in _LIVE_TICKS:
+                    t.close()
+                _LIVE_TICKS.clear()
             for t in list(_LIVE_TICKS):
                 done = t.job is None or t.job.done()
                 try:

@@ -302,9 +302,17 @@ class OutputWriter:
                 job.result()
 
     def close(self) -> None:
-        """Stop the workers (after a failure: nothing may be written into the folder after this)."""
+        """Stop the workers (after a failure: nothing may be written into the folder after this): their jobs finish
+        first, unless a signal is ending the build (then they are killed at once)."""
+        from ..signals import SIGNALLED
+
         if self._pool is not None:
-            self._pool.shutdown(wait=True, cancel_futures=True)
+            if SIGNALLED:
+                from ..parallel import kill_pool
+
+                kill_pool(self._pool)
+            else:
+                self._pool.shutdown(wait=True, cancel_futures=True)
             self._pool = None
         self._solid_jobs = []
         self._mesh_jobs = []

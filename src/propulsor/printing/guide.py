@@ -72,7 +72,10 @@ def write_guide(kit, w, plans, items, sliced: bool, title: str) -> None:
               f"their side so that their layers run along them.", "",
               f"Each plate file carries these settings as a PrusaSlicer project (open it as a project: the printer "
               f"gets what the times and grams below assume); its pieces sit centred on the bed, at least "
-              f"{p.margin_mm:g} mm from its edges, so that the slicer's skirt stays on the bed.", ""]
+              f"{p.margin_mm:g} mm from its edges, so that the slicer's skirt stays on the bed. Keep them where they "
+              f"are: PrusaSlicer's window keeps a project's positions, but its command line arranges the pieces "
+              f"anew unless told not to (`prusa-slicer --export-gcode --dont-arrange plate_1.3mf`), and the skirt "
+              f"around a full plate arranged to the bed's edges leaves the bed.", ""]
     lines += plates_lines(p, plans, sliced)
     lines += _table(["piece", "count", "what"], [[pc.name, str(pc.count), pc.what] for pc in kit.pieces])
     if kit.material_notes:
