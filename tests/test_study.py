@@ -326,7 +326,8 @@ def test_interrupted_study_keeps_the_finished_rows_and_resume_runs_the_rest(tmp_
     out = tmp_path / "out"
     env = {**os.environ, "PYTHONPATH": str(ROOT / "src")}
     cmd = [str(BIN / "propulsor"), "explore", str(study), "--out", str(out), "--workers", "1"]
-    proc = subprocess.Popen(cmd, env=env, stderr=subprocess.PIPE, text=True, cwd=tmp_path)
+    # its own process group, signalled as a terminal's Ctrl-C signals the foreground group: every process of it
+    proc = subprocess.Popen(cmd, env=env, stderr=subprocess.PIPE, text=True, cwd=tmp_path, start_new_session=True)
     children: set[int] = set()
     deadline = time.monotonic() + 240
     while time.monotonic() < deadline and proc.poll() is None:
@@ -334,13 +335,22 @@ def test_interrupted_study_keeps_the_finished_rows_and_resume_runs_the_rest(tmp_
         if (out / "results.csv").is_file() and len((out / "results.csv").read_text().splitlines()) >= 2:
             break
         time.sleep(0.2)
-    proc.send_signal(signal.SIGINT)
+    workers = [c for c in psutil.Process(proc.pid).children(recursive=True)
+               if c.cmdline()[:1] and c.cmdline()[0].startswith("dask worker")]  # Dask's workers name themselves so
+    ignored = [int(next(ln for ln in open(f"/proc/{w.pid}/status") if ln.startswith("SigIgn:")).split()[1], 16)
+               >> (signal.SIGINT - 1) & 1 for w in workers]
+    os.killpg(proc.pid, signal.SIGINT)
     _, err = proc.communicate(timeout=120)
+    assert workers and all(ignored), (workers, ignored)  # SIGINT ignored in every worker: the study's to handle
     assert proc.returncode == 130, err
-    assert err.strip().splitlines()[-1] == ("propulsor: interrupted by SIGINT; the finished variants are in "
-                                             "results.csv (--resume runs the rest)")
+    # the Dask workers ignore it (before: each printed its KeyboardInterrupt traceback, 33-71 lines)
+    assert "Traceback" not in err and "KeyboardInterrupt" not in err, err
     kept = read_rows(out)
     assert 1 <= len(kept) < 9
+    n_rows = len((out / "results.csv").read_text().splitlines()) - 1
+    assert err.strip().splitlines()[-1] == (f"propulsor: interrupted by SIGINT; {n_rows} finished variant"
+                                             f"{'s' if n_rows != 1 else ''} in {out / 'results.csv'} (--resume runs "
+                                             f"the rest)")
     # no worker left behind (multiprocessing's resource tracker leaves when it sees its parent gone)
     procs = []
     for pid in children:
@@ -547,3 +557,19 @@ minimize = ["speed_ripple"]
     todo = [(i, v, f"k{i}") for i, v in enumerate(study.variants, 1)]
     engine._evaluate_all(Client(), study, tmp_path, todo, None, None)
     assert submitted == [(96, 3), (80, 2), (64, 1)]
+
+
+def test_an_interrupted_study_says_what_it_kept(tmp_path):
+    """The trial's Ctrl-C before any variant finished was told "the finished variants are in results.csv" of a
+    folder that did not exist: the line now counts the rows there are."""
+    import argparse
+
+    from propulsor.cli import _study_kept
+
+    args = argparse.Namespace(out=str(tmp_path / "s"), study="x.toml")
+    assert _study_kept(args) == "no variant had finished: nothing written"
+    (tmp_path / "s").mkdir()
+    (tmp_path / "s" / "results.csv").write_text("variant,ok\n")
+    assert _study_kept(args) == "no variant had finished: nothing written"
+    (tmp_path / "s" / "results.csv").write_text("variant,ok\n1,true\n2,true\n")
+    assert _study_kept(args) == f"2 finished variants in {tmp_path / 's' / 'results.csv'} (--resume runs the rest)"

@@ -511,14 +511,27 @@ def main(argv=None) -> int:
         from .parallel import kill_workers
 
         kill_workers()
-        kept = ("the finished variants are in results.csv (--resume runs the rest)"
-                if getattr(args, "command", None) == "explore" else "nothing written")
+        kept = _study_kept(args) if getattr(args, "command", None) == "explore" else "nothing written"
         print(f"propulsor: interrupted by {signal.Signals(signum).name}; {kept}", file=sys.stderr)
         return 128 + signum
     finally:
         for sig, handler in saved.items():
             signal.signal(sig, handler)
         sys.unraisablehook = saved_hook
+
+
+def _study_kept(args) -> str:
+    """What an interrupted study left: its finished variants' rows (results.csv), or nothing."""
+    out = Path(args.out) if getattr(args, "out", None) else Path("output") / Path(getattr(args, "study", "")).stem
+    table = out / "results.csv"
+    try:
+        with open(table, "rb") as f:
+            rows = sum(1 for line in f if line.strip()) - 1
+    except OSError:
+        rows = 0
+    if rows <= 0:
+        return "no variant had finished: nothing written"
+    return f"{rows} finished variant{'s' if rows != 1 else ''} in {table} (--resume runs the rest)"
 
 
 if __name__ == "__main__":

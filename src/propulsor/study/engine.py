@@ -9,6 +9,8 @@ import json
 import logging
 import math
 import os
+import signal
+import threading
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -105,9 +107,18 @@ def local_cluster(n: int, directory: str | None = None):
 
     extra = {"local_directory": directory} if directory else {}
     config = {**WORKER_CONFIG, "temporary-directory": directory} if directory else WORKER_CONFIG
-    with dask.config.set(config):
-        return LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address="127.0.0.1:0",
-                            silence_logs=logging.CRITICAL, **extra)
+    # the worker processes start with SIGINT ignored (kept across their exec): a Ctrl-C at the terminal reaches every
+    # process of the group, and each worker would print its KeyboardInterrupt traceback (33 lines in the trial);
+    # the study's own process handles it and stops the cluster
+    held = threading.current_thread() is threading.main_thread()
+    before = signal.signal(signal.SIGINT, signal.SIG_IGN) if held else None
+    try:
+        with dask.config.set(config):
+            return LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address="127.0.0.1:0",
+                                silence_logs=logging.CRITICAL, **extra)
+    finally:
+        if held:
+            signal.signal(signal.SIGINT, before)
 
 
 def vet_folder(out: Path, build_best: int = 0) -> None:
