@@ -39,6 +39,7 @@ $(STAMP): pyproject.toml constraints.txt
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install -q -c constraints.txt pip
 	$(BIN)/python -m pip install -q -c constraints.txt -e '.[test,docs]'
+	$(BIN)/python -m propulsor.checks.kernels
 	touch $@
 
 lock:

@@ -181,26 +181,12 @@ PRELOAD = ("propulsor.parts", "propulsor.parts.writer", "propulsor.solids.build"
 def preload() -> None:
     import importlib
 
-    import numpy as np
-
     for name in PRELOAD:
         importlib.import_module(name)
-    # the compiled kernels (mesh checks, sweeps): loaded (or compiled, once per machine) before the builds fork
-    from .checks.mesh import self_intersections
+    # the compiled kernels (mesh checks, sweeps, contact): loaded (or compiled, once per machine) before the builds fork
+    from .checks.kernels import warm
 
-    self_intersections(np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]), np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]))
-    from .checks.motion import Outline
-    from .checks.motion.nearest import nearest_edge
-
-    from .checks.motion.crossing import certainly_apart
-
-    square = Outline([np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])], 0.5)
-    nearest_edge(square.points + 1.5, square, square)
-    certainly_apart(square, square, square.points + 1.2, square.points - 1.2, 0.2)
-    from .checks.motion.backlash import _rot_hits
-
-    P = square.points + 1.2
-    _rot_hits(P, np.zeros(2), square, 1.0, 0.5, np.linalg.norm(P, axis=1), square.boundary_lower_bound(P))
+    warm()
 
 
 def in_child(fn, *args) -> int:

@@ -160,6 +160,10 @@ class Pipeline:
         self._run(params, w, [s for s in self.steps if any(s is t for t in self.solid_steps)])
 
     def _run(self, params, w, steps, apart: bool = False) -> None:
+        if not (apart and callable(getattr(w, "warm_up", None))):  # (else the warm-up beside the design does it)
+            from ..checks.kernels import warm_if_cold
+
+            warm_if_cold(getattr(w, "progress", None))
         d = design_apart(self.design, params, w) if apart else self.design(params, w)
         built: dict = {}
         for step in steps:

@@ -256,6 +256,9 @@ class OutputWriter:
         # the kernel's libraries load holding the interpreter's lock: the design's steps are shown when it is loaded
         self.progress("loading the CAD kernel (OCCT) while the design is computed beside it")
         import_cadquery()  # the solids' wrapper, the assembly STEP (VTK loaded only if ever used)
+        from ..checks.kernels import warm_if_cold
+
+        warm_if_cold(self.progress)  # before the solids' workers fork: they inherit the compiled code
         self._solid_pool()
 
     def _solid_pool(self):

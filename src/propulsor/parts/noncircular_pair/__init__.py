@@ -24,6 +24,7 @@ from .design import (
     Design, PairDesign, design, design_generated, design_sectors, gear_profiles, mounting, pair_design,
     sector_design_table,
 )
+from .estimate import estimate
 from .feasibility import feasible
 from .outputs import build, start_solids, write_outputs
 from .params import METHODS, NoncircularPairParams
@@ -40,4 +41,5 @@ PART_TYPE = PartType(
     build=build,
     design=pair_design,
     feasible=feasible,
+    estimate=estimate,
 )

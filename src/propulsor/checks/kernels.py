@@ -1,0 +1,103 @@
+"""The checks' compiled kernels (numba, ``cache=True``: compiled once per machine and source, kept beside the
+modules): whether they still need compiling (:func:`cold`), and their compilation on small inputs (:func:`warm`).
+
+A build on a fresh install compiled them where they were first called — in the proof, in the workers of the
+as-built contact (each worker its own copy), in the mesh checks — as 12-19 s silences between its progress lines,
+about 34 CPU s in all on the seed-002 Fourier pair (71 s wall against 38 s warm).  The build now compiles them first
+when :func:`cold`, saying so, before it forks any worker; ``make install`` compiles them ahead
+(``python -m propulsor.checks.kernels``).
+"""
+
+from __future__ import annotations
+
+import importlib
+import math
+
+import numpy as np
+
+#: the modules whose kernels are cached on disk
+MODULES = ("propulsor.checks.tri_tri", "propulsor.checks.motion.nearest", "propulsor.checks.motion.crossing",
+           "propulsor.checks.motion.backlash", "propulsor.checks.motion.contact_events")
+
+__all__ = ["MODULES", "cold", "warm", "warm_if_cold"]
+
+
+def _dispatchers() -> list:
+    from numba.core.registry import CPUDispatcher
+
+    found = []
+    for name in MODULES:
+        for value in vars(importlib.import_module(name)).values():
+            # a kernel inlined into its callers (inline="always") is compiled within them, never cached on its own
+            if (isinstance(value, CPUDispatcher) and value not in found
+                    and getattr(value, "targetoptions", {}).get("inline") != "always"):
+                found.append(value)
+    return found
+
+
+def cold() -> bool:
+    """Whether a kernel has no compiled code on disk for its current source (a fresh install, an edited module):
+    numba's own cache index, read without compiling.  False where the cache cannot be read (numba's layout
+    changed, caching off): then nothing is said and the kernels compile where they are called, as before."""
+    try:
+        for d in _dispatchers():
+            if not d.signatures and not d._cache._cache_file._load_index():
+                return True
+    except (AttributeError, OSError, TypeError, ValueError):
+        return False
+    return False
+
+
+def _toothed(z: int, r: float, h: float, n: int = 24) -> np.ndarray:
+    """A closed outline of `z` round-topped teeth about radius `r` (height `h`), `n` points a tooth."""
+    t = np.linspace(0.0, 2.0 * math.pi, z * n, endpoint=False)
+    rr = r + 0.5 * h * np.cos(z * t)
+    return np.column_stack([rr * np.cos(t), rr * np.sin(t)])
+
+
+def warm() -> None:
+    """Call every cached kernel once on small inputs, so that each is compiled (or loaded) now, in this process:
+    the mesh checks' triangle tests, the motion proof's distance, crossing and rotation searches, and the as-built
+    contact search on a pair of toothed rings."""
+    from .mesh import self_intersections
+    from .motion import Outline
+    from .motion.backlash import _rot_hits
+    from .motion.contact_events import DRIVE, PairOutlines, resolve_contact
+    from .motion.crossing import certainly_apart
+    from .motion.nearest import nearest_edge
+
+    self_intersections(np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]),
+                       np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]))
+    square = Outline([np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])], 0.5)
+    nearest_edge(square.points + 1.5, square, square)
+    certainly_apart(square, square, square.points + 1.2, square.points - 1.2, 0.2)
+    P = square.points + 1.2
+    _rot_hits(P, np.zeros(2), square, 1.0, 0.5, np.linalg.norm(P, axis=1), square.boundary_lower_bound(P))
+    # two rings of 12 and 18 teeth (module 1) at their centre distance, a few positions of the driven one
+    z1, z2, m = 12, 18, 1.0
+    drv, dvn = Outline([_toothed(z1, 0.5 * m * z1, 1.6 * m)]), Outline([_toothed(z2, 0.5 * m * z2, 1.6 * m)])
+    pair = PairOutlines(drv, dvn, 0.5 * m * (z1 + z2), 2 * math.pi * np.arange(z1) / z1,
+                        2 * math.pi * np.arange(z2) / z2)
+    step = 2 * math.pi / z2 / 4
+    resolve_contact(pair, lambda phi: np.asarray(phi, float) * z2 / z1, 0.0, 4 * step, DRIVE,
+                    step_driver_rad=step * z2 / z1, max_evals=40)
+
+
+def warm_if_cold(progress=None) -> bool:
+    """:func:`warm` when :func:`cold`, said to `progress` first; whether it compiled."""
+    if not cold():
+        return False
+    if progress is not None:
+        progress("compiling the numeric kernels for this machine (once after an install or an update: about 30 s)")
+    warm()
+    return True
+
+
+if __name__ == "__main__":  # make install: compiled ahead of the first build
+    import time
+
+    t0 = time.perf_counter()
+    was_cold = cold()
+    warm()
+    print(f"propulsor: the compiled kernels {'compiled' if was_cold else 'loaded'} in "
+          f"{time.perf_counter() - t0:.1f} s")
