@@ -44,7 +44,7 @@ def test_a_profile_file_of_the_user_s_own_printer(tmp_path):
     ("bed_x_mm = 0\nbed_y_mm = 180\nbed_z_mm = 180\n", "printer.bed_x_mm", "positive"),
     ("bed_x_mm = 180\nbed_y_mm = 180\nbed_z_mm = 'tall'\n", "printer.bed_z_mm", "number"),
     ("bed_x_mm = 180\nbed_y_mm = 180\nbed_z_mm = 180\nshape = 'circle'\n", "printer.shape", "rectangle"),
-    ("bed_x_mm = 180\nbed_y_mm = 180\nbed_z_mm = 180\ncolour = 1\n", "print.colour", "unknown printer setting"),
+    ("bed_x_mm = 180\nbed_y_mm = 180\nbed_z_mm = 180\ncolour = 1\n", "printer.colour", "unknown printer setting"),
 ])
 def test_a_bad_profile_file_exits_2_naming_the_key(tmp_path, capsys, text, key, fragment):
     f = tmp_path / "printer.toml"
@@ -180,3 +180,24 @@ def test_every_part_file_prints_on_every_profile_and_slices(tmp_path, monkeypatc
           f"{len(slicer.runs)} slicer runs, done {time.perf_counter() - t1:.0f} s after the last kit; kits: "
           + ", ".join(took))
     assert failures + sliced == []
+
+
+def test_a_printer_setting_is_named_where_it_was_written(tmp_path):
+    """The part file's [print] table names its keys print.<key>; a profile file's are printer.<key> (the trial met
+    both prefixes for keys it had written in one place)."""
+    from propulsor.errors import InputError
+    from propulsor.printing.printers import load_printer
+
+    cases = [(dict(name="generic", overrides={"bed_x_mm": 40.0}), "print.bed_x_mm"),
+             (dict(name="generic", overrides={"backlsh_mm": 0.1}), "print.backlsh_mm"),
+             (dict(name="generic", overrides={"layer_mm": -1.0}), "print.layer_mm")]
+    f = tmp_path / "mine.toml"
+    f.write_text("bed_x_mm = 40\nbed_y_mm = 180\nbed_z_mm = 180\n")
+    cases.append((dict(name=str(f)), "printer.bed_x_mm"))
+    g = tmp_path / "other.toml"
+    g.write_text("bed_x_mm = 180\nbed_y_mm = 180\nbed_z_mm = 180\nbacklsh_mm = 0.1\n")
+    cases.append((dict(name=str(g)), "printer.backlsh_mm"))
+    for kw, named in cases:
+        with pytest.raises(InputError) as exc:
+            load_printer(**kw)
+        assert exc.value.parameter == named, (kw, exc.value.parameter)

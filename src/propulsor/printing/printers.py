@@ -220,23 +220,28 @@ def load_printer(name: str, overrides: dict | None = None, bed: str | None = Non
     unknown = sorted(set(data) - known)
     if unknown:
         settable = sorted(known - {"name", "title"})
-        raise InputError(f"print.{unknown[0]}", data[unknown[0]], f"unknown printer setting (known: "
+        table = "print" if unknown[0] in (overrides or {}) else "printer"
+        raise InputError(f"{table}.{unknown[0]}", data[unknown[0]], f"unknown printer setting (known: "
                          f"{', '.join(settable)})",
                          did_you_mean(unknown[0], settable) or "propulsor params printer lists them")
+    # a key is named where the user wrote it: the part file's [print] table, or the printer's profile
+    where = {k: ("print" if k in (overrides or {}) else "printer") for k in data}
     for key in ("bed_x_mm", "bed_y_mm", "bed_z_mm", "margin_mm"):
         if key in data:
-            _named(key, data[key])
+            _named(key, data[key], where[key])
     try:
         return load_params(Printer, data)
     except InputError as exc:
         if exc.parameter in known:
-            raise InputError(f"printer.{exc.parameter}", exc.value, exc.limit, exc.hint) from None
+            raise InputError(f"{where.get(exc.parameter, 'printer')}.{exc.parameter}", exc.value, exc.limit,
+                             exc.hint) from None
         raise
 
 
-def _named(key: str, value) -> None:
-    """A bed size that is not a positive number: InputError naming the key before the limits do."""
+def _named(key: str, value, table: str = "printer") -> None:
+    """A bed size that is not a positive number: InputError naming the key (in `table`: "print" for the part file's
+    [print] table, "printer" for the profile) before the limits do."""
     if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise InputError(f"printer.{key}", value, "must be a number of mm")
+        raise InputError(f"{table}.{key}", value, "must be a number of mm")
     if not value > 0 and key.startswith("bed_"):
-        raise InputError(f"printer.{key}", value, "must be a positive size in mm")
+        raise InputError(f"{table}.{key}", value, "must be a positive size in mm")

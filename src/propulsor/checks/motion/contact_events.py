@@ -521,19 +521,26 @@ def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, 
     grid[0], grid[-1] = phi0, phi1
     samples: dict[float, tuple] = {}
     evals = 0
+    # the progress's total while sampling: the samples, and the bisections of the changes of state seen so far
+    # projected over the rest (each change bisected about log2(spacing / 2 h_min) times)
+    rounds = max(0, math.ceil(math.log2(max(abs(phi1 - phi0) / max(n - 1, 1), 2.0 * h_min) / (2.0 * h_min))))
 
     def measure(phis, seed=None, seed_phi=None, tick=None):
         nonlocal evals
         th = np.asarray(theta_of_phi(np.asarray(phis, float)), float)
         prev, prev_phi = seed, seed_phi
         out = []
+        changes = 0
         for p, t in zip(phis, th):
             r = pair.contact(float(p), float(t), direction, prev, 0.0 if prev_phi is None else float(p) - prev_phi)
             evals += 1
             prev, prev_phi = (r[0], float(p)) if math.isfinite(r[0]) else (None, None)
             out.append((float(t),) + tuple(r))
             if tick is not None:
-                tick(len(out), len(phis))
+                if len(out) > 1 and out[-1][2:5] != out[-2][2:5]:
+                    changes += 1
+                k = len(out)
+                tick(k, len(phis) + round(changes * (len(phis) - 1) / max(k - 1, 1) * rounds))
         return out
 
     for p, r in zip(grid, measure(grid, tick=tick)):
@@ -544,9 +551,8 @@ def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, 
 
     xs = sorted(samples)
     todo = [(a, b) for a, b in zip(xs[:-1], xs[1:]) if state(samples[a]) != state(samples[b])]
-    # the progress's total from here: each change bisected about log2(step / 2 h_min) times (one half holds it)
-    span = max((b - a for a, b in todo), default=0.0)
-    est = n + len(todo) * max(0, math.ceil(math.log2(span / (2.0 * h_min)))) if span > 2.0 * h_min else n
+    # the progress's total from here: each change bisected about `rounds` times (one half holds it)
+    est = n + len(todo) * rounds
     while todo and evals < max_evals:
         mids = []
         for a, b in todo:
