@@ -114,7 +114,8 @@ def test_a_mistyped_key_is_answered_with_the_closest_names():
     with pytest.raises(InputError) as e:
         load_params(get_part_type("noncircular_pair").params_cls, {"modul_mm": 3})
     assert e.value.parameter == "modul_mm"
-    assert e.value.limit.startswith("unknown parameter for this part (did you mean module_mm? known: ")
+    n = len(dataclasses.fields(get_part_type("noncircular_pair").params_cls))
+    assert e.value.limit == f"unknown parameter for this part (did you mean module_mm? `propulsor params <part type>` lists all {n})"
     with pytest.raises(InputError) as e:
         load_params(get_part_type("noncircular_pair").params_cls, {"zzzz": 3})
     assert e.value.limit.startswith("unknown parameter for this part (known: ")

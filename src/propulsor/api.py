@@ -135,7 +135,7 @@ def parameters(part_type: str, /, **values: Any):
     from .parts import get_part_type, vet
 
     pt = get_part_type(part_type)
-    params = load_params(pt.params_cls, values, validate=False)
+    params = load_params(pt.params_cls, values, validate=False, type_name=pt.name)
     vet(pt, params)
     return params
 
@@ -154,7 +154,7 @@ def part(source: "str | bytes | os.PathLike[str]", /, **overrides: Any) -> "Part
                          "file (.toml)")
     type_name, mapping = read_part_file(path)
     pt = get_part_type(type_name)
-    params = load_params(pt.params_cls, {**mapping, **overrides}, validate=False)
+    params = load_params(pt.params_cls, {**mapping, **overrides}, validate=False, type_name=pt.name)
     vet(pt, params, path)
     return Part(type_name, params, path)
 

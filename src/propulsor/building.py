@@ -130,7 +130,7 @@ def load(part_file: Path, progress=None) -> Loaded:
     part_type_name, mapping = read_part_file(part_file)
     say(f"{part_type_name}: loading the part type (CAD kernel, checks)")
     part_type = get_part_type(part_type_name)
-    params = load_params(part_type.params_cls, mapping, validate=False)
+    params = load_params(part_type.params_cls, mapping, validate=False, type_name=part_type.name)
     # the size estimate first where it needs only the values (a design can itself be the long part)
     early = not size_needs_design(part_type)
     try:

@@ -160,22 +160,26 @@ class PartParams:
         return next(f.metadata.get("doc", "") for f in dataclasses.fields(self) if f.name == name)
 
 
-def unknown_key_limit(key: str, known) -> str:
-    """The refusal of an unknown key: the closest known names first ("did you mean"), then all of them."""
+def unknown_key_limit(key: str, known, type_name: str | None = None) -> str:
+    """The refusal of an unknown key: the closest known names ("did you mean") where some are close (the whole list,
+    57 names for a pair, made a line of 1 000 characters: ``propulsor params`` lists them), else all of them."""
     known = list(known)
     hint = did_you_mean(key, known)
-    return f"unknown parameter for this part ({hint + ' ' if hint else ''}known: {', '.join(known)})"
+    if hint:
+        return (f"unknown parameter for this part ({hint} `propulsor params {type_name or '<part type>'}` lists all "
+                f"{len(known)})")
+    return f"unknown parameter for this part (known: {', '.join(known)})"
 
 
-def load_params(cls, mapping: dict[str, Any], validate: bool = True):
+def load_params(cls, mapping: dict[str, Any], validate: bool = True, type_name: str | None = None):
     """Build the parameter dataclass `cls` from a mapping: every value of its type and within its
     limits; then, unless `validate` is False, the dataclass's own ``validate()`` (rules between
-    parameters, the design)."""
+    parameters, the design).  `type_name`: the part type's name, for the refusal of an unknown key."""
     fields = {f.name: f for f in dataclasses.fields(cls)}
     hints = get_type_hints(cls)
     unknown = sorted(set(mapping) - set(fields))
     if unknown:
-        raise InputError(unknown[0], mapping[unknown[0]], unknown_key_limit(unknown[0], fields))
+        raise InputError(unknown[0], mapping[unknown[0]], unknown_key_limit(unknown[0], fields, type_name))
     # the keys as the part file gives them first (the message names the first bad one it holds)
     kwargs = {name: _check_field(fields[name], hints[name], value) for name, value in mapping.items()}
     obj = cls(**kwargs)

@@ -223,7 +223,7 @@ def _base_design_names(part_type: str, base: dict, part_file: Path) -> set[str]:
     from .evaluate import Variant, design_values
 
     pt = get_part_type(part_type)
-    part = Variant(pt, load_params(pt.params_cls, dict(base)), part_file)
+    part = Variant(pt, load_params(pt.params_cls, dict(base), type_name=pt.name), part_file)
     derived, _ = design_values(part)
     return set(derived)
 
