@@ -359,3 +359,28 @@ def test_a_pairs_solids_come_from_its_solid_steps_without_a_build_or_a_file(tmp_
         expected = (area(outer) - sum(area(h) for h in holes)) * gear.params.face_width_mm
         assert solids[role].Volume() == pytest.approx(expected, rel=1e-4)
         assert gear.shapes.derived[f"{role}_volume_mm3"] == solids[role].Volume()
+
+
+def test_a_part_tells_its_progress_to_a_callback_it_is_given(monkeypatch):
+    """The trial's `_repr_html_` ran a build 32 s without a word: ``part.progress = print`` (any callable) is told the
+    steps of the work the part starts — its proofs, build, solids and design."""
+    import propulsor.building as building
+
+    gear = propulsor.part("parts/ncg_elliptical.toml")
+    assert gear.progress is None
+    seen = []
+    gear.progress = seen.append
+    for name in ("prove", "build_in_memory", "solids"):
+        monkeypatch.setattr(building, name, lambda loaded, progress=None, keep_files=False, name=name:
+                            seen.append((name, progress)) or (_ for _ in ()).throw(RuntimeError("stop")))
+    for attr in ("proof_run", "build", "shapes"):
+        with pytest.raises(RuntimeError):
+            getattr(gear, attr)
+    assert [(n, p) for n, p in (x for x in seen if isinstance(x, tuple))] == [
+        ("prove", seen.append), ("build_in_memory", seen.append), ("solids", seen.append)]
+    said = []
+    propulsor.part("parts/ncg_elliptical.toml", face_width_mm=11.0)  # a design not yet computed
+    other = propulsor.part("parts/ncg_elliptical.toml", face_width_mm=11.0)
+    other.progress = said.append
+    other.design
+    assert any("teeth" in str(e) for e in said), said

@@ -483,6 +483,15 @@ def test_the_table_read_back_for_resume_keeps_text_keys_and_drops_stale_and_cut_
     assert [r["key"] for r in rows] == ["1234e567", "abcdef"] and rows[0]["T_at_V_max_C"] == repr(1.1)
     pq_rows = parquet_is_csv(out)
     assert pq_rows[0]["peak_pressure_q_m_MPa"] == 1 / 3 and pq_rows[0]["contact_length_l_mm"] is None
+    # the rows come in the order the variants finish; a study done puts them in the variants' order
+    t = Table(out, study, False)
+    for k in (3, 1, 2):
+        t.add(row(k, f"k{k}"))
+    t.close()
+    assert [r["variant"] for r in read_rows(out)] == ["3", "1", "2"]
+    t.in_order()
+    assert [r["variant"] for r in read_rows(out)] == ["1", "2", "3"]
+    assert [r["variant"] for r in parquet_is_csv(out)] == [1, 2, 3]
 
 
 def test_a_study_in_the_gallery_folder_is_linked_from_the_gallery(tmp_path, monkeypatch, capsys):

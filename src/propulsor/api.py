@@ -206,6 +206,9 @@ class Part:
         from .building import Loaded
 
         self._loaded = Loaded(self._pt, params, source)  # what the build service builds
+        #: a callback told the steps of the work this part starts (its design, proofs, build, solids): ``print``, or
+        #: any callable taking a :class:`propulsor.progress.Event`; None (default): nothing is said
+        self.progress = None
 
     def __repr__(self) -> str:
         where = f" from {self.source}" if self.source else ""
@@ -243,7 +246,7 @@ class Part:
         """The part's design (frozen), computed once: what the build makes its geometry from."""
         from .building import design
 
-        return design(self._loaded)
+        return design(self._loaded, progress=self.progress)
 
     @cached_property
     def build(self) -> Build:
@@ -251,7 +254,7 @@ class Part:
         kept there for :meth:`write` (removed with the part, or at exit)."""
         from .building import build_in_memory
 
-        return Build.of(build_in_memory(self._loaded, keep_files=True))
+        return Build.of(build_in_memory(self._loaded, progress=self.progress, keep_files=True))
 
     @property
     def values(self) -> Values:
@@ -274,7 +277,7 @@ class Part:
             b = self.build
             return SolidsResult(b.solids, b.profiles, b.assemblies,
                                 {k: v for k, v in b.derived.items() if k.endswith("_volume_mm3")})
-        return solids(self._loaded)
+        return solids(self._loaded, progress=self.progress)
 
     @property
     def solids(self) -> dict:
@@ -297,7 +300,7 @@ class Part:
         if not proves_alone(self._loaded):
             b = self.build
             return Proof(b.failures, b.checks, b.derived, True, b.glossary)
-        return prove(self._loaded)
+        return prove(self._loaded, progress=self.progress)
 
     def prove(self, raise_on_failure: bool = False, depth: str = "build") -> list:
         """The checks (:class:`propulsor.check.Check`: name, passed, value, limit, unit, message) of

@@ -428,9 +428,10 @@ def build_in_memory(part: Loaded, progress=None, keep_files: bool = False) -> Bu
     return result
 
 
-def design(part: Loaded):
+def design(part: Loaded, progress=None):
     """The part's design (frozen), computed once per parameter values (``pipeline.design_of``: the dry run's,
-    the proofs' and the build's are the same object).  InputError for a part type without a separate design."""
+    the proofs' and the build's are the same object).  InputError for a part type without a separate design.
+    `progress`: told its steps where the design function takes a ``progress`` (a non-circular pair's)."""
     import inspect
 
     from .errors import InputError
@@ -440,10 +441,12 @@ def design(part: Loaded):
     fn = part.part_type.design
     if fn is None:
         raise InputError("design", part.part_type.name, "this part type has no separate design")
+    said = {"progress": Reporter.of(progress)} if progress is not None and "progress" in inspect.signature(
+        fn).parameters else {}
     with Workers(), TURN:
         if "source" in inspect.signature(fn).parameters:
-            return design_of(part.params, fn, part.source)
-        return design_of(part.params, fn)
+            return design_of(part.params, fn, part.source, **said)
+        return design_of(part.params, fn, **said)
 
 
 @dataclasses.dataclass(frozen=True)

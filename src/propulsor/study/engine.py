@@ -233,7 +233,8 @@ def _run(study: Study, out: Path, *, scheduler, workers, resume, progress, clien
             seconds = time.perf_counter() - t0
         finally:
             table.close()
-        rows = sorted(table.rows, key=lambda r: int(r["variant"]))
+        table.in_order()
+        rows = list(table.rows)
         rank = ranked(study, rows)
         write_front(out, study, rank)
         try:

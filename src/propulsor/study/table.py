@@ -229,3 +229,18 @@ class Table:
         self._f.close()
         if self._written != len(self.rows):
             self._write_parquet()
+
+    def in_order(self) -> None:
+        """The whole study done: both files rewritten with the rows in the order of their variants (they came in
+        the order the variants finished: 2, 4, 1, 3; the trial sorted them to compare two runs).  Once, at the end."""
+        self.rows.sort(key=lambda r: int(r["variant"]))
+
+        def header_and_rows(tmp: str) -> None:
+            with open(tmp, "w", newline="", encoding="utf-8") as f:
+                w = csv.writer(f)
+                w.writerow(self.cols)
+                for r in self.rows:
+                    w.writerow([cell(r.get(c)) for c in self.cols])
+
+        replace_atomically(self.path, header_and_rows)
+        self._write_parquet()
