@@ -328,6 +328,8 @@ print(json.dumps({{"calls": len(calls), "html": html, "values": dict(values),
     glbs = [base64.b64decode("".join(inner.blocks))]
     assert glbs[0][:4] == b"glTF"
     assert "mass_wheel_kg" in got["html"]
+    # no link to a file beside the view: a notebook has none (the trial's dead link to the GLB)
+    assert ".glb" in outer.srcdoc[0] and 'href="' not in outer.srcdoc[0].split("<figcaption>", 1)[1]
 
 
 def test_a_pairs_solids_come_from_its_solid_steps_without_a_build_or_a_file(tmp_path, monkeypatch):

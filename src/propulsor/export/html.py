@@ -199,7 +199,7 @@ def view_page(folder: str | Path, lead: str = "") -> str | None:
     folder = Path(folder)
     manifest = json.loads(read_regular(folder / "manifest.json", MANIFEST_MAX_BYTES).decode("utf-8"))
     models = [m for m in manifest.get("media", {}).get("models", []) if isinstance(m, dict)]
-    figure = viewer_figure(models, "", heading="", folder=folder)
+    figure = viewer_figure(models, "", heading="", folder=folder, links=False)  # no file beside a notebook's view
     if not figure:
         return None
     return page(str(manifest.get("title") or manifest.get("part") or "part"), lead + figure, style=VIEWER_STYLE,

@@ -89,14 +89,15 @@ def page_budget() -> dict:
 
 
 def viewer_figure(models: list[dict], prefix: str = "", titles=(), what: str = "assembly",
-                  heading: str = "<h3>3D</h3>", folder=None, budget: dict | None = None) -> str:
+                  heading: str = "<h3>3D</h3>", folder=None, budget: dict | None = None, links: bool = True) -> str:
     """The 3D view of a part's assemblies: `models` the manifest's ``media.models`` entries, their paths
     relative to the part's folder — `folder` where this process reads them, `prefix` that folder as the page
     reaches it ("" beside the page, else ending in "/"); `titles` the names the selector shows (else each
     model's title); `what` names the selector; `budget` what the page may still carry (:func:`page_budget`;
     a fresh one when None), lowered by what this figure carries.  Each model whose GLB is sound
     (:func:`model_data`) and fits the budget gets a data block after the figure (once a page); the others are
-    named in the caption with why.  "" when there is no model."""
+    named in the caption with why.  "" when there is no model.  `links`: the GLBs' names linked to their files (a
+    page beside them); False where the page has no files beside it (a notebook's view): their names only."""
     from pathlib import Path
 
     budget = page_budget() if budget is None else budget
@@ -120,8 +121,8 @@ def viewer_figure(models: list[dict], prefix: str = "", titles=(), what: str = "
         data.append({"block": ident,
                      "title": (titles[k] if k < len(titles) and titles[k] else str(m.get("title", path))),
                      **view_of(m)})
-    glbs = " · ".join(f'<a href="{escape(url(prefix + m["path"]))}">{escape(m["path"])}</a>'
-                      for m in models if isinstance(m.get("path"), str))
+    glbs = " · ".join((f'<a href="{escape(url(prefix + m["path"]))}">{escape(m["path"])}</a>' if links else
+                       escape(m["path"])) for m in models if isinstance(m.get("path"), str))
     not_shown = f" — not drawn: {escape('; '.join(missing))}" if missing else ""
     if not data:
         return f'{heading}<p class="note">3D view: GLB: {glbs}{not_shown}</p>' if missing else ""
