@@ -41,8 +41,14 @@ def test_the_estimate_is_at_the_stated_infill_not_solid():
     cube = trimesh.creation.box(extents=(40.0, 40.0, 40.0))
     solid_g = 64.0 * p.density_g_cm3
     g = estimate_g([cube], p)
-    shell = 6 * 1600.0 * 1.2 / 1000.0  # cm³: the surface × 3 × 0.4 mm
-    assert g == pytest.approx((shell + 0.15 * (64.0 - shell)) * p.density_g_cm3)
+    # the shell a slicer lays (cm³): 5 top and 4 bottom layers of 0.2 mm over the 40 x 40 faces, and between them
+    # (38.2 mm) the ring of 3 perimeters of 0.45 mm inside the 40 mm square (PrusaSlicer's width for a 0.4 mm nozzle)
+    shell = (1600.0 * 1.0 + 1600.0 * 0.8 + (40.0 ** 2 - 37.3 ** 2) * 38.2) / 1000.0
+    assert g == pytest.approx((shell + 0.15 * (64.0 - shell)) * p.density_g_cm3, rel=0.02)  # the corners: 3 % of the ring
+    # a plate 4 mm thick: top and bottom layers are most of it, the walls a thin band
+    plate = trimesh.creation.box(extents=(60.0, 60.0, 4.0))
+    shell = (3600.0 * 1.0 + 3600.0 * 0.8 + (60.0 ** 2 - 57.3 ** 2) * 2.2) / 1000.0
+    assert estimate_g([plate], p) == pytest.approx((shell + 0.15 * (14.4 - shell)) * p.density_g_cm3, rel=0.02)
     assert 0.2 * solid_g < g < 0.5 * solid_g
     full = load_printer("generic", {"infill_percent": 100.0})
     assert estimate_g([cube], full) == pytest.approx(solid_g)

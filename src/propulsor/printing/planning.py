@@ -30,14 +30,25 @@ class PlatePlan:
 
 
 def estimate_g(meshes, printer) -> float:
-    """Filament (g) of pieces at the printer's infill: a shell of perimeters × line width over the
-    surface (at most the piece's volume) solid, the rest at the infill density."""
+    """Filament (g) of pieces at the printer's infill: a solid shell, the rest at the infill density.  The shell
+    as a slicer lays it: under the faces that look up the top layers, over those that look down the bottom layers
+    (a face within 60° of level), behind the others the perimeters × line width — less those walls' share within the
+    top and bottom layers, counted there already; at most the piece's volume.  (Before: the thicker of the two over
+    every face, 12-20 % over PrusaSlicer's grams on the trial's plates of flat gears.)"""
+    import numpy as np
+
     total = 0.0
-    shell_t = max(printer.perimeters * printer.line_width,
-                  0.5 * (printer.top_layers + printer.bottom_layers) * printer.layer_mm)
+    # PrusaSlicer's own perimeter width where the profile gives none: 1.125 nozzle diameters (its auto width)
+    t_wall = printer.perimeters * (printer.line_width_mm or 1.125 * printer.nozzle_mm)
+    t_top, t_bottom = printer.top_layers * printer.layer_mm, printer.bottom_layers * printer.layer_mm
     for m in meshes:
         vol = float(m.volume)
-        shell = min(vol, float(m.area) * shell_t)
+        nz, area = np.asarray(m.face_normals)[:, 2], np.asarray(m.area_faces)
+        up, down = nz > 0.5, nz < -0.5
+        walls = float(area[~(up | down)].sum()) * t_wall
+        height = float(m.extents[2]) if len(area) else 0.0
+        walls *= max(0.0, 1.0 - (t_top + t_bottom) / height) if height > 0 else 0.0
+        shell = min(vol, float(area[up].sum()) * t_top + float(area[down].sum()) * t_bottom + walls)
         total += shell + printer.infill_percent / 100.0 * (vol - shell)
     return total / 1000.0 * printer.density_g_cm3
 
