@@ -258,9 +258,11 @@ def write_kit(kit: Kit, w, sliced: bool = False) -> None:
         w.add_checks(slice_plates(plans, paths, p, w.progress))
     w.add_table("plates", TABLE_COLUMNS, table_rows(plans))
     if kit.assembly:
+        w.progress("kit: the picture of the kit assembled")
         _assembly_picture(w, kit, piece_meshes)
     from .guide import write_guide
 
+    w.progress("kit: the print guide and the pictures of its assembly steps")
     write_guide(kit, w, plans, assembled_meshes(kit, piece_meshes) if kit.assembly else [], sliced, w.title)
     w.derived.update({"printer": p.name, "bed_mm": list(p.bed), "scale_S": kit.scale.S, "plates": len(plates),
                       "pieces": len(flat), "pieces_volume_cm3": sum(q.volume_cm3 for q in plans),
