@@ -39,7 +39,8 @@ $(STAMP): pyproject.toml constraints.txt
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install -q -c constraints.txt pip
 	$(BIN)/python -m pip install -q -c constraints.txt -e '.[test,docs]'
-	$(BIN)/python -m propulsor.checks.kernels
+	@echo "compiling the numeric kernels once (about 30 s)"
+	$(BIN)/python -c 'from propulsor.checks.kernels import warm; warm()'
 	touch $@
 
 lock:

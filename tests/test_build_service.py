@@ -20,8 +20,8 @@ SMALL_WHEEL = 'type = "road_wheel"\nlightening_holes = 0\n'
 
 
 def _checked(folder) -> bool:
-    """`propulsor check` on the folder: every file valid (exit 0)."""
-    return main(["check", str(folder)]) == 0
+    """`propulsor check -q` on the folder: every file valid (exit 0), nothing on stderr."""
+    return main(["check", "-q", str(folder)]) == 0
 
 
 def _in_threads(jobs, timeout=900):

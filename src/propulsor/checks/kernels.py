@@ -4,8 +4,7 @@ modules): whether they still need compiling (:func:`cold`), and their compilatio
 A build on a fresh install compiled them where they were first called — in the proof, in the workers of the
 as-built contact (each worker its own copy), in the mesh checks — as 12-19 s silences between its progress lines,
 about 34 CPU s in all on the seed-002 Fourier pair (71 s wall against 38 s warm).  The build now compiles them first
-when :func:`cold`, saying so, before it forks any worker; ``make install`` compiles them ahead
-(``python -m propulsor.checks.kernels``).
+when :func:`cold`, saying so, before it forks any worker; ``make install`` compiles them ahead (:func:`warm`).
 """
 
 from __future__ import annotations
@@ -91,13 +90,3 @@ def warm_if_cold(progress=None) -> bool:
         progress("compiling the numeric kernels for this machine (once after an install or an update: about 30 s)")
     warm()
     return True
-
-
-if __name__ == "__main__":  # make install: compiled ahead of the first build
-    import time
-
-    t0 = time.perf_counter()
-    was_cold = cold()
-    warm()
-    print(f"propulsor: the compiled kernels {'compiled' if was_cold else 'loaded'} in "
-          f"{time.perf_counter() - t0:.1f} s")

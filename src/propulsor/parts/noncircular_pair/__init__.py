@@ -21,11 +21,10 @@ from __future__ import annotations
 
 from .. import PartType, summary
 from .design import (
-    Design, PairDesign, design, design_generated, design_sectors, gear_profiles, mounting, pair_design,
+    Design, PairDesign, design, design_generated, design_sectors, feasible, gear_profiles, mounting, pair_design,
     sector_design_table,
 )
 from .estimate import estimate
-from .feasibility import feasible
 from .outputs import build, start_solids, write_outputs
 from .params import METHODS, NoncircularPairParams
 from .proofs import compare, prove

@@ -212,7 +212,7 @@ def feasible(p: NoncircularPairParams, source=None) -> None:
     file gives that surely reaches the root (``bores.check_given_on_pitch_curves``, where the screen settles the pitch
     curves: a law without corners, the walking law's given or smallest blend, every blend the law search ranked), or
     that reaches the sector method's cut root (its outlines are quick: the build's own check on them)."""
-    from .bores import check_given_on_design, check_given_on_pitch_curves
+    from .bores import check_given_on_pitch_curves
 
     scr = screened(p, source)
     if scr.smooth is not None:
@@ -221,8 +221,4 @@ def feasible(p: NoncircularPairParams, source=None) -> None:
         check_given_on_pitch_curves(p, PitchCurves(scr.smoothing.law, scr.smoothing.L), scr.m)
     elif scr.search is not None and (p.driver_bore_mm or p.driven_bore_mm):
         check_given_on_pitch_curves(p, _candidate_curves(p, scr), scr.m)
-    elif scr.sector:
-        from ..pipeline import design_of
-        from .design import design_sectors
-
-        check_given_on_design(p, design_of(p, design_sectors))  # the sector outlines are quick: the build's own check
+    # the sector method's bores: on its cut root (``design.feasible``, which runs this first)
