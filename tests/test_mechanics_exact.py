@@ -567,6 +567,35 @@ def test_shoe_polyline_self_intersection_cases():
     assert _segments_intersect(np.array([[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.5, -1.0]]))
 
 
+
+def test_shoe_polyline_crossings_at_vertices_are_counted_once():
+    """Segments are half-open [start, end): a crossing exactly at a vertex is found (it was missed when both ends were
+    open), a point beyond a segment's end is not on it, and an exact fold-back is left to the radius test."""
+    from propulsor.laws.shoe import _segments_intersect
+
+    # segment 4 crosses the polyline exactly at its vertex (1, 0), the end of segment 0 and the start of segment 1
+    assert _segments_intersect(np.array([[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.5, 1.0], [0.5, -1.0]]))
+    # the polyline comes down onto segment 0 at (1, 0) (a vertex on it) and goes on through to the other side
+    assert _segments_intersect(np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 0.0], [0.5, -1.0]]))
+    # segment 2 meets segment 0's line at x = 1.25, a quarter of a segment beyond its end (1, 0): no crossing
+    assert not _segments_intersect(np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [1.5, -1.0]]))
+    # up to (0, 0), right to (1, 0), back left through (0, 0) to (-1, 0): a fold-back (a cusp), not a crossing here
+    assert not _segments_intersect(np.array([[0.0, -1.0], [0.0, 0.0], [1.0, 0.0], [-1.0, 0.0]]))
+    # a crossing whose cross product of directions is exactly 1 ((1, 0) x (0, 1)) at t = u = 1/2
+    assert _segments_intersect(np.array([[0.0, 0.0], [1.0, 0.0], [0.5, -0.5], [0.5, 0.5]]))
+
+
+def test_shoe_polyline_parallel_and_collinear_segments_raise_no_warning():
+    """Parallel segments divide by a zero cross product (x/0 and 0/0): silently, and they never cross."""
+    import warnings
+
+    from propulsor.laws.shoe import _segments_intersect
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert not _segments_intersect(np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [-1.0, 1.0]]))
+        assert not _segments_intersect(np.array([[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [3.0, 0.0]]))   # 0/0
+
 def _hand_table(radius, X=None, Y=None):
     from propulsor.laws.shoe import ShoeTable
 
@@ -745,6 +774,32 @@ def test_shoe_hub_height_on_flat_finds_the_lowest_point_of_every_leg():
     assert one == pytest.approx(want1, rel=1e-14)
 
 
+
+
+def test_shoe_hub_height_on_flat_is_eq7s_constant_height_from_three_samples():
+    """The cam of eq. 20 with eq. 7's shoes keeps the hub at R0 + r + C = 320 mm on flat ground (seed 001, eq. 5-7):
+    the refinement between the neighbours of the best sample finds it even from 3 or 4 samples a shoe, where the
+    samples alone are up to 10 mm low (at 0.3 and 0.7 rad the best sample is the last but one)."""
+    from propulsor.laws.shoe import hub_height_on_flat
+
+    cm = _cam()
+    p = np.array([-0.6, -0.3436, 0.0, 0.3, 0.7])
+    for n in (3, 4):
+        assert hub_height_on_flat(cm, p, n_shoe=n) == pytest.approx(np.full(5, 320.0), abs=1e-9)
+
+def test_shoe_hub_height_on_flat_refines_without_a_warning():
+    """The bounded refinement gets its options as scipy names them (an unknown option is an OptimizeWarning)."""
+    import warnings
+
+    from propulsor.laws.cam_motion import CamMechanism, CurvatureLaw, cam_motion
+    from propulsor.laws.shoe import hub_height_on_flat
+
+    cm = cam_motion(CamMechanism(), CurvatureLaw("linear", 0.005, symmetric=False), estimate_error=False)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        hh = hub_height_on_flat(cm, 0.7, n_shoe=41)
+    assert hh[0] == pytest.approx(max(_brute_depth(cm, cm.leg_angles(0.7), 100001)), abs=1e-6)
+
 def test_shoe_return_ground_clearance_of_the_idle_legs():
     from propulsor.laws.shoe import return_ground_clearance
 
@@ -760,6 +815,20 @@ def test_shoe_return_ground_clearance_of_the_idle_legs():
                                   320.0 - max(_brute_depth(cm, [-0.2 + 2 * math.pi * j / 4 for j in (1, 2, 3)], 201))],
                                  rel=1e-13)
 
+
+
+def test_shoe_return_ground_clearance_samples_801_points_of_the_shoe():
+    """An odd law: an idle shoe's lowest point is inside its profile, not at its tip, so the clearance is that of the
+    801 (or n) samples - 1e-4 mm from 802's, 0.07 mm from 50's (the tests above have the lowest point at a tip)."""
+    from propulsor.laws.cam_motion import CamMechanism, CurvatureLaw, cam_motion
+    from propulsor.laws.shoe import return_ground_clearance
+
+    cm = cam_motion(CamMechanism(), CurvatureLaw("linear", 0.005, symmetric=False), estimate_error=False)
+    idle = [0.3 + 2 * math.pi * j / 4 for j in (1, 2, 3)]
+    want = {n: 320.0 - max(_brute_depth(cm, idle, n)) for n in (801, 802, 50)}
+    assert abs(want[801] - want[802]) > 1e-5 and abs(want[801] - want[50]) > 1e-2
+    assert return_ground_clearance(cm, 0.3)[0] == pytest.approx(want[801], rel=1e-13)
+    assert return_ground_clearance(cm, 0.3, 50)[0] == pytest.approx(want[50], rel=1e-13)
 
 # ============================================================== suspension.py (seed 004 ch. 2, eq. 1-28)
 
