@@ -1663,6 +1663,21 @@ def test_cam_design_verify_messages_and_margins():
     assert _margins(row, DesignLimits(cam_core_min=0.0), mech)["cam core"] == math.inf
 
 
+
+def test_cam_design_cam_core_margin_for_a_core_limit_of_a_millimetre_or_less():
+    """Only a cam core limit of 0 has no relative margin (inf); 1 mm or 0.5 mm are limits like any other."""
+    from propulsor.laws.cam_design import DesignLimits, _margins
+    from propulsor.laws.cam_motion import CamMechanism
+
+    row = dict(gamma_max_deg=24.0, R_min_mm=45.0, R_outer_min_mm=60.0, sigma_max_MPa=900.0, sigma_return_max_MPa=1200.0,
+               footprint_ratio=0.68, H_min_mm=80.0)
+    mech = CamMechanism()
+    core = 80.0 - mech.r                                        # H_min - r = 60 mm (r = 20 mm)
+    assert core == 60.0
+    for lim in (1.0, 0.5, 1e-9):
+        assert _margins(row, DesignLimits(cam_core_min=lim), mech)["cam core"] == pytest.approx(core / lim - 1.0,
+                                                                                                rel=1e-15)
+
 def test_damper_mean_power_window_on_a_lightly_damped_start():
     """A light damper (b2 = 3 kN s/m) still ringing from rest: the mean power depends on its window (the last
     max(1, int(t_end / 4T)) whole periods, 200 samples a period), and the exact solution and DOP853 on the
