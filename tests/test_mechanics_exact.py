@@ -1678,6 +1678,43 @@ def test_cam_design_cam_core_margin_for_a_core_limit_of_a_millimetre_or_less():
         assert _margins(row, DesignLimits(cam_core_min=lim), mech)["cam core"] == pytest.approx(core / lim - 1.0,
                                                                                                 rel=1e-15)
 
+
+def test_cam_design_verify_places_the_shoes_of_the_cam_it_was_given():
+    """verify builds the cam with the given return phase and samples the idle shoes at the inner angles of its n_phi
+    (n_phi = 3: the middle one only)."""
+    from propulsor.laws.cam_design import DesignLimits, verify
+    from propulsor.laws.cam_motion import CamMechanism, CurvatureLaw, ReturnPhase, cam_motion
+    from propulsor.laws.shoe import hub_height_on_flat, return_ground_clearance
+
+    mech, good = CamMechanism(), CurvatureLaw("quadratic", 0.017)
+    s = math.pi / 4
+    rp = ReturnPhase("min_jerk")
+    cm = cam_motion(mech, good, rp, estimate_error=False)
+    p19 = np.linspace(-s, s, 19)
+    want = float(return_ground_clearance(cm, p19[1:-1], n_shoe=601).min())
+    other = float(return_ground_clearance(cam_motion(mech, good, estimate_error=False), p19[1:-1], n_shoe=601).min())
+    assert abs(want - other) > 1e-3                                # the return phase moves the idle shoes
+    assert verify(mech, good, DesignLimits(), rp)["ground_clearance_min_mm"] == pytest.approx(want, rel=1e-12)
+    v3 = verify(mech, good, DesignLimits(), n_phi=3)
+    cm0 = cam_motion(mech, good, estimate_error=False)
+    assert v3["ground_clearance_min_mm"] == pytest.approx(float(return_ground_clearance(cm0, [0.0], 601)[0]), rel=1e-12)
+    hh = hub_height_on_flat(cm0, np.array([-s, 0.0, s]), n_shoe=601)
+    assert v3["hub_height_mean_mm"] == pytest.approx(float(hh.mean()), rel=1e-12) and hh == pytest.approx(320.0)
+
+
+def test_cam_design_search_chooses_the_law_of_its_row_k1_and_symmetry_kept():
+    """The chosen law is rebuilt from its row: an odd exponential law keeps its k1 and its odd form."""
+    from propulsor.laws.cam_design import DesignLimits, SearchGrid, search_design
+    from propulsor.laws.cam_motion import CamMechanism, CurvatureLaw
+
+    loose = DesignLimits(gamma_max_deg=89.0, R_factor=1e-6, sigma_allow=1e9, footprint_ratio_max=10.0,
+                         cam_core_min=0.0, hub_height_tol=1e3)
+    g = SearchGrid(linear_k0=(0, 0, 0), quadratic_k0=(0, 0, 0), exponential_k0=(0.002, 0.002, 1),
+                   exponential_k1=(0.5, 0.5, 1), symmetric=False)
+    r = search_design(CamMechanism(), loose, g)
+    assert r.law == CurvatureLaw("exponential", 0.002, 0.5, symmetric=False)
+    assert (r.chosen["k0"], r.chosen["k1"], r.chosen["label"]) == (0.002, 0.5, "K = 0.002·exp(0.5·φ)")
+
 def test_damper_mean_power_window_on_a_lightly_damped_start():
     """A light damper (b2 = 3 kN s/m) still ringing from rest: the mean power depends on its window (the last
     max(1, int(t_end / 4T)) whole periods, 200 samples a period), and the exact solution and DOP853 on the
