@@ -567,6 +567,35 @@ def test_shoe_polyline_self_intersection_cases():
     assert _segments_intersect(np.array([[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.5, -1.0]]))
 
 
+
+def test_shoe_polyline_crossings_at_vertices_are_counted_once():
+    """Segments are half-open [start, end): a crossing exactly at a vertex is found (it was missed when both ends were
+    open), a point beyond a segment's end is not on it, and an exact fold-back is left to the radius test."""
+    from propulsor.laws.shoe import _segments_intersect
+
+    # segment 4 crosses the polyline exactly at its vertex (1, 0), the end of segment 0 and the start of segment 1
+    assert _segments_intersect(np.array([[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.5, 1.0], [0.5, -1.0]]))
+    # the polyline comes down onto segment 0 at (1, 0) (a vertex on it) and goes on through to the other side
+    assert _segments_intersect(np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 0.0], [0.5, -1.0]]))
+    # segment 2 meets segment 0's line at x = 1.25, a quarter of a segment beyond its end (1, 0): no crossing
+    assert not _segments_intersect(np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [1.5, -1.0]]))
+    # up to (0, 0), right to (1, 0), back left through (0, 0) to (-1, 0): a fold-back (a cusp), not a crossing here
+    assert not _segments_intersect(np.array([[0.0, -1.0], [0.0, 0.0], [1.0, 0.0], [-1.0, 0.0]]))
+    # a crossing whose cross product of directions is exactly 1 ((1, 0) x (0, 1)) at t = u = 1/2
+    assert _segments_intersect(np.array([[0.0, 0.0], [1.0, 0.0], [0.5, -0.5], [0.5, 0.5]]))
+
+
+def test_shoe_polyline_parallel_and_collinear_segments_raise_no_warning():
+    """Parallel segments divide by a zero cross product (x/0 and 0/0): silently, and they never cross."""
+    import warnings
+
+    from propulsor.laws.shoe import _segments_intersect
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert not _segments_intersect(np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [-1.0, 1.0]]))
+        assert not _segments_intersect(np.array([[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [3.0, 0.0]]))   # 0/0
+
 def _hand_table(radius, X=None, Y=None):
     from propulsor.laws.shoe import ShoeTable
 
@@ -745,6 +774,32 @@ def test_shoe_hub_height_on_flat_finds_the_lowest_point_of_every_leg():
     assert one == pytest.approx(want1, rel=1e-14)
 
 
+
+
+def test_shoe_hub_height_on_flat_is_eq7s_constant_height_from_three_samples():
+    """The cam of eq. 20 with eq. 7's shoes keeps the hub at R0 + r + C = 320 mm on flat ground (seed 001, eq. 5-7):
+    the refinement between the neighbours of the best sample finds it even from 3 or 4 samples a shoe, where the
+    samples alone are up to 10 mm low (at 0.3 and 0.7 rad the best sample is the last but one)."""
+    from propulsor.laws.shoe import hub_height_on_flat
+
+    cm = _cam()
+    p = np.array([-0.6, -0.3436, 0.0, 0.3, 0.7])
+    for n in (3, 4):
+        assert hub_height_on_flat(cm, p, n_shoe=n) == pytest.approx(np.full(5, 320.0), abs=1e-9)
+
+def test_shoe_hub_height_on_flat_refines_without_a_warning():
+    """The bounded refinement gets its options as scipy names them (an unknown option is an OptimizeWarning)."""
+    import warnings
+
+    from propulsor.laws.cam_motion import CamMechanism, CurvatureLaw, cam_motion
+    from propulsor.laws.shoe import hub_height_on_flat
+
+    cm = cam_motion(CamMechanism(), CurvatureLaw("linear", 0.005, symmetric=False), estimate_error=False)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        hh = hub_height_on_flat(cm, 0.7, n_shoe=41)
+    assert hh[0] == pytest.approx(max(_brute_depth(cm, cm.leg_angles(0.7), 100001)), abs=1e-6)
+
 def test_shoe_return_ground_clearance_of_the_idle_legs():
     from propulsor.laws.shoe import return_ground_clearance
 
@@ -760,6 +815,20 @@ def test_shoe_return_ground_clearance_of_the_idle_legs():
                                   320.0 - max(_brute_depth(cm, [-0.2 + 2 * math.pi * j / 4 for j in (1, 2, 3)], 201))],
                                  rel=1e-13)
 
+
+
+def test_shoe_return_ground_clearance_samples_801_points_of_the_shoe():
+    """An odd law: an idle shoe's lowest point is inside its profile, not at its tip, so the clearance is that of the
+    801 (or n) samples - 1e-4 mm from 802's, 0.07 mm from 50's (the tests above have the lowest point at a tip)."""
+    from propulsor.laws.cam_motion import CamMechanism, CurvatureLaw, cam_motion
+    from propulsor.laws.shoe import return_ground_clearance
+
+    cm = cam_motion(CamMechanism(), CurvatureLaw("linear", 0.005, symmetric=False), estimate_error=False)
+    idle = [0.3 + 2 * math.pi * j / 4 for j in (1, 2, 3)]
+    want = {n: 320.0 - max(_brute_depth(cm, idle, n)) for n in (801, 802, 50)}
+    assert abs(want[801] - want[802]) > 1e-5 and abs(want[801] - want[50]) > 1e-2
+    assert return_ground_clearance(cm, 0.3)[0] == pytest.approx(want[801], rel=1e-13)
+    assert return_ground_clearance(cm, 0.3, 50)[0] == pytest.approx(want[50], rel=1e-13)
 
 # ============================================================== suspension.py (seed 004 ch. 2, eq. 1-28)
 
@@ -1593,6 +1662,58 @@ def test_cam_design_verify_messages_and_margins():
                                "footprint ratio": 0.2, "cam core": 0.5}, rel=1e-12)
     assert _margins(row, DesignLimits(cam_core_min=0.0), mech)["cam core"] == math.inf
 
+
+
+def test_cam_design_cam_core_margin_for_a_core_limit_of_a_millimetre_or_less():
+    """Only a cam core limit of 0 has no relative margin (inf); 1 mm or 0.5 mm are limits like any other."""
+    from propulsor.laws.cam_design import DesignLimits, _margins
+    from propulsor.laws.cam_motion import CamMechanism
+
+    row = dict(gamma_max_deg=24.0, R_min_mm=45.0, R_outer_min_mm=60.0, sigma_max_MPa=900.0, sigma_return_max_MPa=1200.0,
+               footprint_ratio=0.68, H_min_mm=80.0)
+    mech = CamMechanism()
+    core = 80.0 - mech.r                                        # H_min - r = 60 mm (r = 20 mm)
+    assert core == 60.0
+    for lim in (1.0, 0.5, 1e-9):
+        assert _margins(row, DesignLimits(cam_core_min=lim), mech)["cam core"] == pytest.approx(core / lim - 1.0,
+                                                                                                rel=1e-15)
+
+
+def test_cam_design_verify_places_the_shoes_of_the_cam_it_was_given():
+    """verify builds the cam with the given return phase and samples the idle shoes at the inner angles of its n_phi
+    (n_phi = 3: the middle one only)."""
+    from propulsor.laws.cam_design import DesignLimits, verify
+    from propulsor.laws.cam_motion import CamMechanism, CurvatureLaw, ReturnPhase, cam_motion
+    from propulsor.laws.shoe import hub_height_on_flat, return_ground_clearance
+
+    mech, good = CamMechanism(), CurvatureLaw("quadratic", 0.017)
+    s = math.pi / 4
+    rp = ReturnPhase("min_jerk")
+    cm = cam_motion(mech, good, rp, estimate_error=False)
+    p19 = np.linspace(-s, s, 19)
+    want = float(return_ground_clearance(cm, p19[1:-1], n_shoe=601).min())
+    other = float(return_ground_clearance(cam_motion(mech, good, estimate_error=False), p19[1:-1], n_shoe=601).min())
+    assert abs(want - other) > 1e-3                                # the return phase moves the idle shoes
+    assert verify(mech, good, DesignLimits(), rp)["ground_clearance_min_mm"] == pytest.approx(want, rel=1e-12)
+    v3 = verify(mech, good, DesignLimits(), n_phi=3)
+    cm0 = cam_motion(mech, good, estimate_error=False)
+    assert v3["ground_clearance_min_mm"] == pytest.approx(float(return_ground_clearance(cm0, [0.0], 601)[0]), rel=1e-12)
+    hh = hub_height_on_flat(cm0, np.array([-s, 0.0, s]), n_shoe=601)
+    assert v3["hub_height_mean_mm"] == pytest.approx(float(hh.mean()), rel=1e-12) and hh == pytest.approx(320.0)
+
+
+def test_cam_design_search_chooses_the_law_of_its_row_k1_and_symmetry_kept():
+    """The chosen law is rebuilt from its row: an odd exponential law keeps its k1 and its odd form."""
+    from propulsor.laws.cam_design import DesignLimits, SearchGrid, search_design
+    from propulsor.laws.cam_motion import CamMechanism, CurvatureLaw
+
+    loose = DesignLimits(gamma_max_deg=89.0, R_factor=1e-6, sigma_allow=1e9, footprint_ratio_max=10.0,
+                         cam_core_min=0.0, hub_height_tol=1e3)
+    g = SearchGrid(linear_k0=(0, 0, 0), quadratic_k0=(0, 0, 0), exponential_k0=(0.002, 0.002, 1),
+                   exponential_k1=(0.5, 0.5, 1), symmetric=False)
+    r = search_design(CamMechanism(), loose, g)
+    assert r.law == CurvatureLaw("exponential", 0.002, 0.5, symmetric=False)
+    assert (r.chosen["k0"], r.chosen["k1"], r.chosen["label"]) == (0.002, 0.5, "K = 0.002·exp(0.5·φ)")
 
 def test_damper_mean_power_window_on_a_lightly_damped_start():
     """A light damper (b2 = 3 kN s/m) still ringing from rest: the mean power depends on its window (the last

@@ -89,7 +89,12 @@ def shoe_table(support: SupportPath, phi) -> ShoeTable:
 
 
 def _segments_intersect(P: np.ndarray) -> bool:
-    """True if the open polyline P (n, 2) crosses itself (non-adjacent segments)."""
+    """True if the open polyline P (n, 2) crosses itself (non-adjacent segments).
+
+    Each segment is half-open, [start, end): a crossing exactly at a vertex is counted once, by the segment
+    that starts there (closed intervals would count it twice, open ones not at all).  The polyline's last
+    point touching an earlier segment is not a crossing; an exact fold-back along the previous segment is a
+    cusp (σ changes sign), found by :func:`shoe_loop_check`'s radius test."""
     a, b = P[:-1], P[1:]
     n = len(a)
     if n < 3:
@@ -107,7 +112,7 @@ def _segments_intersect(P: np.ndarray) -> bool:
         t = cross(w, dj) / den
         u = cross(w, di) / den
     i, j = np.indices((n, n))
-    ok = (j > i + 1) & (den != 0.0) & (t > 0) & (t < 1) & (u > 0) & (u < 1)
+    ok = (j > i + 1) & (den != 0.0) & (t >= 0) & (t < 1) & (u >= 0) & (u < 1)
     return bool(np.any(ok))
 
 
