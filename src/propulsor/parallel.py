@@ -490,11 +490,10 @@ class _Ticks:
     def __init__(self, fd: int, counter, job=None):
         self.fd, self.counter, self.job, self.buf = fd, counter, job, b""
 
-    def drain(self) -> None:
-        if self.fd < 0:
-            return
-        last = None
-        while True:
+    def _lines(self) -> list[bytes]:
+        """The whole lines the pipe holds now (a line cut short waits in the buffer)."""
+        out: list[bytes] = []
+        while self.fd >= 0:
             try:
                 data = os.read(self.fd, 65536)
             except (BlockingIOError, InterruptedError):
@@ -503,10 +502,13 @@ class _Ticks:
                 break
             self.buf += data
             *lines, self.buf = self.buf.split(b"\n")
-            if lines:
-                last = lines[-1]
-        if last:
-            done, total = (int(x) for x in last.split())
+            out += lines
+        return out
+
+    def drain(self) -> None:
+        lines = [ln for ln in self._lines() if ln]
+        if lines:
+            done, total = (int(x) for x in lines[-1].split())
             self.counter(done, total)
 
     def close(self) -> None:
@@ -523,27 +525,16 @@ class _Events(_Ticks):
     build's progress), in order."""
 
     def drain(self) -> None:
-        if self.fd < 0:
-            return
         import json
 
         from .progress import Event
 
-        while True:
+        for raw in self._lines():
             try:
-                data = os.read(self.fd, 65536)
-            except (BlockingIOError, InterruptedError):
-                break
-            if not data:
-                break
-            self.buf += data
-            *lines, self.buf = self.buf.split(b"\n")
-            for raw in lines:
-                try:
-                    ev = json.loads(raw)
-                except ValueError:
-                    continue
-                self.counter(Event(ev["text"], ev["kind"], ev["phase"], ev["done"], ev["total"]))
+                ev = json.loads(raw)
+            except ValueError:
+                continue
+            self.counter(Event(ev["text"], ev["kind"], ev["phase"], ev["done"], ev["total"]))
 
 
 def event_pipe(progress, job_of):

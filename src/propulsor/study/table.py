@@ -193,14 +193,7 @@ class Table:
         self.rows: list[dict] = []
         if resume and self.path.is_file():
             self.rows = read_csv(self.path, self.cols, keys)
-        def header_and_rows(tmp: str) -> None:
-            with open(tmp, "w", newline="", encoding="utf-8") as f:
-                w = csv.writer(f)
-                w.writerow(self.cols)
-                for r in self.rows:
-                    w.writerow([cell(r.get(c)) for c in self.cols])
-
-        replace_atomically(self.path, header_and_rows)
+        self._rewrite_csv()
         self._f = open(self.path, "a", newline="", encoding="utf-8")
         self._w = csv.writer(self._f)
         self._clock = time.monotonic
@@ -234,6 +227,11 @@ class Table:
         """The whole study done: both files rewritten with the rows in the order of their variants (they came in
         the order the variants finished: 2, 4, 1, 3; the trial sorted them to compare two runs).  Once, at the end."""
         self.rows.sort(key=lambda r: int(r["variant"]))
+        self._rewrite_csv()
+        self._write_parquet()
+
+    def _rewrite_csv(self) -> None:
+        """results.csv anew with the header and the rows held (through a temporary file and one rename)."""
 
         def header_and_rows(tmp: str) -> None:
             with open(tmp, "w", newline="", encoding="utf-8") as f:
@@ -243,4 +241,3 @@ class Table:
                     w.writerow([cell(r.get(c)) for c in self.cols])
 
         replace_atomically(self.path, header_and_rows)
-        self._write_parquet()
