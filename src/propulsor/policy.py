@@ -302,6 +302,12 @@ CONTACT_CORNER_NEAR_MM = 2e-3
 CONTACT_TRACK_MARGIN_RAD = 3e-4
 #: ... at most this far (rad): less than half the backlash of any pair the proofs pass (0.1 mm on 100 mm)
 CONTACT_TRACK_MARGIN_MAX_RAD = 1e-3
+#: the contact search skips, before any per-vertex work, each run of this many vertices (in polar-angle order) whose
+#: bounding circle stays farther from the mate's outline than the run can turn (a lower bound of that distance read
+#: from a grid of the mate, :func:`.contact_events.distance_field`): the same first contact, found in fewer steps
+CONTACT_PRUNE_CHUNK = 32
+#: ... that grid has about this many cells along the longer side of the mate's bounding box
+CONTACT_FIELD_CELLS = 640
 #: first window of a full search from the law's position (rad; grown 4x until a contact is found)
 CONTACT_SEARCH_START_RAD = 3e-3
 #: the speed before / after a change of state is the chord over at least this much driven angle (rad)

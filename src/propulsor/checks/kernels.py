@@ -57,7 +57,7 @@ def _toothed(z: int, r: float, h: float, n: int = 24) -> np.ndarray:
 def warm() -> None:
     """Call every cached kernel once on small inputs, so that each is compiled (or loaded) now, in this process:
     the mesh checks' triangle tests, the motion proof's distance, crossing and rotation searches, and the as-built
-    contact search on a pair of toothed rings."""
+    contact search (its first hit and all of a window's) on a pair of toothed rings."""
     from .mesh import self_intersections
     from .motion import Outline
     from .motion.backlash import _rot_hits
@@ -80,6 +80,7 @@ def warm() -> None:
     step = 2 * math.pi / z2 / 4
     resolve_contact(pair, lambda phi: np.asarray(phi, float) * z2 / z1, 0.0, 4 * step, DRIVE,
                     step_driver_rad=step * z2 / z1, max_evals=40)
+    pair._all_hits(0.0, 0.0, 1.0, step)  # every hit of a window (the per-tooth load's search)
 
 
 def warm_if_cold(progress=None) -> bool:

@@ -60,6 +60,43 @@ def _sorted_by_angle(o: Outline, r_min: float):
     return keep[order], a[order]
 
 
+def distance_field(o: Outline, cells: int = policy.CONTACT_FIELD_CELLS) -> tuple:
+    """A lower bound of the distance from a point to the outline's boundary, on a grid over its body frame:
+    ``(x0, y0, h, nx, ny, values)``, ``values[ix * ny + iy]`` bounding every point of cell (ix, iy) from below.
+    The Euclidean distance transform of the cells that hold a vertex (scipy.ndimage) gives the distance between
+    cell centres; less a cell's diagonal (the point and the vertex each lie within half of it of their cells'
+    centres) and half the longest edge (a boundary point lies within that of a vertex), at least 0.  About
+    ``cells`` cells along the longer side of the bounding box, two more on each side.  Cached on the outline."""
+    f = getattr(o, "_distance_field", None)
+    if f is None:
+        from scipy.ndimage import distance_transform_edt
+
+        lo, hi = o.points.min(axis=0), o.points.max(axis=0)
+        h = float(np.max(hi - lo)) / cells
+        lo = lo - 2.0 * h
+        nx, ny = (int(math.ceil(float(hi[k] + 2.0 * h - lo[k]) / h)) for k in (0, 1))
+        free = np.ones((nx, ny), bool)
+        ix = np.clip(np.floor((o.points[:, 0] - lo[0]) / h).astype(np.int64), 0, nx - 1)
+        iy = np.clip(np.floor((o.points[:, 1] - lo[1]) / h).astype(np.int64), 0, ny - 1)
+        free[ix, iy] = False
+        d = distance_transform_edt(free) * h
+        values = np.maximum(d - h * math.sqrt(2.0) - o.half_len - 1e-9, 0.0).ravel()
+        f = o._distance_field = (float(lo[0]), float(lo[1]), h, nx, ny, np.ascontiguousarray(values, np.float64))
+    return f
+
+
+def _chunks(points: np.ndarray, order: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray]:
+    """Bounding circles (centres, radii) of the runs of ``size`` vertices in ``order`` (the last run shorter)."""
+    P = points[order]
+    m = -(-len(P) // size)
+    if m == 0:
+        return np.zeros((0, 2)), np.zeros(0)
+    Q = np.concatenate([P, np.repeat(P[-1:], m * size - len(P), axis=0)]).reshape(m, size, 2)
+    cc = 0.5 * (Q.min(axis=1) + Q.max(axis=1))
+    cr = np.sqrt(np.max(np.sum((Q - cc[:, None, :]) ** 2, axis=2), axis=1)) + 1e-9
+    return cc, cr
+
+
 def _window(order: np.ndarray, angs: np.ndarray, centre: float, hw: float) -> np.ndarray:
     """The vertices (of ``order``) whose polar angle lies within centre +- hw (wrapped)."""
     if hw >= math.pi:
@@ -145,6 +182,18 @@ class PairOutlines:
                 float(self.R1), float(self.R2)) + self._target(self.drv) + self._target(self.dvn)
         return k
 
+    @property
+    def _prune_args(self) -> tuple:
+        """What the pruned hit search adds: the runs' bounding circles of both windows and both distance fields."""
+        k = self.__dict__.get("_pargs")
+        if k is None:
+            size = policy.CONTACT_PRUNE_CHUNK
+            cc1, cr1 = _chunks(self.dvn.points, self.o1, size)
+            cc2, cr2 = _chunks(self.drv.points, self.o2, size)
+            k = self.__dict__["_pargs"] = ((size, cc1, cr1, cc2, cr2) + distance_field(self.drv)
+                                           + distance_field(self.dvn))
+        return k
+
     def _all_hits(self, phi_a: float, theta: float, sign: float, w: float):
         """Every hit within w when the driven wheel, at actual angle phi_a, turns by sign (+1: back, the drive
         flanks): (i1, d1, e1, t1) of the driven vertices on driver edges and (i2, d2, e2, t2) of the driver
@@ -157,8 +206,12 @@ class PairOutlines:
     def _hits(self, phi_a: float, theta: float, sign: float, w: float):
         """First entering hit when the driven wheel, at actual angle phi_a, turns by sign (+1: back, the
         drive flanks) through at most w rad: (delta, side, vertex, edge, t); side 1: a driven vertex on a driver
-        edge, side 2: a driver vertex on a driven edge.  Compiled: :func:`_first_hit`."""
-        return _first_hit(float(phi_a), float(theta), float(sign), float(w), *self._kernel_args)
+        edge, side 2: a driver vertex on a driven edge.  Compiled: :func:`_first_hit_pruned` (the first least of
+        :func:`_pair_hits`, the vertices that cannot reach the mate within w left out first; the test's reference,
+        ``tests/contact_hit_reference.py``, takes it from every vertex of the window)."""
+        ka = self._kernel_args
+        return _first_hit_pruned(float(phi_a), float(theta), float(sign), float(w), *ka[:11], *self._prune_args,
+                                 *ka[11:])
 
     def contact(self, phi: float, theta: float, direction: int, prev_te: float | None = None, dphi: float = 0.0):
         """(te, kind, driver tooth, driven tooth, contact point in the driven body frame) at law phase phi
@@ -275,9 +328,17 @@ def _side_hits(idx, V, c1, s1, tx, c2, s2, sign, w, r_keep, cx, cy, tgt):
     chord_factor = 2.0 * math.sin(0.5 * min(w, math.pi))
     offs, seg, Y, X, T, ok = _rot_pairs(P, cx, cy, tV, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, near,
                                         sign, rho, lb, chord_factor)
-    ang = np.empty_like(Y)
+    # the angle of each root: only of the entering ones (the others are never taken), and not of those plainly
+    # outside 0 .. w (a margin of 1e-6 of the angle: far beyond atan2's rounding), which are never taken either
+    ang = np.full_like(Y, np.nan)
+    tw = math.tan(w) * (1.0 + 1e-6) if w < 1.5 else np.inf
     for k in range(Y.shape[0]):
         for r in range(2):
+            if not ok[k, r]:
+                continue
+            x, s = X[k, r], sign * Y[k, r]
+            if w < 1.5 and (x < 0.0 or (x > 0.0 and (s > x * tw or s < -x * 1e-6))):
+                continue
             ang[k, r] = sign * math.atan2(Y[k, r], X[k, r])
     delta, edge, tpar = _rot_reduce(offs, seg, ang, T, ok, w)
     return keep[:n], delta, edge, tpar
@@ -307,28 +368,120 @@ def _pair_hits(phi_a, theta, sign, w, L, dvn_V, o1, a1, hw_dvn, drv_V, o2, a2, h
 
 
 @njit(cache=True)
-def _first_hit(phi_a, theta, sign, w, L, dvn_V, o1, a1, hw_dvn, drv_V, o2, a2, hw_drv, R1, R2,
-               t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14, t15,
-               u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14, u15):
-    """:meth:`PairOutlines._hits` compiled: the first entering hit (delta, side, vertex, edge, t) of
-    :func:`_pair_hits` (the first least on a tie, side 1 before side 2)."""
-    i1, d1, e1, t1_, i2, d2, e2, t2_ = _pair_hits(phi_a, theta, sign, w, L, dvn_V, o1, a1, hw_dvn, drv_V, o2, a2,
-                                                  hw_drv, R1, R2, t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11,
-                                                  t12, t13, t14, t15, u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10,
-                                                  u11, u12, u13, u14, u15)
+def _pruned_window(order, angs, centre, hw, chunk, cc, cr, V, c1, s1, tx, c2, s2, r_keep, cx, cy, chord, ccx, ccy,
+                   radius, r_min, fx, fy, fh, fnx, fny, fvals):
+    """The vertices of :func:`_window_nb` (the same, in the same order) less every run of ``chunk`` positions whose
+    bounding circle (``cc``, ``cr``: body frame), placed into the target's frame as :func:`_side_hits` places the
+    vertices (turn c1, s1; shift tx; turn c2, s2), lies wholly beyond ``r_keep`` of the target's axis, or farther
+    from the target's boundary (the annulus ccx, ccy, radius, r_min and the distance field fx .. fvals:
+    :func:`distance_field`) than ``chord`` times its farthest distance from the turning centre (cx, cy): no vertex
+    of such a run is kept, or can reach the boundary within the window (1e-6 mm to spare on either test); of the
+    runs left, each vertex ``V[q]`` by the same test."""
+    n_all = len(order)
+    bounds = np.empty(6, np.int64)
+    n = 0
+    if hw >= math.pi:
+        bounds[0], bounds[1] = 0, n_all
+        for i in range(1, 3):
+            bounds[2 * i], bounds[2 * i + 1] = 0, 0
+        n = n_all
+    else:
+        c = (centre + math.pi) % (2 * math.pi) - math.pi
+        for i in range(3):
+            k = i - 1
+            lo, hi = c - hw + 2 * math.pi * k, c + hw + 2 * math.pi * k
+            bounds[2 * i], bounds[2 * i + 1] = np.searchsorted(angs, lo), np.searchsorted(angs, hi)
+            n += max(bounds[2 * i + 1] - bounds[2 * i], 0)
+    out = np.empty(n, np.int64)
+    n = 0
+    for i in range(3):
+        lo, hi = bounds[2 * i], bounds[2 * i + 1]
+        if hi <= lo:
+            continue
+        for j in range(lo // chunk, (hi - 1) // chunk + 1):
+            x, y = cc[j, 0], cc[j, 1]
+            u = x * c1 - y * s1 + tx
+            v = x * s1 + y * c1
+            px = u * c2 - v * s2
+            py = u * s2 + v * c2
+            r = cr[j]
+            if math.sqrt(px * px + py * py) - r > r_keep + 1e-6:
+                continue
+            dx, dy = px - cx, py - cy
+            reach = chord * (math.sqrt(dx * dx + dy * dy) + r)
+            ex, ey = px - ccx, py - ccy
+            d = math.sqrt(ex * ex + ey * ey)
+            lb = max(d - radius, r_min - d)
+            ix = int(math.floor((px - fx) / fh))
+            iy = int(math.floor((py - fy) / fh))
+            if 0 <= ix < fnx and 0 <= iy < fny:
+                lb = max(lb, fvals[ix * fny + iy])
+            if lb - r > reach + 1e-6:
+                continue
+            for p in range(max(lo, j * chunk), min(hi, (j + 1) * chunk)):
+                q = order[p]
+                x, y = V[q, 0], V[q, 1]
+                u = x * c1 - y * s1 + tx
+                v = x * s1 + y * c1
+                px = u * c2 - v * s2
+                py = u * s2 + v * c2
+                dx, dy = px - cx, py - cy
+                reach = chord * math.sqrt(dx * dx + dy * dy)
+                ex, ey = px - ccx, py - ccy
+                d = math.sqrt(ex * ex + ey * ey)
+                lb = max(d - radius, r_min - d)
+                ix = int(math.floor((px - fx) / fh))
+                iy = int(math.floor((py - fy) / fh))
+                if 0 <= ix < fnx and 0 <= iy < fny:
+                    lb = max(lb, fvals[ix * fny + iy])
+                if lb > reach + 1e-6:
+                    continue
+                out[n] = q
+                n += 1
+    return out[:n]
+
+
+@njit(cache=True)
+def _least(d):
+    """(index, value) of the first least of d; (-1, inf) when d is empty."""
     k1, m1 = -1, np.inf
-    for k in range(len(d1)):
-        if k1 < 0 or d1[k] < m1:
-            k1, m1 = k, d1[k]
-    k2, m2 = -1, np.inf
-    for k in range(len(d2)):
-        if k2 < 0 or d2[k] < m2:
-            k2, m2 = k, d2[k]
+    for k in range(len(d)):
+        if k1 < 0 or d[k] < m1:
+            k1, m1 = k, d[k]
+    return k1, m1
+
+
+@njit(cache=True)
+def _first_hit_pruned(phi_a, theta, sign, w, L, dvn_V, o1, a1, hw_dvn, drv_V, o2, a2, hw_drv, R1, R2,
+                      chunk, cc1, cr1, cc2, cr2, f0, f1, f2, f3, f4, f5, g0, g1, g2, g3, g4, g5,
+                      t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14, t15,
+                      u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14, u15):
+    """The first entering hit (delta, side, vertex, edge, t) of :func:`_pair_hits` (the first least on a tie, side 1
+    before side 2), bit for bit, with the window's vertices that cannot reach the mate within w left out before
+    any per-vertex work (:func:`_pruned_window`; ``f*``: the driver's distance field, ``g*``: the driven's).  A
+    vertex left out would have had no hit (delta inf): the least, and the first on a tie, are the same."""
+    drv_t = (t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14, t15)
+    dvn_t = (u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14, u15)
+    chord = 2.0 * math.sin(0.5 * min(w, math.pi))
+    cp, sp = math.cos(-phi_a), math.sin(-phi_a)
+    ct, st = math.cos(-theta), math.sin(-theta)
+    cx1 = -L * ct + 0.0 * (-st)
+    cy1 = -L * st + 0.0 * ct
+    keep1 = R1 + w * R2 + 1e-6
+    i1 = _pruned_window(o1, a1, phi_a, hw_dvn + w, chunk, cc1, cr1, dvn_V, cp, sp, -L, ct, st, keep1, cx1, cy1, chord,
+                        t12, t13, t14, t15, f0, f1, f2, f3, f4, f5)
+    k1, d1, e1, q1 = _side_hits(i1, dvn_V, cp, sp, -L, ct, st, sign, w, keep1, cx1, cy1, drv_t)
+    cth, sth, cph, sph = math.cos(theta), math.sin(theta), math.cos(phi_a), math.sin(phi_a)
+    i2 = _pruned_window(o2, a2, math.pi - theta, hw_drv + w, chunk, cc2, cr2, drv_V, cth, sth, L, cph, sph, R2 + 1e-6,
+                        0.0, 0.0, chord, u12, u13, u14, u15, g0, g1, g2, g3, g4, g5)
+    k2, d2, e2, q2 = _side_hits(i2, drv_V, cth, sth, L, cph, sph, -sign, w, R2 + 1e-6, 0.0, 0.0, dvn_t)
+    j1, m1 = _least(d1)
+    j2, m2 = _least(d2)
     if not (m1 < np.inf or m2 < np.inf):
         return np.inf, 0, -1, -1, 0.0
     if m1 <= m2:
-        return m1, 1, i1[k1], e1[k1], t1_[k1]
-    return m2, 2, i2[k2], e2[k2], t2_[k2]
+        return m1, 1, k1[j1], e1[j1], q1[j1]
+    return m2, 2, k2[j2], e2[j2], q2[j2]
 
 
 def _driven_to_world(p, phi_a):
