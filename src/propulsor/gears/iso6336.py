@@ -149,7 +149,7 @@ def tooth_form_factor(z: int, m: float, x: float, d_en: float, alpha: float = ma
             theta = new
             break
         theta = new
-    else:  # pragma: no cover - the fixed point converges for every generable tooth
+    else:  # z = 1, 2 (the fixed point repels) and a few teeth of extreme racks (35°, h_a* 0.8, z <= 7, x <= -1)
         raise InputError("z", z, "30° tangent iteration of ISO 6336-3 did not converge")
     s_Fn = m * (z * math.sin(math.pi / 3 - theta) + math.sqrt(3.0) * (G / math.cos(theta) - rho_fP_star))
     rho_F = m * (rho_fP_star + 2.0 * G * G / (math.cos(theta) * (z * math.cos(theta) ** 2 - 2.0 * G)))
