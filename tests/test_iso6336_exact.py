@@ -81,6 +81,8 @@ def internal_form_by_hand(d, d_f, s, m, rho, d_en, alpha):
     y_F = h_fP - rho / 2
     y_e = (d_en - d) / 2
     h_Fe = y_F - y_e - (s / 2 + y_e * t) * t
+    if not (h_Fe > 0 and s_Fn > 0):
+        return dict(s_Fn=s_Fn, h_Fe=h_Fe)
     Y_F = 6 * (h_Fe / m) / (s_Fn / m) ** 2
     L, q_s = s_Fn / h_Fe, s_Fn / (2 * rho)
     return dict(theta=math.pi / 6, s_Fn=s_Fn, rho_F=rho, h_Fe=h_Fe, alpha_Fen=alpha, Y_F=Y_F,
@@ -363,3 +365,286 @@ def test_internal_mesh_without_its_root_leaves_the_rings_root_unrated():
     s = mesh_stress(pair, pair.d_a1, pair.d_a2, 36.0, MeshLoad(220.0, 5.0))
     assert (s.Y_F2, s.Y_S2, s.sigma_F2, s.root2_B, s.d_en2, s.sigma_F2_B) == (None,) * 6
     assert s.Y_B2 == 1.0 and s.Z_D == 1.0 and s.sigma_F1 > 0 and s.b_F1 == s.b_F2 == 36.0
+
+
+# ============================================================================ iso6336_internal.py
+def test_internal_root_refusals_in_full():
+    from propulsor.gears.iso6336_internal import d_en_internal, internal_tooth_form, y_b_internal
+    assert (_message(d_en_internal, 500.0, 500.0, 10.0, A20, 1.4)
+            == "d_a2 = 500.0: the internal wheel's tip must lie outside its base circle 500.0000 mm")
+    args = dict(d=560.0, d_f=585.0, s=14.0, m=10.0, rho_fP=2.5, d_en=570.0)
+    for name in ("d", "s", "m", "rho_fP", "d_en"):
+        assert _message(internal_tooth_form, **{**args, name: 0.0}) == f"{name} = 0.0: must be > 0 mm"
+    assert (_message(internal_tooth_form, **{**args, "d_f": 560.0})
+            == "d_f = 560.0: an internal gear's root diameter must exceed its reference diameter 560 mm")
+    # the load point below the 30° tangents' depth: no bending arm
+    with pytest.raises(InputError) as e:
+        internal_tooth_form(**{**args, "d_en": 590.0})
+    hand = internal_form_by_hand(560.0, 585.0, 14.0, 10.0, 2.5, 590.0, A20)
+    assert str(e.value) == (f"d_en = 590.0: no bending arm below the load point (h_Fe = {hand['h_Fe']:.4f} mm, "
+                            f"s_Fn = {hand['s_Fn']:.4f} mm)")
+    assert _message(y_b_internal, 0.0, 10.0) == "s_R = 0.0: must be > 0 mm"
+    assert (_message(y_b_internal, 17.5, 10.0)
+            == "s_R = 17.5: rim under the root must exceed 1.75·m = 17.5 mm (ISO 6336-3 Y_B)")
+
+
+def test_internal_root_refused_at_a_zero_arm_or_a_zero_or_negative_chord():
+    """Both must be > 0: a load point exactly at the 30° tangents' depth (h_Fe = 0.0), a fillet as wide as the
+    tooth (s_Fn = 0.0) or wider (s_Fn < 0, the load point inside the reference circle so that h_Fe > 0)."""
+    from propulsor.gears.iso6336_internal import internal_tooth_form
+
+    def refusal(*a):
+        hand = internal_form_by_hand(*a, A20)
+        return (f"d_en = {a[5]!r}: no bending arm below the load point (h_Fe = {hand['h_Fe']:.4f} mm, "
+                f"s_Fn = {hand['s_Fn']:.4f} mm)"), hand
+
+    for args in ((560.0, 585.0, 15.146527131916631, 10.0, 2.5, 575.0),     # h_Fe = 0.0 exactly
+                 (560.0, 562.0, 2.2567811118127166, 10.0, 9.0, 540.0),     # s_Fn = 0.0 exactly
+                 (560.0, 562.0, 0.5, 10.0, 9.0, 540.0)):                   # s_Fn < 0 < h_Fe
+        text, hand = refusal(*args)
+        assert abs(hand["h_Fe"]) < 1e-12 < hand["s_Fn"] or hand["s_Fn"] < 1e-12 < hand["h_Fe"]   # (0 in the code)
+        assert _message(internal_tooth_form, *args) == text
+
+
+def test_internal_form_factors_do_not_scale_with_the_module():
+    """Y_F and Y_S are ratios: a ring 40 times smaller (m = 0.25 mm, s_Fn and h_Fe below 1 mm) has the same."""
+    from propulsor.gears.iso6336_internal import internal_tooth_form
+    big = internal_tooth_form(560.0, 585.0, 14.0, 10.0, 2.5, 566.0)
+    small = internal_tooth_form(14.0, 14.625, 0.35, 0.25, 0.0625, 14.15)
+    assert small.s_Fn < 1.0 and small.h_Fe < 1.0
+    assert (small.Y_F, small.Y_S) == pytest.approx((big.Y_F, big.Y_S), rel=1e-12)
+    assert small.s_Fn == pytest.approx(big.s_Fn / 40, rel=1e-12)
+
+
+@pytest.mark.parametrize("alpha", [A20, A25])
+def test_internal_tooth_form_is_the_substitute_rack_of_iso_6336_3(alpha):
+    from propulsor.gears.iso6336_internal import internal_tooth_form
+    for d_en in (564.0, 566.0, 568.0):
+        got = internal_tooth_form(560.0, 585.0, 14.0, 10.0, 2.5, d_en, alpha)
+        assert _fields(got) == pytest.approx(internal_form_by_hand(560.0, 585.0, 14.0, 10.0, 2.5, d_en, alpha),
+                                             rel=1e-12)
+    # the default pressure angle is 20°
+    assert _fields(internal_tooth_form(560.0, 585.0, 14.0, 10.0, 2.5, 570.0)) == pytest.approx(
+        internal_form_by_hand(560.0, 585.0, 14.0, 10.0, 2.5, 570.0, A20), rel=1e-12)
+
+
+def test_internal_single_contact_diameter_and_rim_factor():
+    from propulsor.gears.iso6336_internal import d_en_internal, y_b_internal
+    r_b = 0.5 * 526.0
+    g = math.sqrt(284.0 ** 2 - r_b ** 2) + math.pi * 10.0 * math.cos(A20) * 0.4
+    assert d_en_internal(568.0, 526.0, 10.0, A20, 1.4) == pytest.approx(2 * math.sqrt(g * g + r_b * r_b), rel=1e-14)
+    assert d_en_internal(568.0, 526.0, 10.0, A20, 1.0) == pytest.approx(568.0, rel=1e-14)
+    # Y_B: 1 from 3.5·m up, 1.15·ln(8.324·m/s_R) between 1.75·m and 3.5·m
+    assert y_b_internal(35.0, 10.0) == 1.0 and y_b_internal(80.0, 10.0) == 1.0
+    assert y_b_internal(34.9, 10.0) == pytest.approx(1.15 * math.log(8.324 / 3.49), rel=1e-14)
+    assert y_b_internal(17.6, 10.0) == pytest.approx(1.15 * math.log(8.324 / 1.76), rel=1e-14)
+    assert y_b_internal(25.0, 10.0) == pytest.approx(1.15 * math.log(8.324 / 2.5), rel=1e-14)
+
+
+# ============================================================================ iso6336_life.py
+def test_life_refusals_in_full():
+    from propulsor.gears import iso6336_life as life
+    cyc = "must be a finite number of cycles >= 0"
+    for bad, shown in ((-1.0, "-1.0"), (math.nan, "nan"), (math.inf, "inf"), ("1e6", "'1e6'")):
+        for fn in (life.z_nt, life.y_nt):
+            assert _message(fn, bad) == f"load_cycles = {shown}: {cyc}"
+        assert _message(life.life_weight, bad, 1e3, 3e6) == f"load_cycles = {shown}: {cyc}"
+    assert _message(life.between_static_and_reference, 0.0, 1.0, 1e4, 1e3, 3e6) == "P_static = 0.0: must be > 0"
+    assert _message(life.between_static_and_reference, 1.0, -1.0, 1e4, 1e3, 3e6) == "P_ref = -1.0: must be > 0"
+    assert _message(life.y_delta_rel_t_static, 0.0) == "Y_S = 0.0: must be > 0"
+    assert _message(life.z_l, 0.0, 1500.0) == "oil_viscosity_40 = 0.0: must be > 0 mm²/s"
+    for bad, shown in ((-1.0, "-1.0"), (math.nan, "nan"), (math.inf, "inf")):
+        assert _message(life.z_v, bad, 1500.0) == f"v = {shown}: must be a finite speed >= 0 m/s"
+    assert _message(life.z_r, 0.0, 3.0, 20.0, 1500.0) == "flank_roughness_Rz = 0.0: must be > 0 µm"
+    assert _message(life.z_r, 3.0, -2.0, 20.0, 1500.0) == "flank_roughness_Rz = -2.0: must be > 0 µm"
+    assert _message(life.z_r, 3.0, 3.0, 0.0, 1500.0) == "rho_red = 0.0: must be > 0 mm"
+    p = (1600.0, 1500.0, 1e6, 220.0, 2.0, 3.0, 3.0, 20.0)
+    assert _message(life.pitting_safety, p[0], 0.0, *p[2:]) == "sigma_Hlim = 0.0: must be > 0 MPa"
+    assert _message(life.pitting_safety, 0.0, *p[1:]) == "sigma_H = 0.0: must be > 0 MPa"
+
+
+def _z_nt(N):
+    return 1.6 if N <= 1e5 else (5e7 / N) ** 0.0756 if N <= 5e7 else (5e7 / min(N, 1e10)) ** 0.0306
+
+
+def _y_nt(N):
+    return 2.5 if N <= 1e3 else (3e6 / N) ** 0.115 if N <= 3e6 else (3e6 / min(N, 1e10)) ** 0.02
+
+
+def test_life_factors_of_tables_2_and_3_on_both_sides_of_every_corner():
+    from propulsor.gears import iso6336_life as life
+    for N in (0, 0.0, 1.0, 999.0, 1e3, 1001.0, 5e4, 1e5, 1.001e5, 1e6, 3e6, 3.1e6, 5e7, 5.1e7, 1e9, 1e10, 1.1e10,
+              1e12):
+        assert life.z_nt(N) == pytest.approx(_z_nt(N), rel=1e-14), N
+        assert life.y_nt(N) == pytest.approx(_y_nt(N), rel=1e-14), N
+    assert life.z_nt(1e5) == 1.6 and life.y_nt(1e3) == 2.5
+    # half a cycle past each corner: the next line (its exponent), the floor beyond 1e10
+    assert life.z_nt(100000.5) == (5e7 / 100000.5) ** 0.0756
+    assert life.z_nt(50000000.5) == (5e7 / 50000000.5) ** 0.0306
+    assert life.z_nt(1e10 + 0.5) == (5e7 / 1e10) ** 0.0306
+    assert life.y_nt(1000.5) == (3e6 / 1000.5) ** 0.115
+    assert life.y_nt(3000000.5) == (3e6 / 3000000.5) ** 0.02
+    assert life.y_nt(1e10 + 0.5) == (3e6 / 1e10) ** 0.02
+
+
+def test_cycles_at_a_life_factor_invert_the_tables():
+    from propulsor.gears import iso6336_life as life
+    z_floor, y_floor = (5e7 / 1e10) ** 0.0306, (3e6 / 1e10) ** 0.02
+    assert life.cycles_at_z_nt(1.61) == 0.0 and life.cycles_at_y_nt(2.51) == 0.0
+    assert life.cycles_at_z_nt(1.6) == pytest.approx(5e7 / 1.6 ** (1 / 0.0756), rel=1e-14)     # 99 800: 1e5 to 3 digits
+    assert life.cycles_at_y_nt(2.5) == pytest.approx(3e6 / 2.5 ** (1 / 0.115), rel=1e-14)      # 1041
+    assert life.cycles_at_z_nt(z_floor) == math.inf and life.cycles_at_y_nt(y_floor) == math.inf
+    assert life.cycles_at_z_nt(z_floor * (1 + 1e-12)) == pytest.approx(1e10, rel=1e-6)
+    assert life.cycles_at_y_nt(y_floor * (1 + 1e-12)) == pytest.approx(1e10, rel=1e-6)
+    assert life.cycles_at_z_nt(1.0) == pytest.approx(5e7, rel=1e-14)
+    assert life.cycles_at_y_nt(1.0) == pytest.approx(3e6, rel=1e-14)
+    assert life.cycles_at_z_nt(1.2) == pytest.approx(5e7 / 1.2 ** (1 / 0.0756), rel=1e-14)
+    assert life.cycles_at_z_nt(0.9) == pytest.approx(5e7 / 0.9 ** (1 / 0.0306), rel=1e-14)
+    assert life.cycles_at_y_nt(1.7) == pytest.approx(3e6 / 1.7 ** (1 / 0.115), rel=1e-14)
+    assert life.cycles_at_y_nt(0.9) == pytest.approx(3e6 / 0.9 ** (1 / 0.02), rel=1e-14)
+
+
+def test_method_b_line_between_the_static_and_the_reference_point():
+    from propulsor.gears import iso6336_life as life
+    assert (life.N_STATIC_H, life.N_REF_H, life.N_STATIC_F, life.N_REF_F) == (1e5, 5e7, 1e3, 3e6)
+    assert life.life_weight(0.0, 1e3, 3e6) == 1.0 and life.life_weight(1e3, 1e3, 3e6) == 1.0
+    assert life.life_weight(3e6, 1e3, 3e6) == 0.0 and life.life_weight(1e9, 1e3, 3e6) == 0.0
+    w = math.log(3e6 / 2e4) / math.log(3e6 / 1e3)
+    assert life.life_weight(2e4, 1e3, 3e6) == pytest.approx(w, rel=1e-14)
+    assert life.between_static_and_reference(1.3, 0.8, 2e4, 1e3, 3e6) == pytest.approx(0.8 * (1.3 / 0.8) ** w,
+                                                                                        rel=1e-14)
+    assert life.between_static_and_reference(1.3, 0.8, 10.0, 1e3, 3e6) == pytest.approx(1.3, rel=1e-14)
+    assert life.between_static_and_reference(1.3, 0.8, 1e8, 1e3, 3e6) == pytest.approx(0.8, rel=1e-14)
+    assert life.y_delta_rel_t_static(1.9) == pytest.approx((0.44 * 1.9 + 0.12) / (0.44 * 2 + 0.12), rel=1e-14)
+    assert life.y_delta_rel_t_static(1.9, 2.2) == pytest.approx((0.44 * 1.9 + 0.12) / (0.44 * 2.2 + 0.12), rel=1e-14)
+
+
+def test_cycles_at_limit_both_ends_and_between():
+    from propulsor.gears import iso6336_life as life
+
+    def limit(N):   # a falling limit: 1000 MPa at 1e4, slope 0.05 in log-log
+        return 1000.0 * (1e4 / N) ** 0.05
+
+    assert life.cycles_at_limit(limit, 1000.0 + 1e-9, 1e4) == 0.0
+    N = 1e4 * (1000.0 / 800.0) ** (1 / 0.05)                   # 8.67e5
+    assert life.cycles_at_limit(limit, 800.0, 1e4) == pytest.approx(N, rel=1e-9)
+    assert life.cycles_at_limit(limit, 1000.0, 1e4) == pytest.approx(1e4, rel=1e-9)      # met at N_lo: not 0
+    assert life.cycles_at_limit(limit, limit(1e10), 1e4) == math.inf                    # met at N_hi: never below
+    assert life.cycles_at_limit(limit, limit(1e10) * (1 + 1e-9), 1e4) == pytest.approx(1e10, rel=1e-6)
+    assert life.cycles_at_limit(limit, 800.0, 1e4, 8e5) == math.inf                      # N_hi given
+    # the crossing to the solver's 1e-13 in log10 N (2.3e-13 in N), along the whole line
+    for i in range(200):
+        target = 990.0 - 1.3 * i
+        assert life.cycles_at_limit(limit, target, 1e4) == pytest.approx(1e4 * (1000.0 / target) ** 20, rel=2.5e-13)
+
+
+def _c_zl(s):
+    return 0.83 + 0.08 * (min(max(s, 850.0), 1200.0) - 850.0) / 350.0
+
+
+@pytest.mark.parametrize("s_Hlim", [700.0, 850.0, 1000.0, 1200.0, 1500.0])
+def test_lubricant_speed_and_roughness_factors_with_their_clamped_constants(s_Hlim):
+    from propulsor.gears import iso6336_life as life
+    c = _c_zl(s_Hlim)
+    assert life.z_l(150.0, s_Hlim) == pytest.approx(c + 4 * (1 - c) / (1.2 + 134.0 / 150.0) ** 2, rel=1e-14)
+    cv = c + 0.02
+    assert life.z_v(0.0, s_Hlim) == pytest.approx(cv, rel=1e-14)
+    assert life.z_v(3.0, s_Hlim) == pytest.approx(cv + 2 * (1 - cv) / math.sqrt(0.8 + 32.0 / 3.0), rel=1e-14)
+    c_zr = 0.32 - 0.0002 * min(max(s_Hlim, 850.0), 1200.0)
+    Rz10 = 0.5 * (2.0 + 4.0) * (10.0 / 12.0) ** (1 / 3)
+    assert life.z_r(2.0, 4.0, 12.0, s_Hlim) == pytest.approx(((3.0 / Rz10) ** c_zr, Rz10), rel=1e-14)
+
+
+def test_relative_radius_of_curvature_at_the_pitch_point():
+    from propulsor.gears import iso6336_life as life
+    r1, r2 = 0.5 * 150.0 * math.tan(0.45), 0.5 * 500.0 * math.tan(0.45)
+    assert life.rho_red(150.0, 500.0, 0.45, False) == pytest.approx(r1 * r2 / (r1 + r2), rel=1e-14)
+    assert life.rho_red(150.0, 500.0, 0.45, True) == pytest.approx(r1 * r2 / (r2 - r1), rel=1e-14)   # concave ring
+
+
+@pytest.mark.parametrize("N_L", [1e4, 1e6, 5e7, 1e9])
+def test_pitting_safety_every_field_by_hand(N_L):
+    from propulsor.gears import iso6336_life as life
+    s_H, s_lim, nu, v, Rz1, Rz2, rho, S_min = 1300.0, 1500.0, 220.0, 2.5, 2.0, 4.0, 15.0, 1.25
+    P = life.pitting_safety(s_H, s_lim, N_L, nu, v, Rz1, Rz2, rho, S_Hmin=S_min)
+    c = _c_zl(s_lim)
+    ZL = c + 4 * (1 - c) / (1.2 + 134 / nu) ** 2
+    Zv = c + 0.02 + 2 * (1 - c - 0.02) / math.sqrt(0.8 + 32 / v)
+    Rz10 = 3.0 * (10 / rho) ** (1 / 3)
+    ZR = (3 / Rz10) ** (0.32 - 0.0002 * 1200.0)
+    w = 1.0 if N_L <= 1e5 else 0.0 if N_L >= 5e7 else math.log(5e7 / N_L) / math.log(5e7 / 1e5)
+    LvR = (ZL * Zv * ZR) * (1.0 / (ZL * Zv * ZR)) ** w
+    sHG = s_lim * _z_nt(N_L) * LvR
+    hand = dict(N_L=N_L, Z_NT=_z_nt(N_L), Z_L=ZL, Z_v=Zv, Z_R=ZR, R_z10=Rz10, Z_W=1.0, Z_X=1.0, sigma_HG=sHG,
+                sigma_HP=sHG / S_min, S_H=sHG / s_H, Z_LvR=LvR, w=w)
+    assert {k: getattr(P, k) for k in hand} == pytest.approx(hand, rel=1e-13)
+    assert life.pitting_safety(s_H, s_lim, N_L, nu, v, Rz1, Rz2, rho).sigma_HP == pytest.approx(sHG, rel=1e-13)
+    # the limit at other lives lies on the same lines
+    for N in (1e3, 3e5, 5e7, 2e9):
+        assert P.limit_at(N) == pytest.approx(life.pitting_safety(s_H, s_lim, N, nu, v, Rz1, Rz2, rho).sigma_HG,
+                                              rel=1e-12)
+
+
+@pytest.mark.parametrize("N_L,idler", [(5e2, False), (1e5, True), (3e6, False), (1e9, True)])
+def test_root_fatigue_safety_every_field_by_hand(N_L, idler):
+    from propulsor.gears import iso6336_life as life
+    s_F, q_s, m, s_Flim, R_z, S_min, Y_S = 420.0, 2.2, 8.0, 425.0, 8.0, 1.4, 2.05
+    r = life.root_fatigue_safety(s_F, q_s, m, s_Flim, R_z, N_L, S_min, idler, Y_S=Y_S)
+    Yd = (1 + math.sqrt(0.003 * (1 + 2 * q_s) / 5)) / (1 + math.sqrt(0.003 * 1.2))
+    Yr = 1.674 - 0.529 * (R_z + 1) ** 0.1
+    Yx = 1.05 - 0.01 * m
+    Yd_st = (0.44 * Y_S + 0.12) / (0.44 * 2 + 0.12)
+    w = 1.0 if N_L <= 1e3 else 0.0 if N_L >= 3e6 else math.log(3e6 / N_L) / math.log(3e6 / 1e3)
+    dRX = (Yd * Yr * Yx) * (Yd_st / (Yd * Yr * Yx)) ** w
+    Y_M = 0.7 if idler else 1.0
+    sFG = s_Flim * 2.0 * _y_nt(N_L) * dRX * Y_M
+    hand = dict(N_L=N_L, Y_ST=2.0, Y_NT=_y_nt(N_L), Y_delta_relT=Yd, Y_R_relT=Yr, Y_X=Yx, Y_M=Y_M, sigma_FG=sFG,
+                sigma_FP=sFG / S_min, S_F=sFG / s_F, Y_delta_relT_static=Yd_st, Y_dRX=dRX, w=w)
+    assert {k: getattr(r, k) for k in hand} == pytest.approx(hand, rel=1e-13)
+    assert (_message(life.root_fatigue_safety, s_F, q_s, m, s_Flim, R_z, N_L, 0.0, idler, Y_S=Y_S)
+            == "S_Fmin = 0.0: must be > 0")
+    plain = life.root_fatigue_safety(s_F, q_s, m, s_Flim, R_z, N_L, Y_S=Y_S)
+    assert plain.sigma_FP == pytest.approx(plain.sigma_FG, rel=1e-14) and plain.Y_M == 1.0
+    for N in (1e2, 4e4, 3e6, 2e9):
+        assert r.limit_at(N) == pytest.approx(
+            life.root_fatigue_safety(s_F, q_s, m, s_Flim, R_z, N, S_min, idler, Y_S=Y_S).sigma_FG, rel=1e-12)
+
+
+# ============================================================================ gear_materials.py
+def test_material_catalogue_lookups_and_refusal():
+    from propulsor.gears.gear_materials import LIVES, material, materials
+    assert LIVES == ("iso6336_case", "iso6336_through", "static")
+    cat = materials()
+    assert material("steel_case_MQ") is cat["steel_case_MQ"]
+    names = ", ".join(cat)
+    assert _message(material, "wood") == f"gear_material = 'wood': is not in the gear material catalogue ({names})"
+    assert (_message(material, "wood", "sun_material")
+            == f"sun_material = 'wood': is not in the gear material catalogue ({names})")
+    assert names == "steel_case_MQ, steel_through_MQ, PLA, PETG, nylon"
+    st = cat["steel_case_MQ"]
+    assert (st.iso.E, st.iso.nu) == (206000.0, 0.3) and not st.static and cat["PLA"].static
+    assert (cat["PLA"].iso.E, cat["PLA"].iso.nu) == (3000.0, 0.36)
+    assert {m.life for m in cat.values()} == set(LIVES)
+
+
+def test_life_factors_of_each_material_line():
+    from propulsor.gears.gear_materials import material, y_nt_of, z_nt_of
+    case, through, pla = material("steel_case_MQ"), material("steel_through_MQ"), material("PLA")
+    for m in (case, through, pla):
+        assert z_nt_of(m, None) == 1.0 and y_nt_of(m, None) == 1.0
+    for N in (1e2, 1e5, 1e7, 1e9, 1e11):
+        assert z_nt_of(pla, N) == 1.0 and y_nt_of(pla, N) == 1.0
+        assert z_nt_of(case, N) == _z_nt(N) and z_nt_of(through, N) == _z_nt(N)
+        assert y_nt_of(case, N) == _y_nt(N)
+    # through-hardened steel, ISO 6336-3:2006 Table 3 (V): 2.5 to 1e4, (3e6/N)^0.159 to 3e6, (3e6/N)^0.02 to 1e10
+    k = math.log(2.5) / math.log(3e6 / 1e4)
+    assert round(k, 3) == 0.161
+    for N, Y in ((0.0, 2.5), (1e3, 2.5), (1e4, 2.5), (1.0001e4, (3e6 / 1.0001e4) ** k), (1e5, (3e6 / 1e5) ** k),
+                 (3e6, 1.0), (3.1e6, (3e6 / 3.1e6) ** 0.02), (1e10, (3e6 / 1e10) ** 0.02),
+                 (2e10, (3e6 / 1e10) ** 0.02), (1e12, (3e6 / 1e10) ** 0.02)):
+        assert y_nt_of(through, N) == pytest.approx(Y, rel=1e-14), N
+    assert y_nt_of(through, 1e4) == 2.5 and y_nt_of(through, 3e6) == pytest.approx(1.0, rel=1e-15)
+    # just past the corners: the next line's exponent, the floor beyond 1e10
+    assert y_nt_of(through, 3000000.5) == (3e6 / 3000000.5) ** 0.02
+    assert y_nt_of(through, 1e10 + 0.5) == (3e6 / 1e10) ** 0.02
+    assert y_nt_of(through, 10000.5) == (3e6 / 10000.5) ** k
