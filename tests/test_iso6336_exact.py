@@ -648,3 +648,245 @@ def test_life_factors_of_each_material_line():
     assert y_nt_of(through, 3000000.5) == (3e6 / 3000000.5) ** 0.02
     assert y_nt_of(through, 1e10 + 0.5) == (3e6 / 1e10) ** 0.02
     assert y_nt_of(through, 10000.5) == (3e6 / 10000.5) ** k
+
+
+# ============================================================================ iso6336_helical.py
+# (the transverse geometry of HelicalPair is read from its properties, which the TR 6336-30 example checks in
+# tests/test_iso6336_helical.py; every factor below is worked out here from ISO 6336-1/-2/-3:2006)
+def _hpair(beta_deg=8.0, z1=16, z2=20, m_n=4.0, x1=0.3, x2=0.2, alpha_n=A20):
+    from propulsor.gears import iso6336_helical as h
+    m_t = m_n / math.cos(math.radians(beta_deg))
+    return h.HelicalPair(m_n, z1, z2, x1, x2, math.radians(beta_deg), z1 * m_t + 2 * m_n * (1 + x1),
+                         z2 * m_t + 2 * m_n * (1 + x2), alpha_n)
+
+
+def _m1_m2(p):
+    ea = p.eps_alpha
+    r1, r2 = math.sqrt((p.d_a1 / p.d_b1) ** 2 - 1), math.sqrt((p.d_a2 / p.d_b2) ** 2 - 1)
+    t = math.tan(p.alpha_wt)
+    M1 = t / math.sqrt((r1 - 2 * math.pi / p.z1) * (r2 - (ea - 1) * 2 * math.pi / p.z2))
+    M2 = t / math.sqrt((r2 - 2 * math.pi / p.z2) * (r1 - (ea - 1) * 2 * math.pi / p.z1))
+    return M1, M2
+
+
+def test_helical_refusals_in_full():
+    from propulsor.gears import iso6336_helical as h
+    ok = dict(m_n=4.0, z1=16, z2=20, x1=0.3, x2=0.2, beta=0.1, d_a1=76.0, d_a2=92.0)
+    assert _message(h.HelicalPair, **{**ok, "m_n": 0.0}) == "m_n = 0.0: must be > 0 mm"
+    assert _message(h.HelicalPair, **{**ok, "z1": 0}) == "z1 = 0: must be > 0"
+    assert _message(h.HelicalPair, **{**ok, "z2": -3}) == "z2 = -3: must be > 0"
+    assert _message(h.HelicalPair, **{**ok, "beta": math.radians(45.0)}) == "beta = 45.0: 0 <= beta < 45 deg"
+    assert (_message(h.HelicalPair, **{**ok, "beta": math.radians(45.5)})
+            == f"beta = {math.degrees(math.radians(45.5))!r}: 0 <= beta < 45 deg")
+    assert (_message(h.HelicalPair, **{**ok, "beta": -0.01})
+            == f"beta = {math.degrees(-0.01)!r}: 0 <= beta < 45 deg")
+    assert h.HelicalPair(**{**ok, "beta": 0.0}).beta == 0.0
+    p = _hpair()
+    assert _message(h.pitting, p, 0.0, 100.0, 1.0, 1.0, 1.0, 1.0) == "b = 0.0: must be > 0 mm"
+    assert _message(h.tooth_root, p, 0.0, 100.0, 1.0, 1.0, 1.0, 1.0, 6) == "b = 0.0: must be > 0 mm"
+    assert (_message(h.k_v_method_b, 1.0, 16, 1.2, 200.0, 1.0, 13, 0.5)
+            == "accuracy_grade = 13: must be an ISO 1328 grade 3 ... 12")
+    assert _message(h.d_en, p, 3) == "gear = 3: must be 1 (pinion) or 2 (wheel)"
+    assert _message(h.d_en, p, 0) == "gear = 0: must be 1 (pinion) or 2 (wheel)"
+    assert _message(h.y_b, 0.0, 9.0) == "s_R = 0.0: must be > 0 mm"
+    assert _message(h.y_b, 4.5, 9.0) == "s_R = 4.5: rim thickness must exceed 0.5·h = 4.500 mm (ISO 6336-3 Y_B)"
+    assert _message(h.y_delta_rel_t, 2.0, 0.0) == "rho_prime = 0.0: must be > 0 mm"
+    for R_z in (0.0, 40.5, -1.0):
+        assert _message(h.y_r_rel_t, R_z) == f"R_z = {R_z!r}: root roughness must be within 0 < R_z <= 40 µm"
+    assert _message(h.y_x, 8.0, "soft") == "material = 'soft': must be surface_hardened or through_hardened"
+    assert _message(h.root_strength, 400.0, 2.0, 8.0, 0.0, 8.0) == "sigma_Flim = 0.0: must be > 0 MPa"
+    assert _message(h.root_strength, 400.0, 2.0, 8.0, 425.0, 8.0, S_Fmin=0.0) == "S_Fmin = 0.0: must be > 0"
+    for Y_M in (0.0, 1.01, -0.5):
+        assert (_message(h.root_strength, 400.0, 2.0, 8.0, 425.0, 8.0, Y_M=Y_M)
+                == f"Y_M = {Y_M!r}: mean stress factor must be within 0 < Y_M <= 1")
+
+
+def test_helical_root_factors_on_both_sides_of_their_limits():
+    from propulsor.gears import iso6336_helical as h
+    # Y_X, ISO 6336-3:2006: surface hardened 1 to 5 mm, 1.05 − 0.01·m_n to 25 mm, 0.8 beyond
+    for m, Y in ((1.0, 1.0), (5.0, 1.0), (5.5, 1.05 - 0.055), (24.9, 1.05 - 0.249), (25.0, 0.8), (25.5, 0.8),
+                 (40.0, 0.8)):
+        assert h.y_x(m) == pytest.approx(Y, rel=1e-14) and h.y_x(m, "surface_hardened") == h.y_x(m)
+    # through hardened 1 to 5 mm, 1.03 − 0.006·m_n to 30 mm, 0.85 beyond
+    for m, Y in ((2.0, 1.0), (5.0, 1.0), (6.0, 1.03 - 0.036), (29.9, 1.03 - 0.1794), (30.5, 0.85), (40.0, 0.85)):
+        assert h.y_x(m, "through_hardened") == pytest.approx(Y, rel=1e-14), m
+    assert h.y_x(30.0, "through_hardened") == 0.85          # the table's value, not 1.03 − 0.18 (0.8500000000000001)
+    # Y_RrelT: 1.120 below R_z = 1 µm, 1.674 − 0.529·(R_z + 1)^0.1 from 1 to 40 µm
+    assert h.y_r_rel_t(0.5) == 1.12
+    for R_z in (1.0, 1.5, 10.0, 40.0):
+        assert h.y_r_rel_t(R_z) == pytest.approx(1.674 - 0.529 * (R_z + 1) ** 0.1, rel=1e-14)
+    # Y_δrelT = (1 + √(ρ'·χ*))/(1 + √(ρ'·1.2)), χ* = (1 + 2·q_s)/5, ρ' = 0.003 mm (case hardened) by default
+    assert h.y_delta_rel_t(2.5) == pytest.approx(1.0, rel=1e-14)
+    assert h.y_delta_rel_t(1.8, 0.1005) == pytest.approx((1 + math.sqrt(0.1005 * 4.6 / 5)) / (1 + math.sqrt(0.1005 * 1.2)),
+                                                         rel=1e-14)
+    # Y_DT: 1 above grade 4 or at ε_αn <= 2.05, 2.366 − 0.666·ε_αn to 2.5, 0.7 above
+    assert h.y_dt(2.3, 5) == 1.0 and h.y_dt(2.05, 4) == 1.0 and h.y_dt(1.6, 4) == 1.0
+    assert h.y_dt(2.06, 4) == pytest.approx(2.366 - 0.666 * 2.06, rel=1e-14)
+    assert h.y_dt(2.5, 4) == pytest.approx(2.366 - 0.666 * 2.5, rel=1e-14)     # 0.701 at 2.5 itself
+    assert h.y_dt(2.6, 3) == 0.7
+    # Y_B of an external rim: 1 from s_R/h = 1.2, 1.6·ln(2.242·h/s_R) down to 0.5
+    assert h.y_b(None, 9.0) == 1.0 and h.y_b(12.0, 10.0) == 1.0 and h.y_b(30.0, 10.0) == 1.0
+    assert h.y_b(11.9, 10.0) == pytest.approx(1.6 * math.log(2.242 / 1.19), rel=1e-14)
+    assert h.y_b(8.0, 10.0) == pytest.approx(1.6 * math.log(2.242 / 0.8), rel=1e-14)
+    # K_Fβ = K_Hβ^N_F with b/h taken >= 3
+    for b, hh in ((20.0, 10.0), (30.0, 10.0), (35.0, 10.0), (80.0, 10.0)):
+        bh = max(b / hh, 3.0)
+        assert h.k_f_beta(1.3, b, hh) == pytest.approx(1.3 ** (bh * bh / (1 + bh + bh * bh)), rel=1e-14)
+    # root strength's defaults: Y_NT = 1, S_Fmin = 1, Y_ST = 2, Y_M = 1
+    r = h.root_strength(400.0, 2.2, 8.0, 425.0, 8.0)
+    Yd = (1 + math.sqrt(0.003 * 5.4 / 5)) / (1 + math.sqrt(0.0036))
+    sFG = 425.0 * 2.0 * Yd * (1.674 - 0.529 * 9.0 ** 0.1) * (1.05 - 0.08)
+    assert (r.sigma_FG, r.sigma_FP, r.S_F, r.Y_M) == pytest.approx((sFG, sFG, sFG / 400.0, 1.0), rel=1e-13)
+    r = h.root_strength(400.0, 2.2, 8.0, 425.0, 8.0, Y_NT=1.3, S_Fmin=1.5, Y_M=1.0)
+    assert (r.sigma_FG, r.sigma_FP) == pytest.approx((1.3 * sFG, 1.3 * sFG / 1.5), rel=1e-13)
+    # a nitrided, through-hardened root: ρ' = 0.1005 mm, Y_X = 1.03 − 0.006·m_n
+    r = h.root_strength(400.0, 2.2, 8.0, 425.0, 8.0, rho_prime=0.1005, material="through_hardened")
+    Yd_n = (1 + math.sqrt(0.1005 * 5.4 / 5)) / (1 + math.sqrt(0.1005 * 1.2))
+    assert (r.Y_delta_relT, r.Y_X) == pytest.approx((Yd_n, 1.03 - 0.048), rel=1e-14)
+    assert r.sigma_FG == pytest.approx(425.0 * 2.0 * Yd_n * (1.674 - 0.529 * 9.0 ** 0.1) * (1.03 - 0.048), rel=1e-13)
+
+
+def test_helical_contact_factors_by_hand():
+    from propulsor.gears import iso6336_helical as h
+    assert h.z_h(0.36, 0.41) == pytest.approx(math.sqrt(2 * math.cos(0.41) / (math.cos(0.36) ** 2 * math.sin(0.41))),
+                                             rel=1e-14)
+    assert h.z_eps(1.6) == pytest.approx(math.sqrt(2.4 / 3), rel=1e-14)
+    assert h.z_eps(1.6, 0.4) == pytest.approx(math.sqrt(2.4 / 3 * 0.6 + 0.4 / 1.6), rel=1e-14)
+    assert h.z_eps(1.6, 1.3) == pytest.approx(math.sqrt(1 / 1.6), rel=1e-14)
+    p = _hpair()
+    M1, M2 = _m1_m2(p)
+    assert M1 > 1 and M2 > 1
+    assert h.z_b_z_d(p, 0.0) == pytest.approx((M1, M2), rel=1e-13)
+    assert h.z_b_z_d(p, 0.4) == pytest.approx((M1 - 0.4 * (M1 - 1), M2 - 0.4 * (M2 - 1)), rel=1e-13)
+    assert h.z_b_z_d(p, 1.0) == (1.0, 1.0) and h.z_b_z_d(p, 1.7) == (1.0, 1.0)
+    # an M below 1 gives 1 (Z_D of the 40/60 pair, Z_B of the 60/40), also between ε_β = 0 and 1
+    for q, low in ((_hpair(z1=40, z2=60, x1=0.3, x2=0.3), 1), (_hpair(z1=60, z2=40, x1=0.3, x2=0.3), 0)):
+        M = _m1_m2(q)
+        assert M[low] < 1.0 < M[1 - low]
+        for eb in (0.0, 0.5):
+            want = [M[0] - eb * (M[0] - 1), M[1] - eb * (M[1] - 1)]
+            want[low] = 1.0
+            assert h.z_b_z_d(q, eb) == pytest.approx(tuple(want), rel=1e-13)
+            assert h.z_b_z_d(q, eb)[low] == 1.0
+
+
+def _k_v_helical(v, z1, u, Ft_b, K_A, grade, eps_beta):
+    K1_he = {3: 1.9, 4: 3.5, 5: 6.7, 6: 13.3, 7: 23.9, 8: 34.8, 9: 47.0, 10: 68.2, 11: 91.4, 12: 130.3}
+    load = max(K_A * Ft_b, 100.0)
+    f = v * z1 / 100.0 * math.sqrt(u * u / (1 + u * u))
+    sp = 1 + (K1_TABLE_8[grade] / load + 0.0193) * f
+    he = 1 + (K1_he[grade] / load + 0.0087) * f
+    return he if eps_beta >= 1 else sp - eps_beta * (sp - he)
+
+
+def test_helical_dynamic_factor_between_spur_and_helical_at_every_grade():
+    from propulsor.gears import iso6336_helical as h
+    for grade in range(3, 13):
+        for eps_beta in (0.0, 0.4, 1.0, 1.5):
+            for Ft_b in (40.0, 400.0):
+                assert h.k_v_method_b(3.0, 19, 2.2, Ft_b, 1.2, grade, eps_beta) == pytest.approx(
+                    _k_v_helical(3.0, 19, 2.2, Ft_b, 1.2, grade, eps_beta), rel=1e-13)
+
+
+def _k_alpha(ea, eb, c, f_pb, y_a, FtH_b, Z_eps):
+    eg = ea + eb
+    term = c * (f_pb - y_a) / FtH_b
+    K = eg / 2 * (0.9 + 0.4 * term) if eg <= 2 else 0.9 + 0.4 * math.sqrt(2 * (eg - 1) / eg) * term
+    return min(max(K, 1.0), eg / (ea * Z_eps ** 2)), min(max(K, 1.0), eg / (0.25 * ea + 0.75))
+
+
+@pytest.mark.parametrize("ea,eb,c,f_pb,y_a,FtH_b,Z", [
+    (1.6, 0.3, 20.0, 12.0, 0.8, 150.0, 0.9),     # ε_γ <= 2, K between its limits
+    (1.7, 0.8, 20.0, 12.0, 0.8, 220.0, 0.8),     # ε_γ > 2
+    (1.6, 0.3, 20.0, 40.0, 0.8, 150.0, 0.9),     # K above both limits (K_Hα's the lower)
+    (1.6, 0.3, 20.0, 2.0, 0.8, 900.0, 0.9),      # K below 1
+])
+def test_helical_transverse_load_factors_method_b(ea, eb, c, f_pb, y_a, FtH_b, Z):
+    from propulsor.gears import iso6336_helical as h
+    assert h.k_alpha_method_b(ea, eb, c, f_pb, y_a, FtH_b, Z) == pytest.approx(
+        _k_alpha(ea, eb, c, f_pb, y_a, FtH_b, Z), rel=1e-14)
+
+
+def test_helical_mesh_stiffness_with_its_factors_off_their_defaults():
+    from propulsor.gears import iso6336_helical as h
+    C = (0.04723, 0.15551, 0.25791, -0.00635, -0.11654, -0.00193, -0.24188, 0.00529, 0.00182)  # Table 12
+    p = _hpair(beta_deg=12.0, alpha_n=A25)
+    zn1, zn2, x1, x2 = p.z_n1, p.z_n2, 0.3, 0.2
+    q = (C[0] + C[1] / zn1 + C[2] / zn2 + C[3] * x1 + C[4] * x1 / zn1 + C[5] * x2 + C[6] * x2 / zn2
+         + C[7] * x1 ** 2 + C[8] * x2 ** 2)
+    C_B = (1 + 0.5 * (1.2 - 1.4)) * (1 - 0.02 * (20.0 - 25.0))
+    c1 = 1 / q * 0.7 * 0.9 * C_B * math.cos(math.radians(12.0))
+    c_ga = c1 * (0.75 * p.eps_alpha + 0.25)
+    s = h.mesh_stiffness(p, 1.4, C_R=0.9, C_M=0.7)
+    assert (s.c_th, s.c_single, s.c_gamma_alpha, s.c_gamma_beta) == pytest.approx((1 / q, c1, c_ga, 0.85 * c_ga),
+                                                                                  rel=1e-13)
+
+
+def test_helical_pitting_every_field_by_hand():
+    from propulsor.gears import iso6336_helical as h
+    from propulsor.gears.iso6336 import Material
+    p = _hpair()
+    b, T1 = 40.0, 250.0
+    soft = Material(100000.0, 0.25)
+    s = h.pitting(p, b, T1, 1.25, 1.1, 1.2, 1.05, soft)
+    eb = b * math.sin(p.beta) / (math.pi * 4.0)
+    ea = p.eps_alpha
+    Z_H = math.sqrt(2 * math.cos(p.beta_b) * math.cos(p.alpha_wt) / (math.cos(p.alpha_t) ** 2 * math.sin(p.alpha_wt)))
+    Z_E = math.sqrt(1 / (math.pi * ((1 - 0.25 ** 2) / 100000.0 + (1 - 0.09) / 206000.0)))
+    Z_eps = math.sqrt((4 - ea) / 3 * (1 - eb) + eb / ea)
+    Z_beta = 1 / math.sqrt(math.cos(p.beta))
+    M1, M2 = _m1_m2(p)
+    Z_B, Z_D = M1 - eb * (M1 - 1), M2 - eb * (M2 - 1)
+    F_t = 2000 * T1 / p.d1
+    u = 20 / 16
+    s0 = Z_H * Z_E * Z_eps * Z_beta * math.sqrt(F_t / (p.d1 * b) * (u + 1) / u)
+    k = math.sqrt(1.25 * 1.1 * 1.2 * 1.05)
+    hand = dict(F_t=F_t, eps_alpha=ea, eps_beta=eb, Z_H=Z_H, Z_E=Z_E, Z_eps=Z_eps, Z_beta=Z_beta, Z_B=Z_B, Z_D=Z_D,
+                sigma_H0=s0, sigma_H1=Z_B * s0 * k, sigma_H2=Z_D * s0 * k)
+    assert {k_: getattr(s, k_) for k_ in hand} == pytest.approx(hand, rel=1e-13)
+    assert h.pitting(p, b, T1, 1.0, 1.0, 1.0, 1.0).Z_E == pytest.approx(Z_E_STEEL, rel=1e-14)
+    assert h.pitting(p, b, T1, 1.0, 1.0, 1.0, 1.0, m2=soft).Z_E == pytest.approx(Z_E, rel=1e-14)   # the wheel soft
+
+
+def test_helical_tooth_root_every_field_by_hand():
+    """Grade 4 (Y_DT looked at), rims on the pinion only (Y_B from h = h_a + h_f), a 1.4 dedendum rack."""
+    from propulsor.gears import iso6336_helical as h
+    p = _hpair(beta_deg=10.0)
+    b, T1, K_A, K_v, K_Fb, K_Fa = 40.0, 250.0, 1.25, 1.1, 1.15, 1.05
+    h_fP_star, rho_star, s_pr = 1.4, 0.3, 0.02
+    t = h.tooth_root(p, b, T1, K_A, K_v, K_Fb, K_Fa, 4, h_fP_star, rho_star, s_pr, s_R=(9.0, None))
+    eb = b * math.sin(p.beta) / (math.pi * 4.0)
+    eps_an = p.eps_alpha / math.cos(p.beta_b) ** 2
+    Y_beta = 1 - min(eb, 1.0) * 10.0 / 120.0
+    F_t = 2000 * T1 / p.d1
+    K = K_A * K_v * K_Fb * K_Fa
+    assert (t.F_t, t.eps_alpha_n, t.Y_beta, t.Y_DT) == pytest.approx((F_t, eps_an, Y_beta, 1.0), rel=1e-13)
+    for i, (g, z, z_n, x, d, d_a, s_R) in enumerate(((t.gear1, 16, p.z_n1, 0.3, p.d1, p.d_a1, 9.0),
+                                                     (t.gear2, 20, p.z_n2, 0.2, p.d2, p.d_a2, None)), start=1):
+        d_n = 4.0 * z_n
+        r_bn, r_an = d_n * math.cos(A20) / 2, (d_n + d_a - d) / 2
+        gg = math.sqrt(r_an ** 2 - r_bn ** 2) - math.pi * d * math.cos(p.beta) * math.cos(A20) / z * (eps_an - 1)
+        den = 2 * math.sqrt(gg ** 2 + r_bn ** 2)
+        assert h.d_en(p, i) == pytest.approx(den, rel=1e-13)
+        form = form_by_hand(z_n, 4.0, x, den, A20, h_fP_star, rho_star, s_pr)
+        depth = (d_a - d) / 2 + (h_fP_star - x) * 4.0
+        Y_B = 1.0 if s_R is None or s_R / depth >= 1.2 else 1.6 * math.log(2.242 * depth / s_R)
+        s0 = F_t / (b * 4.0) * form["Y_F"] * form["Y_S"] * Y_beta * Y_B
+        got = (g.z_n, g.d_en, g.q_s, g.Y_B, g.sigma_F0, g.sigma_F)
+        assert got == pytest.approx((z_n, den, form["s_Fn"] / (2 * form["rho_F"]), Y_B, s0, s0 * K), rel=1e-10)
+        assert _fields(g.form) == pytest.approx(form, rel=1e-10, abs=1e-13)
+    assert t.gear1.Y_B > 1.0 and t.gear2.Y_B == 1.0
+
+
+def test_helical_tooth_root_of_a_deep_tooth_takes_y_dt():
+    """ε_αn > 2.05 at grade 4: Y_DT = 2.366 − 0.666·ε_αn divides nothing, it multiplies σ_F0."""
+    from propulsor.gears import iso6336_helical as h
+    m_n, z1, z2, beta = 2.0, 40, 60, math.radians(10.0)
+    m_t = m_n / math.cos(beta)
+    p = h.HelicalPair(m_n, z1, z2, 0.0, 0.0, beta, z1 * m_t + 2 * m_n * 1.35, z2 * m_t + 2 * m_n * 1.35)
+    eps_an = p.eps_alpha / math.cos(p.beta_b) ** 2
+    assert 2.05 < eps_an <= 2.5
+    t4 = h.tooth_root(p, 20.0, 50.0, 1.0, 1.0, 1.0, 1.0, 4, 1.6, 0.2)
+    t5 = h.tooth_root(p, 20.0, 50.0, 1.0, 1.0, 1.0, 1.0, 5, 1.6, 0.2)
+    assert t4.Y_DT == pytest.approx(2.366 - 0.666 * eps_an, rel=1e-14) and t5.Y_DT == 1.0
+    assert t4.gear1.sigma_F0 == pytest.approx(t5.gear1.sigma_F0 * t4.Y_DT, rel=1e-13)
