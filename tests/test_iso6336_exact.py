@@ -890,3 +890,192 @@ def test_helical_tooth_root_of_a_deep_tooth_takes_y_dt():
     t5 = h.tooth_root(p, 20.0, 50.0, 1.0, 1.0, 1.0, 1.0, 5, 1.6, 0.2)
     assert t4.Y_DT == pytest.approx(2.366 - 0.666 * eps_an, rel=1e-14) and t5.Y_DT == 1.0
     assert t4.gear1.sigma_F0 == pytest.approx(t5.gear1.sigma_F0 * t4.Y_DT, rel=1e-13)
+
+
+# ============================================================================ planetary.py
+def _inv_inverse(y):
+    return _bisect(lambda a: math.tan(a) - a - y, 0.0, 1.5)
+
+
+def _conditions_by_hand(ps):
+    """Every condition of the set (seed 004 eq. 30–35 and the gear checks), the set's own numbers worked out here;
+    the single gears' and meshes' quantities (tip thickness, x_min, interference) read from them."""
+    from propulsor.policy import (GEAR_CONTACT_RATIO_MIN as EPS_MIN, GEAR_INTERFERENCE_TOL_MM as INT_TOL,
+                                  GEAR_TIP_THICKNESS_MIN_MODULE as S_MIN, PLANET_TIP_CLEARANCE_MIN_MODULE as GAP_MIN,
+                                  PLANETARY_COAXIALITY_TOL_MM as COAX)
+    m, z1, z2, z3, n = ps.m, ps.z_sun, ps.z_planet, ps.z_ring, ps.n_planets
+    sp, pr = ps.mesh_sun_planet, ps.mesh_planet_ring
+    sun, planet, ring = sp.gear1, sp.gear2, pr.gear2
+    d_a1, d_a2, d_a3 = sp.d_a1, min(sp.d_a2, pr.d_a1), pr.d_a2
+    out = []
+    i = 1 + z3 / z1
+    if ps.ratio_target is None:
+        out.append(("willis_ratio", True, i, i, "-", f"i_1H = 1 + z3/z1 = {i:.6g}"))
+    else:
+        dev = abs(i - ps.ratio_target)
+        out.append(("willis_ratio", dev <= ps.ratio_tol, dev, ps.ratio_tol, "-",
+                    f"|i_1H − i_target| = |{i:.6g} − {ps.ratio_target:.6g}| must be <= {ps.ratio_tol:g}"))
+    mis = pr.a_w - sp.a_w
+    # x_ring for coaxiality (GOST 19274): x3 = x2 + (z3 − z2)(inv α_w − inv α)/(2 tan α), cos α_w = a·cos α/a_w
+    a = ps.rack.alpha
+    aw = math.acos(m * (z3 - z2) / 2 * math.cos(a) / sp.a_w)
+    x3 = ps.x_planet + (z3 - z2) * (_inv(aw) - _inv(a)) / (2 * math.tan(a))
+    out.append(("coaxiality", abs(mis) <= COAX, abs(mis), COAX, "mm",
+                f"a_w sun–planet {sp.a_w:.4f} mm vs planet–ring {pr.a_w:.4f} mm; x_ring for coaxiality = {x3:.5f}"))
+    gap = math.inf if n == 1 else 2 * sp.a_w * math.sin(math.pi / n) - d_a2
+    out.append(("neighbour", gap >= GAP_MIN * m, 1e300 if n == 1 else gap, GAP_MIN * m, "mm",
+                f"2·a_w·sin(π/{n}) − d_a,planet = {gap:.4f} mm must be >= {GAP_MIN * m:.4f} mm"))
+    q = (z1 + z3) / n
+    out.append(("assembly", (z1 + z3) % n == 0, q, round(q), "-", f"(z1 + z3)/k = {z1 + z3}/{n} = {q:.6g} must be whole"))
+    p_b = math.pi * m * math.cos(a)
+
+    def rho(d, g):
+        return 0.5 * math.sqrt(d * d - g.d_b ** 2)
+
+    for name, mesh, da, db, sign in (("contact_ratio_sun_planet", sp, d_a1, d_a2, 1),
+                                     ("contact_ratio_planet_ring", pr, d_a2, d_a3, -1)):
+        if db < mesh.gear2.d_b:
+            with pytest.raises(InputError) as e:
+                mesh.epsilon_alpha(da, db)
+            out.append((name, False, 0.0, EPS_MIN, "-", f"ε_α undefined: {e.value}"))
+            continue
+        eps = (rho(da, mesh.gear1) + sign * (rho(db, mesh.gear2) - mesh.a_w * math.sin(mesh.alpha_w))) / p_b
+        out.append((name, eps >= EPS_MIN, eps, EPS_MIN, "-", f"ε_α = {eps:.4f} must be >= {EPS_MIN}"))
+    for name, g in (("undercut_sun", sun), ("undercut_planet", planet)):
+        out.append((name, g.x >= g.x_min, g.x, g.x_min, "-", f"x = {g.x:.4f} must be >= x_min = {g.x_min:.4f}"))
+    s_min = S_MIN * m
+    for name, g, da in (("tip_thickness_sun", sun, d_a1), ("tip_thickness_planet", planet, d_a2),
+                        ("tip_thickness_ring", ring, d_a3)):
+        if da < g.d_b:
+            out.append((name, False, -1.0, s_min, "mm", f"tip d_a = {da:.4f} mm inside the base circle"))
+            continue
+        s_a = g.tip_thickness(da)
+        out.append((name, s_a >= s_min, s_a, s_min, "mm", f"s_na = {s_a:.4f} mm must be >= {s_min:.4f} mm"))
+    for mesh, tag, tips, who in ((sp, "sun_planet", (d_a1, d_a2), ("pinion", "wheel")),
+                                 (pr, "planet_ring", (d_a2, d_a3), ("planet", "ring"))):
+        for w, mar in zip(who, mesh.involute_interference_margins(*tips)):
+            out.append((f"involute_interference_{tag}_{w}", mar >= 0, mar, 0.0, "mm",
+                        f"active profile margin (ρ_p − ρ_l) = {mar:.4f} mm must be >= 0"))
+    depth = pr.tip_interference_depth(d_a2, d_a3)
+    out.append(("tip_interference_planet_ring", depth <= INT_TOL, depth, INT_TOL, "mm",
+                f"deepest tip-corner entry {depth:.3e} mm must be <= {INT_TOL:g} mm"))
+    # tip-to-root clearances along the line of centres: external a_w − r_a − r_f, internal r_a3 − a_w − r_f2 and
+    # r_f3 − a_w − r_a2
+    c_sp = min(sp.a_w - d_a2 / 2 - sun.d_f / 2, sp.a_w - d_a1 / 2 - planet.d_f / 2)
+    c_pr = min(d_a3 / 2 - pr.a_w - planet.d_f / 2, ring.d_f / 2 - pr.a_w - d_a2 / 2)
+    for tag, c in (("sun_planet", c_sp), ("planet_ring", c_pr)):
+        out.append((f"root_clearance_{tag}", c > 0, c, 0.0, "mm", f"least tip-to-root clearance {c:.4f} mm must be > 0"))
+    if ps.z0 is not None and d_a3 >= ring.d_b:
+        marg = rho(d_a3, ring) - ring.a_w0 * math.sin(ring.alpha_w0)
+        out.append(("ring_tip_cut_by_shaper", marg >= 0, marg, 0.0, "mm",
+                    f"ring tip meets the shaper on its involute: margin {marg:.4f} mm must be >= 0"))
+    return out
+
+
+def _check_conditions(ps):
+    got = [tuple(c) for c in ps.conditions()]
+    hand = _conditions_by_hand(ps)
+    assert [g[0] for g in got] == [h_[0] for h_ in hand]
+    for g, h_ in zip(got, hand):
+        assert (g[0], g[1], g[4], g[5]) == (h_[0], h_[1], h_[4], h_[5])
+        assert type(g[1]) is bool and type(g[2]) is float and type(g[3]) is float
+        assert g[2:4] == pytest.approx(h_[2:4], rel=1e-9, abs=1e-12), g[0]
+    assert ps.failures() == [c for c in ps.conditions() if not c.passed]
+    assert ps.valid == (not any(not h_[1] for h_ in hand))
+    return got
+
+
+def test_planetary_conditions_of_the_thesis_set_and_the_corrected_one():
+    got = _check_conditions(PlanetarySet())
+    assert [c[0] for c in got if not c[1]] == ["coaxiality"]
+    ps = PlanetarySet(n_planets=3).with_coaxial_ring()
+    got = _check_conditions(ps)
+    assert all(c[1] for c in got) and ps.valid
+
+
+def test_planetary_conditions_with_a_ratio_target_on_both_sides_of_its_tolerance():
+    base = PlanetarySet(n_planets=3).with_coaxial_ring()
+    dev = abs(base.ratio - 4.4)
+    for tol, ok in ((dev, True), (0.05, False), (0.2, True)):
+        ps = PlanetarySet(n_planets=3, x_ring=base.x_ring, ratio_target=4.4, ratio_tol=tol)
+        got = _check_conditions(ps)
+        assert got[0][:2] == ("willis_ratio", ok)
+    assert PlanetarySet(ratio_target=4.5).ratio_tol == 0.0 and _check_conditions(PlanetarySet(ratio_target=4.5))[0][1]
+
+
+def test_planetary_conditions_of_one_planet_and_of_a_ring_tip_inside_its_base_circle():
+    one = PlanetarySet(n_planets=1)
+    got = _check_conditions(one)
+    assert got[2][:3] == ("neighbour", True, 1e300) and "= inf mm" in got[2][5]
+    # a 10° rack: the ring's tip inside its base circle (no ε_α, no tip thickness, no shaper margin)
+    r10 = BasicRack(alpha=math.radians(10.0), rho_f_star=0.2)
+    low = PlanetarySet(rack=r10, x_ring=0.5)
+    assert low.d_a_ring < low.ring.d_b
+    got = _check_conditions(low)
+    names = [c[0] for c in got]
+    assert "contact_ratio_sun_planet" in names and "contact_ratio_planet_ring" in names
+    assert "tip_thickness_ring" in names and "ring_tip_cut_by_shaper" not in names
+    # no shaper: no shaper margin either
+    assert "ring_tip_cut_by_shaper" not in [c[0] for c in _check_conditions(PlanetarySet(z0=None, x_ring=1.5))]
+
+
+def test_planetary_undercut_limit_is_met_at_x_min_itself():
+    from propulsor.gears.involute import SpurGear
+    x_min = SpurGear(16, 10.0, 0.5).x_min
+    ps = PlanetarySet(x_sun=x_min, n_planets=3)
+    got = _check_conditions(ps)
+    assert ("undercut_sun", True) == next(c[:2] for c in got if c[0] == "undercut_sun")
+
+
+def test_planetary_ring_shift_for_coaxiality_of_a_25_degree_rack():
+    rack = BasicRack(alpha=A25, rho_f_star=0.3)
+    ps = PlanetarySet(rack=rack, x_sun=0.3, x_planet=0.3, x_ring=0.8, n_planets=3)
+    aw = math.acos(10.0 * 36 / 2 * math.cos(A25) / ps.a_w)
+    x3 = 0.3 + 36 * (_inv(aw) - _inv(A25)) / (2 * math.tan(A25))
+    assert ps.ring_shift_for_coaxiality() == pytest.approx(x3, rel=1e-10)
+    assert abs(ps.with_coaxial_ring().coaxiality_mismatch) < 1e-9
+    _check_conditions(ps)
+
+
+def test_planetary_set_refusals_in_full():
+    assert _message(PlanetarySet, m=0.0) == "m = 0.0: must be > 0 mm"
+    assert _message(PlanetarySet, n_planets=2.5) == "n_planets = 2.5: must be a whole number >= 1"
+    assert _message(PlanetarySet, n_planets=0) == "n_planets = 0: must be a whole number >= 1"
+    for name in ("b_sun", "b_planet", "b_ring"):
+        assert _message(PlanetarySet, **{name: 0.0}) == f"{name} = 0.0: must be > 0 mm"
+    assert _message(PlanetarySet, ratio_target=0.0) == "ratio_target = 0.0: must be > 0"
+    assert _message(PlanetarySet, ratio_target=4.5, ratio_tol=math.nan) == "ratio_tol = nan: must be a finite number"
+    assert _message(PlanetarySet, ratio_target=4.5, ratio_tol=-0.1) == "ratio_tol = -0.1: must be >= 0"
+    assert (_message(PlanetarySet, z_sun=30, z_planet=10, z_ring=30)
+            == "z_ring = 30: must exceed z_sun = 30 and z_planet = 10")
+    assert (_message(PlanetarySet, z_sun=16, z_planet=30, z_ring=30)
+            == "z_ring = 30: must exceed z_sun = 16 and z_planet = 30")
+    ps = PlanetarySet(n_planets=3.0)
+    assert type(ps.n_planets) is int and ps.n_planets == 3
+
+
+def test_planetary_root_clearances_each_tip_against_its_mates_root():
+    """Along the line of centres: external a_w − r_a2 − r_f1 and a_w − r_a1 − r_f2; internal (ring) r_a3 − a_w − r_f2
+    and r_f3 − a_w − r_a2 (ISO 53: c*·m = 2.5 mm at the reference profile)."""
+    ps = PlanetarySet(x_ring=1.5, n_planets=3)
+    sp, pr = ps.mesh_sun_planet, ps.mesh_planet_ring
+    d_a1, d_a2, d_a3 = sp.d_a1, min(sp.d_a2, pr.d_a1), pr.d_a2
+    assert ps._root_clearances(sp) == pytest.approx(
+        (sp.a_w - d_a2 / 2 - ps.sun.d_f / 2, sp.a_w - d_a1 / 2 - ps.planet.d_f / 2), rel=1e-13)
+    assert ps._root_clearances(pr) == pytest.approx(
+        (d_a3 / 2 - pr.a_w - ps.planet.d_f / 2, ps.ring.d_f / 2 - pr.a_w - d_a2 / 2), rel=1e-13)
+
+
+def test_planetary_limits_at_small_margins():
+    """A rack without bottom clearance (c* = 0): the sun–planet tips touch the roots, clearance 0.0, which fails
+    (it must be > 0); c* = 0.05 and 0.1: clearances of 0.5 and 1 mm and an involute margin of 0.11 mm pass; a shaper
+    of x0 = −1.2 cuts the ring's tip on its involute by 0.05 mm."""
+    touching = PlanetarySet(rack=BasicRack(c_star=0.0, rho_f_star=0.0), x_ring=1.5, n_planets=3)
+    got = {c[0]: c for c in _check_conditions(touching)}
+    assert got["root_clearance_sun_planet"][1:3] == (False, 0.0)
+    for c_star in (0.05, 0.1):
+        got = {c[0]: c for c in _check_conditions(PlanetarySet(rack=BasicRack(c_star=c_star), x_ring=1.5))}
+        assert got["root_clearance_sun_planet"][1:3] == (True, pytest.approx(10.0 * c_star))
+    assert 0 < got["involute_interference_planet_ring_planet"][2] < 1 and got["involute_interference_planet_ring_planet"][1]
+    got = {c[0]: c for c in _check_conditions(PlanetarySet(x_ring=1.5, x0=-1.2, z0=20))}
+    assert 0 < got["ring_tip_cut_by_shaper"][2] < 0.1 and got["ring_tip_cut_by_shaper"][1]
