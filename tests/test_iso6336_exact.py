@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 
 from propulsor.errors import InputError
@@ -1079,3 +1080,42 @@ def test_planetary_limits_at_small_margins():
     assert 0 < got["involute_interference_planet_ring_planet"][2] < 1 and got["involute_interference_planet_ring_planet"][1]
     got = {c[0]: c for c in _check_conditions(PlanetarySet(x_ring=1.5, x0=-1.2, z0=20))}
     assert 0 < got["ring_tip_cut_by_shaper"][2] < 0.1 and got["ring_tip_cut_by_shaper"][1]
+
+
+# ============================================================================ planetary_kinematics.py
+def test_planetary_kinematics_positions_and_angles_by_hand():
+    """Seed 004 eq. 31–32 (Willis, ring fixed): planet k sits at the carrier angle ψ + 2πk/n on the circle a_w and
+    turns by (1 − z3/z2)·(ψ + 2πk/n) + π − π/z2 (a space to the sun at ψ = 0); the sun turns by (1 + z3/z1)·ψ."""
+    from propulsor.gears.planetary_kinematics import PlanetaryKinematics
+    k = PlanetaryKinematics(16, 20, 56, 3, 188.643)
+    assert k.planet_slot_angle(2) == pytest.approx(4 * math.pi / 3, rel=1e-15)
+    psi = np.array([0.0, 0.3, 1.1])
+    for j in range(3):
+        a = psi + 2 * math.pi * j / 3
+        assert k.planet_centre(psi, j) == pytest.approx(np.stack([188.643 * np.cos(a), 188.643 * np.sin(a)], axis=1),
+                                                        rel=1e-14, abs=1e-12)
+        assert k.planet_angle(psi, j) == pytest.approx(a * (1 - 56 / 20) + math.pi - math.pi / 20, rel=1e-14)
+    assert k.planet_angle(0.0, 0) == pytest.approx(math.pi - math.pi / 20, rel=1e-15)
+    assert k.sun_angle([0, 1, 2]) == pytest.approx([0.0, 4.5, 9.0], rel=1e-15)
+    # shapes: a scalar ψ gives one point, a grid of ψ a grid of points (x, y last)
+    assert k.planet_centre(0.25, 1).shape == (2,)
+    assert k.planet_centre(0.25, 1) == pytest.approx([188.643 * math.cos(0.25 + 2 * math.pi / 3),
+                                                       188.643 * math.sin(0.25 + 2 * math.pi / 3)], rel=1e-14)
+    grid = np.linspace(0.0, 1.0, 6).reshape(2, 3)
+    c = k.planet_centre(grid, 0)
+    assert c.shape == (2, 3, 2) and c[1, 2] == pytest.approx([188.643 * math.cos(1.0), 188.643 * math.sin(1.0)],
+                                                             rel=1e-14)
+    # the ring turned half a pitch for an odd planet
+    assert k.ring_rotation == 0.0 and PlanetaryKinematics(16, 19, 56, 3, 180.0).ring_rotation == math.pi / 56
+
+
+@pytest.mark.parametrize("n", [5, 7])
+def test_assembly_phase_error_is_the_suns_fraction_of_a_pitch(n):
+    """Planet k needs the sun turned (1 + z3/z1)·(2πk/n) = (z1 + z3)·k/n sun pitches: the error is its distance to
+    the nearest whole number (72/5 = 14.4: 0.4 for k = 1)."""
+    from propulsor.gears.planetary_kinematics import PlanetaryKinematics
+    k = PlanetaryKinematics(16, 20, 56, n, 188.0)
+    for j in range(n):
+        p = 72 * j / n
+        assert k.assembly_phase_error(j) == pytest.approx(p - round(p), abs=1e-12)
+    assert abs(k.assembly_phase_error(1)) > 0.1
