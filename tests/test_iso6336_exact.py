@@ -195,7 +195,7 @@ def _face_by_hand(F_m, b, d1, grade, h, c_gamma_alpha=20.0, f_sh=0.0):
     K = 1.0 + c_gb * F_by / (2.0 * F_m / b)
     if K > 2.0:
         K = math.sqrt(2.0 * c_gb * F_by / (F_m / b))
-    bh = b / h
+    bh = max(b / h, 3.0)                                   # ISO 6336-1:2006 eq. 61–62: b/h taken >= 3
     N_F = bh ** 2 / (1 + bh + bh ** 2)
     return dict(f_sh=f_sh, f_ma=f_ma, F_betax=F_bx, y_beta=y_b, F_betay=F_by, c_gamma_beta=c_gb, F_m_b=F_m / b,
                 K_Hbeta=K, h=h, N_F=N_F, K_Fbeta=K ** N_F)
@@ -205,6 +205,7 @@ def _face_by_hand(F_m, b, d1, grade, h, c_gamma_alpha=20.0, f_sh=0.0):
     (100000.0, 75.0, 160.0, 6, 22.5, 20.0, None),     # f_sh left out: 0
     (60000.0, 40.0, 90.0, 7, 11.0, 18.0, 4.0),
     (3000.0, 75.0, 160.0, 8, 22.5, 20.0, 50.0),       # y_β at its 6 µm, the contact not spanning the face
+    (40000.0, 30.0, 90.0, 6, 15.0, 20.0, 2.0),        # a narrow face, b/h = 2: N_F of b/h = 3
 ])
 def test_face_load_method_c_every_step(F_m, b, d1, grade, h, c, f_sh):
     from propulsor.gears.iso6336 import face_load_method_c
@@ -1119,3 +1120,17 @@ def test_assembly_phase_error_is_the_suns_fraction_of_a_pitch(n):
         p = 72 * j / n
         assert k.assembly_phase_error(j) == pytest.approx(p - round(p), abs=1e-12)
     assert abs(k.assembly_phase_error(1)) > 0.1
+
+
+def test_face_load_factor_of_a_narrow_face_takes_b_over_h_as_3():
+    """ISO 6336-1:2006 eq. 61–62: N_F = (b/h)²/(1 + b/h + (b/h)²) with b/h < 3 taken as 3 (the helical module's
+    k_f_beta does so).  b = 30 mm on h = 15 mm: N_F = 9/13 = 0.692, not 4/7 = 0.571 (an unconservative K_Fβ, 1.162
+    instead of 1.199 at K_Hβ = 1.3).  Bug found by the mutation run of issue 36: the spur module took b/h as it came."""
+    from propulsor.gears import iso6336_helical as h
+    from propulsor.gears.iso6336 import face_load_method_c
+    f = face_load_method_c(40000.0, 30.0, 90.0, 6, 15.0)
+    assert f.N_F == pytest.approx(9 / 13, rel=1e-14)
+    assert f.K_Fbeta == pytest.approx(f.K_Hbeta ** (9 / 13), rel=1e-14)
+    assert f.K_Fbeta == pytest.approx(h.k_f_beta(f.K_Hbeta, 30.0, 15.0), rel=1e-14)
+    wide = face_load_method_c(40000.0, 45.0, 90.0, 6, 15.0)                 # b/h = 3 itself: the same N_F
+    assert wide.N_F == pytest.approx(9 / 13, rel=1e-14)
