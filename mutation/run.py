@@ -48,6 +48,7 @@ class Target:
     mutate: list[str]
     tests: list[str]
     deselect: list[str] = field(default_factory=list)
+    exclude: list[str] = field(default_factory=list)   # module files (globs) `mutate` matches that another target has
 
     def modules(self) -> list[str]:
         """The module files (relative to the project) this target mutates."""
@@ -55,6 +56,8 @@ class Target:
         for pattern in self.mutate:
             for p in sorted(ROOT.glob(pattern)):
                 rel = p.relative_to(ROOT).as_posix()
+                if any(fnmatch.fnmatch(rel, x) for x in self.exclude):
+                    continue
                 if p.suffix == ".py" and p.name != "__init__.py" and rel not in found:
                     found.append(rel)
         return found
@@ -71,8 +74,8 @@ class Equivalent:
 
 def load_targets() -> list[Target]:
     data = tomllib.loads(TARGETS.read_text("utf-8"))
-    return [Target(t["name"], list(t["mutate"]), list(t["tests"]), list(t.get("deselect", [])))
-            for t in data["target"]]
+    return [Target(t["name"], list(t["mutate"]), list(t["tests"]), list(t.get("deselect", [])),
+                   list(t.get("exclude", []))) for t in data["target"]]
 
 
 def load_equivalents() -> list[Equivalent]:

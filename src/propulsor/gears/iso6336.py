@@ -36,7 +36,8 @@ Load factors (ISO 6336-1:2006):
           the term of a pinion whose shaft bending is nil, as for the floating sun; n the meshes whose torque the
           pinion's body carries — a sun meshing with n planets twists under all n; 0 for a pinion that passes
           no torque through its body, as a planet on its pin)
-    K_Fβ = K_Hβ^N_F,  N_F = (b/h)² / (1 + b/h + (b/h)²),  h = (d_a1 − d_f1)/2
+    K_Fβ = K_Hβ^N_F,  N_F = (b/h)² / (1 + b/h + (b/h)²),  h = (d_a1 − d_f1)/2, b/h taken >= 3 (ISO 6336-1:2006
+          eq. 61–62, as in :func:`propulsor.gears.iso6336_helical.k_f_beta`)
     K_Hα = K_Fα by Table 9 (surface-hardened spur gears, F_t·K_A/b >= 100 N/mm)
 
 Tooth root by method B of ISO 6336-3:2006 beside method C: the same Y_F, Y_S construction with the load
@@ -149,7 +150,7 @@ def tooth_form_factor(z: int, m: float, x: float, d_en: float, alpha: float = ma
             theta = new
             break
         theta = new
-    else:  # pragma: no cover - the fixed point converges for every generable tooth
+    else:  # z = 1, 2 (the fixed point repels) and a few teeth of extreme racks (35°, h_a* 0.8, z <= 7, x <= -1)
         raise InputError("z", z, "30° tangent iteration of ISO 6336-3 did not converge")
     s_Fn = m * (z * math.sin(math.pi / 3 - theta) + math.sqrt(3.0) * (G / math.cos(theta) - rho_fP_star))
     rho_F = m * (rho_fP_star + 2.0 * G * G / (math.cos(theta) * (z * math.cos(theta) ** 2 - 2.0 * G)))
@@ -221,7 +222,7 @@ def face_load_method_c(F_m: float, b: float, d1: float, grade: int, h: float, c_
     K_Hb = 1.0 + c_gb * F_by / (2.0 * F_m / b)
     if K_Hb > 2.0:  # the contact does not span the face
         K_Hb = math.sqrt(2.0 * c_gb * F_by / (F_m / b))
-    bh = b / h
+    bh = max(b / h, 3.0)   # ISO 6336-1: b/h < 3 is taken as 3
     N_F = bh * bh / (1.0 + bh + bh * bh)
     return FaceLoad(f_sh, f_ma, F_bx, y_b, F_by, c_gb, F_m / b, K_Hb, h, N_F, K_Hb ** N_F)
 
