@@ -248,7 +248,8 @@ def _external_stress_by_hand(pair, d_a1, d_a2, b, T1, v, K_A, grade, a_w, E_sn, 
     K_v = _k_v(v, g1.z, u, F_t / b, K_A, grade)
     F_m = F_t * K_A * K_v
     f_sh = 0.0 if torsion is None else 0.023 * (torsion * F_m / b) * (b / d1) ** 2
-    face = _face_by_hand(F_m, b, d1, grade, (d_a1 - g1.d_f) / 2, f_sh=f_sh)
+    # ISO 6336-1: b/h the smaller of b/h1 and b/h2 (the deeper of the two teeth)
+    face = _face_by_hand(F_m, b, d1, grade, max((d_a1 - g1.d_f) / 2, (d_a2 - pair.gear2.d_f) / 2), f_sh=f_sh)
     K_Ha = KHA_TABLE_9[grade]
     Z_H = math.sqrt(2 * math.cos(aw) / (math.cos(alpha) ** 2 * math.sin(aw)))
     Z_eps = math.sqrt((4 - eps) / 3)
@@ -338,7 +339,7 @@ def test_internal_mesh_stress_every_field_by_hand(given_a_w):
     d1 = 90.0
     F_t = 2000.0 * T1 / d1
     K_v = _k_v(v, 18, u, F_t / b, K_A, grade)
-    face = _face_by_hand(F_t * K_A * K_v, b, d1, grade, (d_a1 - g1.d_f) / 2)
+    face = _face_by_hand(F_t * K_A * K_v, b, d1, grade, max((d_a1 - g1.d_f) / 2, (g2.d_f - d_a2) / 2))
     Z_H = math.sqrt(2 * math.cos(aw) / (math.cos(alpha) ** 2 * math.sin(aw)))
     Z_eps = math.sqrt((4 - eps) / 3)
     Z_B = max(1.0, _m1(aw, d_a1, g1.d_b, 18, d_a2, g2.d_b, 60, eps, True))
@@ -1134,3 +1135,19 @@ def test_face_load_factor_of_a_narrow_face_takes_b_over_h_as_3():
     assert f.K_Fbeta == pytest.approx(h.k_f_beta(f.K_Hbeta, 30.0, 15.0), rel=1e-14)
     wide = face_load_method_c(40000.0, 45.0, 90.0, 6, 15.0)                 # b/h = 3 itself: the same N_F
     assert wide.N_F == pytest.approx(9 / 13, rel=1e-14)
+
+
+def test_face_load_factor_takes_the_deeper_tooth_of_the_pair():
+    """ISO 6336-1 (K_Fβ = K_Hβ^N_F): b/h is the smaller of b1/h1 and b2/h2.  A pinion with its tip cut 1.2 mm
+    down has the shallower tooth: the wheel's depth sets N_F (the pinion's would give a larger b/h, a larger N_F and
+    a larger K_Fβ: the wrong one)."""
+    from propulsor.gears.iso6336 import MeshLoad, mesh_stress
+    pair = GearPair(SpurGear(19, 3.0, 0.2), SpurGear(37, 3.0, -0.1))
+    d_a1 = pair.d_a1 - 1.2
+    h1, h2 = (d_a1 - pair.gear1.d_f) / 2, (pair.d_a2 - pair.gear2.d_f) / 2
+    assert h2 > h1 + 0.5
+    s = mesh_stress(pair, d_a1, pair.d_a2, 30.0, MeshLoad(150.0, 9.0, 1.1, 8))
+    assert s.face.h == pytest.approx(h2, rel=1e-12)
+    bh = 30.0 / h2
+    assert s.face.N_F == pytest.approx(bh * bh / (1 + bh + bh * bh), rel=1e-12)
+    assert s.K_Fbeta == pytest.approx(s.K_Hbeta ** s.face.N_F, rel=1e-12)

@@ -368,7 +368,9 @@ def mesh_stress(pair, d_a1: float, d_a2: float, b: float, load: MeshLoad, a_w: f
     d1 = g1.d
     F_t = 2000.0 * load.T1 / d1
     K_v = k_v_method_b(load.v, g1.z, abs(u), F_t / b, load.K_A, load.grade)
-    h = 0.5 * (d_a1 - g1.d_f)
+    # ISO 6336-1 (K_Fβ): b/h the smaller of b/h1 and b/h2 - the deeper tooth's depth (an internal gear's root
+    # circle lies outside its tip circle)
+    h = max(0.5 * (d_a1 - g1.d_f), 0.5 * abs(g2.d_f - d_a2))
     F_m = F_t * load.K_A * K_v
     f_sh = f_sh_torsion(F_m, b, d1, load.pinion_meshes) if load.pinion_torsion else 0.0
     face = face_load_method_c(F_m, b, d1, load.grade, h, f_sh=f_sh)
