@@ -36,7 +36,8 @@ Load factors (ISO 6336-1:2006):
           the term of a pinion whose shaft bending is nil, as for the floating sun; n the meshes whose torque the
           pinion's body carries — a sun meshing with n planets twists under all n; 0 for a pinion that passes
           no torque through its body, as a planet on its pin)
-    K_Fβ = K_Hβ^N_F,  N_F = (b/h)² / (1 + b/h + (b/h)²),  h = (d_a1 − d_f1)/2, b/h taken >= 3 (ISO 6336-1:2006
+    K_Fβ = K_Hβ^N_F,  N_F = (b/h)² / (1 + b/h + (b/h)²),  h the deeper tooth's depth (b/h the smaller of b/h1, b/h2),
+          b/h taken >= 3 (ISO 6336-1:2006
           eq. 61–62, as in :func:`propulsor.gears.iso6336_helical.k_f_beta`)
     K_Hα = K_Fα by Table 9 (surface-hardened spur gears, F_t·K_A/b >= 100 N/mm)
 
