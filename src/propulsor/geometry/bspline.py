@@ -55,17 +55,27 @@ def _to_spline(bs) -> Spline:
 def fit_curve(func, u0: float, u1: float, tol: float = SPLINE_FIT_TOL_MM, n0: int = 12,
               max_points: int = 4000) -> Spline:
     """Clamped cubic B-spline through the exact curve ``func(u) -> (n,2)`` on [u0, u1],
-    within ``tol`` (mm) of it everywhere checked (1/4, 1/2, 3/4 of every interval)."""
+    within ``tol`` (mm) of it everywhere checked (1/4, 1/2, 3/4 of every interval).  ``func`` is evaluated once
+    at each parameter over the refinement's rounds (a point of the curve depends on its parameter alone)."""
     require(tol > 0, "tol", tol, "must be > 0")
     v = np.linspace(0.0, 1.0, n0)  # normalised parameter (u1 < u0 allowed)
+    known: dict[float, np.ndarray] = {}  # the curve's points by parameter: each evaluated once over the rounds
+
+    def at(uu: np.ndarray) -> np.ndarray:
+        new = np.array([x for x in dict.fromkeys(uu.tolist()) if x not in known], float)
+        if len(new):
+            for x, q in zip(new.tolist(), np.asarray(func(new), float)):
+                known[x] = q
+        return np.array([known[x] for x in uu.tolist()]).reshape(len(uu), 2)
+
     while True:
         u = u0 + (u1 - u0) * v
-        P = func(u)
+        P = at(u)
         bs, t = _interp(P)
         fr = np.array([0.25, 0.5, 0.75])
         uq = (u[:-1, None] + fr[None, :] * np.diff(u)[:, None]).ravel()
         tq = (t[:-1, None] + fr[None, :] * np.diff(t)[:, None]).ravel()
-        err = _project(bs, func(uq), tq, t[0], t[-1]).reshape(-1, 3).max(axis=1)
+        err = _project(bs, at(uq), tq, t[0], t[-1]).reshape(-1, 3).max(axis=1)
         bad = err > 0.5 * tol
         if not np.any(bad):
             return _to_spline(bs)
