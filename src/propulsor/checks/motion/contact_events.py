@@ -16,7 +16,10 @@ interval whose ends are in different states is bisected down to ``h_min`` of dri
 ``h_min`` and a stretch in another state that starts or ends between two samples is found when at least
 2 ``h_min`` wide.  A sample is found from the previous one's contact: the driven wheel is placed a little on
 the free side of it and turned through a small window (a full search from the law's position when that finds
-nothing), which keeps one measurement under a millisecond.
+nothing), which keeps one measurement under a millisecond.  Before any per-vertex work the search leaves out the
+window's vertices that cannot reach the mate within the window: runs of ``policy.CONTACT_PRUNE_CHUNK`` vertices by
+their bounding circle, then the rest one by one, against a lower bound of the distance to the mate's outline read
+from a grid (:func:`distance_field`); the first hit is the same, bit for bit.
 
 Driven speed over the law's at the same driver angle: (d phi_actual / d theta) / (d phi / d theta) =
 1 + d te / d phi, te = phi_actual - phi (the chord slopes of the resolved samples: piecewise constant).
