@@ -1,0 +1,713 @@
+"""The final drive's strength and fatigue steps (parts/final_drive/strength.py, fatigue.py) and its carrier,
+traction and design steps, value by value (issue 36: the mutation run of the final_drive target).  Each test runs
+the step in this process on the part file's design (no part build): the ISO 6336 formulas and the seed 004 values
+computed here, both sides of every limit, the messages and notes in full."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from pathlib import Path
+
+import pytest
+
+from propulsor.params import load_params, read_part_file
+from propulsor.parts.final_drive import FinalDriveParams
+
+ROOT = Path(__file__).resolve().parents[1]
+PART = ROOT / "parts" / "final_drive.toml"
+THESIS = ROOT / "parts" / "final_drive_thesis.toml"
+
+from test_part_final_drive import _Writer  # noqa: E402 - the output writer's parts the steps use
+
+# seed 004: M_vk.max (eq. 40), Ω (eq. 42), i_sil (eq. 41), V_min (eq. 65), z = 15 sprocket teeth of t = 125 mm
+M_VK, OMEGA, I_SIL, V_KMH = 90687.503, 1.09, 4.413, 7.852
+N_CARRIER = V_KMH / 3.6 / (15 * 0.125)                     # rev/s of the carrier (the sprocket)
+
+
+def _params(path=PART, **changes):
+    _, mp = read_part_file(path)
+    return dataclasses.replace(load_params(FinalDriveParams, mp), **changes)
+
+
+@pytest.fixture(scope="module")
+def p():
+    return _params()
+
+
+def _strength(p):
+    from propulsor.parts.final_drive.design import design
+    from propulsor.parts.final_drive.strength import strength
+
+    dd = design(p)
+    w = _Writer()
+    strength(dd, w, {})
+    return dd, w
+
+
+@pytest.fixture
+def st(p):   # each test runs the step: mutmut ties a test to the functions it calls itself
+    return _strength(p)
+
+
+# ---- strength.py: the load path (seed 004 eq. 40-42) and the allowables (ch. 4.1) ---------------------------------
+def test_strength_loads_and_allowables(st):
+    dd, w = st
+    d = w.derived
+    T_sun = M_VK * OMEGA / I_SIL                            # 22 399.6 N·m (thesis 22 399)
+    assert d["design_torque_carrier_Nm"] == M_VK
+    assert d["sun_torque_Nm"] == pytest.approx(T_sun, rel=1e-12) and round(d["sun_torque_Nm"]) == 22400
+    assert d["sun_torque_per_mesh_Nm"] == pytest.approx(T_sun / 3, rel=1e-12)
+    # the sun's pitch circle (z = 16, m = 10: d = 160 mm) turns i - 1 = 56/16 = 3.5 times relative to the carrier
+    assert dd.ps.ratio == pytest.approx(4.5, rel=1e-12)
+    assert d["pitch_line_speed_rel_m_s"] == pytest.approx(math.pi * 0.160 * N_CARRIER * 3.5, rel=1e-12)
+    assert d["sigma_Hmax_allowable_MPa"] == 44 * 59 == 2596
+    assert d["sigma_FlimM_MPa"] == pytest.approx(2.8 * 785, rel=1e-15)
+    assert d["sigma_Fmax_allowable_MPa"] == pytest.approx(2.8 * 785 / 1.75, rel=1e-15)
+
+
+_MESH_KEYS = ("F_t", "b", "K_A", "K_v", "K_Hbeta", "K_Halpha", "K_Fbeta", "K_Falpha", "Z_H", "Z_E", "Z_eps", "Z_B",
+              "Y_eps", "sigma_H0", "sigma_H")
+
+
+def test_strength_mesh_values_and_table_are_those_of_iso6336_at_the_design_torque(st):
+    from propulsor.gears.iso6336 import MeshLoad, mesh_stress, root_face_width
+    from propulsor.parts.final_drive.strength import ring_root
+
+    dd, w = st
+    p, ps, d = dd.p, dd.ps, w.derived
+    T1 = M_VK * OMEGA / I_SIL / 3
+    v = math.pi * 0.160 * N_CARRIER * 3.5
+    # sun-planet: the sun twists under the three meshes' torque; each root over the 80 mm common face
+    sp = mesh_stress(ps.mesh_sun_planet, ps.d_a_sun, ps.d_a_planet, 80.0,
+                     MeshLoad(T1, v, 1.0, 6, pinion_torsion=True, pinion_meshes=3), E_sn=p.tooth_thinning_mm,
+                     b_F=(root_face_width(80.0, 80.0, 10.0), root_face_width(80.0, 80.0, 10.0)))
+    # planet-ring: the idler planet passes the sun's tangential force on (torque x 20/16), at the carrier's a_w
+    pr = mesh_stress(ps.mesh_planet_ring, ps.d_a_planet, ps.d_a_ring, 80.0, MeshLoad(T1 * 20 / 16, v, 1.0, 6),
+                     a_w=ps.a_w, internal_root=ring_root(p, ps), E_sn=p.tooth_thinning_mm, b_F=(80.0, 80.0))
+    assert sp.F_t == pytest.approx(2000 * T1 / 160, rel=1e-12) and pr.F_t == pytest.approx(sp.F_t, rel=1e-12)
+    rows = w.tables["strength_meshes"]
+    assert rows[0] == ["mesh", "quantity", "value"]
+    expect = []
+    for tag, s, gears in (("sun_planet", sp, ("sun", "planet")), ("planet_ring", pr, ("planet", "ring"))):
+        vals = {("b_mm" if k == "b" else f"{k}_N" if k == "F_t" else f"{k}_MPa" if k.startswith("sigma") else k):
+                getattr(s, k) for k in _MESH_KEYS}
+        vals["S_H_static"] = 2596.0 / s.sigma_H
+        for g, sC, sB, YF, YS in ((gears[0], s.sigma_F1, s.sigma_F1_B, s.Y_F1, s.Y_S1),
+                                  (gears[1], s.sigma_F2, s.sigma_F2_B, s.Y_F2, s.Y_S2)):
+            vals.update({f"Y_F_method_C_{g}": YF, f"Y_S_method_C_{g}": YS, f"sigma_F_{g}_method_C_MPa": sC,
+                         f"sigma_F_{g}_method_B_MPa": sB, f"S_F_{g}_static": 2198.0 / sB})
+        vals["face_width_required_mm"] = d[f"strength_{tag}_face_width_required_mm"]
+        expect += [[tag, k, x] for k, x in vals.items()]
+    assert [r[:2] for r in rows[1]] == [r[:2] for r in expect] and len(rows[1]) == 54
+    for (tag, k, x), r in zip(expect, rows[1]):
+        assert r[2] == pytest.approx(x, rel=1e-12), (tag, k)
+        assert d[f"strength_{tag}_{k}"] == r[2]
+    assert d["strength_sun_planet_b_mm"] == d["strength_planet_ring_b_mm"] == 80.0
+    # the printed values of the default design (S_H static = 2596/1689.7, the ring's root 561.9 MPa by method B)
+    assert round(d["strength_sun_planet_sigma_H_MPa"], 1) == 1689.7
+    assert round(d["strength_planet_ring_sigma_H_MPa"], 1) == 938.8
+    assert round(d["strength_planet_ring_sigma_F_ring_method_B_MPa"], 1) == 561.9
+
+
+def test_required_face_width_is_where_the_smallest_static_safety_meets_its_minimum(st):
+    from propulsor.parts.final_drive.strength import mesh_stresses
+
+    dd, w = st
+    p, ps = dd.p, dd.ps
+    for k, tag in enumerate(("sun_planet", "planet_ring")):
+        b = w.derived[f"strength_{tag}_face_width_required_mm"]
+
+        def least(bb):
+            s = mesh_stresses(p, ps, bb, bb)[k]
+            return min(2596.0 / s.sigma_H, 2198.0 / s.sigma_F1_B / 1.75, 2198.0 / s.sigma_F2_B / 1.75)
+
+        assert least(b) == pytest.approx(1.0, abs=1e-7)
+        assert least(b - 1e-3) < 1.0 < least(b + 1e-3)
+    assert round(w.derived["strength_sun_planet_face_width_required_mm"], 2) == 28.51
+    assert round(w.derived["strength_planet_ring_face_width_required_mm"], 2) == 34.36
+
+
+def test_required_face_width_search_ends_at_two_hundred_modules(p):
+    """Beyond 200 m = 2000 mm of face the search gives up (inf); a contact safety reached at 1995 mm is found."""
+    from propulsor.parts.final_drive.design import planetary_set
+    from propulsor.parts.final_drive.strength import mesh_stresses, required_face_width
+
+    ps = planetary_set(p)
+    for bb in (1995.0, 2005.0):
+        S_H = 2596.0 / mesh_stresses(p, ps, bb, bb)[0].sigma_H     # the static contact safety at that face
+        q = dataclasses.replace(p, contact_safety_S_Hmin=S_H)
+        got = required_face_width(q, ps, "sun_planet")
+        if bb < 2000.0:
+            assert got == pytest.approx(bb, abs=1e-5)
+        else:
+            assert got == math.inf
+
+
+def test_strength_checks_in_full(st):
+    _, w = st
+    got = [(c.name, c.value, c.limit, c.unit, c.message, c.passed) for c in w.checks]
+    d = w.derived
+    want = [
+        ("strength_sun_planet.S_H_static", 2596.0 / d["strength_sun_planet_sigma_H_MPa"], 1.0, "",
+         "S_H static (σ_Hmax = 44·HRC = 2596 MPa, seed 004 ch. 4.1) over ISO 6336-2 σ_H = 1689.7 MPa at the design "
+         "torque", True),
+        ("strength_sun_planet.face_width", d["strength_sun_planet_face_width_required_mm"], 80.0, "mm",
+         "face width the mesh needs for the static checks (28.51 mm) within the one it has (80 mm)", True),
+        ("strength_sun_planet.S_F_sun_static", 2198.0 / d["strength_sun_planet_sigma_F_sun_method_B_MPa"], 1.75, "",
+         "S_F static (σ_FlimM = 2.8·σ_t = 2198 MPa, seed 004 ch. 4.1) over ISO 6336-3 method B σ_F = 440.4 MPa "
+         "(method C: 445.9 MPa)", True),
+        ("strength_sun_planet.S_F_planet_static", 2198.0 / d["strength_sun_planet_sigma_F_planet_method_B_MPa"], 1.75,
+         "", "S_F static (σ_FlimM = 2.8·σ_t = 2198 MPa, seed 004 ch. 4.1) over ISO 6336-3 method B σ_F = 440.4 MPa "
+         "(method C: 443.5 MPa)", True),
+        ("strength_planet_ring.S_H_static", 2596.0 / d["strength_planet_ring_sigma_H_MPa"], 1.0, "",
+         "S_H static (σ_Hmax = 44·HRC = 2596 MPa, seed 004 ch. 4.1) over ISO 6336-2 σ_H = 938.8 MPa at the design "
+         "torque", True),
+        ("strength_planet_ring.face_width", d["strength_planet_ring_face_width_required_mm"], 80.0, "mm",
+         "face width the mesh needs for the static checks (34.36 mm) within the one it has (80 mm)", True),
+        ("strength_planet_ring.S_F_planet_static", 2198.0 / d["strength_planet_ring_sigma_F_planet_method_B_MPa"],
+         1.75, "", "S_F static (σ_FlimM = 2.8·σ_t = 2198 MPa, seed 004 ch. 4.1) over ISO 6336-3 method B "
+         "σ_F = 363.2 MPa (method C: 374.2 MPa)", True),
+        ("strength_planet_ring.S_F_ring_static", 2198.0 / d["strength_planet_ring_sigma_F_ring_method_B_MPa"], 1.75,
+         "", "S_F static (σ_FlimM = 2.8·σ_t = 2198 MPa, seed 004 ch. 4.1) over ISO 6336-3 method B σ_F = 561.9 MPa "
+         "(method C: 525.7 MPa)", True),
+        ("bearing_planet.S0", 128700.0 / d["bearing_planet_load_N"], 1.0, "",
+         "ISO 76 C0 = 128700 N over the load 87334 N (10231 (thesis; d x D x B ours))", True),
+        ("bearing_carrier.S0", d["bearing_carrier_C0_N"] / 858508.0, 1.0, "",
+         "ISO 76 C0 = 1415838 N over the load 858508 N (3524 (GOST 5721))", True),
+        ("spline.margin", d["spline_allowable_MPa"] / d["spline_sigma_MPa"], 1.0, "",
+         "Эв. 120 x 3.5 GOST 6033-80 (z = 34, x = -0.407): σ = 117.164 MPa, [σ]_sm = σ_T/(n·K_Σ) = 121.294 MPa with "
+         "the hub steel's σ_T = 630 MPa (thesis: 785 MPa → 151.136 MPa)", True),
+        ("shaft.margin", 970.0 / d["shaft_sigma_eq_MPa"], 1.0, "",
+         "σ_eq = √(σ² + 4τ²) = 775.831 MPa against σ_T = 970 MPa", True),
+    ]
+    assert [g[0] for g in got] == [x[0] for x in want]
+    for g, x in zip(got, want):
+        assert g[1] == pytest.approx(x[1], rel=1e-12) and g[2:] == x[2:], g[0]
+
+
+def test_a_strength_check_fails_below_its_limit(p):
+    """Hardness 30 HRC: σ_Hmax = 1320 MPa under the sun-planet mesh's 1689.7 MPa fails S_H static and the face."""
+    _, w = _strength(dataclasses.replace(p, flank_hardness_HRC=30.0))
+    failed = {c.name for c in w.checks if not c.passed}
+    assert failed == {"strength_sun_planet.S_H_static", "strength_sun_planet.face_width"}
+    assert w.derived["strength_sun_planet_face_width_required_mm"] > 80.0
+
+
+def test_bearings_spline_and_shaft(st):
+    dd, w = st
+    d = w.derived
+    # eq. 44: P_sat = M_vk·Ω/(r_vod·n_w·i), r_vod = a_w, 3 planets, 2 bearings a planet
+    P_sat = M_VK * OMEGA / (dd.ps.a_w * 1e-3 * 3 * 2)
+    assert round(dd.ps.a_w, 3) == 188.643
+    assert d["bearing_planet_load_N"] == pytest.approx(P_sat, rel=1e-12)
+    assert d["bearing_planet_C0_N"] == 128700.0
+    assert d["bearing_planet_S0"] == pytest.approx(128700.0 / P_sat, rel=1e-12)
+    assert d["bearing_carrier_load_N"] == 858508.0
+    assert d["bearing_carrier_S0"] == pytest.approx(d["bearing_carrier_C0_N"] / 858508.0, rel=1e-12)
+    assert round(d["bearing_carrier_C0_N"]) == 1415838
+    cols, rows = w.tables["bearings"]
+    assert cols == ["role", "designation", "d_x_D_x_B_mm", "C0_ISO76_N", "C0_thesis_Table8_N", "load_N", "S0",
+                    "thesis_C0_N", "thesis_load_N", "thesis_S0"]
+    assert rows[0][:5] == ["planet", "10231 (thesis; d x D x B ours)", "55 x 110 x 21", 128700.0, 128700.0]
+    assert rows[0][5:7] == [d["bearing_planet_load_N"], d["bearing_planet_S0"]]
+    assert rows[0][7:] == [128700.0, 92000.0, 1.39]
+    assert rows[1][:3] == ["carrier", "3524 (GOST 5721)", "120 x 215 x 58"]
+    assert rows[1][3:7] == [d["bearing_carrier_C0_N"], 1398120.0, 858508.0, d["bearing_carrier_S0"]]
+    assert rows[1][7:] == [1398120.0, 858508.0, 1.629]
+    # eq. 45-47: P_t = 2π·M/(z·t); the slack side P_0 - P_t/(1 + 10/64) < 0 is clamped to 0, so Q = P_t
+    P_t = 2 * math.pi * M_VK / (15 * 0.125)
+    assert d["track_pull_P_t_N"] == pytest.approx(P_t, rel=1e-12)
+    assert d["sprocket_axle_load_Q_N"] == pytest.approx(P_t, rel=1e-12)
+    # spline (seed 004 §4.3): σ = 2000·M/(S_u·L), [σ] = σ_T/(n·K_pr·K_z·K_p)
+    assert d["spline_S_u_mm3_per_mm"] == pytest.approx(5528.74, rel=1e-12)
+    sigma = 1000 * M_VK / (5528.74 * 140.0)
+    assert d["spline_sigma_MPa"] == pytest.approx(sigma, rel=1e-12) and round(sigma, 3) == 117.164
+    allow = 630.0 / (1.4 * 2.65 * 1.0 * 1.4)
+    assert d["spline_allowable_MPa"] == pytest.approx(allow, rel=1e-12)
+    assert d["spline_margin"] == pytest.approx(allow / sigma, rel=1e-12)
+    assert d["spline_margin_thesis_785MPa"] == pytest.approx(785.0 / (1.4 * 2.65 * 1.4) / sigma, rel=1e-12)
+    # shaft: σ = Q·L/W_i, τ = M/W_k, σ_eq = √(σ² + 4τ²) (thesis 775.831), margin σ_T/σ_eq
+    s_b = P_t * 222.0 / 169646.003
+    tau = M_VK * 1e3 / 272271.363
+    assert d["shaft_sigma_bending_MPa"] == pytest.approx(s_b, rel=1e-12)
+    assert d["shaft_tau_MPa"] == pytest.approx(tau, rel=1e-12)
+    assert d["shaft_sigma_eq_MPa"] == pytest.approx(math.hypot(s_b, 2 * tau), rel=1e-12)
+    assert d["shaft_margin"] == pytest.approx(970.0 / math.hypot(s_b, 2 * tau), rel=1e-12)
+
+
+def test_a_light_torque_leaves_the_slack_side_tensioned(p):
+    """M = 5000 N·m: P_t = 16 755 N, the slack side keeps P_0 - P_t/(1 + z_sv/z_rab) = 31 057 - P_t·64/74 > 0, and the
+    axle load is the resultant of both branches 30° apart (eq. 47)."""
+    _, w = _strength(dataclasses.replace(p, sprocket_torque_Nm=5000.0))
+    P_t = 2 * math.pi * 5000.0 / (15 * 0.125)
+    P_sv = 31057.0 - P_t / (1 + 10 / 64)
+    P_r = P_sv + P_t
+    Q = math.sqrt(P_sv ** 2 + P_r ** 2 + 2 * P_sv * P_r * math.cos(math.radians(30.0)))
+    assert w.derived["track_pull_P_t_N"] == pytest.approx(P_t, rel=1e-12)
+    assert w.derived["sprocket_axle_load_Q_N"] == pytest.approx(Q, rel=1e-12)
+    assert w.derived["shaft_sigma_bending_MPa"] == pytest.approx(Q * 222.0 / 169646.003, rel=1e-12)
+
+
+_DESCRIBED = {
+    "S_H_static": ("", "static contact safety σ_Hmax/σ_H, σ_Hmax = 44·HRC (seed 004 ch. 4.1)"),
+    "face_width_required_mm": ("mm", "least face width meeting the static S_H and S_F (root stress by ISO 6336-3 "
+                                     "method B)"),
+}
+_DESCRIBED_ROOT = {
+    "sigma_F_{g}_method_B_MPa": ("MPa", "root stress by ISO 6336-3:2006 method B (load at the outer point of single "
+                                        "contact); the checks use it"),
+    "sigma_F_{g}_method_C_MPa": ("MPa", "root stress by ISO 6336-3:1996 method C (load at the tip, Y_ε), for "
+                                        "comparison"),
+    "Y_F_method_C_{g}": ("", "form factor Y_F, load at the tip (method C)"),
+    "Y_S_method_C_{g}": ("", "stress correction factor Y_S, load at the tip (method C)"),
+    "S_F_{g}_static": ("", "static bending safety σ_FlimM/σ_F (method B), σ_FlimM = 2.8·σ_t (seed 004 ch. 4.1)"),
+}
+
+
+def test_strength_describes_its_values_in_full(st):
+    _, w = st
+    want = {}
+    for tag, gears in (("sun_planet", ("sun", "planet")), ("planet_ring", ("planet", "ring"))):
+        want.update({f"strength_{tag}_{k}": v for k, v in _DESCRIBED.items()})
+        for g in gears:
+            want.update({f"strength_{tag}_{k.format(g=g)}": v for k, v in _DESCRIBED_ROOT.items()})
+    assert w.described == want
+
+
+NOTE_STRENGTH = (
+    "Strength at the design torque M_vk.max = 90687.5 N·m (seed 004 eq. 40 with t = 0.125 m; printed 90 690 N·m), sun "
+    "torque M_vk·Ω/i_sil = 22399.6 N·m (thesis 22 399 N·m), 7466.5 N·m per mesh; relative pitch-line speed 2.047 m/s "
+    "at 7.852 km/h. ISO 6336 (spur; K_Hβ by method C with the sun's torsional deformation f_sh under all 3 meshes' "
+    "torque): sun–planet σ_H = {sH_sp} MPa (S_H static = 44·HRC/σ_H = {SH_sp}), σ_F by method B sun {sF_s} MPa "
+    "(S_F static = {SF_s}), planet {sF_p} MPa (method C: {sFC_s}, {sFC_p} MPa); planet–ring σ_H = {sH_pr} MPa (the "
+    "planet's flank, Z_B = 1.2194; the ring's {sH_r} MPa; S_H static = {SH_pr}), σ_F planet {sF_pp} MPa by method B "
+    "(S_F static = {SF_pp}; method C {sFC_pp} MPa). These static safeties set the working stresses at the peak torque "
+    "against the thesis's allowables: σ_Hmax = 44·HRC = 2596 MPa, σ_FlimM = 2.8·σ_t = 2198 MPa, σ_Fmax = "
+    "σ_FlimM/S_Fm = 1256 MPa; the thesis computes no working stress. The contact formulas used here (Z_H, Z_E, Z_ε, "
+    "Z_B, σ_H0: the helical ones of gears/iso6336_helical.py at β = 0) reproduce the published ISO/TR 6336-30:2017 "
+    "example 1 within 1 % (σ_H0, σ_H; tests/test_iso6336_helical.py); no published root-stress example was at hand. "
+    "Face width needed: sun–planet 28.5 mm, planet–ring {b_pr} mm. The ring's root by ISO 6336-3 for internal gears "
+    "(substitute rack with the shaper's tip radius {rho} mm as its fillet): σ_F {sF_r} MPa by method B "
+    "(S_F static = {SF_r}).")
+NOTE_BEARINGS = (
+    "Bearings (ISO 76): planet bearing load eq. 44 = 87334 N with r_vod = a_w = 188.643 mm (thesis: r_vod = 180 mm → "
+    "91 527 N, Table 8: 92 000 N), C0 = 128700 N, S0 = 1.474 (thesis 1.39); carrier bearing 3524: eq. 49 gives C0 = "
+    "1415838 N, Table 8 lists 1 398 120 N; at Table 8's load 858 508 N S0 = 1.649 (thesis 1.629; the text says "
+    "R = 522 000 N for it). Spline Эв. 120 x 3.5 GOST 6033-80 (z = 34, x = -0.407): S_u = 5528.74 mm³/mm, "
+    "σ = 117.164 MPa (thesis 117.164), [σ]_sm = 121.294 MPa with the hub's 630 MPa — margin 1.035; the thesis uses "
+    "785 MPa: 151.136 MPa, margin 1.290 (printed 1.29). Carrier shaft: σ = 397.681 MPa, τ = 333.078 MPa, "
+    "σ_eq = √(σ² + 4τ²) = 775.831 MPa (thesis 775.831, printed as √(σ²·4τ²)), margin 1.250 (thesis 1.25).")
+
+
+def test_strength_notes_in_full(st):
+    _, w = st
+    assert w.notes == [
+        NOTE_STRENGTH.format(sH_sp="1689.7", SH_sp="1.536", sF_s="440.4", SF_s="4.991", sF_p="440.4", sFC_s="445.9",
+                             sFC_p="443.5", sH_pr="938.8", sH_r="769.9", SH_pr="2.765", sF_pp="363.2", SF_pp="6.052",
+                             sFC_pp="374.2", b_pr="34.4", rho="2", sF_r="561.9", SF_r="3.912"),
+        NOTE_BEARINGS]
+
+
+def test_strength_notes_of_the_thesis_set_rate_the_ring_mesh_at_the_carriers_centre_distance():
+    """x_ring = 1.417 as printed: the planet-ring mesh runs at the sun-planet a_w = 188.643 mm, not the 187.997 mm of
+    its shifts; the note gives both ratings (Z_B 1.2194 there, 1.2054 at its own a_w: the thesis prints 1.205)."""
+    _, w = _strength(_params(THESIS))
+    assert w.notes[0] == NOTE_STRENGTH.format(
+        sH_sp="1726.9", SH_sp="1.503", sF_s="432.3", SF_s="5.085", sF_p="461.1", sFC_s="437.7", sFC_p="464.4",
+        sH_pr="958.1", sH_r="785.7", SH_pr="2.710", sF_pp="371.6", SF_pp="5.916", sFC_pp="387.6", b_pr="43.8",
+        rho="1", sF_r="707.5", SF_r="3.107")
+    assert w.notes[1] == (
+        "The planet–ring mesh is rated at the centre distance the carrier makes, a_w = 188.643 mm (α_w = 26.2802°, "
+        "ε_α = 1.3979, Z_H = 2.1417, Z_B = 1.2194, σ_H = 958.1 MPa), not at the 187.997 mm of its shifts, which the "
+        "thesis uses (there: α_w = 25.8788°, ε_α = 1.3481, Z_H = 2.1608, Z_B = 1.2054 — the thesis prints 1.205 —, "
+        "σ_H = 964.7 MPa). The set is not coaxial: the planets sit on the sun–planet centre distance, so the "
+        "planet–ring teeth run 0.646 mm deeper than their shifts provide for (the overlap the sweep reports).")
+    assert w.notes[2] == NOTE_BEARINGS and len(w.notes) == 3
+
+
+# ---- fatigue.py: ISO 6336-2/-3 fatigue for the service life, the factor table -------------------------------------
+def _fatigue(p):
+    from propulsor.parts.final_drive.design import design
+    from propulsor.parts.final_drive.fatigue import fatigue
+
+    dd = design(p)
+    w = _Writer()
+    fatigue(dd, w, {})
+    return dd, w
+
+
+def _golden():
+    import json
+
+    return json.loads((ROOT / "tests" / "golden" / "final_drive_fatigue.json").read_text("utf-8"))
+
+
+def test_fatigue_factor_table_in_full(p):
+    """Every row of tables/strength_factors.csv: mesh, calculation, gear, factor, value, unit, method, life point,
+    clause and basis, as written for the part file (tests/golden/final_drive_fatigue.json; inf written as null)."""
+    _, w = _fatigue(p)
+    g = _golden()
+    cols, rows = w.tables["strength_factors"]
+    assert cols == g["columns"] == ["mesh", "calculation", "gear", "factor", "value", "unit", "method", "N_L",
+                                    "source", "basis"]
+    assert len(rows) == len(g["rows"]) == 226
+    for r, x in zip(rows, g["rows"]):
+        assert r[:4] + r[5:] == x[:4] + x[5:], r[:4]
+        assert r[4] == (math.inf if x[4] is None else pytest.approx(x[4], rel=1e-9)), r[:4]
+
+
+def test_fatigue_notes_in_full(p):
+    _, w = _fatigue(p)
+    assert w.notes == _golden()["notes"]
+
+
+def test_fatigue_checks_in_full(p):
+    _, w = _fatigue(p)
+    g = _golden()["checks"]
+    assert [[c.name, c.limit, c.message] for c in w.checks] == [[x[0], x[2], x[3]] for x in g]
+    assert [c.value for c in w.checks] == pytest.approx([x[1] for x in g], rel=1e-9)
+    d = w.derived
+    for c in w.checks:
+        tag, what = c.name.split(".")
+        assert c.value == d[f"{tag}_{what}"] and c.passed == (c.value >= c.limit)
+        assert c.limit == (1.0 if what.startswith("S_H") else 1.4)
+
+
+def test_fatigue_safety_is_the_limit_over_the_stress_and_the_load_cycles_follow_the_carrier(p):
+    dd, w = _fatigue(p)
+    d = w.derived
+    by = {(r[0], r[1], r[2], r[3]): r[4] for r in w.tables["strength_factors"][1]}
+    # load cycles per hour: the sun's relative speed n_c·(i - 1) past 3 planets; a planet tooth once per turn of the
+    # planet, n_c·(i - 1)·16/20; a ring tooth by each of 3 planets once per carrier turn
+    n_s = N_CARRIER * 3.5
+    assert d["load_cycles_per_hour_sun"] == pytest.approx(3600 * n_s * 3, rel=1e-12)
+    assert d["load_cycles_per_hour_planet"] == pytest.approx(3600 * n_s * 16 / 20, rel=1e-12)
+    assert d["load_cycles_per_hour_ring"] == pytest.approx(3600 * N_CARRIER * 3, rel=1e-12)
+    for mesh, gears in (("sun_planet", ("sun", "planet")), ("planet_ring", ("planet", "ring"))):
+        for g in gears:
+            cph = d[f"load_cycles_per_hour_{g}"]
+            assert by[(mesh, "pitting", g, "N_L")] == pytest.approx(cph * 100.0, rel=1e-12)
+            assert by[(mesh, "bending", g, "N_L")] == pytest.approx(cph * 100.0, rel=1e-12)
+            S_H = by[(mesh, "pitting", g, "sigma_HG")] / by[(mesh, "pitting", g, "sigma_H")]
+            assert d[f"strength_{mesh}_S_H_pitting_{g}"] == pytest.approx(S_H, rel=1e-12)
+            S_F = by[(mesh, "bending", g, "sigma_FG")] / by[(mesh, "bending", g, "sigma_F")]
+            assert d[f"strength_{mesh}_S_F_fatigue_{g}"] == pytest.approx(S_F, rel=1e-12)
+            assert by[(mesh, "bending", g, "S_F_static")] == pytest.approx(
+                2198.0 / by[(mesh, "bending", g, "sigma_F")], rel=1e-12)
+            assert by[(mesh, "pitting", g, "S_H_static")] == pytest.approx(
+                2596.0 / by[(mesh, "pitting", g, "sigma_H")], rel=1e-12)
+            # the planet is an idler: its root is bent both ways (Y_M = 0.7)
+            assert by[(mesh, "bending", g, "Y_M")] == (0.7 if g == "planet" else 1.0)
+    # the pitting stresses: the pinion's flank Z_B·σ_H0·√K, the wheel's Z_D·σ_H0·√K
+    for mesh in ("sun_planet", "planet_ring"):
+        K = math.sqrt(by[(mesh, "pitting", "", "K_A")] * by[(mesh, "pitting", "", "K_v")]
+                      * by[(mesh, "pitting", "", "K_Hbeta")] * by[(mesh, "pitting", "", "K_Halpha")])
+        s0 = by[(mesh, "pitting", "", "sigma_H0")]
+        g1, g2 = ("sun", "planet") if mesh == "sun_planet" else ("planet", "ring")
+        assert by[(mesh, "pitting", g1, "sigma_H")] == pytest.approx(by[(mesh, "pitting", "", "Z_B")] * s0 * K,
+                                                                     rel=1e-12)
+        assert by[(mesh, "pitting", g2, "sigma_H")] == pytest.approx(by[(mesh, "pitting", "", "Z_D")] * s0 * K,
+                                                                     rel=1e-12)
+
+
+@pytest.mark.parametrize("key, S_min", [
+    ("strength_sun_planet_pitting_life_planet_h", ("strength_sun_planet_S_H_pitting_planet", 1.0)),
+    ("strength_planet_ring_bending_life_planet_h", ("strength_planet_ring_S_F_fatigue_planet", 1.4)),
+    ("strength_planet_ring_bending_life_ring_h", ("strength_planet_ring_S_F_fatigue_ring", 1.4)),
+])
+def test_each_finite_fatigue_life_is_where_its_safety_meets_the_minimum(p, key, S_min):
+    _, w = _fatigue(p)
+    hours = w.derived[key]
+    assert 100.0 < hours < 1e6
+    _, w = _fatigue(dataclasses.replace(p, service_life_h=hours))
+    assert w.derived[S_min[0]] == pytest.approx(S_min[1], rel=1e-9)
+
+
+def test_a_required_bending_safety_moves_the_bending_life(p):
+    """S_Fmin = 1.6: the ring's root (S_F = 1.682 at 100 h) reaches 1.6 sooner than 1.4 (3126 h); its check's limit
+    is 1.6."""
+    _, w = _fatigue(dataclasses.replace(p, bending_fatigue_safety_S_Fmin=1.6))
+    life = w.derived["strength_planet_ring_bending_life_ring_h"]
+    assert 100.0 < life < 3126.0
+    c = {c.name: c for c in w.checks}["strength_planet_ring.S_F_fatigue_ring"]
+    assert c.limit == 1.6 and c.passed
+    _, w = _fatigue(dataclasses.replace(p, bending_fatigue_safety_S_Fmin=1.6, service_life_h=life))
+    assert w.derived["strength_planet_ring_S_F_fatigue_ring"] == pytest.approx(1.6, rel=1e-9)
+
+
+def test_fatigue_describes_its_values_in_full(p):
+    _, w = _fatigue(p)
+    want = {}
+    for mesh, g in (("sun_planet", "sun"), ("sun_planet", "planet"), ("planet_ring", "planet"), ("planet_ring", "ring")):
+        want[f"strength_{mesh}_S_H_pitting_{g}"] = ("", f"pitting fatigue safety σ_HG/σ_H of the {g}'s flank "
+                                                        f"(ISO 6336-2)")
+        want[f"strength_{mesh}_pitting_life_{g}_h"] = ("h", f"running time at the design torque after which the {g}'s "
+                                                            f"pitting safety falls to S_Hmin")
+    for mesh, g in (("sun_planet", "sun"), ("sun_planet", "planet"), ("planet_ring", "planet"), ("planet_ring", "ring")):
+        want[f"strength_{mesh}_S_F_fatigue_{g}"] = ("", f"bending fatigue safety σ_FG/σ_F of the {g}'s root "
+                                                        f"(ISO 6336-3 method B)")
+        want[f"strength_{mesh}_bending_life_{g}_h"] = ("h", f"running time at the design torque after which the {g}'s "
+                                                            f"bending safety falls to S_Fmin")
+    for g in ("sun", "planet", "ring"):
+        want[f"load_cycles_per_hour_{g}"] = ("1/h", f"load cycles of a {g} tooth per hour at the design speed")
+    assert w.described == want and list(w.described) == list(want)
+
+
+def test_fatigue_number_formats_at_their_limits():
+    from propulsor.parts.final_drive.fatigue import _fmt, _hours, _life
+
+    assert _fmt(math.inf) == "inf"
+    assert [_fmt(x) for x in (0.000999, 0.001, -0.0005)] == ["0.000999", "0.0010", "-0.0005"]
+    assert [_fmt(x) for x in (9.99994, 10.0, -5.0, 99999.99, 1e5, 4.397e6)] == [
+        "9.9999", "10.00", "-5.0000", "99999.99", "1e+05", "4.397e+06"]
+    assert _hours(math.inf, 10.0) == math.inf and _hours(1e6, 0.0) == math.inf and _hours(1e6, 1e3) == 1e3
+    assert _life(math.inf, "S_Hmin") == "never falls to S_Hmin: the life factor's floor 0.85 at 1e10 cycles keeps it above"
+    assert _life(242.48549, "S_Fmin") == "falls to S_Fmin after 242.5 h"
+
+
+# ---- carrier.py: the carrier's layout, solid and pin sweep --------------------------------------------------------
+def _design(p):
+    from propulsor.parts.final_drive.design import design
+
+    return design(p)
+
+
+def test_carrier_layout_and_values(p):
+    """Cheek of radius a_w + d_pin, 40 mm thick, 5 mm below the gears; pins to the ring's top face (80 mm); journal for
+    bearings 3524 (58 mm) and 224 (40 mm) with a 10 mm spacer; the spline's 140 mm below it."""
+    from propulsor.parts.final_drive.carrier import carrier_layout, carrier_values
+
+    dd = _design(p)
+    a_w = dd.ps.a_w
+    assert carrier_layout(dd) == {"R_cheek": pytest.approx(a_w + 55.0, rel=1e-15), "r_pin": 27.5, "z_pin_top": 80.0,
+                                  "z_cheek_top": -5.0, "z_cheek_bot": -45.0, "z_journal_bot": -153.0,
+                                  "z_spline_bot": -293.0}
+    w = _Writer()
+    carrier_values(dd, w, {})
+    assert w.derived == {"carrier_cheek_radius_mm": pytest.approx(a_w + 55.0, rel=1e-15), "carrier_pin_d_mm": 55.0,
+                         "carrier_journal_d_mm": 120.0, "carrier_spline_length_mm": 140.0,
+                         "carrier_length_mm": 80.0 + 293.0}
+
+
+def test_carrier_pins_sit_on_the_operating_centre_distance_a_third_of_a_turn_apart(p):
+    from propulsor.parts.final_drive.carrier import _pin_centres
+
+    dd = _design(p)
+    _, centres = _pin_centres(dd)
+    a_w = dd.ps.a_w
+    assert len(centres) == 3 and all(type(v) is float for c in centres for v in c)
+    for k, (x, y) in enumerate(centres):
+        assert x == pytest.approx(a_w * math.cos(2 * math.pi * k / 3), abs=1e-9)
+        assert y == pytest.approx(a_w * math.sin(2 * math.pi * k / 3), abs=1e-9)
+
+
+@pytest.mark.parametrize("bore", [55.0, 40.0])
+def test_carrier_refuses_planet_bores_not_wider_than_its_pins(p, bore):
+    from propulsor.errors import InputError
+    from propulsor.parts.final_drive.carrier import carrier_solid
+
+    dd = _design(p)
+    dd = dataclasses.replace(dd, p=dataclasses.replace(dd.p, planet_bore_mm=bore))
+    with pytest.raises(InputError) as e:
+        carrier_solid(dd)
+    assert str(e.value) == str(InputError("planet_bore_mm", bore, "must exceed the planet pin Ø 55.0 mm"))
+
+
+def test_carrier_solid_is_cheek_pins_journal_and_spline(p):
+    """The carrier written by the step: its volume against its parts computed apart (the cheek, three pins above it,
+    the journal below it, the spline section's polygon area over 140 mm), one solid of genus 0."""
+    import numpy as np
+    from propulsor.geometry.involute_spline import InvoluteSpline
+    from propulsor.parts.final_drive.carrier import carrier
+
+    class W(_Writer):
+        def add_solid(self, name, solid, expected_genus=None):
+            self.solids = getattr(self, "solids", []) + [(name, solid, expected_genus)]
+
+    dd = _design(p)
+    w, built = W(), {}
+    carrier(dd, w, built)
+    ((name, solid, genus),) = w.solids
+    assert name == "carrier" and genus == 0 and built == {"solids": {"carrier": solid}}
+    R = dd.ps.a_w + 55.0
+    poly = InvoluteSpline(120.0, 3.5, 34).shaft_loop().polyline(1e-4)
+    area = 0.5 * abs(np.dot(poly[:, 0], np.roll(poly[:, 1], 1)) - np.dot(poly[:, 1], np.roll(poly[:, 0], 1)))
+    expected = (math.pi * R ** 2 * 40.0 + 3 * math.pi * 27.5 ** 2 * (80.0 + 5.0) + math.pi * 60.0 ** 2 * (58 + 40 + 10)
+                + area * 140.0)
+    assert solid.Volume() == pytest.approx(expected, rel=1e-5)
+    bb = solid.BoundingBox()
+    assert (bb.zmin, bb.zmax) == (pytest.approx(-293.0, abs=1e-3), pytest.approx(80.0, abs=1e-3))
+    assert (bb.xmax, bb.ymin) == (pytest.approx(R, abs=1e-2), pytest.approx(-R, abs=1e-2))
+
+
+def test_carrier_pin_sweep_turns_the_pins_in_the_planet_bores(p, monkeypatch):
+    """One carrier turn in 18 steps (0.05 steps a degree as the policy): the pin Ø 55 in the planet's bore Ø 110
+    clears by the bearing's radial space 27.5 mm less the polylines' chord error, and never overlaps; the note, the
+    values and the checks of each planet."""
+    from propulsor import policy
+    from propulsor.parts.final_drive.carrier import pin_sweep_results, start_pin_sweep
+
+    monkeypatch.setenv("PROPULSOR_JOBS", "1")
+    monkeypatch.setattr(policy, "CARRIER_PIN_SWEEP_STEPS_PER_DEG", 0.0501)   # ceil(360·0.0501) = 19 steps
+    dd = _design(p)
+    w, built = _Writer(), {}
+    start_pin_sweep(dd, w, built)
+    pin_sweep_results(dd, w, built)
+    psi, res = built["pin_sweeps"]
+    assert "pending_pin_sweep" not in built
+    assert len(psi) == 19 and psi[1] == pytest.approx(2 * math.pi / 19, rel=1e-15) and psi[0] == 0.0
+    assert [r.name for r in res] == ["carrier_pins_planet1", "carrier_pins_planet2", "carrier_pins_planet3"]
+    for k in (1, 2, 3):
+        clear = w.derived[f"carrier_pins_planet{k}_min_clearance_mm"]
+        assert 27.49 < clear < 27.5 and type(clear) is float
+        assert w.derived[f"carrier_pins_planet{k}_max_overlap_mm2"] == 0.0
+    assert [c.name for c in w.checks] == [f"carrier_pins_planet{k}.{q}" for k in (1, 2, 3)
+                                          for q in ("overlap_area", "min_clearance")]
+    assert all(c.passed for c in w.checks)
+    least = min(w.derived[f"carrier_pins_planet{k}_min_clearance_mm"] for k in (1, 2, 3))
+    assert w.notes == [
+        f"Carrier: cheek Ø {2 * (dd.ps.a_w + 55.0):.1f} mm with 3 pins Ø 55 mm (planet bearing bore, Table 8), journal "
+        f"Ø 120 mm for bearings 3524 and 224, spline Эв. 120 × 3.5 × 34 over 140 mm. Swept over one carrier turn "
+        f"(19 steps) against every planet: max overlap 0 mm², least clearance {least:.4f} mm (pin to planet bore: "
+        f"the bearing's radial space)."]
+    assert w.notes[0].startswith("Carrier: cheek Ø 487.3 mm") and "least clearance 27.499" in w.notes[0]
+
+
+def test_carrier_pin_sweep_steps_and_segments(p):
+    """An explicit step count wins over the policy's; the planet's outline is cut in segments of at most 0.05 m."""
+    from propulsor.parts.final_drive.carrier import pin_sweep
+
+    dd = _design(p)
+    psi, res = pin_sweep(dd, 0.05)
+    assert len(psi) == 18 and psi[-1] == pytest.approx(2 * math.pi * 17 / 18, rel=1e-15)
+    for r in res:
+        assert float(r.clearance.min()) == pytest.approx(27.499003933, abs=1e-6)
+        assert float(r.overlap_area.max()) == 0.0
+
+
+# ---- traction.py: the traction characteristic in the final drive's build ------------------------------------------
+class _PlotWriter(_Writer):
+    def add_plot(self, name, fig):
+        self.plots = getattr(self, "plots", []) + [(name, fig)]
+
+
+def _traction(p):
+    from propulsor.parts.final_drive.traction import traction
+
+    dd = _design(p)
+    w = _PlotWriter()
+    traction(dd, w, {})
+    return dd, w
+
+
+def test_traction_not_drawn_for_a_standing_vehicle(p):
+    _, w = _traction(dataclasses.replace(p, design_speed_kmh=0.0))
+    assert w.notes == ["Traction characteristic (seed 004 ch. 5.1.3) not drawn: design_speed_kmh = 0 gives no lowest "
+                       "gear."]
+    assert w.tables == {} and w.derived == {} and w.checks == [] and not hasattr(w, "plots")
+
+
+def test_traction_table_values_checks_and_note_in_full(p):
+    from propulsor.laws import traction as tr
+
+    _, w = _traction(p)
+    v = dataclasses.replace(tr.VEHICLE_004, z=15, t=0.125)
+    eta = tr.transmission_efficiency([(1, 0, 0), (0, 0, 1), (0, 0, 0), (1, 0, 1), (0, 0, 1), (0, 0, 1)])
+    c = tr.traction_characteristic(v, 800.0, 7.852, 4, eta)
+    cols, rows = w.tables["traction_characteristic"]
+    assert cols == ["gear", "engine_mode", "n_k_rpm", "N_eob_kW", "U_tr", "V_kmh", "N_str_kW", "N_cr_kW", "f_g"]
+    assert rows == [[j + 1, k + 1, c.n_k[k], c.N_eob[k], c.U[j], c.V[j][k], c.N_str[j][k], c.N_cr[j][k], c.f_g[j][k]]
+                    for j in range(4) for k in range(8)]
+    d = w.derived
+    assert d["traction_eta_tr"] == eta and round(eta, 3) == 0.932
+    assert d["traction_q_ut"] == pytest.approx((50.0 / 7.852 / 1.25) ** (1 / 3), rel=1e-12)   # eq. 66 (q^3 = V_max/V_min/K_g)
+    assert round(d["traction_q_ut"], 3) == 1.721
+    assert [round(d[f"traction_gear{j}_U_tr"], 3) for j in (1, 2, 3, 4)] == [28.655, 13.323, 7.743, 4.5]
+    assert [round(d[f"traction_gear{j}_V_top_kmh"], 3) for j in (1, 2, 3, 4)] == [7.852, 16.888, 29.059, 50.0]
+    for j in (1, 2, 3, 4):
+        assert d[f"traction_gear{j}_f_g_max"] == max(c.f_g[j - 1])
+    assert len(d) == 2 + 3 * 4
+    f_c = 0.08 * math.cos(math.radians(30)) + math.sin(math.radians(30))      # eq. 64 on the steepest slope
+    air = 0.6 * 10.293 * (50 / 3.6) ** 2 / (50000 * 9.81)                    # eq. 57 at V_max
+    top = c.f_g[3][6]                                                         # Table 10 mode 7: n = n_N
+    assert c.n_k[6] == v.n_N
+    got = [(x.name, x.value, x.limit, x.message) for x in w.checks]
+    assert got == [
+        ("traction.first_gear_slope", max(c.f_g[0]), pytest.approx(f_c, rel=1e-12),
+         "largest f_g of gear 1 (0.600) against f_c = f·cos α + sin α = 0.569 of the steepest slope (seed 004 eq. 64: "
+         "f = 0.08, α = 30°)"),
+        ("traction.top_gear_road", top, pytest.approx(0.015 + 0.025 + air, rel=1e-12),
+         "f_g of the top gear at n_N (0.0469) against the design road f_gr + i = 0.04 plus air drag 0.0024 at "
+         "V_max = 50 km/h (seed 004 eq. 57)")]
+    assert w.notes == [
+        "Traction characteristic (seed 004 ch. 5.1.2–5.1.3, Fig. 18; table traction_characteristic, plot "
+        "traction_characteristic): 4 gears from V_min = 7.852 km/h, K_g = 1.25, q_ut = 1.7207 (thesis 1.721). Top "
+        "speeds 7.852, 16.888, 29.059, 50.000 km/h (thesis 7.852, 16.888, 29.058, 50; its 29.058 follows from eq. 65's "
+        "unrounded V_min = 7.85151, ours 29.059 from the printed 7.852); ratios eq. 69 U_tr = 28.655, 13.323, 7.743, "
+        "4.500 (thesis 28.655, —, 7.743, 4.5: the second is lost in the print). Ahead of this final drive (i = 4.5) "
+        "the gearbox ratios are 6.368, 2.961, 1.721, 1.000. Every Table 10 engine point in every gear: transmission "
+        "losses eq. 70 (gears 1–2) / eq. 71 (3–4) with the gearbox input at engine speed, running gear eq. 72, "
+        "η_tr = 0.932, η_r = 0.94; the thesis prints no f_g values (only Fig. 18). Verdict: gear 1 pulls f_g = 0.600 "
+        "at most (near the torque peak; 0.528 at rated power, on which eq. 65 sized V_min), above the 0.569 of a 30° "
+        "slope on f = 0.08 and above the adhesion f = 0.57 of eq. 40 — the tracks slip before the engine stalls, so "
+        "the design torque is the adhesion-limited one; the top gear pulls 0.0469 at V_max against 0.0424 needed. "
+        "Resistance lines f_c = f·cos α + sin α for f = 0.03, 0.06, 0.09, 0.12, 0.15 (the thesis gives only "
+        "0.03 … 0.15) and α = 0 … 30° by 5°."]
+
+
+@pytest.mark.parametrize("V_min, passed", [(8.0, True), (9.0, False)])
+def test_traction_first_gear_check_on_both_sides_of_the_slope(p, V_min, passed):
+    """Gear 1's largest pull falls as V_min rises (the same engine over a longer first gear): 8 km/h still climbs the
+    30° slope on f = 0.08 (f_c = 0.569), 9 km/h does not; the top gear's pull at V_max is the same."""
+    _, w = _traction(dataclasses.replace(p, design_speed_kmh=V_min))
+    c1, c2 = w.checks
+    assert c1.name == "traction.first_gear_slope" and c1.passed is passed and (c1.value >= c1.limit) is passed
+    assert c1.limit == pytest.approx(0.08 * math.cos(math.radians(30)) + 0.5, rel=1e-12)
+    assert c2.passed and c2.value == pytest.approx(0.04687601045403122, rel=1e-9)
+
+
+def test_traction_plot_as_drawn(p):
+    import numpy as np
+
+    from propulsor.laws import traction as tr
+
+    _, w = _traction(p)
+    ((name, fig),) = w.plots
+    assert name == "traction_characteristic"
+    ax, axr, axn = fig.axes
+    assert tuple(round(x, 3) for x in fig.get_size_inches()) == (9.0, 6.5)
+    assert [round(x, 4) for x in ax.get_position().bounds] == [0.08, 0.4111, 0.6065, 0.5389]
+    assert [round(x, 4) for x in axr.get_position().bounds] == [0.7374, 0.4111, 0.2426, 0.5389]
+    assert [round(x, 4) for x in axn.get_position().bounds] == [0.08, 0.08, 0.6065, 0.2449]
+    assert ax.get_title() == "Traction characteristic, 50 t carrier (seed 004 Fig. 18)"
+    assert ax.title.get_fontsize() == 9 and axr.title.get_fontsize() == 9
+    assert (ax.get_xlabel(), ax.get_ylabel()) == ("", "specific pull f_g")
+    assert (axr.get_title(), axr.get_xlabel()) == ("f_c = f·cos α + sin α", "slope α, °")
+    assert (axn.get_xlabel(), axn.get_ylabel()) == ("vehicle speed V, km/h", "engine speed n, rpm")
+    assert ax.get_ylim()[0] == 0.0
+    assert axr.get_shared_y_axes().joined(ax, axr) and axn.get_shared_x_axes().joined(ax, axn)
+    assert [ln.get_label() for ln in ax.lines] == ["gear 1, U_tr = 28.655", "gear 2, U_tr = 13.323",
+                                                  "gear 3, U_tr = 7.743", "gear 4, U_tr = 4.500"]
+    assert [ln.get_label() for ln in axn.lines] == ["gear 1", "gear 2", "gear 3", "gear 4"]
+    assert [ln.get_label() for ln in axr.lines] == ["f = 0.03", "f = 0.06", "f = 0.09", "f = 0.12", "f = 0.15"]
+    assert {(ln.get_marker(), ln.get_markersize(), ln.get_linewidth()) for ln in ax.lines} == {("o", 3, 1.2)}
+    assert {(ln.get_marker(), ln.get_markersize(), ln.get_linewidth()) for ln in axn.lines} == {("o", 3, 1.0)}
+    assert {(ln.get_marker(), ln.get_markersize(), ln.get_linewidth()) for ln in axr.lines} == {(".", 3, 0.9)}
+    for a in (ax, axr, axn):
+        grid = a.xaxis.get_gridlines()[0]
+        assert grid.get_visible() and grid.get_linewidth() == 0.4 and grid.get_alpha() == 0.6
+    assert [t.get_fontsize() for t in ax.get_legend().get_texts()] == [7] * 4
+    assert [t.get_fontsize() for t in axr.get_legend().get_texts()] == [6] * 5
+    assert list(axr.get_xticks()) == [0, 10, 20, 30]
+    for f, ln in zip(tr.RESISTANCE_F, axr.lines):
+        x, y = ln.get_data()
+        assert list(x) == pytest.approx(tr.RESISTANCE_ALPHA_DEG, abs=1e-12)
+        assert list(y) == pytest.approx([f * math.cos(math.radians(a)) + math.sin(math.radians(a))
+                                         for a in tr.RESISTANCE_ALPHA_DEG], rel=1e-12)
+    rows = w.tables["traction_characteristic"][1]
+    for j, ln in enumerate(ax.lines):
+        x, y = ln.get_data()
+        assert list(x) == [r[5] for r in rows if r[0] == j + 1] and list(y) == [r[8] for r in rows if r[0] == j + 1]
+        assert list(axn.lines[j].get_ydata()) == [r[2] for r in rows if r[0] == j + 1]
+    assert np.isfinite(ax.get_ylim()[1])
