@@ -9,6 +9,7 @@ import dataclasses
 import math
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from propulsor.params import load_params, read_part_file
@@ -711,3 +712,163 @@ def test_traction_plot_as_drawn(p):
         assert list(x) == [r[5] for r in rows if r[0] == j + 1] and list(y) == [r[8] for r in rows if r[0] == j + 1]
         assert list(axn.lines[j].get_ydata()) == [r[2] for r in rows if r[0] == j + 1]
     assert np.isfinite(ax.get_ylim()[1])
+
+
+# ---- design.py: the set, its refusals, the outlines with their bores and bolt holes --------------------------------
+def _refused(p, param, value, limit, **changes):
+    from propulsor.errors import InputError
+    from propulsor.parts.final_drive.design import design
+
+    with pytest.raises(InputError) as e:
+        design(dataclasses.replace(p, **changes))
+    assert (e.value.parameter, e.value.value, e.value.limit) == (param, value, limit)
+
+
+def test_planetary_set_of_the_part_file_is_coaxial(p):
+    from propulsor.parts.final_drive.design import planetary_set
+
+    ps = planetary_set(p)
+    assert (ps.z_sun, ps.z_planet, ps.z_ring, ps.m, ps.x_sun, ps.x_planet, ps.n_planets) == (16, 20, 56, 10.0, 0.5,
+                                                                                             0.5, 3)
+    assert (ps.z0, ps.x0, ps.b_sun, ps.b_planet, ps.b_ring) == (14, 0.04, 80.0, 80.0, 80.0)
+    assert ps.x_ring == pytest.approx(1.5, abs=1e-12) and abs(ps.coaxiality_mismatch) < 1e-9
+    ps = planetary_set(dataclasses.replace(p, ring_shift_for_coaxiality=False))
+    assert ps.x_ring == 1.417 and round(ps.mesh_planet_ring.a_w, 3) == 187.997
+
+
+def test_design_refuses_planets_that_cannot_be_assembled_or_collide(p):
+    _refused(p, "n_planets", 5, "assembly condition (seed 004 eq. 31): (z_sun + z_ring)/n_planets = 72/5 must be "
+                                "whole", n_planets=5)
+    from propulsor.parts.final_drive.design import planetary_set
+
+    ps6 = planetary_set(dataclasses.replace(p, n_planets=6))
+    assert ps6.assembly_ok and ps6.neighbour_gap < 0
+    _refused(p, "n_planets", 6, f"neighbour condition (seed 004 eq. 30): planet tip circles overlap by "
+                                f"{-ps6.neighbour_gap:.3f} mm at a_w = 188.643 mm", n_planets=6)
+    assert f"{-ps6.neighbour_gap:.3f}" == f"{ps6.d_a_planet - 2 * ps6.a_w * math.sin(math.pi / 6):.3f}"
+
+
+def test_design_takes_one_planet_and_four(p):
+    from propulsor.parts.final_drive.design import design
+
+    for n in (1, 4):                          # one planet has no neighbour; (16 + 56)/4 = 18
+        assert design(dataclasses.replace(p, n_planets=n)).ps.n_planets == n
+
+
+@pytest.mark.parametrize("field, limit_mm, text", [
+    ("sun_bore_mm", 125.0, "must be < d_f − 2m = 125.000 mm"),         # d_f = 145 mm, m = 10
+    ("planet_bore_mm", 165.0, "must be < d_f − 2m = 165.000 mm"),      # d_f = 185 mm
+])
+def test_design_refuses_bores_into_the_teeth_on_both_sides_of_the_limit(p, field, limit_mm, text):
+    from propulsor.parts.final_drive.design import design
+
+    _refused(p, field, limit_mm, text, **{field: limit_mm})
+    _refused(p, field, limit_mm + 1.0, text, **{field: limit_mm + 1.0})
+    dd = design(dataclasses.replace(p, **{field: limit_mm - 0.5, "sun_keyway": False}))
+    assert dd.outlines is not None
+
+
+def test_design_refuses_a_ring_rim_too_thin_for_its_bolts(p):
+    from propulsor.parts.final_drive.design import design, ring_outer_d
+
+    d_f = 610.4088761185126                       # the ring's root diameter, + 4 m = 650.409 mm
+    _refused(p, "ring_outer_d_mm", d_f + 40.0, "must be > d_f + 4m = 650.409 mm (rim under the bolts)",
+             ring_outer_d_mm=d_f + 40.0)
+    _refused(p, "ring_outer_d_mm", 600.0, "must be > d_f + 4m = 650.409 mm (rim under the bolts)",
+             ring_outer_d_mm=600.0)
+    q = dataclasses.replace(p, ring_outer_d_mm=d_f + 41.0, ring_bolts=0)
+    dd = design(q)
+    assert ring_outer_d(q, dd.ps) == d_f + 41.0 and len(dd.outlines[2].profile.holes) == 1   # the teeth only
+    # 0: the root diameter plus 8 modules
+    assert ring_outer_d(p, dd.ps) == pytest.approx(d_f + 80.0, rel=1e-12)
+
+
+def _bolt_holes(dd):
+    return [h for h in dd.outlines[2].profile.holes if len(h.segments) == 2]
+
+
+def test_ring_bolt_holes_on_the_middle_of_the_rim_between_the_teeth(p):
+    """12 holes Ø 18 on the circle half way between the root (d_f = 610.409 mm) and the rim (690.409 mm): r = 325.204
+    mm, the first at half a pitch (15°), each a clockwise circle (a hole)."""
+    from propulsor.parts.final_drive.design import design
+
+    dd = design(p)
+    holes = _bolt_holes(dd)
+    assert len(dd.outlines[2].profile.holes) == 1 + 12 and len(holes) == 12
+    r_bc = 0.25 * (690.4088761185126 + 610.4088761185126)
+    for k, h in enumerate(holes):
+        a = 2 * math.pi * (k + 0.5) / 12
+        for s in h.segments:
+            assert s.radius == 9.0
+            assert s.center[0] == pytest.approx(r_bc * math.cos(a), abs=1e-9)
+            assert s.center[1] == pytest.approx(r_bc * math.sin(a), abs=1e-9)
+        assert h.signed_area() < 0
+    assert design(dataclasses.replace(p, ring_bolts=1)).outlines[2].profile.holes[1].segments[0].center == (
+        pytest.approx(-r_bc, abs=1e-9), pytest.approx(0.0, abs=1e-9))
+    assert len(design(dataclasses.replace(p, ring_bolts=0)).outlines[2].profile.holes) == 1
+
+
+def test_ring_bolt_refusals_on_both_sides_of_their_limits(p):
+    """The rim is 40 mm: a hole must be < 0.6·40 = 24 mm; holes of 23 mm on r = 325.204 mm need a pitch
+    2r·sin(π/n) > 34.5 mm: 59 fit, 60 do not."""
+    from propulsor.parts.final_drive.design import design
+
+    _refused(p, "ring_bolt_d_mm", 24.0, "must be < 0.6 × rim width = 24.000 mm", ring_bolt_d_mm=24.0)
+    assert len(_bolt_holes(design(dataclasses.replace(p, ring_bolt_d_mm=23.0)))) == 12
+    r_bc = 0.25 * (690.4088761185126 + 610.4088761185126)
+    assert 2 * r_bc * math.sin(math.pi / 60) <= 34.5 < 2 * r_bc * math.sin(math.pi / 59)
+    _refused(p, "ring_bolts", 60, f"holes of 23.0 mm on a {2 * r_bc:.1f} mm bolt circle need a pitch > 1.5 d: at most "
+                                  f"59 holes", ring_bolt_d_mm=23.0, ring_bolts=60)
+    assert len(_bolt_holes(design(dataclasses.replace(p, ring_bolt_d_mm=23.0, ring_bolts=59)))) == 59
+
+
+def test_gear_outlines_of_the_part_file(p):
+    """Sun and planet generated by the rack, thinned by E_sn, to the tips of the set; the sun's bore Ø 80 with its
+    keyway, the planet's Ø 110; the ring by the shaper, to its tip, with the rim Ø 690.409."""
+    from propulsor.parts.final_drive.design import design
+
+    dd = design(p)
+    sun, planet, ring = dd.outlines
+    ps = dd.ps
+    assert (sun.d_f, planet.d_f) == (pytest.approx(145.0, abs=0.05), pytest.approx(185.0, abs=0.05))
+    assert ring.d_f == pytest.approx(610.409, abs=0.05)
+    for o, d_a in ((sun, ps.d_a_sun), (planet, ps.d_a_planet)):
+        r = [float(np.hypot(*o.profile.outer.polyline(1e-3).T).max())]
+        assert r[0] == pytest.approx(0.5 * d_a, abs=0.01)
+    r_ring = np.hypot(*ring.profile.outer.polyline(1e-3).T)
+    assert r_ring.max() == pytest.approx(0.5 * 690.4088761185126, abs=1e-6)
+    sun_hole = np.hypot(*sun.profile.holes[0].polyline(1e-3).T)
+    assert sun_hole.min() == pytest.approx(40.0, abs=1e-6) and sun_hole.max() > 40.5     # the keyway
+    pl_hole = np.hypot(*planet.profile.holes[0].polyline(1e-3).T)
+    assert (pl_hole.min(), pl_hole.max()) == (pytest.approx(55.0, abs=1e-6), pytest.approx(55.0, abs=1e-6))
+    r_tip = np.hypot(*ring.profile.holes[0].polyline(1e-3).T).min()
+    assert r_tip == pytest.approx(0.5 * ps.d_a_ring, abs=0.01)
+    # the solids' teeth thinned by E_sn (the ring's spaces widened): each outline differs from the unthinned one
+    assert p.tooth_thinning_mm > 0
+    plain = design(dataclasses.replace(p, tooth_thinning_mm=0.0)).outlines
+    for a, b in ((dd.outlines[0].profile.outer, plain[0].profile.outer),
+                 (dd.outlines[1].profile.outer, plain[1].profile.outer),
+                 (dd.outlines[2].profile.holes[0], plain[2].profile.holes[0])):     # the ring's teeth: a hole
+        assert abs(a.signed_area()) != pytest.approx(abs(b.signed_area()), rel=1e-9)
+    bare = design(dataclasses.replace(p, sun_bore_mm=0.0, planet_bore_mm=0.0, sun_keyway=False)).outlines
+    assert len(bare[0].profile.holes) == 0 and len(bare[1].profile.holes) == 0
+    keyless = design(dataclasses.replace(p, sun_keyway=False)).outlines[0]
+    kh = np.hypot(*keyless.profile.holes[0].polyline(1e-3).T)
+    assert kh.max() == pytest.approx(40.0, abs=1e-6)
+    assert ring.profile.name == dd.outlines[2].profile.name and ring.profile.name
+
+
+def test_body_offsets_turn_a_tooth_onto_x():
+    from propulsor.parts.final_drive.design import body_offsets
+
+    assert body_offsets(56) == (-0.5 * math.pi, -0.5 * math.pi - math.pi / 56)
+
+
+def test_feasible_refuses_what_design_refuses(p):
+    from propulsor.errors import InputError
+    from propulsor.parts.final_drive.design import feasible
+
+    assert feasible(p) is None
+    with pytest.raises(InputError) as e:
+        feasible(dataclasses.replace(p, n_planets=5))
+    assert e.value.parameter == "n_planets"
