@@ -872,3 +872,176 @@ def test_feasible_refuses_what_design_refuses(p):
     with pytest.raises(InputError) as e:
         feasible(dataclasses.replace(p, n_planets=5))
     assert e.value.parameter == "n_planets"
+
+
+# ---- proofs.py: the sheet and conditions, the generated outlines, the mesh sweep -----------------------------------
+def test_dms_rounds_seconds_to_hundredths():
+    from propulsor.parts.final_drive.proofs import dms
+
+    assert dms(math.radians(20.5)) == "20°30'00.00\""
+    assert dms(math.radians(1 + 1 / 60 + 1.5 / 3600)) == "1°01'01.50\""
+    assert dms(math.radians(26.280223608488676)) == "26°16'48.80\""          # α_w of the corrected set
+    assert dms(0.0) == "0°00'00.00\""
+
+
+def test_sheet_and_conditions_of_the_corrected_set(p):
+    from propulsor.parts.final_drive.proofs import sheet_and_conditions
+
+    dd = _design(p)
+    ps = dd.ps
+    w = _Writer()
+    sheet_and_conditions(dd, w, {})
+    d = w.derived
+    sp, pr = ps.mesh_sun_planet, ps.mesh_planet_ring
+    assert d["ratio_i_1H"] == 1 + 56 / 16 and d["n_planets"] == 3
+    assert d["x_ring_used"] == ps.x_ring == d["x_ring_for_coaxiality"] == pytest.approx(1.5, abs=1e-12)
+    # α_w: cos α_w = a·cos α/a_w with a = 180 mm (sun-planet) and the same a_w for the ring
+    alpha_w = math.degrees(math.acos(180.0 * math.cos(math.radians(20)) / d["a_w_sun_planet_mm"]))
+    assert d["alpha_w_sun_planet_deg"] == pytest.approx(alpha_w, rel=1e-12)
+    assert d["alpha_w_planet_ring_deg"] == pytest.approx(alpha_w, rel=1e-12)
+    assert d["alpha_w_sun_planet_dms"] == d["alpha_w_planet_ring_dms"] == "26°16'48.80\""
+    assert d["a_w_sun_planet_mm"] == sp.a_w and d["a_w_planet_ring_mm"] == pr.a_w
+    assert round(sp.a_w, 3) == round(pr.a_w, 3) == 188.643 and abs(d["coaxiality_mismatch_mm"]) < 1e-9
+    # neighbour gap 2·a_w·sin(π/3) − d_a,planet (eq. 30); assembly (16 + 56)/3 = 24 (eq. 31)
+    assert d["neighbour_gap_mm"] == pytest.approx(2 * sp.a_w * math.sin(math.pi / 3) - ps.d_a_planet, rel=1e-12)
+    assert d["assembly_quotient"] == 24.0
+    for tag, g, z, da in (("sun", ps.sun, 16, ps.d_a_sun), ("planet", ps.planet, 20, ps.d_a_planet),
+                          ("ring", ps.ring, 56, ps.d_a_ring)):
+        assert d[f"d_{tag}_mm"] == 10.0 * z
+        assert d[f"d_b_{tag}_mm"] == pytest.approx(10.0 * z * math.cos(math.radians(20)), rel=1e-12)
+        assert (d[f"d_a_{tag}_mm"], d[f"d_f_{tag}_mm"], d[f"s_n_{tag}_mm"]) == (da, g.d_f, g.s_n)
+        assert (d[f"k_W_{tag}"], d[f"W_k_{tag}_mm"], d[f"D_roller_{tag}_mm"]) == (g.k_W, g.W_k, g.D_recommended)
+        assert d[f"M_{tag}_mm"] == g.M(g.D_recommended) and d[f"s_na_{tag}_mm"] == g.tip_thickness(da)
+    assert (d["d_f_sun_mm"], d["d_f_planet_mm"], round(d["d_f_ring_mm"], 3)) == (145.0, 185.0, 610.409)
+    assert [round(d[f"k_W_{t}"]) for t in ("sun", "planet", "ring")] == [3, 3, 9]
+    # operating pitch diameters d_w = d·cos α/cos α_w
+    f = math.cos(math.radians(20)) / math.cos(math.radians(alpha_w))
+    assert [d[k] for k in ("d_w_sun_mm", "d_w_planet_sun_mesh_mm", "d_w_planet_ring_mesh_mm", "d_w_ring_mm")] == \
+        pytest.approx([160 * f, 200 * f, 200 * f, 560 * f], rel=1e-12)
+    assert d["epsilon_alpha_sun_planet"] == ps.epsilon_alpha_sun_planet and round(ps.epsilon_alpha_sun_planet, 4) == 1.227
+    assert d["epsilon_alpha_planet_ring"] == ps.epsilon_alpha_planet_ring
+    conds = ps.conditions()
+    assert [(c.name, c.passed, c.value, c.limit, c.unit, c.message) for c in w.checks] == [
+        (c.name, c.passed, c.value, c.limit, c.unit, c.message) for c in conds]
+    assert len(conds) == 19 and all(c.passed for c in conds)
+    cols = ["quantity", "symbol", "unit", "gear_1", "gear_2"]
+    made = ["tooth thickness allowance of the solids (ring: space widening)", "E_sn", "mm", 0.15, 0.15]
+    assert w.tables["sheet_sun_planet"] == (cols, [list(r) for r in sp.sheet(d_a1=ps.d_a_sun, d_a2=ps.d_a_planet)]
+                                            + [made])
+    assert w.tables["sheet_planet_ring"] == (cols, [list(r) for r in pr.sheet(d_a1=ps.d_a_planet, d_a2=ps.d_a_ring)]
+                                             + [made])
+    assert w.tables["conditions"] == (["name", "passed", "value", "limit", "unit", "message"],
+                                      [[c.name, c.passed, c.value, c.limit, c.unit, c.message] for c in conds])
+
+
+def test_the_thesis_set_fails_coaxiality_in_its_checks():
+    from propulsor.parts.final_drive.proofs import sheet_and_conditions
+
+    dd = _design(_params(THESIS))
+    w = _Writer()
+    sheet_and_conditions(dd, w, {})
+    assert [c.name for c in w.checks if not c.passed] == ["coaxiality"]
+    assert w.derived["x_ring_used"] == 1.417 and w.derived["x_ring_for_coaxiality"] == pytest.approx(1.5, abs=1e-12)
+    assert round(w.derived["coaxiality_mismatch_mm"], 3) == -0.646     # planet–ring a_w 187.997 − 188.643 mm
+    assert w.derived["alpha_w_planet_ring_dms"] == "25°52'43.83\"" and round(w.derived["alpha_w_planet_ring_deg"], 4) == 25.8788
+
+
+def test_outline_checks_of_the_generated_outlines(p):
+    from propulsor.parts.final_drive.proofs import outline_checks
+
+    dd = _design(p)
+    w = _Writer()
+    outline_checks(dd, w, {})
+    sun, planet, ring = dd.outlines
+    assert w.derived == {"d_f_sun_generated_mm": sun.d_f, "d_f_planet_generated_mm": planet.d_f,
+                         "d_f_ring_generated_mm": ring.d_f, "d_Ff_sun_mm": sun.d_Ff, "d_Ff_planet_mm": planet.d_Ff,
+                         "ring_outer_d_mm": pytest.approx(610.4088761185126 + 80.0, rel=1e-12)}
+    assert (round(sun.d_Ff, 4), round(planet.d_Ff, 4)) == (152.4958, 191.9766)
+    assert [(c.name, c.passed, c.message) for c in w.checks] == [
+        ("undercut_sun_generated", True, "rack envelope does not undercut the sun (form diameter d_Ff = 152.4958 mm)"),
+        ("undercut_planet_generated", True,
+         "rack envelope does not undercut the planet (form diameter d_Ff = 191.9766 mm)")]
+
+
+def test_outline_checks_flag_an_undercut_sun(p):
+    """z = 16 without its shift: x = 0 < x_min = 0.064, the rack undercuts the sun."""
+    from propulsor.parts.final_drive.proofs import outline_checks
+
+    dd = _design(dataclasses.replace(p, x_sun=0.0, x_planet=0.0, ring_shift_for_coaxiality=True))
+    w = _Writer()
+    outline_checks(dd, w, {})
+    c = w.checks[0]
+    assert (c.name, c.passed) == ("undercut_sun_generated", False)
+    assert c.message == f"rack envelope undercuts the sun (form diameter d_Ff = {dd.outlines[0].d_Ff:.4f} mm)"
+
+
+def test_member_poses_turn_the_sun_and_planets_with_the_carrier(p):
+    """Ring fixed; the sun at i_1H·ψ; planet k on the orbit at ψ + 2πk/3: the poses' rotation and translation."""
+    from propulsor.gears.planetary_kinematics import PlanetaryKinematics
+    from propulsor.parts.final_drive.proofs import member_poses
+
+    dd = _design(p)
+    psi = [0.0, 0.1, 0.25]
+    M_sun, M_ring, M_pl = member_poses(p, dd.ps, psi)
+    kin = PlanetaryKinematics(16, 20, 56, 3, dd.ps.a_w)
+    assert M_sun.shape == M_ring.shape == (3, 2, 3) and len(M_pl) == 3
+    a = kin.sun_angle(np.array(psi)) - 0.5 * math.pi
+    assert M_sun[:, 0, 0] == pytest.approx(np.cos(a), abs=1e-12) and M_sun[:, 1, 0] == pytest.approx(np.sin(a), abs=1e-12)
+    assert np.all(M_sun[:, :, 2] == 0.0) and np.all(M_ring[:, :, 2] == 0.0)
+    r = kin.ring_rotation - 0.5 * math.pi - math.pi / 56
+    assert M_ring[:, 0, 0] == pytest.approx([math.cos(r)] * 3, abs=1e-12)
+    assert M_ring[:, 1, 0] == pytest.approx([math.sin(r)] * 3, abs=1e-12)
+    for k in range(3):
+        c = kin.planet_centre(np.array(psi), k)
+        assert M_pl[k][:, :, 2] == pytest.approx(c, abs=1e-9)
+        ang = kin.planet_angle(np.array(psi), k) - 0.5 * math.pi
+        assert M_pl[k][:, 0, 0] == pytest.approx(np.cos(ang), abs=1e-12)
+        assert np.hypot(*c.T) == pytest.approx([dd.ps.a_w] * 3, rel=1e-12)
+
+
+def test_carrier_sweep_clears_every_mesh_of_the_corrected_set(p, monkeypatch):
+    """18 steps a turn: sun-planet and planet-ring of all three planets clear by 0.14 mm (backlash of E_sn = 0.15 mm
+    thinning less the outlines' chord error) and never overlap; the sweep counts its meshes to the build."""
+    from propulsor.parts.final_drive.proofs import start_sweep, sweep_results
+
+    monkeypatch.setenv("PROPULSOR_JOBS", "1")
+    q = dataclasses.replace(p)
+    object.__setattr__(q, "sweep_steps_per_deg", 0.0501)   # ceil(360·0.0501) = 19 steps (below the parameter's least)
+    dd = _design(q)
+
+    class W(_PlotWriter):
+        def progress(self, *a):
+            self.said = getattr(self, "said", []) + [a]
+
+    w, built = W(), {}
+    start_sweep(dd, w, built)
+    assert w.said[0] == ("interference sweep over one carrier turn (19 steps), in a second process while the solids "
+                         "are built",)
+    sweep_results(dd, w, built)
+    sweeps = built["sweeps"]
+    assert "pending_sweep" not in built
+    names = ["mesh_sun_planet1", "mesh_planet1_ring", "mesh_sun_planet2", "mesh_planet2_ring", "mesh_sun_planet3",
+             "mesh_planet3_ring"]
+    assert [s.name for s in sweeps] == names
+    psi = sweeps[0].psi
+    assert len(psi) == 19 and psi[1] == pytest.approx(2 * math.pi / 19, rel=1e-15)
+    for s in sweeps:
+        assert s.overlap_mm2.max() == 0.0 and 0.13 < s.clearance_mm.min() < 0.15
+        assert w.derived[f"{s.name}_min_clearance_mm"] == float(s.clearance_mm.min())
+        assert w.derived[f"{s.name}_max_overlap_mm2"] == 0.0
+    cols, rows = w.tables["carrier_sweep"]
+    assert cols == ["psi_deg"] + [f"{n}_{q}" for n in names for q in ("overlap_mm2", "clearance_mm")]
+    assert len(rows) == 19 and rows[1][0] == pytest.approx(360 / 19, rel=1e-12)
+    assert rows[3][1:] == [v for s in sweeps for v in (s.overlap_mm2[3], s.clearance_mm[3])]
+    assert [c.name for c in w.checks] == [f"{n}.{q}" for n in names for q in ("overlap_area", "min_clearance")]
+    ((name, fig),) = w.plots
+    ax = fig.axes[0]
+    assert name == "mesh_clearance" and [ln.get_label() for ln in ax.lines] == names
+    assert {ln.get_linewidth() for ln in ax.lines} == {0.8}
+    assert list(ax.lines[2].get_xdata()) == pytest.approx(list(np.degrees(psi)), rel=1e-12)
+    assert list(ax.lines[2].get_ydata()) == list(sweeps[2].clearance_mm)
+    assert (ax.get_xlabel(), ax.get_ylabel(), ax.get_title()) == (
+        "carrier angle ψ, deg", "least clearance, mm (negative: penetration)",
+        "Planetary final drive: clearance of every mesh over one carrier turn")
+    assert [t.get_fontsize() for t in ax.get_legend().get_texts()] == [7] * 6
+    assert w.said[-1] == ("interference sweep done",)
