@@ -250,6 +250,65 @@ def test_a_light_torque_leaves_the_slack_side_tensioned(p):
     assert w.derived["shaft_sigma_bending_MPa"] == pytest.approx(Q * 222.0 / 169646.003, rel=1e-12)
 
 
+def test_the_ring_root_is_rated_with_its_rim_its_fillet_and_its_thinned_tooth(p):
+    """A rim of 30 mm under the ring's root (outer Ø = d_f + 60 mm, no bolts): s_R/m = 3 < 3.5, so ISO 6336-3's rim
+    factor Y_B = 1.15·ln(8.324/3) = 1.1735 raises the ring's root stress over the default rim (40 mm: Y_B = 1)."""
+    from propulsor.parts.final_drive.design import planetary_set
+    from propulsor.parts.final_drive.strength import mesh_stresses, ring_root
+
+    ps = planetary_set(p)
+    r = ring_root(p, ps)
+    assert (r.s, r.rho_fP, r.s_R) == (pytest.approx(ps.ring.s - 0.15, rel=1e-15), 2.0,
+                                      pytest.approx(40.0, rel=1e-12))
+    thin = dataclasses.replace(p, ring_outer_d_mm=ps.ring.d_f + 60.0, ring_bolts=0)
+    assert ring_root(thin, ps).s_R == pytest.approx(30.0, rel=1e-12)
+    pr0, pr = mesh_stresses(p, ps)[1], mesh_stresses(thin, ps)[1]
+    assert pr0.Y_B2 == 1.0 and pr.Y_B2 == pytest.approx(1.15 * math.log(8.324 / 3.0), rel=1e-12)
+    assert pr.sigma_F2_B == pytest.approx(pr0.sigma_F2_B * pr.Y_B2, rel=1e-12)
+    _, w = _strength(thin)
+    assert w.derived["strength_planet_ring_sigma_F_ring_method_B_MPa"] == pytest.approx(pr.sigma_F2_B, rel=1e-12)
+
+
+def test_the_accuracy_grade_reaches_both_meshes(p):
+    """Grade 7 instead of 6: K_v (ISO 6336-1 method B) and f_ma (f_Hβ of ISO 1328-1 grade 7: √2 times grade 6's) of
+    both meshes, and the thesis set's planet–ring rating at its own centre distance in the note."""
+    from propulsor.gears.iso6336 import MeshLoad, mesh_stress
+
+    q = dataclasses.replace(_params(THESIS), accuracy_grade=7)
+    dd, w = _strength(q)
+    ps = dd.ps
+    T1 = M_VK * OMEGA / I_SIL / 3
+    v = math.pi * 0.160 * N_CARRIER * 3.5
+    for tag in ("sun_planet", "planet_ring"):
+        s6 = _strength(_params(THESIS))[1].derived[f"strength_{tag}_K_Hbeta"]
+        assert w.derived[f"strength_{tag}_K_Hbeta"] > s6
+    sp7 = mesh_stress(ps.mesh_sun_planet, ps.d_a_sun, ps.d_a_planet, 75.0,
+                      MeshLoad(T1, v, 1.0, 7, pinion_torsion=True, pinion_meshes=3), E_sn=q.tooth_thinning_mm)
+    assert w.derived["strength_sun_planet_face_width_required_mm"] > 0
+    assert w.derived["strength_sun_planet_sigma_H_MPa"] == pytest.approx(sp7.sigma_H, rel=1e-12)
+    assert w.derived["strength_sun_planet_K_v"] == pytest.approx(sp7.K_v, rel=1e-12)
+    own7 = mesh_stress(ps.mesh_planet_ring, ps.d_a_planet, ps.d_a_ring, 75.0, MeshLoad(T1 * 20 / 16, v, 1.0, 7))
+    own6 = mesh_stress(ps.mesh_planet_ring, ps.d_a_planet, ps.d_a_ring, 75.0, MeshLoad(T1 * 20 / 16, v, 1.0, 6))
+    assert f"{own7.sigma_H:.1f}" != f"{own6.sigma_H:.1f}"
+    assert f"— the thesis prints 1.205 —, σ_H = {own7.sigma_H:.1f} MPa)" in w.notes[1]
+    pr7 = mesh_stress(ps.mesh_planet_ring, ps.d_a_planet, ps.d_a_ring, 75.0, MeshLoad(T1 * 20 / 16, v, 1.0, 7),
+                      a_w=ps.a_w)
+    assert w.derived["strength_planet_ring_sigma_H_MPa"] == pytest.approx(pr7.sigma_H, rel=1e-12)
+
+
+def test_strength_says_what_it_does():
+    class W(_Writer):
+        def progress(self, *a):
+            self.said = getattr(self, "said", []) + [a]
+
+    from propulsor.parts.final_drive.design import design
+    from propulsor.parts.final_drive.strength import strength
+
+    w = W()
+    strength(design(_params()), w, {})
+    assert w.said == [("strength: ISO 6336 stresses, bearings, spline, shaft",)]
+
+
 _DESCRIBED = {
     "S_H_static": ("", "static contact safety σ_Hmax/σ_H, σ_Hmax = 44·HRC (seed 004 ch. 4.1)"),
     "face_width_required_mm": ("mm", "least face width meeting the static S_H and S_F (root stress by ISO 6336-3 "
