@@ -426,6 +426,7 @@ def test_fatigue_checks_in_full(p):
     _, w = _fatigue(p)
     g = _golden()["checks"]
     assert [[c.name, c.limit, c.message] for c in w.checks] == [[x[0], x[2], x[3]] for x in g]
+    assert [c.unit for c in w.checks] == [""] * 8                 # safeties: ratios, no unit
     assert [c.value for c in w.checks] == pytest.approx([x[1] for x in g], rel=1e-9)
     d = w.derived
     for c in w.checks:
@@ -514,6 +515,50 @@ def test_fatigue_describes_its_values_in_full(p):
     assert w.described == want and list(w.described) == list(want)
 
 
+def test_fatigue_says_what_it_does(p):
+    from propulsor.parts.final_drive.design import design
+    from propulsor.parts.final_drive.fatigue import fatigue
+
+    class W(_Writer):
+        def progress(self, *a):
+            self.said = getattr(self, "said", []) + [a]
+
+    w = W()
+    fatigue(design(p), w, {})
+    assert w.said == [("strength: ISO 6336 fatigue safeties and factor table",)]
+
+
+@pytest.mark.parametrize("rho_star, q_s, outside", [(0.135, 8.348, True), (0.145, 7.760, False)])
+def test_fatigue_table_says_when_q_s_leaves_the_formulas_range(p, rho_star, q_s, outside):
+    """ISO 6336-3's Y_S formula holds for 1 <= q_s < 8.  The ring's root fillet is the shaper's tip radius: 1.35 mm
+    makes q_s = s_Fn/(2·ρ_F) = 8.35 (the basis says so), 1.45 mm 7.76 (it does not)."""
+    _, w = _fatigue(dataclasses.replace(p, shaper_tip_radius_star=rho_star))
+    rows = {(r[0], r[1], r[2], r[3]): r for r in w.tables["strength_factors"][1]}
+    got = rows[("planet_ring", "bending", "ring", "q_s")][4]
+    assert round(got, 3) == q_s
+    basis = rows[("planet_ring", "bending", "ring", "Y_S")][9]
+    rho = rows[("planet_ring", "bending", "ring", "Y_S")][9].split("ρ_F = ")[1].split(" mm")[0]
+    assert basis == f"method B, ρ_F = {rho} mm" + (f"; q_s = {got:.2f} outside the formula's 1 <= q_s < 8" if outside
+                                                  else "")
+    for g in ("sun", "planet"):            # the rack's fillet: q_s = 2.5 ... 2.6, inside
+        assert "outside" not in rows[("sun_planet", "bending", g, "Y_S")][9]
+
+
+def test_fatigue_table_gives_the_ring_its_rim_factor_and_the_planet_none(p):
+    """A 30 mm rim under the ring's root (s_R/m = 3 < 3.5): Y_B = 1.15·ln(8.324/3) for the ring; the planet in the same
+    mesh, an external gear with a solid rim, keeps Y_B = 1."""
+    from propulsor.parts.final_drive.design import planetary_set
+
+    d_f = planetary_set(p).ring.d_f
+    _, w = _fatigue(dataclasses.replace(p, ring_outer_d_mm=d_f + 60.0, ring_bolts=0))
+    rows = {(r[0], r[1], r[2], r[3]): r for r in w.tables["strength_factors"][1]}
+    ring, planet = rows[("planet_ring", "bending", "ring", "Y_B")], rows[("planet_ring", "bending", "planet", "Y_B")]
+    assert ring[4] == pytest.approx(1.15 * math.log(8.324 / 3.0), rel=1e-12)
+    assert ring[9] == "internal gear: the rim under the root (1 from s_R >= 3.5·m)"
+    assert planet[4] == 1.0 and planet[9] == "solid rim"
+    assert rows[("sun_planet", "bending", "sun", "Y_B")][4] == 1.0
+
+
 def test_fatigue_number_formats_at_their_limits():
     from propulsor.parts.final_drive.fatigue import _fmt, _hours, _life
 
@@ -522,6 +567,7 @@ def test_fatigue_number_formats_at_their_limits():
     assert [_fmt(x) for x in (9.99994, 10.0, -5.0, 99999.99, 1e5, 4.397e6)] == [
         "9.9999", "10.00", "-5.0000", "99999.99", "1e+05", "4.397e+06"]
     assert _hours(math.inf, 10.0) == math.inf and _hours(1e6, 0.0) == math.inf and _hours(1e6, 1e3) == 1e3
+    assert _hours(1e6, 0.5) == 2e6 and _hours(1e6, 1.0) == 1e6      # a slow gear: fewer than 1 cycle an hour
     assert _life(math.inf, "S_Hmin") == "never falls to S_Hmin: the life factor's floor 0.85 at 1e10 cycles keeps it above"
     assert _life(242.48549, "S_Fmin") == "falls to S_Fmin after 242.5 h"
 
