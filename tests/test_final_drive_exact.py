@@ -647,6 +647,23 @@ def test_carrier_solid_is_cheek_pins_journal_and_spline(p):
     assert (bb.xmax, bb.ymin) == (pytest.approx(R, abs=1e-2), pytest.approx(-R, abs=1e-2))
 
 
+def test_carrier_says_what_it_builds(p, monkeypatch):
+    from propulsor.parts.final_drive import carrier as car
+
+    monkeypatch.setattr(car, "carrier_solid", lambda dd: "the solid")      # built and measured above
+
+    class W(_Writer):
+        def progress(self, *a):
+            self.said = getattr(self, "said", []) + [a]
+
+        def add_solid(self, *a, **k):
+            pass
+
+    w = W()
+    car.carrier(_design(p), w, {})
+    assert w.said == [("carrier: cheek, planet pins, bearing journal, spline Эв. 120 × 3.5 × 34",)]
+
+
 def test_carrier_pin_sweep_turns_the_pins_in_the_planet_bores(p, monkeypatch):
     """One carrier turn in 18 steps (0.05 steps a degree as the policy): the pin Ø 55 in the planet's bore Ø 110
     clears by the bearing's radial space 27.5 mm less the polylines' chord error, and never overlaps; the note, the
@@ -773,6 +790,42 @@ def test_traction_first_gear_check_on_both_sides_of_the_slope(p, V_min, passed):
     assert c2.passed and c2.value == pytest.approx(0.04687601045403122, rel=1e-9)
 
 
+def test_traction_is_drawn_for_any_moving_vehicle_and_says_so(p):
+    """0.5 km/h is slow, not standing: the characteristic is drawn (q_ut = (50/0.5/1.25)^(1/3)); the progress line."""
+    from propulsor.parts.final_drive.traction import traction
+
+    class W(_PlotWriter):
+        def progress(self, *a):
+            self.said = getattr(self, "said", []) + [a]
+
+    w = W()
+    traction(_design(dataclasses.replace(p, design_speed_kmh=0.5)), w, {})
+    assert w.said == [("traction characteristic (seed 004 ch. 5.1.2-5.1.3)",)]
+    assert w.derived["traction_q_ut"] == pytest.approx((50.0 / 0.5 / 1.25) ** (1 / 3), rel=1e-12)
+    assert [c.unit for c in w.checks] == ["", ""] and len(w.plots) == 1
+
+
+@pytest.mark.parametrize("changes", [{"sprocket_teeth": 30}, {"track_pitch_mm": 250.0}])
+def test_traction_ratios_follow_the_sprocket(p, changes):
+    """The ratio eq. 69 takes the engine to the track over the sprocket's radius z·t/(2π): twice the teeth or twice the
+    pitch needs twice the ratio for the same speeds (and the same pulls)."""
+    _, w0 = _traction(p)
+    _, w = _traction(dataclasses.replace(p, **changes))
+    for j in (1, 2, 3, 4):
+        assert w.derived[f"traction_gear{j}_U_tr"] == pytest.approx(2 * w0.derived[f"traction_gear{j}_U_tr"], rel=1e-12)
+        assert w.derived[f"traction_gear{j}_f_g_max"] == pytest.approx(w0.derived[f"traction_gear{j}_f_g_max"],
+                                                                        rel=1e-12)
+
+
+def test_traction_plot_draws_without_a_warning(p):
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        _, w = _traction(p)
+    assert len(w.plots) == 1
+
+
 def test_traction_plot_as_drawn(p):
     import numpy as np
 
@@ -816,6 +869,7 @@ def test_traction_plot_as_drawn(p):
         x, y = ln.get_data()
         assert list(x) == [r[5] for r in rows if r[0] == j + 1] and list(y) == [r[8] for r in rows if r[0] == j + 1]
         assert list(axn.lines[j].get_ydata()) == [r[2] for r in rows if r[0] == j + 1]
+        assert list(axn.lines[j].get_xdata()) == [r[5] for r in rows if r[0] == j + 1]
     assert np.isfinite(ax.get_ylim()[1])
 
 
