@@ -688,6 +688,7 @@ def test_carrier_pin_sweep_turns_the_pins_in_the_planet_bores(p, monkeypatch):
     assert [c.name for c in w.checks] == [f"carrier_pins_planet{k}.{q}" for k in (1, 2, 3)
                                           for q in ("overlap_area", "min_clearance")]
     assert all(c.passed for c in w.checks)
+    assert [c.limit for c in w.checks if c.name.endswith("min_clearance")] == [0.0] * 3   # touching is the limit
     least = min(w.derived[f"carrier_pins_planet{k}_min_clearance_mm"] for k in (1, 2, 3))
     assert w.notes == [
         f"Carrier: cheek Ø {2 * (dd.ps.a_w + 55.0):.1f} mm with 3 pins Ø 55 mm (planet bearing bore, Table 8), journal "
@@ -707,6 +708,20 @@ def test_carrier_pin_sweep_steps_and_segments(p):
     for r in res:
         assert float(r.clearance.min()) == pytest.approx(27.499003933, abs=1e-6)
         assert float(r.overlap_area.max()) == 0.0
+
+
+def test_carrier_pin_sweep_finds_pins_wider_than_the_planet_bores(p):
+    """Planet bores of Ø 50 mm on the Ø 55 pins (the solid refuses them; the sweep measures them): at every step each
+    pin overlaps its planet by the ring between the two circles, π·(27.5² − 25²) = 412.3 mm², and the checks fail."""
+    from propulsor.parts.final_drive.carrier import pin_sweep
+
+    dd = _design(dataclasses.replace(p, planet_bore_mm=50.0))
+    psi, res = pin_sweep(dd, 0.05)
+    ring = math.pi * (27.5 ** 2 - 25.0 ** 2)
+    for r in res:
+        assert r.overlap_area.min() == pytest.approx(ring, rel=1e-3) and r.overlap_area.max() == pytest.approx(ring, rel=1e-3)
+        assert r.clearance.max() < 0
+        assert not any(c.passed for c in r.checks())
 
 
 # ---- traction.py: the traction characteristic in the final drive's build ------------------------------------------
