@@ -35,8 +35,8 @@ def _run(p):
     return dd, w.derived, by
 
 
-@pytest.fixture(scope="module")
-def default(p):
+@pytest.fixture
+def default(p):   # each test runs the step: mutmut ties a test to the functions it calls itself
     return _run(p)
 
 
