@@ -617,3 +617,79 @@ def test_flank_values_at_and_below_the_base_circle():
         _refusal(lambda: g.rho_at(0.9 * g.d_b), f"d_y = {0.9 * g.d_b!r}: must be >= base diameter d_b = {g.d_b:.6f} mm")
     a1 = inv_mod.inv_inverse(1.0)                 # tan α − α = 1: α = 1.132267725272885 rad (scipy's brentq)
     assert _inv(a1) == pytest.approx(1.0, rel=1e-14) and a1 == pytest.approx(1.132267725272885, rel=1e-14)
+
+
+def test_outline_tangents_of_unequal_segments_and_fits_in_a_tilted_frame():
+    # a 2 x 1 rectangle: the tangent at a corner bisects the two unit directions, whatever the sides' lengths
+    rect = DenseOutline(np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.0, 1.0]]))
+    assert np.allclose(rect.tangent[1], np.array([1.0, 1.0]) / math.sqrt(2), rtol=0, atol=1e-15)
+    # the curvature formula κ = 2c2/(1 + c1²)^1.5 of a cubic fitted in a frame tilted by 30° from the tangent
+    R = 10.0
+    o = DenseOutline(_circle(R, 20000))
+    idx = np.arange(-40, 41) % 20000
+    t = np.array([math.cos(math.pi / 2 + math.radians(30)), math.sin(math.pi / 2 + math.radians(30))])
+    assert tlm._fit(o, 0, idx, t) == pytest.approx(1.0 / R, rel=1e-4)
+    assert math.isnan(tlm._fit(o, 0, idx[:4], t))
+
+
+def test_curvature_next_to_a_corner_and_at_a_concave_corner():
+    R = 10.0
+    pts, n_arc = _arc_and_chord(R)
+    o = DenseOutline(pts)
+    for i in (1, 2, n_arc - 2, n_arc - 3):           # the corner one or two vertices away: the arc alone
+        assert tlm.curvature_at(o, i, 0.3) == pytest.approx(1.0 / R, rel=5e-4), i
+    # traversed clockwise the arc is concave: at the corner the more curved side is the arc's, κ = −1/R
+    rev = DenseOutline(pts[::-1])
+    j = len(pts) - n_arc                              # the reversed arc's first vertex (a corner)
+    assert rev.corner[j]
+    assert tlm.curvature_at(rev, j, 0.3) == pytest.approx(-1.0 / R, rel=5e-4)
+
+
+def test_root_section_wherever_the_outline_starts(iso_gear):
+    """The cell of tooth 0 straddling the outline's first vertex (the loop rolled): the same section; the 30° point's
+    own vertex as the first vertex: its fillet radius still measured."""
+    o, centres = iso_gear
+    ax = np.array([0.0, 1.0])
+    ref = tlm.root_section(o, 0, centres, ax, 2.5)
+    i_tip = int(np.argmax(o.points[:, 1]))             # tooth 0's tip, inside its cell
+    for k in (i_tip, int(o.nearest(ref.A_lo)[0]), int(o.nearest(ref.A_hi)[0])):
+        rolled = DenseOutline(np.roll(o.points, -k, axis=0))
+        sec = tlm.root_section(rolled, 0, centres, ax, 2.5)
+        assert sec.A_lo == pytest.approx(ref.A_lo, abs=1e-12) and sec.A_hi == pytest.approx(ref.A_hi, abs=1e-12)
+        assert sec.rho_lo == pytest.approx(ref.rho_lo, rel=1e-9) and sec.rho_hi == pytest.approx(ref.rho_hi, rel=1e-9)
+
+
+def test_root_section_without_points_keeps_its_tooth_and_axis():
+    circ = DenseOutline(_circle(10.0, 360, offset=0.5))
+    ax = np.array([0.0, 1.0])
+    sec = tlm.root_section(circ, 1, np.radians([22.5, 30.0, 36.5]), ax, 1.0)      # 7 vertices: too few
+    assert sec.tooth == 1 and np.array_equal(sec.axis, ax) and sec.A_lo.shape == (2,) and sec.A_hi.shape == (2,)
+    assert math.isnan(sec.rho_hi) and np.isnan(sec.A_hi).all()
+
+
+def test_root_stress_small_forces_and_the_loaded_side_on_the_axis():
+    sec = RootSection(0, np.array([-2.0, 0.0]), np.array([2.0, 0.0]), 1.5, 0.7, np.array([0.0, 1.0]))
+    big = tlm.root_stress(sec, [1.5, 3.0], [-300.0, -100.0], 20.0, 2.0, A20)
+    small = tlm.root_stress(sec, [1.5, 3.0], [-0.3, -0.1], 20.0, 2.0, A20)      # below 1 N: the same arm and angle
+    assert small["h_Fe"] == pytest.approx(big["h_Fe"], rel=1e-14)
+    assert small["alpha_Fen"] == pytest.approx(big["alpha_Fen"], rel=1e-14)
+    assert small["sigma_F"] == pytest.approx(big["sigma_F"] / 1000.0, rel=1e-14)
+    # the load on the axis (r·e = 0) reads the clockwise fillet; 0.5 mm to the counter-clockwise side, the other
+    assert tlm.root_stress(sec, [0.0, 3.0], [-300.0, -100.0], 20.0, 2.0, A20)["rho_F"] == 1.5
+    assert tlm.root_stress(sec, [0.5, 3.0], [-300.0, -100.0], 20.0, 2.0, A20)["rho_F"] == 0.7
+
+
+def test_limits_of_racks_gears_and_centre_distances_on_their_accepted_side():
+    _refusal(lambda: BasicRack(alpha=math.nan), "alpha = nan: must be a finite number")
+    _refusal(lambda: BasicRack(c_star=math.nan), "c_star = nan: must be a finite number")
+    assert BasicRack(c_star=1.0, rho_f_star=0.05).h_fP_star == 2.0          # c* = 1 is within 0..1
+    assert SpurGear(9, 2.0, 0.0, internal=True).z == 9                        # a ring of z_min + 1 = 9 teeth
+    assert SpurGear(20, 0.5).s == pytest.approx(0.25 * math.pi, rel=1e-15)   # a tooth thinner than 1 mm is a tooth
+    assert SpurGear(100, 1.0, -3.0, internal=True).x == -3.0                 # |x| = 3 is within -3..3
+    g = SpurGear(71, 3.0, 0.4, internal=True, z0=25.0)
+    assert g.z0 == 25 and type(g.z0) is int
+    _refusal(lambda: SpurGear(71, 3.0, 0.4, internal=True, z0=math.nan), "z0 = nan: must be a finite number")
+    # an internal pair of z2 = z1 + 1 has z2 − z1 = 1 > 0: a shift sum exists
+    a_wt = math.acos(2.5 / 2 * math.cos(A20) / 1.5)
+    assert inv_mod.x_sum_for_centre_distance(20, 21, 2.5, 1.5, internal=True) == pytest.approx(
+        (_inv(a_wt) - _inv(A20)) / (2 * math.tan(A20)), rel=1e-13)
