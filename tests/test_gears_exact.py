@@ -683,3 +683,36 @@ def test_limits_of_racks_gears_and_centre_distances_on_their_accepted_side():
     a_wt = math.acos(2.5 / 2 * math.cos(A20) / 1.5)
     assert inv_mod.x_sum_for_centre_distance(20, 21, 2.5, 1.5, internal=True) == pytest.approx(
         (_inv(a_wt) - _inv(A20)) / (2 * math.tan(A20)), rel=1e-13)
+
+
+# ============================================================================ catalogue.py: ISO 53 racks, GOST 9323 shapers
+from propulsor.gears import catalogue as cat                        # noqa: E402
+
+
+def test_iso_53_rack_profiles_table_1():
+    assert cat.rack_profiles() == ("A", "B", "C", "D")
+    for name, c, rho in (("A", 0.25, 0.38), ("B", 0.25, 0.30), ("C", 0.25, 0.25), ("D", 0.40, 0.39)):
+        assert cat.rack_profile(name) == BasicRack(alpha=A20, h_a_star=1.0, c_star=c, rho_f_star=rho)
+    assert cat.rack_profile("B", math.radians(22.5)) == BasicRack(math.radians(22.5), 1.0, 0.25, 0.30)
+    _refusal(lambda: cat.rack_profile("E"), "rack_profile = 'E': must be one of A, B, C, D (ISO 53:1998)")
+
+
+def test_shaper_catalogue_entries_and_refusals_in_full():
+    assert cat.shaper_diameters() == (25.0, 38.0, 50.0, 75.0, 100.0)
+    e = cat.shaper_entry(75.0, 2.5)
+    assert e == cat.ShaperEntry(75.0, 2.5, 30, 0.0, 1.25, 0.1, "GOST 9323-79 type 1 (disc) / DIN 1825", "ours")
+    assert type(e.z0) is int and type(e.d0_mm) is float and type(e.m) is float
+    assert e.name == "d0 75 m 2.5 z0 30 x0 +0 (GOST 9323-79 type 1 (disc) / DIN 1825)"
+    assert cat.shaper_entry(100, 6).z0 == 17 and cat.shaper_entry(25.0, 1.0).z0 == 25
+    assert cat.shaper_entry(38.0 + 5e-10, 4.0).z0 == 10                  # d0 matched to 1e-9 mm
+    _refusal(lambda: cat.shaper_entry(38.0 + 2e-9, 4.0), "d0 = 38.000000002: is not a nominal shaper diameter of the "
+                                                         "catalogue (nominal d0: 25, 38, 50, 75, 100 mm)")
+    _refusal(lambda: cat.shaper_entry(25.0, 3.0), "d0 = 25.0: the catalogue lists no shaper d0 = 25 mm at m = 3 mm "
+                                                  "(modules listed: 1, 1.25, 1.5, 1.75, 2, 2.25, 2.5, 2.75)")
+    # the tool: a rack of h_a* = 1 and c* = h_a0* − 1 = 0.25 (its addendum 1.25 m), tip round 0.1 m
+    for tool in (e.cutter(), cat.catalogue_shaper(75.0, 2.5)):
+        assert (tool.z0, tool.m, tool.x0, tool.rho_a0_star) == (30, 2.5, 0.0, 0.1)
+        assert tool.rack == BasicRack(A20, 1.0, 0.25, 0.38)
+    tool = cat.catalogue_shaper(50.0, 2.0, math.radians(22.0))
+    assert tool.z0 == 25 and tool.rack.alpha == math.radians(22.0) and tool.rack.c_star == 0.25
+    assert e.cutter(math.radians(22.0)).rack.alpha == math.radians(22.0)
