@@ -716,3 +716,85 @@ def test_shaper_catalogue_entries_and_refusals_in_full():
     tool = cat.catalogue_shaper(50.0, 2.0, math.radians(22.0))
     assert tool.z0 == 25 and tool.rack.alpha == math.radians(22.0) and tool.rack.c_star == 0.25
     assert e.cutter(math.radians(22.0)).rack.alpha == math.radians(22.0)
+
+
+# ============================================================================ gear_pair.py: ISO 21771 pair geometry
+from propulsor.gears.gear_pair import GearPair                      # noqa: E402
+
+
+def _pair_by_hand(z1, z2, x1, x2, m, internal):
+    sg = -1 if internal else 1
+    zs, xs = z2 + sg * z1, x2 + sg * x1
+    a = m * zs / 2
+    a_w_ang = inv_mod.inv_inverse(_inv(A20) + 2 * math.tan(A20) * xs / zs)
+    a_w = a * math.cos(A20) / math.cos(a_w_ang)
+    y = (a_w - a) / m
+    dy = xs - y
+    d1, d2 = m * z1, m * z2
+    if internal:
+        k2 = 0.25 - 0.125 * x2 if x2 < 2 else 0.0
+        d_a1 = d1 + 2 * (1 + x1) * m
+        d_a2 = d2 - 2 * (1 - x2 + dy - k2) * m
+    else:
+        d_a1 = d1 + 2 * (1 + x1 - dy) * m
+        d_a2 = d2 + 2 * (1 + x2 - dy) * m
+    return dict(a=a, alpha_w=a_w_ang, a_w=a_w, y=y, dy=dy, d_a1=d_a1, d_a2=d_a2, d_b1=d1 * math.cos(A20),
+                d_b2=d2 * math.cos(A20), g_w=a_w * math.sin(a_w_ang), zs=zs, xs=xs)
+
+
+def test_pair_contact_sliding_and_interference_by_hand():
+    h_l = 1.25 - 0.38 * (1 - math.sin(A20))
+    for z1, z2, x1, x2, internal in ((20, 47, 0.3, 0.1, False), (20, 70, 0.2, 0.5, True)):
+        m = 2.5
+        p = GearPair(SpurGear(z1, m, x1), SpurGear(z2, m, x2, internal=internal))
+        h = _pair_by_hand(z1, z2, x1, x2, m, internal)
+        assert p.d_a1 == pytest.approx(h["d_a1"], rel=1e-13) and p.d_a2 == pytest.approx(h["d_a2"], rel=1e-13)
+        r1 = 0.5 * math.sqrt(h["d_a1"] ** 2 - h["d_b1"] ** 2)
+        r2 = 0.5 * math.sqrt(h["d_a2"] ** 2 - h["d_b2"] ** 2)
+        assert p.rho_a1() == pytest.approx(r1, rel=1e-12) and p.rho_a2() == pytest.approx(r2, rel=1e-12)
+        g = h["g_w"]
+        p1, p2 = (r2 - g, g + r1) if internal else (g - r2, g - r1)
+        assert p.rho_p1() == pytest.approx(p1, rel=1e-12) and p.rho_p2() == pytest.approx(p2, rel=1e-12)
+        eps = ((r1 - r2 + g) if internal else (r1 + r2 - g)) / (math.pi * m * math.cos(A20))
+        assert p.epsilon_alpha() == pytest.approx(eps, rel=1e-12)
+        s1, s2 = p.specific_sliding()
+        assert s1 == pytest.approx(1 - r2 / p1 * z1 / z2, rel=1e-12) and s2 == pytest.approx(1 - r1 / p2 * z2 / z1,
+                                                                                              rel=1e-12)
+        rho_l1 = 0.5 * m * z1 * math.sin(A20) - (h_l - x1) * m / math.sin(A20)
+        if internal:
+            rho_l2 = 0.5 * m * z2 * math.sin(A20) + (h_l + x2) * m / math.sin(A20)
+            want = (p1 - max(rho_l1, 0.0), rho_l2 - p2)
+        else:
+            rho_l2 = 0.5 * m * z2 * math.sin(A20) - (h_l - x2) * m / math.sin(A20)
+            want = (p1 - max(rho_l1, 0.0), p2 - max(rho_l2, 0.0))
+        assert p.involute_interference_margins() == pytest.approx(want, rel=1e-12)
+        # given tips: the values on them
+        da1, da2 = h["d_a1"] - 0.3, h["d_a2"] + (0.3 if internal else -0.3)
+        r1g = 0.5 * math.sqrt(da1 ** 2 - h["d_b1"] ** 2)
+        r2g = 0.5 * math.sqrt(da2 ** 2 - h["d_b2"] ** 2)
+        assert p.rho_a1(da1) == pytest.approx(r1g, rel=1e-12) and p.rho_a2(da2) == pytest.approx(r2g, rel=1e-12)
+        assert p.epsilon_alpha(da1, da2) == pytest.approx(
+            ((r1g - r2g + g) if internal else (r1g + r2g - g)) / (math.pi * m * math.cos(A20)), rel=1e-12)
+        assert p.s_na1 == pytest.approx(p.gear1.s_at(h["d_a1"]), rel=1e-13)
+        assert p.s_na2 == pytest.approx(p.gear2.s_at(h["d_a2"]), rel=1e-13)
+    assert GearPair.x_sum_for(20, 40, 2.5, 76.0) == inv_mod.x_sum_for_centre_distance(20, 40, 2.5, 76.0)
+    assert GearPair.x_sum_for(20, 70, 2.5, 63.0, internal=True) == inv_mod.x_sum_for_centre_distance(
+        20, 70, 2.5, 63.0, internal=True)
+
+
+def test_pair_refusals_in_full():
+    g = SpurGear(20, 2.5, 0.0)
+    _refusal(lambda: GearPair(SpurGear(70, 2.5, 0.5, internal=True), g),
+             "gear1.internal = True: the first gear of a pair must be external")
+    _refusal(lambda: GearPair(g, SpurGear(40, 3.0)), "gear2.m = 3.0: must equal gear1.m = 2.5")
+    other = BasicRack(c_star=0.3, rho_f_star=0.3)
+    _refusal(lambda: GearPair(g, SpurGear(40, 2.5, rack=other)),
+             f"gear2.rack = {other!r}: both gears must use the same basic rack")
+    _refusal(lambda: GearPair(SpurGear(30, 2.5), SpurGear(30, 2.5, internal=True)),
+             "gear2.z = 30: must exceed the pinion's z = 30")
+    assert GearPair(SpurGear(30, 2.5), SpurGear(31, 2.5, 0.5, internal=True)).u == 31 / 30
+    _refusal(lambda: GearPair(SpurGear(30, 2.5, -0.65), SpurGear(30, 2.5, -0.65)),
+             "x = -1.3: shift sum too negative: inv α_w <= 0")
+    _refusal(lambda: GearPair(g, "wheel"), str(InputError("gear", (g, "wheel"), "must be SpurGear")))  # value cut
+    _refusal(lambda: GearPair(g, SpurGear(40, 2.5)).tip_interference_depth(),
+             "gear2.internal = False: tip interference sweep is for internal pairs")
