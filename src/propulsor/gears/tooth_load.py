@@ -300,9 +300,6 @@ def root_stress(sec: RootSection, P, F, b: float, m: float, alpha: float, K: flo
     chord = sec.A_hi - sec.A_lo
     s = float(np.linalg.norm(chord))
     e = chord / s                      # along the section
-    n_s = np.array([-e[1], e[0]])      # across it, towards the tip
-    if float(n_s @ sec.axis) < 0:
-        n_s = -n_s
     r = P - C
     M = abs(float(r[0] * F[1] - r[1] * F[0]))
     Fn = float(np.linalg.norm(F))
