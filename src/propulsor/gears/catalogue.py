@@ -16,7 +16,7 @@ from functools import lru_cache
 from importlib import resources
 
 from ..errors import InputError
-from .cutters import ShaperCutter
+from .cutters import ShaperCutter, shaper_rack
 from .involute import BasicRack
 
 __all__ = ["ShaperEntry", "rack_profile", "rack_profiles", "shaper_diameters", "shaper_entry", "catalogue_shaper"]
@@ -68,8 +68,7 @@ class ShaperEntry:
 
     def cutter(self, alpha: float = math.radians(20.0)) -> ShaperCutter:
         """The shaper as a generating tool (tip d_a0 = m(z0 + 2(h_a0* + x0)), tip round rho_a0* m)."""
-        rack = BasicRack(alpha=alpha, h_a_star=1.0, c_star=self.h_a0_star - 1.0)
-        return ShaperCutter(self.z0, self.m, self.x0, rack, self.rho_a0_star)
+        return ShaperCutter(self.z0, self.m, self.x0, shaper_rack(alpha, 1.0, self.h_a0_star - 1.0), self.rho_a0_star)
 
 
 def _module_key(m: float) -> str:

@@ -33,7 +33,8 @@ from ..policy import INVOLUTE_T_MIN, ROUNDING_TOL, TOOL_TIP_LAND_TOL_MM
 from .envelope import EnvelopeCurve, RackCentrode
 from .involute import BasicRack, inv
 
-__all__ = ["LinePiece", "ArcPiece", "InvolutePiece", "PlacedPiece", "CutterSide", "RackCutter", "ShaperCutter"]
+__all__ = ["LinePiece", "ArcPiece", "InvolutePiece", "PlacedPiece", "CutterSide", "RackCutter", "ShaperCutter",
+           "shaper_rack"]
 
 
 @dataclass(frozen=True)
@@ -242,6 +243,17 @@ class RackCutter:
         left = CutterSide(ArcPiece((-xi_c, eta_t + rho), rho), (-math.pi / 2, -a),
                           LinePiece((-w / 2.0, 0.0), (sa, ca)), (u_f, u_top), cut, "rack")
         return right, left
+
+
+def shaper_rack(alpha: float, h_a_star: float = 1.0, c_star: float = 0.25) -> BasicRack:
+    """The rack a shaper's tooth is drawn from: its pressure angle and its tooth depth h_a* + c*.  A shaper rounds its
+    tip by its own rho_a0* (:class:`ShaperCutter`), never by the rack's fillet radius; that one is ISO 53's 0.38
+    where the rack's tip land holds it and the largest that fits where it does not (from alpha = 24 deg at
+    h_a* + c* = 1.25), so that no shaper is refused for a radius it does not have; a steeper one is refused for its
+    own tooth (its tip rounds meeting, or no tip land: tan alpha >= pi / (4 (h_a* + c*)))."""
+    bare = BasicRack(alpha=alpha, h_a_star=h_a_star, c_star=c_star, rho_f_star=0.0)
+    return BasicRack(alpha=alpha, h_a_star=h_a_star, c_star=c_star,
+                     rho_f_star=min(BasicRack().rho_f_star, bare.rho_f_star_max))
 
 
 @dataclass(frozen=True)

@@ -91,10 +91,10 @@ def shaper_of(p, m: float):
     alpha = math.radians(p.pressure_angle_deg)
     if p.shaper_d0_mm <= 0:
         if p.shaper_own_x0:
-            from ...gears.cutters import ShaperCutter
+            from ...gears.cutters import ShaperCutter, shaper_rack
 
             with input_names({"z0": "shaper_teeth", "x0": "shaper_x0"}):
-                return ShaperCutter(p.shaper_teeth, m, p.shaper_x0, BasicRack(alpha=alpha, c_star=0.25))
+                return ShaperCutter(p.shaper_teeth, m, p.shaper_x0, shaper_rack(alpha, 1.0, 0.25))
         return None
     with input_names({"d0": "shaper_d0_mm"}):
         return catalogue_shaper(p.shaper_d0_mm, m, alpha)
