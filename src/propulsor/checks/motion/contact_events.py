@@ -278,17 +278,29 @@ class PairOutlines:
 
 
 @njit(cache=True)
-def _window_nb(order, angs, centre, hw):
-    """:func:`_window` compiled (the same vertices in the same order)."""
+def _window_bounds(angs, centre, hw):
+    """The three ranges [bounds[2i], bounds[2i + 1]) of positions in ``angs`` (sorted polar angles) within centre +-
+    hw, wrapped by -2 pi, 0, +2 pi (all of them in the first when hw >= pi)."""
+    bounds = np.zeros(6, np.int64)
     if hw >= math.pi:
-        return order.copy()
+        bounds[1] = len(angs)
+        return bounds
     c = (centre + math.pi) % (2 * math.pi) - math.pi
-    bounds = np.empty(6, np.int64)
-    n = 0
     for i in range(3):
         k = i - 1
         lo, hi = c - hw + 2 * math.pi * k, c + hw + 2 * math.pi * k
         bounds[2 * i], bounds[2 * i + 1] = np.searchsorted(angs, lo), np.searchsorted(angs, hi)
+    return bounds
+
+
+@njit(cache=True)
+def _window_nb(order, angs, centre, hw):
+    """:func:`_window` compiled (the same vertices in the same order)."""
+    if hw >= math.pi:
+        return order.copy()
+    bounds = _window_bounds(angs, centre, hw)
+    n = 0
+    for i in range(3):
         n += max(bounds[2 * i + 1] - bounds[2 * i], 0)
     out = np.empty(n, np.int64)
     n = 0
@@ -380,21 +392,10 @@ def _pruned_window(order, angs, centre, hw, chunk, cc, cr, V, c1, s1, tx, c2, s2
     :func:`distance_field`) than ``chord`` times its farthest distance from the turning centre (cx, cy): no vertex
     of such a run is kept, or can reach the boundary within the window (1e-6 mm to spare on either test); of the
     runs left, each vertex ``V[q]`` by the same test."""
-    n_all = len(order)
-    bounds = np.empty(6, np.int64)
+    bounds = _window_bounds(angs, centre, hw)
     n = 0
-    if hw >= math.pi:
-        bounds[0], bounds[1] = 0, n_all
-        for i in range(1, 3):
-            bounds[2 * i], bounds[2 * i + 1] = 0, 0
-        n = n_all
-    else:
-        c = (centre + math.pi) % (2 * math.pi) - math.pi
-        for i in range(3):
-            k = i - 1
-            lo, hi = c - hw + 2 * math.pi * k, c + hw + 2 * math.pi * k
-            bounds[2 * i], bounds[2 * i + 1] = np.searchsorted(angs, lo), np.searchsorted(angs, hi)
-            n += max(bounds[2 * i + 1] - bounds[2 * i], 0)
+    for i in range(3):
+        n += max(bounds[2 * i + 1] - bounds[2 * i], 0)
     out = np.empty(n, np.int64)
     n = 0
     for i in range(3):
