@@ -798,3 +798,263 @@ def test_pair_refusals_in_full():
     _refusal(lambda: GearPair(g, "wheel"), str(InputError("gear", (g, "wheel"), "must be SpurGear")))  # value cut
     _refusal(lambda: GearPair(g, SpurGear(40, 2.5)).tip_interference_depth(),
              "gear2.internal = False: tip interference sweep is for internal pairs")
+
+
+def _sheet_by_hand(p, h, D1, D2, da1, da2, internal):
+    """The calculation sheet's rows as the ISO 21771 / GOST 16532 sheet lists them, each value from the
+    pair worked out by hand (``h``) or the gear's own measured quantity (tested above)."""
+    g1, g2 = p.gear1, p.gear2
+    deg = math.degrees
+    rows = [
+        ("number of teeth", "z", "-", g1.z, g2.z),
+        ("module", "m", "mm", g1.m, None),
+        ("pressure angle", "alpha", "deg", 20.0, None),
+        ("profile shift coefficient", "x", "-", g1.x, g2.x),
+        ("gear ratio", "u", "-", g2.z / g1.z, None),
+        ("operating pressure angle", "alpha_w", "deg", deg(h["alpha_w"]), None),
+        ("operating centre distance", "a_w", "mm", h["a_w"], None),
+        ("centre distance modification coefficient", "y", "-", h["y"], None),
+        ("tip shortening coefficient", "delta_y", "-", h["dy"], None),
+        ("reference diameter", "d", "mm", g1.m * g1.z, g2.m * g2.z),
+        ("tip diameter", "d_a", "mm", da1, da2),
+        ("root diameter", "d_f", "mm", g1.d_f, g2.d_f),
+        ("operating pitch diameter", "d_w", "mm", 2 * h["a_w"] * g1.z / h["zs"], 2 * h["a_w"] * g2.z / h["zs"]),
+        ("base diameter", "d_b", "mm", h["d_b1"], h["d_b2"]),
+        ("reference tooth thickness", "s_n", "mm", g1.s_n, g2.s_n),
+        ("constant chord", "s_c", "mm", g1.s_c, g2.s_c),
+        ("height to constant chord", "h_c", "mm", g1.h_c(da1), g2.h_c(da2)),
+        ("teeth (ring: spaces) spanned", "k", "-", g1.k_W, g2.k_W),
+        ("base tangent length", "W_k", "mm", g1.W_k, g2.W_k),
+        ("measuring roller diameter", "D", "mm", D1, D2),
+        ("pressure angle at roller centre", "alpha_D", "deg", deg(g1.alpha_D(D1)), deg(g2.alpha_D(D2))),
+        ("roller centre circle diameter", "d_D", "mm", g1.d_D(D1), g2.d_D(D2)),
+        ("dimension over (ring: between) rollers", "M", "mm", g1.M(D1), g2.M(D2)),
+        ("least profile shift (no undercut)", "x_min", "-", g1.x_min, None if internal else g2.x_min),
+        ("radius of curvature at boundary point", "rho_l", "mm", g1.rho_l, g2.rho_l),
+    ]
+    r1 = 0.5 * math.sqrt(da1 ** 2 - h["d_b1"] ** 2)
+    r2 = 0.5 * math.sqrt(da2 ** 2 - h["d_b2"] ** 2)
+    g = h["g_w"]
+    p1, p2 = (r2 - g, g + r1) if internal else (g - r2, g - r1)
+    eps = ((r1 - r2 + g) if internal else (r1 + r2 - g)) / (math.pi * g1.m * math.cos(A20))
+    rows += [("tooth thickness on tip circle", "s_na", "mm", g1.s_at(da1), g2.s_at(da2)),
+             ("radius of curvature at lowest active point", "rho_p", "mm", p1, p2),
+             ("transverse contact ratio", "epsilon_alpha", "-", eps, None)]
+    return rows
+
+
+def _same_rows(got, want):
+    assert [r[:3] for r in got] == [r[:3] for r in want]
+    for g, w in zip(got, want):
+        for a, b in zip(g[3:], w[3:]):
+            if b is None:
+                assert a is None, g
+            else:
+                assert a == pytest.approx(b, rel=1e-11, abs=1e-12), (g, w)
+
+
+@pytest.mark.parametrize("z1, z2, x1, x2, internal", [(20, 47, 0.3, 0.1, False), (20, 70, 0.2, 0.5, True)])
+def test_pair_sheet_row_by_row(z1, z2, x1, x2, internal):
+    """Every row of the calculation sheet: its quantity, symbol, unit and both gears' values - on the pair's own
+    tips with each gear's recommended roller, then on given tips (a planet's one tip in two meshes) with one roller
+    for both gears."""
+    m = 2.5
+    p = GearPair(SpurGear(z1, m, x1), SpurGear(z2, m, x2, internal=internal))
+    h = _pair_by_hand(z1, z2, x1, x2, m, internal)
+    g1, g2 = p.gear1, p.gear2
+    assert g1.D_recommended != g2.D_recommended
+    _same_rows(p.sheet(), _sheet_by_hand(p, h, g1.D_recommended, g2.D_recommended, h["d_a1"], h["d_a2"], internal))
+    da1, da2 = h["d_a1"] - 0.3, h["d_a2"] + (0.3 if internal else -0.3)
+    _same_rows(p.sheet(4.5, da1, da2), _sheet_by_hand(p, h, 4.5, 4.5, da1, da2, internal))
+    # the rollers' rows read the roller: 4.5 mm and 5 mm give different alpha_D, d_D and M for both gears
+    r45 = {r[1]: r for r in p.sheet(4.5)}
+    r50 = {r[1]: r for r in p.sheet(5.0)}
+    for sym in ("alpha_D", "d_D", "M"):
+        assert r45[sym][3] != r50[sym][3] and r45[sym][4] != r50[sym][4]
+
+
+def test_pair_sheet_of_a_ring_tip_inside_its_base_circle_stops_before_the_tip_rows():
+    """A ring whose tip is given inside its base circle: s_na, rho_p and epsilon_alpha are undefined there, so the
+    sheet ends with the boundary point's row (no error); the rows before are the same as on a valid tip."""
+    p = GearPair(SpurGear(20, 2.5, 0.2), SpurGear(70, 2.5, 0.5, internal=True))
+    da2 = p.gear2.d_b - 0.5
+    rows = p.sheet(None, None, da2)
+    assert [r[1] for r in rows][-1] == "rho_l" and len(rows) == 25
+    assert {r[1]: r for r in rows}["d_a"][4] == da2
+
+
+def _wrap_angle(a):
+    return (a + math.pi) % (2 * math.pi) - math.pi
+
+
+def _tip_sweep_by_hand(p, d_a1=None, d_a2=None, n=20001):
+    """The internal mesh's tip-corner sweep written out independently (complex numbers; the nearest tooth found by
+    the least angle to every tooth centre, not by rounding): the pinion turns phi, the ring phi z1/z2 the same way
+    about the origin, the pinion's centre at (0, a_w); each tip corner (half the tip's tooth angle off its tooth's
+    centre line) is taken into the mate's frame; inside the mate's teeth (between its base/root and tip circles)
+    the depth is the arc (psi_mate(r) - angle to the nearest tooth centre) r, past the ring's root circle (inside the
+    pinion's) the radial distance past it.  The largest depth over a turn of the pinion by a grid of n and three
+    rounds of finer grids about its best point; (pinion corners, ring corners)."""
+    g1, g2 = p.gear1, p.gear2
+    da1 = p.d_a1 if d_a1 is None else d_a1
+    da2 = p.d_a2 if d_a2 is None else d_a2
+    ra1, ra2 = da1 / 2, da2 / 2
+    rf1, rf2 = g1.d_f / 2, g2.d_f / 2
+    z1, z2 = g1.z, g2.z
+    O1 = 1j * p.a_w
+    psi1 = float(g1.psi_at(da1))
+    psi2 = float(g2.psi_at(max(da2, g2.d_b)))
+    c1 = math.pi / 2 + 2 * math.pi * np.arange(z1) / z1
+    c2 = math.pi / 2 + math.pi / z2 + 2 * math.pi * np.arange(z2) / z2
+
+    def depth(r, th, centres, g, lo, hi, past):
+        delta = np.min(np.abs(_wrap_angle(th[:, None] - centres[None, :])), axis=1)
+        ins = (r > lo) & (r < hi)
+        return np.where(ins, (g.psi_at(np.where(ins, 2 * r, g.d)) - delta) * r, past)
+
+    def pinion(phi):
+        out = np.full(phi.shape, -np.inf)
+        for s in (-1, 1):
+            q = (O1 + ra1 * np.exp(1j * (math.pi / 2 + phi + s * psi1))) * np.exp(-1j * phi * z1 / z2)
+            r = np.abs(q)
+            out = np.maximum(out, depth(r, np.angle(q), c2, g2, max(ra2, g2.d_b / 2), rf2,
+                                        np.where(r >= rf2, r - rf2, -np.inf)))
+        return out
+
+    def ring(phi):
+        out = np.full(phi.shape, -np.inf)
+        for s in (-1, 1):
+            q = (ra2 * np.exp(1j * (math.pi / 2 + math.pi / z2 + s * psi2 + phi * z1 / z2)) - O1) * np.exp(-1j * phi)
+            r = np.abs(q)
+            out = np.maximum(out, depth(r, np.angle(q), c1, g1, max(g1.d_b / 2, rf1), ra1,
+                                        np.where(r <= rf1, rf1 - r, -np.inf)))
+        return out
+
+    found = []
+    for fn in (pinion, ring):
+        phi = np.linspace(-math.pi, math.pi, n)
+        d = fn(phi)
+        i = int(np.argmax(d))
+        best = float(d[i])
+        lo, hi = phi[i] - (phi[1] - phi[0]), phi[i] + (phi[1] - phi[0])
+        for _ in range(3):
+            f = np.linspace(lo, hi, 2001)
+            dd = fn(f)
+            j = int(np.argmax(dd))
+            best = max(best, float(dd[j]))
+            lo, hi = f[j] - (f[1] - f[0]), f[j] + (f[1] - f[0])
+        found.append(best)
+    return tuple(found)
+
+
+@pytest.mark.parametrize("z1, z2, x2, dd1, dd2, branch", [
+    (20, 26, 0.0, 0.0, 0.0, "ring"),           # 6 teeth apart: the ring's corners dig 0.208 mm into the pinion
+    (20, 24, 0.0, -1.0, 0.0, "ring"),          # 4 apart, a pinion tip 1 mm smaller: 0.695 mm
+    (12, 20, 0.5, 0.0, 0.0, "ring"),           # a shifted ring 8 apart: 0.85 um, found all the same
+    (20, 32, 0.0, 0.0, -2.0, "ring"),          # the ring's tip 2 mm lower: 0.033 mm
+    (21, 27, 0.0, 0.0, 0.0, "ring"),           # an odd pinion (its tooth and space centres are not opposite)
+    (20, 26, 0.0, 2.0, 3.0, "rim"),            # the pinion's tip 0.25 mm past the ring's root circle
+    (20, 60, 0.0, 0.0, -3.6, "pinion root"),   # the ring's tip 0.3 mm inside the pinion's root circle
+    (20, 60, 0.0, 0.0, 0.0, "none"),           # conjugate: 0 to rounding
+    (20, 30, 0.0, 0.0, 0.0, "none"),
+])
+def test_tip_interference_depth_against_the_sweep_written_out(z1, z2, x2, dd1, dd2, branch):
+    p = GearPair(SpurGear(z1, 3.0), SpurGear(z2, 3.0, x2, internal=True))
+    kw = {"d_a1": p.d_a1 + dd1, "d_a2": p.d_a2 + dd2} if (dd1 or dd2) else {}
+    pin, rin = _tip_sweep_by_hand(p, **kw)
+    got = p.tip_interference_depth(**kw)
+    assert got == pytest.approx(max(pin, rin), abs=1e-6)
+    assert p.tip_interference_depths(**kw) == pytest.approx((pin, rin), abs=1e-6)   # each gear's corners alone
+    if branch == "ring":
+        assert rin > pin + 1e-5 and rin > 1e-6
+    elif branch == "rim":
+        assert got == pytest.approx(p.a_w + kw["d_a1"] / 2 - p.gear2.d_f / 2, abs=1e-12)
+    elif branch == "pinion root":   # the ring's tip reaches r_a2 - a_w from the pinion's centre
+        assert p.tip_interference_depths(**kw)[1] == pytest.approx(p.gear1.d_f / 2 - (kw["d_a2"] / 2 - p.a_w),
+                                                                   abs=1e-12)
+        assert got == pytest.approx(0.3, abs=1e-12)
+    else:
+        assert abs(got) <= 1e-9 and max(pin, rin) <= 1e-9
+
+
+def test_tip_interference_of_a_ring_tip_inside_its_base_circle():
+    """A ring tip given below its base circle (d_a2 = d_b2 - 1 mm): its corners sit on the base circle's tooth angle,
+    the pinion's corners count from the base circle outwards (not from the given tip): 0.042 mm in a 20/32 pair."""
+    p = GearPair(SpurGear(20, 3.0), SpurGear(32, 3.0, internal=True))
+    da2 = p.gear2.d_b - 1.0
+    pin, rin = _tip_sweep_by_hand(p, d_a2=da2)
+    got = p.tip_interference_depth(d_a2=da2)
+    assert got == pytest.approx(max(pin, rin), abs=1e-6) and got > 0.04
+    assert p.tip_interference_depths(d_a2=da2) == pytest.approx((pin, rin), abs=1e-6)
+
+
+def test_tip_interference_refines_between_the_samples():
+    """Few samples (61 over a turn) still find the depth of the sweep's peak to 1e-6 mm: the search refines about the
+    best sample (the 61 samples alone give 0.089 mm of the peak's 0.208 here, 6001 samples alone 0.2066)."""
+    p = GearPair(SpurGear(20, 3.0), SpurGear(26, 3.0, internal=True))
+    pin, rin = _tip_sweep_by_hand(p)
+    got = p.tip_interference_depth(samples=61)
+    assert got == pytest.approx(rin, abs=1e-6)
+    # the ring's corners' peak is refined from the 61 samples; the pinion's corners' peak (0.178 mm) is narrower than
+    # their spacing (0.10 rad) and is missed at 61 (found at the default 6001: above)
+    assert p.tip_interference_depths(samples=61)[1] == pytest.approx(rin, abs=1e-6)
+
+
+def test_interference_margins_and_sliding_on_given_tips_and_undercut_gears():
+    """The margins and the specific sliding on tips given apart from the pair's own (each tip moves the mate's
+    lowest active point: rho_p1 follows d_a2, rho_p2 follows d_a1), and on undercut gears (rho_l < 0 counts as 0:
+    the involute runs down to the base circle) - every value by hand."""
+    m = 2.5
+    h_l = 1.25 - 0.38 * (1 - math.sin(A20))
+    for z1, z2, x1, x2, internal in ((12, 14, 0.0, 0.0, False), (20, 47, 0.3, 0.1, False), (12, 70, 0.0, 0.5, True)):
+        p = GearPair(SpurGear(z1, m, x1), SpurGear(z2, m, x2, internal=internal))
+        h = _pair_by_hand(z1, z2, x1, x2, m, internal)
+        da1, da2 = h["d_a1"] - 0.4, h["d_a2"] + (0.7 if internal else -0.7)
+        r1 = 0.5 * math.sqrt(da1 ** 2 - h["d_b1"] ** 2)
+        r2 = 0.5 * math.sqrt(da2 ** 2 - h["d_b2"] ** 2)
+        g = h["g_w"]
+        p1, p2 = (r2 - g, g + r1) if internal else (g - r2, g - r1)
+        assert p.rho_p1(da2) == pytest.approx(p1, rel=1e-12) and p.rho_p2(da1) == pytest.approx(p2, rel=1e-12)
+        rho_l1 = 0.5 * m * z1 * math.sin(A20) - (h_l - x1) * m / math.sin(A20)
+        if internal:
+            rho_l2 = 0.5 * m * z2 * math.sin(A20) + (h_l + x2) * m / math.sin(A20)
+            want = (p1 - max(rho_l1, 0.0), rho_l2 - p2)
+        else:
+            rho_l2 = 0.5 * m * z2 * math.sin(A20) - (h_l - x2) * m / math.sin(A20)
+            want = (p1 - max(rho_l1, 0.0), p2 - max(rho_l2, 0.0))
+        if z1 == 12:
+            assert rho_l1 < 0          # undercut pinion
+        if z2 == 14:
+            assert rho_l2 < 0
+        assert p.involute_interference_margins(da1, da2) == pytest.approx(want, rel=1e-12, abs=1e-12)
+        s1, s2 = p.specific_sliding(da1, da2)
+        assert s1 == pytest.approx(1 - r2 / p1 * z1 / z2, rel=1e-12)
+        assert s2 == pytest.approx(1 - r1 / p2 * z2 / z1, rel=1e-12)
+    # a ring tip inside its base circle: the pinion's margin is the radial shortfall, less the pinion's rho_l
+    p = GearPair(SpurGear(20, m, 0.3), SpurGear(70, m, 0.5, internal=True))
+    rho_l1 = 0.5 * m * 20 * math.sin(A20) - (h_l - 0.3) * m / math.sin(A20)
+    assert rho_l1 > 1.0
+    d_b2 = 70 * m * math.cos(A20)
+    m1, _ = p.involute_interference_margins(None, d_b2 - 0.6)
+    assert m1 == pytest.approx(-0.3 - rho_l1, rel=1e-12)
+    # on the base circle itself the involute has no length: rho_a2 = 0, the pinion's lowest point at -a_w sin(alpha_w)
+    m1, _ = p.involute_interference_margins(None, d_b2)
+    assert m1 == pytest.approx(-p.g_w - rho_l1, rel=1e-12)
+
+
+def test_tip_interference_depth_samples_as_asked():
+    """The sample count reaches the sweep: 30/33 teeth, the pinion's corners go 1.386 mm deep, the ring's 1.283 mm;
+    7 samples over a turn miss the pinion's peak (the ring's is still refined to its value)."""
+    p = GearPair(SpurGear(30, 3.0), SpurGear(33, 3.0, internal=True))
+    pin, rin = _tip_sweep_by_hand(p)
+    assert p.tip_interference_depth() == pytest.approx(pin, abs=1e-6) and pin > rin + 0.1
+    assert p.tip_interference_depth(samples=7) == pytest.approx(rin, abs=1e-6)
+
+
+def test_pinion_margin_of_an_undercut_pinion_in_a_ring_whose_tip_is_inside_its_base_circle():
+    """rho_l of an undercut pinion counts as 0 in the ring-tip-inside-base-circle branch: the margin is the radial
+    shortfall alone."""
+    p = GearPair(SpurGear(12, 2.5), SpurGear(70, 2.5, 0.5, internal=True))
+    assert p.gear1.rho_l < 0
+    d_b2 = 70 * 2.5 * math.cos(A20)
+    assert p.involute_interference_margins(None, d_b2 - 0.6)[0] == pytest.approx(-0.3, rel=1e-12)

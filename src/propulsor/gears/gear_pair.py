@@ -205,7 +205,7 @@ class GearPair:
         flank on its involute above the boundary point (GOST 16532/19274: ρ_l ≤ ρ_p; ring:
         ρ_p2 ≤ ρ_l2).  For a ring the first margin ≥ 0 is also KHK's involute-interference
         condition z1/z2 ≥ 1 − tan α_a2 / tan α_w (when ρ_l1 ≤ 0)."""
-        da1, da2 = self._tips(d_a1, d_a2)
+        da2 = self._tips(None, d_a2)[1]
         if self.internal and da2 < self.gear2.d_b:
             # ring tip inside its base circle: the involute ends before the tip; the mesh
             # interferes by at least the radial shortfall (reported negative, not raised)
@@ -220,8 +220,13 @@ class GearPair:
 
     def tip_interference_depth(self, d_a1: float | None = None, d_a2: float | None = None,
                                samples: int = 6001) -> float:
-        """Internal pair: largest depth (mm, > 0 = interference) by which a tip corner of either
-        gear enters a tooth of the other over the whole relative motion (trochoidal/tip
+        """Internal pair: the larger of :meth:`tip_interference_depths` (mm, > 0 = interference)."""
+        return max(self.tip_interference_depths(d_a1, d_a2, samples))
+
+    def tip_interference_depths(self, d_a1: float | None = None, d_a2: float | None = None,
+                                samples: int = 6001) -> tuple[float, float]:
+        """Internal pair: (pinion tips, ring tips) - the largest depth (mm, > 0 = interference) by which a
+        tip corner of either gear enters a tooth of the other over the whole relative motion (trochoidal/tip
         interference, KHK 'trochoid interference'; GOST 19274 'интерференция вершин').
 
         Direct kinematic check: the pinion turns φ1, the ring φ1 z1/z2 in the same sense; the
@@ -229,7 +234,9 @@ class GearPair:
         with the mate's involute tooth (half angle ψ(r), valid above its base circle); a corner past
         the ring's root circle, or inside the pinion's, is in the mate's body, as deep as it is past
         that circle (a tip striking the root: no tip clearance).  Conjugate contact gives depth 0 (to
-        rounding), so a positive result above ~1e-6 mm is real.
+        rounding), so a positive result above ~1e-6 mm is real.  The first value is the deepest a pinion tip corner
+        goes into the ring (its teeth or its rim), the second the deepest a ring tip corner goes into the pinion; -inf
+        where a gear's corners never reach the mate.
         """
         require(self.internal, "gear2.internal", False, "tip interference sweep is for internal pairs")
         from scipy.optimize import minimize_scalar
@@ -280,8 +287,9 @@ class GearPair:
 
         phi = np.linspace(-math.pi, math.pi, samples)
         step = phi[1] - phi[0]
-        worst = -math.inf
+        depths = []
         for fn in (pinion_corner, ring_corner):
+            worst = -math.inf
             for sgn in (-1.0, 1.0):
                 dep = fn(phi, sgn)
                 i = int(np.argmax(dep))
@@ -294,7 +302,8 @@ class GearPair:
                 if res.success and -res.fun > best:
                     best = float(-res.fun)
                 worst = max(worst, best)
-        return worst
+            depths.append(worst)
+        return depths[0], depths[1]
 
     @property
     def s_na1(self) -> float:
