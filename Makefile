@@ -119,7 +119,7 @@ list: $(STAMP)
 # the layer contracts first (import-linter, [tool.importlinter] in pyproject.toml), then the tests
 test: $(STAMP)
 	$(BIN)/lint-imports pyproject.toml
-	$(BIN)/python -m pytest -q -n $(PYTEST_WORKERS) --dist loadfile -m "not sweep" tests
+	$(BIN)/python -m pytest -q -n $(PYTEST_WORKERS) --dist loadfile -m "not sweep" --durations=30 tests
 
 # the user guide (mkdocs-material, docs/ -> site/, warnings are errors): the API reference from the docstrings
 # first (pdoc into docs/api/, warnings as errors), then the site, whose reference pages docs/hooks.py generates
