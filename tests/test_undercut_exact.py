@@ -96,6 +96,12 @@ def test_the_cusp_is_found():
         w = (0.3 ** 2 - (s - 0.3) ** 2)                                 # out and back along it: a cusp at u = 0.8
         return np.cos(q) + w * tx, np.sin(q) + w * ty
     assert undercut._cusp(Curve(turned)) == pytest.approx(0.8, abs=1e-6)
+    # a cusp past the range's end is not the curve's: none
+    assert undercut._cusp(Curve(lambda u: ((u - 1.5) ** 2, (u - 1.5) ** 3))) is None
+    # a small loop: f = (u - 1/2)^3 - 1e-4 (u - 1/2) runs back over 0.0115 of the range along a line, between its two
+    # cusps at 1/2 -+ sqrt(1e-4 / 3); the 2000 samples see it (the first: 0.494227), 50 would step across it
+    f = lambda u: (u - 0.5) ** 3 - 1e-4 * (u - 0.5)
+    assert undercut._cusp(Curve(lambda u: (f(u), 0.5 * f(u)))) == pytest.approx(0.5 - math.sqrt(1e-4 / 3), abs=1e-6)
 
 
 def test_after_a_cusp_only_the_branch_beyond_it_bounds_the_cut():
