@@ -13,6 +13,7 @@ import pytest
 from propulsor.errors import InputError
 from propulsor.gears.sectors import (
     PINION_POINT_COLUMNS,
+    RADII_COLUMNS,
     SECTOR_COLUMNS,
     WHEEL_POINT_COLUMNS,
     involute,
@@ -21,6 +22,7 @@ from propulsor.gears.sectors import (
     sector_radii,
     sector_ratio,
     sector_table,
+    sector_tip_thickness,
     structured_rows,
     wheel_space_points,
 )
@@ -423,3 +425,32 @@ def test_sector_ratio_at_every_sector(table000, table002):
                 assert sector_ratio(t, phi + math.pi / 2) == t.ratio[k]
         phis = np.array([t.phi[k] + 0.5 * t.dphi[k] for k in range(t.i)])
         assert np.array_equal(sector_ratio(t, phis), t.ratio)
+
+
+@pytest.mark.parametrize("j_n", [0.0, 0.16, 0.5])
+def test_tip_land_thickness_from_the_tables_points(table002, j_n):
+    """The least tip land of the sector method's teeth, read off Tables 3 and 4 themselves: a driver tooth's land is
+    (r + m)(theta_s - theta) at its tip point j = 5; a driven tooth lies between space i (its second flank's 6th point,
+    on the next sector's tip circle r_H(i+1) + m) and space i + 1 (its first flank's 5th point on the same circle;
+    the last space's neighbour is the next leg's first, pi/2 on)."""
+    m = 2.5
+    drv = pinion_tooth_points(table002, m=m, j_n=j_n)
+    tip = drv[drv["j"] == 5]
+    t_drv = float(np.min(tip["r_mm"] * (tip["theta_s_rad"] - tip["theta_rad"])))
+    whl = wheel_space_points(table002, m=m, j_n=j_n)
+    sixth = whl[whl["j"] == 6]
+    fifth = whl[whl["j"] == 5]
+    nxt = np.roll(fifth["phi_rad"], -1)
+    nxt[-1] += math.pi / 2
+    assert np.allclose(np.roll(fifth["r_H_mm"], -1), sixth["r_H_mm"], rtol=0, atol=1e-12)
+    t_dvn = float(np.min(sixth["r_H_mm"] * (nxt - sixth["phi_s_rad"])))
+    got = sector_tip_thickness(table002, m, j_n)
+    assert got == pytest.approx((t_drv, t_dvn), rel=1e-12)
+    assert 0 < got[0] and 0 < got[1]
+
+
+def test_radii_structured_equals_rows(table002):
+    radii = sector_radii(table002, m=2.5)
+    arr = radii.to_structured()
+    assert arr.dtype.names == RADII_COLUMNS
+    assert structured_rows(arr) == radii.rows()
