@@ -1,0 +1,301 @@
+"""The non-circular pair's as-built transmission, tolerance study and load per tooth, number by number
+(parts/noncircular_pair/as_built.py, tolerance.py, tooth_load_outputs.py): every value computed in the test from
+its formula written out, on small inputs built in each test (synthetic contact laws of the real drive laws, polygons
+whose tooth centres are known, the elliptical part file's pair where the finished outlines are meant).
+
+Fast and in this process, for mutation testing (mutation/targets.toml, target ``noncircular_pair``): mutmut ties a
+test only to the functions it calls itself, so nothing is built at collection or in a module-scoped fixture.
+"""
+
+from __future__ import annotations
+
+import bisect
+import math
+import random
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+from propulsor.checks.motion import outline
+from propulsor.checks.motion.contact_events import DRIVE, REVERSE, ContactLaw, PairOutlines, resolve_contact
+from propulsor.laws.ratio_laws import EllipticalLaw
+from propulsor.laws.walking import WalkingLaw
+
+PARTS = Path(__file__).resolve().parent.parent / "parts"
+
+
+def _elliptical_design():
+    """The elliptical part file's pair (e = 0.3, 1:1, z 30/30, m = 2.5): about 1 s."""
+    from propulsor.params import load_params, read_part_file
+    from propulsor.parts.noncircular_pair import NoncircularPairParams, design
+
+    _, mapping = read_part_file(PARTS / "ncg_elliptical.toml")
+    p = load_params(NoncircularPairParams, mapping)
+    return p, design(p)
+
+
+def _cl(direction, phi, te, kind=None, theta=None, evaluations=7):
+    """A contact law of the given samples (driver angle theta = phi unless given; flank contact unless given)."""
+    phi = np.asarray(phi, float)
+    n = len(phi)
+    return ContactLaw(direction, phi, np.asarray(phi if theta is None else theta, float), np.asarray(te, float),
+                      np.asarray(np.zeros(n, int) if kind is None else kind), np.zeros(n, int), np.zeros(n, int),
+                      evaluations)
+
+
+def _speed_by_hand(law, run_law, phi, te, samples):
+    """v/omega = dX01/dphi(phi + te) (1 + te') / U(phi), te linear between the samples, on the grid of ``samples``
+    equal steps and the samples' mid-points; te' the slope of the interval a point opens (the last: the last's)."""
+    phi, te = list(map(float, phi)), list(map(float, te))
+    pts = sorted(set(np.linspace(phi[0], phi[-1], samples).tolist())
+                 | {0.5 * (a + b) for a, b in zip(phi[:-1], phi[1:])})
+    x, slope, shift = [], [], []
+    for g in pts:
+        k = min(max(bisect.bisect_right(phi, g) - 1, 0), len(phi) - 2)
+        s = (te[k + 1] - te[k]) / (phi[k + 1] - phi[k])
+        x.append(g)
+        slope.append(s)
+        shift.append(te[k] + s * (g - phi[k]))
+    x, slope, shift = np.array(x), np.array(slope), np.array(shift)
+    return x, np.asarray(law.dX01_dphi(x + shift), float) * (1.0 + slope) / np.asarray(run_law.U(x), float)
+
+
+# =========================================================================== as_built.py
+def test_as_built_speed_takes_each_intervals_chord_slope_and_the_law_the_teeth_realise():
+    """Walking law (seed 000) for dX01/dphi, a different one for U (the teeth's law); te with a kink at a sample the
+    grid holds (the slope there is the next interval's) and the grid's last point (the last interval's)."""
+    from propulsor.parts.noncircular_pair.as_built import as_built_speed
+
+    law, run = WalkingLaw(60.0, 100.0, 360.0, 2), WalkingLaw(60.0, 80.0, 360.0, 2)
+    node = float(np.linspace(0.0, 0.3, 4)[1])
+    phi, te = np.array([0.0, node, 0.3]), np.array([0.0, 0.002, -0.001])
+    grid, v = as_built_speed(law, run, phi, te, samples=4)
+    x, want = _speed_by_hand(law, run, phi, te, 4)
+    assert grid.tolist() == x.tolist()
+    assert len(grid) == 5  # 0, 0.1, 0.2, 0.3 and the mid-points 0.05, 0.2 (0.2 once)
+    np.testing.assert_allclose(v, want, rtol=1e-13, atol=0)
+    # at the kink the next interval's slope: te' = -0.003 / 0.2 = -0.015
+    i = int(np.nonzero(grid == node)[0][0])
+    assert v[i] == pytest.approx(float(law.dX01_dphi(node + 0.002)) * (1 - 0.015) / float(run.U(node)), rel=1e-14)
+    # at the end the last interval's slope
+    assert v[-1] == pytest.approx(float(law.dX01_dphi(0.3 - 0.001)) * (1 - 0.015) / float(run.U(0.3)), rel=1e-14)
+    # a constant te at the law: the hub speed A/u exactly (seed 000 eq. 2-3)
+    _, v0 = as_built_speed(law, law, phi, np.zeros(3), samples=5)
+    np.testing.assert_allclose(v0, law.hub_speed_ratio, rtol=1e-13)
+
+
+def test_as_built_speed_samples_twenty_thousand_and_one_points_by_default():
+    from propulsor.parts.noncircular_pair.as_built import as_built_speed
+
+    law = WalkingLaw(60.0, 100.0, 360.0, 2)
+    phi, te = np.array([0.0, 0.31234, 1.0]), np.array([0.0, 0.001, 0.0])
+    grid, v = as_built_speed(law, law, phi, te)
+    x, want = _speed_by_hand(law, law, phi, te, 20001)
+    assert len(grid) == 20003 and grid.tolist() == x.tolist()
+    np.testing.assert_allclose(v, want, rtol=1e-13, atol=0)
+
+
+def test_period_span_is_one_period_where_the_periods_hold_whole_driven_teeth():
+    from propulsor.parts.noncircular_pair.as_built import period_span
+
+    def span(law, z_H):
+        return period_span(SimpleNamespace(run_law=law, z_H=z_H))
+
+    assert span(EllipticalLaw(0.3, 2), 30) == math.pi
+    assert span(EllipticalLaw(0.3, 2), 31) == 2 * math.pi
+    assert span(EllipticalLaw(0.3, 3), 30) == 2 * math.pi / 3
+    assert span(EllipticalLaw(0.3, 3), 32) == 2 * math.pi
+    assert span(EllipticalLaw(0.3, 1), 30) == 2 * math.pi
+    assert span(WalkingLaw(100.0, 50.0, 236.5, 4), 80) == 2 * math.pi / 4
+    assert span(WalkingLaw(100.0, 50.0, 236.5, 4), 82) == 2 * math.pi
+    # a law without periods (or periods None) repeats once a turn
+    assert span(SimpleNamespace(), 30) == 2 * math.pi
+    assert span(SimpleNamespace(periods=None), 30) == 2 * math.pi
+
+
+def _combine_case():
+    """Two directions sampled at different driven angles, one lost sample each."""
+    drive = _cl(DRIVE, [0.1, 0.4, 0.9, 1.3], [-0.002, -0.001, math.nan, -0.003], evaluations=11)
+    reverse = _cl(REVERSE, [0.2, 0.6, 1.2, 1.5], [0.001, 0.004, math.nan, 0.0005], evaluations=5)
+    x = np.array([0.1, 0.2, 0.4, 0.6, 0.9, 1.2, 1.3, 1.5])
+    # drive through (0.1, -2e-3), (0.4, -1e-3), (1.3, -3e-3), held beyond the ends
+    ted = np.array([-0.002, -0.002 + 0.001 / 3, -0.001, -0.001 - 0.002 * 0.2 / 0.9, -0.001 - 0.002 * 0.5 / 0.9,
+                    -0.001 - 0.002 * 0.8 / 0.9, -0.003, -0.003])
+    # reverse through (0.2, 1e-3), (0.6, 4e-3), (1.5, 0.5e-3)
+    ter = np.array([0.001, 0.001, 0.0025, 0.004, 0.004 - 0.0035 / 3, 0.004 - 0.0035 * 2 / 3,
+                    0.004 - 0.0035 * 0.7 / 0.9, 0.0005])
+    return drive, reverse, x, ted, ter
+
+
+def test_combine_the_least_backlash_is_the_two_directions_gap_on_the_driven_pitch_curve():
+    """Elliptical law e = 0.3 (no hub): backlash (te_reverse - te_drive) r_H, r_H = L U / (1 + U) with the teeth's
+    law (not the mechanism's), on the union of both directions' samples; the span is the drive's."""
+    from propulsor.parts.noncircular_pair.as_built import combine
+
+    law, run = EllipticalLaw(0.3, 1), EllipticalLaw(0.2, 1)
+    L = 80.0
+    drive, reverse, x, ted, ter = _combine_case()
+    U = np.asarray(run.U(x), float)
+    bl = (ter - ted) * L * U / (1 + U)
+    ab = combine(SimpleNamespace(law=law, run_law=run, L=L), drive, reverse)
+    assert ab.drive is drive and ab.reverse is reverse and ab.directions == (drive, reverse)
+    assert ab.span == pytest.approx(1.2, abs=1e-15)
+    assert ab.hub == () and math.isnan(ab.ripple)
+    k = int(np.argmin(bl))
+    assert k == 1 and int(np.argmax(bl)) not in (0, 1, 7)  # neither end of the union
+    assert ab.backlash_min_mm == pytest.approx(bl[k], rel=1e-13)
+    assert ab.backlash_max_mm == pytest.approx(np.max(bl), rel=1e-13)
+    assert ab.backlash_min_phi == 0.2
+    assert ab.evaluations == 16
+    # the least backlash inside the span: the drive's te raised at 0.9 .. 1.3
+    drive2 = _cl(DRIVE, [0.1, 0.4, 0.9, 1.3], [-0.002, -0.001, 0.0035, -0.003])
+    ab2 = combine(SimpleNamespace(law=law, run_law=run, L=L), drive2, reverse)
+    ted2 = np.interp(x, [0.1, 0.4, 0.9, 1.3], [-0.002, -0.001, 0.0035, -0.003])
+    bl2 = (ter - ted2) * L * U / (1 + U)
+    assert int(np.argmin(bl2)) == 4 and bl2[4] == pytest.approx((0.004 - 0.0035 / 3 - 0.0035) * float(
+        L * U[4] / (1 + U[4])), rel=1e-12)
+    assert (ab2.backlash_min_mm, ab2.backlash_min_phi) == (pytest.approx(bl2[4], rel=1e-13), 0.9)
+
+
+def _hub_by_hand(law, run, phi, te):
+    ok = np.isfinite(te)
+    x, v = _speed_by_hand(law, run, np.asarray(phi)[ok], np.asarray(te)[ok], 20001)
+    mean = law.A / law.u
+    i, j = int(np.argmin(v)), int(np.argmax(v))
+    return (v[j] - v[i]) / mean, v[i] / mean, v[j] / mean, x[i], x[j]
+
+
+def test_combine_of_a_walking_law_gives_each_directions_hub_speed_over_A_over_u():
+    """Walking law: (HubSpeed drive, HubSpeed reverse): ripple (max - min) / mean, the least and largest over the
+    mean A/u and their driven angles, from each direction's own finite samples."""
+    from propulsor.parts.noncircular_pair.as_built import HubSpeed, combine
+
+    law, run = WalkingLaw(60.0, 100.0, 360.0, 2), WalkingLaw(60.0, 90.0, 360.0, 2)
+    drive = _cl(DRIVE, [0.0, 0.2, 0.5, 0.7, 0.78], [-0.002, -0.0015, math.nan, -0.003, -0.0021])
+    reverse = _cl(REVERSE, [0.0, 0.3, 0.6, 0.78], [0.001, 0.0012, 0.002, math.nan])
+    ab = combine(SimpleNamespace(law=law, run_law=run, L=300.0), drive, reverse)
+    assert len(ab.hub) == 2 and all(isinstance(h, HubSpeed) for h in ab.hub)
+    for h, c in zip(ab.hub, (drive, reverse)):
+        ripple, lo, hi, at_lo, at_hi = _hub_by_hand(law, run, c.phi, c.te)
+        assert h.ripple == pytest.approx(ripple, rel=1e-12)
+        assert (h.v_min_rel, h.v_max_rel) == (pytest.approx(lo, rel=1e-13), pytest.approx(hi, rel=1e-13))
+        assert (h.phi_min, h.phi_max) == (at_lo, at_hi)
+        assert h.v_min_rel < 1 < h.v_max_rel or h.v_max_rel < 1 or h.v_min_rel > 1
+    assert ab.ripple == max(h.ripple for h in ab.hub) and ab.hub[0].ripple != ab.hub[1].ripple
+
+
+def test_corner_run_is_the_longer_of_the_two_directions_named_with_its_start():
+    """A run of corner samples reaches half-way to its neighbours: drive corners at theta 0.2, 0.3 (neighbours 0.1,
+    0.45): 0.1 + 0.05 + 0.075 rad; reverse corners at 0.5 .. 0.9 then the end: 0.4 + 0.05 + 0 rad."""
+    from propulsor.parts.noncircular_pair.as_built import combine
+
+    law = EllipticalLaw(0.3, 1)
+    d = SimpleNamespace(law=law, run_law=law, L=80.0)
+    th = [0.0, 0.1, 0.2, 0.3, 0.45, 0.5, 0.6, 0.9]
+    drive = _cl(DRIVE, th, [-1e-3] * 8, kind=[0, 0, 1, 2, 0, 0, 0, 0])
+    reverse = _cl(REVERSE, th, [1e-3] * 8, kind=[0, 0, 0, 0, 0, 3, 1, 4])
+    run_d, run_r = math.degrees(0.1 + 0.05 + 0.075), math.degrees(0.4 + 0.025 + 0.0)
+    assert run_r > run_d
+    best, where = combine(d, drive, reverse).corner_run_max_deg()
+    assert best == pytest.approx(run_r, rel=1e-13)
+    assert where == f"reverse at driver {math.degrees(0.5):.3f} deg" == "reverse at driver 28.648 deg"
+    best, where = combine(d, drive, _cl(REVERSE, th, [1e-3] * 8)).corner_run_max_deg()
+    assert best == pytest.approx(run_d, rel=1e-13) and where == "drive at driver 11.459 deg"
+    # equal runs: the first direction's; none: 0 and nothing named
+    best, where = combine(d, drive, _cl(REVERSE, th, [1e-3] * 8, kind=[0, 0, 1, 2, 0, 0, 0, 0])).corner_run_max_deg()
+    assert where.startswith("drive at")
+    assert combine(d, _cl(DRIVE, th, [0.0] * 8), _cl(REVERSE, th, [0.0] * 8)).corner_run_max_deg() == (0.0, "")
+
+
+def _polygon(n, r, start):
+    t = start + 2 * math.pi * np.arange(n) / n
+    return np.column_stack([r * np.cos(t), r * np.sin(t)])
+
+
+def _mid_pairs(angles):
+    a = sorted(math.atan2(math.sin(t), math.cos(t)) for t in angles)
+    return [0.5 * (a[i] + a[i + 1]) for i in range(0, len(a) - 1, 2)]
+
+
+def test_outlines_without_a_tooth_record_take_their_teeth_from_pairs_of_convex_corners():
+    """An octagon (corners turning 45 deg: more than the 20 deg of a corner, less than 1 rad) and a heptagon (an odd
+    count: the last corner unpaired) as outlines of wheels without a tooth record: the tooth centres are the mid-angles
+    of their convex corners sorted and taken in pairs.  A 100-gon (3.6 deg turns) has no corner: one tooth at 0; a
+    half disc two corners, one tooth between them."""
+    from propulsor.parts.noncircular_pair.as_built import pair_outlines
+
+    law = EllipticalLaw(0.3, 1)
+    octagon, heptagon = _polygon(8, 20.0, 0.1), _polygon(7, 15.0, -0.3)
+    d = SimpleNamespace(run_law=law, driver=SimpleNamespace(profile=[octagon]),
+                        driven=SimpleNamespace(profile=[heptagon], teeth=[]))
+    pair = pair_outlines(d, 41.5)
+    assert pair.L == 41.5
+    np.testing.assert_allclose(pair.driver_teeth, _mid_pairs(0.1 + 2 * math.pi * np.arange(8) / 8), atol=1e-12)
+    assert len(pair.driven_teeth) == 3
+    np.testing.assert_allclose(pair.driven_teeth, _mid_pairs(-0.3 + 2 * math.pi * np.arange(7) / 7), atol=1e-12)
+    np.testing.assert_array_equal(pair.drv.points, outline([octagon]).points)
+    np.testing.assert_array_equal(pair.dvn.points, outline([heptagon]).points)
+    t = np.linspace(0.0, math.pi, 60)
+    half = np.vstack([np.column_stack([10 * np.cos(t + 0.3), 10 * np.sin(t + 0.3)])])
+    circle = _polygon(100, 12.0, 0.0)
+    # teeth without their centres (sector teeth): the corners too
+    d2 = SimpleNamespace(run_law=law, driver=SimpleNamespace(profile=[circle], teeth=[SimpleNamespace()]),
+                         driven=SimpleNamespace(profile=[half]))
+    pair2 = pair_outlines(d2, 30.0)
+    assert pair2.driver_teeth.tolist() == [0.0]
+    np.testing.assert_allclose(pair2.driven_teeth, [0.5 * (0.3 + 0.3 + math.pi - 2 * math.pi)], atol=1e-12)
+
+
+def test_pair_outlines_of_the_generated_pair_name_the_tooth_centres_by_the_law():
+    """The generated pair: the outer loops at the motion chord 1e-4 mm; driven teeth at their body angles, driver
+    teeth at pi - theta(phi_centre) (the driver faces the driven wheel across the centre line)."""
+    from propulsor.parts.noncircular_pair.as_built import pair_outlines
+
+    _, d = _elliptical_design()
+    pair = pair_outlines(d, d.L + 0.05)
+    assert pair.L == d.L + 0.05
+    np.testing.assert_array_equal(pair.driven_teeth, [t.phi_centre for t in d.driven.teeth])
+    want = [math.pi - float(d.law.theta(np.array([t.phi_centre]))[0]) for t in d.driver.teeth]
+    np.testing.assert_allclose(pair.driver_teeth, want, rtol=0, atol=1e-15)
+    assert len(want) == 30 and want[0] == pytest.approx(math.pi)
+    np.testing.assert_array_equal(pair.drv.points, outline([d.driver.profile.outer.polyline(1e-4)]).points)
+    np.testing.assert_array_equal(pair.dvn.points, outline([d.driven.profile.outer.polyline(1e-4)]).points)
+
+
+def test_as_built_resolves_both_directions_over_one_period_and_none_after_a_jam(monkeypatch):
+    """The elliptical pair at 6 deg of driver: each direction the contact of resolve_contact over 0 .. 2 pi (one
+    lobe: the whole turn) of the driven wheel, counted to the build through parallel.tick; a proof with a jam or
+    a phase without a running position gives None."""
+    from propulsor import parallel
+    from propulsor.parts.noncircular_pair.as_built import as_built, contact_direction, pair_outlines
+
+    _, d = _elliptical_design()
+    step = math.radians(6.0)
+    mount = d.L + 0.02
+    ticks = []
+    monkeypatch.setattr(parallel, "_TICK", lambda done, total: ticks.append((done, total)))
+    one = contact_direction(d, mount, REVERSE, step)
+    assert ticks and ticks[-1][0] == ticks[-1][1] == one.evaluations
+    po = pair_outlines(d, mount)
+    want = {k: resolve_contact(po, d.law.theta, 0.0, 2 * math.pi, k, step_driver_rad=step) for k in (DRIVE, REVERSE)}
+    np.testing.assert_array_equal(one.te, want[REVERSE].te)
+    np.testing.assert_array_equal(one.phi, want[REVERSE].phi)
+    ok = SimpleNamespace(jams=[], phi_drive=np.array([0.0, 0.1]))
+    for pr in (None, ok):
+        ab = as_built(d, mount, pr, step)
+        assert ab.drive.direction == DRIVE and ab.reverse.direction == REVERSE
+        for c in (DRIVE, REVERSE):
+            got = ab.drive if c == DRIVE else ab.reverse
+            np.testing.assert_array_equal(got.phi, want[c].phi)
+            np.testing.assert_array_equal(got.te, want[c].te)
+        assert ab.span == 2 * math.pi
+        x = np.union1d(want[DRIVE].phi, want[REVERSE].phi)
+        U = np.asarray(d.law.U(x), float)
+        bl = (np.interp(x, want[REVERSE].phi, want[REVERSE].te) - np.interp(x, want[DRIVE].phi, want[DRIVE].te)) \
+            * d.L * U / (1 + U)
+        assert ab.backlash_min_mm == pytest.approx(float(np.min(bl)), rel=1e-12)
+        assert 0.18 < ab.backlash_min_mm < 0.19  # 0.170 at L, 2 tan(20 deg) 0.02 mm more
+    assert as_built(d, mount, SimpleNamespace(jams=[(0.1, "x")], phi_drive=np.array([0.0, 0.1])), step) is None
+    assert as_built(d, mount, SimpleNamespace(jams=[], phi_drive=np.array([0.0, math.nan])), step) is None
