@@ -282,20 +282,215 @@ def test_as_built_resolves_both_directions_over_one_period_and_none_after_a_jam(
     want = {k: resolve_contact(po, d.law.theta, 0.0, 2 * math.pi, k, step_driver_rad=step) for k in (DRIVE, REVERSE)}
     np.testing.assert_array_equal(one.te, want[REVERSE].te)
     np.testing.assert_array_equal(one.phi, want[REVERSE].phi)
-    ok = SimpleNamespace(jams=[], phi_drive=np.array([0.0, 0.1]))
-    for pr in (None, ok):
-        ab = as_built(d, mount, pr, step)
-        assert ab.drive.direction == DRIVE and ab.reverse.direction == REVERSE
-        for c in (DRIVE, REVERSE):
-            got = ab.drive if c == DRIVE else ab.reverse
-            np.testing.assert_array_equal(got.phi, want[c].phi)
-            np.testing.assert_array_equal(got.te, want[c].te)
-        assert ab.span == 2 * math.pi
-        x = np.union1d(want[DRIVE].phi, want[REVERSE].phi)
-        U = np.asarray(d.law.U(x), float)
-        bl = (np.interp(x, want[REVERSE].phi, want[REVERSE].te) - np.interp(x, want[DRIVE].phi, want[DRIVE].te)) \
-            * d.L * U / (1 + U)
-        assert ab.backlash_min_mm == pytest.approx(float(np.min(bl)), rel=1e-12)
-        assert 0.18 < ab.backlash_min_mm < 0.19  # 0.170 at L, 2 tan(20 deg) 0.02 mm more
+    ab = as_built(d, mount, SimpleNamespace(jams=[], phi_drive=np.array([0.0, 0.1])), step)
+    assert ab.drive.direction == DRIVE and ab.reverse.direction == REVERSE
+    for c in (DRIVE, REVERSE):
+        got = ab.drive if c == DRIVE else ab.reverse
+        np.testing.assert_array_equal(got.phi, want[c].phi)
+        np.testing.assert_array_equal(got.te, want[c].te)
+    assert ab.span == 2 * math.pi
+    x = np.union1d(want[DRIVE].phi, want[REVERSE].phi)
+    U = np.asarray(d.law.U(x), float)
+    bl = (np.interp(x, want[REVERSE].phi, want[REVERSE].te) - np.interp(x, want[DRIVE].phi, want[DRIVE].te)) \
+        * d.L * U / (1 + U)
+    assert ab.backlash_min_mm == pytest.approx(float(np.min(bl)), rel=1e-12)
+    assert 0.18 < ab.backlash_min_mm < 0.19  # 0.170 at L, 2 tan(20 deg) 0.02 mm more
     assert as_built(d, mount, SimpleNamespace(jams=[(0.1, "x")], phi_drive=np.array([0.0, 0.1])), step) is None
     assert as_built(d, mount, SimpleNamespace(jams=[], phi_drive=np.array([0.0, math.nan])), step) is None
+
+
+# =========================================================================== tolerance.py
+def test_iso_286_standard_tolerance_by_grade_with_its_ends_held():
+    """IT_A = mult i, i = 0.45 L^(1/3) + 0.001 L um: at L = 27 mm, i = 1.35 + 0.027 = 1.377 um; IT5 7 i .. IT12 160 i,
+    grades below 5 as 5, above 12 as 12, a fractional grade as its whole part."""
+    from propulsor.parts.noncircular_pair.tolerance import _it
+
+    i = 1.377e-3
+    for grade, mult in ((5, 7), (6, 10), (7, 16), (8, 25), (9, 40), (10, 64), (11, 100), (12, 160), (4, 7), (1, 7),
+                        (13, 160), (18, 160), (8.7, 25)):
+        assert _it(27.0, grade) == pytest.approx(mult * i, rel=1e-12), grade
+    # L = 1000: i = 4.5 + 1 = 5.5 um (the linear term)
+    assert _it(1000.0, 8) == pytest.approx(25 * 5.5e-3, rel=1e-12)
+
+
+def test_iso_1328_radial_runout_by_hand():
+    """F_r = 0.8 (0.3 m + 1.25 sqrt(d) + 7) 2^((A - 5)/2) um: m = 2, d = 64: 0.8 (0.6 + 10 + 7) = 14.08 um at grade 5,
+    twice at 7, sqrt 2 times at 6."""
+    from propulsor.parts.noncircular_pair.tolerance import _runout
+
+    assert _runout(2.0, 64.0, 5) == pytest.approx(14.08e-3, rel=1e-12)
+    assert _runout(2.0, 64.0, 7) == pytest.approx(28.16e-3, rel=1e-12)
+    assert _runout(2.0, 64.0, 6) == pytest.approx(14.08e-3 * math.sqrt(2), rel=1e-12)
+    assert _runout(4.0, 100.0, 5) == pytest.approx(0.8 * (1.2 + 12.5 + 7.0) * 1e-3, rel=1e-12)
+
+
+def test_iso1328_tolerances_of_each_wheel_and_their_source_in_full():
+    """m = 2, driver z 32 (d 64), driven z 50 (d 100), L = 27 mm, grade 7, alpha 25 deg: F_r 28.16 / 32.16 um,
+    f_a = IT7/2 = 16 x 1.377 / 2 = 11.016 um, flanks thinner by 0 .. 32.16 tan 25 deg = 14.997 um; the larger run-out
+    sets the thinning whichever wheel has it."""
+    from propulsor.parts.noncircular_pair.tolerance import Tolerances, iso1328
+
+    D = SimpleNamespace(m=2.0, z=32, z_H=50)
+    t = iso1328(D, 27.0, 7, math.radians(25.0))
+    thin = 32.16e-3 * math.tan(math.radians(25.0))
+    assert t == Tolerances(pytest.approx(11.016e-3, rel=1e-12), pytest.approx(14.08e-3, rel=1e-12),
+                           pytest.approx(16.08e-3, rel=1e-12), 0.0, pytest.approx(thin, rel=1e-12), t.source)
+    assert t.source == ("ISO 1328 grade 7: F_r 28.2 / 32.2 um (driver / driven), f_a = IT7/2 = 11.0 um, flanks "
+                        "thinner by 0 .. 15.0 um")
+    # the driver the larger wheel; the defaults grade 8 and alpha 20 deg
+    D2 = SimpleNamespace(m=2.0, z=50, z_H=32)
+    t8 = iso1328(D2, 27.0)
+    F1, F2 = 0.8 * (0.6 + 12.5 + 7.0) * 2 ** 1.5e0 * 1e-3, 0.8 * (0.6 + 10.0 + 7.0) * 2 ** 1.5 * 1e-3
+    assert (t8.e_driver, t8.e_driven) == (pytest.approx(F1 / 2, rel=1e-12), pytest.approx(F2 / 2, rel=1e-12))
+    assert t8.f_a == pytest.approx(25 * 1.377e-3 / 2, rel=1e-12)
+    assert (t8.t_lo, t8.t_hi) == (0.0, pytest.approx(F1 * math.tan(math.radians(20.0)), rel=1e-12))
+    assert t8.source == (f"ISO 1328 grade 8: F_r {1e3 * F1:.1f} / {1e3 * F2:.1f} um (driver / driven), f_a = IT8/2 = "
+                         f"17.2 um, flanks thinner by 0 .. {1e3 * F1 * 0.36397023426620234:.1f} um")
+    assert t8.source.startswith("ISO 1328 grade 8: F_r 45.5 / 39.8 um")
+
+
+def test_printed_tolerances_and_their_source_in_full():
+    from propulsor.parts.noncircular_pair.tolerance import Tolerances, printed
+
+    t = printed(0.15, 0.25)
+    assert t == Tolerances(0.15, 0.25, 0.25, -0.15, 0.15, "printed: edges +- 0.15 mm (xy accuracy), run-out 0.25 mm "
+                           "(the pins' running clearance), centre distance +- 0.15 mm")
+
+
+def test_worst_cases_are_the_tight_and_loose_corners_with_the_runouts_in_phase_and_opposed():
+    from propulsor.parts.noncircular_pair.tolerance import Case, Tolerances, worst_cases
+
+    tol = Tolerances(0.03, 0.011, 0.017, -0.004, 0.021, "s")
+    assert worst_cases(tol) == [
+        Case("tight, run-outs in phase", -0.03, 0.011, 0.0, 0.017, 0.0, -0.004, -0.004),
+        Case("tight, run-outs opposed", -0.03, 0.011, 0.0, 0.017, math.pi, -0.004, -0.004),
+        Case("loose, run-outs in phase", 0.03, 0.011, 0.0, 0.017, 0.0, 0.021, 0.021),
+        Case("loose, run-outs opposed", 0.03, 0.011, 0.0, 0.017, math.pi, 0.021, 0.021)]
+
+
+def test_monte_carlo_cases_draw_each_deviation_uniformly_in_its_range_from_the_seed():
+    """uniform(a, b) = a + (b - a) random(): dL, e_driver, psi_driver, e_driven, psi_driven, t_driver, t_driven in
+    that order, case after case, from random.Random(seed)."""
+    from propulsor.parts.noncircular_pair.tolerance import Case, Tolerances, monte_carlo_cases
+
+    tol = Tolerances(0.03, 0.011, 0.017, -0.004, 0.021, "s")
+    r = random.Random(5)
+
+    def u(a, b):
+        return a + (b - a) * r.random()
+
+    want = [Case(f"sample {k}", u(-0.03, 0.03), u(0.0, 0.011), u(0.0, 2 * math.pi), u(0.0, 0.017),
+                 u(0.0, 2 * math.pi), u(-0.004, 0.021), u(-0.004, 0.021)) for k in (1, 2, 3)]
+    got = monte_carlo_cases(tol, 3, 5)
+    assert [c.name for c in got] == ["sample 1", "sample 2", "sample 3"]
+    for g, w in zip(got, want):
+        assert g == Case(w.name, *(pytest.approx(getattr(w, f), rel=1e-14, abs=1e-18) for f in
+                                   ("dL", "e_driver", "psi_driver", "e_driven", "psi_driven", "t_driver", "t_driven")))
+    assert len(got) == 3 and monte_carlo_cases(tol, 0, 5) == []
+    assert monte_carlo_cases(tol, 2, 6)[0] != got[0]
+
+
+def test_a_changed_outline_is_offset_along_its_normals_and_turns_off_its_axis():
+    """A 720-gon of radius 20 thinned by 0.3 mm about a centre 0.5 mm off at psi = 2 rad: every vertex 19.7 mm from
+    (0.5 cos 2, 0.5 sin 2) to the polygon's sagitta; thickened by 0.3 mm: 20.3 mm; no thinning: the same vertices
+    moved."""
+    from propulsor.parts.noncircular_pair.tolerance import _changed
+
+    o = outline([_polygon(720, 20.0, 0.0)])
+    c = np.array([0.5 * math.cos(2.0), 0.5 * math.sin(2.0)])
+    sag = 20.0 * (1 - math.cos(math.pi / 720))
+    for t, r in ((0.3, 19.7), (-0.3, 20.3)):
+        q = _changed(o, 0.5, 2.0, t).points
+        dist = np.hypot(*(q - c).T)
+        assert np.all(np.abs(dist - r) <= sag + 1e-5), (t, dist.min(), dist.max())  # clipper rounds to 1e-6 mm
+    np.testing.assert_allclose(_changed(o, 0.5, 2.0, 0.0).points, o.points + c, rtol=0, atol=1e-14)
+
+
+def _case_by_hand(d, mount, case, step):
+    """Both directions of the changed outlines over the whole turn (resolve_contact with the cap of 4 turns' samples
+    + 1000), the least backlash on r_H = L U / (1 + U), the larger step, the lost samples."""
+    from propulsor.checks.motion.outlines import offset_outline
+    from propulsor.parts.noncircular_pair.as_built import pair_outlines
+
+    base = pair_outlines(d, mount)
+    drv = offset_outline(base.drv, case.t_driver, (case.e_driver * math.cos(case.psi_driver),
+                                                   case.e_driver * math.sin(case.psi_driver)))
+    dvn = offset_outline(base.dvn, case.t_driven, (case.e_driven * math.cos(case.psi_driven),
+                                                   case.e_driven * math.sin(case.psi_driven)))
+    po = PairOutlines(drv, dvn, mount + case.dL, base.driver_teeth, base.driven_teeth)
+    cap = int(4 * 360.0 / math.degrees(step)) + 1000
+    dr, rv = (resolve_contact(po, d.law.theta, 0.0, 2 * math.pi, k, step_driver_rad=step, max_evals=cap)
+              for k in (DRIVE, REVERSE))
+    x = np.union1d(dr.phi, rv.phi)
+    U = np.asarray(d.law.U(x), float)
+    okd, okr = np.isfinite(dr.te), np.isfinite(rv.te)
+    bl = (np.interp(x, rv.phi[okr], rv.te[okr]) - np.interp(x, dr.phi[okd], dr.te[okd])) * d.L * U / (1 + U)
+    worst = dr if dr.step_max >= rv.step_max else rv
+    return dr, rv, float(np.min(bl)), float(x[int(np.argmin(bl))]), worst
+
+
+def test_a_case_is_both_directions_of_the_changed_outlines_over_the_whole_turn():
+    """The elliptical pair made 0.05 mm apart, the driver 0.03 mm off at 1 rad and 0.01 mm thinner, the driven
+    0.02 mm off at 2 rad and 0.02 mm thicker, at 6 deg of driver: every field against the contact resolved in the
+    test."""
+    from propulsor.parts.noncircular_pair.tolerance import Case, run_case
+
+    _, d = _elliptical_design()
+    step = math.radians(6.0)
+    case = Case("a", 0.05, 0.03, 1.0, 0.02, 2.0, 0.01, -0.02)
+    r = run_case(d, d.L + 0.01, case, step)
+    dr, rv, bl, at, worst = _case_by_hand(d, d.L + 0.01, case, step)
+    assert r.case == case
+    assert (r.te_pp_drive, r.te_pp_reverse) == (dr.te_pp, rv.te_pp) and r.te_pp_drive != r.te_pp_reverse
+    assert r.backlash_min_mm == pytest.approx(bl, rel=1e-12) and r.backlash_min_phi == at
+    assert 0.15 < bl < 0.18
+    assert r.step_max == worst.step_max == max(dr.step_max, rv.step_max)
+    assert r.step_theta == worst.step_at()[1]
+    assert r.lost == 0 and not r.jam
+
+
+def test_a_tolerance_study_runs_the_four_corners_then_the_seeded_draws():
+    """The elliptical pair within printed tolerances (0.02 mm, run-out 0.01 mm) at 12 deg of driver: the corners of
+    worst_cases in order, then monte_carlo_cases(tol, 1, 4), each run as run_case runs it."""
+    from propulsor.parts.noncircular_pair.tolerance import (monte_carlo_cases, printed, run_case, tolerance_study,
+                                                            worst_cases)
+
+    _, d = _elliptical_design()
+    step = math.radians(12.0)
+    tol = printed(0.02, 0.01)
+    st = tolerance_study(d, d.L + 0.01, tol, 1, 4, step)
+    assert st.tolerances is tol and st.seed == 4 and st.seconds > 0
+    assert [r.case for r in st.worst] == worst_cases(tol)
+    assert [r.case for r in st.samples] == monte_carlo_cases(tol, 1, 4)
+    assert st.samples[0] == run_case(d, d.L + 0.01, monte_carlo_cases(tol, 1, 4)[0], step)
+
+
+def _result(case_name, **kw):
+    from propulsor.parts.noncircular_pair.tolerance import Case, CaseResult
+
+    f = dict(te_pp_drive=0.0, te_pp_reverse=0.0, backlash_min_mm=0.1, backlash_min_phi=0.0, step_max=0.0,
+             step_theta=0.0, lost=0)
+    f.update(kw)
+    return CaseResult(Case(case_name), **f)
+
+
+def test_percentiles_of_the_draws_and_nan_without_draws():
+    """numpy's linear percentiles of 1, 2, 3, 4, 5: 5 % 1.2, 50 % 3, 95 % 4.8; other quantiles as asked; no draw:
+    nan for each."""
+    from propulsor.parts.noncircular_pair.tolerance import ToleranceStudy, printed
+
+    rs = tuple(_result(f"s{k}", backlash_min_mm=float(v)) for k, v in enumerate([3, 1, 5, 2, 4]))
+    st = ToleranceStudy(printed(0.1, 0.1), (), rs, 1, 0.0)
+    assert st.percentiles("backlash_min_mm") == (pytest.approx(1.2), 3.0, pytest.approx(4.8))
+    assert st.percentiles("backlash_min_mm", (0, 25, 100)) == (1.0, 2.0, 5.0)
+    empty = ToleranceStudy(printed(0.1, 0.1), rs, (), 1, 0.0).percentiles("backlash_min_mm", (10, 90))
+    assert len(empty) == 2 and all(math.isnan(v) for v in empty)
+    assert len(ToleranceStudy(printed(0.1, 0.1), rs, (), 1, 0.0).percentiles("lost")) == 3
+
+
+def test_scaled_tolerances_are_k_times_as_wide_from_the_same_source():
+    from propulsor.parts.noncircular_pair.tolerance import Tolerances, scaled
+
+    t = Tolerances(0.03, 0.011, 0.017, -0.004, 0.021, "src")
+    assert scaled(t, 3.0) == Tolerances(pytest.approx(0.09), pytest.approx(0.033), pytest.approx(0.051),
+                                        pytest.approx(-0.012), pytest.approx(0.063), "src")
