@@ -494,3 +494,326 @@ def test_scaled_tolerances_are_k_times_as_wide_from_the_same_source():
     t = Tolerances(0.03, 0.011, 0.017, -0.004, 0.021, "src")
     assert scaled(t, 3.0) == Tolerances(pytest.approx(0.09), pytest.approx(0.033), pytest.approx(0.051),
                                         pytest.approx(-0.012), pytest.approx(0.063), "src")
+
+
+# =========================================================================== tooth_load_outputs.py
+def _load_params(**kw):
+    """The elliptical part file's pair with a load case (real parameters: load_params checks them)."""
+    from propulsor.params import load_params, read_part_file
+    from propulsor.parts.noncircular_pair import NoncircularPairParams
+
+    _, mapping = read_part_file(PARTS / "ncg_elliptical.toml")
+    mapping.update(dict(load_driver_torque_Nm=20.0, load_K_A=1.25, load_K_v=1.1, load_K_beta=1.2, load_S_Hmin=1.1,
+                        load_S_Fmin=1.5, gear_material="steel_case_MQ"))
+    mapping.update(kw)
+    return load_params(NoncircularPairParams, mapping)
+
+
+def _section(tooth, s_Fn, rho_lo, rho_hi):
+    from propulsor.gears.tooth_load import RootSection
+
+    return RootSection(tooth, np.array([0.0, 0.0]), np.array([0.6 * s_Fn, 0.8 * s_Fn]), rho_lo, rho_hi,
+                       np.array([0.0, 1.0]))
+
+
+def _tooth_load(mat="steel_case_MQ", **kw):
+    """Driver: 6 teeth, 4 a period (tooth j stands for j mod 4), tooth 3 not loaded, tooth 2's section measured as
+    tooth 6, tooth 1's section failed; driven: 5 teeth, every one its own (repeat 0), 0 and 2 loaded."""
+    from propulsor.gears.gear_materials import material
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import ToothLoad, _Peak
+
+    nan = math.nan
+    f = dict(
+        rows=[[1.0, 0.5, 20.0, 21.0, 1, 0, 0, 0.0, 1.0, 1000.0, 20.0, 21.0, 9.0, 11.0, 600.0, 80.0, 90.0],
+              [7.5, 3.5, 20.0, 23.0, 2, 1, 2, 1.0, 0.6, 1200.0, 20.0, 21.0, 9.0, 11.0, 650.0, 70.0, 30.0],
+              [4.0, 2.0, 20.0, 22.0, 2, 2, 0, 3.0, 0.4, 900.0, 20.0, 21.0, 9.0, 11.0, 620.0, 10.0, 40.0]],
+        theta=np.array([0.01, 0.02, 0.05, 0.07]), phi=np.array([0.005, 0.01, 0.025, 0.035]),
+        T1=np.array([20.0, 20.0, 20.0, 20.0]), T2=np.array([21.0, 23.0, 22.0, 19.5]), loaded=np.array([1, 2, 2, 1]),
+        imbalance=3e-13, lost=0,
+        peaks={"driver": {0: _Peak(1000.0, 600.0, 3.0, 80.0, 5.0), 1: _Peak(1200.0, 650.0, 7.5, 70.0, 9.0),
+                          2: _Peak(900.0, 620.0, 4.0, 10.0, 4.0)},
+               "driven": {0: _Peak(1100.0, 700.0, 2.0, 90.0, 4.0), 2: _Peak(500.0, 300.0, 1.0, 30.0, 1.5)}},
+        sections={"driver": {0: _section(0, 5.0, 0.6, 0.5), 1: _section(1, 4.0, -1.0, 0.5),
+                             6: _section(6, 4.5, 0.7, 0.9)},
+                  "driven": {0: _section(0, 5.5, 0.8, 0.75), 2: _section(2, 5.2, 0.65, 0.66)}},
+        load_case="driver torque T1 = 20 N·m, more", material=material(mat), Z_E=189.8, c_prime=(13.1, 14.2),
+        K_H=1.65, K_F=1.65, window_rad=1e-4, evaluations=9, teeth={"driver": 6, "driven": 5},
+        repeat={"driver": 4, "driven": 0}, cycles={"driver": 2.0, "driven": 1.0})
+    f.update(kw)
+    return ToothLoad(**f)
+
+
+def test_a_tooth_of_another_period_is_reported_as_the_tooth_it_repeats():
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import _Peak
+
+    tl = _tooth_load()
+    assert tl.tooth_peak("driver", 1) == (_Peak(1200.0, 650.0, 7.5, 70.0, 9.0), "measured")
+    assert tl.tooth_peak("driver", 5) == (_Peak(1200.0, 650.0, 7.5, 70.0, 9.0), "as tooth 1")
+    assert tl.tooth_peak("driver", 4)[1] == "as tooth 0"
+    pk, how = tl.tooth_peak("driver", 3)
+    assert how == "not loaded" and all(math.isnan(getattr(pk, f)) for f in ("F", "sH", "sH_at", "sF", "sF_at"))
+    assert tl.tooth_peak("driven", 2)[1] == "measured" and tl.tooth_peak("driven", 4)[1] == "not loaded"
+    # a section by its number, by its number mod the period, or none
+    assert tl.section_of("driver", 4) is tl.sections["driver"][0]
+    assert tl.section_of("driver", 2) is tl.sections["driver"][6]
+    assert tl.section_of("driver", 3) is None
+    assert tl.section_of("driven", 2) is tl.sections["driven"][2] and tl.section_of("driven", 1) is None
+
+
+def test_fold_keeps_each_class_of_teeth_its_largest_force_and_stresses_with_their_angles():
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import _Peak, _fold
+
+    peaks = {0: _Peak(100.0, 500.0, 1.0, 50.0, 2.0), 3: _Peak(120.0, 400.0, 3.0, 60.0, 4.0),
+             1: _Peak(80.0, 0.0, math.nan, 0.0, math.nan), 4: _Peak(70.0, 450.0, 5.0, 55.0, 6.0)}
+    out = _fold(peaks, 3)
+    assert out == {0: _Peak(120.0, 500.0, 1.0, 60.0, 4.0), 1: _Peak(80.0, 450.0, 5.0, 55.0, 6.0)}
+    # equal stresses keep the first tooth's angle
+    eq = _fold({0: _Peak(1.0, 5.0, 1.0, 7.0, 2.0), 2: _Peak(1.0, 5.0, 9.0, 7.0, 9.0)}, 2)
+    assert eq == {0: _Peak(1.0, 5.0, 1.0, 7.0, 2.0)}
+
+
+def test_life_factors_from_the_load_cycles_of_each_gear():
+    """100 rpm of the driver, 2 driver turns a driven turn, 1000 h: 3e6 driven turns; the driver's teeth 6e6 cycles,
+    the driven's 3e6.  Case-hardened steel: Z_NT = (5e7/N)^0.0756, Y_NT = (3e6/N)^0.02 above 3e6 (ISO 6336-2/-3);
+    no life: the endurance limit (1, 1); printed: static (1, 1)."""
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import _life
+
+    tl = _tooth_load()
+    p = _load_params(load_driver_speed_rpm=100.0, load_life_hours=1000.0)
+    N, Z, Y = _life(tl, p, "driver")
+    assert N == pytest.approx(6e6, rel=1e-12)
+    assert Z == pytest.approx((5e7 / 6e6) ** 0.0756, rel=1e-12) and Y == pytest.approx(0.5 ** 0.02, rel=1e-12)
+    N, Z, Y = _life(tl, p, "driven")
+    assert N == pytest.approx(3e6, rel=1e-12) and Z == pytest.approx((5e7 / 3e6) ** 0.0756, rel=1e-12)
+    assert _life(tl, _load_params(), "driver") == (None, 1.0, 1.0)
+    assert _life(_tooth_load("PLA"), p, "driver")[1:] == (1.0, 1.0)
+
+
+def test_peak_rows_are_every_tooth_of_both_gears_with_its_safeties():
+    """Each row: gear, tooth, how measured, cycles a driven turn, peak F_n, sigma_H and where, sigma_F and where,
+    s_Fn and the smaller fillet radius of its section (nan without one, or a failed one), S_H = sigma_Hlim Z_NT /
+    sigma_H, S_F = sigma_FE Y_NT / sigma_F (nan where unloaded)."""
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import peak_rows
+
+    nan = math.nan
+    p = _load_params(load_driver_speed_rpm=100.0, load_life_hours=1000.0)
+    Zd, Yd = (5e7 / 6e6) ** 0.0756, 0.5 ** 0.02
+    Zn, Yn = (5e7 / 3e6) ** 0.0756, 1.0
+    want = [
+        ["driver", 0, "measured", 2.0, 1000.0, 600.0, 3.0, 80.0, 5.0, 5.0, 0.5, 1500 * Zd / 600, 850 * Yd / 80],
+        ["driver", 1, "measured", 2.0, 1200.0, 650.0, 7.5, 70.0, 9.0, nan, nan, 1500 * Zd / 650, 850 * Yd / 70],
+        ["driver", 2, "measured", 2.0, 900.0, 620.0, 4.0, 10.0, 4.0, 4.5, 0.7, 1500 * Zd / 620, 850 * Yd / 10],
+        ["driver", 3, "not loaded", 2.0, nan, nan, nan, nan, nan, nan, nan, nan, nan],
+        ["driver", 4, "as tooth 0", 2.0, 1000.0, 600.0, 3.0, 80.0, 5.0, 5.0, 0.5, 1500 * Zd / 600, 850 * Yd / 80],
+        ["driver", 5, "as tooth 1", 2.0, 1200.0, 650.0, 7.5, 70.0, 9.0, nan, nan, 1500 * Zd / 650, 850 * Yd / 70],
+        ["driven", 0, "measured", 1.0, 1100.0, 700.0, 2.0, 90.0, 4.0, 5.5, 0.75, 1500 * Zn / 700, 850 * Yn / 90],
+        ["driven", 1, "not loaded", 1.0, nan, nan, nan, nan, nan, nan, nan, nan, nan],
+        ["driven", 2, "measured", 1.0, 500.0, 300.0, 1.0, 30.0, 1.5, 5.2, 0.65, 1500 * Zn / 300, 850 * Yn / 30],
+        ["driven", 3, "not loaded", 1.0, nan, nan, nan, nan, nan, nan, nan, nan, nan],
+        ["driven", 4, "not loaded", 1.0, nan, nan, nan, nan, nan, nan, nan, nan, nan]]
+    got = peak_rows(_tooth_load(), p)
+    assert len(got) == len(want)
+    for g, w in zip(got, want):
+        assert g[:3] == w[:3]
+        np.testing.assert_allclose(np.array(g[3:], float), np.array(w[3:], float), rtol=1e-12, atol=0)
+    # a tooth measured without stress: its safeties nan, not inf
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import _Peak
+
+    tl = _tooth_load(peaks={"driver": {0: _Peak(10.0, 0.0, math.nan, 0.0, math.nan)}, "driven": {}})
+    row = peak_rows(tl, _load_params())[0]
+    assert math.isnan(row[11]) and math.isnan(row[12])
+
+
+def _summary_by_hand(Zd=1.0, Yd=1.0, Zn=1.0, Yn=1.0):
+    return {
+        "tooth_load_driver_sigma_F_max_MPa": 80.0, "tooth_load_driver_sigma_F_worst_tooth": 0,
+        "tooth_load_driver_sigma_F_worst_driver_deg": 5.0, "tooth_load_driver_sigma_H_max_MPa": 650.0,
+        "tooth_load_driver_sigma_H_worst_tooth": 1, "tooth_load_driver_sigma_H_worst_driver_deg": 7.5,
+        "tooth_load_driver_F_n_max_N": 1200.0, "tooth_load_driver_uneven_F": 1200.0 / 900.0,
+        "tooth_load_driver_uneven_sigma_F": 80.0 / 10.0, "tooth_load_driver_S_H_min": 1500.0 * Zd / 650.0,
+        "tooth_load_driver_S_F_min": 850.0 * Yd / 80.0, "tooth_load_driver_cycles_per_driven_turn": 2.0,
+        "tooth_load_driven_sigma_F_max_MPa": 90.0, "tooth_load_driven_sigma_F_worst_tooth": 0,
+        "tooth_load_driven_sigma_F_worst_driver_deg": 4.0, "tooth_load_driven_sigma_H_max_MPa": 700.0,
+        "tooth_load_driven_sigma_H_worst_tooth": 0, "tooth_load_driven_sigma_H_worst_driver_deg": 2.0,
+        "tooth_load_driven_F_n_max_N": 1100.0, "tooth_load_driven_uneven_F": 1100.0 / 500.0,
+        "tooth_load_driven_uneven_sigma_F": 3.0, "tooth_load_driven_S_H_min": 1500.0 * Zn / 700.0,
+        "tooth_load_driven_S_F_min": 850.0 * Yn / 90.0, "tooth_load_driven_cycles_per_driven_turn": 1.0,
+        "tooth_load_S_H_min": min(1500.0 * Zd / 650.0, 1500.0 * Zn / 700.0),
+        "tooth_load_S_F_min": min(850.0 * Yd / 80.0, 850.0 * Yn / 90.0),
+        "tooth_load_T1_max_Nm": 20.0, "tooth_load_T1_min_Nm": 20.0, "tooth_load_T2_max_Nm": 23.0,
+        "tooth_load_T2_min_Nm": 19.5, "tooth_load_pairs_min": 1, "tooth_load_pairs_max": 2,
+        "tooth_load_pairs_mean": 1.5, "tooth_load_c_prime_min": 13.1, "tooth_load_c_prime_max": 14.2,
+        "tooth_load_Z_E": 189.8, "tooth_load_phases": 4, "tooth_load_material": "steel_case_MQ",
+        "tooth_load_sigma_Hlim_MPa": 1500.0, "tooth_load_sigma_FE_MPa": 850.0}
+
+
+def test_summary_names_the_worst_tooth_of_each_gear_and_the_least_safeties():
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import summary
+
+    got = summary(_tooth_load(), _load_params())
+    want = _summary_by_hand()
+    assert list(got) == list(want)
+    for k, v in want.items():
+        assert got[k] == (pytest.approx(v, rel=1e-13) if isinstance(v, float) else v), k
+        assert type(got[k]) is not np.ndarray
+    assert type(got["tooth_load_pairs_min"]) is int and type(got["tooth_load_phases"]) is int
+    # with a life: the life factors of each gear's cycles
+    got = summary(_tooth_load(), _load_params(load_driver_speed_rpm=100.0, load_life_hours=1000.0))
+    want = _summary_by_hand((5e7 / 6e6) ** 0.0756, 0.5 ** 0.02, (5e7 / 3e6) ** 0.0756, 1.0)
+    for k in ("tooth_load_driver_S_H_min", "tooth_load_driver_S_F_min", "tooth_load_driven_S_H_min",
+              "tooth_load_driven_S_F_min", "tooth_load_S_H_min", "tooth_load_S_F_min"):
+        assert got[k] == pytest.approx(want[k], rel=1e-13), k
+
+
+def test_summary_of_a_gear_without_a_stressed_tooth_is_nan_and_names_no_tooth():
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import _Peak, summary
+
+    tl = _tooth_load(peaks={"driver": {0: _Peak(1000.0, 600.0, 3.0, 80.0, 5.0)},
+                            "driven": {0: _Peak(0.0, 0.0, math.nan, 0.0, math.nan)}})
+    got = summary(tl, _load_params())
+    for k in ("sigma_F_max_MPa", "sigma_F_worst_driver_deg", "sigma_H_max_MPa", "sigma_H_worst_driver_deg",
+              "F_n_max_N", "uneven_F", "uneven_sigma_F", "S_H_min", "S_F_min"):
+        assert math.isnan(got[f"tooth_load_driven_{k}"]), k
+    assert got["tooth_load_driven_sigma_F_worst_tooth"] == got["tooth_load_driven_sigma_H_worst_tooth"] == -1
+    assert got["tooth_load_driver_uneven_F"] == 1.0 and got["tooth_load_driver_sigma_F_worst_tooth"] == 0
+    assert got["tooth_load_driver_S_H_min"] == pytest.approx(1500 / 600)
+    assert math.isnan(got["tooth_load_S_H_min"])  # the least of a nan: nan (its check fails)
+
+
+def test_checks_of_the_least_safeties_and_the_equilibrium_with_their_messages_in_full():
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import checks, summary
+
+    tl, p = _tooth_load(), _load_params()
+    vals = summary(tl, p)
+    sH, sF, eq = checks(tl, vals, p)
+    assert (sH.name, sH.passed, sH.value, sH.limit, sH.unit) == ("tooth_load.S_H", True,
+                                                                 pytest.approx(1500 / 700), 1.1, "")
+    assert sH.message == ("least contact safety sigma_Hlim Z_NT / sigma_H over every tooth: driver 2.308 (tooth 1, "
+                          "sigma_H 650.0 MPa at driver 7.50 deg), driven 2.143 (tooth 0); steel_case_MQ sigma_Hlim = "
+                          "1500 MPa")
+    assert (sF.name, sF.passed, sF.value, sF.limit) == ("tooth_load.S_F", True, pytest.approx(850 / 90), 1.5)
+    assert sF.message == ("least root safety sigma_FE Y_NT / sigma_F over every tooth: driver 10.625 (tooth 0, "
+                          "sigma_F 80.0 MPa at driver 5.00 deg), driven 9.444 (tooth 0, sigma_F 90.0 MPa); "
+                          "steel_case_MQ sigma_FE = 850 MPa")
+    assert eq.name == "tooth_load.equilibrium" and not eq.passed  # driver tooth 1's section failed
+    # a printed material's limits are static; a safety below its requirement fails
+    tl = _tooth_load("PLA")
+    p = _load_params(gear_material="PLA", load_S_Fmin=5.0)
+    vals = summary(tl, p)
+    sH, sF, _ = checks(tl, vals, p)
+    mat = tl.material
+    assert sH.message.endswith(f"PLA sigma_Hlim = {mat.sigma_Hlim_MPa:g} MPa (static limits of a printed material, "
+                               f"not a fatigue rating)")
+    assert sF.message.endswith(f"PLA sigma_FE = {mat.sigma_FE_MPa:g} MPa (static limits of a printed material, not a "
+                               f"fatigue rating)")
+    assert sF.passed is (min(mat.sigma_FE_MPa / 80, mat.sigma_FE_MPa / 90) >= 5.0)
+    assert sF.limit == 5.0
+
+
+def test_equilibrium_holds_to_1e_9_with_a_pair_at_every_phase_and_every_section():
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import equilibrium
+
+    whole = {"driver": {0: _section(0, 5.0, 0.6, 0.5)}, "driven": {0: _section(0, 5.5, 0.8, 0.75)}}
+    ok = equilibrium(_tooth_load(sections=whole, imbalance=1e-9))
+    assert (ok.name, ok.passed, ok.value, ok.limit, ok.unit) == ("tooth_load.equilibrium", True, 1e-9, 1e-9, "")
+    assert ok.message == ("0 of 4 phases without a loaded pair; 0 teeth without a 30 deg section; largest |sum F l1 - "
+                          "T1| / T1 1.00e-09")
+    off = equilibrium(_tooth_load(sections=whole, imbalance=1.01e-9), "x.eq", "case B: ")
+    assert (off.name, off.passed) == ("x.eq", False) and off.message.startswith("case B: 0 of 4 phases")
+    lost = equilibrium(_tooth_load(sections=whole, lost=2, imbalance=0.0))
+    assert not lost.passed and lost.value == 2.0 and lost.message.startswith("2 of 4 phases without")
+    bad = {"driver": {0: _section(0, 5.0, 0.6, 0.5), 1: _section(1, 4.0, -1.0, 0.5)},
+           "driven": {3: _section(3, 5.0, 0.6, math.nan)}}
+    miss = equilibrium(_tooth_load(sections=bad, lost=1, imbalance=0.5))
+    assert not miss.passed and miss.value == 3.0
+    assert miss.message == ("1 of 4 phases without a loaded pair; 2 teeth without a 30 deg section (driver 1, driven "
+                            "3); largest |sum F l1 - T1| / T1 5.00e-01")
+    assert equilibrium(_tooth_load(sections=whole, imbalance=4.0)).value == 4.0
+
+
+def test_factor_table_every_factor_its_value_and_source():
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import FACTOR_SOURCES, factor_rows, summary
+
+    tl = _tooth_load()
+    p = _load_params(load_driver_speed_rpm=100.0, load_life_hours=1000.0)
+    vals = summary(tl, p)
+    rows = factor_rows(tl, p, vals)
+    assert [r[0] for r in rows] == list(FACTOR_SOURCES) and [r[2] for r in rows] == list(FACTOR_SOURCES.values())
+    v = {r[0]: r[1] for r in rows}
+    Zd, Zn = (5e7 / 6e6) ** 0.0756, (5e7 / 3e6) ** 0.0756
+    assert v == {
+        "K_A": 1.25, "K_v": 1.1, "K_Hbeta": 1.2, "K_Fbeta": 1.2, "K_Halpha": "",
+        "c_prime": "13.1000 .. 14.2000 N/(mm um)", "Z_E": 189.8, "Z_H_Z_eps_Z_B": "",
+        "sigma_H": "driver 650.00, driven 700.00 MPa (peaks)", "s_Fn": "per tooth: tables/tooth_peaks.csv",
+        "rho_F": "per tooth: tables/tooth_peaks.csv", "h_Fe": "per phase: tables/tooth_load.csv",
+        "alpha_Fen": "per phase", "Y_F": "per phase", "Y_S": "per phase", "Y_epsilon": "",
+        "sigma_F": "driver 80.00, driven 90.00 MPa (peaks)", "sigma_Hlim": 1500.0, "sigma_FE": 850.0,
+        "Z_NT": f"driver {Zd:.4f}, driven {Zn:.4f} (N_L 6e+06 / 3e+06)",
+        "Y_NT": f"driver {0.5 ** 0.02:.4f}, driven 1.0000", "Z_L_Z_v_Z_R_Z_W_Z_X": 1.0,
+        "Y_deltarelT_Y_RrelT_Y_X": 1.0, "S_H": pytest.approx(vals["tooth_load_S_H_min"]),
+        "S_F": pytest.approx(vals["tooth_load_S_F_min"])}
+    assert v["Z_NT"] == "driver 1.1739, driven 1.2370 (N_L 6e+06 / 3e+06)"
+    v0 = {r[0]: r[1] for r in factor_rows(tl, _load_params(), summary(tl, _load_params()))}
+    assert v0["Z_NT"] == "driver 1.0000, driven 1.0000" and v0["Y_NT"] == "driver 1.0000, driven 1.0000"
+
+
+def test_without_a_load_nothing_and_without_an_as_built_contact_a_failed_check(tmp_path):
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import tooth_load_values
+    from propulsor.parts.writer import OutputWriter
+
+    p0 = _load_params(load_driver_torque_Nm=0.0)
+    w = OutputWriter(tmp_path, "noncircular_pair", p0)
+    tooth_load_values(w, SimpleNamespace(p=p0, d=None), {}, None)
+    assert (w.checks, w.tables, w.plots, w.derived, w.notes) == ([], [], [], {}, [])
+    p = _load_params()
+    w = OutputWriter(tmp_path, "noncircular_pair", p)
+    tooth_load_values(w, SimpleNamespace(p=p, d=None), {}, None)
+    (c,) = w.checks
+    assert (c.name, c.passed, c.value, c.limit, c.unit) == ("tooth_load.equilibrium", False, 1.0, 0.0, "")
+    assert c.message == "no as-built contact (the proof found a jam): no load per tooth"
+    assert (w.tables, w.plots, w.derived) == ([], [], {})
+
+
+class _Plots:
+    def __init__(self):
+        self.figs = {}
+
+    def add_plot(self, name, fig):
+        self.figs[name] = fig
+
+
+def test_the_plot_shows_every_tooths_peaks_against_the_allowables_and_every_pairs_stress():
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import _plot
+
+    tl, p = _tooth_load(), _load_params()
+    w = _Plots()
+    _plot(w, tl, p)
+    fig = w.figs["tooth_load"]
+    a1, a2, a3 = fig.axes
+    assert a1.get_title() == "driver: peak stress of every tooth over the cycle (most / least loaded root 8.000)"
+    assert a2.get_title() == "driven: peak stress of every tooth over the cycle (most / least loaded root 3.000)"
+    assert (a1.get_xlabel(), a2.get_xlabel(), a1.get_ylabel()) == ("driver tooth", "driven tooth", "MPa")
+    bars = [(r.get_x() + r.get_width() / 2, r.get_height(), r.get_width()) for r in a1.patches]
+    sF = [80.0, 70.0, 10.0, math.nan, 80.0, 70.0]
+    sH = [600.0, 650.0, 620.0, math.nan, 600.0, 650.0]
+    want = [(j - 0.2, sF[j], 0.4) for j in range(6)] + [(j + 0.2, sH[j], 0.4) for j in range(6)]
+    assert len(bars) == 12
+    for (x, h, wd), (x0, h0, w0) in zip(bars, want):
+        assert x == pytest.approx(x0) and wd == pytest.approx(w0)
+        assert (math.isnan(h) and math.isnan(h0)) or h == pytest.approx(h0)
+    lines = {ln.get_label(): ln.get_ydata()[0] for ln in a1.get_lines()}
+    assert lines == {"sigma_FE / S_Fmin = 567 MPa": pytest.approx(850 / 1.5),
+                     "sigma_Hlim / S_Hmin = 1364 MPa": pytest.approx(1500 / 1.1)}
+    assert [t.get_text() for t in a1.get_legend().get_texts()] == [
+        "sigma_FE / S_Fmin = 567 MPa", "sigma_Hlim / S_Hmin = 1364 MPa", "peak root stress sigma_F",
+        "peak contact stress sigma_H"]
+    assert a3.get_xlabel() == "driver angle theta, deg (one period)" and a3.get_ylabel() == "MPa"
+    assert a3.get_title() == "stress of every loaded pair over the period (driver torque T1 = 20 N·m)"
+    series = {ln.get_label(): (ln.get_xdata().tolist(), ln.get_ydata().tolist()) for ln in a3.get_lines()}
+    assert series == {"sigma_F driver tooth": ([1.0, 4.0, 7.5], [80.0, 10.0, 70.0]),
+                      "sigma_F driven tooth": ([1.0, 4.0, 7.5], [90.0, 40.0, 30.0]),
+                      "sigma_H": ([1.0, 4.0, 7.5], [600.0, 620.0, 650.0])}
+    assert [t.get_text() for t in a3.get_legend().get_texts()] == list(series)
+    import matplotlib.pyplot as plt
+
+    plt.close(fig)
