@@ -275,7 +275,13 @@ def test_as_built_resolves_both_directions_over_one_period_and_none_after_a_jam(
     step = math.radians(6.0)
     mount = d.L + 0.02
     ticks = []
-    monkeypatch.setattr(parallel, "_TICK", lambda done, total: ticks.append((done, total)))
+
+    def tick(done, total):
+        # 6 deg of driver: 61 samples and their bisections; the default 0.05 deg would be 7201 samples (minutes)
+        assert total < 3000, f"{total} positions: not the 6 deg step asked for"
+        ticks.append((done, total))
+
+    monkeypatch.setattr(parallel, "_TICK", tick)
     one = contact_direction(d, mount, REVERSE, step)
     assert ticks and ticks[-1][0] == ticks[-1][1] == one.evaluations
     po = pair_outlines(d, mount)
@@ -817,3 +823,131 @@ def test_the_plot_shows_every_tooths_peaks_against_the_allowables_and_every_pair
     import matplotlib.pyplot as plt
 
     plt.close(fig)
+
+
+def _circular_pair(**load):
+    """A circular pair built by the non-circular path (a Fourier law with every term zero, k = 2: z 20/40, m 2.5,
+    x +-0.5, L = 75 mm, U = 2) under a constant driver torque of 50 N·m: about 2.5 s."""
+    from propulsor.params import load_params
+    from propulsor.parts.noncircular_pair import NoncircularPairParams, pair_design
+
+    kw = dict(law="fourier", driver_turns=2, fourier_cos=[0.0], fourier_sin=[0.0], module_mm=2.5, driven_teeth=40,
+              driver_shift=0.5, face_width_mm=20.0, compare_methods=False, load_driver_torque_Nm=50.0,
+              gear_material="steel_case_MQ", load_K_A=1.25, load_K_v=1.1, load_K_beta=1.2)
+    kw.update(load)
+    p = load_params(NoncircularPairParams, kw)
+    return p, pair_design(p)
+
+
+def test_load_per_tooth_of_a_circular_pair_by_hand():
+    """The circular pair over 0.2 .. 1.0 of a driven pitch (driver 3.6 .. 18 deg) every 1 deg of driver (16 phases,
+    0.96 deg apart) and the change from two pairs to one bisected 7 times: T1 = 50, T2 = T1 U eta = 97 N·m; the
+    pairs' forces balance T1 on the driver's base radius 23.49 mm; sigma_H = Z_E sqrt(F K_H / (b rho_red)) with
+    K_H = 1.25 x 1.1 x 1.2 and the columns' radii; sigma_F = F cos(alpha) / (b m) Y_F Y_S K_F; the involute's radius
+    of curvature sqrt(r^2 - r_b^2); c' of ISO 6336-1 at z_n = 20 / 40, x = +-0.5, C_B = 0.975: 0.78 / 0.06113075;
+    the gap window 4 deflections 50e3 / (25 cos 20 deg) / (c' b 1e3) over r_H = 50 mm; the peaks of each tooth
+    (numbered mod 20: a period is half a turn) the largest of the table's rows."""
+    from propulsor.checks.motion.contact_events import DRIVE, resolve_contact
+    from propulsor.gears.gear_materials import material
+    from propulsor.gears.tooth_load import DenseOutline, root_section
+    from propulsor.parts.noncircular_pair.as_built import pair_outlines
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import PHASE_COLUMNS, analyse
+
+    p, dd = _circular_pair()
+    d = dd.d
+    pitch = 2 * math.pi / 40
+    cl = resolve_contact(pair_outlines(d, dd.mount), d.run_law.theta, 0.0, 2 * pitch, DRIVE,
+                         step_driver_rad=math.radians(0.5))
+    ticks = []
+    tl = analyse(d, dd.mount, p, cl.phi, cl.te, 0.2 * pitch, 0.8 * pitch, step_deg=1.0,
+                 tick=lambda done, total: ticks.append((done, total)))
+    assert ticks == [(k, 16) for k in range(1, 17)]
+    alpha = math.radians(20.0)
+    rb1, rb2 = 25.0 * math.cos(alpha), 50.0 * math.cos(alpha)
+    Z_E = math.sqrt(206000.0 / (2 * math.pi * (1 - 0.3 ** 2)))
+    K = 1.25 * 1.1 * 1.2
+    cp = 0.8 * 0.975 / 0.06113075
+    assert tl.material == material("steel_case_MQ") and tl.Z_E == pytest.approx(Z_E, rel=1e-12)
+    assert tl.K_H == pytest.approx(K, rel=1e-14) and tl.K_F == tl.K_H
+    assert tl.c_prime == (pytest.approx(cp, rel=1e-6), pytest.approx(cp, rel=1e-6))
+    assert tl.window_rad == pytest.approx(4 * 50e3 / rb1 / (cp * 20 * 1e3) / 50.0, rel=1e-6)
+    assert tl.load_case == "driver torque T1 = 50 N·m, T2 = T1·U·eta (eta = 0.97)"
+    assert (tl.teeth, tl.repeat, tl.cycles) == ({"driver": 20, "driven": 40}, {"driver": 20, "driven": 20},
+                                                {"driver": 2.0, "driven": 1.0})
+    assert tl.lost == 0 and tl.imbalance < 1e-12
+    # the phases: the 16 of the grid and the 7 of the bisection
+    deg = np.degrees(tl.theta)
+    grid = np.linspace(3.6, 18.0, 16)
+    assert len(deg) == 23 == tl.evaluations and np.all(np.diff(deg) > 0)
+    assert np.all(np.min(np.abs(deg[:, None] - grid[None, :]), axis=0) < 1e-9)
+    np.testing.assert_allclose(tl.phi, tl.theta / 2, rtol=0, atol=1e-12)
+    assert tl.T1 == pytest.approx(np.full(23, 50.0)) and tl.T2 == pytest.approx(np.full(23, 97.0))
+    assert tl.T1.shape == tl.T2.shape == tl.loaded.shape == (23,)
+    count = dict(zip(np.round(deg, 9), tl.loaded))
+    lo, hi = 15.12, 16.08
+    assert count[round(lo, 9)] == 2 and count[round(hi, 9)] == 1
+    extra = sorted(set(np.round(deg, 9)) - set(np.round(grid, 9)))
+    seen = []
+    for _ in range(7):
+        mid = 0.5 * (lo + hi)
+        seen.append(round(mid, 9))
+        lo, hi = (mid, hi) if count[round(mid, 9)] == 2 else (lo, mid)
+    assert sorted(seen) == extra
+    # every row by hand from its own columns
+    assert all(len(r) == len(PHASE_COLUMNS) for r in tl.rows)
+    by_phase = {}
+    for r in tl.rows:
+        by_phase.setdefault(round(r[0], 9), []).append(r)
+    assert len(by_phase) == 23 and [len(v) for v in by_phase.values()] == tl.loaded.tolist()
+    for rows in by_phase.values():
+        F = np.array([r[9] for r in rows])
+        assert sum(r[8] for r in rows) == pytest.approx(1.0, rel=1e-12)
+        assert sum(r[9] * r[10] for r in rows) == pytest.approx(50e3, rel=1e-9)
+        assert min(r[7] for r in rows) == 0.0 and all(r[7] >= 0 for r in rows)
+        for r in rows:
+            assert r[0] == pytest.approx(2 * r[1], abs=1e-9)
+            assert (r[2], r[3], r[4]) == (pytest.approx(50.0), pytest.approx(97.0), len(rows))
+            assert r[8] == pytest.approx(r[9] / F.sum(), rel=1e-12)
+            assert r[14] == pytest.approx(Z_E * math.sqrt(r[9] * K * (1 / r[12] + 1 / r[13]) / 20.0), rel=1e-12)
+            for col, yf, ys in ((15, 19, 20), (16, 21, 22)):
+                assert r[col] == pytest.approx(r[9] * math.cos(alpha) / (20.0 * 2.5) * r[yf] * r[ys] * K, rel=1e-9)
+            assert 0 < r[17] < 2.25 * 2.5 and 0 < r[18] < 2.25 * 2.5
+            if r[23] == "":
+                assert r[10] == pytest.approx(rb1, abs=0.05) and r[11] == pytest.approx(rb2, abs=0.1)
+                if r[24] > 24.5:
+                    assert r[12] == pytest.approx(math.sqrt(r[24] ** 2 - rb1 ** 2), rel=0.03)
+                assert r[13] == pytest.approx(math.sqrt(r[25] ** 2 - rb2 ** 2), rel=0.03)
+            else:  # a tip corner: r_a = m (z/2 + 1 + x): 28.75 and 51.25 mm
+                assert r[23] in ("driver", "driven")
+                assert r[24 if r[23] == "driver" else 25] == pytest.approx(28.75 if r[23] == "driver" else 51.25,
+                                                                          abs=2e-3)
+    assert {r[23] for r in tl.rows} == {"", "driver", "driven"}
+    # the peaks: the largest of each tooth's rows (tooth numbers mod 20), where first reached
+    for g, col, sf in (("driver", 5, 15), ("driven", 6, 16)):
+        want = {}
+        for r in tl.rows:
+            j = r[col] % 20
+            w = want.setdefault(j, [0.0, 0.0, math.nan, 0.0, math.nan])
+            w[0] = max(w[0], r[9])
+            if r[14] > w[1]:
+                w[1], w[2] = r[14], r[0]
+            if r[sf] > w[3]:
+                w[3], w[4] = r[sf], r[0]
+        assert set(tl.peaks[g]) == set(want)
+        for j, w in want.items():
+            pk = tl.peaks[g][j]
+            assert (pk.F, pk.sH, pk.sH_at, pk.sF, pk.sF_at) == tuple(pytest.approx(v, rel=1e-12) for v in w)
+    assert set(tl.peaks["driven"]) == {0, 19}
+    # each loaded tooth's 30 deg section, its axis the radial line through its centre (a circular pitch curve)
+    for g, gear in (("driver", d.driver), ("driven", d.driven)):
+        dense = DenseOutline(gear.profile.outer.polyline(1e-5))
+        centres = np.array([t.phi_centre for t in gear.teeth])
+        if g == "driver":
+            centres = math.pi - 2 * centres
+        assert set(tl.sections[g]) == ({0, 1} if g == "driver" else {0, 39})
+        for j, sec in tl.sections[g].items():
+            c = centres[j]
+            want = root_section(dense, j, centres, np.array([math.cos(c), math.sin(c)]), 2.5)
+            assert sec.ok and sec.s_Fn == pytest.approx(want.s_Fn, abs=1e-6)
+            assert (sec.rho_lo, sec.rho_hi) == (pytest.approx(want.rho_lo, abs=1e-6), pytest.approx(want.rho_hi,
+                                                                                                     abs=1e-6))
