@@ -951,3 +951,130 @@ def test_load_per_tooth_of_a_circular_pair_by_hand():
             assert sec.ok and sec.s_Fn == pytest.approx(want.s_Fn, abs=1e-6)
             assert (sec.rho_lo, sec.rho_hi) == (pytest.approx(want.rho_lo, abs=1e-6), pytest.approx(want.rho_hi,
                                                                                                      abs=1e-6))
+
+
+def test_load_case_of_a_torque_a_power_and_a_vehicle_over_the_law():
+    """T1 given: T2 = T1 U eta; a power P at n rpm: T1 = P / (2 pi n / 60); a vehicle on a walking law: F_R = f M g /
+    N_p per propulsor, T2 = F_R dX01/dphi (mm -> m), T1 = T2 / (U eta); on the law the teeth realise for U and the
+    mechanism's for dX01/dphi."""
+    from propulsor.params import load_params, read_part_file
+    from propulsor.parts.noncircular_pair import NoncircularPairParams
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import _loads
+
+    phi = np.array([0.0, 0.3, 0.7])
+    law, run = EllipticalLaw(0.3, 1), EllipticalLaw(0.2, 1)
+    U = np.asarray(run.U(phi), float)
+    d = SimpleNamespace(law=law, run_law=run)
+    T1, T2, text = _loads(_load_params(load_efficiency=0.9), d, phi)
+    assert T1.tolist() == [20.0] * 3 and T2 == pytest.approx(20.0 * U * 0.9, rel=1e-14)
+    assert text == "driver torque T1 = 20 N·m, T2 = T1·U·eta (eta = 0.9)"
+    T1, T2, text = _loads(_load_params(load_driver_torque_Nm=0.0, load_power_W=300.0, load_driver_speed_rpm=60.0), d,
+                          phi)
+    assert T1 == pytest.approx(np.full(3, 300.0 / (2 * math.pi)), rel=1e-14)
+    assert text.startswith("power 300 W at 60 rpm of the driver: T1 = P/omega1 = 47.7465 N·m")
+    _, mapping = read_part_file(PARTS / "ncg_seed000.toml")
+    mapping.update(load_vehicle_mass_kg=1200.0, load_rolling_resistance=0.1, load_propulsors=3, load_efficiency=0.95)
+    pw = load_params(NoncircularPairParams, mapping)
+    wl, wr = WalkingLaw(60.0, 100.0, 360.0, 2), WalkingLaw(60.0, 90.0, 360.0, 2)
+    T1, T2, text = _loads(pw, SimpleNamespace(law=wl, run_law=wr), phi)
+    F_R = 0.1 * 1200.0 * 9.80665 / 3
+    w = phi - math.pi / 2 * np.floor((phi + math.pi / 4) / (math.pi / 2))
+    dX = np.asarray(wl.dX01_dphi(phi), float)
+    assert dX == pytest.approx(wl.A + 3 * 100.0 * np.cos(2 * w), rel=1e-14)
+    assert T2 == pytest.approx(F_R * dX * 1e-3, rel=1e-14)
+    assert T1 == pytest.approx(F_R * dX * 1e-3 / (np.asarray(wr.U(phi), float) * 0.95), rel=1e-14)
+    assert text.startswith("vehicle 1200 kg, rolling resistance f = 0.1, 3 driven propulsor(s): F_R = f·M·g/N_p = "
+                           "392.27 N per propulsor")
+    # a walking law under a torque: no vehicle, no hub speed needed
+    mapping.update(load_vehicle_mass_kg=0.0, load_driver_torque_Nm=12.0)
+    T1, T2, _ = _loads(load_params(NoncircularPairParams, mapping), SimpleNamespace(law=wl, run_law=wr), phi)
+    assert T1.tolist() == [12.0] * 3 and T2 == pytest.approx(12.0 * np.asarray(wr.U(phi), float) * 0.95)
+
+
+def test_tooth_load_values_write_the_tables_plot_checks_values_and_note_of_the_drive_contact(tmp_path):
+    """The circular pair's drive contact over 0.4 of a driven pitch (an AsBuilt of that span): the derived values are
+    the summary of analyse over the same span at the build's 0.5 deg, the three tables with their columns and rows,
+    the plot, the two safety checks and the equilibrium, and the note's numbers."""
+    import csv
+
+    from propulsor.checks.motion.contact_events import DRIVE, REVERSE, resolve_contact
+    from propulsor.parts.noncircular_pair.as_built import AsBuilt, pair_outlines
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import (PEAK_COLUMNS, PHASE_COLUMNS, analyse,
+                                                                     factor_rows, peak_rows, summary,
+                                                                     tooth_load_values)
+    from propulsor.parts.writer import OutputWriter
+    from propulsor.progress import Reporter
+
+    p, dd = _circular_pair(load_S_Fmin=2.5, load_life_hours=100.0, load_driver_speed_rpm=30.0)
+    d = dd.d
+    pitch = 2 * math.pi / 40
+    po = pair_outlines(d, dd.mount)
+    dr = resolve_contact(po, d.run_law.theta, 0.1 * pitch, 0.6 * pitch, DRIVE, step_driver_rad=math.radians(0.5))
+    rv = resolve_contact(po, d.run_law.theta, 0.1 * pitch, 0.6 * pitch, REVERSE, step_driver_rad=math.radians(2.0))
+    ab = AsBuilt(dr, rv, 0.4 * pitch, (), 0.1, 0.2, 0.0)
+    said = []
+    w = OutputWriter(tmp_path, "noncircular_pair", p, progress=said.append)
+    tooth_load_values(w, SimpleNamespace(p=p, d=d, mount=dd.mount), {}, ab)
+    tl = analyse(d, dd.mount, p, dr.phi, dr.te, 0.1 * pitch, 0.4 * pitch)
+    vals = summary(tl, p)
+    assert w.derived == vals
+    assert len(tl.theta) > 20 and vals["tooth_load_phases"] == len(tl.theta)
+    assert said[0] == "load per tooth: sharing, contact and root stress of every tooth over the period"
+    assert w.tables == ["tables/tooth_load.csv", "tables/tooth_peaks.csv", "tables/tooth_load_factors.csv"]
+    assert w.plots == ["plots/tooth_load.png"] and (tmp_path / "plots" / "tooth_load.png").stat().st_size > 0
+
+    def read(name):
+        with open(tmp_path / "tables" / f"{name}.csv", newline="", encoding="utf-8") as f:
+            return list(csv.reader(f))
+
+    assert read("tooth_load")[0] == PHASE_COLUMNS and len(read("tooth_load")) == len(tl.rows) + 1
+    assert read("tooth_peaks")[0] == PEAK_COLUMNS and len(read("tooth_peaks")) == len(peak_rows(tl, p)) + 1 == 61
+    assert read("tooth_load_factors")[0] == ["factor", "value", "source"]
+    assert [r[0] for r in read("tooth_load_factors")[1:]] == [r[0] for r in factor_rows(tl, p, vals)]
+    assert [c.name for c in w.checks] == ["tooth_load.S_H", "tooth_load.S_F", "tooth_load.equilibrium"]
+    sH, sF, eq = w.checks
+    assert sH.value == pytest.approx(vals["tooth_load_S_H_min"]) and sH.limit == 1.0 and sH.passed
+    assert sF.limit == 2.5 and sF.passed is (vals["tooth_load_S_F_min"] >= 2.5) and eq.passed
+    (note,) = w.notes
+    assert note.startswith("Load per tooth (gears/tooth_load.py; seed 002: \"the uneven distribution of the load "
+                           "between different teeth\"): driver torque T1 = 50 N·m, T2 = T1·U·eta (eta = 0.97); T1 "
+                           "50.000 .. 50.000 N·m, T2 97.000 .. 97.000 N·m over one period (")
+    assert (f"({len(tl.theta)} phases, every 0.5 deg of driver and every change of the loaded pairs bisected 7 times; "
+            f"the drive direction's as-built contact)") in note
+    assert f"within {tl.window_rad:.2e} rad of the first contact" in note
+    assert "single stiffness c' = 12.760 .. 12.760 N/(mm um) (local equivalent gears, E/E_steel = 1.0000)" in note
+    assert (f"{vals['tooth_load_pairs_min']} .. {vals['tooth_load_pairs_max']} pairs loaded (mean "
+            f"{vals['tooth_load_pairs_mean']:.3f})") in note
+    assert "(K_A 1.25, K_v 1.1, K_beta 1.2 as given)" in note
+    assert (f"Worst teeth: driver {vals['tooth_load_driver_sigma_F_worst_tooth']} (sigma_F "
+            f"{vals['tooth_load_driver_sigma_F_max_MPa']:.1f} MPa at driver "
+            f"{vals['tooth_load_driver_sigma_F_worst_driver_deg']:.2f} deg), driven "
+            f"{vals['tooth_load_driven_sigma_F_worst_tooth']} (sigma_F {vals['tooth_load_driven_sigma_F_max_MPa']:.1f} "
+            f"MPa at driver {vals['tooth_load_driven_sigma_F_worst_driver_deg']:.2f} deg)") in note
+    assert (f"root stress {vals['tooth_load_driver_uneven_sigma_F']:.3f} (driver), "
+            f"{vals['tooth_load_driven_uneven_sigma_F']:.3f} (driven), normal force "
+            f"{vals['tooth_load_driver_uneven_F']:.3f} / {vals['tooth_load_driven_uneven_F']:.3f}.") in note
+    assert ("Material steel_case_MQ: case-hardened wrought steel (18CrNiMo7-6 / 18Kh2N4MA), 58-62 HRC, ISO 6336-5 "
+            "quality MQ; sigma_Hlim 1500 MPa, sigma_FE 850 MPa (endurance limits") in note
+    assert "uncertainty ISO 6336-5 quality class MQ; ML gives 1300 / 312, ME 1650 / 525 MPa)." in note
+    assert (f"Safeties: S_H {vals['tooth_load_S_H_min']:.3f} (required 1), S_F {vals['tooth_load_S_F_min']:.3f} "
+            f"(required 2.5); each driver tooth is loaded 2 times per driven turn, each driven tooth once.") in note
+    assert note.endswith("tables/tooth_load.csv (every loaded pair at every phase), tables/tooth_peaks.csv (every "
+                         "tooth), tables/tooth_load_factors.csv (every factor and its source), plots/tooth_load.png.")
+    # the progress of the sampled positions through a reporter
+    counts = []
+
+    class R(Reporter):
+        def __init__(self):
+            pass
+
+        def __call__(self, msg):
+            pass
+
+        def count(self, phase, done, total, unit=""):
+            counts.append((phase, done, total, unit))
+
+    w2 = OutputWriter(tmp_path / "b", "noncircular_pair", p, progress=R())
+    tooth_load_values(w2, SimpleNamespace(p=p, d=d, mount=dd.mount), {}, ab)
+    assert counts and counts[-1][0] == "load per tooth: sampled positions" and counts[-1][3] == "position"
+    assert counts[-1][1] == counts[-1][2]
