@@ -1078,3 +1078,112 @@ def test_tooth_load_values_write_the_tables_plot_checks_values_and_note_of_the_d
     tooth_load_values(w2, SimpleNamespace(p=p, d=d, mount=dd.mount), {}, ab)
     assert counts and counts[-1][0] == "load per tooth: sampled positions" and counts[-1][3] == "position"
     assert counts[-1][1] == counts[-1][2]
+
+
+# =========================================================================== smooth_law.py
+def _part(name, **kw):
+    from propulsor.params import load_params, read_part_file
+    from propulsor.parts.noncircular_pair import NoncircularPairParams
+
+    _, mapping = read_part_file(PARTS / f"{name}.toml")
+    mapping.update(kw)
+    return load_params(NoncircularPairParams, mapping)
+
+
+def test_screen_of_a_convex_law_closes_on_the_module_with_the_part_files_own_cutter():
+    """Elliptical e = 0.3, 1:1, z 30, m = 2.5: the driver's pitch ellipse has semi-axis L/2 and its perimeter
+    4 (L/2) E(e^2) holds 30 pitches of pi m; every curve convex: only the part file's own cutter (rack, its shaper's
+    z0, no catalogue entry), generable."""
+    from scipy.special import ellipe
+
+    from propulsor.gears.generability import CutterSpec
+    from propulsor.parts.noncircular_pair.smooth_law import screen_smooth
+
+    p = _part("ncg_elliptical")
+    law = EllipticalLaw(0.3, 1)
+    scr = screen_smooth(p, law)
+    L = 2 * 30 * math.pi * 2.5 / (4 * ellipe(0.09))
+    assert scr.law is law and scr.m == 2.5 and scr.L == pytest.approx(L, rel=1e-9)
+    assert scr.pc.L == scr.L and scr.pc.law is law
+    ((entry, sh, cutter, g, why),) = scr.candidates
+    assert (entry, sh, why) == (None, None, "") and g.ok
+    assert cutter == CutterSpec(m=2.5, alpha=math.radians(20.0), x=0.0, x_H=-0.0, z0=p.shaper_teeth, shaper_x0=None)
+    assert scr.generable == scr.candidates
+    # the centre distance given instead: the module that closes it (linear in L)
+    p2 = _part("ncg_elliptical", module_mm=0.0, center_distance_mm=80.0)
+    scr2 = screen_smooth(p2, law)
+    assert scr2.L == 80.0 and scr2.m == pytest.approx(2.5 * 80.0 / L, rel=1e-9)
+
+
+def test_screen_of_a_law_no_cutter_generates_names_the_limit_and_the_remedies():
+    from propulsor.errors import InputError
+    from propulsor.parts.noncircular_pair.smooth_law import screen_smooth
+
+    p = _part("ncg_elliptical", driven_teeth=16, eccentricity=0.1)
+    with pytest.raises(InputError) as e:
+        screen_smooth(p, EllipticalLaw(0.1, 1))
+    assert str(e.value) == (
+        "driver_shift = 0.0: the elliptical law's pitch curves are not generable at m = 2.5, z 16/16, L = 40.100 mm "
+        "with the catalogue cutters (driver: convex rho_min 19.850 mm < undercut limit 21.372 mm; works with "
+        "driver_shift >= 0.071, or driven_teeth >= 18 at module_mm = 2.5, or module_mm <= 2.322 mm at L = 40.100 mm; "
+        "driven: convex rho_min 19.850 mm < undercut limit 21.372 mm; works with driver_shift <= -0.071, or "
+        "driven_teeth >= 18 at module_mm = 2.5, or module_mm <= 2.322 mm at L = 40.100 mm)")
+
+
+def test_a_concave_pitch_curve_with_law_search_tries_the_catalogue_shapers_largest_first():
+    from propulsor.gears.catalogue import shaper_entry
+    from propulsor.parts.noncircular_pair.smooth_law import screen_smooth
+
+    p = _part("ncg_fourier_seed002")
+    from propulsor.parts.noncircular_pair.feasibility import law_of
+
+    law = law_of(p)
+    scr = screen_smooth(p, law)
+    assert [c[0].d0_mm for c in scr.candidates] == [100.0, 75.0, 50.0, 38.0, 25.0]
+    assert [(c[1].z0, c[1].x0) for c in scr.candidates] == [(40, 0.0), (30, 0.0), (20, 0.0), (15, 0.0), (10, 0.0)]
+    assert all(c[0] == shaper_entry(c[0].d0_mm, 2.5) and c[2].z0 == c[1].z0 and c[2].shaper_x0 == c[1].x0
+               for c in scr.candidates)
+    assert scr.pc.curvature("driver").concave or scr.pc.curvature("driven").concave
+    # without the search: the part file's own shaper only
+    own = screen_smooth(_part("ncg_fourier_seed002", law_search=False), law)
+    assert len(own.candidates) == 1 and own.candidates[0][0] is None and own.candidates[0][1] is None
+    assert own.candidates[0][2].z0 == p.shaper_teeth and own.candidates[0][2].shaper_x0 is None
+
+
+def test_generability_limits_are_the_part_files_field_limits():
+    from propulsor.parts.noncircular_pair.smooth_law import generability_limits
+
+    assert generability_limits(_part("ncg_elliptical")) == {"x": (-1.0, 1.5), "x_H": (-1.5, 1.0), "z_H": (4, 480),
+                                                            "m": (0.0, 50.0), "z0": (6, 200)}
+
+
+def test_tooth_settings_of_a_cutter():
+    """j_n split between the wheels: j_n / (2 cos alpha) of arc thickness each; tip land and height in modules."""
+    from propulsor.parts.noncircular_pair.cutting import rack_of
+    from propulsor.parts.noncircular_pair.smooth_law import _tooth_common
+
+    p = _part("ncg_elliptical", tip_land_min_module=0.3, tip_height_max_module=1.1)
+    cutter = SimpleNamespace(z0=17)
+    sh = object()
+    got = _tooth_common(p, 2.0, cutter, sh)
+    assert got == dict(m=2.0, thinning_mm=pytest.approx(0.16 / (2 * math.cos(math.radians(20.0)))), rack=rack_of(p),
+                       z0=17, tip_min_mm=pytest.approx(0.6), shaper=sh, tip_max_mm=pytest.approx(2.2))
+
+
+def test_design_of_the_screened_law_generates_both_wheels_and_says_so():
+    from propulsor.parts.noncircular_pair.smooth_law import design_smooth, screen_smooth
+
+    p = _part("ncg_elliptical")
+    law = EllipticalLaw(0.3, 1)
+    scr = screen_smooth(p, law)
+    said = []
+    d = design_smooth(p, scr, said.append)
+    assert said[:2] == ["generated: generability of the elliptical law at m = 2.5, z 30/30",
+                        "generated: the teeth of both wheels (30 and 30), rack/shaper envelopes"]
+    assert (d.method, d.law, d.run_law, d.L, d.m, d.z_H, d.z, d.pc) == ("generated", law, law, scr.L, 2.5, 30, 30,
+                                                                       scr.pc)
+    assert d.shaper is None and len(d.driver.teeth) == len(d.driven.teeth) == 30
+    sm = d.smoothing
+    assert (sm.law, sm.delta, sm.L, sm.z_H, sm.z, sm.ripple) == (law, 0.0, scr.L, 30, 30, None)
+    assert sm.cutter is scr.candidates[0][2] and sm.generability is scr.candidates[0][3]
+    assert d.closure_error == sm.closure_error
