@@ -1188,3 +1188,29 @@ def test_design_of_the_screened_law_generates_both_wheels_and_says_so():
     assert (sm.law, sm.delta, sm.L, sm.z_H, sm.z, sm.ripple) == (law, 0.0, scr.L, 30, 30, None)
     assert sm.cutter is scr.candidates[0][2] and sm.generability is scr.candidates[0][3]
     assert d.closure_error == sm.closure_error
+
+
+def test_the_refusal_names_the_shift_for_a_convex_limit_else_the_shaper_once_per_distinct_limit():
+    from propulsor.errors import InputError
+    from propulsor.parts.noncircular_pair.smooth_law import SmoothScreen, _not_generable, design_smooth
+
+    p = _part("ncg_elliptical", shaper_teeth=23)
+    law = EllipticalLaw(0.3, 1)
+    scr = SmoothScreen(law, 2.5, 76.7573, None, ())
+    e = _not_generable(p, scr, ["driver: convex rho_min 1 mm < undercut limit 2 mm", "shaper d0 50: too big"])
+    assert isinstance(e, InputError) and (e.parameter, e.value) == ("driver_shift", 0.0)
+    assert str(e) == ("driver_shift = 0.0: the elliptical law's pitch curves are not generable at m = 2.5, z 30/30, "
+                      "L = 76.757 mm with the catalogue cutters (driver: convex rho_min 1 mm < undercut limit 2 mm | "
+                      "shaper d0 50: too big)")
+    e = _not_generable(p, scr, ["shaper d0 100: a", "shaper d0 100: a", "shaper d0 75: b"])
+    assert (e.parameter, e.value) == ("shaper_teeth", 23)
+    assert str(e).endswith("with the catalogue cutters (shaper d0 100: a | shaper d0 75: b)")
+    assert _not_generable(p, scr, []).parameter == "driver_shift"
+    # a design whose every screened cutter was refused: the refusal of their limits, after saying what it tries
+    said = []
+    refused = SmoothScreen(law, 2.5, 76.7573, None, ((None, None, None, None, "shaper d0 38: no"),
+                                                      (None, None, None, None, "shaper d0 25: no")))
+    with pytest.raises(InputError) as err:
+        design_smooth(p, refused, said.append)
+    assert err.value.parameter == "shaper_teeth" and str(err.value).endswith("(shaper d0 38: no | shaper d0 25: no)")
+    assert said == ["generated: generability of the elliptical law at m = 2.5, z 30/30"]
