@@ -1214,3 +1214,14 @@ def test_the_refusal_names_the_shift_for_a_convex_limit_else_the_shaper_once_per
         design_smooth(p, refused, said.append)
     assert err.value.parameter == "shaper_teeth" and str(err.value).endswith("(shaper d0 38: no | shaper d0 25: no)")
     assert said == ["generated: generability of the elliptical law at m = 2.5, z 30/30"]
+
+
+def test_iso1328_source_rounds_each_number_from_its_own_micrometres():
+    """Numbers a hair below a rounding step: m = 2, driver z 19 (d 38): F_r 0.8 (0.6 + 1.25 sqrt 38 + 7) = 12.2444 um
+    at grade 5 ("12.2"); L = 265.34068 mm: f_a = 7 i / 2 = 11.0495 um ("11.0"); alpha with 16.08 tan(alpha) =
+    15.0495 um ("15.0"): a factor 1.001 anywhere would round them up."""
+    from propulsor.parts.noncircular_pair.tolerance import iso1328
+
+    t = iso1328(SimpleNamespace(m=2.0, z=19, z_H=50), 265.3406785437347, 5, 0.7523066000146901)
+    assert t.source == ("ISO 1328 grade 5: F_r 12.2 / 16.1 um (driver / driven), f_a = IT5/2 = 11.0 um, flanks "
+                        "thinner by 0 .. 15.0 um")
