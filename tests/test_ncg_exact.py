@@ -1225,3 +1225,42 @@ def test_iso1328_source_rounds_each_number_from_its_own_micrometres():
     t = iso1328(SimpleNamespace(m=2.0, z=19, z_H=50), 265.3406785437347, 5, 0.7523066000146901)
     assert t.source == ("ISO 1328 grade 5: F_r 12.2 / 16.1 um (driver / driven), f_a = IT5/2 = 11.0 um, flanks "
                         "thinner by 0 .. 15.0 um")
+
+
+def test_load_per_tooth_of_the_elliptical_pair_takes_the_least_radii_and_stiffness_and_either_direction():
+    """The elliptical pair (r1 = L q / (1 + e cos theta) varies) under 20 N·m over 0.3 rad of driven angle at 3 deg
+    of driver: c' the least and largest of ISO 6336-1's at z_n = 2 rho / m over 2049 points of the span; the window
+    4 deflections T1 / (r1,min cos alpha) / (c'_min b) over r_H,min; the reverse direction (the other flanks, placed
+    by the reverse contact) balances too.  A light load (0.02 N·m): the window's floor 2e-5 rad."""
+    from propulsor.checks.motion.contact_events import DRIVE, REVERSE, resolve_contact
+    from propulsor.gears.tooth_load import c_prime
+    from propulsor.parts.noncircular_pair.as_built import pair_outlines
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import analyse
+
+    p = _load_params(load_K_A=1.0, load_K_v=1.0, load_K_beta=1.0)
+    _, d = _elliptical_design()
+    po = pair_outlines(d, d.L)
+    phi0, span = 0.4, 0.3
+    tab = np.linspace(phi0, phi0 + span, 2049)
+    zn1, zn2 = 2 * np.asarray(d.pc.rho(tab), float) / 2.5, 2 * np.asarray(d.pc.rho_H(tab), float) / 2.5
+    cp = c_prime(zn1, zn2, 0.0, 0.0, math.radians(20.0), 1.25, 1.0)
+    r1, rH = float(np.min(d.pc.r(tab))), float(np.min(d.pc.r_H(tab)))
+    assert float(np.max(d.pc.r(tab))) > r1 * 1.05 and float(np.max(cp)) > float(np.min(cp)) * 1.001
+    for direction in (DRIVE, REVERSE):
+        c = resolve_contact(po, d.law.theta, phi0 - 0.05, phi0 + span + 0.05, direction,
+                            step_driver_rad=math.radians(3.0))
+        tl = analyse(d, d.L, p, c.phi, c.te, phi0, span, step_deg=3.0, direction=direction)
+        assert tl.c_prime == (pytest.approx(float(np.min(cp)), rel=1e-12), pytest.approx(float(np.max(cp)),
+                                                                                         rel=1e-12))
+        defl = 20e3 / (r1 * math.cos(math.radians(20.0))) / (float(np.min(cp)) * 15.0 * 1e3)
+        assert tl.window_rad == pytest.approx(4 * defl / rH, rel=1e-12)
+        assert tl.lost == 0 and tl.imbalance < 1e-9 and len(tl.rows) >= len(tl.theta)
+        # interpolated on the 2049-point table of the span: 2e-9 relative
+        assert tl.T2 == pytest.approx(20.0 * 0.97 * np.asarray(d.law.U(tl.phi), float), rel=1e-7)
+        if direction == DRIVE:
+            drive_rows = [r[:7] for r in tl.rows]
+        else:
+            assert [r[:7] for r in tl.rows] != drive_rows
+    light = analyse(d, d.L, _load_params(load_driver_torque_Nm=0.02), c.phi, c.te, phi0, 0.05, step_deg=3.0,
+                    direction=REVERSE)
+    assert light.window_rad == 2e-5
