@@ -807,11 +807,25 @@ class _Plots:
 def test_the_plot_shows_every_tooths_peaks_against_the_allowables_and_every_pairs_stress():
     from propulsor.parts.noncircular_pair.tooth_load_outputs import _plot
 
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import _Peak
+
     tl, p = _tooth_load(), _load_params()
+    # a driven tooth measured without root stress stays out of the most / least ratio (90 / 30)
+    tl.peaks["driven"][4] = _Peak(0.0, 0.0, math.nan, 0.0, math.nan)
     w = _Plots()
     _plot(w, tl, p)
     fig = w.figs["tooth_load"]
+    assert list(fig.get_size_inches()) == [9.0, 7.0]
     a1, a2, a3 = fig.axes
+    assert [a.get_subplotspec().get_geometry() for a in (a1, a2, a3)] == [(3, 1, 0, 0), (3, 1, 1, 1), (3, 1, 2, 2)]
+    assert {a.title.get_fontsize() for a in (a1, a2, a3)} == {9.0}
+    for ln in a1.get_lines():
+        assert (ln.get_linestyle(), ln.get_linewidth()) == ("--", 0.8)
+    assert [ln.get_color() for ln in a1.get_lines()] == ["C0", "C1"]
+    assert a1.get_legend()._ncols == 2 and a1.get_legend().get_texts()[0].get_fontsize() == 6.0
+    assert a3.get_legend().get_texts()[0].get_fontsize() == 6.0 and a3.get_legend().markerscale == 4
+    assert {(ln.get_marker(), ln.get_markersize(), ln.get_linestyle()) for ln in a3.get_lines()} == {(".", 1.5,
+                                                                                                      "None")}
     assert a1.get_title() == "driver: peak stress of every tooth over the cycle (most / least loaded root 8.000)"
     assert a2.get_title() == "driven: peak stress of every tooth over the cycle (most / least loaded root 3.000)"
     assert (a1.get_xlabel(), a2.get_xlabel(), a1.get_ylabel()) == ("driver tooth", "driven tooth", "MPa")
