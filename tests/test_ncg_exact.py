@@ -446,7 +446,7 @@ def _case_by_hand(d, mount, case, step):
     return dr, rv, float(np.min(bl)), float(x[int(np.argmin(bl))]), worst
 
 
-def test_a_case_is_both_directions_of_the_changed_outlines_over_the_whole_turn():
+def test_a_case_is_both_directions_of_the_changed_outlines_over_the_whole_turn(monkeypatch):
     """The 18-tooth elliptical pair (e = 0.1) made 0.05 mm apart, the driver 0.03 mm off at 1 rad and 0.01 mm
     thinner, the driven 0.02 mm off at 2 rad and 0.02 mm thicker, at 12 deg of driver: every field against the
     contact resolved in the test."""
@@ -464,6 +464,11 @@ def test_a_case_is_both_directions_of_the_changed_outlines_over_the_whole_turn()
     assert r.step_max == worst.step_max == max(dr.step_max, rv.step_max)
     assert r.step_theta == worst.step_at()[1]
     assert r.lost == 0 and not r.jam
+    # no step given: policy's TOLERANCE_STEP_DRIVER_DEG (set to 12 deg here: the build's 0.5 deg takes 24 times longer)
+    from propulsor import policy
+
+    monkeypatch.setattr(policy, "TOLERANCE_STEP_DRIVER_DEG", 12.0)
+    assert run_case(d, d.L + 0.01, case) == r
 
 
 def test_a_tolerance_study_runs_the_four_corners_then_the_seeded_draws():
