@@ -718,7 +718,8 @@ def test_checks_of_the_least_safeties_and_the_equilibrium_with_their_messages_in
     assert sH.message == ("least contact safety sigma_Hlim Z_NT / sigma_H over every tooth: driver 2.308 (tooth 1, "
                           "sigma_H 650.0 MPa at driver 7.50 deg), driven 2.143 (tooth 0); steel_case_MQ sigma_Hlim = "
                           "1500 MPa")
-    assert (sF.name, sF.passed, sF.value, sF.limit) == ("tooth_load.S_F", True, pytest.approx(850 / 90), 1.5)
+    assert (sF.name, sF.passed, sF.value, sF.limit, sF.unit) == ("tooth_load.S_F", True, pytest.approx(850 / 90),
+                                                                 1.5, "")
     assert sF.message == ("least root safety sigma_FE Y_NT / sigma_F over every tooth: driver 10.625 (tooth 0, "
                           "sigma_F 80.0 MPa at driver 5.00 deg), driven 9.444 (tooth 0, sigma_F 90.0 MPa); "
                           "steel_case_MQ sigma_FE = 850 MPa")
@@ -1299,3 +1300,19 @@ def test_load_per_tooth_of_the_elliptical_pair_takes_the_least_radii_and_stiffne
     light = analyse(d, d.L, _load_params(load_driver_torque_Nm=0.02), c.phi, c.te, phi0, 0.05, step_deg=3.0,
                     direction=REVERSE)
     assert light.window_rad == 2e-5
+
+
+def test_a_lightly_loaded_tooth_counts_below_one_newton_and_one_megapascal():
+    """Peaks of 0.5 N and 0.5 MPa (a light load or a soft material): measured like any other (only 0 is unloaded)."""
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import _Peak, peak_rows, summary
+
+    tl = _tooth_load(peaks={"driver": {0: _Peak(0.5, 0.5, 1.0, 0.5, 2.0), 1: _Peak(0.25, 0.4, 3.0, 0.2, 4.0)},
+                            "driven": {0: _Peak(0.5, 0.6, 1.5, 0.8, 2.5)}})
+    p = _load_params()
+    rows = peak_rows(tl, p)
+    assert rows[0][11:] == [pytest.approx(1500 / 0.5), pytest.approx(850 / 0.5)]
+    v = summary(tl, p)
+    assert v["tooth_load_driver_F_n_max_N"] == 0.5 and v["tooth_load_driver_uneven_F"] == 2.0
+    assert v["tooth_load_driver_uneven_sigma_F"] == pytest.approx(2.5)
+    assert v["tooth_load_driver_sigma_F_worst_tooth"] == 0 and v["tooth_load_driver_sigma_H_worst_tooth"] == 0
+    assert v["tooth_load_driver_sigma_H_max_MPa"] == 0.5 and v["tooth_load_S_H_min"] == pytest.approx(1500 / 0.6)
