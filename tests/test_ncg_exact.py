@@ -1316,3 +1316,25 @@ def test_a_lightly_loaded_tooth_counts_below_one_newton_and_one_megapascal():
     assert v["tooth_load_driver_uneven_sigma_F"] == pytest.approx(2.5)
     assert v["tooth_load_driver_sigma_F_worst_tooth"] == 0 and v["tooth_load_driver_sigma_H_worst_tooth"] == 0
     assert v["tooth_load_driver_sigma_H_max_MPa"] == 0.5 and v["tooth_load_S_H_min"] == pytest.approx(1500 / 0.6)
+
+
+def test_half_an_hour_of_life_and_a_section_measured_under_two_numbers_and_a_light_plot():
+    """0.5 h at 100 rpm of the driver: 1500 driven turns, 3000 cycles of a driver tooth (Z_NT 1.6 below 1e5 cycles,
+    Y_NT 2.5 below 1e3 ... (3e6/N)^0.115 above); a tooth's section found under its own number before another of its
+    class; a plot of peaks below 1 MPa."""
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import _Peak, _life, _plot
+
+    tl = _tooth_load()
+    N, Z, Y = _life(tl, _load_params(load_driver_speed_rpm=100.0, load_life_hours=0.5), "driver")
+    assert N == pytest.approx(3000.0) and Z == 1.6 and Y == pytest.approx((3e6 / 3000.0) ** 0.115, rel=1e-12)
+    a, b = _section(6, 4.5, 0.7, 0.9), _section(2, 4.2, 0.7, 0.9)
+    tl2 = _tooth_load(sections={"driver": {6: a, 2: b}, "driven": {}})
+    assert tl2.section_of("driver", 2) is b and tl2.section_of("driver", 6) is b
+    w = _Plots()
+    _plot(w, _tooth_load(peaks={"driver": {0: _Peak(0.5, 0.5, 1.0, 0.5, 2.0), 1: _Peak(0.25, 0.4, 3.0, 0.2, 4.0)},
+                                "driven": {0: _Peak(0.5, 0.6, 1.5, 0.8, 2.5)}}), _load_params())
+    fig = w.figs["tooth_load"]
+    assert fig.axes[0].get_title().endswith("(most / least loaded root 2.500)")
+    import matplotlib.pyplot as plt
+
+    plt.close(fig)
