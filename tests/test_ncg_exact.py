@@ -1021,6 +1021,10 @@ def test_load_case_of_a_torque_a_power_and_a_vehicle_over_the_law():
     assert T1 == pytest.approx(F_R * dX * 1e-3 / (np.asarray(wr.U(phi), float) * 0.95), rel=1e-14)
     assert text.startswith("vehicle 1200 kg, rolling resistance f = 0.1, 3 driven propulsor(s): F_R = f·M·g/N_p = "
                            "392.27 N per propulsor")
+    # a vehicle of half a kilogram (a model) is a vehicle load like any other
+    mapping.update(load_vehicle_mass_kg=0.5)
+    T1, T2, _ = _loads(load_params(NoncircularPairParams, mapping), SimpleNamespace(law=wl, run_law=wr), phi)
+    assert T2 == pytest.approx(0.1 * 0.5 * 9.80665 / 3 * dX * 1e-3, rel=1e-14)
     # a walking law under a torque: no vehicle, no hub speed needed
     mapping.update(load_vehicle_mass_kg=0.0, load_driver_torque_Nm=12.0)
     T1, T2, _ = _loads(load_params(NoncircularPairParams, mapping), SimpleNamespace(law=wl, run_law=wr), phi)
