@@ -940,6 +940,11 @@ def test_load_per_tooth_of_a_circular_pair_by_hand():
         assert sum(r[8] for r in rows) == pytest.approx(1.0, rel=1e-12)
         assert sum(r[9] * r[10] for r in rows) == pytest.approx(50e3, rel=1e-9)
         assert min(r[7] for r in rows) == 0.0 and all(r[7] >= 0 for r in rows)
+        # F_j = k l2_j (Delta - delta_j), k = c' b: the gap of a pair, delta_j l2_j in um, from the forces
+        first = next(r for r in rows if r[7] == 0.0)
+        k = tl.c_prime[0] * 20.0 * 1e3
+        for r in rows:
+            assert r[7] == pytest.approx(1e3 * r[11] * (first[9] / first[11] - r[9] / r[11]) / k, rel=1e-6, abs=1e-9)
         for r in rows:
             assert r[0] == pytest.approx(2 * r[1], abs=1e-9)
             assert (r[2], r[3], r[4]) == (pytest.approx(50.0), pytest.approx(97.0), len(rows))
@@ -1304,6 +1309,10 @@ def test_load_per_tooth_of_the_elliptical_pair_takes_the_least_radii_and_stiffne
     light = analyse(d, d.L, _load_params(load_driver_torque_Nm=0.02), c.phi, c.te, phi0, 0.05, step_deg=3.0,
                     direction=REVERSE)
     assert light.window_rad == 2e-5
+    # the pair mounted 8 mm apart: no pair within reach at any phase, the load still tabled
+    off = analyse(d, d.L + 8.0, p, c.phi, c.te, phi0, 0.05, step_deg=3.0, direction=REVERSE)
+    assert off.lost == len(off.theta) > 0 and off.rows == [] and off.loaded.tolist() == [0] * len(off.theta)
+    assert off.T1 == pytest.approx(np.full(len(off.theta), 20.0))
 
 
 def test_a_lightly_loaded_tooth_counts_below_one_newton_and_one_megapascal():
