@@ -1,14 +1,309 @@
-"""Exact numbers of the motion checks (checks/motion/) on small geometry made in each test: issue 36's mutation
-tests.  Each expected value is computed here independently (by hand, by a brute-force search, by shapely), never
-by the function under test."""
+"""Exact numbers of the motion checks (checks/motion/) on small geometry made in each test (issue 36: mutation
+tests of the as-built transmission, the contact events and the backlash search).  Each expected value is computed
+here independently - by hand (the angle at which a turning straight edge meets a corner), by a brute-force search
+(the first angle at which manifold3d's boolean finds common area) or from the involute's own geometry (the lines of
+action, the base circles, epsilon_alpha) - never by the function under test."""
 
 from __future__ import annotations
 
 import math
 
+import manifold3d as m3d
 import numpy as np
 import pytest
 
+from propulsor import policy
+from propulsor.checks.motion import outline, transmission_sweep
+from propulsor.checks.motion.transmission import TransmissionResult
+from propulsor.errors import InputError
+from propulsor.geometry.profile import Profile, circle_loop
 
-def test_placeholder_imports():
-    import propulsor.checks.motion.transmission  # noqa: F401
+from test_motion import ALPHA, epsilon_alpha, involute_gear
+
+# ---------------------------------------------------------------------------------------------------------------
+# the as-built transmission (transmission.py): a bar turning about its end between two blocks
+# ---------------------------------------------------------------------------------------------------------------
+
+BAR = np.array([[0.0, -0.5], [10.0, -0.5], [10.0, 0.5], [0.0, 0.5]])  # the driven body: turns about its end (0, 0)
+
+
+def _square(cx, cy, h=1.0):
+    return np.array([[cx - h, cy - h], [cx + h, cy - h], [cx + h, cy + h], [cx - h, cy + h]])
+
+
+def _edge_meets_corner(q, half=0.5):
+    """The turn (rad, CCW) at which the bar's upper edge y = +half first reaches the point q (relative to the axis,
+    above the bar): the edge is the line at distance `half` from the axis."""
+    return math.atan2(q[1], q[0]) - math.asin(half / math.hypot(*q))
+
+
+# the driven axis off the origin; the driver's axis at the upper block's centre, the lower block 7 mm below it
+C2 = np.array([5.0, -3.0])
+C1 = C2 + (6.0, 3.0)
+BLOCKS = [_square(0.0, 0.0), _square(0.0, -7.0)]  # the driver body, in its own frame (axis at its origin)
+E_CCW = _edge_meets_corner((7.0, 2.0))            # the upper block's corner (7, 2) on the bar's upper edge: 0.2096
+E_CW = _edge_meets_corner((7.0, 3.0))             # the lower block's corner (7, -3) on the bar's lower edge: 0.3392
+
+
+def _sweep(phis, senses=(1, 1), law=lambda p: 0.0, **kw):
+    kw.setdefault("max_angle", 0.5)
+    return transmission_sweep(BLOCKS, C1, [BAR], C2, law, phis, senses=senses, **kw)
+
+
+def test_free_rotations_both_ways_are_the_corners_met_by_the_bars_edges():
+    res = _sweep([0.0, 0.05, -0.02], contact_tol=2e-3, name="bar")
+    assert res.name == "bar" and res.contact_tol == 2e-3
+    assert res.phi.tolist() == [0.0, 0.05, -0.02] and res.theta.tolist() == [0.0, 0.0, 0.0]
+    assert res.overlap_area.tolist() == [0.0, 0.0, 0.0]
+    # the driven turned on by phi (sense +1: CCW) has phi less to go forwards and phi more backwards
+    assert res.free_fwd == pytest.approx([E_CCW, E_CCW - 0.05, E_CCW + 0.02], abs=1e-12)
+    assert res.free_back == pytest.approx([E_CW, E_CW + 0.05, E_CW - 0.02], abs=1e-12)
+    # one corner touches each way; the contact points are the blocks' corners, in the world frame
+    assert res.pairs_coast.tolist() == [1, 1, 1] and res.pairs_drive.tolist() == [1, 1, 1]
+    assert res.contact_point_coast == pytest.approx(np.tile(C2 + (7.0, 2.0), (3, 1)), abs=1e-9)
+    assert res.contact_point_drive == pytest.approx(np.tile(C2 + (7.0, -3.0), (3, 1)), abs=1e-9)
+    # r_ref by default: the mean distance of the contact points from the driven axis
+    assert res.r_ref == pytest.approx(np.full(3, 0.5 * (math.sqrt(53.0) + math.sqrt(58.0))), abs=1e-9)
+
+
+def test_the_driven_sense_swaps_the_flanks():
+    res = _sweep([0.0, 0.05], senses=(1, -1))
+    # sense -1: the driven turns CW as phi grows, its forward turn is CW
+    assert res.free_fwd == pytest.approx([E_CW, E_CW - 0.05], abs=1e-12)
+    assert res.free_back == pytest.approx([E_CCW, E_CCW + 0.05], abs=1e-12)
+    assert res.contact_point_coast == pytest.approx(np.tile(C2 + (7.0, -3.0), (2, 1)), abs=1e-9)
+    assert res.contact_point_drive == pytest.approx(np.tile(C2 + (7.0, 2.0), (2, 1)), abs=1e-9)
+
+
+def _first_touch(fixed_loops, moving_loops, centre, sign, limit, step=2e-3):
+    """The least turn in (0, limit] of the moving loops about centre (sign +1: CCW) at which they share area with the
+    fixed ones (manifold3d's boolean), found on a grid of `step` then by bisection; inf when none."""
+    A = m3d.CrossSection([np.ascontiguousarray(p) for p in fixed_loops], m3d.FillRule.EvenOdd)
+    B = m3d.CrossSection([np.ascontiguousarray(p - centre) for p in moving_loops], m3d.FillRule.EvenOdd)
+
+    def area(d):
+        return (A ^ B.rotate(math.degrees(sign * d)).translate(tuple(centre))).area()
+
+    prev = 0.0
+    for d in np.arange(step, limit + step, step):
+        d = min(d, limit)
+        if area(d) > 0.0:
+            lo, hi = prev, d
+            for _ in range(60):
+                mid = 0.5 * (lo + hi)
+                lo, hi = (lo, mid) if area(mid) > 0.0 else (mid, hi)
+            return hi
+        prev = d
+    return math.inf
+
+
+def _placed(loops, angle, centre):
+    c, s = math.cos(angle), math.sin(angle)
+    R = np.array([[c, -s], [s, c]])
+    return [p @ R.T + centre for p in loops]
+
+
+@pytest.mark.parametrize("s1, s2", [(1, 1), (-1, 1), (1, -1), (-1, -1)])
+def test_driver_and_driven_are_placed_by_their_senses_about_their_own_axes(s1, s2):
+    """The driver turned by s1 theta(phi) about its axis, the driven by s2 phi about its own: the free turns are those
+    of the bodies placed so by hand, found by the boolean's first common area."""
+    driver = [_square(1.5, 0.5, 0.8)]  # off the driver's axis: its turn moves it
+    phis = [0.04, -0.03]
+    law = lambda p: 0.25 + 2.0 * p  # noqa: E731
+    res = _sweep(phis, senses=(s1, s2), law=law)
+    assert res.theta == pytest.approx([0.33, 0.19], abs=1e-15)
+    res = transmission_sweep(driver, C1, [BAR], C2, law, phis, senses=(s1, s2), max_angle=0.5)
+    for k, phi in enumerate(phis):
+        fixed = _placed(driver, s1 * law(phi), C1)
+        moving = _placed([BAR], s2 * phi, C2)
+        fwd = _first_touch(fixed, moving, C2, s2, 0.5)
+        back = _first_touch(fixed, moving, C2, -s2, 0.5)
+        assert math.isfinite(fwd) or math.isfinite(back)
+        for got, want in ((res.free_fwd[k], fwd), (res.free_back[k], back)):
+            if math.isinf(want):
+                assert got == math.inf
+            else:
+                assert got == pytest.approx(want, abs=1e-7)  # the boolean works on a 1e-8 mm grid
+
+
+def test_the_search_stops_at_max_angle_on_both_sides_of_it():
+    assert _sweep([0.0], max_angle=E_CCW + 1e-6).free_fwd[0] == pytest.approx(E_CCW, abs=1e-12)
+    short = _sweep([0.0], max_angle=E_CCW - 1e-6)
+    assert short.free_fwd[0] == math.inf and short.pairs_coast[0] == 0
+    assert np.isnan(short.contact_point_coast[0]).all()
+    assert short.free_back[0] == math.inf  # E_CW is further still
+    # the next step's search starts from this step's answer, never beyond max_angle: a step whose contact lies just
+    # past max_angle after one well inside it finds none
+    m = E_CCW - 0.02
+    res = _sweep([0.03, 0.01], max_angle=m)
+    assert res.free_fwd[0] == pytest.approx(E_CCW - 0.03, abs=1e-12) and res.free_fwd[1] == math.inf
+    res = _sweep([0.01, 0.03], max_angle=m)
+    assert res.free_fwd[0] == math.inf and res.free_fwd[1] == pytest.approx(E_CCW - 0.03, abs=1e-12)
+    # a max_angle below the first window (1e-3 rad): a contact 7e-4 rad away is found within 9e-4, not within 5e-4
+    near = [E_CCW - 7e-4]
+    assert _sweep(near, max_angle=9e-4).free_fwd[0] == pytest.approx(7e-4, abs=1e-12)
+    assert _sweep(near, max_angle=5e-4).free_fwd[0] == math.inf
+
+
+def test_r_ref_as_a_number_an_array_a_callable_or_nan_without_contact():
+    phis = [0.0, 0.05]
+    assert _sweep(phis, r_ref=12.5).r_ref.tolist() == [12.5, 12.5]
+    assert _sweep(phis, r_ref=[11.0, 13.0]).r_ref.tolist() == [11.0, 13.0]
+    assert _sweep(phis, r_ref=lambda p: 10.0 + 2.0 * p).r_ref.tolist() == [10.0, 10.1]
+    res = _sweep(phis, max_angle=0.1)  # no contact within 0.1 rad either way
+    assert np.isnan(res.r_ref).all() and np.isnan(res.backlash_mm).all()
+    # the contact points of one side only: their mean distance
+    res = _sweep(phis, max_angle=0.3)
+    assert np.isinf(res.free_back).all()
+    assert res.r_ref == pytest.approx(np.full(2, math.sqrt(53.0)), abs=1e-9)
+
+
+def test_overlapping_bodies_report_the_common_area_and_no_free_turn():
+    # the upper block lowered into the bar: a 2 mm x 0.3 mm overlap at phi = 0; the bar turned 0.8 rad clears it
+    # (the upper block spans y = 0.2 .. 2.2 from the driven axis, x = 5 .. 7; the bar turned 0.8 rad is above it)
+    res = transmission_sweep(BLOCKS, C2 + (6.0, 1.2), [BAR], C2, lambda p: 0.0, [0.0, 0.8], senses=(1, 1),
+                             max_angle=0.5)
+    assert res.overlap_area[0] == pytest.approx(2.0 * 0.3, abs=1e-7)  # the boolean works on a 1e-8 mm grid
+    assert np.isnan(res.free_fwd[0]) and np.isnan(res.free_back[0])
+    assert np.isnan(res.contact_point_drive[0]).all() and np.isnan(res.contact_point_coast[0]).all()
+    assert res.pairs_drive[0] == 0 and res.pairs_coast[0] == 0
+    assert res.overlap_area[1] == 0.0 and math.isfinite(res.free_back[1])
+    chk = {c.name: c for c in res.checks()}
+    assert not chk["mesh.overlap_area"].passed
+    assert chk["mesh.overlap_area"].value == pytest.approx(0.6, abs=1e-7)
+    assert chk["mesh.overlap_area"].message == "max overlap 0.6 mm^2 at phi = 0.000000 rad (step 0)"
+    assert "1 steps interfere" in chk["mesh.backlash"].message
+
+
+@pytest.mark.parametrize("depth, interferes", [(math.sqrt(2e-6), True), (math.sqrt(5e-7), False)])
+def test_an_overlap_counts_from_overlap_area_tol(depth, interferes):
+    """policy.OVERLAP_AREA_TOL_MM2 = 1e-6 mm^2: a diamond's corner pushed d into the bar's edge overlaps it by d^2:
+    2e-6 mm^2 interferes (no free turn), 5e-7 mm^2 does not (its free turns are measured)."""
+    assert policy.OVERLAP_AREA_TOL_MM2 == 1e-6
+    diamond = [np.array([[0.0, -1.0], [1.0, 0.0], [0.0, 1.0], [-1.0, 0.0]])]
+    centre = C2 + (6.0, 0.5 + 1.0 - depth)
+    res = transmission_sweep(diamond, centre, [BAR], C2, lambda p: 0.0, [0.0], senses=(1, 1), max_angle=0.5)
+    assert res.overlap_area[0] == pytest.approx(depth * depth, rel=1e-3)
+    assert np.isnan(res.free_fwd[0]) == interferes
+    assert {c.name: c for c in res.checks()}["mesh.overlap_area"].passed == (not interferes)
+
+
+def test_bad_inputs_are_refused_with_their_messages():
+    def refused(msg, **kw):
+        args = dict(driver_profile=BLOCKS, driver_center=C1, driven_profile=[BAR], driven_center=C2,
+                    law_theta_of_phi=lambda p: 0.0, phis=[0.0])
+        args.update(kw)
+        with pytest.raises(InputError) as e:
+            transmission_sweep(**args)
+        assert str(e.value) == msg
+
+    refused("driven_center = (np.float64(11.0), np.float64(0.0)): must differ from driver_center", driven_center=C1)
+    refused("phis = (0,): must be a 1-D array of finite angles", phis=[])
+    refused("phis = (1, 2): must be a 1-D array of finite angles", phis=[[0.0, 0.1]])
+    refused("phis = (2,): must be a 1-D array of finite angles", phis=[0.0, math.nan])
+    refused("phis = (2,): must be a 1-D array of finite angles", phis=[math.inf, 0.0])
+    refused("senses = (1, 2): each must be +1 or -1", senses=(1, 2))
+    refused("senses = (2, 1): each must be +1 or -1", senses=(2, 1))
+    refused("senses = (0, 1): each must be +1 or -1", senses=(0, 1))
+    refused("contact_tol = 0.0: must be > 0 mm", contact_tol=0.0)
+    refused("contact_merge = 0.0: must be > 0 mm", contact_merge=0.0)
+    refused("max_angle = 0.0: must be > 0 rad", max_angle=0.0)
+    refused("law_theta_of_phi = 'non-finite': must return finite angles", law_theta_of_phi=lambda p: math.nan)
+    refused("law_theta_of_phi = 'non-finite': must return finite angles",
+            law_theta_of_phi=lambda p: 0.0 if p < 0.05 else math.inf, phis=[0.0, 0.1])
+    # accepted: a scalar phi, centres half a millimetre apart, both senses negative
+    res = transmission_sweep(BLOCKS, C2 + (0.5, 0.0), [BAR], C2, lambda p: 0.0, 0.0)
+    assert res.phi.tolist() == [0.0] and res.overlap_area[0] > 1.0
+    res = _sweep([0.0], senses=(-1, -1))
+    assert res.free_fwd[0] == pytest.approx(E_CW, abs=1e-12)
+
+
+def test_chord_tol_and_max_segment_reach_the_outlines():
+    """A disc (a Profile: sampled to chord_tol) met by the bar's upper edge: the edge first touches the inscribed
+    polygon at the vertex it reaches first."""
+    disc = Profile(circle_loop(1.0))
+    q = np.array([6.0, 2.5])  # the disc's centre from the driven axis: the edge touches it mid-bar
+    for tol in (0.05, 0.01):
+        (poly,) = disc.polylines(tol)
+        want = min(_edge_meets_corner(q + v) for v in poly)
+        res = transmission_sweep(disc, C2 + q, [BAR], C2, lambda p: 0.0, [0.0], senses=(1, 1), max_angle=0.5,
+                                 chord_tol=tol)
+        assert res.free_fwd[0] == pytest.approx(want, abs=1e-12)
+    # the bar's edges cut into 0.1 mm pieces by default and 1 mm ones when asked: the contact counts group the same
+    res = transmission_sweep(BLOCKS, C1, [BAR], C2, lambda p: 0.0, [0.0], senses=(1, 1), max_angle=0.5,
+                             max_segment=1.0)
+    assert res.free_fwd[0] == pytest.approx(E_CCW, abs=1e-12) and res.pairs_coast[0] == 1
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# two identical involute spur gears: a constant ratio, no transmission error, the backlash of the thinning
+# ---------------------------------------------------------------------------------------------------------------
+
+Z, MOD, J_N = 16, 2.0, 0.1
+
+
+def test_identical_involute_gears_run_at_a_constant_ratio_with_the_backlash_of_their_thinning():
+    """Two z = 16, m = 2 gears, each tooth thinned by J_N / 2 along the normal, on the standard centre distance,
+    driver at the world origin turning CCW (the driven CW): the free turn each way is (J_N / 2) / r_b of the driven
+    at every step, the loaded flank's contact lies on the line of action x cos(alpha) - y sin(alpha) = r_b (the
+    tangent through the pitch point of the driver's base circle on the side its rotation pushes), the other flank's
+    on its mirror image, and one or two tooth pairs carry as epsilon_alpha says."""
+    g, info = involute_gear(Z, MOD, J_N, n_flank=200)
+    o = outline(g)
+    a = MOD * Z
+    r_b = info["r_b"]
+    steps = 24
+    phi0 = math.pi / Z  # a driven tooth space faces the driver's tooth 0
+    phis = phi0 + np.arange(steps) * (2 * math.pi / Z) / steps
+    res = transmission_sweep(o, (0.0, 0.0), o, (a, 0.0), lambda p: p - phi0, phis, r_ref=info["r"], contact_tol=1e-5)
+    free = J_N / 2 / r_b
+    # (the polylines inscribed in the convex flanks: up to 1e-6 rad more, 15 nm on r_b)
+    assert res.free_fwd == pytest.approx(np.full(steps, free + 5e-7), abs=5e-7)
+    assert res.free_back == pytest.approx(np.full(steps, free + 5e-7), abs=5e-7)
+    assert np.abs(res.te_mid).max() < 3e-7 and res.te_drive_pp < 1e-6
+    # the contact points: on the two lines of action, to half a flank edge (the first contact is a vertex of one
+    # polyline on an edge of the other; along the flank is across the line)
+    r = np.hypot(g[:, 0], g[:, 1])
+    flank = (r[:-1] > r_b) & (r[1:] > r_b) & (r[:-1] < info["r_a"] - 1e-9) & (r[1:] < info["r_a"] - 1e-9)
+    half_edge = 0.5 * np.linalg.norm(np.diff(g, axis=0), axis=1)[flank].max()  # 0.0066 mm
+    ca, sa = math.cos(ALPHA), math.sin(ALPHA)
+    drive, coast = res.contact_point_drive, res.contact_point_coast
+    assert np.abs(drive[:, 0] * ca - drive[:, 1] * sa - r_b).max() < half_edge
+    assert np.abs(coast[:, 0] * ca + coast[:, 1] * sa - r_b).max() < half_edge
+    # within the path of contact: between the tangent points of the two base circles
+    t_drive = drive[:, 0] * sa + drive[:, 1] * ca  # along the line, 0 at the driver's tangent point
+    assert (t_drive > 0.0).all() and (t_drive < a * sa).all()
+    eps = epsilon_alpha(Z, Z, MOD)  # 1.556
+    for flank in ("drive", "coast"):
+        assert res.fraction_pairs(2, flank) == pytest.approx(eps - 1, abs=1.5 / steps)
+        assert res.fraction_pairs(1, flank) == pytest.approx(2 - eps, abs=1.5 / steps)
+    assert res.contact_ratio_mean == pytest.approx(eps, abs=1.5 / steps)
+    # r_ref by default: the contact points' mean distance from the driven axis
+    auto = transmission_sweep(o, (0.0, 0.0), o, (a, 0.0), lambda p: p - phi0, phis[:4])
+    pts = np.vstack([auto.contact_point_drive, auto.contact_point_coast])
+    assert auto.r_ref == pytest.approx(np.full(4, np.mean(np.hypot(pts[:, 0] - a, pts[:, 1]))), abs=1e-12)
+
+
+def test_a_driver_ahead_of_the_law_moves_the_centre_of_the_backlash():
+    """The driver turned c ahead of the law (theta = phi + c, a 1:1 pair): the driven follows, te_mid = c; a centre
+    distance larger by da opens the backlash by 2 da sin(alpha) along the normal."""
+    g, info = involute_gear(Z, MOD, J_N, n_flank=200)
+    o = outline(g)
+    phi0 = math.pi / Z
+    phis = phi0 + np.array([0.0, 0.07, 0.19])
+    c = 2e-3
+    res = transmission_sweep(o, (0.0, 0.0), o, (MOD * Z, 0.0), lambda p: p - phi0 + c, phis)
+    assert res.te_mid == pytest.approx(np.full(3, c), abs=3e-7)
+    assert res.free_fwd == pytest.approx(np.full(3, J_N / 2 / info["r_b"] + c + 5e-7), abs=5e-7)
+    assert res.free_back == pytest.approx(np.full(3, J_N / 2 / info["r_b"] - c + 5e-7), abs=5e-7)
+    # the centre distance opened by da: the working pressure angle alpha_w, the tooth thickness on the working pitch
+    # circle s_w = d_w (s / d + inv alpha - inv alpha_w) (ISO 21771), the free turn (p_w - 2 s_w) / r_w
+    da = 0.05
+    a_w = MOD * Z + da
+    alpha_w = math.acos(MOD * Z * math.cos(ALPHA) / a_w)
+    inv = lambda x: math.tan(x) - x  # noqa: E731
+    s = math.pi * MOD / 2 - J_N / (2 * math.cos(ALPHA))
+    free_total = 2 * math.pi / Z - 4 * (s / (MOD * Z) + inv(ALPHA) - inv(alpha_w))
+    res = transmission_sweep(o, (0.0, 0.0), o, (a_w, 0.0), lambda p: p - phi0, phis)
+    assert (res.free_fwd + res.free_back) == pytest.approx(np.full(3, free_total + 1e-6), abs=1e-6)
+    assert free_total > J_N / info["r_b"] + 2 * da * math.sin(ALPHA) / info["r_b"] * 0.9
