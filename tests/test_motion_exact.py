@@ -235,6 +235,27 @@ def test_chord_tol_and_max_segment_reach_the_outlines():
     assert res.free_fwd[0] == pytest.approx(E_CCW, abs=1e-12) and res.pairs_coast[0] == 1
 
 
+@pytest.mark.parametrize("gap, tol, merge, pairs", [(1.2e-3, 1e-3, 0.5, 1), (1.2e-3, 1.3e-3, 0.5, 2),
+                                                    (0.7e-3, None, 0.5, 2), (1.2e-3, 1.3e-3, 3.0, 1)])
+def test_a_second_corner_counts_as_a_pair_within_contact_tol_and_apart_by_contact_merge(gap, tol, merge, pairs):
+    """A second, small block whose corner lies `gap` mm beyond the bar's upper edge at its first contact, 2.5 mm
+    further along it: its remaining gap (the arc at its radius) is gap (s^2 + 1/4)^(1/2) / s, s its distance along the
+    edge; it is a second pair when that is within contact_tol (default 1e-3 mm) and the two points are more than
+    contact_merge apart along the bar."""
+    e = E_CCW
+    u, n = np.array([math.cos(e), math.sin(e)]), np.array([-math.sin(e), math.cos(e)])
+    s1 = float(np.dot((7.0, 2.0), u))
+    s2 = s1 + 2.5
+    corner = s2 * u + (0.5 + gap) * n  # from the driven axis
+    arc = gap * math.hypot(s2, 0.5) / s2
+    assert (arc <= (tol or 1e-3)) == (pairs == 2 or merge == 3.0)
+    small = _square(*(corner + (-0.3, 0.3)), h=0.3) - (C1 - C2)
+    kw = dict(contact_merge=merge) if tol is None else dict(contact_tol=tol, contact_merge=merge)
+    res = transmission_sweep(BLOCKS + [small], C1, [BAR], C2, lambda p: 0.0, [0.0], senses=(1, 1), max_angle=0.5, **kw)
+    assert res.free_fwd[0] == pytest.approx(e, abs=1e-12)
+    assert res.pairs_coast[0] == pairs and res.pairs_drive[0] == 1
+
+
 # ---------------------------------------------------------------------------------------------------------------
 # two identical involute spur gears: a constant ratio, no transmission error, the backlash of the thinning
 # ---------------------------------------------------------------------------------------------------------------
@@ -255,7 +276,8 @@ def test_identical_involute_gears_run_at_a_constant_ratio_with_the_backlash_of_t
     steps = 24
     phi0 = math.pi / Z  # a driven tooth space faces the driver's tooth 0
     phis = phi0 + np.arange(steps) * (2 * math.pi / Z) / steps
-    res = transmission_sweep(o, (0.0, 0.0), o, (a, 0.0), lambda p: p - phi0, phis, r_ref=info["r"], contact_tol=1e-5)
+    # (contact_tol 3e-5 mm: the second pair's gap reads up to 1e-5 mm off on these polylines)
+    res = transmission_sweep(o, (0.0, 0.0), o, (a, 0.0), lambda p: p - phi0, phis, r_ref=info["r"], contact_tol=3e-5)
     free = J_N / 2 / r_b
     # (the polylines inscribed in the convex flanks: up to 1e-6 rad more, 15 nm on r_b)
     assert res.free_fwd == pytest.approx(np.full(steps, free + 5e-7), abs=5e-7)
@@ -307,3 +329,83 @@ def test_a_driver_ahead_of_the_law_moves_the_centre_of_the_backlash():
     res = transmission_sweep(o, (0.0, 0.0), o, (a_w, 0.0), lambda p: p - phi0, phis)
     assert (res.free_fwd + res.free_back) == pytest.approx(np.full(3, free_total + 1e-6), abs=1e-6)
     assert free_total > J_N / info["r_b"] + 2 * da * math.sin(ALPHA) / info["r_b"] * 0.9
+
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# the checks of a transmission result (TransmissionResult.checks): values, limits on both sides, messages in full
+# ---------------------------------------------------------------------------------------------------------------
+
+
+def _result(free_fwd, free_back, r_ref, overlap=None, pairs_drive=None, pairs_coast=None, name="mesh"):
+    n = len(free_fwd)
+    z = np.zeros(n)
+    return TransmissionResult(np.arange(n) * 0.1, 2.0 * np.arange(n) * 0.1, z if overlap is None else np.array(overlap),
+                              np.array(free_fwd, float), np.array(free_back, float), np.array(r_ref, float),
+                              np.array(pairs_drive if pairs_drive is not None else [1] * n),
+                              np.array(pairs_coast if pairs_coast is not None else [1] * n),
+                              np.zeros((n, 2)), np.zeros((n, 2)), 1e-3, name)
+
+
+def test_checks_report_interference_contact_loss_and_the_least_pairs_in_full():
+    # step 1 interferes (nan), step 3 finds no contact backwards within the search angle (inf)
+    res = _result([0.010, math.nan, 0.012, 0.011], [0.008, math.nan, 0.002, math.inf], [10.0, 10.0, 5.0, 10.0],
+                  overlap=[0.0, 2e-6, 0.0, 0.0], pairs_drive=[1, 0, 2, 0], pairs_coast=[2, 0, 1, 1], name="m")
+    chk = res.checks(te_limit_rad=0.006, backlash_range_mm=(0.05, 0.2))
+    assert [c.name for c in chk] == ["m.overlap_area", "m.backlash", "m.contact_continuity", "m.transmission_error"]
+    ov, bl, cc, te = chk
+    assert (ov.passed, ov.value, ov.limit, ov.unit) == (False, 2e-6, 1e-6, "mm^2")
+    assert ov.message == "max overlap 2e-06 mm^2 at phi = 0.100000 rad (step 1)"
+    # backlash 0.18 and 0.07 mm where finite: the least at step 2
+    assert (bl.passed, bl.limit, bl.unit) == (False, 0.05, "mm") and bl.value == pytest.approx(0.07, abs=1e-15)
+    assert bl.message == ("backlash 0.07000 .. 0.18000 mm (min at phi = 0.200000 rad); 1 steps interfere, "
+                          "1 steps without contact within the search angle; allowed 0.05 .. 0.2 mm")
+    assert (cc.passed, cc.value, cc.limit, cc.unit) == (False, 0.0, 1.0, "pairs")
+    assert cc.message == "least tooth pairs in contact 0; mean on drive flank 0.7500"
+    # drive-flank te = -free_back where finite: -0.008, -0.002: 0.006 peak to peak, at its limit
+    assert (te.passed, te.unit) == (True, "rad") and te.value == pytest.approx(0.006, abs=1e-15)
+    assert te.message == "drive-flank transmission error peak-to-peak 6.000e-03 rad"
+    assert not res.checks(te_limit_rad=0.006 - 1e-12)[3].passed
+    assert len(res.checks()) == 3
+    # the coast flank's least counts too
+    res2 = _result([0.01, 0.01], [0.01, 0.01], [10.0, 10.0], pairs_drive=[2, 1], pairs_coast=[1, 0])
+    assert res2.checks()[2].value == 0 and not res2.checks()[2].passed
+    res3 = _result([0.01, 0.01], [0.01, 0.01], [10.0, 10.0], pairs_drive=[0, 1], pairs_coast=[1, 2])
+    assert res3.checks()[2].value == 0
+    res4 = _result([0.01, 0.01], [0.01, 0.01], [10.0, 10.0], pairs_drive=[1, 2], pairs_coast=[2, 1])
+    c = res4.checks()[2]
+    assert c.passed and c.value == 1 and c.message == "least tooth pairs in contact 1; mean on drive flank 1.5000"
+
+
+def test_backlash_limits_are_strict_below_and_inclusive_above():
+    res = _result([0.010, 0.007, 0.012], [0.004, 0.004, 0.006], [10.0, 10.0, 10.0])  # 0.14, 0.11, 0.18 mm
+    lo, hi = res.backlash_min_mm, res.backlash_max_mm
+    assert lo == pytest.approx(0.11, abs=1e-15) and hi == pytest.approx(0.18, abs=1e-15)
+
+    def ok(rng=None):
+        return {c.name: c for c in res.checks(backlash_range_mm=rng)}["mesh.backlash"].passed
+
+    assert ok() and ok((lo - 1e-12, hi)) and not ok((lo, hi)) and not ok((lo - 1e-12, hi - 1e-12))
+    assert ok((lo - 1e-12, None))
+    c = {c.name: c for c in res.checks()}["mesh.backlash"]
+    assert c.limit == 0.0 and c.message == ("backlash 0.11000 .. 0.18000 mm (min at phi = 0.100000 rad); "
+                                            "0 steps interfere, 0 steps without contact within the search angle")
+    assert c.value == pytest.approx(0.11, abs=1e-15)
+    # no backlash at all fails the default limit (> 0)
+    assert not {c.name: c for c in _result([0.0], [0.0], [10.0]).checks()}["mesh.backlash"].passed
+    # nothing finite: nan, the first step named
+    c = _result([math.inf, math.inf], [math.inf, 0.01], [10.0, 10.0]).checks()[1]
+    assert not c.passed and c.message.startswith("backlash nan .. nan mm (min at phi = 0.000000 rad); 0 steps interfere, "
+                                                 "2 steps without contact")
+    c = _result([math.inf, 0.01], [0.01, 0.01], [10.0, 10.0]).checks()[1]
+    assert c.message.startswith("backlash 0.20000 .. 0.20000 mm (min at phi = 0.100000 rad); 0 steps interfere, 1 steps")
+    # the overlap check passes at its tolerance, and names the step of the largest overlap
+    r = _result([0.01] * 3, [0.01] * 3, [10.0] * 3, overlap=[0.0, 1e-6, 0.5e-6])
+    assert r.checks()[0].passed and r.checks()[0].message == "max overlap 1e-06 mm^2 at phi = 0.100000 rad (step 1)"
+
+
+def test_fraction_pairs_of_either_flank():
+    res = _result([0.01] * 4, [0.01] * 4, [10.0] * 4, pairs_drive=[1, 2, 2, 1], pairs_coast=[1, 1, 1, 2])
+    assert res.fraction_pairs(2) == 0.5 and res.fraction_pairs(2, "drive") == 0.5
+    assert res.fraction_pairs(2, "coast") == 0.25 and res.fraction_pairs(1, "coast") == 0.75
+    assert res.fraction_pairs(3) == 0.0
