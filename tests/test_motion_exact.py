@@ -409,3 +409,255 @@ def test_fraction_pairs_of_either_flank():
     assert res.fraction_pairs(2) == 0.5 and res.fraction_pairs(2, "drive") == 0.5
     assert res.fraction_pairs(2, "coast") == 0.25 and res.fraction_pairs(1, "coast") == 0.75
     assert res.fraction_pairs(3) == 0.0
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# the contact law (contact_events.py): the resolved contact of two identical involute gears, then its pieces
+# ---------------------------------------------------------------------------------------------------------------
+
+from propulsor.checks.motion import Outline  # noqa: E402
+from propulsor.checks.motion import contact_events as ce  # noqa: E402
+from propulsor.checks.motion.contact_events import (DRIVE, KINDS, REVERSE, ContactLaw, PairOutlines,  # noqa: E402
+                                                    Stretch, contact_law, resolve_contact, runs)
+
+
+def _gear_pair(j_n=J_N):
+    """Two identical z = 16 gears as PairOutlines: the driven's tooth 0 on +x facing the driver at (L, 0), the
+    driver's teeth at pi + pi/Z + 2 pi k / Z (a space on its -x axis): meshed at phi = theta = 0."""
+    g, info = involute_gear(Z, MOD, j_n, n_flank=200)
+    c, s = math.cos(math.pi + math.pi / Z), math.sin(math.pi + math.pi / Z)
+    driver = outline(g @ np.array([[c, -s], [s, c]]).T)
+    teeth2 = 2 * math.pi * np.arange(Z) / Z
+    return PairOutlines(driver, outline(g), MOD * Z, math.pi + math.pi / Z + teeth2, teeth2), info
+
+
+def _one_to_one(phi):
+    return np.asarray(phi, float)
+
+
+def test_identical_gears_contact_law_is_the_law_less_half_the_backlash_on_the_pairs_that_mesh():
+    """1:1 identical gears: the loaded (drive) contact lags the law by (J_N / 2) / r_b at the law's speed, the reverse
+    leads it by as much; the driver turns CCW, so its tooth above the line of centres (15) pushes the driven's tooth 0
+    down, then tooth 14 the driven's tooth 1 (drive), and in reverse the driver's tooth 0 pushes tooth 0 up, then
+    15 pushes 1: every sample named so; flank contact all through; the samples uniform in driver angle (1 deg: 23
+    steps over a pitch) and every change of pair bisected to between h_min and 2 h_min of driven angle."""
+    po, info = _gear_pair()
+    free = J_N / 2 / info["r_b"]
+    span = 2 * math.pi / Z
+    h = 2e-5
+    law = {}
+    for d in (DRIVE, REVERSE):
+        c = resolve_contact(po, _one_to_one, 0.0, span, d, step_driver_rad=math.radians(1.0), h_min=h)
+        law[d] = c
+        assert c.direction == d and c.name == ("drive" if d == DRIVE else "reverse")
+        assert np.all(np.diff(c.phi) > 0) and c.phi[0] == 0.0 and c.phi[-1] == span
+        assert c.theta == pytest.approx(c.phi, abs=1e-15)
+        want = -d * (free + 5e-7)  # (the polylines inscribed: up to 1e-6 rad more)
+        assert c.te == pytest.approx(np.full(len(c.te), want), abs=5e-7)
+        assert (c.kind == 0).all() and c.evaluations == len(c.phi)
+        pairs = set(zip(c.driver_tooth.tolist(), c.driven_tooth.tolist()))
+        assert pairs == ({(15, 0), (14, 1)} if d == DRIVE else {(0, 0), (15, 1)})
+        grid = np.linspace(0.0, span, 24)
+        assert all(np.min(np.abs(c.phi - g)) < 1e-12 for g in grid)
+        assert not all(np.min(np.abs(c.phi - g)) < 1e-9 for g in np.linspace(0.0, span, 25))
+        st = np.stack([c.kind, c.driver_tooth, c.driven_tooth], axis=1)
+        change = np.nonzero(np.any(st[1:] != st[:-1], axis=1))[0]
+        assert len(change) >= 1
+        gaps = c.phi[change + 1] - c.phi[change]
+        assert (gaps > h).all() and (gaps <= 2 * h).all()
+        assert c.step_max < 2e-3
+    both = contact_law(po, _one_to_one, 0.0, span, step_driver_rad=math.radians(1.0), h_min=h)
+    assert [x.direction for x in both] == [DRIVE, REVERSE]
+    assert both[0].te.tolist() == law[DRIVE].te.tolist() and both[1].phi.tolist() == law[REVERSE].phi.tolist()
+
+
+def test_a_law_ahead_and_behind_is_followed_sample_by_sample():
+    """theta = phi + 0.002 sin(8 phi): the 1:1 driven follows the driver, te = theta - phi -+ (J_N / 2) / r_b; the
+    samples are uniform in theta (the law inverted: _phi_of_theta) from phi0 to phi1."""
+    po, info = _gear_pair()
+    free = J_N / 2 / info["r_b"] + 5e-7
+
+    def law(p):
+        p = np.asarray(p, float)
+        return p + 0.002 * np.sin(8.0 * p)
+
+    phi0, phi1 = 0.1, 0.1 + 2 * math.pi / Z
+    step = math.radians(2.0)
+    for d in (DRIVE, REVERSE):
+        c = resolve_contact(po, law, phi0, phi1, d, step_driver_rad=step, h_min=1e-3)
+        assert c.te == pytest.approx(0.002 * np.sin(8.0 * c.phi) - d * free, abs=5e-7)
+        assert c.theta == pytest.approx(law(c.phi), abs=1e-15)
+        th = np.linspace(law(phi0), law(phi1), int(math.ceil((law(phi1) - law(phi0)) / step)) + 1)
+        assert all(np.min(np.abs(c.theta - t)) < 1e-12 for t in th)
+        assert c.phi[0] == phi0 and c.phi[-1] == phi1
+
+
+def test_resolve_contact_stops_at_max_evals_and_reports_progress():
+    po, _ = _gear_pair()
+    span = 2 * math.pi / Z
+    ticks = []
+    c = resolve_contact(po, _one_to_one, 0.0, span, DRIVE, step_driver_rad=math.radians(1.0), max_evals=30,
+                        tick=lambda done, total: ticks.append((done, total)))
+    assert c.evaluations == 30 and len(c.phi) == 30  # 24 samples, 6 bisections
+    assert ticks[-1] == (30, 30) and [t[0] for t in ticks[:24]] == list(range(1, 25))
+    assert all(total >= done for done, total in ticks)
+    c = resolve_contact(po, _one_to_one, 0.0, span, DRIVE, step_driver_rad=math.radians(1.0), max_evals=24)
+    assert c.evaluations == 24
+    # h_min wider than half the sampling step: nothing to bisect
+    c = resolve_contact(po, _one_to_one, 0.0, span, DRIVE, step_driver_rad=math.radians(1.0), h_min=0.01)
+    assert c.evaluations == 24 and len(c.phi) == 24
+    # two samples at the least
+    c = resolve_contact(po, _one_to_one, 0.0, 1e-4, DRIVE, step_driver_rad=math.radians(1.0))
+    assert c.phi.tolist() == [0.0, 1e-4]
+
+
+def test_a_pair_apart_has_no_contact_and_a_contact_is_found_anew_after_one_without():
+    po, info = _gear_pair()
+    apart = PairOutlines(po.drv, po.dvn, MOD * Z + 5.0, po.driver_teeth, po.driven_teeth)
+    r = apart.contact(0.0, 0.0, DRIVE)
+    assert math.isnan(r[0]) and r[1:4] == (-1, -1, -1) and np.isnan(r[4]).all()
+    # tracking from a neighbour's contact gives the contact of a full search
+    te, kind, t1, t2, p = po.contact(0.01, 0.01, DRIVE)
+    tracked = po.contact(0.0101, 0.0101, DRIVE, te, 1e-4)
+    full = po.contact(0.0101, 0.0101, DRIVE)
+    assert tracked[0] == pytest.approx(full[0], abs=1e-15) and tracked[1:4] == full[1:4]
+    # from a neighbour whose contact lay 5e-3 rad on the loaded side (the start inside the driver: the first hit
+    # found within a fifth of the margin is searched again from the law's position), or on the free side: the same
+    for d in (DRIVE, REVERSE):
+        want = po.contact(0.0101, 0.0101, d)
+        for off in (-5e-3, -1e-3, 1e-3, 5e-3):
+            assert po.contact(0.0101, 0.0101, d, want[0] + off, 1e-4)[0] == pytest.approx(want[0], abs=1e-15)
+    # the contact point, in the driven frame: on the driven outline, on the drive line of action when turned
+    p = np.asarray(full[4])
+    ang = -(0.0101 + full[0])
+    world = np.array([math.cos(ang) * p[0] - math.sin(ang) * p[1], math.sin(ang) * p[0] + math.cos(ang) * p[1]])
+    # driven at the origin, driver at (L, 0) turning CCW: the drive line x cos a + y sin a = L - r_b ... from the
+    # driver's side, the tangent to its base circle on which its CCW turn pushes: (L - x) cos a + y sin a = r_b
+    assert abs((MOD * Z - world[0]) * math.cos(ALPHA) + world[1] * math.sin(ALPHA) - info["r_b"]) < 1e-2  # half a flank edge
+    assert abs(math.hypot(*p) - info["r"]) < 1.0
+
+
+def test_contact_events_speeds_stretches_and_corner_runs_by_hand():
+    """A contact law written by hand (phi in 1e-5 rad steps, step_window 2.5e-5): te rising 0.01 rad/rad over the
+    first state (samples 0-3), falling 0.02 over the second (4-7, the driver's tooth 3 instead of 2), then a single
+    sample on a driven tip corner (8) and two on the first state again (9, 10)."""
+    phi = np.arange(11) * 1e-5
+    te = np.array([0.0, 1e-7, 2e-7, 3e-7, 2.8e-7, 0.8e-7, -1.2e-7, -3.2e-7, -3.0e-7, -3.0e-7, -2.9e-7])
+    kind = np.array([0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0])
+    drv = np.array([2, 2, 2, 2, 3, 3, 3, 3, 3, 3, 3])
+    dvn = np.array([5, 5, 5, 5, 5, 5, 5, 5, 5, 6, 6])
+    theta = 2.0 * phi
+    law = ContactLaw(DRIVE, phi, theta, te, kind, drv, dvn, 11, step_window=2.5e-5)
+    # the change 3|4: before, samples 0..3 (the window reached: 3e-5 >= 2.5e-5); after, 4..7
+    before = 1.0 + (te[3] - te[0]) / (phi[3] - phi[0])
+    after = 1.0 + (te[7] - te[4]) / (phi[7] - phi[4])
+    ev = law.events()
+    # 7|8 and 8|9: sample 8 alone in its state has no speed on its side: no event there
+    assert len(ev) == 1
+    assert ev[0][0] == pytest.approx(3.5e-5, abs=1e-18)
+    assert ev[0][1] == pytest.approx(before, abs=1e-12) and ev[0][2] == pytest.approx(after, abs=1e-12)
+    assert (before, after) == (pytest.approx(1.01), pytest.approx(0.98))
+    assert ev[0][3:] == ((0, 2, 5), (0, 3, 5)) and all(type(x) is int for x in ev[0][3] + ev[0][4])
+    # sample 8 in the first state: the change 8|9 (driven tooth 6) has 4..8 before (window: 4..7, one more: 8) and
+    # 9..10 after
+    law = ContactLaw(DRIVE, phi, theta, te, np.zeros(11, int), drv, dvn, 11, step_window=2.5e-5)
+    ev = law.events()
+    assert len(ev) == 2 and ev[1][3:] == ((0, 3, 5), (0, 3, 6))
+    assert ev[1][1] == pytest.approx(1.0 + (te[8] - te[5]) / 3e-5, abs=1e-12)
+    assert ev[1][2] == pytest.approx(1.0 + (te[10] - te[9]) / 1e-5, abs=1e-12)
+    assert law.events() == ev and law.events() is not law.events()  # a copy, computed once
+    assert law.step_max == pytest.approx(max(abs(e[2] - e[1]) for e in ev), abs=1e-15)
+    k = int(np.argmax([abs(e[2] - e[1]) for e in ev]))
+    at = law.step_at()
+    assert at[0] == ev[k][0] and at[1] == pytest.approx(2.0 * ev[k][0], abs=1e-18)
+
+
+def test_side_speed_window_reaches_one_sample_past_it_within_the_state():
+    phi = np.array([0.0, 1e-5, 2e-5, 3e-5, 4e-5, 5e-5, 6e-5])
+    te = np.array([0.0, 0.0, 0.0, 0.0, 1e-7, 3e-7, 6e-7])
+    kind = np.zeros(7, int)
+    drv = np.array([1, 1, 1, 1, 2, 2, 2])
+    dvn = np.zeros(7, int)
+    law = ContactLaw(DRIVE, phi, 2 * phi, te, kind, drv, dvn, 7, step_window=1.5e-5)
+    # after the change 3|4: from 4 on, 5 is 1e-5 < 1.5e-5 away, 6 is 2e-5: the chord 4..6
+    (ev,) = law.events()
+    assert ev[1] == pytest.approx(1.0, abs=1e-12)  # 1..3 flat: the chord 1..3 (window), not 0..3 ... all flat
+    assert ev[2] == pytest.approx(1.0 + (6e-7 - 1e-7) / 2e-5, abs=1e-12)
+    law = ContactLaw(DRIVE, phi, 2 * phi, te, kind, drv, dvn, 7, step_window=0.5e-5)
+    (ev,) = law.events()  # the window shorter than a step: the next sample
+    assert ev[2] == pytest.approx(1.0 + (3e-7 - 1e-7) / 1e-5, abs=1e-12)
+    law = ContactLaw(DRIVE, phi, 2 * phi, te, kind, drv, dvn, 7)  # default 2e-5: 4..6 (2e-5 is not < 2e-5)
+    assert law.step_window == policy.CONTACT_STEP_WINDOW_RAD == 2e-5
+    (ev,) = law.events()
+    assert ev[2] == pytest.approx(1.0 + (6e-7 - 1e-7) / 2e-5, abs=1e-12)
+    # a sample without contact (nan) at the chord's end: no speed, no event
+    te2 = te.copy()
+    te2[6] = math.nan
+    law = ContactLaw(DRIVE, phi, 2 * phi, te2, kind, drv, dvn, 7, step_window=1.5e-5)
+    assert law.events() == [] and law.step_max == 0.0 and law.step_at() is None
+    te3 = te.copy()
+    te3[1] = math.nan  # before: from 3 back to 2 (1e-5 < 1.5e-5), one more: 1 (nan); sample 0 is not reached
+    law = ContactLaw(DRIVE, phi, 2 * phi, te3, kind, drv, dvn, 7, step_window=1.5e-5)
+    assert law.events() == []
+    te3 = te.copy()
+    te3[0] = math.nan
+    law = ContactLaw(DRIVE, phi, 2 * phi, te3, kind, drv, dvn, 7, step_window=1.5e-5)
+    assert len(law.events()) == 1
+
+
+def test_stretches_and_the_longest_corner_run():
+    phi = np.arange(8) * 0.01
+    theta = np.radians(np.arange(8) * 0.5)  # 0.5 deg of driver a sample
+    # speeds of the 7 intervals: 1, 1.005, 1.02, 1, 1, 0.97, 1
+    slope = np.array([0.0, 0.005, 0.02, 0.0, 0.0, -0.03, 0.0])
+    te = np.concatenate([[0.0], np.cumsum(slope * 0.01)])
+    kind = np.array([0, 0, 0, 0, 1, 0, 0, 0])  # a driver tip corner at sample 4
+    drv = np.array([1, 1, 1, 2, 2, 2, 2, 2])
+    dvn = np.array([7, 7, 7, 8, 8, 8, 9, 9])
+    law = ContactLaw(REVERSE, phi, theta, te, kind, drv, dvn, 8)
+    (s,) = law.stretches()
+    # bad intervals (speed off by more than 0.01, or a corner at either end): 2 (1.02); 3, 4 (sample 4's corner);
+    # 5 (0.97): one stretch, samples 2..6
+    assert s == Stretch(1.0, pytest.approx(3.0), 0.02, 0.06, ("driver tip corner", "flank"), (1, 2), (7, 8, 9),
+                        pytest.approx(0.97), pytest.approx(1.02))
+    assert type(s.speed_min) is float and type(s.driver_teeth[0]) is int
+    # a looser tolerance keeps the corner's intervals and the 0.97 one, a looser still the corner's; a tighter adds 1.005
+    assert [(x.phi_from_rad, x.phi_to_rad) for x in law.stretches(0.025)] == [(0.03, 0.06)]
+    assert [(x.phi_from_rad, x.phi_to_rad) for x in law.stretches(0.035)] == [(0.03, 0.05)]
+    assert [(x.phi_from_rad, x.phi_to_rad) for x in law.stretches(0.004)] == [(0.01, 0.06)]
+    # without the corner: two stretches, each of one interval
+    flat = ContactLaw(REVERSE, phi, theta, te, np.zeros(8, int), drv, dvn, 8)
+    s1, s2 = flat.stretches()
+    assert (s1.phi_from_rad, s1.phi_to_rad, s2.phi_from_rad, s2.phi_to_rad) == (0.02, 0.03, 0.05, 0.06)
+    assert (s1.theta_from_deg, s1.theta_to_deg) == (pytest.approx(1.0), pytest.approx(1.5))
+    assert (s2.speed_min, s2.speed_max) == (pytest.approx(0.97), pytest.approx(0.97))
+    assert (s2.driver_teeth, s2.driven_teeth, s2.kinds) == ((2,), (8, 9), ("flank",))
+    # an interval without contact at an end (nan speed) is not a stretch
+    te_nan = te.copy()
+    te_nan[3] = math.nan
+    assert [(x.phi_from_rad, x.phi_to_rad) for x in ContactLaw(REVERSE, phi, theta, te_nan, np.zeros(8, int), drv, dvn,
+                                                               8).stretches()] == [(0.05, 0.06)]
+    # the corner run: sample 4 alone reaches half-way to 3 and 5: 0.5 deg, from 2 deg
+    assert law.corner_run_max() == (pytest.approx(0.5), pytest.approx(2.0))
+    # runs at both ends: half-way only inwards
+    k2 = np.array([1, 1, 0, 0, 0, 3, 3, 3])
+    law2 = ContactLaw(REVERSE, phi, theta, te, k2, drv, dvn, 8)
+    assert law2.corner_run_max() == (pytest.approx(1.25), pytest.approx(2.5))
+    k3 = np.array([1, 1, 1, 0, 0, 0, 3, 3])
+    assert ContactLaw(REVERSE, phi, theta, te, k3, drv, dvn, 8).corner_run_max() == (pytest.approx(1.25),
+                                                                                       pytest.approx(0.0))
+    # a corner sample without contact does not count
+    te4 = te.copy()
+    te4[4] = math.nan
+    best, at = ContactLaw(REVERSE, phi, theta, te4, kind, drv, dvn, 8).corner_run_max()
+    assert best == 0.0 and math.isnan(at)
+    # unnamed kinds (-1: no contact) are left out of a stretch's kinds
+    k5 = np.array([0, 0, 0, 0, -1, 0, 0, 0])
+    s5 = ContactLaw(REVERSE, phi, theta, te, k5, drv, dvn, 8).stretches()
+    assert all(x.kinds == ("flank",) for x in s5)
+
+
+def test_runs_of_true():
+    assert runs([True, True, False, True, False, False, True]) == [(0, 1), (3, 3), (6, 6)]
+    assert runs([False, False]) == [] and runs([]) == [] and runs([1]) == [(0, 0)]
+    assert runs(np.array([0, 1, 1, 1])) == [(1, 3)]
