@@ -661,3 +661,143 @@ def test_runs_of_true():
     assert runs([True, True, False, True, False, False, True]) == [(0, 1), (3, 3), (6, 6)]
     assert runs([False, False]) == [] and runs([]) == [] and runs([1]) == [(0, 0)]
     assert runs(np.array([0, 1, 1, 1])) == [(1, 3)]
+
+
+# an L-shaped driver (a concave corner at (2, 2)) and a driven square with a straight-through vertex on its lower edge
+L_SHAPE = np.array([[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [2.0, 2.0], [2.0, 4.0], [0.0, 4.0]])
+SQUARE_MID = np.array([[-1.0, -1.0], [0.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]])
+
+
+def _po(driver=L_SHAPE, driven=SQUARE_MID, L=20.0, **kw):
+    return PairOutlines(Outline([driver], 100.0), Outline([driven], 100.0), L, [0.0, math.pi], [0.0], **kw)
+
+
+def test_turning_angles_and_corners():
+    po = _po()
+    assert ce._turning(po.drv) == pytest.approx([math.pi / 2] * 3 + [-math.pi / 2] + [math.pi / 2] * 2, abs=1e-15)
+    assert ce._turning(po.dvn) == pytest.approx([math.pi / 2, 0.0, math.pi / 2, math.pi / 2, math.pi / 2], abs=1e-15)
+    assert po.corner_drv.tolist() == [True] * 6 and po.corner_dvn.tolist() == [True, False, True, True, True]
+    # a CW loop (a hole) turns the other way
+    hole = Outline([_square(0.0, 0.0), _square(0.0, 0.0, 0.5)], 100.0)
+    assert ce._turning(hole)[4:] == pytest.approx([-math.pi / 2] * 4, abs=1e-15)
+    # the corner limit: 20 deg by default, both sides of it; and as given
+    bend = lambda deg: np.array([[0.0, 0.0], [5.0, 0.0], [5.0 + 5.0 * math.cos(math.radians(deg)),  # noqa: E731
+                                                          5.0 * math.sin(math.radians(deg))], [0.0, 8.0]])
+    assert _po(driven=bend(19.0)).corner_dvn[1] == False  # noqa: E712
+    assert _po(driven=bend(21.0)).corner_dvn[1] == True  # noqa: E712
+    assert _po(driven=bend(21.0), corner_deg=22.0).corner_dvn[1] == False  # noqa: E712
+    assert _po(driver=bend(21.0), corner_deg=20.5).corner_drv[1] == True  # noqa: E712
+
+
+def test_contact_kind_of_a_vertex_on_an_edge():
+    po = _po()
+    near = policy.CONTACT_CORNER_NEAR_MM
+    assert near == 2e-3
+    # side 1: a driven vertex on a driver edge; the driven vertex's own corner first (convex: driven tip corner)
+    assert KINDS[po._kind(1, 0, 1, 0.5)] == "driven tip corner"
+    # a straight-through driven vertex: the driver's corners at the edge's ends within 2e-3 mm
+    # (edge 1 runs (4, 0) -> (4, 2), 2 mm long: t = 9.9e-4 is 1.98e-3 mm from its start)
+    assert po._kind(1, 1, 1, 0.5) == 0
+    assert KINDS[po._kind(1, 1, 1, 0.99e-3)] == "driver tip corner"
+    assert po._kind(1, 1, 1, 1.01e-3) == 0
+    # edge 2 runs (4, 2) -> (2, 2): its end is the concave corner
+    assert KINDS[po._kind(1, 1, 2, 1.0 - 0.99e-3)] == "driver root corner"
+    assert po._kind(1, 1, 2, 1.0 - 1.01e-3) == 0
+    # side 2: a driver vertex on a driven edge
+    assert KINDS[po._kind(2, 0, 0, 0.5)] == "driver tip corner"
+    assert KINDS[po._kind(2, 3, 0, 0.5)] == "driver root corner"
+    # a driven square whose lower-left corner is concave: its own root corner
+    notch = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [2.0, 1.0], [2.0, 2.0], [0.0, 2.0]])
+    po2 = _po(driver=SQUARE_MID, driven=notch)
+    assert KINDS[po2._kind(1, 2, 0, 0.5)] == "driven root corner"
+    assert KINDS[po2._kind(1, 3, 0, 0.5)] == "driven tip corner"
+    # side 2 with a straight-through driver vertex (1 of SQUARE_MID): the driven's corners at the edge's ends
+    # (driven edge 1 runs (1, 0) -> (1, 1), 1 mm, from a convex corner to the concave one)
+    assert po2._kind(2, 1, 1, 0.5) == 0
+    assert KINDS[po2._kind(2, 1, 1, 1.98e-3)] == "driven tip corner"
+    assert po2._kind(2, 1, 1, 2.02e-3) == 0
+    assert KINDS[po2._kind(2, 1, 1, 1.0 - 1.98e-3)] == "driven root corner"
+    assert po2._kind(2, 1, 1, 1.0 - 2.02e-3) == 0
+
+
+def test_pair_outlines_keeps_the_vertices_within_reach_sorted_by_angle():
+    # a driver of radius R1 = 5 at L = 12: driven vertices farther than L - R1 - 1 = 6 from the driven axis
+    drv = np.array([[5.0, 0.0], [0.0, 5.0], [-5.0, 0.0], [0.0, -5.0]])
+    dvn = np.array([[7.0, 0.0], [0.0, 6.5], [-5.0, 0.0], [0.0, -8.0], [4.0, -6.0]])  # radii 7, 6.5, 5, 8, 7.21
+    po = PairOutlines(Outline([drv], 100.0), Outline([dvn], 100.0), 12.0, [0.0], [0.0])
+    assert (po.R1, po.R2, po.L) == (5.0, 8.0, 12.0)
+    assert po.o1.tolist() == [3, 4, 0, 1]  # by polar angle: -pi/2, -0.98, 0, pi/2; the radius-5 vertex left out
+    assert po.a1 == pytest.approx([-math.pi / 2, math.atan2(-6.0, 4.0), 0.0, math.pi / 2], abs=1e-15)
+    # driver vertices farther than L - R2 - 1 = 3: all four, from -pi/2 up (atan2 of (-5, 0) is pi)
+    assert po.o2.tolist() == [3, 0, 1, 2]
+    # the half widths: the largest angle from the line of centres of a point at a radius between the body's least
+    # and greatest within R_mate + 1 of the mate's axis, + 0.02 (by brute force over radii and angles)
+    def widest(r_lo, r_hi, r_mate):
+        best = 0.0
+        for r in np.linspace(r_lo, r_hi, 64):
+            a = np.linspace(0.0, math.pi, 200001)
+            ok = np.hypot(12.0 - r * np.cos(a), r * np.sin(a)) <= r_mate + 1.0
+            if ok.any():
+                best = max(best, a[ok].max())
+        return best + 0.02
+    assert po.hw_dvn == pytest.approx(widest(5.0, 8.0, 5.0), abs=2e-5)
+    assert po.hw_drv == pytest.approx(widest(5.0, 5.0, 8.0), abs=2e-5)
+    # the search's windows of polar angle: vertices within centre +- hw, wrapped
+    order, angs = po.o1, po.a1
+    assert sorted(ce._window(order, angs, 0.0, 0.1).tolist()) == [0]
+    assert sorted(ce._window(order, angs, math.pi / 2 + 2 * math.pi, 0.1).tolist()) == [1]
+    assert sorted(ce._window(order, angs, math.pi, math.pi / 2 + 0.01).tolist()) == [1, 3]
+    assert sorted(ce._window(order, angs, math.pi, math.pi / 2 - 0.01).tolist()) == []
+    assert ce._window(order, angs, 1.0, math.pi).tolist() == order.tolist()
+    assert sorted(ce._window(order, angs, -1.2, 0.4).tolist()) == [3, 4]
+
+
+def test_nearest_tooth_wraps_and_takes_the_first_on_a_tie():
+    c = np.array([0.0, 2.0, 4.0])
+    assert ce._nearest_tooth(c, 0.9) == 0 and ce._nearest_tooth(c, 1.1) == 1
+    assert ce._nearest_tooth(c, 1.0) == 0  # a tie: the first
+    assert ce._nearest_tooth(c, 2 * math.pi - 0.1) == 0 and ce._nearest_tooth(c, -2.0) == 2
+    assert ce._nearest_tooth(c, 5.5) == 0  # 5.5 - 2 pi = -0.78: nearer 0 than 4 (1.5 away)
+
+
+def test_chunks_are_the_bounding_circles_of_runs():
+    pts = np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [10.0, 10.0], [13.0, 14.0]])
+    cc, cr = ce._chunks(pts, np.array([0, 1, 2, 3, 4]), 2)
+    assert cc.tolist() == [[1.0, 0.0], [6.0, 6.0], [13.0, 14.0]]
+    assert cr == pytest.approx([1.0 + 1e-9, math.hypot(4.0, 4.0) + 1e-9, 1e-9], abs=1e-15)
+    cc, cr = ce._chunks(pts, np.array([4, 3, 2]), 3)
+    assert cc.tolist() == [[7.5, 8.0]] and cr[0] == pytest.approx(math.hypot(5.5, 6.0) + 1e-9, abs=1e-15)
+    cc, cr = ce._chunks(pts, np.array([], int), 4)
+    assert cc.shape == (0, 2) and cr.shape == (0,)
+
+
+def test_distance_field_bounds_the_distance_to_the_boundary_from_below():
+    """The field's grid (two cells beyond the box each side, `cells` along the longer side) and its values: the
+    distance between the centres of the nearest cell holding a vertex (brute force over the cells), less a cell's
+    diagonal, half the longest edge and 1e-9, at least 0; every point of a cell at least that far from the outline."""
+    sq = Outline([np.array([[0.0, 0.0], [8.0, 0.0], [8.0, 4.0], [0.0, 4.0]])], 1.0)  # edges of 1 mm
+    x0, y0, h, nx, ny, vals = ce.distance_field(sq, 16)
+    assert h == 0.5 and (x0, y0) == (-1.0, -1.0) and (nx, ny) == (20, 12)
+    assert ce.distance_field(sq, 16) is ce.distance_field(sq, 3)  # cached on the outline
+    cells = np.array([(i, j) for i in range(nx) for j in range(ny)])
+    centres = np.column_stack([x0 + (cells[:, 0] + 0.5) * h, y0 + (cells[:, 1] + 0.5) * h])
+    ix = np.clip(np.floor((sq.points[:, 0] - x0) / h).astype(int), 0, nx - 1)
+    iy = np.clip(np.floor((sq.points[:, 1] - y0) / h).astype(int), 0, ny - 1)
+    held = centres[ix * ny + iy]
+    d = np.min(np.linalg.norm(centres[:, None, :] - held[None, :, :], axis=2), axis=1)
+    want = np.maximum(d - h * math.sqrt(2.0) - 0.5 - 1e-9, 0.0)
+    assert vals == pytest.approx(want, abs=1e-12)
+    assert vals.max() > 0.0
+    rng = np.random.default_rng(5)
+    p = np.column_stack([rng.uniform(x0, x0 + nx * h, 4000), rng.uniform(y0, y0 + ny * h, 4000)])
+    k = np.floor((p[:, 0] - x0) / h).astype(int) * ny + np.floor((p[:, 1] - y0) / h).astype(int)
+    true = np.minimum.reduce([np.abs(p[:, 0]), np.abs(p[:, 0] - 8.0), np.abs(p[:, 1]), np.abs(p[:, 1] - 4.0)])
+    inside = (p[:, 0] > 0) & (p[:, 0] < 8) & (p[:, 1] > 0) & (p[:, 1] < 4)
+    outside_d = np.hypot(np.maximum(np.maximum(-p[:, 0], p[:, 0] - 8.0), 0.0),
+                         np.maximum(np.maximum(-p[:, 1], p[:, 1] - 4.0), 0.0))
+    dist = np.where(inside, true, outside_d)
+    assert (vals[k] <= dist + 1e-12).all()
+    # a taller box: cells along the longer side (y)
+    tall = Outline([np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 10.0], [0.0, 10.0]])], 1.0)
+    x0, y0, h, nx, ny, vals = ce.distance_field(tall, 20)
+    assert h == 0.5 and (x0, y0) == (-1.0, -1.0) and (nx, ny) == (8, 24)
