@@ -167,7 +167,11 @@ def test_overlapping_bodies_report_the_common_area_and_no_free_turn():
     assert np.isnan(res.free_fwd[0]) and np.isnan(res.free_back[0])
     assert np.isnan(res.contact_point_drive[0]).all() and np.isnan(res.contact_point_coast[0]).all()
     assert res.pairs_drive[0] == 0 and res.pairs_coast[0] == 0
-    assert res.overlap_area[1] == 0.0 and math.isfinite(res.free_back[1])
+    # the next step is measured: the bar's lower edge, turned back from 0.8 rad, meets the corner (5, 2.2)
+    assert res.overlap_area[1] == 0.0 and res.free_fwd[1] == math.inf
+    q = (5.0, 2.2)
+    assert res.free_back[1] == pytest.approx(0.8 - math.atan2(q[1], q[0]) - math.asin(0.5 / math.hypot(*q)), abs=1e-12)
+    assert res.pairs_drive.tolist() == [0, 1]
     chk = {c.name: c for c in res.checks()}
     assert not chk["mesh.overlap_area"].passed
     assert chk["mesh.overlap_area"].value == pytest.approx(0.6, abs=1e-7)
@@ -363,7 +367,7 @@ def test_checks_report_interference_contact_loss_and_the_least_pairs_in_full():
     assert (cc.passed, cc.value, cc.limit, cc.unit) == (False, 0.0, 1.0, "pairs")
     assert cc.message == "least tooth pairs in contact 0; mean on drive flank 0.7500"
     # drive-flank te = -free_back where finite: -0.008, -0.002: 0.006 peak to peak, at its limit
-    assert (te.passed, te.unit) == (True, "rad") and te.value == pytest.approx(0.006, abs=1e-15)
+    assert (te.passed, te.limit, te.unit) == (True, 0.006, "rad") and te.value == pytest.approx(0.006, abs=1e-15)
     assert te.message == "drive-flank transmission error peak-to-peak 6.000e-03 rad"
     assert not res.checks(te_limit_rad=0.006 - 1e-12)[3].passed
     assert len(res.checks()) == 3
@@ -402,6 +406,7 @@ def test_backlash_limits_are_strict_below_and_inclusive_above():
     # the overlap check passes at its tolerance, and names the step of the largest overlap
     r = _result([0.01] * 3, [0.01] * 3, [10.0] * 3, overlap=[0.0, 1e-6, 0.5e-6])
     assert r.checks()[0].passed and r.checks()[0].message == "max overlap 1e-06 mm^2 at phi = 0.100000 rad (step 1)"
+    assert "; 0 steps interfere, 0 steps without" in r.checks()[1].message  # at the tolerance: not interfering
 
 
 def test_fraction_pairs_of_either_flank():
@@ -801,3 +806,74 @@ def test_distance_field_bounds_the_distance_to_the_boundary_from_below():
     tall = Outline([np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 10.0], [0.0, 10.0]])], 1.0)
     x0, y0, h, nx, ny, vals = ce.distance_field(tall, 20)
     assert h == 0.5 and (x0, y0) == (-1.0, -1.0) and (nx, ny) == (8, 24)
+
+
+
+def test_a_flat_contact_is_one_pair_where_the_vertices_lie_closer_than_contact_merge():
+    """A block turned 0.15 rad about the driven axis, its lower edge on the line the bar's upper edge reaches at
+    0.15 rad: the whole 2 mm edge touches at once.  Cut into 0.1 mm pieces (max_segment, the default) the touching
+    vertices lie 0.1 mm apart: one pair; uncut, only the block's two corners touch, 2 mm apart: two pairs (one with a
+    contact_merge of 3 mm)."""
+    beta = 0.15
+    c, s = math.cos(beta), math.sin(beta)
+    R = np.array([[c, -s], [s, c]])
+    centre = C2 + R @ (6.0, 1.5)
+    block = [_square(0.0, 0.0) @ R.T]  # in the driver's frame: turned with it
+    def sweep(**kw):
+        return transmission_sweep(block, centre, [BAR], C2, lambda p: 0.0, [0.0], senses=(1, 1), max_angle=0.5, **kw)
+    res = sweep()
+    assert res.free_fwd[0] == pytest.approx(beta, abs=1e-12) and res.pairs_coast[0] == 1
+    assert sweep(max_segment=10.0).pairs_coast[0] == 2
+    assert sweep(max_segment=10.0, contact_merge=3.0).pairs_coast[0] == 1
+
+
+def test_a_contact_at_the_driven_outlines_first_vertex():
+    """The bar's tip corner (10, 0.5), its outline's first vertex, meets a block's lower edge y = 3 (a driven vertex on
+    a driver edge)."""
+    bar = np.roll(BAR, -2, axis=0)
+    assert bar[0].tolist() == [10.0, 0.5]
+    res = transmission_sweep([_square(0.0, 0.0)], C2 + (10.0, 4.0), [bar], C2, lambda p: 0.0, [0.0], senses=(1, 1),
+                             max_angle=0.5)
+    assert res.free_fwd[0] == pytest.approx(math.atan2(3, math.sqrt(100.25 - 9)) - math.atan2(0.5, 10), abs=1e-12)
+    assert res.contact_point_coast[0] == pytest.approx(C2 + (math.sqrt(100.25 - 9), 3.0), abs=1e-9)
+
+
+def test_inputs_of_other_types_and_shapes_give_float_results():
+    import warnings
+
+    # centres as (1, 2) arrays, integer phis and r_ref: the same free turns, float arrays; pairs counted in integers
+    res = transmission_sweep(BLOCKS, np.array([[11, 0]]), [BAR], np.array([[5, -3]]), lambda p: 0.0, [0, 1],
+                             senses=(1, 1), max_angle=0.5, r_ref=12)
+    assert res.free_fwd[0] == pytest.approx(E_CCW, abs=1e-12)
+    assert res.phi.dtype == np.float64 and res.r_ref.dtype == np.float64 and res.r_ref.tolist() == [12.0, 12.0]
+    assert res.pairs_drive.dtype.kind == "i" and res.pairs_coast.dtype.kind == "i"
+    with pytest.raises(InputError) as e:
+        transmission_sweep(BLOCKS, (11, 0), [BAR], (11, 0), lambda p: 0.0, [0.0])
+    assert str(e.value) == "driven_center = (np.float64(11.0), np.float64(0.0)): must differ from driver_center"
+    # no contact anywhere: r_ref nan, silently (no mean of an empty set)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        res = _sweep([0.0], max_angle=0.1)
+    assert math.isnan(res.r_ref[0])
+
+
+def test_a_contact_in_the_middle_of_a_long_edge_is_found():
+    """Bug found by the mutation runs: the annulus bounding an outline's boundary (Outline.r_min .. radius) was taken
+    from its vertices alone, but an edge comes nearer its centre between its ends; the free-rotation search used it
+    as a lower bound of a point's distance from the boundary and left out the points it put out of reach.  A bar cut
+    into 10 mm edges (max_segment = 10): its centre (5, 0) is 5.02 mm from every vertex, 0.5 mm from its long edges;
+    a block's corner 1 mm above the middle of its upper edge was never met (free turn inf instead of 0.1955 rad)."""
+    o = Outline([BAR], 10.0)
+    assert len(o) == 4 and o.center.tolist() == [5.0, 0.0]
+    assert o.r_min == pytest.approx(0.5, abs=1e-15) and o.radius == pytest.approx(math.hypot(5.0, 0.5), abs=1e-15)
+    rng = np.random.default_rng(2)
+    p = np.column_stack([rng.uniform(-2, 12, 2000), rng.uniform(-3, 3, 2000)])
+    d_edges = np.minimum.reduce([np.hypot(np.clip(p[:, 0], 0, 10) - p[:, 0], y - p[:, 1]) for y in (-0.5, 0.5)]
+                                + [np.hypot(x - p[:, 0], np.clip(p[:, 1], -0.5, 0.5) - p[:, 1]) for x in (0.0, 10.0)])
+    assert (o.boundary_lower_bound(p) <= d_edges + 1e-12).all()
+    q = np.array([5.0, 1.5])  # the block's lower-right corner from the driven axis
+    for ms in (0.1, 10.0):
+        block = _square(q[0] - 0.3, q[1] + 0.3, 0.3) - (C1 - C2)  # in the driver's frame
+        res = transmission_sweep([block], C1, [BAR], C2, lambda p: 0.0, [0.0], senses=(1, 1), max_angle=0.5,
+                                 max_segment=ms)
+        assert res.free_fwd[0] == pytest.approx(_edge_meets_corner(q), abs=1e-12)
