@@ -877,3 +877,40 @@ def test_a_contact_in_the_middle_of_a_long_edge_is_found():
         res = transmission_sweep([block], C1, [BAR], C2, lambda p: 0.0, [0.0], senses=(1, 1), max_angle=0.5,
                                  max_segment=ms)
         assert res.free_fwd[0] == pytest.approx(_edge_meets_corner(q), abs=1e-12)
+
+
+def test_every_hit_of_a_window_puts_a_vertex_on_an_edge():
+    """PairOutlines._all_hits (the per-tooth load's search): each finite hit, the driven wheel turned from its actual
+    angle phi_a back (sign +1) or on (-1) by the hit's delta, puts the vertex on the other outline's edge at the
+    hit's parameter (world frame: driven at the origin turned by -phi_a + sign delta, driver at (L, 0) turned by
+    theta); the least of them is the first hit of _hits."""
+    po, _ = _gear_pair()
+    L = MOD * Z
+
+    def rot(a):
+        return np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]])
+
+    for sign in (1.0, -1.0):
+        phi_a, theta, w = 0.01, 0.01, 0.01
+        (i1, d1, e1, t1), (i2, d2, e2, t2) = po._all_hits(phi_a, theta, sign, w)
+        assert np.isfinite(d1).any() and np.isfinite(d2).any()
+        assert (d1[np.isfinite(d1)] <= w).all() and (d1[np.isfinite(d1)] >= 0).all()
+        Rt = rot(theta)
+        for k in np.nonzero(np.isfinite(d1))[0]:
+            v = rot(-phi_a + sign * d1[k]) @ po.dvn.points[i1[k]]
+            a, b = po.drv.seg_a[e1[k]], po.drv.seg_b[e1[k]]
+            assert np.linalg.norm(v - ((L, 0.0) + Rt @ (a + t1[k] * (b - a)))) < 1e-9
+        for k in np.nonzero(np.isfinite(d2))[0]:
+            v = (L, 0.0) + Rt @ po.drv.points[i2[k]]
+            a, b = po.dvn.seg_a[e2[k]], po.dvn.seg_b[e2[k]]
+            assert np.linalg.norm(v - rot(-phi_a + sign * d2[k]) @ (a + t2[k] * (b - a))) < 1e-9
+        first = po._hits(phi_a, theta, sign, w)
+        assert first[0] == min(d1.min(), d2.min())
+        side = 1 if d1.min() <= d2.min() else 2
+        assert first[1] == side
+        if side == 1:
+            k = int(np.argmin(d1))
+            assert first[2:] == (i1[k], e1[k], t1[k])
+        else:
+            k = int(np.argmin(d2))
+            assert first[2:] == (i2[k], e2[k], t2[k])
