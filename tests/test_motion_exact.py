@@ -999,3 +999,57 @@ def test_resolve_contact_progress_totals():
     est = n + changes * rounds
     assert ticks[n:-1] == [(e, max(est, e + 1)) for e in range(n + 1, c.evaluations + 1)]
     assert ticks[-1] == (c.evaluations, c.evaluations)
+
+
+def test_window_wraps_across_plus_and_minus_pi():
+    order, angs = np.arange(5), np.array([-3.12, -1.0, 0.0, 1.0, 3.1])
+    assert sorted(ce._window(order, angs, 3.1, 0.1).tolist()) == [0, 4]     # -3.12 is 3.163 - 2 pi
+    assert sorted(ce._window(order, angs, -3.1, 0.1).tolist()) == [0, 4]    # 3.1 is -3.183 + 2 pi
+    assert sorted(ce._window(order, angs, 3.1 + 2 * math.pi, 0.1).tolist()) == [0, 4]
+    assert sorted(ce._window(order, angs, 0.5, 0.6).tolist()) == [2, 3]
+
+
+def test_runs_take_any_true_value_and_events_skip_a_change_without_a_speed():
+    assert runs(np.array([0, 2, 3, 0, -1])) == [(1, 2), (4, 4)]
+    # a change whose one side is a single sample is skipped, and the next change is still found
+    phi = np.arange(9) * 1e-5
+    te = np.array([0.0, 0.0, 1e-7, 2e-7, 3e-7, 3e-7, 3e-7, 3e-7, 3e-7])
+    drv = np.array([9, 1, 1, 1, 1, 2, 2, 2, 2])
+    z = np.zeros(9, int)
+    (ev,) = ContactLaw(DRIVE, phi, phi, te, z, drv, z, 9, step_window=2.5e-5).events()
+    assert ev[3:] == ((0, 1, 0), (0, 2, 0)) and ev[0] == pytest.approx(4.5e-5, abs=1e-18)
+
+
+def test_step_at_is_the_largest_change_of_speed_and_corner_runs_at_the_ends():
+    # two changes: speeds 1.0 -> 1.05 (a step of 0.05, sum 2.05) then 1.05 -> 0.95 (0.1)
+    phi = np.arange(9) * 0.25
+    slope = np.array([0.0, 0.0, 0.0, 0.05, 0.05, 0.05, -0.05, -0.05])
+    te = np.concatenate([[0.0], np.cumsum(slope * 0.25)])
+    drv = np.array([1, 1, 1, 2, 2, 2, 3, 3, 3])
+    z = np.zeros(9, int)
+    law = ContactLaw(DRIVE, phi, 2 * phi, te, z, drv, z, 9, step_window=0.4)
+    ev = law.events()
+    assert [(round(a, 12), round(b, 12)) for _, a, b, _, _ in ev] == [(1.0, 1.05), (1.05, 0.95)]
+    assert law.step_at() == (pytest.approx(1.375), pytest.approx(2.75)) and law.step_max == pytest.approx(0.1)
+    # corner runs starting at sample 1 and ending at the last but one: both reach half-way to their neighbours;
+    # of two equal runs, the first
+    k = np.array([0, 1, 1, 0, 0, 0, 0, 2, 0])
+    theta = np.radians(np.arange(9) * 1.0)
+    law = ContactLaw(DRIVE, phi, theta, te, k, drv, z, 9)
+    assert law.corner_run_max() == (pytest.approx(2.0), pytest.approx(1.0))
+    k = np.array([0, 0, 0, 0, 0, 0, 0, 1, 1])
+    assert ContactLaw(DRIVE, phi, theta, te, k, drv, z, 9).corner_run_max() == (pytest.approx(1.5), pytest.approx(7.0))
+    k = np.array([0, 1, 0, 0, 0, 0, 2, 0, 0])  # driver angles in quarter radians: the two runs are equal exactly
+    best, at = ContactLaw(DRIVE, phi, phi, te, k, drv, z, 9).corner_run_max()
+    assert (best, at) == (math.degrees(0.25), math.degrees(0.25))
+
+
+def test_stretch_speed_limit_is_strict_and_each_stretch_reads_its_own_samples():
+    phi = np.arange(6) * 0.25
+    te = np.array([0.0, 0.0, 0.0625, 0.0625, 0.0625, 0.0625])  # speeds 1, 1.25, 1, 1, 1
+    z = np.zeros(6, int)
+    law = ContactLaw(DRIVE, phi, phi, te, z, np.array([1, 1, 2, 3, 4, 5]), np.array([7, 7, 8, 9, 9, 9]), 6)
+    assert law.stretches(0.25) == []
+    (s,) = law.stretches(0.2)
+    assert (s.phi_from_rad, s.phi_to_rad, s.driver_teeth, s.driven_teeth) == (0.25, 0.5, (1, 2), (7, 8))
+    assert (s.speed_min, s.speed_max) == (1.25, 1.25)
