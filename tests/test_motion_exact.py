@@ -1053,3 +1053,98 @@ def test_stretch_speed_limit_is_strict_and_each_stretch_reads_its_own_samples():
     (s,) = law.stretches(0.2)
     assert (s.phi_from_rad, s.phi_to_rad, s.driver_teeth, s.driven_teeth) == (0.25, 0.5, (1, 2), (7, 8))
     assert (s.speed_min, s.speed_max) == (1.25, 1.25)
+
+
+def test_a_contact_is_tracked_from_its_neighbour_in_one_small_window():
+    """The module's promise (one measurement under a millisecond): from a neighbouring sample's contact the driven
+    wheel is placed a margin m = 3e-4 + |dphi| / 4 rad (at most 1e-3) on the free side of it and turned through 2 m:
+    one search; a contact found within m / 5 of that start, or none, is searched again from the law's position with
+    windows growing x4 from 3e-3 rad.  The hits searched are recorded around the real search."""
+    po, _ = _gear_pair()
+    calls = []
+    real = po._hits
+
+    def recorded(phi_a, theta, sign, w):
+        calls.append((phi_a, sign, w))
+        return real(phi_a, theta, sign, w)
+
+    po._hits = recorded
+    assert (policy.CONTACT_TRACK_MARGIN_RAD, policy.CONTACT_TRACK_MARGIN_MAX_RAD, policy.CONTACT_SEARCH_START_RAD) == (
+        3e-4, 1e-3, 3e-3)
+    for d in (DRIVE, REVERSE):
+        sign = 1.0 if d == DRIVE else -1.0
+        calls.clear()
+        te0 = po.contact(0.01, 0.01, d)[0]
+        # the full search: nothing within 3e-3 rad (te 3.3e-3 rad), found within 1.2e-2
+        assert calls == [(0.01, sign, 3e-3), (0.01, sign, pytest.approx(1.2e-2))]
+        for dphi, m in ((1e-4, 3e-4 + 0.25e-4), (-2e-3, 3e-4 + 5e-4), (1e-2, 1e-3)):
+            calls.clear()
+            te = po.contact(0.01 + dphi, 0.01 + dphi, d, te0, dphi)[0]
+            assert calls == [(pytest.approx(0.01 + dphi + te0 + sign * m, abs=1e-15), sign, pytest.approx(2 * m))]
+            assert te == pytest.approx(te0, abs=1e-6)
+        # the neighbour's contact 0.9 m on the loaded side: found 0.1 m from the start, searched again
+        m = 3e-4
+        calls.clear()
+        te = po.contact(0.01, 0.01, d, te0 - sign * 0.9 * m, 0.0)[0]
+        assert len(calls) == 3 and calls[1] == (0.01, sign, 3e-3) and te == te0
+        # 0.7 m: found 0.3 m from the start: kept
+        calls.clear()
+        te = po.contact(0.01, 0.01, d, te0 - sign * 0.7 * m, 0.0)[0]
+        assert len(calls) == 1 and te == pytest.approx(te0, abs=1e-15)
+    # a full search that widens its window: the pair set 0.5 mm apart (te 0.015 rad): 3e-3, then 1.2e-2, then 4.8e-2
+    far = PairOutlines(po.drv, po.dvn, MOD * Z + 0.5, po.driver_teeth, po.driven_teeth)
+    real_far = far._hits
+    calls.clear()
+    far._hits = lambda phi_a, theta, sign, w: (calls.append(w), real_far(phi_a, theta, sign, w))[1]
+    assert -4.8e-2 < far.contact(0.0, 0.0, DRIVE)[0] < -1.2e-2
+    assert calls == [3e-3, pytest.approx(1.2e-2), pytest.approx(4.8e-2)]
+
+
+def test_resolve_contact_seeds_each_measurement_with_its_neighbour():
+    """Each sample of the grid is measured from the previous sample's contact (dphi: their distance), each bisection
+    from the contact at the interval's left end."""
+    po, _ = _gear_pair()
+    seen = []
+    real = po.contact
+
+    def recorded(phi, theta, direction, prev_te=None, dphi=0.0):
+        r = real(phi, theta, direction, prev_te, dphi)
+        seen.append((phi, prev_te, dphi, r[0]))
+        return r
+
+    po.contact = recorded
+    span = 2 * math.pi / Z
+    c = resolve_contact(po, _one_to_one, 0.0, span, DRIVE, step_driver_rad=math.radians(1.0))
+    n = 24
+    assert seen[0][1:3] == (None, 0.0)
+    for k in range(1, n):
+        assert seen[k][1] == seen[k - 1][3] and seen[k][2] == pytest.approx(seen[k][0] - seen[k - 1][0], abs=1e-15)
+    te_at = dict(zip(c.phi.tolist(), c.te.tolist()))
+    xs = sorted(te_at)
+    for phi, prev_te, dphi, te in seen[n:]:
+        a = max(x for x in xs if x < phi and x in {s[0] for s in seen[:seen.index((phi, prev_te, dphi, te))]})
+        assert prev_te == te_at[a] and dphi == pytest.approx(phi - a, abs=1e-15)
+
+
+def test_contact_of_a_bar_and_a_block_off_the_line_of_centres():
+    """PairOutlines on bodies that are not round (grids whose origins differ in x and y): the driven bar along +x
+    from the assembly origin, the driver's block (its axis 8 mm away) with its lower-right corner at (7, 1.8): turned
+    back (drive: the driven turns CCW) the bar's upper edge meets the corner at atan2(1.8, 7) - asin(0.5 / |q|); a
+    driver tip corner on the driven flank, at that corner turned into the driven's frame."""
+    q = np.array([7.0, 1.8])
+    block = _square(q[0] - 1.0 - 8.0, q[1] + 1.0)  # in the driver's frame (axis at (8, 0))
+    po = PairOutlines(Outline([block], 100.0), Outline([BAR], 100.0), 8.0, [0.0, 1.0], [0.0, 2.0])
+    e = _edge_meets_corner(q)
+    assert 0.15 < e < policy.MOTION_MAX_FREE_ANGLE_RAD
+    te, kind, t1, t2, p = po.contact(0.0, 0.0, DRIVE)
+    assert te == pytest.approx(-e, abs=1e-12)
+    assert KINDS[kind] == "driver tip corner" and (t1, t2) == (1, 0)
+    c, s = math.cos(-e), math.sin(-e)
+    assert p == pytest.approx((c * q[0] - s * q[1], s * q[0] + c * q[1]), abs=1e-9)
+    # turned on (reverse: CW) nothing is met within the largest free rotation
+    assert math.isnan(po.contact(0.0, 0.0, REVERSE)[0])
+    # the driver turned by theta about its axis: the corner moves on a circle about (8, 0)
+    th = 0.05
+    qw = np.array([8.0, 0.0]) + np.array([[math.cos(th), -math.sin(th)], [math.sin(th), math.cos(th)]]) @ (q - (8.0, 0.0))
+    assert po.contact(0.0, th, DRIVE)[0] == pytest.approx(-_edge_meets_corner(qw), abs=1e-12)
+    assert po.contact(0.02, th, DRIVE)[0] == pytest.approx(-_edge_meets_corner(qw) - 0.02, abs=1e-12)
