@@ -802,6 +802,11 @@ def test_distance_field_bounds_the_distance_to_the_boundary_from_below():
                          np.maximum(np.maximum(-p[:, 1], p[:, 1] - 4.0), 0.0))
     dist = np.where(inside, true, outside_d)
     assert (vals[k] <= dist + 1e-12).all()
+    # a box away from the origin: the grid starts two cells below and left of it
+    off = Outline([np.array([[3.0, 1.0], [11.0, 1.0], [11.0, 5.0], [3.0, 5.0]])], 1.0)
+    x0, y0, h, nx, ny, vals2 = ce.distance_field(off, 16)
+    assert (x0, y0, h, nx, ny) == (2.0, 0.0, 0.5, 20, 12)
+    assert vals2 == pytest.approx(want, abs=1e-12)  # the same shape: the same values cell by cell
     # a taller box: cells along the longer side (y)
     tall = Outline([np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 10.0], [0.0, 10.0]])], 1.0)
     x0, y0, h, nx, ny, vals = ce.distance_field(tall, 20)
@@ -1133,12 +1138,14 @@ def test_contact_of_a_bar_and_a_block_off_the_line_of_centres():
     driver tip corner on the driven flank, at that corner turned into the driven's frame."""
     q = np.array([7.0, 1.8])
     block = _square(q[0] - 1.0 - 8.0, q[1] + 1.0)  # in the driver's frame (axis at (8, 0))
-    po = PairOutlines(Outline([block], 100.0), Outline([BAR], 100.0), 8.0, [0.0, 1.0], [0.0, 2.0])
+    # teeth named by the nearest centre's polar angle: the corner lies at 2.078 rad in the driver's frame (tooth 0 at
+    # 2.0, not 1 at 2.2), at 0.069 rad in the driven's when touching (tooth 0 at 0.05, not 1 at 0.2)
+    po = PairOutlines(Outline([block], 100.0), Outline([BAR], 100.0), 8.0, [2.0, 2.2], [0.05, 0.2])
     e = _edge_meets_corner(q)
     assert 0.15 < e < policy.MOTION_MAX_FREE_ANGLE_RAD
     te, kind, t1, t2, p = po.contact(0.0, 0.0, DRIVE)
     assert te == pytest.approx(-e, abs=1e-12)
-    assert KINDS[kind] == "driver tip corner" and (t1, t2) == (1, 0)
+    assert KINDS[kind] == "driver tip corner" and (t1, t2) == (0, 0)
     c, s = math.cos(-e), math.sin(-e)
     assert p == pytest.approx((c * q[0] - s * q[1], s * q[0] + c * q[1]), abs=1e-9)
     # turned on (reverse: CW) nothing is met within the largest free rotation
