@@ -449,7 +449,7 @@ def test_identical_gears_contact_law_is_the_law_less_half_the_backlash_on_the_pa
     po, info = _gear_pair()
     free = J_N / 2 / info["r_b"]
     span = 2 * math.pi / Z
-    h = 2e-5
+    h = 1.2e-5  # the intervals halve from 0.0171: 3.33e-5 is above 2 h: halved once more, to 1.67e-5
     law = {}
     for d in (DRIVE, REVERSE):
         c = resolve_contact(po, _one_to_one, 0.0, span, d, step_driver_rad=math.radians(1.0), h_min=h)
@@ -508,6 +508,8 @@ def test_resolve_contact_stops_at_max_evals_and_reports_progress():
     assert all(total >= done for done, total in ticks)
     c = resolve_contact(po, _one_to_one, 0.0, span, DRIVE, step_driver_rad=math.radians(1.0), max_evals=24)
     assert c.evaluations == 24
+    c = resolve_contact(po, _one_to_one, 0.0, span, DRIVE, step_driver_rad=math.radians(1.0), max_evals=29)
+    assert c.evaluations == 29  # a round of bisections cut short at the budget
     # h_min wider than half the sampling step: nothing to bisect
     c = resolve_contact(po, _one_to_one, 0.0, span, DRIVE, step_driver_rad=math.radians(1.0), h_min=0.01)
     assert c.evaluations == 24 and len(c.phi) == 24
@@ -520,7 +522,7 @@ def test_a_pair_apart_has_no_contact_and_a_contact_is_found_anew_after_one_witho
     po, info = _gear_pair()
     apart = PairOutlines(po.drv, po.dvn, MOD * Z + 5.0, po.driver_teeth, po.driven_teeth)
     r = apart.contact(0.0, 0.0, DRIVE)
-    assert math.isnan(r[0]) and r[1:4] == (-1, -1, -1) and np.isnan(r[4]).all()
+    assert math.isnan(r[0]) and r[1:4] == (-1, -1, -1) and np.isnan(r[4]).all() and r[4].shape == (2,)
     # tracking from a neighbour's contact gives the contact of a full search
     te, kind, t1, t2, p = po.contact(0.01, 0.01, DRIVE)
     tracked = po.contact(0.0101, 0.0101, DRIVE, te, 1e-4)
@@ -720,6 +722,7 @@ def test_contact_kind_of_a_vertex_on_an_edge():
     # (driven edge 1 runs (1, 0) -> (1, 1), 1 mm, from a convex corner to the concave one)
     assert po2._kind(2, 1, 1, 0.5) == 0
     assert KINDS[po2._kind(2, 1, 1, 1.98e-3)] == "driven tip corner"
+    assert KINDS[po2._kind(2, 1, 1, 2e-3)] == "driven tip corner"  # 2e-3 x 1 mm: at the limit exactly, within it
     assert po2._kind(2, 1, 1, 2.02e-3) == 0
     assert KINDS[po2._kind(2, 1, 1, 1.0 - 1.98e-3)] == "driven root corner"
     assert po2._kind(2, 1, 1, 1.0 - 2.02e-3) == 0
@@ -1044,6 +1047,8 @@ def test_step_at_is_the_largest_change_of_speed_and_corner_runs_at_the_ends():
     assert law.corner_run_max() == (pytest.approx(2.0), pytest.approx(1.0))
     k = np.array([0, 0, 0, 0, 0, 0, 0, 1, 1])
     assert ContactLaw(DRIVE, phi, theta, te, k, drv, z, 9).corner_run_max() == (pytest.approx(1.5), pytest.approx(7.0))
+    k = np.array([0, 0, 0, 0, 0, 0, 0, 1, 0])  # ending at the last but one: half-way to the last
+    assert ContactLaw(DRIVE, phi, theta, te, k, drv, z, 9).corner_run_max() == (pytest.approx(1.0), pytest.approx(7.0))
     k = np.array([0, 1, 0, 0, 0, 0, 2, 0, 0])  # driver angles in quarter radians: the two runs are equal exactly
     best, at = ContactLaw(DRIVE, phi, phi, te, k, drv, z, 9).corner_run_max()
     assert (best, at) == (math.degrees(0.25), math.degrees(0.25))
@@ -1155,3 +1160,28 @@ def test_contact_of_a_bar_and_a_block_off_the_line_of_centres():
     qw = np.array([8.0, 0.0]) + np.array([[math.cos(th), -math.sin(th)], [math.sin(th), math.cos(th)]]) @ (q - (8.0, 0.0))
     assert po.contact(0.0, th, DRIVE)[0] == pytest.approx(-_edge_meets_corner(qw), abs=1e-12)
     assert po.contact(0.02, th, DRIVE)[0] == pytest.approx(-_edge_meets_corner(qw) - 0.02, abs=1e-12)
+
+
+
+def test_a_driven_corner_on_a_driver_edge_names_the_teeth_from_the_contact_point():
+    """The bar's tip corner (10, 0.5), a driven vertex, meets the block's lower edge y = 2.2 (the driver's axis 14 mm
+    away): te = -(atan2(2.2, (100.25 - 2.2^2)^(1/2)) - atan2(0.5, 10)), a driven tip corner; the contact point is the
+    corner itself in the driven frame, at 2.662 rad in the driver's (tooth 0 at 2.6, not 1 at 3.3)."""
+    block = _square(10.0 - 14.0, 3.2)
+    po = PairOutlines(Outline([block], 100.0), Outline([BAR], 100.0), 14.0, [2.6, 3.3], [0.0, 0.3])
+    x = math.sqrt(100.25 - 2.2 ** 2)
+    e = math.atan2(2.2, x) - math.atan2(0.5, 10.0)
+    te, kind, t1, t2, p = po.contact(0.0, 0.0, DRIVE)
+    assert te == pytest.approx(-e, abs=1e-12)
+    assert KINDS[kind] == "driven tip corner" and (t1, t2) == (0, 0)
+    assert p.tolist() == [10.0, 0.5] and p.dtype == np.float64
+    assert math.atan2(2.2, x - 14.0) == pytest.approx(2.6622, abs=1e-4)
+
+
+def test_phi_of_theta_inverts_a_strongly_curved_law():
+    """theta = phi + 0.4 sin(phi) over 0 .. 6 rad (monotone, its slope 0.6 .. 1.4): the driven angles of 200 driver
+    angles found to 1e-12 rad of the law."""
+    law = lambda p: np.asarray(p, float) + 0.4 * np.sin(np.asarray(p, float))  # noqa: E731
+    th = np.linspace(law(0.0), law(6.0), 200)
+    phi = ce._phi_of_theta(law, 0.0, 6.0, th)
+    assert np.abs(law(phi) - th).max() < 1e-12
