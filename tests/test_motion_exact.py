@@ -1097,6 +1097,10 @@ def test_a_contact_is_tracked_from_its_neighbour_in_one_small_window():
         calls.clear()
         te = po.contact(0.01, 0.01, d, te0 - sign * 0.9 * m, 0.0)[0]
         assert len(calls) == 3 and calls[1] == (0.01, sign, 3e-3) and te == te0
+        # dphi not given: 0, the least margin
+        calls.clear()
+        po.contact(0.01, 0.01, d, te0)
+        assert calls == [(pytest.approx(0.01 + te0 + sign * m, abs=1e-15), sign, pytest.approx(2 * m))]
         # 0.7 m: found 0.3 m from the start: kept
         calls.clear()
         te = po.contact(0.01, 0.01, d, te0 - sign * 0.7 * m, 0.0)[0]
