@@ -1170,9 +1170,9 @@ def test_contact_of_a_bar_and_a_block_off_the_line_of_centres():
 def test_a_driven_corner_on_a_driver_edge_names_the_teeth_from_the_contact_point():
     """The bar's tip corner (10, 0.5), a driven vertex, meets the block's lower edge y = 2.2 (the driver's axis 14 mm
     away): te = -(atan2(2.2, (100.25 - 2.2^2)^(1/2)) - atan2(0.5, 10)), a driven tip corner; the contact point is the
-    corner itself in the driven frame, at 2.662 rad in the driver's (tooth 0 at 2.6, not 1 at 3.3)."""
+    corner itself in the driven frame, at 2.662 rad in the driver's (tooth 0 at 2.6, not 1 at 2.8)."""
     block = _square(10.0 - 14.0, 3.2)
-    po = PairOutlines(Outline([block], 100.0), Outline([BAR], 100.0), 14.0, [2.6, 3.3], [0.0, 0.3])
+    po = PairOutlines(Outline([block], 100.0), Outline([BAR], 100.0), 14.0, [2.6, 2.8], [0.0, 0.3])
     x = math.sqrt(100.25 - 2.2 ** 2)
     e = math.atan2(2.2, x) - math.atan2(0.5, 10.0)
     te, kind, t1, t2, p = po.contact(0.0, 0.0, DRIVE)
@@ -1189,3 +1189,23 @@ def test_phi_of_theta_inverts_a_strongly_curved_law():
     th = np.linspace(law(0.0), law(6.0), 200)
     phi = ce._phi_of_theta(law, 0.0, 6.0, th)
     assert np.abs(law(phi) - th).max() < 1e-12
+
+
+def test_a_driven_corner_on_a_turned_driver_edge():
+    """The same bar and block, the driver turned by 0.05 rad about its axis (14, 0): the tip's circle |x| =
+    (100.25)^(1/2) meets the turned lower edge at t = 0.458 of it; the contact point, taken back into the driver's
+    frame, lies at 2.6474 rad there (teeth at 2.6006 and 2.7006: the first is nearer by 0.0064 rad)."""
+    th = 0.05
+    R = np.array([[math.cos(th), -math.sin(th)], [math.sin(th), math.cos(th)]])
+    A, B = np.array([14.0, 0.0]) + R @ (-5.0, 2.2), np.array([14.0, 0.0]) + R @ (-3.0, 2.2)
+    d = B - A
+    qa, qb, qc = d @ d, 2 * A @ d, A @ A - 100.25
+    t = (-qb + math.sqrt(qb * qb - 4 * qa * qc)) / (2 * qa)
+    P = A + t * d
+    e = math.atan2(P[1], P[0]) - math.atan2(0.5, 10.0)
+    local = R.T @ (P - (14.0, 0.0))
+    assert math.atan2(local[1], local[0]) == pytest.approx(2.6474, abs=1e-4)
+    po = PairOutlines(Outline([_square(10.0 - 14.0, 3.2)], 100.0), Outline([BAR], 100.0), 14.0, [2.6006, 2.7006],
+                      [0.0, 0.3])
+    te, kind, t1, t2, p = po.contact(0.0, th, DRIVE)
+    assert te == pytest.approx(-e, abs=1e-12) and (KINDS[kind], t1, t2) == ("driven tip corner", 0, 0)
