@@ -1209,3 +1209,20 @@ def test_a_driven_corner_on_a_turned_driver_edge():
                       [0.0, 0.3])
     te, kind, t1, t2, p = po.contact(0.0, th, DRIVE)
     assert te == pytest.approx(-e, abs=1e-12) and (KINDS[kind], t1, t2) == ("driven tip corner", 0, 0)
+
+
+def test_the_window_is_widened_to_take_in_contacts_within_contact_tol_of_the_first():
+    """The first contact 3e-5 rad inside the search's fourth window (1e-3 x 4^3 = 0.064 rad), a second corner 0.7e-3 mm
+    beyond the edge 2.5 mm further along it (its hit 7e-5 rad later, outside that window): the window is widened to
+    the first hit + 2 contact_tol / r_min, and the second corner counts as a pair."""
+    e = 0.064 - 3e-5
+    rho = 7.0
+    a = e + math.asin(0.5 / rho)
+    q1 = rho * np.array([math.cos(a), math.sin(a)])
+    u, n = np.array([math.cos(e), math.sin(e)]), np.array([-math.sin(e), math.cos(e)])
+    s2 = float(np.dot(q1, u)) + 2.5
+    q2 = s2 * u + (0.5 + 0.7e-3) * n
+    assert _edge_meets_corner(q2) > 0.064
+    blocks = [_square(*(q1 + (-1.0, 1.0))) - (C1 - C2), _square(*(q2 + (-0.3, 0.3)), h=0.3) - (C1 - C2)]
+    res = transmission_sweep(blocks, C1, [BAR], C2, lambda p: 0.0, [0.0], senses=(1, 1), max_angle=0.5)
+    assert res.free_fwd[0] == pytest.approx(e, abs=1e-12) and res.pairs_coast[0] == 2
