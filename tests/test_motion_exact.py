@@ -844,6 +844,7 @@ def test_a_contact_at_the_driven_outlines_first_vertex():
                              max_angle=0.5)
     assert res.free_fwd[0] == pytest.approx(math.atan2(3, math.sqrt(100.25 - 9)) - math.atan2(0.5, 10), abs=1e-12)
     assert res.contact_point_coast[0] == pytest.approx(C2 + (math.sqrt(100.25 - 9), 3.0), abs=1e-9)
+    assert res.pairs_coast[0] == 1  # the driven vertex's own contact counts
 
 
 def test_inputs_of_other_types_and_shapes_give_float_results():
