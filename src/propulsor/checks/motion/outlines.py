@@ -109,8 +109,12 @@ class Outline:
         lo, hi = self.points.min(axis=0), self.points.max(axis=0)
         self.center = 0.5 * (lo + hi)
         dc = np.linalg.norm(self.points - self.center, axis=1)
-        self.radius = float(dc.max())
-        self.r_min = float(dc.min())  # the whole boundary lies in the annulus r_min .. radius about center
+        self.radius = float(dc.max())  # an edge is farthest from center at an end
+        # ... but may come nearer between its ends: r_min is the least distance of any edge from center, so that
+        # the whole boundary lies in the annulus r_min .. radius about center
+        e = self.seg_b - self.seg_a
+        t = np.clip(np.einsum("ij,ij->i", self.center - self.seg_a, e) / (self.seg_len * self.seg_len), 0.0, 1.0)
+        self.r_min = float(row_norms(self.seg_a + t[:, None] * e - self.center).min())
 
     def boundary_lower_bound(self, P: np.ndarray) -> np.ndarray:
         """A lower bound of the distance from each point (body frame) to the boundary (annulus test)."""
