@@ -954,7 +954,7 @@ def test_load_per_tooth_of_a_circular_pair_by_hand():
             assert 0 < r[17] < 2.25 * 2.5 and 0 < r[18] < 2.25 * 2.5
             if r[23] == "":
                 assert r[10] == pytest.approx(rb1, abs=0.05) and r[11] == pytest.approx(rb2, abs=0.1)
-                if r[24] > 24.5:
+                if r[24] > 24.05:          # just above the involute's start (r = 24.00 mm) on
                     assert r[12] == pytest.approx(math.sqrt(r[24] ** 2 - rb1 ** 2), rel=0.03)
                 assert r[13] == pytest.approx(math.sqrt(r[25] ** 2 - rb2 ** 2), rel=0.03)
             else:  # a tip corner: r_a = m (z/2 + 1 + x): 28.75 and 51.25 mm

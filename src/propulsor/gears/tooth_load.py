@@ -173,22 +173,48 @@ class DenseOutline:
 
 
 def _fit(o: DenseOutline, i: int, idx, t) -> float:
+    return _fit_rms(o, i, idx, t)[0]
+
+
+def _fit_rms(o: DenseOutline, i: int, idx, t) -> tuple[float, float]:
+    """The cubic fit's curvature at vertex i and the RMS of its residuals (mm); nan, nan below 5 vertices."""
     idx = np.asarray(idx)
     if len(idx) < 5:
-        return math.nan
+        return math.nan, math.nan
     nrm = np.array([-t[1], t[0]])
     q = o.points[idx] - o.points[i]
     x, y = q @ t, q @ nrm
     A = np.column_stack([np.ones_like(x), x, x * x, x ** 3])
     c = np.linalg.lstsq(A, y, rcond=None)[0]
-    return float(2.0 * c[2] / (1.0 + c[1] ** 2) ** 1.5)
+    rms = float(np.sqrt(np.mean((A @ c - y) ** 2)))
+    return float(2.0 * c[2] / (1.0 + c[1] ** 2) ** 1.5), rms
+
+
+#: a jump inside the window: the one-sided curvatures differ by more than JUMP_REL of the larger (and JUMP_ABS 1/mm),
+#: or one side's cubic fits its points JUMP_RMS_RATIO times worse than the other's (and by more than JUMP_RMS_MM)
+JUMP_REL = 0.1
+JUMP_ABS = 1e-3
+JUMP_RMS_RATIO = 10.0
+JUMP_RMS_MM = 1e-6
 
 
 def curvature_at(o: DenseOutline, i: int, half_len: float) -> float:
     """Signed curvature (1/mm, convex > 0) of the outline at vertex i: a cubic y(x) least-squares fitted to the
     vertices within ``half_len`` of arc length on either side, in the frame of the tangent at i, stopping at a corner;
     κ = 2c2/(1 + c1²)^1.5.  At a corner vertex (a contact on a tooth's tip edge) each side is fitted alone and the
-    more curved one taken: Hertz does not hold at an edge; its flank's radius is the nearest stated value."""
+    more curved one taken: Hertz does not hold at an edge; its flank's radius is the nearest stated value.
+
+    A jump of curvature without a corner (the involute's start meeting the fillet: tangent continuous, radius not)
+    inside the centred window makes its cubic a mix of both pieces (the circular pair's first contact, 0.6 mm above
+    the base circle: 411 mm where the involute gives 5.4 mm, σ_H half its value).  So at a non-corner vertex each
+    one-sided window (vertex i and the vertices within ``half_len`` on one side, up to a corner) is fitted too.  A
+    cubic holds a curvature varying linearly along the arc exactly, so on one smooth piece the two sides agree in
+    curvature (within JUMP_REL of the larger, or JUMP_ABS) and fit their points about equally well (RMS residuals
+    within JUMP_RMS_RATIO, or both under JUMP_RMS_MM): there the centred fit is kept, unchanged.  Otherwise a jump
+    lies inside the window (the curvatures differ, or the side straddling it fits its points far worse than the
+    other: on the circular pair the straddling side's curvature sweeps through every value and can agree with the
+    other side by chance, its residual does not); the side whose cubic fits its own points best (least RMS residual)
+    lies on the smooth piece vertex i belongs to, and its curvature is taken."""
     n = len(o)
     K = int(min(n // 2 - 1, math.ceil(2.0 * half_len / max(float(o.seg_len[i]), 1e-9)) + 2))
     off = np.arange(-K, K + 1)
@@ -204,7 +230,17 @@ def curvature_at(o: DenseOutline, i: int, half_len: float) -> float:
     j = np.arange(2 * K + 1)
     if not o.corner[i]:
         sel = keep & (j >= lo) & (j <= hi)
-        return _fit(o, i, idx[sel], o.tangent[i])
+        k_c = _fit(o, i, idx[sel], o.tangent[i])
+        sides = [_fit_rms(o, i, idx[keep & (j >= K) & (j <= hi)], o.tangent[i]),
+                 _fit_rms(o, i, idx[keep & (j <= K) & (j >= lo)], o.tangent[i])]
+        (k_a, r_a), (k_b, r_b) = sides
+        if not (math.isfinite(k_a) and math.isfinite(k_b)):
+            return k_c
+        apart = abs(k_a - k_b) > max(JUMP_REL * max(abs(k_a), abs(k_b)), JUMP_ABS)
+        worse = max(r_a, r_b) > max(JUMP_RMS_RATIO * min(r_a, r_b), JUMP_RMS_MM)
+        if not (apart or worse):
+            return k_c
+        return k_a if r_a <= r_b else k_b
     d_ahead = o.points[(i + 1) % n] - o.points[i]
     d_back = o.points[i] - o.points[(i - 1) % n]
     ks = [_fit(o, i, idx[keep & (j >= K) & (j <= hi)], d_ahead / np.linalg.norm(d_ahead)),
