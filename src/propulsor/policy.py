@@ -80,6 +80,13 @@ SHAPER_MESH_SAMPLES = 48
 SHAPER_MESH_RESIDUAL = 1e-9
 #: x tolerance of the cusp search on an envelope, relative to the parameter
 CUSP_XATOL_REL = 1e-13
+#: a jump of curvature without a corner inside a flank's curvature window (gears.tooth_load.curvature_at): the two
+#: one-sided cubic fits' curvatures differ by more than this share of the larger and by more than the 1/mm below, or
+#: one side fits its points this many times worse than the other (and worse than the mm below)
+CURVATURE_JUMP_REL = 0.1
+CURVATURE_JUMP_ABS_PER_MM = 1e-3
+CURVATURE_JUMP_RMS_RATIO = 10.0
+CURVATURE_JUMP_RMS_MM = 1e-6
 #: x tolerance of the measuring-roller diameter (mm)
 ROLLER_DIAMETER_XTOL_MM = 1e-13
 #: two angles (rad) are equal within this (the GOST 19274 rack test alpha = 20 deg)

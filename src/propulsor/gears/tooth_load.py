@@ -51,6 +51,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
+from ..policy import (CURVATURE_JUMP_ABS_PER_MM, CURVATURE_JUMP_REL, CURVATURE_JUMP_RMS_MM,
+                      CURVATURE_JUMP_RMS_RATIO)
 
 __all__ = ["G", "torques", "c_prime", "share_load", "hertz", "curvature_at", "RootSection", "root_section",
            "root_stress", "y_s", "DenseOutline"]
@@ -190,12 +192,10 @@ def _fit_rms(o: DenseOutline, i: int, idx, t) -> tuple[float, float]:
     return float(2.0 * c[2] / (1.0 + c[1] ** 2) ** 1.5), rms
 
 
-#: a jump inside the window: the one-sided curvatures differ by more than JUMP_REL of the larger (and JUMP_ABS 1/mm),
-#: or one side's cubic fits its points JUMP_RMS_RATIO times worse than the other's (and by more than JUMP_RMS_MM)
-JUMP_REL = 0.1
-JUMP_ABS = 1e-3
-JUMP_RMS_RATIO = 10.0
-JUMP_RMS_MM = 1e-6
+#: a jump inside the window (policy): the one-sided curvatures differ by more than JUMP_REL of the larger (and
+#: JUMP_ABS 1/mm), or one side's cubic fits its points JUMP_RMS_RATIO times worse than the other's (and JUMP_RMS_MM)
+JUMP_REL, JUMP_ABS = CURVATURE_JUMP_REL, CURVATURE_JUMP_ABS_PER_MM
+JUMP_RMS_RATIO, JUMP_RMS_MM = CURVATURE_JUMP_RMS_RATIO, CURVATURE_JUMP_RMS_MM
 
 
 def curvature_at(o: DenseOutline, i: int, half_len: float) -> float:
