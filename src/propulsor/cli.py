@@ -517,7 +517,8 @@ def main(argv=None) -> int:
     finally:
         for sig, handler in saved.items():
             signal.signal(sig, handler)
-        sys.unraisablehook = saved_hook
+        if not SIGNALLED:  # after a signal the process is ending: the hook stays for the finalisers that run at exit
+            sys.unraisablehook = saved_hook
 
 
 def _study_kept(args) -> str:

@@ -36,10 +36,21 @@ def raise_interrupted(signum, frame):
 
 def unraisable(info) -> None:
     """Python's hook for exceptions it cannot raise (in finalisers, weakref callbacks): an Interrupted
-    there is remembered in SIGNALLED and acted on at the next safe point, not printed."""
+    there is remembered in SIGNALLED and acted on at the next safe point, not printed.  After a signal, the
+    error of a multiprocessing finaliser whose construction the signal cut short (its weakref set, its key not:
+    ``AttributeError: 'Finalize' object has no attribute '_key'`` when its object dies, as the process ends) is
+    the signal's doing, not a fault to report: not printed either (the command line's one line stays one)."""
     if isinstance(info.exc_value, Interrupted):
         return
+    if SIGNALLED and _half_built_finalizer(info):
+        return
     sys.__unraisablehook__(info)
+
+
+def _half_built_finalizer(info) -> bool:
+    obj = getattr(info, "object", None)
+    return (type(obj).__name__ == "Finalize" and type(obj).__module__ == "multiprocessing.util"
+            and isinstance(info.exc_value, AttributeError) and not hasattr(obj, "_key"))
 
 
 def check_signalled() -> None:
