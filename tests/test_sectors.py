@@ -454,3 +454,68 @@ def test_radii_structured_equals_rows(table002):
     arr = radii.to_structured()
     assert arr.dtype.names == RADII_COLUMNS
     assert structured_rows(arr) == radii.rows()
+
+
+def test_backlash_and_module_refusals_in_full(table002):
+    for fn in (pinion_tooth_points, wheel_space_points):
+        with pytest.raises(InputError) as e:
+            fn(table002, 2.5, -0.1)
+        assert str(e.value) == "j_n = -0.1: backlash must be >= 0 mm" and e.value.parameter == "j_n"
+        with pytest.raises(InputError) as e:
+            fn(table002, 2.5, float("nan"))
+        assert str(e.value) == "j_n = nan: must be a finite number"
+        assert len(fn(table002, 2.5, 0.0)) > 0
+    with pytest.raises(InputError) as e:
+        sector_radii(table002, 0.0)
+    assert str(e.value) == "m = 0.0: must be > 0 mm"
+    # the driver's root radius r - 1.25 m must stay positive on every sector: m < min(r) / 1.25
+    m_lim = float(np.min(table002.r)) / 1.25
+    assert sector_radii(table002, m_lim * 0.999).m == m_lim * 0.999
+    with pytest.raises(InputError) as e:
+        sector_radii(table002, m_lim)
+    assert str(e.value) == f"m = {m_lim}: root radius r - 1.25 m must be > 0: m < {m_lim:.4f} mm"
+
+
+def test_rows_keep_integer_indices_and_the_papers_dashes(table002):
+    arr = wheel_space_points(table002, 2.5, 0.16)
+    assert arr.dtype["i"] == np.int64 and arr.dtype["j"] == np.int64 and arr.dtype["phi_rad"] == np.float64
+    rows = structured_rows(arr)
+    assert all(type(r["i"]) is int and type(r["j"]) is int for r in rows)
+    sixth = [r for r in rows if r["j"] == 6]
+    assert len(sixth) == 20 and all(r["phi_rad"] is None and r["phi_deg"] is None for r in sixth)
+    assert all(isinstance(r["phi_s_rad"], float) for r in sixth)
+    radii = sector_radii(table002, 2.5).rows()
+    assert type(radii[0]["i"]) is int and [r["i"] for r in radii] == list(range(1, 21))
+
+
+def test_sector_ratio_at_the_edges_of_the_sectors(table002):
+    """Each sector's ratio holds from its first angle (inclusive) to the next sector's; the last sector runs to the
+    leg's end, pi/4, which its computed end (phi + dphi) misses by rounding."""
+    t = table002
+    for k in range(1, t.i):
+        assert float(sector_ratio(t, t.phi[k])) == t.ratio[k]
+        assert float(sector_ratio(t, t.phi[k] - 1e-9)) == t.ratio[k - 1]
+    assert float(t.phi[-1] + t.dphi[-1]) < math.pi / 4
+    assert float(sector_ratio(t, math.pi / 4 - 1e-13)) == t.ratio[-1]
+    assert float(sector_ratio(t, -math.pi / 4)) == t.ratio[0]
+
+
+def test_sector_hub_speed_by_hand(table002):
+    """v / omega = (dX01/dphi) / U_k on each sector's samples; the extremes and where they are, at the default and at
+    2 samples a sector (its ends only: v is monotone within each sector of seed 002, so both find the same extremes)."""
+    t = table002
+    law = t.law
+
+    def by_hand(n):
+        phis = np.concatenate([np.linspace(t.phi[k], t.phi[k] + t.dphi[k], n) for k in range(t.i)])
+        v = np.concatenate([law.dX01_dphi(np.linspace(t.phi[k], t.phi[k] + t.dphi[k], n)) / t.ratio[k]
+                            for k in range(t.i)])
+        return phis, v
+
+    for n in (400, 2):
+        phis, v = by_hand(n)
+        got = sector_hub_speed(t, n) if n != 400 else sector_hub_speed(t)
+        assert got.v_min == pytest.approx(float(v.min()), rel=1e-14)
+        assert got.v_max == pytest.approx(float(v.max()), rel=1e-14)
+        assert got.phi_min == float(phis[np.argmin(v)]) and got.phi_max == float(phis[np.argmax(v)])
+        assert got.ripple == pytest.approx((v.max() - v.min()) / got.mean, rel=1e-13)
