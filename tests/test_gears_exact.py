@@ -742,8 +742,20 @@ def _pair_by_hand(z1, z2, x1, x2, m, internal):
                 d_b2=d2 * math.cos(A20), g_w=a_w * math.sin(a_w_ang), zs=zs, xs=xs)
 
 
-def test_pair_contact_sliding_and_interference_by_hand():
+def _margins_by_hand(z1, z2, x1, x2, m, internal, p1, p2):
+    """The boundary points' radii of curvature (ISO 53 rack: h_l* = 1.25 - 0.38 (1 - sin a); a ring cut without a
+    shaper: + instead of -) and the interference margins (GOST 16532 / 19274: rho_l <= rho_p; an undercut rho_l < 0
+    counts as 0) for lowest active points p1, p2."""
     h_l = 1.25 - 0.38 * (1 - math.sin(A20))
+    rho_l1 = 0.5 * m * z1 * math.sin(A20) - (h_l - x1) * m / math.sin(A20)
+    if internal:
+        rho_l2 = 0.5 * m * z2 * math.sin(A20) + (h_l + x2) * m / math.sin(A20)
+        return rho_l1, rho_l2, (p1 - max(rho_l1, 0.0), rho_l2 - p2)
+    rho_l2 = 0.5 * m * z2 * math.sin(A20) - (h_l - x2) * m / math.sin(A20)
+    return rho_l1, rho_l2, (p1 - max(rho_l1, 0.0), p2 - max(rho_l2, 0.0))
+
+
+def test_pair_contact_sliding_and_interference_by_hand():
     for z1, z2, x1, x2, internal in ((20, 47, 0.3, 0.1, False), (20, 70, 0.2, 0.5, True)):
         m = 2.5
         p = GearPair(SpurGear(z1, m, x1), SpurGear(z2, m, x2, internal=internal))
@@ -760,13 +772,7 @@ def test_pair_contact_sliding_and_interference_by_hand():
         s1, s2 = p.specific_sliding()
         assert s1 == pytest.approx(1 - r2 / p1 * z1 / z2, rel=1e-12) and s2 == pytest.approx(1 - r1 / p2 * z2 / z1,
                                                                                               rel=1e-12)
-        rho_l1 = 0.5 * m * z1 * math.sin(A20) - (h_l - x1) * m / math.sin(A20)
-        if internal:
-            rho_l2 = 0.5 * m * z2 * math.sin(A20) + (h_l + x2) * m / math.sin(A20)
-            want = (p1 - max(rho_l1, 0.0), rho_l2 - p2)
-        else:
-            rho_l2 = 0.5 * m * z2 * math.sin(A20) - (h_l - x2) * m / math.sin(A20)
-            want = (p1 - max(rho_l1, 0.0), p2 - max(rho_l2, 0.0))
+        rho_l1, rho_l2, want = _margins_by_hand(z1, z2, x1, x2, m, internal, p1, p2)
         assert p.involute_interference_margins() == pytest.approx(want, rel=1e-12)
         # given tips: the values on them
         da1, da2 = h["d_a1"] - 0.3, h["d_a2"] + (0.3 if internal else -0.3)
@@ -1015,13 +1021,7 @@ def test_interference_margins_and_sliding_on_given_tips_and_undercut_gears():
         g = h["g_w"]
         p1, p2 = (r2 - g, g + r1) if internal else (g - r2, g - r1)
         assert p.rho_p1(da2) == pytest.approx(p1, rel=1e-12) and p.rho_p2(da1) == pytest.approx(p2, rel=1e-12)
-        rho_l1 = 0.5 * m * z1 * math.sin(A20) - (h_l - x1) * m / math.sin(A20)
-        if internal:
-            rho_l2 = 0.5 * m * z2 * math.sin(A20) + (h_l + x2) * m / math.sin(A20)
-            want = (p1 - max(rho_l1, 0.0), rho_l2 - p2)
-        else:
-            rho_l2 = 0.5 * m * z2 * math.sin(A20) - (h_l - x2) * m / math.sin(A20)
-            want = (p1 - max(rho_l1, 0.0), p2 - max(rho_l2, 0.0))
+        rho_l1, rho_l2, want = _margins_by_hand(z1, z2, x1, x2, m, internal, p1, p2)
         if z1 == 12:
             assert rho_l1 < 0          # undercut pinion
         if z2 == 14:
