@@ -519,3 +519,127 @@ def test_sector_hub_speed_by_hand(table002):
         assert got.v_max == pytest.approx(float(v.max()), rel=1e-14)
         assert got.phi_min == float(phis[np.argmin(v)]) and got.phi_max == float(phis[np.argmax(v)])
         assert got.ripple == pytest.approx((v.max() - v.min()) / got.mean, rel=1e-13)
+
+
+def test_sector_table_refusals_in_full():
+    """Each refusal names the parameter, its value and the limit; the limits' accepted sides too (2 sectors a leg)."""
+    law = WalkingLaw(**SEED_002)
+    cases = [
+        (dict(law="seed 002", L=125.0, i=20), "law = 'seed 002': must be a WalkingLaw"),
+        (dict(law=law, L=-1.0, i=20), "L = -1.0: must be > 0 mm"),
+        (dict(law=law, L=125.0, i=float("nan")), "i = nan: must be a finite number"),
+        (dict(law=law, L=125.0, i=1), "i = 1: sectors per leg must be a whole number >= 2"),
+        (dict(law=law, L=125.0, i=20.5), "i = 20.5: sectors per leg must be a whole number >= 2"),
+        (dict(law=law, L=125.0, i=20, tol=0.0), "tol = 0.0: must be > 0 rad"),
+        (dict(law=law, L=125.0, i=20, tol=float("nan")), "tol = nan: must be a finite number"),
+        # seed 000 eqs. 25-31 need 35 cycles for seed 002 at i = 20 (tol 1e-13 rad)
+        (dict(law=law, L=125.0, i=20, max_iter=34),
+         "i = 20: sector iteration (seed 000 eqs. 25-31) did not converge in 34 cycles"),
+        # a steep law on 6 sectors: eq. 39-40's denominator dtheta_(k-1) (dphi_k - dphi_(k-1)) + dphi_(k-1) dphi_k
+        # turns negative where the driven intervals shrink fast
+        (dict(law=WalkingLaw(a=20, b=100, c=100, n=4), L=140.0, i=6),
+         "L = 140.0: driver sector recursion (seed 000 eq. 39-40) gave a non-positive interval"),
+    ]
+    for kwargs, text in cases:
+        with pytest.raises(InputError) as e:
+            sector_table(**kwargs)
+        assert str(e.value) == text
+        assert e.value.parameter == text.split(" = ")[0]
+    t = sector_table(law, L=125.0, i=2)  # two sectors: the law is even, each takes half the leg
+    assert t.i == 2 and np.allclose(t.dphi, math.pi / 4, atol=1e-12) and np.allclose(t.dtheta, math.pi, atol=1e-12)
+    assert sector_table(law, L=125.0, i=20, max_iter=35).i == 20
+
+
+def test_driver_iteration_refusal_in_full():
+    """seed 000 eqs. 48-51 stopped before they converge name the sector count and the cycles allowed."""
+    from propulsor.gears.sectors import _driver_intervals
+
+    dphi = np.array([0.3, 0.4, 0.5, 0.3707963267948966])
+    with pytest.raises(InputError) as e:
+        _driver_intervals(dphi, math.pi, 1e-13, 1, 125.0)
+    assert str(e.value) == "i = 4: driver sector iteration (seed 000 eqs. 48-51) did not converge in 1 cycles"
+    assert e.value.parameter == "i"
+    dth = _driver_intervals(dphi, math.pi, 1e-13, 10000, 125.0)
+    # eq. 39-40 keep the arc r_Hk dphi_k = L / (1/dphi_k + 1/dtheta_k) (r_H = L dtheta / (dphi + dtheta)) the same
+    q = 1 / dth + 1 / dphi
+    assert np.ptp(q) < 1e-12 and abs(dth.sum() - math.pi) < 1e-12
+
+
+def test_a_phi_that_wraps_a_hair_below_the_legs_start_is_the_first_sector(table002):
+    """wrap_leg of -pi/4 + 1999 pi/2 lands one rounding below -pi/4 (before the first edge): still sector 1, not
+    the last (the two ratios differ by 1e-11 in seed 002's table)."""
+    from propulsor.laws.walking import wrap_leg
+
+    phi = -math.pi / 4 + 1999 * math.pi / 2
+    assert float(wrap_leg(phi)) < -math.pi / 4
+    assert table002.ratio[0] != table002.ratio[-1]
+    assert float(sector_ratio(table002, phi)) == table002.ratio[0]
+
+
+def test_sixth_point_inside_the_base_circle_takes_the_involutes_start():
+    """seed 002 eq. 15-16 put the 6th point of space k on the next sector's tip circle r_H(k+1) + m; a steep law on 3
+    sectors drops r_H by 8.14 mm from sector 2 to 3, so with m = 3 that circle (93.45 mm) lies inside sector 2's base
+    circle r_H - m = 95.59 mm: the point is the involute's start (alpha = 0, inv = 0), not a NaN, and the tip land
+    stays a number."""
+    t = sector_table(WalkingLaw(a=60, b=100, c=360, n=2), L=140.0, i=3)
+    m, j_n = 3.0, 0.1
+    assert t.r_H[2] + m < t.r_H[1] - m
+    whl = wheel_space_points(t, m, j_n)
+    six = whl[(whl["i"] == 2) & (whl["j"] == 6)][0]
+    assert six["alpha_rad"] == 0.0 and six["inv_rad"] == 0.0
+    nu3 = math.tan(math.acos((t.r_H[1] - m) / t.r_H[1])) - math.acos((t.r_H[1] - m) / t.r_H[1])
+    d_H = j_n / (4 * (t.r_H[1] - m))
+    assert six["phi_s_rad"] == pytest.approx(t.phi[1] + 0.75 * t.dphi[1] + d_H - nu3, abs=1e-14)
+    cols = [c for c in WHEEL_POINT_COLUMNS if c not in ("phi_rad", "phi_deg")]
+    assert all(np.all(np.isfinite(whl[c])) for c in cols)
+    t_drv, t_dvn = sector_tip_thickness(t, m, j_n)
+    assert math.isfinite(t_drv) and math.isfinite(t_dvn)
+    sixth, fifth = whl[whl["j"] == 6], whl[whl["j"] == 5]
+    nxt = np.roll(fifth["phi_rad"], -1)
+    nxt[-1] += math.pi / 2
+    assert t_dvn == pytest.approx(float(np.min(sixth["r_H_mm"] * (nxt - sixth["phi_s_rad"]))), rel=1e-12)
+
+
+def test_tip_land_of_the_last_driven_tooth_reaches_into_the_next_leg():
+    """On a circular table (equal radii and pitches: a spur gear cut by the sector rules) every tooth's tip land is the
+    textbook s_a = r_a (pitch angle / 2 - 2 delta - 2 (inv alpha_a - inv alpha)) with cos alpha = r_b / r; widen the
+    last space by 0.01 rad and only the tooth between it and the next leg's first space thins, by 0.75 * 0.01 r_a."""
+    from dataclasses import replace
+
+    i, m, j_n = 8, 2.0, 0.2
+    d = math.pi / 2 / i
+    phi = -math.pi / 4 + d * np.arange(i)
+    base = sector_table(WalkingLaw(**SEED_002), L=125.0, i=20)
+    r_H, r = 60.0, 40.0
+    dth = 2 * math.pi / i
+    t = replace(base, L=100.0, phi=phi, dphi=np.full(i, d), r_H=np.full(i, r_H),
+                theta=-math.pi + dth * np.arange(i), dtheta=np.full(i, dth), r=np.full(i, r))
+
+    def land(rad, pitch_angle):
+        r_b, r_a = rad - m, rad + m
+        a, a_a = math.acos(r_b / rad), math.acos(r_b / r_a)
+        inv, inv_a = math.tan(a) - a, math.tan(a_a) - a_a
+        return r_a * (pitch_angle / 2 - 2 * j_n / (4 * r_b) - 2 * (inv_a - inv))
+
+    t_drv, t_dvn = sector_tip_thickness(t, m, j_n)
+    assert t_drv == pytest.approx(land(r, dth), rel=1e-12)
+    assert t_dvn == pytest.approx(land(r_H, d), rel=1e-12)
+    dphi = np.full(i, d)
+    dphi[-1] += 0.01
+    _, t_last = sector_tip_thickness(replace(t, dphi=dphi), m, j_n)
+    assert t_last == pytest.approx(land(r_H, d) - 0.75 * 0.01 * (r_H + m), rel=1e-12)
+
+
+def test_hub_speed_of_a_table_stopped_early_finds_its_least_speed_at_the_legs_end():
+    """Stopped at 1e-3 rad the method leaves its last sector short (the leg ends at 0.7646 rad, not pi/4): the least
+    hub speed is at that end, not at the leg's start; the extremes by hand as in test_sector_hub_speed_by_hand."""
+    t = sector_table(WalkingLaw(**SEED_002), L=125.0, i=20, tol=1e-3)
+    law = t.law
+    phis = np.concatenate([np.linspace(t.phi[k], t.phi[k] + t.dphi[k], 400) for k in range(t.i)])
+    v = np.concatenate([law.dX01_dphi(np.linspace(t.phi[k], t.phi[k] + t.dphi[k], 400)) / t.ratio[k]
+                        for k in range(t.i)])
+    got = sector_hub_speed(t)
+    assert got.phi_min == float(phis[np.argmin(v)]) == pytest.approx(t.phi[-1] + t.dphi[-1], abs=1e-15)
+    assert got.phi_min > 0.76
+    assert got.v_min == pytest.approx(float(v.min()), rel=1e-14)
+    assert got.phi_max == float(phis[np.argmax(v)]) and got.v_max == pytest.approx(float(v.max()), rel=1e-14)
