@@ -7,10 +7,27 @@ command line (exit code 0 expected) and ``manifest`` reads the build's manifest.
 from __future__ import annotations
 
 import json
+import os
 
 import pytest
 
 from propulsor.cli import main
+
+# mutation testing (mutation/run.py) forks a worker per mutant from a process that has already run the tests, and
+# OCCT's thread pool does not survive a fork (export/mesh.py): a forked worker that meshes in parallel waits forever.
+# There, BRepMesh runs on the calling thread (the same triangulation).
+if os.environ.get("PROPULSOR_OCCT_SERIAL") == "1":
+    from propulsor.solids import tessellate as _tessellate
+
+    _mesh_shape, _refine_faces = _tessellate.mesh_shape, _tessellate.refine_faces
+
+    def _mesh_shape_serial(shape, chord_tol, angular_tol, parallel, chord_limit=None):
+        return _mesh_shape(shape, chord_tol, angular_tol, False, chord_limit)
+
+    def _refine_faces_serial(shape, chord_tol, angular_tol, parallel, chord_limit):
+        return _refine_faces(shape, chord_tol, angular_tol, False, chord_limit)
+
+    _tessellate.mesh_shape, _tessellate.refine_faces = _mesh_shape_serial, _refine_faces_serial
 
 
 @pytest.fixture(scope="module")

@@ -1,0 +1,884 @@
+"""The checks of meshes and exported files, each on geometry made in the test whose answer is known by hand:
+tetrahedra, cubes, tori of known genus, boxes whose overlaps are counted on paper, files written byte by byte."""
+
+import math
+
+import numpy as np
+import pytest
+import trimesh
+
+from propulsor.check import Check
+from propulsor.checks.mesh import (
+    TooManyPairs,
+    _f32_down,
+    _f32_up,
+    body_labels,
+    edge_counts,
+    euler_genus,
+    mesh_checks,
+    overlapping_pairs,
+    self_intersections,
+    signed_volume,
+)
+
+# a tetrahedron wound outward (right-hand normals point away from the centroid)
+TET_V = np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]])
+TET_F = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
+
+
+def _box(extents=(1.0, 1.0, 1.0), at=(0.0, 0.0, 0.0)):
+    b = trimesh.creation.box(extents=extents)
+    return np.asarray(b.vertices) + np.asarray(at, float), np.asarray(b.faces, np.int64)
+
+
+def _join(*meshes):
+    V, F, off = [], [], 0
+    for v, f in meshes:
+        V.append(v)
+        F.append(np.asarray(f) + off)
+        off += len(v)
+    return np.vstack(V), np.vstack(F)
+
+
+def _torus(R=10.0, r=2.0, at=(0.0, 0.0, 0.0)):
+    t = trimesh.creation.torus(major_radius=R, minor_radius=r, major_sections=16, minor_sections=8)
+    return np.asarray(t.vertices) + np.asarray(at, float), np.asarray(t.faces, np.int64)
+
+
+# ------------------------------------------------------------------------------------------- topology
+def test_edge_counts_of_a_tetrahedron_by_hand():
+    """Six edges, each keyed min * n + max with n = 4 vertices, each in two faces; outward winding uses every
+    directed edge once."""
+    keys, count, dup = edge_counts(TET_F)
+    assert keys.tolist() == [0 * 4 + 1, 0 * 4 + 2, 0 * 4 + 3, 1 * 4 + 2, 1 * 4 + 3, 2 * 4 + 3]
+    assert count.tolist() == [2] * 6 and dup == 0
+    flipped = TET_F.copy()
+    flipped[3] = flipped[3][::-1]  # one face turned over: its three directed edges now repeat their neighbours'
+    assert edge_counts(flipped)[2] == 3
+    assert edge_counts(TET_F[:3])[1].tolist() == [2, 2, 2, 1, 1, 1]  # the face (1, 2, 3) removed
+    keys, count, dup = edge_counts(np.empty((0, 3), np.int64))
+    assert len(keys) == 0 and len(count) == 0 and dup == 0
+
+
+def test_edge_keys_do_not_collide_when_the_last_vertex_is_used():
+    """Edge (0, 3) and edge (1, 0) of a mesh whose highest vertex is 3: keys with n = 3 would both be 3."""
+    f = np.array([[0, 1, 3], [1, 0, 2]])
+    keys, count, _ = edge_counts(f)
+    assert keys.tolist() == [1, 2, 3, 6, 7]  # (0,1), (0,2), (0,3), (1,2), (1,3) with n = 4
+    assert count.tolist() == [2, 1, 1, 1, 1]
+
+
+def test_bodies_are_joined_through_any_vertex_of_a_face():
+    """Two tetrahedra sharing one vertex are one body through it, whichever corner of the faces it is; two apart are
+    two bodies; the label of each face is its body's."""
+    far = (TET_V + 5.0, TET_F)
+    V, F = _join((TET_V, TET_F), far)
+    lab = body_labels(F, len(V))
+    assert lab[:4].tolist() == [lab[0]] * 4 and lab[4:].tolist() == [lab[4]] * 4 and lab[0] != lab[4]
+    # the second tetrahedron moved so that its vertex 0 is the first one's vertex 3, faces rotated every way
+    V2 = np.vstack([TET_V, TET_V[1:] + TET_V[3]])
+    F2 = np.where(TET_F == 0, 3, np.where(TET_F > 0, TET_F + 3, TET_F))
+    for roll in range(3):
+        F_all = np.vstack([TET_F, np.roll(F2, roll, axis=1)])
+        assert len(np.unique(body_labels(F_all, len(V2)))) == 1, roll
+        assert euler_genus(V2, F_all)[1] == 1
+
+
+def test_signed_volume_by_the_divergence_theorem():
+    assert signed_volume(TET_V, TET_F) == pytest.approx(1 / 6, rel=1e-15)
+    assert signed_volume(TET_V, TET_F[:, ::-1]) == pytest.approx(-1 / 6, rel=1e-15)
+    v, f = _box((2.0, 3.0, 4.0))
+    assert signed_volume(v, f) == pytest.approx(24.0, rel=1e-15)
+    # far from the origin: the centroid shift keeps the digits (1e9 mm out, 24 mm^3 to 1e-12)
+    assert signed_volume(v + 1e9, f) == pytest.approx(24.0, rel=1e-12)
+    assert signed_volume(np.array(v, np.float32) + np.float32(3), f) == pytest.approx(24.0, rel=1e-6)
+
+
+def test_euler_characteristic_bodies_and_genus():
+    assert euler_genus(TET_V, TET_F) == (2, 1, 0)
+    assert euler_genus(*_torus()) == (0, 1, 1)
+    assert euler_genus(*_join(_torus(), _torus(at=(40.0, 0, 0)))) == (0, 2, 2)
+    assert euler_genus(*_join(_box(), _torus(at=(40.0, 0, 0)))) == (2, 2, 1)
+    assert euler_genus(*_join((TET_V, TET_F), _box(at=(5.0, 0, 0)))) == (4, 2, 0)
+    # a vertex no face uses counts neither in V nor as a body
+    assert euler_genus(np.vstack([TET_V, [[9.0, 9, 9]]]), TET_F) == (2, 1, 0)
+    assert euler_genus(np.vstack([[[9.0, 9, 9]], TET_V]), TET_F + 1) == (2, 1, 0)
+
+
+# ------------------------------------------------------------------------------------------- broad phase
+def _brute_pairs(lo, hi):
+    out = []
+    for i in range(len(lo)):
+        for j in range(i + 1, len(lo)):
+            if np.all(lo[i] <= hi[j]) and np.all(lo[j] <= hi[i]):
+                out.append((i, j))
+    return out
+
+
+@pytest.mark.parametrize("n", [2, 3, 5, 8, 9, 31, 64, 97])
+def test_overlapping_box_pairs_are_the_brute_force_ones(n):
+    """Boxes on a quarter-millimetre grid (exact in float32, so the outward rounding adds nothing): every pair whose
+    closed boxes meet on all three axes, touching faces, edges and corners included, and no other."""
+    rng = np.random.default_rng(n)
+    lo = rng.integers(0, 40, size=(n, 3)) * 0.25
+    hi = lo + rng.integers(0, 12, size=(n, 3)) * 0.25
+    got = overlapping_pairs(lo, hi)
+    assert got.dtype == np.int64 and got.shape[1] == 2
+    assert sorted(map(tuple, got.tolist())) == _brute_pairs(lo, hi)
+
+
+def test_touching_boxes_overlap_and_boxes_a_hair_apart_do_not():
+    lo = np.array([[0.0, 0, 0], [1.0, 0, 0], [0.0, 1, 1], [3.0, 3, 3]])
+    hi = np.array([[1.0, 1, 1], [2.0, 1, 1], [1.0, 2, 2], [4.0, 4, 4]])
+    # 0-1 share a face, 0-2 an edge, 1-2 the corner (1, 1, 1); 3 is apart
+    assert sorted(map(tuple, overlapping_pairs(lo, hi).tolist())) == [(0, 1), (0, 2), (1, 2)]
+    assert overlapping_pairs(lo[:1], hi[:1]).shape == (0, 2)
+    assert overlapping_pairs(lo[:0], hi[:0]).shape == (0, 2)
+    # apart by 1e-3 on one axis only (float32 resolves it at this size)
+    for ax in range(3):
+        lo2, hi2 = lo[:2].copy(), hi[:2].copy()
+        lo2[1] = hi2[0] + 1e-3
+        hi2[1] = lo2[1] + 1.0
+        assert lo2[1][ax] > hi2[0][ax]
+        assert overlapping_pairs(lo2, hi2).shape == (0, 2)
+        lo3, hi3 = lo[:2].copy(), hi[:2].copy()
+        lo3[1] = 0.0
+        hi3[1] = 1.0
+        lo3[1][ax] = 1.0 + 1e-3
+        hi3[1][ax] = 2.0
+        assert overlapping_pairs(lo3, hi3).shape == (0, 2), ax
+
+
+def test_identical_boxes_make_every_pair_and_the_pair_limit_counts_node_pairs():
+    """Eight identical boxes: the 28 pairs.  At the leaves the traversal holds all n (n + 1) / 2 = 36 node pairs
+    (each leaf with itself too): a limit of 36 lets it through, 35 stops it."""
+    lo = np.zeros((8, 3))
+    hi = np.ones((8, 3))
+    assert len(overlapping_pairs(lo, hi)) == 28
+    assert len(overlapping_pairs(lo, hi, max_pairs=36)) == 28
+    with pytest.raises(TooManyPairs) as e:
+        overlapping_pairs(lo, hi, max_pairs=35)
+    assert str(e.value) == "more than 35 pairs of overlapping triangle boxes"
+
+
+def test_float32_bounds_round_outwards():
+    x = np.array([0.1, -0.1, 1e-8, 3.0, -2.5, 123456.789])
+    down, up = _f32_down(x), _f32_up(x)
+    assert down.dtype == np.float32 and up.dtype == np.float32
+    assert np.all(down.astype(float) <= x) and np.all(up.astype(float) >= x)
+    # at most one float32 step from x, and exact where x is a float32
+    assert np.all(np.nextafter(down, np.float32(np.inf)).astype(float) >= x)
+    assert np.all(np.nextafter(up, np.float32(-np.inf)).astype(float) <= x)
+    assert down[3] == up[3] == np.float32(3.0) and down[4] == up[4] == np.float32(-2.5)
+    assert down[0] < up[0] and down[1] < up[1]
+
+
+# ------------------------------------------------------------------------------------------- narrow phase
+def _pierced(gap=-0.5):
+    """A triangle in z = 0 and a vertical one whose lowest vertex is `gap` above the plane (negative: through it)."""
+    V = np.array([[-2.0, -2, 0], [4, -2, 0], [-2, 4, 0], [0.0, -1, gap], [0.0, 1, gap], [0.0, 0, gap + 3]])
+    return V, np.array([[0, 1, 2], [3, 4, 5]])
+
+
+def test_a_triangle_through_another_is_one_pair():
+    V, F = _pierced()
+    n, pairs = self_intersections(V, F)
+    assert n == 1 and pairs.tolist() == [[0, 1]] and pairs.dtype == np.int64
+    # a zero-area triangle lying across both is skipped
+    V2 = np.vstack([V, [[-1.0, 0, -1], [1.0, 0, 1], [0.0, 0, 0]]])
+    F2 = np.vstack([F, [[6, 7, 8]]])
+    assert self_intersections(V2, F2)[0] == 1
+    assert self_intersections(V, F[:1]) == (0, pytest.approx(np.empty((0, 2))))
+    assert self_intersections(V, F[:1])[1].shape == (0, 2)
+
+
+def test_the_default_tolerance_is_a_ten_billionth_of_the_size():
+    """The vertical triangle's lowest corner above the plane by 0.5 and by 2 tolerances (1e-10 of the bounding
+    box's diagonal): touching within the tolerance is an intersection, twice as far is not."""
+    V, F = _pierced(0.0)
+    diag = float(np.linalg.norm(V.max(axis=0) - V.min(axis=0)))
+    eps = 1e-10 * diag
+    assert self_intersections(*_pierced(0.5 * eps))[0] == 1
+    assert self_intersections(*_pierced(2.0 * eps))[0] == 0
+    assert self_intersections(*_pierced(2.0 * eps), eps=4.0 * eps)[0] == 1
+    assert self_intersections(*_pierced(1e-3))[0] == 0
+
+
+def test_many_crossings_are_counted_and_the_report_is_cut():
+    """Three vertical triangles through one horizontal one: 3 pairs, reported up to max_report."""
+    V = [[-10.0, -10, 0], [10, -10, 0], [-10, 10, 0]]
+    F = [[0, 1, 2]]
+    for k, x in enumerate((-5.0, -3.0, -1.0)):
+        V += [[x, -1, -1], [x, 1, -1], [x, 0, 2]]
+        F.append([3 + 3 * k, 4 + 3 * k, 5 + 3 * k])
+    n, pairs = self_intersections(np.array(V), np.array(F), max_report=2)
+    assert n == 3 and len(pairs) == 2 and set(map(tuple, pairs.tolist())) <= {(0, 1), (0, 2), (0, 3)}
+    n, pairs = self_intersections(np.array(V), np.array(F))
+    assert sorted(map(tuple, pairs.tolist())) == [(0, 1), (0, 2), (0, 3)]
+    with pytest.raises(TooManyPairs):
+        self_intersections(np.array(V), np.array(F), max_pairs=2)
+
+
+# ------------------------------------------------------------------------------------------- mesh_checks
+def _by_name(checks):
+    return {c.name.split(": ", 1)[1]: c for c in checks}
+
+
+def test_mesh_checks_of_a_valid_box_in_full():
+    v, f = _box((2.0, 3.0, 4.0))
+    checks = mesh_checks((v, f), name="box", expected_genus=0)
+    assert [c.name for c in checks] == [
+        "box: edges not shared by exactly 2 faces", "box: directed edges used twice", "box: mesh volume",
+        "box: bodies", "box: genus", "box: self-intersecting triangle pairs"]
+    assert all(c.passed for c in checks)
+    c = _by_name(checks)
+    assert c["edges not shared by exactly 2 faces"] == Check(
+        "box: edges not shared by exactly 2 faces", True, 0, 0, "edges", "watertight: every edge has two faces")
+    assert c["directed edges used twice"] == Check(
+        "box: directed edges used twice", True, 0, 0, "edges", "consistent winding: each directed edge once")
+    assert c["mesh volume"].value == pytest.approx(24.0, rel=1e-15) and c["mesh volume"].limit == 0.0
+    assert (c["mesh volume"].unit, c["mesh volume"].message) == ("mm^3", "positive enclosed volume (outward normals)")
+    assert c["bodies"] == Check("box: bodies", True, 1, 1, "", "connected bodies (Euler characteristic 2)")
+    assert c["genus"] == Check("box: genus", True, 0, 0, "", "genus from chi = V - E + F = 2")
+    assert c["self-intersecting triangle pairs"] == Check(
+        "box: self-intersecting triangle pairs", True, 0, 0, "pairs",
+        "no two triangles intersect (BVH + triangle-triangle test)")
+    assert mesh_checks((v, f))[0].name == "mesh: edges not shared by exactly 2 faces"
+
+
+def test_mesh_checks_fail_each_defect_with_its_count():
+    v, f = _box()
+    c = _by_name(mesh_checks((v, f[:-1]), name="m"))  # a triangle missing: its three edges have one face
+    assert (c["edges not shared by exactly 2 faces"].passed, c["edges not shared by exactly 2 faces"].value) == (False, 3)
+    f2 = f.copy()
+    f2[0] = f2[0][::-1]
+    c = _by_name(mesh_checks((v, f2), name="m"))
+    assert (c["directed edges used twice"].passed, c["directed edges used twice"].value) == (False, 3)
+    c = _by_name(mesh_checks((v, f[:, ::-1]), name="m"))  # inside out
+    assert not c["mesh volume"].passed and c["mesh volume"].value == pytest.approx(-1.0, rel=1e-15)
+    two = _join(_box(), _box(at=(5.0, 0, 0)))
+    c = _by_name(mesh_checks(two, name="m"))
+    assert c["bodies"] == Check("m: bodies", False, 2, 1, "", "connected bodies (Euler characteristic 4)")
+    c = _by_name(mesh_checks(two, name="m", expected_bodies=2))
+    assert c["bodies"].passed
+    c = _by_name(mesh_checks(two, name="m", expected_bodies=None))
+    assert c["bodies"] == Check("m: bodies", True, 2, None, "", "connected bodies, not prescribed (Euler characteristic 4)")
+    c = _by_name(mesh_checks(_torus(), name="m", expected_genus=0))
+    assert c["genus"] == Check("m: genus", False, 1, 0, "", "genus from chi = V - E + F = 0")
+    assert "genus" not in _by_name(mesh_checks(_torus(), name="m"))
+    empty = mesh_checks((v, np.empty((0, 3), np.int64)), name="m")
+    assert empty == [Check("m: has triangles", False, False, True, "", "mesh is empty")]
+
+
+def test_two_interpenetrating_boxes_pass_trimesh_but_not_the_self_intersection_check():
+    """A unit cube and one moved by half a unit on each axis: closed, wound outward, but their surfaces cross."""
+    V, F = _join(_box(), _box(at=(0.5, 0.5, 0.5)))
+    tm = trimesh.Trimesh(V, F, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent
+    n, pairs = self_intersections(V, F)
+    assert n > 0
+    c = _by_name(mesh_checks((V, F), name="m", expected_bodies=2))
+    x = c["self-intersecting triangle pairs"]
+    assert not x.passed and x.value == n and x.limit == 0
+    assert x.message == f"{n} intersecting triangle pairs, e.g. faces {pairs[:3].tolist()}"
+    c = _by_name(mesh_checks((V, F), name="m", expected_bodies=2, max_box_pairs=3))
+    x = c["self-intersecting triangle pairs"]
+    assert not x.passed and x.value == -1
+    assert x.message == "not tested: more than 3 pairs of overlapping triangle boxes"
+
+
+def test_chord_deflection_and_volume_against_the_brep():
+    """The volume may differ from the B-rep's by deflection x area (every triangle within the deflection of the
+    surface), or by the relative tolerance where that is larger; the deflection is read from the mesh's metadata."""
+    v, f = _box((2.0, 3.0, 4.0))  # 24 mm^3, area 52 mm^2
+    c = _by_name(mesh_checks((v, f), name="m", chord_deflection=0.002, expected_volume=24.1))
+    d = c["chord deflection"]
+    assert d == Check("m: chord deflection", True, 0.002, 0.01, "mm", "tessellation chord error (OCCT achieved deflection)")
+    vb = c["volume vs B-rep"]
+    assert vb.passed  # 0.1 <= 0.002 x 52 = 0.104
+    assert vb.limit == {"expected": 24.1, "rel_tol": 1e-3, "abs_tol": pytest.approx(0.104, rel=1e-12)}
+    assert vb.message == ("mesh volume 24 vs B-rep 24.1 mm^3 (deviation 0.1; allowed: deflection 0.002 mm × area 52 "
+                          "mm^2 = 0.104 mm^3, or 0.001 of the volume)")
+    assert not _by_name(mesh_checks((v, f), name="m", chord_deflection=0.0019, expected_volume=24.1))[
+        "volume vs B-rep"].passed  # 0.1 > 0.0988
+    assert not _by_name(mesh_checks((v, f), name="m", chord_deflection=0.0101))["chord deflection"].passed
+    # without a deflection: the limit's 0.01 mm x 52 mm^2 = 0.52 mm^3; brep_volume is the same argument
+    c = _by_name(mesh_checks((v, f), name="m", brep_volume=24.5))
+    assert c["volume vs B-rep"].passed and "deflection 0.01 mm" in c["volume vs B-rep"].message
+    assert "chord deflection" not in c
+    assert not _by_name(mesh_checks((v, f), name="m", brep_volume=24.53))["volume vs B-rep"].passed
+    # the relative tolerance where it is the larger: 1 % of 24 = 0.24 mm^3 against 0.0052
+    assert _by_name(mesh_checks((v, f), name="m", chord_deflection=1e-4, expected_volume=24.2,
+                                volume_rel_tol=0.01))["volume vs B-rep"].passed
+    tm = trimesh.Trimesh(v, f, process=False)
+    tm.metadata["chord_deflection_mm"] = 0.003
+    c = _by_name(mesh_checks(tm, name="m", expected_volume=24.0))
+    assert c["chord deflection"].value == 0.003 and "deflection 0.003 mm" in c["volume vs B-rep"].message
+    # a (V, F) tuple has no metadata: no deflection check
+    assert "chord deflection" not in _by_name(mesh_checks((v, f), name="m"))
+    assert "volume vs B-rep" not in _by_name(mesh_checks(tm, name="m"))
+
+
+# ------------------------------------------------------------------------------------------- formats
+import io  # noqa: E402
+import struct  # noqa: E402
+import zipfile  # noqa: E402
+
+import ezdxf  # noqa: E402
+
+from propulsor.checks import formats  # noqa: E402
+from propulsor.checks.safe_read import Refused  # noqa: E402
+from propulsor.policy import (  # noqa: E402
+    CHORD_TOL_MM, DXF_COORD_MAX_MM, DXF_POINTS_MAX, READ_LIMIT_BYTES, THREEMF_MEMBERS_MAX, THREEMF_UNZIPPED_MAX_BYTES)
+
+
+def _refused(fn, *args) -> str:
+    with pytest.raises(Refused) as e:
+        fn(*args)
+    return str(e.value)
+
+
+def _binary_stl(n: int, header: bytes = b"binary") -> bytes:
+    return header.ljust(80, b" ") + struct.pack("<I", n) + bytes(50 * n)
+
+
+def test_stl_kind_binary_by_its_length_and_ascii_by_its_first_word():
+    assert formats.stl_kind(_binary_stl(0)) == "binary"  # 84 bytes exactly
+    assert formats.stl_kind(_binary_stl(2)) == "binary"
+    # a binary header may begin with 'solid' (many exporters write it): the length decides first
+    assert formats.stl_kind(_binary_stl(3, b"solid part")) == "binary"
+    assert formats.stl_kind(b"  \n SOLID x\nendsolid x\n") == "ascii"
+    assert formats.stl_kind(_binary_stl(3, b"solid part") + b"\n") == "ascii"
+    assert _refused(formats.stl_kind, b"0123456789") == (
+        "10 bytes: shorter than a binary STL header (84 bytes) and not ASCII")
+    assert _refused(formats.stl_kind, _binary_stl(0)[:83]) == (
+        "83 bytes: shorter than a binary STL header (84 bytes) and not ASCII")
+    assert _refused(formats.stl_kind, _binary_stl(2) + b"x") == (
+        "binary STL declares 2 triangles, i.e. 84 + 50 n = 184 bytes, but the file has 185")
+    assert _refused(formats.stl_kind, _binary_stl(2)[:-1]) == (
+        "binary STL declares 2 triangles, i.e. 84 + 50 n = 184 bytes, but the file has 183")
+
+
+def test_an_ascii_stl_is_read_up_to_its_own_limit():
+    lim = READ_LIMIT_BYTES["stl_ascii"]
+    body = b"solid x\n"
+    assert formats.stl_kind(body + b" " * (lim - len(body))) == "ascii"
+    assert _refused(formats.stl_kind, body + b" " * (lim - len(body) + 1)) == (
+        f"ASCII STL of {lim + 1} bytes: larger than the {lim} bytes allowed")
+
+
+def _zip(members: dict, method=zipfile.ZIP_DEFLATED) -> bytes:
+    buf = io.BytesIO()
+    with zipfile.ZipFile(buf, "w", method) as zf:
+        for name, data in members.items():
+            zf.writestr(name, data)
+    return buf.getvalue()
+
+
+def test_3mf_zip_members_counted_and_sized_before_and_while_inflating():
+    formats.check_3mf_zip(_zip({"3D/a.model": b"<model/>", "[Content_Types].xml": b"x"}))
+    assert _refused(formats.check_3mf_zip, b"PK\x03\x04 not really").startswith("not a zip archive: ")
+    assert _refused(formats.check_3mf_zip, b"") == "not a zip archive: File is not a zip file"
+    many = {f"m{k}": b"" for k in range(THREEMF_MEMBERS_MAX)}
+    formats.check_3mf_zip(_zip(many))
+    many["one more"] = b""
+    assert _refused(formats.check_3mf_zip, _zip(many)) == (
+        f"{THREEMF_MEMBERS_MAX + 1} zip members: more than {THREEMF_MEMBERS_MAX}")
+    # the declared sizes add up across members: exactly the limit inflates, one byte more is refused unread
+    half = THREEMF_UNZIPPED_MAX_BYTES // 2
+    formats.check_3mf_zip(_zip({"a": bytes(half), "b": bytes(THREEMF_UNZIPPED_MAX_BYTES - half)}))
+    assert _refused(formats.check_3mf_zip, _zip({"a": bytes(half), "b": bytes(THREEMF_UNZIPPED_MAX_BYTES - half + 1)})) == (
+        f"zip members declare {THREEMF_UNZIPPED_MAX_BYTES + 1} bytes: more than {THREEMF_UNZIPPED_MAX_BYTES} unzipped")
+
+
+def test_a_corrupt_zip_member_is_named():
+    data = bytearray(_zip({"3D/a.model": b"<model>" + b"x" * 100 + b"</model>"}, zipfile.ZIP_STORED))
+    k = data.index(b"xxxx")
+    data[k] = ord("y")  # the stored bytes no longer match their CRC-32
+    assert _refused(formats.check_3mf_zip, bytes(data)) == (
+        "zip member '3D/a.model' unreadable: BadZipFile: Bad CRC-32 for file '3D/a.model'")
+
+
+def test_arc_points_by_the_sagitta():
+    """An arc flattened so that no chord strays more than CHORD_TOL_MM from it: a chord spanning angle da has the
+    sagitta r (1 - cos(da / 2)); the points are ceil(sweep / da) + 1, and an arc no larger than the tolerance is its
+    two ends."""
+    for r, sweep in ((10.0, math.pi), (1.0, 2 * math.pi), (250.0, 0.3), (10.0, -math.pi / 2), (0.0051, 1.0)):
+        da = 2 * math.acos(1 - CHORD_TOL_MM / r)
+        assert r * (1 - math.cos(da / 2)) == pytest.approx(CHORD_TOL_MM, rel=1e-9)
+        assert formats._arc_points(r, sweep) == math.ceil(abs(sweep) / da) + 1
+    assert formats._arc_points(CHORD_TOL_MM, math.pi) == 2
+    assert formats._arc_points(0.0, 1.0) == 2
+    assert formats._arc_points(10.0, 0.0) == 1
+    # just above the tolerance: the half angle's cosine is 1 - tol / r (acos of at least -1: r > tol / 2)
+    r = CHORD_TOL_MM * (1 + 1e-9)
+    assert formats._arc_points(r, math.pi) == math.ceil(math.pi / (2 * math.acos(1 - CHORD_TOL_MM / r))) + 1
+
+
+def test_coordinates_are_numbers_within_the_drawings_span():
+    assert formats._coord("2.5", "x") == 2.5
+    assert formats._coord(DXF_COORD_MAX_MM, "x") == DXF_COORD_MAX_MM
+    assert formats._coord(-DXF_COORD_MAX_MM, "x") == -DXF_COORD_MAX_MM
+    beyond = math.nextafter(DXF_COORD_MAX_MM, math.inf)
+    assert _refused(formats._coord, beyond, "LINE #1 start") == (
+        f"LINE #1 start = {beyond!r}: beyond the ±100000 mm a drawing may span")
+    assert _refused(formats._coord, -beyond, "c") == f"c = {-beyond!r}: beyond the ±100000 mm a drawing may span"
+    assert _refused(formats._coord, float("nan"), "c") == "c = nan: beyond the ±100000 mm a drawing may span"
+    assert _refused(formats._coord, "abc", "c") == "c = 'abc': not a number"
+    assert _refused(formats._coord, None, "c") == "c = None: not a number"
+
+
+def test_bulged_polylines_count_their_arcs_points():
+    """A bulge b between two points a chord c apart is an arc of sweep 4 atan b and radius c (1 + b^2) / (4 |b|):
+    b = 1 is a half circle on the chord."""
+    pts = [(0.0, 0.0, 1.0), (2.0, 0.0, 0.0), (2.0, 3.0, 0.0)]
+    half = formats._arc_points(1.0, math.pi)
+    assert formats._bulged(pts, "P", closed=False) == 3 + half
+    assert formats._bulged([(x, y, 0.0) for x, y, _ in pts], "P", closed=True) == 3
+    # closed: the last vertex's bulge bends the closing segment (3, 4, 5 triangle: the chord back is 3.6056)
+    closing = [(0.0, 0.0, 0.0), (2.0, 0.0, 0.0), (2.0, 3.0, -0.5)]
+    c = math.hypot(2.0, 3.0)
+    assert formats._bulged(closing, "P", closed=True) == 3 + formats._arc_points(
+        c * (1 + 0.25) / 2.0, 4 * math.atan(-0.5))
+    assert formats._bulged(closing, "P", closed=False) == 3
+    # a bulge below 1e-15 is a straight segment; 2e-15 is an arc of radius 1.25e14 mm, beyond the drawing
+    assert formats._bulged([(0.0, 0.0, 1e-16), (1.0, 0.0, 0.0)], "P", closed=False) == 2
+    msg = _refused(formats._bulged, [(0.0, 0.0, 2e-15), (1.0, 0.0, 0.0)], "P", False)
+    assert msg == f"P arc radius (bulge 2e-15) = {1.0 * (1 + 4e-30) / 8e-15!r}: beyond the ±100000 mm a drawing may span"
+    assert _refused(formats._bulged, [(0.0, 0.0, float("inf")), (1.0, 0.0, 0.0)], "P", False) == "P bulge = inf: not finite"
+    assert _refused(formats._bulged, [(0.0, 0.0, "b"), (1.0, 0.0, 0.0)], "P", False) == "P bulge = 'b': not a number"
+    assert _refused(formats._bulged, [(0.0, float("inf"), 0.0)], "P", False) == (
+        "P y = inf: beyond the ±100000 mm a drawing may span")
+    assert _refused(formats._bulged, [(1e6, 0.0, 0.0)], "P", False) == (
+        "P x = 1000000.0: beyond the ±100000 mm a drawing may span")
+
+
+def _doc():
+    doc = ezdxf.new("R2010")
+    return doc, doc.modelspace()
+
+
+def test_every_entity_kind_of_a_drawing_is_bounded():
+    doc, msp = _doc()
+    msp.add_line((0, 0), (10, 0))
+    msp.add_point((1, 2))
+    msp.add_lwpolyline([(0, 0, 0, 0, 1.0), (2, 0, 0, 0, 0.0)], format="xyseb")
+    msp.add_polyline2d([(0, 0), (5, 0), (5, 5)], close=True)
+    msp.add_circle((1, 1), 5.0)
+    msp.add_arc((0, 0), 3.0, 0, 90)
+    msp.add_ellipse((0, 0), major_axis=(10, 0), ratio=1.0)
+    msp.add_spline([(0, 0), (1, 1), (2, 0), (3, 1)])
+    formats.check_dxf_doc(doc)
+
+    def refused_one(add) -> str:
+        d, m = _doc()
+        add(m)
+        return _refused(formats.check_dxf_doc, d)
+
+    span = "beyond the ±100000 mm a drawing may span"
+    assert refused_one(lambda m: m.add_line((0, 0), (1e6, 0))) == f"LINE #1 end = 1000000.0: {span}"
+    assert refused_one(lambda m: m.add_point((0, 0, -2e5))) == f"POINT #1 location = -200000.0: {span}"
+    assert refused_one(lambda m: (m.add_line((0, 0), (1, 0)), m.add_circle((0, 2e5), 1.0))) == (
+        f"CIRCLE #2 centre y = 200000.0: {span}")
+    assert refused_one(lambda m: m.add_arc((0, 0, 3e5), 1.0, 0, 90)) == f"ARC #1 centre z = 300000.0: {span}"
+    assert refused_one(lambda m: m.add_circle((0, 0), 2e5)) == f"CIRCLE #1 radius = 200000.0: {span}"
+    assert refused_one(lambda m: m.add_ellipse((0, 0), major_axis=(2e5, 0), ratio=0.5)) == (
+        f"ELLIPSE #1 major axis = 200000.0: {span}")
+    assert refused_one(lambda m: m.add_ellipse((0, 0), major_axis=(8e4, 8e4), ratio=0.5)) == (
+        f"ELLIPSE #1 major axis = {math.hypot(8e4, 8e4)!r}: {span}")
+    assert refused_one(lambda m: m.add_ellipse((4e5, 0), major_axis=(1, 0), ratio=0.5)) == (
+        f"ELLIPSE #1 centre x = 400000.0: {span}")
+
+    def ellipse_of_ratio(ratio: str):
+        """ezdxf clamps a ratio set in code to (0, 1]; a file read as written keeps it"""
+        d, m = _doc()
+        m.add_ellipse((0, 0), major_axis=(10, 0), ratio=0.123456)
+        text = io.StringIO()
+        d.write(text)
+        return ezdxf.read(io.StringIO(text.getvalue().replace("0.123456", ratio)))
+
+    for bad in ("0.0", "1.0000001", "-0.5", "nan", "1.5"):
+        assert _refused(formats.check_dxf_doc, ellipse_of_ratio(bad)) == (
+            f"ELLIPSE #1 ratio = {float(bad)!r}: not within (0, 1]")
+    formats.check_dxf_doc(ellipse_of_ratio("1.0"))
+    formats.check_dxf_doc(ellipse_of_ratio("1e-9"))
+    assert refused_one(lambda m: m.add_spline([(0, 0), (1, 2e5)])) == f"SPLINE #1 point = 200000.0: {span}"
+
+    def spline(m, degree=3, knot=None):
+        s = m.add_spline(fit_points=None)
+        s.control_points = [(0, 0, 0), (1, 1, 0), (2, 0, 0), (3, 1, 0)]
+        s.dxf.degree = degree
+        s.knots = [0, 0, 0, 0, 1, 1, 1, 1] if knot is None else [0, 0, 0, 0, knot, 1, 1, 1]
+        return s
+
+    assert refused_one(lambda m: spline(m, degree=12)) == "SPLINE #1 degree = 12: not within 1 ... 11"
+    # degree 0 only from a file (ezdxf refuses it in code)
+    d, m = _doc()
+    spline(m, degree=3)
+    text = io.StringIO()
+    d.write(text)
+    d0 = ezdxf.read(io.StringIO(text.getvalue().replace("AcDbSpline\n 70\n0\n 71\n3\n", "AcDbSpline\n 70\n0\n 71\n0\n")))
+    assert _refused(formats.check_dxf_doc, d0) == "SPLINE #1 degree = 0: not within 1 ... 11"
+    assert refused_one(lambda m: spline(m, knot=float("inf"))) == "SPLINE #1 knot = inf: not finite"
+    d, m = _doc()
+    spline(m, degree=11)
+    spline(m, degree=1)
+    formats.check_dxf_doc(d)
+
+    def poly3(m, z):
+        p = m.add_polyline3d([(0, 0, 0), (1, 0, z)])
+        return p
+
+    assert refused_one(lambda m: poly3(m, 2e5)) == f"POLYLINE #1 z = 200000.0: {span}"
+    assert refused_one(lambda m: m.add_polyline2d([(0, 0), (2e5, 0)])) == f"POLYLINE #1 x = 200000.0: {span}"
+
+
+def test_a_drawing_whose_curves_flatten_past_the_limit_is_refused_at_the_entity_that_passes_it():
+    """Circles of 1000 mm: each flattens to ceil(2 pi / da) + 1 points; as many as fit in DXF_POINTS_MAX pass, one more
+    is refused, naming itself."""
+    r = 1000.0
+    each = math.ceil(2 * math.pi / (2 * math.acos(1 - CHORD_TOL_MM / r))) + 1
+    fit = DXF_POINTS_MAX // each
+    doc, msp = _doc()
+    for _ in range(fit):
+        msp.add_circle((0, 0), r)
+    formats.check_dxf_doc(doc)
+    msp.add_circle((0, 0), r)
+    assert _refused(formats.check_dxf_doc, doc) == (
+        f"its curves flatten to more than {DXF_POINTS_MAX} points (at CIRCLE #{fit + 1})")
+    # a spline counts 64 points a control or fit point (and at least 64)
+    doc, msp = _doc()
+    n = DXF_POINTS_MAX // 64
+    s = msp.add_spline(fit_points=None)
+    s.control_points = [(k * 1e-3, 0, 0) for k in range(n)]
+    formats.check_dxf_doc(doc)
+    s2 = msp.add_spline(fit_points=None)
+    s2.control_points = []
+    assert _refused(formats.check_dxf_doc, doc) == (
+        f"its curves flatten to more than {DXF_POINTS_MAX} points (at SPLINE #2)")
+
+
+# ------------------------------------------------------------------------------------------- files
+import hashlib  # noqa: E402
+import json  # noqa: E402
+import os  # noqa: E402
+
+from propulsor.checks import files  # noqa: E402
+from propulsor.errors import EnvironmentFailure  # noqa: E402
+from propulsor.policy import CHECK_MEMORY_CEILING  # noqa: E402
+
+
+def _box_stl(path, extents=(2.0, 3.0, 4.0)):
+    path.write_bytes(trimesh.creation.box(extents=extents).export(file_type="stl"))
+    return path
+
+
+def _manifest(folder, entries, checks=(), **extra):
+    data = {"part": "t", "files": entries, "checks": list(checks), **extra}
+    (folder / "manifest.json").write_text(json.dumps(data))
+    return folder / "manifest.json"
+
+
+def _entry(folder, rel, **kw):
+    data = (folder / rel).read_bytes()
+    return {"path": rel, "bytes": len(data), "sha256": hashlib.sha256(data).hexdigest(), **kw}
+
+
+def test_manifests_are_read_once_until_they_change(tmp_path):
+    files._MANIFESTS.clear()
+    assert files.load_manifest(tmp_path / "none.json") is None
+    (tmp_path / "bad.json").write_text("{not json")
+    assert files.load_manifest(tmp_path / "bad.json") is None
+    (tmp_path / "list.json").write_text("[1, 2]")
+    assert files.load_manifest(tmp_path / "list.json") == [1, 2]
+    m = _manifest(tmp_path, [])
+    a = files.load_manifest(m)
+    assert a == {"part": "t", "files": [], "checks": []} and files.load_manifest(m) is a
+    m.write_text(json.dumps({"part": "changed", "files": [], "checks": []}))
+    assert files.load_manifest(m)["part"] == "changed"
+    # more than 64 remembered: the memory starts again
+    files._MANIFESTS.clear()
+    for k in range(65):
+        (tmp_path / f"m{k}.json").write_text("{}")
+        files.load_manifest(tmp_path / f"m{k}.json")
+    assert len(files._MANIFESTS) == 65
+    (tmp_path / "m65.json").write_text("{}")
+    files.load_manifest(tmp_path / "m65.json")
+    assert len(files._MANIFESTS) == 1
+
+
+def test_the_manifest_entry_of_a_file_is_the_nearest_manifests_with_numbers_only(tmp_path):
+    files._MANIFESTS.clear()
+    (tmp_path / "sub").mkdir()
+    f = tmp_path / "sub" / "gear.stl"
+    assert files._manifest_entry(f) == {}
+    _manifest(tmp_path, [{"path": "sub/gear.stl", "volume_mm3": 12.5, "genus": True, "bodies": "1", "bytes": 7,
+                          "note": "kept"}, "not an entry"], derived={"gear_volume_mm3": 99.0})
+    assert files._manifest_entry(f) == {"path": "sub/gear.stl", "volume_mm3": 12.5, "bytes": 7, "note": "kept"}
+    # the derived '<stem>_volume_mm3' where the entry has none (or a non-number)
+    files._MANIFESTS.clear()
+    _manifest(tmp_path, [{"path": "sub/gear.stl", "volume_mm3": "12.5"}], derived={"gear_volume_mm3": 99.0})
+    assert files._manifest_entry(f) == {"path": "sub/gear.stl", "volume_mm3": 99.0}
+    files._MANIFESTS.clear()
+    _manifest(tmp_path, [{"path": "sub/gear.stl"}], derived={"gear_volume_mm3": "99"})
+    assert files._manifest_entry(f) == {"path": "sub/gear.stl"}
+    files._MANIFESTS.clear()
+    _manifest(tmp_path, [], derived={"gear_volume_mm3": 5})
+    assert files._manifest_entry(f) == {"volume_mm3": 5}
+    files._MANIFESTS.clear()
+    _manifest(tmp_path, [], derived=[1])
+    assert files._manifest_entry(f) == {}
+    # a nearer manifest wins, even a malformed one (its own check reports it)
+    files._MANIFESTS.clear()
+    (tmp_path / "sub" / "manifest.json").write_text(json.dumps({"files": {"gear.stl": {}}}))
+    assert files._manifest_entry(f) == {}
+    (tmp_path / "sub" / "manifest.json").write_text(json.dumps({"files": [{"path": "gear.stl", "genus": 2}]}))
+    files._MANIFESTS.clear()
+    assert files._manifest_entry(f) == {"path": "gear.stl", "genus": 2}
+    (tmp_path / "sub" / "manifest.json").write_text("[]")
+    files._MANIFESTS.clear()
+    assert files._manifest_entry(f) == {}
+
+
+def test_a_mesh_file_is_checked_against_its_manifest_entry(tmp_path):
+    files._MANIFESTS.clear()
+    stl = _box_stl(tmp_path / "box.stl")
+    tm = trimesh.creation.box(extents=(2.0, 3.0, 4.0))
+    (tmp_path / "box.3mf").write_bytes(tm.export(file_type="3mf"))
+    for name in ("box.stl", "box.3mf"):
+        cs = files.check_mesh_file(tmp_path / name)
+        assert cs[0] == Check(f"{name}: loads", True, True, True, "", "12 triangles, 8 vertices")
+        assert all(c.passed for c in cs) and len(cs) == 6
+        assert [c.name for c in cs][1:] == [f"{name}: {n}" for n in (
+            "edges not shared by exactly 2 faces", "directed edges used twice", "mesh volume", "bodies",
+            "self-intersecting triangle pairs")]
+    _manifest(tmp_path, [{"path": "box.stl", "volume_mm3": 24.6, "genus": 1, "bodies": 2}])
+    cs = {c.name: c for c in files.check_mesh_file(stl)}
+    assert not cs["box.stl: bodies"].passed and cs["box.stl: bodies"].limit == 2
+    assert not cs["box.stl: genus"].passed and cs["box.stl: genus"].limit == 1
+    vb = cs["box.stl: volume vs B-rep"]
+    # an STL records no deflection: the limit's 0.01 mm x 52 mm^2 = 0.52 mm^3 (or 1e-3 of the volume)
+    assert not vb.passed and vb.limit["expected"] == 24.6 and vb.limit["rel_tol"] == 1e-3
+    files._MANIFESTS.clear()
+    _manifest(tmp_path, [{"path": "box.stl", "volume_mm3": 24.5}])
+    assert {c.name: c for c in files.check_mesh_file(stl)}["box.stl: volume vs B-rep"].passed
+
+
+def test_a_mesh_file_that_does_not_load_is_one_failed_check(tmp_path):
+    (tmp_path / "short.stl").write_bytes(b"0123456789")
+    assert files.check_mesh_file(tmp_path / "short.stl") == [Check(
+        "short.stl: loads", False, False, True, "", "10 bytes: shorter than a binary STL header (84 bytes) and not ASCII")]
+    (tmp_path / "NOT.3MF").write_bytes(b"plain text")
+    assert files.check_mesh_file(tmp_path / "NOT.3MF") == [Check(
+        "NOT.3MF: loads", False, False, True, "", "not a zip archive: File is not a zip file")]
+    (tmp_path / "empty.stl").write_bytes(b"\0" * 84)
+    assert files.check_mesh_file(tmp_path / "empty.stl") == [Check(
+        "empty.stl: loads", False, False, True, "", "ValueError: no triangles")]
+
+
+def _dxf(path, loops=(((0, 0), (10, 0), (10, 5)),), insunits=4, layer="CUT", closed=True, extra=None):
+    doc = ezdxf.new("R2010")
+    doc.header["$INSUNITS"] = insunits
+    msp = doc.modelspace()
+    for pts in loops:
+        msp.add_lwpolyline(pts, close=closed, dxfattribs={"layer": layer})
+    if extra:
+        extra(msp)
+    doc.saveas(path)
+    return path
+
+
+def test_a_dxf_is_in_millimetres_with_closed_loops_to_cut(tmp_path):
+    cs = files.check_dxf_file(_dxf(tmp_path / "p.dxf"))
+    assert cs == [
+        Check("p.dxf: DXF parses", True, True, True, "", "DXF AC1024"),
+        Check("p.dxf: $INSUNITS", True, 4, 4, "", "drawing units millimetres (4)"),
+        Check("p.dxf: closed loops on CUT", True, 1.0, 1, "", "the outline to cut"),
+        Check("p.dxf: open entities on CUT", True, 0, 0, "", "every cut contour closed"),
+        Check("p.dxf: degenerate CUT loops", True, 0, 0, "", "each loop >= 3 points, non-zero area"),
+    ]
+    by = lambda p: {c.name.split(": ", 1)[1]: c for c in files.check_dxf_file(p)}  # noqa: E731
+    c = by(_dxf(tmp_path / "in.dxf", insunits=1))
+    assert not c["$INSUNITS"].passed and c["$INSUNITS"].value == 1
+    c = by(_dxf(tmp_path / "open.dxf", closed=False))
+    assert not c["open entities on CUT"].passed and c["open entities on CUT"].value == 1
+    assert not c["closed loops on CUT"].passed and c["closed loops on CUT"].value == 0
+    c = by(_dxf(tmp_path / "ref.dxf", layer="REF"))
+    assert not c["closed loops on CUT"].passed and c["open entities on CUT"].passed
+    # a loop of collinear points has no area; the other is fine
+    c = by(_dxf(tmp_path / "flat.dxf", loops=(((0, 0), (10, 0), (20, 0)), ((0, 0), (1, 0), (0, 1)))))
+    assert c["degenerate CUT loops"].value == 1 and not c["degenerate CUT loops"].passed
+    assert c["closed loops on CUT"].value == 2
+    c = by(_dxf(tmp_path / "two.dxf", loops=(((0, 0), (10, 0)),)))
+    assert c["degenerate CUT loops"].value == 1
+    far = _dxf(tmp_path / "far.dxf", extra=lambda m: m.add_circle((0, 0), 2e5))
+    assert files.check_dxf_file(far) == [Check("far.dxf: DXF within bounds", False, False, True, "",
+                                               "CIRCLE #2 radius = 200000.0: beyond the ±100000 mm a drawing may span")]
+    (tmp_path / "junk.dxf").write_text("0\nSECTION\n2\nNOPE\n")
+    c = files.check_dxf_file(tmp_path / "junk.dxf")
+    assert len(c) == 1 and c[0].name == "junk.dxf: DXF parses" and not c[0].passed and ": " in c[0].message
+    big = tmp_path / "big.dxf"
+    with open(big, "wb") as fh:
+        fh.truncate(READ_LIMIT_BYTES["dxf"] + 1)
+    assert files.check_dxf_file(big) == [Check("big.dxf: DXF parses", False, False, True, "",
+                                               f"{READ_LIMIT_BYTES['dxf'] + 1} bytes: larger than the "
+                                               f"{READ_LIMIT_BYTES['dxf']} bytes a DXF file may have")]
+
+
+def _folder(tmp_path):
+    d = tmp_path / "out"
+    (d / "sub").mkdir(parents=True)
+    (d / "a.csv").write_text("x\n1\n")
+    (d / "sub" / "b.txt").write_text("hello")
+    return d
+
+
+def test_a_manifest_lists_exactly_the_files_with_their_sizes_and_hashes(tmp_path):
+    d = _folder(tmp_path)
+    m = _manifest(d, [_entry(d, "a.csv"), _entry(d, "sub/b.txt")], checks=[{"name": "c1", "passed": True}])
+    assert files.check_manifest_file(m) == [
+        Check("manifest.json: parses", True, True, True, "", "2 files listed"),
+        Check("manifest.json: listed files missing", True, 0, 0, "", "all listed files exist"),
+        Check("manifest.json: listed files unreadable", True, 0, 0, "",
+              "all listed files are regular files within the limit"),
+        Check("manifest.json: size mismatches", True, 0, 0, "", "sizes as recorded"),
+        Check("manifest.json: sha256 mismatches", True, 0, 0, "", "hashes as recorded"),
+        Check("manifest.json: unlisted files", True, 0, 0, "", "every file listed"),
+        Check("manifest.json: recorded failed checks", True, 0, 0, "", "all recorded checks passed"),
+    ]
+
+
+def test_a_manifest_names_every_file_that_differs(tmp_path):
+    d = _folder(tmp_path)
+    (d / "c.txt").write_text("same size")
+    (d / "d.txt").write_text("d")
+    entries = [_entry(d, "a.csv"), _entry(d, "sub/b.txt"), _entry(d, "c.txt")]
+    entries[0]["bytes"] += 1                           # recorded size differs: a size and a hash mismatch
+    entries[1]["sha256"] = "0" * 64                     # same size, another hash
+    entries.append({"path": "gone.txt", "bytes": 1, "sha256": ""})
+    entries.append({"path": "sub", "bytes": 1})          # a folder where a file is listed
+    entries.append(dict(_entry(d, "c.txt"), bytes=True))  # a bool is no size
+    checks = [{"name": "ok", "passed": True}, {"name": "bad", "passed": False}, {"name": "known", "passed": 0},
+              "junk"]
+    m = _manifest(d, entries, checks=checks, expected_failures=["known", 3])
+    c = {x.name.split(": ", 1)[1]: x for x in files.check_manifest_file(m)}
+    assert c["parses"].message == "6 files listed"
+    assert (c["listed files missing"].value, c["listed files missing"].message) == (1, "missing: gone.txt")
+    assert c["listed files unreadable"].value == 1
+    assert c["listed files unreadable"].message == "sub (is a folder, not a regular file (not opened))"
+    assert (c["size mismatches"].value, c["size mismatches"].message) == (2, "a.csv, c.txt")
+    assert (c["sha256 mismatches"].value, c["sha256 mismatches"].message) == (3, "a.csv, sub/b.txt, c.txt")
+    assert (c["unlisted files"].value, c["unlisted files"].message) == (1, "d.txt")
+    assert c["recorded failed checks"].value == 2
+    assert c["recorded failed checks"].message == (
+        "bad; 'junk' (1 documented as expected failures in the part file: known)")
+    assert not any(x.passed for k, x in c.items() if k != "parses")
+
+
+def test_a_manifest_that_is_not_one_is_one_failed_check_saying_why(tmp_path):
+    d = _folder(tmp_path)
+
+    def first(data) -> Check:
+        (d / "manifest.json").write_text(json.dumps(data) if not isinstance(data, str) else data)
+        cs = files.check_manifest_file(d / "manifest.json")
+        assert len(cs) == 1 and not cs[0].passed and cs[0].name == "manifest.json: parses"
+        return cs[0].message
+
+    assert first([]) == "is a JSON list, not an object"
+    assert first({}) == ("'part' is missing or not a str; 'files' is missing or not a list; "
+                         "'checks' is missing or not a list")
+    assert first({"part": "t", "files": [], "checks": [], "expected_failures": "x"}) == (
+        "'expected_failures' is missing or not a list")
+    assert first({"part": "t", "files": [{"path": ""}, {}, 3, {"path": "/etc/passwd"}, {"path": "../x"},
+                                         {"path": "sub/../../x"}], "checks": []}) == (
+        "files[0] has no 'path'; files[1] has no 'path'; files[2] has no 'path'; files[3] path '/etc/passwd' leaves "
+        "the folder; files[4] path '../x' leaves the folder; files[5] path 'sub/../../x' leaves the folder")
+    assert first("{oops").startswith("JSONDecodeError: Expecting property name")
+    (d / "manifest.json").write_bytes(b"\xff\xfe")
+    cs = files.check_manifest_file(d / "manifest.json")
+    assert cs[0].message.startswith("UnicodeDecodeError: 'utf-8' codec can't decode byte 0xff")
+
+
+def test_check_file_turns_any_failure_of_a_checker_into_one_failed_check(tmp_path, monkeypatch):
+    assert files.check_file(tmp_path / "notes.txt") == []
+    p = tmp_path / "x.stl"
+
+    def raising(exc):
+        def fn(path):
+            raise exc
+        return fn
+
+    for exc, msg in ((ValueError("bad number"), "ValueError: bad number"),
+                     (Refused("is a FIFO"), "is a FIFO"),
+                     (MemoryError(), f"out of memory: checking it needs more than the ceiling of "
+                                     f"{CHECK_MEMORY_CEILING >> 20} MiB")):
+        monkeypatch.setitem(files.CHECKERS, ".stl", raising(exc))
+        assert files.check_file(p) == [Check("x.stl: readable", False, False, True, "", msg)]
+    monkeypatch.setitem(files.CHECKERS, ".stl", raising(EnvironmentFailure(p, 5, "cannot read")))
+    with pytest.raises(EnvironmentFailure):
+        files.check_file(p)
+    assert files._checker("manifest.json") is files.check_manifest_file
+    assert files._checker("A.STEP") is files.check_step_file and files._checker("b.Stp") is files.check_step_file
+    assert files._checker("manifest.json.bak") is None and files._checker("x.glb") is files.check_glb_file
+
+
+def test_check_path_walks_a_folder_in_order_and_reports_progress(tmp_path):
+    d = tmp_path / "out"
+    d.mkdir()
+    _box_stl(d / "b.stl")
+    _dxf(d / "a.dxf")
+    (d / "readme.txt").write_text("x")
+    (tmp_path / "outside.stl").write_text("x")
+    os.symlink(tmp_path / "outside.stl", d / "link.stl")
+    said = []
+
+    class Progress:
+        def __call__(self, text):
+            said.append(("step", text))
+
+        def count(self, phase, done, total, unit):
+            said.append((phase, done, total, unit))
+
+    res = files.check_path(d, progress=Progress())
+    assert list(res) == [str(d / "a.dxf"), str(d / "b.stl"), str(d / "link.stl")]
+    assert res[str(d / "link.stl")] == [Check("link.stl: regular file in the folder", False, False, True, "",
+                                              "is a symbolic link leading outside the folder checked")]
+    phase = f"check: 2 file(s) to check under {d}"
+    assert said == [("step", f"check: reading {d}"), (phase, 0, 2, "file"), (phase, 1, 2, "file"),
+                    (phase, 2, 2, "file")]
+    assert files.check_path(d / "b.stl") == {str(d / "b.stl"): files.check_file(d / "b.stl")}
+    assert files.check_path(d / "readme.txt") == {}
+    assert files.check_path(d / "nothing") == {str(d / "nothing"): [
+        Check(f"{d / 'nothing'}: exists", False, False, True, "", "no such file or folder")]}
+    # a plain callable without count: no counts; none at all: quiet
+    plain = []
+    files.check_path(d, progress=plain.append)
+    assert plain == [f"check: reading {d}"]
+    assert files.check_path(d) == res
+    # the path given is followed when it is a link itself
+    os.symlink(d / "b.stl", tmp_path / "given.stl")
+    assert files.check_path(tmp_path / "given.stl") == {str(tmp_path / "given.stl"): files.check_file(d / "b.stl")}
+
+
+def test_one_line_escapes_what_could_move_the_cursor():
+    assert files.one_line("plain ünïcode — text") == "plain ünïcode — text"
+    assert files.one_line("a\nb\tc\x1b[2J") == "a\\x0ab\\x09c\\x1b[2J"
+    assert files.one_line("line\u2028para\u2029rtl\u202e") == "line\\u2028para\\u2029rtl\\u202e"
+    assert files.one_line("tag\U000e0041") == "tag\\U000e0041"
+    assert files.one_line("\x85\x7f") == "\\x85\\x7f"
+    assert files.one_line(12) == "12"
+
+
+def test_results_are_printed_one_line_a_file_then_the_failures_and_a_summary():
+    ok = Check("a: x", True, 1, 1, "", "fine")
+    bad = Check("b: y", False, 2, 1, "mm", "too\nlong")
+    res = {"out/a.stl": [ok, ok], "out/b\n.dxf": [ok, bad]}
+    assert files.summary(res) == (4, 1)
+    assert files.format_results(res) == (
+        "PASS out/a.stl (2 checks)\n"
+        "FAIL out/b\\x0a.dxf (2 checks)\n"
+        "    [FAIL] b: y: value 2 mm, limit 1 mm - too\\x0along\n"
+        "2 files, 4 checks, 1 failed")
+    assert files.format_results(res, verbose=True).splitlines()[1:3] == [
+        "    [PASS] a: x: value 1, limit 1 - fine", "    [PASS] a: x: value 1, limit 1 - fine"]
+    assert files.format_results({}) == "0 files, 0 checks, 0 failed"
