@@ -171,7 +171,7 @@ def run_mutmut(scratch: Path, jobs: int, names: list[str]) -> float:
     mutmut = Path(sys.executable).with_name("mutmut")
     env = dict(os.environ)
     env.pop("PYTEST_XDIST_WORKER", None)
-    env["PROPULSOR_OCCT_SERIAL"] = "1"  # tests/conftest.py: BRepMesh on the calling thread (mutmut forks)
+    env["PROPULSOR_OCCT_SERIAL"] = "1"  # tests/conftest.py: OCCT on the calling thread (mutmut forks its workers)
     t0 = time.monotonic()
     with open(scratch / "mutmut.log", "w", encoding="utf-8") as log:
         proc = subprocess.run([str(mutmut), "run", "--max-children", str(jobs), *names], cwd=scratch, env=env,

@@ -14,20 +14,12 @@ import pytest
 from propulsor.cli import main
 
 # mutation testing (mutation/run.py) forks a worker per mutant from a process that has already run the tests, and
-# OCCT's thread pool does not survive a fork (export/mesh.py): a forked worker that meshes in parallel waits forever.
-# There, BRepMesh runs on the calling thread (the same triangulation).
+# OCCT's thread pool does not survive a fork (export/mesh.py): a forked worker that meshes or runs a boolean in
+# parallel waits forever.  There, OCCT's default pool gets one thread (the calling one: the same results).
 if os.environ.get("PROPULSOR_OCCT_SERIAL") == "1":
-    from propulsor.solids import tessellate as _tessellate
+    from OCP.OSD import OSD_ThreadPool
 
-    _mesh_shape, _refine_faces = _tessellate.mesh_shape, _tessellate.refine_faces
-
-    def _mesh_shape_serial(shape, chord_tol, angular_tol, parallel, chord_limit=None):
-        return _mesh_shape(shape, chord_tol, angular_tol, False, chord_limit)
-
-    def _refine_faces_serial(shape, chord_tol, angular_tol, parallel, chord_limit):
-        return _refine_faces(shape, chord_tol, angular_tol, False, chord_limit)
-
-    _tessellate.mesh_shape, _tessellate.refine_faces = _mesh_shape_serial, _refine_faces_serial
+    OSD_ThreadPool.DefaultPool_s(1)
 
 
 @pytest.fixture(scope="module")
