@@ -882,3 +882,431 @@ def test_results_are_printed_one_line_a_file_then_the_failures_and_a_summary():
     assert files.format_results(res, verbose=True).splitlines()[1:3] == [
         "    [PASS] a: x: value 1, limit 1 - fine", "    [PASS] a: x: value 1, limit 1 - fine"]
     assert files.format_results({}) == "0 files, 0 checks, 0 failed"
+
+
+# ------------------------------------------------------------------------------------------- pages
+import base64  # noqa: E402
+
+from propulsor.checks import pages  # noqa: E402
+from propulsor.export.html import TABLE_SORT_SCRIPT, _sha256, content_security_policy, page, script_hash  # noqa: E402
+
+
+def _glb_bytes():
+    scene = trimesh.Scene()
+    scene.add_geometry(trimesh.creation.box(extents=(0.01, 0.02, 0.03)), node_name="box")
+    return scene.export(file_type="glb")
+
+
+def _data_block(data: bytes, ident="0123456789abcdef") -> str:
+    return (f'<script type="application/octet-stream" id="glb-{ident}" class="propulsor-glb">'
+            f"{base64.b64encode(data).decode()}</script>")
+
+
+def test_a_page_propulsor_writes_passes_and_counts_its_models():
+    text = page("t", "<p>hi</p>" + _data_block(_glb_bytes()), script=TABLE_SORT_SCRIPT)
+    assert pages.page_problems(text) == ("", 1)
+    assert pages.page_problems(page("t", "<p>no script</p>")) == ("", 0)
+    two = page("t", _data_block(_glb_bytes()) + "<p>x</p>" + _data_block(_glb_bytes(), "fedcba9876543210"))
+    assert pages.page_problems(two) == ("", 2)
+    assert script_hash(TABLE_SORT_SCRIPT) in pages.known_scripts() and len(pages.known_scripts()) == 2
+
+
+def _with_policy(csp: str, body: str = "") -> str:
+    good = page("t", body)
+    head = pages._HEAD.match(good)
+    return good[:head.start(1)] + csp + good[head.end(1):]
+
+
+def test_the_pages_policy_must_be_exactly_the_one_propulsor_writes():
+    sheet = _sha256("x")
+    known = script_hash(TABLE_SORT_SCRIPT)
+    base = {"default-src": "'none'", "img-src": "'self'", "style-src": sheet, "script-src": known,
+            "base-uri": "'none'", "form-action": "'none'"}
+
+    def policy(**change):
+        d = dict(base)
+        for k, v in change.items():
+            k = k.replace("_", "-")
+            if v is None:
+                d.pop(k)
+            else:
+                d[k] = v
+        return "; ".join(f"{k} {v}".strip() for k, v in d.items())
+
+    assert pages._policy_problem(policy()) == ""
+    assert pages._policy_problem(policy() + "; ;") == ""  # empty parts are nothing
+    assert pages._policy_problem(policy(script_src="'none'")) == ""
+    assert pages._policy_problem(policy().replace("default-src", "DEFAULT-SRC")) == ""
+    assert pages._policy_problem(policy() + "; img-src 'self'") == "its policy names img-src twice"
+    assert pages._policy_problem(policy(default_src="*")) == "its policy's default-src is '*', not 'none'"
+    assert pages._policy_problem(policy(img_src="'self' data:")) == "its policy's img-src is \"'self' data:\", not 'self'"
+    assert pages._policy_problem(policy(base_uri="")) == "its policy's base-uri is '', not 'none'"
+    assert pages._policy_problem(policy(style_src=sheet + " 'unsafe-inline'")) == (
+        "its policy's style-src allows more than its own style sheet")
+    assert pages._policy_problem(policy(style_src="")) == "its policy's style-src allows more than its own style sheet"
+    assert pages._policy_problem(policy(style_src=sheet + " " + _sha256("y"))) == ""
+    other = _sha256("alert(1)")
+    assert pages._policy_problem(policy(script_src=f"{known} {other}")) == (
+        f"its policy's script-src allows {other}, not one of propulsor's scripts")
+    assert pages._policy_problem(policy(script_src="")) == (
+        "its policy's script-src allows nothing named, not one of propulsor's scripts")
+    assert pages._policy_problem(policy() + "; connect-src *") == "its policy has connect-src, which propulsor does not write"
+    assert pages._policy_problem(policy(form_action=None, base_uri=None)) == "its policy lacks base-uri"
+    assert pages._policy_problem(policy(script_src=None)) == "its policy lacks script-src"
+    assert pages._policy_problem(policy(style_src=None)) == "its policy lacks style-src"
+    assert pages._policy_problem("") == "its policy lacks base-uri"
+    # what page() writes
+    assert pages._policy_problem(content_security_policy("body{}", "\n" + TABLE_SORT_SCRIPT + "\n")) == ""
+    assert pages.page_problems(_with_policy(policy(default_src="*"))) == (
+        "its policy's default-src is '*', not 'none'", 0)
+
+
+def test_every_script_of_a_page_is_propulsors_or_a_sound_model():
+    def at(text, snippet):
+        return text.index(snippet)
+
+    t = page("t", "<p>a</p><script>alert(1)</script>")
+    assert pages.page_problems(t) == (f"an inline script at character {at(t, '<script>alert')} is not one of propulsor's", 0)
+    t = page("t", _data_block(_glb_bytes()) + "<SCRIPT src=x.js></script>")
+    assert pages.page_problems(t) == (
+        f"a script element propulsor does not write at character {at(t, '<SCRIPT')}: <SCRIPT src=x.js>", 1)
+    long_tag = '<script type="module" data-x="' + "y" * 80 + '">'
+    t = page("t", long_tag + "</script>")
+    assert pages.page_problems(t) == (
+        f"a script element propulsor does not write at character {at(t, long_tag)}: {long_tag[:60]}", 0)
+    t = page("t", _data_block(b"not a glb at all"))
+    why, n = pages.page_problems(t)
+    assert why.startswith(f"the model data at character {at(t, '<script type')} is a GLB the 3D view may not draw: ")
+    assert n == 0
+    t = page("t", '<script type="application/octet-stream" id="glb-0123456789abcdef" class="propulsor-glb">'
+                  "***</script>")
+    assert pages.page_problems(t) == (f"the model data at character {at(t, '<script type')} is not base64", 0)
+    t = page("t", "<p>x</p><script>" + "\n" + TABLE_SORT_SCRIPT + "\n")
+    assert pages.page_problems(t) == (f"a script at character {at(t, '<script>')} is not closed", 0)
+    # a data block's id must be 16 hex digits
+    bad_id = _data_block(_glb_bytes()).replace("glb-0123456789abcdef", "glb-0123456789ABCDEF")
+    t = page("t", bad_id)
+    assert pages.page_problems(t)[0].startswith("a script element propulsor does not write at character ")
+    assert pages.page_problems("<html>" + page("t", "")) == (
+        "it does not begin with propulsor's Content-Security-Policy", 0)
+
+
+def test_a_page_file_is_one_check(tmp_path):
+    p = tmp_path / "report.html"
+    p.write_text(page("t", _data_block(_glb_bytes())), encoding="utf-8")
+    assert pages.check_html_file(p) == [Check("report.html: runs only propulsor's scripts", True, True, True, "",
+                                              "its policy and scripts are propulsor's; 1 model(s) sound")]
+    p.write_text(page("t", "<script>x</script>"), encoding="utf-8")
+    c = pages.check_html_file(p)[0]
+    assert not c.passed and c.message.startswith("an inline script at character ")
+    p.write_bytes(b"\xff<html>")
+    assert pages.check_html_file(p) == [Check("report.html: runs only propulsor's scripts", False, False, True, "",
+                                              "not UTF-8 (invalid start byte)")]
+
+
+# ------------------------------------------------------------------------------------------- B-rep, STEP, GLB
+import cadquery as cq  # noqa: E402
+
+from propulsor.checks import brep  # noqa: E402
+from propulsor.export.step import write_assembly_step, write_step  # noqa: E402
+
+
+def test_brep_checks_of_a_box_in_full():
+    box = cq.Solid.makeBox(2.0, 3.0, 4.0)
+    cs = brep.brep_checks(box, "b")
+    assert [c.name for c in cs] == ["b: BRepCheck_Analyzer valid", "b: solids", "b: open shells", "b: B-rep volume",
+                                    "b: exact volume vs triangulated"]
+    assert all(c.passed for c in cs)
+    assert cs[0] == Check("b: BRepCheck_Analyzer valid", True, True, True, "", "OCCT topology and geometry check")
+    assert cs[1] == Check("b: solids", True, 1, 1, "", "exactly one solid")
+    assert cs[2] == Check("b: open shells", True, 0, 0, "", "1 shell(s), all closed")
+    assert cs[3].value == pytest.approx(24.0, rel=1e-12) and cs[3].limit == 0.0
+    assert (cs[3].unit, cs[3].message) == ("mm^3", "positive volume (outward faces)")
+    t = brep.triangulated_volume(box)
+    # planar faces triangulate exactly; the deflection is floored at the request
+    assert t.volume_mm3 == pytest.approx(24.0, rel=1e-12) and t.area_mm2 == pytest.approx(52.0, rel=1e-12)
+    assert t.deflection_mm == CHORD_TOL_MM and t.bound_mm3 == pytest.approx(52.0 * CHORD_TOL_MM, rel=1e-12)
+    assert brep.volume_from_triangulation(box) == pytest.approx(24.0, rel=1e-12)
+    assert cs[4].limit == {"expected": pytest.approx(24.0, rel=1e-12), "rel_tol": 1e-3,
+                           "abs_tol": pytest.approx(0.26, rel=1e-12)}
+    assert cs[4].message == ("OCCT volume 24 vs triangulation 24 mm^3: they may differ by the triangulation's deflection "
+                             "0.005 mm times the area 52 mm^2 = 0.26 mm^3 (or 0.001 of the volume); more means OCCT's "
+                             "volume integration failed")
+    # the caller's volume is used as given: 24.3 is 0.3 from the triangulation's 24, past max(0.26, 0.0243)
+    c = brep.brep_checks(box, "b", volume_mm3=24.3)
+    assert c[3].value == 24.3 and not c[4].passed
+    assert brep.brep_checks(box, "b", volume_mm3=24.25)[4].passed
+    assert len(brep.brep_checks(box, "b", cross_check_volume=False)) == 4
+    from OCP.TopoDS import TopoDS_Shape
+
+    assert brep.brep_checks(TopoDS_Shape(), "n") == [Check("n: shape exists", False, False, True, "", "null shape")]
+
+
+def test_brep_checks_count_solids_and_open_shells():
+    a = cq.Solid.makeBox(1.0, 1.0, 1.0)
+    b = cq.Solid.makeBox(1.0, 1.0, 1.0, pnt=cq.Vector(3, 0, 0))
+    cs = {c.name: c for c in brep.brep_checks(cq.Compound.makeCompound([a, b]), "c")}
+    assert cs["c: solids"].value == 2 and not cs["c: solids"].passed
+    assert cs["c: open shells"].message == "2 shell(s), all closed"
+    assert cs["c: B-rep volume"].value == pytest.approx(2.0, rel=1e-12)
+    # a box's shell without its top face: open, and no solid to cross-check
+    faces = [f for f in a.Faces() if f.Center().z < 0.99]
+    shell = cq.Shell.makeShell(faces)
+    cs = {c.name: c for c in brep.brep_checks(shell, "s")}
+    assert cs["s: solids"].value == 0 and cs["s: open shells"].value == 1
+    assert cs["s: open shells"].message == "1 shell(s), all closed" and not cs["s: open shells"].passed
+    assert "s: exact volume vs triangulated" not in cs
+    assert brep.shell_closed(a.Shells()[0].wrapped) and not brep.shell_closed(shell.wrapped)
+
+
+def test_step_round_trip_of_a_box(tmp_path):
+    box = cq.Solid.makeBox(2.0, 3.0, 4.0)
+    p = write_step(box, tmp_path / "box.step", "box")
+    c = brep.step_roundtrip_check(box, p)
+    assert c.name == "box.step: STEP round trip" and c.passed and c.unit == "mm^3"
+    assert c.value == pytest.approx(24.0, rel=1e-12)
+    assert c.limit == {"expected": pytest.approx(24.0, rel=1e-12), "rel_tol": 1e-6, "solids": 1}
+    assert c.message.startswith("1 solid(s) re-imported from box.step; volume 24 vs built 24 mm^3 (relative ")
+    assert brep.step_roundtrip_check(box, p, name="part").name == "part: STEP round trip"
+    # the built volume as the caller has it: 1e-6 of it is the limit, both sides
+    assert brep.step_roundtrip_check(box, p, built_volume=24.0 * (1 + 0.9e-6)).passed
+    assert not brep.step_roundtrip_check(box, p, built_volume=24.0 * (1 + 1.1e-6)).passed
+    assert brep.step_roundtrip_check(box, p, built_volume=24.0 * (1 + 1.1e-6), rel_tol=2e-6).passed
+    assert not brep.step_roundtrip_check(box, p, built_volume=0.0).passed
+    two = cq.Compound.makeCompound([box, cq.Solid.makeBox(1.0, 1.0, 1.0, pnt=cq.Vector(5, 0, 0))])
+    p2 = write_step(two, tmp_path / "two.step", "two")
+    c = brep.step_roundtrip_check(box, p2)
+    assert not c.passed and c.message.startswith("2 solid(s) re-imported from two.step; volume 25 vs built 24")
+    c = brep.step_roundtrip_check(box, tmp_path / "none.step")
+    assert c == Check("none.step: STEP round trip", False, None, {"solids": 1, "rel_tol": 1e-6}, "mm^3",
+                      c.message) and c.message.startswith("STEP re-import failed: ")
+
+
+def test_a_step_file_is_checked_solid_by_solid_against_its_manifest(tmp_path):
+    files._MANIFESTS.clear()
+    ring = cq.Workplane().circle(10.0).circle(4.0).extrude(5.0).val()  # genus 1
+    p = write_step(ring, tmp_path / "ring.step", "ring")
+    exact = math.pi * (10.0 ** 2 - 4.0 ** 2) * 5.0
+    _manifest(tmp_path, [{"path": "ring.step", "volume_mm3": exact, "genus": 1}])
+    cs = files.check_step_file(p)
+    by = {c.name: c for c in cs}
+    assert cs[0] == Check("ring.step: STEP parses", True, True, True, "", "read and transferred by OCCT")
+    assert cs[1] == Check("ring.step: solids", True, 1.0, 1, "", "one or more solids")
+    assert "ring.step: solid 1: solids" not in by  # each item is one solid by construction
+    assert by["ring.step: solid 1: BRepCheck_Analyzer valid"].passed
+    assert by["ring.step: solid 1 mesh: genus"] == Check("ring.step: solid 1 mesh: genus", True, 1, 1, "",
+                                                          "genus from chi = V - E + F = 0")
+    v = by["ring.step: volume vs manifest"]
+    assert v.passed and v.value == pytest.approx(exact, rel=1e-9) and v.limit["rel_tol"] == 1e-6
+    assert all(c.passed for c in cs)
+    files._MANIFESTS.clear()
+    _manifest(tmp_path, [{"path": "ring.step", "volume_mm3": exact * (1 + 2e-6), "genus": 0}])
+    by = {c.name: c for c in files.check_step_file(p)}
+    assert not by["ring.step: volume vs manifest"].passed and not by["ring.step: solid 1 mesh: genus"].passed
+    # two solids: the genus is not asked of either, the volume is their sum
+    two = cq.Compound.makeCompound([ring, cq.Solid.makeBox(1.0, 1.0, 1.0, pnt=cq.Vector(30, 0, 0))])
+    write_step(two, tmp_path / "two.step", "two")
+    files._MANIFESTS.clear()
+    _manifest(tmp_path, [{"path": "two.step", "volume_mm3": exact + 1.0, "genus": 5}])
+    by = {c.name: c for c in files.check_step_file(tmp_path / "two.step")}
+    assert by["two.step: solids"].value == 2 and "two.step: solid 2 mesh: bodies" in by
+    assert "two.step: solid 1 mesh: genus" not in by and by["two.step: volume vs manifest"].passed
+    (tmp_path / "junk.step").write_text("ISO-10303-21;\nnonsense\n")
+    c = files.check_step_file(tmp_path / "junk.step")
+    assert len(c) == 1 and c[0].name == "junk.step: STEP parses" and not c[0].passed
+    assert "/proc/self/fd" not in c[0].message
+
+
+def test_a_glb_is_the_assemblys_components_in_metres(tmp_path):
+    files._MANIFESTS.clear()
+    a = cq.Solid.makeBox(20.0, 30.0, 40.0)
+    b = cq.Solid.makeBox(10.0, 10.0, 10.0)
+    write_assembly_step(tmp_path / "asm.step", [("a", a, (0, 0, 0), 0.0), ("b", b, (50, 0, 0), 0.0)], "asm")
+    scene = trimesh.Scene()
+    scene.add_geometry(trimesh.creation.box(extents=(0.02, 0.03, 0.04)), node_name="a",
+                       transform=trimesh.transformations.translation_matrix((0.01, 0.015, 0.02)))
+    scene.add_geometry(trimesh.creation.box(extents=(0.01, 0.01, 0.01)), node_name="b",
+                       transform=trimesh.transformations.translation_matrix((0.055, 0.005, 0.005)))
+    (tmp_path / "asm.glb").write_bytes(scene.export(file_type="glb"))
+    models = [{"path": "asm.glb", "components": ["b", "a"], "step": "asm.step"}]
+    _manifest(tmp_path, [], media={"models": models})
+    cs = files.check_glb_file(tmp_path / "asm.glb")
+    assert cs[0] == Check("asm.glb: loads", True, True, True, "", "2 mesh nodes")
+    assert cs[1] == Check("asm.glb: nodes are the assembly's components", True, ["a", "b"], ["a", "b"], "",
+                          "one named node per component of the assembly STEP")
+    assert cs[2] == Check("asm.glb: nodes are the STEP's components", True, ["a", "b"], ["a", "b"], "",
+                          "the component occurrences of asm.step")
+    # extent 60 x 30 x 40 mm = 0.06 x 0.03 x 0.04 m
+    assert cs[3].name == "asm.glb: extent vs the STEP in metres" and cs[3].passed and cs[3].value < 1e-9
+    assert cs[3].limit == 1e-4 and cs[3].unit == "m" and len(cs) == 4
+    # the same scene in millimetres is 1000 times too large
+    mm = trimesh.Scene()
+    mm.add_geometry(trimesh.creation.box(extents=(20.0, 30.0, 40.0)), node_name="a")
+    mm.add_geometry(trimesh.creation.box(extents=(10.0, 10.0, 10.0)), node_name="b",
+                    transform=trimesh.transformations.translation_matrix((45.0, 0, 0)))
+    (tmp_path / "asm.glb").write_bytes(mm.export(file_type="glb"))
+    c = files.check_glb_file(tmp_path / "asm.glb")[3]
+    assert not c.passed and c.value == pytest.approx(60.0 - 0.06, rel=1e-9)
+    for step, why in (("../asm.step", "the manifest names '../asm.step', not a file beside asm.glb"),
+                      ("..", "the manifest names '..', not a file beside asm.glb")):
+        files._MANIFESTS.clear()
+        _manifest(tmp_path, [], media={"models": [dict(models[0], step=step)]})
+        assert files.check_glb_file(tmp_path / "asm.glb")[-1] == Check(
+            "asm.glb: assembly STEP in the folder", False, False, True, "", why)
+    files._MANIFESTS.clear()
+    _manifest(tmp_path, [], media={"models": [{"path": "asm.glb", "components": ["a"], "step": "gone.step"}]})
+    cs = files.check_glb_file(tmp_path / "asm.glb")
+    assert len(cs) == 2 and not cs[1].passed and cs[1].value == ["a", "b"]
+    for media in ({"models": "x"}, [], {"models": [{"path": "other.glb", "components": ["q"]}]}):
+        files._MANIFESTS.clear()
+        _manifest(tmp_path, [], media=media)
+        assert len(files.check_glb_file(tmp_path / "asm.glb")) == 1
+    (tmp_path / "asm.glb").write_bytes(b"glTF")
+    c = files.check_glb_file(tmp_path / "asm.glb")
+    assert len(c) == 1 and c[0].name == "asm.glb: loads" and not c[0].passed
+
+
+# ------------------------------------------------------------------------------------------- safe_read, memory
+import errno  # noqa: E402
+import resource  # noqa: E402
+import socket  # noqa: E402
+
+from propulsor.checks import memory, safe_read  # noqa: E402
+from propulsor.policy import HASH_LIMIT_BYTES  # noqa: E402
+
+
+def test_a_regular_file_is_read_whole_within_its_kinds_limit(tmp_path):
+    p = tmp_path / "a.stl"
+    p.write_bytes(b"x" * 100)
+    assert safe_read.read_bytes(p, "stl") == b"x" * 100
+    with safe_read.opened(p, limit=100) as f:
+        assert f.size == 100 and f.path == p
+        assert os.path.samefile(f.lib_path, p) and f.lib_path == f"/proc/self/fd/{f.fd}"
+        assert f.read() == b"x" * 100 and f.read() == b"x" * 100  # from the start each time
+    with pytest.raises(Refused) as e, safe_read.opened(p, limit=99):
+        pass
+    assert str(e.value) == "100 bytes: larger than the 99 bytes this file may have"
+    assert safe_read._too_large(5, 4, "stl") == "5 bytes: larger than the 4 bytes a STL file may have"
+    assert safe_read._too_large(5, 4, "manifest") == "5 bytes: larger than the 4 bytes a manifest may have"
+    assert safe_read._too_large(5, 4, None) == "5 bytes: larger than the 4 bytes this file may have"
+    assert safe_read.limit_of("glb") == READ_LIMIT_BYTES["glb"]
+    big = tmp_path / "big.json"
+    with open(big, "wb") as fh:
+        fh.truncate(READ_LIMIT_BYTES["manifest"] + 1)
+    with pytest.raises(Refused) as e:
+        safe_read.read_bytes(big, "manifest")
+    assert str(e.value) == (f"{READ_LIMIT_BYTES['manifest'] + 1} bytes: larger than the "
+                            f"{READ_LIMIT_BYTES['manifest']} bytes a manifest may have")
+    with open(big, "r+b") as fh:
+        fh.truncate(READ_LIMIT_BYTES["manifest"])
+    assert len(safe_read.read_bytes(big, "manifest")) == READ_LIMIT_BYTES["manifest"]
+
+
+def test_what_is_not_a_regular_file_is_refused_unopened(tmp_path):
+    def why(path, **kw) -> str:
+        with pytest.raises(Refused) as e, safe_read.opened(path, "stl", **kw):
+            pass
+        return str(e.value)
+
+    assert why(tmp_path / "none.stl") == "no such file"
+    assert why(tmp_path) == "is a folder, not a regular file (not opened)"
+    os.mkfifo(tmp_path / "fifo.stl")
+    assert why(tmp_path / "fifo.stl") == "is a FIFO, not a regular file (not opened)"
+    (tmp_path / "real.stl").write_bytes(b"x")
+    os.symlink(tmp_path / "real.stl", tmp_path / "link.stl")
+    assert why(tmp_path / "link.stl") == "is a symbolic link, not a regular file (not opened)"
+    s = socket.socket(socket.AF_UNIX)
+    try:
+        s.bind(str(tmp_path / "sock.stl"))
+        assert why(tmp_path / "sock.stl") == "is a socket, not a regular file (not opened)"
+    finally:
+        s.close()
+    assert why("/dev/null") == "is a character device, not a regular file (not opened)"
+
+
+def test_the_machines_refusals_are_environment_failures_and_the_files_are_refusals():
+    for no in (errno.EACCES, errno.EPERM, errno.EIO, errno.EMFILE, errno.ENFILE, errno.ENOMEM):
+        e = safe_read._os_error(OSError(no, os.strerror(no)), "/x", "cannot read")
+        assert isinstance(e, EnvironmentFailure), no
+    e = safe_read._os_error(OSError(errno.ELOOP, "loop"), "/x", "d")
+    assert isinstance(e, Refused) and str(e) == "is a symbolic link (not followed)"
+    e = safe_read._os_error(OSError(errno.ENOENT, "gone"), "/x", "d")
+    assert isinstance(e, Refused) and str(e) == "no such file"
+    e = safe_read._os_error(OSError(errno.ENAMETOOLONG, "File name too long"), "/x", "d")
+    assert isinstance(e, Refused) and str(e) == "cannot open: [ENAMETOOLONG] File name too long"
+    e = safe_read._os_error(OSError(99999, "odd"), "/x", "d")
+    assert str(e) == "cannot open: [E?] odd"
+
+
+def test_a_file_is_hashed_only_at_its_recorded_size(tmp_path):
+    p = tmp_path / "f.bin"
+    p.write_bytes(b"abc")
+    want = hashlib.sha256(b"abc").hexdigest()
+    assert safe_read.sha256_and_size(p) == (want, 3)
+    assert safe_read.sha256_and_size(p, 3) == (want, 3)
+    assert safe_read.sha256_and_size(p, 4) == ("", 3)
+    assert safe_read.sha256_and_size(p, 0) == ("", 3)
+    big = tmp_path / "big.bin"
+    with open(big, "wb") as fh:
+        fh.truncate(HASH_LIMIT_BYTES + 1)
+    with pytest.raises(Refused) as e:
+        safe_read.sha256_and_size(big)
+    assert str(e.value) == f"{HASH_LIMIT_BYTES + 1} bytes: larger than the {HASH_LIMIT_BYTES} bytes this file may have"
+
+
+def test_a_folder_is_walked_without_following_its_links(tmp_path):
+    d = tmp_path / "out"
+    (d / "sub" / "deeper").mkdir(parents=True)
+    (d / "b.txt").write_text("b")
+    (d / "sub" / "a.txt").write_text("a")
+    (d / "sub" / "deeper" / "c.txt").write_text("c")
+    (tmp_path / "outside.txt").write_text("o")
+    os.symlink(d / "b.txt", d / "sub" / "inside_link")
+    os.symlink(tmp_path / "outside.txt", d / "out_link")
+    os.symlink(tmp_path / "nowhere", d / "dangling")
+    os.symlink(d, d / "sub" / "to_root")
+    os.symlink(tmp_path, d / "to_parent")
+    os.mkfifo(d / "pipe")
+    got, bad = safe_read.walk(d)
+    assert got == [d / "b.txt", d / "sub" / "a.txt", d / "sub" / "deeper" / "c.txt"]
+    assert bad == {d / "dangling": "is a symbolic link to nothing",
+                   d / "out_link": "is a symbolic link leading outside the folder checked",
+                   d / "to_parent": "is a symbolic link leading outside the folder checked",
+                   d / "pipe": "is a FIFO: an output folder holds regular files only"}
+    # walked through a link to it, the folder is the same folder
+    os.symlink(d, tmp_path / "alias")
+    got, bad = safe_read.walk(tmp_path / "alias")
+    assert [p.name for p in got] == ["b.txt", "a.txt", "c.txt"] and len(bad) == 4
+
+
+def test_the_memory_ceiling_lowers_the_address_space_only_where_it_can():
+    """Applied while the checks run when the process maps less than half the ceiling and no lower limit is set;
+    restored after.  What the process maps is /proc/self/status's VmSize."""
+    status = open("/proc/self/status").read()
+    vm = int(next(line.split()[1] for line in status.splitlines() if line.startswith("VmSize:"))) * 1024
+    used = memory.address_space()
+    assert abs(used - vm) < 64 << 20  # read a moment apart
+    soft0, hard0 = resource.getrlimit(resource.RLIMIT_AS)
+    if soft0 != resource.RLIM_INFINITY or hard0 != resource.RLIM_INFINITY:
+        pytest.skip("the address space is limited already (ulimit -v)")
+    ceiling = int(used * 2.5) // 4096 * 4096
+    with memory.memory_ceiling(ceiling):
+        assert resource.getrlimit(resource.RLIMIT_AS) == (ceiling, hard0)
+    assert resource.getrlimit(resource.RLIMIT_AS) == (soft0, hard0)
+    # a process already mapping more than half of it: not applied (it would fail at once)
+    with memory.memory_ceiling(int(used * 1.8)):
+        assert resource.getrlimit(resource.RLIMIT_AS) == (soft0, hard0)
+    # a lower soft limit already set is kept
+    lower = int(used * 3)
+    resource.setrlimit(resource.RLIMIT_AS, (lower, hard0))
+    try:
+        with memory.memory_ceiling(int(used * 4)):
+            assert resource.getrlimit(resource.RLIMIT_AS) == (lower, hard0)
+        with memory.memory_ceiling(lower):
+            assert resource.getrlimit(resource.RLIMIT_AS) == (lower, hard0)
+    finally:
+        resource.setrlimit(resource.RLIMIT_AS, (soft0, hard0))
+    # restored when the checks raise
+    with pytest.raises(KeyError), memory.memory_ceiling(ceiling):
+        raise KeyError("x")
+    assert resource.getrlimit(resource.RLIMIT_AS) == (soft0, hard0)
