@@ -167,6 +167,19 @@ def sync_scratch(target: Target, modules: list[str], fresh: bool) -> Path:
     return scratch
 
 
+#: the address space of mutmut and the tests it forks: a mutant that allocates without end (an index array of every
+#: pair of boxes squared) fails with MemoryError, a kill, instead of taking the machine's memory from other work
+ADDRESS_SPACE_CAP = 8 << 30
+
+
+def _address_space_cap() -> None:
+    import resource
+
+    soft, hard = resource.getrlimit(resource.RLIMIT_AS)
+    if hard == resource.RLIM_INFINITY or hard > ADDRESS_SPACE_CAP:
+        resource.setrlimit(resource.RLIMIT_AS, (ADDRESS_SPACE_CAP, hard))
+
+
 def run_mutmut(scratch: Path, jobs: int, names: list[str]) -> float:
     mutmut = Path(sys.executable).with_name("mutmut")
     env = dict(os.environ)
@@ -175,7 +188,7 @@ def run_mutmut(scratch: Path, jobs: int, names: list[str]) -> float:
     t0 = time.monotonic()
     with open(scratch / "mutmut.log", "w", encoding="utf-8") as log:
         proc = subprocess.run([str(mutmut), "run", "--max-children", str(jobs), *names], cwd=scratch, env=env,
-                              stdout=log, stderr=subprocess.STDOUT)
+                              stdout=log, stderr=subprocess.STDOUT, preexec_fn=_address_space_cap)
     elapsed = time.monotonic() - t0
     if proc.returncode != 0:
         tail = (scratch / "mutmut.log").read_text("utf-8", "replace").splitlines()[-25:]

@@ -1310,3 +1310,121 @@ def test_the_memory_ceiling_lowers_the_address_space_only_where_it_can():
     with pytest.raises(KeyError), memory.memory_ceiling(ceiling):
         raise KeyError("x")
     assert resource.getrlimit(resource.RLIMIT_AS) == (soft0, hard0)
+
+
+# ------------------------------------------------------------------------------------------- mesh: the gaps of the first run
+def _segment_hits_triangle(p, q, a, b, c) -> bool:
+    """Möller-Trumbore on the closed segment p-q (an independent test of a proper crossing)."""
+    e1, e2, d = b - a, c - a, q - p
+    h = np.cross(d, e2)
+    det = float(np.dot(e1, h))
+    if abs(det) < 1e-12:
+        return False
+    s = p - a
+    u = float(np.dot(s, h)) / det
+    qv = np.cross(s, e1)
+    v = float(np.dot(d, qv)) / det
+    t = float(np.dot(e2, qv)) / det
+    return 0 <= u <= 1 and 0 <= v and u + v <= 1 and 0 <= t <= 1
+
+
+def test_a_crossing_whose_vertex_wise_ranges_are_apart_is_found():
+    """Two triangles that cross (an edge of one passes through the other), whose boxes per axis overlap, as the
+    broad phase must take them; boxes taken over each vertex's coordinates instead would be apart."""
+    V = np.array([[-6.0, -1, 0], [2, 1, -1], [-4, 1, -1], [4, 3, 3], [1, -2, -3], [-1, 1, -2]])
+    A, B = V[:3], V[3:]
+    assert any(_segment_hits_triangle(A[i], A[(i + 1) % 3], *B) for i in range(3)) or any(
+        _segment_hits_triangle(B[i], B[(i + 1) % 3], *A) for i in range(3))
+    lo, hi = V.reshape(2, 3, 3).min(axis=2), V.reshape(2, 3, 3).max(axis=2)
+    assert np.any(lo[0] > hi[1]) or np.any(lo[1] > hi[0])
+    assert self_intersections(V, np.array([[0, 1, 2], [3, 4, 5]]))[0] == 1
+
+
+def _rotation(seed):
+    q, _ = np.linalg.qr(np.random.default_rng(seed).normal(size=(3, 3)))
+    return q * np.sign(np.linalg.det(q))
+
+
+@pytest.mark.parametrize("scale", [1.0, 1e-3])
+def test_decisions_do_not_depend_on_where_the_triangles_are(scale):
+    """The pierced pair, the pair 0.5 and 2 tolerances apart, turned and moved 100 mm (and at a thousandth of the
+    size, where a normal's length is far below 1): the same answers, the tolerance a ten-billionth of the size."""
+    for seed in range(4):
+        R, t = _rotation(seed), np.array([100.0, -40.0, 70.0]) * scale
+
+        def moved(gap):
+            V, F = _pierced(gap)
+            return (V * scale) @ R.T + t, F
+
+        assert self_intersections(*moved(-0.5))[0] == 1
+        W0, _ = moved(0.0)
+        eps = 1e-10 * float(np.linalg.norm(W0.max(axis=0) - W0.min(axis=0)))  # of the moved mesh's box
+        for k, want in ((0.5, 1), (2.0, 0)):
+            assert self_intersections(*moved(k * eps / scale))[0] == want, (seed, k, scale)
+
+
+def test_the_tolerance_follows_the_size_of_the_whole_mesh_on_every_axis():
+    """Moved 1000 mm along x only, the diagonal of the bounding box is what it was (9 mm): the tolerance too."""
+    for gap_eps, want in ((0.5, 1), (2.0, 0)):
+        V, F = _pierced(0.0)
+        eps = 1e-10 * float(np.linalg.norm(V.max(axis=0) - V.min(axis=0)))
+        V, F = _pierced(gap_eps * eps)
+        assert self_intersections(V + [1000.0, 0, 0], F)[0] == want
+        assert self_intersections(V + [0, 0, -1000.0], F)[0] == want
+
+
+def test_more_crossings_than_reported():
+    """101 vertical triangles through one horizontal triangle: 101 pairs counted, the first 100 reported."""
+    V = [[-200.0, -10, 0], [200, -10, 0], [0, 400, 0]]
+    F = [[0, 1, 2]]
+    for k in range(101):
+        x = -100.0 + 2.0 * k
+        V += [[x, -1, -1], [x, 1, -1], [x, 0, 2]]
+        F.append([3 + 3 * k, 4 + 3 * k, 5 + 3 * k])
+    n, pairs = self_intersections(np.array(V), np.array(F))
+    assert n == 101 and pairs.shape == (100, 2) and pairs.dtype == np.int64
+    assert set(map(tuple, pairs.tolist())) < {(0, k) for k in range(1, 102)}
+    assert self_intersections(np.array(V), np.array(F)[:1])[1].dtype == np.int64
+
+
+def test_the_broad_phase_groups_neighbours_so_a_spread_mesh_stays_within_its_pair_budget():
+    """64 disjoint unit boxes along a diagonal, given in a shuffled order: sorted by the Morton code of their centres,
+    no level of the traversal holds more than the 64 leaves' own pairs; in the given order the upper levels' nodes
+    span the whole diagonal and overlap."""
+    k = np.random.default_rng(5).permutation(64).astype(float)
+    lo = np.column_stack([2 * k, 2 * k, 2 * k])
+    hi = lo + 1.0
+    assert overlapping_pairs(lo, hi, max_pairs=64).shape == (0, 2)
+    with pytest.raises(TooManyPairs):
+        overlapping_pairs(lo, hi, max_pairs=63)
+    # the same along each axis alone and in a plane (the code interleaves all three)
+    for cols in ([0], [1], [2], [0, 2]):
+        lo2 = np.zeros((64, 3))
+        lo2[:, cols] = 2 * k[:, None]
+        assert overlapping_pairs(lo2, lo2 + 1.0, max_pairs=64).shape == (0, 2), cols
+    assert overlapping_pairs(lo[:1], hi[:1]).dtype == np.int64 and overlapping_pairs(lo[:0], hi[:0]).dtype == np.int64
+
+
+def test_mesh_checks_on_one_crossing_and_on_a_mesh_without_metadata():
+    from types import SimpleNamespace
+
+    V, F = _pierced()
+    x = _by_name(mesh_checks((V, F), name="m", expected_bodies=2))["self-intersecting triangle pairs"]
+    assert (x.value, x.message) == (1, "1 intersecting triangle pairs, e.g. faces [[0, 1]]")
+    v, f = _box((2.0, 3.0, 4.0), at=(5.0, 7.0, 9.0))
+    c = _by_name(mesh_checks(SimpleNamespace(vertices=v, faces=f), name="m", expected_volume=24.0))
+    assert "chord deflection" not in c and c["volume vs B-rep"].passed
+    assert c["volume vs B-rep"].unit == "mm^3"
+    assert c["volume vs B-rep"].limit["abs_tol"] == pytest.approx(0.01 * 52.0, rel=1e-12)
+    # a deflection given wins over the mesh's own record
+    tm = trimesh.Trimesh(v, f, process=False)
+    tm.metadata["chord_deflection_mm"] = 0.003
+    c = _by_name(mesh_checks(tm, name="m", chord_deflection=0.002, expected_volume=24.0))
+    assert c["chord deflection"].value == 0.002
+    assert c["volume vs B-rep"].limit["abs_tol"] == pytest.approx(0.002 * 52.0, rel=1e-12)
+
+
+def test_the_volume_keeps_its_digits_far_from_the_origin_on_any_axis():
+    v, f = _box((2.0, 3.0, 4.0))
+    for off in ((1e9, -1e9, 0.0), (0.0, 0.0, 1e9), (-3e8, 1e9, 2e8)):
+        assert signed_volume(v + np.array(off), f) == pytest.approx(24.0, rel=1e-9), off
