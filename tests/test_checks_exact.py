@@ -1428,3 +1428,33 @@ def test_the_volume_keeps_its_digits_far_from_the_origin_on_any_axis():
     v, f = _box((2.0, 3.0, 4.0))
     for off in ((1e9, -1e9, 0.0), (0.0, 0.0, 1e9), (-3e8, 1e9, 2e8)):
         assert signed_volume(v + np.array(off), f) == pytest.approx(24.0, rel=1e-9), off
+
+
+@pytest.mark.parametrize("scale", [1.0, 1e-3])
+def test_parallel_triangles_two_tolerances_apart_do_not_touch_at_any_size(scale):
+    """A triangle above another, parallel, 2 tolerances up: apart; half a tolerance up: touching (coplanar within the
+    tolerance).  At a thousandth of the size the normal's length (twice the area) is 4e-5: the distances to a plane
+    are measured along its unit normal all the same."""
+    base = np.array([[0.0, 0, 0], [6, 0, 0], [0, 6, 0]]) * scale
+    top = np.array([[1.0, 1, 0], [4, 1, 0], [1, 4, 0]]) * scale
+    R, t = _rotation(7), np.array([3.0, -2.0, 1.0]) * scale
+
+    def moved(gap):
+        return np.vstack([base, top + [0, 0, gap]]) @ R.T + t
+
+    W0 = moved(0.0)
+    eps = 1e-10 * float(np.linalg.norm(W0.max(axis=0) - W0.min(axis=0)))  # of the moved pair's box
+    for k, want in ((2.0, 0), (0.5, 1)):
+        W = moved(k * eps)
+        assert self_intersections(W, np.array([[0, 1, 2], [3, 4, 5]]))[0] == want, (k, scale)
+
+
+def test_the_morton_grouping_holds_off_the_origin_across_it_and_at_any_size():
+    """The diagonal of 64 boxes offset differently on each axis, centred on the origin, and a thousand times smaller:
+    the budget of the leaves' own 64 pairs holds each time."""
+    k = np.random.default_rng(5).permutation(64).astype(float)
+    for off, step in (((1000.0, -500.0, 3.0), 2.0), ((-64.0, -64.0, -64.0), 2.0), ((0.0, 0.0, 0.0), 2e-3),
+                      ((5.0, 5.0, 5.0), 2e-3)):
+        lo = np.column_stack([step * k + off[0], step * k + off[1], step * k + off[2]])
+        hi = lo + step / 2
+        assert overlapping_pairs(lo, hi, max_pairs=64).shape == (0, 2), (off, step)
