@@ -1227,3 +1227,111 @@ def test_the_window_is_widened_to_take_in_contacts_within_contact_tol_of_the_fir
     blocks = [_square(*(q1 + (-1.0, 1.0))) - (C1 - C2), _square(*(q2 + (-0.3, 0.3)), h=0.3) - (C1 - C2)]
     res = transmission_sweep(blocks, C1, [BAR], C2, lambda p: 0.0, [0.0], senses=(1, 1), max_angle=0.5)
     assert res.free_fwd[0] == pytest.approx(e, abs=1e-12) and res.pairs_coast[0] == 2
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# poses.py: the rigid planar poses (2x3 affine matrices [R | t]) written out by hand
+# ---------------------------------------------------------------------------------------------------------------
+
+from propulsor.checks.motion import poses as pz  # noqa: E402
+
+
+def test_a_pose_turns_about_its_pivot_then_moves_by_its_offset():
+    # a quarter turn about (1, 2), then (3, 4) on: x -> R (x - p) + p + o with R (u, v) = (-v, u)
+    M = pz.Pose(math.pi / 2, (1.0, 2.0), (3.0, 4.0)).matrix()
+    assert M.shape == (2, 3)
+    assert M == pytest.approx(np.array([[0.0, -1.0, 1.0 + 2.0 + 3.0], [1.0, 0.0, 2.0 - 1.0 + 4.0]]), abs=1e-15)
+    for x in ((0.0, 0.0), (1.0, 2.0), (5.0, -1.0)):
+        u, v = x[0] - 1.0, x[1] - 2.0
+        assert M[:, :2] @ x + M[:, 2] == pytest.approx((-v + 1.0 + 3.0, u + 2.0 + 4.0), abs=1e-14)
+    assert pz.Pose().matrix().tolist() == [[1.0, -0.0, 0.0], [0.0, 1.0, 0.0]]
+
+
+def test_poses_from_angles_one_pose_per_angle_in_floats():
+    ps = pz.poses_from_angles(np.array([[0, 1], [2, 3]]), pivot=(1, 2), offset=(3, 4))
+    assert ps == [pz.Pose(float(a), (1.0, 2.0), (3.0, 4.0)) for a in (0, 1, 2, 3)]
+    for p in ps:
+        assert type(p.angle) is float and all(type(c) is float for c in p.pivot + p.offset)
+        assert type(p.pivot) is tuple and type(p.offset) is tuple
+    assert pz.poses_from_angles([0.5]) == [pz.Pose(0.5, (0.0, 0.0), (0.0, 0.0))]
+
+
+def test_rotation_matrices_are_the_turns_then_the_translations():
+    a = [0.3, -2.0]
+    M = pz.rotation_matrices(a)
+    assert M.shape == (2, 2, 3)
+    for k, t in enumerate(a):
+        assert M[k].tolist() == [[math.cos(t), -math.sin(t), 0.0], [math.sin(t), math.cos(t), 0.0]]
+    M = pz.rotation_matrices(np.array([1, 2]), [[5.0, 6.0], [7.0, 8.0]])
+    assert M.dtype == np.float64
+    assert M[0].tolist() == [[math.cos(1), -math.sin(1), 5.0], [math.sin(1), math.cos(1), 6.0]]
+    assert M[1].tolist() == [[math.cos(2), -math.sin(2), 7.0], [math.sin(2), math.cos(2), 8.0]]
+
+
+def test_pose_stack_of_one_pose_held_fixed():
+    p = pz.Pose(0.25, (1.0, 0.0), (0.0, 2.0))
+    M, ang = pz.pose_stack(p, None, "poses_a")
+    assert M.shape == (1, 2, 3) and ang.tolist() == [0.25]
+    assert M[0].tolist() == p.matrix().tolist()
+    M, ang = pz.pose_stack(p, 3, "poses_a")
+    assert M.shape == (3, 2, 3) and ang.tolist() == [0.25] * 3
+    assert all(M[k].tolist() == p.matrix().tolist() for k in range(3))
+    # a list of one pose (or one matrix) stretched to n = 2 steps; n = 1 and None leave it one
+    for one in ([p], p.matrix()[None]):
+        M, ang = pz.pose_stack(one, 2, "poses_a")
+        assert M.shape == (2, 2, 3) and ang == pytest.approx([0.25, 0.25], abs=1e-15)
+        assert M[0].tolist() == M[1].tolist() and M[1] == pytest.approx(p.matrix(), abs=1e-15)
+        for n in (1, None):
+            M, ang = pz.pose_stack(one, n, "poses_a")
+            assert M.shape == (1, 2, 3) and len(ang) == 1
+
+
+def test_pose_stack_of_matrices_reads_the_angle_from_the_first_column():
+    t = np.array([0.7, -2.5, 3.0])
+    M = np.zeros((3, 2, 3), int).astype(float)
+    M[:, 0, 0], M[:, 0, 1], M[:, 1, 0], M[:, 1, 1] = np.cos(t), -np.sin(t), np.sin(t), np.cos(t)
+    M[:, :, 2] = [[1.0, 2.0], [3.0, 4.0], [5.0, 6.0]]
+    out, ang = pz.pose_stack(M, 3, "poses_b")
+    assert out.tolist() == M.tolist() and ang == pytest.approx(t, abs=1e-15)
+    # integer matrices (quarter turns) come out as floats; so do integer Pose angles
+    q = np.array([[[0, -1, 3], [1, 0, 4]]])
+    out, ang = pz.pose_stack(q, None, "poses_b")
+    assert out.dtype == np.float64 and ang.dtype == np.float64 and ang.tolist() == [math.pi / 2]
+    out, ang = pz.pose_stack([pz.Pose(1), pz.Pose(2)], 2, "poses_b")
+    assert ang.dtype == np.float64 and ang.tolist() == [1.0, 2.0]
+    assert out == pytest.approx(np.array([pz.Pose(1.0).matrix(), pz.Pose(2.0).matrix()]), abs=0)
+
+
+def test_pose_stack_refusals_in_full():
+    def msg(poses, name="poses_a"):
+        with pytest.raises(InputError) as e:
+            pz.pose_stack(poses, None, name)
+        return str(e.value)
+
+    assert msg(np.zeros((2, 3))) == "poses_a = (2, 3): must be Poses or an (n, 2, 3) array"
+    assert msg(np.zeros((4, 2, 2)), "poses_b") == "poses_b = (4, 2, 2): must be Poses or an (n, 2, 3) array"
+    assert msg(np.zeros((1, 3, 3))) == "poses_a = (1, 3, 3): must be Poses or an (n, 2, 3) array"
+    assert msg([pz.Pose(), "x"], "poses_b") == "poses_b = 'mixed': must be Pose objects"
+    assert msg([]) == "poses_a = 0: need at least one pose"
+    assert msg(np.zeros((0, 2, 3)), "poses_b") == "poses_b = 0: need at least one pose"
+    bad = np.zeros((2, 2, 3))
+    bad[1, 0, 2] = np.inf
+    assert msg(bad) == "poses_a = 'non-finite': poses must be finite"
+    assert msg([pz.Pose(math.nan)], "poses_b") == "poses_b = 'non-finite': poses must be finite"
+    # the limits' other sides: one pose, finite
+    assert pz.pose_stack(np.zeros((1, 2, 3)), None, "poses_a")[0].shape == (1, 2, 3)
+
+
+def test_apply_inverse_and_compose_poses_by_hand():
+    A = pz.Pose(math.pi / 2, (0.0, 0.0), (1.0, 0.0)).matrix()   # (x, y) -> (1 - y, x)
+    B = pz.Pose(math.pi, (0.0, 0.0), (0.0, 2.0)).matrix()       # (x, y) -> (-x, 2 - y)
+    P = np.array([[1.0, 0.0], [2.0, 3.0]])
+    assert pz.apply_pose(A, P) == pytest.approx(np.array([[1.0, 1.0], [-2.0, 2.0]]), abs=1e-15)
+    # A o B: (x, y) -> A(-x, 2 - y) = (1 - 2 + y, -x)
+    AB = pz.compose_poses(A, B)
+    assert pz.apply_pose(AB, P) == pytest.approx(np.array([[-1.0, -1.0], [2.0, -2.0]]), abs=1e-15)
+    assert AB == pytest.approx(np.array([[0.0, 1.0, -1.0], [-1.0, 0.0, 0.0]]), abs=1e-15)
+    # A's inverse: (u, v) -> (v, 1 - u)
+    Ai = pz.inverse_pose(A)
+    assert Ai == pytest.approx(np.array([[0.0, 1.0, 0.0], [-1.0, 0.0, 1.0]]), abs=1e-15)
+    assert pz.apply_pose(Ai, np.array([[1.0, 1.0], [-2.0, 2.0]])) == pytest.approx(P, abs=1e-15)
