@@ -1335,3 +1335,129 @@ def test_apply_inverse_and_compose_poses_by_hand():
     Ai = pz.inverse_pose(A)
     assert Ai == pytest.approx(np.array([[0.0, 1.0, 0.0], [-1.0, 0.0, 1.0]]), abs=1e-15)
     assert pz.apply_pose(Ai, np.array([[1.0, 1.0], [-2.0, 2.0]])) == pytest.approx(P, abs=1e-15)
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# distance.py: the KD-tree least distance, its pruning discs and balls, against brute force over every edge
+# ---------------------------------------------------------------------------------------------------------------
+
+from propulsor.checks.motion import distance as dz  # noqa: E402
+
+SQUARE10 = np.array([[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]])  # CCW: kept in this order, edges 10 mm
+
+
+def _seg_dist(p, a, b):
+    """Distance from p to the segment ab and its foot, written out."""
+    d = (b[0] - a[0], b[1] - a[1])
+    t = ((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / (d[0] * d[0] + d[1] * d[1])
+    t = min(max(t, 0.0), 1.0)
+    q = (a[0] + t * d[0], a[1] + t * d[1])
+    return math.hypot(p[0] - q[0], p[1] - q[1]), q
+
+
+def _brute_nearest(P, loop):
+    """(least distance, its point's index, foot) over every point and every edge of one closed loop."""
+    best = (math.inf, -1, None)
+    for i, p in enumerate(P):
+        for k in range(len(loop)):
+            d, q = _seg_dist(p, loop[k], loop[(k + 1) % len(loop)])
+            if d < best[0]:
+                best = (d, i, q)
+    return best
+
+
+def _polygon(n, r=1.0, c=(0.0, 0.0)):
+    a = 2.0 * math.pi * np.arange(n) / n
+    return np.column_stack([c[0] + r * np.cos(a), c[1] + r * np.sin(a)])
+
+
+def test_chunk_discs_hold_each_run_of_32_vertices_and_are_cached():
+    src = Outline([_polygon(70)], 100.0)
+    assert len(src.points) == 70
+    reps, rho, rho_max = dz._chunk_discs(src)
+    assert reps.tolist() == [0, 32, 64]
+    want = [max(math.dist(src.points[r], src.points[i]) for i in range(r, min(r + 32, 70))) for r in (0, 32, 64)]
+    assert rho == pytest.approx(want, abs=1e-15) and rho_max == pytest.approx(max(want), abs=1e-15)
+    # a run of 32 vertices of the 70-gon spans 31 steps: its farthest vertex is 2 sin(31 pi / 70) away; 6 vertices: 5
+    assert want == pytest.approx([2 * math.sin(31 * math.pi / 70)] * 2 + [2 * math.sin(5 * math.pi / 70)], abs=1e-12)
+    assert dz._chunk_discs(src) is dz._chunk_discs(src)
+
+
+def test_live_points_keeps_a_run_exactly_at_its_bound_and_drops_it_beyond():
+    tgt = Outline([SQUARE10], 100.0)
+    src = Outline([_polygon(70)], 100.0)
+    P = src.points + (12.0, 3.0)
+    m = policy.MOTION_PRUNE_MARGIN_MM
+    rho = [max(math.dist(src.points[r], src.points[i]) for i in range(r, min(r + 32, 70))) for r in (0, 32, 64)]
+    dr = [min(math.dist(P[r], v) for v in SQUARE10) for r in (0, 32, 64)]
+    assert dr[0] == pytest.approx(math.hypot(3.0, 3.0), abs=1e-12)  # (13, 3) to the corner (10, 0)
+    keep = np.array([40, 3, 65, 10, 33, 0])  # runs 1, 0, 2, 0, 1, 0
+    limit = dr[0] - rho[0]
+    bound = limit - m
+    assert bound + m == limit  # run 0 exactly at its bound (<=: kept)
+    live = [dr[c] - rho[c] <= limit for c in range(3)]
+    assert live[0] and not live[2]  # run 2 (near (12 + cos, 3 + sin) of angles 5.7..6.2) is farther off
+    got = dz._live_points(P, keep, tgt, src, bound)
+    assert got.tolist() == [k for k in keep.tolist() if live[k // 32]]
+    assert 0 in got.tolist() and 3 in got.tolist()
+    # a tenth of the margin beyond: run 0 is dropped
+    got = dz._live_points(P, keep, tgt, src, bound - 0.1 * m)
+    assert 0 not in got.tolist() and 3 not in got.tolist() and 10 not in got.tolist()
+
+
+def test_ball_pairs_are_the_edges_on_each_side_of_every_vertex_within_r():
+    tgt = Outline([SQUARE10], 100.0)
+    assert tgt.prev.tolist() == [3, 0, 1, 2]
+    # one vertex within r: the edge starting there (0 -> 1) and the one ending there (3 -> 0)
+    pi, si = dz.ball_pairs(tgt, np.array([[-1.0, 0.0]]), 1.5)
+    assert pi.tolist() == [0, 0] and si.tolist() == [0, 3]
+    # none
+    pi, si = dz.ball_pairs(tgt, np.array([[-1.0, 0.0], [5.0, 5.0]]), 0.5)
+    assert pi.shape == si.shape == (0,) and pi.dtype.kind == si.dtype.kind == "i"
+    # (5, -1) reaches (0, 0) and (10, 0) (sqrt 26 = 5.099); (-1, 0) reaches (0, 0) only
+    pi, si = dz.ball_pairs(tgt, np.array([[5.0, -1.0], [-1.0, 0.0]]), 5.2)
+    assert sorted(zip(pi.tolist(), si.tolist())) == [(0, 0), (0, 0), (0, 1), (0, 3), (1, 0), (1, 3)]
+
+
+def test_dist_each_point_is_the_distance_to_the_nearest_edge():
+    tgt = Outline([SQUARE10], 100.0)
+    P = np.array([[5.0, -2.0], [12.0, 12.0], [5.0, 5.5], [-1.0, 0.0], [3.0, 9.0]])
+    got = dz.dist_each_point(P, tgt)
+    assert got == pytest.approx([2.0, math.sqrt(8.0), 4.5, 1.0, 1.0], abs=1e-12)
+    assert got == pytest.approx([_brute_nearest(P[i:i + 1], SQUARE10)[0] for i in range(5)], abs=1e-12)
+    assert dz.dist_each_point(P[2:3], tgt).tolist() == [4.5]
+    e = dz.dist_each_point(np.empty((0, 2)), tgt)
+    assert e.shape == (0,)
+
+
+def test_min_dist_of_tied_points_is_the_first_and_the_middle_of_a_long_edge_counts():
+    """(5, 0), the middle of the 10 mm edge, lies exactly half an edge from its ends; (10, 10) is a vertex: both at 0
+    and the first point is the answer (nearest.py's "first pair at the least distance")."""
+    tgt = Outline([SQUARE10], 100.0)
+    assert tgt.half_len == 5.0
+    d, i, q = dz.min_dist_points_to(np.array([[5.0, 0.0], [10.0, 10.0]]), tgt)
+    assert (d, i, q.tolist()) == (0.0, 0, [5.0, 0.0])
+    d, i, q = dz.min_dist_points_to(np.array([[5.0, 0.5], [10.5, 10.0]]), tgt)
+    assert (d, i, q.tolist()) == (0.5, 0, [5.0, 0.0])
+
+
+def test_min_dist_finds_a_mid_edge_point_that_the_subsample_bound_hides():
+    """130 points (the subsample: every other): the nearest (0.01 below the top edge's middle, its corners 5 mm off)
+    and one 0.04 inside a corner at odd places, the rest near the centre (7.07 mm from every corner); the least lower
+    bound at a point 1.04 above the top edge (5.1 mm from the corners)."""
+    tgt = Outline([SQUARE10], 100.0)
+    P = np.array([(5.0 + 0.01 * math.cos(k), 5.0 + 0.01 * math.sin(k)) for k in range(130)])
+    P[1] = (9.96, 9.96)
+    P[3] = (5.0, 9.99)
+    P[4] = (5.0, 11.04)
+    want = _brute_nearest(P, SQUARE10)
+    assert want[0] == pytest.approx(0.01, abs=1e-12) and want[1] == 3
+    d, i, q = dz.min_dist_points_to(P, tgt)
+    assert (d, i) == (pytest.approx(want[0], abs=1e-12), 3) and q == pytest.approx(np.array(want[2]), abs=1e-12)
+
+
+def test_check_record_keeps_none_and_makes_numbers_floats():
+    c = dz.check_record("motion.x", 1, None, None, "mm", "why")
+    assert (c.name, c.passed, c.value, c.limit, c.unit, c.message) == ("motion.x", True, None, None, "mm", "why")
+    c = dz.check_record("motion.y", 0, np.float32(0.5), 2, "mm^2", "")
+    assert (c.passed, c.value, c.limit) == (False, 0.5, 2.0) and type(c.value) is float and type(c.limit) is float
