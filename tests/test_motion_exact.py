@@ -1461,3 +1461,62 @@ def test_check_record_keeps_none_and_makes_numbers_floats():
     assert (c.name, c.passed, c.value, c.limit, c.unit, c.message) == ("motion.x", True, None, None, "mm", "why")
     c = dz.check_record("motion.y", 0, np.float32(0.5), 2, "mm^2", "")
     assert (c.passed, c.value, c.limit) == (False, 0.5, 2.0) and type(c.value) is float and type(c.limit) is float
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# crossing.py: bodies certainly apart (no boolean): the limits of d and the crossing search's grid
+# ---------------------------------------------------------------------------------------------------------------
+
+from propulsor.checks.motion import crossing as cz  # noqa: E402
+
+
+def _rect(x0, y0, x1, y1):
+    return np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]])  # CCW, first corner (x0, y0)
+
+
+def test_loop_firsts_are_the_first_vertex_of_each_loop_and_are_cached():
+    o = Outline([_rect(0, 0, 10, 10), _polygon(3, 1.0, (5.0, 5.0))[::-1], _polygon(5, 0.5, (2.0, 2.0))[::-1]], 100.0)
+    assert o.loop_id.tolist() == [0] * 4 + [1] * 3 + [2] * 5
+    f = cz._loop_firsts(o)
+    assert f.tolist() == [0, 4, 7] and f.dtype == np.int64
+    assert cz._loop_firsts(o) is f
+    assert cz._loop_firsts(Outline([_rect(0, 0, 1, 1)], 100.0)).tolist() == [0]
+
+
+def test_certainly_apart_doubts_at_apart_min_and_trusts_just_above():
+    # 10 mm apart, no edges on one line (collinear edges count as touching: zero orientations)
+    A, B = Outline([SQUARE10], 100.0), Outline([_rect(20, 1, 30, 9)], 100.0)
+    assert not cz.certainly_apart(A, B, B.points, A.points, cz.APART_MIN_MM)
+    assert cz.certainly_apart(A, B, B.points, A.points, float(np.nextafter(cz.APART_MIN_MM, 1.0)))
+    assert cz.certainly_apart(A, B, B.points, A.points, 10.0)
+    # a body inside the other's hole is apart; inside the other (either way round) is not
+    ring = Outline([_rect(-10, -10, 20, 20), SQUARE10[::-1] + 0.0], 100.0)
+    inner = Outline([_rect(2, 2, 8, 8)], 100.0)
+    assert cz.certainly_apart(ring, inner, inner.points, ring.points, 2.0)
+    big = Outline([_rect(-10, -10, 20, 20)], 100.0)
+    assert not cz.certainly_apart(big, inner, inner.points, big.points, 2.0)
+    assert not cz.certainly_apart(inner, big, big.points, inner.points, 2.0)
+
+
+def test_the_crossing_search_runs_up_to_half_the_longest_edge_inclusive():
+    """A bar 20 x 2 mm through the 10 mm square (half edges 10 and 5): neither holds the other's first corner, the
+    boundaries cross at x = 0 and 10.  With d at most 10 the edges are searched (crossing: not apart); above 10 the
+    search is skipped, d having promised that no edges cross."""
+    A, B = Outline([SQUARE10], 100.0), Outline([_rect(-5, 4, 15, 6)], 100.0)
+    assert (A.half_len, B.half_len) == (5.0, 10.0)
+    assert not cz.certainly_apart(A, B, B.points, A.points, 10.0)
+    assert not cz.certainly_apart(A, B, B.points, A.points, 0.5)
+    assert cz.certainly_apart(A, B, B.points, A.points, float(np.nextafter(10.0, 11.0)))
+
+
+def test_the_crossing_search_finds_a_crossing_far_from_the_origin():
+    """The square at x = 100..110 cut into 0.5 mm edges (a grid of 4 mm cells from (100, 0)), a bar 95..103 through
+    its left edge: the crossings lie in the first column of cells."""
+    A = Outline([_rect(100, 0, 110, 10)], 0.5)
+    B = Outline([_rect(95, 4, 103, 6)], 0.5)
+    from propulsor.checks.motion.nearest import grid_of
+    g = grid_of(A)
+    assert g.origin.tolist() == [100.0, 0.0] and g.nx == 3
+    assert not cz.certainly_apart(A, B, B.points, A.points, 0.1)
+    far = Outline([_rect(85, 4, 93, 6)], 0.5)
+    assert cz.certainly_apart(A, far, far.points, A.points, 0.1)
