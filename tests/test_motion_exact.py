@@ -1520,3 +1520,191 @@ def test_the_crossing_search_finds_a_crossing_far_from_the_origin():
     assert not cz.certainly_apart(A, B, B.points, A.points, 0.1)
     far = Outline([_rect(85, 4, 93, 6)], 0.5)
     assert cz.certainly_apart(A, far, far.points, A.points, 0.1)
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# outlines.py: cleaning, orientation by nesting, subdivision, the annulus, crops and offsets, by hand
+# ---------------------------------------------------------------------------------------------------------------
+
+from propulsor.checks.motion import outlines as oz  # noqa: E402
+
+
+def _msg(fn, *a, **kw):
+    with pytest.raises(InputError) as e:
+        fn(*a, **kw)
+    return str(e.value)
+
+
+def test_outline_refusals_in_full_and_both_sides_of_three_points():
+    assert _msg(Outline, [np.zeros((3, 3))]) == "loops[0] = (3, 3): must be an (n, 2) array of points"
+    assert _msg(Outline, [SQUARE10, np.zeros(4)]) == "loops[1] = (4,): must be an (n, 2) array of points"
+    bad = SQUARE10.copy()
+    bad[2, 1] = np.nan
+    assert _msg(Outline, [SQUARE10, bad]) == "loops[1] = 'non-finite': points must be finite"
+    assert _msg(Outline, [SQUARE10[:2]]) == "loops[0] = 2: a closed loop needs at least 3 distinct points"
+    assert len(Outline([SQUARE10[:3]], 100.0)) == 3
+    assert _msg(Outline, []) == "loops = 0: need at least one closed loop"
+    assert _msg(Outline, [SQUARE10], 0.0) == "max_segment = 0.0: must be > 0 mm"
+    assert _msg(oz.outline, SQUARE10, 1e-4, -1.0) == "max_segment = -1.0: must be > 0 mm"
+    assert _msg(oz.outline, Profile(circle_loop(7.0)), 0.0) == "chord_tol = 0.0: must be > 0 mm"
+    assert _msg(oz.outline, 5) == ("body = 'int': must be a Profile, an Outline or a list of closed (n, 2) "
+                                   "polylines")
+
+
+def test_clean_loop_drops_the_closing_point_and_repeated_vertices_only():
+    # integer points come out as floats
+    o = Outline([[[0, 0], [10, 0], [0, 10]]], 100.0)
+    assert o.points.dtype == np.float64 and o.loops[0].dtype == np.float64
+    # the first point repeated at the end (within POINT_TOL_MM): dropped
+    o = Outline([np.vstack([SQUARE10, [[0.0, 5e-8]]])], 100.0)
+    assert o.points.tolist() == SQUARE10.tolist()
+    # a vertex exactly POINT_TOL_MM before the next: dropped (a step must exceed it)
+    tol = policy.POINT_TOL_MM
+    o = Outline([np.array([[0.0, 0.0], [tol, 0.0], [10.0, 0.0], [0.0, 10.0]])], 100.0)
+    assert o.points.tolist() == [[tol, 0.0], [10.0, 0.0], [0.0, 10.0]]
+    # the first two points within POINT_TOL_MM: the first goes, the last stays
+    o = Outline([np.array([[0.0, 0.0], [5e-8, 0.0], [10.0, 0.0], [0.0, 10.0]])], 100.0)
+    assert o.points.tolist() == [[5e-8, 0.0], [10.0, 0.0], [0.0, 10.0]]
+    # a loop that returns to its start or to its second point on the way keeps every point
+    o = Outline([np.array([[0.0, 0.0], [10.0, 0.0], [0.0, 0.0], [0.0, -10.0], [-10.0, 0.0]])], 100.0)
+    assert len(o) == 5
+    o = Outline([np.array([[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [10.0, 0.0]])], 100.0)
+    assert len(o) == 4
+
+
+def test_signed_area_and_points_in_polygon_by_hand():
+    tri = np.array([[0.0, 0.0], [4.0, 0.0], [0.0, 3.0]])
+    assert oz._signed_area(tri) == 6.0 and oz._signed_area(tri[::-1]) == -6.0
+    assert oz._signed_area(SQUARE10 + (3.0, 7.0)) == 100.0
+    # a triangle off the origin, its slanted edge x + y = 65
+    t = np.array([[20.0, 30.0], [30.0, 30.0], [20.0, 40.0]])
+    pts = np.array([[24.9, 35.0], [25.1, 35.0], [21.0, 31.0], [19.9, 35.0], [22.0, 29.9], [20.0, 35.0], [25.0, 35.0]])
+    # on the left edge: inside; on the slanted one: outside (the ray to +x counts crossings at x < the edge's x)
+    assert oz._points_in_polygon(pts, t).tolist() == [True, False, True, False, False, True, False]
+    assert oz._points_in_polygon(pts, t[::-1]).tolist() == [True, False, True, False, False, True, False]
+    # a U: the ray from the left prong crosses three edges
+    u = np.array([[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [7.0, 10.0], [7.0, 3.0], [3.0, 3.0], [3.0, 10.0], [0.0, 10.0]])
+    assert oz._points_in_polygon(np.array([[1.0, 5.0], [5.0, 5.0], [8.0, 5.0], [5.0, 1.0]]), u).tolist() == [
+        True, False, True, True]
+
+
+def test_orientation_by_nesting_outer_ccw_hole_cw_island_ccw():
+    outer, hole, island = _rect(0, 0, 30, 30), _rect(5, 5, 25, 25), _rect(10, 10, 20, 20)
+    o = Outline([outer[::-1], hole, island[::-1]], 100.0)
+    assert [oz._signed_area(p) > 0 for p in o.loops] == [True, False, True]
+    assert o.loops[0].tolist() == outer.tolist() and o.loops[1].tolist() == hole[::-1].tolist()
+    assert o.loops[2].tolist() == island.tolist()
+    assert o.area == pytest.approx(900.0 - 400.0 + 100.0, abs=1e-9)
+    # a fourth level (depth 3): a hole again
+    o = Outline([outer, hole, island, _rect(12, 12, 18, 18)], 100.0)
+    assert [oz._signed_area(p) > 0 for p in o.loops] == [True, False, True, False]
+
+
+def test_subdivision_arclength_and_perimeters_of_two_loops():
+    # a 10 mm square cut at 6 mm: every edge in two of 5 mm; a CW hole of 2 mm sides left whole
+    o = Outline([SQUARE10, _rect(4, 4, 6, 6)], 6.0)
+    assert o.points.tolist() == [[0, 0], [5, 0], [10, 0], [10, 5], [10, 10], [5, 10], [0, 10], [0, 5],
+                                 [4, 6], [6, 6], [6, 4], [4, 4]]
+    assert o.loop_id.tolist() == [0] * 8 + [1] * 4
+    assert o.arclen.tolist() == [0, 5, 10, 15, 20, 25, 30, 35, 0, 2, 4, 6]
+    assert o.perimeter.tolist() == [40.0, 8.0]
+    assert o.nxt.tolist() == [1, 2, 3, 4, 5, 6, 7, 0, 9, 10, 11, 8]
+    assert o.prev.tolist() == [7, 0, 1, 2, 3, 4, 5, 6, 11, 8, 9, 10]
+    assert o.half_len == 2.5 and o.area == pytest.approx(96.0, abs=1e-9)
+    # a 12 mm edge cut at 5 mm: three edges of 4 mm
+    o = Outline([np.array([[0.0, 0.0], [12.0, 0.0], [0.0, 1.0]])], 5.0)
+    assert o.points[:4] == pytest.approx(np.array([[0, 0], [4, 0], [8, 0], [12, 0]]), abs=1e-15)
+
+
+def test_the_annulus_of_a_plus_sign_reaches_its_inner_corners():
+    """A plus sign, arms 2 w = 4 mm wide reaching L = 10 from its centre: the boundary's nearest points to the centre
+    are the four inner corners (w, w) (w sqrt 2; the lines of their edges pass at w), its farthest the arms' corners
+    (sqrt(L^2 + w^2))."""
+    w, L = 2.0, 10.0
+    plus = np.array([[w, -w], [L, -w], [L, w], [w, w], [w, L], [-w, L], [-w, w], [-L, w], [-L, -w], [-w, -w],
+                     [-w, -L], [w, -L]])
+    o = Outline([plus], 100.0)
+    assert o.center.tolist() == [0.0, 0.0]
+    assert o.r_min == pytest.approx(w * math.sqrt(2.0), abs=1e-12)
+    assert o.radius == pytest.approx(math.hypot(L, w), abs=1e-12)
+    P = np.array([[0.0, 0.0], [20.0, 0.0], [1.0, 1.0]])
+    assert o.boundary_lower_bound(P) == pytest.approx(
+        [w * math.sqrt(2), 20.0 - math.hypot(L, w), w * math.sqrt(2) - math.sqrt(2)], abs=1e-12)
+    # off the origin: the same annulus about the box's centre
+    o = Outline([plus + (100.0, -50.0)], 100.0)
+    assert o.center.tolist() == [100.0, -50.0] and o.r_min == pytest.approx(w * math.sqrt(2.0), abs=1e-12)
+
+
+def test_outline_of_a_profile_takes_max_segment_and_passes_an_outline_through():
+    p = Profile(circle_loop(7.0))
+    n = len([q for q in p.polylines(1e-2)[0]])
+    o = oz.outline(p, 1e-2, 100.0)
+    assert abs(len(o) - n) <= 1  # the polyline's vertices (its closing point dropped), none added
+    assert len(oz.outline(p, 1e-2)) > 5 * len(o)  # the default 0.1 mm edges
+    assert oz.outline(o) is o
+    assert len(oz.outline(SQUARE10, max_segment=100.0)) == 4
+    assert len(oz.outline((q for q in [SQUARE10]), max_segment=5.0)) == 8
+
+
+def _wedge_area(a0, a1, r_in, r_out, n):
+    """A polygon of n points on each arc: (n - 1) triangles of the outer arc less those of the inner one."""
+    d = (a1 - a0) / (n - 1)
+    return 0.5 * (n - 1) * math.sin(d) * (r_out ** 2 - r_in ** 2)
+
+
+def test_crop_to_sector_is_the_polygonal_annular_sector():
+    # (manifold3d keeps its points to about 4e-9 mm)
+    big = m3d.CrossSection([np.ascontiguousarray(_rect(-20, -20, 20, 20))], m3d.FillRule.Positive)
+    # a quarter: ceil((pi / 2) / 0.02) = 79 points on each arc
+    loops = oz.crop_to_sector(big, 0.0, math.pi / 2, 2.0, 5.0)
+    assert len(loops) == 1 and loops[0].dtype == np.float64 and len(loops[0]) == 2 * 79
+    assert abs(oz._signed_area(loops[0])) == pytest.approx(_wedge_area(0.0, math.pi / 2, 2.0, 5.0, 79), abs=1e-7)
+    r = np.hypot(loops[0][:, 0], loops[0][:, 1])
+    assert r.min() == pytest.approx(2.0, abs=1e-8) and r.max() == pytest.approx(5.0, abs=1e-8)
+    # a narrow sector (0.1 rad: ceil 5) takes the least, 8 points an arc; with r_in 0 a pie (the centre one point)
+    loops = oz.crop_to_sector(big, 1.0, 1.1, 0.0, 5.0)
+    assert len(loops[0]) == 9
+    assert abs(oz._signed_area(loops[0])) == pytest.approx(_wedge_area(1.0, 1.1, 0.0, 5.0, 8), abs=1e-7)
+    a = np.arctan2(loops[0][:, 1], loops[0][:, 0])
+    assert a[np.hypot(loops[0][:, 0], loops[0][:, 1]) > 1.0].min() == pytest.approx(1.0, abs=1e-8)
+    assert a.max() == pytest.approx(1.1, abs=1e-8)
+    # a body inside the sector comes out whole
+    sq = m3d.CrossSection([np.ascontiguousarray(_rect(1, 1, 2, 2))], m3d.FillRule.Positive)
+    loops = oz.crop_to_sector(sq, 0.0, math.pi / 2, 0.5, 5.0)
+    assert sorted(map(tuple, loops[0].tolist())) == [(1.0, 1.0), (1.0, 2.0), (2.0, 1.0), (2.0, 2.0)]
+
+
+def test_offset_outline_thins_thickens_and_shifts():
+    o = Outline([SQUARE10], 100.0)
+    # the new outline's edges are the default 0.1 mm
+    assert oz.offset_outline(o, 0.0).half_len == pytest.approx(0.05, abs=1e-12)
+    same = oz.offset_outline(o, 0.0, (1.0, 2.0))
+    assert same.loops[0].tolist() == (SQUARE10 + (1.0, 2.0)).tolist()
+    thin = oz.offset_outline(o, 1.0)
+    assert sorted(map(tuple, thin.loops[0].tolist())) == [(1.0, 1.0), (1.0, 9.0), (9.0, 1.0), (9.0, 9.0)]
+    # thicker by 1: the sides moved out, the corners quarter circles of a 64-gon
+    thick = oz.offset_outline(o, -1.0, (0.0, -3.0))
+    assert thick.area == pytest.approx(100.0 + 40.0 + 0.5 * 64 * math.sin(2 * math.pi / 64), abs=1e-6)
+    assert thick.points[:, 1].min() == pytest.approx(-4.0, abs=1e-9) and thick.points[:, 0].max() == pytest.approx(
+        11.0, abs=1e-9)
+    # two bodies thinned: the larger one is kept
+    two = Outline([SQUARE10, _rect(12, 3, 16, 7)], 100.0)
+    kept = oz.offset_outline(two, 1.0)
+    assert sorted(map(tuple, kept.loops[0].tolist())) == [(1.0, 1.0), (1.0, 9.0), (9.0, 1.0), (9.0, 9.0)]
+    two = Outline([_rect(12, 3, 16, 7), SQUARE10], 100.0)
+    kept = oz.offset_outline(two, 1.0)
+    assert sorted(map(tuple, kept.loops[0].tolist())) == [(1.0, 1.0), (1.0, 9.0), (9.0, 1.0), (9.0, 9.0)]
+
+
+def test_crop_to_sector_keeps_an_inner_arc_below_one_mm_and_offset_keeps_a_triangle():
+    big = m3d.CrossSection([np.ascontiguousarray(_rect(-20, -20, 20, 20))], m3d.FillRule.Positive)
+    loops = oz.crop_to_sector(big, 0.0, math.pi / 2, 0.5, 5.0)
+    assert len(loops[0]) == 2 * 79
+    assert abs(oz._signed_area(loops[0])) == pytest.approx(_wedge_area(0.0, math.pi / 2, 0.5, 5.0, 79), abs=1e-7)
+    # a right triangle (legs 12) thinned by 1: its legs move in by 1, its hypotenuse x + y = 12 by 1 to 12 - sqrt 2
+    tri = Outline([np.array([[0.0, 0.0], [12.0, 0.0], [0.0, 12.0]])], 100.0)
+    thin = oz.offset_outline(tri, 1.0)
+    k = 11.0 - math.sqrt(2.0)
+    assert len(thin.loops[0]) == 3
+    assert np.array(sorted(map(tuple, thin.loops[0].tolist()))) == pytest.approx(
+        np.array([(1.0, 1.0), (1.0, k), (k, 1.0)]), abs=1e-8)
