@@ -1708,3 +1708,91 @@ def test_crop_to_sector_keeps_an_inner_arc_below_one_mm_and_offset_keeps_a_trian
     assert len(thin.loops[0]) == 3
     assert np.array(sorted(map(tuple, thin.loops[0].tolist()))) == pytest.approx(
         np.array([(1.0, 1.0), (1.0, k), (k, 1.0)]), abs=1e-8)
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# nearest.py: the vertex grid by hand, its levels and the compiled search's pruning against brute force
+# ---------------------------------------------------------------------------------------------------------------
+
+from propulsor.checks.motion import nearest as nz  # noqa: E402
+
+
+def test_vertex_grid_of_a_unit_square_by_hand():
+    """Edges of mean 0.0125 mm: cells of 8 x 0.0125 = 0.1 mm; 1.0 // 0.1 = 9 (0.1 is a little over a tenth): 10 x 10
+    cells, the far corners (1.0 / 0.1 = 10) clamped into the last column and row."""
+    pts = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+    g = nz.VertexGrid(pts, np.roll(pts, -1, axis=0), np.full(4, 0.0125))
+    assert (g.h, g.nx, g.ny) == (0.1, 10, 10) and g.origin.tolist() == [0.0, 0.0]
+    assert g.items.tolist() == [0, 3, 1, 2] and g.items.dtype == np.int64  # cells 0, 9, 90, 99
+    assert g.start.dtype == np.int64 and len(g.start) == 101
+    assert np.flatnonzero(np.diff(g.start)).tolist() == [0, 9, 90, 99] and g.start[-1] == 4
+    assert g.seg_b.tolist() == np.roll(pts, -1, axis=0).tolist() and g.seg_b.flags.c_contiguous
+    # near: the cells within one of an occupied one (2 x 2 about each corner)
+    want = sorted(ix * 10 + iy for cx in (0, 9) for cy in (0, 9) for ix in range(10) for iy in range(10)
+                  if abs(ix - cx) <= 1 and abs(iy - cy) <= 1)
+    assert g.near.dtype == np.bool_ and np.flatnonzero(g.near).tolist() == want and len(want) == 16
+
+
+def test_vertex_grid_cell_side_its_limits_and_vertex_order_in_a_cell():
+    # a 10 x 4 box, edges of mean 0.5: 4 mm cells, 3 x 2 of them
+    pts = np.array([[5.0, 3.0], [15.0, 3.0], [15.0, 7.0], [5.0, 7.0]])
+    g = nz.VertexGrid(pts, pts, np.full(4, 0.5), 3.0)
+    assert (g.h, g.nx, g.ny) == (12.0, 1, 1) and g.origin.tolist() == [5.0, 3.0]
+    g = nz.VertexGrid(pts, pts, np.full(4, 0.5))
+    assert (g.h, g.nx, g.ny) == (4.0, 3, 2)
+    # at most 2^21 cells: a 2000 x 1000 box of 0.01 mm edges has cells of sqrt(2e6 / 2^21) = 0.9765625 mm (2000 of them exactly: 2049 columns)
+    pts = np.array([[0.0, 0.0], [2000.0, 0.0], [2000.0, 1000.0], [0.0, 1000.0]])
+    g = nz.VertexGrid(pts, pts, np.full(4, 0.01))
+    h = math.sqrt(2000.0 * 1000.0 / 2 ** 21)
+    assert g.h == h and (g.nx, g.ny) == (int(2000.0 // h) + 1, int(1000.0 // h) + 1) == (2049, 1025)
+    # a point: the least cell side 1e-6
+    g = nz.VertexGrid(np.zeros((3, 2)), np.zeros((3, 2)), np.zeros(3))
+    assert (g.h, g.nx, g.ny) == (1e-6, 1, 1) and g.items.tolist() == [0, 1, 2]
+    # 90 vertices in three cells, interleaved: each cell lists its vertices in ascending order
+    x = np.tile([0.5, 4.5, 8.5], 30)
+    pts = np.column_stack([x, np.linspace(0.0, 1.0, 90)])
+    g = nz.VertexGrid(pts, pts, np.full(90, 0.5))
+    assert (g.nx, g.ny) == (3, 1)
+    assert g.items.tolist() == list(range(0, 90, 3)) + list(range(1, 90, 3)) + list(range(2, 90, 3))
+
+
+def test_grid_levels_are_cached_and_three_times_coarser():
+    o = Outline([SQUARE10], 0.5)
+    g0, g1 = nz.grid_of(o), nz.grid_of(o, 1)
+    assert nz.grid_of(o, 0) is g0 and nz.grid_of(o, 1) is g1 and g1 is not g0
+    assert g0.h == 4.0 and g1.h == 12.0 and sorted(o._vertex_grids) == [0, 1]
+    # the level: the coarsest whose side is at most half the distance (2 h0 = 8 mm), never above MAX_LEVEL
+    lv = [nz._level_for(o, d) for d in (1.0, 8.0, 8.0 * 3 - 1e-9, 24.0, 8.0 * 9.5, 8.0 * 27 * 1.01, 8.0 * 3 ** 6)]
+    assert lv == [0, 0, 0, 1, 2, 3, 4]
+    # a fine grid (h0 = 0.04 mm): 1 mm is 12.5 times 2 h0, level 2
+    fine = Outline([_rect(0, 0, 1, 1)], 0.005)
+    assert nz.grid_of(fine).h == pytest.approx(0.04, abs=1e-15) and nz._level_for(fine, 1.0) == 2
+
+
+def test_the_compiled_search_prunes_about_the_box_centre():
+    """A long bar (x -1 .. 21, y -1 .. 1; box centre (10, 0)) and three points: 0.5 right of its end, 0.9 above its
+    middle near x = 0, 4 above it: the nearest is the first (brute force)."""
+    bar = _rect(-1, -1, 21, 1)
+    tgt = Outline([bar], 1.0)
+    src = Outline([np.array([[21.5, 0.0], [0.0, 1.9], [0.0, 5.0]])], 100.0)
+    want = _brute_nearest(src.points, bar)
+    assert want[0] == pytest.approx(0.5, abs=1e-12)
+    d, i, q = nz.nearest_edge(src.points, tgt, src)
+    assert d == pytest.approx(0.5, abs=1e-12) and src.points[i].tolist() == [21.5, 0.0]
+    assert q == pytest.approx(np.array([21.0, 0.0]), abs=1e-12)
+
+
+def test_nearest_edge_remembers_the_distance_for_the_next_grid():
+    """Far apart (the tree's answer), then the same two outlines again: the second search runs in the grid of the
+    level the first distance asks for."""
+    tgt = Outline([SQUARE10], 0.5)
+    src = Outline([_rect(0, 0, 1, 1)], 0.5)
+    P = src.points + (40.0, 4.0)
+    d, i, q = nz.nearest_edge(P, tgt, src)
+    assert d == pytest.approx(30.0, abs=1e-12) and tgt._nearest_hints == {id(src): d}
+    assert sorted(tgt._vertex_grids) == [0]
+    d2, _, _ = nz.nearest_edge(P, tgt, src)
+    assert d2 == d and sorted(tgt._vertex_grids) == [0, nz._level_for(tgt, 30.0)] == [0, 1]
+    # near (2.5 mm: the grid's own answer), the hint follows
+    d3, _, _ = nz.nearest_edge(src.points + (12.5, 4.0), tgt, src)
+    assert d3 == pytest.approx(2.5, abs=1e-12) and tgt._nearest_hints == {id(src): d3}
