@@ -1796,3 +1796,118 @@ def test_nearest_edge_remembers_the_distance_for_the_next_grid():
     # near (2.5 mm: the grid's own answer), the hint follows
     d3, _, _ = nz.nearest_edge(src.points + (12.5, 4.0), tgt, src)
     assert d3 == pytest.approx(2.5, abs=1e-12) and tgt._nearest_hints == {id(src): d3}
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# sweep2d.py: the records, the pose pairs, a tie of the two directions and the windowed sweep, by hand
+# ---------------------------------------------------------------------------------------------------------------
+
+from propulsor.checks.motion import sweep2d as s2  # noqa: E402
+from propulsor.checks.motion.poses import Pose  # noqa: E402
+
+
+def test_sweep_result_records_in_full_both_sides_of_their_limits():
+    tol = policy.OVERLAP_AREA_TOL_MM2
+    r = s2.SweepResult(np.array([0.1, 0.2, 0.3]), np.array([-0.1, -0.2, -0.3]), np.array([0.0, tol, 0.5 * tol]),
+                       np.array([0.5, 0.25, 0.75]), np.array([[1.0, 2.0], [3.0, 4.0], [0.0, 0.0]]),
+                       np.array([[1.0, 2.0], [5.0, 8.0], [0.0, 0.0]]), 0.25, "gear")
+    assert (r.n_steps, r.max_overlap, r.step_max_overlap, r.min_clearance, r.step_min_clearance) == (3, tol, 1, 0.25, 1)
+    assert r.interfering_steps.tolist() == []
+    w = r.where_min_clearance()
+    assert set(w) == {"step", "angle_a", "angle_b", "point", "clearance"}
+    assert (w["step"], w["angle_a"], w["angle_b"], w["clearance"]) == (1, 0.2, -0.2, 0.25)
+    assert w["point"].tolist() == [4.0, 6.0]
+    c = r.checks()
+    assert [(x.name, x.passed, x.value, x.limit, x.unit) for x in c] == [
+        ("gear.overlap_area", True, tol, tol, "mm^2"), ("gear.min_clearance", True, 0.25, 0.25, "mm")]
+    assert c[0].message == "max overlap 1e-06 mm^2 at step 1 (angles 0.200000, -0.200000 rad); 0 of 3 steps interfere"
+    assert c[1].message == "min clearance 0.25 mm at step 1 near (4.0000, 6.0000)"
+    # just beyond both limits
+    r.overlap_area[2] = 1.5 * tol
+    r.clearance_limit = float(np.nextafter(0.25, 1.0))
+    c = r.checks()
+    assert (c[0].passed, c[1].passed) == (False, False) and r.interfering_steps.tolist() == [2]
+    assert c[0].message == ("max overlap 1.5e-06 mm^2 at step 2 (angles 0.300000, -0.300000 rad); "
+                            "1 of 3 steps interfere")
+    r.clearance_limit = None
+    assert [x.name for x in r.checks()] == ["gear.overlap_area"]
+
+
+def test_sweep_pair_pose_refusals_in_full_and_a_single_pose_stretched():
+    sq = [SQUARE10]
+    assert _msg(s2.sweep_pair, sq, np.zeros((2, 3)), sq, Pose()) == (
+        "poses_a = (2, 3): must be Poses or an (n, 2, 3) array")
+    assert _msg(s2.sweep_pair, sq, Pose(), sq, np.zeros((2, 3))) == (
+        "poses_b = (2, 3): must be Poses or an (n, 2, 3) array")
+    three = [Pose(0.0, (0.0, 0.0), (20.0 + k, 0.0)) for k in range(3)]
+    assert _msg(s2.sweep_pair, sq, three, sq, three[:2]) == "poses_b = 2: must have as many steps as poses_a (3)"
+    # a list of one pose after a list of three: held for all three steps; a bare Pose either way round
+    r = s2.sweep_pair(sq, three, sq, [Pose()], max_segment=100.0, name="pair")
+    assert r.name == "pair" and r.clearance.tolist() == [10.0, 11.0, 12.0]
+    r = s2.sweep_pair(sq, Pose(), sq, three, max_segment=100.0)
+    assert r.name == "motion" and r.clearance.tolist() == [10.0, 11.0, 12.0] and r.angle_a.tolist() == [0.0] * 3
+
+
+def test_a_tie_of_the_two_directions_reports_b_vertex_on_a_edge():
+    """B (the square moved by (12, 3)) has its corner (12, 3) 2 mm from A's right edge, and A's corner (10, 10) lies
+    2 mm from B's left edge: the first direction (B's vertices to A's edges) is reported."""
+    r = s2.sweep_pair([SQUARE10], Pose(), [SQUARE10], [Pose(0.0, (0.0, 0.0), (12.0, 3.0))], max_segment=100.0)
+    assert r.clearance[0] == 2.0
+    assert r.point_a[0].tolist() == [10.0, 3.0] and r.point_b[0].tolist() == [12.0, 3.0]
+
+
+def test_windowed_sweep_of_a_diamond_over_a_long_block_by_hand():
+    """A: the block 0..100 x 0..10, held at a pose (turned 0.3 rad, moved (5, -2)); B: a diamond of half diagonal
+    sqrt 2 (its lowest corner sqrt 2 below its centre) moving 0.5 mm a step along the block at heights giving the
+    gaps g (reach 1): the common area is the triangle h^2 below the block's top (h = -g), the clearance g or -h
+    (the corner, h deep in A), at most reach; runs whose window (sqrt 2 + reach) / cos(pi / 48) about the centres
+    misses A report reach at the run's first centre."""
+    th, off = 0.3, np.array([5.0, -2.0])
+    R = np.array([[math.cos(th), -math.sin(th)], [math.sin(th), math.cos(th)]])
+    world = lambda p: R @ np.asarray(p, float) + off  # noqa: E731
+    s = math.sqrt(2.0)
+    diamond = np.array([[0.0, -s], [s, 0.0], [0.0, s], [-s, 0.0]])
+    g = [3.0, 3.0, 0.5, 0.3, -0.2, -0.3, 0.05, 1.003, 1.2, 3.0, 3.0, 0.998]
+    x = [10.0 + 0.5 * k for k in range(len(g))]
+    x[10] = x[9] + 1.0  # 1 mm on: beyond half B's radius, a new run
+    x[11] = x[10] + 5.0
+    yc = [10.0 + s + gk for gk in g]
+    poses_b = [Pose(th, (0.0, 0.0), tuple(world((xk, yk)))) for xk, yk in zip(x, yc)]
+    r = s2.sweep_pair_windowed([_rect(0, 0, 100, 10)], Pose(th, (0.0, 0.0), tuple(off)), [diamond], poses_b, 1.0,
+                               clearance_limit=0.0, name="win")
+    assert r.name == "win" and r.clearance_limit == 0.0 and r.angle_a.tolist() == [th] * 12
+    assert r.angle_b == pytest.approx([th] * 12, abs=1e-15)
+    area = [max(0.0, -gk) ** 2 for gk in g]
+    clear = [-(-gk) if gk < 0 else min(gk, 1.0) for gk in g]
+    assert r.overlap_area == pytest.approx(area, abs=1e-8)
+    assert r.clearance == pytest.approx(clear, abs=1e-8)
+    for k in (2, 3, 6, 11):  # gaps within reach (0.998: its window reaches 0.005 below A's top): B's corner and the point of A's top below it
+        assert r.point_a[k] == pytest.approx(world((x[k], 10.0)), abs=1e-8)
+        assert r.point_b[k] == pytest.approx(world((x[k], yc[k] - s)), abs=1e-8)
+    for k in (4, 5):  # overlapping: both points the corner inside A
+        assert r.point_a[k] == pytest.approx(world((x[k], yc[k] - s)), abs=1e-8)
+        assert r.point_b[k] == pytest.approx(world((x[k], yc[k] - s)), abs=1e-8)
+    # runs apart from A: steps 0 and 1 (one run: 0.5 mm apart), steps 9 and 10 alone: the run's first centre
+    for k, k0 in ((0, 0), (1, 0), (9, 9), (10, 10)):
+        assert r.point_a[k] == pytest.approx(world((x[k0], yc[k0])), abs=1e-12)
+        assert r.point_b[k] == pytest.approx(world((x[k0], yc[k0])), abs=1e-12)
+    assert r.step_min_clearance == 5 and [c.passed for c in r.checks()] == [False, False]
+    # reach must be positive
+    assert _msg(s2.sweep_pair_windowed, [SQUARE10], Pose(), [diamond], [Pose()], 0.0) == "reach = 0.0: must be > 0 mm"
+
+
+def test_windowed_sweep_keeps_a_triangle_and_samples_profiles_to_chord_tol():
+    """A triangle (legs 3) inside the window (reach 5) comes out whole; a diamond's edge parallel to its hypotenuse,
+    (5 - sqrt 2 + 1.5 - 3) / sqrt 2 from it.  Two circles (r 50 and 2, their centres 52.5 apart): 0.5 plus at
+    most the chord sags of the sampled circles (below chord_tol 1e-4 each)."""
+    s = math.sqrt(2.0)
+    diamond = np.array([[0.0, -s], [s, 0.0], [0.0, s], [-s, 0.0]])
+    tri = np.array([[0.0, 0.0], [3.0, 0.0], [0.0, 3.0]])
+    r = s2.sweep_pair_windowed([tri], Pose(), [diamond], [Pose(0.0, (0.0, 0.0), (5.0, 1.5))], 5.0)
+    assert r.name == "motion" and r.clearance_limit is None
+    assert r.clearance[0] == pytest.approx((5.0 - s + 1.5 - 3.0) / s, abs=1e-8) and r.overlap_area[0] == 0.0
+    big, small = Profile(circle_loop(50.0)), Profile(circle_loop(2.0))
+    a = 0.123  # off the circles' first vertices: the sampled polygons lie inside the circles, by at most the sags
+    r = s2.sweep_pair_windowed(big, Pose(), small, [Pose(0.0, (0.0, 0.0), (52.5 * math.cos(a), 52.5 * math.sin(a)))],
+                               1.0, 1e-4)
+    assert 0.5 <= r.clearance[0] <= 0.5 + 2e-4
