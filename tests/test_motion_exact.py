@@ -1911,3 +1911,94 @@ def test_windowed_sweep_keeps_a_triangle_and_samples_profiles_to_chord_tol():
     r = s2.sweep_pair_windowed(big, Pose(), small, [Pose(0.0, (0.0, 0.0), (52.5 * math.cos(a), 52.5 * math.sin(a)))],
                                1.0, 1e-4)
     assert 0.5 <= r.clearance[0] <= 0.5 + 2e-4
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# sweep3d.py: boxes of 10 mm moved by hand (volumes and gaps by hand), the refusals in full, the boxes' skip
+# ---------------------------------------------------------------------------------------------------------------
+
+from propulsor.checks.motion import sweep3d as s3  # noqa: E402
+from test_motion import _box, _translation  # noqa: E402
+
+
+def test_sweep3d_refusals_in_full():
+    box = _box(10, 10, 10)
+    V, F = box
+    e4 = np.eye(4)
+    assert _msg(s3.sweep_solids_3d, (V, F[:-2]), e4, box, e4) == (
+        "mesh_a = 'Error.NotManifold': must be a closed, oriented 2-manifold mesh")
+    assert _msg(s3.sweep_solids_3d, box, e4, (V, F[:-2]), e4) == (
+        "mesh_b = 'Error.NotManifold': must be a closed, oriented 2-manifold mesh")
+    assert _msg(s3.sweep_solids_3d, box, np.zeros((4, 3)), box, e4) == (
+        "poses_a = (1, 4, 3): must be (4, 4) or (n, 4, 4) matrices")  # one matrix: shown as a stack of one
+    assert _msg(s3.sweep_solids_3d, box, e4, box, np.zeros((2, 4, 3))) == (
+        "poses_b = (2, 4, 3): must be (4, 4) or (n, 4, 4) matrices")
+    bad = np.array([e4, e4])
+    bad[1, 0, 3] = np.nan
+    assert _msg(s3.sweep_solids_3d, box, e4, box, bad) == "poses_b = 'non-finite': poses must be finite"
+    assert _msg(s3.sweep_solids_3d, box, bad, box, e4) == "poses_a = 'non-finite': poses must be finite"
+    three, two = np.array([e4] * 3), np.array([e4] * 2)
+    assert _msg(s3.sweep_solids_3d, box, three, box, two) == "poses_b = 2: must have 1 or 3 poses like poses_a"
+    assert _msg(s3.sweep_solids_3d, box, two, box, three) == "poses_b = 3: must have 1 or 3 poses like poses_a"
+    assert _msg(s3.sweep_solids_3d, box, e4, box, e4, search_length=0.0) == "search_length = 0.0: must be > 0 mm"
+    assert _msg(s3.sweep_solids_3d, box, e4, box, e4, skip_apart=True) == "skip_apart = True: needs search_length"
+
+
+def test_sweep3d_one_pose_held_and_b_left_where_it_is():
+    box = _box(10, 10, 10)
+    # A moved along x by 5, 8, 12 against B held at one (integer) pose: 500, 200 and 0 mm^3, B never moved
+    Ta = np.array([_translation(5.0), _translation(8.0), _translation(12.0)])
+    r = s3.sweep_solids_3d(box, Ta, box, np.eye(4, dtype=int))
+    assert r.name == "motion3d" and r.gap is None
+    assert r.overlap_volume == pytest.approx([500.0, 200.0, 0.0], abs=1e-9)
+    r = s3.sweep_solids_3d(box, Ta, box, None, search_length=3.0, name="cam")
+    assert r.name == "cam" and r.overlap_volume == pytest.approx([500.0, 200.0, 0.0], abs=1e-9)
+    assert r.gap == pytest.approx([0.0, 0.0, 2.0], abs=1e-9)
+    # one pose of A against three of B
+    r = s3.sweep_solids_3d(box, np.eye(4, dtype=int), box, Ta)
+    assert r.overlap_volume == pytest.approx([500.0, 200.0, 0.0], abs=1e-9)
+
+
+def test_sweep3d_skips_steps_whose_boxes_lie_search_length_apart():
+    """search_length 2: a box gap of 2 or more is recorded as gap 2 without a boolean; 1.5 is measured; each face of
+    B's box tried (B held where it is, then moved)."""
+    box = _box(10, 10, 10)
+    moves = [(12.0, 0.0, 0.0), (11.5, 0.0, 0.0), (0.0, 0.0, 11.5), (0.0, 0.0, -11.5), (0.0, 11.5, 0.0),
+             (-11.5, 0.0, 0.0), (5.0, 0.0, 0.0), (13.0, 0.0, 0.0), (0.0, 0.0, 5.0)]
+    Ta = np.array([_translation(*m) for m in moves])
+    r = s3.sweep_solids_3d(box, Ta, box, None, search_length=2.0, skip_apart=True)
+    assert r.gap == pytest.approx([2.0, 1.5, 1.5, 1.5, 1.5, 1.5, 0.0, 2.0, 0.0], abs=1e-9)
+    assert r.overlap_volume == pytest.approx([0, 0, 0, 0, 0, 0, 500.0, 0, 500.0], abs=1e-9)
+    # B moved too: A at x = 50, B at 55 (common 500 mm^3), then B back at the origin (40 apart)
+    Ta = np.array([_translation(50.0)] * 3)
+    Tb = np.array([_translation(55.0), np.eye(4), _translation(61.5)])
+    r = s3.sweep_solids_3d(box, Ta, box, Tb, search_length=2.0, skip_apart=True)
+    assert r.overlap_volume == pytest.approx([500.0, 0.0, 0.0], abs=1e-9)
+    assert r.gap == pytest.approx([0.0, 2.0, 1.5], abs=1e-9)
+
+
+def test_sweep3d_record_in_full_both_sides_of_the_limit():
+    tol = policy.OVERLAP_VOLUME_TOL_MM3
+    r = s3.Sweep3DResult(np.array([0.0, tol]), None, "cam")
+    (c,) = r.checks()
+    assert (c.name, c.passed, c.value, c.limit, c.unit) == ("cam.overlap_volume", True, tol, tol, "mm^3")
+    assert c.message == "max overlap volume 0.001 mm^3 at step 1; 0 of 2 steps interfere"
+    r = s3.Sweep3DResult(np.array([0.0, tol, 1.5 * tol]), None)
+    (c,) = r.checks()
+    assert (c.name, c.passed) == ("motion3d.overlap_volume", False)
+    assert c.message == "max overlap volume 0.0015 mm^3 at step 2; 1 of 3 steps interfere"
+
+
+def test_box_corners_and_moved_boxes_by_hand():
+    from propulsor.solids.kernel import manifold
+    V, F = _box(1.0, 2.0, 3.0)
+    m = manifold((V + (4.0, 5.0, 6.0), F), "mesh")
+    c = s3.box_corners(m)
+    assert c.tolist() == [[x, y, z, 1.0] for x in (4.0, 5.0) for y in (5.0, 7.0) for z in (6.0, 9.0)]
+    # a quarter turn about z: (x, y, z) -> (-y, x, z), then 1 mm up
+    T = np.array([[0.0, -1.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 1.0, 1.0], [0.0, 0.0, 0.0, 1.0]])
+    lo, hi = s3.box_of(c, T)
+    assert lo.tolist() == [-7.0, 4.0, 7.0] and hi.tolist() == [-5.0, 5.0, 10.0]
+    assert s3.box_gap((lo, hi), (np.array([-4.0, 0.0, 0.0]), np.array([0.0, 4.0, 7.0]))) == 1.0
+    assert s3.box_gap((lo, hi), (np.array([-1.0, 6.0, 12.0]), np.array([0.0, 8.0, 13.0]))) == pytest.approx(
+        math.sqrt(16.0 + 1.0 + 4.0), abs=1e-15)
