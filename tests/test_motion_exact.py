@@ -2002,3 +2002,106 @@ def test_box_corners_and_moved_boxes_by_hand():
     assert s3.box_gap((lo, hi), (np.array([-4.0, 0.0, 0.0]), np.array([0.0, 4.0, 7.0]))) == 1.0
     assert s3.box_gap((lo, hi), (np.array([-1.0, 6.0, 12.0]), np.array([0.0, 8.0, 13.0]))) == pytest.approx(
         math.sqrt(16.0 + 1.0 + 4.0), abs=1e-15)
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# mesh_load.py: every tooth pair within reach at one phase, on the bar and blocks (contact points, normals and
+# lever arms by hand)
+# ---------------------------------------------------------------------------------------------------------------
+
+from propulsor.checks.motion.mesh_load import phase_contacts  # noqa: E402
+
+
+def _blocks_over_the_bar(mirror=False):
+    """Three blocks (driver axis 8 mm off) with their lower-right corners at q1 = (7, 1.8), q2 = (4, 1.4), q3 = (9.5,
+    2.4) (mirrored: below the bar): the bar's upper edge, turned back, meets q1 first (e1 = 0.1825), then q3 (e3 =
+    0.1964) and q2 (e2 = 0.2184); q1's block's lower-left corner (5, 1.8) at 0.2297."""
+    qs = [np.array([7.0, 1.8]), np.array([4.0, 1.4]), np.array([9.5, 2.4])]
+    blocks = [_square(q[0] - 1.0 - 8.0, q[1] + 1.0) for q in qs]
+    teeth = [2.0, 2.2, 1.1]
+    if mirror:
+        blocks = [b[::-1] * (1.0, -1.0) for b in blocks]
+        teeth = [-t for t in teeth]
+    return PairOutlines(Outline(blocks, 100.0), Outline([BAR], 100.0), 8.0, teeth, [0.0]), qs
+
+
+def test_phase_contacts_lists_the_pairs_within_the_window_by_their_gaps():
+    po, (q1, q2, q3) = _blocks_over_the_bar()
+    e1, e2, e3 = (_edge_meets_corner(q) for q in (q1, q2, q3))
+    assert e1 < e3 < e2 < e1 + 0.05
+    te, cs = phase_contacts(po, 0.0, 0.0, -e1, 0.05, DRIVE)
+    assert te == pytest.approx(-e1, abs=1e-12)
+    # q3's force would not pass torque (its line of action passes beyond the driver's axis: l1 < 0): left out
+    assert [(c.driver_tooth, c.driven_tooth, c.edge_of, c.vertex) for c in cs] == [(0, 0, "driven", 1),
+                                                                                    (1, 0, "driven", 5)]
+    for c, q, e, gap in zip(cs, (q1, q2), (e1, e2), (0.0, e2 - e1)):
+        u, n = np.array([math.cos(e), math.sin(e)]), np.array([math.sin(e), -math.cos(e)])  # the edge, its normal in
+        assert c.gap == pytest.approx(gap, abs=1e-12)
+        assert c.x == pytest.approx(q, abs=1e-9) and c.p_driver == pytest.approx(q - (8.0, 0.0), abs=1e-9)
+        assert c.p_driven == pytest.approx((float(q @ u), 0.5), abs=1e-9)
+        assert c.n == pytest.approx(n, abs=1e-12)
+        assert c.l2 == pytest.approx(math.sqrt(q @ q - 0.25), abs=1e-9)
+        assert c.l1 == pytest.approx((8.0 - q[0]) * math.cos(e) - q[1] * math.sin(e), abs=1e-9)
+    assert (8.0 - q3[0]) * math.cos(e3) - q3[1] * math.sin(e3) < 0
+    # a window of 0.03: q2 (0.036 on) is not listed
+    te, cs = phase_contacts(po, 0.0, 0.0, -e1, 0.03, DRIVE)
+    assert [(c.driver_tooth, c.gap) for c in cs] == [(0, 0.0)]
+    # started 0.15 of the margin short of the contact (the first hit within 0.2 margin): searched again from 4 margins
+    m = policy.CONTACT_TRACK_MARGIN_RAD
+    te, cs = phase_contacts(po, 0.0, 0.0, -e1 - 0.85 * m, 0.05, DRIVE)
+    assert te == pytest.approx(-e1, abs=1e-12) and len(cs) == 2
+    # the phase moves the start: at phi = 0.01 (the driven turned 0.01 further) the same contact, te = -e1 - 0.01
+    te, cs = phase_contacts(po, 0.01, 0.0, -e1 - 0.01, 0.05, DRIVE)
+    assert te == pytest.approx(-e1 - 0.01, abs=1e-12) and cs[0].x == pytest.approx(q1, abs=1e-9)
+    # turned on (reverse), nothing within reach
+    te, cs = phase_contacts(po, 0.0, 0.0, -e1, 0.05, REVERSE)
+    assert math.isnan(te) and cs == []
+
+
+def test_phase_contacts_in_reverse_is_the_mirror_image():
+    po, (q1, q2, q3) = _blocks_over_the_bar(mirror=True)
+    e1, e2 = _edge_meets_corner(q1), _edge_meets_corner(q2)
+    te, cs = phase_contacts(po, 0.0, 0.0, e1, 0.05, REVERSE)
+    assert te == pytest.approx(e1, abs=1e-12)
+    assert [(c.driver_tooth, c.driven_tooth, c.edge_of) for c in cs] == [(0, 0, "driven"), (1, 0, "driven")]
+    for c, q, e, gap in zip(cs, (q1, q2), (e1, e2), (0.0, e2 - e1)):
+        qm = q * (1.0, -1.0)
+        assert c.gap == pytest.approx(gap, abs=1e-12) and c.x == pytest.approx(qm, abs=1e-9)
+        assert c.n == pytest.approx((math.sin(e), math.cos(e)), abs=1e-12)
+        assert c.l2 == pytest.approx(math.sqrt(q @ q - 0.25), abs=1e-9)
+        assert c.l1 == pytest.approx((8.0 - q[0]) * math.cos(e) - q[1] * math.sin(e), abs=1e-9)
+
+
+def test_phase_contacts_of_a_driven_corner_on_a_turned_driver_edge():
+    """The bar's tip corner (10, 0.5) on the lower edge of a block (driver axis 14 mm off, turned 0.05 rad): the
+    contact point P where the tip's circle meets the turned edge, the force along the edge's inward normal turned by
+    theta, (sin th, -cos th); l2 = P . (cos th, sin th), l1 = (14 - Px) cos th - Py sin th."""
+    th = 0.05
+    R = np.array([[math.cos(th), -math.sin(th)], [math.sin(th), math.cos(th)]])
+    A, B = np.array([14.0, 0.0]) + R @ (-5.0, 2.2), np.array([14.0, 0.0]) + R @ (-3.0, 2.2)
+    d = B - A
+    qa, qb, qc = d @ d, 2 * A @ d, A @ A - 100.25
+    t = (-qb + math.sqrt(qb * qb - 4 * qa * qc)) / (2 * qa)
+    P = A + t * d
+    e = math.atan2(P[1], P[0]) - math.atan2(0.5, 10.0)
+    po = PairOutlines(Outline([_square(10.0 - 14.0, 3.2)], 100.0), Outline([BAR], 100.0), 14.0, [2.6006, 2.7006],
+                      [0.0, 0.3])
+    te, cs = phase_contacts(po, 0.0, th, -e, 0.02, DRIVE)
+    assert te == pytest.approx(-e, abs=1e-12) and len(cs) == 2
+    c, c2 = cs
+    assert (c.driver_tooth, c.driven_tooth, c.edge_of, c.vertex, c.gap) == (0, 0, "driver", 2, 0.0)
+    assert c.x == pytest.approx(P, abs=1e-9) and c.p_driven.tolist() == [10.0, 0.5]
+    assert c.p_driver == pytest.approx(R.T @ (P - (14.0, 0.0)), abs=1e-9)
+    assert c.n == pytest.approx((math.sin(th), -math.cos(th)), abs=1e-12)
+    assert c.l2 == pytest.approx(P[0] * math.cos(th) + P[1] * math.sin(th), abs=1e-9)
+    assert c.l1 == pytest.approx((14.0 - P[0]) * math.cos(th) - P[1] * math.sin(th), abs=1e-9)
+    # then the block's lower-left corner Q (driver frame (-5, 2.2): tooth 1 at 2.7006) on the bar's upper edge
+    Q = np.array([14.0, 0.0]) + R @ (-5.0, 2.2)
+    eq = _edge_meets_corner(Q)
+    assert (c2.driver_tooth, c2.driven_tooth, c2.edge_of, c2.vertex) == (1, 0, "driven", 0)
+    assert c2.gap == pytest.approx(eq - e, abs=1e-12) and c2.x == pytest.approx(Q, abs=1e-9)
+    assert c2.n == pytest.approx((math.sin(eq), -math.cos(eq)), abs=1e-12)
+    assert c2.l2 == pytest.approx(math.sqrt(Q @ Q - 0.25), abs=1e-9)
+    assert c2.l1 == pytest.approx((14.0 - Q[0]) * math.cos(eq) - Q[1] * math.sin(eq), abs=1e-9)
+    # a window just short of its gap (0.0101): the first pair alone
+    assert [c.driver_tooth for c in phase_contacts(po, 0.0, th, -e, 0.01, DRIVE)[1]] == [0]
