@@ -2053,6 +2053,10 @@ def test_phase_contacts_lists_the_pairs_within_the_window_by_their_gaps():
     # the phase moves the start: at phi = 0.01 (the driven turned 0.01 further) the same contact, te = -e1 - 0.01
     te, cs = phase_contacts(po, 0.01, 0.0, -e1 - 0.01, 0.05, DRIVE)
     assert te == pytest.approx(-e1 - 0.01, abs=1e-12) and cs[0].x == pytest.approx(q1, abs=1e-9)
+    # the driven teeth named across +-pi: the contacts (at 0.069 and 0.118 rad) lie 0.08 and 0.13 from 2 pi - 0.01,
+    # 2.9 from 3.0
+    po2 = PairOutlines(po.drv, po.dvn, 8.0, po.driver_teeth, [2 * math.pi - 0.01, 3.0])
+    assert [c.driven_tooth for c in phase_contacts(po2, 0.0, 0.0, -e1, 0.05, DRIVE)[1]] == [0, 0]
     # turned on (reverse), nothing within reach
     te, cs = phase_contacts(po, 0.0, 0.0, -e1, 0.05, REVERSE)
     assert math.isnan(te) and cs == []
@@ -2073,35 +2077,38 @@ def test_phase_contacts_in_reverse_is_the_mirror_image():
 
 
 def test_phase_contacts_of_a_driven_corner_on_a_turned_driver_edge():
-    """The bar's tip corner (10, 0.5) on the lower edge of a block (driver axis 14 mm off, turned 0.05 rad): the
-    contact point P where the tip's circle meets the turned edge, the force along the edge's inward normal turned by
-    theta, (sin th, -cos th); l2 = P . (cos th, sin th), l1 = (14 - Px) cos th - Py sin th."""
+    """The bar's tip corner (10, 0.5) on the slanted lower edge (-5, 2.2) -> (-3, 2.0) of a block (driver axis 14 mm
+    off, turned 0.05 rad; the edge is the block's third): the contact point P where the tip's circle meets the turned
+    edge, the force on the driven along minus the edge's left normal, turned by theta; the lever arms its moments
+    about both axes."""
     th = 0.05
     R = np.array([[math.cos(th), -math.sin(th)], [math.sin(th), math.cos(th)]])
-    A, B = np.array([14.0, 0.0]) + R @ (-5.0, 2.2), np.array([14.0, 0.0]) + R @ (-3.0, 2.2)
+    A, B = np.array([14.0, 0.0]) + R @ (-5.0, 2.2), np.array([14.0, 0.0]) + R @ (-3.0, 2.0)
     d = B - A
     qa, qb, qc = d @ d, 2 * A @ d, A @ A - 100.25
     t = (-qb + math.sqrt(qb * qb - 4 * qa * qc)) / (2 * qa)
     P = A + t * d
     e = math.atan2(P[1], P[0]) - math.atan2(0.5, 10.0)
-    po = PairOutlines(Outline([_square(10.0 - 14.0, 3.2)], 100.0), Outline([BAR], 100.0), 14.0, [2.6006, 2.7006],
+    block = np.array([[-3.0, 4.2], [-5.0, 4.2], [-5.0, 2.2], [-3.0, 2.0]])
+    po = PairOutlines(Outline([block], 100.0), Outline([BAR], 100.0), 14.0, [2.6006, 2.7506],
                       [0.0, 0.3])
-    te, cs = phase_contacts(po, 0.0, th, -e, 0.02, DRIVE)
+    te, cs = phase_contacts(po, 0.0, th, -e, 0.025, DRIVE)
     assert te == pytest.approx(-e, abs=1e-12) and len(cs) == 2
     c, c2 = cs
     assert (c.driver_tooth, c.driven_tooth, c.edge_of, c.vertex, c.gap) == (0, 0, "driver", 2, 0.0)
     assert c.x == pytest.approx(P, abs=1e-9) and c.p_driven.tolist() == [10.0, 0.5]
     assert c.p_driver == pytest.approx(R.T @ (P - (14.0, 0.0)), abs=1e-9)
-    assert c.n == pytest.approx((math.sin(th), -math.cos(th)), abs=1e-12)
-    assert c.l2 == pytest.approx(P[0] * math.cos(th) + P[1] * math.sin(th), abs=1e-9)
-    assert c.l1 == pytest.approx((14.0 - P[0]) * math.cos(th) - P[1] * math.sin(th), abs=1e-9)
-    # then the block's lower-left corner Q (driver frame (-5, 2.2): tooth 1 at 2.7006) on the bar's upper edge
+    n = R @ (-np.array([0.2, 2.0]) / math.hypot(2.0, 0.2))
+    assert c.n == pytest.approx(n, abs=1e-12)
+    assert c.l2 == pytest.approx(-(P[0] * n[1] - P[1] * n[0]), abs=1e-9)
+    assert c.l1 == pytest.approx((P[0] - 14.0) * n[1] - P[1] * n[0], abs=1e-9)
+    # then the block's lower-left corner Q (driver frame (-5, 2.2): tooth 1 at 2.7506) on the bar's upper edge
     Q = np.array([14.0, 0.0]) + R @ (-5.0, 2.2)
     eq = _edge_meets_corner(Q)
-    assert (c2.driver_tooth, c2.driven_tooth, c2.edge_of, c2.vertex) == (1, 0, "driven", 0)
+    assert (c2.driver_tooth, c2.driven_tooth, c2.edge_of, c2.vertex) == (1, 0, "driven", 2)
     assert c2.gap == pytest.approx(eq - e, abs=1e-12) and c2.x == pytest.approx(Q, abs=1e-9)
     assert c2.n == pytest.approx((math.sin(eq), -math.cos(eq)), abs=1e-12)
     assert c2.l2 == pytest.approx(math.sqrt(Q @ Q - 0.25), abs=1e-9)
     assert c2.l1 == pytest.approx((14.0 - Q[0]) * math.cos(eq) - Q[1] * math.sin(eq), abs=1e-9)
-    # a window just short of its gap (0.0101): the first pair alone
-    assert [c.driver_tooth for c in phase_contacts(po, 0.0, th, -e, 0.01, DRIVE)[1]] == [0]
+    # a window just short of its gap (0.0195): the first pair alone
+    assert [c.driver_tooth for c in phase_contacts(po, 0.0, th, -e, 0.019, DRIVE)[1]] == [0]
