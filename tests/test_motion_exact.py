@@ -1740,7 +1740,8 @@ def test_vertex_grid_cell_side_its_limits_and_vertex_order_in_a_cell():
     assert (g.h, g.nx, g.ny) == (12.0, 1, 1) and g.origin.tolist() == [5.0, 3.0]
     g = nz.VertexGrid(pts, pts, np.full(4, 0.5))
     assert (g.h, g.nx, g.ny) == (4.0, 3, 2)
-    # at most 2^21 cells: a 2000 x 1000 box of 0.01 mm edges has cells of sqrt(2e6 / 2^21) = 0.9765625 mm (2000 of them exactly: 2049 columns)
+    # at most 2^21 cells: a 2000 x 1000 box of 0.01 mm edges has cells of sqrt(2e6 / 2^21) = 0.9765625 mm (2000 of
+    # them exactly: 2049 columns)
     pts = np.array([[0.0, 0.0], [2000.0, 0.0], [2000.0, 1000.0], [0.0, 1000.0]])
     g = nz.VertexGrid(pts, pts, np.full(4, 0.01))
     h = math.sqrt(2000.0 * 1000.0 / 2 ** 21)
@@ -1881,7 +1882,8 @@ def test_windowed_sweep_of_a_diamond_over_a_long_block_by_hand():
     clear = [-(-gk) if gk < 0 else min(gk, 1.0) for gk in g]
     assert r.overlap_area == pytest.approx(area, abs=1e-8)
     assert r.clearance == pytest.approx(clear, abs=1e-8)
-    for k in (2, 3, 6, 11):  # gaps within reach (0.998: its window reaches 0.005 below A's top): B's corner and the point of A's top below it
+    # gaps within reach (0.998: its window reaches 0.005 below A's top): B's corner and the point of A's top below it
+    for k in (2, 3, 6, 11):
         assert r.point_a[k] == pytest.approx(world((x[k], 10.0)), abs=1e-8)
         assert r.point_b[k] == pytest.approx(world((x[k], yc[k] - s)), abs=1e-8)
     for k in (4, 5):  # overlapping: both points the corner inside A
