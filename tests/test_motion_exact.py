@@ -1227,3 +1227,890 @@ def test_the_window_is_widened_to_take_in_contacts_within_contact_tol_of_the_fir
     blocks = [_square(*(q1 + (-1.0, 1.0))) - (C1 - C2), _square(*(q2 + (-0.3, 0.3)), h=0.3) - (C1 - C2)]
     res = transmission_sweep(blocks, C1, [BAR], C2, lambda p: 0.0, [0.0], senses=(1, 1), max_angle=0.5)
     assert res.free_fwd[0] == pytest.approx(e, abs=1e-12) and res.pairs_coast[0] == 2
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# poses.py: the rigid planar poses (2x3 affine matrices [R | t]) written out by hand
+# ---------------------------------------------------------------------------------------------------------------
+
+from propulsor.checks.motion import poses as pz  # noqa: E402
+
+
+def test_a_pose_turns_about_its_pivot_then_moves_by_its_offset():
+    # a quarter turn about (1, 2), then (3, 4) on: x -> R (x - p) + p + o with R (u, v) = (-v, u)
+    M = pz.Pose(math.pi / 2, (1.0, 2.0), (3.0, 4.0)).matrix()
+    assert M.shape == (2, 3)
+    assert M == pytest.approx(np.array([[0.0, -1.0, 1.0 + 2.0 + 3.0], [1.0, 0.0, 2.0 - 1.0 + 4.0]]), abs=1e-15)
+    for x in ((0.0, 0.0), (1.0, 2.0), (5.0, -1.0)):
+        u, v = x[0] - 1.0, x[1] - 2.0
+        assert M[:, :2] @ x + M[:, 2] == pytest.approx((-v + 1.0 + 3.0, u + 2.0 + 4.0), abs=1e-14)
+    assert pz.Pose().matrix().tolist() == [[1.0, -0.0, 0.0], [0.0, 1.0, 0.0]]
+
+
+def test_poses_from_angles_one_pose_per_angle_in_floats():
+    ps = pz.poses_from_angles(np.array([[0, 1], [2, 3]]), pivot=(1, 2), offset=(3, 4))
+    assert ps == [pz.Pose(float(a), (1.0, 2.0), (3.0, 4.0)) for a in (0, 1, 2, 3)]
+    for p in ps:
+        assert type(p.angle) is float and all(type(c) is float for c in p.pivot + p.offset)
+        assert type(p.pivot) is tuple and type(p.offset) is tuple
+    assert pz.poses_from_angles([0.5]) == [pz.Pose(0.5, (0.0, 0.0), (0.0, 0.0))]
+
+
+def test_rotation_matrices_are_the_turns_then_the_translations():
+    a = [0.3, -2.0]
+    M = pz.rotation_matrices(a)
+    assert M.shape == (2, 2, 3)
+    for k, t in enumerate(a):
+        assert M[k].tolist() == [[math.cos(t), -math.sin(t), 0.0], [math.sin(t), math.cos(t), 0.0]]
+    M = pz.rotation_matrices(np.array([1, 2]), [[5.0, 6.0], [7.0, 8.0]])
+    assert M.dtype == np.float64
+    assert M[0].tolist() == [[math.cos(1), -math.sin(1), 5.0], [math.sin(1), math.cos(1), 6.0]]
+    assert M[1].tolist() == [[math.cos(2), -math.sin(2), 7.0], [math.sin(2), math.cos(2), 8.0]]
+
+
+def test_pose_stack_of_one_pose_held_fixed():
+    p = pz.Pose(0.25, (1.0, 0.0), (0.0, 2.0))
+    M, ang = pz.pose_stack(p, None, "poses_a")
+    assert M.shape == (1, 2, 3) and ang.tolist() == [0.25]
+    assert M[0].tolist() == p.matrix().tolist()
+    M, ang = pz.pose_stack(p, 3, "poses_a")
+    assert M.shape == (3, 2, 3) and ang.tolist() == [0.25] * 3
+    assert all(M[k].tolist() == p.matrix().tolist() for k in range(3))
+    # a list of one pose (or one matrix) stretched to n = 2 steps; n = 1 and None leave it one
+    for one in ([p], p.matrix()[None]):
+        M, ang = pz.pose_stack(one, 2, "poses_a")
+        assert M.shape == (2, 2, 3) and ang == pytest.approx([0.25, 0.25], abs=1e-15)
+        assert M[0].tolist() == M[1].tolist() and M[1] == pytest.approx(p.matrix(), abs=1e-15)
+        for n in (1, None):
+            M, ang = pz.pose_stack(one, n, "poses_a")
+            assert M.shape == (1, 2, 3) and len(ang) == 1
+
+
+def test_pose_stack_of_matrices_reads_the_angle_from_the_first_column():
+    t = np.array([0.7, -2.5, 3.0])
+    M = np.zeros((3, 2, 3), int).astype(float)
+    M[:, 0, 0], M[:, 0, 1], M[:, 1, 0], M[:, 1, 1] = np.cos(t), -np.sin(t), np.sin(t), np.cos(t)
+    M[:, :, 2] = [[1.0, 2.0], [3.0, 4.0], [5.0, 6.0]]
+    out, ang = pz.pose_stack(M, 3, "poses_b")
+    assert out.tolist() == M.tolist() and ang == pytest.approx(t, abs=1e-15)
+    # integer matrices (quarter turns) come out as floats; so do integer Pose angles
+    q = np.array([[[0, -1, 3], [1, 0, 4]]])
+    out, ang = pz.pose_stack(q, None, "poses_b")
+    assert out.dtype == np.float64 and ang.dtype == np.float64 and ang.tolist() == [math.pi / 2]
+    out, ang = pz.pose_stack([pz.Pose(1), pz.Pose(2)], 2, "poses_b")
+    assert ang.dtype == np.float64 and ang.tolist() == [1.0, 2.0]
+    assert out == pytest.approx(np.array([pz.Pose(1.0).matrix(), pz.Pose(2.0).matrix()]), abs=0)
+
+
+def test_pose_stack_refusals_in_full():
+    def msg(poses, name="poses_a"):
+        with pytest.raises(InputError) as e:
+            pz.pose_stack(poses, None, name)
+        return str(e.value)
+
+    assert msg(np.zeros((2, 3))) == "poses_a = (2, 3): must be Poses or an (n, 2, 3) array"
+    assert msg(np.zeros((4, 2, 2)), "poses_b") == "poses_b = (4, 2, 2): must be Poses or an (n, 2, 3) array"
+    assert msg(np.zeros((1, 3, 3))) == "poses_a = (1, 3, 3): must be Poses or an (n, 2, 3) array"
+    assert msg([pz.Pose(), "x"], "poses_b") == "poses_b = 'mixed': must be Pose objects"
+    assert msg([]) == "poses_a = 0: need at least one pose"
+    assert msg(np.zeros((0, 2, 3)), "poses_b") == "poses_b = 0: need at least one pose"
+    bad = np.zeros((2, 2, 3))
+    bad[1, 0, 2] = np.inf
+    assert msg(bad) == "poses_a = 'non-finite': poses must be finite"
+    assert msg([pz.Pose(math.nan)], "poses_b") == "poses_b = 'non-finite': poses must be finite"
+    # the limits' other sides: one pose, finite
+    assert pz.pose_stack(np.zeros((1, 2, 3)), None, "poses_a")[0].shape == (1, 2, 3)
+
+
+def test_apply_inverse_and_compose_poses_by_hand():
+    A = pz.Pose(math.pi / 2, (0.0, 0.0), (1.0, 0.0)).matrix()   # (x, y) -> (1 - y, x)
+    B = pz.Pose(math.pi, (0.0, 0.0), (0.0, 2.0)).matrix()       # (x, y) -> (-x, 2 - y)
+    P = np.array([[1.0, 0.0], [2.0, 3.0]])
+    assert pz.apply_pose(A, P) == pytest.approx(np.array([[1.0, 1.0], [-2.0, 2.0]]), abs=1e-15)
+    # A o B: (x, y) -> A(-x, 2 - y) = (1 - 2 + y, -x)
+    AB = pz.compose_poses(A, B)
+    assert pz.apply_pose(AB, P) == pytest.approx(np.array([[-1.0, -1.0], [2.0, -2.0]]), abs=1e-15)
+    assert AB == pytest.approx(np.array([[0.0, 1.0, -1.0], [-1.0, 0.0, 0.0]]), abs=1e-15)
+    # A's inverse: (u, v) -> (v, 1 - u)
+    Ai = pz.inverse_pose(A)
+    assert Ai == pytest.approx(np.array([[0.0, 1.0, 0.0], [-1.0, 0.0, 1.0]]), abs=1e-15)
+    assert pz.apply_pose(Ai, np.array([[1.0, 1.0], [-2.0, 2.0]])) == pytest.approx(P, abs=1e-15)
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# distance.py: the KD-tree least distance, its pruning discs and balls, against brute force over every edge
+# ---------------------------------------------------------------------------------------------------------------
+
+from propulsor.checks.motion import distance as dz  # noqa: E402
+
+SQUARE10 = np.array([[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]])  # CCW: kept in this order, edges 10 mm
+
+
+def _seg_dist(p, a, b):
+    """Distance from p to the segment ab and its foot, written out."""
+    d = (b[0] - a[0], b[1] - a[1])
+    t = ((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / (d[0] * d[0] + d[1] * d[1])
+    t = min(max(t, 0.0), 1.0)
+    q = (a[0] + t * d[0], a[1] + t * d[1])
+    return math.hypot(p[0] - q[0], p[1] - q[1]), q
+
+
+def _brute_nearest(P, loop):
+    """(least distance, its point's index, foot) over every point and every edge of one closed loop."""
+    best = (math.inf, -1, None)
+    for i, p in enumerate(P):
+        for k in range(len(loop)):
+            d, q = _seg_dist(p, loop[k], loop[(k + 1) % len(loop)])
+            if d < best[0]:
+                best = (d, i, q)
+    return best
+
+
+def _polygon(n, r=1.0, c=(0.0, 0.0)):
+    a = 2.0 * math.pi * np.arange(n) / n
+    return np.column_stack([c[0] + r * np.cos(a), c[1] + r * np.sin(a)])
+
+
+def test_chunk_discs_hold_each_run_of_32_vertices_and_are_cached():
+    src = Outline([_polygon(70)], 100.0)
+    assert len(src.points) == 70
+    reps, rho, rho_max = dz._chunk_discs(src)
+    assert reps.tolist() == [0, 32, 64]
+    want = [max(math.dist(src.points[r], src.points[i]) for i in range(r, min(r + 32, 70))) for r in (0, 32, 64)]
+    assert rho == pytest.approx(want, abs=1e-15) and rho_max == pytest.approx(max(want), abs=1e-15)
+    # a run of 32 vertices of the 70-gon spans 31 steps: its farthest vertex is 2 sin(31 pi / 70) away; 6 vertices: 5
+    assert want == pytest.approx([2 * math.sin(31 * math.pi / 70)] * 2 + [2 * math.sin(5 * math.pi / 70)], abs=1e-12)
+    assert dz._chunk_discs(src) is dz._chunk_discs(src)
+
+
+def test_live_points_keeps_a_run_exactly_at_its_bound_and_drops_it_beyond():
+    tgt = Outline([SQUARE10], 100.0)
+    src = Outline([_polygon(70)], 100.0)
+    P = src.points + (12.0, 3.0)
+    m = policy.MOTION_PRUNE_MARGIN_MM
+    rho = [max(math.dist(src.points[r], src.points[i]) for i in range(r, min(r + 32, 70))) for r in (0, 32, 64)]
+    dr = [min(math.dist(P[r], v) for v in SQUARE10) for r in (0, 32, 64)]
+    assert dr[0] == pytest.approx(math.hypot(3.0, 3.0), abs=1e-12)  # (13, 3) to the corner (10, 0)
+    keep = np.array([40, 3, 65, 10, 33, 0])  # runs 1, 0, 2, 0, 1, 0
+    limit = dr[0] - rho[0]
+    bound = limit - m
+    assert bound + m == limit  # run 0 exactly at its bound (<=: kept)
+    live = [dr[c] - rho[c] <= limit for c in range(3)]
+    assert live[0] and not live[2]  # run 2 (near (12 + cos, 3 + sin) of angles 5.7..6.2) is farther off
+    got = dz._live_points(P, keep, tgt, src, bound)
+    assert got.tolist() == [k for k in keep.tolist() if live[k // 32]]
+    assert 0 in got.tolist() and 3 in got.tolist()
+    # a tenth of the margin beyond: run 0 is dropped
+    got = dz._live_points(P, keep, tgt, src, bound - 0.1 * m)
+    assert 0 not in got.tolist() and 3 not in got.tolist() and 10 not in got.tolist()
+
+
+def test_ball_pairs_are_the_edges_on_each_side_of_every_vertex_within_r():
+    tgt = Outline([SQUARE10], 100.0)
+    assert tgt.prev.tolist() == [3, 0, 1, 2]
+    # one vertex within r: the edge starting there (0 -> 1) and the one ending there (3 -> 0)
+    pi, si = dz.ball_pairs(tgt, np.array([[-1.0, 0.0]]), 1.5)
+    assert pi.tolist() == [0, 0] and si.tolist() == [0, 3]
+    # none
+    pi, si = dz.ball_pairs(tgt, np.array([[-1.0, 0.0], [5.0, 5.0]]), 0.5)
+    assert pi.shape == si.shape == (0,) and pi.dtype.kind == si.dtype.kind == "i"
+    # (5, -1) reaches (0, 0) and (10, 0) (sqrt 26 = 5.099); (-1, 0) reaches (0, 0) only
+    pi, si = dz.ball_pairs(tgt, np.array([[5.0, -1.0], [-1.0, 0.0]]), 5.2)
+    assert sorted(zip(pi.tolist(), si.tolist())) == [(0, 0), (0, 0), (0, 1), (0, 3), (1, 0), (1, 3)]
+
+
+def test_dist_each_point_is_the_distance_to_the_nearest_edge():
+    tgt = Outline([SQUARE10], 100.0)
+    P = np.array([[5.0, -2.0], [12.0, 12.0], [5.0, 5.5], [-1.0, 0.0], [3.0, 9.0]])
+    got = dz.dist_each_point(P, tgt)
+    assert got == pytest.approx([2.0, math.sqrt(8.0), 4.5, 1.0, 1.0], abs=1e-12)
+    assert got == pytest.approx([_brute_nearest(P[i:i + 1], SQUARE10)[0] for i in range(5)], abs=1e-12)
+    assert dz.dist_each_point(P[2:3], tgt).tolist() == [4.5]
+    e = dz.dist_each_point(np.empty((0, 2)), tgt)
+    assert e.shape == (0,)
+
+
+def test_min_dist_of_tied_points_is_the_first_and_the_middle_of_a_long_edge_counts():
+    """(5, 0), the middle of the 10 mm edge, lies exactly half an edge from its ends; (10, 10) is a vertex: both at 0
+    and the first point is the answer (nearest.py's "first pair at the least distance")."""
+    tgt = Outline([SQUARE10], 100.0)
+    assert tgt.half_len == 5.0
+    d, i, q = dz.min_dist_points_to(np.array([[5.0, 0.0], [10.0, 10.0]]), tgt)
+    assert (d, i, q.tolist()) == (0.0, 0, [5.0, 0.0])
+    d, i, q = dz.min_dist_points_to(np.array([[5.0, 0.5], [10.5, 10.0]]), tgt)
+    assert (d, i, q.tolist()) == (0.5, 0, [5.0, 0.0])
+
+
+def test_min_dist_finds_a_mid_edge_point_that_the_subsample_bound_hides():
+    """130 points (the subsample: every other): the nearest (0.01 below the top edge's middle, its corners 5 mm off)
+    and one 0.04 inside a corner at odd places, the rest near the centre (7.07 mm from every corner); the least lower
+    bound at a point 1.04 above the top edge (5.1 mm from the corners)."""
+    tgt = Outline([SQUARE10], 100.0)
+    P = np.array([(5.0 + 0.01 * math.cos(k), 5.0 + 0.01 * math.sin(k)) for k in range(130)])
+    P[1] = (9.96, 9.96)
+    P[3] = (5.0, 9.99)
+    P[4] = (5.0, 11.04)
+    want = _brute_nearest(P, SQUARE10)
+    assert want[0] == pytest.approx(0.01, abs=1e-12) and want[1] == 3
+    d, i, q = dz.min_dist_points_to(P, tgt)
+    assert (d, i) == (pytest.approx(want[0], abs=1e-12), 3) and q == pytest.approx(np.array(want[2]), abs=1e-12)
+
+
+def test_check_record_keeps_none_and_makes_numbers_floats():
+    c = dz.check_record("motion.x", 1, None, None, "mm", "why")
+    assert (c.name, c.passed, c.value, c.limit, c.unit, c.message) == ("motion.x", True, None, None, "mm", "why")
+    c = dz.check_record("motion.y", 0, np.float32(0.5), 2, "mm^2", "")
+    assert (c.passed, c.value, c.limit) == (False, 0.5, 2.0) and type(c.value) is float and type(c.limit) is float
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# crossing.py: bodies certainly apart (no boolean): the limits of d and the crossing search's grid
+# ---------------------------------------------------------------------------------------------------------------
+
+from propulsor.checks.motion import crossing as cz  # noqa: E402
+
+
+def _rect(x0, y0, x1, y1):
+    return np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]])  # CCW, first corner (x0, y0)
+
+
+def test_loop_firsts_are_the_first_vertex_of_each_loop_and_are_cached():
+    o = Outline([_rect(0, 0, 10, 10), _polygon(3, 1.0, (5.0, 5.0))[::-1], _polygon(5, 0.5, (2.0, 2.0))[::-1]], 100.0)
+    assert o.loop_id.tolist() == [0] * 4 + [1] * 3 + [2] * 5
+    f = cz._loop_firsts(o)
+    assert f.tolist() == [0, 4, 7] and f.dtype == np.int64
+    assert cz._loop_firsts(o) is f
+    assert cz._loop_firsts(Outline([_rect(0, 0, 1, 1)], 100.0)).tolist() == [0]
+
+
+def test_certainly_apart_doubts_at_apart_min_and_trusts_just_above():
+    # 10 mm apart, no edges on one line (collinear edges count as touching: zero orientations)
+    A, B = Outline([SQUARE10], 100.0), Outline([_rect(20, 1, 30, 9)], 100.0)
+    assert not cz.certainly_apart(A, B, B.points, A.points, cz.APART_MIN_MM)
+    assert cz.certainly_apart(A, B, B.points, A.points, float(np.nextafter(cz.APART_MIN_MM, 1.0)))
+    assert cz.certainly_apart(A, B, B.points, A.points, 10.0)
+    # a body inside the other's hole is apart; inside the other (either way round) is not
+    ring = Outline([_rect(-10, -10, 20, 20), SQUARE10[::-1] + 0.0], 100.0)
+    inner = Outline([_rect(2, 2, 8, 8)], 100.0)
+    assert cz.certainly_apart(ring, inner, inner.points, ring.points, 2.0)
+    big = Outline([_rect(-10, -10, 20, 20)], 100.0)
+    assert not cz.certainly_apart(big, inner, inner.points, big.points, 2.0)
+    assert not cz.certainly_apart(inner, big, big.points, inner.points, 2.0)
+
+
+def test_the_crossing_search_runs_up_to_half_the_longest_edge_inclusive():
+    """A bar 20 x 2 mm through the 10 mm square (half edges 10 and 5): neither holds the other's first corner, the
+    boundaries cross at x = 0 and 10.  With d at most 10 the edges are searched (crossing: not apart); above 10 the
+    search is skipped, d having promised that no edges cross."""
+    A, B = Outline([SQUARE10], 100.0), Outline([_rect(-5, 4, 15, 6)], 100.0)
+    assert (A.half_len, B.half_len) == (5.0, 10.0)
+    assert not cz.certainly_apart(A, B, B.points, A.points, 10.0)
+    assert not cz.certainly_apart(A, B, B.points, A.points, 0.5)
+    assert cz.certainly_apart(A, B, B.points, A.points, float(np.nextafter(10.0, 11.0)))
+
+
+def test_the_crossing_search_finds_a_crossing_far_from_the_origin():
+    """The square at x = 100..110 cut into 0.5 mm edges (a grid of 4 mm cells from (100, 0)), a bar 95..103 through
+    its left edge: the crossings lie in the first column of cells."""
+    A = Outline([_rect(100, 0, 110, 10)], 0.5)
+    B = Outline([_rect(95, 4, 103, 6)], 0.5)
+    from propulsor.checks.motion.nearest import grid_of
+    g = grid_of(A)
+    assert g.origin.tolist() == [100.0, 0.0] and g.nx == 3
+    assert not cz.certainly_apart(A, B, B.points, A.points, 0.1)
+    far = Outline([_rect(85, 4, 93, 6)], 0.5)
+    assert cz.certainly_apart(A, far, far.points, A.points, 0.1)
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# outlines.py: cleaning, orientation by nesting, subdivision, the annulus, crops and offsets, by hand
+# ---------------------------------------------------------------------------------------------------------------
+
+from propulsor.checks.motion import outlines as oz  # noqa: E402
+
+
+def _msg(fn, *a, **kw):
+    with pytest.raises(InputError) as e:
+        fn(*a, **kw)
+    return str(e.value)
+
+
+def test_outline_refusals_in_full_and_both_sides_of_three_points():
+    assert _msg(Outline, [np.zeros((3, 3))]) == "loops[0] = (3, 3): must be an (n, 2) array of points"
+    assert _msg(Outline, [SQUARE10, np.zeros(4)]) == "loops[1] = (4,): must be an (n, 2) array of points"
+    bad = SQUARE10.copy()
+    bad[2, 1] = np.nan
+    assert _msg(Outline, [SQUARE10, bad]) == "loops[1] = 'non-finite': points must be finite"
+    assert _msg(Outline, [SQUARE10[:2]]) == "loops[0] = 2: a closed loop needs at least 3 distinct points"
+    assert len(Outline([SQUARE10[:3]], 100.0)) == 3
+    assert _msg(Outline, []) == "loops = 0: need at least one closed loop"
+    assert _msg(Outline, [SQUARE10], 0.0) == "max_segment = 0.0: must be > 0 mm"
+    assert _msg(oz.outline, SQUARE10, 1e-4, -1.0) == "max_segment = -1.0: must be > 0 mm"
+    assert _msg(oz.outline, Profile(circle_loop(7.0)), 0.0) == "chord_tol = 0.0: must be > 0 mm"
+    assert _msg(oz.outline, 5) == ("body = 'int': must be a Profile, an Outline or a list of closed (n, 2) "
+                                   "polylines")
+
+
+def test_clean_loop_drops_the_closing_point_and_repeated_vertices_only():
+    # integer points come out as floats
+    o = Outline([[[0, 0], [10, 0], [0, 10]]], 100.0)
+    assert o.points.dtype == np.float64 and o.loops[0].dtype == np.float64
+    # the first point repeated at the end (within POINT_TOL_MM): dropped
+    o = Outline([np.vstack([SQUARE10, [[0.0, 5e-8]]])], 100.0)
+    assert o.points.tolist() == SQUARE10.tolist()
+    # a vertex exactly POINT_TOL_MM before the next: dropped (a step must exceed it)
+    tol = policy.POINT_TOL_MM
+    o = Outline([np.array([[0.0, 0.0], [tol, 0.0], [10.0, 0.0], [0.0, 10.0]])], 100.0)
+    assert o.points.tolist() == [[tol, 0.0], [10.0, 0.0], [0.0, 10.0]]
+    # the first two points within POINT_TOL_MM: the first goes, the last stays
+    o = Outline([np.array([[0.0, 0.0], [5e-8, 0.0], [10.0, 0.0], [0.0, 10.0]])], 100.0)
+    assert o.points.tolist() == [[5e-8, 0.0], [10.0, 0.0], [0.0, 10.0]]
+    # a loop that returns to its start or to its second point on the way keeps every point
+    o = Outline([np.array([[0.0, 0.0], [10.0, 0.0], [0.0, 0.0], [0.0, -10.0], [-10.0, 0.0]])], 100.0)
+    assert len(o) == 5
+    o = Outline([np.array([[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [10.0, 0.0]])], 100.0)
+    assert len(o) == 4
+
+
+def test_signed_area_and_points_in_polygon_by_hand():
+    tri = np.array([[0.0, 0.0], [4.0, 0.0], [0.0, 3.0]])
+    assert oz._signed_area(tri) == 6.0 and oz._signed_area(tri[::-1]) == -6.0
+    assert oz._signed_area(SQUARE10 + (3.0, 7.0)) == 100.0
+    # a triangle off the origin, its slanted edge x + y = 65
+    t = np.array([[20.0, 30.0], [30.0, 30.0], [20.0, 40.0]])
+    pts = np.array([[24.9, 35.0], [25.1, 35.0], [21.0, 31.0], [19.9, 35.0], [22.0, 29.9], [20.0, 35.0], [25.0, 35.0]])
+    # on the left edge: inside; on the slanted one: outside (the ray to +x counts crossings at x < the edge's x)
+    assert oz._points_in_polygon(pts, t).tolist() == [True, False, True, False, False, True, False]
+    assert oz._points_in_polygon(pts, t[::-1]).tolist() == [True, False, True, False, False, True, False]
+    # a U: the ray from the left prong crosses three edges
+    u = np.array([[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [7.0, 10.0], [7.0, 3.0], [3.0, 3.0], [3.0, 10.0], [0.0, 10.0]])
+    assert oz._points_in_polygon(np.array([[1.0, 5.0], [5.0, 5.0], [8.0, 5.0], [5.0, 1.0]]), u).tolist() == [
+        True, False, True, True]
+
+
+def test_orientation_by_nesting_outer_ccw_hole_cw_island_ccw():
+    outer, hole, island = _rect(0, 0, 30, 30), _rect(5, 5, 25, 25), _rect(10, 10, 20, 20)
+    o = Outline([outer[::-1], hole, island[::-1]], 100.0)
+    assert [oz._signed_area(p) > 0 for p in o.loops] == [True, False, True]
+    assert o.loops[0].tolist() == outer.tolist() and o.loops[1].tolist() == hole[::-1].tolist()
+    assert o.loops[2].tolist() == island.tolist()
+    assert o.area == pytest.approx(900.0 - 400.0 + 100.0, abs=1e-9)
+    # a fourth level (depth 3): a hole again
+    o = Outline([outer, hole, island, _rect(12, 12, 18, 18)], 100.0)
+    assert [oz._signed_area(p) > 0 for p in o.loops] == [True, False, True, False]
+
+
+def test_subdivision_arclength_and_perimeters_of_two_loops():
+    # a 10 mm square cut at 6 mm: every edge in two of 5 mm; a CW hole of 2 mm sides left whole
+    o = Outline([SQUARE10, _rect(4, 4, 6, 6)], 6.0)
+    assert o.points.tolist() == [[0, 0], [5, 0], [10, 0], [10, 5], [10, 10], [5, 10], [0, 10], [0, 5],
+                                 [4, 6], [6, 6], [6, 4], [4, 4]]
+    assert o.loop_id.tolist() == [0] * 8 + [1] * 4
+    assert o.arclen.tolist() == [0, 5, 10, 15, 20, 25, 30, 35, 0, 2, 4, 6]
+    assert o.perimeter.tolist() == [40.0, 8.0]
+    assert o.nxt.tolist() == [1, 2, 3, 4, 5, 6, 7, 0, 9, 10, 11, 8]
+    assert o.prev.tolist() == [7, 0, 1, 2, 3, 4, 5, 6, 11, 8, 9, 10]
+    assert o.half_len == 2.5 and o.area == pytest.approx(96.0, abs=1e-9)
+    # a 12 mm edge cut at 5 mm: three edges of 4 mm
+    o = Outline([np.array([[0.0, 0.0], [12.0, 0.0], [0.0, 1.0]])], 5.0)
+    assert o.points[:4] == pytest.approx(np.array([[0, 0], [4, 0], [8, 0], [12, 0]]), abs=1e-15)
+
+
+def test_the_annulus_of_a_plus_sign_reaches_its_inner_corners():
+    """A plus sign, arms 2 w = 4 mm wide reaching L = 10 from its centre: the boundary's nearest points to the centre
+    are the four inner corners (w, w) (w sqrt 2; the lines of their edges pass at w), its farthest the arms' corners
+    (sqrt(L^2 + w^2))."""
+    w, L = 2.0, 10.0
+    plus = np.array([[w, -w], [L, -w], [L, w], [w, w], [w, L], [-w, L], [-w, w], [-L, w], [-L, -w], [-w, -w],
+                     [-w, -L], [w, -L]])
+    o = Outline([plus], 100.0)
+    assert o.center.tolist() == [0.0, 0.0]
+    assert o.r_min == pytest.approx(w * math.sqrt(2.0), abs=1e-12)
+    assert o.radius == pytest.approx(math.hypot(L, w), abs=1e-12)
+    P = np.array([[0.0, 0.0], [20.0, 0.0], [1.0, 1.0]])
+    assert o.boundary_lower_bound(P) == pytest.approx(
+        [w * math.sqrt(2), 20.0 - math.hypot(L, w), w * math.sqrt(2) - math.sqrt(2)], abs=1e-12)
+    # off the origin: the same annulus about the box's centre
+    o = Outline([plus + (100.0, -50.0)], 100.0)
+    assert o.center.tolist() == [100.0, -50.0] and o.r_min == pytest.approx(w * math.sqrt(2.0), abs=1e-12)
+
+
+def test_outline_of_a_profile_takes_max_segment_and_passes_an_outline_through():
+    p = Profile(circle_loop(7.0))
+    n = len([q for q in p.polylines(1e-2)[0]])
+    o = oz.outline(p, 1e-2, 100.0)
+    assert abs(len(o) - n) <= 1  # the polyline's vertices (its closing point dropped), none added
+    assert len(oz.outline(p, 1e-2)) > 5 * len(o)  # the default 0.1 mm edges
+    assert oz.outline(o) is o
+    assert len(oz.outline(SQUARE10, max_segment=100.0)) == 4
+    assert len(oz.outline((q for q in [SQUARE10]), max_segment=5.0)) == 8
+
+
+def _wedge_area(a0, a1, r_in, r_out, n):
+    """A polygon of n points on each arc: (n - 1) triangles of the outer arc less those of the inner one."""
+    d = (a1 - a0) / (n - 1)
+    return 0.5 * (n - 1) * math.sin(d) * (r_out ** 2 - r_in ** 2)
+
+
+def test_crop_to_sector_is_the_polygonal_annular_sector():
+    # (manifold3d keeps its points to about 4e-9 mm)
+    big = m3d.CrossSection([np.ascontiguousarray(_rect(-20, -20, 20, 20))], m3d.FillRule.Positive)
+    # a quarter: ceil((pi / 2) / 0.02) = 79 points on each arc
+    loops = oz.crop_to_sector(big, 0.0, math.pi / 2, 2.0, 5.0)
+    assert len(loops) == 1 and loops[0].dtype == np.float64 and len(loops[0]) == 2 * 79
+    assert abs(oz._signed_area(loops[0])) == pytest.approx(_wedge_area(0.0, math.pi / 2, 2.0, 5.0, 79), abs=1e-7)
+    r = np.hypot(loops[0][:, 0], loops[0][:, 1])
+    assert r.min() == pytest.approx(2.0, abs=1e-8) and r.max() == pytest.approx(5.0, abs=1e-8)
+    # a narrow sector (0.1 rad: ceil 5) takes the least, 8 points an arc; with r_in 0 a pie (the centre one point)
+    loops = oz.crop_to_sector(big, 1.0, 1.1, 0.0, 5.0)
+    assert len(loops[0]) == 9
+    assert abs(oz._signed_area(loops[0])) == pytest.approx(_wedge_area(1.0, 1.1, 0.0, 5.0, 8), abs=1e-7)
+    a = np.arctan2(loops[0][:, 1], loops[0][:, 0])
+    assert a[np.hypot(loops[0][:, 0], loops[0][:, 1]) > 1.0].min() == pytest.approx(1.0, abs=1e-8)
+    assert a.max() == pytest.approx(1.1, abs=1e-8)
+    # a body inside the sector comes out whole
+    sq = m3d.CrossSection([np.ascontiguousarray(_rect(1, 1, 2, 2))], m3d.FillRule.Positive)
+    loops = oz.crop_to_sector(sq, 0.0, math.pi / 2, 0.5, 5.0)
+    assert sorted(map(tuple, loops[0].tolist())) == [(1.0, 1.0), (1.0, 2.0), (2.0, 1.0), (2.0, 2.0)]
+
+
+def test_offset_outline_thins_thickens_and_shifts():
+    o = Outline([SQUARE10], 100.0)
+    # the new outline's edges are the default 0.1 mm
+    assert oz.offset_outline(o, 0.0).half_len == pytest.approx(0.05, abs=1e-12)
+    same = oz.offset_outline(o, 0.0, (1.0, 2.0))
+    assert same.loops[0].tolist() == (SQUARE10 + (1.0, 2.0)).tolist()
+    thin = oz.offset_outline(o, 1.0)
+    assert sorted(map(tuple, thin.loops[0].tolist())) == [(1.0, 1.0), (1.0, 9.0), (9.0, 1.0), (9.0, 9.0)]
+    # thicker by 1: the sides moved out, the corners quarter circles of a 64-gon
+    thick = oz.offset_outline(o, -1.0, (0.0, -3.0))
+    assert thick.area == pytest.approx(100.0 + 40.0 + 0.5 * 64 * math.sin(2 * math.pi / 64), abs=1e-6)
+    assert thick.points[:, 1].min() == pytest.approx(-4.0, abs=1e-9) and thick.points[:, 0].max() == pytest.approx(
+        11.0, abs=1e-9)
+    # two bodies thinned: the larger one is kept
+    two = Outline([SQUARE10, _rect(12, 3, 16, 7)], 100.0)
+    kept = oz.offset_outline(two, 1.0)
+    assert sorted(map(tuple, kept.loops[0].tolist())) == [(1.0, 1.0), (1.0, 9.0), (9.0, 1.0), (9.0, 9.0)]
+    two = Outline([_rect(12, 3, 16, 7), SQUARE10], 100.0)
+    kept = oz.offset_outline(two, 1.0)
+    assert sorted(map(tuple, kept.loops[0].tolist())) == [(1.0, 1.0), (1.0, 9.0), (9.0, 1.0), (9.0, 9.0)]
+
+
+def test_crop_to_sector_keeps_an_inner_arc_below_one_mm_and_offset_keeps_a_triangle():
+    big = m3d.CrossSection([np.ascontiguousarray(_rect(-20, -20, 20, 20))], m3d.FillRule.Positive)
+    loops = oz.crop_to_sector(big, 0.0, math.pi / 2, 0.5, 5.0)
+    assert len(loops[0]) == 2 * 79
+    assert abs(oz._signed_area(loops[0])) == pytest.approx(_wedge_area(0.0, math.pi / 2, 0.5, 5.0, 79), abs=1e-7)
+    # a right triangle (legs 12) thinned by 1: its legs move in by 1, its hypotenuse x + y = 12 by 1 to 12 - sqrt 2
+    tri = Outline([np.array([[0.0, 0.0], [12.0, 0.0], [0.0, 12.0]])], 100.0)
+    thin = oz.offset_outline(tri, 1.0)
+    k = 11.0 - math.sqrt(2.0)
+    assert len(thin.loops[0]) == 3
+    assert np.array(sorted(map(tuple, thin.loops[0].tolist()))) == pytest.approx(
+        np.array([(1.0, 1.0), (1.0, k), (k, 1.0)]), abs=1e-8)
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# nearest.py: the vertex grid by hand, its levels and the compiled search's pruning against brute force
+# ---------------------------------------------------------------------------------------------------------------
+
+from propulsor.checks.motion import nearest as nz  # noqa: E402
+
+
+def test_vertex_grid_of_a_unit_square_by_hand():
+    """Edges of mean 0.0125 mm: cells of 8 x 0.0125 = 0.1 mm; 1.0 // 0.1 = 9 (0.1 is a little over a tenth): 10 x 10
+    cells, the far corners (1.0 / 0.1 = 10) clamped into the last column and row."""
+    pts = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+    g = nz.VertexGrid(pts, np.roll(pts, -1, axis=0), np.full(4, 0.0125))
+    assert (g.h, g.nx, g.ny) == (0.1, 10, 10) and g.origin.tolist() == [0.0, 0.0]
+    assert g.items.tolist() == [0, 3, 1, 2] and g.items.dtype == np.int64  # cells 0, 9, 90, 99
+    assert g.start.dtype == np.int64 and len(g.start) == 101
+    assert np.flatnonzero(np.diff(g.start)).tolist() == [0, 9, 90, 99] and g.start[-1] == 4
+    assert g.seg_b.tolist() == np.roll(pts, -1, axis=0).tolist() and g.seg_b.flags.c_contiguous
+    # near: the cells within one of an occupied one (2 x 2 about each corner)
+    want = sorted(ix * 10 + iy for cx in (0, 9) for cy in (0, 9) for ix in range(10) for iy in range(10)
+                  if abs(ix - cx) <= 1 and abs(iy - cy) <= 1)
+    assert g.near.dtype == np.bool_ and np.flatnonzero(g.near).tolist() == want and len(want) == 16
+
+
+def test_vertex_grid_cell_side_its_limits_and_vertex_order_in_a_cell():
+    # a 10 x 4 box, edges of mean 0.5: 4 mm cells, 3 x 2 of them
+    pts = np.array([[5.0, 3.0], [15.0, 3.0], [15.0, 7.0], [5.0, 7.0]])
+    g = nz.VertexGrid(pts, pts, np.full(4, 0.5), 3.0)
+    assert (g.h, g.nx, g.ny) == (12.0, 1, 1) and g.origin.tolist() == [5.0, 3.0]
+    g = nz.VertexGrid(pts, pts, np.full(4, 0.5))
+    assert (g.h, g.nx, g.ny) == (4.0, 3, 2)
+    # at most 2^21 cells: a 2000 x 1000 box of 0.01 mm edges has cells of sqrt(2e6 / 2^21) = 0.9765625 mm (2000 of
+    # them exactly: 2049 columns)
+    pts = np.array([[0.0, 0.0], [2000.0, 0.0], [2000.0, 1000.0], [0.0, 1000.0]])
+    g = nz.VertexGrid(pts, pts, np.full(4, 0.01))
+    h = math.sqrt(2000.0 * 1000.0 / 2 ** 21)
+    assert g.h == h and (g.nx, g.ny) == (int(2000.0 // h) + 1, int(1000.0 // h) + 1) == (2049, 1025)
+    # a point: the least cell side 1e-6
+    g = nz.VertexGrid(np.zeros((3, 2)), np.zeros((3, 2)), np.zeros(3))
+    assert (g.h, g.nx, g.ny) == (1e-6, 1, 1) and g.items.tolist() == [0, 1, 2]
+    # 90 vertices in three cells, interleaved: each cell lists its vertices in ascending order
+    x = np.tile([0.5, 4.5, 8.5], 30)
+    pts = np.column_stack([x, np.linspace(0.0, 1.0, 90)])
+    g = nz.VertexGrid(pts, pts, np.full(90, 0.5))
+    assert (g.nx, g.ny) == (3, 1)
+    assert g.items.tolist() == list(range(0, 90, 3)) + list(range(1, 90, 3)) + list(range(2, 90, 3))
+
+
+def test_grid_levels_are_cached_and_three_times_coarser():
+    o = Outline([SQUARE10], 0.5)
+    g0, g1 = nz.grid_of(o), nz.grid_of(o, 1)
+    assert nz.grid_of(o, 0) is g0 and nz.grid_of(o, 1) is g1 and g1 is not g0
+    assert g0.h == 4.0 and g1.h == 12.0 and sorted(o._vertex_grids) == [0, 1]
+    # the level: the coarsest whose side is at most half the distance (2 h0 = 8 mm), never above MAX_LEVEL
+    lv = [nz._level_for(o, d) for d in (1.0, 8.0, 8.0 * 3 - 1e-9, 24.0, 8.0 * 9.5, 8.0 * 27 * 1.01, 8.0 * 3 ** 6)]
+    assert lv == [0, 0, 0, 1, 2, 3, 4]
+    # a fine grid (h0 = 0.04 mm): 1 mm is 12.5 times 2 h0, level 2
+    fine = Outline([_rect(0, 0, 1, 1)], 0.005)
+    assert nz.grid_of(fine).h == pytest.approx(0.04, abs=1e-15) and nz._level_for(fine, 1.0) == 2
+
+
+def test_the_compiled_search_prunes_about_the_box_centre():
+    """A long bar (x -1 .. 21, y -1 .. 1; box centre (10, 0)) and three points: 0.5 right of its end, 0.9 above its
+    middle near x = 0, 4 above it: the nearest is the first (brute force)."""
+    bar = _rect(-1, -1, 21, 1)
+    tgt = Outline([bar], 1.0)
+    src = Outline([np.array([[21.5, 0.0], [0.0, 1.9], [0.0, 5.0]])], 100.0)
+    want = _brute_nearest(src.points, bar)
+    assert want[0] == pytest.approx(0.5, abs=1e-12)
+    d, i, q = nz.nearest_edge(src.points, tgt, src)
+    assert d == pytest.approx(0.5, abs=1e-12) and src.points[i].tolist() == [21.5, 0.0]
+    assert q == pytest.approx(np.array([21.0, 0.0]), abs=1e-12)
+
+
+def test_nearest_edge_remembers_the_distance_for_the_next_grid():
+    """Far apart (the tree's answer), then the same two outlines again: the second search runs in the grid of the
+    level the first distance asks for."""
+    tgt = Outline([SQUARE10], 0.5)
+    src = Outline([_rect(0, 0, 1, 1)], 0.5)
+    P = src.points + (40.0, 4.0)
+    d, i, q = nz.nearest_edge(P, tgt, src)
+    assert d == pytest.approx(30.0, abs=1e-12) and tgt._nearest_hints == {id(src): d}
+    assert sorted(tgt._vertex_grids) == [0]
+    d2, _, _ = nz.nearest_edge(P, tgt, src)
+    assert d2 == d and sorted(tgt._vertex_grids) == [0, nz._level_for(tgt, 30.0)] == [0, 1]
+    # near (2.5 mm: the grid's own answer), the hint follows
+    d3, _, _ = nz.nearest_edge(src.points + (12.5, 4.0), tgt, src)
+    assert d3 == pytest.approx(2.5, abs=1e-12) and tgt._nearest_hints == {id(src): d3}
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# sweep2d.py: the records, the pose pairs, a tie of the two directions and the windowed sweep, by hand
+# ---------------------------------------------------------------------------------------------------------------
+
+from propulsor.checks.motion import sweep2d as s2  # noqa: E402
+from propulsor.checks.motion.poses import Pose  # noqa: E402
+
+
+def test_sweep_result_records_in_full_both_sides_of_their_limits():
+    tol = policy.OVERLAP_AREA_TOL_MM2
+    r = s2.SweepResult(np.array([0.1, 0.2, 0.3]), np.array([-0.1, -0.2, -0.3]), np.array([0.0, tol, 0.5 * tol]),
+                       np.array([0.5, 0.25, 0.75]), np.array([[1.0, 2.0], [3.0, 4.0], [0.0, 0.0]]),
+                       np.array([[1.0, 2.0], [5.0, 8.0], [0.0, 0.0]]), 0.25, "gear")
+    assert (r.n_steps, r.max_overlap, r.step_max_overlap, r.min_clearance, r.step_min_clearance) == (3, tol, 1, 0.25, 1)
+    assert r.interfering_steps.tolist() == []
+    w = r.where_min_clearance()
+    assert set(w) == {"step", "angle_a", "angle_b", "point", "clearance"}
+    assert (w["step"], w["angle_a"], w["angle_b"], w["clearance"]) == (1, 0.2, -0.2, 0.25)
+    assert w["point"].tolist() == [4.0, 6.0]
+    c = r.checks()
+    assert [(x.name, x.passed, x.value, x.limit, x.unit) for x in c] == [
+        ("gear.overlap_area", True, tol, tol, "mm^2"), ("gear.min_clearance", True, 0.25, 0.25, "mm")]
+    assert c[0].message == "max overlap 1e-06 mm^2 at step 1 (angles 0.200000, -0.200000 rad); 0 of 3 steps interfere"
+    assert c[1].message == "min clearance 0.25 mm at step 1 near (4.0000, 6.0000)"
+    # just beyond both limits
+    r.overlap_area[2] = 1.5 * tol
+    r.clearance_limit = float(np.nextafter(0.25, 1.0))
+    c = r.checks()
+    assert (c[0].passed, c[1].passed) == (False, False) and r.interfering_steps.tolist() == [2]
+    assert c[0].message == ("max overlap 1.5e-06 mm^2 at step 2 (angles 0.300000, -0.300000 rad); "
+                            "1 of 3 steps interfere")
+    r.clearance_limit = None
+    assert [x.name for x in r.checks()] == ["gear.overlap_area"]
+
+
+def test_sweep_pair_pose_refusals_in_full_and_a_single_pose_stretched():
+    sq = [SQUARE10]
+    assert _msg(s2.sweep_pair, sq, np.zeros((2, 3)), sq, Pose()) == (
+        "poses_a = (2, 3): must be Poses or an (n, 2, 3) array")
+    assert _msg(s2.sweep_pair, sq, Pose(), sq, np.zeros((2, 3))) == (
+        "poses_b = (2, 3): must be Poses or an (n, 2, 3) array")
+    three = [Pose(0.0, (0.0, 0.0), (20.0 + k, 0.0)) for k in range(3)]
+    assert _msg(s2.sweep_pair, sq, three, sq, three[:2]) == "poses_b = 2: must have as many steps as poses_a (3)"
+    # a list of one pose after a list of three: held for all three steps; a bare Pose either way round
+    r = s2.sweep_pair(sq, three, sq, [Pose()], max_segment=100.0, name="pair")
+    assert r.name == "pair" and r.clearance.tolist() == [10.0, 11.0, 12.0]
+    r = s2.sweep_pair(sq, Pose(), sq, three, max_segment=100.0)
+    assert r.name == "motion" and r.clearance.tolist() == [10.0, 11.0, 12.0] and r.angle_a.tolist() == [0.0] * 3
+
+
+def test_a_tie_of_the_two_directions_reports_b_vertex_on_a_edge():
+    """B (the square moved by (12, 3)) has its corner (12, 3) 2 mm from A's right edge, and A's corner (10, 10) lies
+    2 mm from B's left edge: the first direction (B's vertices to A's edges) is reported."""
+    r = s2.sweep_pair([SQUARE10], Pose(), [SQUARE10], [Pose(0.0, (0.0, 0.0), (12.0, 3.0))], max_segment=100.0)
+    assert r.clearance[0] == 2.0
+    assert r.point_a[0].tolist() == [10.0, 3.0] and r.point_b[0].tolist() == [12.0, 3.0]
+
+
+def test_windowed_sweep_of_a_diamond_over_a_long_block_by_hand():
+    """A: the block 0..100 x 0..10, held at a pose (turned 0.3 rad, moved (5, -2)); B: a diamond of half diagonal
+    sqrt 2 (its lowest corner sqrt 2 below its centre) moving 0.5 mm a step along the block at heights giving the
+    gaps g (reach 1): the common area is the triangle h^2 below the block's top (h = -g), the clearance g or -h
+    (the corner, h deep in A), at most reach; runs whose window (sqrt 2 + reach) / cos(pi / 48) about the centres
+    misses A report reach at the run's first centre."""
+    th, off = 0.3, np.array([5.0, -2.0])
+    R = np.array([[math.cos(th), -math.sin(th)], [math.sin(th), math.cos(th)]])
+    world = lambda p: R @ np.asarray(p, float) + off  # noqa: E731
+    s = math.sqrt(2.0)
+    diamond = np.array([[0.0, -s], [s, 0.0], [0.0, s], [-s, 0.0]])
+    g = [3.0, 3.0, 0.5, 0.3, -0.2, -0.3, 0.05, 1.003, 1.2, 3.0, 3.0, 0.998]
+    x = [10.0 + 0.5 * k for k in range(len(g))]
+    x[10] = x[9] + 1.0  # 1 mm on: beyond half B's radius, a new run
+    x[11] = x[10] + 5.0
+    yc = [10.0 + s + gk for gk in g]
+    poses_b = [Pose(th, (0.0, 0.0), tuple(world((xk, yk)))) for xk, yk in zip(x, yc)]
+    r = s2.sweep_pair_windowed([_rect(0, 0, 100, 10)], Pose(th, (0.0, 0.0), tuple(off)), [diamond], poses_b, 1.0,
+                               clearance_limit=0.0, name="win")
+    assert r.name == "win" and r.clearance_limit == 0.0 and r.angle_a.tolist() == [th] * 12
+    assert r.angle_b == pytest.approx([th] * 12, abs=1e-15)
+    area = [max(0.0, -gk) ** 2 for gk in g]
+    clear = [-(-gk) if gk < 0 else min(gk, 1.0) for gk in g]
+    assert r.overlap_area == pytest.approx(area, abs=1e-8)
+    assert r.clearance == pytest.approx(clear, abs=1e-8)
+    # gaps within reach (0.998: its window reaches 0.005 below A's top): B's corner and the point of A's top below it
+    for k in (2, 3, 6, 11):
+        assert r.point_a[k] == pytest.approx(world((x[k], 10.0)), abs=1e-8)
+        assert r.point_b[k] == pytest.approx(world((x[k], yc[k] - s)), abs=1e-8)
+    for k in (4, 5):  # overlapping: both points the corner inside A
+        assert r.point_a[k] == pytest.approx(world((x[k], yc[k] - s)), abs=1e-8)
+        assert r.point_b[k] == pytest.approx(world((x[k], yc[k] - s)), abs=1e-8)
+    # runs apart from A: steps 0 and 1 (one run: 0.5 mm apart), steps 9 and 10 alone: the run's first centre
+    for k, k0 in ((0, 0), (1, 0), (9, 9), (10, 10)):
+        assert r.point_a[k] == pytest.approx(world((x[k0], yc[k0])), abs=1e-12)
+        assert r.point_b[k] == pytest.approx(world((x[k0], yc[k0])), abs=1e-12)
+    assert r.step_min_clearance == 5 and [c.passed for c in r.checks()] == [False, False]
+    # reach must be positive
+    assert _msg(s2.sweep_pair_windowed, [SQUARE10], Pose(), [diamond], [Pose()], 0.0) == "reach = 0.0: must be > 0 mm"
+
+
+def test_windowed_sweep_keeps_a_triangle_and_samples_profiles_to_chord_tol():
+    """A triangle (legs 3) inside the window (reach 5) comes out whole; a diamond's edge parallel to its hypotenuse,
+    (5 - sqrt 2 + 1.5 - 3) / sqrt 2 from it.  Two circles (r 50 and 2, their centres 52.5 apart): 0.5 plus at
+    most the chord sags of the sampled circles (below chord_tol 1e-4 each)."""
+    s = math.sqrt(2.0)
+    diamond = np.array([[0.0, -s], [s, 0.0], [0.0, s], [-s, 0.0]])
+    tri = np.array([[0.0, 0.0], [3.0, 0.0], [0.0, 3.0]])
+    r = s2.sweep_pair_windowed([tri], Pose(), [diamond], [Pose(0.0, (0.0, 0.0), (5.0, 1.5))], 5.0)
+    assert r.name == "motion" and r.clearance_limit is None
+    assert r.clearance[0] == pytest.approx((5.0 - s + 1.5 - 3.0) / s, abs=1e-8) and r.overlap_area[0] == 0.0
+    big, small = Profile(circle_loop(50.0)), Profile(circle_loop(2.0))
+    a = 0.123  # off the circles' first vertices: the sampled polygons lie inside the circles, by at most the sags
+    r = s2.sweep_pair_windowed(big, Pose(), small, [Pose(0.0, (0.0, 0.0), (52.5 * math.cos(a), 52.5 * math.sin(a)))],
+                               1.0, 1e-4)
+    assert 0.5 <= r.clearance[0] <= 0.5 + 2e-4
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# sweep3d.py: boxes of 10 mm moved by hand (volumes and gaps by hand), the refusals in full, the boxes' skip
+# ---------------------------------------------------------------------------------------------------------------
+
+from propulsor.checks.motion import sweep3d as s3  # noqa: E402
+from test_motion import _box, _translation  # noqa: E402
+
+
+def test_sweep3d_refusals_in_full():
+    box = _box(10, 10, 10)
+    V, F = box
+    e4 = np.eye(4)
+    assert _msg(s3.sweep_solids_3d, (V, F[:-2]), e4, box, e4) == (
+        "mesh_a = 'Error.NotManifold': must be a closed, oriented 2-manifold mesh")
+    assert _msg(s3.sweep_solids_3d, box, e4, (V, F[:-2]), e4) == (
+        "mesh_b = 'Error.NotManifold': must be a closed, oriented 2-manifold mesh")
+    assert _msg(s3.sweep_solids_3d, box, np.zeros((4, 3)), box, e4) == (
+        "poses_a = (1, 4, 3): must be (4, 4) or (n, 4, 4) matrices")  # one matrix: shown as a stack of one
+    assert _msg(s3.sweep_solids_3d, box, e4, box, np.zeros((2, 4, 3))) == (
+        "poses_b = (2, 4, 3): must be (4, 4) or (n, 4, 4) matrices")
+    bad = np.array([e4, e4])
+    bad[1, 0, 3] = np.nan
+    assert _msg(s3.sweep_solids_3d, box, e4, box, bad) == "poses_b = 'non-finite': poses must be finite"
+    assert _msg(s3.sweep_solids_3d, box, bad, box, e4) == "poses_a = 'non-finite': poses must be finite"
+    three, two = np.array([e4] * 3), np.array([e4] * 2)
+    assert _msg(s3.sweep_solids_3d, box, three, box, two) == "poses_b = 2: must have 1 or 3 poses like poses_a"
+    assert _msg(s3.sweep_solids_3d, box, two, box, three) == "poses_b = 3: must have 1 or 3 poses like poses_a"
+    assert _msg(s3.sweep_solids_3d, box, e4, box, e4, search_length=0.0) == "search_length = 0.0: must be > 0 mm"
+    assert _msg(s3.sweep_solids_3d, box, e4, box, e4, skip_apart=True) == "skip_apart = True: needs search_length"
+
+
+def test_sweep3d_one_pose_held_and_b_left_where_it_is():
+    box = _box(10, 10, 10)
+    # A moved along x by 5, 8, 12 against B held at one (integer) pose: 500, 200 and 0 mm^3, B never moved
+    Ta = np.array([_translation(5.0), _translation(8.0), _translation(12.0)])
+    r = s3.sweep_solids_3d(box, Ta, box, np.eye(4, dtype=int))
+    assert r.name == "motion3d" and r.gap is None
+    assert r.overlap_volume == pytest.approx([500.0, 200.0, 0.0], abs=1e-9)
+    r = s3.sweep_solids_3d(box, Ta, box, None, search_length=3.0, name="cam")
+    assert r.name == "cam" and r.overlap_volume == pytest.approx([500.0, 200.0, 0.0], abs=1e-9)
+    assert r.gap == pytest.approx([0.0, 0.0, 2.0], abs=1e-9)
+    # one pose of A against three of B
+    r = s3.sweep_solids_3d(box, np.eye(4, dtype=int), box, Ta)
+    assert r.overlap_volume == pytest.approx([500.0, 200.0, 0.0], abs=1e-9)
+
+
+def test_sweep3d_skips_steps_whose_boxes_lie_search_length_apart():
+    """search_length 2: a box gap of 2 or more is recorded as gap 2 without a boolean; 1.5 is measured; each face of
+    B's box tried (B held where it is, then moved)."""
+    box = _box(10, 10, 10)
+    moves = [(12.0, 0.0, 0.0), (11.5, 0.0, 0.0), (0.0, 0.0, 11.5), (0.0, 0.0, -11.5), (0.0, 11.5, 0.0),
+             (-11.5, 0.0, 0.0), (5.0, 0.0, 0.0), (13.0, 0.0, 0.0), (0.0, 0.0, 5.0)]
+    Ta = np.array([_translation(*m) for m in moves])
+    r = s3.sweep_solids_3d(box, Ta, box, None, search_length=2.0, skip_apart=True)
+    assert r.gap == pytest.approx([2.0, 1.5, 1.5, 1.5, 1.5, 1.5, 0.0, 2.0, 0.0], abs=1e-9)
+    assert r.overlap_volume == pytest.approx([0, 0, 0, 0, 0, 0, 500.0, 0, 500.0], abs=1e-9)
+    # B moved too: A at x = 50, B at 55 (common 500 mm^3), then B back at the origin (40 apart)
+    Ta = np.array([_translation(50.0)] * 3)
+    Tb = np.array([_translation(55.0), np.eye(4), _translation(61.5)])
+    r = s3.sweep_solids_3d(box, Ta, box, Tb, search_length=2.0, skip_apart=True)
+    assert r.overlap_volume == pytest.approx([500.0, 0.0, 0.0], abs=1e-9)
+    assert r.gap == pytest.approx([0.0, 2.0, 1.5], abs=1e-9)
+
+
+def test_sweep3d_record_in_full_both_sides_of_the_limit():
+    tol = policy.OVERLAP_VOLUME_TOL_MM3
+    r = s3.Sweep3DResult(np.array([0.0, tol]), None, "cam")
+    (c,) = r.checks()
+    assert (c.name, c.passed, c.value, c.limit, c.unit) == ("cam.overlap_volume", True, tol, tol, "mm^3")
+    assert c.message == "max overlap volume 0.001 mm^3 at step 1; 0 of 2 steps interfere"
+    r = s3.Sweep3DResult(np.array([0.0, tol, 1.5 * tol]), None)
+    (c,) = r.checks()
+    assert (c.name, c.passed) == ("motion3d.overlap_volume", False)
+    assert c.message == "max overlap volume 0.0015 mm^3 at step 2; 1 of 3 steps interfere"
+
+
+def test_box_corners_and_moved_boxes_by_hand():
+    from propulsor.solids.kernel import manifold
+    V, F = _box(1.0, 2.0, 3.0)
+    m = manifold((V + (4.0, 5.0, 6.0), F), "mesh")
+    c = s3.box_corners(m)
+    assert c.tolist() == [[x, y, z, 1.0] for x in (4.0, 5.0) for y in (5.0, 7.0) for z in (6.0, 9.0)]
+    # a quarter turn about z: (x, y, z) -> (-y, x, z), then 1 mm up
+    T = np.array([[0.0, -1.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 1.0, 1.0], [0.0, 0.0, 0.0, 1.0]])
+    lo, hi = s3.box_of(c, T)
+    assert lo.tolist() == [-7.0, 4.0, 7.0] and hi.tolist() == [-5.0, 5.0, 10.0]
+    assert s3.box_gap((lo, hi), (np.array([-4.0, 0.0, 0.0]), np.array([0.0, 4.0, 7.0]))) == 1.0
+    assert s3.box_gap((lo, hi), (np.array([-1.0, 6.0, 12.0]), np.array([0.0, 8.0, 13.0]))) == pytest.approx(
+        math.sqrt(16.0 + 1.0 + 4.0), abs=1e-15)
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# mesh_load.py: every tooth pair within reach at one phase, on the bar and blocks (contact points, normals and
+# lever arms by hand)
+# ---------------------------------------------------------------------------------------------------------------
+
+from propulsor.checks.motion.mesh_load import phase_contacts  # noqa: E402
+
+
+def _blocks_over_the_bar(mirror=False):
+    """Three blocks (driver axis 8 mm off) with their lower-right corners at q1 = (7, 1.8), q2 = (4, 1.4), q3 = (9.5,
+    2.4) (mirrored: below the bar): the bar's upper edge, turned back, meets q1 first (e1 = 0.1825), then q3 (e3 =
+    0.1964) and q2 (e2 = 0.2184); q1's block's lower-left corner (5, 1.8) at 0.2297."""
+    qs = [np.array([7.0, 1.8]), np.array([4.0, 1.4]), np.array([9.5, 2.4])]
+    blocks = [_square(q[0] - 1.0 - 8.0, q[1] + 1.0) for q in qs]
+    teeth = [2.0, 2.2, 1.1]
+    if mirror:
+        blocks = [b[::-1] * (1.0, -1.0) for b in blocks]
+        teeth = [-t for t in teeth]
+    return PairOutlines(Outline(blocks, 100.0), Outline([BAR], 100.0), 8.0, teeth, [0.0]), qs
+
+
+def test_phase_contacts_lists_the_pairs_within_the_window_by_their_gaps():
+    po, (q1, q2, q3) = _blocks_over_the_bar()
+    e1, e2, e3 = (_edge_meets_corner(q) for q in (q1, q2, q3))
+    assert e1 < e3 < e2 < e1 + 0.05
+    te, cs = phase_contacts(po, 0.0, 0.0, -e1, 0.05, DRIVE)
+    assert te == pytest.approx(-e1, abs=1e-12)
+    # q3's force would not pass torque (its line of action passes beyond the driver's axis: l1 < 0): left out
+    assert [(c.driver_tooth, c.driven_tooth, c.edge_of, c.vertex) for c in cs] == [(0, 0, "driven", 1),
+                                                                                    (1, 0, "driven", 5)]
+    for c, q, e, gap in zip(cs, (q1, q2), (e1, e2), (0.0, e2 - e1)):
+        u, n = np.array([math.cos(e), math.sin(e)]), np.array([math.sin(e), -math.cos(e)])  # the edge, its normal in
+        assert c.gap == pytest.approx(gap, abs=1e-12)
+        assert c.x == pytest.approx(q, abs=1e-9) and c.p_driver == pytest.approx(q - (8.0, 0.0), abs=1e-9)
+        assert c.p_driven == pytest.approx((float(q @ u), 0.5), abs=1e-9)
+        assert c.n == pytest.approx(n, abs=1e-12)
+        assert c.l2 == pytest.approx(math.sqrt(q @ q - 0.25), abs=1e-9)
+        assert c.l1 == pytest.approx((8.0 - q[0]) * math.cos(e) - q[1] * math.sin(e), abs=1e-9)
+    assert (8.0 - q3[0]) * math.cos(e3) - q3[1] * math.sin(e3) < 0
+    # a window of 0.03: q2 (0.036 on) is not listed
+    te, cs = phase_contacts(po, 0.0, 0.0, -e1, 0.03, DRIVE)
+    assert [(c.driver_tooth, c.gap) for c in cs] == [(0, 0.0)]
+    # started 0.15 of the margin short of the contact (the first hit within 0.2 margin): searched again from 4 margins
+    m = policy.CONTACT_TRACK_MARGIN_RAD
+    te, cs = phase_contacts(po, 0.0, 0.0, -e1 - 0.85 * m, 0.05, DRIVE)
+    assert te == pytest.approx(-e1, abs=1e-12) and len(cs) == 2
+    # the phase moves the start: at phi = 0.01 (the driven turned 0.01 further) the same contact, te = -e1 - 0.01
+    te, cs = phase_contacts(po, 0.01, 0.0, -e1 - 0.01, 0.05, DRIVE)
+    assert te == pytest.approx(-e1 - 0.01, abs=1e-12) and cs[0].x == pytest.approx(q1, abs=1e-9)
+    # the driven teeth named across +-pi: the contacts (at 0.069 and 0.118 rad) lie 0.08 and 0.13 from 2 pi - 0.01,
+    # 2.9 from 3.0
+    po2 = PairOutlines(po.drv, po.dvn, 8.0, po.driver_teeth, [2 * math.pi - 0.01, 3.0])
+    assert [c.driven_tooth for c in phase_contacts(po2, 0.0, 0.0, -e1, 0.05, DRIVE)[1]] == [0, 0]
+    # turned on (reverse), nothing within reach
+    te, cs = phase_contacts(po, 0.0, 0.0, -e1, 0.05, REVERSE)
+    assert math.isnan(te) and cs == []
+
+
+def test_phase_contacts_in_reverse_is_the_mirror_image():
+    po, (q1, q2, q3) = _blocks_over_the_bar(mirror=True)
+    e1, e2 = _edge_meets_corner(q1), _edge_meets_corner(q2)
+    te, cs = phase_contacts(po, 0.0, 0.0, e1, 0.05, REVERSE)
+    assert te == pytest.approx(e1, abs=1e-12)
+    assert [(c.driver_tooth, c.driven_tooth, c.edge_of) for c in cs] == [(0, 0, "driven"), (1, 0, "driven")]
+    for c, q, e, gap in zip(cs, (q1, q2), (e1, e2), (0.0, e2 - e1)):
+        qm = q * (1.0, -1.0)
+        assert c.gap == pytest.approx(gap, abs=1e-12) and c.x == pytest.approx(qm, abs=1e-9)
+        assert c.n == pytest.approx((math.sin(e), math.cos(e)), abs=1e-12)
+        assert c.l2 == pytest.approx(math.sqrt(q @ q - 0.25), abs=1e-9)
+        assert c.l1 == pytest.approx((8.0 - q[0]) * math.cos(e) - q[1] * math.sin(e), abs=1e-9)
+
+
+def test_phase_contacts_of_a_driven_corner_on_a_turned_driver_edge():
+    """The bar's tip corner (10, 0.5) on the slanted lower edge (-5, 2.2) -> (-3, 2.0) of a block (driver axis 14 mm
+    off, turned 0.05 rad; the edge is the block's third): the contact point P where the tip's circle meets the turned
+    edge, the force on the driven along minus the edge's left normal, turned by theta; the lever arms its moments
+    about both axes."""
+    th = 0.05
+    R = np.array([[math.cos(th), -math.sin(th)], [math.sin(th), math.cos(th)]])
+    A, B = np.array([14.0, 0.0]) + R @ (-5.0, 2.2), np.array([14.0, 0.0]) + R @ (-3.0, 2.0)
+    d = B - A
+    qa, qb, qc = d @ d, 2 * A @ d, A @ A - 100.25
+    t = (-qb + math.sqrt(qb * qb - 4 * qa * qc)) / (2 * qa)
+    P = A + t * d
+    e = math.atan2(P[1], P[0]) - math.atan2(0.5, 10.0)
+    block = np.array([[-3.0, 4.2], [-5.0, 4.2], [-5.0, 2.2], [-3.0, 2.0]])
+    po = PairOutlines(Outline([block], 100.0), Outline([BAR], 100.0), 14.0, [2.6006, 2.7506],
+                      [0.0, 0.3])
+    te, cs = phase_contacts(po, 0.0, th, -e, 0.025, DRIVE)
+    assert te == pytest.approx(-e, abs=1e-12) and len(cs) == 2
+    c, c2 = cs
+    assert (c.driver_tooth, c.driven_tooth, c.edge_of, c.vertex, c.gap) == (0, 0, "driver", 2, 0.0)
+    assert c.x == pytest.approx(P, abs=1e-9) and c.p_driven.tolist() == [10.0, 0.5]
+    assert c.p_driver == pytest.approx(R.T @ (P - (14.0, 0.0)), abs=1e-9)
+    n = R @ (-np.array([0.2, 2.0]) / math.hypot(2.0, 0.2))
+    assert c.n == pytest.approx(n, abs=1e-12)
+    assert c.l2 == pytest.approx(-(P[0] * n[1] - P[1] * n[0]), abs=1e-9)
+    assert c.l1 == pytest.approx((P[0] - 14.0) * n[1] - P[1] * n[0], abs=1e-9)
+    # then the block's lower-left corner Q (driver frame (-5, 2.2): tooth 1 at 2.7506) on the bar's upper edge
+    Q = np.array([14.0, 0.0]) + R @ (-5.0, 2.2)
+    eq = _edge_meets_corner(Q)
+    assert (c2.driver_tooth, c2.driven_tooth, c2.edge_of, c2.vertex) == (1, 0, "driven", 2)
+    assert c2.gap == pytest.approx(eq - e, abs=1e-12) and c2.x == pytest.approx(Q, abs=1e-9)
+    assert c2.n == pytest.approx((math.sin(eq), -math.cos(eq)), abs=1e-12)
+    assert c2.l2 == pytest.approx(math.sqrt(Q @ Q - 0.25), abs=1e-9)
+    assert c2.l1 == pytest.approx((14.0 - Q[0]) * math.cos(eq) - Q[1] * math.sin(eq), abs=1e-9)
+    # a window just short of its gap (0.0195): the first pair alone
+    assert [c.driver_tooth for c in phase_contacts(po, 0.0, th, -e, 0.019, DRIVE)[1]] == [0]
