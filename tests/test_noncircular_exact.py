@@ -515,7 +515,7 @@ def test_extremes_of_convex_stretches_narrower_than_a_sample_stay_convex():
     L = 100.0
     cs = PitchCurves(law, L).curvature("driven")
     law_U = lambda p: (law.U(p), law.dU_dphi(p), law.d2U_dphi2(p))
-    brute = _brute_summary(law_U, L, "driven", -PI, PI, N=400001)
+    brute = _brute_summary(law_U, L, "driven", -PI, PI, N=100001)
     assert cs.rho_convex_min > 0
     assert cs.rho_convex_min == pytest.approx(brute["convex"][1], rel=1e-6)
     assert cs.rho_concave_min == pytest.approx(brute["concave"][1], rel=1e-6)
@@ -652,3 +652,262 @@ def test_perimeter_of_seed_002_by_quadrature_and_its_centre_distance():
     assert pc.perimeter_driven() == pytest.approx(P1 * L, rel=1e-13)
     assert pc.perimeter_driver() == pytest.approx(P1 * L / 4, rel=1e-12)
     assert module_for(law, 124.0, 80) == pytest.approx(124.0 * P1 / (PI * 80), rel=1e-13)
+
+
+# =========================================================================== gears/pitch_frame.py
+def _ellipse_driven(e, L):
+    """The k = 1 elliptical pair's driven wheel r_H = p / (1 - e cos phi) and its slope; its arc length by quad."""
+    a, b, p, theta = _ellipse(e, L)
+    rH = lambda f: p / (1 - e * np.cos(f))
+    drH = lambda f: -p * e * np.sin(f) / (1 - e * np.cos(f)) ** 2
+    arc = lambda f0, f1: quad(lambda f: math.hypot(rH(f), drH(f)), f0, f1, epsabs=1e-13, epsrel=1e-13, limit=200)[0]
+    return rH, drH, arc
+
+
+def test_arc_frame_of_the_circular_law_is_r_phi():
+    from propulsor.gears.pitch_frame import ArcFrame
+
+    law = WalkingLaw(a=50.0, b=0.0, c=250.0, n=2)
+    L = 120.0
+    rH = L * 2 / 3
+    fr = ArcFrame(PitchCurves(law, L))
+    assert fr.period == PI / 2 and fr._p0 == PI / 4
+    assert len(fr.nodes) == 401 and fr.nodes[0] == -PI / 4 and fr.nodes[-1] == PI / 4
+    assert np.allclose(fr.nodes, np.linspace(-PI / 4, PI / 4, 401), rtol=0, atol=1e-15)
+    assert np.allclose(fr.S, rH * fr.nodes, rtol=0, atol=1e-11)
+    assert fr.leg == pytest.approx(rH * PI / 2, rel=1e-14) and fr.perimeter == pytest.approx(2 * PI * rH, rel=1e-14)
+    phi = np.array([-7.0, -PI / 4, -0.3, 0.0, 0.2, PI / 4, 1.0, 3.0, 12.5])
+    assert np.allclose(fr.s(phi), rH * phi, rtol=0, atol=1e-10)
+    assert np.allclose(fr.s_exact(phi), rH * phi, rtol=0, atol=1e-10)
+    s = rH * phi
+    assert np.allclose(fr.phi(s), phi, rtol=0, atol=1e-13)
+    for x, ph in zip(s, phi):
+        assert fr.phi1(float(x)) == pytest.approx(ph, abs=1e-13) and type(fr.phi1(float(x))) is float
+    assert fr.phi1(math.nan) is None and fr.phi1(math.inf) is None and fr.phi1(-math.inf) is None
+    assert fr.s(0.5).shape == (1,) and fr.phi(10.0).shape == (1,)
+    assert len(ArcFrame(PitchCurves(law, L), per_piece=10).nodes) == 11
+
+
+def test_arc_frame_of_the_elliptical_pair_against_quadrature():
+    from propulsor.gears.pitch_frame import ArcFrame
+
+    e, L = 0.4, 90.0
+    law = EllipticalLaw(e)
+    a, b, p, _ = _ellipse(e, L)
+    rH, drH, arc = _ellipse_driven(e, L)
+    fr = ArcFrame(PitchCurves(law, L))
+    assert fr.period == 2 * PI and fr._p0 == PI and len(fr.nodes) == 401
+    P = 4 * a * ellipe(e * e)
+    assert fr.leg == pytest.approx(P, rel=1e-13) and fr.perimeter == pytest.approx(P, rel=1e-13)
+    assert fr.S[0] == pytest.approx(-P / 2, rel=1e-13) and fr.S[-1] == pytest.approx(P / 2, rel=1e-13)
+    for ph in (-2.9, -1.0, -0.01, 0.0, 0.37, 1.3, 3.0, 4.0, 7.5, -8.0):
+        k = math.floor((ph + PI) / (2 * PI))
+        w = ph - 2 * PI * k
+        want = arc(0.0, w) + k * P
+        assert float(fr.s(ph)[0]) == pytest.approx(want, abs=1e-8)  # the cubic Hermite interpolant
+        assert float(fr.s_exact(ph)[0]) == pytest.approx(want, abs=1e-11)
+        assert float(fr.phi(want)[0]) == pytest.approx(ph, abs=1e-9)
+        assert fr.phi1(want) == pytest.approx(ph, abs=1e-9)
+    # the node values are the arc lengths from phi = 0
+    j = [0, 73, 200, 327, 400]
+    assert np.allclose(fr.S[j], [arc(0.0, x) for x in fr.nodes[j]], rtol=0, atol=1e-10)
+
+
+def test_arc_frame_of_the_blend_has_nodes_at_the_window_ends_and_repeats_per_leg():
+    from propulsor.gears.pitch_frame import ArcFrame
+
+    base = WalkingLaw(**SEED_002)
+    law = SmoothedWalkingLaw(base, 0.15)
+    L = 124.3
+    pc = PitchCurves(law, L)
+    fr = ArcFrame(pc, per_piece=50)
+    bp = law.breakpoints
+    assert len(bp) >= 3 and all(x in fr.nodes for x in bp)
+    assert len(fr.nodes) == 50 * (len(bp) - 1) + 1
+    ds = lambda f: float(np.hypot(pc.r_H(f), pc.dr_H(f)))
+    leg = sum(quad(ds, x0, x1, epsabs=1e-13, epsrel=1e-13)[0] for x0, x1 in zip(bp[:-1], bp[1:]))
+    assert fr.leg == pytest.approx(leg, rel=1e-12)
+    assert fr.perimeter == pytest.approx(4 * leg, rel=1e-12)
+    for ph in (0.1, PI / 4 - 0.1, PI / 4 + 0.05, -0.7):
+        pts = [x for x in bp if min(0.0, ph) < x < max(0.0, ph)]
+        want = math.copysign(quad(ds, min(0.0, ph), max(0.0, ph), points=pts or None, epsabs=1e-13)[0], ph)
+        for k in (-2, 0, 3):
+            assert float(fr.s_exact(ph + k * PI / 2)[0]) == pytest.approx(want + k * leg, abs=1e-9)
+            assert float(fr.s(ph + k * PI / 2)[0]) == pytest.approx(want + k * leg, abs=1e-7)
+            assert float(fr.phi(want + k * leg)[0]) == pytest.approx(ph + k * PI / 2, abs=1e-9)
+
+
+def _ellipse_body(e, L):
+    """Points and dP/dphi of the k = 1 elliptical pair in the body frames, by hand: the driven wheel at polar angle
+    phi, the driver at pi - theta (tan(theta/2) = c tan(phi/2), c = (1+e)/(1-e))."""
+    a, b, p, theta = _ellipse(e, L)
+    c = (1 + e) / (1 - e)
+
+    def driven(f):
+        r = p / (1 - e * np.cos(f))
+        dr = -p * e * np.sin(f) / (1 - e * np.cos(f)) ** 2
+        P = np.column_stack([r * np.cos(f), r * np.sin(f)])
+        dP = np.column_stack([dr * np.cos(f) - r * np.sin(f), dr * np.sin(f) + r * np.cos(f)])
+        return P, dP
+
+    def driver(f):
+        th = theta(f)
+        dth = c / np.cos(f / 2) ** 2 / (1 + (c * np.tan(f / 2)) ** 2)
+        r = p / (1 + e * np.cos(th))
+        dr = p * e * np.sin(th) / (1 + e * np.cos(th)) ** 2 * dth
+        be, dbe = PI - th, -dth
+        P = np.column_stack([r * np.cos(be), r * np.sin(be)])
+        dP = np.column_stack([dr * np.cos(be) - r * dbe * np.sin(be), dr * np.sin(be) + r * dbe * np.cos(be)])
+        return P, dP
+
+    return driven, driver
+
+
+def test_body_pitch_curves_of_the_elliptical_pair_by_hand():
+    from propulsor.gears.pitch_frame import BodyPitchCurve
+
+    e, L = 0.35, 80.0
+    pc = PitchCurves(EllipticalLaw(e), L)
+    a, b, p, _ = _ellipse(e, L)
+    driven, driver = _ellipse_body(e, L)
+    phis = np.array([-2.5, -1.0, -0.2, 0.0, 0.4, 1.7, 2.9])
+    with pytest.raises(InputError) as err:
+        BodyPitchCurve(pc, "idler")
+    assert str(err.value) == "role = 'idler': must be 'driver' or 'driven'"
+    for role, hand, sgn in (("driven", driven, -1.0), ("driver", driver, 1.0)):
+        bc = BodyPitchCurve(pc, role)
+        assert bc.sgn == sgn and bc.role == role and bc.pc is pc
+        P, dP = hand(phis)
+        t = sgn * dP / np.linalg.norm(dP, axis=1)[:, None]
+        N = np.column_stack([-t[:, 1], t[:, 0]])
+        # outward: away from the focus (the wheel's centre) on these convex ellipses
+        assert np.all(np.einsum("ij,ij->i", N, P) > 0)
+        r, ang = bc.polar(phis)
+        assert np.allclose(r, np.hypot(P[:, 0], P[:, 1]), rtol=1e-13)
+        assert np.allclose(np.cos(ang), P[:, 0] / r, atol=1e-12) and np.allclose(np.sin(ang), P[:, 1] / r, atol=1e-12)
+        assert np.allclose(bc.point(phis), P, rtol=0, atol=1e-11)
+        assert np.allclose(bc.dpoint(phis), dP, rtol=0, atol=1e-10)
+        assert np.allclose(bc.normal(phis), N, rtol=0, atol=1e-12)
+        for h in (1.5, -2.0):
+            assert np.allclose(bc.offset(phis, h), P + h * N, rtol=0, atol=1e-11)
+        rho = (np.hypot(P[:, 0], P[:, 1]) * (2 * a - np.hypot(P[:, 0], P[:, 1]))) ** 1.5 / (a * b)
+        assert np.allclose(bc.rho(phis), rho, rtol=1e-11)
+        # one point (the solvers' calls: a one-element array) the same, as a (1, 2) array
+        for i, f in enumerate(phis):
+            one = np.array([f])
+            for got, want in ((bc.point(one), P[i]), (bc.dpoint(one), dP[i]), (bc.normal(one), N[i]),
+                              (bc.offset(one, 0.75), P[i] + 0.75 * N[i]), (bc.offset(one, 2), P[i] + 2 * N[i]),
+                              (bc.offset(one, np.float64(-1.25)), P[i] - 1.25 * N[i])):
+                assert got.shape == (1, 2)
+                assert np.allclose(got[0], want, rtol=0, atol=1e-10)
+        # a float (not an array) and a longer array take the array path: the same points
+        assert np.allclose(bc.point(0.4), P[4], atol=1e-11) and bc.point(0.4).shape == (1, 2)
+        assert np.allclose(bc.dpoint(0.4), dP[4], atol=1e-10) and bc.dpoint(0.4).shape == (1, 2)
+        assert np.allclose(bc.normal(0.4), N[4], atol=1e-12)
+        assert np.allclose(bc.offset(np.array([0.4]), np.array([1.5])), P[4] + 1.5 * N[4], atol=1e-11)
+        # a non-finite one-point call: the array path's nan
+        assert np.all(np.isnan(bc.point(np.array([math.nan]))))
+
+
+def test_one_is_a_finite_one_element_array():
+    from propulsor.gears import pitch_frame as pf
+
+    assert pf._one(np.array([0.5])) == 0.5 and type(pf._one(np.array([0.5]))) is float
+    assert pf._one(np.array([3])) == 3.0
+    for x in (0.5, np.array(0.5), np.array([0.5, 0.6]), np.array([[0.5]]), np.array([math.nan]),
+              np.array([math.inf]), [0.5], np.float64(0.5)):
+        assert pf._one(x) is None
+
+
+# =========================================================================== gears/envelope_point.py
+def test_nearer_circle_crossing_by_hand():
+    from propulsor.gears.envelope_point import nearer_circle_crossing1
+
+    # from (0, 0) along +x to the circle of radius 2 about (5, 0): crossings at x = 3 and 7, the nearer 3
+    assert nearer_circle_crossing1(0.0, 0.0, 1.0, 0.0, 5.0, 0.0, 2.0) == pytest.approx((3.0, 0.0), abs=1e-15)
+    # along -x: lambda = -3 or -7 (both behind): the nearer -3
+    assert nearer_circle_crossing1(0.0, 0.0, -1.0, 0.0, 5.0, 0.0, 2.0) == pytest.approx((3.0, 0.0), abs=1e-15)
+    # from inside, (5.5, 0) along +y about (5, 0), R = 2: lambda = +-sqrt(4 - 0.25)
+    got = nearer_circle_crossing1(5.5, 0.0, 0.0, 1.0, 5.0, 0.0, 2.0)
+    assert got == pytest.approx((5.5, math.sqrt(3.75)), abs=1e-15) or got == pytest.approx((5.5, -math.sqrt(3.75)))
+    # off-centre and slanted: the nearer of the two roots of |q + lam n|^2 = R^2, computed here
+    px, py, nx, ny, cx, cy, R = 1.0, -2.0, 0.6, 0.8, 4.0, 3.0, 2.5
+    qx, qy = px - cx, py - cy
+    B, C = qx * nx + qy * ny, qx * qx + qy * qy - R * R
+    l1, l2 = -B + math.sqrt(B * B - C), -B - math.sqrt(B * B - C)
+    lam = min((l1, l2), key=abs)
+    assert nearer_circle_crossing1(px, py, nx, ny, cx, cy, R) == pytest.approx((px + lam * nx, py + lam * ny),
+                                                                            abs=1e-14)
+    assert lam == l2 and abs(l1) > abs(l2)
+    # the other way along the same line: the nearer is now l1's point
+    got = nearer_circle_crossing1(px, py, -nx, -ny, cx, cy, R)
+    assert got == pytest.approx((px + lam * nx, py + lam * ny), abs=1e-14)
+    # a root nearer on the + side: from (9, 0) along -x, circle about (5, 0) R 2: lambda 2 (x = 7) or 6
+    assert nearer_circle_crossing1(9.0, 0.0, -1.0, 0.0, 5.0, 0.0, 2.0) == pytest.approx((7.0, 0.0), abs=1e-15)
+    # tangent (disc = 0): the touching point; missing: None
+    assert nearer_circle_crossing1(0.0, 2.0, 1.0, 0.0, 5.0, 0.0, 2.0) == pytest.approx((5.0, 2.0), abs=1e-15)
+    assert nearer_circle_crossing1(0.0, 2.5, 1.0, 0.0, 5.0, 0.0, 2.0) is None
+    assert nearer_circle_crossing1(0.0, math.nan, 1.0, 0.0, 5.0, 0.0, 2.0) is None
+
+
+class _Line:
+    """A straight cutter piece P(u) = (u, 0.5 u), tangent (2, 1) (not unit)."""
+
+    def point1(self, u):
+        return u, 0.5 * u
+
+    def tangent1(self, u):
+        return 2.0, 1.0
+
+
+class _Cutter:
+    def __init__(self, s=None):
+        self.s, self.calls = s, []
+
+    def contact1(self, px, py, nx, ny, piece):
+        self.calls.append((px, py, nx, ny, piece))
+        return self.s if self.s is not None else px + 2 * py  # some parameter of the point
+
+    def pose1(self, s):
+        return 1.0 + s, -2.0, 0.3 * s  # the cutter's origin and angle at s
+
+
+class _Gear:
+    def __init__(self, none=False):
+        self.none = none
+
+    def pose1(self, s):
+        return None if self.none else (10.0 - s, 4.0 + 0.5 * s, 1.1 - 0.2 * s)
+
+
+def test_envelope_point_is_the_cutter_point_carried_into_the_gear():
+    from propulsor.gears.envelope_point import envelope_point1
+
+    piece, cutter, gear = _Line(), _Cutter(), _Gear()
+    u = 0.8
+    got = envelope_point1(piece, u, cutter, gear)
+    assert got is not None
+    pts, s = got
+    px, py = u, 0.5 * u
+    n = math.sqrt(5.0)
+    # the contact is asked at the point with the unit normal (-t_y, t_x) of the unit tangent
+    assert cutter.calls == [(px, py, -1.0 / n, 2.0 / n, piece)]
+    s0 = px + 2 * py
+    assert s.shape == (1,) and s[0] == s0
+    cx, cy, ca = 1.0 + s0, -2.0, 0.3 * s0
+    gx, gy, tau = 10.0 - s0, 4.0 + 0.5 * s0, 1.1 - 0.2 * s0
+    th = tau - ca
+    vx, vy = px - cx, py - cy
+    want = (gx + math.cos(th) * vx - math.sin(th) * vy, gy + math.sin(th) * vx + math.cos(th) * vy)
+    assert pts.shape == (1, 2) and tuple(pts[0]) == pytest.approx(want, abs=1e-14)
+    for bad in (math.nan, math.inf):
+        assert envelope_point1(piece, bad, _Cutter(), gear) is None
+    assert envelope_point1(piece, u, _Cutter(s=math.nan), gear) is None
+    assert envelope_point1(piece, u, _Cutter(s=math.inf), gear) is None
+    assert envelope_point1(piece, u, cutter, _Gear(none=True)) is None
+
+    class _NoContact(_Cutter):
+        def contact1(self, *a):
+            return None
+
+    assert envelope_point1(piece, u, _NoContact(), gear) is None
