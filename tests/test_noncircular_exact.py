@@ -911,3 +911,133 @@ def test_envelope_point_is_the_cutter_point_carried_into_the_gear():
             return None
 
     assert envelope_point1(piece, u, _NoContact(), gear) is None
+
+
+# =========================================================================== gears/law_search.py
+def test_margins_are_the_least_of_the_limits_named():
+    from propulsor.gears.generability import CurveCheck, Generability
+    from propulsor.gears.law_search import _margins
+
+    def cc(curve, rcx, lim, concave, rcc, r0):
+        return CurveCheck(curve=curve, rho_convex_min=rcx, rho_limit=lim, concave=concave, rho_concave_min=rcc,
+                          r0=r0, ok=True, reason="")
+
+    g = Generability(driver=cc("driver", 20.0, 17.0, False, 1.0, 30.0), driven=cc("driven", 50.0, 17.0, True, 25.0, 20.5))
+    # driver convex 3, driver concave not counted (not concave: 1 - 30 would be least), driven convex 33,
+    # driven concave 4.5
+    assert _margins(g) == (3.0, "driver convex vs rack undercut limit")
+    g = Generability(driver=cc("driver", 20.0, 17.0, True, 19.0, 17.5), driven=cc("driven", 18.0, 17.0, True, 25.0, 20.5))
+    assert _margins(g) == (1.0, "driven convex vs rack undercut limit")
+    g = Generability(driver=cc("driver", 20.0, 17.0, True, 19.0, 18.5), driven=cc("driven", 18.0, 17.0, False, 2.0, 20.5))
+    assert _margins(g) == (0.5, "driver concave vs shaper r0 + e")
+    g = Generability(driver=cc("driver", 30.0, 17.0, False, 0.0, 0.0), driven=cc("driven", 18.0, 17.0, True, 20.0, 20.25))
+    assert _margins(g) == (-0.25, "driven concave vs shaper r0 + e")
+
+
+def test_pareto_against_its_definition():
+    from propulsor.gears.law_search import pareto
+
+    rng = np.random.default_rng(7)
+    for larger in (True, False):
+        for _ in range(20):
+            n = int(rng.integers(1, 12))
+            rip = rng.integers(0, 4, n).astype(float) / 100  # ties in both columns
+            val = rng.integers(0, 4, n).astype(float)
+            got = pareto(val, rip, larger_is_better=larger)
+            v = val if larger else -val
+            want = [not any(rip[j] <= rip[i] and v[j] >= v[i] and (rip[j] < rip[i] or v[j] > v[i]) for j in range(n))
+                    for i in range(n)]
+            assert got.dtype == bool and got.tolist() == want
+    # equal points keep each other; a point better in one and equal in the other beats
+    assert pareto(np.array([1.0, 1.0]), np.array([0.1, 0.1]), True).tolist() == [True, True]
+    assert pareto(np.array([1.0, 2.0]), np.array([0.1, 0.1]), True).tolist() == [False, True]
+    assert pareto(np.array([1.0, 2.0]), np.array([0.1, 0.1]), False).tolist() == [True, False]
+    assert pareto(np.array([1.0, 1.0]), np.array([0.2, 0.1]), True).tolist() == [False, True]
+
+
+def _generable_at(law, delta, q, m, z_H, cutter, L_ref, band):
+    """(law, L, generability) of the blend of half-width delta and hand-over value q u if both curves are generable
+    and L lies within the band, else None (the search's own test of a point, written out)."""
+    from propulsor.gears.generability import check_generable
+
+    try:
+        sl = SmoothedWalkingLaw(law, delta, u_h=q * law.u)
+    except InputError:
+        return None
+    L = PI * m * z_H / perimeter_per_mm(sl)
+    g = check_generable(PitchCurves(sl, L), cutter)
+    return (sl, L, g) if g.ok and abs(L - L_ref) <= band else None
+
+
+def test_search_law_on_a_short_scan_by_hand(monkeypatch):
+    """Seed 002, m = 2.5, z_H = 80, x = +-0.5, the d0 = 25 mm shaper; blends of 3, 8 and 14 deg, hand-over values
+    1.00 ... 1.03 u, 4 bisections.  3 deg: nothing generable (skipped); 8 deg: the first generable value 1.02 u, the
+    least between 1.01 and 1.02 found to 0.01/16; 14 deg: generable at 1.00 u already (no bisection)."""
+    import propulsor.gears.law_search as ls
+    from propulsor.gears.catalogue import catalogue_shaper
+    from propulsor.gears.generability import CutterSpec
+    from propulsor.gears.law_search import LawPoint, search_law
+
+    monkeypatch.setattr(ls, "LAW_SEARCH_DELTA_DEG", (3.0, 8.0, 14.0))
+    monkeypatch.setattr(ls, "LAW_SEARCH_UH_SCAN", (1.0, 1.01, 1.02, 1.03))
+    monkeypatch.setattr(ls, "LAW_SEARCH_UH_BISECTIONS", 4)
+    law = WalkingLaw(**SEED_002)
+    m, z_H, band = 2.5, 80, 5.0
+    sh = catalogue_shaper(25.0, m)
+    L_ref = centre_distance(law, m, z_H)
+    res = search_law(law, m, z_H, 0.5, [(25, sh)], L_ref, band)
+    cutter = CutterSpec(m=m, x=0.5, x_H=-0.5, z0=sh.z0, shaper_x0=sh.x0)
+    ok = lambda d, q: _generable_at(law, d, q, m, z_H, cutter, L_ref, band)
+    assert all(ok(math.radians(3.0), q) is None for q in (1.0, 1.01, 1.02, 1.03))
+    d8, d14 = math.radians(8.0), math.radians(14.0)
+    assert ok(d8, 1.01) is None and ok(d8, 1.02) is not None and ok(d14, 1.0) is not None
+    assert res.evaluations == 4 + (3 + 4) + 1
+    assert res.L_ref == L_ref and res.L_band == 5.0 and type(res.L_band) is float
+    assert len(res.points) == 2
+    by_delta = {round(p.delta, 12): p for p in res.points}
+    p8, p14 = by_delta[round(d8, 12)], by_delta[round(d14, 12)]
+    assert p14.u_h_rel == 1.0
+    assert 1.01 < p8.u_h_rel <= 1.02 and ok(d8, p8.u_h_rel) is not None and ok(d8, p8.u_h_rel - 0.01 / 16) is None
+    assert (p8.u_h_rel - 1.01) * 1600 == pytest.approx(round((p8.u_h_rel - 1.01) * 1600), abs=1e-9)
+    for p in (p8, p14):
+        sl, L, g = ok(p.delta, p.u_h_rel)
+        assert p.d0_mm == 25.0 and type(p.d0_mm) is float and p.z0 == sh.z0 and type(p.z0) is int
+        assert p.L == pytest.approx(L, rel=1e-14)
+        assert p.ripple == pytest.approx(hub_speed_ripple(sl).ripple, rel=1e-12)
+        limits = {"driver convex vs rack undercut limit": g.driver.rho_convex_min - g.driver.rho_limit,
+                  "driven convex vs rack undercut limit": g.driven.rho_convex_min - g.driven.rho_limit}
+        for c in (g.driver, g.driven):
+            if c.concave:
+                limits[f"{c.curve} concave vs shaper r0 + e"] = c.rho_concave_min - c.r0
+        assert p.binding == min(limits, key=limits.get) and p.margin_mm == pytest.approx(min(limits.values()), abs=1e-12)
+        assert all(type(getattr(p, f)) is float for f in ("delta", "u_h_rel", "L", "ripple", "margin_mm"))
+    # ranked by ripple; the fronts by their definition over the two points
+    assert [p.ripple for p in res.points] == sorted(p.ripple for p in res.points)
+    assert res.best is res.points[0]
+    a, b = res.points
+    for p, q in ((a, b), (b, a)):
+        beaten_L = q.ripple <= p.ripple and q.L <= p.L and (q.ripple < p.ripple or q.L < p.L)
+        beaten_M = q.ripple <= p.ripple and q.margin_mm >= p.margin_mm and (q.ripple < p.ripple or q.margin_mm > p.margin_mm)
+        assert p.front_L is (not beaten_L) and p.front_margin is (not beaten_M)
+    assert isinstance(a, LawPoint)
+    # a band of 0.1 mm drops 8 deg's point (L_exact + 0.11 mm at 1.02 u: the bisection finds none within it)
+    narrow = search_law(law, m, z_H, 0.5, [(25, sh)], L_ref, 0.1)
+    assert [round(p.delta, 12) for p in narrow.points] == [round(d14, 12)]
+
+
+def test_search_law_refusal_in_full(monkeypatch):
+    import propulsor.gears.law_search as ls
+    from propulsor.gears.catalogue import catalogue_shaper
+    from propulsor.gears.law_search import search_law
+
+    monkeypatch.setattr(ls, "LAW_SEARCH_DELTA_DEG", (3.0,))
+    monkeypatch.setattr(ls, "LAW_SEARCH_UH_SCAN", (1.0, 1.2))
+    law = WalkingLaw(**SEED_002)
+    L_ref = centre_distance(law, 2.5, 80)
+    with pytest.raises(InputError) as e:
+        search_law(law, 2.5, 80, 0.5, [(25.0, catalogue_shaper(25.0, 2.5)), (38, catalogue_shaper(38.0, 2.5))],
+                   L_ref, 5)
+    assert str(e.value) == (f"L_band = 5: no blend keeps both pitch curves generable with |L - L_exact| <= 5 mm "
+                            f"(L_exact = {L_ref:.3f} mm) for the shapers d0 = 25, 38 mm at m = 2.5 mm (a larger "
+                            "driver_shift, more teeth or a larger band)")
+    assert f"{L_ref:.3f}" == "124.198"
