@@ -90,7 +90,8 @@ def _rho_brute(law_U, L, curve, phi):
     numerator (its sign: convex > 0)."""
     R, x1, y1, x2, y2 = _curve_geometry(law_U(phi), L, curve)
     num = x1 * y2 - y1 * x2
-    return np.hypot(x1, y1) ** 3 / num, num
+    with np.errstate(divide="ignore"):  # a grid point on an inflection: +-inf
+        return np.hypot(x1, y1) ** 3 / num, num
 
 
 def _refine_min(f, x, y):
@@ -197,12 +198,26 @@ def test_extreme_refines_between_the_neighbouring_samples():
     # one sample: itself, no search (floats)
     p, v = nc._extreme(f, np.array([0.7]), np.array([3.0]), "min")
     assert (p, v) == (0.7, 3.0) and type(p) is float and type(v) is float
+    # a flat function: the search cannot beat the first sample, which stays (not a point it wandered to)
+    flat = lambda p: np.full(np.shape(p), 2.0)
+    assert nc._extreme(flat, x, flat(x), "min") == (0.0, 2.0)
+    assert nc._extreme(flat, x, flat(x), "max") == (0.0, 2.0)
     # the sample is the extreme: the search cannot beat it and the sample stays, bit for bit
     lin = lambda p: np.asarray(p) * 1.0
     p, v = nc._extreme(lin, x, lin(x), "min")
     assert (p, v) == (0.0, 0.0)
     p, v = nc._extreme(lin, x, lin(x), "max")
     assert (p, v) == (1.0, 1.0)
+
+
+def test_on_side_keeps_one_sign_of_the_radius():
+    f = lambda p: np.asarray(p) * 1.0
+    convex, concave = nc._on_side(f, 1.0), nc._on_side(f, -1.0)
+    assert convex(2.5) == 2.5 and convex(-2.5) == math.inf and convex(np.array(3.0)) == 3.0
+    assert concave(-2.5) == 2.5 and concave(2.5) == math.inf and concave(np.array(-4.0)) == 4.0
+    assert convex(math.inf) == math.inf and concave(-math.inf) == math.inf  # a denominator 0: +-inf
+    assert convex(0.0) == math.inf and concave(0.0) == math.inf
+    assert type(convex(np.float64(1.5))) is float
 
 
 # --------------------------------------------------------------------------- pitch curves: closed forms
@@ -269,6 +284,10 @@ def test_elliptical_pair_is_two_ellipses_about_their_foci():
     assert np.allclose(pc.driver_xy(th), np.column_stack([r * np.cos(th), r * np.sin(th)]), rtol=1e-13, atol=1e-12)
     assert pc.driven_xy(0.0).shape == (2,) and pc.driven_xy([0.0, 1.0]).shape == (2, 2)
     assert pc.driver_xy([0, 1]).dtype == float
+    assert pc.driver_xy(0.5).shape == (2,) and np.allclose(pc.driver_xy(0.5), pc.driver_radius(0.5) * np.array(
+        [math.cos(0.5), math.sin(0.5)]), rtol=1e-15)
+    assert np.allclose(pc.driver_xy(0.5), p / (1 + e * math.cos(0.5)) * np.array([math.cos(0.5), math.sin(0.5)]),
+                       rtol=1e-13)
     # perimeters 4 a E(e), both
     P = 4 * a * ellipe(e * e)
     assert pc.perimeter_driven() == pytest.approx(P, rel=1e-13)
@@ -281,6 +300,9 @@ def test_elliptical_pair_is_two_ellipses_about_their_foci():
         assert min(abs(cs.phi_convex_min), PI - abs(cs.phi_convex_min)) < 1e-5
         assert cs.concave is False and cs.concave_intervals == () and cs.corner is None
         assert cs.rho_concave_min == math.inf and math.isnan(cs.phi_concave_min)
+        # lengths scale with L: the same pair at L = 0.01 mm (radii and their curvature 1e-4 of these)
+        small = PitchCurves(law, L * 1e-4).curvature(curve)
+        assert small.rho_convex_min == pytest.approx(p * 1e-4, rel=1e-11) and small.concave is False
 
 
 def test_pitch1_is_the_law_written_out_at_one_angle():
@@ -454,24 +476,31 @@ def test_curvature_of_the_smoothed_seed_000_law_against_the_parametric_curve():
     assert str(e.value) == "curve = 'idler': must be 'driven' or 'driver'"
 
 
-def test_curvature_of_a_fourier_law_with_a_concave_stretch():
-    """A two-term Fourier law (array path): one concave stretch inside the period on the driven wheel."""
-    law = FourierLaw(k=1, cos=(0.0, 0.05), sin=(0.12,))
-    L = 100.0
+@pytest.mark.parametrize("cos, sin, L", [((0.3,), (0.1, 0.08), 100.0), ((0.0, 0.0, 0.0, 0.0, 0.03), (0.05,), 100.0),
+                                         ((0.0, 0.0, 0.0, 0.0, 0.03), (0.05,), 0.01)])
+def test_curvature_of_a_fourier_law_with_a_concave_stretch(cos, sin, L):
+    """Fourier laws (the array path): concave stretches inside the period (the driver's with the first law, five on
+    each wheel with the second; the second at L = 0.01 mm too, where D = r^2 + 2r'^2 - r r'' is below 1 mm^2)."""
+    law = FourierLaw(k=1, cos=cos, sin=sin)
     pc = PitchCurves(law, L)
     law_U = lambda p: (law.U(p), law.dU_dphi(p), law.d2U_dphi2(p))
+    concave_somewhere = []
     for curve in ("driven", "driver"):
         cs = pc.curvature(curve)
         brute = _brute_summary(law_U, L, curve, -PI, PI)
+        concave_somewhere.append(bool(brute["intervals"]))
         assert cs.rho_convex_min == pytest.approx(brute["convex"][1], rel=1e-9)
         assert cs.phi_convex_min == pytest.approx(brute["convex"][0], abs=2e-6)
-        assert [tuple(i) for i in cs.concave_intervals] == pytest.approx(brute["intervals"], abs=1e-10)
+        assert len(cs.concave_intervals) == len(brute["intervals"])
+        for got, want in zip(cs.concave_intervals, brute["intervals"]):
+            assert got == pytest.approx(want, abs=1e-10)
         assert cs.concave is bool(brute["intervals"])
         if brute["concave"]:
             assert cs.rho_concave_min == pytest.approx(brute["concave"][1], rel=1e-9)
             assert cs.phi_concave_min == pytest.approx(brute["concave"][0], abs=2e-6)
         else:
             assert cs.rho_concave_min == math.inf
+    assert concave_somewhere == ([False, True] if cos == (0.3,) else [True, True])
 
 
 def _flips(law, L, curve):
@@ -595,6 +624,8 @@ def test_driven_teeth_both_sides_of_whole_and_the_nearest_valid_in_full():
     law = WalkingLaw(a=50.0, b=0.0, c=250.0, n=2)
     assert driven_teeth(law, 75.0, 1.0) == 100 and type(driven_teeth(law, 75.0, 1.0)) is int
     assert driven_teeth(law, 1.5, 1.0) == 2
+    # one lobe, one tooth (n = 1: z = L / m): the least whole count
+    assert driven_teeth(WalkingLaw(a=50.0, b=0.0, c=250.0, n=1), 1.0, 1.0) == 1
     # within TOOTH_COUNT_TOL = 1e-6 of a whole even count: accepted; 2e-6 off: refused
     assert driven_teeth(law, 75.0 * (1 + 0.5e-6 / 100), 1.0) == 100
     assert driven_teeth(law, 75.0 * (1 - 0.5e-6 / 100), 1.0) == 100
@@ -620,6 +651,12 @@ def test_driven_teeth_both_sides_of_whole_and_the_nearest_valid_in_full():
 
 
 def test_whole_pitches_both_sides_of_the_tolerance():
+    # exactly TOOTH_COUNT_TOL = 1e-6 pitches from a whole number (0): refused (the tolerance is strict)
+    assert 1e-6 * PI / (PI * 1.0) == 1e-6
+    with pytest.raises(InputError) as e:
+        whole_pitches(1e-6 * PI, 1.0)
+    assert str(e.value) == ("m = 1.0: the driven pitch curve (0.000003 mm) holds 0.000001 pitches, not a whole "
+                            "number")
     m = 2.0
     P = PI * m * 40
     assert whole_pitches(P, m) == 40 and type(whole_pitches(P, m)) is int

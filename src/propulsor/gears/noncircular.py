@@ -393,7 +393,7 @@ class PitchCurves:
             intervals = intervals or [(corner.phi, corner.phi)]
         return CurvatureSummary(
             curve=curve, rho_convex_min=float(rho_convex_min), phi_convex_min=float(phi_convex),
-            concave=bool(intervals) or corner is not None and corner.kind == "concave",
+            concave=bool(intervals),  # a concave corner is an interval of its own (above)
             rho_concave_min=float(cc_rho), phi_concave_min=float(cc_phi),
             concave_intervals=tuple(intervals), corner=corner,
         )
@@ -466,7 +466,6 @@ def driven_teeth(law, L: float, m: float) -> int:
         return int(round(z))
     lo = max(n, int(math.floor(z / n)) * n)
     hi = lo + n if lo * 1.0 < z else lo
-    hi = max(hi, int(math.ceil(z / n)) * n)
     parts = []
     for zz in sorted({lo, hi}):
         parts.append(f"z_H = {zz}: L = {math.pi * m * zz / P1:.4f} mm at m = {m:g}, "
