@@ -441,8 +441,8 @@ def test_corner_summary_of_the_exact_walking_law():
     assert len(brute["intervals"]) == 2 == len(dr.concave_intervals) and dr.concave is True
     (a0, b0), (a1, b1) = dr.concave_intervals
     assert a0 == -PI / 4 and b1 == PI / 4
-    assert b0 == pytest.approx(brute["intervals"][0][1], abs=1e-9)
-    assert a1 == pytest.approx(brute["intervals"][1][0], abs=1e-9)
+    assert b0 == pytest.approx(brute["intervals"][0][1], abs=2e-14)
+    assert a1 == pytest.approx(brute["intervals"][1][0], abs=2e-14)
     assert b0 == pytest.approx(-a1, abs=1e-12)
     assert dr.rho_concave_min == pytest.approx(brute["concave"][1], rel=1e-9)
     assert abs(dr.phi_concave_min) == pytest.approx(abs(brute["concave"][0]), abs=1e-6)
@@ -467,7 +467,7 @@ def test_curvature_of_the_smoothed_seed_000_law_against_the_parametric_curve():
         assert len(cs.concave_intervals) == len(brute["intervals"]) >= 1
         assert cs.concave is True
         for got, want in zip(cs.concave_intervals, brute["intervals"]):
-            assert got == pytest.approx(want, abs=1e-10)
+            assert got == pytest.approx(want, abs=2e-14)  # brentq to ROOT_XTOL_FINE = 1e-14
         assert cs.rho_concave_min == pytest.approx(brute["concave"][1], rel=1e-9)
         assert abs(cs.phi_concave_min) == pytest.approx(abs(brute["concave"][0]), abs=2e-6)  # +-: symmetric
         assert pc.curvature(curve) is cs  # computed once
@@ -493,7 +493,7 @@ def test_curvature_of_a_fourier_law_with_a_concave_stretch(cos, sin, L):
         assert cs.phi_convex_min == pytest.approx(brute["convex"][0], abs=2e-6)
         assert len(cs.concave_intervals) == len(brute["intervals"])
         for got, want in zip(cs.concave_intervals, brute["intervals"]):
-            assert got == pytest.approx(want, abs=1e-10)
+            assert got == pytest.approx(want, abs=2e-14)  # brentq to ROOT_XTOL_FINE = 1e-14
         assert cs.concave is bool(brute["intervals"])
         if brute["concave"]:
             assert cs.rho_concave_min == pytest.approx(brute["concave"][1], rel=1e-9)
