@@ -1078,3 +1078,88 @@ def test_search_law_refusal_in_full(monkeypatch):
                             f"(L_exact = {L_ref:.3f} mm) for the shapers d0 = 25, 38 mm at m = 2.5 mm (a larger "
                             "driver_shift, more teeth or a larger band)")
     assert f"{L_ref:.3f}" == "124.198"
+
+
+def test_arc_frame_of_a_fourier_law_against_quadrature_and_its_own_inverse():
+    """A Fourier law with sine terms (ds/dphi not even in phi): s(phi) from 0 by quad; phi(s) is the inverse of
+    s(phi) to rounding (one Newton step on the interpolant), at the start of a leg (its first node spacing) too."""
+    from propulsor.gears.pitch_frame import ArcFrame
+
+    law = FourierLaw(k=2, cos=(0.0, 0.05), sin=(0.08,))
+    L = 90.0
+    pc = PitchCurves(law, L)
+    fr = ArcFrame(pc)
+    ds = lambda f: float(np.hypot(pc.r_H(f), pc.dr_H(f)))
+    leg = quad(ds, -PI / 2, PI / 2, epsabs=1e-13, epsrel=1e-13, limit=200)[0]
+    assert fr.leg == pytest.approx(leg, rel=1e-13) and fr.perimeter == pytest.approx(2 * leg, rel=1e-13)
+    first = fr.nodes[1] - fr.nodes[0]
+    for ph in (-PI / 2 + 0.3 * first, PI / 2 + 0.3 * first, -1.2, -0.05, 0.7, 1.5, 2.9, -4.0):
+        k = math.floor((ph + PI / 2) / PI)
+        w = ph - k * PI
+        want = math.copysign(quad(ds, min(0.0, w), max(0.0, w), epsabs=1e-13, epsrel=1e-13, limit=200)[0], w) + k * leg
+        assert float(fr.s_exact(ph)[0]) == pytest.approx(want, abs=1e-10)
+        assert float(fr.s(ph)[0]) == pytest.approx(want, abs=5e-8)  # the cubic Hermite interpolant
+        assert float(fr.phi(want)[0]) == pytest.approx(ph, abs=1e-9)
+        assert fr.phi1(want) == pytest.approx(ph, abs=1e-9)
+    # node values: the arc from 0 to each node
+    j = [0, 50, 133, 200, 301, 400]
+    want = [math.copysign(quad(ds, min(0.0, x), max(0.0, x), epsabs=1e-13, epsrel=1e-13)[0], x) for x in fr.nodes[j]]
+    assert np.allclose(fr.S[j], want, rtol=0, atol=1e-10)
+
+
+def test_arc_frame_inverse_is_polished_to_rounding_on_a_steep_law():
+    """a = 0, b = 106, c = 127 mm, n = 1 (the class docstring's case): the two interpolants alone disagree by up to
+    1e-9 rad; after the Newton step s(phi(s)) = s to rounding, at every point of a leg."""
+    from propulsor.gears.pitch_frame import ArcFrame
+
+    law = SmoothedWalkingLaw(WalkingLaw(a=0.0, b=106.0, c=127.0, n=1), 0.3)
+    fr = ArcFrame(PitchCurves(law, 100.0))
+    s = np.linspace(fr.S[0], fr.S[-1], 4001)[:-1]
+    back = fr.s(fr.phi(s))
+    assert np.max(np.abs(back - s)) < 2e-12
+    raw = fr._s_of(fr._phi_of(s))  # the inverse interpolant alone: the error the step removes
+    assert np.max(np.abs(raw - s)) > 1e-9
+    for x in s[::400]:
+        assert float(fr.s(fr.phi1(float(x)))[0]) == pytest.approx(x, abs=2e-12)
+
+
+def test_body_pitch_curves_radius_of_curvature_is_each_wheels_own():
+    """A Fourier law whose wheels differ: the driven wheel's rho_H, the driver's rho, against the points' parametric
+    curvature (x'y'' - y'x'') / |P'|^3."""
+    from propulsor.gears.pitch_frame import BodyPitchCurve
+
+    law = FourierLaw(k=1, cos=(0.3,), sin=(0.1, 0.08))
+    L = 100.0
+    pc = PitchCurves(law, L)
+    law_U = lambda p: (law.U(p), law.dU_dphi(p), law.d2U_dphi2(p))
+    phi = np.linspace(-3.0, 3.0, 25)
+    for role in ("driven", "driver"):
+        want = _rho_brute(law_U, L, role, phi)[0]
+        assert np.allclose(BodyPitchCurve(pc, role).rho(phi), want, rtol=1e-10)
+    assert not np.allclose(_rho_brute(law_U, L, "driven", phi)[0], _rho_brute(law_U, L, "driver", phi)[0], rtol=1e-3)
+
+
+def test_arc_frame_sums_its_quadratures_within_one_smooth_piece():
+    """The blend is only C2 at its window ends: a 10-point Gauss rule across one loses 2e-7 mm there.  With coarse
+    nodes (1 and 2 a piece) s(0) = 0 and s just beside each window end still agree with quad to rounding: every
+    quadrature starts at a node of its own piece."""
+    from propulsor.gears.pitch_frame import ArcFrame
+
+    law = SmoothedWalkingLaw(WalkingLaw(**SEED_002), 0.15)
+    pc = PitchCurves(law, 124.3)
+    bp = law.breakpoints
+    ds = lambda f: float(np.hypot(pc.r_H(f), pc.dr_H(f)))
+
+    def arc(w):
+        pts = [b for b in bp if min(0.0, w) < b < max(0.0, w)]
+        return math.copysign(quad(ds, min(0.0, w), max(0.0, w), points=pts or None, epsabs=1e-13)[0], w)
+
+    for per_piece in (1, 2):
+        fr = ArcFrame(pc, per_piece=per_piece)
+        assert len(fr.nodes) == 3 * per_piece + 1
+        assert float(fr.s_exact(0.0)[0]) == pytest.approx(0.0, abs=1e-12)
+        assert float(fr.s(0.0)[0]) == pytest.approx(0.0, abs=1e-9)  # the interpolant through S: 0 at its nodes
+        assert np.allclose(fr.S, [arc(x) for x in fr.nodes], rtol=0, atol=1e-11)
+        for b in bp[1:-1]:
+            for w in (b - 1e-3, b + 1e-3):
+                assert float(fr.s_exact(w)[0]) == pytest.approx(arc(w), abs=1e-11)
