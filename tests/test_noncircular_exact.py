@@ -1115,11 +1115,12 @@ def test_arc_frame_inverse_is_polished_to_rounding_on_a_steep_law():
     law = SmoothedWalkingLaw(WalkingLaw(a=0.0, b=106.0, c=127.0, n=1), 0.3)
     fr = ArcFrame(PitchCurves(law, 100.0))
     s = np.linspace(fr.S[0], fr.S[-1], 4001)[:-1]
+    s = np.concatenate([s, fr.S[0] + (fr.S[1] - fr.S[0]) * np.array([0.25, 0.5, 0.75])])  # the first node spacing
     back = fr.s(fr.phi(s))
     assert np.max(np.abs(back - s)) < 2e-12
     raw = fr._s_of(fr._phi_of(s))  # the inverse interpolant alone: the error the step removes
     assert np.max(np.abs(raw - s)) > 1e-9
-    for x in s[::400]:
+    for x in np.concatenate([s[::400], s[-3:]]):
         assert float(fr.s(fr.phi1(float(x)))[0]) == pytest.approx(x, abs=2e-12)
 
 
