@@ -865,8 +865,13 @@ def test_nearer_circle_crossing_by_hand():
     # along -x: lambda = -3 or -7 (both behind): the nearer -3
     assert nearer_circle_crossing1(0.0, 0.0, -1.0, 0.0, 5.0, 0.0, 2.0) == pytest.approx((3.0, 0.0), abs=1e-15)
     # from inside, (5.5, 0) along +y about (5, 0), R = 2: lambda = +-sqrt(4 - 0.25)
+    # both equally near (b = 0): the + root, as the array function (envelope.nearer_circle_crossing) takes it
+    from propulsor.gears.envelope import nearer_circle_crossing
+
     got = nearer_circle_crossing1(5.5, 0.0, 0.0, 1.0, 5.0, 0.0, 2.0)
-    assert got == pytest.approx((5.5, math.sqrt(3.75)), abs=1e-15) or got == pytest.approx((5.5, -math.sqrt(3.75)))
+    assert got == pytest.approx((5.5, math.sqrt(3.75)), abs=1e-15)
+    arr = nearer_circle_crossing(np.array([[5.5, 0.0]]), np.array([[0.0, 1.0]]), (5.0, 0.0), 2.0, "x", "y")
+    assert tuple(arr[0]) == got
     # off-centre and slanted: the nearer of the two roots of |q + lam n|^2 = R^2, computed here
     px, py, nx, ny, cx, cy, R = 1.0, -2.0, 0.6, 0.8, 4.0, 3.0, 2.5
     qx, qy = px - cx, py - cy
@@ -1164,3 +1169,35 @@ def test_arc_frame_sums_its_quadratures_within_one_smooth_piece():
         for b in bp[1:-1]:
             for w in (b - 1e-3, b + 1e-3):
                 assert float(fr.s_exact(w)[0]) == pytest.approx(arc(w), abs=1e-11)
+
+
+def test_search_law_cuts_with_the_pressure_angle_and_addendum_given(monkeypatch):
+    """alpha = 22 deg, h_a* = 0.9: every point's margin and binding limit are those of that rack (undercut limit
+    (h_a* - x) m / sin^2 alpha) and shaper, not of the 20 deg, h_a* = 1 defaults."""
+    import propulsor.gears.law_search as ls
+    from propulsor.gears.catalogue import catalogue_shaper
+    from propulsor.gears.generability import CutterSpec, check_generable
+    from propulsor.gears.law_search import search_law
+
+    monkeypatch.setattr(ls, "LAW_SEARCH_DELTA_DEG", (14.0, 24.0))
+    monkeypatch.setattr(ls, "LAW_SEARCH_UH_SCAN", (1.0, 1.05))
+    monkeypatch.setattr(ls, "LAW_SEARCH_UH_BISECTIONS", 2)
+    law = WalkingLaw(**SEED_002)
+    m, z_H = 2.5, 80
+    alpha, h_a = math.radians(22.0), 0.9
+    sh = catalogue_shaper(25.0, m)
+    res = search_law(law, m, z_H, 0.5, [(25.0, sh)], centre_distance(law, m, z_H), 5.0, alpha=alpha, h_a=h_a)
+    assert res.points
+    mine = CutterSpec(m=m, alpha=alpha, h_a=h_a, x=0.5, x_H=-0.5, z0=sh.z0, shaper_x0=sh.x0)
+    assert mine.rho_limit(0.5) == pytest.approx((0.9 - 0.5) * 2.5 / math.sin(alpha) ** 2, rel=1e-12)
+    for p in res.points:
+        sl = SmoothedWalkingLaw(law, p.delta, u_h=p.u_h_rel * law.u)
+        g = check_generable(PitchCurves(sl, p.L), mine)
+        assert g.ok
+        limits = {"driver convex vs rack undercut limit": g.driver.rho_convex_min - g.driver.rho_limit,
+                  "driven convex vs rack undercut limit": g.driven.rho_convex_min - g.driven.rho_limit}
+        for c in (g.driver, g.driven):
+            if c.concave:
+                limits[f"{c.curve} concave vs shaper r0 + e"] = c.rho_concave_min - c.r0
+        assert p.binding == min(limits, key=limits.get)
+        assert p.margin_mm == pytest.approx(min(limits.values()), abs=1e-12)
