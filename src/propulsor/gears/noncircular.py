@@ -86,9 +86,18 @@ def _extreme(f, x, y, which: str):
     if hi > lo:
         res = minimize_scalar(lambda p: sgn * float(f(p)), bounds=(lo, hi), method="bounded",
                               options={"xatol": MINIMIZE_XATOL})
-        if sgn * res.fun < sgn * best[1]:
+        if res.fun < sgn * best[1]:  # res.fun is sgn f (a maximum was never refined: the sample stayed)
             best = (float(res.x), float(sgn * res.fun))
     return best
+
+
+def _on_side(f, sign: float):
+    """|f(p)| where f has the sign ``sign`` (+1: a convex radius, -1: a concave one), else inf: the refinement of
+    one side's extreme stays on that side of a change of curvature."""
+    def g(p):
+        v = float(f(p))
+        return abs(v) if sign * v > 0 else math.inf
+    return g
 
 
 def hub_speed_ripple(law) -> HubSpeedRipple:
@@ -346,7 +355,10 @@ class PitchCurves:
         rho = _rho(r, d, dd)
         convex = D > 0
         concave = D < 0
-        cx = _extreme(f, phi[convex], rho[convex], "min") if np.any(convex) else (math.nan, math.inf)
+        # the extremes refined between neighbouring samples of the whole grid, on their side of the curvature (a
+        # stretch narrower than a sample's spacing otherwise put a concave radius, -1.6e8 mm, in the convex least)
+        cx = (_extreme(_on_side(f, 1.0), phi, np.where(convex, rho, math.inf), "min") if np.any(convex)
+              else (math.nan, math.inf))
         # concave intervals from sign changes of the denominator
         intervals = []
         if np.any(concave):
@@ -366,8 +378,7 @@ class PitchCurves:
             for a, b in zip(pts[:-1], pts[1:]):
                 if den(0.5 * (a + b)) < 0:
                     intervals.append((a, b))
-            absrho = np.abs(rho[concave])
-            cc = _extreme(lambda p: abs(float(f(p))), phi[concave], absrho, "min")
+            cc = _extreme(_on_side(f, -1.0), phi, np.where(concave, np.abs(rho), math.inf), "min")
             cc_phi, cc_rho = cc
         else:
             cc_phi, cc_rho = math.nan, math.inf
@@ -382,7 +393,7 @@ class PitchCurves:
             intervals = intervals or [(corner.phi, corner.phi)]
         return CurvatureSummary(
             curve=curve, rho_convex_min=float(rho_convex_min), phi_convex_min=float(phi_convex),
-            concave=bool(intervals) or corner is not None and corner.kind == "concave",
+            concave=bool(intervals),  # a concave corner is an interval of its own (above)
             rho_concave_min=float(cc_rho), phi_concave_min=float(cc_phi),
             concave_intervals=tuple(intervals), corner=corner,
         )
@@ -455,7 +466,6 @@ def driven_teeth(law, L: float, m: float) -> int:
         return int(round(z))
     lo = max(n, int(math.floor(z / n)) * n)
     hi = lo + n if lo * 1.0 < z else lo
-    hi = max(hi, int(math.ceil(z / n)) * n)
     parts = []
     for zz in sorted({lo, hi}):
         parts.append(f"z_H = {zz}: L = {math.pi * m * zz / P1:.4f} mm at m = {m:g}, "
