@@ -1458,3 +1458,360 @@ def test_the_morton_grouping_holds_off_the_origin_across_it_and_at_any_size():
         lo = np.column_stack([step * k + off[0], step * k + off[1], step * k + off[2]])
         hi = lo + step / 2
         assert overlapping_pairs(lo, hi, max_pairs=64).shape == (0, 2), (off, step)
+
+
+# ------------------------------------------------------------------------------------------- the gaps of the first run
+def test_reading_stops_at_the_size_the_file_had_when_opened(tmp_path):
+    """A file read in chunks of 1 MiB: one byte past a chunk is read too; what is appended after it was opened is
+    not, and a file cut short after it was opened gives what is there."""
+    from propulsor.regular_file import CHUNK
+
+    p = tmp_path / "a.stl"
+    data = bytes(range(256)) * ((CHUNK + 1) // 256 + 1)
+    p.write_bytes(data[:CHUNK + 1])
+    assert safe_read.read_bytes(p, "stl") == data[:CHUNK + 1]
+    with safe_read.opened(p, "stl") as f:
+        with open(p, "ab") as fh:
+            fh.write(b"appended")
+        assert f.read() == data[:CHUNK + 1]
+    with safe_read.opened(p, "stl") as f:
+        os.truncate(p, 10)
+        assert f.read() == data[:10]
+
+
+def test_the_machines_refusal_names_the_path_the_errno_and_what_was_done(tmp_path, monkeypatch):
+    e = safe_read._os_error(OSError(errno.EACCES, "Permission denied"), "/x/y.stl", "cannot read")
+    assert str(e) == "cannot read /x/y.stl: [EACCES] Permission denied"
+    e = safe_read._os_error(OSError(errno.EIO, ""), "/x", "cannot read")
+    assert str(e) == "cannot read /x: [EIO] Input/output error"
+    p = tmp_path / "f.bin"
+    p.write_bytes(b"abc")
+
+    def broken(fd):
+        raise OSError(errno.EIO, "Input/output error")
+
+    monkeypatch.setattr(safe_read, "hash_fd", broken)
+    with pytest.raises(EnvironmentFailure) as ex:
+        safe_read.sha256_and_size(p)
+    assert str(ex.value) == f"cannot read {p}: [EIO] Input/output error"
+    real_read = os.read
+
+    def read_fails(fd, n):
+        raise OSError(errno.EIO, "Input/output error")
+
+    with safe_read.opened(p, "stl") as f:
+        monkeypatch.setattr(os, "read", read_fails)
+        try:
+            with pytest.raises(EnvironmentFailure) as ex:
+                f.read()
+        finally:
+            monkeypatch.setattr(os, "read", real_read)
+    assert str(ex.value) == f"cannot read {p}: [EIO] Input/output error"
+
+
+def test_a_folder_the_machine_will_not_list_or_whose_entries_vanish(tmp_path, monkeypatch):
+    d = tmp_path / "out"
+    d.mkdir()
+    for name in ("a.txt", "b.txt", "c.txt"):
+        (d / name).write_text(name)
+    real_walk, real_lstat = os.walk, os.lstat
+
+    def walk_refused(root, onerror=None, followlinks=False):
+        assert followlinks is False and onerror is not None
+        onerror(PermissionError(errno.EACCES, "Permission denied", str(root)))
+        return iter(())
+
+    monkeypatch.setattr(os, "walk", walk_refused)
+    with pytest.raises(EnvironmentFailure) as ex:
+        safe_read.walk(d)
+    assert str(ex.value) == f"cannot list {d}: [EACCES] Permission denied"
+    monkeypatch.setattr(os, "walk", real_walk)
+
+    def lstat_vanishing(p, *a, **kw):
+        if str(p).endswith("a.txt"):
+            raise FileNotFoundError(errno.ENOENT, "No such file or directory", str(p))
+        return real_lstat(p, *a, **kw)
+
+    monkeypatch.setattr(os, "lstat", lstat_vanishing)
+    assert safe_read.walk(d) == ([d / "b.txt", d / "c.txt"], {})
+
+    def lstat_refused(p, *a, **kw):
+        if str(p).endswith("b.txt"):
+            raise PermissionError(errno.EACCES, "Permission denied", str(p))
+        return real_lstat(p, *a, **kw)
+
+    monkeypatch.setattr(os, "lstat", lstat_refused)
+    with pytest.raises(EnvironmentFailure) as ex:
+        safe_read.walk(d)
+    assert str(ex.value) == f"cannot read {d / 'b.txt'}: [EACCES] Permission denied"
+
+
+def test_stl_lengths_and_counts_at_their_edges():
+    # a count past 2^31 is a count, not a negative number
+    data = b"x" * 80 + struct.pack("<I", 0xFFFFFFFF) + b"y" * 16
+    assert _refused(formats.stl_kind, data) == (
+        "binary STL declares 4294967295 triangles, i.e. 84 + 50 n = 214748364834 bytes, but the file has 100")
+    # exactly 84 bytes, neither empty binary nor ASCII: its count is what is wrong
+    assert _refused(formats.stl_kind, _binary_stl(1)[:84]) == (
+        "binary STL declares 1 triangles, i.e. 84 + 50 n = 134 bytes, but the file has 84")
+
+
+def test_arcs_no_larger_than_the_tolerance_are_two_points_whatever_their_sweep():
+    assert formats._arc_points(CHORD_TOL_MM, 2 * math.pi) == 2
+    assert formats._arc_points(CHORD_TOL_MM * 0.5, 2 * math.pi) == 2
+
+
+def test_bulges_on_any_vertex_of_an_open_polyline_off_the_origin():
+    half = formats._arc_points(1.0, math.pi)
+    # (10, 5) -> (12, 5) straight, (12, 5) -> (12, 7) a half circle of radius 1, (12, 7) the end
+    assert formats._bulged([(10.0, 5.0, 0.0), (12.0, 5.0, 1.0), (12.0, 7.0, 0.0)], "P", closed=False) == 3 + half
+    # the chord from (10, 20) to (16, 20): a bulge of 1 is a half circle of radius 3
+    assert formats._bulged([(10.0, 20.0, 1.0), (16.0, 20.0, 0.0)], "P", closed=False) == 2 + formats._arc_points(
+        3.0, math.pi)
+    assert formats._bulged([(3.0, 10.0, 1.0), (3.0, 16.0, 0.0)], "P", closed=False) == 2 + formats._arc_points(
+        3.0, math.pi)
+
+
+def test_a_drawings_points_are_summed_over_every_entity_kind(monkeypatch):
+    """With the limit set to a drawing's own total (each entity's points by hand), it passes; one less, and the last
+    entity is named."""
+    doc, msp = _doc()
+    msp.add_lwpolyline([(10, 5, 0, 0, 0.0), (12, 5, 0, 0, 1.0), (12, 7, 0, 0, 0.0)], format="xyseb", close=True)
+    lw = 3 + formats._arc_points(1.0, math.pi)  # the closing segment (12, 7) -> (10, 5) straight
+    pl = msp.add_polyline2d([(0, 0), (5, 0), (5, 5)], close=True)
+    for v in pl.vertices:
+        v.dxf.discard("bulge")  # no bulge recorded: straight
+    poly = 3
+    msp.add_circle((1, 1), 5.0)
+    circle = formats._arc_points(5.0, 2 * math.pi)
+    msp.add_ellipse((0, 0), major_axis=(6, 8), ratio=0.5)
+    ellipse = formats._arc_points(10.0, 2 * math.pi)
+    s = msp.add_spline(fit_points=None)
+    s.control_points = []
+    spline = 64
+    msp.add_line((0, 0), (1, 1))
+    total = lw + poly + circle + ellipse + spline
+    monkeypatch.setattr(formats, "DXF_POINTS_MAX", total)
+    formats.check_dxf_doc(doc)
+    monkeypatch.setattr(formats, "DXF_POINTS_MAX", total - 1)
+    assert _refused(formats.check_dxf_doc, doc) == f"its curves flatten to more than {total - 1} points (at SPLINE #5)"
+    monkeypatch.setattr(formats, "DXF_POINTS_MAX", lw - 1)
+    assert _refused(formats.check_dxf_doc, doc) == f"its curves flatten to more than {lw - 1} points (at LWPOLYLINE #1)"
+    monkeypatch.setattr(formats, "DXF_POINTS_MAX", lw + poly - 1)
+    assert _refused(formats.check_dxf_doc, doc) == (
+        f"its curves flatten to more than {lw + poly - 1} points (at POLYLINE #2)")
+    monkeypatch.setattr(formats, "DXF_POINTS_MAX", lw + poly + circle + ellipse - 1)
+    assert _refused(formats.check_dxf_doc, doc) == (
+        f"its curves flatten to more than {lw + poly + circle + ellipse - 1} points (at ELLIPSE #4)")
+
+
+def test_a_lines_start_and_a_polylines_vertices_are_bounded():
+    span = "beyond the ±100000 mm a drawing may span"
+    for add, text in ((lambda m: m.add_line((2e5, 0), (0, 0)), f"LINE #1 start = 200000.0: {span}"),
+                      (lambda m: m.add_lwpolyline([(0, 0), (0, 3e5)]), f"LWPOLYLINE #1 y = 300000.0: {span}")):
+        d, m = _doc()
+        add(m)
+        assert _refused(formats.check_dxf_doc, d) == text
+
+
+def test_glb_refusals_and_drawn_triangles_by_hand():
+    assert _refused(formats.check_glb, b"glTF") == _glb_refusal(b"glTF")
+    gltf = formats.check_glb(_glb_bytes())
+    assert formats.drawn_triangles(gltf) == 12  # one box: 6 faces of 2 triangles
+    two = trimesh.Scene()
+    box = trimesh.creation.box(extents=(0.01, 0.01, 0.01))
+    two.add_geometry(box, node_name="a", geom_name="box")
+    two.add_geometry(box, node_name="b", geom_name="box", transform=np.eye(4))
+    assert formats.drawn_triangles(formats.check_glb(two.export(file_type="glb"))) == 24
+    from propulsor.export import glb_check
+
+    glb_check_limit = glb_check.GLB_DRAWN_TRIANGLES_MAX
+    try:
+        glb_check.GLB_DRAWN_TRIANGLES_MAX = 11
+        with pytest.raises(Refused) as e:
+            formats.drawn_triangles(gltf)
+    finally:
+        glb_check.GLB_DRAWN_TRIANGLES_MAX = glb_check_limit
+    assert str(e.value) == "its nodes draw 12 triangles, more than the 11 the 3D view draws"
+
+
+def _glb_refusal(data: bytes) -> str:
+    from propulsor.export import glb_check
+
+    with pytest.raises(glb_check.Refused) as e:
+        glb_check.check_glb(data)
+    return str(e.value)
+
+
+def test_brep_checks_default_name_unit_and_chord_tolerance():
+    cyl = cq.Solid.makeCylinder(10.0, 5.0)
+    cs = brep.brep_checks(cyl)
+    assert cs[0].name == "solid: BRepCheck_Analyzer valid"
+    assert cs[4].unit == "mm^3" and cs[4].passed
+    coarse = brep.brep_checks(cyl, "c", chord_tol=0.05)[4]
+    assert "deflection 0.05 mm" in coarse.message
+    # the triangulation's volume is the polyhedron's, below the exact cylinder's, within deflection x area
+    t = brep.triangulated_volume(cyl, chord_tol=0.05)
+    exact = math.pi * 10.0 ** 2 * 5.0
+    assert 1e-3 < exact - t.volume_mm3 <= t.bound_mm3
+    assert brep.volume_from_triangulation(cyl, chord_tol=0.05) == t.volume_mm3
+    assert t.deflection_mm >= 0.05 and t.area_mm2 == pytest.approx(2 * math.pi * 10 * (10 + 5), rel=1e-9)
+
+
+def _glb_of_json(doc: dict) -> bytes:
+    body = json.dumps(doc).encode()
+    body += b" " * (-len(body) % 4)
+    return b"glTF" + struct.pack("<II", 2, 12 + 8 + len(body)) + struct.pack("<I", len(body)) + b"JSON" + body
+
+
+def test_the_file_checks_say_why_in_full(tmp_path, monkeypatch):
+    files._MANIFESTS.clear()
+    (tmp_path / "junk.dxf").write_text("0\nSECTION\n2\nNOPE\n")
+    assert files.check_dxf_file(tmp_path / "junk.dxf") == [Check(
+        "junk.dxf: DXF parses", False, False, True, "", "DXFStructureError: DXFStructureError: missing ENDSEC tag.")]
+    _dxf(tmp_path / "ok.dxf")
+
+    def summary_fails(doc, *a, **kw):
+        raise KeyError("layer")
+
+    monkeypatch.setattr("propulsor.export.dxf.dxf_summary", summary_fails)
+    assert files.check_dxf_file(tmp_path / "ok.dxf") == [Check(
+        "ok.dxf: DXF parses", False, False, True, "", "KeyError: 'layer'")]
+    monkeypatch.undo()
+    (tmp_path / "junk.step").write_text("ISO-10303-21;\nnonsense\n")
+    assert files.check_step_file(tmp_path / "junk.step") == [Check(
+        "junk.step: STEP parses", False, False, True, "", "junk.step: STEP does not parse (status 3)")]
+    os.mkfifo(tmp_path / "pipe.step")
+    assert files.check_step_file(tmp_path / "pipe.step") == [Check(
+        "pipe.step: STEP parses", False, False, True, "", "is a FIFO, not a regular file (not opened)")]
+    (tmp_path / "x.glb").write_bytes(b"glTF")
+    assert files.check_glb_file(tmp_path / "x.glb") == [Check(
+        "x.glb: loads", False, False, True, "", _glb_refusal(b"glTF"))]
+    empty = _glb_of_json({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+                          "nodes": [{"name": "empty"}]})
+    (tmp_path / "e.glb").write_bytes(empty)
+    assert files.check_glb_file(tmp_path / "e.glb") == [Check(
+        "e.glb: loads", False, False, True, "", "ValueError: no mesh node")]
+    os.mkfifo(tmp_path / "manifest.json")
+    assert files.check_manifest_file(tmp_path / "manifest.json") == [Check(
+        "manifest.json: parses", False, False, True, "", "is a FIFO, not a regular file (not opened)")]
+    stl = _box_stl(tmp_path / "b.stl")
+    assert files.check_file(stl)[0] == Check("b.stl: loads", True, True, True, "", "12 triangles, 8 vertices")
+
+
+def test_a_step_solid_that_does_not_tessellate_is_said_so(tmp_path, monkeypatch):
+    files._MANIFESTS.clear()
+    p = write_step(cq.Solid.makeBox(2.0, 3.0, 4.0), tmp_path / "box.step", "box")
+
+    def fails(solid, parallel=True):
+        raise RuntimeError("BRepMesh failed")
+
+    monkeypatch.setattr("propulsor.export.mesh.tessellate", fails)
+    cs = files.check_step_file(p)
+    assert cs[-1] == Check("box.step: solid 1 mesh: tessellates", False, False, True, "", "RuntimeError: BRepMesh failed")
+
+
+def test_a_step_file_without_a_manifest_and_every_brep_check_after_the_solid_count(tmp_path):
+    files._MANIFESTS.clear()
+    p = write_step(cq.Solid.makeBox(2.0, 3.0, 4.0), tmp_path / "box.step", "box")
+    by = {c.name: c for c in files.check_step_file(p)}
+    assert "box.step: volume vs manifest" not in by
+    for n in ("open shells", "B-rep volume", "exact volume vs triangulated"):
+        assert f"box.step: solid 1: {n}" in by
+    v = by["box.step: solid 1 mesh: volume vs B-rep"]
+    assert v.passed and v.limit["expected"] == pytest.approx(24.0, rel=1e-12)
+    files._MANIFESTS.clear()
+    _manifest(tmp_path, [{"path": "box.step", "volume_mm3": 24.0}])
+    c = {c.name: c for c in files.check_step_file(p)}["box.step: volume vs manifest"]
+    assert c.unit == "mm^3" and c.limit == {"expected": 24.0, "rel_tol": 1e-6, "abs_tol": 0.0}
+    assert c.message.startswith("box.step: volume vs manifest: ")
+
+
+def test_the_box_pair_budget_reaches_every_mesh_a_file_check_makes(tmp_path, monkeypatch):
+    """A limit of 3 box pairs: the STL's mesh and a STEP solid's tessellation say the self-intersection test was not
+    run."""
+    files._MANIFESTS.clear()
+    stl = _box_stl(tmp_path / "b.stl")
+    monkeypatch.setattr(files, "MESH_BOX_PAIRS_MAX", 3)
+    x = files.check_mesh_file(stl)[-1]
+    assert x.name == "b.stl: self-intersecting triangle pairs" and x.value == -1
+    assert x.message == "not tested: more than 3 pairs of overlapping triangle boxes"
+    p = write_step(cq.Solid.makeBox(2.0, 3.0, 4.0), tmp_path / "box.step", "box")
+    x = {c.name: c for c in files.check_step_file(p)}["box.step: solid 1 mesh: self-intersecting triangle pairs"]
+    assert x.value == -1 and x.message == "not tested: more than 3 pairs of overlapping triangle boxes"
+
+
+def test_listed_files_by_size_and_hash_at_their_edges(tmp_path):
+    d = tmp_path / "out"
+    d.mkdir()
+    (d / "one.txt").write_text("1")
+    (d / "empty.txt").write_text("")
+    (d / "nine.txt").write_text("123456789")
+    entries = [dict(_entry(d, "one.txt"), bytes=True),      # a bool is no size, though True == 1
+               _entry(d, "empty.txt"),                      # an empty file as recorded
+               dict(_entry(d, "nine.txt"), bytes=9.0)]      # a float is no size either
+    m = _manifest(d, entries)
+    c = {x.name.split(": ", 1)[1]: x for x in files.check_manifest_file(m)}
+    assert c["size mismatches"].message == "one.txt, nine.txt"
+    assert c["listed files unreadable"].value == 0 and c["listed files missing"].value == 0
+
+
+def test_every_list_in_a_manifests_checks_is_joined_in_full(tmp_path):
+    d = tmp_path / "out"
+    (d / "sub").mkdir(parents=True)
+    (d / "u1.txt").write_text("1")
+    (d / "u2.txt").write_text("2")
+    (d / "dir1").mkdir()
+    (d / "dir2").mkdir()
+    entries = [{"path": "gone1", "bytes": 1}, {"path": "gone2", "bytes": 1}, {"path": "dir1", "bytes": 1},
+               {"path": "dir2", "bytes": 1}]
+    checks = [{"name": "a", "passed": False}, {"name": "b", "passed": False}, {"name": "c", "passed": False}]
+    m = _manifest(d, entries, checks=checks, expected_failures=["a", "b"])
+    c = {x.name.split(": ", 1)[1]: x for x in files.check_manifest_file(m)}
+    assert c["listed files missing"].message == "missing: gone1, gone2"
+    assert c["listed files unreadable"].message == ("dir1 (is a folder, not a regular file (not opened)), "
+                                                    "dir2 (is a folder, not a regular file (not opened))")
+    assert c["unlisted files"].message == "u1.txt, u2.txt"
+    assert c["recorded failed checks"].message == "c (2 documented as expected failures in the part file: a; b)"
+
+
+def test_the_entry_of_a_file_is_found_among_others(tmp_path):
+    files._MANIFESTS.clear()
+    f = tmp_path / "b.stl"
+    _manifest(tmp_path, [{"path": "a.stl", "genus": 3}, {"path": "b.stl", "genus": 1}])
+    assert files._manifest_entry(f) == {"path": "b.stl", "genus": 1}
+
+
+def test_check_path_keeps_every_files_checks(tmp_path):
+    d = tmp_path / "out"
+    d.mkdir()
+    stl = _box_stl(d / "b.stl")
+    assert files.check_path(d) == {str(stl): files.check_file(stl)}
+
+
+def test_a_policy_with_an_empty_directive_in_the_middle_is_read_to_its_end():
+    sheet, known = _sha256("x"), script_hash(TABLE_SORT_SCRIPT)
+    csp = (f"default-src 'none'; ; img-src 'self'; style-src {sheet}; script-src {known}; base-uri 'none'; "
+           "form-action 'none'")
+    assert pages._policy_problem(csp) == ""
+    assert pages._policy_problem(csp.replace("form-action 'none'", "form-action *")) == (
+        "its policy's form-action is '*', not 'none'")
+
+
+def test_a_glb_assembly_off_the_origin_in_a_folder_whose_step_is_not_a_file(tmp_path):
+    files._MANIFESTS.clear()
+    a = cq.Solid.makeBox(20.0, 30.0, 40.0)
+    write_assembly_step(tmp_path / "asm.step", [("a", a, (100.0, 50.0, 10.0), 0.0)], "asm")
+    scene = trimesh.Scene()
+    scene.add_geometry(trimesh.creation.box(extents=(0.02, 0.03, 0.04)), node_name="a")
+    (tmp_path / "asm.glb").write_bytes(scene.export(file_type="glb"))
+    _manifest(tmp_path, [], media={"models": [{"path": "asm.glb", "components": ["a"], "step": "asm.step"}]})
+    cs = files.check_glb_file(tmp_path / "asm.glb")
+    assert cs[-1] == Check("asm.glb: extent vs the STEP in metres", True, cs[-1].value, 1e-4, "m",
+                           "glTF is in metres: the STEP's mm × 0.001") and cs[-1].value < 1e-9
+    (tmp_path / "asm.step").unlink()
+    (tmp_path / "asm.step").mkdir()
+    files._MANIFESTS.clear()
+    assert files.check_glb_file(tmp_path / "asm.glb")[-1] == Check(
+        "asm.glb: assembly STEP readable", False, False, True, "",
+        "asm.step is a folder, not a regular file (not opened)")
