@@ -1815,3 +1815,37 @@ def test_a_glb_assembly_off_the_origin_in_a_folder_whose_step_is_not_a_file(tmp_
     assert files.check_glb_file(tmp_path / "asm.glb")[-1] == Check(
         "asm.glb: assembly STEP readable", False, False, True, "",
         "asm.step is a folder, not a regular file (not opened)")
+
+
+def test_the_kernels_are_cold_only_where_neither_compiled_nor_on_disk(monkeypatch):
+    from propulsor.checks import kernels
+
+    kernels.warm()
+    ds = kernels._dispatchers()
+    # not compiled in this process but each on disk: not cold
+    monkeypatch.setattr(type(ds[0]), "signatures", property(lambda self: []))
+    assert all(d._cache._cache_file._load_index() for d in ds)
+    assert not kernels.cold()
+    monkeypatch.undo()
+
+    def unreadable():
+        raise AttributeError("numba's layout changed")
+
+    monkeypatch.setattr(kernels, "_dispatchers", unreadable)
+    assert kernels.cold() is False
+
+
+def test_nearest_points_of_bodies_whose_boxes_overlap_but_lie_far_apart():
+    """A ball at the centre of a ring of radius 50: their boxes overlap, their surfaces are 39 mm apart, beyond the
+    reach of a 5 mm bound (pad 5 + 2 x 10): nothing found."""
+    import manifold3d as m3d
+
+    ring = m3d.Manifold.cylinder(10.0, 52.0, 52.0, 128).translate([0.0, 0.0, -5.0]) - \
+        m3d.Manifold.cylinder(12.0, 48.0, 48.0, 128).translate([0.0, 0.0, -6.0])
+    ball = m3d.Manifold.sphere(9.0, 64)
+    from propulsor.checks.proximity import nearest_points
+
+    assert ring.min_gap(ball, 60.0) == pytest.approx(39.0, abs=0.1)
+    assert nearest_points(ring, ball, 5.0) == (math.inf, None, None)
+    d, pa, pb = nearest_points(ring, ball, 45.0, spacing=1.0, coarse=12.0)
+    assert d == pytest.approx(39.0, abs=1.0) and np.hypot(pa[0], pa[1]) == pytest.approx(48.0, abs=0.5)
