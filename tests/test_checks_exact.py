@@ -1849,3 +1849,35 @@ def test_nearest_points_of_bodies_whose_boxes_overlap_but_lie_far_apart():
     assert nearest_points(ring, ball, 5.0) == (math.inf, None, None)
     d, pa, pb = nearest_points(ring, ball, 45.0, spacing=1.0, coarse=12.0)
     assert d == pytest.approx(39.0, abs=1.0) and np.hypot(pa[0], pa[1]) == pytest.approx(48.0, abs=0.5)
+
+
+def test_warm_if_cold_warms_and_says_so_only_when_cold(monkeypatch):
+    from propulsor.checks import kernels
+
+    said, warmed = [], []
+    monkeypatch.setattr(kernels, "warm", lambda: warmed.append(1))
+    monkeypatch.setattr(kernels, "cold", lambda: False)
+    assert kernels.warm_if_cold(said.append) is False and said == [] and warmed == []
+    monkeypatch.setattr(kernels, "cold", lambda: True)
+    assert kernels.warm_if_cold(said.append) is True and warmed == [1]
+    assert said == ["compiling the numeric kernels for this machine (once after an install or an update: about 30 s)"]
+    assert kernels.warm_if_cold() is True and warmed == [1, 1]
+
+
+def test_a_closed_polylines_closing_bulge_counts_after_other_entities(monkeypatch):
+    doc, msp = _doc()
+    msp.add_circle((0, 0), 5.0)
+    circle = formats._arc_points(5.0, 2 * math.pi)
+    # closed: (0, 0) -> (4, 0) -> (4, 3) and back to (0, 0) over a bulge of 1 (a half circle on the 5 mm chord)
+    msp.add_lwpolyline([(0, 0, 0, 0, 0.0), (4, 0, 0, 0, 0.0), (4, 3, 0, 0, 1.0)], format="xyseb", close=True)
+    pl = msp.add_polyline2d([(10, 0), (14, 0), (14, 3)], close=True)
+    pl.vertices[-1].dxf.bulge = 1.0
+    lw = 3 + formats._arc_points(2.5, math.pi)
+    total = circle + 2 * lw
+    monkeypatch.setattr(formats, "DXF_POINTS_MAX", total)
+    formats.check_dxf_doc(doc)
+    monkeypatch.setattr(formats, "DXF_POINTS_MAX", total - 1)
+    assert _refused(formats.check_dxf_doc, doc) == f"its curves flatten to more than {total - 1} points (at POLYLINE #3)"
+    monkeypatch.setattr(formats, "DXF_POINTS_MAX", circle + lw - 1)
+    assert _refused(formats.check_dxf_doc, doc) == (
+        f"its curves flatten to more than {circle + lw - 1} points (at LWPOLYLINE #2)")
