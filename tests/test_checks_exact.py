@@ -1881,3 +1881,9 @@ def test_a_closed_polylines_closing_bulge_counts_after_other_entities(monkeypatc
     monkeypatch.setattr(formats, "DXF_POINTS_MAX", circle + lw - 1)
     assert _refused(formats.check_dxf_doc, doc) == (
         f"its curves flatten to more than {circle + lw - 1} points (at LWPOLYLINE #2)")
+
+
+def test_the_machines_own_words_for_a_refusal_are_kept():
+    e = safe_read._os_error(OSError(errno.EACCES, "denied by the site's policy"), "/x", "cannot read")
+    assert str(e) == "cannot read /x: [EACCES] denied by the site's policy"
+
