@@ -1406,6 +1406,7 @@ def test_design_with_law_search_cuts_with_the_next_catalogue_shaper_where_the_ge
     assert (d.driver, d.driven, d.shaper) == ("DRV", "DVN", entry) and entry.d0_mm == 38.0
     assert d.smoothing.cutter is cutter and d.smoothing.generability is g and d.smoothing.delta == 0.0
     assert d.closure_error == d.smoothing.closure_error
+    assert type(d.z) is int and type(d.smoothing.z) is int and d.smoothing.z == 20  # whole teeth, not 20.0
 
 
 def test_design_with_law_search_refused_by_every_shaper_lists_each_refusal_once(monkeypatch):
@@ -1417,13 +1418,13 @@ def test_design_with_law_search_refused_by_every_shaper_lists_each_refusal_once(
     scr = screen_smooth(p, law_of(p))
     _record_generate_pair(monkeypatch, [InputError("z0", 40, "cannot cut: the tip", "a hint"),
                                         RuntimeError("lost: the envelope"), ValueError("x: y: z"),
-                                        RuntimeError("lost: the envelope"), InputError("m", 2.5, "too small")])
+                                        RuntimeError("lost"), InputError("m", 2.5, "too small")])
     with pytest.raises(InputError) as e:
         design_smooth(p, scr, lambda s: None)
     assert str(e.value) == (
         "shaper_teeth = 20: the fourier law's pitch curves are not generable at m = 2.5, z 20/80, "
         f"L = {scr.L:.3f} mm with the catalogue cutters (shaper d0 100: cannot cut: the tip (a hint) | "
-        "shaper d0 75: the envelope | shaper d0 50: y: z | shaper d0 38: the envelope | shaper d0 25: too small)")
+        "shaper d0 75: the envelope | shaper d0 50: y: z | shaper d0 38: lost | shaper d0 25: too small)")
 
 
 def test_design_without_the_search_or_of_convex_curves_passes_the_generators_refusal_on_by_its_key(monkeypatch):
@@ -1470,6 +1471,8 @@ def test_screen_with_a_catalogue_shaper_a_shifted_driver_and_a_one_millimetre_mo
     assert entry == shaper_entry(50.0, 2.5) and sh == catalogue_shaper(50.0, 2.5) and (sh.z0, sh.x0) == (20, 0.0)
     assert cutter == CutterSpec(m=2.5, alpha=math.radians(20.0), x=0.3, x_H=-0.3, z0=20, shaper_x0=0.0)
     assert why == "" and g.ok
+    steep = screen_smooth(_part("ncg_elliptical", pressure_angle_deg=21.0), law)
+    assert steep.candidates[0][2].alpha == math.radians(21.0)
     one = screen_smooth(_part("ncg_elliptical", module_mm=1.0), law)
     assert one.m == 1.0 and one.L == pytest.approx(2 * 30 * math.pi / (4 * ellipe(0.09)), rel=1e-9)
 
@@ -1569,3 +1572,60 @@ def test_screen_with_law_search_lists_each_catalogue_shaper_that_cannot_cut_the_
     with pytest.raises(InputError) as e:
         screen_smooth(p, law_of(p))
     assert str(e.value) == "shaper_d0_mm = 20: no z0 20: really (a hint)" and asked == [(-0.5, 20, 20)]
+
+
+# =========================================================================== design.py
+def test_mounting_is_the_design_centre_distance_unless_a_distance_at_least_as_large_is_given():
+    import dataclasses
+
+    from propulsor.errors import InputError
+    from propulsor.parts.noncircular_pair.design import mounting
+
+    p = _part("ncg_elliptical")
+    d = SimpleNamespace(L=76.5)
+    at = lambda v: mounting(dataclasses.replace(p, mounting_distance_mm=v), d)  # noqa: E731
+    assert at(0.0) == 76.5 and at(80.0) == 80.0 and at(76.5) == 76.5 and at(76.5 - 0.5e-9) == 76.5 - 0.5e-9
+    with pytest.raises(InputError) as e:
+        at(76.5 - 2e-9)
+    assert str(e.value) == (f"mounting_distance_mm = {76.5 - 2e-9!r}: must be >= the design centre distance "
+                            "L = 76.500000 mm (or 0)")
+
+
+def _keyed_bore_area(d, b, t2):
+    """A bore of diameter d with a hub keyway b wide, t2 deep above the bore's top: the circle less the cap above the
+    chord y_s = sqrt(R^2 - b^2/4), plus the keyway's rectangle from y_s to R + t2."""
+    R = d / 2
+    ys = math.sqrt(R * R - b * b / 4)
+    cap = R * R * math.acos(ys / R) - ys * b / 2
+    return math.pi * R * R - cap + b * (R + t2 - ys)
+
+
+def test_a_bore_is_cut_into_the_profile_with_its_keyway_and_none_of_zero_diameter():
+    """Bores of 16 mm (DIN 6885-1 keyway b = 5, t2 = 2.3 mm) with and without the keyway and of 1 mm, in a 60 mm
+    disc; a bore of 0 leaves the profile as it is."""
+    from propulsor.geometry.profile import Profile, circle_loop
+    from propulsor.parts.noncircular_pair.bores import Bore
+    from propulsor.parts.noncircular_pair.design import _with_bore
+
+    disc = Profile(circle_loop(30.0), [], "wheel")
+    full = math.pi * 900
+    assert _with_bore(disc, Bore(0.0, True, False)) is disc
+    keyed = _with_bore(disc, Bore(16.0, True, True, "why"))
+    assert keyed.name == "wheel" and keyed.outer is disc.outer and len(keyed.holes) == 1
+    assert keyed.area(1e-6) == pytest.approx(full - _keyed_bore_area(16.0, 5.0, 2.3), rel=1e-6)
+    plain = _with_bore(disc, Bore(16.0, False, False))
+    assert plain.area(1e-6) == pytest.approx(full - math.pi * 64, rel=1e-6)
+    small = _with_bore(disc, Bore(1.0, False, False))
+    assert len(small.holes) == 1 and small.area(1e-7) == pytest.approx(full - math.pi * 0.25, rel=1e-8)
+
+
+def test_gear_profiles_cut_the_chosen_bores_into_each_wheel():
+    from propulsor.geometry.profile import Profile, circle_loop
+    from propulsor.parts.noncircular_pair.bores import Bore
+    from propulsor.parts.noncircular_pair.design import gear_profiles
+
+    d = SimpleNamespace(driver=SimpleNamespace(profile=Profile(circle_loop(20.0), [], "driver")),
+                        driven=SimpleNamespace(profile=Profile(circle_loop(40.0), [], "driven")))
+    drv, dvn = gear_profiles(_part("ncg_elliptical"), d, (Bore(0.0, True, False), Bore(30.0, True, True)))
+    assert drv is d.driver.profile and dvn.name == "driven"
+    assert dvn.area(1e-6) == pytest.approx(math.pi * 1600 - _keyed_bore_area(30.0, 8.0, 3.3), rel=1e-6)
