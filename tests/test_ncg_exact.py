@@ -1585,10 +1585,12 @@ def test_mounting_is_the_design_centre_distance_unless_a_distance_at_least_as_la
     d = SimpleNamespace(L=76.5)
     at = lambda v: mounting(dataclasses.replace(p, mounting_distance_mm=v), d)  # noqa: E731
     assert at(0.0) == 76.5 and at(80.0) == 80.0 and at(76.5) == 76.5 and at(76.5 - 0.5e-9) == 76.5 - 0.5e-9
-    with pytest.raises(InputError) as e:
-        at(76.5 - 2e-9)
-    assert str(e.value) == (f"mounting_distance_mm = {76.5 - 2e-9!r}: must be >= the design centre distance "
-                            "L = 76.500000 mm (or 0)")
+    assert at(76.5 - 1e-9) == 76.5 - 1e-9  # the limit itself is taken
+    for v in (76.5 - 2e-9, 1.0, 0.5):
+        with pytest.raises(InputError) as e:
+            at(v)
+        assert str(e.value) == (f"mounting_distance_mm = {v!r}: must be >= the design centre distance "
+                                "L = 76.500000 mm (or 0)")
 
 
 def _keyed_bore_area(d, b, t2):
@@ -1629,3 +1631,25 @@ def test_gear_profiles_cut_the_chosen_bores_into_each_wheel():
     drv, dvn = gear_profiles(_part("ncg_elliptical"), d, (Bore(0.0, True, False), Bore(30.0, True, True)))
     assert drv is d.driver.profile and dvn.name == "driven"
     assert dvn.area(1e-6) == pytest.approx(math.pi * 1600 - _keyed_bore_area(30.0, 8.0, 3.3), rel=1e-6)
+
+
+def test_pair_design_of_the_elliptical_file_with_its_bores_profiles_and_mounting():
+    """The part file's 16 mm bores with DIN 6885-1 keyways (b = 5, t2 = 2.3 mm) cut into both wheels, the design's own
+    centre distance as the mounting, the design's steps told."""
+    from propulsor.parts.noncircular_pair.bores import bores
+    from propulsor.parts.noncircular_pair.design import design, pair_design
+
+    p = _part("ncg_elliptical")
+    said = []
+    dd = pair_design(p, progress=said.append)
+    d = dd.d
+    assert said == ["generated: generability of the elliptical law at m = 2.5, z 30/30",
+                    "generated: the teeth of both wheels (30 and 30), rack/shaper envelopes"]
+    assert d.method == "generated" and (d.z, d.z_H, d.m) == (30, 30, 2.5) and dd.mount == d.L
+    assert dd.bores == bores(p, d) and [b.d_mm for b in dd.bores] == [16.0, 16.0]
+    assert (dd.p.driver_bore_mm, dd.p.driven_bore_mm) == (16.0, 16.0)
+    hole = _keyed_bore_area(16.0, 5.0, 2.3)
+    for prof, gear in zip(dd.profiles, (d.driver, d.driven)):
+        assert prof.outer is gear.profile.outer and len(prof.holes) == 1
+        assert prof.area(1e-4) == pytest.approx(gear.profile.area(1e-4) - hole, rel=1e-5)
+    assert design(p).L == d.L
