@@ -1653,3 +1653,7 @@ def test_pair_design_of_the_elliptical_file_with_its_bores_profiles_and_mounting
         assert prof.outer is gear.profile.outer and len(prof.holes) == 1
         assert prof.area(1e-4) == pytest.approx(gear.profile.area(1e-4) - hole, rel=1e-5)
     assert design(p).L == d.L
+    # without chosen bores: the part file's, sized or given (bores.bores), the same cut
+    from propulsor.parts.noncircular_pair.design import gear_profiles
+
+    assert [q.area(1e-4) for q in gear_profiles(p, d)] == [q.area(1e-4) for q in dd.profiles]
