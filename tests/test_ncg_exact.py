@@ -1350,3 +1350,310 @@ def test_half_an_hour_of_life_and_a_section_measured_under_two_numbers_and_a_lig
     import matplotlib.pyplot as plt
 
     plt.close(fig)
+
+
+def _record_generate_pair(monkeypatch, outcomes):
+    """cutting.generate_pair replaced: each call recorded and answered by the next of ``outcomes`` (an exception
+    raised, else returned as the (driver, driven) pair)."""
+    from propulsor.parts.noncircular_pair import cutting
+
+    calls = []
+
+    def fake(pc, spec_driver, spec_driven, frame, progress=None):
+        calls.append(SimpleNamespace(pc=pc, drv=spec_driver, dvn=spec_driven, frame=frame, progress=progress))
+        out = outcomes[len(calls) - 1]
+        if isinstance(out, BaseException):
+            raise out
+        return out
+
+    monkeypatch.setattr(cutting, "generate_pair", fake)
+    return calls
+
+
+def test_design_with_law_search_cuts_with_the_next_catalogue_shaper_where_the_generator_refuses(monkeypatch):
+    """Seed 002's Fourier law (driven wheel concave, driver convex, x = 0.5): the five catalogue shapers in turn, the
+    driver cut at +x and the driven wheel at -x with the shaper's own settings on one arc-length frame; a refusal
+    (InputError, RuntimeError, ValueError) moves on to the next shaper, the first pair cut is the design."""
+    from propulsor.errors import InputError
+    from propulsor.gears.noncircular_teeth import ArcFrame
+    from propulsor.parts.noncircular_pair.cutting import rack_of
+    from propulsor.parts.noncircular_pair.feasibility import law_of
+    from propulsor.parts.noncircular_pair.smooth_law import design_smooth, screen_smooth
+
+    p = _part("ncg_fourier_seed002")
+    law = law_of(p)
+    scr = screen_smooth(p, law)
+    assert [c[4] for c in scr.candidates] == [""] * 5
+    assert not scr.pc.curvature("driver").concave and scr.pc.curvature("driven").concave
+    calls = _record_generate_pair(monkeypatch, [InputError("z0", 40, "cannot cut: the tip", "a hint"),
+                                                RuntimeError("lost: the envelope"), ValueError("x: y: z"),
+                                                ("DRV", "DVN")])
+    said = []
+    d = design_smooth(p, scr, said.append)
+    assert len(calls) == 4
+    assert said == ["generated: generability of the fourier law at m = 2.5, z 20/80"] + [
+        "generated: the teeth of both wheels (20 and 80), rack/shaper envelopes"] * 4
+    th = 0.16 / (2 * math.cos(math.radians(20.0)))
+    for call, (entry, sh, cutter, g, why) in zip(calls, scr.candidates):
+        assert call.pc is scr.pc and call.frame is calls[0].frame and call.progress == said.append
+        for spec, x in ((call.drv, 0.5), (call.dvn, -0.5)):
+            assert (spec.m, spec.x, spec.z0, spec.shaper) == (2.5, x, sh.z0, sh)
+            assert spec.thinning_mm == pytest.approx(th) and spec.rack == rack_of(p)
+    assert isinstance(calls[0].frame, ArcFrame) and calls[0].frame.pc is scr.pc
+    entry, sh, cutter, g, _ = scr.candidates[3]
+    assert (d.method, d.law, d.run_law, d.L, d.m, d.z_H, d.z, d.pc) == ("generated", law, law, scr.L, 2.5, 80, 20,
+                                                                       scr.pc)
+    assert (d.driver, d.driven, d.shaper) == ("DRV", "DVN", entry) and entry.d0_mm == 38.0
+    assert d.smoothing.cutter is cutter and d.smoothing.generability is g and d.smoothing.delta == 0.0
+    assert d.closure_error == d.smoothing.closure_error
+    assert type(d.z) is int and type(d.smoothing.z) is int and d.smoothing.z == 20  # whole teeth, not 20.0
+
+
+def test_design_with_law_search_refused_by_every_shaper_lists_each_refusal_once(monkeypatch):
+    from propulsor.errors import InputError
+    from propulsor.parts.noncircular_pair.feasibility import law_of
+    from propulsor.parts.noncircular_pair.smooth_law import design_smooth, screen_smooth
+
+    p = _part("ncg_fourier_seed002")
+    scr = screen_smooth(p, law_of(p))
+    _record_generate_pair(monkeypatch, [InputError("z0", 40, "cannot cut: the tip", "a hint"),
+                                        RuntimeError("lost: the envelope"), ValueError("x: y: z"),
+                                        RuntimeError("lost"), InputError("m", 2.5, "too small")])
+    with pytest.raises(InputError) as e:
+        design_smooth(p, scr, lambda s: None)
+    assert str(e.value) == (
+        "shaper_teeth = 20: the fourier law's pitch curves are not generable at m = 2.5, z 20/80, "
+        f"L = {scr.L:.3f} mm with the catalogue cutters (shaper d0 100: cannot cut: the tip (a hint) | "
+        "shaper d0 75: the envelope | shaper d0 50: y: z | shaper d0 38: lost | shaper d0 25: too small)")
+
+
+def test_design_without_the_search_or_of_convex_curves_passes_the_generators_refusal_on_by_its_key(monkeypatch):
+    """The generator's z0 is the part file's shaper_teeth (the own shaper) or shaper_d0_mm (a catalogue shaper);
+    law_search retries only where a pitch curve is concave."""
+    from propulsor.errors import InputError
+    from propulsor.parts.noncircular_pair.feasibility import law_of
+    from propulsor.parts.noncircular_pair.smooth_law import design_smooth, screen_smooth
+
+    for name, kw, key in (("ncg_fourier_seed002", dict(law_search=False), "shaper_teeth"),
+                          ("ncg_fourier_seed002", dict(law_search=False, shaper_d0_mm=50.0), "shaper_d0_mm"),
+                          ("ncg_elliptical", dict(law_search=True), "shaper_teeth"),
+                          ("ncg_elliptical", dict(law_search=True, shaper_d0_mm=50.0), "shaper_d0_mm")):
+        p = _part(name, **kw)
+        scr = screen_smooth(p, law_of(p))
+        assert len(scr.candidates) == 1
+        calls = _record_generate_pair(monkeypatch, [InputError("z0", 7, "cannot cut", "a hint")])
+        with pytest.raises(InputError) as e:
+            design_smooth(p, scr, lambda s: None)
+        assert str(e.value) == f"{key} = 7: cannot cut (a hint)" and len(calls) == 1
+        _record_generate_pair(monkeypatch, [InputError("m", 2.5, "too small")])
+        with pytest.raises(InputError) as e:
+            design_smooth(p, scr, lambda s: None)
+        assert str(e.value) == "module_mm = 2.5: too small"
+        for exc in (RuntimeError("lost"), ValueError("bad")):
+            _record_generate_pair(monkeypatch, [exc])
+            with pytest.raises(type(exc)) as e:
+                design_smooth(p, scr, lambda s: None)
+            assert e.value is exc
+
+
+def test_screen_with_a_catalogue_shaper_a_shifted_driver_and_a_one_millimetre_module():
+    """shaper_d0_mm = 50 at m = 2.5: the catalogue's z0 = 20 and x0 = 0 (not the file's shaper_teeth = 23); the
+    driven wheel cut at -x; module 1 mm: L of 30 pitches of pi on 4 (L/2) E(e^2)."""
+    from scipy.special import ellipe
+
+    from propulsor.gears.catalogue import catalogue_shaper, shaper_entry
+    from propulsor.gears.generability import CutterSpec
+    from propulsor.parts.noncircular_pair.smooth_law import screen_smooth
+
+    law = EllipticalLaw(0.3, 1)
+    p = _part("ncg_elliptical", shaper_d0_mm=50.0, shaper_teeth=23, driver_shift=0.3)
+    ((entry, sh, cutter, g, why),) = screen_smooth(p, law).candidates
+    assert entry == shaper_entry(50.0, 2.5) and sh == catalogue_shaper(50.0, 2.5) and (sh.z0, sh.x0) == (20, 0.0)
+    assert cutter == CutterSpec(m=2.5, alpha=math.radians(20.0), x=0.3, x_H=-0.3, z0=20, shaper_x0=0.0)
+    assert why == "" and g.ok
+    steep = screen_smooth(_part("ncg_elliptical", pressure_angle_deg=21.0), law)
+    assert steep.candidates[0][2].alpha == math.radians(21.0)
+    one = screen_smooth(_part("ncg_elliptical", module_mm=1.0), law)
+    assert one.m == 1.0 and one.L == pytest.approx(2 * 30 * math.pi / (4 * ellipe(0.09)), rel=1e-9)
+
+
+def test_screen_refusals_name_the_part_files_keys():
+    """The law's refusals in the part file's keys (z_H, L named driven_teeth, center_distance_mm; values the file's
+    own validation would refuse first, set past it); the installed centre distance on both sides of L - 1e-9."""
+    import dataclasses
+
+    from scipy.special import ellipe
+
+    from propulsor.errors import InputError
+    from propulsor.parts.noncircular_pair.feasibility import law_of
+    from propulsor.parts.noncircular_pair.smooth_law import screen_smooth
+
+    def refusal(p, **kw):
+        q = dataclasses.replace(p, **kw)
+        with pytest.raises(InputError) as e:
+            screen_smooth(q, law_of(q))
+        return str(e.value)
+
+    seed = _part("ncg_fourier_seed002")
+    multiple = "must be a multiple of n = 4 so the driver has z_H/n whole teeth (nearest valid: 80, 84)"
+    assert refusal(seed, driven_teeth=81) == f"driven_teeth = 81: {multiple}"
+    assert refusal(seed, module_mm=0.0, center_distance_mm=124.0, driven_teeth=82) == f"driven_teeth = 82: {multiple}"
+    assert refusal(seed, module_mm=0.0, center_distance_mm=0.0) == "center_distance_mm = 0.0: must be > 0 mm"
+    # z 1/4: the remedies within the part file's limits: the concave |rho| 6.219 mm would take a shaper of
+    # z0 <= ceil(2 x 6.219 / 2.5) - 1 = 4 teeth, below shaper_teeth's least 6: none is offered
+    assert refusal(_part("ncg_fourier_seed002", driven_teeth=4, law_search=False, shaper_teeth=6)) == (
+        "driver_shift = 0.5: the fourier law's pitch curves are not generable at m = 2.5, z 1/4, L = 6.221 mm with "
+        "the catalogue cutters (driver: convex rho_min 0.962 mm < undercut limit 10.686 mm; works with driver_shift "
+        ">= 0.955, or driven_teeth >= 48 at module_mm = 2.5, or module_mm <= 0.225 mm at L = 6.221 mm; driven: "
+        "convex rho_min 2.290 mm < undercut limit 32.057 mm; works with driver_shift <= -0.893, or driven_teeth >= "
+        "56 at module_mm = 2.5, or module_mm <= 0.1786 mm at L = 6.221 mm; driven: concave |rho|_min 6.219 mm: no "
+        "shaper within the limits fits inside it (r0 < |rho|; a smoother law))")
+    # the installed centre distance: at least L (e = 0.3, z 30, m = 2.5), to 1e-9 mm
+    L = float(2 * 30 * math.pi * 2.5 / (4 * ellipe(0.09)))
+    ell = _part("ncg_elliptical")
+    assert refusal(ell, mounting_distance_mm=L - 2e-9) == (
+        f"mounting_distance_mm = {L - 2e-9!r}: must be >= the design centre distance L = {L:.6f} mm (or 0)")
+    for ok in (L - 0.5e-9, L):
+        assert screen_smooth(dataclasses.replace(ell, mounting_distance_mm=ok), EllipticalLaw(0.3, 1)).L == pytest.approx(L)
+
+
+def test_screen_of_a_concave_curve_needs_a_shaper_that_can_be_made():
+    """Seed 002's driven wheel is concave: its shaper z0 = 6 with x0 = +0.5 (-x of the driven wheel, x = -0.5) has
+    overlapping tip rounds.  Without the search that is the refusal; with it at m = 7 (no catalogue shaper: the part
+    file's own is tried) it is the one limit listed."""
+    from propulsor.errors import InputError
+    from propulsor.parts.noncircular_pair.feasibility import law_of
+    from propulsor.parts.noncircular_pair.smooth_law import screen_smooth
+
+    made = ("the shaper z0 = 6 with x0 = +0.5 (-x of the gear it cuts) cannot be made: rho_a0_star = 0.1: tip rounds "
+            "of the shaper tooth overlap (use a smaller profile shift (driver_shift) or another shaper)")
+    p = _part("ncg_fourier_seed002", shaper_teeth=6, law_search=False)
+    with pytest.raises(InputError) as e:
+        screen_smooth(p, law_of(p))
+    assert str(e.value) == f"shaper_teeth = 6: {made}"
+    p = _part("ncg_fourier_seed002", shaper_teeth=6, module_mm=7.0)
+    with pytest.raises(InputError) as e:
+        screen_smooth(p, law_of(p))
+    assert str(e.value) == ("shaper_teeth = 6: the fourier law's pitch curves are not generable at m = 7, z 20/80, "
+                            f"L = 348.350 mm with the catalogue cutters (shaper_teeth = 6: {made})")
+    # at m = 7 the part file's own shaper (z0 = 20) is the one tried; at m = 5 the catalogue's d100 only
+    ok = screen_smooth(_part("ncg_fourier_seed002", module_mm=7.0), law_of(p))
+    assert [(c[0], c[1], c[2].z0, c[4]) for c in ok.candidates] == [(None, None, 20, "")]
+    five = screen_smooth(_part("ncg_fourier_seed002", module_mm=5.0), law_of(p))
+    assert [(c[0].d0_mm, c[1].z0, c[4]) for c in five.candidates] == [(100.0, 20, "")]
+
+
+def test_screen_with_law_search_lists_each_catalogue_shaper_that_cannot_cut_the_concave_wheel(monkeypatch):
+    """The shaper tools are asked for the concave driven wheel only (x = -0.5), under the catalogue's key; a shaper
+    that cannot be made is listed by its d0 with the limit, the others stay."""
+    from propulsor.errors import InputError
+    from propulsor.gears.noncircular_teeth import ToothSpec
+    from propulsor.parts.noncircular_pair.feasibility import law_of
+    from propulsor.parts.noncircular_pair.smooth_law import screen_smooth
+
+    asked = []
+
+    def tools(self):
+        asked.append((self.x, self.z0, self.shaper.z0))
+        if self.z0 in (40, 20):
+            raise InputError("z0", self.z0, f"no z0 {self.z0}: really", "a hint")
+        return ()
+
+    monkeypatch.setattr(ToothSpec, "shaper_tools", tools)
+    p = _part("ncg_fourier_seed002")
+    scr = screen_smooth(p, law_of(p))
+    assert asked == [(-0.5, z, z) for z in (40, 30, 20, 15, 10)]
+    assert [c[4] for c in scr.candidates] == ["shaper d0 100: no z0 40: really (a hint)", "",
+                                              "shaper d0 50: no z0 20: really (a hint)", "", ""]
+    assert [c[0].d0_mm for c in scr.generable] == [75.0, 38.0, 25.0]
+    # without the search, the part file's catalogue shaper that cannot be made is the refusal, under its own key
+    asked.clear()
+    p = _part("ncg_fourier_seed002", law_search=False, shaper_d0_mm=50.0)
+    with pytest.raises(InputError) as e:
+        screen_smooth(p, law_of(p))
+    assert str(e.value) == "shaper_d0_mm = 20: no z0 20: really (a hint)" and asked == [(-0.5, 20, 20)]
+
+
+# =========================================================================== design.py
+def test_mounting_is_the_design_centre_distance_unless_a_distance_at_least_as_large_is_given():
+    import dataclasses
+
+    from propulsor.errors import InputError
+    from propulsor.parts.noncircular_pair.design import mounting
+
+    p = _part("ncg_elliptical")
+    d = SimpleNamespace(L=76.5)
+    at = lambda v: mounting(dataclasses.replace(p, mounting_distance_mm=v), d)  # noqa: E731
+    assert at(0.0) == 76.5 and at(80.0) == 80.0 and at(76.5) == 76.5 and at(76.5 - 0.5e-9) == 76.5 - 0.5e-9
+    assert at(76.5 - 1e-9) == 76.5 - 1e-9  # the limit itself is taken
+    for v in (76.5 - 2e-9, 1.0, 0.5):
+        with pytest.raises(InputError) as e:
+            at(v)
+        assert str(e.value) == (f"mounting_distance_mm = {v!r}: must be >= the design centre distance "
+                                "L = 76.500000 mm (or 0)")
+
+
+def _keyed_bore_area(d, b, t2):
+    """A bore of diameter d with a hub keyway b wide, t2 deep above the bore's top: the circle less the cap above the
+    chord y_s = sqrt(R^2 - b^2/4), plus the keyway's rectangle from y_s to R + t2."""
+    R = d / 2
+    ys = math.sqrt(R * R - b * b / 4)
+    cap = R * R * math.acos(ys / R) - ys * b / 2
+    return math.pi * R * R - cap + b * (R + t2 - ys)
+
+
+def test_a_bore_is_cut_into_the_profile_with_its_keyway_and_none_of_zero_diameter():
+    """Bores of 16 mm (DIN 6885-1 keyway b = 5, t2 = 2.3 mm) with and without the keyway and of 1 mm, in a 60 mm
+    disc; a bore of 0 leaves the profile as it is."""
+    from propulsor.geometry.profile import Profile, circle_loop
+    from propulsor.parts.noncircular_pair.bores import Bore
+    from propulsor.parts.noncircular_pair.design import _with_bore
+
+    disc = Profile(circle_loop(30.0), [], "wheel")
+    full = math.pi * 900
+    assert _with_bore(disc, Bore(0.0, True, False)) is disc
+    keyed = _with_bore(disc, Bore(16.0, True, True, "why"))
+    assert keyed.name == "wheel" and keyed.outer is disc.outer and len(keyed.holes) == 1
+    assert keyed.area(1e-6) == pytest.approx(full - _keyed_bore_area(16.0, 5.0, 2.3), rel=1e-6)
+    plain = _with_bore(disc, Bore(16.0, False, False))
+    assert plain.area(1e-6) == pytest.approx(full - math.pi * 64, rel=1e-6)
+    small = _with_bore(disc, Bore(1.0, False, False))
+    assert len(small.holes) == 1 and small.area(1e-7) == pytest.approx(full - math.pi * 0.25, rel=1e-8)
+
+
+def test_gear_profiles_cut_the_chosen_bores_into_each_wheel():
+    from propulsor.geometry.profile import Profile, circle_loop
+    from propulsor.parts.noncircular_pair.bores import Bore
+    from propulsor.parts.noncircular_pair.design import gear_profiles
+
+    d = SimpleNamespace(driver=SimpleNamespace(profile=Profile(circle_loop(20.0), [], "driver")),
+                        driven=SimpleNamespace(profile=Profile(circle_loop(40.0), [], "driven")))
+    drv, dvn = gear_profiles(_part("ncg_elliptical"), d, (Bore(0.0, True, False), Bore(30.0, True, True)))
+    assert drv is d.driver.profile and dvn.name == "driven"
+    assert dvn.area(1e-6) == pytest.approx(math.pi * 1600 - _keyed_bore_area(30.0, 8.0, 3.3), rel=1e-6)
+
+
+def test_pair_design_of_the_elliptical_file_with_its_bores_profiles_and_mounting():
+    """The part file's 16 mm bores with DIN 6885-1 keyways (b = 5, t2 = 2.3 mm) cut into both wheels, the design's own
+    centre distance as the mounting, the design's steps told."""
+    from propulsor.parts.noncircular_pair.bores import bores
+    from propulsor.parts.noncircular_pair.design import design, pair_design
+
+    p = _part("ncg_elliptical")
+    said = []
+    dd = pair_design(p, progress=said.append)
+    d = dd.d
+    assert said == ["generated: generability of the elliptical law at m = 2.5, z 30/30",
+                    "generated: the teeth of both wheels (30 and 30), rack/shaper envelopes"]
+    assert d.method == "generated" and (d.z, d.z_H, d.m) == (30, 30, 2.5) and dd.mount == d.L
+    assert dd.bores == bores(p, d) and [b.d_mm for b in dd.bores] == [16.0, 16.0]
+    assert (dd.p.driver_bore_mm, dd.p.driven_bore_mm) == (16.0, 16.0)
+    hole = _keyed_bore_area(16.0, 5.0, 2.3)
+    for prof, gear in zip(dd.profiles, (d.driver, d.driven)):
+        assert prof.outer is gear.profile.outer and len(prof.holes) == 1
+        assert prof.area(1e-4) == pytest.approx(gear.profile.area(1e-4) - hole, rel=1e-5)
+    assert design(p).L == d.L
+    # without chosen bores: the part file's, sized or given (bores.bores), the same cut
+    from propulsor.parts.noncircular_pair.design import gear_profiles
+
+    assert [q.area(1e-4) for q in gear_profiles(p, d)] == [q.area(1e-4) for q in dd.profiles]
