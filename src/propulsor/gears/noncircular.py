@@ -84,8 +84,11 @@ def _extreme(f, x, y, which: str):
     sgn = 1.0 if which == "min" else -1.0
     best = (float(x[k]), float(y[k]))
     if hi > lo:
-        res = minimize_scalar(lambda p: sgn * float(f(p)), bounds=(lo, hi), method="bounded",
-                              options={"xatol": MINIMIZE_XATOL})
+        # f may be inf off its side of a change of curvature (_on_side): Brent's parabola through inf values is
+        # nan, and it takes a golden-section step instead, silently (no RuntimeWarning on the user's terminal)
+        with np.errstate(invalid="ignore"):
+            res = minimize_scalar(lambda p: sgn * float(f(p)), bounds=(lo, hi), method="bounded",
+                                  options={"xatol": MINIMIZE_XATOL})
         if res.fun < sgn * best[1]:  # res.fun is sgn f (a maximum was never refined: the sample stayed)
             best = (float(res.x), float(sgn * res.fun))
     return best
