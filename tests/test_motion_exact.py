@@ -45,6 +45,18 @@ E_CCW = _edge_meets_corner((7.0, 2.0))            # the upper block's corner (7,
 E_CW = _edge_meets_corner((7.0, 3.0))             # the lower block's corner (7, -3) on the bar's lower edge: 0.3392
 
 
+def _tip_on_turned_edge(a, b, th, axis=(14.0, 0.0)):
+    """Where the bar's tip circle (radius^2 = 10^2 + 0.5^2 = 100.25 about the driven axis) meets the edge a -> b of a
+    block on the driver turned by th about `axis`: (R, the point P, the driven angle e that puts the tip there)."""
+    R = np.array([[math.cos(th), -math.sin(th)], [math.sin(th), math.cos(th)]])
+    A, B = np.array(axis) + R @ a, np.array(axis) + R @ b
+    d = B - A
+    qa, qb, qc = d @ d, 2 * A @ d, A @ A - 100.25
+    t = (-qb + math.sqrt(qb * qb - 4 * qa * qc)) / (2 * qa)
+    P = A + t * d
+    return R, P, math.atan2(P[1], P[0]) - math.atan2(0.5, 10.0)
+
+
 def _sweep(phis, senses=(1, 1), law=lambda p: 0.0, **kw):
     kw.setdefault("max_angle", 0.5)
     return transmission_sweep(BLOCKS, C1, [BAR], C2, law, phis, senses=senses, **kw)
@@ -1197,13 +1209,7 @@ def test_a_driven_corner_on_a_turned_driver_edge():
     (100.25)^(1/2) meets the turned lower edge at t = 0.458 of it; the contact point, taken back into the driver's
     frame, lies at 2.6474 rad there (teeth at 2.6006 and 2.7006: the first is nearer by 0.0064 rad)."""
     th = 0.05
-    R = np.array([[math.cos(th), -math.sin(th)], [math.sin(th), math.cos(th)]])
-    A, B = np.array([14.0, 0.0]) + R @ (-5.0, 2.2), np.array([14.0, 0.0]) + R @ (-3.0, 2.2)
-    d = B - A
-    qa, qb, qc = d @ d, 2 * A @ d, A @ A - 100.25
-    t = (-qb + math.sqrt(qb * qb - 4 * qa * qc)) / (2 * qa)
-    P = A + t * d
-    e = math.atan2(P[1], P[0]) - math.atan2(0.5, 10.0)
+    R, P, e = _tip_on_turned_edge((-5.0, 2.2), (-3.0, 2.2), th)
     local = R.T @ (P - (14.0, 0.0))
     assert math.atan2(local[1], local[0]) == pytest.approx(2.6474, abs=1e-4)
     po = PairOutlines(Outline([_square(10.0 - 14.0, 3.2)], 100.0), Outline([BAR], 100.0), 14.0, [2.6006, 2.7006],
@@ -2084,13 +2090,7 @@ def test_phase_contacts_of_a_driven_corner_on_a_turned_driver_edge():
     edge, the force on the driven along minus the edge's left normal, turned by theta; the lever arms its moments
     about both axes."""
     th = 0.05
-    R = np.array([[math.cos(th), -math.sin(th)], [math.sin(th), math.cos(th)]])
-    A, B = np.array([14.0, 0.0]) + R @ (-5.0, 2.2), np.array([14.0, 0.0]) + R @ (-3.0, 2.0)
-    d = B - A
-    qa, qb, qc = d @ d, 2 * A @ d, A @ A - 100.25
-    t = (-qb + math.sqrt(qb * qb - 4 * qa * qc)) / (2 * qa)
-    P = A + t * d
-    e = math.atan2(P[1], P[0]) - math.atan2(0.5, 10.0)
+    R, P, e = _tip_on_turned_edge((-5.0, 2.2), (-3.0, 2.0), th)
     block = np.array([[-3.0, 4.2], [-5.0, 4.2], [-5.0, 2.2], [-3.0, 2.0]])
     po = PairOutlines(Outline([block], 100.0), Outline([BAR], 100.0), 14.0, [2.6006, 2.7506],
                       [0.0, 0.3])
