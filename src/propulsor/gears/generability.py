@@ -285,11 +285,14 @@ def remedies(g: Generability, cutter: CutterSpec, z_H: int, n: int, L: float, li
                 bits.append(f"{head}; no profile shift, tooth count or module within their limits makes it "
                             "generable (a smoother law)")
         if chk.concave and not chk.r0 < chk.rho_concave_min:
-            z0_max = math.ceil(2 * chk.rho_concave_min / cutter.m) - 1
+            # the shaper rolls on the equidistant at e = (x + x0) m: it cuts where r0 = m z0 / 2 < |rho| - e
+            e = cutter.shaper_offset(x)
+            fits = "r0 < |rho|" + (f" - e, e = {e:+.3f} mm" if e else "")
+            z0_max = math.ceil(2 * (chk.rho_concave_min - e) / cutter.m) - 1
             if within("z0", z0_max) and z0_max >= 1:
                 bits.append(f"{chk.curve}: concave |rho|_min {chk.rho_concave_min:.3f} mm needs a shaper with "
-                            f"{key('z0')} <= {z0_max} (r0 < |rho|)")
+                            f"{key('z0')} <= {z0_max} ({fits})")
             else:
                 bits.append(f"{chk.curve}: concave |rho|_min {chk.rho_concave_min:.3f} mm: no shaper within the "
-                            "limits fits inside it (r0 < |rho|; a smoother law)")
+                            f"limits fits inside it ({fits}; a smoother law)")
     return bits

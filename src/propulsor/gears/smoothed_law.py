@@ -85,10 +85,17 @@ class SmoothedWalkingLaw:
         object.__setattr__(self, "_Pd", float(self._P(d)))
         object.__setattr__(self, "_Fd", float(self._F(d)))
         object.__setattr__(self, "_I_leg", self.law.n * math.pi / 2)
-        t = np.linspace(0.0, d, 2001)
-        p_min = float(np.min(self._p(t)))
+        p_min = self._blend_min()
         if not p_min > 0:
             raise InputError("delta", self.delta, f"blend makes U <= 0 (min {p_min:.4g}); use a smaller delta")
+
+    def _blend_min(self) -> float:
+        """The least value of the blend over its window: p = a0 + a1 w + a2 w^2 + a3 w^3 in w = (t/delta)^2 on
+        [0, 1], at w = 0, w = 1 or a root of dp/dw = a1 + 2 a2 w + 3 a3 w^2 inside (exact, not sampled)."""
+        a0, a1, a2, a3 = self.coef
+        ws = [0.0, 1.0] + [float(r.real) for r in np.roots([3.0 * a3, 2.0 * a2, a1])
+                           if r.imag == 0.0 and 0.0 < r.real < 1.0]
+        return min(a0 + w * (a1 + w * (a2 + w * a3)) for w in ws)
 
     def _scaled_blend(self, M, rhs) -> None:
         """The blend with a free hand-over value U_s(phi_h) = u_h (the depth of the hub-speed dip),

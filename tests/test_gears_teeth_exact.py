@@ -1,0 +1,336 @@
+"""Exact tests of the non-circular pair's teeth math (gears/envelope.py, generability.py, generation.py,
+noncircular_teeth.py, smoothed_law.py) and the polysector: each expected value computed in the test."""
+
+import math
+
+import numpy as np
+import pytest
+
+from propulsor.errors import InputError
+from propulsor.gears.smoothed_law import SmoothedWalkingLaw
+from propulsor.laws.walking import SEED_000, SEED_002, WalkingLaw
+
+LAW0 = WalkingLaw(**SEED_000)
+LAW2 = WalkingLaw(**SEED_002)
+
+
+def _refusal(fn) -> str:
+    with pytest.raises(InputError) as e:
+        fn()
+    return str(e.value)
+
+
+# ---- the smoothed law (gears/smoothed_law.py) ---------------------------------------------------------------------
+
+def _free_blend(law: WalkingLaw, d: float, u_h: float):
+    """The blend with a free hand-over value written in t (not in t/delta) with eps as a fifth unknown: p(0) = u_h,
+    p, p', p'' = (1 - eps) U, U', U'' at t = delta, and one leg's driver angle n pi/2 kept:
+    integral_{-d}^{d} p + (1 - eps) (n pi/2 - E) = n pi/2 with E the exact law's window integral (seed 000 eq. 9/11).
+    Unknowns (c0, c2, c4, c6, eps) of p = c0 + c2 t^2 + c4 t^4 + c6 t^6."""
+    K = 3 * law.b * law.u / law.A
+    U, dU, d2U = law.u + K * math.sin(2 * d), 2 * K * math.cos(2 * d), -4 * K * math.sin(2 * d)
+    E = 2 * (law.u * d + K * (1 - math.cos(2 * d)) / 2)
+    I = law.n * math.pi / 2
+    A = np.array([
+        [1, 0, 0, 0, 0],
+        [1, d ** 2, d ** 4, d ** 6, U],
+        [0, 2 * d, 4 * d ** 3, 6 * d ** 5, dU],
+        [0, 2, 12 * d ** 2, 30 * d ** 4, d2U],
+        [2 * d, 2 * d ** 3 / 3, 2 * d ** 5 / 5, 2 * d ** 7 / 7, -(I - E)],
+    ], float)
+    rhs = np.array([u_h, U, dU, d2U, I - (I - E)])
+    c0, c2, c4, c6, eps = np.linalg.solve(A, rhs)
+    return (lambda t: c0 + c2 * t ** 2 + c4 * t ** 4 + c6 * t ** 6), eps
+
+
+def test_a_blend_that_dips_below_zero_is_refused_with_its_least_value():
+    # seed 000's law with a hand-over value of 10 over a 0.6 rad window: the window's excess integral is more than
+    # the rest of the leg holds, eps > 1, and the law scaled by (1 - eps) is negative from the window's end on
+    p, eps = _free_blend(LAW0, 0.6, 10.0)
+    t = np.linspace(0.0, 0.6, 600_001)
+    least = float(p(t).min())
+    assert eps > 1 and least == pytest.approx(float(p(0.6)), rel=1e-12) and least < -2
+    assert _refusal(lambda: SmoothedWalkingLaw(LAW0, 0.6, 10.0)) == (
+        f"delta = 0.6: blend makes U <= 0 (min {least:.4g}); use a smaller delta")
+    # a hand-over value of 5 keeps it above zero: accepted, its window's values those of the blend written in t
+    ok = SmoothedWalkingLaw(LAW0, 0.6, 5.0)
+    p5, eps5 = _free_blend(LAW0, 0.6, 5.0)
+    assert float(p5(t).min()) > 0.3
+    assert ok.eps == pytest.approx(eps5, rel=1e-9)
+    assert ok._blend_min() == pytest.approx(float(p5(t).min()), rel=1e-9)
+    phi = math.pi / 4 + 2 * math.pi / 2 + np.linspace(-0.59, 0.59, 41)
+    np.testing.assert_allclose(ok.U(phi), p5(phi - math.pi / 4 - math.pi), rtol=1e-10)
+
+
+@pytest.mark.parametrize("delta", [math.pi / 4, 0.7])
+def test_blend_half_widths_up_to_a_quarter_turn_of_the_leg_are_accepted(delta):
+    # pi/4 is allowed (the windows of neighbouring hand-overs meet), and so is anything above pi/5
+    sl = SmoothedWalkingLaw(LAW2, delta)
+    assert sl.delta == delta
+    assert sl.leg_breakpoints == tuple(sorted({-math.pi / 4, -math.pi / 4 + delta, math.pi / 4 - delta, math.pi / 4}))
+    # the closure holds whatever the width: n driver turns a driven turn
+    assert float(sl.theta(2 * math.pi)) == pytest.approx(2 * math.pi * LAW2.n, abs=1e-12)
+
+
+def test_the_smoothed_laws_refusals_in_full():
+    assert _refusal(lambda: SmoothedWalkingLaw(LAW0, math.pi / 4 + 1e-9)) == (
+        f"delta = {math.pi / 4 + 1e-9!r}: blend half-width must be <= pi/4 = 0.785398 rad")
+    assert _refusal(lambda: SmoothedWalkingLaw(LAW0, 0.0)) == "delta = 0.0: must be > 0 rad"
+    assert _refusal(lambda: SmoothedWalkingLaw(LAW0, -0.1)) == "delta = -0.1: must be > 0 rad"
+    assert _refusal(lambda: SmoothedWalkingLaw("seed 000", 0.1)) == "law = 'seed 000': must be a WalkingLaw"
+    assert _refusal(lambda: SmoothedWalkingLaw(LAW0, 0.1, 0.0)) == "u_h = 0.0: must be > 0"
+    assert _refusal(lambda: SmoothedWalkingLaw(LAW0, 0.1, -1.0)) == "u_h = -1.0: must be > 0"
+    sl = SmoothedWalkingLaw(LAW0, 0.1)
+    assert _refusal(lambda: sl.blend(0.0, 3)) == "order = 3: must be -1, 0, 1 or 2"
+    assert _refusal(lambda: sl.blend(0.0, -2)) == "order = -2: must be -1, 0, 1 or 2"
+
+
+def test_a_half_width_given_as_a_numpy_float32_is_kept_as_a_python_float():
+    # a study's sampler hands numpy scalars on; the law is the same as with the Python float of that value
+    d32 = np.float32(0.2)
+    a, b = SmoothedWalkingLaw(LAW2, d32), SmoothedWalkingLaw(LAW2, float(d32))
+    assert type(a.delta) is float and a.delta == b.delta
+    phi = np.linspace(0.0, 2 * math.pi, 1001)
+    assert np.array_equal(a.U(phi), b.U(phi)) and np.array_equal(a.theta(phi), b.theta(phi))
+    assert np.array_equal(a.blend(np.linspace(-0.2, 0.2, 9), 1), b.blend(np.linspace(-0.2, 0.2, 9), 1))
+
+
+# ---- generability and the choice of the smoothing (gears/generability.py) ------------------------------------------
+
+from propulsor.gears.generability import (CurveCheck, CutterSpec, Generability, _check_curve,  # noqa: E402
+                                          check_generable, choose_smoothing, remedies)
+from propulsor.gears.involute import BasicRack  # noqa: E402
+from propulsor.gears.noncircular import CurvatureSummary, PitchCurves, hub_speed_ripple, perimeter_per_mm  # noqa: E402
+
+S2_20 = math.sin(math.radians(20.0)) ** 2
+
+
+def test_cutter_spec_refusals_in_full():
+    assert _refusal(lambda: CutterSpec(m=0.0)) == "m = 0.0: must be > 0 mm"
+    assert _refusal(lambda: CutterSpec(m=2.0, alpha=0.0)) == "alpha = 0.0: pressure angle must be in (0, pi/2) rad"
+    assert _refusal(lambda: CutterSpec(m=2.0, alpha=math.pi / 2)) == (
+        f"alpha = {math.pi / 2!r}: pressure angle must be in (0, pi/2) rad")
+    assert _refusal(lambda: CutterSpec(m=2.0, alpha=math.nan)) == "alpha = nan: must be a finite number"
+    assert _refusal(lambda: CutterSpec(m=2.0, h_a=0.0)) == "h_a = 0.0: must be > 0"
+    assert _refusal(lambda: CutterSpec(m=2.0, x=math.inf)) == "x = inf: must be a finite number"
+    assert _refusal(lambda: CutterSpec(m=2.0, x_H=math.nan)) == "x_H = nan: must be a finite number"
+    assert _refusal(lambda: CutterSpec(m=2.0, z0=5)) == "z0 = 5: shaper cutter tooth count must be a whole number >= 6"
+    assert _refusal(lambda: CutterSpec(m=2.0, z0=12.5)) == (
+        "z0 = 12.5: shaper cutter tooth count must be a whole number >= 6")
+    assert _refusal(lambda: CutterSpec(m=2.0, z0=math.inf)) == "z0 = inf: must be a finite number"
+    six = CutterSpec(m=2.0, z0=6.0)
+    assert six.z0 == 6 and type(six.z0) is int
+    assert _refusal(lambda: CutterSpec(m=2.0).shift("ring")) == "role = 'ring': must be 'driver' or 'driven'"
+
+
+def test_cutter_spec_quantities_by_hand():
+    c = CutterSpec(m=3.0, alpha=math.radians(25.0), h_a=0.8, x=0.3, x_H=-0.2, z0=17, shaper_x0=0.1)
+    s2 = math.sin(math.radians(25.0)) ** 2
+    # rack undercut limit rho >= (h_a* - x) m / sin^2 alpha, for either shift
+    assert c.rho_limit(0.3) == pytest.approx((0.8 - 0.3) * 3.0 / s2, rel=1e-15)
+    assert c.rho_limit(-0.2) == pytest.approx((0.8 + 0.2) * 3.0 / s2, rel=1e-15)
+    assert c.r0 == 3.0 * 17 / 2 and CutterSpec(m=3.0).r0 == math.inf
+    # the shaper of its own x0 rolls (x + x0) m above the pitch curve; tied to -x: on it
+    assert c.shaper_offset(0.3) == pytest.approx(0.4 * 3.0, rel=1e-15)
+    assert c.shaper_offset(-0.2) == pytest.approx(-0.1 * 3.0, rel=1e-15)
+    assert CutterSpec(m=3.0, z0=17).shaper_offset(0.3) == 0.0
+    assert (c.shift("driver"), c.shift("driven")) == (0.3, -0.2)
+    rack = BasicRack()
+    t = c.tooth_spec("driven", rack, thinning_mm=0.05, tip_min_mm=0.4)
+    assert (t.m, t.x, t.thinning_mm, t.rack, t.z0, t.tip_min_mm) == (3.0, -0.2, 0.05, rack, 17, 0.4)
+    d = CutterSpec(m=3.0, x=0.3).tooth_spec("driver", rack)
+    assert (d.x, d.thinning_mm, d.z0, d.tip_min_mm) == (0.3, 0.0, None, 0.0)
+
+
+def _summary(curve="driver", convex=20.0, concave=False, rho_cc=math.inf):
+    return CurvatureSummary(curve=curve, rho_convex_min=convex, phi_convex_min=0.1, concave=concave,
+                            rho_concave_min=rho_cc, phi_concave_min=0.2 if concave else math.nan,
+                            concave_intervals=((0.1, 0.3),) if concave else (), corner=None)
+
+
+def test_one_curve_against_the_rack_limit_and_the_shaper_on_both_sides():
+    c = CutterSpec(m=2.0, x=0.25, z0=20)                       # r0 = 20 mm; limit (1 - 0.25) 2 / sin^2 20 deg
+    lim = 0.75 * 2.0 / S2_20
+    ok = _check_curve(_summary(convex=lim * (1 + 1e-9), concave=True, rho_cc=20.0 + 1e-9), c, 0.25)
+    assert ok == CurveCheck("driver", lim * (1 + 1e-9), pytest.approx(lim, rel=1e-15), True, 20.0 + 1e-9, 20.0,
+                            True, "")
+    bad = _check_curve(_summary(convex=lim * (1 - 1e-9), concave=True, rho_cc=20.0), c, 0.25)
+    assert not bad.ok and bad.reason == (
+        f"driver: convex rho_min {lim * (1 - 1e-9):.3f} mm < rack undercut limit {lim:.3f} mm; "
+        "driver: concave |rho|_min 20.000 mm <= shaper pitch radius 20.000 mm")
+    # no shaper: any concave stretch fails; a convex curve needs none
+    none = _check_curve(_summary(curve="driven", convex=50.0, concave=True, rho_cc=300.0), CutterSpec(m=2.0), 0.0)
+    assert none.reason == "driven: concave (|rho| >= 300.000 mm) and no shaper cutter z0 given"
+    assert none.r0 == math.inf and not none.ok
+    assert _check_curve(_summary(convex=50.0), CutterSpec(m=2.0), 0.0).ok
+    # a shaper of its own x0 = 0.5 on a gear of x = 0.25: it rolls e = 1.5 mm out, so it needs |rho| > 21.5 mm
+    own = CutterSpec(m=2.0, x=0.25, z0=20, shaper_x0=0.5)
+    assert _check_curve(_summary(convex=50.0, concave=True, rho_cc=21.5 + 1e-9), own, 0.25).ok
+    near = _check_curve(_summary(convex=50.0, concave=True, rho_cc=21.4), own, 0.25)
+    assert near.r0 == pytest.approx(21.5, rel=1e-15)
+    assert near.reason == ("driver: concave |rho|_min 21.400 mm <= shaper pitch radius 20.000 mm "
+                           "+ cutting offset +1.500 mm")
+
+
+def test_both_curves_are_checked_with_their_own_shift():
+    sl = SmoothedWalkingLaw(LAW2, 0.15)
+    L = math.pi * 2.5 * 80 / perimeter_per_mm(sl)
+    pair = PitchCurves(sl, L)
+    c = CutterSpec(m=2.5, x=0.5, x_H=-0.3, z0=20)
+    g = check_generable(pair, c)
+    for chk, curve, x in ((g.driver, "driver", 0.5), (g.driven, "driven", -0.3)):
+        cs = pair.curvature(curve)
+        assert chk.curve == curve
+        assert chk.rho_limit == pytest.approx((1.0 - x) * 2.5 / S2_20, rel=1e-14)
+        assert (chk.rho_convex_min, chk.concave, chk.rho_concave_min) == (cs.rho_convex_min, cs.concave,
+                                                                         cs.rho_concave_min)
+        assert chk.ok == (cs.rho_convex_min >= chk.rho_limit and (not cs.concave or 25.0 < cs.rho_concave_min))
+    assert g.ok == (g.driver.ok and g.driven.ok)
+    T = CurveCheck("d", 1.0, 0.5, False, math.inf, math.inf, True, "")
+    F = CurveCheck("d", 0.1, 0.5, False, math.inf, math.inf, False, "x")
+    assert [Generability(a, b).ok for a, b in ((T, T), (T, F), (F, T), (F, F))] == [True, False, False, False]
+
+
+def test_the_smoothing_chosen_is_the_narrowest_generable_one_and_its_pair_closes():
+    cutter = CutterSpec(m=2.5, x=0.5, z0=20)
+    d = choose_smoothing(LAW2, cutter, 80, rtol=1e-7)
+    L = math.pi * 2.5 * 80 / perimeter_per_mm(SmoothedWalkingLaw(LAW2, d.delta))
+    assert d.L == pytest.approx(L, rel=1e-14) and d.z_H == 80 and d.z == 20 and d.cutter is cutter
+    assert d.law.delta == d.delta and d.law.law is LAW2
+    assert d.generability.ok and d.generability == check_generable(PitchCurves(d.law, L), cutter)
+    assert d.ripple == hub_speed_ripple(d.law)
+    assert d.pair.L == d.L and d.pair.law is d.law
+    assert d.closure_error == pytest.approx(abs(float(d.law.theta(2 * math.pi)) - 8 * math.pi), abs=1e-15)
+    assert d.closure_error < 1e-12
+    # the bisection's last step is within rtol: a blend narrower by 2 rtol is not generable
+    for delta, ok in ((d.delta * (1 - 2e-7), False), (d.delta, True)):
+        sl = SmoothedWalkingLaw(LAW2, delta)
+        assert check_generable(PitchCurves(sl, math.pi * 2.5 * 80 / perimeter_per_mm(sl)), cutter).ok is ok
+    # a coarser tolerance stops further from the boundary, on the generable side
+    coarse = choose_smoothing(LAW2, cutter, 80, rtol=1e-2)
+    assert d.delta <= coarse.delta <= d.delta * 1.0101
+
+
+def test_choose_smoothing_refusals_in_full():
+    c = CutterSpec(m=2.5, x=0.5, z0=20)
+    assert _refusal(lambda: choose_smoothing(SmoothedWalkingLaw(LAW2, 0.1), c, 80)).endswith(
+        ": must be a WalkingLaw")
+    assert _refusal(lambda: choose_smoothing(LAW2, c, 80, delta_max=math.pi / 4 + 1e-9)) == (
+        f"delta_max = {math.pi / 4 + 1e-9!r}: must be <= pi/4 = 0.785398 rad")
+    assert _refusal(lambda: choose_smoothing(LAW2, c, 80, delta_max=0.0)) == "delta_max = 0.0: must be > 0 rad"
+    assert _refusal(lambda: choose_smoothing(LAW2, c, 82)) == (
+        "z_H = 82: must be a multiple of n = 4 so the driver has z_H/n whole teeth (nearest valid: 80, 84)")
+    assert _refusal(lambda: choose_smoothing(WalkingLaw(a=100, b=50, c=236.5, n=3), c, 81)) == (
+        "n = 3: the driver pitch curve repeats every n*pi/2 and closes only if n divides the 4 legs: n in {1, 2, 4}")
+    # pi/4 itself is a valid upper end
+    assert choose_smoothing(LAW2, c, 80, delta_max=math.pi / 4).generability.ok
+
+
+def _generable(law, cutter, z_H, delta):
+    sl = SmoothedWalkingLaw(law, delta)
+    return check_generable(PitchCurves(sl, math.pi * cutter.m * z_H / perimeter_per_mm(sl)), cutter)
+
+
+def test_no_smoothing_up_to_delta_max_names_the_remedies_and_the_blend_that_would_work():
+    c = CutterSpec(m=2.5, x=0.5, z0=20)
+    need = choose_smoothing(LAW2, c, 80).delta                        # about 0.148 rad
+    dmax = need / 2
+    text = _refusal(lambda: choose_smoothing(LAW2, c, 80, delta_max=dmax))
+    # the first of 24 steps from delta_max to pi/4 that is generable
+    first = next(d for d in np.linspace(dmax, math.pi / 4, 25)[1:] if _generable(LAW2, c, 80, float(d)).ok)
+    g = _generable(LAW2, c, 80, dmax)
+    L = math.pi * 2.5 * 80 / perimeter_per_mm(SmoothedWalkingLaw(LAW2, dmax))
+    bits = remedies(g, c, 80, 4, L)
+    assert bits
+    assert text == (f"delta_max = {dmax!r}: no blend half-width up to delta_max makes both pitch curves generable ("
+                    + " | ".join(bits) + f"; delta = {first:.4f} rad would work)")
+    keyed = _refusal(lambda: choose_smoothing(LAW2, c, 80, delta_max=dmax, keys={"delta": "blend_deg"}))
+    assert keyed.endswith(f"; blend_deg >= {math.degrees(first):.2f} would work)")
+    # a driver cut with x = -0.5 (rack limit 1.5 m / sin^2 20 deg = 32 mm): no blend up to pi/4 works
+    neg = CutterSpec(m=2.5, x=-0.5)
+    assert not any(_generable(LAW2, neg, 80, float(d)).ok for d in np.linspace(0.3, math.pi / 4, 25))
+    assert _refusal(lambda: choose_smoothing(LAW2, neg, 80, delta_max=0.3)).endswith(
+        "; no delta up to pi/4 works)")
+    # at pi/4 there is nothing beyond to try
+    full = _refusal(lambda: choose_smoothing(LAW2, neg, 80, delta_max=math.pi / 4))
+    assert "would work" not in full and "no delta up to pi/4 works" not in full
+
+
+def _check(curve, rho_cv, lim, concave=False, rho_cc=math.inf, r0=math.inf, ok=False):
+    return CurveCheck(curve, rho_cv, lim, concave, rho_cc, r0, ok, "")
+
+
+def test_remedies_of_a_convex_stretch_below_the_rack_limit_by_hand():
+    c = CutterSpec(m=2.0, x=0.2, x_H=-0.4, z0=20)
+    rho, lim = 6.0, (1.0 - 0.2) * 2.0 / S2_20                 # 9.355 mm
+    good = _check("driven", 50.0, 5.0, ok=True)
+    bits = remedies(Generability(_check("driver", rho, lim), good), c, 60, 2, 120.0)
+    x_need = 1.0 - rho * S2_20 / 2.0                          # (h_a - x) m / s2 = rho
+    z_need = math.ceil(60 * lim / rho / 2) * 2                 # rho and L grow with z_H at a fixed module
+    m_max = rho * S2_20 / (1.0 - 0.2)
+    assert bits == [f"driver: convex rho_min 6.000 mm < undercut limit {lim:.3f} mm; works with "
+                    f"x >= {x_need:.3f}, or z_H >= {z_need} at m = 2, or m <= {m_max:.4g} mm at L = 120.000 mm"]
+    # the driven wheel's shift is -driver_shift in the part file: x_H >= v reads driver_shift <= -v
+    keys = {"x": "driver_shift", "x_H": "-driver_shift", "z_H": "driven_teeth", "m": "module_mm", "z0": "shaper_teeth"}
+    lim_H = (1.0 + 0.4) * 2.0 / S2_20
+    bits = remedies(Generability(good, _check("driven", rho, lim_H)), c, 60, 2, 120.0, keys=keys)
+    xH_need = 1.0 - rho * S2_20 / 2.0
+    z_need = math.ceil(60 * lim_H / rho / 2) * 2
+    m_max = rho * S2_20 / (1.0 + 0.4)
+    assert bits == [f"driven: convex rho_min 6.000 mm < undercut limit {lim_H:.3f} mm; works with "
+                    f"driver_shift <= {-xH_need:.3f}, or driven_teeth >= {z_need} at module_mm = 2, or "
+                    f"module_mm <= {m_max:.4g} mm at L = 120.000 mm"]
+
+
+def test_remedies_stay_within_the_limits_both_sides():
+    c = CutterSpec(m=2.0, x=0.2, z0=20)
+    rho, lim = 6.0, (1.0 - 0.2) * 2.0 / S2_20
+    good = _check("driven", 50.0, 5.0, ok=True)
+    x_need = 1.0 - rho * S2_20 / 2.0
+    z_need = math.ceil(60 * lim / rho / 2) * 2
+    m_max = rho * S2_20 / 0.8
+
+    def text(limits):
+        return remedies(Generability(_check("driver", rho, lim), good), c, 60, 2, 120.0, limits)[0]
+
+    at = {"x": (x_need, x_need), "z_H": (z_need, z_need), "m": (m_max, m_max)}
+    assert text(at).endswith(f"x >= {x_need:.3f}, or z_H >= {z_need} at m = 2, or m <= {m_max:.4g} mm at L = 120.000 mm")
+    for name, lo, hi in (("x", x_need * (1 + 1e-9), 5.0), ("x", -5.0, x_need * (1 - 1e-9)),
+                         ("z_H", z_need + 1, 999), ("z_H", 4, z_need - 1), ("m", m_max * (1 + 1e-9), 9.0),
+                         ("m", 0.0, m_max * (1 - 1e-9))):
+        t = text({**at, name: (lo, hi)})
+        assert {"x": "x >=", "z_H": "z_H >=", "m": "m <="}[name] not in t, (name, lo, hi, t)
+    none = {"x": (9.0, 9.0), "z_H": (1, 2), "m": (9.0, 9.0)}
+    assert text(none) == (f"driver: convex rho_min 6.000 mm < undercut limit {lim:.3f} mm; no profile shift, "
+                          "tooth count or module within their limits makes it generable (a smoother law)")
+    # a corner (rho = 0): nothing at a finite shift, tooth count or module helps
+    corner = remedies(Generability(_check("driver", 0.0, lim), good), c, 60, 2, 120.0)
+    assert corner == [f"driver: convex rho_min 0.000 mm < undercut limit {lim:.3f} mm; no profile shift, tooth "
+                      "count or module within their limits makes it generable (a smoother law)"]
+    # h_a <= x: no module limit from the rack (the limit is <= 0), the other remedies stay
+    high = CutterSpec(m=2.0, x=1.0, z0=20)
+    t = remedies(Generability(_check("driver", rho, 0.5 + rho), good), high, 60, 2, 120.0)[0]
+    assert " or m <=" not in t and "x >= " in t
+
+
+def test_remedies_of_a_concave_stretch_name_the_largest_shaper_that_fits():
+    c = CutterSpec(m=2.0, x=0.0, z0=30)                          # r0 = 30 mm
+    good = _check("driver", 50.0, 5.0, ok=True)
+    for rho_cc, z0_max in ((25.0, 24), (25.1, 25), (24.9, 24)):  # m z0 / 2 < |rho| strictly
+        bits = remedies(Generability(good, _check("driven", 50.0, 5.0, True, rho_cc, 30.0)), c, 60, 2, 120.0,
+                        keys={"z0": "shaper_teeth"})
+        assert bits == [f"driven: concave |rho|_min {rho_cc:.3f} mm needs a shaper with shaper_teeth <= {z0_max} "
+                        "(r0 < |rho|)"]
+    lim = {"z0": (25, 200)}
+    bits = remedies(Generability(good, _check("driven", 50.0, 5.0, True, 25.0, 30.0)), c, 60, 2, 120.0, lim)
+    assert bits == ["driven: concave |rho|_min 25.000 mm: no shaper within the limits fits inside it (r0 < |rho|; "
+                    "a smoother law)"]
+    assert remedies(Generability(good, _check("driven", 50.0, 5.0, True, 0.9, 30.0)), c, 60, 2, 120.0) == [
+        "driven: concave |rho|_min 0.900 mm: no shaper within the limits fits inside it (r0 < |rho|; a smoother law)"]
+    # a shaper of its own x0 rolls e = (x + x0) m out: it must fit inside |rho| - e
+    own = CutterSpec(m=2.0, x=0.0, x_H=0.5, z0=30, shaper_x0=0.25)   # driven: e = 0.75 * 2 = 1.5 mm
+    bits = remedies(Generability(good, _check("driven", 50.0, 5.0, True, 25.0, 31.5)), own, 60, 2, 120.0)
+    assert bits == ["driven: concave |rho|_min 25.000 mm needs a shaper with z0 <= 23 (r0 < |rho| - e, e = +1.500 mm)"]
+    # a curve that passes its check is not named, and a concave stretch the shaper fits has no remedy
+    assert remedies(Generability(good, _check("driven", 50.0, 5.0, True, 40.0, 30.0, ok=False)), c, 60, 2,
+                    120.0) == []
