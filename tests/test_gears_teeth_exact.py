@@ -334,3 +334,146 @@ def test_remedies_of_a_concave_stretch_name_the_largest_shaper_that_fits():
     # a curve that passes its check is not named, and a concave stretch the shaper fits has no remedy
     assert remedies(Generability(good, _check("driven", 50.0, 5.0, True, 40.0, 30.0, ok=False)), c, 60, 2,
                     120.0) == []
+
+
+# ---- the generated teeth of the pair (gears/noncircular_teeth.py) on a circular pair: the involute spur gear ------
+
+from scipy.optimize import brentq  # noqa: E402
+
+from propulsor.gears.involute import inv  # noqa: E402
+from propulsor.gears.noncircular_teeth import SHAPER_MARGIN_PITCHES, ToothSpec, generate_teeth  # noqa: E402
+from propulsor.gears.pitch_frame import ArcFrame  # noqa: E402
+from propulsor.laws.ratio_laws import EllipticalLaw  # noqa: E402
+
+ALPHA = math.radians(20.0)
+
+
+def _circular_pair(m: float, z_H: int):
+    """An elliptical law of eccentricity 0 and 2 lobes: circles of radii L/3 and 2L/3, ratio 2; L so that the driven
+    circle carries z_H teeth (2 pi (2L/3) = pi m z_H)."""
+    return PitchCurves(EllipticalLaw(e=0.0, k=2), 3 * m * z_H / 4)
+
+
+def _land(z: int, m: float, x: float, r_y: float, thinning: float = 0.0) -> float:
+    """Arc tooth thickness of an involute spur gear at radius r_y: s_y = d_y (s / d + inv alpha - inv alpha_y),
+    s = m (pi/2 + 2 x tan alpha) - thinning on the pitch circle (ISO 21771)."""
+    r = m * z / 2
+    s = m * (math.pi / 2 + 2 * x * math.tan(ALPHA)) - thinning
+    a_y = math.acos(r * math.cos(ALPHA) / r_y)
+    return 2 * r_y * (s / (2 * r) + float(inv(ALPHA)) - float(inv(a_y)))
+
+
+@pytest.mark.parametrize("role, x, thinning", [("driven", 0.0, 0.0), ("driver", 0.3, 0.0), ("driven", -0.2, 0.1),
+                                               ("driver", 0.5, 0.06)])
+def test_rack_cut_teeth_of_a_circular_pair_have_the_involute_gears_tip_land(role, x, thinning):
+    m, z_H = 2.0, 40
+    pc = _circular_pair(m, z_H)
+    ticks = []
+    g = generate_teeth(pc, role, ToothSpec(m=m, x=x, thinning_mm=thinning), tick=lambda k, z: ticks.append((k, z)))
+    z, U = (40, 1.0) if role == "driven" else (20, 2.0)
+    r_H = m * z_H / 2                                    # the arc frame runs on the driven circle: phi = s / r_H
+    assert (g.role, g.z, g.n, len(g.teeth), len(g.sides), len(g.tips)) == (role, z, 2, z, z, z)
+    assert ticks == [(k + 1, z) for k in range(z)]
+    r = m * z / 2
+    r_a = r + (1 + x) * m
+    s_a = _land(z, m, x, r_a, thinning)
+    half = s_a / (2 * r_a) / U                           # half the tip's angle, in the driven angle
+    for k, (tooth, tip) in enumerate(zip(g.teeth, g.tips)):
+        s_c = (k + 0.5) * math.pi * m if role == "driven" else k * math.pi * m
+        assert tooth.s_centre == pytest.approx(s_c, rel=1e-12, abs=1e-12)
+        assert tooth.phi_centre == pytest.approx(s_c / r_H, rel=1e-9, abs=1e-12)
+        assert (tooth.right, tooth.left, tooth.undercut, tooth.shortened) == ("rack", "rack", False, False)
+        assert tooth.tip_height_mm == pytest.approx((1 + x) * m, rel=1e-15)
+        assert tooth.tip_thickness_mm == pytest.approx(s_a, rel=1e-9)
+        h, hr, hl = tip
+        assert h == tooth.tip_height_mm
+        sgn = -1.0 if role == "driven" else 1.0          # the right flank is the clockwise one of the body
+        assert hr[1] == pytest.approx(tooth.phi_centre + sgn * half, abs=1e-10)
+        assert hl[1] == pytest.approx(tooth.phi_centre - sgn * half, abs=1e-10)
+
+
+def test_a_tip_land_below_the_minimum_is_shortened_to_the_tallest_height_that_keeps_it():
+    m, z_H, x = 2.0, 40, 0.5
+    pc = _circular_pair(m, z_H)
+    r = m * 20 / 2
+    full = _land(20, m, x, r + (1 + x) * m)                 # about 0.87 mm at the nominal tip
+    t_min = 1.2
+    assert full < t_min
+    r_y = brentq(lambda ry: _land(20, m, x, ry) - t_min, r, r + (1 + x) * m, xtol=1e-13)
+    g = generate_teeth(pc, "driver", ToothSpec(m=m, x=x, tip_min_mm=t_min))
+    for tooth, tip in zip(g.teeth, g.tips):
+        assert tooth.shortened
+        assert tooth.tip_height_mm == pytest.approx(r_y - r, abs=2e-6)     # the bisection's 1e-6 mm
+        assert tooth.tip_height_mm <= r_y - r + 1e-9                        # never above: the land is kept
+        assert t_min <= tooth.tip_thickness_mm < t_min + 1e-5
+        assert tip[0] == tooth.tip_height_mm
+    # the land at the nominal tip is enough: nothing is shortened
+    ok = generate_teeth(pc, "driver", ToothSpec(m=m, x=x, tip_min_mm=full * 0.999))
+    assert not any(t.shortened for t in ok.teeth)
+    # a land that no height down to (tip_floor + x) m gives: refused with the land there
+    floor_land = _land(20, m, x, r + (0.5 + x) * m)
+    text = _refusal(lambda: generate_teeth(pc, "driver", ToothSpec(m=m, x=x, tip_min_mm=3.0)))
+    assert text == (f"m = 2.0: driver tooth at phi = {g.teeth[0].phi_centre:.4f} rad is pointed or cannot be cut: tip "
+                    f"land {floor_land:.3f} mm < 3.000 mm even with the tip shortened to 1.00 m (use a smaller "
+                    "profile shift, a larger shaper, more teeth or a wider smoothing)")
+    # a lower floor reaches a height with the land
+    low = generate_teeth(pc, "driver", ToothSpec(m=m, x=x, tip_min_mm=1.9, tip_floor=-0.2))
+    r_y = brentq(lambda ry: _land(20, m, x, ry) - 1.9, r - 0.5, r + (1 + x) * m, xtol=1e-13)
+    assert low.teeth[3].tip_height_mm == pytest.approx(r_y - r, abs=2e-6)
+
+
+def test_a_tip_height_limit_cuts_every_tip_there():
+    m, z_H, x = 2.0, 40, 0.4
+    spec = ToothSpec(m=m, x=x, tip_max_mm=2.5)
+    assert (spec.h_tip, spec.h_tip_cut, spec.h_root) == pytest.approx(((1 + x) * m, 2.5, (1.25 - x) * m), rel=1e-15)
+    assert ToothSpec(m=m, x=x, tip_max_mm=3.0).h_tip_cut == pytest.approx(2.8, rel=1e-15)   # the nominal is lower
+    assert ToothSpec(m=m, x=x).h_tip_cut == pytest.approx(2.8, rel=1e-15)                   # 0: no limit
+    g = generate_teeth(_circular_pair(m, z_H), "driven", spec)
+    land = _land(40, m, x, 40 + 2.5)
+    assert all(t.tip_height_mm == 2.5 and not t.shortened for t in g.teeth)
+    assert all(t.tip_thickness_mm == pytest.approx(land, rel=1e-9) for t in g.teeth)
+
+
+@pytest.mark.parametrize("x, undercut", [(0.0, True), (0.2, True), (0.4, False)])
+def test_a_small_driver_is_undercut_below_the_iso_limiting_shift(x, undercut):
+    # z = 12: x_min = h_a* - z sin^2(alpha) / 2 = 0.298
+    m = 2.0
+    assert 1 - 12 * math.sin(ALPHA) ** 2 / 2 == pytest.approx(0.2981, abs=1e-4)
+    g = generate_teeth(_circular_pair(m, 24), "driver", ToothSpec(m=m, x=x))
+    assert g.z == 12 and all(t.undercut is undercut for t in g.teeth)
+    for right, left in g.sides:
+        for side in (right, left):
+            assert side.undercut is undercut
+            # the trimmed fillet ends where the trimmed flank begins (the crossing of the two envelopes)
+            assert np.linalg.norm(side.fillet.at(side.fillet.u1) - side.flank.at(side.flank.u0)) < 1e-6
+
+
+def test_the_driver_needs_a_whole_number_of_teeth_a_turn():
+    m = 2.0
+    pc = PitchCurves(EllipticalLaw(e=0.0, k=2), 3 * m * 41 / 4)       # 41 teeth on the driven circle
+    assert generate_teeth(pc, "driven", ToothSpec(m=m)).z == 41
+    assert _refusal(lambda: generate_teeth(pc, "driver", ToothSpec(m=m))) == "z_H = 41: must be a multiple of n = 2"
+
+
+def test_sides_within_one_and_a_half_pitches_of_a_concave_stretch_are_cut_by_the_shaper():
+    law = EllipticalLaw(e=0.5, k=3)                  # the driven curve is concave about its 3 waists
+    m = 2.0
+    pc0 = PitchCurves(law, 100.0)
+    z_H = round(pc0.perimeter_driven() / (math.pi * m) / 3) * 3
+    pc = PitchCurves(law, 100.0 * z_H * math.pi * m / pc0.perimeter_driven())
+    frame = ArcFrame(pc)
+    p = math.pi * m
+    cs = pc.curvature("driven")
+    assert cs.concave
+    zones = [(float(frame.s(np.array([a + k * law.period]))[0]), float(frame.s(np.array([b + k * law.period]))[0]))
+             for a, b in cs.concave_intervals for k in range(-1, law.periods + 2)]
+    g = generate_teeth(pc, "driven", ToothSpec(m=m, z0=20), frame=frame)
+    kinds = [t.right for t in g.teeth]
+    expect = ["shaper" if any(a - SHAPER_MARGIN_PITCHES * p <= (k + 0.5) * p <= b + SHAPER_MARGIN_PITCHES * p
+                              for a, b in zones) else "rack" for k in range(g.z)]
+    assert kinds == expect and [t.left for t in g.teeth] == expect
+    assert 0 < expect.count("shaper") < g.z
+    assert _refusal(lambda: generate_teeth(pc, "driven", ToothSpec(m=m), frame=frame)) == (
+        "z0 = None: a concave pitch curve needs a shaper cutter")
+    # the convex driver is all rack
+    assert {t.right for t in generate_teeth(pc, "driver", ToothSpec(m=m), frame=frame).teeth} == {"rack"}
