@@ -335,13 +335,16 @@ def main(argv: list[str] | None = None) -> int:
         elapsed = 0.0
         if not args.report_only:
             scratch = sync_scratch(target, modules, args.fresh)
+            # results of an earlier run whose tests are unknown (it was stopped before it wrote its stamp)
+            unstamped = (not (scratch / "tests.sha256").exists()
+                         and any((scratch / "mutants" / (m + ".meta")).exists() for m in modules))
             print(f"target {target.name}: mutating {len(modules)} module(s); mutmut's log: {scratch / 'mutmut.log'}",
                   flush=True)
             elapsed = run_mutmut(scratch, args.jobs, [])
             # mutmut re-tests a mutant when its function changes, not when a test is added: after a change of the
             # tests, the survivors of the last run are tested again, by name
             stamp, now = scratch / "tests.sha256", _tests_hash(scratch, target)
-            if stamp.exists() and stamp.read_text() != now:
+            if unstamped or (stamp.exists() and stamp.read_text() != now):
                 _, again, _ = read_results(scratch, modules, equivalents)
                 if again:
                     print(f"target {target.name}: the tests changed; {len(again)} survivor(s) tested again", flush=True)

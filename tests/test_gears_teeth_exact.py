@@ -477,3 +477,40 @@ def test_sides_within_one_and_a_half_pitches_of_a_concave_stretch_are_cut_by_the
         "z0 = None: a concave pitch curve needs a shaper cutter")
     # the convex driver is all rack
     assert {t.right for t in generate_teeth(pc, "driver", ToothSpec(m=m), frame=frame).teeth} == {"rack"}
+
+
+def test_cutter_numbers_are_kept_as_python_floats_and_any_pressure_angle_below_a_right_angle_is_taken():
+    c = CutterSpec(m=np.float32(2.5), h_a=np.float32(0.8), x=np.float32(0.25), x_H=np.float32(-0.25), z0=np.int64(20))
+    assert [type(v) for v in (c.m, c.h_a, c.x, c.x_H, c.z0)] == [float, float, float, float, int]
+    assert (c.m, c.h_a, c.x, c.x_H, c.z0) == (2.5, float(np.float32(0.8)), 0.25, -0.25, 20)
+    steep = CutterSpec(m=2.0, alpha=1.2)                           # 68.8 deg: above pi/3, below pi/2
+    assert steep.rho_limit(0.0) == pytest.approx(2.0 / math.sin(1.2) ** 2, rel=1e-15)
+
+
+def test_a_convex_radius_equal_to_the_rack_limit_is_generable_and_a_shaper_equal_to_the_concave_radius_is_not():
+    c = CutterSpec(m=2.0, x=0.25, z0=20)
+    lim = (1.0 - 0.25) * 2.0 / math.sin(math.radians(20.0)) ** 2      # the limit's own floats
+    assert _check_curve(_summary(convex=lim), c, 0.25).ok
+    eq = _check_curve(_summary(convex=50.0, concave=True, rho_cc=20.0), c, 0.25)
+    assert not eq.ok
+    good = _check("driven", 50.0, 5.0, ok=True)
+    # remedies: none for a convex radius at the limit; the shaper remedy for a concave radius equal to r0
+    assert remedies(Generability(_check("driver", lim, lim, True, 50.0, 20.0), good), c, 60, 2, 120.0) == []
+    assert remedies(Generability(good, _check("driven", 50.0, 5.0, True, 20.0, 20.0)), c, 60, 2, 120.0) == [
+        "driven: concave |rho|_min 20.000 mm needs a shaper with z0 <= 19 (r0 < |rho|)"]
+
+
+def test_remedies_of_a_thin_convex_radius_and_the_smallest_shaper_there_is():
+    c = CutterSpec(m=2.0, x=0.2, z0=20)
+    good = _check("driven", 50.0, 5.0, ok=True)
+    lim = (1.0 - 0.2) * 2.0 / S2_20
+    bits = remedies(Generability(_check("driver", 0.5, lim), good), c, 60, 2, 120.0)   # 0.5 mm: below 1, above 0
+    x_need = 1.0 - 0.5 * S2_20 / 2.0
+    z_need = math.ceil(60 * lim / 0.5 / 2) * 2
+    assert bits == [f"driver: convex rho_min 0.500 mm < undercut limit {lim:.3f} mm; works with x >= {x_need:.3f}, "
+                    f"or z_H >= {z_need} at m = 2, or m <= {0.5 * S2_20 / 0.8:.4g} mm at L = 120.000 mm"]
+    # a shaper has at least 6 teeth: 6 fits inside |rho| = 6.5 mm (r0 = 6 mm), none fits inside 5.5 mm
+    assert remedies(Generability(good, _check("driven", 50.0, 5.0, True, 6.5, 20.0)), c, 60, 2, 120.0) == [
+        "driven: concave |rho|_min 6.500 mm needs a shaper with z0 <= 6 (r0 < |rho|)"]
+    assert remedies(Generability(good, _check("driven", 50.0, 5.0, True, 5.5, 20.0)), c, 60, 2, 120.0) == [
+        "driven: concave |rho|_min 5.500 mm: no shaper within the limits fits inside it (r0 < |rho|; a smoother law)"]

@@ -23,6 +23,9 @@ from .noncircular import (DELTA_MAX_DEFAULT, CurvatureSummary, PitchCurves, Smoo
                           perimeter_per_mm, whole_teeth)
 from .noncircular_teeth import ToothSpec
 
+#: the fewest teeth of a shaper cutter (``cutters.ShaperCutter`` refuses fewer)
+SHAPER_TEETH_MIN = 6
+
 __all__ = ["CutterSpec", "CurveCheck", "Generability", "check_generable", "SmoothingDesign", "choose_smoothing"]
 
 
@@ -57,8 +60,9 @@ class CutterSpec:
         object.__setattr__(self, "x_H", require_finite("x_H", self.x_H))
         if self.z0 is not None:
             z0 = require_finite("z0", self.z0)
-            if z0 != round(z0) or z0 < 6:
-                raise InputError("z0", self.z0, "shaper cutter tooth count must be a whole number >= 6")
+            if z0 != round(z0) or z0 < SHAPER_TEETH_MIN:
+                raise InputError("z0", self.z0,
+                                 f"shaper cutter tooth count must be a whole number >= {SHAPER_TEETH_MIN}")
             object.__setattr__(self, "z0", int(round(z0)))
 
     def rho_limit(self, x: float) -> float:
@@ -289,7 +293,7 @@ def remedies(g: Generability, cutter: CutterSpec, z_H: int, n: int, L: float, li
             e = cutter.shaper_offset(x)
             fits = "r0 < |rho|" + (f" - e, e = {e:+.3f} mm" if e else "")
             z0_max = math.ceil(2 * (chk.rho_concave_min - e) / cutter.m) - 1
-            if within("z0", z0_max) and z0_max >= 1:
+            if within("z0", z0_max) and z0_max >= SHAPER_TEETH_MIN:
                 bits.append(f"{chk.curve}: concave |rho|_min {chk.rho_concave_min:.3f} mm needs a shaper with "
                             f"{key('z0')} <= {z0_max} ({fits})")
             else:
