@@ -514,3 +514,29 @@ def test_remedies_of_a_thin_convex_radius_and_the_smallest_shaper_there_is():
         "driven: concave |rho|_min 6.500 mm needs a shaper with z0 <= 6 (r0 < |rho|)"]
     assert remedies(Generability(good, _check("driven", 50.0, 5.0, True, 5.5, 20.0)), c, 60, 2, 120.0) == [
         "driven: concave |rho|_min 5.500 mm: no shaper within the limits fits inside it (r0 < |rho|; a smoother law)"]
+
+
+def test_the_least_value_of_a_cubic_on_the_unit_interval_against_a_dense_sampling():
+    from propulsor.gears.smoothed_law import cubic_min_01
+
+    rng = np.random.default_rng(7)
+    w = np.linspace(0.0, 1.0, 200_001)
+    kinds = {"end": 0, "inside": 0}
+    for _ in range(300):
+        a = rng.normal(size=4) * rng.choice([0.1, 1.0, 10.0], size=4)
+        p = a[0] + w * (a[1] + w * (a[2] + w * a[3]))
+        k = int(np.argmin(p))
+        kinds["inside" if 0 < k < len(w) - 1 else "end"] += 1
+        assert cubic_min_01(*a) == pytest.approx(float(p.min()), abs=1e-9 * (1 + np.abs(a).sum()))
+        assert cubic_min_01(*a) <= float(p.min()) + 1e-12 * (1 + np.abs(a).sum())
+    assert min(kinds.values()) > 30
+    # complex critical points (p' = 1 + w^2 > 0 has none real) and real ones outside: only the ends count
+    assert cubic_min_01(0.0, 1.0, 0.0, 1.0 / 3) == 0.0
+    assert cubic_min_01(1.0, -3.0, 0.0, 1.0) == pytest.approx(1 - 3 + 1, rel=1e-15)   # p' = 0 at w = 1 exactly
+    assert cubic_min_01(0.0, -3.0 * 1.5 ** 2, 0.0, 1.0) == pytest.approx(-6.75 + 1, rel=1e-15)  # root at 1.5: the end
+    # the smoothed law's blend: its least value is the hand-over's for a shallow dip
+    sl = SmoothedWalkingLaw(LAW0, 0.3, 0.05)
+    assert sl._blend_min() == pytest.approx(0.05, rel=1e-12)
+    t = np.linspace(-0.29, 0.29, 7)
+    assert np.array_equal(sl.blend(t), sl.blend(t, 0))
+    np.testing.assert_allclose(sl.blend(t), sl.U(math.pi / 4 + t), rtol=1e-13)

@@ -21,6 +21,14 @@ from propulsor.policy import PHI_OF_THETA_TOL_RAD
 __all__ = ["SmoothedWalkingLaw"]
 
 
+def cubic_min_01(a0: float, a1: float, a2: float, a3: float) -> float:
+    """The least value of a0 + a1 w + a2 w^2 + a3 w^3 over 0 <= w <= 1: at w = 0, w = 1 or a real root of the
+    derivative a1 + 2 a2 w + 3 a3 w^2 between them."""
+    ws = [0.0, 1.0] + [float(r.real) for r in np.roots([3.0 * a3, 2.0 * a2, a1])
+                       if r.imag == 0.0 and 0.0 < r.real < 1.0]
+    return min(a0 + w * (a1 + w * (a2 + w * a3)) for w in ws)
+
+
 @dataclass(frozen=True)
 class SmoothedWalkingLaw:
     """The walking law with a C2, closure-exact blend around every leg hand-over.
@@ -90,12 +98,9 @@ class SmoothedWalkingLaw:
             raise InputError("delta", self.delta, f"blend makes U <= 0 (min {p_min:.4g}); use a smaller delta")
 
     def _blend_min(self) -> float:
-        """The least value of the blend over its window: p = a0 + a1 w + a2 w^2 + a3 w^3 in w = (t/delta)^2 on
-        [0, 1], at w = 0, w = 1 or a root of dp/dw = a1 + 2 a2 w + 3 a3 w^2 inside (exact, not sampled)."""
-        a0, a1, a2, a3 = self.coef
-        ws = [0.0, 1.0] + [float(r.real) for r in np.roots([3.0 * a3, 2.0 * a2, a1])
-                           if r.imag == 0.0 and 0.0 < r.real < 1.0]
-        return min(a0 + w * (a1 + w * (a2 + w * a3)) for w in ws)
+        """The least value of the blend over its window (exact, not sampled): p is a cubic in w = (t/delta)^2 on
+        [0, 1]."""
+        return cubic_min_01(*self.coef)
 
     def _scaled_blend(self, M, rhs) -> None:
         """The blend with a free hand-over value U_s(phi_h) = u_h (the depth of the hub-speed dip),
