@@ -540,3 +540,136 @@ def test_the_least_value_of_a_cubic_on_the_unit_interval_against_a_dense_samplin
     t = np.linspace(-0.29, 0.29, 7)
     assert np.array_equal(sl.blend(t), sl.blend(t, 0))
     np.testing.assert_allclose(sl.blend(t), sl.U(math.pi / 4 + t), rtol=1e-13)
+
+
+# ---- generated teeth of circular spur gears and rings (gears/generation.py) ----------------------------------------
+
+from propulsor.gears.cutters import ShaperCutter  # noqa: E402
+from propulsor.gears.generation import generate_external_side, generate_internal_side  # noqa: E402
+from propulsor.gears.involute import inv_inverse  # noqa: E402
+
+RACK = BasicRack()
+
+
+@pytest.mark.parametrize("z, x, th", [(20, 0.0, 0.0), (30, 0.5, 0.0), (12, 0.0, 0.0), (25, -0.3, 0.1)])
+def test_an_external_sides_radii_and_angles_by_hand(z, x, th):
+    m = 2.0
+    s = generate_external_side(z, m, x, thinning_n_mm=th)
+    r = m * z / 2
+    r_a = r + (1 + x) * m
+    assert (s.r, s.r_b, s.r_a, s.r_f) == pytest.approx((r, r * math.cos(ALPHA), r_a, r - (1.25 - x) * m), rel=1e-15)
+    assert (s.z, s.internal, s.undercut) == (z, False, z == 12)
+    # the rack's tip land rolls out the root circle: its end at pi m/4 - h_fP tan a - rho_fP tan(pi/4 - a/2) from
+    # the space's centre line is the fillet's start; thinning turns the side thinning / 2r towards the tooth centre
+    half_land = math.pi * m / 4 - 1.25 * m * math.tan(ALPHA) - 0.38 * m * math.tan(math.pi / 4 - ALPHA / 2)
+    assert s.root_angle == pytest.approx(math.pi / z - half_land / r - th / (2 * r), abs=1e-13)
+    assert s.tip_angle == pytest.approx(_land(z, m, x, r_a, th) / (2 * r_a), abs=1e-13)
+    # the rack's numbers: eta_f the depth of its tip line below the rolling line, its tip round, its space width
+    assert s.extra["eta_f"] == pytest.approx(-(1.25 - x) * m + 0.38 * m * (1 - math.sin(ALPHA)), rel=1e-12)
+    assert s.extra["rho"] == pytest.approx(0.38 * m, rel=1e-15)
+    assert s.extra["w"] == pytest.approx(m * (math.pi / 2 + 2 * x * math.tan(ALPHA)), rel=1e-15)
+    # the flank ends on the tip circle, the fillet starts on the root circle
+    assert np.hypot(*s.flank.at(s.flank.u1)) == pytest.approx(r_a, abs=1e-9)
+    assert np.hypot(*s.fillet.at(s.fillet.u0)) == pytest.approx(s.r_f, abs=1e-9)
+
+
+def test_a_given_tip_diameter_is_kept():
+    s = generate_external_side(20, 2.0, 0.0, d_a=43.0)
+    assert s.r_a == 21.5 and np.hypot(*s.flank.at(s.flank.u1)) == pytest.approx(21.5, abs=1e-9)
+
+
+def test_dense_points_of_one_pitch_by_hand():
+    z, m = 20, 2.0
+    s = generate_external_side(z, m, 0.0)
+    d = s.dense(50)
+    assert set(d) == {"fillet", "flank", "fillet_mirror", "flank_mirror", "tip", "root"}
+    assert all(v.shape == (50, 2) for v in d.values())
+    assert np.array_equal(d["fillet_mirror"], d["fillet"] * [-1, 1])
+    assert np.array_equal(d["flank_mirror"], d["flank"] * [-1, 1])
+    ta, ra = s.tip_angle, s.root_angle
+    # the tip arc across the tooth from this side's end to the mirrored one; the root arc across the space on the right
+    np.testing.assert_allclose(np.hypot(*d["tip"].T), s.r_a, rtol=1e-15)
+    np.testing.assert_allclose(np.arctan2(d["tip"][:, 0], d["tip"][:, 1]), np.linspace(ta, -ta, 50), atol=1e-15)
+    np.testing.assert_allclose(np.hypot(*d["root"].T), s.r_f, rtol=1e-15)
+    np.testing.assert_allclose(np.arctan2(d["root"][:, 0], d["root"][:, 1]),
+                               np.linspace(ra, 2 * math.pi / z - ra, 50), atol=1e-14)
+    np.testing.assert_allclose(d["flank"][-1], d["tip"][0], atol=1e-9)
+    np.testing.assert_allclose(d["fillet"][0], d["root"][0], atol=1e-9)
+    assert len(s.dense()["flank"]) == 400
+
+
+def test_an_external_sides_refusals_in_full():
+    assert _refusal(lambda: generate_external_side(2, 2.0)) == "z = 2: must be >= 3"
+    assert _refusal(lambda: generate_external_side(20, 0.0)) == "m = 0.0: must be > 0 mm"
+    assert _refusal(lambda: generate_external_side(20, 2.0, math.nan)) == "x = nan: must be a finite number"
+    assert _refusal(lambda: generate_external_side(20, 2.0, thinning_n_mm=math.inf)) == (
+        "thinning_n_mm = inf: must be a finite number")
+    assert _refusal(lambda: generate_external_side(20, 2.0, d_a=0.0)) == "d_a = 0.0: must be > 0 mm"
+    # root radius r + eta_t = 20 - (1.25 - x) 2 > 0 needs x > -8.75
+    assert _refusal(lambda: generate_external_side(20, 2.0, -8.75)) == (
+        "x = -8.75: root radius must be > 0 (r_f = 0 mm)")
+    # the tip must clear the root and base circles (base: 20 cos 20 deg = 18.794 mm)
+    r_b = 20 * math.cos(ALPHA)
+    assert _refusal(lambda: generate_external_side(20, 2.0, 0.0, d_a=2 * r_b)) == (
+        f"d_a = {2 * r_b!r}: must exceed the root and base diameters ({2 * r_b:.6f} mm)")
+    assert _refusal(lambda: generate_external_side(20, 2.0, 1.0, d_a=38.9)) == (   # root 20 - 0.25 x 2 = 19.5 mm
+        "d_a = 38.9: must exceed the root and base diameters (39.000000 mm)")
+    # the form circle: where the rack's straight flank ends, d = (h_fP* - x) m - rho_fP (1 - sin a) below the rolling
+    # line, d / sin a from the pitch point along the line of action
+    depth = (1.25 - 0.6) * 2.0 - 0.38 * 2.0 * (1 - math.sin(ALPHA))
+    r_Ff = math.hypot(20 * math.cos(ALPHA), 20 * math.sin(ALPHA) - depth / math.sin(ALPHA))
+    assert _refusal(lambda: generate_external_side(20, 2.0, 0.6, d_a=38.4)) == (
+        f"d_a = 38.4: must exceed the form diameter d_Ff = {2 * r_Ff:.6f} mm")
+    # a tip so large that the tooth is pointed below it
+    assert _refusal(lambda: generate_external_side(20, 2.0, 0.0, d_a=47.0)) == (
+        "d_a = 47.0: tooth is pointed below the tip circle")
+    # thinning so large that the fillets of one space overlap
+    assert _refusal(lambda: generate_external_side(20, 2.0, 0.0, thinning_n_mm=-4.0)) == (
+        "thinning_n_mm = -4.0: fillets of one space overlap")
+
+
+def test_a_ring_sides_machining_numbers_by_gost_19274():
+    z, m, x, z0, x0 = 60, 2.0, 0.3, 20, 0.1
+    shaper = ShaperCutter(z0, m, x0)
+    d_a = 2 * (m * z / 2 - (1 - x) * m)
+    s = generate_internal_side(z, m, x, d_a, shaper)
+    a_w0_ang = float(inv_inverse(float(inv(ALPHA)) + 2 * math.tan(ALPHA) * (x - x0) / (z - z0)))
+    a_w0 = m * (z - z0) / 2 * math.cos(ALPHA) / math.cos(a_w0_ang)
+    r_a0 = m * (z0 + 2 * (1.25 + x0)) / 2
+    assert s.extra == pytest.approx({"a_w0": a_w0, "alpha_w0": a_w0_ang, "r_w0": a_w0 * z0 / (z - z0),
+                                     "r_w": a_w0 * z / (z - z0), "d_a0": 2 * r_a0}, rel=1e-12)
+    assert (s.r, s.r_b, s.r_a, s.r_f) == pytest.approx((60.0, 60 * math.cos(ALPHA), d_a / 2, a_w0 + r_a0), rel=1e-12)
+    assert (s.z, s.internal) == (60, True)
+    # the ring's space on +y: its half angle at the tip circle e_a / (2 r_a), with e = m (pi/2 + 2 x tan a)
+    e = m * (math.pi / 2 + 2 * x * math.tan(ALPHA))
+    a_a = math.acos(60 * math.cos(ALPHA) / s.r_a)
+    assert s.tip_angle == pytest.approx(e / 120 + float(inv(ALPHA)) - float(inv(a_a)), abs=1e-11)
+    d = s.dense(30)
+    np.testing.assert_allclose(np.arctan2(d["tip"][:, 0], d["tip"][:, 1]),
+                               np.linspace(s.tip_angle, 2 * math.pi / z - s.tip_angle, 30), atol=1e-14)
+    np.testing.assert_allclose(np.arctan2(d["root"][:, 0], d["root"][:, 1]),
+                               np.linspace(s.root_angle, -s.root_angle, 30), atol=1e-14)
+    # thinning widens the space: the side turns thinning / 2r away from the space's centre line
+    t = generate_internal_side(z, m, x, d_a, shaper, thinning_n_mm=0.1)
+    assert t.tip_angle == pytest.approx(s.tip_angle + 0.1 / 120, abs=1e-13)
+    assert t.root_angle == pytest.approx(s.root_angle + 0.1 / 120, abs=1e-13)
+
+
+def test_a_ring_sides_refusals_in_full():
+    sh = ShaperCutter(20, 2.0, 0.0)
+    assert _refusal(lambda: generate_internal_side(23, 2.0, 0.0, 40.0, sh)) == "z = 23: ring needs z >= z0 + 4 = 24"
+    assert _refusal(lambda: generate_internal_side(60, 2.5, 0.0, 117.0, sh)) == "m = 2.5: must equal the shaper module 2.0"
+    assert _refusal(lambda: generate_internal_side(60, 2.0, math.nan, 117.0, sh)) == "x = nan: must be a finite number"
+    assert _refusal(lambda: generate_internal_side(60, 2.0, 0.0, 117.0, sh, math.inf)) == (
+        "thinning_n_mm = inf: must be a finite number")
+    assert _refusal(lambda: generate_internal_side(60, 2.0, 0.0, -1.0, sh)) == "d_a = -1.0: must be > 0 mm"
+    # x - x0 so negative that inv alpha_w0 <= 0: inv 20 deg + 2 tan 20 deg (x / 40) <= 0 below x = -0.8345
+    x_lo = -float(inv(ALPHA)) * 40 / (2 * math.tan(ALPHA))
+    assert _refusal(lambda: generate_internal_side(60, 2.0, x_lo - 0.01, 117.0, sh)) == (
+        f"x = {x_lo - 0.01!r}: machining pressure angle would be <= 0 (x − x0 too negative)")
+    # the root: a_w0 = 40 mm (x = x0), r_a0 = m (z0 + 2 (h_a* + c* + x0)) / 2 = 22.5 mm
+    assert _refusal(lambda: generate_internal_side(60, 2.0, 0.0, 125.2, sh)) == (
+        "d_a = 125.2: must be < root diameter 125.000000 mm")
+    r_b = 60 * math.cos(ALPHA)
+    assert _refusal(lambda: generate_internal_side(60, 2.0, 0.0, 2 * r_b, sh)) == (
+        f"d_a = {2 * r_b!r}: must be > base diameter {2 * r_b:.6f} mm")
