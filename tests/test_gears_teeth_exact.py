@@ -673,3 +673,52 @@ def test_a_ring_sides_refusals_in_full():
     r_b = 60 * math.cos(ALPHA)
     assert _refusal(lambda: generate_internal_side(60, 2.0, 0.0, 2 * r_b, sh)) == (
         f"d_a = {2 * r_b!r}: must be > base diameter {2 * r_b:.6f} mm")
+
+
+def _to_polyline(P: np.ndarray, Q: np.ndarray) -> np.ndarray:
+    """Distance of each point P to the polyline Q (point to segment, exact)."""
+    A, B = Q[:-1], Q[1:]
+    AB = B - A
+    L2 = np.einsum("ij,ij->i", AB, AB)
+    out = []
+    for p in P:
+        t = np.clip(np.einsum("ij,ij->i", p - A, AB) / L2, 0.0, 1.0)
+        out.append(float(np.min(np.linalg.norm(A + t[:, None] * AB - p, axis=1))))
+    return np.array(out)
+
+
+def test_a_shaper_of_its_own_shift_cuts_the_racks_flank_and_its_root_gap_is_measured():
+    from propulsor.gears.envelope import PitchCurveCentrode
+    from propulsor.gears.noncircular_teeth import make_side
+
+    law = EllipticalLaw(e=0.5, k=3)
+    m, x = 2.0, 0.2
+    pc0 = PitchCurves(law, 100.0)
+    z_H = round(pc0.perimeter_driven() / (math.pi * m) / 3) * 3
+    pc = PitchCurves(law, 100.0 * z_H * math.pi * m / pc0.perimeter_driven())
+    frame = ArcFrame(pc)
+    spec = ToothSpec(m=m, x=x, z0=20, shaper=ShaperCutter(20, m, 0.1))      # e = (x + x0) m = 0.6 mm
+    g = generate_teeth(pc, "driven", spec, frame=frame)
+    rack = spec.rack_tools()
+    shaped = [k for k, t in enumerate(g.teeth) if t.right == "shaper"]
+    assert len(shaped) == 24 and all(t.tip_height_mm == (1 + x) * m for t in g.teeth)
+    gaps = []
+    for k in shaped[:3] + shaped[-2:]:
+        tooth = g.teeth[k]
+        for which in (0, 1):
+            side = g.sides[k][which]
+            # the same imaginary rack: the shaper's flank is the rack's flank of this tooth (Aronhold-Kennedy)
+            ref = make_side(rack[which], PitchCurveCentrode(g.curve, frame, tooth.s_centre))
+            dense = ref.flank(np.linspace(ref.flank.u0, ref.flank.u1, 4001))
+            u_tip = g.tips[k][1 + which][0]
+            P = side.flank(np.linspace(side.flank.u0 + 0.3 * (u_tip - side.flank.u0), u_tip, 12))
+            assert _to_polyline(P, dense).max() < 1e-6
+            # the root gap: the distance from the fillet's start to the root equidistant, its foot at phi_root
+            X0 = side.root_piece.at(side.root_piece.u0) if side.root_piece is not None else side.fillet.at(side.fillet.u0)
+            ph = side.phi_root + np.linspace(-0.02, 0.02, 40001)
+            E = g.curve.offset(ph, -spec.h_root)
+            j = int(np.argmin(np.linalg.norm(E - X0, axis=1)))
+            assert side.root_gap_mm == pytest.approx(float(_to_polyline(X0[None, :], E)[0]), abs=1e-9)
+            assert side.phi_root == pytest.approx(float(ph[j]), abs=2e-6)
+            gaps.append(side.root_gap_mm)
+    assert max(gaps) > 1e-3                   # the re-phased shaper leaves a gap of microns there
