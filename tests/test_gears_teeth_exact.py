@@ -658,6 +658,8 @@ def test_a_ring_sides_machining_numbers_by_gost_19274():
 def test_a_ring_sides_refusals_in_full():
     sh = ShaperCutter(20, 2.0, 0.0)
     assert _refusal(lambda: generate_internal_side(23, 2.0, 0.0, 40.0, sh)) == "z = 23: ring needs z >= z0 + 4 = 24"
+    four_more = generate_internal_side(24, 2.0, 0.5, 46.0, sh)                 # z0 + 4 teeth: cut
+    assert four_more.z == 24 and four_more.r_a == 23.0
     assert _refusal(lambda: generate_internal_side(60, 2.5, 0.0, 117.0, sh)) == "m = 2.5: must equal the shaper module 2.0"
     assert _refusal(lambda: generate_internal_side(60, 2.0, math.nan, 117.0, sh)) == "x = nan: must be a finite number"
     assert _refusal(lambda: generate_internal_side(60, 2.0, 0.0, 117.0, sh, math.inf)) == (
@@ -722,3 +724,30 @@ def test_a_shaper_of_its_own_shift_cuts_the_racks_flank_and_its_root_gap_is_meas
             assert side.phi_root == pytest.approx(float(ph[j]), abs=2e-6)
             gaps.append(side.root_gap_mm)
     assert max(gaps) > 1e-3                   # the re-phased shaper leaves a gap of microns there
+
+
+def test_the_helpers_of_the_teeth_on_circles_by_hand():
+    from propulsor.gears.noncircular_teeth import BodyPitchCurve, _arc_len, _concave_zones, _near
+
+    m, z_H = 2.0, 40
+    pc = _circular_pair(m, z_H)                       # driven radius 40 mm, driver 20 mm turning twice as fast
+    driven, driver = BodyPitchCurve(pc, "driven"), BodyPitchCurve(pc, "driver")
+    # the tip equidistant's arc between two driven angles: (r + h) times the body's turn
+    assert _arc_len(driven, 2.5, 0.1, 0.4) == pytest.approx(42.5 * 0.3, rel=1e-9)
+    assert _arc_len(driven, -1.0, 0.4, 0.1) == pytest.approx(39.0 * 0.3, rel=1e-9)
+    assert _arc_len(driver, 2.5, 0.1, 0.4) == pytest.approx(22.5 * 2 * 0.3, rel=1e-9)
+    # a solver's angle moved by whole turns of the body next to the reference: 2 pi driven, 2 pi / n = pi driver
+    assert _near(0.3 + 2 * math.pi, 0.25, driven) == pytest.approx(0.3, abs=1e-15)
+    assert _near(0.3 - 3 * 2 * math.pi, 0.25, driven) == pytest.approx(0.3, abs=1e-14)
+    assert _near(0.3 + math.pi, 0.25, driver) == pytest.approx(0.3, abs=1e-15)
+    assert _near(0.3 + 0.9 * math.pi, 0.25, driven) == pytest.approx(0.3 + 0.9 * math.pi, abs=1e-15)  # < half a turn
+    assert _near(0.3 + 0.45 * math.pi, 0.25, driver) == pytest.approx(0.3 + 0.45 * math.pi, abs=1e-15)
+    # concave stretches: none on circles; on the 3-lobed ellipse's driven curve every leg's, one more either side
+    assert _concave_zones(driven) == []
+    law = EllipticalLaw(e=0.5, k=3)
+    lobed = BodyPitchCurve(PitchCurves(law, 100.0), "driven")
+    iv = lobed.pc.curvature("driven").concave_intervals
+    zones = _concave_zones(lobed)
+    assert len(zones) == len(iv) * (law.periods + 3)
+    assert zones == [(a + k * law.period, b + k * law.period) for a, b in iv for k in range(-1, law.periods + 2)]
+    assert _concave_zones(BodyPitchCurve(PitchCurves(law, 100.0), "driver")) == []
