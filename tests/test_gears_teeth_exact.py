@@ -581,18 +581,18 @@ def test_a_given_tip_diameter_is_kept():
 def test_dense_points_of_one_pitch_by_hand():
     z, m = 20, 2.0
     s = generate_external_side(z, m, 0.0)
-    d = s.dense(50)
+    d = s.dense(51)
     assert set(d) == {"fillet", "flank", "fillet_mirror", "flank_mirror", "tip", "root"}
-    assert all(v.shape == (50, 2) for v in d.values())
+    assert all(v.shape == (51, 2) for v in d.values())
     assert np.array_equal(d["fillet_mirror"], d["fillet"] * [-1, 1])
     assert np.array_equal(d["flank_mirror"], d["flank"] * [-1, 1])
     ta, ra = s.tip_angle, s.root_angle
     # the tip arc across the tooth from this side's end to the mirrored one; the root arc across the space on the right
     np.testing.assert_allclose(np.hypot(*d["tip"].T), s.r_a, rtol=1e-15)
-    np.testing.assert_allclose(np.arctan2(d["tip"][:, 0], d["tip"][:, 1]), np.linspace(ta, -ta, 50), atol=1e-15)
+    np.testing.assert_allclose(np.arctan2(d["tip"][:, 0], d["tip"][:, 1]), np.linspace(ta, -ta, 51), atol=1e-15)
     np.testing.assert_allclose(np.hypot(*d["root"].T), s.r_f, rtol=1e-15)
     np.testing.assert_allclose(np.arctan2(d["root"][:, 0], d["root"][:, 1]),
-                               np.linspace(ra, 2 * math.pi / z - ra, 50), atol=1e-14)
+                               np.linspace(ra, 2 * math.pi / z - ra, 51), atol=1e-14)
     np.testing.assert_allclose(d["flank"][-1], d["tip"][0], atol=1e-9)
     np.testing.assert_allclose(d["fillet"][0], d["root"][0], atol=1e-9)
     assert len(s.dense()["flank"]) == 400
@@ -644,11 +644,12 @@ def test_a_ring_sides_machining_numbers_by_gost_19274():
     e = m * (math.pi / 2 + 2 * x * math.tan(ALPHA))
     a_a = math.acos(60 * math.cos(ALPHA) / s.r_a)
     assert s.tip_angle == pytest.approx(e / 120 + float(inv(ALPHA)) - float(inv(a_a)), abs=1e-11)
-    d = s.dense(30)
+    assert s.undercut is False
+    d = s.dense(31)
     np.testing.assert_allclose(np.arctan2(d["tip"][:, 0], d["tip"][:, 1]),
-                               np.linspace(s.tip_angle, 2 * math.pi / z - s.tip_angle, 30), atol=1e-14)
+                               np.linspace(s.tip_angle, 2 * math.pi / z - s.tip_angle, 31), atol=1e-14)
     np.testing.assert_allclose(np.arctan2(d["root"][:, 0], d["root"][:, 1]),
-                               np.linspace(s.root_angle, -s.root_angle, 30), atol=1e-14)
+                               np.linspace(s.root_angle, -s.root_angle, 31), atol=1e-14)
     # thinning widens the space: the side turns thinning / 2r away from the space's centre line
     t = generate_internal_side(z, m, x, d_a, shaper, thinning_n_mm=0.1)
     assert t.tip_angle == pytest.approx(s.tip_angle + 0.1 / 120, abs=1e-13)
@@ -751,3 +752,74 @@ def test_the_helpers_of_the_teeth_on_circles_by_hand():
     assert len(zones) == len(iv) * (law.periods + 3)
     assert zones == [(a + k * law.period, b + k * law.period) for a, b in iv for k in range(-1, law.periods + 2)]
     assert _concave_zones(BodyPitchCurve(PitchCurves(law, 100.0), "driver")) == []
+
+
+def test_an_external_side_of_three_teeth_a_stub_rack_a_steep_rack_and_a_small_module():
+    assert generate_external_side(3, 2.0, 0.0).z == 3                     # 3 teeth: the least there is
+    stub = BasicRack(h_a_star=0.8)
+    assert generate_external_side(20, 2.0, 0.1, rack=stub).r_a == pytest.approx(2.0 * (20 + 1.6 + 0.2) / 2, rel=1e-15)
+    # a 25 deg rack cuts the 25 deg involute: its tip land by ISO 21771 with alpha = 25 deg
+    a25 = math.radians(25.0)
+    steep = generate_external_side(20, 2.0, 0.0, rack=BasicRack(alpha=a25, rho_f_star=0.3))
+    r, r_a = 20.0, 22.0
+    a_a = math.acos(r * math.cos(a25) / r_a)
+    assert steep.tip_angle == pytest.approx(math.pi / 40 + float(inv(a25)) - float(inv(a_a)), abs=1e-12)
+    # a module of 0.1 mm: a root radius below 1 mm is still a root
+    tiny = generate_external_side(20, 0.1, 0.0)
+    assert tiny.r_f == pytest.approx(1.0 - 0.125, rel=1e-15)
+
+
+def test_a_tip_on_the_form_circle_is_refused_and_just_above_it_is_cut():
+    s = generate_external_side(20, 2.0, 0.6)
+    assert _refusal(lambda: generate_external_side(20, 2.0, 0.6, d_a=2 * s.r_Ff)) == (
+        f"d_a = {2 * s.r_Ff!r}: must exceed the form diameter d_Ff = {2 * s.r_Ff:.6f} mm")
+    assert generate_external_side(20, 2.0, 0.6, d_a=2 * s.r_Ff + 0.01).r_a == s.r_Ff + 0.005
+
+
+def test_a_ring_sides_limits_in_full_on_both_sides():
+    m = 2.0
+    a = ALPHA
+    # the shaper's generating limit: its base circle generates the ring point a_w0 sin(alpha_w0) along the line of
+    # action from the ring's base circle
+    z, z0, x, x0 = 13, 8, 1.0, -0.2
+    sh = ShaperCutter(z0, m, x0)
+    aw = float(inv_inverse(float(inv(a)) + 2 * math.tan(a) * (x - x0) / (z - z0)))
+    a_w0 = m * (z - z0) / 2 * math.cos(a) / math.cos(aw)
+    d_end = 2 * math.hypot(m * z / 2 * math.cos(a), a_w0 * math.sin(aw))
+    assert _refusal(lambda: generate_internal_side(z, m, x, d_end - 0.005, sh)) == (
+        f"d_a = {d_end - 0.005!r}: ring tip inside the shaper's generating limit: must be >= {d_end:.6f} mm (the "
+        "shaper base circle generates no involute below it)")
+    assert generate_internal_side(z, m, x, d_end + 0.005, sh).r_a == pytest.approx(d_end / 2 + 0.0025, rel=1e-15)
+    # the form circle: where the shaper's tip round begins, a_w0 sin(alpha_w0) + r_b0 t_s along the line of action
+    z, z0, x, x0 = 60, 20, 0.3, 0.1
+    sh = ShaperCutter(z0, m, x0)
+    aw = float(inv_inverse(float(inv(a)) + 2 * math.tan(a) * (x - x0) / (z - z0)))
+    a_w0 = m * (z - z0) / 2 * math.cos(a) / math.cos(aw)
+    d_Ff = 2 * math.hypot(60 * math.cos(a), a_w0 * math.sin(aw) + sh.r_b0 * sh.tip_round[0])
+    assert _refusal(lambda: generate_internal_side(z, m, x, d_Ff + 0.01, sh)) == (
+        f"d_a = {d_Ff + 0.01!r}: must be < the form diameter d_Ff = {d_Ff:.6f} mm")
+    ok = generate_internal_side(z, m, x, d_Ff - 0.01, sh)
+    assert ok.r_Ff == pytest.approx(d_Ff / 2, rel=1e-12)
+    # at the form circle itself, and at the root circle itself: refused
+    assert _refusal(lambda: generate_internal_side(z, m, x, 2 * ok.r_Ff, sh)) == (
+        f"d_a = {2 * ok.r_Ff!r}: must be < the form diameter d_Ff = {2 * ok.r_Ff:.6f} mm")
+    assert _refusal(lambda: generate_internal_side(z, m, x, 2 * ok.r_f, sh)) == (
+        f"d_a = {2 * ok.r_f!r}: must be < root diameter {2 * ok.r_f:.6f} mm")
+
+
+def test_a_ring_space_thinned_until_its_tooth_is_pointed_or_narrowed_until_its_root_land_vanishes():
+    sh = ShaperCutter(20, 2.0, 0.0)
+    s = generate_internal_side(60, 2.0, 0.0, 117.0, sh)
+    # thinning turns each side of the space thinning / 2r outwards: the tooth is pointed when the space's half angle
+    # at the tip circle reaches half a pitch, pi / z; the root land vanishes when the root angle reaches 0
+    th_pointed = (math.pi / 60 - s.tip_angle) * 120
+    th_root = -s.root_angle * 120
+    assert 2.0 < th_pointed < 2.3 and -0.6 < th_root < -0.4
+    assert generate_internal_side(60, 2.0, 0.0, 117.0, sh, th_pointed - 0.01).tip_angle < math.pi / 60
+    assert _refusal(lambda: generate_internal_side(60, 2.0, 0.0, 117.0, sh, th_pointed + 0.01)) == (
+        f"d_a = 117.0: ring tooth is pointed at the tip circle")
+    assert generate_internal_side(60, 2.0, 0.0, 117.0, sh, th_root + 0.01).root_angle > 0
+    shown = repr(sh)
+    shown = shown[:120] + "…" if len(shown) > 120 else shown
+    assert _refusal(lambda: generate_internal_side(60, 2.0, 0.0, 117.0, sh, th_root - 0.01)) == (
+        f"shaper = {shown}: root land of the ring space vanished")
