@@ -135,7 +135,7 @@ def test_cutter_spec_quantities_by_hand():
     assert c.shaper_offset(-0.2) == pytest.approx(-0.1 * 3.0, rel=1e-15)
     assert CutterSpec(m=3.0, z0=17).shaper_offset(0.3) == 0.0
     assert (c.shift("driver"), c.shift("driven")) == (0.3, -0.2)
-    rack = BasicRack()
+    rack = BasicRack(alpha=math.radians(25.0), rho_f_star=0.3)
     t = c.tooth_spec("driven", rack, thinning_mm=0.05, tip_min_mm=0.4)
     assert (t.m, t.x, t.thinning_mm, t.rack, t.z0, t.tip_min_mm) == (3.0, -0.2, 0.05, rack, 17, 0.4)
     d = CutterSpec(m=3.0, x=0.3).tooth_spec("driver", rack)
@@ -213,8 +213,7 @@ def test_the_smoothing_chosen_is_the_narrowest_generable_one_and_its_pair_closes
 
 def test_choose_smoothing_refusals_in_full():
     c = CutterSpec(m=2.5, x=0.5, z0=20)
-    assert _refusal(lambda: choose_smoothing(SmoothedWalkingLaw(LAW2, 0.1), c, 80)).endswith(
-        ": must be a WalkingLaw")
+    assert _refusal(lambda: choose_smoothing("seed 002", c, 80)) == "law = 'seed 002': must be a WalkingLaw"
     assert _refusal(lambda: choose_smoothing(LAW2, c, 80, delta_max=math.pi / 4 + 1e-9)) == (
         f"delta_max = {math.pi / 4 + 1e-9!r}: must be <= pi/4 = 0.785398 rad")
     assert _refusal(lambda: choose_smoothing(LAW2, c, 80, delta_max=0.0)) == "delta_max = 0.0: must be > 0 rad"
@@ -253,7 +252,33 @@ def test_no_smoothing_up_to_delta_max_names_the_remedies_and_the_blend_that_woul
         "; no delta up to pi/4 works)")
     # at pi/4 there is nothing beyond to try
     full = _refusal(lambda: choose_smoothing(LAW2, neg, 80, delta_max=math.pi / 4))
-    assert "would work" not in full and "no delta up to pi/4 works" not in full
+    sl4 = SmoothedWalkingLaw(LAW2, math.pi / 4)
+    L4 = math.pi * 2.5 * 80 / perimeter_per_mm(sl4)
+    bits4 = remedies(check_generable(PitchCurves(sl4, L4), neg), neg, 80, 4, L4)
+    assert full == (f"delta_max = {math.pi / 4!r}: no blend half-width up to delta_max makes both pitch curves "
+                    "generable (" + " | ".join(bits4) + ")")
+    # delta_max just below the narrowest generable blend: the first step beyond it works
+    just = need * 0.999
+    first = just + (math.pi / 4 - just) / 24
+    assert _refusal(lambda: choose_smoothing(LAW2, c, 80, delta_max=just)).endswith(
+        f"; delta = {first:.4f} rad would work)")
+    # between pi/5 and pi/4 (seed 000, x = -0.3: generable from about 0.67 rad)
+    c0 = CutterSpec(m=2.0, x=-0.3, z0=20)
+    assert not _generable(LAW0, c0, 96, 0.65).ok
+    first = next(d for d in np.linspace(0.65, math.pi / 4, 25)[1:] if _generable(LAW0, c0, 96, float(d)).ok)
+    assert _refusal(lambda: choose_smoothing(LAW0, c0, 96, delta_max=0.65)).endswith(
+        f"; delta = {first:.4f} rad would work)")
+    # the part's limits and names reach the remedies
+    limits = {"x": (-1.0, 0.6), "z_H": (4, 480), "m": (0.5, 10.0), "z0": (6, 40)}
+    keys = {"x": "driver_shift", "x_H": "-driver_shift", "z_H": "driven_teeth", "m": "module_mm",
+            "z0": "shaper_teeth", "delta": "blend_deg"}
+    text = _refusal(lambda: choose_smoothing(LAW2, neg, 80, delta_max=0.3, limits=limits, keys=keys))
+    sl3 = SmoothedWalkingLaw(LAW2, 0.3)
+    L3 = math.pi * 2.5 * 80 / perimeter_per_mm(sl3)
+    bits3 = remedies(check_generable(PitchCurves(sl3, L3), neg), neg, 80, 4, L3, limits, keys)
+    assert text == ("delta_max = 0.3: no blend half-width up to delta_max makes both pitch curves generable ("
+                    + " | ".join(bits3) + "; no delta up to pi/4 works)")
+    assert "driver_shift" in text and bits3 != remedies(check_generable(PitchCurves(sl3, L3), neg), neg, 80, 4, L3)
 
 
 def _check(curve, rho_cv, lim, concave=False, rho_cc=math.inf, r0=math.inf, ok=False):
@@ -823,3 +848,18 @@ def test_a_ring_space_thinned_until_its_tooth_is_pointed_or_narrowed_until_its_r
     shown = shown[:120] + "…" if len(shown) > 120 else shown
     assert _refusal(lambda: generate_internal_side(60, 2.0, 0.0, 117.0, sh, th_root - 0.01)) == (
         f"shaper = {shown}: root land of the ring space vanished")
+
+
+def test_a_law_without_a_corner_takes_the_least_blend_the_search_tries():
+    from propulsor.policy import SMOOTHING_DELTA_MIN_RAD
+
+    c = CutterSpec(m=2.0, x=0.0, z0=20)
+    flat = WalkingLaw(a=60.0, b=0.0, c=360.0, n=2)          # no crank: U is constant, no corner to smooth
+    d = choose_smoothing(flat, c, 96)
+    assert d.delta == SMOOTHING_DELTA_MIN_RAD and d.generability.ok
+    assert d.z == 48 and d.z_H == 96 and type(d.z) is int
+    # a mild corner (b = 1 mm): bisected between the last failing and the first passing half-width as usual
+    mild = WalkingLaw(a=60.0, b=1.0, c=360.0, n=2)
+    m = choose_smoothing(mild, c, 96)
+    assert SMOOTHING_DELTA_MIN_RAD < m.delta < 0.01
+    assert _generable(mild, c, 96, m.delta).ok and not _generable(mild, c, 96, m.delta * (1 - 2e-6)).ok
