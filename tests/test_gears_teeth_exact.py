@@ -863,3 +863,25 @@ def test_a_law_without_a_corner_takes_the_least_blend_the_search_tries():
     m = choose_smoothing(mild, c, 96)
     assert SMOOTHING_DELTA_MIN_RAD < m.delta < 0.01
     assert _generable(mild, c, 96, m.delta).ok and not _generable(mild, c, 96, m.delta * (1 - 2e-6)).ok
+
+
+# ---- the polysector (gears/polysector.py) ---------------------------------------------------------------------------
+
+def test_the_conditional_tooth_count_and_the_pressure_angle_of_a_flank_contact():
+    from propulsor.gears.polysector import PolysectorGeometry, pole_flank, ratio_eq7
+
+    g = PolysectorGeometry(m=4.0, z=30, z_c=9, i_s=3, z2=24)
+    # the conditional pitch circle r + e: z_cond = 2 (r + e) / m
+    assert g.z_cond(6.0) == pytest.approx(2 * (60.0 + 6.0) / 4.0, rel=1e-15)
+    assert g.z_cond(0.0) == 30.0 and g.z_cond(g.offset_for(42)) == pytest.approx(42.0, rel=1e-15)
+    # at e = 0 the sector is the blank: the pole is the pitch point, the working pressure angle the blank's
+    u = np.linspace(-0.2, 0.2, 9)
+    np.testing.assert_allclose(g.alpha_wt_flank(0.0, u), math.radians(20.0), atol=1e-12)
+    # off centre: cos(alpha_wt) = r_b2 / O2P at the pole of the flank contact, and eq. 7 with it is the ratio
+    e = 6.0
+    a = 60.0 + e + 48.0
+    o2p = pole_flank(e, u, 60.0 * math.cos(math.radians(20.0)), 48.0 * math.cos(math.radians(20.0)), a)[0]
+    aw = g.alpha_wt_flank(e, u)
+    np.testing.assert_allclose(np.cos(aw), 48.0 * math.cos(math.radians(20.0)) / o2p, rtol=1e-14)
+    assert np.ptp(aw) > 1e-3                      # the pole moves as the sector turns
+    np.testing.assert_allclose(g.ratio_flank(e, u), ratio_eq7(48.0, a, math.radians(20.0), aw), rtol=1e-14)
