@@ -330,3 +330,301 @@ def test_least_overlap_search_finds_the_free_interval_and_otherwise_the_least_ov
     assert g[max(i - 1, 0)] <= off <= g[min(i + 1, 12)]
     fine = min(_overlap_at(drv, dvn, 71.0, th, o) for o in np.linspace(g[max(i - 1, 0)], g[min(i + 1, 12)], 41))
     assert area <= fine + 1e-3
+
+
+# =========================================================================== proofs.py
+def _record_prove_pair(monkeypatch):
+    from propulsor.parts.noncircular_pair import pair_proof
+
+    calls = []
+
+    def fake(drv, dvn, L, theta_of_phi, phis, r_ref, **kw):
+        calls.append(SimpleNamespace(drv=drv, dvn=dvn, L=L, theta=theta_of_phi, phis=phis, r_ref=r_ref, **kw))
+        return "PROOF"
+
+    monkeypatch.setattr(pair_proof, "prove_pair", fake)
+    return calls
+
+
+def _stub_design(kind="fourier", method="generated", z_H=40, L=75.0):
+    """The circular pair's run law (theta = 2 phi, r_H = L U / (1 + U) = 50 mm at L = 75) under a stub design."""
+    _, dd = _circular()
+    return SimpleNamespace(law=SimpleNamespace(kind=kind, n=2), run_law=dd.d.run_law, L=L, m=2.5, z_H=z_H,
+                           method=method, table=SimpleNamespace(arc=7.25),
+                           driver=SimpleNamespace(profile="DRV"), driven=SimpleNamespace(profile="DVN"))
+
+
+def test_prove_samples_phases_per_tooth_over_the_legs_at_the_mount_with_the_tooth_pitch(monkeypatch):
+    """N = phases per tooth x z_H x legs / 4 phases, legs x pi/2 / N apart from 0; the driven pitch radius of the run
+    law (a circular pair: L U / (1 + U)); the pitch pi m of generated teeth, the sector arc of the papers' teeth;
+    the mount given, else the design L; the progress said and counted."""
+    from propulsor.parts.noncircular_pair.proofs import prove
+    from propulsor.progress import Reporter
+
+    calls = _record_prove_pair(monkeypatch)
+    said = []
+    d = _stub_design()
+    assert prove(d, 5, 4, said.append) == "PROOF"
+    c = calls[0]
+    assert (c.drv, c.dvn, c.L, c.name, c.pitch_mm) == ("DRV", "DVN", 75.0, "mesh", pytest.approx(math.pi * 2.5))
+    assert len(c.phis) == 200 and c.phis == pytest.approx(np.arange(200) * (2 * math.pi / 200), abs=1e-15)
+    assert c.theta(np.array([0.3, 1.1])) == pytest.approx([0.6, 2.2], abs=1e-12)
+    assert c.r_ref(np.array([0.3, 1.1])) == pytest.approx([75.0 * 2 / 3, 50.0], rel=1e-9)
+    assert said == ["generated: proof over the whole driven turn, 200 phases"]
+    c.tick(7)  # a text callback: the tick says nothing
+    assert said == ["generated: proof over the whole driven turn, 200 phases"]
+    said.clear()
+    rep = Reporter(said.append)
+    prove(_stub_design(method="sectors", z_H=36), 4, 3, rep, 76.5)
+    c = calls[1]
+    assert c.L == 76.5 and c.pitch_mm == 7.25 and len(c.phis) == 108
+    assert c.phis == pytest.approx(np.arange(108) * (3 * math.pi / 2 / 108), abs=1e-15)
+    assert said == ["sectors: proof over 3/4 of the driven turn, 108 phases",
+                    "sectors: proof over 3/4 of the driven turn: phase 0/108"]
+    c.tick(108)
+    assert said[-1] == "sectors: proof over 3/4 of the driven turn: phase 108/108"
+    assert said[-1].done == 108 and said[-1].total == 108
+    said.clear()
+    prove(_stub_design(kind="walking", z_H=80), 4, 1, said.append)
+    assert said == ["generated: proof over 1 leg(s), 80 phases"] and len(calls[2].phis) == 80
+    assert calls[2].phis[-1] == pytest.approx(79 * (math.pi / 2) / 80)
+    said.clear()
+    prove(_stub_design(kind="walking", z_H=81), 4, 4, said.append, 0.0)
+    assert said == ["generated: proof over 4 leg(s), 324 phases"] and calls[3].L == 75.0
+    prove(_stub_design(z_H=30), 4, 3, said.append)  # 4 x 30 x 3 / 4 = 90
+    assert len(calls[4].phis) == 90
+    prove(_stub_design(z_H=31), 4, 1, said.append)  # 4 x 31 / 4 = 31
+    assert len(calls[5].phis) == 31 and said[-1] == "generated: proof over 1/4 of the driven turn, 31 phases"
+
+
+def test_compare_builds_the_other_method_at_the_same_module_and_proves_one_leg(monkeypatch):
+    from propulsor.errors import InputError
+    from propulsor.parts.noncircular_pair import proofs
+
+    p = _part("ncg_seed002", proof_phases_per_tooth=6)
+    got = []
+
+    def other(q, prog):
+        got.append(q)
+        return "OTHER"
+
+    proved = []
+    monkeypatch.setattr(proofs, "design_sectors", other)
+    monkeypatch.setattr(proofs, "design_generated", lambda q, prog: (_ for _ in ()).throw(AssertionError("no")))
+    monkeypatch.setattr(proofs, "prove", lambda d, ppt, legs, prog: proved.append((d, ppt, legs, prog)) or "PR")
+    walking = SimpleNamespace(kind="walking")
+    say = lambda s: None
+    d = SimpleNamespace(method="generated", law=walking, m=3.0)
+    assert proofs.compare(p, d, say) == ("OTHER", "PR", "")
+    q = got[0]
+    assert (q.method, q.module_mm, q.center_distance_mm) == ("sectors", 3.0, 0.0)
+    assert (q.a_mm, q.driven_teeth, q.driver_turns) == (p.a_mm, p.driven_teeth, p.driver_turns)
+    assert proved == [("OTHER", 6, 1, say)]
+    monkeypatch.setattr(proofs, "design_generated", other)
+    monkeypatch.setattr(proofs, "design_sectors", lambda q, prog: (_ for _ in ()).throw(AssertionError("no")))
+    assert proofs.compare(p, SimpleNamespace(method="sectors", law=walking, m=2.0), say) == ("OTHER", "PR", "")
+    assert (got[1].method, got[1].module_mm, got[1].center_distance_mm) == ("generated", 2.0, 0.0)
+    # refused: the other method's InputError as the note
+    monkeypatch.setattr(proofs, "design_generated",
+                        lambda q, prog: (_ for _ in ()).throw(InputError("driver_shift", 0.5, "too much", "less")))
+    assert proofs.compare(p, SimpleNamespace(method="sectors", law=walking, m=2.0), say) == (
+        None, None, "The generated method is not possible for these parameters: driver_shift = 0.5: too much (less)")
+    # the module the other method gets is validated: below ISO 54's least
+    assert proofs.compare(p, SimpleNamespace(method="sectors", law=walking, m=0.01), say) == (
+        None, None, "The generated method is not possible for these parameters: module_mm = 0.01: must be 0 (from "
+                    "center_distance_mm) or >= 0.05 mm, the smallest module of ISO 54 / GOST 9563")
+    assert proofs.compare(p, SimpleNamespace(method="generated", law=SimpleNamespace(kind="fourier"), m=2.0), say) == (
+        None, None, "The sector method exists for the walking law only (this pair's law: fourier).")
+
+
+def _part(name, **kw):
+    from propulsor.params import load_params, read_part_file
+    from propulsor.parts.noncircular_pair import NoncircularPairParams
+    from pathlib import Path
+
+    _, mapping = read_part_file(Path(__file__).resolve().parent.parent / "parts" / f"{name}.toml")
+    mapping.update(kw)
+    return load_params(NoncircularPairParams, mapping)
+
+
+def _gen_check(curve, concave=False):
+    return SimpleNamespace(curve=curve, rho_convex_min=12.345678, rho_limit=10.69, concave=concave,
+                           rho_concave_min=-31.25, r0=12.5)
+
+
+def _gear(role, undercut=0, tip=0.7):
+    return SimpleNamespace(role=role, undercut_teeth=undercut, teeth=[None] * (20 if role == "driver" else 80),
+                           tip_thickness_min=tip, shortened_teeth=3, shaper_teeth=5)
+
+
+def test_checks_of_a_generated_pair_with_their_messages_in_full():
+    from propulsor.parts.noncircular_pair.proofs import checks_generated
+
+    g = SimpleNamespace(driver=_gen_check("driver"), driven=_gen_check("driven", True))
+    perim = 80 * math.pi * 2.5 + 2e-9
+    d = SimpleNamespace(smoothing=SimpleNamespace(generability=g), closure_error=3e-10, law=SimpleNamespace(n=4),
+                        pc=SimpleNamespace(perimeter_driven=lambda: perim), z_H=80, m=2.5, shaper=None,
+                        driver=_gear("driver", 0, 0.625), driven=_gear("driven", 2, 0.6249999995))
+    p = SimpleNamespace(tip_land_min_module=0.25, shaper_teeth=23)
+    pr = _proof()
+    out = checks_generated(d, pr, p)
+    rows = [(c.name, c.passed, c.value, c.limit, c.unit, c.message) for c in out]
+    assert rows[:4] == [
+        ("law.closure_error", True, 3e-10, 1e-9, "rad",
+         "|theta(2 pi) - 2 pi n| = 3e-10 rad: the driver makes exactly n = 4 turns"),
+        ("teeth.closure_error", False, pytest.approx(2e-9, abs=1e-12), 1e-9, "mm",
+         "driven pitch perimeter vs z_H pi m = 80 x 7.853982 mm"),
+        ("generability.driver_rho_min", True, 12.345678, 10.69, "mm",
+         "driver convex rho_min 12.3457 mm vs rack undercut limit (h_a* - x) m / sin^2 alpha = 10.6900 mm"),
+        ("generability.driven_rho_min", True, 12.345678, 10.69, "mm",
+         "driven convex rho_min 12.3457 mm vs limit 10.6900 mm")]
+    assert rows[4] == ("generability.driven_concave_rho", False, -31.25, 12.5, "mm",
+                       "driven concave |rho|_min -31.2500 mm vs shaper pitch radius r0 = 12.500 mm")
+    assert rows[5:9] == [
+        ("teeth.driver_undercut", True, 0.0, 0, "teeth", "0 of 20 driver teeth undercut"),
+        ("teeth.driver_tip_land", True, 0.625, pytest.approx(0.625 - 1e-9, abs=1e-15), "mm",
+         "least tip land 0.6250 mm; 3 teeth tip-shortened, 5 cut by the shaper z0 = 23"),
+        ("teeth.driven_undercut", False, 2.0, 0, "teeth", "2 of 80 driven teeth undercut"),
+        ("teeth.driven_tip_land", True, 0.6249999995, pytest.approx(0.625 - 1e-9, abs=1e-15), "mm",
+         "least tip land 0.6250 mm; 3 teeth tip-shortened, 5 cut by the shaper z0 = 23")]
+    assert rows[9] == ("mesh.overlap_area", False, 3.0, 1e-6, "mm^2",
+                       "max overlap 3 mm^2 over 6 phases at the law's positions")
+    assert [c.name for c in out[10:]] == ["mesh.runs_without_jam", "mesh.backlash_min", "mesh.contact_continuity"]
+    assert len(out) == 13
+    # a catalogue shaper: its z0 and the cutting offset named; the tip land just below the limit fails; no overlap
+    d.shaper = SimpleNamespace(z0=10)
+    g.driver.concave, g.driven.concave = True, False
+    g.driver.rho_concave_min = 12.5
+    d.driver.tip_thickness_min = 0.6249999989
+    pr2 = _proof(overlap_law=np.array([0.0, 1e-6, 0.0, 0.0, 0.0, 0.0]))
+    out = checks_generated(d, pr2, p)
+    assert [(c.name, c.passed, c.message) for c in out if "concave" in c.name] == [
+        ("generability.driver_concave_rho", False, "driver concave |rho|_min 12.5000 mm vs shaper pitch radius r0 = "
+         "12.500 mm (r0 + cutting offset e of the catalogue shaper's own x0)")]
+    tip = [c for c in out if c.name == "teeth.driver_tip_land"][0]
+    assert not tip.passed and tip.message.endswith("cut by the shaper z0 = 10")
+    ov = [c for c in out if c.name == "mesh.overlap_area"][0]
+    assert ov.passed and ov.message == "max overlap 1e-06 mm^2 over 6 phases at the law's positions"
+
+
+def test_checks_common_and_of_sectors_with_their_messages_in_full():
+    from propulsor.parts.noncircular_pair.proofs import checks_common, checks_sectors
+
+    pr = _proof(least_overlap=np.array([0.0, 0.0, 12.34567, 0.0, 0.5, 0.0]))
+    rows = [(c.name, c.passed, c.value, c.limit, c.unit, c.message) for c in checks_common(pr)]
+    assert rows == [
+        ("mesh.runs_without_jam", False, 1.0, 0, "phases",
+         "1 of 6 phases have no free position of the driven wheel (least overlap up to 12.35 mm^2)"),
+        ("mesh.backlash_min", True, pytest.approx(0.3), 0.0, "mm",
+         "backlash 0.30000 .. 4.00000 mm on the driven pitch curve at the proof's 6 phases (the least as built, "
+         "between them too: the derived backlash_min_mm)"),
+        ("mesh.contact_continuity", True, 1.0, 1, "pairs", "least tooth pairs in contact 1, mean 1.8000")]
+    free = _proof(phi_drive=np.array([0.0, 0.5, 1.0, 1.5, 2.0, 2.5]), phi_coast=np.array([0.0, 0.5, 1.0, 1.5, 2.0, 2.6]),
+                  pairs_drive=np.array([0, 1, 1, 1, 1, 1]))
+    rows = [(c.name, c.passed, c.message) for c in checks_common(free, "sectors")]
+    assert rows == [
+        ("sectors.runs_without_jam", True,
+         "0 of 6 phases have no free position of the driven wheel (least overlap up to 0 mm^2)"),
+        ("sectors.backlash_min", False,
+         "backlash 0.00000 .. 6.00000 mm on the driven pitch curve at the proof's 6 phases (the least as built, "
+         "between them too: the derived backlash_min_mm)"),
+        ("sectors.contact_continuity", False, "least tooth pairs in contact 0, mean 0.8333")]
+    d = SimpleNamespace(closure_error=2.5e-9)
+    out = checks_sectors(d, pr)
+    assert (out[0].name, out[0].passed, out[0].value, out[0].limit, out[0].unit, out[0].message) == (
+        "law.closure_error", False, 2.5e-9, 1e-9, "rad",
+        "|4 sum dtheta - 2 pi n| = 2.5e-09 rad (sector table, seed 000 eqs. 48-51)")
+    assert [c.name for c in out[1:]] == ["sectors.runs_without_jam", "sectors.backlash_min",
+                                         "sectors.contact_continuity"]
+    assert checks_sectors(SimpleNamespace(closure_error=1e-9), pr)[0].passed
+
+
+def test_counted_ticks_a_job_done_in_this_process():
+    from propulsor.parallel import Done
+    from propulsor.parts.noncircular_pair.proofs import _counted
+
+    ticks = []
+    job = Done(5)
+    assert _counted(job, ticks.append, 3) is job and ticks == [3]
+    other = SimpleNamespace()
+    assert _counted(other, ticks.append, 4) is other and ticks == [3]
+
+
+def _proofs_world(monkeypatch, proof, tolerance_grade=0, compare_methods=False):
+    """proofs() with its steps recorded: prove, start (run at once as a Done), count_shared, counter, the tolerance
+    steps, compare."""
+    import propulsor.parallel as parallel
+    import propulsor.progress as progress
+    from propulsor.parallel import Done
+    from propulsor.parts.noncircular_pair import as_built, proofs, tolerance
+
+    log = []
+    monkeypatch.setattr(proofs, "prove", lambda d, ppt, legs, prog, mount: log.append(("prove", d, ppt, legs, mount))
+                        or proof)
+    monkeypatch.setattr(parallel, "start", lambda fn, *a, counter=None: log.append(("start", fn, a, counter))
+                        or (Done(("ran", fn, a)) if fn is tolerance.run_case else ("job", fn, a)))
+    monkeypatch.setattr(progress, "count_shared", lambda prog, phase, parts, unit="": log.append(
+        ("count_shared", phase, parts, unit)) or ["C1", "C2"])
+    ticks = []
+    monkeypatch.setattr(progress, "counter", lambda prog, phase, total, unit="": log.append(
+        ("counter", phase, total, unit)) or ticks.append)
+    monkeypatch.setattr(tolerance, "iso1328", lambda d, mount, grade, alpha: log.append(("iso1328", grade, alpha))
+                        or SimpleNamespace(source="ISO 1328 grade 8"))
+    monkeypatch.setattr(tolerance, "worst_cases", lambda tol: ["W1", "W2", "W3", "W4"])
+    monkeypatch.setattr(tolerance, "monte_carlo_cases", lambda tol, n, seed: log.append(("mc", n, seed))
+                        or [f"M{k}" for k in range(n)])
+    monkeypatch.setattr(proofs, "compare", lambda p, d, prog: ("OD", "OP", "note"))
+    p = SimpleNamespace(proof_phases_per_tooth=6, tolerance_grade=tolerance_grade, pressure_angle_deg=25.0,
+                        tolerance_samples=2, tolerance_seed=9, compare_methods=compare_methods)
+    said = []
+    dd = SimpleNamespace(p=p, d="D", mount=76.0)
+    return dd, SimpleNamespace(progress=said.append), said, log, ticks, as_built, tolerance
+
+
+def test_proofs_run_the_whole_cycle_then_both_directions_as_built_and_the_tolerance_cases(monkeypatch):
+    from propulsor.checks.motion.contact_events import DRIVE, REVERSE
+    from propulsor.parts.noncircular_pair.proofs import proofs
+
+    pr = _proof(phi_drive=np.array([0.0, 0.5, 1.0, 1.5, 2.0, 2.5]))
+    dd, w, said, log, ticks, as_built, tolerance = _proofs_world(monkeypatch, pr, tolerance_grade=8,
+                                                                  compare_methods=True)
+    built = {}
+    proofs(dd, w, built)
+    f = as_built.contact_direction
+    assert built["proof"] is pr
+    assert built["as_built"] == (("job", f, ("D", 76.0, DRIVE)), ("job", f, ("D", 76.0, REVERSE)))
+    tol, cases = built["tolerance"]
+    assert tol.source == "ISO 1328 grade 8"
+    assert [c.result() for c in cases] == [("ran", tolerance.run_case, ("D", 76.0, c))
+                                           for c in ["W1", "W2", "W3", "W4", "M0", "M1"]]
+    assert ticks == [1, 2, 3, 4, 5, 6]
+    assert built["other"] == ("OD", "OP", "note")
+    assert log[:5] == [("prove", "D", 6, 4, 76.0),
+                       ("count_shared", "as built: contact in both directions", 2, "position"),
+                       ("start", f, ("D", 76.0, DRIVE), "C1"), ("start", f, ("D", 76.0, REVERSE), "C2"),
+                       ("iso1328", 8, pytest.approx(math.radians(25.0)))]
+    assert log[5] == ("mc", 2, 9) and log[6] == ("counter", "as made: tolerance cases", 6, "case")
+    assert said == ["as built: both directions' contact on the finished outlines, resolved by contact events",
+                    "as made: 6 cases within ISO 1328 grade 8"]
+
+
+def test_proofs_of_a_jammed_pair_build_nothing_as_built_and_without_a_grade_no_tolerance(monkeypatch):
+    from propulsor.parts.noncircular_pair.proofs import proofs
+
+    for pr in (_proof(), _proof(phi_drive=np.array([0.0, 0.5, 1.0, 1.5, 2.0, np.inf]))):
+        dd, w, said, log, ticks, _, _ = _proofs_world(monkeypatch, pr, tolerance_grade=8)
+        built = {}
+        proofs(dd, w, built)
+        assert built == {"proof": pr, "as_built": (), "other": (None, None, "")} and said == []
+    # a jam counted though every phi_drive is finite
+    pr = _proof(phi_drive=np.array([0.0, 0.5, 1.0, 1.5, 2.0, 2.5]))
+    pr_jam = SimpleNamespace(jams=1, phi_drive=pr.phi_drive)
+    dd, w, said, log, ticks, _, _ = _proofs_world(monkeypatch, pr_jam)
+    built = {}
+    proofs(dd, w, built)
+    assert built["as_built"] == ()
+    dd, w, said, log, ticks, _, _ = _proofs_world(monkeypatch, pr, tolerance_grade=0)
+    built = {}
+    proofs(dd, w, built)
+    assert len(built["as_built"]) == 2 and "tolerance" not in built and built["other"] == (None, None, "")
+    assert said == ["as built: both directions' contact on the finished outlines, resolved by contact events"]
