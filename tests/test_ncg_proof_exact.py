@@ -52,7 +52,7 @@ def _proof(**kw):
     from propulsor.parts.noncircular_pair.pair_proof import PairProof
 
     phi = np.array([0.0, 0.5, 1.0, 1.5, 2.0, 2.5])
-    base = dict(phi=phi, theta_law=3.0 * phi + 0.25, overlap_law=np.array([0.0, 2e-6, 0.5e-6, 0.0, 3.0, 0.0]),
+    base = dict(phi=phi, theta_law=3.0 * phi + 0.25, overlap_law=np.array([0.0, 2e-6, 1e-6, 0.0, 3.0, 0.0]),
                 offset=np.zeros(6), least_overlap=np.zeros(6),
                 phi_drive=phi + np.array([-0.01, -0.02, np.nan, -0.04, -0.03, -0.015]),
                 phi_coast=phi + np.array([0.02, 0.01, np.nan, 0.03, 0.05, 0.04]),
@@ -77,8 +77,12 @@ def test_summary_of_a_proof_takes_the_finite_phases_and_counts_overlaps_above_1e
 
 
 def test_summary_of_a_proof_without_a_free_phase_is_nan_and_no_pairs():
+    import warnings
+
     nan = np.full(6, np.nan)
-    s = _proof(phi_drive=nan, phi_coast=nan).summary()
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # no mean of an empty slice
+        s = _proof(phi_drive=nan, phi_coast=nan).summary()
     assert s["steps"] == 6 and s["jams"] == 6 and s["contact_pairs_min"] == 0 and type(s["contact_pairs_min"]) is int
     for k in ("te_min_rad", "te_max_rad", "te_pp_rad", "backlash_min_mm", "backlash_max_mm", "contact_pairs_mean"):
         assert math.isnan(s[k]), k
@@ -118,6 +122,18 @@ def test_theta_actual_of_a_two_turn_law_on_half_a_turn_of_samples():
                 phi_drive=phi + c, phi_coast=phi + 2 * c, pairs_drive=np.ones(n, int), pairs_coast=np.ones(n, int),
                 r_ref=np.ones(n))
     assert pr.theta_actual() == pytest.approx(2.0 * (phi - c), abs=1e-12)
+
+
+def test_theta_actual_counts_the_driver_turns_from_the_laws_rise_over_the_sampled_span():
+    """Samples from phi = 1 over 7/8 of a turn of a law theta = 2 phi + 1.5 (n = round(2 x 5.50 / 5.50) = 2, not
+    the ratio of the sums): theta_actual = 2 (phi - c) + 1.5 for a constant lag c."""
+    phi = 1.0 + np.arange(8) * (2 * math.pi / 8)
+    c = 0.04
+    n = len(phi)
+    pr = _proof(phi=phi, theta_law=2.0 * phi + 1.5, overlap_law=np.zeros(n), offset=np.zeros(n),
+                least_overlap=np.zeros(n), phi_drive=phi + c, phi_coast=phi + 2 * c, pairs_drive=np.ones(n, int),
+                pairs_coast=np.ones(n, int), r_ref=np.ones(n))
+    assert pr.theta_actual() == pytest.approx(2.0 * (phi - c) + 1.5, abs=1e-12)
 
 
 def test_ratio_actual_is_the_slope_between_consecutive_running_positions_where_they_advance():
