@@ -644,3 +644,85 @@ def test_proofs_of_a_jammed_pair_build_nothing_as_built_and_without_a_grade_no_t
     proofs(dd, w, built)
     assert len(built["as_built"]) == 2 and "tolerance" not in built and built["other"] == (None, None, "")
     assert said == ["as built: both directions' contact on the finished outlines, resolved by contact events"]
+
+
+# =========================================================================== the search's details
+def test_least_overlap_refines_the_scan_to_a_micro_radian_without_a_warning():
+    """Jammed at L = 71 with the driver turned 0.013 rad: the least overlap's position, found to 1e-11 rad by a
+    bounded search on the placement written out, is met within 5e-7 rad from a cold start (the 13-point scan and
+    its Brent refinement at xatol 1e-6); a warm start whose quarter span holds it keeps that Brent search's point
+    (the same search run here), one whose quarter span ends short of it gives the cold start's answer exactly."""
+    import warnings
+
+    from scipy.optimize import minimize_scalar
+
+    from propulsor.checks.motion import outline
+    from propulsor.parts.noncircular_pair.pair_proof import _least_overlap
+
+    _, dd = _circular()
+    d = dd.d
+    drv = outline([d.driver.profile.outer.polyline(1e-4)])
+    dvn = outline([d.driven.profile.outer.polyline(1e-4)])
+    half = 0.5 * math.pi * 2.5 / 50
+    th = 0.013
+    f = lambda o: _m3d_overlap(drv.loops, dvn.loops, 71.0, th, o)
+    ref = minimize_scalar(f, bounds=(0.0, 0.02), method="bounded", options={"xatol": 1e-10})
+    assert 0.009 < ref.x < 0.01  # inside the bracket, a hundredth of a pitch from the nearest scan point
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        cold = _least_overlap(drv, dvn, 71.0, 0.0, th, 0.0, half, False)
+        assert cold[0] == pytest.approx(ref.x, abs=5e-7) and cold[1] == pytest.approx(ref.fun, rel=1e-9)
+        q = 0.25 * half
+        start = ref.x + 0.5 * q
+        off, area = _least_overlap(drv, dvn, 71.0, 0.0, th, start, half, True)
+        assert off == pytest.approx(ref.x, abs=1e-6) and area == pytest.approx(ref.fun, rel=1e-9)
+        assert (off, area) != _least_overlap(drv, dvn, 71.0, 0.0, th, start, half, False)  # the warm search's own
+        far = ref.x + 1.1 * q
+        assert _least_overlap(drv, dvn, 71.0, 0.0, th, far, half, True) == \
+            _least_overlap(drv, dvn, 71.0, 0.0, th, far, half, False)
+
+
+def test_proof_search_spans_half_a_pitch_and_starts_from_the_law_after_a_free_phase():
+    """The driver 0.02 rad ahead of the law at every other phase only: after a free phase the search starts at the
+    law's position again (the running position 0.01 rad on, not a pitch or more away); a pitch of 0.2 mm (search
+    +-0.002 rad) cannot reach it - those phases are jams -, none given is taken as 8 mm.  Pairs are counted in
+    integers."""
+    from propulsor.parts.noncircular_pair.pair_proof import prove_pair
+
+    _, dd = _circular()
+    d = dd.d
+    pitch = 2 * math.pi / 40
+    phis = np.arange(6) * (pitch / 3) + 0.02
+    moved = lambda ph: d.run_law.theta(ph) + 0.02 * (np.round((ph - 0.02) / (pitch / 3)) % 2)
+    jt = 0.16 / math.cos(math.radians(20.0))
+    r50 = lambda ph: 50.0 + 0 * ph
+    pr = prove_pair(dd.profiles[0], dd.profiles[1], 75.0, moved, phis, r50, pitch_mm=math.pi * 2.5, windows=2)
+    assert pr.pairs_drive.dtype.kind == "i" and pr.pairs_coast.dtype.kind == "i"
+    assert pr.jams == 0 and pr.offset[0::2].tolist() == [0.0] * 3
+    assert np.all(np.abs(pr.offset[1::2] - 0.01) < jt / 100)
+    assert pr.te_drive[1::2] == pytest.approx(np.full(3, 0.01 - jt / 100), abs=5e-6)
+    assert pr.te_drive[0::2] == pytest.approx(np.full(3, -jt / 100), abs=5e-6)
+    small = prove_pair(dd.profiles[0], dd.profiles[1], 75.0, moved, phis, r50, pitch_mm=0.2, windows=2)
+    assert small.jams == 3 and np.all(np.isnan(small.phi_drive[1::2])) and np.all(small.least_overlap[1::2] > 0.1)
+    assert np.all(np.abs(small.offset[1::2]) <= 0.002 + 1e-12)
+    none = prove_pair(dd.profiles[0], dd.profiles[1], 75.0, moved, phis, r50, windows=2)
+    assert none.jams == 0 and none.te_drive == pytest.approx(pr.te_drive, abs=5e-6)
+
+
+def test_proof_ticks_each_default_window_of_a_tenth_of_a_radian_by_its_last_phase():
+    """80 phases every 4.5 deg: the turn's 63 windows (edges from the first phase to the last + 1e-12) hold one or
+    two phases each; each window ticks the count of phases done at its end."""
+    from propulsor.parts.noncircular_pair.pair_proof import prove_pair
+
+    _, dd = _circular()
+    phis = np.radians(np.arange(0.0, 360.0, 4.5)) + 0.003
+    ticks = []
+    prove_pair(dd.profiles[0], dd.profiles[1], 75.0, dd.d.run_law.theta, phis, lambda ph: 50.0 + 0 * ph,
+               tick=ticks.append)
+    edges = np.linspace(phis[0], phis[-1] + 1e-12, 64)
+    expected = []
+    for w in range(63):
+        inside = [k for k, ph in enumerate(phis) if edges[w] <= ph < edges[w + 1]]
+        if inside:
+            expected.append(inside[-1] + 1)
+    assert ticks == expected and len(ticks) < 80 and ticks[-1] == 80
