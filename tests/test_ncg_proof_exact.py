@@ -388,6 +388,11 @@ def test_prove_samples_phases_per_tooth_over_the_legs_at_the_mount_with_the_toot
     assert c.r_ref(np.array([0.3, 1.1])) == pytest.approx([75.0 * 2 / 3, 50.0], rel=1e-9)
     assert said == ["generated: proof over the whole driven turn, 200 phases"]
     c.tick(7)  # a text callback: the tick says nothing
+    said.clear()
+    prove(d, 5, progress=said.append)  # four legs unless told
+    assert len(calls[-1].phis) == 200 and said == ["generated: proof over the whole driven turn, 200 phases"]
+    calls.pop()
+    said[:] = ["generated: proof over the whole driven turn, 200 phases"]
     assert said == ["generated: proof over the whole driven turn, 200 phases"]
     said.clear()
     rep = Reporter(said.append)
@@ -422,6 +427,7 @@ def test_compare_builds_the_other_method_at_the_same_module_and_proves_one_leg(m
 
     def other(q, prog):
         got.append(q)
+        assert prog is say
         return "OTHER"
 
     proved = []
@@ -575,21 +581,21 @@ def _proofs_world(monkeypatch, proof, tolerance_grade=0, compare_methods=False):
     from propulsor.parts.noncircular_pair import as_built, proofs, tolerance
 
     log = []
-    monkeypatch.setattr(proofs, "prove", lambda d, ppt, legs, prog, mount: log.append(("prove", d, ppt, legs, mount))
-                        or proof)
+    monkeypatch.setattr(proofs, "prove", lambda d, ppt, legs, prog, mount: log.append(("prove", d, ppt, legs, mount,
+                                                                                        prog)) or proof)
     monkeypatch.setattr(parallel, "start", lambda fn, *a, counter=None: log.append(("start", fn, a, counter))
                         or (Done(("ran", fn, a)) if fn is tolerance.run_case else ("job", fn, a)))
     monkeypatch.setattr(progress, "count_shared", lambda prog, phase, parts, unit="": log.append(
-        ("count_shared", phase, parts, unit)) or ["C1", "C2"])
+        ("count_shared", phase, parts, unit, prog)) or ["C1", "C2"])
     ticks = []
     monkeypatch.setattr(progress, "counter", lambda prog, phase, total, unit="": log.append(
-        ("counter", phase, total, unit)) or ticks.append)
-    monkeypatch.setattr(tolerance, "iso1328", lambda d, mount, grade, alpha: log.append(("iso1328", grade, alpha))
+        ("counter", phase, total, unit, prog)) or ticks.append)
+    monkeypatch.setattr(tolerance, "iso1328", lambda d, mount, grade, alpha: log.append(("iso1328", d, mount, grade, alpha))
                         or SimpleNamespace(source="ISO 1328 grade 8"))
-    monkeypatch.setattr(tolerance, "worst_cases", lambda tol: ["W1", "W2", "W3", "W4"])
-    monkeypatch.setattr(tolerance, "monte_carlo_cases", lambda tol, n, seed: log.append(("mc", n, seed))
+    monkeypatch.setattr(tolerance, "worst_cases", lambda tol: log.append(("worst", tol.source)) or ["W1", "W2", "W3", "W4"])
+    monkeypatch.setattr(tolerance, "monte_carlo_cases", lambda tol, n, seed: log.append(("mc", tol.source, n, seed))
                         or [f"M{k}" for k in range(n)])
-    monkeypatch.setattr(proofs, "compare", lambda p, d, prog: ("OD", "OP", "note"))
+    monkeypatch.setattr(proofs, "compare", lambda p, d, prog: log.append(("compare", p, d, prog)) or ("OD", "OP", "note"))
     p = SimpleNamespace(proof_phases_per_tooth=6, tolerance_grade=tolerance_grade, pressure_angle_deg=25.0,
                         tolerance_samples=2, tolerance_seed=9, compare_methods=compare_methods)
     said = []
@@ -615,11 +621,14 @@ def test_proofs_run_the_whole_cycle_then_both_directions_as_built_and_the_tolera
                                            for c in ["W1", "W2", "W3", "W4", "M0", "M1"]]
     assert ticks == [1, 2, 3, 4, 5, 6]
     assert built["other"] == ("OD", "OP", "note")
-    assert log[:5] == [("prove", "D", 6, 4, 76.0),
-                       ("count_shared", "as built: contact in both directions", 2, "position"),
+    say = w.progress
+    assert log[:5] == [("prove", "D", 6, 4, 76.0, say),
+                       ("count_shared", "as built: contact in both directions", 2, "position", say),
                        ("start", f, ("D", 76.0, DRIVE), "C1"), ("start", f, ("D", 76.0, REVERSE), "C2"),
-                       ("iso1328", 8, pytest.approx(math.radians(25.0)))]
-    assert log[5] == ("mc", 2, 9) and log[6] == ("counter", "as made: tolerance cases", 6, "case")
+                       ("iso1328", "D", 76.0, 8, pytest.approx(math.radians(25.0)))]
+    assert log[5:8] == [("worst", "ISO 1328 grade 8"), ("mc", "ISO 1328 grade 8", 2, 9),
+                        ("counter", "as made: tolerance cases", 6, "case", say)]
+    assert log[-1] == ("compare", dd.p, "D", say)
     assert said == ["as built: both directions' contact on the finished outlines, resolved by contact events",
                     "as made: 6 cases within ISO 1328 grade 8"]
 
