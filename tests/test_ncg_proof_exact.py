@@ -735,3 +735,22 @@ def test_proof_ticks_each_default_window_of_a_tenth_of_a_radian_by_its_last_phas
         if inside:
             expected.append(inside[-1] + 1)
     assert ticks == expected and len(ticks) < 80 and ticks[-1] == 80
+
+
+def test_proof_of_a_pair_mounted_a_millimetre_apart_is_the_sweep_of_the_whole_outlines():
+    """At L + 1 mm the driver's root circle lies 1.625 mm outside the driven tip circle (more than the crop's 1 mm:
+    no driver radius reaches within r_dvn + 1 of the driven axis on the line of centres, the half width's cosine
+    clipped at -1): the proof is the transmission sweep of the whole outer loops."""
+    from propulsor.parts.noncircular_pair.pair_proof import prove_pair
+
+    _, dd = _circular()
+    d = dd.d
+    phis = np.arange(5) * (2 * math.pi / 40 / 5) + 0.007
+    r50 = lambda ph: 50.0 + 0 * ph
+    pr = prove_pair(dd.profiles[0], dd.profiles[1], 76.0, d.run_law.theta, phis, r50, pitch_mm=math.pi * 2.5,
+                    windows=2)
+    ref = _by_sweep(d, 76.0, d.run_law.theta, phis, r50(phis))
+    assert pr.jams == 0 and np.all(pr.backlash_mm > 0.17 + 0.5)
+    assert pr.phi_drive == pytest.approx(phis - ref.free_back, abs=1e-9)
+    assert pr.phi_coast == pytest.approx(phis + ref.free_fwd, abs=1e-9)
+    assert pr.pairs_drive.tolist() == ref.pairs_drive.tolist()
