@@ -173,7 +173,7 @@ def test_generated_teeth_of_the_walking_law_on_the_screened_blend(monkeypatch):
     from propulsor.parts.noncircular_pair.design import design_generated
     from propulsor.parts.noncircular_pair.feasibility import screened
 
-    p = _part("ncg_seed002", law_search=False, tip_height_max_module=1.5, shaper_teeth=23)
+    p = _part("ncg_seed002", law_search=False, tip_height_max_module=1.5, shaper_teeth=23, rack_profile="C")
     sm = screened(p).smoothing
     calls = _record_generate_pair(monkeypatch, [("G1", "G2")])
     said = []
@@ -185,10 +185,12 @@ def test_generated_teeth_of_the_walking_law_on_the_screened_blend(monkeypatch):
     th = 0.16 / (2 * math.cos(math.radians(20.0)))
     for spec, x in ((c.drv, 0.5), (c.dvn, -0.5)):
         assert (spec.m, spec.x, spec.z0, spec.shaper, spec.rack) == (2.5, x, 23, None, rack_of(p))
+        assert spec.rack != rack_of(_part("ncg_seed002"))  # profile C, not the default A
         assert spec.thinning_mm == pytest.approx(th, rel=1e-12)
         assert spec.tip_min_mm == pytest.approx(0.625) and spec.tip_max_mm == pytest.approx(3.75)
         assert spec.tip_floor == 0.5
     assert (d.method, d.law.n, d.run_law, d.L, d.m, d.z_H, d.z) == ("generated", 4, sm.law, sm.L, 2.5, 80, 20)
+    assert type(d.z) is int and type(d.z_H) is int
     assert d.pc == sm.pair and d.smoothing is sm and (d.driver, d.driven) == ("G1", "G2")
     assert d.ripple is sm.ripple and d.closure_error == sm.closure_error and d.shaper is None
     assert d.search is None and d.search_tries == ()
@@ -200,7 +202,7 @@ def test_generated_teeth_with_a_catalogue_shaper_take_its_teeth_and_name_its_key
     from propulsor.parts.noncircular_pair.design import design_generated
     from propulsor.parts.noncircular_pair.feasibility import screened
 
-    p = _part("ncg_seed002", law_search=False, shaper_d0_mm=50.0)
+    p = _part("ncg_seed002", law_search=False, shaper_d0_mm=50.0, shaper_teeth=23)
     sh = screened(p).shaper
     assert sh is not None
     calls = _record_generate_pair(monkeypatch, [("G1", "G2"), InputError("z0", 20, "cannot cut")])
@@ -286,7 +288,7 @@ def test_law_search_cuts_the_ranked_candidates_until_both_wheels_can_be_cut(monk
     sm = d.smoothing
     cutter = CutterSpec(m=2.5, alpha=math.radians(20.0), x=0.5, x_H=-0.5, z0=sh.z0, shaper_x0=sh.x0)
     assert sm.cutter == cutter and sm.law == sl and sm.delta == sl.delta and sm.L == pt.L
-    assert (sm.z_H, sm.z) == (80, 20) and sm.generability == check_generable(calls[2].pc, cutter)
+    assert (sm.z_H, sm.z) == (80, 20) and type(sm.z) is int and sm.generability == check_generable(calls[2].pc, cutter)
     assert sm.ripple == hub_speed_ripple(sl) and d.ripple is sm.ripple and d.closure_error == sm.closure_error
     assert d.search is scr.search and d.shaper.d0_mm == pt.d0_mm
     assert d.search_tries == ((pts[0], "cannot cut: the tip (a hint)"), (pts[1], "the envelope"), (pts[2], ""))
@@ -343,3 +345,56 @@ def test_law_search_refused_by_every_candidate_names_each_once_and_tries_at_most
     with pytest.raises(InputError):
         design_generated(p)
     assert len(calls) == 5
+
+
+def test_law_search_cuts_at_the_part_files_pressure_angle_and_rack(monkeypatch):
+    """At 22 deg with profile B: the candidate's cutter and both tooth specs carry the file's angle and rack (not the
+    defaults 20 deg and profile A)."""
+    from propulsor.parts.noncircular_pair.cutting import rack_of
+    from propulsor.parts.noncircular_pair.design import design_generated
+    from propulsor.parts.noncircular_pair.feasibility import screened
+
+    p = _part("ncg_seed002", pressure_angle_deg=22.0, rack_profile="B")
+    scr = screened(p)
+    _synthetic_search(monkeypatch, p, scr.search.points[:1])
+    calls = _record_generate_pair(monkeypatch, [("G1", "G2")])
+    d = design_generated(p)
+    assert d.smoothing.cutter.alpha == pytest.approx(math.radians(22.0), rel=1e-15)
+    entry = [e for e in scr.entries if e.d0_mm == scr.search.points[0].d0_mm][0]
+    sh = entry.cutter(math.radians(22.0))
+    for spec in (calls[0].drv, calls[0].dvn):
+        assert spec.rack == rack_of(p) and spec.rack != rack_of(_part("ncg_seed002"))
+        assert spec.shaper == sh and spec.thinning_mm == pytest.approx(0.16 / (2 * math.cos(math.radians(22.0))))
+
+
+def _gears_and_no_bores(monkeypatch):
+    """The tooth generator answering stub gears, and no bores: the pair's steps without its outlines."""
+    import importlib
+
+    from propulsor.parts.noncircular_pair import cutting
+    from propulsor.parts.noncircular_pair.bores import Bore
+
+    design_mod = importlib.import_module("propulsor.parts.noncircular_pair.design")
+    monkeypatch.setattr(cutting, "generate_pair", lambda pc, a, b, frame, progress=None: (
+        SimpleNamespace(profile="P1"), SimpleNamespace(profile="P2")))
+    monkeypatch.setattr(design_mod, "bores", lambda p, d: (Bore(0.0, False, False), Bore(0.0, False, False)))
+
+
+def test_a_table_laws_file_is_read_relative_to_the_part_file(monkeypatch):
+    """ncg_table.toml's law_file (ncg_table_law.csv) beside the part file: the design, the feasibility and the
+    part's design read it there; without the part file's path it is looked for in the working directory."""
+    from propulsor.errors import InputError
+    from propulsor.parts.noncircular_pair.design import design, design_generated, feasible, pair_design
+
+    _gears_and_no_bores(monkeypatch)
+    src = PARTS / "ncg_table.toml"
+    p = _part("ncg_table")
+    dd = pair_design(p, src)
+    assert dd.d.method == "generated" and dd.profiles == ("P1", "P2") and dd.mount == dd.d.L
+    assert design(p, source=src).z_H == 60 and design_generated(p, source=src).z == 30
+    feasible(p, src)
+    for call in (lambda q: pair_design(q), lambda q: design(q), lambda q: design_generated(q), lambda q: feasible(q)):
+        with pytest.raises(InputError) as e:
+            call(_part("ncg_table"))
+        assert e.value.parameter == "law_file" and str(e.value).endswith(
+            "ncg_table_law.csv': cannot be read: No such file or directory")
