@@ -247,16 +247,20 @@ def test_proof_over_a_whole_turn_in_its_default_windows_of_a_tenth_of_a_radian()
 
 
 def test_proof_of_teeth_off_the_laws_position_runs_from_the_free_position_nearest_the_law():
-    """The driver 0.02 rad ahead of the law: the teeth overlap at the law's position; the running position is the
-    driven wheel 0.02 / U = 0.01 rad further on (U = 2), where the loaded flanks touch with the same backlash as at
-    the law's position of the law moved with it."""
+    """The driver 2 g ahead of the law (g = 7/12 of the scan's span from its start, 0.0131 rad): the teeth overlap at
+    the law's position; the running position is the driven wheel g further on (U = 2), where the loaded flanks touch
+    with the same backlash as at the law's position of the law moved with it.  The first phase is searched cold:
+    the 13-point scan from the law's position meets g itself (area 0); each next one starts warm from the last
+    offset with a Brent search, whose free point is not that start."""
     from propulsor.parts.noncircular_pair.pair_proof import prove_pair
 
     _, dd = _circular()
     d = dd.d
     pitch = 2 * math.pi / 40
+    half = 0.5 * math.pi * 2.5 / 50
+    g = float(np.linspace(-half, half, 13)[7])
     phis = np.arange(6) * (pitch / 3) + 0.02
-    moved = lambda ph: d.run_law.theta(ph) + 0.02
+    moved = lambda ph: d.run_law.theta(ph) + 2 * g
     pr = prove_pair(dd.profiles[0], dd.profiles[1], 75.0, moved, phis, lambda ph: 50.0 + 0 * ph,
                     pitch_mm=math.pi * 2.5, windows=2)
     jt = 0.16 / math.cos(math.radians(20.0))
@@ -265,9 +269,10 @@ def test_proof_of_teeth_off_the_laws_position_runs_from_the_free_position_neares
                                                                d.driven.profile.outer.polyline(1e-4)[None],
                                                                75.0, float(moved(ph)), float(ph)), rel=1e-3)
     assert np.all(pr.overlap_law > 1.0) and pr.least_overlap.tolist() == [0.0] * 6 and pr.jams == 0
-    # the offset lies in the free interval: loaded flanks at 0.01 - j_t / (2 r), the other at 0.01 + j_t / (2 r)
-    assert np.all(pr.offset > 0.01 - jt / 100) and np.all(pr.offset < 0.01 + jt / 100)
-    assert pr.te_drive == pytest.approx(np.full(6, 0.01 - jt / 100), abs=5e-6)
+    # the offset lies in the free interval: loaded flanks at g - j_t / (2 r), the other at g + j_t / (2 r)
+    assert np.all(pr.offset > g - jt / 100) and np.all(pr.offset < g + jt / 100)
+    assert pr.offset[0] == g and np.all(np.abs(np.diff(pr.offset)) > 1e-9)
+    assert pr.te_drive == pytest.approx(np.full(6, g - jt / 100), abs=5e-6)
     assert pr.backlash_mm == pytest.approx(np.full(6, jt), abs=3e-4)
     # from the running position the free rotations of the whole outlines (the driver at the moved law)
     run = phis + pr.offset
@@ -692,24 +697,26 @@ def test_least_overlap_refines_the_scan_to_a_micro_radian_without_a_warning():
 
 
 def test_proof_search_spans_half_a_pitch_and_starts_from_the_law_after_a_free_phase():
-    """The driver 0.02 rad ahead of the law at every other phase only: after a free phase the search starts at the
-    law's position again (the running position 0.01 rad on, not a pitch or more away); a pitch of 0.2 mm (search
-    +-0.002 rad) cannot reach it - those phases are jams -, none given is taken as 8 mm.  Pairs are counted in
-    integers."""
+    """The driver 2 g ahead of the law (g = 0.0131 rad, a point of the scan) at every other phase only: after a free
+    phase the search starts cold at the law's position again (the scan meets the running position g on, not a pitch
+    or more away); a pitch of 0.2 mm (search +-0.002 rad) cannot reach it - those phases are jams -, none given is
+    taken as 8 mm.  Pairs are counted in integers."""
     from propulsor.parts.noncircular_pair.pair_proof import prove_pair
 
     _, dd = _circular()
     d = dd.d
     pitch = 2 * math.pi / 40
     phis = np.arange(6) * (pitch / 3) + 0.02
-    moved = lambda ph: d.run_law.theta(ph) + 0.02 * (np.round((ph - 0.02) / (pitch / 3)) % 2)
+    half = 0.5 * math.pi * 2.5 / 50
+    g = float(np.linspace(-half, half, 13)[7])
+    moved = lambda ph: d.run_law.theta(ph) + 2 * g * (np.round((ph - 0.02) / (pitch / 3)) % 2)
     jt = 0.16 / math.cos(math.radians(20.0))
     r50 = lambda ph: 50.0 + 0 * ph
     pr = prove_pair(dd.profiles[0], dd.profiles[1], 75.0, moved, phis, r50, pitch_mm=math.pi * 2.5, windows=2)
     assert pr.pairs_drive.dtype.kind == "i" and pr.pairs_coast.dtype.kind == "i"
     assert pr.jams == 0 and pr.offset[0::2].tolist() == [0.0] * 3
-    assert np.all(np.abs(pr.offset[1::2] - 0.01) < jt / 100)
-    assert pr.te_drive[1::2] == pytest.approx(np.full(3, 0.01 - jt / 100), abs=5e-6)
+    assert pr.offset[1::2].tolist() == [g] * 3  # each searched cold from the law's position: the scan meets g
+    assert pr.te_drive[1::2] == pytest.approx(np.full(3, g - jt / 100), abs=5e-6)
     assert pr.te_drive[0::2] == pytest.approx(np.full(3, -jt / 100), abs=5e-6)
     small = prove_pair(dd.profiles[0], dd.profiles[1], 75.0, moved, phis, r50, pitch_mm=0.2, windows=2)
     assert small.jams == 3 and np.all(np.isnan(small.phi_drive[1::2])) and np.all(small.least_overlap[1::2] > 0.1)
