@@ -308,7 +308,8 @@ def _synthetic_search(monkeypatch, p, points):
 
 
 def test_law_search_refused_by_every_candidate_names_each_once_and_tries_at_most_five(monkeypatch):
-    """Points made from seed 002's best: a repeat of one shaper's ripple to 4 decimals is tried once, a shaper at
+    """Points made from seed 002's best: a repeat of one shaper's ripple to 4 decimals (0.02456 and 0.024604) is tried
+    once, a shaper at
     most twice, five candidates in all; every refusal listed with its shaper and ripple."""
     from propulsor.errors import InputError
     from propulsor.parts.noncircular_pair.design import design_generated
@@ -317,7 +318,7 @@ def test_law_search_refused_by_every_candidate_names_each_once_and_tries_at_most
     p = _part("ncg_seed002")
     best = screened(p).search.points[0]
     mk = lambda d0, r: dataclasses.replace(best, d0_mm=d0, ripple=r)
-    points = [mk(25.0, 0.02456), mk(25.0, 0.0245649), mk(38.0, 0.02456), mk(25.0, 0.0250), mk(25.0, 0.0251),
+    points = [mk(25.0, 0.02456), mk(25.0, 0.024604), mk(38.0, 0.02456), mk(25.0, 0.0250), mk(25.0, 0.0251),
               mk(50.0, 0.0252), mk(38.0, 0.0253), mk(38.0, 0.0254), mk(75.0, 0.0255), mk(100.0, 0.0256)]
     _synthetic_search(monkeypatch, p, points)
     calls = _record_generate_pair(monkeypatch, [RuntimeError(f"no: {k}") for k in range(9)])

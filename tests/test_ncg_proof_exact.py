@@ -427,7 +427,7 @@ def test_compare_builds_the_other_method_at_the_same_module_and_proves_one_leg(m
     from propulsor.errors import InputError
     from propulsor.parts.noncircular_pair import proofs
 
-    p = _part("ncg_seed002", proof_phases_per_tooth=6)
+    p = _part("ncg_seed002", proof_phases_per_tooth=6, module_mm=0.0, center_distance_mm=125.0)
     got = []
 
     def other(q, prog):
