@@ -761,3 +761,35 @@ def test_proof_of_a_pair_mounted_a_millimetre_apart_is_the_sweep_of_the_whole_ou
     assert pr.phi_drive == pytest.approx(phis - ref.free_back, abs=1e-9)
     assert pr.phi_coast == pytest.approx(phis + ref.free_fwd, abs=1e-9)
     assert pr.pairs_drive.tolist() == ref.pairs_drive.tolist()
+
+
+def test_a_searched_free_position_that_the_sweep_finds_overlapping_is_a_jam_of_that_overlap(monkeypatch):
+    """The sweep at the searched position is the judge: where it measures overlap (here 5 mm^2, made up for the first
+    such phase) the phase is a jam with that least overlap; the window's next phases are proved as before."""
+    import dataclasses
+
+    from propulsor.parts.noncircular_pair import pair_proof
+
+    real = pair_proof.transmission_sweep
+    single = []
+
+    def sweep(*a, **kw):
+        tr = real(*a, **kw)
+        if len(a[5]) == 1:
+            single.append(float(a[5][0]))
+            if len(single) == 1:
+                return dataclasses.replace(tr, overlap_area=np.array([5.0]))
+        return tr
+
+    monkeypatch.setattr(pair_proof, "transmission_sweep", sweep)
+    _, dd = _circular()
+    d = dd.d
+    half = 0.5 * math.pi * 2.5 / 50
+    g = float(np.linspace(-half, half, 13)[7])
+    phis = np.arange(4) * (2 * math.pi / 40 / 4) + 0.02
+    moved = lambda ph: d.run_law.theta(ph) + 2 * g
+    pr = pair_proof.prove_pair(dd.profiles[0], dd.profiles[1], 75.0, moved, phis, lambda ph: 50.0 + 0 * ph,
+                               pitch_mm=math.pi * 2.5, windows=1)
+    assert len(single) == 4 and pr.jams == 1 and pr.least_overlap.tolist() == [5.0, 0.0, 0.0, 0.0]
+    assert math.isnan(pr.phi_drive[0]) and math.isnan(pr.phi_coast[0]) and pr.pairs_drive[0] == 0
+    assert np.all(np.isfinite(pr.phi_drive[1:])) and pr.offset[0] == g
