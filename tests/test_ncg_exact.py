@@ -1674,6 +1674,9 @@ def test_load_per_tooth_of_a_printed_pair_takes_the_plastics_own_elasticity():
     tl = analyse(d, dd.mount, p, c_phi, c_te, 0.2 * pitch, 0.3 * pitch, step_deg=1.0)
     assert tl.material == material("PLA")
     assert tl.Z_E == pytest.approx(math.sqrt(3000.0 / (2 * math.pi * (1 - 0.36 ** 2))), rel=1e-12)
+    # c' of ISO 6336-1 at z_n = 20 / 40, x = +-0.5, C_B = 0.975, scaled by E / E_steel = 3000 / 206000
+    cp = 0.8 * 0.975 / 0.06113075 * 3000.0 / 206000.0
+    assert tl.c_prime == (pytest.approx(cp, rel=1e-6), pytest.approx(cp, rel=1e-6))
     # a span under one step of the driver (0.4 deg of 1 deg): its two ends only (theta = 2 phi)
     short = analyse(d, dd.mount, p, c_phi, c_te, 0.5 * pitch, math.radians(0.2), step_deg=1.0)
     assert np.degrees(short.theta) == pytest.approx([9.0, 9.4], abs=1e-9)
