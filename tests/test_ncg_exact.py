@@ -1657,3 +1657,26 @@ def test_pair_design_of_the_elliptical_file_with_its_bores_profiles_and_mounting
     from propulsor.parts.noncircular_pair.design import gear_profiles
 
     assert [q.area(1e-4) for q in gear_profiles(p, d)] == [q.area(1e-4) for q in dd.profiles]
+
+
+def test_load_per_tooth_of_a_printed_pair_takes_the_plastics_own_elasticity():
+    """PLA (E = 3000 MPa, nu = 0.36) on both wheels: Z_E = sqrt(E / (2 pi (1 - nu^2))) of ISO 6336-2 eq. 18 with both
+    materials PLA, not steel's 189.8 for one of them; the circular pair placed at its constant transmission error
+    -j_t / (2 r_H) over a third of a pitch."""
+    from propulsor.gears.gear_materials import material
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import analyse
+
+    p, dd = _circular_pair(gear_material="PLA")
+    d = dd.d
+    c_phi = np.linspace(0.0, 2 * math.pi, 401)
+    c_te = np.full(401, -0.16 / math.cos(math.radians(20.0)) / 100.0)
+    pitch = 2 * math.pi / 40
+    tl = analyse(d, dd.mount, p, c_phi, c_te, 0.2 * pitch, 0.3 * pitch, step_deg=1.0)
+    assert tl.material == material("PLA")
+    assert tl.Z_E == pytest.approx(math.sqrt(3000.0 / (2 * math.pi * (1 - 0.36 ** 2))), rel=1e-12)
+    # c' of ISO 6336-1 at z_n = 20 / 40, x = +-0.5, C_B = 0.975, scaled by E / E_steel = 3000 / 206000
+    cp = 0.8 * 0.975 / 0.06113075 * 3000.0 / 206000.0
+    assert tl.c_prime == (pytest.approx(cp, rel=1e-6), pytest.approx(cp, rel=1e-6))
+    # a span under one step of the driver (0.4 deg of 1 deg): its two ends only (theta = 2 phi)
+    short = analyse(d, dd.mount, p, c_phi, c_te, 0.5 * pitch, math.radians(0.2), step_deg=1.0)
+    assert np.degrees(short.theta) == pytest.approx([9.0, 9.4], abs=1e-9)

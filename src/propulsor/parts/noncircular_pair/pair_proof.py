@@ -149,6 +149,8 @@ def prove_pair(driver_profile, driven_profile, L: float, theta_of_phi, phis, r_r
     search = 0.5 * (pitch_mm if pitch_mm else 8.0) / float(np.min(rr))
     margin_a = math.asin(min(1.0, (reach + 1.0) / L)) + max_angle + 2 * search
     r_in = max(0.0, min(L - reach, r_root) - 1.0)
+    # the driver's likewise: the driven tips reach to L - r_dvn from its axis (deeper than its root on a jammed mount)
+    r_in_drv = max(0.0, min(L - r_dvn, drv.r_min) - 1.0)
     # half-width (about the line of centres) of the driver's body angles whose points can come
     # within r_dvn + 1 of the driven axis: cos(beta + theta) <= (R^2 - L^2 - rho^2) / (2 L rho)
     rho = np.linspace(max(drv.r_min, 1e-3), reach, 64)
@@ -175,7 +177,7 @@ def prove_pair(driver_profile, driven_profile, L: float, theta_of_phi, phis, r_r
         # the driver part that can come within the driven wheel's outer radius during the window
         tha, thb = float(theta[idx].min()), float(theta[idx].max())
         dcrop = outline(crop_to_sector(drv.section, math.pi - thb - hw_drv, math.pi - tha + hw_drv,
-                                      max(0.0, drv.r_min - 1.0), reach + 1.0))
+                                      r_in_drv, reach + 1.0))
         _axis_annulus(dcrop)
         tmap = {float(p): float(t) for p, t in zip(phis[idx], theta[idx])}
         tr = transmission_sweep(dcrop, (L, 0.0), crop, (0.0, 0.0), lambda p: tmap[float(p)], phis[idx],
