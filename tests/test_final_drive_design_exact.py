@@ -93,3 +93,92 @@ def test_the_ring_is_cut_by_a_shaper_of_the_parts_tip_radius():
                                      rho_a0_star=rho, thinning_n_mm=0.15)
         other = abs(ring.profile.holes[0].signed_area())
         assert (other == pytest.approx(area, rel=1e-12)) is same, rho
+
+
+# ---- proofs.py: the carrier sweep -------------------------------------------------------------------------------------
+def test_carrier_sweep_is_the_windowed_sweep_of_each_mesh_on_the_finished_outlines(monkeypatch):
+    """0.025 steps a degree: ceil(360·0.025) = 9 steps a turn (10 at 361°).  Each mesh is sweep_pair_windowed of its
+    members' outlines within 1 µm (policy), edges split at max(0.1, 0.05·m) = 0.5 mm, reach one module, clearance
+    limit 0, at the poses of member_poses; the sweep counts its six meshes to the build's reporter."""
+    from propulsor.checks.motion import outline, sweep_pair_windowed
+    from propulsor.parts.final_drive.design import design
+    from propulsor.parts.final_drive.proofs import member_poses, start_sweep, sweep_results
+    from propulsor.progress import Reporter
+
+    from test_final_drive_exact import _PlotWriter
+
+    class Said(Reporter):
+        def __init__(self):
+            super().__init__(None)
+            self.said, self.counts = [], []
+
+        def __call__(self, message):
+            self.said.append(message)
+
+        def count(self, phase, done, total, unit=""):
+            self.counts.append((phase, done, total, unit))
+
+    monkeypatch.setenv("PROPULSOR_JOBS", "1")
+    p = _params()
+    object.__setattr__(p, "sweep_steps_per_deg", 0.025)            # below the parameter's least: a short test
+    dd = design(p)
+    w, built = _PlotWriter(), {}
+    w.progress = Said()
+    start_sweep(dd, w, built)
+    sweep_results(dd, w, built)
+    assert w.progress.said == ["interference sweep over one carrier turn (9 steps), in a second process while the "
+                               "solids are built", "interference sweep done"]
+    assert w.progress.counts == [("interference sweep", k, 6, "mesh") for k in range(7)]
+    sweeps = built["sweeps"]
+    psi = [2 * math.pi * j / 9 for j in range(9)]
+    M_sun, M_ring, M_pl = member_poses(p, dd.ps, psi)
+    sun_o, planet_o, ring_o = dd.outlines
+    A = {name: outline(o.profile, 1e-3, 0.5) for name, o in (("sun", sun_o), ("planet", planet_o), ("ring", ring_o))}
+    checks = []
+    for i, s in enumerate(sweeps):
+        k, tag = divmod(i, 2)
+        name = f"mesh_sun_planet{k + 1}" if tag == 0 else f"mesh_planet{k + 1}_ring"
+        want = sweep_pair_windowed(A["sun" if tag == 0 else "ring"], M_sun if tag == 0 else M_ring, A["planet"],
+                                   M_pl[k], reach=10.0, chord_tol=1e-3, max_segment=0.5, name=name,
+                                   clearance_limit=0.0)
+        assert s.name == name and list(s.psi) == pytest.approx(psi, rel=1e-15, abs=1e-15)
+        assert list(s.overlap_mm2) == list(want.overlap_area) and list(s.clearance_mm) == list(want.clearance)
+        got = [(c.name, c.passed, c.value, c.limit, c.unit) for c in s.result.checks()]
+        assert got == [(c.name, c.passed, c.value, c.limit, c.unit) for c in want.checks()]
+        checks += got
+    assert [(c.name, c.passed, c.value, c.limit, c.unit) for c in w.checks] == checks
+    assert [c[1] for c in checks] == [True] * 12 and {c[3] for c in checks[1::2]} == {0.0}
+
+
+# ---- proofs.py: the sheet and the outline checks ----------------------------------------------------------------------
+class _Said:
+    """The parts of the output writer the sheet and outline steps use, with what they said."""
+
+    def __init__(self):
+        self.derived, self.checks, self.tables, self.said = {}, [], {}, []
+
+    def progress(self, message):
+        self.said.append(message)
+
+    def add_checks(self, checks):
+        self.checks += list(checks)
+
+    def add_table(self, name, columns, rows):
+        self.tables[name] = (columns, rows)
+
+
+def test_the_sheet_and_outline_steps_say_what_they_do_and_use_the_tips_the_gears_are_made_with():
+    """Unshifted gears (x = 0): the planet's tip is m·(z + 2) = 220 mm in both sheets, the sun's m·(z + 2) = 180 mm,
+    and the ring's as the set has it."""
+    from propulsor.parts.final_drive.design import design
+    from propulsor.parts.final_drive.proofs import outline_checks, sheet_and_conditions
+
+    dd = design(_params(x_sun=0.0, x_planet=0.0))
+    w = _Said()
+    sheet_and_conditions(dd, w, {})
+    outline_checks(dd, w, {})
+    assert w.said == ["planetary set: sheet and conditions", "generated outlines (rack: sun, planets; shaper: ring)"]
+    (tip,) = [r for r in w.tables["sheet_sun_planet"][1] if r[1] == "d_a"]
+    assert tip[:3] == ["tip diameter", "d_a", "mm"] and tip[3:] == pytest.approx([180.0, 220.0], abs=1e-9)
+    (ring_tip,) = [r for r in w.tables["sheet_planet_ring"][1] if r[1] == "d_a"]
+    assert ring_tip[3] == pytest.approx(220.0, abs=1e-9) and ring_tip[4] == dd.ps.d_a_ring
