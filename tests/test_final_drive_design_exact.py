@@ -182,3 +182,15 @@ def test_the_sheet_and_outline_steps_say_what_they_do_and_use_the_tips_the_gears
     assert tip[:3] == ["tip diameter", "d_a", "mm"] and tip[3:] == pytest.approx([180.0, 220.0], abs=1e-9)
     (ring_tip,) = [r for r in w.tables["sheet_planet_ring"][1] if r[1] == "d_a"]
     assert ring_tip[3] == pytest.approx(220.0, abs=1e-9) and ring_tip[4] == dd.ps.d_a_ring
+
+
+def test_the_planetary_set_takes_every_number_of_the_parameters():
+    """Not the set's defaults (the part's own numbers are seed 004's, which are the defaults): a shaper of 25 teeth
+    shifted 0.1, faces 60/70/90 mm and the ring's x = 1.2 as given (no coaxiality correction)."""
+    from propulsor.parts.final_drive.design import planetary_set
+
+    ps = planetary_set(_params(shaper_z0=25, shaper_x0=0.1, width_sun_mm=60.0, width_planet_mm=70.0,
+                               width_ring_mm=90.0, x_ring=1.2, ring_shift_for_coaxiality=False))
+    assert (ps.z0, ps.x0, ps.b_sun, ps.b_planet, ps.b_ring, ps.x_ring) == (25, 0.1, 60.0, 70.0, 90.0, 1.2)
+    assert (ps.z_sun, ps.z_planet, ps.z_ring, ps.m, ps.x_sun, ps.x_planet, ps.n_planets) == (16, 20, 56, 10.0, 0.5,
+                                                                                             0.5, 3)
