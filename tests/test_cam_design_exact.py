@@ -110,3 +110,28 @@ def test_no_candidate_names_the_closest_with_its_violations():
     assert one.reason == (f"{LIN}: smallest hub-speed variation of eq. 8, {row['hub_speed_variation_pct']:.3f} %, "
                           f"among 1 feasible of 1 candidates; tightest limits: "
                           f"{_margins_text(row, DesignLimits(**LOOSE))}")
+
+
+def test_the_search_evaluates_and_verifies_with_the_return_phase_it_was_given():
+    """A minimum-jerk return moves the cam over the return phase (its H, its pressure angle there) and the idle
+    shoes: every row, the leader's verification and the chosen row are those of that return phase."""
+    from propulsor.laws.cam_motion import ReturnPhase
+
+    rp = ReturnPhase("min_jerk")
+    limits = DesignLimits(**LOOSE)
+    grid = SearchGrid(linear_k0=(0.01, 0.01, 1), quadratic_k0=(0.025, 0.025, 1), exponential_k0=(0, 0, 0),
+                      exponential_k1=(0, 0, 0))
+    res = search_design(MECH, limits, grid, rp)
+    lin, quad = CurvatureLaw("linear", 0.01), CurvatureLaw("quadratic", 0.025)
+    rows = {r["label"]: r for r in res.rows}
+    plain = evaluate(MECH, lin, limits)
+    want = evaluate(MECH, lin, limits, rp)
+    assert want["H_max_mm"] != pytest.approx(plain["H_max_mm"], rel=1e-6)       # the return phase matters
+    for k, v in want.items():
+        got = rows[LIN][k]
+        assert got == v or (got != got and v != v), k
+    ver = verify(MECH, res.law, limits, rp)
+    assert res.chosen == dict(evaluate(MECH, res.law, limits, rp, estimate_error=True), **ver, rank=1)
+    other = verify(MECH, res.law, limits)
+    assert ver["ground_clearance_min_mm"] != pytest.approx(other["ground_clearance_min_mm"], rel=1e-6)
+    assert res.law in (lin, quad)
