@@ -135,3 +135,27 @@ def test_the_search_evaluates_and_verifies_with_the_return_phase_it_was_given():
     other = verify(MECH, res.law, limits)
     assert ver["ground_clearance_min_mm"] != pytest.approx(other["ground_clearance_min_mm"], rel=1e-6)
     assert res.law in (lin, quad)
+
+
+def test_a_blow_up_row_holds_every_column_with_nothing_measured():
+    """The path of K = 0.2·|φ| turns radial at 20.2°: its row has every column of a row, the figures not a number,
+    the flags false, the violation the refusal's message."""
+    from propulsor.errors import InputError
+    from propulsor.laws.cam_motion import cam_motion
+
+    law = CurvatureLaw("linear", 0.2)
+    with pytest.raises(InputError) as e:
+        cam_motion(MECH, law)
+    row = evaluate(MECH, law, DesignLimits())
+    figures = ["hub_speed_variation_pct", "gamma_max_deg", "gamma_max_support_deg", "R_min_mm", "R_outer_min_mm",
+               "undercut", "sigma_max_MPa", "sigma_return_max_MPa", "shoe_radius_min_mm", "shoe_self_intersecting",
+               "footprint_ratio", "H_min_mm", "H_max_mm", "H_support_end_mm", "return_lift_mm", "H_error_mm",
+               "hub_height_variation_mm", "ground_clearance_min_mm"]
+    assert list(row) == ["law", "k0", "k1", "label", "feasible", "violations"] + figures
+    assert [row[k] for k in ("law", "k0", "k1", "label", "feasible")] == ["linear", 0.2, 0.0, "K = 0.2·|φ|", False]
+    assert row["violations"] == f"blow-up: {e.value}" and "at φ = 20.2°" in row["violations"]
+    for k in figures:
+        if k in ("undercut", "shoe_self_intersecting"):
+            assert row[k] is False, k
+        else:
+            assert type(row[k]) is float and math.isnan(row[k]), k
