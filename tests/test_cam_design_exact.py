@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 
 from propulsor.laws.cam_design import DesignLimits, SearchGrid, evaluate, search_design, verify
@@ -159,3 +160,23 @@ def test_a_blow_up_row_holds_every_column_with_nothing_measured():
             assert row[k] is False, k
         else:
             assert type(row[k]) is float and math.isnan(row[k]), k
+
+
+@pytest.mark.parametrize("law, inner, outer", [
+    (CurvatureLaw("quadratic", 0.08), True, False),       # K up to 0.065/mm: a convex path radius of 15.4 mm < r
+    (CurvatureLaw("exponential", 0.012, 1.0), False, True),   # K down to −27/mm: a concave radius of 0.04 mm
+    (CurvatureLaw("quadratic", 0.05), False, False),      # K within −0.025 ... 0.031/mm: radii of 32 mm and more
+])
+def test_undercut_is_a_path_curved_tighter_than_the_roller_on_either_wall(law, inner, outer):
+    """The cam's working profile (convex path, K > 0) is undercut where the path's radius 1/K is under the roller's
+    r = 20 mm; the outer channel wall (concave path, K < 0) where 1/|K| is under r plus the channel clearance."""
+    from propulsor import policy
+    from propulsor.laws.cam_motion import cam_motion
+
+    tab = cam_motion(MECH, law).table(np.linspace(0.0, 2 * math.pi, policy.CAM_TURN_SAMPLES))
+    K = tab.K_path
+    assert bool(np.any(K > 1 / MECH.r)) is inner
+    assert bool(np.any(-K > 1 / (MECH.r + MECH.channel_clearance))) is outer
+    row = evaluate(MECH, law, DesignLimits())
+    assert row["undercut"] is (inner or outer)
+    assert ("undercut (cam profile radius of curvature < 0)" in row["violations"].split("; ")) is (inner or outer)
