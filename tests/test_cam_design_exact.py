@@ -180,3 +180,23 @@ def test_undercut_is_a_path_curved_tighter_than_the_roller_on_either_wall(law, i
     row = evaluate(MECH, law, DesignLimits())
     assert row["undercut"] is (inner or outer)
     assert ("undercut (cam profile radius of curvature < 0)" in row["violations"].split("; ")) is (inner or outer)
+
+
+def test_the_outer_walls_least_radius_and_a_stress_not_a_number_taken_as_infinite():
+    """K = 0.05·φ² is concave near φ = ±π (K down to −0.0254/mm): the outer wall's least radius of curvature is
+    1/|K| − (r + channel clearance) = 19.13 mm.  K = 0.08·φ² undercuts the return: its Hertz stress there is not a
+    number (663 samples), taken as infinite."""
+    from propulsor import policy
+    from propulsor.laws.cam_motion import cam_motion
+
+    phi = np.linspace(0.0, 2 * math.pi, policy.CAM_TURN_SAMPLES)
+    law = CurvatureLaw("quadratic", 0.05)
+    K = cam_motion(MECH, law).table(phi).K_path
+    row = evaluate(MECH, law, DesignLimits())
+    assert row["R_outer_min_mm"] == pytest.approx(1 / abs(K.min()) - (MECH.r + MECH.channel_clearance), rel=1e-9)
+    assert round(row["R_outer_min_mm"], 2) == 19.13
+    tab = cam_motion(MECH, CurvatureLaw("quadratic", 0.08)).table(phi)
+    assert np.isnan(tab.sigma_H[~tab.support]).any()
+    row = evaluate(MECH, CurvatureLaw("quadratic", 0.08), DesignLimits())
+    assert row["sigma_return_max_MPa"] == math.inf and math.isfinite(row["sigma_max_MPa"])
+    assert f"Hertz stress inf MPa > 1500 MPa" in row["violations"]
