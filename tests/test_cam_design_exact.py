@@ -200,3 +200,23 @@ def test_the_outer_walls_least_radius_and_a_stress_not_a_number_taken_as_infinit
     row = evaluate(MECH, CurvatureLaw("quadratic", 0.08), DesignLimits())
     assert row["sigma_return_max_MPa"] == math.inf and math.isfinite(row["sigma_max_MPa"])
     assert "Hertz stress inf MPa > 1500 MPa" in row["violations"]
+
+
+def test_a_looping_shoe_and_a_support_stress_not_a_number_are_reported():
+    """K = −0.008·|φ| makes a shoe that crosses itself (its polyline checked here); K = 0.0825·φ² turns the path
+    back within the support (γ near 180°): its support stress is not a number there, taken as infinite."""
+    from propulsor import policy
+    from propulsor.laws.cam_motion import cam_motion
+    from propulsor.laws.shoe import shoe_loop_check, shoe_table
+
+    law = CurvatureLaw("linear", -0.008)
+    s = math.pi / 4
+    lc = shoe_loop_check(shoe_table(cam_motion(MECH, law).support, np.linspace(-s, s, policy.CAM_SUPPORT_SAMPLES)))
+    assert lc.self_intersecting is True
+    row = evaluate(MECH, law, DesignLimits())
+    assert row["shoe_self_intersecting"] is True
+    assert f"shoe cusp/loop (min radius {lc.radius_min:.2f} mm, self-intersecting True)" in row["violations"]
+    law = CurvatureLaw("quadratic", 0.0825)
+    tab = cam_motion(MECH, law).table(np.linspace(0.0, 2 * math.pi, policy.CAM_TURN_SAMPLES))
+    assert np.isnan(tab.sigma_H[tab.support]).any()
+    assert evaluate(MECH, law, DesignLimits())["sigma_max_MPa"] == math.inf
