@@ -1286,9 +1286,18 @@ def test_the_memory_ceiling_lowers_the_address_space_only_where_it_can():
     vm = int(next(line.split()[1] for line in status.splitlines() if line.startswith("VmSize:"))) * 1024
     used = memory.address_space()
     assert abs(used - vm) < 64 << 20  # read a moment apart
-    soft0, hard0 = resource.getrlimit(resource.RLIMIT_AS)
-    if soft0 != resource.RLIM_INFINITY or hard0 != resource.RLIM_INFINITY:
+    outer, hard0 = resource.getrlimit(resource.RLIMIT_AS)
+    if hard0 != resource.RLIM_INFINITY:
         pytest.skip("the address space is limited already (ulimit -v)")
+    # a soft limit of the caller (mutation/run.py caps its tests at 8 GiB) is lifted for the test and put back after
+    resource.setrlimit(resource.RLIMIT_AS, (resource.RLIM_INFINITY, hard0))
+    try:
+        _memory_ceiling_cases(used, resource.RLIM_INFINITY, hard0)
+    finally:
+        resource.setrlimit(resource.RLIMIT_AS, (outer, hard0))
+
+
+def _memory_ceiling_cases(used, soft0, hard0):
     ceiling = int(used * 2.5) // 4096 * 4096
     with memory.memory_ceiling(ceiling):
         assert resource.getrlimit(resource.RLIMIT_AS) == (ceiling, hard0)
@@ -1310,6 +1319,104 @@ def test_the_memory_ceiling_lowers_the_address_space_only_where_it_can():
     with pytest.raises(KeyError), memory.memory_ceiling(ceiling):
         raise KeyError("x")
     assert resource.getrlimit(resource.RLIMIT_AS) == (soft0, hard0)
+
+
+def _limits_inside(monkeypatch, used, ceiling=None):
+    """RLIMIT_AS inside memory_ceiling when the process is said to map `used` bytes (the soft limit lifted for the
+    call; nothing is allocated inside)."""
+    monkeypatch.setattr(memory, "address_space", lambda: used)
+    outer, hard = resource.getrlimit(resource.RLIMIT_AS)
+    resource.setrlimit(resource.RLIMIT_AS, (resource.RLIM_INFINITY, hard))
+    try:
+        with (memory.memory_ceiling() if ceiling is None else memory.memory_ceiling(ceiling)):
+            inside = resource.getrlimit(resource.RLIMIT_AS)
+        after = resource.getrlimit(resource.RLIMIT_AS)
+    finally:
+        resource.setrlimit(resource.RLIMIT_AS, (outer, hard))
+    assert after == (resource.RLIM_INFINITY, hard)
+    return inside
+
+
+def test_the_memory_ceiling_applies_up_to_half_of_it_mapped_and_defaults_to_the_policys():
+    """Applied while the process maps at most half the ceiling (ceiling // 2 bytes), not one byte more; the default
+    ceiling is policy.CHECK_MEMORY_CEILING (2 GiB); unknown use (no /proc): not applied."""
+    _, hard = resource.getrlimit(resource.RLIMIT_AS)
+    if hard != resource.RLIM_INFINITY:
+        pytest.skip("the address space's hard limit is set (ulimit -H -v)")
+    mp = pytest.MonkeyPatch()
+    try:
+        c = 64 << 30
+        assert _limits_inside(mp, c // 2, c) == (c, hard)
+        assert _limits_inside(mp, c // 2 + 1, c) == (resource.RLIM_INFINITY, hard)
+        assert _limits_inside(mp, None, c) == (resource.RLIM_INFINITY, hard)
+        assert _limits_inside(mp, 1 << 20) == (CHECK_MEMORY_CEILING, hard) and CHECK_MEMORY_CEILING == 2048 << 20
+    finally:
+        mp.undo()
+
+
+def test_the_memory_ceiling_lowers_a_higher_soft_limit_and_keeps_a_lower_hard_one():
+    """A soft limit above the ceiling is lowered to it (and put back); a hard limit below the ceiling leaves the
+    limits as they are (in a forked child: a hard limit cannot be raised again)."""
+    soft0, hard0 = resource.getrlimit(resource.RLIMIT_AS)
+    if hard0 != resource.RLIM_INFINITY:
+        pytest.skip("the address space's hard limit is set (ulimit -H -v)")
+    c = 64 << 30
+    resource.setrlimit(resource.RLIMIT_AS, (c + 4096, hard0))
+    try:
+        mp = pytest.MonkeyPatch()
+        mp.setattr(memory, "address_space", lambda: 1 << 20)
+        try:
+            with memory.memory_ceiling(c):
+                assert resource.getrlimit(resource.RLIMIT_AS) == (c, hard0)
+            assert resource.getrlimit(resource.RLIMIT_AS) == (c + 4096, hard0)
+            r, w = os.pipe()
+            pid = os.fork()
+            if pid == 0:                                          # the child: a hard limit just below the ceiling
+                try:
+                    resource.setrlimit(resource.RLIMIT_AS, (c - 4096, c - 4096))
+                    with memory.memory_ceiling(c):
+                        got = resource.getrlimit(resource.RLIMIT_AS)
+                    os.write(w, repr(got).encode())
+                finally:
+                    os._exit(0)
+            os.close(w)
+            os.waitpid(pid, 0)
+            with os.fdopen(r) as f:
+                assert f.read() == repr((c - 4096, c - 4096))
+            # a hard (and soft) limit above the ceiling: lowered to it
+            r, w = os.pipe()
+            pid = os.fork()
+            if pid == 0:
+                try:
+                    resource.setrlimit(resource.RLIMIT_AS, (c, c))
+                    with memory.memory_ceiling(c - 8192):
+                        got = resource.getrlimit(resource.RLIMIT_AS)
+                    os.write(w, repr(got).encode())
+                finally:
+                    os._exit(0)
+            os.close(w)
+            os.waitpid(pid, 0)
+            with os.fdopen(r) as f:
+                assert f.read() == repr((c - 8192, c))
+        finally:
+            mp.undo()
+    finally:
+        resource.setrlimit(resource.RLIMIT_AS, (soft0, hard0))
+
+
+@pytest.mark.parametrize("content, error", [(b"", None), (b"x 1 2", None), (None, OSError)])
+def test_the_address_space_is_unknown_where_proc_says_nothing_readable(monkeypatch, content, error):
+    """/proc/self/statm empty (IndexError), not a number (ValueError) or missing (OSError): None."""
+    def fake_open(path, mode="r"):
+        assert (path, mode) == ("/proc/self/statm", "rb")
+        if error is not None:
+            raise error("no /proc")
+        return io.BytesIO(content)
+
+    monkeypatch.setattr(memory, "open", fake_open, raising=False)
+    assert memory.address_space() is None
+    monkeypatch.setattr(memory, "open", lambda path, mode="r": io.BytesIO(b"3 2 1"), raising=False)
+    assert memory.address_space() == 3 * os.sysconf("SC_PAGE_SIZE")
 
 
 # ------------------------------------------------------------------------------------------- mesh: the gaps of the first run
