@@ -885,3 +885,57 @@ def test_the_conditional_tooth_count_and_the_pressure_angle_of_a_flank_contact()
     np.testing.assert_allclose(np.cos(aw), 48.0 * math.cos(math.radians(20.0)) / o2p, rtol=1e-14)
     assert np.ptp(aw) > 1e-3                      # the pole moves as the sector turns
     np.testing.assert_allclose(g.ratio_flank(e, u), ratio_eq7(48.0, a, math.radians(20.0), aw), rtol=1e-14)
+
+
+def test_the_polysector_geometrys_refusals_in_full_and_eq1_as_printed():
+    from propulsor.gears.polysector import PolysectorGeometry, delta_eq1_printed
+
+    base = dict(m=3.0, z=36, z_c=10, i_s=3, z2=40)
+    assert _refusal(lambda: PolysectorGeometry(**{**base, "flows": 3})) == "flows = 3: must be 1 or 2"
+    assert PolysectorGeometry(**{**base, "flows": 1}).n_sectors == 3
+    assert _refusal(lambda: PolysectorGeometry(**{**base, "z": 33})) == (
+        "z = 33: must be a multiple of i_s·flows = 6 (sectors equally spaced in tooth phase)")
+    assert PolysectorGeometry(**{**base, "z": 33, "z_c": 9, "flows": 1}).k_gap == 2      # 33 = 3 x 11: one flow
+    assert _refusal(lambda: PolysectorGeometry(**{**base, "z_c": 12})) == (
+        "z_c = 12: too large for the gaps: eq. 2 z_c = z/i_s − (1…3) ≤ 11")
+    assert PolysectorGeometry(**{**base, "z_c": 11}).k_gap == 1
+    assert _refusal(lambda: PolysectorGeometry(**{**base, "z_c": 1})) == "z_c = 1: must be >= 2"
+    assert PolysectorGeometry(**{**base, "z_c": 2}).k_gap == 10
+    # eq. 1's delta as the seed prints it: (2 z_c - 1) pi / 2z - inv(alpha) + inv(alpha_a)
+    r_b, r_a = 54.0 * math.cos(ALPHA), 57.0
+    a_a = math.acos(r_b / r_a)
+    assert delta_eq1_printed(10, 36, ALPHA, r_b, r_a) == pytest.approx(
+        19 * math.pi / 72 - (math.tan(ALPHA) - ALPHA) + (math.tan(a_a) - a_a), rel=1e-14)
+
+
+def test_the_tip_lands_distance_from_the_gears_axis_against_a_dense_sampling():
+    from propulsor.gears.polysector import PolysectorGeometry
+
+    g = PolysectorGeometry(m=3.0, z=36, z_c=10, i_s=3, z2=40)
+    d_in, d_out = g.tip_land()
+    for e in (0.0, 4.5, 9.0):
+        a = g.center_distance(e)
+        inside = 0
+        for u in np.linspace(-0.3, 1.2, 31):
+            ox, oy = e * math.cos(u), e * math.sin(u)
+            ang = np.linspace(u - d_out, u - d_in, 20001)          # the land's arc about O', radius r_a
+            C = np.column_stack([ox + g.r_a * np.cos(ang), oy + g.r_a * np.sin(ang)])
+            brute = float(np.min(np.hypot(C[:, 0] - a, C[:, 1])))
+            assert g.tip_land_distance(e, u) == pytest.approx(brute, abs=1e-6)
+            beta = math.atan2(-oy, a - ox)
+            inside += (u - d_out) <= beta <= (u - d_in)
+        assert 0 < inside < 31                                     # both branches: the nearest point inside, an end
+
+
+def test_the_largest_offset_next_to_the_least_overlap_and_its_refusal():
+    from propulsor.gears.polysector import PolysectorGeometry
+
+    g = PolysectorGeometry(m=3.0, z=36, z_c=10, i_s=3, z2=40)
+    eps0 = g.epsilon_s(0.0)[1]
+    # asking for just under the overlap at e = 0: the largest offset is a few microns
+    e = g.max_offset(eps_min=eps0 - 1e-6)
+    assert 0.0 < e < 0.05
+    assert g.epsilon_s(e)[1] == pytest.approx(eps0 - 1e-6, abs=1e-9)
+    assert _refusal(lambda: g.max_offset(eps_min=eps0 + 1e-6)) == (
+        f"z_c = 10: eq. 4: ε_s = {eps0:.4f} < {eps0 + 1e-6} already at e = 0; more teeth per sector or more sectors "
+        "are needed")
