@@ -939,3 +939,48 @@ def test_the_largest_offset_next_to_the_least_overlap_and_its_refusal():
     assert _refusal(lambda: g.max_offset(eps_min=eps0 + 1e-6)) == (
         f"z_c = 10: eq. 4: ε_s = {eps0:.4f} < {eps0 + 1e-6} already at e = 0; more teeth per sector or more sectors "
         "are needed")
+
+
+def test_eq8_off_the_nominal_angle_and_the_tooth_position_rows_by_their_geometry():
+    from propulsor.gears.polysector import PolysectorGeometry, ratio_eq7, ratio_error_eq8, tooth_position_error
+
+    # eq. 8: (i_n - i_t) / i_n with i_n = r2 / (a - r2), at a working pressure angle of 23 deg
+    aw = math.radians(23.0)
+    i_n = 48.0 / (114.0 - 48.0)
+    assert ratio_error_eq8(48.0, 114.0, ALPHA, aw) == pytest.approx(
+        (i_n - ratio_eq7(48.0, 114.0, ALPHA, aw)) / i_n, rel=1e-14)
+    assert abs(ratio_error_eq8(48.0, 114.0, ALPHA, aw)) > 0.01
+    # the exit pose's record
+    g = PolysectorGeometry(m=3.0, z=36, z_c=10, i_s=3, z2=40)
+    pose = g.corner_pose(4.5)
+    d = g.tip_land()[0]
+    assert pose["u_exit"] == g.corner_exit(4.5, d) and pose["delta"] == d
+    u, a = pose["u_exit"], g.center_distance(4.5)
+    cx, cy = 4.5 * math.cos(u) + 57.0 * math.cos(u - d), 4.5 * math.sin(u) + 57.0 * math.sin(u - d)
+    assert pose["beta2"] == pytest.approx(math.atan2(cy, a - cx), abs=1e-15)
+    assert pose["O1C"] == pytest.approx(math.hypot(cx, cy), rel=1e-15)
+    # eq. 15-22: every point on the circle r_y about O1; the conditional gear's flank by its own involute; the left
+    # flank of tooth n the mirror of the right flank of tooth z_c + 1 - n
+    m, z, z_c, e, r_y = 3.0, 36, 3, 5.0, 56.0
+    rows = tooth_position_error(m, z, z_c, e, ALPHA, r_y)
+    assert [(r["tooth"], r["flank"]) for r in rows] == [(n, f) for n in (1, 2, 3) for f in ("right", "left")]
+    assert set(rows[0]) == {"tooth", "flank", "r_y", "x_cond", "y_cond", "x_sector", "y_sector", "R", "beta"}
+    z_cond = 2 * (54.0 + e) / m
+    r_b_cond = (54.0 + e) * math.cos(ALPHA)
+    a_y = math.acos(r_b_cond / r_y)
+    for r in rows:
+        off = r["tooth"] - 2
+        side = 1 if r["flank"] == "right" else -1
+        assert r["r_y"] == r_y
+        assert math.hypot(r["x_sector"], r["y_sector"] + e) == pytest.approx(r_y, abs=1e-9)
+        th = off * 2 * math.pi / z_cond + side * (math.pi / (2 * z_cond) + float(inv(ALPHA)) - (math.tan(a_y) - a_y))
+        assert (r["x_cond"], r["y_cond"] + e) == pytest.approx((r_y * math.sin(th), r_y * math.cos(th)), abs=1e-12)
+        assert r["R"] == pytest.approx(math.hypot(r["x_cond"] - r["x_sector"], r["y_cond"] - r["y_sector"]), rel=1e-15)
+        assert r["beta"] == pytest.approx(math.atan2(r["y_cond"] - r["y_sector"], r["x_cond"] - r["x_sector"]),
+                                          abs=1e-15)
+    for n in range(3):
+        right, left = rows[2 * n], rows[2 * (2 - n) + 1]
+        assert (left["x_sector"], left["y_sector"]) == pytest.approx((-right["x_sector"], right["y_sector"]), abs=1e-9)
+    # below the conditional base circle: no conditional point (nan), the sector's still found where it reaches
+    low = tooth_position_error(m, z, z_c, e, ALPHA, r_b_cond - 0.5)
+    assert all(math.isnan(r["x_cond"]) and math.isnan(r["R"]) and math.isnan(r["beta"]) for r in low)
