@@ -984,3 +984,30 @@ def test_eq8_off_the_nominal_angle_and_the_tooth_position_rows_by_their_geometry
     # below the conditional base circle: no conditional point (nan), the sector's still found where it reaches
     low = tooth_position_error(m, z, z_c, e, ALPHA, r_b_cond - 0.5)
     assert all(math.isnan(r["x_cond"]) and math.isnan(r["R"]) and math.isnan(r["beta"]) for r in low)
+
+
+def test_the_polysector_drives_losses_and_its_equations_of_motion_by_hand():
+    from propulsor.gears.polysector_dynamics import TorsionalModel, loss_eq12, loss_eq13
+
+    # eq. 12 / 13 (14 internal): the sum 1/z1 + 1/z2 of an external mesh, the difference of an internal one
+    f, m, aw, z1, z2, l1, l2 = 0.08, 3.0, math.radians(21.0), 20, 56, 4.0, 6.0
+    for internal, s in ((False, 1 / 20 + 1 / 56), (True, 1 / 20 - 1 / 56)):
+        assert loss_eq12(f, m, aw, z1, z2, l1, l2, internal) == pytest.approx(
+            f / (m * math.cos(aw)) * s * (16.0 + 36.0) / 10.0, rel=1e-14)
+        assert loss_eq13(f, 1.6, z1, z2, 0.9, internal) == pytest.approx(f * 1.6 * math.pi / 2 * s * 0.9, rel=1e-14)
+    # eq. 9-11: M q'' = -K q - B q' - (J3 + J45, J45) acc - (M4, M4), each link damped at zeta
+    tm = TorsionalModel(J1=1.0, J2=0.5, J3=0.2, J4=0.3, J5=0.4, c1=2.0e4, c2=3.0e4, i54=1.5, zeta=0.07, M4=12.0)
+    J45 = 0.3 + 0.4 * 1.5 ** 2
+    b1, b2 = tm.damping()
+    assert b2 / (2 * math.sqrt(3.0e4 * J45)) == pytest.approx(0.07, rel=1e-14)
+    assert b1 / (2 * math.sqrt(2.0e4 * (0.2 * J45 / (0.2 + J45) + J45))) == pytest.approx(0.07, rel=1e-14)
+    A, g, h = tm.state_matrices()
+    M = np.array([[0.2 + J45, J45], [J45, J45]])
+    rng = np.random.default_rng(5)
+    for _ in range(3):
+        y, acc = rng.normal(size=4), float(rng.normal())
+        dy = A @ y + g * acc + h
+        assert dy[:2] == pytest.approx(y[2:], abs=1e-15)
+        rhs = (-np.array([2.0e4 * y[0], 3.0e4 * y[1]]) - np.array([b1 * y[2], b2 * y[3]])
+               - np.array([0.2 + J45, J45]) * acc - np.array([12.0, 12.0]))
+        np.testing.assert_allclose(M @ dy[2:], rhs, rtol=1e-12, atol=1e-9)
