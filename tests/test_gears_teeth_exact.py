@@ -1011,3 +1011,31 @@ def test_the_polysector_drives_losses_and_its_equations_of_motion_by_hand():
         rhs = (-np.array([2.0e4 * y[0], 3.0e4 * y[1]]) - np.array([b1 * y[2], b2 * y[3]])
                - np.array([0.2 + J45, J45]) * acc - np.array([12.0, 12.0]))
         np.testing.assert_allclose(M @ dy[2:], rhs, rtol=1e-12, atol=1e-9)
+
+
+def test_the_polysector_drives_torque_from_its_own_motion():
+    from propulsor.gears.polysector_dynamics import TorsionalModel
+
+    tm = TorsionalModel(J1=1.0, J2=0.5, J3=0.2, J4=0.3, J5=0.4, c1=2.0e4, c2=3.0e4, i54=1.5, zeta=0.07, M4=12.0)
+    J45 = 0.3 + 0.4 * 1.5 ** 2
+    # at rest under the load: the static deflection stays, M1 = Pi' M4 throughout (both integrations)
+    for breaks in (None, [0.0, 10.0]):
+        r = tm.simulate(5.0, lambda q: np.full_like(q, 0.4), lambda q: np.zeros_like(q), 0.2, n_out=201, breaks=breaks)
+        np.testing.assert_allclose(r.q2, -12.0 / 2.0e4, rtol=1e-9)
+        np.testing.assert_allclose(r.q3, -12.0 / 3.0e4, rtol=1e-9)
+        np.testing.assert_allclose(r.M1, 0.4 * 12.0, rtol=1e-9)
+        assert r.M1_static == pytest.approx(0.4 * 12.0, rel=1e-15) and r.torque_factor == pytest.approx(1.0, rel=1e-9)
+        np.testing.assert_allclose(r.q1, 5.0 * r.t, rtol=1e-15)
+    # a rippled transmission: M1 = J2 Pi' acc + Pi' (J3 (acc + q2'') + J45 (acc + q2'' + q3'') + M4), acc = Pi'' w0^2,
+    # with q2'', q3'' the second differences of the motion the simulation returns
+    w0 = 5.0
+    P1 = lambda q: 0.4 + 0.02 * np.sin(3 * q)
+    P2 = lambda q: 0.06 * np.cos(3 * q)
+    r = tm.simulate(w0, P1, P2, 0.4, n_out=8001)
+    dt = r.t[1] - r.t[0]
+    d2 = lambda y: (y[2:] - 2 * y[1:-1] + y[:-2]) / dt ** 2
+    acc = P2(r.q1[1:-1]) * w0 ** 2
+    p1 = P1(r.q1[1:-1])
+    M1 = 0.5 * p1 * acc + p1 * (0.2 * (acc + d2(r.q2)) + J45 * (acc + d2(r.q2) + d2(r.q3)) + 12.0)
+    np.testing.assert_allclose(r.M1[1:-1], M1, rtol=2e-4)
+    assert np.ptp(r.M1) > 0.05
