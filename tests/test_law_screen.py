@@ -39,7 +39,10 @@ BAD = {
               "law.csv", _table_csv, r"works with driver_shift >= -0\.632, or driven_teeth >= 68"),
     "pitch_curve": ('law = "pitch_curve"\npitch_curve_file = "curve.csv"\ndriver_turns = 1\nmodule_mm = 2.5\n'
                     'driven_teeth = 40\ndriver_shift = 0.5\n', "curve.csv", _pitch_curve_csv,
-                    r"concave \|rho\|_min [\d.]+ mm needs a shaper with shaper_teeth <= 8"),
+                    # the catalogue shaper rolls e = 1.25 mm out: 7 teeth (r0 + e = 10.0 mm) fit inside the concave
+                    # 10.364 mm, 8 (11.25 mm) do not
+                    r"concave \|rho\|_min 10\.364 mm needs a shaper with shaper_teeth <= 7 "
+                    r"\(r0 < \|rho\| - e, e = \+1\.250 mm\)"),
 }
 
 
