@@ -1354,6 +1354,28 @@ def test_the_memory_ceiling_applies_up_to_half_of_it_mapped_and_defaults_to_the_
         mp.undo()
 
 
+
+def _limits_under_ceiling_in_child(limit: int, ceiling: int) -> str:
+    """repr of the address-space limits inside ``memory_ceiling(ceiling)`` in a forked child whose soft and hard limits
+    are set to ``limit`` first."""
+    import os
+    import resource
+
+    r, w = os.pipe()
+    pid = os.fork()
+    if pid == 0:
+        try:
+            resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+            with memory.memory_ceiling(ceiling):
+                got = resource.getrlimit(resource.RLIMIT_AS)
+            os.write(w, repr(got).encode())
+        finally:
+            os._exit(0)
+    os.close(w)
+    os.waitpid(pid, 0)
+    with os.fdopen(r) as f:
+        return f.read()
+
 def test_the_memory_ceiling_lowers_a_higher_soft_limit_and_keeps_a_lower_hard_one():
     """A soft limit above the ceiling is lowered to it (and put back); a hard limit below the ceiling leaves the
     limits as they are (in a forked child: a hard limit cannot be raised again)."""
@@ -1369,35 +1391,10 @@ def test_the_memory_ceiling_lowers_a_higher_soft_limit_and_keeps_a_lower_hard_on
             with memory.memory_ceiling(c):
                 assert resource.getrlimit(resource.RLIMIT_AS) == (c, hard0)
             assert resource.getrlimit(resource.RLIMIT_AS) == (c + 4096, hard0)
-            r, w = os.pipe()
-            pid = os.fork()
-            if pid == 0:                                          # the child: a hard limit just below the ceiling
-                try:
-                    resource.setrlimit(resource.RLIMIT_AS, (c - 4096, c - 4096))
-                    with memory.memory_ceiling(c):
-                        got = resource.getrlimit(resource.RLIMIT_AS)
-                    os.write(w, repr(got).encode())
-                finally:
-                    os._exit(0)
-            os.close(w)
-            os.waitpid(pid, 0)
-            with os.fdopen(r) as f:
-                assert f.read() == repr((c - 4096, c - 4096))
+            # in a forked child (a hard limit cannot be raised again): a hard limit just below the ceiling is kept
+            assert _limits_under_ceiling_in_child(c - 4096, c) == repr((c - 4096, c - 4096))
             # a hard (and soft) limit above the ceiling: lowered to it
-            r, w = os.pipe()
-            pid = os.fork()
-            if pid == 0:
-                try:
-                    resource.setrlimit(resource.RLIMIT_AS, (c, c))
-                    with memory.memory_ceiling(c - 8192):
-                        got = resource.getrlimit(resource.RLIMIT_AS)
-                    os.write(w, repr(got).encode())
-                finally:
-                    os._exit(0)
-            os.close(w)
-            os.waitpid(pid, 0)
-            with os.fdopen(r) as f:
-                assert f.read() == repr((c - 8192, c))
+            assert _limits_under_ceiling_in_child(c, c - 8192) == repr((c - 8192, c))
         finally:
             mp.undo()
     finally:
