@@ -58,3 +58,63 @@ def test_the_same_height_as_the_bisection_bit_for_bit(kind, c):
         assert len(calls) <= halvings // 2  # the point of it: 21-22 halvings, a third of the evaluations
     else:
         assert len(calls) <= halvings + 1
+
+
+def _counted(thickness):
+    calls = []
+
+    def f(h):
+        calls.append(h)
+        return thickness(h)
+    return f, calls
+
+
+def _falling(kind, c, t_min=0.625):
+    """More lands of a tooth falling with the height: convex (an exponential), linear (t_min exactly at h = c), and
+    tips lost on one side only above 0.9 c (the right or the left flank stops short)."""
+    def thickness(h):
+        if kind == "convex":
+            return (3.0 * math.exp(-1.6 * h / c), ("right", h), ("left", h))
+        if kind == "linear":
+            return (t_min + (c - h), ("right", h), ("left", h))
+        if h > 0.9 * c:
+            return (-1.0, None, ("left", h)) if kind == "right_stops" else (-1.0, ("right", h), None)
+        return (2.9 - (2.9 - t_min) * (h / c) ** 1.3, ("right", h), ("left", h))
+    return thickness
+
+
+@pytest.mark.parametrize("kind, c, h_lo, h_hi, most", [
+    ("convex", 1.7, 1.0, 2.95, 10),          # the secant keeps the upper end: Illinois halves the lower end's value
+    ("convex", 0.2154261170, 0.0, 1.4654261170, 14),
+    ("right_stops", 1.7, 1.0, 2.95, 21),     # one flank stops short: bisected from there on, as before
+    ("left_stops", 1.7, 1.0, 2.95, 21),
+    ("linear", 1.7, 0.0, 3.4, 3),            # the secant lands on the root at once
+    ("linear", 1.0 - 5e-9, 0.0, 2.0, 4),     # the first halving's midpoint 1.0 lies 5 nm above the root
+    ("linear", 1.0 + 5e-9, 0.0, 2.0, 3),     # ... and 5 nm below it
+    ("linear", 1.7, 0.0, 2.0 ** 21 * TIP_HEIGHT_TOL_MM, 4),  # 21 halvings end on exactly the tolerance
+])
+def test_more_lands_the_same_height_as_the_bisection_in_fewer_evaluations(kind, c, h_lo, h_hi, most):
+    t_min = 0.625
+    thickness = _falling(kind, c, t_min)
+    at_lo, at_hi = thickness(h_lo), thickness(h_hi)
+    ref = _bisection(thickness, h_lo, at_lo, h_hi, t_min)
+    counted, calls = _counted(thickness)
+    got = _tallest_tip(counted, h_lo, at_lo, h_hi, at_hi, t_min)
+    assert got[0] == ref[0] and got[1] == ref[1]
+    assert len(calls) <= most
+
+
+@pytest.mark.parametrize("c", [1.0, 1.7, 2.0])
+def test_a_land_exactly_at_the_minimum_at_the_lower_height_takes_one_evaluation(c):
+    """The lower height is the root (land = t_min exactly there, f = 0): the secant lands on it, one evaluation a step
+    above closes the bracket.  Taking the midpoint there instead halved the bracket 31 times, half again the
+    bisection's own count."""
+    thickness = _land("smooth", c)
+    h_lo, h_hi = c, c + 1.25
+    at_lo = thickness(h_lo)
+    assert at_lo[0] == pytest.approx(0.625, abs=1e-15)
+    ref = _bisection(thickness, h_lo, at_lo, h_hi, at_lo[0])
+    counted, calls = _counted(thickness)
+    got = _tallest_tip(counted, h_lo, at_lo, h_hi, thickness(h_hi), at_lo[0])
+    assert got[0] == ref[0] == h_lo and got[1] == ref[1]
+    assert len(calls) == 1 and calls[0] - h_lo == pytest.approx(2.5e-4 * TIP_HEIGHT_TOL_MM, rel=1e-3)

@@ -433,9 +433,9 @@ def _tallest_tip(thickness, h_lo: float, at_lo: tuple, h_hi: float, at_hi: tuple
     a, b, fa, fb, kept = h_lo, h_hi, f(at_lo), f(at_hi), 0
     tipped = at_hi[1] is not None and at_hi[2] is not None
     while b - a > 1e-3 * TIP_HEIGHT_TOL_MM and tipped:
-        m = b - fb * (b - a) / (fb - fa) if fb != fa else 0.5 * (a + b)
-        if not a < m < b:
-            m = 0.5 * (a + b)
+        # fa >= 0 > fb throughout, so the secant's root lies in [a, b): at an end (a root found exactly, fa = 0) the
+        # clamp steps just off it and the next evaluation closes the bracket (a midpoint there would only halve it)
+        m = b - fb * (b - a) / (fb - fa)
         m = min(max(m, a + 2.5e-4 * TIP_HEIGHT_TOL_MM), b - 2.5e-4 * TIP_HEIGHT_TOL_MM)  # a step off a root at an end
         res = thickness(m)
         fm = f(res)
