@@ -1039,3 +1039,67 @@ def test_the_polysector_drives_torque_from_its_own_motion():
     M1 = 0.5 * p1 * acc + p1 * (0.2 * (acc + d2(r.q2)) + J45 * (acc + d2(r.q2) + d2(r.q3)) + 12.0)
     np.testing.assert_allclose(r.M1[1:-1], M1, rtol=2e-4)
     assert np.ptp(r.M1) > 0.05
+
+
+# ---- shaper-cut sides (noncircular_teeth.ToothSpec.shaper_tools, make_side) -----------------------------------------
+
+def _shaped_tooth(spec, m: float = 2.0, z_H: int = 40, k: int = 3):
+    """The two sides of driven tooth k of the circular pair cut by ``spec``'s shaper (make_side, as generate_teeth
+    does near a concave stretch), with the pieces to measure them."""
+    from propulsor.gears.envelope import PitchCurveCentrode
+    from propulsor.gears.noncircular_teeth import BodyPitchCurve, make_side
+
+    pc = _circular_pair(m, z_H)
+    frame, curve = ArcFrame(pc), BodyPitchCurve(pc, "driven")
+    s_k = (k + 0.5) * math.pi * m
+    ph_k = float(frame.phi(np.array([s_k]))[0])
+    right, left = spec.shaper_tools()
+    R, L = (make_side(tool, PitchCurveCentrode(curve, frame, s_k), spec.h_root) for tool in (right, left))
+    return curve, ph_k, R, L, 1.5 * math.pi * m / (m * z_H / 2)
+
+
+@pytest.mark.parametrize("x, thinning, own_x0", [(0.0, 0.0, None), (0.3, 0.0, None), (-0.2, 0.12, None),
+                                                 (0.2, 0.0, 0.1), (0.2, 0.1, 0.1), (0.0, 0.08, -0.2)])
+def test_shaper_cut_teeth_of_a_circular_gear_have_the_involute_gears_land_at_every_height(x, thinning, own_x0):
+    """A shaper that meshes with the gear's imaginary rack generates the rack's involute: x0 = -x rolling on the pitch
+    circle, or a catalogue shaper of its own x0 re-phased by e = (x + x0) m.  The land at radius r_y is ISO 21771's
+    s_y = d_y (s / d + inv alpha - inv alpha_y) with s = m (pi/2 + 2 x tan alpha) - thinning, and the tooth is
+    centred on its centre line."""
+    from propulsor.gears.noncircular_teeth import _arc_len, _tip_hit
+
+    m = 2.0
+    shaper = None if own_x0 is None else ShaperCutter(20, m, own_x0)
+    spec = ToothSpec(m=m, x=x, thinning_mm=thinning, z0=24, shaper=shaper)
+    curve, ph_k, R, L, span = _shaped_tooth(spec)
+    assert (R.kind, L.kind) == ("shaper", "shaper")
+    for h in (0.0, 0.35 * (1 + x) * m, 0.9 * (1 + x) * m):
+        hr, hl = _tip_hit(R, curve, h, ph_k, span), _tip_hit(L, curve, h, ph_k, span)
+        # the right side is the clockwise one of the body: on the driven wheel (phi runs clockwise) the smaller phi
+        assert hl[1] > ph_k > hr[1]
+        assert 0.5 * (hr[1] + hl[1]) == pytest.approx(ph_k, abs=1e-9)
+        assert _arc_len(curve, h, hl[1], hr[1]) == pytest.approx(_land(40, m, x, 40.0 + h, thinning), rel=1e-7)
+        # the hit lies on the flank and on the equidistant
+        assert np.linalg.norm(R.flank.at(hr[0]) - curve.offset(np.array([hr[1]]), h)[0]) < 1e-8
+
+
+def test_shaper_tools_refusals_in_full():
+    assert _refusal(lambda: ToothSpec(m=2.0, x=0.3).shaper_tools()) == (
+        "z0 = None: a concave pitch curve needs a shaper cutter")
+    assert _refusal(lambda: ToothSpec(m=2.0, x=-1.2, z0=8).shaper_tools()) == (
+        "z0 = 8: the shaper z0 = 8 with x0 = +1.2 (-x of the gear it cuts) cannot be made: rho_a0_star = 0.1: tip "
+        "rounds of the shaper tooth overlap (use a smaller profile shift (driver_shift) or another shaper)")
+    # x0 = -1.5 puts the 8-tooth shaper's tip circle inside its base circle: x0 > 8 (cos 20 deg - 1) / 2 - 1.25
+    x0_min = 8 * (math.cos(ALPHA) - 1) / 2 - 1.25
+    assert x0_min == pytest.approx(-1.4912, abs=1e-4)
+    assert _refusal(lambda: ToothSpec(m=2.0, x=1.5, z0=8).shaper_tools()) == (
+        "z0 = 8: the shaper z0 = 8 with x0 = -1.5 (-x of the gear it cuts) cannot be made: x0 = -1.5: the shaper's tip "
+        f"circle d_a0 = 15.000 mm lies inside its base circle d_b0 = {16 * math.cos(ALPHA):.3f} mm: it has no "
+        f"involute (x0 > {x0_min:.3f} for z0 = 8) (use a smaller profile shift (driver_shift) or another shaper)")
+    # a catalogue shaper: its module must be the gear's (to 1e-9 of it), and it must be makeable
+    assert _refusal(lambda: ToothSpec(m=2.0, x=0.2, shaper=ShaperCutter(20, 2.5, 0.1)).shaper_tools()) == (
+        "m = 2.0: must equal the shaper's module 2.5 mm")
+    assert len(ToothSpec(m=2.0, x=0.2, shaper=ShaperCutter(20, 2.0 * (1 + 9e-10), 0.1)).shaper_tools()) == 2
+    assert _refusal(lambda: ToothSpec(m=2.0, x=0.2, shaper=ShaperCutter(20, 2.0 * (1 + 2e-9), 0.1)).shaper_tools()) \
+        .startswith("m = 2.0: must equal the shaper's module 2 mm")
+    assert _refusal(lambda: ToothSpec(m=2.0, x=0.2, shaper=ShaperCutter(8, 2.0, 1.2)).shaper_tools()) == (
+        "z0 = 8: the shaper z0 = 8, x0 = +1.2 cannot be made: rho_a0_star = 0.1: tip rounds of the shaper tooth overlap")

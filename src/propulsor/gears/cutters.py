@@ -306,6 +306,10 @@ class ShaperCutter:
         centre and the polar angles (about the centre) of the two tangent points."""
         rho = self.rho_a0_star * self.m
         inv_p = self.involute
+        x0_min = self.z0 * (math.cos(self.rack.alpha) - 1.0) / 2.0 - self.rack.h_fP_star
+        require(self.r_a0 > self.r_b0, "x0", self.x0,
+                f"the shaper's tip circle d_a0 = {self.d_a0:.3f} mm lies inside its base circle d_b0 = "
+                f"{2.0 * self.r_b0:.3f} mm: it has no involute (x0 > {x0_min:.3f} for z0 = {self.z0})")
         t_a = math.sqrt((self.r_a0 / self.r_b0) ** 2 - 1.0)
 
         def centre(t):
