@@ -1103,3 +1103,53 @@ def test_shaper_tools_refusals_in_full():
         .startswith("m = 2.0: must equal the shaper's module 2 mm")
     assert _refusal(lambda: ToothSpec(m=2.0, x=0.2, shaper=ShaperCutter(8, 2.0, 1.2)).shaper_tools()) == (
         "z0 = 8: the shaper z0 = 8, x0 = +1.2 cannot be made: rho_a0_star = 0.1: tip rounds of the shaper tooth overlap")
+
+
+def test_where_a_re_phased_shapers_tip_round_lies_wholly_below_the_root_the_flank_is_cut_down_to_it():
+    """The seed-002 pair as built (parts/ncg_seed002.toml: the law search's blend, the catalogue shaper d0 = 25 mm,
+    z0 = 10, x0 = 0 on the driven wheel of x = -0.5: e = (x + x0) m = -1.25 mm): at the concave stretches the shaper's
+    tip round lies wholly below the root equidistant, and the flank is cut where it crosses the equidistant, its
+    first hundredth standing in for the fillet (make_side's ``fillet_is_flank``)."""
+    from propulsor.gears.envelope import PitchCurveCentrode
+    from propulsor.gears.noncircular_teeth import BodyPitchCurve, make_side
+
+    m, x = 2.5, -0.5
+    sl = SmoothedWalkingLaw(LAW2, 0.13962634015954636, u_h=3.0464623475326484)
+    pc = PitchCurves(sl, 124.27158616017297)
+    frame, curve = ArcFrame(pc), BodyPitchCurve(pc, "driven")
+    rack = BasicRack(rho_f_star=0.38)
+    spec = ToothSpec(m=m, x=x, thinning_mm=0.08513422179807296, rack=rack, z0=10, tip_min_mm=0.625,
+                     shaper=ShaperCutter(10, m, 0.0, rack))
+    assert spec.h_root == pytest.approx((1.25 + 0.5) * m, rel=1e-15)
+    tools = spec.shaper_tools()
+    assert [t.cutter.e for t in tools] == pytest.approx([-1.25, -1.25], rel=1e-15)
+
+    def height(side_curve, u, ph):
+        """signed height of the point at u above the root equidistant, measured from its foot at ph"""
+        P = side_curve.at(u)
+        F = curve.offset(np.array([ph]), -spec.h_root)[0]
+        return float(np.dot(P - F, curve.normal(np.array([ph]))[0]))
+
+    found = 0
+    for k in (8, 11):                                    # the teeth next to the first concave stretch
+        s_k = (k + 0.5) * math.pi * m
+        for tool in tools:
+            side = make_side(tool, PitchCurveCentrode(curve, frame, s_k), spec.h_root)
+            if not side.fillet_is_flank:
+                continue
+            found += 1
+            fil, fla = side.fillet, side.flank
+            assert (side.kind, side.undercut, side.root_piece) == ("shaper", False, None)
+            # the fillet is the flank's own first hundredth: the same piece and cutter, ending where the flank begins
+            assert fil.piece is fla.piece and fil.u1 == fla.u0
+            assert fil.u1 - fil.u0 == pytest.approx(0.01 * (fla.u1 - fil.u0), rel=1e-9)
+            # it starts on the root equidistant (the foot at phi_root, gap nil) and the flank rises from there
+            assert side.root_gap_mm < 1e-9
+            assert height(fil, fil.u0, side.phi_root) == pytest.approx(0.0, abs=1e-9)
+            # the foot is a least distance (bounded search): along the curve it is good to sqrt(eps), about 1e-6 mm
+            X0 = fil.at(fil.u0)
+            assert np.linalg.norm(X0 - curve.offset(np.array([side.phi_root]), -spec.h_root)[0]) < 2e-6
+            assert height(fla, fla.u0, side.phi_root) > 0.0
+            # the uncut flank below that point lies below the root (it is the part the equidistant replaces)
+            assert height(fla, fil.u0 - 0.01 * (fla.u1 - fil.u0), side.phi_root) < 0.0
+    assert found == 2
