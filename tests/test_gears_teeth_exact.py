@@ -1153,3 +1153,64 @@ def test_where_a_re_phased_shapers_tip_round_lies_wholly_below_the_root_the_flan
             # the uncut flank below that point lies below the root (it is the part the equidistant replaces)
             assert height(fla, fil.u0 - 0.01 * (fla.u1 - fil.u0), side.phi_root) < 0.0
     assert found == 2
+
+
+def _three_lobed(m: float = 2.0):
+    """The 3-lobed elliptical law (e = 0.5) scaled so that the driven curve carries a multiple of 3 teeth of m."""
+    law = EllipticalLaw(e=0.5, k=3)
+    pc0 = PitchCurves(law, 100.0)
+    z_H = round(pc0.perimeter_driven() / (math.pi * m) / 3) * 3
+    return PitchCurves(law, 100.0 * z_H * math.pi * m / pc0.perimeter_driven())
+
+
+def test_a_tip_floor_above_the_flanks_reach_and_a_root_gap_over_a_tenth_of_the_module_are_refused():
+    import re
+
+    from propulsor.gears.envelope import PitchCurveCentrode
+    from propulsor.gears.noncircular_teeth import BodyPitchCurve, _tip_hit, make_side
+
+    m = 2.0
+    pc = _three_lobed(m)
+    frame = ArcFrame(pc)
+    phi0 = float(frame.phi(np.array([0.5 * math.pi * m]))[0])          # driven tooth 0's centre
+    # a land of 5 mm is nowhere; shortening may go down to 4 m, above the rack flank's reach (its straight flank
+    # ends (1.5 h_a* + 0.5) m / cos alpha = 4.26 mm along the flank from the reference line)
+    assert _refusal(lambda: generate_teeth(pc, "driven", ToothSpec(m=m, tip_min_mm=5.0, tip_floor=4.0, z0=20))) == (
+        f"m = 2.0: driven tooth at phi = {phi0:.4f} rad is pointed or cannot be cut: the rack flank envelope does not "
+        "reach 4.00 m above the pitch curve (generating limit of the cutter) (use a smaller profile shift, a larger "
+        "shaper, more teeth or a wider smoothing)")
+    curve = BodyPitchCurve(pc, "driven")
+    side = make_side(ToothSpec(m=m).rack_tools()[0], PitchCurveCentrode(curve, frame, 0.5 * math.pi * m))
+    span = 1.5 * math.pi * m / float(np.min(pc.ds_dphi(np.linspace(0, math.pi / 2, 200))))
+    assert _tip_hit(side, curve, 4.0 * m, phi0, span) is None and _tip_hit(side, curve, 1.0 * m, phi0, span) is not None
+    # within reach the land is what it is: zero where the teeth are pointed at 2.5 m
+    assert _refusal(lambda: generate_teeth(pc, "driven", ToothSpec(m=m, tip_min_mm=5.0, tip_floor=2.5, z0=20))) == (
+        f"m = 2.0: driven tooth at phi = {phi0:.4f} rad is pointed or cannot be cut: tip land 0.000 mm < 5.000 mm even "
+        "with the tip shortened to 2.50 m (use a smaller profile shift, a larger shaper, more teeth or a wider "
+        "smoothing)")
+    # a catalogue shaper of x0 = 1.5 on a wheel of x = 0.8: e = 4.6 mm, its fillet lands off the root
+    spec = ToothSpec(m=m, x=0.8, z0=20, shaper=ShaperCutter(80, m, 1.5))
+    text = _refusal(lambda: generate_teeth(pc, "driven", spec))
+    got = re.fullmatch(r"z0 = 80: driven tooth at phi = (\S+) rad: the re-phased shaper leaves its fillet (\S+) mm off "
+                       r"the root \(more than 0\.1 m\) \(a larger shaper or a wider blend\)", text)
+    assert got, text
+    phi, gap = float(got.group(1)), float(got.group(2))
+    centres = frame.phi((np.arange(60) + 0.5) * math.pi * m)
+    k = int(np.argmin(abs(centres - phi)))
+    assert abs(centres[k] - phi) < 5e-5                                 # a tooth centre, to the 4 decimals printed
+    tools = spec.shaper_tools()
+    gaps = [make_side(t, PitchCurveCentrode(curve, frame, (k + 0.5) * math.pi * m), spec.h_root).root_gap_mm
+            for t in tools]
+    assert gaps[0] <= 0.1 * m < gaps[1] and round(gaps[1], 3) == gap   # the right side passed, the left did not
+    # every tooth before it was within 0.1 m on both sides
+    for j in range(k):
+        s_j = (j + 0.5) * math.pi * m
+        for t in tools:
+            if any(a - 1.5 * math.pi * m <= s_j <= b + 1.5 * math.pi * m
+                   for a, b in (frame.s(np.array(z)) for z in _zones(curve))):
+                assert make_side(t, PitchCurveCentrode(curve, frame, s_j), spec.h_root).root_gap_mm <= 0.1 * m
+
+
+def _zones(curve):
+    from propulsor.gears.noncircular_teeth import _concave_zones
+    return _concave_zones(curve)

@@ -510,7 +510,7 @@ def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame 
                         break
             side = make_side(tool, PitchCurveCentrode(curve, frame, s_k), spec.h_root)
             if side.root_gap_mm > ROOT_BRIDGE_MAX_MODULE * m:
-                raise InputError("z0", tool.cutter.R * 2.0 / m,
+                raise InputError("z0", int(round(tool.cutter.R * 2.0 / m)),
                                  f"{role} tooth at phi = {float(frame.phi(np.array([s_k]))[0]):.4f} rad: the re-phased "
                                  f"shaper leaves its fillet {side.root_gap_mm:.3f} mm off the root (more than "
                                  f"{ROOT_BRIDGE_MAX_MODULE:g} m)", "a larger shaper or a wider blend")
