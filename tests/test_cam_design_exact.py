@@ -21,8 +21,8 @@ GRID = SearchGrid(linear_k0=(0.01, 0.2, 3), quadratic_k0=(0.0, 0.05, 3), exponen
                   exponential_k1=(-0.5, -0.5, 1))
 EXP, QUAD, LIN = "K = 0.012·exp(-0.5·|φ|)", "K = 0.025·φ²", "K = 0.01·|φ|"
 # ranked: the feasible by hub-speed variation (1.49, 8.63, 11.44 %); then the infeasible by their number of
-# violations - K = 0 (pressure angle only), K = 0.05·φ² (pressure angle; radius of curvature), the two blow-ups
-# (whose message holds one '; ' too), each group by its variation, a blow-up's (nan) last
+# violations - K = 0 (pressure angle only), K = 0.05·φ² (pressure angle; radius of curvature), each group by its
+# variation; the two blow-ups (no figures: whose message holds a '; ' of its own) after every candidate with figures
 RANKED = [EXP, QUAD, LIN, "K = 0·φ²", "K = 0.05·φ²", "K = 0.105·|φ|", "K = 0.2·|φ|"]
 
 
@@ -220,3 +220,16 @@ def test_a_looping_shoe_and_a_support_stress_not_a_number_are_reported():
     tab = cam_motion(MECH, law).table(np.linspace(0.0, 2 * math.pi, policy.CAM_TURN_SAMPLES))
     assert np.isnan(tab.sigma_H[tab.support]).any()
     assert evaluate(MECH, law, DesignLimits())["sigma_max_MPa"] == math.inf
+
+
+def test_a_blow_up_ranks_after_every_candidate_with_figures_however_many_limits_they_violate():
+    """With a Hertz limit of 100 MPa every candidate violates it: K = 0·φ² two limits, K = 0.05·φ² three.  A blow-up's
+    message holds a '; ' of its own; counted as violations it ranked a blow-up ahead of the three-limit candidate,
+    whose figures are known.  Blow-ups come last, among themselves by the grid's order."""
+    res = search_design(MECH, DesignLimits(footprint_ratio_max=1.2, gamma_max_deg=40.0, sigma_allow=100.0), GRID)
+    assert res.n_feasible == 0
+    assert [r["label"] for r in res.rows] == [EXP, QUAD, LIN, "K = 0·φ²", "K = 0.05·φ²", "K = 0.105·|φ|",
+                                              "K = 0.2·|φ|"]
+    assert [r["violations"].count("; ") for r in res.rows[3:5]] == [1, 2]
+    assert all(r["violations"].startswith("blow-up: ") and "; " in r["violations"] for r in res.rows[5:])
+    assert res.reason == (f"no candidate of 7 satisfies the limits; closest: {EXP} ({res.rows[0]['violations']})")

@@ -211,8 +211,11 @@ def search_design(mech: CamMechanism = CamMechanism(), limits: DesignLimits = De
         chosen = cand
         break
     feas = [r for r in feas if r["feasible"]]
+    # the infeasible by how far they are from feasible: fewest violated limits first, then the objective; a
+    # candidate whose motion could not be computed (a blow-up: no figures at all) after every one that could
+    # (its message may itself hold a '; ', so it is not counted as violations)
     infeas = sorted((r for r in rows if not r["feasible"]),
-                    key=lambda r: (r["violations"].count(";"), r["violations"].startswith("blow-up"),
+                    key=lambda r: (r["violations"].startswith("blow-up"), len(r["violations"].split("; ")),
                                    np.nan_to_num(r["hub_speed_variation_pct"], nan=1e9)))
     ranked = feas + infeas
     for i, r in enumerate(ranked, 1):
