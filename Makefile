@@ -60,7 +60,7 @@ parts: $(OUT)/.built
 QUEUE := $(OUT)/.build-queue
 DRY_RUN = $(findstring n,$(firstword -$(MAKEFLAGS)))
 FLUSH = if [ -s $(QUEUE) ]; then q=$$(sort -u $(QUEUE)); \
-	$(if $(DRY_RUN),printf "would build: %s\n" "$$q";,rm -f $(QUEUE); $(BIN)/propulsor build $$q --depfile-dir $(DEPS);) fi
+	$(if $(DRY_RUN),printf "would build: %s\n" "$$q";,rm -f $(QUEUE); $(BIN)/propulsor build $$q --out-dir $(OUT) --depfile-dir $(DEPS);) fi
 
 # the files each build read, written by the builds themselves (escaped for make; each with an empty rule,
 # so that a file deleted since rebuilds what read it): the depfiles of the part files there are (that of

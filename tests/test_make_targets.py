@@ -331,7 +331,7 @@ def test_make_hands_its_jobserver_to_the_build_and_runs_no_recipe_under_n(projec
     fake.write_text(f"#!{sys.executable}\nimport sys\nfrom propulsor.parallel import Jobserver\n"
                     "js = Jobserver.from_makeflags()\ntoks = [t for t in iter(js.take, None)] if js else []\n"
                     "[js.give(t) for t in toks]\n"
-                    "open('built.txt', 'a').write(f'{len(toks)} {sys.argv[2:-2]}\\n')\n")
+                    "open('built.txt', 'a').write(f'{len(toks)} {sys.argv[2:-4]} {sys.argv[-4:-2]}\\n')\n")
     fake.chmod(0o755)
     os.utime(folder / "parts" / "cam_linear.toml", (now, now))
     os.utime(folder / "parts" / "road_wheel.toml", (now, now))
@@ -344,7 +344,7 @@ def test_make_hands_its_jobserver_to_the_build_and_runs_no_recipe_under_n(projec
     r = subprocess.run(["make", "-j3", "parts"], cwd=folder, capture_output=True, text=True, timeout=60, env=env)
     assert r.returncode == 0, r.stdout + r.stderr
     assert (folder / "built.txt").read_text().split("\n")[0] == \
-        "2 ['parts/balancer.toml', 'parts/cam_linear.toml', 'parts/road_wheel.toml']"
+        "2 ['parts/balancer.toml', 'parts/cam_linear.toml', 'parts/road_wheel.toml'] ['--out-dir', 'output']"
 
 
 def _fake_propulsor(folder: Path) -> Path:
@@ -516,3 +516,39 @@ def test_make_builds_a_part_file_named_in_another_alphabet(project):
     shutil.copy2(folder / "parts" / "road_wheel.toml", folder / "parts" / "räder-2.toml")
     assert _make_parts(folder) == ["parts/räder-2.toml"]
     assert _make_parts(folder) == []
+
+
+@needs_make
+def test_make_builds_into_the_out_folder_it_is_given(project):
+    """`make OUT=alt`: the build command is told --out-dir alt, so the manifests make waits for (alt/<name>/) are
+    the ones written, and a second run builds nothing (the builds went to output/ before: make rebuilt every time)."""
+    folder, names, now = project
+    fake = folder / ".venv" / "bin" / "propulsor"
+    fake.parent.mkdir(parents=True, exist_ok=True)
+    fake.write_text(f"#!{sys.executable}\nimport sys, pathlib\n"
+                    "a = sys.argv[1:]\n"
+                    "if a[0] == 'build':\n"
+                    "    files = [x for x in a if x.endswith('.toml')]\n"
+                    "    out = pathlib.Path(a[a.index('--out-dir') + 1])\n"
+                    "    open('built.txt', 'a').write(str(out) + ' ' + ' '.join(files) + '\\n')\n"
+                    "    for f in files:\n"
+                    "        m = out / pathlib.Path(f).stem / 'manifest.json'\n"
+                    "        m.parent.mkdir(parents=True, exist_ok=True); m.write_text('{}')\n")
+    fake.chmod(0o755)
+    built = _make_parts(folder, "parts", "OUT=alt")
+    assert built == ["alt " + " ".join(f"parts/{n}.toml" for n in names)]
+    assert all((folder / "alt" / n / "manifest.json").is_file() for n in names)
+    assert _make_parts(folder, "parts", "OUT=alt") == []
+
+
+def test_build_out_dir_names_the_parent_of_each_parts_folder(tmp_path, capfd):
+    from propulsor.cli import main
+
+    assert main(["build", str(ROOT / "parts" / "road_wheel.toml"), "--out-dir", str(tmp_path / "alt"),
+                 "--dry-run"]) == 0
+    assert f"would build into {tmp_path / 'alt' / 'road_wheel'};" in capfd.readouterr().out
+    assert main(["build", str(ROOT / "parts" / "road_wheel.toml"), "--out", str(tmp_path / "x"), "--out-dir",
+                 str(tmp_path / "alt")]) == 2
+    assert capfd.readouterr().err.strip().endswith(
+        f"--out-dir = {str(tmp_path / 'alt')!r}: not with --out: give --out (the part's own folder) or --out-dir "
+        "(<dir>/<file name>)")

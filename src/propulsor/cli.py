@@ -81,10 +81,13 @@ def cmd_build(args) -> int:
     """Build every part file given, one after the other in this process (the imports are paid once):
     each into its own output folder; the exit code is the worst of them (2 before 3 before 1 before 0)."""
     files = [Path(f) for f in args.part_files]
+    if args.out is not None and args.out_dir is not None:
+        return fail_input(InputError("--out-dir", args.out_dir, "not with --out: give --out (the part's own folder) "
+                                     "or --out-dir (<dir>/<file name>)"))
     if len(files) > 1 and (args.out is not None or args.depfile):
         name = "--out" if args.out is not None else "--depfile"
         return fail_input(InputError(name, args.out if args.out is not None else args.depfile, f"names one file or folder: give one part "
-                                      f"file, not {len(files)} (several go to output/<file name>; --depfile-dir)"))
+                                      f"file, not {len(files)} (several go to <--out-dir>/<file name>, output/ by default; --depfile-dir)"))
     from .parallel import Jobserver, can_fork, jobs_budget
 
     # make's jobserver (a `+` recipe under make -jN): the builds and their workers take make's tokens
@@ -128,7 +131,8 @@ def _build_one(args, part_file: Path, depfile: Path | None, render: Renderer) ->
 
     render(f"{part_file}: reading the part file")
     try:
-        out = building.target(args.out, Path("output") / part_file.stem, args.force, keep=(part_file,))
+        out = building.target(args.out, Path(args.out_dir or "output") / part_file.stem, args.force,
+                              keep=(part_file,))
         part = building.load(part_file, progress=render)
         out = of.vet_target(out, force=args.force, keep=part.files_read)
         vet_depfile(depfile, out, args.out or str(out), part.params, part_file)
@@ -375,6 +379,8 @@ def build_parser() -> argparse.ArgumentParser:
     b.add_argument("part_files", nargs="+", metavar="part_file")
     b.add_argument("--out", help="output folder (default output/<file name>); replaced only when empty or "
                    "written by propulsor")
+    b.add_argument("--out-dir", help="the folder each part goes into as <dir>/<file name> (default output); "
+                   "make's OUT")
     b.add_argument("--force", action="store_true", help="replace an --out folder that propulsor did not write "
                    "(never the current folder, its parents, the home folder or /)")
     b.add_argument("--no-wait", action="store_true", help="exit 2 instead of waiting when another build "
