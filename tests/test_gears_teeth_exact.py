@@ -742,7 +742,7 @@ def test_a_shaper_of_its_own_shift_cuts_the_racks_flank_and_its_root_gap_is_meas
             P = side.flank(np.linspace(side.flank.u0 + 0.3 * (u_tip - side.flank.u0), u_tip, 12))
             assert _to_polyline(P, dense).max() < 1e-6
             # the root gap: the distance from the fillet's start to the root equidistant, its foot at phi_root
-            X0 = side.root_piece.at(side.root_piece.u0) if side.root_piece is not None else side.fillet.at(side.fillet.u0)
+            X0 = side.fillet.at(side.fillet.u0)
             ph = side.phi_root + np.linspace(-0.02, 0.02, 40001)
             E = g.curve.offset(ph, -spec.h_root)
             j = int(np.argmin(np.linalg.norm(E - X0, axis=1)))
@@ -1139,7 +1139,7 @@ def test_where_a_re_phased_shapers_tip_round_lies_wholly_below_the_root_the_flan
                 continue
             found += 1
             fil, fla = side.fillet, side.flank
-            assert (side.kind, side.undercut, side.root_piece) == ("shaper", False, None)
+            assert (side.kind, side.undercut) == ("shaper", False)
             # the fillet is the flank's own first hundredth: the same piece and cutter, ending where the flank begins
             assert fil.piece is fla.piece and fil.u1 == fla.u0
             assert fil.u1 - fil.u0 == pytest.approx(0.01 * (fla.u1 - fil.u0), rel=1e-9)

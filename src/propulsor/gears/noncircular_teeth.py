@@ -42,7 +42,7 @@ from ..policy import (ROOT_BRIDGE_MAX_MODULE, SHAPER_MESH_STOP_MM, FD_STEP_ARC_R
                       SOLVE_RESIDUAL_MM, TIP_HEIGHT_TOL_MM)
 from .cutters import CutterSide, RackCutter, ShaperCutter
 from .envelope import (EnvelopeCurve, ExternalCircleCentrode, PitchCurveCentrode, ShaperOnRackCentrode, envelope_points,
-                       RoundEnvelope, round_envelope)
+                       round_envelope)
 from .undercut import trim_crossing
 from .involute import BasicRack
 from .noncircular import PitchCurves, whole_pitches
@@ -164,7 +164,6 @@ class ToothSide:
     undercut: bool
     phi_root: float  # driven angle of the root point (on the root equidistant) where the fillet starts
     root_gap_mm: float = 0.0
-    root_piece: object = None  # re-phased shaper: envelope of its tip circle from the root to the fillet
     fillet_is_flank: bool = False  # no fillet: the flank reaches the root equidistant (outline: one piece)
 
 
@@ -229,49 +228,10 @@ def make_side(tool: CutterSide, cen: PitchCurveCentrode, h_root: float | None = 
             ph, h = foot(fla.at(uc))
             return ToothSide(fla.with_range(uc, um), fla.with_range(um, fla.u1), tool.kind, False, ph, abs(h),
                              fillet_is_flank=True)
-    # past the round the shaper's tip circle (radius r_a0 about its centre) cuts the root: its envelope,
-    # followed in the rolling arc while the contact stays on the tip land, down to the equidistant
-    # (trimmed there) or to its deepest point (bridged from there)
-    R0 = tool.cutter.R
-    C0 = np.array([0.0, R0])
-    P_tip = tool.fillet.point(np.array([a_tip]))[0]
-    r_a = float(np.linalg.norm(P_tip - C0))
-    s_t = fil.u0
-    X_t = fil.at(s_t)
-    env = min((RoundEnvelope(tuple(C0), r_a, sd, tool.cutter, cen, s_t, s_t) for sd in (1.0, -1.0)),
-              key=lambda e: float(np.linalg.norm(e.at(s_t) - X_t)))
-    ang_p = tool.fillet.angle
-    ax = np.array([-math.sin(ang_p), math.cos(ang_p)]) * (np.array([-1.0, 1.0]) if tool.fillet.mirror else 1.0)
-    t_e = (P_tip - C0) / r_a
-    lim = 2.0 * math.acos(float(np.clip(t_e @ ax, -1.0, 1.0)))
-    ss = s_t + math.copysign(1.0, fil.u0 - fil.u1) * np.linspace(0.0, 2.0 * R0, 161)
-    th = cen.angle(ss) - tool.cutter.angle(ss)
-    v = np.column_stack([np.cos(-th), np.sin(-th)])
-    cd = env.contact_dir(ss)
-    v = np.column_stack([v[:, 0] * cd[:, 0] - v[:, 1] * cd[:, 1], v[:, 1] * cd[:, 0] + v[:, 0] * cd[:, 1]])
-    valid = np.arccos(np.clip(v @ t_e, -1.0, 1.0)) <= lim
-    n_ok = int(np.argmin(valid)) if not np.all(valid) else len(ss)
-    # the tip circle's envelope must run on from the round's (no cusp at the junction)
-    d1 = env.at(s_t) - env.at(ss[1])
-    d2 = fil.at(s_t + 1e-3 * (fil.u1 - s_t)) - X_t
-    if float(d1 @ d2) <= 0.0:
-        n_ok = 0
-    if n_ok >= 2:
-        hs = np.array([foot(X)[1] for X in env(ss[:n_ok])])
-        below = np.nonzero(hs <= 0.0)[0]
-        if len(below) and below[0] > 0:
-            k = int(below[0])
-            from scipy.optimize import brentq
-
-            sc = brentq(lambda q: foot(env.at(q))[1], ss[k - 1], ss[k], xtol=SHAPER_MESH_STOP_MM)
-            piece = env.with_range(sc, s_t)
-            ph, h = foot(piece.at(sc))
-            return ToothSide(fil, fla, tool.kind, False, ph, abs(h), piece)
-        k = int(np.argmin(hs))
-        if k > 0 and hs[k] < foot(X_t)[1]:
-            piece = env.with_range(ss[k], s_t)
-            ph, h = foot(piece.at(ss[k]))
-            return ToothSide(fil, fla, tool.kind, False, ph, abs(h), piece)
+    # otherwise the round starts above the equidistant: the outline bridges the gap from its start straight down
+    # to its foot (root_gap_mm, refused by generate_teeth above ROOT_BRIDGE_MAX_MODULE m).  (Following the
+    # shaper's tip circle on from the round was tried and never taken: its envelope runs back over the round at
+    # the junction (a cusp) on every part built; seed 002's re-phased shaper after 2 of 161 samples.)
     ph, h = foot(fil.at(fil.u0))
     return ToothSide(fil, fla, tool.kind, False, ph, abs(h))
 

@@ -180,12 +180,8 @@ def _fit_teeth(curve, teeth_sides, tips, order, tol, tick=None) -> list:
             fla_l = fil_l = fit_piece(Lf.flank, hl[0], Lf.fillet.u0, tol)
         pieces = [p_ for k_, p_ in enumerate([fil_r, fla_r, tip, fla_l, fil_l])
                   if not (k_ == 0 and R.fillet_is_flank) and not (k_ == 4 and Lf.fillet_is_flank)]
-        # a shaper with its own x0 cuts the root with its tip circle (ToothSide.root_piece) and may stop
-        # short of the root equidistant (ToothSide.root_gap_mm): a straight bridge to the foot point
-        if R.root_piece is not None:
-            pieces.insert(0, fit_piece(R.root_piece, R.root_piece.u0, R.root_piece.u1, tol))
-        if Lf.root_piece is not None:
-            pieces.append(fit_piece(Lf.root_piece, Lf.root_piece.u1, Lf.root_piece.u0, tol))
+        # a shaper with its own x0 may stop short of the root equidistant (ToothSide.root_gap_mm): the root
+        # below is lifted to meet it (above)
         units.append((pieces, R.phi_root, Lf.phi_root, R.root_gap_mm, Lf.root_gap_mm))
         if tick is not None:
             tick(len(units))
