@@ -1214,3 +1214,74 @@ def test_a_tip_floor_above_the_flanks_reach_and_a_root_gap_over_a_tenth_of_the_m
 def _zones(curve):
     from propulsor.gears.noncircular_teeth import _concave_zones
     return _concave_zones(curve)
+
+
+def test_the_batched_tip_search_finds_each_sides_own_hit_and_none_where_the_flank_stops_short():
+    """_tip_hits_batch (one vectorised Newton iteration for many sides, grouped by their cutter piece) against
+    _tip_hit side by side (a start from the nearest samples, then fsolve): the same (u, phi) to 1e-10, on the rack-cut
+    sides of a circular driver and the shaper-cut sides of the 3-lobed wheel, at the nominal tip and above the
+    flank's reach (None from both)."""
+    from propulsor.gears.envelope import PitchCurveCentrode
+    from propulsor.gears.noncircular_teeth import BodyPitchCurve, _tip_hit, _tip_hits_batch, make_side
+
+    m = 2.0
+    for pc, role, spec, ks in ((_circular_pair(m, 40), "driver", ToothSpec(m=m, x=0.3), range(0, 20, 3)),
+                               (_three_lobed(m), "driven", ToothSpec(m=m, x=0.2, z0=20), range(6, 14))):
+        frame, curve = ArcFrame(pc), BodyPitchCurve(pc, role)
+        tools = spec.shaper_tools() if spec.z0 else spec.rack_tools()
+        offset = 0.5 if role == "driven" else 0.0
+        s_k = np.array([(k + offset) * math.pi * m for k in ks])
+        ph_k = frame.phi(s_k)
+        sides = [make_side(t, PitchCurveCentrode(curve, frame, s), spec.h_root) for s in s_k for t in tools]
+        span = 1.5 * math.pi * m / float(np.min(pc.ds_dphi(np.linspace(0, math.pi / 2, 200))))
+        for h in (spec.h_tip, 0.4 * m, 10.0 * m):
+            got = _tip_hits_batch(sides, np.repeat(s_k, 2), np.repeat(ph_k, 2), curve, frame, h, span)
+            want = [_tip_hit(sd, curve, h, float(p), span) for sd, p in zip(sides, np.repeat(ph_k, 2))]
+            assert len(got) == len(sides)
+            found = [g is not None for g in got]
+            assert found == [w is not None for w in want]
+            # 0.4 m: every side; the nominal tip: the shaper's involute starts on its base circle below it next to the
+            # concave stretch (teeth 9 to 13 but tooth 9's left: shortened there); 10 m: none
+            assert sum(found) == {0.4 * m: len(sides), 10.0 * m: 0}.get(h, len(sides) if role == "driver" else 7)
+            if role == "driven" and h == spec.h_tip:
+                # tooth 8's right and tooth 9's left reach the tip 3 and 4 thousandths into the involute's roll from
+                # the base circle, where it has a cusp: fsolve started there stalled and _tip_hit said no tip
+                assert found[:8] == [True] * 6 + [False, True]
+                assert 0.0 < got[4][0] < 0.005 and 0.0 < got[7][0] < 0.005
+            for g, w, p in zip(got, want, np.repeat(ph_k, 2)):
+                if g is None:
+                    continue
+                assert g[0] == pytest.approx(w[0], abs=1e-10) and g[1] == pytest.approx(w[1], abs=1e-10)
+                assert abs(g[1] - p) < 0.6 * span                    # next to its own tooth, not a turn away
+
+
+def test_the_seed002_pairs_mirror_teeth_get_the_same_shortened_tip():
+    """The seed-002 law is even within a leg, so the driven wheel's teeth either side of a concave stretch are mirror
+    images, and the shortening of their tips (the tallest height with a land of 0.25 m) must be the same.  It was not:
+    _tip_hit said "no tip" where its start sat on the shaper involute's cusp at the base circle, the bisection took
+    the height for one the flank does not reach, and tooth 11 was cut to 0.154 mm where its mirror tooth 8 kept
+    0.215 mm."""
+    from propulsor.gears.noncircular_teeth import BodyPitchCurve, _tip_hit
+
+    m, x = 2.5, -0.5
+    sl = SmoothedWalkingLaw(LAW2, 0.13962634015954636, u_h=3.0464623475326484)
+    pc = PitchCurves(sl, 124.27158616017297)
+    rack = BasicRack(rho_f_star=0.38)
+    spec = ToothSpec(m=m, x=x, thinning_mm=0.08513422179807296, rack=rack, z0=10, tip_min_mm=0.625,
+                     shaper=ShaperCutter(10, m, 0.0, rack))
+    g = generate_teeth(pc, "driven", spec)
+    assert g.z == 80
+    t8, t11 = g.teeth[8], g.teeth[11]
+    assert (t8.shortened, t11.shortened) == (True, True)
+    assert t8.tip_height_mm == pytest.approx(0.21576, abs=1e-5)
+    assert t11.tip_height_mm == pytest.approx(t8.tip_height_mm, abs=2e-6)        # the bisection's 1e-6 mm each
+    assert t11.tip_thickness_mm == pytest.approx(t8.tip_thickness_mm, abs=1e-5)
+    # every shortened tip is the tallest with the land: its flanks reach it, and 2 um higher the land is too thin
+    curve = BodyPitchCurve(pc, "driven")
+    span = 1.5 * math.pi * m / float(np.min(pc.ds_dphi(np.linspace(0, math.pi / 2, 200))))
+    for k in (8, 9, 10, 11):
+        tooth, (R, L) = g.teeth[k], g.sides[k]
+        assert tooth.tip_thickness_mm >= 0.625
+        for h in np.linspace(0.0, tooth.tip_height_mm, 7):
+            assert _tip_hit(R, curve, h, tooth.phi_centre, span) is not None
+            assert _tip_hit(L, curve, h, tooth.phi_centre, span) is not None

@@ -259,9 +259,14 @@ def _tip_hit(side: ToothSide, curve: BodyPitchCurve, h: float, phi_guess: float,
     D = np.linalg.norm(X[:, None, :] - T[None, :, :], axis=2)
     i, j = np.unravel_index(int(np.argmin(D)), D.shape)
     g = lambda y: fla.at(y[0]) - curve.offset(np.array([y[1]]), h)[0]
-    sol = fsolve(g, [u[i], ph[j]], xtol=ROOT_XTOL_FINE, full_output=True)[0]
     tol = SOLVE_RESIDUAL_MM
-    if np.linalg.norm(g(sol)) > tol or not (min(fla.u0, fla.u1) - tol <= sol[0] <= max(fla.u0, fla.u1) + tol):
+    ok = lambda y: np.linalg.norm(g(y)) <= tol and min(fla.u0, fla.u1) - tol <= y[0] <= max(fla.u0, fla.u1) + tol
+    sol = fsolve(g, [u[i], ph[j]], xtol=ROOT_XTOL_FINE, full_output=True)[0]
+    if not ok(sol) and i in (0, len(u) - 1):
+        # the flank's end can be a cusp of its envelope (a shaper's involute starts on its base circle, where its
+        # derivative vanishes): fsolve stalls there, so start again from the sample next to it
+        sol = fsolve(g, [u[1] if i == 0 else u[-2], ph[j]], xtol=ROOT_XTOL_FINE, full_output=True)[0]
+    if not ok(sol):
         return None
     return float(sol[0]), _near(float(sol[1]), phi_guess, curve)
 
