@@ -118,3 +118,29 @@ def test_a_land_exactly_at_the_minimum_at_the_lower_height_takes_one_evaluation(
     got = _tallest_tip(counted, h_lo, at_lo, h_hi, thickness(h_hi), at_lo[0])
     assert got[0] == ref[0] == h_lo and got[1] == ref[1]
     assert len(calls) == 1 and calls[0] - h_lo == pytest.approx(2.5e-4 * TIP_HEIGHT_TOL_MM, rel=1e-3)
+
+
+@pytest.mark.parametrize("cap", [0, 1, 3])
+def test_the_secant_steps_are_capped_and_the_bisection_still_decides(monkeypatch, cap):
+    """TIP_SECANT_STEPS_MAX cuts the Illinois steps short (a crawl cannot hang the build); the bisection then finds the
+    same height to the last bit from whatever bracket the secant left.  Cap 0: the plain bisection, one evaluation a
+    halving; cap k: k secant steps, then the halvings the bracket cannot decide."""
+    import propulsor.gears.noncircular_teeth as nt
+
+    monkeypatch.setattr(nt, "TIP_SECANT_STEPS_MAX", cap)
+    for kind, c in (("smooth", 1.7), ("convex", 1.7)):
+        thickness = _land(kind, c) if kind == "smooth" else _falling(kind, c)
+        h_lo, h_hi = 1.0, c + 1.25
+        at_lo, at_hi = thickness(h_lo), thickness(h_hi)
+        ref = _bisection(thickness, h_lo, at_lo, h_hi, 0.625)
+        counted, calls = _counted(thickness)
+        got = _tallest_tip(counted, h_lo, at_lo, h_hi, at_hi, 0.625)
+        assert got[0] == ref[0] and got[1] == ref[1]
+        halvings = math.ceil(math.log2((h_hi - h_lo) / TIP_HEIGHT_TOL_MM))
+        if cap == 0:
+            assert len(calls) == halvings     # every midpoint evaluated, as the bisection does
+        else:
+            assert cap < len(calls) <= cap + halvings
+            # the first `cap` evaluations are the secant's, off the halving grid
+            mids = {h_lo + (h_hi - h_lo) * j / 2 ** i for i in range(1, 4) for j in range(1, 2 ** i, 2)}
+            assert not set(calls[:cap]) & mids

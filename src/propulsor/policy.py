@@ -181,6 +181,8 @@ TOOL_TIP_LAND_TOL_MM = 1e-12
 MODULE_MATCH_TOL_MM = 1e-12
 #: bisection of the shortened tip height stops at this interval (mm)
 TIP_HEIGHT_TOL_MM = 1e-6
+#: the most secant (Illinois) steps of the tip shortening's search before it bisects (noncircular_teeth._tallest_tip)
+TIP_SECANT_STEPS_MAX = 40
 
 # --- suspension and balancer (laws/suspension.py, laws/balancer_beam.py) ---------
 #: a damper sits on a wheel when their positions agree within this (m)

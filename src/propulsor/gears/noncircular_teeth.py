@@ -39,7 +39,7 @@ from scipy.optimize import fsolve, minimize_scalar
 
 from ..errors import InputError, require
 from ..policy import (ROOT_BRIDGE_MAX_MODULE, SHAPER_MESH_STOP_MM, FD_STEP_ARC_RAD, FD_STEP_PHI_RAD, FD_STEP_REL, MINIMIZE_XATOL, NEWTON_STOP_MM, ROOT_XTOL_FINE,
-                      SOLVE_RESIDUAL_MM, TIP_HEIGHT_TOL_MM)
+                      SOLVE_RESIDUAL_MM, TIP_HEIGHT_TOL_MM, TIP_SECANT_STEPS_MAX)
 from .cutters import CutterSide, RackCutter, ShaperCutter
 from .envelope import (EnvelopeCurve, ExternalCircleCentrode, PitchCurveCentrode, ShaperOnRackCentrode, envelope_points,
                        round_envelope)
@@ -397,7 +397,11 @@ def _tallest_tip(thickness, h_lo: float, at_lo: tuple, h_hi: float, at_hi: tuple
     # flank does not reach (a hit None) the land jumps, and the bisection below finds that height as it always did
     a, b, fa, fb, kept = h_lo, h_hi, f(at_lo), f(at_hi), 0
     tipped = at_hi[1] is not None and at_hi[2] is not None
-    while b - a > 1e-3 * TIP_HEIGHT_TOL_MM and tipped:
+    steps = 0
+    # at most TIP_SECANT_STEPS_MAX secant steps (Illinois converges in 6 to 12 on a tooth's land): the bracket is
+    # valid after any of them and the bisection below decides the height, so a crawl is cut short, never wrong
+    while b - a > 1e-3 * TIP_HEIGHT_TOL_MM and tipped and steps < TIP_SECANT_STEPS_MAX:
+        steps += 1
         # fa >= 0 > fb throughout, so the secant's root lies in [a, b): at an end (a root found exactly, fa = 0) the
         # clamp steps just off it and the next evaluation closes the bracket (a midpoint there would only halve it)
         m = b - fb * (b - a) / (fb - fa)
