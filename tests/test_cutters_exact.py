@@ -234,6 +234,18 @@ def test_shaper_tip_round_refusals():
              "rho_a0_star = 1.7: tip rounds of the shaper tooth overlap")
     _refusal(lambda: ShaperCutter(20, 2.0, 0.0, BasicRack(), 1.8).tip_round,
              "rho_a0_star = 1.8: tip round does not fit the shaper tooth")
+    # a tip circle inside the base circle: r0 + (h_fP* + x0) m <= r0 cos alpha, x0 <= z0 (cos alpha - 1) / 2 - 1.25
+    for z0, m in ((8, 2.0), (30, 1.5)):
+        x0_min = z0 * (math.cos(A20) - 1.0) / 2.0 - 1.25
+        for x0 in (x0_min - 1e-3, x0_min - 0.5):
+            d_a0, d_b0 = m * z0 + 2 * (1.25 + x0) * m, m * z0 * math.cos(A20)
+            _refusal(lambda: ShaperCutter(z0, m, x0).tip_round,
+                     f"x0 = {x0!r}: the shaper's tip circle d_a0 = {d_a0:.3f} mm lies inside its base circle d_b0 = "
+                     f"{d_b0:.3f} mm: it has no involute (x0 > {x0_min:.3f} for z0 = {z0})")
+        # just above the limit the tip circle clears the base circle; the round is what refuses it then
+        with pytest.raises(InputError) as e:
+            ShaperCutter(z0, m, x0_min + 1e-6).tip_round
+        assert e.value.parameter == "rho_a0_star"
 
 
 @pytest.mark.parametrize("alpha_deg, m", [(22.5, 1.0), (25.0, 2.5), (28.0, 7.0), (20.0, 3.0)])
