@@ -398,6 +398,7 @@ def test_rack_cut_teeth_of_a_circular_pair_have_the_involute_gears_tip_land(role
     z, U = (40, 1.0) if role == "driven" else (20, 2.0)
     r_H = m * z_H / 2                                    # the arc frame runs on the driven circle: phi = s / r_H
     assert (g.role, g.z, g.n, len(g.teeth), len(g.sides), len(g.tips)) == (role, z, 2, z, z, z)
+    assert type(g.z) is int                              # a count of teeth (z_H // n for the driver)
     assert ticks == [(k + 1, z) for k in range(z)]
     r = m * z / 2
     r_a = r + (1 + x) * m
@@ -1183,6 +1184,14 @@ def test_a_tip_floor_above_the_flanks_reach_and_a_root_gap_over_a_tenth_of_the_m
     side = make_side(ToothSpec(m=m).rack_tools()[0], PitchCurveCentrode(curve, frame, 0.5 * math.pi * m))
     span = 1.5 * math.pi * m / float(np.min(pc.ds_dphi(np.linspace(0, math.pi / 2, 200))))
     assert _tip_hit(side, curve, 4.0 * m, phi0, span) is None and _tip_hit(side, curve, 1.0 * m, phi0, span) is not None
+    # tooth 9 next to the concave stretch is shaper-cut: its right flank (an involute from the shaper's base circle)
+    # does not reach the nominal tip (1 + x) m, and a floor there leaves nothing to shorten to
+    phi9 = float(frame.phi(np.array([9.5 * math.pi * m]))[0])
+    assert _refusal(lambda: generate_teeth(pc, "driven", ToothSpec(m=m, x=0.2, tip_min_mm=0.1, tip_floor=1.0,
+                                                                    z0=20))) == (
+        f"m = 2.0: driven tooth at phi = {phi9:.4f} rad is pointed or cannot be cut: the shaper flank envelope does "
+        "not reach 1.20 m above the pitch curve (generating limit of the cutter) (use a smaller profile shift, a "
+        "larger shaper, more teeth or a wider smoothing)")
     # within reach the land is what it is: zero where the teeth are pointed at 2.5 m
     assert _refusal(lambda: generate_teeth(pc, "driven", ToothSpec(m=m, tip_min_mm=5.0, tip_floor=2.5, z0=20))) == (
         f"m = 2.0: driven tooth at phi = {phi0:.4f} rad is pointed or cannot be cut: tip land 0.000 mm < 5.000 mm even "
@@ -1285,3 +1294,18 @@ def test_the_seed002_pairs_mirror_teeth_get_the_same_shortened_tip():
         for h in np.linspace(0.0, tooth.tip_height_mm, 7):
             assert _tip_hit(R, curve, h, tooth.phi_centre, span) is not None
             assert _tip_hit(L, curve, h, tooth.phi_centre, span) is not None
+
+
+def test_the_tip_lands_arc_on_a_non_circular_equidistant_against_its_chords():
+    """_arc_len (10-point Gauss-Legendre in the driven angle, the equidistant's speed by central differences) on the
+    driven wheel of the Fourier law of parts/ncg_fourier_3lobe.toml (0.04 sin theta + 0.005 cos 2 theta: not even in
+    phi, so a mirrored node set would not do), where the speed varies along the arc: the sum of 200 001 chords of the
+    equidistant, to 1e-9."""
+    from propulsor.gears.noncircular_teeth import BodyPitchCurve, _arc_len
+    from propulsor.laws.ratio_laws import FourierLaw
+
+    curve = BodyPitchCurve(PitchCurves(FourierLaw(k=3, cos=(0.0, 0.005), sin=(0.04,)), 100.0), "driven")
+    for h, a, b in ((2.4, 0.5, 0.62), (-2.5, 1.1, 0.95), (0.0, 2.0, 2.3)):
+        P = curve.offset(np.linspace(min(a, b), max(a, b), 200001), h)
+        chords = float(np.sum(np.linalg.norm(np.diff(P, axis=0), axis=1)))
+        assert _arc_len(curve, h, a, b) == pytest.approx(chords, rel=1e-9)
