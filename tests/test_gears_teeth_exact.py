@@ -1309,3 +1309,33 @@ def test_the_tip_lands_arc_on_a_non_circular_equidistant_against_its_chords():
         P = curve.offset(np.linspace(min(a, b), max(a, b), 200001), h)
         chords = float(np.sum(np.linalg.norm(np.diff(P, axis=0), axis=1)))
         assert _arc_len(curve, h, a, b) == pytest.approx(chords, rel=1e-9)
+
+
+def test_the_batched_tip_search_converges_itself_and_falls_back_only_where_the_flank_stops_short(monkeypatch):
+    """The batch's own Newton iteration (finite-difference Jacobian, both unknowns of every side at once) must
+    converge: _tip_hit (fsolve, one side at a time) is its fallback, called only for the sides that have no hit.
+    A broken iteration would still give the right answers through the fallback, only 16 times slower."""
+    import propulsor.gears.noncircular_teeth as nt
+    from propulsor.gears.envelope import PitchCurveCentrode
+
+    calls = []
+    single = nt._tip_hit
+
+    def counted(*a, **k):
+        calls.append(a[2])
+        return single(*a, **k)
+
+    m = 2.0
+    for pc, role, spec, ks, misses in ((_circular_pair(m, 40), "driver", ToothSpec(m=m, x=0.3), range(0, 20, 3), 0),
+                                       (_three_lobed(m), "driven", ToothSpec(m=m, x=0.2, z0=20), range(6, 14), 9)):
+        frame, curve = ArcFrame(pc), nt.BodyPitchCurve(pc, role)
+        tools = spec.shaper_tools() if spec.z0 else spec.rack_tools()
+        s_k = np.array([(k + (0.5 if role == "driven" else 0.0)) * math.pi * m for k in ks])
+        sides = [nt.make_side(t, PitchCurveCentrode(curve, frame, s), spec.h_root) for s in s_k for t in tools]
+        span = 1.5 * math.pi * m / float(np.min(pc.ds_dphi(np.linspace(0, math.pi / 2, 200))))
+        monkeypatch.setattr(nt, "_tip_hit", counted)
+        for h in (spec.h_tip, 0.4 * m):
+            calls.clear()
+            got = nt._tip_hits_batch(sides, np.repeat(s_k, 2), np.repeat(frame.phi(s_k), 2), curve, frame, h, span)
+            assert len(calls) == sum(g is None for g in got) == (misses if h == spec.h_tip else 0)
+        monkeypatch.setattr(nt, "_tip_hit", single)
