@@ -1339,3 +1339,12 @@ def test_the_batched_tip_search_converges_itself_and_falls_back_only_where_the_f
             got = nt._tip_hits_batch(sides, np.repeat(s_k, 2), np.repeat(frame.phi(s_k), 2), curve, frame, h, span)
             assert len(calls) == sum(g is None for g in got) == (misses if h == spec.h_tip else 0)
         monkeypatch.setattr(nt, "_tip_hit", single)
+
+
+@pytest.mark.parametrize("x", [0.5, -0.4, 0.0])
+def test_the_rack_tools_flank_runs_one_and_a_half_addenda_and_half_a_module_past_the_reference_line(x):
+    """rack_tools: the straight flank is followed to u_top = (1.5 (h_a* + |x|) + 0.5) m / cos alpha along itself,
+    well past any tip the gear is cut to ((h_a* + x) m above the pitch curve, plus its curvature's reach)."""
+    right, left = ToothSpec(m=2.0, x=x).rack_tools()
+    u_top = (1.5 * (1.0 + abs(x)) + 0.5) * 2.0 / math.cos(ALPHA)
+    assert right.flank_range[1] == left.flank_range[1] == pytest.approx(u_top, rel=1e-15)
