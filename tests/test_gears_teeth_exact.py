@@ -1348,3 +1348,25 @@ def test_the_rack_tools_flank_runs_one_and_a_half_addenda_and_half_a_module_past
     right, left = ToothSpec(m=2.0, x=x).rack_tools()
     u_top = (1.5 * (1.0 + abs(x)) + 0.5) * 2.0 / math.cos(ALPHA)
     assert right.flank_range[1] == left.flank_range[1] == pytest.approx(u_top, rel=1e-15)
+
+
+@pytest.mark.parametrize("role, x", [("driven", 0.0), ("driven", 0.3), ("driver", -0.2)])
+def test_a_rack_cut_sides_root_angle_is_where_its_fillet_meets_the_root(role, x):
+    """phi_root of a rack-cut side (make_side): the driven angle whose point on the root equidistant (h_root below
+    the pitch curve) is the fillet's first point; on a circle that point's radius is r - h_root."""
+    from propulsor.gears.envelope import PitchCurveCentrode
+    from propulsor.gears.noncircular_teeth import BodyPitchCurve, make_side
+
+    m = 2.0
+    pc = _circular_pair(m, 40)
+    frame, curve = ArcFrame(pc), BodyPitchCurve(pc, role)
+    spec = ToothSpec(m=m, x=x)
+    r = 40.0 if role == "driven" else 20.0
+    for k in (0, 5):
+        s_k = (k + (0.5 if role == "driven" else 0.0)) * math.pi * m
+        for tool in spec.rack_tools():
+            side = make_side(tool, PitchCurveCentrode(curve, frame, s_k))
+            X0 = side.fillet.at(side.fillet.u0)
+            assert float(np.linalg.norm(X0)) == pytest.approx(r - spec.h_root, abs=1e-9)
+            assert np.linalg.norm(curve.offset(np.array([side.phi_root]), -spec.h_root)[0] - X0) < 1e-9
+            assert side.root_gap_mm == 0.0 and not side.fillet_is_flank
