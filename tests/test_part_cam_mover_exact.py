@@ -167,6 +167,16 @@ def test_plan_carrier_closed_form():
     assert np.allclose(got, want, atol=1e-6)
 
 
+def test_plan_three_sprocket_holes_between_three_slides():
+    """Three legs (slides at −90°, 30°, 150°) and three holes on the 95 mm radius, in the slides' reach: the holes
+    sit midway between the slides, at −30°, 90°, 210° (half a turn on, they would sit in the slides)."""
+    pl = plan(CamMoverParams(**LIN, n_legs=3, carrier_bolt_count=3, carrier_bolt_circle_mm=190.0))
+    got = sorted((round(float(c[0]), 4), round(float(c[1]), 4))
+                 for c in (h.polyline(1e-4).mean(axis=0) for h in pl.carrier.profile.holes) if np.hypot(*c) > 1)
+    want = sorted((round(95.0 * math.cos(a), 4), round(95.0 * math.sin(a), 4)) for a in np.radians([-30.0, 90.0, 210.0]))
+    assert np.allclose(got, want, atol=1e-3)
+
+
 def test_plan_of_the_zero_law_is_the_straight_path():
     """K = 0: H = H0 / cos φ over the support phase, the shoe's ground curve the circle of C about the roller axle."""
     pl = plan(CamMoverParams(law="zero", carrier_radius_mm=300.0))
@@ -186,6 +196,19 @@ def test_plan_with_a_lowered_return_top_and_no_cam_bolts():
     assert pl.R_convex_where == "working wall at φ = 80.69°"
     assert len(pl.plate.holes) == 1 and len(pl.core.holes) == 1
     assert pl.carrier.slot_bottom == pytest.approx(72.0, abs=1e-9)
+    # the law's evaluation uses the same return phase (H(π) = 100 mm, not the default closure's)
+    assert pl.evaluation["H_min_mm"] == pytest.approx(100.0, abs=1e-9)
+    assert pl.evaluation["H_max_mm"] == pytest.approx(pl.H_max, abs=1e-3)
+
+
+def test_plan_layers_of_a_wider_groove_gap_and_a_short_guide():
+    pl = plan(CamMoverParams(**LIN, groove_axial_gap_mm=2.0))
+    assert pl.z == dict(plate=(0.0, 12.0), channel=(12.0, 36.0), roller=(14.0, 34.0), carrier=(38.0, 58.0),
+                        shoe=(38.0, 78.0), pin=(14.0, 38.0))
+    # the slide reaches 0.5 mm beyond the leg's inner end at H_max: a guide of 0.5 mm is still a guide
+    R = math.hypot(pl.H_max - 25.0 + 0.5, 15.1)
+    short = plan(CamMoverParams(**LIN, carrier_radius_mm=R))
+    assert short.carrier.slot_rim - (short.H_max - 25.0) == pytest.approx(0.5, abs=1e-6)
 
 
 def test_plan_of_a_searched_law_takes_the_searchs_law(monkeypatch):
@@ -252,6 +275,10 @@ def test_plan_refuses_a_roller_the_cam_cannot_take():
     assert _refusal(**LIN, roller_radius_mm=87.5) == (
         "roller_radius_mm = 87.5: must be < the least convex radius of curvature of the cam channel R = 49.46 mm "
         "(working wall at φ = 314.97°, eq. 16) (K = 0.0093·|φ|)")
+    # a convex radius left but under 1 mm is still "must be < R", not "undercut"
+    assert _refusal(law="quadratic", k0=0.05, roller_radius_mm=25.5) == (
+        "roller_radius_mm = 25.5: must be < the least convex radius of curvature of the cam channel R = 0.5557 mm "
+        "(outer wall at φ = 101.93°, eq. 16) (K = 0.05·φ²)")
     # H_min − r against the axle bore: 80 mm against 81, and 79.5 passes
     assert _refusal(**LIN, return_mode="top", return_top_mm=100.0, axle_diameter_mm=162.0) == (
         "roller_radius_mm = 20.0: the working wall reaches the axle bore: H_min − r = 80 mm must be > "
@@ -278,10 +305,21 @@ def test_convex_radius_min_of_a_table():
 def test_plan_refuses_holes_and_fits_on_both_sides():
     assert _refusal(**LIN, cam_bolt_count=30) == "cam_bolt_count = 30: holes overlap on the pitch circle (pitch 12.57 mm)"
     assert plan(CamMoverParams(**LIN, cam_bolt_count=26)).H_min == pytest.approx(110.0, abs=1e-9)  # pitch 14.5 mm
+    # the cam bolt holes (r 5.5 mm) keep 3 mm to the bore (20 mm) and to the working wall (90 mm) exactly at 57 and 163
+    for circle in (57.0, 163.0):
+        assert len(plan(CamMoverParams(**LIN, cam_bolt_circle_mm=circle)).plate.holes) == 7
+    for circle in (56.5, 163.5):
+        assert _refusal(**LIN, cam_bolt_circle_mm=circle) == (
+            f"cam_bolt_circle_mm = {circle}: holes must keep 3 mm of material between the radii 20 and 90 mm")
     assert _refusal(**LIN, cam_bolt_circle_mm=170.0) == (
         "cam_bolt_circle_mm = 170.0: holes must keep 3 mm of material between the radii 20 and 90 mm")
     assert _refusal(**LIN, return_mode="top", return_top_mm=100.0, axle_diameter_mm=159.0) == (
         "cam_bolt_circle_mm = 120.0: holes must keep 3 mm of material between the radii 79.5 and 80 mm")
+    # the shoe's own refusals under the part file's names
+    assert _refusal(**LIN, shoe_rim_mm=185.0) == (
+        "shoe_rim_mm = 185.0: must be < Y2_min − boss half width = 185 mm (seed 001 eq. 7)")
+    assert _refusal(**LIN, shoe_rim_mm=150.0) == (
+        "leg_mount_mm = 100.0: must be < 55.62 mm (the inner rim of the shoe at the boss)")
     assert _refusal(**LIN, socket_depth_mm=91.0) == (
         "socket_depth_mm = 91.0: must be <= 90.43 mm (the shoe rim is 193.4 mm from the roller axle at the boss)")
     assert plan(CamMoverParams(**LIN, socket_depth_mm=90.0)).H_min == pytest.approx(110.0, abs=1e-9)
@@ -297,6 +335,17 @@ def test_plan_refuses_holes_and_fits_on_both_sides():
     assert _refusal(**LIN, carrier_bolt_count=30, carrier_bolt_hole_mm=4.0, carrier_bolt_circle_mm=300.0) == (
         "carrier_bolt_circle_mm = 300.0: sprocket hole 4 comes within -2 mm of a slide; needs 3 mm")
     assert _refusal(**LIN, carrier_bolt_count=40) == "carrier_bolt_count = 40: holes overlap (pitch 10.21 mm)"
+    # the sprocket holes (r 4.5 mm) keep 3 mm to the bore (34 mm) and the rim (195 mm): circles 83 ... 375 mm
+    for circle in (83.0, 375.0):
+        assert len(plan(CamMoverParams(**LIN, carrier_bolt_circle_mm=circle)).carrier.profile.holes) == 5
+    for circle in (82.0, 376.0):
+        assert _refusal(**LIN, carrier_bolt_circle_mm=circle) == (
+            f"carrier_bolt_circle_mm = {circle}: holes must keep 3 mm of material between the radii 34 and 195 mm")
+    # the carrier outline's own refusals under the part file's names (the slot's width is shown)
+    assert _refusal(**LIN, carrier_radius_mm=80.0, carrier_bolt_count=0) == (
+        "carrier_radius_mm = 80.0: must reach beyond the slot bottom 82 mm")
+    assert _refusal(**LIN, carrier_radius_mm=100.0, leg_width_mm=200.0, carrier_bolt_count=0) == (
+        "leg_width_mm = 200.2: slot must be narrower than the carrier diameter 200 mm")
     assert len(plan(CamMoverParams(**LIN, carrier_bolt_count=34)).carrier.profile.holes) == 35  # pitch 12.01 mm
     assert _refusal(**LIN, carrier_radius_mm=120.0) == (
         "carrier_radius_mm = 120.0: the leg leaves its slide at H_max = 169.3 mm: the slide must reach beyond "
@@ -313,8 +362,11 @@ def test_slide_and_hole_limits_at_their_edges():
         "leg_width_mm = 56.7: neighbouring slides meet at the slide bottom")
 
 
-def test_feasible_checks_a_fixed_law_and_leaves_a_searched_one():
+def test_feasible_checks_a_fixed_law_and_leaves_a_searched_one(monkeypatch):
+    searched = []
+    monkeypatch.setattr(cd, "search_design", lambda *a: searched.append(a))
     assert cd.feasible(CamMoverParams()) is None  # searched: the build checks it after the search
+    assert searched == []
     assert cd.feasible(CamMoverParams(**LIN)) is None
     with pytest.raises(InputError) as e:
         cd.feasible(CamMoverParams(**LIN, carrier_radius_mm=120.0))
@@ -406,6 +458,63 @@ def test_profile_fd_check_largest_curvature_and_relative_deviation():
     assert fd["curvature_rel_max"] == pytest.approx(fd["curvature_abs_max"] / kmax, rel=1e-3)
 
 
+def test_profile_fd_check_relative_deviation_of_r_where_curved():
+    """R_rel_max by the docstring's recipe in the test: 5-point curvature of the table's profile points against
+    1/R of eq. 16, |κ_FD − κ| / |κ_FD| over the kept samples whose |κ| >= 0.1/H0."""
+    pl = plan(CamMoverParams(**LIN))
+    motion = pl.motion
+    n = 7200
+    h = 2 * math.pi / n
+    phi = -S + h * np.arange(n)
+    keep = np.ones(n, bool)
+    for a in (-S, 0.0, S, math.pi, 2 * math.pi - S):
+        keep &= np.abs(phi - a) > 4.5 * h
+    k = np.array([-2, -1, 0, 1, 2])
+    P = motion.table((phi[:, None] + h * k[None, :]).ravel())
+    X, Y = P.X.reshape(n, 5), P.Y.reshape(n, 5)
+    d1 = np.array([1.0, -8.0, 0.0, 8.0, -1.0]) / (12 * h)
+    d2 = np.array([-1.0, 16.0, -30.0, 16.0, -1.0]) / (12 * h * h)
+    x1, y1, x2, y2 = X @ d1, Y @ d1, X @ d2, Y @ d2
+    kfd = -(x1 * y2 - y1 * x2) / (x1 ** 2 + y1 ** 2) ** 1.5
+    k16 = 1.0 / motion.table(phi).R_profile
+    curved = keep & (np.abs(k16) >= 0.1 / 110.0)
+    want = float(np.max((np.abs(kfd - k16) / np.abs(kfd))[curved]))
+    fd = cp.profile_fd_check(motion, n=n)
+    assert fd["R_rel_max"] == pytest.approx(want, rel=1e-6)
+    assert fd["curvature_abs_max"] == pytest.approx(float(np.max(np.abs(kfd - k16)[keep])), rel=1e-6)
+    # the relative deviation where the wall is curved is not the one where it is nearly straight
+    flat = keep & ~curved
+    assert np.any(flat) and np.count_nonzero(curved) > 100
+
+
+def test_inside_of_a_diamond_by_crossings():
+    """|x| + |y| < 1: every point of a grid off the edges, the crossings' convention on a vertex's height (y = 0) and
+    on the right edge (outside), and no floating-point warning from the horizontal edges of a square."""
+    import warnings
+
+    diamond = np.array([[0.0, -1.0], [1.0, 0.0], [0.0, 1.0], [-1.0, 0.0]])
+    for x in np.linspace(-1.3, 1.3, 27):
+        for y in np.linspace(-1.25, 1.25, 11):
+            if abs(abs(x) + abs(y) - 1.0) > 1e-6:
+                assert cp._inside((x, y), diamond) == (abs(x) + abs(y) < 1.0), (x, y)
+    assert cp._inside((0.5, 0.0), diamond) and cp._inside((-0.5, 0.0), diamond)
+    assert not cp._inside((-2.0, 0.0), diamond) and not cp._inside((2.0, 0.0), diamond)
+    assert cp._inside((0.2, 0.5), diamond) and cp._inside((0.45, 0.5), diamond)
+    assert not cp._inside((0.5, 0.5), diamond)  # on the right edge: the crossing at x itself is not counted
+    # edges whose rise is not 1: |x|/2 + |y|/3 < 1
+    wide = np.array([[0.0, -3.0], [2.0, 0.0], [0.0, 3.0], [-2.0, 0.0]])
+    for x in np.linspace(-2.5, 2.5, 21):
+        for y in np.linspace(-3.5, 3.5, 15):
+            if abs(abs(x) / 2 + abs(y) / 3 - 1.0) > 1e-6:
+                assert cp._inside((x, y), wide) == (abs(x) / 2 + abs(y) / 3 < 1.0), (x, y)
+    sq = np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert cp._inside((1.0, 1.0), sq)  # y = 1 crosses the horizontal edges at infinity: divide
+        cp._inside((1.0, 0.0), sq)  # y = 0 on the bottom edge: 0/0, invalid (no warning either)
+        assert not cp._inside((3.0, 2.0), sq)
+
+
 def test_inside_of_a_square():
     sq = np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])
     assert cp._inside((1.0, 1.0), sq) is True
@@ -454,6 +563,23 @@ def test_motion_proofs_of_three_legs_have_no_opposite_leg():
     assert ticks == [1, 2, 3, 4, 5, 6, 7] and "opposite" not in out and out["neighbours"].n_steps == 36
     out = cp.motion_proofs(pl, built["shoe_loops"], built["channel_loops"])
     assert "opposite" not in out
+
+
+def test_motion_proofs_of_five_legs_take_the_leg_two_places_on_as_opposite():
+    from propulsor.checks.motion import outline, sweep_pair
+
+    pl, built = _proved(n=36, n_legs=5, leg_width_mm=30.0, carrier_bolt_count=0)
+    out = cp.motion_proofs(pl, built["shoe_loops"], built["channel_loops"])
+    phi = 2 * math.pi * np.arange(36) / 36
+    body_cs = outline(pl.shoe.profile, 1e-3, 1.0).section + outline(pl.leg, 1e-3, 1.0).section
+    body = outline([np.asarray(q, float) for q in body_cs.to_polygons()], 1e-3, 1.0)
+    legM = cp.leg_poses(pl, phi)
+    want = sweep_pair(body, legM, body, cp.leg_poses(pl, phi + 2 * math.pi * 2 / 5), name="x", max_segment=1.0)
+    assert out["opposite"].clearance == pytest.approx(want.clearance, rel=1e-12)
+    near = sweep_pair(body, legM, body, cp.leg_poses(pl, phi + 2 * math.pi / 5), name="x", max_segment=1.0)
+    assert out["neighbours"].clearance == pytest.approx(near.clearance, rel=1e-12)
+    other = sweep_pair(body, legM, body, cp.leg_poses(pl, phi - 2 * math.pi * 2 / 5), name="x", max_segment=1.0)
+    assert np.max(np.abs(other.clearance - want.clearance)) > 1e-3
 
 
 def test_engineering_checks_of_the_linear_law():
@@ -518,10 +644,12 @@ def test_engineering_checks_take_the_larger_hertz_stress_and_fail_where_the_part
 
 def test_engineering_checks_of_the_returns_larger_stress():
     pl, built = _proved()
-    pl = dataclasses.replace(pl, evaluation={**pl.evaluation, "sigma_return_max_MPa": 900.0})
+    pl = dataclasses.replace(pl, evaluation={**pl.evaluation, "sigma_return_max_MPa": 900.0,
+                                             "shoe_self_intersecting": True})
     w = _Said()
     cp.engineering_checks(pl, w, built)
     assert w.checks[3].value == 900.0
+    assert w.checks[4].message == "σ = Y2 − Y1'·sin φ, no cusp; self-intersecting: True"
 
 
 def test_motion_proof_checks_of_the_linear_law():
@@ -598,6 +726,8 @@ def test_motion_proof_checks_fail_a_roller_off_its_wall_and_a_wide_variation():
     assert not by["hub height: mean vs R0 + r + C"].passed
     counts = [e for e in events if getattr(e, "done", None) is not None]
     assert counts[0].done == 0 and counts[-1].done == 8 and {e.total for e in counts} == {8}
+    assert str(counts[0]) == "cam_mover: motion proofs: sweep 0/8" and str(counts[-1]) == "cam_mover: motion proofs: sweep 8/8"
+    assert {e.phase for e in counts} == {"cam_mover: motion proofs"}
 
 
 def test_motion_proof_checks_bounds_of_the_roller_gaps():
@@ -619,6 +749,52 @@ def test_motion_proof_checks_bounds_of_the_roller_gaps():
     cp.motion_proof_checks(dataclasses.replace(pl, params=p), w3, built)
     c = w3.checks[3]
     assert c.limit == pytest.approx([0.065, 0.195]) and not c.passed
+
+
+def _sweep(clearance, overlap=0.0):
+    c = np.asarray(clearance, float)
+    return SimpleNamespace(max_overlap=overlap, clearance=c, n_steps=len(c), step_max_overlap=0,
+                           min_clearance=float(c.min()), step_min_clearance=int(np.argmin(c)),
+                           overlap_area=np.zeros(len(c)))
+
+
+def _checks_of(monkeypatch, working, outer, w_leg=(0.0, 0.1), idle=(5.0, 1.0), n=4):
+    """motion_proof_checks on given sweep results (the sweeps replaced by a recorder of them)."""
+    pl, built = _proved()
+    s = S
+    hub = dict(hub=np.array([320.0, 320.0]), leg=np.array([0, 1]), w=np.array(w_leg), idle_clearance=np.array(idle))
+    out = {"phi": np.array([0.0, 1.0]), "roller_working": _sweep(working), "roller_outer": _sweep(outer),
+           "hub": hub, "hub_exact": hub, "leg_carrier": _sweep([0.1, 0.1]), "shoe_carrier": _sweep([15.0, 70.0]),
+           "neighbours": _sweep([80.0, 90.0])}
+    if n >= 4:
+        out["opposite"] = _sweep([190.0, 200.0])
+    monkeypatch.setattr(cp, "motion_proofs", lambda *a, **k: out)
+    w = _Said()
+    cp.motion_proof_checks(pl, w, built)
+    return {c.name: c for c in w.checks}, w
+
+
+def test_motion_proof_checks_limits_of_the_roller_gaps(monkeypatch):
+    c = 0.2
+    tol = policy.CHORD_TOL_MM
+    gap, clr = "roller in channel: gap to the working wall", "roller in channel: clearance to the outer wall"
+    by, _ = _checks_of(monkeypatch, [0.0, tol], [0.5 * c + 1e-9, 1.5 * c - 1e-9])
+    assert by[gap].passed and by[clr].passed
+    by, _ = _checks_of(monkeypatch, [0.0, tol + 1e-6], [0.5 * c, 1.5 * c - 1e-9])
+    assert not by[gap].passed and not by[clr].passed  # lifted off its wall; on the outer wall's half clearance
+    by, _ = _checks_of(monkeypatch, [-1e-6, tol], [0.5 * c + 1e-9, 1.5 * c])
+    assert not by[gap].passed and not by[clr].passed  # into its wall; binding at 1.5 c
+    assert by[gap].value == tol and by[clr].value == pytest.approx(0.5 * c + 1e-9)
+
+
+def test_motion_proof_checks_idle_shoes_inside_90_percent_of_the_support(monkeypatch):
+    idle = "hub height: idle shoes clear the ground"
+    by, w = _checks_of(monkeypatch, [0.0, 0.001], [0.2, 0.2], w_leg=(0.0, 0.9 * S), idle=(5.0, 1.0))
+    assert by[idle].value == 5.0 and w.derived["idle_shoe_ground_clearance_min_mm"] == 5.0
+    by, _ = _checks_of(monkeypatch, [0.0, 0.001], [0.2, 0.2], w_leg=(0.0, 0.9 * S - 1e-9), idle=(5.0, 1.0))
+    assert by[idle].value == 1.0
+    by, _ = _checks_of(monkeypatch, [0.0, 0.001], [0.2, 0.2], w_leg=(-0.9 * S + 1e-9, 0.0), idle=(0.5, 1.0))
+    assert by[idle].value == 0.5
 
 
 def _meshes(pl):
@@ -665,6 +841,12 @@ def test_spot_checks_3d_place_the_roller_by_the_leg_pose():
     tiny = outline(Profile(circle_loop(8.0)), 0.02, 1.0).section.extrude(20.0)
     _, res = cp.spot_checks_3d(small, cam, tiny, k=2)
     assert res.gap == pytest.approx([1.0, 1.0], abs=1e-9)
+    # the roller's own z kept (not scaled): a roller 1 mm up in its own frame is 2 mm off the floor
+    _, res = cp.spot_checks_3d(small, cam, tiny.translate([0.0, 0.0, 1.0]), k=2)
+    assert res.gap == pytest.approx([2.0, 2.0], abs=1e-9)
+    # the gap is searched within 5 mm: 11 mm off the floor (12 off the walls) reads 5
+    _, res = cp.spot_checks_3d(small, cam, tiny.translate([0.0, 0.0, 10.0]), k=2)
+    assert res.gap == pytest.approx([5.0, 5.0], abs=1e-9)
 
 
 def test_spot_checks_and_tables(tmp_path):
