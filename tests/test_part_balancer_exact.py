@@ -91,14 +91,14 @@ def _meshes(m):
     from propulsor.solids.kernel import manifold_cylinder
 
     b = m.p.arm_width_mm
-    arm = outline(m.outline.profile, 0.05, 2.0).section.extrude(b).translate([0.0, 0.0, -0.5 * b])
+    arm = outline(m.outline.profile, 0.5, 5.0).section.extrude(b).translate([0.0, 0.0, -0.5 * b])
     w = m.wheel
 
     def ring(r0, r1, z0, z1):
-        return (manifold_cylinder(z1 - z0, r1, 128, [0, 0, z0])
-                - manifold_cylinder(z1 - z0 + 2.0, r0, 128, [0, 0, z0 - 1.0]))
+        return (manifold_cylinder(z1 - z0, r1, 48, [0, 0, z0])
+                - manifold_cylinder(z1 - z0 + 2.0, r0, 48, [0, 0, z0 - 1.0]))
 
-    wheel = [_vf(manifold_cylinder(m.wheel_p.hub_length_mm, w.r_hub, 128))]
+    wheel = [_vf(manifold_cylinder(m.wheel_p.hub_length_mm, w.r_hub, 48))]
     for z0, z1 in w.rows_z:
         wheel += [_vf(ring(w.r_rim_in, w.r_rim_out, z0, z1)), _vf(ring(w.r_rim_out, w.r_tyre, z0, z1))]
     return _vf(arm), wheel
@@ -130,6 +130,9 @@ def test_suspension_of_the_part_file_is_the_seeds():
     # dampers listed in any order: the set of wheels, front to back
     d2 = bd.suspension_design(_params(damped_wheels=[8, 1]))
     assert d2.damper_x_m == pytest.approx((xs[0], xs[7]), abs=1e-12)
+    # wheel numbers outside 1 ... n (the file's validate() refuses them) are left out here
+    d4 = bd.suspension_design(_params(damped_wheels=[8, 1, 0, 9]))
+    assert d4.damper_x_m == pytest.approx((xs[0], xs[7]), abs=1e-12)
     # adopted angles replace eq. 9 and 10
     d3 = bd.suspension_design(_params(beta0_deg=20.0, beta_m_deg=110.0))
     assert math.degrees(d3.torsion.beta0) == pytest.approx(20.0) and math.degrees(d3.torsion.beta_m) == \
@@ -224,6 +227,9 @@ def test_resolve_refuses_a_wheel_that_does_not_fit():
         "D_lower_mm = 105.0: the spindle collar must exceed the inner bearing bore 100 mm (road wheel) by 10 mm")
     assert _refusal(D_lower_mm=170.0) == (
         "D_lower_mm = 170.0: the collar must stay min_clearance_mm inside the wheel hub's seat (D = 180 mm): <= 160")
+    assert _model(D_lower_mm=110.0).geom.D_lower == 110.0  # the bore 100 + 2·5 mm
+    assert _model(D_lower_mm=160.0).geom.D_lower == 160.0  # 80 + 10 mm inside the seat's 90 mm radius
+    assert _refusal(D_lower_mm=109.5) .startswith("D_lower_mm = 109.5: the spindle collar must exceed")
     assert _refusal(D_lower_mm=161.0, lower_boss_r_mm=90.0, s_stop_mm=220.0) == (
         "D_lower_mm = 161.0: the collar must stay min_clearance_mm inside the wheel hub's seat (D = 180 mm): <= 160")
     assert _refusal(lower_collar_mm=2.0) == (
@@ -288,6 +294,12 @@ def test_resolve_reads_the_road_wheel_file(tmp_path, monkeypatch):
     with pytest.raises(InputError) as e:
         bd.resolve(_params(road_wheel_file="heavy.toml"), tmp_path / "balancer.toml")
     assert str(e.value).startswith("load_N (in heavy.toml) = 3000000.0: Kozlov's deflection")
+    # a wheel whose inner row stands 5 mm inboard of its hub face: its inboard face is the row's, 35 mm from the arm
+    (tmp_path / "inboard.toml").write_text(text.replace("row_offset_mm = 5.0", "row_offset_mm = -5.0"), "utf-8")
+    with pytest.raises(InputError) as e:
+        bd.resolve(_params(road_wheel_file="inboard.toml"), tmp_path / "balancer.toml")
+    assert str(e.value) == ("lower_collar_mm = 10.0: the wheel's inboard face (z = 35 mm) must lie min_clearance_mm "
+                            "outboard of the arm face z = 30 mm")
     (tmp_path / "bearing.toml").write_text(text.replace("bearing_outer_d_mm = 80.0", "bearing_outer_d_mm = 100.0")
                                            .replace("hub_relief_d_mm = 124.0", "hub_relief_d_mm = 125.0"), "utf-8")
     with pytest.raises(InputError) as e:
@@ -353,6 +365,8 @@ def test_gap_doubles_its_window():
     c = manifold_cube([10.0, 10.0, 10.0], [3000.0, 0.0, 0.0])
     assert bp._gap(a, c, 20.0) == pytest.approx(2560.0)  # the window stops growing at 2560 >= 2000: capped there
     assert bp._gap(a, c, 2500.0) == pytest.approx(2500.0)
+    assert bp._gap(a, c, 2000.0) == pytest.approx(2000.0)  # a window of 2000 mm is the largest searched
+    assert bp._gap(a, c, 1500.0) == pytest.approx(2990.0)  # 1500 caps, 3000 holds the gap
     assert bp.SWEEP_GAP_MAX_MM == 2000.0
 
 
@@ -421,8 +435,8 @@ def test_travel_sweep_of_the_arm_and_its_wheel():
     assert front["worst_step"] == 6 and rear["worst_step"] == 0
     assert front["what"] == "wheel tyre_1" and rear["what"] == "wheel tyre_1"
     assert front["searched_steps"] == list(range(11)) and rear["searched_steps"] == list(range(11))
-    assert front["gap_mm"][6] == pytest.approx(157.04421770385278, rel=1e-6)
-    assert rear["gap_mm"][0] == pytest.approx(155.87534641411943, rel=1e-6)
+    assert front["gap_mm"][6] == pytest.approx(157.38064741388004, rel=1e-6)
+    assert rear["gap_mm"][0] == pytest.approx(156.12222986699405, rel=1e-6)
     assert list(front["capped"]) == [True] * 4 + [False] * 5 + [True] * 2
     assert list(rear["capped"]) == [False] * 3 + [True] * 8
     ang, dist = bp._neighbour_angles(m, res["beta"], m.pitch)
@@ -671,8 +685,11 @@ def test_travel_sweep_checks_of_the_sweep():
     assert c[0].message == "manifold3d intersection volume at 11 steps β0 … β_m (0.1/deg); 0 steps overlap"
     assert c[1].value == pytest.approx(22.0, abs=1e-6)
     assert c[1].message.startswith("least gap at β = 18.80° (the same at every step) between the balancer near (")
-    assert c[1].message.endswith(") and the hull envelope near (88.1, -74.1, -52.0) (world mm)")
-    assert c[3].value == pytest.approx(157.04421770385278, rel=1e-6)
+    # the arm's inboard face (z = −30) against the hull side plane (z = −52), the same (x, y)
+    assert ", -30.0) and the hull envelope near (" in c[1].message and c[1].message.endswith(", -52.0) (world mm)")
+    a, b = c[1].message.split(" near ")[1:3]
+    assert a.split(", ")[:2] == b.split(", ")[:2]
+    assert c[3].value == pytest.approx(157.38064741388004, rel=1e-6)
     assert c[3].message.startswith("least gap at β = 76.42° between the wheel tyre_1 near (")
     assert " and the front neighbour station near (" in c[3].message
     assert c[5].message.startswith("least gap at β = 18.80° between the wheel tyre_1 near (")
@@ -685,8 +702,8 @@ def test_travel_sweep_checks_of_the_sweep():
     D = w.derived
     assert D["min_clearance_hull_mm"] == pytest.approx(22.0, abs=1e-6)
     assert D["min_clearance_hull_where"] == c[1].message.removeprefix("least gap ")
-    assert D["min_clearance_front_mm"] == pytest.approx(157.04421770385278, rel=1e-6)
-    assert D["min_clearance_rear_mm"] == pytest.approx(155.87534641411943, rel=1e-6)
+    assert D["min_clearance_front_mm"] == pytest.approx(157.38064741388004, rel=1e-6)
+    assert D["min_clearance_rear_mm"] == pytest.approx(156.12222986699405, rel=1e-6)
     assert D["min_clearance_own_wheel_mm"] == pytest.approx(10.0, abs=1e-3)
     assert D["min_clearance_overall_mm"] == D["min_clearance_own_wheel_mm"]
     assert D["min_clearance_overall_where"] == (f"own road wheel to balancer near {bp.fmt_point(pa)} / "
