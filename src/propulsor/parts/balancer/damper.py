@@ -69,6 +69,7 @@ def damper_heat_results(m, w, built: dict) -> None:
     for name, h, L, runs, steady, design in res:
         D[f"damper_heat_rise_at_{TABLE_11['V']:g}mps_L{L:g}_K"] = design.rise
 
+    # pragma: no mutate start (the figure only; the table, values and note above and below are the numbers)
     fig, _ = new_figure(13.0, 4.4)
     fig.clf()
     ax1, ax2, ax3 = (fig.add_subplot(1, 3, k) for k in (1, 2, 3))
@@ -92,6 +93,7 @@ def damper_heat_results(m, w, built: dict) -> None:
     ax3.set_ylabel("steady tyre temperature rise, K")
     ax3.set_title("Road wheel tyre, Kozlov (seed 004 ch. 7)", fontsize=9)
     fig.tight_layout()
+    # pragma: no mutate end
     w.add_plot("damper_and_tyre_heat", fig)
     w.add_note(
         f"Damper heat (seed 004 ch. 6): two-mass station, sprung {st.m2:g} kg, unsprung {st.m1:.1f} kg (built balancer "

@@ -197,7 +197,10 @@ def resolve(p: BalancerParams, source: Path | None = None) -> BalancerModel:
     extras["wheel_names"] = list(wm.sections())  # the road wheel's solids, in the order they are built
     m = BalancerModel(p, design, wp, wm, f, geom, an, p.spline(), z_hub, e_w, L_a, 1000.0 * p.base_m / (n - 1),
                       extras=extras)
-    outline, ear, pad, h_eq = _outline(m)
+    try:
+        outline, ear, pad, h_eq = _outline(m)
+    except InputError as exc:  # the equal-strength depth's refusal names the library's h_max
+        raise _renamed(exc) from None
     extras["h_eq"] = h_eq
     return dataclasses.replace(m, outline=outline, ear=ear, pad=pad)
 

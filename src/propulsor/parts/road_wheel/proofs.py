@@ -34,7 +34,7 @@ def kozlov_table(p: RoadWheelParams, num: int = 101) -> dict:
     }
 
 
-def kozlov_plot(p: RoadWheelParams, tab: dict):
+def kozlov_plot(p: RoadWheelParams, tab: dict):  # pragma: no mutate block (the figure only)
     from ...export.plots import new_figure
 
     fig, ax = new_figure(7.5, 4.8)
