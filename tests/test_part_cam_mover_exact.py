@@ -341,11 +341,16 @@ def test_plan_refuses_holes_and_fits_on_both_sides():
     for circle in (82.0, 376.0):
         assert _refusal(**LIN, carrier_bolt_circle_mm=circle) == (
             f"carrier_bolt_circle_mm = {circle}: holes must keep 3 mm of material between the radii 34 and 195 mm")
-    # the carrier outline's own refusals under the part file's names (the slot's width is shown)
+    # the carrier outline's own refusals under the part file's names, with the part file's values: a slide of the
+    # leg's width plus twice the clearance (0.1 mm) as wide as the carrier is refused at the leg's 199.8 mm
     assert _refusal(**LIN, carrier_radius_mm=80.0, carrier_bolt_count=0) == (
         "carrier_radius_mm = 80.0: must reach beyond the slot bottom 82 mm")
     assert _refusal(**LIN, carrier_radius_mm=100.0, leg_width_mm=200.0, carrier_bolt_count=0) == (
-        "leg_width_mm = 200.2: slot must be narrower than the carrier diameter 200 mm")
+        "leg_width_mm = 200.0: its slide (leg_width + 2·slide_clearance = 200.2 mm) must be narrower than the carrier "
+        "diameter 200 mm")
+    assert _refusal(**LIN, carrier_radius_mm=100.0, leg_width_mm=199.8, carrier_bolt_count=0) == (
+        "leg_width_mm = 199.8: its slide (leg_width + 2·slide_clearance = 200 mm) must be narrower than the carrier "
+        "diameter 200 mm")
     assert len(plan(CamMoverParams(**LIN, carrier_bolt_count=34)).carrier.profile.holes) == 35  # pitch 12.01 mm
     assert _refusal(**LIN, carrier_radius_mm=120.0) == (
         "carrier_radius_mm = 120.0: the leg leaves its slide at H_max = 169.3 mm: the slide must reach beyond "

@@ -178,7 +178,11 @@ def plan(p: CamMoverParams) -> Plan:
         pitch = math.pi * p.carrier_bolt_circle_mm / p.carrier_bolt_count
         if pitch < p.carrier_bolt_hole_mm + MIN_WEB_MM:
             raise InputError("carrier_bolt_count", p.carrier_bolt_count, f"holes overlap (pitch {pitch:.4g} mm)")
-    with input_names({"slot_width": "leg_width_mm", "radius": "carrier_radius_mm"}):
+    if slot_w >= 2.0 * p.carrier_radius_mm:
+        raise InputError("leg_width_mm", p.leg_width_mm,
+                         f"its slide (leg_width + 2·slide_clearance = {slot_w:g} mm) must be narrower than the carrier "
+                         f"diameter {2.0 * p.carrier_radius_mm:g} mm")
+    with input_names({"radius": "carrier_radius_mm"}):
         carrier = co.carrier_profile(p.n_legs, p.carrier_radius_mm, slot_w, slot_bottom, p.carrier_bore_mm, carr_holes)
     if carrier.slot_rim - (H_max - p.leg_back_mm) <= 0.0:
         raise InputError("carrier_radius_mm", p.carrier_radius_mm,
