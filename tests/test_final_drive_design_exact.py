@@ -13,6 +13,7 @@ import pytest
 
 from propulsor.params import load_params, read_part_file
 from propulsor.parts.final_drive import FinalDriveParams
+from stand_ins import SaidWriter
 
 ROOT = Path(__file__).resolve().parents[1]
 PART = ROOT / "parts" / "final_drive.toml"
@@ -151,22 +152,6 @@ def test_carrier_sweep_is_the_windowed_sweep_of_each_mesh_on_the_finished_outlin
 
 
 # ---- proofs.py: the sheet and the outline checks ----------------------------------------------------------------------
-class _Said:
-    """The parts of the output writer the sheet and outline steps use, with what they said."""
-
-    def __init__(self):
-        self.derived, self.checks, self.tables, self.said = {}, [], {}, []
-
-    def progress(self, message):
-        self.said.append(message)
-
-    def add_checks(self, checks):
-        self.checks += list(checks)
-
-    def add_table(self, name, columns, rows):
-        self.tables[name] = (columns, rows)
-
-
 def test_the_sheet_and_outline_steps_say_what_they_do_and_use_the_tips_the_gears_are_made_with():
     """Unshifted gears (x = 0): the planet's tip is m·(z + 2) = 220 mm in both sheets, the sun's m·(z + 2) = 180 mm,
     and the ring's as the set has it."""
@@ -174,7 +159,7 @@ def test_the_sheet_and_outline_steps_say_what_they_do_and_use_the_tips_the_gears
     from propulsor.parts.final_drive.proofs import outline_checks, sheet_and_conditions
 
     dd = design(_params(x_sun=0.0, x_planet=0.0))
-    w = _Said()
+    w = SaidWriter()
     sheet_and_conditions(dd, w, {})
     outline_checks(dd, w, {})
     assert w.said == ["planetary set: sheet and conditions", "generated outlines (rack: sun, planets; shaper: ring)"]

@@ -17,6 +17,8 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
+from stand_ins import record_generate_pair
+
 PARTS = Path(__file__).resolve().parent.parent / "parts"
 
 
@@ -52,22 +54,11 @@ def _record_sector_gears(monkeypatch, error=None):
 
 
 def _record_generate_pair(monkeypatch, outcomes):
-    """design.generate_pair replaced: each call recorded and answered by the next of ``outcomes``."""
+    """design.generate_pair replaced (stand_ins.record_generate_pair)."""
     import importlib
 
-    design_mod = importlib.import_module("propulsor.parts.noncircular_pair.design")
-
-    calls = []
-
-    def fake(pc, spec_driver, spec_driven, frame, progress=None):
-        calls.append(SimpleNamespace(pc=pc, drv=spec_driver, dvn=spec_driven, frame=frame, progress=progress))
-        out = outcomes[len(calls) - 1]
-        if isinstance(out, BaseException):
-            raise out
-        return out
-
-    monkeypatch.setattr(design_mod, "generate_pair", fake)
-    return calls
+    return record_generate_pair(monkeypatch, importlib.import_module("propulsor.parts.noncircular_pair.design"),
+                                outcomes)
 
 
 # =========================================================================== sectors

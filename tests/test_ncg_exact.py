@@ -22,6 +22,7 @@ from propulsor.checks.motion import outline
 from propulsor.checks.motion.contact_events import DRIVE, REVERSE, ContactLaw, PairOutlines, resolve_contact
 from propulsor.laws.ratio_laws import EllipticalLaw
 from propulsor.laws.walking import WalkingLaw
+from stand_ins import record_generate_pair
 
 PARTS = Path(__file__).resolve().parent.parent / "parts"
 
@@ -1353,21 +1354,10 @@ def test_half_an_hour_of_life_and_a_section_measured_under_two_numbers_and_a_lig
 
 
 def _record_generate_pair(monkeypatch, outcomes):
-    """cutting.generate_pair replaced: each call recorded and answered by the next of ``outcomes`` (an exception
-    raised, else returned as the (driver, driven) pair)."""
+    """cutting.generate_pair replaced (stand_ins.record_generate_pair)."""
     from propulsor.parts.noncircular_pair import cutting
 
-    calls = []
-
-    def fake(pc, spec_driver, spec_driven, frame, progress=None):
-        calls.append(SimpleNamespace(pc=pc, drv=spec_driver, dvn=spec_driven, frame=frame, progress=progress))
-        out = outcomes[len(calls) - 1]
-        if isinstance(out, BaseException):
-            raise out
-        return out
-
-    monkeypatch.setattr(cutting, "generate_pair", fake)
-    return calls
+    return record_generate_pair(monkeypatch, cutting, outcomes)
 
 
 def test_design_with_law_search_cuts_with_the_next_catalogue_shaper_where_the_generator_refuses(monkeypatch):

@@ -22,6 +22,7 @@ from propulsor import policy
 from propulsor.errors import InputError
 from propulsor.params import read_part_file
 from propulsor.parts.balancer.params import BalancerParams
+from stand_ins import SaidWriter
 
 bd = importlib.import_module("propulsor.parts.balancer.design")
 bp = importlib.import_module("propulsor.parts.balancer.proofs")
@@ -29,28 +30,6 @@ dm = importlib.import_module("propulsor.parts.balancer.damper")
 
 ROOT = Path(__file__).resolve().parents[1]
 FILE = ROOT / "parts" / "balancer.toml"
-
-
-class _Said:
-    """The parts of the output writer the proof steps use, with what they said."""
-
-    def __init__(self):
-        self.derived, self.checks, self.tables, self.plots, self.notes, self.said = {}, [], {}, {}, [], []
-
-    def progress(self, message):
-        self.said.append(message)
-
-    def add_checks(self, checks):
-        self.checks += list(checks)
-
-    def add_table(self, name, columns, rows):
-        self.tables[name] = (columns, rows)
-
-    def add_plot(self, name, fig):
-        self.plots[name] = fig
-
-    def add_note(self, text):
-        self.notes.append(text)
 
 
 class _Done:
@@ -503,7 +482,7 @@ def test_exact_gaps_of_few_steps():
 
 def test_strength_proof_of_the_part_file():
     m = _model()
-    w, built = _Said(), {}
+    w, built = SaidWriter(), {}
     bp.strength_proof(m, w, built)
     assert w.said == ["beam model on the built outline"]
     an, p = m.analysis, m.p
@@ -580,7 +559,7 @@ def test_strength_proof_of_the_part_file():
 def test_strength_proof_of_a_body_thinner_than_the_boss():
     """The body's elastic stress is taken where the arm is thinner than 0.95 of the lower boss's diameter."""
     m = _model(lower_boss_r_mm=60.0, s_stop_mm=200.0)
-    w, built = _Said(), {}
+    w, built = SaidWriter(), {}
     bp.strength_proof(m, w, built)
     h = built["h_built"]
     body = float(np.max(built["sig"]["beta_m elastic"][h < 0.95 * 2 * 60.0]))
@@ -592,7 +571,7 @@ def test_strength_proof_of_a_body_thinner_than_the_boss():
 def test_socket_ear_pad_checks_are_their_formulas():
     m = _model()
     p, t, d = m.p, m.tor, m.design
-    w = _Said()
+    w = SaidWriter()
     bp.socket_ear_pad_checks(m, w, {})
     sp = m.spline
     T = t.M_T_max
@@ -638,7 +617,7 @@ def test_socket_ear_pad_checks_take_the_larger_rod_force():
 
     m = _model()
     d = SimpleNamespace(torsion=m.tor, R_a_comp_max=3e5, R_a_reb_max=m.design.R_a_reb_max)
-    w = _Said()
+    w = SaidWriter()
     bp.socket_ear_pad_checks(dataclasses.replace(m, design=d), w, {})
     assert w.checks[2].value == pytest.approx(3e5 / (2 * math.pi * 400.0), rel=1e-12)
     assert w.checks[2].message == "rod force max(R_a,comp, R_a,reb) = 300.0 kN, pin Ø40"
@@ -648,7 +627,7 @@ def test_travel_sweep_checks_of_the_sweep():
     m = _model(steps_per_deg=0.1)
     bal, wheel = _meshes(m)
     res = bp.travel_sweep(m, bal, wheel)
-    w, built = _Said(), {"pending_sweep": _Done(res)}
+    w, built = SaidWriter(), {"pending_sweep": _Done(res)}
     bp.travel_sweep_checks(m, w, built)
     assert "pending_sweep" not in built and built["sweep"] is res and w.said == ["travel sweep done"]
     p, t = m.p, m.tor
@@ -730,7 +709,7 @@ def test_travel_sweep_checks_name_the_least_gap_overall_and_a_varying_gap():
     hull["worst_step"] = 3
     hull["overlap_mm3"] = hull["overlap_mm3"].copy()
     hull["overlap_mm3"][[2, 3]] = [0.5, 2e-3]
-    w = _Said()
+    w = SaidWriter()
     bp.travel_sweep_checks(m, w, {"pending_sweep": _Done(res)})
     c = w.checks
     assert not c[0].passed and c[0].value == 0.5
@@ -767,7 +746,7 @@ def test_damper_job_is_the_two_mass_model_over_the_roads():
 
 def test_start_damper_heat_runs_the_job_for_the_unsprung_mass():
     m = _model()
-    w, built = _Said(), {"mass": 70.0, "wm_tot": 50.0}
+    w, built = SaidWriter(), {"mass": 70.0, "wm_tot": 50.0}
     dm.start_damper_heat(m, w, built)
     assert w.said == ["damper heat (seed 004 ch. 6): two-mass model over 5 roads × 6 speeds, in a second process"]
     st, speeds, out = built["pending_damper"].result()
@@ -777,7 +756,7 @@ def test_start_damper_heat_runs_the_job_for_the_unsprung_mass():
 def test_damper_heat_results_table_values_and_note():
     m = _model()
     job = dm._job(120.0, float(m.design.mu_mean))
-    w, built = _Said(), {"pending_damper": _Done(job)}
+    w, built = SaidWriter(), {"pending_damper": _Done(job)}
     dm.damper_heat_results(m, w, built)
     assert "pending_damper" not in built
     st, speeds, res = job

@@ -23,29 +23,10 @@ from propulsor.laws.cam_motion import CurvatureLaw
 from propulsor.parts.cam_mover import CamMoverParams, plan
 from propulsor.parts.cam_mover import design as cd
 from propulsor.parts.cam_mover import proofs as cp
+from stand_ins import SaidWriter
 
 S = math.pi / 4  # the support phase of four legs is |φ| <= π/4
 LIN = dict(law="linear", k0=0.0093)  # parts/cam_linear.toml
-
-
-class _Said:
-    """The parts of the output writer the proof steps use, with what they said."""
-
-    def __init__(self, folder=None):
-        self.derived, self.checks, self.tables, self.said, self.waited = {}, [], {}, [], []
-        self.folder = folder
-
-    def progress(self, message):
-        self.said.append(message)
-
-    def add_checks(self, checks):
-        self.checks += list(checks)
-
-    def add_table(self, name, columns, rows):
-        self.tables[name] = (columns, rows)
-
-    def wait_for_files(self, *names):
-        self.waited.append(names)
 
 
 def _refusal(**kw):
@@ -589,7 +570,7 @@ def test_motion_proofs_of_five_legs_take_the_leg_two_places_on_as_opposite():
 
 def test_engineering_checks_of_the_linear_law():
     pl, built = _proved()
-    w = _Said()
+    w = SaidWriter()
     cp.engineering_checks(pl, w, built)
     got = [(c.name, c.passed, c.limit, c.unit) for c in w.checks]
     assert got == [
@@ -633,7 +614,7 @@ def test_engineering_checks_of_the_linear_law():
 def test_engineering_checks_take_the_larger_hertz_stress_and_fail_where_the_part_fails():
     pl, built = _proved(sigma_allow_MPa=700.0, load_return_N=5000.0, leg_guide_min_mm=60.0, R_factor=5.0,
                         gamma_max_deg=20.0, footprint_ratio_max=0.5, cam_core_min_mm=95.0, shoe_radius_min_mm=0.0)
-    w = _Said()
+    w = SaidWriter()
     cp.engineering_checks(pl, w, built)
     by = {c.name: c for c in w.checks}
     hz = by["law: Hertz stress (eq. 14-15)"]
@@ -651,7 +632,7 @@ def test_engineering_checks_of_the_returns_larger_stress():
     pl, built = _proved()
     pl = dataclasses.replace(pl, evaluation={**pl.evaluation, "sigma_return_max_MPa": 900.0,
                                              "shoe_self_intersecting": True})
-    w = _Said()
+    w = SaidWriter()
     cp.engineering_checks(pl, w, built)
     assert w.checks[3].value == 900.0
     assert w.checks[4].message == "σ = Y2 − Y1'·sin φ, no cusp; self-intersecting: True"
@@ -659,7 +640,7 @@ def test_engineering_checks_of_the_returns_larger_stress():
 
 def test_motion_proof_checks_of_the_linear_law():
     pl, built = _proved()
-    w = _Said()
+    w = SaidWriter()
     cp.motion_proof_checks(pl, w, built)
     assert w.said == ["cam_mover: motion proofs (72 steps per turn)"]
     assert set(built["proofs"]) >= {"roller_working", "hub", "opposite"}
@@ -720,7 +701,7 @@ def test_motion_proof_checks_fail_a_roller_off_its_wall_and_a_wide_variation():
     """Channel loops that are the outer wall twice: the roller is 0.2 mm off its working wall, the checks fail."""
     pl, built = _proved(hub_height_tol_mm=1e-4)
     built["channel_loops"] = [q for q in built["channel_loops"]]
-    w = _Said()
+    w = SaidWriter()
     from propulsor.progress import Reporter
 
     events = []
@@ -737,7 +718,7 @@ def test_motion_proof_checks_fail_a_roller_off_its_wall_and_a_wide_variation():
 
 def test_motion_proof_checks_bounds_of_the_roller_gaps():
     pl, built = _proved()
-    w = _Said()
+    w = SaidWriter()
     cp.motion_proof_checks(pl, w, built)
     gw = w.checks[2]
     lo, hi = w.derived["roller_gap_working_mm"]
@@ -745,12 +726,12 @@ def test_motion_proof_checks_bounds_of_the_roller_gaps():
     # a channel clearance of 0.3 mm: the designed 0.2 mm gap is below half of 0.5 mm... the checks of a part file
     # whose clearance is 0.4 mm on walls cut for 0.2 mm fail both ways
     p = _steps(CamMoverParams(**LIN, channel_clearance_mm=0.45), 72)
-    w2 = _Said()
+    w2 = SaidWriter()
     cp.motion_proof_checks(dataclasses.replace(pl, params=p), w2, built)
     c = w2.checks[3]
     assert c.limit == pytest.approx([0.225, 0.675]) and not c.passed
     p = _steps(CamMoverParams(**LIN, channel_clearance_mm=0.13), 72)
-    w3 = _Said()
+    w3 = SaidWriter()
     cp.motion_proof_checks(dataclasses.replace(pl, params=p), w3, built)
     c = w3.checks[3]
     assert c.limit == pytest.approx([0.065, 0.195]) and not c.passed
@@ -774,7 +755,7 @@ def _checks_of(monkeypatch, working, outer, w_leg=(0.0, 0.1), idle=(5.0, 1.0), n
     if n >= 4:
         out["opposite"] = _sweep([190.0, 200.0])
     monkeypatch.setattr(cp, "motion_proofs", lambda *a, **k: out)
-    w = _Said()
+    w = SaidWriter()
     cp.motion_proof_checks(pl, w, built)
     return {c.name: c for c in w.checks}, w
 
@@ -862,7 +843,7 @@ def test_spot_checks_and_tables(tmp_path):
     for name, m in (("cam", cam), ("roller", roller)):
         mesh = m.to_mesh()
         trimesh.Trimesh(mesh.vert_properties[:, :3], mesh.tri_verts, process=False).export(tmp_path / f"{name}.stl")
-    w = _Said(tmp_path)
+    w = SaidWriter(tmp_path)
     cp.motion_proof_checks(pl, w, built)
     n = len(w.checks)
     cp.spot_checks_and_tables(pl, w, built)

@@ -19,28 +19,10 @@ import importlib
 
 from propulsor.errors import InputError
 from propulsor.parts.road_wheel.params import RoadWheelParams
+from stand_ins import SaidWriter
 
 rd = importlib.import_module("propulsor.parts.road_wheel.design")  # the package's `design` is the function
 rp = importlib.import_module("propulsor.parts.road_wheel.proofs")
-
-
-class _Said:
-    """The parts of the output writer the proof uses, with what it said."""
-
-    def __init__(self):
-        self.derived, self.checks, self.tables, self.plots, self.said = {}, [], {}, {}, []
-
-    def progress(self, message):
-        self.said.append(message)
-
-    def add_checks(self, checks):
-        self.checks += list(checks)
-
-    def add_table(self, name, columns, rows):
-        self.tables[name] = (columns, rows)
-
-    def add_plot(self, name, fig):
-        self.plots[name] = fig
 
 
 def _kozlov(P, V_kmh, R=315.0, b=90.0, H=40.0, E=6.0, psi=0.35, alpha=60.0, t_air=20.0, printed=False):
@@ -124,7 +106,7 @@ def test_kozlov_table_of_other_fields():
 def test_kozlov_proof_of_the_part_file():
     p = RoadWheelParams()
     dd = rd.design(p)
-    w, built = _Said(), {}
+    w, built = SaidWriter(), {}
     rp.kozlov_proof(dd, w, built)
     k = _kozlov(15745.0, 50.0)
     kp = _kozlov(15745.0, 50.0, printed=True)
@@ -179,7 +161,7 @@ def test_kozlov_proof_fails_a_hot_tyre_and_a_high_pressure():
     p = RoadWheelParams(rows=1, load_N=30000.0, V_max_kmh=80.0, t_air_C=40.0, t_allow_C=60.0, q_allow_MPa=1.0,
                         tyre_thickness_mm=20.0)
     dd = rd.design(p)
-    w, built = _Said(), {}
+    w, built = SaidWriter(), {}
     rp.kozlov_proof(dd, w, built)
     k = _kozlov(30000.0, 80.0, H=20.0, t_air=40.0)
     assert [c.passed for c in w.checks] == [False, False, k["lam"] / 20.0 <= 1.0]

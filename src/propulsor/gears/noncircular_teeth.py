@@ -179,12 +179,11 @@ def make_side(tool: CutterSide, cen: PitchCurveCentrode, h_root: float | None = 
     the foot of the fillet start on the root equidistant and root_gap_mm its distance."""
     fil, fla = tool.envelopes(cen)
     if h_root is None or not isinstance(tool.cutter, ShaperOnRackCentrode) or tool.cutter.e == 0.0:
-        X0, s0 = envelope_points(tool.fillet, np.array([fil.u0]), tool.cutter, cen)
+        _, s0 = envelope_points(tool.fillet, np.array([fil.u0]), tool.cutter, cen)
         return ToothSide(fil, fla, tool.kind, False, float(cen.phi(s0)[0]))
     # re-phased shaper: the tip round's envelope followed in the rolling arc from the involute
     a_tip, a_flank = tool.fillet_range
     fil = round_envelope(tool.fillet, a_tip, a_flank, tool.fillet.piece.rho, tool.cutter, cen)
-    X0 = fil(np.array([fil.u0]))
     ph0 = float(cen.phi(np.array([fil.u0]))[0])
     curve = cen.curve
     span = 4.0 * abs(tool.cutter.c) / float(cen.frame.pc.ds_dphi(np.array([ph0]))[0]) + FD_STEP_ARC_RAD
