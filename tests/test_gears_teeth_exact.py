@@ -1370,3 +1370,169 @@ def test_a_rack_cut_sides_root_angle_is_where_its_fillet_meets_the_root(role, x)
             assert float(np.linalg.norm(X0)) == pytest.approx(r - spec.h_root, abs=1e-9)
             assert np.linalg.norm(curve.offset(np.array([side.phi_root]), -spec.h_root)[0] - X0) < 1e-9
             assert side.root_gap_mm == 0.0 and not side.fillet_is_flank
+
+
+# =========================================================================== the re-phased shaper's tip round
+def _rephased_side(z0=19, m=2.0, x0=0.45, x=0.3, mirror=False):
+    """One side of a shaper of its own shift x0 cutting a gear of shift x: re-phased by c = e cot(alpha),
+    e = (x + x0) m (``envelope.ShaperOnRackCentrode``), as ``ToothSpec._own_shift_shaper_tools`` places it."""
+    from propulsor.gears.cutters import CutterSide, ShaperCutter
+    from propulsor.gears.envelope import ExternalCircleCentrode, ShaperOnRackCentrode
+
+    sh = ShaperCutter(z0, m, x0)
+    e = (x + x0) * m
+    c = e / math.tan(math.radians(20.0))
+    b = sh.side(ExternalCircleCentrode(sh.r0)).placed(-math.pi + math.pi / z0, (0.0, sh.r0), mirror)
+    cut = ShaperOnRackCentrode(sh.r0, e, -c if mirror else c)
+    return CutterSide(b.fillet, b.fillet_range, b.flank, b.flank_range, cut, "shaper"), sh
+
+
+def _circumcentre(A, B, C):
+    """Centre of the circle through three points (2D)."""
+    ax, ay = A
+    bx, by = B
+    cx, cy = C
+    d = 2.0 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
+    ux = ((ax * ax + ay * ay) * (by - cy) + (bx * bx + by * by) * (cy - ay) + (cx * cx + cy * cy) * (ay - by)) / d
+    uy = ((ax * ax + ay * ay) * (cx - bx) + (bx * bx + by * by) * (ax - cx) + (cx * cx + cy * cy) * (bx - ax)) / d
+    return np.array([ux, uy])
+
+
+@pytest.mark.parametrize("mirror", [False, True], ids=["right", "left"])
+@pytest.mark.parametrize("gear_kind", ["circle", "pitch curve"])
+def test_round_envelope_of_a_rephased_shaper_is_the_envelope_of_its_tip_circle(mirror, gear_kind):
+    """The tip round of a shaper of its own shift (e = 1.5 mm) is a circle of radius rho about a centre fixed in the
+    cutter; its envelope is the curve that touches every placed circle.  Found in the test, from the pose alone
+    (X = G(s) + R(tau_g - tau_c)(P - C(s)), the module's protocol): every point of round_envelope's curve lies on the
+    circle of its rolling arc s (|X - C(s)| = rho to 1e-9 mm) and is tangent to it (the curve's direction normal to
+    X - C(s), to 1e-6 rad); at its flank end the junction of round and involute placed at its closed-form contact
+    s_f (the involute's pitch point) to 1e-9 mm; at its other end the tip-land end of the round placed at that arc,
+    to 1e-7 mm (the search stops at 1e-8 mm of arc)."""
+    from propulsor.gears.envelope import CircleCentrode, PitchCurveCentrode, round_envelope
+    from propulsor.gears.pitch_frame import BodyPitchCurve
+
+    side, sh = _rephased_side(mirror=mirror)
+    cut = side.cutter
+    if gear_kind == "circle":
+        gear = CircleCentrode(60.0)
+    else:
+        law = SmoothedWalkingLaw(WalkingLaw(**SEED_002), 0.25)
+        pc = PitchCurves(law, 200.0)
+        gear = PitchCurveCentrode(BodyPitchCurve(pc, "driven"), ArcFrame(pc), 40.0)
+    a_tip, a_fl = side.fillet_range
+    rho = side.fillet.piece.rho
+    fil = side.fillet
+    P_j, P_mid, P_t = fil.point(np.array([a_fl, 0.5 * (a_tip + a_fl), a_tip]))
+    centre = _circumcentre(P_j, P_mid, P_t)
+    assert abs(np.linalg.norm(P_j - centre) - rho) < 1e-9 and abs(np.linalg.norm(P_t - centre) - rho) < 1e-9
+
+    def place(Q, s):
+        s = np.atleast_1d(np.asarray(s, float))
+        th = gear.angle(s) - cut.angle(s)
+        v = np.asarray(Q, float) - cut.point(s)
+        c, sn = np.cos(th), np.sin(th)
+        return gear.point(s) + np.column_stack([c * v[:, 0] - sn * v[:, 1], sn * v[:, 0] + c * v[:, 1]])
+
+    env = round_envelope(fil, a_tip, a_fl, rho, cut, gear)
+    T = fil.tangent(np.array([a_fl]))
+    T = T / np.linalg.norm(T)
+    s_f = float(cut.contact(P_j[None, :], np.column_stack([-T[:, 1], T[:, 0]]))[0])
+    assert env.u1 == s_f and env.u0 != s_f
+    s = np.linspace(env.u0, env.u1, 9)
+    X = env(s)
+    C = place(centre, s)
+    assert np.max(np.abs(np.linalg.norm(X - C, axis=1) - rho)) < 1e-9
+    h = 1e-6 * abs(env.u1 - env.u0)
+    d = env(s + h) - env(s - h)
+    cosang = np.einsum("ij,ij->i", d, X - C) / (np.linalg.norm(d, axis=1) * rho)
+    assert np.max(np.abs(cosang)) < 1e-6
+    assert np.linalg.norm(env.at(env.u1) - place(P_j, s_f)[0]) < 1e-9
+    assert np.linalg.norm(env.at(env.u0) - place(P_t, env.u0)[0]) < 1e-7
+    # between its ends the contact runs over the round from the junction to the tip-land end, never past them
+    th = gear.angle(s) - cut.angle(s)
+    back = np.column_stack([np.cos(-th) * (X - gear.point(s))[:, 0] - np.sin(-th) * (X - gear.point(s))[:, 1],
+                            np.sin(-th) * (X - gear.point(s))[:, 0] + np.cos(-th) * (X - gear.point(s))[:, 1]])
+    Q = back + cut.point(s) - centre  # the contact in the cutter frame, from the round's centre
+    a_of = lambda v: math.atan2(v[1], v[0])
+    span = (a_of(P_t - centre) - a_of(P_j - centre) + math.pi) % (2 * math.pi) - math.pi
+    rel = np.array([(a_of(q) - a_of(P_j - centre) + math.pi) % (2 * math.pi) - math.pi for q in Q]) / span
+    assert rel[0] == pytest.approx(1.0, abs=1e-7) and rel[-1] == pytest.approx(0.0, abs=1e-9)
+    assert np.all((rel >= -1e-9) & (rel <= 1.0 + 1e-7)) and np.all(np.diff(rel) < 0)
+
+
+def test_round_envelope_refuses_a_round_whose_contact_never_reaches_its_tip_land():
+    """A gear that slides past the cutter without turning against it (its pose: the cutter's own point shifted by
+    the rolling arc, the cutter's own angle): the round's centre runs on a straight line, so its contact stays at one
+    point of the round and never reaches the tip land; the tip round is refused with the shaper's pitch diameter."""
+    from propulsor.gears.envelope import round_envelope
+
+    side, sh = _rephased_side()
+    cut = side.cutter
+
+    class Sliding:
+        def point(self, s):
+            s = np.atleast_1d(np.asarray(s, float))
+            return cut.point(s) + np.column_stack([s, np.zeros_like(s)])
+
+        def angle(self, s):
+            return cut.angle(s)
+
+    a_tip, a_fl = side.fillet_range
+    with pytest.raises(InputError) as exc:
+        round_envelope(side.fillet, a_tip, a_fl, side.fillet.piece.rho, cut, Sliding())
+    assert str(exc.value) == (f"d0 = {2.0 * sh.r0!r}: the contact of the shaper's tip round never reaches its tip land "
+                              "(the shaper is too large for the gear's curvature there)")
+
+
+def test_a_cutter_normal_that_misses_its_rolling_circle_is_refused_with_the_circles_radius():
+    """The rolling circle's meshing equation has no crossing for a normal line that passes the circle by: refused,
+    naming the cutter's pitch radius r0 (a shaper outside the gear, one inside a ring)."""
+    from propulsor.gears.envelope import CircleCentrode, ExternalCircleCentrode, nearer_circle_crossing
+
+    # (0, 5) along +x passes the circle of radius 2 about the origin 3 above it; (0, 1.5) along +x crosses it
+    P, N = np.array([[0.0, 1.5], [0.0, 5.0]]), np.array([[1.0, 0.0], [1.0, 0.0]])
+    with pytest.raises(InputError) as exc:
+        nearer_circle_crossing(P, N, (0.0, 0.0), 2.0, "r0", "shaper's")
+    assert str(exc.value) == ("r0 = 2.0: a generating point's normal misses the shaper's rolling circle (every one "
+                              "must cross it)")
+    ok = nearer_circle_crossing(P[:1], N[:1], (0.0, 0.0), 2.0, "r0", "shaper's")
+    assert ok[0] == pytest.approx((math.sqrt(4.0 - 2.25), 1.5), abs=1e-15)
+    # a tangent line (disc = 0) touches: its one crossing
+    assert nearer_circle_crossing(np.array([[0.0, 2.0]]), N[:1], (0.0, 0.0), 2.0, "r0", "x")[0] == pytest.approx(
+        (0.0, 2.0), abs=1e-15)
+    # the centrodes name r0 and whose circle it is; the shaper's circle is centred at (0, R)
+    with pytest.raises(InputError) as exc:
+        ExternalCircleCentrode(2.0).contact(np.array([[0.0, 7.0]]), N[:1])
+    assert str(exc.value) == ("r0 = 2.0: a generating point's normal misses the shaper's rolling circle (every one "
+                              "must cross it)")
+    with pytest.raises(InputError) as exc:
+        CircleCentrode(2.0).contact(np.array([[0.0, 5.0]]), N[:1])
+    assert str(exc.value) == ("r0 = 2.0: a generating point's normal misses the cutter's rolling circle (every one "
+                              "must cross it)")
+
+
+def test_param_at_radius_finds_the_flank_point_at_a_radius_and_refuses_one_outside_it():
+    """A rack-cut involute of a z = 30, m = 2 spur gear: the flank point at radius r found to rounding (its radius
+    is r); a radius beyond both ends of the flank refused; the curves keep their kind and rotation when cut down
+    or turned."""
+    from propulsor.gears.envelope import CircleCentrode
+
+    side = ToothSpec(m=2.0).rack_tools()[0]
+    fil, fla = side.envelopes(CircleCentrode(30.0))
+    assert (fil.kind, fla.kind) == ("fillet", "flank")
+    r_ends = np.hypot(*fla(np.array([fla.u0, fla.u1])).T)
+    r = float(np.mean(r_ends))
+    u = fla.param_at_radius(r)
+    assert min(fla.u0, fla.u1) < u < max(fla.u0, fla.u1)
+    assert abs(float(np.hypot(*fla.at(u))) - r) < 1e-12
+    for far in (float(np.max(r_ends)) + 0.5, float(np.min(r_ends)) - 0.5):
+        with pytest.raises(ValueError, match="^radius not bracketed$"):
+            fla.param_at_radius(far)
+    cut = fla.with_range(u, fla.u1).rotated(0.25)
+    assert (cut.kind, cut.rotation, cut.u0, cut.u1) == ("flank", 0.25, u, fla.u1)
+    turned = fla.rotated(0.25).rotated(-0.5)
+    assert turned.rotation == -0.25 and turned.kind == "flank"
+    c, s = math.cos(-0.25), math.sin(-0.25)
+    X = fla.at(u)
+    assert np.allclose(turned.at(u), (c * X[0] - s * X[1], s * X[0] + c * X[1]), atol=1e-12)
+    assert fla.with_range(u, fla.u1).rotated(0.25).at(u) == pytest.approx(fla.rotated(0.25).at(u), abs=0)

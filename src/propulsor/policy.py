@@ -66,18 +66,16 @@ FD_STEP_REL = 1e-7
 FD_STEP_PHI_RAD = 1e-8
 #: central-difference step in phi for the arc length of an equidistant (rad)
 FD_STEP_ARC_RAD = 1e-6
-#: central-difference step (mm of rolling arc) of the gear's turning rate and of the residual in the
-#: meshing equation of a shaper with its own shift (gears.envelope.ShaperOnRackCentrode)
+#: central-difference step (mm of rolling arc) of the path of a re-phased shaper's tip-round centre, whose normal
+#: gives the round's contact direction (gears.envelope.RoundEnvelope)
 SHAPER_MESH_FD_STEP_MM = 1e-4
-#: bisection stop of that meshing equation on the tip round (mm of rolling arc) and its iteration limit
+#: stop of the search on a re-phased shaper's tip round (mm of rolling arc) for where its contact reaches the tip
+#: land (gears.envelope.round_envelope)
 SHAPER_MESH_STOP_MM = 1e-8
-SHAPER_MESH_ITERATIONS = 60
-#: window (in shaper pitch radii) and samples of the bracket search of that equation
+#: window (in shaper pitch radii) and samples of the search for the rolling arc where the tip round's contact
+#: reaches the tip land (gears.envelope.round_envelope: four times the samples over twice the window)
 SHAPER_MESH_WINDOW_R = 0.75
 SHAPER_MESH_SAMPLES = 48
-#: residual of that equation (relative, per mm of the distance to the instantaneous centre) below
-#: which the closed-form shaper-on-line contact is taken as exact (points of the involute)
-SHAPER_MESH_RESIDUAL = 1e-9
 #: x tolerance of the cusp search on an envelope, relative to the parameter
 CUSP_XATOL_REL = 1e-13
 #: a jump of curvature without a corner inside a flank's curvature window (gears.tooth_load.curvature_at): the two

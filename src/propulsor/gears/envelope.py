@@ -39,8 +39,8 @@ from scipy.optimize import brentq
 
 from ..errors import InputError
 from .envelope_point import envelope_point1, nearer_circle_crossing1
-from ..policy import (ENVELOPE_SAMPLES_PER_FLANK, ROUNDING_TOL, SHAPER_MESH_FD_STEP_MM, SHAPER_MESH_ITERATIONS,
-                      SHAPER_MESH_RESIDUAL, SHAPER_MESH_SAMPLES, SHAPER_MESH_STOP_MM, SHAPER_MESH_WINDOW_R)
+from ..policy import (ENVELOPE_SAMPLES_PER_FLANK, ROUNDING_TOL, SHAPER_MESH_FD_STEP_MM, SHAPER_MESH_SAMPLES,
+                      SHAPER_MESH_STOP_MM, SHAPER_MESH_WINDOW_R)
 
 __all__ = [
     "nearer_circle_crossing", "RackCentrode", "CircleCentrode", "ExternalCircleCentrode", "ShaperOnRackCentrode",
@@ -52,14 +52,14 @@ __all__ = [
 def nearer_circle_crossing(P, N, centre, R: float, parameter: str, whose: str) -> np.ndarray:
     """Meshing equation of a rolling circle: the normal lines P + λN (N unit) cross the circle of
     radius R about `centre`; of the two crossings the one nearer to P is the pitch point of the
-    contact.  InputError naming `parameter` when a normal misses the circle."""
+    contact.  InputError naming `parameter` (given the radius R) when a normal misses the circle."""
     Q = np.asarray(P, float) - np.asarray(centre, float)
     b = np.einsum("ij,ij->i", Q, N)
     c = np.einsum("ij,ij->i", Q, Q) - R ** 2
     disc = b * b - c
     if np.any(disc < 0):
-        raise InputError(parameter, "normal misses the rolling circle",
-                         f"every generating point's normal must cross the {whose} rolling circle")
+        raise InputError(parameter, R, f"a generating point's normal misses the {whose} rolling circle",
+                         "every one must cross it")
     sq = np.sqrt(disc)
     l1, l2 = -b + sq, -b - sq
     lam = np.where(np.abs(l1) <= np.abs(l2), l1, l2)
@@ -120,7 +120,7 @@ class CircleCentrode:
         one on the same side of the foot of the perpendicular as P (smaller |λ|) is the pitch
         point of the contact (involute: contact point and pitch point on the same ray of the
         line of action)."""
-        C = nearer_circle_crossing(P, N, (0.0, 0.0), self.R, "cutter outline", "cutter's")
+        C = nearer_circle_crossing(P, N, (0.0, 0.0), self.R, "r0", "cutter's")
         return self.R * np.arctan2(C[:, 0], C[:, 1])
 
 
@@ -142,7 +142,7 @@ class ExternalCircleCentrode:
     def contact(self, P, N):
         """Meshing equation: the normal P + lam N meets the rolling circle; the crossing nearer
         to P is the pitch point (involute: contact and pitch point on one ray of the line of action)."""
-        C = nearer_circle_crossing(P, N, (0.0, self.R), self.R, "z0", "shaper's")
+        C = nearer_circle_crossing(P, N, (0.0, self.R), self.R, "r0", "shaper's")
         return self.R * np.arctan2(C[:, 0], self.R - C[:, 1])
 
     # one cutter point (floats; ``envelope_points``' one-point path, the same operations)
@@ -178,12 +178,10 @@ class ShaperOnRackCentrode:
     direction that coincide with the rack's (s, 0) and its line, so ``envelope_points``' pose
     X = G(s) + R(tau_g - tau_c)(P - C(s)) places the shaper exactly.
 
-    Meshing equation: the cutter normal passes through the instantaneous centre of the shaper
-    relative to the gear, I = (w_sr I_sr + k I_rg) / (w_sr + k) with w_sr = -1/R (shaper on the
-    rack), k = d tau_g / ds (rack on the gear), I_sr = (s + c, e), I_rg = (s, 0) (rack frame,
-    per unit arc).  On the involute I_sr and I_rg both lie on the normal, so the closed-form
-    shaper-on-line contact solves it for any k; on the tip round it is refined by Newton's method
-    (``contact_on``)."""
+    Meshing equation: the cutter normal passes through the instantaneous centre of the shaper relative to the
+    gear.  On the involute the shaper's and the rack's pitch points both lie on the normal, so the closed-form
+    shaper-on-line contact solves it (``contact_on``); the tip round's envelope is the equidistant of its centre's
+    path (``round_envelope``)."""
 
     R: float
     e: float
@@ -220,80 +218,16 @@ class ShaperOnRackCentrode:
         cb, sb = math.cos(b), math.sin(b)
         return R * sb - cb * self.c + sb * self.e, R - R * cb - sb * self.c - cb * self.e, b
 
-    def _residual(self, s, P, N, gear):
-        """(f, lam): f = cross((w + k) Q - w I_sr - k I_rg, N) (zero when the normal of the cutter
-        point passes through the instantaneous centre I), lam = distance from the point to I along
-        its normal (rack frame)."""
-        R = self.R
-        b = self._beta(s)
-        xi = s + self.c
-        C = np.column_stack([R * np.sin(b), R - R * np.cos(b)])
-        Q = np.column_stack([xi, np.full_like(xi, self.e)]) + _rot(-b, P - C)
-        Nr = _rot(-b, N)
-        h = SHAPER_MESH_FD_STEP_MM
-        ta, tb = gear.angle(s - h), gear.angle(s + h)
-        k = np.angle(np.exp(1j * (tb - ta))) / (2 * h)
-        w = -1.0 / R
-        V = (w + k)[:, None] * Q - w * np.column_stack([xi, np.full_like(xi, self.e)]) \
-            - k[:, None] * np.column_stack([s, np.zeros_like(s)])
-        f = V[:, 0] * Nr[:, 1] - V[:, 1] * Nr[:, 0]
-        wk = np.where(np.abs(w + k) > 1e-300, w + k, 1e-300)
-        lam = -np.einsum("ij,ij->i", V, Nr) / wk
-        return f, lam
-
-    def contact_on(self, P, N, gear, piece=None):
-        """Meshing equation with the gear's turning rate (see the class docstring).  Points of a
-        piece conjugate to the rack (``piece.conjugate_to_rack``: the shaper's involute) take the
-        closed-form shaper-on-line contact, exact there.  Of the
-        crossings of the cutter normal with the moving centrode within a window of half-width
-        ``policy.SHAPER_MESH_WINDOW_R`` r0 about the shaper-on-line contact s0, the one nearest to s0
-        (s0 is exact where the tip round meets the involute, so this follows the envelope's branch
-        from the flank), refined by bisection.
-        InputError naming ``z0`` when a normal crosses none."""
-        s0 = self.contact(P, N)
+    def contact_on(self, P, N, gear=None, piece=None):
+        """The meshing equation where it is closed-form: the shaper-on-line contact, exact for a piece conjugate to
+        the rack (``piece.conjugate_to_rack``: the shaper's involute, both instantaneous centres on its normal) and
+        for e = 0.  The tip round of a re-phased shaper (e != 0) is neither: its envelope is the equidistant of its
+        centre's path (:func:`round_envelope`, which ``noncircular_teeth.make_side`` uses), so it is refused here
+        (ValueError)."""
         if self.e == 0.0 or getattr(piece, "conjugate_to_rack", False):
-            return s0  # the shaper's involute: exact (both centres on the normal)
-        f0, lam0 = self._residual(s0, P, N, gear)
-        exact = np.abs(f0) <= SHAPER_MESH_RESIDUAL * (1.0 + np.abs(lam0))
-        if np.all(exact):
-            return s0
-        out = s0.copy()
-        todo = ~exact
-        P, N, s0 = P[todo], N[todo], s0[todo]
-        if isinstance(gear, PitchCurveCentrode) and np.ndim(gear.s_k) == 1:
-            gear = PitchCurveCentrode(gear.curve, gear.frame, gear.s_k[todo])
-        out[todo] = self._bracketed(P, N, s0, gear)
-        return out
-
-    def _bracketed(self, P, N, s0, gear):
-        n = len(s0)
-        W = SHAPER_MESH_WINDOW_R * self.R
-        off = np.linspace(-W, W, SHAPER_MESH_SAMPLES)
-        S = (s0[:, None] + off[None, :]).ravel()
-        rep = lambda A: np.repeat(A, len(off), axis=0)
-        if isinstance(gear, PitchCurveCentrode) and np.ndim(gear.s_k) == 1:
-            g = PitchCurveCentrode(gear.curve, gear.frame, np.repeat(gear.s_k, len(off)))
-        else:
-            g = gear
-        f, lam = self._residual(S, rep(P), rep(N), g)
-        f, lam = f.reshape(n, -1), lam.reshape(n, -1)
-        cross = np.sign(f[:, :-1]) * np.sign(f[:, 1:]) <= 0
-        lam_mid = np.where(cross, np.abs(0.5 * (off[:-1] + off[1:]))[None, :], np.inf)
-        j = np.argmin(lam_mid, axis=1)
-        if not np.all(np.isfinite(lam_mid[np.arange(n), j])):
-            raise InputError("z0", self.R, "a cutter normal never passes through the instantaneous centre",
-                             "the shaper is too large for the gear's curvature there")
-        lo, hi = s0 + off[j], s0 + off[j + 1]
-        flo = f[np.arange(n), j]
-        # bisection on the bracket (the root stays bracketed)
-        for _ in range(SHAPER_MESH_ITERATIONS):
-            sm = 0.5 * (lo + hi)
-            fm = self._residual(sm, P, N, gear)[0]
-            left = np.sign(fm) == np.sign(flo)
-            lo, flo, hi = np.where(left, sm, lo), np.where(left, fm, flo), np.where(left, hi, sm)
-            if np.max(hi - lo) < SHAPER_MESH_STOP_MM:
-                break
-        return 0.5 * (lo + hi)
+            return self.contact(P, N)
+        raise ValueError("the tip round of a re-phased shaper (e != 0) has no closed-form contact: its envelope is "
+                         "round_envelope's")
 
 
 @dataclass(frozen=True)
@@ -378,8 +312,8 @@ def envelope_points(piece, u, cutter, gear):
 
 @dataclass(frozen=True)
 class EnvelopeCurve:
-    """Exact generated curve: envelope of ``piece`` for u in [u0, u1], then mirrored about the
-    y axis (if ``mirror``) and rotated by ``rotation`` about the gear axis."""
+    """Exact generated curve: envelope of ``piece`` for u in [u0, u1], rotated by ``rotation`` about the gear
+    axis."""
 
     piece: object
     cutter: object
@@ -388,12 +322,9 @@ class EnvelopeCurve:
     u1: float
     kind: str = ""  # "fillet" | "flank"
     rotation: float = 0.0
-    mirror: bool = False
 
     def __call__(self, u):
         X, _ = envelope_points(self.piece, u, self.cutter, self.gear)
-        if self.mirror:
-            X = X * np.array([-1.0, 1.0])
         if self.rotation:
             X = _rot(np.full(len(X), self.rotation), X)
         return X
@@ -405,16 +336,10 @@ class EnvelopeCurve:
         return self(np.linspace(self.u0, self.u1, n))
 
     def with_range(self, u0, u1) -> "EnvelopeCurve":
-        return EnvelopeCurve(self.piece, self.cutter, self.gear, float(u0), float(u1), self.kind,
-                             self.rotation, self.mirror)
+        return EnvelopeCurve(self.piece, self.cutter, self.gear, float(u0), float(u1), self.kind, self.rotation)
 
     def rotated(self, angle: float) -> "EnvelopeCurve":
-        return EnvelopeCurve(self.piece, self.cutter, self.gear, self.u0, self.u1, self.kind,
-                             self.rotation + angle, self.mirror)
-
-    def mirrored(self) -> "EnvelopeCurve":
-        return EnvelopeCurve(self.piece, self.cutter, self.gear, self.u0, self.u1, self.kind,
-                             -self.rotation, not self.mirror)
+        return EnvelopeCurve(self.piece, self.cutter, self.gear, self.u0, self.u1, self.kind, self.rotation + angle)
 
     def param_at_radius(self, r: float) -> float:
         """Parameter where the curve crosses radius r (must be bracketed by [u0, u1])."""
@@ -473,8 +398,8 @@ class RoundEnvelope:
 def round_envelope(fillet_piece, a_tip: float, a_flank: float, rho: float, cutter, gear) -> RoundEnvelope:
     """The tip round's envelope from its junction with the involute (rolling arc s_f: the closed-form
     contact of that point, exact there) to the instant its contact reaches the tip-land end a_tip,
-    followed continuously in s (``policy.SHAPER_MESH_WINDOW_R`` r0 either way).  InputError naming
-    ``z0`` when the contact never reaches the tip land."""
+    followed continuously in s (``policy.SHAPER_MESH_WINDOW_R`` r0 either way).  InputError naming the
+    shaper's pitch diameter ``d0`` when the contact never reaches the tip land."""
     a = np.array([a_flank, a_tip])
     P = fillet_piece.point(a)
     T = fillet_piece.tangent(a)
@@ -517,7 +442,7 @@ def round_envelope(fillet_piece, a_tip: float, a_flank: float, rho: float, cutte
             f = lambda q: float(base + np.angle(np.exp(1j * (ang(q)[0] - base))) - target)
             s_t = brentq(f, ss[k - 1], ss[k], xtol=SHAPER_MESH_STOP_MM)
             return env.with_range(s_t, s_f)
-    raise InputError("z0", cutter.R, "the contact of the shaper's tip round never reaches its tip land",
+    raise InputError("d0", 2.0 * cutter.R, "the contact of the shaper's tip round never reaches its tip land",
                      "the shaper is too large for the gear's curvature there")
 
 

@@ -38,7 +38,7 @@ import numpy as np
 from scipy.optimize import fsolve, minimize_scalar
 
 from ..errors import InputError, require
-from ..policy import (ROOT_BRIDGE_MAX_MODULE, SHAPER_MESH_STOP_MM, FD_STEP_ARC_RAD, FD_STEP_PHI_RAD, FD_STEP_REL, MINIMIZE_XATOL, NEWTON_STOP_MM, ROOT_XTOL_FINE,
+from ..policy import (ROOT_BRIDGE_MAX_MODULE, FD_STEP_ARC_RAD, FD_STEP_PHI_RAD, FD_STEP_REL, MINIMIZE_XATOL, NEWTON_STOP_MM, ROOT_XTOL_FINE,
                       SOLVE_RESIDUAL_MM, TIP_HEIGHT_TOL_MM, TIP_SECANT_STEPS_MAX)
 from .cutters import CutterSide, RackCutter, ShaperCutter
 from .envelope import (EnvelopeCurve, ExternalCircleCentrode, PitchCurveCentrode, ShaperOnRackCentrode, envelope_points,
