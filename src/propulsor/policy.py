@@ -53,6 +53,10 @@ ROUNDING_TOL = 1e-15
 REL_ROUNDING_TOL = 1e-12
 #: x tolerance of the bounded 1-D minimisations (curvature, speed and clearance extremes)
 MINIMIZE_XATOL = 1e-12
+#: Gauss-Newton steps of the feet of many points on a root equidistant at once, whose heights' signs decide
+#: where a re-phased shaper's fillet crosses it (noncircular_teeth.make_side: 4 steps from the nearest of 201
+#: grid points leave about 1e-10 rad)
+FOOT_GAUSS_NEWTON_STEPS = 4
 #: Newton inverse of theta(phi) of the walking law (rad)
 PHI_OF_THETA_TOL_RAD = 1e-14
 #: a Newton / fsolve solution on an outline counts when its residual is below this (mm), and its

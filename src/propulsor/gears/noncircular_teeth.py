@@ -38,7 +38,7 @@ import numpy as np
 from scipy.optimize import fsolve, minimize_scalar
 
 from ..errors import InputError, require
-from ..policy import (ROOT_BRIDGE_MAX_MODULE, FD_STEP_ARC_RAD, FD_STEP_PHI_RAD, FD_STEP_REL, MINIMIZE_XATOL, NEWTON_STOP_MM, ROOT_XTOL_FINE,
+from ..policy import (ROOT_BRIDGE_MAX_MODULE, FD_STEP_ARC_RAD, FD_STEP_PHI_RAD, FD_STEP_REL, MINIMIZE_XATOL, NEWTON_STOP_MM, FOOT_GAUSS_NEWTON_STEPS, ROOT_XTOL_FINE,
                       SOLVE_RESIDUAL_MM, TIP_HEIGHT_TOL_MM, TIP_SECANT_STEPS_MAX)
 from .cutters import CutterSide, RackCutter, ShaperCutter
 from .envelope import (EnvelopeCurve, ExternalCircleCentrode, PitchCurveCentrode, ShaperOnRackCentrode, envelope_points,
@@ -199,11 +199,26 @@ def make_side(tool: CutterSide, cen: PitchCurveCentrode, h_root: float | None = 
         F = curve.offset(np.array([ph]), -h_root)[0]
         return ph, float(np.dot(X - F, curve.normal(np.array([ph]))[0]))
 
+    def heights_of(P):
+        """``foot``'s heights of many points at once, where only their signs decide (which samples lie above the
+        equidistant): the nearest grid point, then Gauss-Newton on the foot's condition (X - F(phi)) . F'(phi) = 0
+        within the same bracket, F' by central differences; the height is stationary at the foot, so the phi left
+        after four steps (about 1e-10 rad) moves it far below rounding."""
+        j = np.clip(np.argmin(np.linalg.norm(E[None, :, :] - P[:, None, :], axis=2), axis=1), 1, len(grid) - 2)
+        lo, hi = grid[j - 1], grid[j + 1]
+        ph = grid[j]
+        for _ in range(FOOT_GAUSS_NEWTON_STEPS):
+            F = curve.offset(ph, -h_root)
+            dF = (curve.offset(ph + FD_STEP_PHI_RAD, -h_root) - curve.offset(ph - FD_STEP_PHI_RAD, -h_root)) / (
+                2.0 * FD_STEP_PHI_RAD)
+            ph = np.clip(ph - np.einsum("ij,ij->i", F - P, dF) / np.einsum("ij,ij->i", dF, dF), lo, hi)
+        return np.einsum("ij,ij->i", P - curve.offset(ph, -h_root), curve.normal(ph))
+
     # the tip circle of a re-phased shaper digs below the equidistant: the fillet is trimmed where it
     # crosses it (the outline keeps the equidistant, a little more material than cut); where it
     # stays above, the gap is bridged
     u = np.linspace(fil.u0, fil.u1, 64)
-    heights = np.array([foot(X)[1] for X in fil(u)])
+    heights = heights_of(fil(u))
     if heights[0] < 0.0 and np.any(heights > 0.0):
         k = int(np.argmax(heights > 0.0))
         from scipy.optimize import brentq
@@ -216,7 +231,7 @@ def make_side(tool: CutterSide, cen: PitchCurveCentrode, h_root: float | None = 
         # the whole round lies below the equidistant (the re-phased shaper digs deeper there): the flank
         # is trimmed where it crosses the equidistant, its first hundredth standing in for the fillet
         uf = np.linspace(fla.u0, fla.u1, 64)
-        hf = np.array([foot(X)[1] for X in fla(uf)])
+        hf = heights_of(fla(uf))
         up = np.nonzero(hf > 0.0)[0]
         if len(up) and up[0] > 0:
             k = int(up[0])
