@@ -508,10 +508,22 @@ def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame 
     h_cut = spec.h_tip_cut
     nominal = _tip_hits_batch(flat, np.repeat(centres, 2), np.repeat(phic, 2), curve, frame, h_cut, span)
     for k, ((s_k, ph_k), (R, Lf)) in enumerate(zip(zip(centres, phic), teeth_sides)):
-        def hits(h, k=k):
+        first = [0]  # the side searched first (0 right, 1 left): the one that last had no tip
+
+        def hits(h, k=k, first=first):
             if h == h_cut:
                 return nominal[2 * k], nominal[2 * k + 1]
-            return _tip_hit(R, curve, h, ph_k, span), _tip_hit(Lf, curve, h, ph_k, span)
+            # a side without a tip at h leaves no land there, whatever the other side reaches (every reader of a
+            # landless result asks only whether a hit is None): where the side searched first has none, the other
+            # side's search is not made
+            a = first[0]
+            got = [None, None]
+            got[a] = _tip_hit((R, Lf)[a], curve, h, ph_k, span)
+            if got[a] is not None:
+                got[1 - a] = _tip_hit((R, Lf)[1 - a], curve, h, ph_k, span)
+                if got[1 - a] is None:
+                    first[0] = 1 - a
+            return got[0], got[1]
 
         def thickness(h):
             hr, hl = hits(h)
