@@ -414,3 +414,374 @@ def test_tolerance_values_the_cases_table_values_percentiles_and_note(monkeypatc
         w = SaidWriter()
         assert tolerance_values(w, dd, built) is None
         assert (w.checks, w.tables, w.derived, w.notes) == ([], {}, {}, [])
+
+
+# =========================================================================== kit_load
+def _mat(name):
+    from propulsor.gears.gear_materials import materials
+
+    return materials()[name]
+
+
+def _tl(lost=0, imbalance=0.0, sections=None, phases=4):
+    return SimpleNamespace(lost=lost, imbalance=imbalance, theta=np.zeros(phases),
+                           sections=sections or {"driver": {}, "driven": {}})
+
+
+def _rating(name, S_F, S_H, *, unrated=(), analyses=None, sF=20.0, sH=50.0, S_Fmin=2.0, S_Hmin=1.25, force=50.0):
+    from propulsor.parts.noncircular_pair.kit_load import Rating
+
+    return Rating(name, _mat(name), S_F, S_H, sF, sH, f"driven tooth 3, drive ({name})",
+                  f"driver tooth 1, reverse ({name})", S_Fmin, S_Hmin, force,
+                  analyses if analyses is not None else ((1, _tl()), (-1, _tl())), unrated)
+
+
+def _hl(*ratings, contacts=()):
+    from propulsor.parts.noncircular_pair.kit_load import HandLoad
+
+    return HandLoad(50.0, 40.0, 2.0, 1.25, 8.0, 2.0, 1.25, tuple(ratings), "driver torque T1 = 2 N·m (test)",
+                    contacts)
+
+
+def _three():
+    """PLA passes (S_F 2.5 >= 2, S_H 1.5 >= 1.25), PETG fails at the root, nylon at the flank."""
+    return (_rating("PLA", 2.5, 1.5, unrated=("driven 10", "driven 8"), sF=20.0, sH=55.5),
+            _rating("PETG", 1.5, 1.5, sF=28.0, sH=46.5), _rating("nylon", 2.5, 1.0, unrated=("driven 9",), sF=14.0,
+                                                                 sH=58.0))
+
+
+def test_hand_torque_is_force_times_handle_radius_in_metres():
+    from propulsor.parts.noncircular_pair.kit_load import hand_torque_Nm
+
+    assert hand_torque_Nm(50, 40) == 2.0
+    assert hand_torque_Nm(48.0, 62.5) == 3.0
+    assert isinstance(hand_torque_Nm(3, 500), float) and hand_torque_Nm(3, 500) == 1.5
+
+
+def test_the_printed_materials_are_the_catalogues_static_ones_in_its_order():
+    from propulsor.parts.noncircular_pair.kit_load import printed_materials
+
+    assert printed_materials() == ["PLA", "PETG", "nylon"]
+
+
+def test_tooth_names_sort_by_number_and_names_join_with_and():
+    from propulsor.parts.noncircular_pair.kit_load import _join, _tooth_key
+
+    assert _tooth_key("driven 10") == ("driven", 10)
+    assert sorted(["driven 10", "driver 2", "driven 8", "driven 9"], key=_tooth_key) == [
+        "driven 8", "driven 9", "driven 10", "driver 2"]
+    assert _join(["PLA"]) == "PLA"
+    assert _join(iter(["PLA", "PETG"])) == "PLA and PETG"
+    assert _join(["PLA", "PETG", "nylon"]) == "PLA, PETG and nylon"
+
+
+def test_a_rating_survives_on_both_required_safeties_and_its_force_scales_root_and_square_of_flank():
+    pla, petg, nylon = _three()
+    # F_allow = F min(S_F/S_Fmin, (S_H/S_Hmin)^2); margin = min(S_F/S_Fmin, S_H/S_Hmin)
+    assert (pla.survives, pla.force_allow_N, pla.margin) == (True, 62.5, 1.2)
+    assert (petg.survives, petg.force_allow_N, petg.margin) == (False, 37.5, 0.75)
+    assert (nylon.survives, nylon.force_allow_N, nylon.margin) == (False, pytest.approx(32.0), 0.8)
+    assert _rating("PLA", 2.0, 1.25).survives is True  # both exactly at their limits
+    assert _rating("PLA", 2.0, 1.2499).survives is False
+    assert _rating("PLA", 1.9999, 1.25).survives is False
+    assert _rating("PLA", 4.0, 1.25, force=40.0).force_allow_N == 40.0  # the flank's square decides
+    assert _rating("PLA", 4.0, 2.5).margin == 2.0
+    assert pla.safeties() == "PLA S_F 2.50, S_H 1.50"
+
+
+def test_the_verdict_names_who_survives_and_who_not_with_the_safeties_and_the_unrated_roots():
+    pla, petg, nylon = _three()
+    hl = _hl(pla, petg, nylon)
+    assert hl.survivors == ["PLA"] and hl.best is pla
+    unrated = (" The roots of 3 teeth (driven 8, driven 9, driven 10) are not rated: ISO 6336-3's 30° section is not "
+               "found on their outline.")
+    assert hl.sentence() == ("PLA survives it (PLA S_F 2.50, S_H 1.50); PETG and nylon do not (PETG S_F 1.50, S_H "
+                             "1.50; nylon S_F 2.50, S_H 1.00) against the required S_F 2, S_H 1.25." + unrated)
+    pla2 = _rating("PETG", 2.25, 1.25)
+    assert _hl(pla, pla2, nylon).sentence() == (
+        "PLA and PETG survive it (PLA S_F 2.50, S_H 1.50; PETG S_F 2.25, S_H 1.25); nylon does not (nylon S_F 2.50, "
+        "S_H 1.00) against the required S_F 2, S_H 1.25." + unrated)
+    assert _hl(pla, pla2).sentence() == ("PLA and PETG all survive it (PLA S_F 2.50, S_H 1.50; PETG S_F 2.25, S_H "
+                                         "1.25 against the required S_F 2, S_H 1.25). The roots of 2 teeth (driven "
+                                         "8, driven 10) are not rated: ISO 6336-3's 30° section is not found on "
+                                         "their outline.")
+    assert _hl(pla2).sentence() == "PETG survives it (PETG S_F 2.25, S_H 1.25 against the required S_F 2, S_H 1.25)."
+    # none: the best (largest margin: nylon 0.8 over PETG 0.75) and the force it takes, 50 (1/1.25)^2 = 32 N
+    assert _hl(petg, nylon).best is nylon
+    assert _hl(petg, nylon).sentence() == (
+        "No printed material survives it (PETG S_F 1.50, S_H 1.50; nylon S_F 2.50, S_H 1.00 against the required S_F "
+        "2, S_H 1.25): print it in nylon or turn gently: in nylon the teeth take about 32 N on the handle (1.280 "
+        "N·m). The roots of 1 teeth (driven 9) are not rated: ISO 6336-3's 30° section is not found on their outline.")
+    assert _hl(nylon).sentence().startswith("No printed material survives it (nylon S_F 2.50, S_H 1.00 against")
+    assert _hl(petg).sentence().endswith("in PETG the teeth take about 38 N on the handle (1.500 N·m).")
+    assert _hl(petg)._unrated() == ""
+
+
+def test_the_guides_words_table_and_caveat_in_full():
+    pla, petg, nylon = _three()
+    hl = _hl(pla, petg, nylon)
+    lead = ("A firm hand on the crank, 50 N on the handle at 40.0 mm from the driver's axis, puts T1 = 2.000 N·m on "
+            "the driver; with the driven wheel held, the printed teeth (module 1.25 mm, face width 8 mm) carry it in "
+            "either direction.")
+    assert hl.lead() == lead
+    caveat = ("The printed strengths are static limits of flat-printed bars (layers in the gear's plane, as the plates "
+              "lay the gears: the tooth root bends along the layers), not fatigue ratings, and uncertain (PLA (+-30 %; "
+              "the lower end of the published XY range is used), PETG (+-30 %), nylon (+-40 %: moisture halves the "
+              "stiffness of PA6)); a data sheet of your own filament beats them. The safeties hold for the teeth only "
+              "(not the handle, pins or bores).")
+    assert hl.caveat() == caveat
+    assert hl.guide_lines() == [lead + " " + hl.sentence(), caveat]
+    head, rows = hl.guide_table()
+    assert head == ["material", "S_F (root)", "S_H (flank)", "least at", "takes about", "survives?"]
+    assert rows == [
+        ["PLA", "2.50 (≥ 2)", "1.50 (≥ 1.25)", "root: driven tooth 3, drive (PLA); flank: driver tooth 1, reverse (PLA)",
+         "62 N on the handle", "yes"],
+        ["PETG", "1.50 (≥ 2)", "1.50 (≥ 1.25)",
+         "root: driven tooth 3, drive (PETG); flank: driver tooth 1, reverse (PETG)", "38 N on the handle", "no"],
+        ["nylon", "2.50 (≥ 2)", "1.00 (≥ 1.25)",
+         "root: driven tooth 3, drive (nylon); flank: driver tooth 1, reverse (nylon)", "32 N on the handle", "no"]]
+    from propulsor.parts.noncircular_pair.kit_load import TABLE_COLUMNS
+
+    assert TABLE_COLUMNS == ["material", "S_F_min", "S_F_required", "root_worst", "sigma_F_max_MPa", "sigma_FE_MPa",
+                             "S_H_min", "S_H_required", "flank_worst", "sigma_H_max_MPa", "sigma_Hlim_MPa",
+                             "force_allow_N", "torque_allow_Nm", "survives", "uncertainty"]
+    assert hl.table_rows() == [
+        ["PLA", 2.5, 2.0, "driven tooth 3, drive (PLA)", 20.0, 50.0, 1.5, 1.25, "driver tooth 1, reverse (PLA)", 55.5,
+         83.0, 62.5, 2.5, "yes", "+-30 %; the lower end of the published XY range is used"],
+        ["PETG", 1.5, 2.0, "driven tooth 3, drive (PETG)", 28.0, 42.0, 1.5, 1.25, "driver tooth 1, reverse (PETG)",
+         46.5, 70.0, 37.5, 1.5, "no", "+-30 %"],
+        ["nylon", 2.5, 2.0, "driven tooth 3, drive (nylon)", 14.0, 35.0, 1.0, 1.25, "driver tooth 1, reverse (nylon)",
+         58.0, 58.0, pytest.approx(32.0), pytest.approx(1.28), "no", "+-40 %: moisture halves the stiffness of PA6"]]
+
+
+def test_the_derived_values_every_material_and_the_unrated_teeth_sorted():
+    pla, petg, nylon = _three()
+    v = _hl(pla, petg, nylon).derived()
+    want = {"hand_load_force_N": 50.0, "hand_load_crank_radius_mm": 40.0, "hand_load_T1_Nm": 2.0,
+            "hand_load_S_Fmin": 2.0, "hand_load_S_Hmin": 1.25, "hand_load_survivors": ["PLA"],
+            "hand_load_root_unrated_teeth": ["driven 8", "driven 9", "driven 10"]}
+    for r, sf, sh, sF, sH, force, ok in ((pla, 2.5, 1.5, 20.0, 55.5, 62.5, True),
+                                         (petg, 1.5, 1.5, 28.0, 46.5, 37.5, False),
+                                         (nylon, 2.5, 1.0, 14.0, 58.0, pytest.approx(32.0), False)):
+        n = r.name
+        want.update({f"hand_load_{n}_S_F_min": sf, f"hand_load_{n}_S_H_min": sh,
+                     f"hand_load_{n}_sigma_F_max_MPa": sF, f"hand_load_{n}_sigma_H_max_MPa": sH,
+                     f"hand_load_{n}_root_worst": f"driven tooth 3, drive ({n})",
+                     f"hand_load_{n}_flank_worst": f"driver tooth 1, reverse ({n})",
+                     f"hand_load_{n}_force_allow_N": force, f"hand_load_{n}_survives": ok})
+    assert v == want
+
+
+def test_the_kits_check_is_the_analyses_equilibrium_and_the_unrated_roots_do_not_fail_it():
+    from propulsor.gears.tooth_load import RootSection
+
+    pla, petg, nylon = _three()
+    ok = _hl(pla, petg, nylon).checks()
+    assert len(ok) == 1
+    (c,) = ok
+    assert (c.name, c.passed, c.value, c.limit, c.unit) == ("hand_load.equilibrium", True, 0.0, 1e-9, "")
+    # the worst of six: all equal, the first (PLA, drive) speaks
+    assert c.message == ("the hand on the crank (2.0000 N·m), 6 analyses (printed materials × both directions): PLA, "
+                         "drive: 0 of 4 phases without a loaded pair; 0 teeth without a 30 deg section; largest |sum F "
+                         "l1 - T1| / T1 0.00e+00 The roots of 3 teeth (driven 8, driven 9, driven 10) are not rated: "
+                         "ISO 6336-3's 30° section is not found on their outline.")
+    # a failed section is named by the analysis's own message, and does not fail the kit
+    cut = {"driver": {}, "driven": {8: RootSection(8, np.zeros(2), np.zeros(2), 0.5, math.nan, np.zeros(2))}}
+    at_limit = _rating("PETG", 1.5, 1.5, analyses=((1, _tl(imbalance=1e-9)), (-1, _tl(sections=cut))))
+    c = _hl(at_limit).checks()[0]
+    assert (c.passed, c.value) == (True, 1e-9)
+    assert c.message.startswith("the hand on the crank (2.0000 N·m), 2 analyses (printed materials × both directions): "
+                                "PETG, drive: 0 of 4 phases")
+    # past the limit, and a phase without a loaded pair: each failed analysis named, the value the worst's
+    bad = _rating("PLA", 2.5, 1.5, analyses=((1, _tl(imbalance=2e-9)), (-1, _tl(lost=1, imbalance=0.5, phases=6))))
+    c = _hl(at_limit, bad).checks()[0]
+    assert (c.passed, c.value) == (False, 1.0)
+    assert c.message == ("the hand on the crank (2.0000 N·m), 4 analyses (printed materials × both directions): PLA, "
+                         "drive: 0 of 4 phases without a loaded pair; 0 teeth without a 30 deg section; largest |sum F "
+                         "l1 - T1| / T1 2.00e-09; PLA, reverse: 1 of 6 phases without a loaded pair; 0 teeth without a "
+                         "30 deg section; largest |sum F l1 - T1| / T1 5.00e-01")
+    big = _rating("PLA", 2.5, 1.5, analyses=((1, _tl(imbalance=3.0)), (-1, _tl(lost=2))))
+    assert _hl(big).checks()[0].value == 3.0
+    lost = _rating("PLA", 2.5, 1.5, analyses=((1, _tl(imbalance=0.0)), (-1, _tl(lost=2))))
+    c = _hl(lost).checks()[0]
+    assert (c.passed, c.value) == (False, 2.0) and "PLA, reverse: 2 of 4" in c.message and "drive:" not in c.message
+
+
+def test_the_reports_note_in_full():
+    pla, petg, nylon = _three()
+    pla = dataclasses.replace(pla, analyses=((1, _tl(phases=9)), (-1, _tl(phases=5))))
+    hl = _hl(pla, petg, nylon)
+    assert hl.note() == (
+        "The hand on the crank (parts/noncircular_pair/kit_load.py: for a print kit the torque a hand can put on the "
+        "crank is the load case): F_hand = 50 N (a stated assumption: a firm one-hand push on a small handle, of the "
+        "order of MIL-STD-1472D's thumb-finger grip of 48 N, policy.KIT_HAND_FORCE_N) tangential at the handle's "
+        "radius r_h = 40.000 mm, the driven wheel held: T1 = F_hand·r_h = 2.0000 N·m; driver torque T1 = 2 N·m "
+        "(test).  Rated on the printed pair (module 1.25 mm, face width 8 mm, the teeth thinned for the printer's "
+        "backlash) by the load per tooth's analysis over one period in both directions (9 phases of the drive "
+        "direction), K_A = K_v = K_Hbeta = 1, for each printed material of the catalogue: "
+        "PLA (E 3000 MPa) S_F 2.500 (sigma_F 20.00 MPa, driven tooth 3, drive (PLA); sigma_FE 50 MPa), S_H 1.500 "
+        "(sigma_H 55.50 MPa, driver tooth 1, reverse (PLA); sigma_Hlim 83 MPa), takes about 62 N; "
+        "PETG (E 2000 MPa) S_F 1.500 (sigma_F 28.00 MPa, driven tooth 3, drive (PETG); sigma_FE 42 MPa), S_H 1.500 "
+        "(sigma_H 46.50 MPa, driver tooth 1, reverse (PETG); sigma_Hlim 70 MPa), takes about 38 N; "
+        "nylon (E 1200 MPa) S_F 2.500 (sigma_F 14.00 MPa, driven tooth 3, drive (nylon); sigma_FE 35 MPa), S_H 1.000 "
+        "(sigma_H 58.00 MPa, driver tooth 1, reverse (nylon); sigma_Hlim 58 MPa), takes about 32 N "
+        "against the part file's S_Fmin 2, S_Hmin 1.25.  " + hl.sentence() + "  " + hl.caveat()
+        + "  tables/hand_load.csv.")
+
+
+def test_worst_is_the_least_safety_over_both_wheels_and_directions_the_first_on_a_tie():
+    from propulsor.parts.noncircular_pair.kit_load import _worst
+
+    def v(drv, dvn):
+        return {"tooth_load_driver_S_F_min": drv[0], "tooth_load_driver_sigma_F_max_MPa": drv[1],
+                "tooth_load_driver_sigma_F_worst_tooth": drv[2], "tooth_load_driven_S_F_min": dvn[0],
+                "tooth_load_driven_sigma_F_max_MPa": dvn[1], "tooth_load_driven_sigma_F_worst_tooth": dvn[2],
+                "tooth_load_driver_S_H_min": drv[0] + 1, "tooth_load_driver_sigma_H_max_MPa": drv[1] + 100,
+                "tooth_load_driver_sigma_H_worst_tooth": drv[2] + 20, "tooth_load_driven_S_H_min": dvn[0] + 1,
+                "tooth_load_driven_sigma_H_max_MPa": dvn[1] + 100, "tooth_load_driven_sigma_H_worst_tooth": dvn[2] + 20}
+
+    per = [(1, v((3.0, 10.0, 4), (2.0, 12.0, 7))), (-1, v((2.0, 13.0, 1), (2.5, 11.0, 9)))]
+    assert _worst(per, "S_F") == (2.0, 12.0, "driven tooth 7, drive")
+    assert _worst(per, "S_H") == (3.0, 112.0, "driven tooth 27, drive")
+    per = [(1, v((3.0, 10.0, 4), (2.5, 12.0, 7))), (-1, v((1.5, 13.0, 1), (2.5, 11.0, 9)))]
+    assert _worst(per, "S_F") == (1.5, 13.0, "driver tooth 1, reverse")
+    assert _worst(per[:1], "S_F") == (2.5, 12.0, "driven tooth 7, drive")
+
+
+@dataclasses.dataclass(frozen=True)
+class _Q:
+    """The kit parameters hand_load reads (a part file's load case, which it replaces by the hand's)."""
+
+    load_driver_torque_Nm: float = 99.0
+    load_power_W: float = 500.0
+    load_vehicle_mass_kg: float = 80.0
+    load_life_hours: float = 1000.0
+    load_K_A: float = 1.5
+    load_K_v: float = 1.2
+    load_K_beta: float = 1.3
+    gear_material: str = "steel_case_MQ"
+    load_S_Fmin: float = 2.0
+    load_S_Hmin: float = 1.25
+    face_width_mm: float = 8.0
+
+
+def _kit_stubs(monkeypatch, safeties):
+    """analyse, summary and contact_direction replaced: each analysis recorded, its summary the given
+    {(material, direction): (S_F driver, S_F driven, S_H driver, S_H driven)}, the stresses 100 / S, the worst tooth
+    10 + direction."""
+    import propulsor.parts.noncircular_pair.as_built as ab_mod
+    import propulsor.parts.noncircular_pair.tooth_load_outputs as tlo
+
+    calls = SimpleNamespace(analyse=[], contact=[])
+
+    def analyse(d, mount, p, c_phi, c_te, phi0, span, step_deg=None, direction=1, tick=None):
+        calls.analyse.append(SimpleNamespace(d=d, mount=mount, p=p, c_phi=c_phi, c_te=c_te, phi0=phi0, span=span,
+                                             step_deg=step_deg, direction=direction, tick=tick))
+        sections = {"driver": {}, "driven": {}}
+        if p.gear_material == "PETG" and direction == -1:
+            sections["driven"] = {9: SimpleNamespace(ok=False), 3: SimpleNamespace(ok=True)}
+        if p.gear_material == "PETG" and direction == 1:
+            sections["driver"] = {12: SimpleNamespace(ok=False)}
+            sections["driven"] = {9: SimpleNamespace(ok=False)}
+        return SimpleNamespace(material=_mat(p.gear_material), load_case=f"case of {p.gear_material} {direction}",
+                               sections=sections, direction=direction, lost=0, imbalance=0.0, theta=c_phi)
+
+    def summary(tl, p):
+        sfd, sfn, shd, shn = safeties[(p.gear_material, tl.direction)]
+        out = {}
+        for g, sf, sh in (("driver", sfd, shd), ("driven", sfn, shn)):
+            out.update({f"tooth_load_{g}_S_F_min": sf, f"tooth_load_{g}_sigma_F_max_MPa": 100 / sf,
+                        f"tooth_load_{g}_sigma_F_worst_tooth": 10 + tl.direction,
+                        f"tooth_load_{g}_S_H_min": sh, f"tooth_load_{g}_sigma_H_max_MPa": 100 / sh,
+                        f"tooth_load_{g}_sigma_H_worst_tooth": 20 + tl.direction})
+        return out
+
+    def contact(d, mount, direction, step):
+        calls.contact.append((d, mount, direction, step))
+        return SimpleNamespace(phi=np.array([0.25, 0.5, 0.75]), te=np.array([math.nan, 0.0, 1e-3]),
+                               direction=direction)
+
+    monkeypatch.setattr(tlo, "analyse", analyse)
+    monkeypatch.setattr(tlo, "summary", summary)
+    monkeypatch.setattr(ab_mod, "contact_direction", contact)
+    return calls
+
+
+def _kd(method="generated", periods=2, z_H=30):
+    return SimpleNamespace(d=SimpleNamespace(method=method, m=1.25, run_law=SimpleNamespace(periods=periods), z_H=z_H),
+                           mount=37.5)
+
+
+def test_hand_load_rates_each_material_in_both_directions_under_the_hands_torque_alone(monkeypatch):
+    from propulsor import policy
+    from propulsor.parts.noncircular_pair.kit_load import hand_load
+
+    safeties = {("PLA", 1): (3.0, 2.5, 1.5, 1.75), ("PLA", -1): (2.75, 4.0, 1.625, 1.4),
+                ("PETG", 1): (2.0, 2.2, 1.3, 1.25), ("PETG", -1): (1.9, 2.1, 1.3, 1.35)}
+    calls = _kit_stubs(monkeypatch, safeties)
+    counted = []
+    kd, q = _kd(), _Q()
+    hl = hand_load(q, kd, 40.0, 50.0, names=("PLA", "PETG"), count=lambda done, total: counted.append((done, total)))
+    # the contacts of both directions resolved at the kit's step, over one period: 2 pi / 2 (30 teeth, 2 periods)
+    step = math.radians(policy.KIT_HAND_LOAD_CONTACT_STEP_DEG)
+    assert policy.KIT_HAND_LOAD_CONTACT_STEP_DEG == 0.5
+    assert calls.contact == [(kd.d, 37.5, DRIVE, step), (kd.d, 37.5, REVERSE, step)]
+    assert [(c.p.gear_material, c.direction) for c in calls.analyse] == [("PLA", 1), ("PLA", -1), ("PETG", 1),
+                                                                        ("PETG", -1)]
+    for c in calls.analyse:
+        assert c.d is kd.d and c.mount == 37.5 and c.phi0 == 0.25 and c.span == math.pi
+        assert c.step_deg is None and c.tick is None
+        assert c.c_te[1:].tolist() == [0.0, 1e-3] and c.c_phi.tolist() == [0.25, 0.5, 0.75]
+        # the hand's torque alone, static: T1 = 50 N x 40 mm, no power, vehicle or life, every factor 1
+        assert c.p == _Q(load_driver_torque_Nm=2.0, load_power_W=0.0, load_vehicle_mass_kg=0.0, load_life_hours=0.0,
+                         load_K_A=1.0, load_K_v=1.0, load_K_beta=1.0, gear_material=c.p.gear_material)
+    assert counted == [(0, 4), (1, 4), (2, 4), (3, 4), (4, 4)]
+    assert (hl.force_N, hl.r_h_mm, hl.T1_Nm, hl.m_mm, hl.b_mm, hl.S_Fmin, hl.S_Hmin) == (50.0, 40.0, 2.0, 1.25, 8.0,
+                                                                                         2.0, 1.25)
+    assert hl.load_case == "case of PETG -1"  # the last analysis's words
+    assert [dr for dr, _ in hl.contacts] == [DRIVE, REVERSE]
+    pla, petg = hl.ratings
+    assert (pla.name, pla.material, pla.S_F, pla.S_H) == ("PLA", _mat("PLA"), 2.5, 1.4)
+    assert (pla.sigma_F_max_MPa, pla.sigma_H_max_MPa) == (40.0, 100 / 1.4)
+    assert (pla.root_worst, pla.flank_worst) == ("driven tooth 11, drive", "driven tooth 19, reverse")
+    assert (pla.S_Fmin, pla.S_Hmin, pla.force_N, pla.unrated) == (2.0, 1.25, 50.0, ())
+    assert [(d, tl.direction, tl.material.name) for d, tl in pla.analyses] == [(1, 1, "PLA"), (-1, -1, "PLA")]
+    assert (petg.S_F, petg.root_worst, petg.S_H, petg.flank_worst) == (1.9, "driver tooth 9, reverse", 1.25,
+                                                                      "driven tooth 21, drive")
+    assert petg.unrated == ("driven 9", "driver 12")
+    assert hl.survivors == ["PLA"]
+
+
+def test_hand_load_defaults_reuse_and_refusals(monkeypatch):
+    from propulsor import policy
+    from propulsor.parts.noncircular_pair.kit_load import hand_load
+
+    safeties = {(n, dr): (3.0, 2.5, 1.5, 1.75) for n in ("PLA", "PETG", "nylon") for dr in (1, -1)}
+    calls = _kit_stubs(monkeypatch, safeties)
+    kd = _kd(periods=3, z_H=31)  # the periods do not hold whole teeth: the whole turn
+    hl = hand_load(_Q(), kd, 30.0)
+    assert [r.name for r in hl.ratings] == ["PLA", "PETG", "nylon"]
+    assert hl.force_N == policy.KIT_HAND_FORCE_N == 50.0 and hl.T1_Nm == 1.5
+    assert all(c.span == 2 * math.pi for c in calls.analyse) and len(calls.analyse) == 6
+    assert all(r.force_N == 50.0 for r in hl.ratings)
+    # the contacts given: not resolved again
+    given = ((DRIVE, SimpleNamespace(phi=np.array([0.0, 1.0]), te=np.array([0.0, 0.0]))),
+             (REVERSE, SimpleNamespace(phi=np.array([0.0, 1.0]), te=np.array([1e-3, 1e-3]))))
+    calls.contact.clear()
+    hl = hand_load(_Q(), kd, 30.0, 40.0, names=["nylon"], contacts=given)
+    assert calls.contact == [] and hl.contacts == given and hl.T1_Nm == pytest.approx(1.2)
+    assert [r.name for r in hl.ratings] == ["nylon"] and hl.ratings[0].force_N == 40.0
+    # no contact in a direction: refused, named
+    lost = ((DRIVE, given[0][1]), (REVERSE, SimpleNamespace(phi=np.array([0.0, 1.0]), te=np.array([math.nan] * 2))))
+    with pytest.raises(ValueError) as e:
+        hand_load(_Q(), kd, 30.0, names=["PLA"], contacts=lost)
+    assert str(e.value) == "the printed pair has no contact in the reverse direction"
+    with pytest.raises(ValueError) as e:
+        hand_load(_Q(), kd, 30.0, names=["PLA"], contacts=((REVERSE, lost[1][1]), (DRIVE, given[0][1])))
+    assert str(e.value) == "the printed pair has no contact in the reverse direction"
+    with pytest.raises(ValueError) as e:
+        hand_load(_Q(), kd, 30.0, names=["PLA"], contacts=((DRIVE, lost[1][1]),))
+    assert str(e.value) == "the printed pair has no contact in the drive direction"
+    # sector teeth (no tooth record): nothing to rate
+    calls.analyse.clear()
+    assert hand_load(_Q(), _kd("sectors"), 30.0) is None and calls.analyse == []
