@@ -240,6 +240,7 @@ def test_as_built_values_of_a_walking_pair_every_value_the_table_and_the_note(mo
         "speed_ripple_as_built": 0.375, "speed_ripple_as_built_drive": 0.25, "speed_ripple_as_built_reverse": 0.375,
         "speed_as_built_min_rel": 0.875, "speed_as_built_max_rel": 1.125,
         "speed_as_built_phi_min_deg": pytest.approx(0.5 * DEG), "speed_as_built_phi_max_deg": pytest.approx(DEG)}
+    assert type(w.derived["te_min_rad"]) is type(w.derived["te_max_rad"]) is float  # plain numbers, not numpy's
     assert w.tables == {"as_built_stretches": (_STRETCH_COLUMNS, stretch_rows(ab))}
     assert len(w.tables["as_built_stretches"][1]) == 2
     assert calls.plot == [(w, dd.d, ab)]
@@ -387,6 +388,7 @@ def test_tolerance_values_the_cases_table_values_percentiles_and_note(monkeypatc
         "tolerance_backlash_min_p50_mm": pytest.approx(bl[2]),
         "tolerance_te_pp_p50_rad": pytest.approx(te[2]),
         "tolerance_te_pp_p95_rad": pytest.approx(te[3] + 0.8 * (te[4] - te[3]))}
+    assert {type(v) for v in w.derived.values()} == {float, int}
     assert w.notes == [
         "As made (ISO 1328-1 grade 8 (test)): the as-built transmission of the pair within these tolerances, both "
         "directions over the whole driven turn, at the 4 worst-case corners (tight: L - f_a with the thickest teeth; "
@@ -721,7 +723,9 @@ def test_hand_load_rates_each_material_in_both_directions_under_the_hands_torque
     calls = _kit_stubs(monkeypatch, safeties)
     counted = []
     kd, q = _kd(), _Q()
-    hl = hand_load(q, kd, 40.0, 50.0, names=("PLA", "PETG"), count=lambda done, total: counted.append((done, total)))
+    hl = hand_load(q, kd, 40, 50, names=("PLA", "PETG"), count=lambda done, total: counted.append((done, total)))
+    # given as whole numbers, kept as floats (the manifest's values)
+    assert [type(x) for x in (hl.force_N, hl.r_h_mm, hl.T1_Nm, hl.ratings[0].force_N)] == [float] * 4
     # the contacts of both directions resolved at the kit's step, over one period: 2 pi / 2 (30 teeth, 2 periods)
     step = math.radians(policy.KIT_HAND_LOAD_CONTACT_STEP_DEG)
     assert policy.KIT_HAND_LOAD_CONTACT_STEP_DEG == 0.5
@@ -729,7 +733,7 @@ def test_hand_load_rates_each_material_in_both_directions_under_the_hands_torque
     assert [(c.p.gear_material, c.direction) for c in calls.analyse] == [("PLA", 1), ("PLA", -1), ("PETG", 1),
                                                                         ("PETG", -1)]
     for c in calls.analyse:
-        assert c.d is kd.d and c.mount == 37.5 and c.phi0 == 0.25 and c.span == math.pi
+        assert c.d is kd.d and c.mount == 37.5 and c.phi0 == 0.25 and type(c.phi0) is float and c.span == math.pi
         assert c.step_deg is None and c.tick is None
         assert c.c_te[1:].tolist() == [0.0, 1e-3] and c.c_phi.tolist() == [0.25, 0.5, 0.75]
         # the hand's torque alone, static: T1 = 50 N x 40 mm, no power, vehicle or life, every factor 1
@@ -785,3 +789,27 @@ def test_hand_load_defaults_reuse_and_refusals(monkeypatch):
     # sector teeth (no tooth record): nothing to rate
     calls.analyse.clear()
     assert hand_load(_Q(), _kd("sectors"), 30.0) is None and calls.analyse == []
+
+
+def test_the_jobs_of_both_directions_and_of_the_tolerance_cases_are_counted_by_their_names(monkeypatch):
+    import propulsor.progress as progress
+    from propulsor.parts.noncircular_pair.as_built_outputs import _result, tolerance_values
+
+    monkeypatch.setattr(progress, "COUNT_EVERY_S", 0.0)
+    calls = _recorders(monkeypatch, "the as-built")
+    events = []
+    rep = progress.Reporter(events.append)
+    dd = _dd()
+    jobs = (SimpleNamespace(result=lambda: "drive"), SimpleNamespace(result=lambda: "reverse"))
+    assert _result(dd, {"as_built": jobs, "proof": None}, rep) == "the as-built"
+    assert calls.combine == [(dd.d, ("drive", "reverse"))]
+    assert events == ["as built: both directions' contact: direction 0/2",
+                      "as built: both directions' contact: direction 1/2",
+                      "as built: both directions' contact: direction 2/2"]
+    events.clear()
+    worst, _ = _tol_results()
+    w = SaidWriter()
+    w.progress = rep
+    tolerance_values(w, dd, {"tolerance": (_tol(), [SimpleNamespace(result=lambda r=r: r) for r in worst])})
+    assert events == [f"as made: tolerance cases: case {k}/4" for k in range(5)]
+    assert w.derived["tolerance_backlash_min_mm"] == 0.0125
