@@ -264,7 +264,7 @@ def test_as_built_values_of_a_walking_pair_every_value_the_table_and_the_note(mo
 def test_as_built_values_without_a_hub_and_with_the_directions_resolved_here(monkeypatch):
     from propulsor.parts.noncircular_pair.as_built_outputs import as_built_values
 
-    ab = _ab()
+    ab = _ab(drive=_cl(DRIVE, [0.0] * 6, kind=(0, 1, 0, 0, 0, 0)))  # on a corner 0.5 of 2.5 rad of driver: 20 %
     calls = _recorders(monkeypatch, ab)
     dd, w = _dd(walking=False, method="generated"), SaidWriter()
     proof = _proof()
@@ -275,7 +275,9 @@ def test_as_built_values_without_a_hub_and_with_the_directions_resolved_here(mon
     assert not any(k.startswith("speed_ripple") or k.startswith("speed_as_built_phi") for k in w.derived)
     assert len(w.derived) == 19
     assert "hub speed" not in w.notes[0]
-    assert ("positions): driven speed over the law's 1.0000 .. 1.5000 (drive)" in w.notes[0])
+    assert ("positions): driven speed over the law's 1.0000 .. 1.0000 (drive)" in w.notes[0])
+    assert "load on a corner 20.00 % / 40.00 % of the cycle." in w.notes[0]
+    assert w.checks[2].message.endswith("share of the cycle on a corner 20.00 % (drive), 40.00 % (reverse)")
 
 
 def test_as_built_values_after_a_jam_say_so_and_go_on_to_the_load_and_tolerances(monkeypatch):
@@ -796,6 +798,8 @@ def test_the_jobs_of_both_directions_and_of_the_tolerance_cases_are_counted_by_t
     from propulsor.parts.noncircular_pair.as_built_outputs import _result, tolerance_values
 
     monkeypatch.setattr(progress, "COUNT_EVERY_S", 0.0)
+    import propulsor.parts.noncircular_pair.as_built_outputs as abo
+
     calls = _recorders(monkeypatch, "the as-built")
     events = []
     rep = progress.Reporter(events.append)
@@ -813,3 +817,13 @@ def test_the_jobs_of_both_directions_and_of_the_tolerance_cases_are_counted_by_t
     tolerance_values(w, dd, {"tolerance": (_tol(), [SimpleNamespace(result=lambda r=r: r) for r in worst])})
     assert events == [f"as made: tolerance cases: case {k}/4" for k in range(5)]
     assert w.derived["tolerance_backlash_min_mm"] == 0.0125
+    # as_built_values counts through the writer's progress
+    events.clear()
+    w = SaidWriter()
+    w.progress = rep
+    monkeypatch.setattr(abo, "tolerance_values", lambda *a: None)
+    monkeypatch.setattr(abo, "combine", lambda d, *c: _ab())
+    abo.as_built_values(w, _dd(walking=False), {"as_built": jobs, "proof": _proof()})
+    assert events[:3] == ["as built: both directions' contact: direction 0/2",
+                          "as built: both directions' contact: direction 1/2",
+                          "as built: both directions' contact: direction 2/2"]
