@@ -358,10 +358,11 @@ def test_tolerance_rows_in_micrometres_and_degrees_in_full():
 
 def _tol_results():
     """Four corners (least backlash 0.0125 mm, largest TE 0.004 rad at 'tight opp' reverse, step 0.25) and five
-    draws (backlash 0.1, 0.05, 0.2, 0.15, 0.3; TE as their larger direction 0.001, 0.005, 0.002, 0.003, 0.0025)."""
+    draws (backlash 0.1, 0.05, 0.2, 0.15, 0.3; TE as their larger direction 0.001, 0.005, 0.002, 0.003, 0.0025; the
+    first's speed step 0.3125, larger than the corners': the worst-case values are the corners' alone)."""
     worst = [_tr("tight", 0.0125, te=(3e-3, 1e-3), step=0.125), _tr("tight opp", 0.025, te=(1e-3, 4e-3), step=0.25),
              _tr("loose", 0.5, te=(2e-3, 2e-3)), _tr("loose opp", 0.625, te=(1e-3, 1e-3), step=0.0625)]
-    mc = [_tr("mc 0", 0.1, te=(1e-3, 5e-4)), _tr("mc 1", 0.05, te=(5e-3, 1e-3)), _tr("mc 2", 0.2, te=(1e-3, 2e-3)),
+    mc = [_tr("mc 0", 0.1, te=(1e-3, 5e-4), step=0.3125), _tr("mc 1", 0.05, te=(5e-3, 1e-3)), _tr("mc 2", 0.2, te=(1e-3, 2e-3)),
           _tr("mc 3", 0.15, te=(3e-3, 1e-3)), _tr("mc 4", 0.3, te=(2.5e-3, 2e-3))]
     return worst, mc
 
