@@ -161,6 +161,28 @@ def test_tooth_height_is_the_least_share_of_each_wheels_shifted_addendum_with_th
     assert tooth_height_check(_teeth_design("sectors"), _p()) is None
 
 
+def test_tooth_height_of_the_elliptical_part_files_pair_is_the_whole_addendum_on_every_tooth():
+    """The real teeth (the stand-ins above have their attributes): the elliptical file's unshifted pair (m = 2.5 mm,
+    profile A) keeps h_a = m on all 30 + 30 teeth, none shortened; about 1 s."""
+    from pathlib import Path
+
+    from propulsor.params import load_params, read_part_file
+    from propulsor.parts.noncircular_pair import NoncircularPairParams, design
+    from propulsor.parts.noncircular_pair.as_built_outputs import tooth_height_check
+
+    _, mapping = read_part_file(Path(__file__).resolve().parent.parent / "parts" / "ncg_elliptical.toml")
+    p = load_params(NoncircularPairParams, mapping)
+    d = design(p)
+    assert (d.method, d.m, p.driver_shift, p.rack_profile) == ("generated", 2.5, 0.0, "A")
+    for gear in (d.driver, d.driven):
+        assert len(gear.teeth) == 30
+        assert [t.tip_height_mm for t in gear.teeth] == pytest.approx([2.5] * 30, abs=1e-9)
+        assert not any(t.shortened for t in gear.teeth)
+    c = tooth_height_check(d, p)
+    assert (c.passed, c.value, c.limit) == (True, pytest.approx(1.0, abs=1e-9), p.tooth_height_min_share)
+    assert c.message == "least share of the addendum 1.000 (driver tooth 0); 0 tips shortened where pointed"
+
+
 # =========================================================================== _collected
 def test_collected_results_come_in_the_jobs_order_counted_as_they_come(monkeypatch):
     import propulsor.parallel as parallel
