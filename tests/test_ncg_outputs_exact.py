@@ -77,8 +77,8 @@ def test_as_built_checks_of_a_walking_pair_each_with_its_limit_and_message_in_fu
                             f"{1.25 * DEG:.3f} deg; reverse 0.000 %")
     assert f"{1.25 * DEG:.3f}" == "71.620"
     assert (corner.passed, corner.value, corner.limit, corner.unit) == (True, pytest.approx(DEG), 57.5, "deg")
-    assert corner.message == ("longest run of driver angle with the load on a tooth corner 57.296 deg (reverse at driver "
-                              "57.296 deg); share of the cycle on a corner 0.00 % (drive), 40.00 % (reverse)")
+    assert corner.message == ("longest run of driver angle with the load on a tooth corner 57.296 deg (reverse at "
+                              "driver 57.296 deg); share of the cycle on a corner 0.00 % (drive), 40.00 % (reverse)")
     assert (contact.passed, contact.value, contact.limit, contact.unit) == (True, 0, 0, "samples")
     assert contact.message == "0 samples without a contact within the largest free rotation"
 
@@ -100,10 +100,11 @@ def test_as_built_checks_fail_just_past_each_limit_and_count_every_lost_sample()
     assert [c.name for c in checks] == ["as_built.speed_step", "as_built.corner_load", "as_built.contact"]
     step, corner, contact = checks
     assert (step.value, step.passed) == (0.0, True)
-    assert step.message == "largest change of the driven speed across a change of contact: drive 0.000 %; reverse 0.000 %"
+    assert step.message == ("largest change of the driven speed across a change of contact: drive 0.000 %; reverse "
+                            "0.000 %")
     assert (corner.value, corner.passed) == (0.0, True)
-    assert corner.message == ("longest run of driver angle with the load on a tooth corner 0.000 deg; share of the cycle on "
-                              "a corner 0.00 % (drive), 0.00 % (reverse)")
+    assert corner.message == ("longest run of driver angle with the load on a tooth corner 0.000 deg; share of the "
+                              "cycle on a corner 0.00 % (drive), 0.00 % (reverse)")
     assert (contact.passed, contact.value, contact.limit) == (False, 3, 0)
     assert contact.message == "3 samples without a contact within the largest free rotation"
     one = as_built_checks(_ab((), _cl(DRIVE, [0, nan, 0, 0, 0, 0]), _cl(REVERSE, [0.5] * 6)), _p(), None)[-1]
@@ -354,9 +355,9 @@ def test_tolerance_check_passes_at_the_step_limit_and_names_every_jam_and_loss_i
            _tr("loose opp", 0.3, step=0.25)]
     chk = tolerance_check(_tol(), bad, 0.25)
     assert (chk.passed, chk.value, chk.limit) == (False, -0.0125, 0.0)
-    assert chk.message == ("least backlash -0.0125 mm over the worst-case corners of ISO 1328-1 grade 8 (test); largest "
-                           "speed step 50.00 %; tight: jam (backlash -0.0125 mm at driven 30.00 deg); tight opposed: "
-                           "contact lost (0 samples without contact; speed step 31.25 % at driver 12.50 deg); loose: "
+    assert chk.message == ("least backlash -0.0125 mm over the worst-case corners of ISO 1328-1 grade 8 (test); "
+                           "largest speed step 50.00 %; tight: jam (backlash -0.0125 mm at driven 30.00 deg); tight "
+                           "opposed: contact lost (0 samples without contact; speed step 31.25 % at driver 12.50 deg); loose: "
                            "contact lost (3 samples without contact; speed step 0.00 % at driver 40.00 deg)")
     one = tolerance_check(_tol(), [_tr("a", 0.5, step=0.0)] * 3 + [_tr("b", 0.0, lost=1)], 0.25)
     assert not one.passed and one.value == 0.0 and one.message.endswith("; b: contact lost (1 samples without "
@@ -384,7 +385,8 @@ def _tol_results():
     first's speed step 0.3125, larger than the corners': the worst-case values are the corners' alone)."""
     worst = [_tr("tight", 0.0125, te=(3e-3, 1e-3), step=0.125), _tr("tight opp", 0.025, te=(1e-3, 4e-3), step=0.25),
              _tr("loose", 0.5, te=(2e-3, 2e-3)), _tr("loose opp", 0.625, te=(1e-3, 1e-3), step=0.0625)]
-    mc = [_tr("mc 0", 0.1, te=(1e-3, 5e-4), step=0.3125), _tr("mc 1", 0.05, te=(5e-3, 1e-3)), _tr("mc 2", 0.2, te=(1e-3, 2e-3)),
+    mc = [_tr("mc 0", 0.1, te=(1e-3, 5e-4), step=0.3125), _tr("mc 1", 0.05, te=(5e-3, 1e-3)),
+          _tr("mc 2", 0.2, te=(1e-3, 2e-3)),
           _tr("mc 3", 0.15, te=(3e-3, 1e-3)), _tr("mc 4", 0.3, te=(2.5e-3, 2e-3))]
     return worst, mc
 
@@ -538,7 +540,8 @@ def test_the_verdict_names_who_survives_and_who_not_with_the_safeties_and_the_un
     assert _hl(petg, nylon).sentence() == (
         "No printed material survives it (PETG S_F 1.50, S_H 1.50; nylon S_F 2.50, S_H 1.00 against the required S_F "
         "2, S_H 1.25): print it in nylon or turn gently: in nylon the teeth take about 32 N on the handle (1.280 "
-        "N·m). The roots of 1 teeth (driven 9) are not rated: ISO 6336-3's 30° section is not found on their outline.")
+        "N·m). The roots of 1 teeth (driven 9) are not rated: ISO 6336-3's 30° section is not found on their "
+        "outline.")
     assert _hl(nylon).sentence().startswith("No printed material survives it (nylon S_F 2.50, S_H 1.00 against")
     assert _hl(petg).sentence().endswith("in PETG the teeth take about 38 N on the handle (1.500 N·m).")
     assert _hl(petg)._unrated() == ""
@@ -561,7 +564,8 @@ def test_the_guides_words_table_and_caveat_in_full():
     head, rows = hl.guide_table()
     assert head == ["material", "S_F (root)", "S_H (flank)", "least at", "takes about", "survives?"]
     assert rows == [
-        ["PLA", "2.50 (≥ 2)", "1.50 (≥ 1.25)", "root: driven tooth 3, drive (PLA); flank: driver tooth 1, reverse (PLA)",
+        ["PLA", "2.50 (≥ 2)", "1.50 (≥ 1.25)",
+         "root: driven tooth 3, drive (PLA); flank: driver tooth 1, reverse (PLA)",
          "62 N on the handle", "yes"],
         ["PETG", "1.50 (≥ 2)", "1.50 (≥ 1.25)",
          "root: driven tooth 3, drive (PETG); flank: driver tooth 1, reverse (PETG)", "38 N on the handle", "no"],
@@ -617,8 +621,8 @@ def test_the_kits_check_is_the_analyses_equilibrium_and_the_unrated_roots_do_not
     at_limit = _rating("PETG", 1.5, 1.5, analyses=((1, _tl(imbalance=1e-9)), (-1, _tl(sections=cut))))
     c = _hl(at_limit).checks()[0]
     assert (c.passed, c.value) == (True, 1e-9)
-    assert c.message.startswith("the hand on the crank (2.0000 N·m), 2 analyses (printed materials × both directions): "
-                                "PETG, drive: 0 of 4 phases")
+    assert c.message.startswith("the hand on the crank (2.0000 N·m), 2 analyses (printed materials × both "
+                                "directions): PETG, drive: 0 of 4 phases")
     # past the limit, and a phase without a loaded pair: each failed analysis named, the value the worst's
     bad = _rating("PLA", 2.5, 1.5, analyses=((1, _tl(imbalance=2e-9)), (-1, _tl(lost=1, imbalance=0.5, phases=6))))
     c = _hl(at_limit, bad).checks()[0]
