@@ -358,7 +358,8 @@ def test_tolerance_check_passes_at_the_step_limit_and_names_every_jam_and_loss_i
     assert chk.message == ("least backlash -0.0125 mm over the worst-case corners of ISO 1328-1 grade 8 (test); "
                            "largest speed step 50.00 %; tight: jam (backlash -0.0125 mm at driven 30.00 deg); tight "
                            "opposed: contact lost (0 samples without contact; speed step 31.25 % at driver 12.50 "
-                           "deg); loose: contact lost (3 samples without contact; speed step 0.00 % at driver 40.00 deg)")
+                           "deg); loose: contact lost (3 samples without contact; speed step 0.00 % at driver 40.00 "
+                           "deg)")
     one = tolerance_check(_tol(), [_tr("a", 0.5, step=0.0)] * 3 + [_tr("b", 0.0, lost=1)], 0.25)
     assert not one.passed and one.value == 0.0 and one.message.endswith("; b: contact lost (1 samples without "
                                                                          "contact; speed step 0.00 % at driver "
