@@ -107,7 +107,7 @@ def stretch_rows(ab: AsBuilt) -> list[list]:
     return rows
 
 
-def _plot(w, d, ab: AsBuilt) -> None:
+def _plot(w, d, ab: AsBuilt) -> None:  # pragma: no mutate block (the figure only)
     from ...export.plots import new_figure
 
     fig, ax = new_figure()
