@@ -21,6 +21,15 @@ comparison only when read (a5eae93) 13.58 / 13.00 / 13.18 and 18.31 / 18.25 / 18
 form, cProfile): the design 8 s (the teeth's envelope points through scalar law calls and bounded minimisations 4 s,
 B-spline fitting of 600 pieces 4 s), the as-built contact 2 x 10 935 measurements at 0.18-0.23 ms, the per-tooth
 load 3 s, the whole-cycle proof 2 s.
+
+2026-11-29 (2 cores, both busy with mutation runs; two variants each, old and new in turn): at 118e7c2 the seed-002
+pair 7.19 / 7.31 / 7.02 / 7.23 CPU s, its Fourier form 6.98 / 7.11 / 7.09 / 7.21; after the root-equidistant heights
+found together and the tip searches that cannot leave a land skipped (d875009), 6.89 / 6.86 / 7.15 / 6.97 and
+6.82 / 7.18 / 7.14 / 6.89.  The teeth alone (``generate_teeth``, both wheels): seed 002 1.79 -> 1.31 s (752 -> 568
+tip searches), its Fourier form 0.93 -> 0.67 s; tips and outlines of seven pairs identical.  Where the rest goes
+(the seed-002 pair, one variant, timed per step): the as-built contact 2.5 s (2 x 9 803 measurements at about 100 us
+in the compiled search and 25 us around it; 632 of its 651 changes of state are the loaded tooth pair swapping
+within a double contact, each bisected), the whole-cycle proof 1.1 s, the teeth 1.3 s, the B-spline fits 0.8 s.
 """
 
 from __future__ import annotations
