@@ -1670,3 +1670,63 @@ def test_load_per_tooth_of_a_printed_pair_takes_the_plastics_own_elasticity():
     # a span under one step of the driver (0.4 deg of 1 deg): its two ends only (theta = 2 phi)
     short = analyse(d, dd.mount, p, c_phi, c_te, 0.5 * pitch, math.radians(0.2), step_deg=1.0)
     assert np.degrees(short.theta) == pytest.approx([9.0, 9.4], abs=1e-9)
+
+
+def test_load_per_tooth_puts_each_wheels_force_on_its_line_of_action_against_its_turn():
+    """The circular pair of ``_circular_pair`` (driver r_b = 25 cos 20 deg, driven 50 cos 20 deg): the force that
+    ``analyse`` hands to the root-stress step of each loaded contact, in that wheel's body frame at the contact point
+    P.  The two are one force, opposite (the driver's turned into the world by theta, the driven wheel's by its
+    actual angle phi + te, sum to zero): the angle that makes them cancel also takes both contact points to one world
+    point (driven: R(-phi_c) P; driver: (L, 0) + R(theta) P) to 0.02 mm, and lies within 0.01 rad of the law's phi
+    (te = -1.7e-3 rad: the driven wheel behind the law by half the backlash).
+    Each resists the driver's turn and drives the driven wheel: its moment is -F r_b on both wheels (counter-clockwise
+    positive in both body frames), to 1e-3 of it on the flanks (the polylines' facets)."""
+    from propulsor.checks.motion.contact_events import DRIVE, resolve_contact
+    from propulsor.gears import tooth_load as tlm
+    from propulsor.parts.noncircular_pair.as_built import pair_outlines
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import analyse
+
+    p, dd = _circular_pair()
+    d = dd.d
+    pitch = 2 * math.pi / 40
+    cl = resolve_contact(pair_outlines(d, dd.mount), d.run_law.theta, 0.0, 2 * pitch, DRIVE,
+                         step_driver_rad=math.radians(0.5))
+    seen = []
+    real = tlm.root_stress
+
+    def recorder(sec, P, Fv, *a, **k):
+        seen.append((np.asarray(P, float), np.asarray(Fv, float)))
+        return real(sec, P, Fv, *a, **k)
+
+    tlm.root_stress = recorder
+    try:
+        tl = analyse(d, dd.mount, p, cl.phi, cl.te, 0.2 * pitch, 0.8 * pitch, step_deg=1.0)
+    finally:
+        tlm.root_stress = real
+    alpha = math.radians(20.0)
+    rb = (25.0 * math.cos(alpha), 50.0 * math.cos(alpha))
+    rot = lambda a, v: np.array([math.cos(a) * v[0] - math.sin(a) * v[1], math.sin(a) * v[0] + math.cos(a) * v[1]])
+    # the driver's and the driven wheel's call of each loaded contact, in the order of the table's rows
+    assert len(seen) == 2 * len(tl.rows) > 0
+    flanks, gaps, tes = 0, [], []
+    for row, (Pd, Fd), (Pn, Fn) in zip(tl.rows, seen[0::2], seen[1::2]):
+        F, theta, phi = row[9], math.radians(row[0]), math.radians(row[1])
+        assert np.linalg.norm(Fd) == pytest.approx(F, rel=1e-12) and np.linalg.norm(Fn) == pytest.approx(F, rel=1e-12)
+        assert float(np.hypot(*Pd)) == pytest.approx(row[24], rel=1e-12)
+        assert float(np.hypot(*Pn)) == pytest.approx(row[25], rel=1e-12)
+        phi_c = math.atan2(Fn[1], Fn[0]) - math.atan2(Fd[1], Fd[0]) - theta - math.pi
+        phi_c = phi + (phi_c - phi + math.pi) % (2 * math.pi) - math.pi
+        assert abs(phi_c - phi) < 0.01
+        assert np.linalg.norm(rot(theta, Fd) + rot(-phi_c, Fn)) < 1e-9 * F
+        gaps.append(float(np.linalg.norm(rot(-phi_c, Pn) - (np.array([dd.mount, 0.0]) + rot(theta, Pd)))))
+        tes.append(phi_c - phi)
+        md = Pd[0] * Fd[1] - Pd[1] * Fd[0]
+        mn = Pn[0] * Fn[1] - Pn[1] * Fn[0]
+        assert md < 0 and mn < 0
+        if row[23] == "":
+            flanks += 1
+            assert md == pytest.approx(-F * rb[0], rel=5e-3) and mn == pytest.approx(-F * rb[1], rel=5e-3)
+    assert flanks > 0
+    # the two outlines' own contact points: 8.5 um apart at most here (the dense outlines against the pair's and the
+    # gap each contact is found at); the driven wheel turned by -te instead (te = -1.7e-3 rad) puts them 0.17 mm apart
+    assert max(gaps) < 0.02 and all(-2e-3 < t < -1.5e-3 for t in tes)
