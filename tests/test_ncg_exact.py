@@ -1730,3 +1730,30 @@ def test_load_per_tooth_puts_each_wheels_force_on_its_line_of_action_against_its
     # the two outlines' own contact points: 8.5 um apart at most here (the dense outlines against the pair's and the
     # gap each contact is found at); the driven wheel turned by -te instead (te = -1.7e-3 rad) puts them 0.17 mm apart
     assert max(gaps) < 0.02 and all(-2e-3 < t < -1.5e-3 for t in tes)
+
+
+def test_load_per_tooth_reports_the_forces_own_imbalance_against_the_driver_torque():
+    """The equilibrium the load per tooth reports is |sum F l1 - T1| / T1 over the phases: with the load sharing
+    made 1 % strong (every pair's force x 1.01), it is 0.01 to rounding at T1 = 50 N·m (not 0.01 T1^2)."""
+    from propulsor.checks.motion.contact_events import DRIVE, resolve_contact
+    from propulsor.gears import tooth_load as tlm
+    from propulsor.parts.noncircular_pair.as_built import pair_outlines
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import analyse
+
+    p, dd = _circular_pair()
+    d = dd.d
+    pitch = 2 * math.pi / 40
+    cl = resolve_contact(pair_outlines(d, dd.mount), d.run_law.theta, 0.0, pitch, DRIVE,
+                         step_driver_rad=math.radians(0.5))
+    real = tlm.share_load
+
+    def strong(*a, **k):
+        F, rest = real(*a, **k)
+        return np.asarray(F) * 1.01, rest
+
+    tlm.share_load = strong
+    try:
+        tl = analyse(d, dd.mount, p, cl.phi, cl.te, 0.2 * pitch, 0.3 * pitch, step_deg=1.0)
+    finally:
+        tlm.share_load = real
+    assert tl.lost == 0 and tl.imbalance == pytest.approx(0.01, rel=1e-9)
