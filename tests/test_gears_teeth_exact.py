@@ -1525,7 +1525,8 @@ def test_param_at_radius_finds_the_flank_point_at_a_radius_and_refuses_one_outsi
     u = fla.param_at_radius(r)
     assert min(fla.u0, fla.u1) < u < max(fla.u0, fla.u1)
     assert abs(float(np.hypot(*fla.at(u))) - r) < 1e-12
-    for far in (float(np.max(r_ends)) + 0.5, float(np.min(r_ends)) - 0.5):
+    # 0.1 mm beyond either end (the product of the two ends' differences under 1 mm^2)
+    for far in (float(np.max(r_ends)) + 0.1, float(np.min(r_ends)) - 0.1):
         with pytest.raises(ValueError, match="^radius not bracketed$"):
             fla.param_at_radius(far)
     cut = fla.with_range(u, fla.u1).rotated(0.25)

@@ -102,6 +102,7 @@ def test_envelope_one_point_equals_array():
                         X1, s1 = envelope_points(piece, np.array([u]), tool.cutter, cen)
                         X2, s2 = envelope_points(piece, np.array([u, u]), tool.cutter, cen)
                         assert X1.shape == (1, 2) and s1.shape == (1,)
+                        assert X2.shape == (2, 2) and s2.shape == (2,)
                         assert _same(X1, X2[:1]) and _same(s1, s2[:1]), (role, tool.kind, u)
                         hits += 1
     # the second spec's two shaper sides are re-phased (e = (x + x0) m = -0.8 mm): their tip rounds refused
