@@ -406,7 +406,7 @@ def round_envelope(fillet_piece, a_tip: float, a_flank: float, rho: float, cutte
     T = T / np.linalg.norm(T, axis=1)[:, None]
     N = np.column_stack([-T[:, 1], T[:, 0]])
     s_f = float(cutter.contact(P[:1], N[:1])[0])
-    centre = tuple(float(v) for v in (P[0] - rho * _unit_radial(fillet_piece, a)[0]))
+    centre = tuple(float(v) for v in (P[0] - rho * _unit_radial(P, fillet_piece, a)[0]))
     # which side of the centre trajectory: the one that reproduces the junction point
     best = None
     for side in (1.0, -1.0):
@@ -446,7 +446,7 @@ def round_envelope(fillet_piece, a_tip: float, a_flank: float, rho: float, cutte
                      "the shaper is too large for the gear's curvature there")
 
 
-def _unit_radial(piece, a):
+def _unit_radial(P, piece, a):
     """Outward unit radial of a (placed) circular piece at parameters a (from its tangent)."""
     T = piece.tangent(a)
     T = T / np.linalg.norm(T, axis=1)[:, None]
