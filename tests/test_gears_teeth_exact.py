@@ -1437,7 +1437,8 @@ def test_round_envelope_of_a_rephased_shaper_is_the_envelope_of_its_tip_circle(m
     T = fil.tangent(np.array([a_fl]))
     T = T / np.linalg.norm(T)
     s_f = float(cut.contact(P_j[None, :], np.column_stack([-T[:, 1], T[:, 0]]))[0])
-    assert env.u1 == s_f and env.u0 != s_f
+    assert env.u1 == s_f and env.u0 != s_f and env.kind == "fillet"
+    assert np.array_equal(env.sample(7), env(np.linspace(env.u0, env.u1, 7)))
     s = np.linspace(env.u0, env.u1, 9)
     X = env(s)
     C = place(centre, s)
@@ -1531,6 +1532,7 @@ def test_param_at_radius_finds_the_flank_point_at_a_radius_and_refuses_one_outsi
             fla.param_at_radius(far)
     cut = fla.with_range(u, fla.u1).rotated(0.25)
     assert (cut.kind, cut.rotation, cut.u0, cut.u1) == ("flank", 0.25, u, fla.u1)
+    assert fla.rotated(0.25).with_range(u, fla.u1).rotation == 0.25
     turned = fla.rotated(0.25).rotated(-0.5)
     assert turned.rotation == -0.25 and turned.kind == "flank"
     c, s = math.cos(-0.25), math.sin(-0.25)
