@@ -114,7 +114,9 @@ def layout(p: PolysectorParams, geo, positions) -> object:
         raise InputError("conditional_teeth", list(p.conditional_teeth),
                          f"offset range {e_hi - e_lo:.4g} mm too large for the hub: the slot would reach the stem end "
                          f"(needs R_hub − shaft/2 = {R_hub - bore_r:.3f} mm >= {e_hi - e_lo + 2 * rb + 4 * web:.3f} mm)")
-    if y_slot1 + rb > r_f - web:
+    # the slot's outer end lies a web below the roots by construction (R_hub − e_lo = r_f): refused only past
+    # rounding (a web of 3.1 mm at a least offset of 18 mm put it 7e-15 mm too far out and refused the design)
+    if y_slot1 + rb > r_f - web + 1e-9:
         raise InputError("bolt_d_mm", p.bolt_d_mm, f"the slot reaches the tooth roots (r_f = {r_f:.3f} mm)")
     # pin beside the slot; its hub holes at y_pin + e_k must stay on the disc
     rp = p.pin_d_mm / 2.0

@@ -1,0 +1,358 @@
+"""The composite (polysector) gear's design and proofs, number by number (parts/polysector/design.py, contact_law.py,
+mesh_proof.py, proofs.py): the synthesis of the part file (seed 003 eq. 1-4) against the part file's numbers and
+the closed forms of the positions, every refusal in full and both sides of each limit of the layout (the hub, the
+slot, the pin holes, the stem), the layout's dimensions worked out in the test, the outlines the design hands on;
+the contact law's poles on hand-made lines, its result's weights, shares and snaps on given samples, its
+refinement rule on both sides of each limit; the proof steps on a stand-in of the output writer.
+
+Fast and in this process, for mutation testing (mutation/targets.toml, target ``polysector_design``): each design
+is made in its test (0.3 s), no CAD solid is built and no whole part; the figures are not tested (not mutated).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import importlib
+import math
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+from propulsor.errors import InputError
+from propulsor.gears.polysector import EPS_S_MIN, PolysectorGeometry
+from propulsor.params import load_params, read_part_file
+from propulsor.parts.polysector import PolysectorParams
+
+pd = importlib.import_module("propulsor.parts.polysector.design")
+ROOT = Path(__file__).resolve().parents[1]
+_, DATA = read_part_file(ROOT / "parts" / "polysector.toml")
+
+
+def _p(**changes):
+    """The part file's parameters (parts/polysector.toml) with ``changes``."""
+    return load_params(PolysectorParams, {**DATA, **changes})
+
+
+def _ns(p, **changes):
+    """The fields of ``p`` as a plain namespace with ``changes`` (values the parameters' own checks refuse)."""
+    return SimpleNamespace(**{**{f.name: getattr(p, f.name) for f in dataclasses.fields(p)}, **changes})
+
+
+def _refusal(fn, *args):
+    with pytest.raises(InputError) as e:
+        fn(*args)
+    return str(e.value)
+
+
+def _poly(profile, tol=1e-3):
+    return [np.asarray(loop.polyline(tol)) for loop in profile.loops]
+
+
+def _same_profile(a, b):
+    pa, pb = _poly(a), _poly(b)
+    assert len(pa) == len(pb)
+    for x, y in zip(pa, pb):
+        assert x.shape == y.shape and np.allclose(x, y, atol=1e-12, rtol=0)
+
+
+# --- design.py: synthesis (eq. 1-4) ----------------------------------------------------------------------------------
+
+def test_synthesis_of_the_part_file_positions_by_their_closed_forms():
+    """m = 3, z = 36, z2 = 40, z_усл = 36, 42, 48: e = m (z_усл − z)/2 = 0, 9, 18 mm, a = r + e + r2 = 54 + e + 60,
+    i_n = r2/(r + e) = 60/(54 + e); ε_s of eq. 4 (per flow, both flows) and u_exit the geometry's own; the largest
+    offset 28.26 mm (the part file's comment), where the driving corner stops reaching the gear (ε_s 1.0896)."""
+    p = _p()
+    geo, positions, e_max = pd.synthesis(p)
+    assert (geo.m, geo.z, geo.z_c, geo.i_s, geo.z2, geo.flows, geo.thinning) == (3.0, 36, 10, 3, 40, 2, 0.1)
+    assert geo.alpha == math.radians(20.0)
+    assert e_max == pytest.approx(28.264027546, abs=1e-7)
+    # past e_max the driving corner no longer reaches the gear's tip circle (ε_s is 1.0896 there, above 1.05)
+    assert geo.epsilon_s(e_max - 1e-6)[1] == pytest.approx(1.08964, abs=1e-5)
+    with pytest.raises(InputError, match="driving corner does not reach"):
+        geo.epsilon_s(e_max + 1e-6)
+    assert [q.k for q in positions] == [1, 2, 3]
+    for q, zc, e in zip(positions, (36, 42, 48), (0.0, 9.0, 18.0)):
+        assert q.z_cond == zc and type(q.z_cond) is int
+        assert q.offset == e
+        assert q.a == 54.0 + e + 60.0
+        assert q.ratio_nominal == pytest.approx(60.0 / (54.0 + e), rel=1e-15)
+        ef, eb = geo.epsilon_s(e)
+        assert (q.eps_s_flow, q.eps_s) == (ef, eb) and eb == pytest.approx(2 * ef, rel=1e-15)
+        assert q.u_exit == geo.exit_angle(e)
+    assert [round(q.eps_s, 4) for q in positions] == [2.1387, 1.7678, 1.4565]
+    # a position at 54 (e = 27 mm) is within e_max: accepted (the part file's note: it fails later, tip on tip)
+    assert pd.synthesis(_p(conditional_teeth=[54]))[1][0].offset == 27.0
+
+
+def test_synthesis_refusals_in_full_and_both_sides():
+    p = _p()
+    s = pd.synthesis
+    assert _refusal(s, _p(conditional_teeth=[])) == "conditional_teeth = []: needs at least one position"
+    assert _refusal(s, _ns(p, conditional_teeth=[36, 42.0])) == "conditional_teeth[2] = 42.0: must be a whole number"
+    assert _refusal(s, _ns(p, conditional_teeth=[36, True])) == "conditional_teeth[2] = True: must be a whole number"
+    assert _refusal(s, _p(conditional_teeth=[36, 30])) == (
+        "conditional_teeth[2] = 30: must be >= the blank's z = 36 (offset >= 0)")
+    assert _refusal(s, _p(conditional_teeth=[40])) == (
+        "conditional_teeth[1] = 40: must be a multiple of flows·i_s = 6 (all sectors in tooth phase with the gear); "
+        "nearest 36 or 42")
+    assert _refusal(s, _p(conditional_teeth=[36, 42, 50])) == (
+        "conditional_teeth[3] = 50: must be a multiple of flows·i_s = 6 (all sectors in tooth phase with the gear); "
+        "nearest 48 or 54")
+    # one flow: multiples of 3; the largest offset is 0.8597 mm (ε_s of one flow only)
+    assert _refusal(s, _p(flows=1, conditional_teeth=[36, 39])) == (
+        "conditional_teeth[2] = 39: offset e = 4.5 mm is past the largest offset of eq. 1/3 (ε_s >= 1.05): "
+        "e_max = 0.8597 mm (z_усл <= 36.57)")
+    assert _refusal(s, _p(conditional_teeth=[60])) == (
+        "conditional_teeth[1] = 60: offset e = 36 mm is past the largest offset of eq. 1/3 (ε_s >= 1.05): "
+        "e_max = 28.2640 mm (z_усл <= 54.84)")
+    # the library's refusals under the part file's names
+    assert _refusal(s, _p(sector_teeth=12)) == (
+        "sector_teeth = 12: too large for the gaps: eq. 2 z_c = z/i_s − (1…3) ≤ 11")
+    assert _refusal(s, _p(blank_teeth=35)) == (
+        "blank_teeth = 35: must be a multiple of i_s·flows = 6 (sectors equally spaced in tooth phase)")
+    assert _refusal(s, _p(sector_teeth=2)) == (
+        "sector_teeth = 2: eq. 4: ε_s = 0.8054 < 1.05 already at e = 0; more teeth per sector or more sectors are "
+        "needed")
+    assert _refusal(s, _ns(p, flows=3)) == "flows = 3: must be 1 or 2"
+
+
+def test_synthesis_refuses_an_epsilon_below_the_minimum_at_a_position(monkeypatch):
+    """The last refusal (ε_s of a position below 1.05) cannot happen below e_max; with the geometry's ε_s given
+    it is the position's, 1.05 itself accepted."""
+    monkeypatch.setattr(PolysectorGeometry, "max_offset", lambda self, eps_min=EPS_S_MIN: 30.0)
+    eps = {0.0: (1.0, 2.0), 9.0: (0.525, EPS_S_MIN), 18.0: (0.52, 1.04)}
+    monkeypatch.setattr(PolysectorGeometry, "epsilon_s", lambda self, e: eps[e])
+    assert _refusal(pd.synthesis, _p()) == "conditional_teeth[3] = 48: ε_s = 1.0400 < 1.05 (eq. 4)"
+    geo, positions, e_max = pd.synthesis(_p(conditional_teeth=[36, 42]))
+    assert e_max == 30.0 and [(q.eps_s_flow, q.eps_s) for q in positions] == [(1.0, 2.0), (0.525, EPS_S_MIN)]
+
+
+# --- design.py: layout ----------------------------------------------------------------------------------------------
+
+def _layout(p):
+    geo, positions, _ = pd.synthesis(p)
+    return pd.layout(p, geo, positions)
+
+
+def test_layout_of_the_part_file_worked_out():
+    """r_f = r − 1.25 m = 50.25, r_rim = r_f − 2.5 m = 42.75; R_hub = r + e_lo − 1.25 m; the stem end y_end =
+    shaft/2 + 2 web − e_lo; the bolt at R_hub − web − d_bolt/2, its slot from there less e_hi to less e_lo; the pin
+    beside the slot at d_bolt/2 + web + d_pin/2, above the stem end by web + d_pin/2."""
+    lay = _layout(_p())
+    assert (lay.r_rim, lay.w_stem, lay.y_end, lay.d_bolt, lay.y_slot0, lay.y_slot1, lay.d_pin, lay.x_pin,
+            lay.y_pin, lay.R_hub, lay.d_bore, lay.rho_bolt) == (
+        42.75, 22.0, 13.0, 5.5, 27.5, 45.5, 4.0, 6.75, 17.0, 50.25, 18.0, 45.5)
+    # least offset 9, largest 18, other holes and webs, rim 3 modules, positions given out of order
+    lay = _layout(_p(conditional_teeth=[48, 42], web_mm=2.5, bolt_d_mm=6.0, pin_d_mm=3.0, rim_modules=3.0,
+                     shaft_d_mm=16.0, stem_width_mm=30.0))
+    R_hub = 54.0 + 9.0 - 3.75
+    rho = R_hub - 2.5 - 3.0
+    assert lay.R_hub == R_hub and lay.rho_bolt == rho
+    assert lay.r_rim == 50.25 - 9.0
+    assert lay.y_end == 8.0 + 5.0 - 9.0
+    assert (lay.y_slot0, lay.y_slot1) == (rho - 18.0, rho - 9.0)
+    assert lay.x_pin == 3.0 + 2.5 + 1.5 and lay.y_pin == lay.y_end + 2.5 + 1.5
+    assert (lay.w_stem, lay.d_bolt, lay.d_pin, lay.d_bore) == (30.0, 6.0, 3.0, 16.0)
+
+
+def test_layout_refuses_a_slot_reaching_the_stem_end_on_its_limit():
+    """The slot from rho_bolt − e_hi must clear the stem end + web: R_hub − shaft/2 >= e_hi − e_lo + d_bolt +
+    4 web; the part file's R_hub = 50.25 needs 31.5 mm: a shaft of 37.5 mm is the limit (exactly, in binary)."""
+    assert _layout(_p(shaft_d_mm=37.5)).d_bore == 37.5
+    assert _refusal(_layout, _p(shaft_d_mm=37.6)) == (
+        "conditional_teeth = [36, 42, 48]: offset range 18 mm too large for the hub: the slot would reach the stem "
+        "end (needs R_hub − shaft/2 = 31.450 mm >= 31.500 mm)")
+    # least offset 9: R_hub = 59.25 needs 9 + 5.5 + 8 = 22.5 mm: a shaft of 73.5 is the limit
+    assert _layout(_p(conditional_teeth=[48, 42], shaft_d_mm=73.5)).y_slot0 == 54.5 - 18.0
+    assert _refusal(_layout, _p(conditional_teeth=[48, 42], shaft_d_mm=73.6)) == (
+        "conditional_teeth = [48, 42]: offset range 9 mm too large for the hub: the slot would reach the stem "
+        "end (needs R_hub − shaft/2 = 22.450 mm >= 22.500 mm)")
+
+
+def test_layout_refuses_a_stem_narrower_than_slot_pin_and_webs():
+    """2 (d_bolt/2 + web + d_pin/2 + d_pin/2 + web) = 21.5 mm for the part file; 23.5 with a 7.5 mm bolt."""
+    assert _layout(_p(stem_width_mm=21.5)).w_stem == 21.5
+    assert _refusal(_layout, _p(stem_width_mm=21.4)) == (
+        "stem_width_mm = 21.4: must be >= 21.500 mm (slot, pin and webs side by side)")
+    assert _layout(_p(stem_width_mm=23.5, bolt_d_mm=7.5)).x_pin == 7.75
+    assert _refusal(_layout, _p(stem_width_mm=23.4, bolt_d_mm=7.5)) == (
+        "stem_width_mm = 23.4: must be >= 23.500 mm (slot, pin and webs side by side)")
+
+
+def test_layout_refuses_pin_holes_closer_than_a_pin_and_a_web():
+    """Offsets 0, 9, 18 (given out of order): neighbours 9 mm apart need d_pin + web <= 9."""
+    kw = dict(conditional_teeth=[48, 36, 42], stem_width_mm=30.0)
+    assert _layout(_p(pin_d_mm=7.0, **kw)).d_pin == 7.0
+    assert _refusal(_layout, _p(pin_d_mm=7.1, **kw)) == (
+        "conditional_teeth = [48, 36, 42]: offsets 0 and 9 mm: pin holes closer than d_pin + web = 9.1 mm")
+    # 12 mm apart: 36 and 44 would be out of phase; 36 and 48 with a web of 2.5: d_pin <= 15.5 by spacing alone
+    kw = dict(conditional_teeth=[42, 48], stem_width_mm=30.0, web_mm=2.5)
+    assert _refusal(_layout, _p(pin_d_mm=6.6, **kw)) == (
+        "conditional_teeth = [42, 48]: offsets 9 and 18 mm: pin holes closer than d_pin + web = 9.1 mm")
+    assert _layout(_p(pin_d_mm=6.5, **kw)).d_pin == 6.5
+
+
+def test_layout_refuses_a_pin_hole_off_the_hub_disc_on_its_limit():
+    """Offsets 0 and 18 mm: the pin hole of 18 mm at (x_pin, y_pin + 18) plus d_pin/2 + web must stay inside
+    R_hub = 50.25: hypot(4.75 + r_p, 33 + r_p) + r_p + 2 = 50.25 solved for r_p in the test."""
+    from scipy.optimize import brentq
+
+    rp = brentq(lambda r: math.hypot(4.75 + r, 33.0 + r) + r + 2.0 - 50.25, 1.0, 10.0, xtol=1e-12)
+    assert rp == pytest.approx(6.8, abs=0.1)
+    kw = dict(conditional_teeth=[48, 36], stem_width_mm=60.0)
+    assert _layout(_p(pin_d_mm=2 * rp - 0.01, **kw)).d_pin == 2 * rp - 0.01
+    d = round(2 * rp + 0.01, 3)
+    assert _refusal(_layout, _p(pin_d_mm=d, **kw)) == (
+        "conditional_teeth = [48, 36]: the pin hole of offset 18 mm falls off the hub disc (R_hub = 50.250 mm)")
+
+
+def test_layout_guards_that_hold_by_construction(monkeypatch):
+    """The slot's end, the pin hole of the least offset and the stems meet the roots and the shaft only where the
+    layout's own sums would not hold: y_slot1 + d_bolt/2 = r_f − web, hypot(x_pin, y_pin + e_lo) − d_pin/2 − web
+    >= shaft/2 + 2 web, y_end + e_lo = shaft/2 + 2 web, for any parameters (here three sets)."""
+    for kw in ({}, dict(conditional_teeth=[48, 42], web_mm=2.5, shaft_d_mm=16.0, stem_width_mm=30.0),
+               dict(module_mm=2.0, blank_teeth=48, sector_teeth=14, gear_teeth=30, conditional_teeth=[54, 60])):
+        p = _p(**kw)
+        geo, positions, _ = pd.synthesis(p)
+        lay = pd.layout(p, geo, positions)
+        e_lo = min(q.offset for q in positions)
+        r_f = geo.r - 1.25 * p.module_mm
+        assert lay.y_slot1 + p.bolt_d_mm / 2 == pytest.approx(r_f - p.web_mm, abs=1e-12)
+        assert lay.y_end + e_lo == pytest.approx(p.shaft_d_mm / 2 + 2 * p.web_mm, abs=1e-12)
+        assert math.hypot(lay.x_pin, lay.y_pin + e_lo) - p.pin_d_mm / 2 - p.web_mm >= p.shaft_d_mm / 2 + 2 * p.web_mm
+
+
+def test_a_slot_ending_a_web_below_the_roots_is_not_refused_for_rounding():
+    """A web of 3.1 mm at z_усл = 48 (e = 18 mm): the slot's outer end y_slot1 + d_bolt/2 is r_f − web = 47.15 mm
+    but 7e-15 mm above it in floating point; it was refused ('the slot reaches the tooth roots')."""
+    for bolt in (5.5, 6.6, 4.5):
+        p = _p(web_mm=3.1, bolt_d_mm=bolt, conditional_teeth=[48], stem_width_mm=40.0)
+        lay = _layout(p)
+        assert lay.y_slot1 + bolt / 2 == pytest.approx(50.25 - 3.1, abs=1e-12)
+        assert pd.design(p).layout == lay
+
+
+# --- design.py: the design's outlines ---------------------------------------------------------------------------------
+
+def test_design_hands_on_the_outlines_of_the_library():
+    from propulsor.geometry.polysector_outline import blank_outline, hub_profile, mating_gear, place, sector_profile
+
+    p = _p()
+    dd = pd.design(p)
+    geo, positions, e_max = pd.synthesis(p)
+    assert dd.p is p and dd.positions == positions and dd.e_max == e_max
+    assert dd.geo == geo
+    lay = pd.layout(p, geo, positions)
+    assert dd.layout == lay
+    blank = blank_outline(36, 3.0, 0.1)
+    _same_profile(dd.blank.profile, blank.profile)
+    _same_profile(dd.sector, sector_profile(blank, 10, lay))
+    assert len(dd.hubs) == 2
+    third = 2 * math.pi / 3
+    for f, base in ((0, 0.0), (1, math.pi / 3)):
+        _same_profile(dd.hubs[f], hub_profile(lay, [base, base + third, base + 2 * third], [0.0, 9.0, 18.0], True))
+    # z_c = 10, even: phase π/2 (a space of the sector on the mid-line, a gear tooth facing −x)
+    assert dd.gear_phase == math.pi / 2
+    gear, gear_prof = mating_gear(40, 3.0, 0.1, 20.0, math.pi / 2, True)
+    _same_profile(dd.gear.profile, gear.profile)
+    _same_profile(dd.gear_profile, gear_prof)
+    assert dd.sector_angles(1) == [0.0, third, 2 * third]
+    assert dd.sector_angles(2) == pytest.approx([math.pi / 3, math.pi, 5 * math.pi / 3], abs=1e-15)
+    placed = dd.placed_sectors(positions[2], 2)
+    assert len(placed) == 3
+    for s, ang in zip(placed, dd.sector_angles(2)):
+        _same_profile(s, place(dd.sector, ang, 18.0))
+
+
+def test_design_of_an_odd_sector_one_flow_no_keyways():
+    from propulsor.geometry.polysector_outline import hub_profile, mating_gear
+
+    p = _p(sector_teeth=11, flows=1, conditional_teeth=[36], keyways=False, gear_bore_mm=25.0)
+    dd = pd.design(p)
+    # z_c = 11, odd: a space of the gear faces −x: phase π/2 + π/z2
+    assert dd.gear_phase == math.pi / 2 + math.pi / 40
+    assert len(dd.hubs) == 1
+    _same_profile(dd.hubs[0], hub_profile(dd.layout, [0.0, 2 * math.pi / 3, 4 * math.pi / 3], [0.0], False))
+    _same_profile(dd.gear_profile, mating_gear(40, 3.0, 0.1, 25.0, math.pi / 2 + math.pi / 40, False)[1])
+    assert len(dd.gear_profile.loops) == len(mating_gear(40, 3.0, 0.1, 25.0, 0.0, False)[1].loops)
+
+
+def test_design_names_the_gear_bore_and_feasible_refuses_what_design_refuses():
+    assert _refusal(pd.design, _p(gear_bore_mm=200.0)) == (
+        "gear_bore_mm = 200.0: must leave a rim of one module under the root: < 106.500 mm")
+    assert pd.feasible(_p()) is None
+    assert _refusal(pd.feasible, _p(stem_width_mm=21.4)) == (
+        "stem_width_mm = 21.4: must be >= 21.500 mm (slot, pin and webs side by side)")
+
+
+def test_one_flow_collisions_measure_each_neighbour_at_every_position(monkeypatch):
+    """The gap of sector i to sector i + 1 (mod i_s) of flow 1, on the outer outlines at 0.01 mm, at every
+    position; refused below web/2 ('nearly touch'), at or below 0 ('collide'), web/2 itself accepted."""
+    dd = pd.design(_p())
+    dd3 = pd.design(_p(web_mm=3.0, stem_width_mm=30.0))
+    calls = []
+    gaps = iter([])
+
+    def gap(A, B):
+        calls.append((A, B))
+        return next(gaps)
+
+    monkeypatch.setattr(pd, "_poly_gap", gap)
+    gaps = iter([5.0] * 9)
+    pd._one_flow_collisions(dd)
+    assert len(calls) == 9
+    for n, pos in enumerate(dd.positions):
+        secs = [s.outer.polyline(0.01) for s in dd.placed_sectors(pos, 1)]
+        for i in range(3):
+            A, B = calls[3 * n + i]
+            assert np.array_equal(A, secs[i]) and np.array_equal(B, secs[(i + 1) % 3])
+    gaps = iter([5.0, 5.0, 5.0, 1.0, 1.0, 1.0, 0.99])
+    msg = _refusal(pd._one_flow_collisions, dd)
+    assert msg == ("sector_teeth = 10: sectors of one flow nearly touch at offset 18 mm (gap 0.990 mm < 1 mm)")
+    gaps = iter([0.0])
+    assert _refusal(pd._one_flow_collisions, dd) == (
+        "sector_teeth = 10: sectors of one flow collide at offset 0 mm (gap 0.000 mm < 1 mm)")
+    gaps = iter([-0.5])
+    assert "collide" in _refusal(pd._one_flow_collisions, dd)
+    gaps = iter([1.5] * 8 + [1.49])
+    assert _refusal(pd._one_flow_collisions, dd3) == (
+        "sector_teeth = 10: sectors of one flow nearly touch at offset 18 mm (gap 1.490 mm < 1.5 mm)")
+
+
+def _stem_gap(hw, y):
+    """Chord between neighbouring stems' end corners (±hw, y) of one flow of three: 2 hypot(hw, y) sin(π/3 −
+    atan(hw/y))."""
+    return 2.0 * math.hypot(hw, y) * math.sin(math.pi / 3 - math.atan(hw / y))
+
+
+def test_one_flow_collisions_of_the_part_file_and_the_vertex_gap():
+    """The part file's sectors of one flow are 11.517 mm apart at e = 0: their stems' end corners (±11, 13) turned
+    by 120°; ``_poly_gap`` is the least distance between the vertices."""
+    dd = pd.design(_p())
+    for pos in dd.positions:
+        secs = [s.outer.polyline(0.01) for s in dd.placed_sectors(pos, 1)]
+        A, B = np.asarray(secs[0]), np.asarray(secs[1])
+        if pos.offset == 0.0:
+            brute = float(np.min(np.linalg.norm(A[:, None, :] - B[None, :, :], axis=2)))
+            assert pd._poly_gap(A, B) == pytest.approx(brute, abs=1e-12)
+        assert pd._poly_gap(A, B) == pytest.approx(_stem_gap(11.0, 13.0 + pos.offset), abs=1e-9)
+    assert _stem_gap(11.0, 13.0) == pytest.approx(11.5167, abs=1e-4)
+    sq = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+    assert pd._poly_gap(sq, sq + [4.0, 0.5]) == pytest.approx(math.hypot(3.0, 0.5), abs=1e-15)
+    assert type(pd._poly_gap(sq, sq + 3.0)) is float
+    assert pd._one_flow_collisions(dd) is None
+
+
+def test_stems_of_one_flow_nearly_touching_are_refused_on_the_web_limit():
+    """Wide stems: the corners (±w/2, 13) of neighbouring stems come within web/2 = 1 mm at a width solved in the
+    test; 0.02 mm narrower is accepted, 0.02 mm wider refused with the gap measured."""
+    from scipy.optimize import brentq
+
+    hw = brentq(lambda h: _stem_gap(h, 13.0) - 1.0, 15.0, 22.4, xtol=1e-12)
+    assert pd.design(_p(stem_width_mm=round(2 * hw - 0.02, 3))).layout.w_stem == round(2 * hw - 0.02, 3)
+    w = round(2 * hw + 0.02, 3)
+    assert _refusal(pd.design, _p(stem_width_mm=w)) == (
+        f"sector_teeth = 10: sectors of one flow nearly touch at offset 0 mm (gap {_stem_gap(w / 2, 13.0):.3f} mm "
+        f"< 1 mm)")
