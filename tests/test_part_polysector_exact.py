@@ -356,3 +356,264 @@ def test_stems_of_one_flow_nearly_touching_are_refused_on_the_web_limit():
     assert _refusal(pd.design, _p(stem_width_mm=w)) == (
         f"sector_teeth = 10: sectors of one flow nearly touch at offset 0 mm (gap {_stem_gap(w / 2, 13.0):.3f} mm "
         f"< 1 mm)")
+
+
+# --- contact_law.py ----------------------------------------------------------------------------------------------------
+
+cl = importlib.import_module("propulsor.parts.polysector.contact_law")
+
+
+def _bodies(k, chord=1e-3, margin=0.05, **changes):
+    dd = pd.design(_p(**changes))
+    return dd, dd.positions[k], cl.position_bodies(dd, dd.positions[k], chord, margin)
+
+
+def test_wrap_to_minus_pi_up_to_pi():
+    assert cl._wrap(math.pi) == -math.pi and cl._wrap(-math.pi) == -math.pi
+    assert np.allclose(cl._wrap([1.5 * math.pi, -1.5 * math.pi, 0.25, 2 * math.pi]),
+                       [-0.5 * math.pi, 0.5 * math.pi, 0.25, 0.0], atol=1e-15)
+
+
+def test_position_bodies_of_the_part_file():
+    """One sector period 2π/6; the sectors whose mid-line (wrapped: 0, 2π/3, −2π/3 of flow 1, π/3, −π, −π/3 of
+    flow 2) sweeps within u_exit + margin of the line of centres over the period; the gear cropped about O2."""
+    from propulsor import policy
+    from propulsor.checks.motion import crop_to_sector, outline
+    from propulsor.geometry.polysector_outline import place
+
+    dd, pos, b = _bodies(2)
+    assert (b.a, b.offset, b.i_n) == (132.0, 18.0, 60.0 / 72.0) and b.period == 2 * math.pi / 6
+    assert (b.r_a, b.r_a2, b.chord_tol) == (57.0, 63.0, 1e-3)
+    assert b.r_b == 54.0 * math.cos(math.radians(20.0)) and b.r_b2 == 60.0 * math.cos(math.radians(20.0))
+    assert b.w_max == 2 * math.pi / 40
+    third = 2 * math.pi / 3
+    assert b.angles == [(0.0, 1), (third, 1), (2 * third, 1), (math.pi / 3, 2), (math.pi / 3 + third, 2),
+                        (math.pi / 3 + 2 * third, 2)]
+    assert sorted(b.sectors) == [0, 5]   # u_exit = 0.770: within −1.870 … 0.820
+    for j in b.sectors:
+        ref = outline(place(dd.sector, b.angles[j][0], 18.0), 1e-3, policy.MOTION_MAX_SEGMENT_MM)
+        assert np.array_equal(b.sectors[j].points, ref.points)
+    Z = 2.0 * math.asin((57.0 + 18.0) / 132.0) + 0.2
+    t_hi = b.period / b.i_n + 4 * math.pi / 40
+    full = outline(dd.gear_profile, 1e-3, policy.MOTION_MAX_SEGMENT_MM)
+    ref = outline(crop_to_sector(full.section, math.pi - Z - 0.1, math.pi + Z + t_hi, 60.0 - 4.5, 63.0 + 3.0),
+                  1e-3, policy.MOTION_MAX_SEGMENT_MM)
+    assert np.array_equal(b.gear.points, ref.points)
+    r = np.hypot(b.gear.points[:, 0], b.gear.points[:, 1])
+    assert r.min() >= 55.5 - 5e-3 and r.max() <= 63.0 + 1e-6 and len(b.gear.points) < len(full.points)
+    # the margin on both sides of 0.2770: mid-lines −π/3 + π/3 = 0 ... the sectors at ±π/3 and −2π/3 come in
+    assert sorted(cl.position_bodies(dd, pos, 1e-3, 0.27).sectors) == [0, 5]
+    assert sorted(cl.position_bodies(dd, pos, 1e-3, 0.28).sectors) == [0, 2, 3, 5]
+    # e = 0: u_exit = 1.139 takes four sectors with the default margin
+    dd, pos, b = _bodies(0)
+    assert sorted(b.sectors) == [0, 2, 3, 5] and b.offset == 0.0 and b.a == 114.0
+    assert b.i_n == 40 / 36 and Z != 2.0 * math.asin(min(1.0, 57.0 / 114.0)) + 0.2
+
+
+def test_pole_of_a_line_cutting_the_line_of_centres():
+    """P = T − T_y d/d_y on the x axis; i_t = (a − P_x)/P_x; of two lines the one most parallel to the normal;
+    a line parallel to the axis (|d_y| < 1e-12) has no pole."""
+    # line 0 crosses the axis at x = 55 − 40·0.6/0.8 = 25
+    lines = [(np.array([55.0, 40.0]), np.array([0.6, 0.8])), (np.array([10.0, 10.0]), np.array([1.0, 0.0]))]
+    assert cl._pole(lines, (0.6, 0.8), 100.0) == pytest.approx(75.0 / 25.0, rel=1e-15)
+    assert cl._pole(lines, (-0.6, -0.8), 100.0) == pytest.approx(3.0, rel=1e-15)  # the sense does not matter
+    assert math.isnan(cl._pole(lines, (1.0, 0.0), 100.0))  # the horizontal line is picked: no pole
+    tilt = [(np.array([10.0, 1.0]), np.array([1.0, 2e-12]))]
+    assert cl._pole(tilt, (1.0, 0.0), 100.0) == pytest.approx((100.0 - (10.0 - 5e11)) / (10.0 - 5e11), rel=1e-9)
+    assert math.isnan(cl._pole([(np.array([10.0, 1.0]), np.array([1.0, 0.9e-12]))], (1.0, 0.0), 100.0))
+
+
+def _tangent_pole(P, Q, r, pick, a):
+    """The x-axis crossing of the tangent from P to the circle (Q, r) whose direction is nearer ``pick``: tangent
+    points by the right angle at T, (T − Q)·(P − T) = 0, solved as Q + r (cos, sin)(γ) with γ = β ± acos(r/d)."""
+    v = np.subtract(P, Q)
+    d = float(np.hypot(*v))
+    best = None
+    for g in (math.atan2(v[1], v[0]) + math.acos(r / d), math.atan2(v[1], v[0]) - math.acos(r / d)):
+        T = np.asarray(Q) + r * np.array([math.cos(g), math.sin(g)])
+        assert abs(np.dot(T - Q, P - T)) < 1e-9
+        u = (P - T) / np.hypot(*(P - T))
+        s = abs(u @ np.asarray(pick))
+        if best is None or s > best[0]:
+            best = (s, T, u)
+    _, T, u = best
+    px = T[0] - T[1] * u[0] / u[1]
+    return (a - px) / px
+
+
+def test_pole_ratio_of_a_corner_on_an_involute_of_a_base_circle():
+    a, rb2 = 132.0, 56.38
+    O2 = np.array([a, 0.0])
+    C = np.array([70.0, 8.0])
+    for normal in ((1.0, 0.3), (1.0, -0.3)):
+        assert cl.pole_ratio(C, O2, rb2, normal, a) == pytest.approx(_tangent_pole(C, O2, rb2, normal, a), rel=1e-12)
+    assert cl.pole_ratio(C, O2, rb2, (1.0, 0.3), a) != pytest.approx(cl.pole_ratio(C, O2, rb2, (1.0, -0.3), a))
+    # on the base circle or inside it: no tangent
+    assert math.isnan(cl.pole_ratio(O2 + [-rb2, 0.0], O2, rb2, (1.0, 0.0), a))
+    assert math.isfinite(cl.pole_ratio(O2 + [-rb2 - 1e-6, 5.0], O2, rb2, (0.0, 1.0), a))
+    assert math.isnan(cl.pole_ratio(O2 + [-10.0, 0.0], O2, rb2, (1.0, 0.0), a))
+    # a corner about another centre (a sector's O' off the axis)
+    Os = np.array([17.0, 4.0])
+    assert cl.pole_ratio(C, Os, 50.0, (0.2, 1.0), a) == pytest.approx(_tangent_pole(C, Os, 50.0, (0.2, 1.0), a),
+                                                                      rel=1e-12)
+
+
+def test_flank_ratio_is_the_internal_common_tangents_pole():
+    """Centres on the axis: both internal tangents cut it at O1P = a r_b/(r_b + r_b2): i_t = r_b2/r_b (eq. 7 at
+    e = 0).  Off the axis: through the internal centre of similitude H = (r_b2 O' + r_b O2)/(r_b + r_b2), the
+    tangent from H to the base circle about O' nearer the normal."""
+    rb, rb2, a = 50.74, 56.38, 114.0
+    O2 = np.array([a, 0.0])
+    assert cl.flank_ratio((0.0, 0.0), rb, O2, rb2, (1.0, 0.4), a) == pytest.approx(rb2 / rb, rel=1e-14)
+    assert cl.flank_ratio((0.0, 0.0), rb, O2, rb2, (1.0, -0.4), a) == pytest.approx(rb2 / rb, rel=1e-14)
+    Os = np.array([17.0, 5.0])
+    a = 140.0
+    O2 = np.array([a, 0.0])
+    H = (rb2 * Os + rb * O2) / (rb + rb2)
+    for normal in ((0.3, 1.0), (0.3, -1.0)):
+        assert cl.flank_ratio(Os, rb, O2, rb2, normal, a) == pytest.approx(_tangent_pole(H, Os, rb, normal, a),
+                                                                           rel=1e-10)
+    # base circles that touch or cross have no internal tangent
+    assert math.isnan(cl.flank_ratio((0.0, 0.0), 50.0, (100.0, 0.0), 50.0, (0.0, 1.0), 100.0))
+    assert math.isfinite(cl.flank_ratio((0.0, 0.0), 50.0, (100.0 + 1e-6, 0.0), 50.0, (1.0, 1.0), 100.0))
+    assert math.isnan(cl.flank_ratio((0.0, 0.0), 50.0, (90.0, 0.0), 50.0, (0.0, 1.0), 90.0))
+
+
+def _res(phi, theta, kind, driver=None, i_n=0.8, step_min=0.01, snap=0.001, i_t=None):
+    n = len(phi)
+    i_t = np.full(n, i_n) if i_t is None else np.asarray(i_t, float)
+    return cl.LawResult(np.asarray(phi, float), np.asarray(theta, float),
+                        np.zeros(n, int) if driver is None else np.asarray(driver), np.asarray(kind), i_t,
+                        (i_n - i_t) / i_n, i_n, step_min, snap, 7)
+
+
+def test_law_result_weights_shares_tips_snaps_on_given_samples():
+    phi = [0.0, 0.1, 0.11, 0.12, 0.4]
+    th = [0.0, 0.125, 0.1375, 0.16, 0.51]
+    law = _res(phi, th, [0, 1, 3, 3, 2], i_t=[0.8, 0.8, np.nan, 0.5, 1.0])
+    assert np.allclose(law.te, np.array(th) - np.array(phi) / 0.8, atol=1e-15)
+    assert np.allclose(law.weights(), [0.05, 0.055, 0.01, 0.145, 0.14], atol=1e-15)
+    sh = law.shares()
+    assert list(sh) == ["flank", "sector_tip", "gear_tip", "tip_tip"]
+    assert sh == pytest.approx({"flank": 0.125, "sector_tip": 0.1375, "gear_tip": 0.35, "tip_tip": 0.3875}, abs=1e-12)
+    assert law.tip_tip_angle() == pytest.approx(0.155, abs=1e-15)
+    assert np.allclose(law.jumps(), [0.0, 0.0, 0.0225 - 0.0125, 0.35 - 0.35], atol=1e-15)
+    # fine steps (<= 0.01 (1 + 1e-9)): the second and third; the third jumps 0.01 beyond its advance
+    assert law.snap_max() == pytest.approx(0.01, abs=1e-15)
+    assert law.ratio_error_max() == pytest.approx(0.375, abs=1e-15)  # |0.8 − 0.5|/0.8, NaN left out
+    assert law.at(np.array([0.0, 0.104, 0.106, 0.39, 5.0])).tolist() == [0, 1, 2, 4, 4]
+    assert law.at(np.array([0.0])).dtype.kind == "i"
+    # a step just over the finest is not counted; no fine step at all: no snap
+    assert _res([0.0, 0.0100001, 0.02], [0.0, 0.5, 0.6], [0, 0, 0]).snap_max() == pytest.approx(0.1 - 0.0099999 / 0.8,
+                                                                                          abs=1e-12)
+    assert _res([0.0, 0.010000000009], [0.0, 0.5], [0, 0]).snap_max() == pytest.approx(0.5 - 0.0125, abs=1e-9)
+    assert _res([0.0, 0.1], [0.0, 0.5], [0, 0]).snap_max() == 0.0
+    assert math.isnan(_res([0.0, 0.005], [0.0, np.nan], [0, 3]).snap_max())
+    assert type(_res([0.0, 0.005, 0.01], [0.0, 0.1, 0.2], [0, 0, 0]).snap_max()) is float
+
+
+def _s(phi, theta, driver=0, kind=0, i_t=0.8, sectors=None):
+    return cl._Sample(phi, theta, driver, kind, i_t, (driver,) if sectors is None else sectors)
+
+
+def test_refine_on_both_sides_of_each_limit():
+    from propulsor import policy
+
+    r, i_n, snap = cl._refine, 0.8, 1e-3
+    a = _s(0.0, 0.0)
+    assert not r(a, _s(0.08, 0.1), i_n, snap)
+    assert r(a, _s(0.08, math.nan), i_n, snap) and r(_s(0.0, math.nan), _s(0.08, 0.1), i_n, snap)
+    # a hand-over: neither driver among the other's sectors; two sectors sharing the load are no hand-over
+    assert r(a, _s(0.08, 0.1, driver=1), i_n, snap)
+    assert not r(a, _s(0.08, 0.1, driver=1, sectors=(0, 1)), i_n, snap)
+    assert not r(_s(0.0, 0.0, sectors=(0, 1)), _s(0.08, 0.1, driver=1), i_n, snap)
+    assert r(a, _s(0.08, 0.1, kind=1), i_n, snap) and r(_s(0.0, 0.0, kind=3), _s(0.08, 0.1, kind=3), i_n, snap)
+    assert not r(_s(0.0, 0.0, kind=2), _s(0.08, 0.1, kind=2), i_n, snap)
+    # the gear's advance beyond φ/i_n: the snap tolerance on both sides
+    assert not r(_s(0.0, 0.0, i_t=0.08 / 0.10099), _s(0.08, 0.10099, i_t=0.08 / 0.10099), i_n, snap)
+    assert r(a, _s(0.08, 0.1 + 1.01e-3), i_n, snap)
+    assert r(a, _s(0.08, 0.1 - 1.01e-3), i_n, snap)
+    # the gear standing or turning back; an end without a ratio
+    assert r(_s(0.0, 0.0), _s(1e-4, 0.0), i_n, 1.0) and r(_s(0.0, 0.0), _s(1e-4, -1e-5), i_n, 1.0)
+    assert r(a, _s(0.08, 0.1, i_t=math.nan), i_n, snap) and r(_s(0.0, 0.0, i_t=math.nan), _s(0.08, 0.1), i_n, snap)
+    # the step's own ratio against the mean of its ends: split above 1 % of i_n
+    lim = policy.POLYSECTOR_LAW_RATIO_SPLIT * i_n
+    assert lim == 0.008
+    sec = 0.08 / 0.1
+    assert not r(_s(0.0, 0.0, i_t=sec + 0.0079), _s(0.08, 0.1, i_t=sec + 0.0079), i_n, 1.0)
+    assert r(_s(0.0, 0.0, i_t=sec + 0.0081), _s(0.08, 0.1, i_t=sec + 0.0081), i_n, 1.0)
+    assert r(_s(0.0, 0.0, i_t=sec - 0.0081), _s(0.08, 0.1, i_t=sec - 0.0081), i_n, 1.0)
+    assert not r(_s(0.0, 0.0, i_t=sec - 0.0079), _s(0.08, 0.1, i_t=sec - 0.0079), i_n, 1.0)
+    assert not r(_s(0.0, 0.0, i_t=sec - 0.0158), _s(0.08, 0.1, i_t=sec + 0.0158), i_n, 1.0)  # the mean is sec
+
+
+class _FakeLaw:
+    """ContactLaw.pose replaced by a given law: theta(φ), driver(φ), kind(φ)."""
+
+    def __init__(self, monkeypatch, theta, driver=lambda x: 0, kind=lambda x: 0, i_t=lambda x: 0.8):
+        self.calls = []
+
+        def pose(law, phi, th_prev, h):
+            law.evaluations += 1
+            self.calls.append((phi, th_prev, h))
+            d = driver(phi)
+            return cl._Sample(phi, theta(phi), d, kind(phi), i_t(phi), (d,))
+
+        monkeypatch.setattr(cl.ContactLaw, "pose", pose)
+
+
+def _fake_bodies(i_n=0.8):
+    return SimpleNamespace(i_n=i_n, a=100.0, chord_tol=1e-3)
+
+
+def test_track_halves_its_step_to_the_finest_at_a_hand_over_and_doubles_it_after(monkeypatch):
+    """grid 0, 0.25 … 1, a hand-over of driver at φ = 0.3, finest step 0.01: worked out step by step from the
+    rules (halve while refined and above the finest, accept, double up to the grid's step, land on every grid
+    angle)."""
+    fake = _FakeLaw(monkeypatch, theta=lambda x: x / 0.8, driver=lambda x: 0 if x < 0.3 else 1)
+    law = cl.track(_fake_bodies(), np.linspace(0.0, 1.0, 5), 0.2, step_min=0.01, snap_tol=1e-3)
+    expect = [0.0, 0.25, 0.28125, 0.296875, 0.306875, 0.326875, 0.366875, 0.446875, 0.5, 0.60625, 0.75, 1.0]
+    assert law.phi == pytest.approx(expect, abs=1e-12)
+    assert law.driver.tolist() == [0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1]
+    assert np.allclose(law.theta, np.array(expect) / 0.8, atol=1e-12)
+    assert law.kind.tolist() == [0] * 12 and np.allclose(law.delta_i, 0.0)
+    assert (law.ratio_nominal, law.step_min, law.snap_tol) == (0.8, 0.01, 1e-3)
+    assert law.evaluations == len(fake.calls) == 1 + 11 + 7  # the first, the accepted, the refined (0.5, 0.375, 0.3125; 0.34375, 0.3125; 0.328125, 0.3125)
+    assert [c[0] for c in fake.calls[2:6]] == [0.5, 0.375, 0.3125, 0.28125]
+    # the first pose from theta0 − 1e-5 with no step; each later one from the last pose, the step it made
+    assert fake.calls[0] == (0.0, 0.2 - 1e-5, 0.0)
+    assert fake.calls[1] == (0.25, 0.0, 0.25)
+    assert fake.calls[-1] == (1.0, pytest.approx(0.75 / 0.8), 0.25)
+
+
+def test_track_defaults_tip_ratios_and_lost_contact(monkeypatch):
+    from propulsor import policy
+
+    # tips from 0.1 to 0.2: the step's own ratio h/Δθ where the gear advanced; no refinement of equal kinds
+    # beyond the finest: the default finest step and snap tolerance
+    th = lambda x: x / 0.8 + (0.05 if x > 0.15 else 0.0)
+    _FakeLaw(monkeypatch, theta=th, kind=lambda x: 3 if 0.1 < x < 0.2 else 0, i_t=lambda x: math.nan)
+    law = cl.track(_fake_bodies(), np.array([0.0, 0.1, 0.2]), 0.0)
+    assert law.step_min == policy.POLYSECTOR_LAW_STEP_MIN_RAD
+    assert law.snap_tol == math.radians(policy.POLYSECTOR_SNAP_TOL_DEG)
+    tips = law.kind == 3
+    assert tips.sum() >= 2 and law.phi[tips].min() > 0.1 and law.phi[tips].max() < 0.2
+    i = np.nonzero(tips)[0]
+    for k in i:
+        dphi, dth = law.phi[k] - law.phi[k - 1], law.theta[k] - law.theta[k - 1]
+        assert law.i_t[k] == pytest.approx(dphi / dth, rel=1e-12)
+    assert np.isnan(law.i_t[~tips]).all()
+    # the jump at 0.15 resolved to the finest step
+    assert law.snap_max() == pytest.approx(0.05, abs=1e-3)
+    # a tip sample where the gear stood still keeps NaN; a lost contact (NaN) is kept and tracking goes on from the
+    # last pose found
+    fake = _FakeLaw(monkeypatch, theta=lambda x: math.nan if 0.3 < x < 0.4 else (0.5 if x < 0.5 else x),
+                    kind=lambda x: 3, i_t=lambda x: math.nan)
+    law = cl.track(_fake_bodies(), np.array([0.0, 0.25, 0.5]), 0.5, step_min=0.125)
+    assert law.phi.tolist() == [0.0, 0.125, 0.25, 0.375, 0.5]
+    assert np.isnan(law.theta[3]) and np.isnan(law.i_t).all()  # the gear stood: no step ratio
+    assert [c[1] for c in fake.calls][-2:] == [0.5, 0.5]
+    # a single grid angle: one sample
+    _FakeLaw(monkeypatch, theta=lambda x: 0.25)
+    law = cl.track(_fake_bodies(), np.array([0.3]), 0.25)
+    assert law.phi.tolist() == [0.3] and law.theta.tolist() == [0.25]
