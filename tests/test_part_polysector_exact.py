@@ -617,3 +617,123 @@ def test_track_defaults_tip_ratios_and_lost_contact(monkeypatch):
     _FakeLaw(monkeypatch, theta=lambda x: 0.25)
     law = cl.track(_fake_bodies(), np.array([0.3]), 0.25)
     assert law.phi.tolist() == [0.3] and law.theta.tolist() == [0.25]
+
+
+def _cross(u, v):
+    return float(u[0] * v[1] - u[1] * v[0])
+
+
+def _scan(cz, deg0, deg1, te0, step=0.1):
+    """Poses of the contact law at wheel angles deg0, deg0 + step … deg1 (each from the one before), from a start
+    a hair behind φ/i_n + te0; the law, its position and the samples."""
+    dd = pd.design(_p(conditional_teeth=cz))
+    pos = dd.positions[0]
+    law = cl.ContactLaw(cl.position_bodies(dd, pos, 1e-3))
+    grid = np.radians(np.arange(deg0, deg1 + 1e-9, step))
+    s = law.pose(grid[0], grid[0] / pos.ratio_nominal + te0 - 1e-3, 0.0)
+    out = [s]
+    for g in grid[1:]:
+        s = law.pose(g, s.theta, g - s.phi)
+        out.append(s)
+    return law, pos, out
+
+
+def test_contact_law_at_e0_is_conjugate_flank_contact_on_the_line_of_action():
+    """e = 0: the sectors are the blank; the gear follows φ/i_n exactly (to the outlines' accuracy), the contact
+    is flank on flank with i_t = r_b2/r_b = 40/36, 0.02 mm from the line of action through the pitch point (a r/(r + r2), 0)
+    at α = 20° to the y axis; the outline normals at the contact point lie along it."""
+    law, pos, out = _scan([36], 0.0, 0.2, -0.0017, step=0.1)
+    assert law.evaluations == 3
+    i_n = 40 / 36
+    for s in out:
+        assert (s.driver, s.kind, s.sectors) == (0, 0, (0,))
+        assert s.i_t == pytest.approx(i_n, rel=1e-12)
+    th = np.array([s.theta for s in out])
+    assert np.allclose(np.diff(th), np.radians(0.1) / i_n, atol=2e-6, rtol=0)
+    alpha = math.radians(20.0)
+    loa = np.array([math.sin(alpha), math.cos(alpha)])  # the line of action's direction (either sense)
+    P = np.array([114.0 * 54.0 / 114.0, 0.0])
+    for s in out[1:]:
+        room, C = law.back_room(0, s.phi, s.theta + 1e-5, 2e-5)
+        assert room == pytest.approx(1e-5, abs=2e-7)
+        off = min(abs(_cross(loa, C - P))), abs(_cross(loa * [-1, 1], C - P))))
+        assert off < 0.03  # the mean of the boundary points within the 1 µm contact tolerance (a 0.3 mm stretch)
+        side = loa if abs(_cross(loa, C - P))) < 0.03 else loa * [-1, 1]
+        for n in (law._normal_gear(C, s.theta), law._normal_sector(0, C, s.phi)):
+            assert abs(abs(float(n @ side)) - 1.0) < 1e-3 and np.hypot(*n) == pytest.approx(1.0, abs=1e-12)
+    # the free start: turned back by 0.2 mrad the gear overlaps the driving sector, forward it does not
+    s = out[1]
+    assert law.overlaps(0, s.phi, s.theta - 2e-4) and not law.overlaps(0, s.phi, s.theta + 2e-4)
+
+
+def test_contact_law_frames_and_engagement():
+    """The gear's body frame: world = R(−θ) X + (a, 0); the wheel's: world = R(φ) X; a sector is engaged when a
+    vertex of it, turned by φ, lies inside the gear's tip circle."""
+    dd, pos, b = _bodies(0)
+    law = cl.ContactLaw(b)
+    phi, th = 0.3, -0.2
+    rel21, M2 = law._rel21(phi, th)
+    X = np.array([3.0, 4.0])
+    world = np.array([[math.cos(-th), -math.sin(-th)], [math.sin(-th), math.cos(-th)]]) @ X + [114.0, 0.0]
+    assert np.allclose(M2[:, :2] @ X + M2[:, 2], world, atol=1e-12)
+    wheel = np.array([[math.cos(phi), math.sin(phi)], [-math.sin(phi), math.cos(phi)]]) @ world
+    assert np.allclose(rel21[:, :2] @ X + rel21[:, 2], wheel, atol=1e-12)
+    seen = {}
+    for ph in (0.3, -0.3, 0.9, -0.9):
+        R = np.array([[math.cos(ph), -math.sin(ph)], [math.sin(ph), math.cos(ph)]])
+        for j, o in b.sectors.items():
+            exp = bool(np.min(np.hypot(*(o.points @ R.T - [114.0, 0.0]).T)) < 63.0)
+            assert law.engaged(j, ph) == exp
+            seen.setdefault(j, set()).add(exp)
+    assert any(len(v) == 2 for v in seen.values())
+    # nothing engaged (e = 18 mm: sectors 1 and 6 only, at π and 2π/3): no pose
+    s = cl.ContactLaw(_bodies(2)[2]).pose(math.pi, 0.0, 0.0)
+    assert math.isnan(s.theta) and (s.driver, s.kind, s.sectors) == (-1, 3, ()) and math.isnan(s.i_t)
+    # a step the gear cannot make free within two pitches ahead: no pose; half of it is made
+    s0 = law.pose(0.0, -0.0027, 0.0)
+    assert s0.theta == pytest.approx(-0.0016672, abs=2e-6)
+    assert math.isnan(law.pose(0.01, s0.theta, 0.01).theta)
+    assert law.pose(0.005, s0.theta, 0.005).theta == pytest.approx(s0.theta + 0.005 / (40 / 36), abs=2e-6)
+
+
+def test_contact_law_edge_contacts_before_a_hand_over_and_the_flank_ratio():
+    """z_усл = 48 (e = 18 mm): 2.0° … 2.5° flank on flank, i_t = eq. 7's pole of the base circles' internal
+    tangent (gears.polysector.ratio_flank at the driving sector's mid-line u = φ); 22.0° … 23.7° the incoming
+    sector's tip corner on the gear's flank, 23.8° on the gear's tip corner on the sector's flank; the contact
+    point on the tip circle of the body whose corner it is; the ratio of the pole within 2e-3 of the step's own
+    Δφ/Δθ."""
+    law, pos, out = _scan([48], 2.0, 2.5, -0.0017)
+    geo = law.b
+    dd = pd.design(_p(conditional_teeth=[48]))
+    for s in out:
+        assert (s.driver, s.kind) == (0, 0)
+        assert s.i_t == pytest.approx(float(dd.geo.ratio_flank(18.0, np.array([s.phi]))[0]), rel=1e-9)
+    law, pos, out = _scan([48], 22.0, 24.0, -0.0073)
+    assert [s.kind for s in out] == [1] * 18 + [2] * 3
+    assert all(s.driver == 5 and s.sectors == (5,) for s in out)
+    b = law.b
+    for s in (out[0], out[17], out[18], out[20]):
+        _, C = law.back_room(5, s.phi, s.theta + 1e-4, 2e-4)
+        ang = b.angles[5][0] + s.phi
+        Os = 18.0 * np.array([math.cos(ang), math.sin(ang)])
+        on_sector_tip = math.hypot(*(C - Os)) >= 57.0 - 2e-3 - 1e-9
+        on_gear_tip = math.hypot(*(C - [132.0, 0.0])) >= 63.0 - 2e-3 - 1e-9
+        assert (on_sector_tip, on_gear_tip) == ((True, False) if s.kind == 1 else (False, True))
+    for a, c in zip(out[:-1], out[1:]):
+        if a.kind == c.kind:
+            assert (c.phi - a.phi) / (c.theta - a.theta) == pytest.approx(0.5 * (a.i_t + c.i_t), abs=2e-3)
+    assert geo.i_n == 60.0 / 72.0
+
+
+def test_contact_law_tip_on_tip_at_z54():
+    """z_усл = 54 (e = 27 mm): flank contact of sector 1 to 24.9°, then from 25.0° to 25.6° the incoming sector 6
+    rests tip on tip (no normal: i_t NaN, the contact point on both tip circles), then its tip corner drives."""
+    law, pos, out = _scan([54], 24.5, 25.9, -0.0314)
+    assert [s.kind for s in out] == [0] * 5 + [3] * 7 + [1] * 3
+    assert [s.driver for s in out] == [0] * 5 + [5] * 10
+    assert all(math.isnan(s.i_t) for s in out[5:12]) and all(math.isfinite(s.i_t) for s in out[:5] + out[12:])
+    s = out[8]
+    _, C = law.back_room(5, s.phi, s.theta + 1e-4, 2e-4)
+    ang = law.b.angles[5][0] + s.phi
+    assert math.hypot(*(C - 27.0 * np.array([math.cos(ang), math.sin(ang)]))) >= 57.0 - 2e-3
+    assert math.hypot(*(C - [141.0, 0.0])) >= 63.0 - 2e-3
