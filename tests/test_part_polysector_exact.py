@@ -656,9 +656,9 @@ def test_contact_law_at_e0_is_conjugate_flank_contact_on_the_line_of_action():
     for s in out[1:]:
         room, C = law.back_room(0, s.phi, s.theta + 1e-5, 2e-5)
         assert room == pytest.approx(1e-5, abs=2e-7)
-        off = min(abs(_cross(loa, C - P))), abs(_cross(loa * [-1, 1], C - P))))
+        off = min(abs(_cross(loa, C - P)), abs(_cross(loa * [-1, 1], C - P)))
         assert off < 0.03  # the mean of the boundary points within the 1 µm contact tolerance (a 0.3 mm stretch)
-        side = loa if abs(_cross(loa, C - P))) < 0.03 else loa * [-1, 1]
+        side = loa if abs(_cross(loa, C - P)) < 0.03 else loa * [-1, 1]
         for n in (law._normal_gear(C, s.theta), law._normal_sector(0, C, s.phi)):
             assert abs(abs(float(n @ side)) - 1.0) < 1e-3 and np.hypot(*n) == pytest.approx(1.0, abs=1e-12)
     # the free start: turned back by 0.2 mrad the gear overlaps the driving sector, forward it does not
