@@ -737,3 +737,225 @@ def test_contact_law_tip_on_tip_at_z54():
     ang = law.b.angles[5][0] + s.phi
     assert math.hypot(*(C - 27.0 * np.array([math.cos(ang), math.sin(ang)]))) >= 57.0 - 2e-3
     assert math.hypot(*(C - [141.0, 0.0])) >= 63.0 - 2e-3
+
+
+# --- proofs.py -----------------------------------------------------------------------------------------------------------
+
+pp = importlib.import_module("propulsor.parts.polysector.proofs")
+
+
+def _said():
+    from stand_ins import SaidWriter
+
+    return SaidWriter()
+
+
+def test_eq7_largest_ratio_error_and_the_proofs_chord():
+    """|Δi| of eq. 7/8 over the engagement −u_exit … u_exit (201 angles): 0 at e = 0, 0.1387 at 9 mm, 0.2323 at
+    18 mm (a finer grid of 2001 angles finds no more than 1e-4 above); the conjugate position proved at 3e-5 mm."""
+    from propulsor import policy
+
+    dd = pd.design(_p())
+    got = [pp.eq7_max_di(dd, q) for q in dd.positions]
+    assert got[0] == 0.0 and type(got[0]) is float
+    assert got[1:] == pytest.approx([0.13870976, 0.23231872], abs=1e-7)
+    for q, g in zip(dd.positions, got):
+        u = np.linspace(-q.u_exit, q.u_exit, 201)
+        i_t = dd.geo.ratio_flank(q.offset, u)
+        assert g == pytest.approx(float(np.max(np.abs(1.0 - i_t / q.ratio_nominal))), abs=1e-15)
+        fine = np.linspace(-q.u_exit, q.u_exit, 2001)
+        assert 0.0 <= float(np.max(np.abs(1.0 - dd.geo.ratio_flank(q.offset, fine) / q.ratio_nominal))) - g < 1e-4
+    assert [pp.chord_for(dd, q) for q in dd.positions] == [3e-5, 1e-4, 1e-4]
+    assert (policy.POLYSECTOR_PROOF_CHORD_TOL_CONJUGATE_MM, policy.POLYSECTOR_PROOF_CHORD_TOL_MM) == (3e-5, 1e-4)
+
+
+def test_chord_on_both_sides_of_the_conjugate_limit(monkeypatch):
+    dd = pd.design(_p())
+    monkeypatch.setattr(pp, "eq7_max_di", lambda dd, pos: 0.99e-4)
+    assert pp.chord_for(dd, dd.positions[2]) == 3e-5
+    monkeypatch.setattr(pp, "eq7_max_di", lambda dd, pos: 1e-4)
+    assert pp.chord_for(dd, dd.positions[0]) == 1e-4
+
+
+def test_law_checks_in_full_on_both_sides_of_their_limits():
+    def law(tip_rad, snap_rad, n=17, step=5e-5):
+        return SimpleNamespace(step_min=step, phi=np.zeros(n), tip_tip_angle=lambda: tip_rad, snap_max=lambda: snap_rad)
+
+    tip, snap = pp.law_checks("position2", law(0.0, math.radians(0.05)))
+    assert (tip.name, tip.passed, tip.value, tip.limit, tip.unit) == ("position2.no_tip_on_tip", True, 0.0, 0.0, "deg")
+    assert tip.message == ("wheel turn per sector period over which the gear rests on tips only (tip land or corner of "
+                           "both bodies), tracked contact law, 17 steps down to 0.0029° at every hand-over")
+    assert (snap.name, snap.passed, snap.limit, snap.unit) == ("position2.no_snap", True, 0.05, "deg")
+    assert snap.value == pytest.approx(0.05, abs=1e-15)
+    assert snap.message == ("largest jump of the gear beyond its nominal advance within one finest step (0.0029° of "
+                            "wheel turn)")
+    tip, snap = pp.law_checks("p", law(math.radians(0.714), math.radians(0.0501), n=3, step=math.radians(0.01)))
+    assert (tip.passed, snap.passed) == (False, False)
+    assert tip.value == pytest.approx(0.714) and snap.value == pytest.approx(0.0501)
+    assert "3 steps down to 0.0100°" in tip.message and "(0.0100° of wheel turn)" in snap.message
+    assert pp.law_checks("p", law(1e-12, math.nan))[0].passed is False
+    assert pp.law_checks("p", law(1e-12, math.nan))[1].passed is False
+
+
+def test_prove_positions_proves_each_asked_position_at_its_chord(monkeypatch):
+    mp = importlib.import_module("propulsor.parts.polysector.mesh_proof")
+    calls = []
+    monkeypatch.setattr(mp, "prove_position", lambda dd, pos, spp, chord: calls.append((pos.k, spp, chord)) or pos.k)
+    dd = pd.design(_p())
+    assert pp.prove_positions(dd, [2, 0]) == [3, 1]
+    assert calls == [(3, None, 1e-4), (1, None, 3e-5)]
+
+
+def test_start_proofs_in_two_workers_the_conjugate_first(monkeypatch):
+    started = []
+    monkeypatch.setattr(pp, "start_in_fork", lambda fn, dd, ks: started.append((fn, ks)) or f"job{ks}")
+    dd = pd.design(_p(conditional_teeth=[42, 36, 48]))
+    w, built = _said(), {}
+    pp.start_proofs(dd, w, built)
+    assert w.said == ["proof of 3 position(s) on the finished outlines, in two processes while the solids are built"]
+    # chords 1e-4, 3e-5, 1e-4: the conjugate one (index 1) first, the others in their order; alternately
+    assert started == [(pp.prove_positions, [1, 2]), (pp.prove_positions, [0])]
+    assert built == {"pending_proofs": [([1, 2], "job[1, 2]"), ([0], "job[0]")]}
+    started.clear()
+    pp.start_proofs(pd.design(_p(conditional_teeth=[48])), w, built)
+    assert started == [(pp.prove_positions, [0])] and built["pending_proofs"] == [([0], "job[0]")]
+    assert w.said[-1] == "proof of 1 position(s) on the finished outlines, in two processes while the solids are built"
+
+
+def test_full_turn_repeats_the_period_with_the_gears_advance():
+    dd = pd.design(_p())
+    per = math.pi / 3
+    pr = SimpleNamespace(phi=np.array([0.0, per / 2]), theta=np.array([0.1, 0.5]), period=per, ratio_nominal=0.8)
+    phi, th = pp.full_turn(dd, pr)
+    k = np.repeat(np.arange(6), 2)
+    assert np.allclose(phi, np.tile([0.0, per / 2], 6) + k * per, atol=1e-15)
+    assert np.allclose(th, np.tile([0.1, 0.5], 6) + k * per / 0.8, atol=1e-15)
+    pr1 = SimpleNamespace(phi=np.array([0.0]), theta=np.array([0.0]), period=2 * math.pi / 3, ratio_nominal=1.0)
+    assert len(pp.full_turn(pd.design(_p(flows=1, conditional_teeth=[36])), pr1)[0]) == 3
+
+
+def test_synthesis_step_of_the_part_file_in_full():
+    from propulsor.gears.polysector import delta_eq1_printed, epsilon_alpha_pair
+
+    dd = pd.design(_p())
+    geo = dd.geo
+    w = _said()
+    pp.synthesis_step(dd, w, {})
+    assert w.said == ["synthesis (seed 003 eq. 1-4)"]
+    cp = geo.corner_pose(dd.e_max)
+    d_in, d_out = geo.tip_land()
+    alpha = math.radians(20.0)
+    d = w.derived
+    assert d == {
+        "r_blank_mm": 54.0, "r_b_blank_mm": 54.0 * math.cos(alpha), "r_a_blank_mm": 57.0, "r_gear_mm": 60.0,
+        "r_a_gear_mm": 63.0, "empty_pitches_k": 2, "z_c_eq2": 10.0, "delta_eq3_rad": d_in,
+        "delta_eq1_swapped_rad": d_out,
+        "delta_eq1_printed_rad": delta_eq1_printed(10, 36, alpha, 54.0 * math.cos(alpha), 57.0),
+        "offset_max_mm": dd.e_max, "z_cond_max": pytest.approx(36 + 2 * 28.264027546 / 3, abs=1e-7),
+        "eq3_O1C_mm": cp["O1C"], "eq3_CD_mm": cp["CD"], "eq3_beta2_rad": cp["beta2"], "eq3_u_exit_rad": cp["u_exit"],
+        "eq3_residual_max_mm2": float(np.max(np.abs(cp["residuals"]))),
+        "flank_overlap_one_flow_e0": pytest.approx((10 - 1 + epsilon_alpha_pair(36, 40, 3.0, alpha)) / 12, abs=1e-15),
+        "epsilon_alpha_blank_gear": epsilon_alpha_pair(36, 40, 3.0, alpha),
+        "hub_radius_mm": 50.25, "bolt_radius_mm": 45.5}
+    assert d["r_gear_mm"] == 60.0 and d["eq3_residual_max_mm2"] < 1e-10
+    assert d["eq3_O1C_mm"] == pytest.approx(79.8050, abs=1e-4) and cp["CD"] == pytest.approx(42.6296, abs=1e-4)
+    cols, rows = w.tables["positions"]
+    assert cols == ["position", "z_cond", "offset_mm", "d_cond_mm", "center_distance_mm", "ratio_nominal",
+                    "epsilon_s_per_flow", "epsilon_s", "u_exit_rad", "delta_i_eq8_max"]
+    for row, q in zip(rows, dd.positions):
+        assert row == [q.k, q.z_cond, q.offset, 3.0 * q.z_cond, q.a, q.ratio_nominal, q.eps_s_flow, q.eps_s,
+                       q.u_exit, pp.eq7_max_di(dd, q)]
+    assert len(rows) == 3 and w.checks[0].name == "position1.epsilon_s_eq4"
+    for n, q in enumerate(dd.positions):
+        eps, off = w.checks[2 * n], w.checks[2 * n + 1]
+        assert (eps.name, eps.passed, eps.value, eps.limit, eps.unit) == (
+            f"position{q.k}.epsilon_s_eq4", True, q.eps_s, 1.05, "")
+        assert eps.message == (f"eq. 4 (both flows, φ1 between the driving corners): ε_s = {q.eps_s:.4f} (per flow "
+                               f"{q.eps_s_flow:.4f}); the seed asks 1.05 … 1.3 at the largest offset")
+        assert (off.name, off.passed, off.value, off.limit, off.unit) == (
+            f"position{q.k}.offset_eq3", True, q.offset, dd.e_max, "mm")
+        assert off.message == f"offset {q.offset:g} mm within the largest offset of eq. 1/3, 28.2640 mm"
+    assert w.checks[3].message == "offset 9 mm within the largest offset of eq. 1/3, 28.2640 mm"
+    ea = epsilon_alpha_pair(36, 40, 3.0, alpha)
+    assert w.notes == [
+        "Synthesis (seed 003 eq. 1–4): blank z = 36, m = 3 mm; 2 flow(s) of i_s = 3 sectors of z_c = 10 teeth (eq. 2: "
+        "z/i_s − k with k = 2 empty pitches); gear z2 = 40. Largest offset of eq. 1/3 with our closing condition "
+        "(ε_s ≥ 1.05 for both flows, φ1 from the leading tooth's driving corner entering the gear's tip circle to the "
+        "trailing tooth's driving corner leaving it): e_max = 28.2640 mm (z_усл ≤ 54.84; ε_s = 1.0896 there; past it "
+        "the leading tooth's driving corner no longer reaches the gear's tip circle); at it eq. 3's corner C "
+        f"(δ = {cp['delta']:.5f} rad) lies on the gear's tip circle with O1C = 79.8050 mm, CD = 42.6296 mm, "
+        f"β2 = 0.09802 rad (rows of eq. 1/3 agree within {d['eq3_residual_max_mm2']:.2g} mm²). The positions are the "
+        "conditional tooth counts [36, 42, 48] (multiples of flows·i_s = 6: every sector meets the gear in tooth "
+        "phase); the last has ε_s = 1.4565. One flow alone overlaps (z_c − 1 + ε_α)/(z_c + k) = "
+        f"{(9 + ea) / 12:.4f} < 1 with flank contact only at e = 0: the second flow is what keeps the mesh "
+        "continuous."]
+    assert f"{(9 + ea) / 12:.4f}" == "0.8919"
+
+
+def test_synthesis_step_notes_of_one_flow_and_of_a_last_position_within_the_seeds_range():
+    """One flow at z_усл = 36: ε_s falls to 1.05 at e_max = 0.8597 mm (1.0694 at e = 0: within 1.05 … 1.3);
+    two flows at 36 and 54: the last ε_s 1.1600, within; a failing ε_s check below 1.05."""
+    dd = pd.design(_p(flows=1, conditional_teeth=[36]))
+    w = _said()
+    pp.synthesis_step(dd, w, {})
+    note = w.notes[0]
+    assert "e_max = 0.8597 mm (z_усл ≤ 36.57; ε_s falls to 1.05 there)" in note
+    assert "The positions are the conditional tooth counts [36] (multiples of flows·i_s = 3: every sector meets" in note
+    assert "the last has ε_s = 1.0694 — within the seed's 1.05 … 1.3. One flow alone" in note
+    assert "1 flow(s) of i_s = 3 sectors" in note
+    dd = pd.design(_p(conditional_teeth=[36, 54]))
+    w = _said()
+    pp.synthesis_step(dd, w, {})
+    assert "the last has ε_s = 1.1600 — within the seed's 1.05 … 1.3. One" in w.notes[0]
+    assert [c.passed for c in w.checks] == [True] * 4
+    low = dataclasses.replace(dd, positions=(dataclasses.replace(dd.positions[1], eps_s=1.0499, offset=28.3),))
+    w = _said()
+    pp.synthesis_step(low, w, {})
+    assert [(c.name, c.passed) for c in w.checks] == [("position2.epsilon_s_eq4", False), ("position2.offset_eq3",
+                                                                                          False)]
+    assert "the last has ε_s = 1.0499. One flow" in w.notes[0]
+    hi = dataclasses.replace(dd, positions=(dataclasses.replace(dd.positions[1], eps_s=1.3),))
+    w = _said()
+    pp.synthesis_step(hi, w, {})
+    assert "the last has ε_s = 1.3000 — within the seed's 1.05 … 1.3." in w.notes[0]
+    hi = dataclasses.replace(dd, positions=(dataclasses.replace(dd.positions[1], eps_s=1.3001),))
+    w = _said()
+    pp.synthesis_step(hi, w, {})
+    assert "the last has ε_s = 1.3001. One flow" in w.notes[0]
+
+
+def test_position_error_step_against_eq_15_22_at_four_radii():
+    """R and β of every tooth and flank of the sector at r_y = r_усл − m, − m/2, r_усл, + m/2 (gears.polysector's
+    eq. 15-22 called in the test); the largest finite R per position in µm: 0 at e = 0."""
+    from propulsor.gears.polysector import tooth_position_error
+
+    dd = pd.design(_p(conditional_teeth=[36, 42]))
+    w = _said()
+    pp.position_error_step(dd, w, {})
+    cols, rows = w.tables["tooth_position_error"]
+    assert cols == ["position", "r_y_mm", "tooth", "flank", "x_cond_mm", "y_cond_mm", "x_sector_mm", "y_sector_mm",
+                    "R_um", "beta_rad"]
+    expect, worst = [], {}
+    for q in dd.positions:
+        rc = 54.0 + q.offset
+        best = 0.0
+        for r_y in (rc - 3.0, rc - 1.5, rc, rc + 1.5):
+            for rr in tooth_position_error(3.0, 36, 10, q.offset, math.radians(20.0), r_y):
+                expect.append([q.k, rr["r_y"], rr["tooth"], rr["flank"], rr["x_cond"], rr["y_cond"], rr["x_sector"],
+                               rr["y_sector"], rr["R"] * 1e3, rr["beta"]])
+                if math.isfinite(rr["R"]):
+                    best = max(best, rr["R"])
+        worst[q.k] = best
+    assert len(rows) == len(expect) == 160
+    for a, b in zip(rows, expect):
+        assert a[:4] == b[:4] and np.allclose(np.array(a[4:], float), np.array(b[4:], float), equal_nan=True,
+                                              rtol=0, atol=0)
+    assert worst[1] == pytest.approx(0.0, abs=1e-12) and worst[2] == pytest.approx(1.5171, abs=1e-4)
+    assert w.derived == {"position1_flank_deviation_max_um": pytest.approx(0.0, abs=1e-9),
+                         "position2_flank_deviation_max_um": pytest.approx(1517.1, abs=0.1)}
+    assert w.derived["position2_flank_deviation_max_um"] == worst[2] * 1e3
+    assert w.notes == [
+        "Tooth position error (eq. 15–22): largest distance R between the sector's flank and the conditional gear's "
+        "involute on circles r_y = r_усл − m … r_усл + m/2 about the wheel axis: position 1: 0.0 µm, position 2: "
+        "1517.1 µm (0 at e = 0, where the sector is the blank itself)."]
+    assert list(w.plots) == ["tooth_position_error"]
