@@ -959,3 +959,141 @@ def test_position_error_step_against_eq_15_22_at_four_radii():
         "involute on circles r_y = r_усл − m … r_усл + m/2 about the wheel axis: position 1: 0.0 µm, position 2: "
         "1517.1 µm (0 at e = 0, where the sector is the blank itself)."]
     assert list(w.plots) == ["tooth_position_error"]
+
+
+def _fake_proof(dd, q, eps_off=0.01, room=(0.003, 0.001, math.nan, 0.002)):
+    """A PositionProof of 4 steps over the period with a tracked law of 9 samples (given numbers), the engagement
+    chosen to give ε_s = eq. 4's + ``eps_off``."""
+    from propulsor.parts.polysector.contact_law import LawResult
+    from propulsor.parts.polysector.mesh_proof import PositionProof
+
+    per, i_n = math.pi / 3, q.ratio_nominal
+    phi = np.arange(4) * per / 4
+    lphi = np.linspace(0.0, per, 9)
+    kind = np.array([0, 0, 1, 1, 3, 2, 0, 0, 0])
+    i_t = np.array([i_n, i_n * 1.01, 0.99 * i_n, i_n, math.nan, 1.02 * i_n, i_n, 0.98 * i_n, i_n])
+    ltheta = lphi / i_n + np.array([0.0, 1e-4, 2e-4, 3e-4, 1e-3, 1.1e-3, 1.2e-3, 1.2e-3, 1.2e-3])
+    law = LawResult(lphi, ltheta, np.array([0, 0, 0, 0, 5, 5, 5, 5, 5]), kind, i_t, (i_n - i_t) / i_n, i_n, 5e-5,
+                    math.radians(0.05), 9)
+    phi1 = (q.eps_s + eps_off) * 2 * math.pi / 6
+    driver = np.array([0, 0, 5, 5])
+    return PositionProof(
+        k=q.k, phi=phi, period=per, theta=phi / i_n + np.array([0.0, 1e-4, 2e-4, 0.0]), theta_nominal=phi / i_n,
+        driver=driver, driver_u=np.array([0.0, per / 4, per / 2 - per, 3 * per / 4 - per]),
+        pairs=np.array([1, 2, 2, 1]), sectors_engaged=np.array([1, 2, 2, 1]),
+        overlap_flow=np.array([[0.0, 1e-7], [5e-7, 0.0], [0.0, 0.0], [2e-7, 3e-7]]), coast_room=np.array(room),
+        phi1_measured=phi1, u_enter=-phi1 / 2, u_exit=phi1 / 2, contact_points=np.zeros((4, 2)), contacts=[[]] * 4,
+        drive_theta={}, ratio_nominal=i_n, chord_tol=1e-4, r_ref=dd.geo.r_b2, flows=2, i_s=3, law=law)
+
+
+def _results(dd, prs, split=((1,), (0,))):
+    built = {"pending_proofs": [(list(ks), SimpleNamespace(result=lambda ks=ks: [prs[k] for k in ks]))
+                                for ks in split]}
+    w = _said()
+    pp.proof_results(dd, w, built)
+    return w, built
+
+
+def test_proof_results_checks_tables_and_note_of_given_proofs():
+    from propulsor import policy
+    from propulsor.parts.polysector.contact_law import TYPES
+
+    dd = pd.design(_p(conditional_teeth=[36, 42]))
+    prs = [_fake_proof(dd, q) for q in dd.positions]
+    w, built = _results(dd, prs)
+    assert built == {"proofs": {0: prs[0], 1: prs[1]}}
+    assert w.said == ["proofs done"] and list(w.plots) == ["ratio_error"]
+    assert len(w.checks) == 2 * 7
+    for n, (q, pr) in enumerate(zip(dd.positions, prs)):
+        c = w.checks[7 * n: 7 * n + 7]
+        name = f"position{q.k}"
+        assert [x.name for x in c] == [f"{name}.flow1.overlap_area", f"{name}.flow2.overlap_area",
+                                       f"{name}.contact_continuity", f"{name}.no_jam", f"{name}.epsilon_s_measured",
+                                       f"{name}.no_tip_on_tip", f"{name}.no_snap"]
+        assert [x.passed for x in c] == [True, True, True, True, True, False, True]  # tips 7.5°, no fine step
+        assert [x.value for x in c[:4]] == [5e-7, 3e-7, 1.0, 0.001]
+        assert [x.limit for x in c[:4]] == [policy.OVERLAP_AREA_TOL_MM2, 1e-6, 1, 0.0]
+        assert [x.unit for x in c] == ["mm^2", "mm^2", "pairs", "rad", "", "deg", "deg"]
+        assert c[0].message == ("gear against flow 1's sectors at the measured pose, 4 steps of one sector period "
+                                "(the turn repeats it)")
+        assert c[1].message.startswith("gear against flow 2's sectors")
+        assert c[2].message == "tooth pairs in contact, both flows together: least 1, mean 1.500"
+        assert c[3].message == "least room of the engaged sectors' other flanks at the pose the driving sector sets"
+        ef, eb = pr.eps_s_measured()
+        assert eb == pytest.approx(q.eps_s + 0.01, abs=1e-12) and ef == pytest.approx(eb / 2, abs=1e-15)
+        assert c[4].value == eb and c[4].limit == {"expected": q.eps_s, "rel_tol": 0.0, "abs_tol": 0.02}
+        assert c[4].message == (f"ε_s measured on the outline's driving corners (engagement {pr.u_enter:.6f} … "
+                                f"{pr.u_exit:.6f} rad) {eb:.5f} against eq. 4 {q.eps_s:.5f}")
+        assert [x.name for x in pp.law_checks(name, pr.law)] == [x.name for x in c[5:]]
+        assert c[5].value == pytest.approx(math.degrees(pr.law.tip_tip_angle()))
+    pos = w.derived["positions"]
+    assert len(pos) == 2
+    for q, pr, d in zip(dd.positions, prs, pos):
+        law = pr.law
+        ef, eb = pr.eps_s_measured()
+        assert d == {
+            "offset_mm": q.offset, "center_distance_mm": q.a, "ratio_nominal": q.ratio_nominal, "epsilon_s": eb,
+            "epsilon_s_per_flow": ef, "ratio_error_max": pytest.approx(0.02, abs=1e-12), "contact_pairs_min": 1,
+            "epsilon_s_eq4": q.eps_s, "z_cond": q.z_cond, "share_two_sectors_engaged": 0.5, "epsilon_s_steps": 1.5,
+            "share_two_pairs_in_contact": 0.5, "transmission_error_pp_rad": pytest.approx(1.2e-3, abs=1e-15),
+            "proof_chord_tol_mm": 1e-4, "proof_steps_per_period": 4,
+            "contact_shares": {"flank": pytest.approx(0.5), "sector_tip": pytest.approx(0.25),
+                               "gear_tip": pytest.approx(0.125), "tip_tip": pytest.approx(0.125)},
+            "tip_on_tip_deg": pytest.approx(math.degrees(math.pi / 24)),
+            "snap_max_deg": math.degrees(law.snap_max()), "contact_law_steps_per_period": 9,
+            "contact_law_step_min_deg": math.degrees(5e-5)}
+        assert type(d["contact_pairs_min"]) is int
+        cols, rows = w.tables[f"contact_law_{q.k}"]
+        assert cols == ["phi_rad", "theta_rad", "te_rad", "driving_sector", "contact_type", "i_t", "delta_i"]
+        assert len(rows) == 9
+        for i, r in enumerate(rows):
+            assert r[:5] == [law.phi[i], law.theta[i], law.te[i], int(law.driver[i]) + 1, TYPES[law.kind[i]]]
+            assert np.allclose(r[5:], [law.i_t[i], law.delta_i[i]], equal_nan=True, rtol=0, atol=0)
+        cols, rows = w.tables[f"transmission_{q.k}"]
+        assert cols == ["phi_rad", "theta_rad", "gear_rotation_ccw_rad", "theta_nominal_rad", "te_rad", "i_t",
+                        "delta_i", "delta_i_eq8_flank", "driving_sector", "pairs_in_contact", "sectors_engaged",
+                        "contact_type"]
+        assert len(rows) == 24
+        per = math.pi / 3
+        for i, r in enumerate(rows):
+            k, s = divmod(i, 4)
+            phi = pr.phi[s] + k * per
+            th = pr.theta[s] + k * per / q.ratio_nominal
+            li = 2 * s  # the law's sample at the step
+            eq8 = (q.ratio_nominal - float(dd.geo.ratio_flank(q.offset, np.array([pr.driver_u[s]]))[0])) \
+                / q.ratio_nominal
+            assert r[:5] == pytest.approx([phi, th, -th, phi / q.ratio_nominal, th - phi / q.ratio_nominal],
+                                          abs=1e-12)
+            assert np.allclose(r[5:8], [law.i_t[li], law.delta_i[li], eq8], equal_nan=True, rtol=0, atol=1e-12)
+            assert r[8:] == [(int(pr.driver[s]) + k) % 6 + 1, int(pr.pairs[s]), int(pr.sectors_engaged[s]),
+                             TYPES[law.kind[li]]]
+            assert type(r[8]) is int and type(r[9]) is int and type(r[10]) is int
+    q, pr = dd.positions[1], prs[1]
+    ef, eb = pr.eps_s_measured()
+    u = np.linspace(-q.u_exit, q.u_exit, 201)
+    di_eq8 = (q.ratio_nominal - dd.geo.ratio_flank(q.offset, pr.driver_u)) / q.ratio_nominal
+    assert w.notes[1] == (
+        f"Position 2 (z_усл = 42, e = 9 mm, a = 123 mm, i_n = {q.ratio_nominal:.5f}): 4 steps over one sector period, "
+        f"outlines within 0.0001 mm. ε_s measured {eb:.4f} (per flow {ef:.4f}) against eq. 4 {q.eps_s:.4f}; two "
+        f"sectors engaged over 50.0 % of the turn; tooth pairs in contact 1 … 2; transmission error 1.2000 mrad peak "
+        f"to peak; contact law tracked in 9 steps (down to {math.degrees(5e-5):.4f}° at the hand-overs): flank "
+        f"50.00 %, sector_tip 25.00 %, gear_tip 12.50 %, tip_tip 12.50 % of the turn, tip on tip "
+        f"{math.degrees(math.pi / 24):.4f}° per period, largest snap {math.degrees(pr.law.snap_max()):.4f}° (limit "
+        f"0.05°); |Δi| up to 0.02 (pole of the contact normal), {float(np.max(np.abs(di_eq8))):.3g} by eq. 7/8 for a "
+        f"flank contact of the driving sector at the same steps ({pp.eq7_max_di(dd, q):.3g} over its whole "
+        f"engagement); overlap 5e-07 mm².")
+    assert float(np.max(np.abs(1 - dd.geo.ratio_flank(q.offset, u) / q.ratio_nominal))) == pytest.approx(
+        pp.eq7_max_di(dd, q), abs=1e-15)
+
+
+def test_proof_results_checks_on_both_sides_of_their_limits():
+    dd = pd.design(_p(conditional_teeth=[42]))
+    q = dd.positions[0]
+    w, _ = _results(dd, [_fake_proof(dd, q, eps_off=0.0199, room=(0.0, 0.1, 0.2, 0.3))], split=((0,),))
+    assert [c.passed for c in w.checks[:5]] == [True] * 5
+    pr = _fake_proof(dd, q, eps_off=-0.0201, room=(-1e-9, 0.1, 0.2, 0.3))
+    pr.overlap_flow[2, 1] = 1.1e-6
+    pr.pairs[3] = 0
+    w, _ = _results(dd, [pr], split=((0,),))
+    assert [c.passed for c in w.checks[:5]] == [True, False, False, False, False]
+    assert w.checks[2].value == 0 and w.checks[3].value == -1e-9 and w.checks[1].value == 1.1e-6
