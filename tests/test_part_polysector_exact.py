@@ -1097,3 +1097,124 @@ def test_proof_results_checks_on_both_sides_of_their_limits():
     w, _ = _results(dd, [pr], split=((0,),))
     assert [c.passed for c in w.checks[:5]] == [True, False, False, False, False]
     assert w.checks[2].value == 0 and w.checks[3].value == -1e-9 and w.checks[1].value == 1.1e-6
+
+
+def test_efficiency_step_on_contacts_along_the_line_of_action():
+    """Contacts at distances l along the line of action through the pole P = (a/(1 + i_n), 0) at i_t = i_n (a solid
+    pair's path): ψ = f l (1 + 1/i_t)/h with h = O1's distance from the line, P_x cos α (eq. 12's instantaneous
+    loss); C1 = 1 (α_wt = α everywhere); C2 = mean l over eq. 12's path average (l1² + l2²)/(2 (l1 + l2)); a step
+    without a ratio left out."""
+    from propulsor.gears.polysector import epsilon_alpha_pair
+    from propulsor.gears.polysector_dynamics import loss_eq12, loss_eq13
+
+    dd = pd.design(_p(conditional_teeth=[36, 42], friction_coefficient=0.1))
+    alpha = math.radians(20.0)
+    u = np.array([math.sin(alpha), math.cos(alpha)])
+    prs, ls = [], [[2.0, 1.5, 0.5], [3.0, 0.25]]
+    for q, l in zip(dd.positions, ls):
+        P = np.array([q.a / (1 + q.ratio_nominal), 0.0])
+        it = np.array([q.ratio_nominal, q.ratio_nominal, math.nan, q.ratio_nominal])
+        contacts = [[(0, P + l[0] * u), (3, P - l[1] * u)], [(0, P + l[2] * u)] if len(l) > 2 else [],
+                    [(0, P + 9.0 * u)], [] if len(l) > 2 else [(5, P - l[1] * u)]]
+        if len(l) == 2:
+            contacts = [[(0, P + l[0] * u)], [], [(0, P + 9.0 * u)], [(5, P - l[1] * u)]]
+        prs.append(SimpleNamespace(ratio_measured=lambda it=it: (it, 1 - it), contacts=contacts))
+    w = _said()
+    pp.efficiency_step(dd, w, {"proofs": {0: prs[0], 1: prs[1]}})
+    cols, rows = w.tables["efficiency"]
+    assert cols == ["position", "offset_mm", "f", "epsilon_alpha_conditional", "psi_eq12_solid", "psi_eq13_plain",
+                    "psi_measured", "C1", "C2", "C3", "C_ext", "efficiency"]
+    notes = []
+    for q, l, row in zip(dd.positions, ls, rows):
+        i_n = q.ratio_nominal
+        h = q.a / (1 + i_n) * math.cos(alpha)
+        assert h == pytest.approx((54.0 + q.offset) * math.cos(alpha), rel=1e-14)
+        psi = float(np.mean([0.1 * x * (1 + 1 / i_n) / h for x in l]))
+        ea = epsilon_alpha_pair(q.z_cond, 40, 3.0, alpha)
+        plain = loss_eq13(0.1, ea, q.z_cond, 40)
+        r1 = 54.0 + q.offset
+        l1 = math.sqrt(63.0 ** 2 - (60 * math.cos(alpha)) ** 2) - 60 * math.sin(alpha)
+        l2 = math.sqrt((r1 + 3.0) ** 2 - (r1 * math.cos(alpha)) ** 2) - r1 * math.sin(alpha)
+        C2 = float(np.mean(l)) / ((l1 * l1 + l2 * l2) / (2 * (l1 + l2)))
+        C_ext = psi / plain
+        expect = [q.k, q.offset, 0.1, ea, loss_eq12(0.1, 3.0, alpha, q.z_cond, 40, l1, l2), plain, psi, 1.0, C2,
+                  C_ext / C2, C_ext, 1 - psi]
+        assert row[:4] == expect[:4] and row[4:] == pytest.approx(expect[4:], rel=1e-9)
+        assert w.derived[f"position{q.k}_loss_mean"] == pytest.approx(psi, rel=1e-12)
+        assert w.derived[f"position{q.k}_loss_eq13_plain"] == plain
+        assert w.derived[f"position{q.k}_C_ext"] == pytest.approx(C_ext, rel=1e-12)
+        notes.append(f"position {q.k}: ψ = {psi:.5f} against eq. 13 plain {plain:.5f}, C1 = 1.000, C2 = {C2:.3f}, "
+                     f"C3 = {C_ext / C2:.3f}, C_внеш = C2·C3/C1 = {C_ext:.3f}")
+    assert len(w.derived) == 6
+    assert w.notes == ["Friction loss (eq. 12–14) from the measured contact path (contact point, pole from the "
+                       "measured i_t, sliding speed (ω1 + ω2)·l, power arm of the wheel): " + "; ".join(notes) + "."]
+
+
+def test_dynamics_step_hands_the_measured_transmission_to_eq_9_11(monkeypatch):
+    """The model of the part's inertias, stiffnesses, damping, i54 and load; q1 = ω0 t over one wheel turn (3000
+    samples); Π' = 1/i_n + te'(q1 mod period) and Π'' = te'' of the periodic cubic spline through the period's
+    steps (Π' = 1/i_n, Π'' = 0 without a transmission error); the spline's knots repeated over the turn as the
+    breaks; the rows, derived values and note from the results (the integration itself is the library's, run here
+    on a recorder); the natural frequencies are K v = ω² M v's with M = [[J3 + J45, J45], [J45, J45]],
+    K = diag(c1, c2)."""
+    from scipy.interpolate import CubicSpline
+    from scipy.linalg import eigh
+
+    from propulsor.gears.polysector_dynamics import DynamicsResult, TorsionalModel
+
+    calls = []
+
+    def simulate(model, omega0, Pi1, Pi2, t_end, n_out=2000, q0=None, breaks=None):
+        calls.append(SimpleNamespace(model=model, omega0=omega0, Pi1=Pi1, Pi2=Pi2, t_end=t_end, n_out=n_out, q0=q0,
+                                     breaks=breaks))
+        k = len(calls)
+        t = np.linspace(0.0, t_end, 4)
+        return DynamicsResult(t, omega0 * t, np.array([0.0, 1e-4, 3e-4, 0.0]) * k, np.array([0.0, -2e-4, 0.0, 0.0]),
+                              np.array([20.0, 26.0 + k, 14.0, 25.0]), 25.0)
+
+    monkeypatch.setattr(TorsionalModel, "simulate", simulate)
+    dd = pd.design(_p(conditional_teeth=[36, 42], speed_rpm=600.0, load_torque_Nm=30.0, J4_kgm2=0.004, i54=2.0,
+                      J1_kgm2=0.03, J2_kgm2=0.003, J3_kgm2=0.0025, J5_kgm2=0.015, c1_Nm_per_rad=3e4,
+                      c2_Nm_per_rad=1e4, damping_ratio=0.07))
+    per = math.pi / 3
+    phi = np.arange(12) * per / 12
+    te1 = 1e-4 * np.sin(2 * math.pi * phi / per)
+    prs = {0: SimpleNamespace(te=np.zeros(12), phi=phi, period=per),
+           1: SimpleNamespace(te=te1, phi=phi, period=per)}
+    w = _said()
+    pp.dynamics_step(dd, w, {"proofs": prs})
+    assert len(calls) == 2
+    model = calls[0].model
+    assert model == TorsionalModel(0.03, 0.003, 0.0025, 0.004, 0.015, 3e4, 1e4, 2.0, 0.07, 30.0)
+    om = 600.0 * 2 * math.pi / 60
+    x = np.append(phi, per)
+    breaks = (x[None, :] + per * np.arange(7)[:, None]).ravel()
+    q1 = np.linspace(-0.3, 2 * math.pi + 0.3, 997)
+    cs = CubicSpline(x, np.append(te1, te1[0]), bc_type="periodic")
+    for c, q, spline in zip(calls, dd.positions, (None, cs)):
+        assert (c.omega0, c.t_end, c.n_out, c.q0) == (om, 2 * math.pi / om, 3000, None)
+        assert np.array_equal(c.breaks, breaks) and breaks[-1] == per * 7
+        if spline is None:
+            assert np.allclose(c.Pi1(q1), 1 / q.ratio_nominal, rtol=0, atol=1e-15)
+            assert np.allclose(c.Pi2(q1), 0.0, rtol=0, atol=1e-15)
+        else:
+            m = np.mod(q1, per)
+            assert np.allclose(c.Pi1(q1), 1 / q.ratio_nominal + spline.derivative(1)(m), rtol=0, atol=1e-15)
+            assert np.allclose(c.Pi2(q1), spline.derivative(2)(m), rtol=0, atol=1e-15)
+            assert np.max(np.abs(c.Pi1(q1) - 1 / q.ratio_nominal)) == pytest.approx(1e-4 * 6, rel=0.02)
+    cols, rows = w.tables["dynamics"]
+    assert cols == ["position", "offset_mm", "M1_static_Nm", "M1_max_Nm", "M1_min_Nm", "torque_factor", "q2_pp_rad",
+                    "q3_pp_rad"]
+    assert rows == [[1, 0.0, 25.0, 27.0, 14.0, 27.0 / 25.0, 3e-4, 2e-4],
+                    [2, 9.0, 25.0, 28.0, 14.0, 28.0 / 25.0, 6e-4, 2e-4]]
+    assert w.derived["position1_dynamic_torque_factor"] == 27.0 / 25.0
+    assert w.derived["position2_dynamic_torque_factor"] == 28.0 / 25.0
+    J45 = 0.004 + 0.015 * 4.0
+    wn2 = eigh(np.diag([3e4, 1e4]), np.array([[0.0025 + J45, J45], [J45, J45]]), eigvals_only=True)
+    hz = [math.sqrt(v) / (2 * math.pi) for v in sorted(wn2)]
+    assert w.derived["dynamics_natural_frequencies_Hz"] == pytest.approx(hz, rel=1e-10)
+    assert w.notes == [
+        "Dynamics (eq. 9–11, Lagrange form, Π = the measured gear angle, hand-over corners of the measured "
+        f"transmission spread over one proof step): natural frequencies {hz[0]:.1f} Hz, {hz[1]:.1f} Hz; peak dynamic "
+        "torque factor max|M1|/M1_static position 1: 1.080, position 2: 1.120."]
+    assert list(w.plots) == ["dynamics"]
