@@ -1247,3 +1247,48 @@ def test_driving_corner_span_puts_the_driving_corners_on_the_gears_tip_circle(ch
             assert math.hypot(*(corner(u, beta) - O2)) == pytest.approx(geo.r_a2, abs=1e-9)
             assert math.hypot(*(corner(u + inward * 1e-6, beta) - O2)) < geo.r_a2
             assert math.hypot(*(corner(u - inward * 1e-6, beta) - O2)) > geo.r_a2
+
+
+def test_prove_position_at_e0_is_the_solid_pair_with_its_backlash():
+    """e = 0 (the sectors are the blank): 4 steps a pitch over the period π/3 (24 steps); the gear follows φ/i_n
+    within 2 µrad; the coast side's room is the backlash of two teeth thinned by 0.1 mm on the pitch circle,
+    0.2 mm/r2 = 3.333 mrad; no overlap; every step in contact, the contact points on the lines of action through
+    the pitch point (54, 0); the driving sector's pose is the actual pose; ε_s measured is eq. 4's; the proof's
+    poses are the tracked law's at the same angles."""
+    from propulsor.parts.polysector.contact_law import LawResult
+
+    dd = pd.design(_p(conditional_teeth=[36]))
+    q = dd.positions[0]
+    pr = mp.prove_position(dd, q, 4, 3e-4)
+    per = math.pi / 3
+    assert (pr.k, pr.period, pr.ratio_nominal, pr.chord_tol, pr.flows, pr.i_s) == (1, per, 40 / 36, 3e-4, 2, 3)
+    assert pr.r_ref == 60.0 * math.cos(math.radians(20.0))
+    assert np.allclose(pr.phi, np.arange(24) * per / 24, rtol=0, atol=1e-15) and len(pr.phi) == 24
+    assert np.array_equal(pr.theta_nominal, pr.phi / (40 / 36))
+    assert np.ptp(pr.te) < 2e-6
+    assert np.allclose(pr.coast_room, 0.2 / 60.0, rtol=0, atol=5e-6)
+    assert pr.overlap_flow.shape == (24, 2) and pr.overlap_flow.max() < 1e-9
+    assert pr.pairs.min() >= 1 and pr.pairs.max() <= 4
+    assert [len(c) for c in pr.contacts] == pr.pairs.tolist()
+    alpha = math.radians(20.0)
+    for here in pr.contacts:
+        for j, C in here:
+            off = min(abs(_cross((math.sin(alpha), s * math.cos(alpha)), C - [54.0, 0.0])) for s in (1.0, -1.0))
+            assert off < 0.03
+    assert np.all(np.hypot(*(pr.contact_points - [54.0, 0.0]).T) < 12.0)
+    assert sorted(pr.drive_theta) == [0, 2, 3, 5]
+    angles = [0.0, 2 * per, 4 * per, per, 3 * per, 5 * per]
+    for k in range(24):
+        j = int(pr.driver[k])
+        assert pr.drive_theta[j][k] == pr.theta[k]
+        assert all(not (v[k] > pr.theta[k]) for v in pr.drive_theta.values())
+        assert pr.driver_u[k] == pytest.approx(float(cl._wrap(angles[j] + pr.phi[k])), abs=1e-15)
+    assert set(pr.sectors_engaged.tolist()) <= {2, 3} and pr.sectors_engaged.mean() == pytest.approx(2.0 + 5 / 24)
+    ef, eb = pr.eps_s_measured()
+    assert (pr.u_enter, pr.u_exit) == pytest.approx(dd.geo.driving_span(0.0), abs=1e-12)
+    assert pr.phi1_measured == pr.u_exit - pr.u_enter
+    assert eb == pytest.approx(q.eps_s, abs=1e-9) and ef == pytest.approx(q.eps_s_flow, abs=1e-9)
+    assert isinstance(pr.law, LawResult) and pr.law.phi[0] == 0.0 and pr.law.phi[-1] == pytest.approx(per)
+    assert np.allclose(pr.law.theta[pr.law.at(pr.phi)], pr.theta, rtol=0, atol=1e-12)
+    it, di = pr.ratio_measured()
+    assert np.allclose(it, 40 / 36, rtol=1e-9) and np.allclose(di, 0.0, atol=1e-9)
