@@ -82,6 +82,9 @@ def test_synthesis_of_the_part_file_positions_by_their_closed_forms():
         assert (q.eps_s_flow, q.eps_s) == (ef, eb) and eb == pytest.approx(2 * ef, rel=1e-15)
         assert q.u_exit == geo.exit_angle(e)
     assert [round(q.eps_s, 4) for q in positions] == [2.1387, 1.7678, 1.4565]
+    # the rack's pressure angle reaches the geometry (25°: a larger base circle, another e_max)
+    geo25, _, e_max25 = pd.synthesis(_p(pressure_angle_deg=25.0))
+    assert geo25.alpha == math.radians(25.0) and e_max25 != pytest.approx(e_max, abs=0.1)
     # a position at 54 (e = 27 mm) is within e_max: accepted (the part file's note: it fails later, tip on tip)
     assert pd.synthesis(_p(conditional_teeth=[54]))[1][0].offset == 27.0
 
@@ -209,8 +212,8 @@ def test_layout_refuses_a_pin_hole_off_the_hub_disc_on_its_limit():
 
 
 def test_layout_guards_that_hold_by_construction(monkeypatch):
-    """The slot's end, the pin hole of the least offset and the stems meet the roots and the shaft only where the
-    layout's own sums would not hold: y_slot1 + d_bolt/2 = r_f − web, hypot(x_pin, y_pin + e_lo) − d_pin/2 − web
+    """The slot's end, the pin hole of the least offset and the stems cannot meet the roots and the shaft (their
+    refusals went as dead code): y_slot1 + d_bolt/2 = r_f − web, hypot(x_pin, y_pin + e_lo) − d_pin/2 − web
     >= shaft/2 + 2 web, y_end + e_lo = shaft/2 + 2 web, for any parameters (here three sets)."""
     for kw in ({}, dict(conditional_teeth=[48, 42], web_mm=2.5, shaft_d_mm=16.0, stem_width_mm=30.0),
                dict(module_mm=2.0, blank_teeth=48, sector_teeth=14, gear_teeth=30, conditional_teeth=[54, 60])):
@@ -260,10 +263,11 @@ def test_design_hands_on_the_outlines_of_the_library():
     _same_profile(dd.gear_profile, gear_prof)
     assert dd.sector_angles(1) == [0.0, third, 2 * third]
     assert dd.sector_angles(2) == pytest.approx([math.pi / 3, math.pi, 5 * math.pi / 3], abs=1e-15)
-    placed = dd.placed_sectors(positions[2], 2)
-    assert len(placed) == 3
-    for s, ang in zip(placed, dd.sector_angles(2)):
-        _same_profile(s, place(dd.sector, ang, 18.0))
+    for flow in (1, 2):
+        placed = dd.placed_sectors(positions[2], flow)
+        assert len(placed) == 3
+        for s, ang in zip(placed, dd.sector_angles(flow)):
+            _same_profile(s, place(dd.sector, ang, 18.0))
 
 
 def test_design_of_an_odd_sector_one_flow_no_keyways():
