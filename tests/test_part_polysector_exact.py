@@ -107,6 +107,10 @@ def test_synthesis_refusals_in_full_and_both_sides():
     assert _refusal(s, _p(flows=1, conditional_teeth=[36, 39])) == (
         "conditional_teeth[2] = 39: offset e = 4.5 mm is past the largest offset of eq. 1/3 (ε_s >= 1.05): "
         "e_max = 0.8597 mm (z_усл <= 36.57)")
+    # 0.26 mm past the largest offset (one flow of 11-tooth sectors: e_max = 4.2366 mm; z_усл = 39 is e = 4.5)
+    assert _refusal(s, _p(flows=1, sector_teeth=11, conditional_teeth=[36, 39])) == (
+        "conditional_teeth[2] = 39: offset e = 4.5 mm is past the largest offset of eq. 1/3 (ε_s >= 1.05): "
+        "e_max = 4.2366 mm (z_усл <= 38.82)")
     assert _refusal(s, _p(conditional_teeth=[60])) == (
         "conditional_teeth[1] = 60: offset e = 36 mm is past the largest offset of eq. 1/3 (ε_s >= 1.05): "
         "e_max = 28.2640 mm (z_усл <= 54.84)")
