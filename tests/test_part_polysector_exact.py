@@ -1300,3 +1300,24 @@ def test_prove_position_at_e0_is_the_solid_pair_with_its_backlash():
     assert np.allclose(pr.law.theta[pr.law.at(pr.phi)], pr.theta, rtol=0, atol=1e-12)
     it, di = pr.ratio_measured()
     assert np.allclose(it, 40 / 36, rtol=1e-9) and np.allclose(di, 0.0, atol=1e-9)
+
+
+def test_track_samples_every_grid_angle_of_an_uneven_grid_and_starts_from_theta0(monkeypatch):
+    """Grid 0, 0.1, 0.5: 0.1 is a sample, the step doubles to 0.2 (below the largest grid step 0.4); two grid
+    angles: one step;
+    a lost first pose leaves theta0 as the pose to go on from."""
+    fake = _FakeLaw(monkeypatch, theta=lambda x: x / 0.8)
+    law = cl.track(_fake_bodies(), np.array([0.0, 0.1, 0.5]), 0.0, step_min=0.01)
+    assert law.phi == pytest.approx([0.0, 0.1, 0.3, 0.5], abs=1e-15)
+    assert [c[2] for c in fake.calls] == pytest.approx([0.0, 0.1, 0.2, 0.2], abs=1e-15)
+    fake = _FakeLaw(monkeypatch, theta=lambda x: x / 0.8)
+    law = cl.track(_fake_bodies(), np.array([0.0, 0.2]), 0.0, step_min=0.01)
+    assert law.phi.tolist() == [0.0, 0.2] and fake.calls[1] == (0.2, 0.0, 0.2)
+    fake = _FakeLaw(monkeypatch, theta=lambda x: math.nan if x == 0.0 else x / 0.8)
+    law = cl.track(_fake_bodies(), np.array([0.0, 0.01]), 0.3, step_min=0.01)
+    assert fake.calls[1] == (0.01, 0.3, 0.01) and law.phi.tolist() == [0.0, 0.01]
+
+
+def test_snap_counts_a_step_of_exactly_the_finest_times_one_plus_1e_9():
+    step = 0.01 * (1 + 1e-9)
+    assert _res([0.0, step], [0.0, 0.5], [0, 0]).snap_max() == pytest.approx(0.5 - step / 0.8, abs=1e-15)
