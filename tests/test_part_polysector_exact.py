@@ -456,6 +456,16 @@ def test_pole_ratio_of_a_corner_on_an_involute_of_a_base_circle():
     for normal in ((1.0, 0.3), (1.0, -0.3)):
         assert cl.pole_ratio(C, O2, rb2, normal, a) == pytest.approx(_tangent_pole(C, O2, rb2, normal, a), rel=1e-12)
     assert cl.pole_ratio(C, O2, rb2, (1.0, 0.3), a) != pytest.approx(cl.pole_ratio(C, O2, rb2, (1.0, -0.3), a))
+    # every normal direction, those near the bisector of the two tangents included
+    for t in np.linspace(0.0, math.pi, 181)[:-1]:
+        n = (math.cos(t), math.sin(t))
+        for P, Q, r in ((C, O2, rb2), (np.array([30.0, 70.0]), np.array([5.0, -3.0]), 40.0)):
+            assert cl.pole_ratio(P, Q, r, n, a) == pytest.approx(_tangent_pole(P, Q, r, n, a), rel=1e-9)
+    # a corner exactly on the base circle: no tangent (nan) either way
+    assert math.isnan(cl.pole_ratio((40.0, 0.0), (0.0, 0.0), 40.0, (0.0, 1.0), a))
+    assert math.isnan(cl.pole_ratio([40, 0], [0, 0], 40.0, (0.0, 1.0), a))
+    assert cl.pole_ratio([70, 8], [132, 0], rb2, (1.0, 0.3), a) == pytest.approx(
+        cl.pole_ratio(C, O2, rb2, (1.0, 0.3), a), rel=1e-15)
     # on the base circle or inside it: no tangent
     assert math.isnan(cl.pole_ratio(O2 + [-rb2, 0.0], O2, rb2, (1.0, 0.0), a))
     assert math.isfinite(cl.pole_ratio(O2 + [-rb2 - 1e-6, 5.0], O2, rb2, (0.0, 1.0), a))
@@ -478,9 +488,10 @@ def test_flank_ratio_is_the_internal_common_tangents_pole():
     a = 140.0
     O2 = np.array([a, 0.0])
     H = (rb2 * Os + rb * O2) / (rb + rb2)
-    for normal in ((0.3, 1.0), (0.3, -1.0)):
+    for t in np.linspace(0.0, math.pi, 181)[:-1]:
+        normal = (math.cos(t), math.sin(t))
         assert cl.flank_ratio(Os, rb, O2, rb2, normal, a) == pytest.approx(_tangent_pole(H, Os, rb, normal, a),
-                                                                           rel=1e-10)
+                                                                           rel=1e-9)
     # base circles that touch or cross have no internal tangent
     assert math.isnan(cl.flank_ratio((0.0, 0.0), 50.0, (100.0, 0.0), 50.0, (0.0, 1.0), 100.0))
     assert math.isfinite(cl.flank_ratio((0.0, 0.0), 50.0, (100.0 + 1e-6, 0.0), 50.0, (1.0, 1.0), 100.0))
@@ -553,6 +564,10 @@ def test_refine_on_both_sides_of_each_limit():
     assert r(_s(0.0, 0.0, i_t=sec - 0.0081), _s(0.08, 0.1, i_t=sec - 0.0081), i_n, 1.0)
     assert not r(_s(0.0, 0.0, i_t=sec - 0.0079), _s(0.08, 0.1, i_t=sec - 0.0079), i_n, 1.0)
     assert not r(_s(0.0, 0.0, i_t=sec - 0.0158), _s(0.08, 0.1, i_t=sec + 0.0158), i_n, 1.0)  # the mean is sec
+    # exactly on each limit (binary-exact numbers): not refined
+    assert abs(0.625 - 0.25 / 0.5) == 0.125
+    assert not r(_s(0.0, 0.0, i_t=0.4), _s(0.25, 0.625, i_t=0.4), 0.5, 0.125)
+    assert r(_s(0.0, 0.0, i_t=0.4), _s(0.25, 0.625, i_t=0.4), 0.5, 0.1249999)
 
 
 class _FakeLaw:
@@ -612,6 +627,8 @@ def test_track_defaults_tip_ratios_and_lost_contact(monkeypatch):
     for k in i:
         dphi, dth = law.phi[k] - law.phi[k - 1], law.theta[k] - law.theta[k - 1]
         assert law.i_t[k] == pytest.approx(dphi / dth, rel=1e-12)
+        assert law.delta_i[k] == pytest.approx((0.8 - dphi / dth) / 0.8, rel=1e-12)
+    assert np.nanmax(law.delta_i) > 0.5  # the jump: the gear far ahead of φ/i_n
     assert np.isnan(law.i_t[~tips]).all()
     # the jump at 0.15 resolved to the finest step
     assert law.snap_max() == pytest.approx(0.05, abs=1e-3)
@@ -1323,3 +1340,20 @@ def test_track_samples_every_grid_angle_of_an_uneven_grid_and_starts_from_theta0
 def test_snap_counts_a_step_of_exactly_the_finest_times_one_plus_1e_9():
     step = 0.01 * (1 + 1e-9)
     assert _res([0.0, step], [0.0, 0.5], [0, 0]).snap_max() == pytest.approx(0.5 - step / 0.8, abs=1e-15)
+
+
+def test_outline_normals_at_the_line_of_action_twenty_degrees_on():
+    """e = 0 at φ = 20°, θ ≈ 0.31 rad: the gear's and the sector's outline normals at the contact point still lie
+    along a line of action (the frames turned both ways)."""
+    law, pos, out = _scan([36], 20.0, 20.1, -0.0017)
+    alpha = math.radians(20.0)
+    P = np.array([54.0, 0.0])
+    for s in out:
+        assert s.theta == pytest.approx(s.phi * 36 / 40 - 0.0016672, abs=2e-6) and s.kind == 0
+        j = s.driver
+        _, C = law.back_room(j, s.phi, s.theta + 1e-5, 2e-5)
+        lines = [np.array([math.sin(alpha), sg * math.cos(alpha)]) for sg in (1.0, -1.0)]
+        side = min(lines, key=lambda d: abs(_cross(d, C - P)))
+        assert abs(_cross(side, C - P)) < 0.03
+        for n in (law._normal_gear(C, s.theta), law._normal_sector(j, C, s.phi)):
+            assert abs(abs(float(n @ side)) - 1.0) < 1e-3
