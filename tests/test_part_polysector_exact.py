@@ -719,7 +719,9 @@ def test_contact_law_frames_and_engagement():
     # a step the gear cannot make free within two pitches ahead: no pose; half of it is made
     s0 = law.pose(0.0, -0.0027, 0.0)
     assert s0.theta == pytest.approx(-0.0016672, abs=2e-6)
-    assert math.isnan(law.pose(0.01, s0.theta, 0.01).theta)
+    lost = law.pose(0.01, s0.theta, 0.01)
+    assert math.isnan(lost.theta) and math.isnan(lost.i_t)
+    assert (lost.phi, lost.driver, lost.kind, lost.sectors) == (0.01, -1, 3, ())
     assert law.pose(0.005, s0.theta, 0.005).theta == pytest.approx(s0.theta + 0.005 / (40 / 36), abs=2e-6)
 
 
