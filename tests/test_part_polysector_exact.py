@@ -715,7 +715,7 @@ def test_contact_law_frames_and_engagement():
     assert any(len(v) == 2 for v in seen.values())
     # nothing engaged (e = 18 mm: sectors 1 and 6 only, at π and 2π/3): no pose
     s = cl.ContactLaw(_bodies(2)[2]).pose(math.pi, 0.0, 0.0)
-    assert math.isnan(s.theta) and (s.driver, s.kind, s.sectors) == (-1, 3, ()) and math.isnan(s.i_t)
+    assert math.isnan(s.theta) and (s.phi, s.driver, s.kind, s.sectors) == (math.pi, -1, 3, ()) and math.isnan(s.i_t)
     # a step the gear cannot make free within two pitches ahead: no pose; half of it is made
     s0 = law.pose(0.0, -0.0027, 0.0)
     assert s0.theta == pytest.approx(-0.0016672, abs=2e-6)
