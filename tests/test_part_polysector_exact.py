@@ -411,6 +411,7 @@ def test_position_bodies_of_the_part_file():
     assert r.min() >= 55.5 - 5e-3 and r.max() <= 63.0 + 1e-6 and len(b.gear.points) < len(full.points)
     # the margin on both sides of 0.2770: mid-lines −π/3 + π/3 = 0 ... the sectors at ±π/3 and −2π/3 come in
     assert sorted(cl.position_bodies(dd, pos, 1e-3, 0.27).sectors) == [0, 5]
+    assert sorted(cl.position_bodies(dd, pos, 1e-3).sectors) == [0, 5]  # the default margin, 0.05
     assert sorted(cl.position_bodies(dd, pos, 1e-3, 0.28).sectors) == [0, 2, 3, 5]
     # e = 0: u_exit = 1.139 takes four sectors with the default margin
     dd, pos, b = _bodies(0)
