@@ -114,8 +114,9 @@ def layout(p: PolysectorParams, geo, positions) -> object:
         raise InputError("conditional_teeth", list(p.conditional_teeth),
                          f"offset range {e_hi - e_lo:.4g} mm too large for the hub: the slot would reach the stem end "
                          f"(needs R_hub − shaft/2 = {R_hub - bore_r:.3f} mm >= {e_hi - e_lo + 2 * rb + 4 * web:.3f} mm)")
-    if y_slot1 + rb > r_f - web:
-        raise InputError("bolt_d_mm", p.bolt_d_mm, f"the slot reaches the tooth roots (r_f = {r_f:.3f} mm)")
+    # the slot's outer end lies a web below the roots by construction: y_slot1 + d_bolt/2 = R_hub − web − e_lo =
+    # r_f − web (its refusal, "the slot reaches the tooth roots", could only fire on rounding: a web of 3.1 mm at a
+    # least offset of 18 mm put the end 7e-15 mm too far out and refused a sound design)
     # pin beside the slot; its hub holes at y_pin + e_k must stay on the disc
     rp = p.pin_d_mm / 2.0
     x_pin = rb + web + rp
@@ -132,10 +133,8 @@ def layout(p: PolysectorParams, geo, positions) -> object:
         if b - a < 2 * rp + web:
             raise InputError("conditional_teeth", list(p.conditional_teeth),
                              f"offsets {a:.4g} and {b:.4g} mm: pin holes closer than d_pin + web = {2 * rp + web:g} mm")
-    if math.hypot(x_pin, y_pin + e_lo) - rp - web < bore_r:
-        raise InputError("shaft_d_mm", p.shaft_d_mm, "the pin hole of the least offset reaches the bore")
-    if y_end + e_lo < bore_r:
-        raise InputError("shaft_d_mm", p.shaft_d_mm, "the stems reach the shaft")
+    # the stems end 2 web outside the bore at the least offset (y_end + e_lo = shaft/2 + 2 web) and the pin hole
+    # beyond them: neither can reach the shaft
     return SectorLayout(r_rim=r_rim, w_stem=p.stem_width_mm, y_end=y_end, d_bolt=p.bolt_d_mm, y_slot0=y_slot0,
                         y_slot1=y_slot1, d_pin=p.pin_d_mm, x_pin=x_pin, y_pin=y_pin, R_hub=R_hub,
                         d_bore=p.shaft_d_mm, rho_bolt=rho_bolt)

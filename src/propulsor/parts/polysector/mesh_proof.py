@@ -100,11 +100,12 @@ def _driving_corner_span(dd, pos, chord_tol, r_a2, O2) -> tuple[float, float]:
                       pos.offset * math.sin(u) + geo.r_a * math.sin(u + beta0)])
         return bool(np.hypot(*(c - O2)) < r_a2)
 
-    def boundary(beta0, lo, hi):
-        e_lo = inside(beta0, lo)
+    def boundary(beta0, lo, hi, sgn=1.0):
+        """The wheel angle sgn·u, u in lo … hi, at which the corner crosses the tip circle (bisection)."""
+        e_lo = inside(beta0, sgn * lo)
         for _ in range(60):
             mid = 0.5 * (lo + hi)
-            if inside(beta0, mid) == e_lo:
+            if inside(beta0, sgn * mid) == e_lo:
                 lo = mid
             else:
                 hi = mid
@@ -116,7 +117,7 @@ def _driving_corner_span(dd, pos, chord_tol, r_a2, O2) -> tuple[float, float]:
     u_exit = boundary(trailing_inner, grid[k - 1], grid[k])
     ins = np.array([inside(leading_outer, -g) for g in grid])
     k = int(np.argmax(ins)) + int(np.argmax(~ins[int(np.argmax(ins)):]))
-    u_enter = -boundary(leading_outer, grid[k - 1], grid[k])
+    u_enter = -boundary(leading_outer, grid[k - 1], grid[k], -1.0)
     return u_enter, u_exit
 
 

@@ -135,9 +135,11 @@ def proof_results(dd: PolysectorDesign, w, built: dict) -> None:
     w.progress("proofs done")
     tol = policy.OVERLAP_AREA_TOL_MM2
     positions = []
+    # pragma: no mutate start (the figure only)
     fig, axes = new_figure(8.0, 7.0)
     fig.clf()
     ax1, ax2 = fig.add_subplot(2, 1, 1), fig.add_subplot(2, 1, 2)
+    # pragma: no mutate end
     for k, q in enumerate(dd.positions):
         pr = proofs[k]
         it, di = pr.ratio_measured()
@@ -191,9 +193,11 @@ def proof_results(dd: PolysectorDesign, w, built: dict) -> None:
                       int((pr.driver[i % len(pr.phi)] + (i // len(pr.phi))) % (p.flows * p.sectors_per_flow)) + 1,
                       int(pr.pairs[i % len(pr.phi)]), int(n_eng[i % len(pr.phi)]), TYPES[kinds[i % len(pr.phi)]]]
                      for i in range(len(phi_t))])
+        # pragma: no mutate start (the figure only)
         ax1.plot(np.degrees(law.phi), law.te * 1e3, lw=0.9, label=f"e = {q.offset:g} mm")
         ax2.plot(np.degrees(law.phi), law.delta_i, lw=0.9, label=f"measured, e = {q.offset:g} mm")
         ax2.plot(np.degrees(pr.phi), di_eq8, lw=0.7, ls="--", label=f"eq. 7/8 (flank), e = {q.offset:g} mm")
+        # pragma: no mutate end
         w.add_note(
             f"Position {q.k} (z_усл = {q.z_cond}, e = {q.offset:g} mm, a = {q.a:g} mm, i_n = {q.ratio_nominal:.5f}): "
             f"{len(pr.phi)} steps over one sector period, outlines within {pr.chord_tol:g} mm. ε_s measured "
@@ -206,12 +210,14 @@ def proof_results(dd: PolysectorDesign, w, built: dict) -> None:
             f"{policy.POLYSECTOR_SNAP_TOL_DEG:g}°); |Δi| up to {di_max:.3g} (pole of the contact normal), "
             f"{float(np.max(np.abs(di_eq8))):.3g} by eq. 7/8 for a flank contact of the driving sector at the same "
             f"steps ({eq7_max_di(dd, q):.3g} over its whole engagement); overlap {float(ov.max()):.2g} mm².")
+    # pragma: no mutate start (the figure only)
     ax1.set_ylabel("θ − φ/i_n, mrad")
     ax1.set_title("Composite gear: transmission error and ratio error over one sector period")
     ax1.legend(fontsize=7)
     ax2.set_xlabel("wheel angle φ, deg")
     ax2.set_ylabel("Δi = (i_n − i_t)/i_n")
     ax2.legend(fontsize=6, ncol=2)
+    # pragma: no mutate end
     w.add_plot("ratio_error", fig)
     w.derived["positions"] = positions
 
@@ -224,7 +230,9 @@ def position_error_step(dd: PolysectorDesign, w, built: dict) -> None:
     p, geo = dd.p, dd.geo
     rows = []
     worst = {}
+    # pragma: no mutate start (the figure only)
     fig, ax = new_figure()
+    # pragma: no mutate end
     for q in dd.positions:
         r_c = geo.r + q.offset
         ys = [r_c - p.module_mm, r_c - 0.5 * p.module_mm, r_c, r_c + 0.5 * p.module_mm]
@@ -236,18 +244,22 @@ def position_error_step(dd: PolysectorDesign, w, built: dict) -> None:
                              rr["y_sector"], rr["R"] * 1e3, rr["beta"]])
                 if math.isfinite(rr["R"]):
                     best = max(best, rr["R"])
+            # pragma: no mutate start (the figure only)
             if r_y == r_c:
                 ax.plot([rr["tooth"] + (0.15 if rr["flank"] == "right" else -0.15) for rr in res],
                         [rr["R"] * 1e3 for rr in res], "o", ms=3, label=f"e = {q.offset:g} mm")
+            # pragma: no mutate end
         worst[q.k] = best
         w.derived[f"position{q.k}_flank_deviation_max_um"] = best * 1e3
     w.add_table("tooth_position_error", ["position", "r_y_mm", "tooth", "flank", "x_cond_mm", "y_cond_mm",
                                          "x_sector_mm", "y_sector_mm", "R_um", "beta_rad"], rows)
+    # pragma: no mutate start (the figure only)
     ax.set_xlabel("tooth of the sector")
     ax.set_ylabel("R at r_y = r_усл, µm")
     ax.set_yscale("symlog", linthresh=1.0)
     ax.set_title("Tooth position error of a sector against the conditional gear (eq. 15–22)")
     ax.legend(fontsize=7)
+    # pragma: no mutate end
     w.add_plot("tooth_position_error", fig)
     w.add_note("Tooth position error (eq. 15–22): largest distance R between the sector's flank and the conditional "
                "gear's involute on circles r_y = r_усл − m … r_усл + m/2 about the wheel axis: "
@@ -334,9 +346,11 @@ def dynamics_step(dd: PolysectorDesign, w, built: dict) -> None:
     model = TorsionalModel(p.J1_kgm2, p.J2_kgm2, p.J3_kgm2, p.J4_kgm2, p.J5_kgm2, p.c1_Nm_per_rad, p.c2_Nm_per_rad,
                            p.i54, p.damping_ratio, p.load_torque_Nm)
     omega0 = p.speed_rpm * 2 * math.pi / 60.0
+    # pragma: no mutate start (the figure only)
     fig, axes = new_figure(8.0, 8.0)
     fig.clf()
     ax = [fig.add_subplot(3, 1, i) for i in (1, 2, 3)]
+    # pragma: no mutate end
     rows = []
     for k, q in enumerate(dd.positions):
         pr = built["proofs"][k]
@@ -354,18 +368,22 @@ def dynamics_step(dd: PolysectorDesign, w, built: dict) -> None:
         rows.append([q.k, q.offset, res.M1_static, float(res.M1.max()), float(res.M1.min()), res.torque_factor,
                      float(np.ptp(res.q2)), float(np.ptp(res.q3))])
         w.derived[f"position{q.k}_dynamic_torque_factor"] = res.torque_factor
+        # pragma: no mutate start (the figure only)
         lab = f"e = {q.offset:g} mm"
         ax[0].plot(res.t * 1e3, res.q2 * 1e3, lw=0.7, label=lab)
         ax[1].plot(res.t * 1e3, res.q3 * 1e3, lw=0.7, label=lab)
         ax[2].plot(res.t * 1e3, res.M1, lw=0.7, label=lab)
+        # pragma: no mutate end
     wn = model.natural_frequencies()
     w.derived["dynamics_natural_frequencies_Hz"] = [float(x / (2 * math.pi)) for x in wn]
+    # pragma: no mutate start (the figure only)
     ax[0].set_ylabel("q2, mrad")
     ax[1].set_ylabel("q3, mrad")
     ax[2].set_ylabel("M1, N·m")
     ax[2].set_xlabel("time over one wheel turn, ms")
     ax[0].set_title(f"Torsional model (eq. 9–11), {p.speed_rpm:g} rpm, M4 = {p.load_torque_Nm:g} N·m")
     ax[0].legend(fontsize=7)
+    # pragma: no mutate end
     w.add_plot("dynamics", fig)
     w.add_table("dynamics", ["position", "offset_mm", "M1_static_Nm", "M1_max_Nm", "M1_min_Nm", "torque_factor",
                              "q2_pp_rad", "q3_pp_rad"], rows)
