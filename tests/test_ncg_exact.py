@@ -875,6 +875,19 @@ def _circular_pair(**load):
     return p, pair_design(p)
 
 
+def _circular_drive_contact(pitches: float):
+    """``_circular_pair`` and its drive direction's as-built contact over ``pitches`` driven pitches from 0, sampled
+    every 0.5 deg of driver: (p, dd, pitch, contact law)."""
+    from propulsor.checks.motion.contact_events import DRIVE, resolve_contact
+    from propulsor.parts.noncircular_pair.as_built import pair_outlines
+
+    p, dd = _circular_pair()
+    pitch = 2 * math.pi / 40
+    cl = resolve_contact(pair_outlines(dd.d, dd.mount), dd.d.run_law.theta, 0.0, pitches * pitch, DRIVE,
+                         step_driver_rad=math.radians(0.5))
+    return p, dd, pitch, cl
+
+
 def test_load_per_tooth_of_a_circular_pair_by_hand():
     """The circular pair over 0.2 .. 1.0 of a driven pitch (driver 3.6 .. 18 deg) every 1 deg of driver (16 phases,
     0.96 deg apart) and the change from two pairs to one bisected 7 times: T1 = 50, T2 = T1 U eta = 97 N·m; the
@@ -1681,16 +1694,11 @@ def test_load_per_tooth_puts_each_wheels_force_on_its_line_of_action_against_its
     (te = -1.7e-3 rad: the driven wheel behind the law by half the backlash).
     Each resists the driver's turn and drives the driven wheel: its moment is -F r_b on both wheels (counter-clockwise
     positive in both body frames), to 1e-3 of it on the flanks (the polylines' facets)."""
-    from propulsor.checks.motion.contact_events import DRIVE, resolve_contact
     from propulsor.gears import tooth_load as tlm
-    from propulsor.parts.noncircular_pair.as_built import pair_outlines
     from propulsor.parts.noncircular_pair.tooth_load_outputs import analyse
 
-    p, dd = _circular_pair()
+    p, dd, pitch, cl = _circular_drive_contact(2)
     d = dd.d
-    pitch = 2 * math.pi / 40
-    cl = resolve_contact(pair_outlines(d, dd.mount), d.run_law.theta, 0.0, 2 * pitch, DRIVE,
-                         step_driver_rad=math.radians(0.5))
     seen = []
     real = tlm.root_stress
 
@@ -1735,16 +1743,11 @@ def test_load_per_tooth_puts_each_wheels_force_on_its_line_of_action_against_its
 def test_load_per_tooth_reports_the_forces_own_imbalance_against_the_driver_torque():
     """The equilibrium the load per tooth reports is |sum F l1 - T1| / T1 over the phases: with the load sharing
     made 1 % strong (every pair's force x 1.01), it is 0.01 to rounding at T1 = 50 N·m (not 0.01 T1^2)."""
-    from propulsor.checks.motion.contact_events import DRIVE, resolve_contact
     from propulsor.gears import tooth_load as tlm
-    from propulsor.parts.noncircular_pair.as_built import pair_outlines
     from propulsor.parts.noncircular_pair.tooth_load_outputs import analyse
 
-    p, dd = _circular_pair()
+    p, dd, pitch, cl = _circular_drive_contact(1)
     d = dd.d
-    pitch = 2 * math.pi / 40
-    cl = resolve_contact(pair_outlines(d, dd.mount), d.run_law.theta, 0.0, pitch, DRIVE,
-                         step_driver_rad=math.radians(0.5))
     real = tlm.share_load
 
     def strong(*a, **k):
