@@ -830,15 +830,18 @@ def test_law_checks_in_full_on_both_sides_of_their_limits():
 def test_prove_positions_proves_each_asked_position_at_its_chord(monkeypatch):
     mp = importlib.import_module("propulsor.parts.polysector.mesh_proof")
     calls = []
-    monkeypatch.setattr(mp, "prove_position", lambda dd, pos, spp, chord: calls.append((pos.k, spp, chord)) or pos.k)
+    monkeypatch.setattr(mp, "prove_position",
+                        lambda d, pos, spp, chord: calls.append((d is dd, pos.k, spp, chord)) or pos.k)
     dd = pd.design(_p())
     assert pp.prove_positions(dd, [2, 0]) == [3, 1]
-    assert calls == [(3, None, 1e-4), (1, None, 3e-5)]
+    assert calls == [(True, 3, None, 1e-4), (True, 1, None, 3e-5)]
 
 
 def test_start_proofs_in_two_workers_the_conjugate_first(monkeypatch):
     started = []
-    monkeypatch.setattr(pp, "start_in_fork", lambda fn, dd, ks: started.append((fn, ks)) or f"job{ks}")
+    designs = []
+    monkeypatch.setattr(pp, "start_in_fork",
+                        lambda fn, d, ks: started.append((fn, ks)) or designs.append(d) or f"job{ks}")
     dd = pd.design(_p(conditional_teeth=[42, 36, 48]))
     w, built = _said(), {}
     pp.start_proofs(dd, w, built)
@@ -846,6 +849,11 @@ def test_start_proofs_in_two_workers_the_conjugate_first(monkeypatch):
     # chords 1e-4, 3e-5, 1e-4: the conjugate one (index 1) first, the others in their order; alternately
     assert started == [(pp.prove_positions, [1, 2]), (pp.prove_positions, [0])]
     assert built == {"pending_proofs": [([1, 2], "job[1, 2]"), ([0], "job[0]")]}
+    assert len(designs) == 2 and all(d is dd for d in designs)
+    # four positions, chords 1e-4, 3e-5, 1e-4, 1e-4: (1, 2) and (0, 3) - every other one of the order to each
+    started.clear()
+    pp.start_proofs(pd.design(_p(conditional_teeth=[42, 36, 48, 54])), w, built)
+    assert started == [(pp.prove_positions, [1, 2]), (pp.prove_positions, [0, 3])]
     started.clear()
     pp.start_proofs(pd.design(_p(conditional_teeth=[48])), w, built)
     assert started == [(pp.prove_positions, [0])] and built["pending_proofs"] == [([0], "job[0]")]
@@ -1180,6 +1188,47 @@ def test_efficiency_step_on_contacts_along_the_line_of_action():
                        "measured i_t, sliding speed (ω1 + ω2)·l, power arm of the wheel): " + "; ".join(notes) + "."]
 
 
+def test_efficiency_step_at_a_measured_ratio_off_the_nominal_one():
+    """i_t = 1.05 i_n at every step: the pole P' = (a/(1 + i_t), 0), the working pressure angle cos α_wt =
+    r_b2/(a - P'_x).  Contacts on both tangents from P' to the gear's base circle (the drive and the coast line of
+    action), one 0.5 mm short of the tangent point, and one inside the base circle (no tangent: the radial line
+    through O2).  Each contact's ψ = f |l| (1 + 1/i_t)/h, l = its distance from P', h = O1's distance from its line
+    (P'_x cos α_wt on a line of action, a |sin β| on the radial line at polar angle β about O2); C1 = cos α_wt/cos α;
+    C2 = mean |l| over eq. 12's path average; C3 = C_ext C1/C2."""
+    from propulsor.gears.polysector_dynamics import loss_eq13
+
+    dd = pd.design(_p(conditional_teeth=[36], friction_coefficient=0.1))
+    (q,) = dd.positions
+    alpha, r_b2, a = math.radians(20.0), dd.geo.r_b2, q.a
+    i_t = 1.05 * q.ratio_nominal
+    P = np.array([a / (1 + i_t), 0.0])
+    cos_wt = r_b2 / (a - P[0])
+    a_wt = math.acos(cos_wt)
+    u_drive, u_coast = np.array([math.sin(a_wt), cos_wt]), np.array([math.sin(a_wt), -cos_wt])
+    s_T = (a - P[0]) * math.sin(a_wt)  # P' to the drive line's tangent point
+    beta = math.pi - 0.3
+    inside = np.array([a, 0.0]) + 0.9 * r_b2 * np.array([math.cos(beta), math.sin(beta)])
+    on_lines = [(u_drive, 2.0), (u_drive, -1.5), (u_coast, 0.75), (u_coast, -2.5), (u_drive, s_T - 0.5)]
+    contacts = [[(0, P + l * u) for u, l in on_lines[:2]], [(1, P + l * u) for u, l in on_lines[2:]], [(2, inside)]]
+    it = np.full(3, i_t)
+    pr = SimpleNamespace(ratio_measured=lambda: (it, 1 - it), contacts=contacts)
+    w = _said()
+    pp.efficiency_step(dd, w, {"proofs": {0: pr}})
+    (row,) = w.tables["efficiency"][1]
+    h_line = P[0] * cos_wt
+    ls = [abs(l) for _, l in on_lines] + [float(np.linalg.norm(inside - P))]
+    hs = [h_line] * len(on_lines) + [a * abs(math.sin(beta))]
+    psi = float(np.mean([0.1 * l * (1 + 1 / i_t) / h for l, h in zip(ls, hs)]))
+    r1 = 54.0 + q.offset
+    l1 = math.sqrt(63.0 ** 2 - (60 * math.cos(alpha)) ** 2) - 60 * math.sin(alpha)
+    l2 = math.sqrt((r1 + 3.0) ** 2 - (r1 * math.cos(alpha)) ** 2) - r1 * math.sin(alpha)
+    C1 = cos_wt / math.cos(alpha)
+    C2 = float(np.mean(ls)) / ((l1 * l1 + l2 * l2) / (2 * (l1 + l2)))
+    C_ext = psi / loss_eq13(0.1, row[3], q.z_cond, 40)
+    assert C1 < 0.99  # the working angle is off the nominal one
+    assert row[6:] == pytest.approx([psi, C1, C2, C_ext * C1 / C2, C_ext, 1 - psi], rel=1e-9)
+
+
 def test_dynamics_step_hands_the_measured_transmission_to_eq_9_11(monkeypatch):
     """The model of the part's inertias, stiffnesses, damping, i54 and load; q1 = ω0 t over one wheel turn (3000
     samples); Π' = 1/i_n + te'(q1 mod period) and Π'' = te'' of the periodic cubic spline through the period's
@@ -1247,7 +1296,7 @@ def test_dynamics_step_hands_the_measured_transmission_to_eq_9_11(monkeypatch):
         "Dynamics (eq. 9–11, Lagrange form, Π = the measured gear angle, hand-over corners of the measured "
         f"transmission spread over one proof step): natural frequencies {hz[0]:.1f} Hz, {hz[1]:.1f} Hz; peak dynamic "
         "torque factor max|M1|/M1_static position 1: 1.080, position 2: 1.120."]
-    assert list(w.plots) == ["dynamics"]
+    assert list(w.plots) == ["dynamics"] and len(w.plots["dynamics"].axes) == 3  # the figure drawn, handed on
 
 
 # --- mesh_proof.py -------------------------------------------------------------------------------------------------------
