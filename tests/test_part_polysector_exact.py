@@ -956,6 +956,10 @@ def test_synthesis_step_notes_of_one_flow_and_of_a_last_position_within_the_seed
     w = _said()
     pp.synthesis_step(hi, w, {})
     assert "the last has ε_s = 1.3000 — within the seed's 1.05 … 1.3." in w.notes[0]
+    lo = dataclasses.replace(dd, positions=(dataclasses.replace(dd.positions[1], eps_s=EPS_S_MIN),))
+    w = _said()
+    pp.synthesis_step(lo, w, {})
+    assert "the last has ε_s = 1.0500 — within the seed's 1.05 … 1.3." in w.notes[0]  # both ends inclusive
     hi = dataclasses.replace(dd, positions=(dataclasses.replace(dd.positions[1], eps_s=1.3001),))
     w = _said()
     pp.synthesis_step(hi, w, {})
@@ -996,7 +1000,7 @@ def test_position_error_step_against_eq_15_22_at_four_radii():
         "Tooth position error (eq. 15–22): largest distance R between the sector's flank and the conditional gear's "
         "involute on circles r_y = r_усл − m … r_усл + m/2 about the wheel axis: position 1: 0.0 µm, position 2: "
         "1517.1 µm (0 at e = 0, where the sector is the blank itself)."]
-    assert list(w.plots) == ["tooth_position_error"]
+    assert list(w.plots) == ["tooth_position_error"] and w.plots["tooth_position_error"].axes  # the figure handed on
 
 
 def _fake_proof(dd, q, eps_off=0.01, room=(0.003, 0.001, math.nan, 0.002)):
@@ -1040,7 +1044,7 @@ def test_proof_results_checks_tables_and_note_of_given_proofs():
     prs = [_fake_proof(dd, q) for q in dd.positions]
     w, built = _results(dd, prs)
     assert built == {"proofs": {0: prs[0], 1: prs[1]}}
-    assert w.said == ["proofs done"] and list(w.plots) == ["ratio_error"]
+    assert w.said == ["proofs done"] and list(w.plots) == ["ratio_error"] and w.plots["ratio_error"].axes
     assert len(w.checks) == 2 * 7
     for n, (q, pr) in enumerate(zip(dd.positions, prs)):
         c = w.checks[7 * n: 7 * n + 7]
