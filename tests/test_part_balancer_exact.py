@@ -493,6 +493,7 @@ def test_strength_proof_of_the_part_file():
     names = [c.name for c in w.checks]
     assert names[:5] == ["arm sigma_vM, beta_m elastic", "arm sigma_vM, beta_m + damper", "arm sigma_vM, stop",
                          "built depth - equal-strength depth", "least arm depth vs h_min"]
+    assert [c.unit for c in w.checks[:5]] == ["MPa", "MPa", "MPa", "mm", "mm"]
     for c, (name, v) in zip(w.checks[:3], sig.items()):
         k = int(np.argmax(v))
         assert c.value == pytest.approx(float(v.max()), rel=1e-12) and c.limit == pytest.approx(620.0 * (1 + 1e-9),
