@@ -1377,6 +1377,56 @@ def test_prove_position_at_e0_is_the_solid_pair_with_its_backlash():
     assert np.allclose(it, 40 / 36, rtol=1e-9) and np.allclose(di, 0.0, atol=1e-9)
 
 
+@pytest.mark.parametrize("changes", [{}, dict(gear_teeth=300), dict(gear_teeth=20),
+                                     dict(blank_teeth=300, sector_teeth=98, conditional_teeth=[300])])
+def test_the_proofs_gear_window_holds_every_gear_point_a_sector_can_reach(monkeypatch, changes):
+    """The proof cuts the gear's outline to an annular sector (body frame) before it turns the pair; it must hold
+    every gear point a sector can touch over the period.  A sector point lies within R1 = r_a + e of O1; a gear point
+    at radius rho (root to tip circle) turned by th (s2 = -1) sits at world angle beta - th about O2 = (a, 0) and is
+    within R1 of O1 when |beta - th - pi| <= arccos((a^2 + rho^2 - R1^2)/(2 a rho)); th runs over the period's
+    phi/i_n (+- the backlash, 0.01 rad here).  Gears of 20 and 300 teeth (the reach 0.50 to 0.053 rad), a blank of
+    300."""
+    import propulsor.checks.motion as cm
+    from propulsor import policy
+
+    class Cut(Exception):
+        pass
+
+    seen, sampled = [], []
+
+    def record(section, a0, a1, r_in, r_out):
+        assert section is sampled[-1][0].section  # the gear's own outline is cut
+        seen.append((a0, a1, r_in, r_out))
+        raise Cut
+
+    real_outline = cm.outline
+
+    def outline(body, *args):
+        o = real_outline(body, *args)
+        sampled.append((o, body, args))
+        return o
+
+    monkeypatch.setattr(cm, "crop_to_sector", record)
+    monkeypatch.setattr(cm, "outline", outline)
+    dd = pd.design(_p(**changes))
+    g, m = dd.geo, dd.p.module_mm
+    per = 2 * math.pi / (dd.p.flows * dd.p.sectors_per_flow)
+    for q in dd.positions:
+        with pytest.raises(Cut):
+            mp.prove_position(dd, q, 2, 3e-4)
+        a0, a1, r_in, r_out = seen[-1]
+        # the gear sampled at the proof's chord tolerance and the motion checks' longest segment
+        assert sampled[-1][1] is dd.gear_profile and sampled[-1][2] == (3e-4, policy.MOTION_MAX_SEGMENT_MM)
+        rho = np.linspace(g.r2 - 1.25 * m, g.r_a2, 401)
+        R1 = g.r_a + q.offset
+        reach = float(np.max(np.arccos(np.clip((q.a ** 2 + rho ** 2 - R1 ** 2) / (2 * q.a * rho), -1.0, 1.0))))
+        assert 0.0 < reach < 0.6
+        assert r_in <= g.r2 - 1.25 * m and r_out >= g.r_a2
+        assert a0 <= math.pi - reach - 0.01 and a1 >= math.pi + reach + per / q.ratio_nominal + 0.01
+        if reach + per / q.ratio_nominal < 2.0:  # the gear cut to a window, not kept whole (z2 = 40 and 300)
+            assert a1 - a0 < 2 * math.pi
+
+
 def test_track_samples_every_grid_angle_of_an_uneven_grid_and_starts_from_theta0(monkeypatch):
     """Grid 0, 0.1, 0.5: 0.1 is a sample, the step doubles to 0.2 (below the largest grid step 0.4); two grid
     angles: one step;
