@@ -1427,6 +1427,64 @@ def test_the_proofs_gear_window_holds_every_gear_point_a_sector_can_reach(monkey
             assert a1 - a0 < 2 * math.pi
 
 
+@pytest.mark.parametrize("changes", [{}, dict(gear_teeth=300), dict(flows=1, conditional_teeth=[36])])
+def test_the_proof_outlines_every_sector_that_reaches_the_gear_in_the_period(monkeypatch, changes):
+    """The proof turns only the sectors whose mid-line comes near the line of centres in the period; every sector
+    whose outline (placed at the position's offset, turned by phi over the period, 241 angles) comes inside the
+    gear's tip circle about O2 = (a, 0) must be among them, each sampled at the proof's chord tolerance and the motion
+    checks' longest segment.  Stopped at its first free rotation."""
+    import propulsor.checks.motion as cm
+    import propulsor.checks.motion.backlash as bl
+    import propulsor.geometry.polysector_outline as po
+    from propulsor import policy
+
+    class Turned(Exception):
+        pass
+
+    placed, sampled = [], []
+    real_place, real_outline = po.place, cm.outline
+
+    def place(profile, angle, offset):
+        placed.append((angle, offset))
+        return real_place(profile, angle, offset)
+
+    def outline(body, *args):
+        sampled.append((body, args))
+        return real_outline(body, *args)
+
+    def turned(*args, **kw):
+        raise Turned
+
+    monkeypatch.setattr(po, "place", place)
+    monkeypatch.setattr(cm, "outline", outline)
+    monkeypatch.setattr(bl, "free_rotation", turned)
+    dd = pd.design(_p(**changes))
+    per = 2 * math.pi / (dd.p.flows * dd.p.sectors_per_flow)
+    seg = policy.MOTION_MAX_SEGMENT_MM
+    for q in dd.positions:
+        placed.clear()
+        sampled.clear()
+        with pytest.raises(Turned):
+            mp.prove_position(dd, q, 2, 3e-4)
+        assert all(o == q.offset for _, o in placed)
+        outlined = {round(a, 12) for a, _ in placed}
+        assert len(outlined) == len(placed)
+        # the sector outlines (after the gear's two): at the proof's chord and segment
+        assert [args for _, args in sampled[2:]] == [(3e-4, seg)] * len(placed)
+        needed = set()
+        for f in range(1, dd.p.flows + 1):
+            for ang in dd.sector_angles(f):
+                pts = real_outline(real_place(dd.sector, ang, q.offset), 3e-4, seg).points
+                for ph in np.linspace(0.0, per, 241):
+                    c, s_ = math.cos(ph), math.sin(ph)
+                    P = pts @ np.array([[c, s_], [-s_, c]])
+                    if np.min(np.hypot(P[:, 0] - q.a, P[:, 1])) < dd.geo.r_a2:
+                        needed.add(round(ang, 12))
+                        break
+        assert needed and needed <= outlined
+        assert len(outlined) < dd.p.flows * dd.p.sectors_per_flow  # not every sector
+
+
 def test_track_samples_every_grid_angle_of_an_uneven_grid_and_starts_from_theta0(monkeypatch):
     """Grid 0, 0.1, 0.5: 0.1 is a sample, the step doubles to 0.2 (below the largest grid step 0.4); two grid
     angles: one step;
