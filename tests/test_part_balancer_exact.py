@@ -569,6 +569,33 @@ def test_strength_proof_of_a_body_thinner_than_the_boss():
         w.derived["sigma_vM_max_built_MPa"]["beta_m elastic"])
 
 
+def test_the_bodys_elastic_stress_leaves_out_the_boss_where_the_peak_is_there(monkeypatch):
+    """A stress peak put at the thickest station (in the boss: h >= 0.95 of the lower boss's diameter, 152 mm):
+    the body's elastic stress is the largest of the stations thinner than that, below the peak; the stations and
+    the stresses are handed on to the sweep as computed."""
+    from propulsor.laws.balancer_beam import BalancerAnalysis
+
+    real = BalancerAnalysis.stresses
+
+    def peaked(self, h):
+        sig = real(self, h)
+        k = int(np.argmax(h))
+        sig["beta_m elastic"] = sig["beta_m elastic"].copy()
+        sig["beta_m elastic"][k] = 900.0
+        return sig
+
+    monkeypatch.setattr(BalancerAnalysis, "stresses", peaked)
+    m = _model()
+    w, built = SaidWriter(), {}
+    bp.strength_proof(m, w, built)
+    h, sig = built["h_built"], built["sig"]["beta_m elastic"]
+    assert h.max() >= 0.95 * 2 * 80.0 and sig.max() == 900.0
+    body = float(np.max(sig[h < 152.0]))
+    assert body < 400.0 and w.derived["sigma_vM_body_elastic_built_MPa"] == body == built["body_el"]
+    assert w.derived["sigma_vM_max_built_MPa"]["beta_m elastic"] == 900.0
+    assert built["s"] is m.analysis.s or np.array_equal(built["s"], m.analysis.s)
+
+
 def test_socket_ear_pad_checks_are_their_formulas():
     m = _model()
     p, t, d = m.p, m.tor, m.design
