@@ -749,6 +749,68 @@ def test_travel_sweep_checks_name_the_least_gap_overall_and_a_varying_gap():
     assert D["min_clearance_overall_mm"] == 5.0 and D["min_clearance_overall_where"] == D["min_clearance_hull_where"]
 
 
+def test_travel_sweep_checks_steady_gap_overlap_count_and_ties():
+    """On the sweep's own result with given gaps: "the same at every step" only with at least two uncapped steps
+    whose gaps spread less than 0.01 mm (two equal: yes; one: no; a spread of exactly 0.01 or of 0.5: no); a step
+    overlapping exactly the tolerance is not counted; equal least gaps of two pairs name the first pair's place, and
+    a least pair gap equal to the own wheel's names the pair's."""
+    import copy
+
+    m = _model(steps_per_deg=0.1)
+    bal, wheel = _meshes(m)
+    base = bp.travel_sweep(m, bal, wheel)
+    tol = policy.OVERLAP_VOLUME_TOL_MM3
+
+    def run(edit):
+        res = copy.deepcopy(base)
+        edit(res)
+        w = SaidWriter()
+        bp.travel_sweep_checks(m, w, {"pending_sweep": _Done(res)})
+        return w
+
+    def hull_gaps(gaps, capped):
+        def edit(res):
+            h = res["pairs"]["hull"]
+            h["gap_mm"] = np.array(gaps, float)
+            h["capped"] = np.array(capped, bool)
+            h["worst_step"] = int(np.argmin(gaps))
+        return edit
+
+    n = len(base["beta"])
+    steady = "(the same at every step)"
+    two = [40.0] * n
+    two[2] = two[5] = 30.0
+    assert steady in run(hull_gaps(two, [i not in (2, 5) for i in range(n)])).checks[1].message
+    assert steady not in run(hull_gaps(two, [i != 2 for i in range(n)])).checks[1].message
+    spread = [40.0] * n
+    spread[2], spread[5] = 30.0, 30.01
+    msg = run(hull_gaps([0.0 if g == 30.0 else (0.01 if g == 30.01 else g) for g in spread],
+                        [i not in (2, 5) for i in range(n)])).checks[1].message
+    assert steady not in msg  # 0.0 and 0.01: a spread of exactly 0.01 mm
+    spread[5] = 30.5
+    assert steady not in run(hull_gaps(spread, [i not in (2, 5) for i in range(n)])).checks[1].message
+
+    def overlap_at_tol(res):
+        res["pairs"]["hull"]["overlap_mm3"] = np.where(np.arange(n) == 4, tol, 0.0)
+    c = run(overlap_at_tol).checks[0]
+    assert c.passed and c.message.endswith("; 0 steps overlap")
+
+    def tie(res):
+        for name in ("hull", "front"):
+            d = res["pairs"][name]
+            d["gap_mm"] = np.full(n, 50.0)
+            d["gap_mm"][d["worst_step"]] = 5.0
+    D = run(tie).derived
+    assert D["min_clearance_hull_mm"] == D["min_clearance_front_mm"] == 5.0
+    assert D["min_clearance_overall_where"] == D["min_clearance_hull_where"] != D["min_clearance_front_where"]
+
+    def own_tie(res):
+        tie(res)
+        res["own"] = (res["own"][0], 5.0)
+    D = run(own_tie).derived
+    assert D["min_clearance_overall_mm"] == 5.0 and D["min_clearance_overall_where"] == D["min_clearance_hull_where"]
+
+
 # ------------------------------------------------------------------------------------------ damper.py
 
 

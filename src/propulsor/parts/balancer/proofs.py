@@ -339,7 +339,7 @@ def travel_sweep_checks(m: BalancerModel, w, built: dict) -> None:
     from ...policy import OVERLAP_VOLUME_TOL_MM3 as tol
 
     labels = {"hull": "hull envelope", "front": "front neighbour station", "rear": "rear neighbour station"}
-    overall = (math.inf, "", None)
+    overall = (math.inf, None)  # the least gap of the pairs and where
     for name, dd in sw["pairs"].items():
         k = dd["worst_step"]
         pa, pb, dist = dd["where"]
@@ -357,7 +357,7 @@ def travel_sweep_checks(m: BalancerModel, w, built: dict) -> None:
         D[f"min_clearance_{name}_mm"] = gap
         D[f"min_clearance_{name}_where"] = where
         if gap < overall[0]:
-            overall = (gap, name, where)
+            overall = (gap, where)
     own_vol, own_gap = sw["own"]
     pa, pb, _ = sw["own_where"]
     w.add_checks([
@@ -369,7 +369,7 @@ def travel_sweep_checks(m: BalancerModel, w, built: dict) -> None:
     ])
     D["min_clearance_own_wheel_mm"] = own_gap
     D["min_clearance_overall_mm"] = min(overall[0], own_gap)
-    D["min_clearance_overall_where"] = (overall[2] if overall[0] <= own_gap else
+    D["min_clearance_overall_where"] = (overall[1] if overall[0] <= own_gap else
                                         f"own road wheel to balancer near {fmt_point(pa)} / {fmt_point(pb)} (balancer frame)")
     D["sweep_steps"] = len(betas)
     # analytic cross-checks of the envelope: fender over the wheel top at beta_m, wheel bottom at beta0
