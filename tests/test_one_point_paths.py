@@ -107,3 +107,37 @@ def test_envelope_one_point_equals_array():
                         hits += 1
     # the second spec's two shaper sides are re-phased (e = (x + x0) m = -0.8 mm): their tip rounds refused
     assert (hits, refused) == (2 * 2 * 4 * 2 * 9 - 2 * 2 * 9, 2 * 2)
+
+
+@pytest.mark.parametrize("law", list(_laws()), ids=lambda law: type(law).__name__)
+def test_arc_frame_phi_of_one_float_equals_the_array_path(law):
+    """ArcFrame.phi1 (one float, the envelope's tooth placement) evaluates the splines in plain Python: the same
+    float as ArcFrame.phi (scipy's compiled evaluation) at arc lengths over three legs either side of zero, on the
+    tabulated nodes (an interval's end) and between them; nan for nan."""
+    fr = ArcFrame(PitchCurves(law, 160.0))
+    rng = np.random.default_rng(11)
+    s = np.concatenate([rng.uniform(-3 * fr.leg, 3 * fr.leg, 3000), fr.S, fr.S + fr.leg, [0.0, fr.leg, -fr.leg]])
+    ref = fr.phi(s)
+    got = np.array([fr.phi1(float(x)) for x in s])
+    assert np.array_equal(got, ref)
+    assert fr.phi1(math.nan) is None
+
+
+def test_ppoly_of_one_float_is_scipys_evaluation_bit_for_bit():
+    """The plain-Python evaluation of a PPoly (pitch_frame._PPoly1) against scipy's on a Hermite spline and its
+    derivative: random points inside and outside (extrapolated by the end pieces), every break point and its two
+    neighbouring floats, nan."""
+    from scipy.interpolate import CubicHermiteSpline
+
+    from propulsor.gears.pitch_frame import _PPoly1
+
+    rng = np.random.default_rng(3)
+    x = np.unique(rng.uniform(-2.0, 3.0, 60))
+    sp = CubicHermiteSpline(x, rng.normal(size=len(x)), rng.normal(size=len(x)))
+    pts = np.concatenate([rng.uniform(-3.0, 4.0, 4000), x, np.nextafter(x, -np.inf), np.nextafter(x, np.inf)])
+    for pp in (sp, sp.derivative()):
+        f = _PPoly1(pp)
+        assert np.array_equal(np.array([f(float(v)) for v in pts]), pp(pts))
+        assert math.isnan(f(math.nan))
+    with pytest.raises(ValueError):
+        _PPoly1(CubicHermiteSpline(x, np.zeros((len(x), 2)), np.zeros((len(x), 2))))
