@@ -175,7 +175,8 @@ def run_tests(scratch: Path, files: list[str], timeout: float) -> tuple[str, flo
 def table(mutants: list[dict], res: dict) -> tuple[str, float]:
     groups: dict[tuple[int, str], list[int]] = {}
     for m in mutants:
-        g = groups.setdefault((round_of(m), m["group"]), [0, 0, 0, 0, 0])  # mutants, equivalent, killed, survived, stale
+        # mutants, equivalent, killed, survived, stale
+        g = groups.setdefault((round_of(m), m["group"]), [0, 0, 0, 0, 0])
         g[0] += 1
         st = res.get(m["id"], {}).get("status")
         if "equivalent" in m:
@@ -206,7 +207,8 @@ def report(mutants: list[dict], res: dict) -> float:
     for m in mutants:
         r = res.get(m["id"], {})
         if "equivalent" not in m and r.get("status") == "survived":
-            surv.append(f"{m['id']}  (round {round_of(m)})  {m['file']}:{m['line']}  ({m['why']})\n- {m['original'].strip()}\n"
+            surv.append(f"{m['id']}  (round {round_of(m)})  {m['file']}:{m['line']}  ({m['why']})\n"
+                        f"- {m['original'].strip()}\n"
                         f"+ {m['mutated'].strip()}\n  tests run: {' '.join(r.get('tests', []))}\n")
         if r.get("status") == "stale":
             print(f"STALE {m['id']}: the original text is no longer on {m['file']}:{m['line']}")
@@ -243,7 +245,8 @@ def main(argv=None) -> int:
             lines = (ROOT / m["file"]).read_text().split("\n")
             stale = len(lines) < m["line"] or lines[m["line"] - 1] != m["original"]
             t1, t2 = select_tests(m)
-            print(f"r{round_of(m)}", m["id"], "STALE |" if stale else "|", " ".join(Path(t).stem for t in t1), "||", " ".join(Path(t).stem for t in t2))
+            print(f"r{round_of(m)}", m["id"], "STALE |" if stale else "|", " ".join(Path(t).stem for t in t1), "||",
+                  " ".join(Path(t).stem for t in t2))
         return 0
     if a.report_only:
         return 0 if report(mutants, res) >= a.min else 1
