@@ -12,7 +12,9 @@ source alone (without reading the tests).  For each mutant this script
   each tier with ``-x``, tests marked sweep / slicer / browser left out, and a timeout (a timeout is a kill);
 * records killed (a failure, an error or a timeout) or survived (every selected test passed).
 
-A mutant with ``equivalent = "reason"`` is left out of the score.  The table per module group (mutants,
+A mutant with ``equivalent = "reason"`` is left out of the score.  Each mutant belongs to a round (``round = N``;
+none given: round 1): ``--round N`` runs, lists and reports the mutants of that round only (each round written
+blind, from the sources, after the previous one's gaps were closed).  The table per module group (mutants,
 equivalent, killed, survived, score = killed / (killed + survived)) is printed and written, with the survivors and
 their diffs, to ``.mutation/handmade/``.  Exit status 1 when the total score is below ``--min`` (90 %).
 
@@ -21,6 +23,7 @@ their diffs, to ``.mutation/handmade/``.  Exit status 1 when the total score is 
     python mutation/handmade.py --survivors     # re-run the survivors of the last run (after new tests)
     python mutation/handmade.py --report-only   # print the last results again
     python mutation/handmade.py --list          # the mutants and the tests each would run
+    python mutation/handmade.py --round 2 ...   # any of the above for the mutants of one round
 """
 from __future__ import annotations
 
@@ -47,6 +50,11 @@ MIN_SCORE = 90.0
 
 def load() -> list[dict]:
     return tomllib.loads(SPEC.read_text())["mutant"]
+
+
+def round_of(m: dict) -> int:
+    """The round a mutant was written in (round-1 entries carry no field)."""
+    return int(m.get("round", 1))
 
 
 def module_of(file: str) -> str:
@@ -165,9 +173,10 @@ def run_tests(scratch: Path, files: list[str], timeout: float) -> tuple[str, flo
 
 
 def table(mutants: list[dict], res: dict) -> tuple[str, float]:
-    groups: dict[str, list[int]] = {}
+    groups: dict[tuple[int, str], list[int]] = {}
     for m in mutants:
-        g = groups.setdefault(m["group"], [0, 0, 0, 0, 0])  # mutants, equivalent, killed, survived, stale
+        # mutants, equivalent, killed, survived, stale
+        g = groups.setdefault((round_of(m), m["group"]), [0, 0, 0, 0, 0])
         g[0] += 1
         st = res.get(m["id"], {}).get("status")
         if "equivalent" in m:
@@ -178,14 +187,16 @@ def table(mutants: list[dict], res: dict) -> tuple[str, float]:
             g[3] += 1
         elif st == "stale":
             g[4] += 1
-    rows = ["| group | mutants | equivalent | killed | survived | stale | score |", "|---|---|---|---|---|---|---|"]
+    rows = ["| round | group | mutants | equivalent | killed | survived | stale | score |",
+            "|---|---|---|---|---|---|---|---|"]
     tot = [0, 0, 0, 0, 0]
-    for name, g in groups.items():
+    for (rnd, name), g in groups.items():
         tot = [a + b for a, b in zip(tot, g)]
         sc = 100.0 * g[2] / (g[2] + g[3]) if g[2] + g[3] else float("nan")
-        rows.append(f"| {name} | {g[0]} | {g[1]} | {g[2]} | {g[3]} | {g[4]} | {sc:.1f} % |")
+        rows.append(f"| {rnd} | {name} | {g[0]} | {g[1]} | {g[2]} | {g[3]} | {g[4]} | {sc:.1f} % |")
     score = 100.0 * tot[2] / (tot[2] + tot[3]) if tot[2] + tot[3] else float("nan")
-    rows.append(f"| **total** | {tot[0]} | {tot[1]} | {tot[2]} | {tot[3]} | {tot[4]} | **{score:.1f} %** |")
+    rounds = "+".join(str(r) for r in sorted({r for r, _ in groups}))
+    rows.append(f"| {rounds} | **total** | {tot[0]} | {tot[1]} | {tot[2]} | {tot[3]} | {tot[4]} | **{score:.1f} %** |")
     return "\n".join(rows), score
 
 
@@ -196,7 +207,8 @@ def report(mutants: list[dict], res: dict) -> float:
     for m in mutants:
         r = res.get(m["id"], {})
         if "equivalent" not in m and r.get("status") == "survived":
-            surv.append(f"{m['id']}  {m['file']}:{m['line']}  ({m['why']})\n- {m['original'].strip()}\n"
+            surv.append(f"{m['id']}  (round {round_of(m)})  {m['file']}:{m['line']}  ({m['why']})\n"
+                        f"- {m['original'].strip()}\n"
                         f"+ {m['mutated'].strip()}\n  tests run: {' '.join(r.get('tests', []))}\n")
         if r.get("status") == "stale":
             print(f"STALE {m['id']}: the original text is no longer on {m['file']}:{m['line']}")
@@ -214,6 +226,7 @@ def main(argv=None) -> int:
     ap.add_argument("--survivors", action="store_true", help="re-run the survivors of the last run")
     ap.add_argument("--report-only", action="store_true")
     ap.add_argument("--list", action="store_true")
+    ap.add_argument("--round", type=int, default=None, help="only the mutants of this round (no field: round 1)")
     ap.add_argument("--timeout", type=float, default=600.0, help="seconds per test tier (a timeout is a kill)")
     ap.add_argument("--min", type=float, default=MIN_SCORE)
     a = ap.parse_args(argv)
@@ -222,11 +235,18 @@ def main(argv=None) -> int:
     ids = [m["id"] for m in mutants]
     if len(set(ids)) != len(ids):
         raise SystemExit("duplicate mutant ids in handmade.toml")
+    if a.round is not None:
+        mutants = [m for m in mutants if round_of(m) == a.round]
+        if not mutants:
+            raise SystemExit(f"no mutant of round {a.round} in handmade.toml")
     res = json.loads(RESULTS.read_text()) if RESULTS.exists() else {}
     if a.list:
         for m in mutants:
+            lines = (ROOT / m["file"]).read_text().split("\n")
+            stale = len(lines) < m["line"] or lines[m["line"] - 1] != m["original"]
             t1, t2 = select_tests(m)
-            print(m["id"], "|", " ".join(Path(t).stem for t in t1), "||", " ".join(Path(t).stem for t in t2))
+            print(f"r{round_of(m)}", m["id"], "STALE |" if stale else "|", " ".join(Path(t).stem for t in t1), "||",
+                  " ".join(Path(t).stem for t in t2))
         return 0
     if a.report_only:
         return 0 if report(mutants, res) >= a.min else 1
