@@ -49,7 +49,18 @@ MIN_SCORE = 90.0
 
 
 def load() -> list[dict]:
-    return tomllib.loads(SPEC.read_text())["mutant"]
+    """The mutants, each at the line that holds its original text now: its own line, else the one line of the file
+    that holds that text exactly (an edit above it moved it; ``moved_from`` keeps the written line); a text found on
+    no line or on several stays at its line and is reported stale."""
+    mutants = tomllib.loads(SPEC.read_text())["mutant"]
+    for m in mutants:
+        lines = (ROOT / m["file"]).read_text().split("\n")
+        if len(lines) >= m["line"] and lines[m["line"] - 1] == m["original"]:
+            continue
+        hits = [i + 1 for i, line in enumerate(lines) if line == m["original"]]
+        if len(hits) == 1:
+            m["moved_from"], m["line"] = m["line"], hits[0]
+    return mutants
 
 
 def round_of(m: dict) -> int:
