@@ -428,6 +428,32 @@ def test_travel_sweep_of_the_arm_and_its_wheel():
     assert bp.sweep_job(m, bal, wheel)["own"] == pytest.approx(res["own"])
 
 
+def test_travel_sweep_window_progress_timing_and_the_wheels_pieces(monkeypatch):
+    """The search window is max(2 min_clearance, 20 mm): 24 mm at a 12 mm clearance (the collar 12 mm); the build is
+    told the bodies swept against, 0 to 3 of 3; each timing is the time it took (0 to a minute); the wheel is every one
+    of its pieces in whatever order they come (the hub, the nearest to the arm, given second: 12 mm); a mesh that is
+    not a closed 2-manifold is refused naming the balancer's or the wheel's mesh."""
+    import propulsor.parallel as par
+    from propulsor.errors import InputError as Refused
+
+    told = []
+    monkeypatch.setattr(par, "tick", lambda done, total: told.append((done, total)))
+    m = _model(steps_per_deg=0.1, min_clearance_mm=12.0, lower_collar_mm=12.0)
+    bal, wheel = _meshes(m)
+    res = bp.travel_sweep(m, bal, [wheel[1], wheel[0]] + wheel[2:])
+    assert res["window_mm"] == 24.0
+    assert told == [(0, 3), (1, 3), (2, 3), (3, 3)]
+    assert all(0.0 <= v < 60.0 for v in res["timing_s"].values())
+    assert res["own"] == pytest.approx((0.0, 12.0), abs=1e-3)
+    V, F = bal
+    with pytest.raises(Refused) as e:
+        bp.travel_sweep(m, (V, F[:-1]), wheel)
+    assert str(e.value).startswith("balancer mesh = ")
+    with pytest.raises(Refused) as e:
+        bp.travel_sweep(m, bal, [wheel[0], (wheel[1][0], wheel[1][1][:-1])])
+    assert str(e.value).startswith("wheel mesh = ")
+
+
 def test_exact_gaps_of_a_capped_pair():
     """Two cubes 50 mm apart at every step (a window of 20 mm caps them): the hull's gap is searched with a growing
     window at 13 spread steps; a neighbour's near its closest axes and at the same 13 steps."""
