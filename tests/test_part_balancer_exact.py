@@ -454,6 +454,45 @@ def test_travel_sweep_window_progress_timing_and_the_wheels_pieces(monkeypatch):
     assert str(e.value).startswith("wheel mesh = ")
 
 
+def test_travel_sweep_of_close_neighbours_is_the_gap_of_the_neighbours_pose():
+    """Stations 148 mm closer than the part file's (dataclasses.replace of the model's pitch): the neighbours' wheels
+    come within the 20 mm window at some steps (one of them 19.5 mm: within a millimetre of the window, still exact),
+    so their gaps come from the 3D sweep itself, not the exact search.
+    At every step the sweep measured, its gap is manifold3d's least distance between the unit at beta and the
+    neighbour's unit at its own travel angle, placed at +-pitch (made here: the same meshes, the wheel at R_b on the
+    hub face); the hull's gap is the arm face's 22 mm, not a neighbour's."""
+    import dataclasses as dc
+
+    from propulsor.solids.kernel import manifold
+
+    m0 = _model(steps_per_deg=0.1)
+    m = dc.replace(m0, pitch=m0.pitch - 148.0)
+    bal, wheel = _meshes(m)
+    res = bp.travel_sweep(m, bal, wheel)
+    W = res["window_mm"]
+    wheel_T = bp._rz(0.0, (m.p.R_b_mm, 0.0, m.z_hub))
+    unit = manifold(bal)
+    for wm in wheel:
+        unit = unit + manifold(wm).transform(np.ascontiguousarray(wheel_T[:3]))
+
+    def at(beta, x):
+        return unit.transform(np.ascontiguousarray(bp._rz(beta - math.pi / 2, (x, 0.0, 0.0))[:3]))
+
+    assert res["pairs"]["hull"]["gap_mm"] == pytest.approx(np.full(len(res["beta"]), 22.0), abs=1e-6)
+    inside, near_window = 0, False
+    for name, x in (("front", m.pitch), ("rear", -m.pitch)):
+        d = res["pairs"][name]
+        for k, b in enumerate(res["beta"]):
+            if d["gap_mm"][k] >= W - 1e-9:
+                continue
+            inside += 1
+            g = float(at(b, 0.0).min_gap(at(d["neighbour_beta"][k], x), W))
+            assert d["gap_mm"][k] == pytest.approx(g, abs=1e-6), (name, k)
+            assert not d["capped"][k]
+            near_window = near_window or W - 1.0 <= g
+    assert inside >= 3 and near_window
+
+
 def test_exact_gaps_of_a_capped_pair():
     """Two cubes 50 mm apart at every step (a window of 20 mm caps them): the hull's gap is searched with a growing
     window at 13 spread steps; a neighbour's near its closest axes and at the same 13 steps."""
