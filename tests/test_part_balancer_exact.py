@@ -491,6 +491,11 @@ def test_travel_sweep_of_close_neighbours_is_the_gap_of_the_neighbours_pose():
             assert not d["capped"][k]
             near_window = near_window or W - 1.0 <= g
     assert inside >= 3 and near_window
+    for name in ("front", "rear"):  # the least gap's place: its points as far apart as the gap, at the least step
+        d = res["pairs"][name]
+        k = d["worst_step"]
+        assert k == int(np.argmin(d["gap_mm"])) and d["gap_mm"][k] < W
+        assert d["where"][2] == pytest.approx(d["gap_mm"][k], abs=1e-3)
 
 
 def test_exact_gaps_of_a_capped_pair():
