@@ -148,9 +148,10 @@ mutation: $(STAMP)
 	$(BIN)/python mutation/run.py $(if $(MODULE),--module $(MODULE))
 
 # the hand-made one-line mutants of issue 36 (mutation/handmade.toml, written without reading the tests), each against
-# the test files that name its module; the score per module group (mutation/README.md, «Hand-made mutants»; ~20 min)
+# the test files that name its module; the score per module group (mutation/README.md, «Hand-made mutants»; ~15-25 min
+# a round; ROUND=1 or ROUND=2 runs one round, both by default)
 mutation-handmade: $(STAMP)
-	$(BIN)/python mutation/handmade.py
+	$(BIN)/python mutation/handmade.py $(if $(ROUND),--round $(ROUND))
 
 clean:
 	rm -rf $(OUT)/*/ $(DEPS) $(OUT)/.built $(QUEUE) .pytest_cache .hypothesis .benchmarks site
