@@ -387,6 +387,16 @@ def test_which_body_is_nearest():
     assert bp._which(m, down, math.pi / 2, bal, wheel) != "balancer"
     tread = np.array([315.0, -360.0, zt])  # the tyre's tread at β = 0: the wheel axis at (0, −R_b)
     assert bp._which(m, tread, 0.0, bal, wheel) == "wheel tyre_1"
+    # an arm vertex on its outboard face (z = 30) under the wheel's disc (z from 40): the arm, at 0 mm; a point 1 mm
+    # above it, still nearer the arm's vertex than the disc's; 2 mm below a vertex of the disc's inboard face, the disc
+    hub_r = m.wheel.r_hub
+    under = V[np.isclose(V[:, 2], 30.0) & (np.hypot(V[:, 0] - 360.0, V[:, 1]) < hub_r - 5.0)]
+    assert len(under)
+    assert bp._which(m, under[0], math.pi / 2, bal, wheel) == "balancer"
+    assert bp._which(m, under[0] + [0.0, 0.0, 1.0], math.pi / 2, bal, wheel) == "balancer"
+    k = int(np.argmin(np.hypot(wheel[0][0][:, 0], wheel[0][0][:, 1]) + np.abs(wheel[0][0][:, 2])))
+    hub_v = wheel[0][0][k] + [360.0, 0.0, m.z_hub]  # a vertex of the hub's inboard face, balancer frame
+    assert bp._which(m, hub_v - [0.0, 0.0, 2.0], math.pi / 2, bal, wheel) == "wheel disc"
 
 
 def test_travel_sweep_of_the_arm_and_its_wheel():

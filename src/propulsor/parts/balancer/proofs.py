@@ -197,12 +197,9 @@ def _which(m: BalancerModel, point_world, beta, bal_mesh, wheel_meshes) -> str:
         return "?"
     T = _rz(beta - math.pi / 2)
     q = np.linalg.solve(T, np.append(point_world, 1.0))[:3]  # balancer frame
-    best, name = math.inf, "?"
-    d = cKDTree(bal_mesh[0]).query(q)[0]
-    if d < best:
-        best, name = d, "balancer"
+    best, name = cKDTree(bal_mesh[0]).query(q)[0], "balancer"
     qw = q - np.array([m.p.R_b_mm, 0.0, m.z_hub])
-    for nm, (V, F) in zip(m.extras.get("wheel_names", []), wheel_meshes):
+    for nm, (V, F) in zip(m.extras["wheel_names"], wheel_meshes):  # resolve names every wheel solid
         d = cKDTree(V).query(qw)[0]
         if d < best:
             best, name = d, f"wheel {nm}"
