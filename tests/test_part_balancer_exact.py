@@ -541,10 +541,20 @@ def test_exact_gaps_of_a_capped_pair():
             w = min(cdist[k] - 630.0, g_min) + 1.0
             assert exact[k] == pytest.approx(min(far[k] - 10.0, w))
     assert lower == {k for k in cand if k not in (5, 6, 7, 8, 9) and far[k] - 10.0 >= 101.0 - 1e-9}
+    # a later step 100.5 mm apart: within its window of 101 mm, so exact (not a lower bound)
+    far[0] = 110.5
+    exact, lower = bp._exact_gaps(m, 1.0, cdist, pose_a, pose_b, 20.0)
+    assert exact[0] == pytest.approx(100.5) and 0 not in lower
+    far[0] = 60.0
     # the closest axes at the first step: the steps around it start at 0
     cdist = np.array([700.0 + k for k in range(20)])
     exact, _ = bp._exact_gaps(m, 1.0, cdist, pose_a, pose_b, 20.0)
     assert {0, 1, 2} <= set(exact) and 3 not in set(exact) - set(cand)
+    # step 0 among them: searched with its own bound (70 mm), not the least gap found (55 mm at steps 1 and 2)
+    far[:3] = [75.0, 65.0, 65.0]
+    exact, lower = bp._exact_gaps(m, 1.0, cdist, pose_a, pose_b, 20.0)
+    assert exact[0] == pytest.approx(65.0) and exact[1] == pytest.approx(55.0) and 0 not in lower
+    far[:3] = [60.0, 70.0, 80.0]
     cdist = np.array([700.0 - k for k in range(20)])
     exact, _ = bp._exact_gaps(m, 1.0, cdist, pose_a, pose_b, 20.0)
     assert {17, 18, 19} <= set(exact) and 16 in exact
