@@ -366,6 +366,15 @@ def test_hull_envelope_plates_and_bore():
     assert hull.volume() == pytest.approx(expected, rel=2e-4)
     lo, hi = np.asarray(hull.bounding_box()[:3]), np.asarray(hull.bounding_box()[3:])
     assert lo == pytest.approx([-X, -H - 30.0, zs - 600.0]) and hi == pytest.approx([X, yf + 30.0, z_out])
+    # the bore is coaxial with the torsion axis: 0.3 mm inside its radius, in four directions at mid-plate, empty;
+    # 0.3 mm outside, the plate
+    from propulsor.solids.kernel import manifold_cube
+
+    r = 0.5 * p.hull_bore_d_mm
+    for c, s_ in ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0)):
+        for rr, solid in ((r - 0.3, False), (r + 0.3, True)):
+            probe = manifold_cube([0.05, 0.05, 0.05], [rr * c - 0.025, rr * s_ - 0.025, zs - 15.0])
+            assert ((hull ^ probe).volume() > 0.0) is solid, (c, s_, rr)
 
 
 def test_which_body_is_nearest():
