@@ -211,11 +211,11 @@ def prove_position(dd, pos, steps_per_pitch: int | None = None, chord_tol: float
     npairs = {j: np.zeros(n, int) for j in cand}
     cpt = {j: np.full((n, 2), np.nan) for j in cand}
     eng = {j: np.zeros(n, bool) for j in cand}
-    last_mid: dict = {}
+    placed: set = set()  # the sectors placed free at the step before
     for k in range(n):
         for j in cand:
             if not engaged(j, phi[k]):
-                last_mid.pop(j, None)
+                placed.discard(j)
                 continue
             eng[j][k] = True
             # starts, each tested for overlap (a free rotation from inside the gear finds a false contact): just on
@@ -225,7 +225,7 @@ def prove_position(dd, pos, steps_per_pitch: int | None = None, chord_tol: float
             # side is open (a sector entering) it lies a tooth away, and an extrapolation of it landed inside the gear
             # at e = 0 (seed 003's part, 2 steps a pitch): its false contact, 0.2 mm off, lost two of four tooth pairs
             starts = []
-            if j in last_mid:
+            if j in placed:
                 d1 = drive[j][k - 1]
                 inset = 0.5 * min(coast[j][k - 1] - d1, 3e-3)
                 if k >= 2 and np.isfinite(drive[j][k - 2]):
@@ -233,8 +233,7 @@ def prove_position(dd, pos, steps_per_pitch: int | None = None, chord_tol: float
                 starts.append((d1 + (theta_n[k] - theta_n[k - 1]) + inset, 2e-3))
             else:
                 starts.append((te_estimate(j, phi[k]), 2e-3))
-            res = None
-            for start, w0 in starts:
+            for start, w0 in starts:  # at least one
                 res = sector_free(j, phi[k], start, w0)
                 if res is not None and math.isfinite(res[0]) and math.isfinite(res[1]):
                     break
@@ -249,10 +248,10 @@ def prove_position(dd, pos, steps_per_pitch: int | None = None, chord_tol: float
                         continue
                     break
             if res is None or not (math.isfinite(res[0]) and math.isfinite(res[1])):
-                last_mid.pop(j, None)
+                placed.discard(j)
                 continue
             drive[j][k], coast[j][k], npairs[j][k], cpt[j][k] = res
-            last_mid[j] = 0.5 * (res[0] + res[1])
+            placed.add(j)
     D = np.vstack([drive[j] for j in cand])
     C = np.vstack([coast[j] for j in cand])
     theta = np.nanmax(D, axis=0)
