@@ -764,3 +764,51 @@ def test_the_root_bound_widens_its_window_by_a_sample_for_a_crest_at_its_edge():
     samples = r(np.arange(65) * dphi)
     assert crest > 44.9 and float(samples[6]) + float(np.max(np.abs(np.diff(samples)))) < crest
     assert crest <= root_bound(pc, "driver", 2.0, 64) <= crest + 2 * 3.5
+
+
+def test_a_given_bore_is_refused_on_the_pitch_curves_with_the_bound_it_reaches():
+    """Stand-in pitch curves of constant radius (circles: the root bound is the radius itself), m = 2, a rim of one
+    module: the driver (r = 50) takes a plain bore below 96 mm and refuses 96 (48 >= 48, the limit itself); the driven
+    wheel (r_H = 24.5) refuses a keyed 40 mm bore (DIN 6885-1, 38-44 mm: t2 = 3.3 mm; 23.3 >= 22.5) and takes a keyed
+    30 mm one (over 30-38 mm: t2 = 3.3; 18.3 < 22.5); of two candidate curves (r = 50 and 55) a bore is refused only
+    where it reaches the root on both (the larger bound, 55); a bore of 1 mm on a 0.9 mm curve (m = 0.5) is refused;
+    none given or 0: nothing checked."""
+    import numpy as np
+
+    from propulsor.errors import InputError
+    from propulsor.parts.noncircular_pair.bores import check_given_on_pitch_curves
+
+    def circle(r, r_H):
+        return SimpleNamespace(r=lambda phi: np.full_like(phi, r), r_H=lambda phi: np.full_like(phi, r_H),
+                               ds_dphi=lambda phi: np.full_like(phi, 30.0))
+
+    def part(driver=None, driven=None, keyway=False):
+        return SimpleNamespace(driver_bore_mm=driver, driven_bore_mm=driven, keyway=keyway)
+
+    pc = circle(50.0, 24.5)
+    check_given_on_pitch_curves(part(95.9), pc, 2.0)
+    with pytest.raises(InputError) as e:
+        check_given_on_pitch_curves(part(96.0), pc, 2.0)
+    assert (e.value.parameter, e.value.value) == ("driver_bore_mm", 96.0)
+    assert e.value.limit == ("bore must stay one module inside the root, which lies inside the pitch curve: bore/2 + "
+                             "t2 = 48.000 mm >= 48.000 mm (the driver's largest pitch radius within a pitch of its "
+                             "least, 50.000 mm, less 2.000 mm)")
+    assert e.value.hint.endswith("; leave driver_bore_mm out to size it from the gear")
+    check_given_on_pitch_curves(part(driven=30.0, keyway=True), pc, 2.0)
+    with pytest.raises(InputError) as e:
+        check_given_on_pitch_curves(part(driven=40.0, keyway=True), pc, 2.0)
+    assert (e.value.parameter, e.value.value) == ("driven_bore_mm", 40.0)
+    assert e.value.limit == ("bore + keyway must stay one module inside the root, which lies inside the pitch curve: "
+                             "bore/2 + t2 = 23.300 mm >= 22.500 mm (the driven's largest pitch radius within a pitch "
+                             "of its least, 24.500 mm, less 2.000 mm)")
+    # candidates: refused only on the larger bound
+    check_given_on_pitch_curves(part(105.9), [circle(50.0, 24.5), circle(55.0, 24.5)], 2.0)
+    with pytest.raises(InputError) as e:
+        check_given_on_pitch_curves(part(106.0), [circle(50.0, 24.5), circle(55.0, 24.5)], 2.0)
+    assert "bore/2 + t2 = 53.000 mm >= 53.000 mm" in e.value.limit and "55.000 mm, less 2.000 mm" in e.value.limit
+    with pytest.raises(InputError) as e:
+        check_given_on_pitch_curves(part(1.0), circle(0.9, 0.9), 0.5)
+    assert "bore/2 + t2 = 0.500 mm >= 0.400 mm" in e.value.limit and "0.900 mm, less 0.500 mm" in e.value.limit
+    for none in (None, 0.0):
+        check_given_on_pitch_curves(part(none, none, True), circle(0.9, 0.9), 0.5)
+    check_given_on_pitch_curves(part(400.0), [], 2.0)  # no curves: nothing to check against
