@@ -812,3 +812,31 @@ def test_a_given_bore_is_refused_on_the_pitch_curves_with_the_bound_it_reaches()
     for none in (None, 0.0):
         check_given_on_pitch_curves(part(none, none, True), circle(0.9, 0.9), 0.5)
     check_given_on_pitch_curves(part(400.0), [], 2.0)  # no curves: nothing to check against
+
+
+def test_the_bores_of_a_design_as_given_or_sized_with_their_keyways():
+    """bores(p, d) on a stand-in design (least root radii 60 and 30 mm, m = 2): a bore given is kept as given (not
+    sized), keyed only where the part file keys it and the bore is not 0; one left out is sized from its gear; a given
+    bore 0.5 mm under the rim limit taken, at the limit refused (check_given: a plain bore, d/2 < r_f - m; a 0.9 mm one
+    on a 0.9 mm root at m = 0.5 refused, 0 never checked)."""
+    from propulsor.errors import InputError
+    from propulsor.parts.noncircular_pair.bores import Bore, bores, check_given, size_bore
+
+    d = SimpleNamespace(driver=SimpleNamespace(root_min_radius=60.0), driven=SimpleNamespace(root_min_radius=30.0),
+                        m=2.0)
+
+    def part(driver, driven, keyway):
+        return SimpleNamespace(driver_bore_mm=driver, driven_bore_mm=driven, keyway=keyway)
+
+    drv, dvn = bores(part(40.0, None, False), d)
+    assert drv == Bore(40.0, False, False) and drv.sized is False and drv.keyway is False
+    assert dvn == size_bore(30.0, 2.0, False) and dvn.sized is True
+    drv, dvn = bores(part(40.0, 0.0, True), d)
+    assert drv == Bore(40.0, True, False) and dvn == Bore(0.0, False, False)
+    check_given("driven_bore_mm", 55.0, False, 30.0, 2.0)  # 27.5 < 28
+    with pytest.raises(InputError) as e:
+        check_given("driven_bore_mm", 56.0, False, 30.0, 2.0)
+    assert e.value.limit == "bore must stay one module inside the root: bore/2 + t2 = 28.000 mm >= 28.000 mm"
+    with pytest.raises(InputError):
+        check_given("driven_bore_mm", 0.9, False, 0.9, 0.5)  # 0.45 >= 0.4
+    check_given("driven_bore_mm", 0.0, True, 1.4, 0.5)
