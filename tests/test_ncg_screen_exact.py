@@ -840,3 +840,18 @@ def test_the_bores_of_a_design_as_given_or_sized_with_their_keyways():
     with pytest.raises(InputError):
         check_given("driven_bore_mm", 0.9, False, 0.9, 0.5)  # 0.45 >= 0.4
     check_given("driven_bore_mm", 0.0, True, 1.4, 0.5)
+
+
+def test_the_note_on_the_bores_sized_names_each_sized_bore_and_its_rule():
+    """The report's note: nothing where the part file gives both bores; each bore sized from its gear named with its
+    key and its rule, joined with "and no" and "; "."""
+    from propulsor.parts.noncircular_pair.bores import Bore, sized_derived, sized_note
+
+    given, a, b = Bore(40.0, True, False), Bore(30.0, True, True, "30 mm: rule A"), Bore(0.0, False, True, "no bore: B")
+    assert sized_note((given, given)) == "" and sized_derived((given, given)) == {}
+    assert sized_note((a, b)) == ("Bores sized from the gear (the part file gives no driver_bore_mm and no "
+                                  "driven_bore_mm; give one to choose it): driver 30 mm: rule A; driven no bore: B.")
+    assert sized_note((given, b)) == ("Bores sized from the gear (the part file gives no driven_bore_mm; give one to "
+                                      "choose it): driven no bore: B.")
+    assert sized_note((a, given)).startswith("Bores sized from the gear (the part file gives no driver_bore_mm; give")
+    assert sized_derived((a, b)) == {"driver_bore_mm": 30.0, "driven_bore_mm": 0.0}
