@@ -114,6 +114,13 @@ def test_a_given_blend_with_a_hand_over_value_scales_u(monkeypatch):
     assert sm.L == pytest.approx(math.pi * 2.5 * 80 / float(perimeter_per_mm(sl)), rel=1e-12)
     assert sm.delta == math.radians(10.0) and sm.generability.ok
     assert seen[0][2] == _cutter() and seen[0][0] == sl
+    # a hand-over value below 1 (0.98 u) is a value too, not "none": the blend checked for generability carries it
+    # (refused at 10 deg, which does not matter here)
+    from propulsor.errors import InputError
+
+    with pytest.raises(InputError):
+        _smoothing(_seed002(smoothing_deg=10.0, blend_hand_over=0.98), law, 2.5)
+    assert seen[-1][0].u_h == pytest.approx(0.98 * law.u, rel=1e-15)
 
 
 def test_the_cutter_takes_the_catalogue_shaper_or_the_part_files_own_shift(monkeypatch):
