@@ -86,6 +86,17 @@ def _meshes(m):
 # ------------------------------------------------------------------------------------------ design.py
 
 
+def test_resolve_hands_the_part_files_beam_values_to_the_library():
+    """The beam model takes the part file's values, not the library's defaults (which equal the part file's own, so
+    only changed values tell): the reference depth, the hull bearing centres, the equal-strength depth's bounds, the
+    stop load factor, the yield, the safety; the damper ear on the arm's mid-plane (e_a = 0)."""
+    m = _model(h_ref_mm=130.0, a2_mm=210.0, h_min_mm=45.0, h_max_mm=380.0, k_stop=2.5, yield_MPa=900.0, safety=1.6)
+    g, an = m.geom, m.analysis
+    assert (g.h, g.a2, g.h_min, g.h_max, g.e_a) == (130.0, 210.0, 45.0, 380.0, 0.0)
+    assert (an.k_stop, an.sigma_yield, an.safety) == (2.5, 900.0, 1.6)
+    assert an.geom is g and an.sigma_allow == pytest.approx(900.0 / 1.6, rel=1e-15)
+
+
 def test_suspension_of_the_part_file_is_the_seeds():
     p = _params()
     d = bd.suspension_design(p)
