@@ -253,6 +253,11 @@ def test_resolve_refuses_an_ear_and_a_pad_off_the_arm():
     assert _refusal(stop_pad_length_mm=40.0, s_stop_mm=200.0) == (
         "stop_pad_length_mm = 40.0: must exceed 2 × smoothing_mm = 40 mm (flat face)")
     assert _model(stop_pad_length_mm=41.0, s_stop_mm=200.0).pad[:2] == (179.5, 220.5)
+    # both ends of the stop pad's room: its blend may not reach a boss (x0 - 20 > 90, x1 + 20 < 280; a 50 mm pad)
+    for s_ok in (135.5, 234.5):
+        assert _model(stop_pad_length_mm=50.0, s_stop_mm=s_ok).pad[:2] == (s_ok - 25.0, s_ok + 25.0)
+    for s_no in (135.0, 235.0):
+        assert _refusal(stop_pad_length_mm=50.0, s_stop_mm=s_no).startswith(f"s_stop_mm = {s_no}: the stop pad")
     assert _refusal(s_stop_mm=400.0) == "s_stop_mm = 400.0: stop pad must lie on the arm, <= R_b = 360 mm"
     assert _refusal(damper_reading="literal") == (
         "i_a = 0.453: damper ear arm L_a = 794.7 mm lies beyond the balancer R_b = 360 mm (reading 'literal')")
