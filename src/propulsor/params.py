@@ -141,6 +141,10 @@ def check_fields(obj) -> None:
             object.__setattr__(obj, f.name, checked)
 
 
+#: the attribute in which ``parts.pipeline.design_of`` keeps the designs of a parameter object (outside its fields)
+DESIGN_STORE = "_propulsor_designs"
+
+
 class PartParams:
     """Base of the part types' parameter dataclasses: constructing one in any way (directly, from a dict,
     from a part file, with ``dataclasses.replace``) checks every field (:func:`check_fields`), so a value
@@ -149,6 +153,10 @@ class PartParams:
 
     def __post_init__(self) -> None:
         check_fields(self)
+
+    def __getstate__(self) -> dict:
+        """The fields only (pickle, ``copy``): the designs computed from them (``pipeline.STORE``) stay behind."""
+        return {k: v for k, v in self.__dict__.items() if k != DESIGN_STORE}
 
     def applies(self, name: str) -> bool:
         """Whether the input `name` applies to this design (is listed in the report and the manifest).

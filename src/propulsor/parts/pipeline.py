@@ -18,23 +18,26 @@ The design is computed once per parameter values (:func:`design_of`): where vali
 parameters computes it (final drive, road wheel, the balancer's suspension, a cam with a given law)
 the build gets that same object; where the design is a long generation or search (non-circular
 teeth, the cam law search) ``validate()`` checks the inputs only, so that the build's size estimate
-bounds the work before it starts, and the build computes the design.  The designs are kept beside
-the parameter objects, not in them: the parameters stay plain values.
+bounds the work before it starts, and the build computes the design.  The designs are kept with the
+parameter object (a private attribute, :data:`STORE`, outside its fields: not compared, not printed, not pickled or
+copied), so they go with it: a design holds its parameters, so a store beside them (a dict by ``id``, dropped when
+they die) kept every design a long-lived process ever made — a study's worker grew by each variant's design (the
+final drive's 0.36 MB, a whole pair's far more) until it was out of memory.
 """
 
 from __future__ import annotations
 
 import copy
-import weakref
 from dataclasses import dataclass
 from typing import Callable, Sequence
 
-from ..params import params_to_dict
+from ..params import DESIGN_STORE, params_to_dict
 
 __all__ = ["design_of", "Pipeline"]
 
-#: id(parameter object) -> [(key, design)], dropped with the parameter object
-_DESIGNS: dict[int, list] = {}
+#: the attribute of a parameter object that holds its designs: [(key, design)] (a cycle through the design, which
+#: holds its parameters: freed with them by the garbage collector)
+STORE = DESIGN_STORE
 #: (design callable, parameters, writer) of the design a forked process computes (read there: the fork
 #: copies it; nothing is pickled on the way in)
 _APART = None
@@ -55,10 +58,11 @@ def design_of(params, design_fn: Callable, *args, progress=None):
 
 
 def _store_of(params) -> list:
-    if id(params) not in _DESIGNS:
-        _DESIGNS[id(params)] = []
-        weakref.finalize(params, _DESIGNS.pop, id(params), None)
-    return _DESIGNS[id(params)]
+    store = params.__dict__.get(STORE)
+    if store is None:
+        store = []
+        object.__setattr__(params, STORE, store)  # frozen dataclasses too: outside the fields
+    return store
 
 
 def _design_in_child(fd: int | None = None):
@@ -71,7 +75,7 @@ def _design_in_child(fd: int | None = None):
 
         w.progress = Reporter(forward_events(fd))
     d = design(params, w)
-    return d, _DESIGNS.get(id(params), [])
+    return d, params.__dict__.get(STORE, [])
 
 
 def design_apart(design: Callable, params, w):
