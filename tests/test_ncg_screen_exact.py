@@ -343,7 +343,8 @@ def test_screen_asks_the_shaper_the_concave_wheel_needs_under_the_part_files_key
         raise InputError("z0", self.z0, "cannot be made")
 
     monkeypatch.setattr(ToothSpec, "shaper_tools", tools)
-    p = _seed002(smoothing_deg=10.0, tip_land_min_module=0.3, tip_height_max_module=1.1, backlash_mm=0.2)
+    p = _seed002(smoothing_deg=10.0, tip_land_min_module=0.3, tip_height_max_module=1.1, backlash_mm=0.2,
+                 rack_profile="D")
     with pytest.raises(InputError) as e:
         screen(p)
     assert str(e.value) == "shaper_teeth = 20: cannot be made"
@@ -351,6 +352,7 @@ def test_screen_asks_the_shaper_the_concave_wheel_needs_under_the_part_files_key
     assert (t.x, t.m, t.z0, t.shaper) == (-0.5, 2.5, 20, None)
     assert t.thinning_mm == pytest.approx(0.2 / (2 * math.cos(math.radians(20.0))), rel=1e-15)
     assert t.tip_min_mm == pytest.approx(0.75) and t.tip_max_mm == pytest.approx(2.75) and t.rack == rack_of(p)
+    assert t.rack != ToothSpec(x=0.0, m=2.5).rack  # the file's rack D (its fillet 0.39 m), not the spec's default
     with pytest.raises(InputError) as e:
         screen(_seed002(smoothing_deg=10.0, shaper_d0_mm=50.0, shaper_teeth=23))
     assert str(e.value) == "shaper_d0_mm = 20: cannot be made" and asked[-1].shaper is not None
@@ -558,8 +560,8 @@ def test_feasible_checks_the_given_bores_on_the_pitch_curves_the_screen_settled(
     sl = _law()
     scr["now"] = Screen(2.0, smoothing=SimpleNamespace(law=sl, L=120.0))
     feasibility.feasible(p, "SRC")
-    ((_, pc, m),) = checked
-    assert (pc.law, pc.L, m) == (sl, 120.0, 2.0)
+    ((q0, pc, m),) = checked
+    assert q0 is p and (pc.law, pc.L, m) == (sl, 120.0, 2.0)  # the file's bores, on the blend's pitch curves
     for (drv, dvn), want in (((16.0, 40.0), 1), ((0.0, 40.0), 1), ((16.0, None), 1), ((None, None), 0),
                              ((0.0, 0.0), 0)):
         kw = dict(driver_bore_mm=drv, driven_bore_mm=dvn)
@@ -862,3 +864,144 @@ def test_the_note_on_the_bores_sized_names_each_sized_bore_and_its_rule():
                                       "choose it): driven no bore: B.")
     assert sized_note((a, given)).startswith("Bores sized from the gear (the part file gives no driver_bore_mm; give")
     assert sized_derived((a, b)) == {"driver_bore_mm": 30.0, "driven_bore_mm": 0.0}
+
+
+def test_an_unknown_rack_profile_is_refused_under_the_part_files_key():
+    from propulsor.errors import InputError
+    from propulsor.parts.noncircular_pair.cutting import rack_of
+
+    with pytest.raises(InputError) as e:
+        rack_of(SimpleNamespace(rack_profile="E", pressure_angle_deg=20.0))  # ISO 53 has A to D
+    assert e.value.parameter == "rack_profile" and e.value.value == "E" and "ISO 53" in e.value.limit
+
+
+def test_the_files_own_shaper_is_refused_under_the_files_keys_and_a_d0_below_a_millimetre_asks_the_catalogue():
+    """shaper_d0_mm = 0 (none): the own shaper of shaper_teeth and shaper_x0, whose refusals name those keys (the
+    cutter's z0 and x0); any d0 > 0, however small, is the catalogue's to accept or refuse."""
+    from propulsor.errors import InputError
+    from propulsor.parts.noncircular_pair.cutting import shaper_of
+
+    own = dict(shaper_d0_mm=0.0, shaper_own_x0=True, pressure_angle_deg=20.0, shaper_teeth=17, shaper_x0=0.2)
+    with pytest.raises(InputError) as e:
+        shaper_of(SimpleNamespace(**{**own, "shaper_teeth": 5}), 2.0)
+    assert (e.value.parameter, e.value.value) == ("shaper_teeth", 5)
+    with pytest.raises(InputError) as e:
+        shaper_of(SimpleNamespace(**{**own, "shaper_x0": math.nan}), 2.0)
+    assert e.value.parameter == "shaper_x0" and math.isnan(e.value.value)
+    with pytest.raises(InputError) as e:
+        shaper_of(SimpleNamespace(shaper_d0_mm=0.5, shaper_own_x0=False, pressure_angle_deg=20.0), 2.0)
+    assert (e.value.parameter, e.value.value) == ("shaper_d0_mm", 0.5)
+
+
+def test_a_two_lobe_elliptical_pair_is_the_law_of_its_driver_turns():
+    from propulsor.laws.ratio_laws import EllipticalLaw
+    from propulsor.parts.noncircular_pair.cutting import law_of
+
+    p = _part("ncg_elliptical_2lobe")
+    assert p.law == "elliptical" and p.driver_turns == 2
+    assert law_of(p) == EllipticalLaw(p.eccentricity, 2) and law_of(p).k == 2
+
+
+def test_a_mounting_distance_below_a_millimetre_is_refused_like_any_other_below_L():
+    from propulsor.errors import InputError
+    from propulsor.parts.noncircular_pair.cutting import mounting_fits
+
+    with pytest.raises(InputError) as e:
+        mounting_fits(SimpleNamespace(mounting_distance_mm=0.5), 100.0)
+    assert e.value.parameter == "mounting_distance_mm" and e.value.value == 0.5
+
+
+def test_the_pair_is_cut_driver_beside_driven_here_with_the_driven_wheels_teeth_counted(monkeypatch):
+    """The driver's outline goes to ``parallel.start`` (a forked worker), which is handed on so that each wheel may
+    fit half its teeth in one more; the driven wheel is cut here, its teeth counted through the build's reporter as
+    the step "generated: the driven wheel's teeth cut and fitted" in steps."""
+    import propulsor.geometry.noncircular_outline as outline_module
+    import propulsor.parallel as parallel
+    from propulsor.parts.noncircular_pair.cutting import generate_pair
+    from propulsor.policy import SPLINE_FIT_TOL_MM
+    from propulsor.progress import Reporter
+
+    calls, started = [], []
+
+    def gear(pc, role, spec, frame, tol, start=None, tick=None):
+        calls.append((pc, role, spec, frame, tol, start, tick))
+        if tick is not None:
+            tick(3, 10)
+        return f"outline of the {role}"
+
+    def start(fn, *args):
+        started.append(fn)
+        return SimpleNamespace(result=lambda: fn(*args))
+
+    monkeypatch.setattr(outline_module, "generate_gear", gear)
+    monkeypatch.setattr(parallel, "start", start)
+    said = []
+    got = generate_pair("PC", "SPEC1", "SPEC2", "FRAME", Reporter(said.append))
+    assert got == ("outline of the driver", "outline of the driven")
+    assert started[0] is gear
+    driver = next(c for c in calls if c[1] == "driver")
+    driven = next(c for c in calls if c[1] == "driven")
+    assert driver[:6] == ("PC", "driver", "SPEC1", "FRAME", SPLINE_FIT_TOL_MM, start) and driver[6] is None
+    assert driven[:6] == ("PC", "driven", "SPEC2", "FRAME", SPLINE_FIT_TOL_MM, start)
+    assert [str(e) for e in said] == ["generated: the driven wheel's teeth cut and fitted: step 3/10"]
+    assert (said[0].phase, said[0].done, said[0].total) == ("generated: the driven wheel's teeth cut and fitted", 3, 10)
+    # without a reporter nothing is counted (and nothing breaks)
+    calls.clear()
+    generate_pair("PC", "SPEC1", "SPEC2", "FRAME", None)
+    assert next(c for c in calls if c[1] == "driven")[6] is None
+
+
+def test_a_module_below_a_millimetre_is_the_files_and_a_centre_distance_below_one_scales_the_module_to_it():
+    """module_mm = 0.8 (>= ISO 54's 0.05): kept, the blend's L that of 0.8 mm; center_distance_mm = 0.9 mm (module
+    0): the module that closes L = 0.9 mm (the design is scale invariant: L = pi m z_H / perimeter per mm)."""
+    from propulsor.gears.noncircular import SmoothedWalkingLaw, perimeter_per_mm
+    from propulsor.parts.noncircular_pair.feasibility import screen
+
+    per = float(perimeter_per_mm(SmoothedWalkingLaw(_law(), math.radians(10.0))))
+    s = screen(_seed002(smoothing_deg=10.0, module_mm=0.8))
+    assert s.m == 0.8 and s.smoothing.L == pytest.approx(math.pi * 0.8 * 80 / per, rel=1e-12)
+    s = screen(_seed002(smoothing_deg=10.0, module_mm=0.0, center_distance_mm=0.9))
+    assert s.m == pytest.approx(0.9 * per / (math.pi * 80), rel=1e-12)
+    assert s.smoothing.L == pytest.approx(0.9, rel=1e-12) and s.smoothing.cutter == _cutter(m=s.m)
+
+
+def test_the_sector_table_takes_a_given_centre_distance_below_a_millimetre():
+    from propulsor.parts.noncircular_pair.feasibility import sector_design_table
+
+    table, L, m = sector_design_table(_part("ncg_seed002", method="sectors", center_distance_mm=0.9))
+    assert (L, m, table.L) == (0.9, 2.5, 0.9)
+
+
+def test_the_largest_sector_module_below_a_millimetre():
+    """Seed 002's sector table at a tenth of its L: its teeth a tenth as wide; the largest module with a land, the
+    root of the thinner land, lies below 1 mm."""
+    from propulsor.gears.sectors import sector_table, sector_tip_thickness
+    from propulsor.parts.noncircular_pair.feasibility import _largest_sector_module, sector_design_table
+
+    table, L, _ = sector_design_table(_part("ncg_seed002", method="sectors"))
+    small = sector_table(_law(), 0.1 * L, table.i)
+    land = lambda mm: min(sector_tip_thickness(small, mm, 0.016))  # noqa: E731
+    assert land(0.2) > 0 > land(0.5)
+    root = _root(land, 0.2, 0.5)
+    got = _largest_sector_module(small, 0.016, 1.0)
+    assert root < 1.0 and got == pytest.approx(root, rel=1e-13, abs=0)
+
+
+def test_the_law_search_takes_the_shapers_the_catalogue_lists_at_the_module_past_those_it_lacks(monkeypatch):
+    """At 3 mm the catalogue has no 25 mm shaper (its first) but the four larger ones: the search is handed those; at
+    0.8 mm it has none: refused as such (the module is given)."""
+    from propulsor.errors import InputError
+    from propulsor.gears import law_search
+    from propulsor.gears.catalogue import shaper_diameters, shaper_entry
+    from propulsor.parts.noncircular_pair.feasibility import screen
+
+    asked = []
+    res = SimpleNamespace(points=[SimpleNamespace(L=150.0)])
+    monkeypatch.setattr(law_search, "search_law", lambda *a: asked.append(a) or res)
+    with pytest.raises(InputError):
+        shaper_entry(shaper_diameters()[0], 3.0)
+    s = screen(_part("ncg_seed002", module_mm=3.0))
+    assert [e.d0_mm for e in s.entries] == [38.0, 50.0, 75.0, 100.0] == [d for d, _ in asked[0][4]]
+    with pytest.raises(InputError) as e:
+        screen(_part("ncg_seed002", module_mm=0.8))
+    assert str(e.value) == "module_mm = 0.8: the cutter catalogue lists no shaper at this module"

@@ -77,11 +77,11 @@ def law_of(p: NoncircularPairParams, source=None):
 
 
 def rack_of(p) -> BasicRack:
-    """The ISO 53 rack of the part file's profile at its pressure angle (``gears.catalogue``)."""
+    """The ISO 53 rack of the part file's profile at its pressure angle (``gears.catalogue``; its refusal names the
+    part file's key, ``rack_profile``, itself)."""
     from ...gears.catalogue import rack_profile
 
-    with input_names({"rack_profile": "rack_profile"}):
-        return rack_profile(p.rack_profile, math.radians(p.pressure_angle_deg))
+    return rack_profile(p.rack_profile, math.radians(p.pressure_angle_deg))
 
 
 def shaper_of(p, m: float):

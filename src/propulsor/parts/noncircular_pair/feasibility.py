@@ -100,7 +100,7 @@ def screen(p: NoncircularPairParams, source=None) -> Screen:
     sm = _smoothing(p, law, m)
     if p.center_distance_mm > 0:  # module from L: the design is scale invariant (rho and limits ~ m)
         m *= p.center_distance_mm / sm.L
-        sm = _smoothing(_replace(p, module_mm=m, center_distance_mm=0.0), law, m)
+        sm = _smoothing(p, law, m)  # the blend reads the module it is given, never the file's module or L
     sh = shaper_of(p, m)
     common = dict(m=m, thinning_mm=thinning(p), rack=rack_of(p), z0=p.shaper_teeth if sh is None else sh.z0,
                   tip_min_mm=p.tip_land_min_module * m, shaper=sh,
@@ -167,12 +167,6 @@ def screened(p: NoncircularPairParams, source=None) -> Screen:
     if p.law in ("table", "pitch_curve"):
         return design_of(p, screen, None if source is None else str(source))
     return design_of(p, screen)
-
-
-def _replace(p, **kw):
-    import dataclasses
-
-    return dataclasses.replace(p, **kw)
 
 
 def sector_design_table(p: NoncircularPairParams):
