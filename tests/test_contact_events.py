@@ -123,3 +123,25 @@ def test_a_pair_set_apart_loses_contact_and_the_check_says_so(spur):
     p = SimpleNamespace(speed_step_max=0.02, corner_run_max_deg=0.5, as_built_ripple_margin=0.005)
     (chk,) = [c for c in as_built_checks(ab, p, None) if c.name == "as_built.contact"]
     assert not chk.passed and chk.value == len(dr.te) + len(rv.te)
+
+
+def test_the_compiled_runs_name_each_contact_as_pair_outlines_contact_does(spur):
+    """contact_track.track, each position searched from the law's (no seed), against PairOutlines.contact one at a
+    time, over the bumped pair's resolved positions in both directions: the same te to the last bit, the same contact
+    kind (flank and the corners the bump and the tips make) and the same teeth."""
+    from propulsor.checks.motion.contact_track import track
+
+    pair, driver, driven, t1, t2 = spur
+    bumped, _ = _bumped(driven[0], t2[2] + 0.02, 0.005)
+    po = PairOutlines(outline(driver), outline(bumped), pair.a_w, t1, t2)
+    span = 2 * math.pi / Z2 * 4
+    kinds = set()
+    for d in (DRIVE, REVERSE):
+        c = resolve_contact(po, _law, 0.0, span, d)
+        nan = np.full(len(c.phi), np.nan)
+        te, kind, a, b = track(po, c.phi, c.theta, d, nan, nan, False)
+        ref = [po.contact(float(p), float(t), d) for p, t in zip(c.phi, c.theta)]
+        assert np.array_equal(te, np.array([r[0] for r in ref]), equal_nan=True)
+        assert list(zip(kind.tolist(), a.tolist(), b.tolist())) == [tuple(r[1:4]) for r in ref]
+        kinds |= set(kind.tolist())
+    assert kinds > {0}, kinds  # corners too

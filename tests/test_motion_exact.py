@@ -1129,28 +1129,47 @@ def test_a_contact_is_tracked_from_its_neighbour_in_one_small_window():
 
 def test_resolve_contact_seeds_each_measurement_with_its_neighbour():
     """Each sample of the grid is measured from the previous sample's contact (dphi: their distance), each bisection
-    from the contact at the interval's left end."""
-    po, _ = _gear_pair()
-    seen = []
-    real = po.contact
+    from the contact at the interval's left end; the compiled runs (contact_track.track) give, bit for bit, what
+    PairOutlines.contact gives one position at a time seeded so."""
+    from propulsor.checks.motion import contact_track
 
-    def recorded(phi, theta, direction, prev_te=None, dphi=0.0):
-        r = real(phi, theta, direction, prev_te, dphi)
-        seen.append((phi, prev_te, dphi, r[0]))
+    po, _ = _gear_pair()
+    calls = []
+    real = contact_track.track
+
+    def recorded(pair, phis, thetas, direction, seeds, seed_phis, chained):
+        r = real(pair, phis, thetas, direction, seeds, seed_phis, chained)
+        calls.append((list(map(float, phis)), list(map(float, thetas)), list(map(float, seeds)),
+                      list(map(float, seed_phis)), chained, r[0].tolist(), list(zip(*(a.tolist() for a in r[1:])))))
         return r
 
-    po.contact = recorded
-    span = 2 * math.pi / Z
-    c = resolve_contact(po, _one_to_one, 0.0, span, DRIVE, step_driver_rad=math.radians(1.0))
+    contact_track.track = recorded
+    try:
+        span = 2 * math.pi / Z
+        c = resolve_contact(po, _one_to_one, 0.0, span, DRIVE, step_driver_rad=math.radians(1.0))
+    finally:
+        contact_track.track = real
     n = 24
-    assert seen[0][1:3] == (None, 0.0)
-    for k in range(1, n):
-        assert seen[k][1] == seen[k - 1][3] and seen[k][2] == pytest.approx(seen[k][0] - seen[k - 1][0], abs=1e-15)
+    grid = calls[0]
+    assert grid[4] is True and len(grid[0]) == n and math.isnan(grid[2][0]) and math.isnan(grid[3][0])
+    assert all(not call[4] for call in calls[1:]) and sum(len(call[0]) for call in calls) == c.evaluations
+    # the grid, one position after the other from the one before, as PairOutlines.contact does it
+    prev = prev_phi = None
+    for phi, theta, te, state in zip(grid[0], grid[1], grid[5], grid[6]):
+        r = po.contact(phi, theta, DRIVE, prev, 0.0 if prev_phi is None else phi - prev_phi)
+        assert (r[0] == te or (math.isnan(r[0]) and math.isnan(te))) and r[1:4] == state  # kind, driver, driven tooth
+        prev, prev_phi = (te, phi) if math.isfinite(te) else (None, None)
     te_at = dict(zip(c.phi.tolist(), c.te.tolist()))
-    xs = sorted(te_at)
-    for phi, prev_te, dphi, te in seen[n:]:
-        a = max(x for x in xs if x < phi and x in {s[0] for s in seen[:seen.index((phi, prev_te, dphi, te))]})
-        assert prev_te == te_at[a] and dphi == pytest.approx(phi - a, abs=1e-15)
+    measured = set(grid[0])
+    for phis, thetas, seeds, seed_phis, _, tes, states in calls[1:]:
+        for phi, theta, seed, a, te, state in zip(phis, thetas, seeds, seed_phis, tes, states):
+            assert a == max(x for x in measured if x < phi)  # the interval's left end, measured in an earlier round
+            assert seed == te_at[a] or (math.isnan(seed) and math.isnan(te_at[a]))
+            r = po.contact(phi, theta, DRIVE, seed, phi - a)
+            assert r[0] == te == te_at[phi] and r[1:4] == state
+        measured |= set(phis)
+    assert len(calls) > 2  # bisections in more than one round
+    assert len({st for call in calls for st in call[6]}) >= 2  # two tooth pairs
 
 
 def test_contact_of_a_bar_and_a_block_off_the_line_of_centres():

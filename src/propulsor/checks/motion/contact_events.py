@@ -45,6 +45,8 @@ __all__ = ["KINDS", "PairOutlines", "ContactLaw", "Stretch", "resolve_contact", 
 #: contact kinds, by code
 KINDS = ("flank", "driver tip corner", "driven tip corner", "driver root corner", "driven root corner")
 DRIVE, REVERSE = 1, -1
+#: positions measured in one compiled run between two progress reports (about 50 ms)
+_TRACK_RUN = 512
 
 
 def _turning(o: Outline) -> np.ndarray:
@@ -682,23 +684,42 @@ def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, 
     # projected over the rest (each change bisected about log2(spacing / 2 h_min) times)
     rounds = max(0, math.ceil(math.log2(max(abs(phi1 - phi0) / max(n - 1, 1), 2.0 * h_min) / (2.0 * h_min))))
 
-    def measure(phis, seed=None, seed_phi=None, tick=None):
+    def measure(phis, tick=None):
+        """The grid's rows (theta, te, kind, driver tooth, driven tooth), each position searched from the one before
+        (compiled: :func:`.contact_track.track`, in runs of ``_TRACK_RUN``); ``tick`` told each position."""
         nonlocal evals
-        th = np.asarray(theta_of_phi(np.asarray(phis, float)), float)
-        prev, prev_phi = seed, seed_phi
+        from .contact_track import track
+
+        phis = np.asarray(phis, float)
+        th = np.asarray(theta_of_phi(phis), float)
         out = []
         changes = 0
-        for p, t in zip(phis, th):
-            r = pair.contact(float(p), float(t), direction, prev, 0.0 if prev_phi is None else float(p) - prev_phi)
-            evals += 1
-            prev, prev_phi = (r[0], float(p)) if math.isfinite(r[0]) else (None, None)
-            out.append((float(t),) + tuple(r))
-            if tick is not None:
-                if len(out) > 1 and out[-1][2:5] != out[-2][2:5]:
-                    changes += 1
-                k = len(out)
-                tick(k, len(phis) + round(changes * (len(phis) - 1) / max(k - 1, 1) * rounds))
+        seed, seed_phi = math.nan, math.nan
+        for j in range(0, len(phis), _TRACK_RUN):
+            P, T = phis[j:j + _TRACK_RUN], th[j:j + _TRACK_RUN]
+            te, kind, t_drv, t_dvn = track(pair, P, T, direction, [seed], [seed_phi], True)
+            evals += len(P)
+            seed, seed_phi = (float(te[-1]), float(P[-1])) if math.isfinite(te[-1]) else (math.nan, math.nan)
+            for t, r in zip(T.tolist(), zip(te.tolist(), kind.tolist(), t_drv.tolist(), t_dvn.tolist())):
+                out.append((t,) + r)
+                if tick is not None:
+                    if len(out) > 1 and out[-1][2:5] != out[-2][2:5]:
+                        changes += 1
+                    k = len(out)
+                    tick(k, len(phis) + round(changes * (len(phis) - 1) / max(k - 1, 1) * rounds))
         return out
+
+    def measure_each(mids):
+        """The rows at the midpoints ``(a, b, m)``, each searched from the contact at its own a."""
+        from .contact_track import track
+
+        if not mids:
+            return []
+        ms = [m for _, _, m in mids]
+        th = [float(np.asarray(theta_of_phi(np.asarray([m], float)), float)[0]) for m in ms]  # one by one, as sampled
+        te, kind, t_drv, t_dvn = track(pair, ms, th, direction, [samples[a][1] for a, _, _ in mids],
+                                       [a for a, _, _ in mids], False)
+        return [(t,) + r for t, r in zip(th, zip(te.tolist(), kind.tolist(), t_drv.tolist(), t_dvn.tolist()))]
 
     for p, r in zip(grid, measure(grid, tick=tick)):
         samples[float(p)] = r
@@ -718,8 +739,9 @@ def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, 
         if not mids:
             break
         nxt = []
-        for a, b, m in mids[:max(0, max_evals - evals)]:
-            r = measure([m], samples[a][1], a)[0]
+        mids = mids[:max(0, max_evals - evals)]
+        for (a, b, m), r in zip(mids, measure_each(mids)):
+            evals += 1
             samples[m] = r
             if tick is not None:
                 tick(evals, max(est, evals + 1))
