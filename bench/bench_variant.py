@@ -36,6 +36,17 @@ turn): the arc-length frame's phi of one float (28 892 calls a seed-002 design, 
 plain Python, the same operations as scipy's compiled evaluation (bit for bit): seed 000's design 4.66 -> 4.11 CPU s,
 seed 002's 2.79 -> 2.57, its Fourier form 1.86 -> 1.87 (it takes the other path); tips and outlines of ten pairs
 identical.
+
+2026-11-29, a new session (one core free, the other running a mutation test; two variants each, old and new in
+turn, two rounds): the as-built contact's measurements in one compiled loop (``checks/motion/contact_track.py``) and
+the pair's outlines prepared once for both directions and the per-tooth load: at 9c07cd9 the seed-002 pair 5.88 /
+5.81 / 6.04 / 5.89 CPU s, its Fourier form 6.03 / 6.17 / 6.23 / 6.08; at c7497ae 5.87 / 5.87 / 5.93 / 5.93 and 6.05
+/ 6.04 / 6.30 / 6.30: no difference above the spread.  One direction's contact alone (``resolve_contact``, CPU s, old -> new):
+seed 002 reverse 1.18 -> 1.00, seed 000 drive 0.99 -> 0.93 and reverse 0.80 -> 0.74, the elliptical pair 1.44 ->
+1.35 and 1.35 -> 1.19; the te, states, evaluations and progress ticks identical bit for bit.  What is left of the
+contact: the compiled search itself (2 x 9 803 positions at about 94 us: of the ~650 vertices it tests a position,
+~130 have an edge within reach; a distance field 4 times finer cuts that to 69 us at 1 s of set-up) and the law's
+theta of each bisection midpoint one at a time (batched, the Fourier law's theta differs in the last bit).
 """
 
 from __future__ import annotations
