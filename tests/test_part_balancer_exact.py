@@ -14,6 +14,7 @@ import dataclasses
 import importlib
 import math
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -992,3 +993,28 @@ def test_damper_heat_results_table_values_and_note():
     assert "over 30 s from rest at 20 °C; damper 20 kg of steel (487 J/(kg·K)), cooled by the air flow V·S·ρ·c_air " \
            "over S = 0.247 m². Largest steady rise 8.38 K on Δt4: L = 1 m (wheel spacing), 0.05 m at 40 km/h." in note
     assert note.endswith("Plot: plots/damper_and_tyre_heat.png, beside the road wheel's tyre heat.")
+
+
+def test_the_suspension_takes_every_value_of_the_part_file_not_the_librarys_defaults():
+    """Each value the seed's suspension is made of, set away from the library's default (which the part file's
+    defaults equal), reaches it: the wheel load, the arm, its static angle, the bar's diameter, length and shear modulus, the sprung weight and pitch inertia, the pitch period and
+    amplitude ratio, the rebound factor, the bump and its shake limit, the damper's ratio, pressure and rod."""
+    from propulsor.laws.suspension import SuspensionDesign, TorsionSuspension
+
+    lib = SimpleNamespace(**{f.name: f.default for f in dataclasses.fields(SuspensionDesign)})
+    bar = SimpleNamespace(**{f.name: f.default for f in dataclasses.fields(TorsionSuspension)})
+    given = dict(P_st_N=30000.0, R_b_mm=370.0, beta_st_deg=42.0, d_T_mm=47.0, L_T_mm=2100.0,
+                 G_MPa=79000.0, G_p_N=450000.0, I_y_kgm2=400000.0, T_phi_s=1.5, nu=12.0, reb_factor=0.8,
+                 h_n_m=0.06, zdd_over_g=0.45, i_a=0.5, p_max_MPa=18.0, d_rod_mm=36.0)
+    d = bd.suspension_design(_params(**given))
+    t = d.torsion
+    got = dict(P_st_N=t.P_st, R_b_mm=t.R_b, beta_st_deg=t.beta_st_deg, d_T_mm=t.d_T, L_T_mm=t.L_T,
+               G_MPa=d.torsion.G, G_p_N=d.G_p, I_y_kgm2=d.I_y_kgm2, T_phi_s=d.T_phi, nu=d.nu,
+               reb_factor=d.reb_factor, h_n_m=d.h_n_m, zdd_over_g=d.zdd_over_g, i_a=d.i_a, p_max_MPa=d.p_max,
+               d_rod_mm=d.d_rod)
+    assert got == given
+    defaults = dict(P_st_N=bar.P_st, R_b_mm=bar.R_b, beta_st_deg=bar.beta_st_deg, d_T_mm=bar.d_T, L_T_mm=bar.L_T,
+                    G_MPa=bar.G, G_p_N=lib.G_p, I_y_kgm2=lib.I_y_kgm2, T_phi_s=lib.T_phi, nu=lib.nu,
+                    reb_factor=lib.reb_factor, h_n_m=lib.h_n_m, zdd_over_g=lib.zdd_over_g, i_a=lib.i_a,
+                    p_max_MPa=lib.p_max, d_rod_mm=lib.d_rod)
+    assert all(defaults[k] != v for k, v in given.items())  # each one told apart from the default
