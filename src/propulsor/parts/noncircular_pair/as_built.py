@@ -131,17 +131,7 @@ def _teeth_from_corners(o, turn, corner) -> np.ndarray:
 
 
 def pair_outlines(d, mount: float) -> PairOutlines:
-    """The pair's outer outlines at the installed centre distance, prepared for contact events: made once per
-    design and centre distance (both directions, the per-tooth load and the tolerance cases read the same; the
-    searches never change it), kept with the design."""
-    cache = d.__dict__.setdefault("_pair_outlines", {})
-    key = float(mount)
-    if key not in cache:
-        cache[key] = _pair_outlines(d, key)
-    return cache[key]
-
-
-def _pair_outlines(d, mount: float) -> PairOutlines:
+    """The pair's outer outlines at the installed centre distance, prepared for contact events."""
     from ...checks.motion import outline
     from .pair_proof import _outer_only
 
