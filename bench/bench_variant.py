@@ -38,8 +38,9 @@ seed 002's 2.79 -> 2.57, its Fourier form 1.86 -> 1.87 (it takes the other path)
 identical.
 
 2026-11-29, a new session (one core free, the other running a mutation test; two variants each, old and new in
-turn, two rounds): the as-built contact's measurements in one compiled loop (``checks/motion/contact_track.py``) and
-the pair's outlines prepared once for both directions and the per-tooth load: at 9c07cd9 the seed-002 pair 5.88 /
+turn, two rounds): the as-built contact's measurements in one compiled loop (``checks/motion/contact_track.py``; a
+cache of the pair's outlines measured with it never hit, each direction getting its own copy of the design, and was
+reverted): at 9c07cd9 the seed-002 pair 5.88 /
 5.81 / 6.04 / 5.89 CPU s, its Fourier form 6.03 / 6.17 / 6.23 / 6.08; at c7497ae 5.87 / 5.87 / 5.93 / 5.93 and 6.05
 / 6.04 / 6.30 / 6.30: no difference above the spread.  One direction's contact alone (``resolve_contact``, CPU s, old -> new):
 seed 002 reverse 1.18 -> 1.00, seed 000 drive 0.99 -> 0.93 and reverse 0.80 -> 0.74, the elliptical pair 1.44 ->
