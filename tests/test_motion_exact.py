@@ -1131,11 +1131,11 @@ def test_resolve_contact_seeds_each_measurement_with_its_neighbour():
     """Each sample of the grid is measured from the previous sample's contact (dphi: their distance), each bisection
     from the contact at the interval's left end; the compiled runs (contact_track.track) give, bit for bit, what
     PairOutlines.contact gives one position at a time seeded so."""
-    from propulsor.checks.motion import contact_track
+    from propulsor.checks.motion import contact_events
 
     po, _ = _gear_pair()
     calls = []
-    real = contact_track.track
+    real = contact_events.track
 
     def recorded(pair, phis, thetas, direction, seeds, seed_phis, chained):
         r = real(pair, phis, thetas, direction, seeds, seed_phis, chained)
@@ -1143,12 +1143,12 @@ def test_resolve_contact_seeds_each_measurement_with_its_neighbour():
                       list(map(float, seed_phis)), chained, r[0].tolist(), list(zip(*(a.tolist() for a in r[1:])))))
         return r
 
-    contact_track.track = recorded
+    contact_events.track = recorded
     try:
         span = 2 * math.pi / Z
         c = resolve_contact(po, _one_to_one, 0.0, span, DRIVE, step_driver_rad=math.radians(1.0))
     finally:
-        contact_track.track = real
+        contact_events.track = real
     n = 24
     grid = calls[0]
     assert grid[4] is True and len(grid[0]) == n and math.isnan(grid[2][0]) and math.isnan(grid[3][0])

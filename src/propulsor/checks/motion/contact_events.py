@@ -33,10 +33,11 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from numba import njit
 
 from ... import policy
-from .backlash import _rot_pairs, _rot_reduce
+from .contact_kernels import (DRIVE, REVERSE, _first_hit_pruned, _least, _nearest_tooth_nb, _pair_hits,  # noqa: F401
+                              _pruned_window, _side_hits, _window_bounds, _window_nb)
+from .contact_track import track
 from .nearest import grid_of
 from .outlines import Outline, row_norms
 
@@ -44,7 +45,6 @@ __all__ = ["KINDS", "PairOutlines", "ContactLaw", "Stretch", "resolve_contact", 
 
 #: contact kinds, by code
 KINDS = ("flank", "driver tip corner", "driven tip corner", "driver root corner", "driven root corner")
-DRIVE, REVERSE = 1, -1
 #: positions measured in one compiled run between two progress reports (about 50 ms)
 _TRACK_RUN = 512
 
@@ -122,16 +122,6 @@ def _rot(a: float) -> np.ndarray:
 def _nearest_tooth(centres: np.ndarray, angle: float) -> int:
     """The tooth whose centre (body polar angle) is nearest to ``angle`` (the first on a tie)."""
     return int(_nearest_tooth_nb(centres, float(angle)))
-
-
-@njit(cache=True)
-def _nearest_tooth_nb(centres, angle):
-    best, k = np.inf, -1
-    for i in range(len(centres)):
-        d = abs((angle - centres[i] + math.pi) % (2 * math.pi) - math.pi)
-        if k < 0 or d < best:
-            best, k = d, i
-    return k
 
 
 class PairOutlines:
@@ -277,217 +267,6 @@ class PairOutlines:
             if other[idx] and dist <= near:
                 return other_code if other_turn[idx] > 0 else other_code + 2
         return 0
-
-
-@njit(cache=True)
-def _window_bounds(angs, centre, hw):
-    """The three ranges [bounds[2i], bounds[2i + 1]) of positions in ``angs`` (sorted polar angles) within centre +-
-    hw, wrapped by -2 pi, 0, +2 pi (all of them in the first when hw >= pi)."""
-    bounds = np.zeros(6, np.int64)
-    if hw >= math.pi:
-        bounds[1] = len(angs)
-        return bounds
-    c = (centre + math.pi) % (2 * math.pi) - math.pi
-    for i in range(3):
-        k = i - 1
-        lo, hi = c - hw + 2 * math.pi * k, c + hw + 2 * math.pi * k
-        bounds[2 * i], bounds[2 * i + 1] = np.searchsorted(angs, lo), np.searchsorted(angs, hi)
-    return bounds
-
-
-@njit(cache=True)
-def _window_nb(order, angs, centre, hw):
-    """:func:`_window` compiled (the same vertices in the same order)."""
-    if hw >= math.pi:
-        return order.copy()
-    bounds = _window_bounds(angs, centre, hw)
-    n = 0
-    for i in range(3):
-        n += max(bounds[2 * i + 1] - bounds[2 * i], 0)
-    out = np.empty(n, np.int64)
-    n = 0
-    for i in range(3):
-        for j in range(bounds[2 * i], bounds[2 * i + 1]):
-            out[n] = order[j]
-            n += 1
-    return out
-
-
-@njit(cache=True)
-def _side_hits(idx, V, c1, s1, tx, c2, s2, sign, w, r_keep, cx, cy, tgt):
-    """The hits of one side: the vertices ``V[idx]`` placed by a turn (c1, s1), a shift (tx, 0) and a turn (c2, s2)
-    into the target's body frame, those within ``r_keep`` of its axis kept, each turned by sign·δ about (cx, cy)
-    until it enters the target (:func:`.backlash._rot_pairs` / ``_rot_reduce``): (vertex, delta, edge, t)."""
-    (tV, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, near, ccx, ccy, radius, r_min) = tgt
-    m = len(idx)
-    P = np.empty((m, 2))
-    keep = np.empty(m, np.int64)
-    n = 0
-    for j in range(m):
-        x, y = V[idx[j], 0], V[idx[j], 1]
-        u = x * c1 + y * (-s1) + tx
-        v = x * s1 + y * c1
-        px = u * c2 + v * (-s2)
-        py = u * s2 + v * c2
-        if math.sqrt(px * px + py * py) <= r_keep:
-            P[n, 0], P[n, 1] = px, py
-            keep[n] = idx[j]
-            n += 1
-    P = P[:n]
-    rho = np.empty(n)
-    lb = np.empty(n)
-    for j in range(n):
-        dx, dy = P[j, 0] - cx, P[j, 1] - cy
-        rho[j] = math.sqrt(dx * dx + dy * dy)
-        ex, ey = P[j, 0] - ccx, P[j, 1] - ccy
-        d = math.sqrt(ex * ex + ey * ey)
-        lb[j] = max(d - radius, r_min - d)
-    chord_factor = 2.0 * math.sin(0.5 * min(w, math.pi))
-    offs, seg, Y, X, T, ok = _rot_pairs(P, cx, cy, tV, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, near,
-                                        sign, rho, lb, chord_factor)
-    # the angle of each root: only of the entering ones (the others are never taken), and not of those plainly
-    # outside 0 .. w (a margin of 1e-6 of the angle: far beyond atan2's rounding), which are never taken either
-    ang = np.full_like(Y, np.nan)
-    tw = math.tan(w) * (1.0 + 1e-6) if w < 1.5 else np.inf
-    for k in range(Y.shape[0]):
-        for r in range(2):
-            if not ok[k, r]:
-                continue
-            x, s = X[k, r], sign * Y[k, r]
-            if w < 1.5 and (x < 0.0 or (x > 0.0 and (s > x * tw or s < -x * 1e-6))):
-                continue
-            ang[k, r] = sign * math.atan2(Y[k, r], X[k, r])
-    delta, edge, tpar = _rot_reduce(offs, seg, ang, T, ok, w)
-    return keep[:n], delta, edge, tpar
-
-
-@njit(cache=True)
-def _pair_hits(phi_a, theta, sign, w, L, dvn_V, o1, a1, hw_dvn, drv_V, o2, a2, hw_drv, R1, R2,
-               t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14, t15,
-               u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14, u15):
-    """:meth:`PairOutlines._all_hits` compiled: the driven vertices within the window about the line of centres put
-    into the driver's frame (turned by -phi_a, shifted by -L, turned by -theta) turning about the driven axis there
-    (sign) onto the driver's edges, and the driver vertices put into the driven frame turning the other way onto
-    the driven edges.  Each rotation of a point is written out (x c - y s, x s + y c), the same on every machine."""
-    drv_t = (t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14, t15)
-    dvn_t = (u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14, u15)
-    i1 = _window_nb(o1, a1, phi_a, hw_dvn + w)
-    i2 = _window_nb(o2, a2, math.pi - theta, hw_drv + w)
-    cp, sp = math.cos(-phi_a), math.sin(-phi_a)
-    ct, st = math.cos(-theta), math.sin(-theta)
-    # the driven axis in the driver's frame: (-L, 0) turned by -theta
-    cx1 = -L * ct + 0.0 * (-st)
-    cy1 = -L * st + 0.0 * ct
-    k1, d1, e1, q1 = _side_hits(i1, dvn_V, cp, sp, -L, ct, st, sign, w, R1 + w * R2 + 1e-6, cx1, cy1, drv_t)
-    k2, d2, e2, q2 = _side_hits(i2, drv_V, math.cos(theta), math.sin(theta), L, math.cos(phi_a), math.sin(phi_a),
-                                -sign, w, R2 + 1e-6, 0.0, 0.0, dvn_t)
-    return k1, d1, e1, q1, k2, d2, e2, q2
-
-
-@njit(cache=True)
-def _pruned_window(order, angs, centre, hw, chunk, cc, cr, V, c1, s1, tx, c2, s2, r_keep, cx, cy, chord, ccx, ccy,
-                   radius, r_min, fx, fy, fh, fnx, fny, fvals):
-    """The vertices of :func:`_window_nb` (the same, in the same order) less every run of ``chunk`` positions whose
-    bounding circle (``cc``, ``cr``: body frame), placed into the target's frame as :func:`_side_hits` places the
-    vertices (turn c1, s1; shift tx; turn c2, s2), lies wholly beyond ``r_keep`` of the target's axis, or farther
-    from the target's boundary (the annulus ccx, ccy, radius, r_min and the distance field fx .. fvals:
-    :func:`distance_field`) than ``chord`` times its farthest distance from the turning centre (cx, cy): no vertex
-    of such a run is kept, or can reach the boundary within the window (1e-6 mm to spare on either test); of the
-    runs left, each vertex ``V[q]`` by the same test."""
-    bounds = _window_bounds(angs, centre, hw)
-    n = 0
-    for i in range(3):
-        n += max(bounds[2 * i + 1] - bounds[2 * i], 0)
-    out = np.empty(n, np.int64)
-    n = 0
-    for i in range(3):
-        lo, hi = bounds[2 * i], bounds[2 * i + 1]
-        if hi <= lo:
-            continue
-        for j in range(lo // chunk, (hi - 1) // chunk + 1):
-            x, y = cc[j, 0], cc[j, 1]
-            u = x * c1 - y * s1 + tx
-            v = x * s1 + y * c1
-            px = u * c2 - v * s2
-            py = u * s2 + v * c2
-            r = cr[j]
-            if math.sqrt(px * px + py * py) - r > r_keep + 1e-6:
-                continue
-            dx, dy = px - cx, py - cy
-            reach = chord * (math.sqrt(dx * dx + dy * dy) + r)
-            ex, ey = px - ccx, py - ccy
-            d = math.sqrt(ex * ex + ey * ey)
-            lb = max(d - radius, r_min - d)
-            ix = int(math.floor((px - fx) / fh))
-            iy = int(math.floor((py - fy) / fh))
-            if 0 <= ix < fnx and 0 <= iy < fny:
-                lb = max(lb, fvals[ix * fny + iy])
-            if lb - r > reach + 1e-6:
-                continue
-            for p in range(max(lo, j * chunk), min(hi, (j + 1) * chunk)):
-                q = order[p]
-                x, y = V[q, 0], V[q, 1]
-                u = x * c1 - y * s1 + tx
-                v = x * s1 + y * c1
-                px = u * c2 - v * s2
-                py = u * s2 + v * c2
-                dx, dy = px - cx, py - cy
-                reach = chord * math.sqrt(dx * dx + dy * dy)
-                ex, ey = px - ccx, py - ccy
-                d = math.sqrt(ex * ex + ey * ey)
-                lb = max(d - radius, r_min - d)
-                ix = int(math.floor((px - fx) / fh))
-                iy = int(math.floor((py - fy) / fh))
-                if 0 <= ix < fnx and 0 <= iy < fny:
-                    lb = max(lb, fvals[ix * fny + iy])
-                if lb > reach + 1e-6:
-                    continue
-                out[n] = q
-                n += 1
-    return out[:n]
-
-
-@njit(cache=True)
-def _least(d):
-    """(index, value) of the first least of d; (-1, inf) when d is empty."""
-    k1, m1 = -1, np.inf
-    for k in range(len(d)):
-        if k1 < 0 or d[k] < m1:
-            k1, m1 = k, d[k]
-    return k1, m1
-
-
-@njit(cache=True)
-def _first_hit_pruned(phi_a, theta, sign, w, L, dvn_V, o1, a1, hw_dvn, drv_V, o2, a2, hw_drv, R1, R2,
-                      chunk, cc1, cr1, cc2, cr2, f0, f1, f2, f3, f4, f5, g0, g1, g2, g3, g4, g5,
-                      t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14, t15,
-                      u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14, u15):
-    """The first entering hit (delta, side, vertex, edge, t) of :func:`_pair_hits` (the first least on a tie, side 1
-    before side 2), bit for bit, with the window's vertices that cannot reach the mate within w left out before
-    any per-vertex work (:func:`_pruned_window`; ``f*``: the driver's distance field, ``g*``: the driven's).  A
-    vertex left out would have had no hit (delta inf): the least, and the first on a tie, are the same."""
-    drv_t = (t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14, t15)
-    dvn_t = (u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14, u15)
-    chord = 2.0 * math.sin(0.5 * min(w, math.pi))
-    cp, sp = math.cos(-phi_a), math.sin(-phi_a)
-    ct, st = math.cos(-theta), math.sin(-theta)
-    cx1 = -L * ct + 0.0 * (-st)
-    cy1 = -L * st + 0.0 * ct
-    keep1 = R1 + w * R2 + 1e-6
-    i1 = _pruned_window(o1, a1, phi_a, hw_dvn + w, chunk, cc1, cr1, dvn_V, cp, sp, -L, ct, st, keep1, cx1, cy1, chord,
-                        t12, t13, t14, t15, f0, f1, f2, f3, f4, f5)
-    k1, d1, e1, q1 = _side_hits(i1, dvn_V, cp, sp, -L, ct, st, sign, w, keep1, cx1, cy1, drv_t)
-    cth, sth, cph, sph = math.cos(theta), math.sin(theta), math.cos(phi_a), math.sin(phi_a)
-    i2 = _pruned_window(o2, a2, math.pi - theta, hw_drv + w, chunk, cc2, cr2, drv_V, cth, sth, L, cph, sph, R2 + 1e-6,
-                        0.0, 0.0, chord, u12, u13, u14, u15, g0, g1, g2, g3, g4, g5)
-    k2, d2, e2, q2 = _side_hits(i2, drv_V, cth, sth, L, cph, sph, -sign, w, R2 + 1e-6, 0.0, 0.0, dvn_t)
-    j1, m1 = _least(d1)
-    j2, m2 = _least(d2)
-    if not (m1 < np.inf or m2 < np.inf):
-        return np.inf, 0, -1, -1, 0.0
-    if m1 <= m2:
-        return m1, 1, k1[j1], e1[j1], q1[j1]
-    return m2, 2, k2[j2], e2[j2], q2[j2]
 
 
 def _driven_to_world(p, phi_a):
@@ -688,8 +467,6 @@ def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, 
         """The grid's rows (theta, te, kind, driver tooth, driven tooth), each position searched from the one before
         (compiled: :func:`.contact_track.track`, in runs of ``_TRACK_RUN``); ``tick`` told each position."""
         nonlocal evals
-        from .contact_track import track
-
         phis = np.asarray(phis, float)
         th = np.asarray(theta_of_phi(phis), float)
         out = []
@@ -711,8 +488,6 @@ def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, 
 
     def measure_each(mids):
         """The rows at the midpoints ``(a, b, m)``, each searched from the contact at its own a."""
-        from .contact_track import track
-
         if not mids:
             return []
         ms = [m for _, _, m in mids]

@@ -16,7 +16,7 @@ import numpy as np
 from numba import njit
 
 from ... import policy
-from .contact_events import DRIVE, _first_hit_pruned, _nearest_tooth_nb
+from .contact_kernels import DRIVE, _first_hit_pruned, _nearest_tooth_nb
 
 __all__ = ["track"]
 
