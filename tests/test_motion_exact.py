@@ -2133,3 +2133,41 @@ def test_phase_contacts_of_a_driven_corner_on_a_turned_driver_edge():
     assert c2.l1 == pytest.approx((14.0 - Q[0]) * math.cos(eq) - Q[1] * math.sin(eq), abs=1e-9)
     # a window just short of its gap (0.0195): the first pair alone
     assert [c.driver_tooth for c in phase_contacts(po, 0.0, th, -e, 0.019, DRIVE)[1]] == [0]
+
+
+@pytest.mark.parametrize("run", [5, 7])
+def test_resolve_contact_in_short_compiled_runs_is_the_one_long_run_bit_for_bit(monkeypatch, run):
+    """The grid measured in runs of `run` positions (each run's first position searched from the last contact of the
+    run before): the same te, states, evaluations and progress ticks as in one run, and each run seeded so."""
+    from propulsor.checks.motion import contact_events
+
+    po, _ = _gear_pair()
+    span = 2 * math.pi / Z
+
+    def law(**kw):
+        ticks = []
+        c = resolve_contact(po, _one_to_one, 0.0, span, DRIVE, step_driver_rad=math.radians(1.0),
+                            tick=lambda done, total: ticks.append((done, total)), **kw)
+        return c, ticks
+
+    one, ticks_one = law()
+    calls = []
+    real = contact_events.track
+
+    def recorded(pair, phis, thetas, direction, seeds, seed_phis, chained):
+        r = real(pair, phis, thetas, direction, seeds, seed_phis, chained)
+        calls.append((list(map(float, phis)), list(map(float, seeds)), list(map(float, seed_phis)), chained,
+                      r[0].tolist()))
+        return r
+
+    monkeypatch.setattr(contact_events, "_TRACK_RUN", run)
+    monkeypatch.setattr(contact_events, "track", recorded)
+    many, ticks_many = law()
+    for name in ("phi", "theta", "te", "kind", "driver_tooth", "driven_tooth"):
+        assert getattr(many, name).tobytes() == getattr(one, name).tobytes(), name
+    assert many.evaluations == one.evaluations == len(one.phi) and ticks_many == ticks_one
+    grid = [c for c in calls if c[3]]
+    assert [len(c[0]) for c in grid] == [run] * (24 // run) + ([24 % run] if 24 % run else [])
+    assert math.isnan(grid[0][1][0]) and math.isnan(grid[0][2][0])
+    for before, now in zip(grid[:-1], grid[1:]):
+        assert now[1] == [before[4][-1]] and now[2] == [before[0][-1]]  # the last contact of the run before

@@ -476,7 +476,7 @@ def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, 
             P, T = phis[j:j + _TRACK_RUN], th[j:j + _TRACK_RUN]
             te, kind, t_drv, t_dvn = track(pair, P, T, direction, [seed], [seed_phi], True)
             evals += len(P)
-            seed, seed_phi = (float(te[-1]), float(P[-1])) if math.isfinite(te[-1]) else (math.nan, math.nan)
+            seed, seed_phi = float(te[-1]), float(P[-1])  # a nan te: the next run starts with the full search
             for t, r in zip(T.tolist(), zip(te.tolist(), kind.tolist(), t_drv.tolist(), t_dvn.tolist())):
                 out.append((t,) + r)
                 if tick is not None:
