@@ -45,16 +45,22 @@ def _window_bounds(angs, centre, hw):
     return bounds
 
 
+@njit(cache=True, inline="always")
+def _window_size(bounds):
+    """How many positions the three ranges of :func:`_window_bounds` hold."""
+    n = 0
+    for i in range(3):
+        n += max(bounds[2 * i + 1] - bounds[2 * i], 0)
+    return n
+
+
 @njit(cache=True)
 def _window_nb(order, angs, centre, hw):
     """:func:`_window` compiled (the same vertices in the same order)."""
     if hw >= math.pi:
         return order.copy()
     bounds = _window_bounds(angs, centre, hw)
-    n = 0
-    for i in range(3):
-        n += max(bounds[2 * i + 1] - bounds[2 * i], 0)
-    out = np.empty(n, np.int64)
+    out = np.empty(_window_size(bounds), np.int64)
     n = 0
     for i in range(3):
         for j in range(bounds[2 * i], bounds[2 * i + 1]):
@@ -145,10 +151,7 @@ def _pruned_window(order, angs, centre, hw, chunk, cc, cr, V, c1, s1, tx, c2, s2
     of such a run is kept, or can reach the boundary within the window (1e-6 mm to spare on either test); of the
     runs left, each vertex ``V[q]`` by the same test."""
     bounds = _window_bounds(angs, centre, hw)
-    n = 0
-    for i in range(3):
-        n += max(bounds[2 * i + 1] - bounds[2 * i], 0)
-    out = np.empty(n, np.int64)
+    out = np.empty(_window_size(bounds), np.int64)
     n = 0
     for i in range(3):
         lo, hi = bounds[2 * i], bounds[2 * i + 1]
