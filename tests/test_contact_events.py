@@ -17,6 +17,8 @@ from propulsor.geometry.gear_outline import external_gear_profile
 from propulsor.gears.gear_pair import GearPair
 from propulsor.gears.involute import SpurGear
 
+from contact_reference import contact
+
 Z1, Z2, M = 20, 40, 2.0
 
 
@@ -125,8 +127,8 @@ def test_a_pair_set_apart_loses_contact_and_the_check_says_so(spur):
     assert not chk.passed and chk.value == len(dr.te) + len(rv.te)
 
 
-def test_the_compiled_runs_name_each_contact_as_pair_outlines_contact_does(spur):
-    """contact_track.track, each position searched from the law's (no seed), against PairOutlines.contact one at a
+def test_the_compiled_runs_name_each_contact_as_the_reference_search_does(spur):
+    """contact_track.track, each position searched from the law's (no seed), against the reference search one at a
     time, over the bumped pair's resolved positions in both directions: the same te to the last bit, the same contact
     kind (flank and the corners the bump and the tips make) and the same teeth."""
     from propulsor.checks.motion.contact_track import track
@@ -140,7 +142,7 @@ def test_the_compiled_runs_name_each_contact_as_pair_outlines_contact_does(spur)
         c = resolve_contact(po, _law, 0.0, span, d)
         nan = np.full(len(c.phi), np.nan)
         te, kind, a, b = track(po, c.phi, c.theta, d, nan, nan, False)
-        ref = [po.contact(float(p), float(t), d) for p, t in zip(c.phi, c.theta)]
+        ref = [contact(po, float(p), float(t), d) for p, t in zip(c.phi, c.theta)]
         assert np.array_equal(te, np.array([r[0] for r in ref]), equal_nan=True)
         assert list(zip(kind.tolist(), a.tolist(), b.tolist())) == [tuple(r[1:4]) for r in ref]
         kinds |= set(kind.tolist())

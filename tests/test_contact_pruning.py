@@ -15,6 +15,7 @@ from propulsor.checks.motion import contact_events as ce
 from propulsor.checks.motion.contact_events import DRIVE, REVERSE, PairOutlines, distance_field, resolve_contact
 
 from contact_hit_reference import first_hit
+from contact_reference import contact
 from test_contact_events import Z1, Z2, _law, _bumped, spur  # noqa: F401  (the fixture)
 
 
@@ -57,7 +58,7 @@ def _queries(po, rng, n):
         phi = rng.uniform(0.0, 2 * math.pi / Z2 * 2)
         theta = float(_law(phi))
         sign = float(rng.choice([1.0, -1.0]))
-        te = po.contact(phi, theta, DRIVE if sign > 0 else REVERSE)[0]
+        te = contact(po, phi, theta, DRIVE if sign > 0 else REVERSE)[0]
         te = te if math.isfinite(te) else 0.0
         m = float(rng.uniform(1e-4, 1e-3))
         out.append((phi + te + sign * m, theta, sign, 2.0 * m))
@@ -113,19 +114,32 @@ def test_the_pruned_window_keeps_the_window_order_and_leaves_out_most_of_it(spur
     assert max(shares) < 0.5, shares  # the pruning does leave vertices out (at least half of each window)
 
 
-def test_a_resolved_contact_is_the_same_with_and_without_the_pruning(spur, monkeypatch):
+def test_a_resolved_contact_is_the_same_with_and_without_the_pruning(spur):
+    """Over the resolved positions of both directions (the grid and its bisections, in order), the compiled search
+    chained from one position to the next (``contact_track.track``, its windows pruned) gives, bit for bit, the te,
+    contact kind and teeth of the reference search chained the same way with the first hit taken from every vertex of
+    each window (``contact_hit_reference.first_hit``: no vertex left out)."""
+    from propulsor.checks.motion.contact_track import track
+
+    def unpruned(po, phi_a, theta, sign, w):
+        return first_hit(float(phi_a), float(theta), float(sign), float(w), *po._kernel_args)
+
     pair, driver, driven, t1, t2 = spur
     bumped, _ = _bumped(driven[0], 0.0)
     span = 2 * math.pi / Z2 * 2
     po = PairOutlines(outline(driver), outline(bumped), pair.a_w, t1, t2)
-    pruned = [resolve_contact(po, _law, 0.0, span, d) for d in (DRIVE, REVERSE)]
-    monkeypatch.setattr(PairOutlines, "_hits", lambda self, phi_a, theta, sign, w: first_hit(
-        float(phi_a), float(theta), float(sign), float(w), *self._kernel_args))
-    full = [resolve_contact(po, _law, 0.0, span, d) for d in (DRIVE, REVERSE)]
-    for a, b in zip(pruned, full):
-        for name in ("phi", "theta", "te", "kind", "driver_tooth", "driven_tooth"):
-            assert np.array_equal(getattr(a, name), getattr(b, name)), name
-        assert a.evaluations == b.evaluations
+    for d in (DRIVE, REVERSE):
+        c = resolve_contact(po, _law, 0.0, span, d)
+        assert len(c.phi) > 100
+        te, kind, a, b = track(po, c.phi, c.theta, d, [math.nan], [math.nan], True)
+        ref, prev, prev_phi = [], None, 0.0
+        for p, t in zip(c.phi.tolist(), c.theta.tolist()):
+            r = contact(po, p, t, d, prev, p - prev_phi, hit=unpruned)
+            ref.append(r[:4])
+            prev, prev_phi = r[0], p
+        assert np.array_equal(te, np.array([r[0] for r in ref]), equal_nan=True)
+        assert list(zip(kind.tolist(), a.tolist(), b.tolist())) == [tuple(r[1:4]) for r in ref]
+        assert np.all(np.isfinite(te))
 
 
 def test_the_prune_settings_are_sane():

@@ -18,6 +18,7 @@ from propulsor.checks.motion.transmission import TransmissionResult
 from propulsor.errors import InputError
 from propulsor.geometry.profile import Profile, circle_loop
 
+from contact_reference import checked, contact, pruned_hit
 from test_motion import ALPHA, epsilon_alpha, involute_gear
 
 # ---------------------------------------------------------------------------------------------------------------
@@ -531,21 +532,36 @@ def test_resolve_contact_stops_at_max_evals_and_reports_progress():
 
 
 def test_a_pair_apart_has_no_contact_and_a_contact_is_found_anew_after_one_without():
+    """The compiled search (``contact_track.track``): nothing within the largest free rotation of a pair 5 mm apart;
+    a position searched from a neighbour's contact, 1e-4 rad away, finds the contact of the full search from the
+    law's position, also from a neighbour 1-5 mrad off on either side; the reference search at one position
+    (``tests/contact_reference.py``) finds the same, and its contact point lies on the line of action."""
+    from propulsor.checks.motion.contact_track import track
+
+    def one(pair, phi, d, seed=math.nan, seed_phi=math.nan):
+        te, kind, a, b = track(pair, [phi], [phi], d, [seed], [seed_phi], False)
+        return float(te[0]), int(kind[0]), int(a[0]), int(b[0])
+
     po, info = _gear_pair()
     apart = PairOutlines(po.drv, po.dvn, MOD * Z + 5.0, po.driver_teeth, po.driven_teeth)
-    r = apart.contact(0.0, 0.0, DRIVE)
+    r = one(apart, 0.0, DRIVE)
+    assert math.isnan(r[0]) and r[1:4] == (-1, -1, -1)
+    r = contact(apart, 0.0, 0.0, DRIVE)
     assert math.isnan(r[0]) and r[1:4] == (-1, -1, -1) and np.isnan(r[4]).all() and r[4].shape == (2,)
     # tracking from a neighbour's contact gives the contact of a full search
-    te, kind, t1, t2, p = po.contact(0.01, 0.01, DRIVE)
-    tracked = po.contact(0.0101, 0.0101, DRIVE, te, 1e-4)
-    full = po.contact(0.0101, 0.0101, DRIVE)
+    te = one(po, 0.01, DRIVE)[0]
+    tracked = one(po, 0.0101, DRIVE, te, 0.01)
+    full = one(po, 0.0101, DRIVE)
+    assert math.isfinite(full[0]) and full[1] >= 0
     assert tracked[0] == pytest.approx(full[0], abs=1e-15) and tracked[1:4] == full[1:4]
     # from a neighbour whose contact lay 5e-3 rad on the loaded side (the start inside the driver: the first hit
     # found within a fifth of the margin is searched again from the law's position), or on the free side: the same
     for d in (DRIVE, REVERSE):
-        want = po.contact(0.0101, 0.0101, d)
+        want = one(po, 0.0101, d)
         for off in (-5e-3, -1e-3, 1e-3, 5e-3):
-            assert po.contact(0.0101, 0.0101, d, want[0] + off, 1e-4)[0] == pytest.approx(want[0], abs=1e-15)
+            assert one(po, 0.0101, d, want[0] + off, 0.01)[0] == pytest.approx(want[0], abs=1e-15)
+    full = contact(po, 0.0101, 0.0101, DRIVE)
+    assert full[:4] == one(po, 0.0101, DRIVE)
     # the contact point, in the driven frame: on the driven outline, on the drive line of action when turned
     p = np.asarray(full[4])
     ang = -(0.0101 + full[0])
@@ -708,36 +724,49 @@ def test_turning_angles_and_corners():
     assert _po(driver=bend(21.0), corner_deg=20.5).corner_drv[1] == True  # noqa: E712
 
 
+def _kind(po, side, v, e, t):
+    """The contact kind the compiled search gives (``contact_track._kind_nb``), checked equal to the reference's
+    (``tests/contact_reference.py``)."""
+    from propulsor.checks.motion.contact_track import _kind_nb
+
+    from contact_reference import kind
+
+    got = int(_kind_nb(side, v, e, t, policy.CONTACT_CORNER_NEAR_MM, po.corner_dvn, po.turn_dvn, po.corner_drv,
+                       po.turn_drv, po.drv.seg_len, po.drv.nxt, po.dvn.seg_len, po.dvn.nxt))
+    assert got == kind(po, side, v, e, t)
+    return got
+
+
 def test_contact_kind_of_a_vertex_on_an_edge():
     po = _po()
     near = policy.CONTACT_CORNER_NEAR_MM
     assert near == 2e-3
     # side 1: a driven vertex on a driver edge; the driven vertex's own corner first (convex: driven tip corner)
-    assert KINDS[po._kind(1, 0, 1, 0.5)] == "driven tip corner"
+    assert KINDS[_kind(po, 1, 0, 1, 0.5)] == "driven tip corner"
     # a straight-through driven vertex: the driver's corners at the edge's ends within 2e-3 mm
     # (edge 1 runs (4, 0) -> (4, 2), 2 mm long: t = 9.9e-4 is 1.98e-3 mm from its start)
-    assert po._kind(1, 1, 1, 0.5) == 0
-    assert KINDS[po._kind(1, 1, 1, 0.99e-3)] == "driver tip corner"
-    assert po._kind(1, 1, 1, 1.01e-3) == 0
+    assert _kind(po, 1, 1, 1, 0.5) == 0
+    assert KINDS[_kind(po, 1, 1, 1, 0.99e-3)] == "driver tip corner"
+    assert _kind(po, 1, 1, 1, 1.01e-3) == 0
     # edge 2 runs (4, 2) -> (2, 2): its end is the concave corner
-    assert KINDS[po._kind(1, 1, 2, 1.0 - 0.99e-3)] == "driver root corner"
-    assert po._kind(1, 1, 2, 1.0 - 1.01e-3) == 0
+    assert KINDS[_kind(po, 1, 1, 2, 1.0 - 0.99e-3)] == "driver root corner"
+    assert _kind(po, 1, 1, 2, 1.0 - 1.01e-3) == 0
     # side 2: a driver vertex on a driven edge
-    assert KINDS[po._kind(2, 0, 0, 0.5)] == "driver tip corner"
-    assert KINDS[po._kind(2, 3, 0, 0.5)] == "driver root corner"
+    assert KINDS[_kind(po, 2, 0, 0, 0.5)] == "driver tip corner"
+    assert KINDS[_kind(po, 2, 3, 0, 0.5)] == "driver root corner"
     # a driven square whose lower-left corner is concave: its own root corner
     notch = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [2.0, 1.0], [2.0, 2.0], [0.0, 2.0]])
     po2 = _po(driver=SQUARE_MID, driven=notch)
-    assert KINDS[po2._kind(1, 2, 0, 0.5)] == "driven root corner"
-    assert KINDS[po2._kind(1, 3, 0, 0.5)] == "driven tip corner"
+    assert KINDS[_kind(po2, 1, 2, 0, 0.5)] == "driven root corner"
+    assert KINDS[_kind(po2, 1, 3, 0, 0.5)] == "driven tip corner"
     # side 2 with a straight-through driver vertex (1 of SQUARE_MID): the driven's corners at the edge's ends
     # (driven edge 1 runs (1, 0) -> (1, 1), 1 mm, from a convex corner to the concave one)
-    assert po2._kind(2, 1, 1, 0.5) == 0
-    assert KINDS[po2._kind(2, 1, 1, 1.98e-3)] == "driven tip corner"
-    assert KINDS[po2._kind(2, 1, 1, 2e-3)] == "driven tip corner"  # 2e-3 x 1 mm: at the limit exactly, within it
-    assert po2._kind(2, 1, 1, 2.02e-3) == 0
-    assert KINDS[po2._kind(2, 1, 1, 1.0 - 1.98e-3)] == "driven root corner"
-    assert po2._kind(2, 1, 1, 1.0 - 2.02e-3) == 0
+    assert _kind(po2, 2, 1, 1, 0.5) == 0
+    assert KINDS[_kind(po2, 2, 1, 1, 1.98e-3)] == "driven tip corner"
+    assert KINDS[_kind(po2, 2, 1, 1, 2e-3)] == "driven tip corner"  # 2e-3 x 1 mm: at the limit exactly, within it
+    assert _kind(po2, 2, 1, 1, 2.02e-3) == 0
+    assert KINDS[_kind(po2, 2, 1, 1, 1.0 - 1.98e-3)] == "driven root corner"
+    assert _kind(po2, 2, 1, 1, 1.0 - 2.02e-3) == 0
 
 
 def test_pair_outlines_keeps_the_vertices_within_reach_sorted_by_angle():
@@ -764,20 +793,20 @@ def test_pair_outlines_keeps_the_vertices_within_reach_sorted_by_angle():
     assert po.hw_drv == pytest.approx(widest(5.0, 5.0, 8.0), abs=1e-4)
     # the search's windows of polar angle: vertices within centre +- hw, wrapped
     order, angs = po.o1, po.a1
-    assert sorted(ce._window(order, angs, 0.0, 0.1).tolist()) == [0]
-    assert sorted(ce._window(order, angs, math.pi / 2 + 2 * math.pi, 0.1).tolist()) == [1]
-    assert sorted(ce._window(order, angs, math.pi, math.pi / 2 + 0.01).tolist()) == [1, 3]
-    assert sorted(ce._window(order, angs, math.pi, math.pi / 2 - 0.01).tolist()) == []
-    assert ce._window(order, angs, 1.0, math.pi).tolist() == order.tolist()
-    assert sorted(ce._window(order, angs, -1.2, 0.4).tolist()) == [3, 4]
+    assert sorted(ce._window_nb(order, angs, 0.0, 0.1).tolist()) == [0]
+    assert sorted(ce._window_nb(order, angs, math.pi / 2 + 2 * math.pi, 0.1).tolist()) == [1]
+    assert sorted(ce._window_nb(order, angs, math.pi, math.pi / 2 + 0.01).tolist()) == [1, 3]
+    assert sorted(ce._window_nb(order, angs, math.pi, math.pi / 2 - 0.01).tolist()) == []
+    assert ce._window_nb(order, angs, 1.0, math.pi).tolist() == order.tolist()
+    assert sorted(ce._window_nb(order, angs, -1.2, 0.4).tolist()) == [3, 4]
 
 
 def test_nearest_tooth_wraps_and_takes_the_first_on_a_tie():
     c = np.array([0.0, 2.0, 4.0])
-    assert ce._nearest_tooth(c, 0.9) == 0 and ce._nearest_tooth(c, 1.1) == 1
-    assert ce._nearest_tooth(c, 1.0) == 0  # a tie: the first
-    assert ce._nearest_tooth(c, 2 * math.pi - 0.1) == 0 and ce._nearest_tooth(c, -2.0) == 2
-    assert ce._nearest_tooth(c, 5.5) == 0  # 5.5 - 2 pi = -0.78: nearer 0 than 4 (1.5 away)
+    assert ce._nearest_tooth_nb(c, 0.9) == 0 and ce._nearest_tooth_nb(c, 1.1) == 1
+    assert ce._nearest_tooth_nb(c, 1.0) == 0  # a tie: the first
+    assert ce._nearest_tooth_nb(c, 2 * math.pi - 0.1) == 0 and ce._nearest_tooth_nb(c, -2.0) == 2
+    assert ce._nearest_tooth_nb(c, 5.5) == 0  # 5.5 - 2 pi = -0.78: nearer 0 than 4 (1.5 away)
 
 
 def test_chunks_are_the_bounding_circles_of_runs():
@@ -904,7 +933,7 @@ def test_every_hit_of_a_window_puts_a_vertex_on_an_edge():
     """PairOutlines._all_hits (the per-tooth load's search): each finite hit, the driven wheel turned from its actual
     angle phi_a back (sign +1) or on (-1) by the hit's delta, puts the vertex on the other outline's edge at the
     hit's parameter (world frame: driven at the origin turned by -phi_a + sign delta, driver at (L, 0) turned by
-    theta); the least of them is the first hit of _hits."""
+    theta); the least of them is the first hit of the pruned search."""
     po, _ = _gear_pair()
     L = MOD * Z
 
@@ -925,7 +954,7 @@ def test_every_hit_of_a_window_puts_a_vertex_on_an_edge():
             v = (L, 0.0) + Rt @ po.drv.points[i2[k]]
             a, b = po.dvn.seg_a[e2[k]], po.dvn.seg_b[e2[k]]
             assert np.linalg.norm(v - rot(-phi_a + sign * d2[k]) @ (a + t2[k] * (b - a))) < 1e-9
-        first = po._hits(phi_a, theta, sign, w)
+        first = pruned_hit(po, phi_a, theta, sign, w)
         assert first[0] == min(d1.min(), d2.min())
         side = 1 if d1.min() <= d2.min() else 2
         assert first[1] == side
@@ -1024,10 +1053,10 @@ def test_resolve_contact_progress_totals():
 
 def test_window_wraps_across_plus_and_minus_pi():
     order, angs = np.arange(5), np.array([-3.12, -1.0, 0.0, 1.0, 3.1])
-    assert sorted(ce._window(order, angs, 3.1, 0.1).tolist()) == [0, 4]     # -3.12 is 3.163 - 2 pi
-    assert sorted(ce._window(order, angs, -3.1, 0.1).tolist()) == [0, 4]    # 3.1 is -3.183 + 2 pi
-    assert sorted(ce._window(order, angs, 3.1 + 2 * math.pi, 0.1).tolist()) == [0, 4]
-    assert sorted(ce._window(order, angs, 0.5, 0.6).tolist()) == [2, 3]
+    assert sorted(ce._window_nb(order, angs, 3.1, 0.1).tolist()) == [0, 4]     # -3.12 is 3.163 - 2 pi
+    assert sorted(ce._window_nb(order, angs, -3.1, 0.1).tolist()) == [0, 4]    # 3.1 is -3.183 + 2 pi
+    assert sorted(ce._window_nb(order, angs, 3.1 + 2 * math.pi, 0.1).tolist()) == [0, 4]
+    assert sorted(ce._window_nb(order, angs, 0.5, 0.6).tolist()) == [2, 3]
 
 
 def test_runs_take_any_true_value_and_events_skip_a_change_without_a_speed():
@@ -1082,55 +1111,54 @@ def test_a_contact_is_tracked_from_its_neighbour_in_one_small_window():
     """The module's promise (one measurement under a millisecond): from a neighbouring sample's contact the driven
     wheel is placed a margin m = 3e-4 + |dphi| / 4 rad (at most 1e-3) on the free side of it and turned through 2 m:
     one search; a contact found within m / 5 of that start, or none, is searched again from the law's position with
-    windows growing x4 from 3e-3 rad.  The hits searched are recorded around the real search."""
+    windows growing x4 from 3e-3 rad.  The hits searched are recorded around the real search, in the reference
+    search at one position (``tests/contact_reference.py``), which the compiled search matches at each of these
+    positions to the last bit (``checked``)."""
     po, _ = _gear_pair()
     calls = []
-    real = po._hits
 
-    def recorded(phi_a, theta, sign, w):
+    def recorded(pair, phi_a, theta, sign, w):
         calls.append((phi_a, sign, w))
-        return real(phi_a, theta, sign, w)
+        return pruned_hit(pair, phi_a, theta, sign, w)
 
-    po._hits = recorded
     assert (policy.CONTACT_TRACK_MARGIN_RAD, policy.CONTACT_TRACK_MARGIN_MAX_RAD, policy.CONTACT_SEARCH_START_RAD) == (
         3e-4, 1e-3, 3e-3)
     for d in (DRIVE, REVERSE):
         sign = 1.0 if d == DRIVE else -1.0
         calls.clear()
-        te0 = po.contact(0.01, 0.01, d)[0]
+        te0 = checked(po, 0.01, 0.01, d, hit=recorded)[0]
         # the full search: nothing within 3e-3 rad (te 3.3e-3 rad), found within 1.2e-2
         assert calls == [(0.01, sign, 3e-3), (0.01, sign, pytest.approx(1.2e-2))]
         for dphi, m in ((1e-4, 3e-4 + 0.25e-4), (-2e-3, 3e-4 + 5e-4), (1e-2, 1e-3)):
             calls.clear()
-            te = po.contact(0.01 + dphi, 0.01 + dphi, d, te0, dphi)[0]
+            te = checked(po, 0.01 + dphi, 0.01 + dphi, d, te0, 0.01, hit=recorded)[0]
             assert calls == [(pytest.approx(0.01 + dphi + te0 + sign * m, abs=1e-15), sign, pytest.approx(2 * m))]
             assert te == pytest.approx(te0, abs=1e-6)
         # the neighbour's contact 0.9 m on the loaded side: found 0.1 m from the start, searched again
         m = 3e-4
         calls.clear()
-        te = po.contact(0.01, 0.01, d, te0 - sign * 0.9 * m, 0.0)[0]
+        te = checked(po, 0.01, 0.01, d, te0 - sign * 0.9 * m, 0.01, hit=recorded)[0]
         assert len(calls) == 3 and calls[1] == (0.01, sign, 3e-3) and te == te0
         # dphi not given: 0, the least margin
         calls.clear()
-        po.contact(0.01, 0.01, d, te0)
+        checked(po, 0.01, 0.01, d, te0, hit=recorded)
         assert calls == [(pytest.approx(0.01 + te0 + sign * m, abs=1e-15), sign, pytest.approx(2 * m))]
         # 0.7 m: found 0.3 m from the start: kept
         calls.clear()
-        te = po.contact(0.01, 0.01, d, te0 - sign * 0.7 * m, 0.0)[0]
+        te = checked(po, 0.01, 0.01, d, te0 - sign * 0.7 * m, 0.01, hit=recorded)[0]
         assert len(calls) == 1 and te == pytest.approx(te0, abs=1e-15)
     # a full search that widens its window: the pair set 0.5 mm apart (te 0.015 rad): 3e-3, then 1.2e-2, then 4.8e-2
     far = PairOutlines(po.drv, po.dvn, MOD * Z + 0.5, po.driver_teeth, po.driven_teeth)
-    real_far = far._hits
     calls.clear()
-    far._hits = lambda phi_a, theta, sign, w: (calls.append(w), real_far(phi_a, theta, sign, w))[1]
-    assert -4.8e-2 < far.contact(0.0, 0.0, DRIVE)[0] < -1.2e-2
+    hit = lambda pair, phi_a, theta, sign, w: (calls.append(w), pruned_hit(pair, phi_a, theta, sign, w))[1]  # noqa: E731
+    assert -4.8e-2 < checked(far, 0.0, 0.0, DRIVE, hit=hit)[0] < -1.2e-2
     assert calls == [3e-3, pytest.approx(1.2e-2), pytest.approx(4.8e-2)]
 
 
 def test_resolve_contact_seeds_each_measurement_with_its_neighbour():
     """Each sample of the grid is measured from the previous sample's contact (dphi: their distance), each bisection
     from the contact at the interval's left end; the compiled runs (contact_track.track) give, bit for bit, what
-    PairOutlines.contact gives one position at a time seeded so."""
+    the reference search (``tests/contact_reference.py``) gives one position at a time seeded so."""
     from propulsor.checks.motion import contact_events
 
     po, _ = _gear_pair()
@@ -1153,10 +1181,10 @@ def test_resolve_contact_seeds_each_measurement_with_its_neighbour():
     grid = calls[0]
     assert grid[4] is True and len(grid[0]) == n and math.isnan(grid[2][0]) and math.isnan(grid[3][0])
     assert all(not call[4] for call in calls[1:]) and sum(len(call[0]) for call in calls) == c.evaluations
-    # the grid, one position after the other from the one before, as PairOutlines.contact does it
+    # the grid, one position after the other from the one before, as the reference search does it
     prev = prev_phi = None
     for phi, theta, te, state in zip(grid[0], grid[1], grid[5], grid[6]):
-        r = po.contact(phi, theta, DRIVE, prev, 0.0 if prev_phi is None else phi - prev_phi)
+        r = contact(po, phi, theta, DRIVE, prev, 0.0 if prev_phi is None else phi - prev_phi)
         assert (r[0] == te or (math.isnan(r[0]) and math.isnan(te))) and r[1:4] == state  # kind, driver, driven tooth
         prev, prev_phi = (te, phi) if math.isfinite(te) else (None, None)
     te_at = dict(zip(c.phi.tolist(), c.te.tolist()))
@@ -1165,7 +1193,7 @@ def test_resolve_contact_seeds_each_measurement_with_its_neighbour():
         for phi, theta, seed, a, te, state in zip(phis, thetas, seeds, seed_phis, tes, states):
             assert a == max(x for x in measured if x < phi)  # the interval's left end, measured in an earlier round
             assert seed == te_at[a] or (math.isnan(seed) and math.isnan(te_at[a]))
-            r = po.contact(phi, theta, DRIVE, seed, phi - a)
+            r = contact(po, phi, theta, DRIVE, seed, phi - a)
             assert r[0] == te == te_at[phi] and r[1:4] == state
         measured |= set(phis)
     assert len(calls) > 2  # bisections in more than one round
@@ -1184,18 +1212,18 @@ def test_contact_of_a_bar_and_a_block_off_the_line_of_centres():
     po = PairOutlines(Outline([block], 100.0), Outline([BAR], 100.0), 8.0, [2.0, 2.2], [0.05, 0.2])
     e = _edge_meets_corner(q)
     assert 0.15 < e < policy.MOTION_MAX_FREE_ANGLE_RAD
-    te, kind, t1, t2, p = po.contact(0.0, 0.0, DRIVE)
+    te, kind, t1, t2, p = checked(po, 0.0, 0.0, DRIVE)
     assert te == pytest.approx(-e, abs=1e-12)
     assert KINDS[kind] == "driver tip corner" and (t1, t2) == (0, 0)
     c, s = math.cos(-e), math.sin(-e)
     assert p == pytest.approx((c * q[0] - s * q[1], s * q[0] + c * q[1]), abs=1e-9)
     # turned on (reverse: CW) nothing is met within the largest free rotation
-    assert math.isnan(po.contact(0.0, 0.0, REVERSE)[0])
+    assert math.isnan(checked(po, 0.0, 0.0, REVERSE)[0])
     # the driver turned by theta about its axis: the corner moves on a circle about (8, 0)
     th = 0.05
     qw = np.array([8.0, 0.0]) + np.array([[math.cos(th), -math.sin(th)], [math.sin(th), math.cos(th)]]) @ (q - (8.0, 0.0))
-    assert po.contact(0.0, th, DRIVE)[0] == pytest.approx(-_edge_meets_corner(qw), abs=1e-12)
-    assert po.contact(0.02, th, DRIVE)[0] == pytest.approx(-_edge_meets_corner(qw) - 0.02, abs=1e-12)
+    assert checked(po, 0.0, th, DRIVE)[0] == pytest.approx(-_edge_meets_corner(qw), abs=1e-12)
+    assert checked(po, 0.02, th, DRIVE)[0] == pytest.approx(-_edge_meets_corner(qw) - 0.02, abs=1e-12)
 
 
 
@@ -1207,7 +1235,7 @@ def test_a_driven_corner_on_a_driver_edge_names_the_teeth_from_the_contact_point
     po = PairOutlines(Outline([block], 100.0), Outline([BAR], 100.0), 14.0, [2.6, 2.8], [0.0, 0.3])
     x = math.sqrt(100.25 - 2.2 ** 2)
     e = math.atan2(2.2, x) - math.atan2(0.5, 10.0)
-    te, kind, t1, t2, p = po.contact(0.0, 0.0, DRIVE)
+    te, kind, t1, t2, p = checked(po, 0.0, 0.0, DRIVE)
     assert te == pytest.approx(-e, abs=1e-12)
     assert KINDS[kind] == "driven tip corner" and (t1, t2) == (0, 0)
     assert p.tolist() == [10.0, 0.5] and p.dtype == np.float64
@@ -1233,7 +1261,7 @@ def test_a_driven_corner_on_a_turned_driver_edge():
     assert math.atan2(local[1], local[0]) == pytest.approx(2.6474, abs=1e-4)
     po = PairOutlines(Outline([_square(10.0 - 14.0, 3.2)], 100.0), Outline([BAR], 100.0), 14.0, [2.6006, 2.7006],
                       [0.0, 0.3])
-    te, kind, t1, t2, p = po.contact(0.0, th, DRIVE)
+    te, kind, t1, t2, p = checked(po, 0.0, th, DRIVE)
     assert te == pytest.approx(-e, abs=1e-12) and (KINDS[kind], t1, t2) == ("driven tip corner", 0, 0)
 
 

@@ -102,26 +102,9 @@ def _chunks(points: np.ndarray, order: np.ndarray, size: int) -> tuple[np.ndarra
     return cc, cr
 
 
-def _window(order: np.ndarray, angs: np.ndarray, centre: float, hw: float) -> np.ndarray:
-    """The vertices (of ``order``) whose polar angle lies within centre +- hw (wrapped)."""
-    if hw >= math.pi:
-        return order
-    c = (centre + math.pi) % (2 * math.pi) - math.pi
-    parts = []
-    for k in (-1, 0, 1):
-        lo, hi = c - hw + 2 * math.pi * k, c + hw + 2 * math.pi * k
-        parts.append(order[np.searchsorted(angs, lo):np.searchsorted(angs, hi)])
-    return np.concatenate(parts)
-
-
 def _rot(a: float) -> np.ndarray:
     c, s = math.cos(a), math.sin(a)
     return np.array([[c, -s], [s, c]])
-
-
-def _nearest_tooth(centres: np.ndarray, angle: float) -> int:
-    """The tooth whose centre (body polar angle) is nearest to ``angle`` (the first on a tie)."""
-    return int(_nearest_tooth_nb(centres, float(angle)))
 
 
 class PairOutlines:
@@ -197,84 +180,6 @@ class PairOutlines:
         i1, d1, e1, t1, i2, d2, e2, t2 = _pair_hits(float(phi_a), float(theta), float(sign), float(w),
                                                     *self._kernel_args)
         return (i1, d1, e1, t1), (i2, d2, e2, t2)
-
-    def _hits(self, phi_a: float, theta: float, sign: float, w: float):
-        """First entering hit when the driven wheel, at actual angle phi_a, turns by sign (+1: back, the
-        drive flanks) through at most w rad: (delta, side, vertex, edge, t); side 1: a driven vertex on a driver
-        edge, side 2: a driver vertex on a driven edge.  Compiled: :func:`_first_hit_pruned` (the first least of
-        :func:`_pair_hits`, the vertices that cannot reach the mate within w left out first; the test's reference,
-        ``tests/contact_hit_reference.py``, takes it from every vertex of the window)."""
-        ka = self._kernel_args
-        return _first_hit_pruned(float(phi_a), float(theta), float(sign), float(w), *ka[:11], *self._prune_args,
-                                 *ka[11:])
-
-    def contact(self, phi: float, theta: float, direction: int, prev_te: float | None = None, dphi: float = 0.0):
-        """(te, kind, driver tooth, driven tooth, contact point in the driven body frame) at law phase phi
-        (driver at theta): the driven wheel turned from the law's position until the outlines touch (direction
-        DRIVE: back; REVERSE: on).  te = actual - law (rad); nan where nothing touches within the largest free
-        rotation.  ``prev_te``: the te of a sample ``dphi`` away, from which the search starts (a margin of
-        ``policy.CONTACT_TRACK_MARGIN_RAD`` + |dphi| / 4 on the free side, at most ``CONTACT_TRACK_MARGIN_MAX_RAD``;
-        a contact found within a fifth of it of the start is searched again from the law's position)."""
-        sign = 1.0 if direction == DRIVE else -1.0
-        hit = None
-        if prev_te is not None and math.isfinite(prev_te):
-            # start a margin on the free side of the neighbouring sample's contact (less than the backlash), search
-            # a window of twice that; a contact that moved more than most of the margin to the free side may have
-            # been passed: then the full search
-            m = min(policy.CONTACT_TRACK_MARGIN_RAD + 0.25 * abs(dphi), policy.CONTACT_TRACK_MARGIN_MAX_RAD)
-            h = self._hits(phi + prev_te + sign * m, theta, sign, 2.0 * m)
-            if math.isfinite(h[0]) and 0.2 * m < h[0]:
-                hit, te = h, prev_te + sign * (m - h[0])
-        if hit is None:
-            w = policy.CONTACT_SEARCH_START_RAD
-            while True:
-                h = self._hits(phi, theta, sign, w)
-                if math.isfinite(h[0]) or w >= policy.MOTION_MAX_FREE_ANGLE_RAD:
-                    break
-                w = min(4.0 * w, policy.MOTION_MAX_FREE_ANGLE_RAD)
-            if not math.isfinite(h[0]):
-                return math.nan, -1, -1, -1, np.full(2, np.nan)
-            hit, te = h, -sign * h[0]
-        _, side, v, e, t = hit
-        # contact point in each body frame
-        phi_a = phi + te
-        if side == 1:
-            p_dvn = self.dvn.points[v]
-            p_drv = _world_to_driver(_driven_to_world(p_dvn, phi_a), theta, self.L)
-        else:
-            a, b = self.dvn.seg_a[e], self.dvn.seg_b[e]
-            p_dvn = a + t * (b - a)
-            p_drv = self.drv.points[v]
-        kind = self._kind(side, v, e, t)
-        tooth_dvn = _nearest_tooth(self.driven_teeth, math.atan2(p_dvn[1], p_dvn[0]))
-        tooth_drv = _nearest_tooth(self.driver_teeth, math.atan2(p_drv[1], p_drv[0]))
-        return te, kind, tooth_drv, tooth_dvn, np.asarray(p_dvn, float)
-
-    def _kind(self, side: int, v: int, e: int, t: float) -> int:
-        """Contact kind code: the vertex's own corner, else a corner of the other outline within
-        ``policy.CONTACT_CORNER_NEAR_MM`` of the hit on its edge, else flank."""
-        near = policy.CONTACT_CORNER_NEAR_MM
-        if side == 1:   # driven vertex v on driver edge e
-            own, own_turn, other, other_turn, oo = self.corner_dvn, self.turn_dvn, self.corner_drv, self.turn_drv, self.drv
-            own_code, other_code = 2, 1
-        else:
-            own, own_turn, other, other_turn, oo = self.corner_drv, self.turn_drv, self.corner_dvn, self.turn_dvn, self.dvn
-            own_code, other_code = 1, 2
-        if own[v]:
-            return own_code if own_turn[v] > 0 else own_code + 2
-        L = oo.seg_len[e]
-        for idx, dist in ((e, t * L), (oo.nxt[e], (1.0 - t) * L)):
-            if other[idx] and dist <= near:
-                return other_code if other_turn[idx] > 0 else other_code + 2
-        return 0
-
-
-def _driven_to_world(p, phi_a):
-    return _rot(-phi_a) @ np.asarray(p, float)
-
-
-def _world_to_driver(p, theta, L):
-    return _rot(-theta) @ (np.asarray(p, float) - (L, 0.0))
 
 
 @dataclass(frozen=True)

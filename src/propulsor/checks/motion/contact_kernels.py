@@ -56,7 +56,8 @@ def _window_size(bounds):
 
 @njit(cache=True)
 def _window_nb(order, angs, centre, hw):
-    """:func:`_window` compiled (the same vertices in the same order)."""
+    """The vertices (of ``order``, sorted by their polar angles ``angs``) whose polar angle lies within centre +- hw
+    (wrapped), in that order."""
     if hw >= math.pi:
         return order.copy()
     bounds = _window_bounds(angs, centre, hw)

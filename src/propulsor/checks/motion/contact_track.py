@@ -2,10 +2,11 @@
 from the contact of the one before it (or from a seed of its own), its state (contact kind, driver and driven tooth)
 found beside it.
 
-The same operations as :meth:`.contact_events.PairOutlines.contact` and ``_kind``, in the same order (a search a
-margin on the free side of the neighbouring contact, else from the law's position through widening windows; the
-contact point put into each body frame, the nearest tooth centre by polar angle): the same floats, without the
-Python around each of ten to twenty thousand measurements a cycle (about a third of their time).
+The same operations as the reference search at one position (``tests/contact_reference.py``: ``contact`` and
+``kind``), in the same order (a search a margin on the free side of the neighbouring contact, else from the law's
+position through widening windows; the contact point put into each body frame, the nearest tooth centre by polar
+angle): the same floats, without the Python around each of ten to twenty thousand measurements a cycle (about a third
+of their time).
 """
 
 from __future__ import annotations
@@ -23,8 +24,8 @@ __all__ = ["track"]
 
 @njit(cache=True)
 def _kind_nb(side, v, e, t, near, corner_dvn, turn_dvn, corner_drv, turn_drv, len_drv, nxt_drv, len_dvn, nxt_dvn):
-    """:meth:`.contact_events.PairOutlines._kind`: the vertex's own corner, else a corner of the other outline within
-    ``near`` of the hit on its edge (the edge's start, then its end), else flank (0)."""
+    """The contact kind (``tests/contact_reference.py``, ``kind``): the vertex's own corner, else a corner of the
+    other outline within ``near`` of the hit on its edge (the edge's start, then its end), else flank (0)."""
     if side == 1:  # a driven vertex on a driver edge
         own, own_turn, other, other_turn, seg_len, nxt = corner_dvn, turn_dvn, corner_drv, turn_drv, len_drv, nxt_drv
         own_code, other_code = 2, 1
@@ -99,9 +100,10 @@ def _track_nb(phis, ths, seeds, seed_phis, chained, sign, m0, m_max, w0, w_max, 
 
 
 def track(pair, phis, thetas, direction: int, seeds, seed_phis, chained: bool):
-    """(te, kind, driver tooth, driven tooth) at each of the law phases ``phis`` (driver at ``thetas``), as
-    :meth:`.contact_events.PairOutlines.contact` gives them: ``chained``, each position searched from the contact of
-    the one before it (the first from ``seeds[0]`` at ``seed_phis[0]``); else each from its own seed.  A seed of nan:
+    """(te, kind, driver tooth, driven tooth) at each of the law phases ``phis`` (driver at ``thetas``), as the
+    reference search at one position gives them (``tests/contact_reference.py``): ``chained``, each position searched
+    from the contact of the one before it (the first from ``seeds[0]`` at ``seed_phis[0]``); else each from its own
+    seed.  A seed of nan:
     the full search from the law's position.  te nan, kind and teeth -1 where nothing touches."""
     ka, pa = pair._kernel_args, pair._prune_args
     sign = 1.0 if direction == DRIVE else -1.0

@@ -44,8 +44,8 @@ class PairContact:
 
 def _all_hits(pair: PairOutlines, phi_a: float, theta: float, sign: float, w: float):
     """Every entering hit within w of the driven wheel turning from phi_a: (delta, side, vertex, edge, t) arrays
-    (side 1: a driven vertex on a driver edge, 2: a driver vertex on a driven edge); :meth:`PairOutlines._hits`
-    without the reduction to the first."""
+    (side 1: a driven vertex on a driver edge, 2: a driver vertex on a driven edge): the hits of
+    :func:`.contact_kernels._first_hit_pruned` without the reduction to the first."""
     (i1, d1, e1, t1), (i2, d2, e2, t2) = pair._all_hits(phi_a, theta, sign, w)
     k1, k2 = np.isfinite(d1), np.isfinite(d2)
     return (np.concatenate([d1[k1], d2[k2]]), np.concatenate([np.ones(k1.sum(), int), np.full(k2.sum(), 2)]),
