@@ -47,3 +47,50 @@ def test_a_build_with_cold_kernels_compiles_them_first_and_says_so(monkeypatch):
     order.clear()
     Pipeline(lambda p, w: order.append("design") or "d", ())(object(), W())
     assert order == ["design"]
+
+
+def test_a_kernel_compiled_into_another_is_compiled_again_when_its_own_file_changes(tmp_path):
+    """Two modules in a fresh package: b's cached kernel calls a's.  After a's file changes (its kernel now returns 2),
+    a new process must see 2 through b.  numba alone keys b's disk cache on b's file and loads b's old code, which
+    still returns 1 (the package without :func:`nbcache.bind`: shown here, so the test sees the hazard it guards);
+    with both modules bound to both files, b is compiled again."""
+    import os
+    import subprocess
+    import sys
+
+    def write(pkg, bound):
+        d = tmp_path / pkg
+        d.mkdir()
+        (d / "__init__.py").write_text("")
+        tail = "\nfrom propulsor.checks.nbcache import bind\nbind(globals(), FILES)\n" if bound else ""
+        files = f"FILES = [{str(d / 'a.py')!r}, {str(d / 'b.py')!r}]\n"
+        (d / "a.py").write_text("from numba import njit\n" + files + "@njit(cache=True)\ndef f(x):\n    return x + 1\n"
+                                + tail)
+        (d / "b.py").write_text(f"from numba import njit\nfrom {pkg}.a import f\n" + files
+                                + "@njit(cache=True)\ndef g(x):\n    return f(x) * 1\n" + tail)
+        return d
+
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"),
+               PYTHONPATH=os.pathsep.join([str(tmp_path), str(SRC)]))
+
+    def run(pkg):
+        out = subprocess.run([sys.executable, "-c", f"from {pkg}.b import g; print(g(0))"], env=env,
+                             capture_output=True, text=True, check=True)
+        return int(out.stdout.split()[-1])
+
+    for pkg, bound in (("plain", False), ("bound", True)):
+        d = write(pkg, bound)
+        assert run(pkg) == 1 and run(pkg) == 1  # compiled, then loaded from the disk cache
+        a = d / "a.py"
+        a.write_text(a.read_text().replace("return x + 1", "return x + 2 "))  # another size: another stamp
+        st = a.stat()
+        os.utime(a, (st.st_atime, st.st_mtime + 10))
+        assert run(pkg) == (2 if bound else 1), pkg
+
+
+def test_the_kernel_sources_are_the_listed_modules_files():
+    from propulsor.checks import nbcache
+
+    want = sorted(str(SRC / (m.replace(".", "/") + ".py")) for m in kernels.MODULES)
+    assert sorted(nbcache.SOURCES) == want
+    assert all(Path(f).is_file() for f in nbcache.SOURCES)

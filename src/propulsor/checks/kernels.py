@@ -5,6 +5,8 @@ A build on a fresh install compiled them where they were first called — in the
 as-built contact (each worker its own copy), in the mesh checks — as 12-19 s silences between its progress lines,
 about 34 CPU s in all on the seed-002 Fourier pair (71 s wall against 38 s warm).  The build now compiles them first
 when :func:`cold`, saying so, before it forks any worker; ``make install`` compiles them ahead (:func:`warm`).
+Their disk cache is keyed on every kernel source (:mod:`.nbcache`): a kernel compiled into another's code is never
+loaded stale after its own file changed.
 """
 
 from __future__ import annotations

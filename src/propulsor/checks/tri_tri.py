@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 from numba import njit
+from .nbcache import bind
 
 __all__ = ["pairs_intersect"]
 
@@ -233,3 +234,7 @@ def pairs_intersect(V: np.ndarray, F: np.ndarray, I: np.ndarray, J: np.ndarray, 
     return _pairs(np.ascontiguousarray(V, np.float64), np.ascontiguousarray(F, np.int64),
                   np.ascontiguousarray(I, np.int64), np.ascontiguousarray(J, np.int64),
                   np.ascontiguousarray(N, np.float64), np.ascontiguousarray(D, np.float64), float(eps))
+
+
+# the disk cache of these kernels keyed on every kernel source (one may be compiled into another's code)
+bind(globals())

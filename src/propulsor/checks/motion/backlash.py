@@ -12,6 +12,7 @@ from numba import njit
 from .outlines import Outline
 from .poses import apply_pose
 from .nearest import disc_cells, grid_of
+from ..nbcache import bind
 
 __all__ = ['free_rotation']
 
@@ -228,3 +229,7 @@ def free_rotation(drv: Outline, dvn: Outline, P1: np.ndarray, C1: np.ndarray, P2
     c, s = math.cos(ang), math.sin(ang)
     pw = apply_pose(M2, np.array([[c * pt_driven_frame[0] - s * pt_driven_frame[1], s * pt_driven_frame[0] + c * pt_driven_frame[1]]]))[0]
     return _FreeRotation(float(dmin), n_pairs, pw)
+
+
+# the disk cache of these kernels keyed on every kernel source (one may be compiled into another's code)
+bind(globals())

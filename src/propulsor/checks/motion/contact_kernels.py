@@ -13,6 +13,7 @@ import numpy as np
 from numba import njit
 
 from .backlash import _rot_pairs, _rot_reduce
+from ..nbcache import bind
 
 #: the two directions of the loaded contact: the driver's loaded flanks pushing (the driven wheel turned back onto
 #: them), and the other flanks (turned on)
@@ -242,3 +243,7 @@ def _first_hit_pruned(phi_a, theta, sign, w, L, dvn_V, o1, a1, hw_dvn, drv_V, o2
     if m1 <= m2:
         return m1, 1, k1[j1], e1[j1], q1[j1]
     return m2, 2, k2[j2], e2[j2], q2[j2]
+
+
+# the disk cache of these kernels keyed on every kernel source (one may be compiled into another's code)
+bind(globals())

@@ -18,6 +18,7 @@ from numba import njit
 
 from ... import policy
 from .contact_kernels import DRIVE, _first_hit_pruned, _nearest_tooth_nb
+from ..nbcache import bind
 
 __all__ = ["track"]
 
@@ -117,3 +118,7 @@ def track(pair, phis, thetas, direction: int, seeds, seed_phis, chained: bool):
                      np.ascontiguousarray(pair.driven_teeth, np.float64), pair.corner_dvn, pair.turn_dvn,
                      pair.corner_drv, pair.turn_drv, pair.drv.seg_len, pair.drv.nxt, pair.dvn.seg_len, pair.dvn.nxt,
                      tuple(ka[:11]) + tuple(pa) + tuple(ka[11:]))
+
+
+# the disk cache of these kernels keyed on every kernel source (one may be compiled into another's code)
+bind(globals())

@@ -16,6 +16,7 @@ import numpy as np
 from numba import njit
 
 from .nearest import disc_cells, grid_of
+from ..nbcache import bind
 
 __all__ = ["certainly_apart"]
 
@@ -108,3 +109,7 @@ def certainly_apart(A, B, PB: np.ndarray, PA: np.ndarray, d: float) -> bool:
             return False
     return not (_holds_a_loop(np.ascontiguousarray(PB), _loop_firsts(B), A.points, A.seg_b)
                 or _holds_a_loop(np.ascontiguousarray(PA), _loop_firsts(A), B.points, B.seg_b))
+
+
+# the disk cache of these kernels keyed on every kernel source (one may be compiled into another's code)
+bind(globals())

@@ -19,6 +19,7 @@ import math
 
 import numpy as np
 from numba import njit
+from ..nbcache import bind
 
 __all__ = ["VertexGrid", "grid_of", "disc_cells", "nearest_edge"]
 
@@ -239,3 +240,7 @@ def nearest_edge(P: np.ndarray, tgt, src) -> tuple[float, int, np.ndarray]:
         return d, i, q
     hints[id(src)] = float(d)
     return float(d), int(i), np.array([qx, qy])
+
+
+# the disk cache of these kernels keyed on every kernel source (one may be compiled into another's code)
+bind(globals())

@@ -1,0 +1,52 @@
+"""numba's on-disk cache of the checks' kernels, keyed on every kernel source, not only the kernel's own file.
+
+numba keeps a kernel's compiled code beside its module and reuses it while that one file is unchanged (its mtime and
+size).  A kernel that calls a kernel of another module (the as-built contact's ``_track_nb`` calls
+``contact_kernels``, which calls ``backlash``) has the callee compiled into it: when only the callee's file changes (a
+``git pull`` in a checkout, an edit), numba loads the caller's old code, which runs the old callee, silently.
+:func:`bind` keys every cached kernel of a module on the stamps of all the kernel sources (:data:`SOURCES`, the
+files of ``checks.kernels.MODULES``): a change to any of them compiles them all again, once.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+_HERE = Path(__file__).resolve().parent
+#: every source file with cached kernels (``checks.kernels.MODULES``; a test keeps the two lists equal)
+SOURCES = tuple(str(_HERE / f) for f in ("tri_tri.py", "motion/nearest.py", "motion/crossing.py",
+                                         "motion/backlash.py", "motion/contact_kernels.py",
+                                         "motion/contact_track.py"))
+
+__all__ = ["SOURCES", "bind", "stamp"]
+
+
+def stamp(files=SOURCES) -> tuple:
+    """(mtime, size) of each file, in order: what numba compares for one file, here for all of them."""
+    out = []
+    for f in files:
+        st = os.stat(f)
+        out.append((st.st_mtime, st.st_size))
+    return tuple(out)
+
+
+def bind(namespace: dict, files=SOURCES) -> int:
+    """Key the disk cache of each cached kernel in ``namespace`` (a module's ``globals()``, before any kernel of it
+    ran) on :func:`stamp` of ``files``; the number of kernels bound.  Where numba's cache is not of the layout read
+    here (another numba, caching off) nothing is changed: the kernels cache as numba does by itself."""
+    from numba.core.registry import CPUDispatcher
+
+    s = None
+    n = 0
+    for value in list(namespace.values()):
+        if not isinstance(value, CPUDispatcher):
+            continue
+        cache_file = getattr(getattr(value, "_cache", None), "_cache_file", None)
+        if cache_file is None or not hasattr(cache_file, "_source_stamp"):
+            continue
+        if s is None:
+            s = stamp(files)
+        cache_file._source_stamp = s
+        n += 1
+    return n
