@@ -265,7 +265,7 @@ def _ticking_job(n: int) -> int:
 def test_a_job_counts_to_the_build_that_started_it(monkeypatch, jobs):
     """parallel.start(..., counter=): a job's ticks reach the counter — at once when it runs inline (a budget of
     one process), through a pipe while parallel.result waits for it when forked (the last always)."""
-    from propulsor import parallel
+    from propulsor import job_ticks, parallel
 
     monkeypatch.setenv("PROPULSOR_JOBS", jobs)
     monkeypatch.delenv("MAKEFLAGS", raising=False)
@@ -279,7 +279,7 @@ def test_a_job_counts_to_the_build_that_started_it(monkeypatch, jobs):
     else:
         assert not isinstance(job, parallel.Done) and got[-1] == (20, 20) and 1 <= len(got) < 20
         assert job.propulsor_ticks.fd == -1  # its pipe closed once collected
-    assert parallel._TICK is None
+    assert job_ticks._TICK is None
 
 
 def test_a_count_read_late_paces_from_its_first_count(clock):
@@ -340,7 +340,7 @@ def test_a_forked_jobs_ticks_reach_the_counter_while_the_build_works_on(monkeypa
     (before: 8 s of silence, then "7201/7201" at once).  A nested job's ticks stay out of its count."""
     import time
 
-    from propulsor import parallel
+    from propulsor import job_ticks, parallel
 
     monkeypatch.setenv("PROPULSOR_JOBS", jobs)
     monkeypatch.delenv("MAKEFLAGS", raising=False)
@@ -356,7 +356,7 @@ def test_a_forked_jobs_ticks_reach_the_counter_while_the_build_works_on(monkeypa
         assert parallel.result(nested) == 5
     assert seen_before_result and seen_before_result[0][1] == 30
     assert got[-1] == (5, 5) and all(total in (30, 5) for _, total in got)
-    assert not parallel._LIVE_TICKS
+    assert not job_ticks._LIVE_TICKS
 
 
 class _Params:

@@ -279,7 +279,7 @@ def test_as_built_resolves_both_directions_over_one_period_and_none_after_a_jam(
     """The elliptical pair at 6 deg of driver: each direction the contact of resolve_contact over 0 .. 2 pi (one
     lobe: the whole turn) of the driven wheel, counted to the build through parallel.tick; a proof with a jam or
     a phase without a running position gives None."""
-    from propulsor import parallel
+    from propulsor import job_ticks
     from propulsor.parts.noncircular_pair.as_built import as_built, contact_direction, pair_outlines
 
     _, d = _elliptical_design()
@@ -292,7 +292,7 @@ def test_as_built_resolves_both_directions_over_one_period_and_none_after_a_jam(
         assert total < 3000, f"{total} positions: not the 6 deg step asked for"
         ticks.append((done, total))
 
-    monkeypatch.setattr(parallel, "_TICK", tick)
+    monkeypatch.setattr(job_ticks, "_TICK", tick)
     one = contact_direction(d, mount, REVERSE, step)
     assert ticks and ticks[-1][0] == ticks[-1][1] == one.evaluations
     po = pair_outlines(d, mount)
