@@ -25,6 +25,7 @@ import numpy as np
 
 from ..policy import MESH_CHORD_LIMIT_MM, MESH_VOLUME_REL_TOL
 from ..check import Check
+from .box_pairs import child_pairs
 from .tri_tri import pairs_intersect
 
 
@@ -126,22 +127,8 @@ def overlapping_pairs(lo: np.ndarray, hi: np.ndarray, max_pairs: int | None = No
     A = np.zeros(1, np.int32)
     B = np.zeros(1, np.int32)
     for lev in range(len(levels) - 2, -1, -1):
-        n = len(levels[lev][0])
-        same = A == B
-        As, Ad, Bd = A[same], A[~same], B[~same]
-        # children of a self pair: (l,l), (l,r), (r,r); of a distinct pair: all four
-        sa = np.concatenate([2 * As, 2 * As + 1])  # self pairs at the child level
-        ca = np.concatenate([2 * As, 2 * Ad, 2 * Ad, 2 * Ad + 1, 2 * Ad + 1])
-        cb = np.concatenate([2 * As + 1, 2 * Bd, 2 * Bd + 1, 2 * Bd, 2 * Bd + 1])
-        ok = cb < n
-        ca, cb = ca[ok], cb[ok]
-        for a in range(3):
-            lo_a, hi_a = levels[lev][a], levels[lev][a + 3]
-            keep = (lo_a[ca] <= hi_a[cb]) & (lo_a[cb] <= hi_a[ca])
-            ca, cb = ca[keep], cb[keep]
-        sa = sa[sa < n]
-        A = np.concatenate([sa, ca])
-        B = np.concatenate([sa, cb])
+        A, B = child_pairs(A, B, np.column_stack(levels[lev]))  # compiled: the children of each pair whose boxes
+        # overlap
         if max_pairs is not None and len(A) > max_pairs:
             raise TooManyPairs(f"more than {max_pairs} pairs of overlapping triangle boxes")
     keep = A != B

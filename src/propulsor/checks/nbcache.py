@@ -17,7 +17,7 @@ _HERE = Path(__file__).resolve().parent
 #: every source file with cached kernels (``checks.kernels.MODULES``; a test keeps the two lists equal)
 SOURCES = tuple(str(_HERE / f) for f in ("tri_tri.py", "motion/nearest.py", "motion/crossing.py",
                                          "motion/backlash.py", "motion/contact_kernels.py",
-                                         "motion/contact_track.py"))
+                                         "motion/contact_track.py", "box_pairs.py"))
 
 __all__ = ["SOURCES", "bind", "stamp"]
 
