@@ -27,6 +27,8 @@ VIEW_DIR = np.array([1.0, -1.0, 1.0]) / np.sqrt(3.0)
 #: light direction in camera coordinates (right, up, towards the viewer): upper left, in front
 LIGHT_CAM = np.array([-0.35, 0.55, 0.76]) / np.linalg.norm([-0.35, 0.55, 0.76])
 AMBIENT = 0.32
+#: triangles rasterised at a time (bounds the fragments' arrays)
+RENDER_RUN_TRIANGLES = 65536
 BACKGROUND = (255, 255, 255)
 #: a fixed palette, one colour per component (the GLB uses the same)
 PALETTE = (
@@ -103,11 +105,16 @@ def render_iso(items, path: str | Path, width: int = PICTURE_WIDTH_PX, view=VIEW
     image = np.empty((H * W, 3), np.uint8)
     image[:] = BACKGROUND
     if len(tri):
-        pix, depth, owner = _fragments(x, y, z, W, H)
+        # the triangles a run at a time (their fragments' arrays stay bounded: a million triangles' fragments at once
+        # held 350 MiB); each run's fragments at least as near as the nearest so far are painted, in order, so a
+        # pixel ends as the last of its nearest fragments, as when every fragment is taken at once
         zbuf = np.full(H * W, -np.inf, dtype=np.float32)
-        np.maximum.at(zbuf, pix, depth)  # the nearest fragment: largest z towards the viewer
-        win = depth >= zbuf[pix]
-        image[pix[win]] = rgb[owner[win]].astype(np.uint8)
+        for s0 in range(0, len(tri), RENDER_RUN_TRIANGLES):
+            run = slice(s0, s0 + RENDER_RUN_TRIANGLES)
+            pix, depth, owner = _fragments(x[run], y[run], z[run], W, H)
+            np.maximum.at(zbuf, pix, depth)  # the nearest fragment: largest z towards the viewer
+            win = depth >= zbuf[pix]
+            image[pix[win]] = rgb[s0 + owner[win]].astype(np.uint8)
     img = Image.fromarray(image.reshape(H, W, 3), "RGB").reduce(SUPERSAMPLE)
     path = Path(path)
     prepare(path)
