@@ -76,3 +76,24 @@ def test_glb_carries_unit_normals_and_passes_the_validator(tmp_path):
         pytest.skip("the glTF validator needs node and `make validate-glb`'s web/node_modules")
     r = subprocess.run([node, str(ROOT / "web" / "validate_glb.mjs"), str(glb)], capture_output=True, text=True)
     assert r.returncode == 0 and "0 errors, 0 warnings" in r.stdout, r.stdout + r.stderr
+
+
+@pytest.mark.parametrize("sections", [8, 64, 400])
+def test_the_compiled_crease_sums_are_the_numpy_formulations_bit_for_bit(sections):
+    """smooth_normals against the numpy formulation it replaced (``tests/normals_reference.py``): the same vertices,
+    normals and faces to the last bit on a cylinder whose caps are fans of ``sections`` triangles about one vertex
+    (a cap's centre: every pair of its corners weighed), a torus (smooth everywhere) and a box cut by a cylinder
+    (creases of every angle), duplicated vertices and a zero-area triangle included."""
+    from normals_reference import smooth_normals as reference
+
+    meshes = [trimesh.creation.cylinder(radius=10.0, height=4.0, sections=sections),
+              trimesh.creation.torus(20.0, 5.0, major_sections=sections // 2 + 4, minor_sections=12),
+              trimesh.creation.box((30.0, 20.0, 10.0)).difference(trimesh.creation.cylinder(6.0, 40.0,
+                                                                                          sections=sections))]
+    for m in meshes:
+        V = np.asarray(m.vertices, float)
+        F = np.asarray(m.faces, np.int64)
+        V = np.vstack([V, V[:5]])  # duplicated vertices (merged by the function)
+        F = np.vstack([F, [[0, 0, 1]], F[:3] + 0])  # a zero-area triangle and three triangles twice
+        got, want = smooth_normals(V, F), reference(V, F)
+        assert all(g.dtype == w.dtype and np.array_equal(g, w) for g, w in zip(got, want))

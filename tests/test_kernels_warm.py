@@ -62,7 +62,7 @@ def test_a_kernel_compiled_into_another_is_compiled_again_when_its_own_file_chan
         d = tmp_path / pkg
         d.mkdir()
         (d / "__init__.py").write_text("")
-        tail = "\nfrom propulsor.checks.nbcache import bind\nbind(globals(), FILES)\n" if bound else ""
+        tail = "\nfrom propulsor.nbcache import bind\nbind(globals(), FILES)\n" if bound else ""
         files = f"FILES = [{str(d / 'a.py')!r}, {str(d / 'b.py')!r}]\n"
         (d / "a.py").write_text("from numba import njit\n" + files + "@njit(cache=True)\ndef f(x):\n    return x + 1\n"
                                 + tail)
@@ -89,7 +89,7 @@ def test_a_kernel_compiled_into_another_is_compiled_again_when_its_own_file_chan
 
 
 def test_the_kernel_sources_are_the_listed_modules_files():
-    from propulsor.checks import nbcache
+    from propulsor import nbcache
 
     want = sorted(str(SRC / (m.replace(".", "/") + ".py")) for m in kernels.MODULES)
     assert sorted(nbcache.SOURCES) == want

@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .nbcache import bind
+from ..nbcache import bind
 
 __all__ = ["child_pairs"]
 

@@ -5,7 +5,7 @@ A build on a fresh install compiled them where they were first called — in the
 as-built contact (each worker its own copy), in the mesh checks — as 12-19 s silences between its progress lines,
 about 34 CPU s in all on the seed-002 Fourier pair (71 s wall against 38 s warm).  The build now compiles them first
 when :func:`cold`, saying so, before it forks any worker; ``make install`` compiles them ahead (:func:`warm`).
-Their disk cache is keyed on every kernel source (:mod:`.nbcache`): a kernel compiled into another's code is never
+Their disk cache is keyed on every kernel source (:mod:`propulsor.nbcache`): a kernel compiled into another's code is never
 loaded stale after its own file changed.
 """
 
@@ -19,7 +19,8 @@ import numpy as np
 #: the modules whose kernels are cached on disk
 MODULES = ("propulsor.checks.tri_tri", "propulsor.checks.motion.nearest", "propulsor.checks.motion.crossing",
            "propulsor.checks.motion.backlash", "propulsor.checks.motion.contact_kernels",
-           "propulsor.checks.motion.contact_track", "propulsor.checks.box_pairs")
+           "propulsor.checks.motion.contact_track", "propulsor.checks.box_pairs",
+           "propulsor.export.normals")
 
 __all__ = ["MODULES", "cold", "warm", "warm_if_cold"]
 
@@ -60,7 +61,8 @@ def _toothed(z: int, r: float, h: float, n: int = 24) -> np.ndarray:
 def warm() -> None:
     """Call every cached kernel once on small inputs, so that each is compiled (or loaded) now, in this process:
     the mesh checks' triangle tests, the motion proof's distance, crossing and rotation searches, and the as-built
-    contact search (its first hit and all of a window's) on a pair of toothed rings."""
+    contact search (its first hit and all of a window's) on a pair of toothed rings; the GLB's shading normals."""
+    from ..export.normals import smooth_normals
     from .mesh import self_intersections
     from .motion import Outline
     from .motion.backlash import _rot_hits
@@ -84,6 +86,9 @@ def warm() -> None:
     resolve_contact(pair, lambda phi: np.asarray(phi, float) * z2 / z1, 0.0, 4 * step, DRIVE,
                     step_driver_rad=step * z2 / z1, max_evals=40)
     pair._all_hits(0.0, 0.0, 1.0, step)  # every hit of a window (the per-tooth load's search)
+    # the shading normals of the assemblies' GLB (export/normals.py's crease sums)
+    smooth_normals(np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]),
+                   np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]))
 
 
 def warm_if_cold(progress=None) -> bool:

@@ -12,6 +12,9 @@ Deterministic (sorts only, no hashing of floats).
 from __future__ import annotations
 
 import numpy as np
+from numba import njit
+
+from ..nbcache import bind
 
 #: triangles turning less than this from each other are shaded as one surface
 CREASE_DEG = 30.0
@@ -34,6 +37,33 @@ def _row_ids(rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 def _sum_rows(index: np.ndarray, values: np.ndarray, n: int) -> np.ndarray:
     """Sum of the rows of `values` (k, 3) by `index` into n rows."""
     return np.column_stack([np.bincount(index, values[:, j], minlength=n) for j in range(3)])
+
+
+@njit(cache=True)
+def _crease_sums(starts, sizes, corner_face, unit, area_n, cos_crease):
+    """For each corner (the corners sorted by vertex: those of a vertex from ``starts[g]``, ``sizes[g]`` of them,
+    ``corner_face`` the triangle of each): the sum of ``area_n`` of the triangles of its vertex's corners whose unit
+    normal turns from its own triangle's by less than the crease (cosine at least ``cos_crease``), its own always,
+    added in the order of the corners, from 0."""
+    acc = np.zeros((len(corner_face), 3))
+    for g in range(len(starts)):
+        s0, k = starts[g], sizes[g]
+        for a in range(s0, s0 + k):
+            fa = corner_face[a]
+            x = 0.0
+            y = 0.0
+            z = 0.0
+            for b in range(s0, s0 + k):
+                fb = corner_face[b]
+                dot = unit[fa, 0] * unit[fb, 0] + unit[fa, 1] * unit[fb, 1] + unit[fa, 2] * unit[fb, 2]
+                if fb == fa or dot >= cos_crease:
+                    x += area_n[fb, 0]
+                    y += area_n[fb, 1]
+                    z += area_n[fb, 2]
+            acc[a, 0] = x
+            acc[a, 1] = y
+            acc[a, 2] = z
+    return acc
 
 
 def smooth_normals(vertices, faces, crease_deg: float = CREASE_DEG):
@@ -59,14 +89,11 @@ def smooth_normals(vertices, faces, crease_deg: float = CREASE_DEG):
     starts = np.flatnonzero(np.r_[True, sv[1:] != sv[:-1]])
     sizes = np.diff(np.r_[starts, len(sv)])
     group = np.repeat(np.arange(len(starts)), sizes)  # of each sorted corner
-    k = sizes[group]
-    # every pair (corner, corner of the same vertex), corners in sorted order
-    cc = np.repeat(np.arange(len(sv)), k)
-    dd = np.repeat(starts[group], k) + (np.arange(len(cc)) - np.repeat(np.cumsum(k) - k, k))
-    fc, fd = corner_f[order][cc], corner_f[order][dd]
-    near = np.einsum("ij,ij->i", unit[fc], unit[fd]) >= np.cos(np.radians(crease_deg))
-    near |= fc == fd
-    acc = _sum_rows(cc[near], area_n[fd[near]], len(sv))
+    # each corner (in sorted order): the sum of the area normals of the triangles at its vertex within the crease
+    # angle of its own, in the order of the vertex's corners (compiled: the pairs of corners of a vertex are never
+    # held at once; a fan of a thousand triangles at one vertex made a million of them)
+    acc = _crease_sums(starts, sizes, np.ascontiguousarray(corner_f[order]), unit, area_n,
+                       float(np.cos(np.radians(crease_deg))))
     # a corner of a triangle with no area: the mean of every triangle at its vertex (or +z)
     whole = _sum_rows(group, area_n[corner_f[order]], len(starts))
     weak = np.linalg.norm(acc, axis=1) <= 1e-30
@@ -84,3 +111,7 @@ def smooth_normals(vertices, faces, crease_deg: float = CREASE_DEG):
     out_v = pos[corner_v[out_first]]
     out_n = normals[out_first]
     return out_v, out_n, out_of_corner.reshape(-1, 3)
+
+
+# the disk cache of the kernel keyed on every kernel source (one may be compiled into another's code)
+bind(globals())

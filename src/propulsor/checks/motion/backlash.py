@@ -12,7 +12,7 @@ from numba import njit
 from .outlines import Outline
 from .poses import apply_pose
 from .nearest import disc_cells, grid_of
-from ..nbcache import bind
+from ...nbcache import bind
 
 __all__ = ['free_rotation']
 

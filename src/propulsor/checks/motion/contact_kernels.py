@@ -13,7 +13,7 @@ import numpy as np
 from numba import njit
 
 from .backlash import _rot_pairs, _rot_reduce
-from ..nbcache import bind
+from ...nbcache import bind
 
 #: the two directions of the loaded contact: the driver's loaded flanks pushing (the driven wheel turned back onto
 #: them), and the other flanks (turned on)

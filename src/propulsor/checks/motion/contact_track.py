@@ -18,7 +18,7 @@ from numba import njit
 
 from ... import policy
 from .contact_kernels import DRIVE, _first_hit_pruned, _nearest_tooth_nb
-from ..nbcache import bind
+from ...nbcache import bind
 
 __all__ = ["track"]
 

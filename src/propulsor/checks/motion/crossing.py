@@ -16,7 +16,7 @@ import numpy as np
 from numba import njit
 
 from .nearest import disc_cells, grid_of
-from ..nbcache import bind
+from ...nbcache import bind
 
 __all__ = ["certainly_apart"]
 

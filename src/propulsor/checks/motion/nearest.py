@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 from numba import njit
-from ..nbcache import bind
+from ...nbcache import bind
 
 __all__ = ["VertexGrid", "grid_of", "disc_cells", "nearest_edge"]
 
