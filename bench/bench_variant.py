@@ -48,6 +48,9 @@ seed 002 reverse 1.18 -> 1.00, seed 000 drive 0.99 -> 0.93 and reverse 0.80 -> 0
 contact: the compiled search itself (2 x 9 803 positions at about 94 us: of the ~650 vertices it tests a position,
 ~130 have an edge within reach; a distance field 4 times finer cuts that to 69 us at 1 s of set-up) and the law's
 theta of each bisection midpoint one at a time (batched, the Fourier law's theta differs in the last bit).
+
+2026-11-30 (2 cores idle, 7015ca8, two variants each): the seed-002 pair 5.51 / 5.50 CPU s, its Fourier form 5.89 /
+5.86 (the same code as 30ceab7's, measured on a machine at rest for once).
 """
 
 from __future__ import annotations
