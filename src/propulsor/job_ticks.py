@@ -19,7 +19,7 @@ _TICK_LAST = [-float("inf")]
 
 
 def tick(done: int, total: int) -> None:
-    """A job's progress, `done` of `total`, to the build that started it with a counter (:func:`start`); from
+    """A job's progress, `done` of `total`, to the build that started it with a counter (:func:`.parallel.start`); from
     a worker at most ten a second (and the last).  Nothing otherwise."""
     t = _TICK
     if t is None:
@@ -212,7 +212,7 @@ def callback_lock():
 
 
 def result(job):
-    """``job.result()``; for a job started with a counter (:func:`start`), its ticks passed to the counter while it
+    """``job.result()``; for a job started with a counter (:func:`.parallel.start`), its ticks passed to the counter while it
     runs (by the pump's thread, also while this thread works on), the last of them before this returns."""
     ticks = getattr(job, "propulsor_ticks", None)
     if ticks is None:
