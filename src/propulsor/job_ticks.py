@@ -212,8 +212,8 @@ def callback_lock():
 
 
 def result(job):
-    """``job.result()``; for a job started with a counter (:func:`.parallel.start`), its ticks passed to the counter while it
-    runs (by the pump's thread, also while this thread works on), the last of them before this returns."""
+    """``job.result()``; for a job started with a counter (:func:`.parallel.start`), its ticks passed to the counter
+    while it runs (by the pump's thread, also while this thread works on), the last of them before this returns."""
     ticks = getattr(job, "propulsor_ticks", None)
     if ticks is None:
         return job.result()
