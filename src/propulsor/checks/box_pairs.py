@@ -34,6 +34,8 @@ def child_pairs(A, B, box):
     together)."""
     n = len(box)
     m = len(A)
+    if len(B) != m:
+        raise ValueError("child_pairs: A and B differ in length")
     n_self = 0
     for i in range(m):
         if A[i] == B[i]:
