@@ -127,13 +127,28 @@ def test_overlapping_box_pairs_are_the_brute_force_ones(n):
     assert sorted(map(tuple, got.tolist())) == _brute_pairs(lo, hi)
 
 
-@pytest.mark.parametrize("n", [2, 3, 5, 8, 9, 31, 64, 97, 1000, 4097])
-def test_the_compiled_traversal_gives_the_numpy_formulations_pairs_in_its_order(n):
-    """``checks/box_pairs.child_pairs`` (each level of the traversal, compiled) against the numpy formulation it
-    replaced (``tests/box_pairs_reference.py``): the same pairs in the same order, on boxes of a grid (many ties,
-    touching faces) and on boxes of any size, odd level lengths included; the pair limit at the same level."""
-    from box_pairs_reference import overlapping_pairs as reference
+def _with_numpy_levels(monkeypatch):
+    """overlapping_pairs with each level of its traversal in the numpy formulation (``tests/box_pairs_reference.py``)
+    instead of the compiled ``child_pairs``."""
+    from box_pairs_reference import child_pairs
 
+    from propulsor.checks import mesh
+
+    def reference(lo, hi, max_pairs=None):
+        with monkeypatch.context() as m:
+            m.setattr(mesh, "child_pairs", child_pairs)
+            return mesh.overlapping_pairs(lo, hi, max_pairs)
+
+    return reference
+
+
+@pytest.mark.parametrize("n", [2, 3, 5, 8, 9, 31, 64, 97, 1000, 4097])
+def test_the_compiled_traversal_gives_the_numpy_formulations_pairs_in_its_order(n, monkeypatch):
+    """``checks/box_pairs.child_pairs`` (each level of the traversal, compiled) against the numpy formulation it
+    replaced (``tests/box_pairs_reference.py``, put in its place): the same pairs in the same order, on boxes of a
+    grid (many ties, touching faces) and on boxes of any size, odd level lengths included; the pair limit at the same
+    level."""
+    reference = _with_numpy_levels(monkeypatch)
     rng = np.random.default_rng(n)
     for lo, hi in ((rng.integers(0, 40, size=(n, 3)) * 0.25, None), (rng.uniform(-50.0, 50.0, size=(n, 3)), None)):
         hi = lo + (rng.integers(0, 12, size=(n, 3)) * 0.25 if lo.dtype == np.float64 and np.all(lo % 0.25 == 0)
@@ -151,12 +166,12 @@ def test_the_compiled_traversal_gives_the_numpy_formulations_pairs_in_its_order(
                 assert np.array_equal(overlapping_pairs(lo, hi, max_pairs=limit), w)
 
 
-def test_the_compiled_traversal_on_a_gears_triangles_is_the_numpy_one():
+def test_the_compiled_traversal_on_a_gears_triangles_is_the_numpy_one(monkeypatch):
     """The triangles of a toothed ring (a closed mesh of 24 teeth, many boxes touching along shared edges): the
     broad phase's pairs equal the numpy formulation's, in order, and the self-intersection check finds none."""
-    from box_pairs_reference import overlapping_pairs as reference
-
     import manifold3d as m3d
+
+    reference = _with_numpy_levels(monkeypatch)
 
     t = np.linspace(0.0, 2 * np.pi, 24 * 16, endpoint=False)
     r = 20.0 + 1.5 * np.cos(24 * t)
