@@ -142,6 +142,28 @@ def _pair_hits(phi_a, theta, sign, w, L, dvn_V, o1, a1, hw_dvn, drv_V, o2, a2, h
     return k1, d1, e1, q1, k2, d2, e2, q2
 
 
+@njit(cache=True, inline="always")
+def _placed(x, y, c1, s1, tx, c2, s2):
+    """A body-frame point placed into the target's frame (turn c1, s1; shift tx; turn c2, s2)."""
+    u = x * c1 - y * s1 + tx
+    v = x * s1 + y * c1
+    return u * c2 - v * s2, u * s2 + v * c2
+
+
+@njit(cache=True, inline="always")
+def _boundary_bound(px, py, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny, fvals):
+    """A lower bound of the distance of (px, py) to the target's boundary: its annulus (ccx, ccy, radius, r_min), and
+    the distance field's cell where the point lies in the grid."""
+    ex, ey = px - ccx, py - ccy
+    d = math.sqrt(ex * ex + ey * ey)
+    lb = max(d - radius, r_min - d)
+    ix = int(math.floor((px - fx) / fh))
+    iy = int(math.floor((py - fy) / fh))
+    if 0 <= ix < fnx and 0 <= iy < fny:
+        lb = max(lb, fvals[ix * fny + iy])
+    return lb
+
+
 @njit(cache=True)
 def _pruned_window(order, angs, centre, hw, chunk, cc, cr, V, c1, s1, tx, c2, s2, r_keep, cx, cy, chord, ccx, ccy,
                    radius, r_min, fx, fy, fh, fnx, fny, fvals):
@@ -160,42 +182,21 @@ def _pruned_window(order, angs, centre, hw, chunk, cc, cr, V, c1, s1, tx, c2, s2
         if hi <= lo:
             continue
         for j in range(lo // chunk, (hi - 1) // chunk + 1):
-            x, y = cc[j, 0], cc[j, 1]
-            u = x * c1 - y * s1 + tx
-            v = x * s1 + y * c1
-            px = u * c2 - v * s2
-            py = u * s2 + v * c2
+            px, py = _placed(cc[j, 0], cc[j, 1], c1, s1, tx, c2, s2)
             r = cr[j]
             if math.sqrt(px * px + py * py) - r > r_keep + 1e-6:
                 continue
             dx, dy = px - cx, py - cy
             reach = chord * (math.sqrt(dx * dx + dy * dy) + r)
-            ex, ey = px - ccx, py - ccy
-            d = math.sqrt(ex * ex + ey * ey)
-            lb = max(d - radius, r_min - d)
-            ix = int(math.floor((px - fx) / fh))
-            iy = int(math.floor((py - fy) / fh))
-            if 0 <= ix < fnx and 0 <= iy < fny:
-                lb = max(lb, fvals[ix * fny + iy])
+            lb = _boundary_bound(px, py, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny, fvals)
             if lb - r > reach + 1e-6:
                 continue
             for p in range(max(lo, j * chunk), min(hi, (j + 1) * chunk)):
                 q = order[p]
-                x, y = V[q, 0], V[q, 1]
-                u = x * c1 - y * s1 + tx
-                v = x * s1 + y * c1
-                px = u * c2 - v * s2
-                py = u * s2 + v * c2
+                px, py = _placed(V[q, 0], V[q, 1], c1, s1, tx, c2, s2)
                 dx, dy = px - cx, py - cy
                 reach = chord * math.sqrt(dx * dx + dy * dy)
-                ex, ey = px - ccx, py - ccy
-                d = math.sqrt(ex * ex + ey * ey)
-                lb = max(d - radius, r_min - d)
-                ix = int(math.floor((px - fx) / fh))
-                iy = int(math.floor((py - fy) / fh))
-                if 0 <= ix < fnx and 0 <= iy < fny:
-                    lb = max(lb, fvals[ix * fny + iy])
-                if lb > reach + 1e-6:
+                if _boundary_bound(px, py, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny, fvals) > reach + 1e-6:
                     continue
                 out[n] = q
                 n += 1
