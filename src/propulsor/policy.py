@@ -319,6 +319,13 @@ CONTACT_TRACK_MARGIN_MAX_RAD = 1e-3
 CONTACT_PRUNE_CHUNK = 32
 #: ... that grid has about this many cells along the longer side of the mate's bounding box
 CONTACT_FIELD_CELLS = 640
+#: the chained search keeps as candidates the vertices within this of their reach (mm; the nearest vertex of the mate
+#: less half its longest edge) and reuses them at the next poses while no other vertex can have come within reach
+#: (:mod:`.checks.motion.contact_reuse`): larger, more candidates a pose and fewer new sortings
+CONTACT_REUSE_SLACK_MM = 0.1
+#: ... the window of the sorting widened by this (rad) on either side, the turn it holds by this factor
+CONTACT_REUSE_WIDEN_RAD = 0.02
+CONTACT_REUSE_TURN_FACTOR = 1.25
 #: first window of a full search from the law's position (rad; grown 4x until a contact is found)
 CONTACT_SEARCH_START_RAD = 3e-3
 #: the speed before / after a change of state is the chord over at least this much driven angle (rad)

@@ -19,7 +19,7 @@ import numpy as np
 #: the modules whose kernels are cached on disk
 MODULES = ("propulsor.checks.tri_tri", "propulsor.checks.motion.nearest", "propulsor.checks.motion.crossing",
            "propulsor.checks.motion.backlash", "propulsor.checks.motion.contact_kernels",
-           "propulsor.checks.motion.contact_track", "propulsor.checks.box_pairs",
+           "propulsor.checks.motion.contact_reuse", "propulsor.checks.motion.contact_track", "propulsor.checks.box_pairs",
            "propulsor.export.normals")
 
 __all__ = ["MODULES", "cold", "warm", "warm_if_cold"]

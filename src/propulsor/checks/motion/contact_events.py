@@ -19,7 +19,9 @@ the free side of it and turned through a small window (a full search from the la
 nothing), which keeps one measurement under a millisecond.  Before any per-vertex work the search leaves out the
 window's vertices that cannot reach the mate within the window: runs of ``policy.CONTACT_PRUNE_CHUNK`` vertices by
 their bounding circle, then the rest one by one, against a lower bound of the distance to the mate's outline read
-from a grid (:func:`distance_field`); the first hit is the same, bit for bit.
+from a grid (:func:`distance_field`); the first hit is the same, bit for bit.  The sampled run, and the bisection of
+each change of state, reuse the vertices that can reach the mate at one pose over the poses after it while that
+provably holds (:mod:`.contact_reuse`): the same hits again, about half the search's time.
 
 Driven speed over the law's at the same driver angle: (d phi_actual / d theta) / (d phi / d theta) =
 1 + d te / d phi, te = phi_actual - phi (the chord slopes of the resolved samples: piecewise constant).
@@ -37,6 +39,7 @@ import numpy as np
 from ... import policy
 from .contact_kernels import (DRIVE, REVERSE, _first_hit_pruned, _least, _nearest_tooth_nb, _pair_hits,  # noqa: F401
                               _pruned_window, _side_hits, _window_bounds, _window_nb)
+from .contact_reuse import add_slots, new_caches
 from .contact_track import track
 from .nearest import grid_of
 from .outlines import Outline, row_norms
@@ -379,7 +382,8 @@ def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, 
         seed, seed_phi = math.nan, math.nan
         for j in range(0, len(phis), _TRACK_RUN):
             P, T = phis[j:j + _TRACK_RUN], th[j:j + _TRACK_RUN]
-            te, kind, t_drv, t_dvn = track(pair, P, T, direction, [seed], [seed_phi], True)
+            te, kind, t_drv, t_dvn = track(pair, P, T, direction, [seed], [seed_phi], True,
+                                           np.zeros(len(P), np.int64), caches)
             evals += len(P)
             seed, seed_phi = float(te[-1]), float(P[-1])  # a nan te: the next run starts with the full search
             for t, r in zip(T.tolist(), zip(te.tolist(), kind.tolist(), t_drv.tolist(), t_dvn.tolist())):
@@ -392,15 +396,19 @@ def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, 
         return out
 
     def measure_each(mids):
-        """The rows at the midpoints ``(a, b, m)``, each searched from the contact at its own a."""
+        """The rows at the midpoints ``(a, b, m, slot)``, each searched from the contact at its own a, reusing the
+        candidates its slot kept from the bisection of the same change before it."""
         if not mids:
             return []
-        ms = [m for _, _, m in mids]
+        ms = [m for _, _, m, _ in mids]
         th = [float(np.asarray(theta_of_phi(np.asarray([m], float)), float)[0]) for m in ms]  # one by one, as sampled
-        te, kind, t_drv, t_dvn = track(pair, ms, th, direction, [samples[a][1] for a, _, _ in mids],
-                                       [a for a, _, _ in mids], False)
+        te, kind, t_drv, t_dvn = track(pair, ms, th, direction, [samples[a][1] for a, _, _, _ in mids],
+                                       [a for a, _, _, _ in mids], False, np.array([k for *_, k in mids], np.int64),
+                                       caches)
         return [(t,) + r for t, r in zip(th, zip(te.tolist(), kind.tolist(), t_drv.tolist(), t_dvn.tolist()))]
 
+    # slot 0: the sampled run; then one slot for the bisection of each change of state
+    caches = new_caches(1)
     for p, r in zip(grid, measure(grid, tick=tick)):
         samples[float(p)] = r
     # bisect every interval whose ends differ in state
@@ -409,26 +417,28 @@ def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, 
 
     xs = sorted(samples)
     todo = [(a, b) for a, b in zip(xs[:-1], xs[1:]) if state(samples[a]) != state(samples[b])]
+    first = add_slots(caches, len(todo))
+    todo = [(a, b, first + k) for k, (a, b) in enumerate(todo)]
     # the progress's total from here: each change bisected about `rounds` times (one half holds it)
     est = n + len(todo) * rounds
     while todo and evals < max_evals:
         mids = []
-        for a, b in todo:
+        for a, b, k in todo:
             if b - a > 2.0 * h_min:
-                mids.append((a, b, 0.5 * (a + b)))
+                mids.append((a, b, 0.5 * (a + b), k))
         if not mids:
             break
         nxt = []
         mids = mids[:max(0, max_evals - evals)]
-        for (a, b, m), r in zip(mids, measure_each(mids)):
+        for (a, b, m, k), r in zip(mids, measure_each(mids)):
             evals += 1
             samples[m] = r
             if tick is not None:
                 tick(evals, max(est, evals + 1))
             if state(r) != state(samples[a]):
-                nxt.append((a, m))
+                nxt.append((a, m, k))
             if state(r) != state(samples[b]):
-                nxt.append((m, b))
+                nxt.append((m, b, k))
         todo = nxt
     if tick is not None:
         tick(evals, evals)

@@ -18,6 +18,7 @@ from numba import njit
 
 from ... import policy
 from .contact_kernels import DRIVE, _first_hit_pruned, _nearest_tooth_nb
+from .contact_reuse import empty_cache, first_hit_reusing, new_caches
 from ...nbcache import bind
 
 __all__ = ["track"]
@@ -47,8 +48,11 @@ def _kind_nb(side, v, e, t, near, corner_dvn, turn_dvn, corner_drv, turn_drv, le
 @njit(cache=True)
 def _track_nb(phis, ths, seeds, seed_phis, chained, sign, m0, m_max, w0, w_max, near, L, dvn_pts, dvn_a, dvn_b,
               drv_pts, driver_teeth, driven_teeth, corner_dvn, turn_dvn, corner_drv, turn_drv, len_drv, nxt_drv,
-              len_dvn, nxt_dvn, args):
+              len_dvn, nxt_dvn, slots, caches, slack, widen, w_factor, args):
     n = len(phis)
+    # the candidate vertices of a pose reused at the next poses of its slot while they provably hold (contact_reuse)
+    cache1, cache2 = empty_cache(), empty_cache()
+    cur = -1
     te = np.full(n, np.nan)
     kind = np.full(n, -1, np.int64)
     tooth_drv = np.full(n, -1, np.int64)
@@ -64,7 +68,18 @@ def _track_nb(phis, ths, seeds, seed_phis, chained, sign, m0, m_max, w0, w_max, 
         if math.isfinite(prev):
             dphi = 0.0 if math.isnan(prev_phi) else p - prev_phi
             m = min(m0 + 0.25 * abs(dphi), m_max)
-            d, side, v, e, t = _first_hit_pruned(p + prev + sign * m, th, sign, 2.0 * m, *args)
+            slot = slots[i]
+            if slot >= 0:
+                if slot != cur:
+                    if cur >= 0:
+                        caches[cur] = (cache1, cache2)
+                    cache1, cache2 = caches[slot]
+                    cur = slot
+                r, cache1, cache2 = first_hit_reusing(cache1, cache2, slack, widen, w_factor, p + prev + sign * m, th,
+                                                      sign, 2.0 * m, *args)
+                d, side, v, e, t = r
+            else:
+                d, side, v, e, t = _first_hit_pruned(p + prev + sign * m, th, sign, 2.0 * m, *args)
             if math.isfinite(d) and 0.2 * m < d:
                 found = True
                 x = prev + sign * (m - d)
@@ -97,15 +112,26 @@ def _track_nb(phis, ths, seeds, seed_phis, chained, sign, m0, m_max, w0, w_max, 
         tooth_dvn[i] = _nearest_tooth_nb(driven_teeth, math.atan2(qy, qx))
         tooth_drv[i] = _nearest_tooth_nb(driver_teeth, math.atan2(ry, rx))
         prev, prev_phi = x, p
+    if cur >= 0:
+        caches[cur] = (cache1, cache2)
     return te, kind, tooth_drv, tooth_dvn
 
 
-def track(pair, phis, thetas, direction: int, seeds, seed_phis, chained: bool):
+def track(pair, phis, thetas, direction: int, seeds, seed_phis, chained: bool, slots=None, caches=None):
     """(te, kind, driver tooth, driven tooth) at each of the law phases ``phis`` (driver at ``thetas``), as the
     reference search at one position gives them (``tests/contact_reference.py``): ``chained``, each position searched
     from the contact of the one before it (the first from ``seeds[0]`` at ``seed_phis[0]``); else each from its own
     seed.  A seed of nan:
-    the full search from the law's position.  te nan, kind and teeth -1 where nothing touches."""
+    the full search from the law's position.  te nan, kind and teeth -1 where nothing touches.
+
+    ``slots``, ``caches`` (:func:`.contact_reuse.new_caches`): the first search at position i reuses the candidate
+    vertices kept in ``caches[slots[i]]`` (:mod:`.contact_reuse`: the same values, fewer vertices searched), and
+    leaves its own there; a slot of -1 searches afresh.  By default a chained run shares one new slot, separate
+    seeds search afresh."""
+    n = len(phis)
+    if caches is None:
+        caches = new_caches(1)
+        slots = np.zeros(n, np.int64) if chained else np.full(n, -1, np.int64)
     ka, pa = pair._kernel_args, pair._prune_args
     sign = 1.0 if direction == DRIVE else -1.0
     return _track_nb(np.ascontiguousarray(phis, np.float64), np.ascontiguousarray(thetas, np.float64),
@@ -117,7 +143,8 @@ def track(pair, phis, thetas, direction: int, seeds, seed_phis, chained: bool):
                      np.ascontiguousarray(pair.driver_teeth, np.float64),
                      np.ascontiguousarray(pair.driven_teeth, np.float64), pair.corner_dvn, pair.turn_dvn,
                      pair.corner_drv, pair.turn_drv, pair.drv.seg_len, pair.drv.nxt, pair.dvn.seg_len, pair.dvn.nxt,
-                     tuple(ka[:11]) + tuple(pa) + tuple(ka[11:]))
+                     np.ascontiguousarray(slots, np.int64), caches, policy.CONTACT_REUSE_SLACK_MM,
+                     policy.CONTACT_REUSE_WIDEN_RAD, policy.CONTACT_REUSE_TURN_FACTOR, tuple(ka[:11]) + tuple(pa) + tuple(ka[11:]))
 
 
 # the disk cache of these kernels keyed on every kernel source (one may be compiled into another's code)

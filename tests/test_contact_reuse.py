@@ -1,0 +1,191 @@
+"""The candidates of one pose reused at the poses after it (checks/motion/contact_reuse.py): the same first hit as the
+search at every pose afresh (:func:`.contact_kernels._first_hit_pruned`), bit for bit, wherever the cache says it
+still holds; it says so over most of a tracked run (the reuse is real), and not once the pose has moved far enough
+that candidates from the old pose would miss the hit."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from propulsor import policy
+from propulsor.checks.motion import outline
+from propulsor.checks.motion import contact_events as ce
+from propulsor.checks.motion import contact_reuse as cr
+from propulsor.checks.motion.contact_events import DRIVE, REVERSE, PairOutlines, resolve_contact
+from propulsor.checks.motion.contact_track import track
+
+from contact_reference import contact
+from test_contact_events import Z2, _law, _bumped, spur  # noqa: F401  (the fixture)
+
+S, WIDEN, FACTOR = policy.CONTACT_REUSE_SLACK_MM, policy.CONTACT_REUSE_WIDEN_RAD, policy.CONTACT_REUSE_TURN_FACTOR
+
+
+def _pair(spur, bump=True):
+    pair, driver, driven, t1, t2 = spur
+    if bump:
+        driven, _ = _bumped(driven[0], 0.0)
+    return PairOutlines(outline(driver), outline(driven), pair.a_w, t1, t2)
+
+
+def _args(po):
+    return po._kernel_args[:11] + po._prune_args + po._kernel_args[11:]
+
+
+def _pruned(po, q):
+    return tuple(ce._first_hit_pruned(*q, *_args(po)))
+
+
+def _reusing(po, c1, c2, q):
+    r, c1, c2 = cr.first_hit_reusing(c1, c2, S, WIDEN, FACTOR, *q, *_args(po))
+    return tuple(r), c1, c2
+
+
+def _tracked(po, sign, n=400):
+    """The tracked queries of a run of n law phases over two driven teeth: (phi_a, theta, sign, w) a margin on
+    the free side of each phase's contact."""
+    out = []
+    d = DRIVE if sign > 0 else REVERSE
+    for phi in np.linspace(0.0, 2 * 2 * math.pi / Z2, n):
+        theta = float(_law(phi))
+        te = contact(po, float(phi), theta, d)[0]
+        m = policy.CONTACT_TRACK_MARGIN_RAD
+        out.append((float(phi) + te + sign * m, theta, sign, 2.0 * m))
+    return out
+
+
+def test_a_tracked_run_reuses_its_candidates_and_finds_every_hit_bit_for_bit(spur):
+    po = _pair(spur)
+    for sign in (1.0, -1.0):
+        c1, c2 = cr.empty_cache(), cr.empty_cache()
+        refreshed, found = 0, 0
+        for q in _tracked(po, sign):
+            r, n1, n2 = _reusing(po, c1, c2, q)
+            refreshed += (n1[0] is not c1[0]) + (n2[0] is not c2[0])
+            c1, c2 = n1, n2
+            assert r == _pruned(po, q), q
+            found += math.isfinite(r[0])
+        assert found == 400  # each query touches: the comparison is of hits
+        # two caches a pose: most poses are served from candidates sorted at an earlier pose
+        assert refreshed < 0.4 * 2 * 400, refreshed
+
+
+def test_the_candidates_are_few_and_every_vertex_that_can_hit_is_among_them(spur):
+    """At a refresh the candidates are the vertices within the slack of their reach, a small share of the window;
+    the vertices the pruned search keeps that do hit (delta finite) are all among them."""
+    po = _pair(spur)
+    ka, pa = po._kernel_args, po._prune_args
+    L, cc1, cr1 = ka[0], pa[1], pa[2]
+    drv_t = ka[11:27]
+    for q in _tracked(po, 1.0, 40):
+        phi_a, theta, sign, w = q
+        cp, sp, ct, st = math.cos(-phi_a), math.sin(-phi_a), math.cos(-theta), math.sin(-theta)
+        W = FACTOR * w
+        cache = cr._refresh(po.o1, po.a1, phi_a, po.hw_dvn + W + WIDEN, pa[0], cc1, cr1, po.dvn.points, cp, sp, -L,
+                            ct, st, -L * ct, -L * st, W, S, *drv_t[12:16], *pa[5:11], drv_t[0], *drv_t[4:11],
+                            drv_t[3])
+        window = ce._window_nb(po.o1, po.a1, phi_a, po.hw_dvn + w)
+        cands = set(cache[3][:, 1].tolist())
+        assert 0 < len(cands) < 0.25 * len(window)
+        keep, delta, _, _ = ce._side_hits(window, po.dvn.points, cp, sp, -L, ct, st, sign, w,
+                                          po.R1 + w * po.R2 + 1e-6, -L * ct, -L * st, drv_t)
+        hitting = {int(v) for v, dl in zip(keep, delta) if math.isfinite(dl)}
+        assert hitting <= cands
+
+
+def test_the_cache_holds_only_while_the_pose_is_near_and_a_stale_one_misses_the_hit(spur):
+    """From a cache sorted at one pose: at poses moved by growing turns it holds at first and then stops holding;
+    where it is held the hit is the fresh search's; at a pose nearly two teeth away (where it must not hold) the stale
+    candidates give another hit than the fresh search (the test on the move is what keeps the reuse exact)."""
+    po = _pair(spur)
+    run = _tracked(po, 1.0, 40)  # 20 a driven tooth
+    q0 = run[5]
+    _, c1, c2 = _reusing(po, cr.empty_cache(), cr.empty_cache(), q0)
+    held = []
+    for k in range(1, 60):
+        dphi = 1e-4 * k
+        q = (q0[0] + dphi, float(_law(q0[0] + dphi - 3e-4)) + 0.0, q0[2], q0[3])
+        r, n1, n2 = _reusing(po, c1, c2, q)
+        held.append(n1[0] is c1[0] and n2[0] is c2[0])
+        assert r == _pruned(po, q)
+    assert held[0] and not held[-1]
+    # a pose nearly two driven teeth on: the stale candidates (the held cache used as if valid) miss the fresh hit
+    far = run[39]
+    st = c1[0]
+    assert not cr._still_valid(st, c1[1], c1[2], po._prune_args[1], po._prune_args[2], math.cos(-far[0]),
+                               math.sin(-far[0]), -po.L, math.cos(-far[1]), math.sin(-far[1]),
+                               -po.L * math.cos(-far[1]), -po.L * math.sin(-far[1]), far[0], po.hw_dvn + far[3],
+                               far[3])
+    fresh = _pruned(po, far)
+    ka = po._kernel_args
+    cp, sp, ct, stt = math.cos(-far[0]), math.sin(-far[0]), math.cos(-far[1]), math.sin(-far[1])
+    bounds = ce._window_bounds(po.a1, far[0], po.hw_dvn + far[3])
+    stale = cr._reused(c1[3], c1[4], bounds, po.dvn.points, cp, sp, -po.L, ct, stt, -po.L * ct, -po.L * stt,
+                       2.0 * math.sin(0.5 * far[3]))
+    _, delta, _, _ = ce._side_hits(stale, po.dvn.points, cp, sp, -po.L, ct, stt, far[2], far[3],
+                                   po.R1 + far[3] * po.R2 + 1e-6, -po.L * ct, -po.L * stt, ka[11:27])
+    least = min(delta.tolist(), default=math.inf)
+    assert math.isfinite(fresh[0]) and not (fresh[1] == 1 and least == fresh[0])
+
+
+def test_a_resolved_contact_is_the_same_with_and_without_the_reuse(spur, monkeypatch):
+    """resolve_contact (the sampled run and the bisections, each change's bisection in a slot of its own) gives the
+    same contact law, bit for bit, as when every pose is searched afresh (every slot -1)."""
+    po = _pair(spur)
+    span = 2 * math.pi / Z2 * 2
+    got = [resolve_contact(po, _law, 0.0, span, d) for d in (DRIVE, REVERSE)]
+    calls = []
+
+    def fresh(pair, phis, thetas, direction, seeds, seed_phis, chained, slots=None, caches=None):
+        calls.append(len(phis))
+        return track(pair, phis, thetas, direction, seeds, seed_phis, chained, np.full(len(phis), -1, np.int64),
+                     cr.new_caches(0))
+
+    monkeypatch.setattr(ce, "track", fresh)
+    ref = [resolve_contact(po, _law, 0.0, span, d) for d in (DRIVE, REVERSE)]
+    assert len(calls) > 2  # the sampled run and at least one round of bisections
+    for a, b in zip(got, ref):
+        assert len(a.phi) > 100
+        for f in ("phi", "theta", "te", "kind", "driver_tooth", "driven_tooth"):
+            assert np.array_equal(getattr(a, f), getattr(b, f), equal_nan=True), f
+        assert a.evaluations == b.evaluations
+
+
+def test_one_cache_serves_the_poses_after_it_while_it_holds_each_with_the_fresh_hit(spur):
+    """A cache sorted at one tracked pose, used (never refreshed) at each of the next 60 tracked poses while it says
+    it holds: the hit of each is the fresh search's (candidates are left out at a pose by their bound at the sorting
+    less their own move since: a vertex that moved closer is kept)."""
+    po = _pair(spur)
+    for sign in (1.0, -1.0):
+        run = _tracked(po, sign, 1200)  # 0.15 mrad of driven a pose
+        used = 0
+        for i in range(0, 1140, 60):
+            _, c1, c2 = _reusing(po, cr.empty_cache(), cr.empty_cache(), run[i])
+            for q in run[i + 1:i + 61]:
+                r, n1, n2 = _reusing(po, c1, c2, q)
+                if n1[0] is not c1[0] or n2[0] is not c2[0]:
+                    break  # it no longer holds (a new sorting was made)
+                assert r == _pruned(po, q), (i, q)
+                used += 1
+        assert used > 200, used
+
+
+def test_a_candidate_that_has_come_within_reach_since_the_sorting_is_searched(spur):
+    """Sorted with the driven wheel turned back from the contact (0.02-0.14 mm of clearance at its tip circle): where
+    the cache says it still holds at the contact pose, the vertices that hit there, out of reach at the sorting and
+    come closer by their own move, are searched, and the hit is the fresh search's (a cache that forgot the move of
+    its left-out vertices, or its candidates', would miss it)."""
+    po = _pair(spur)
+    r_tip = float(po.R2)
+    held = 0
+    for sign in (1.0, -1.0):
+        for q in _tracked(po, sign, 60)[::3]:
+            for back in (0.02, 0.04, 0.06, 0.1, 0.12, 0.14):
+                q0 = (q[0] + sign * back / r_tip, q[1], q[2], q[3])
+                _, c1, c2 = _reusing(po, cr.empty_cache(), cr.empty_cache(), q0)
+                r, n1, n2 = _reusing(po, c1, c2, q)
+                if n1[0] is c1[0] and n2[0] is c2[0]:
+                    held += 1
+                    assert r == _pruned(po, q), (q, back)
+    assert held > 60, held
