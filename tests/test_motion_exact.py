@@ -1165,8 +1165,8 @@ def test_resolve_contact_seeds_each_measurement_with_its_neighbour():
     calls = []
     real = contact_events.track
 
-    def recorded(pair, phis, thetas, direction, seeds, seed_phis, chained):
-        r = real(pair, phis, thetas, direction, seeds, seed_phis, chained)
+    def recorded(pair, phis, thetas, direction, seeds, seed_phis, chained, *reuse):
+        r = real(pair, phis, thetas, direction, seeds, seed_phis, chained, *reuse)
         calls.append((list(map(float, phis)), list(map(float, thetas)), list(map(float, seeds)),
                       list(map(float, seed_phis)), chained, r[0].tolist(), list(zip(*(a.tolist() for a in r[1:])))))
         return r
@@ -2182,8 +2182,8 @@ def test_resolve_contact_in_short_compiled_runs_is_the_one_long_run_bit_for_bit(
     calls = []
     real = contact_events.track
 
-    def recorded(pair, phis, thetas, direction, seeds, seed_phis, chained):
-        r = real(pair, phis, thetas, direction, seeds, seed_phis, chained)
+    def recorded(pair, phis, thetas, direction, seeds, seed_phis, chained, *reuse):
+        r = real(pair, phis, thetas, direction, seeds, seed_phis, chained, *reuse)
         calls.append((list(map(float, phis)), list(map(float, seeds)), list(map(float, seed_phis)), chained,
                       r[0].tolist()))
         return r

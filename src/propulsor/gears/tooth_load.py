@@ -199,6 +199,17 @@ JUMP_RMS_RATIO, JUMP_RMS_MM = CURVATURE_JUMP_RMS_RATIO, CURVATURE_JUMP_RMS_MM
 
 
 def curvature_at(o: DenseOutline, i: int, half_len: float) -> float:
+    """:func:`_curvature_at`, kept on the outline per vertex and window (a vertex loaded at several positions is
+    fitted once)."""
+    memo = o.__dict__.setdefault("_curvatures", {})
+    key = (int(i), float(half_len))
+    k = memo.get(key)
+    if k is None:
+        k = memo[key] = _curvature_at(o, int(i), float(half_len))
+    return k
+
+
+def _curvature_at(o: DenseOutline, i: int, half_len: float) -> float:
     """Signed curvature (1/mm, convex > 0) of the outline at vertex i: a cubic y(x) least-squares fitted to the
     vertices within ``half_len`` of arc length on either side, in the frame of the tangent at i, stopping at a corner;
     κ = 2c2/(1 + c1²)^1.5.  At a corner vertex (a contact on a tooth's tip edge) each side is fitted alone and the

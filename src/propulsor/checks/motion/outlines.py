@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 import weakref
+from functools import cached_property
 from typing import Sequence
 
 import manifold3d as m3d
@@ -79,7 +80,7 @@ class Outline:
     ``points``: all vertices after subdividing long edges, with edge arrays
     ``seg_a``/``seg_b`` (edge k runs from point k to point ``nxt[k]``), ``prev``,
     ``loop_id``, ``arclen`` (arc length of each vertex along its loop) and a
-    cKDTree of the points; ``center``, ``r_min``, ``radius``: an annulus holding
+    cKDTree of the points (``tree``, built when first asked for); ``center``, ``r_min``, ``radius``: an annulus holding
     every boundary point (used to discard far points before any tree query).
     """
 
@@ -105,7 +106,6 @@ class Outline:
         loop_start_cum = (cum - self.seg_len)[starts]
         self.arclen = cum - self.seg_len - loop_start_cum[self.loop_id]
         self.perimeter = np.array([self.seg_len[self.loop_id == i].sum() for i in range(len(dense))])
-        self.tree = cKDTree(self.points)
         lo, hi = self.points.min(axis=0), self.points.max(axis=0)
         self.center = 0.5 * (lo + hi)
         dc = np.linalg.norm(self.points - self.center, axis=1)
@@ -115,6 +115,12 @@ class Outline:
         e = self.seg_b - self.seg_a
         t = np.clip(np.einsum("ij,ij->i", self.center - self.seg_a, e) / (self.seg_len * self.seg_len), 0.0, 1.0)
         self.r_min = float(row_norms(self.seg_a + t[:, None] * e - self.center).min())
+
+    @cached_property
+    def tree(self) -> cKDTree:
+        """A cKDTree of the points, built at its first query (most outlines are searched on their vertex grid
+        alone: :mod:`.nearest`)."""
+        return cKDTree(self.points)
 
     def boundary_lower_bound(self, P: np.ndarray) -> np.ndarray:
         """A lower bound of the distance from each point (body frame) to the boundary (annulus test)."""
