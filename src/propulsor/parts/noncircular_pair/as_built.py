@@ -19,7 +19,6 @@ directions' contacts, (te_reverse - te_drive) r_H(phi), on every sample of eithe
 from __future__ import annotations
 
 import math
-import weakref
 from dataclasses import dataclass
 
 import numpy as np
@@ -131,26 +130,8 @@ def _teeth_from_corners(o, turn, corner) -> np.ndarray:
     return np.array([0.5 * (a[i] + a[i + 1]) for i in range(0, len(a) - 1, 2)])
 
 
-#: the prepared outlines of the last designs asked for: id(design) -> (a weak reference to it, mount, outlines)
-_PREPARED: dict = {}
-
-
 def pair_outlines(d, mount: float) -> PairOutlines:
-    """The pair's outer outlines at the installed centre distance, prepared for contact events: made once per
-    design and mount in a process (both directions of the as-built contact and the load per tooth search the same
-    outlines; their grids and distance fields are kept on them), never pickled with the design."""
-    hit = _PREPARED.get(id(d))
-    if hit is not None and hit[0]() is d and hit[1] == float(mount):
-        return hit[2]
-    pair = _pair_outlines(d, mount)
-    try:  # the entry goes with the design
-        _PREPARED[id(d)] = (weakref.ref(d, lambda _, k=id(d): _PREPARED.pop(k, None)), float(mount), pair)
-    except TypeError:  # a design that takes no weak reference: made anew each time
-        pass
-    return pair
-
-
-def _pair_outlines(d, mount: float) -> PairOutlines:
+    """The pair's outer outlines at the installed centre distance, prepared for contact events."""
     from ...checks.motion import outline
     from .pair_proof import _outer_only
 
