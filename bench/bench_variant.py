@@ -51,6 +51,17 @@ theta of each bisection midpoint one at a time (batched, the Fourier law's theta
 
 2026-11-30 (2 cores idle, 7015ca8, two variants each): the seed-002 pair 5.51 / 5.50 CPU s, its Fourier form 5.89 /
 5.86 (the same code as 30ceab7's, measured on a machine at rest for once).
+
+2026-11-30, a new session (2 cores, nothing else running; 1fe4bb3 in a worktree against the working tree, two rounds
+of two variants each, in turn): the contact search reusing each pose's candidate vertices over the poses after it
+(``checks/motion/contact_reuse.py``) and a loaded vertex's curvature fitted once: the seed-002 pair 5.95 / 6.02 /
+6.11 / 6.14 -> 5.31 / 5.33 / 5.24 / 5.25 CPU s, its Fourier form 6.45 / 6.64 / 6.67 / 6.68 -> 5.70 / 5.58 / 5.68 /
+5.69 (-13 %).  The compiled search of the Fourier form's as-built contact 2.00 -> 1.22 CPU s (21 870 positions: the
+14 402 sampled 92 -> 53 us each, the 7 468 of the bisections 88 -> 61 us); the contact laws of seven pairs, their
+ticks and the 636 files of ``make`` identical bit for bit.  What a position costs now: about 28 us in the hits of the
+~45 vertices a side that do come within reach of the mate (~43 of them hit it), ~13 us in sorting the candidates
+again every ~6 positions.  Sorting one run of vertices at a time instead, each at its own pose, was slower (0.77 ->
+0.84 s the sampled positions, 0.47 -> 0.62 s the bisections) and was not kept.
 """
 
 from __future__ import annotations
