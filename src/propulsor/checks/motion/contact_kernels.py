@@ -56,6 +56,27 @@ def _window_size(bounds):
 
 
 @njit(cache=True)
+def _window_runs(bounds, chunk):
+    """The runs of ``chunk`` positions the ranges of :func:`_window_bounds` cover, in order: (run, its first position
+    in the range, the position after its last), one row each (a run cut by a range's end holds only its part)."""
+    n = 0
+    for i in range(3):
+        lo, hi = bounds[2 * i], bounds[2 * i + 1]
+        if hi > lo:
+            n += (hi - 1) // chunk - lo // chunk + 1
+    out = np.empty((n, 3), np.int64)
+    k = 0
+    for i in range(3):
+        lo, hi = bounds[2 * i], bounds[2 * i + 1]
+        if hi <= lo:
+            continue
+        for j in range(lo // chunk, (hi - 1) // chunk + 1):
+            out[k, 0], out[k, 1], out[k, 2] = j, max(lo, j * chunk), min(hi, (j + 1) * chunk)
+            k += 1
+    return out
+
+
+@njit(cache=True)
 def _window_nb(order, angs, centre, hw):
     """The vertices (of ``order``, sorted by their polar angles ``angs``) whose polar angle lies within centre +- hw
     (wrapped), in that order."""
@@ -177,29 +198,27 @@ def _pruned_window(order, angs, centre, hw, chunk, cc, cr, V, c1, s1, tx, c2, s2
     bounds = _window_bounds(angs, centre, hw)
     out = np.empty(_window_size(bounds), np.int64)
     n = 0
-    for i in range(3):
-        lo, hi = bounds[2 * i], bounds[2 * i + 1]
-        if hi <= lo:
+    runs = _window_runs(bounds, chunk)
+    for k in range(len(runs)):
+        j = runs[k, 0]
+        px, py = _placed(cc[j, 0], cc[j, 1], c1, s1, tx, c2, s2)
+        r = cr[j]
+        if math.sqrt(px * px + py * py) - r > r_keep + 1e-6:
             continue
-        for j in range(lo // chunk, (hi - 1) // chunk + 1):
-            px, py = _placed(cc[j, 0], cc[j, 1], c1, s1, tx, c2, s2)
-            r = cr[j]
-            if math.sqrt(px * px + py * py) - r > r_keep + 1e-6:
-                continue
+        dx, dy = px - cx, py - cy
+        reach = chord * (math.sqrt(dx * dx + dy * dy) + r)
+        lb = _boundary_bound(px, py, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny, fvals)
+        if lb - r > reach + 1e-6:
+            continue
+        for p in range(runs[k, 1], runs[k, 2]):
+            q = order[p]
+            px, py = _placed(V[q, 0], V[q, 1], c1, s1, tx, c2, s2)
             dx, dy = px - cx, py - cy
-            reach = chord * (math.sqrt(dx * dx + dy * dy) + r)
-            lb = _boundary_bound(px, py, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny, fvals)
-            if lb - r > reach + 1e-6:
+            reach = chord * math.sqrt(dx * dx + dy * dy)
+            if _boundary_bound(px, py, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny, fvals) > reach + 1e-6:
                 continue
-            for p in range(max(lo, j * chunk), min(hi, (j + 1) * chunk)):
-                q = order[p]
-                px, py = _placed(V[q, 0], V[q, 1], c1, s1, tx, c2, s2)
-                dx, dy = px - cx, py - cy
-                reach = chord * math.sqrt(dx * dx + dy * dy)
-                if _boundary_bound(px, py, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny, fvals) > reach + 1e-6:
-                    continue
-                out[n] = q
-                n += 1
+            out[n] = q
+            n += 1
     return out[:n]
 
 

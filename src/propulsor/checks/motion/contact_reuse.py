@@ -27,7 +27,8 @@ import numpy as np
 from numba import njit
 from numba.typed import List
 
-from .contact_kernels import _boundary_bound, _least, _placed, _side_hits, _window_bounds, _window_size
+from .contact_kernels import (_boundary_bound, _least, _placed, _side_hits, _window_bounds, _window_runs,
+                              _window_size)
 from .nearest import _nearest_vertex
 from ...nbcache import bind
 
@@ -70,57 +71,47 @@ def _refresh(order, angs, centre, hw_wide, chunk, cc, cr, V, c1, s1, tx, c2, s2,
     (X0x, X0y, LB0)); state: valid, centre, hw_wide, W, chord_W, cos and sin of the turn, the turning centre."""
     chord_W = 2.0 * math.sin(0.5 * min(W, math.pi))
     bounds = _window_bounds(angs, centre, hw_wide)
-    n_runs = 0
-    for i in range(3):
-        lo, hi = bounds[2 * i], bounds[2 * i + 1]
-        if hi > lo:
-            n_runs += (hi - 1) // chunk - lo // chunk + 1
-    kj = np.empty(n_runs, np.int64)
-    kp = np.empty((n_runs, 3))
+    runs = _window_runs(bounds, chunk)
+    kj = np.empty(len(runs), np.int64)
+    kp = np.empty((len(runs), 3))
     nq = _window_size(bounds)
     qp = np.empty((nq, 2), np.int64)
     qf = np.empty((nq, 3))
-    k = 0
     n = 0
-    for i in range(3):
-        lo, hi = bounds[2 * i], bounds[2 * i + 1]
-        if hi <= lo:
+    for k in range(len(runs)):
+        j = runs[k, 0]
+        px, py = _placed(cc[j, 0], cc[j, 1], c1, s1, tx, c2, s2)
+        r = cr[j]
+        kj[k] = j
+        kp[k, 0], kp[k, 1] = px, py
+        dx, dy = px - cx, py - cy
+        e_run = _boundary_bound(px, py, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny, fvals) - r \
+            - chord_W * (math.sqrt(dx * dx + dy * dy) + r)
+        if e_run > S:
+            kp[k, 2] = e_run
             continue
-        for j in range(lo // chunk, (hi - 1) // chunk + 1):
-            px, py = _placed(cc[j, 0], cc[j, 1], c1, s1, tx, c2, s2)
-            r = cr[j]
-            kj[k] = j
-            kp[k, 0], kp[k, 1] = px, py
-            dx, dy = px - cx, py - cy
-            e_run = _boundary_bound(px, py, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny, fvals) - r \
-                - chord_W * (math.sqrt(dx * dx + dy * dy) + r)
-            if e_run > S:
-                kp[k, 2] = e_run
-                k += 1
-                continue
-            E = np.inf
-            for p in range(max(lo, j * chunk), min(hi, (j + 1) * chunk)):
-                q = order[p]
-                qx, qy = _placed(V[q, 0], V[q, 1], c1, s1, tx, c2, s2)
-                dx, dy = qx - cx, qy - cy
-                reach = chord_W * math.sqrt(dx * dx + dy * dy)
-                lb = _boundary_bound(qx, qy, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny, fvals)
-                near = lb - reach <= S
-                if near:
-                    bound = reach + S + half_len
-                    nn = _nearest_vertex(qx, qy, tV, ox, oy, h, nx, ny, start, items, bound)
-                    # no vertex within the bound: the boundary is farther than bound - half_len (excess over S)
-                    near = math.isfinite(nn)
-                    lb = max(lb, (nn if near else bound) - half_len)
-                    near = near and lb - reach <= S
-                if near:
-                    qp[n, 0], qp[n, 1] = p, q
-                    qf[n, 0], qf[n, 1], qf[n, 2] = qx, qy, lb
-                    n += 1
-                else:
-                    E = min(E, lb - reach)
-            kp[k, 2] = E
-            k += 1
+        E = np.inf
+        for p in range(runs[k, 1], runs[k, 2]):
+            q = order[p]
+            qx, qy = _placed(V[q, 0], V[q, 1], c1, s1, tx, c2, s2)
+            dx, dy = qx - cx, qy - cy
+            reach = chord_W * math.sqrt(dx * dx + dy * dy)
+            lb = _boundary_bound(qx, qy, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny, fvals)
+            near = lb - reach <= S
+            if near:
+                bound = reach + S + half_len
+                nn = _nearest_vertex(qx, qy, tV, ox, oy, h, nx, ny, start, items, bound)
+                # no vertex within the bound: the boundary is farther than bound - half_len (excess over S)
+                near = math.isfinite(nn)
+                lb = max(lb, (nn if near else bound) - half_len)
+                near = near and lb - reach <= S
+            if near:
+                qp[n, 0], qp[n, 1] = p, q
+                qf[n, 0], qf[n, 1], qf[n, 2] = qx, qy, lb
+                n += 1
+            else:
+                E = min(E, lb - reach)
+        kp[k, 2] = E
     ca, sa = _angle(c1, s1, c2, s2)
     st = np.zeros(12)
     st[0], st[1], st[2], st[3], st[4], st[5], st[6], st[7], st[8] = 1.0, centre, hw_wide, W, chord_W, ca, sa, cx, cy
