@@ -122,14 +122,11 @@ def event_pipe(progress, job_of):
 def forward_events(fd: int):
     """In a forked job: a progress callback writing each event to `fd` (:func:`event_pipe`) as one JSON line; a full
     pipe drops the event (never holds the work)."""
-    import json
+    from .progress import event_line
 
     def send(event) -> None:
-        rec = dict(text=str(event), kind=getattr(event, "kind", "progress"),
-                   phase=getattr(event, "phase", None) or str(event), done=getattr(event, "done", None),
-                   total=getattr(event, "total", None))
         try:
-            os.write(fd, (json.dumps(rec) + "\n").encode())
+            os.write(fd, event_line(event))
         except OSError:
             pass
 

@@ -17,8 +17,8 @@ _HERE = Path(__file__).resolve().parent
 #: every source file with cached kernels (``checks.kernels.MODULES``; a test keeps the two lists equal)
 SOURCES = tuple(str(_HERE / f) for f in ("checks/tri_tri.py", "checks/motion/nearest.py", "checks/motion/crossing.py",
                                          "checks/motion/backlash.py", "checks/motion/contact_kernels.py",
-                                         "checks/motion/contact_reuse.py", "checks/motion/contact_track.py", "checks/box_pairs.py",
-                                         "export/normals.py"))
+                                         "checks/motion/contact_reuse.py", "checks/motion/contact_track.py",
+                                         "checks/box_pairs.py", "export/normals.py"))
 
 __all__ = ["SOURCES", "bind", "stamp"]
 

@@ -27,7 +27,8 @@ PROGRESS, NOTICE = "progress", "notice"
 #: the least time between two count events of one Reporter (the first and the last of a phase always go)
 COUNT_EVERY_S = 0.1
 
-__all__ = ["Event", "Reporter", "PROGRESS", "NOTICE", "COUNT_EVERY_S", "counter", "count_to", "count_shared"]
+__all__ = ["Event", "Reporter", "PROGRESS", "NOTICE", "COUNT_EVERY_S", "counter", "count_to", "count_shared",
+           "event_line"]
 
 
 class Event(str):
@@ -134,3 +135,14 @@ def count_shared(progress, phase: str, parts: int, unit: str = "") -> list:
         return count
 
     return [part(k) for k in range(parts)]
+
+
+def event_line(event) -> bytes:
+    """One event as the JSON line a forked job or build sends up its pipe (kind, text, phase, done, total): what the
+    reader (:mod:`.render`) parses back into an :class:`Event`."""
+    import json
+
+    record = dict(kind=getattr(event, "kind", "progress"), text=str(event),
+                  phase=getattr(event, "phase", None) or str(event), done=getattr(event, "done", None),
+                  total=getattr(event, "total", None))
+    return (json.dumps(record) + "\n").encode()

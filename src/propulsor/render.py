@@ -20,6 +20,7 @@ import sys
 import threading
 import time
 
+from .progress import event_line
 from .signals import check_signalled
 
 #: the least time between two plain lines of one counting step (not a terminal)
@@ -215,11 +216,8 @@ class Renderer:
 def _forward(event) -> None:
     """One JSON line of `event` to the forking command's pipe (a full pipe or a gone reader: dropped)."""
     global _FORWARD_FD
-    record = dict(kind=getattr(event, "kind", "progress"), text=str(event),
-                  phase=getattr(event, "phase", None) or str(event), done=getattr(event, "done", None),
-                  total=getattr(event, "total", None))
     try:
-        os.write(_FORWARD_FD, (json.dumps(record) + "\n").encode())
+        os.write(_FORWARD_FD, event_line(event))
     except BlockingIOError:
         pass
     except OSError:

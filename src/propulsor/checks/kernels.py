@@ -5,8 +5,8 @@ A build on a fresh install compiled them where they were first called — in the
 as-built contact (each worker its own copy), in the mesh checks — as 12-19 s silences between its progress lines,
 about 34 CPU s in all on the seed-002 Fourier pair (71 s wall against 38 s warm).  The build now compiles them first
 when :func:`cold`, saying so, before it forks any worker; ``make install`` compiles them ahead (:func:`warm`).
-Their disk cache is keyed on every kernel source (:mod:`propulsor.nbcache`): a kernel compiled into another's code is never
-loaded stale after its own file changed.
+Their disk cache is keyed on every kernel source (:mod:`propulsor.nbcache`): a kernel compiled into another's code is
+never loaded stale after its own file changed.
 """
 
 from __future__ import annotations
@@ -19,8 +19,8 @@ import numpy as np
 #: the modules whose kernels are cached on disk
 MODULES = ("propulsor.checks.tri_tri", "propulsor.checks.motion.nearest", "propulsor.checks.motion.crossing",
            "propulsor.checks.motion.backlash", "propulsor.checks.motion.contact_kernels",
-           "propulsor.checks.motion.contact_reuse", "propulsor.checks.motion.contact_track", "propulsor.checks.box_pairs",
-           "propulsor.export.normals")
+           "propulsor.checks.motion.contact_reuse", "propulsor.checks.motion.contact_track",
+           "propulsor.checks.box_pairs", "propulsor.export.normals")
 
 __all__ = ["MODULES", "cold", "warm", "warm_if_cold"]
 

@@ -127,8 +127,8 @@ def overlapping_pairs(lo: np.ndarray, hi: np.ndarray, max_pairs: int | None = No
     A = np.zeros(1, np.int32)
     B = np.zeros(1, np.int32)
     for lev in range(len(levels) - 2, -1, -1):
-        A, B = child_pairs(A, B, np.column_stack(levels[lev]))  # compiled: the children of each pair whose boxes
-        # overlap
+        # compiled: the children of each pair whose boxes overlap
+        A, B = child_pairs(A, B, np.column_stack(levels[lev]))
         if max_pairs is not None and len(A) > max_pairs:
             raise TooManyPairs(f"more than {max_pairs} pairs of overlapping triangle boxes")
     keep = A != B

@@ -144,7 +144,8 @@ def track(pair, phis, thetas, direction: int, seeds, seed_phis, chained: bool, s
                      np.ascontiguousarray(pair.driven_teeth, np.float64), pair.corner_dvn, pair.turn_dvn,
                      pair.corner_drv, pair.turn_drv, pair.drv.seg_len, pair.drv.nxt, pair.dvn.seg_len, pair.dvn.nxt,
                      np.ascontiguousarray(slots, np.int64), caches, policy.CONTACT_REUSE_SLACK_MM,
-                     policy.CONTACT_REUSE_WIDEN_RAD, policy.CONTACT_REUSE_TURN_FACTOR, tuple(ka[:11]) + tuple(pa) + tuple(ka[11:]))
+                     policy.CONTACT_REUSE_WIDEN_RAD, policy.CONTACT_REUSE_TURN_FACTOR,
+                     tuple(ka[:11]) + tuple(pa) + tuple(ka[11:]))
 
 
 # the disk cache of these kernels keyed on every kernel source (one may be compiled into another's code)
