@@ -26,6 +26,10 @@ def _star(n_teeth: int, r_root: float, r_tip: float, n: int = 1200) -> np.ndarra
     return np.column_stack([r * np.cos(a), r * np.sin(a)])
 
 
+def _rect(x0, y0, x1, y1) -> np.ndarray:
+    return np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]], float)
+
+
 def _same(a, b) -> bool:
     return a[0] == b[0] and a[1] == b[1] and np.asarray(a[2]).tobytes() == np.asarray(b[2]).tobytes()
 
@@ -109,3 +113,70 @@ def test_every_grid_level_gives_the_same_answer(monkeypatch):
     monkeypatch.undo()
     assert nearest._level_for(tgt, 0.0) == 0 and nearest._level_for(tgt, 1e6) == nearest.MAX_LEVEL
     assert grid_of(tgt, 2).h == pytest.approx(9.0 * grid_of(tgt).h)
+
+
+def _turning(steps: int, step_deg: float):
+    """A toothed wheel turning beside another by small steps, the gap closing and opening (0.05 .. 1.5 mm)."""
+    tgt = Outline([_star(12, 20.0, 23.0)], 0.1)
+    src = Outline([_star(9, 14.0, 17.0, 900)], 0.1)
+    ang = np.radians(step_deg) * np.arange(steps)
+    gap = 0.05 + 1.45 * 0.5 * (1.0 + np.cos(np.linspace(0.0, 3.0 * math.pi, steps)))
+    return tgt, src, [Pose(a, (0.0, 0.0), (40.0 + g, 0.3)).matrix() for a, g in zip(ang, gap)]
+
+
+def test_a_remembering_search_answers_as_a_fresh_one_with_fewer_searches():
+    """Step after step of a turning wheel, the search that remembers (the last answer's point, each point's and
+    run's nearest vertex found farther than the bound) gives the answer of a search with no memory, bit for bit,
+    and searches under 65 % as many points (59 % here)."""
+    tgt, src, poses = _turning(120, 0.25)
+    fresh_tgt = Outline([_star(12, 20.0, 23.0)], 0.1)
+    fresh_searches = 0
+    for M in poses:
+        P = apply_pose(M, src.points)
+        got = nearest_edge(P, tgt, src)
+        fresh_tgt.__dict__.pop("_nearest_memory", None)
+        want = nearest_edge(P, fresh_tgt, src)
+        fresh_searches += int(fresh_tgt._nearest_memory[id(src)].searches[0])
+        assert _same(got, want), (M, got, want)
+        assert _same(got, distance.min_dist_points_to(P, tgt)), M
+    searches = int(tgt._nearest_memory[id(src)].searches[0])
+    assert 0 < searches < 0.65 * fresh_searches, (searches, fresh_searches)
+
+
+def test_a_remembered_point_that_moved_is_searched_again():
+    """A point found more than 3.25 mm from the target (the first search's bound; it is 4 mm off), then moved
+    3.9 mm towards it: its memory less its move no longer shows it farther than the bound (3 mm, the point of
+    the last answer), so it is searched again and found the nearest."""
+    tgt = Outline([_rect(0.0, 0.0, 10.0, 10.0)], 0.5)
+    src = Outline([np.array([[13.0, 5.0], [13.5, 5.2], [13.2, 5.6]]), np.array([[5.0, 14.0], [5.5, 14.2], [5.2, 14.6]])],
+                  0.5)
+    P = src.points.copy()
+    d0, i0, _ = nearest_edge(P, tgt, src)
+    assert d0 == pytest.approx(3.0, abs=1e-12) and P[i0].tolist() == [13.0, 5.0]
+    P[src.loop_id == 1] -= (0.0, 3.9)  # the second triangle 0.1 mm from the top
+    d1, i1, q1 = nearest_edge(P, tgt, src)
+    assert d1 == pytest.approx(0.1, abs=1e-12) and src.loop_id[i1] == 1
+    assert _same((d1, i1, q1), distance.min_dist_points_to(P, tgt))
+
+
+def test_a_new_source_at_a_freed_ones_address_gets_a_new_memory():
+    """The memory is kept per source object: one left under the address a new source now has (a freed outline's)
+    is not used, and the memories of freed sources are dropped."""
+    tgt = Outline([_star(12, 20.0, 23.0)], 0.1)
+    a = Outline([_star(9, 14.0, 17.0, 900)], 0.1)
+    b = Outline([_star(9, 14.0, 17.0, 900)], 0.1)
+    M = Pose(0.2, (0.0, 0.0), (40.2, 0.0)).matrix()
+    nearest_edge(apply_pose(M, a.points), tgt, a)
+    stale = tgt._nearest_memory[id(a)]
+    stale.low_pt[:] = 1e9  # a memory that would skip every point
+    tgt._nearest_memory[id(b)] = stale  # as if b were at a's address
+    P = apply_pose(M, b.points)
+    assert _same(nearest_edge(P, tgt, b), distance.min_dist_points_to(P, tgt))
+    assert tgt._nearest_memory[id(b)] is not stale and tgt._nearest_memory[id(b)].src() is b
+    key = id(a)
+    del a, stale
+    import gc
+    gc.collect()
+    c = Outline([_rect(-1.0, -1.0, 1.0, 1.0)], 0.1)
+    nearest_edge(c.points + (30.0, 0.0), tgt, c)
+    assert key not in tgt._nearest_memory or tgt._nearest_memory[key].src() is not None
