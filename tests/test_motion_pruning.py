@@ -180,3 +180,26 @@ def test_a_new_source_at_a_freed_ones_address_gets_a_new_memory():
     c = Outline([_rect(-1.0, -1.0, 1.0, 1.0)], 0.1)
     nearest_edge(c.points + (30.0, 0.0), tgt, c)
     assert key not in tgt._nearest_memory or tgt._nearest_memory[key].src() is not None
+
+
+def test_a_search_that_found_nothing_remembers_only_the_rings_it_searched():
+    """A frame (80 x 40 mm, hole 6..74 x 6..34; grid cells of 4 mm) and two small triangles in the hole: one 0.1 mm
+    below the hole's top, one 6.1 mm left of its right side, near the right edge of its cell.  Searched within
+    0.1 mm (0.35 mm), the second finds no vertex in the two rings of cells about it and remembers its nearest
+    vertex at least 4 mm off (the next ring's distance: one cell), not 8.  Moved 6.05 mm right (0.05 mm from the
+    side) it is searched again and is the nearest."""
+    frame = [_rect(0.0, 0.0, 80.0, 40.0), _rect(6.0, 6.0, 74.0, 34.0)[::-1]]
+    tgt = Outline(frame, 0.5)
+    assert grid_of(tgt).h == 4.0
+    t1 = np.array([[40.0, 33.9], [39.7, 33.6], [40.3, 33.6]])
+    t2 = np.array([[67.9, 20.0], [67.6, 19.7], [67.6, 20.3]])
+    src = Outline([t1, t2], 0.5)
+    d0, i0, _ = nearest_edge(src.points, tgt, src)
+    assert d0 == pytest.approx(0.1, abs=1e-9) and src.loop_id[i0] == 0
+    mem = tgt._nearest_memory[id(src)]
+    k = int(np.nonzero(np.all(src.points == (67.9, 20.0), axis=1))[0][0])
+    assert mem.low_pt[k] == 4.0 and not mem.exact[k]
+    P = src.points + np.where(src.loop_id[:, None] == 1, (6.05, 0.0), (0.0, 0.0))
+    d1, i1, q1 = nearest_edge(P, tgt, src)
+    assert d1 == pytest.approx(0.05, abs=1e-9) and i1 == k
+    assert _same((d1, i1, q1), distance.min_dist_points_to(P, tgt))
