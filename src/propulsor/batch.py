@@ -183,6 +183,10 @@ def preload() -> None:
 
     for name in PRELOAD:
         importlib.import_module(name)
+    # the CAD kernel's wrapper (its VTK deferred): imported here once, not in every build (0.7 CPU s each)
+    from .solids.cq_import import import_cadquery
+
+    import_cadquery()
     # the compiled kernels (mesh checks, sweeps, contact): loaded (or compiled, once per machine) before the builds fork
     from .checks.kernels import warm
 
