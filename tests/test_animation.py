@@ -79,3 +79,28 @@ def test_every_part_type_animates_its_motion():
         steps = [getattr(s, "__name__", "") for s in get_part_type(name).build.steps]
         assert "start_animations" in steps and steps[-1] == "collect_animations", (name, steps)
         assert steps.index("start_animations") < steps.index("collect_animations")
+
+
+def test_the_frames_font_draws_a_string_again_from_its_first_bitmap_pixel_for_pixel():
+    """The frames' font remembers each string's bitmap: drawn twice it is the very bitmap of the first time, and
+    every string it draws (again or not) is pixel for pixel what a fresh font draws."""
+    from PIL import ImageDraw, ImageFont
+
+    from propulsor.export import animation as an
+
+    font = an._font()
+    assert an._font() is font
+    fresh = ImageFont.load_default(size=an.FONT_SIZE)
+    words = ["hub height 320.0000 mm", "0.100 mm", "phi, deg (grey: exact law)", "hub height 320.0000 mm",
+             "least clearance 0.1407 mm (mesh_planet3_ring, psi = 65.0°)", "0.100 mm"]
+    for f_a, f_b in ((font, fresh),):
+        a, b = Image.new("P", (400, 20 * len(words)), 0), Image.new("P", (400, 20 * len(words)), 0)
+        for im, f in ((a, f_a), (b, f_b)):
+            d = ImageDraw.Draw(im)
+            d.fontmode = "1"
+            for k, w in enumerate(words):
+                d.text((3.0 + 0.5 * (k % 2), 2.0 + 20 * k), w, fill=5, font=f)  # half-pixel starts too
+        assert a.tobytes() == b.tobytes()
+        assert np.count_nonzero(np.asarray(a)) > 500  # text was drawn
+    m1 = font.getmask2("0.100 mm", "1")
+    assert font.getmask2("0.100 mm", "1") is m1 and fresh.getmask2("0.100 mm", "1") is not m1

@@ -175,7 +175,8 @@ def _started_without_slot() -> None:
 PRELOAD = ("propulsor.parts", "propulsor.parts.writer", "propulsor.solids.build", "propulsor.solids.kernel",
            "propulsor.export.step", "propulsor.export.mesh", "propulsor.export.plots", "propulsor.export.dxf",
            "propulsor.checks.mesh", "propulsor.checks.brep", "propulsor.checks.motion", "scipy.optimize",
-           "scipy.integrate", "scipy.interpolate")
+           "scipy.integrate", "scipy.interpolate", "markdown", "propulsor.export.animation", "propulsor.export.html",
+           "propulsor.export.render", "propulsor.export.glb_check", "propulsor.output_folder")
 
 
 def preload() -> None:

@@ -217,10 +217,33 @@ def _flat(P: np.ndarray) -> list:
     return Q.ravel().tolist()
 
 
-def _font():
-    from PIL import ImageFont
+_FONT: list = []  # the frames' font, made once per process
 
-    return ImageFont.load_default(size=FONT_SIZE)
+
+def _font():
+    """The frames' font (Pillow's default at FONT_SIZE), its rendered text remembered: the same string drawn
+    again (a caption or a scale label on every frame) takes the bitmap Pillow made the first time, pixel for
+    pixel the same (``getmask2`` depends on its arguments alone)."""
+    if not _FONT:
+        from PIL import ImageFont
+
+        font = ImageFont.load_default(size=FONT_SIZE)
+        masks: dict = {}
+        render = font.getmask2
+
+        def getmask2(text, *args, **kwargs):
+            key = (text, args, tuple(sorted(kwargs.items())))
+            try:
+                got = masks.get(key)
+            except TypeError:  # an argument that is no key (a list of features): drawn afresh
+                return render(text, *args, **kwargs)
+            if got is None:
+                got = masks[key] = render(text, *args, **kwargs)
+            return got
+
+        font.getmask2 = getmask2
+        _FONT.append(font)
+    return _FONT[0]
 
 
 #: word -> its width in pixels in the frames' font
