@@ -76,7 +76,7 @@ class Outline:
     """A planar body prepared for motion checks (in its own body frame).
 
     ``loops``: closed polylines (first point not repeated), material on the left;
-    ``section``: the manifold3d CrossSection of those loops (fill rule Positive);
+    ``section``: the manifold3d CrossSection of those loops (fill rule Positive; made when first asked for);
     ``points``: all vertices after subdividing long edges, with edge arrays
     ``seg_a``/``seg_b`` (edge k runs from point k to point ``nxt[k]``), ``prev``,
     ``loop_id``, ``arclen`` (arc length of each vertex along its loop) and a
@@ -89,7 +89,6 @@ class Outline:
         require(len(loops) >= 1, "loops", len(loops), "need at least one closed loop")
         cleaned = [_clean_loop(p, f"loops[{i}]") for i, p in enumerate(loops)]
         self.loops = _orient_by_nesting(cleaned)
-        self.section = m3d.CrossSection([np.ascontiguousarray(p) for p in self.loops], m3d.FillRule.Positive)
         dense = [_densify(p, max_segment) for p in self.loops]
         sizes = np.array([len(d) for d in dense])
         starts = np.concatenate([[0], np.cumsum(sizes)[:-1]])
@@ -105,7 +104,8 @@ class Outline:
         cum = np.cumsum(self.seg_len)
         loop_start_cum = (cum - self.seg_len)[starts]
         self.arclen = cum - self.seg_len - loop_start_cum[self.loop_id]
-        self.perimeter = np.array([self.seg_len[self.loop_id == i].sum() for i in range(len(dense))])
+        # each loop's edges are one slice (the sum of the same elements in the same order as a mask would select)
+        self.perimeter = np.array([self.seg_len[a:a + m].sum() for a, m in zip(starts.tolist(), sizes.tolist())])
         lo, hi = self.points.min(axis=0), self.points.max(axis=0)
         self.center = 0.5 * (lo + hi)
         dc = np.linalg.norm(self.points - self.center, axis=1)
@@ -115,6 +115,12 @@ class Outline:
         e = self.seg_b - self.seg_a
         t = np.clip(np.einsum("ij,ij->i", self.center - self.seg_a, e) / (self.seg_len * self.seg_len), 0.0, 1.0)
         self.r_min = float(row_norms(self.seg_a + t[:, None] * e - self.center).min())
+
+    @cached_property
+    def section(self) -> m3d.CrossSection:
+        """The manifold3d CrossSection of the loops (fill rule Positive), made at its first use (a sweep whose
+        bodies stay apart, or a backlash search, never asks for it)."""
+        return m3d.CrossSection([np.ascontiguousarray(p) for p in self.loops], m3d.FillRule.Positive)
 
     @cached_property
     def tree(self) -> cKDTree:
