@@ -89,13 +89,16 @@ def _rot_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, it
                         n += 1
         if n == 0:
             continue
-        for a in range(1, n):  # ascending (insertion sort: a few vertices, no allocation)
-            x = near[a]
-            b = a - 1
-            while b >= 0 and near[b] > x:
-                near[b + 1] = near[b]
-                b -= 1
-            near[b + 1] = x
+        if n <= 16:
+            for a in range(1, n):  # ascending (insertion sort: a few vertices, no allocation)
+                x = near[a]
+                b = a - 1
+                while b >= 0 and near[b] > x:
+                    near[b + 1] = near[b]
+                    b -= 1
+                near[b + 1] = x
+        else:  # a wide reach (a search widened by a window of many degrees): hundreds of vertices, n log n
+            near[:n].sort()
         cand = near
         if n_pairs + 2 * n > cap:
             while n_pairs + 2 * n > cap:
