@@ -9,7 +9,7 @@ vertex is skipped whole.
 
 Searches remember what they found (per source outline, on the target): the point of the last answer gives the
 first bound, and a point or a run whose nearest vertex was found farther than the bound by more than it has
-moved since is skipped (the final drive's windowed sweeps -31 %, the cams' -26 %: a sweep's steps are close).
+moved since is skipped (the final drive's windowed sweeps -32 %, the cams' -49 %: a sweep's steps are close).
 
 The answer is that of the KD-tree search (:func:`propulsor.checks.motion.distance.min_dist_points_to`,
 which takes over when the bodies are far apart): ub = least nearest-vertex distance; candidates: points
