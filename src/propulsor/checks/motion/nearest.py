@@ -92,7 +92,7 @@ def disc_cells(px, py, r, ox, oy, h, nx, ny):
             min(max(int(math.floor((py - r - oy) / h)), 0), ny - 1), min(max(int(math.floor((py + r - oy) / h)), 0), ny - 1))
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _nearest_vertex_low(px, py, V, ox, oy, h, nx, ny, start, items, bound):
     """(distance from (px, py) to the nearest vertex if it is <= bound, else inf; a lower bound of that distance):
     cKDTree's arithmetic, the square root of dx² + dy².  The rings of cells are searched until the next is farther
