@@ -15,6 +15,7 @@ returned, so that the part can say which poses the file shows.
 
 from __future__ import annotations
 
+import functools
 import io
 from dataclasses import dataclass
 from pathlib import Path
@@ -217,33 +218,30 @@ def _flat(P: np.ndarray) -> list:
     return Q.ravel().tolist()
 
 
-_FONT: list = []  # the frames' font, made once per process
+#: distinct strings whose bitmaps the frames' font keeps (captions carry numbers: a long-lived process, a study's
+#: worker, would otherwise keep every one it ever drew)
+FONT_MASKS_KEPT = 4096
 
 
+@functools.lru_cache(maxsize=None)
 def _font():
-    """The frames' font (Pillow's default at FONT_SIZE), its rendered text remembered: the same string drawn
-    again (a caption or a scale label on every frame) takes the bitmap Pillow made the first time, pixel for
-    pixel the same (``getmask2`` depends on its arguments alone)."""
-    if not _FONT:
-        from PIL import ImageFont
+    """The frames' font (Pillow's default at FONT_SIZE), made once per process, its rendered text remembered: the
+    same string drawn again (a caption or a scale label on every frame) takes the bitmap Pillow made the first
+    time, pixel for pixel the same (``getmask2`` depends on its arguments alone)."""
+    from PIL import ImageFont
 
-        font = ImageFont.load_default(size=FONT_SIZE)
-        masks: dict = {}
-        render = font.getmask2
+    font = ImageFont.load_default(size=FONT_SIZE)
+    render = font.getmask2
+    kept = functools.lru_cache(maxsize=FONT_MASKS_KEPT)(lambda text, args, kwargs: render(text, *args, **dict(kwargs)))
 
-        def getmask2(text, *args, **kwargs):
-            key = (text, args, tuple(sorted(kwargs.items())))
-            try:
-                got = masks.get(key)
-            except TypeError:  # an argument that is no key (a list of features): drawn afresh
-                return render(text, *args, **kwargs)
-            if got is None:
-                got = masks[key] = render(text, *args, **kwargs)
-            return got
+    def getmask2(text, *args, **kwargs):
+        try:
+            return kept(text, args, tuple(sorted(kwargs.items())))
+        except TypeError:  # an argument that is no key (a list of features): drawn afresh
+            return render(text, *args, **kwargs)
 
-        font.getmask2 = getmask2
-        _FONT.append(font)
-    return _FONT[0]
+    font.getmask2 = getmask2
+    return font
 
 
 #: word -> its width in pixels in the frames' font

@@ -136,6 +136,14 @@ def _nearest_vertex(px, py, V, ox, oy, h, nx, ny, start, items, bound):
     return _nearest_vertex_low(px, py, V, ox, oy, h, nx, ny, start, items, bound)[0]
 
 
+@njit(cache=True, inline="always")
+def _still_farther(low, ax, ay, px, py, bound):
+    """Whether a point whose nearest vertex was at least `low` away when it stood at (ax, ay) is still farther than
+    `bound` from every vertex, standing at (px, py): at least `low` less its move (1e-9: the rounding)."""
+    hx, hy = px - ax, py - ay
+    return low - math.sqrt(hx * hx + hy * hy) > bound + 1e-9 * (1.0 + abs(low))
+
+
 @njit(cache=True)
 def _run_within(P, r0, lb_r0, rho_c, bound, margin, V, ox, oy, h, nx, ny, start, items, heads, lows, c):
     """Whether a point of the run c starting at r0 (all within rho_c of P[r0]) may lie within `bound` of a vertex:
@@ -146,9 +154,7 @@ def _run_within(P, r0, lb_r0, rho_c, bound, margin, V, ox, oy, h, nx, ny, start,
     skips searches that would say no."""
     if lb_r0 - rho_c > bound + margin:
         return False
-    hx, hy = P[r0, 0] - heads[c, 0], P[r0, 1] - heads[c, 1]
-    low = lows[c] - math.sqrt(hx * hx + hy * hy)
-    if low - rho_c > bound + margin + 1e-9 * (1.0 + abs(lows[c])):
+    if _still_farther(lows[c], heads[c, 0], heads[c, 1], P[r0, 0], P[r0, 1], bound + margin + rho_c):
         return False
     dr, low = _nearest_vertex_low(P[r0, 0], P[r0, 1], V, ox, oy, h, nx, ny, start, items,
                                   bound + rho_c + 2.0 * margin)
@@ -159,10 +165,8 @@ def _run_within(P, r0, lb_r0, rho_c, bound, margin, V, ox, oy, h, nx, ny, start,
 
 @njit(cache=True)
 def _known_farther(P, i, at, low_pt, bound):
-    """Whether an earlier search shows point i's nearest vertex farther than `bound`: it was at least low_pt[i]
-    away with the point at at[i], so now at least that less the point's move (1e-9: the rounding)."""
-    hx, hy = P[i, 0] - at[i, 0], P[i, 1] - at[i, 1]
-    return low_pt[i] - math.sqrt(hx * hx + hy * hy) > bound + 1e-9 * (1.0 + abs(low_pt[i]))
+    """Whether an earlier search shows point i's nearest vertex farther than `bound` (``_still_farther``)."""
+    return _still_farther(low_pt[i], at[i, 0], at[i, 1], P[i, 0], P[i, 1], bound)
 
 
 @njit(cache=True)
