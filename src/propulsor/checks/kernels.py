@@ -20,7 +20,8 @@ import numpy as np
 MODULES = ("propulsor.checks.tri_tri", "propulsor.checks.motion.nearest", "propulsor.checks.motion.crossing",
            "propulsor.checks.motion.backlash", "propulsor.checks.motion.contact_kernels",
            "propulsor.checks.motion.contact_reuse", "propulsor.checks.motion.contact_track",
-           "propulsor.checks.box_pairs", "propulsor.export.normals")
+           "propulsor.checks.box_pairs", "propulsor.export.normals",
+           "propulsor.geometry.spline_foot")
 
 __all__ = ["MODULES", "cold", "warm", "warm_if_cold"]
 
@@ -61,8 +62,10 @@ def _toothed(z: int, r: float, h: float, n: int = 24) -> np.ndarray:
 def warm() -> None:
     """Call every cached kernel once on small inputs, so that each is compiled (or loaded) now, in this process:
     the mesh checks' triangle tests, the motion proof's distance, crossing and rotation searches, and the as-built
-    contact search (its first hit and all of a window's) on a pair of toothed rings; the GLB's shading normals."""
+    contact search (its first hit and all of a window's) on a pair of toothed rings; the GLB's shading normals; the
+    spline fit's foot-point distances."""
     from ..export.normals import smooth_normals
+    from ..geometry.spline_foot import foot_distances
     from .mesh import self_intersections
     from .motion import Outline
     from .motion.backlash import _rot_hits
@@ -89,6 +92,9 @@ def warm() -> None:
     # the shading normals of the assemblies' GLB (export/normals.py's crease sums)
     smooth_normals(np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]),
                    np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]))
+    # the spline fit's foot-point distances (geometry/spline_foot.py): a cubic through four points
+    foot_distances(np.array([0.0, 0, 0, 0, 1, 1, 1, 1]), np.array([[0.0, 0], [1, 1], [2, 1], [3, 0]]), 3,
+                   np.array([[1.5, 1.0]]), np.array([0.5]), 0.0, 1.0)
 
 
 def warm_if_cold(progress=None) -> bool:

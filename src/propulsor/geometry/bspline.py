@@ -16,6 +16,7 @@ from scipy.interpolate import make_interp_spline
 from ..errors import require
 from ..policy import SPLINE_FIT_TOL_MM
 from .profile import Spline
+from .spline_foot import foot_distances
 
 __all__ = ["fit_curve", "fit_points", "spline_deviation"]
 
@@ -34,17 +35,9 @@ def _interp(P: np.ndarray):
 
 
 def _project(bs, Q: np.ndarray, t0: np.ndarray, lo: float, hi: float, iters: int = 6) -> np.ndarray:
-    """Distance of points Q to the spline curve, Newton foot-point search from t0."""
-    d1, d2 = bs.derivative(1), bs.derivative(2)
-    t = t0.copy()
-    for _ in range(iters):
-        r = bs(t) - Q
-        g1 = d1(t)
-        g2 = d2(t)
-        f = np.einsum("ij,ij->i", r, g1)
-        fp = np.einsum("ij,ij->i", g1, g1) + np.einsum("ij,ij->i", r, g2)
-        t = np.clip(t - f / np.where(np.abs(fp) > 1e-300, fp, 1e-300), lo, hi)
-    return np.linalg.norm(bs(t) - Q, axis=1)
+    """Distance of points Q to the spline curve, Newton foot-point search from t0 (compiled:
+    :func:`.spline_foot.foot_distances`, one pass of the basis functions for the point and both derivatives)."""
+    return foot_distances(bs.t, bs.c, bs.k, Q, np.asarray(t0, float), lo, hi, iters)
 
 
 def _to_spline(bs) -> Spline:
