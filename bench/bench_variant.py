@@ -62,6 +62,14 @@ ticks and the 636 files of ``make`` identical bit for bit.  What a position cost
 ~45 vertices a side that do come within reach of the mate (~43 of them hit it), ~13 us in sorting the candidates
 again every ~6 positions.  Sorting one run of vertices at a time instead, each at its own pose, was slower (0.77 ->
 0.84 s the sampled positions, 0.47 -> 0.62 s the bisections) and was not kept.
+
+2026-11-30 (one core free, the other idle; paired, the old tree (4022d76) and the new one in turn, two rounds of two):
+the spline fit's foot-point distances compiled (geometry/spline_foot.py): seed 002 5.14 / 4.98 / 5.28 / 5.19 ->
+4.72 / 4.72 / 4.98 / 4.94 CPU s (-6 %), its Fourier form 5.39 / 5.37 / 5.49 / 5.49 -> 5.27 / 5.35 / 5.27 / 5.35
+(-2.5 %).  The fits alone, their exact points known (bench/bench_spline_fit.py): 0.40 -> 0.21 CPU s a design,
+every spline identical.  What is left (the seed-002 pair, cProfile): the compiled as-built contact search 1.2 s
+(23 %), the rest spread over the laws' and the pitch curves' small-array and one-float calls of the design
+(0.1-0.2 s each), the whole-cycle proof's crops and booleans (0.15 s each), the per-tooth load's fits (0.3 s).
 """
 
 from __future__ import annotations
