@@ -69,3 +69,21 @@ def test_degree_one_is_the_polyline():
     Q = np.array([[3.0, 2.0], [7.5, -0.5]])
     got = foot_distances(bs.t, bs.c, bs.k, Q, np.array([5.0, 5.0]), 0.0, 10.0)
     assert np.allclose(got, [2.0, 0.5], atol=1e-12)
+
+
+def test_a_fit_through_two_or_three_points():
+    """fit_points of two points (a straight segment, degree 1) and three (degree 2): the distances of a spline of
+    degree below 2 have no second derivative to ask scipy for (before the compiled distances it raised ValueError
+    there); the spline passes through the points."""
+    from propulsor.geometry.bspline import fit_points
+
+    two = fit_points(np.array([[0.0, 0.0], [3.0, 4.0]]))
+    assert two.degree == 1 and np.array_equal(two.poles, [[0.0, 0.0], [3.0, 4.0]])
+    P = np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]])
+    three = fit_points(P)
+    assert three.degree == 2
+    from scipy.interpolate import BSpline
+
+    bs = BSpline(three.knots, three.poles, three.degree)
+    t = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(P, axis=0), axis=1))])
+    assert np.allclose(bs(t), P, atol=1e-12)
