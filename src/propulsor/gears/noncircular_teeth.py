@@ -262,14 +262,24 @@ def _trim_undercut(side: ToothSide, u_tip: float) -> None:
         side.undercut = True
 
 
-def _tip_hit(side: ToothSide, curve: BodyPitchCurve, h: float, phi_guess: float, span: float):
+def _tip_hit(side: ToothSide, curve: BodyPitchCurve, h: float, phi_guess: float, span: float, memo=None):
     """(u, phi) where the flank meets the tip equidistant at height h (None if it does not within
-    the flank's range): nearest pair of samples, then fsolve."""
+    the flank's range): nearest pair of samples, then fsolve.  ``memo`` (a dict, one per tooth), when given, keeps
+    what does not depend on h between the calls of one tooth's tip search: the flank's 41 samples and the pitch
+    curve's points and normals at the 121 sampled angles (the equidistant at h is ``point + h normal``, the
+    operations of ``curve.offset``: the same samples to the last bit)."""
     fla = side.flank
     u = np.linspace(fla.u0, fla.u1, 41)
-    X = fla(u)
     ph = phi_guess + np.linspace(-0.6, 0.6, 121) * span
-    T = curve.offset(ph, h)
+    if memo is None:
+        X = fla(u)
+        T = curve.offset(ph, h)
+    else:
+        kept = memo.get(id(fla))
+        if kept is None or kept[0] is not fla or kept[1] != (phi_guess, span):
+            kept = memo[id(fla)] = (fla, (phi_guess, span), fla(u), curve.point(ph), curve.normal(ph))
+        X, P, N = kept[2], kept[3], kept[4]
+        T = P + h * N
     D = np.linalg.norm(X[:, None, :] - T[None, :, :], axis=2)
     i, j = np.unravel_index(int(np.argmin(D)), D.shape)
     g = lambda y: fla.at(y[0]) - curve.offset(np.array([y[1]]), h)[0]
@@ -509,8 +519,9 @@ def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame 
     nominal = _tip_hits_batch(flat, np.repeat(centres, 2), np.repeat(phic, 2), curve, frame, h_cut, span)
     for k, ((s_k, ph_k), (R, Lf)) in enumerate(zip(zip(centres, phic), teeth_sides)):
         first = [0]  # the side searched first (0 right, 1 left): the one that last had no tip
+        memo = {}  # the tooth's tip searches' samples that do not depend on the height (``_tip_hit``)
 
-        def hits(h, k=k, first=first):
+        def hits(h, k=k, first=first, memo=memo):
             if h == h_cut:
                 return nominal[2 * k], nominal[2 * k + 1]
             # a side without a tip at h leaves no land there, whatever the other side reaches (every reader of a
@@ -518,9 +529,9 @@ def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame 
             # side's search is not made
             a = first[0]
             got = [None, None]
-            got[a] = _tip_hit((R, Lf)[a], curve, h, ph_k, span)
+            got[a] = _tip_hit((R, Lf)[a], curve, h, ph_k, span, memo)
             if got[a] is not None:
-                got[1 - a] = _tip_hit((R, Lf)[1 - a], curve, h, ph_k, span)
+                got[1 - a] = _tip_hit((R, Lf)[1 - a], curve, h, ph_k, span, memo)
                 if got[1 - a] is None:
                     first[0] = 1 - a
             return got[0], got[1]
