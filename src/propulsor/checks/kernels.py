@@ -21,7 +21,7 @@ MODULES = ("propulsor.checks.tri_tri", "propulsor.checks.motion.nearest", "propu
            "propulsor.checks.motion.backlash", "propulsor.checks.motion.contact_kernels",
            "propulsor.checks.motion.contact_reuse", "propulsor.checks.motion.contact_track",
            "propulsor.checks.box_pairs", "propulsor.export.normals",
-           "propulsor.geometry.spline_foot")
+           "propulsor.geometry.spline_foot", "propulsor.laws.fourier_kernels")
 
 __all__ = ["MODULES", "cold", "warm", "warm_if_cold"]
 
@@ -63,9 +63,10 @@ def warm() -> None:
     """Call every cached kernel once on small inputs, so that each is compiled (or loaded) now, in this process:
     the mesh checks' triangle tests, the motion proof's distance, crossing and rotation searches, and the as-built
     contact search (its first hit and all of a window's) on a pair of toothed rings; the GLB's shading normals; the
-    spline fit's foot-point distances."""
+    spline fit's foot-point distances; the Fourier law's one-point inversion."""
     from ..export.normals import smooth_normals
     from ..geometry.spline_foot import foot_distances
+    from ..laws.ratio_laws import FourierLaw
     from .mesh import self_intersections
     from .motion import Outline
     from .motion.backlash import _rot_hits
@@ -95,6 +96,8 @@ def warm() -> None:
     # the spline fit's foot-point distances (geometry/spline_foot.py): a cubic through four points
     foot_distances(np.array([0.0, 0, 0, 0, 1, 1, 1, 1]), np.array([[0.0, 0], [1, 1], [2, 1], [3, 0]]), 3,
                    np.array([[1.5, 1.0]]), np.array([0.5]), 0.0, 1.0)
+    # the Fourier law's one-point inversion and slopes (laws/fourier_kernels.py)
+    FourierLaw(1, (), (0.05,)).U_derivs1(0.3)
 
 
 def warm_if_cold(progress=None) -> bool:

@@ -23,6 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError, require_finite
+from .fourier_kernels import slopes_one, theta_one
 
 __all__ = ["EllipticalLaw", "FourierLaw"]
 
@@ -200,6 +201,9 @@ class FourierLaw(_PeriodicLaw):
         object.__setattr__(self, "_D", D)
         object.__setattr__(self, "_T_list", T.tolist())
         object.__setattr__(self, "_D_list", D.tolist())
+        # the compiled one-point path's data (laws/fourier_kernels.py): the non-zero terms, the start's table
+        object.__setattr__(self, "_series", np.array(self._terms, dtype=float).reshape(-1, 3))
+        object.__setattr__(self, "_table", np.ascontiguousarray(np.vstack([T, D])))
 
     def _g(self, theta, order: int):
         """phi(theta) (order 0) or its 1st / 2nd / 3rd derivative in theta."""
@@ -309,11 +313,21 @@ class FourierLaw(_PeriodicLaw):
 
     def theta1(self, phi: float) -> float:
         """``theta`` at one float phi: the same Newton iteration in ``math`` (equal to rounding), the last
-        point remembered (the generator asks for U and theta of one phi in turn)."""
+        point remembered (the generator asks for U and theta of one phi in turn); compiled
+        (:func:`.fourier_kernels.theta_one`, the same operations: :meth:`_theta1_py` to the last bit) where phi is
+        finite."""
         phi = float(phi)
         last = self._last
         if last[0] == phi:
             return last[1]
+        if not math.isfinite(phi):
+            return self._theta1_py(phi)
+        th = theta_one(phi, float(self.k), self._series, self._c0, self.period, self._table, _GUESS_POINTS)
+        object.__setattr__(self, "_last", (phi, th))
+        return th
+
+    def _theta1_py(self, phi: float) -> float:
+        """:meth:`theta1` in Python (the reference of the compiled path, and its path for a phi not finite)."""
         th = self._guess1(phi)
         for _ in range(100):
             g0, g1 = self._g01(th)
@@ -327,8 +341,15 @@ class FourierLaw(_PeriodicLaw):
         return th
 
     def U_derivs1(self, phi: float) -> tuple:
-        """(U, dU/dphi, d2U/dphi2) at one float phi, from one inversion theta(phi)."""
+        """(U, dU/dphi, d2U/dphi2) at one float phi, from one inversion theta(phi); the series' sums compiled
+        (:func:`.fourier_kernels.slopes_one`, the same operations as :meth:`_U_derivs1_py`), the powers here."""
         th = self.theta1(phi)
+        g1, g2, g3 = slopes_one(th, float(self.k), self._series)
+        return 1.0 / g1, -g2 / g1 ** 3, (3 * g2 * g2 - g3 * g1) / g1 ** 5
+
+    def _U_derivs1_py(self, phi: float) -> tuple:
+        """:meth:`U_derivs1` in Python (the reference of the compiled sums)."""
+        th = self._theta1_py(float(phi))
         g1, g2, g3 = 1.0 / self.k, 0.0, 0.0
         for j, c, s in self._terms:
             ca, sa = math.cos(j * th), math.sin(j * th)
