@@ -53,6 +53,26 @@ def test_law_one_point_equals_array(law):
         assert _same(law.theta1(float(p)), th[i]), p
 
 
+@pytest.mark.parametrize("law", [lw for lw in _laws() if isinstance(lw, SmoothedWalkingLaw)],
+                         ids=["blend_000", "blend_u_h_000", "blend_002", "blend_u_h_002"])
+def test_law_few_angles_equal_array(law):
+    """Arrays of 1 to 8 angles take the one-point path (gears/smoothed_law.py, ``_few``): each element is the large
+    array's, bit for bit; an array with a non-finite angle, or of 9, takes the array path."""
+    phi = _angles(law)
+    full = (law.U(phi), law.dU_dphi(phi), law.d2U_dphi2(phi), law.theta(phi))
+    k = 0
+    for n in [1, 2, 3, 5, 8] * 40:
+        if k + n > len(phi):
+            break
+        part = phi[k:k + n]
+        for f, ref in zip((law.U, law.dU_dphi, law.d2U_dphi2, law.theta), full):
+            assert _same(f(part), ref[k:k + n]), (f.__name__, part)
+        k += n
+    assert len(phi) - k < 8
+    with_nan = np.array([0.3, math.nan])
+    assert np.isnan(law.theta(with_nan)[1]) and _same(law.theta(with_nan)[:1], law.theta(phi[:0].tolist() + [0.3]))
+
+
 @pytest.mark.parametrize("law", list(_laws())[1:3], ids=["blend", "blend_u_h"])
 def test_pitch_curve_one_point_equals_array(law):
     pc = PitchCurves(law, 160.0)
