@@ -30,6 +30,17 @@ def no_solid(monkeypatch):
     monkeypatch.setattr(sb, "extrude_profile", refuse)
 
 
+def no_figure(monkeypatch):
+    """Any figure drawn from here on fails the test: a proof keeps values only, and its writer drops figures
+    (``ProofWriter.draws_plots``), so the steps draw none (every plot of a step starts from ``new_figure``)."""
+    import propulsor.export.plots as plots
+
+    def refuse(*a, **k):
+        raise AssertionError("the proof depth drew a figure")
+
+    monkeypatch.setattr(plots, "new_figure", refuse)
+
+
 def same_as_build(manifest: dict, derived: dict, checks, solids_only: set[str]) -> None:
     """Every derived value equals the manifest's (to the last digit); only the solids' own values are
     missing; every check is one of the build's with the same result (name, passed, value, limit, message)."""
@@ -126,6 +137,7 @@ def test_the_pairs_proof_depth_gives_the_builds_values_and_checks_without_a_soli
 
     part, manifest = seed002_built
     no_solid(monkeypatch)
+    no_figure(monkeypatch)
     type_name, base = read_part_file(SEED002)
     wanted = tuple(manifest["derived"])
     row = evaluate(type_name, base, str(SEED002), {"backlash_mm": 0.15}, "proof", wanted)
@@ -160,8 +172,29 @@ def test_the_final_drives_proof_depth_gives_the_builds_values_and_checks_without
     assert main(["build", str(part), "--out", str(tmp_path / "built"), "--keep-failed", "-q"]) in (0, 1)
     manifest = json.loads((tmp_path / "built" / "manifest.json").read_text())
     no_solid(monkeypatch)
+    no_figure(monkeypatch)
     run = propulsor.part(part).proof_run
     volumes = {n for n in manifest["derived"] if n.endswith("_volume_mm3")}
     assert volumes == {f"{s}_volume_mm3" for s in ("sun", "planet", "ring", "carrier")}
     same_as_build(manifest, run.derived, run.checks, volumes)
     assert {"strength_sun_planet_S_H_pitting_sun", "carrier_cheek_radius_mm", "ring_outer_d_mm"} <= set(run.derived)
+
+
+def test_a_loaded_pairs_proof_depth_draws_no_figure(monkeypatch):
+    """The Fourier seed-002 pair with its load case: the as-built contact and the load per tooth at proof depth, their
+    values made (the speed as built, the teeth's stresses) and not one of their figures drawn."""
+    import tomllib
+
+    from propulsor.study.evaluate import evaluate
+
+    f = ROOT / "parts" / "ncg_fourier_seed002.toml"
+    base = tomllib.loads(f.read_text())
+    ptype = base.pop("type")
+    base.pop("meta", None)
+    no_figure(monkeypatch)
+    row = evaluate(ptype, base, str(f), {}, "proof",
+                   ("speed_as_built_min", "tooth_load_driver_sigma_F_max_MPa", "tooth_load_S_F_min"))
+    assert row["status"] == "ok", row
+    v = row["values"]
+    assert 0.0 < v["speed_as_built_min"] < 1.0 and v["tooth_load_driver_sigma_F_max_MPa"] > 0.0
+    assert v["tooth_load_S_F_min"] > 0.0

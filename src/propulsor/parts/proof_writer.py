@@ -18,8 +18,10 @@ __all__ = ["ProofWriter", "SolidWriter"]
 
 class ProofWriter(OutputWriter):
     """Values only: ``derived``, ``described``, ``checks``, ``notes``, ``tables`` and ``table_rows``
-    (name -> (columns, rows) as the step gave them); plots are dropped (the figure closed), DXF outlines kept in
-    ``built_profiles``."""
+    (name -> (columns, rows) as the step gave them); plots are dropped (the figure closed; ``draws_plots`` False: the
+    steps that only draw a figure skip it), DXF outlines kept in ``built_profiles``."""
+
+    draws_plots = False
 
     def __init__(self, part: str, params, progress=None, source: Path | None = None):
         super().__init__(Path("."), part, params, progress=progress, source=source)

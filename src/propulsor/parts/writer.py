@@ -154,6 +154,9 @@ class SolidRecord:
 
 
 class OutputWriter:
+    #: whether :meth:`add_plot` keeps a figure (a writer of values only drops it: the steps then draw none)
+    draws_plots = True
+
     def __init__(self, folder: Path, part: str, params, progress=None, source: Path | None = None):
         self.folder = Path(folder)
         self.part = part

@@ -180,6 +180,8 @@ def sweep_results(dd: FinalDriveDesign, w, built: dict) -> None:
         w.add_checks(s.result.checks())
         d[f"{s.name}_min_clearance_mm"] = float(s.clearance_mm.min())
         d[f"{s.name}_max_overlap_mm2"] = float(s.overlap_mm2.max())
+    if not w.draws_plots:  # a proof's values only: no figure drawn to be dropped
+        return
     from ...export.plots import new_figure
 
     fig, ax = new_figure()

@@ -59,7 +59,8 @@ def traction(dd: FinalDriveDesign, w, built: dict) -> None:
                        f"f_g of the top gear at n_N ({top:.4f}) against the design road f_gr + i = "
                        f"{v.f_gr + v.i_slope:g} plus air drag {air:.4f} at V_max = {v.V_max:g} km/h (seed 004 eq. 57)"),
     ])
-    _plot(w, tr, c, v)
+    if w.draws_plots:  # a proof's values only: no figure drawn to be dropped
+        _plot(w, tr, c, v)
     i_fd = ps.ratio
     ahead = ", ".join(f"{u / i_fd:.3f}" for u in c.U)
     thesis_V = ", ".join(f"{x:g}" for x in PRINTED_V_TOP)

@@ -178,8 +178,9 @@ def as_built_values(w, dd, built: dict) -> None:
                      "speed_as_built_phi_max_deg": math.degrees(h0.phi_max)})
     w.derived.update(vals)  # their meanings: the part type's glossary (AS_BUILT)
     w.add_table("as_built_stretches", _STRETCH_COLUMNS, stretch_rows(ab))
-    w.progress("as built: the plot of the driven speed and the transmission error")
-    _plot(w, d, ab)
+    if w.draws_plots:  # a proof's values only: no figure drawn to be dropped
+        w.progress("as built: the plot of the driven speed and the transmission error")
+        _plot(w, d, ab)
     from ... import policy
 
     proof = built["proof"].summary()  # the motion proof's phase samples, beside the contact positions resolved here

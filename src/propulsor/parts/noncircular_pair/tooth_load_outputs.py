@@ -483,7 +483,8 @@ def tooth_load_values(w, dd, built: dict, ab) -> None:
     w.add_table("tooth_load", PHASE_COLUMNS, tl.rows)
     w.add_table("tooth_peaks", PEAK_COLUMNS, peak_rows(tl, p))
     w.add_table("tooth_load_factors", ["factor", "value", "source"], factor_rows(tl, p, vals))
-    _plot(w, tl, p)
+    if w.draws_plots:  # a proof's values only: no figure drawn to be dropped
+        _plot(w, tl, p)
     mat = tl.material
     w.add_note(
         f"Load per tooth (gears/tooth_load.py; seed 002: \"the uneven distribution of the load between different "
