@@ -70,6 +70,10 @@ the spline fit's foot-point distances compiled (geometry/spline_foot.py): seed 0
 every spline identical.  What is left (the seed-002 pair, cProfile): the compiled as-built contact search 1.2 s
 (23 %), the rest spread over the laws' and the pitch curves' small-array and one-float calls of the design
 (0.1-0.2 s each), the whole-cycle proof's crops and booleans (0.15 s each), the per-tooth load's fits (0.3 s).
+At eb11034 (the same pairing, two rounds of two; also the tip searches' samples kept per tooth, the Fourier law's
+one-point inversion compiled, the smoothed walking law's few-angle calls on its one-point path, and no figure drawn
+at proof depth): seed 002 5.07 / 5.00 / 5.21 / 4.99 -> 4.36 / 4.34 / 4.44 / 4.52 CPU s (-13 %), its Fourier form
+5.28 / 5.41 / 5.38 / 5.37 -> 4.67 / 4.80 / 4.75 / 4.75 (-12 %); the 636 files of make identical after each step.
 """
 
 from __future__ import annotations

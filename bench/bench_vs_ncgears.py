@@ -24,6 +24,8 @@ ours 11.03 / 10.78 s wall (17.91 / 17.66 CPU s), peak 651 / 665 MiB: wall ratio 
 0.622; ``ncg_elliptical.toml`` 8.61 s wall.  (The issue's 40 s of ncgears was measured on a busier machine.)  The
 peak's floor: ``import cadquery`` alone is 456 MiB resident here (OCP 286 MiB, VTK through OCP.IVtkOCC 126 MiB), so
 no process that holds the CAD kernel meets 400 MiB.
+2026-11-30, later (2 cores, idle; eb11034): ncgears 25.64 s wall (26.75 CPU s), peak 288 MiB; ours 9.94 s wall
+(16.16 CPU s), peak 652 MiB: wall ratio 0.388, CPU ratio 0.604; ``ncg_elliptical.toml`` 7.91 s wall.
 """
 
 from __future__ import annotations
