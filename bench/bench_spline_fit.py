@@ -24,19 +24,6 @@ ROOT = Path(__file__).resolve().parents[1]
 DEFAULT = ["parts/ncg_seed002.toml", "parts/ncg_fourier_seed002.toml"]
 
 
-def _scipy_project(bs, Q, t0, lo, hi, iters=6):
-    """The fit's foot-point distances as they were: Newton with scipy's evaluation of C, C' and C''."""
-    d1, d2 = bs.derivative(1), bs.derivative(2)
-    t = np.asarray(t0, float).copy()
-    for _ in range(iters):
-        r = bs(t) - Q
-        g1, g2 = d1(t), d2(t)
-        f = np.einsum("ij,ij->i", r, g1)
-        fp = np.einsum("ij,ij->i", g1, g1) + np.einsum("ij,ij->i", r, g2)
-        t = np.clip(t - f / np.where(np.abs(fp) > 1e-300, fp, 1e-300), lo, hi)
-    return np.linalg.norm(bs(t) - Q, axis=1)
-
-
 def record(part_file: str) -> list:
     """(exact points by parameter, u0, u1, tol, n0) of every fit_curve call of the part's design."""
     from propulsor.geometry import bspline
@@ -105,13 +92,14 @@ def replay(fits, project) -> tuple[float, int, str]:
 
 def main(argv) -> int:
     from propulsor.geometry import bspline
+    from propulsor.geometry.spline_foot import foot_distances_scipy
 
     same = True
     for part_file in argv or DEFAULT:
         fits = record(part_file)
         replay(fits, bspline._project)  # warm: the compiled kernel loaded
         comp = min(replay(fits, bspline._project) for _ in range(3))
-        ref = min(replay(fits, _scipy_project) for _ in range(3))
+        ref = min(replay(fits, foot_distances_scipy) for _ in range(3))
         same &= comp[2] == ref[2]
         print(f"{part_file}: {len(fits)} fits, {comp[1]} rounds; CPU s (least of 3): compiled {comp[0]:.3f}, scipy "
               f"{ref[0]:.3f}; splines {'identical' if comp[2] == ref[2] else 'DIFFERENT'} ({comp[2]} / {ref[2]})")

@@ -13,6 +13,8 @@ from types import SimpleNamespace
 class SaidWriter:
     """The parts of the output writer the steps use, with what they said."""
 
+    draws_plots = True  # a build's writer: the steps draw their figures (``OutputWriter.draws_plots``)
+
     def __init__(self, folder=None):
         self.derived, self.checks, self.tables, self.plots = {}, [], {}, {}
         self.notes, self.said, self.waited = [], [], []

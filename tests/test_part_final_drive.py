@@ -405,6 +405,8 @@ def test_fatigue_safeties_and_factor_table(built):
 class _Writer:
     """The parts of the output writer the fatigue step uses."""
 
+    draws_plots = True  # a build's writer: the steps draw their figures (``OutputWriter.draws_plots``)
+
     def __init__(self):
         self.derived, self.described, self.checks, self.notes, self.tables = {}, {}, [], [], {}
 

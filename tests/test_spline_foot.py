@@ -1,5 +1,5 @@
 """The spline fit's foot-point distances, compiled (geometry/spline_foot.py): the same Newton iteration as the one
-written on scipy's BSpline and its derivative splines (the reference below, the fit's method before), and the true
+written on scipy's BSpline and its derivative splines (``foot_distances_scipy``, the fit's method before), and the true
 normal distance where the iteration has converged."""
 
 from __future__ import annotations
@@ -8,20 +8,7 @@ import numpy as np
 import pytest
 from scipy.interpolate import make_interp_spline
 
-from propulsor.geometry.spline_foot import foot_distances
-
-
-def _scipy_newton(bs, Q, t0, lo, hi, iters=6):
-    """The reference: Newton on (C(t) - Q) . C'(t) = 0 with scipy's evaluation of C, C' and C''."""
-    d1, d2 = bs.derivative(1), bs.derivative(2)
-    t = t0.copy()
-    for _ in range(iters):
-        r = bs(t) - Q
-        g1, g2 = d1(t), d2(t)
-        f = np.einsum("ij,ij->i", r, g1)
-        fp = np.einsum("ij,ij->i", g1, g1) + np.einsum("ij,ij->i", r, g2)
-        t = np.clip(t - f / np.where(np.abs(fp) > 1e-300, fp, 1e-300), lo, hi)
-    return np.linalg.norm(bs(t) - Q, axis=1)
+from propulsor.geometry.spline_foot import foot_distances, foot_distances_scipy as _scipy_newton
 
 
 def _spline(n, seed):

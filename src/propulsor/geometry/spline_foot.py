@@ -15,7 +15,7 @@ from numba import njit
 
 from ..nbcache import bind
 
-__all__ = ["foot_distances"]
+__all__ = ["foot_distances", "foot_distances_scipy"]
 
 
 @njit(cache=True)
@@ -117,6 +117,20 @@ def _foot(t, c, k, Q, t0, lo, hi, iters):
         _point_derivs(t, c, k, x, out)
         dist[p] = np.sqrt((out[0, 0] - Q[p, 0]) ** 2 + (out[0, 1] - Q[p, 1]) ** 2)
     return dist
+
+
+def foot_distances_scipy(bs, Q, t0, lo: float, hi: float, iters: int = 6) -> np.ndarray:
+    """The same iteration on scipy's BSpline ``bs`` and its derivative splines (C, C', C'' evaluated apart): the
+    method :func:`foot_distances` replaced, kept as its reference (tests, ``bench/bench_spline_fit.py``); degree >= 2."""
+    d1, d2 = bs.derivative(1), bs.derivative(2)
+    t = np.asarray(t0, float).copy()
+    for _ in range(iters):
+        r = bs(t) - Q
+        g1, g2 = d1(t), d2(t)
+        f = np.einsum("ij,ij->i", r, g1)
+        fp = np.einsum("ij,ij->i", g1, g1) + np.einsum("ij,ij->i", r, g2)
+        t = np.clip(t - f / np.where(np.abs(fp) > 1e-300, fp, 1e-300), lo, hi)
+    return np.linalg.norm(bs(t) - Q, axis=1)
 
 
 def foot_distances(knots, poles, degree: int, Q, t0, lo: float, hi: float, iters: int = 6) -> np.ndarray:

@@ -25,16 +25,19 @@ __all__ = ["theta_one", "slopes_one"]
 
 
 @njit(cache=True, inline="always")
+def _term(series, r, th):
+    """(j, c_j, s_j, cos j theta, sin j theta) of the series' term r."""
+    j = series[r, 0]
+    return j, series[r, 1], series[r, 2], math.cos(j * th), math.sin(j * th)
+
+
+@njit(cache=True, inline="always")
 def _g01(th, k, series, c0):
     """(phi(theta), d phi / d theta) at one theta (``FourierLaw._g01``)."""
     g0 = th / k
     g1 = 1.0 / k
     for r in range(series.shape[0]):
-        j = series[r, 0]
-        c = series[r, 1]
-        s = series[r, 2]
-        ca = math.cos(j * th)
-        sa = math.sin(j * th)
+        j, c, s, ca, sa = _term(series, r, th)
         g0 += c * ca + s * sa
         g1 += j * (s * ca - c * sa)
     return g0 - c0, g1
@@ -76,11 +79,7 @@ def slopes_one(th, k, series):
     g2 = 0.0
     g3 = 0.0
     for r in range(series.shape[0]):
-        j = series[r, 0]
-        c = series[r, 1]
-        s = series[r, 2]
-        ca = math.cos(j * th)
-        sa = math.sin(j * th)
+        j, c, s, ca, sa = _term(series, r, th)
         g1 += j * (s * ca - c * sa)
         g2 -= j * j * (c * ca + s * sa)
         g3 += j * j * j * (c * sa - s * ca)
