@@ -41,7 +41,7 @@ def test_the_compiled_one_point_path_is_the_python_one_bit_for_bit(seed):
 
 
 def test_the_one_point_path_is_the_array_path():
-    """Arrays of a few points take the one-point path (``_small``), larger ones numpy's: both agree to rounding."""
+    """Arrays of a few points take the one-point path (``laws.law.one_point_values``), larger ones numpy's: both agree to rounding."""
     (law,), rng = _laws(7, 1)
     phi = rng.uniform(-law.period, 2 * law.period, 64)
     assert np.allclose(law.theta(phi), [law.theta1(p) for p in phi.tolist()], rtol=0, atol=1e-13)

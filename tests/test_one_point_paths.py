@@ -56,7 +56,7 @@ def test_law_one_point_equals_array(law):
 @pytest.mark.parametrize("law", [lw for lw in _laws() if isinstance(lw, SmoothedWalkingLaw)],
                          ids=["blend_000", "blend_u_h_000", "blend_002", "blend_u_h_002"])
 def test_law_few_angles_equal_array(law):
-    """Arrays of 1 to 8 angles take the one-point path (gears/smoothed_law.py, ``_few``): each element is the large
+    """Arrays of 1 to 8 angles take the one-point path (``laws.law.one_point_values``): each element is the large
     array's, bit for bit; an array with a non-finite angle, or of 9, takes the array path."""
     phi = _angles(law)
     full = (law.U(phi), law.dU_dphi(phi), law.d2U_dphi2(phi), law.theta(phi))

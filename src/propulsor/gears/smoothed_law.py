@@ -15,22 +15,9 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from propulsor.errors import InputError, require_positive
+from propulsor.laws.law import one_point_values
 from propulsor.laws.walking import LEG_PERIOD, LEGS, WalkingLaw, invert_theta, wrap_leg, wrap_leg1
 from propulsor.policy import PHI_OF_THETA_TOL_RAD
-
-#: 1-D arrays of at most this many finite angles take the one-point path (``U_derivs1`` / ``theta1`` for each: the
-#: array functions' values bit for bit, tests/test_one_point_paths.py), where numpy's cost per call is the whole price
-#: (the solvers' and the contact search's calls of a few angles: a one-element theta 20 us -> 2 us)
-_SMALL = 8
-
-
-def _few(phi):
-    """phi as a list of floats when it is a 1-D float64 array of 1 to ``_SMALL`` finite angles, else None."""
-    if type(phi) is np.ndarray and phi.ndim == 1 and 0 < phi.size <= _SMALL and phi.dtype == np.float64:
-        xs = phi.tolist()
-        if all(math.isfinite(x) for x in xs):
-            return xs
-    return None
 
 __all__ = ["SmoothedWalkingLaw"]
 
@@ -211,27 +198,27 @@ class SmoothedWalkingLaw:
     # ---- law interface ------------------------------------------------------------
     def U(self, phi):
         """Smoothed ratio U_s(phi) (periodic, period pi/2, C2)."""
-        xs = _few(phi)
-        if xs is not None:
-            return np.array([self.U_derivs1(x)[0] for x in xs])
+        few = one_point_values(self, phi, 0)
+        if few is not None:
+            return few
         phi, t, inw = self._window(phi)
         if self.u_h is not None:
             return np.where(inw, self._p(t), self._1me * self.law.U(phi))
         return np.where(inw, self._p(t), self.law.U(phi))
 
     def dU_dphi(self, phi):
-        xs = _few(phi)
-        if xs is not None:
-            return np.array([self.U_derivs1(x)[1] for x in xs])
+        few = one_point_values(self, phi, 1)
+        if few is not None:
+            return few
         phi, t, inw = self._window(phi)
         if self.u_h is not None:
             return np.where(inw, self._dp(t), self._1me * self.law.dU_dphi(phi))
         return np.where(inw, self._dp(t), self.law.dU_dphi(phi))
 
     def d2U_dphi2(self, phi):
-        xs = _few(phi)
-        if xs is not None:
-            return np.array([self.U_derivs1(x)[2] for x in xs])
+        few = one_point_values(self, phi, 2)
+        if few is not None:
+            return few
         phi, t, inw = self._window(phi)
         if self.u_h is not None:
             return np.where(inw, self._d2p(t), self._1me * self.law.d2U_dphi2(phi))
@@ -242,9 +229,9 @@ class SmoothedWalkingLaw:
 
         With a free hand-over value (u_h): (1 - eps) theta + eps I_leg per completed window + the
         partial window integral of p - (1 - eps) U (window h at pi/4 + h pi/2, t = phi - pi/4 - h pi/2)."""
-        xs = _few(phi)
-        if xs is not None:
-            return np.array([self.theta1(x) for x in xs])
+        few = one_point_values(self, phi, -1)
+        if few is not None:
+            return few
         phi, t, inw = self._window(phi)
         d = self.delta
         if self.u_h is not None:

@@ -23,6 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError, require_finite
+from .law import one_point_values
 from .fourier_kernels import slopes_one, theta_one
 
 __all__ = ["EllipticalLaw", "FourierLaw"]
@@ -35,8 +36,6 @@ LOBES_MAX = 12
 _FOURIER_CHECK_SAMPLES = 20000
 #: points of the table of theta over one period that starts the Fourier law's Newton iteration
 _GUESS_POINTS = 4096
-#: arrays of at most this many points take the Fourier law's one-point path (``FourierLaw._small``)
-_SMALL = 8
 
 
 def _lobes(value) -> int:
@@ -224,18 +223,9 @@ class FourierLaw(_PeriodicLaw):
     def phi_of_theta(self, theta, tol: float = 0.0):
         return self._g(theta, 0)
 
-    def _small(self, phi, i: int):
-        """The one-point path (``U_derivs1``: index i of (U, U', U''); -1: theta) on an array of a few
-        points, where numpy's per-call cost is the whole price; None for a larger array."""
-        phi = np.asarray(phi, dtype=float)
-        if phi.size > _SMALL or not np.all(np.isfinite(phi)):
-            return None
-        f = self.theta1 if i < 0 else (lambda x: self.U_derivs1(x)[i])
-        return np.array([f(x) for x in phi.ravel().tolist()], dtype=float).reshape(phi.shape)
-
     def theta(self, phi):
         """Inverse of phi(theta): Newton from k phi on the monotone phi(theta), steps bounded."""
-        small = self._small(phi, -1)
+        small = one_point_values(self, phi, -1)
         if small is not None:
             return small
         phi = np.asarray(phi, dtype=float)
@@ -270,11 +260,11 @@ class FourierLaw(_PeriodicLaw):
                 + (3 * t2 - 2 * t3) * T[i + 1] + (t3 - t2) * D[i + 1])
 
     def U(self, phi):
-        small = self._small(phi, 0)
+        small = one_point_values(self, phi, 0)
         return small if small is not None else 1.0 / self._g(self.theta(phi), 1)
 
     def dU_dphi(self, phi):
-        small = self._small(phi, 1)
+        small = one_point_values(self, phi, 1)
         if small is not None:
             return small
         th = self.theta(phi)
@@ -282,7 +272,7 @@ class FourierLaw(_PeriodicLaw):
         return -g2 / g1 ** 3
 
     def d2U_dphi2(self, phi):
-        small = self._small(phi, 2)
+        small = one_point_values(self, phi, 2)
         if small is not None:
             return small
         th = self.theta(phi)
