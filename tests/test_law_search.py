@@ -188,3 +188,29 @@ def test_search_ties_rank_the_larger_margin_first(monkeypatch):
     keys = [(-p.margin_mm, p.d0_mm, p.delta) for p in res.points]
     assert len(set(p.margin_mm for p in res.points)) > 3
     assert keys == sorted(keys)
+
+
+def test_search_over_shapers_makes_each_blend_once_and_equals_one_shaper_searches(monkeypatch):
+    """The blends (law, L, pitch curves and their curvature) shared by the shapers of one search: every (delta, u_h)
+    made once, and every point the same, to the last bit, as that shaper's search alone (nothing of one shaper's
+    cutter leaks into another's generability)."""
+    import propulsor.gears.law_search as ls
+
+    m, z_H = 2.0, 96
+    shapers = [(25.0, catalogue_shaper(25.0, m)), (38.0, catalogue_shaper(38.0, m))]
+    L_ref = centre_distance(LAW0, m, z_H)
+    alone = [p for s in shapers for p in search_law(LAW0, m, z_H, 0.5, [s], L_ref, 5.0).points]
+    made = []
+    real = ls.SmoothedWalkingLaw
+
+    def counted(law, delta, u_h=None):
+        made.append((delta, u_h))
+        return real(law, delta, u_h=u_h)
+
+    monkeypatch.setattr(ls, "SmoothedWalkingLaw", counted)
+    both = search_law(LAW0, m, z_H, 0.5, shapers, L_ref, 5.0)
+    assert len(made) == len(set(made)) < both.evaluations  # shared blends: fewer made than tried
+    key = lambda p: (p.d0_mm, p.delta)
+    strip = lambda p: (p.d0_mm, p.z0, p.delta, p.u_h_rel, p.L, p.ripple, p.margin_mm, p.binding)
+    assert sorted(map(strip, both.points), key=lambda t: t[:3]) == sorted(map(strip, alone), key=lambda t: t[:3])
+    assert {key(p) for p in both.points} == {key(p) for p in alone}

@@ -89,18 +89,33 @@ def search_law(law: WalkingLaw, m: float, z_H: int, x: float, shapers, L_ref: fl
     u = law.u
     pts = []
     n_eval = 0
+    # the blend, its centre distance and its pitch curves (with their curvature summaries) depend on (delta, u_h)
+    # alone: made once and read by every shaper that tries the same blend (about half the tries of a search)
+    made: dict[tuple[float, float], tuple | None] = {}
+
+    def blend(delta: float, q: float):
+        key = (delta, q)
+        if key not in made:
+            try:
+                sl = SmoothedWalkingLaw(law, delta, u_h=q * u)
+            except InputError:
+                made[key] = None
+            else:
+                L = math.pi * m * z_H / perimeter_per_mm(sl)
+                made[key] = (sl, L, PitchCurves(sl, L))
+        return made[key]
+
     for d0, sh in shapers:
         cutter = CutterSpec(m=m, alpha=alpha, h_a=h_a, x=x, x_H=-x, z0=sh.z0, shaper_x0=sh.x0)
 
         def ev(delta, q):
             nonlocal n_eval
             n_eval += 1
-            try:
-                sl = SmoothedWalkingLaw(law, delta, u_h=q * u)
-            except InputError:
+            b = blend(delta, q)
+            if b is None:
                 return None
-            L = math.pi * m * z_H / perimeter_per_mm(sl)
-            g = check_generable(PitchCurves(sl, L), cutter)
+            sl, L, pc = b
+            g = check_generable(pc, cutter)
             return (sl, L, g) if g.ok and abs(L - L_ref) <= L_band else None
 
         for delta in np.radians(np.asarray(LAW_SEARCH_DELTA_DEG, float)):
