@@ -195,3 +195,90 @@ def test_a_face_with_interior_nodes_is_left_to_the_single_pass():
         kinds.append((T.BRepAdaptor_Surface(face).GetType() == T.GeomAbs_Cylinder, T._boundary_nodes_only(face)))
         ex.Next()
     assert sorted(kinds) == [(False, False), (False, False), (True, True)]
+
+
+def _spline_prism():
+    """A prism of a closed spline (a lobed cam-like outline) with a bore: BRepPrimAPI's side faces are linear
+    extrusions of the spline's edges, as a gear's flanks are."""
+    t = np.linspace(0.0, 2 * math.pi, 25)[:-1]
+    r = 30.0 + 4.0 * np.cos(3 * t) + 1.5 * np.sin(7 * t)
+    pts = [(float(a), float(b)) for a, b in zip(r * np.cos(t), r * np.sin(t))]
+    return cq.Workplane("XY").spline(pts, periodic=True).close().extrude(12.0).faces(">Z").workplane() \
+        .hole(10.0).val()
+
+
+def _side_faces(shape):
+    from OCP.TopAbs import TopAbs_FACE
+    from OCP.TopExp import TopExp_Explorer
+    from OCP.TopoDS import TopoDS
+
+    ex, out = TopExp_Explorer(shape, TopAbs_FACE), []
+    while ex.More():
+        face = TopoDS.Face_s(ex.Current())
+        if T.BRepAdaptor_Surface(face).GetType() == T.GeomAbs_SurfaceOfExtrusion:
+            out.append(face)
+        ex.Next()
+    return out
+
+
+def _distance_to_faces(X, faces):
+    """The least distance of each point to the surfaces of ``faces`` (OCCT's projection)."""
+    from OCP.BRep import BRep_Tool
+    from OCP.GeomAPI import GeomAPI_ProjectPointOnSurf
+    from OCP.gp import gp_Pnt
+
+    surfs = [BRep_Tool.Surface_s(f) for f in faces]
+    out = []
+    for x in X:
+        p = gp_Pnt(*map(float, x))
+        best = math.inf
+        for s in surfs:
+            pr = GeomAPI_ProjectPointOnSurf(p, s)
+            if pr.NbPoints():
+                best = min(best, pr.LowerDistance())
+        out.append(best)
+    return np.array(out)
+
+
+def test_prism_sides_are_strips_within_the_chord_they_report():
+    """A prism's side faces meshed as strips between the nodes of their two curve edges: no more triangles than two
+    a chord, the mesh closed and clean in float32, and the deflection it reports (the chords' distance from the
+    curve) at least the distance of the side triangles from their faces measured by OCCT's projection, within the
+    request; BRepMesh's own triangles of the same faces miss it (and were meshed again with interior nodes)."""
+    solid = _spline_prism()
+    shape = T.occ_shape(solid)
+    T.mesh_shape(shape, 0.005, 0.1, False, MESH_CHORD_LIMIT_MM)
+    sides = _side_faces(shape)
+    strips = T._strips(shape)
+    assert sides and len(strips) == len(sides)
+    occt = max(T.BRep_Tool.Triangulation_s(f, T.TopLoc_Location()).Deflection() for f in sides)
+    v, f, d = T.triangulate(solid, parallel=False)
+    _closed_and_clean_in_float32(v, f)
+    import trimesh
+
+    mesh = trimesh.Trimesh(v, f, process=False)
+    assert d <= 0.005 < occt
+    # outward (a positive volume), and within the deflection times the area of the exact one
+    assert mesh.is_winding_consistent and 0 < mesh.volume and abs(mesh.volume - solid.Volume()) <= d * solid.Area()
+    # the side triangles: those with a vertical edge (both caps are flat at z = 0 and z = 12) off the bore (r = 5)
+    z = v[f][:, :, 2]
+    side = ((z.max(axis=1) - z.min(axis=1)) > 1.0) & (np.linalg.norm(v[f].mean(axis=1)[:, :2], axis=1) > 8.0)
+    n_side = int(side.sum())
+    chords = sum(len(s[0]) for s in strips.values())
+    assert n_side == chords
+    B = np.array([(1 / 3, 1 / 3, 1 / 3), (0.5, 0.5, 0.0), (0.25, 0.5, 0.25), (0.1, 0.45, 0.45)])
+    X = np.einsum("bk,tkd->tbd", B, v[f[side]]).reshape(-1, 3)[::5]
+    dist = _distance_to_faces(X, sides)
+    assert dist.max() <= d + 1e-9
+    assert dist.max() > 0.2 * d  # the chords' sag is there, and the reported value is of its size
+
+
+def test_a_filleted_union_falls_back_to_brepmesh_where_no_strip_fits():
+    """A user's solid (a CadQuery union of two prisms with filleted vertical edges): its side faces that are not
+    bounded by two copies of one curve keep BRepMesh's triangles; the mesh is closed and clean, within the limit."""
+    a = cq.Workplane("XY").rect(40, 20).extrude(10).edges("|Z").fillet(3.0)
+    b = cq.Workplane("XY").center(15, 0).circle(12).extrude(16)
+    solid = a.union(b).val()
+    v, f, d = T.triangulate(solid, parallel=False)
+    _closed_and_clean_in_float32(v, f)
+    assert d <= MESH_CHORD_LIMIT_MM

@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import numpy as np
 from OCP.BRep import BRep_Tool
-from OCP.BRepAdaptor import BRepAdaptor_Surface
-from OCP.GeomAbs import GeomAbs_Cone, GeomAbs_Cylinder, GeomAbs_Plane, GeomAbs_Sphere, GeomAbs_SurfaceOfExtrusion
+from OCP.BRepAdaptor import BRepAdaptor_Curve, BRepAdaptor_Surface
+from OCP.GeomAbs import GeomAbs_Cone, GeomAbs_Cylinder, GeomAbs_Line, GeomAbs_Plane, GeomAbs_Sphere, GeomAbs_SurfaceOfExtrusion
 from OCP.IMeshTools import IMeshTools_Parameters
 from OCP.BRepMesh import BRepMesh_IncrementalMesh
 from OCP.BRepTools import BRepTools
@@ -142,7 +142,98 @@ def mesh_shape(shape, chord_tol, angular_tol, parallel, chord_limit: float | Non
     return _worst_deflection(shape, chord_limit)
 
 
-def refine_faces(shape, chord_tol, angular_tol, parallel, chord_limit) -> float:
+#: two nodes of a prism's side face are one above the other when their offset is off the extrusion's line by less
+#: than this (mm)
+_STRIP_MATCH_MM = 1e-7
+
+
+def _strip(face, tri) -> tuple[np.ndarray, float] | None:
+    """The triangles of a prism's side face (a linear extrusion of a curve bounded by two copies of the curve's edge
+    and two straight edges along the extrusion) as strips between its two curve edges' nodes, node i of the one
+    under node i of the other, and their largest distance from the face (mm); None for any other face.
+
+    BRepMesh triangulates such a face without interior nodes, but its diagonals join nodes that are not above one
+    another: a triangle then cuts across the curve (0.0188 mm from the face of a gear's flank at a request of
+    0.005 mm), and the face is meshed again with interior nodes (half as many triangles more).  A strip between
+    matching nodes lies in the plane of a chord and the extrusion's direction, which holds the face's rulings: its
+    distance from the face is the chord's from the curve, measured here at a quarter, half and three quarters of
+    every chord's parameter interval.  The strips use the face's boundary nodes only (shared with its neighbours,
+    so the mesh stays closed); the interior nodes BRepMesh put in are left out.  Returns (triangles (m, 3): indices into the face triangulation's nodes, from 0,
+    oriented as the face's own triangles), deflection)."""
+    loc = TopLoc_Location()
+    ad = BRepAdaptor_Surface(face)
+    if ad.GetType() != GeomAbs_SurfaceOfExtrusion or face.Location().IsIdentity() is False:
+        return None
+    d = np.array(ad.Direction().Coord())
+    curves, lines = [], []
+    ex = TopExp_Explorer(face, TopAbs_EDGE)
+    while ex.More():
+        edge = TopoDS.Edge_s(ex.Current())
+        ex.Next()
+        poly = BRep_Tool.PolygonOnTriangulation_s(edge, tri, loc)
+        if poly is None or BRep_Tool.Degenerated_s(edge):
+            return None
+        cad = BRepAdaptor_Curve(edge)
+        if cad.GetType() == GeomAbs_Line:
+            if np.linalg.norm(np.cross(np.array(cad.Line().Direction().Coord()), d)) > 1e-12 or poly.NbNodes() != 2:
+                return None  # a straight edge across the rulings, or one divided (its inner nodes are the mate's too)
+            lines.append({poly.Node(1) - 1, poly.Node(2) - 1})
+            continue
+        if not poly.HasParameters():
+            return None
+        idx = np.array([poly.Node(i) for i in range(1, poly.NbNodes() + 1)], np.int64) - 1
+        par = np.array([poly.Parameter(i) for i in range(1, poly.NbNodes() + 1)], float)
+        curves.append((idx, par, cad))
+    if len(curves) != 2 or len(curves[0][0]) != len(curves[1][0]) or len(curves[0][0]) < 2:
+        return None
+    nn = tri.NbNodes()
+    P = np.array([tri.Node(i).Coord() for i in range(1, nn + 1)], float).reshape(nn, 3)
+    (a, pa, cad), (b, _, _) = curves
+    if np.linalg.norm(P[b[0]] - P[a[0]] - np.dot(P[b[0]] - P[a[0]], d) * d) > _STRIP_MATCH_MM:
+        b = b[::-1]
+    off = P[b] - P[a]
+    h = off @ d
+    if np.abs(off - np.outer(h, d)).max() > _STRIP_MATCH_MM or np.abs(h - h[0]).max() > _STRIP_MATCH_MM:
+        return None
+    if len(np.unique(np.concatenate([a, b]))) != 2 * len(a) or \
+            sorted(map(sorted, lines)) != sorted([sorted({a[0], b[0]}), sorted({a[-1], b[-1]})]):
+        return None  # the boundary: the two curve edges, each node once, joined at their ends by the straight edges
+    tris = np.concatenate([np.column_stack([a[:-1], a[1:], b[1:]]), np.column_stack([a[:-1], b[1:], b[:-1]])])
+    # orientation: that of BRepMesh's triangles of the same face (their area-weighted normals agree)
+    own = np.array([tri.Triangle(i).Get() for i in range(1, tri.NbTriangles() + 1)], np.int64).reshape(-1, 3) - 1
+    normal = lambda t: np.cross(P[t[:, 1]] - P[t[:, 0]], P[t[:, 2]] - P[t[:, 0]]).sum(axis=0)
+    if np.dot(normal(own), normal(tris)) < 0:
+        tris = tris[:, [0, 2, 1]]
+    # the chord's distance from the curve edge at 1/4, 1/2, 3/4 of every interval
+    fr = np.array([0.25, 0.5, 0.75])
+    t = (pa[:-1, None] + fr[None, :] * np.diff(pa)[:, None]).ravel()
+    Q = np.array([cad.Value(float(x)).Coord() for x in t]).reshape(-1, 3, 3)
+    A, B = P[a[:-1]][:, None, :], P[a[1:]][:, None, :]
+    AB = B - A
+    s = np.clip(np.einsum("ijk,ijk->ij", Q - A, AB) / np.maximum(np.einsum("ijk,ijk->ij", AB, AB), 1e-300), 0.0, 1.0)
+    dev = float(np.linalg.norm(Q - (A + s[:, :, None] * AB), axis=2).max())
+    return tris, dev
+
+
+def _strips(shape) -> dict:
+    """{face index (explorer order): :func:`_strip` of that face} over the faces of a meshed shape that are prism
+    sides."""
+    out = {}
+    ex = TopExp_Explorer(shape, TopAbs_FACE)
+    k = 0
+    while ex.More():
+        face = TopoDS.Face_s(ex.Current())
+        ex.Next()
+        tri = BRep_Tool.Triangulation_s(face, TopLoc_Location())
+        if tri is not None:
+            st = _strip(face, tri)
+            if st is not None:
+                out[k] = st
+        k += 1
+    return out
+
+
+def refine_faces(shape, chord_tol, angular_tol, parallel, chord_limit, keep=()) -> float:
     """Mesh again only the faces of a meshed shape whose achieved deflection exceeds `chord_limit`, with
     the surface deflection controlled on them although they are analytic (OCCT controls it on free-form
     faces only: a cone between two differently divided circles misses the request several times over)
@@ -153,18 +244,21 @@ def refine_faces(shape, chord_tol, angular_tol, parallel, chord_limit) -> float:
     takes it on (its deflection measured: :func:`_apex_deflection`).  Returns
     the largest achieved deflection."""
     ex = TopExp_Explorer(shape, TopAbs_FACE)
+    k = 0
     while ex.More():
         face = TopoDS.Face_s(ex.Current())
-        if BRep_Tool.Triangulation_s(face, TopLoc_Location()).Deflection() > chord_limit and not _has_apex(face):
+        if k not in keep and BRep_Tool.Triangulation_s(face, TopLoc_Location()).Deflection() > chord_limit \
+                and not _has_apex(face):
             BRepTools.Clean_s(face)
         ex.Next()
+        k += 1
     prm = IMeshTools_Parameters()
     prm.Deflection, prm.Angle, prm.Relative, prm.InParallel = chord_tol, angular_tol, False, parallel
     prm.EnableControlSurfaceDeflectionAllSurfaces = True
     prm.MinSize = chord_limit
     if not BRepMesh_IncrementalMesh(shape, prm).IsDone():
         raise RuntimeError("BRepMesh failed")
-    return _worst_deflection(shape, chord_limit)
+    return _worst_deflection(shape, chord_limit, _strips(shape) if keep else None)
 
 
 def _has_apex(face) -> bool:
@@ -224,23 +318,28 @@ def _apex_deflection(face) -> float | None:
     return float(np.abs((rho - (cone.RefRadius() + h * np.tan(a))) * np.cos(a)).max())
 
 
-def _worst_deflection(shape, chord_limit: float | None = None) -> float:
+def _worst_deflection(shape, chord_limit: float | None = None, strips=None) -> float:
     """The largest achieved deflection of a meshed shape: OCCT's own per face, except (when a `chord_limit`
     is given: the meshing of the files) on a cone's or a sphere's face with a degenerate edge, where OCCT's
     estimate is unreliable: measured there (:func:`_apex_deflection`)."""
     worst = 0.0
     ex = TopExp_Explorer(shape, TopAbs_FACE)
+    k = 0
     while ex.More():
         face = TopoDS.Face_s(ex.Current())
         tri = BRep_Tool.Triangulation_s(face, TopLoc_Location())
         if tri is None:
             raise RuntimeError("a face has no triangulation")
-        d = float(tri.Deflection())
-        if chord_limit is not None and _has_apex(face):
-            measured = _apex_deflection(face)
-            d = d if measured is None else measured
+        if strips and k in strips:
+            d = strips[k][1]
+        else:
+            d = float(tri.Deflection())
+            if chord_limit is not None and _has_apex(face):
+                measured = _apex_deflection(face)
+                d = d if measured is None else measured
         worst = max(worst, d)
         ex.Next()
+        k += 1
     return worst
 
 
@@ -268,19 +367,29 @@ def triangulate(
         raise ValueError(f"chord_tol = {chord_tol!r}, angular_tol = {angular_tol!r}: must be > 0")
     shape = occ_shape(solid)
     request = chord_tol
-    achieved = mesh_shape(shape, request, angular_tol, parallel, chord_limit)
+
+    def meshed(request):
+        achieved = mesh_shape(shape, request, angular_tol, parallel, chord_limit)
+        strips = _strips(shape) if _ruled_only(shape) else {}
+        return (_worst_deflection(shape, chord_limit, strips) if strips else achieved), strips
+
+    achieved, strips = meshed(request)
     if achieved > chord_limit:
-        achieved = refine_faces(shape, request, angular_tol, parallel, chord_limit)
+        refine_faces(shape, request, angular_tol, parallel, chord_limit, keep=strips)
+        strips = _strips(shape) if strips else {}
+        achieved = _worst_deflection(shape, chord_limit, strips)
     for _ in range(4):
         if achieved <= chord_limit:
             break
         request *= 0.5
-        achieved = mesh_shape(shape, request, angular_tol, parallel, chord_limit)
+        achieved, strips = meshed(request)
     verts, tris = [], []
     offset = 0
     ex = TopExp_Explorer(shape, TopAbs_FACE)
+    k = -1
     while ex.More():
         face = TopoDS.Face_s(ex.Current())
+        k += 1
         loc = TopLoc_Location()
         tri = BRep_Tool.Triangulation_s(face, loc)
         ex.Next()
@@ -291,7 +400,10 @@ def triangulate(
             t = loc.Transformation()
             R = np.array([[t.Value(r, c) for c in (1, 2, 3)] for r in (1, 2, 3)])
             pts = pts @ R.T + np.array([t.Value(r, 4) for r in (1, 2, 3)])
-        ids = np.array([triangle(i).Get() for i in range(1, nt + 1)], np.int64).reshape(nt, 3) - 1
+        if k in strips:
+            ids = strips[k][0]
+        else:
+            ids = np.array([triangle(i).Get() for i in range(1, nt + 1)], np.int64).reshape(nt, 3) - 1
         if face.Orientation() == TopAbs_REVERSED:
             ids = ids[:, [0, 2, 1]]
         verts.append(pts)
