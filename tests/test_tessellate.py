@@ -203,8 +203,10 @@ def _spline_prism():
     t = np.linspace(0.0, 2 * math.pi, 25)[:-1]
     r = 30.0 + 4.0 * np.cos(3 * t) + 1.5 * np.sin(7 * t)
     pts = [(float(a), float(b)) for a, b in zip(r * np.cos(t), r * np.sin(t))]
-    return cq.Workplane("XY").spline(pts, periodic=True).close().extrude(12.0).faces(">Z").workplane() \
-        .hole(10.0).val()
+    wp = cq.Workplane("XY").moveTo(*pts[0])
+    for k in range(0, 24, 6):  # four spline edges, four side faces
+        wp = wp.spline((pts + pts[:1])[k + 1:k + 7], includeCurrent=True)
+    return wp.close().extrude(12.0).faces(">Z").workplane().hole(10.0).val()
 
 
 def _side_faces(shape):
@@ -264,7 +266,7 @@ def test_prism_sides_are_strips_within_the_chord_they_report():
     z = v[f][:, :, 2]
     side = ((z.max(axis=1) - z.min(axis=1)) > 1.0) & (np.linalg.norm(v[f].mean(axis=1)[:, :2], axis=1) > 8.0)
     n_side = int(side.sum())
-    chords = sum(len(s[0]) for s in strips.values())
+    chords = sum(len(s[1]) for s in strips.values())
     assert n_side == chords
     B = np.array([(1 / 3, 1 / 3, 1 / 3), (0.5, 0.5, 0.0), (0.25, 0.5, 0.25), (0.1, 0.45, 0.45)])
     X = np.einsum("bk,tkd->tbd", B, v[f[side]]).reshape(-1, 3)[::5]
@@ -282,3 +284,37 @@ def test_a_filleted_union_falls_back_to_brepmesh_where_no_strip_fits():
     v, f, d = T.triangulate(solid, parallel=False)
     _closed_and_clean_in_float32(v, f)
     assert d <= MESH_CHORD_LIMIT_MM
+
+
+def test_a_side_face_no_strip_fits_sends_the_whole_prism_to_brepmesh(monkeypatch):
+    """A radial hole through the spline prism's side: that face has the hole's edges too, no strip fits it, so the
+    sides are not meshed apart (the whole prism is meshed by BRepMesh, the other sides then read as strips from their
+    own triangulations); the mesh is closed, clean and outward."""
+    import trimesh
+
+    hole = cq.Workplane("YZ").workplane(offset=10.0).center(0.0, 6.0).circle(2.0).extrude(40.0).val()
+    solid = cq.Workplane().add(_spline_prism()).cut(hole).val()
+    apart = []
+    real = T._mesh_sides_apart
+    monkeypatch.setattr(T, "_mesh_sides_apart", lambda *a: apart.append(real(*a)) or apart[-1])
+    v, f, d = T.triangulate(solid, parallel=False)
+    assert apart == [None]
+    _closed_and_clean_in_float32(v, f)
+    mesh = trimesh.Trimesh(v, f, process=False)
+    assert d <= MESH_CHORD_LIMIT_MM and mesh.is_winding_consistent
+    assert 0 < mesh.volume and abs(mesh.volume - solid.Volume()) <= d * solid.Area()
+    assert len(T._strips(T.occ_shape(solid))) >= len(_side_faces(T.occ_shape(solid))) - 2
+
+
+def test_prism_sides_meshed_apart_equal_the_strips_of_a_whole_pass():
+    """The sides meshed apart (on the nodes the caps gave their edges) are the strips a whole BRepMesh pass gives, node
+    for node: the same edges' discretisation either way."""
+    solid = _spline_prism()
+    shape = T.occ_shape(solid)
+    T.mesh_shape(shape, 0.005, 0.1, False, MESH_CHORD_LIMIT_MM)
+    whole = T._strips(shape)
+    strips, _ = T._mesh_sides_apart(shape, 0.005, 0.1, False)
+    assert sorted(strips) == sorted(whole)
+    for k in strips:
+        assert np.array_equal(strips[k][0], whole[k][0]) and np.array_equal(strips[k][1], whole[k][1])
+        assert strips[k][2] == whole[k][2]

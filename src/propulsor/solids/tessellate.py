@@ -16,7 +16,7 @@ from OCP.IMeshTools import IMeshTools_Parameters
 from OCP.BRepMesh import BRepMesh_IncrementalMesh
 from OCP.BRepTools import BRepTools
 from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE, TopAbs_REVERSED
-from OCP.TopExp import TopExp_Explorer
+from OCP.TopExp import TopExp, TopExp_Explorer
 from OCP.TopLoc import TopLoc_Location
 from OCP.TopoDS import TopoDS
 from scipy.sparse import coo_matrix
@@ -147,22 +147,23 @@ def mesh_shape(shape, chord_tol, angular_tol, parallel, chord_limit: float | Non
 _STRIP_MATCH_MM = 1e-7
 
 
-def _strip(face, tri) -> tuple[np.ndarray, float] | None:
+def _strip(face, polygon) -> tuple[np.ndarray, np.ndarray, float] | None:
     """The triangles of a prism's side face (a linear extrusion of a curve bounded by two copies of the curve's edge
     and two straight edges along the extrusion) as strips between its two curve edges' nodes, node i of the one
     under node i of the other, and their largest distance from the face (mm); None for any other face.
+    ``polygon(edge)``: (nodes (n, 3), their parameters on the edge) of an edge's discretisation (the face's own
+    triangulation's, or a neighbour's), None if it has none.
 
     BRepMesh triangulates such a face without interior nodes, but its diagonals join nodes that are not above one
     another: a triangle then cuts across the curve (0.0188 mm from the face of a gear's flank at a request of
     0.005 mm), and the face is meshed again with interior nodes (half as many triangles more).  A strip between
     matching nodes lies in the plane of a chord and the extrusion's direction, which holds the face's rulings: its
     distance from the face is the chord's from the curve, measured here at a quarter, half and three quarters of
-    every chord's parameter interval.  The strips use the face's boundary nodes only (shared with its neighbours,
-    so the mesh stays closed); the interior nodes BRepMesh put in are left out.  Returns (triangles (m, 3): indices into the face triangulation's nodes, from 0,
-    oriented as the face's own triangles), deflection)."""
-    loc = TopLoc_Location()
+    every chord's parameter interval.  The strips use the nodes of the face's edges only, which its neighbours
+    share, so the mesh stays closed.  Returns (nodes (2n, 3), triangles (m, 3) into them, oriented as the surface's
+    own parameters (as a face triangulation's are), deflection)."""
     ad = BRepAdaptor_Surface(face)
-    if ad.GetType() != GeomAbs_SurfaceOfExtrusion or face.Location().IsIdentity() is False:
+    if ad.GetType() != GeomAbs_SurfaceOfExtrusion or not face.Location().IsIdentity():
         return None
     d = np.array(ad.Direction().Coord())
     curves, lines = [], []
@@ -170,54 +171,84 @@ def _strip(face, tri) -> tuple[np.ndarray, float] | None:
     while ex.More():
         edge = TopoDS.Edge_s(ex.Current())
         ex.Next()
-        poly = BRep_Tool.PolygonOnTriangulation_s(edge, tri, loc)
-        if poly is None or BRep_Tool.Degenerated_s(edge):
+        if BRep_Tool.Degenerated_s(edge):
             return None
         cad = BRepAdaptor_Curve(edge)
         if cad.GetType() == GeomAbs_Line:
-            if np.linalg.norm(np.cross(np.array(cad.Line().Direction().Coord()), d)) > 1e-12 or poly.NbNodes() != 2:
-                return None  # a straight edge across the rulings, or one divided (its inner nodes are the mate's too)
-            lines.append({poly.Node(1) - 1, poly.Node(2) - 1})
+            if np.linalg.norm(np.cross(np.array(cad.Line().Direction().Coord()), d)) > 1e-12:
+                return None  # a straight edge across the rulings
+            lines.append(np.array([cad.Value(cad.FirstParameter()).Coord(), cad.Value(cad.LastParameter()).Coord()]))
             continue
-        if not poly.HasParameters():
+        got = polygon(edge)
+        if got is None:
             return None
-        idx = np.array([poly.Node(i) for i in range(1, poly.NbNodes() + 1)], np.int64) - 1
-        par = np.array([poly.Parameter(i) for i in range(1, poly.NbNodes() + 1)], float)
-        curves.append((idx, par, cad))
-    if len(curves) != 2 or len(curves[0][0]) != len(curves[1][0]) or len(curves[0][0]) < 2:
+        curves.append((got[0], got[1], cad, edge))
+    if len(curves) != 2 or len(lines) != 2 or len(curves[0][0]) != len(curves[1][0]) or len(curves[0][0]) < 2:
         return None
-    nn = tri.NbNodes()
-    P = np.array([tri.Node(i).Coord() for i in range(1, nn + 1)], float).reshape(nn, 3)
-    (a, pa, cad), (b, _, _) = curves
-    if np.linalg.norm(P[b[0]] - P[a[0]] - np.dot(P[b[0]] - P[a[0]], d) * d) > _STRIP_MATCH_MM:
-        b = b[::-1]
-    off = P[b] - P[a]
+    (A, pa, cad, edge), (B, _, _, _) = curves
+    if np.linalg.norm(B[0] - A[0] - np.dot(B[0] - A[0], d) * d) > _STRIP_MATCH_MM:
+        B = B[::-1]
+    off = B - A
     h = off @ d
     if np.abs(off - np.outer(h, d)).max() > _STRIP_MATCH_MM or np.abs(h - h[0]).max() > _STRIP_MATCH_MM:
         return None
-    if len(np.unique(np.concatenate([a, b]))) != 2 * len(a) or \
-            sorted(map(sorted, lines)) != sorted([sorted({a[0], b[0]}), sorted({a[-1], b[-1]})]):
-        return None  # the boundary: the two curve edges, each node once, joined at their ends by the straight edges
-    tris = np.concatenate([np.column_stack([a[:-1], a[1:], b[1:]]), np.column_stack([a[:-1], b[1:], b[:-1]])])
-    # orientation: that of BRepMesh's triangles of the same face (their area-weighted normals agree)
-    own = np.array([tri.Triangle(i).Get() for i in range(1, tri.NbTriangles() + 1)], np.int64).reshape(-1, 3) - 1
-    normal = lambda t: np.cross(P[t[:, 1]] - P[t[:, 0]], P[t[:, 2]] - P[t[:, 0]]).sum(axis=0)
-    if np.dot(normal(own), normal(tris)) < 0:
+    # the straight edges join the curve edges' ends, and nothing else (a divided one: its inner nodes are the mate's)
+    ends = sorted([sorted(map(tuple, np.round(q, 6))) for q in ([A[0], B[0]], [A[-1], B[-1]])])
+    if ends != sorted([sorted(map(tuple, np.round(q, 6))) for q in lines]):
+        return None
+    n = len(A)
+    P = np.vstack([A, B])
+    i = np.arange(n - 1)
+    tris = np.concatenate([np.column_stack([i, i + 1, n + i + 1]), np.column_stack([i, n + i + 1, n + i])])
+    # orientation: along the face's normal (BRepGProp_Face: reversed with the face) at every chord's middle, turned
+    # back for a reversed face (the caller turns a reversed face's triangles)
+    from OCP.BRepAdaptor import BRepAdaptor_Curve2d
+    from OCP.BRepGProp import BRepGProp_Face
+    from OCP.gp import gp_Pnt, gp_Vec
+
+    gf, c2 = BRepGProp_Face(face), BRepAdaptor_Curve2d(edge, face)
+    nrm = []
+    for t in 0.5 * (pa[:-1] + pa[1:]):
+        uv, pnt, vec = c2.Value(float(t)), gp_Pnt(), gp_Vec()
+        gf.Normal(uv.X(), uv.Y(), pnt, vec)
+        nrm.append(vec.Coord())
+    own = np.cross(P[tris[:n - 1, 1]] - P[tris[:n - 1, 0]], P[tris[:n - 1, 2]] - P[tris[:n - 1, 0]])
+    agree = float(np.einsum("ij,ij->i", own, np.array(nrm)).sum())
+    if (agree < 0) != (face.Orientation() == TopAbs_REVERSED):
         tris = tris[:, [0, 2, 1]]
     # the chord's distance from the curve edge at 1/4, 1/2, 3/4 of every interval
     fr = np.array([0.25, 0.5, 0.75])
     t = (pa[:-1, None] + fr[None, :] * np.diff(pa)[:, None]).ravel()
     Q = np.array([cad.Value(float(x)).Coord() for x in t]).reshape(-1, 3, 3)
-    A, B = P[a[:-1]][:, None, :], P[a[1:]][:, None, :]
-    AB = B - A
-    s = np.clip(np.einsum("ijk,ijk->ij", Q - A, AB) / np.maximum(np.einsum("ijk,ijk->ij", AB, AB), 1e-300), 0.0, 1.0)
-    dev = float(np.linalg.norm(Q - (A + s[:, :, None] * AB), axis=2).max())
-    return tris, dev
+    a0, a1 = A[:-1][:, None, :], A[1:][:, None, :]
+    ab = a1 - a0
+    s = np.clip(np.einsum("ijk,ijk->ij", Q - a0, ab) / np.maximum(np.einsum("ijk,ijk->ij", ab, ab), 1e-300), 0.0, 1.0)
+    dev = float(np.linalg.norm(Q - (a0 + s[:, :, None] * ab), axis=2).max())
+    return P, tris, dev
+
+
+def _polygon_on(tri, loc=None):
+    """``polygon(edge)`` of :func:`_strip` read from the triangulation ``tri``."""
+    loc = TopLoc_Location() if loc is None else loc
+    nodes = {}
+
+    def polygon(edge):
+        poly = BRep_Tool.PolygonOnTriangulation_s(edge, tri, loc)
+        if poly is None or not poly.HasParameters():
+            return None
+        if not nodes:
+            nn = tri.NbNodes()
+            nodes["P"] = np.array([tri.Node(i).Coord() for i in range(1, nn + 1)], float).reshape(nn, 3)
+        idx = np.array([poly.Node(i) for i in range(1, poly.NbNodes() + 1)], np.int64) - 1
+        par = np.array([poly.Parameter(i) for i in range(1, poly.NbNodes() + 1)], float)
+        return nodes["P"][idx], par
+
+    return polygon
 
 
 def _strips(shape) -> dict:
     """{face index (explorer order): :func:`_strip` of that face} over the faces of a meshed shape that are prism
-    sides."""
+    sides (each read from its own triangulation)."""
     out = {}
     ex = TopExp_Explorer(shape, TopAbs_FACE)
     k = 0
@@ -226,11 +257,73 @@ def _strips(shape) -> dict:
         ex.Next()
         tri = BRep_Tool.Triangulation_s(face, TopLoc_Location())
         if tri is not None:
-            st = _strip(face, tri)
+            st = _strip(face, _polygon_on(tri))
             if st is not None:
                 out[k] = st
         k += 1
     return out
+
+
+def _mesh_sides_apart(shape, request, angular_tol, parallel):
+    """Every face but a prism's sides meshed by BRepMesh (as :func:`mesh_shape` meshes a ruled shape), then each side
+    as strips (:func:`_strip`) on the nodes its edges got from the faces beside it: BRepMesh's own pass over the
+    sides (about half its time on a gear) is not made.  Returns ({face index: strip}, the compound of the other
+    faces), or None (the shape meshed by nobody yet) where a side's edge has no neighbour's nodes or no strip fits:
+    the caller meshes the whole shape then."""
+    from OCP.BRep import BRep_Builder
+    from OCP.TopoDS import TopoDS_Compound
+    from OCP.TopTools import TopTools_IndexedDataMapOfShapeListOfShape, TopTools_IndexedMapOfShape
+
+    faces, sides = [], {}
+    ex = TopExp_Explorer(shape, TopAbs_FACE)
+    while ex.More():
+        face = TopoDS.Face_s(ex.Current())
+        ex.Next()
+        if BRepAdaptor_Surface(face).GetType() == GeomAbs_SurfaceOfExtrusion and face.Location().IsIdentity():
+            sides[len(faces)] = face
+        faces.append(face)
+    if not sides:
+        return None
+    BRepTools.Clean_s(shape)
+    rest = TopoDS_Compound()
+    builder = BRep_Builder()
+    builder.MakeCompound(rest)
+    for k, face in enumerate(faces):
+        if k not in sides:
+            builder.Add(rest, face)
+    prm = IMeshTools_Parameters()
+    prm.Deflection, prm.Angle, prm.Relative, prm.InParallel = request, angular_tol, False, parallel
+    prm.InternalVerticesMode = False
+    prm.ControlSurfaceDeflection = False
+    _premesh_cylinders(rest, prm)
+    if not BRepMesh_IncrementalMesh(rest, prm).IsDone():
+        raise RuntimeError("BRepMesh failed")
+    beside = TopTools_IndexedDataMapOfShapeListOfShape()
+    TopExp.MapShapesAndAncestors_s(shape, TopAbs_EDGE, TopAbs_FACE, beside)
+    index = TopTools_IndexedMapOfShape()
+    TopExp.MapShapes_s(shape, TopAbs_FACE, index)
+    on = {}
+
+    def polygon(edge):
+        # the faces beside the edge that have a triangulation: not the sides (cleaned, not meshed)
+        for f in beside.FindFromKey(edge):
+            i = index.FindIndex(f)
+            if i not in on:
+                tri = BRep_Tool.Triangulation_s(TopoDS.Face_s(f), TopLoc_Location())
+                on[i] = None if tri is None else _polygon_on(tri)
+            got = None if on[i] is None else on[i](edge)
+            if got is not None:
+                return got
+        return None
+
+    strips = {}
+    for k, face in sides.items():
+        st = _strip(face, polygon)
+        if st is None:
+            BRepTools.Clean_s(shape)
+            return None
+        strips[k] = st
+    return strips, rest
 
 
 def refine_faces(shape, chord_tol, angular_tol, parallel, chord_limit, keep=()) -> float:
@@ -321,18 +414,19 @@ def _apex_deflection(face) -> float | None:
 def _worst_deflection(shape, chord_limit: float | None = None, strips=None) -> float:
     """The largest achieved deflection of a meshed shape: OCCT's own per face, except (when a `chord_limit`
     is given: the meshing of the files) on a cone's or a sphere's face with a degenerate edge, where OCCT's
-    estimate is unreliable: measured there (:func:`_apex_deflection`)."""
+    estimate is unreliable: measured there (:func:`_apex_deflection`); on a prism's side meshed as strips
+    (``strips``, by face index), the strips' own (:func:`_strip`)."""
     worst = 0.0
     ex = TopExp_Explorer(shape, TopAbs_FACE)
     k = 0
     while ex.More():
         face = TopoDS.Face_s(ex.Current())
-        tri = BRep_Tool.Triangulation_s(face, TopLoc_Location())
-        if tri is None:
-            raise RuntimeError("a face has no triangulation")
         if strips and k in strips:
-            d = strips[k][1]
+            d = strips[k][2]
         else:
+            tri = BRep_Tool.Triangulation_s(face, TopLoc_Location())
+            if tri is None:
+                raise RuntimeError("a face has no triangulation")
             d = float(tri.Deflection())
             if chord_limit is not None and _has_apex(face):
                 measured = _apex_deflection(face)
@@ -368,21 +462,32 @@ def triangulate(
     shape = occ_shape(solid)
     request = chord_tol
 
-    def meshed(request):
-        achieved = mesh_shape(shape, request, angular_tol, parallel, chord_limit)
-        strips = _strips(shape) if _ruled_only(shape) else {}
-        return (_worst_deflection(shape, chord_limit, strips) if strips else achieved), strips
+    ruled = _ruled_only(shape)
 
-    achieved, strips = meshed(request)
+    def meshed(request):
+        """(achieved deflection, strips, the other faces meshed apart or None)"""
+        if ruled:
+            apart = _mesh_sides_apart(shape, request, angular_tol, parallel)
+            if apart is not None:
+                strips, rest = apart
+                return _worst_deflection(shape, chord_limit, strips), strips, rest
+        achieved = mesh_shape(shape, request, angular_tol, parallel, chord_limit)
+        strips = _strips(shape) if ruled else {}
+        return (_worst_deflection(shape, chord_limit, strips) if strips else achieved), strips, None
+
+    achieved, strips, rest = meshed(request)
     if achieved > chord_limit:
-        refine_faces(shape, request, angular_tol, parallel, chord_limit, keep=strips)
-        strips = _strips(shape) if strips else {}
+        if rest is not None:  # the sides' edges keep their nodes: the strips hold
+            refine_faces(rest, request, angular_tol, parallel, chord_limit)
+        else:
+            refine_faces(shape, request, angular_tol, parallel, chord_limit, keep=strips)
+            strips = _strips(shape) if strips else {}
         achieved = _worst_deflection(shape, chord_limit, strips)
     for _ in range(4):
         if achieved <= chord_limit:
             break
         request *= 0.5
-        achieved, strips = meshed(request)
+        achieved, strips, rest = meshed(request)
     verts, tris = [], []
     offset = 0
     ex = TopExp_Explorer(shape, TopAbs_FACE)
@@ -390,25 +495,25 @@ def triangulate(
     while ex.More():
         face = TopoDS.Face_s(ex.Current())
         k += 1
-        loc = TopLoc_Location()
-        tri = BRep_Tool.Triangulation_s(face, loc)
         ex.Next()
-        nn, nt = tri.NbNodes(), tri.NbTriangles()
-        node, triangle = tri.Node, tri.Triangle
-        pts = np.array([node(i).Coord() for i in range(1, nn + 1)], float).reshape(nn, 3)
-        if not loc.IsIdentity():
-            t = loc.Transformation()
-            R = np.array([[t.Value(r, c) for c in (1, 2, 3)] for r in (1, 2, 3)])
-            pts = pts @ R.T + np.array([t.Value(r, 4) for r in (1, 2, 3)])
-        if k in strips:
-            ids = strips[k][0]
+        if k in strips:  # a prism's side: its strips, on its edges' nodes (:func:`_strip`)
+            pts, ids = strips[k][0], strips[k][1]
         else:
+            loc = TopLoc_Location()
+            tri = BRep_Tool.Triangulation_s(face, loc)
+            nn, nt = tri.NbNodes(), tri.NbTriangles()
+            node, triangle = tri.Node, tri.Triangle
+            pts = np.array([node(i).Coord() for i in range(1, nn + 1)], float).reshape(nn, 3)
+            if not loc.IsIdentity():
+                t = loc.Transformation()
+                R = np.array([[t.Value(r, c) for c in (1, 2, 3)] for r in (1, 2, 3)])
+                pts = pts @ R.T + np.array([t.Value(r, 4) for r in (1, 2, 3)])
             ids = np.array([triangle(i).Get() for i in range(1, nt + 1)], np.int64).reshape(nt, 3) - 1
         if face.Orientation() == TopAbs_REVERSED:
             ids = ids[:, [0, 2, 1]]
         verts.append(pts)
         tris.append(ids + offset)
-        offset += nn
+        offset += len(pts)
     if not verts:
         raise ValueError("shape has no faces")
     v, f = merge_close_vertices(np.vstack(verts), np.vstack(tris))
