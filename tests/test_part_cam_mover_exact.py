@@ -66,7 +66,7 @@ def test_plan_of_the_linear_law_file_closed_forms():
     H = pl.motion.H_derivs(np.array([0.0, 0.5 * S, S]))[0]
     assert H[0] == pytest.approx(110.0, abs=1e-9) and H[2] > H[1] > H[0]
     assert pl.R_convex_min == pytest.approx(87.14179804809561, rel=1e-9)
-    assert pl.R_convex_where == "working wall at φ = 284.30°"
+    assert pl.R_convex_where == "working wall at φ = 75.70°"
     ev = pl.evaluation
     assert ev["H_error_mm"] == pytest.approx(pl.motion.H_error_mm, rel=1e-6) and ev["feasible"] and ev["law"] == "linear"
     assert ev["gamma_max_deg"] == pytest.approx(23.299381568307954, rel=1e-9)
@@ -255,7 +255,7 @@ def test_plan_refuses_a_roller_the_cam_cannot_take():
         "(K = 0.05·φ²)")
     assert _refusal(**LIN, roller_radius_mm=87.5) == (
         "roller_radius_mm = 87.5: must be < the least convex radius of curvature of the cam channel R = 49.46 mm "
-        "(working wall at φ = 314.97°, eq. 16) (K = 0.0093·|φ|)")
+        "(working wall at φ = 45.03°, eq. 16) (K = 0.0093·|φ|)")
     # a convex radius left but under 1 mm is still "must be < R", not "undercut"
     assert _refusal(law="quadratic", k0=0.05, roller_radius_mm=25.5) == (
         "roller_radius_mm = 25.5: must be < the least convex radius of curvature of the cam channel R = 0.5557 mm "
@@ -281,6 +281,11 @@ def test_convex_radius_min_of_a_table():
     # one sample each way: the working wall's own radius, not the smaller outer one elsewhere
     t.K_path = np.array([0.0, 0.01, 0.0, -0.01])
     assert cd._convex_radius_min(t) == (-70.0, "working wall at φ = 10.00°")
+    # a symmetric law's two mirror points, their last bits either way (one CPU's maths or another's): the first named
+    t.K_path = np.array([0.01, 0.01, 0.01, 0.01])
+    for a, b in ((50.0, np.nextafter(50.0, 0.0)), (np.nextafter(50.0, 0.0), 50.0)):
+        t.R_profile = np.array([80.0, a, 90.0, b])
+        assert cd._convex_radius_min(t) == (min(a, b), "working wall at φ = 10.00°")
 
 
 def test_plan_refuses_holes_and_fits_on_both_sides():
@@ -596,7 +601,7 @@ def test_engineering_checks_of_the_linear_law():
     m = [c.message for c in w.checks]
     assert m[0] == "max |H − H_ref| against a DOP853 integration at 1e-13"
     assert m[1] == "largest |γ| over the turn (23.299° in support)"
-    assert m[2] == "least convex radius of the channel walls (working wall at φ = 284.30°) >= 1.5·r"
+    assert m[2] == "least convex radius of the channel walls (working wall at φ = 75.70°) >= 1.5·r"
     assert m[3] == "support 764.3 MPa at P = 5000 N, return 243.4 MPa at 500 N"
     assert m[4] == "σ = Y2 − Y1'·sin φ, no cusp; self-intersecting: False"
     assert m[5] == "shoe arc / hub travel per step (discrete footprints; ours)"

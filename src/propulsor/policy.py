@@ -91,6 +91,10 @@ CURVATURE_JUMP_RMS_RATIO = 10.0
 CURVATURE_JUMP_RMS_MM = 1e-6
 #: x tolerance of the measuring-roller diameter (mm)
 ROLLER_DIAMETER_XTOL_MM = 1e-13
+#: sampled values within this share of the least one are the same least value, and the first in the table's order is
+#: named where it lies (a symmetric law has two mirror points whose last bits differ from one CPU's maths to
+#: another's: named by their bits, a report would say 75.70 deg on one machine and 284.30 deg on the next)
+EXTREME_TIE_REL = 1e-9
 #: two angles (rad) are equal within this (the GOST 19274 rack test alpha = 20 deg)
 ANGLE_EQUAL_TOL_RAD = 1e-12
 ODE_RTOL = 1e-11

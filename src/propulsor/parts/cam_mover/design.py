@@ -66,12 +66,19 @@ def _convex_radius_min(t) -> tuple[float, str]:
     wk = t.K_path > 0
     ok = t.K_path < 0
     cands = []
+
+    def least(values) -> int:
+        """The first sample whose value is the least within ``policy.EXTREME_TIE_REL`` (a symmetric law's two mirror
+        points: the same one named on every machine)."""
+        lo = float(np.min(values))
+        return int(np.flatnonzero(values <= lo + policy.EXTREME_TIE_REL * abs(lo))[0])
+
     if np.any(wk):
-        i = int(np.argmin(np.where(wk, t.R_profile, np.inf)))
-        cands.append((float(t.R_profile[i]), f"working wall at φ = {math.degrees(t.phi[i]):.2f}°"))
+        i = least(np.where(wk, t.R_profile, np.inf))
+        cands.append((float(np.min(t.R_profile[wk])), f"working wall at φ = {math.degrees(t.phi[i]):.2f}°"))
     if np.any(ok):
-        i = int(np.argmin(np.where(ok, t.R_outer, np.inf)))
-        cands.append((float(t.R_outer[i]), f"outer wall at φ = {math.degrees(t.phi[i]):.2f}°"))
+        i = least(np.where(ok, t.R_outer, np.inf))
+        cands.append((float(np.min(t.R_outer[ok])), f"outer wall at φ = {math.degrees(t.phi[i]):.2f}°"))
     if not cands:
         return math.inf, "straight"
     return min(cands)
