@@ -1,0 +1,45 @@
+"""Benchmark (issue 40): the meshing of the files' solids (:func:`propulsor.solids.tessellate.triangulate`).
+
+    .venv/bin/python bench/bench_tessellate.py STEP_FILE [STEP_FILE ...] [--repeat N]
+
+Every solid of each STEP file (a build's ``<part>/<solid>.step``) is read once, then meshed ``--repeat`` times as a
+build meshes it (one thread, as in a forked worker); printed per solid: the least CPU seconds of a meshing
+(``time.process_time``), the triangles and the deflection the mesh reports.  Paired with an older tree: run it again
+with that tree's ``src`` first on ``PYTHONPATH`` (``git worktree add /tmp/wt_old <rev>``).
+
+2026-11-30 (2 cores, the other idle; the seed-002 pair's files of ``make``): before (1b00a34) the driven wheel 2.28
+CPU s, 97 562 triangles, 0.00993 mm (BRepMesh's side faces: 0.0188 mm, meshed again with interior nodes), the
+driver 0.55 s, 26 956, 0.00887 mm; the sides as strips on their own triangulation's edge nodes (0bb9148) 1.81 s,
+29 436, 0.00249 mm and 0.47 s, 9 484, 0.00250 mm; the sides not meshed by BRepMesh at all (3dbf814) 1.00 s and
+0.43 s, the same triangles.
+"""
+
+from __future__ import annotations
+
+import argparse
+import time
+
+
+def main(argv=None) -> int:
+    from propulsor.export.step import read_step_solids
+    from propulsor.solids.tessellate import triangulate
+
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("files", nargs="+")
+    ap.add_argument("--repeat", type=int, default=3)
+    a = ap.parse_args(argv)
+    for path in a.files:
+        for k, solid in enumerate(read_step_solids(path)):
+            best, got = float("inf"), None
+            for _ in range(max(1, a.repeat)):
+                t0 = time.process_time()
+                got = triangulate(solid, parallel=False)
+                best = min(best, time.process_time() - t0)
+            v, f, d = got
+            print(f"{path}[{k}]: {best:.3f} CPU s, {len(f)} triangles, {len(v)} vertices, deflection {d:.5f} mm",
+                  flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
