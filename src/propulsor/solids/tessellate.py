@@ -10,7 +10,8 @@ from __future__ import annotations
 
 import numpy as np
 from OCP.BRep import BRep_Tool
-from OCP.BRepAdaptor import BRepAdaptor_Curve, BRepAdaptor_Surface
+from OCP.BRepAdaptor import BRepAdaptor_Curve, BRepAdaptor_Curve2d, BRepAdaptor_Surface
+from OCP.BRepGProp import BRepGProp_Face
 from OCP.GeomAbs import GeomAbs_Cone, GeomAbs_Cylinder, GeomAbs_Line, GeomAbs_Plane, GeomAbs_Sphere, GeomAbs_SurfaceOfExtrusion
 from OCP.IMeshTools import IMeshTools_Parameters
 from OCP.BRepMesh import BRepMesh_IncrementalMesh
@@ -19,6 +20,7 @@ from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE, TopAbs_REVERSED
 from OCP.TopExp import TopExp, TopExp_Explorer
 from OCP.TopLoc import TopLoc_Location
 from OCP.TopoDS import TopoDS
+from OCP.gp import gp_Pnt, gp_Vec
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
@@ -125,16 +127,25 @@ def _premesh_cylinders(shape, prm) -> None:
             BRepTools.Clean_s(face)
 
 
+def _params(chord_tol, angular_tol, parallel, ruled: bool) -> IMeshTools_Parameters:
+    """BRepMesh's parameters: absolute deflection and angle; a shape of ruled faces only without interior vertices and
+    without the surface deflection control (its strips between the edges' nodes are within the chord)."""
+    prm = IMeshTools_Parameters()
+    prm.Deflection, prm.Angle, prm.Relative, prm.InParallel = chord_tol, angular_tol, False, parallel
+    if ruled:
+        prm.InternalVerticesMode = False
+        prm.ControlSurfaceDeflection = False
+    return prm
+
+
 def mesh_shape(shape, chord_tol, angular_tol, parallel, chord_limit: float | None = None) -> float:
     """Run BRepMesh; return the largest achieved deflection (mm, :func:`_worst_deflection`: measured on a
     face with a degenerate edge when `chord_limit` is given).  A shape of ruled faces only is meshed without
     interior vertices, its cylinder bands first (:func:`_premesh_cylinders`)."""
     BRepTools.Clean_s(shape)
-    prm = IMeshTools_Parameters()
-    prm.Deflection, prm.Angle, prm.Relative, prm.InParallel = chord_tol, angular_tol, False, parallel
-    if _ruled_only(shape):
-        prm.InternalVerticesMode = False
-        prm.ControlSurfaceDeflection = False
+    ruled = _ruled_only(shape)
+    prm = _params(chord_tol, angular_tol, parallel, ruled)
+    if ruled:
         _premesh_cylinders(shape, prm)
     mesher = BRepMesh_IncrementalMesh(shape, prm)
     if not mesher.IsDone():
@@ -193,19 +204,16 @@ def _strip(face, polygon) -> tuple[np.ndarray, np.ndarray, float] | None:
     if np.abs(off - np.outer(h, d)).max() > _STRIP_MATCH_MM or np.abs(h - h[0]).max() > _STRIP_MATCH_MM:
         return None
     # the straight edges join the curve edges' ends, and nothing else (a divided one: its inner nodes are the mate's)
-    ends = sorted([sorted(map(tuple, np.round(q, 6))) for q in ([A[0], B[0]], [A[-1], B[-1]])])
-    if ends != sorted([sorted(map(tuple, np.round(q, 6))) for q in lines]):
-        return None
+    for p, q in ((A[0], B[0]), (A[-1], B[-1])):
+        if not any(min(np.linalg.norm(ln[0] - p) + np.linalg.norm(ln[1] - q),
+                       np.linalg.norm(ln[0] - q) + np.linalg.norm(ln[1] - p)) <= _STRIP_MATCH_MM for ln in lines):
+            return None
     n = len(A)
     P = np.vstack([A, B])
     i = np.arange(n - 1)
     tris = np.concatenate([np.column_stack([i, i + 1, n + i + 1]), np.column_stack([i, n + i + 1, n + i])])
     # orientation: along the face's normal (BRepGProp_Face: reversed with the face) at every chord's middle, turned
     # back for a reversed face (the caller turns a reversed face's triangles)
-    from OCP.BRepAdaptor import BRepAdaptor_Curve2d
-    from OCP.BRepGProp import BRepGProp_Face
-    from OCP.gp import gp_Pnt, gp_Vec
-
     gf, c2 = BRepGProp_Face(face), BRepAdaptor_Curve2d(edge, face)
     nrm = []
     for t in 0.5 * (pa[:-1] + pa[1:]):
@@ -291,10 +299,7 @@ def _mesh_sides_apart(shape, request, angular_tol, parallel):
     for k, face in enumerate(faces):
         if k not in sides:
             builder.Add(rest, face)
-    prm = IMeshTools_Parameters()
-    prm.Deflection, prm.Angle, prm.Relative, prm.InParallel = request, angular_tol, False, parallel
-    prm.InternalVerticesMode = False
-    prm.ControlSurfaceDeflection = False
+    prm = _params(request, angular_tol, parallel, True)
     _premesh_cylinders(rest, prm)
     if not BRepMesh_IncrementalMesh(rest, prm).IsDone():
         raise RuntimeError("BRepMesh failed")
@@ -334,7 +339,8 @@ def refine_faces(shape, chord_tol, angular_tol, parallel, chord_limit, keep=()) 
     discretisation (the neighbours' triangulations share it), so the mesh stays closed.  A face with a
     degenerate edge (a cone's apex, a sphere's pole) is left as it is: the nodes inserted there crowd
     into slivers that fold once the mesh is written in single precision (STL), and the caller's halving
-    takes it on (its deflection measured: :func:`_apex_deflection`).  Returns
+    takes it on (its deflection measured: :func:`_apex_deflection`).  ``keep``: the strips of a prism's sides
+    (:func:`_strips`, by face index), left as they are and counted with their own deflection.  Returns
     the largest achieved deflection."""
     ex = TopExp_Explorer(shape, TopAbs_FACE)
     k = 0
@@ -351,7 +357,7 @@ def refine_faces(shape, chord_tol, angular_tol, parallel, chord_limit, keep=()) 
     prm.MinSize = chord_limit
     if not BRepMesh_IncrementalMesh(shape, prm).IsDone():
         raise RuntimeError("BRepMesh failed")
-    return _worst_deflection(shape, chord_limit, _strips(shape) if keep else None)
+    return _worst_deflection(shape, chord_limit, keep or None)
 
 
 def _has_apex(face) -> bool:
@@ -476,13 +482,12 @@ def triangulate(
         return (_worst_deflection(shape, chord_limit, strips) if strips else achieved), strips, None
 
     achieved, strips, rest = meshed(request)
-    if achieved > chord_limit:
-        if rest is not None:  # the sides' edges keep their nodes: the strips hold
-            refine_faces(rest, request, angular_tol, parallel, chord_limit)
+    if achieved > chord_limit:  # the edges keep their nodes (refine_faces), and so the strips on them hold
+        if rest is not None:
+            achieved = max([refine_faces(rest, request, angular_tol, parallel, chord_limit)]
+                           + [st[2] for st in strips.values()])
         else:
-            refine_faces(shape, request, angular_tol, parallel, chord_limit, keep=strips)
-            strips = _strips(shape) if strips else {}
-        achieved = _worst_deflection(shape, chord_limit, strips)
+            achieved = refine_faces(shape, request, angular_tol, parallel, chord_limit, keep=strips)
     for _ in range(4):
         if achieved <= chord_limit:
             break
