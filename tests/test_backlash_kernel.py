@@ -1,7 +1,7 @@
 """The compiled rotation hits of the backlash search (checks/motion/backlash.py, numba) against the numpy
-formulation they replaced (tests/rot_hits_reference.py): the same first-hit angle, edge and edge parameter
-for every point, bit for bit, on two toothed bodies close to mesh, in both senses, narrow and wide windows;
-and the free rotation built on them."""
+formulation they replaced (tests/rot_hits_reference.py): the same first-hit angle for every point, and
+the same edge and edge parameter for every point that hits, bit for bit, on two toothed bodies close to mesh,
+in both senses, narrow and wide windows; and the free rotation built on them."""
 
 from __future__ import annotations
 
@@ -38,8 +38,11 @@ def test_compiled_rotation_hits_equal_the_reference_bit_for_bit(sign, w):
         lb = drv.boundary_lower_bound(P)
         got = backlash._rot_hits(P, C, drv, sign, w, rho, lb)
         want = ref.rot_hits(P, C, drv, sign, w, rho, lb)
-        for g, r in zip(got, want):
-            assert np.asarray(g).tobytes() == np.asarray(r, dtype=np.asarray(g).dtype).tobytes()
+        assert got[0].tobytes() == np.asarray(want[0], float).tobytes()  # every point's first hit (or inf)
+        hit = np.isfinite(got[0])
+        for g, r in zip(got[1:], want[1:]):  # the edge and its parameter of every hit
+            assert g[hit].tobytes() == np.asarray(r, dtype=g.dtype)[hit].tobytes()
+        assert np.all(got[1][~hit] == -1) and np.all(got[2][~hit] == 0.0)  # none: -1 and 0
         hits += int(np.isfinite(got[0]).sum())
     assert hits > 0 or w < 0.01  # the windows meet teeth
 
