@@ -33,15 +33,15 @@ def _rot_hits(P: np.ndarray, C: np.ndarray, tgt: Outline, sign: float, w: float,
     A point is a candidate when a vertex of tgt lies within its reach (the chord its
     rotation by w sweeps, plus half the longest edge); its hits are sought on the two
     edges at every vertex within that reach whose distance from C is within an edge's length of the point's
-    (compiled: :func:`_rot_pairs`, :func:`_rot_reduce`; the numpy formulation it reproduces bit for bit, every
+    (compiled: :func:`_ring_pairs`, :func:`_rot_reduce`; the numpy formulation it reproduces bit for bit, every
     delta and the edge and t of every hit, is ``tests/rot_hits_reference.py``).
     """
     g = grid_of(tgt)
     chord_factor = 2.0 * math.sin(0.5 * min(w, math.pi))
-    offs, seg, Y, X, T, ok = _rot_pairs(np.ascontiguousarray(P, np.float64), float(C[0]), float(C[1]), tgt.points,
-                                        g.seg_b, tgt.prev, tgt.half_len, g.origin[0], g.origin[1], g.h, g.nx, g.ny,
-                                        g.start, g.items, g.near, float(sign), np.ascontiguousarray(rho, np.float64),
-                                        np.ascontiguousarray(lb, np.float64), chord_factor)
+    offs, seg, Y, X, T, ok = _ring_pairs(np.ascontiguousarray(P, np.float64), float(C[0]), float(C[1]), tgt.points,
+                                         g.seg_b, tgt.prev, tgt.half_len, g.origin[0], g.origin[1], g.h, g.nx, g.ny,
+                                         g.start, g.items, g.near, float(sign), np.ascontiguousarray(rho, np.float64),
+                                         np.ascontiguousarray(lb, np.float64), chord_factor)
     # numpy's own arctan2 (not the C library's, which differs in the last bit on about 7 % of arguments)
     ang = sign * np.arctan2(Y, X)
     return _rot_reduce(offs, seg, ang, T, ok, float(w))
@@ -50,6 +50,102 @@ def _rot_hits(P: np.ndarray, C: np.ndarray, tgt: Outline, sign: float, w: float,
 @njit(cache=True)
 def _rot_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, near_cell, sign, rho, lb,
                chord_factor):
+    """The (point, edge) pairs of the rotation hits, point by point: the edges starting at each vertex within the
+    point's reach (ascending), then the edges ending there; for each pair and both roots of the circle-edge
+    intersection: the angle's sine and cosine terms (Y, X), the edge parameter (clipped) and whether the root is
+    an entering hit on the edge (its angle is checked against the window afterwards).  A point whose reach is at
+    most a cell and whose cell has no vertex within one cell (``near_cell``, :class:`.nearest.VertexGrid`) has none
+    within its reach: skipped without a search.  The as-built contact search's kernel (:mod:`.contact_kernels`: a
+    window of a fraction of a milliradian, a few vertices each, nearly all of them hitting); the backlash search's
+    windows of up to a pitch take :func:`_ring_pairs`."""
+    m = len(P)
+    offs = np.zeros(m + 1, np.int64)
+    cap = 4096
+    seg = np.empty(cap, np.int64)
+    near = np.empty(min(len(V), 256), np.int64)  # grown on demand (an outline's size each call costs a page mapping)
+    n_pairs = 0
+    for i in range(m):
+        offs[i] = n_pairs
+        if not lb[i] <= chord_factor * rho[i]:
+            continue
+        reach = chord_factor * rho[i] + half_len + 1e-12
+        px, py = P[i, 0], P[i, 1]
+        if reach <= h:
+            c0 = min(max(int(math.floor((px - ox) / h)), 0), nx - 1) * ny + min(max(int(math.floor((py - oy) / h)), 0), ny - 1)
+            if not near_cell[c0]:
+                continue
+        ix0, ix1, iy0, iy1 = disc_cells(px, py, reach, ox, oy, h, nx, ny)
+        n = 0
+        r2reach = reach * reach
+        for gx in range(ix0, ix1 + 1):
+            for gy in range(iy0, iy1 + 1):
+                c = gx * ny + gy
+                for kk in range(start[c], start[c + 1]):
+                    v = items[kk]
+                    ex, ey = px - V[v, 0], py - V[v, 1]
+                    if ex * ex + ey * ey <= r2reach:
+                        if n == len(near):
+                            bigger = np.empty(2 * n, np.int64)
+                            bigger[:n] = near
+                            near = bigger
+                        near[n] = v
+                        n += 1
+        if n == 0:
+            continue
+        if n <= 16:
+            for a in range(1, n):  # ascending (insertion sort: a few vertices, no allocation)
+                x = near[a]
+                b = a - 1
+                while b >= 0 and near[b] > x:
+                    near[b + 1] = near[b]
+                    b -= 1
+                near[b + 1] = x
+        else:  # a wide reach (a search widened by a window of many degrees): hundreds of vertices, n log n
+            near[:n].sort()
+        cand = near
+        if n_pairs + 2 * n > cap:
+            while n_pairs + 2 * n > cap:
+                cap *= 2
+            grown = np.empty(cap, np.int64)
+            grown[:n_pairs] = seg[:n_pairs]
+            seg = grown
+        for j in range(n):
+            seg[n_pairs + j] = cand[j]
+            seg[n_pairs + n + j] = prev[cand[j]]
+        n_pairs += 2 * n
+    offs[m] = n_pairs
+    Y = np.empty((n_pairs, 2))
+    X = np.empty((n_pairs, 2))
+    T = np.empty((n_pairs, 2))
+    ok = np.zeros((n_pairs, 2), np.bool_)
+    for i in range(m):
+        ppx, ppy = P[i, 0] - cx, P[i, 1] - cy
+        r2 = rho[i] * rho[i]
+        for k in range(offs[i], offs[i + 1]):
+            s = seg[k]
+            ax, ay = V[s, 0] - cx, V[s, 1] - cy
+            dx, dy = seg_b[s, 0] - V[s, 0], seg_b[s, 1] - V[s, 1]
+            qa = dx * dx + dy * dy
+            qb = 2.0 * (ax * dx + ay * dy)
+            qc = (ax * ax + ay * ay) - r2
+            disc = qb * qb - 4.0 * qa * qc
+            real = disc >= 0.0
+            sq = math.sqrt(disc if real else 0.0)
+            for r in range(2):
+                t = ((-qb - sq) if r == 0 else (-qb + sq)) / (2.0 * qa)
+                valid = real and t >= -1e-12 and t <= 1.0 + 1e-12
+                t = min(max(t, 0.0), 1.0)
+                qx, qy = ax + t * dx, ay + t * dy
+                Y[k, r] = ppx * qy - ppy * qx
+                X[k, r] = ppx * qx + ppy * qy
+                T[k, r] = t
+                ok[k, r] = valid and sign * (qx * dx + qy * dy) > 0.0  # entering: perp(q)·perp(d) = q·d
+    return offs, seg[:n_pairs], Y, X, T, ok
+
+
+@njit(cache=True)
+def _ring_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, near_cell, sign, rho, lb,
+                chord_factor):
     """The (point, edge) pairs of the rotation hits that have an entering root, point by point, in the order of the
     reference (``tests/rot_hits_reference.py``): the edges starting at each vertex within the point's reach
     (ascending), then the edges ending there; for each pair and both roots of the circle-edge intersection: the
@@ -65,7 +161,7 @@ def _rot_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, it
     edges.  In a window of many degrees this leaves the vertices near one circle instead of a disc of them."""
     m = len(P)
     offs = np.zeros(m + 1, np.int64)
-    cap = 1024
+    cap = 64
     seg = np.empty(cap, np.int64)
     Y = np.empty((cap, 2))
     X = np.empty((cap, 2))
@@ -84,6 +180,8 @@ def _rot_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, it
             c0 = min(max(int(math.floor((px - ox) / h)), 0), nx - 1) * ny + min(max(int(math.floor((py - oy) / h)), 0), ny - 1)
             if not near_cell[c0]:
                 continue
+        # the annulus test only where the reach is wider than the annulus (a narrow window's disc lies within it)
+        ring = reach > 2.0 * band
         r_hi = rho[i] + band
         r_lo = max(rho[i] - band, 0.0)
         hi2, lo2 = r_hi * r_hi, r_lo * r_lo
@@ -96,20 +194,22 @@ def _rot_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, it
             dx_lo = x0 if x0 > 0.0 else (-x1 if x1 < 0.0 else 0.0)
             dx_hi = max(-x0, x1)
             for gy in range(iy0, iy1 + 1):
-                y0, y1 = oy + gy * h - 1e-6 - cy, oy + (gy + 1) * h + 1e-6 - cy
-                dy_lo = y0 if y0 > 0.0 else (-y1 if y1 < 0.0 else 0.0)
-                dy_hi = max(-y0, y1)
-                if dx_lo * dx_lo + dy_lo * dy_lo > hi2 or dx_hi * dx_hi + dy_hi * dy_hi < lo2:
-                    continue
+                if ring:
+                    y0, y1 = oy + gy * h - 1e-6 - cy, oy + (gy + 1) * h + 1e-6 - cy
+                    dy_lo = y0 if y0 > 0.0 else (-y1 if y1 < 0.0 else 0.0)
+                    dy_hi = max(-y0, y1)
+                    if dx_lo * dx_lo + dy_lo * dy_lo > hi2 or dx_hi * dx_hi + dy_hi * dy_hi < lo2:
+                        continue
                 c = gx * ny + gy
                 for kk in range(start[c], start[c + 1]):
                     v = items[kk]
                     ex, ey = px - V[v, 0], py - V[v, 1]
                     if ex * ex + ey * ey <= r2reach:
-                        fx, fy = V[v, 0] - cx, V[v, 1] - cy
-                        f2 = fx * fx + fy * fy
-                        if f2 > hi2 or f2 < lo2:
-                            continue
+                        if ring:
+                            fx, fy = V[v, 0] - cx, V[v, 1] - cy
+                            f2 = fx * fx + fy * fy
+                            if f2 > hi2 or f2 < lo2:
+                                continue
                         if n == len(near):
                             bigger = np.empty(2 * n, np.int64)
                             bigger[:n] = near
