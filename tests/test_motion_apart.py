@@ -51,6 +51,31 @@ def test_apart_only_where_the_boolean_finds_no_common_area():
     assert held and area == 0.0
 
 
+def test_without_the_distance_the_same_answer_with_every_edge_pair_near_the_other_body_tested():
+    """d unknown (None: the polysector's contact law asks before any distance is measured): the boundaries'
+    crossings are sought everywhere; the answer is the one with d wherever d already decides it, and never apart
+    where the boolean finds common area; the bodies touching at a vertex are not apart (in doubt)."""
+    A = Outline([_star(12, 20.0, 23.0), _star(5, 6.0, 7.0, 300)[::-1]], 0.5)
+    B = Outline([_star(9, 14.0, 17.0, 500)], 0.5)
+    rng = np.random.default_rng(5)
+    seen = {True: 0, False: 0}
+    for _ in range(200):
+        M = Pose(float(rng.uniform(0, 2 * math.pi)), (0.0, 0.0), (float(rng.uniform(30.0, 48.0)), float(rng.uniform(-4, 4)))).matrix()
+        d, _, _, PB, PA = sweep2d._boundary_distance(A, B, np.array(Pose().matrix()), M)
+        apart = certainly_apart(A, B, PB, PA, None)
+        seen[apart] += 1
+        assert apart == certainly_apart(A, B, PB, PA, d) or d <= 1e-6
+        if not apart:
+            assert float((A.section ^ B.section.transform(M)).area()) > 0.0 or d <= 1e-6
+    assert seen[True] > 30 and seen[False] > 30
+    sq = Outline([np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])], 10.0)
+    corner = Pose(0.0, (0.0, 0.0), (1.0, 1.0)).matrix()  # the squares meet at one corner: area 0, yet in doubt
+    P = apply_pose(corner, sq.points)
+    assert not certainly_apart(sq, sq, P, apply_pose(inverse_pose(corner), sq.points), None)
+    far = Pose(0.0, (0.0, 0.0), (1.5, 0.2)).matrix()
+    assert certainly_apart(sq, sq, apply_pose(far, sq.points), apply_pose(inverse_pose(far), sq.points), None)
+
+
 def test_long_edges_crossing_far_from_every_vertex_are_not_apart():
     """Two thin plates crossing like a plus sign: every vertex is far from the other plate's edges, yet they
     overlap (the least vertex-to-edge distance alone would call them apart)."""

@@ -95,13 +95,14 @@ def _loop_firsts(o) -> np.ndarray:
     return f
 
 
-def certainly_apart(A, B, PB: np.ndarray, PA: np.ndarray, d: float) -> bool:
+def certainly_apart(A, B, PB: np.ndarray, PA: np.ndarray, d: float | None) -> bool:
     """Whether outlines A and B (PB: B's vertices in A's frame, PA: A's in B's; d: the least vertex-to-edge
-    distance between them, both ways) have no area in common: the boundaries cross nowhere and no loop of
-    one lies inside the other.  False when in doubt (d below APART_MIN_MM)."""
-    if not d > APART_MIN_MM:
+    distance between them, both ways, or None when not known) have no area in common: the boundaries cross
+    nowhere and no loop of one lies inside the other.  False when in doubt (d below APART_MIN_MM, or edges that
+    meet or touch)."""
+    if d is not None and not d > APART_MIN_MM:
         return False
-    if not d > max(A.half_len, B.half_len):
+    if d is None or not d > max(A.half_len, B.half_len):
         g = grid_of(A)
         r = (A.half_len + B.half_len) * (1.0 + 1e-9) + 1e-12
         if _any_crossing(np.ascontiguousarray(PB), B.nxt, B.prev, A.points, g.seg_b, A.prev, g.origin[0], g.origin[1],
