@@ -1483,6 +1483,19 @@ def test_dist_each_point_is_the_distance_to_the_nearest_edge():
     assert e.shape == (0,)
 
 
+def test_within_are_the_points_whose_distance_to_an_edge_is_at_most_tol():
+    """The middle of a long edge lies half an edge from its ends: a point 0.5 mm off it is within 1 mm though its
+    nearest vertex is 5.02 mm away; the same indices as the distances of every point filtered."""
+    tgt = Outline([SQUARE10], 100.0)
+    P = np.array([[5.0, -0.5], [5.0, -1.5], [12.0, 12.0], [5.0, 5.5], [10.0, 10.9], [0.2, 0.2]])
+    assert dz.within(P, tgt, 1.0).tolist() == [0, 4, 5]
+    rng = np.random.default_rng(2)
+    Q = rng.uniform(-3.0, 13.0, (400, 2))
+    for tol in (0.05, 0.5, 2.0):
+        assert dz.within(Q, tgt, tol).tolist() == np.nonzero(dz.dist_each_point(Q, tgt) <= tol)[0].tolist()
+    assert dz.within(np.empty((0, 2)), tgt, 1.0).shape == (0,)
+
+
 def test_min_dist_of_tied_points_is_the_first_and_the_middle_of_a_long_edge_counts():
     """(5, 0), the middle of the 10 mm edge, lies exactly half an edge from its ends; (10, 10) is a vertex: both at 0
     and the first point is the answer (nearest.py's "first pair at the least distance")."""

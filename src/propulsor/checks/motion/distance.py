@@ -10,7 +10,7 @@ from ... import policy
 from ...check import Check
 from .outlines import Outline
 
-__all__ = ['ball_pairs', 'min_dist_points_to', 'dist_each_point', 'check_record']
+__all__ = ['ball_pairs', 'min_dist_points_to', 'dist_each_point', 'within', 'check_record']
 
 _CHUNK = 32  # consecutive source vertices per pruning disc (nearest.py)
 
@@ -101,6 +101,17 @@ def dist_each_point(P: np.ndarray, tgt: Outline) -> np.ndarray:
     out = np.full(len(P), np.inf)
     np.minimum.at(out, pi, d)
     return out
+
+
+def within(P: np.ndarray, tgt: Outline, tol: float) -> np.ndarray:
+    """Indices of the points of P (tgt body frame) within ``tol`` of tgt's boundary: :func:`dist_each_point` of only
+    the points whose nearest vertex lies within ``tol`` plus half the longest edge (every boundary point lies
+    that close to a vertex: the others are farther than ``tol``), each point's distance the same."""
+    if len(P) == 0:
+        return np.empty(0, int)
+    dv, _ = tgt.tree.query(P, distance_upper_bound=tol + tgt.half_len + 1e-9 * (1.0 + tol))
+    cand = np.nonzero(np.isfinite(dv))[0]
+    return cand[dist_each_point(P[cand], tgt) <= tol]
 
 
 def check_record(name: str, passed: bool, value, limit, unit: str, message: str) -> Check:

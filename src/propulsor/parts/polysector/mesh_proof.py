@@ -285,7 +285,7 @@ def prove_position(dd, pos, steps_per_pitch: int | None = None, chord_tol: float
     cp = np.array([cpt[j][k] for k, j in enumerate(jdrv)])
     # every tooth pair in contact at the actual pose: gear boundary points within the contact tolerance of
     # a sector in contact, grouped along the gear's boundary (groups more than `merge` apart are pairs)
-    from ...checks.motion.distance import dist_each_point
+    from ...checks.motion.distance import within
 
     contacts = []
     for k in range(n):
@@ -300,7 +300,7 @@ def prove_position(dd, pos, steps_per_pitch: int | None = None, chord_tol: float
             near = np.nonzero(sec_out[j].boundary_lower_bound(P) <= tol)[0]
             if len(near) == 0:
                 continue
-            near = near[dist_each_point(P[near], sec_out[j]) <= tol]
+            near = near[within(P[near], sec_out[j], tol)]
             if len(near) == 0:
                 continue
             order = np.argsort(gear.arclen[near])
