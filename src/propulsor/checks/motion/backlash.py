@@ -47,6 +47,21 @@ def _rot_hits(P: np.ndarray, C: np.ndarray, tgt: Outline, sign: float, w: float,
     return _rot_reduce(offs, seg, ang, T, ok, float(w))
 
 
+@njit(cache=True, inline="always")
+def _room(near, ix0, ix1, iy0, iy1, ny, start):
+    """``near``, or a larger array, with room for every vertex of the cells ix0..ix1 x iy0..iy1: grown before a scan
+    of the cells, not during it (an array variable reassigned inside a loop costs numba a reference count update
+    at every turn of that loop: for the vertex scan, two atomic operations a vertex)."""
+    total = 0
+    for gx in range(ix0, ix1 + 1):
+        for gy in range(iy0, iy1 + 1):
+            c = gx * ny + gy
+            total += start[c + 1] - start[c]
+    if total <= len(near):
+        return near
+    return np.empty(max(total, 2 * len(near)), np.int64)
+
+
 @njit(cache=True)
 def _rot_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, near_cell, sign, rho, lb,
                chord_factor):
@@ -75,6 +90,7 @@ def _rot_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, it
             if not near_cell[c0]:
                 continue
         ix0, ix1, iy0, iy1 = disc_cells(px, py, reach, ox, oy, h, nx, ny)
+        near = _room(near, ix0, ix1, iy0, iy1, ny, start)
         n = 0
         r2reach = reach * reach
         for gx in range(ix0, ix1 + 1):
@@ -84,10 +100,6 @@ def _rot_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, it
                     v = items[kk]
                     ex, ey = px - V[v, 0], py - V[v, 1]
                     if ex * ex + ey * ey <= r2reach:
-                        if n == len(near):
-                            bigger = np.empty(2 * n, np.int64)
-                            bigger[:n] = near
-                            near = bigger
                         near[n] = v
                         n += 1
         if n == 0:
@@ -186,6 +198,7 @@ def _ring_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, i
         r_lo = max(rho[i] - band, 0.0)
         hi2, lo2 = r_hi * r_hi, r_lo * r_lo
         ix0, ix1, iy0, iy1 = disc_cells(px, py, reach, ox, oy, h, nx, ny)
+        near = _room(near, ix0, ix1, iy0, iy1, ny, start)
         n = 0
         r2reach = reach * reach
         for gx in range(ix0, ix1 + 1):
@@ -210,10 +223,6 @@ def _ring_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, i
                             f2 = fx * fx + fy * fy
                             if f2 > hi2 or f2 < lo2:
                                 continue
-                        if n == len(near):
-                            bigger = np.empty(2 * n, np.int64)
-                            bigger[:n] = near
-                            near = bigger
                         near[n] = v
                         n += 1
         if n == 0:

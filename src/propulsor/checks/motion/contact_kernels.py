@@ -172,16 +172,28 @@ def _placed(x, y, c1, s1, tx, c2, s2):
 
 
 @njit(cache=True, inline="always")
-def _boundary_bound(px, py, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny, fvals):
-    """A lower bound of the distance of (px, py) to the target's boundary: its annulus (ccx, ccy, radius, r_min), and
-    the distance field's cell where the point lies in the grid."""
+def _bound_and_cell(px, py, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny):
+    """The annulus's lower bound of the distance of (px, py) to the target's boundary (ccx, ccy, radius, r_min), and
+    the index of the distance field's cell where the point lies (-1 off the grid): ``max(lb, fvals[cell])`` is
+    :func:`_boundary_bound`.  Scalars only: an array handed to a function inside a loop costs numba a reference
+    count update (two atomic operations) at every call, so the hot loops read the field themselves."""
     ex, ey = px - ccx, py - ccy
     d = math.sqrt(ex * ex + ey * ey)
     lb = max(d - radius, r_min - d)
     ix = int(math.floor((px - fx) / fh))
     iy = int(math.floor((py - fy) / fh))
     if 0 <= ix < fnx and 0 <= iy < fny:
-        lb = max(lb, fvals[ix * fny + iy])
+        return lb, ix * fny + iy
+    return lb, -1
+
+
+@njit(cache=True, inline="always")
+def _boundary_bound(px, py, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny, fvals):
+    """A lower bound of the distance of (px, py) to the target's boundary: its annulus (ccx, ccy, radius, r_min), and
+    the distance field's cell where the point lies in the grid."""
+    lb, c = _bound_and_cell(px, py, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny)
+    if c >= 0:
+        lb = max(lb, fvals[c])
     return lb
 
 
@@ -215,7 +227,10 @@ def _pruned_window(order, angs, centre, hw, chunk, cc, cr, V, c1, s1, tx, c2, s2
             px, py = _placed(V[q, 0], V[q, 1], c1, s1, tx, c2, s2)
             dx, dy = px - cx, py - cy
             reach = chord * math.sqrt(dx * dx + dy * dy)
-            if _boundary_bound(px, py, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny, fvals) > reach + 1e-6:
+            lb, c = _bound_and_cell(px, py, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny)
+            if c >= 0:  # _boundary_bound, the field read here (no array handed on at every vertex)
+                lb = max(lb, fvals[c])
+            if lb > reach + 1e-6:
                 continue
             out[n] = q
             n += 1

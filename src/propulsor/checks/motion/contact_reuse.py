@@ -27,8 +27,8 @@ import numpy as np
 from numba import njit
 from numba.typed import List
 
-from .contact_kernels import (_boundary_bound, _least, _placed, _side_hits, _window_bounds, _window_runs,
-                              _window_size)
+from .contact_kernels import (_bound_and_cell, _boundary_bound, _least, _placed, _side_hits, _window_bounds,
+                              _window_runs, _window_size)
 from .nearest import _nearest_vertex
 from ...nbcache import bind
 
@@ -96,7 +96,9 @@ def _refresh(order, angs, centre, hw_wide, chunk, cc, cr, V, c1, s1, tx, c2, s2,
             qx, qy = _placed(V[q, 0], V[q, 1], c1, s1, tx, c2, s2)
             dx, dy = qx - cx, qy - cy
             reach = chord_W * math.sqrt(dx * dx + dy * dy)
-            lb = _boundary_bound(qx, qy, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny, fvals)
+            lb, c = _bound_and_cell(qx, qy, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny)
+            if c >= 0:  # _boundary_bound, the field read here (no array handed on at every vertex)
+                lb = max(lb, fvals[c])
             near = lb - reach <= S
             if near:
                 bound = reach + S + half_len
