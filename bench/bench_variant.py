@@ -74,6 +74,15 @@ At eb11034 (the same pairing, two rounds of two; also the tip searches' samples 
 one-point inversion compiled, the smoothed walking law's few-angle calls on its one-point path, and no figure drawn
 at proof depth): seed 002 5.07 / 5.00 / 5.21 / 4.99 -> 4.36 / 4.34 / 4.44 / 4.52 CPU s (-13 %), its Fourier form
 5.28 / 5.41 / 5.38 / 5.37 -> 4.67 / 4.80 / 4.75 / 4.75 (-12 %); the 636 files of make identical after each step.
+
+2026-11-30, a new session on a slower, noisier machine (2 cores; paired, 8e99e60 in a worktree and the new tree in
+turn, three rounds of two; the least of each pair): the seed-002 pair 7.00 / 7.42 / 7.21 -> 6.49 / 6.63 / 6.55 CPU s
+(-9 %).  perf showed 18 % of a contact search's samples in numba's reference counting (NRT_incref / NRT_decref,
+called at every vertex a point's cells hold: an array variable reassigned inside the scan, and the distance field
+handed to an inlined function at every vertex); without them one direction's contact 1.21-1.25 -> 1.00 CPU s, the
+te identical bit for bit.  The free rotations' rotation hits (the whole-cycle proof, the polysector) now seek a
+point's hits only near its circle about the turning axis: the polysector's 1 500 searches 4.40 -> 1.19 s, the
+whole-cycle proof unchanged (1.55 vs 1.60 s: its windows are narrow).
 """
 
 from __future__ import annotations

@@ -26,6 +26,9 @@ peak's floor: ``import cadquery`` alone is 456 MiB resident here (OCP 286 MiB, V
 no process that holds the CAD kernel meets 400 MiB.
 2026-11-30, later (2 cores, idle; eb11034): ncgears 25.64 s wall (26.75 CPU s), peak 288 MiB; ours 9.94 s wall
 (16.16 CPU s), peak 652 MiB: wall ratio 0.388, CPU ratio 0.604; ``ncg_elliptical.toml`` 7.91 s wall.
+2026-11-30, a new session on a slower machine (2 cores, idle; 9199b6c): ncgears 48.85 s wall (51.70 CPU s), peak
+289 MiB; ours 16.00 s wall (25.29 CPU s), peak 750 MiB: wall ratio 0.328, CPU ratio 0.489; ``ncg_elliptical.toml``
+11.75 s wall.
 """
 
 from __future__ import annotations
