@@ -9,7 +9,9 @@ contact in both directions, the per-tooth load and every derived value and check
 file, on one core (``PROPULSOR_JOBS=1``, as the study's workers run).  The study reads ``speed_as_built_min`` and
 ``center_distance_mm`` (so the other tooth method's comparison is skipped: ``evaluate.ONLY_WHEN_READ``).
 
-Each part: one warm-up variant (imports, numba's compiled kernels loaded from their cache), then ``--repeat``
+BLAS and OpenMP at one thread, as the study's workers run (before 2026-11-30's last entry the benchmark left
+OpenBLAS its own threads, whose spinning between calls perf put at 7 % of a variant's CPU).  Each part: one warm-up
+variant (imports, numba's compiled kernels loaded from their cache), then ``--repeat``
 variants with the face width changed (a new design each: nothing is reused between them), each timed by the
 process's CPU clock (``time.process_time``).  The target: <= 1.0 CPU s a variant.  ``--profile``: cProfile of the
 last variant, the 25 functions of most own time.
@@ -95,6 +97,8 @@ import tomllib
 from pathlib import Path
 
 os.environ["PROPULSOR_JOBS"] = "1"  # one core, as a study's worker runs a variant
+for _name in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_name, "1")  # one BLAS thread, as the study's workers have it (study/engine.py)
 
 ROOT = Path(__file__).resolve().parents[1]
 TARGET_CPU_S = 1.0

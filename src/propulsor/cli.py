@@ -17,11 +17,18 @@ import threading
 import time
 from pathlib import Path
 
-from . import building
-from .building import gallery_folder, regenerate_gallery, vet_depfile, write_depfile, write_gallery_locked
-from .errors import CheckFailed, EnvironmentFailure, InputError
-from .render import Renderer
-from .signals import SIGNALLED, Interrupted, check_signalled, hold_signals, raise_interrupted, unraisable
+# one BLAS / OpenMP thread a process, as the study's workers run (study/engine.py): a build runs its steps side by
+# side in processes of its own and its linear algebra is small (2 x 2 turns, banded spline systems), so OpenBLAS's
+# own threads only spin between calls (7 % of a seed-002 design's CPU in perf).  Set before numpy is first imported
+# (the package's root imports none); a value the user gave is kept.
+for _name in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_name, "1")
+
+from . import building  # noqa: E402
+from .building import gallery_folder, regenerate_gallery, vet_depfile, write_depfile, write_gallery_locked  # noqa: E402
+from .errors import CheckFailed, EnvironmentFailure, InputError  # noqa: E402
+from .render import Renderer  # noqa: E402
+from .signals import SIGNALLED, Interrupted, check_signalled, hold_signals, raise_interrupted, unraisable  # noqa: E402
 
 #: the exit codes (README, «Command line»): the command line's alone; the build service raises exceptions
 EXIT_OK, EXIT_CHECK_FAILED, EXIT_BAD_INPUT, EXIT_ENVIRONMENT = 0, 1, 2, 3
