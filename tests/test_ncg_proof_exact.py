@@ -353,6 +353,49 @@ def test_least_overlap_search_finds_the_free_interval_and_otherwise_the_least_ov
     assert area <= fine + 1e-3
 
 
+def test_lens_cuts_give_each_overlap_of_the_whole_bodies_to_the_last_bit_and_are_kept_while_they_hold():
+    """``_LensCrops``: the driver cut to the disc about the driven axis, the driven wheel to the disc about the
+    driver axis's positions over the offsets searched.  Jammed (L = 71 mm) and with the driver ahead of the law (L =
+    75 mm, 2 degrees), over phases a tenth of a pitch apart: the overlap of the cuts equals that of the whole outlines
+    exactly at every offset of the search span (its scan and random points), the cuts hold fewer vertices, and a cut
+    is kept over the next phases while their discs lie inside it.  A disc 2 mm short of the driven tip radius loses
+    overlap (the check can fail)."""
+    from propulsor.checks.motion import outline
+    from propulsor.parts.noncircular_pair.pair_proof import _LensCrops, _overlap_at
+
+    _, dd = _circular()
+    d = dd.d
+    drv = outline([d.driver.profile.outer.polyline(1e-4)])
+    dvn = outline([d.driven.profile.outer.polyline(1e-4)])
+    reach = float(np.linalg.norm(drv.points, axis=1).max())
+    r_dvn = float(np.linalg.norm(dvn.points, axis=1).max())
+    half = 0.5 * math.pi * 2.5 / 50
+    rng = np.random.default_rng(7)
+    pitch = 2 * math.pi / 40
+
+    def n_vertices(cs):
+        return sum(len(q) for q in cs.to_polygons())
+
+    for L, ahead in ((71.0, 0.0), (75.0, math.radians(2.0))):
+        lens = _LensCrops(L, reach + 1.0, r_dvn + 1.0)
+        cuts = []
+        for ph in np.arange(8) * pitch / 10 + 0.3:
+            th = float(d.run_law.theta(ph)) + ahead
+            start = 0.002
+            cd, cn = lens.at(drv, dvn, ph + start, th, half)
+            cuts.append((id(cd), id(cn)))
+            assert n_vertices(cd.section) < 0.5 * len(drv.points) and n_vertices(cn.section) < 0.5 * len(dvn.points)
+            offs = np.r_[start + np.linspace(-half, half, 13), start + rng.uniform(-half, half, 6)]
+            whole = [_overlap_at(drv, dvn, L, th, ph + o) for o in offs]
+            assert max(whole) > 1.0
+            assert [_overlap_at(cd, cn, L, th, ph + o) for o in offs] == whole
+        assert len(set(cuts)) < len(cuts)  # kept over some phases
+    short = _LensCrops(71.0, reach + 1.0, r_dvn - 2.0, spare=0.0)
+    th = float(d.run_law.theta(0.3))
+    cd, cn = short.at(drv, dvn, 0.3, th, half)
+    assert _overlap_at(cd, cn, 71.0, th, 0.3) < _overlap_at(drv, dvn, 71.0, th, 0.3) - 1.0
+
+
 # =========================================================================== proofs.py
 def _record_prove_pair(monkeypatch):
     from propulsor.parts.noncircular_pair import pair_proof
