@@ -15,7 +15,7 @@ from ... import policy
 from ...errors import InputError, require, require_positive
 from ...geometry.profile import Profile
 
-__all__ = ['row_norms', 'Outline', 'outline', 'crop_to_sector', 'offset_outline']
+__all__ = ['row_norms', 'Outline', 'outline', 'crop_to_sector', 'cut_to_disc', 'offset_outline']
 
 
 def _signed_area(p: np.ndarray) -> float:
@@ -175,6 +175,16 @@ def crop_to_sector(section: m3d.CrossSection, a0: float, a1: float, r_in: float,
     inner = np.column_stack([r_in * np.cos(a[::-1]), r_in * np.sin(a[::-1])]) if r_in > 0 else np.zeros((1, 2))
     wedge = m3d.CrossSection([np.ascontiguousarray(np.vstack([outer, inner]))], m3d.FillRule.Positive)
     return [np.asarray(p, float) for p in (section ^ wedge).to_polygons()]
+
+
+def cut_to_disc(section: m3d.CrossSection, cx: float, cy: float, R: float, sides: int = 256) -> m3d.CrossSection:
+    """``section`` inside the disc of radius ``R`` about (cx, cy): cut by a regular polygon of ``sides`` sides whose
+    edges touch the circle from outside (so the whole disc is kept, and up to R / cos(pi / sides) of its
+    neighbourhood)."""
+    a = np.linspace(0.0, 2.0 * math.pi, sides, endpoint=False)
+    Rc = R / math.cos(math.pi / sides)
+    disc = m3d.CrossSection([np.column_stack([cx + Rc * np.cos(a), cy + Rc * np.sin(a)])], m3d.FillRule.Positive)
+    return section ^ disc
 
 
 def offset_outline(o: Outline, inward: float, shift=(0.0, 0.0)) -> Outline:

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...checks.motion import crop_to_sector, outline, transmission_sweep
+from ...checks.motion import crop_to_sector, cut_to_disc, outline, transmission_sweep
 from ... import policy
 
 
@@ -227,24 +227,15 @@ class _LensCrops:
     equal to the last bit).  A cut is kept for the next phases while their discs lie inside it (cut ``spare`` mm
     wider than needed); the area's boolean is the only cost it saves."""
 
-    SIDES = 256
-
     def __init__(self, L: float, reach: float, r_dvn: float, spare: float = 1.0):
         self.L, self.reach, self.r_dvn, self.spare = L, reach, r_dvn, spare
         self.drv = self.dvn = None  # (source crop, centre x, y, radius, the cut)
-
-    def _disc(self, cx: float, cy: float, R: float):
-        import manifold3d as m3d
-
-        a = np.linspace(0.0, 2.0 * math.pi, self.SIDES, endpoint=False)
-        Rc = R / math.cos(math.pi / self.SIDES)  # the polygon holds the circle
-        return m3d.CrossSection([np.column_stack([cx + Rc * np.cos(a), cy + Rc * np.sin(a)])], m3d.FillRule.Positive)
 
     def _cut(self, held, src, cx: float, cy: float, R: float):
         if held is not None and held[0] is src and math.hypot(cx - held[1], cy - held[2]) + R <= held[3]:
             return held
         R1 = R + self.spare
-        return (src, cx, cy, R1, _Cut(src.section ^ self._disc(cx, cy, R1)))
+        return (src, cx, cy, R1, _Cut(cut_to_disc(src.section, cx, cy, R1)))
 
     def at(self, dcrop, crop, p_mid: float, theta: float, half: float):
         """(driver cut, driven cut) for the driver at ``theta`` and the driven wheel within ``p_mid`` +- ``half``."""
