@@ -318,3 +318,32 @@ def test_prism_sides_meshed_apart_equal_the_strips_of_a_whole_pass():
     for k in strips:
         assert np.array_equal(strips[k][0], whole[k][0]) and np.array_equal(strips[k][1], whole[k][1])
         assert strips[k][2] == whole[k][2]
+
+
+def test_equal_rows_is_numpys_row_unique_with_its_inverse():
+    """``_equal_rows`` (one lexicographic sort of the columns) against ``np.unique(v, axis=0, return_inverse=True)``:
+    the distinct rows in the same order and each row's index among them, on arrays full of repeated rows, of one to
+    three columns, with 0.0 and -0.0 (equal, as numpy has them); an array with a NaN is numpy's own answer.  And
+    merge_close_vertices on a triangle soup (every vertex written once per face, as an STL holds it) gives a mesh
+    whose vertices are distinct and whose faces are the soup's."""
+    rng = np.random.default_rng(11)
+    for _ in range(300):
+        v = rng.integers(-2, 3, size=(int(rng.integers(1, 60)), int(rng.integers(1, 4)))).astype(float)
+        v[rng.random(v.shape) < 0.3] *= -1.0  # signed zeros
+        u, inv = np.unique(v, axis=0, return_inverse=True)
+        u2, inv2 = T._equal_rows(v)
+        assert u2.shape == u.shape and np.array_equal(u2, u) and inv2.tolist() == inv.reshape(-1).tolist()
+    v = np.array([[0.0, -0.0, 1.0], [-0.0, 0.0, 1.0], [1.0, 2.0, 3.0], [0.5, 9.0, 1.0], [1.0, 2.0, 3.0]])
+    u, inv = T._equal_rows(v)
+    assert u.tolist() == [[0.0, 0.0, 1.0], [0.5, 9.0, 1.0], [1.0, 2.0, 3.0]] and inv.tolist() == [0, 0, 2, 1, 2]
+    w = np.array([[np.nan, 1.0], [0.0, 1.0], [0.0, 1.0]])
+    u, inv = T._equal_rows(w)
+    un, invn = np.unique(w, axis=0, return_inverse=True)
+    assert np.array_equal(u, un, equal_nan=True) and inv.tolist() == invn.reshape(-1).tolist()
+    # a cube's 12 triangles as a soup of 36 vertices: 8 vertices, the same triangles
+    import trimesh
+
+    box = trimesh.creation.box((2.0, 3.0, 4.0))
+    soup = box.vertices[box.faces.reshape(-1)]
+    nv, nf = T.merge_close_vertices(soup, np.arange(len(soup)).reshape(-1, 3))
+    assert len(nv) == 8 and np.array_equal(nv[nf], box.vertices[box.faces])

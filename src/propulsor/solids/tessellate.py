@@ -34,6 +34,24 @@ __all__ = ["MERGE_TOL_MM", "merge_close_vertices", "mesh_shape", "triangulate"]
 MERGE_TOL_MM = 1e-6
 
 
+def _equal_rows(v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``np.unique(v, axis=0, return_inverse=True)`` of an (n, k) float array: its distinct rows in lexicographic
+    order and each row's index among them, by one stable lexicographic sort of the columns (numpy's row-unique
+    sorts the rows as records, several times slower on a mesh's vertices).  Rows are equal as floats are (0.0 and
+    -0.0 alike, as numpy's); an array with a NaN goes to numpy itself."""
+    if not np.all(np.isfinite(v)):
+        u, inv = np.unique(v, axis=0, return_inverse=True)
+        return u, inv.reshape(-1)
+    order = np.lexsort(v.T[::-1])
+    s = v[order]
+    first = np.empty(len(v), bool)
+    first[0] = True
+    np.any(s[1:] != s[:-1], axis=1, out=first[1:])
+    inv = np.empty(len(v), np.int64)
+    inv[order] = np.cumsum(first) - 1
+    return s[first], inv
+
+
 def merge_close_vertices(vertices: np.ndarray, faces: np.ndarray, tol: float = MERGE_TOL_MM,
                          max_pairs: int | None = None):
     """Merge vertices closer than `tol` (transitively); drop faces that collapse.
@@ -47,8 +65,7 @@ def merge_close_vertices(vertices: np.ndarray, faces: np.ndarray, tol: float = M
     f = np.asarray(faces, np.int64)
     n = len(v)
     if n:
-        u, inv = np.unique(v, axis=0, return_inverse=True)
-        inv = inv.reshape(-1)
+        u, inv = _equal_rows(v)
     else:
         u, inv = v, np.arange(0)
     tree = cKDTree(u)
