@@ -293,30 +293,51 @@ def test_full_output_in_a_real_browser(capsys):
         print(f"\nbrowser test: {len(opened)} pages; screenshots in {folder / 'screenshots'}", flush=True)
 
 
-def test_a_picture_drawn_a_run_of_triangles_at_a_time_is_the_picture_drawn_at_once(tmp_path, monkeypatch):
-    """render_iso rasterises the triangles RENDER_RUN_TRIANGLES at a time (its memory bounded): with runs of 7 the
-    PNG is byte for byte the one drawn from every fragment at once, on a scene where runs split overlapping boxes and
-    two coincident faces of different colours tie in depth (the later one shows, either way)."""
+def test_the_compiled_rasteriser_paints_the_numpy_rasterisers_picture_pixel_for_pixel(tmp_path):
+    """render_iso's compiled painter (``render._paint``: each fragment painted as it is made) against the numpy span
+    rasteriser it replaced (``tests/render_reference.py``, runs of 7 triangles and all at once): the same pixels, on
+    a scene of overlapping boxes where two coincident faces of different colours tie in depth (the later one shows),
+    on a sphere and on random triangles half off the picture, some of them edge-on.  And the PNG shows the tie."""
     import numpy as np
     import trimesh
 
     from propulsor.export import render
+    from render_reference import paint
+
+    def both(x, y, z, rgb, W, H):
+        zbuf = np.full(H * W, -np.inf, np.float32)
+        image = np.empty((H * W, 3), np.uint8)
+        image[:] = 255
+        render._paint(np.ascontiguousarray(x), np.ascontiguousarray(y), np.ascontiguousarray(z), rgb, W, H, zbuf,
+                      image)
+        for run in (7, 10 ** 9):
+            assert np.array_equal(image, paint(x, y, z, rgb, W, H, run))
+        return image
 
     box = trimesh.creation.box((10.0, 10.0, 10.0))
     V, F = np.asarray(box.vertices, float), np.asarray(box.faces, np.int64)
+    sphere = trimesh.creation.icosphere(subdivisions=3, radius=7.0)
+    rng = np.random.default_rng(5)
+    scenes = [np.concatenate([V[F], (V + (4.0, 3.0, 2.0))[F], V[F]]), np.asarray(sphere.vertices)[sphere.faces]]
+    soup = rng.uniform(-5.0, 45.0, size=(400, 3, 3))
+    soup[:40, 1] = soup[:40, 0]  # edge-on: a zero-area triangle on the screen
+    scenes.append(soup)
+    painted = 0
+    for tri in scenes:
+        scale = 3.7
+        x, y, z = tri[:, :, 0] * scale + 60.5, 60.5 - tri[:, :, 1] * scale, tri[:, :, 2]
+        rgb = rng.integers(0, 256, size=(len(tri), 3)).astype(np.uint8)
+        image = both(x, y, z, rgb, 121, 97)
+        painted += int(np.count_nonzero(np.any(image != 255, axis=1)))
+    assert painted > 5000
+    # the tie in a picture: the third box (blue) drawn over the first (red) where they coincide
     shifted = np.eye(4)
     shifted[:3, 3] = (4.0, 3.0, 2.0)
     items = [(V, F, None, (0.8, 0.2, 0.2)), (V, F, shifted, (0.2, 0.8, 0.2)), (V, F, None, (0.2, 0.2, 0.8))]
-    assert sum(len(f) for _, f, _, _ in items) == 36
-    monkeypatch.setattr(render, "RENDER_RUN_TRIANGLES", 10 ** 9)
-    whole = render.render_iso(items, tmp_path / "whole.png", width=120).read_bytes()
-    monkeypatch.setattr(render, "RENDER_RUN_TRIANGLES", 7)
-    runs = render.render_iso(items, tmp_path / "runs.png", width=120).read_bytes()
-    assert runs == whole
-    # and the tie is real: the third box (blue) drawn over the first (red) where they coincide
+    render.render_iso(items, tmp_path / "boxes.png", width=120)
     from PIL import Image
 
-    px = np.asarray(Image.open(tmp_path / "runs.png").convert("RGB")).reshape(-1, 3)
+    px = np.asarray(Image.open(tmp_path / "boxes.png").convert("RGB")).reshape(-1, 3)
     reds = np.sum((px[:, 0] > 150) & (px[:, 1] < 100) & (px[:, 2] < 100))
     blues = np.sum((px[:, 2] > 120) & (px[:, 0] < 100))
     assert blues > 100 and reds == 0

@@ -18,7 +18,7 @@ _HERE = Path(__file__).resolve().parent
 SOURCES = tuple(str(_HERE / f) for f in ("checks/tri_tri.py", "checks/motion/nearest.py", "checks/motion/crossing.py",
                                          "checks/motion/backlash.py", "checks/motion/contact_kernels.py",
                                          "checks/motion/contact_reuse.py", "checks/motion/contact_track.py",
-                                         "checks/box_pairs.py", "export/normals.py",
+                                         "checks/box_pairs.py", "export/normals.py", "export/render.py",
                                          "geometry/spline_foot.py", "laws/fourier_kernels.py"))
 
 __all__ = ["SOURCES", "bind", "stamp"]

@@ -20,7 +20,7 @@ import numpy as np
 MODULES = ("propulsor.checks.tri_tri", "propulsor.checks.motion.nearest", "propulsor.checks.motion.crossing",
            "propulsor.checks.motion.backlash", "propulsor.checks.motion.contact_kernels",
            "propulsor.checks.motion.contact_reuse", "propulsor.checks.motion.contact_track",
-           "propulsor.checks.box_pairs", "propulsor.export.normals",
+           "propulsor.checks.box_pairs", "propulsor.export.normals", "propulsor.export.render",
            "propulsor.geometry.spline_foot", "propulsor.laws.fourier_kernels")
 
 __all__ = ["MODULES", "cold", "warm", "warm_if_cold"]
@@ -63,8 +63,9 @@ def warm() -> None:
     """Call every cached kernel once on small inputs, so that each is compiled (or loaded) now, in this process:
     the mesh checks' triangle tests, the motion proof's distance, crossing and rotation searches, and the as-built
     contact search (its first hit and all of a window's) on a pair of toothed rings; the GLB's shading normals; the
-    spline fit's foot-point distances; the Fourier law's one-point inversion."""
+    spline fit's foot-point distances; the Fourier law's one-point inversion; the pictures' rasteriser."""
     from ..export.normals import smooth_normals
+    from ..export.render import _paint
     from ..geometry.spline_foot import foot_distances
     from ..laws.ratio_laws import FourierLaw
     from .mesh import self_intersections
@@ -98,6 +99,9 @@ def warm() -> None:
                    np.array([[1.5, 1.0]]), np.array([0.5]), 0.0, 1.0)
     # the Fourier law's one-point inversion and slopes (laws/fourier_kernels.py)
     FourierLaw(1, (), (0.05,)).U_derivs1(0.3)
+    # the pictures' rasteriser (export/render.py): one triangle into a 4 x 4 picture
+    _paint(np.array([[0.5, 3.5, 0.5]]), np.array([[0.5, 0.5, 3.5]]), np.zeros((1, 3)), np.zeros((1, 3), np.uint8),
+           4, 4, np.full(16, -np.inf, np.float32), np.empty((16, 3), np.uint8))
 
 
 def warm_if_cold(progress=None) -> bool:

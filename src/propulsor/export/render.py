@@ -12,10 +12,13 @@ Deterministic: the same meshes give the same PNG bytes (no time stamp or text ch
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import numpy as np
+from numba import njit
 
+from ..nbcache import bind
 from ..write_root import prepare
 
 #: picture width in pixels (the height follows the part's projected aspect, within 0.5 … 1 of it)
@@ -27,8 +30,6 @@ VIEW_DIR = np.array([1.0, -1.0, 1.0]) / np.sqrt(3.0)
 #: light direction in camera coordinates (right, up, towards the viewer): upper left, in front
 LIGHT_CAM = np.array([-0.35, 0.55, 0.76]) / np.linalg.norm([-0.35, 0.55, 0.76])
 AMBIENT = 0.32
-#: triangles rasterised at a time (bounds the fragments' arrays)
-RENDER_RUN_TRIANGLES = 65536
 BACKGROUND = (255, 255, 255)
 #: a fixed palette, one colour per component (the GLB uses the same)
 PALETTE = (
@@ -105,16 +106,12 @@ def render_iso(items, path: str | Path, width: int = PICTURE_WIDTH_PX, view=VIEW
     image = np.empty((H * W, 3), np.uint8)
     image[:] = BACKGROUND
     if len(tri):
-        # the triangles a run at a time (their fragments' arrays stay bounded: a million triangles' fragments at once
-        # held 350 MiB); each run's fragments at least as near as the nearest so far are painted, in order, so a
-        # pixel ends as the last of its nearest fragments, as when every fragment is taken at once
+        # every fragment in order (triangle, row, column), painted where it is at least as near as the nearest so
+        # far: a pixel ends as the last of its nearest fragments (compiled, no fragment array; the same rasteriser
+        # in numpy, the reference of the tests: tests/render_reference.py)
         zbuf = np.full(H * W, -np.inf, dtype=np.float32)
-        for s0 in range(0, len(tri), RENDER_RUN_TRIANGLES):
-            run = slice(s0, s0 + RENDER_RUN_TRIANGLES)
-            pix, depth, owner = _fragments(x[run], y[run], z[run], W, H)
-            np.maximum.at(zbuf, pix, depth)  # the nearest fragment: largest z towards the viewer
-            win = depth >= zbuf[pix]
-            image[pix[win]] = rgb[s0 + owner[win]].astype(np.uint8)
+        _paint(np.ascontiguousarray(x), np.ascontiguousarray(y), np.ascontiguousarray(z), rgb.astype(np.uint8),
+               W, H, zbuf, image)
     img = Image.fromarray(image.reshape(H, W, 3), "RGB").reduce(SUPERSAMPLE)
     path = Path(path)
     prepare(path)
@@ -122,47 +119,53 @@ def render_iso(items, path: str | Path, width: int = PICTURE_WIDTH_PX, view=VIEW
     return path
 
 
-def _fragments(x, y, z, W: int, H: int):
-    """Pixels (flat index), depths and triangle index of every fragment of the triangles (x, y, z
-    are (m, 3) screen coordinates; pixel (i, j) has its centre at (i + 0.5, j + 0.5))."""
-    m = len(x)
-    # the depth plane of every triangle: z = a x + b y + c
-    e1x, e1y, e1z = x[:, 1] - x[:, 0], y[:, 1] - y[:, 0], z[:, 1] - z[:, 0]
-    e2x, e2y, e2z = x[:, 2] - x[:, 0], y[:, 2] - y[:, 0], z[:, 2] - z[:, 0]
-    det = e1x * e2y - e2x * e1y
-    ok = np.abs(det) > 1e-12
-    det = np.where(ok, det, 1.0)
-    a = (e1z * e2y - e2z * e1y) / det
-    b = (e2z * e1x - e1z * e2x) / det
-    c = z[:, 0] - a * x[:, 0] - b * y[:, 0]
-    # rows whose centre lies in [min y, max y)
-    r0 = np.clip(np.ceil(y.min(axis=1) - 0.5), 0, H).astype(np.int64)
-    r1 = np.clip(np.ceil(y.max(axis=1) - 0.5), 0, H).astype(np.int64)
-    nrow = np.where(ok, r1 - r0, 0)
-    t = np.repeat(np.arange(m), nrow)
-    row = (np.arange(len(t)) - np.repeat(np.cumsum(nrow) - nrow, nrow)) + r0[t]
-    yc = row + 0.5
-    # the span of the row: where the row's centre line crosses the triangle's edges
-    xl = np.full(len(t), np.inf)
-    xr = np.full(len(t), -np.inf)
-    for i, j in ((0, 1), (1, 2), (2, 0)):
-        ya, yb, xa, xb = y[t, i], y[t, j], x[t, i], x[t, j]
-        cross = (np.minimum(ya, yb) <= yc) & (yc < np.maximum(ya, yb))
-        dy = np.where(cross, yb - ya, 1.0)
-        xs = xa + (yc - ya) * (xb - xa) / dy
-        xl = np.where(cross, np.minimum(xl, xs), xl)
-        xr = np.where(cross, np.maximum(xr, xs), xr)
-    c0 = np.clip(np.ceil(xl - 0.5), 0, W)
-    c1 = np.clip(np.ceil(xr - 0.5), 0, W)
-    ncol = np.where(np.isfinite(c0) & np.isfinite(c1), np.maximum(c1 - c0, 0), 0).astype(np.int64)
-    keep = ncol > 0
-    t, row, c0, ncol = t[keep].astype(np.int32), row[keep], c0[keep].astype(np.int64), ncol[keep]
-    # per span: first pixel, depth there and its step along the row; then every pixel of the span
-    # (32-bit from here on: the fragments are millions, and halving their bytes halves the time)
-    start = (row * W + c0).astype(np.int32)
-    d0 = (a[t] * (c0 + 0.5) + b[t] * (row + 0.5) + c[t]).astype(np.float32)
-    step = a[t].astype(np.float32)
-    first = (np.cumsum(ncol) - ncol).astype(np.int32)
-    s = np.repeat(np.arange(len(t), dtype=np.int32), ncol)
-    offset = np.arange(len(s), dtype=np.int32) - first[s]
-    return start[s] + offset, d0[s] + step[s] * offset.astype(np.float32), t[s]
+@njit(cache=True)
+def _paint(x, y, z, rgb, W, H, zbuf, image):
+    """The span rasteriser's fragments (``tests/render_reference.py``, the numpy one it replaces), each painted as
+    it is made: the same operations on the same floats (the depth
+    plane and the row's span in float64, each pixel's depth in float32 from the span's first one), a fragment
+    painted into ``image`` (rows of ``rgb``) and ``zbuf`` where its depth is at least the buffer's.  Painting every
+    fragment in order this way leaves each pixel the last of its nearest fragments, as painting the fragments of
+    each run that are at least as near as the run's nearest."""
+    for k in range(len(x)):
+        x0, x1, x2 = x[k, 0], x[k, 1], x[k, 2]
+        y0, y1, y2 = y[k, 0], y[k, 1], y[k, 2]
+        z0 = z[k, 0]
+        e1x, e1y, e1z = x1 - x0, y1 - y0, z[k, 1] - z0
+        e2x, e2y, e2z = x2 - x0, y2 - y0, z[k, 2] - z0
+        det = e1x * e2y - e2x * e1y
+        if not abs(det) > 1e-12:
+            continue
+        a = (e1z * e2y - e2z * e1y) / det
+        b = (e2z * e1x - e1z * e2x) / det
+        c = z0 - a * x0 - b * y0
+        r0 = int(min(max(np.ceil(min(y0, y1, y2) - 0.5), 0.0), float(H)))
+        r1 = int(min(max(np.ceil(max(y0, y1, y2) - 0.5), 0.0), float(H)))
+        step = np.float32(a)
+        for row in range(r0, r1):
+            yc = row + 0.5
+            xl, xr = math.inf, -math.inf
+            for e in range(3):
+                i, j = e, (e + 1) % 3
+                ya, yb, xa, xb = y[k, i], y[k, j], x[k, i], x[k, j]
+                if min(ya, yb) <= yc and yc < max(ya, yb):
+                    xs = xa + (yc - ya) * (xb - xa) / (yb - ya)
+                    xl = min(xl, xs)
+                    xr = max(xr, xs)
+            c0 = min(max(np.ceil(xl - 0.5), 0.0), float(W))
+            c1 = min(max(np.ceil(xr - 0.5), 0.0), float(W))
+            ncol = int(max(c1 - c0, 0.0))
+            if ncol <= 0:
+                continue
+            start = row * W + int(c0)
+            d0 = np.float32(a * (c0 + 0.5) + b * (row + 0.5) + c)
+            for o in range(ncol):
+                depth = d0 + step * np.float32(o)
+                p = start + o
+                if depth >= zbuf[p]:
+                    zbuf[p] = depth
+                    image[p, 0], image[p, 1], image[p, 2] = rgb[k, 0], rgb[k, 1], rgb[k, 2]
+
+
+# the disk cache of the kernel keyed on every kernel source (nbcache)
+bind(globals())
