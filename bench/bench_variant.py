@@ -85,6 +85,11 @@ handed to an inlined function at every vertex); without them one direction's con
 te identical bit for bit.  The free rotations' rotation hits (the whole-cycle proof, the polysector) now seek a
 point's hits only near its circle about the turning axis: the polysector's 1 500 searches 4.40 -> 1.19 s, the
 whole-cycle proof unchanged (1.55 vs 1.60 s: its windows are narrow).
+
+2026-11-30, the next session (2 cores, idle; 57047af in a worktree and 9fdd08d in turn, four rounds of two): the
+seed-002 pair 5.59 / 5.71 / 5.74 / 5.69 -> 5.68 / 6.07 / 5.68 / 5.64 CPU s: unchanged (that session's work, the
+least-overlap lens cuts, the compiled pictures and the faster vertex merge, is outside a conjugate pair's proof-depth
+variant; the two rotation-hit kernels made one source cost nothing).
 """
 
 from __future__ import annotations

@@ -29,6 +29,11 @@ no process that holds the CAD kernel meets 400 MiB.
 2026-11-30, a new session on a slower machine (2 cores, idle; 9199b6c): ncgears 48.85 s wall (51.70 CPU s), peak
 289 MiB; ours 16.00 s wall (25.29 CPU s), peak 750 MiB: wall ratio 0.328, CPU ratio 0.489; ``ncg_elliptical.toml``
 11.75 s wall.
+2026-11-30, the next session (2 cores, idle; 9fdd08d, the pictures' rasteriser compiled): ncgears 43.91 s wall (46.28
+CPU s), peak 288 MiB; ours 12.13 s wall (18.84 CPU s), peak 642 MiB: wall ratio 0.276, CPU ratio 0.407;
+``ncg_elliptical.toml`` 9.28 s wall.  The peak's floor, measured again: the build's process holds 464 MiB once its
+modules are loaded (cadquery is imported with VTK deferred, ``solids/cq_import.py``: 345 MiB with it, OCP alone 286
+MiB), before any part data; it peaks at 620-640 MiB at the end of the build.
 """
 
 from __future__ import annotations
