@@ -14,24 +14,13 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from ..geometry.rows import row_ids as _row_ids
 from ..nbcache import bind
 
 #: triangles turning less than this from each other are shaded as one surface
 CREASE_DEG = 30.0
 #: vertices closer than this (mm) are one vertex
 MERGE_MM = 1e-6
-
-
-def _row_ids(rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """(index of the first of each distinct row, in the rows' sorted order; the distinct row of each row)
-    of an integer array (n, c): np.unique(axis=0) by a lexical sort of the columns (much faster)."""
-    order = np.lexsort(rows.T[::-1])
-    s = rows[order]
-    new = np.r_[True, np.any(s[1:] != s[:-1], axis=1)]
-    ids = np.cumsum(new) - 1
-    inverse = np.empty(len(rows), np.int64)
-    inverse[order] = ids
-    return order[new], inverse
 
 
 def _sum_rows(index: np.ndarray, values: np.ndarray, n: int) -> np.ndarray:

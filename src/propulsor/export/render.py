@@ -122,11 +122,11 @@ def render_iso(items, path: str | Path, width: int = PICTURE_WIDTH_PX, view=VIEW
 @njit(cache=True)
 def _paint(x, y, z, rgb, W, H, zbuf, image):
     """The span rasteriser's fragments (``tests/render_reference.py``, the numpy one it replaces), each painted as
-    it is made: the same operations on the same floats (the depth
-    plane and the row's span in float64, each pixel's depth in float32 from the span's first one), a fragment
-    painted into ``image`` (rows of ``rgb``) and ``zbuf`` where its depth is at least the buffer's.  Painting every
-    fragment in order this way leaves each pixel the last of its nearest fragments, as painting the fragments of
-    each run that are at least as near as the run's nearest."""
+    it is made: the same operations on the same floats (the depth plane and the row's span in float64, each pixel's
+    depth in float32 from the span's first one), a fragment painted into ``image`` (rows of ``rgb``) and ``zbuf``
+    where its depth is at least the buffer's.  Painting every fragment in order this way leaves each pixel the last
+    of its nearest fragments, as painting the fragments of each run that are at least as near as the run's
+    nearest."""
     for k in range(len(x)):
         x0, x1, x2 = x[k, 0], x[k, 1], x[k, 2]
         y0, y1, y2 = y[k, 0], y[k, 1], y[k, 2]

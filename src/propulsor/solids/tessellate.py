@@ -25,6 +25,7 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
+from ..geometry.rows import row_ids
 from ..policy import ANGULAR_TOL_RAD, CHORD_TOL_MM, MESH_CHORD_LIMIT_MM
 from .kernel import occ_shape
 
@@ -35,21 +36,13 @@ MERGE_TOL_MM = 1e-6
 
 
 def _equal_rows(v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """``np.unique(v, axis=0, return_inverse=True)`` of an (n, k) float array: its distinct rows in lexicographic
-    order and each row's index among them, by one stable lexicographic sort of the columns (numpy's row-unique
-    sorts the rows as records, several times slower on a mesh's vertices).  Rows are equal as floats are (0.0 and
-    -0.0 alike, as numpy's); an array with a NaN goes to numpy itself."""
+    """``np.unique(v, axis=0, return_inverse=True)`` of an (n, k) float array, n >= 1 (:func:`.geometry.rows.row_ids`);
+    an array with a NaN goes to numpy itself."""
     if not np.all(np.isfinite(v)):
         u, inv = np.unique(v, axis=0, return_inverse=True)
         return u, inv.reshape(-1)
-    order = np.lexsort(v.T[::-1])
-    s = v[order]
-    first = np.empty(len(v), bool)
-    first[0] = True
-    np.any(s[1:] != s[:-1], axis=1, out=first[1:])
-    inv = np.empty(len(v), np.int64)
-    inv[order] = np.cumsum(first) - 1
-    return s[first], inv
+    first, inv = row_ids(v)
+    return v[first], inv
 
 
 def merge_close_vertices(vertices: np.ndarray, faces: np.ndarray, tol: float = MERGE_TOL_MM,
