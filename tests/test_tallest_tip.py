@@ -144,3 +144,40 @@ def test_the_secant_steps_are_capped_and_the_bisection_still_decides(monkeypatch
             # the first `cap` evaluations are the secant's, off the halving grid
             mids = {h_lo + (h_hi - h_lo) * j / 2 ** i for i in range(1, 4) for j in range(1, 2 ** i, 2)}
             assert not set(calls[:cap]) & mids
+
+
+def _stopping(c_land, c_stop, t_min=0.625):
+    """A smooth land reaching t_min at c_land on flanks that stop at c_stop (no tip above: land -1)."""
+    def thickness(h):
+        if h > c_stop:
+            return (-1.0, None, None)
+        return (2.9 - (2.9 - t_min) * (h / c_land) ** 1.3, ("right", h), ("left", h))
+    return thickness
+
+
+@pytest.mark.parametrize("c_land, c_stop", [(0.4, 0.2157626903), (1.9, 1.7), (2.0, 1.0 + 2.0 ** -21),
+                                            (1.7, 1.9), (0.2154261170, 0.3)])
+@pytest.mark.parametrize("error", [0.0, 3e-9, -3e-9, 2e-7, -2e-7, 1e-3, -0.05, 5.0, -5.0])
+def test_the_flanks_reach_guessed_gives_the_bisections_height_bit_for_bit_and_few_evaluations_when_close(
+        c_land, c_stop, error):
+    """``reach``: where the tip leaves a flank, guessed (``_flank_reach``) with an error.  Whatever the guess, the
+    same height and tip as the bisection (only heights evaluated decide); the flank's end deciding the height (c_stop
+    below c_land) and guessed within ``TIP_REACH_PROBE_MM``, a handful of evaluations against the bisection's 21; the
+    land deciding it (the flank stops above), the Illinois method's few from a tipped upper end."""
+    from propulsor.policy import TIP_REACH_PROBE_MM
+
+    t_min = 0.625
+    thickness = _stopping(c_land, c_stop, t_min)
+    h_lo, h_hi = 0.0, max(c_land, c_stop) + 1.25
+    at_lo, at_hi = thickness(h_lo), thickness(h_hi)
+    assert at_hi[1] is None
+    ref = _bisection(thickness, h_lo, at_lo, h_hi, t_min)
+    counted, calls = _counted(thickness)
+    guesses = []
+    got = _tallest_tip(counted, h_lo, at_lo, h_hi, at_hi, t_min, lambda: guesses.append(1) or c_stop + error)
+    assert got[0] == ref[0] and got[1] == ref[1]
+    assert guesses == [1]
+    halvings = math.ceil(math.log2((h_hi - h_lo) / TIP_HEIGHT_TOL_MM))
+    assert len(calls) <= halvings + 2  # a bad guess costs its two probes at most
+    if abs(error) < TIP_REACH_PROBE_MM:
+        assert len(calls) <= (4 if c_stop < c_land else 12)

@@ -187,6 +187,9 @@ TOOL_TIP_LAND_TOL_MM = 1e-12
 MODULE_MATCH_TOL_MM = 1e-12
 #: bisection of the shortened tip height stops at this interval (mm)
 TIP_HEIGHT_TOL_MM = 1e-6
+#: a shortened tip's search first evaluates the heights this far either side of where it guesses the tip leaves a
+#: flank (``gears.noncircular_teeth._tallest_tip``): far below TIP_HEIGHT_TOL_MM, well above the guess's error
+TIP_REACH_PROBE_MM = 5e-9
 #: the most secant (Illinois) steps of the tip shortening's search before it bisects (noncircular_teeth._tallest_tip)
 TIP_SECANT_STEPS_MAX = 40
 

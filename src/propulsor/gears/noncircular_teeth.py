@@ -38,7 +38,7 @@ import numpy as np
 from scipy.optimize import fsolve, minimize_scalar
 
 from ..errors import InputError, require
-from ..policy import (ROOT_BRIDGE_MAX_MODULE, FD_STEP_ARC_RAD, FD_STEP_PHI_RAD, FD_STEP_REL, MINIMIZE_XATOL, NEWTON_STOP_MM, FOOT_GAUSS_NEWTON_STEPS, ROOT_XTOL_FINE,
+from ..policy import (ROOT_BRIDGE_MAX_MODULE, TIP_REACH_PROBE_MM, FD_STEP_ARC_RAD, FD_STEP_PHI_RAD, FD_STEP_REL, MINIMIZE_XATOL, NEWTON_STOP_MM, FOOT_GAUSS_NEWTON_STEPS, ROOT_XTOL_FINE,
                       SOLVE_RESIDUAL_MM, TIP_HEIGHT_TOL_MM, TIP_SECANT_STEPS_MAX)
 from .cutters import CutterSide, RackCutter, ShaperCutter
 from .envelope import (EnvelopeCurve, ExternalCircleCentrode, PitchCurveCentrode, ShaperOnRackCentrode, envelope_points,
@@ -405,7 +405,26 @@ def _concave_zones(curve: BodyPitchCurve) -> list[tuple[float, float]]:
     return out
 
 
-def _tallest_tip(thickness, h_lo: float, at_lo: tuple, h_hi: float, at_hi: tuple, t_min: float):
+def _flank_reach(sides, curve: BodyPitchCurve, phi_guess: float, span: float) -> float:
+    """Where a tooth's tip leaves its flanks: the height above the pitch curve (along its outward normal at the foot
+    point) of the higher end of each side's flank, the lower of the two sides.  The foot points as in
+    ``make_side``'s ``heights_of``: the nearest of the tip search's 121 sampled angles, then Gauss-Newton on
+    (E - P(phi)) . P'(phi) = 0 within the samples either side.  Only a guess for ``_tallest_tip``'s bracket: what it
+    decides rests on the heights it evaluates."""
+    E = np.array([sd.flank.at(u) for sd in sides for u in (sd.flank.u0, sd.flank.u1)])
+    grid = phi_guess + np.linspace(-0.6, 0.6, 121) * span
+    j = np.clip(np.argmin(np.linalg.norm(E[:, None, :] - curve.point(grid)[None, :, :], axis=2), axis=1), 1,
+                len(grid) - 2)
+    lo, hi, ph = grid[j - 1], grid[j + 1], grid[j]
+    for _ in range(FOOT_GAUSS_NEWTON_STEPS):
+        F = curve.point(ph)
+        dF = (curve.point(ph + FD_STEP_PHI_RAD) - curve.point(ph - FD_STEP_PHI_RAD)) / (2.0 * FD_STEP_PHI_RAD)
+        ph = np.clip(ph - np.einsum("ij,ij->i", F - E, dF) / np.einsum("ij,ij->i", dF, dF), lo, hi)
+    hgt = np.einsum("ij,ij->i", E - curve.point(ph), curve.normal(ph))
+    return float(min(max(hgt[0], hgt[1]), max(hgt[2], hgt[3])))
+
+
+def _tallest_tip(thickness, h_lo: float, at_lo: tuple, h_hi: float, at_hi: tuple, t_min: float, reach=None):
     """(h, thickness(h)) of the bisection of [h_lo, h_hi] down to ``TIP_HEIGHT_TOL_MM`` for the largest tip height
     whose land is at least ``t_min`` (``thickness(h) = (land, right hit, left hit)``; at_lo, at_hi: its values at
     h_lo and h_hi, at_lo[0] >= t_min > at_hi[0]), in fewer evaluations, the
@@ -413,7 +432,13 @@ def _tallest_tip(thickness, h_lo: float, at_lo: tuple, h_hi: float, at_hi: tuple
     land is smooth and falls with the height), then the bisection's halvings are taken over, each decided by that
     bracket and evaluated only within 1e-8 mm of it.  Where the flank stops short of a height (no tip: a hit None) the
     halvings are evaluated from there on, as before.  Both rest on what the bisection already assumed: a land of at
-    least ``t_min`` at a height, and a tip, hold at every lower height too."""
+    least ``t_min`` at a height, and a tip, hold at every lower height too.
+
+    ``reach()``, when given, guesses the height where the tip leaves a flank (``_flank_reach``).  Where h_hi has no
+    tip, the heights ``TIP_REACH_PROBE_MM`` either side of that guess are evaluated first: they bracket the height
+    the bisection would otherwise close in on evaluation by evaluation (the flank's end), or, below the flank's end
+    with too thin a land, give the Illinois method a tipped upper end.  Whatever the guess, the bracket is made of
+    heights evaluated."""
     def f(res):
         return res[0] - t_min
 
@@ -421,6 +446,16 @@ def _tallest_tip(thickness, h_lo: float, at_lo: tuple, h_hi: float, at_hi: tuple
     # flank does not reach (a hit None) the land jumps, and the bisection below finds that height as it always did
     a, b, fa, fb, kept = h_lo, h_hi, f(at_lo), f(at_hi), 0
     tipped = at_hi[1] is not None and at_hi[2] is not None
+    if not tipped and reach is not None:
+        r = reach()
+        for hp in (r - TIP_REACH_PROBE_MM, r + TIP_REACH_PROBE_MM):
+            if a < hp < b:
+                res = thickness(hp)
+                if f(res) >= 0.0:
+                    a, fa = hp, f(res)
+                else:
+                    b, fb = hp, f(res)
+                    tipped = res[1] is not None and res[2] is not None
     steps = 0
     # at most TIP_SECANT_STEPS_MAX secant steps (Illinois converges in 6 to 12 on a tooth's land): the bracket is
     # valid after any of them and the bisection below decides the height, so a crawl is cut short, never wrong
@@ -562,7 +597,8 @@ def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame 
                 raise InputError(
                     "m", m, f"{role} tooth at phi = {ph_k:.4f} rad is pointed or cannot be cut: {why}",
                     "use a smaller profile shift, a larger shaper, more teeth or a wider smoothing")
-            h, (t, hr, hl) = _tallest_tip(thickness, h_lo, (t_lo, hr_lo, hl_lo), h, (t, hr, hl), spec.tip_min_mm)
+            h, (t, hr, hl) = _tallest_tip(thickness, h_lo, (t_lo, hr_lo, hl_lo), h, (t, hr, hl), spec.tip_min_mm,
+                                          lambda: _flank_reach((R, Lf), curve, ph_k, span))
             shortened = True
         _trim_undercut(R, hr[0])
         _trim_undercut(Lf, hl[0])
