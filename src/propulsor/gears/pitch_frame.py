@@ -206,6 +206,10 @@ class BodyPitchCurve:
             return np.array([[px + h * nx, py + h * ny]])
         return self.point(phi) + h * self.normal(phi)
 
+    def equidistant(self, h: float) -> "Equidistant":
+        """The equidistant at height h as a curve of phi (``offset``), for the spline fits."""
+        return Equidistant(self, float(h))
+
     # ---- one point: the operations of the array functions above on one float, in ``math`` ----
     def _at1(self, phi: float):
         """(x, y, dx/dphi, dy/dphi) of the pitch point of driven angle phi (one float)."""
@@ -228,3 +232,17 @@ class BodyPitchCurve:
     def rho(self, phi):
         """Signed radius of curvature (> 0 convex) at the pitch point of driven angle phi."""
         return self.pc.rho_H(phi) if self.role == "driven" else self.pc.rho(phi)
+
+
+class Equidistant:
+    """The equidistant at height ``h`` of a body pitch curve as a curve of the driven angle phi:
+    ``curve.offset(phi, h)`` (the tip land, h > 0, and the root, h < 0)."""
+
+    __slots__ = ("curve", "h")
+
+    def __init__(self, curve: BodyPitchCurve, h: float):
+        self.curve, self.h = curve, h
+
+    def __call__(self, phi):
+        return self.curve.offset(phi, self.h)
+

@@ -51,6 +51,8 @@ class SmoothedWalkingLaw:
 
     # ---- the law interface (``laws.law.Law``) ---------------------------------------
     kind = "walking"
+    #: the array functions give each angle the value it gets alone (law.py: ``elementwise``)
+    elementwise = True
     period = LEG_PERIOD
     period_start = -math.pi / 4
     periods = LEGS

@@ -18,7 +18,7 @@ from ..policy import SPLINE_FIT_TOL_MM
 from .profile import Spline
 from .spline_foot import foot_distances
 
-__all__ = ["fit_curve", "fit_points", "spline_deviation"]
+__all__ = ["fit_curve", "fit_curves", "fit_points", "spline_deviation"]
 
 
 def _chord_params(P: np.ndarray) -> np.ndarray:
@@ -50,24 +50,89 @@ def fit_curve(func, u0: float, u1: float, tol: float = SPLINE_FIT_TOL_MM, n0: in
     """Clamped cubic B-spline through the exact curve ``func(u) -> (n,2)`` on [u0, u1],
     within ``tol`` (mm) of it everywhere checked (1/4, 1/2, 3/4 of every interval).  ``func`` is evaluated once
     at each parameter over the refinement's rounds (a point of the curve depends on its parameter alone)."""
+    fit = _fit_steps(u0, u1, tol, n0, max_points)
+    try:
+        uu = next(fit)
+        while True:
+            uu = fit.send(np.asarray(func(uu), float))
+    except StopIteration as done:
+        return done.value
+
+
+def fit_curves(curves, evaluate, tol: float = SPLINE_FIT_TOL_MM, n0: int = 12, max_points: int = 4000) -> list:
+    """:func:`fit_curve` of every ``(func, u0, u1)`` of ``curves``, in lock step: each round of refinement asks
+    ``evaluate(requests)`` for the new points of all the fits still refining at once (``requests``: a list of
+    ``(func, parameters)``; it returns their points, ``func(parameters)`` each, in order), so that one call can
+    compute the points of many curves of one kind together.  The splines are those of :func:`fit_curve`, each fit
+    asking for the same parameters in the same order, when ``evaluate`` gives the points ``func`` gives.  An error
+    of a fit is raised once every fit has ended, the first fit's of those that failed (as one after the other)."""
+    require(tol > 0, "tol", tol, "must be > 0")
+    out: list = [None] * len(curves)
+    errors: dict[int, BaseException] = {}
+    live: dict[int, tuple] = {}  # fit index -> (generator, parameters it asks for)
+    for i, (_, u0, u1) in enumerate(curves):
+        fit = _fit_steps(u0, u1, tol, n0, max_points)
+        try:
+            live[i] = (fit, next(fit))
+        except StopIteration as done:
+            out[i] = done.value
+        except Exception as exc:  # noqa: BLE001 - raised below in the fits' order
+            errors[i] = exc
+    while live:
+        idx = list(live)
+        try:
+            pts = evaluate([(curves[i][0], live[i][1]) for i in idx])
+        except Exception:  # noqa: BLE001 - each curve on its own: the error goes to the fit whose curve raised it
+            pts = []
+            for i in idx:
+                try:
+                    pts.append(np.asarray(curves[i][0](live[i][1]), float))
+                except Exception as exc:  # noqa: BLE001
+                    errors[i] = exc
+                    pts.append(None)
+        for i, P in zip(idx, pts):
+            fit = live.pop(i)[0]
+            if P is None:
+                continue
+            try:
+                live[i] = (fit, fit.send(np.asarray(P, float)))
+            except StopIteration as done:
+                out[i] = done.value
+            except Exception as exc:  # noqa: BLE001
+                errors[i] = exc
+    if errors:
+        raise errors[min(errors)]
+    return out
+
+
+def _fit_steps(u0: float, u1: float, tol: float, n0: int, max_points: int):
+    """The refinement of :func:`fit_curve` as a generator: it yields the parameters whose curve points it needs (each
+    parameter once over the rounds, in the order first asked) and is sent those points; it returns the spline."""
     require(tol > 0, "tol", tol, "must be > 0")
     v = np.linspace(0.0, 1.0, n0)  # normalised parameter (u1 < u0 allowed)
     known: dict[float, np.ndarray] = {}  # the curve's points by parameter: each evaluated once over the rounds
 
+    def missing(uu: np.ndarray) -> np.ndarray:
+        return np.array([x for x in dict.fromkeys(uu.tolist()) if x not in known], float)
+
     def at(uu: np.ndarray) -> np.ndarray:
-        new = np.array([x for x in dict.fromkeys(uu.tolist()) if x not in known], float)
-        if len(new):
-            for x, q in zip(new.tolist(), np.asarray(func(new), float)):
-                known[x] = q
         return np.array([known[x] for x in uu.tolist()]).reshape(len(uu), 2)
 
     while True:
         u = u0 + (u1 - u0) * v
+        new = missing(u)
+        if len(new):
+            for x, q in zip(new.tolist(), (yield new)):
+                known[x] = q
         P = at(u)
         bs, t = _interp(P)
         fr = np.array([0.25, 0.5, 0.75])
         uq = (u[:-1, None] + fr[None, :] * np.diff(u)[:, None]).ravel()
         tq = (t[:-1, None] + fr[None, :] * np.diff(t)[:, None]).ravel()
+        new = missing(uq)
+        if len(new):
+            for x, q in zip(new.tolist(), (yield new)):
+                known[x] = q
         err = _project(bs, at(uq), tq, t[0], t[-1]).reshape(-1, 3).max(axis=1)
         bad = err > 0.5 * tol
         if not np.any(bad):

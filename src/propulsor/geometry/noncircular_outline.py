@@ -17,7 +17,8 @@ import numpy as np
 from ..gears.noncircular import PitchCurves
 from ..gears.noncircular_teeth import ArcFrame, ToothSpec, generate_teeth
 from ..policy import OUTLINE_JOINT_TOL_MM, OUTLINE_JOINT_TOL_REPHASED_MM, SPLINE_FIT_TOL_MM
-from .bspline import fit_curve
+from ..gears.curve_batch import evaluate_curves
+from .bspline import fit_curve, fit_curves
 from .profile import Loop, Profile, Spline
 
 __all__ = ["GeneratedGear", "generate_gear", "fit_piece", "FIT_N0"]
@@ -78,10 +79,9 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
     segs = []
     root_r = []
     hf = -spec.h_root
-    for i, (unit, _phr, phl, _gr, gl) in enumerate(units):
-        segs.extend(unit)
-        nxt = units[(i + 1) % len(units)]
-        ph_a, ph_b = phl, nxt[1]
+    spaces = []  # per space: (phi of its left root point, of the next tooth's right one), unwrapped
+    for i, (_unit, _phr, phl, _gr, _gl) in enumerate(units):
+        ph_a, ph_b = phl, units[(i + 1) % len(units)][1]
         # unwrap: the next tooth's right root point follows counter-clockwise
         if role == "driven":
             while ph_b < ph_a:
@@ -89,7 +89,19 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
         else:  # driver: counter-clockwise = decreasing phi; one driver turn = 2 pi / n of phi
             while ph_b > ph_a:
                 ph_b -= 2 * math.pi / n
-        if abs(ph_b - ph_a) > math.pi / (1 if role == "driven" else n):
+        spaces.append((ph_a, ph_b))
+    crossed = [abs(ph_b - ph_a) > math.pi / (1 if role == "driven" else n) for ph_a, ph_b in spaces]
+    lifted = [units[i][4] > 0.0 or units[(i + 1) % len(units)][3] > 0.0 for i in range(len(units))]
+    # the roots of the spaces whose feet did not cross and whose fillets reach the root equidistant, fitted in lock
+    # step (a lifted root, below, on its own)
+    plain = [i for i in range(len(units)) if not crossed[i] and not lifted[i]]
+    roots = dict(zip(plain, fit_curves([(curve.equidistant(hf),) + spaces[i] for i in plain], evaluate_curves, tol,
+                                       n0=FIT_N0)))
+    for i, (unit, _phr, phl, _gr, gl) in enumerate(units):
+        segs.extend(unit)
+        nxt = units[(i + 1) % len(units)]
+        ph_a, ph_b = spaces[i]
+        if crossed[i]:
             # the feet crossed (a re-phased shaper's space whose root land vanished): the two fillets
             # cross above the root equidistant, both are trimmed at the crossing and meet there
             j = (i + 1) % len(units)
@@ -105,13 +117,13 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
             root_r.append(float(np.hypot(*X)))
             continue
         g_a, g_b = gl, nxt[3]
-        if g_a > 0.0 or g_b > 0.0:
+        if lifted[i]:
             # a re-phased shaper's fillet may stop short of the root equidistant (ToothSide.root_gap_mm,
             # its foot at phi_root): the root rises linearly in phi from one fillet start to the other
             lift = lambda ph: g_a + (g_b - g_a) * (np.asarray(ph, float) - ph_a) / (ph_b - ph_a)
             root = fit_piece(lambda ph: curve.offset(ph, hf + lift(ph)[:, None]), ph_a, ph_b, tol)
         else:
-            root = fit_piece(lambda ph: curve.offset(ph, hf), ph_a, ph_b, tol)
+            root = roots[i]
         root_r.append(float(np.min(np.linalg.norm(root.poles, axis=1))))
         segs.append(root)
     rephased = any(sd.root_gap_mm > 0.0 or type(sd.fillet).__name__ == "RoundEnvelope"
@@ -164,25 +176,32 @@ def _fit_forked(order) -> list:
 
 
 def _fit_teeth(curve, teeth_sides, tips, order, tol, tick=None) -> list:
-    units = []
+    """The pieces of the teeth in ``order``, fitted in lock step (:func:`.bspline.fit_curves`: each round's new
+    points of a kind of piece computed for all the teeth at once, :func:`..gears.curve_batch.evaluate_curves`)."""
+    curves, spans = [], []
     for k in order:
         R, Lf = teeth_sides[k]
         h, hr, hl = tips[k]
-        fil_r = fit_piece(R.fillet, R.fillet.u0, R.fillet.u1, tol)
-        fla_r = fit_piece(R.flank, R.flank.u0, hr[0], tol)
-        tip = fit_piece(lambda ph: curve.offset(ph, h), hr[1], hl[1], tol)
-        fla_l = fit_piece(Lf.flank, hl[0], Lf.flank.u0, tol)
-        fil_l = fit_piece(Lf.fillet, Lf.fillet.u1, Lf.fillet.u0, tol)
+        fits = []
         # a side whose flank reaches the root itself (ToothSide.fillet_is_flank) is one piece
         if R.fillet_is_flank:
-            fil_r = fla_r = fit_piece(R.flank, R.fillet.u0, hr[0], tol)
+            fits.append((R.flank, R.fillet.u0, hr[0]))
+        else:
+            fits += [(R.fillet, R.fillet.u0, R.fillet.u1), (R.flank, R.flank.u0, hr[0])]
+        fits.append((curve.equidistant(h), hr[1], hl[1]))
         if Lf.fillet_is_flank:
-            fla_l = fil_l = fit_piece(Lf.flank, hl[0], Lf.fillet.u0, tol)
-        pieces = [p_ for k_, p_ in enumerate([fil_r, fla_r, tip, fla_l, fil_l])
-                  if not (k_ == 0 and R.fillet_is_flank) and not (k_ == 4 and Lf.fillet_is_flank)]
+            fits.append((Lf.flank, hl[0], Lf.fillet.u0))
+        else:
+            fits += [(Lf.flank, hl[0], Lf.flank.u0), (Lf.fillet, Lf.fillet.u1, Lf.fillet.u0)]
+        spans.append((len(curves), len(fits)))
+        curves += fits
+    splines = fit_curves(curves, evaluate_curves, tol, n0=FIT_N0)
+    units = []
+    for k, (at, n) in zip(order, spans):
+        R, Lf = teeth_sides[k]
         # a shaper with its own x0 may stop short of the root equidistant (ToothSide.root_gap_mm): the root
         # below is lifted to meet it (above)
-        units.append((pieces, R.phi_root, Lf.phi_root, R.root_gap_mm, Lf.root_gap_mm))
+        units.append((splines[at:at + n], R.phi_root, Lf.phi_root, R.root_gap_mm, Lf.root_gap_mm))
         if tick is not None:
             tick(len(units))
     return units

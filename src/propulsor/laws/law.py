@@ -11,7 +11,10 @@ The driven pitch curve has ``periods`` equal lobes; the driver's repeats every n
 curve closes on one body turn only if n divides ``periods`` (``require_law``).  Each law names the
 smooth pieces of one reference period [period_start, period_start + P] (``breakpoints``: where U
 is only C2 or jumps in slope) and its corners (``corner_phis``: where U' jumps, the pitch curves
-have a kink).  Implementations: ``laws.walking.WalkingLaw`` and its blend
+have a kink).  A law whose array functions give every angle the value that angle gets alone, bit for bit (no
+iteration until the whole array has converged, no sum across it; a small array's one-point path the same as the
+array path's) says so with ``elementwise = True``: the curves of many teeth are then evaluated in one array
+(``gears.curve_batch``).  Implementations: ``laws.walking.WalkingLaw`` and its blend
 ``gears.smoothed_law.SmoothedWalkingLaw``, ``laws.ratio_laws`` (elliptical, Fourier series).
 """
 

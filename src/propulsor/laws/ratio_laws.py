@@ -88,6 +88,8 @@ class EllipticalLaw(_PeriodicLaw):
     k: int = 1
 
     kind = "elliptical"
+    #: the array functions give each angle the value it gets alone (law.py: ``elementwise``)
+    elementwise = True
 
     def __post_init__(self):
         e = require_finite("eccentricity", self.e)
@@ -163,6 +165,8 @@ class FourierLaw(_PeriodicLaw):
     sin: tuple = ()
 
     kind = "fourier"
+    #: not elementwise (law.py): theta's Newton steps go on until every angle of the array has converged
+    elementwise = False
 
     def __post_init__(self):
         k = _lobes(self.k)

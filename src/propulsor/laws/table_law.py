@@ -159,6 +159,8 @@ class TableLaw:
     key: str = "law_file"
 
     kind = "table"
+    #: the array functions give each angle the value it gets alone (law.py: ``elementwise``)
+    elementwise = True
     scalar_path = False
     corner_phis = ()
     period_start = 0.0
