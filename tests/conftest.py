@@ -155,3 +155,13 @@ def assert_explained():
         assert any(c["name"] == "report: every derived value explained" and c["passed"] for c in m["checks"])
 
     return check
+
+
+@pytest.fixture(autouse=True)
+def _fresh_law_searches():
+    """Each test makes its own law searches: gears/law_search.py keeps a process's last searches by their inputs, and
+    a test that patches what a search reads must not be handed another test's result."""
+    from propulsor.gears import law_search
+
+    law_search._SEARCHES.clear()
+    yield

@@ -214,3 +214,44 @@ def test_search_over_shapers_makes_each_blend_once_and_equals_one_shaper_searche
     strip = lambda p: (p.d0_mm, p.z0, p.delta, p.u_h_rel, p.L, p.ripple, p.margin_mm, p.binding)
     assert sorted(map(strip, both.points), key=lambda t: t[:3]) == sorted(map(strip, alone), key=lambda t: t[:3])
     assert {key(p) for p in both.points} == {key(p) for p in alone}
+
+
+def test_a_search_with_equal_inputs_is_not_made_again_and_is_the_search_made_anew(monkeypatch):
+    """search_law keeps the process's last searches by their inputs' values (a study varying the face width, the load
+    or the backlash searches once): the same result for equal inputs, no blend made for it; another input (the
+    band) searches again; the oldest of more than ``_KEPT`` is dropped; a refusal is not kept."""
+    import propulsor.gears.law_search as ls
+
+    m, z_H = 2.5, 80
+    L_ref = centre_distance(LAW2, m, z_H)
+    first = search_law(LAW2, m, z_H, 0.5, [(25.0, catalogue_shaper(25.0, m))], L_ref, 5.0)
+    made = []
+    real = ls.SmoothedWalkingLaw
+
+    def counted(law, delta, u_h=None):
+        made.append((delta, u_h))
+        return real(law, delta, u_h=u_h)
+
+    monkeypatch.setattr(ls, "SmoothedWalkingLaw", counted)
+    again = search_law(WalkingLaw(**SEED_002), 2.5, 80, 0.5, [(25.0, catalogue_shaper(25.0, 2.5))], L_ref, 5.0)
+    assert again is first and made == []  # equal values, new objects: found
+    wider = search_law(LAW2, m, z_H, 0.5, [(25.0, catalogue_shaper(25.0, m))], L_ref, 6.0)
+    assert len(made) == wider.evaluations > 0  # another band: searched
+    ls._SEARCHES.clear()
+    monkeypatch.setattr(ls, "SmoothedWalkingLaw", real)
+    anew = search_law(LAW2, m, z_H, 0.5, [(25.0, catalogue_shaper(25.0, m))], L_ref, 5.0)
+    assert anew is not first and anew == first
+
+    kept = dict(ls._SEARCHES)
+    for _ in range(2):
+        with pytest.raises(InputError):
+            search_law(LAW2, 2.5, 80, 0.5, [(25.0, catalogue_shaper(25.0, 2.5))], 150.0, 1.0)
+    assert ls._SEARCHES == kept  # a refusal is not kept: searched (and refused) each time
+
+    calls = []
+    monkeypatch.setattr(ls, "_search_law", lambda *a: calls.append(a[6]) or ("result", a[6]))
+    monkeypatch.setattr(ls, "_KEPT", 2)
+    ls._SEARCHES.clear()
+    for band in (1.0, 2.0, 1.0, 3.0, 2.0, 1.0):
+        assert search_law(LAW2, m, z_H, 0.5, [], L_ref, band) == ("result", band)
+    assert calls == [1.0, 2.0, 3.0, 2.0, 1.0]  # at 3.0, 1.0 (just used) kept and 2.0 dropped; at 2.0, 1.0 dropped

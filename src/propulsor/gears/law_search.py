@@ -80,12 +80,32 @@ def pareto(values: np.ndarray, ripple: np.ndarray, larger_is_better: bool) -> np
     return keep
 
 
+#: the last searches this process made, by their inputs (at most ``_KEPT``, the oldest dropped): a design study that
+#: varies what the search does not read (the face width, the load, the material, the backlash) searches once
+_SEARCHES: dict = {}
+_KEPT = 8
+
+
 def search_law(law: WalkingLaw, m: float, z_H: int, x: float, shapers, L_ref: float, L_band: float,
                alpha: float = math.radians(20.0), h_a: float = 1.0) -> LawSearch:
     """Scan the blend (delta on ``policy.LAW_SEARCH_DELTA_DEG``, smallest generable u_h by bisection)
     for every shaper of ``shapers`` ((d0_mm, ShaperCutter) pairs, the driven wheel's shift -x, the
     driver's +x).  InputError naming ``L_band`` (its value, the band and L_ref in the limit) when no
-    point is generable within the band |L - L_ref| <= L_band."""
+    point is generable within the band |L - L_ref| <= L_band.  A search made before with equal inputs (values: the
+    law and the shapers are frozen dataclasses) is not made again: its result is returned (``_SEARCHES``)."""
+    key = (law, float(m), int(z_H), float(x), tuple((float(d0), sh) for d0, sh in shapers), float(L_ref),
+           float(L_band), float(alpha), float(h_a))
+    found = _SEARCHES.pop(key, None)
+    if found is None:
+        found = _search_law(law, m, z_H, x, shapers, L_ref, L_band, alpha, h_a)
+    _SEARCHES[key] = found  # the latest last
+    while len(_SEARCHES) > _KEPT:
+        del _SEARCHES[next(iter(_SEARCHES))]
+    return found
+
+
+def _search_law(law: WalkingLaw, m: float, z_H: int, x: float, shapers, L_ref: float, L_band: float,
+                alpha: float, h_a: float) -> LawSearch:
     u = law.u
     pts = []
     n_eval = 0
