@@ -126,7 +126,25 @@ class Spline:
         return self._bs(np.asarray(u, float))
 
     def sample(self, chord_tol: float = CHORD_TOL_MM) -> np.ndarray:
-        """Sample so that the chord error stays below chord_tol (checked, refined)."""
+        """Sample so that the chord error stays below chord_tol (checked, refined).  Kept per tolerance on the spline
+        (its knots and poles never change: a frozen value) and returned read-only: a loop is sampled at the same
+        tolerance by its profile's orientation, the proofs and the exports."""
+        kept = self.__dict__.get("_samples")
+        if kept is None:
+            kept = self.__dict__["_samples"] = {}
+        p = kept.get(chord_tol)
+        if p is None:
+            p = kept[chord_tol] = self._sample(chord_tol)
+            p.flags.writeable = False
+        return p
+
+    def __getstate__(self):
+        """Pickled without the samples kept (a forked worker's results are pickled)."""
+        state = dict(self.__dict__)
+        state.pop("_samples", None)
+        return state
+
+    def _sample(self, chord_tol: float) -> np.ndarray:
         t0, t1 = self.knots[self.degree], self.knots[-self.degree - 1]
         bs = self._bs
         n = max(8, 4 * len(self.poles))
