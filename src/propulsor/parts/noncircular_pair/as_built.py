@@ -130,17 +130,35 @@ def _teeth_from_corners(o, turn, corner) -> np.ndarray:
     return np.array([0.5 * (a[i] + a[i + 1]) for i in range(0, len(a) - 1, 2)])
 
 
+#: the last pair prepared in this process, by the values it is made of: (key, PairOutlines).  The two directions of
+#: one pair run here one after the other when no worker is free, each on its own copy of the design (the pickle
+#: round trip of ``parallel.start``): the second takes the first's outlines, grids and distance fields (a resolved
+#: contact reads them and changes none of their values)
+_LAST: list = [None, None]
+
+
 def pair_outlines(d, mount: float) -> PairOutlines:
-    """The pair's outer outlines at the installed centre distance, prepared for contact events."""
+    """The pair's outer outlines at the installed centre distance, prepared for contact events (the one prepared last
+    when it was made of equal values: ``_LAST``)."""
+    import hashlib
+
     from ...checks.motion import outline
     from .pair_proof import _outer_only
 
-    drv, dvn = outline(_outer_only(d.driver.profile)), outline(_outer_only(d.driven.profile))
+    lines = (_outer_only(d.driver.profile), _outer_only(d.driven.profile))
     teeth = _tooth_angles(d)
+    h = hashlib.sha256(repr((float(mount), [len(x) for x in lines], teeth is None)).encode())
+    for arr in [*lines[0], *lines[1], *(teeth or ())]:
+        h.update(np.ascontiguousarray(arr, np.float64).tobytes())
+    key = h.digest()
+    if _LAST[0] == key:
+        return _LAST[1]
+    drv, dvn = outline(lines[0]), outline(lines[1])
     pair = PairOutlines(drv, dvn, mount, *(teeth if teeth is not None else (np.zeros(1), np.zeros(1))))
     if teeth is None:
         pair.driver_teeth = _teeth_from_corners(drv, pair.turn_drv, pair.corner_drv)
         pair.driven_teeth = _teeth_from_corners(dvn, pair.turn_dvn, pair.corner_dvn)
+    _LAST[:] = [key, pair]
     return pair
 
 
