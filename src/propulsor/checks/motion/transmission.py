@@ -17,6 +17,7 @@ from .outlines import row_norms, outline
 from .poses import Pose, apply_pose, compose_poses, inverse_pose
 from .distance import check_record
 from .backlash import free_rotation
+from .crossing import certainly_apart
 
 __all__ = ['TransmissionResult', 'transmission_sweep']
 
@@ -191,14 +192,16 @@ def transmission_sweep(driver_profile, driver_center, driven_profile, driven_cen
         M2 = Pose(s2 * phis[k], (0.0, 0.0), tuple(c2)).matrix()
         rel21 = compose_poses(inverse_pose(M1), M2)  # driven body -> driver body
         rel12 = inverse_pose(rel21)
-        area[k] = (drv.section ^ dvn.section.transform(rel21)).area()
+        P1 = apply_pose(rel21, dvn.points)
+        P2 = apply_pose(rel12, drv.points)
+        # the common area: 0 without the boolean where the boundaries certainly do not cross and neither body holds
+        # a loop of the other (crossing.certainly_apart, as the 2D sweeps do: the boolean's area is 0.0 there too)
+        area[k] = 0.0 if certainly_apart(drv, dvn, P1, P2, None) else (drv.section ^ dvn.section.transform(rel21)).area()
         if area[k] > policy.OVERLAP_AREA_TOL_MM2:  # interfering: free rotations have no meaning
             fwd[k] = back[k] = np.nan
             ptc[k] = ptd[k] = np.nan
             continue
-        P1 = apply_pose(rel21, dvn.points)
         C1 = rel21[:, 2]
-        P2 = apply_pose(rel12, drv.points)
         rho1 = row_norms(P1 - C1)
         lb1 = drv.boundary_lower_bound(P1)
         rho2 = row_norms(P2)
