@@ -90,6 +90,19 @@ whole-cycle proof unchanged (1.55 vs 1.60 s: its windows are narrow).
 seed-002 pair 5.59 / 5.71 / 5.74 / 5.69 -> 5.68 / 6.07 / 5.68 / 5.64 CPU s: unchanged (that session's work, the
 least-overlap lens cuts, the compiled pictures and the faster vertex merge, is outside a conjugate pair's proof-depth
 variant; the two rotation-hit kernels made one source cost nothing).
+
+2026-11-30, a third session (2 cores, idle but its speed drifting by 20-30 % from one minute to the next; 68c8983 in a
+worktree and the new tree in turn, two rounds of two, least of each): the seed-002 pair 6.24 / 5.72 -> 3.86 / 3.80
+CPU s (-33 %), its Fourier form 6.96 / 6.45 -> 6.11 / 5.73 (-11 %).  What changed, each with every output identical
+bit for bit: the shortened tips' search starts from where the tip leaves a flank (seed 002: 343 -> 84 evaluations);
+a wheel's spline fits in lock step, each round's points of a kind of piece for every tooth in one array (not for
+the Fourier law, which is not elementwise: hence its smaller gain); the law search kept by its inputs (the variant
+changes the face width: the seed-002 pair's 0.45 s search made once); a spline's samples kept; the two as-built
+directions share the pair prepared first; the whole-cycle proof's common area 0 without the boolean where the bodies
+are certainly apart.  The design alone (``Variant(...).design``, least of three): seed 002 2.13 -> 1.27 CPU s; the
+whole-cycle proof alone 1.32 -> 0.96 CPU s.  What is left (seed 002, py-spy): the as-built contact's compiled
+search 36 %, the design 31 % (the tip searches' fsolve, the fits' B-spline interpolation), the whole-cycle proof
+27 % (the crops' booleans, the free rotations).
 """
 
 from __future__ import annotations

@@ -34,6 +34,11 @@ CPU s), peak 288 MiB; ours 12.13 s wall (18.84 CPU s), peak 642 MiB: wall ratio 
 ``ncg_elliptical.toml`` 9.28 s wall.  The peak's floor, measured again: the build's process holds 464 MiB once its
 modules are loaded (cadquery is imported with VTK deferred, ``solids/cq_import.py``: 345 MiB with it, OCP alone 286
 MiB), before any part data; it peaks at 620-640 MiB at the end of the build.
+2026-11-30, a third session (2 cores, idle, the machine ~6 % slower than the last; e9c081e..44f74b8): ncgears 46.61 s
+wall (49.52 CPU s), peak 288 MiB; ours 13.84 s wall (21.84 CPU s), peak 665 MiB: wall ratio 0.297, CPU ratio 0.441;
+``ncg_elliptical.toml`` 10.31 s wall.  Our Fourier build against the session's start (68c8983), paired, two rounds:
+12.76 / 13.02 -> 12.92 / 12.61 s wall, 18.98 / 19.37 -> 18.83 / 18.55 CPU s: this session's gains (the lock-step fits,
+the law search kept) do not reach a Fourier law, and its peak grew by 10 MB (the spline samples kept).
 """
 
 from __future__ import annotations
