@@ -181,3 +181,23 @@ def test_the_flanks_reach_guessed_gives_the_bisections_height_bit_for_bit_and_fe
     assert len(calls) <= halvings + 2  # a bad guess costs its two probes at most
     if abs(error) < TIP_REACH_PROBE_MM:
         assert len(calls) <= (4 if c_stop < c_land else 12)
+
+
+@pytest.mark.parametrize("guess", [math.nan, math.inf, "raises"])
+def test_no_guess_of_the_flanks_reach_leaves_the_bisection_to_decide(guess):
+    """A guess that is not a number, or that fails, evaluates no probe: the bisection's height, its evaluations."""
+    thickness = _stopping(1.9, 1.7)
+    h_lo, h_hi = 0.0, 1.9 + 1.25
+    at_lo, at_hi = thickness(h_lo), thickness(h_hi)
+    ref = _bisection(thickness, h_lo, at_lo, h_hi, 0.625)
+
+    def reach():
+        if guess == "raises":
+            raise ValueError("no foot point")
+        return guess
+
+    counted, calls = _counted(thickness)
+    got = _tallest_tip(counted, h_lo, at_lo, h_hi, at_hi, 0.625, reach)
+    plain, plain_calls = _counted(thickness)
+    assert got == ref == _tallest_tip(plain, h_lo, at_lo, h_hi, at_hi, 0.625)
+    assert calls == plain_calls

@@ -95,7 +95,10 @@ def search_law(law: WalkingLaw, m: float, z_H: int, x: float, shapers, L_ref: fl
     law and the shapers are frozen dataclasses) is not made again: its result is returned (``_SEARCHES``)."""
     key = (law, float(m), int(z_H), float(x), tuple((float(d0), sh) for d0, sh in shapers), float(L_ref),
            float(L_band), float(alpha), float(h_a))
-    found = _SEARCHES.pop(key, None)
+    try:
+        found = _SEARCHES.pop(key, None)
+    except TypeError:  # an input that is not a value (unhashable): searched, not kept
+        return _search_law(law, m, z_H, x, shapers, L_ref, L_band, alpha, h_a)
     if found is None:
         found = _search_law(law, m, z_H, x, shapers, L_ref, L_band, alpha, h_a)
     _SEARCHES[key] = found  # the latest last

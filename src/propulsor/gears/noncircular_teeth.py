@@ -447,7 +447,10 @@ def _tallest_tip(thickness, h_lo: float, at_lo: tuple, h_hi: float, at_hi: tuple
     a, b, fa, fb, kept = h_lo, h_hi, f(at_lo), f(at_hi), 0
     tipped = at_hi[1] is not None and at_hi[2] is not None
     if not tipped and reach is not None:
-        r = reach()
+        try:
+            r = float(reach())
+        except (ArithmeticError, ValueError):  # no guess (a flank's end its solver cannot take): the bisection decides
+            r = math.nan
         for hp in (r - TIP_REACH_PROBE_MM, r + TIP_REACH_PROBE_MM):
             if a < hp < b:
                 res = thickness(hp)

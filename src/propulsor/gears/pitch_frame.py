@@ -245,4 +245,3 @@ class Equidistant:
 
     def __call__(self, phi):
         return self.curve.offset(phi, self.h)
-

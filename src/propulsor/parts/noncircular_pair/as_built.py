@@ -147,9 +147,10 @@ def pair_outlines(d, mount: float) -> PairOutlines:
 
     lines = (_outer_only(d.driver.profile), _outer_only(d.driven.profile))
     teeth = _tooth_angles(d)
-    h = hashlib.sha256(repr((float(mount), [len(x) for x in lines], teeth is None)).encode())
-    for arr in [*lines[0], *lines[1], *(teeth or ())]:
-        h.update(np.ascontiguousarray(arr, np.float64).tobytes())
+    arrays = [np.ascontiguousarray(a, np.float64) for a in (*lines[0], *lines[1], *(teeth or ()))]
+    h = hashlib.sha256(repr((float(mount), [len(x) for x in lines], teeth is None, [a.shape for a in arrays])).encode())
+    for a in arrays:
+        h.update(a.tobytes())
     key = h.digest()
     if _LAST[0] == key:
         return _LAST[1]
