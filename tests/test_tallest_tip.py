@@ -201,3 +201,23 @@ def test_no_guess_of_the_flanks_reach_leaves_the_bisection_to_decide(guess):
     plain, plain_calls = _counted(thickness)
     assert got == ref == _tallest_tip(plain, h_lo, at_lo, h_hi, at_hi, 0.625)
     assert calls == plain_calls
+
+
+def test_a_tip_that_vanishes_below_the_flanks_end_sends_the_search_back_to_the_plain_bisection():
+    """Next to a flank's cusp a tip can vanish below a height that has one (the seed-002 pair without backlash: none
+    0.5 um below the flank's end, one again 1 um below): the probes' bracket then leads the halvings to a height
+    without a tip.  The search is made again without the probes: the bisection's height and tip."""
+    c = 0.2157115415
+    t_min = 0.625
+
+    def thickness(h):
+        if h > c or c - 1e-6 < h < c - 1e-8:
+            return (-1.0, None, None)
+        return (2.9 - 0.5 * h, ("right", h), ("left", h))
+
+    h_lo, h_hi = 0.0, 1.25
+    at_lo, at_hi = thickness(h_lo), thickness(h_hi)
+    ref = _bisection(thickness, h_lo, at_lo, h_hi, t_min)
+    assert ref[1][1] is not None
+    got = _tallest_tip(thickness, h_lo, at_lo, h_hi, at_hi, t_min, lambda: c)
+    assert got == ref
