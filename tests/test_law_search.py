@@ -190,16 +190,10 @@ def test_search_ties_rank_the_larger_margin_first(monkeypatch):
     assert keys == sorted(keys)
 
 
-def test_search_over_shapers_makes_each_blend_once_and_equals_one_shaper_searches(monkeypatch):
-    """The blends (law, L, pitch curves and their curvature) shared by the shapers of one search: every (delta, u_h)
-    made once, and every point the same, to the last bit, as that shaper's search alone (nothing of one shaper's
-    cutter leaks into another's generability)."""
+def _count_blends(monkeypatch) -> list:
+    """The (delta, u_h) of every blend the law search makes from here on (``SmoothedWalkingLaw`` counted)."""
     import propulsor.gears.law_search as ls
 
-    m, z_H = 2.0, 96
-    shapers = [(25.0, catalogue_shaper(25.0, m)), (38.0, catalogue_shaper(38.0, m))]
-    L_ref = centre_distance(LAW0, m, z_H)
-    alone = [p for s in shapers for p in search_law(LAW0, m, z_H, 0.5, [s], L_ref, 5.0).points]
     made = []
     real = ls.SmoothedWalkingLaw
 
@@ -208,6 +202,18 @@ def test_search_over_shapers_makes_each_blend_once_and_equals_one_shaper_searche
         return real(law, delta, u_h=u_h)
 
     monkeypatch.setattr(ls, "SmoothedWalkingLaw", counted)
+    return made
+
+
+def test_search_over_shapers_makes_each_blend_once_and_equals_one_shaper_searches(monkeypatch):
+    """The blends (law, L, pitch curves and their curvature) shared by the shapers of one search: every (delta, u_h)
+    made once, and every point the same, to the last bit, as that shaper's search alone (nothing of one shaper's
+    cutter leaks into another's generability)."""
+    m, z_H = 2.0, 96
+    shapers = [(25.0, catalogue_shaper(25.0, m)), (38.0, catalogue_shaper(38.0, m))]
+    L_ref = centre_distance(LAW0, m, z_H)
+    alone = [p for s in shapers for p in search_law(LAW0, m, z_H, 0.5, [s], L_ref, 5.0).points]
+    made = _count_blends(monkeypatch)
     both = search_law(LAW0, m, z_H, 0.5, shapers, L_ref, 5.0)
     assert len(made) == len(set(made)) < both.evaluations  # shared blends: fewer made than tried
     key = lambda p: (p.d0_mm, p.delta)
@@ -225,14 +231,8 @@ def test_a_search_with_equal_inputs_is_not_made_again_and_is_the_search_made_ane
     m, z_H = 2.5, 80
     L_ref = centre_distance(LAW2, m, z_H)
     first = search_law(LAW2, m, z_H, 0.5, [(25.0, catalogue_shaper(25.0, m))], L_ref, 5.0)
-    made = []
     real = ls.SmoothedWalkingLaw
-
-    def counted(law, delta, u_h=None):
-        made.append((delta, u_h))
-        return real(law, delta, u_h=u_h)
-
-    monkeypatch.setattr(ls, "SmoothedWalkingLaw", counted)
+    made = _count_blends(monkeypatch)
     again = search_law(WalkingLaw(**SEED_002), 2.5, 80, 0.5, [(25.0, catalogue_shaper(25.0, 2.5))], L_ref, 5.0)
     assert again is first and made == []  # equal values, new objects: found
     wider = search_law(LAW2, m, z_H, 0.5, [(25.0, catalogue_shaper(25.0, m))], L_ref, 6.0)
