@@ -91,9 +91,9 @@ seed-002 pair 5.59 / 5.71 / 5.74 / 5.69 -> 5.68 / 6.07 / 5.68 / 5.64 CPU s: unch
 least-overlap lens cuts, the compiled pictures and the faster vertex merge, is outside a conjugate pair's proof-depth
 variant; the two rotation-hit kernels made one source cost nothing).
 
-2026-11-30, a third session (2 cores, idle but its speed drifting by 20-30 % from one minute to the next; 68c8983 in a
-worktree and the new tree in turn, two rounds of two, least of each): the seed-002 pair 6.24 / 5.72 -> 3.86 / 3.80
-CPU s (-33 %), its Fourier form 6.96 / 6.45 -> 6.11 / 5.73 (-11 %).  What changed, each with every output identical
+2026-11-30, a third session (2 cores; 68c8983 in a worktree and the new tree in turn, two rounds of two, least of
+each; at the end, with the machine quiet): the seed-002 pair 5.55 / 5.62 -> 3.85 / 3.73 CPU s (-32 %), its Fourier
+form 6.39 / 6.22 -> 5.65 / 5.54 (-11 %).  What changed, each with every output identical
 bit for bit: the shortened tips' search starts from where the tip leaves a flank (seed 002: 343 -> 84 evaluations);
 a wheel's spline fits in lock step, each round's points of a kind of piece for every tooth in one array (not for
 the Fourier law, which is not elementwise: hence its smaller gain); the law search kept by its inputs (the variant
