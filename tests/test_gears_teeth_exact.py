@@ -754,21 +754,22 @@ def test_a_shaper_of_its_own_shift_cuts_the_racks_flank_and_its_root_gap_is_meas
 
 
 def test_the_helpers_of_the_teeth_on_circles_by_hand():
-    from propulsor.gears.noncircular_teeth import BodyPitchCurve, _arc_len, _concave_zones, _near
+    from propulsor.gears.noncircular_teeth import BodyPitchCurve, _concave_zones
+    from propulsor.gears.tip_search import land_length, near
 
     m, z_H = 2.0, 40
     pc = _circular_pair(m, z_H)                       # driven radius 40 mm, driver 20 mm turning twice as fast
     driven, driver = BodyPitchCurve(pc, "driven"), BodyPitchCurve(pc, "driver")
     # the tip equidistant's arc between two driven angles: (r + h) times the body's turn
-    assert _arc_len(driven, 2.5, 0.1, 0.4) == pytest.approx(42.5 * 0.3, rel=1e-9)
-    assert _arc_len(driven, -1.0, 0.4, 0.1) == pytest.approx(39.0 * 0.3, rel=1e-9)
-    assert _arc_len(driver, 2.5, 0.1, 0.4) == pytest.approx(22.5 * 2 * 0.3, rel=1e-9)
+    assert land_length(driven, 2.5, 0.1, 0.4) == pytest.approx(42.5 * 0.3, rel=1e-9)
+    assert land_length(driven, -1.0, 0.4, 0.1) == pytest.approx(39.0 * 0.3, rel=1e-9)
+    assert land_length(driver, 2.5, 0.1, 0.4) == pytest.approx(22.5 * 2 * 0.3, rel=1e-9)
     # a solver's angle moved by whole turns of the body next to the reference: 2 pi driven, 2 pi / n = pi driver
-    assert _near(0.3 + 2 * math.pi, 0.25, driven) == pytest.approx(0.3, abs=1e-15)
-    assert _near(0.3 - 3 * 2 * math.pi, 0.25, driven) == pytest.approx(0.3, abs=1e-14)
-    assert _near(0.3 + math.pi, 0.25, driver) == pytest.approx(0.3, abs=1e-15)
-    assert _near(0.3 + 0.9 * math.pi, 0.25, driven) == pytest.approx(0.3 + 0.9 * math.pi, abs=1e-15)  # < half a turn
-    assert _near(0.3 + 0.45 * math.pi, 0.25, driver) == pytest.approx(0.3 + 0.45 * math.pi, abs=1e-15)
+    assert near(0.3 + 2 * math.pi, 0.25, driven) == pytest.approx(0.3, abs=1e-15)
+    assert near(0.3 - 3 * 2 * math.pi, 0.25, driven) == pytest.approx(0.3, abs=1e-14)
+    assert near(0.3 + math.pi, 0.25, driver) == pytest.approx(0.3, abs=1e-15)
+    assert near(0.3 + 0.9 * math.pi, 0.25, driven) == pytest.approx(0.3 + 0.9 * math.pi, abs=1e-15)  # < half a turn
+    assert near(0.3 + 0.45 * math.pi, 0.25, driver) == pytest.approx(0.3 + 0.45 * math.pi, abs=1e-15)
     # concave stretches: none on circles; on the 3-lobed ellipse's driven curve every leg's, one more either side
     assert _concave_zones(driven) == []
     law = EllipticalLaw(e=0.5, k=3)
@@ -1066,7 +1067,7 @@ def test_shaper_cut_teeth_of_a_circular_gear_have_the_involute_gears_land_at_eve
     circle, or a catalogue shaper of its own x0 re-phased by e = (x + x0) m.  The land at radius r_y is ISO 21771's
     s_y = d_y (s / d + inv alpha - inv alpha_y) with s = m (pi/2 + 2 x tan alpha) - thinning, and the tooth is
     centred on its centre line."""
-    from propulsor.gears.noncircular_teeth import _arc_len, _tip_hit
+    from propulsor.gears.tip_search import land_length, tip_hit
 
     m = 2.0
     shaper = None if own_x0 is None else ShaperCutter(20, m, own_x0)
@@ -1074,11 +1075,11 @@ def test_shaper_cut_teeth_of_a_circular_gear_have_the_involute_gears_land_at_eve
     curve, ph_k, R, L, span = _shaped_tooth(spec)
     assert (R.kind, L.kind) == ("shaper", "shaper")
     for h in (0.0, 0.35 * (1 + x) * m, 0.9 * (1 + x) * m):
-        hr, hl = _tip_hit(R, curve, h, ph_k, span), _tip_hit(L, curve, h, ph_k, span)
+        hr, hl = tip_hit(R, curve, h, ph_k, span), tip_hit(L, curve, h, ph_k, span)
         # the right side is the clockwise one of the body: on the driven wheel (phi runs clockwise) the smaller phi
         assert hl[1] > ph_k > hr[1]
         assert 0.5 * (hr[1] + hl[1]) == pytest.approx(ph_k, abs=1e-9)
-        assert _arc_len(curve, h, hl[1], hr[1]) == pytest.approx(_land(40, m, x, 40.0 + h, thinning), rel=1e-7)
+        assert land_length(curve, h, hl[1], hr[1]) == pytest.approx(_land(40, m, x, 40.0 + h, thinning), rel=1e-7)
         # the hit lies on the flank and on the equidistant
         assert np.linalg.norm(R.flank.at(hr[0]) - curve.offset(np.array([hr[1]]), h)[0]) < 1e-8
 
@@ -1168,7 +1169,8 @@ def test_a_tip_floor_above_the_flanks_reach_and_a_root_gap_over_a_tenth_of_the_m
     import re
 
     from propulsor.gears.envelope import PitchCurveCentrode
-    from propulsor.gears.noncircular_teeth import BodyPitchCurve, _tip_hit, make_side
+    from propulsor.gears.noncircular_teeth import BodyPitchCurve, make_side
+    from propulsor.gears.tip_search import tip_hit
 
     m = 2.0
     pc = _three_lobed(m)
@@ -1183,7 +1185,7 @@ def test_a_tip_floor_above_the_flanks_reach_and_a_root_gap_over_a_tenth_of_the_m
     curve = BodyPitchCurve(pc, "driven")
     side = make_side(ToothSpec(m=m).rack_tools()[0], PitchCurveCentrode(curve, frame, 0.5 * math.pi * m))
     span = 1.5 * math.pi * m / float(np.min(pc.ds_dphi(np.linspace(0, math.pi / 2, 200))))
-    assert _tip_hit(side, curve, 4.0 * m, phi0, span) is None and _tip_hit(side, curve, 1.0 * m, phi0, span) is not None
+    assert tip_hit(side, curve, 4.0 * m, phi0, span) is None and tip_hit(side, curve, 1.0 * m, phi0, span) is not None
     # tooth 9 next to the concave stretch is shaper-cut: its right flank (an involute from the shaper's base circle)
     # does not reach the nominal tip (1 + x) m, and a floor there leaves nothing to shorten to
     phi9 = float(frame.phi(np.array([9.5 * math.pi * m]))[0])
@@ -1226,12 +1228,13 @@ def _zones(curve):
 
 
 def test_the_batched_tip_search_finds_each_sides_own_hit_and_none_where_the_flank_stops_short():
-    """_tip_hits_batch (one vectorised Newton iteration for many sides, grouped by their cutter piece) against
-    _tip_hit side by side (a start from the nearest samples, then fsolve): the same (u, phi) to 1e-10, on the rack-cut
+    """tip_hits_batch (one vectorised Newton iteration for many sides, grouped by their cutter piece) against
+    tip_hit side by side (a start from the nearest samples, then fsolve): the same (u, phi) to 1e-10, on the rack-cut
     sides of a circular driver and the shaper-cut sides of the 3-lobed wheel, at the nominal tip and above the
     flank's reach (None from both)."""
     from propulsor.gears.envelope import PitchCurveCentrode
-    from propulsor.gears.noncircular_teeth import BodyPitchCurve, _tip_hit, _tip_hits_batch, make_side
+    from propulsor.gears.noncircular_teeth import BodyPitchCurve, make_side
+    from propulsor.gears.tip_search import tip_hit, tip_hits_batch
 
     m = 2.0
     for pc, role, spec, ks in ((_circular_pair(m, 40), "driver", ToothSpec(m=m, x=0.3), range(0, 20, 3)),
@@ -1244,8 +1247,8 @@ def test_the_batched_tip_search_finds_each_sides_own_hit_and_none_where_the_flan
         sides = [make_side(t, PitchCurveCentrode(curve, frame, s), spec.h_root) for s in s_k for t in tools]
         span = 1.5 * math.pi * m / float(np.min(pc.ds_dphi(np.linspace(0, math.pi / 2, 200))))
         for h in (spec.h_tip, 0.4 * m, 10.0 * m):
-            got = _tip_hits_batch(sides, np.repeat(s_k, 2), np.repeat(ph_k, 2), curve, frame, h, span)
-            want = [_tip_hit(sd, curve, h, float(p), span) for sd, p in zip(sides, np.repeat(ph_k, 2))]
+            got = tip_hits_batch(sides, np.repeat(s_k, 2), np.repeat(ph_k, 2), curve, frame, h, span)
+            want = [tip_hit(sd, curve, h, float(p), span) for sd, p in zip(sides, np.repeat(ph_k, 2))]
             assert len(got) == len(sides)
             found = [g is not None for g in got]
             assert found == [w is not None for w in want]
@@ -1254,7 +1257,7 @@ def test_the_batched_tip_search_finds_each_sides_own_hit_and_none_where_the_flan
             assert sum(found) == {0.4 * m: len(sides), 10.0 * m: 0}.get(h, len(sides) if role == "driver" else 7)
             if role == "driven" and h == spec.h_tip:
                 # tooth 8's right and tooth 9's left reach the tip 3 and 4 thousandths into the involute's roll from
-                # the base circle, where it has a cusp: fsolve started there stalled and _tip_hit said no tip
+                # the base circle, where it has a cusp: fsolve started there stalled and tip_hit said no tip
                 assert found[:8] == [True] * 6 + [False, True]
                 assert 0.0 < got[4][0] < 0.005 and 0.0 < got[7][0] < 0.005
             for g, w, p in zip(got, want, np.repeat(ph_k, 2)):
@@ -1267,10 +1270,11 @@ def test_the_batched_tip_search_finds_each_sides_own_hit_and_none_where_the_flan
 def test_the_seed002_pairs_mirror_teeth_get_the_same_shortened_tip():
     """The seed-002 law is even within a leg, so the driven wheel's teeth either side of a concave stretch are mirror
     images, and the shortening of their tips (the tallest height with a land of 0.25 m) must be the same.  It was not:
-    _tip_hit said "no tip" where its start sat on the shaper involute's cusp at the base circle, the bisection took
+    tip_hit said "no tip" where its start sat on the shaper involute's cusp at the base circle, the bisection took
     the height for one the flank does not reach, and tooth 11 was cut to 0.154 mm where its mirror tooth 8 kept
     0.215 mm."""
-    from propulsor.gears.noncircular_teeth import BodyPitchCurve, _tip_hit
+    from propulsor.gears.noncircular_teeth import BodyPitchCurve
+    from propulsor.gears.tip_search import tip_hit
 
     m, x = 2.5, -0.5
     sl = SmoothedWalkingLaw(LAW2, 0.13962634015954636, u_h=3.0464623475326484)
@@ -1292,34 +1296,36 @@ def test_the_seed002_pairs_mirror_teeth_get_the_same_shortened_tip():
         tooth, (R, L) = g.teeth[k], g.sides[k]
         assert tooth.tip_thickness_mm >= 0.625
         for h in np.linspace(0.0, tooth.tip_height_mm, 7):
-            assert _tip_hit(R, curve, h, tooth.phi_centre, span) is not None
-            assert _tip_hit(L, curve, h, tooth.phi_centre, span) is not None
+            assert tip_hit(R, curve, h, tooth.phi_centre, span) is not None
+            assert tip_hit(L, curve, h, tooth.phi_centre, span) is not None
 
 
 def test_the_tip_lands_arc_on_a_non_circular_equidistant_against_its_chords():
-    """_arc_len (10-point Gauss-Legendre in the driven angle, the equidistant's speed by central differences) on the
+    """land_length (10-point Gauss-Legendre in the driven angle, the equidistant's speed by central differences) on the
     driven wheel of the Fourier law of parts/ncg_fourier_3lobe.toml (0.04 sin theta + 0.005 cos 2 theta: not even in
     phi, so a mirrored node set would not do), where the speed varies along the arc: the sum of 200 001 chords of the
     equidistant, to 1e-9."""
-    from propulsor.gears.noncircular_teeth import BodyPitchCurve, _arc_len
+    from propulsor.gears.noncircular_teeth import BodyPitchCurve
+    from propulsor.gears.tip_search import land_length
     from propulsor.laws.ratio_laws import FourierLaw
 
     curve = BodyPitchCurve(PitchCurves(FourierLaw(k=3, cos=(0.0, 0.005), sin=(0.04,)), 100.0), "driven")
     for h, a, b in ((2.4, 0.5, 0.62), (-2.5, 1.1, 0.95), (0.0, 2.0, 2.3)):
         P = curve.offset(np.linspace(min(a, b), max(a, b), 200001), h)
         chords = float(np.sum(np.linalg.norm(np.diff(P, axis=0), axis=1)))
-        assert _arc_len(curve, h, a, b) == pytest.approx(chords, rel=1e-9)
+        assert land_length(curve, h, a, b) == pytest.approx(chords, rel=1e-9)
 
 
 def test_the_batched_tip_search_converges_itself_and_falls_back_only_where_the_flank_stops_short(monkeypatch):
     """The batch's own Newton iteration (finite-difference Jacobian, both unknowns of every side at once) must
-    converge: _tip_hit (fsolve, one side at a time) is its fallback, called only for the sides that have no hit.
+    converge: tip_hit (fsolve, one side at a time) is its fallback, called only for the sides that have no hit.
     A broken iteration would still give the right answers through the fallback, only 16 times slower."""
     import propulsor.gears.noncircular_teeth as nt
+    import propulsor.gears.tip_search as ts
     from propulsor.gears.envelope import PitchCurveCentrode
 
     calls = []
-    single = nt._tip_hit
+    single = ts.tip_hit
 
     def counted(*a, **k):
         calls.append(a[2])
@@ -1333,12 +1339,12 @@ def test_the_batched_tip_search_converges_itself_and_falls_back_only_where_the_f
         s_k = np.array([(k + (0.5 if role == "driven" else 0.0)) * math.pi * m for k in ks])
         sides = [nt.make_side(t, PitchCurveCentrode(curve, frame, s), spec.h_root) for s in s_k for t in tools]
         span = 1.5 * math.pi * m / float(np.min(pc.ds_dphi(np.linspace(0, math.pi / 2, 200))))
-        monkeypatch.setattr(nt, "_tip_hit", counted)
+        monkeypatch.setattr(ts, "tip_hit", counted)
         for h in (spec.h_tip, 0.4 * m):
             calls.clear()
-            got = nt._tip_hits_batch(sides, np.repeat(s_k, 2), np.repeat(frame.phi(s_k), 2), curve, frame, h, span)
+            got = ts.tip_hits_batch(sides, np.repeat(s_k, 2), np.repeat(frame.phi(s_k), 2), curve, frame, h, span)
             assert len(calls) == sum(g is None for g in got) == (misses if h == spec.h_tip else 0)
-        monkeypatch.setattr(nt, "_tip_hit", single)
+        monkeypatch.setattr(ts, "tip_hit", single)
 
 
 @pytest.mark.parametrize("x", [0.5, -0.4, 0.0])

@@ -1,4 +1,4 @@
-"""The tip shortening's search (gears/noncircular_teeth.py, ``_tallest_tip``): the same height, to the last bit, as
+"""The tip shortening's search (gears/tip_search.py, ``tallest_tip``): the same height, to the last bit, as
 the bisection down to ``TIP_HEIGHT_TOL_MM`` it replaces, for a land that falls smoothly with the height, one that
 stops (the flank does not reach: land -1) and one that does both; in fewer evaluations where the land is smooth."""
 
@@ -8,7 +8,8 @@ import math
 
 import pytest
 
-from propulsor.gears.noncircular_teeth import TIP_HEIGHT_TOL_MM, _tallest_tip
+from propulsor.gears.tip_search import tallest_tip
+from propulsor.policy import TIP_HEIGHT_TOL_MM
 
 
 def _bisection(thickness, h_lo, at_lo, h_hi, t_min):
@@ -50,7 +51,7 @@ def test_the_same_height_as_the_bisection_bit_for_bit(kind, c):
         calls.append(h)
         return thickness(h)
 
-    got = _tallest_tip(counted, h_lo, at_lo, h_hi, thickness(h_hi), t_min)
+    got = tallest_tip(counted, h_lo, at_lo, h_hi, thickness(h_hi), t_min)
     assert got[0] == ref[0] and got[1] == ref[1]
     assert got[1][0] >= t_min and thickness(got[0] + TIP_HEIGHT_TOL_MM)[0] < t_min + 1e-5
     halvings = math.ceil(math.log2((h_hi - h_lo) / TIP_HEIGHT_TOL_MM))
@@ -99,7 +100,7 @@ def test_more_lands_the_same_height_as_the_bisection_in_fewer_evaluations(kind, 
     at_lo, at_hi = thickness(h_lo), thickness(h_hi)
     ref = _bisection(thickness, h_lo, at_lo, h_hi, t_min)
     counted, calls = _counted(thickness)
-    got = _tallest_tip(counted, h_lo, at_lo, h_hi, at_hi, t_min)
+    got = tallest_tip(counted, h_lo, at_lo, h_hi, at_hi, t_min)
     assert got[0] == ref[0] and got[1] == ref[1]
     assert len(calls) <= most
 
@@ -115,7 +116,7 @@ def test_a_land_exactly_at_the_minimum_at_the_lower_height_takes_one_evaluation(
     assert at_lo[0] == pytest.approx(0.625, abs=1e-15)
     ref = _bisection(thickness, h_lo, at_lo, h_hi, at_lo[0])
     counted, calls = _counted(thickness)
-    got = _tallest_tip(counted, h_lo, at_lo, h_hi, thickness(h_hi), at_lo[0])
+    got = tallest_tip(counted, h_lo, at_lo, h_hi, thickness(h_hi), at_lo[0])
     assert got[0] == ref[0] == h_lo and got[1] == ref[1]
     assert len(calls) == 1 and calls[0] - h_lo == pytest.approx(2.5e-4 * TIP_HEIGHT_TOL_MM, rel=1e-3)
 
@@ -125,16 +126,16 @@ def test_the_secant_steps_are_capped_and_the_bisection_still_decides(monkeypatch
     """TIP_SECANT_STEPS_MAX cuts the Illinois steps short (a crawl cannot hang the build); the bisection then finds the
     same height to the last bit from whatever bracket the secant left.  Cap 0: the plain bisection, one evaluation a
     halving; cap k: k secant steps, then the halvings the bracket cannot decide."""
-    import propulsor.gears.noncircular_teeth as nt
+    import propulsor.gears.tip_search as ts
 
-    monkeypatch.setattr(nt, "TIP_SECANT_STEPS_MAX", cap)
+    monkeypatch.setattr(ts, "TIP_SECANT_STEPS_MAX", cap)
     for kind, c in (("smooth", 1.7), ("convex", 1.7)):
         thickness = _land(kind, c) if kind == "smooth" else _falling(kind, c)
         h_lo, h_hi = 1.0, c + 1.25
         at_lo, at_hi = thickness(h_lo), thickness(h_hi)
         ref = _bisection(thickness, h_lo, at_lo, h_hi, 0.625)
         counted, calls = _counted(thickness)
-        got = _tallest_tip(counted, h_lo, at_lo, h_hi, at_hi, 0.625)
+        got = tallest_tip(counted, h_lo, at_lo, h_hi, at_hi, 0.625)
         assert got[0] == ref[0] and got[1] == ref[1]
         halvings = math.ceil(math.log2((h_hi - h_lo) / TIP_HEIGHT_TOL_MM))
         if cap == 0:
@@ -160,7 +161,7 @@ def _stopping(c_land, c_stop, t_min=0.625):
 @pytest.mark.parametrize("error", [0.0, 3e-9, -3e-9, 2e-7, -2e-7, 1e-3, -0.05, 5.0, -5.0])
 def test_the_flanks_reach_guessed_gives_the_bisections_height_bit_for_bit_and_few_evaluations_when_close(
         c_land, c_stop, error):
-    """``reach``: where the tip leaves a flank, guessed (``_flank_reach``) with an error.  Whatever the guess, the
+    """``reach``: where the tip leaves a flank, guessed (``flank_reach``) with an error.  Whatever the guess, the
     same height and tip as the bisection (only heights evaluated decide); the flank's end deciding the height (c_stop
     below c_land) and guessed within ``TIP_REACH_PROBE_MM``, a handful of evaluations against the bisection's 21; the
     land deciding it (the flank stops above), the Illinois method's few from a tipped upper end."""
@@ -174,7 +175,7 @@ def test_the_flanks_reach_guessed_gives_the_bisections_height_bit_for_bit_and_fe
     ref = _bisection(thickness, h_lo, at_lo, h_hi, t_min)
     counted, calls = _counted(thickness)
     guesses = []
-    got = _tallest_tip(counted, h_lo, at_lo, h_hi, at_hi, t_min, lambda: guesses.append(1) or c_stop + error)
+    got = tallest_tip(counted, h_lo, at_lo, h_hi, at_hi, t_min, lambda: guesses.append(1) or c_stop + error)
     assert got[0] == ref[0] and got[1] == ref[1]
     assert guesses == [1]
     halvings = math.ceil(math.log2((h_hi - h_lo) / TIP_HEIGHT_TOL_MM))
@@ -197,9 +198,9 @@ def test_no_guess_of_the_flanks_reach_leaves_the_bisection_to_decide(guess):
         return guess
 
     counted, calls = _counted(thickness)
-    got = _tallest_tip(counted, h_lo, at_lo, h_hi, at_hi, 0.625, reach)
+    got = tallest_tip(counted, h_lo, at_lo, h_hi, at_hi, 0.625, reach)
     plain, plain_calls = _counted(thickness)
-    assert got == ref == _tallest_tip(plain, h_lo, at_lo, h_hi, at_hi, 0.625)
+    assert got == ref == tallest_tip(plain, h_lo, at_lo, h_hi, at_hi, 0.625)
     assert calls == plain_calls
 
 
@@ -219,5 +220,5 @@ def test_a_tip_that_vanishes_below_the_flanks_end_sends_the_search_back_to_the_p
     at_lo, at_hi = thickness(h_lo), thickness(h_hi)
     ref = _bisection(thickness, h_lo, at_lo, h_hi, t_min)
     assert ref[1][1] is not None
-    got = _tallest_tip(thickness, h_lo, at_lo, h_hi, at_hi, t_min, lambda: c)
+    got = tallest_tip(thickness, h_lo, at_lo, h_hi, at_hi, t_min, lambda: c)
     assert got == ref

@@ -1,11 +1,11 @@
-"""The tip searches of the seed-002 pair's shortened teeth (gears/noncircular_teeth.py), each against the search
+"""The tip searches of the seed-002 pair's shortened teeth (gears/tip_search.py), each against the search
 without its shortcut, on one design of the pair:
 
-* one tooth's searches keep what does not depend on the height (``_tip_hit``'s ``memo``: the flank's samples, the
+* one tooth's searches keep what does not depend on the height (``tip_hit``'s ``memo``: the flank's samples, the
   pitch curve's points and normals at the sampled angles): every search gives, to the last bit, what the search
   without them gives;
 * the tallest tip's search first evaluates the heights either side of where a flank's end meets the tip equidistant
-  (``_tallest_tip``'s ``reach``, ``_flank_reach``): the same height and tip, to the last bit, as the search without
+  (``tallest_tip``'s ``reach``, ``flank_reach``): the same height and tip, to the last bit, as the search without
   it, in a third of the evaluations or fewer."""
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-import propulsor.gears.noncircular_teeth as nt
+import propulsor.gears.tip_search as ts
 from propulsor import api
 from propulsor.policy import TIP_HEIGHT_TOL_MM
 
@@ -24,7 +24,7 @@ ROOT = Path(__file__).resolve().parents[1]
 @pytest.fixture(scope="module")
 def searched():
     """The seed-002 pair designed once with both shortcuts checked at every call (their records)."""
-    real_hit, real_tallest = nt._tip_hit, nt._tallest_tip
+    real_hit, real_tallest = ts.tip_hit, ts.tallest_tip
     rec = {"memo": 0, "reused": 0, "tallest": []}
 
     def both(side, curve, h, phi_guess, span, memo=None):
@@ -54,8 +54,8 @@ def searched():
 
     with pytest.MonkeyPatch.context() as mp:
         mp.setenv("PROPULSOR_JOBS", "1")  # both wheels cut in this process, where the searches are watched
-        mp.setattr(nt, "_tip_hit", both)
-        mp.setattr(nt, "_tallest_tip", tallest)
+        mp.setattr(ts, "tip_hit", both)
+        mp.setattr(ts, "tallest_tip", tallest)
         design = api.part(str(ROOT / "parts" / "ncg_seed002.toml")).design
     rec["shortened"] = sum(t.shortened for gear in (design.d.driver, design.d.driven) for t in gear.teeth)
     return rec
@@ -68,7 +68,7 @@ def test_a_tooth_s_tip_searches_with_the_memo_are_those_without(searched):
     assert searched["memo"] > 10 * shortened and searched["reused"] > 0.8 * searched["memo"]
 
 
-def test_the_tallest_tip_from_the_flanks_reach_is_the_one_without_it_in_a_third_of_the_evaluations(searched):
+def test_thetallest_tip_from_the_flanks_reach_is_the_one_without_it_in_a_third_of_the_evaluations(searched):
     rows = searched["tallest"]
     assert len(rows) == searched["shortened"]
     for got, ref, _, _, _, _ in rows:

@@ -53,9 +53,9 @@ ROUNDING_TOL = 1e-15
 REL_ROUNDING_TOL = 1e-12
 #: x tolerance of the bounded 1-D minimisations (curvature, speed and clearance extremes)
 MINIMIZE_XATOL = 1e-12
-#: Gauss-Newton steps of the feet of many points on a root equidistant at once, whose heights' signs decide
-#: where a re-phased shaper's fillet crosses it (noncircular_teeth.make_side: 4 steps from the nearest of 201
-#: grid points leave about 1e-10 rad)
+#: Gauss-Newton steps of the feet of many points on an equidistant at once (pitch_frame.BodyPitchCurve.heights):
+#: the heights whose signs decide where a re-phased shaper's fillet crosses the root (noncircular_teeth.make_side: 4
+#: steps from the nearest of 201 grid points leave about 1e-10 rad), and a flank end's height (tip_search.flank_reach)
 FOOT_GAUSS_NEWTON_STEPS = 4
 #: Newton inverse of theta(phi) of the walking law (rad)
 PHI_OF_THETA_TOL_RAD = 1e-14
@@ -188,9 +188,9 @@ MODULE_MATCH_TOL_MM = 1e-12
 #: bisection of the shortened tip height stops at this interval (mm)
 TIP_HEIGHT_TOL_MM = 1e-6
 #: a shortened tip's search first evaluates the heights this far either side of where it guesses the tip leaves a
-#: flank (``gears.noncircular_teeth._tallest_tip``): far below TIP_HEIGHT_TOL_MM, well above the guess's error
+#: flank (``gears.tip_search.tallest_tip``): far below TIP_HEIGHT_TOL_MM, well above the guess's error
 TIP_REACH_PROBE_MM = 5e-9
-#: the most secant (Illinois) steps of the tip shortening's search before it bisects (noncircular_teeth._tallest_tip)
+#: the most secant (Illinois) steps of the tip shortening's search before it bisects (tip_search.tallest_tip)
 TIP_SECANT_STEPS_MAX = 40
 
 # --- suspension and balancer (laws/suspension.py, laws/balancer_beam.py) ---------

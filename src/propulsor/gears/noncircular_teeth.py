@@ -18,7 +18,7 @@ pitch curve with its pitch circle, profile shift x0 = -x_gear (it meshes with th
 rack, so its involute generates the same flank; only the fillet differs).  Tip and root are the
 equidistants of the pitch curve at (h_a* + x) m and (h_a* + c* - x) m (the envelope of the tool's
 tip land, resp. the shaper's tip circle); tips are shortened tooth by tooth where the tip land
-would be thinner than a given minimum.  Undercut is detected per tooth side (cusp of the flank
+would be thinner than a given minimum (:mod:`.tip_search`).  Undercut is detected per tooth side (cusp of the flank
 envelope) and trimmed.  ``geometry.noncircular_outline`` fits and chains the pieces into a
 closed outline.
 
@@ -35,11 +35,11 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import fsolve, minimize_scalar
+from scipy.optimize import minimize_scalar
 
 from ..errors import InputError, require
-from ..policy import (ROOT_BRIDGE_MAX_MODULE, TIP_REACH_PROBE_MM, FD_STEP_ARC_RAD, FD_STEP_PHI_RAD, FD_STEP_REL, MINIMIZE_XATOL, NEWTON_STOP_MM, FOOT_GAUSS_NEWTON_STEPS, ROOT_XTOL_FINE,
-                      SOLVE_RESIDUAL_MM, TIP_HEIGHT_TOL_MM, TIP_SECANT_STEPS_MAX)
+from ..policy import FD_STEP_ARC_RAD, MINIMIZE_XATOL, ROOT_BRIDGE_MAX_MODULE, ROOT_XTOL_FINE
+from . import tip_search
 from .cutters import CutterSide, RackCutter, ShaperCutter
 from .envelope import (EnvelopeCurve, ExternalCircleCentrode, PitchCurveCentrode, ShaperOnRackCentrode, envelope_points,
                        round_envelope)
@@ -53,7 +53,6 @@ __all__ = [
     "generate_teeth", "SHAPER_MARGIN_PITCHES",
 ]
 
-_GX, _GW = np.polynomial.legendre.leggauss(10)
 #: a tooth side is cut by the shaper when a concave stretch of its pitch curve lies within this
 #: many pitches of the tooth centre (the rack's neighbouring teeth would gouge there)
 SHAPER_MARGIN_PITCHES = 1.5
@@ -201,18 +200,8 @@ def make_side(tool: CutterSide, cen: PitchCurveCentrode, h_root: float | None = 
 
     def heights_of(P):
         """``foot``'s heights of many points at once, where only their signs decide (which samples lie above the
-        equidistant): the nearest grid point, then Gauss-Newton on the foot's condition (X - F(phi)) . F'(phi) = 0
-        within the same bracket, F' by central differences; the height is stationary at the foot, so the phi left
-        after four steps (about 1e-10 rad) moves it far below rounding."""
-        j = np.clip(np.argmin(np.linalg.norm(E[None, :, :] - P[:, None, :], axis=2), axis=1), 1, len(grid) - 2)
-        lo, hi = grid[j - 1], grid[j + 1]
-        ph = grid[j]
-        for _ in range(FOOT_GAUSS_NEWTON_STEPS):
-            F = curve.offset(ph, -h_root)
-            dF = (curve.offset(ph + FD_STEP_PHI_RAD, -h_root) - curve.offset(ph - FD_STEP_PHI_RAD, -h_root)) / (
-                2.0 * FD_STEP_PHI_RAD)
-            ph = np.clip(ph - np.einsum("ij,ij->i", F - P, dF) / np.einsum("ij,ij->i", dF, dF), lo, hi)
-        return np.einsum("ij,ij->i", P - curve.offset(ph, -h_root), curve.normal(ph))
+        equidistant)."""
+        return curve.heights(P, -h_root, grid, E)
 
     # the tip circle of a re-phased shaper digs below the equidistant: the fillet is trimmed where it
     # crosses it (the outline keeps the equidistant, a little more material than cut); where it
@@ -262,110 +251,6 @@ def _trim_undercut(side: ToothSide, u_tip: float) -> None:
         side.undercut = True
 
 
-def _tip_hit(side: ToothSide, curve: BodyPitchCurve, h: float, phi_guess: float, span: float, memo=None):
-    """(u, phi) where the flank meets the tip equidistant at height h (None if it does not within
-    the flank's range): nearest pair of samples, then fsolve.  ``memo`` (a dict, one per tooth), when given, keeps
-    what does not depend on h between the calls of one tooth's tip search: the flank's 41 samples and the pitch
-    curve's points and normals at the 121 sampled angles (the equidistant at h is ``point + h normal``, the
-    operations of ``curve.offset``: the same samples to the last bit)."""
-    fla = side.flank
-    u = np.linspace(fla.u0, fla.u1, 41)
-    ph = phi_guess + np.linspace(-0.6, 0.6, 121) * span
-    if memo is None:
-        X = fla(u)
-        T = curve.offset(ph, h)
-    else:
-        kept = memo.get(id(fla))
-        if kept is None or kept[0] is not fla or kept[1] != (phi_guess, span):
-            kept = memo[id(fla)] = (fla, (phi_guess, span), fla(u), curve.point(ph), curve.normal(ph))
-        X, P, N = kept[2], kept[3], kept[4]
-        T = P + h * N
-    D = np.linalg.norm(X[:, None, :] - T[None, :, :], axis=2)
-    i, j = np.unravel_index(int(np.argmin(D)), D.shape)
-    g = lambda y: fla.at(y[0]) - curve.offset(np.array([y[1]]), h)[0]
-    tol = SOLVE_RESIDUAL_MM
-    ok = lambda y: np.linalg.norm(g(y)) <= tol and min(fla.u0, fla.u1) - tol <= y[0] <= max(fla.u0, fla.u1) + tol
-    sol = fsolve(g, [u[i], ph[j]], xtol=ROOT_XTOL_FINE, full_output=True)[0]
-    if not ok(sol) and i in (0, len(u) - 1):
-        # the flank's end can be a cusp of its envelope (a shaper's involute starts on its base circle, where its
-        # derivative vanishes): fsolve stalls there, so start again from the sample next to it
-        sol = fsolve(g, [u[1] if i == 0 else u[-2], ph[j]], xtol=ROOT_XTOL_FINE, full_output=True)[0]
-    if not ok(sol):
-        return None
-    return float(sol[0]), _near(float(sol[1]), phi_guess, curve)
-
-
-def _near(phi: float, ref: float, curve: BodyPitchCurve) -> float:
-    """phi moved by whole periods of the body pitch curve (2 pi driven, 2 pi / n driver) next to ref: a
-    solver may land on the same point one turn away."""
-    period = 2.0 * math.pi if curve.role == "driven" else 2.0 * math.pi / curve.pc.law.n
-    return float(phi - period * round((phi - ref) / period))
-
-
-def _tip_hits_batch(sides: list, s_k: np.ndarray, ph_k: np.ndarray, curve: BodyPitchCurve, frame: ArcFrame,
-                    h: float, span: float) -> list:
-    """``_tip_hit`` for many sides at once (grouped by their cutter piece): vectorised sampling for
-    the start and a vectorised Newton iteration on (u, phi); sides that do not converge fall back
-    to ``_tip_hit``."""
-    out = [None] * len(sides)
-    groups: dict = {}
-    for i, sd in enumerate(sides):
-        groups.setdefault((id(sd.flank.piece), sd.flank.u0, sd.flank.u1), []).append(i)
-    nu, nph = 41, 121
-    for (_, u0, u1), idx in groups.items():
-        idx = np.asarray(idx)
-        n = len(idx)
-        fla = sides[idx[0]].flank
-        sk = np.asarray(s_k, float)[idx]
-        pk = np.asarray(ph_k, float)[idx]
-
-        def X(u, skk):
-            cen = PitchCurveCentrode(curve, frame, skk)
-            return envelope_points(fla.piece, u, fla.cutter, cen)[0]
-
-        ug = np.linspace(u0, u1, nu)
-        Xs = X(np.tile(ug, n), np.repeat(sk, nu)).reshape(n, nu, 2)
-        pg = pk[:, None] + np.linspace(-0.6, 0.6, nph)[None, :] * span
-        Ts = curve.offset(pg.ravel(), h).reshape(n, nph, 2)
-        D = np.linalg.norm(Xs[:, :, None, :] - Ts[:, None, :, :], axis=3).reshape(n, -1)
-        k = np.argmin(D, axis=1)
-        u = ug[k // nph]
-        ph = pg[np.arange(n), k % nph]
-        eu, ep = FD_STEP_REL * max(1.0, abs(u1 - u0)), FD_STEP_PHI_RAD
-        for _ in range(12):
-            Xu = X(u, sk)
-            T = curve.offset(ph, h)
-            G = Xu - T
-            if np.max(np.linalg.norm(G, axis=1)) < NEWTON_STOP_MM:
-                break
-            dX = (X(u + eu, sk) - Xu) / eu
-            dT = (curve.offset(ph + ep, h) - T) / ep
-            det = dX[:, 0] * (-dT[:, 1]) - dX[:, 1] * (-dT[:, 0])
-            det = np.where(np.abs(det) > 1e-300, det, 1e-300)
-            du = -(G[:, 0] * (-dT[:, 1]) - G[:, 1] * (-dT[:, 0])) / det
-            dp = -(dX[:, 0] * G[:, 1] - dX[:, 1] * G[:, 0]) / det
-            u, ph = u + du, ph + dp
-        res = np.linalg.norm(X(u, sk) - curve.offset(ph, h), axis=1)
-        for j, i in enumerate(idx):
-            tol = SOLVE_RESIDUAL_MM
-            if res[j] <= tol and min(u0, u1) - tol <= u[j] <= max(u0, u1) + tol:
-                out[i] = (float(u[j]), _near(float(ph[j]), float(pk[j]), curve))
-            else:
-                out[i] = _tip_hit(sides[i], curve, h, float(pk[j]), span)
-    return out
-
-
-
-
-def _arc_len(curve: BodyPitchCurve, h: float, a: float, b: float) -> float:
-    x = 0.5 * (b - a) * _GX + 0.5 * (a + b)
-    ph = x
-    # |d/dphi (P + h n)| by central differences of the exact equidistant (h small vs rho)
-    eps = FD_STEP_ARC_RAD
-    d = (curve.offset(ph + eps, h) - curve.offset(ph - eps, h)) / (2 * eps)
-    return abs(0.5 * (b - a) * float(np.dot(_GW, np.linalg.norm(d, axis=1))))
-
-
 @dataclass
 class GeneratedTooth:
     s_centre: float
@@ -403,109 +288,6 @@ def _concave_zones(curve: BodyPitchCurve) -> list[tuple[float, float]]:
         for k in range(-1, law.periods + 2):
             out.append((a + k * P, b + k * P))
     return out
-
-
-def _flank_reach(sides, curve: BodyPitchCurve, phi_guess: float, span: float) -> float:
-    """Where a tooth's tip leaves its flanks: the height above the pitch curve (along its outward normal at the foot
-    point) of the higher end of each side's flank, the lower of the two sides.  The foot points as in
-    ``make_side``'s ``heights_of``: the nearest of the tip search's 121 sampled angles, then Gauss-Newton on
-    (E - P(phi)) . P'(phi) = 0 within the samples either side.  Only a guess for ``_tallest_tip``'s bracket: what it
-    decides rests on the heights it evaluates."""
-    E = np.array([sd.flank.at(u) for sd in sides for u in (sd.flank.u0, sd.flank.u1)])
-    grid = phi_guess + np.linspace(-0.6, 0.6, 121) * span
-    j = np.clip(np.argmin(np.linalg.norm(E[:, None, :] - curve.point(grid)[None, :, :], axis=2), axis=1), 1,
-                len(grid) - 2)
-    lo, hi, ph = grid[j - 1], grid[j + 1], grid[j]
-    for _ in range(FOOT_GAUSS_NEWTON_STEPS):
-        F = curve.point(ph)
-        dF = (curve.point(ph + FD_STEP_PHI_RAD) - curve.point(ph - FD_STEP_PHI_RAD)) / (2.0 * FD_STEP_PHI_RAD)
-        ph = np.clip(ph - np.einsum("ij,ij->i", F - E, dF) / np.einsum("ij,ij->i", dF, dF), lo, hi)
-    hgt = np.einsum("ij,ij->i", E - curve.point(ph), curve.normal(ph))
-    return float(min(max(hgt[0], hgt[1]), max(hgt[2], hgt[3])))
-
-
-def _tallest_tip(thickness, h_lo: float, at_lo: tuple, h_hi: float, at_hi: tuple, t_min: float, reach=None):
-    """(h, thickness(h)) of the bisection of [h_lo, h_hi] down to ``TIP_HEIGHT_TOL_MM`` for the largest tip height
-    whose land is at least ``t_min`` (``thickness(h) = (land, right hit, left hit)``; at_lo, at_hi: its values at
-    h_lo and h_hi, at_lo[0] >= t_min > at_hi[0]), in fewer evaluations, the
-    same h to the last bit: the land's root is first bracketed to 1e-3 of the tolerance by the Illinois method (the
-    land is smooth and falls with the height), then the bisection's halvings are taken over, each decided by that
-    bracket and evaluated only within 1e-8 mm of it.  Where the flank stops short of a height (no tip: a hit None) the
-    halvings are evaluated from there on, as before.  Both rest on what the bisection already assumed: a land of at
-    least ``t_min`` at a height, and a tip, hold at every lower height too.
-
-    ``reach()``, when given, guesses the height where the tip leaves a flank (``_flank_reach``).  Where h_hi has no
-    tip, the heights ``TIP_REACH_PROBE_MM`` either side of that guess are evaluated first: they bracket the height
-    the bisection would otherwise close in on evaluation by evaluation (the flank's end), or, below the flank's end
-    with too thin a land, give the Illinois method a tipped upper end.  Whatever the guess, the bracket is made of
-    heights evaluated.  Where the height found so has no tip or too thin a land (the tip's existence is not monotone
-    next to a flank's cusp), the search is made again without the probes."""
-    def f(res):
-        return res[0] - t_min
-
-    # Illinois (regula falsi with halving) on f(h) = land - t_min, while the heights tried have a tip: where the
-    # flank does not reach (a hit None) the land jumps, and the bisection below finds that height as it always did
-    a, b, fa, fb, kept = h_lo, h_hi, f(at_lo), f(at_hi), 0
-    tipped = at_hi[1] is not None and at_hi[2] is not None
-    probed = False
-    if not tipped and reach is not None:
-        try:
-            r = float(reach())
-        except (ArithmeticError, ValueError):  # no guess (a flank's end its solver cannot take): the bisection decides
-            r = math.nan
-        for hp in (r - TIP_REACH_PROBE_MM, r + TIP_REACH_PROBE_MM):
-            if a < hp < b:
-                probed = True
-                res = thickness(hp)
-                if f(res) >= 0.0:
-                    a, fa = hp, f(res)
-                else:
-                    b, fb = hp, f(res)
-                    tipped = res[1] is not None and res[2] is not None
-    steps = 0
-    # at most TIP_SECANT_STEPS_MAX secant steps (Illinois converges in 6 to 12 on a tooth's land): the bracket is
-    # valid after any of them and the bisection below decides the height, so a crawl is cut short, never wrong
-    while b - a > 1e-3 * TIP_HEIGHT_TOL_MM and tipped and steps < TIP_SECANT_STEPS_MAX:
-        steps += 1
-        # fa >= 0 > fb throughout, so the secant's root lies in [a, b): at an end (a root found exactly, fa = 0) the
-        # clamp steps just off it and the next evaluation closes the bracket (a midpoint there would only halve it)
-        m = b - fb * (b - a) / (fb - fa)
-        m = min(max(m, a + 2.5e-4 * TIP_HEIGHT_TOL_MM), b - 2.5e-4 * TIP_HEIGHT_TOL_MM)  # a step off a root at an end
-        res = thickness(m)
-        fm = f(res)
-        if fm >= 0.0:
-            a, fa = m, fm
-            if kept == -1:
-                fb *= 0.5
-            kept = -1
-        else:
-            b, fb = m, fm
-            tipped = res[1] is not None and res[2] is not None  # no tip at m: bisect from here on
-            if kept == 1:
-                fa *= 0.5
-            kept = 1
-    # the bisection's own steps (the same floats), the land evaluated only where the bracket cannot tell
-    lo, hi, best, best_h = h_lo, h_hi, at_lo, h_lo
-    while hi - lo > TIP_HEIGHT_TOL_MM:
-        mid = 0.5 * (lo + hi)
-        if mid < a - 1e-8:
-            lo = mid
-        elif mid > b + 1e-8:
-            hi = mid
-        else:
-            res = thickness(mid)
-            if res[0] >= t_min:
-                lo, best, best_h = mid, res, mid
-            else:
-                hi = mid
-    if best_h != lo:
-        best = thickness(lo)
-    if probed and not (best[0] >= t_min and best[1] is not None and best[2] is not None):
-        # the probes' bracket misled the halvings: next to a flank's cusp a tip can vanish below a height that has one
-        # (the seed-002 pair without backlash: none 0.5 um below the flank's end, one again 1 um below), so the
-        # bisection is made again from the start, without them
-        return _tallest_tip(thickness, h_lo, at_lo, h_hi, at_hi, t_min)
-    return lo, best
 
 
 def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame | None = None,
@@ -562,36 +344,10 @@ def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame 
     teeth, tips = [], []
     flat = [sd for pair in teeth_sides for sd in pair]
     h_cut = spec.h_tip_cut
-    nominal = _tip_hits_batch(flat, np.repeat(centres, 2), np.repeat(phic, 2), curve, frame, h_cut, span)
+    nominal = tip_search.tip_hits_batch(flat, np.repeat(centres, 2), np.repeat(phic, 2), curve, frame, h_cut, span)
     for k, ((s_k, ph_k), (R, Lf)) in enumerate(zip(zip(centres, phic), teeth_sides)):
-        first = [0]  # the side searched first (0 right, 1 left): the one that last had no tip
-        memo = {}  # the tooth's tip searches' samples that do not depend on the height (``_tip_hit``)
-
-        def hits(h, k=k, first=first, memo=memo):
-            if h == h_cut:
-                return nominal[2 * k], nominal[2 * k + 1]
-            # a side without a tip at h leaves no land there, whatever the other side reaches (every reader of a
-            # landless result asks only whether a hit is None): where the side searched first has none, the other
-            # side's search is not made
-            a = first[0]
-            got = [None, None]
-            got[a] = _tip_hit((R, Lf)[a], curve, h, ph_k, span, memo)
-            if got[a] is not None:
-                got[1 - a] = _tip_hit((R, Lf)[1 - a], curve, h, ph_k, span, memo)
-                if got[1 - a] is None:
-                    first[0] = 1 - a
-            return got[0], got[1]
-
-        def thickness(h):
-            hr, hl = hits(h)
-            if hr is None or hl is None:
-                return -1.0, hr, hl
-            # right side is clockwise: generation arc sg > 0; left sg < 0
-            sg_r = curve.sgn * (frame.s(np.array([hr[1]]))[0] - s_k)
-            sg_l = curve.sgn * (frame.s(np.array([hl[1]]))[0] - s_k)
-            t = _arc_len(curve, h, hl[1], hr[1])
-            return (t if sg_r > sg_l else -t), hr, hl
-
+        thickness = tip_search.ToothLand(R, Lf, curve, frame, s_k, ph_k, span, h_cut,
+                                         (nominal[2 * k], nominal[2 * k + 1]))
         h = h_cut
         t, hr, hl = thickness(h)
         shortened = False
@@ -608,8 +364,9 @@ def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame 
                 raise InputError(
                     "m", m, f"{role} tooth at phi = {ph_k:.4f} rad is pointed or cannot be cut: {why}",
                     "use a smaller profile shift, a larger shaper, more teeth or a wider smoothing")
-            h, (t, hr, hl) = _tallest_tip(thickness, h_lo, (t_lo, hr_lo, hl_lo), h, (t, hr, hl), spec.tip_min_mm,
-                                          lambda: _flank_reach((R, Lf), curve, ph_k, span))
+            h, (t, hr, hl) = tip_search.tallest_tip(thickness, h_lo, (t_lo, hr_lo, hl_lo), h, (t, hr, hl),
+                                                    spec.tip_min_mm,
+                                                    lambda: tip_search.flank_reach((R, Lf), curve, ph_k, span))
             shortened = True
         _trim_undercut(R, hr[0])
         _trim_undercut(Lf, hl[0])

@@ -15,6 +15,7 @@ import math
 import numpy as np
 
 from ..errors import require
+from ..policy import FD_STEP_PHI_RAD, FOOT_GAUSS_NEWTON_STEPS
 from .noncircular import PitchCurves, leg_breakpoints
 
 __all__ = ["ArcFrame", "BodyPitchCurve"]
@@ -205,6 +206,24 @@ class BodyPitchCurve:
             nx, ny = self._normal1(dx, dy)
             return np.array([[px + h * nx, py + h * ny]])
         return self.point(phi) + h * self.normal(phi)
+
+    def heights(self, P, h: float, grid, E=None):
+        """Signed heights of the points P (k x 2, k > 1) above the equidistant at h, each along the outward normal at
+        its foot point: the nearest of the sampled angles ``grid`` (their points E = offset(grid, h), when not given),
+        then ``FOOT_GAUSS_NEWTON_STEPS`` Gauss-Newton steps on the foot's condition (P - F(phi)) . F'(phi) = 0 within
+        the samples either side, F' by central differences.  The height is stationary at the foot, so the phi left
+        after the steps (about 1e-10 rad) moves it far below rounding.  (``noncircular_teeth.make_side``'s fillet trim
+        on the root, ``tip_search.flank_reach`` on the pitch curve itself.)"""
+        at = self.point if h == 0.0 else (lambda ph: self.offset(ph, h))
+        if E is None:
+            E = at(grid)
+        j = np.clip(np.argmin(np.linalg.norm(E[None, :, :] - P[:, None, :], axis=2), axis=1), 1, len(grid) - 2)
+        lo, hi, ph = grid[j - 1], grid[j + 1], grid[j]
+        for _ in range(FOOT_GAUSS_NEWTON_STEPS):
+            F = at(ph)
+            dF = (at(ph + FD_STEP_PHI_RAD) - at(ph - FD_STEP_PHI_RAD)) / (2.0 * FD_STEP_PHI_RAD)
+            ph = np.clip(ph - np.einsum("ij,ij->i", F - P, dF) / np.einsum("ij,ij->i", dF, dF), lo, hi)
+        return np.einsum("ij,ij->i", P - at(ph), self.normal(ph))
 
     def equidistant(self, h: float) -> "Equidistant":
         """The equidistant at height h as a curve of phi (``offset``), for the spline fits."""
