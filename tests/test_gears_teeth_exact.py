@@ -779,6 +779,17 @@ def test_the_helpers_of_the_teeth_on_circles_by_hand():
     assert len(zones) == len(iv) * (law.periods + 3)
     assert zones == [(a + k * law.period, b + k * law.period) for a, b in iv for k in range(-1, law.periods + 2)]
     assert _concave_zones(BodyPitchCurve(PitchCurves(law, 100.0), "driver")) == []
+    # the heights of points above an equidistant at their feet: on the driven circle (r = 40) the radius less 40 + h,
+    # whatever the grid's nearest sample (1.5 degrees apart); on the driver circle (r = 20) likewise, and 0 on it
+    ang = np.array([0.1013, 0.2, 0.3371, 0.41])
+    grid = np.linspace(0.0, 0.5, 21)
+    for h in (0.0, 2.5, -1.25):
+        for d in (0.7, -0.3):
+            P = (40.0 + h + d) * np.column_stack([np.cos(ang), np.sin(ang)])
+            assert driven.heights(P, h, grid) == pytest.approx(np.full(4, d), abs=1e-12)
+    on = driver.point(ang)
+    assert driver.heights(on * 1.05, 0.0, grid) == pytest.approx(np.full(4, 1.0), abs=1e-12)
+    assert driver.heights(on, 0.0, grid) == pytest.approx(np.zeros(4), abs=1e-12)
 
 
 def test_an_external_side_of_three_teeth_a_stub_rack_a_steep_rack_and_a_small_module():
