@@ -41,21 +41,41 @@ class VertexGrid:
         nx, ny = int(span[0] // h) + 1, int(span[1] // h) + 1
         ix = np.minimum(((points[:, 0] - lo[0]) / h).astype(np.int64), nx - 1)
         iy = np.minimum(((points[:, 1] - lo[1]) / h).astype(np.int64), ny - 1)
-        cell = ix * ny + iy
-        order = np.argsort(cell, kind="stable")  # ascending vertex index within a cell
-        self.items = order.astype(np.int64)
-        self.start = np.searchsorted(cell[order], np.arange(nx * ny + 1)).astype(np.int64)
+        # the vertices of each cell in ascending order (a stable sort by cell), the cells' starts, and near[c]: a
+        # vertex lies in cell c or one of its 8 neighbours (a disc of radius <= h about a point of cell c, or of the
+        # edge cell a point outside the grid is clamped to, overlaps those cells only): compiled, one counting pass
+        self.items, self.start, self.near = _bucket_nb(ix, iy, nx, ny)
         self.origin = lo.astype(np.float64)
         self.seg_b = np.ascontiguousarray(seg_b, np.float64)
         self.h, self.nx, self.ny = float(h), nx, ny
-        # near[c]: a vertex lies in cell c or one of its 8 neighbours (a disc of radius <= h about a point of cell c,
-        # or of the edge cell a point outside the grid is clamped to, overlaps those cells only)
-        occ = np.pad((np.diff(self.start) > 0).reshape(nx, ny), 1)
-        near = np.zeros((nx, ny), bool)
-        for dx in range(3):
-            for dy in range(3):
-                near |= occ[dx:dx + nx, dy:dy + ny]
-        self.near = near.ravel().astype(np.bool_)
+
+
+@njit(cache=True)
+def _bucket_nb(ix, iy, nx, ny):
+    """(items, start, near) of :class:`VertexGrid` from each vertex's cell column and row: the vertex indices by
+    cell c = ix * ny + iy, ascending within a cell (a counting sort: ``np.argsort(cell, kind="stable")``), the
+    start of each cell's run (``np.searchsorted`` of the sorted cells, nx ny + 1 of them), and whether a vertex lies
+    in the cell or one of its 8 neighbours."""
+    n = len(ix)
+    cells = nx * ny
+    count = np.zeros(cells + 1, np.int64)
+    for k in range(n):
+        count[ix[k] * ny + iy[k] + 1] += 1
+    start = np.cumsum(count)
+    fill = start[:-1].copy()
+    items = np.empty(n, np.int64)
+    for k in range(n):
+        c = ix[k] * ny + iy[k]
+        items[fill[c]] = k
+        fill[c] += 1
+    near = np.zeros(cells, np.bool_)
+    for gx in range(nx):
+        for gy in range(ny):
+            if start[gx * ny + gy + 1] > start[gx * ny + gy]:
+                for qx in range(max(gx - 1, 0), min(gx + 2, nx)):
+                    for qy in range(max(gy - 1, 0), min(gy + 2, ny)):
+                        near[qx * ny + qy] = True
+    return items, start, near
 
 
 #: the grids of an outline: cells of 1, 3, 9, … times the finest side (a search costs about (distance /
