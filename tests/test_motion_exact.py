@@ -1823,6 +1823,39 @@ def test_vertex_grid_cell_side_its_limits_and_vertex_order_in_a_cell():
     assert g.items.tolist() == list(range(0, 90, 3)) + list(range(1, 90, 3)) + list(range(2, 90, 3))
 
 
+def test_vertex_grid_buckets_are_those_of_a_stable_sort_by_cell():
+    """The compiled counting pass (``_bucket_nb``) against numpy's formulation: the vertices of each cell by a stable
+    argsort of the cell index, the starts by searchsorted, and near[c] the OR of the occupied cells' 3 x 3 blocks;
+    on clouds, rings, points on a lattice (many in one cell) and a stack of one point, at the three grid levels."""
+    rng = np.random.default_rng(7)
+    for trial in range(60):
+        n = int(rng.integers(1, 3000))
+        kind = trial % 4
+        if kind == 0:
+            P = rng.normal(size=(n, 2)) * rng.uniform(0.1, 100.0)
+        elif kind == 1:
+            a = np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)
+            P = np.column_stack([np.cos(a), np.sin(a)]) * rng.uniform(1.0, 200.0)
+        elif kind == 2:
+            P = np.round(rng.uniform(0.0, 10.0, size=(n, 2)), 1)
+        else:
+            P = np.zeros((n, 2)) + rng.normal(size=2)
+        g = nz.VertexGrid(P, P, np.abs(rng.normal(size=n)) * rng.uniform(1e-3, 2.0), (1.0, 3.0, 9.0)[trial % 3])
+        ix = np.minimum(((P[:, 0] - g.origin[0]) / g.h).astype(np.int64), g.nx - 1)
+        iy = np.minimum(((P[:, 1] - g.origin[1]) / g.h).astype(np.int64), g.ny - 1)
+        cell = ix * g.ny + iy
+        order = np.argsort(cell, kind="stable")
+        start = np.searchsorted(cell[order], np.arange(g.nx * g.ny + 1))
+        occ = np.pad((np.diff(start) > 0).reshape(g.nx, g.ny), 1)
+        near = np.zeros((g.nx, g.ny), bool)
+        for dx in range(3):
+            for dy in range(3):
+                near |= occ[dx:dx + g.nx, dy:dy + g.ny]
+        assert g.items.dtype == np.int64 and g.start.dtype == np.int64 and g.near.dtype == np.bool_
+        assert np.array_equal(g.items, order) and np.array_equal(g.start, start)
+        assert np.array_equal(g.near, near.ravel())
+
+
 def test_grid_levels_are_cached_and_three_times_coarser():
     o = Outline([SQUARE10], 0.5)
     g0, g1 = nz.grid_of(o), nz.grid_of(o, 1)
