@@ -66,7 +66,7 @@ def near(phi: float, ref: float, curve: BodyPitchCurve) -> float:
 
 
 def tip_hits_batch(sides: list, s_k: np.ndarray, ph_k: np.ndarray, curve: BodyPitchCurve, frame: ArcFrame,
-                    h: float, span: float) -> list:
+                   h: float, span: float) -> list:
     """``tip_hit`` for many sides at once (grouped by their cutter piece): vectorised sampling for
     the start and a vectorised Newton iteration on (u, phi); sides that do not converge fall back
     to ``tip_hit``."""
@@ -119,8 +119,9 @@ def tip_hits_batch(sides: list, s_k: np.ndarray, ph_k: np.ndarray, curve: BodyPi
 
 
 def land_length(curve: BodyPitchCurve, h: float, a: float, b: float) -> float:
-    x = 0.5 * (b - a) * _GX + 0.5 * (a + b)
-    ph = x
+    """Length (mm) of the equidistant at height h between the driven angles a and b (either order): 10-point
+    Gauss-Legendre in phi of its speed |d/dphi (P + h n)|."""
+    ph = 0.5 * (b - a) * _GX + 0.5 * (a + b)
     # |d/dphi (P + h n)| by central differences of the exact equidistant (h small vs rho)
     eps = FD_STEP_ARC_RAD
     d = (curve.offset(ph + eps, h) - curve.offset(ph - eps, h)) / (2 * eps)
