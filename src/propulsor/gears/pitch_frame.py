@@ -15,6 +15,7 @@ import math
 import numpy as np
 
 from ..errors import require
+from ..planar import norms
 from ..policy import FD_STEP_PHI_RAD, FOOT_GAUSS_NEWTON_STEPS
 from .noncircular import PitchCurves, leg_breakpoints
 
@@ -217,7 +218,7 @@ class BodyPitchCurve:
         at = self.point if h == 0.0 else (lambda ph: self.offset(ph, h))
         if E is None:
             E = at(grid)
-        j = np.clip(np.argmin(np.linalg.norm(E[None, :, :] - P[:, None, :], axis=2), axis=1), 1, len(grid) - 2)
+        j = np.clip(np.argmin(norms(E[None, :, :] - P[:, None, :]), axis=1), 1, len(grid) - 2)
         lo, hi, ph = grid[j - 1], grid[j + 1], grid[j]
         for _ in range(FOOT_GAUSS_NEWTON_STEPS):
             F = at(ph)

@@ -14,6 +14,7 @@ import math
 import numpy as np
 from scipy.optimize import fsolve
 
+from ..planar import norms
 from ..policy import (FD_STEP_ARC_RAD, FD_STEP_PHI_RAD, FD_STEP_REL, NEWTON_STOP_MM, ROOT_XTOL_FINE, SOLVE_RESIDUAL_MM,
                       TIP_HEIGHT_TOL_MM, TIP_REACH_PROBE_MM, TIP_SECANT_STEPS_MAX)
 from .envelope import PitchCurveCentrode, envelope_points
@@ -43,7 +44,7 @@ def tip_hit(side, curve: BodyPitchCurve, h: float, phi_guess: float, span: float
             kept = memo[id(fla)] = (fla, (phi_guess, span), fla(u), curve.point(ph), curve.normal(ph))
         X, P, N = kept[2], kept[3], kept[4]
         T = P + h * N
-    D = np.linalg.norm(X[:, None, :] - T[None, :, :], axis=2)
+    D = norms(X[:, None, :] - T[None, :, :])
     i, j = np.unravel_index(int(np.argmin(D)), D.shape)
     g = lambda y: fla.at(y[0]) - curve.offset(np.array([y[1]]), h)[0]
     tol = SOLVE_RESIDUAL_MM
@@ -90,7 +91,7 @@ def tip_hits_batch(sides: list, s_k: np.ndarray, ph_k: np.ndarray, curve: BodyPi
         Xs = X(np.tile(ug, n), np.repeat(sk, nu)).reshape(n, nu, 2)
         pg = pk[:, None] + np.linspace(-0.6, 0.6, nph)[None, :] * span
         Ts = curve.offset(pg.ravel(), h).reshape(n, nph, 2)
-        D = np.linalg.norm(Xs[:, :, None, :] - Ts[:, None, :, :], axis=3).reshape(n, -1)
+        D = norms(Xs[:, :, None, :] - Ts[:, None, :, :]).reshape(n, -1)
         k = np.argmin(D, axis=1)
         u = ug[k // nph]
         ph = pg[np.arange(n), k % nph]

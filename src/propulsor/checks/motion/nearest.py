@@ -25,6 +25,7 @@ import weakref
 import numpy as np
 from numba import njit
 from ...nbcache import bind
+from ...planar import box
 
 __all__ = ["VertexGrid", "grid_of", "disc_cells", "nearest_edge"]
 
@@ -34,7 +35,7 @@ class VertexGrid:
     vertices of cell c are ``items[start[c]:start[c + 1]]`` in ascending order."""
 
     def __init__(self, points: np.ndarray, seg_b: np.ndarray, seg_len: np.ndarray, scale: float = 1.0):
-        lo, hi = points.min(axis=0), points.max(axis=0)
+        lo, hi = box(points)
         span = np.maximum(hi - lo, 1e-9)
         # about 8 mean edges a cell side (times `scale`), at most 2^21 cells
         h = scale * max(8.0 * float(np.mean(seg_len)), math.sqrt(float(span[0] * span[1]) / float(1 << 21)), 1e-6)

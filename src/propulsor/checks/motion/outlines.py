@@ -14,6 +14,7 @@ from scipy.spatial import cKDTree
 from ... import policy
 from ...errors import InputError, require, require_positive
 from ...geometry.profile import Profile
+from ...planar import box, norms
 
 __all__ = ['row_norms', 'Outline', 'outline', 'crop_to_sector', 'cut_to_disc', 'offset_outline']
 
@@ -40,7 +41,7 @@ def _clean_loop(p, name: str) -> np.ndarray:
     require(bool(np.all(np.isfinite(p))), name, "non-finite", "points must be finite")
     if len(p) > 1 and np.linalg.norm(p[0] - p[-1]) <= policy.POINT_TOL_MM:
         p = p[:-1]
-    step = np.linalg.norm(np.diff(p, axis=0, append=p[:1]), axis=1)
+    step = norms(np.diff(p, axis=0, append=p[:1]))
     p = p[step > policy.POINT_TOL_MM]  # drop repeated vertices
     require(len(p) >= 3, name, len(p), "a closed loop needs at least 3 distinct points")
     return p
@@ -59,7 +60,7 @@ def _orient_by_nesting(loops: list[np.ndarray]) -> list[np.ndarray]:
 def _densify(p: np.ndarray, max_seg: float) -> np.ndarray:
     """Insert points on the straight edges so that no edge exceeds max_seg (same polyline)."""
     q = np.roll(p, -1, axis=0)
-    n = np.maximum(1, np.ceil(np.linalg.norm(q - p, axis=1) / max_seg).astype(int))
+    n = np.maximum(1, np.ceil(norms(q - p) / max_seg).astype(int))
     if np.all(n == 1):
         return p
     idx = np.repeat(np.arange(len(p)), n)
@@ -69,7 +70,8 @@ def _densify(p: np.ndarray, max_seg: float) -> np.ndarray:
 
 
 def row_norms(V: np.ndarray) -> np.ndarray:
-    return np.sqrt(np.einsum("ij,ij->i", V, V))
+    """|v| of each row of an (n, 2) array (:func:`propulsor.planar.norms`)."""
+    return norms(V)
 
 
 class Outline:
@@ -99,16 +101,16 @@ class Outline:
         self.prev = starts[self.loop_id] + (local - 1) % sizes[self.loop_id]
         self.seg_a = self.points
         self.seg_b = self.points[self.nxt]
-        self.seg_len = np.linalg.norm(self.seg_b - self.seg_a, axis=1)
+        self.seg_len = norms(self.seg_b - self.seg_a)
         self.half_len = 0.5 * float(self.seg_len.max())
         cum = np.cumsum(self.seg_len)
         loop_start_cum = (cum - self.seg_len)[starts]
         self.arclen = cum - self.seg_len - loop_start_cum[self.loop_id]
         # each loop's edges are one slice (the sum of the same elements in the same order as a mask would select)
         self.perimeter = np.array([self.seg_len[a:a + m].sum() for a, m in zip(starts.tolist(), sizes.tolist())])
-        lo, hi = self.points.min(axis=0), self.points.max(axis=0)
+        lo, hi = box(self.points)
         self.center = 0.5 * (lo + hi)
-        dc = np.linalg.norm(self.points - self.center, axis=1)
+        dc = norms(self.points - self.center)
         self.radius = float(dc.max())  # an edge is farthest from center at an end
         # ... but may come nearer between its ends: r_min is the least distance of any edge from center, so that
         # the whole boundary lies in the annulus r_min .. radius about center

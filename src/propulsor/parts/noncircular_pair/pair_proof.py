@@ -31,6 +31,7 @@ import numpy as np
 
 from ...checks.motion import crop_to_sector, cut_to_disc, outline, transmission_sweep
 from ... import policy
+from ...planar import norms
 
 
 @dataclass
@@ -116,7 +117,7 @@ def _axis_annulus(o) -> None:
     """Tighten an Outline's far-point filter: the annulus about the gear axis (the origin of its
     body frame) that holds every boundary point (a valid bound, much tighter than the one about
     the bounding-box centre for a ring of teeth)."""
-    d = np.linalg.norm(o.points, axis=1)
+    d = norms(o.points)
     o.center = np.zeros(2)
     o.r_min = float(d.min())
     o.radius = float(d.max())
@@ -145,7 +146,7 @@ def prove_pair(driver_profile, driven_profile, L: float, theta_of_phi, phis, r_r
     theta = np.asarray(theta_of_phi(phis), float)
     rr = np.asarray(r_ref(phis), float)
     reach = drv.radius
-    d_dvn = np.linalg.norm(dvn.points, axis=1)
+    d_dvn = norms(dvn.points)
     r_dvn, r_root = float(d_dvn.max()), float(d_dvn.min())
     max_angle = policy.MOTION_MAX_FREE_ANGLE_RAD
     search = 0.5 * (pitch_mm if pitch_mm else 8.0) / float(np.min(rr))
