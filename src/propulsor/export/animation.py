@@ -213,7 +213,7 @@ def _flat(P: np.ndarray) -> list:
     Q = np.rint(P).astype(np.int64)
     if len(Q) > 2:
         keep = np.ones(len(Q), bool)
-        keep[1:] = np.any(Q[1:] != Q[:-1], axis=1)
+        keep[1:] = (Q[1:, 0] != Q[:-1, 0]) | (Q[1:, 1] != Q[:-1, 1])  # np.any(.., axis=1), without its reduction
         Q = Q[keep]
     return Q.ravel().tolist()
 

@@ -14,6 +14,7 @@ import numpy as np
 from scipy.interpolate import make_interp_spline
 
 from ..errors import require
+from ..planar import norms
 from ..policy import SPLINE_FIT_TOL_MM
 from .profile import Spline
 from .spline_foot import foot_distances
@@ -22,7 +23,8 @@ __all__ = ["fit_curve", "fit_curves", "fit_points", "spline_deviation"]
 
 
 def _chord_params(P: np.ndarray) -> np.ndarray:
-    d = np.linalg.norm(np.diff(P, axis=0), axis=1)
+    D = np.diff(P, axis=0)
+    d = norms(D) if D.shape[1] == 2 else np.linalg.norm(D, axis=1)
     return np.concatenate([[0.0], np.cumsum(d)])
 
 

@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.interpolate import BSpline
 
+from ..planar import norms
 from ..policy import CHORD_TOL_MM, OUTLINE_JOINT_TOL_MM
 
 
@@ -148,8 +149,8 @@ class Spline:
             u = np.linspace(t0, t1, n)
             p = bs(u)
             mid = bs(0.5 * (u[:-1] + u[1:]))
-            chord_mid = 0.5 * (p[:-1] + p[1:])
-            err = np.max(np.linalg.norm(mid - chord_mid, axis=1)) if n > 1 else 0.0
+            dev = mid - 0.5 * (p[:-1] + p[1:])  # the chords' midpoints off the curve
+            err = np.max(norms(dev) if dev.shape[1] == 2 else np.linalg.norm(dev, axis=1)) if n > 1 else 0.0
             if err <= chord_tol or n > 200000:
                 return p
             n = int(n * max(1.5, math.sqrt(err / chord_tol) * 1.2))
