@@ -23,6 +23,7 @@ from typing import Sequence
 
 import numpy as np
 
+from ..planar import box
 from ..write_root import prepare
 
 __all__ = ["PALETTE", "Shape", "Mark", "Trace", "Animation", "GifInfo", "render_frames", "encode_gif",
@@ -174,7 +175,8 @@ def _bounds(anim: Animation) -> np.ndarray:
         else:
             M = np.asarray(s.poses, float)
             W = (np.einsum("kij,pj->kpi", M[:, :, :2], H) + M[:, None, :, 2]).reshape(-1, 2)
-        lo, hi = np.minimum(lo, W.min(axis=0)), np.maximum(hi, W.max(axis=0))
+        w_lo, w_hi = box(W)
+        lo, hi = np.minimum(lo, w_lo), np.maximum(hi, w_hi)
     for fm in anim.marks:
         for m in fm:
             lo, hi = np.minimum(lo, m.xy), np.maximum(hi, m.xy)

@@ -19,6 +19,7 @@ import numpy as np
 from numba import njit
 
 from ..nbcache import bind
+from ..planar import box
 from ..write_root import prepare
 
 #: picture width in pixels (the height follows the part's projected aspect, within 0.5 … 1 of it)
@@ -92,8 +93,7 @@ def render_iso(items, path: str | Path, width: int = PICTURE_WIDTH_PX, view=VIEW
     rgb = np.clip(col * shade[:, None] * 255.0, 0, 255)
 
     # fit the projected scene into the picture with a 4 % margin
-    lo = tri[:, :, :2].reshape(-1, 2).min(axis=0) if len(tri) else np.zeros(2)
-    hi = tri[:, :, :2].reshape(-1, 2).max(axis=0) if len(tri) else np.ones(2)
+    lo, hi = box(tri[:, :, :2].reshape(-1, 2)) if len(tri) else (np.zeros(2), np.ones(2))
     span = np.maximum(hi - lo, 1e-9)
     W = int(width) * SUPERSAMPLE
     H = int(round(W * float(np.clip(span[1] / span[0], 0.5, 1.0)))) // SUPERSAMPLE * SUPERSAMPLE
