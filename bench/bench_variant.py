@@ -103,6 +103,17 @@ are certainly apart.  The design alone (``Variant(...).design``, least of three)
 whole-cycle proof alone 1.32 -> 0.96 CPU s.  What is left (seed 002, py-spy): the as-built contact's compiled
 search 36 %, the design 31 % (the tip searches' fsolve, the fits' B-spline interpolation), the whole-cycle proof
 27 % (the crops' booleans, the free rotations).
+
+2026-11-30, a fourth session (2 cores; 23513cd in a worktree and the new tree in turn, least of two variants each):
+numpy's reductions along the short axis of (n, 2) arrays (``np.linalg.norm(V, axis=1)``, ``V.min(axis=0)``: 5 and 10
+times the cost of the same arithmetic column by column) replaced where the outlines, the vertex grids and the foot and
+tip searches prepare thousands of vertices (``propulsor.planar``: the same floats), and the vertex grid's buckets built
+by one compiled counting pass (the same arrays).  Quiet, two rounds: the seed-002 pair 3.84 / 3.81 -> 3.66 / 3.58 CPU s
+(-5 %), its Fourier form 5.67 / 5.62 -> 5.59 / 5.58; later, the machine ~10 % slower: 4.08 / 4.43 -> 4.03 / 3.72 and
+6.42 / 6.41 -> 6.11 / 6.19.  Every output identical bit for bit.  Where the 1.0 CPU s target stands: the as-built
+contact's compiled search alone is 1.34 CPU s a seed-002 variant (2 x ~10 800 positions at ~62 us: the 0.05 deg
+sampling and the 1e-5 rad location of each change of state that policy asks for), so the target needs that search
+three times faster or fewer positions, which would change the measured transmission.
 """
 
 from __future__ import annotations

@@ -39,6 +39,9 @@ wall (49.52 CPU s), peak 288 MiB; ours 13.84 s wall (21.84 CPU s), peak 665 MiB:
 ``ncg_elliptical.toml`` 10.31 s wall.  Our Fourier build against the session's start (68c8983), paired, two rounds:
 12.76 / 13.02 -> 12.92 / 12.61 s wall, 18.98 / 19.37 -> 18.83 / 18.55 CPU s: this session's gains (the lock-step fits,
 the law search kept) do not reach a Fourier law, and its peak grew by 10 MB (the spline samples kept).
+2026-11-30, a fourth session (2 cores, the machine ~15 % slower than the last; 8aa9e9d): ncgears 54.01 s wall (56.80
+CPU s), peak 288 MiB; ours 16.49 s wall (25.47 CPU s), peak 651 MiB: wall ratio 0.305, CPU ratio 0.448 (the
+session's gains, a few per cent of a variant, are within this benchmark's spread).
 """
 
 from __future__ import annotations
