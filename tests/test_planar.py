@@ -24,6 +24,12 @@ def test_norms_and_box_are_numpy_s_to_the_last_bit(scale):
                               np.linalg.norm(D[:, :, None, :] - D[:, None, :, :], axis=3))
 
 
+def test_other_lengths_are_numpy_s_own():
+    V = np.random.default_rng(5).normal(size=(200, 3)) * 40.0
+    assert np.array_equal(norms(V), np.linalg.norm(V, axis=-1))
+    assert norms(np.array([[1.0, 2.0, 2.0, 4.0]])).tolist() == [5.0]
+
+
 def test_by_hand_and_at_the_edges():
     assert norms(np.array([[3.0, 4.0], [0.0, -0.0], [-5.0, 12.0]])).tolist() == [5.0, 0.0, 13.0]
     lo, hi = box(np.array([[1.0, -2.0], [-3.0, 5.0], [2.0, 0.5]]))

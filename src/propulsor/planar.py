@@ -16,8 +16,11 @@ __all__ = ["norms", "box"]
 
 
 def norms(V) -> np.ndarray:
-    """|v| of each vector along the last axis (of length 2): ``np.linalg.norm(V, axis=-1)``, the same floats."""
+    """|v| of each vector along the last axis: ``np.linalg.norm(V, axis=-1)``, the same floats (written out for
+    plane vectors, numpy's own for any other length)."""
     V = np.asarray(V)
+    if V.shape[-1] != 2:
+        return np.linalg.norm(V, axis=-1)
     x, y = V[..., 0], V[..., 1]
     return np.sqrt(x * x + y * y)
 

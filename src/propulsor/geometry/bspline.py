@@ -23,8 +23,7 @@ __all__ = ["fit_curve", "fit_curves", "fit_points", "spline_deviation"]
 
 
 def _chord_params(P: np.ndarray) -> np.ndarray:
-    D = np.diff(P, axis=0)
-    d = norms(D) if D.shape[1] == 2 else np.linalg.norm(D, axis=1)
+    d = norms(np.diff(P, axis=0))
     return np.concatenate([[0.0], np.cumsum(d)])
 
 

@@ -150,7 +150,7 @@ class Spline:
             p = bs(u)
             mid = bs(0.5 * (u[:-1] + u[1:]))
             dev = mid - 0.5 * (p[:-1] + p[1:])  # the chords' midpoints off the curve
-            err = np.max(norms(dev) if dev.shape[1] == 2 else np.linalg.norm(dev, axis=1)) if n > 1 else 0.0
+            err = np.max(norms(dev)) if n > 1 else 0.0
             if err <= chord_tol or n > 200000:
                 return p
             n = int(n * max(1.5, math.sqrt(err / chord_tol) * 1.2))

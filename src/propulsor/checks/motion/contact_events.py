@@ -42,7 +42,8 @@ from .contact_kernels import (DRIVE, REVERSE, _first_hit_pruned, _least, _neares
 from .contact_reuse import add_slots, new_caches
 from .contact_track import track
 from .nearest import grid_of
-from .outlines import Outline, row_norms
+from ...planar import norms
+from .outlines import Outline
 
 __all__ = ["KINDS", "PairOutlines", "ContactLaw", "Stretch", "resolve_contact", "contact_law", "runs"]
 
@@ -61,7 +62,7 @@ def _turning(o: Outline) -> np.ndarray:
 
 def _sorted_by_angle(o: Outline, r_min: float):
     """Indices of the vertices farther than r_min from the body axis, sorted by polar angle, and the angles."""
-    r = row_norms(o.points)
+    r = norms(o.points)
     keep = np.nonzero(r > r_min)[0]
     a = np.arctan2(o.points[keep, 1], o.points[keep, 0])
     order = np.argsort(a, kind="stable")
@@ -128,7 +129,7 @@ class PairOutlines:
         self.turn_drv, self.turn_dvn = _turning(driver), _turning(driven)
         self.corner_drv = np.abs(self.turn_drv) > lim
         self.corner_dvn = np.abs(self.turn_dvn) > lim
-        r_drv, r_dvn = row_norms(driver.points), row_norms(driven.points)
+        r_drv, r_dvn = norms(driver.points), norms(driven.points)
         R1, R2 = float(r_drv.max()), float(r_dvn.max())
         self.o1, self.a1 = _sorted_by_angle(driven, self.L - R1 - 1.0)
         self.o2, self.a2 = _sorted_by_angle(driver, self.L - R2 - 1.0)

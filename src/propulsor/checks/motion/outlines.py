@@ -16,7 +16,7 @@ from ...errors import InputError, require, require_positive
 from ...geometry.profile import Profile
 from ...planar import box, norms
 
-__all__ = ['row_norms', 'Outline', 'outline', 'crop_to_sector', 'cut_to_disc', 'offset_outline']
+__all__ = ['Outline', 'outline', 'crop_to_sector', 'cut_to_disc', 'offset_outline']
 
 
 def _signed_area(p: np.ndarray) -> float:
@@ -69,11 +69,6 @@ def _densify(p: np.ndarray, max_seg: float) -> np.ndarray:
     return p[idx] + t * (q[idx] - p[idx])
 
 
-def row_norms(V: np.ndarray) -> np.ndarray:
-    """|v| of each row of an (n, 2) array (:func:`propulsor.planar.norms`)."""
-    return norms(V)
-
-
 class Outline:
     """A planar body prepared for motion checks (in its own body frame).
 
@@ -116,7 +111,7 @@ class Outline:
         # the whole boundary lies in the annulus r_min .. radius about center
         e = self.seg_b - self.seg_a
         t = np.clip(np.einsum("ij,ij->i", self.center - self.seg_a, e) / (self.seg_len * self.seg_len), 0.0, 1.0)
-        self.r_min = float(row_norms(self.seg_a + t[:, None] * e - self.center).min())
+        self.r_min = float(norms(self.seg_a + t[:, None] * e - self.center).min())
 
     @cached_property
     def section(self) -> m3d.CrossSection:
@@ -132,7 +127,7 @@ class Outline:
 
     def boundary_lower_bound(self, P: np.ndarray) -> np.ndarray:
         """A lower bound of the distance from each point (body frame) to the boundary (annulus test)."""
-        d = row_norms(P - self.center)
+        d = norms(P - self.center)
         return np.maximum(d - self.radius, self.r_min - d)
 
     @property

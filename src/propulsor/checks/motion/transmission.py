@@ -13,7 +13,8 @@ import numpy as np
 from ... import policy
 from ...check import Check
 from ...errors import require, require_positive
-from .outlines import row_norms, outline
+from ...planar import norms
+from .outlines import outline
 from .poses import Pose, apply_pose, compose_poses, inverse_pose
 from .distance import check_record
 from .backlash import free_rotation
@@ -202,9 +203,9 @@ def transmission_sweep(driver_profile, driver_center, driven_profile, driven_cen
             ptc[k] = ptd[k] = np.nan
             continue
         C1 = rel21[:, 2]
-        rho1 = row_norms(P1 - C1)
+        rho1 = norms(P1 - C1)
         lb1 = drv.boundary_lower_bound(P1)
-        rho2 = row_norms(P2)
+        rho2 = norms(P2)
         lb2 = dvn.boundary_lower_bound(P2)
         geo = (P1, C1, P2, rho1, lb1, rho2, lb2, M2)
         f = free_rotation(drv, dvn, *geo, s2, w_fwd, max_angle, contact_tol, contact_merge)

@@ -160,11 +160,11 @@ class ContactLaw:
 
     def engaged(self, j: int, phi: float) -> bool:
         """Sector j's outline reaches into the gear's tip circle."""
-        from ...checks.motion.outlines import row_norms
+        from ...planar import norms
 
         c, s = math.cos(phi), math.sin(phi)
         P = self.b.sectors[j].points @ np.array([[c, s], [-s, c]])
-        return bool(np.min(row_norms(P - self.O2)) < self.b.r_a2)
+        return bool(np.min(norms(P - self.O2)) < self.b.r_a2)
 
     def overlaps(self, j: int, phi: float, th: float) -> bool:
         """Whether sector j and the gear have area in common (above 1e-12 mm^2: a free start is what the rotational
@@ -184,7 +184,7 @@ class ContactLaw:
     def back_room(self, j: int, phi: float, th: float, w0: float):
         """Free rotation of the gear backwards from th against sector j: (room, world contact point)."""
         from ...checks.motion.backlash import free_rotation
-        from ...checks.motion.outlines import row_norms
+        from ...planar import norms
         from ...checks.motion.poses import apply_pose, inverse_pose
 
         drv, gear = self.b.sectors[j], self.b.gear
@@ -192,7 +192,7 @@ class ContactLaw:
         rel12 = inverse_pose(rel21)
         P1, C1 = apply_pose(rel21, gear.points), rel21[:, 2]
         P2 = apply_pose(rel12, drv.points)
-        r = free_rotation(drv, gear, P1, C1, P2, row_norms(P1 - C1), drv.boundary_lower_bound(P1), row_norms(P2),
+        r = free_rotation(drv, gear, P1, C1, P2, norms(P1 - C1), drv.boundary_lower_bound(P1), norms(P2),
                           gear.boundary_lower_bound(P2), M2, 1.0, w0, self.b.w_max, policy.MOTION_CONTACT_TOL_MM,
                           policy.MOTION_CONTACT_MERGE_MM)
         return r.delta, r.point
