@@ -38,7 +38,7 @@ def _pruned(po, q):
 
 
 def _reusing(po, c1, c2, q):
-    r, c1, c2 = cr.first_hit_reusing(c1, c2, S, WIDEN, FACTOR, *q, *_args(po))
+    r, c1, c2 = cr.first_hit_reusing(c1, c2, S, WIDEN, FACTOR, q[3], *q, *_args(po))
     return tuple(r), c1, c2
 
 
@@ -189,3 +189,23 @@ def test_a_candidate_that_has_come_within_reach_since_the_sorting_is_searched(sp
                     held += 1
                     assert r == _pruned(po, q), (q, back)
     assert held > 60, held
+
+
+def test_the_nearer_part_of_the_window_first_gives_the_whole_windows_contact(spur, monkeypatch):
+    """The tracked search turns through the nearer ``CONTACT_TRACK_FIRST_WINDOW`` margins of its window first and
+    through the whole only where that part holds no contact: the contact law is that of the whole window at once
+    (2), bit for bit, whether the first part nearly always holds the contact (the policy's), holds it about half the
+    time (1.0: the contact moves either way of the margin) or never (0.1: every pose searched twice)."""
+    po = _pair(spur)
+    span = 2 * math.pi / Z2 * 2
+    laws = {}
+    for first in (2.0, policy.CONTACT_TRACK_FIRST_WINDOW, 1.0, 0.1):
+        monkeypatch.setattr(policy, "CONTACT_TRACK_FIRST_WINDOW", first)
+        laws[first] = [resolve_contact(po, _law, 0.0, span, d) for d in (DRIVE, REVERSE)]
+    assert policy.CONTACT_TRACK_FIRST_WINDOW < 2.0
+    for first, got in laws.items():
+        for a, b in zip(got, laws[2.0]):
+            assert len(a.phi) > 100 and np.isfinite(a.te).all()
+            for f in ("phi", "theta", "te", "kind", "driver_tooth", "driven_tooth"):
+                assert np.array_equal(getattr(a, f), getattr(b, f), equal_nan=True), (first, f)
+            assert a.evaluations == b.evaluations

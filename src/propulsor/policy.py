@@ -320,6 +320,10 @@ CONTACT_CORNER_NEAR_MM = 2e-3
 CONTACT_TRACK_MARGIN_RAD = 3e-4
 #: ... at most this far (rad): less than half the backlash of any pair the proofs pass (0.1 mm on 100 mm)
 CONTACT_TRACK_MARGIN_MAX_RAD = 1e-3
+#: ... and turned first through this many margins (of the two its window spans), the whole window only where that
+#: holds no contact: the same first contact (a hit within the part is the first within the whole), fewer vertices
+#: tested (2: the whole window at once)
+CONTACT_TRACK_FIRST_WINDOW = 1.05
 #: the contact search skips, before any per-vertex work, each run of this many vertices (in polar-angle order) whose
 #: bounding circle stays farther from the mate's outline than the run can turn (a lower bound of that distance read
 #: from a grid of the mate, :func:`.contact_events.distance_field`): the same first contact, found in fewer steps

@@ -48,7 +48,7 @@ def _kind_nb(side, v, e, t, near, corner_dvn, turn_dvn, corner_drv, turn_drv, le
 @njit(cache=True)
 def _track_nb(phis, ths, seeds, seed_phis, chained, sign, m0, m_max, w0, w_max, near, L, dvn_pts, dvn_a, dvn_b,
               drv_pts, driver_teeth, driven_teeth, corner_dvn, turn_dvn, corner_drv, turn_drv, len_drv, nxt_drv,
-              len_dvn, nxt_dvn, slots, caches, slack, widen, w_factor, args):
+              len_dvn, nxt_dvn, slots, caches, slack, widen, w_factor, first, args):
     n = len(phis)
     # the candidate vertices of a pose reused at the next poses of its slot while they provably hold (contact_reuse)
     cache1, cache2 = empty_cache(), empty_cache()
@@ -75,11 +75,18 @@ def _track_nb(phis, ths, seeds, seed_phis, chained, sign, m0, m_max, w0, w_max, 
                         caches[cur] = (cache1, cache2)
                     cache1, cache2 = caches[slot]
                     cur = slot
-                r, cache1, cache2 = first_hit_reusing(cache1, cache2, slack, widen, w_factor, p + prev + sign * m, th,
-                                                      sign, 2.0 * m, *args)
+                # the nearer part of the window first (the contact seldom moved by more than a fifth of the margin),
+                # then the whole of it where that part holds no hit: the first hit within the whole, either way
+                r, cache1, cache2 = first_hit_reusing(cache1, cache2, slack, widen, w_factor, 2.0 * m,
+                                                      p + prev + sign * m, th, sign, first * m, *args)
+                if not math.isfinite(r[0]) and first < 2.0:
+                    r, cache1, cache2 = first_hit_reusing(cache1, cache2, slack, widen, w_factor, 2.0 * m,
+                                                          p + prev + sign * m, th, sign, 2.0 * m, *args)
                 d, side, v, e, t = r
             else:
-                d, side, v, e, t = _first_hit_pruned(p + prev + sign * m, th, sign, 2.0 * m, *args)
+                d, side, v, e, t = _first_hit_pruned(p + prev + sign * m, th, sign, first * m, *args)
+                if not math.isfinite(d) and first < 2.0:
+                    d, side, v, e, t = _first_hit_pruned(p + prev + sign * m, th, sign, 2.0 * m, *args)
             if math.isfinite(d) and 0.2 * m < d:
                 found = True
                 x = prev + sign * (m - d)
@@ -145,7 +152,7 @@ def track(pair, phis, thetas, direction: int, seeds, seed_phis, chained: bool, s
                      pair.corner_drv, pair.turn_drv, pair.drv.seg_len, pair.drv.nxt, pair.dvn.seg_len, pair.dvn.nxt,
                      np.ascontiguousarray(slots, np.int64), caches, policy.CONTACT_REUSE_SLACK_MM,
                      policy.CONTACT_REUSE_WIDEN_RAD, policy.CONTACT_REUSE_TURN_FACTOR,
-                     tuple(ka[:11]) + tuple(pa) + tuple(ka[11:]))
+                     min(float(policy.CONTACT_TRACK_FIRST_WINDOW), 2.0), tuple(ka[:11]) + tuple(pa) + tuple(ka[11:]))
 
 
 # the disk cache of these kernels keyed on every kernel source (one may be compiled into another's code)
