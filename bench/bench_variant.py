@@ -114,6 +114,19 @@ by one compiled counting pass (the same arrays).  Quiet, two rounds: the seed-00
 contact's compiled search alone is 1.34 CPU s a seed-002 variant (2 x ~10 800 positions at ~62 us: the 0.05 deg
 sampling and the 1e-5 rad location of each change of state that policy asks for), so the target needs that search
 three times faster or fewer positions, which would change the measured transmission.
+
+2026-12-01, a fifth session (2 cores; f219260 in a worktree and the new tree in turn, two rounds of two variants):
+the tracked contact search turns through the nearer 1.05 of its window's two margins first and through the whole
+only where that part holds no contact (``policy.CONTACT_TRACK_FIRST_WINDOW``; a hit within the part is the first
+within the whole, so the contact is the same, bit for bit).  Where the contact lies in the window (d / margin at
+consecutive samples, seed 002, seed 000 and the elliptical pair, both directions): 0.990 to 1.011, so the part holds
+it at every sample of these pairs.  The six contacts of seed 002, its Fourier form and seed 000, in one process, the
+whole window and the part in turn (least of four): 4.33 -> 3.41 CPU s (-21 %).  Variants: the seed-002 pair 3.82 /
+3.81 -> 3.45 / 3.45 CPU s (-10 %), its Fourier form 6.00 / 5.93 -> 5.30 / 5.88 (noisy).  perf (with a map of numba's
+symbols written by hand: address and size of each compiled function) of the contacts after it: the per-vertex root
+search 23 %, the candidates' new sorting 20 %, numba's reference counts 19 % (the ~30 arrays each call of the
+per-position search hands on), the candidates' filter 5 %.  The Fourier form's variant also measures the load per
+tooth (1.24 CPU s, of which the curvature fits 0.43), which the seed-002 pair's part file does not ask for.
 """
 
 from __future__ import annotations

@@ -10,13 +10,15 @@ edge of the other (:func:`.backlash._rot_hits`, exact for the polylines); its *s
   ``driven root corner`` (a concave corner);
 * the tooth of each wheel it lies on (nearest tooth centre by polar angle in the wheel's body frame).
 
-The transmission is sampled every ``step`` of driver angle (``policy.CONTACT_STEP_DRIVER_DEG``), and every
-interval whose ends are in different states is bisected down to ``h_min`` of driven angle
+The transmission is sampled every ``step`` of driver angle (``policy.CONTACT_STEP_DRIVER_DEG``), and every interval
+whose ends are in different states is bisected down to ``h_min`` of driven angle
 (``policy.CONTACT_EVENT_STEP_RAD``), so that each change of the tooth pair or the contact kind is located to
-``h_min`` and a stretch in another state that starts or ends between two samples is found when at least
-2 ``h_min`` wide.  A sample is found from the previous one's contact: the driven wheel is placed a little on
-the free side of it and turned through a small window (a full search from the law's position when that finds
-nothing), which keeps one measurement under a millisecond.  Before any per-vertex work the search leaves out the
+``h_min`` and a stretch in another state that starts or ends between two samples is found when at least 2 ``h_min``
+wide.  A sample is found from the previous one's contact: the driven wheel is placed a little on the free side of it
+and turned through a small window (a full search from the law's position when that finds nothing), which keeps one
+measurement under a millisecond; the nearer part of that window (``policy.CONTACT_TRACK_FIRST_WINDOW`` margins of
+its two) is searched first, the whole only where the part holds no contact (a hit within the part is the first
+within the whole: the same contact, fewer vertices tested).  Before any per-vertex work the search leaves out the
 window's vertices that cannot reach the mate within the window: runs of ``policy.CONTACT_PRUNE_CHUNK`` vertices by
 their bounding circle, then the rest one by one, against a lower bound of the distance to the mate's outline read
 from a grid (:func:`distance_field`); the first hit is the same, bit for bit.  The sampled run, and the bisection of

@@ -172,8 +172,9 @@ def _reused(qp, qf, bounds, V, c1, s1, tx, c2, s2, cx, cy, chord):
 
 
 @njit(cache=True)
-def _side(cache, order, angs, centre, hw, w, w_hold, chunk, cc, cr, V, c1, s1, tx, c2, s2, cx, cy, S, widen_rad, w_factor,
-          ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny, fvals, tV, ox, oy, h, nx, ny, start, items, half_len):
+def _side(cache, order, angs, centre, hw, w, w_hold, chunk, cc, cr, V, c1, s1, tx, c2, s2, cx, cy, S, widen_rad,
+          w_factor, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny, fvals, tV, ox, oy, h, nx, ny, start, items,
+          half_len):
     """The vertices of one side to search at this pose (window ``centre`` +- ``hw + w``), and the cache (refreshed
     here when it no longer holds; a refresh holds for turns up to ``w_hold`` times ``w_factor``)."""
     st, kj, kp, qp, qf = cache
@@ -188,9 +189,9 @@ def _side(cache, order, angs, centre, hw, w, w_hold, chunk, cc, cr, V, c1, s1, t
 
 
 @njit(cache=True)
-def first_hit_reusing(cache1, cache2, S, widen_rad, w_factor, w_hold, phi_a, theta, sign, w, L, dvn_V, o1, a1, hw_dvn, drv_V,
-                      o2, a2, hw_drv, R1, R2, chunk, cc1, cr1, cc2, cr2, f0, f1, f2, f3, f4, f5, g0, g1, g2, g3, g4,
-                      g5, t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14, t15,
+def first_hit_reusing(cache1, cache2, S, widen_rad, w_factor, w_hold, phi_a, theta, sign, w, L, dvn_V, o1, a1,
+                      hw_dvn, drv_V, o2, a2, hw_drv, R1, R2, chunk, cc1, cr1, cc2, cr2, f0, f1, f2, f3, f4, f5, g0,
+                      g1, g2, g3, g4, g5, t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14, t15,
                       u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14, u15):
     """:func:`.contact_kernels._first_hit_pruned` (the same hit, bit for bit) with each side's vertices taken from its
     cache (``cache1``: the driven vertices onto the driver, ``cache2``: the driver's onto the driven):
@@ -203,14 +204,14 @@ def first_hit_reusing(cache1, cache2, S, widen_rad, w_factor, w_hold, phi_a, the
     cx1 = -L * ct + 0.0 * (-st)
     cy1 = -L * st + 0.0 * ct
     keep1 = R1 + w * R2 + 1e-6
-    i1, cache1 = _side(cache1, o1, a1, phi_a, hw_dvn, w, w_hold, chunk, cc1, cr1, dvn_V, cp, sp, -L, ct, st, cx1, cy1, S,
-                       widen_rad, w_factor, t12, t13, t14, t15, f0, f1, f2, f3, f4, f5, t0, t4, t5, t6, t7, t8, t9,
-                       t10, t3)
+    i1, cache1 = _side(cache1, o1, a1, phi_a, hw_dvn, w, w_hold, chunk, cc1, cr1, dvn_V, cp, sp, -L, ct, st, cx1, cy1,
+                       S, widen_rad, w_factor, t12, t13, t14, t15, f0, f1, f2, f3, f4, f5, t0, t4, t5, t6, t7, t8,
+                       t9, t10, t3)
     k1, d1, e1, q1 = _side_hits(i1, dvn_V, cp, sp, -L, ct, st, sign, w, keep1, cx1, cy1, drv_t)
     cth, sth, cph, sph = math.cos(theta), math.sin(theta), math.cos(phi_a), math.sin(phi_a)
-    i2, cache2 = _side(cache2, o2, a2, math.pi - theta, hw_drv, w, w_hold, chunk, cc2, cr2, drv_V, cth, sth, L, cph, sph, 0.0,
-                       0.0, S, widen_rad, w_factor, u12, u13, u14, u15, g0, g1, g2, g3, g4, g5, u0, u4, u5, u6, u7,
-                       u8, u9, u10, u3)
+    i2, cache2 = _side(cache2, o2, a2, math.pi - theta, hw_drv, w, w_hold, chunk, cc2, cr2, drv_V, cth, sth, L, cph,
+                       sph, 0.0, 0.0, S, widen_rad, w_factor, u12, u13, u14, u15, g0, g1, g2, g3, g4, g5, u0, u4,
+                       u5, u6, u7, u8, u9, u10, u3)
     k2, d2, e2, q2 = _side_hits(i2, drv_V, cth, sth, L, cph, sph, -sign, w, R2 + 1e-6, 0.0, 0.0, dvn_t)
     j1, m1 = _least(d1)
     j2, m2 = _least(d2)
