@@ -75,8 +75,9 @@ def _track_nb(phis, ths, seeds, seed_phis, chained, sign, m0, m_max, w0, w_max, 
                         caches[cur] = (cache1, cache2)
                     cache1, cache2 = caches[slot]
                     cur = slot
-                # the nearer part of the window first (the contact seldom moved by more than a fifth of the margin),
-                # then the whole of it where that part holds no hit: the first hit within the whole, either way
+                # the nearer part of the window first (from one position to the next the contact moves by about a
+                # hundredth of the margin), then the whole of it where that part holds no hit: the first hit within
+                # the whole, either way
                 r, cache1, cache2 = first_hit_reusing(cache1, cache2, slack, widen, w_factor, 2.0 * m,
                                                       p + prev + sign * m, th, sign, first * m, *args)
                 if not math.isfinite(r[0]) and first < 2.0:
