@@ -42,6 +42,10 @@ the law search kept) do not reach a Fourier law, and its peak grew by 10 MB (the
 2026-11-30, a fourth session (2 cores, the machine ~15 % slower than the last; 8aa9e9d): ncgears 54.01 s wall (56.80
 CPU s), peak 288 MiB; ours 16.49 s wall (25.47 CPU s), peak 651 MiB: wall ratio 0.305, CPU ratio 0.448 (the
 session's gains, a few per cent of a variant, are within this benchmark's spread).
+2026-12-01, a fifth session (2 cores, idle; 9efa157): ncgears 46.83 s wall (49.14 CPU s), peak 285 MiB; ours 14.49 s
+wall (22.69 CPU s), peak 662 MiB: wall ratio 0.309, CPU ratio 0.462; ``ncg_elliptical.toml`` 10.42 s wall.  ``make``
+from clean, f219260 and the new tree in turn, two rounds: 145.6 / 139.6 -> 141.3 / 126.9 s wall, 270.4 / 259.4 ->
+261.3 / 235.8 CPU s (the contact search's nearer window first); the 636 files identical.
 """
 
 from __future__ import annotations
