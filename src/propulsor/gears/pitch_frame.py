@@ -196,7 +196,7 @@ class BodyPitchCurve:
             nx, ny = self._normal1(dx, dy)
             return np.array([[nx, ny]])
         d = self.sgn * self.dpoint(phi)
-        d = d / np.linalg.norm(d, axis=1)[:, None]
+        d = d / norms(d)[:, None]
         return np.column_stack([-d[:, 1], d[:, 0]])
 
     def offset(self, phi, h):

@@ -100,7 +100,7 @@ def tip_hits_batch(sides: list, s_k: np.ndarray, ph_k: np.ndarray, curve: BodyPi
             Xu = X(u, sk)
             T = curve.offset(ph, h)
             G = Xu - T
-            if np.max(np.linalg.norm(G, axis=1)) < NEWTON_STOP_MM:
+            if np.max(norms(G)) < NEWTON_STOP_MM:
                 break
             dX = (X(u + eu, sk) - Xu) / eu
             dT = (curve.offset(ph + ep, h) - T) / ep
@@ -109,7 +109,7 @@ def tip_hits_batch(sides: list, s_k: np.ndarray, ph_k: np.ndarray, curve: BodyPi
             du = -(G[:, 0] * (-dT[:, 1]) - G[:, 1] * (-dT[:, 0])) / det
             dp = -(dX[:, 0] * G[:, 1] - dX[:, 1] * G[:, 0]) / det
             u, ph = u + du, ph + dp
-        res = np.linalg.norm(X(u, sk) - curve.offset(ph, h), axis=1)
+        res = norms(X(u, sk) - curve.offset(ph, h))
         for j, i in enumerate(idx):
             tol = SOLVE_RESIDUAL_MM
             if res[j] <= tol and min(u0, u1) - tol <= u[j] <= max(u0, u1) + tol:
@@ -126,7 +126,7 @@ def land_length(curve: BodyPitchCurve, h: float, a: float, b: float) -> float:
     # |d/dphi (P + h n)| by central differences of the exact equidistant (h small vs rho)
     eps = FD_STEP_ARC_RAD
     d = (curve.offset(ph + eps, h) - curve.offset(ph - eps, h)) / (2 * eps)
-    return abs(0.5 * (b - a) * float(np.dot(_GW, np.linalg.norm(d, axis=1))))
+    return abs(0.5 * (b - a) * float(np.dot(_GW, norms(d))))
 
 
 class ToothLand:

@@ -44,7 +44,7 @@ from .contact_kernels import (DRIVE, REVERSE, _first_hit_pruned, _least, _neares
 from .contact_reuse import add_slots, new_caches
 from .contact_track import track
 from .nearest import grid_of
-from ...planar import norms
+from ...planar import box, norms
 from .outlines import Outline
 
 __all__ = ["KINDS", "PairOutlines", "ContactLaw", "Stretch", "resolve_contact", "contact_law", "runs"]
@@ -82,7 +82,7 @@ def distance_field(o: Outline, cells: int = policy.CONTACT_FIELD_CELLS) -> tuple
     if f is None:
         from scipy.ndimage import distance_transform_edt
 
-        lo, hi = o.points.min(axis=0), o.points.max(axis=0)
+        lo, hi = box(o.points)
         h = float(np.max(hi - lo)) / cells
         lo = lo - 2.0 * h
         nx, ny = (int(math.ceil(float(hi[k] + 2.0 * h - lo[k]) / h)) for k in (0, 1))

@@ -220,7 +220,7 @@ def transmission_sweep(driver_profile, driver_center, driven_profile, driven_cen
     if r_ref is None:
         pts = np.vstack([ptd, ptc])
         pts = pts[np.all(np.isfinite(pts), axis=1)]
-        rr = np.full(N, float(np.mean(np.linalg.norm(pts - c2, axis=1))) if len(pts) else np.nan)
+        rr = np.full(N, float(np.mean(norms(pts - c2))) if len(pts) else np.nan)
     elif callable(r_ref):
         rr = np.array([float(r_ref(p)) for p in phis])
     else:
