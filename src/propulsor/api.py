@@ -35,6 +35,7 @@ import numpy as np
 from .building import ProofResult as Proof  # what the design and the full-cycle proofs gave
 from .building import as_path
 from .errors import CheckFailed, InputError
+from .solids.cq_import import import_cadquery
 
 __all__ = ["Part", "Build", "Proof", "Values", "part", "part_types", "parameters", "as_path"]
 
@@ -317,7 +318,7 @@ class Part:
     def assembly(self, name: str | None = None):
         """A ``cq.Assembly`` of the build's assembly `name` (the first one when None): named components
         placed as in ``<name>.step``, coloured as in the gallery."""
-        import cadquery as cq
+        cq = import_cadquery()
 
         from .export.render import palette_colour
 

@@ -22,6 +22,7 @@ from OCP.TopoDS import TopoDS_Shape
 from OCP.XCAFDoc import XCAFDoc_DocumentTool
 
 from ..solids.kernel import occ_shape, solids_of  # noqa: F401  (solids_of: public here too)
+from ..solids.cq_import import import_cadquery
 from ..write_root import prepare
 
 STEP_TIMESTAMP = "2000-01-01T00:00:00"
@@ -99,7 +100,7 @@ def write_step(solid, path: str | Path, name: str) -> Path:
 def _location(loc, rot_z=None):
     import math
 
-    import cadquery as cq
+    cq = import_cadquery()
 
     if isinstance(loc, cq.Location):
         return loc
@@ -122,7 +123,7 @@ def write_assembly_step(path, components, name: str) -> Path:
     translation.  For convenience the first two arguments may come in either
     order (components, path).  Each component keeps its name and placement.
     """
-    import cadquery as cq
+    cq = import_cadquery()
     from cadquery.occ_impl.exporters.assembly import exportAssembly
 
     if isinstance(components, (str, Path)):

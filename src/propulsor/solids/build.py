@@ -24,6 +24,7 @@ from OCP.TopoDS import TopoDS, TopoDS_Vertex, TopoDS_Wire
 from ..errors import require, require_positive
 from ..geometry.profile import Arc, Line, Loop, Profile, Spline
 from ..policy import POINT_TOL_MM
+from .cq_import import import_cadquery
 
 __all__ = ["extrude_profile", "profile_face", "loop_wire"]
 
@@ -103,7 +104,7 @@ def profile_face(profile: Profile):
 
 def extrude_profile(profile: Profile, width_mm: float):
     """Prism of the profile from z = 0 to z = width_mm, as a ``cadquery.Solid``."""
-    import cadquery as cq
+    cq = import_cadquery()
 
     w = require_positive("width_mm", width_mm, "mm")
     face = profile_face(profile)

@@ -32,6 +32,7 @@ from OCP.TopoDS import TopoDS, TopoDS_Shape
 from OCP.TopTools import TopTools_ListOfShape
 
 from ..errors import InputError, require, require_positive
+from .cq_import import import_cadquery
 
 __all__ = ["occ_shape", "as_solid", "solids_of", "one_solid", "moved", "shifted_z", "z_rotation", "cylinder",
            "cq_cylinder", "box", "fuse", "cut", "cq_fuse", "cq_cut", "volume", "mass_properties", "manifold",
@@ -62,7 +63,7 @@ def solids_of(shape) -> list:
 
 def as_solid(shape):
     """The single solid of a shape as a ``cadquery.Solid`` (raises if there is not exactly one)."""
-    import cadquery as cq
+    cq = import_cadquery()
 
     out = solids_of(shape)
     require(len(out) == 1, "solid count", len(out), "a boolean result must be exactly one solid")
@@ -71,7 +72,7 @@ def as_solid(shape):
 
 def one_solid(shape, name: str):
     """The single solid of a cadquery boolean result (cleaned)."""
-    import cadquery as cq
+    cq = import_cadquery()
 
     shape = shape.clean()
     solids = shape.Solids() if hasattr(shape, "Solids") else [shape]
@@ -95,7 +96,7 @@ def moved(shape, dx: float = 0.0, dy: float = 0.0, dz: float = 0.0, rot_z: float
 
 def shifted_z(solid, dz: float):
     """A cadquery solid moved along z by a location (the same solid when dz is 0)."""
-    import cadquery as cq
+    cq = import_cadquery()
 
     return solid.moved(cq.Location(cq.Vector(0.0, 0.0, float(dz)))) if dz else solid
 
@@ -103,7 +104,7 @@ def shifted_z(solid, dz: float):
 def z_rotation(angle_deg: float, then_translation=None):
     """Assembly placement: a rotation about the world z axis (degrees), applied after an optional
     translation (x, y, z) of the component in the rotated frame."""
-    import cadquery as cq
+    cq = import_cadquery()
 
     rot = cq.Location(cq.Vector(0, 0, 0), cq.Vector(0, 0, 1), angle_deg)
     return rot if then_translation is None else rot * cq.Location(cq.Vector(*then_translation))
@@ -114,7 +115,7 @@ def cylinder(radius: float, z0: float, z1: float, center=(0.0, 0.0), axis: str =
     """A cylinder of the given radius.  axis 'z': from z0 to z1 about (cx, cy); axis 'x' or 'y':
     along that world axis from z0 to z1 (coordinates along the axis), passing through center =
     the other two coordinates ((y, z) for 'x', (x, z) for 'y')."""
-    import cadquery as cq
+    cq = import_cadquery()
 
     r = require_positive("radius", radius, "mm")
     require(z1 > z0, "cylinder length", z1 - z0, "must be > 0")
@@ -132,7 +133,7 @@ def cylinder(radius: float, z0: float, z1: float, center=(0.0, 0.0), axis: str =
 
 def cq_cylinder(radius: float, z0: float, z1: float, x: float = 0.0, y: float = 0.0):
     """cadquery's cylinder along +z from z0 to z1 about (x, y)."""
-    import cadquery as cq
+    cq = import_cadquery()
 
     return cq.Solid.makeCylinder(float(radius), float(z1 - z0), cq.Vector(float(x), float(y), float(z0)),
                                  cq.Vector(0.0, 0.0, 1.0))
@@ -140,7 +141,7 @@ def cq_cylinder(radius: float, z0: float, z1: float, x: float = 0.0, y: float = 
 
 def box(dx: float, dy: float, dz: float, corner=(0.0, 0.0, 0.0)):
     """An axis-parallel box with its least corner at ``corner``."""
-    import cadquery as cq
+    cq = import_cadquery()
 
     return cq.Solid.makeBox(dx, dy, dz, cq.Vector(*corner))
 
