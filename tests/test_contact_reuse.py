@@ -137,10 +137,10 @@ def test_a_resolved_contact_is_the_same_with_and_without_the_reuse(spur, monkeyp
     got = [resolve_contact(po, _law, 0.0, span, d) for d in (DRIVE, REVERSE)]
     calls = []
 
-    def fresh(pair, phis, thetas, direction, seeds, seed_phis, chained, slots=None, caches=None):
+    def fresh(pair, phis, thetas, direction, seeds, seed_phis, chained, slots=None, caches=None, kept=None):
         calls.append(len(phis))
         return track(pair, phis, thetas, direction, seeds, seed_phis, chained, np.full(len(phis), -1, np.int64),
-                     cr.new_caches(0))
+                     cr.new_caches(0), kept)
 
     monkeypatch.setattr(ce, "track", fresh)
     ref = [resolve_contact(po, _law, 0.0, span, d) for d in (DRIVE, REVERSE)]
@@ -210,3 +210,34 @@ def test_the_nearer_part_of_the_window_first_gives_the_whole_windows_contact(spu
             for f in ("phi", "theta", "te", "kind", "driver_tooth", "driven_tooth"):
                 assert np.array_equal(getattr(a, f), getattr(b, f), equal_nan=True), (first, f)
             assert a.evaluations == b.evaluations
+
+
+def _data(cache):
+    """Where a cache's state lives (a cache sorted again is a new one)."""
+    return cache[0].ctypes.data
+
+
+def test_a_bisection_starts_from_the_caches_the_sampled_run_kept_and_finds_the_fresh_hits(spur):
+    """The sampled run keeps its caches after each position (``kept``, one a position); a midpoint between two
+    samples, searched from the first's contact in a slot given the cache kept there (``seed_slots``: what
+    resolve_contact does for each change of state), has the hit of the search afresh, bit for bit, and is served
+    from that cache (not sorted again) at most midpoints."""
+    po = _pair(spur)
+    span = 2 * math.pi / Z2 * 2
+    phis = np.linspace(0.0, span, 241)
+    ths = _law(phis)
+    for d in (DRIVE, REVERSE):
+        caches, kept = cr.new_caches(1), cr.new_caches(0)
+        te, kind, t1, t2 = track(po, phis, ths, d, [math.nan], [math.nan], True, np.zeros(len(phis), np.int64),
+                                 caches, kept)
+        assert len(kept) == len(phis) and np.isfinite(te).all()
+        mids = 0.5 * (phis[:-1] + phis[1:])
+        first = cr.add_slots(caches, len(mids))
+        cr.seed_slots(caches, first, kept, np.arange(len(mids), dtype=np.int64))
+        seeded = [_data(caches[first + k][0]) for k in range(len(mids))]
+        got = track(po, mids, _law(mids), d, te[:-1], phis[:-1], False, first + np.arange(len(mids)), caches)
+        ref = track(po, mids, _law(mids), d, te[:-1], phis[:-1], False)
+        for a, b in zip(got, ref):
+            assert np.array_equal(a, b, equal_nan=True)
+        held = sum(_data(caches[first + k][0]) == seeded[k] for k in range(len(mids)))
+        assert held > 0.6 * len(mids), held

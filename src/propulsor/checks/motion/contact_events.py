@@ -41,7 +41,7 @@ import numpy as np
 from ... import policy
 from .contact_kernels import (DRIVE, REVERSE, _first_hit_pruned, _least, _nearest_tooth_nb, _pair_hits,  # noqa: F401
                               _pruned_window, _side_hits, _window_bounds, _window_nb)
-from .contact_reuse import add_slots, new_caches
+from .contact_reuse import add_slots, new_caches, seed_slots
 from .contact_track import track
 from .nearest import grid_of
 from ...planar import box, norms
@@ -386,7 +386,7 @@ def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, 
         for j in range(0, len(phis), _TRACK_RUN):
             P, T = phis[j:j + _TRACK_RUN], th[j:j + _TRACK_RUN]
             te, kind, t_drv, t_dvn = track(pair, P, T, direction, [seed], [seed_phi], True,
-                                           np.zeros(len(P), np.int64), caches)
+                                           np.zeros(len(P), np.int64), caches, kept)
             evals += len(P)
             seed, seed_phi = float(te[-1]), float(P[-1])  # a nan te: the next run starts with the full search
             for t, r in zip(T.tolist(), zip(te.tolist(), kind.tolist(), t_drv.tolist(), t_dvn.tolist())):
@@ -400,7 +400,8 @@ def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, 
 
     def measure_each(mids):
         """The rows at the midpoints ``(a, b, m, slot)``, each searched from the contact at its own a, reusing the
-        candidates its slot kept from the bisection of the same change before it."""
+        candidates its slot kept from the bisection of the same change before it (at the first, those the sampled run
+        held at the change's first end)."""
         if not mids:
             return []
         ms = [m for _, _, m, _ in mids]
@@ -412,6 +413,7 @@ def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, 
 
     # slot 0: the sampled run; then one slot for the bisection of each change of state
     caches = new_caches(1)
+    kept = new_caches(0)  # the sampled run's caches after each position
     for p, r in zip(grid, measure(grid, tick=tick)):
         samples[float(p)] = r
     # bisect every interval whose ends differ in state
@@ -421,6 +423,10 @@ def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, 
     xs = sorted(samples)
     todo = [(a, b) for a, b in zip(xs[:-1], xs[1:]) if state(samples[a]) != state(samples[b])]
     first = add_slots(caches, len(todo))
+    # each change's bisection starts with the candidates the sampled run held after the change's first end (its
+    # midpoints lie within one sample of there): sorted again only where they no longer hold
+    at = {float(p): i for i, p in enumerate(grid)}
+    seed_slots(caches, first, kept, np.array([at[a] for a, _ in todo], np.int64))
     todo = [(a, b, first + k) for k, (a, b) in enumerate(todo)]
     # the progress's total from here: each change bisected about `rounds` times (one half holds it)
     est = n + len(todo) * rounds

@@ -50,6 +50,15 @@ def new_caches(n):
 
 
 @njit(cache=True)
+def seed_slots(caches, first, kept, index):
+    """Slot ``first + k`` given the caches ``kept[index[k]]`` (kept by :func:`.contact_track.track` after a position):
+    a search near that position reuses its candidates where they still hold (``_still_valid``) and sorts its own
+    where they do not, the same hits either way."""
+    for k in range(len(index)):
+        caches[first + k] = kept[index[k]]
+
+
+@njit(cache=True)
 def add_slots(caches, n):
     """``n`` more empty slots at the end of ``caches``; the index of the first."""
     k = len(caches)

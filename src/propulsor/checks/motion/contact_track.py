@@ -48,7 +48,7 @@ def _kind_nb(side, v, e, t, near, corner_dvn, turn_dvn, corner_drv, turn_drv, le
 @njit(cache=True)
 def _track_nb(phis, ths, seeds, seed_phis, chained, sign, m0, m_max, w0, w_max, near, L, dvn_pts, dvn_a, dvn_b,
               drv_pts, driver_teeth, driven_teeth, corner_dvn, turn_dvn, corner_drv, turn_drv, len_drv, nxt_drv,
-              len_dvn, nxt_dvn, slots, caches, slack, widen, w_factor, first, args):
+              len_dvn, nxt_dvn, slots, caches, slack, widen, w_factor, first, keep, kept, args):
     n = len(phis)
     # the candidate vertices of a pose reused at the next poses of its slot while they provably hold (contact_reuse)
     cache1, cache2 = empty_cache(), empty_cache()
@@ -100,6 +100,8 @@ def _track_nb(phis, ths, seeds, seed_phis, chained, sign, m0, m_max, w0, w_max, 
                 w = min(4.0 * w, w_max)
             if not math.isfinite(d):
                 prev, prev_phi = np.nan, np.nan
+                if keep:
+                    kept.append((cache1, cache2))
                 continue
             x = -sign * d
         te[i] = x
@@ -120,12 +122,14 @@ def _track_nb(phis, ths, seeds, seed_phis, chained, sign, m0, m_max, w0, w_max, 
         tooth_dvn[i] = _nearest_tooth_nb(driven_teeth, math.atan2(qy, qx))
         tooth_drv[i] = _nearest_tooth_nb(driver_teeth, math.atan2(ry, rx))
         prev, prev_phi = x, p
+        if keep:
+            kept.append((cache1, cache2))
     if cur >= 0:
         caches[cur] = (cache1, cache2)
     return te, kind, tooth_drv, tooth_dvn
 
 
-def track(pair, phis, thetas, direction: int, seeds, seed_phis, chained: bool, slots=None, caches=None):
+def track(pair, phis, thetas, direction: int, seeds, seed_phis, chained: bool, slots=None, caches=None, kept=None):
     """(te, kind, driver tooth, driven tooth) at each of the law phases ``phis`` (driver at ``thetas``), as the
     reference search at one position gives them (``tests/contact_reference.py``): ``chained``, each position searched
     from the contact of the one before it (the first from ``seeds[0]`` at ``seed_phis[0]``); else each from its own
@@ -135,7 +139,8 @@ def track(pair, phis, thetas, direction: int, seeds, seed_phis, chained: bool, s
     ``slots``, ``caches`` (:func:`.contact_reuse.new_caches`): the first search at position i reuses the candidate
     vertices kept in ``caches[slots[i]]`` (:mod:`.contact_reuse`: the same values, fewer vertices searched), and
     leaves its own there; a slot of -1 searches afresh.  By default a chained run shares one new slot, separate
-    seeds search afresh."""
+    seeds search afresh.  ``kept`` (a list from :func:`.contact_reuse.new_caches`): told the caches as they stand
+    after each position, in order (:func:`.contact_reuse.seed_slots` gives them to other slots)."""
     n = len(phis)
     if caches is None:
         caches = new_caches(1)
@@ -153,7 +158,8 @@ def track(pair, phis, thetas, direction: int, seeds, seed_phis, chained: bool, s
                      pair.corner_drv, pair.turn_drv, pair.drv.seg_len, pair.drv.nxt, pair.dvn.seg_len, pair.dvn.nxt,
                      np.ascontiguousarray(slots, np.int64), caches, policy.CONTACT_REUSE_SLACK_MM,
                      policy.CONTACT_REUSE_WIDEN_RAD, policy.CONTACT_REUSE_TURN_FACTOR,
-                     min(float(policy.CONTACT_TRACK_FIRST_WINDOW), 2.0), tuple(ka[:11]) + tuple(pa) + tuple(ka[11:]))
+                     min(float(policy.CONTACT_TRACK_FIRST_WINDOW), 2.0), kept is not None,
+                     new_caches(0) if kept is None else kept, tuple(ka[:11]) + tuple(pa) + tuple(ka[11:]))
 
 
 # the disk cache of these kernels keyed on every kernel source (one may be compiled into another's code)
