@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import os
 from dataclasses import dataclass
+from pathlib import Path
 
 import pytest
 
@@ -170,3 +171,41 @@ def test_every_solid_and_step_function_takes_cadquery_without_vtk(tmp_path):
         r = subprocess.run([sys.executable, "-c", code.format(module=module, call=call, args=args),
                             str(tmp_path / f"{call}.step")], capture_output=True, text=True, check=True)
         assert r.stdout.split() == ["[]"], (call, r.stdout, r.stderr[-2000:])
+
+
+def test_a_build_freezes_what_it_imported_and_a_dry_run_loads_no_cad_kernel(tmp_path):
+    """Objects that live as long as the process are moved out of the garbage collector's sight (``gc.freeze``: a
+    build's full collections scanned them again and again, 0.70 -> 0.45 CPU s of collections in a build of the
+    Fourier pair): ``propulsor build`` freezes what it has loaded when the build starts (most objects then), and
+    several builds' preload freezes the modules they share before they fork.  A dry run (validation only) imports
+    no CAD kernel."""
+    import subprocess
+    import sys
+
+    part = str(Path(__file__).resolve().parents[1] / "parts" / "ncg_elliptical.toml")
+    code = (
+        "import gc, sys\n"
+        "import propulsor.cli as cli, propulsor.building as b\n"
+        "seen = {}\n"
+        "def build(*a, **k):\n"
+        "    seen['frozen'], seen['live'] = gc.get_freeze_count(), len(gc.get_objects())\n"
+        "    raise SystemExit(0)\n"
+        "b.build = build\n"
+        "try:\n"
+        "    cli.main(['build', sys.argv[1], '--out', sys.argv[2]] + sys.argv[3:])\n"
+        "except SystemExit:\n"
+        "    pass\n"
+        "print(seen.get('frozen', 0), seen.get('live', 0), 'OCP.OCP' in sys.modules)\n"
+    )
+    r = subprocess.run([sys.executable, "-c", code, part, str(tmp_path / "out")], capture_output=True, text=True,
+                       check=True)
+    frozen, live, _ = r.stdout.split()
+    assert int(frozen) > 50_000 and int(frozen) > 3 * int(live), r.stdout
+    r = subprocess.run([sys.executable, "-c", code, part, str(tmp_path / "dry"), "--dry-run"], capture_output=True,
+                       text=True, check=True)
+    assert r.stdout.split()[-3:] == ["0", "0", "False"], r.stdout
+    r = subprocess.run([sys.executable, "-c", "import gc\nfrom propulsor.batch import preload\npreload()\n"
+                        "print(gc.get_freeze_count(), len(gc.get_objects()))"], capture_output=True, text=True,
+                       check=True)
+    frozen, live = map(int, r.stdout.split())
+    assert frozen > 200_000 and live < 1000, r.stdout

@@ -150,11 +150,19 @@ def _build_one(args, part_file: Path, depfile: Path | None, render: Renderer) ->
         print(f"{part.part_type.name}: {part_file} is valid; would build into {out}; "
               f"size estimate {part.estimate.text()}")
         return EXIT_OK
+    import gc
+
+    # what this process has loaded lives through the build: out of the garbage collector's sight, its full collections
+    # do not scan it again and again (a build of the Fourier pair: 7 full collections, 0.70 -> 0.45 CPU s); in sight
+    # again after it (the interpreter's exit collects it: a wrapped kernel object left uncollected is reported leaked)
+    gc.freeze()
     try:
         result = building.build(part, out, force=args.force, keep_failed=args.keep_failed, wait=not args.no_wait,
                                 progress=render, vetted=True)
     except (InputError, EnvironmentFailure, CheckFailed) as exc:
         return fail(exc)
+    finally:
+        gc.unfreeze()
     if depfile:
         write_depfile(Path(depfile), result.out / "manifest.json", result.files_read)
     return EXIT_OK
