@@ -127,6 +127,16 @@ symbols written by hand: address and size of each compiled function) of the cont
 search 23 %, the candidates' new sorting 20 %, numba's reference counts 19 % (the ~30 arrays each call of the
 per-position search hands on), the candidates' filter 5 %.  The Fourier form's variant also measures the load per
 tooth (1.24 CPU s, of which the curvature fits 0.43), which the seed-002 pair's part file does not ask for.
+
+2026-12-01, a sixth session (2 cores, the machine drifting 10-20 % within minutes): each change of state's bisection
+starts from the candidate caches the sampled run held at the change's first end (``contact_reuse.seed_slots``: before,
+each bisection slot started empty, and its first search sorted the window's ~740 vertices again; now 199 of 240
+midpoints of the test pair are served from the kept cache).  The six contacts of seed 002, its Fourier form and seed
+000 in one process, the kernels of 4cf9bba (compiled in the same process) and the new ones in turn, least of three:
+3.756 -> 3.369 CPU s (-10.3 %), the contact laws identical bit for bit.  Variants, 4cf9bba in a worktree and the new
+tree in turn, two rounds of two: the seed-002 pair 3.42 / 3.50 -> 3.64 / 3.63 CPU s, its Fourier form 5.19 / 5.66 ->
+5.28 / 5.62: the machine's drift (the unchanged design and proof were 7-20 % slower in the new tree's runs under
+cProfile too) is larger than the contact's 0.1 s a variant.
 """
 
 from __future__ import annotations

@@ -46,6 +46,15 @@ session's gains, a few per cent of a variant, are within this benchmark's spread
 wall (22.69 CPU s), peak 662 MiB: wall ratio 0.309, CPU ratio 0.462; ``ncg_elliptical.toml`` 10.42 s wall.  ``make``
 from clean, f219260 and the new tree in turn, two rounds: 145.6 / 139.6 -> 141.3 / 126.9 s wall, 270.4 / 259.4 ->
 261.3 / 235.8 CPU s (the contact search's nearer window first); the 636 files identical.
+2026-12-01, a sixth session (2 cores; 4cf9bba in a worktree, then the new tree, one run each, the machine drifting):
+the new tree ncgears 59.96 s wall (63.48 CPU s), ours 15.31 s wall (23.22 CPU s), peak 662 MiB: wall ratio 0.255, CPU
+ratio 0.366; 4cf9bba ncgears 50.00 s wall (53.42 CPU s), ours 13.84 s (20.95 CPU s), peak 668 MiB: 0.277, 0.392.
+What changed for this build: it imported cadquery with its VTK loaded (the deferral of ``solids/cq_import.py`` was
+taken by make's preload and the writer only; the build's first extrusion imported cadquery plainly): 0.79 s of
+imports, and user 19.0 / 19.3 -> 17.7 / 17.9 s in consecutive runs; its full garbage collections 0.70 -> 0.38-0.45 s
+(``gc.freeze`` of what the build loaded before it starts); its two contacts -10 %.  ``make`` from clean, 4cf9bba and
+the new tree in turn, two rounds: 136.9 / 131.6 -> 134.0 / 146.1 s wall, 256.8 / 244.5 -> 251.0 / 273.4 user s (the
+changes are a few per cent of make; the drift is more); the 636 files identical.
 """
 
 from __future__ import annotations
