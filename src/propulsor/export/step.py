@@ -21,8 +21,8 @@ from OCP.TDocStd import TDocStd_Document
 from OCP.TopoDS import TopoDS_Shape
 from OCP.XCAFDoc import XCAFDoc_DocumentTool
 
-from ..solids.kernel import occ_shape, solids_of  # noqa: F401  (solids_of: public here too)
 from ..solids.cq_import import import_cadquery
+from ..solids.kernel import occ_shape, solids_of  # noqa: F401  (solids_of: public here too)
 from ..write_root import prepare
 
 STEP_TIMESTAMP = "2000-01-01T00:00:00"

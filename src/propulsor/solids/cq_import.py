@@ -4,7 +4,9 @@ cadquery's modules import VTK names (``vtkmodules.*``, ``OCP.IVtkOCC``, ``OCP.IV
 its viewers and VTK exports, none of which a build uses; loading VTK costs 0.65 s of CPU, a third of
 cadquery's import.  :func:`import_cadquery` imports cadquery with every such name bound to a
 :class:`Later`, which loads the real VTK module the first time the name is called or read (so cadquery's
-VTK functions still work, later).  Where VTK or cadquery is loaded already, it is a plain import.
+VTK functions still work, later).  Where VTK or cadquery is loaded already, it is a plain import.  Every module of
+propulsor that needs cadquery takes it from here (a plain ``import cadquery`` anywhere in a build loads VTK: a build of
+one part file reached cadquery first through the extrusion of its solids, 0.79 s of imports).
 """
 
 from __future__ import annotations
