@@ -2245,3 +2245,51 @@ def test_resolve_contact_in_short_compiled_runs_is_the_one_long_run_bit_for_bit(
     assert math.isnan(grid[0][1][0]) and math.isnan(grid[0][2][0])
     for before, now in zip(grid[:-1], grid[1:]):
         assert now[1] == [before[4][-1]] and now[2] == [before[0][-1]]  # the last contact of the run before
+
+
+def test_sweep3d_gaps_equal_min_gap_over_the_whole_search_on_a_filleted_union_whatever_branch_finds_them(monkeypatch):
+    """Each step's gap equals manifold3d's min_gap within the whole search length, bit for bit, while most steps are
+    found cheaper (:class:`sweep3d._Gaps`): a filleted CadQuery union (a U: a plate with two posts) swept past a
+    filleted cylinder that comes from afar (the hulls W apart: no search of the bodies), closes in steadily (each gap
+    sought within the last plus the guess), jumps away and back by more than the guess (sought again within W), sits
+    in the U's mouth (inside the U's hull, apart from the U: the hulls' test must not answer) and runs into a post."""
+    import cadquery as cq
+    import manifold3d as m3d
+
+    from propulsor.export.mesh import to_trimesh
+    from propulsor.solids.kernel import manifold
+
+    u = (cq.Workplane("XY").box(60.0, 20.0, 10.0).faces(">Z").workplane()
+         .pushPoints([(-25.0, 0.0), (25.0, 0.0)]).rect(10.0, 20.0).extrude(30.0).edges("|Y").fillet(2.0).val())
+    pin = cq.Workplane("XY").circle(6.0).extrude(20.0).edges().fillet(1.5).val()
+    U, P = to_trimesh(u, chord_tol=0.05), to_trimesh(pin, chord_tol=0.05)
+    W = 10.0
+    # the pin (radius 6, z 8 .. 28) beside the U (x -30 .. 30; the plate's top at z 5, the posts' inner faces at x
+    # +-20): far off, closing in on a post's outer face, out of reach and back (the hulls 7 mm apart: searched in
+    # full), far off again, in the U's mouth (3 mm above the plate, inside the U's hull), into a post
+    xs = [200.0, 120.0, 60.0, 45.0, 44.0, 43.2, 42.9, 60.0, 43.0, 42.0, 200.0, 0.0, 4.0, -14.5]
+    T = np.array([_translation(x, 0.0, 8.0) for x in xs])
+    calls = []
+    real = m3d.Manifold.min_gap
+
+    def counted(a, b, s):
+        calls.append((a.num_tri(), float(s)))
+        return real(a, b, s)
+
+    monkeypatch.setattr(m3d.Manifold, "min_gap", counted)
+    r = s3.sweep_solids_3d(U, np.eye(4), P, T, search_length=W)
+    monkeypatch.undo()
+    A, B = manifold(U, "u"), manifold(P, "pin")
+    full = [A.min_gap(B.transform(np.ascontiguousarray(t[:3, :4])), W) for t in T]
+    assert r.gap.tolist() == full  # bit for bit
+    assert full[0] == W and full[-1] == 0.0 and full[11] == pytest.approx(3.0, abs=0.01)
+    assert 0.0 < full[6] < full[5] < full[4] < full[3] < W and full[7] == W and full[8] == pytest.approx(7.0, abs=0.01)
+    body, hull = A.num_tri(), A.hull().num_tri()
+    whole = [s for n, s in calls if n == body and s == W]
+    guessed = [s for n, s in calls if n == body and s < W]
+    hulls = [s for n, s in calls if n == hull]
+    assert len(hulls) >= 2 and len(guessed) >= 4  # the far steps by the hulls alone, the close ones by a guess
+    # the body searched within W only at 45 (the hulls 9 apart), 43.2 (the guess reaching W), 60 and 200 (the guess
+    # failing), 43 (the hulls 7 apart) and 0 (inside the U's hull)
+    assert len(whole) == 6
+    assert r.overlap_volume[-1] > 10.0 and r.overlap_volume[:-1].tolist() == [0.0] * (len(xs) - 1)

@@ -26,6 +26,9 @@ MESH_VOLUME_REL_TOL = 1e-3
 OVERLAP_AREA_TOL_MM2 = 1e-6
 #: overlap volume below this (mm^3) counts as no overlap in 3D motion sweeps
 OVERLAP_VOLUME_TOL_MM3 = 1e-3
+#: a 3D sweep's gap at a step is first sought within the last step's gap plus this (mm; or twice the last change,
+#: whichever is more): the least distance is the same where it lies within (only the candidates differ)
+SWEEP3D_GAP_GUESS_MM = 0.25
 
 #: consecutive outline pieces meet (and a loop is closed) within this (mm)
 OUTLINE_JOINT_TOL_MM = 1e-6

@@ -3,6 +3,7 @@ not prismatic (manifold3d booleans)."""
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -72,6 +73,9 @@ def sweep_solids_3d(mesh_a, poses_a, mesh_b, poses_b, *, search_length: float | 
     their bounding boxes, a conservative bound) lie search_length or more apart neither
     overlaps nor comes within search_length: it is recorded as volume 0 and gap
     search_length without a boolean.
+
+    The gap is sought where it is cheap first (:class:`_Gaps`); the value is min_gap's with search_length, bit for
+    bit.
     """
     from ...solids.kernel import manifold  # here: the kernel module loads OCP, which the 2D proofs never need
 
@@ -99,17 +103,70 @@ def sweep_solids_3d(mesh_a, poses_a, mesh_b, poses_b, *, search_length: float | 
     if skip_apart:
         require(search_length is not None, "skip_apart", skip_apart, "needs search_length")
         corners_a, corners_b = box_corners(A), box_corners(B)
+    gaps = _Gaps(A, B, float(search_length)) if gap is not None else None
     for k in range(N):
         if skip_apart:
             box_b = box_of(corners_b, Tb[k]) if not b_fixed else (corners_b[0, :3], corners_b[-1, :3])
             if box_gap(box_of(corners_a, Ta[k]), box_b) >= search_length:
                 gap[k] = search_length
+                gaps.last = None
                 continue
         Ak = A.transform(np.ascontiguousarray(Ta[k][:3, :4]))
         Bk = B if b_fixed else B.transform(np.ascontiguousarray(Tb[k][:3, :4]))
-        if gap is not None:
-            gap[k] = Ak.min_gap(Bk, float(search_length))
+        if gaps is not None:
+            gap[k] = gaps.at(Ak, Bk, Ta[k], None if b_fixed else Tb[k])
             if gap[k] > 0.0:  # apart: the intersection is empty, its volume 0 without a boolean
                 continue
         vol[k] = (Ak ^ Bk).volume()
     return Sweep3DResult(vol, gap, name)
+
+
+class _Gaps:
+    """The gaps of a sweep's steps, each equal to ``Ak.min_gap(Bk, W)`` bit for bit, found with fewer triangle pairs.
+
+    manifold3d's min_gap is 0 where the bodies intersect, else the square root of the least of W² and the squared
+    distances of the triangle pairs whose boxes, widened by the search length, meet: so a smaller search length gives
+    the same value wherever the least distance lies within it (only pairs farther apart are left out).  Hence:
+
+    * after a step with a gap below W, the next is sought within that gap plus ``policy.SWEEP3D_GAP_GUESS_MM`` (or
+      twice its last change, if more) and kept where found within; sought again within W where not (the balancer's
+      hull envelope: 13 mm from the unit at every step, W = 20 mm; the pairs within 20 mm cost 4 to 5 times those
+      within 14 mm);
+    * after a step with no gap below W (or at the first), the bodies' convex hulls are measured first: hulls that do
+      not intersect and lie W or more apart hold bodies W or more apart (each body lies in its hull), whose min_gap
+      is sqrt(W²) = W; measured in full where the hulls come closer."""
+
+    def __init__(self, A, B, W: float):
+        self.A, self.B, self.W = A, B, W
+        self.last, self.change = None, 0.0  # the last step's gap when below W, and its change from the step before
+        self._hulls = None
+
+    def hulls(self):
+        if self._hulls is None:
+            self._hulls = (self.A.hull(), self.B.hull())
+        return self._hulls
+
+    def at(self, Ak, Bk, Ta, Tb) -> float:
+        W, last = self.W, self.last
+        g = None
+        if last is not None:
+            s1 = last + max(policy.SWEEP3D_GAP_GUESS_MM, 2.0 * abs(self.change))
+            if s1 < W:
+                r = Ak.min_gap(Bk, s1)
+                if r < s1:
+                    g = r
+        else:
+            ha, hb = self.hulls()
+            hak = ha.transform(np.ascontiguousarray(Ta[:3, :4]))
+            hbk = hb if Tb is None else hb.transform(np.ascontiguousarray(Tb[:3, :4]))
+            W1 = W * (1.0 + 1e-9) + 1e-9  # beyond W by more than the distances' rounding
+            if hak.min_gap(hbk, W1) >= W1:
+                g = math.sqrt(W * W)  # what min_gap returns when nothing lies within W
+        if g is None:
+            g = Ak.min_gap(Bk, W)
+        if g < W:
+            self.change = 0.0 if last is None else g - last
+            self.last = g
+        else:
+            self.last, self.change = None, 0.0
+        return g
