@@ -131,6 +131,56 @@ def test_step_roundtrip(plate, tmp_path):
     assert not c.passed and c.value == pytest.approx(2.0)
 
 
+
+def test_step_round_trip_reads_a_face_turned_inside_out_as_written_where_a_healing_reader_would_hide_it(tmp_path):
+    """A box whose shell holds one face reversed, written as it is: OCCT's default healing turns the face back (the
+    box read is whole, 6000 mm^3), the round trip's read (export.step.UNHEALED: no shell orientation fix) keeps the
+    defect, so the check fails on it; a whole box reads the same both ways.  The fix parameters only act when set
+    after ReadFile: set before, the read would heal the box again and this test would fail."""
+    from OCP.BRep import BRep_Builder
+    from OCP.BRepTools import BRepTools
+    from OCP.STEPControl import STEPControl_AsIs, STEPControl_Reader, STEPControl_Writer
+    from OCP.TopAbs import TopAbs_FACE
+    from OCP.TopExp import TopExp_Explorer
+    from OCP.TopoDS import TopoDS_Shell, TopoDS_Solid
+
+    from propulsor.export.step import read_step
+
+    box = cq.Solid.makeBox(10.0, 20.0, 30.0)
+    b = BRep_Builder()
+    shell, solid = TopoDS_Shell(), TopoDS_Solid()
+    b.MakeShell(shell)
+    ex = TopExp_Explorer(box.wrapped, TopAbs_FACE)
+    first = True
+    while ex.More():
+        b.Add(shell, ex.Current().Reversed() if first else ex.Current())
+        first = False
+        ex.Next()
+    b.MakeSolid(solid)
+    b.Add(solid, shell)
+    bad = tmp_path / "bad.step"
+    w = STEPControl_Writer()
+    w.Transfer(solid, STEPControl_AsIs)
+    assert w.Write(str(bad)) == 1
+
+    def healed(path):
+        r = STEPControl_Reader()
+        r.ReadFile(str(path))
+        r.TransferRoots()
+        return r.OneShape()
+
+    assert volume(cq.Shape.cast(healed(bad))) == pytest.approx(6000.0, rel=1e-9)  # a healing reader hides it
+    assert volume(cq.Shape.cast(read_step(bad))) == pytest.approx(-6000.0, rel=1e-9)  # read as written
+    c = step_roundtrip_check(box, bad, "box")
+    assert not c.passed and c.value == pytest.approx(-6000.0, rel=1e-9)
+    good = write_step(box, tmp_path / "good.step", "box")
+    a, h = tmp_path / "a.brep", tmp_path / "h.brep"
+    BRepTools.Write_s(read_step(good), str(a))
+    BRepTools.Write_s(healed(good), str(h))
+    assert a.read_bytes() == h.read_bytes()
+    assert step_roundtrip_check(box, good, "box").passed
+
+
 # --- mesh topology --------------------------------------------------------------
 
 
