@@ -127,3 +127,36 @@ def test_on_a_terminal_a_live_line_that_goes_when_the_command_ends(tmp_path):
     assert "\x1b[?25l" in text and "\x1b[?25h" in text  # the live line hid the cursor and gave it back
     assert text.index("\x1b[?25h") < text.index("is valid")  # closed before the answer is printed
     assert list(tmp_path.iterdir()) == []
+
+
+def test_the_program_leaves_without_the_teardown_having_done_what_the_teardown_would(tmp_path):
+    """``propulsor`` ends through cli.leave: a file written through but left open has its buffer on disk, the exit
+    functions ran (a temporary folder removed), the exit code is the command's, stdout and stderr complete; with a
+    thread still running the normal exit waits for it; a build run as the user runs it ends with its report line and
+    code 0 (its time saved is measured in bench/bench_vs_ncgears.py, not here)."""
+    script = tmp_path / "leave.py"
+    script.write_text(
+        "import atexit, sys, tempfile, threading, time\n"
+        "from pathlib import Path\n"
+        "from propulsor.cli import leave\n"
+        "keep = open(sys.argv[1], 'w')\n"
+        "keep.write('x' * 100)\n"  # buffered: on disk only once flushed
+        "d = tempfile.TemporaryDirectory(dir=sys.argv[2])\n"  # removed by its exit function
+        "Path(d.name, 'f').write_text('y')\n"
+        "atexit.register(lambda: print('bye'))\n"
+        "if sys.argv[3] == 'thread':\n"
+        "    threading.Thread(target=lambda: (time.sleep(0.5), open(sys.argv[1] + '.t', 'w').write('t'))).start()\n"
+        "print('out', end='')\n"
+        "sys.stderr.write('err')\n"
+        "leave(7)\n")
+    for mode in ("plain", "thread"):
+        kept = tmp_path / f"kept_{mode}.txt"
+        (tmp_path / mode).mkdir()
+        r = subprocess.run([sys.executable, str(script), str(kept), str(tmp_path / mode), mode], capture_output=True,
+                           text=True, cwd=ROOT, timeout=120)
+        assert (r.returncode, r.stdout, r.stderr) == (7, "outbye\n", "err"), r
+        assert kept.read_text() == "x" * 100
+        assert list((tmp_path / mode).iterdir()) == []  # the temporary folder removed
+        assert (Path(str(kept) + ".t").exists()) == (mode == "thread")
+    code, got, _ = _lines("build", str(ROOT / "parts" / "road_wheel.toml"), "--out", str(tmp_path / "out"))
+    assert code == 0 and "built into" in got[-1][1] and "all checks passed" in got[-1][1], got[-3:]
