@@ -6,6 +6,13 @@ balancer's stages are timed on their own in this process: inputs (suspension, be
 equal-strength outline), the solid, the sweep meshes and the travel sweep (98 steps × hull +
 2 neighbours).  The build runs the sweep in a second process beside the solid checks, so the
 build's wall time is less than the sum of its stages.
+
+2026-12-01 (2 cores; manifold3d's min_gap counted and timed in the build of parts/balancer.toml): the travel sweep's
+gaps sought where they are cheap first (``checks/motion/sweep3d._Gaps``: within the last step's gap plus 0.25 mm,
+and after a step with nothing within the 20 mm window the convex hulls first): 255 min_gap calls 8.07 -> 2.87 CPU s
+(the 123 steps with nothing within 20 mm 3.5 -> 0.04 s: the hulls answer; the 97 steps against the hull envelope,
+13 mm away, 68 -> 22 ms each: what is left is the boolean min_gap makes before it measures); every gap the same,
+bit for bit (the build's 26 files identical).  A cam's 16 spot checks in 3D 0.50 -> 0.12 s.
 """
 
 from __future__ import annotations

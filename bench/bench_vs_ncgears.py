@@ -55,6 +55,15 @@ imports, and user 19.0 / 19.3 -> 17.7 / 17.9 s in consecutive runs; its full gar
 (``gc.freeze`` of what the build loaded before it starts); its two contacts -10 %.  ``make`` from clean, 4cf9bba and
 the new tree in turn, two rounds: 136.9 / 131.6 -> 134.0 / 146.1 s wall, 256.8 / 244.5 -> 251.0 / 273.4 user s (the
 changes are a few per cent of make; the drift is more); the 636 files identical.
+
+2026-12-01, a seventh session (2 cores; the machine slow and drifting: a loop of 20 M additions 3.0 s).  Our build
+alone, 1e22eb3 in a worktree and the new tree in turn, three rounds (``python -m propulsor.cli build``, wall and
+CPU of the process and its children): 17.68 / 19.18 / 18.27 -> 15.06 / 14.94 / 16.42 s wall, 28.36 / 28.92 / 28.33
+-> 23.88 / 23.62 / 25.99 CPU s.  What changed: the process leaves without the interpreter's teardown (its garbage
+collections over every object: 1.3 s after the report, now 0.12-0.18 s; ``cli.leave``), and the STEP round trip's
+read skips eight healing fixes that change nothing on our files (bench/bench_step_read.py).  This benchmark then,
+the machine slower still: ncgears 64.30 s wall (67.58 CPU s), ours 19.23 s (29.17 CPU s), peak 668 MiB: wall ratio
+0.299, CPU ratio 0.432.
 """
 
 from __future__ import annotations
