@@ -553,14 +553,16 @@ def leave(code: int) -> None:
     stage of the modules' clearing (the Fourier pair's build: 1.3 s between the report written and the process
     gone, 0.1 s this way).  What the teardown would still do is done first: the streams and every file left open
     flushed, the exit functions run (temporary folders removed, loggers closed).  The normal exit where anything
-    else runs on — a thread, a worker process — or after a signal (its finalisers run at exit)."""
+    else runs on — a thread the teardown would wait for, a worker process — or after a signal (its finalisers run at
+    exit)."""
     import _io
     import atexit
     import gc
     import multiprocessing as mp
 
-    if SIGNALLED or threading.active_count() > 1 or mp.active_children():
-        sys.exit(code)
+    first = threading.main_thread()
+    if SIGNALLED or mp.active_children() or any(t is not first and not t.daemon for t in threading.enumerate()):
+        sys.exit(code)  # (a daemon thread the teardown would abandon too)
     try:
         objects = gc.get_objects()  # a file written through but not closed: its buffer, as a teardown would
         # every file object's class derives from the C base of io.IOBase (an ABC: its isinstance, half a second)
