@@ -3,8 +3,9 @@
     .venv/bin/python bench/bench_step_read.py [OUTPUT_FOLDER]   (default: output, what ``make`` built)
 
 Every ``*.step`` under the folder is read twice, each read's transfer timed by the process's CPU clock: once as
-OCCT's STEPControl_Reader reads it by default (its FixShape healing with every fix at its default), once by
-:func:`propulsor.export.step.read_step` (the fixes of ``export.step.UNHEALED`` left out).  Each pair of shapes is
+OCCT's STEPControl_Reader reads it by default (its FixShape healing with every fix at its default), once as the
+round trip reads a file it wrote (:func:`propulsor.export.step.read_step` ``as_written``: the fixes of
+``export.step.UNHEALED`` left out).  Each pair of shapes is
 written as BREP text and compared byte for byte: the fixes left out must change nothing on the files the builds
 write (a file where they would is read as written, and its round-trip check fails: tests/test_checks.py).
 

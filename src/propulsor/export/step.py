@@ -146,16 +146,18 @@ def write_assembly_step(path, components, name: str) -> Path:
     return path
 
 
-#: the shape-healing fixes a read leaves out (OCCT's ``DE_ShapeFixParameters`` modes, 0 = NotFix): the searches
-#: for edges and wires that cross (five modes), the faces' orientation within a shell, the edges' same-parameter
-#: repair and the wires' orientation.  On every STEP file ``make`` writes (78) they change nothing: the shape read is
-#: the same, its BREP text byte for byte, in 41 % of the transfer's time (24.3 -> 10.1 s).  On a file that needs
-#: them the shape is read as written (a face turned inside out stays so), so that a round trip's check sees the
-#: defect a healing reader would hide.  The rest of the healing (solids, shells, faces, wires, edge curves) runs as
-#: in any CAD reader: it does change shapes (tolerances) and is kept.
+#: the shape-healing fixes the round trip's read of a file this program wrote leaves out (OCCT's
+#: ``DE_ShapeFixParameters`` modes, 0 = NotFix): the searches for edges and wires that cross (five modes), the faces'
+#: orientation within a shell and the edges' same-parameter repair.  On every STEP file ``make`` writes (78) they change
+#: nothing: the shape read is the same, its BREP text byte for byte, in about half the transfer's time
+#: (bench/bench_step_read.py).  On a file that needs them the shape is read as written (a face turned inside out
+#: stays so), so that the round trip's check sees the defect a healing reader would hide.  The rest of the healing
+#: runs as in any CAD reader: the fixes of solids, shells, faces, wires and edge curves change shapes (tolerances), and
+#: the wires' orientation fix is what makes a CadQuery union's STEP mesh at all (examples/custom_flange.py).  A file
+#: of anyone else (``propulsor check``) is read with the whole healing.
 UNHEALED = ("FixSelfIntersectionMode", "FixSelfIntersectingEdgeMode", "FixIntersectingEdgesMode",
             "FixNonAdjacentIntersectingEdgesMode", "FixIntersectingWiresMode", "FixShellOrientationMode",
-            "FixSameParameterMode", "FixOrientationMode")
+            "FixSameParameterMode")
 
 
 def _fix_parameters():
@@ -169,9 +171,9 @@ def _fix_parameters():
     return m
 
 
-def read_step(path: str | Path) -> TopoDS_Shape:
-    """Read a STEP file (healed as a CAD reader does, less the fixes of :data:`UNHEALED`); raise ValueError if it
-    does not parse or holds no shape."""
+def read_step(path: str | Path, as_written: bool = False) -> TopoDS_Shape:
+    """Read a STEP file, healed as a CAD reader does (``as_written``: less the fixes of :data:`UNHEALED`, the round
+    trip's read of a file this program wrote); raise ValueError if it does not parse or holds no shape."""
     path = Path(path)
     if not path.is_file():
         raise FileNotFoundError(path)
@@ -179,8 +181,8 @@ def read_step(path: str | Path) -> TopoDS_Shape:
     status = reader.ReadFile(str(path))
     if status != IFSelect_RetDone:
         raise ValueError(f"{path}: STEP does not parse (status {int(status)})")
-    # after ReadFile: reading makes the transfer's actor, which takes the parameters set from then on
-    reader.SetShapeFixParameters(_fix_parameters())
+    if as_written:  # after ReadFile: reading makes the transfer's actor, which takes the parameters set from then on
+        reader.SetShapeFixParameters(_fix_parameters())
     n = reader.TransferRoots()
     if n < 1:
         raise ValueError(f"{path}: STEP holds no transferable root")
@@ -190,9 +192,9 @@ def read_step(path: str | Path) -> TopoDS_Shape:
     return shape
 
 
-def read_step_solids(path: str | Path) -> list:
-    """Read a STEP file and return its solids (list of TopoDS_Solid)."""
-    return solids_of(read_step(path))
+def read_step_solids(path: str | Path, as_written: bool = False) -> list:
+    """Read a STEP file (:func:`read_step`) and return its solids (list of TopoDS_Solid)."""
+    return solids_of(read_step(path, as_written))
 
 
 def step_product_names(path: str | Path) -> list[str]:
