@@ -9,11 +9,13 @@ round trip reads a file it wrote (:func:`propulsor.export.step.read_step` ``as_w
 written as BREP text and compared byte for byte: the fixes left out must change nothing on the files the builds
 write (a file where they would is read as written, and its round-trip check fails: tests/test_checks.py).
 
-Measured (2026-12-01, 2 cores, idle; the 78 STEP files of ``make`` at 570f1a4, each read once per way): OCCT's
-default read 24.29 CPU s of transfer, ours 10.05 s (41 %); every BREP identical.  Which fixes cost: the five
-searches for crossing edges and wires 24.3 -> 18.5 s, the shells' face orientation 18.5 -> 14.9 s, same-parameter
-and wire orientation 14.9 -> 10.1 s; the fixes of solids, shells, faces, wires and edge curves do change the shapes
-read (tolerances, and on some files the volume in the last digits) and are kept.  Before 570f1a4 the parameters
+Measured (2026-12-01, 2 cores, the 78 STEP files of ``make``, each read once per way, in one process): with eight
+fixes left out (570f1a4: the wires' orientation too) on an idle machine 24.29 -> 10.05 CPU s of transfer, every BREP
+identical; but the wires' orientation fix is what makes a CadQuery union's STEP (examples/custom_flange.py) mesh at
+all, so it is kept, and the read without the others is the round trip's alone (``propulsor check`` reads anyone's file
+with the whole healing).  The seven left out, CI's tests running beside (all ways slower alike): OCCT's default read
+29.64 CPU s, without the five searches for crossing edges and wires 22.58, also without the shells' face orientation
+18.56, also without the same-parameter repair 15.39 (52 %); every BREP identical.  Before 570f1a4 the parameters
 were set before ``ReadFile``, which makes the transfer's actor anew: they did nothing.
 """
 

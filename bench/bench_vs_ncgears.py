@@ -61,7 +61,8 @@ alone, 1e22eb3 in a worktree and the new tree in turn, three rounds (``python -m
 CPU of the process and its children): 17.68 / 19.18 / 18.27 -> 15.06 / 14.94 / 16.42 s wall, 28.36 / 28.92 / 28.33
 -> 23.88 / 23.62 / 25.99 CPU s.  What changed: the process leaves without the interpreter's teardown (its garbage
 collections over every object: 1.3 s after the report, now 0.12-0.18 s; ``cli.leave``), and the STEP round trip's
-read skips eight healing fixes that change nothing on our files (bench/bench_step_read.py).  This benchmark then,
+read skipped eight healing fixes that change nothing on our files (bench/bench_step_read.py; seven since c086013:
+the wires' orientation fix is kept, a CadQuery union's STEP needs it).  This benchmark then,
 the machine slower still: ncgears 64.30 s wall (67.58 CPU s), ours 19.23 s (29.17 CPU s), peak 668 MiB: wall ratio
 0.299, CPU ratio 0.432.
 """
