@@ -551,7 +551,7 @@ def leave(code: int) -> None:
     """End the process with `code` without the interpreter's teardown where nothing is left to finish: after a
     build the teardown is its garbage collector scanning every object the build and the imports made, once per
     stage of the modules' clearing (the Fourier pair's build: 1.3 s between the report written and the process
-    gone, 0.1 s this way).  What the teardown would still do is done first: the streams and every file left open
+    gone, 0.12-0.18 s this way).  What the teardown would still do is done first: the streams and every file left open
     flushed, the exit functions run (temporary folders removed, loggers closed).  The normal exit where anything
     else runs on — a thread the teardown would wait for, a worker process — or after a signal (its finalisers run at
     exit)."""

@@ -130,8 +130,8 @@ class _Gaps:
 
     * after a step with a gap below W, the next is sought within that gap plus ``policy.SWEEP3D_GAP_GUESS_MM`` (or
       twice its last change, if more) and kept where found within; sought again within W where not (the balancer's
-      hull envelope: 13 mm from the unit at every step, W = 20 mm; the pairs within 20 mm cost 4 to 5 times those
-      within 14 mm);
+      hull envelope, 13 mm from the unit at every step, W = 20 mm: a step's min_gap 68 -> 22 ms, most of what is left
+      the intersection min_gap tests first);
     * after a step with no gap below W (or at the first), the bodies' convex hulls are measured first: hulls that do
       not intersect and lie W or more apart hold bodies W or more apart (each body lies in its hull), whose min_gap
       is sqrt(W²) = W; measured in full where the hulls come closer."""
