@@ -65,6 +65,10 @@ read skipped eight healing fixes that change nothing on our files (bench/bench_s
 the wires' orientation fix is kept, a CadQuery union's STEP needs it).  This benchmark then,
 the machine slower still: ncgears 64.30 s wall (67.58 CPU s), ours 19.23 s (29.17 CPU s), peak 668 MiB: wall ratio
 0.299, CPU ratio 0.432.
+At the session's end, the machine quieter (e2fb499): ncgears 50.44 s wall (53.56 CPU s), peak 288 MiB; ours 12.65 s
+wall (19.68 CPU s), peak 644 MiB: wall ratio 0.251, CPU ratio 0.367 (4cf9bba against an ncgears of the same 50.0 s:
+13.84 s, 20.95 CPU s).  ``make`` from clean, 1e22eb3 in a worktree and e2fb499 in turn, two rounds: 151.76 / 135.44
+-> 129.37 / 128.64 s wall, 284.46 / 254.25 -> 242.84 / 239.76 user s; the 636 files identical in both trees.
 """
 
 from __future__ import annotations
