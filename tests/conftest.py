@@ -158,6 +158,19 @@ def assert_explained():
 
 
 @pytest.fixture(autouse=True)
+def _figures_closed():
+    """The figures a test left open closed after it: the tests' stand-in writers keep the figures handed to them
+    (the build's writer saves and closes each, tests/test_api.py), and a worker running many such tests would pile
+    them up (pyplot warns past 20).  pyplot is not imported for a test that never did."""
+    import sys
+
+    yield
+    plt = sys.modules.get("matplotlib.pyplot")
+    if plt is not None:
+        plt.close("all")
+
+
+@pytest.fixture(autouse=True)
 def _fresh_law_searches():
     """Each test makes its own law searches: gears/law_search.py keeps a process's last searches by their inputs, and
     a test that patches what a search reads must not be handed another test's result."""

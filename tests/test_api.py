@@ -82,9 +82,14 @@ def test_a_written_part_is_not_built_again(tmp_path, monkeypatch):
     calls = []
     real = building.produce_build
     monkeypatch.setattr(building, "produce_build", lambda *a, **k: calls.append(1) or real(*a, **k))
+    import matplotlib.pyplot as plt
+
+    open_before = set(plt.get_fignums())
     wheel = propulsor.part("road_wheel", lightening_holes=0)
     wheel.write(tmp_path / "w")
     assert calls == [1]
+    # the build drew its plots in this process and closed each (a study's worker builds thousands)
+    assert set(plt.get_fignums()) == open_before and (tmp_path / "w" / "plots").is_dir()
     checks = wheel.prove(raise_on_failure=True)
     assert set(wheel.solids) >= {"disc", "rim_1", "tyre_1"} and calls == [1]
     manifest = json.loads((tmp_path / "w" / "manifest.json").read_text())

@@ -108,8 +108,7 @@ def sweep_solids_3d(mesh_a, poses_a, mesh_b, poses_b, *, search_length: float | 
         if skip_apart:
             box_b = box_of(corners_b, Tb[k]) if not b_fixed else (corners_b[0, :3], corners_b[-1, :3])
             if box_gap(box_of(corners_a, Ta[k]), box_b) >= search_length:
-                gap[k] = search_length
-                gaps.last = None
+                gap[k] = gaps.apart()
                 continue
         Ak = A.transform(np.ascontiguousarray(Ta[k][:3, :4]))
         Bk = B if b_fixed else B.transform(np.ascontiguousarray(Tb[k][:3, :4]))
@@ -146,6 +145,12 @@ class _Gaps:
             self._hulls = (self.A.hull(), self.B.hull())
         return self._hulls
 
+    def apart(self) -> float:
+        """A step whose bodies' boxes lie W or more apart (the caller's bound): its gap, W, and no guess for the next
+        step (a gap of W is no gap found)."""
+        self.last, self.change = None, 0.0
+        return self.W
+
     def at(self, Ak, Bk, Ta, Tb) -> float:
         W, last = self.W, self.last
         g = None
@@ -168,5 +173,5 @@ class _Gaps:
             self.change = 0.0 if last is None else g - last
             self.last = g
         else:
-            self.last, self.change = None, 0.0
+            self.apart()  # nothing within W: no guess for the next step
         return g
