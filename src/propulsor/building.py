@@ -143,6 +143,26 @@ def load(part_file: Path, progress=None) -> Loaded:
     return Loaded(part_type, params, part_file, estimate)
 
 
+def early_estimate(part_file: Path) -> float | None:
+    """The size estimate (s) of a part file's build as far as its values tell it, before the rules between its
+    fields and the design's feasibility are checked (what :func:`load` computes first, the same value), or None
+    for a part type whose estimate needs the design.  InputError (parameter, value, limit) as :func:`load`
+    raises it.  For ordering several builds without computing their designs (batch.longest_first): each
+    build's own :func:`load` checks the rest."""
+    from .params import load_params, read_part_file
+    from .parts import check_size, get_part_type, size_needs_design
+
+    part_type_name, mapping = read_part_file(part_file)
+    part_type = get_part_type(part_type_name)
+    params = load_params(part_type.params_cls, mapping, validate=False, type_name=part_type.name)
+    if size_needs_design(part_type):
+        return None
+    try:
+        return check_size(part_type, params, part_file).seconds
+    except InputError as exc:
+        raise default_named(exc, mapping, part_type.params_cls) from None
+
+
 def default_named(exc: InputError, mapping: dict, params_cls) -> InputError:
     """`exc` as it is, or, where it names a parameter the part file does not set, with that said: the value is the
     part type's default (a user reading "driver_shift = 0.5" looks for a line that is not there)."""
