@@ -17,14 +17,15 @@ from .signals import Interrupted, hold_signals
 
 
 def longest_first(files: list[Path], progress=None) -> list[int]:
-    """Indices of the part files, the longest build first by its size estimate (a file that does not load
-    first of all: it fails at once), so that the builds running side by side end close together.  The
-    estimate is made from the part file's values alone (``building.early_estimate``, milliseconds) wherever the
-    part type's allows it: the rules between the fields and the design's feasibility (which computes the design:
-    up to half a second a file) are checked by each build's own load, in its forked child, side by side with the
-    others (checked here, they took 3-4 s of wall before the first build with one core idle).  A part whose
-    estimate needs the design is loaded here whole and left in building.LOADED for its forked build.
-    `progress`: told the files checked (a count)."""
+    """Indices of the part files, the longest build first by its size estimate (a file that cannot be read or
+    whose values are refused first of all: it fails at once), so that the builds running side by side end close
+    together.  The estimate is made from the part file's values alone (``building.early_estimate``, milliseconds)
+    wherever the part type's estimate allows it: the rules between the fields and the design's feasibility (which
+    computes the design: up to half a second a file) are checked by each build's own load, in its forked child,
+    side by side with the others (checked here, they took 3-4 s of wall before the first build, one core idle).  A
+    file refused there fails when its turn comes, with the same message and exit code.  A part whose estimate
+    needs the design is loaded here whole and left in building.LOADED for its forked build.  `progress`: told the
+    files checked (a count)."""
     from .building import early_estimate
 
     tick = Reporter.of(progress).counter("checking the part files", len(files), "file")
