@@ -87,11 +87,12 @@ class PairProof:
 
     def ratio_actual(self) -> tuple[np.ndarray, np.ndarray]:
         """(phi, d theta / d phi) delivered by the teeth: differences of the measured pairs
-        (phi_run, theta_law) between consecutive phases (seed 000 Figure 2 from geometry)."""
+        (phi_run, theta_law) between consecutive phases (seed 000 Figure 2 from geometry); none where the running
+        position stands or goes back (no division by a step of 0 there, nor its warning)."""
         x, y = self.phi_run, self.theta_law
         dx, dy = np.diff(x), np.diff(y)
         good = dx > 0
-        return (0.5 * (x[1:] + x[:-1]))[good], (dy / dx)[good]
+        return (0.5 * (x[1:] + x[:-1]))[good], dy[good] / dx[good]
 
     def summary(self) -> dict:
         te = self.te_drive[np.isfinite(self.te_drive)]
