@@ -133,6 +133,41 @@ def test_a_gear_fitted_in_two_processes_has_the_outline_fitted_in_one(monkeypatc
     assert all(np.array_equal(a[0], b[0]) and np.array_equal(a[1], b[1]) for a, b in zip(one, two))
 
 
+class _Witness:
+    """An argument that says in which thread it was pickled and what it held then."""
+
+    def __init__(self):
+        self.items = {"a": 1}
+
+    def __getstate__(self):
+        import threading
+
+        return {"items": dict(self.items), "pickled_in": threading.current_thread().name}
+
+
+def _held(w):
+    return w.pickled_in, sorted(w.items)
+
+
+def test_a_forked_job_takes_its_arguments_as_they_stand_when_it_is_started(monkeypatch):
+    """A job's arguments are pickled in the caller's thread at the start, not later by the executor's feeder thread
+    while the caller goes on filling them (CI: "dictionary changed size during iteration", a pair's build failed)."""
+    import threading
+
+    from propulsor.parallel import Done, Workers, start
+
+    monkeypatch.setenv("PROPULSOR_JOBS", "2")
+    with Workers():
+        w = _Witness()
+        job = start(_held, w)
+        w.items["b"] = 2  # the caller goes on with its argument
+        assert not isinstance(job, Done), "the job ran inline: no worker was forked"
+        assert job.result() == (threading.current_thread().name, ["a"])
+        bad = start(_held, lambda: None)  # a job that does not pickle: its error where the result is waited for
+        with pytest.raises(Exception, match="pickle|lambda"):
+            bad.result()
+
+
 def test_cadquery_is_imported_without_vtk_and_its_vtk_functions_load_it_when_used():
     import subprocess
     import sys

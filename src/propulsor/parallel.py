@@ -187,7 +187,21 @@ class _SlotPool(ProcessPoolExecutor):
         self._procs: dict = {}  # pid -> Process: kept past shutdown(wait=False), which forgets them
 
     def submit(self, fn, /, *args, **kwargs):
-        fut = super().submit(fn, *args, **kwargs)
+        """The job, pickled here in the caller's thread as its arguments stand now (:func:`_sent`).  The executor
+        would pickle it later, in its feeder thread, while the caller goes on: a cache the caller fills on an
+        argument meanwhile (a design's outlines' grids) made the job fail ("dictionary changed size during
+        iteration", a build in CI) or took it in whatever state it had reached.  A call that does not pickle gives a
+        Future holding the error, as the executor's own feeder does."""
+        from concurrent.futures import Future
+        from multiprocessing.reduction import ForkingPickler
+
+        try:
+            payload = bytes(ForkingPickler.dumps((fn, args, kwargs)))
+        except Exception as exc:  # noqa: BLE001 - the job's error, handed over where the caller waits for it
+            failed = Future()
+            failed.set_exception(exc)
+            return failed
+        fut = super().submit(_sent, payload)
         self._procs.update(self._processes or {})  # the fork context starts every worker at the first submit
         return fut
 
@@ -200,6 +214,14 @@ class _SlotPool(ProcessPoolExecutor):
         super().shutdown(wait=wait, cancel_futures=cancel_futures)
         if wait:
             self.give_back()
+
+
+def _sent(payload: bytes):
+    """A job pickled by :meth:`_SlotPool.submit`, run in the worker: fn(*args, **kwargs)."""
+    import pickle
+
+    fn, args, kwargs = pickle.loads(payload)
+    return fn(*args, **kwargs)
 
 
 def fork_pool(workers: int) -> ProcessPoolExecutor | None:
