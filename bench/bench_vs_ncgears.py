@@ -69,6 +69,16 @@ At the session's end, the machine quieter (e2fb499): ncgears 50.44 s wall (53.56
 wall (19.68 CPU s), peak 644 MiB: wall ratio 0.251, CPU ratio 0.367 (4cf9bba against an ncgears of the same 50.0 s:
 13.84 s, 20.95 CPU s).  ``make`` from clean, 1e22eb3 in a worktree and e2fb499 in turn, two rounds: 151.76 / 135.44
 -> 129.37 / 128.64 s wall, 284.46 / 254.25 -> 242.84 / 239.76 user s; the 636 files identical in both trees.
+
+2026-12-01, an eighth session (2 cores; a loop of 20 M additions 1.8 s at the start, 2.8 s at the end).  Changed:
+the part files ordered by their size estimates from their values alone, each build vetting its own file in its
+forked child (make's head, "checking the part files 0/19 .. 19/19": 4.1 -> 1.2 s and, paired, 5.4 -> 1.4 s of
+wall with one core idle); the mesh self-intersection's narrow phase inlined (make's 57 STL files 5.63 -> 3.58
+CPU s).  ``python -m propulsor.cli build`` of every part file, 8a13375 in a worktree and the new tree in turn:
+142.84 / 128.08 / 170.44 -> 129.72 / 126.36 / 172.77 s wall, 265.81 / 242.30 / 319.20 -> 245.57 / 240.67 / 328.60
+user s (the third round on the slowed machine): a few seconds, within the drift.  This benchmark at the end, the
+machine slow: ncgears 65.42 s wall (69.14 CPU s), peak 286 MiB; ours 17.74 s wall (27.18 CPU s), peak 651 MiB:
+wall ratio 0.271, CPU ratio 0.393.
 """
 
 from __future__ import annotations
