@@ -27,6 +27,7 @@ from pathlib import Path
 from typing import Callable
 
 from .errors import CheckFailed, EnvironmentFailure, FolderBusy, InputError
+from .loading import LOADED, Loaded, default_named, early_estimate, files_read, load, load_part, named_files  # noqa: F401
 from .progress import Reporter
 from .signals import check_signalled, held_signals
 
@@ -40,22 +41,6 @@ __all__ = ["Loaded", "BuildResult", "ProofResult", "KeptFiles", "load", "target"
 #: the kernel would copy its held locks.  Re-entrant (a write may run the design first).  Folders, locks,
 #: workers and clean-up are each build's own and do not take it.
 TURN = threading.RLock()
-
-
-@dataclasses.dataclass(frozen=True)
-class Loaded:
-    """A part ready to build: its type (``parts.PartType``), validated parameters, the part file they came from
-    (None for a type's defaults or a Python caller's values) and the size estimate (None when not made)."""
-
-    part_type: object
-    params: object
-    source: Path | None = None
-    estimate: object = None
-
-    @property
-    def files_read(self) -> tuple[Path, ...]:
-        """The part file and every file it names (() without a part file)."""
-        return files_read(self.params, self.source) if self.source is not None else ()
 
 
 @dataclasses.dataclass(frozen=True)
@@ -79,23 +64,6 @@ class BuildResult:
     files: "KeptFiles | None" = dataclasses.field(default=None, repr=False, compare=False)
 
 
-def named_files(params, part_file: Path) -> tuple[tuple[str, str, Path], ...]:
-    """(key, value as written, path) of the part file and of every file it names (string parameters
-    ending in `_file`, relative to it)."""
-    files = [("part file", str(part_file), part_file)]
-    for f in dataclasses.fields(params):
-        v = getattr(params, f.name)
-        if f.name.endswith("_file") and isinstance(v, str) and v:
-            p = Path(v)
-            files.append((f.name, v, p if p.is_absolute() else part_file.resolve().parent / p))
-    return tuple(files)
-
-
-def files_read(params, part_file: Path) -> tuple[Path, ...]:
-    """The part file and every file it names (:func:`named_files`)."""
-    return tuple(p for _, _, p in named_files(params, part_file))
-
-
 def _make_path(p: Path) -> str:
     """`p` relative to the current folder, as the depfile names it."""
     return os.path.relpath(Path(p).resolve())
@@ -110,75 +78,6 @@ def vet_depfile(depfile, out: Path, out_value: str, params, part_file: Path) -> 
 
     vet([(key, value, _make_path(p)) for key, value, p in named_files(params, part_file)] +
         [("--out", out_value, _make_path(out / "manifest.json"))])
-
-
-#: part files loaded by the command that forks their builds (batch.side_by_side): a forked build takes its
-#: own entry instead of loading the file again (the parameters, and the design their validation computed)
-LOADED: dict[Path, "Loaded"] = {}
-
-
-def load(part_file: Path, progress=None) -> Loaded:
-    """The part file read and its parameters checked as far as anything can be before a build: fields, the
-    rules between them, the size estimate and the design's own feasibility (``parts.vet``).  InputError.
-    `progress`: a callback for the steps on the way (the part type's imports, the feasibility)."""
-    if part_file in LOADED:
-        return LOADED.pop(part_file)
-    say = Reporter.of(progress)
-    from .params import load_params, read_part_file
-    from .parts import check_size, get_part_type, size_needs_design, vet
-
-    part_type_name, mapping = read_part_file(part_file)
-    say(f"{part_type_name}: loading the part type (CAD kernel, checks)")
-    part_type = get_part_type(part_type_name)
-    params = load_params(part_type.params_cls, mapping, validate=False, type_name=part_type.name)
-    # the size estimate first where it needs only the values (a design can itself be the long part)
-    early = not size_needs_design(part_type)
-    try:
-        estimate = check_size(part_type, params, part_file) if early else None
-        say(f"{part_type_name}: checking the parameters and the design's feasibility")
-        vet(part_type, params, part_file)  # the rules between fields, then the design's own feasibility (may take s)
-        estimate = estimate or check_size(part_type, params, part_file)
-    except InputError as exc:
-        raise default_named(exc, mapping, part_type.params_cls) from None
-    return Loaded(part_type, params, part_file, estimate)
-
-
-def early_estimate(part_file: Path) -> float | None:
-    """The size estimate (s) of a part file's build as far as its values tell it, before the rules between its
-    fields and the design's feasibility are checked (what :func:`load` computes first, the same value), or None
-    for a part type whose estimate needs the design.  InputError (parameter, value, limit) as :func:`load`
-    raises it.  For ordering several builds without computing their designs (batch.longest_first): each
-    build's own :func:`load` checks the rest."""
-    from .params import load_params, read_part_file
-    from .parts import check_size, get_part_type, size_needs_design
-
-    part_type_name, mapping = read_part_file(part_file)
-    part_type = get_part_type(part_type_name)
-    params = load_params(part_type.params_cls, mapping, validate=False, type_name=part_type.name)
-    if size_needs_design(part_type):
-        return None
-    try:
-        return check_size(part_type, params, part_file).seconds
-    except InputError as exc:
-        raise default_named(exc, mapping, part_type.params_cls) from None
-
-
-def default_named(exc: InputError, mapping: dict, params_cls) -> InputError:
-    """`exc` as it is, or, where it names a parameter the part file does not set, with that said: the value is the
-    part type's default (a user reading "driver_shift = 0.5" looks for a line that is not there)."""
-    names = {f.name for f in dataclasses.fields(params_cls)}
-    if type(exc) is not InputError or exc.parameter not in names or exc.parameter in mapping:
-        return exc
-    said = f"{exc.parameter} is not in the part file: {exc.value!r} is its default"
-    out = InputError(exc.parameter, exc.value, exc.limit, f"{exc.hint}; {said}" if exc.hint else said)
-    out.__dict__.update({k: v for k, v in exc.__dict__.items() if k not in ("parameter", "value", "limit", "hint")})
-    return out
-
-
-def load_part(part_file: Path):
-    """(part type, validated parameters, size estimate) of a part file (:func:`load`)."""
-    loaded = load(part_file)
-    return loaded.part_type, loaded.params, loaded.estimate
 
 
 def target(out, default: Path, force: bool = False, keep: tuple[Path, ...] = ()) -> Path:
