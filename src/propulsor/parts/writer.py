@@ -50,20 +50,22 @@ def solid_files_and_checks(folder: str, name: str, solid, expected_genus, volume
     within the chord tolerance, mesh validity (closed, oriented, one body, genus, no
     self-intersection, volume against the B-rep).  The two halves, :func:`solid_step_and_checks` and
     :func:`solid_mesh_and_checks`, are independent: the writer runs them in two workers at once."""
-    checks = solid_step_and_checks(folder, name, solid)
+    checks = solid_step_and_checks(folder, name, solid, volume)
     mesh_checks, mesh = solid_mesh_and_checks(folder, name, solid, expected_genus, volume, forked)
     return checks + mesh_checks, mesh
 
 
-def solid_step_and_checks(folder: str, name: str, solid) -> list:
-    """The B-rep checks of one solid, its STEP file and the STEP round trip; returns the checks."""
+def solid_step_and_checks(folder: str, name: str, solid, volume: float | None = None) -> list:
+    """The B-rep checks of one solid, its STEP file and the STEP round trip; returns the checks.  ``volume``: the
+    solid's B-rep volume (mm^3) when the caller has it (the writer's, of the same B-rep: a forked worker's copy is
+    OCCT's binary form of it, the same surfaces to the bit); else computed here."""
     from ..checks.brep import brep_checks, step_roundtrip_check
     from ..export.step import write_step
     from ..solids.kernel import volume as kernel_volume
 
     folder = Path(folder)
     # the exact-vs-triangulated volume cross-check is made on the exported mesh itself
-    v = kernel_volume(solid)  # of the solid as this worker has it (the B-rep check and the STEP round trip)
+    v = kernel_volume(solid) if volume is None else float(volume)  # the B-rep check and the STEP round trip
     checks = list(brep_checks(solid, name, cross_check_volume=False, volume_mm3=v))
     step = folder / f"{name}.step"
     write_step(solid, step, name)
@@ -247,7 +249,7 @@ class OutputWriter:
             return rec
         # two jobs, the longer (the mesh) first: the two workers share one large solid's work
         mesh_job = pool.submit(solid_mesh_and_checks, folder, name, solid, expected_genus, volume, True)
-        step_job = pool.submit(solid_step_and_checks, folder, name, solid)
+        step_job = pool.submit(solid_step_and_checks, folder, name, solid, volume)
         self._solid_jobs.append((name, _Joined(step_job, mesh_job)))
         return rec
 
