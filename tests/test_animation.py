@@ -104,3 +104,51 @@ def test_the_frames_font_draws_a_string_again_from_its_first_bitmap_pixel_for_pi
         assert np.count_nonzero(np.asarray(a)) > 500  # text was drawn
     m1 = font.getmask2("0.100 mm", "1")
     assert font.getmask2("0.100 mm", "1") is m1 and fresh.getmask2("0.100 mm", "1") is not m1
+
+
+def _drawn(text: str, xy, ours: bool) -> bytes:
+    from PIL import ImageDraw
+
+    from propulsor.export import animation as A
+
+    im = Image.new("P", (640, 48), 0)
+    im.putpalette(A._PAL_BYTES)
+    d = ImageDraw.Draw(im)
+    d.fontmode = "1"
+    if ours:
+        A._put_text(im, d, xy, text, 4, A._font())
+    else:
+        d.text(xy, text, fill=4, font=A._font())
+    return im.tobytes()
+
+
+def test_the_frames_text_is_pillows_pixel_for_pixel():
+    """Captions are set from each character's bitmap (export/animation.py, _put_text): the same pixels as Pillow's own
+    rendering of the line, for every pair of printable characters (a negative bearing, "/" or "x", first or after
+    another), long random lines partly outside the image, and what Pillow leaves undrawn (underscores and spaces)."""
+    import random
+
+    from propulsor.export import animation as A
+
+    font = A._font()
+    chars = sorted(A._GLYPH_CHARS)
+    # what the characters' own bitmaps rely on: whole pixel advances and no kerned pair
+    adv = {c: font.getlength(c, "1") for c in chars}
+    assert all(a == int(a) for a in adv.values())
+    assert all(font.getlength(a + b, "1") == adv[a] + adv[b] for a in chars for b in chars)
+    assert any(A._glyphs()[c][3] < 0 for c in chars)  # a negative bearing is among them
+    for a in chars:
+        line = "".join(a + b for b in chars)  # every pair (a, b) and (b, a) side by side
+        assert _drawn(line, (3, 20), True) == _drawn(line, (3, 20), False), line
+    for a in chars:
+        for b in "/x\\ _":
+            assert _drawn(a + b, (10, 10), True) == _drawn(a + b, (10, 10), False), a + b
+            assert _drawn(b + a, (10, 10), True) == _drawn(b + a, (10, 10), False), b + a
+    rng = random.Random(7)
+    for _ in range(200):
+        line = "".join(rng.choice(chars) for _ in range(rng.randint(1, 120)))
+        xy = (rng.randint(-40, 600), rng.randint(-12, 44))
+        assert _drawn(line, xy, True) == _drawn(line, xy, False), (line, xy)
+    for line in ("_ ", " _", "__ ", "a_ ", "x", "/l", "φ = 1", "-"):
+        assert _drawn(line, (10, 10), True) == _drawn(line, (10, 10), False), line
+    assert _drawn("a/l", (10.5, 10), True) == _drawn("a/l", (10.5, 10), False)  # off the pixel grid: Pillow's

@@ -246,6 +246,63 @@ def _font():
     return font
 
 
+#: the characters :func:`_put_text` sets from their own bitmaps: printable ASCII (in the frames' font each has a whole
+#: pixel advance, and no pair of them is kerned: ``tests/test_animation.py`` holds both)
+_GLYPH_CHARS = frozenset(chr(c) for c in range(32, 127))
+
+
+@functools.lru_cache(maxsize=None)
+def _glyphs() -> dict:
+    """char -> (x, y of its set pixels from the pen position at the line's top, its advance in pixels, its left bearing
+    if negative else 0) in the frames' font as Pillow draws it in mode "1" (each character drawn once on its own)."""
+    from PIL import Image, ImageDraw
+
+    font, out = _font(), {}
+    pad = 2 * FONT_SIZE
+    for c in sorted(_GLYPH_CHARS):
+        im = Image.new("L", (4 * pad, 4 * pad), 0)
+        d = ImageDraw.Draw(im)
+        d.fontmode = "1"
+        d.text((pad, pad), c, fill=255, font=font)
+        ys, xs = np.nonzero(np.asarray(im))
+        xs = xs - pad
+        out[c] = (xs, ys - pad, int(font.getlength(c, "1")), min(int(xs.min()), 0) if len(xs) else 0)
+    return out
+
+
+def _put_text(im, d, xy, text: str, colour: int, font) -> None:
+    """``d.text(xy, text, fill=colour, font=font)`` on the palette image ``im`` (drawn on by ``d``, fontmode "1"),
+    the same pixels: a line at a whole pixel position is set from each character's bitmap at its pen position (Pillow
+    renders every character of the line anew, about 20 us each; a caption changes from frame to frame); anything else
+    is left to Pillow.  As Pillow places them: a character whose bitmap starts left of its pen position (a negative
+    bearing: "/", "x") is drawn from the pen position on, and the line is shifted by the first character's
+    negative bearing."""
+    x, y = xy
+    chars = set(text)
+    # a line of underscores and spaces alone Pillow leaves undrawn (where it has spaces): left to Pillow
+    if not (float(x).is_integer() and float(y).is_integer() and d.fontmode == "1" and chars <= _GLYPH_CHARS
+            and not chars <= {" ", "_"}):
+        d.text(xy, text, fill=colour, font=font)
+        return
+    g = _glyphs()
+    xs, ys, pen = [], [], int(x) + (g[text[0]][3] if text else 0)
+    for c in text:
+        gx, gy, adv, bearing = g[c]
+        if len(gx):
+            xs.append(gx + (pen - bearing))
+            ys.append(gy)
+        pen += adv
+    if not xs:
+        return
+    X, Y = np.concatenate(xs), np.concatenate(ys) + int(y)
+    x0, y0 = int(X.min()), int(Y.min())
+    mask = np.zeros((int(Y.max()) - y0 + 1, int(X.max()) - x0 + 1), np.uint8)
+    mask[Y - y0, X - x0] = 255
+    from PIL import Image
+
+    im.paste(colour, (x0, y0, x0 + mask.shape[1], y0 + mask.shape[0]), Image.fromarray(mask, "L"))
+
+
 #: word -> its width in pixels in the frames' font
 _WORD_PX: dict = {}
 
@@ -308,7 +365,7 @@ def _layout(anim: Animation, font) -> tuple:
     return W, H, head, box, tboxes, view, captions
 
 
-def _draw_trace(d, font, tr: Trace, box: tuple, k: int) -> None:
+def _draw_trace(im, d, font, tr: Trace, box: tuple, k: int) -> None:
     bx, by, bw, bh = box
     xs = [np.asarray(tr.x, float)] + ([np.asarray(tr.ref[0], float)] if tr.ref else [])
     ys = [np.asarray(tr.y, float)] + ([np.asarray(tr.ref[1], float)] if tr.ref else [])
@@ -333,12 +390,12 @@ def _draw_trace(d, font, tr: Trace, box: tuple, k: int) -> None:
         d.line(_flat(P(tr.x[:i + 1], tr.y[:i + 1])), fill=_ci(tr.colour), width=2)
     cx, cy = P([tr.x[i]], [tr.y[i]])[0]
     d.ellipse([cx - 4, cy - 4, cx + 4, cy + 4], fill=_ci("red"), outline=_ci("ink"))
-    d.text((bx, by - 13), spell(f"{tr.label} = {tr.fmt.format(float(tr.y[i]))}"), fill=_ci("ink"), font=font)
+    _put_text(im, d, (bx, by - 13), spell(f"{tr.label} = {tr.fmt.format(float(tr.y[i]))}"), _ci("ink"), font)
     for val, yy in ((y1, by - 5), (y0, by + bh - 7)):
         txt = tr.fmt.format(val)
-        d.text((bx - 3 - d.textlength(txt, font=font), yy), txt, fill=_ci("grey"), font=font)
+        _put_text(im, d, (bx - 3 - d.textlength(txt, font=font), yy), txt, _ci("grey"), font)
     if tr.x_label:
-        d.text((bx, by + bh + 2), spell(tr.x_label), fill=_ci("grey"), font=font)
+        _put_text(im, d, (bx, by + bh + 2), spell(tr.x_label), _ci("grey"), font)
 
 
 def _draw_shape(d, s: Shape, loops: list, bg: int) -> None:
@@ -366,7 +423,7 @@ def render_frames(anim: Animation) -> list:
     d0 = ImageDraw.Draw(base)
     d0.fontmode = "1"
     for j, line in enumerate(head):
-        d0.text((anim.margin_px, 3 + j * HEADER_PX), line, fill=_ci("ink"), font=font)
+        _put_text(base, d0, (anim.margin_px, 3 + j * HEADER_PX), line, _ci("ink"), font)
     bg = _ci("bg")
     # shapes that stand still: their pixel polylines once; those below every moving one drawn once
     still = {id(s): [_flat(view.px_of(q)) for q in _world(s, 0)] for s in anim.shapes if _static(s)}
@@ -395,14 +452,14 @@ def render_frames(anim: Animation) -> list:
                 tx = x + r + 4 if x + r + 4 + tw < W - 2 else x - r - 4 - tw
                 ty = min(max(y - r - 14, box[1]), H - 14)
                 d.rectangle([tx - 1, ty, tx + tw + 1, ty + 12], fill=bg)
-                d.text((tx, ty), text, fill=c, font=font)
+                _put_text(im, d, (tx, ty), text, c, font)
         for tr, tb in zip(anim.traces, tboxes):
-            _draw_trace(d, font, tr, tb, k)
+            _draw_trace(im, d, font, tr, tb, k)
         caps = captions[k] if k < len(captions) else ()
         y = box[1] + box[3] + anim.margin_px
         for line in caps:
             colour = "red" if line.startswith("!") else "ink"
-            d.text((anim.margin_px, y), line.lstrip("!"), fill=_ci(colour), font=font)
+            _put_text(im, d, (anim.margin_px, y), line.lstrip("!"), _ci(colour), font)
             y += LINE_PX
         frames.append(im)
     return frames
