@@ -1740,35 +1740,6 @@ def test_crop_to_sector_is_the_polygonal_annular_sector():
     assert sorted(map(tuple, loops[0].tolist())) == [(1.0, 1.0), (1.0, 2.0), (2.0, 1.0), (2.0, 2.0)]
 
 
-def test_sector_crops_are_the_crops_of_the_whole_section_vertex_for_vertex():
-    """SectorCrops (a coarse crop held for the next sectors) gives crop_to_sector's loops of the whole section, to the
-    last bit: sectors moving up (the driven wheel's windows), moving down (the driver's), jumping back, and the
-    fall-backs (a ring from the axis; a coarse crop that would close on itself)."""
-    pts, g = involute_gear(40, 3.0)
-    section = m3d.CrossSection([np.ascontiguousarray(pts)], m3d.FillRule.Positive)
-    r_in, r_out = g["r_f"] - 1.0, g["r_a"] + 1.0
-
-    def same(a, b):
-        return len(a) == len(b) and all(np.array_equal(p, q) for p, q in zip(a, b))
-
-    up, down = oz.SectorCrops(section, r_in, r_out), oz.SectorCrops(section, r_in, r_out)
-    coarse = []  # each coarse crop made (kept here: an id is not reused)
-    for k in range(40):
-        a0 = -0.3 + 0.1 * k
-        assert same(up.crop(a0, a0 + 1.3), oz.crop_to_sector(section, a0, a0 + 1.3, r_in, r_out))
-        assert same(down.crop(-a0, -a0 + 1.3), oz.crop_to_sector(section, -a0, -a0 + 1.3, r_in, r_out))
-        if not coarse or coarse[-1] is not up._held[2]:
-            coarse.append(up._held[2])
-        # the coarse crop holds the sector and is smaller than the section: a crop of it, not of the whole
-        assert up._held[0] <= a0 and a0 + 1.3 <= up._held[1] and up._held[2].num_vert() < section.num_vert()
-    assert 5 <= len(coarse) < 40  # kept over several sectors
-    assert same(up.crop(0.2, 0.5), oz.crop_to_sector(section, 0.2, 0.5, r_in, r_out))  # back to the start
-    axis = oz.SectorCrops(section, 0.5, r_out)  # the ring from 1 mm inside r_in would reach the axis: the whole cut
-    assert same(axis.crop(0.0, 1.0), oz.crop_to_sector(section, 0.0, 1.0, 0.5, r_out)) and axis._held is None
-    wide = oz.SectorCrops(section, r_in, r_out)
-    assert same(wide.crop(0.0, 6.0), oz.crop_to_sector(section, 0.0, 6.0, r_in, r_out)) and wide._held is None
-
-
 def test_offset_outline_thins_thickens_and_shifts():
     o = Outline([SQUARE10], 100.0)
     # the new outline's edges are the default 0.1 mm

@@ -38,7 +38,7 @@ Modules: :mod:`.outlines`, :mod:`.poses`, :mod:`.distance`, :mod:`.backlash`, :m
 
 from __future__ import annotations
 
-from .outlines import Outline, SectorCrops, outline, crop_to_sector, cut_to_disc
+from .outlines import Outline, outline, crop_to_sector, cut_to_disc
 from .poses import Pose, poses_from_angles, rotation_matrices
 from .sweep2d import SweepResult, sweep_pair, sweep_pair_windowed
 from .transmission import TransmissionResult, transmission_sweep
@@ -48,7 +48,6 @@ __all__ = [
     "Outline",
     "outline",
     "crop_to_sector",
-    "SectorCrops",
     "cut_to_disc",
     "Pose",
     "poses_from_angles",

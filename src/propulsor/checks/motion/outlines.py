@@ -16,7 +16,7 @@ from ...errors import InputError, require, require_positive
 from ...geometry.profile import Profile
 from ...planar import box, norms
 
-__all__ = ['Outline', 'outline', 'crop_to_sector', 'SectorCrops', 'cut_to_disc', 'offset_outline']
+__all__ = ['Outline', 'outline', 'crop_to_sector', 'cut_to_disc', 'offset_outline']
 
 
 def _signed_area(p: np.ndarray) -> float:
@@ -166,54 +166,12 @@ def outline(body, chord_tol: float = policy.MOTION_CHORD_TOL_MM, max_segment: fl
 
 def crop_to_sector(section: m3d.CrossSection, a0: float, a1: float, r_in: float, r_out: float) -> list[np.ndarray]:
     """Loops of ``section`` inside the annular sector a0..a1, r_in..r_out (about the origin)."""
-    return _loops(section ^ _wedge(a0, a1, r_in, r_out))
-
-
-class SectorCrops:
-    """Crops of one section to annular sectors a0..a1, r_in..r_out (fixed radii, the angles moving on, as a
-    whole-cycle proof's windows ask for them): each the same loops as :func:`crop_to_sector` of the whole section,
-    cut from a coarser crop held for the next ones.
-
-    The coarse crop reaches ``pad`` rad beyond the sector on either side and ``ahead`` rad more the way the sectors
-    asked for have been moving (half of it each way at first), 1 mm inside r_in and beyond r_out: the sector's wedge lies inside it, with all of the section the sector holds
-    and none of the coarse crop's own cut edges.  Clipper's intersection (manifold3d) of the whole section and of
-    the coarse crop then gives the same loops, vertex for vertex (the vertices it keeps are the section's own, on
-    its integer grid either way): the 756 crops of the seed-000 and seed-002 pairs' proofs, each equal to the last
-    bit, at about half the cost (the boolean's cost grows with the vertices it is given).  Where the radii leave no
-    ring (r_in at the axis) or the coarse crop would close on itself, the whole section is cut."""
-
-    def __init__(self, section: m3d.CrossSection, r_in: float, r_out: float, pad: float = 0.05, ahead: float = 0.4):
-        self.section, self.r_in, self.r_out, self.pad, self.ahead = section, float(r_in), float(r_out), pad, ahead
-        self._held = None  # (a0, a1, coarse section)
-        self._last = None  # the a0 asked for last
-
-    def crop(self, a0: float, a1: float) -> list[np.ndarray]:
-        """The loops of the section inside a0..a1 (rad, a0 < a1), r_in..r_out."""
-        held, last = self._held, self._last
-        self._last = a0
-        if held is None or not (held[0] <= a0 and a1 <= held[1]):
-            up = 0.5 if last is None or a0 == last else float(a0 > last)
-            h0, h1 = a0 - (1.0 - up) * self.ahead, a1 + up * self.ahead  # the sectors it holds
-            c0, c1 = h0 - self.pad, h1 + self.pad
-            if self.r_in - 1.0 <= 0.0 or c1 - c0 >= 2.0 * math.pi - 0.1:
-                return crop_to_sector(self.section, a0, a1, self.r_in, self.r_out)
-            coarse = self.section ^ _wedge(c0, c1, self.r_in - 1.0, self.r_out + 1.0)
-            held = self._held = (h0, h1, coarse)
-        return _loops(held[2] ^ _wedge(a0, a1, self.r_in, self.r_out))
-
-
-def _wedge(a0: float, a1: float, r_in: float, r_out: float) -> m3d.CrossSection:
-    """The annular sector a0..a1, r_in..r_out about the origin (its arcs chords of at most 0.02 rad; r_in 0: to the
-    axis)."""
     n = max(8, int(math.ceil((a1 - a0) / 0.02)))
     a = np.linspace(a0, a1, n)
     outer = np.column_stack([r_out * np.cos(a), r_out * np.sin(a)])
     inner = np.column_stack([r_in * np.cos(a[::-1]), r_in * np.sin(a[::-1])]) if r_in > 0 else np.zeros((1, 2))
-    return m3d.CrossSection([np.ascontiguousarray(np.vstack([outer, inner]))], m3d.FillRule.Positive)
-
-
-def _loops(section: m3d.CrossSection) -> list[np.ndarray]:
-    return [np.asarray(p, float) for p in section.to_polygons()]
+    wedge = m3d.CrossSection([np.ascontiguousarray(np.vstack([outer, inner]))], m3d.FillRule.Positive)
+    return [np.asarray(p, float) for p in (section ^ wedge).to_polygons()]
 
 
 def cut_to_disc(section: m3d.CrossSection, cx: float, cy: float, R: float, sides: int = 256) -> m3d.CrossSection:

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...checks.motion import SectorCrops, cut_to_disc, outline, transmission_sweep
+from ...checks.motion import crop_to_sector, cut_to_disc, outline, transmission_sweep
 from ... import policy
 from ...planar import norms
 
@@ -172,16 +172,17 @@ def prove_pair(driver_profile, driven_profile, L: float, theta_of_phi, phis, r_r
     nc = np.zeros(N, int)
     prev, warm = 0.0, False
     lens = _LensCrops(L, reach + 1.0, r_dvn + 1.0)
-    dvn_crops, drv_crops = SectorCrops(dvn.section, r_in, r_dvn + 1.0), SectorCrops(drv.section, r_in_drv, reach + 1.0)
     for w in range(windows):
         idx = np.nonzero((phis >= edges[w]) & (phis < edges[w + 1]))[0]
         if len(idx) == 0:
             continue
-        crop = outline(dvn_crops.crop(phis[idx].min() - margin_a, phis[idx].max() + margin_a))
+        loops = crop_to_sector(dvn.section, phis[idx].min() - margin_a, phis[idx].max() + margin_a, r_in, r_dvn + 1.0)
+        crop = outline(loops)
         _axis_annulus(crop)
         # the driver part that can come within the driven wheel's outer radius during the window
         tha, thb = float(theta[idx].min()), float(theta[idx].max())
-        dcrop = outline(drv_crops.crop(math.pi - thb - hw_drv, math.pi - tha + hw_drv))
+        dcrop = outline(crop_to_sector(drv.section, math.pi - thb - hw_drv, math.pi - tha + hw_drv,
+                                      r_in_drv, reach + 1.0))
         _axis_annulus(dcrop)
         tmap = {float(p): float(t) for p, t in zip(phis[idx], theta[idx])}
         tr = transmission_sweep(dcrop, (L, 0.0), crop, (0.0, 0.0), lambda p: tmap[float(p)], phis[idx],
