@@ -231,23 +231,35 @@ def test_proof_of_a_circular_pair_is_its_backlash_and_half_of_it_as_transmission
     assert pr1.name == "mesh" and pr1.pairs_drive.tolist() == ref.pairs_drive[:2].tolist()
 
 
-def test_proof_over_a_whole_turn_in_its_default_windows_of_a_tenth_of_a_radian():
-    """Phases all round the driven turn (every 9 deg): each is proved (a window of 0.1 rad holds at most one) and
-    the default 63 windows tick at the last phase of each one that holds a phase."""
+def test_proof_over_a_whole_turn_in_its_default_windows_the_same_in_any_windows():
+    """Phases all round the driven turn (every 9 deg): each is proved, the default 16 windows (policy
+    PAIR_PROOF_WINDOW_RAD, 0.4 rad: two or three phases each) tick at the last phase of each, and the proof is the
+    same to the bit in 63 windows of a tenth of a radian (at most one phase each) or in one window."""
+    from propulsor import policy
     from propulsor.parts.noncircular_pair.pair_proof import prove_pair
 
     _, dd = _circular()
     d = dd.d
     phis = np.radians(np.arange(0.0, 360.0, 9.0)) + 0.003
     ticks = []
-    pr = prove_pair(dd.profiles[0], dd.profiles[1], 75.0, d.run_law.theta, phis, lambda ph: 50.0 + 0 * ph,
-                    tick=ticks.append)
+    args = (dd.profiles[0], dd.profiles[1], 75.0, d.run_law.theta, phis, lambda ph: 50.0 + 0 * ph)
+    pr = prove_pair(*args, tick=ticks.append)
     jt = 0.16 / math.cos(math.radians(20.0))
-    assert ticks == list(range(1, 41))
+    assert policy.PAIR_PROOF_WINDOW_RAD == 0.4
+    # 16 windows over the phases' span 351 deg: 21.94 deg each, the last phase of each at 18, 36, 63, 81, ...
+    # (the last window holds its end)
+    last = [int(np.nonzero(np.degrees(phis - phis[0]) < 351.0 / 16 * (k + 1) + (k == 15))[0].max()) + 1
+            for k in range(16)]
+    assert len(set(last)) == 16 and ticks == last and ticks[:4] == [3, 5, 8, 10] and ticks[-1] == 40
     assert pr.jams == 0 and pr.backlash_mm == pytest.approx(np.full(40, jt), abs=2e-4)
     ref = _by_sweep(d, 75.0, d.run_law.theta, phis, np.full(40, 50.0))
     assert pr.phi_drive == pytest.approx(phis - ref.free_back, abs=1e-9)
     assert pr.pairs_drive.tolist() == ref.pairs_drive.tolist()
+    for windows in (63, 1):
+        other = prove_pair(*args, windows=windows)
+        for name, value in vars(pr).items():
+            if isinstance(value, np.ndarray):
+                assert np.array_equal(value, getattr(other, name), equal_nan=True), (windows, name)
 
 
 def test_proof_of_teeth_off_the_laws_position_runs_from_the_free_position_nearest_the_law():
@@ -772,9 +784,9 @@ def test_proof_search_spans_half_a_pitch_and_starts_from_the_law_after_a_free_ph
     assert none.jams == 0 and none.te_drive == pytest.approx(pr.te_drive, abs=5e-6)
 
 
-def test_proof_ticks_each_default_window_of_a_tenth_of_a_radian_by_its_last_phase():
-    """80 phases every 4.5 deg: the turn's 63 windows (edges from the first phase to the last + 1e-12) hold one or
-    two phases each; each window ticks the count of phases done at its end."""
+def test_proof_ticks_each_default_window_by_its_last_phase():
+    """80 phases every 4.5 deg: the turn's 16 windows (0.4 rad: edges from the first phase to the last + 1e-12) hold
+    five phases each; each window ticks the count of phases done at its end."""
     from propulsor.parts.noncircular_pair.pair_proof import prove_pair
 
     _, dd = _circular()
@@ -782,13 +794,13 @@ def test_proof_ticks_each_default_window_of_a_tenth_of_a_radian_by_its_last_phas
     ticks = []
     prove_pair(dd.profiles[0], dd.profiles[1], 75.0, dd.d.run_law.theta, phis, lambda ph: 50.0 + 0 * ph,
                tick=ticks.append)
-    edges = np.linspace(phis[0], phis[-1] + 1e-12, 64)
+    edges = np.linspace(phis[0], phis[-1] + 1e-12, 17)
     expected = []
-    for w in range(63):
+    for w in range(16):
         inside = [k for k, ph in enumerate(phis) if edges[w] <= ph < edges[w + 1]]
         if inside:
             expected.append(inside[-1] + 1)
-    assert ticks == expected and len(ticks) < 80 and ticks[-1] == 80
+    assert ticks == expected == list(range(5, 81, 5))
 
 
 def test_proof_of_a_pair_mounted_a_millimetre_apart_is_the_sweep_of_the_whole_outlines():

@@ -305,6 +305,11 @@ AS_BUILT_CORNER_RUN_MAX_DEG = 0.5
 #: ... and a tooth keeps at least this share of its addendum (a tip shortened below it is named)
 TOOTH_HEIGHT_MIN_SHARE = 0.1
 
+#: the whole-cycle proof of a non-circular pair (parts/noncircular_pair/pair_proof.py) crops both outlines once per
+#: window of phases this wide (rad of the driven wheel) to what the driver can reach during it; the values do not
+#: depend on it (the crops hold every vertex within reach), only the time
+PAIR_PROOF_WINDOW_RAD = 0.4
+
 # --- contact events of a gear pair (checks/motion/contact_events.py) ------------------------------------------
 #: the loaded contact is sampled every this many degrees of the driver (the resolution of the independent contact
 #: code the as-built transmission is compared with) ...
