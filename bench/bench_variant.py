@@ -137,6 +137,19 @@ midpoints of the test pair are served from the kept cache).  The six contacts of
 tree in turn, two rounds of two: the seed-002 pair 3.42 / 3.50 -> 3.64 / 3.63 CPU s, its Fourier form 5.19 / 5.66 ->
 5.28 / 5.62: the machine's drift (the unchanged design and proof were 7-20 % slower in the new tree's runs under
 cProfile too) is larger than the contact's 0.1 s a variant.
+
+2026-12-01, a ninth session (2 cores; a loop of 20 M additions 2.2-3.0 s, the machine slow throughout): the
+whole-cycle proof crops both outlines once per 0.4 rad window instead of 0.1 (``policy.PAIR_PROOF_WINDOW_RAD``): a
+crop's boolean costs about the same whatever its span (the reach on either side of the window is most of it), and
+every value of the proof is the same to the bit in 16, 63 or one window (the ten pairs of ``make`` compared; a test
+holds it).  The proofs of make's ten pairs in one process, 63 and 16 windows in turn, three rounds: 20.83 / 20.26 /
+20.67 -> 16.47 / 16.81 / 16.21 CPU s (seed 002's 1.03-1.19 -> 0.74-0.76, seed 000's 1.43-1.52 -> 0.93-1.06; the
+sector tables' proofs, whose time is the least-overlap booleans, 5-7 % less).  Variants, 7dc0106 in a worktree and
+the new tree in turn, two rounds of two: the seed-002 pair 4.80 / 4.40 / 4.40 / 4.83 -> 3.79 / 3.83 / 3.66 / 3.97
+CPU s (-17 %), its Fourier form 7.11 / 8.04 / 6.48 / 6.29 -> 7.97 / 6.12 / 6.58 / 7.03 (the machine's noise larger
+than its 0.1 s: its time is the as-built contact and the load per tooth).  A coarse crop held for the next windows
+(each window's crop cut from it) gave the same loops vertex for vertex and 28-45 % less crop time at 63 windows,
+nothing at 16: reverted.
 """
 
 from __future__ import annotations

@@ -79,6 +79,18 @@ CPU s).  ``python -m propulsor.cli build`` of every part file, 8a13375 in a work
 user s (the third round on the slowed machine): a few seconds, within the drift.  This benchmark at the end, the
 machine slow: ncgears 65.42 s wall (69.14 CPU s), peak 286 MiB; ours 17.74 s wall (27.18 CPU s), peak 651 MiB:
 wall ratio 0.271, CPU ratio 0.393.
+
+2026-12-01, a ninth session (2 cores, a fresh venv; a loop of 20 M additions 2.2-3.0 s).  Changed: the whole-cycle
+proof's 16 windows a turn instead of 63 (the proofs of make's ten pairs 20.3-20.8 -> 16.2-16.8 CPU s, every value the
+same), the STEP half of a solid's files taking the writer's B-rep volume instead of integrating it again (the
+volume integration was 4.4 of the 399 s py-spy sampled over make), the animations' caption lines set from each
+character's own bitmap (Pillow's pixels; 64 frames of a two-line caption 0.40 -> 0.13-0.21 CPU s).  This
+benchmark: ncgears 59.79 s wall (63.08 CPU s), peak 289 MiB; ours 15.99 s wall (23.67 CPU s), peak 765 MiB: wall
+ratio 0.267, CPU ratio 0.375.  The peak, measured again for 7dc0106 and the new tree in turn: 763 / 774 -> 777 /
+776 MiB (651 last session for 7dc0106's build on the previous machine: the change is the machine or its fresh venv,
+not the code).  ``python -m propulsor.cli build`` of every part file, 7dc0106 in a worktree and the new tree in
+turn, two rounds: 153.85 / 138.11 -> 160.41 / 152.24 s wall, 290.99 / 264.15 -> 305.64 / 289.76 user s: the
+machine's drift (the same code gave 264-306 s) hides the ~10 CPU s measured piece by piece; the 636 files identical.
 """
 
 from __future__ import annotations
