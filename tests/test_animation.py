@@ -152,3 +152,24 @@ def test_the_frames_text_is_pillows_pixel_for_pixel():
     for line in ("_ ", " _", "__ ", "a_ ", "x", "/l", "φ = 1", "-"):
         assert _drawn(line, (10, 10), True) == _drawn(line, (10, 10), False), line
     assert _drawn("a/l", (10.5, 10), True) == _drawn("a/l", (10.5, 10), False)  # off the pixel grid: Pillow's
+
+
+def test_the_captions_lengths_are_pillows():
+    """A caption's width for its wrapping (export/animation.py, _length): the sum of its characters' advances, Pillow's
+    getlength of the whole line for every pair of printable characters and random lines; other text is Pillow's."""
+    import random
+
+    from propulsor.export import animation as A
+
+    font = A._font()
+    chars = sorted(A._GLYPH_CHARS)
+    assert all(font.getlength(a + b) == A._length(a + b, font) for a in chars for b in chars)
+    rng = random.Random(3)
+    for _ in range(300):
+        line = "".join(rng.choice(chars) for _ in range(rng.randint(0, 150)))
+        assert A._length(line, font) == font.getlength(line), line
+    assert A._length("3 mm²°", font) == font.getlength("3 mm²°")
+    # the wrapped lines: each within the width, the words in order
+    text = " ".join(f"word{k} {k * 1.2345:.4f} mm" for k in range(30))
+    lines = A._wrap(text, font, 300)
+    assert " ".join(lines) == text and len(lines) > 3 and all(font.getlength(q) <= 300 for q in lines)

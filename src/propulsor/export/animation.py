@@ -303,19 +303,31 @@ def _put_text(im, d, xy, text: str, colour: int, font) -> None:
     im.paste(colour, (x0, y0, x0 + mask.shape[1], y0 + mask.shape[0]), Image.fromarray(mask, "L"))
 
 
-#: word -> its width in pixels in the frames' font
-_WORD_PX: dict = {}
+@functools.lru_cache(maxsize=None)
+def _advances() -> dict:
+    """char -> its advance in pixels in the frames' font (``getlength``, Pillow's default mode), the printable ASCII
+    characters (whole pixels, no pair kerned: ``tests/test_animation.py``)."""
+    font = _font()
+    return {c: font.getlength(c) for c in _GLYPH_CHARS}
+
+
+def _length(text: str, font) -> float:
+    """``font.getlength(text)`` in the frames' font: the sum of the characters' advances where every one is printable
+    ASCII (the same number; Pillow lays the whole line out again, 0.3 ms for a caption line), else Pillow's."""
+    adv = _advances()
+    try:
+        return float(sum(adv[c] for c in text))
+    except KeyError:
+        return font.getlength(text)
 
 
 def _wrap(text: str, font, width: float) -> list:
     """``text`` (already spelled) broken at spaces into lines at most ``width`` pixels long (word widths
     summed with the space's: within a pixel or two of the drawn line, 4 px kept spare)."""
     def length(word: str) -> float:
-        if word not in _WORD_PX:
-            _WORD_PX[word] = font.getlength(word)
-        return _WORD_PX[word]
+        return _length(word, font)
 
-    if font.getlength(text) <= width:
+    if _length(text, font) <= width:
         return [text]
     space = length(" ")
     lines, cur, cur_w = [], [], 0.0
