@@ -409,6 +409,7 @@ def test_counts_of_jobs_side_by_side_are_one_count(clock):
     assert [(e.done, e.total) for e in got] == [(10, 200), (15, 180), (105, 180), (180, 180)]
     assert got[0] == "contact: position 10/200"
     assert count_shared(lambda e: None, "contact", 2) == [None, None]
+    assert count_shared(Reporter(None), "contact", 2) == [None, None]  # nobody listens: no counter
 
 
 def test_two_counts_at_once_keep_their_own_pace_and_lines(clock):

@@ -120,8 +120,9 @@ def count_shared(progress, phase: str, parts: int, unit: str = "") -> list:
     """`parts` ``count(done, total)`` callbacks (``parallel.start``'s counters of jobs that share one step, such as the
     two directions of a contact run side by side) reported as one count of the step `phase`: the sum of the parts'
     done of the sum of their totals; a part not yet heard from is taken as large as the mean of those heard from (its
-    own total replaces that when it comes).  A list of `parts` Nones when `progress` is not a :class:`Reporter`."""
-    if not isinstance(progress, Reporter):
+    own total replaces that when it comes).  A list of `parts` Nones when `progress` is not a :class:`Reporter` or has
+    no callback (a study's variant: a contact direction ticks some 10 000 times, each a few microseconds for nobody)."""
+    if not isinstance(progress, Reporter) or progress.callback is None:
         return [None] * parts
     seen: dict[int, tuple[int, int]] = {}
 
