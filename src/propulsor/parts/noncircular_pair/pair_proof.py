@@ -11,7 +11,8 @@ Speed: the driven outline is cropped, per window of consecutive phases, to the a
 sector that the driver can reach (its largest radius plus the largest free-rotation search
 angle and 1 mm); the rest of the driven wheel is farther from the driver than its tip
 radius at every phase of the window, so it can neither overlap nor touch.  The crop's
-artificial edges lie outside that reach.
+artificial edges lie outside that reach, so the values do not depend on the windows (16 a turn:
+``policy.PAIR_PROOF_WINDOW_RAD``).
 
 Teeth that are not conjugate (the papers' sector method) may overlap at the law's position.
 There the running position is searched: the driven offset of least overlap area within half
@@ -161,7 +162,8 @@ def prove_pair(driver_profile, driven_profile, L: float, theta_of_phi, phis, r_r
     c = np.clip(((r_dvn + 1.0) ** 2 - L * L - rho * rho) / (2 * L * rho), -1.0, 1.0)
     hw_drv = float(np.max(math.pi - np.arccos(c))) + 0.05
     if windows is None:  # 16 a turn: each crop's cost grows with its span far less than in proportion (the reach
-        # on either side is the most of it); 0.1 rad windows (63) gave the same values, to the bit, at 1.4 times the time
+        # on either side is the most of it); 0.1 rad windows (63) gave the same values, to the bit, at 1.25 times the
+        # time over the proofs of make's ten pairs
         windows = max(1, int(round(2 * math.pi / policy.PAIR_PROOF_WINDOW_RAD)))
     edges = np.linspace(phis.min(), phis.max() + 1e-12, windows + 1)
     overlap = np.zeros(N)
