@@ -146,8 +146,11 @@ holds it).  The proofs of make's ten pairs in one process, 63 and 16 windows in 
 20.67 -> 16.47 / 16.81 / 16.21 CPU s (seed 002's 1.03-1.19 -> 0.74-0.76, seed 000's 1.43-1.52 -> 0.93-1.06; the
 sector tables' proofs, whose time is the least-overlap booleans, 5-7 % less).  Variants, 7dc0106 in a worktree and
 the new tree in turn, two rounds of two: the seed-002 pair 4.80 / 4.40 / 4.40 / 4.83 -> 3.79 / 3.83 / 3.66 / 3.97
-CPU s (-17 %), its Fourier form 7.11 / 8.04 / 6.48 / 6.29 -> 7.97 / 6.12 / 6.58 / 7.03 (the machine's noise larger
-than its 0.1 s: its time is the as-built contact and the load per tooth).  A coarse crop held for the next windows
+CPU s, its Fourier form 7.11 / 8.04 / 6.48 / 6.29 -> 7.97 / 6.12 / 6.58 / 7.03; the same pairing later (also the
+silent progress counter, 6683191): 3.45 / 3.32 / 3.88 / 4.77 -> 3.57 / 3.20 / 4.52 / 5.18 and 7.31 / 8.09 / 9.48 /
+9.74 -> 6.08 / 5.05 / 7.80 / 8.28.  The machine's swings are larger than the change; the proof's own time inside
+a variant, 63 and 16 windows in turn in one process, four rounds: seed 002 1.09-1.15 -> 0.83-0.97 CPU s, its
+Fourier form 1.06-1.35 -> 0.74-0.77.  A coarse crop held for the next windows
 (each window's crop cut from it) gave the same loops vertex for vertex and 28-45 % less crop time at 63 windows,
 nothing at 16: reverted.
 """
