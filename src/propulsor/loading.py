@@ -28,7 +28,6 @@ class Loaded:
         return files_read(self.params, self.source) if self.source is not None else ()
 
 
-
 def named_files(params, part_file: Path) -> tuple[tuple[str, str, Path], ...]:
     """(key, value as written, path) of the part file and of every file it names (string parameters
     ending in `_file`, relative to it)."""
