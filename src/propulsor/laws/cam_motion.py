@@ -42,6 +42,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
@@ -237,17 +238,27 @@ class SupportPath:
         g = np.empty_like(phi)
         pos = phi >= 0.0
         if np.any(pos):
-            y = self._pos.sol(np.minimum(phi[pos], s))
+            y = self._dense(0)(np.minimum(phi[pos], s))
             H[pos], g[pos] = y[0], y[1]
         neg = ~pos
         if np.any(neg):
             if self._neg is None:
-                y = self._pos.sol(np.minimum(-phi[neg], s))
+                y = self._dense(0)(np.minimum(-phi[neg], s))
                 H[neg], g[neg] = y[0], -y[1]
             else:
-                y = self._neg.sol(np.maximum(phi[neg], -s))
+                y = self._dense(1)(np.maximum(phi[neg], -s))
                 H[neg], g[neg] = y[0], y[1]
         return H, g
+
+    def _dense(self, side: int):
+        """The dense output of the positive (0) or negative (1) integration, compiled
+        (:class:`.cam_kernels.DenseSolution`: scipy's values to the last bit); made on first use."""
+        made = self.__dict__.setdefault("_dense_made", [None, None])
+        if made[side] is None:
+            from .cam_kernels import DenseSolution
+
+            made[side] = DenseSolution((self._pos, self._neg)[side].sol)
+        return made[side]
 
     def derivs(self, phi) -> dict:
         """H, H', H'', γ, γ', K, g = H·K/cos γ and g' at φ (eq. 20: H' = H·tan γ,
@@ -389,46 +400,77 @@ class ReturnCurve:
     def build(cls, end_a: tuple, end_b: tuple, a: float, b: float, H_top: float | None):
         """end_a = (H, H', H'') at φ = a, end_b at φ = b."""
         L = 0.5 * (b - a)
-        A, rhs = [], []
-
-        def pad(row, piece):
-            full = np.zeros(12)
-            full[6 * piece:6 * piece + 6] = row
-            return full
-
+        rhs = []
         for m in range(3):
-            A.append(pad(_mono_row(0.0, m), 0)); rhs.append(end_a[m] * L ** m)
-            A.append(pad(_mono_row(1.0, m), 1)); rhs.append(end_b[m] * L ** m)
-        for m in range(3):  # C2 joint at φ = π
-            A.append(pad(_mono_row(1.0, m), 0) - pad(_mono_row(0.0, m), 1)); rhs.append(0.0)
+            rhs.append(end_a[m] * L ** m)
+            rhs.append(end_b[m] * L ** m)
+        rhs.extend((0.0, 0.0, 0.0))  # C2 joint at φ = π
         if H_top is not None:
-            A.append(pad(_mono_row(1.0, 0), 0)); rhs.append(H_top)
-        A = np.array(A)
-        rhs = np.array(rhs)
-        G = np.zeros((12, 12))
-        G[:6, :6] = G[6:, 6:] = _quintic_gram()
-        n = A.shape[0]
-        kkt = np.zeros((12 + n, 12 + n))
-        kkt[:12, :12] = 2.0 * G
-        kkt[:12, 12:] = A.T
-        kkt[12:, :12] = A
-        sol = np.linalg.solve(kkt, np.concatenate([np.zeros(12), rhs]))
+            rhs.append(H_top)
+        sol = np.linalg.solve(_return_kkt(H_top is not None), np.concatenate([np.zeros(12), np.array(rhs)]))
         return cls(a, L, sol[:12].reshape(2, 6))
 
     def derivs(self, phi, order: int = 3):
         """[H, H', ..., H^(order)] at φ ∈ [a, a + 2L]."""
-        phi = np.asarray(phi, dtype=float)
-        u = (phi - self.a) / self.L
-        piece = np.clip(np.floor(u), 0, 1).astype(int)
-        t = u - piece
-        out = []
+        return self.derivs_on(_ReturnBasis(phi, self.a, self.L), order)
+
+    def derivs_on(self, basis: "_ReturnBasis", order: int):
+        """:meth:`derivs` at the angles of ``basis`` (made with this curve's a and L): the sums of
+        :func:`.cam_kernels.quintic_derivs`, ``coef[piece, k] * fk * t ** (k - m)`` term by term as numpy would
+        add them."""
+        from .cam_kernels import quintic_derivs
+
+        fks = np.zeros((order + 1, 6))
         for m in range(order + 1):
-            val = np.zeros_like(t)
             for k in range(m, 6):
-                fk = math.factorial(k) / math.factorial(k - m)
-                val = val + self.coef[piece, k] * fk * t ** (k - m)
-            out.append(val / self.L ** m)
-        return out
+                fks[m, k] = math.factorial(k) / math.factorial(k - m)
+        Lm = np.array([self.L ** m for m in range(order + 1)])
+        rows = quintic_derivs(np.ascontiguousarray(self.coef, np.float64), basis.piece, basis.powers, fks, Lm)
+        return [r.reshape(basis.shape) for r in rows]
+
+
+class _ReturnBasis:
+    """What :meth:`ReturnCurve.derivs` computes of the angles alone (each point's piece and the powers of its local
+    t), kept for many curves of one return phase at the same angles (:func:`_min_gamma_return`'s search)."""
+
+    def __init__(self, phi, a: float, L: float):
+        phi = np.asarray(phi, dtype=float)
+        self.shape = phi.shape
+        u = (phi.ravel() - a) / L
+        self.piece = np.clip(np.floor(u), 0, 1).astype(np.int64)
+        t = u - self.piece
+        self.powers = np.ascontiguousarray(np.stack([t ** e for e in range(6)]))  # t ** (k - m), 0 <= k - m <= 5
+
+
+@lru_cache(maxsize=2)
+def _return_kkt(with_top: bool) -> np.ndarray:
+    """The KKT matrix of :meth:`ReturnCurve.build` (the least jerk integral under the end, joint and top
+    conditions).  The conditions' rows hold only the monomials' derivatives at t = 0 and 1, so the matrix is the
+    same for every return phase; ``build`` solves it with the phase's right-hand side.  Read-only."""
+
+    def pad(row, piece):
+        full = np.zeros(12)
+        full[6 * piece:6 * piece + 6] = row
+        return full
+
+    A = []
+    for m in range(3):
+        A.append(pad(_mono_row(0.0, m), 0))
+        A.append(pad(_mono_row(1.0, m), 1))
+    for m in range(3):  # C2 joint at φ = π
+        A.append(pad(_mono_row(1.0, m), 0) - pad(_mono_row(0.0, m), 1))
+    if with_top:
+        A.append(pad(_mono_row(1.0, 0), 0))
+    A = np.array(A)
+    G = np.zeros((12, 12))
+    G[:6, :6] = G[6:, 6:] = _quintic_gram()
+    n = A.shape[0]
+    kkt = np.zeros((12 + n, 12 + n))
+    kkt[:12, :12] = 2.0 * G
+    kkt[:12, 12:] = A.T
+    kkt[12:, :12] = A
+    kkt.setflags(write=False)
+    return kkt
 
 
 def _min_gamma_return(end_a: tuple, end_b: tuple, a: float, b: float) -> ReturnCurve:
@@ -438,9 +480,10 @@ def _min_gamma_return(end_a: tuple, end_b: tuple, a: float, b: float) -> ReturnC
     from scipy.optimize import minimize_scalar
 
     phi = np.linspace(a, b, 721)
+    basis = _ReturnBasis(phi, a, 0.5 * (b - a))  # with ReturnCurve.build's L
 
     def peak(h):
-        H, H1 = ReturnCurve.build(end_a, end_b, a, b, h).derivs(phi, 1)
+        H, H1 = ReturnCurve.build(end_a, end_b, a, b, h).derivs_on(basis, 1)
         if np.any(H <= 0.0):
             return math.pi
         return float(np.mean(np.arctan2(H1, H) ** 8) ** 0.125)
