@@ -124,8 +124,9 @@ def _drawn(text: str, xy, ours: bool) -> bytes:
 
 def test_the_frames_text_is_pillows_pixel_for_pixel():
     """Captions are set from each character's bitmap (export/animation.py, _put_text): the same pixels as Pillow's own
-    rendering of the line, for every pair of printable characters (a negative bearing, "/" or "x", first or after
-    another), long random lines partly outside the image, and what Pillow leaves undrawn (underscores and spaces)."""
+    rendering of the line, for every pair of its characters (printable ASCII, "°", "…"; a negative bearing, "/" or "x",
+    first or after another), long random lines partly outside the image, and what Pillow leaves undrawn (underscores
+    and spaces)."""
     import random
 
     from propulsor.export import animation as A
@@ -156,7 +157,8 @@ def test_the_frames_text_is_pillows_pixel_for_pixel():
 
 def test_the_captions_lengths_are_pillows():
     """A caption's width for its wrapping (export/animation.py, _length): the sum of its characters' advances, Pillow's
-    getlength of the whole line for every pair of printable characters and random lines; other text is Pillow's."""
+    getlength of the whole line for every pair of its characters (printable ASCII, "°", "…") and random lines; other
+    text is Pillow's."""
     import random
 
     from propulsor.export import animation as A

@@ -246,9 +246,10 @@ def _font():
     return font
 
 
-#: the characters :func:`_put_text` sets from their own bitmaps: printable ASCII (in the frames' font each has a whole
-#: pixel advance, and no pair of them is kerned: ``tests/test_animation.py`` holds both)
-_GLYPH_CHARS = frozenset(chr(c) for c in range(32, 127))
+#: the characters :func:`_put_text` sets from their own bitmaps: printable ASCII and the two others the captions use,
+#: the degree sign and the ellipsis (in the frames' font each has a whole pixel advance, and no pair of them is kerned:
+#: ``tests/test_animation.py`` holds both)
+_GLYPH_CHARS = frozenset([chr(c) for c in range(32, 127)] + ["°", "…"])
 
 
 @functools.lru_cache(maxsize=None)
@@ -305,15 +306,16 @@ def _put_text(im, d, xy, text: str, colour: int, font) -> None:
 
 @functools.lru_cache(maxsize=None)
 def _advances() -> dict:
-    """char -> its advance in pixels in the frames' font (``getlength``, Pillow's default mode), the printable ASCII
-    characters (whole pixels, no pair kerned: ``tests/test_animation.py``)."""
+    """char -> its advance in pixels in the frames' font (``getlength``, Pillow's default mode), the characters of
+    :data:`_GLYPH_CHARS` (whole pixels, no pair kerned: ``tests/test_animation.py``)."""
     font = _font()
     return {c: font.getlength(c) for c in _GLYPH_CHARS}
 
 
 def _length(text: str, font) -> float:
-    """``font.getlength(text)`` in the frames' font: the sum of the characters' advances where every one is printable
-    ASCII (the same number; Pillow lays the whole line out again, 0.3 ms for a caption line), else Pillow's."""
+    """``font.getlength(text)`` in the frames' font: the sum of the characters' advances where every one is of
+    :data:`_GLYPH_CHARS` (the same number; Pillow lays the whole line out again, 0.3 ms for a caption line), else
+    Pillow's."""
     adv = _advances()
     try:
         return float(sum(adv[c] for c in text))
