@@ -144,3 +144,46 @@ def test_a_cam_paths_state_is_its_integrations_dense_output():
         else:
             y = path._neg.sol(phi[neg])
             assert _same(H[neg], y[0]) and _same(g[neg], y[1])
+
+
+def _crosses_numpy(P) -> bool:
+    """The shoe's self-crossing test as all-pairs arrays (``shoe._segments_intersect`` before it was compiled)."""
+    a, b = P[:-1], P[1:]
+    n = len(a)
+    if n < 3:
+        return False
+    d = b - a
+
+    def cross(u, v):
+        return u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]
+
+    ai, di = a[:, None, :], d[:, None, :]
+    aj, dj = a[None, :, :], d[None, :, :]
+    den = cross(di, dj)
+    w = aj - ai
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = cross(w, dj) / den
+        u = cross(w, di) / den
+    i, j = np.indices((n, n))
+    return bool(np.any((j > i + 1) & (den != 0.0) & (t >= 0) & (t < 1) & (u >= 0) & (u < 1)))
+
+
+def test_the_shoes_self_crossing_test_is_the_all_pairs_one():
+    from propulsor.laws.shoe import _segments_intersect
+
+    rng = np.random.default_rng(11)
+    found = {True: 0, False: 0}
+    for _ in range(400):
+        n = int(rng.integers(1, 40))
+        kind = rng.integers(0, 3)
+        if kind == 0:  # random walks on a coarse grid: vertices on other segments, collinear and parallel pieces
+            P = np.cumsum(rng.integers(-2, 3, (n, 2)), axis=0).astype(float)
+        elif kind == 1:  # spirals that may or may not close a loop
+            t = np.linspace(0.0, rng.uniform(1.0, 9.0), n)
+            P = np.column_stack([(1 + 0.05 * t) * np.cos(t), (1 + 0.05 * t) * np.sin(t) + rng.uniform(0, 0.6) * t])
+        else:
+            P = rng.normal(size=(n, 2))
+        want = _crosses_numpy(P)
+        assert _segments_intersect(P) is want, P
+        found[want] += 1
+    assert min(found.values()) > 50  # both answers among the cases

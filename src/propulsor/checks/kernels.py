@@ -64,14 +64,14 @@ def warm() -> None:
     """Call every cached kernel once on small inputs, so that each is compiled (or loaded) now, in this process:
     the mesh checks' triangle tests, the motion proof's distance, crossing and rotation searches, and the as-built
     contact search (its first hit and all of a window's) on a pair of toothed rings; the GLB's shading normals; the
-    spline fit's foot-point distances; the Fourier law's one-point inversion; the cam's dense output and return
-    quintics; the pictures' rasteriser."""
+    spline fit's foot-point distances; the Fourier law's one-point inversion; the cam's dense output, return
+    quintics and shoe self-crossing test; the pictures' rasteriser."""
     from scipy.integrate import solve_ivp
 
     from ..export.normals import smooth_normals
     from ..export.render import _paint
     from ..geometry.spline_foot import foot_distances
-    from ..laws.cam_kernels import DenseSolution, quintic_derivs
+    from ..laws.cam_kernels import DenseSolution, polyline_crosses_itself, quintic_derivs
     from ..laws.ratio_laws import FourierLaw
     from .mesh import self_intersections
     from .motion import Outline
@@ -104,10 +104,12 @@ def warm() -> None:
                    np.array([[1.5, 1.0]]), np.array([0.5]), 0.0, 1.0)
     # the Fourier law's one-point inversion and slopes (laws/fourier_kernels.py)
     FourierLaw(1, (), (0.05,)).U_derivs1(0.3)
-    # the cam's dense output and return quintics (laws/cam_kernels.py): a short DOP853 integration, two quintics
+    # the cam's dense output, return quintics and shoe test (laws/cam_kernels.py): a short DOP853 integration, two
+    # quintics, a polyline folded back over itself
     sol = solve_ivp(lambda t, y: [y[1], -y[0]], (0.0, 1.0), [1.0, 0.0], method="DOP853", dense_output=True).sol
     DenseSolution(sol)(np.array([0.25, 0.5]))
     quintic_derivs(np.ones((2, 6)), np.array([0, 1]), np.ones((6, 2)), np.ones((2, 6)), np.ones(2))
+    polyline_crosses_itself(np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, -1.0]]))
     # the pictures' rasteriser (export/render.py): one triangle into a 4 x 4 picture
     _paint(np.array([[0.5, 3.5, 0.5]]), np.array([[0.5, 0.5, 3.5]]), np.zeros((1, 3)), np.zeros((1, 3), np.uint8),
            4, 4, np.full(16, -np.inf, np.float32), np.empty((16, 3), np.uint8))

@@ -12,6 +12,9 @@ towards negative angles), then ``Dop853DenseOutput._call_impl``'s Horner scheme 
 :func:`quintic_derivs`: ``ReturnCurve.derivs``'s sums ``coef[piece, k] * fk * t ** (k - m)`` element by element, the
 powers and factors computed by the caller in numpy and Python as before.
 
+:func:`polyline_crosses_itself`: the shoe profile's self-crossing test (laws/shoe.py), every pair of segments' line
+parameters as the all-pairs arrays computed them, stopping at the first crossing.
+
 Each operation is a single IEEE addition, multiplication or division per element, in numpy as here (no expression
 regrouped, no fused multiply-add): scipy's and numpy's values to the last bit (tests compare them).
 """
@@ -23,7 +26,7 @@ from numba import njit
 
 from ..nbcache import bind
 
-__all__ = ["DenseSolution", "quintic_derivs"]
+__all__ = ["DenseSolution", "quintic_derivs", "polyline_crosses_itself"]
 
 
 @njit(cache=True)
@@ -98,6 +101,32 @@ def quintic_derivs(coef, piece, powers, fks, Lm):
                 val = val + coef[p, k] * fks[m, k] * powers[k - m, j]
             out[m, j] = val / Lm[m]
     return out
+
+
+
+@njit(cache=True)
+def polyline_crosses_itself(P) -> bool:
+    """Whether two non-adjacent segments of the open polyline ``P`` (n, 2) cross, each segment half-open [start, end)
+    (``shoe._segments_intersect``): for segments i < j - 1, with d = end - start, den = d_i x d_j, w = a_j - a_i,
+    t = (w x d_j) / den and u = (w x d_i) / den (u x v = u0 v1 - u1 v0), a crossing where den != 0 and both lie in
+    [0, 1)."""
+    n = P.shape[0] - 1
+    if n < 3:
+        return False
+    for i in range(n):
+        ax, ay = P[i, 0], P[i, 1]
+        dix, diy = P[i + 1, 0] - ax, P[i + 1, 1] - ay
+        for j in range(i + 2, n):
+            djx, djy = P[j + 1, 0] - P[j, 0], P[j + 1, 1] - P[j, 1]
+            den = dix * djy - diy * djx
+            if den == 0.0:
+                continue
+            wx, wy = P[j, 0] - ax, P[j, 1] - ay
+            t = (wx * djy - wy * djx) / den
+            u = (wx * diy - wy * dix) / den
+            if t >= 0 and t < 1 and u >= 0 and u < 1:
+                return True
+    return False
 
 
 # the disk cache of these kernels keyed on every kernel source (one may be compiled into another's code)

@@ -94,26 +94,11 @@ def _segments_intersect(P: np.ndarray) -> bool:
     Each segment is half-open, [start, end): a crossing exactly at a vertex is counted once, by the segment
     that starts there (closed intervals would count it twice, open ones not at all).  The polyline's last
     point touching an earlier segment is not a crossing; an exact fold-back along the previous segment is a
-    cusp (σ changes sign), found by :func:`shoe_loop_check`'s radius test."""
-    a, b = P[:-1], P[1:]
-    n = len(a)
-    if n < 3:
-        return False
-    d = b - a
+    cusp (σ changes sign), found by :func:`shoe_loop_check`'s radius test.  Compiled
+    (:func:`.cam_kernels.polyline_crosses_itself`: each pair's line parameters as the all-pairs arrays gave them)."""
+    from .cam_kernels import polyline_crosses_itself
 
-    def cross(u, v):
-        return u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]
-
-    ai, di = a[:, None, :], d[:, None, :]
-    aj, dj = a[None, :, :], d[None, :, :]
-    den = cross(di, dj)
-    w = aj - ai
-    with np.errstate(divide="ignore", invalid="ignore"):
-        t = cross(w, dj) / den
-        u = cross(w, di) / den
-    i, j = np.indices((n, n))
-    ok = (j > i + 1) & (den != 0.0) & (t >= 0) & (t < 1) & (u >= 0) & (u < 1)
-    return bool(np.any(ok))
+    return bool(polyline_crosses_itself(np.ascontiguousarray(P, np.float64)))
 
 
 @dataclass(frozen=True)
