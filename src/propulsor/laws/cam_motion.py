@@ -420,12 +420,9 @@ class ReturnCurve:
         add them."""
         from .cam_kernels import quintic_derivs
 
-        fks = np.zeros((order + 1, 6))
-        for m in range(order + 1):
-            for k in range(m, 6):
-                fks[m, k] = math.factorial(k) / math.factorial(k - m)
         Lm = np.array([self.L ** m for m in range(order + 1)])
-        rows = quintic_derivs(np.ascontiguousarray(self.coef, np.float64), basis.piece, basis.powers, fks, Lm)
+        rows = quintic_derivs(np.ascontiguousarray(self.coef, np.float64), basis.piece, basis.powers,
+                              _derivative_factors(order), Lm)
         return [r.reshape(basis.shape) for r in rows]
 
 
@@ -440,6 +437,17 @@ class _ReturnBasis:
         self.piece = np.clip(np.floor(u), 0, 1).astype(np.int64)
         t = u - self.piece
         self.powers = np.ascontiguousarray(np.stack([t ** e for e in range(6)]))  # t ** (k - m), 0 <= k - m <= 5
+
+
+@lru_cache(maxsize=None)
+def _derivative_factors(order: int) -> np.ndarray:
+    """fks[m, k] = k! / (k - m)!, the factor of t ** (k - m) in the m-th derivative of t ** k (m <= order, k <= 5).
+    Shared: not to be written (left writable, as the compiled kernel it goes to was compiled for)."""
+    fks = np.zeros((order + 1, 6))
+    for m in range(order + 1):
+        for k in range(m, 6):
+            fks[m, k] = math.factorial(k) / math.factorial(k - m)
+    return fks
 
 
 @lru_cache(maxsize=2)
