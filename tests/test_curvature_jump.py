@@ -113,3 +113,30 @@ def test_circular_pair_involute_start_has_the_involutes_radius():
     rho = np.array([1.0 / tlm.curvature_at(o, int(i), fit) for i in band])
     want = np.sqrt(r[band] ** 2 - rb ** 2)
     assert np.max(np.abs(rho / want - 1.0)) < 0.03
+
+
+def test_curvatures_fitted_together_are_those_fitted_one_at_a_time():
+    """curvatures_at (the load per tooth's curvatures solved in stacks, gears/tooth_load.py) keeps for each vertex the
+    value _curvature_at gives alone, to the last bit: smooth pieces, a jump without a corner, corners (a toothed
+    outline's tip edges), windows cut short below five vertices, several half lengths and vertices asked twice."""
+    rng = np.random.default_rng(5)
+    pts, *_ = _lens(5.0, 1.5, 2.0)
+    t = np.linspace(0.0, 2.0 * math.pi, 2400, endpoint=False)
+    rr = 20.0 + 1.2 * np.sign(np.cos(12 * t)) * np.abs(np.cos(12 * t)) ** 0.3  # flat tips and roots with corners
+    toothed = np.column_stack([rr * np.cos(t), rr * np.sin(t)])
+    seen = {}
+    for P in (pts, toothed, _stadium(1.5)):
+        for half in (FIT, 0.05, 0.012):
+            o = DenseOutline(P)
+            idx = rng.integers(0, len(o), 300)
+            tlm.curvatures_at(o, np.concatenate([idx, idx[:20]]), half)
+            alone = DenseOutline(P)
+            got = np.array([o._curvatures[(int(i), half)] for i in idx])
+            want = np.array([tlm._curvature_at(alone, int(i), half) for i in idx])
+            assert np.array_equal(got.view(np.int64), want.view(np.int64))
+            assert np.any(o.corner) == (P is toothed)
+            seen.setdefault(half, []).append(np.isnan(want))
+            again = np.array([tlm.curvature_at(o, int(i), half) for i in idx[:20]])  # kept: the same values
+            assert np.array_equal(again.view(np.int64), got[:20].view(np.int64))
+    nan = {h: np.concatenate(v) for h, v in seen.items()}
+    assert np.any(nan[0.012]) and all(np.mean(v) < 0.5 for v in nan.values())  # short windows (nan) among them

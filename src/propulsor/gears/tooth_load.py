@@ -54,8 +54,8 @@ from ..errors import InputError
 from ..policy import (CURVATURE_JUMP_ABS_PER_MM, CURVATURE_JUMP_REL, CURVATURE_JUMP_RMS_MM,
                       CURVATURE_JUMP_RMS_RATIO)
 
-__all__ = ["G", "torques", "c_prime", "share_load", "hertz", "curvature_at", "RootSection", "root_section",
-           "root_stress", "y_s", "DenseOutline"]
+__all__ = ["G", "torques", "c_prime", "share_load", "hertz", "curvature_at", "curvatures_at", "RootSection",
+           "root_section", "root_stress", "y_s", "DenseOutline"]
 
 #: standard gravity, m/s² (the vehicle load)
 G = 9.80665
@@ -174,22 +174,36 @@ class DenseOutline:
         return self.tree.query(np.atleast_2d(q))[1]
 
 
-def _fit(o: DenseOutline, i: int, idx, t) -> float:
-    return _fit_rms(o, i, idx, t)[0]
+def _problem(o: DenseOutline, i: int, idx, t):
+    """The least-squares problem (A, y) of the cubic y(x) through the vertices ``idx`` in the frame of the unit tangent
+    t at vertex i; None below 5 vertices."""
+    idx = np.asarray(idx)
+    if len(idx) < 5:
+        return None
+    nrm = np.array([-t[1], t[0]])
+    q = o.points[idx] - o.points[i]
+    x, y = q @ t, q @ nrm
+    return np.column_stack([np.ones_like(x), x, x * x, x ** 3]), y
+
+
+def _fitted(problem, c) -> tuple[float, float]:
+    """The cubic's curvature at the vertex (its coefficients c) and the RMS of its residuals (mm); nan, nan without a
+    problem."""
+    if problem is None:
+        return math.nan, math.nan
+    A, y = problem
+    rms = float(np.sqrt(np.mean((A @ c - y) ** 2)))
+    return float(2.0 * c[2] / (1.0 + c[1] ** 2) ** 1.5), rms
 
 
 def _fit_rms(o: DenseOutline, i: int, idx, t) -> tuple[float, float]:
     """The cubic fit's curvature at vertex i and the RMS of its residuals (mm); nan, nan below 5 vertices."""
-    idx = np.asarray(idx)
-    if len(idx) < 5:
-        return math.nan, math.nan
-    nrm = np.array([-t[1], t[0]])
-    q = o.points[idx] - o.points[i]
-    x, y = q @ t, q @ nrm
-    A = np.column_stack([np.ones_like(x), x, x * x, x ** 3])
-    c = np.linalg.lstsq(A, y, rcond=None)[0]
-    rms = float(np.sqrt(np.mean((A @ c - y) ** 2)))
-    return float(2.0 * c[2] / (1.0 + c[1] ** 2) ** 1.5), rms
+    pr = _problem(o, i, idx, t)
+    return _fitted(pr, None if pr is None else np.linalg.lstsq(pr[0], pr[1], rcond=None)[0])
+
+
+def _fit(o: DenseOutline, i: int, idx, t) -> float:
+    return _fit_rms(o, i, idx, t)[0]
 
 
 #: a jump inside the window (policy): the one-sided curvatures differ by more than JUMP_REL of the larger (and
@@ -209,6 +223,38 @@ def curvature_at(o: DenseOutline, i: int, half_len: float) -> float:
     return k
 
 
+def _lstsq_failed(err, flag):
+    raise np.linalg.LinAlgError("SVD did not converge in Linear Least Squares")  # as np.linalg.lstsq says it
+
+
+def curvatures_at(o: DenseOutline, indices, half_len: float) -> None:
+    """:func:`curvature_at` of each vertex of ``indices`` not yet kept, made together: every vertex's cubic fits set up
+    (:func:`_problems`), their least-squares problems solved in stacks of one shape (numpy's own LAPACK driver,
+    called once per problem as for one alone: the same coefficients to the last bit, a fifth of the time), then each
+    vertex's curvature from its own fits (:func:`_curvature_of`) as one at a time."""
+    from numpy.linalg import _umath_linalg
+
+    memo = o.__dict__.setdefault("_curvatures", {})
+    h = float(half_len)
+    todo = sorted({int(i) for i in indices} - {k[0] for k in memo if k[1] == h})
+    planned = [_problems(o, i, h) for i in todo]
+    by_shape: dict = {}
+    for v, (_, probs) in enumerate(planned):
+        for f, pr in enumerate(probs):
+            if pr is not None:
+                by_shape.setdefault(pr[0].shape, []).append((v, f))
+    coef: dict = {}
+    for (m, n), keys in by_shape.items():
+        A = np.stack([planned[v][1][f][0] for v, f in keys])
+        y = np.stack([planned[v][1][f][1] for v, f in keys])[..., None]
+        with np.errstate(call=_lstsq_failed, invalid="call", over="ignore", divide="ignore", under="ignore"):
+            x = _umath_linalg.lstsq(A, y, np.finfo(np.float64).eps * max(n, m), signature="ddd->ddid")[0]
+        for key, c in zip(keys, x[..., 0]):
+            coef[key] = c.copy()
+    for v, (i, (corner, probs)) in enumerate(zip(todo, planned)):
+        memo[(i, h)] = _curvature_of(corner, [_fitted(pr, coef.get((v, f))) for f, pr in enumerate(probs)])
+
+
 def _curvature_at(o: DenseOutline, i: int, half_len: float) -> float:
     """Signed curvature (1/mm, convex > 0) of the outline at vertex i: a cubic y(x) least-squares fitted to the
     vertices within ``half_len`` of arc length on either side, in the frame of the tangent at i, stopping at a corner;
@@ -226,6 +272,15 @@ def _curvature_at(o: DenseOutline, i: int, half_len: float) -> float:
     other: on the circular pair the straddling side's curvature sweeps through every value and can agree with the
     other side by chance, its residual does not); the side whose cubic fits its own points best (least RMS residual)
     lies on the smooth piece vertex i belongs to, and its curvature is taken."""
+    corner, probs = _problems(o, i, half_len)
+    return _curvature_of(corner, [_fitted(pr, None if pr is None else np.linalg.lstsq(pr[0], pr[1], rcond=None)[0])
+                                  for pr in probs])
+
+
+def _problems(o: DenseOutline, i: int, half_len: float) -> tuple[bool, list]:
+    """(whether vertex i is a corner, the least-squares problems of its fits, :func:`_problem`): at a corner the side
+    ahead and the side behind, each in the frame of its own edge; elsewhere the centred window, then the side ahead and
+    the side behind, in the frame of the tangent at i (:func:`_curvature_at`)."""
     n = len(o)
     K = int(min(n // 2 - 1, math.ceil(2.0 * half_len / max(float(o.seg_len[i]), 1e-9)) + 2))
     off = np.arange(-K, K + 1)
@@ -241,10 +296,21 @@ def _curvature_at(o: DenseOutline, i: int, half_len: float) -> float:
     j = np.arange(2 * K + 1)
     if not o.corner[i]:
         sel = keep & (j >= lo) & (j <= hi)
-        k_c = _fit(o, i, idx[sel], o.tangent[i])
-        sides = [_fit_rms(o, i, idx[keep & (j >= K) & (j <= hi)], o.tangent[i]),
-                 _fit_rms(o, i, idx[keep & (j <= K) & (j >= lo)], o.tangent[i])]
-        (k_a, r_a), (k_b, r_b) = sides
+        t = o.tangent[i]
+        return False, [_problem(o, i, idx[sel], t), _problem(o, i, idx[keep & (j >= K) & (j <= hi)], t),
+                       _problem(o, i, idx[keep & (j <= K) & (j >= lo)], t)]
+    d_ahead = o.points[(i + 1) % n] - o.points[i]
+    d_back = o.points[i] - o.points[(i - 1) % n]
+    return True, [_problem(o, i, idx[keep & (j >= K) & (j <= hi)], d_ahead / np.linalg.norm(d_ahead)),
+                  _problem(o, i, idx[keep & (j <= K) & (j >= lo)], d_back / np.linalg.norm(d_back))]
+
+
+def _curvature_of(corner: bool, fits: list) -> float:
+    """The curvature of a vertex from its fits' (curvature, RMS) in :func:`_problems`' order (:func:`_curvature_at`):
+    elsewhere than a corner the centred fit's, unless the sides disagree (a jump inside the window), then the side
+    that fits its points best; at a corner the more curved side's."""
+    if not corner:
+        (k_c, _), (k_a, r_a), (k_b, r_b) = fits
         if not (math.isfinite(k_a) and math.isfinite(k_b)):
             return k_c
         apart = abs(k_a - k_b) > max(JUMP_REL * max(abs(k_a), abs(k_b)), JUMP_ABS)
@@ -252,11 +318,7 @@ def _curvature_at(o: DenseOutline, i: int, half_len: float) -> float:
         if not (apart or worse):
             return k_c
         return k_a if r_a <= r_b else k_b
-    d_ahead = o.points[(i + 1) % n] - o.points[i]
-    d_back = o.points[i] - o.points[(i - 1) % n]
-    ks = [_fit(o, i, idx[keep & (j >= K) & (j <= hi)], d_ahead / np.linalg.norm(d_ahead)),
-          _fit(o, i, idx[keep & (j <= K) & (j >= lo)], d_back / np.linalg.norm(d_back))]
-    ks = [k for k in ks if math.isfinite(k)]
+    ks = [k for k, _ in fits if math.isfinite(k)]
     return max(ks, key=abs) if ks else math.nan
 
 

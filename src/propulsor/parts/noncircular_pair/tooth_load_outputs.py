@@ -156,7 +156,8 @@ def analyse(d, mount: float, p, c_phi, c_te, phi0: float, span: float, step_deg:
     from ...gears.gear_materials import material
     from ...gears.iso6336 import z_e
     from ...gears.pitch_frame import BodyPitchCurve
-    from ...gears.tooth_load import DenseOutline, c_prime, curvature_at, hertz, root_section, root_stress, share_load
+    from ...gears.tooth_load import (DenseOutline, c_prime, curvature_at, curvatures_at, hertz, root_section,
+                                     root_stress, share_load)
     from .as_built import pair_outlines
     from .design import _rack
 
@@ -243,6 +244,12 @@ def analyse(d, mount: float, p, c_phi, c_te, phi0: float, span: float, step_deg:
         return sections[g][j]
 
     fit = policy.TOOTH_LOAD_FLANK_FIT_MODULE * m
+    # the vertex of each loaded contact on either flank, and their curvatures fitted together (curvatures_at: the
+    # values of one at a time)
+    at = {id(c): (int(dense["driver"].nearest(c.p_driver)[0]), int(dense["driven"].nearest(c.p_driven)[0]))
+          for r in recs for c, F in zip(r["cs"], r["F"]) if F > 0}
+    curvatures_at(dense["driver"], [v[0] for v in at.values()], fit)
+    curvatures_at(dense["driven"], [v[1] for v in at.values()], fit)
     peaks = {"driver": {}, "driven": {}}
     rows = []
     imbalance, lost = 0.0, 0
@@ -260,8 +267,7 @@ def analyse(d, mount: float, p, c_phi, c_te, phi0: float, span: float, step_deg:
         for c, F in zip(r["cs"], r["F"]):
             if not F > 0:
                 continue
-            i1 = int(dense["driver"].nearest(c.p_driver)[0])
-            i2 = int(dense["driven"].nearest(c.p_driven)[0])
+            i1, i2 = at[id(c)]
             rho1 = 1.0 / curvature_at(dense["driver"], i1, fit)
             rho2 = 1.0 / curvature_at(dense["driven"], i2, fit)
             sH = float(hertz(F, b, rho1, rho2, Z_E, K_H))
