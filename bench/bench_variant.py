@@ -153,6 +153,20 @@ a variant, 63 and 16 windows in turn in one process, four rounds: seed 002 1.09-
 Fourier form 1.06-1.35 -> 0.74-0.77.  A coarse crop held for the next windows
 (each window's crop cut from it) gave the same loops vertex for vertex and 28-45 % less crop time at 63 windows,
 nothing at 16: reverted.
+
+2026-12-01, a tenth session (2 cores, the machine's speed swinging by up to 70 % between minutes): a variant's steps
+timed in one process (``generate_pair``, ``prove_pair``, ``resolve_contact`` both ways, the per-tooth load's
+``analyse``; least of two, the machine quiet): the seed-002 pair 3.17 CPU s (the design 1.33, of it the teeth 0.82 and
+the fits 0.45; the whole-cycle proof 0.64; the as-built contact 1.05-1.10; no load case in its part file), its Fourier
+form 5.54 (the design 1.99, the proof 0.66, the contact 1.20, the per-tooth load 1.54, of it 2 507 flank curvatures
+fitted 7 481 + 2 547 times by least squares).  Those curvatures are now fitted together (``tooth_load.curvatures_at``:
+the problems solved in stacks of one shape by numpy's own LAPACK driver, each the one-at-a-time value to the last
+bit): 2 500 vertices of a toothed outline 0.66 -> 0.53 CPU s, three rounds; numpy's ``lstsq`` on one cubic 25 us, in a
+stack 5.4 us; the rest is the windows' and the problems' setting up.  The contact search's reuse and pruning
+parameters swept (slack 0.05-0.2 mm, widening 0.01-0.04 rad, turn factor 1.25-2, first window 0.8-1.5 margins, runs
+of 16-64 vertices; each the same contact law to the bit): none faster beyond the machine's swings, the first window
+of 0.8 margins twice as slow.  ``bench_variant.py`` at the end: the seed-002 pair 3.95 / 3.92, its Fourier form
+7.90 / 7.51 CPU s (the machine slow: ncgears' generation 65.5 s against 59.8 s last session).
 """
 
 from __future__ import annotations
