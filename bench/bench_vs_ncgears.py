@@ -91,6 +91,15 @@ ratio 0.267, CPU ratio 0.375.  The peak, measured again for 7dc0106 and the new 
 not the code).  ``python -m propulsor.cli build`` of every part file, 7dc0106 in a worktree and the new tree in
 turn, two rounds: 153.85 / 138.11 -> 160.41 / 152.24 s wall, 290.99 / 264.15 -> 305.64 / 289.76 user s: the
 machine's drift (the same code gave 264-306 s) hides the ~10 CPU s measured piece by piece; the 636 files identical.
+2026-12-01, a tenth session (2 cores, the machine's speed swinging by up to 70 % between minutes): the cam's motion
+read in compiled loops (the support phase's dense output, the return quintics, the shoe's self-crossing test; the cam
+design search 5.1-5.4 -> 2.0 CPU s), the captions' degree sign and ellipsis set from their own bitmaps (1.0-1.2 ->
+0.1 ms a caption line), the per-tooth load's curvatures fitted together: every output identical.  This benchmark at
+the end: ncgears 65.51 s wall (68.88 CPU s), peak 289 MiB; ours 16.13 s wall (24.50 CPU s), peak 773 MiB: wall
+ratio 0.246, CPU ratio 0.356.  ``make`` from clean: 159.5 s wall (288.9 user s) at the session's start, 139.8
+(264.6) after the cam kernels, 196.1 (360.9) at the end with the machine slow; paired (546969d in a worktree and the
+new tree in turn, one round) 162.27 -> 158.90 s wall, 310.30 -> 300.41 user s; the four cam part files alone, two
+rounds: 57.64 / 63.31 -> 54.65 / 55.08 user s.
 """
 
 from __future__ import annotations
