@@ -244,12 +244,14 @@ def analyse(d, mount: float, p, c_phi, c_te, phi0: float, span: float, step_deg:
         return sections[g][j]
 
     fit = policy.TOOTH_LOAD_FLANK_FIT_MODULE * m
-    # the vertex of each loaded contact on either flank, and their curvatures fitted together (curvatures_at: the
-    # values of one at a time)
-    at = {id(c): (int(dense["driver"].nearest(c.p_driver)[0]), int(dense["driven"].nearest(c.p_driven)[0]))
-          for r in recs for c, F in zip(r["cs"], r["F"]) if F > 0}
-    curvatures_at(dense["driver"], [v[0] for v in at.values()], fit)
-    curvatures_at(dense["driven"], [v[1] for v in at.values()], fit)
+    # the vertex of each loaded contact on either flank (the k-d trees asked for all of them at once: each point's
+    # answer is its own query's), and their curvatures fitted together (curvatures_at: the values of one at a time)
+    loaded = [c for r in recs for c, F in zip(r["cs"], r["F"]) if F > 0]
+    near = {g: (dense[g].nearest(np.array([c.p_driver if g == "driver" else c.p_driven for c in loaded]))
+                if loaded else np.zeros(0, np.int64)) for g in dense}
+    at = {id(c): (int(near["driver"][k]), int(near["driven"][k])) for k, c in enumerate(loaded)}
+    curvatures_at(dense["driver"], near["driver"], fit)
+    curvatures_at(dense["driven"], near["driven"], fit)
     peaks = {"driver": {}, "driven": {}}
     rows = []
     imbalance, lost = 0.0, 0
