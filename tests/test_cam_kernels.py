@@ -13,7 +13,7 @@ import pytest
 from scipy.integrate import solve_ivp
 
 from propulsor.laws.cam_kernels import DenseSolution
-from propulsor.laws.cam_motion import ReturnCurve, _mono_row, _quintic_gram
+from propulsor.laws.cam_return import ReturnCurve, _mono_row, _quintic_gram
 
 
 def _same(a, b) -> bool:

@@ -1875,7 +1875,7 @@ def test_cam_straight_path_closed_form_and_blow_up_message():
 
 
 def test_cam_quintic_pieces_exact():
-    from propulsor.laws.cam_motion import ReturnCurve, _mono_row, _quintic_gram
+    from propulsor.laws.cam_return import ReturnCurve, _mono_row, _quintic_gram
 
     G = _quintic_gram()
     # int_0^1 (t^k)''' (t^m)''' dt = k(k-1)(k-2) m(m-1)(m-2) / (k + m - 5)

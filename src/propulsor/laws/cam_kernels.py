@@ -1,6 +1,6 @@
-"""The cam's motion (laws/cam_motion.py) read in compiled loops: the dense output of its DOP853 integration and the
-return phase's quintics, at hundreds of thousands of angles a design search (each candidate's pressure angle, shoe
-table and hub speed, and the return's least-pressure-angle search).
+"""The cam's motion (laws/cam_motion.py, laws/cam_return.py) read in compiled loops: the dense output of its DOP853
+integration and the return phase's quintics, at hundreds of thousands of angles a design search (each candidate's
+pressure angle, shoe table and hub speed, and the return's least-pressure-angle search).
 
 :class:`DenseSolution`: scipy's ``OdeSolution`` of ``solve_ivp(..., method="DOP853", dense_output=True)`` sorts the
 angles, splits them by step and calls each step's interpolant in Python (about 90 % of its time on 721 angles).  Here
