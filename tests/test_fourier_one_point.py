@@ -1,6 +1,7 @@
 """The Fourier law's one-point inversion compiled (laws/fourier_kernels.py): ``theta1`` and ``U_derivs1`` are their
 Python paths' (``_theta1_py``, ``_U_derivs1_py``) to the last bit, on random laws (1 to 6 terms, cos and sin, 1 to 4
-lobes) and angles over several periods either way; a phi not finite still takes the Python path (its error)."""
+lobes) and angles over several periods either way; a phi not finite still takes the Python path (its error).  The
+law's array functions are the one-point path at each angle, bit for bit (the law is ``elementwise``)."""
 
 from __future__ import annotations
 
@@ -40,12 +41,27 @@ def test_the_compiled_one_point_path_is_the_python_one_bit_for_bit(seed):
             assert law.U_derivs1(phi) == ref_u
 
 
-def test_the_one_point_path_is_the_array_path():
-    """Arrays of a few points take the one-point path (``laws.law.one_point_values``), larger ones numpy's: both agree to rounding."""
-    (law,), rng = _laws(7, 1)
-    phi = rng.uniform(-law.period, 2 * law.period, 64)
-    assert np.allclose(law.theta(phi), [law.theta1(p) for p in phi.tolist()], rtol=0, atol=1e-13)
-    assert np.allclose(law.U(phi), [law.U_derivs1(p)[0] for p in phi.tolist()], rtol=1e-13)
+@pytest.mark.parametrize("seed", [7, 8])
+def test_the_array_path_is_the_one_point_path_bit_for_bit(seed):
+    """Arrays of a few points take the one-point path (``laws.law.one_point_values``), larger ones the compiled loop
+    over it (``fourier_kernels.values_many``): each angle's theta, U, dU/dphi and d2U/dphi2 are its one-point values
+    to the last bit (the powers of the derivatives by C ``pow`` as Python's ``**``), in an array of any shape; phi of
+    theta is ``_g01``'s sum; an angle not finite gives nan."""
+    laws, rng = _laws(seed, 4)
+    for law in laws:
+        phi = rng.uniform(-3 * law.period, 3 * law.period, 3000)
+        ref = np.array([[law.theta1(p), *law.U_derivs1(p)] for p in phi.tolist()])
+        for col, f in enumerate((law.theta, law.U, law.dU_dphi, law.d2U_dphi2)):
+            assert f(phi).tobytes() == ref[:, col].tobytes()
+            assert f(phi.reshape(50, 60)).tobytes() == ref[:, col].tobytes()
+            assert f(phi[::-3]).tobytes() == ref[::-3, col].tobytes()
+        th = ref[:, 0]
+        assert law.phi_of_theta(th).tobytes() == np.array([law._g01(t)[0] for t in th.tolist()]).tobytes()
+        assert np.max(np.abs(law.phi_of_theta(th) - phi)) < 1e-12
+        bad = np.array([0.1, math.nan, math.inf, -math.inf, 0.2] * 3)
+        got = law.theta(bad)
+        assert np.isnan(got[1::5]).all() and np.isnan(got[2::5]).all() and np.isnan(got[3::5]).all()
+        assert got[0] == law.theta1(0.1) and got[4] == law.theta1(0.2)
 
 
 def test_a_phi_not_finite_raises_as_before():

@@ -102,8 +102,11 @@ def warm() -> None:
     # the spline fit's foot-point distances (geometry/spline_foot.py): a cubic through four points
     foot_distances(np.array([0.0, 0, 0, 0, 1, 1, 1, 1]), np.array([[0.0, 0], [1, 1], [2, 1], [3, 0]]), 3,
                    np.array([[1.5, 1.0]]), np.array([0.5]), 0.0, 1.0)
-    # the Fourier law's one-point inversion and slopes (laws/fourier_kernels.py)
-    FourierLaw(1, (), (0.05,)).U_derivs1(0.3)
+    # the Fourier law's one-point inversion and slopes, and its array functions (laws/fourier_kernels.py)
+    law = FourierLaw(1, (), (0.05,))
+    law.U_derivs1(0.3)
+    law.U(np.linspace(0.0, 1.0, 9))
+    law.phi_of_theta(np.linspace(0.0, 1.0, 9))
     # the cam's dense output, return quintics and shoe test (laws/cam_kernels.py): a short DOP853 integration, two
     # quintics, a polyline folded back over itself
     sol = solve_ivp(lambda t, y: [y[1], -y[0]], (0.0, 1.0), [1.0, 0.0], method="DOP853", dense_output=True).sol

@@ -5,8 +5,8 @@ a wheel together, where each tooth differs only by its tooth centre on the pitch
 
 Every point is the one its own curve gives, bit for bit: the cutter's pieces, its closed-form contact, the arc-length
 frame and the pitch curve compute each point from its own parameter and tooth alone, and so does a law that says it is
-``elementwise`` (laws/law.py; the Fourier law's theta iterates until the whole array has converged: its curves are
-evaluated one by one).  A request of one parameter is left to its curve: its one-point path (``envelope_point1``,
+``elementwise`` (laws/law.py: every law of the package does; a law that does not say so has its curves evaluated
+one by one).  A request of one parameter is left to its curve: its one-point path (``envelope_point1``,
 ``BodyPitchCurve._at1``) takes other operations than the arrays'.
 """
 

@@ -1,5 +1,7 @@
 """The Fourier law's one-point inversion, compiled (numba): ``FourierLaw.theta1`` and the series sums of
-``FourierLaw.U_derivs1`` (laws/ratio_laws.py).
+``FourierLaw.U_derivs1`` (laws/ratio_laws.py); and the law's array functions as that one-point path at each angle
+(``values_many``, ``phi_many``), so that an angle gets the same value in any array (the law is ``elementwise``,
+laws/law.py).
 
 The tooth generator and the contact search ask the law for theta(phi) one float at a time, tens of thousands of
 times a design; in Python each call runs the Hermite start and two or three Newton steps over the series' terms.
@@ -7,7 +9,8 @@ Here the same operations, in the same order, on the same floats: ``math.cos`` / 
 as in Python, no expression is regrouped, and Python's ``min`` / ``max`` of the step clamp are written out as Python
 evaluates them, so the result is the Python path's to the last bit (a test compares them on random laws and
 angles).  The powers of ``U_derivs1``'s return (``g1 ** 3``, ``g1 ** 5``: C ``pow`` in Python, a chain of products
-in a compiled power) stay in Python.
+in a compiled ``**``) stay in Python; the array path takes them by ``math.pow``, which numba leaves to the same C
+``pow`` (numpy's ``**`` on an array is neither: its own vector loops).
 
 ``series`` is the law's (m, 3) array of its non-zero terms (j, c_j, s_j) in order; ``table`` the (2, n + 1) array of
 the Hermite start's theta and slope per step (``FourierLaw._T``, ``_D``).
@@ -17,11 +20,12 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 from numba import njit
 
 from ..nbcache import bind
 
-__all__ = ["theta_one", "slopes_one"]
+__all__ = ["theta_one", "slopes_one", "values_many", "phi_many"]
 
 
 @njit(cache=True, inline="always")
@@ -84,6 +88,39 @@ def slopes_one(th, k, series):
         g2 -= j * j * (c * ca + s * sa)
         g3 += j * j * j * (c * sa - s * ca)
     return g1, g2, g3
+
+
+@njit(cache=True)
+def values_many(phis, what, k, series, c0, period, table, points):
+    """At each angle of the 1-d array ``phis``: theta (``what`` -1), U (0), dU/dphi (1) or d2U/dphi2 (2), each as
+    ``FourierLaw.theta1`` / ``U_derivs1`` give it at that angle alone (nan at an angle not finite)."""
+    out = np.empty(phis.shape[0])
+    for i in range(phis.shape[0]):
+        phi = phis[i]
+        if not math.isfinite(phi):
+            out[i] = math.nan
+            continue
+        th = theta_one(phi, k, series, c0, period, table, points)
+        if what < 0:
+            out[i] = th
+            continue
+        g1, g2, g3 = slopes_one(th, k, series)
+        if what == 0:
+            out[i] = 1.0 / g1
+        elif what == 1:
+            out[i] = -g2 / math.pow(g1, 3.0)
+        else:
+            out[i] = (3 * g2 * g2 - g3 * g1) / math.pow(g1, 5.0)
+    return out
+
+
+@njit(cache=True)
+def phi_many(ths, k, series, c0):
+    """phi(theta) at each angle of the 1-d array ``ths``, summed as ``FourierLaw._g01`` sums it."""
+    out = np.empty(ths.shape[0])
+    for i in range(ths.shape[0]):
+        out[i] = _g01(ths[i], k, series, c0)[0]
+    return out
 
 
 # the disk cache keyed on every kernel source (nbcache)

@@ -24,7 +24,7 @@ import numpy as np
 
 from ..errors import InputError, require_finite
 from .law import one_point_values
-from .fourier_kernels import slopes_one, theta_one
+from .fourier_kernels import phi_many, slopes_one, theta_one, values_many
 
 __all__ = ["EllipticalLaw", "FourierLaw"]
 
@@ -165,8 +165,9 @@ class FourierLaw(_PeriodicLaw):
     sin: tuple = ()
 
     kind = "fourier"
-    #: not elementwise (law.py): theta's Newton steps go on until every angle of the array has converged
-    elementwise = False
+    #: the array functions give each angle the value it gets alone (law.py: ``elementwise``): each is the one-point
+    #: path at every angle (``fourier_kernels.values_many``, ``phi_many``)
+    elementwise = True
 
     def __post_init__(self):
         k = _lobes(self.k)
@@ -183,7 +184,6 @@ class FourierLaw(_PeriodicLaw):
         object.__setattr__(self, "_terms", tuple((float(j), float(cj), float(sj))
                                                  for j, cj, sj in zip(self._j, self._c, self._s) if cj or sj))
         object.__setattr__(self, "_last", (math.nan, math.nan))
-        object.__setattr__(self, "_last_arr", (b"", None, None))
         th = np.linspace(0.0, 2 * math.pi, _FOURIER_CHECK_SAMPLES, endpoint=False)
         g = self._g(th, 1)
         i = int(np.argmin(g))
@@ -209,7 +209,9 @@ class FourierLaw(_PeriodicLaw):
         object.__setattr__(self, "_table", np.ascontiguousarray(np.vstack([T, D])))
 
     def _g(self, theta, order: int):
-        """phi(theta) (order 0) or its 1st / 2nd / 3rd derivative in theta."""
+        """phi(theta) (order 0) or its 1st / 2nd / 3rd derivative in theta, summed by numpy over the whole array
+        (the start's table and the check of d phi / d theta > 0 at construction; not elementwise: a matrix product
+        sums a row in an order that depends on the array's length)."""
         th = np.asarray(theta, dtype=float)
         if not len(self._j):
             return {0: th / self.k, 1: np.full_like(th, 1.0 / self.k)}.get(order, np.zeros_like(th))
@@ -225,21 +227,23 @@ class FourierLaw(_PeriodicLaw):
         return sn @ (j ** 3 * self._c) + cs @ (-j ** 3 * self._s)
 
     def phi_of_theta(self, theta, tol: float = 0.0):
-        return self._g(theta, 0)
+        th = np.asarray(theta, dtype=float)
+        return phi_many(np.ascontiguousarray(th.ravel()), float(self.k), self._series, self._c0).reshape(th.shape)
 
-    def theta(self, phi):
-        """Inverse of phi(theta): Newton from k phi on the monotone phi(theta), steps bounded."""
-        small = one_point_values(self, phi, -1)
+    def _many(self, phi, what: int):
+        """Function ``what`` (-1 theta, 0 U, 1 dU/dphi, 2 d2U/dphi2) at the angles ``phi``: the one-point path at each
+        (:func:`.fourier_kernels.values_many`; a few angles by the one-point functions themselves)."""
+        small = one_point_values(self, phi, what)
         if small is not None:
             return small
         phi = np.asarray(phi, dtype=float)
-        key = phi.tobytes()
-        last = self._last_arr
-        if last[0] == key and last[1] == phi.shape:
-            return last[2].copy()
-        th = self._newton(phi, self._guess(phi))
-        object.__setattr__(self, "_last_arr", (key, phi.shape, th))  # U, U', U'' of one phi in turn
-        return th.copy()
+        return values_many(np.ascontiguousarray(phi.ravel()), what, float(self.k), self._series, self._c0,
+                           self.period, self._table, _GUESS_POINTS).reshape(phi.shape)
+
+    def theta(self, phi):
+        """Inverse of phi(theta): Newton from a Hermite start on the monotone phi(theta), steps bounded, at each
+        angle (``theta1``)."""
+        return self._many(phi, -1)
 
     def _newton(self, phi, th):
         for _ in range(100):
@@ -264,24 +268,13 @@ class FourierLaw(_PeriodicLaw):
                 + (3 * t2 - 2 * t3) * T[i + 1] + (t3 - t2) * D[i + 1])
 
     def U(self, phi):
-        small = one_point_values(self, phi, 0)
-        return small if small is not None else 1.0 / self._g(self.theta(phi), 1)
+        return self._many(phi, 0)
 
     def dU_dphi(self, phi):
-        small = one_point_values(self, phi, 1)
-        if small is not None:
-            return small
-        th = self.theta(phi)
-        g1, g2 = self._g(th, 1), self._g(th, 2)
-        return -g2 / g1 ** 3
+        return self._many(phi, 1)
 
     def d2U_dphi2(self, phi):
-        small = one_point_values(self, phi, 2)
-        if small is not None:
-            return small
-        th = self.theta(phi)
-        g1, g2, g3 = self._g(th, 1), self._g(th, 2), self._g(th, 3)
-        return (3 * g2 * g2 - g3 * g1) / g1 ** 5
+        return self._many(phi, 2)
 
     # ---- one point (a float), in ``math``: the tooth generator's calls, one at a time ----------------
     def _g01(self, th: float) -> tuple:
