@@ -1,7 +1,9 @@
 """The one-point paths of the drive law, the pitch curves and the envelope (the solvers' calls with one
 float or a one-element array, evaluated in ``math``) give the array functions' results bit for bit:
 the same operations in the same order, so every generated tooth and output file stays byte-identical
-(issue 13).  Light: a few thousand evaluations."""
+(issue 13).  The Fourier laws among them (their array functions the one-point path at each angle since 02bfeb1;
+before, numpy's Newton over the whole array and a matrix product, these tests failed on them).  Light: a few
+thousand evaluations."""
 
 from __future__ import annotations
 
@@ -16,7 +18,12 @@ from propulsor.gears.involute import BasicRack
 from propulsor.gears.noncircular import PitchCurves, SmoothedWalkingLaw
 from propulsor.gears.noncircular_teeth import ToothSpec
 from propulsor.gears.pitch_frame import ArcFrame, BodyPitchCurve
+from propulsor.laws.ratio_laws import FourierLaw
 from propulsor.laws.walking import SEED_000, SEED_002, WalkingLaw
+
+#: the Fourier laws of parts/ncg_fourier_seed002.toml and parts/ncg_fourier_3lobe.toml, and one with cosines
+FOURIER = (FourierLaw(4, (0.0, 0.0, 0.0, 0.0), (-0.041163336, 0.007288343, -0.002416844, 0.001071365)),
+           FourierLaw(3, (0.0, 0.005), (0.04,)), FourierLaw(2, (0.03, -0.01), (0.02, 0.0, 0.005)))
 
 
 def _laws():
@@ -44,7 +51,7 @@ def _same(a, b) -> bool:
     return np.asarray(a, float).tobytes() == np.asarray(b, float).tobytes()
 
 
-@pytest.mark.parametrize("law", list(_laws()), ids=lambda lw: type(lw).__name__)
+@pytest.mark.parametrize("law", list(_laws()) + list(FOURIER), ids=lambda lw: type(lw).__name__)
 def test_law_one_point_equals_array(law):
     phi = _angles(law)
     U, dU, d2U, th = law.U(phi), law.dU_dphi(phi), law.d2U_dphi2(phi), law.theta(phi)
@@ -53,8 +60,9 @@ def test_law_one_point_equals_array(law):
         assert _same(law.theta1(float(p)), th[i]), p
 
 
-@pytest.mark.parametrize("law", [lw for lw in _laws() if isinstance(lw, SmoothedWalkingLaw)],
-                         ids=["blend_000", "blend_u_h_000", "blend_002", "blend_u_h_002"])
+@pytest.mark.parametrize("law", [lw for lw in _laws() if isinstance(lw, SmoothedWalkingLaw)] + list(FOURIER),
+                         ids=["blend_000", "blend_u_h_000", "blend_002", "blend_u_h_002", "fourier_seed002",
+                              "fourier_3lobe", "fourier_cos"])
 def test_law_few_angles_equal_array(law):
     """Arrays of 1 to 8 angles take the one-point path (``laws.law.one_point_values``): each element is the large
     array's, bit for bit; an array with a non-finite angle, or of 9, takes the array path."""
@@ -73,7 +81,8 @@ def test_law_few_angles_equal_array(law):
     assert np.isnan(law.theta(with_nan)[1]) and _same(law.theta(with_nan)[:1], law.theta(phi[:0].tolist() + [0.3]))
 
 
-@pytest.mark.parametrize("law", list(_laws())[1:3], ids=["blend", "blend_u_h"])
+@pytest.mark.parametrize("law", list(_laws())[1:3] + list(FOURIER[:2]),
+                         ids=["blend", "blend_u_h", "fourier_seed002", "fourier_3lobe"])
 def test_pitch_curve_one_point_equals_array(law):
     pc = PitchCurves(law, 160.0)
     phi = _angles(law, 60)
