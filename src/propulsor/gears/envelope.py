@@ -368,22 +368,38 @@ class RoundEnvelope:
     u1: float
     kind: str = "fillet"
 
-    def _T(self, s):
+    def _pose(self, s):
+        """The round's centre in the gear frame at each rolling arc s, and the cutter's turn relative to the gear."""
         s = np.atleast_1d(np.asarray(s, float))
         C = np.repeat(np.asarray(self.centre, float)[None, :], len(s), axis=0)
         theta = self.gear.angle(s) - self.cutter.angle(s)
-        return self.gear.point(s) + _rot(theta, C - self.cutter.point(s))
+        return self.gear.point(s) + _rot(theta, C - self.cutter.point(s)), theta
 
-    def contact_dir(self, s):
-        """Unit direction from the round's centre to the contact point, in the gear frame."""
-        s = np.atleast_1d(np.asarray(s, float))
-        h = SHAPER_MESH_FD_STEP_MM
-        d = self._T(s + h) - self._T(s - h)
+    def _T(self, s):
+        return self._pose(s)[0]
+
+    def _dir(self, Tp, Tm):
+        """The unit contact direction from the centre's positions a step ahead (Tp) and behind (Tm)."""
+        d = Tp - Tm
         d = d / np.linalg.norm(d, axis=1)[:, None]
         return self.side * np.column_stack([-d[:, 1], d[:, 0]])
 
+    def contact_dir(self, s):
+        """Unit direction from the round's centre to the contact point, in the gear frame (the centre's positions a
+        step either side of each s in one evaluation: each row is the one its own s gives, the functions on the way
+        being elementwise)."""
+        s = np.atleast_1d(np.asarray(s, float))
+        h = SHAPER_MESH_FD_STEP_MM
+        n = len(s)
+        T = self._T(np.concatenate([s + h, s - h]))
+        return self._dir(T[:n], T[n:])
+
     def __call__(self, s):
-        return self._T(s) + self.rho * self.contact_dir(s)
+        s = np.atleast_1d(np.asarray(s, float))
+        h = SHAPER_MESH_FD_STEP_MM
+        n = len(s)
+        T = self._T(np.concatenate([s, s + h, s - h]))
+        return T[:n] + self.rho * self._dir(T[n:2 * n], T[2 * n:])
 
     def at(self, s: float) -> np.ndarray:
         return self(np.array([s]))[0]
@@ -426,9 +442,11 @@ def round_envelope(fillet_piece, a_tip: float, a_flank: float, rho: float, cutte
     target = math.atan2(u_fl[0] * u_tip[1] - u_fl[1] * u_tip[0], float(u_fl @ u_tip))
 
     def ang(ss):
+        # the cutter's turn at ss and the centre a step either side, in one evaluation (row by row as apart)
         ss = np.atleast_1d(np.asarray(ss, float))
-        th = gear.angle(ss) - cutter.angle(ss)
-        v = _rot(-th, env.contact_dir(ss))
+        n, h = len(ss), SHAPER_MESH_FD_STEP_MM
+        T, th = env._pose(np.concatenate([ss, ss + h, ss - h]))
+        v = _rot(-th[:n], env._dir(T[n:2 * n], T[2 * n:]))
         return np.arctan2(u_fl[0] * v[:, 1] - u_fl[1] * v[:, 0], v @ u_fl)
 
     for direction in (1.0, -1.0):
