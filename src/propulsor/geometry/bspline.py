@@ -11,7 +11,7 @@ tolerance.  The result deviates from the exact curve by ≤ ``policy.SPLINE_FIT_
 from __future__ import annotations
 
 import numpy as np
-from scipy.interpolate import make_interp_spline
+from scipy.interpolate import BSpline, make_interp_spline
 
 from ..errors import require
 from ..planar import norms
@@ -32,7 +32,43 @@ def _interp(P: np.ndarray):
     if np.any(np.diff(t) <= 0):
         raise ValueError("coincident consecutive points")
     k = 3 if len(P) >= 4 else len(P) - 1
-    return make_interp_spline(t, P, k=k), t
+    if k < 2 or P.ndim != 2 or P.shape[1] != 2 or not (np.isfinite(t).all() and np.isfinite(P).all()):
+        return make_interp_spline(t, P, k=k), t  # its special cases and its errors
+    return _not_a_knot_spline(t, P, k), t
+
+
+def _not_a_knot_spline(x: np.ndarray, y: np.ndarray, k: int):
+    """``make_interp_spline(x, y, k)`` (not-a-knot ends) for finite, strictly increasing x, y of shape (n, 2) and
+    k >= 2: the steps scipy 1.17's function takes for it, without its checks and case analysis (about 75 of its
+    100 us a call, 1 400 calls a seed-002 design): scipy's knots (``_not_a_knot``), its collocation matrix in
+    LAPACK's band storage (``_dierckx._coloc``) and LAPACK's ``gbsv`` on it, the same arguments in the same order,
+    so the same spline to the last bit (tests/test_spline_fit_fast.py holds it to ``make_interp_spline``)."""
+    from scipy.interpolate import _dierckx
+    from scipy.interpolate._bsplines import _not_a_knot
+
+    t = _not_a_knot(x, k)
+    nt = t.size - k - 1
+    ab = np.zeros((3 * k + 1, nt), dtype=np.float64, order="F")
+    _dierckx._coloc(x, t, k, ab.T, 0)
+    rhs = np.empty((nt, 2), dtype=np.float64)
+    rhs[:] = y
+    _, _, c, info = _gbsv()(k, k, ab, rhs, overwrite_ab=True, overwrite_b=True)
+    if info != 0:
+        return make_interp_spline(x, y, k=k)  # its error
+    return BSpline.construct_fast(t, np.ascontiguousarray(c.reshape(nt, 2)), k)
+
+
+def _gbsv():
+    """LAPACK's banded solver for float64 (scipy's, as ``make_interp_spline`` gets it)."""
+    global _GBSV
+    if _GBSV is None:
+        from scipy.linalg import get_lapack_funcs
+
+        _GBSV = get_lapack_funcs(("gbsv",), (np.zeros((1, 1)), np.zeros((1, 1))))[0]
+    return _GBSV
+
+
+_GBSV = None
 
 
 def _project(bs, Q: np.ndarray, t0: np.ndarray, lo: float, hi: float, iters: int = 6) -> np.ndarray:
