@@ -44,7 +44,7 @@ def test_the_compiled_one_point_path_is_the_python_one_bit_for_bit(seed):
 @pytest.mark.parametrize("seed", [7, 8])
 def test_the_array_path_is_the_one_point_path_bit_for_bit(seed):
     """Arrays of a few points take the one-point path (``laws.law.one_point_values``), larger ones the compiled loop
-    over it (``fourier_kernels.values_many``): each angle's theta, U, dU/dphi and d2U/dphi2 are its one-point values
+    over it (``fourier_kernels.theta_many``, ``derivs_many``): each angle's theta, U, dU/dphi and d2U/dphi2 are its one-point values
     to the last bit (the powers of the derivatives by C ``pow`` as Python's ``**``), in an array of any shape; phi of
     theta is ``_g01``'s sum; an angle not finite gives nan."""
     laws, rng = _laws(seed, 4)
@@ -55,6 +55,16 @@ def test_the_array_path_is_the_one_point_path_bit_for_bit(seed):
             assert f(phi).tobytes() == ref[:, col].tobytes()
             assert f(phi.reshape(50, 60)).tobytes() == ref[:, col].tobytes()
             assert f(phi[::-3]).tobytes() == ref[::-3, col].tobytes()
+        # the last array's theta and derivatives kept: each function in any order, an array changed in place
+        for col in (3, 1, 0, 2, 2, 1):
+            f = (law.theta, law.U, law.dU_dphi, law.d2U_dphi2)[col]
+            assert f(phi).tobytes() == ref[:, col].tobytes()
+        out = law.U(phi)
+        out[:] = 0.0  # a caller's copy
+        assert law.U(phi).tobytes() == ref[:, 1].tobytes()
+        moved = phi.copy()
+        moved[7] += 1e-3
+        assert law.dU_dphi(moved)[7] == law.U_derivs1(float(moved[7]))[1]
         th = ref[:, 0]
         assert law.phi_of_theta(th).tobytes() == np.array([law._g01(t)[0] for t in th.tolist()]).tobytes()
         assert np.max(np.abs(law.phi_of_theta(th) - phi)) < 1e-12

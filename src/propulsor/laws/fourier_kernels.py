@@ -1,6 +1,6 @@
 """The Fourier law's one-point inversion, compiled (numba): ``FourierLaw.theta1`` and the series sums of
 ``FourierLaw.U_derivs1`` (laws/ratio_laws.py); and the law's array functions as that one-point path at each angle
-(``values_many``, ``phi_many``), so that an angle gets the same value in any array (the law is ``elementwise``,
+(``theta_many``, ``derivs_many``, ``phi_many``), so that an angle gets the same value in any array (the law is ``elementwise``,
 laws/law.py).
 
 The tooth generator and the contact search ask the law for theta(phi) one float at a time, tens of thousands of
@@ -25,7 +25,7 @@ from numba import njit
 
 from ..nbcache import bind
 
-__all__ = ["theta_one", "slopes_one", "values_many", "phi_many"]
+__all__ = ["theta_one", "slopes_one", "theta_many", "derivs_many", "phi_many"]
 
 
 @njit(cache=True, inline="always")
@@ -91,26 +91,26 @@ def slopes_one(th, k, series):
 
 
 @njit(cache=True)
-def values_many(phis, what, k, series, c0, period, table, points):
-    """At each angle of the 1-d array ``phis``: theta (``what`` -1), U (0), dU/dphi (1) or d2U/dphi2 (2), each as
-    ``FourierLaw.theta1`` / ``U_derivs1`` give it at that angle alone (nan at an angle not finite)."""
+def theta_many(phis, k, series, c0, period, table, points):
+    """theta at each angle of the 1-d array ``phis``, as ``FourierLaw.theta1`` gives it at that angle alone (nan at an
+    angle not finite)."""
     out = np.empty(phis.shape[0])
     for i in range(phis.shape[0]):
         phi = phis[i]
-        if not math.isfinite(phi):
-            out[i] = math.nan
-            continue
-        th = theta_one(phi, k, series, c0, period, table, points)
-        if what < 0:
-            out[i] = th
-            continue
-        g1, g2, g3 = slopes_one(th, k, series)
-        if what == 0:
-            out[i] = 1.0 / g1
-        elif what == 1:
-            out[i] = -g2 / math.pow(g1, 3.0)
-        else:
-            out[i] = (3 * g2 * g2 - g3 * g1) / math.pow(g1, 5.0)
+        out[i] = theta_one(phi, k, series, c0, period, table, points) if math.isfinite(phi) else math.nan
+    return out
+
+
+@njit(cache=True)
+def derivs_many(ths, k, series):
+    """(3, n): U, dU/dphi and d2U/dphi2 at each theta of the 1-d array ``ths`` (``theta_many``'s), as
+    ``FourierLaw.U_derivs1`` gives them from that theta."""
+    out = np.empty((3, ths.shape[0]))
+    for i in range(ths.shape[0]):
+        g1, g2, g3 = slopes_one(ths[i], k, series)
+        out[0, i] = 1.0 / g1
+        out[1, i] = -g2 / math.pow(g1, 3.0)
+        out[2, i] = (3 * g2 * g2 - g3 * g1) / math.pow(g1, 5.0)
     return out
 
 

@@ -24,7 +24,7 @@ import numpy as np
 
 from ..errors import InputError, require_finite
 from .law import one_point_values
-from .fourier_kernels import phi_many, slopes_one, theta_one, values_many
+from .fourier_kernels import derivs_many, phi_many, slopes_one, theta_many, theta_one
 
 __all__ = ["EllipticalLaw", "FourierLaw"]
 
@@ -166,7 +166,7 @@ class FourierLaw(_PeriodicLaw):
 
     kind = "fourier"
     #: the array functions give each angle the value it gets alone (law.py: ``elementwise``): each is the one-point
-    #: path at every angle (``fourier_kernels.values_many``, ``phi_many``)
+    #: path at every angle (``fourier_kernels.theta_many``, ``derivs_many``, ``phi_many``)
     elementwise = True
 
     def __post_init__(self):
@@ -184,6 +184,7 @@ class FourierLaw(_PeriodicLaw):
         object.__setattr__(self, "_terms", tuple((float(j), float(cj), float(sj))
                                                  for j, cj, sj in zip(self._j, self._c, self._s) if cj or sj))
         object.__setattr__(self, "_last", (math.nan, math.nan))
+        object.__setattr__(self, "_last_arr", (None, None, None))  # (phi's bytes and shape, theta, U's derivatives)
         th = np.linspace(0.0, 2 * math.pi, _FOURIER_CHECK_SAMPLES, endpoint=False)
         g = self._g(th, 1)
         i = int(np.argmin(g))
@@ -232,13 +233,27 @@ class FourierLaw(_PeriodicLaw):
 
     def _many(self, phi, what: int):
         """Function ``what`` (-1 theta, 0 U, 1 dU/dphi, 2 d2U/dphi2) at the angles ``phi``: the one-point path at each
-        (:func:`.fourier_kernels.values_many`; a few angles by the one-point functions themselves)."""
+        (:func:`.fourier_kernels.theta_many`, :func:`.fourier_kernels.derivs_many`; a few angles by the one-point
+        functions themselves).  The last array's theta and derivatives are kept: a pitch curve asks for U, U' and U''
+        of one array in turn."""
         small = one_point_values(self, phi, what)
         if small is not None:
             return small
         phi = np.asarray(phi, dtype=float)
-        return values_many(np.ascontiguousarray(phi.ravel()), what, float(self.k), self._series, self._c0,
-                           self.period, self._table, _GUESS_POINTS).reshape(phi.shape)
+        key = (phi.tobytes(), phi.shape)
+        kept, th, der = self._last_arr
+        if kept != key:
+            th = theta_many(np.ascontiguousarray(phi.ravel()), float(self.k), self._series, self._c0, self.period,
+                            self._table, _GUESS_POINTS)
+            der = None
+        if what < 0:
+            out = th
+        else:
+            if der is None:
+                der = derivs_many(th, float(self.k), self._series)
+            out = der[what]
+        object.__setattr__(self, "_last_arr", (key, th, der))
+        return out.reshape(phi.shape).copy()
 
     def theta(self, phi):
         """Inverse of phi(theta): Newton from a Hermite start on the monotone phi(theta), steps bounded, at each
