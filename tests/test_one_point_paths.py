@@ -150,6 +150,13 @@ def test_arc_frame_phi_of_one_float_equals_the_array_path(law):
     got = np.array([fr.phi1(float(x)) for x in s])
     assert np.array_equal(got, ref)
     assert fr.phi1(math.nan) is None
+    # arrays of up to 8 arc lengths take phi1 at each (laws.law.SMALL_ARRAY): the large array's bytes
+    k = 0
+    for n in [1, 2, 3, 5, 8, 9] * 60:
+        assert _same(fr.phi(s[k:k + n]), ref[k:k + n]), (n, s[k:k + n])
+        k += n
+    with_nan = np.array([0.3, math.nan])
+    assert np.isnan(fr.phi(with_nan)[1]) and _same(fr.phi(with_nan)[:1], fr.phi(s[:0].tolist() + [0.3]))
 
 
 def test_ppoly_of_one_float_is_scipys_evaluation_bit_for_bit():

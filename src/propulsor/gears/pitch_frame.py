@@ -15,6 +15,7 @@ import math
 import numpy as np
 
 from ..errors import require
+from ..laws.law import SMALL_ARRAY
 from ..planar import norms
 from ..policy import FD_STEP_PHI_RAD, FOOT_GAUSS_NEWTON_STEPS
 from .noncircular import PitchCurves, leg_breakpoints
@@ -121,6 +122,12 @@ class ArcFrame:
 
     def phi(self, s):
         s = np.atleast_1d(np.asarray(s, float))
+        if s.ndim == 1 and len(s) <= SMALL_ARRAY:
+            # a few arc lengths (the envelope's and the tip searches' small arrays, a thousand calls a design): each by
+            # ``phi1``, the same operations as the splines' compiled evaluation, without its cost per call
+            got = [self.phi1(x) for x in s.tolist()]
+            if None not in got:
+                return np.array(got, dtype=float)
         k = np.floor((s - self.S[0]) / self.leg)
         return self._inverse(s - k * self.leg) + k * self.period
 
