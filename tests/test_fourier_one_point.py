@@ -44,9 +44,9 @@ def test_the_compiled_one_point_path_is_the_python_one_bit_for_bit(seed):
 @pytest.mark.parametrize("seed", [7, 8])
 def test_the_array_path_is_the_one_point_path_bit_for_bit(seed):
     """Arrays of a few points take the one-point path (``laws.law.one_point_values``), larger ones the compiled loop
-    over it (``fourier_kernels.theta_many``, ``derivs_many``): each angle's theta, U, dU/dphi and d2U/dphi2 are its one-point values
-    to the last bit (the powers of the derivatives by C ``pow`` as Python's ``**``), in an array of any shape; phi of
-    theta is ``_g01``'s sum; an angle not finite gives nan."""
+    over it (``fourier_kernels.theta_many``, ``derivs_many``): each angle's theta, U, dU/dphi and d2U/dphi2 are its
+    one-point values to the last bit (the powers of the derivatives by C ``pow`` as Python's ``**``), in an array of
+    any shape; phi of theta is ``_g01``'s sum; an angle not finite gives nan."""
     laws, rng = _laws(seed, 4)
     for law in laws:
         phi = rng.uniform(-3 * law.period, 3 * law.period, 3000)

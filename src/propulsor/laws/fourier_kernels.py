@@ -1,7 +1,7 @@
 """The Fourier law's one-point inversion, compiled (numba): ``FourierLaw.theta1`` and the series sums of
 ``FourierLaw.U_derivs1`` (laws/ratio_laws.py); and the law's array functions as that one-point path at each angle
-(``theta_many``, ``derivs_many``, ``phi_many``), so that an angle gets the same value in any array (the law is ``elementwise``,
-laws/law.py).
+(``theta_many``, ``derivs_many``, ``phi_many``), so that an angle gets the same value in any array (the law is
+``elementwise``, laws/law.py).
 
 The tooth generator and the contact search ask the law for theta(phi) one float at a time, tens of thousands of
 times a design; in Python each call runs the Hermite start and two or three Newton steps over the series' terms.
