@@ -167,6 +167,24 @@ parameters swept (slack 0.05-0.2 mm, widening 0.01-0.04 rad, turn factor 1.25-2,
 of 16-64 vertices; each the same contact law to the bit): none faster beyond the machine's swings, the first window
 of 0.8 margins twice as slow.  ``bench_variant.py`` at the end: the seed-002 pair 3.95 / 3.92, its Fourier form
 7.90 / 7.51 CPU s (the machine slow: ncgears' generation 65.5 s against 59.8 s last session).
+
+2026-12-01, an eleventh session (2 cores; afd7c03 in a worktree and the new tree in turn, a variant's steps timed in
+one process, three rounds of two).  The Fourier law's array functions are its compiled one-point path at each angle
+(``laws/fourier_kernels.py``: ``theta_many``, ``derivs_many``, ``phi_many``; before, numpy's Newton over the whole
+array and a matrix product, whose row sums depend on the array's length), so the law is ``elementwise`` and its
+teeth's curves are fitted in lock step; the last array's theta and U's derivatives are kept (a pitch curve asks for
+U, U' and U'' of one array in turn: 7 045 -> 1 621 inversions a design).  The two Fourier part files' outlines move
+by at most 2.0e-10 mm (the driven tip lands, found to the tip search's tolerance; the flanks by 6e-14 mm), every
+check passing.  For every law, each identical to the last bit: a re-phased shaper's tip round evaluated at s and a
+step either side in one array (1 618 -> 619 evaluations a seed-002 design), the spline fit's interpolation by
+scipy's own steps without ``make_interp_spline``'s checks (100 -> 27 us a call, 1 400 calls a design), the
+arc-length frame's phi of up to 8 arc lengths by ``phi1`` (7 126 -> 4 150 scipy spline calls a design).  The Fourier
+form: the design 1.81 / 2.03 / 1.92 / 2.21 / 2.29 -> 0.93 / 0.98 / 1.01 / 1.05 / 1.13 CPU s (the fits 0.90-1.17 ->
+0.34-0.47, the teeth 0.84-1.05 -> 0.53-0.75), the variant (least of each pair) 5.27 / 4.72 / 6.40 -> 3.74 / 4.51 /
+4.11 CPU s.  The seed-002 pair: the design 1.26 / 1.31 / 1.36 -> 1.04 / 1.07 / 1.19 (the fits 0.43-0.54 ->
+0.32-0.38), the variant 3.18 / 3.36 / 2.99 -> 2.88 / 3.04 / 2.76.  ``bench_variant.py`` at the end, both trees in
+turn, two rounds: the seed-002 pair 2.87 / 3.08 -> 2.85 / 3.24 CPU s, its Fourier form 4.47 / 4.82 -> 4.57 / 3.91
+(the machine's swings as large as the change there; the steps above are the measure).
 """
 
 from __future__ import annotations

@@ -100,6 +100,17 @@ ratio 0.246, CPU ratio 0.356.  ``make`` from clean: 159.5 s wall (288.9 user s) 
 (264.6) after the cam kernels, 196.1 (360.9) at the end with the machine slow; paired (546969d in a worktree and the
 new tree in turn, one round) 162.27 -> 158.90 s wall, 310.30 -> 300.41 user s; the four cam part files alone, two
 rounds: 57.64 / 63.31 -> 54.65 / 55.08 user s.
+2026-12-01, an eleventh session (2 cores; the Fourier law's array functions compiled and elementwise, its teeth
+fitted in lock step, the spline fits' interpolation without scipy's checks): our Fourier build alone, afd7c03 in a
+worktree and the new tree in turn, three rounds: 12.34 / 13.10 / 12.93 -> 11.54 / 10.84 / 11.72 s wall, 18.38 /
+18.77 / 19.50 -> 16.70 / 15.18 / 16.59 user s (-12 %), peak 796-799 MiB both.  This benchmark at the end, the
+machine fast for once: ncgears 45.45 s wall (47.96 CPU s), peak 291 MiB; ours 9.92 s wall (14.69 CPU s), peak 768
+MiB: wall ratio 0.218, CPU ratio 0.306; ``ncg_elliptical.toml`` 7.84 s wall (11.74 CPU s).  Earlier in the session,
+the machine slower, at 02bfeb1: ncgears 58.92 s (62.18 CPU s), ours 15.79 s (23.26 CPU s): 0.268, 0.374.  ``python -m
+propulsor.cli build`` of every part file, afd7c03 in a worktree and the new tree in turn, two rounds: 121.11 / 123.39
+-> 124.48 / 106.19 s wall, 228.22 / 232.11 -> 235.74 / 200.57 user s (the drift again larger than the change, a few
+CPU s); ``make`` from clean at bdccec4: 121.9 s wall, 229.2 user s; its 636 files those of 02bfeb1 (which changed
+only the two Fourier part files' and the gallery's).
 """
 
 from __future__ import annotations
