@@ -147,3 +147,36 @@ def test_the_compiled_runs_name_each_contact_as_the_reference_search_does(spur):
         assert list(zip(kind.tolist(), a.tolist(), b.tolist())) == [tuple(r[1:4]) for r in ref]
         kinds |= set(kind.tolist())
     assert kinds > {0}, kinds  # corners too
+
+
+class _ElementwiseLaw:
+    """A law's theta (``_law``) from an object that says it is elementwise (laws/law.py), counting the angles of
+    each call."""
+
+    elementwise = True
+
+    def __init__(self):
+        self.sizes = []
+
+    def theta(self, phi):
+        self.sizes.append(np.size(phi))
+        return _law(phi)
+
+
+def test_an_elementwise_law_s_bisection_midpoints_are_asked_together_with_the_same_result(spur):
+    """The midpoints of one bisection round go to an elementwise law's theta in one call (a thousand calls of one
+    angle a cycle before); every row of the resolved contact is the one of a theta asked one angle at a time."""
+    pair, driver, driven, t1, t2 = spur
+    bumped, _ = _bumped(driven[0], t2[2] + 0.02, 0.005)
+    po = PairOutlines(outline(driver), outline(bumped), pair.a_w, t1, t2)
+    span = 2 * math.pi / Z2 * 4
+    for d in (DRIVE, REVERSE):
+        law, plain = _ElementwiseLaw(), []
+        together = resolve_contact(po, law.theta, 0.0, span, d)
+        alone = resolve_contact(po, lambda phi: plain.append(np.size(phi)) or _law(phi), 0.0, span, d)
+        for f in ("phi", "theta", "te", "kind", "driver_tooth", "driven_tooth"):
+            assert np.asarray(getattr(together, f)).tobytes() == np.asarray(getattr(alone, f)).tobytes(), f
+        assert together.evaluations == alone.evaluations
+        # a plain function is asked one midpoint at a time, the law once a round with all of them
+        midpoints = plain.count(1) - law.sizes.count(1)
+        assert midpoints > 20 and sum(law.sizes) == sum(plain) and len(law.sizes) < len(plain) - midpoints + 20

@@ -405,12 +405,17 @@ def resolve_contact(pair: PairOutlines, theta_of_phi, phi0: float, phi1: float, 
         if not mids:
             return []
         ms = [m for _, _, m, _ in mids]
-        th = [float(np.asarray(theta_of_phi(np.asarray([m], float)), float)[0]) for m in ms]  # one by one, as sampled
+        if together:  # a law's theta that gives each angle the value it gets alone: all midpoints in one call
+            th = np.asarray(theta_of_phi(np.asarray(ms, float)), float).reshape(len(ms)).tolist()
+        else:
+            th = [float(np.asarray(theta_of_phi(np.asarray([m], float)), float)[0]) for m in ms]  # one by one
         te, kind, t_drv, t_dvn = track(pair, ms, th, direction, [samples[a][1] for a, _, _, _ in mids],
                                        [a for a, _, _, _ in mids], False, np.array([k for *_, k in mids], np.int64),
                                        caches)
         return [(t,) + r for t, r in zip(th, zip(te.tolist(), kind.tolist(), t_drv.tolist(), t_dvn.tolist()))]
 
+    # the midpoints' driver angles asked together where theta is an elementwise law's (laws/law.py): the same floats
+    together = getattr(getattr(theta_of_phi, "__self__", None), "elementwise", False) is True
     # slot 0: the sampled run; then one slot for the bisection of each change of state
     caches = new_caches(1)
     kept = new_caches(0)  # the sampled run's caches after each position
