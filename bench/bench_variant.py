@@ -184,7 +184,10 @@ form: the design 1.81 / 2.03 / 1.92 / 2.21 / 2.29 -> 0.93 / 0.98 / 1.01 / 1.05 /
 4.11 CPU s.  The seed-002 pair: the design 1.26 / 1.31 / 1.36 -> 1.04 / 1.07 / 1.19 (the fits 0.43-0.54 ->
 0.32-0.38), the variant 3.18 / 3.36 / 2.99 -> 2.88 / 3.04 / 2.76.  ``bench_variant.py`` at the end, both trees in
 turn, two rounds: the seed-002 pair 2.87 / 3.08 -> 2.85 / 3.24 CPU s, its Fourier form 4.47 / 4.82 -> 4.57 / 3.91
-(the machine's swings as large as the change there; the steps above are the measure).
+(the machine's swings as large as the change there; the steps above are the measure).  Later (53c0746): a bisection
+round's midpoints go to an elementwise law's theta in one call; 7 500 midpoints' theta one at a time 0.07-0.11 CPU s
+(the seed-002 pair's blended law) and 0.08-0.18 (the Fourier law), in calls of 600 0.001-0.005: about 0.1 CPU s a
+variant, below the six contacts' swings (3.1-5.3 CPU s either way, the contact laws identical array by array).
 """
 
 from __future__ import annotations
