@@ -394,12 +394,18 @@ class RoundEnvelope:
         T = self._T(np.concatenate([s + h, s - h]))
         return self._dir(T[:n], T[n:])
 
-    def __call__(self, s):
+    def _centre_turn_dir(self, s):
+        """(the centre T(s), the cutter's turn at s, the contact direction at s) from one evaluation at s and a step
+        either side (row by row as apart: the functions on the way are elementwise)."""
         s = np.atleast_1d(np.asarray(s, float))
         h = SHAPER_MESH_FD_STEP_MM
         n = len(s)
-        T = self._T(np.concatenate([s, s + h, s - h]))
-        return T[:n] + self.rho * self._dir(T[n:2 * n], T[2 * n:])
+        T, th = self._pose(np.concatenate([s, s + h, s - h]))
+        return T[:n], th[:n], self._dir(T[n:2 * n], T[2 * n:])
+
+    def __call__(self, s):
+        T, _, d = self._centre_turn_dir(s)
+        return T + self.rho * d
 
     def at(self, s: float) -> np.ndarray:
         return self(np.array([s]))[0]
@@ -442,11 +448,8 @@ def round_envelope(fillet_piece, a_tip: float, a_flank: float, rho: float, cutte
     target = math.atan2(u_fl[0] * u_tip[1] - u_fl[1] * u_tip[0], float(u_fl @ u_tip))
 
     def ang(ss):
-        # the cutter's turn at ss and the centre a step either side, in one evaluation (row by row as apart)
-        ss = np.atleast_1d(np.asarray(ss, float))
-        n, h = len(ss), SHAPER_MESH_FD_STEP_MM
-        T, th = env._pose(np.concatenate([ss, ss + h, ss - h]))
-        v = _rot(-th[:n], env._dir(T[n:2 * n], T[2 * n:]))
+        _, th, d = env._centre_turn_dir(ss)
+        v = _rot(-th, d)
         return np.arctan2(u_fl[0] * v[:, 1] - u_fl[1] * v[:, 0], v @ u_fl)
 
     for direction in (1.0, -1.0):

@@ -10,6 +10,8 @@ tolerance.  The result deviates from the exact curve by ≤ ``policy.SPLINE_FIT_
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 from scipy.interpolate import BSpline, make_interp_spline
 
@@ -58,17 +60,12 @@ def _not_a_knot_spline(x: np.ndarray, y: np.ndarray, k: int):
     return BSpline.construct_fast(t, np.ascontiguousarray(c.reshape(nt, 2)), k)
 
 
+@functools.cache
 def _gbsv():
     """LAPACK's banded solver for float64 (scipy's, as ``make_interp_spline`` gets it)."""
-    global _GBSV
-    if _GBSV is None:
-        from scipy.linalg import get_lapack_funcs
+    from scipy.linalg import get_lapack_funcs
 
-        _GBSV = get_lapack_funcs(("gbsv",), (np.zeros((1, 1)), np.zeros((1, 1))))[0]
-    return _GBSV
-
-
-_GBSV = None
+    return get_lapack_funcs(("gbsv",), (np.zeros((1, 1)), np.zeros((1, 1))))[0]
 
 
 def _project(bs, Q: np.ndarray, t0: np.ndarray, lo: float, hi: float, iters: int = 6) -> np.ndarray:
