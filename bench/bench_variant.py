@@ -188,6 +188,22 @@ turn, two rounds: the seed-002 pair 2.87 / 3.08 -> 2.85 / 3.24 CPU s, its Fourie
 round's midpoints go to an elementwise law's theta in one call; 7 500 midpoints' theta one at a time 0.07-0.11 CPU s
 (the seed-002 pair's blended law) and 0.08-0.18 (the Fourier law), in calls of 600 0.001-0.005: about 0.1 CPU s a
 variant, below the six contacts' swings (3.1-5.3 CPU s either way, the contact laws identical array by array).
+
+2026-12-01, a twelfth session (2 cores; no change kept).  The seed-002 variant 2.96 / 4.07 CPU s (cProfile: the
+as-built contact's compiled loop ``_track_nb`` 0.95 s in 38 calls, the rest spread over ~2.4 M Python calls).  Where
+the contact's compiled time goes, by ``perf record --call-graph dwarf`` with the JIT addresses mapped through the
+kernels' cached object code (``nm`` of the ELF in the ``.nbc``, placed at the entry numba gives): the rotation pairs
+(``backlash._rot_pairs``) 28-36 %, the cache refresh's nearest-vertex searches (``nearest._nearest_vertex``) 12 %,
+``_reused`` 7 %, ``_refresh`` 6 %, ``_side_hits`` 5 %, ``_rot_reduce`` 4 %, and numba's reference counts (the atomic
+add of ``NRT_incref`` / ``NRT_decref``) 18-24 % of it: an array handed to a compiled function is counted up on entry
+and down on exit (the nearest-vertex search: 6 atomic operations a call, one call a vertex of a refreshed window),
+and an array variable assigned inside a loop at every turn.  Tried, each the same contact law to the bit and none
+faster (in one process, the old tree imported beside the new as ``propulsor_old`` and the two run in turn ten times:
+identical code measures 0.98-1.02): the per-position helpers inlined (``inline="always"``: numba's inliner binds the
+arrays to new variables, counted the same), the rotation pairs' scratch arrays sized by a first pass over the points
+instead of grown in the loop (the atomics go, the extra pass costs as much), the nearest-edge search's per-point
+helpers inlined (the cams' motion proofs: 2.03 -> 2.05 CPU s least of eight).  The same mapping on the cams' motion
+proofs: ``_nearest_edge`` with its helpers 30 % of the samples, their reference counts a further 11 %.
 """
 
 from __future__ import annotations

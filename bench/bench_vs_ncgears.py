@@ -111,6 +111,19 @@ propulsor.cli build`` of every part file, afd7c03 in a worktree and the new tree
 -> 124.48 / 106.19 s wall, 228.22 / 232.11 -> 235.74 / 200.57 user s (the drift again larger than the change, a few
 CPU s); ``make`` from clean at bdccec4: 121.9 s wall, 229.2 user s; its 636 files those of 02bfeb1 (which changed
 only the two Fourier part files' and the gallery's).
+2026-12-01, a twelfth session (2 cores; no change kept).  Where our Fourier build's wall goes, its processes' CPU
+sampled every 0.25 s (10.1 s wall that run): one core busy for the first 1.0 s (the imports), both from 1.0 to 2.0
+(the design forked beside the CAD kernel's import), one from 2.1 to 3.0 (the design's result taken, the solids
+started), both from 3.3 to 7.1 (the solids' files and checks in two workers, the proof, the contact in both
+directions, the animation), one from 7.35 to 9.9: the main process alone (the as-built values 1.2 s, the load per
+tooth about 1.5 s and its plot 0.5 s), its workers done.  About 4.4 core-seconds idle of 20: the wall's lever.  Tried:
+the assemblies' STEP written in a forked worker (``parallel.start``) beside the build: no wall gain beyond the
+machine's swings (old 9.74 / 9.00 / 10.66 s, new 8.57 / 10.43 / 9.95 s), and the STEP of 7 assemblies changes (a
+DIRECTION written ``(1.,0.,-0.)`` is ``(1.,0.,0.)`` after the shapes' pickle round trip): not kept.  The peak's floor
+measured again: the build's main process holds 362 MiB of file-backed pages once OCP is loaded (``RssFile``), its
+anonymous memory 202 MiB after the import and 381 MiB at the end; the largest worker 377 MiB.
+``make`` from clean (the code of 1dcec08): 114.7 s wall, 215.0 user s, 19 "all checks passed", its 636 files those of
+02bfeb1.
 """
 
 from __future__ import annotations
