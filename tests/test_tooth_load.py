@@ -236,6 +236,33 @@ def seed002():
     return p, dd, analyse(d, dd.mount, p, cl.phi, cl.te, 0.0, span)
 
 
+def test_the_contacts_job_measures_the_load_per_tooth_the_build_would(seed002, monkeypatch):
+    """The drive direction's job of a pair with a load case goes on to the load per tooth on its contact
+    (``as_built.contact_and_load``, in a forked worker): the same rows, arrays and peaks to the last bit as the
+    analysis of that contact over its span here (the fixture's), and the as-built step takes it from the job instead
+    of measuring again."""
+    from propulsor.checks.motion.contact_events import DRIVE, REVERSE
+    from propulsor.parallel import Done, start
+    from propulsor.parts.noncircular_pair import as_built_outputs
+    from propulsor.parts.noncircular_pair.as_built import contact_and_load, contact_direction
+
+    p, dd, tl = seed002
+    monkeypatch.setenv("PROPULSOR_JOBS", "2")
+    job = start(contact_and_load, dd.d, dd.mount, DRIVE, p, math.radians(0.5))
+    assert not isinstance(job, Done)  # a worker's: the pickle round trips of a real build
+    c, got = job.result()
+    assert repr(got.rows) == repr(tl.rows)  # every float's shortest round-trip digits (nan equal to nan)
+    assert got.evaluations == tl.evaluations and got.lost == tl.lost
+    for name in ("theta", "phi", "T1", "T2", "loaded"):
+        assert np.array_equal(getattr(got, name), getattr(tl, name), equal_nan=True), name
+    assert repr({g: {j: vars(pk) for j, pk in got.peaks[g].items()} for g in got.peaks}) == \
+        repr({g: {j: vars(pk) for j, pk in tl.peaks[g].items()} for g in tl.peaks})
+    rev = contact_direction(dd.d, dd.mount, REVERSE, math.radians(0.5))
+    built = {"as_built": (Done((c, got)), Done(rev))}
+    ab = as_built_outputs._result(dd, built)
+    assert ab.drive is c and ab.reverse is rev and built["tooth_load"] is got
+
+
 def test_seed002_uneven_load_quantified(seed002):
     """Seed 002's expected drawback, measured: with a constant driver torque the normal force on a driver tooth is
     T1 over its lever arm, which follows the driver's pitch radius r1 = L/(1 + U); the most loaded tooth meshes where

@@ -25,7 +25,10 @@ def _result(dd, built: dict, progress=None) -> AsBuilt | None:
         return as_built(dd.d, dd.mount, built["proof"])
     if jobs == ():
         return None
-    return combine(dd.d, *_collected(jobs, progress, "as built: both directions' contact", "direction"))
+    drive, reverse = _collected(jobs, progress, "as built: both directions' contact", "direction")
+    if isinstance(drive, tuple):  # the drive direction's job measured the load per tooth on its contact too
+        drive, built["tooth_load"] = drive
+    return combine(dd.d, drive, reverse)
 
 
 def _collected(jobs, progress, phase: str, unit: str) -> list:

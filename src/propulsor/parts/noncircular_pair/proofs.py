@@ -131,7 +131,7 @@ def proofs(dd: PairDesign, w, built: dict) -> None:
     from ...parallel import start
     from ...progress import count_shared, counter
     from ...checks.motion.contact_events import DRIVE, REVERSE
-    from .as_built import contact_direction
+    from .as_built import contact_and_load, contact_direction
 
     p, d, prog = dd.p, dd.d, w.progress
     built["proof"] = prove(d, p.proof_phases_per_tooth, 4, prog, dd.mount)
@@ -141,9 +141,12 @@ def proofs(dd: PairDesign, w, built: dict) -> None:
     else:
         prog("as built: both directions' contact on the finished outlines, resolved by contact events")
         # the two directions beside each other and beside the other method's proof (in this process when no
-        # worker is free: then each start is the work itself); their sampled positions counted
+        # worker is free: then each start is the work itself); their sampled positions counted.  With a load case
+        # the drive direction's job goes on to the load per tooth on its contact (as_built.contact_and_load)
         counts = count_shared(prog, "as built: contact in both directions", 2, "position")
-        built["as_built"] = tuple(start(contact_direction, d, dd.mount, way, counter=count)
+        built["as_built"] = tuple(start(contact_and_load, d, dd.mount, way, p, counter=count)
+                                  if way == DRIVE and p.load_given else
+                                  start(contact_direction, d, dd.mount, way, counter=count)
                                   for way, count in zip((DRIVE, REVERSE), counts))
         if p.tolerance_grade:
             from .tolerance import iso1328, monte_carlo_cases, run_case, worst_cases
