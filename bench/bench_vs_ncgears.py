@@ -120,7 +120,7 @@ tooth about 1.5 s and its plot 0.5 s), its workers done.  About 4.4 core-seconds
 the assemblies' STEP written in a forked worker (``parallel.start``) beside the build: no wall gain beyond the
 machine's swings (old 9.74 / 9.00 / 10.66 s, new 8.57 / 10.43 / 9.95 s), and the STEP of 7 assemblies changes (a
 DIRECTION written ``(1.,0.,-0.)`` is ``(1.,0.,0.)`` after the shapes' pickle round trip): not kept.  Kept (db567b9):
-the drive direction's contact job goes on to the load per tooth on its contact (``as_built.contact_and_load``; only
+the drive direction's contact job goes on to the load per tooth on its contact (``tooth_load_outputs.contact_and_load``; only
 this part file has a load case), so the main process no longer analyses it after the contacts (1-1.5 s of it alone):
 our Fourier build, 1dcec08 in a worktree and the new tree in turn, ten pairs: 11.46 / 10.53 / 9.71 / 9.31 / 12.82 /
 10.95 / 13.40 / 10.55 / 12.13 / 10.56 -> 10.12 / 11.09 / 9.28 / 9.23 / 11.29 / 10.27 / 10.79 / 10.14 / 12.06 / 9.69 s

@@ -636,7 +636,7 @@ def test_counted_ticks_a_job_done_in_this_process():
     assert _counted(other, ticks.append, 4) is other and ticks == [3]
 
 
-def _proofs_world(monkeypatch, proof, tolerance_grade=0, compare_methods=False):
+def _proofs_world(monkeypatch, proof, tolerance_grade=0, compare_methods=False, load_given=False):
     """proofs() with its steps recorded: prove, start (run at once as a Done), count_shared, counter, the tolerance
     steps, compare."""
     import propulsor.parallel as parallel
@@ -661,7 +661,7 @@ def _proofs_world(monkeypatch, proof, tolerance_grade=0, compare_methods=False):
                         or [f"M{k}" for k in range(n)])
     monkeypatch.setattr(proofs, "compare", lambda p, d, prog: log.append(("compare", p, d, prog)) or ("OD", "OP", "note"))
     p = SimpleNamespace(proof_phases_per_tooth=6, tolerance_grade=tolerance_grade, pressure_angle_deg=25.0,
-                        tolerance_samples=2, tolerance_seed=9, compare_methods=compare_methods)
+                        tolerance_samples=2, tolerance_seed=9, compare_methods=compare_methods, load_given=load_given)
     said = []
     dd = SimpleNamespace(p=p, d="D", mount=76.0)
     return dd, SimpleNamespace(progress=said.append), said, log, ticks, as_built, tolerance
@@ -695,6 +695,21 @@ def test_proofs_run_the_whole_cycle_then_both_directions_as_built_and_the_tolera
     assert log[-1] == ("compare", dd.p, "D", say)
     assert said == ["as built: both directions' contact on the finished outlines, resolved by contact events",
                     "as made: 6 cases within ISO 1328 grade 8"]
+
+
+def test_with_a_load_case_the_drive_directions_job_goes_on_to_the_load_per_tooth(monkeypatch):
+    """A pair with a load case: the drive direction's job is the contact and the load per tooth on it
+    (``tooth_load_outputs.contact_and_load``, beside the build), the reverse one the contact alone."""
+    from propulsor.checks.motion.contact_events import DRIVE, REVERSE
+    from propulsor.parts.noncircular_pair.proofs import proofs
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import contact_and_load
+
+    pr = _proof(phi_drive=np.array([0.0, 0.5, 1.0, 1.5, 2.0, 2.5]))
+    dd, w, said, log, ticks, as_built, _ = _proofs_world(monkeypatch, pr, load_given=True)
+    built = {}
+    proofs(dd, w, built)
+    assert built["as_built"] == (("job", contact_and_load, ("D", 76.0, DRIVE, dd.p)),
+                                 ("job", as_built.contact_direction, ("D", 76.0, REVERSE)))
 
 
 def test_proofs_of_a_jammed_pair_build_nothing_as_built_and_without_a_grade_no_tolerance(monkeypatch):

@@ -238,13 +238,14 @@ def seed002():
 
 def test_the_contacts_job_measures_the_load_per_tooth_the_build_would(seed002, monkeypatch):
     """The drive direction's job of a pair with a load case goes on to the load per tooth on its contact
-    (``as_built.contact_and_load``, in a forked worker): the same rows, arrays and peaks to the last bit as the
+    (``tooth_load_outputs.contact_and_load``, in a forked worker): the same rows, arrays and peaks to the last bit as the
     analysis of that contact over its span here (the fixture's), and the as-built step takes it from the job instead
     of measuring again."""
     from propulsor.checks.motion.contact_events import DRIVE, REVERSE
     from propulsor.parallel import Done, start
     from propulsor.parts.noncircular_pair import as_built_outputs
-    from propulsor.parts.noncircular_pair.as_built import contact_and_load, contact_direction
+    from propulsor.parts.noncircular_pair.as_built import contact_direction
+    from propulsor.parts.noncircular_pair.tooth_load_outputs import contact_and_load
 
     p, dd, tl = seed002
     monkeypatch.setenv("PROPULSOR_JOBS", "2")

@@ -27,7 +27,7 @@ from ...checks.motion.contact_events import DRIVE, REVERSE, ContactLaw, PairOutl
 from ...laws.law import is_walking
 
 __all__ = ["AsBuilt", "HubSpeed", "as_built_speed", "pair_outlines", "contact_direction", "combine", "as_built",
-           "period_span", "contact_and_load"]
+           "period_span"]
 
 
 @dataclass(frozen=True)
@@ -170,17 +170,6 @@ def contact_direction(d, mount: float, direction: int, step_driver_rad: float | 
 
     return resolve_contact(pair_outlines(d, mount), d.run_law.theta, 0.0, period_span(d), direction,
                            step_driver_rad=step_driver_rad, tick=tick)
-
-
-def contact_and_load(d, mount: float, direction: int, p, step_driver_rad: float | None = None):
-    """:func:`contact_direction` and the load per tooth on that contact (:func:`.tooth_load_outputs.analyse`, as the
-    build reads it: the drive direction's, over the contact's span) in the same worker job: (ContactLaw, ToothLoad).
-    The analysis needs this one direction only, so it runs there, beside the rest of the build, not after it in the
-    build's own process (a single build's wall: its main process alone at the end for the 1-1.5 s it took)."""
-    from .tooth_load_outputs import analyse
-
-    c = contact_direction(d, mount, direction, step_driver_rad)
-    return c, analyse(d, mount, p, c.phi, c.te, float(c.phi[0]), float(c.phi[-1] - c.phi[0]))
 
 
 def _hub(d, c: ContactLaw) -> HubSpeed:

@@ -131,7 +131,8 @@ def proofs(dd: PairDesign, w, built: dict) -> None:
     from ...parallel import start
     from ...progress import count_shared, counter
     from ...checks.motion.contact_events import DRIVE, REVERSE
-    from .as_built import contact_and_load, contact_direction
+    from .as_built import contact_direction
+    from .tooth_load_outputs import contact_and_load
 
     p, d, prog = dd.p, dd.d, w.progress
     built["proof"] = prove(d, p.proof_phases_per_tooth, 4, prog, dd.mount)
@@ -142,7 +143,7 @@ def proofs(dd: PairDesign, w, built: dict) -> None:
         prog("as built: both directions' contact on the finished outlines, resolved by contact events")
         # the two directions beside each other and beside the other method's proof (in this process when no
         # worker is free: then each start is the work itself); their sampled positions counted.  With a load case
-        # the drive direction's job goes on to the load per tooth on its contact (as_built.contact_and_load)
+        # the drive direction's job goes on to the load per tooth on its contact (tooth_load_outputs.contact_and_load)
         counts = count_shared(prog, "as built: contact in both directions", 2, "position")
         built["as_built"] = tuple(start(contact_and_load, d, dd.mount, way, p, counter=count)
                                   if way == DRIVE and p.load_given else

@@ -23,7 +23,8 @@ from ... import policy
 from ...check import Check
 from ...progress import count_to
 
-__all__ = ["ToothLoad", "analyse", "summary", "equilibrium", "tooth_load_values", "FACTOR_SOURCES", "PHASE_COLUMNS", "PEAK_COLUMNS"]
+__all__ = ["ToothLoad", "analyse", "summary", "equilibrium", "tooth_load_values", "contact_and_load", "FACTOR_SOURCES",
+           "PHASE_COLUMNS", "PEAK_COLUMNS"]
 
 #: every factor of the report's factor table with its source
 FACTOR_SOURCES = {
@@ -471,6 +472,17 @@ def factor_rows(tl: ToothLoad, p, vals: dict) -> list[list]:
     return [[k, v[k], FACTOR_SOURCES[k]] for k in FACTOR_SOURCES]
 
 
+def contact_and_load(d, mount: float, direction: int, p, step_driver_rad: float | None = None):
+    """:func:`.as_built.contact_direction` and the load per tooth on that contact (:func:`analyse`, as the build reads
+    it: the drive direction's, over the contact's span) in one worker job: (ContactLaw, ToothLoad).  The analysis
+    needs this one direction only, so it runs there, beside the rest of the build, not after it in the build's own
+    process (a single build's wall: its main process alone at the end for the 1-1.5 s it took)."""
+    from .as_built import contact_direction
+
+    c = contact_direction(d, mount, direction, step_driver_rad)
+    return c, analyse(d, mount, p, c.phi, c.te, float(c.phi[0]), float(c.phi[-1] - c.phi[0]))
+
+
 def tooth_load_values(w, dd, built: dict, ab) -> None:
     """The load per tooth of a pair with a load case: tables, plot, checks, derived values, note (nothing without a
     load; a failed check where the pair has no as-built contact)."""
@@ -483,7 +495,7 @@ def tooth_load_values(w, dd, built: dict, ab) -> None:
         return
     w.progress("load per tooth: sharing, contact and root stress of every tooth over the period")
     dr = ab.drive
-    tl = built.pop("tooth_load", None)  # analysed on the drive contact by its own job (as_built.contact_and_load)
+    tl = built.pop("tooth_load", None)  # analysed on the drive contact by its own job (contact_and_load)
     if tl is None:
         tl = analyse(d, dd.mount, p, dr.phi, dr.te, float(dr.phi[0]), ab.span,
                      tick=count_to(w.progress, "load per tooth: sampled positions", "position"))
