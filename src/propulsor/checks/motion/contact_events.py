@@ -222,6 +222,11 @@ class ContactLaw:
         return "drive" if self.direction == DRIVE else "reverse"
 
     @property
+    def span(self) -> float:
+        """The law's angle resolved, first sample to last (rad)."""
+        return float(self.phi[-1] - self.phi[0])
+
+    @property
     def ok(self) -> np.ndarray:
         return np.isfinite(self.te)
 

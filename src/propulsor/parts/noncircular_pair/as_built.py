@@ -192,7 +192,7 @@ def combine(d, drive: ContactLaw, reverse: ContactLaw) -> AsBuilt:
     bl = (ter - ted) * r_H
     k = int(np.argmin(bl))
     hub = (_hub(d, drive), _hub(d, reverse)) if is_walking(d.law) else ()
-    return AsBuilt(drive, reverse, float(drive.phi[-1] - drive.phi[0]), hub, float(bl[k]), float(np.max(bl)),
+    return AsBuilt(drive, reverse, drive.span, hub, float(bl[k]), float(np.max(bl)),
                    float(x[k]))
 
 

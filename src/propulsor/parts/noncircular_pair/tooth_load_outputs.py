@@ -480,7 +480,7 @@ def contact_and_load(d, mount: float, direction: int, p, step_driver_rad: float 
     from .as_built import contact_direction
 
     c = contact_direction(d, mount, direction, step_driver_rad)
-    return c, analyse(d, mount, p, c.phi, c.te, float(c.phi[0]), float(c.phi[-1] - c.phi[0]))
+    return c, analyse(d, mount, p, c.phi, c.te, float(c.phi[0]), c.span)
 
 
 def tooth_load_values(w, dd, built: dict, ab) -> None:
