@@ -313,11 +313,82 @@ def test_prism_sides_meshed_apart_equal_the_strips_of_a_whole_pass():
     shape = T.occ_shape(solid)
     T.mesh_shape(shape, 0.005, 0.1, False, MESH_CHORD_LIMIT_MM)
     whole = T._strips(shape)
-    strips, _ = T._mesh_sides_apart(shape, 0.005, 0.1, False)
+    strips, _, _ = T._mesh_sides_apart(shape, 0.005, 0.1, False, False)
     assert sorted(strips) == sorted(whole)
     for k in strips:
         assert np.array_equal(strips[k][0], whole[k][0]) and np.array_equal(strips[k][1], whole[k][1])
         assert strips[k][2] == whole[k][2]
+
+
+def _triangulated_without_twins(solid, monkeypatch):
+    real = T._mesh_sides_apart
+    with monkeypatch.context() as m:
+        m.setattr(T, "_mesh_sides_apart", lambda shape, r, a, p, twins=True: real(shape, r, a, p, False))
+        return T.triangulate(solid, parallel=False)
+
+
+def test_a_prisms_second_cap_is_its_first_moved_node_for_node(monkeypatch):
+    """The spline prism's top cap (its bore's circle and the spline's four edges, 12 mm above the bottom) is not meshed
+    by BRepMesh: it is the bottom's triangulation moved up, and the mesh (nodes, triangles, reported deflection) is the
+    one BRepMesh gives meshing both caps, to the bit; closed and clean."""
+    solid = _spline_prism()
+    shape = T.occ_shape(solid)
+    twins = []
+    real = T._cap_twins
+    monkeypatch.setattr(T, "_cap_twins", lambda *a: twins.append(real(*a)) or twins[-1])
+    v, f, d = T.triangulate(solid, parallel=False)
+    assert len(twins) == 1 and len(twins[0]) == 1
+    (kb, (ka, t, pairs)), = twins[0].items()
+    assert t.tolist() == [0.0, 0.0, 12.0] and len(pairs) == 5  # four spline edges and the bore's circle
+    strips, _, copied = T._mesh_sides_apart(shape, 0.005, 0.1, False)
+    assert copied == {kb} and kb in strips and ka not in strips
+    v0, f0, d0 = _triangulated_without_twins(solid, monkeypatch)
+    assert np.array_equal(v, v0) and np.array_equal(f, f0) and d == d0
+    _closed_and_clean_in_float32(v, f)
+
+
+@pytest.mark.parametrize("shift, on_edges", [(2e-7, None), (3e-6, 1e-5)])
+def test_a_cap_copy_off_its_edges_is_refused(monkeypatch, shift, on_edges):
+    """A copy moved by 2e-7 mm off the top cap (beyond the 1e-7 mm its nodes must lie on the cap's edges within) is
+    refused once the nodes are compared, and the caps are meshed by BRepMesh: the same mesh as without copies.  With
+    the edges' tolerance widened to 1e-5 mm, a copy 3e-6 mm off is refused by the bore's band, whose own nodes on the
+    top circle it would miss by more than the merge tolerance (1e-6 mm: the mesh would open there)."""
+    solid = _spline_prism()
+    real = T._cap_twins
+    if on_edges is not None:
+        monkeypatch.setattr(T, "_STRIP_MATCH_MM", on_edges)
+
+    def off(*a):
+        return {kb: (ka, t + np.array([shift, 0.0, 0.0]), pairs) for kb, (ka, t, pairs) in real(*a).items()}
+
+    monkeypatch.setattr(T, "_cap_twins", off)
+    shape = T.occ_shape(solid)
+    strips, _, copied = T._mesh_sides_apart(shape, 0.005, 0.1, False)
+    assert copied == set()
+    v, f, d = T.triangulate(solid, parallel=False)
+    v0, f0, d0 = _triangulated_without_twins(solid, monkeypatch)
+    assert np.array_equal(v, v0) and np.array_equal(f, f0) and d == d0
+
+
+def test_a_user_prism_counterbored_from_the_top_has_no_twin_caps():
+    """A user's solid: the spline prism counterbored from the top (CadQuery ``cboreHole``).  The top cap's inner circle
+    is the counterbore's, not the bore's moved up: no copy; the mesh is closed, clean, outward, and within the
+    limit."""
+    import trimesh
+
+    solid = cq.Workplane().add(_spline_prism()).faces(">Z").workplane().cboreHole(10.0, 16.0, 4.0).val()
+    shape = T.occ_shape(solid)
+    faces = []
+    ex = T.TopExp_Explorer(shape, T.TopAbs_FACE)
+    while ex.More():
+        faces.append(T.TopoDS.Face_s(ex.Current()))
+        ex.Next()
+    assert T._cap_twins(faces, set()) == {}
+    v, f, d = T.triangulate(solid, parallel=False)
+    _closed_and_clean_in_float32(v, f)
+    mesh = trimesh.Trimesh(v, f, process=False)
+    assert d <= MESH_CHORD_LIMIT_MM and mesh.is_winding_consistent
+    assert 0 < mesh.volume and abs(mesh.volume - solid.Volume()) <= d * solid.Area()
 
 
 def test_equal_rows_is_numpys_row_unique_with_its_inverse():

@@ -282,11 +282,116 @@ def _strips(shape) -> dict:
     return out
 
 
-def _mesh_sides_apart(shape, request, angular_tol, parallel):
+def _edge_ends(face):
+    """(the face's edges, (n, 9) array of each edge's curve at its first, middle and last parameter), or None for a
+    face with a degenerate edge."""
+    edges, keys = [], []
+    ex = TopExp_Explorer(face, TopAbs_EDGE)
+    while ex.More():
+        edge = TopoDS.Edge_s(ex.Current())
+        ex.Next()
+        if BRep_Tool.Degenerated_s(edge):
+            return None
+        c = BRepAdaptor_Curve(edge)
+        u0, u1 = c.FirstParameter(), c.LastParameter()
+        keys.append(c.Value(u0).Coord() + c.Value(0.5 * (u0 + u1)).Coord() + c.Value(u1).Coord())
+        edges.append(edge)
+    return edges, np.array(keys, float).reshape(-1, 9)
+
+
+def _cap_twins(faces, skip) -> dict:
+    """{index of cap B: (index of cap A, t (3,), [(edge of A, edge of B), ...])} over the planar faces of `faces`
+    (not in `skip`): B is A translated by t along their common normal, as a prism's two caps are.  Candidates: the
+    two planes have the same frame (normal and x direction) and origins t apart along the normal, and every edge of
+    B has its one edge of A whose ends and middle, moved by t, are B's (within :data:`_STRIP_MATCH_MM`).  The copy
+    is proven on the nodes once A is meshed (:func:`_cap_copies`)."""
+    planes = []
+    for k, face in enumerate(faces):
+        if k in skip or not face.Location().IsIdentity():
+            continue
+        ad = BRepAdaptor_Surface(face)
+        if ad.GetType() != GeomAbs_Plane:
+            continue
+        pos = ad.Plane().Position()
+        planes.append((k, np.array(pos.Location().Coord()), pos.Direction().Coord(), pos.XDirection().Coord(), face))
+    twins, ends, taken = {}, {}, set()
+    for j, (kb, ob, nb, xb, fb) in enumerate(planes):
+        for ka, oa, na, xa, fa in planes[:j]:
+            if ka in taken or ka in twins or na != nb or xa != xb:
+                continue
+            t = ob - oa
+            h = float(t @ np.array(na))
+            if abs(h) <= _STRIP_MATCH_MM or np.abs(t - h * np.array(na)).max() > _STRIP_MATCH_MM:
+                continue
+            for k, f in ((ka, fa), (kb, fb)):
+                if k not in ends:
+                    ends[k] = _edge_ends(f)
+            if ends[ka] is None or ends[kb] is None or len(ends[ka][0]) != len(ends[kb][0]):
+                continue
+            (ea, Ka), (eb, Kb) = ends[ka], ends[kb]
+            close = np.abs(Kb[:, None, :] - (Ka[None, :, :] + np.tile(t, 3))).max(axis=2) <= _STRIP_MATCH_MM
+            if not (close.sum(axis=1) == 1).all() or not (close.sum(axis=0) == 1).all():
+                continue
+            twins[kb] = (ka, t, [(ea[int(i)], eb[r]) for r, i in enumerate(close.argmax(axis=1))])
+            taken.add(ka)
+            break
+    return twins
+
+
+def _cap_copies(faces, twins, beside, index, edges, triangulation):
+    """The caps B of `twins` (:func:`_cap_twins`) as A's triangulation moved by t: ({index of B: (nodes, triangles,
+    A's deflection)}, {index of an edge of B in `edges`: (its nodes, parameters)}), or None where the copy does not
+    hold.  It holds when, for every edge of B, the curve of B's edge at the parameters of its mate's nodes on A is
+    those nodes moved by t (within :data:`_STRIP_MATCH_MM`: the copied nodes lie on B's edges where B's own
+    discretisation would put them), and a face that has its own nodes on B's edge (a bore's band, meshed with the
+    other faces) has these, within :data:`MERGE_TOL_MM` (the mesh stays closed).  ``triangulation(face index)``: (nodes
+    (n, 3), triangles (m, 3)) of a meshed face, None if it has none."""
+    copies, polys = {}, {}
+    loc = TopLoc_Location()
+    for kb, (ka, t, pairs) in twins.items():
+        got = triangulation(ka)
+        tri = BRep_Tool.Triangulation_s(faces[ka], loc)
+        if got is None or tri is None:
+            return None
+        P, T = got
+        for ea, eb in pairs:
+            poly = BRep_Tool.PolygonOnTriangulation_s(ea, tri, loc)
+            if poly is None or not poly.HasParameters():
+                return None
+            idx = np.array([poly.Node(i) for i in range(1, poly.NbNodes() + 1)], np.int64) - 1
+            par = np.array([poly.Parameter(i) for i in range(1, poly.NbNodes() + 1)], float)
+            nodes = P[idx] + t
+            c = BRepAdaptor_Curve(eb)
+            on = np.array([c.Value(float(u)).Coord() for u in par], float).reshape(-1, 3)
+            if np.abs(on - nodes).max() > _STRIP_MATCH_MM:
+                return None
+            for f in beside.FindFromKey(eb):
+                i = index.FindIndex(f) - 1
+                other = triangulation(i)
+                if other is None:
+                    continue
+                pb = BRep_Tool.PolygonOnTriangulation_s(eb, BRep_Tool.Triangulation_s(faces[i], loc), loc)
+                if pb is None or pb.NbNodes() != len(nodes):
+                    return None
+                ib = np.array([pb.Node(j) for j in range(1, pb.NbNodes() + 1)], np.int64) - 1
+                theirs = other[0][ib]
+                if np.linalg.norm(theirs - nodes, axis=1).max() > MERGE_TOL_MM \
+                        and np.linalg.norm(theirs[::-1] - nodes, axis=1).max() > MERGE_TOL_MM:
+                    return None
+            polys[edges.FindIndex(eb)] = (nodes, par)
+        copies[kb] = (P + t, T, float(tri.Deflection()))
+    return copies, polys
+
+
+def _mesh_sides_apart(shape, request, angular_tol, parallel, twins: bool = True):
     """Every face but a prism's sides meshed by BRepMesh (as :func:`mesh_shape` meshes a ruled shape), then each side
     as strips (:func:`_strip`) on the nodes its edges got from the faces beside it: BRepMesh's own pass over the
-    sides (about half its time on a gear) is not made.  Returns ({face index: strip}, the compound of the other
-    faces), or None (the shape meshed by nobody yet) where a side's edge has no neighbour's nodes or no strip fits:
+    sides (about half its time on a gear) is not made.  With ``twins``, a prism's second cap (a planar face that is
+    another one translated along its normal, :func:`_cap_twins`) is not meshed either: it is the first cap's
+    triangulation moved (:func:`_cap_copies`; BRepMesh gives the two caps of a gear the same triangles, node for
+    node: a third of the gear's meshing time); where the copy does not hold, the shape is meshed again without it.
+    Returns ({face index: strip or copied cap}, the compound of the faces BRepMesh meshed, the indices of the copied
+    caps), or None (the shape meshed by nobody yet) where a side's edge has no neighbour's nodes or no strip fits:
     the caller meshes the whole shape then."""
     from OCP.BRep import BRep_Builder
     from OCP.TopoDS import TopoDS_Compound
@@ -302,12 +407,13 @@ def _mesh_sides_apart(shape, request, angular_tol, parallel):
         faces.append(face)
     if not sides:
         return None
+    caps = _cap_twins(faces, sides) if twins else {}
     BRepTools.Clean_s(shape)
     rest = TopoDS_Compound()
     builder = BRep_Builder()
     builder.MakeCompound(rest)
     for k, face in enumerate(faces):
-        if k not in sides:
+        if k not in sides and k not in caps:
             builder.Add(rest, face)
     prm = _params(request, angular_tol, parallel, True)
     _premesh_cylinders(rest, prm)
@@ -317,10 +423,39 @@ def _mesh_sides_apart(shape, request, angular_tol, parallel):
     TopExp.MapShapesAndAncestors_s(shape, TopAbs_EDGE, TopAbs_FACE, beside)
     index = TopTools_IndexedMapOfShape()
     TopExp.MapShapes_s(shape, TopAbs_FACE, index)
+    nodes_of = {}
+
+    def triangulation(i):
+        # (nodes, triangles) of the face of explorer index i as BRepMesh left it (the sides and copied caps: None)
+        if i not in nodes_of:
+            tri = BRep_Tool.Triangulation_s(faces[i], TopLoc_Location())
+            if tri is None or i in sides or i in caps:
+                nodes_of[i] = None
+            else:
+                nn, nt = tri.NbNodes(), tri.NbTriangles()
+                P = np.array([tri.Node(j).Coord() for j in range(1, nn + 1)], float).reshape(nn, 3)
+                T = np.array([tri.Triangle(j).Get() for j in range(1, nt + 1)], np.int64).reshape(nt, 3) - 1
+                nodes_of[i] = (P, T)
+        return nodes_of[i]
+
+    copied, polys = {}, {}
+    if caps:
+        edges = TopTools_IndexedMapOfShape()
+        TopExp.MapShapes_s(shape, TopAbs_EDGE, edges)
+        got = _cap_copies(faces, caps, beside, index, edges, triangulation)
+        if got is None:
+            BRepTools.Clean_s(shape)
+            return _mesh_sides_apart(shape, request, angular_tol, parallel, twins=False)
+        copied, polys = got
     on = {}
 
     def polygon(edge):
-        # the faces beside the edge that have a triangulation: not the sides (cleaned, not meshed)
+        # the faces beside the edge that have a triangulation: not the sides (cleaned, not meshed); a copied cap's
+        # edge: the copy's nodes
+        if polys:
+            got = polys.get(edges.FindIndex(edge))
+            if got is not None:
+                return got
         for f in beside.FindFromKey(edge):
             i = index.FindIndex(f)
             if i not in on:
@@ -331,14 +466,14 @@ def _mesh_sides_apart(shape, request, angular_tol, parallel):
                 return got
         return None
 
-    strips = {}
+    strips = dict(copied)
     for k, face in sides.items():
         st = _strip(face, polygon)
         if st is None:
             BRepTools.Clean_s(shape)
             return None
         strips[k] = st
-    return strips, rest
+    return strips, rest, set(copied)
 
 
 def refine_faces(shape, chord_tol, angular_tol, parallel, chord_limit, keep=()) -> float:
@@ -480,18 +615,20 @@ def triangulate(
 
     ruled = _ruled_only(shape)
 
-    def meshed(request):
-        """(achieved deflection, strips, the other faces meshed apart or None)"""
+    def meshed(request, twins=True):
+        """(achieved deflection, strips and copied caps, the other faces meshed apart or None, the copied caps)"""
         if ruled:
-            apart = _mesh_sides_apart(shape, request, angular_tol, parallel)
+            apart = _mesh_sides_apart(shape, request, angular_tol, parallel, twins)
             if apart is not None:
-                strips, rest = apart
-                return _worst_deflection(shape, chord_limit, strips), strips, rest
+                strips, rest, copied = apart
+                return _worst_deflection(shape, chord_limit, strips), strips, rest, copied
         achieved = mesh_shape(shape, request, angular_tol, parallel, chord_limit)
         strips = _strips(shape) if ruled else {}
-        return (_worst_deflection(shape, chord_limit, strips) if strips else achieved), strips, None
+        return (_worst_deflection(shape, chord_limit, strips) if strips else achieved), strips, None, set()
 
-    achieved, strips, rest = meshed(request)
+    achieved, strips, rest, copied = meshed(request)
+    if achieved > chord_limit and copied:  # a copied cap would not follow its first cap refined: both meshed
+        achieved, strips, rest, copied = meshed(request, twins=False)
     if achieved > chord_limit:  # the edges keep their nodes (refine_faces), and so the strips on them hold
         if rest is not None:
             achieved = max([refine_faces(rest, request, angular_tol, parallel, chord_limit)]
@@ -502,7 +639,7 @@ def triangulate(
         if achieved <= chord_limit:
             break
         request *= 0.5
-        achieved, strips, rest = meshed(request)
+        achieved, strips, rest, copied = meshed(request)
     verts, tris = [], []
     offset = 0
     ex = TopExp_Explorer(shape, TopAbs_FACE)
