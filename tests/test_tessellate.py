@@ -391,6 +391,29 @@ def test_a_user_prism_counterbored_from_the_top_has_no_twin_caps():
     assert 0 < mesh.volume and abs(mesh.volume - solid.Volume()) <= d * solid.Area()
 
 
+def test_the_faces_beside_an_edge_are_the_maps_list_in_its_order():
+    """:func:`_faces_beside` (a list's ends read directly) gives the faces OCP's iteration over TopExp's edge-to-faces
+    map gives, in the same order, at every edge of the spline prism and of a filleted CadQuery union."""
+    from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE
+    from OCP.TopExp import TopExp
+    from OCP.TopTools import TopTools_IndexedDataMapOfShapeListOfShape
+
+    union = cq.Workplane("XY").rect(40, 20).extrude(10).edges("|Z").fillet(3.0) \
+        .union(cq.Workplane("XY").center(15, 0).circle(12).extrude(16)).val()
+    for solid in (_spline_prism(), union):
+        shape = T.occ_shape(solid)
+        beside = TopTools_IndexedDataMapOfShapeListOfShape()
+        TopExp.MapShapesAndAncestors_s(shape, TopAbs_EDGE, TopAbs_FACE, beside)
+        sizes = set()
+        for i in range(1, beside.Extent() + 1):
+            edge = beside.FindKey(i)
+            theirs, ours = list(beside.FindFromKey(edge)), T._faces_beside(beside, edge)
+            sizes.add(len(theirs))
+            assert len(ours) == len(theirs)
+            assert all(a.IsEqual(b) for a, b in zip(ours, theirs))
+        assert 2 in sizes
+
+
 def test_equal_rows_is_numpys_row_unique_with_its_inverse():
     """``_equal_rows`` (one lexicographic sort of the columns) against ``np.unique(v, axis=0, return_inverse=True)``:
     the distinct rows in the same order and each row's index among them, on arrays full of repeated rows, of one to
