@@ -347,6 +347,24 @@ def test_a_prisms_second_cap_is_its_first_moved_node_for_node(monkeypatch):
     _closed_and_clean_in_float32(v, f)
 
 
+def test_a_copied_cap_survives_its_neighbours_meshed_again(monkeypatch):
+    """The spline prism's bore chamfered at both ends (45 deg cones, which miss the request and are meshed again
+    alone): the caps are still twins, the top one copied, and the cones' second meshing leaves the bottom cap (and
+    so the copy) as it was: the mesh is the one meshing both caps by BRepMesh gives, to the bit, within the limit."""
+    solid = cq.Workplane().add(_spline_prism()).faces(">Z or <Z").edges("%CIRCLE").chamfer(2.5).val()
+    shape = T.occ_shape(solid)
+    _, _, copied = T._mesh_sides_apart(shape, 0.005, 0.1, False)
+    assert len(copied) == 1
+    refined = []
+    refine_faces = T.refine_faces
+    monkeypatch.setattr(T, "refine_faces", lambda *a, **k: refined.append(refine_faces(*a, **k)) or refined[-1])
+    v, f, d = T.triangulate(solid, parallel=False)
+    assert len(refined) == 1 and d <= MESH_CHORD_LIMIT_MM
+    v0, f0, d0 = _triangulated_without_twins(solid, monkeypatch)
+    assert np.array_equal(v, v0) and np.array_equal(f, f0) and d == d0
+    _closed_and_clean_in_float32(v, f)
+
+
 @pytest.mark.parametrize("shift, on_edges", [(2e-7, None), (3e-6, 1e-5)])
 def test_a_cap_copy_off_its_edges_is_refused(monkeypatch, shift, on_edges):
     """A copy moved by 2e-7 mm off the top cap (beyond the 1e-7 mm its nodes must lie on the cap's edges within) is

@@ -639,21 +639,21 @@ def triangulate(
 
     ruled = _ruled_only(shape)
 
-    def meshed(request, twins=True):
-        """(achieved deflection, strips and copied caps, the other faces meshed apart or None, the copied caps)"""
+    def meshed(request):
+        """(achieved deflection, strips and copied caps, the other faces meshed apart or None)"""
         if ruled:
-            apart = _mesh_sides_apart(shape, request, angular_tol, parallel, twins)
+            apart = _mesh_sides_apart(shape, request, angular_tol, parallel)
             if apart is not None:
-                strips, rest, copied = apart
-                return _worst_deflection(shape, chord_limit, strips), strips, rest, copied
+                strips, rest, _ = apart
+                return _worst_deflection(shape, chord_limit, strips), strips, rest
         achieved = mesh_shape(shape, request, angular_tol, parallel, chord_limit)
         strips = _strips(shape) if ruled else {}
-        return (_worst_deflection(shape, chord_limit, strips) if strips else achieved), strips, None, set()
+        return (_worst_deflection(shape, chord_limit, strips) if strips else achieved), strips, None
 
-    achieved, strips, rest, copied = meshed(request)
-    if achieved > chord_limit and copied:  # a copied cap would not follow its first cap refined: both meshed
-        achieved, strips, rest, copied = meshed(request, twins=False)
-    if achieved > chord_limit:  # the edges keep their nodes (refine_faces), and so the strips on them hold
+    achieved, strips, rest = meshed(request)
+    # the edges keep their nodes (refine_faces), and so the strips on them hold; a copied cap's first cap is a plane
+    # (its deflection nil), which refine_faces leaves as it is, and so the copy holds too
+    if achieved > chord_limit:
         if rest is not None:
             achieved = max([refine_faces(rest, request, angular_tol, parallel, chord_limit)]
                            + [st[2] for st in strips.values()])
@@ -663,7 +663,7 @@ def triangulate(
         if achieved <= chord_limit:
             break
         request *= 0.5
-        achieved, strips, rest, copied = meshed(request)
+        achieved, strips, rest = meshed(request)
     verts, tris = [], []
     offset = 0
     ex = TopExp_Explorer(shape, TopAbs_FACE)
