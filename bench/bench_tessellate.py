@@ -12,6 +12,19 @@ CPU s, 97 562 triangles, 0.00993 mm (BRepMesh's side faces: 0.0188 mm, meshed ag
 driver 0.55 s, 26 956, 0.00887 mm; the sides as strips on their own triangulation's edge nodes (0bb9148) 1.81 s,
 29 436, 0.00249 mm and 0.47 s, 9 484, 0.00250 mm; the sides not meshed by BRepMesh at all (3dbf814) 1.00 s and
 0.43 s, the same triangles.
+2026-12-02 (2 cores; every solid of ``make``'s STEP files but the assemblies, 57, read once; 13ee34b's
+``tessellate.py`` loaded beside the new one in one process, the two meshing each solid in turn, least of five each):
+24.24 -> 18.86 CPU s in all (a second run 20.84 -> 15.82), every mesh identical (nodes, triangles, deflection).  Three
+changes: a prism's second cap is its first cap's triangulation moved (BRepMesh gives a gear's two caps the same
+triangles node for node; its Delaunay of a cap is most of what BRepMesh still does on a gear: 0.35-0.45 s of the
+seed-002 driven wheel's 1.0 s); the faces beside an edge read by the list's ends (OCP iterates a
+TopTools_ListOfShape at about 0.3 ms an element: half a second of that wheel); a side's checks without numpy's
+``cross`` and ``norm`` on 3-vectors.  Per solid: the seed-002 driven wheel 1.18 -> 0.78 s, the final drive's ring
+1.05 -> 0.73, the polysector gear 0.55 -> 0.37; the cams' and the road wheel's solids (no prism sides) and the
+balancer (a torus face: BRepMesh meshes it whole) as before.  ``make``'s single build of all part files, the old tree
+and the new in turn, three rounds (the third new first): 149.2 / 134.2 / 127.3 -> 128.2 / 116.0 / 114.3 s wall, 282.5 /
+252.3 / 242.6 -> 242.1 / 219.3 / 216.3 user s (about 10 % of make's CPU paired; the machine drifted faster through
+the rounds), the 635 files of the build identical to the reference list.
 """
 
 from __future__ import annotations

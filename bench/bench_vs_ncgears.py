@@ -130,6 +130,12 @@ measured again: the build's main process holds 362 MiB of file-backed pages once
 anonymous memory 202 MiB after the import and 381 MiB at the end; the largest worker 377 MiB.
 ``make`` from clean (the code of 1dcec08): 114.7 s wall, 215.0 user s, 19 "all checks passed", its 636 files those of
 02bfeb1.
+2026-12-02, a thirteenth session (2 cores; the meshing: ``bench_tessellate.py``'s note).  This benchmark at 88968cf,
+ncgears on a slow minute: ncgears 56.77 s wall (60.11 CPU s), peak 289 MiB; ours 9.04 s wall (14.43 CPU s), peak 680
+MiB: wall ratio 0.159, CPU ratio 0.240; ``ncg_elliptical.toml`` 7.90 s wall (11.62 CPU s).  Our Fourier build alone,
+13ee34b in a worktree and the new tree in turn, four rounds: 9.21 / 9.08 / 14.36 / 12.05 -> 9.56 / 12.10 / 13.49 /
+13.66 s wall (the machine swinging by 50 % within the minute; the meshing's gain here, about 0.5 CPU s of its two
+wheels, is below that); ``make``'s build of all part files, paired: about 10 % less CPU (``bench_tessellate.py``).
 """
 
 from __future__ import annotations
