@@ -48,11 +48,13 @@ def fix_header(path: str | Path) -> None:
         raise ValueError(f"{p}: no STEP header section")
     head = data[:head_end].decode("latin-1")
     head = _TS.sub(f"'{STEP_TIMESTAMP}'", head, count=1)
-    body = data[head_end:].decode("latin-1")
-    # OCCT numbers assembly occurrences with a process-wide counter: renumber 1, 2, ...
-    counter = iter(range(1, 1 << 30))
-    body = _NAUO.sub(lambda m: f"{m.group(1)}'{next(counter)}'", body)
-    p.write_bytes(head.encode("latin-1") + body.encode("latin-1"))
+    body = data[head_end:]
+    # OCCT numbers assembly occurrences with a process-wide counter: renumber 1, 2, ...  (a body without one is
+    # written as it is: a gear's 4 MB are not decoded, searched and encoded again for nothing)
+    if b"NEXT_ASSEMBLY_USAGE_OCCURRENCE" in body:
+        counter = iter(range(1, 1 << 30))
+        body = _NAUO.sub(lambda m: f"{m.group(1)}'{next(counter)}'", body.decode("latin-1")).encode("latin-1")
+    p.write_bytes(head.encode("latin-1") + body)
 
 
 def _write_failed(path: Path, what: str) -> Exception:
