@@ -362,22 +362,22 @@ def _cap_twins(faces, skip) -> dict:
     return twins
 
 
-def _cap_copies(faces, twins, beside, index, edges, triangulation):
+def _cap_copies(faces, twins, beside, edges):
     """The caps B of `twins` (:func:`_cap_twins`) as A's triangulation moved by t: ({index of B: (nodes, triangles,
     A's deflection)}, {index of an edge of B in `edges`: (its nodes, parameters)}), or None where the copy does not
     hold.  It holds when, for every edge of B, the curve of B's edge at the parameters of its mate's nodes on A is
     those nodes moved by t (within :data:`_STRIP_MATCH_MM`: the copied nodes lie on B's edges where B's own
     discretisation would put them), and a face that has its own nodes on B's edge (a bore's band, meshed with the
-    other faces) has these, within :data:`MERGE_TOL_MM` (the mesh stays closed).  ``triangulation(face index)``: (nodes
-    (n, 3), triangles (m, 3)) of a meshed face, None if it has none."""
+    other faces) has these, within :data:`MERGE_TOL_MM` (the mesh stays closed)."""
     copies, polys = {}, {}
     loc = TopLoc_Location()
     for kb, (ka, t, pairs) in twins.items():
-        got = triangulation(ka)
         tri = BRep_Tool.Triangulation_s(faces[ka], loc)
-        if got is None or tri is None:
+        if tri is None:
             return None
-        P, T = got
+        nn, nt = tri.NbNodes(), tri.NbTriangles()
+        P = np.array([tri.Node(j).Coord() for j in range(1, nn + 1)], float).reshape(nn, 3)
+        T = np.array([tri.Triangle(j).Get() for j in range(1, nt + 1)], np.int64).reshape(nt, 3) - 1
         for ea, eb in pairs:
             poly = BRep_Tool.PolygonOnTriangulation_s(ea, tri, loc)
             if poly is None or not poly.HasParameters():
@@ -390,15 +390,13 @@ def _cap_copies(faces, twins, beside, index, edges, triangulation):
             if np.abs(on - nodes).max() > _STRIP_MATCH_MM:
                 return None
             for f in _faces_beside(beside, eb):
-                i = index.FindIndex(f) - 1
-                other = triangulation(i)
-                if other is None:
+                other = BRep_Tool.Triangulation_s(TopoDS.Face_s(f), loc)
+                if other is None:  # B itself, a side: not meshed
                     continue
-                pb = BRep_Tool.PolygonOnTriangulation_s(eb, BRep_Tool.Triangulation_s(faces[i], loc), loc)
+                pb = BRep_Tool.PolygonOnTriangulation_s(eb, other, loc)
                 if pb is None or pb.NbNodes() != len(nodes):
                     return None
-                ib = np.array([pb.Node(j) for j in range(1, pb.NbNodes() + 1)], np.int64) - 1
-                theirs = other[0][ib]
+                theirs = np.array([other.Node(pb.Node(j)).Coord() for j in range(1, pb.NbNodes() + 1)], float)
                 if np.linalg.norm(theirs - nodes, axis=1).max() > MERGE_TOL_MM \
                         and np.linalg.norm(theirs[::-1] - nodes, axis=1).max() > MERGE_TOL_MM:
                     return None
@@ -447,26 +445,11 @@ def _mesh_sides_apart(shape, request, angular_tol, parallel, twins: bool = True)
     TopExp.MapShapesAndAncestors_s(shape, TopAbs_EDGE, TopAbs_FACE, beside)
     index = TopTools_IndexedMapOfShape()
     TopExp.MapShapes_s(shape, TopAbs_FACE, index)
-    nodes_of = {}
-
-    def triangulation(i):
-        # (nodes, triangles) of the face of explorer index i as BRepMesh left it (the sides and copied caps: None)
-        if i not in nodes_of:
-            tri = BRep_Tool.Triangulation_s(faces[i], TopLoc_Location())
-            if tri is None or i in sides or i in caps:
-                nodes_of[i] = None
-            else:
-                nn, nt = tri.NbNodes(), tri.NbTriangles()
-                P = np.array([tri.Node(j).Coord() for j in range(1, nn + 1)], float).reshape(nn, 3)
-                T = np.array([tri.Triangle(j).Get() for j in range(1, nt + 1)], np.int64).reshape(nt, 3) - 1
-                nodes_of[i] = (P, T)
-        return nodes_of[i]
-
     copied, polys = {}, {}
     if caps:
         edges = TopTools_IndexedMapOfShape()
         TopExp.MapShapes_s(shape, TopAbs_EDGE, edges)
-        got = _cap_copies(faces, caps, beside, index, edges, triangulation)
+        got = _cap_copies(faces, caps, beside, edges)
         if got is None:
             BRepTools.Clean_s(shape)
             return _mesh_sides_apart(shape, request, angular_tol, parallel, twins=False)
