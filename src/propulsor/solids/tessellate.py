@@ -177,6 +177,19 @@ def _cross(a, b) -> np.ndarray:
                             a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]])
 
 
+def _edges(face) -> list | None:
+    """The face's edges in the explorer's order, or None if one is degenerate (a cone's apex, a sphere's pole)."""
+    out = []
+    ex = TopExp_Explorer(face, TopAbs_EDGE)
+    while ex.More():
+        edge = TopoDS.Edge_s(ex.Current())
+        ex.Next()
+        if BRep_Tool.Degenerated_s(edge):
+            return None
+        out.append(edge)
+    return out
+
+
 def _strip(face, polygon) -> tuple[np.ndarray, np.ndarray, float] | None:
     """The triangles of a prism's side face (a linear extrusion of a curve bounded by two copies of the curve's edge
     and two straight edges along the extrusion) as strips between its two curve edges' nodes, node i of the one
@@ -198,12 +211,10 @@ def _strip(face, polygon) -> tuple[np.ndarray, np.ndarray, float] | None:
     dd = ad.Direction().Coord()
     d = np.array(dd)
     curves, lines = [], []
-    ex = TopExp_Explorer(face, TopAbs_EDGE)
-    while ex.More():
-        edge = TopoDS.Edge_s(ex.Current())
-        ex.Next()
-        if BRep_Tool.Degenerated_s(edge):
-            return None
+    edges = _edges(face)
+    if edges is None:
+        return None
+    for edge in edges:
         cad = BRepAdaptor_Curve(edge)
         if cad.GetType() == GeomAbs_Line:
             u = cad.Line().Direction().Coord()
@@ -309,17 +320,14 @@ def _faces_beside(beside, edge) -> list:
 def _edge_ends(face):
     """(the face's edges, (n, 9) array of each edge's curve at its first, middle and last parameter), or None for a
     face with a degenerate edge."""
-    edges, keys = [], []
-    ex = TopExp_Explorer(face, TopAbs_EDGE)
-    while ex.More():
-        edge = TopoDS.Edge_s(ex.Current())
-        ex.Next()
-        if BRep_Tool.Degenerated_s(edge):
-            return None
+    edges = _edges(face)
+    if edges is None:
+        return None
+    keys = []
+    for edge in edges:
         c = BRepAdaptor_Curve(edge)
         u0, u1 = c.FirstParameter(), c.LastParameter()
         keys.append(c.Value(u0).Coord() + c.Value(0.5 * (u0 + u1)).Coord() + c.Value(u1).Coord())
-        edges.append(edge)
     return edges, np.array(keys, float).reshape(-1, 9)
 
 
@@ -514,12 +522,7 @@ def refine_faces(shape, chord_tol, angular_tol, parallel, chord_limit, keep=()) 
 
 def _has_apex(face) -> bool:
     """Whether the face has a degenerate edge (a point of its surface that an edge collapses to)."""
-    ex = TopExp_Explorer(face, TopAbs_EDGE)
-    while ex.More():
-        if BRep_Tool.Degenerated_s(TopoDS.Edge_s(ex.Current())):
-            return True
-        ex.Next()
-    return False
+    return _edges(face) is None
 
 
 #: barycentric samples per triangle side where a triangulation's distance from its surface is measured
