@@ -18,7 +18,7 @@ driver 0.55 s, 26 956, 0.00887 mm; the sides as strips on their own triangulatio
 changes: a prism's second cap is its first cap's triangulation moved (BRepMesh gives a gear's two caps the same
 triangles node for node; its Delaunay of a cap is most of what BRepMesh still does on a gear: 0.35-0.45 s of the
 seed-002 driven wheel's 1.0 s); the faces beside an edge read by the list's ends (OCP iterates a
-TopTools_ListOfShape at about 0.3 ms an element: half a second of that wheel); a side's checks without numpy's
+TopTools_ListOfShape at 0.16-0.24 ms an element: 0.3-0.45 s of that wheel); a side's checks without numpy's
 ``cross`` and ``norm`` on 3-vectors.  Per solid: the seed-002 driven wheel 1.18 -> 0.78 s, the final drive's ring
 1.05 -> 0.73, the polysector gear 0.55 -> 0.37; the cams' and the road wheel's solids (no prism sides) and the
 balancer (a torus face: BRepMesh meshes it whole) as before.  ``make``'s single build of all part files, the old tree
