@@ -50,6 +50,23 @@ def test_faces_that_miss_the_chord_are_meshed_again_alone(monkeypatch):
     _closed_and_clean_in_float32(v, f)
 
 
+def test_one_solid_placed_twice_is_meshed_twice_alike():
+    """A compound of one solid at two places (as an assembly's STEP holds it; the faces share their triangulation):
+    the chamfer cone that misses the request is meshed again at its first place, and its second place, whose
+    triangulation that cleared, is not read for a deflection (an AttributeError before).  The mesh is the solid's
+    own mesh twice, the second moved by the placement; both closed and clean, within the limit."""
+    disc = _disc(8.0, drill_point=False)
+    v1, f1, d1 = T.triangulate(disc, parallel=False)
+    comp = cq.Compound.makeCompound([disc, disc.moved(cq.Location(cq.Vector(120.0, 0.0, 0.0)))])
+    v, f, d = T.triangulate(comp, parallel=False)
+    n, m = len(v1), len(f1)
+    assert len(v) == 2 * n and len(f) == 2 * m and d == d1 <= MESH_CHORD_LIMIT_MM
+    assert np.array_equal(v[:n], v1) and np.array_equal(f[:m], f1)
+    assert np.allclose(v[n:] - np.array([120.0, 0.0, 0.0]), v1, rtol=0.0, atol=1e-9)
+    assert np.array_equal(f[m:] - n, f1)
+    _closed_and_clean_in_float32(v, f)
+
+
 def test_an_apex_is_measured_not_halved(monkeypatch):
     """A drill point's cone reaches its apex, where OCCT's estimate of the deflection (made in the parameter
     plane) is 0.0205 mm: refined alone it folds once written in float32, so it is kept and measured against

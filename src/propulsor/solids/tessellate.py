@@ -501,14 +501,15 @@ def refine_faces(shape, chord_tol, angular_tol, parallel, chord_limit, keep=()) 
     degenerate edge (a cone's apex, a sphere's pole) is left as it is: the nodes inserted there crowd
     into slivers that fold once the mesh is written in single precision (STL), and the caller's halving
     takes it on (its deflection measured: :func:`_apex_deflection`).  ``keep``: the strips of a prism's sides
-    (:func:`_strips`, by face index), left as they are and counted with their own deflection.  Returns
-    the largest achieved deflection."""
+    (:func:`_strips`, by face index), left as they are and counted with their own deflection.  A face placed twice in
+    a compound (one solid at two places) shares its triangulation: cleared at its first place, it is not looked at
+    again at the second.  Returns the largest achieved deflection."""
     ex = TopExp_Explorer(shape, TopAbs_FACE)
     k = 0
     while ex.More():
         face = TopoDS.Face_s(ex.Current())
-        if k not in keep and BRep_Tool.Triangulation_s(face, TopLoc_Location()).Deflection() > chord_limit \
-                and not _has_apex(face):
+        tri = BRep_Tool.Triangulation_s(face, TopLoc_Location())
+        if k not in keep and tri is not None and tri.Deflection() > chord_limit and not _has_apex(face):
             BRepTools.Clean_s(face)
         ex.Next()
         k += 1
