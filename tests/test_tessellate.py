@@ -10,6 +10,7 @@ import pytest
 
 from propulsor.checks.mesh import edge_counts, self_intersections
 from propulsor.policy import MESH_CHORD_LIMIT_MM
+from propulsor.solids import prism_mesh as P
 from propulsor.solids import tessellate as T
 
 
@@ -268,7 +269,7 @@ def test_prism_sides_are_strips_within_the_chord_they_report():
     shape = T.occ_shape(solid)
     T.mesh_shape(shape, 0.005, 0.1, False, MESH_CHORD_LIMIT_MM)
     sides = _side_faces(shape)
-    strips = T._strips(shape)
+    strips = P.side_strips(shape)
     assert sides and len(strips) == len(sides)
     occt = max(T.BRep_Tool.Triangulation_s(f, T.TopLoc_Location()).Deflection() for f in sides)
     v, f, d = T.triangulate(solid, parallel=False)
@@ -320,7 +321,7 @@ def test_a_side_face_no_strip_fits_sends_the_whole_prism_to_brepmesh(monkeypatch
     mesh = trimesh.Trimesh(v, f, process=False)
     assert d <= MESH_CHORD_LIMIT_MM and mesh.is_winding_consistent
     assert 0 < mesh.volume and abs(mesh.volume - solid.Volume()) <= d * solid.Area()
-    assert len(T._strips(T.occ_shape(solid))) >= len(_side_faces(T.occ_shape(solid))) - 2
+    assert len(P.side_strips(T.occ_shape(solid))) >= len(_side_faces(T.occ_shape(solid))) - 2
 
 
 def test_prism_sides_meshed_apart_equal_the_strips_of_a_whole_pass():
@@ -329,7 +330,7 @@ def test_prism_sides_meshed_apart_equal_the_strips_of_a_whole_pass():
     solid = _spline_prism()
     shape = T.occ_shape(solid)
     T.mesh_shape(shape, 0.005, 0.1, False, MESH_CHORD_LIMIT_MM)
-    whole = T._strips(shape)
+    whole = P.side_strips(shape)
     strips, _, _ = T._mesh_sides_apart(shape, 0.005, 0.1, False, False)
     assert sorted(strips) == sorted(whole)
     for k in strips:
@@ -351,8 +352,8 @@ def test_a_prisms_second_cap_is_its_first_moved_node_for_node(monkeypatch):
     solid = _spline_prism()
     shape = T.occ_shape(solid)
     twins = []
-    real = T._cap_twins
-    monkeypatch.setattr(T, "_cap_twins", lambda *a: twins.append(real(*a)) or twins[-1])
+    real = P.cap_twins
+    monkeypatch.setattr(P, "cap_twins", lambda *a: twins.append(real(*a)) or twins[-1])
     v, f, d = T.triangulate(solid, parallel=False)
     assert len(twins) == 1 and len(twins[0]) == 1
     (kb, (ka, t, pairs)), = twins[0].items()
@@ -389,14 +390,14 @@ def test_a_cap_copy_off_its_edges_is_refused(monkeypatch, shift, on_edges):
     the edges' tolerance widened to 1e-5 mm, a copy 3e-6 mm off is refused by the bore's band, whose own nodes on the
     top circle it would miss by more than the merge tolerance (1e-6 mm: the mesh would open there)."""
     solid = _spline_prism()
-    real = T._cap_twins
+    real = P.cap_twins
     if on_edges is not None:
-        monkeypatch.setattr(T, "_STRIP_MATCH_MM", on_edges)
+        monkeypatch.setattr(P, "STRIP_MATCH_MM", on_edges)
 
     def off(*a):
         return {kb: (ka, t + np.array([shift, 0.0, 0.0]), pairs) for kb, (ka, t, pairs) in real(*a).items()}
 
-    monkeypatch.setattr(T, "_cap_twins", off)
+    monkeypatch.setattr(P, "cap_twins", off)
     shape = T.occ_shape(solid)
     strips, _, copied = T._mesh_sides_apart(shape, 0.005, 0.1, False)
     assert copied == set()
@@ -418,7 +419,7 @@ def test_a_user_prism_counterbored_from_the_top_has_no_twin_caps():
     while ex.More():
         faces.append(T.TopoDS.Face_s(ex.Current()))
         ex.Next()
-    assert T._cap_twins(faces, set()) == {}
+    assert P.cap_twins(faces, set()) == {}
     v, f, d = T.triangulate(solid, parallel=False)
     _closed_and_clean_in_float32(v, f)
     mesh = trimesh.Trimesh(v, f, process=False)
@@ -427,7 +428,7 @@ def test_a_user_prism_counterbored_from_the_top_has_no_twin_caps():
 
 
 def test_the_faces_beside_an_edge_are_the_maps_list_in_its_order():
-    """:func:`_faces_beside` (a list's ends read directly) gives the faces OCP's iteration over TopExp's edge-to-faces
+    """:func:`propulsor.solids.prism_mesh.faces_beside` (a list's ends read directly) gives the faces OCP's iteration over TopExp's edge-to-faces
     map gives, in the same order, at every edge of the spline prism and of a filleted CadQuery union."""
     from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE
     from OCP.TopExp import TopExp
@@ -442,7 +443,7 @@ def test_the_faces_beside_an_edge_are_the_maps_list_in_its_order():
         sizes = set()
         for i in range(1, beside.Extent() + 1):
             edge = beside.FindKey(i)
-            theirs, ours = list(beside.FindFromKey(edge)), T._faces_beside(beside, edge)
+            theirs, ours = list(beside.FindFromKey(edge)), P.faces_beside(beside, edge)
             sizes.add(len(theirs))
             assert len(ours) == len(theirs)
             assert all(a.IsEqual(b) for a, b in zip(ours, theirs))

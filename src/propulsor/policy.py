@@ -12,6 +12,8 @@ CHORD_TOL_MM = 0.005
 ANGULAR_TOL_RAD = 0.1
 #: two points closer than this are the same point
 POINT_TOL_MM = 1e-7
+#: nodes of different faces of a mesh closer than this are the same node (mm)
+MERGE_TOL_MM = 1e-6
 
 # --- files read back ------------------------------------------------------------
 #: the largest manifest.json a build, the gallery or a check reads (bytes); a real one is below 200 kB
