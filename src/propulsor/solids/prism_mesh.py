@@ -6,7 +6,10 @@ of a curve) with diagonals across the curve and then again with interior nodes, 
 planar caps, which come out the same node for node.  Here a side is strips between the nodes its two curve edges
 share with the caps (:func:`side_strip`), and the second cap is the first one's triangulation moved
 (:func:`cap_twins`, :func:`cap_copies`); :func:`mesh_sides_apart` has BRepMesh mesh only the rest.  Every node used
-is one of an edge's discretisation that the neighbouring faces share, so the mesh stays closed.
+is one of an edge's discretisation that the neighbouring faces share, so the mesh stays closed.  A face placed by
+a location (a solid moved by CadQuery's ``moved``, a part of a fuse with one) is taken where it is placed: OCCT's
+adaptors place its surface and curves, and a triangulation's nodes are placed by the location it is stored with
+(:func:`placed`).
 """
 
 from __future__ import annotations
@@ -33,6 +36,22 @@ __all__ = ["STRIP_MATCH_MM", "cap_copies", "cap_twins", "edges_of", "faces_besid
 #: two nodes of a prism's side face are one above the other when their offset is off the extrusion's line by less
 #: than this (mm); a copied cap's node lies on its edge within it too
 STRIP_MATCH_MM = 1e-7
+
+
+def placed(P: np.ndarray, loc) -> np.ndarray:
+    """Points P (n, 3) of a face's triangulation (stored in the face's own frame) where the location ``loc`` (the one
+    ``BRep_Tool.Triangulation_s`` returned with it) puts them."""
+    if loc.IsIdentity():
+        return P
+    t = loc.Transformation()
+    R = np.array([[t.Value(r, c) for c in (1, 2, 3)] for r in (1, 2, 3)])
+    return P @ R.T + np.array([t.Value(r, 4) for r in (1, 2, 3)])
+
+
+def _triangulation(face):
+    """(the face's triangulation or None, the location its nodes are placed by)."""
+    loc = TopLoc_Location()
+    return BRep_Tool.Triangulation_s(face, loc), loc
 
 
 def _cross(a, b) -> np.ndarray:
@@ -71,7 +90,7 @@ def side_strip(face, polygon) -> tuple[np.ndarray, np.ndarray, float] | None:
     share, so the mesh stays closed.  Returns (nodes (2n, 3), triangles (m, 3) into them, oriented as the surface's
     own parameters (as a face triangulation's are), deflection)."""
     ad = BRepAdaptor_Surface(face)
-    if ad.GetType() != GeomAbs_SurfaceOfExtrusion or not face.Location().IsIdentity():
+    if ad.GetType() != GeomAbs_SurfaceOfExtrusion:
         return None
     dd = ad.Direction().Coord()
     d = np.array(dd)
@@ -133,9 +152,10 @@ def side_strip(face, polygon) -> tuple[np.ndarray, np.ndarray, float] | None:
     return P, tris, dev
 
 
-def polygon_on(tri, loc=None):
-    """``polygon(edge)`` of :func:`side_strip` read from the triangulation ``tri``."""
-    loc = TopLoc_Location() if loc is None else loc
+def polygon_on(tri, loc):
+    """``polygon(edge)`` of :func:`side_strip` read from a face's triangulation ``tri`` placed by ``loc`` (as
+    ``BRep_Tool.Triangulation_s`` returned them: an edge's polygon on it is found by that location, and its nodes
+    are placed by it)."""
     nodes = {}
 
     def polygon(edge):
@@ -144,7 +164,7 @@ def polygon_on(tri, loc=None):
             return None
         if not nodes:
             nn = tri.NbNodes()
-            nodes["P"] = np.array([tri.Node(i).Coord() for i in range(1, nn + 1)], float).reshape(nn, 3)
+            nodes["P"] = placed(np.array([tri.Node(i).Coord() for i in range(1, nn + 1)], float).reshape(nn, 3), loc)
         idx = np.array([poly.Node(i) for i in range(1, poly.NbNodes() + 1)], np.int64) - 1
         par = np.array([poly.Parameter(i) for i in range(1, poly.NbNodes() + 1)], float)
         return nodes["P"][idx], par
@@ -161,9 +181,9 @@ def side_strips(shape) -> dict:
     while ex.More():
         face = TopoDS.Face_s(ex.Current())
         ex.Next()
-        tri = BRep_Tool.Triangulation_s(face, TopLoc_Location())
+        tri, loc = _triangulation(face)
         if tri is not None:
-            st = side_strip(face, polygon_on(tri))
+            st = side_strip(face, polygon_on(tri, loc))
             if st is not None:
                 out[k] = st
         k += 1
@@ -206,7 +226,7 @@ def cap_twins(faces, skip) -> dict:
     is proven on the nodes once A is meshed (:func:`cap_copies`)."""
     planes = []
     for k, face in enumerate(faces):
-        if k in skip or not face.Location().IsIdentity():
+        if k in skip:
             continue
         ad = BRepAdaptor_Surface(face)
         if ad.GetType() != GeomAbs_Plane:
@@ -245,13 +265,12 @@ def cap_copies(faces, twins, beside, edges):
     discretisation would put them), and a face that has its own nodes on B's edge (a bore's band, meshed with the
     other faces) has these, within :data:`MERGE_TOL_MM` (the mesh stays closed)."""
     copies, polys = {}, {}
-    loc = TopLoc_Location()
     for kb, (ka, t, pairs) in twins.items():
-        tri = BRep_Tool.Triangulation_s(faces[ka], loc)
+        tri, loc = _triangulation(faces[ka])
         if tri is None:
             return None
         nn, nt = tri.NbNodes(), tri.NbTriangles()
-        P = np.array([tri.Node(j).Coord() for j in range(1, nn + 1)], float).reshape(nn, 3)
+        P = placed(np.array([tri.Node(j).Coord() for j in range(1, nn + 1)], float).reshape(nn, 3), loc)
         T = np.array([tri.Triangle(j).Get() for j in range(1, nt + 1)], np.int64).reshape(nt, 3) - 1
         for ea, eb in pairs:
             poly = BRep_Tool.PolygonOnTriangulation_s(ea, tri, loc)
@@ -265,13 +284,14 @@ def cap_copies(faces, twins, beside, edges):
             if np.abs(on - nodes).max() > STRIP_MATCH_MM:
                 return None
             for f in faces_beside(beside, eb):
-                other = BRep_Tool.Triangulation_s(TopoDS.Face_s(f), loc)
+                other, lo = _triangulation(TopoDS.Face_s(f))
                 if other is None:  # B itself, a side: not meshed
                     continue
-                pb = BRep_Tool.PolygonOnTriangulation_s(eb, other, loc)
+                pb = BRep_Tool.PolygonOnTriangulation_s(eb, other, lo)
                 if pb is None or pb.NbNodes() != len(nodes):
                     return None
-                theirs = np.array([other.Node(pb.Node(j)).Coord() for j in range(1, pb.NbNodes() + 1)], float)
+                theirs = placed(np.array([other.Node(pb.Node(j)).Coord() for j in range(1, pb.NbNodes() + 1)],
+                                         float).reshape(-1, 3), lo)
                 if np.linalg.norm(theirs - nodes, axis=1).max() > MERGE_TOL_MM \
                         and np.linalg.norm(theirs[::-1] - nodes, axis=1).max() > MERGE_TOL_MM:
                     return None
@@ -300,7 +320,7 @@ def mesh_sides_apart(shape, mesh_rest, twins: bool = True):
     while ex.More():
         face = TopoDS.Face_s(ex.Current())
         ex.Next()
-        if BRepAdaptor_Surface(face).GetType() == GeomAbs_SurfaceOfExtrusion and face.Location().IsIdentity():
+        if BRepAdaptor_Surface(face).GetType() == GeomAbs_SurfaceOfExtrusion:
             sides[len(faces)] = face
         faces.append(face)
     if not sides:
@@ -339,8 +359,8 @@ def mesh_sides_apart(shape, mesh_rest, twins: bool = True):
         for f in faces_beside(beside, edge):
             i = index.FindIndex(f)
             if i not in on:
-                tri = BRep_Tool.Triangulation_s(TopoDS.Face_s(f), TopLoc_Location())
-                on[i] = None if tri is None else polygon_on(tri)
+                tri, loc = _triangulation(TopoDS.Face_s(f))
+                on[i] = None if tri is None else polygon_on(tri, loc)
             got = None if on[i] is None else on[i](edge)
             if got is not None:
                 return got

@@ -229,12 +229,9 @@ def _apex_deflection(face) -> float | None:
         return None
     loc = TopLoc_Location()
     tri = BRep_Tool.Triangulation_s(face, loc)
-    P = np.array([tri.Node(i).Coord() for i in range(1, tri.NbNodes() + 1)], float).reshape(-1, 3)
+    P = prism_mesh.placed(np.array([tri.Node(i).Coord() for i in range(1, tri.NbNodes() + 1)], float).reshape(-1, 3),
+                          loc)
     T = np.array([tri.Triangle(i).Get() for i in range(1, tri.NbTriangles() + 1)], np.int64).reshape(-1, 3) - 1
-    if not loc.IsIdentity():
-        t = loc.Transformation()
-        R = np.array([[t.Value(r, c) for c in (1, 2, 3)] for r in (1, 2, 3)])
-        P = P @ R.T + np.array([t.Value(r, 4) for r in (1, 2, 3)])
     n = _APEX_SAMPLES
     ij = np.array([(i, j) for i in range(n + 1) for j in range(n + 1 - i)], float) / n
     B = np.column_stack([ij, 1.0 - ij.sum(axis=1)])
@@ -348,11 +345,7 @@ def triangulate(
             tri = BRep_Tool.Triangulation_s(face, loc)
             nn, nt = tri.NbNodes(), tri.NbTriangles()
             node, triangle = tri.Node, tri.Triangle
-            pts = np.array([node(i).Coord() for i in range(1, nn + 1)], float).reshape(nn, 3)
-            if not loc.IsIdentity():
-                t = loc.Transformation()
-                R = np.array([[t.Value(r, c) for c in (1, 2, 3)] for r in (1, 2, 3)])
-                pts = pts @ R.T + np.array([t.Value(r, 4) for r in (1, 2, 3)])
+            pts = prism_mesh.placed(np.array([node(i).Coord() for i in range(1, nn + 1)], float).reshape(nn, 3), loc)
             ids = np.array([triangle(i).Get() for i in range(1, nt + 1)], np.int64).reshape(nt, 3) - 1
         if face.Orientation() == TopAbs_REVERSED:
             ids = ids[:, [0, 2, 1]]
