@@ -310,24 +310,42 @@ def test_a_filleted_union_falls_back_to_brepmesh_where_no_strip_fits():
     assert d <= MESH_CHORD_LIMIT_MM
 
 
-def test_a_side_face_no_strip_fits_sends_the_whole_prism_to_brepmesh(monkeypatch):
-    """A radial hole through the spline prism's side: that face has the hole's edges too, no strip fits it, so the
-    sides are not meshed apart (the whole prism is meshed by BRepMesh, the other sides then read as strips from their
-    own triangulations); the mesh is closed, clean and outward."""
+def test_a_side_face_no_strip_fits_is_brepmeshs_the_others_stay_strips(monkeypatch):
+    """A hole across the spline prism, through two of its sides: those faces have the hole's edges too, no strip fits
+    them, and they are meshed by BRepMesh alone on the nodes the caps gave their edges (before, the whole prism was
+    meshed again by BRepMesh); the other two sides stay strips.  They border the top cap, whose edge BRepMesh would
+    discretise afresh: so no cap is copied.  The straight edges they share with the strips stay undivided; the mesh
+    is closed, clean and outward, and holds the volume."""
     import trimesh
+    from OCP.BRep import BRep_Tool
+    from OCP.BRepAdaptor import BRepAdaptor_Curve
+    from OCP.GeomAbs import GeomAbs_Line
 
     hole = cq.Workplane("YZ").workplane(offset=10.0).center(0.0, 6.0).circle(2.0).extrude(40.0).val()
     solid = cq.Workplane().add(_spline_prism()).cut(hole).val()
-    apart = []
-    real = T._mesh_sides_apart
-    monkeypatch.setattr(T, "_mesh_sides_apart", lambda *a: apart.append(real(*a)) or apart[-1])
+    apart = _apart_recorded(monkeypatch)
     v, f, d = T.triangulate(solid, parallel=False)
-    assert apart == [None]
+    assert len(apart) == 1 and apart[0] is not None
+    strips, _, copied = apart[0]
+    shape = T.occ_shape(solid)
+    faces = []
+    ex = T.TopExp_Explorer(shape, T.TopAbs_FACE)
+    while ex.More():
+        faces.append(T.TopoDS.Face_s(ex.Current()))
+        ex.Next()
+    sides = [k for k, face in enumerate(faces) if T.BRepAdaptor_Surface(face).GetType() == T.GeomAbs_SurfaceOfExtrusion]
+    holed = [k for k in sides if len(P.edges_of(faces[k])) > 4]
+    assert len(sides) == 4 and len(holed) == 2 and copied == set()
+    assert sorted(strips) == sorted(set(sides) - set(holed))
+    for k in holed:
+        tri, loc = P._triangulation(faces[k])
+        lines = [e for e in P.edges_of(faces[k]) if BRepAdaptor_Curve(e).GetType() == GeomAbs_Line]
+        assert len(lines) >= 2
+        assert all(BRep_Tool.PolygonOnTriangulation_s(e, tri, loc).NbNodes() == 2 for e in lines)
     _closed_and_clean_in_float32(v, f)
     mesh = trimesh.Trimesh(v, f, process=False)
     assert d <= MESH_CHORD_LIMIT_MM and mesh.is_winding_consistent
     assert 0 < mesh.volume and abs(mesh.volume - solid.Volume()) <= d * solid.Area()
-    assert len(P.side_strips(T.occ_shape(solid))) >= len(_side_faces(T.occ_shape(solid))) - 2
 
 
 def test_prism_sides_meshed_apart_equal_the_strips_of_a_whole_pass():
@@ -347,7 +365,7 @@ def test_prism_sides_meshed_apart_equal_the_strips_of_a_whole_pass():
 def _triangulated_without_twins(solid, monkeypatch):
     real = T._mesh_sides_apart
     with monkeypatch.context() as m:
-        m.setattr(T, "_mesh_sides_apart", lambda shape, r, a, p, twins=True: real(shape, r, a, p, False))
+        m.setattr(T, "_mesh_sides_apart", lambda shape, r, a, p, twins=True, **k: real(shape, r, a, p, False, **k))
         return T.triangulate(solid, parallel=False)
 
 
@@ -436,7 +454,7 @@ def test_a_user_prism_counterbored_from_the_top_has_no_twin_caps():
 def _apart_recorded(monkeypatch):
     apart = []
     real = T._mesh_sides_apart
-    monkeypatch.setattr(T, "_mesh_sides_apart", lambda *a: apart.append(real(*a)) or apart[-1])
+    monkeypatch.setattr(T, "_mesh_sides_apart", lambda *a, **k: apart.append(real(*a, **k)) or apart[-1])
     return apart
 
 
@@ -514,8 +532,9 @@ def test_a_user_prism_chamfered_at_its_top_is_meshed_within_the_limit():
 
 
 def test_the_faces_beside_an_edge_are_the_maps_list_in_its_order():
-    """:func:`propulsor.solids.prism_mesh.faces_beside` (a list's ends read directly) gives the faces OCP's iteration over TopExp's edge-to-faces
-    map gives, in the same order, at every edge of the spline prism and of a filleted CadQuery union."""
+    """:func:`propulsor.solids.prism_mesh.faces_beside` (a list's ends read directly) gives the faces OCP's iteration
+    over TopExp's edge-to-faces map gives, in the same order, at every edge of the spline prism and of a filleted
+    CadQuery union."""
     from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE
     from OCP.TopExp import TopExp
     from OCP.TopTools import TopTools_IndexedDataMapOfShapeListOfShape

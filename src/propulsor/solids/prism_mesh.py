@@ -302,15 +302,16 @@ def cap_copies(faces, twins, beside, edges):
 
 def mesh_sides_apart(shape, mesh_rest, twins: bool = True):
     """Every face but a prism's sides meshed by ``mesh_rest(compound)`` (the caller's BRepMesh pass, as
-    :func:`propulsor.solids.tessellate.mesh_shape` meshes a ruled shape), then each side
-    as strips (:func:`side_strip`) on the nodes its edges got from the faces beside it: BRepMesh's own pass over the
-    sides (about half its time on a gear) is not made.  With ``twins``, a prism's second cap (a planar face that is
-    another one translated along its normal, :func:`cap_twins`) is not meshed either: it is the first cap's
-    triangulation moved (:func:`cap_copies`; BRepMesh gives the two caps of a gear the same triangles, node for
-    node: a third of the gear's meshing time); where the copy does not hold, the shape is meshed again without it.
-    Returns ({face index: strip or copied cap}, the compound of the faces BRepMesh meshed, the indices of the copied
-    caps), or None (the shape meshed by nobody yet) where a side's edge has no neighbour's nodes or no strip fits:
-    the caller meshes the whole shape then."""
+    :func:`propulsor.solids.tessellate.mesh_shape` meshes the shape), then each side as strips (:func:`side_strip`)
+    on the nodes its edges got from the faces beside it: BRepMesh's own pass over the sides (about half its time on a
+    gear) is not made.  A side no strip fits (a hole through it; the shape's other faces not ruled, a chamfer's edge
+    discretised differently) is meshed by ``mesh_rest`` after the others, alone, on the nodes its edges already
+    have.  With ``twins``, a prism's second cap (a planar face that is another one translated along its normal,
+    :func:`cap_twins`) is not meshed either: it is the first cap's triangulation moved (:func:`cap_copies`; BRepMesh
+    gives the two caps of a gear the same triangles, node for node: a third of the gear's meshing time); where the
+    copy does not hold, or a side meshed by BRepMesh borders it, the shape is meshed again without it.  Returns
+    ({face index: strip or copied cap}, the compound of the faces BRepMesh meshed, the indices of the copied caps),
+    or None (the shape meshed by nobody yet) where it has no prism side: the caller meshes the whole shape then."""
     from OCP.BRep import BRep_Builder
     from OCP.TopoDS import TopoDS_Compound
     from OCP.TopTools import TopTools_IndexedDataMapOfShapeListOfShape, TopTools_IndexedMapOfShape
@@ -366,11 +367,27 @@ def mesh_sides_apart(shape, mesh_rest, twins: bool = True):
                 return got
         return None
 
-    strips = dict(copied)
+    strips, left = dict(copied), []
     for k, face in sides.items():
         st = side_strip(face, polygon)
         if st is None:
+            left.append(k)
+        else:
+            strips[k] = st
+    if left:
+        # the sides no strip fits (a hole through one, an edge no neighbour has discretised): BRepMesh's, on the
+        # nodes their edges already have.  One beside a copied cap would discretise the cap's edge afresh: then no
+        # copy.  An edge one shares with a strip is straight (the strip's end), which BRepMesh does not divide, as
+        # with the other faces beside a strip
+        at = {index.FindIndex(face): k for k, face in enumerate(faces)}  # a face of the map -> its place in faces
+        if copied and any(at.get(index.FindIndex(f)) in copied for k in left for e in edges_of(faces[k]) or ()
+                          for f in faces_beside(beside, e)):
             BRepTools.Clean_s(shape)
-            return None
-        strips[k] = st
+            return mesh_sides_apart(shape, mesh_rest, twins=False)
+        more = TopoDS_Compound()
+        builder.MakeCompound(more)
+        for k in left:
+            builder.Add(more, faces[k])
+            builder.Add(rest, faces[k])
+        mesh_rest(more)
     return strips, rest, set(copied)

@@ -160,20 +160,22 @@ def mesh_shape(shape, chord_tol, angular_tol, parallel, chord_limit: float | Non
     return _worst_deflection(shape, chord_limit)
 
 
-def _mesh_sides_apart(shape, request, angular_tol, parallel, twins: bool = True):
+def _mesh_sides_apart(shape, request, angular_tol, parallel, twins: bool = True, ruled: bool = True):
     """:func:`propulsor.solids.prism_mesh.mesh_sides_apart` with BRepMesh meshing the faces that are not a prism's
-    sides or second caps as :func:`mesh_shape` meshes a ruled shape (cylinder bands first, no interior vertices)."""
-    prm = _params(request, angular_tol, parallel, True)
+    sides or second caps as :func:`mesh_shape` meshes the shape (``ruled``: cylinder bands first, no interior
+    vertices)."""
+    prm = _params(request, angular_tol, parallel, ruled)
 
     def mesh_rest(rest):
-        _premesh_cylinders(rest, prm)
+        if ruled:
+            _premesh_cylinders(rest, prm)
         if not BRepMesh_IncrementalMesh(rest, prm).IsDone():
             raise RuntimeError("BRepMesh failed")
 
     return prism_mesh.mesh_sides_apart(shape, mesh_rest, twins)
 
 
-def refine_faces(shape, chord_tol, angular_tol, parallel, chord_limit, keep=()) -> float:
+def refine_faces(shape, chord_tol, angular_tol, parallel, chord_limit) -> float:
     """Mesh again only the faces of a meshed shape whose achieved deflection exceeds `chord_limit`, with
     the surface deflection controlled on them although they are analytic (OCCT controls it on free-form
     faces only: a cone between two differently divided circles misses the request several times over)
@@ -181,26 +183,23 @@ def refine_faces(shape, chord_tol, angular_tol, parallel, chord_limit, keep=()) 
     discretisation (the neighbours' triangulations share it), so the mesh stays closed.  A face with a
     degenerate edge (a cone's apex, a sphere's pole) is left as it is: the nodes inserted there crowd
     into slivers that fold once the mesh is written in single precision (STL), and the caller's halving
-    takes it on (its deflection measured: :func:`_apex_deflection`).  ``keep``: the strips of a prism's sides
-    (:func:`propulsor.solids.prism_mesh.side_strips`, by face index), left as they are and counted with their own
-    deflection.  A face placed twice in a compound (one solid at two places) shares its triangulation: cleared at its
-    first place, it is not looked at again at the second.  Returns the largest achieved deflection."""
+    takes it on (its deflection measured: :func:`_apex_deflection`).  A face placed twice in a compound (one
+    solid at two places) shares its triangulation: cleared at its first place, it is not looked at again at the
+    second.  Returns the largest achieved deflection."""
     ex = TopExp_Explorer(shape, TopAbs_FACE)
-    k = 0
     while ex.More():
         face = TopoDS.Face_s(ex.Current())
         tri = BRep_Tool.Triangulation_s(face, TopLoc_Location())
-        if k not in keep and tri is not None and tri.Deflection() > chord_limit and not _has_apex(face):
+        if tri is not None and tri.Deflection() > chord_limit and not _has_apex(face):
             BRepTools.Clean_s(face)
         ex.Next()
-        k += 1
     prm = IMeshTools_Parameters()
     prm.Deflection, prm.Angle, prm.Relative, prm.InParallel = chord_tol, angular_tol, False, parallel
     prm.EnableControlSurfaceDeflectionAllSurfaces = True
     prm.MinSize = chord_limit
     if not BRepMesh_IncrementalMesh(shape, prm).IsDone():
         raise RuntimeError("BRepMesh failed")
-    return _worst_deflection(shape, chord_limit, keep or None)
+    return _worst_deflection(shape, chord_limit)
 
 
 def _has_apex(face) -> bool:
@@ -310,22 +309,16 @@ def triangulate(
         `request`, then the faces that miss the limit meshed again alone (:func:`refine_faces`).  The edges keep their
         nodes there, and so the strips on them hold; a copied cap's first cap is a plane (its deflection nil), which
         refine_faces leaves as it is, and so the copy holds too."""
-        strips, rest = {}, None
-        if ruled:
-            apart = _mesh_sides_apart(shape, request, angular_tol, parallel)
-            if apart is not None:
-                strips, rest, _ = apart
-                achieved = _worst_deflection(shape, chord_limit, strips)
-        if rest is None:
+        apart = _mesh_sides_apart(shape, request, angular_tol, parallel, ruled=ruled)
+        if apart is not None:
+            strips, rest, _ = apart
+            achieved = _worst_deflection(shape, chord_limit, strips)
+        else:  # no prism side
+            strips, rest = {}, None
             achieved = mesh_shape(shape, request, angular_tol, parallel, chord_limit)
-            strips = prism_mesh.side_strips(shape) if ruled else {}
-            achieved = _worst_deflection(shape, chord_limit, strips) if strips else achieved
         if achieved > chord_limit:
-            if rest is not None:
-                achieved = max([refine_faces(rest, request, angular_tol, parallel, chord_limit)]
-                               + [st[2] for st in strips.values()])
-            else:
-                achieved = refine_faces(shape, request, angular_tol, parallel, chord_limit, keep=strips)
+            achieved = max([refine_faces(shape if rest is None else rest, request, angular_tol, parallel, chord_limit)]
+                           + [st[2] for st in strips.values()])
         return achieved, strips, rest
 
     # each halving's mesh has its faces that miss the limit meshed again too: a user's spline prism with a chamfered
