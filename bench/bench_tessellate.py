@@ -25,6 +25,17 @@ balancer (a torus face: BRepMesh meshes it whole) as before.  ``make``'s single 
 and the new in turn, three rounds (the third new first): 149.2 / 134.2 / 127.3 -> 128.2 / 116.0 / 114.3 s wall, 282.5 /
 252.3 / 242.6 -> 242.1 / 219.3 / 216.3 user s (about 10 % of make's CPU paired; the machine drifted faster through
 the rounds), the 635 files of the build identical to the reference list.
+
+2026-12-02, a fourteenth session (2 cores; the 57 solids of ``make``'s STEP files, e6699b3's ``tessellate.py`` beside
+the new one in one process, least of five each): 16.10 -> 15.19 CPU s in all.  The balancer 2.19 -> 1.59 s (its
+prism sides meshed apart although a torus makes the shape not ruled: 139 814 -> 103 846 triangles, the deflection
+0.00707 mm as before) and the final drives' carriers 0.49 -> 0.30 and 0.53 -> 0.28 (one side no strip fits: before,
+it sent the whole carrier to BRepMesh; now it alone is BRepMesh's, its mesh identical); every other mesh identical
+and as fast.  Not seen here, since a STEP file holds its faces where they are placed: in the build, the cam plate's
+raised core and ring are placed by a location (``kernel.shifted_z``), which sent the cam to BRepMesh whole (1.34 CPU
+s, 0.00498 mm): now strips, 0.31 s and 0.00250 mm, in each of the four cam parts.  A user's spline prism chamfered at
+its top (B-spline chamfer faces, no strips): each halving's faces that miss the limit are meshed again too: 8.5 CPU
+s, 222 854 triangles and 0.047 mm (the limit failed) -> 0.79 s, 28 056 triangles, 0.0053 mm.
 """
 
 from __future__ import annotations
