@@ -227,18 +227,18 @@ def _spline_prism():
     return wp.close().extrude(12.0).faces(">Z").workplane().hole(10.0).val()
 
 
-def _side_faces(shape):
-    from OCP.TopAbs import TopAbs_FACE
-    from OCP.TopExp import TopExp_Explorer
-    from OCP.TopoDS import TopoDS
-
-    ex, out = TopExp_Explorer(shape, TopAbs_FACE), []
+def _faces(shape) -> list:
+    """The shape's faces in the explorer's order (the face indices of the strips and copies)."""
+    out = []
+    ex = T.TopExp_Explorer(shape, T.TopAbs_FACE)
     while ex.More():
-        face = TopoDS.Face_s(ex.Current())
-        if T.BRepAdaptor_Surface(face).GetType() == T.GeomAbs_SurfaceOfExtrusion:
-            out.append(face)
+        out.append(T.TopoDS.Face_s(ex.Current()))
         ex.Next()
     return out
+
+
+def _side_faces(shape):
+    return [f for f in _faces(shape) if T.BRepAdaptor_Surface(f).GetType() == T.GeomAbs_SurfaceOfExtrusion]
 
 
 def _distance_to_faces(X, faces):
@@ -328,11 +328,7 @@ def test_a_side_face_no_strip_fits_is_brepmeshs_the_others_stay_strips(monkeypat
     assert len(apart) == 1 and apart[0] is not None
     strips, _, copied = apart[0]
     shape = T.occ_shape(solid)
-    faces = []
-    ex = T.TopExp_Explorer(shape, T.TopAbs_FACE)
-    while ex.More():
-        faces.append(T.TopoDS.Face_s(ex.Current()))
-        ex.Next()
+    faces = _faces(shape)
     sides = [k for k, face in enumerate(faces) if T.BRepAdaptor_Surface(face).GetType() == T.GeomAbs_SurfaceOfExtrusion]
     holed = [k for k in sides if len(P.edges_of(faces[k])) > 4]
     assert len(sides) == 4 and len(holed) == 2 and copied == set()
@@ -438,11 +434,7 @@ def test_a_user_prism_counterbored_from_the_top_has_no_twin_caps():
 
     solid = cq.Workplane().add(_spline_prism()).faces(">Z").workplane().cboreHole(10.0, 16.0, 4.0).val()
     shape = T.occ_shape(solid)
-    faces = []
-    ex = T.TopExp_Explorer(shape, T.TopAbs_FACE)
-    while ex.More():
-        faces.append(T.TopoDS.Face_s(ex.Current()))
-        ex.Next()
+    faces = _faces(shape)
     assert P.cap_twins(faces, set()) == {}
     v, f, d = T.triangulate(solid, parallel=False)
     _closed_and_clean_in_float32(v, f)
@@ -519,11 +511,7 @@ def test_a_user_prism_chamfered_at_its_top_is_meshed_within_the_limit():
     mesh = trimesh.Trimesh(v, f, process=False)
     assert mesh.is_winding_consistent and 0 < mesh.volume
     assert abs(mesh.volume - solid.Volume()) <= d * solid.Area()
-    faces = []
-    ex = T.TopExp_Explorer(T.occ_shape(solid), T.TopAbs_FACE)
-    while ex.More():
-        faces.append(T.TopoDS.Face_s(ex.Current()))
-        ex.Next()
+    faces = _faces(T.occ_shape(solid))
     pick = np.random.default_rng(5).choice(len(f), 800, replace=False)
     B = np.array([(1 / 3, 1 / 3, 1 / 3), (0.5, 0.5, 0.0)])
     X = np.einsum("bk,tkd->tbd", B, v[f[pick]]).reshape(-1, 3)
