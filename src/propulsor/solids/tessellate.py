@@ -291,7 +291,8 @@ def triangulate(
     faces whose achieved deflection exceeds `chord_limit` are meshed again at the same
     request with their surface deflection controlled (:func:`refine_faces`); while it
     still exceeds the limit, the whole shape is meshed again with half the request (at
-    most 4 times).  The returned deflection is that reported by OCCT, except on a cone
+    most 4 times), each time with the same refinement.  A prism's sides and second cap
+    are made from their edges' nodes (:mod:`propulsor.solids.prism_mesh`).  The returned deflection is that reported by OCCT, except on a cone
     or sphere face with a degenerate edge: there it is measured against the exact
     surface (:func:`_apex_deflection`; OCCT's estimate can be far off at an apex: a cone
     r = 8, h = 5 mm meshed at 0.005 mm reports 0.0205 mm, measured 0.0023 mm; the
