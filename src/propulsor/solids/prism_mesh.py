@@ -30,8 +30,8 @@ from OCP.gp import gp_Pnt, gp_Vec
 
 from ..policy import MERGE_TOL_MM
 
-__all__ = ["STRIP_MATCH_MM", "cap_copies", "cap_twins", "edges_of", "faces_beside", "mesh_sides_apart", "polygon_on",
-           "side_strip", "side_strips"]
+__all__ = ["STRIP_MATCH_MM", "cap_copies", "cap_twins", "edges_of", "faces_beside", "mesh_sides_apart", "nodes_of",
+           "placed", "polygon_on", "side_strip", "side_strips", "triangles_of"]
 
 #: two nodes of a prism's side face are one above the other when their offset is off the extrusion's line by less
 #: than this (mm); a copied cap's node lies on its edge within it too
@@ -46,6 +46,26 @@ def placed(P: np.ndarray, loc) -> np.ndarray:
     t = loc.Transformation()
     R = np.array([[t.Value(r, c) for c in (1, 2, 3)] for r in (1, 2, 3)])
     return P @ R.T + np.array([t.Value(r, 4) for r in (1, 2, 3)])
+
+
+def nodes_of(tri, loc) -> np.ndarray:
+    """The nodes (n, 3) of a triangulation, placed by its location (:func:`placed`)."""
+    n, node = tri.NbNodes(), tri.Node
+    return placed(np.array([node(i).Coord() for i in range(1, n + 1)], float).reshape(n, 3), loc)
+
+
+def triangles_of(tri) -> np.ndarray:
+    """The triangles (m, 3) of a triangulation, as 0-based indices into :func:`nodes_of`."""
+    m, triangle = tri.NbTriangles(), tri.Triangle
+    return np.array([triangle(i).Get() for i in range(1, m + 1)], np.int64).reshape(m, 3) - 1
+
+
+def _polygon_arrays(poly) -> tuple[np.ndarray, np.ndarray]:
+    """(0-based node indices into its triangulation, parameters on the edge) of an edge's polygon on a
+    triangulation."""
+    n = poly.NbNodes()
+    return (np.array([poly.Node(i) for i in range(1, n + 1)], np.int64) - 1,
+            np.array([poly.Parameter(i) for i in range(1, n + 1)], float))
 
 
 def _triangulation(face):
@@ -163,10 +183,8 @@ def polygon_on(tri, loc):
         if poly is None or not poly.HasParameters():
             return None
         if not nodes:
-            nn = tri.NbNodes()
-            nodes["P"] = placed(np.array([tri.Node(i).Coord() for i in range(1, nn + 1)], float).reshape(nn, 3), loc)
-        idx = np.array([poly.Node(i) for i in range(1, poly.NbNodes() + 1)], np.int64) - 1
-        par = np.array([poly.Parameter(i) for i in range(1, poly.NbNodes() + 1)], float)
+            nodes["P"] = nodes_of(tri, loc)
+        idx, par = _polygon_arrays(poly)
         return nodes["P"][idx], par
 
     return polygon
@@ -269,15 +287,12 @@ def cap_copies(faces, twins, beside, edges):
         tri, loc = _triangulation(faces[ka])
         if tri is None:
             return None
-        nn, nt = tri.NbNodes(), tri.NbTriangles()
-        P = placed(np.array([tri.Node(j).Coord() for j in range(1, nn + 1)], float).reshape(nn, 3), loc)
-        T = np.array([tri.Triangle(j).Get() for j in range(1, nt + 1)], np.int64).reshape(nt, 3) - 1
+        P, T = nodes_of(tri, loc), triangles_of(tri)
         for ea, eb in pairs:
             poly = BRep_Tool.PolygonOnTriangulation_s(ea, tri, loc)
             if poly is None or not poly.HasParameters():
                 return None
-            idx = np.array([poly.Node(i) for i in range(1, poly.NbNodes() + 1)], np.int64) - 1
-            par = np.array([poly.Parameter(i) for i in range(1, poly.NbNodes() + 1)], float)
+            idx, par = _polygon_arrays(poly)
             nodes = P[idx] + t
             c = BRepAdaptor_Curve(eb)
             on = np.array([c.Value(float(u)).Coord() for u in par], float).reshape(-1, 3)
@@ -290,8 +305,8 @@ def cap_copies(faces, twins, beside, edges):
                 pb = BRep_Tool.PolygonOnTriangulation_s(eb, other, lo)
                 if pb is None or pb.NbNodes() != len(nodes):
                     return None
-                theirs = placed(np.array([other.Node(pb.Node(j)).Coord() for j in range(1, pb.NbNodes() + 1)],
-                                         float).reshape(-1, 3), lo)
+                ib = _polygon_arrays(pb)[0]
+                theirs = placed(np.array([other.Node(int(j) + 1).Coord() for j in ib], float).reshape(-1, 3), lo)
                 if np.linalg.norm(theirs - nodes, axis=1).max() > MERGE_TOL_MM \
                         and np.linalg.norm(theirs[::-1] - nodes, axis=1).max() > MERGE_TOL_MM:
                     return None

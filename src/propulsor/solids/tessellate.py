@@ -228,9 +228,7 @@ def _apex_deflection(face) -> float | None:
         return None
     loc = TopLoc_Location()
     tri = BRep_Tool.Triangulation_s(face, loc)
-    P = prism_mesh.placed(np.array([tri.Node(i).Coord() for i in range(1, tri.NbNodes() + 1)], float).reshape(-1, 3),
-                          loc)
-    T = np.array([tri.Triangle(i).Get() for i in range(1, tri.NbTriangles() + 1)], np.int64).reshape(-1, 3) - 1
+    P, T = prism_mesh.nodes_of(tri, loc), prism_mesh.triangles_of(tri)
     n = _APEX_SAMPLES
     ij = np.array([(i, j) for i in range(n + 1) for j in range(n + 1 - i)], float) / n
     B = np.column_stack([ij, 1.0 - ij.sum(axis=1)])
@@ -292,11 +290,12 @@ def triangulate(
     request with their surface deflection controlled (:func:`refine_faces`); while it
     still exceeds the limit, the whole shape is meshed again with half the request (at
     most 4 times), each time with the same refinement.  A prism's sides and second cap
-    are made from their edges' nodes (:mod:`propulsor.solids.prism_mesh`).  The returned deflection is that reported by OCCT, except on a cone
-    or sphere face with a degenerate edge: there it is measured against the exact
-    surface (:func:`_apex_deflection`; OCCT's estimate can be far off at an apex: a cone
-    r = 8, h = 5 mm meshed at 0.005 mm reports 0.0205 mm, measured 0.0023 mm; the
-    balancer's drill point 0.0205 mm, measured 0.0022 mm; on a sphere it is right).
+    are made from their edges' nodes (:mod:`propulsor.solids.prism_mesh`).  The returned
+    deflection is that reported by OCCT, except on a cone or sphere face with a degenerate
+    edge: there it is measured against the exact surface (:func:`_apex_deflection`; OCCT's
+    estimate can be far off at an apex: a cone r = 8, h = 5 mm meshed at 0.005 mm reports
+    0.0205 mm, measured 0.0023 mm; the balancer's drill point 0.0205 mm, measured 0.0022 mm;
+    on a sphere it is right).
     """
     if not (chord_tol > 0 and angular_tol > 0):
         raise ValueError(f"chord_tol = {chord_tol!r}, angular_tol = {angular_tol!r}: must be > 0")
@@ -345,10 +344,7 @@ def triangulate(
         else:
             loc = TopLoc_Location()
             tri = BRep_Tool.Triangulation_s(face, loc)
-            nn, nt = tri.NbNodes(), tri.NbTriangles()
-            node, triangle = tri.Node, tri.Triangle
-            pts = prism_mesh.placed(np.array([node(i).Coord() for i in range(1, nn + 1)], float).reshape(nn, 3), loc)
-            ids = np.array([triangle(i).Get() for i in range(1, nt + 1)], np.int64).reshape(nt, 3) - 1
+            pts, ids = prism_mesh.nodes_of(tri, loc), prism_mesh.triangles_of(tri)
         if face.Orientation() == TopAbs_REVERSED:
             ids = ids[:, [0, 2, 1]]
         verts.append(pts)
