@@ -22,6 +22,10 @@ MANIFEST_MAX_BYTES = 16 << 20
 # --- solids / checks ----------------------------------------------------------
 #: re-imported STEP volume vs built solid, relative
 STEP_VOLUME_REL_TOL = 1e-6
+#: a union of solids that only touch (kernel.cq_fuse(touching=True)): its volume vs the sum of theirs, relative (the
+#: cam plate with its core and ring: -5e-8, OCCT's integration over the unified faces); past it they are fused as
+#: solids that overlap
+TOUCHING_VOLUME_REL_TOL = 1e-6
 #: mesh volume vs B-rep volume, relative
 MESH_VOLUME_REL_TOL = 1e-3
 #: overlap area below this (mm^2) counts as no overlap in 2D motion sweeps

@@ -37,7 +37,7 @@ class TriangulatedVolume(NamedTuple):
     """The volume of a shape's triangulation and what bounds its difference from the exact volume."""
 
     volume_mm3: float
-    deflection_mm: float  # the largest distance of a triangle from its face (OCCT's achieved deflection)
+    deflection_mm: float  # the chord error of the triangulation (mesh_shape: OCCT's estimate, measured at an apex)
     area_mm2: float  # the B-rep's surface area
 
     @property

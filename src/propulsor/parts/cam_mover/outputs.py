@@ -39,7 +39,7 @@ def build_solids(pl: Plan) -> dict:
     plate = extrude_profile(pl.plate, tp)
     core = shifted_z(extrude_profile(pl.core, dg), tp)
     ring = shifted_z(extrude_profile(pl.ring, dg), tp)
-    cam = cq_fuse(plate, core, ring, name="cam")
+    cam = cq_fuse(plate, core, ring, name="cam", touching=True)  # the core and ring stand on the plate
     carrier = extrude_profile(pl.carrier.profile, p.carrier_thickness_mm)
     # leg: bar + roller pin (down to the roller's lower face) − tapped holes for the shoe bolts
     t = p.carrier_thickness_mm
@@ -48,7 +48,7 @@ def build_solids(pl: Plan) -> dict:
     pin = cq_cylinder(0.5 * p.roller_pin_mm, -pin_len, 0.0)
     ys = p.leg_mount_mm + 0.5 * p.socket_depth_mm
     xs = 0.25 * p.leg_width_mm
-    leg = cq_fuse(bar, pin, clean=False)
+    leg = cq_fuse(bar, pin, clean=False, touching=True)  # the pin stands under the bar
     taps = [cq_cylinder(0.5 * p.leg_tap_drill_mm, t - p.leg_tap_depth_mm, t + 1.0, x, ys) for x in (-xs, xs)]
     leg = cq_cut(leg, *taps, name="leg")
     roller = extrude_profile(pl.roller, p.roller_width_mm)
