@@ -116,3 +116,36 @@ def test_propulsor_check_passes_a_user_step_and_stl(tmp_path, user_solid):
                        text=True, timeout=600, cwd=ROOT)
     assert r.returncode == 0, r.stdout + r.stderr
     assert "2 file(s) checked, 0 invalid" in r.stdout
+
+
+def _fuses(monkeypatch):
+    """The glue flag of every cadquery fuse made from here on."""
+    calls = []
+    real = cq.Shape.fuse
+
+    def fuse(self, *tools, glue=False, tol=None):
+        calls.append(glue)
+        return real(self, *tools, glue=glue, tol=tol)
+
+    monkeypatch.setattr(cq.Shape, "fuse", fuse)
+    return calls
+
+
+def test_solids_that_only_touch_are_glued_and_solids_that_overlap_are_fused(monkeypatch):
+    """``cq_fuse(touching=True)`` (the cam plate with its core and ring) glues solids that only touch, the same union
+    as the plain fuse; glued solids that overlap give a wrong union (two solids, or none), so their union is the
+    plain fuse's, also where the glue happens to give one solid (its volume is less than the sum)."""
+    from propulsor.solids.kernel import box, cq_fuse, volume
+
+    base = box(10, 10, 10)
+    calls = _fuses(monkeypatch)
+    u = cq_fuse(base, box(4, 4, 4, (2, 2, 10)), box(3, 3, 4, (6, 6, 10)), touching=True)
+    assert calls == [True] and len(u.Solids()) == 1 and len(u.Faces()) == 6 + 2 * 5  # the base, 5 a box on it
+    assert volume(u) == pytest.approx(1000 + 64 + 36, rel=1e-12)
+    for tools, union in (([box(10, 10, 10, (5, 5, 5))], 1875.0),  # a corner: the glue gives both boxes
+                         ([box(4, 4, 4, (1, 1, 10)), box(4, 4, 4, (3, 3, 10))], 1112.0),  # the glue gives no solid
+                         ([box(10, 10, 10, (8, 0, 0))], 1800.0)):  # the glue gives one solid; the volume decides
+        calls.clear()
+        u = cq_fuse(base, *tools, touching=True)
+        assert calls == [True, False] and len(u.Solids()) == 1
+        assert volume(u) == pytest.approx(union, rel=1e-12)

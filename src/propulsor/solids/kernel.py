@@ -181,15 +181,17 @@ def cq_fuse(a, *tools, name: str = "fuse", clean: bool = True, touching: bool = 
 
     ``touching``: the solids only touch (faces in common, no volume; the cam plate and the core and ring standing on
     it): OCCT's glue option (``BOPAlgo_GlueShift``), which skips the search for intersections (the cam: 0.95 -> 0.36
-    CPU s, the same solid, its BREP text identical).  Glued solids that did overlap would give a wrong union, so it
-    is kept only when its volume is the sum of theirs (:data:`~propulsor.policy.TOUCHING_VOLUME_REL_TOL`); else the
-    solids are fused as overlapping ones."""
+    CPU s, the same solid, its BREP text identical).  Glued solids that do overlap give a wrong union (two boxes
+    overlapping by a corner: the two boxes, their volumes summed; two tools overlapping each other: no solid), so
+    it is kept only when it is one solid whose volume is the sum of theirs
+    (:data:`~propulsor.policy.TOUCHING_VOLUME_REL_TOL`): solids with no volume in common; else they are fused as
+    overlapping ones."""
     if touching:
         from ..policy import TOUCHING_VOLUME_REL_TOL
 
         glued = a.fuse(*tools, glue=True)
         total = sum(volume(s) for s in (a, *tools))
-        if abs(volume(glued) - total) <= TOUCHING_VOLUME_REL_TOL * abs(total):
+        if len(glued.Solids()) == 1 and abs(volume(glued) - total) <= TOUCHING_VOLUME_REL_TOL * abs(total):
             return one_solid(glued, name) if clean else glued
     return one_solid(a.fuse(*tools), name) if clean else a.fuse(*tools)
 
