@@ -204,6 +204,11 @@ arrays to new variables, counted the same), the rotation pairs' scratch arrays s
 instead of grown in the loop (the atomics go, the extra pass costs as much), the nearest-edge search's per-point
 helpers inlined (the cams' motion proofs: 2.03 -> 2.05 CPU s least of eight).  The same mapping on the cams' motion
 proofs: ``_nearest_edge`` with its helpers 30 % of the samples, their reference counts a further 11 %.
+2026-12-02, a fifteenth session (2 cores, idle; 965c6b0, no change to a variant's work): the seed-002 pair 3.38 / 2.96 /
+2.74 CPU s.  py-spy of five variants (21.7 s sampled): the as-built contact's compiled loop 26 % (1.15 s a variant),
+then nothing above 4 %: the free rotations' hits 0.16 s a variant, the spline fits' foot distances 0.10, the walking
+law's ``wrap_leg`` on small arrays 0.09, the proof's crops 0.09, the pickle round trip of the design handed to each
+contact direction run inline (``parallel.as_if_sent``) 0.06.
 """
 
 from __future__ import annotations

@@ -136,6 +136,13 @@ MiB: wall ratio 0.159, CPU ratio 0.240; ``ncg_elliptical.toml`` 7.90 s wall (11.
 13ee34b in a worktree and the new tree in turn, four rounds: 9.21 / 9.08 / 14.36 / 12.05 -> 9.56 / 12.10 / 13.49 /
 13.66 s wall (the machine swinging by 50 % within the minute; the meshing's gain here, about 0.5 CPU s of its two
 wheels, is below that); ``make``'s build of all part files, paired: about 10 % less CPU (``bench_tessellate.py``).
+2026-12-02, a fifteenth session (2 cores, idle; 965c6b0): ncgears 59.84 s wall (62.94 CPU s), peak 288 MiB; ours 12.13 s
+wall (19.63 CPU s), peak 651 MiB: wall ratio 0.203, CPU ratio 0.312 (the same code as the last session's 0.159 /
+0.240: the machine's minute).  The peak's floor once more, one process importing what a build imports, in turn
+(VmRSS): numpy 25 MiB, cadquery with its VTK deferred 363, scipy 410, numba 467, matplotlib 494, trimesh, manifold3d,
+ezdxf and Pillow 520, the propulsor modules 532; a build of this part file in one process reaches 560 MiB with its
+compiled kernels loaded (5.7 s in) and 708 at the end.  A process that holds the CAD kernel through cadquery starts
+at 363 MiB before any data, so 400 MiB needs the CAD kernel in a process of its own with no cadquery in it.
 """
 
 from __future__ import annotations
