@@ -36,6 +36,19 @@ raised core and ring are placed by a location (``kernel.shifted_z``), which sent
 s, 0.00498 mm): now strips, 0.31 s and 0.00250 mm, in each of the four cam parts.  A user's spline prism chamfered at
 its top (B-spline chamfer faces, no strips): each halving's faces that miss the limit are meshed again too: 8.5 CPU
 s, 222 854 triangles and 0.047 mm (the limit failed) -> 0.79 s, 28 056 triangles, 0.0053 mm.
+
+2026-12-02, a fifteenth session (2 cores; the 57 solids of ``make``'s STEP files, 965c6b0's ``tessellate.py`` beside the
+new one in one process, least of three each): 17.45 -> 11.97 CPU s in all.  Where the faces BRepMesh is left after the
+cylinder bands are all planes (a prism's first cap; 38 of the 57 solids: every gear, the cams, the shoes, the
+carriers' discs), they are triangulated by BRepMesh's Delabella algorithm instead of its default (Watson's): the same
+nodes (the edges are discretised before either runs), as many triangles, the same ones off the caps, the reported
+deflection the same; the mesh volumes move by 1e-16 relative (the sum's order).  Per solid: the seed-002 driven wheel
+0.83 -> 0.41, the seed-000 driven 0.99 -> 0.51, the final drive's ring 0.83 -> 0.46, a cam 0.29 -> 0.12-0.13.  On
+extrusions' faces (the balancer's, the carriers' holed side, which BRepMesh meshes where no strip fits) Delabella left
+faces bare, so it is given planes only, and a face it leaves bare sends the pass to Watson's.  ``make``: its STL, 3MF
+and GLB files of those solids (and the report pages that embed them, the manifests' mesh volumes in their last bits)
+change, every other file identical, 19 "all checks passed"; the exported meshes measured against the STEP faces as
+before (seed-002 driven 0.00248 mm, the cam 0.00250, the ring 0.00251 in float32, as before).
 """
 
 from __future__ import annotations

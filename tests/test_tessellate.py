@@ -570,3 +570,58 @@ def test_equal_rows_is_numpys_row_unique_with_its_inverse():
     soup = box.vertices[box.faces.reshape(-1)]
     nv, nf = T.merge_close_vertices(soup, np.arange(len(soup)).reshape(-1, 3))
     assert len(nv) == 8 and np.array_equal(nv[nf], box.vertices[box.faces])
+
+
+def _triangles(v, f) -> set:
+    """The triangles as sets of their corners' coordinates (independent of the vertices' order)."""
+    return {frozenset(map(tuple, v[t].tolist())) for t in f}
+
+
+def _watson(solid, monkeypatch):
+    """The mesh with every face BRepMesh meshes triangulated by its default algorithm (Watson's)."""
+    with monkeypatch.context() as m:
+        m.setattr(T, "_planes_left", lambda shape: False)
+        return T.triangulate(solid, parallel=False)
+
+
+def test_a_prisms_cap_is_delabellas_on_the_nodes_watson_gets(monkeypatch):
+    """The spline prism's bottom cap (four spline edges and the bore's circle) is triangulated by BRepMesh's Delabella
+    algorithm: the mesh has the nodes of Watson's, as many triangles, the same ones off the caps and other ones on
+    them; closed, clean in float32, its volume Watson's to 1e-12 relative."""
+    from propulsor.checks.mesh import signed_volume
+
+    solid = _spline_prism()
+    algos = []
+    real = T.BRepMesh_IncrementalMesh
+    monkeypatch.setattr(T, "BRepMesh_IncrementalMesh", lambda s, p: algos.append(p.MeshAlgo) or real(s, p))
+    v, f, d = T.triangulate(solid, parallel=False)
+    assert algos.count(T.IMeshTools_MeshAlgoType_Delabella) == 1
+    v0, f0, d0 = _watson(solid, monkeypatch)
+    assert np.array_equal(np.unique(v, axis=0), np.unique(v0, axis=0)) and len(f) == len(f0) and d == d0
+    ours, theirs = _triangles(v, f), _triangles(v0, f0)
+    on_caps = lambda tris: {t for t in tris if all(abs(p[2]) < 1e-9 or abs(p[2] - 12.0) < 1e-9 for p in t)}
+    assert ours - on_caps(ours) == theirs - on_caps(theirs) and on_caps(ours) != on_caps(theirs)
+    _closed_and_clean_in_float32(v, f)
+    assert signed_volume(v, f) == pytest.approx(signed_volume(v0, f0), rel=1e-12)
+
+
+def test_a_plane_delabella_leaves_bare_has_the_rest_meshed_by_watson(monkeypatch):
+    """Where the Delabella pass leaves a planar face without a triangulation (as it left extrusions' faces, which it is
+    not given), the faces it was given are meshed again by Watson's: the mesh is Watson's, to the bit.  Both caps
+    meshed by BRepMesh (no copy), one of them left bare: the other is not kept as Delabella made it."""
+    solid = _spline_prism()
+    real_apart = T._mesh_sides_apart
+    monkeypatch.setattr(T, "_mesh_sides_apart", lambda shape, r, a, p, twins=True, **k: real_apart(shape, r, a, p, False,
+                                                                                                  **k))
+    v0, f0, d0 = _watson(solid, monkeypatch)
+    real = T.BRepMesh_IncrementalMesh
+
+    def failing(s, p):
+        done = real(s, p)
+        if p.MeshAlgo == T.IMeshTools_MeshAlgoType_Delabella:
+            T.BRepTools.Clean_s(next(f for f in _faces(s) if T.BRepAdaptor_Surface(f).GetType() == T.GeomAbs_Plane))
+        return done
+
+    monkeypatch.setattr(T, "BRepMesh_IncrementalMesh", failing)
+    v, f, d = T.triangulate(solid, parallel=False)
+    assert np.array_equal(v, v0) and np.array_equal(f, f0) and d == d0

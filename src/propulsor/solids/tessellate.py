@@ -13,7 +13,7 @@ import numpy as np
 from OCP.BRep import BRep_Tool
 from OCP.BRepAdaptor import BRepAdaptor_Surface
 from OCP.GeomAbs import GeomAbs_Cone, GeomAbs_Cylinder, GeomAbs_Plane, GeomAbs_Sphere, GeomAbs_SurfaceOfExtrusion
-from OCP.IMeshTools import IMeshTools_Parameters
+from OCP.IMeshTools import IMeshTools_MeshAlgoType_Delabella, IMeshTools_Parameters
 from OCP.BRepMesh import BRepMesh_IncrementalMesh
 from OCP.BRepTools import BRepTools
 from OCP.TopAbs import TopAbs_FACE, TopAbs_REVERSED
@@ -160,15 +160,48 @@ def mesh_shape(shape, chord_tol, angular_tol, parallel, chord_limit: float | Non
     return _worst_deflection(shape, chord_limit)
 
 
+def _planes_left(shape) -> bool:
+    """Whether every face of `shape` without a triangulation lies on a plane."""
+    ex = TopExp_Explorer(shape, TopAbs_FACE)
+    while ex.More():
+        face = TopoDS.Face_s(ex.Current())
+        ex.Next()
+        if (BRep_Tool.Triangulation_s(face, TopLoc_Location()) is None
+                and BRepAdaptor_Surface(face).GetType() != GeomAbs_Plane):
+            return False
+    return True
+
+
+def _all_meshed(shape) -> bool:
+    """Whether every face of `shape` has a triangulation."""
+    ex = TopExp_Explorer(shape, TopAbs_FACE)
+    while ex.More():
+        if BRep_Tool.Triangulation_s(TopoDS.Face_s(ex.Current()), TopLoc_Location()) is None:
+            return False
+        ex.Next()
+    return True
+
+
 def _mesh_sides_apart(shape, request, angular_tol, parallel, twins: bool = True, ruled: bool = True):
     """:func:`propulsor.solids.prism_mesh.mesh_sides_apart` with BRepMesh meshing the faces that are not a prism's
     sides or second caps as :func:`mesh_shape` meshes the shape (``ruled``: cylinder bands first, no interior
-    vertices)."""
+    vertices).  Where the faces left after the cylinder bands are planes without interior vertices (a prism's first
+    cap, a keyway's flats: every gear), BRepMesh triangulates them by its Delabella algorithm instead of its default
+    (Watson's): the same nodes (the edges are discretised before either runs), as many triangles over the same plane
+    region, about half the time (``bench/bench_tessellate.py``).  A face it leaves without a triangulation (it
+    failed on extrusions' faces, which are not given to it) has them all meshed again by the default."""
     prm = _params(request, angular_tol, parallel, ruled)
 
     def mesh_rest(rest):
         if ruled:
             _premesh_cylinders(rest, prm)
+            if _planes_left(rest):
+                planar = _params(request, angular_tol, parallel, ruled)
+                planar.MeshAlgo = IMeshTools_MeshAlgoType_Delabella
+                if BRepMesh_IncrementalMesh(rest, planar).IsDone() and _all_meshed(rest):
+                    return
+                BRepTools.Clean_s(rest)
+                _premesh_cylinders(rest, prm)
         if not BRepMesh_IncrementalMesh(rest, prm).IsDone():
             raise RuntimeError("BRepMesh failed")
 
