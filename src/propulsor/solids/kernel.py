@@ -32,6 +32,7 @@ from OCP.TopoDS import TopoDS, TopoDS_Shape
 from OCP.TopTools import TopTools_ListOfShape
 
 from ..errors import InputError, require, require_positive
+from ..policy import TOUCHING_VOLUME_REL_TOL
 from .cq_import import import_cadquery
 
 __all__ = ["occ_shape", "as_solid", "solids_of", "one_solid", "moved", "shifted_z", "z_rotation", "cylinder",
@@ -187,12 +188,11 @@ def cq_fuse(a, *tools, name: str = "fuse", clean: bool = True, touching: bool = 
     (:data:`~propulsor.policy.TOUCHING_VOLUME_REL_TOL`): solids with no volume in common; else they are fused as
     overlapping ones."""
     if touching:
-        from ..policy import TOUCHING_VOLUME_REL_TOL
-
         glued = a.fuse(*tools, glue=True)
-        total = sum(volume(s) for s in (a, *tools))
-        if len(glued.Solids()) == 1 and abs(volume(glued) - total) <= TOUCHING_VOLUME_REL_TOL * abs(total):
-            return one_solid(glued, name) if clean else glued
+        if len(glued.Solids()) == 1:
+            total = sum(volume(s) for s in (a, *tools))
+            if abs(volume(glued) - total) <= TOUCHING_VOLUME_REL_TOL * abs(total):
+                return one_solid(glued, name) if clean else glued
     return one_solid(a.fuse(*tools), name) if clean else a.fuse(*tools)
 
 

@@ -160,26 +160,19 @@ def mesh_shape(shape, chord_tol, angular_tol, parallel, chord_limit: float | Non
     return _worst_deflection(shape, chord_limit)
 
 
-def _planes_left(shape) -> bool:
-    """Whether every face of `shape` without a triangulation lies on a plane."""
+def _bare_faces(shape):
+    """The faces of `shape` without a triangulation, in the explorer's order."""
     ex = TopExp_Explorer(shape, TopAbs_FACE)
     while ex.More():
         face = TopoDS.Face_s(ex.Current())
         ex.Next()
-        if (BRep_Tool.Triangulation_s(face, TopLoc_Location()) is None
-                and BRepAdaptor_Surface(face).GetType() != GeomAbs_Plane):
-            return False
-    return True
+        if BRep_Tool.Triangulation_s(face, TopLoc_Location()) is None:
+            yield face
 
 
-def _all_meshed(shape) -> bool:
-    """Whether every face of `shape` has a triangulation."""
-    ex = TopExp_Explorer(shape, TopAbs_FACE)
-    while ex.More():
-        if BRep_Tool.Triangulation_s(TopoDS.Face_s(ex.Current()), TopLoc_Location()) is None:
-            return False
-        ex.Next()
-    return True
+def _planes_left(shape) -> bool:
+    """Whether every face of `shape` without a triangulation lies on a plane."""
+    return all(BRepAdaptor_Surface(face).GetType() == GeomAbs_Plane for face in _bare_faces(shape))
 
 
 def _mesh_sides_apart(shape, request, angular_tol, parallel, twins: bool = True, ruled: bool = True):
@@ -198,7 +191,7 @@ def _mesh_sides_apart(shape, request, angular_tol, parallel, twins: bool = True,
             if _planes_left(rest):
                 planar = _params(request, angular_tol, parallel, ruled)
                 planar.MeshAlgo = IMeshTools_MeshAlgoType_Delabella
-                if BRepMesh_IncrementalMesh(rest, planar).IsDone() and _all_meshed(rest):
+                if BRepMesh_IncrementalMesh(rest, planar).IsDone() and next(_bare_faces(rest), None) is None:
                     return
                 BRepTools.Clean_s(rest)
                 _premesh_cylinders(rest, prm)

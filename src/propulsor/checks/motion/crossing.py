@@ -44,14 +44,9 @@ def _segments_meet(ax, ay, bx, by, cx, cy, dx, dy) -> bool:
 @njit(cache=True)
 def _any_crossing(P, nxt_p, prev_p, V, seg_b, prev_v, ox, oy, h, nx, ny, start, items, r):
     """Whether an edge of P (P[i] -> P[nxt_p[i]]) meets an edge of the outline V (V[v] -> seg_b[v]): the pairs of
-    edges with ends within r of each other (r: the sum of half the longest edge of each).  A point whose disc of
-    radius r misses the grid's box has no vertex within r (the box holds them all): its cells are not searched (the
-    grid's edge cells it would be clamped to hold vertices farther than r)."""
-    x1, y1 = ox + nx * h, oy + ny * h
+    edges with ends within r of each other (r: the sum of half the longest edge of each)."""
     for i in range(len(P)):
         px, py = P[i, 0], P[i, 1]
-        if px + r < ox or px - r > x1 or py + r < oy or py - r > y1:
-            continue
         ix0, ix1, iy0, iy1 = disc_cells(px, py, r, ox, oy, h, nx, ny)
         for ix in range(ix0, ix1 + 1):
             for iy in range(iy0, iy1 + 1):

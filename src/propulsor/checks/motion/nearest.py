@@ -107,10 +107,12 @@ def _level_for(outline, distance: float) -> int:
 
 @njit(cache=True)
 def disc_cells(px, py, r, ox, oy, h, nx, ny):
-    """The grid cells (ix0, ix1, iy0, iy1, inclusive, clamped to the grid) that the disc of radius r about
-    (px, py) overlaps."""
-    return (min(max(int(math.floor((px - r - ox) / h)), 0), nx - 1), min(max(int(math.floor((px + r - ox) / h)), 0), nx - 1),
-            min(max(int(math.floor((py - r - oy) / h)), 0), ny - 1), min(max(int(math.floor((py + r - oy) / h)), 0), ny - 1))
+    """The grid cells (ix0, ix1, iy0, iy1, inclusive, cut to the grid) that the disc of radius r about (px, py)
+    overlaps: an empty range (ix1 < ix0 or iy1 < iy0) where the disc misses the grid (before, it was clamped to the
+    grid's edge cells, whose vertices, all farther than r, were tested: the final drive's crossing tests 0.93 -> 0.38
+    CPU s)."""
+    return (max(int(math.floor((px - r - ox) / h)), 0), min(int(math.floor((px + r - ox) / h)), nx - 1),
+            max(int(math.floor((py - r - oy) / h)), 0), min(int(math.floor((py + r - oy) / h)), ny - 1))
 
 
 @njit(cache=True, inline="always")
