@@ -235,6 +235,36 @@ def test_plots_deterministic(tmp_path):
         save_plot(tmp_path / "e.jpg", fig)
 
 
+def _tight_figure(equal: bool):
+    x = np.linspace(0, 2 * np.pi, 400)
+    fig, ax = new_figure()
+    ax.plot(x, 3 * np.sin(x), label="a, mm")
+    ax.plot(np.cos(x), np.sin(x), label="b, mm")
+    ax.set_xlabel("phi, rad")
+    ax.set_title("tight")
+    if equal:
+        ax.set_aspect("equal", adjustable="datalim")
+    ax.legend()
+    fig.tight_layout()
+    return fig
+
+
+@pytest.mark.parametrize("equal", [False, True])
+def test_plot_drawn_once_same_pixels(tmp_path, equal):
+    """A figure laid out by tight_layout() is drawn once by save_plot (not once more, rendering off, for the
+    placeholder engine tight_layout leaves), and its PNG is the bytes of matplotlib's own save with that extra
+    draw."""
+    fig = _tight_figure(equal)
+    draws = []
+    fig.canvas.mpl_connect("draw_event", lambda ev: draws.append(ev))
+    save_plot(tmp_path / "one.png", fig)
+    assert len(draws) == 1
+    fig = _tight_figure(equal)
+    assert fig.get_layout_engine() is not None  # the placeholder: savefig draws twice
+    fig.savefig(tmp_path / "two.png", format="png", dpi=120, metadata={"Software": None}, bbox_inches=None)
+    assert same_bytes(tmp_path / "one.png", tmp_path / "two.png")
+
+
 # --- manifest, report, check PATH ---------------------------------------------------
 
 

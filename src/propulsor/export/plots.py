@@ -30,6 +30,7 @@ def save_plot(path: str | Path, fig, dpi: int = 120) -> Path:
     path = Path(path)
     prepare(path)
     suffix = path.suffix.lower()
+    _layout_done(fig)
     try:
         if suffix == ".png":
             fig.savefig(path, format="png", dpi=dpi, metadata={"Software": None}, bbox_inches=None)
@@ -43,6 +44,16 @@ def save_plot(path: str | Path, fig, dpi: int = 120) -> Path:
     finally:
         plt.close(fig)
     return path
+
+
+def _layout_done(fig) -> None:
+    """Drop the placeholder layout engine ``fig.tight_layout()`` leaves behind: it lays nothing out, but a figure
+    with any engine is drawn once more (rendering off) before ``savefig`` draws it; without the engine the same
+    pixels come from that one draw.  An engine that lays out at every draw (constrained, tight) is kept."""
+    from matplotlib.layout_engine import PlaceHolderLayoutEngine
+
+    if isinstance(fig.get_layout_engine(), PlaceHolderLayoutEngine):
+        fig.set_layout_engine(None)
 
 
 def line_plot(path: str | Path, series, xlabel: str, ylabel: str, title: str = "", markers: bool = False, equal_axes: bool = False) -> Path:
