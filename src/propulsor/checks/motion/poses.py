@@ -6,8 +6,12 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from llvmlite import ir
+from numba import njit, types
+from numba.extending import intrinsic
 
 from ...errors import require
+from ...nbcache import bind
 
 __all__ = ['Pose', 'poses_from_angles', 'rotation_matrices', 'pose_stack', 'apply_pose', 'inverse_pose', 'compose_poses']
 
@@ -68,7 +72,47 @@ def pose_stack(poses, n: int | None, name: str) -> tuple[np.ndarray, np.ndarray]
     return M, ang
 
 
+@intrinsic
+def _fma(typingctx, a, b, c):
+    """a b + c rounded once (LLVM's ``llvm.fma.f64``: the processor's fused multiply-add, or its exact emulation)."""
+    sig = types.float64(types.float64, types.float64, types.float64)
+
+    def codegen(context, builder, signature, args):
+        d = ir.DoubleType()
+        return builder.call(builder.module.declare_intrinsic("llvm.fma", [d], ir.FunctionType(d, [d, d, d])), args)
+
+    return sig, codegen
+
+
+@njit(cache=True)
+def _apply_pose_nb(M, P):
+    """``P @ M[:, :2].T + M[:, 2]`` as numpy computes it with OpenBLAS here (a test keeps them equal bit for bit): for
+    two points or more each row's two products summed by one fused multiply-add, x r0 first (the matrix product's
+    kernel), for one point y r1 first (the matrix-vector kernel); the translation added after."""
+    n = len(P)
+    out = np.empty((n, 2))
+    a, b, c = M[0, 0], M[0, 1], M[0, 2]
+    d, e, f = M[1, 0], M[1, 1], M[1, 2]
+    if n == 1:
+        x, y = P[0, 0], P[0, 1]
+        out[0, 0] = _fma(x, a, y * b) + c
+        out[0, 1] = _fma(x, d, y * e) + f
+        return out
+    for i in range(n):
+        x, y = P[i, 0], P[i, 1]
+        out[i, 0] = _fma(y, b, x * a) + c
+        out[i, 1] = _fma(y, e, x * d) + f
+    return out
+
+
 def apply_pose(M: np.ndarray, P: np.ndarray) -> np.ndarray:
+    """Points P (n, 2) moved by the affine 2x3 matrix M: ``P @ M[:, :2].T + M[:, 2]``, the same floats, compiled for
+    the float64 arrays in C order the motion checks pass (7-8 times numpy's speed on 300 to 10 000 points); numpy
+    for anything else."""
+    if (type(P) is np.ndarray and type(M) is np.ndarray and P.dtype == np.float64 and M.dtype == np.float64
+            and P.ndim == 2 and P.shape[1] == 2 and M.shape == (2, 3) and P.flags.c_contiguous
+            and M.flags.c_contiguous):
+        return _apply_pose_nb(M, P)
     return P @ M[:, :2].T + M[:, 2]
 
 
@@ -80,3 +124,7 @@ def inverse_pose(M: np.ndarray) -> np.ndarray:
 def compose_poses(M1: np.ndarray, M2: np.ndarray) -> np.ndarray:
     """M1 ∘ M2 (apply M2 first)."""
     return np.column_stack([M1[:, :2] @ M2[:, :2], M1[:, :2] @ M2[:, 2] + M1[:, 2]])
+
+
+# the disk cache of this module's kernel keyed on every kernel source (nbcache)
+bind(globals())
