@@ -20,7 +20,8 @@ SOURCES = tuple(str(_HERE / f) for f in ("checks/tri_tri.py", "checks/motion/nea
                                          "checks/motion/contact_reuse.py", "checks/motion/contact_track.py",
                                          "checks/box_pairs.py", "export/normals.py", "export/render.py",
                                          "geometry/spline_foot.py", "laws/fourier_kernels.py",
-                                         "laws/cam_kernels.py", "checks/motion/poses.py"))
+                                         "laws/cam_kernels.py", "checks/motion/poses.py",
+                                         "checks/motion/sweep_steps.py"))
 
 __all__ = ["SOURCES", "bind", "stamp"]
 

@@ -22,7 +22,8 @@ MODULES = ("propulsor.checks.tri_tri", "propulsor.checks.motion.nearest", "propu
            "propulsor.checks.motion.contact_reuse", "propulsor.checks.motion.contact_track",
            "propulsor.checks.box_pairs", "propulsor.export.normals", "propulsor.export.render",
            "propulsor.geometry.spline_foot", "propulsor.laws.fourier_kernels",
-           "propulsor.laws.cam_kernels", "propulsor.checks.motion.poses")
+           "propulsor.laws.cam_kernels", "propulsor.checks.motion.poses",
+           "propulsor.checks.motion.sweep_steps")
 
 __all__ = ["MODULES", "cold", "warm", "warm_if_cold"]
 
@@ -64,8 +65,9 @@ def warm() -> None:
     """Call every cached kernel once on small inputs, so that each is compiled (or loaded) now, in this process:
     the mesh checks' triangle tests, the motion proof's distance, crossing and rotation searches, and the as-built
     contact search (its first hit and all of a window's) on a pair of toothed rings; the GLB's shading normals; the
-    spline fit's foot-point distances; the poses' point product; the Fourier law's one-point inversion; the cam's
-    dense output, return quintics and shoe self-crossing test; the pictures' rasteriser."""
+    spline fit's foot-point distances; the poses' point product and the sweeps' steps apart; the Fourier law's
+    one-point inversion; the cam's dense output, return quintics and shoe self-crossing test; the pictures'
+    rasteriser."""
     from scipy.integrate import solve_ivp
 
     from ..export.normals import smooth_normals
@@ -79,12 +81,17 @@ def warm() -> None:
     from .motion.contact_events import DRIVE, PairOutlines, resolve_contact
     from .motion.crossing import certainly_apart
     from .motion.nearest import nearest_edge
-    from .motion.poses import apply_pose
+    from .motion.poses import Pose, apply_pose, rotation_matrices
+    from .motion.sweep2d import sweep_pair
+    from .motion.sweep_steps import move_each
 
     self_intersections(np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]),
                        np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]))
     square = Outline([np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])], 0.5)
     apply_pose(np.array([[0.0, -1.0, 0.5], [1.0, 0.0, 0.25]]), square.points)  # the poses' compiled product
+    # the sweep's compiled steps where the bodies are apart (motion/sweep_steps.py), and its points' poses
+    sweep_pair(square, Pose(), square, rotation_matrices(np.zeros(2), np.array([[3.0, 0.0], [3.5, 0.0]])))
+    move_each(np.zeros((1, 2, 3)), np.zeros((1, 2)))
     nearest_edge(square.points + 1.5, square, square)
     certainly_apart(square, square, square.points + 1.2, square.points - 1.2, 0.2)
     P = square.points + 1.2

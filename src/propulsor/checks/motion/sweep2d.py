@@ -17,6 +17,7 @@ from .poses import Pose, apply_pose, compose_poses, inverse_pose, pose_stack
 from .distance import check_record, dist_each_point
 from .crossing import certainly_apart
 from .nearest import nearest_edge
+from .sweep_steps import apart_steps, move_each
 
 __all__ = ['SweepResult', 'sweep_pair', 'sweep_pair_windowed']
 
@@ -153,7 +154,16 @@ def sweep_pair(profile_a, poses_a, profile_b, poses_b, chord_tol: float = policy
     pa = np.zeros((N, 2))
     pb = np.zeros((N, 2))
     overlapped = False
-    for k in range(N):
+    # the steps where the bodies are certainly apart in one compiled loop (sweep_steps: the same values), the others
+    # (and the one where that loop stops) step by step here
+    rel_ba = np.array([compose_poses(inverse_pose(Ma[k]), Mb[k]) for k in range(N)]).reshape(N, 2, 3)
+    rel_ab = np.array([inverse_pose(r) for r in rel_ba]).reshape(N, 2, 3)
+    k = 0
+    while k < N:
+        if not overlapped:
+            k = apart_steps(A, B, rel_ba, rel_ab, Ma, Mb, k, clear, pa, pb)
+            if k >= N:
+                break
         # the boundaries' least distance first: where it shows the bodies apart, their common area is 0
         # without the boolean (crossing.certainly_apart); after an overlapping step, the boolean first
         d = None
@@ -169,6 +179,7 @@ def sweep_pair(profile_a, poses_a, profile_b, poses_b, chord_tol: float = policy
                 d, a_pt, b_pt, _, _ = _boundary_distance(A, B, Ma[k], Mb[k])
         overlapped = area[k] > policy.OVERLAP_AREA_TOL_MM2
         clear[k], pa[k], pb[k] = d, a_pt, b_pt
+        k += 1
     return SweepResult(ang_a, ang_b, area, clear, pa, pb, clearance_limit, name)
 
 
@@ -213,8 +224,7 @@ def sweep_pair_windowed(profile_a, poses_a, profile_b, poses_b, reach: float,
             r = sweep_pair(Outline(polys, max_segment), ident, B, rel[k0:k1], chord_tol, max_segment=max_segment)
             area[k0:k1] = r.overlap_area
             clear[k0:k1] = np.minimum(r.clearance, reach)
-            for j, k in enumerate(range(k0, k1)):
-                pa[k] = apply_pose(Ma[k], r.point_a[j:j + 1])[0]
-                pb[k] = apply_pose(Ma[k], r.point_b[j:j + 1])[0]
+            pa[k0:k1] = move_each(Ma[k0:k1], r.point_a)  # each apply_pose(Ma[k], point[None])[0]
+            pb[k0:k1] = move_each(Ma[k0:k1], r.point_b)
         k0 = k1
     return SweepResult(ang_a, ang_b, area, clear, pa, pb, clearance_limit, name)
