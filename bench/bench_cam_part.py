@@ -14,6 +14,13 @@ make's STEP, STL, 3MF and GLB files.  Where the rest of a cam part goes (py-spy 
 sampled): the 2D motion sweeps 14.8 (their compiled nearest-edge search 1.0-1.3 s a part; the far bodies' KD-tree
 path, 1 320 calls a part at 0.35 ms, and the poses' numpy around them the rest), the files of the solids 7.7, the
 design 3.8, the plots 3.5.
+
+2026-12-02 (2 cores; old and new code in one process, in turn): the far bodies' KD-tree path was the grid levels'
+gap: bodies 16 mm apart (the shoe and the carrier; 5.1 mm cells) ask for level 0, whose 3 cells (15.4 mm) fall short,
+so every step went to the tree.  ``nearest._level_for`` now takes one level coarser where its 3 cells fall short of
+1.25 times the last distance: a cam build's tree searches 1 320 -> 1, cam_linear's whole build 6.06 / 6.16 -> 5.53 /
+5.75 CPU s (one process, PROPULSOR_JOBS=1), its files identical.  Then the sweep's steps apart in one compiled loop
+(``checks/motion/sweep_steps.py``, see bench_final_drive.py).
 """
 
 from __future__ import annotations

@@ -11,6 +11,14 @@ of them (the builds side by side on the machine's cores), timed whole; the old `
 part file in sequence, so its time is the old column's total.
 Prints, and writes to bench/results/make_parts.md, the wall time of every build, the totals and the
 old/new ratio.  Targets: new `make` <= 100 s, every part <= 20 s, old/new >= 2.
+
+2026-12-02 (2 cores; every part file in one ``propulsor build``, the session's start 74af1b0 in a worktree against
+d946e29): make-like runs, in turn, 142.8 / 163.4 s wall (268 / 306 user s) old, 171.3 / 143.0 (316 / 268) new; the two
+trees side by side, one core each (PROPULSOR_JOBS=1, the same minutes for both), 273.3 and 274.8 user s.  The
+machine's swings (one part alone, the two trees side by side: 21.7 / 26.5 / 22.7 against 25.9 / 24.2 / 22.7 CPU s)
+are larger than the session's changes, whose parts were measured in one process, old and new in turn (the plots'
+single draw 173 -> 139 ms a line plot, the cams' grid level -0.5 CPU s a cam part, the final drive's carrier sweep
+-25 %: bench_cam_part.py, bench_final_drive.py).
 """
 
 from __future__ import annotations
