@@ -83,6 +83,8 @@ def _bucket_nb(ix, iy, nx, ny):
 #: cell side)² cells, so bodies far apart are searched in the coarser grids)
 LEVEL_FACTOR = 3.0
 MAX_LEVEL = 4
+#: bodies farther apart than this many grid cells are left to the KD-tree search (distance.min_dist_points_to)
+FAR_CELLS = 3.0
 
 
 def grid_of(outline, level: int = 0) -> VertexGrid:
@@ -97,11 +99,17 @@ def grid_of(outline, level: int = 0) -> VertexGrid:
 
 
 def _level_for(outline, distance: float) -> int:
-    """The coarsest grid whose cell side is at most half `distance` (the level whose rings of cells a search
-    for that distance crosses are few), the finest for a distance below two of its cells; one level coarser where
-    that one's FAR_CELLS cells fall short of 1.25 times the distance (bodies that far apart would be left to the
-    KD-tree at every step: the cams' shoe and carrier 16 mm apart, 5.1 mm cells, 546 tree searches a build)."""
-    h0 = grid_of(outline).h
+    """The grid level of an Outline for a search at `distance` (:func:`level_of` of its finest cell side)."""
+    return int(level_of(grid_of(outline).h, float(distance)))
+
+
+@njit(cache=True)
+def level_of(h0, distance):
+    """The coarsest grid whose cell side (h0 the finest's) is at most half `distance` (the level whose rings of cells
+    a search for that distance crosses are few), the finest for a distance below two of its cells; one level coarser
+    where that one's FAR_CELLS cells fall short of 1.25 times the distance (bodies that far apart would be left to the
+    KD-tree at every step: the cams' shoe and carrier 16 mm apart, 5.1 mm cells, 546 tree searches a build).  It
+    decides the searches' speed, never their answer."""
     if not distance > 2.0 * h0:
         return 0
     level = int(min(MAX_LEVEL, math.floor(math.log(distance / (2.0 * h0)) / math.log(LEVEL_FACTOR))))
@@ -300,9 +308,6 @@ def _nearest_edge(P, rho, V, B, prev, half_len, ox, oy, h, nx, ny, start, items,
                                 best_i, qx_best, qy_best = i, qx, qy
     return best_d, best_i, qx_best, qy_best
 
-
-#: bodies farther apart than this many grid cells are left to the KD-tree search (distance.min_dist_points_to)
-FAR_CELLS = 3.0
 
 
 class _Memory:

@@ -13,7 +13,6 @@ sweep takes that step as before.
 
 from __future__ import annotations
 
-import math
 
 import numpy as np
 from numba import njit
@@ -22,7 +21,7 @@ from ... import policy
 from ...nbcache import bind
 from .crossing import APART_MIN_MM, _any_crossing, _holds_a_loop, _loop_firsts
 from .distance import _CHUNK, _chunk_discs
-from .nearest import FAR_CELLS, LEVEL_FACTOR, MAX_LEVEL, _level_for, _memory, _nearest_edge, grid_of
+from .nearest import FAR_CELLS, _level_for, _memory, _nearest_edge, grid_of, level_of
 from .poses import _fma
 
 __all__ = ["apart_steps", "move_each"]
@@ -55,18 +54,6 @@ def move_each(M, P):
 
 
 @njit(cache=True)
-def _level_nb(h0, distance):
-    """nearest._level_for of an outline whose finest cell side is h0 (it decides the speed only, never the
-    answer)."""
-    if not distance > 2.0 * h0:
-        return 0
-    level = int(min(MAX_LEVEL, math.floor(math.log(distance / (2.0 * h0)) / math.log(LEVEL_FACTOR))))
-    if level < MAX_LEVEL and FAR_CELLS * h0 * LEVEL_FACTOR ** level < 1.25 * distance:
-        level += 1
-    return level
-
-
-@njit(cache=True)
 def _search(P, rho, V, prev, half_len, ccx, ccy, r_min, r_max, g_o, g_h, g_n, g_start, g_items, g_segb, chunk, margin,
             seed, heads, lows, at, low_pt, exact, tally):
     return _nearest_edge(P, rho, V, g_segb, prev, half_len, g_o[0], g_o[1], g_h, g_n[0], g_n[1], g_start, g_items,
@@ -87,7 +74,7 @@ def _steps_nb(k0, rel_ba, rel_ab, Ma, Mb, chunk, margin,
     PA = np.empty((len(Va), 2))
     for k in range(k0, n):
         # B's vertices against A's edges (A's frame), then A's against B's (sweep2d._boundary_distance)
-        if _level_nb(h0a, hint_ba) != lva or _level_nb(h0b, hint_ab) != lvb:
+        if level_of(h0a, hint_ba) != lva or level_of(h0b, hint_ab) != lvb:
             return k, seed_ba, hint_ba, seed_ab, hint_ab
         _move(rel_ba[k], Vb, PB)
         d1, i1, q1x, q1y = _search(PB, rho_b, Va, prev_a, half_a, ca[0], ca[1], rmin_a, rmax_a, ga_o, ga_h, ga_n,
@@ -96,7 +83,7 @@ def _steps_nb(k0, rel_ba, rel_ab, Ma, Mb, chunk, margin,
         if i1 < 0:  # far apart: the KD-tree's
             return k, seed_ba, hint_ba, seed_ab, hint_ab
         hint_ba, seed_ba = d1, i1
-        if _level_nb(h0b, hint_ab) != lvb:
+        if level_of(h0b, hint_ab) != lvb:
             return k, seed_ba, hint_ba, seed_ab, hint_ab
         _move(rel_ab[k], Va, PA)
         d2, i2, q2x, q2y = _search(PA, rho_a, Vb, prev_b, half_b, cb[0], cb[1], rmin_b, rmax_b, gb_o, gb_h, gb_n,
