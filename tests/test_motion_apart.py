@@ -22,9 +22,16 @@ def _star(n_teeth: int, r_root: float, r_tip: float, n: int = 600) -> np.ndarray
     return np.column_stack([r * np.cos(a), r * np.sin(a)])
 
 
+def _distance(A: Outline, B: Outline, M: np.ndarray):
+    """sweep2d._boundary_distance of A held at the origin and B placed by M (the relative poses as sweep_pair's)."""
+    I = np.array(Pose().matrix())
+    rel_ba = compose_poses(inverse_pose(I), M)
+    return sweep2d._boundary_distance(A, B, I, M, rel_ba, inverse_pose(rel_ba))
+
+
 def _apart(A: Outline, B: Outline, M: np.ndarray) -> tuple[bool, float]:
     """(certainly_apart, the boolean's common area) of B placed by M in A's frame."""
-    d, _, _, PB, PA = sweep2d._boundary_distance(A, B, np.array(Pose().matrix()), M)
+    d, _, _, PB, PA = _distance(A, B, M)
     return certainly_apart(A, B, PB, PA, d), float((A.section ^ B.section.transform(M)).area())
 
 
@@ -61,7 +68,7 @@ def test_without_the_distance_the_same_answer_with_every_edge_pair_near_the_othe
     seen = {True: 0, False: 0}
     for _ in range(200):
         M = Pose(float(rng.uniform(0, 2 * math.pi)), (0.0, 0.0), (float(rng.uniform(30.0, 48.0)), float(rng.uniform(-4, 4)))).matrix()
-        d, _, _, PB, PA = sweep2d._boundary_distance(A, B, np.array(Pose().matrix()), M)
+        d, _, _, PB, PA = _distance(A, B, M)
         apart = certainly_apart(A, B, PB, PA, None)
         seen[apart] += 1
         assert apart == certainly_apart(A, B, PB, PA, d) or d <= 1e-6

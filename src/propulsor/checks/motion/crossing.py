@@ -95,21 +95,35 @@ def _loop_firsts(o) -> np.ndarray:
     return f
 
 
+@njit(cache=True)
+def _apart(d, PB, PA, nxt_b, prev_b, Va, seg_b0, prev_a, ox, oy, h, nx, ny, start, items, r_cross, half_max, firsts_b,
+           firsts_a, seg_b_a, Vb, seg_b_b) -> bool:
+    """:func:`certainly_apart`'s tests (d < 0: the least distance not known), on the arguments of
+    :func:`apart_args` after PB and PA."""
+    if not (d < 0.0 or d > APART_MIN_MM):
+        return False
+    if (d < 0.0 or not d > half_max) and _any_crossing(PB, nxt_b, prev_b, Va, seg_b0, prev_a, ox, oy, h, nx, ny, start,
+                                                       items, r_cross):
+        return False
+    return not (_holds_a_loop(PB, firsts_b, Va, seg_b_a) or _holds_a_loop(PA, firsts_a, Vb, seg_b_b))
+
+
+def apart_args(A, B) -> tuple:
+    """What :func:`_apart` takes after d, PB and PA for outlines A and B (A's grid of level 0; r_cross: the sum of
+    half the longest edge of each, the reach of a crossing)."""
+    g = grid_of(A)
+    r_cross = (A.half_len + B.half_len) * (1.0 + 1e-9) + 1e-12
+    return (B.nxt, B.prev, A.points, g.seg_b, A.prev, g.origin[0], g.origin[1], g.h, g.nx, g.ny, g.start, g.items,
+            r_cross, max(A.half_len, B.half_len), _loop_firsts(B), _loop_firsts(A), A.seg_b, B.points, B.seg_b)
+
+
 def certainly_apart(A, B, PB: np.ndarray, PA: np.ndarray, d: float | None) -> bool:
     """Whether outlines A and B (PB: B's vertices in A's frame, PA: A's in B's; d: the least vertex-to-edge
     distance between them, both ways, or None when not known) have no area in common: the boundaries cross
     nowhere and no loop of one lies inside the other.  False when in doubt (d below APART_MIN_MM, or edges that
     meet or touch)."""
-    if d is not None and not d > APART_MIN_MM:
-        return False
-    if d is None or not d > max(A.half_len, B.half_len):
-        g = grid_of(A)
-        r = (A.half_len + B.half_len) * (1.0 + 1e-9) + 1e-12
-        if _any_crossing(np.ascontiguousarray(PB), B.nxt, B.prev, A.points, g.seg_b, A.prev, g.origin[0], g.origin[1],
-                         g.h, g.nx, g.ny, g.start, g.items, r):
-            return False
-    return not (_holds_a_loop(np.ascontiguousarray(PB), _loop_firsts(B), A.points, A.seg_b)
-                or _holds_a_loop(np.ascontiguousarray(PA), _loop_firsts(A), B.points, B.seg_b))
+    return bool(_apart(-1.0 if d is None else float(d), np.ascontiguousarray(PB, np.float64),
+                       np.ascontiguousarray(PA, np.float64), *apart_args(A, B)))
 
 
 # the disk cache of these kernels keyed on every kernel source (one may be compiled into another's code)

@@ -218,8 +218,8 @@ def _search(P, i, V, ox, oy, h, nx, ny, start, items, bound, at, low_pt, exact, 
 
 
 @njit(cache=True)
-def _nearest_edge(P, rho, V, B, prev, half_len, ox, oy, h, nx, ny, start, items, chunk, margin, ccx, ccy, r_min, r_max,
-                  far, seed, heads, lows, at, low_pt, exact, tally):
+def _nearest_edge(P, seed, rho, V, B, prev, half_len, ox, oy, h, nx, ny, start, items, chunk, margin, ccx, ccy, r_min,
+                  r_max, far, heads, lows, at, low_pt, exact, tally):
     n = len(P)
     nch = (n + chunk - 1) // chunk
     # a lower bound of each point's distance from the outline's vertices: the annulus r_min .. r_max about
@@ -343,6 +343,30 @@ def _memory(tgt, src, n_runs: int, n_points: int) -> _Memory:
     return mem
 
 
+def hints_of(tgt) -> dict:
+    """The last least distance of each source outline's searches against tgt (by id; the grid level follows it)."""
+    hints = getattr(tgt, "_nearest_hints", None)
+    if hints is None:
+        hints = tgt._nearest_hints = {}
+    return hints
+
+
+def search_args(tgt, src, level: int) -> tuple[_Memory, tuple]:
+    """The memory of src's searches against tgt, and what the compiled search ``_nearest_edge(P, seed, *args)``
+    takes after the points and the seed for src's vertices (moved into tgt's frame) against tgt's edges on grid
+    `level`: :func:`nearest_edge` and the sweep's compiled steps (sweep_steps.py) both call it so."""
+    from ... import policy
+    from .distance import _CHUNK, _chunk_discs
+
+    g = grid_of(tgt, level)
+    _, rho, _ = _chunk_discs(src)
+    mem = _memory(tgt, src, len(rho), len(src.points))
+    return mem, (rho, tgt.points, g.seg_b, tgt.prev, tgt.half_len, g.origin[0], g.origin[1], g.h, g.nx, g.ny, g.start,
+                 g.items, _CHUNK, policy.MOTION_PRUNE_MARGIN_MM, float(tgt.center[0]), float(tgt.center[1]),
+                 tgt.r_min - 1e-9 * (1.0 + tgt.radius), tgt.radius + 1e-9 * (1.0 + tgt.radius), FAR_CELLS * g.h,
+                 mem.heads, mem.lows, mem.at, mem.low_pt, mem.exact, mem.searches)
+
+
 def nearest_edge(P: np.ndarray, tgt, src) -> tuple[float, int, np.ndarray]:
     """Least distance from points P (tgt body frame; the vertices of outline `src`, rigidly moved, same order)
     to tgt's edges: (d, index in P, foot point) — from the grid, or from distance.min_dist_points_to (the same
@@ -350,21 +374,11 @@ def nearest_edge(P: np.ndarray, tgt, src) -> tuple[float, int, np.ndarray]:
     last answer for the same two outlines (a sweep's steps are close), the first bound starts from the point of
     that answer, and a point (a run) whose nearest vertex an earlier search put farther than the bound by more
     than it has moved since is not searched again (``_Memory``): the answer depends on none of them."""
-    from ... import policy
-    from .distance import _CHUNK, _chunk_discs, min_dist_points_to
+    from .distance import min_dist_points_to
 
-    hints = getattr(tgt, "_nearest_hints", None)
-    if hints is None:
-        hints = tgt._nearest_hints = {}
-    g = grid_of(tgt, _level_for(tgt, hints.get(id(src), 0.0)))
-    _, rho, _ = _chunk_discs(src)
-    mem = _memory(tgt, src, len(rho), len(P))
-    d, i, qx, qy = _nearest_edge(np.ascontiguousarray(P, np.float64), rho, tgt.points, g.seg_b, tgt.prev,
-                                 tgt.half_len, g.origin[0], g.origin[1], g.h, g.nx, g.ny, g.start, g.items, _CHUNK,
-                                 policy.MOTION_PRUNE_MARGIN_MM, float(tgt.center[0]), float(tgt.center[1]),
-                                 tgt.r_min - 1e-9 * (1.0 + tgt.radius), tgt.radius + 1e-9 * (1.0 + tgt.radius),
-                                 FAR_CELLS * g.h, mem.seed, mem.heads, mem.lows, mem.at, mem.low_pt,
-                                 mem.exact, mem.searches)
+    hints = hints_of(tgt)
+    mem, args = search_args(tgt, src, _level_for(tgt, hints.get(id(src), 0.0)))
+    d, i, qx, qy = _nearest_edge(np.ascontiguousarray(P, np.float64), mem.seed, *args)
     if i < 0:
         d, i, q = min_dist_points_to(P, tgt, src)
         hints[id(src)] = d

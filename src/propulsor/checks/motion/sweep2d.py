@@ -92,11 +92,11 @@ class SweepResult:
         return out
 
 
-def _boundary_distance(A: Outline, B: Outline, Ma: np.ndarray, Mb: np.ndarray):
-    """Least distance between the boundaries of A and B at one step, exact when they do not cross: (d, world
-    point on A, world point on B, B's vertices in A's frame, A's in B's)."""
-    rel_ba = compose_poses(inverse_pose(Ma), Mb)  # B body -> A body
-    rel_ab = inverse_pose(rel_ba)
+def _boundary_distance(A: Outline, B: Outline, Ma: np.ndarray, Mb: np.ndarray, rel_ba: np.ndarray,
+                       rel_ab: np.ndarray):
+    """Least distance between the boundaries of A and B at one step (world poses Ma, Mb; rel_ba: B's body to A's,
+    rel_ab its inverse), exact when they do not cross: (d, world point on A, world point on B, B's vertices in A's
+    frame, A's in B's)."""
     PB = apply_pose(rel_ba, B.points)
     d1, i1, q1 = nearest_edge(PB, A, B)  # B vertices -> A edges (A frame)
     PA = apply_pose(rel_ab, A.points)
@@ -106,10 +106,10 @@ def _boundary_distance(A: Outline, B: Outline, Ma: np.ndarray, Mb: np.ndarray):
     return d2, apply_pose(Mb, PA[i2:i2 + 1])[0], apply_pose(Mb, q2[None])[0], PB, PA
 
 
-def _penetration(A: Outline, B: Outline, Ma: np.ndarray, Mb: np.ndarray, inter) -> tuple[float, np.ndarray, np.ndarray]:
-    """Signed clearance of an overlapping step (see SweepResult: minus the boundary penetration) and its point."""
-    rel_ba = compose_poses(inverse_pose(Ma), Mb)  # B body -> A body
-    rel_ab = inverse_pose(rel_ba)
+def _penetration(A: Outline, B: Outline, Ma: np.ndarray, rel_ab: np.ndarray, inter) -> tuple[float, np.ndarray,
+                                                                                              np.ndarray]:
+    """Signed clearance of an overlapping step (see SweepResult: minus the boundary penetration) and its point
+    (Ma: A's world pose, rel_ab: A's body to B's)."""
     polys = [np.asarray(p, float) for p in inter.to_polygons()]
     V = np.vstack(polys)
     da = dist_each_point(V, A)  # overlap vertices live in A's body frame (A kept in its frame)
@@ -168,15 +168,14 @@ def sweep_pair(profile_a, poses_a, profile_b, poses_b, chord_tol: float = policy
         # without the boolean (crossing.certainly_apart); after an overlapping step, the boolean first
         d = None
         if not overlapped:
-            d, a_pt, b_pt, PB, PA = _boundary_distance(A, B, Ma[k], Mb[k])
+            d, a_pt, b_pt, PB, PA = _boundary_distance(A, B, Ma[k], Mb[k], rel_ba[k], rel_ab[k])
         if d is None or not certainly_apart(A, B, PB, PA, d):
-            rel = compose_poses(inverse_pose(Ma[k]), Mb[k])  # B body -> A body
-            inter = A.section ^ B.section.transform(rel)
+            inter = A.section ^ B.section.transform(rel_ba[k])
             area[k] = inter.area()
             if area[k] > policy.OVERLAP_AREA_TOL_MM2:
-                d, a_pt, b_pt = _penetration(A, B, Ma[k], Mb[k], inter)
+                d, a_pt, b_pt = _penetration(A, B, Ma[k], rel_ab[k], inter)
             elif d is None:
-                d, a_pt, b_pt, _, _ = _boundary_distance(A, B, Ma[k], Mb[k])
+                d, a_pt, b_pt, _, _ = _boundary_distance(A, B, Ma[k], Mb[k], rel_ba[k], rel_ab[k])
         overlapped = area[k] > policy.OVERLAP_AREA_TOL_MM2
         clear[k], pa[k], pb[k] = d, a_pt, b_pt
         k += 1

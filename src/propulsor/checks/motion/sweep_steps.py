@@ -13,15 +13,12 @@ sweep takes that step as before.
 
 from __future__ import annotations
 
-
 import numpy as np
 from numba import njit
 
-from ... import policy
 from ...nbcache import bind
-from .crossing import APART_MIN_MM, _any_crossing, _holds_a_loop, _loop_firsts
-from .distance import _CHUNK, _chunk_discs
-from .nearest import FAR_CELLS, _level_for, _memory, _nearest_edge, grid_of, level_of
+from .crossing import _apart, apart_args
+from .nearest import _level_for, _nearest_edge, grid_of, hints_of, level_of, search_args
 from .poses import _fma
 
 __all__ = ["apart_steps", "move_each"]
@@ -54,21 +51,8 @@ def move_each(M, P):
 
 
 @njit(cache=True)
-def _search(P, rho, V, prev, half_len, ccx, ccy, r_min, r_max, g_o, g_h, g_n, g_start, g_items, g_segb, chunk, margin,
-            seed, heads, lows, at, low_pt, exact, tally):
-    return _nearest_edge(P, rho, V, g_segb, prev, half_len, g_o[0], g_o[1], g_h, g_n[0], g_n[1], g_start, g_items,
-                         chunk, margin, ccx, ccy, r_min, r_max, FAR_CELLS * g_h, seed, heads, lows, at, low_pt, exact,
-                         tally)
-
-
-@njit(cache=True)
-def _steps_nb(k0, rel_ba, rel_ab, Ma, Mb, chunk, margin,
-              Va, prev_a, half_a, ca, rmin_a, rmax_a, h0a, lva, ga_o, ga_h, ga_n, ga_start, ga_items, ga_segb,
-              rho_b, seed_ba, heads_ba, lows_ba, at_ba, low_ba, exact_ba, tally_ba, hint_ba,
-              Vb, prev_b, half_b, cb, rmin_b, rmax_b, h0b, lvb, gb_o, gb_h, gb_n, gb_start, gb_items, gb_segb,
-              rho_a, seed_ab, heads_ab, lows_ab, at_ab, low_ab, exact_ab, tally_ab, hint_ab,
-              g0_o, g0_h, g0_n, g0_start, g0_items, g0_segb, nxt_b, r_cross, half_max, firsts_b, firsts_a, segb_a,
-              segb_b, clear, pa, pb):
+def _steps_nb(k0, rel_ba, rel_ab, Ma, Mb, Va, Vb, h0a, lva, seed_ba, hint_ba, args_ba, h0b, lvb, seed_ab, hint_ab,
+              args_ab, args_apart, clear, pa, pb):
     n = len(rel_ba)
     PB = np.empty((len(Vb), 2))
     PA = np.empty((len(Va), 2))
@@ -77,29 +61,19 @@ def _steps_nb(k0, rel_ba, rel_ab, Ma, Mb, chunk, margin,
         if level_of(h0a, hint_ba) != lva or level_of(h0b, hint_ab) != lvb:
             return k, seed_ba, hint_ba, seed_ab, hint_ab
         _move(rel_ba[k], Vb, PB)
-        d1, i1, q1x, q1y = _search(PB, rho_b, Va, prev_a, half_a, ca[0], ca[1], rmin_a, rmax_a, ga_o, ga_h, ga_n,
-                                   ga_start, ga_items, ga_segb, chunk, margin, seed_ba, heads_ba, lows_ba, at_ba,
-                                   low_ba, exact_ba, tally_ba)
+        d1, i1, q1x, q1y = _nearest_edge(PB, seed_ba, *args_ba)
         if i1 < 0:  # far apart: the KD-tree's
             return k, seed_ba, hint_ba, seed_ab, hint_ab
         hint_ba, seed_ba = d1, i1
         if level_of(h0b, hint_ab) != lvb:
             return k, seed_ba, hint_ba, seed_ab, hint_ab
         _move(rel_ab[k], Va, PA)
-        d2, i2, q2x, q2y = _search(PA, rho_a, Vb, prev_b, half_b, cb[0], cb[1], rmin_b, rmax_b, gb_o, gb_h, gb_n,
-                                   gb_start, gb_items, gb_segb, chunk, margin, seed_ab, heads_ab, lows_ab, at_ab,
-                                   low_ab, exact_ab, tally_ab)
+        d2, i2, q2x, q2y = _nearest_edge(PA, seed_ab, *args_ab)
         if i2 < 0:
             return k, seed_ba, hint_ba, seed_ab, hint_ab
         hint_ab, seed_ab = d2, i2
-        # crossing.certainly_apart
         d = d1 if d1 <= d2 else d2
-        if not d > APART_MIN_MM:
-            return k, seed_ba, hint_ba, seed_ab, hint_ab
-        if not d > half_max and _any_crossing(PB, nxt_b, prev_b, Va, g0_segb, prev_a, g0_o[0], g0_o[1], g0_h,
-                                              g0_n[0], g0_n[1], g0_start, g0_items, r_cross):
-            return k, seed_ba, hint_ba, seed_ab, hint_ab
-        if _holds_a_loop(PB, firsts_b, Va, segb_a) or _holds_a_loop(PA, firsts_a, Vb, segb_b):
+        if not _apart(d, PB, PA, *args_apart):
             return k, seed_ba, hint_ba, seed_ab, hint_ab
         clear[k] = d
         if d1 <= d2:
@@ -111,41 +85,22 @@ def _steps_nb(k0, rel_ba, rel_ab, Ma, Mb, chunk, margin,
     return n, seed_ba, hint_ba, seed_ab, hint_ab
 
 
-def _grid_args(g):
-    return (g.origin, g.h, np.array([g.nx, g.ny], np.int64), g.start, g.items, g.seg_b)
-
-
-def _body_args(tgt, src, level: int):
-    """What ``nearest_edge(P, tgt, src)`` passes its kernel, for src's points at grid `level` of tgt."""
-    g = grid_of(tgt, level)
-    _, rho, _ = _chunk_discs(src)
-    mem = _memory(tgt, src, len(rho), len(src.points))
-    return ((tgt.points, tgt.prev, tgt.half_len, np.asarray(tgt.center, np.float64),
-             tgt.r_min - 1e-9 * (1.0 + tgt.radius), tgt.radius + 1e-9 * (1.0 + tgt.radius), grid_of(tgt).h, level)
-            + _grid_args(g) + (rho, mem.seed, mem.heads, mem.lows, mem.at, mem.low_pt, mem.exact, mem.searches)), mem
-
-
 def apart_steps(A, B, rel_ba: np.ndarray, rel_ab: np.ndarray, Ma: np.ndarray, Mb: np.ndarray, k0: int,
                 clear: np.ndarray, pa: np.ndarray, pb: np.ndarray) -> int:
     """Steps k0, k0 + 1, … of a sweep of outlines A and B (rel_ba[k]: B's body to A's, rel_ab[k] its inverse; Ma, Mb
     the world poses) while the bodies are certainly apart, their clearance and closest points written into clear,
     pa, pb (the overlap area is 0 there); returns the first step not taken (len(rel_ba) when every one was), which
     the caller takes step by step.  The searches' memories, seeds and hints are left as nearest_edge leaves them."""
-    hints_a = A.__dict__.setdefault("_nearest_hints", {})
-    hints_b = B.__dict__.setdefault("_nearest_hints", {})
+    hints_a, hints_b = hints_of(A), hints_of(B)
     hint_ba, hint_ab = float(hints_a.get(id(B), 0.0)), float(hints_b.get(id(A), 0.0))
-    args_a, mem_ba = _body_args(A, B, _level_for(A, hint_ba))
-    args_b, mem_ab = _body_args(B, A, _level_for(B, hint_ab))
-    g0 = grid_of(A)
-    r_cross = (A.half_len + B.half_len) * (1.0 + 1e-9) + 1e-12
-    k, seed_ba, h_ba, seed_ab, h_ab = _steps_nb(
-        k0, rel_ba, rel_ab, Ma, Mb, _CHUNK, policy.MOTION_PRUNE_MARGIN_MM, *args_a, hint_ba, *args_b, hint_ab,
-        *_grid_args(g0), B.nxt, r_cross, max(A.half_len, B.half_len), _loop_firsts(B), _loop_firsts(A), A.seg_b,
-        B.seg_b, clear, pa, pb)
-    if k > k0 or seed_ba != mem_ba.seed or h_ba != hint_ba:
-        mem_ba.seed, hints_a[id(B)] = int(seed_ba), float(h_ba)
-    if k > k0 or seed_ab != mem_ab.seed or h_ab != hint_ab:
-        mem_ab.seed, hints_b[id(A)] = int(seed_ab), float(h_ab)
+    lva, lvb = _level_for(A, hint_ba), _level_for(B, hint_ab)
+    mem_ba, args_ba = search_args(A, B, lva)
+    mem_ab, args_ab = search_args(B, A, lvb)
+    k, seed_ba, hint_ba, seed_ab, hint_ab = _steps_nb(
+        k0, rel_ba, rel_ab, Ma, Mb, A.points, B.points, grid_of(A).h, lva, mem_ba.seed, hint_ba, args_ba,
+        grid_of(B).h, lvb, mem_ab.seed, hint_ab, args_ab, apart_args(A, B), clear, pa, pb)
+    mem_ba.seed, hints_a[id(B)] = int(seed_ba), float(hint_ba)
+    mem_ab.seed, hints_b[id(A)] = int(seed_ab), float(hint_ab)
     return int(k)
 
 
