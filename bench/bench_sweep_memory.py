@@ -57,6 +57,7 @@ def replay(calls: list, forget: bool) -> tuple[float, int, str]:
     """CPU s and steps of the recorded sweeps' least distances, and a digest of every answer."""
     from propulsor.checks.motion import sweep2d
     from propulsor.checks.motion.outlines import Outline
+    from propulsor.checks.motion.poses import compose_poses, inverse_pose
 
     digest = hashlib.sha256()
     cpu, steps = 0.0, 0
@@ -67,7 +68,8 @@ def replay(calls: list, forget: bool) -> tuple[float, int, str]:
             if forget:
                 A.__dict__.pop("_nearest_memory", None)
                 B.__dict__.pop("_nearest_memory", None)
-            d, pa, pb, _, _ = sweep2d._boundary_distance(A, B, Ma[k], Mb[k])
+            rel_ba = compose_poses(inverse_pose(Ma[k]), Mb[k])  # as sweep_pair computes them
+            d, pa, pb, _, _ = sweep2d._boundary_distance(A, B, Ma[k], Mb[k], rel_ba, inverse_pose(rel_ba))
             digest.update(np.array([d, *pa, *pb]).tobytes())
         cpu += time.process_time() - t
         steps += len(Ma)

@@ -66,7 +66,7 @@ def test_a_compiled_sweep_equals_the_reference_sweep(monkeypatch):
     Mb = rotation_matrices(phi, np.column_stack([39.0 + 2.5 * np.cos(phi), np.zeros_like(phi)]))
     fast = sweep_pair(A, Pose(), B, Mb, max_segment=0.2)
     assert (fast.overlap_area > 0).any() and (fast.clearance > 1.0).any()
-    monkeypatch.setattr(sweep2d, "nearest_edge", lambda P, tgt, src: distance.min_dist_points_to(P, tgt))
+    monkeypatch.setattr(sweep2d, "nearest_edge", lambda P, tgt, src, cap=math.inf: distance.min_dist_points_to(P, tgt))
     slow = sweep_pair(A, Pose(), B, Mb, max_segment=0.2)
     for f in ("overlap_area", "clearance", "point_a", "point_b"):
         assert getattr(fast, f).tobytes() == getattr(slow, f).tobytes(), f
@@ -203,3 +203,59 @@ def test_a_search_that_found_nothing_remembers_only_the_rings_it_searched():
     d1, i1, q1 = nearest_edge(P, tgt, src)
     assert d1 == pytest.approx(0.05, abs=1e-9) and i1 == k
     assert _same((d1, i1, q1), distance.min_dist_points_to(P, tgt))
+
+
+def test_a_capped_search_finds_the_answer_within_the_cap_and_nothing_beyond():
+    """``nearest_edge(..., cap)`` (the sweeps search the body of more vertices only for an answer within the other
+    way's, its first pass left out): the uncapped answer bit for bit where it is within the cap (the cap equal to
+    it, a little above, far above), none (inf, -1) where the cap is below it, near and touching, whatever the grid
+    level the last answer chose; bodies more than FAR_CELLS grid cells apart get the KD-tree's whole answer, cap or
+    not."""
+    tgt = Outline([_star(12, 20.0, 23.0), _star(5, 6.0, 7.0, 500)[::-1]], 0.1)
+    rng = np.random.default_rng(11)
+    seen = {"within": 0, "none": 0}
+    for gap in np.concatenate([rng.uniform(0.02, 1.0, 24), [0.0, 60.0]]):
+        src = Outline([_star(9, 14.0, 17.0, 900)], 0.1)  # a new source each time: no memory between the gaps
+        M = Pose(float(rng.uniform(0, 2 * math.pi)), (0.0, 0.0),
+                 (40.0 + float(gap), float(rng.uniform(-3, 3)))).matrix()
+        P = apply_pose(M, src.points)
+        want = distance.min_dist_points_to(P, tgt)
+        d = want[0]
+        # the grid's search (at every level) where the least lower bound of the vertices' annulus is within
+        # FAR_CELLS of its finest cells; the tree's beyond that (at the finest level)
+        lb_min = float(np.min(np.hypot(P[:, 0] - tgt.center[0], P[:, 1] - tgt.center[1]))) - tgt.radius
+        grid = lb_min < nearest.FAR_CELLS * grid_of(tgt).h
+        for cap in (d, d * (1.0 + 1e-9) + 1e-12, d + 2.0, 10.0 * d + 1.0):
+            got = nearest_edge(P, tgt, src, cap)
+            assert _same(want, got), (gap, cap, want, got)
+            seen["within"] += 1
+        if d > 1e-9:
+            for cap in (d * (1.0 - 1e-9), 0.5 * d, 0.0):
+                got = nearest_edge(P, tgt, src, cap)
+                if grid:
+                    assert got[0] == math.inf and got[1] == -1 and np.isnan(got[2]).all(), (gap, cap, got)
+                    seen["none"] += 1
+                else:
+                    assert _same(want, got) or got[1] == -1, (gap, cap, got)
+    assert seen["within"] == 104 and seen["none"] >= 30
+
+
+def test_a_sweep_with_one_way_capped_equals_both_ways_searched_whole(monkeypatch):
+    """The sweep's least distance with the second search capped at the first's answer (sweep2d._boundary_distance
+    and the compiled steps) gives every clearance and closest point of the sweep whose searches are both whole: a
+    wheel of fewer vertices and one of more, each as the first body."""
+    small, big = _star(12, 20.0, 23.0, 700), _star(9, 14.0, 17.0, 2600)
+    phi = np.linspace(0.0, 2.0 * math.pi, 40, endpoint=False)
+    Mb = rotation_matrices(phi, np.column_stack([40.8 + 0.6 * np.cos(phi), 0.3 * np.sin(phi)]))
+    whole = nearest.nearest_edge
+    for A, B in ((small, big), (big, small)):
+        capped = sweep_pair([A], Pose(), [B], Mb, max_segment=0.2)  # the compiled steps
+        monkeypatch.setattr(sweep2d, "apart_steps", lambda A, B, rba, rab, Ma, Mb, k0, *rest: k0)
+        stepwise = sweep_pair([A], Pose(), [B], Mb, max_segment=0.2)  # _boundary_distance at each step
+        monkeypatch.setattr(sweep2d, "nearest_edge", lambda P, tgt, src, cap=math.inf: whole(P, tgt, src))
+        ref = sweep_pair([A], Pose(), [B], Mb, max_segment=0.2)
+        monkeypatch.undo()
+        assert (ref.clearance > 0).all() and ref.clearance.min() < 0.5
+        for f in ("overlap_area", "clearance", "point_a", "point_b"):
+            assert getattr(capped, f).tobytes() == getattr(ref, f).tobytes(), f
+            assert getattr(stepwise, f).tobytes() == getattr(ref, f).tobytes(), f

@@ -218,8 +218,13 @@ def _search(P, i, V, ox, oy, h, nx, ny, start, items, bound, at, low_pt, exact, 
 
 
 @njit(cache=True)
-def _nearest_edge(P, seed, rho, V, B, prev, half_len, ox, oy, h, nx, ny, start, items, chunk, margin, ccx, ccy, r_min,
-                  r_max, far, heads, lows, at, low_pt, exact, tally):
+def _nearest_edge(P, seed, cap, rho, V, B, prev, half_len, ox, oy, h, nx, ny, start, items, chunk, margin, ccx, ccy,
+                  r_min, r_max, far, heads, lows, at, low_pt, exact, tally):
+    """(d, index in P, foot x, y) of :func:`nearest_edge`; (-1, -1, nan, nan): far apart, the KD-tree's turn.  With a
+    finite ``cap`` only an answer d <= cap is sought, (inf, -1, nan, nan) where there is none: every point whose edge
+    lies within cap has a vertex of that edge within cap + half_len, so the first pass (the least nearest-vertex
+    distance, ub) is left out and cap takes its place (a smaller bound where cap <= ub: the other direction's answer
+    is at most the least vertex-to-vertex distance, which ub is)."""
     n = len(P)
     nch = (n + chunk - 1) // chunk
     # a lower bound of each point's distance from the outline's vertices: the annulus r_min .. r_max about
@@ -233,17 +238,20 @@ def _nearest_edge(P, seed, rho, V, B, prev, half_len, ox, oy, h, nx, ny, start, 
         lb_min = min(lb_min, lb[i])
     if lb_min > far:  # far apart: the rings of cells to search grow as (distance / cell)²; the tree's turn
         return -1.0, -1, np.nan, np.nan
-    # a first bound: the nearest vertex of the point with the least lower bound
-    i0 = 0
-    for i in range(n):
-        if lb[i] < lb[i0]:
-            i0 = i
-    ub = _nearest_vertex(P[i0, 0], P[i0, 1], V, ox, oy, h, nx, ny, start, items, np.inf)
-    if 0 <= seed < n and seed != i0:  # the point of the last answer (a sweep's steps are close): a tighter bound
-        ub = min(ub, _nearest_vertex(P[seed, 0], P[seed, 1], V, ox, oy, h, nx, ny, start, items, ub))
+    if cap < np.inf:
+        ub = cap
+    else:
+        # a first bound: the nearest vertex of the point with the least lower bound
+        i0 = 0
+        for i in range(n):
+            if lb[i] < lb[i0]:
+                i0 = i
+        ub = _nearest_vertex(P[i0, 0], P[i0, 1], V, ox, oy, h, nx, ny, start, items, np.inf)
+        if 0 <= seed < n and seed != i0:  # the point of the last answer (a sweep's steps are close): a tighter bound
+            ub = min(ub, _nearest_vertex(P[seed, 0], P[seed, 1], V, ox, oy, h, nx, ny, start, items, ub))
     # ub: the least nearest-vertex distance over every point (runs pruned by their discs)
     # (margin: the rounding of the moved points against their body-frame discs; 1e-9: that of the bounds)
-    for c in range(nch):
+    for c in range(nch if cap == np.inf else 0):
         r0 = c * chunk
         if not _run_within(P, r0, lb[r0], rho[c], ub, margin, V, ox, oy, h, nx, ny, start, items, heads, lows, c):
             continue
@@ -306,6 +314,8 @@ def _nearest_edge(P, seed, rho, V, B, prev, half_len, ox, oy, h, nx, ny, start, 
                             if d < best_d or (d == best_d and (blk, k, v) < (best_key0, best_key1, best_key2)):
                                 best_d, best_key0, best_key1, best_key2 = d, blk, k, v
                                 best_i, qx_best, qy_best = i, qx, qy
+    if best_d > cap:  # the least within cap + half_len of a vertex, not the least of all: none within cap
+        return np.inf, -1, np.nan, np.nan
     return best_d, best_i, qx_best, qy_best
 
 
@@ -352,9 +362,10 @@ def hints_of(tgt) -> dict:
 
 
 def search_args(tgt, src, level: int) -> tuple[_Memory, tuple]:
-    """The memory of src's searches against tgt, and what the compiled search ``_nearest_edge(P, seed, *args)``
-    takes after the points and the seed for src's vertices (moved into tgt's frame) against tgt's edges on grid
-    `level`: :func:`nearest_edge` and the sweep's compiled steps (sweep_steps.py) both call it so."""
+    """The memory of src's searches against tgt, and what the compiled search takes after the points, the seed and
+    the cap for src's vertices (moved into tgt's frame) against tgt's edges on grid
+    `level` (``_nearest_edge(P, seed, cap, *args)``): :func:`nearest_edge` and the sweep's compiled steps
+    (sweep_steps.py) both call it so."""
     from ... import policy
     from .distance import _CHUNK, _chunk_discs
 
@@ -367,22 +378,27 @@ def search_args(tgt, src, level: int) -> tuple[_Memory, tuple]:
                  mem.heads, mem.lows, mem.at, mem.low_pt, mem.exact, mem.searches)
 
 
-def nearest_edge(P: np.ndarray, tgt, src) -> tuple[float, int, np.ndarray]:
+def nearest_edge(P: np.ndarray, tgt, src, cap: float = math.inf) -> tuple[float, int, np.ndarray]:
     """Least distance from points P (tgt body frame; the vertices of outline `src`, rigidly moved, same order)
     to tgt's edges: (d, index in P, foot point) — from the grid, or from distance.min_dist_points_to (the same
     answer) when every point is more than FAR_CELLS cells from tgt's vertices.  The grid's level follows the
     last answer for the same two outlines (a sweep's steps are close), the first bound starts from the point of
     that answer, and a point (a run) whose nearest vertex an earlier search put farther than the bound by more
-    than it has moved since is not searched again (``_Memory``): the answer depends on none of them."""
+    than it has moved since is not searched again (``_Memory``): the answer depends on none of them.  With a finite
+    ``cap`` (the least distance the other way, :func:`.sweep2d._boundary_distance`), only an answer d <= cap is
+    sought: (inf, -1, [nan, nan]) where there is none (``_nearest_edge``)."""
     from .distance import min_dist_points_to
 
     hints = hints_of(tgt)
     mem, args = search_args(tgt, src, _level_for(tgt, hints.get(id(src), 0.0)))
-    d, i, qx, qy = _nearest_edge(np.ascontiguousarray(P, np.float64), mem.seed, *args)
-    if i < 0:
+    d, i, qx, qy = _nearest_edge(np.ascontiguousarray(P, np.float64), mem.seed, float(cap), *args)
+    if i < 0 and d < 0.0:
         d, i, q = min_dist_points_to(P, tgt, src)
         hints[id(src)] = d
         return d, i, q
+    if i < 0:  # none within cap: the distance is more (the grid's level follows cap)
+        hints[id(src)] = float(cap)
+        return math.inf, -1, np.array([np.nan, np.nan])
     hints[id(src)] = float(d)
     mem.seed = int(i)
     return float(d), int(i), np.array([qx, qy])

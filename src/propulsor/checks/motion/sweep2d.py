@@ -98,9 +98,15 @@ def _boundary_distance(A: Outline, B: Outline, Ma: np.ndarray, Mb: np.ndarray, r
     rel_ab its inverse), exact when they do not cross: (d, world point on A, world point on B, B's vertices in A's
     frame, A's in B's)."""
     PB = apply_pose(rel_ba, B.points)
-    d1, i1, q1 = nearest_edge(PB, A, B)  # B vertices -> A edges (A frame)
     PA = apply_pose(rel_ab, A.points)
-    d2, i2, q2 = nearest_edge(PA, B, A)  # A vertices -> B edges (B frame)
+    # B vertices -> A edges (A frame) and A vertices -> B edges (B frame); the one with more vertices searched for an
+    # answer within the other's only (nearest_edge's cap: inf where there is none, which the choice below skips)
+    if len(B.points) <= len(A.points):
+        d1, i1, q1 = nearest_edge(PB, A, B)
+        d2, i2, q2 = nearest_edge(PA, B, A, d1)
+    else:
+        d2, i2, q2 = nearest_edge(PA, B, A)
+        d1, i1, q1 = nearest_edge(PB, A, B, d2)
     if d1 <= d2:
         return d1, apply_pose(Ma, q1[None])[0], apply_pose(Ma, PB[i1:i1 + 1])[0], PB, PA
     return d2, apply_pose(Mb, PA[i2:i2 + 1])[0], apply_pose(Mb, q2[None])[0], PB, PA
@@ -141,9 +147,9 @@ def sweep_pair(profile_a, poses_a, profile_b, poses_b, chord_tol: float = policy
     poses_a/b: a Pose (held fixed), a sequence of Poses or an (n, 2, 3) array of
     affine matrices, one per step.  Overlap area from a manifold3d CrossSection
     intersection (0 without it at a step where the boundaries are certainly apart:
-    :func:`~propulsor.checks.motion.crossing.certainly_apart`); clearance from the boundaries (cKDTree candidates, exact
-    point-to-edge refinement in both directions: the exact distance between the
-    two polylines when they do not cross).  clearance_limit (mm), when given,
+    :func:`~propulsor.checks.motion.crossing.certainly_apart`); clearance from the boundaries (the compiled grid search
+    of :mod:`.nearest`, exact point-to-edge distances in both directions, the body of more vertices searched only for
+    an answer within the other way's: the exact distance between the two polylines when they do not cross).  clearance_limit (mm), when given,
     adds a minimum-clearance record to ``checks()``.
     """
     A, B = outline(profile_a, chord_tol, max_segment), outline(profile_b, chord_tol, max_segment)

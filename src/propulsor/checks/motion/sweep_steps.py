@@ -8,7 +8,8 @@ bench/bench_final_drive.py): the same kernels on the same arrays, the points mov
 :func:`.poses.apply_pose`, so every distance, point and memory entry is the one the step-by-step path gives. The loop
 stops at the first step it does not finish itself — the grid level the last distance asks for differs from the one it
 was given, the bodies are far enough apart for the KD-tree, or they may share area (the boolean decides) — and the
-sweep takes that step as before.
+sweep takes that step as before.  As there, the body of more vertices is searched only for an answer within the
+other way's (:func:`.nearest.nearest_edge`'s cap).
 """
 
 from __future__ import annotations
@@ -53,6 +54,7 @@ def move_each(M, P):
 @njit(cache=True)
 def _steps_nb(k0, rel_ba, rel_ab, Ma, Mb, Va, Vb, h0a, lva, seed_ba, hint_ba, args_ba, h0b, lvb, seed_ab, hint_ab,
               args_ab, args_apart, clear, pa, pb):
+    b_first = len(Vb) <= len(Va)
     n = len(rel_ba)
     PB = np.empty((len(Vb), 2))
     PA = np.empty((len(Va), 2))
@@ -60,18 +62,37 @@ def _steps_nb(k0, rel_ba, rel_ab, Ma, Mb, Va, Vb, h0a, lva, seed_ba, hint_ba, ar
         # B's vertices against A's edges (A's frame), then A's against B's (sweep2d._boundary_distance)
         if level_of(h0a, hint_ba) != lva or level_of(h0b, hint_ab) != lvb:
             return k, seed_ba, hint_ba, seed_ab, hint_ab
+        # (the one with more vertices only for an answer within the other's: sweep2d._boundary_distance)
         _move(rel_ba[k], Vb, PB)
-        d1, i1, q1x, q1y = _nearest_edge(PB, seed_ba, *args_ba)
-        if i1 < 0:  # far apart: the KD-tree's
-            return k, seed_ba, hint_ba, seed_ab, hint_ab
-        hint_ba, seed_ba = d1, i1
-        if level_of(h0b, hint_ab) != lvb:
-            return k, seed_ba, hint_ba, seed_ab, hint_ab
         _move(rel_ab[k], Va, PA)
-        d2, i2, q2x, q2y = _nearest_edge(PA, seed_ab, *args_ab)
-        if i2 < 0:
-            return k, seed_ba, hint_ba, seed_ab, hint_ab
-        hint_ab, seed_ab = d2, i2
+        if b_first:
+            d1, i1, q1x, q1y = _nearest_edge(PB, seed_ba, np.inf, *args_ba)
+            if i1 < 0:  # far apart: the KD-tree's
+                return k, seed_ba, hint_ba, seed_ab, hint_ab
+            hint_ba, seed_ba = d1, i1
+            if level_of(h0b, hint_ab) != lvb:
+                return k, seed_ba, hint_ba, seed_ab, hint_ab
+            d2, i2, q2x, q2y = _nearest_edge(PA, seed_ab, d1, *args_ab)
+            if d2 < 0.0:
+                return k, seed_ba, hint_ba, seed_ab, hint_ab
+            if i2 < 0:  # none within d1
+                hint_ab = d1
+            else:
+                hint_ab, seed_ab = d2, i2
+        else:
+            d2, i2, q2x, q2y = _nearest_edge(PA, seed_ab, np.inf, *args_ab)
+            if i2 < 0:
+                return k, seed_ba, hint_ba, seed_ab, hint_ab
+            hint_ab, seed_ab = d2, i2
+            if level_of(h0a, hint_ba) != lva:
+                return k, seed_ba, hint_ba, seed_ab, hint_ab
+            d1, i1, q1x, q1y = _nearest_edge(PB, seed_ba, d2, *args_ba)
+            if d1 < 0.0:
+                return k, seed_ba, hint_ba, seed_ab, hint_ab
+            if i1 < 0:  # none within d2
+                hint_ba = d2
+            else:
+                hint_ba, seed_ba = d1, i1
         d = d1 if d1 <= d2 else d2
         if not _apart(d, PB, PA, *args_apart):
             return k, seed_ba, hint_ba, seed_ab, hint_ab
