@@ -224,7 +224,12 @@ def _nearest_edge(P, seed, cap, rho, V, B, prev, half_len, ox, oy, h, nx, ny, st
     finite ``cap`` only an answer d <= cap is sought, (inf, -1, nan, nan) where there is none: every point whose edge
     lies within cap has a vertex of that edge within cap + half_len, so the first pass (the least nearest-vertex
     distance, ub) is left out and cap takes its place (a smaller bound where cap <= ub: the other direction's answer
-    is at most the least vertex-to-vertex distance, which ub is)."""
+    is at most the least vertex-to-vertex distance, which ub is).  The distance is the whole search's; where several
+    point-edge pairs tie at it, the first in the order (the edge's side of the vertex it was found from, the point,
+    the vertex) is taken among those found from vertices within the bound + half_len, so a pair found from its
+    farther end by the whole search (its reach the larger) can lose the tie to another (make's 19 parts: no
+    reported point moved; a bound from the last answer's point alone, cap or not, moved 13 of a cam slide's 720,
+    each to another point at the same least distance, and was left out)."""
     n = len(P)
     nch = (n + chunk - 1) // chunk
     # a lower bound of each point's distance from the outline's vertices: the annulus r_min .. r_max about

@@ -100,7 +100,8 @@ def _boundary_distance(A: Outline, B: Outline, Ma: np.ndarray, Mb: np.ndarray, r
     PB = apply_pose(rel_ba, B.points)
     PA = apply_pose(rel_ab, A.points)
     # B vertices -> A edges (A frame) and A vertices -> B edges (B frame); the one with more vertices searched for an
-    # answer within the other's only (nearest_edge's cap: inf where there is none, which the choice below skips)
+    # answer within the other's only (nearest_edge's cap: inf where there is none, which the choice below skips; the
+    # same distance, the tie among equally near pairs taken as nearest_edge says)
     if len(B.points) <= len(A.points):
         d1, i1, q1 = nearest_edge(PB, A, B)
         d2, i2, q2 = nearest_edge(PA, B, A, d1)
