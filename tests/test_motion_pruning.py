@@ -210,8 +210,8 @@ def test_a_capped_search_finds_the_answer_within_the_cap_and_nothing_beyond():
     way's, its first pass left out): the uncapped answer bit for bit where it is within the cap (the cap equal to
     it, a little above, far above; wavy outlines, so no two point-edge pairs tie at the least distance, where the
     pair taken can differ: nearest._nearest_edge), none (inf, -1) where the cap is below it, near and touching,
-    whatever the grid level the last answer chose; bodies more than FAR_CELLS grid cells apart get the KD-tree's whole answer, cap or
-    not."""
+    whatever the grid level the last answer chose; bodies more than FAR_CELLS grid cells apart get the KD-tree's
+    whole answer, cap or not."""
     tgt = Outline([_star(12, 20.0, 23.0), _star(5, 6.0, 7.0, 500)[::-1]], 0.1)
     rng = np.random.default_rng(11)
     seen = {"within": 0, "none": 0}
