@@ -12,6 +12,17 @@ crossing and loop tests, the closest points' poses) and the windowed sweep's poi
 3.52 (the step-by-step path) -> 2.82 / 3.17 / 2.98.  Every area, clearance and point identical (sha256 of the arrays);
 make's 636 files identical.  What is left of the sweep: the compiled nearest-edge search (330-500 nearest-vertex
 searches a call in the meshes' teeth), the windows' outlines (279 a sweep, 1.5 ms each) and their booleans.
+
+2026-12-02, a new session (2 cores; the carrier sweep's 4 320 apart steps replayed, both nearest-edge searches a step,
+timed alone, in one process, in turn, three rounds: bench/bench_sweep_searches.py): the body of more vertices (the planet, 9 004 against a window's
+1 631) searched only for an answer within the other way's (``nearest.nearest_edge``'s cap: its first pass, 246
+nearest-vertex searches a call on average, left out): 1.70 / 1.96 / 2.08 -> 1.38 / 1.61 / 1.77 s; the same answers
+(the script, later, the machine slower: 2.12 / 2.44 / 2.29 -> 1.78 / 1.99 / 1.84).
+Split of a step before it (one process, kernels timed alone): B's vertices against the window 1.04 s, the window's
+against the planet 0.60, the crossing and loop tests 0.47 (loops 0.13), the vertices' moves 0.06.  The grid's cell
+(8 mean edges) at 1/3, 1/2, 1.5, 2 and 3 times: no difference above the spread (1/3 and 1/2 slower).  A bound from the
+last answer's point alone (its own least distance, 7-10 % fewer search seconds again) moved reported points where
+several pairs tie at the least distance (a cam's slide): left out.
 """
 
 from __future__ import annotations
