@@ -52,6 +52,28 @@ def move_each(M, P):
 
 
 @njit(cache=True)
+def _first_then_capped(P1, seed1, hint1, args1, P2, seed2, hint2, args2, h02, lv2):
+    """One step's two searches (sweep2d._boundary_distance): the first way whole, the second only for an answer within
+    the first's.  (go on, the first's (d, i, qx, qy), the second's, seed1, hint1, seed2, hint2: each way's seed and
+    hint as nearest_edge leaves them); not go on where the first way is far apart (the KD-tree's), the second's grid
+    level changed with the first's answer, or the second is far apart."""
+    r1 = _nearest_edge(P1, seed1, np.inf, *args1)
+    if r1[1] < 0:
+        return False, r1, r1, seed1, hint1, seed2, hint2
+    seed1, hint1 = r1[1], r1[0]
+    if level_of(h02, hint2) != lv2:
+        return False, r1, r1, seed1, hint1, seed2, hint2
+    r2 = _nearest_edge(P2, seed2, r1[0], *args2)
+    if r2[0] < 0.0:
+        return False, r1, r2, seed1, hint1, seed2, hint2
+    if r2[1] < 0:  # none within the first's answer
+        hint2 = r1[0]
+    else:
+        seed2, hint2 = r2[1], r2[0]
+    return True, r1, r2, seed1, hint1, seed2, hint2
+
+
+@njit(cache=True)
 def _steps_nb(k0, rel_ba, rel_ab, Ma, Mb, Va, Vb, h0a, lva, seed_ba, hint_ba, args_ba, h0b, lvb, seed_ab, hint_ab,
               args_ab, args_apart, clear, pa, pb):
     b_first = len(Vb) <= len(Va)
@@ -59,40 +81,22 @@ def _steps_nb(k0, rel_ba, rel_ab, Ma, Mb, Va, Vb, h0a, lva, seed_ba, hint_ba, ar
     PB = np.empty((len(Vb), 2))
     PA = np.empty((len(Va), 2))
     for k in range(k0, n):
-        # B's vertices against A's edges (A's frame), then A's against B's (sweep2d._boundary_distance)
+        # B's vertices against A's edges (A's frame) and A's against B's, the way of more vertices only for an answer
+        # within the other's (sweep2d._boundary_distance)
         if level_of(h0a, hint_ba) != lva or level_of(h0b, hint_ab) != lvb:
             return k, seed_ba, hint_ba, seed_ab, hint_ab
-        # (the one with more vertices only for an answer within the other's: sweep2d._boundary_distance)
         _move(rel_ba[k], Vb, PB)
         _move(rel_ab[k], Va, PA)
         if b_first:
-            d1, i1, q1x, q1y = _nearest_edge(PB, seed_ba, np.inf, *args_ba)
-            if i1 < 0:  # far apart: the KD-tree's
-                return k, seed_ba, hint_ba, seed_ab, hint_ab
-            hint_ba, seed_ba = d1, i1
-            if level_of(h0b, hint_ab) != lvb:
-                return k, seed_ba, hint_ba, seed_ab, hint_ab
-            d2, i2, q2x, q2y = _nearest_edge(PA, seed_ab, d1, *args_ab)
-            if d2 < 0.0:
-                return k, seed_ba, hint_ba, seed_ab, hint_ab
-            if i2 < 0:  # none within d1
-                hint_ab = d1
-            else:
-                hint_ab, seed_ab = d2, i2
+            go, r1, r2, seed_ba, hint_ba, seed_ab, hint_ab = _first_then_capped(
+                PB, seed_ba, hint_ba, args_ba, PA, seed_ab, hint_ab, args_ab, h0b, lvb)
         else:
-            d2, i2, q2x, q2y = _nearest_edge(PA, seed_ab, np.inf, *args_ab)
-            if i2 < 0:
-                return k, seed_ba, hint_ba, seed_ab, hint_ab
-            hint_ab, seed_ab = d2, i2
-            if level_of(h0a, hint_ba) != lva:
-                return k, seed_ba, hint_ba, seed_ab, hint_ab
-            d1, i1, q1x, q1y = _nearest_edge(PB, seed_ba, d2, *args_ba)
-            if d1 < 0.0:
-                return k, seed_ba, hint_ba, seed_ab, hint_ab
-            if i1 < 0:  # none within d2
-                hint_ba = d2
-            else:
-                hint_ba, seed_ba = d1, i1
+            go, r2, r1, seed_ab, hint_ab, seed_ba, hint_ba = _first_then_capped(
+                PA, seed_ab, hint_ab, args_ab, PB, seed_ba, hint_ba, args_ba, h0a, lva)
+        if not go:
+            return k, seed_ba, hint_ba, seed_ab, hint_ab
+        d1, i1, q1x, q1y = r1
+        d2, i2, q2x, q2y = r2
         d = d1 if d1 <= d2 else d2
         if not _apart(d, PB, PA, *args_apart):
             return k, seed_ba, hint_ba, seed_ab, hint_ab
