@@ -254,7 +254,7 @@ def _nearest_edge(P, seed, cap, rho, V, B, prev, half_len, ox, oy, h, nx, ny, st
         ub = _nearest_vertex(P[i0, 0], P[i0, 1], V, ox, oy, h, nx, ny, start, items, np.inf)
         if 0 <= seed < n and seed != i0:  # the point of the last answer (a sweep's steps are close): a tighter bound
             ub = min(ub, _nearest_vertex(P[seed, 0], P[seed, 1], V, ox, oy, h, nx, ny, start, items, ub))
-    # ub: the least nearest-vertex distance over every point (runs pruned by their discs)
+    # ub (no cap): the least nearest-vertex distance over every point (runs pruned by their discs)
     # (margin: the rounding of the moved points against their body-frame discs; 1e-9: that of the bounds)
     for c in range(nch if cap == np.inf else 0):
         r0 = c * chunk
@@ -391,7 +391,8 @@ def nearest_edge(P: np.ndarray, tgt, src, cap: float = math.inf) -> tuple[float,
     that answer, and a point (a run) whose nearest vertex an earlier search put farther than the bound by more
     than it has moved since is not searched again (``_Memory``): the answer depends on none of them.  With a finite
     ``cap`` (the least distance the other way, :func:`.sweep2d._boundary_distance`), only an answer d <= cap is
-    sought: (inf, -1, [nan, nan]) where there is none (``_nearest_edge``)."""
+    sought: (inf, -1, [nan, nan]) where there is none (``_nearest_edge``); bodies far apart get the KD-tree's whole
+    answer, cap or not."""
     from .distance import min_dist_points_to
 
     hints = hints_of(tgt)

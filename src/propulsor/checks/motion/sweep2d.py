@@ -150,8 +150,8 @@ def sweep_pair(profile_a, poses_a, profile_b, poses_b, chord_tol: float = policy
     intersection (0 without it at a step where the boundaries are certainly apart:
     :func:`~propulsor.checks.motion.crossing.certainly_apart`); clearance from the boundaries (the compiled grid search
     of :mod:`.nearest`, exact point-to-edge distances in both directions, the body of more vertices searched only for
-    an answer within the other way's: the exact distance between the two polylines when they do not cross).  clearance_limit (mm), when given,
-    adds a minimum-clearance record to ``checks()``.
+    an answer within the other way's: the exact distance between the two polylines when they do not cross).
+    clearance_limit (mm), when given, adds a minimum-clearance record to ``checks()``.
     """
     A, B = outline(profile_a, chord_tol, max_segment), outline(profile_b, chord_tol, max_segment)
     Ma, ang_a, Mb, ang_b = _pose_pair(poses_a, poses_b)
