@@ -143,6 +143,10 @@ wall (19.63 CPU s), peak 651 MiB: wall ratio 0.203, CPU ratio 0.312 (the same co
 ezdxf and Pillow 520, the propulsor modules 532; a build of this part file in one process reaches 560 MiB with its
 compiled kernels loaded (5.7 s in) and 708 at the end.  A process that holds the CAD kernel through cadquery starts
 at 363 MiB before any data, so 400 MiB needs the CAD kernel in a process of its own with no cadquery in it.
+2026-12-02, a sixteenth session (2 cores, idle; 1f6bd2b, the sweeps' second search capped): ncgears 62.19 s wall
+(64.70 CPU s), peak 287 MiB; ours 14.71 s wall (23.35 CPU s), peak 645 MiB: wall ratio 0.236, CPU ratio 0.361.  The
+run before it gave ours 93.59 s wall, 104.81 CPU s, 889 MiB: the first build after a kernel source changed compiles
+every kernel (nbcache), so a benchmark after an edit needs one build first.
 """
 
 from __future__ import annotations
