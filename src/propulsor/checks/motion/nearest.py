@@ -254,20 +254,20 @@ def _nearest_edge(P, seed, cap, rho, V, B, prev, half_len, ox, oy, h, nx, ny, st
         ub = _nearest_vertex(P[i0, 0], P[i0, 1], V, ox, oy, h, nx, ny, start, items, np.inf)
         if 0 <= seed < n and seed != i0:  # the point of the last answer (a sweep's steps are close): a tighter bound
             ub = min(ub, _nearest_vertex(P[seed, 0], P[seed, 1], V, ox, oy, h, nx, ny, start, items, ub))
-    # ub (no cap): the least nearest-vertex distance over every point (runs pruned by their discs)
-    # (margin: the rounding of the moved points against their body-frame discs; 1e-9: that of the bounds)
-    for c in range(nch if cap == np.inf else 0):
-        r0 = c * chunk
-        if not _run_within(P, r0, lb[r0], rho[c], ub, margin, V, ox, oy, h, nx, ny, start, items, heads, lows, c):
-            continue
-        for i in range(r0, min(r0 + chunk, n)):
-            if lb[i] > ub + 1e-9 * (1.0 + ub):
+        # ub: the least nearest-vertex distance over every point (runs pruned by their discs)
+        # (margin: the rounding of the moved points against their body-frame discs; 1e-9: that of the bounds)
+        for c in range(nch):
+            r0 = c * chunk
+            if not _run_within(P, r0, lb[r0], rho[c], ub, margin, V, ox, oy, h, nx, ny, start, items, heads, lows, c):
                 continue
-            if _known_farther(P, i, at, low_pt, ub):
-                continue
-            d = _search(P, i, V, ox, oy, h, nx, ny, start, items, ub, at, low_pt, exact, tally)
-            if d < ub:
-                ub = d
+            for i in range(r0, min(r0 + chunk, n)):
+                if lb[i] > ub + 1e-9 * (1.0 + ub):
+                    continue
+                if _known_farther(P, i, at, low_pt, ub):
+                    continue
+                d = _search(P, i, V, ox, oy, h, nx, ny, start, items, ub, at, low_pt, exact, tally)
+                if d < ub:
+                    ub = d
     R = ub + half_len
     rb = R + 1e-12
     best_d = np.inf

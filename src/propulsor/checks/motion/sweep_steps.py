@@ -52,17 +52,15 @@ def move_each(M, P):
 
 
 @njit(cache=True)
-def _first_then_capped(P1, seed1, hint1, args1, P2, seed2, hint2, args2, h02, lv2):
+def _first_then_capped(P1, seed1, hint1, args1, P2, seed2, hint2, args2):
     """One step's two searches (sweep2d._boundary_distance): the first way whole, the second only for an answer within
     the first's.  (go on, the first's (d, i, qx, qy), the second's, seed1, hint1, seed2, hint2: each way's seed and
-    hint as nearest_edge leaves them); not go on where the first way is far apart (the KD-tree's), the second's grid
-    level changed with the first's answer, or the second is far apart."""
+    hint as nearest_edge leaves them); not go on where either way is far apart (the KD-tree's).  The grid level of
+    each way follows its own hint, which the other way's search leaves as it is: both are checked before."""
     r1 = _nearest_edge(P1, seed1, np.inf, *args1)
     if r1[1] < 0:
         return False, r1, r1, seed1, hint1, seed2, hint2
     seed1, hint1 = r1[1], r1[0]
-    if level_of(h02, hint2) != lv2:
-        return False, r1, r1, seed1, hint1, seed2, hint2
     r2 = _nearest_edge(P2, seed2, r1[0], *args2)
     if r2[0] < 0.0:
         return False, r1, r2, seed1, hint1, seed2, hint2
@@ -89,10 +87,10 @@ def _steps_nb(k0, rel_ba, rel_ab, Ma, Mb, Va, Vb, h0a, lva, seed_ba, hint_ba, ar
         _move(rel_ab[k], Va, PA)
         if b_first:
             go, r1, r2, seed_ba, hint_ba, seed_ab, hint_ab = _first_then_capped(
-                PB, seed_ba, hint_ba, args_ba, PA, seed_ab, hint_ab, args_ab, h0b, lvb)
+                PB, seed_ba, hint_ba, args_ba, PA, seed_ab, hint_ab, args_ab)
         else:
             go, r2, r1, seed_ab, hint_ab, seed_ba, hint_ba = _first_then_capped(
-                PA, seed_ab, hint_ab, args_ab, PB, seed_ba, hint_ba, args_ba, h0a, lva)
+                PA, seed_ab, hint_ab, args_ab, PB, seed_ba, hint_ba, args_ba)
         if not go:
             return k, seed_ba, hint_ba, seed_ab, hint_ab
         d1, i1, q1x, q1y = r1
