@@ -966,6 +966,36 @@ def test_every_hit_of_a_window_puts_a_vertex_on_an_edge():
             assert first[2:] == (i2[k], e2[k], t2[k])
 
 
+def test_the_pruned_hits_of_a_window_are_every_finite_hit_in_order():
+    """PairOutlines.hits (the per-tooth load's search) leaves out the window's vertices that cannot reach the mate:
+    its finite hits are those of PairOutlines._all_hits (no vertex left out), bit for bit and in the same order, at
+    poses near contact, apart and in a wide window, both ways; and it does leave vertices out."""
+    po, _ = _gear_pair()
+    left_out = 0
+    for sign in (1.0, -1.0):
+        for phi_a, theta, w in ((0.01, 0.01, 0.01), (0.0, 0.0, 0.002), (0.013, 0.0, 0.05), (0.2, 0.21, 0.3),
+                                (0.05, 0.04, 1e-4), (1.0, 1.0, 0.02)):
+            whole, pruned = po._all_hits(phi_a, theta, sign, w), po.hits(phi_a, theta, sign, w)
+            for (iw, dw, ew, tw), (ip, dp, ep, tp) in zip(whole, pruned):
+                fw, fp = np.isfinite(dw), np.isfinite(dp)
+                assert fw.sum() == fp.sum()
+                for a, b in ((iw, ip), (dw, dp), (ew, ep), (tw, tp)):
+                    assert np.array_equal(a[fw], b[fp])
+                left_out += len(dw) - len(dp)
+    assert left_out > 0
+
+
+def test_nearest_teeth_compiled_as_numpy_gives_them():
+    """mesh_load._nearest (compiled) against numpy's argmin over |(angle - centre + pi) mod 2 pi - pi|: the same
+    index for every angle, ties (an angle halfway between two centres) to the first, angles beyond +-pi wrapped."""
+    from propulsor.checks.motion.mesh_load import _nearest
+
+    centres = 2 * math.pi * np.arange(17) / 17 - 0.3
+    ang = np.concatenate([np.linspace(-9.0, 9.0, 4001), 0.5 * (centres[:-1] + centres[1:]), centres])
+    d = np.abs((ang[:, None] - centres[None, :] + math.pi) % (2 * math.pi) - math.pi)
+    assert np.array_equal(_nearest(centres, ang), np.argmin(d, axis=1))
+
+
 def test_side_speed_at_the_window_exactly_and_at_the_first_sample():
     """phi in quarter radians (exact in binary), step_window 0.5: a sample exactly step_window away ends the walk
     (< step_window), the next one in the state is taken once more; walking back to the first sample takes it."""

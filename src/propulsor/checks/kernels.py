@@ -79,6 +79,7 @@ def warm() -> None:
     from .motion import Outline
     from .motion.backlash import _rot_hits
     from .motion.contact_events import DRIVE, PairOutlines, resolve_contact
+    from .motion.contact_kernels import _nearest_teeth_nb
     from .motion.crossing import certainly_apart
     from .motion.nearest import nearest_edge
     from .motion.poses import Pose, apply_pose, rotation_matrices
@@ -104,7 +105,9 @@ def warm() -> None:
     step = 2 * math.pi / z2 / 4
     resolve_contact(pair, lambda phi: np.asarray(phi, float) * z2 / z1, 0.0, 4 * step, DRIVE,
                     step_driver_rad=step * z2 / z1, max_evals=40)
-    pair._all_hits(0.0, 0.0, 1.0, step)  # every hit of a window (the per-tooth load's search)
+    pair._all_hits(0.0, 0.0, 1.0, step)  # every hit of a window (the reference of the per-tooth load's search)
+    pair.hits(0.0, 0.0, 1.0, step)  # the per-tooth load's search
+    _nearest_teeth_nb(pair.driver_teeth, np.array([0.1, 2.0]))
     # the shading normals of the assemblies' GLB (export/normals.py's crease sums)
     smooth_normals(np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]),
                    np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]))

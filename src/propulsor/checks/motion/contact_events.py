@@ -40,7 +40,7 @@ import numpy as np
 
 from ... import policy
 from .contact_kernels import (DRIVE, REVERSE, _first_hit_pruned, _least, _nearest_tooth_nb, _pair_hits,  # noqa: F401
-                              _pruned_window, _side_hits, _window_bounds, _window_nb)
+                              _pair_hits_pruned, _pruned_window, _side_hits, _window_bounds, _window_nb)
 from .contact_reuse import add_slots, new_caches, seed_slots
 from .contact_track import track
 from .nearest import grid_of
@@ -185,6 +185,14 @@ class PairOutlines:
         :func:`_pair_hits`."""
         i1, d1, e1, t1, i2, d2, e2, t2 = _pair_hits(float(phi_a), float(theta), float(sign), float(w),
                                                     *self._kernel_args)
+        return (i1, d1, e1, t1), (i2, d2, e2, t2)
+
+    def hits(self, phi_a: float, theta: float, sign: float, w: float):
+        """:meth:`_all_hits` less the vertices that cannot reach the mate within w (compiled:
+        :func:`.contact_kernels._pair_hits_pruned`): the same finite hits in the same order, fewer of the others."""
+        ka = self._kernel_args
+        i1, d1, e1, t1, i2, d2, e2, t2 = _pair_hits_pruned(float(phi_a), float(theta), float(sign), float(w),
+                                                           *ka[:11], *self._prune_args, *ka[11:])
         return (i1, d1, e1, t1), (i2, d2, e2, t2)
 
 

@@ -21,6 +21,7 @@ import numpy as np
 
 from ... import policy
 from .contact_events import DRIVE, PairOutlines, _rot
+from .contact_kernels import _nearest_teeth_nb
 
 __all__ = ["PairContact", "phase_contacts"]
 
@@ -45,16 +46,19 @@ class PairContact:
 def _all_hits(pair: PairOutlines, phi_a: float, theta: float, sign: float, w: float):
     """Every entering hit within w of the driven wheel turning from phi_a: (delta, side, vertex, edge, t) arrays
     (side 1: a driven vertex on a driver edge, 2: a driver vertex on a driven edge): the hits of
-    :func:`.contact_kernels._first_hit_pruned` without the reduction to the first."""
-    (i1, d1, e1, t1), (i2, d2, e2, t2) = pair._all_hits(phi_a, theta, sign, w)
+    :func:`.contact_kernels._first_hit_pruned` without the reduction to the first (:meth:`.PairOutlines.hits`: the
+    finite hits of :meth:`.PairOutlines._all_hits`, the vertices that cannot reach the mate left out)."""
+    (i1, d1, e1, t1), (i2, d2, e2, t2) = pair.hits(phi_a, theta, sign, w)
     k1, k2 = np.isfinite(d1), np.isfinite(d2)
     return (np.concatenate([d1[k1], d2[k2]]), np.concatenate([np.ones(k1.sum(), int), np.full(k2.sum(), 2)]),
             np.concatenate([i1[k1], i2[k2]]), np.concatenate([e1[k1], e2[k2]]), np.concatenate([t1[k1], t2[k2]]))
 
 
 def _nearest(centres: np.ndarray, ang: np.ndarray) -> np.ndarray:
-    d = np.abs((ang[:, None] - centres[None, :] + math.pi) % (2 * math.pi) - math.pi)
-    return np.argmin(d, axis=1)
+    """The nearest tooth centre (by polar angle, the first on a tie) of each angle: ``argmin`` over the teeth of
+    ``|(ang - centre + pi) mod 2 pi - pi|``, compiled (:func:`.contact_kernels._nearest_teeth_nb`, numpy's own
+    floor-mod: the same index)."""
+    return _nearest_teeth_nb(np.ascontiguousarray(centres, np.float64), np.ascontiguousarray(ang, np.float64))
 
 
 def phase_contacts(pair: PairOutlines, phi: float, theta: float, te: float, window: float,
