@@ -260,3 +260,29 @@ def test_a_sweep_with_one_way_capped_equals_both_ways_searched_whole(monkeypatch
         for f in ("overlap_area", "clearance", "point_a", "point_b"):
             assert getattr(capped, f).tobytes() == getattr(ref, f).tobytes(), f
             assert getattr(stepwise, f).tobytes() == getattr(ref, f).tobytes(), f
+
+
+def test_the_nearest_vertex_within_a_bound_is_the_least_distance_of_all_vertices():
+    """nearest._nearest_vertex (the contact search's sorting of candidates, the sweeps' first bound) against the least
+    distance over every vertex (the same arithmetic, sqrt(dx² + dy²)): equal bit for bit where it is within the bound,
+    inf where it is not; at points on the outline, near it, inside, beyond the grid, on cell borders, with bounds from 0
+    to inf."""
+    o = Outline([_star(12, 20.0, 23.0), _star(5, 6.0, 7.0, 500)[::-1]], 0.1)
+    g = grid_of(o)
+    V = o.points
+    rng = np.random.default_rng(7)
+    border = np.column_stack([g.origin[0] + g.h * rng.integers(0, g.nx, 200), rng.uniform(-25, 25, 200)])
+    P = np.vstack([V[rng.integers(0, len(V), 300)] + rng.normal(0.0, 0.05, (300, 2)), V[:50],
+                   rng.uniform(-30.0, 30.0, (400, 2)), rng.uniform(-90.0, 90.0, (100, 2)), border])
+    n_inf = n_found = 0
+    for px, py in P:
+        exact = float(np.min(np.sqrt((px - V[:, 0]) ** 2 + (py - V[:, 1]) ** 2)))
+        for bound in (0.0, 0.01, 0.2, 0.5 * g.h, 2.5 * g.h, exact, np.nextafter(exact, 0.0), 40.0, np.inf):
+            got = nearest._nearest_vertex(px, py, V, g.origin[0], g.origin[1], g.h, g.nx, g.ny, g.start, g.items,
+                                          bound)
+            want = exact if exact <= bound else np.inf
+            assert got == want, (px, py, bound)
+            n_inf += got == np.inf
+            n_found += got < np.inf
+    assert n_inf > 100 and n_found > 100
+
