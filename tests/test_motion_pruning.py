@@ -285,4 +285,3 @@ def test_the_nearest_vertex_within_a_bound_is_the_least_distance_of_all_vertices
             n_inf += got == np.inf
             n_found += got < np.inf
     assert n_inf > 100 and n_found > 100
-
