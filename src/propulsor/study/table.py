@@ -160,10 +160,10 @@ def _keep(rec: list[str], cols: list[str], place, rows: dict) -> None:
     of each key."""
     if len(rec) != len(cols):
         return
-    row = {c: (v if FIXED.get(c) == "text" else parse_cell(v)) for c, v in zip(cols, rec)}
-    key = row["key"]
+    key = rec[cols.index("key")]  # a text column: the row's key as written, before any cell is parsed
     if key in rows or (place is not None and key not in place):
-        return
+        return  # another study's row, or a repeated one: left unparsed
+    row = {c: (v if FIXED.get(c) == "text" else parse_cell(v)) for c, v in zip(cols, rec)}
     if place is not None:
         row["variant"] = place[key]
     elif not (isinstance(row["variant"], int) and not isinstance(row["variant"], bool) and row["variant"] >= 1):
