@@ -248,46 +248,14 @@ def _least(d):
 
 
 @njit(cache=True)
-def _first_hit_pruned(phi_a, theta, sign, w, L, dvn_V, o1, a1, hw_dvn, drv_V, o2, a2, hw_drv, R1, R2,
-                      chunk, cc1, cr1, cc2, cr2, f0, f1, f2, f3, f4, f5, g0, g1, g2, g3, g4, g5,
-                      t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14, t15,
-                      u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14, u15):
-    """The first entering hit (delta, side, vertex, edge, t) of :func:`_pair_hits` (the first least on a tie, side 1
-    before side 2), bit for bit, with the window's vertices that cannot reach the mate within w left out before
-    any per-vertex work (:func:`_pruned_window`; ``f*``: the driver's distance field, ``g*``: the driven's).  A
-    vertex left out would have had no hit (delta inf): the least, and the first on a tie, are the same."""
-    drv_t = (t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14, t15)
-    dvn_t = (u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14, u15)
-    chord = 2.0 * math.sin(0.5 * min(w, math.pi))
-    cp, sp = math.cos(-phi_a), math.sin(-phi_a)
-    ct, st = math.cos(-theta), math.sin(-theta)
-    cx1 = -L * ct + 0.0 * (-st)
-    cy1 = -L * st + 0.0 * ct
-    keep1 = R1 + w * R2 + 1e-6
-    i1 = _pruned_window(o1, a1, phi_a, hw_dvn + w, chunk, cc1, cr1, dvn_V, cp, sp, -L, ct, st, keep1, cx1, cy1, chord,
-                        t12, t13, t14, t15, f0, f1, f2, f3, f4, f5)
-    k1, d1, e1, q1 = _side_hits(i1, dvn_V, cp, sp, -L, ct, st, sign, w, keep1, cx1, cy1, drv_t)
-    cth, sth, cph, sph = math.cos(theta), math.sin(theta), math.cos(phi_a), math.sin(phi_a)
-    i2 = _pruned_window(o2, a2, math.pi - theta, hw_drv + w, chunk, cc2, cr2, drv_V, cth, sth, L, cph, sph, R2 + 1e-6,
-                        0.0, 0.0, chord, u12, u13, u14, u15, g0, g1, g2, g3, g4, g5)
-    k2, d2, e2, q2 = _side_hits(i2, drv_V, cth, sth, L, cph, sph, -sign, w, R2 + 1e-6, 0.0, 0.0, dvn_t)
-    j1, m1 = _least(d1)
-    j2, m2 = _least(d2)
-    if not (m1 < np.inf or m2 < np.inf):
-        return np.inf, 0, -1, -1, 0.0
-    if m1 <= m2:
-        return m1, 1, k1[j1], e1[j1], q1[j1]
-    return m2, 2, k2[j2], e2[j2], q2[j2]
-
-
-@njit(cache=True)
 def _pair_hits_pruned(phi_a, theta, sign, w, L, dvn_V, o1, a1, hw_dvn, drv_V, o2, a2, hw_drv, R1, R2,
                       chunk, cc1, cr1, cc2, cr2, f0, f1, f2, f3, f4, f5, g0, g1, g2, g3, g4, g5,
                       t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14, t15,
                       u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14, u15):
-    """:func:`_pair_hits` less the window's vertices that cannot reach the mate within w (:func:`_pruned_window`, as
-    :func:`_first_hit_pruned` leaves them out): every vertex left out would have had no hit (delta inf), so the
-    finite hits are the same, bit for bit, in the same order (the per-tooth load's search, :mod:`.mesh_load`)."""
+    """:func:`_pair_hits` less the window's vertices that cannot reach the mate within w, each side's window pruned
+    before any per-vertex work (:func:`_pruned_window`; ``f*``: the driver's distance field, ``g*``: the driven's):
+    every vertex left out would have had no hit (delta inf), so the finite hits are the same, bit for bit, in the same
+    order (the per-tooth load's search, :mod:`.mesh_load`, and :func:`_first_hit_pruned`)."""
     drv_t = (t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14, t15)
     dvn_t = (u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14, u15)
     chord = 2.0 * math.sin(0.5 * min(w, math.pi))
@@ -304,6 +272,28 @@ def _pair_hits_pruned(phi_a, theta, sign, w, L, dvn_V, o1, a1, hw_dvn, drv_V, o2
                         0.0, 0.0, chord, u12, u13, u14, u15, g0, g1, g2, g3, g4, g5)
     k2, d2, e2, q2 = _side_hits(i2, drv_V, cth, sth, L, cph, sph, -sign, w, R2 + 1e-6, 0.0, 0.0, dvn_t)
     return k1, d1, e1, q1, k2, d2, e2, q2
+
+
+@njit(cache=True)
+def _first_hit_pruned(phi_a, theta, sign, w, L, dvn_V, o1, a1, hw_dvn, drv_V, o2, a2, hw_drv, R1, R2,
+                      chunk, cc1, cr1, cc2, cr2, f0, f1, f2, f3, f4, f5, g0, g1, g2, g3, g4, g5,
+                      t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14, t15,
+                      u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14, u15):
+    """The first entering hit (delta, side, vertex, edge, t) of :func:`_pair_hits` (the first least on a tie, side 1
+    before side 2), bit for bit, with the window's vertices that cannot reach the mate within w left out before
+    any per-vertex work (:func:`_pair_hits_pruned`; ``f*``: the driver's distance field, ``g*``: the driven's).  A
+    vertex left out would have had no hit (delta inf): the least, and the first on a tie, are the same."""
+    k1, d1, e1, q1, k2, d2, e2, q2 = _pair_hits_pruned(
+        phi_a, theta, sign, w, L, dvn_V, o1, a1, hw_dvn, drv_V, o2, a2, hw_drv, R1, R2, chunk, cc1, cr1, cc2, cr2,
+        f0, f1, f2, f3, f4, f5, g0, g1, g2, g3, g4, g5, t0, t1, t2, t3, t4, t5, t6, t7, t8, t9, t10, t11, t12, t13, t14,
+        t15, u0, u1, u2, u3, u4, u5, u6, u7, u8, u9, u10, u11, u12, u13, u14, u15)
+    j1, m1 = _least(d1)
+    j2, m2 = _least(d2)
+    if not (m1 < np.inf or m2 < np.inf):
+        return np.inf, 0, -1, -1, 0.0
+    if m1 <= m2:
+        return m1, 1, k1[j1], e1[j1], q1[j1]
+    return m2, 2, k2[j2], e2[j2], q2[j2]
 
 
 @njit(cache=True)
