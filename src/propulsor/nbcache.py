@@ -21,7 +21,7 @@ SOURCES = tuple(str(_HERE / f) for f in ("checks/tri_tri.py", "checks/motion/nea
                                          "checks/box_pairs.py", "export/normals.py", "export/render.py",
                                          "geometry/spline_foot.py", "laws/fourier_kernels.py",
                                          "laws/cam_kernels.py", "checks/motion/poses.py",
-                                         "checks/motion/sweep_steps.py"))
+                                         "checks/motion/sweep_steps.py", "laws/walking_kernels.py"))
 
 __all__ = ["SOURCES", "bind", "stamp"]
 

@@ -23,7 +23,7 @@ MODULES = ("propulsor.checks.tri_tri", "propulsor.checks.motion.nearest", "propu
            "propulsor.checks.box_pairs", "propulsor.export.normals", "propulsor.export.render",
            "propulsor.geometry.spline_foot", "propulsor.laws.fourier_kernels",
            "propulsor.laws.cam_kernels", "propulsor.checks.motion.poses",
-           "propulsor.checks.motion.sweep_steps")
+           "propulsor.checks.motion.sweep_steps", "propulsor.laws.walking_kernels")
 
 __all__ = ["MODULES", "cold", "warm", "warm_if_cold"]
 
@@ -74,7 +74,9 @@ def warm() -> None:
     from ..export.render import _paint
     from ..geometry.spline_foot import foot_distances
     from ..laws.cam_kernels import DenseSolution, polyline_crosses_itself, quintic_derivs
+    from ..gears.smoothed_law import SmoothedWalkingLaw
     from ..laws.ratio_laws import FourierLaw
+    from ..laws.walking import WalkingLaw
     from .mesh import self_intersections
     from .motion import Outline
     from .motion.backlash import _rot_hits
@@ -119,6 +121,11 @@ def warm() -> None:
     law.U_derivs1(0.3)
     law.U(np.linspace(0.0, 1.0, 9))
     law.phi_of_theta(np.linspace(0.0, 1.0, 9))
+    # the walking law's array functions, exact and blended (laws/walking_kernels.py)
+    walking = WalkingLaw(60.0, 100.0, 360.0, 2)  # seed 000
+    for w in (walking, SmoothedWalkingLaw(walking, 0.05)):
+        w.U(np.linspace(0.0, 1.0, 9))
+        w.dU_dphi(np.linspace(0.0, 1.0, 9))
     # the cam's dense output, return quintics and shoe test (laws/cam_kernels.py): a short DOP853 integration, two
     # quintics, a polyline folded back over itself
     sol = solve_ivp(lambda t, y: [y[1], -y[0]], (0.0, 1.0), [1.0, 0.0], method="DOP853", dense_output=True).sol

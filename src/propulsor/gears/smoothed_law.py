@@ -17,6 +17,7 @@ import numpy as np
 from propulsor.errors import InputError, require_positive
 from propulsor.laws.law import one_point_values
 from propulsor.laws.walking import LEG_PERIOD, LEGS, WalkingLaw, invert_theta, wrap_leg, wrap_leg1
+from propulsor.laws.walking_kernels import smoothed_many
 from propulsor.policy import PHI_OF_THETA_TOL_RAD
 
 __all__ = ["SmoothedWalkingLaw"]
@@ -199,23 +200,28 @@ class SmoothedWalkingLaw:
 
     # ---- law interface ------------------------------------------------------------
     def U(self, phi):
-        """Smoothed ratio U_s(phi) (periodic, period pi/2, C2)."""
+        """Smoothed ratio U_s(phi) (periodic, period pi/2, C2): in a window the blend ``_p(t)``, elsewhere the
+        exact law's U (times 1 - eps with a free hand-over value)."""
         few = one_point_values(self, phi, 0)
         if few is not None:
             return few
-        phi, t, inw = self._window(phi)
-        if self.u_h is not None:
-            return np.where(inw, self._p(t), self._1me * self.law.U(phi))
-        return np.where(inw, self._p(t), self.law.U(phi))
+        return self._many(phi, 0)
 
     def dU_dphi(self, phi):
+        """dU_s/dphi: in a window ``_dp(t)``, elsewhere the exact law's (times 1 - eps with a free hand-over value)."""
         few = one_point_values(self, phi, 1)
         if few is not None:
             return few
-        phi, t, inw = self._window(phi)
-        if self.u_h is not None:
-            return np.where(inw, self._dp(t), self._1me * self.law.dU_dphi(phi))
-        return np.where(inw, self._dp(t), self.law.dU_dphi(phi))
+        return self._many(phi, 1)
+
+    def _many(self, phi, what: int):
+        """``U`` (what 0) or ``dU_dphi`` (1) of an array of angles, shaped as phi: compiled, each angle by the
+        operations numpy does on it (:func:`propulsor.laws.walking_kernels.smoothed_many`)."""
+        law = self.law
+        a0, a1, a2, a3 = self.coef
+        phi = np.asarray(phi, dtype=float)
+        return smoothed_many(np.ascontiguousarray(phi.ravel()), what, float(self.delta), a0, a1, a2, a3,
+                             self.u_h is not None, self._1me, law._u, law._A, law._3b, law._m6bu).reshape(phi.shape)
 
     def d2U_dphi2(self, phi):
         few = one_point_values(self, phi, 2)

@@ -26,6 +26,8 @@ import numpy as np
 from propulsor.errors import InputError, require_finite
 from propulsor.policy import PHI_OF_THETA_TOL_RAD
 
+from .walking_kernels import walking_many
+
 #: one leg's support phase: the law's period in the driven angle phi (rad)
 LEG_PERIOD = math.pi / 2
 #: number of legs sharing one turn of the carrier
@@ -182,11 +184,18 @@ class WalkingLaw:
 
     def U(self, phi):
         """Gear ratio U = d theta / d phi = u (A + 3b cos 2w)/A, seed 000 eq. 15 (periodic)."""
-        return self._u * (self._A + self._3b * np.cos(2 * wrap_leg(phi))) / self._A
+        return self._many(phi, 0)
 
     def dU_dphi(self, phi):
         """dU/dphi = -6 b u sin 2w / A (jumps at w = +-pi/4: docs/architecture.md, «drive law»)."""
-        return self._m6bu * np.sin(2 * wrap_leg(phi)) / self._A
+        return self._many(phi, 1)
+
+    def _many(self, phi, what: int):
+        """``U`` (what 0) or ``dU_dphi`` (1) of an array of angles, shaped as phi: compiled, each angle by the
+        operations numpy does on it (:func:`.walking_kernels.walking_many`)."""
+        phi = np.asarray(phi, dtype=float)
+        return walking_many(np.ascontiguousarray(phi.ravel()), what, self._u, self._A, self._3b,
+                            self._m6bu).reshape(phi.shape)
 
     def d2U_dphi2(self, phi):
         """d2U/dphi2 = -12 b u cos 2w / A."""
