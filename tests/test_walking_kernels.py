@@ -52,6 +52,8 @@ def test_the_compiled_walking_laws_are_numpys_formulas_bit_for_bit():
         phi = _angles(rng, delta)
         for what, f in ((0, law.U), (1, law.dU_dphi)):
             assert _same(f(phi), _numpy_exact(law, phi, what))
+            one, ref = f(0.3), _numpy_exact(law, 0.3, what)  # one angle: a numpy scalar, as numpy gives it
+            assert type(one) is type(ref) and one == ref
         for s in (SmoothedWalkingLaw(law, delta), SmoothedWalkingLaw(law, delta, u_h=float(law.u) * 0.9)):
             for what, f in ((0, s.U), (1, s.dU_dphi)):
                 assert _same(f(phi), _numpy_smoothed(s, phi, what))

@@ -194,8 +194,9 @@ class WalkingLaw:
         """``U`` (what 0) or ``dU_dphi`` (1) of an array of angles, shaped as phi: compiled, each angle by the
         operations numpy does on it (:func:`.walking_kernels.walking_many`)."""
         phi = np.asarray(phi, dtype=float)
-        return walking_many(np.ascontiguousarray(phi.ravel()), what, self._u, self._A, self._3b,
-                            self._m6bu).reshape(phi.shape)
+        out = walking_many(np.ascontiguousarray(phi.ravel()), what, self._u, self._A, self._3b,
+                           self._m6bu).reshape(phi.shape)
+        return out[()] if out.ndim == 0 else out  # one angle: a numpy scalar, as numpy's operations give
 
     def d2U_dphi2(self, phi):
         """d2U/dphi2 = -12 b u cos 2w / A."""
