@@ -335,6 +335,23 @@ def test_resume_reads_results_csv_as_a_stream(tmp_path):
     assert peak < 4_000_000, peak
 
 
+def test_resume_keeps_the_first_row_of_a_key_and_leaves_other_keys(tmp_path):
+    """A key written twice (a row repeated by an interrupted resume): the first row is kept, the later one left; a row
+    of a key the study does not have is left; the rows kept are numbered by the keys' places."""
+    from propulsor.study.table import read_csv
+
+    study = _study(tmp_path)
+    cols = _header(study).strip().split(",")
+    row = lambda v, key, x: ",".join([v, key] + [x] * (len(cols) - 2)) + "\n"  # noqa: E731
+    path = tmp_path / "results.csv"
+    path.write_text(_header(study) + row("3", "b", "2.5") + row("1", "stale", "9.5") + row("4", "a", "1.5")
+                    + row("5", "b", "7.5"))
+    rows = read_csv(path, cols, keys=["a", "b"])
+    assert [(r["variant"], r["key"]) for r in rows] == [(2, "b"), (1, "a")]
+    firsts = {r["key"]: float(r[cols[-1]]) for r in rows}
+    assert firsts == {"b": 2.5, "a": 1.5}
+
+
 def test_resume_refuses_a_results_csv_larger_than_the_limit_by_its_size(tmp_path, monkeypatch):
     from propulsor.study import table
     from propulsor.study.table import read_csv
