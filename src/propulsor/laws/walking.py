@@ -24,9 +24,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from propulsor.errors import InputError, require_finite
+from propulsor.laws.walking_kernels import walking_many
 from propulsor.policy import PHI_OF_THETA_TOL_RAD
-
-from .walking_kernels import walking_many
 
 #: one leg's support phase: the law's period in the driven angle phi (rad)
 LEG_PERIOD = math.pi / 2

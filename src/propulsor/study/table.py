@@ -140,12 +140,13 @@ def read_csv(path: Path, cols: list[str], keys=None) -> list[dict]:
                 raise InputError("--resume", str(path), "the table there has other columns (another study or other "
                                  "objectives): choose another --out or run without --resume")
             pending = None
+            ki = cols.index("key")
             for rec in reader:
                 if pending is not None:
-                    _keep(pending, cols, place, rows)
+                    _keep(pending, cols, ki, place, rows)
                 pending = rec
             if pending is not None and not cut:
-                _keep(pending, cols, place, rows)
+                _keep(pending, cols, ki, place, rows)
         except UnicodeDecodeError as exc:
             raise _resume_error(path, f"is not UTF-8 ({exc.reason} at byte {exc.start} of a block)") from None
         except csv.Error as exc:
@@ -155,12 +156,12 @@ def read_csv(path: Path, cols: list[str], keys=None) -> list[dict]:
     return _coerced(cols, list(rows.values()))[0]
 
 
-def _keep(rec: list[str], cols: list[str], place, rows: dict) -> None:
-    """Add one record of results.csv to `rows` (by key): only whole rows, only this study's keys, the first
-    of each key."""
+def _keep(rec: list[str], cols: list[str], ki: int, place, rows: dict) -> None:
+    """Add one record of results.csv to `rows` (by key, column ``ki``): only whole rows, only this study's keys, the
+    first of each key."""
     if len(rec) != len(cols):
         return
-    key = rec[cols.index("key")]  # a text column: the row's key as written, before any cell is parsed
+    key = rec[ki]  # a text column: the row's key as written, before any cell is parsed
     if key in rows or (place is not None and key not in place):
         return  # another study's row, or a repeated one: left unparsed
     row = {c: (v if FIXED.get(c) == "text" else parse_cell(v)) for c, v in zip(cols, rec)}
