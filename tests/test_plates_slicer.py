@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import functools
 import re
+import random
 import shutil
 import subprocess
 import zipfile
@@ -55,6 +56,51 @@ G1 X90 Y90 E-0.5 ; relative retract while moving: not laid
     assert (e["min_y"], e["max_y"]) == pytest.approx((10 - 0.3, 40 + 0.2))
     assert e["max_y_line"] == 15 and e["min_x_line"] == 9
     assert extrusion_extents(["M83\n", "G1 E5\n"]) == {"moves": 1, "unplaced": 1}
+    # each extreme at the start of a move after a travel (the line of the move that lays it)
+    moves = ["G1 X0 Y100\n", ";WIDTH:0.4\n", "G1 X50 Y20 E1\n", "G1 X200 Y-50 F7800\n", "G1 X60 Y30 E2\n"]
+    h = 0.2
+    assert extrusion_extents(moves) == {"moves": 2, "unplaced": 0, "min_x": 0 - h, "min_x_line": 3,
+                                        "max_x": 200 + h, "max_x_line": 5, "min_y": -50 - h, "min_y_line": 5,
+                                        "max_y": 100 + h, "max_y_line": 3}
+
+
+def _printer_like_gcode(rng: random.Random, n: int) -> list[str]:
+    """Lines as PrusaSlicer writes them: moves ``G1 X.. Y..`` with an E or an F or neither, retracts, resets,
+    width comments, mode changes, travels off the bed."""
+    num = lambda: rng.choice(["%.3f" % rng.uniform(-20, 220), "%d" % rng.randint(-5, 250), ".%d" % rng.randint(1, 9),
+                              "-.%d" % rng.randint(1, 9)])
+    e = 0.0
+    out = []
+    for _ in range(n):
+        k = rng.random()
+        if k < 0.6:
+            e += rng.choice([0.0, 0.02, 0.5, -0.3])
+            tail = rng.choice([f" E{e:.5f}", f" E{e:.5f} F1800", " F7800", "", " E-.8"])
+            out.append(f"G1 X{num()} Y{num()}{tail}\n")
+        elif k < 0.7:
+            out.append(rng.choice(["G1 E-.8 F2100\n", "G1 E.8 F2100\n", "G1 Z.4 F720\n", "G1 X5 E1\n", "G0 Y3 E2\n"]))
+        elif k < 0.8:
+            out.append(f";WIDTH:{rng.choice(['0.45', '0.6', '.42'])}\n")
+        elif k < 0.9:
+            out.append(rng.choice(["G92 E0\n", "G92 E5.5\n", "M82\n", "M83\n", ";TYPE:Skirt/Brim\n", "M106 S255\n"]))
+        else:
+            out.append(rng.choice(["G1 X-5 Y-5\n", f"G1 X{num()} Y{num()} E{e + 1:.4f}\n", "G1 F9000\n"]))
+    return out
+
+
+def test_the_printer_s_own_move_lines_read_as_any_line_with_the_same_words():
+    """The line PrusaSlicer writes for nearly every move (``G1 X.. Y.. E..``) is matched whole; with a comment after
+    it (or its letters in lower case) the same line takes the reading of every other line: the same extents, moves
+    and lines, over runs of printer-like G-code."""
+    rng = random.Random(8)
+    for trial in range(300):
+        lines = _printer_like_gcode(rng, rng.randint(1, 80))
+        want = extrusion_extents(lines)
+        commented = [ln if ln.startswith(";") else ln.rstrip("\n") + " ; as written\n" for ln in lines]
+        lower = [ln.lower() if ln.startswith("G1 ") else ln for ln in lines]
+        assert extrusion_extents(commented) == want, lines
+        assert extrusion_extents(lower) == want, lines
+    assert want["moves"] > 0
 
 
 # --- layout and plate file ----------------------------------------------------------------------------------------
