@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.interpolate import BSpline
 
+from ..errors import require
 from ..planar import norms
 from ..policy import CHORD_TOL_MM, OUTLINE_JOINT_TOL_MM
 
@@ -233,11 +234,24 @@ class Profile:
         return sum(l.signed_area(chord_tol) for l in self.loops)
 
     def transformed(self, angle: float = 0.0, offset=(0.0, 0.0)) -> "Profile":
-        return Profile(self.outer.transformed(angle, offset), [h.transformed(angle, offset) for h in self.holes], self.name)
+        """The region turned by `angle` (rad) about the origin, then moved by `offset` (mm): a rigid motion keeps each
+        loop's sense, so the loops are not sampled again to orient them (:meth:`_of_oriented`)."""
+        return Profile._of_oriented(self.outer.transformed(angle, offset),
+                                    [h.transformed(angle, offset) for h in self.holes], self.name)
 
     def scaled(self, k: float) -> "Profile":
-        """The region scaled by k > 0 about the origin (a print kit's 1:S is k = 1/S)."""
-        return Profile(self.outer.scaled(k), [h.scaled(k) for h in self.holes], self.name)
+        """The region scaled by k > 0 about the origin (a print kit's 1:S is k = 1/S); the loops keep their sense."""
+        require(k > 0, "k", k, "must be > 0")
+        return Profile._of_oriented(self.outer.scaled(k), [h.scaled(k) for h in self.holes], self.name)
+
+    @classmethod
+    def _of_oriented(cls, outer: Loop, holes: list, name: str) -> "Profile":
+        """A profile of loops already oriented (the outer CCW, the holes CW): those of an oriented profile moved
+        rigidly or scaled by k > 0, which keep the sign of every loop's area (``__post_init__`` would sample each loop
+        at CHORD_TOL_MM to find it again: about a fifth of a second a pair of generated wheels)."""
+        p = cls.__new__(cls)
+        p.outer, p.holes, p.name = outer, list(holes), name
+        return p
 
     def polylines(self, chord_tol: float = CHORD_TOL_MM) -> list:
         return [l.polyline(chord_tol) for l in self.loops]
