@@ -200,15 +200,15 @@ def _stitch(P: np.ndarray, Q: np.ndarray) -> np.ndarray | None:
         else:
             tris.append(((0, i % n), (0, (i + 1) % n), (1, (j + j0) % m)))
             i += 1
-    pts = [P, Q]
-    a = np.array([[pts[s][k] for s, k in t] for t in tris])
+    tris = np.array(tris)
+    a = np.vstack([P, Q])[tris[:, :, 1] + n * tris[:, :, 0]]  # (0, i): P[i]; (1, j): Q[j]
     area = 0.5 * ((a[:, 1, 0] - a[:, 0, 0]) * (a[:, 2, 1] - a[:, 0, 1]) - (a[:, 2, 0] - a[:, 0, 0]) * (a[:, 1, 1] - a[:, 0, 1]))
     if not (np.all(area > 0) or np.all(area < 0)):
         return None
     band = abs(abs(_signed_area(P)) - abs(_signed_area(Q)))
     if abs(float(np.abs(area).sum()) - band) > 1e-6 * max(band, 1.0):  # rounding of ~1e4 small areas: 1e-9
         return None
-    return np.array(tris)
+    return tris
 
 
 def _stitch_bands(upper_idx, upper_xy, lower_idx, lower_xy) -> np.ndarray | None:
@@ -233,9 +233,9 @@ def _stitch_bands(upper_idx, upper_xy, lower_idx, lower_xy) -> np.ndarray | None
         tris = _stitch(uxy, lower_xy[best])
         if tris is None:
             return None
-        idx = (ui, lower_idx[best])
-        T = np.array([[idx[s][k] for s, k in t] for t in tris], np.int64)
-        xy = np.array([[(uxy if s == 0 else lower_xy[best])[k] for s, k in t] for t in tris])
+        at = tris[:, :, 1] + len(uxy) * tris[:, :, 0]  # (0, i): the upper loop's i-th point; (1, j): the lower's j-th
+        T = np.concatenate([np.asarray(ui), np.asarray(lower_idx[best])]).astype(np.int64)[at]
+        xy = np.vstack([uxy, lower_xy[best]])[at]
         up = ((xy[:, 1, 0] - xy[:, 0, 0]) * (xy[:, 2, 1] - xy[:, 0, 1])
               - (xy[:, 2, 0] - xy[:, 0, 0]) * (xy[:, 1, 1] - xy[:, 0, 1])) > 0
         out.append(np.where(up[:, None], T[:, ::-1], T))  # facing down: clockwise seen from above
@@ -258,12 +258,10 @@ def _boundary_loops(F: np.ndarray) -> list[np.ndarray]:
     """Closed loops of the edges used by one face only, in the direction of the faces' edges: round the
     missing cap of a mesh facing up, the outer loops counter-clockwise and the holes clockwise seen from
     above; as vertex index arrays."""
-    e = np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]])
-    key = {tuple(x) for x in e.tolist()}
-    nxt = {}
-    for a, b in e.tolist():
-        if (b, a) not in key:
-            nxt[a] = b
+    e = np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]).astype(np.int64)
+    base = int(e.max()) + 1 if len(e) else 1
+    once = ~np.isin(e[:, 1] * base + e[:, 0], e[:, 0] * base + e[:, 1])  # no face has the edge the other way
+    nxt = dict(zip(e[once, 0].tolist(), e[once, 1].tolist()))  # a vertex's last such edge, in the edges' order
     loops, seen = [], set()
     for start in sorted(nxt):
         if start in seen:
