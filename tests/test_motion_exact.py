@@ -2231,6 +2231,25 @@ def test_phase_contacts_in_reverse_is_the_mirror_image():
         assert c.l1 == pytest.approx((8.0 - q[0]) * math.cos(e) - q[1] * math.sin(e), abs=1e-9)
 
 
+def test_each_tooth_pair_keeps_its_first_hit_in_the_order_of_those_hits():
+    """The pairs a phase lists: each (driver tooth, driven tooth) once, by its hit of least gap (the first of equal
+    ones), in the order of those hits, as a dict filled over the hits sorted by gap keeps them; on random hits whose
+    tooth indices share sums and differences (meshing pairs (i, j), (i + 1, j - 1)) and whose gaps tie."""
+    from propulsor.checks.motion.mesh_load import _first_of_each_pair
+
+    rng = np.random.default_rng(4)
+    for trial in range(400):
+        n = int(rng.integers(1, 60))
+        d = rng.choice(np.linspace(0.0, 0.01, int(rng.integers(1, 12))), n)
+        t_drv = rng.integers(0, 5, n)
+        t_dvn = rng.integers(0, 5, n)
+        want = {}
+        for k in np.argsort(d, kind="stable"):
+            want.setdefault((int(t_drv[k]), int(t_dvn[k])), int(k))
+        got = _first_of_each_pair(d, t_drv, t_dvn)
+        assert got.tolist() == list(want.values()), (d, t_drv, t_dvn)
+
+
 def test_phase_contacts_of_a_driven_corner_on_a_turned_driver_edge():
     """The bar's tip corner (10, 0.5) on the slanted lower edge (-5, 2.2) -> (-3, 2.0) of a block (driver axis 14 mm
     off, turned 0.05 rad; the edge is the block's third): the contact point P where the tip's circle meets the turned

@@ -54,6 +54,14 @@ def _all_hits(pair: PairOutlines, phi_a: float, theta: float, sign: float, w: fl
             np.concatenate([i1[k1], i2[k2]]), np.concatenate([e1[k1], e2[k2]]), np.concatenate([t1[k1], t2[k2]]))
 
 
+def _first_of_each_pair(d: np.ndarray, t_drv: np.ndarray, t_dvn: np.ndarray) -> np.ndarray:
+    """The hit of least ``d`` of each tooth pair (``t_drv[k]``, ``t_dvn[k]``; the first of equal ones), the pairs in
+    the order of those hits: indices into ``d``."""
+    order = np.argsort(d, kind="stable")
+    keys = (t_drv * (int(t_dvn.max()) + 1) + t_dvn)[order]  # one key a pair (tooth indices >= 0)
+    return order[np.sort(np.unique(keys, return_index=True)[1])]
+
+
 def _nearest(centres: np.ndarray, ang: np.ndarray) -> np.ndarray:
     """The nearest tooth centre (by polar angle, the first on a tie) of each angle: ``argmin`` over the teeth of
     ``|(ang - centre + pi) mod 2 pi - pi|``, compiled (:func:`.contact_kernels._nearest_teeth_nb`, numpy's own
@@ -86,15 +94,10 @@ def phase_contacts(pair: PairOutlines, phi: float, theta: float, te: float, wind
     p_drv = np.where((side == 2)[:, None], drv.points[np.where(side == 2, v, 0)], p_drv_edge)
     t_dvn = _nearest(pair.driven_teeth, np.arctan2(p_dvn[:, 1], p_dvn[:, 0]))
     t_drv = _nearest(pair.driver_teeth, np.arctan2(p_drv[:, 1], p_drv[:, 0]))
-    out = {}
-    for k in np.argsort(d, kind="stable"):
-        key = (int(t_drv[k]), int(t_dvn[k]))
-        if key in out:
-            continue
-        out[key] = k
     res = []
     L = pair.L
-    for (a, b), k in out.items():
+    for k in _first_of_each_pair(d, t_drv, t_dvn).tolist():
+        a, b = int(t_drv[k]), int(t_dvn[k])
         phi_c = start - sign * float(d[k])
         R_dvn = _rot(-phi_c)
         x = R_dvn @ p_dvn[k]
