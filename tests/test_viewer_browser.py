@@ -19,6 +19,8 @@ from PIL import Image
 from propulsor.cli import main
 from propulsor.export.gallery import INDEX, write_gallery
 
+pytestmark = pytest.mark.browser  # needs headless Chromium (skipped where none is installed)
+
 ROOT = Path(__file__).resolve().parents[1]
 PART = ROOT / "parts" / "road_wheel.toml"
 VIEWS = 30

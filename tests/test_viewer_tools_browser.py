@@ -18,6 +18,8 @@ from propulsor.export.html import write_report_html
 from test_glb_motion import box
 from test_viewer_browser import _model_pixels, _settle, _shot
 
+pytestmark = pytest.mark.browser  # needs headless Chromium (skipped where none is installed)
+
 FRAMES = 7
 REPORT = """# A moving test assembly
 
