@@ -225,6 +225,12 @@ loop (``laws/walking_kernels.py``, numpy's values bit for bit): those calls 0.14
 variant (each call timed by the process clock, three variants); the six contact laws and make's 636 files identical.
 The variants at the end: the seed-002 pair 2.49 / 2.66 / 2.85 CPU s, its Fourier form 3.82 / 3.82 / 3.60 (2.37 and
 3.41 at the session's start: the swing is larger than the change).
+
+2026-12-03, a new machine (2 cores, idle; 9f05cec's product code; four variants after the warm-up): the seed-002 pair
+3.14 / 3.19 / 3.04 / 3.09 CPU s (this machine is slower than the last).  py-spy of the five variants: the proof 45 %
+(the as-built contact both ways 26 %, the whole-cycle proof 17.5 %: its transmission sweep 12 %, free rotations 7 %),
+the design 42 % (the teeth 24 %: the flank sides 9 %, the tip searches 8 %, of which scipy's fsolve 6 %; the spline
+fits 12 %).
 """
 
 from __future__ import annotations

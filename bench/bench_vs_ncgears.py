@@ -147,6 +147,9 @@ at 363 MiB before any data, so 400 MiB needs the CAD kernel in a process of its 
 (64.70 CPU s), peak 287 MiB; ours 14.71 s wall (23.35 CPU s), peak 645 MiB: wall ratio 0.236, CPU ratio 0.361.  The
 run before it gave ours 93.59 s wall, 104.81 CPU s, 889 MiB: the first build after a kernel source changed compiles
 every kernel (nbcache), so a benchmark after an edit needs one build first.
+2026-12-03, a new machine (2 cores, idle; 781390e: the product code of 9f05cec; ncgears' venv made afresh):
+ncgears 53.36 s wall (54.97 CPU s), peak 291 MiB; ours 11.52 s wall (16.66 CPU s), peak 641 MiB: wall ratio 0.216,
+CPU ratio 0.303; ``ncg_elliptical.toml`` 9.38 s wall.
 """
 
 from __future__ import annotations
