@@ -18,7 +18,7 @@ from PIL import Image
 
 from propulsor.cli import main
 from propulsor.export.gallery import INDEX, write_gallery
-from pixels import colour_count, colour_keys, colour_rows
+from propulsor.geometry.rows import row_ids
 
 pytestmark = pytest.mark.browser  # needs headless Chromium (skipped where none is installed)
 
@@ -83,7 +83,7 @@ def test_thirty_views_on_one_page_all_draw(page30):
     assert states == ["drawn"] * VIEWS, states
     for k in range(VIEWS):  # after scrolling through all of them, each still shows its model
         px = _shot(page30, k).reshape(-1, 3)
-        colours = colour_count(px)
+        colours = len(row_ids(px)[0])  # numpy's distinct rows, by one sort of the columns
         assert colours > 20, f"3D view {k}: the canvas shows {colours} colour(s): nothing drawn"
     assert page30.evaluate("window.webglContexts") <= MAX_CONTEXTS  # so none is ever lost to the limit
     assert page30.errors == []
@@ -113,8 +113,9 @@ def test_right_drag_pans_the_model_the_way_the_pointer_went(page30):
 
 
 def _hue_count(img: np.ndarray, hue: float) -> int:
-    uniq, inverse = np.unique(colour_keys(img), return_inverse=True)
-    hsv = np.array([colorsys.rgb_to_hsv(*p) for p in colour_rows(uniq) / 255.0])
+    rgb = img.reshape(-1, 3)
+    first, inverse = row_ids(rgb)  # numpy's unique rows and their inverse (axis=0), by one sort of the columns
+    hsv = np.array([colorsys.rgb_to_hsv(*p) for p in rgb[first] / 255.0])
     near = (hsv[:, 1] > 0.15) & (np.abs(((hsv[:, 0] - hue) + 0.5) % 1.0 - 0.5) < 0.025)
     return int(near[inverse.reshape(-1)].sum())
 
