@@ -73,6 +73,8 @@ PHI_OF_THETA_TOL_RAD = 1e-14
 SOLVE_RESIDUAL_MM = 1e-9
 #: the vectorised Newton of the tip hits stops when every residual is below this (mm)
 NEWTON_STOP_MM = 1e-12
+#: Newton iterations of one tip hit (gears.tip_search.tip_hit) before its hybrid method (fsolve) takes over
+TIP_NEWTON_ITER_MAX = 6
 #: forward-difference step relative to a curve's parameter range
 FD_STEP_REL = 1e-7
 #: forward-difference step in the driven angle phi (rad)
