@@ -62,9 +62,49 @@ def _room(near, ix0, ix1, iy0, iy1, ny, start):
     return np.empty(max(total, 2 * len(near)), np.int64)
 
 
-def _pairs_kernel(ring_filter: bool, entering_only: bool, name: str):
-    """The rotation hits' (point, edge) pairs, compiled once for each choice of the two filters (constants of the
-    closure: numba compiles the branches of the other choice away).
+@njit(cache=True, inline="always")
+def _edge_quadratic(ax, ay, dx, dy, r2):
+    """The circle of radius² r2 about the origin against the edge a + t d (a relative to the centre): qa t² + qb t + qc
+    = 0; (qa, qb, its discriminant)."""
+    qa = dx * dx + dy * dy
+    qb = 2.0 * (ax * dx + ay * dy)
+    qc = (ax * ax + ay * ay) - r2
+    return qa, qb, qb * qb - 4.0 * qa * qc
+
+
+@njit(cache=True, inline="always")
+def _edge_root(qa, qb, sq, real, r, ax, ay, dx, dy, sign):
+    """Root r (0: the lesser) of :func:`_edge_quadratic` (sq: the discriminant's square root, 0 where not real): (t
+    clipped to the edge, the point q = a + t d, whether it is an entering hit on the edge: a real root within the edge
+    (1e-12 to spare) where the point turning by sign runs into the material, perp(q)·perp(d) = q·d of that sign)."""
+    t = ((-qb - sq) if r == 0 else (-qb + sq)) / (2.0 * qa)
+    valid = real and t >= -1e-12 and t <= 1.0 + 1e-12
+    t = min(max(t, 0.0), 1.0)
+    qx, qy = ax + t * dx, ay + t * dy
+    return t, qx, qy, valid and sign * (qx * dx + qy * dy) > 0.0
+
+
+@njit(cache=True, inline="always")
+def _sort_few(near, n):
+    """near[:n] in ascending order: an insertion sort for a few vertices (no allocation), numpy's sort for many (a
+    window of many degrees: hundreds of vertices, n log n)."""
+    if n <= 16:
+        for a in range(1, n):
+            x = near[a]
+            b = a - 1
+            while b >= 0 and near[b] > x:
+                near[b + 1] = near[b]
+                b -= 1
+            near[b + 1] = x
+    else:
+        near[:n].sort()
+
+
+@njit(cache=True)
+def _ring_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, near_cell, sign, rho, lb,
+                chord_factor):
+    """The rotation hits' (point, edge) pairs of the backlash search (windows of up to a pitch, hundreds of vertices a
+    point).
 
     For each point, the edges starting at each vertex within its reach (ascending), then the edges ending there
     (the order of ``tests/rot_hits_reference.py``); for each pair and both roots of the circle-edge intersection: the
@@ -73,142 +113,114 @@ def _pairs_kernel(ring_filter: bool, entering_only: bool, name: str):
     has no vertex within one cell (``near_cell``, :class:`.nearest.VertexGrid`) has none within its reach: skipped
     without a search.
 
-    ``ring_filter``: the point's circle about (cx, cy) can meet an edge only near its radius rho: a root Q on an edge
-    is within the edge's length (at most 2 ``half_len``) of both its ends, so a vertex (and a grid cell) whose
-    distance from the centre differs from rho by more than that (1e-6 mm to spare) has no root on either of its
-    edges, and is left out.  In a window of many degrees this leaves the vertices near one circle instead of a disc
-    of them; it is tested only where the reach is wider than that annulus.  ``entering_only``: a pair with no
-    entering root is never taken (:func:`_rot_reduce`), so it is not kept.  Neither filter can drop a hit.
-
-    ``_ring_pairs`` (both filters): the backlash search's windows of up to a pitch, hundreds of vertices a point.
-    ``_rot_pairs`` (neither): the as-built contact search's kernel (:mod:`.contact_kernels`: a window of a fraction
-    of a milliradian, a few vertices a point, nearly all of them hitting), where the filters cost more than they
-    leave out."""
-
-    def pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, near_cell, sign, rho, lb,
-              chord_factor):
-        m = len(P)
-        offs = np.zeros(m + 1, np.int64)
-        cap = 4096
-        seg = np.empty(cap, np.int64)
-        near = np.empty(min(len(V), 256), np.int64)  # grown on demand (an outline's size each call: a page mapping)
-        band = 2.0 * half_len + 1e-6
-        n_pairs = 0
-        for i in range(m):
-            offs[i] = n_pairs
-            if not lb[i] <= chord_factor * rho[i]:
+    Two filters, neither of which can drop a hit.  The ring: the point's circle about (cx, cy) can meet an edge only
+    near its radius rho: a root Q on an edge is within the edge's length (at most 2 ``half_len``) of both its ends, so
+    a vertex (and a grid cell) whose distance from the centre differs from rho by more than that (1e-6 mm to spare)
+    has no root on either of its edges, and is left out.  In a window of many degrees this leaves the vertices near
+    one circle instead of a disc of them; it is tested only where the reach is wider than that annulus.  Entering
+    only: a pair with no entering root is never taken (:func:`_rot_reduce`), so it is not kept.  (The as-built contact
+    search's windows, a fraction of a milliradian and a few vertices a point, nearly all of them hitting, take the
+    same pairs without the filters, which cost more there than they leave out, one point at a time:
+    :func:`.contact_kernels._side_hits`.)"""
+    m = len(P)
+    offs = np.zeros(m + 1, np.int64)
+    cap = 4096
+    seg = np.empty(cap, np.int64)
+    near = np.empty(min(len(V), 256), np.int64)  # grown on demand (an outline's size each call: a page mapping)
+    band = 2.0 * half_len + 1e-6
+    n_pairs = 0
+    for i in range(m):
+        offs[i] = n_pairs
+        if not lb[i] <= chord_factor * rho[i]:
+            continue
+        reach = chord_factor * rho[i] + half_len + 1e-12
+        px, py = P[i, 0], P[i, 1]
+        if reach <= h:
+            c0 = (min(max(int(math.floor((px - ox) / h)), 0), nx - 1) * ny
+                  + min(max(int(math.floor((py - oy) / h)), 0), ny - 1))
+            if not near_cell[c0]:
                 continue
-            reach = chord_factor * rho[i] + half_len + 1e-12
-            px, py = P[i, 0], P[i, 1]
-            if reach <= h:
-                c0 = (min(max(int(math.floor((px - ox) / h)), 0), nx - 1) * ny
-                      + min(max(int(math.floor((py - oy) / h)), 0), ny - 1))
-                if not near_cell[c0]:
-                    continue
-            ring = ring_filter and reach > 2.0 * band
-            r_hi = rho[i] + band
-            r_lo = max(rho[i] - band, 0.0)
-            hi2, lo2 = r_hi * r_hi, r_lo * r_lo
-            ix0, ix1, iy0, iy1 = disc_cells(px, py, reach, ox, oy, h, nx, ny)
-            near = _room(near, ix0, ix1, iy0, iy1, ny, start)
-            n = 0
-            r2reach = reach * reach
-            dx_lo = dx_hi = 0.0
-            for gx in range(ix0, ix1 + 1):
+        ring = reach > 2.0 * band
+        r_hi = rho[i] + band
+        r_lo = max(rho[i] - band, 0.0)
+        hi2, lo2 = r_hi * r_hi, r_lo * r_lo
+        ix0, ix1, iy0, iy1 = disc_cells(px, py, reach, ox, oy, h, nx, ny)
+        near = _room(near, ix0, ix1, iy0, iy1, ny, start)
+        n = 0
+        r2reach = reach * reach
+        dx_lo = dx_hi = 0.0
+        for gx in range(ix0, ix1 + 1):
+            if ring:
+                # the cell's distances from the centre (its box 1e-6 mm larger: a vertex on its border may be
+                # filed in it)
+                x0, x1 = ox + gx * h - 1e-6 - cx, ox + (gx + 1) * h + 1e-6 - cx
+                dx_lo = x0 if x0 > 0.0 else (-x1 if x1 < 0.0 else 0.0)
+                dx_hi = max(-x0, x1)
+            for gy in range(iy0, iy1 + 1):
                 if ring:
-                    # the cell's distances from the centre (its box 1e-6 mm larger: a vertex on its border may be
-                    # filed in it)
-                    x0, x1 = ox + gx * h - 1e-6 - cx, ox + (gx + 1) * h + 1e-6 - cx
-                    dx_lo = x0 if x0 > 0.0 else (-x1 if x1 < 0.0 else 0.0)
-                    dx_hi = max(-x0, x1)
-                for gy in range(iy0, iy1 + 1):
-                    if ring:
-                        y0, y1 = oy + gy * h - 1e-6 - cy, oy + (gy + 1) * h + 1e-6 - cy
-                        dy_lo = y0 if y0 > 0.0 else (-y1 if y1 < 0.0 else 0.0)
-                        dy_hi = max(-y0, y1)
-                        if dx_lo * dx_lo + dy_lo * dy_lo > hi2 or dx_hi * dx_hi + dy_hi * dy_hi < lo2:
-                            continue
-                    c = gx * ny + gy
-                    for kk in range(start[c], start[c + 1]):
-                        v = items[kk]
-                        ex, ey = px - V[v, 0], py - V[v, 1]
-                        if ex * ex + ey * ey <= r2reach:
-                            if ring:
-                                fx, fy = V[v, 0] - cx, V[v, 1] - cy
-                                f2 = fx * fx + fy * fy
-                                if f2 > hi2 or f2 < lo2:
-                                    continue
-                            near[n] = v
-                            n += 1
-            if n == 0:
-                continue
-            if n <= 16:
-                for a in range(1, n):  # ascending (insertion sort: a few vertices, no allocation)
-                    x = near[a]
-                    b = a - 1
-                    while b >= 0 and near[b] > x:
-                        near[b + 1] = near[b]
-                        b -= 1
-                    near[b + 1] = x
-            else:  # a wide reach (a window of many degrees): hundreds of vertices, n log n
-                near[:n].sort()
-            if n_pairs + 2 * n > cap:
-                while n_pairs + 2 * n > cap:
-                    cap *= 2
-                grown = np.empty(cap, np.int64)
-                grown[:n_pairs] = seg[:n_pairs]
-                seg = grown
-            for j in range(n):
-                seg[n_pairs + j] = near[j]
-                seg[n_pairs + n + j] = prev[near[j]]
-            n_pairs += 2 * n
-        offs[m] = n_pairs
-        Y = np.empty((n_pairs, 2))
-        X = np.empty((n_pairs, 2))
-        T = np.empty((n_pairs, 2))
-        ok = np.zeros((n_pairs, 2), np.bool_)
-        kept = 0
-        for i in range(m):
-            ppx, ppy = P[i, 0] - cx, P[i, 1] - cy
-            r2 = rho[i] * rho[i]
-            first = offs[i]
-            offs[i] = kept
-            for k in range(first, offs[i + 1]):
-                s = seg[k]
-                ax, ay = V[s, 0] - cx, V[s, 1] - cy
-                dx, dy = seg_b[s, 0] - V[s, 0], seg_b[s, 1] - V[s, 1]
-                qa = dx * dx + dy * dy
-                qb = 2.0 * (ax * dx + ay * dy)
-                qc = (ax * ax + ay * ay) - r2
-                disc = qb * qb - 4.0 * qa * qc
-                real = disc >= 0.0
-                if entering_only and not real:
-                    continue  # no root: no hit on this edge
-                sq = math.sqrt(disc if real else 0.0)
-                any_ok = False
-                for r in range(2):
-                    t = ((-qb - sq) if r == 0 else (-qb + sq)) / (2.0 * qa)
-                    valid = real and t >= -1e-12 and t <= 1.0 + 1e-12
-                    t = min(max(t, 0.0), 1.0)
-                    qx, qy = ax + t * dx, ay + t * dy
-                    Y[kept, r] = ppx * qy - ppy * qx
-                    X[kept, r] = ppx * qx + ppy * qy
-                    T[kept, r] = t
-                    e = valid and sign * (qx * dx + qy * dy) > 0.0  # entering: perp(q)·perp(d) = q·d
-                    ok[kept, r] = e
-                    any_ok = any_ok or e
-                if any_ok or not entering_only:
-                    seg[kept] = s
-                    kept += 1
-        offs[m] = kept
-        return offs, seg[:kept], Y[:kept], X[:kept], T[:kept], ok[:kept]
-
-    pairs.__name__ = pairs.__qualname__ = name  # its own name: numba's disk cache is per name
-    return njit(cache=True)(pairs)
-
-
-_rot_pairs = _pairs_kernel(False, False, "_rot_pairs")
-_ring_pairs = _pairs_kernel(True, True, "_ring_pairs")
+                    y0, y1 = oy + gy * h - 1e-6 - cy, oy + (gy + 1) * h + 1e-6 - cy
+                    dy_lo = y0 if y0 > 0.0 else (-y1 if y1 < 0.0 else 0.0)
+                    dy_hi = max(-y0, y1)
+                    if dx_lo * dx_lo + dy_lo * dy_lo > hi2 or dx_hi * dx_hi + dy_hi * dy_hi < lo2:
+                        continue
+                c = gx * ny + gy
+                for kk in range(start[c], start[c + 1]):
+                    v = items[kk]
+                    ex, ey = px - V[v, 0], py - V[v, 1]
+                    if ex * ex + ey * ey <= r2reach:
+                        if ring:
+                            fx, fy = V[v, 0] - cx, V[v, 1] - cy
+                            f2 = fx * fx + fy * fy
+                            if f2 > hi2 or f2 < lo2:
+                                continue
+                        near[n] = v
+                        n += 1
+        if n == 0:
+            continue
+        _sort_few(near, n)
+        if n_pairs + 2 * n > cap:
+            while n_pairs + 2 * n > cap:
+                cap *= 2
+            grown = np.empty(cap, np.int64)
+            grown[:n_pairs] = seg[:n_pairs]
+            seg = grown
+        for j in range(n):
+            seg[n_pairs + j] = near[j]
+            seg[n_pairs + n + j] = prev[near[j]]
+        n_pairs += 2 * n
+    offs[m] = n_pairs
+    Y = np.empty((n_pairs, 2))
+    X = np.empty((n_pairs, 2))
+    T = np.empty((n_pairs, 2))
+    ok = np.zeros((n_pairs, 2), np.bool_)
+    kept = 0
+    for i in range(m):
+        ppx, ppy = P[i, 0] - cx, P[i, 1] - cy
+        r2 = rho[i] * rho[i]
+        first = offs[i]
+        offs[i] = kept
+        for k in range(first, offs[i + 1]):
+            s = seg[k]
+            ax, ay = V[s, 0] - cx, V[s, 1] - cy
+            dx, dy = seg_b[s, 0] - V[s, 0], seg_b[s, 1] - V[s, 1]
+            qa, qb, disc = _edge_quadratic(ax, ay, dx, dy, r2)
+            real = disc >= 0.0
+            if not real:
+                continue  # no root: no hit on this edge
+            sq = math.sqrt(disc)
+            any_ok = False
+            for r in range(2):
+                t, qx, qy, e = _edge_root(qa, qb, sq, real, r, ax, ay, dx, dy, sign)
+                Y[kept, r] = ppx * qy - ppy * qx
+                X[kept, r] = ppx * qx + ppy * qy
+                T[kept, r] = t
+                ok[kept, r] = e
+                any_ok = any_ok or e
+            if any_ok:
+                seg[kept] = s
+                kept += 1
+    offs[m] = kept
+    return offs, seg[:kept], Y[:kept], X[:kept], T[:kept], ok[:kept]
 
 
 @njit(cache=True)

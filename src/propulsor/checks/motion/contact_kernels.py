@@ -1,6 +1,6 @@
 """The compiled kernels of the contact search (:mod:`.contact_events`): the vertices within a window of polar angle
 about the line of centres, the runs of them that cannot reach the mate left out (bounding circles against a distance
-field), each left vertex turned about its axis onto the mate's edges (:func:`.backlash._rot_pairs`), and the first
+field), each left vertex turned about its axis onto the mate's edges (:func:`_side_hits`), and the first
 entering hit.  numba, ``cache=True`` (:mod:`propulsor.checks.kernels` compiles them ahead).  Each rotation of a point
 is written out (x c - y s, x s + y c), the same on every machine.
 """
@@ -12,7 +12,8 @@ import math
 import numpy as np
 from numba import njit
 
-from .backlash import _rot_pairs, _rot_reduce
+from .backlash import _ANG_EPS, _edge_quadratic, _edge_root, _room, _sort_few
+from .nearest import disc_cells
 from ...nbcache import bind
 
 #: the two directions of the loaded contact: the driver's loaded flanks pushing (the driven wheel turned back onto
@@ -96,8 +97,14 @@ def _window_nb(order, angs, centre, hw):
 def _side_hits(idx, V, c1, s1, tx, c2, s2, sign, w, r_keep, cx, cy, tgt):
     """The hits of one side: the vertices ``V[idx]`` placed by a turn (c1, s1), a shift (tx, 0) and a turn (c2, s2)
     into the target's body frame, those within ``r_keep`` of its axis kept, each turned by sign·δ about (cx, cy)
-    until it enters the target (:func:`.backlash._rot_pairs` / ``_rot_reduce``): (vertex, delta, edge, t)."""
-    (tV, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, near, ccx, ccy, radius, r_min) = tgt
+    until it enters the target: (vertex, delta, edge, t).
+
+    The pairs and roots of the backlash search (:func:`.backlash._ring_pairs`, without its filters: here a window of
+    a fraction of a milliradian, a few vertices a point, nearly all of them hitting), the angle of each entering root
+    within the window and the least of them (:func:`.backlash._rot_reduce`'s), one point at a time: a point's pairs
+    (the edges starting at each vertex within its reach, ascending, then the edges ending there) are searched as they
+    are found, without arrays of every pair handed from pass to pass."""
+    (tV, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, near_cell, ccx, ccy, radius, r_min) = tgt
     m = len(idx)
     P = np.empty((m, 2))
     keep = np.empty(m, np.int64)
@@ -112,31 +119,76 @@ def _side_hits(idx, V, c1, s1, tx, c2, s2, sign, w, r_keep, cx, cy, tgt):
             P[n, 0], P[n, 1] = px, py
             keep[n] = idx[j]
             n += 1
-    P = P[:n]
-    rho = np.empty(n)
-    lb = np.empty(n)
-    for j in range(n):
-        dx, dy = P[j, 0] - cx, P[j, 1] - cy
-        rho[j] = math.sqrt(dx * dx + dy * dy)
-        ex, ey = P[j, 0] - ccx, P[j, 1] - ccy
-        d = math.sqrt(ex * ex + ey * ey)
-        lb[j] = max(d - radius, r_min - d)
     chord_factor = 2.0 * math.sin(0.5 * min(w, math.pi))
-    offs, seg, Y, X, T, ok = _rot_pairs(P, cx, cy, tV, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, near,
-                                        sign, rho, lb, chord_factor)
-    # the angle of each root: only of the entering ones (the others are never taken), and not of those plainly
-    # outside 0 .. w (a margin of 1e-6 of the angle: far beyond atan2's rounding), which are never taken either
-    ang = np.full_like(Y, np.nan)
+    # a root's angle is taken only where it is entering and not plainly outside 0 .. w (a margin of 1e-6 of the
+    # angle: far beyond atan2's rounding); the others are never taken
     tw = math.tan(w) * (1.0 + 1e-6) if w < 1.5 else np.inf
-    for k in range(Y.shape[0]):
-        for r in range(2):
-            if not ok[k, r]:
+    delta = np.full(n, np.inf)
+    edge = np.full(n, -1, np.int64)
+    tpar = np.zeros(n)
+    near = np.empty(min(len(tV), 256), np.int64)  # grown on demand (before a scan of the cells)
+    for i in range(n):
+        pxi, pyi = P[i, 0], P[i, 1]
+        dx, dy = pxi - cx, pyi - cy
+        rho = math.sqrt(dx * dx + dy * dy)
+        ex, ey = pxi - ccx, pyi - ccy
+        d = math.sqrt(ex * ex + ey * ey)
+        lb = max(d - radius, r_min - d)
+        if not lb <= chord_factor * rho:
+            continue
+        reach = chord_factor * rho + half_len + 1e-12
+        if reach <= h:
+            c0 = (min(max(int(math.floor((pxi - ox) / h)), 0), nx - 1) * ny
+                  + min(max(int(math.floor((pyi - oy) / h)), 0), ny - 1))
+            if not near_cell[c0]:
                 continue
-            x, s = X[k, r], sign * Y[k, r]
-            if w < 1.5 and (x < 0.0 or (x > 0.0 and (s > x * tw or s < -x * 1e-6))):
-                continue
-            ang[k, r] = sign * math.atan2(Y[k, r], X[k, r])
-    delta, edge, tpar = _rot_reduce(offs, seg, ang, T, ok, w)
+        ix0, ix1, iy0, iy1 = disc_cells(pxi, pyi, reach, ox, oy, h, nx, ny)
+        near = _room(near, ix0, ix1, iy0, iy1, ny, start)
+        k = 0
+        r2reach = reach * reach
+        for gx in range(ix0, ix1 + 1):
+            for gy in range(iy0, iy1 + 1):
+                c = gx * ny + gy
+                for kk in range(start[c], start[c + 1]):
+                    vv = items[kk]
+                    fx, fy = pxi - tV[vv, 0], pyi - tV[vv, 1]
+                    if fx * fx + fy * fy <= r2reach:
+                        near[k] = vv
+                        k += 1
+        if k == 0:
+            continue
+        _sort_few(near, k)
+        ppx, ppy = pxi - cx, pyi - cy
+        r2 = rho * rho
+        best, best_e, best_t = np.inf, -1, 0.0
+        for jj in range(2 * k):
+            sg = near[jj] if jj < k else prev[near[jj - k]]
+            ax, ay = tV[sg, 0] - cx, tV[sg, 1] - cy
+            ddx, ddy = seg_b[sg, 0] - tV[sg, 0], seg_b[sg, 1] - tV[sg, 1]
+            qa, qb, disc = _edge_quadratic(ax, ay, ddx, ddy, r2)
+            if not disc >= 0.0:
+                continue  # no root: no hit on this edge
+            sq = math.sqrt(disc)
+            pb, pt = np.inf, 0.0
+            for r in range(2):
+                t, qx, qy, entering = _edge_root(qa, qb, sq, True, r, ax, ay, ddx, ddy, sign)
+                if not entering:
+                    continue
+                Yr = ppx * qy - ppy * qx
+                Xr = ppx * qx + ppy * qy
+                sr = sign * Yr
+                if w < 1.5 and (Xr < 0.0 or (Xr > 0.0 and (sr > Xr * tw or sr < -Xr * 1e-6))):
+                    continue
+                an = sign * math.atan2(Yr, Xr)
+                if an != an:
+                    continue
+                an = an + 2.0 * math.pi if an < -_ANG_EPS else (an if an > 0.0 else 0.0)
+                if an <= w and an < pb:
+                    pb, pt = an, t
+            if pb < best:
+                best, best_e, best_t = pb, sg, pt
+        if best_e >= 0:
+            delta[i], edge[i], tpar[i] = best, best_e, best_t
     return keep[:n], delta, edge, tpar
 
 
