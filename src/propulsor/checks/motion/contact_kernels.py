@@ -93,6 +93,19 @@ def _window_nb(order, angs, centre, hw):
     return out
 
 
+@njit(cache=True, inline="always")
+def _among(near, k, v):
+    """Whether v is one of near[:k] (ascending): a binary search."""
+    lo, hi = 0, k
+    while lo < hi:
+        mid = (lo + hi) // 2
+        if near[mid] < v:
+            lo = mid + 1
+        else:
+            hi = mid
+    return lo < k and near[lo] == v
+
+
 @njit(cache=True)
 def _side_hits(idx, V, c1, s1, tx, c2, s2, sign, w, r_keep, cx, cy, tgt):
     """The hits of one side: the vertices ``V[idx]`` placed by a turn (c1, s1), a shift (tx, 0) and a turn (c2, s2)
@@ -103,7 +116,10 @@ def _side_hits(idx, V, c1, s1, tx, c2, s2, sign, w, r_keep, cx, cy, tgt):
     a fraction of a milliradian, a few vertices a point, nearly all of them hitting), the angle of each entering root
     within the window and the least of them (:func:`.backlash._rot_reduce`'s), one point at a time: a point's pairs
     (the edges starting at each vertex within its reach, ascending, then the edges ending there) are searched as they
-    are found, without arrays of every pair handed from pass to pass."""
+    are found, without arrays of every pair handed from pass to pass.  An edge ending at a vertex within reach that
+    also starts at one (most of them: the vertices within reach are neighbours along the outline) is searched once,
+    among the first: a second search of it gives the same least angle, which never replaces the first (a strictly
+    lesser one does)."""
     (tV, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, near_cell, ccx, ccy, radius, r_min) = tgt
     m = len(idx)
     P = np.empty((m, 2))
@@ -162,7 +178,12 @@ def _side_hits(idx, V, c1, s1, tx, c2, s2, sign, w, r_keep, cx, cy, tgt):
         r2 = rho * rho
         best, best_e, best_t = np.inf, -1, 0.0
         for jj in range(2 * k):
-            sg = near[jj] if jj < k else prev[near[jj - k]]
+            if jj < k:
+                sg = near[jj]
+            else:
+                sg = prev[near[jj - k]]
+                if _among(near, k, sg):
+                    continue  # the edge starts at a vertex within reach too: taken among the first k, the same hit
             ax, ay = tV[sg, 0] - cx, tV[sg, 1] - cy
             ddx, ddy = seg_b[sg, 0] - tV[sg, 0], seg_b[sg, 1] - tV[sg, 1]
             qa, qb, disc = _edge_quadratic(ax, ay, ddx, ddy, r2)
