@@ -42,14 +42,14 @@ def _span(t, k, n, x):
 
 
 @njit(cache=True)
-def _point_derivs(t, c, k, x, out):
-    """out[d] = d-th derivative (d = 0, 1, 2) of the curve sum_i c[i] N_{i,k}(x) (a zero row past the degree)."""
+def _point_derivs(t, c, k, x, out, ndu, left, right, ders, a):
+    """out[d] = d-th derivative (d = 0, 1, 2) of the curve sum_i c[i] N_{i,k}(x) (a zero row past the degree).
+    ndu (k+1, k+1), left, right (k+1,), ders (3, k+1), a (2, k+1): the caller's scratch arrays, made once for all
+    its points (five arrays allocated at every call cost a fifth of the fit's distances); each entry read is written
+    first in this call (``ders`` and ``a`` are set to zero here as the arrays made afresh were)."""
     n = c.shape[0]
     l = _span(t, k, n, x)
     # basis functions of every degree up to k at x (ndu of A2.3: the upper triangle the knot differences)
-    ndu = np.zeros((k + 1, k + 1))
-    left = np.zeros(k + 1)
-    right = np.zeros(k + 1)
     ndu[0, 0] = 1.0
     for j in range(1, k + 1):
         left[j] = x - t[l + 1 - j]
@@ -62,10 +62,14 @@ def _point_derivs(t, c, k, x, out):
             saved = left[j - r] * temp
         ndu[j, j] = saved
     nd = min(2, k)
-    ders = np.zeros((3, k + 1))
+    for d in range(3):
+        for j in range(k + 1):
+            ders[d, j] = 0.0
     for j in range(k + 1):
         ders[0, j] = ndu[j, k]
-    a = np.zeros((2, k + 1))
+    for d in range(2):
+        for j in range(k + 1):
+            a[d, j] = 0.0
     for r in range(k + 1):
         s1, s2 = 0, 1
         a[0, 0] = 1.0
@@ -106,15 +110,17 @@ def _foot(t, c, k, Q, t0, lo, hi, iters):
     m = Q.shape[0]
     dist = np.empty(m)
     out = np.zeros((3, 2))
+    ndu, left, right = np.zeros((k + 1, k + 1)), np.zeros(k + 1), np.zeros(k + 1)
+    ders, a = np.zeros((3, k + 1)), np.zeros((2, k + 1))
     for p in range(m):
         x = t0[p]
         for _ in range(iters):
-            _point_derivs(t, c, k, x, out)
+            _point_derivs(t, c, k, x, out, ndu, left, right, ders, a)
             rx, ry = out[0, 0] - Q[p, 0], out[0, 1] - Q[p, 1]
             f = rx * out[1, 0] + ry * out[1, 1]
             fp = out[1, 0] * out[1, 0] + out[1, 1] * out[1, 1] + rx * out[2, 0] + ry * out[2, 1]
             x = min(max(x - f / (fp if abs(fp) > 1e-300 else 1e-300), lo), hi)
-        _point_derivs(t, c, k, x, out)
+        _point_derivs(t, c, k, x, out, ndu, left, right, ders, a)
         dist[p] = np.sqrt((out[0, 0] - Q[p, 0]) ** 2 + (out[0, 1] - Q[p, 1]) ** 2)
     return dist
 
