@@ -231,6 +231,31 @@ The variants at the end: the seed-002 pair 2.49 / 2.66 / 2.85 CPU s, its Fourier
 (the as-built contact both ways 26 %, the whole-cycle proof 17.5 %: its transmission sweep 12 %, free rotations 7 %),
 the design 42 % (the teeth 24 %: the flank sides 9 %, the tip searches 8 %, of which scipy's fsolve 6 %; the spline
 fits 12 %).
+2026-12-03, a second session (2 cores; each step in one process, old and new in turn).  The tip hits by Newton's method
+from the nearest sample, fsolve only where an iterate leaves the flank or does not converge (8953b00; 132 of the
+seed-002 design's 152 found hits served, the same points to 1e-11 mm): ``tip_hit``'s time a design, three rounds,
+seed 002 0.279 / 0.397 / 0.402 -> 0.235 / 0.336 / 0.342 CPU s, seed 000 0.478 / 0.562 / 0.493 -> 0.419 / 0.507 /
+0.437.  What is left there is fsolve failing (a height above the flank's end: 128 of the 148 calls that reach it,
+5 172 of its 5 841 evaluations in seed 002), which no exact shortcut was found to skip.  The as-built contact's
+rotation hits one point at a time (9ac9bbf: ``contact_kernels._side_hits``, no arrays of every pair through three
+passes) and an edge ending at a vertex within reach that also starts at one searched once (b368de5): the contact
+laws of five pairs identical array by array; one direction pair 6-14 % less CPU, then a further 4-7 % (median of ten
+paired runs 0.963 seed 002, 0.933 its Fourier form; the twelfth session's "each edge once" gained nothing in the old
+multi-pass kernel).  perf with the kernels' symbols mapped, one direction pair: before, ``_rot_pairs`` 38 %,
+``_nearest_vertex`` 19 %, ``_refresh`` 10 %, ``_reused`` 8 %, numba's reference counts 7.5 %; after, ``_side_hits``
+43 %, ``_nearest_vertex`` 21 %, reference counts 7.7 %.  Calling ``_nearest_vertex``'s inner search from
+``_refresh`` directly: no difference (reverted).  Python's collector: 1.5 CPU s of make's 208, ~2 % of a variant:
+not pursued.
+2026-12-04, a new session (2 cores; the machine's speed swinging 25-40 % within minutes).  The spline fit's foot
+distances (``spline_foot._foot``) without the five scratch arrays its basis-function step allocated at each of its
+~340 000 evaluations a seed-002 variant (4ae55ab): the 1 404 and 1 452 calls of the seed-002 and Fourier variants
+replayed, old and new in turn, eight rounds: every distance identical; medians 0.0574 -> 0.0529, 0.0568 -> 0.0539
+CPU s on a quiet minute, 0.0988 -> 0.0757, 0.0978 -> 0.0800 on a slow one (about 0.01-0.02 CPU s a variant).
+py-spy of five variants at the session's start (seed 002): the as-built contact's compiled loop 23 % (self), the
+whole-cycle proof's transmission sweep 13 % (its free rotations 8 %), the teeth 22 % (the tip searches 7.6 %, the
+flank sides 8 %), the fits 14 % (foot distances 2.8 %, interpolation 2.5 %, the refinement's bookkeeping ~2 %).
+Variants at the end: the seed-002 pair 2.61 / 2.87 / 2.69 / 2.89 CPU s, its Fourier form 4.22 / 4.40 / 4.42 / 4.60
+(2.47 / 2.64 / 2.72 / 2.53 for seed 002 at the session's start, before any change: the machine's swing).
 """
 
 from __future__ import annotations

@@ -150,6 +150,12 @@ every kernel (nbcache), so a benchmark after an edit needs one build first.
 2026-12-03, a new machine (2 cores, idle; 781390e: the product code of 9f05cec; ncgears' venv made afresh):
 ncgears 53.36 s wall (54.97 CPU s), peak 291 MiB; ours 11.52 s wall (16.66 CPU s), peak 641 MiB: wall ratio 0.216,
 CPU ratio 0.303; ``ncg_elliptical.toml`` 9.38 s wall.
+2026-12-04 (2 cores, otherwise idle but slow that minute; 4ae55ab): ncgears 58.58 s wall (57.21 CPU s), peak 290 MiB;
+ours 14.09 s wall (19.79 CPU s), peak 645 MiB: wall ratio 0.241, CPU ratio 0.346.  The peak's floor measured again
+(VmRSS of one process, nothing else): ``import OCP`` 295 MiB (file-backed 184, anonymous 111), ``import cadquery``
+467 (its VTK not deferred); the project defers VTK (363).  ``make`` from clean at b368de5, the kernels cached: 95.9 s
+wall, 174.3 user + 8.1 sys s, its 636 files identical to ``all_19_make_at_9ac9bbf.sha256``; the first make on this
+machine compiled every kernel for its CPU (numba keys its cache by the CPU) in its 45.7 s of loading: 126.9 s wall.
 """
 
 from __future__ import annotations
