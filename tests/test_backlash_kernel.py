@@ -63,3 +63,25 @@ def test_free_rotation_with_the_reference_hits(monkeypatch):
     for f, s in zip(fast, slow):
         assert f.delta == s.delta and f.n_pairs == s.n_pairs and f.point.tobytes() == s.point.tobytes()
         assert math.isfinite(f.delta)
+
+
+def test_rot_bounds_are_the_norms_and_the_annulus_bound_bit_for_bit():
+    """``backlash.rot_bounds`` (one compiled pass) gives the floats of ``norms(P - C)`` and
+    ``Outline.boundary_lower_bound(P)`` it replaced in the proofs: points placed about a toothed body, inside its
+    annulus, outside it and on its centre, about centres near and far (a mutant taking the bound's lesser gap, or the
+    distance from the outline's centre for rho, fails here)."""
+    from propulsor.planar import norms
+
+    drv = Outline([_gear(12, 20.0, 23.0, 1500), _gear(4, 5.0, 6.0, 200)[::-1]], 0.1)
+    dvn = Outline([_gear(9, 14.0, 17.0, 1100)], 0.1)
+    rng = np.random.default_rng(5)
+    for k in range(8):
+        C = np.array([38.2 + float(rng.uniform(-30.0, 1.5)), float(rng.uniform(-3.0, 3.0))])
+        M = Pose(float(rng.uniform(0, 2 * math.pi)), (0.0, 0.0), tuple(C)).matrix()
+        P = apply_pose(M, dvn.points)
+        P = np.vstack([P, drv.center[None, :], rng.normal(0.0, 25.0, (200, 2))])
+        rho, lb = backlash.rot_bounds(P, C, drv)
+        assert np.array_equal(rho, norms(P - C)) and np.array_equal(lb, drv.boundary_lower_bound(P))
+        assert (lb < 0).any() and (lb > 0).any()  # points within the annulus and beyond it
+        rho0, lb0 = backlash.rot_bounds(P, (0.0, 0.0), dvn)
+        assert np.array_equal(rho0, norms(P)) and np.array_equal(lb0, dvn.boundary_lower_bound(P))

@@ -9,12 +9,13 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
+from ...planar import norms
 from .outlines import Outline
 from .poses import apply_pose
 from .nearest import disc_cells, grid_of
 from ...nbcache import bind
 
-__all__ = ['free_rotation']
+__all__ = ['free_rotation', 'rot_bounds']
 
 
 _ANG_EPS = 1e-10  # rad: a hit this close to 0 is a touching contact, not a full turn
@@ -247,6 +248,37 @@ def _rot_reduce(offs, seg, ang, T, ok, w):
         if best_e >= 0:
             delta[i], edge[i], tpar[i] = best, best_e, best_t
     return delta, edge, tpar
+
+
+@njit(cache=True)
+def _rot_bounds_nb(P, cx, cy, ox, oy, radius, r_min):
+    """(rho, lb) of :func:`rot_bounds`, one pass over the points: the operations of ``norms(P - C)`` and
+    ``Outline.boundary_lower_bound`` (each difference squared, the squares added, the root; the annulus' two
+    gaps and the greater), so the same floats without their temporary arrays."""
+    n = len(P)
+    rho = np.empty(n)
+    lb = np.empty(n)
+    for i in range(n):
+        x, y = P[i, 0], P[i, 1]
+        dx, dy = x - cx, y - cy
+        rho[i] = math.sqrt(dx * dx + dy * dy)
+        ex, ey = x - ox, y - oy
+        d = math.sqrt(ex * ex + ey * ey)
+        a, b = d - radius, r_min - d
+        lb[i] = a if a >= b else b
+    return rho, lb
+
+
+def rot_bounds(P: np.ndarray, C, tgt: Outline) -> tuple[np.ndarray, np.ndarray]:
+    """The two arrays :func:`free_rotation` takes for points P turning about C (both in ``tgt``'s body frame): each
+    point's distance from C (``norms(P - C)``) and the lower bound of its distance from ``tgt``'s boundary
+    (``tgt.boundary_lower_bound(P)``), the same floats, compiled for the float64 (n, 2) arrays the proofs pass (a
+    whole-cycle proof asks for them at every step, for thousands of vertices a side)."""
+    P = np.asarray(P)
+    if P.dtype != np.float64 or P.ndim != 2 or P.shape[1] != 2:
+        return norms(P - np.asarray(C, float)), tgt.boundary_lower_bound(P)
+    return _rot_bounds_nb(np.ascontiguousarray(P), float(C[0]), float(C[1]), float(tgt.center[0]),
+                          float(tgt.center[1]), float(tgt.radius), float(tgt.r_min))
 
 
 @dataclass

@@ -17,7 +17,7 @@ from ...planar import norms
 from .outlines import outline
 from .poses import Pose, apply_pose, compose_poses, inverse_pose
 from .distance import check_record
-from .backlash import free_rotation
+from .backlash import free_rotation, rot_bounds
 from .crossing import certainly_apart
 
 __all__ = ['TransmissionResult', 'transmission_sweep']
@@ -203,10 +203,8 @@ def transmission_sweep(driver_profile, driver_center, driven_profile, driven_cen
             ptc[k] = ptd[k] = np.nan
             continue
         C1 = rel21[:, 2]
-        rho1 = norms(P1 - C1)
-        lb1 = drv.boundary_lower_bound(P1)
-        rho2 = norms(P2)
-        lb2 = dvn.boundary_lower_bound(P2)
+        rho1, lb1 = rot_bounds(P1, C1, drv)
+        rho2, lb2 = rot_bounds(P2, (0.0, 0.0), dvn)
         geo = (P1, C1, P2, rho1, lb1, rho2, lb2, M2)
         f = free_rotation(drv, dvn, *geo, s2, w_fwd, max_angle, contact_tol, contact_merge)
         b = free_rotation(drv, dvn, *geo, -s2, w_back, max_angle, contact_tol, contact_merge)

@@ -183,8 +183,7 @@ class ContactLaw:
 
     def back_room(self, j: int, phi: float, th: float, w0: float):
         """Free rotation of the gear backwards from th against sector j: (room, world contact point)."""
-        from ...checks.motion.backlash import free_rotation
-        from ...planar import norms
+        from ...checks.motion.backlash import free_rotation, rot_bounds
         from ...checks.motion.poses import apply_pose, inverse_pose
 
         drv, gear = self.b.sectors[j], self.b.gear
@@ -192,9 +191,8 @@ class ContactLaw:
         rel12 = inverse_pose(rel21)
         P1, C1 = apply_pose(rel21, gear.points), rel21[:, 2]
         P2 = apply_pose(rel12, drv.points)
-        r = free_rotation(drv, gear, P1, C1, P2, norms(P1 - C1), drv.boundary_lower_bound(P1), norms(P2),
-                          gear.boundary_lower_bound(P2), M2, 1.0, w0, self.b.w_max, policy.MOTION_CONTACT_TOL_MM,
-                          policy.MOTION_CONTACT_MERGE_MM)
+        r = free_rotation(drv, gear, P1, C1, P2, *rot_bounds(P1, C1, drv), *rot_bounds(P2, (0.0, 0.0), gear), M2, 1.0,
+                          w0, self.b.w_max, policy.MOTION_CONTACT_TOL_MM, policy.MOTION_CONTACT_MERGE_MM)
         return r.delta, r.point
 
     # --- one pose ----------------------------------------------------------------------------
