@@ -85,3 +85,43 @@ def test_rot_bounds_are_the_norms_and_the_annulus_bound_bit_for_bit():
         assert (lb < 0).any() and (lb > 0).any()  # points within the annulus and beyond it
         rho0, lb0 = backlash.rot_bounds(P, (0.0, 0.0), dvn)
         assert np.array_equal(rho0, norms(P)) and np.array_equal(lb0, dvn.boundary_lower_bound(P))
+
+
+def _zones_numpy(d1, rho1, d2, rho2, e2, t2, dmin, tol, dvn, merge) -> int:
+    """free_rotation's contact zones as numpy counted them before ``backlash._zones_nb``."""
+    f1, f2 = np.isfinite(d1), np.isfinite(d2)
+    c1 = np.nonzero(f1)[0][(d1[f1] - dmin) * rho1[f1] <= tol]
+    c2 = np.nonzero(f2)[0][(d2[f2] - dmin) * rho2[f2] <= tol]
+    pos = np.concatenate([dvn.arclen[c1], dvn.arclen[e2[c2]] + t2[c2] * dvn.seg_len[e2[c2]]])
+    loop = np.concatenate([dvn.loop_id[c1], dvn.loop_id[e2[c2]]])
+    n = 0
+    for lid in np.unique(loop):
+        s = np.sort(pos[loop == lid])
+        n += max(int(np.count_nonzero(np.diff(np.concatenate([s, [s[0] + dvn.perimeter[lid]]])) > merge)), 1)
+    return n
+
+
+def test_contact_zones_are_numpy_s_count():
+    """The compiled count of contact zones equals the numpy formulation it replaced, on hits of a two-loop outline with
+    gaps either side of the merge distance and hits across a loop's start (killed by a mutant leaving out the
+    wrap-around gap, or one counting each loop's groups without the one a loop has at least)."""
+    dvn = Outline([_gear(9, 14.0, 17.0, 1100), _gear(4, 5.0, 6.0, 200)[::-1]], 0.1)
+    rng = np.random.default_rng(3)
+    counts = set()
+    for k in range(300):
+        n1, n2 = int(rng.integers(1, 40)), int(rng.integers(0, 40))
+        d1 = np.full(len(dvn.points), np.inf)
+        i1 = rng.choice(len(dvn.points), n1, replace=False)
+        d1[i1] = rng.uniform(0.0, 2e-3, n1)
+        d2 = np.where(rng.uniform(size=n2) < 0.7, rng.uniform(0.0, 2e-3, n2), np.inf)
+        e2 = rng.integers(0, len(dvn.points), n2).astype(np.int64)
+        t2 = rng.uniform(0.0, 1.0, n2)
+        rho1, rho2 = rng.uniform(5.0, 20.0, len(d1)), rng.uniform(5.0, 20.0, n2)
+        dmin = float(min(d1.min(), d2.min(initial=np.inf)))
+        tol, merge = float(rng.uniform(0.001, 0.02)), float(rng.uniform(0.05, 30.0))
+        want = _zones_numpy(d1, rho1, d2, rho2, e2, t2, dmin, tol, dvn, merge)
+        got = backlash._zones_nb(d1, rho1, d2, rho2, e2, t2, dmin, tol, dvn.arclen, dvn.seg_len, dvn.loop_id,
+                                 dvn.perimeter, merge)
+        assert got == want, (k, got, want)
+        counts.add(want)
+    assert len(counts) >= 5  # few zones and many

@@ -79,7 +79,7 @@ def warm() -> None:
     from ..laws.walking import WalkingLaw
     from .mesh import self_intersections
     from .motion import Outline
-    from .motion.backlash import _rot_hits, rot_bounds
+    from .motion.backlash import _rot_hits, _zones_nb, rot_bounds
     from .motion.contact_events import DRIVE, PairOutlines, resolve_contact
     from .motion.contact_kernels import _nearest_teeth_nb
     from .motion.crossing import certainly_apart
@@ -100,6 +100,8 @@ def warm() -> None:
     P = square.points + 1.2
     _rot_hits(P, np.zeros(2), square, 1.0, 0.5, np.linalg.norm(P, axis=1), square.boundary_lower_bound(P))
     rot_bounds(P, (0.0, 0.0), square)  # the free rotations' radii and bounds in one pass
+    _zones_nb(np.zeros(4), np.ones(4), np.zeros(1), np.ones(1), np.zeros(1, np.int64), np.zeros(1), 0.0, 1e-3,
+              square.arclen, square.seg_len, square.loop_id, square.perimeter, 0.1)  # a free rotation's contact zones
     # two rings of 12 and 18 teeth (module 1) at their centre distance, a few positions of the driven one
     z1, z2, m = 12, 18, 1.0
     drv, dvn = Outline([_toothed(z1, 0.5 * m * z1, 1.6 * m)]), Outline([_toothed(z2, 0.5 * m * z2, 1.6 * m)])

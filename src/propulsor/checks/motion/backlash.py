@@ -288,14 +288,49 @@ class _FreeRotation:
     point: np.ndarray  # world point of the first contact (nan if none)
 
 
-def _cluster_count(pos: np.ndarray, loop: np.ndarray, perimeter: np.ndarray, merge: float) -> int:
-    """Number of groups of boundary positions (arc length along driven loops), gaps > merge split groups."""
+@njit(cache=True)
+def _zones_nb(d1, rho1, d2, rho2, e2, t2, dmin, tol, arclen, seg_len, loop_id, perimeter, merge):
+    """The contact zones of :func:`free_rotation` at its touching position, one compiled pass: the points whose gap
+    (the arc at their radius, ``(d - dmin) rho``) is within ``tol``, placed by arc length along the driven outline
+    (side 1 its vertices, side 2 their hits on its edges), and counted: each loop's positions sorted, their gaps
+    with the wrap-around, a group for each gap beyond ``merge``, at least one a loop (``tests/test_backlash_kernel.py``
+    holds it to the numpy formulation it replaced)."""
+    m = 0
+    for i in range(len(d1)):
+        if math.isfinite(d1[i]) and (d1[i] - dmin) * rho1[i] <= tol:
+            m += 1
+    for i in range(len(d2)):
+        if math.isfinite(d2[i]) and (d2[i] - dmin) * rho2[i] <= tol:
+            m += 1
+    pos = np.empty(m)
+    loop = np.empty(m, np.int64)
+    j = 0
+    for i in range(len(d1)):
+        if math.isfinite(d1[i]) and (d1[i] - dmin) * rho1[i] <= tol:
+            pos[j], loop[j] = arclen[i], loop_id[i]
+            j += 1
+    for i in range(len(d2)):
+        if math.isfinite(d2[i]) and (d2[i] - dmin) * rho2[i] <= tol:
+            e = e2[i]
+            pos[j], loop[j] = arclen[e] + t2[i] * seg_len[e], loop_id[e]
+            j += 1
+    order = np.argsort(loop, kind="mergesort")
     n = 0
-    for lid in np.unique(loop):
-        s = np.sort(pos[loop == lid])
-        gaps = np.diff(np.concatenate([s, [s[0] + perimeter[lid]]]))
-        k = int(np.count_nonzero(gaps > merge))
+    a = 0
+    while a < m:
+        lid = loop[order[a]]
+        b = a
+        while b < m and loop[order[b]] == lid:
+            b += 1
+        s = np.sort(pos[order[a:b]])
+        k = 0
+        for q in range(b - a - 1):
+            if s[q + 1] - s[q] > merge:
+                k += 1
+        if (s[0] + perimeter[lid]) - s[b - a - 1] > merge:
+            k += 1
         n += max(k, 1)
+        a = b
     return n
 
 
@@ -328,12 +363,8 @@ def free_rotation(drv: Outline, dvn: Outline, P1: np.ndarray, C1: np.ndarray, P2
             continue
         break
     # contact zones at the touching position: gap (arc at the point's radius) within tol
-    f1, f2 = np.isfinite(d1), np.isfinite(d2)
-    c1 = np.nonzero(f1)[0][(d1[f1] - dmin) * rho1[f1] <= tol]
-    c2 = np.nonzero(f2)[0][(d2[f2] - dmin) * rho2[f2] <= tol]
-    pos = np.concatenate([dvn.arclen[c1], dvn.arclen[e2[c2]] + t2[c2] * dvn.seg_len[e2[c2]]])
-    loop = np.concatenate([dvn.loop_id[c1], dvn.loop_id[e2[c2]]])
-    n_pairs = _cluster_count(pos, loop, dvn.perimeter, merge)
+    n_pairs = _zones_nb(d1, np.ascontiguousarray(rho1, np.float64), d2, np.ascontiguousarray(rho2, np.float64), e2, t2,
+                        float(dmin), float(tol), dvn.arclen, dvn.seg_len, dvn.loop_id, dvn.perimeter, float(merge))
     # world point of the first contact (driven rotated into contact)
     if d1.min() <= d2.min():
         i = int(np.argmin(d1))
