@@ -125,3 +125,48 @@ def test_contact_zones_are_numpy_s_count():
         assert got == want, (k, got, want)
         counts.add(want)
     assert len(counts) >= 5  # few zones and many
+
+
+@pytest.mark.parametrize("sign", [1.0, -1.0])
+@pytest.mark.parametrize("w, w_other", [(0.004, 0.05), (0.05, 0.004), (0.02, 0.02), (0.6, 0.001), (1e-5, 4.0)])
+def test_both_senses_from_one_search_are_each_sense_s_own(sign, w, w_other):
+    """``_rot_hits_both`` (the pairs of the wider window sought once) gives each sense the hits ``_rot_hits`` finds in
+    that sense's own window, bit for bit: first hit, edge and parameter of every point, on two toothed bodies close
+    to mesh, the windows narrower and wider either way (a mutant reducing the other sense with this sense's window,
+    or with this sense's entering roots, fails here)."""
+    drv = Outline([_gear(12, 20.0, 23.0, 1500), _gear(4, 5.0, 6.0, 200)[::-1]], 0.1)
+    dvn = Outline([_gear(9, 14.0, 17.0, 1100)], 0.1)
+    rng = np.random.default_rng(17)
+    hits = 0
+    for _ in range(5):
+        C = np.array([38.2 + float(rng.uniform(0.0, 1.5)), float(rng.uniform(-0.5, 0.5))])
+        M = Pose(float(rng.uniform(0, 2 * math.pi)), (0.0, 0.0), tuple(C)).matrix()
+        P = apply_pose(M, dvn.points)
+        rho, lb = backlash.rot_bounds(P, C, drv)
+        one, other = backlash._rot_hits_both(P, C, drv, sign, w, w_other, rho, lb)
+        for got, want in ((one, backlash._rot_hits(P, C, drv, sign, w, rho, lb)),
+                          (other, backlash._rot_hits(P, C, drv, -sign, w_other, rho, lb))):
+            for g, r in zip(got, want):
+                assert g.tobytes() == r.tobytes()
+            hits += int(np.isfinite(got[0]).sum())
+    assert hits > 0
+
+
+def test_free_rotations_are_two_free_rotations():
+    """Both senses at once (``free_rotations``) against ``free_rotation`` twice, with first windows too narrow (they
+    grow), near and wide: the same free rotation, contact zones and point."""
+    drv = Outline([_gear(12, 20.0, 23.0, 1500)], 0.1)
+    dvn = Outline([_gear(9, 14.0, 17.0, 1100)], 0.1)
+    for th in (0.1, 0.13, 0.17):
+        C1 = np.array([39.0, 0.0])
+        M2 = np.array(Pose(th, (0.0, 0.0), tuple(C1)).matrix())
+        P1 = apply_pose(M2, dvn.points)
+        P2 = apply_pose(np.array(Pose(-th, (0.0, 0.0), (0.0, 0.0)).matrix()), drv.points - C1)
+        args = (drv, dvn, P1, C1, P2, *backlash.rot_bounds(P1, C1, drv), *backlash.rot_bounds(P2, (0.0, 0.0), dvn), M2)
+        for s, wa, wb in ((1.0, 1e-4, 0.05), (-1.0, 0.2, 1e-6), (1.0, 0.01, 0.01)):
+            both = backlash.free_rotations(*args, s, wa, wb, 1.0, 1e-3, 0.5)
+            each = (backlash.free_rotation(*args, s, wa, 1.0, 1e-3, 0.5),
+                    backlash.free_rotation(*args, -s, wb, 1.0, 1e-3, 0.5))
+            for f, g in zip(both, each):
+                assert f.delta == g.delta and f.n_pairs == g.n_pairs and f.point.tobytes() == g.point.tobytes()
+                assert math.isfinite(f.delta)

@@ -15,7 +15,7 @@ from .poses import apply_pose
 from .nearest import disc_cells, grid_of
 from ...nbcache import bind
 
-__all__ = ['free_rotation', 'rot_bounds']
+__all__ = ['free_rotation', 'free_rotations', 'rot_bounds']
 
 
 _ANG_EPS = 1e-10  # rad: a hit this close to 0 is a touching contact, not a full turn
@@ -37,15 +37,31 @@ def _rot_hits(P: np.ndarray, C: np.ndarray, tgt: Outline, sign: float, w: float,
     (compiled: :func:`_ring_pairs`, :func:`_rot_reduce`; the numpy formulation it reproduces bit for bit, every
     delta and the edge and t of every hit, is ``tests/rot_hits_reference.py``).
     """
+    return _rot_hits_both(P, C, tgt, sign, w, None, rho, lb)[0]
+
+
+def _rot_hits_both(P: np.ndarray, C: np.ndarray, tgt: Outline, sign: float, w: float, w_other: float | None,
+                   rho: np.ndarray, lb: np.ndarray):
+    """:func:`_rot_hits` of the points turning by ``sign`` within ``w`` and, where ``w_other`` is given, of the same
+    points turning the other way within ``w_other``, from one search of their pairs: ((delta, edge, t), the other
+    sense's or None).  The pairs are sought within the wider window and each sense keeps its entering roots within
+    its own: a hit within the narrower window lies on an edge with an end within that window's reach, so the wider
+    reach adds only pairs whose hits lie beyond it, never taken (and in the same order of the pairs, so the same
+    first pair on a tie); the two senses' roots are the same, only which of them enter differs.  So each sense's
+    hits are :func:`_rot_hits`'s of its own window, bit for bit (tests/test_backlash_kernel.py)."""
     g = grid_of(tgt)
-    chord_factor = 2.0 * math.sin(0.5 * min(w, math.pi))
-    offs, seg, Y, X, T, ok = _ring_pairs(np.ascontiguousarray(P, np.float64), float(C[0]), float(C[1]), tgt.points,
-                                         g.seg_b, tgt.prev, tgt.half_len, g.origin[0], g.origin[1], g.h, g.nx, g.ny,
-                                         g.start, g.items, g.near, float(sign), np.ascontiguousarray(rho, np.float64),
-                                         np.ascontiguousarray(lb, np.float64), chord_factor)
+    both = w_other is not None
+    wide = max(w, w_other) if both else w
+    chord_factor = 2.0 * math.sin(0.5 * min(wide, math.pi))
+    offs, seg, Y, X, T, ok, ok2 = _ring_pairs(np.ascontiguousarray(P, np.float64), float(C[0]), float(C[1]),
+                                              tgt.points, g.seg_b, tgt.prev, tgt.half_len, g.origin[0], g.origin[1],
+                                              g.h, g.nx, g.ny, g.start, g.items, g.near, float(sign),
+                                              np.ascontiguousarray(rho, np.float64),
+                                              np.ascontiguousarray(lb, np.float64), chord_factor, both)
     # numpy's own arctan2 (not the C library's, which differs in the last bit on about 7 % of arguments)
-    ang = sign * np.arctan2(Y, X)
-    return _rot_reduce(offs, seg, ang, T, ok, float(w))
+    A = np.arctan2(Y, X)
+    one = _rot_reduce(offs, seg, sign * A, T, ok, float(w))
+    return one, (_rot_reduce(offs, seg, -sign * A, T, ok2, float(w_other)) if both else None)
 
 
 @njit(cache=True, inline="always")
@@ -103,7 +119,7 @@ def _sort_few(near, n):
 
 @njit(cache=True)
 def _ring_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, near_cell, sign, rho, lb,
-                chord_factor):
+                chord_factor, both):
     """The rotation hits' (point, edge) pairs of the backlash search (windows of up to a pitch, hundreds of vertices a
     point).
 
@@ -122,7 +138,10 @@ def _ring_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, i
     only: a pair with no entering root is never taken (:func:`_rot_reduce`), so it is not kept.  (The as-built contact
     search's windows, a fraction of a milliradian and a few vertices a point, nearly all of them hitting, take the
     same pairs without the filters, which cost more there than they leave out, one point at a time:
-    :func:`.contact_kernels._side_hits`.)"""
+    :func:`.contact_kernels._side_hits`.)
+
+    ``both``: the pairs with an entering root for either sense kept, and ``ok2`` whether each root enters turning by
+    -sign (else ``ok2`` is empty)."""
     m = len(P)
     offs = np.zeros(m + 1, np.int64)
     cap = 4096
@@ -194,6 +213,7 @@ def _ring_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, i
     X = np.empty((n_pairs, 2))
     T = np.empty((n_pairs, 2))
     ok = np.zeros((n_pairs, 2), np.bool_)
+    ok2 = np.zeros((n_pairs if both else 0, 2), np.bool_)
     kept = 0
     for i in range(m):
         ppx, ppy = P[i, 0] - cx, P[i, 1] - cy
@@ -217,11 +237,15 @@ def _ring_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, i
                 T[kept, r] = t
                 ok[kept, r] = e
                 any_ok = any_ok or e
+                if both:
+                    e2 = _edge_root(qa, qb, sq, real, r, ax, ay, dx, dy, -sign)[3]
+                    ok2[kept, r] = e2
+                    any_ok = any_ok or e2
             if any_ok:
                 seg[kept] = s
                 kept += 1
     offs[m] = kept
-    return offs, seg[:kept], Y[:kept], X[:kept], T[:kept], ok[:kept]
+    return offs, seg[:kept], Y[:kept], X[:kept], T[:kept], ok[:kept], ok2[:kept if both else 0]
 
 
 @njit(cache=True)
@@ -336,7 +360,8 @@ def _zones_nb(d1, rho1, d2, rho2, e2, t2, dmin, tol, arclen, seg_len, loop_id, p
 
 def free_rotation(drv: Outline, dvn: Outline, P1: np.ndarray, C1: np.ndarray, P2: np.ndarray,
                    rho1: np.ndarray, lb1: np.ndarray, rho2: np.ndarray, lb2: np.ndarray,
-                   M2: np.ndarray, body_sign: float, w0: float, w_max: float, tol: float, merge: float) -> _FreeRotation:
+                   M2: np.ndarray, body_sign: float, w0: float, w_max: float, tol: float, merge: float,
+                   first: tuple | None = None) -> _FreeRotation:
     """Free rotation of the driven body (body sense body_sign) until first contact with the driver.
 
     P1: driven vertices in the driver frame, C1: driven centre in the driver frame;
@@ -345,11 +370,16 @@ def free_rotation(drv: Outline, dvn: Outline, P1: np.ndarray, C1: np.ndarray, P2
     distances from the other body.
     Side 1: driven vertices hit driver edges, rotating by +body_sign about C1.
     Side 2: driver vertices hit driven edges, rotating by −body_sign about 0.
+    ``first``: the two sides' hits within the window w0, when already found (:func:`free_rotations`).
     """
     w = w0
     while True:
-        d1, e1, t1 = _rot_hits(P1, C1, drv, body_sign, w, rho1, lb1)
-        d2, e2, t2 = _rot_hits(P2, np.zeros(2), dvn, -body_sign, w, rho2, lb2)
+        if first is not None:
+            (d1, e1, t1), (d2, e2, t2) = first
+            first = None
+        else:
+            d1, e1, t1 = _rot_hits(P1, C1, drv, body_sign, w, rho1, lb1)
+            d2, e2, t2 = _rot_hits(P2, np.zeros(2), dvn, -body_sign, w, rho2, lb2)
         dmin = min(d1.min(), d2.min())
         if not np.isfinite(dmin):
             if w >= w_max:
@@ -378,6 +408,20 @@ def free_rotation(drv: Outline, dvn: Outline, P1: np.ndarray, C1: np.ndarray, P2
     c, s = math.cos(ang), math.sin(ang)
     pw = apply_pose(M2, np.array([[c * pt_driven_frame[0] - s * pt_driven_frame[1], s * pt_driven_frame[0] + c * pt_driven_frame[1]]]))[0]
     return _FreeRotation(float(dmin), n_pairs, pw)
+
+
+def free_rotations(drv: Outline, dvn: Outline, P1: np.ndarray, C1: np.ndarray, P2: np.ndarray,
+                   rho1: np.ndarray, lb1: np.ndarray, rho2: np.ndarray, lb2: np.ndarray, M2: np.ndarray,
+                   body_sign: float, w_this: float, w_other: float, w_max: float, tol: float,
+                   merge: float) -> tuple[_FreeRotation, _FreeRotation]:
+    """:func:`free_rotation` of the driven body both ways at one position: turning by ``body_sign`` (first window
+    ``w_this``) and by ``-body_sign`` (``w_other``), the same results, each side's pairs of the first windows sought
+    once for both (:func:`_rot_hits_both`: where a window must grow, that sense searches on alone)."""
+    h1, h1o = _rot_hits_both(P1, C1, drv, body_sign, w_this, w_other, rho1, lb1)
+    h2, h2o = _rot_hits_both(P2, np.zeros(2), dvn, -body_sign, w_this, w_other, rho2, lb2)
+    geo = (P1, C1, P2, rho1, lb1, rho2, lb2, M2)
+    return (free_rotation(drv, dvn, *geo, body_sign, w_this, w_max, tol, merge, first=(h1, h2)),
+            free_rotation(drv, dvn, *geo, -body_sign, w_other, w_max, tol, merge, first=(h1o, h2o)))
 
 
 # the disk cache of these kernels keyed on every kernel source (one may be compiled into another's code)

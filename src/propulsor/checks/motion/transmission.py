@@ -17,7 +17,7 @@ from ...planar import norms
 from .outlines import outline
 from .poses import Pose, apply_pose, compose_poses, inverse_pose
 from .distance import check_record
-from .backlash import free_rotation, rot_bounds
+from .backlash import free_rotations, rot_bounds
 from .crossing import certainly_apart
 
 __all__ = ['TransmissionResult', 'transmission_sweep']
@@ -205,9 +205,8 @@ def transmission_sweep(driver_profile, driver_center, driven_profile, driven_cen
         C1 = rel21[:, 2]
         rho1, lb1 = rot_bounds(P1, C1, drv)
         rho2, lb2 = rot_bounds(P2, (0.0, 0.0), dvn)
-        geo = (P1, C1, P2, rho1, lb1, rho2, lb2, M2)
-        f = free_rotation(drv, dvn, *geo, s2, w_fwd, max_angle, contact_tol, contact_merge)
-        b = free_rotation(drv, dvn, *geo, -s2, w_back, max_angle, contact_tol, contact_merge)
+        f, b = free_rotations(drv, dvn, P1, C1, P2, rho1, lb1, rho2, lb2, M2, s2, w_fwd, w_back, max_angle, contact_tol,
+                              contact_merge)
         fwd[k], pc[k], ptc[k] = f.delta, f.n_pairs, f.point
         back[k], pd[k], ptd[k] = b.delta, b.n_pairs, b.point
         # start the next step's search just above this step's answer

@@ -123,7 +123,7 @@ def _driving_corner_span(dd, pos, chord_tol, r_a2, O2) -> tuple[float, float]:
 
 def prove_position(dd, pos, steps_per_pitch: int | None = None, chord_tol: float = policy.MOTION_CHORD_TOL_MM):
     from ...checks.motion import outline
-    from ...checks.motion.backlash import free_rotation, rot_bounds
+    from ...checks.motion.backlash import free_rotations, rot_bounds
     from ...planar import norms
     from ...checks.motion.poses import Pose, apply_pose, compose_poses, inverse_pose
 
@@ -201,9 +201,7 @@ def prove_position(dd, pos, steps_per_pitch: int | None = None, chord_tol: float
         P2 = apply_pose(rel12, drv.points)
         rho1, lb1 = rot_bounds(P1, C1, drv)
         rho2, lb2 = rot_bounds(P2, (0.0, 0.0), gear)
-        geo_ = (P1, C1, P2, rho1, lb1, rho2, lb2, M2)
-        b = free_rotation(drv, gear, *geo_, -s2, w0, w_max, tol, merge)
-        f = free_rotation(drv, gear, *geo_, s2, w0, w_max, tol, merge)
+        b, f = free_rotations(drv, gear, P1, C1, P2, rho1, lb1, rho2, lb2, M2, -s2, w0, w0, w_max, tol, merge)
         return th - b.delta, th + f.delta, b.n_pairs, b.point
 
     drive = {j: np.full(n, np.nan) for j in cand}
