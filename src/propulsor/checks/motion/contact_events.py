@@ -290,23 +290,29 @@ class ContactLaw:
         st = self._state()
         out = []
         change = np.nonzero(np.any(st[1:] != st[:-1], axis=1))[0]
-        for i in change:
-            before = self._side_speed(i, -1, st[i])
-            after = self._side_speed(i + 1, 1, st[i + 1])
+        # the run of equal states each sample lies in (a new run at every change): a walk from a sample stays in its
+        # state exactly as long as it stays in its run
+        run = np.zeros(len(st), np.int64)
+        run[change + 1] = 1
+        run = np.cumsum(run).tolist()
+        for i in change.tolist():
+            before = self._side_speed(i, -1, run)
+            after = self._side_speed(i + 1, 1, run)
             if before is None or after is None:
                 continue
             out.append((float(0.5 * (self.phi[i] + self.phi[i + 1])), before, after,
                         tuple(int(x) for x in st[i]), tuple(int(x) for x in st[i + 1])))
         return out
 
-    def _side_speed(self, j: int, way: int, state) -> float | None:
-        """Chord speed from sample j over at least step_window within ``state`` (way -1: backwards)."""
-        st = self._state()
+    def _side_speed(self, j: int, way: int, run: list) -> float | None:
+        """Chord speed from sample j over at least step_window within its state (way -1: backwards); ``run``: the run
+        of equal states of every sample (:meth:`_find_events`)."""
         k = j
         n = len(self.phi)
-        while 0 <= k + way < n and np.all(st[k + way] == state) and abs(self.phi[k + way] - self.phi[j]) < self.step_window:
+        r = run[j]
+        while 0 <= k + way < n and run[k + way] == r and abs(self.phi[k + way] - self.phi[j]) < self.step_window:
             k += way
-        if 0 <= k + way < n and np.all(st[k + way] == state):
+        if 0 <= k + way < n and run[k + way] == r:
             k += way
         if k == j:
             return None
