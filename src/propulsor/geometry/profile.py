@@ -277,8 +277,8 @@ class Profile:
     @classmethod
     def _of_oriented(cls, outer: Loop, holes: list, name: str) -> "Profile":
         """A profile of loops already oriented (the outer CCW, the holes CW): those of an oriented profile moved
-        rigidly or scaled by k > 0, which keep the sign of every loop's area (``__post_init__`` would sample each loop
-        at CHORD_TOL_MM to find it again: about a fifth of a second a pair of generated wheels)."""
+        rigidly or scaled by k > 0, which keep the sign of every loop's area (``__post_init__`` would find it again
+        from each loop's exact area)."""
         p = cls.__new__(cls)
         p.outer, p.holes, p.name = outer, list(holes), name
         return p
