@@ -269,6 +269,22 @@ loop 25 %, the rotation hits' wrapper 2.6 % (4.6 %), nothing else above 2.2 %.  
 step.  Last, the contact events' side speeds walk a run id per sample instead of comparing state rows with numpy at
 every step (f83ef2e): the two contact laws of a seed-002 variant (9 803 samples each), old and new methods in one
 process, five rounds: 0.059-0.063 -> 0.017-0.020 CPU s, the events equal.
+
+2026-12-04 (from 0774daa).  py-spy of six seed-002 variants (200 Hz): the contact's compiled loop 25.5 % (its sampled
+run 80 %, the bisections 20 %), the teeth 24 %, the whole-cycle proof 15.6 % (its transmission sweep 8.5 %, the
+crops' booleans 3.1 %, their outlines 2 %), the fits 12.6 %, nothing else above 3 %.  In the contact loop (perf on a
+fresh compile): the rotation hits 43 %, the candidates' sorting 35 % (a sorting every 12 positions a side, each ~76
+runs, ~184 candidates), their reuse test 10 %.  Tried and not kept: sorting again only the runs whose bound fails
+(each run with its own pose): full sortings 8 % -> 1.9 % of a side's calls, but partial ones at 42 % of them and
+the candidates a call 60 -> 84 (their bounds older), the two contact laws 0.69-0.93 -> 0.85-0.92 CPU s with the same
+hashes: no gain.  The slack and widening at 0.05-0.2 mm and 0.02-0.05 rad: no gain either (0.1 mm, 0.02 rad stay).
+Kept: a profile's loops oriented by their exact signed area (Green's theorem, each segment's ``sweep``: a B-spline's
+by Gauss-Legendre on each knot span, compiled), not by the area of their polylines sampled at 0.005 mm only for it:
+the two generated wheels of a variant (120 + 472 segments) 6.6 + 21.8 -> 1.2 + 7.0 ms, the same senses, make's 636
+files identical.  The variants, old and new trees in turn, three rounds of four: 2.13-2.89 / 1.77-2.14 / 2.00-2.43
+against 1.85-2.03 / 2.20-2.54 / 1.87-2.11 CPU s (the machine's swing larger than the change, ~0.02 s).  make from
+clean, old and new in turn: 88.3 / 73.3 s wall (151.7 / 133.7 user s) against 77.6 / 74.6 / 83.2 s (139.5 / 135.6 /
+152.8): the same within the swing.
 """
 
 from __future__ import annotations
