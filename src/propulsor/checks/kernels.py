@@ -65,14 +65,14 @@ def warm() -> None:
     """Call every cached kernel once on small inputs, so that each is compiled (or loaded) now, in this process:
     the mesh checks' triangle tests, the motion proof's distance, crossing and rotation searches, and the as-built
     contact search (its first hit and all of a window's) on a pair of toothed rings; the GLB's shading normals; the
-    spline fit's foot-point distances; the poses' point product and the sweeps' steps apart; the Fourier law's
+    spline fit's foot-point distances and a spline's exact sweep; the poses' point product and the sweeps' steps apart; the Fourier law's
     one-point inversion; the cam's dense output, return quintics and shoe self-crossing test; the pictures'
     rasteriser."""
     from scipy.integrate import solve_ivp
 
     from ..export.normals import smooth_normals
     from ..export.render import _paint
-    from ..geometry.spline_foot import foot_distances
+    from ..geometry.spline_foot import foot_distances, sweep_area
     from ..laws.cam_kernels import DenseSolution, polyline_crosses_itself, quintic_derivs
     from ..gears.smoothed_law import SmoothedWalkingLaw
     from ..laws.ratio_laws import FourierLaw
@@ -119,6 +119,8 @@ def warm() -> None:
     # the spline fit's foot-point distances (geometry/spline_foot.py): a cubic through four points
     foot_distances(np.array([0.0, 0, 0, 0, 1, 1, 1, 1]), np.array([[0.0, 0], [1, 1], [2, 1], [3, 0]]), 3,
                    np.array([[1.5, 1.0]]), np.array([0.5]), 0.0, 1.0)
+    # and a spline's exact sweep (the loops' orientation, geometry/profile.py)
+    sweep_area(np.array([0.0, 0, 0, 0, 1, 1, 1, 1]), np.array([[0.0, 0], [1, 1], [2, 1], [3, 0]]), 3)
     # the Fourier law's one-point inversion and slopes, and its array functions (laws/fourier_kernels.py)
     law = FourierLaw(1, (), (0.05,))
     law.U_derivs1(0.3)
