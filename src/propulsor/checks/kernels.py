@@ -65,9 +65,9 @@ def warm() -> None:
     """Call every cached kernel once on small inputs, so that each is compiled (or loaded) now, in this process:
     the mesh checks' triangle tests, the motion proof's distance, crossing and rotation searches, and the as-built
     contact search (its first hit and all of a window's) on a pair of toothed rings; the GLB's shading normals; the
-    spline fit's foot-point distances and a spline's exact sweep; the poses' point product and the sweeps' steps apart; the Fourier law's
-    one-point inversion; the cam's dense output, return quintics and shoe self-crossing test; the pictures'
-    rasteriser."""
+    spline fit's foot-point distances and a spline's exact sweep; the poses' point product and the sweeps' steps
+    apart; the Fourier law's one-point inversion; the cam's dense output, return quintics and shoe self-crossing test;
+    the pictures' rasteriser."""
     from scipy.integrate import solve_ivp
 
     from ..export.normals import smooth_normals

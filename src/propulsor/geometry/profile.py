@@ -239,8 +239,8 @@ class Loop:
 
     def oriented(self, ccw: bool = True) -> "Loop":
         """The loop running counter-clockwise (``ccw``) or clockwise: itself or reversed, by the sign of its exact
-        area (a loop's sense needs no sampling: a generated wheel's 500 splines sampled at CHORD_TOL_MM only for it
-        cost about 60 ms a pair)."""
+        area (a loop's sense needs no sampling: a seed-002 pair's 592 splines sampled at CHORD_TOL_MM only for it took
+        27 ms, their exact sweeps 8 ms)."""
         return self if (self.exact_signed_area() > 0) == ccw else self.reversed()
 
 
