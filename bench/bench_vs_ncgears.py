@@ -156,6 +156,9 @@ ours 14.09 s wall (19.79 CPU s), peak 645 MiB: wall ratio 0.241, CPU ratio 0.346
 467 (its VTK not deferred); the project defers VTK (363).  ``make`` from clean at b368de5, the kernels cached: 95.9 s
 wall, 174.3 user + 8.1 sys s, its 636 files identical to ``all_19_make_at_9ac9bbf.sha256``; the first make on this
 machine compiled every kernel for its CPU (numba keys its cache by the CPU) in its 45.7 s of loading: 126.9 s wall.
+2026-12-04, later (2 cores, idle; a8d0ef8, one run): ncgears 44.60 s wall (46.85 CPU s), peak 289 MiB; ours 13.67 s
+wall (14.28 CPU s), peak 654 MiB: wall ratio 0.306, CPU ratio 0.305 (ncgears 24 % faster than in the run above, ours
+about as fast: the machine's minute); ``ncg_elliptical.toml`` 6.98 s wall (10.05 CPU s).
 """
 
 from __future__ import annotations
