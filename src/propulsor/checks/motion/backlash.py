@@ -319,25 +319,19 @@ def _zones_nb(d1, rho1, d2, rho2, e2, t2, dmin, tol, arclen, seg_len, loop_id, p
     (side 1 its vertices, side 2 their hits on its edges), and counted: each loop's positions sorted, their gaps
     with the wrap-around, a group for each gap beyond ``merge``, at least one a loop (``tests/test_backlash_kernel.py``
     holds it to the numpy formulation it replaced)."""
+    pos = np.empty(len(d1) + len(d2))
+    loop = np.empty(len(d1) + len(d2), np.int64)
     m = 0
     for i in range(len(d1)):
         if math.isfinite(d1[i]) and (d1[i] - dmin) * rho1[i] <= tol:
+            pos[m], loop[m] = arclen[i], loop_id[i]
             m += 1
-    for i in range(len(d2)):
-        if math.isfinite(d2[i]) and (d2[i] - dmin) * rho2[i] <= tol:
-            m += 1
-    pos = np.empty(m)
-    loop = np.empty(m, np.int64)
-    j = 0
-    for i in range(len(d1)):
-        if math.isfinite(d1[i]) and (d1[i] - dmin) * rho1[i] <= tol:
-            pos[j], loop[j] = arclen[i], loop_id[i]
-            j += 1
     for i in range(len(d2)):
         if math.isfinite(d2[i]) and (d2[i] - dmin) * rho2[i] <= tol:
             e = e2[i]
-            pos[j], loop[j] = arclen[e] + t2[i] * seg_len[e], loop_id[e]
-            j += 1
+            pos[m], loop[m] = arclen[e] + t2[i] * seg_len[e], loop_id[e]
+            m += 1
+    pos, loop = pos[:m], loop[:m]
     order = np.argsort(loop, kind="mergesort")
     n = 0
     a = 0
