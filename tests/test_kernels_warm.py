@@ -91,6 +91,6 @@ def test_a_kernel_compiled_into_another_is_compiled_again_when_its_own_file_chan
 def test_the_kernel_sources_are_the_listed_modules_files():
     from propulsor import nbcache
 
-    want = sorted(str(SRC / (m.replace(".", "/") + ".py")) for m in kernels.MODULES)
+    want = sorted([str(SRC / (m.replace(".", "/") + ".py")) for m in kernels.MODULES] + list(nbcache.INTRINSICS))
     assert sorted(nbcache.SOURCES) == want
     assert all(Path(f).is_file() for f in nbcache.SOURCES)

@@ -14,6 +14,8 @@ import os
 from pathlib import Path
 
 _HERE = Path(__file__).resolve().parent
+#: sources compiled into the kernels that call them, with no cached kernel of their own (fused.py's fma)
+INTRINSICS = (str(_HERE / "fused.py"),)
 #: every source file with cached kernels (``checks.kernels.MODULES``; a test keeps the two lists equal)
 SOURCES = tuple(str(_HERE / f) for f in ("checks/tri_tri.py", "checks/motion/nearest.py", "checks/motion/crossing.py",
                                          "checks/motion/backlash.py", "checks/motion/contact_kernels.py",
@@ -21,9 +23,10 @@ SOURCES = tuple(str(_HERE / f) for f in ("checks/tri_tri.py", "checks/motion/nea
                                          "checks/box_pairs.py", "export/normals.py", "export/render.py",
                                          "geometry/spline_foot.py", "laws/fourier_kernels.py",
                                          "laws/cam_kernels.py", "checks/motion/poses.py",
-                                         "checks/motion/sweep_steps.py", "laws/walking_kernels.py"))
+                                         "checks/motion/sweep_steps.py", "laws/walking_kernels.py",
+                                         "checks/motion/mesh_load.py", "gears/tooth_load_kernels.py")) + INTRINSICS
 
-__all__ = ["SOURCES", "bind", "stamp"]
+__all__ = ["SOURCES", "INTRINSICS", "bind", "stamp"]
 
 
 def stamp(files=SOURCES) -> tuple:

@@ -23,7 +23,8 @@ MODULES = ("propulsor.checks.tri_tri", "propulsor.checks.motion.nearest", "propu
            "propulsor.checks.box_pairs", "propulsor.export.normals", "propulsor.export.render",
            "propulsor.geometry.spline_foot", "propulsor.laws.fourier_kernels",
            "propulsor.laws.cam_kernels", "propulsor.checks.motion.poses",
-           "propulsor.checks.motion.sweep_steps", "propulsor.laws.walking_kernels")
+           "propulsor.checks.motion.sweep_steps", "propulsor.laws.walking_kernels",
+           "propulsor.checks.motion.mesh_load", "propulsor.gears.tooth_load_kernels")
 
 __all__ = ["MODULES", "cold", "warm", "warm_if_cold"]
 
@@ -83,6 +84,7 @@ def warm() -> None:
     from .motion.contact_events import DRIVE, PairOutlines, resolve_contact
     from .motion.contact_kernels import _nearest_teeth_nb
     from .motion.crossing import certainly_apart
+    from .motion.mesh_load import phase_contacts
     from .motion.nearest import nearest_edge
     from .motion.poses import Pose, apply_pose, rotation_matrices
     from .motion.sweep2d import sweep_pair
@@ -113,6 +115,7 @@ def warm() -> None:
     pair._all_hits(0.0, 0.0, 1.0, step)  # every hit of a window (the reference of the per-tooth load's search)
     pair.hits(0.0, 0.0, 1.0, step)  # the per-tooth load's search
     _nearest_teeth_nb(pair.driver_teeth, np.array([0.1, 2.0]))
+    phase_contacts(pair, 0.0, 0.0, 0.0, step)  # the per-tooth load's hits and pairs (motion/mesh_load.py)
     # the shading normals of the assemblies' GLB (export/normals.py's crease sums)
     smooth_normals(np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]),
                    np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]))

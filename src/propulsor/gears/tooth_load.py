@@ -228,31 +228,65 @@ def _lstsq_failed(err, flag):
 
 
 def curvatures_at(o: DenseOutline, indices, half_len: float) -> None:
-    """:func:`curvature_at` of each vertex of ``indices`` not yet kept, made together: every vertex's cubic fits set up
-    (:func:`_problems`), their least-squares problems solved in stacks of one shape (numpy's own LAPACK driver,
-    called once per problem as for one alone: the same coefficients to the last bit, a fifth of the time), then each
-    vertex's curvature from its own fits (:func:`_curvature_of`) as one at a time."""
+    """:func:`curvature_at` of each vertex of ``indices`` not yet kept, made together: every vertex's fit windows and
+    their points in the frames of their tangents set up in one compiled pass (:mod:`.tooth_load_kernels`: the
+    windows and coordinates of :func:`_problems`, the same floats), the cubic's columns by numpy, the least-squares
+    problems solved in stacks of one shape (numpy's own LAPACK driver, called once per problem as for one alone: the
+    same coefficients to the last bit, a fifth of the time), then each vertex's curvature from its own fits
+    (:func:`_curvature_of`) as one at a time."""
     from numpy.linalg import _umath_linalg
+
+    from .tooth_load_kernels import fit_windows, frame_coordinates
 
     memo = o.__dict__.setdefault("_curvatures", {})
     h = float(half_len)
     todo = sorted({int(i) for i in indices} - {k[0] for k in memo if k[1] == h})
-    planned = [_problems(o, i, h) for i in todo]
-    by_shape: dict = {}
-    for v, (_, probs) in enumerate(planned):
-        for f, pr in enumerate(probs):
-            if pr is not None:
-                by_shape.setdefault(pr[0].shape, []).append((v, f))
+    if not todo:
+        return
+    todo_a = np.array(todo, np.int64)
+    is_corner, Ks, first, last = fit_windows(np.ascontiguousarray(o.seg_len, np.float64),
+                                            np.ascontiguousarray(o.corner, np.bool_), todo_a, h)
+    # the fits of each vertex and their frames: the tangent at the vertex (three fits); at a corner each side's edge
+    # direction (two fits), numpy's norm as in _problems
+    rows, frames = [], []
+    n = len(o)
+    for r, i in enumerate(todo):
+        if is_corner[r]:
+            d_ahead = o.points[(i + 1) % n] - o.points[i]
+            d_back = o.points[i] - o.points[(i - 1) % n]
+            rows += [(r, 0), (r, 1)]
+            frames += [d_ahead / np.linalg.norm(d_ahead), d_back / np.linalg.norm(d_back)]
+        else:
+            t = o.tangent[i]
+            rows += [(r, 0), (r, 1), (r, 2)]
+            frames += [t, t, t]
+    rows_a = np.array(rows, np.int64).reshape(-1, 2)
+    X, Y, offsets = frame_coordinates(np.ascontiguousarray(o.points, np.float64), todo_a, Ks, first, last,
+                                      np.ascontiguousarray(np.array(frames, np.float64).reshape(-1, 2)), rows_a)
+    X2, X3 = X * X, X ** 3
+    sizes = np.diff(offsets)
+    by_size: dict = {}
+    for p, m in enumerate(sizes.tolist()):
+        if m >= 5:  # fewer points: no problem (_problem's None)
+            by_size.setdefault(m, []).append(p)
+    problems: dict = {}
     coef: dict = {}
-    for (m, n), keys in by_shape.items():
-        A = np.stack([planned[v][1][f][0] for v, f in keys])
-        y = np.stack([planned[v][1][f][1] for v, f in keys])[..., None]
+    for m, ps in by_size.items():
+        R = offsets[np.array(ps)][:, None] + np.arange(m)[None, :]
+        A = np.empty((len(ps), m, 4))
+        A[..., 0] = 1.0
+        A[..., 1], A[..., 2], A[..., 3] = X[R], X2[R], X3[R]
+        y = Y[R]
         with np.errstate(call=_lstsq_failed, invalid="call", over="ignore", divide="ignore", under="ignore"):
-            x = _umath_linalg.lstsq(A, y, np.finfo(np.float64).eps * max(n, m), signature="ddd->ddid")[0]
-        for key, c in zip(keys, x[..., 0]):
-            coef[key] = c.copy()
-    for v, (i, (corner, probs)) in enumerate(zip(todo, planned)):
-        memo[(i, h)] = _curvature_of(corner, [_fitted(pr, coef.get((v, f))) for f, pr in enumerate(probs)])
+            x = _umath_linalg.lstsq(A, y[..., None], np.finfo(np.float64).eps * max(4, m), signature="ddd->ddid")[0]
+        for k, p in enumerate(ps):
+            problems[p] = (A[k].copy(), y[k].copy())
+            coef[p] = x[k, :, 0].copy()
+    fits: list = [[] for _ in todo]
+    for p, (r, _) in enumerate(rows):
+        fits[r].append(_fitted(problems.get(p), coef.get(p)))
+    for r, i in enumerate(todo):
+        memo[(i, h)] = _curvature_of(bool(is_corner[r]), fits[r])
 
 
 def _curvature_at(o: DenseOutline, i: int, half_len: float) -> float:

@@ -19,9 +19,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from numba import njit
+
 from ... import policy
+from ...nbcache import bind
 from .contact_events import DRIVE, PairOutlines, _rot
-from .contact_kernels import _nearest_teeth_nb
+from .contact_kernels import _nearest_teeth_nb, _pair_hits_pruned
 
 __all__ = ["PairContact", "phase_contacts"]
 
@@ -69,34 +72,122 @@ def _nearest(centres: np.ndarray, ang: np.ndarray) -> np.ndarray:
     return _nearest_teeth_nb(np.ascontiguousarray(centres, np.float64), np.ascontiguousarray(ang, np.float64))
 
 
+@njit(cache=True)
+def _phase_hits(phi, theta, te, sign, margin, window, dvn_pts, dvn_a, dvn_b, drv_pts, drv_a, drv_b, args):
+    """The hits of :func:`phase_contacts` in one compiled call: the driven wheel placed ``margin`` (else 4, 16 margins)
+    on the free side of ``te`` until the first hit lies beyond a fifth of it, every finite hit of that window
+    (:func:`_all_hits`: the driven vertices' first, then the driver's, each in the search's order) and its contact
+    point in both body frames, the same elementwise operations as numpy's there.  (found, start, margin, d, side,
+    vertex, edge, t, p_driven, p_driver); ``args``: the pruned search's arguments after its window
+    (:meth:`.PairOutlines.hits`)."""
+    n = 0
+    start, mg = 0.0, margin
+    d = np.empty(0)
+    side = np.empty(0, np.int64)
+    v = np.empty(0, np.int64)
+    e = np.empty(0, np.int64)
+    t = np.empty(0)
+    found = False
+    for r in range(3):
+        mg = margin if r == 0 else (4.0 * margin if r == 1 else 16.0 * margin)
+        start = phi + te + sign * mg
+        i1, d1, e1, t1, i2, d2, e2, t2 = _pair_hits_pruned(start, theta, sign, mg + window, *args)
+        m = 0
+        for k in range(len(d1)):
+            if np.isfinite(d1[k]):
+                m += 1
+        for k in range(len(d2)):
+            if np.isfinite(d2[k]):
+                m += 1
+        d = np.empty(m)
+        side = np.empty(m, np.int64)
+        v = np.empty(m, np.int64)
+        e = np.empty(m, np.int64)
+        t = np.empty(m)
+        n = 0
+        for k in range(len(d1)):
+            if np.isfinite(d1[k]):
+                d[n], side[n], v[n], e[n], t[n] = d1[k], 1, i1[k], e1[k], t1[k]
+                n += 1
+        for k in range(len(d2)):
+            if np.isfinite(d2[k]):
+                d[n], side[n], v[n], e[n], t[n] = d2[k], 2, i2[k], e2[k], t2[k]
+                n += 1
+        if n > 0 and np.min(d) > 0.2 * mg:
+            found = True
+            break
+    p_dvn = np.empty((n, 2))
+    p_drv = np.empty((n, 2))
+    for k in range(n):
+        if side[k] == 1:  # a driven vertex on a driver edge
+            p_dvn[k, 0], p_dvn[k, 1] = dvn_pts[v[k], 0], dvn_pts[v[k], 1]
+            j = e[k]
+            p_drv[k, 0] = drv_a[j, 0] + t[k] * (drv_b[j, 0] - drv_a[j, 0])
+            p_drv[k, 1] = drv_a[j, 1] + t[k] * (drv_b[j, 1] - drv_a[j, 1])
+        else:  # a driver vertex on a driven edge
+            j = e[k]
+            p_dvn[k, 0] = dvn_a[j, 0] + t[k] * (dvn_b[j, 0] - dvn_a[j, 0])
+            p_dvn[k, 1] = dvn_a[j, 1] + t[k] * (dvn_b[j, 1] - dvn_a[j, 1])
+            p_drv[k, 0], p_drv[k, 1] = drv_pts[v[k], 0], drv_pts[v[k], 1]
+    return found, start, mg, d, side, v, e, t, p_dvn, p_drv
+
+
+@njit(cache=True)
+def _firsts_nb(d, t_drv, t_dvn):
+    """:func:`_first_of_each_pair` compiled: the hit of least d of each tooth pair (the first of equal ones: a
+    stable sort), the pairs in the order of those hits."""
+    order = np.argsort(d, kind="mergesort")
+    base = 0
+    for k in range(len(t_dvn)):
+        base = max(base, t_dvn[k])
+    base += 1
+    seen = set()
+    out = np.empty(len(d), np.int64)
+    n = 0
+    for q in range(len(order)):
+        j = order[q]
+        key = t_drv[j] * base + t_dvn[j]
+        if key not in seen:
+            seen.add(key)
+            out[n] = j
+            n += 1
+    return out[:n]
+
+
+def _hit_args(pair: PairOutlines) -> tuple:
+    """What :func:`_phase_hits` takes after the window: both outlines' points and edges, the pruned search's
+    arguments (kept on the pair)."""
+    h = pair.__dict__.get("_phase_args")
+    if h is None:
+        ka, drv, dvn = pair._kernel_args, pair.drv, pair.dvn
+        h = pair.__dict__["_phase_args"] = (
+            ka[1], np.ascontiguousarray(dvn.seg_a, np.float64), np.ascontiguousarray(dvn.seg_b, np.float64), ka[5],
+            np.ascontiguousarray(drv.seg_a, np.float64), np.ascontiguousarray(drv.seg_b, np.float64),
+            tuple(ka[:11]) + tuple(pair._prune_args) + tuple(ka[11:]))
+    return h
+
+
 def phase_contacts(pair: PairOutlines, phi: float, theta: float, te: float, window: float,
                    direction: int = DRIVE, margin: float = policy.CONTACT_TRACK_MARGIN_RAD):
     """(te as measured, [PairContact ...] sorted by gap) at law phase phi with the driver at theta; ``te``: the
     as-built contact's driven offset there (a start value, e.g. interpolated from the resolved contact law);
-    ``window``: the largest gap (rad) a pair may have to be listed.  (nan, []) where nothing touches."""
+    ``window``: the largest gap (rad) a pair may have to be listed.  (nan, []) where nothing touches.  The window's
+    hits and their points are gathered in one compiled call (:func:`_phase_hits`), the teeth named by polar angle
+    (numpy's ``arctan2``, then the compiled nearest centre) and each pair's first hit chosen compiled
+    (:func:`_firsts_nb`): the values of the numpy steps they replace (:func:`_all_hits`, :func:`_first_of_each_pair`),
+    bit for bit."""
     sign = 1.0 if direction == DRIVE else -1.0
-    for mg in (margin, 4.0 * margin, 16.0 * margin):
-        start = phi + te + sign * mg
-        d, side, v, e, t = _all_hits(pair, start, theta, sign, mg + window)
-        if len(d) and float(np.min(d)) > 0.2 * mg:
-            break
-    else:
-        if not len(d):
-            return math.nan, []
-    dmin = float(np.min(d))
     drv, dvn = pair.drv, pair.dvn
-    # contact points in both body frames
-    p_dvn = np.where((side == 1)[:, None], dvn.points[np.where(side == 1, v, 0)],
-                     dvn.seg_a[np.where(side == 2, e, 0)] + t[:, None] * (dvn.seg_b[np.where(side == 2, e, 0)]
-                                                                           - dvn.seg_a[np.where(side == 2, e, 0)]))
-    e_drv = np.where(side == 1, e, 0)
-    p_drv_edge = drv.seg_a[e_drv] + t[:, None] * (drv.seg_b[e_drv] - drv.seg_a[e_drv])
-    p_drv = np.where((side == 2)[:, None], drv.points[np.where(side == 2, v, 0)], p_drv_edge)
+    _, start, _, d, side, v, e, _, p_dvn, p_drv = _phase_hits(float(phi), float(theta), float(te), sign, float(margin),
+                                                              float(window), *_hit_args(pair))
+    if not len(d):
+        return math.nan, []
+    dmin = float(np.min(d))
     t_dvn = _nearest(pair.driven_teeth, np.arctan2(p_dvn[:, 1], p_dvn[:, 0]))
     t_drv = _nearest(pair.driver_teeth, np.arctan2(p_drv[:, 1], p_drv[:, 0]))
     res = []
     L = pair.L
-    for k in _first_of_each_pair(d, t_drv, t_dvn).tolist():
+    for k in _firsts_nb(d, t_drv, t_dvn).tolist():
         a, b = int(t_drv[k]), int(t_dvn[k])
         phi_c = start - sign * float(d[k])
         R_dvn = _rot(-phi_c)
@@ -120,3 +211,7 @@ def phase_contacts(pair: PairOutlines, phi: float, theta: float, te: float, wind
                                "driver" if side[k] == 1 else "driven", int(v[k])))
     res.sort(key=lambda c: c.gap)
     return (start - sign * dmin) - phi, res
+
+
+# the disk cache of these kernels keyed on every kernel source (one may be compiled into another's code)
+bind(globals())

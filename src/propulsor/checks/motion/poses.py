@@ -6,11 +6,10 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from llvmlite import ir
-from numba import njit, types
-from numba.extending import intrinsic
+from numba import njit
 
 from ...errors import require
+from ...fused import fma as _fma  # noqa: F401  (sweep_steps takes it from here)
 from ...nbcache import bind
 
 __all__ = ['Pose', 'poses_from_angles', 'rotation_matrices', 'pose_stack', 'apply_pose', 'inverse_pose', 'compose_poses']
@@ -70,18 +69,6 @@ def pose_stack(poses, n: int | None, name: str) -> tuple[np.ndarray, np.ndarray]
     if n is not None and len(M) == 1 and n > 1:
         M, ang = np.repeat(M, n, axis=0), np.repeat(ang, n)
     return M, ang
-
-
-@intrinsic
-def _fma(typingctx, a, b, c):
-    """a b + c rounded once (LLVM's ``llvm.fma.f64``: the processor's fused multiply-add, or its exact emulation)."""
-    sig = types.float64(types.float64, types.float64, types.float64)
-
-    def codegen(context, builder, signature, args):
-        d = ir.DoubleType()
-        return builder.call(builder.module.declare_intrinsic("llvm.fma", [d], ir.FunctionType(d, [d, d, d])), args)
-
-    return sig, codegen
 
 
 @njit(cache=True)
