@@ -111,6 +111,22 @@ def mesh_of(solid, forked: bool):
     return np.asarray(mesh.vertices, np.float64), np.asarray(mesh.faces, np.int64)
 
 
+#: the arguments of the assembly STEP jobs started and not yet collected, by token: a job forked at its start
+#: (:func:`..parallel.start`) finds its components here, the very objects of the build, not their pickled copies (a
+#: shape's pickle round trip turns a -0.0 of a placement into 0.0: other bytes)
+_ASSEMBLY_ARGS: dict[int, tuple] = {}
+_ASSEMBLY_TOKENS = iter(range(1, 1 << 62))
+
+
+def assembly_step_job(token: int) -> str:
+    """Write the assembly STEP stashed under ``token`` (:data:`_ASSEMBLY_ARGS`; in a worker forked after it was
+    stashed, or inline); returns its path."""
+    from ..export.step import write_assembly_step
+
+    path, components, name = _ASSEMBLY_ARGS[token]
+    return str(write_assembly_step(path, components, name))
+
+
 def assembly_model(folder: str, name: str, meshes: dict, components, from_below: bool = False,
                    motions=()) -> None:
     """``<name>.glb`` and ``views/<name>.png`` of an assembly from its solids' meshes;
@@ -186,6 +202,7 @@ class OutputWriter:
         self._solid_jobs: list = []
         self._meshes: dict[str, tuple] = {}  # solid key -> (vertices, faces) mm, for the assemblies
         self._mesh_jobs: list = []  # (key, job) meshes of assembly solids that have no files of their own
+        self._step_jobs: list = []  # (token, job) the assemblies' STEP files being written beside the build
         self._solid_keys: dict[int, str] = {}  # id(solid) -> its key (the solid's name)
         self._keep: list = []  # the solids keyed by id, kept alive
         self._assemblies: list = []  # (name, [(component, solid key, 4×4 mm)], picture from below)
@@ -283,6 +300,22 @@ class OutputWriter:
         for key, job in self._mesh_jobs:
             self._meshes[key] = job.result()
         self._mesh_jobs = []
+        self._wait_steps()
+
+    def _wait_steps(self, raising: bool = True) -> None:
+        """Wait for the assemblies' STEP jobs (their errors raised, in order, unless ``raising`` is False: a build
+        already failing) and forget their arguments."""
+        jobs, self._step_jobs = self._step_jobs, []
+        try:
+            for _, job in jobs:
+                try:
+                    job.result()
+                except Exception:  # noqa: BLE001 - raised unless the build is failing already
+                    if raising:
+                        raise
+        finally:
+            for token, _ in jobs:
+                _ASSEMBLY_ARGS.pop(token, None)
 
     def _count_solid_jobs(self) -> None:
         """Wait for the solids' jobs still running in workers, counting them as they end (progress only: their
@@ -322,6 +355,12 @@ class OutputWriter:
             else:
                 self._pool.shutdown(wait=True, cancel_futures=True)
             self._pool = None
+        if SIGNALLED:  # the build's Workers block kills their processes as it ends
+            for token, _ in self._step_jobs:
+                _ASSEMBLY_ARGS.pop(token, None)
+            self._step_jobs = []
+        else:
+            self._wait_steps(raising=False)
         self._solid_jobs = []
         self._mesh_jobs = []
         self._assemblies = []
@@ -336,12 +375,16 @@ class OutputWriter:
         :meth:`finish` from the meshes of the solids (a solid added with :meth:`add_solid` is not
         tessellated again; another is tessellated once in a worker)."""
         from ..export.glb import placement_matrix
-        from ..export.step import write_assembly_step
+        from ..parallel import start
 
         p = self.path(f"{name}.step")
         self.built_assemblies[name] = list(components)
         self.progress(f"{name}: assembly STEP ({len(components)} components)")
-        write_assembly_step(p, components, name)
+        # written beside the build (a worker forked now has the components as they are; inline where none may
+        # start): the same bytes either way, the occurrences numbered per file (export.step.fix_header)
+        token = next(_ASSEMBLY_TOKENS)
+        _ASSEMBLY_ARGS[token] = (p, list(components), name)
+        self._step_jobs.append((token, start(assembly_step_job, token)))
         self.extra_files.append(p.name)
         placed = []
         for comp in components:

@@ -27,7 +27,7 @@ from .as_built_outputs import as_built_values
 from .bores import sized_derived, sized_note, with_bores
 from .design import Design, PairDesign, bores, mounting, pair_design, sector_design_table
 from .params import NoncircularPairParams
-from .proofs import checks_generated, checks_sectors, proofs
+from .proofs import checks_generated, checks_sectors, other_method, proofs
 
 __all__ = ["build", "start_solids", "write_outputs", "solids", "assembly_and_dxf", "tables", "plots",
            "checks_and_derived", "notes"]
@@ -324,7 +324,7 @@ def law_search_outputs(w, d) -> None:
 
 
 def solids(dd: PairDesign, w, built: dict) -> None:
-    """Both gears to the writer first: their files and checks run beside the proof."""
+    """Both gears to the writer: their files and checks run in workers beside the rest of the build."""
     built["solids"] = start_solids(dd.p, w, dd.profiles)
 
 
@@ -484,7 +484,7 @@ def write_outputs(p: NoncircularPairParams, w, d: Design, profiles, pr, other=No
 
 #: the full-cycle proof (and the other method's, the as-built speed) and every check and derived value of the
 #: report: from the 2D outlines at the installed centre distance, no solid (Pipeline.prove)
-PROOF_STEPS = (proofs, checks_and_derived)
+PROOF_STEPS = (proofs, other_method, checks_and_derived)
 
-build = Pipeline(lambda p, w: design_of(p, pair_design, getattr(w, "source", None), progress=w.progress), (solids, proofs) + OUTPUT_STEPS,
+build = Pipeline(lambda p, w: design_of(p, pair_design, getattr(w, "source", None), progress=w.progress), (proofs, solids, other_method) + OUTPUT_STEPS,
                  proof_steps=PROOF_STEPS, design_apart=True, solid_steps=(solids, assembly_and_dxf))

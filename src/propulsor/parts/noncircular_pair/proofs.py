@@ -17,7 +17,7 @@ from ...laws.walking import LEG_PERIOD
 from .design import Design, PairDesign, design_generated, design_sectors
 from .params import NoncircularPairParams
 
-__all__ = ["prove", "compare", "checks_generated", "checks_common", "checks_sectors", "proofs"]
+__all__ = ["prove", "compare", "checks_generated", "checks_common", "checks_sectors", "proofs", "other_method"]
 
 
 def prove(d: Design, phases_per_tooth: int, legs: int = 4, progress=lambda s: None, mount: float | None = None):
@@ -127,7 +127,8 @@ def _counted(job, tick, k: int):
 
 
 def proofs(dd: PairDesign, w, built: dict) -> None:
-    """The built pair over the whole cycle; the other tooth method over one leg when asked."""
+    """The built pair over the whole cycle, and its as-built contact started in workers (before the solids are
+    made: the contact is the build's longest job, the solids' files run beside the rest)."""
     from ...parallel import start
     from ...progress import count_shared, counter
     from ...checks.motion.contact_events import DRIVE, REVERSE
@@ -158,4 +159,10 @@ def proofs(dd: PairDesign, w, built: dict) -> None:
             tick = counter(prog, "as made: tolerance cases", len(cases), "case")
             built["tolerance"] = (tol, [_counted(start(run_case, d, dd.mount, c), tick, k + 1)
                                         for k, c in enumerate(cases)])
-    built["other"] = compare(p, d, prog) if p.compare_methods else (None, None, "")
+
+
+def other_method(dd: PairDesign, w, built: dict) -> None:
+    """The other tooth method over one leg when the part file asks for it (after the solids are handed to the
+    writer: their files and checks run beside it)."""
+    p = dd.p
+    built["other"] = compare(p, dd.d, w.progress) if p.compare_methods else (None, None, "")
