@@ -247,19 +247,24 @@ def test_a_build_freezes_what_it_imported_and_a_dry_run_loads_no_cad_kernel(tmp_
 
 
 def test_an_assembly_step_written_beside_the_build_has_the_bytes_of_one_written_in_its_process(tmp_path, monkeypatch):
-    """OutputWriter.add_assembly writes the STEP in a worker forked as it is called (PROPULSOR_JOBS=2) or in the
-    build's process (1): the same bytes.  A box mirrored in the YZ plane is a shape whose pickle round trip changes
+    """OutputWriter.add_assembly writes the STEP (and add_dxf(beside=True) the DXF) in a worker forked as it is
+    called (PROPULSOR_JOBS=2) or in the build's process (1): the same bytes.  A box mirrored in the YZ plane is a shape whose pickle round trip changes
     the file (a -0.0 of a direction written 0.0, as in the balancer's, the final drive's and the cam mover's
-    assemblies): the job finds the build's own objects (writer._ASSEMBLY_ARGS), never their pickled copies, and the
+    assemblies): the job finds the build's own objects (writer._STASHED), never their pickled copies, and the
     pickled copies do give other bytes here."""
     import pickle
 
     import cadquery as cq
 
+    from propulsor.export.dxf import write_dxf
     from propulsor.export.step import write_assembly_step
+    from propulsor.geometry.profile import Profile, circle_loop, polygon_loop
     from propulsor.parts import writer as writer_mod
     from propulsor.parts.writer import OutputWriter
 
+    plate = Profile(polygon_loop([(0.0, 0.0), (40.0, 0.0), (40.0, 25.0), (-0.0, 25.0)]), [circle_loop(4.0, (20.0, 12.5))])
+    ref = [("point", {"p": (0.0, 0.0)})]
+    write_dxf(tmp_path / "direct.dxf", [plate], ref)
     components = [("box", cq.Workplane().box(4.0, 3.0, 2.0).mirror("YZ").val(), (0.0, 0.0, 0.0), 0.0),
                   ("pin", cq.Workplane().cylinder(5.0, 1.0).val(), (12.0, 0.0, 0.0), 0.4)]
     write_assembly_step(tmp_path / "pickled.step", pickle.loads(pickle.dumps(components)), "asm")
@@ -269,12 +274,14 @@ def test_an_assembly_step_written_beside_the_build_has_the_bytes_of_one_written_
         w = OutputWriter(tmp_path / jobs, "test", None)
         try:
             w.add_assembly("asm", components)
-            kinds = [type(job).__name__ for _, job in w._step_jobs]
+            w.add_dxf("plate", [plate], ref, beside=True)
+            kinds = [type(job).__name__ for _, job in w._file_jobs]
             w.wait_solids()
         finally:
             w.close()
-        assert kinds == (["Done"] if jobs == "1" else ["Future"])  # inline, then in a worker
+        assert kinds == (["Done"] * 2 if jobs == "1" else ["Future"] * 2)  # inline, then in workers
         got[jobs] = (tmp_path / jobs / "asm.step").read_bytes()
+        assert (tmp_path / jobs / "plate.dxf").read_bytes() == (tmp_path / "direct.dxf").read_bytes()
     assert got["1"] == got["2"]
     assert got["1"] != (tmp_path / "pickled.step").read_bytes()
-    assert not writer_mod._ASSEMBLY_ARGS  # the jobs' arguments forgotten once collected
+    assert not writer_mod._STASHED  # the jobs' arguments forgotten once collected

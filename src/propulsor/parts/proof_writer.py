@@ -43,7 +43,7 @@ class ProofWriter(OutputWriter):
     def add_known_mesh(self, solid, vertices, faces) -> None:
         pass  # a mesh for an assembly's picture: none is drawn here
 
-    def add_dxf(self, name: str, cut_profiles, ref_curves=()):
+    def add_dxf(self, name: str, cut_profiles, ref_curves=(), beside: bool = False):
         self.built_profiles[name] = list(cut_profiles)
 
     def add_table(self, name: str, columns, rows):

@@ -111,20 +111,18 @@ def mesh_of(solid, forked: bool):
     return np.asarray(mesh.vertices, np.float64), np.asarray(mesh.faces, np.int64)
 
 
-#: the arguments of the assembly STEP jobs started and not yet collected, by token: a job forked at its start
-#: (:func:`..parallel.start`) finds its components here, the very objects of the build, not their pickled copies (a
-#: shape's pickle round trip turns a -0.0 of a placement into 0.0: other bytes)
-_ASSEMBLY_ARGS: dict[int, tuple] = {}
-_ASSEMBLY_TOKENS = iter(range(1, 1 << 62))
+#: the files being written beside the build, by token: (function, arguments).  A job forked at its start
+#: (:func:`..parallel.start`) finds them here, the very objects of the build, not their pickled copies (a shape's
+#: pickle round trip turns a -0.0 of a direction into 0.0: other bytes in an assembly's STEP)
+_STASHED: dict[int, tuple] = {}
+_TOKENS = iter(range(1, 1 << 62))
 
 
-def assembly_step_job(token: int) -> str:
-    """Write the assembly STEP stashed under ``token`` (:data:`_ASSEMBLY_ARGS`; in a worker forked after it was
-    stashed, or inline); returns its path."""
-    from ..export.step import write_assembly_step
-
-    path, components, name = _ASSEMBLY_ARGS[token]
-    return str(write_assembly_step(path, components, name))
+def stashed_job(token: int):
+    """Run the file job stashed under ``token`` (:data:`_STASHED`; in a worker forked after it was stashed, or
+    inline) and return what it returns (a path)."""
+    fn, args = _STASHED[token]
+    return str(fn(*args))
 
 
 def assembly_model(folder: str, name: str, meshes: dict, components, from_below: bool = False,
@@ -202,7 +200,7 @@ class OutputWriter:
         self._solid_jobs: list = []
         self._meshes: dict[str, tuple] = {}  # solid key -> (vertices, faces) mm, for the assemblies
         self._mesh_jobs: list = []  # (key, job) meshes of assembly solids that have no files of their own
-        self._step_jobs: list = []  # (token, job) the assemblies' STEP files being written beside the build
+        self._file_jobs: list = []  # (token, job) files being written beside the build (assemblies' STEP, DXF)
         self._solid_keys: dict[int, str] = {}  # id(solid) -> its key (the solid's name)
         self._keep: list = []  # the solids keyed by id, kept alive
         self._assemblies: list = []  # (name, [(component, solid key, 4×4 mm)], picture from below)
@@ -300,12 +298,21 @@ class OutputWriter:
         for key, job in self._mesh_jobs:
             self._meshes[key] = job.result()
         self._mesh_jobs = []
-        self._wait_steps()
+        self._wait_files()
 
-    def _wait_steps(self, raising: bool = True) -> None:
-        """Wait for the assemblies' STEP jobs (their errors raised, in order, unless ``raising`` is False: a build
-        already failing) and forget their arguments."""
-        jobs, self._step_jobs = self._step_jobs, []
+    def _beside(self, fn, *args) -> None:
+        """``fn(*args)`` (a file written) in a worker forked now, which has the arguments as they are, or inline
+        where no worker may start (:func:`..parallel.start`): collected by :meth:`wait_solids`."""
+        from ..parallel import start
+
+        token = next(_TOKENS)
+        _STASHED[token] = (fn, args)
+        self._file_jobs.append((token, start(stashed_job, token)))
+
+    def _wait_files(self, raising: bool = True) -> None:
+        """Wait for the files written beside the build (their errors raised, in order, unless ``raising`` is
+        False: a build already failing) and forget their arguments."""
+        jobs, self._file_jobs = self._file_jobs, []
         try:
             for _, job in jobs:
                 try:
@@ -315,7 +322,7 @@ class OutputWriter:
                         raise
         finally:
             for token, _ in jobs:
-                _ASSEMBLY_ARGS.pop(token, None)
+                _STASHED.pop(token, None)
 
     def _count_solid_jobs(self) -> None:
         """Wait for the solids' jobs still running in workers, counting them as they end (progress only: their
@@ -356,11 +363,11 @@ class OutputWriter:
                 self._pool.shutdown(wait=True, cancel_futures=True)
             self._pool = None
         if SIGNALLED:  # the build's Workers block kills their processes as it ends
-            for token, _ in self._step_jobs:
-                _ASSEMBLY_ARGS.pop(token, None)
-            self._step_jobs = []
+            for token, _ in self._file_jobs:
+                _STASHED.pop(token, None)
+            self._file_jobs = []
         else:
-            self._wait_steps(raising=False)
+            self._wait_files(raising=False)
         self._solid_jobs = []
         self._mesh_jobs = []
         self._assemblies = []
@@ -375,16 +382,14 @@ class OutputWriter:
         :meth:`finish` from the meshes of the solids (a solid added with :meth:`add_solid` is not
         tessellated again; another is tessellated once in a worker)."""
         from ..export.glb import placement_matrix
-        from ..parallel import start
+        from ..export.step import write_assembly_step
 
         p = self.path(f"{name}.step")
         self.built_assemblies[name] = list(components)
         self.progress(f"{name}: assembly STEP ({len(components)} components)")
-        # written beside the build (a worker forked now has the components as they are; inline where none may
-        # start): the same bytes either way, the occurrences numbered per file (export.step.fix_header)
-        token = next(_ASSEMBLY_TOKENS)
-        _ASSEMBLY_ARGS[token] = (p, list(components), name)
-        self._step_jobs.append((token, start(assembly_step_job, token)))
+        # written beside the build: the same bytes in a worker or inline, the occurrences numbered per file
+        # (export.step.fix_header)
+        self._beside(write_assembly_step, p, list(components), name)
         self.extra_files.append(p.name)
         placed = []
         for comp in components:
@@ -461,12 +466,17 @@ class OutputWriter:
             job.result()
 
     # -- 2D, tables, plots --------------------------------------------------------
-    def add_dxf(self, name: str, cut_profiles, ref_curves=()) -> Path:
+    def add_dxf(self, name: str, cut_profiles, ref_curves=(), beside: bool = False) -> Path:
+        """``<name>.dxf`` of the cut profiles and reference curves; ``beside``: written in a worker beside the
+        build (the same bytes), for a part that does not read it back before :meth:`finish`."""
         from ..export.dxf import write_dxf
 
         p = self.path(f"{name}.dxf")
         self.built_profiles[name] = list(cut_profiles)
-        write_dxf(p, cut_profiles, list(ref_curves))
+        if beside:
+            self._beside(write_dxf, p, list(cut_profiles), list(ref_curves))
+        else:
+            write_dxf(p, cut_profiles, list(ref_curves))
         self.extra_files.append(p.name)
         return p
 

@@ -340,7 +340,7 @@ def assembly_and_dxf(dd: PairDesign, w, built: dict) -> None:
     for role, prof in (("driver", prof_drv), ("driven", prof_dvn)):
         ref = [("polyline", {"points": pitch_polyline(d, role), "closed": True}),
                ("point", {"p": (0.0, 0.0)})]
-        w.add_dxf(role, [prof], ref)
+        w.add_dxf(role, [prof], ref, beside=True)  # not read back by the build
 
 
 def tables(dd: PairDesign, w, built: dict) -> None:
