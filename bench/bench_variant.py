@@ -285,6 +285,25 @@ files identical.  The variants, old and new trees in turn, three rounds of four:
 against 1.85-2.03 / 2.20-2.54 / 1.87-2.11 CPU s (the machine's swing larger than the change, ~0.02 s).  make from
 clean, old and new in turn: 88.3 / 73.3 s wall (151.7 / 133.7 user s) against 77.6 / 74.6 / 83.2 s (139.5 / 135.6 /
 152.8): the same within the swing.
+
+2026-12-04, a later session (2 cores; from 6fe32a6; the machine fast at first: the seed-002 pair 1.72 / 1.75 / 1.72 /
+1.72 CPU s, its Fourier form 2.51-2.65).  py-spy of six seed-002 variants: the contact's compiled loop 34 % of the
+samples (0.6 s a variant), the design 29 % (the teeth 15 %, the fits 9 %), the whole-cycle proof 16 %; the Fourier
+form adds the load per tooth, 0.66 CPU s of its 2.5 (the phases' contacts 0.27, the flank curvatures 0.24 of which
+their windows' set-up 0.16, the root sections and stresses 0.12).  Kept (70bf949): the curvatures' windows and frame
+coordinates of every vertex in one compiled pass (``gears/tooth_load_kernels.py``; numpy's ``q @ t`` for two columns
+is OpenBLAS's gemv, ``fma(q0, t0, q1 t1) + 0.0``: the fused product, then added to the zeroed y, so a -0.0 comes
+out +0.0; 200 000 random rows and every window of three outlines at three half lengths to the bit), and each phase's
+hits gathered, their points and each tooth pair's first hit compiled (``mesh_load._phase_hits``, ``_firsts_nb``):
+``analyse`` 0.66 -> 0.47 CPU s, its rows identical (repr); the Fourier variant, 6fe32a6 in a worktree and the new
+tree in turn, two rounds of three: 2.58 / 2.48 / 2.65, 2.43 / 2.54 / 2.54 -> 2.36 / 2.39 / 2.34, 2.26 / 2.24 / 2.26
+CPU s (-0.2 s, -8 %).  Tried and not kept: the contact's margin (``CONTACT_TRACK_MARGIN_RAD``) 3e-4 -> 1e-4 / 3e-5 /
+1e-5 / 3e-6 rad: both directions 0.70 -> 0.58-0.60 / 0.58 / 0.58 / 0.54 CPU s (the window's reach shrinks, the
+sorting's cost stays), the same states at the same phases, te moved by up to 7e-16 rad (a rounding of prev + sign
+(m - d)): files would change in their last digits for 17 % of the contact; with the reuse's slack 0.03 / 0.01 mm
+and widening 0.005 / 0.002 rad beside it, slower (0.79 / 1.41 s: more sortings).  The first window's share
+(``CONTACT_TRACK_FIRST_WINDOW``) 1.02 / 1.15 / 1.5: 0.62-0.69 / 0.67-0.72 / 0.74-0.77 against 0.65-0.69 at 1.05
+(kept).  A nearest tooth by bisection of the sorted centres: 0.54 us a measurement of its ~30 (80 teeth), not done.
 """
 
 from __future__ import annotations
