@@ -669,13 +669,15 @@ def _proofs_world(monkeypatch, proof, tolerance_grade=0, compare_methods=False, 
 
 def test_proofs_run_the_whole_cycle_then_both_directions_as_built_and_the_tolerance_cases(monkeypatch):
     from propulsor.checks.motion.contact_events import DRIVE, REVERSE
-    from propulsor.parts.noncircular_pair.proofs import proofs
+    from propulsor.parts.noncircular_pair.proofs import other_method, proofs
 
     pr = _proof(phi_drive=np.array([0.0, 0.5, 1.0, 1.5, 2.0, 2.5]))
     dd, w, said, log, ticks, as_built, tolerance = _proofs_world(monkeypatch, pr, tolerance_grade=8,
                                                                   compare_methods=True)
     built = {}
     proofs(dd, w, built)
+    assert "other" not in built  # the other method's comparison is a step of its own (after the solids)
+    other_method(dd, w, built)
     f = as_built.contact_direction
     assert built["proof"] is pr
     assert built["as_built"] == (("job", f, ("D", 76.0, DRIVE)), ("job", f, ("D", 76.0, REVERSE)))
@@ -713,12 +715,13 @@ def test_with_a_load_case_the_drive_directions_job_goes_on_to_the_load_per_tooth
 
 
 def test_proofs_of_a_jammed_pair_build_nothing_as_built_and_without_a_grade_no_tolerance(monkeypatch):
-    from propulsor.parts.noncircular_pair.proofs import proofs
+    from propulsor.parts.noncircular_pair.proofs import other_method, proofs
 
     for pr in (_proof(), _proof(phi_drive=np.array([0.0, 0.5, 1.0, 1.5, 2.0, np.inf]))):
         dd, w, said, log, ticks, _, _ = _proofs_world(monkeypatch, pr, tolerance_grade=8)
         built = {}
         proofs(dd, w, built)
+        other_method(dd, w, built)
         assert built == {"proof": pr, "as_built": (), "other": (None, None, "")} and said == []
     # a jam counted though every phi_drive is finite
     pr = _proof(phi_drive=np.array([0.0, 0.5, 1.0, 1.5, 2.0, 2.5]))
@@ -730,6 +733,7 @@ def test_proofs_of_a_jammed_pair_build_nothing_as_built_and_without_a_grade_no_t
     dd, w, said, log, ticks, _, _ = _proofs_world(monkeypatch, pr, tolerance_grade=0)
     built = {}
     proofs(dd, w, built)
+    other_method(dd, w, built)
     assert len(built["as_built"]) == 2 and "tolerance" not in built and built["other"] == (None, None, "")
     assert said == ["as built: both directions' contact on the finished outlines, resolved by contact events"]
 

@@ -65,7 +65,8 @@ def _toothed(z: int, r: float, h: float, n: int = 24) -> np.ndarray:
 def warm() -> None:
     """Call every cached kernel once on small inputs, so that each is compiled (or loaded) now, in this process:
     the mesh checks' triangle tests, the motion proof's distance, crossing and rotation searches, and the as-built
-    contact search (its first hit and all of a window's) on a pair of toothed rings; the GLB's shading normals; the
+    contact search (its first hit and all of a window's, the per-tooth load's hits) on a pair of toothed rings, the
+    flank curvatures' windows; the GLB's shading normals; the
     spline fit's foot-point distances and a spline's exact sweep; the poses' point product and the sweeps' steps
     apart; the Fourier law's one-point inversion; the cam's dense output, return quintics and shoe self-crossing test;
     the pictures' rasteriser."""
@@ -84,7 +85,8 @@ def warm() -> None:
     from .motion.contact_events import DRIVE, PairOutlines, resolve_contact
     from .motion.contact_kernels import _nearest_teeth_nb
     from .motion.crossing import certainly_apart
-    from .motion.mesh_load import phase_contacts
+    from ..gears.tooth_load_kernels import fit_windows, frame_coordinates
+    from .motion.mesh_load import _firsts_nb, phase_contacts
     from .motion.nearest import nearest_edge
     from .motion.poses import Pose, apply_pose, rotation_matrices
     from .motion.sweep2d import sweep_pair
@@ -115,7 +117,15 @@ def warm() -> None:
     pair._all_hits(0.0, 0.0, 1.0, step)  # every hit of a window (the reference of the per-tooth load's search)
     pair.hits(0.0, 0.0, 1.0, step)  # the per-tooth load's search
     _nearest_teeth_nb(pair.driver_teeth, np.array([0.1, 2.0]))
-    phase_contacts(pair, 0.0, 0.0, 0.0, step)  # the per-tooth load's hits and pairs (motion/mesh_load.py)
+    phase_contacts(pair, 0.0, 0.0, 0.0, step)  # the per-tooth load's hits and pairs (motion/mesh_load.py) ...
+    _firsts_nb(np.array([0.2, 0.1]), np.array([0, 1]), np.array([1, 0]))  # ... each pair's first (none above: no hit)
+    # the flank curvatures' fit windows and frame coordinates (gears/tooth_load_kernels.py): a toothed ring's
+    ring = _toothed(12, 6.0, 1.6)
+    seg_len = np.linalg.norm(np.roll(ring, -1, axis=0) - ring, axis=1)
+    todo = np.array([3, 7], np.int64)
+    is_corner, Ks, first, last = fit_windows(seg_len, np.zeros(len(ring), np.bool_), todo, 0.5)
+    frame_coordinates(ring, todo, Ks, first, last, np.array([[1.0, 0.0], [0.0, 1.0]]),
+                      np.array([[0, 0], [1, 1]], np.int64))
     # the shading normals of the assemblies' GLB (export/normals.py's crease sums)
     smooth_normals(np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]),
                    np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]))
