@@ -159,6 +159,19 @@ machine compiled every kernel for its CPU (numba keys its cache by the CPU) in i
 2026-12-04, later (2 cores, idle; a8d0ef8, one run): ncgears 44.60 s wall (46.85 CPU s), peak 289 MiB; ours 13.67 s
 wall (14.28 CPU s), peak 654 MiB: wall ratio 0.306, CPU ratio 0.305 (ncgears 24 % faster than in the run above, ours
 about as fast: the machine's minute); ``ncg_elliptical.toml`` 6.98 s wall (10.05 CPU s).
+2026-12-04, a later session (2 cores, idle; f1f6769): ncgears 35.01 s wall (37.01 CPU s), peak 292 MiB; ours 7.37 s
+wall (11.42 CPU s), peak 643 MiB: wall ratio 0.211, CPU ratio 0.308; ``ncg_elliptical.toml`` 6.04 s wall (8.92 CPU
+s).  Where our build's wall went (its processes' CPU sampled every 30 ms, 6fe32a6): the main process 5.99 CPU s of
+the 7.9 s wall, the workers 5.8 together; one core idle 0-1.1 s (the design's imports), 1.8-2.6 s (the solids made
+in the main process) and from 5.8 s on (the main process alone: the as-built values after the drive direction's
+contact and load job, the plots, the GLB, the report).  Kept: the assemblies' STEP and the pair's DXF written in a
+worker forked as the build asks for them (``writer._beside``: the build's own objects stashed before the fork, not
+pickled: the -0.0 that sank the earlier try stays), and the pair's whole-cycle proof with its contact jobs started
+before its solids are made: the main process 5.99 -> 4.99 CPU s; the build, aa66e81 and the new tree in turn, six
+rounds on a slow machine, 8.09-9.00 -> 7.62-8.79 s wall (medians 8.55 -> 8.27); its files identical.  The peak's
+floor is unchanged (a process holding OCP and numba starts above 460 MiB; the main process's RSS at the end: 433 MiB
+file-backed, of which OCP's library 139 and llvmlite's 69, heap 172 and anonymous 137; gc and ``malloc_trim`` at
+the end give back 53 MiB).
 """
 
 from __future__ import annotations
