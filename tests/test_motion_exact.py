@@ -2234,8 +2234,9 @@ def test_phase_contacts_in_reverse_is_the_mirror_image():
 def test_each_tooth_pair_keeps_its_first_hit_in_the_order_of_those_hits():
     """The pairs a phase lists: each (driver tooth, driven tooth) once, by its hit of least gap (the first of equal
     ones), in the order of those hits, as a dict filled over the hits sorted by gap keeps them; on random hits whose
-    tooth indices share sums and differences (meshing pairs (i, j), (i + 1, j - 1)) and whose gaps tie."""
-    from propulsor.checks.motion.mesh_load import _first_of_each_pair
+    tooth indices share sums and differences (meshing pairs (i, j), (i + 1, j - 1)) and whose gaps tie; numpy's and
+    the compiled one (_firsts_nb)."""
+    from propulsor.checks.motion.mesh_load import _first_of_each_pair, _firsts_nb
 
     rng = np.random.default_rng(4)
     for trial in range(400):
@@ -2248,6 +2249,8 @@ def test_each_tooth_pair_keeps_its_first_hit_in_the_order_of_those_hits():
             want.setdefault((int(t_drv[k]), int(t_dvn[k])), int(k))
         got = _first_of_each_pair(d, t_drv, t_dvn)
         assert got.tolist() == list(want.values()), (d, t_drv, t_dvn)
+        # and compiled (phase_contacts' own): the same choice, ties of gap and of pair included
+        assert _firsts_nb(d, t_drv.astype(np.int64), t_dvn.astype(np.int64)).tolist() == got.tolist()
 
 
 def test_phase_contacts_of_a_driven_corner_on_a_turned_driver_edge():

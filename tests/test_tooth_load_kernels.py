@@ -151,15 +151,3 @@ def test_phase_contacts_lists_the_contacts_of_the_numpy_steps(direction):
             fallbacks += off < -0.8 * mg or off > 0
     assert listed > 200 and fallbacks > 50
 
-
-def test_each_tooth_pair_keeps_its_first_hit_compiled_as_in_numpy():
-    """_firsts_nb (compiled) chooses the hits _first_of_each_pair chooses, ties of gap and of pair keys included."""
-    rng = np.random.default_rng(4)
-    for trial in range(400):
-        n = int(rng.integers(1, 60))
-        d = rng.choice(np.linspace(0.0, 0.01, int(rng.integers(1, 12))), n)
-        t_drv = rng.integers(0, 5, n)
-        t_dvn = rng.integers(0, 5, n)
-        want = mesh_load._first_of_each_pair(d, t_drv, t_dvn)
-        got = mesh_load._firsts_nb(d, t_drv.astype(np.int64), t_dvn.astype(np.int64))
-        assert got.tolist() == want.tolist(), (d, t_drv, t_dvn)
