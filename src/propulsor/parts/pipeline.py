@@ -170,5 +170,8 @@ class Pipeline:
             warm_if_cold(getattr(w, "progress", None))
         d = design_apart(self.design, params, w) if apart else self.design(params, w)
         built: dict = {}
+        flush = getattr(w, "flush_beside", None)  # the files a step asked to be written beside the build
         for step in steps:
             step(d, w, built)
+            if flush is not None:
+                flush()

@@ -118,11 +118,10 @@ _STASHED: dict[int, tuple] = {}
 _TOKENS = iter(range(1, 1 << 62))
 
 
-def stashed_job(token: int):
-    """Run the file job stashed under ``token`` (:data:`_STASHED`; in a worker forked after it was stashed, or
-    inline) and return what it returns (a path)."""
-    fn, args = _STASHED[token]
-    return str(fn(*args))
+def stashed_job(token: int) -> list[str]:
+    """Run the file writes stashed under ``token`` (:data:`_STASHED`: (function, arguments) each, in order; in a
+    worker forked after they were stashed, or inline) and return what they return (paths)."""
+    return [str(fn(*args)) for fn, args in _STASHED[token]]
 
 
 def assembly_model(folder: str, name: str, meshes: dict, components, from_below: bool = False,
@@ -201,6 +200,7 @@ class OutputWriter:
         self._meshes: dict[str, tuple] = {}  # solid key -> (vertices, faces) mm, for the assemblies
         self._mesh_jobs: list = []  # (key, job) meshes of assembly solids that have no files of their own
         self._file_jobs: list = []  # (token, job) files being written beside the build (assemblies' STEP, DXF)
+        self._pending: list = []  # (function, arguments) of the files to write beside the build at the step's end
         self._solid_keys: dict[int, str] = {}  # id(solid) -> its key (the solid's name)
         self._keep: list = []  # the solids keyed by id, kept alive
         self._assemblies: list = []  # (name, [(component, solid key, 4×4 mm)], picture from below)
@@ -298,15 +298,24 @@ class OutputWriter:
         for key, job in self._mesh_jobs:
             self._meshes[key] = job.result()
         self._mesh_jobs = []
+        self.flush_beside()
         self._wait_files()
 
     def _beside(self, fn, *args) -> None:
-        """``fn(*args)`` (a file written) in a worker forked now, which has the arguments as they are, or inline
-        where no worker may start (:func:`..parallel.start`): collected by :meth:`wait_solids`."""
+        """``fn(*args)`` (a file written) beside the build: held until the build's step ends
+        (:meth:`flush_beside`), then written with the step's other such files in one worker forked then."""
+        self._pending.append((fn, args))
+
+    def flush_beside(self) -> None:
+        """Write the files held by :meth:`_beside` in one worker forked now, which has their arguments as they are
+        (no pickled copies), or inline where no worker may start (:func:`..parallel.start`); collected by
+        :meth:`wait_solids`.  The pipeline calls it after each step (one fork a step, not one a file)."""
+        if not self._pending:
+            return
         from ..parallel import start
 
         token = next(_TOKENS)
-        _STASHED[token] = (fn, args)
+        _STASHED[token], self._pending = tuple(self._pending), []
         self._file_jobs.append((token, start(stashed_job, token)))
 
     def _wait_files(self, raising: bool = True) -> None:
@@ -362,6 +371,7 @@ class OutputWriter:
             else:
                 self._pool.shutdown(wait=True, cancel_futures=True)
             self._pool = None
+        self._pending = []  # not started: nothing is written after this
         if SIGNALLED:  # the build's Workers block kills their processes as it ends
             for token, _ in self._file_jobs:
                 _STASHED.pop(token, None)
