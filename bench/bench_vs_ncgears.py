@@ -168,7 +168,10 @@ contact and load job, the plots, the GLB, the report).  Kept: the assemblies' ST
 worker forked as the build asks for them (``writer._beside``: the build's own objects stashed before the fork, not
 pickled: the -0.0 that sank the earlier try stays), and the pair's whole-cycle proof with its contact jobs started
 before its solids are made: the main process 5.99 -> 4.99 CPU s; the build, aa66e81 and the new tree in turn, six
-rounds on a slow machine, 8.09-9.00 -> 7.62-8.79 s wall (medians 8.55 -> 8.27); its files identical.  The peak's
+rounds on a slow machine, 8.09-9.00 -> 7.62-8.79 s wall (medians 8.55 -> 8.27); its files identical.  Then the
+step's files in one worker (beb1a4f: one fork for the assembly and both DXF): aa66e81 / the new tree with the solids
+first / the new tree, five rounds in turn, mean wall 8.32 / 7.98 / 7.80 s, mean CPU (user + sys) 12.33 / 12.31 /
+12.34 s: the wall 6 % less for the same CPU.  The peak's
 floor is unchanged (a process holding OCP and numba starts above 460 MiB; the main process's RSS at the end: 433 MiB
 file-backed, of which OCP's library 139 and llvmlite's 69, heap 172 and anonymous 137; gc and ``malloc_trim`` at
 the end give back 53 MiB).
