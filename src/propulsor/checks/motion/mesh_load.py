@@ -77,33 +77,21 @@ def _phase_hits(phi, theta, te, sign, margin, window, dvn_pts, dvn_a, dvn_b, drv
     """The hits of :func:`phase_contacts` in one compiled call: the driven wheel placed ``margin`` (else 4, 16 margins)
     on the free side of ``te`` until the first hit lies beyond a fifth of it, every finite hit of that window
     (:func:`_all_hits`: the driven vertices' first, then the driver's, each in the search's order) and its contact
-    point in both body frames, the same elementwise operations as numpy's there.  (found, start, margin, d, side,
-    vertex, edge, t, p_driven, p_driver); ``args``: the pruned search's arguments after its window
-    (:meth:`.PairOutlines.hits`)."""
+    point in both body frames, the same elementwise operations as numpy's there.  (start, d, side, vertex, edge,
+    p_driven, p_driver); ``args``: the pruned search's arguments after its window (:meth:`.PairOutlines.hits`)."""
     n = 0
-    start, mg = 0.0, margin
+    start = 0.0
     d = np.empty(0)
-    side = np.empty(0, np.int64)
-    v = np.empty(0, np.int64)
-    e = np.empty(0, np.int64)
+    side = v = e = np.empty(0, np.int64)
     t = np.empty(0)
-    found = False
     for r in range(3):
         mg = margin if r == 0 else (4.0 * margin if r == 1 else 16.0 * margin)
         start = phi + te + sign * mg
         i1, d1, e1, t1, i2, d2, e2, t2 = _pair_hits_pruned(start, theta, sign, mg + window, *args)
-        m = 0
-        for k in range(len(d1)):
-            if np.isfinite(d1[k]):
-                m += 1
-        for k in range(len(d2)):
-            if np.isfinite(d2[k]):
-                m += 1
-        d = np.empty(m)
-        side = np.empty(m, np.int64)
-        v = np.empty(m, np.int64)
-        e = np.empty(m, np.int64)
-        t = np.empty(m)
+        # the finite hits gathered in one pass into arrays sized for all of them
+        size = len(d1) + len(d2)
+        d, t = np.empty(size), np.empty(size)
+        side, v, e = np.empty(size, np.int64), np.empty(size, np.int64), np.empty(size, np.int64)
         n = 0
         for k in range(len(d1)):
             if np.isfinite(d1[k]):
@@ -113,9 +101,9 @@ def _phase_hits(phi, theta, te, sign, margin, window, dvn_pts, dvn_a, dvn_b, drv
             if np.isfinite(d2[k]):
                 d[n], side[n], v[n], e[n], t[n] = d2[k], 2, i2[k], e2[k], t2[k]
                 n += 1
-        if n > 0 and np.min(d) > 0.2 * mg:
-            found = True
+        if n > 0 and np.min(d[:n]) > 0.2 * mg:
             break
+    d, side, v, e, t = d[:n], side[:n], v[:n], e[:n], t[:n]
     p_dvn = np.empty((n, 2))
     p_drv = np.empty((n, 2))
     for k in range(n):
@@ -129,7 +117,7 @@ def _phase_hits(phi, theta, te, sign, margin, window, dvn_pts, dvn_a, dvn_b, drv
             p_dvn[k, 0] = dvn_a[j, 0] + t[k] * (dvn_b[j, 0] - dvn_a[j, 0])
             p_dvn[k, 1] = dvn_a[j, 1] + t[k] * (dvn_b[j, 1] - dvn_a[j, 1])
             p_drv[k, 0], p_drv[k, 1] = drv_pts[v[k], 0], drv_pts[v[k], 1]
-    return found, start, mg, d, side, v, e, t, p_dvn, p_drv
+    return start, d, side, v, e, p_dvn, p_drv
 
 
 @njit(cache=True)
@@ -178,8 +166,8 @@ def phase_contacts(pair: PairOutlines, phi: float, theta: float, te: float, wind
     bit for bit."""
     sign = 1.0 if direction == DRIVE else -1.0
     drv, dvn = pair.drv, pair.dvn
-    _, start, _, d, side, v, e, _, p_dvn, p_drv = _phase_hits(float(phi), float(theta), float(te), sign, float(margin),
-                                                              float(window), *_hit_args(pair))
+    start, d, side, v, e, p_dvn, p_drv = _phase_hits(float(phi), float(theta), float(te), sign, float(margin),
+                                                     float(window), *_hit_args(pair))
     if not len(d):
         return math.nan, []
     dmin = float(np.min(d))
