@@ -319,6 +319,10 @@ os.environ["PROPULSOR_JOBS"] = "1"  # one core, as a study's worker runs a varia
 for _name in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_name, "1")  # one BLAS thread, as the study's workers have it (study/engine.py)
 
+from propulsor.collector import tune  # noqa: E402
+
+tune()  # the garbage collector as a study's workers have it (policy.GC_THRESHOLDS)
+
 ROOT = Path(__file__).resolve().parents[1]
 TARGET_CPU_S = 1.0
 WANTED = ("speed_as_built_min", "center_distance_mm")

@@ -160,3 +160,26 @@ def test_the_program_leaves_without_the_teardown_having_done_what_the_teardown_w
         assert (Path(str(kept) + ".t").exists()) == (mode == "thread")
     code, got, _ = _lines("build", str(ROOT / "parts" / "road_wheel.toml"), "--out", str(tmp_path / "out"))
     assert code == 0 and "built into" in got[-1][1] and "all checks passed" in got[-1][1], got[-3:]
+
+
+@pytest.mark.parametrize("entry", ["run", "module"])
+def test_the_program_tunes_its_garbage_collector_before_it_runs_a_command(entry):
+    """``propulsor`` (cli.run) and ``python -m propulsor`` set the collector's thresholds to policy.GC_THRESHOLDS
+    before the command runs (its builds and their forked workers inherit them: bench notes in policy.py); the
+    Python API leaves a user's process as it is (importing propulsor and cli changes nothing)."""
+    from propulsor import policy
+
+    call = ("import propulsor.cli as c\n" if entry == "run" else "import propulsor.cli as c, runpy\n")
+    script = (
+        "import gc, sys\n"
+        "import propulsor, propulsor.api\n"
+        + call +
+        "untouched = gc.get_threshold()\n"
+        "def main(argv=None):\n"
+        "    print(untouched, gc.get_threshold())\n"
+        "    return 0\n"
+        "c.main = main\n"
+        + ("c.run()\n" if entry == "run" else "runpy.run_module('propulsor', run_name='__main__')\n"))
+    r = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, cwd=ROOT, timeout=120)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == f"{(700, 10, 10)} {policy.GC_THRESHOLDS}"

@@ -2,6 +2,10 @@
 
 import sys
 
-from .cli import main
+from .collector import tune
+
+tune()  # as the ``propulsor`` program (cli.run)
+
+from .cli import main  # noqa: E402
 
 sys.exit(main())

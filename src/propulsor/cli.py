@@ -543,7 +543,11 @@ def main(argv=None) -> int:
 
 
 def run() -> None:
-    """The ``propulsor`` program: :func:`main`, then the process leaves (:func:`leave`)."""
+    """The ``propulsor`` program: its garbage collector tuned (:func:`.collector.tune`, before any large import),
+    :func:`main`, then the process leaves (:func:`leave`)."""
+    from .collector import tune
+
+    tune()
     leave(main())
 
 
