@@ -304,6 +304,14 @@ sorting's cost stays), the same states at the same phases, te moved by up to 7e-
 and widening 0.005 / 0.002 rad beside it, slower (0.79 / 1.41 s: more sortings).  The first window's share
 (``CONTACT_TRACK_FIRST_WINDOW``) 1.02 / 1.15 / 1.5: 0.62-0.69 / 0.67-0.72 / 0.74-0.77 against 0.65-0.69 at 1.05
 (kept).  A nearest tooth by bisection of the sorted centres: 0.54 us a measurement of its ~30 (80 teeth), not done.
+
+2026-12-04, a new session (2 cores; from fc540ec).  The contact's margin measured again, three positions each, two
+rounds, 3e-4 / 1e-4 / 3e-5 rad: 0.72-0.77 / 0.58-0.75 / 0.57-0.66 CPU s for both directions: 10-15 % of the contact
+(about 0.08 s a variant) against every contact file changed in its last digits: still not done.  The garbage
+collector (49ffcaa, ``policy.GC_THRESHOLDS``, a study's workers and this benchmark as the program): a variant's
+collections 0.06-0.09 CPU s -> 0.01-0.02; the variants, fc540ec in a worktree and the new tree in turn, two rounds of
+three: 1.69-1.73 / 2.31-2.43 -> 1.71-1.77 / 2.23-2.38 CPU s (the seed-002 pair / its Fourier form): no difference
+above the spread (the collector's cost is in the builds, whose processes fork: bench_vs_ncgears.py).
 """
 
 from __future__ import annotations

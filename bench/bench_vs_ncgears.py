@@ -175,6 +175,15 @@ first / the new tree, five rounds in turn, mean wall 8.32 / 7.98 / 7.80 s, mean 
 floor is unchanged (a process holding OCP and numba starts above 460 MiB; the main process's RSS at the end: 433 MiB
 file-backed, of which OCP's library 139 and llvmlite's 69, heap 172 and anonymous 137; gc and ``malloc_trim`` at
 the end give back 53 MiB).
+2026-12-04, a new session (2 cores, idle; 49ffcaa, one run): ncgears 37.45 s wall (39.60 CPU s), peak 288 MiB; ours
+7.55 s wall (11.81 CPU s), peak 633 MiB: wall ratio 0.202, CPU ratio 0.298; ``ncg_elliptical.toml`` 6.12 s wall (9.10
+CPU s).  Kept (49ffcaa): the program's garbage collector at (100 000, 50, 100) (``policy.GC_THRESHOLDS``, set by
+``propulsor`` before its imports): at CPython's 700 the build's main process ran 927 young, 83 middle and 6 full
+collections (0.52-0.66 CPU s), its processes 0.87-0.93 CPU s of them, and a collection in a process that has forked
+writes the header of every object it scans (pages its workers share, copied); now 6 young, 0.36-0.38 CPU s over the
+processes, the main process 5.9-6.1 -> 4.9-5.0 CPU s, its peak 643 -> 648 MiB; the files identical.  Tried and not
+kept: glibc's malloc held (mmap threshold 32 MiB, trim 256 MiB, top pad 64 MiB through ``mallopt``): minor faults
+300 000 -> 260 000 a build, the CPU within the spread (9.63 / 9.59 -> 9.91 / 9.34 user s), the peak 4 MiB more.
 """
 
 from __future__ import annotations
