@@ -287,3 +287,46 @@ def test_an_assembly_step_written_beside_the_build_has_the_bytes_of_one_written_
     assert got["1"] == got["2"]
     assert got["1"] != (tmp_path / "pickled.step").read_bytes()
     assert not writer_mod._STASHED  # the jobs' arguments forgotten once collected
+
+
+def _sleep_and_say(seconds: float, path: str) -> int:
+    import time as _time
+
+    _time.sleep(seconds)
+    Path(path).write_text("done")
+    return os.getpid()
+
+
+def test_a_job_started_only_in_a_worker_is_none_without_one_and_an_abandoned_one_is_killed(tmp_path, monkeypatch):
+    """``start(..., forked_only=True)``: a Future running in a forked worker where one may be forked, else None and
+    nothing run (not the work run here); ``abandon`` kills a running job's worker at once (it never finishes its
+    work), and leaves a finished job, a job run inline and None as they are."""
+    import time as _time
+    from concurrent.futures.process import BrokenProcessPool
+
+    from propulsor.parallel import Done, Workers, abandon, start
+
+    monkeypatch.setenv("PROPULSOR_JOBS", "1")
+    with Workers():
+        assert start(_sleep_and_say, 0.0, str(tmp_path / "one"), forked_only=True) is None
+        assert not (tmp_path / "one").exists()
+        inline = start(_sleep_and_say, 0.0, str(tmp_path / "inline"))
+        assert isinstance(inline, Done) and inline.result() == os.getpid()
+        abandon(inline)
+        abandon(None)
+    monkeypatch.setenv("PROPULSOR_JOBS", "2")
+    with Workers():
+        done = start(_sleep_and_say, 0.0, str(tmp_path / "quick"), forked_only=True)
+        assert not isinstance(done, Done) and done.result() != os.getpid()
+        abandon(done)
+        assert done.result() != os.getpid()  # a finished job keeps its result
+        slow = start(_sleep_and_say, 30.0, str(tmp_path / "slow"), forked_only=True)
+        pid = next(iter(slow.propulsor_pool._procs))
+        t0 = _time.monotonic()
+        abandon(slow)
+        with pytest.raises(ProcessLookupError):  # killed and reaped by the time abandon returns
+            os.kill(pid, 0)
+        with pytest.raises(BrokenProcessPool):
+            slow.result(timeout=10)
+        assert _time.monotonic() - t0 < 10.0
+    assert not (tmp_path / "slow").exists()

@@ -636,19 +636,35 @@ def test_counted_ticks_a_job_done_in_this_process():
     assert _counted(other, ticks.append, 4) is other and ticks == [3]
 
 
-def _proofs_world(monkeypatch, proof, tolerance_grade=0, compare_methods=False, load_given=False):
-    """proofs() with its steps recorded: prove, start (run at once as a Done), count_shared, counter, the tolerance
-    steps, compare."""
+class _Design(str):
+    """The design a proofs() world hands around: "D", with the two wheels' profiles it samples."""
+
+    driver = SimpleNamespace(profile="driver profile")
+    driven = SimpleNamespace(profile="driven profile")
+
+
+def _proofs_world(monkeypatch, proof, tolerance_grade=0, compare_methods=False, load_given=False, free=True):
+    """proofs() with its steps recorded: the outer loops sampled, prove, start (run at once as a Done; a job started
+    only where a worker is free (``forked_only``): one while ``free``, else None), abandon, count_shared, counter,
+    the tolerance steps, compare."""
     import propulsor.parallel as parallel
     import propulsor.progress as progress
     from propulsor.parallel import Done
-    from propulsor.parts.noncircular_pair import as_built, proofs, tolerance
+    from propulsor.parts.noncircular_pair import as_built, pair_proof, proofs, tolerance
 
     log = []
     monkeypatch.setattr(proofs, "prove", lambda d, ppt, legs, prog, mount: log.append(("prove", d, ppt, legs, mount,
                                                                                         prog)) or proof)
-    monkeypatch.setattr(parallel, "start", lambda fn, *a, counter=None: log.append(("start", fn, a, counter))
-                        or (Done(("ran", fn, a)) if fn is tolerance.run_case else ("job", fn, a)))
+    monkeypatch.setattr(pair_proof, "_outer_only", lambda profile: log.append(("sample", profile)))
+
+    def start(fn, *a, counter=None, forked_only=False):
+        log.append(("start", fn, a, counter) + (("forked only",) if forked_only else ()))
+        if forked_only and not free:
+            return None
+        return Done(("ran", fn, a)) if fn is tolerance.run_case else ("job", fn, a)
+
+    monkeypatch.setattr(parallel, "start", start)
+    monkeypatch.setattr(parallel, "abandon", lambda job: log.append(("abandon", job)))
     monkeypatch.setattr(progress, "count_shared", lambda prog, phase, parts, unit="": log.append(
         ("count_shared", phase, parts, unit, prog)) or ["C1", "C2"])
     ticks = []
@@ -663,7 +679,7 @@ def _proofs_world(monkeypatch, proof, tolerance_grade=0, compare_methods=False, 
     p = SimpleNamespace(proof_phases_per_tooth=6, tolerance_grade=tolerance_grade, pressure_angle_deg=25.0,
                         tolerance_samples=2, tolerance_seed=9, compare_methods=compare_methods, load_given=load_given)
     said = []
-    dd = SimpleNamespace(p=p, d="D", mount=76.0)
+    dd = SimpleNamespace(p=p, d=_Design("D"), mount=76.0)
     return dd, SimpleNamespace(progress=said.append), said, log, ticks, as_built, tolerance
 
 
@@ -688,12 +704,16 @@ def test_proofs_run_the_whole_cycle_then_both_directions_as_built_and_the_tolera
     assert ticks == [1, 2, 3, 4, 5, 6]
     assert built["other"] == ("OD", "OP", "note")
     say = w.progress
-    assert log[:5] == [("prove", "D", 6, 4, 76.0, say),
-                       ("count_shared", "as built: contact in both directions", 2, "position", say),
-                       ("start", f, ("D", 76.0, DRIVE), "C1"), ("start", f, ("D", 76.0, REVERSE), "C2"),
+    # both directions started before the proof (a worker free), the outer loops sampled before them (sent with the
+    # design: the proof and the jobs read the same samples)
+    assert log[:7] == [("count_shared", "as built: contact in both directions", 2, "position", say),
+                       ("sample", "driver profile"), ("sample", "driven profile"),
+                       ("start", f, ("D", 76.0, DRIVE), "C1", "forked only"),
+                       ("start", f, ("D", 76.0, REVERSE), "C2", "forked only"),
+                       ("prove", "D", 6, 4, 76.0, say),
                        ("iso1328", "D", 76.0, 8, pytest.approx(math.radians(25.0)))]
-    assert log[5:8] == [("worst", "ISO 1328 grade 8"), ("mc", "ISO 1328 grade 8", 2, 9),
-                        ("counter", "as made: tolerance cases", 6, "case", say)]
+    assert log[7:10] == [("worst", "ISO 1328 grade 8"), ("mc", "ISO 1328 grade 8", 2, 9),
+                         ("counter", "as made: tolerance cases", 6, "case", say)]
     assert log[-1] == ("compare", dd.p, "D", say)
     assert said == ["as built: both directions' contact on the finished outlines, resolved by contact events",
                     "as made: 6 cases within ISO 1328 grade 8"]
@@ -714,15 +734,47 @@ def test_with_a_load_case_the_drive_directions_job_goes_on_to_the_load_per_tooth
                                  ("job", as_built.contact_direction, ("D", 76.0, REVERSE)))
 
 
+def test_where_no_worker_is_free_both_directions_run_after_the_proof_as_before(monkeypatch):
+    """No worker free when the proof starts (a budget of one process, or every slot of make's builds taken): nothing
+    is started ahead; after the proof each direction starts as always (in a worker if one is free by then, else
+    run here), so a study's variant runs the proof, then the contact, in its one process."""
+    from propulsor.checks.motion.contact_events import DRIVE, REVERSE
+    from propulsor.parts.noncircular_pair.proofs import proofs
+
+    pr = _proof(phi_drive=np.array([0.0, 0.5, 1.0, 1.5, 2.0, 2.5]))
+    dd, w, said, log, ticks, as_built, _ = _proofs_world(monkeypatch, pr, free=False)
+    built = {}
+    proofs(dd, w, built)
+    f = as_built.contact_direction
+    assert [e for e in log if e[0] in ("start", "prove", "abandon")] == [
+        ("start", f, ("D", 76.0, DRIVE), "C1", "forked only"), ("start", f, ("D", 76.0, REVERSE), "C2", "forked only"),
+        ("prove", "D", 6, 4, 76.0, w.progress),
+        ("start", f, ("D", 76.0, DRIVE), "C1"), ("start", f, ("D", 76.0, REVERSE), "C2")]
+    assert built["as_built"] == (("job", f, ("D", 76.0, DRIVE)), ("job", f, ("D", 76.0, REVERSE)))
+
+
 def test_proofs_of_a_jammed_pair_build_nothing_as_built_and_without_a_grade_no_tolerance(monkeypatch):
+    """A jammed pair: the directions started ahead of the proof are abandoned (their workers killed), none is
+    started after it; where no worker was free none was started at all."""
+    from propulsor.checks.motion.contact_events import DRIVE, REVERSE
+    from propulsor.parts.noncircular_pair import as_built
     from propulsor.parts.noncircular_pair.proofs import other_method, proofs
 
+    f = as_built.contact_direction
     for pr in (_proof(), _proof(phi_drive=np.array([0.0, 0.5, 1.0, 1.5, 2.0, np.inf]))):
-        dd, w, said, log, ticks, _, _ = _proofs_world(monkeypatch, pr, tolerance_grade=8)
-        built = {}
-        proofs(dd, w, built)
-        other_method(dd, w, built)
-        assert built == {"proof": pr, "as_built": (), "other": (None, None, "")} and said == []
+        for free in (True, False):
+            dd, w, said, log, ticks, _, _ = _proofs_world(monkeypatch, pr, tolerance_grade=8, free=free)
+            built = {}
+            proofs(dd, w, built)
+            other_method(dd, w, built)
+            assert built == {"proof": pr, "as_built": (), "other": (None, None, "")} and said == []
+            starts = [e for e in log if e[0] == "start"]
+            assert starts == [("start", f, ("D", 76.0, DRIVE), "C1", "forked only"),
+                              ("start", f, ("D", 76.0, REVERSE), "C2", "forked only")]
+            dropped = [e for e in log if e[0] == "abandon"]
+            assert dropped == ([("abandon", ("job", f, ("D", 76.0, DRIVE))), ("abandon", ("job", f, ("D", 76.0, REVERSE)))]
+                               if free else [("abandon", None), ("abandon", None)])
+            assert log.index(dropped[0]) > [e[0] for e in log].index("prove")
     # a jam counted though every phi_drive is finite
     pr = _proof(phi_drive=np.array([0.0, 0.5, 1.0, 1.5, 2.0, 2.5]))
     pr_jam = SimpleNamespace(jams=1, phi_drive=pr.phi_drive)

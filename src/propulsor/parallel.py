@@ -258,11 +258,15 @@ def inline(fn, *args) -> Done:
     return Done(as_if_sent(fn(*as_if_sent(args))))
 
 
-def start(fn, *args, counter=None):
+def start(fn, *args, counter=None, forked_only: bool = False):
     """Run fn(*args) in one forked process; returns a Future (a :class:`Done` when run inline).  `counter`:
     ``counter(done, total)`` told how far the job has come where it calls :func:`tick` — at once when run
-    inline, while :func:`result` waits for it when forked (through a pipe)."""
+    inline, while :func:`result` waits for it when forked (through a pipe).  ``forked_only``: None where no worker
+    may be forked now, instead of the work run here (a job started ahead of the step that decides whether it is
+    wanted: :func:`abandon` drops it)."""
     pool = fork_pool(1)
+    if pool is None and forked_only:
+        return None
     if pool is None:
         before, job_ticks._TICK = job_ticks._TICK, counter  # a job without a counter ticks to none (not to a job
         try:                                                 # it runs within)
@@ -283,7 +287,16 @@ def start(fn, *args, counter=None):
         job_ticks._pump_add(fut.propulsor_ticks)
     fut.add_done_callback(lambda _f: pool.give_back())
     pool.shutdown(wait=False)
+    fut.propulsor_pool = pool
     return fut
+
+
+def abandon(job) -> None:
+    """Drop a job :func:`start` forked whose result is not wanted after all: its worker killed if it still runs (its
+    slot given back, its ticks drained to the end); nothing for a job run inline (done already) or None."""
+    pool = getattr(job, "propulsor_pool", None)
+    if pool is not None and not job.done():
+        kill_pool(pool)
 
 
 def kill_workers() -> None:

@@ -270,7 +270,11 @@ class OutputWriter:
 
     def warm_up(self) -> None:
         """While the design is computed in another process (:func:`propulsor.parts.pipeline.design_apart`):
-        import the modules the solids and the assembly need and start the solids' workers."""
+        import the CAD kernel the solids and the assembly need and load the compiled kernels.  The solids' workers
+        (and the modules they run, :func:`_import_solid_work`) are started by the first solid added: the jobs a
+        build starts as soon as its design is known (a pair's as-built contact) fork first, from a smaller process,
+        and the design's end is not held back by imports it does not need (the Fourier pair's build: a core idle
+        0.6-0.8 s between the design's end and the contact jobs' start, now none)."""
         from ..solids.cq_import import import_cadquery
 
         # the kernel's libraries load holding the interpreter's lock: the design's steps are shown when it is loaded
@@ -278,8 +282,7 @@ class OutputWriter:
         import_cadquery()  # the solids' wrapper, the assembly STEP (VTK loaded only if ever used)
         from ..checks.kernels import warm_if_cold
 
-        warm_if_cold(self.progress)  # before the solids' workers fork: they inherit the compiled code
-        self._solid_pool()
+        warm_if_cold(self.progress)  # before any worker forks: each inherits the compiled code
 
     def _solid_pool(self):
         if self._pool is None:

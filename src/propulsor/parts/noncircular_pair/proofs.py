@@ -128,28 +128,42 @@ def _counted(job, tick, k: int):
 
 def proofs(dd: PairDesign, w, built: dict) -> None:
     """The built pair over the whole cycle, and its as-built contact started in workers (before the solids are
-    made: the contact is the build's longest job, the solids' files run beside the rest)."""
-    from ...parallel import start
+    made: the contact is the build's longest job, the solids' files run beside the rest).  Each direction whose worker
+    may be forked now starts before the whole-cycle proof, which runs meanwhile here (a core would otherwise wait while
+    it runs: the Fourier pair's build, 0.5-0.9 s); a proof that finds the pair jammed drops them (no transmission as
+    built).  Where no worker is free, each direction runs here after the proof, as its start."""
+    from ...parallel import abandon, start
     from ...progress import count_shared, counter
     from ...checks.motion.contact_events import DRIVE, REVERSE
     from .as_built import contact_direction
+    from .pair_proof import _outer_only
     from .tooth_load_outputs import contact_and_load
 
     p, d, prog = dd.p, dd.d, w.progress
+    # the two directions beside each other and beside the other method's proof; their sampled positions counted.
+    # With a load case the drive direction's job goes on to the load per tooth on its contact
+    # (tooth_load_outputs.contact_and_load)
+    counts = count_shared(prog, "as built: contact in both directions", 2, "position")
+
+    def direction(way, count, forked_only: bool):
+        if way == DRIVE and p.load_given:
+            return start(contact_and_load, d, dd.mount, way, p, counter=count, forked_only=forked_only)
+        return start(contact_direction, d, dd.mount, way, counter=count, forked_only=forked_only)
+
+    # the outer loops sampled once, here, at the tolerance the proof and the contact read them at: a job's design is
+    # pickled as it starts, with its splines' samples (a job started before them samples both wheels again)
+    _outer_only(d.driver.profile), _outer_only(d.driven.profile)
+    ahead = [direction(way, count, True) for way, count in zip((DRIVE, REVERSE), counts)]
     built["proof"] = prove(d, p.proof_phases_per_tooth, 4, prog, dd.mount)
     pr = built["proof"]
     if pr.jams or not np.all(np.isfinite(pr.phi_drive)):
+        for job in ahead:
+            abandon(job)
         built["as_built"] = ()  # no running position: no transmission as built
     else:
         prog("as built: both directions' contact on the finished outlines, resolved by contact events")
-        # the two directions beside each other and beside the other method's proof (in this process when no
-        # worker is free: then each start is the work itself); their sampled positions counted.  With a load case
-        # the drive direction's job goes on to the load per tooth on its contact (tooth_load_outputs.contact_and_load)
-        counts = count_shared(prog, "as built: contact in both directions", 2, "position")
-        built["as_built"] = tuple(start(contact_and_load, d, dd.mount, way, p, counter=count)
-                                  if way == DRIVE and p.load_given else
-                                  start(contact_direction, d, dd.mount, way, counter=count)
-                                  for way, count in zip((DRIVE, REVERSE), counts))
+        built["as_built"] = tuple(job if job is not None else direction(way, count, False)
+                                  for job, way, count in zip(ahead, (DRIVE, REVERSE), counts))
         if p.tolerance_grade:
             from .tolerance import iso1328, monte_carlo_cases, run_case, worst_cases
 
