@@ -15,6 +15,15 @@ Measured (2 cores, idle; the Fourier pair): 6fe32a6, the main process 5.99 CPU s
 together, one core idle 0-1.1 s (the design's imports), 1.8-2.6 s (the solids made in the main process) and from 5.8 s
 on (the main process alone); f1f6769 (the assembly STEP and the DXF beside the build, the contact jobs started before
 the solids), the main process 4.99 CPU s of a 7.0 s wall.
+2026-12-04, a new session (2 cores, idle; the Fourier pair): at c69f764 (the garbage collector tuned) the main process
+6.33 CPU s of an 8.98 s wall, one core idle 0-1.25 s, 2.40-2.98 s (the design done, the main process still importing
+what the solids' workers run before it could start the contact jobs) and from 7.57 s on; at 9764c52 (the contact jobs
+started before the whole-cycle proof, the solids' workers by the first solid) 7.82 / 8.29 s wall, the stretch after
+the design gone: a core idle 0-1.0 s and from 6.3-6.5 s on only.  What is left idle is the imports before the design
+can fork (both processes need them) and the main process's own end (the as-built and load values, their plots, the
+report).  Tried and not kept: the workers at a lower priority (``os.nice`` 5 / 10 in each forked worker), eight paired
+rounds: mean wall 7.32 -> 7.20 s (6 of 8 faster, two much slower), the machine's swing as large; matplotlib imported in
+the warm-up beside the design, eight paired rounds: 6.54 -> 6.55 s.
 """
 
 from __future__ import annotations
