@@ -311,7 +311,13 @@ rounds, 3e-4 / 1e-4 / 3e-5 rad: 0.72-0.77 / 0.58-0.75 / 0.57-0.66 CPU s for both
 collector (49ffcaa, ``policy.GC_THRESHOLDS``, a study's workers and this benchmark as the program): a variant's
 collections 0.06-0.09 CPU s -> 0.01-0.02; the variants, fc540ec in a worktree and the new tree in turn, two rounds of
 three: 1.69-1.73 / 2.31-2.43 -> 1.71-1.77 / 2.23-2.38 CPU s (the seed-002 pair / its Fourier form): no difference
-above the spread (the collector's cost is in the builds, whose processes fork: bench_vs_ncgears.py).
+above the spread (the collector's cost is in the builds, whose processes fork: bench_vs_ncgears.py).  Where the design's
+time still goes (one design each, ``tip_search.tip_hit`` timed): seed 002, 213 tip searches of which 61 find no tip
+(the flank stops short of the height asked: Newton leaves the flank, then fsolve fails, once or twice) 0.101 of the
+design's 0.74 CPU s; seed 000, 277 of which 103 none, 0.184 of 1.16 s; the Fourier form takes no tip search.  A proof
+that no flank point lies within the solver's tolerance of the equidistant (the flank's greatest height below h by more
+than it) would return the same None without the solver; it needs a bound on the flank's height between its 41 samples
+that holds on an undercut flank too (its cusp), which was not found this session.
 """
 
 from __future__ import annotations
