@@ -308,10 +308,12 @@ and widening 0.005 / 0.002 rad beside it, slower (0.79 / 1.41 s: more sortings).
 2026-12-04, a new session (2 cores; from fc540ec).  The contact's margin measured again, three positions each, two
 rounds, 3e-4 / 1e-4 / 3e-5 rad: 0.72-0.77 / 0.58-0.75 / 0.57-0.66 CPU s for both directions: 10-15 % of the contact
 (about 0.08 s a variant) against every contact file changed in its last digits: still not done.  The garbage
-collector (49ffcaa, ``policy.GC_THRESHOLDS``, a study's workers and this benchmark as the program): a variant's
+collector tuned (49ffcaa, ``policy.GC_THRESHOLDS``, tried in a study's workers and this benchmark too): a variant's
 collections 0.06-0.09 CPU s -> 0.01-0.02; the variants, fc540ec in a worktree and the new tree in turn, two rounds of
 three: 1.69-1.73 / 2.31-2.43 -> 1.71-1.77 / 2.23-2.38 CPU s (the seed-002 pair / its Fourier form): no difference
-above the spread (the collector's cost is in the builds, whose processes fork: bench_vs_ncgears.py).  Where the design's
+above the spread (the collector's cost is in the builds, whose processes fork: bench_vs_ncgears.py); and a process
+evaluating 30 variants grew 258 -> 316 MiB (garbage left to pile up) against 257 -> 276 at the defaults: a study's
+workers, and this benchmark, keep Python's own thresholds.  Where the design's
 time still goes (one design each, ``tip_search.tip_hit`` timed): seed 002, 213 tip searches of which 61 find no tip
 (the flank stops short of the height asked: Newton leaves the flank, then fsolve fails, once or twice) 0.101 of the
 design's 0.74 CPU s; seed 000, 277 of which 103 none, 0.184 of 1.16 s; the Fourier form takes no tip search.  A proof
@@ -332,10 +334,6 @@ from pathlib import Path
 os.environ["PROPULSOR_JOBS"] = "1"  # one core, as a study's worker runs a variant
 for _name in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_name, "1")  # one BLAS thread, as the study's workers have it (study/engine.py)
-
-from propulsor.collector import tune  # noqa: E402
-
-tune()  # the garbage collector as a study's workers have it (policy.GC_THRESHOLDS)
 
 ROOT = Path(__file__).resolve().parents[1]
 TARGET_CPU_S = 1.0

@@ -183,3 +183,31 @@ def test_the_program_tunes_its_garbage_collector_before_it_runs_a_command(entry)
     r = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, cwd=ROOT, timeout=120)
     assert r.returncode == 0, r.stderr
     assert r.stdout.strip() == f"{(700, 10, 10)} {policy.GC_THRESHOLDS}"
+    assert policy.GC_THRESHOLDS != (700, 10, 10)
+
+
+def test_a_study_runs_with_pythons_own_garbage_collector():
+    """``propulsor explore`` runs as long as its study: the program's tuned collector (set before the command is known)
+    is put back to Python's thresholds before the study starts (its cyclic garbage would pile up over the variants);
+    a build keeps the tuned one (the test above)."""
+    script = (
+        "import gc, sys\n"
+        "import propulsor.cli as c\n"
+        "def explore(args, progress):\n"
+        "    print(gc.get_threshold())\n"
+        "    return 0\n"
+        "c._explore = explore\n"
+        "sys.argv = ['propulsor', 'explore', 'any.toml']\n"
+        "c.run()\n")
+    r = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, cwd=ROOT, timeout=120)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == f"{(700, 10, 10)}"
+    # put back to what the process had before it was first tuned, however often it was tuned; nothing without a tune
+    script = ("import gc\nfrom propulsor.collector import tune, untune\n"
+              "untune(); a = gc.get_threshold(); gc.set_threshold(800, 11, 12); tune(); tune(); b = gc.get_threshold()\n"
+              "untune(); print(a, b, gc.get_threshold())\n")
+    r = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, cwd=ROOT, timeout=120)
+    assert r.returncode == 0, r.stderr
+    from propulsor import policy
+
+    assert r.stdout.strip() == f"{(700, 10, 10)} {policy.GC_THRESHOLDS} {(800, 11, 12)}"

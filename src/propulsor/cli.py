@@ -339,7 +339,11 @@ def cmd_params(args) -> int:
 
 
 def cmd_explore(args) -> int:
-    """A design study: every variant of the study file evaluated on a Dask cluster, one table, ranked."""
+    """A design study: every variant of the study file evaluated on a Dask cluster, one table, ranked.  This process
+    runs as long as the study: its garbage collector at Python's own thresholds (:func:`.collector.untune`)."""
+    from .collector import untune
+
+    untune()
     with Renderer(args.quiet) as progress:
         return _explore(args, progress)
 

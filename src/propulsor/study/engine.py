@@ -88,8 +88,6 @@ WORKER_CONFIG = {
     # runs 4-6 % slower than the same call outside Dask (4 proof variants of the seed-002 pair: 30.8-31.1 CPU s
     # with it, 29.3-29.5 without)
     "distributed.nanny.pre-spawn-environ": {"OMP_NUM_THREADS": 1, "MKL_NUM_THREADS": 1, "OPENBLAS_NUM_THREADS": 1},
-    # each worker's garbage collector as the program's own (policy.GC_THRESHOLDS; ``collector.dask_setup``)
-    "distributed.worker.preload": ["propulsor.collector"],
     # the worker's statistical profiler samples the evaluating thread's stack every 10 ms, and its event
     # loop wakes every 20-500 ms for ticks, system and memory monitors: nothing of it is read in a study
     # (no dashboard is looked at); once a second is enough to notice a stuck or swelling worker
