@@ -428,8 +428,8 @@ BORE_STANDARD_D_MM = (3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0, 10.0, 11.0, 12.0, 14.0,
 MODULE_MIN_MM = 0.05
 
 # --- the process -------------------------------------------------------------------------------------------------
-#: Python's cyclic garbage collector in the program's own processes (``propulsor`` and its forked builds and workers,
-#: a local study's workers): a young collection every this many net allocations of container objects, then the older
+#: Python's cyclic garbage collector in the program's own processes (``propulsor`` and its forked builds and
+#: workers): a young collection every this many net allocations of container objects, then the older
 #: generations' (CPython's defaults: 700, 10, 10).  A build allocates millions of small objects, nearly all freed by
 #: their reference counts: at 700 the Fourier pair's build ran 927 young, 83 middle and 6 full collections in its
 #: main process (0.52-0.66 CPU s), 0.87-0.93 CPU s over its processes, and each collection in a process that has
