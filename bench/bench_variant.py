@@ -319,7 +319,11 @@ time still goes (one design each, ``tip_search.tip_hit`` timed): seed 002, 213 t
 design's 0.74 CPU s; seed 000, 277 of which 103 none, 0.184 of 1.16 s; the Fourier form takes no tip search.  A proof
 that no flank point lies within the solver's tolerance of the equidistant (the flank's greatest height below h by more
 than it) would return the same None without the solver; it needs a bound on the flank's height between its 41 samples
-that holds on an undercut flank too (its cusp), which was not found this session.
+that holds on an undercut flank too (its cusp), which was not found this session.  For compiling the one-point
+envelope chain (the other way to make those searches cheap): on this machine numpy's ``arctan2`` (array or scalar:
+the same loop) differs from libm's ``atan2`` in 2.5 % of 200 000 random pairs and numpy's ``arctan`` from libm's in
+0.13 %, while numpy's ``cos`` equals libm's everywhere and numba's ``math.atan2`` is libm's: a compiled chain must
+take its arc tangents from numpy's loop (or a copy of its algorithm), not from numba's.
 """
 
 from __future__ import annotations
