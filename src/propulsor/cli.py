@@ -28,6 +28,7 @@ from . import building  # noqa: E402
 from .building import gallery_folder, regenerate_gallery, vet_depfile, write_depfile, write_gallery_locked  # noqa: E402
 from .errors import CheckFailed, EnvironmentFailure, InputError  # noqa: E402
 from .render import Renderer  # noqa: E402
+from .program_end import leave  # noqa: E402
 from .signals import SIGNALLED, Interrupted, check_signalled, hold_signals, raise_interrupted, unraisable  # noqa: E402
 
 #: the exit codes (README, «Command line»): the command line's alone; the build service raises exceptions
@@ -553,40 +554,6 @@ def run() -> None:
 
     tune()
     leave(main())
-
-
-def leave(code: int) -> None:
-    """End the process with `code` without the interpreter's teardown where nothing is left to finish: after a
-    build the teardown is its garbage collector scanning every object the build and the imports made, once per
-    stage of the modules' clearing (the Fourier pair's build: 1.3 s between the report written and the process
-    gone, 0.12-0.18 s this way).  What the teardown would still do is done first: the streams and every file left open
-    flushed, the exit functions run (temporary folders removed, loggers closed).  The normal exit where anything
-    else runs on — a thread the teardown would wait for, a worker process — or after a signal (its finalisers run at
-    exit)."""
-    import _io
-    import atexit
-    import gc
-    import multiprocessing as mp
-
-    first = threading.main_thread()
-    if SIGNALLED or mp.active_children() or any(t is not first and not t.daemon for t in threading.enumerate()):
-        sys.exit(code)  # (a daemon thread the teardown would abandon too)
-    try:
-        objects = gc.get_objects()  # a file written through but not closed: its buffer, as a teardown would
-        # every file object's class derives from the C base of io.IOBase (an ABC: its isinstance, half a second)
-        files = {t for t in set(map(type, objects)) if issubclass(t, _io._IOBase)}
-        for f in objects:
-            if type(f) in files and not f.closed and f.writable():
-                f.flush()
-        del objects
-        sys.stdout.flush()
-        sys.stderr.flush()
-        atexit._run_exitfuncs()
-        sys.stdout.flush()
-        sys.stderr.flush()
-    except Exception:  # noqa: BLE001 - a stream gone (EPIPE) or a failing exit function: the normal exit reports it
-        sys.exit(code)
-    os._exit(code)
 
 
 def _study_kept(args) -> str:

@@ -31,84 +31,15 @@ import numpy as np
 from ..check import Check
 from ..export.glossary import manifest_glossary
 from ..export.report import md_text, unit_from_name  # noqa: F401  (unit_from_name: public here too)
-from ..parallel import fork_pool, inline, threads_ok
+from ..parallel import fork_pool, inline
 from ..params import applying_inputs, read_part_meta
 from ..write_root import prepare
+from .solid_files import (VIEWS, _import_solid_work, assembly_glb, assembly_model, assembly_picture,  # noqa: F401
+                          mesh_of, solid_files_and_checks, solid_mesh_and_checks, solid_step_and_checks)
 
 
 #: forked workers writing and checking solids (the machine has 2 cores)
 SOLID_WORKERS = 2
-#: the folder of the isometric pictures of every solid and assembly
-VIEWS = "views"
-
-
-def solid_files_and_checks(folder: str, name: str, solid, expected_genus, volume: float, forked: bool):
-    """STEP, STL and 3MF of one solid in `folder`, its isometric picture ``views/<name>.png``, and every
-    shared check on them; returns (list of Check, (vertices, faces) of the mesh, for the assemblies).
-
-    B-rep validity (OCCT), STEP written and re-imported (one solid, same volume), tessellation
-    within the chord tolerance, mesh validity (closed, oriented, one body, genus, no
-    self-intersection, volume against the B-rep).  The two halves, :func:`solid_step_and_checks` and
-    :func:`solid_mesh_and_checks`, are independent: the writer runs them in two workers at once."""
-    checks = solid_step_and_checks(folder, name, solid, volume)
-    mesh_checks, mesh = solid_mesh_and_checks(folder, name, solid, expected_genus, volume, forked)
-    return checks + mesh_checks, mesh
-
-
-def solid_step_and_checks(folder: str, name: str, solid, volume: float | None = None) -> list:
-    """The B-rep checks of one solid, its STEP file and the STEP round trip; returns the checks.  ``volume``: the
-    solid's B-rep volume (mm^3) when the caller has it (the writer's, of the same B-rep: a forked worker's copy is
-    OCCT's binary form of it, the same surfaces to the bit); else computed here."""
-    from ..checks.brep import brep_checks, step_roundtrip_check
-    from ..export.step import write_step
-    from ..solids.kernel import volume as kernel_volume
-
-    folder = Path(folder)
-    # the exact-vs-triangulated volume cross-check is made on the exported mesh itself
-    v = kernel_volume(solid) if volume is None else float(volume)  # the B-rep check and the STEP round trip
-    checks = list(brep_checks(solid, name, cross_check_volume=False, volume_mm3=v))
-    step = folder / f"{name}.step"
-    write_step(solid, step, name)
-    checks.append(step_roundtrip_check(solid, step, name, built_volume=v))
-    return checks
-
-
-def solid_mesh_and_checks(folder: str, name: str, solid, expected_genus, volume: float, forked: bool):
-    """STL and 3MF of one solid, the mesh checks and ``views/<name>.png``; returns (list of Check,
-    (vertices, faces) of the mesh)."""
-    from ..checks.mesh import mesh_checks
-    from ..export.mesh import tessellate, write_3mf, write_stl
-    from ..export.render import palette_colour, render_iso
-
-    folder = Path(folder)
-    # OCCT's mesher threads only in a build allowed more than one process and not in a forked worker
-    mesh = tessellate(solid, parallel=not forked and threads_ok())
-    write_stl(mesh, folder / f"{name}.stl")
-    write_3mf(mesh, folder / f"{name}.3mf", name)
-    checks = mesh_checks(mesh, name, expected_genus=expected_genus, brep_volume=volume)
-    vertices, faces = np.asarray(mesh.vertices, np.float64), np.asarray(mesh.faces, np.int64)
-    render_iso([(vertices, faces, None, palette_colour(0))], folder / VIEWS / f"{name}.png")
-    return checks, (vertices, faces)
-
-
-def _import_solid_work() -> None:
-    """The modules :func:`solid_files_and_checks` runs (mesh, checks, STEP, pictures), imported before the
-    workers are forked: each worker then starts with them instead of importing them again."""
-    from ..checks import brep, mesh  # noqa: F401
-    from ..checks.tri_tri import pairs_intersect
-    from ..export import mesh as _mesh, render, step  # noqa: F401
-    from ..solids import kernel  # noqa: F401
-
-    none = np.zeros(0, np.int64)  # the compiled narrow phase loaded from numba's cache, no pair to test
-    pairs_intersect(np.zeros((3, 3)), np.zeros((1, 3), np.int64), none, none, np.zeros((1, 3)), np.zeros(1), 1e-9)
-
-
-def mesh_of(solid, forked: bool):
-    """(vertices, faces) of a solid that is in an assembly but has no files of its own."""
-    from ..export.mesh import tessellate
-
-    mesh = tessellate(solid, parallel=not forked and threads_ok())
-    return np.asarray(mesh.vertices, np.float64), np.asarray(mesh.faces, np.int64)
 
 
 #: the files being written beside the build, by token: (function, arguments).  A job forked at its start
@@ -122,31 +53,6 @@ def stashed_job(token: int) -> list[str]:
     """Run the file writes stashed under ``token`` (:data:`_STASHED`: (function, arguments) each, in order; in a
     worker forked after they were stashed, or inline) and return what they return (paths)."""
     return [str(fn(*args)) for fn, args in _STASHED[token]]
-
-
-def assembly_model(folder: str, name: str, meshes: dict, components, from_below: bool = False,
-                   motions=()) -> None:
-    """``<name>.glb`` and ``views/<name>.png`` of an assembly from its solids' meshes;
-    components: (component name, solid key, 4×4 placement mm); from_below: the picture seen from below;
-    motions: the GLB's animations (:func:`export.glb.write_glb`).  The two halves,
-    :func:`assembly_glb` and :func:`assembly_picture`, are independent (the writer runs them side by side)."""
-    assembly_glb(folder, name, meshes, components, motions)
-    assembly_picture(folder, name, meshes, components, from_below)
-
-
-def assembly_glb(folder: str, name: str, meshes: dict, components, motions=()) -> None:
-    """``<name>.glb`` of an assembly (:func:`assembly_model`): the pages that show it carry its bytes as data."""
-    from ..export.glb import write_glb
-
-    write_glb(Path(folder) / f"{name}.glb", name, meshes, components, motions)
-
-
-def assembly_picture(folder: str, name: str, meshes: dict, components, from_below: bool = False) -> None:
-    """``views/<name>.png`` of an assembly (:func:`assembly_model`)."""
-    from ..export.render import VIEW_DIR, VIEW_DIR_BELOW, palette_colour, render_iso
-
-    items = [(*meshes[key], matrix, palette_colour(k)) for k, (_, key, matrix) in enumerate(components)]
-    render_iso(items, Path(folder) / VIEWS / f"{name}.png", view=VIEW_DIR_BELOW if from_below else VIEW_DIR)
 
 
 class _Joined:
