@@ -47,24 +47,6 @@ def test_compiled_rotation_hits_equal_the_reference_bit_for_bit(sign, w):
     assert hits > 0 or w < 0.01  # the windows meet teeth
 
 
-def test_free_rotation_with_the_reference_hits(monkeypatch):
-    drv = Outline([_gear(12, 20.0, 23.0, 1500)], 0.1)
-    dvn = Outline([_gear(9, 14.0, 17.0, 1100)], 0.1)
-    C1 = np.array([39.0, 0.0])
-    M2 = np.array(Pose(0.1, (0.0, 0.0), tuple(C1)).matrix())
-    P1 = apply_pose(M2, dvn.points)
-    inv = np.array(Pose(-0.1, (0.0, 0.0), (0.0, 0.0)).matrix())
-    P2 = apply_pose(inv, drv.points - C1)
-    args = (drv, dvn, P1, C1, P2, np.linalg.norm(P1 - C1, axis=1), drv.boundary_lower_bound(P1),
-            np.linalg.norm(P2, axis=1), dvn.boundary_lower_bound(P2), M2)
-    fast = [backlash.free_rotation(*args, s, 0.01, 1.0, 1e-3, 0.5) for s in (1.0, -1.0)]
-    monkeypatch.setattr(backlash, "_rot_hits", ref.rot_hits)
-    slow = [backlash.free_rotation(*args, s, 0.01, 1.0, 1e-3, 0.5) for s in (1.0, -1.0)]
-    for f, s in zip(fast, slow):
-        assert f.delta == s.delta and f.n_pairs == s.n_pairs and f.point.tobytes() == s.point.tobytes()
-        assert math.isfinite(f.delta)
-
-
 def test_rot_bounds_are_the_norms_and_the_annulus_bound_bit_for_bit():
     """``backlash.rot_bounds`` (one compiled pass) gives the floats of ``norms(P - C)`` and
     ``Outline.boundary_lower_bound(P)`` it replaced in the proofs: points placed about a toothed body, inside its

@@ -547,27 +547,38 @@ def test_windowed_sweep_equals_the_plain_sweep():
 def test_the_common_area_without_the_boolean_where_apart_is_the_boolean_s_at_every_phase(gear_pair, monkeypatch,
                                                                                          squeeze):
     """transmission_sweep takes the common area as 0 without the boolean at a phase where the bodies are certainly
-    apart (crossing.certainly_apart): every phase's area is the boolean's, bit for bit, on a pair in mesh and on one
-    squeezed 0.2 mm into interference; the boolean runs only where they are not apart."""
+    apart (crossing.certainly_apart, in its compiled loop): every phase's area is the boolean's, bit for bit, on a pair
+    in mesh and on one squeezed 0.2 mm into interference; the boolean runs exactly where they are not apart."""
     import propulsor.checks.motion.transmission as tm
-    from propulsor.checks.motion.poses import compose_poses, inverse_pose
+    from propulsor.checks.motion.crossing import certainly_apart
+    from propulsor.checks.motion.poses import apply_pose, compose_poses, inverse_pose
 
     o1, i1, o2, i2 = gear_pair
     a = M * (Z1 + Z2) / 2 - squeeze
     phi0 = math.pi / Z2
     phis = phi0 + np.linspace(0, 2 * math.pi / Z2, 9)
     theta = lambda p: Z2 / Z1 * (p - phi0)
-    decided = []
-    real = tm.certainly_apart
-    monkeypatch.setattr(tm, "certainly_apart", lambda *args: decided.append(real(*args)) or decided[-1])
+    asked = []
+    real = tm.sweep_steps
+
+    def counting(*args):
+        *rest, boolean = args
+        return real(*rest, lambda rel: asked.append(rel.copy()) or boolean(rel))
+
+    monkeypatch.setattr(tm, "sweep_steps", counting)
     res = transmission_sweep(o1, (0, 0), o2, (a, 0), theta, phis)
     drv, dvn = outline(o1), outline(o2)
+    decided = []
     for k, p in enumerate(phis):
         M1 = Pose(theta(p), (0.0, 0.0), (0.0, 0.0)).matrix()
         M2 = Pose(-p, (0.0, 0.0), (a, 0.0)).matrix()
         rel = compose_poses(inverse_pose(M1), M2)
         assert res.overlap_area[k] == (drv.section ^ dvn.section.transform(rel)).area()
-    assert len(decided) == len(phis)
+        decided.append(certainly_apart(drv, dvn, apply_pose(rel, dvn.points), apply_pose(inverse_pose(rel), drv.points),
+                                       None))
+        if not decided[-1]:  # the boolean asked of this phase, with numpy's pose to the last bit
+            assert asked.pop(0).tobytes() == rel.tobytes()
+    assert not asked
     if squeeze:
         assert res.max_overlap > 0.0 and not all(decided)
     else:

@@ -5,7 +5,8 @@ size).  A kernel that calls a kernel of another module (the as-built contact's `
 ``contact_kernels``, which calls ``backlash``) has the callee compiled into it: when only the callee's file changes (a
 ``git pull`` in a checkout, an edit), numba loads the caller's old code, which runs the old callee, silently.
 :func:`bind` keys every cached kernel of a module on the stamps of all the kernel sources (:data:`SOURCES`, the
-files of ``checks.kernels.MODULES``): a change to any of them compiles them all again, once.
+files of ``checks.kernels.MODULES``): a change to any of them compiles them all again, once; and on which arctan2
+numpy calls here (:mod:`propulsor.npmath`, whose kernels call the same).
 """
 
 from __future__ import annotations
@@ -14,11 +15,13 @@ import os
 from pathlib import Path
 
 _HERE = Path(__file__).resolve().parent
-#: sources compiled into the kernels that call them, with no cached kernel of their own (fused.py's fma)
-INTRINSICS = (str(_HERE / "fused.py"),)
+#: sources compiled into the kernels that call them, with no cached kernel of their own (fused.py's fma, npmath.py's
+#: arctan2)
+INTRINSICS = (str(_HERE / "fused.py"), str(_HERE / "npmath.py"))
 #: every source file with cached kernels (``checks.kernels.MODULES``; a test keeps the two lists equal)
 SOURCES = tuple(str(_HERE / f) for f in ("checks/tri_tri.py", "checks/motion/nearest.py", "checks/motion/crossing.py",
-                                         "checks/motion/backlash.py", "checks/motion/contact_kernels.py",
+                                         "checks/motion/backlash.py", "checks/motion/transmission_kernel.py",
+                                         "checks/motion/contact_kernels.py",
                                          "checks/motion/contact_reuse.py", "checks/motion/contact_track.py",
                                          "checks/box_pairs.py", "export/normals.py", "export/render.py",
                                          "geometry/spline_foot.py", "laws/fourier_kernels.py",
@@ -53,7 +56,10 @@ def bind(namespace: dict, files=SOURCES) -> int:
         if cache_file is None or not hasattr(cache_file, "_source_stamp"):
             continue
         if s is None:
-            s = stamp(files)
+            from .npmath import KIND  # registers SVML's arctan2 with LLVM before any cached kernel is loaded
+
+            # and which arctan2 numpy takes here (npmath): a kernel compiled for the other is not loaded
+            s = stamp(files) + (("numpy arctan2", KIND),)
         cache_file._source_stamp = s
         n += 1
     return n

@@ -18,7 +18,8 @@ import numpy as np
 
 #: the modules whose kernels are cached on disk
 MODULES = ("propulsor.checks.tri_tri", "propulsor.checks.motion.nearest", "propulsor.checks.motion.crossing",
-           "propulsor.checks.motion.backlash", "propulsor.checks.motion.contact_kernels",
+           "propulsor.checks.motion.backlash", "propulsor.checks.motion.transmission_kernel",
+           "propulsor.checks.motion.contact_kernels",
            "propulsor.checks.motion.contact_reuse", "propulsor.checks.motion.contact_track",
            "propulsor.checks.box_pairs", "propulsor.export.normals", "propulsor.export.render",
            "propulsor.geometry.spline_foot", "propulsor.laws.fourier_kernels",
@@ -64,7 +65,7 @@ def _toothed(z: int, r: float, h: float, n: int = 24) -> np.ndarray:
 
 def warm() -> None:
     """Call every cached kernel once on small inputs, so that each is compiled (or loaded) now, in this process:
-    the mesh checks' triangle tests, the motion proof's distance, crossing and rotation searches, and the as-built
+    the mesh checks' triangle tests, the motion proof's distance, crossing and rotation searches and its steps, and the as-built
     contact search (its first hit and all of a window's, the per-tooth load's hits) on a pair of toothed rings, the
     flank curvatures' windows; the GLB's shading normals; the
     spline fit's foot-point distances and a spline's exact sweep; the poses' point product and the sweeps' steps
@@ -80,7 +81,7 @@ def warm() -> None:
     from ..laws.ratio_laws import FourierLaw
     from ..laws.walking import WalkingLaw
     from .mesh import self_intersections
-    from .motion import Outline
+    from .motion import Outline, transmission_sweep
     from .motion.backlash import _rot_hits, _zones_nb, rot_bounds
     from .motion.contact_events import DRIVE, PairOutlines, resolve_contact
     from .motion.contact_kernels import _nearest_teeth_nb
@@ -114,6 +115,9 @@ def warm() -> None:
     step = 2 * math.pi / z2 / 4
     resolve_contact(pair, lambda phi: np.asarray(phi, float) * z2 / z1, 0.0, 4 * step, DRIVE,
                     step_driver_rad=step * z2 / z1, max_evals=40)
+    # the whole-cycle proof's compiled steps (motion/transmission_kernel.py) and their free rotations
+    transmission_sweep(drv, (0.5 * m * (z1 + z2), 0.0), dvn, (0.0, 0.0), lambda phi: phi * z2 / z1,
+                       np.array([0.0, step]))
     pair._all_hits(0.0, 0.0, 1.0, step)  # every hit of a window (the reference of the per-tooth load's search)
     pair.hits(0.0, 0.0, 1.0, step)  # the per-tooth load's search
     _nearest_teeth_nb(pair.driver_teeth, np.array([0.1, 2.0]))

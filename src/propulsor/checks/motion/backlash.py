@@ -11,8 +11,9 @@ from numba import njit
 
 from ...planar import norms
 from .outlines import Outline
-from .poses import apply_pose
+from .poses import _apply_pose_nb
 from .nearest import disc_cells, grid_of
+from ...npmath import atan2
 from ...nbcache import bind
 
 __all__ = ['free_rotation', 'free_rotations', 'rot_bounds']
@@ -40,6 +41,17 @@ def _rot_hits(P: np.ndarray, C: np.ndarray, tgt: Outline, sign: float, w: float,
     return _rot_hits_both(P, C, tgt, sign, w, None, rho, lb)[0]
 
 
+def _target(tgt: Outline) -> tuple:
+    """What the compiled rotation hits need of a target outline: its vertices, edges and vertex grid (level 0), as one
+    tuple (cached on the outline)."""
+    k = getattr(tgt, "_rot_target", None)
+    if k is None:
+        g = grid_of(tgt)
+        k = tgt._rot_target = (tgt.points, g.seg_b, tgt.prev, float(tgt.half_len), float(g.origin[0]),
+                               float(g.origin[1]), float(g.h), int(g.nx), int(g.ny), g.start, g.items, g.near)
+    return k
+
+
 def _rot_hits_both(P: np.ndarray, C: np.ndarray, tgt: Outline, sign: float, w: float, w_other: float | None,
                    rho: np.ndarray, lb: np.ndarray):
     """:func:`_rot_hits` of the points turning by ``sign`` within ``w`` and, where ``w_other`` is given, of the same
@@ -48,20 +60,36 @@ def _rot_hits_both(P: np.ndarray, C: np.ndarray, tgt: Outline, sign: float, w: f
     its own: a hit within the narrower window lies on an edge with an end within that window's reach, so the wider
     reach adds only pairs whose hits lie beyond it, never taken (and in the same order of the pairs, so the same
     first pair on a tie); the two senses' roots are the same, only which of them enter differs.  So each sense's
-    hits are :func:`_rot_hits`'s of its own window, bit for bit (tests/test_backlash_kernel.py)."""
-    g = grid_of(tgt)
+    hits are :func:`_rot_hits`'s of its own window, bit for bit (tests/test_backlash_kernel.py).  Compiled:
+    :func:`_rot_hits_nb`."""
     both = w_other is not None
+    d, e, t, d2, e2, t2 = _rot_hits_nb(np.ascontiguousarray(P, np.float64), float(C[0]), float(C[1]), _target(tgt),
+                                       float(sign), float(w), float(w_other) if both else 0.0, both,
+                                       np.ascontiguousarray(rho, np.float64), np.ascontiguousarray(lb, np.float64))
+    return (d, e, t), ((d2, e2, t2) if both else None)
+
+
+@njit(cache=True)
+def _rot_hits_nb(P, cx, cy, tg, sign, w, w_other, both, rho, lb):
+    """The hits of :func:`_rot_hits_both` (``both``: of the other sense too, within ``w_other``; else its arrays are
+    empty), on the target ``tg`` (:func:`_target`): the pairs (:func:`_ring_pairs`), each root's angle numpy's
+    arctan2 of its sine and cosine terms (:func:`propulsor.npmath.atan2`, the floats ``np.arctan2`` gives them), each
+    sense's least entering hit (:func:`_rot_reduce`)."""
     wide = max(w, w_other) if both else w
     chord_factor = 2.0 * math.sin(0.5 * min(wide, math.pi))
-    offs, seg, Y, X, T, ok, ok2 = _ring_pairs(np.ascontiguousarray(P, np.float64), float(C[0]), float(C[1]),
-                                              tgt.points, g.seg_b, tgt.prev, tgt.half_len, g.origin[0], g.origin[1],
-                                              g.h, g.nx, g.ny, g.start, g.items, g.near, float(sign),
-                                              np.ascontiguousarray(rho, np.float64),
-                                              np.ascontiguousarray(lb, np.float64), chord_factor, both)
-    # numpy's own arctan2 (not the C library's, which differs in the last bit on about 7 % of arguments)
-    A = np.arctan2(Y, X)
-    one = _rot_reduce(offs, seg, sign * A, T, ok, float(w))
-    return one, (_rot_reduce(offs, seg, -sign * A, T, ok2, float(w_other)) if both else None)
+    V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items, near = tg
+    offs, seg, Y, X, T, ok, ok2 = _ring_pairs(P, cx, cy, V, seg_b, prev, half_len, ox, oy, h, nx, ny, start, items,
+                                              near, sign, rho, lb, chord_factor, both)
+    A = np.empty_like(Y)
+    for k in range(len(Y)):
+        for r in range(2):
+            A[k, r] = atan2(Y[k, r], X[k, r])
+    d, e, t = _rot_reduce(offs, seg, sign * A, T, ok, w)
+    if both:
+        d2, e2, t2 = _rot_reduce(offs, seg, -sign * A, T, ok2, w_other)
+    else:
+        d2, e2, t2 = np.empty(0), np.empty(0, np.int64), np.empty(0)
+    return d, e, t, d2, e2, t2
 
 
 @njit(cache=True, inline="always")
@@ -352,6 +380,71 @@ def _zones_nb(d1, rho1, d2, rho2, e2, t2, dmin, tol, arclen, seg_len, loop_id, p
     return n
 
 
+def _zone_args(dvn: Outline) -> tuple:
+    """What the compiled free rotation needs of the driven outline beyond its target: its vertices and edges, and
+    the arc-length places of :func:`_zones_nb` (one tuple, cached on the outline)."""
+    k = getattr(dvn, "_zone_args", None)
+    if k is None:
+        k = dvn._zone_args = (dvn.points, dvn.seg_a, dvn.seg_b, dvn.arclen, dvn.seg_len, dvn.loop_id, dvn.perimeter)
+    return k
+
+
+@njit(cache=True)
+def _free_rotation_nb(given, first, P1, c1x, c1y, P2, rho1, lb1, rho2, lb2, M2, body_sign, w0, w_max, tol, merge,
+                      tg_drv, tg_dvn, zone):
+    """:func:`free_rotation`, compiled: (delta, pairs, world point x, y); ``given``: ``first`` holds the two sides'
+    hits within w0 ((d1, e1, t1, d2, e2, t2), :func:`free_rotations`)."""
+    pts, seg_a, seg_b, arclen, seg_len, loop_id, perimeter = zone
+    w = w0
+    d1, e1, t1, d2, e2, t2 = first
+    while True:
+        if given:
+            given = False
+        else:
+            d1, e1, t1, _a, _b, _c = _rot_hits_nb(P1, c1x, c1y, tg_drv, body_sign, w, 0.0, False, rho1, lb1)
+            d2, e2, t2, _a, _b, _c = _rot_hits_nb(P2, 0.0, 0.0, tg_dvn, -body_sign, w, 0.0, False, rho2, lb2)
+        dmin = min(d1.min(), d2.min())
+        if not math.isfinite(dmin):
+            if w >= w_max:
+                return math.inf, 0, math.nan, math.nan
+            w = min(4.0 * w, w_max)
+            continue
+        r1 = np.inf
+        for i in range(len(d1)):
+            if math.isfinite(d1[i]) and rho1[i] < r1:
+                r1 = rho1[i]
+        r2 = np.inf
+        for i in range(len(d2)):
+            if math.isfinite(d2[i]) and rho2[i] < r2:
+                r2 = rho2[i]
+        rmin = max(min(r1, r2), 1e-9)
+        need = dmin + 2.0 * tol / rmin
+        if need > w and w < w_max:
+            w = min(need, w_max)
+            continue
+        break
+    # contact zones at the touching position: gap (arc at the point's radius) within tol
+    n_pairs = _zones_nb(d1, rho1, d2, rho2, e2, t2, dmin, tol, arclen, seg_len, loop_id, perimeter, merge)
+    # world point of the first contact (driven rotated into contact)
+    if d1.min() <= d2.min():
+        i = np.argmin(d1)
+        px, py = pts[i, 0], pts[i, 1]
+    else:
+        i = np.argmin(d2)
+        k = e2[i]
+        px = seg_a[k, 0] + t2[i] * (seg_b[k, 0] - seg_a[k, 0])
+        py = seg_a[k, 1] + t2[i] * (seg_b[k, 1] - seg_a[k, 1])
+    ang = body_sign * dmin
+    c, s = math.cos(ang), math.sin(ang)
+    q = np.empty((1, 2))
+    q[0, 0], q[0, 1] = c * px - s * py, s * px + c * py
+    pw = _apply_pose_nb(M2, q)
+    return dmin, n_pairs, pw[0, 0], pw[0, 1]
+
+
+_NO_HITS = (np.empty(0), np.empty(0, np.int64), np.empty(0), np.empty(0), np.empty(0, np.int64), np.empty(0))
+
+
 def free_rotation(drv: Outline, dvn: Outline, P1: np.ndarray, C1: np.ndarray, P2: np.ndarray,
                    rho1: np.ndarray, lb1: np.ndarray, rho2: np.ndarray, lb2: np.ndarray,
                    M2: np.ndarray, body_sign: float, w0: float, w_max: float, tol: float, merge: float,
@@ -361,47 +454,19 @@ def free_rotation(drv: Outline, dvn: Outline, P1: np.ndarray, C1: np.ndarray, P2
     P1: driven vertices in the driver frame, C1: driven centre in the driver frame;
     P2: driver vertices in the driven frame (driven centre at its origin);
     rho*/lb*: their distances from the rotation centre / lower bounds of their
-    distances from the other body.
+    distances from the other body; M2: the driven body's pose (2x3).
     Side 1: driven vertices hit driver edges, rotating by +body_sign about C1.
     Side 2: driver vertices hit driven edges, rotating by −body_sign about 0.
+    The window grows from w0 (x4 up to w_max) until it holds a hit and the contact zones' tolerance past it.
     ``first``: the two sides' hits within the window w0, when already found (:func:`free_rotations`).
+    Compiled: :func:`_free_rotation_nb` (the Python formulation it replaced, bit for bit: tests/rot_hits_reference.py).
     """
-    w = w0
-    while True:
-        if first is not None:
-            (d1, e1, t1), (d2, e2, t2) = first
-            first = None
-        else:
-            d1, e1, t1 = _rot_hits(P1, C1, drv, body_sign, w, rho1, lb1)
-            d2, e2, t2 = _rot_hits(P2, np.zeros(2), dvn, -body_sign, w, rho2, lb2)
-        dmin = min(d1.min(), d2.min())
-        if not np.isfinite(dmin):
-            if w >= w_max:
-                return _FreeRotation(math.inf, 0, np.full(2, np.nan))
-            w = min(4.0 * w, w_max)
-            continue
-        rmin = max(min(rho1[np.isfinite(d1)].min(initial=np.inf), rho2[np.isfinite(d2)].min(initial=np.inf)), 1e-9)
-        need = dmin + 2.0 * tol / rmin
-        if need > w and w < w_max:
-            w = min(need, w_max)
-            continue
-        break
-    # contact zones at the touching position: gap (arc at the point's radius) within tol
-    n_pairs = _zones_nb(d1, np.ascontiguousarray(rho1, np.float64), d2, np.ascontiguousarray(rho2, np.float64), e2, t2,
-                        float(dmin), float(tol), dvn.arclen, dvn.seg_len, dvn.loop_id, dvn.perimeter, float(merge))
-    # world point of the first contact (driven rotated into contact)
-    if d1.min() <= d2.min():
-        i = int(np.argmin(d1))
-        pt_driven_frame = dvn.points[i]
-        ang = body_sign * dmin
-    else:
-        i = int(np.argmin(d2))
-        k = e2[i]
-        pt_driven_frame = dvn.seg_a[k] + t2[i] * (dvn.seg_b[k] - dvn.seg_a[k])
-        ang = body_sign * dmin
-    c, s = math.cos(ang), math.sin(ang)
-    pw = apply_pose(M2, np.array([[c * pt_driven_frame[0] - s * pt_driven_frame[1], s * pt_driven_frame[0] + c * pt_driven_frame[1]]]))[0]
-    return _FreeRotation(float(dmin), n_pairs, pw)
+    f64 = lambda a: np.ascontiguousarray(a, np.float64)  # noqa: E731
+    hits = _NO_HITS if first is None else tuple(first[0]) + tuple(first[1])
+    d, n, x, y = _free_rotation_nb(first is not None, hits, f64(P1), float(C1[0]), float(C1[1]), f64(P2), f64(rho1),
+                                   f64(lb1), f64(rho2), f64(lb2), f64(M2), float(body_sign), float(w0), float(w_max),
+                                   float(tol), float(merge), _target(drv), _target(dvn), _zone_args(dvn))
+    return _FreeRotation(float(d), int(n), np.array([x, y]))
 
 
 def free_rotations(drv: Outline, dvn: Outline, P1: np.ndarray, C1: np.ndarray, P2: np.ndarray,
@@ -410,12 +475,26 @@ def free_rotations(drv: Outline, dvn: Outline, P1: np.ndarray, C1: np.ndarray, P
                    merge: float) -> tuple[_FreeRotation, _FreeRotation]:
     """:func:`free_rotation` of the driven body both ways at one position: turning by ``body_sign`` (first window
     ``w_this``) and by ``-body_sign`` (``w_other``), the same results, each side's pairs of the first windows sought
-    once for both (:func:`_rot_hits_both`: where a window must grow, that sense searches on alone)."""
-    h1, h1o = _rot_hits_both(P1, C1, drv, body_sign, w_this, w_other, rho1, lb1)
-    h2, h2o = _rot_hits_both(P2, np.zeros(2), dvn, -body_sign, w_this, w_other, rho2, lb2)
-    geo = (P1, C1, P2, rho1, lb1, rho2, lb2, M2)
-    return (free_rotation(drv, dvn, *geo, body_sign, w_this, w_max, tol, merge, first=(h1, h2)),
-            free_rotation(drv, dvn, *geo, -body_sign, w_other, w_max, tol, merge, first=(h1o, h2o)))
+    once for both (:func:`_rot_hits_both`: where a window must grow, that sense searches on alone).  Compiled:
+    :func:`_free_rotations_nb`."""
+    f64 = lambda a: np.ascontiguousarray(a, np.float64)  # noqa: E731
+    got = _free_rotations_nb(f64(P1), float(C1[0]), float(C1[1]), f64(P2), f64(rho1), f64(lb1), f64(rho2), f64(lb2),
+                             f64(M2), float(body_sign), float(w_this), float(w_other), float(w_max), float(tol),
+                             float(merge), _target(drv), _target(dvn), _zone_args(dvn))
+    return tuple(_FreeRotation(float(d), int(n), np.array([x, y])) for d, n, x, y in got)
+
+
+@njit(cache=True)
+def _free_rotations_nb(P1, c1x, c1y, P2, rho1, lb1, rho2, lb2, M2, body_sign, w_this, w_other, w_max, tol, merge,
+                       tg_drv, tg_dvn, zone):
+    """:func:`free_rotations`, compiled: the two senses' (delta, pairs, x, y)."""
+    a1, b1, c1, a2, b2, c2 = _rot_hits_nb(P1, c1x, c1y, tg_drv, body_sign, w_this, w_other, True, rho1, lb1)
+    a3, b3, c3, a4, b4, c4 = _rot_hits_nb(P2, 0.0, 0.0, tg_dvn, -body_sign, w_this, w_other, True, rho2, lb2)
+    one = _free_rotation_nb(True, (a1, b1, c1, a3, b3, c3), P1, c1x, c1y, P2, rho1, lb1, rho2, lb2, M2, body_sign,
+                            w_this, w_max, tol, merge, tg_drv, tg_dvn, zone)
+    other = _free_rotation_nb(True, (a2, b2, c2, a4, b4, c4), P1, c1x, c1y, P2, rho1, lb1, rho2, lb2, M2, -body_sign,
+                              w_other, w_max, tol, merge, tg_drv, tg_dvn, zone)
+    return one, other
 
 
 # the disk cache of these kernels keyed on every kernel source (one may be compiled into another's code)

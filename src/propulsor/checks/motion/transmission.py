@@ -15,10 +15,8 @@ from ...check import Check
 from ...errors import require, require_positive
 from ...planar import norms
 from .outlines import outline
-from .poses import Pose, apply_pose, compose_poses, inverse_pose
 from .distance import check_record
-from .backlash import free_rotations, rot_bounds
-from .crossing import certainly_apart
+from .transmission_kernel import sweep_steps
 
 __all__ = ['TransmissionResult', 'transmission_sweep']
 
@@ -187,33 +185,12 @@ def transmission_sweep(driver_profile, driver_center, driven_profile, driven_cen
     pc = np.zeros(N, int)
     ptd = np.zeros((N, 2))
     ptc = np.zeros((N, 2))
-    w_fwd = w_back = min(1e-3, max_angle)
-    for k in range(N):
-        M1 = Pose(s1 * theta[k], (0.0, 0.0), tuple(c1)).matrix()
-        M2 = Pose(s2 * phis[k], (0.0, 0.0), tuple(c2)).matrix()
-        rel21 = compose_poses(inverse_pose(M1), M2)  # driven body -> driver body
-        rel12 = inverse_pose(rel21)
-        P1 = apply_pose(rel21, dvn.points)
-        P2 = apply_pose(rel12, drv.points)
-        # the common area: 0 without the boolean where the boundaries certainly do not cross and neither body holds
-        # a loop of the other (crossing.certainly_apart, as the 2D sweeps do: the boolean's area is 0.0 there too)
-        area[k] = 0.0 if certainly_apart(drv, dvn, P1, P2, None) else (drv.section ^ dvn.section.transform(rel21)).area()
-        if area[k] > policy.OVERLAP_AREA_TOL_MM2:  # interfering: free rotations have no meaning
-            fwd[k] = back[k] = np.nan
-            ptc[k] = ptd[k] = np.nan
-            continue
-        C1 = rel21[:, 2]
-        rho1, lb1 = rot_bounds(P1, C1, drv)
-        rho2, lb2 = rot_bounds(P2, (0.0, 0.0), dvn)
-        f, b = free_rotations(drv, dvn, P1, C1, P2, rho1, lb1, rho2, lb2, M2, s2, w_fwd, w_back, max_angle, contact_tol,
-                              contact_merge)
-        fwd[k], pc[k], ptc[k] = f.delta, f.n_pairs, f.point
-        back[k], pd[k], ptd[k] = b.delta, b.n_pairs, b.point
-        # start the next step's search just above this step's answer
-        if math.isfinite(f.delta):
-            w_fwd = min(max(1.25 * f.delta, 1e-6), max_angle)
-        if math.isfinite(b.delta):
-            w_back = min(max(1.25 * b.delta, 1e-6), max_angle)
+    # the steps in one compiled loop (transmission_kernel): at each step the poses, whether the bodies are certainly
+    # apart (crossing.certainly_apart: their common area 0.0 without the boolean, as the 2D sweeps do) and the free
+    # rotations both ways (backlash.free_rotations), each step's first windows just above the step before's answers;
+    # where the bodies may overlap, the area from the boolean, and no rotations above the tolerance (interfering)
+    sweep_steps(drv, dvn, phis, theta, (s1, s2), c1, c2, max_angle, contact_tol, contact_merge,
+                (area, fwd, back, pd, pc, ptd, ptc), lambda rel21: (drv.section ^ dvn.section.transform(rel21)).area())
     if r_ref is None:
         pts = np.vstack([ptd, ptc])
         pts = pts[np.all(np.isfinite(pts), axis=1)]
