@@ -324,6 +324,28 @@ envelope chain (the other way to make those searches cheap): on this machine num
 the same loop) differs from libm's ``atan2`` in 2.5 % of 200 000 random pairs and numpy's ``arctan`` from libm's in
 0.13 %, while numpy's ``cos`` equals libm's everywhere and numba's ``math.atan2`` is libm's: a compiled chain must
 take its arc tangents from numpy's loop (or a copy of its algorithm), not from numba's.
+
+2026-12-04, a later session (2 cores; from 82d843d).  numpy's loop is callable from a kernel: numpy exports SVML's
+``__svml_atan28_ha`` from its core module (the ``_ha`` one: the plain ``__svml_atan28`` differs from numpy's results
+on 26 % of pairs, ``_ha`` on none of 2 million), so ``propulsor/npmath.py`` registers it with LLVM and calls it on
+one lane of eight (a numba intrinsic): ``np.arctan2``'s float bit for bit, or the C library's where numpy takes that
+(``NPY_DISABLE_CPU_FEATURES=X86_V4``: checked, both ways).  First use (db01302): the whole-cycle proof's steps in one
+compiled loop (``checks/motion/transmission_kernel.py``): the proof of the seed-002 pair, 82d843d in a worktree and
+the new tree in turn, two rounds of four in one process each (the least): 0.278 / 0.269 -> 0.234 / 0.231 CPU s, its
+Fourier form 0.265 / 0.265 -> 0.223 / 0.221, seed 000 0.378 / 0.374 -> 0.324 / 0.342, the elliptical pair 0.151 /
+0.145 -> 0.132 / 0.129 (-12 to -17 %), every result identical; the variants themselves, three rounds of three in
+turn, 1.72-1.86 / 1.77-2.01 / 1.74-1.83 -> 1.73-1.75 / 1.76-2.02 / 1.83-1.93 CPU s: the 0.04 s is below this
+machine's spread today.  What is left of the proof (0.23 s): its steps 0.13-0.15 (the certainly-apart test about
+10 % of the proof: tried without it, 0.216-0.233 against 0.244), the 32 crops by Clipper 0.05 and their outlines 0.04
+(1.2 ms each, 4 200-6 000 vertices).  The contact's margin once more, decided: not made smaller.  A position is
+searched from a start a margin m = 3e-4 + 0.25 |d phi| rad on the free side of the last contact, which holds while
+the contact moves less than that between two positions; at a driven speed 44 % off the law's (seed 000 as cut) and
+the sampled spacing (about 9e-4 rad) it moves 4e-4 rad: 1e-4 would leave the start inside the mate there, and a
+start inside finds a later contact, not the first.  The first window's share 0.8 / 1.3 against 1.05: 1.11-1.16 /
+0.69-0.70 against 0.68-0.84 s both directions (kept).  The reuse's slack 0.05 / 0.2 mm, widening 0.01 / 0.04 rad,
+prune runs of 16 and a field of 1 000 cells: within the spread (0.69-0.91 s against 0.71-0.81).  Not worth the change
+(measured): the pickle round trip of a job run in place (``parallel.as_if_sent``, the design of 0.88 MB) 0.016 s a
+direction, 1.2 % of a variant.
 """
 
 from __future__ import annotations

@@ -184,6 +184,10 @@ writes the header of every object it scans (pages its workers share, copied); no
 processes, the main process 5.9-6.1 -> 4.9-5.0 CPU s, its peak 643 -> 648 MiB; the files identical.  Tried and not
 kept: glibc's malloc held (mmap threshold 32 MiB, trim 256 MiB, top pad 64 MiB through ``mallopt``): minor faults
 300 000 -> 260 000 a build, the CPU within the spread (9.63 / 9.59 -> 9.91 / 9.34 user s), the peak 4 MiB more.
+2026-12-04, a later session (2 cores, idle but slow that hour; db01302: the proof's steps compiled): ncgears 38.98 s
+wall (40.79 CPU s), peak 287 MiB; ours 8.78 s wall (12.54 CPU s), peak 639 MiB: wall ratio 0.225, CPU ratio 0.307;
+``ncg_elliptical.toml`` 6.02 s wall (9.50 CPU s).  ``make`` from clean at db01302 on the same slow hour: 87.7 s wall,
+160.6 user s (a core idle only in the first 4 s and the last 3 s: vmstat), its 636 files identical.
 """
 
 from __future__ import annotations
