@@ -56,7 +56,8 @@ def test_compiled_poses_are_numpy_s_bit_for_bit():
     rng = np.random.default_rng(3)
     for it in range(600):
         th, ph = rng.uniform(-20.0, 20.0, 2)
-        c1 = (float(rng.uniform(-300, 300)), float(rng.uniform(-300, 300))) if it % 4 else (float(rng.uniform(1, 300)), 0.0)
+        c1 = ((float(rng.uniform(-300, 300)), float(rng.uniform(-300, 300))) if it % 4
+              else (float(rng.uniform(1, 300)), 0.0))
         c2 = (float(rng.uniform(-50, 50)), float(rng.uniform(-50, 50))) if it % 4 >= 2 else (0.0, 0.0)
         s1, s2 = (1.0, -1.0) if it % 3 else (1.0, 1.0)
         M1 = Pose(s1 * th, (0.0, 0.0), c1).matrix()

@@ -99,7 +99,8 @@ def steps(drv, dvn, phis, theta, senses, c1, c2, max_angle, contact_tol, contact
         rel12 = inverse_pose(rel21)
         P1 = apply_pose(rel21, dvn.points)
         P2 = apply_pose(rel12, drv.points)
-        area[k] = 0.0 if certainly_apart(drv, dvn, P1, P2, None) else (drv.section ^ dvn.section.transform(rel21)).area()
+        apart = certainly_apart(drv, dvn, P1, P2, None)
+        area[k] = 0.0 if apart else (drv.section ^ dvn.section.transform(rel21)).area()
         if area[k] > policy.OVERLAP_AREA_TOL_MM2:
             fwd[k] = back[k] = np.nan
             ptc[k] = ptd[k] = np.nan

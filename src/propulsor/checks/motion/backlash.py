@@ -459,7 +459,8 @@ def free_rotation(drv: Outline, dvn: Outline, P1: np.ndarray, C1: np.ndarray, P2
     Side 2: driver vertices hit driven edges, rotating by −body_sign about 0.
     The window grows from w0 (x4 up to w_max) until it holds a hit and the contact zones' tolerance past it.
     ``first``: the two sides' hits within the window w0, when already found (:func:`free_rotations`).
-    Compiled: :func:`_free_rotation_nb` (the Python formulation it replaced, bit for bit: tests/transmission_reference.py).
+    Compiled: :func:`_free_rotation_nb` (the Python formulation it replaced, bit for bit:
+    tests/transmission_reference.py).
     """
     f64 = lambda a: np.ascontiguousarray(a, np.float64)  # noqa: E731
     hits = _NO_HITS if first is None else tuple(first[0]) + tuple(first[1])
