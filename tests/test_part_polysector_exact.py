@@ -1458,6 +1458,7 @@ def test_the_proof_outlines_every_sector_that_reaches_the_gear_in_the_period(mon
     monkeypatch.setattr(po, "place", place)
     monkeypatch.setattr(cm, "outline", outline)
     monkeypatch.setattr(bl, "free_rotation", turned)
+    monkeypatch.setattr(bl, "free_rotations", turned)  # both senses at once (compiled: not through free_rotation)
     dd = pd.design(_p(**changes))
     per = 2 * math.pi / (dd.p.flows * dd.p.sectors_per_flow)
     seg = policy.MOTION_MAX_SEGMENT_MM
