@@ -1577,3 +1577,49 @@ def test_a_jam_between_the_flows_is_the_overlap_of_the_jammed_flow_at_the_actual
     assert np.all(pr.overlap_flow[jam, other[jam]] > 1e-3)
     assert np.all(pr.overlap_flow[np.arange(len(pr.phi)), drv_flow - 1] < 1e-6)
     assert np.allclose(pr.overlap_flow, want, rtol=1e-6, atol=1e-9)
+
+
+@pytest.mark.parametrize("changes", [{}, dict(conditional_teeth=[36]), dict(flows=1, conditional_teeth=[36])])
+def test_a_start_s_overlap_without_the_boolean_where_apart_decides_as_the_boolean(monkeypatch, changes):
+    """prove_position tests each free start of a sector for overlap by the boolean only where the outlines are not
+    certainly apart (crossing.certainly_apart: there the boolean's area is 0, so the start is free): every array of the
+    proof is the one the boolean at every start gives, bit for bit (2 steps a pitch, the first position: some starts
+    land inside the gear and the boolean turns them down), and the boolean is taken at fewer starts."""
+    import manifold3d as m3d
+
+    import propulsor.checks.motion.crossing as cr
+
+    dd = pd.design(_p(**changes))
+    q = dd.positions[0]
+    booleans = []
+    real_xor = m3d.CrossSection.__xor__
+
+    def counted(a, b):
+        import sys
+
+        r = real_xor(a, b)
+        booleans.append((r.area(), sys._getframe(1).f_code.co_name))
+        return r
+
+    def same(a, b) -> bool:
+        if isinstance(a, np.ndarray):
+            return a.dtype == b.dtype and a.tobytes() == b.tobytes()
+        if isinstance(a, dict):
+            return a.keys() == b.keys() and all(same(a[k], b[k]) for k in a)
+        if isinstance(a, (list, tuple)):
+            return len(a) == len(b) and all(same(x, y) for x, y in zip(a, b))
+        if dataclasses.is_dataclass(a):
+            return all(same(getattr(a, f.name), getattr(b, f.name)) for f in dataclasses.fields(a))
+        return bool(a == b) or (a != a and b != b)
+
+    monkeypatch.setattr(m3d.CrossSection, "__xor__", counted)
+    fast = mp.prove_position(dd, q, 2, 3e-4)
+    n_fast, inside = len(booleans), [a > 1e-6 for a, _ in booleans].count(True)
+    turned_down = [a > 1e-6 for a, f in booleans if f == "sector_free"].count(True)
+    monkeypatch.setattr(cr, "certainly_apart", lambda *args: False)
+    booleans.clear()
+    slow = mp.prove_position(dd, q, 2, 3e-4)
+    for f in dataclasses.fields(fast):
+        assert same(getattr(fast, f.name), getattr(slow, f.name)), f.name
+    assert n_fast < len(booleans) and inside == [a > 1e-6 for a, _ in booleans].count(True)
+    assert turned_down == [a > 1e-6 for a, f in booleans if f == "sector_free"].count(True) >= 2
