@@ -107,7 +107,8 @@ def sweep_steps(drv, dvn, phis, theta, senses, c1, c2, w_max: float, tol: float,
                 boolean) -> None:
     """Every step of the sweep into ``out`` = (area, fwd, back, pairs drive, pairs coast, point drive, point coast),
     the compiled loop (:func:`_sweep_nb`) run from step to step where the bodies may overlap: ``boolean(rel21)`` gives
-    their common area there (mm^2); above ``tol_area`` a step's rotations are nan, as the loop it replaced left them."""
+    their common area there (mm^2); above ``policy.OVERLAP_AREA_TOL_MM2`` a step's rotations and contact points are
+    nan and its pairs 0, as the loop it replaced left them."""
     from ... import policy
     from .backlash import _target, _zone_args
     from .crossing import apart_args
