@@ -41,9 +41,9 @@ import numpy as np
 from ... import policy
 from .contact_kernels import (DRIVE, REVERSE, _first_hit_pruned, _least, _nearest_tooth_nb, _pair_hits,  # noqa: F401
                               _pair_hits_pruned, _pruned_window, _side_hits, _window_bounds, _window_nb)
+from .backlash import _target
 from .contact_reuse import add_slots, new_caches, seed_slots
 from .contact_track import track
-from .nearest import grid_of
 from ...planar import box, norms
 from .outlines import Outline
 
@@ -150,11 +150,9 @@ class PairOutlines:
         return float(np.max(np.arccos(c))) + 0.02
 
     def _target(self, o: Outline) -> tuple:
-        """What the compiled hit search needs of a target outline (its vertex grid, edges and annulus)."""
-        g = grid_of(o)
-        return (np.ascontiguousarray(o.points, np.float64), g.seg_b, o.prev, float(o.half_len), float(g.origin[0]),
-                float(g.origin[1]), float(g.h), int(g.nx), int(g.ny), g.start, g.items, g.near, float(o.center[0]),
-                float(o.center[1]), float(o.radius), float(o.r_min))
+        """What the compiled hit search needs of a target outline: the rotation hits' (:func:`.backlash._target`: its
+        vertices, edges and vertex grid) and its annulus."""
+        return _target(o) + (float(o.center[0]), float(o.center[1]), float(o.radius), float(o.r_min))
 
     @property
     def _kernel_args(self) -> tuple:

@@ -16,8 +16,9 @@ import math
 import numpy as np
 from numba import njit
 
-from .backlash import _free_rotations_nb, _rot_bounds_nb
-from .crossing import _apart
+from ... import policy
+from .backlash import _free_rotations_nb, _rot_bounds_nb, _target, _zone_args
+from .crossing import _apart, apart_args
 from .poses import _apply_pose_nb
 from ...fused import fma
 from ...nbcache import bind
@@ -109,10 +110,6 @@ def sweep_steps(drv, dvn, phis, theta, senses, c1, c2, w_max: float, tol: float,
     the compiled loop (:func:`_sweep_nb`) run from step to step where the bodies may overlap: ``boolean(rel21)`` gives
     their common area there (mm^2); above ``policy.OVERLAP_AREA_TOL_MM2`` a step's rotations and contact points are
     nan and its pairs 0, as the loop it replaced left them."""
-    from ... import policy
-    from .backlash import _target, _zone_args
-    from .crossing import apart_args
-
     area, fwd, back, pd, pc, ptd, ptc = out
     n = len(phis)
     s1, s2 = float(senses[0]), float(senses[1])

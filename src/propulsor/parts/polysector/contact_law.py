@@ -170,16 +170,13 @@ class ContactLaw:
         """Whether sector j and the gear have area in common (above 1e-12 mm^2: a free start is what the rotational
         contact needs): the manifold3d intersection, unless the outlines are certainly apart (no edges that meet, no
         loop inside the other: :func:`~propulsor.checks.motion.crossing.certainly_apart`), where its area is 0."""
-        from ...checks.motion.crossing import certainly_apart
+        from ...checks.motion.crossing import common_area
         from ...checks.motion.poses import apply_pose, inverse_pose
 
         rel21, _ = self._rel21(phi, th)
         sec, gear = self.b.sectors[j], self.b.gear
-        if certainly_apart(sec, gear, apply_pose(rel21, gear.points), apply_pose(inverse_pose(rel21), sec.points),
-                           None):
-            return False
-        area = (sec.section ^ gear.section.transform(rel21)).area()
-        return area > 1e-12
+        return common_area(sec, gear, rel21, apply_pose(rel21, gear.points),
+                           apply_pose(inverse_pose(rel21), sec.points)) > 1e-12
 
     def back_room(self, j: int, phi: float, th: float, w0: float):
         """Free rotation of the gear backwards from th against sector j: (room, world contact point)."""

@@ -124,7 +124,7 @@ def _driving_corner_span(dd, pos, chord_tol, r_a2, O2) -> tuple[float, float]:
 def prove_position(dd, pos, steps_per_pitch: int | None = None, chord_tol: float = policy.MOTION_CHORD_TOL_MM):
     from ...checks.motion import outline
     from ...checks.motion.backlash import free_rotations, rot_bounds
-    from ...checks.motion.crossing import certainly_apart
+    from ...checks.motion.crossing import common_area
     from ...planar import norms
     from ...checks.motion.poses import Pose, apply_pose, compose_poses, inverse_pose
 
@@ -198,9 +198,8 @@ def prove_position(dd, pos, steps_per_pitch: int | None = None, chord_tol: float
         P1 = apply_pose(rel21, gear.points)
         C1 = rel21[:, 2]
         P2 = apply_pose(rel12, drv.points)
-        # the common area: 0 without the boolean where the outlines are certainly apart (crossing.certainly_apart)
-        if (not certainly_apart(drv, gear, P1, P2, None)
-                and (drv.section ^ gear.section.transform(rel21)).area() > policy.OVERLAP_AREA_TOL_MM2):
+        # the common area: 0 without the boolean where the outlines are certainly apart (crossing.common_area)
+        if common_area(drv, gear, rel21, P1, P2) > policy.OVERLAP_AREA_TOL_MM2:
             return None
         rho1, lb1 = rot_bounds(P1, C1, drv)
         rho2, lb2 = rot_bounds(P2, (0.0, 0.0), gear)
