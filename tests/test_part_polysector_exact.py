@@ -1626,3 +1626,45 @@ def test_a_start_s_overlap_without_the_boolean_where_apart_decides_as_the_boolea
         assert same(getattr(fast, f.name), getattr(slow, f.name)), f.name
     assert n_fast < len(booleans) and inside == [a > 1e-6 for a, _ in booleans].count(True)
     assert turned_down == [a > 1e-6 for a, f in booleans if f == "sector_free"].count(True) >= 2
+
+
+@pytest.mark.parametrize("changes", [{}, dict(flows=1, conditional_teeth=[36])])
+def test_a_start_inside_the_gear_gets_no_free_rotation(monkeypatch, changes):
+    """A sector's free start (prove_position's ``sector_free``) is turned down when it shares more than
+    OVERLAP_AREA_TOL_MM2 with the gear, before any free rotation is searched from it: a rotation from inside the gear
+    finds a false first contact.  At 3 steps a pitch starts land inside by 0.02-0.3 mm^2 (the test asserts some do, so
+    that a tolerance loosened anywhere up to 1 mm^2 is caught); for each start the free rotations run if and only if
+    its common area is within the tolerance."""
+    import sys
+
+    from propulsor import policy
+    import propulsor.checks.motion.backlash as bl
+    import propulsor.checks.motion.crossing as cr
+
+    events = []  # ("area", common area of a start) / ("rotations", the turn found) from sector_free, in order
+    real_area, real_rot = cr.common_area, bl.free_rotations
+
+    def area(*args):
+        got = real_area(*args)
+        if sys._getframe(1).f_code.co_name == "sector_free":
+            events.append(("area", got))
+        return got
+
+    def rotations(*args):
+        got = real_rot(*args)
+        if sys._getframe(1).f_code.co_name == "sector_free":
+            events.append(("rotations", got[0].delta))
+        return got
+
+    monkeypatch.setattr(cr, "common_area", area)
+    monkeypatch.setattr(bl, "free_rotations", rotations)
+    dd = pd.design(_p(**changes))
+    mp.prove_position(dd, dd.positions[0], 3, 3e-4)
+    tol = policy.OVERLAP_AREA_TOL_MM2
+    starts = [k for k, (what, _) in enumerate(events) if what == "area"]
+    assert len(starts) >= 20
+    inside = [events[k][1] for k in starts if events[k][1] > tol]
+    assert len(inside) >= 2 and min(inside) <= 1.0
+    for k in starts:
+        rotated = k + 1 < len(events) and events[k + 1][0] == "rotations"
+        assert rotated == (events[k][1] <= tol), (k, events[k])
