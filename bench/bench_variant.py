@@ -356,19 +356,21 @@ the tip shortening 0.08), the proof 0.15 s.  The one-point envelope chain is sma
 13 894 calls, 0.14 s): compiling it is worth at most that, not the lever it was taken for.  perf (Debian's
 linux-perf; numba's code shows as [JIT]) puts 7.3 % of a variant and about a fifth of the contact search's own time
 in numba's reference counts (``NRT_incref`` / ``NRT_decref``: an atomic add each, on every array variable a kernel
-takes or copies that LLVM's reference-count pruning does not pair off).  Where they are was not settled: a sample of
-the return addresses of the first 700 000 increfs of one direction (gdb, the kernels compiled afresh so that their
-symbols are known) put 47 % in ``nearest._nearest_vertex`` (called by the reuse's refresh once a candidate), 19 % in
-``_side_hits``, 12 % in ``_track_nb``; but taking the refresh's nearest vertex inline (``_nearest_vertex_low``), the
-candidate scan's helpers (``_room``, ``_sort_few``, ``_among``) written out in ``_side_hits``, numba's IR inlining
-of the small helpers and ``first_hit_reusing`` written out in ``_track_nb`` each left the contact's time (both
-directions, the old and new tree alternating, three rounds: 0.70-0.83 s a round either way) and the counts' share
-(7.8-9.2 %) where they were: the sample was of a direction's start (cold caches, a refresh every few positions), not
-of its steady state.  Not one of them kept.  A limit met on the way: numba cannot IR-inline a call with more than 30
-arguments (CPython 3.11 compiles it to CALL_FUNCTION_EX, which numba reads as ``*args``: "Calling a closure with *args
-is unsupported").  ``make`` from clean at 08f6215: 65.5 s wall, 118.5 user + 5.8 sys s; ``propulsor build`` of the 19
-part files alone 60.7 s wall on a quiet minute: its imports 2.4 s and the part files' estimates 0.7 s before the first
-build (0.5 s of it the balancer's, whose estimate needs its suspension design), the road wheel alone for its last
+takes or copies that LLVM's reference-count pruning does not pair off).  Their sites, from the return addresses of
+400 000 increfs in a direction's steady state (gdb, a breakpoint enabled mid-run, on kernels compiled in a fresh
+cache so that their symbols are known): 44 % the three array arguments of ``nearest._nearest_vertex`` (called once a
+candidate by the reuse's refresh), 18 % one site in ``_side_hits``'s vertex loop, 13 % ``_track_nb``, 8 %
+``first_hit_reusing``, 6 % ``_side``.  numba's IR inlining does not remove them: with ``_nearest_vertex_low``
+(inline="always") called in the refresh instead, the same share moved into ``_refresh`` (48 %); only code written out
+in the loop takes no reference.  Together they are about 0.1 s a variant (in the contact's bench, both directions:
+0.14 s of 0.75, a fifth of its compiled time).  The changes tried (that one, the candidate scan's helpers written out
+in ``_side_hits``, ``first_hit_reusing`` written out in ``_track_nb``) left the contact's time within the spread (old
+and new tree alternating, three rounds: 0.70-0.83 s a round either way) and none removed the largest site: the next
+step is ``_nearest_vertex``'s ring search written out in ``_refresh`` (about 0.05 s a variant if its 44 % go).
+Not one kept.  A limit met on the way: numba cannot IR-inline a call with more than 30 arguments (CPython 3.11
+compiles it to CALL_FUNCTION_EX, which numba reads as ``*args``: "Calling a closure with *args is unsupported").
+``make`` from clean at 08f6215: 65.5 s wall, 118.5 user + 5.8 sys s; ``propulsor build`` of the 19 part files alone
+60.7 s wall on a quiet minute: its imports 2.4 s and the part files' estimates 0.7 s before the first build (0.5 s of it the balancer's, whose estimate needs its suspension design), the road wheel alone for its last
 1.2 s.  The table pairs' proofs (``pair_proof._least_overlap``): 2 554 and 3 748 Clipper overlaps of 0.9 and 0.5 ms
 (12-14 a non-conjugate phase, Brent to 1e-6 rad), 4.4 s of make's CPU; their lens cuts are made afresh at each such
 phase (the driver's centre moves about 1.5 mm a phase, the cut keeps 1 mm spare: 640 cuts, 0.5 s).
