@@ -370,8 +370,9 @@ step is ``_nearest_vertex``'s ring search written out in ``_refresh`` (about 0.0
 Not one kept.  A limit met on the way: numba cannot IR-inline a call with more than 30 arguments (CPython 3.11
 compiles it to CALL_FUNCTION_EX, which numba reads as ``*args``: "Calling a closure with *args is unsupported").
 ``make`` from clean at 08f6215: 65.5 s wall, 118.5 user + 5.8 sys s; ``propulsor build`` of the 19 part files alone
-60.7 s wall on a quiet minute: its imports 2.4 s and the part files' estimates 0.7 s before the first build (0.5 s of it the balancer's, whose estimate needs its suspension design), the road wheel alone for its last
-1.2 s.  The table pairs' proofs (``pair_proof._least_overlap``): 2 554 and 3 748 Clipper overlaps of 0.9 and 0.5 ms
+60.7 s wall on a quiet minute: its imports 2.4 s and the part files' estimates 0.7 s before the first build (0.5 s of
+it the balancer's, whose estimate needs its suspension design), the road wheel alone for its last 1.2 s.  The table
+pairs' proofs (``pair_proof._least_overlap``): 2 554 and 3 748 Clipper overlaps of 0.9 and 0.5 ms
 (12-14 a non-conjugate phase, Brent to 1e-6 rad), 4.4 s of make's CPU; their lens cuts are made afresh at each such
 phase (the driver's centre moves about 1.5 mm a phase, the cut keeps 1 mm spare: 640 cuts, 0.5 s).
 """
