@@ -366,8 +366,10 @@ in the loop takes no reference.  Together they are about 0.1 s a variant (in the
 0.14 s of 0.75, a fifth of its compiled time).  The changes tried (that one, the candidate scan's helpers written out
 in ``_side_hits``, ``first_hit_reusing`` written out in ``_track_nb``) left the contact's time within the spread (old
 and new tree alternating, three rounds: 0.70-0.83 s a round either way) and none removed the largest site: the next
-step is ``_nearest_vertex``'s ring search written out in ``_refresh`` (about 0.05 s a variant if its 44 % go).
-Not one kept.  A limit met on the way: numba cannot IR-inline a call with more than 30 arguments (CPython 3.11
+step, tried at the session's end in a worktree, is ``_nearest_vertex``'s ring search written out in ``_refresh``: its
+44 % gone (``_refresh`` then holds 8 % of the increfs), the contact bit for bit the same, both directions 0.715 /
+0.716 / 0.737 -> 0.695 / 0.692 / 0.690 CPU s a round (about 0.02 s a variant); not kept, as it is a second copy of
+``_nearest_vertex_low``'s search.  Not one kept.  A limit met on the way: numba cannot IR-inline a call with more than 30 arguments (CPython 3.11
 compiles it to CALL_FUNCTION_EX, which numba reads as ``*args``: "Calling a closure with *args is unsupported").
 ``make`` from clean at 08f6215: 65.5 s wall, 118.5 user + 5.8 sys s; ``propulsor build`` of the 19 part files alone
 60.7 s wall on a quiet minute: its imports 2.4 s and the part files' estimates 0.7 s before the first build (0.5 s of
