@@ -369,8 +369,9 @@ and new tree alternating, three rounds: 0.70-0.83 s a round either way) and none
 step, tried at the session's end in a worktree, is ``_nearest_vertex``'s ring search written out in ``_refresh``: its
 44 % gone (``_refresh`` then holds 8 % of the increfs), the contact bit for bit the same, both directions 0.715 /
 0.716 / 0.737 -> 0.695 / 0.692 / 0.690 CPU s a round (about 0.02 s a variant); not kept, as it is a second copy of
-``_nearest_vertex_low``'s search.  Not one kept.  A limit met on the way: numba cannot IR-inline a call with more than 30 arguments (CPython 3.11
-compiles it to CALL_FUNCTION_EX, which numba reads as ``*args``: "Calling a closure with *args is unsupported").
+``_nearest_vertex_low``'s search.  Not one kept.  A limit met on the way: numba cannot IR-inline a call with more
+than 30 arguments (CPython 3.11 compiles it to CALL_FUNCTION_EX, which numba reads as ``*args``: "Calling a closure
+with *args is unsupported").
 ``make`` from clean at 08f6215: 65.5 s wall, 118.5 user + 5.8 sys s; ``propulsor build`` of the 19 part files alone
 60.7 s wall on a quiet minute: its imports 2.4 s and the part files' estimates 0.7 s before the first build (0.5 s of
 it the balancer's, whose estimate needs its suspension design), the road wheel alone for its last 1.2 s.  The table
