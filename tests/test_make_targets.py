@@ -171,7 +171,7 @@ def test_several_part_files_exit_with_the_worst_code(tmp_path, capfd):
     assert main(["build", str(good), str(good), "--out", str(tmp_path / "o")]) == 2  # --out names one folder
 
 
-def _fake_build(args, part_file, depfile) -> int:
+def _fake_build(args, part_file, depfile, gallery=True) -> int:
     """Stands in for a build: notes when it ran and prints two lines with a pause between them."""
     import sys as _sys
 
@@ -202,6 +202,7 @@ def test_several_part_files_build_side_by_side_within_the_budget(tmp_path, monke
     monkeypatch.setenv("PROPULSOR_JOBS", "2")
     monkeypatch.delenv("MAKEFLAGS", raising=False)
     monkeypatch.setattr(cli, "build_one", _fake_build)
+    monkeypatch.chdir(tmp_path)  # nothing written, so no gallery: not the checkout's output/ either
     names = ["road_wheel", "cam_linear", "balancer", "polysector"]
     assert main(["build", *(str(ROOT / "parts" / f"{n}.toml") for n in names)]) == 1
     rows = [line.split() for line in log.read_text().splitlines()]
@@ -310,6 +311,7 @@ def test_several_part_files_under_make_s_jobserver(tmp_path, monkeypatch, capfd,
     monkeypatch.setenv("FAKE_BUILD_LOG", str(log))
     monkeypatch.setattr(os, "cpu_count", lambda: 4)
     monkeypatch.setattr(cli, "build_one", _fake_build)
+    monkeypatch.chdir(tmp_path)
     jobserver_pipe(tokens)
     names = ["road_wheel", "cam_linear", "balancer"]
     assert main(["build", "-q", *(str(ROOT / "parts" / f"{n}.toml") for n in names)]) == 1
@@ -552,3 +554,79 @@ def test_build_out_dir_names_the_parent_of_each_parts_folder(tmp_path, capfd):
     assert capfd.readouterr().err.strip().endswith(
         f"--out-dir = {str(tmp_path / 'alt')!r}: not with --out: give --out (the part's own folder) or --out-dir "
         "(<dir>/<file name>)")
+
+
+@needs_make
+def test_make_writes_the_gallery_only_where_the_builds_did_not(project):
+    """The builds rewrite a gallery propulsor wrote (`propulsor build` of several part files once, after the last):
+    when the builds' run (.built) is all that is newer than such a page, `make` renews its time stamp and does not
+    write it again (some 40 MB: half a second).  A page propulsor did not write, no page, or a viewer file newer
+    than the page: `propulsor gallery`, as before."""
+    folder, names, now = project
+    fake = folder / ".venv" / "bin" / "propulsor"
+    fake.parent.mkdir(parents=True, exist_ok=True)
+    fake.write_text(f"#!{sys.executable}\nimport sys\nopen('calls.txt', 'a').write(' '.join(sys.argv[1:]) + '\\n')\n")
+    fake.chmod(0o755)
+    page, built = folder / "output" / "index.html", folder / "output" / ".built"
+    ours = '<!DOCTYPE html>\n<html><head><meta charset="utf-8">\n<meta name="generator" content="propulsor">\n'
+
+    def make(text: str | None, newer: Path | None = None) -> list[str]:
+        _touch(built, now - 5)  # the builds' run, after every manifest
+        page.unlink(missing_ok=True)
+        if text is not None:
+            page.write_text(text)
+            os.utime(page, (now - 20, now - 20))
+        if newer is not None:
+            os.utime(newer, (now - 1, now - 1))
+        calls = folder / "calls.txt"
+        calls.unlink(missing_ok=True)
+        r = subprocess.run(["make"], cwd=folder, capture_output=True, text=True, timeout=60, env=_clean_env())
+        assert r.returncode == 0, r.stdout + r.stderr
+        if newer is not None:
+            os.utime(newer, (now - 100, now - 100))
+        return calls.read_text().splitlines() if calls.exists() else []
+
+    assert make(ours) == []  # current: only .built is newer
+    assert page.stat().st_mtime > built.stat().st_mtime and page.read_text() == ours
+    q = subprocess.run(["make", "-q"], cwd=folder, capture_output=True, timeout=60, env=_clean_env())
+    assert q.returncode == 0  # and the next make has nothing to do
+    assert make("<html><head><title>mine</title></head></html>\n") == ["gallery output -q"]  # not ours
+    assert make(None) == ["gallery output -q"]  # no page
+    assert make(ours, newer=folder / "src" / "propulsor" / "export" / "web" / "viewer.js") == ["gallery output -q"]
+
+
+def test_several_part_files_write_the_gallery_once_after_the_last(tmp_path, monkeypatch):
+    """`propulsor build a b c`: no build rewrites the gallery (each is told so), the command writes it once after
+    the last has ended, when the folder is a gallery of its own; a single part file's build writes it itself."""
+    import propulsor.cli as cli
+
+    log, pages = tmp_path / "log", []
+
+    def build(args, part_file, depfile, gallery=True):  # in a forked child: what it was told, in a file
+        (Path(args.out_dir) / part_file.stem).mkdir(parents=True, exist_ok=True)
+        with open(log, "a") as f:
+            f.write(f"{gallery} {time.time()}\n")
+        return 0
+
+    def told() -> list[str]:
+        rows = [line.split() for line in log.read_text().splitlines()]
+        log.unlink()
+        return rows
+
+    monkeypatch.setenv("PROPULSOR_JOBS", "1")
+    monkeypatch.setattr(cli, "build_one", build)
+    monkeypatch.setattr(cli, "regenerate_gallery", lambda folder, progress=None: pages.append((folder, time.time())))
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "index.html").write_text('<meta name="generator" content="propulsor">\n')
+    files = [str(ROOT / "parts" / f"{n}.toml") for n in ("road_wheel", "cam_linear", "balancer")]
+    assert main(["build", "-q", "--out-dir", str(out), *files]) == 0
+    rows = told()
+    assert [r[0] for r in rows] == ["False"] * 3
+    assert [f for f, _ in pages] == [out] and pages[0][1] >= max(float(r[1]) for r in rows)
+    (out / "index.html").write_text("<html>a page of the user's</html>\n")  # not a gallery: none written
+    pages.clear()
+    assert main(["build", "-q", "--out-dir", str(out), *files]) == 0
+    assert [r[0] for r in told()] == ["False"] * 3 and pages == []
+    assert main(["build", "-q", "--out-dir", str(out), files[0]]) == 0
+    assert [r[0] for r in told()] == ["True"] and pages == []

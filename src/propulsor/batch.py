@@ -10,7 +10,6 @@ import signal
 import sys
 from pathlib import Path
 
-from .building import LOADED, load
 from .progress import Reporter
 from .render import Board, forward_to
 from .signals import Interrupted, hold_signals
@@ -19,13 +18,12 @@ from .signals import Interrupted, hold_signals
 def longest_first(files: list[Path], progress=None) -> list[int]:
     """Indices of the part files, the longest build first by its size estimate (a file that cannot be read or
     whose values are refused first of all: it fails at once), so that the builds running side by side end close
-    together.  The estimate is made from the part file's values alone (``building.early_estimate``, milliseconds)
-    wherever the part type's estimate allows it: the rules between the fields and the design's feasibility (which
-    computes the design: up to half a second a file) are checked by each build's own load, in its forked child,
-    side by side with the others (checked here, they took 3-4 s of wall before the first build, one core idle).  A
-    file refused there fails when its turn comes, with the same message and exit code.  A part whose estimate
-    needs the design is loaded here whole and left in building.LOADED for its forked build.  `progress`: told the
-    files checked (a count)."""
+    together.  The estimate is made before the design's feasibility is checked (``building.early_estimate``: from
+    the values, or the validated values where the part type's estimate needs them): the design's feasibility
+    (which computes the design: up to half a second a file) is checked by each build's own load, in its forked
+    child, side by side with the others (checked here, it took 3-4 s of wall before the first build, one core
+    idle; the balancer's arm outline alone 0.7 s).  A file refused there fails when its turn comes, with the same
+    message and exit code.  `progress`: told the files checked (a count)."""
     from .building import early_estimate
 
     tick = Reporter.of(progress).counter("checking the part files", len(files), "file")
@@ -33,10 +31,6 @@ def longest_first(files: list[Path], progress=None) -> list[int]:
     for k in range(len(files)):
         try:
             seconds = early_estimate(files[k])
-            if seconds is None:
-                loaded = load(files[k])
-                LOADED[files[k]] = loaded  # the forked build takes it (building.load)
-                seconds = loaded.estimate.seconds
         except Exception:  # noqa: BLE001 - its own build reports it
             keys[k] = (-float("inf"), k)
         else:
@@ -135,7 +129,6 @@ def side_by_side(args, files: list[Path], depfile, slots: int, build, jobserver=
         for fd in pipes.values():
             os.close(fd)
         share_slots(None)
-        LOADED.clear()
     return codes
 
 

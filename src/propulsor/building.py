@@ -27,7 +27,7 @@ from pathlib import Path
 from typing import Callable
 
 from .errors import CheckFailed, EnvironmentFailure, FolderBusy, InputError
-from .loading import LOADED, Loaded, default_named, early_estimate, files_read, load, load_part, named_files  # noqa: F401
+from .loading import Loaded, default_named, early_estimate, files_read, load, load_part, named_files  # noqa: F401
 from .progress import Reporter
 from .signals import check_signalled, held_signals
 
@@ -113,11 +113,12 @@ def write_depfile(depfile: Path, target: Path, files) -> None:
 
 
 def publish(out: Path, keep: tuple[Path, ...], produce: Callable, *, force: bool = False,
-            keep_failed: bool = False, wait: bool = True, progress=None) -> BuildResult:
+            keep_failed: bool = False, wait: bool = True, progress=None, gallery: bool = True) -> BuildResult:
     """Run ``produce(tmp, say) -> (failures, what, writer)`` into a fresh temporary folder beside `out` with the
     lock of `out` held and this build's own workers, check that the folder holds exactly what the manifest
     lists, then put it in place of `out` in one step (or drop it when a check failed and not `keep_failed`).
-    The gallery beside it is rewritten after the lock is let go.  Returns the :class:`BuildResult`; raises
+    The gallery beside it is rewritten after the lock is let go (`gallery` False: not; a command that builds
+    several part files into one folder writes it once, after the last).  Returns the :class:`BuildResult`; raises
     FolderBusy (held, `wait` False), InputError, EnvironmentFailure, CheckFailed (with ``.out`` set when the
     failed build was kept)."""
     from . import output_folder as of
@@ -167,7 +168,7 @@ def publish(out: Path, keep: tuple[Path, ...], produce: Callable, *, force: bool
                         shutil.rmtree(tmp, ignore_errors=True)
                 finally:
                     lock.release()
-    page = regenerate_gallery(out.parent, say) if gallery_folder(out.parent) else None
+    page = regenerate_gallery(out.parent, say) if gallery and gallery_folder(out.parent) else None
     result = _result(out, what, w, failures, keep, page)
     if failures:
         raise CheckFailed(failures, what=what, out=out, result=result)
@@ -260,7 +261,7 @@ def as_path(value, key: str) -> Path:
 
 
 def build(part: Loaded, out, *, force: bool = False, keep_failed: bool = False, wait: bool = True,
-          progress=None, vetted: bool = False, reuse: BuildResult | None = None) -> BuildResult:
+          progress=None, vetted: bool = False, reuse: BuildResult | None = None, gallery: bool = True) -> BuildResult:
     """Build `part` into folder `out` (text, bytes or a path): the files ``propulsor build`` writes, under the
     folder's rules (vetted, locked, built into a temporary folder, put in place in one step).  `progress`:
     a callback for the :class:`~.progress.Event` s on the way (None: none).  `vetted`: `out` is already the
@@ -268,8 +269,8 @@ def build(part: Loaded, out, *, force: bool = False, keep_failed: bool = False, 
     the part file); it is vetted again once the lock is held either way.  `reuse`: a build of this same
     part made before by :func:`build_in_memory` with its files kept — its files are copied into the
     temporary folder instead of building again (the same bytes: they are that build's), when they are still
-    there and no file the build read has changed since (else it builds).  See :func:`publish` for what it
-    raises."""
+    there and no file the build read has changed since (else it builds).  `gallery`: rewrite the gallery beside
+    `out` when it is one (:func:`gallery_folder`).  See :func:`publish` for what it raises."""
     keep = part.files_read
     if not vetted:
         out = target(out, Path("output") / (part.source.stem if part.source else part.part_type.name), force, keep)
@@ -281,7 +282,8 @@ def build(part: Loaded, out, *, force: bool = False, keep_failed: bool = False, 
             return list(reuse.failures), reuse.what, reuse
         return produce_build(part.part_type, part.params, part.source, tmp, say)
 
-    return publish(out, keep, produce, force=force, keep_failed=keep_failed, wait=wait, progress=progress)
+    return publish(out, keep, produce, force=force, keep_failed=keep_failed, wait=wait, progress=progress,
+                   gallery=gallery)
 
 
 def build_kit(part: Loaded, out, printer, *, scale: float | None = None, sliced: bool = False,

@@ -87,7 +87,8 @@ def cmd_gallery(args) -> int:
 
 def cmd_build(args) -> int:
     """Build every part file given, one after the other in this process (the imports are paid once):
-    each into its own output folder; the exit code is the worst of them (2 before 3 before 1 before 0)."""
+    each into its own output folder, then the gallery beside them once (when it is one: building.gallery_folder);
+    the exit code is the worst of them (2 before 3 before 1 before 0)."""
     files = [Path(f) for f in args.part_files]
     if args.out is not None and args.out_dir is not None:
         return fail_input(InputError("--out-dir", args.out_dir, "not with --out: give --out (the part's own folder) "
@@ -119,22 +120,31 @@ def cmd_build(args) -> int:
         def depfile(part_file):
             return Path(args.depfile_dir) / f"{part_file.stem}.mk" if args.depfile_dir else None
 
+        def each(args, part_file, depfile):  # the gallery once, after the last (below)
+            return build_one(args, part_file, depfile, gallery=False)
+
         if budget > 1 and can_fork() and not args.dry_run:
-            codes = side_by_side(args, files, depfile, budget, build_one, jobserver, progress=render)
+            codes = side_by_side(args, files, depfile, budget, each, jobserver, progress=render)
         else:
             render.close()
-            codes = [in_child(build_one, args, f, depfile(f)) for f in files]
+            codes = [in_child(each, args, f, depfile(f)) for f in files]
+    if not args.dry_run and any(c in (EXIT_OK, EXIT_CHECK_FAILED) for c in codes):
+        folder = Path(args.out_dir or "output")
+        if folder.is_dir() and gallery_folder(folder):  # as each build would have (building.publish), once
+            with Renderer(args.quiet) as render:
+                regenerate_gallery(folder, render)
     return max(codes, key=lambda c: (c == EXIT_BAD_INPUT, c))
 
 
-def build_one(args, part_file: Path, depfile: Path | None) -> int:
+def build_one(args, part_file: Path, depfile: Path | None, gallery: bool = True) -> int:
     """Build one part file into its output folder (``--out`` or output/<file name>) through the build service;
-    ``--dry-run`` validates and estimates only.  Returns the exit code."""
+    ``--dry-run`` validates and estimates only.  `gallery`: rewrite the gallery beside the output when it is one
+    (a command building several part files writes it once, after the last).  Returns the exit code."""
     with Renderer(args.quiet) as render:
-        return _build_one(args, part_file, depfile, render)
+        return _build_one(args, part_file, depfile, render, gallery)
 
 
-def _build_one(args, part_file: Path, depfile: Path | None, render: Renderer) -> int:
+def _build_one(args, part_file: Path, depfile: Path | None, render: Renderer, gallery: bool = True) -> int:
     from . import output_folder as of
 
     render(f"{part_file}: reading the part file")
@@ -159,7 +169,7 @@ def _build_one(args, part_file: Path, depfile: Path | None, render: Renderer) ->
     gc.freeze()
     try:
         result = building.build(part, out, force=args.force, keep_failed=args.keep_failed, wait=not args.no_wait,
-                                progress=render, vetted=True)
+                                progress=render, vetted=True, gallery=gallery)
     except (InputError, EnvironmentFailure, CheckFailed) as exc:
         return fail(exc)
     finally:

@@ -1,6 +1,6 @@
 """Part files read: a part file's type and parameters, checked as far as anything can be before a build
-(:func:`load`, a :class:`Loaded`), or only as far as its values give its size estimate (:func:`early_estimate`,
-for ordering several builds), and the files a part file names.  The build service (:mod:`.building`) builds
+(:func:`load`, a :class:`Loaded`), or only as far as its size estimate needs (:func:`early_estimate`, for
+ordering several builds), and the files a part file names.  The build service (:mod:`.building`) builds
 what is loaded here."""
 
 from __future__ import annotations
@@ -45,11 +45,6 @@ def files_read(params, part_file: Path) -> tuple[Path, ...]:
     return tuple(p for _, _, p in named_files(params, part_file))
 
 
-#: part files loaded by the command that forks their builds (batch.side_by_side): a forked build takes its
-#: own entry instead of loading the file again (the parameters, and the design their validation computed)
-LOADED: dict[Path, "Loaded"] = {}
-
-
 def _values(part_file: Path, say=None):
     """What :func:`load` and :func:`early_estimate` both do first: (the part type's name as the file gives it, the
     part type, the file's mapping, its parameters unvalidated, the size estimate from the values alone or None where
@@ -73,8 +68,6 @@ def load(part_file: Path, progress=None) -> Loaded:
     """The part file read and its parameters checked as far as anything can be before a build: fields, the
     rules between them, the size estimate and the design's own feasibility (``parts.vet``).  InputError.
     `progress`: a callback for the steps on the way (the part type's imports, the feasibility)."""
-    if part_file in LOADED:
-        return LOADED.pop(part_file)
     say = Reporter.of(progress)
     from .parts import check_size, vet
 
@@ -88,14 +81,24 @@ def load(part_file: Path, progress=None) -> Loaded:
     return Loaded(part_type, params, part_file, estimate)
 
 
-def early_estimate(part_file: Path) -> float | None:
-    """The size estimate (s) of a part file's build as far as its values tell it, before the rules between its
-    fields and the design's feasibility are checked (what :func:`load` computes first, the same value), or None
-    for a part type whose estimate needs the design.  InputError (parameter, value, limit) as :func:`load`
-    raises it.  For ordering several builds without computing their designs (batch.longest_first): each
-    build's own :func:`load` checks the rest."""
-    estimate = _values(part_file)[4]
-    return None if estimate is None else estimate.seconds
+def early_estimate(part_file: Path) -> float:
+    """The size estimate (s) of a part file's build before the design's feasibility is checked (:func:`load` computes
+    the same value): from its values alone, or, for a part type whose estimate needs validated parameters (the
+    balancer's, which computes the suspension's travel: not the arm's outline, the long part of its design), after
+    the rules between its fields.  InputError (parameter, value, limit) as :func:`load` raises it.  For ordering
+    several builds without computing their designs (batch.longest_first): each build's own :func:`load` checks the
+    rest."""
+    from .parts import check_size
+
+    _, part_type, mapping, params, estimate = _values(part_file)
+    if estimate is None:
+        try:
+            if callable(getattr(params, "validate", None)):
+                params.validate()
+            estimate = check_size(part_type, params, part_file)
+        except InputError as exc:
+            raise default_named(exc, mapping, part_type.params_cls) from None
+    return estimate.seconds
 
 
 def default_named(exc: InputError, mapping: dict, params_cls) -> InputError:

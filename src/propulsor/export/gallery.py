@@ -20,14 +20,16 @@ through a temporary file and one rename; never over an ``index.html`` that propu
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
+from collections.abc import Iterator
 from html import escape
 from pathlib import Path
 from urllib.parse import quote
 
 from .gallery_manifest import ManifestError, inside, load_manifest
-from .html import page, write_atomically
+from .html import page_pieces, write_atomically
 from .manifest import MANIFEST
 from .gallery_values import SECTOR_WHY, failed_names, label, names_text, position_title, value_text
 from .viewer_page import VIEWER_STYLE, viewer_figure, viewer_script  # noqa: F401  (viewer_script: public here too)
@@ -296,6 +298,12 @@ def _unreadable(folder: Path, entry: dict) -> str:
 
 def render_gallery(folder: str | Path) -> str:
     """The page (HTML text) of every built part in `folder` (and of its design studies: gallery_studies.py)."""
+    return "".join(gallery_pieces(folder))
+
+
+def gallery_pieces(folder: str | Path) -> Iterator[str]:
+    """:func:`render_gallery` in pieces (html.page_pieces), each part's section made when its turn comes: the page
+    (some 40 MB for make's parts, their 3D models in it) is written without the whole of it in memory."""
     from .gallery_studies import STYLE as STUDY_STYLE, found_studies, studies_section
 
     folder = Path(folder)
@@ -319,10 +327,10 @@ def render_gallery(folder: str | Path) -> str:
     from .viewer_page import page_budget
 
     budget = page_budget()  # the GLB bytes this page carries, shared by its parts in order
-    body = "\n".join(head + [_section(folder, e, budget) for e in parts]
-                     + ([studies_section(studies)] if studies else []))
-    return page("propulsor: built parts", body, style=STYLE + VIEWER_STYLE + (STUDY_STYLE if studies else ""),
-                script=viewer_script())
+    body = itertools.chain(head, (_section(folder, e, budget) for e in parts),
+                           [studies_section(studies)] if studies else [])
+    return page_pieces("propulsor: built parts", body, style=STYLE + VIEWER_STYLE + (STUDY_STYLE if studies else ""),
+                       script=viewer_script())
 
 
 def write_gallery(folder: str | Path) -> Path | None:
@@ -332,7 +340,7 @@ def write_gallery(folder: str | Path) -> Path | None:
     target = folder / INDEX
     if target.is_symlink() or (target.exists() and not _ours(target)):
         return None
-    return write_atomically(target, render_gallery(folder))
+    return write_atomically(target, gallery_pieces(folder))
 
 
 def is_ours(path: Path) -> bool:

@@ -20,6 +20,7 @@ from __future__ import annotations
 import base64
 import hashlib
 import html
+from collections.abc import Iterable, Iterator
 from pathlib import Path
 from urllib.parse import unquote
 
@@ -81,18 +82,23 @@ def content_security_policy(style: str, script: str = "") -> str:
 def page(title: str, body: str, style: str = "", script: str = "") -> str:
     """A whole HTML document: inline style (STYLE + `style`), `body` as given, an inline `script`; a
     Content-Security-Policy that lets only these two run."""
+    return "".join(page_pieces(title, [body], style, script))
+
+
+def page_pieces(title: str, body: Iterable[str], style: str = "", script: str = "") -> Iterator[str]:
+    """:func:`page` in pieces, its body's pieces (joined by newlines) taken one at a time as they come: a page of
+    tens of megabytes (the gallery, every part's 3D model in it) written without the whole of it in memory."""
     css = STYLE + style
     code = f"\n{script}\n" if script else ""
     csp = content_security_policy(css, code)  # no " < & in it: written as it is
-    out = ["<!DOCTYPE html>", '<html lang="en">', "<head>", '<meta charset="utf-8">',
-           f'<meta http-equiv="Content-Security-Policy" content="{csp}">',
-           '<meta name="viewport" content="width=device-width, initial-scale=1">',
-           '<meta name="generator" content="propulsor">',
-           f"<title>{html.escape(title)}</title>", f"<style>{css}</style>", "</head>", "<body>", body]
-    if script:
-        out.append(f"<script>{code}</script>")
-    out += ["</body>", "</html>", ""]
-    return "\n".join(out)
+    yield "\n".join(["<!DOCTYPE html>", '<html lang="en">', "<head>", '<meta charset="utf-8">',
+                     f'<meta http-equiv="Content-Security-Policy" content="{csp}">',
+                     '<meta name="viewport" content="width=device-width, initial-scale=1">',
+                     '<meta name="generator" content="propulsor">',
+                     f"<title>{html.escape(title)}</title>", f"<style>{css}</style>", "</head>", "<body>", ""])
+    for k, piece in enumerate(body):
+        yield piece if k == 0 else "\n" + piece
+    yield "\n" + "\n".join(([f"<script>{code}</script>"] if script else []) + ["</body>", "</html>", ""])
 
 
 def local_url(url: str) -> bool:
@@ -177,12 +183,18 @@ def script_hash(script: str) -> str:
     return _sha256(f"\n{script}\n")
 
 
-def write_atomically(path: str | Path, text: str) -> Path:
-    """Write `text` to `path` through a temporary file in the same folder and one rename, so that a
-    reader (or a second writer) sees the old file or the new one, never a part."""
+def write_atomically(path: str | Path, text: str | Iterable[str]) -> Path:
+    """Write `text` (or its pieces, one at a time: :func:`page_pieces`) to `path` (UTF-8) through a temporary file
+    in the same folder and one rename, so that a reader (or a second writer) sees the old file or the new one,
+    never a part."""
     from ..atomic_file import replace_atomically
 
-    return replace_atomically(path, lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))
+    def write(tmp: str) -> None:
+        with open(tmp, "w", encoding="utf-8") as f:  # as Path.write_text
+            for piece in ([text] if isinstance(text, str) else text):
+                f.write(piece)
+
+    return replace_atomically(path, write)
 
 
 def view_page(folder: str | Path, lead: str = "") -> str | None:

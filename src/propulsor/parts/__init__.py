@@ -112,7 +112,8 @@ def _estimate_of(part_type: PartType):
 
 
 def size_needs_design(part_type: PartType) -> bool:
-    """True when the part type's size estimate needs the validated design (it runs after validation)."""
+    """True when the part type's size estimate needs validated parameters (it runs after the rules between the
+    fields, and computes the part of the design it needs)."""
     return bool(getattr(_estimate_of(part_type), "needs_design", False))
 
 
