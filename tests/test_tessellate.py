@@ -625,3 +625,37 @@ def test_a_plane_delabella_leaves_bare_has_the_rest_meshed_by_watson(monkeypatch
     monkeypatch.setattr(T, "BRepMesh_IncrementalMesh", failing)
     v, f, d = T.triangulate(solid, parallel=False)
     assert np.array_equal(v, v0) and np.array_equal(f, f0) and d == d0
+
+
+def test_cap_edges_are_paired_as_the_full_comparison_pairs_them():
+    """`prism_mesh._one_to_one` (a k-d tree's candidates, each tested as before) gives the pairs of the full (n, n)
+    comparison of the edges' nine coordinates within the tolerance, or None where that has a row or a column
+    without exactly one: permuted copies, a copy a hair inside and a hair outside the tolerance, two edges within
+    the tolerance of one."""
+    rng = np.random.default_rng(7)
+    tol = P.STRIP_MATCH_MM
+
+    def full(Kb, Ka):
+        close = np.abs(Kb[:, None, :] - Ka[None, :, :]).max(axis=2) <= tol
+        ok = (close.sum(axis=1) == 1).all() and (close.sum(axis=0) == 1).all()
+        return close.argmax(axis=1) if ok else None
+
+    Ka = rng.uniform(-50.0, 50.0, (400, 9))
+    perm = rng.permutation(400)
+    cases = []
+    for dev in (0.0, 0.999 * tol, 1.001 * tol, tol + 5e-13):  # the last within the tree's wider radius
+        Kb = Ka[perm].copy()
+        Kb[17, 4] += dev
+        cases.append(Kb)
+    Kb = Ka[perm].copy()
+    Kb[5] = Kb[6] + 0.5 * tol  # two edges of B within the tolerance of one of A
+    cases.append(Kb)
+    Ka_close = Ka.copy()
+    Ka_close[perm[9]] = Ka_close[perm[10]] + 0.5 * tol  # two of A within the tolerance of one of B
+    for Kb in cases + [Ka[perm]]:
+        for A in (Ka, Ka_close):
+            want, got = full(Kb, A), P._one_to_one(Kb, A, tol)
+            assert (want is None) == (got is None) and (want is None or np.array_equal(want, got))
+    assert P._one_to_one(cases[0], Ka, tol) is not None and P._one_to_one(cases[2], Ka, tol) is None
+    assert P._one_to_one(cases[3], Ka, tol) is None and P._one_to_one(cases[4], Ka, tol) is None
+    assert P._one_to_one(Ka[perm], Ka_close, tol) is None

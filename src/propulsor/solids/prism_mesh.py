@@ -236,6 +236,23 @@ def _edge_ends(face):
     return edges, np.array(keys, float).reshape(-1, 9)
 
 
+def _one_to_one(Kb: np.ndarray, Ka: np.ndarray, tol: float) -> np.ndarray | None:
+    """For each row of `Kb`, the index of the one row of `Ka` (as many rows) within `tol` of it in every coordinate,
+    or None unless each row of either has exactly one such row in the other.  The candidates from a k-d tree (the
+    search radius a little wider), each then tested as ``np.abs(b - a).max() <= tol``: the pairs of the full
+    (n, n) comparison, without its n^2 x 9 array (a gear's cap: thousands of edges)."""
+    from scipy.spatial import cKDTree
+
+    candidates = cKDTree(Ka).query_ball_point(Kb, tol * (1.0 + 1e-6) + 1e-12, p=np.inf)
+    match = np.empty(len(Kb), np.int64)
+    for r, js in enumerate(candidates):
+        hits = [j for j in js if np.abs(Kb[r] - Ka[j]).max() <= tol]
+        if len(hits) != 1:
+            return None
+        match[r] = hits[0]
+    return match if len(np.unique(match)) == len(Ka) else None
+
+
 def cap_twins(faces, skip) -> dict:
     """{index of cap B: (index of cap A, t (3,), [(edge of A, edge of B), ...])} over the planar faces of `faces`
     (not in `skip`): B is A translated by t along their common normal, as a prism's two caps are.  Candidates: the
@@ -266,10 +283,10 @@ def cap_twins(faces, skip) -> dict:
             if ends[ka] is None or ends[kb] is None or len(ends[ka][0]) != len(ends[kb][0]):
                 continue
             (ea, Ka), (eb, Kb) = ends[ka], ends[kb]
-            close = np.abs(Kb[:, None, :] - (Ka[None, :, :] + np.tile(t, 3))).max(axis=2) <= STRIP_MATCH_MM
-            if not (close.sum(axis=1) == 1).all() or not (close.sum(axis=0) == 1).all():
+            match = _one_to_one(Kb, Ka + np.tile(t, 3), STRIP_MATCH_MM)
+            if match is None:
                 continue
-            twins[kb] = (ka, t, [(ea[int(i)], eb[r]) for r, i in enumerate(close.argmax(axis=1))])
+            twins[kb] = (ka, t, [(ea[int(i)], eb[r]) for r, i in enumerate(match)])
             taken.add(ka)
             break
     return twins

@@ -45,8 +45,12 @@ def hub_height_from_outline(pl: Plan, pts: np.ndarray, phi: np.ndarray) -> dict:
     n = pl.mech.n_legs
     ang = (phi[:, None] + 2.0 * math.pi * np.arange(n)[None, :] / n).ravel()
     M = leg_poses(pl, ang)
-    y = pts[None, :, 0] * M[:, 1, 0][:, None] + pts[None, :, 1] * M[:, 1, 1][:, None] + M[:, 1, 2][:, None]
-    low = y.min(axis=1).reshape(len(phi), n)
+    x0, x1 = pts[None, :, 0], pts[None, :, 1]
+    low = np.empty(len(M))
+    for a in range(0, len(M), 128):  # a block of placements at a time, its heights in the cache (all 2 880 at once:
+        m = M[a:a + 128, 1]          # 50 MB arrays, 0.3-0.8 s; so 0.05 s), each height computed as before
+        low[a:a + 128] = (x0 * m[:, 0:1] + x1 * m[:, 1:2] + m[:, 2:3]).min(axis=1)
+    low = low.reshape(len(phi), n)
     order = np.argsort(low, axis=1)
     lowest = np.take_along_axis(low, order[:, :1], axis=1)[:, 0]
     second = np.take_along_axis(low, order[:, 1:2], axis=1)[:, 0]
