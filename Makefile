@@ -39,6 +39,9 @@ $(STAMP): pyproject.toml constraints.txt
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install -q -c constraints.txt pip
 	$(BIN)/python -m pip install -q -c constraints.txt -e '.[test,docs]'
+	@# the package's modules compiled to bytecode once, as pip compiles those of a package it installs (not those of an
+	@# editable install): where PYTHONDONTWRITEBYTECODE is set, every process compiled every module it imported again
+	$(BIN)/python -m compileall -q src
 	@echo "compiling the numeric kernels once (about 30 s)"
 	$(BIN)/python -c 'from propulsor.checks.kernels import warm; warm()'
 	touch $@

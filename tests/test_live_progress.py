@@ -187,7 +187,7 @@ def test_forwarded_events(tmp_path, monkeypatch):
         assert json.loads(f.readline()) == dict(kind="progress", text="proof: 2/5", phase="proof", done=2, total=5)
 
 
-def _fake_build(args, part_file, depfile):
+def _fake_build(args, part_file, depfile, gallery=True):
     """A build that reports as a real one does (its own Renderer, a step, a count, a notice)."""
     import time
 
@@ -203,7 +203,7 @@ def _fake_build(args, part_file, depfile):
 
 
 @pytest.mark.parametrize("quiet", [False, True])
-def test_builds_side_by_side_report_through_the_board(monkeypatch, capfd, quiet):
+def test_builds_side_by_side_report_through_the_board(monkeypatch, capfd, quiet, tmp_path):
     """`propulsor build a b` (what make runs), stderr not a terminal: each build's steps and counts come as
     plain lines while it runs, named by its part file, and are not repeated when its own output is written
     out at its end (that keeps its notices); -q: the notices only."""
@@ -215,6 +215,7 @@ def test_builds_side_by_side_report_through_the_board(monkeypatch, capfd, quiet)
     monkeypatch.setenv("PROPULSOR_JOBS", "2")
     monkeypatch.delenv("MAKEFLAGS", raising=False)
     monkeypatch.setattr(cli, "build_one", _fake_build)
+    monkeypatch.chdir(tmp_path)  # no output/ here: no gallery written after the builds
     files = [str(root / "parts" / f"{n}.toml") for n in ("road_wheel", "cam_linear")]
     assert cli.main(["build", *files] + (["-q"] if quiet else [])) == 0
     err = capfd.readouterr().err.splitlines()
