@@ -16,7 +16,9 @@ lock) and make then a 20th time; now a ``propulsor build`` of several part files
 pieces (its peak 150 -> 33 MB), and make's own gallery step only renews its time stamp when nothing but the builds
 changed.  Rounds, new / old, wall (user) s: 64.10 (114.9) / 68.58 (119.9), 67.42 (121.4) / 73.06 (127.9) with the
 gallery change; 69.70 (128.1) / 74.78 (131.2), 70.31 (130.1) / 76.05 (131.7) with the cap twins and the hub height
-too (the machine slower by then): 4.5-5.7 s (7 %) less a round; largest process 649 / 647-659 MiB.
+too (the machine slower by then): 4.5-5.7 s (7 %) less a round; largest process 649 / 647-659 MiB.  This script,
+the machine slower still (0cd4c91): 81.93 / 81.23, 72.91 / 81.85, 75.22 / 81.12 s wall (149.0 / 142.4, 132.9 / 143.8,
+138.7 / 142.4 user s; system 6.1-6.9 / 10.3-10.8 s, the pages not written); largest process 632-633 / 633-641 MiB.
 """
 
 from __future__ import annotations
