@@ -143,7 +143,7 @@ def test_suspension_design_renames_the_librarys_parameters():
     with pytest.raises(InputError) as e:
         bd.feasible(_params(tau_max_MPa=100.0))
     assert str(e.value).startswith("d_T_mm = 46.0: torsion bar yields")
-    assert bd.feasible(_params()) is None
+    assert bd.feasible(_params(), FILE) is None  # the design resolved: its road wheel file beside the part file
 
 
 def test_model_of_the_part_file():
@@ -265,6 +265,24 @@ def test_resolve_refuses_an_ear_and_a_pad_off_the_arm():
     # the equal-strength depth's refusal under the part file's name (h_max_mm, not the library's h_max)
     assert _refusal(arm_width_mm=20.0) == (
         "h_max_mm = 400.0: even h_max leaves sigma_vM > 620 MPa at a station; widen the arm (b) or raise h_max")
+
+
+def test_a_missing_road_wheel_is_refused_before_the_build_but_not_by_the_estimate(tmp_path, capfd):
+    """The road wheel file is read by the feasibility check (``parts.vet``: the dry run, the Python API, each build's
+    load), as the design reads it: a dry run names it, exit 2.  The size estimate that orders several builds needs
+    only the suspension and does not read it (the build's own load then refuses the file)."""
+    from propulsor.cli import main
+    from propulsor.loading import early_estimate, load
+
+    text = (ROOT / "parts" / "balancer.toml").read_text("utf-8")
+    bad = tmp_path / "balancer.toml"
+    bad.write_text(text.replace('road_wheel_file = "road_wheel.toml"', 'road_wheel_file = "nope.toml"'), "utf-8")
+    assert main(["build", str(bad), "--dry-run", "-q"]) == 2
+    assert capfd.readouterr().err.strip() == (
+        f"propulsor: error: road_wheel_file = 'nope.toml': does not exist (looked for {tmp_path / 'nope.toml'})")
+    with pytest.raises(InputError, match="road_wheel_file"):
+        load(bad)
+    assert early_estimate(bad) == load(ROOT / "parts" / "balancer.toml").estimate.seconds > 0
 
 
 def test_resolve_reads_the_road_wheel_file(tmp_path, monkeypatch):

@@ -252,7 +252,9 @@ def spindle_dims(p: BalancerParams, wp, z_hub: float) -> dict:
 
 
 def feasible(p, source=None) -> None:
-    """InputError (parameter, value, limit) when the seed's suspension cannot be made: the design computed once (the
-    build reuses it, :func:`~propulsor.parts.pipeline.design_of`).  What the parameters cannot tell from their
-    fields; run by the dry run and the Python API after ``validate()`` (``parts.vet``)."""
-    design_of(p, suspension_design)
+    """InputError (parameter, value, limit) when the balancer cannot be made as its parameters say: the seed's
+    suspension, the road wheel file it names, the arm and its equal-strength depth (:func:`resolve`, computed once:
+    the build reuses it, :func:`~propulsor.parts.pipeline.design_of`).  What the parameters cannot tell from their
+    fields; run by the dry run, the Python API and each build's load after ``validate()`` (``parts.vet``); the size
+    estimate needs only the suspension (``estimate.py``: several builds are ordered without this)."""
+    design_of(p, resolve, source)
