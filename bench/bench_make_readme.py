@@ -19,6 +19,8 @@ gallery change; 69.70 (128.1) / 74.78 (131.2), 70.31 (130.1) / 76.05 (131.7) wit
 too (the machine slower by then): 4.5-5.7 s (7 %) less a round; largest process 649 / 647-659 MiB.  This script,
 the machine slower still (0cd4c91): 81.93 / 81.23, 72.91 / 81.85, 75.22 / 81.12 s wall (149.0 / 142.4, 132.9 / 143.8,
 138.7 / 142.4 user s; system 6.1-6.9 / 10.3-10.8 s, the pages not written); largest process 632-633 / 633-641 MiB.
+678c73b, the machine 1.55 times slower than 2026-12-03's quiet minute (bench_variant.py's least 2.42 against 1.57):
+92.35 / 104.63 s wall (162.4 / 174.6 user, 12.3 / 22.5 sys s); make alone on a fresh clone then 91.44 s (162.5 user).
 """
 
 from __future__ import annotations
