@@ -84,6 +84,7 @@ $(OUT)/.built: $(MANIFESTS) $(PART_FILES) $(SOURCES) $(STAMP) $(PROPULSOR_READ)
 # their output is in place (`propulsor build` of several part files once, after the last): when the builds' run
 # (.built) is all that is newer than a page of ours, the page is current and only its time stamp is renewed (writing
 # the page again, some 40 MB with every part's 3D model, took half a second)
+# (GALLERY_MARK: export/gallery.py GENERATOR, the mark its is_ours reads; tests/test_make_targets.py holds them equal)
 GALLERY_MARK := <meta name="generator" content="propulsor">
 $(OUT)/index.html: $(OUT)/.built $(SOURCES) $(wildcard src/propulsor/export/web/*) $(STAMP)
 	@if [ "$?" = "$(OUT)/.built" ] && [ -f $@ ] && [ ! -L $@ ] && head -c 4096 $@ | grep -qF '$(GALLERY_MARK)'; \

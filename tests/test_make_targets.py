@@ -568,7 +568,11 @@ def test_make_writes_the_gallery_only_where_the_builds_did_not(project):
     fake.write_text(f"#!{sys.executable}\nimport sys\nopen('calls.txt', 'a').write(' '.join(sys.argv[1:]) + '\\n')\n")
     fake.chmod(0o755)
     page, built = folder / "output" / "index.html", folder / "output" / ".built"
-    ours = '<!DOCTYPE html>\n<html><head><meta charset="utf-8">\n<meta name="generator" content="propulsor">\n'
+    from propulsor.export.gallery import GENERATOR
+
+    # the Makefile's mark is the one the gallery writes and reads (gallery.is_ours): one string, not two drifting
+    assert f"GALLERY_MARK := {GENERATOR}\n" in (ROOT / "Makefile").read_text()
+    ours = f'<!DOCTYPE html>\n<html><head><meta charset="utf-8">\n{GENERATOR}\n'
 
     def make(text: str | None, newer: Path | None = None) -> list[str]:
         _touch(built, now - 5)  # the builds' run, after every manifest
