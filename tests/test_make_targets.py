@@ -634,3 +634,46 @@ def test_several_part_files_write_the_gallery_once_after_the_last(tmp_path, monk
     assert [r[0] for r in told()] == ["False"] * 3 and pages == []
     assert main(["build", "-q", "--out-dir", str(out), files[0]]) == 0
     assert [r[0] for r in told()] == ["True"] and pages == []
+
+
+_INTERRUPTED_BATCH = r'''
+import os, signal, sys, time
+from pathlib import Path
+import propulsor.cli as cli
+
+def fake(args, part_file, depfile, gallery=True):
+    assert gallery is False  # a batch writes its gallery once, not each build
+    if part_file.stem == "first":  # a build that ends: its folder in place
+        (Path("output") / "first").mkdir(parents=True)
+        (Path("output") / "first" / "manifest.json").write_text("{}")
+        return 0
+    while not (Path("output") / "first" / "manifest.json").exists():  # side by side: the first has ended...
+        time.sleep(0.05)
+    time.sleep(1.0)  # ...and its parent has seen it (it looks every 0.2 s at most)
+    os.kill(os.getppid(), signal.SIGINT)  # Ctrl-C during the second build
+    time.sleep(60)
+    return 0
+
+cli.build_one = fake
+sys.exit(cli.main(["build", *sys.argv[1:], "-q"]))
+'''
+
+
+@pytest.mark.parametrize("jobs", ["1", "2"])
+def test_an_interrupted_batch_shows_the_builds_that_ended_in_the_gallery(tmp_path, jobs):
+    """Ctrl-C during the second of `propulsor build first.toml second.toml`: the first build's folder is in place,
+    so the gallery (written once at a batch's end, not by each build) is written for it before the exit, and the
+    one line says what was kept (130, as any interrupted build); one build at a time and side by side."""
+    for name in ("first", "second"):
+        shutil.copy(ROOT / "parts" / "road_wheel.toml", tmp_path / f"{name}.toml")
+    (tmp_path / "slow.py").write_text(_INTERRUPTED_BATCH)
+    env = {**os.environ, "PROPULSOR_JOBS": jobs}
+    env.pop("MAKEFLAGS", None)
+    p = subprocess.run([sys.executable, "slow.py", "first.toml", "second.toml"], cwd=tmp_path, env=env,
+                       capture_output=True, text=True, timeout=120)
+    assert p.returncode == 130, p.stderr
+    page = tmp_path / "output" / "index.html"
+    assert page.is_file() and "first" in page.read_text()
+    last = [ln for ln in p.stderr.splitlines() if ln.startswith("propulsor: interrupted")][-1]
+    assert last == "propulsor: interrupted by SIGINT; the 1 of 2 builds that ended are in output/, the gallery " \
+                   "shows them; nothing else written", p.stderr

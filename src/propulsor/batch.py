@@ -39,7 +39,8 @@ def longest_first(files: list[Path], progress=None) -> list[int]:
     return sorted(range(len(files)), key=keys.__getitem__)
 
 
-def side_by_side(args, files: list[Path], depfile, slots: int, build, jobserver=None, progress=None) -> list[int]:
+def side_by_side(args, files: list[Path], depfile, slots: int, build, jobserver=None, progress=None,
+                 finished: list[int] | None = None) -> list[int]:
     """Build the part files (``build(args, part_file, depfile) -> exit code``) in forked children, as many
     at once as `slots` (the process budget, shared with the children's own workers once the last build
     has started: parallel.share_slots; under make's `jobserver` a slot beyond the first also takes one
@@ -47,7 +48,8 @@ def side_by_side(args, files: list[Path], depfile, slots: int, build, jobserver=
     out whole when it ends, so that the lines of two builds do not interleave; meanwhile each sends its events
     through a pipe to a :class:`~.render.Board` (one live line per build on a terminal, a plain line per step
     elsewhere).  `progress`: told the part files checked before the first build starts (then closed).  A
-    signal stops every build."""
+    signal stops every build; `finished` (a list) is given the exit code of each build as it ends, so that what
+    ended before a signal is known."""
     import select
     import tempfile
 
@@ -103,6 +105,8 @@ def side_by_side(args, files: list[Path], depfile, slots: int, build, jobserver=
             if slot is not None:
                 pool.give(slot)
             codes[k] = os.waitstatus_to_exitcode(status)
+            if finished is not None:
+                finished.append(codes[k])
             _read_into(board, pid, pipes[pid])
             os.close(pipes.pop(pid))
             board.end(pid)

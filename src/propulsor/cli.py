@@ -123,17 +123,38 @@ def cmd_build(args) -> int:
         def each(args, part_file, depfile):  # the gallery once, after the last (below)
             return build_one(args, part_file, depfile, gallery=False)
 
-        if budget > 1 and can_fork() and not args.dry_run:
-            codes = side_by_side(args, files, depfile, budget, each, jobserver, progress=render)
-        else:
-            render.close()
-            codes = [in_child(each, args, f, depfile(f)) for f in files]
-    if not args.dry_run and any(c in (EXIT_OK, EXIT_CHECK_FAILED) for c in codes):
-        folder = Path(args.out_dir or "output")
-        if folder.is_dir() and gallery_folder(folder):  # as each build would have (building.publish), once
-            with Renderer(args.quiet) as render:
-                regenerate_gallery(folder, render)
-    return max(codes, key=lambda c: (c == EXIT_BAD_INPUT, c))
+        finished: list[int] = []  # the exit code of each build that ended, in the order they ended
+        try:
+            if budget > 1 and can_fork() and not args.dry_run:
+                side_by_side(args, files, depfile, budget, each, jobserver, progress=render, finished=finished)
+            else:
+                render.close()
+                for f in files:
+                    finished.append(in_child(each, args, f, depfile(f)))
+        except Interrupted as exc:  # the builds that ended are in place: the gallery shows them, the line says so
+            hold_signals()
+            built = sum(c in (EXIT_OK, EXIT_CHECK_FAILED) for c in finished)
+            if built and not args.dry_run:
+                page = _batch_gallery(args, told=False)  # no progress line: the one line below says it
+                exc.kept = (f"the {built} of {len(files)} builds that ended are in {args.out_dir or 'output'}/"
+                            + (", the gallery shows them" if page is not None else "") + "; nothing else written")
+            raise
+    if not args.dry_run and any(c in (EXIT_OK, EXIT_CHECK_FAILED) for c in finished):
+        _batch_gallery(args)
+    return max(finished, key=lambda c: (c == EXIT_BAD_INPUT, c))
+
+
+def _batch_gallery(args, told: bool = True) -> Path | None:
+    """The gallery beside a batch's output folders, once after its builds (as each build alone would have written
+    it: building.publish): the page written, or None (no gallery's folder, or not written).  `told`: the progress
+    lines and a notice if it could not be written."""
+    folder = Path(args.out_dir or "output")
+    if not (folder.is_dir() and gallery_folder(folder)):
+        return None
+    if not told:
+        return regenerate_gallery(folder)
+    with Renderer(args.quiet) as render:
+        return regenerate_gallery(folder, render)
 
 
 def build_one(args, part_file: Path, depfile: Path | None, gallery: bool = True) -> int:
@@ -547,7 +568,8 @@ def main(argv=None) -> int:
         from .parallel import kill_workers
 
         kill_workers()
-        kept = _study_kept(args) if getattr(args, "command", None) == "explore" else "nothing written"
+        kept = (_study_kept(args) if getattr(args, "command", None) == "explore"
+                else getattr(exc, "kept", "nothing written"))
         print(f"propulsor: interrupted by {signal.Signals(signum).name}; {kept}", file=sys.stderr)
         return 128 + signum
     finally:
