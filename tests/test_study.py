@@ -586,3 +586,23 @@ def test_an_interrupted_study_says_what_it_kept(tmp_path):
     assert _study_kept(args) == "no variant had finished: nothing written"
     (tmp_path / "s" / "results.csv").write_text("variant,ok\n1,true\n2,true\n")
     assert _study_kept(args) == f"2 finished variants in {tmp_path / 's' / 'results.csv'} (--resume runs the rest)"
+
+
+def test_a_balancer_study_orders_its_variants_by_the_estimate_a_build_makes(tmp_path):
+    """The balancer's size estimate needs validated parameters (the suspension's travel): a study orders its
+    variants by it as a build's own estimate is made (loading.early_estimate), not as if each were free."""
+    from propulsor.loading import early_estimate
+    from propulsor.study import engine, load_study
+
+    study = load_study(write(tmp_path, f"""
+[study]
+part = "{ROOT / 'parts' / 'balancer.toml'}"
+depth = "build"
+[vary]
+sweep_steps_per_deg = [1.0, 4.0, 2.0]
+[objectives]
+minimize = ["mass_balancer_kg"]
+"""))
+    seconds = {v["sweep_steps_per_deg"]: engine.expected_seconds(study, v) for v in study.variants}
+    assert seconds[1.0] == early_estimate(ROOT / "parts" / "balancer.toml") > 0
+    assert seconds[4.0] > seconds[2.0] > seconds[1.0]

@@ -50,7 +50,7 @@ def _values(part_file: Path, say=None):
     part type, the file's mapping, its parameters unvalidated, the size estimate from the values alone or None where
     the part type's needs the design).  InputError (a size estimate refused: named as :func:`default_named` does)."""
     from .params import load_params, read_part_file
-    from .parts import check_size, get_part_type, size_needs_design
+    from .parts import check_size, get_part_type, size_needs_validation
 
     part_type_name, mapping = read_part_file(part_file)
     if say is not None:
@@ -58,7 +58,7 @@ def _values(part_file: Path, say=None):
     part_type = get_part_type(part_type_name)
     params = load_params(part_type.params_cls, mapping, validate=False, type_name=part_type.name)
     try:  # the size estimate first where it needs only the values (a design can itself be the long part)
-        estimate = None if size_needs_design(part_type) else check_size(part_type, params, part_file)
+        estimate = None if size_needs_validation(part_type) else check_size(part_type, params, part_file)
     except InputError as exc:
         raise default_named(exc, mapping, part_type.params_cls) from None
     return part_type_name, part_type, mapping, params, estimate
@@ -88,14 +88,12 @@ def early_estimate(part_file: Path) -> float:
     the rules between its fields.  InputError (parameter, value, limit) as :func:`load` raises it.  For ordering
     several builds without computing their designs (batch.longest_first): each build's own :func:`load` checks the
     rest."""
-    from .parts import check_size
+    from .parts import early_size
 
     _, part_type, mapping, params, estimate = _values(part_file)
     if estimate is None:
         try:
-            if callable(getattr(params, "validate", None)):
-                params.validate()
-            estimate = check_size(part_type, params, part_file)
+            estimate = early_size(part_type, params, part_file)
         except InputError as exc:
             raise default_named(exc, mapping, part_type.params_cls) from None
     return estimate.seconds

@@ -111,10 +111,19 @@ def _estimate_of(part_type: PartType):
     return part_type.estimate or ESTIMATES.get(part_type.name)
 
 
-def size_needs_design(part_type: PartType) -> bool:
+def size_needs_validation(part_type: PartType) -> bool:
     """True when the part type's size estimate needs validated parameters (it runs after the rules between the
-    fields, and computes the part of the design it needs)."""
-    return bool(getattr(_estimate_of(part_type), "needs_design", False))
+    fields, and computes the part of the design it needs: ``estimate.needs_validated``)."""
+    return bool(getattr(_estimate_of(part_type), "needs_validated", False))
+
+
+def early_size(part_type: PartType, params, part_file: Path | None = None) -> SizeEstimate:
+    """The size estimate before the design's feasibility is checked: from the values alone, or after the rules
+    between the fields where the part type's estimate needs validated parameters (:func:`size_needs_validation`).
+    InputError (parameter, value, limit) as the build's checks raise it."""
+    if size_needs_validation(part_type) and callable(getattr(params, "validate", None)):
+        params.validate()
+    return check_size(part_type, params, part_file)
 
 
 def check_size(part_type: PartType, params, part_file: Path | None = None) -> SizeEstimate:

@@ -265,17 +265,16 @@ def _run(study: Study, out: Path, *, scheduler, workers, resume, progress, clien
 
 
 def expected_seconds(study: Study, values: dict) -> float:
-    """The variant's build time by the part type's size estimate (parts/size.py), from its values alone;
-    0 where the estimate needs the design or the values are refused (such a variant fails fast)."""
+    """The variant's build time by the part type's size estimate (parts/size.py), as a build's is made before its
+    design (parts.early_size: the values alone, or validated where the estimate needs it: the balancer's travel, a
+    few ms); 0 where the values are refused (such a variant fails fast)."""
     from ..params import load_params
-    from ..parts import check_size, get_part_type, size_needs_design
+    from ..parts import early_size, get_part_type
 
     try:
         pt = get_part_type(study.part_type)
-        if size_needs_design(pt):
-            return 0.0
         params = load_params(pt.params_cls, {**study.base, **values}, validate=False)
-        return float(check_size(pt, params, study.part_file).seconds)
+        return float(early_size(pt, params, study.part_file).seconds)
     except Exception:  # noqa: BLE001 - the variant's own trouble is its row's, not the order's
         return 0.0
 

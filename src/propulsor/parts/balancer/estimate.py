@@ -11,7 +11,7 @@ from .design import suspension_design
 
 
 def estimate(p, part_file: Path | None = None) -> SizeEstimate:
-    """On validated parameters (``needs_design``): the suspension design's travel (InputError as the build's
+    """On validated parameters (``needs_validated``): the suspension design's travel (InputError as the build's
     design raises it; the arm's outline, the long part of the design, is not needed), then: solids, arm stations,
     damper heat and the kit-free outputs fixed (22 CPU s: 31.8 measured on parts/balancer.toml, 2026-11-28), travel
     sweep ∝ steps × (0.1 mm / chord)^0.84 (the sweep meshes' size for the chord, measured)."""
@@ -21,4 +21,4 @@ def estimate(p, part_file: Path | None = None) -> SizeEstimate:
     return wall(cpu, f"travel sweep {steps} steps, sweep chord {p.sweep_chord_mm:g} mm")
 
 
-estimate.needs_design = True  # the travel's angles come from the suspension design (validated parameters)
+estimate.needs_validated = True  # the travel's angles come from the suspension design (validated parameters)
