@@ -646,10 +646,16 @@ def fake(args, part_file, depfile, gallery=True):
     if part_file.stem == "first":  # a build that ends: its folder in place
         (Path("output") / "first").mkdir(parents=True)
         (Path("output") / "first" / "manifest.json").write_text("{}")
+        Path("first.pid").write_text(str(os.getpid()))
         return 0
-    while not (Path("output") / "first" / "manifest.json").exists():  # side by side: the first has ended...
-        time.sleep(0.05)
-    time.sleep(1.0)  # ...and its parent has seen it (it looks every 0.2 s at most)
+    while True:  # side by side: until the first build has ended and the batch has seen it (reaped: no such pid)
+        try:
+            os.kill(int(Path("first.pid").read_text()), 0)
+        except (FileNotFoundError, ValueError, PermissionError):
+            pass
+        except ProcessLookupError:
+            break
+        time.sleep(0.02)
     os.kill(os.getppid(), signal.SIGINT)  # Ctrl-C during the second build
     time.sleep(60)
     return 0
