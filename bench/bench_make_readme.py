@@ -21,6 +21,11 @@ the machine slower still (0cd4c91): 81.93 / 81.23, 72.91 / 81.85, 75.22 / 81.12 
 138.7 / 142.4 user s; system 6.1-6.9 / 10.3-10.8 s, the pages not written); largest process 632-633 / 633-641 MiB.
 678c73b, the machine 1.55 times slower than 2026-12-03's quiet minute (bench_variant.py's least 2.42 against 1.57):
 92.35 / 104.63 s wall (162.4 / 174.6 user, 12.3 / 22.5 sys s); make alone on a fresh clone then 91.44 s (162.5 user).
+2026-12-04, a new session, the machine at its quiet speed for once (bench_variant.py's least 1.60, 1.57 quiet): make
+alone on the fresh clone of CI (006a1e5, its 636 files identical to bench/hashes) 64.2 s wall (117.4 user + 5.8 sys
+s, largest process 746 MiB); the cores idle 4.2 core-s of it (/proc/stat every 0.25 s: 2.6 before the first build
+forks, the imports and estimates of one process; 1.6 after the last); a minute later (least 1.71) 68.0 s (123.9 +
+5.9).  So make is CPU-bound, wall = (CPU + 4 core-s idle) / 2: 60 s needs about 8 CPU s (7 %) less.
 """
 
 from __future__ import annotations
