@@ -109,7 +109,14 @@ class TooManyPairs(ValueError):
 
 
 def overlapping_pairs(lo: np.ndarray, hi: np.ndarray, max_pairs: int | None = None) -> np.ndarray:
-    """All pairs (i < j) whose boxes [lo, hi] overlap (closed), as an (k, 2) array.
+    """All pairs (i < j) whose boxes [lo, hi] overlap (closed), as an (k, 2) array (:func:`overlapping_ij`'s
+    two columns)."""
+    return np.column_stack(overlapping_ij(lo, hi, max_pairs))
+
+
+def overlapping_ij(lo: np.ndarray, hi: np.ndarray, max_pairs: int | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """All pairs (i[k] < j[k]) whose boxes [lo, hi] overlap (closed), as two index arrays (int64), in the order of
+    :func:`overlapping_pairs`'s rows.
 
     Implicit bounding-volume hierarchy: boxes sorted by the Morton code of their
     centres are the leaves of a complete binary tree (node i of level k covers
@@ -122,7 +129,7 @@ def overlapping_pairs(lo: np.ndarray, hi: np.ndarray, max_pairs: int | None = No
     hi = np.asarray(hi, float)
     m = len(lo)
     if m < 2:
-        return np.empty((0, 2), np.int64)
+        return np.empty(0, np.int64), np.empty(0, np.int64)
     order = np.argsort(_morton(0.5 * (lo + hi)), kind="stable")
     levels = [[_f32_down(lo[order, a]) for a in range(3)] + [_f32_up(hi[order, a]) for a in range(3)]]
     while len(levels[-1][0]) > 1:
@@ -141,7 +148,7 @@ def overlapping_pairs(lo: np.ndarray, hi: np.ndarray, max_pairs: int | None = No
             raise TooManyPairs(f"more than {max_pairs} pairs of overlapping triangle boxes")
     keep = A != B
     i, j = order[A[keep]], order[B[keep]]
-    return np.column_stack([np.minimum(i, j), np.maximum(i, j)])
+    return np.minimum(i, j), np.maximum(i, j)
 
 
 def self_intersections(vertices, faces, eps: float | None = None, max_report: int = 100,
@@ -163,12 +170,15 @@ def self_intersections(vertices, faces, eps: float | None = None, max_report: in
     ok = np.nonzero(area2 > (eps * eps))[0]
     lo = T[ok].min(axis=1) - eps
     hi = T[ok].max(axis=1) + eps
-    pairs = ok[overlapping_pairs(lo, hi, max_pairs)]
+    i, j = overlapping_ij(lo, hi, max_pairs)
+    I, J = ok[i], ok[j]  # contiguous: the kernel reads them as they are
+    del i, j
     N = np.cross(T[:, 1] - T[:, 0], T[:, 2] - T[:, 0])
     N /= np.maximum(np.linalg.norm(N, axis=1), 1e-300)[:, None]
     D = np.einsum("ij,ij->i", N, T[:, 0])
-    h = pairs_intersect(V, F, pairs[:, 0], pairs[:, 1], N, D, eps)
-    return int(h.sum()), pairs[h][:max_report].astype(np.int64).reshape(-1, 2)
+    h = pairs_intersect(V, F, I, J, N, D, eps)
+    hit = np.flatnonzero(h)[:max_report]
+    return int(np.count_nonzero(h)), np.column_stack([I[hit], J[hit]]).astype(np.int64).reshape(-1, 2)
 
 
 # --- the checks -------------------------------------------------------------------
