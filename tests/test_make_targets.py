@@ -643,11 +643,13 @@ import propulsor.cli as cli
 
 def fake(args, part_file, depfile, gallery=True):
     assert gallery is False  # a batch writes its gallery once, not each build
-    if part_file.stem == "first":  # a build that ends: its folder in place
-        (Path("output") / "first").mkdir(parents=True)
-        (Path("output") / "first" / "manifest.json").write_text("{}")
+    if part_file.stem == "first":  # a build that ends: its folder in place (not where its checks failed)
+        code = int(os.environ["FIRST_CODE"])
+        if code == 0:
+            (Path("output") / "first").mkdir(parents=True)
+            (Path("output") / "first" / "manifest.json").write_text("{}")
         Path("first.pid").write_text(str(os.getpid()))
-        return 0
+        return code
     while True:  # side by side: until the first build has ended and the batch has seen it (reaped: no such pid)
         try:
             os.kill(int(Path("first.pid").read_text()), 0)
@@ -665,21 +667,25 @@ sys.exit(cli.main(["build", *sys.argv[1:], "-q"]))
 '''
 
 
-@pytest.mark.parametrize("jobs", ["1", "2"])
-def test_an_interrupted_batch_shows_the_builds_that_ended_in_the_gallery(tmp_path, jobs):
+@pytest.mark.parametrize("jobs, first_code", [("1", 0), ("2", 0), ("1", 1)])
+def test_an_interrupted_batch_shows_the_builds_that_ended_in_the_gallery(tmp_path, jobs, first_code):
     """Ctrl-C during the second of `propulsor build first.toml second.toml`: the first build's folder is in place,
     so the gallery (written once at a batch's end, not by each build) is written for it before the exit, and the
-    one line says what was kept (130, as any interrupted build); one build at a time and side by side."""
+    one line says what was kept (130, as any interrupted build); one build at a time and side by side.  A first build
+    whose checks failed (exit 1, its output not kept without --keep-failed): nothing written, no gallery."""
     for name in ("first", "second"):
         shutil.copy(ROOT / "parts" / "road_wheel.toml", tmp_path / f"{name}.toml")
     (tmp_path / "slow.py").write_text(_INTERRUPTED_BATCH)
-    env = {**os.environ, "PROPULSOR_JOBS": jobs}
+    env = {**os.environ, "PROPULSOR_JOBS": jobs, "FIRST_CODE": str(first_code)}
     env.pop("MAKEFLAGS", None)
     p = subprocess.run([sys.executable, "slow.py", "first.toml", "second.toml"], cwd=tmp_path, env=env,
                        capture_output=True, text=True, timeout=120)
     assert p.returncode == 130, p.stderr
-    page = tmp_path / "output" / "index.html"
-    assert page.is_file() and "first" in page.read_text()
     last = [ln for ln in p.stderr.splitlines() if ln.startswith("propulsor: interrupted")][-1]
-    assert last == "propulsor: interrupted by SIGINT; the 1 of 2 builds that ended are in output/, the gallery " \
-                   "shows them; nothing else written", p.stderr
+    page = tmp_path / "output" / "index.html"
+    if first_code:
+        assert last == "propulsor: interrupted by SIGINT; nothing written" and not page.exists(), p.stderr
+        return
+    assert page.is_file() and "first" in page.read_text()
+    assert last == "propulsor: interrupted by SIGINT; 1 of 2 builds finished, their output in output/ (the gallery " \
+                   "shows them); nothing else written", p.stderr

@@ -124,6 +124,8 @@ def cmd_build(args) -> int:
             return build_one(args, part_file, depfile, gallery=False)
 
         finished: list[int] = []  # the exit code of each build that ended, in the order they ended
+        # the codes of a build whose output is in place (a part whose checks fail: only with --keep-failed)
+        placed = (EXIT_OK, EXIT_CHECK_FAILED) if args.keep_failed else (EXIT_OK,)
         try:
             if budget > 1 and can_fork() and not args.dry_run:
                 side_by_side(args, files, depfile, budget, each, jobserver, progress=render, finished=finished)
@@ -133,13 +135,13 @@ def cmd_build(args) -> int:
                     finished.append(in_child(each, args, f, depfile(f)))
         except Interrupted as exc:  # the builds that ended are in place: the gallery shows them, the line says so
             hold_signals()
-            built = sum(c in (EXIT_OK, EXIT_CHECK_FAILED) for c in finished)
+            built = sum(c in placed for c in finished)
             if built and not args.dry_run:
                 page = _batch_gallery(args, told=False)  # no progress line: the one line below says it
-                exc.kept = (f"the {built} of {len(files)} builds that ended are in {args.out_dir or 'output'}/"
-                            + (", the gallery shows them" if page is not None else "") + "; nothing else written")
+                exc.kept = (f"{built} of {len(files)} builds finished, their output in {args.out_dir or 'output'}/"
+                            + (" (the gallery shows them)" if page is not None else "") + "; nothing else written")
             raise
-    if not args.dry_run and any(c in (EXIT_OK, EXIT_CHECK_FAILED) for c in finished):
+    if not args.dry_run and any(c in placed for c in finished):
         _batch_gallery(args)
     return max(finished, key=lambda c: (c == EXIT_BAD_INPUT, c))
 
