@@ -658,25 +658,38 @@ def fake(args, part_file, depfile, gallery=True):
         except ProcessLookupError:
             break
         time.sleep(0.02)
+    if os.environ.get("AT") == "gallery":  # the second ends too: Ctrl-C as the batch writes the gallery
+        (Path("output") / "second").mkdir(parents=True)
+        (Path("output") / "second" / "manifest.json").write_text("{}")
+        return 0
     os.kill(os.getppid(), signal.SIGINT)  # Ctrl-C during the second build
     time.sleep(60)
     return 0
 
+def gallery_interrupted(folder, *a, _calls=[]):
+    _calls.append(1)
+    if len(_calls) == 1:
+        os.kill(os.getpid(), signal.SIGINT)
+    return regenerate(folder, *a)
+
 cli.build_one = fake
+regenerate, cli.regenerate_gallery = cli.regenerate_gallery, gallery_interrupted
 sys.exit(cli.main(["build", *sys.argv[1:], "-q"]))
 '''
 
 
-@pytest.mark.parametrize("jobs, first_code", [("1", 0), ("2", 0), ("1", 1)])
-def test_an_interrupted_batch_shows_the_builds_that_ended_in_the_gallery(tmp_path, jobs, first_code):
+@pytest.mark.parametrize("jobs, first_code, at", [("1", 0, "build"), ("2", 0, "build"), ("1", 1, "build"),
+                                                  ("2", 0, "gallery")])
+def test_an_interrupted_batch_shows_the_builds_that_ended_in_the_gallery(tmp_path, jobs, first_code, at):
     """Ctrl-C during the second of `propulsor build first.toml second.toml`: the first build's folder is in place,
     so the gallery (written once at a batch's end, not by each build) is written for it before the exit, and the
     one line says what was kept (130, as any interrupted build); one build at a time and side by side.  A first build
-    whose checks failed (exit 1, its output not kept without --keep-failed): nothing written, no gallery."""
+    whose checks failed (exit 1, its output not kept without --keep-failed): nothing written, no gallery.  Ctrl-C as
+    the batch writes its gallery after both builds: the page written all the same, the line counting both."""
     for name in ("first", "second"):
         shutil.copy(ROOT / "parts" / "road_wheel.toml", tmp_path / f"{name}.toml")
     (tmp_path / "slow.py").write_text(_INTERRUPTED_BATCH)
-    env = {**os.environ, "PROPULSOR_JOBS": jobs, "FIRST_CODE": str(first_code)}
+    env = {**os.environ, "PROPULSOR_JOBS": jobs, "FIRST_CODE": str(first_code), "AT": at}
     env.pop("MAKEFLAGS", None)
     p = subprocess.run([sys.executable, "slow.py", "first.toml", "second.toml"], cwd=tmp_path, env=env,
                        capture_output=True, text=True, timeout=120)
@@ -686,6 +699,7 @@ def test_an_interrupted_batch_shows_the_builds_that_ended_in_the_gallery(tmp_pat
     if first_code:
         assert last == "propulsor: interrupted by SIGINT; nothing written" and not page.exists(), p.stderr
         return
-    assert page.is_file() and "first" in page.read_text()
-    assert last == "propulsor: interrupted by SIGINT; 1 of 2 builds finished, their output in output/ (the gallery " \
-                   "shows them); nothing else written", p.stderr
+    finished = 2 if at == "gallery" else 1
+    assert page.is_file() and "first" in page.read_text() and ("second" in page.read_text()) == (finished == 2)
+    assert last == f"propulsor: interrupted by SIGINT; {finished} of 2 builds finished, their output in output/ (the " \
+                   "gallery shows them); nothing else written", p.stderr

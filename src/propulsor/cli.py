@@ -133,17 +133,26 @@ def cmd_build(args) -> int:
                 render.close()
                 for f in files:
                     finished.append(in_child(each, args, f, depfile(f)))
-        except Interrupted as exc:  # the builds that ended are in place: the gallery shows them, the line says so
-            hold_signals()
-            built = sum(c in placed for c in finished)
-            if built and not args.dry_run:
-                page = _batch_gallery(args, told=False)  # no progress line: the one line below says it
-                exc.kept = (f"{built} of {len(files)} builds finished, their output in {args.out_dir or 'output'}/"
-                            + (" (the gallery shows them)" if page is not None else "") + "; nothing else written")
+        except Interrupted as exc:
+            _interrupted_batch(args, exc, sum(c in placed for c in finished), len(files))
             raise
     if not args.dry_run and any(c in placed for c in finished):
-        _batch_gallery(args)
+        try:
+            _batch_gallery(args)
+        except Interrupted as exc:
+            _interrupted_batch(args, exc, sum(c in placed for c in finished), len(files))
+            raise
     return max(finished, key=lambda c: (c == EXIT_BAD_INPUT, c))
+
+
+def _interrupted_batch(args, exc: Interrupted, built: int, n: int) -> None:
+    """A signal stopped a batch after `built` of its `n` builds had put their output in place: the gallery written
+    for them (no progress line: the command line's one line says it), and that line's words on `exc` (``kept``)."""
+    hold_signals()
+    if built and not args.dry_run:
+        page = _batch_gallery(args, told=False)
+        exc.kept = (f"{built} of {n} builds finished, their output in {args.out_dir or 'output'}/"
+                    + (" (the gallery shows them)" if page is not None else "") + "; nothing else written")
 
 
 def _batch_gallery(args, told: bool = True) -> Path | None:

@@ -48,7 +48,7 @@ def files_read(params, part_file: Path) -> tuple[Path, ...]:
 def _values(part_file: Path, say=None):
     """What :func:`load` and :func:`early_estimate` both do first: (the part type's name as the file gives it, the
     part type, the file's mapping, its parameters unvalidated, the size estimate from the values alone or None where
-    the part type's needs the design).  InputError (a size estimate refused: named as :func:`default_named` does)."""
+    the part type's needs validated parameters).  InputError (a size estimate refused: named as :func:`default_named` does)."""
     from .params import load_params, read_part_file
     from .parts import check_size, get_part_type, size_needs_validation
 
