@@ -300,6 +300,39 @@ def test_interrupt_exits_with_one_line_and_leaves_nothing(tmp_path, wheel, sig, 
     assert sorted(q.name for q in tmp_path.iterdir()) == ["wheel.toml"]
 
 
+_INTERRUPTED_AFTER_PLACING = r'''
+import os, signal, sys
+import propulsor.building as building
+from propulsor.cli import main
+
+real = building.regenerate_gallery
+calls = []
+
+def gallery(folder, *a):  # Ctrl-C as the build, its output in place, writes the gallery beside it
+    calls.append(1)
+    if len(calls) == 1:
+        os.kill(os.getpid(), signal.SIGINT)
+    return real(folder, *a)
+
+building.regenerate_gallery = gallery
+sys.exit(main(["build", "wheel.toml", "-q"]))
+'''
+
+
+def test_an_interrupt_once_the_output_is_in_place_says_so_and_keeps_it(tmp_path, wheel):
+    """A signal after the build's output was put in place (here: as the gallery beside it is written) does not undo
+    it: the folder stays, the gallery is written for it, exit 130 and one line that says what is there, not "nothing
+    written"."""
+    (tmp_path / "run.py").write_text(_INTERRUPTED_AFTER_PLACING)
+    p = subprocess.run([sys.executable, "run.py"], cwd=tmp_path, capture_output=True, text=True, timeout=600)
+    assert p.returncode == 130, p.stderr
+    out = (tmp_path / "output" / "wheel").resolve()
+    assert _one_error_line(p.stderr) == f"propulsor: interrupted by SIGINT; {out} is built (the gallery shows it); " \
+                                        "nothing else written"
+    assert (out / "manifest.json").is_file() and "wheel" in (tmp_path / "output" / "index.html").read_text()
+    assert sorted(q.name for q in (tmp_path / "output").iterdir()) == ["index.html", "wheel"]  # no temporary folder
+
+
 def test_interrupt_during_imports_is_one_line(tmp_path, wheel):
     p = _popen("build", str(wheel), "--out", str(tmp_path / "out"), "-q")
     time.sleep(1.0)  # inside the imports of the kernel and the part

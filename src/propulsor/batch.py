@@ -245,7 +245,8 @@ def fork(fn, args, stdout_fd: int | None = None, stderr_fd: int | None = None) -
 
             hold_signals()
             kill_workers()
-            print(f"propulsor: interrupted by {signal.Signals(exc.signum).name}; nothing written", file=sys.stderr)
+            print(f"propulsor: interrupted by {signal.Signals(exc.signum).name}; {getattr(exc, 'kept', 'nothing written')}",
+                  file=sys.stderr)
             code = 128 + exc.signum
         except BaseException:  # noqa: BLE001 - reported as the traceback Python would print
             import traceback

@@ -29,7 +29,7 @@ from typing import Callable
 from .errors import CheckFailed, EnvironmentFailure, FolderBusy, InputError
 from .loading import Loaded, default_named, early_estimate, files_read, load, load_part, named_files  # noqa: F401
 from .progress import Reporter
-from .signals import check_signalled, held_signals
+from .signals import Interrupted, check_signalled, held_signals, hold_signals
 
 __all__ = ["Loaded", "BuildResult", "ProofResult", "KeptFiles", "load", "target", "build", "build_kit", "build_in_memory", "design",
            "prove", "solids", "solids_alone", "SolidsResult", "publish",
@@ -114,6 +114,24 @@ def write_depfile(depfile: Path, target: Path, files) -> None:
 
 def publish(out: Path, keep: tuple[Path, ...], produce: Callable, *, force: bool = False,
             keep_failed: bool = False, wait: bool = True, progress=None, gallery: bool = True) -> BuildResult:
+    """:func:`_publish`; a signal that arrives once the output is in place (while the lock is let go, the gallery
+    written, the last line said) leaves it there: the gallery written for it (no progress line), and the command
+    line's one line told so (``Interrupted.kept``), not "nothing written"."""
+    placed: list[bool] = []
+    try:
+        return _publish(out, keep, produce, placed, force=force, keep_failed=keep_failed, wait=wait,
+                        progress=progress, gallery=gallery)
+    except Interrupted as exc:
+        if placed:
+            hold_signals()
+            page = regenerate_gallery(out.parent) if gallery and gallery_folder(out.parent) else None
+            exc.kept = f"{out} is built" + (" (the gallery shows it)" if page is not None else "") + \
+                "; nothing else written"
+        raise
+
+
+def _publish(out: Path, keep: tuple[Path, ...], produce: Callable, placed: list, *, force: bool = False,
+             keep_failed: bool = False, wait: bool = True, progress=None, gallery: bool = True) -> BuildResult:
     """Run ``produce(tmp, say) -> (failures, what, writer)`` into a fresh temporary folder beside `out` with the
     lock of `out` held and this build's own workers, check that the folder holds exactly what the manifest
     lists, then put it in place of `out` in one step (or drop it when a check failed and not `keep_failed`).
@@ -154,6 +172,7 @@ def publish(out: Path, keep: tuple[Path, ...], produce: Callable, *, force: bool
                     raise CheckFailed(failures, what=what, result=_result(out, what, w, failures, keep))
                 of.verify_built(tmp, ident)
                 of.replace(tmp, out, before, notice=say.notice)
+                placed.append(True)
         except OSError as exc:  # a write refused (a file's write names no path: the folder it went to)
             if exc.filename is None:
                 exc.filename = str(tmp if tmp is not None else out)
