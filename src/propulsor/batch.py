@@ -12,7 +12,7 @@ from pathlib import Path
 
 from .progress import Reporter
 from .render import Board, forward_to
-from .signals import Interrupted, hold_signals
+from .signals import Interrupted, check_signalled, hold_signals
 
 
 def longest_first(files: list[Path], progress=None) -> list[int]:
@@ -74,6 +74,7 @@ def side_by_side(args, files: list[Path], depfile, slots: int, build, jobserver=
 
     try:
         while pending or running:
+            check_signalled()  # a signal swallowed where Python could not raise it (a fork's callbacks, a finaliser)
             drain(0.0)
             # a slot of the budget for the next build; with none running, a slot still held by a worker that
             # was killed would never come back: start anyway after a moment
@@ -218,6 +219,7 @@ def in_child(fn, *args) -> int:
         return fn(*args)
     pid = fork(fn, args)
     try:
+        check_signalled()  # a signal that came while the fork's own callbacks ran in this process (swallowed there)
         _, status = os.waitpid(pid, 0)
     except Interrupted as exc:
         os.kill(pid, exc.signum)
