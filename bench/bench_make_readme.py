@@ -25,8 +25,8 @@ the machine slower still (0cd4c91): 81.93 / 81.23, 72.91 / 81.85, 75.22 / 81.12 
 alone on the fresh clone of CI (006a1e5, its 636 files identical to bench/hashes) 64.2 s wall (117.4 user + 5.8 sys
 s, largest process 746 MiB); the cores idle 4.2 core-s of it (/proc/stat every 0.25 s: 2.6 before the first build
 forks, the imports and estimates of one process; 1.6 after the last); a minute later (least 1.71) 68.0 s (123.9 +
-5.9).  So make is CPU-bound, wall = (CPU + 4 core-s idle) / 2: 60 s needs about 8 CPU s (7 %) less.  Again at
-2477ac8's source (least 1.59), sampled every 0.05 s: 62.4 s wall; one core busy from 0 to 2.8 s (make, then the
+5.9).  So make is CPU-bound, wall = (CPU + 4 core-s idle) / 2: 60 s needs about 8 CPU s (7 %) less.  Again on
+that clone (006a1e5, least 1.59), sampled every 0.05 s: 62.4 s wall; one core busy from 0 to 2.8 s (make, then the
 batch's imports 2.2 s and estimates 0.2 s, which every build needs before it forks), both from 2.8 to 62.0 s, the
 gallery's 0.3 s alone at the end: 3.2 core-s idle, so 60 s needs about 5 CPU s (4 %) less.
 """
