@@ -89,7 +89,7 @@ def side_by_side(args, files: list[Path], depfile, slots: int, build, jobserver=
                 rfd, wfd = os.pipe()
                 os.set_blocking(rfd, False)
                 pid = fork(_forwarding, (build, wfd, tuple(pipes.values()) + (rfd,), not board.live, args,
-                                         files[k], depfile(files[k])), out.fileno(), err.fileno())
+                                         files[k], depfile(files[k])), out.fileno(), err.fileno(), str(files[k]))
                 os.close(wfd)
                 pipes[pid] = rfd
                 board.start(pid, str(files[k]))
@@ -210,14 +210,15 @@ def preload() -> None:
     gc.freeze()
 
 
-def in_child(fn, *args) -> int:
+def in_child(fn, *args, label: str | None = None) -> int:
     """fn(*args) -> exit code, in a forked child (where fork is missing: here).  Each build of several
     starts from the same process state — OCCT's process-wide counters (the STEP writer numbers assembly
     occurrences with one), caches, figures — so it writes the same bytes as a build on its own.  A
-    signal to this process is passed on to the child, and waited for."""
+    signal to this process is passed on to the child, and waited for; `label` (the part file) names the child in
+    its line when a signal stops it."""
     if not hasattr(os, "fork"):
         return fn(*args)
-    pid = fork(fn, args)
+    pid = fork(fn, args, label=label)
     try:
         check_signalled()  # a signal that came while the fork's own callbacks ran in this process (swallowed there)
         _, status = os.waitpid(pid, 0)
@@ -228,9 +229,10 @@ def in_child(fn, *args) -> int:
     return os.waitstatus_to_exitcode(status)
 
 
-def fork(fn, args, stdout_fd: int | None = None, stderr_fd: int | None = None) -> int:
+def fork(fn, args, stdout_fd: int | None = None, stderr_fd: int | None = None, label: str | None = None) -> int:
     """Fork a child that runs fn(*args) -> exit code (its standard output and error sent to the given file
-    descriptors, when given) and leaves; returns its pid."""
+    descriptors, when given) and leaves; returns its pid.  A signal that stops the child: one line, naming `label`
+    (the part file of a build of several) when given."""
     sys.stdout.flush()
     sys.stderr.flush()
     pid = os.fork()
@@ -247,8 +249,8 @@ def fork(fn, args, stdout_fd: int | None = None, stderr_fd: int | None = None) -
 
             hold_signals()
             kill_workers()
-            print(f"propulsor: interrupted by {signal.Signals(exc.signum).name}; {getattr(exc, 'kept', 'nothing written')}",
-                  file=sys.stderr)
+            print(f"propulsor: {label + ': ' if label else ''}interrupted by {signal.Signals(exc.signum).name}; "
+                  f"{getattr(exc, 'kept', 'nothing written')}", file=sys.stderr)
             code = 128 + exc.signum
         except BaseException:  # noqa: BLE001 - reported as the traceback Python would print
             import traceback

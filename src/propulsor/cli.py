@@ -132,7 +132,7 @@ def cmd_build(args) -> int:
             else:
                 render.close()
                 for f in files:
-                    finished.append(in_child(each, args, f, depfile(f)))
+                    finished.append(in_child(each, args, f, depfile(f), label=str(f)))
         except Interrupted as exc:
             _interrupted_batch(args, exc, sum(c in placed for c in finished), len(files))
             raise
