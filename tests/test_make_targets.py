@@ -602,6 +602,7 @@ def test_make_writes_the_gallery_only_where_the_builds_did_not(project):
 def test_several_part_files_write_the_gallery_once_after_the_last(tmp_path, monkeypatch):
     """`propulsor build a b c`: no build rewrites the gallery (each is told so), the command writes it once after
     the last has ended, when the folder is a gallery of its own; a single part file's build writes it itself."""
+    import propulsor.building as building
     import propulsor.cli as cli
 
     log, pages = tmp_path / "log", []
@@ -619,7 +620,7 @@ def test_several_part_files_write_the_gallery_once_after_the_last(tmp_path, monk
 
     monkeypatch.setenv("PROPULSOR_JOBS", "1")
     monkeypatch.setattr(cli, "build_one", build)
-    monkeypatch.setattr(cli, "regenerate_gallery", lambda folder, progress=None: pages.append((folder, time.time())))
+    monkeypatch.setattr(building, "regenerate_gallery", lambda folder, progress=None: pages.append((folder, time.time())))
     out = tmp_path / "out"
     out.mkdir()
     (out / "index.html").write_text('<meta name="generator" content="propulsor">\n')
@@ -639,6 +640,7 @@ def test_several_part_files_write_the_gallery_once_after_the_last(tmp_path, monk
 _INTERRUPTED_BATCH = r'''
 import os, signal, sys, time
 from pathlib import Path
+import propulsor.building as building
 import propulsor.cli as cli
 
 def fake(args, part_file, depfile, gallery=True):
@@ -673,7 +675,7 @@ def gallery_interrupted(folder, *a, _calls=[]):
     return regenerate(folder, *a)
 
 cli.build_one = fake
-regenerate, cli.regenerate_gallery = cli.regenerate_gallery, gallery_interrupted
+regenerate, building.regenerate_gallery = building.regenerate_gallery, gallery_interrupted
 # the batch lingers in the fork's callbacks (logging's lock let go, …): a signal there is raised inside a callback,
 # whose exception Python does not propagate (the race CI met: a second build that signals at once)
 os.register_at_fork(after_in_parent=lambda: time.sleep(0.5))

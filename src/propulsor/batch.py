@@ -39,6 +39,59 @@ def longest_first(files: list[Path], progress=None) -> list[int]:
     return sorted(range(len(files)), key=keys.__getitem__)
 
 
+def build_many(args, files: list[Path], budget: int, jobserver, each, placed: tuple[int, ...]) -> list[int]:
+    """``propulsor build`` of several part files: the modules loaded once (:func:`preload`), each build
+    (``each(args, part_file, depfile) -> exit code``) in a forked child, side by side within `budget` where it may
+    fork, else one after the other; then the gallery beside them once (when it is one: building.gallery_folder).
+    Returns each build's exit code, in the order they ended.  `placed`: the codes of a build whose output is in place.
+    A signal: the gallery written for the builds in place and the command line's one line told of them
+    (``Interrupted.kept``), then raised on."""
+    from .parallel import can_fork
+    from .render import Renderer
+
+    def depfile(part_file):
+        return Path(args.depfile_dir) / f"{part_file.stem}.mk" if args.depfile_dir else None
+
+    finished: list[int] = []
+    try:
+        with Renderer(args.quiet) as render:
+            render(f"{len(files)} part files: loading the CAD kernel and the checks")
+            preload()
+            if budget > 1 and can_fork() and not args.dry_run:
+                side_by_side(args, files, depfile, budget, each, jobserver, progress=render, finished=finished)
+            else:
+                render.close()
+                for f in files:
+                    finished.append(in_child(each, args, f, depfile(f), label=str(f)))
+        if not args.dry_run and any(c in placed for c in finished):
+            _gallery_once(args)
+    except Interrupted as exc:
+        hold_signals()
+        built = sum(c in placed for c in finished)
+        if built and not args.dry_run:
+            page = _gallery_once(args, told=False)  # no progress line: the command line's one line says it
+            exc.kept = (f"{built} of {len(files)} builds finished, their output in {args.out_dir or 'output'}/"
+                        + (" (the gallery shows them)" if page is not None else "") + "; nothing else written")
+        raise
+    return finished
+
+
+def _gallery_once(args, told: bool = True) -> Path | None:
+    """The gallery beside a batch's output folders, once after its builds (as each build alone would have written
+    it: building.publish): the page written, or None (no gallery's folder, or not written).  `told`: the progress
+    lines and a notice if it could not be written."""
+    from .building import gallery_folder, regenerate_gallery
+    from .render import Renderer
+
+    folder = Path(args.out_dir or "output")
+    if not (folder.is_dir() and gallery_folder(folder)):
+        return None
+    if not told:
+        return regenerate_gallery(folder)
+    with Renderer(args.quiet) as render:
+        return regenerate_gallery(folder, render)
+
+
 def side_by_side(args, files: list[Path], depfile, slots: int, build, jobserver=None, progress=None,
                  finished: list[int] | None = None) -> list[int]:
     """Build the part files (``build(args, part_file, depfile) -> exit code``) in forked children, as many

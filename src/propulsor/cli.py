@@ -111,61 +111,15 @@ def cmd_build(args) -> int:
         from .batch import with_jobserver
 
         return with_jobserver(one, budget, jobserver)
-    with Renderer(args.quiet) as render:
-        render(f"{len(files)} part files: loading the CAD kernel and the checks")
-        from .batch import in_child, preload, side_by_side
+    from .batch import build_many
 
-        preload()
+    def each(args, part_file, depfile):  # the gallery once, after the last (batch.build_many)
+        return build_one(args, part_file, depfile, gallery=False)
 
-        def depfile(part_file):
-            return Path(args.depfile_dir) / f"{part_file.stem}.mk" if args.depfile_dir else None
-
-        def each(args, part_file, depfile):  # the gallery once, after the last (below)
-            return build_one(args, part_file, depfile, gallery=False)
-
-        finished: list[int] = []  # the exit code of each build that ended, in the order they ended
-        # the codes of a build whose output is in place (a part whose checks fail: only with --keep-failed)
-        placed = (EXIT_OK, EXIT_CHECK_FAILED) if args.keep_failed else (EXIT_OK,)
-        try:
-            if budget > 1 and can_fork() and not args.dry_run:
-                side_by_side(args, files, depfile, budget, each, jobserver, progress=render, finished=finished)
-            else:
-                render.close()
-                for f in files:
-                    finished.append(in_child(each, args, f, depfile(f), label=str(f)))
-        except Interrupted as exc:
-            _interrupted_batch(args, exc, sum(c in placed for c in finished), len(files))
-            raise
-    if not args.dry_run and any(c in placed for c in finished):
-        try:
-            _batch_gallery(args)
-        except Interrupted as exc:
-            _interrupted_batch(args, exc, sum(c in placed for c in finished), len(files))
-            raise
-    return max(finished, key=lambda c: (c == EXIT_BAD_INPUT, c))
-
-
-def _interrupted_batch(args, exc: Interrupted, built: int, n: int) -> None:
-    """A signal stopped a batch after `built` of its `n` builds had put their output in place: the gallery written
-    for them (no progress line: the command line's one line says it), and that line's words on `exc` (``kept``)."""
-    hold_signals()
-    if built and not args.dry_run:
-        page = _batch_gallery(args, told=False)
-        exc.kept = (f"{built} of {n} builds finished, their output in {args.out_dir or 'output'}/"
-                    + (" (the gallery shows them)" if page is not None else "") + "; nothing else written")
-
-
-def _batch_gallery(args, told: bool = True) -> Path | None:
-    """The gallery beside a batch's output folders, once after its builds (as each build alone would have written
-    it: building.publish): the page written, or None (no gallery's folder, or not written).  `told`: the progress
-    lines and a notice if it could not be written."""
-    folder = Path(args.out_dir or "output")
-    if not (folder.is_dir() and gallery_folder(folder)):
-        return None
-    if not told:
-        return regenerate_gallery(folder)
-    with Renderer(args.quiet) as render:
-        return regenerate_gallery(folder, render)
+    # the codes of a build whose output is in place (a part whose checks fail: only with --keep-failed)
+    placed = (EXIT_OK, EXIT_CHECK_FAILED) if args.keep_failed else (EXIT_OK,)
+    codes = build_many(args, files, budget, jobserver, each, placed)
+    return max(codes, key=lambda c: (c == EXIT_BAD_INPUT, c))
 
 
 def build_one(args, part_file: Path, depfile: Path | None, gallery: bool = True) -> int:
