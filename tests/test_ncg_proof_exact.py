@@ -212,7 +212,7 @@ def test_proof_of_a_circular_pair_is_its_backlash_and_half_of_it_as_transmission
     r_of = lambda ph: np.full(np.shape(ph), 50.0)
     ticks = []
     pr = prove_pair(dd.profiles[0], dd.profiles[1], 75.0, d.run_law.theta, phis, r_of, name="gears",
-                    pitch_mm=math.pi * 2.5, windows=3, tick=ticks.append)
+                    pitch_mm=math.pi * 2.5, windows=3, tick=ticks.append, on_jam=lambda: ticks.append("jam"))
     jt = 0.16 / math.cos(math.radians(20.0))
     assert pr.name == "gears" and np.array_equal(pr.phi, phis) and pr.r_ref.tolist() == [50.0] * 8
     assert pr.theta_law == pytest.approx(2 * phis, abs=1e-12)
@@ -308,8 +308,10 @@ def test_proof_of_a_pair_mounted_too_close_is_jammed_at_every_phase_with_its_lea
     _, dd = _circular()
     d = dd.d
     phis = np.array([0.0, 0.05])
+    events = []
     pr = prove_pair(dd.profiles[0], dd.profiles[1], 71.0, d.run_law.theta, phis, lambda ph: 50.0 + 0 * ph,
-                    pitch_mm=math.pi * 2.5, windows=1)
+                    pitch_mm=math.pi * 2.5, windows=2, tick=events.append, on_jam=lambda: events.append("jam"))
+    assert events == ["jam", 1, 2]  # told once, at the first jammed phase (before its window ends), not at each
     assert pr.jams == 2 and np.all(np.isnan(pr.phi_drive)) and np.all(np.isnan(pr.phi_coast))
     assert pr.pairs_drive.tolist() == [0, 0]
     drv = d.driver.profile.outer.polyline(1e-4)[None]
@@ -653,8 +655,14 @@ def _proofs_world(monkeypatch, proof, tolerance_grade=0, compare_methods=False, 
     from propulsor.parts.noncircular_pair import as_built, pair_proof, proofs, tolerance
 
     log = []
-    monkeypatch.setattr(proofs, "prove", lambda d, ppt, legs, prog, mount: log.append(("prove", d, ppt, legs, mount,
-                                                                                        prog)) or proof)
+    def prove(d, ppt, legs, prog, mount, on_jam=None):
+        if np.any(~np.isfinite(proof.phi_drive)):  # the proof meets its first jammed phase on its way
+            log.append(("jam",))
+            on_jam()
+        log.append(("prove", d, ppt, legs, mount, prog))
+        return proof
+
+    monkeypatch.setattr(proofs, "prove", prove)
     monkeypatch.setattr(pair_proof, "_outer_only", lambda profile: log.append(("sample", profile)))
 
     def start(fn, *a, counter=None, forked_only=False):
@@ -771,10 +779,13 @@ def test_proofs_of_a_jammed_pair_build_nothing_as_built_and_without_a_grade_no_t
             starts = [e for e in log if e[0] == "start"]
             assert starts == [("start", f, ("D", 76.0, DRIVE), "C1", "forked only"),
                               ("start", f, ("D", 76.0, REVERSE), "C2", "forked only")]
-            dropped = [e for e in log if e[0] == "abandon"]
-            assert dropped == ([("abandon", ("job", f, ("D", 76.0, DRIVE))), ("abandon", ("job", f, ("D", 76.0, REVERSE)))]
-                               if free else [("abandon", None), ("abandon", None)])
-            assert log.index(dropped[0]) > [e[0] for e in log].index("prove")
+            # abandoned as the proof meets its first jam (their workers stop then, not after the whole proof), and
+            # again after it (no transmission as built: a job already stopped is left as it is)
+            jobs = ([("abandon", ("job", f, ("D", 76.0, DRIVE))), ("abandon", ("job", f, ("D", 76.0, REVERSE)))]
+                    if free else [("abandon", None), ("abandon", None)])
+            events = [e for e in log if e[0] in ("jam", "abandon", "prove")]
+            assert [e[0] for e in events] == ["jam", "abandon", "abandon", "prove", "abandon", "abandon"]
+            assert events[1:3] == jobs and events[4:] == jobs
     # a jam counted though every phi_drive is finite
     pr = _proof(phi_drive=np.array([0.0, 0.5, 1.0, 1.5, 2.0, 2.5]))
     pr_jam = SimpleNamespace(jams=1, phi_drive=pr.phi_drive)

@@ -135,11 +135,22 @@ def _outer_only(profile):
 
 
 def prove_pair(driver_profile, driven_profile, L: float, theta_of_phi, phis, r_ref, *, name: str = "mesh",
-               windows: int | None = None, pitch_mm: float | None = None, tick=None) -> PairProof:
+               windows: int | None = None, pitch_mm: float | None = None, tick=None, on_jam=None) -> PairProof:
     """Full-cycle proof of the pair (see the module docstring).  ``theta_of_phi``: vectorised law
     theta(phi) (rad); ``r_ref``: vectorised driven pitch radius r_H(phi) (mm); ``pitch_mm``:
     tooth pitch on the pitch curve (sets the search span of non-conjugate teeth); ``tick(done)``: told the
-    phases done after each window (progress only)."""
+    phases done after each window (progress only); ``on_jam()``: called once, as soon as a phase is found jammed
+    (no free position: the pair has no running position there, whatever the other phases give), so that work that
+    needs a running pair stops then, not after the whole proof."""
+    jammed = False
+
+    def jam():
+        nonlocal jammed
+        if not jammed:
+            jammed = True
+            if on_jam is not None:
+                on_jam()
+
     drv = outline(_outer_only(driver_profile))
     dvn = outline(_outer_only(driven_profile))
     _axis_annulus(drv)
@@ -204,12 +215,14 @@ def prove_pair(driver_profile, driven_profile, L: float, theta_of_phi, phis, r_r
             offset[k], least[k] = off, area
             prev, warm = off, True
             if area > policy.OVERLAP_AREA_TOL_MM2:
+                jam()
                 continue  # jammed: no free position near the law's
             p = np.array([phis[k] + off])
             t1 = transmission_sweep(dcrop, (L, 0.0), crop, (0.0, 0.0), lambda _p, t=float(theta[k]): t, p,
                                     r_ref=rr[k], name=name)
             if t1.overlap_area[0] > policy.OVERLAP_AREA_TOL_MM2:
                 least[k] = t1.overlap_area[0]
+                jam()
                 continue
             pdrv[k] = phis[k] + off - t1.free_back[0]
             pcst[k] = phis[k] + off + t1.free_fwd[0]

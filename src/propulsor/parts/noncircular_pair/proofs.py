@@ -20,10 +20,12 @@ from .params import NoncircularPairParams
 __all__ = ["prove", "compare", "checks_generated", "checks_common", "checks_sectors", "proofs", "other_method"]
 
 
-def prove(d: Design, phases_per_tooth: int, legs: int = 4, progress=lambda s: None, mount: float | None = None):
+def prove(d: Design, phases_per_tooth: int, legs: int = 4, progress=lambda s: None, mount: float | None = None,
+          on_jam=None):
     """Proof of the pair over ``legs`` legs (4 = the whole driven turn) with
     ``phases_per_tooth`` phases per driven tooth (:mod:`.pair_proof`), the gears at the
-    installed centre distance ``mount`` (default the design L)."""
+    installed centre distance ``mount`` (default the design L); ``on_jam()``: called at the first phase found
+    jammed (``prove_pair``'s)."""
     from .pair_proof import prove_pair
 
     N = phases_per_tooth * d.z_H * legs // 4
@@ -39,7 +41,7 @@ def prove(d: Design, phases_per_tooth: int, legs: int = 4, progress=lambda s: No
     phase = f"{d.method}: proof over {span}"
     progress(f"{phase}, {N} phases")
     return prove_pair(d.driver.profile, d.driven.profile, mount or d.L, d.run_law.theta, phis, pc.r_H,
-                      name="mesh", pitch_mm=pitch, tick=counter(progress, phase, N, "phase"))
+                      name="mesh", pitch_mm=pitch, tick=counter(progress, phase, N, "phase"), on_jam=on_jam)
 
 
 def compare(p: NoncircularPairParams, d: Design, prog=lambda s: None):
@@ -154,7 +156,14 @@ def proofs(dd: PairDesign, w, built: dict) -> None:
     # pickled as it starts, with its splines' samples (a job started before them samples both wheels again)
     _outer_only(d.driver.profile), _outer_only(d.driven.profile)
     ahead = [direction(way, count, True) for way, count in zip((DRIVE, REVERSE), counts)]
-    built["proof"] = prove(d, p.proof_phases_per_tooth, 4, prog, dd.mount)
+
+    def stop_ahead():
+        # a jammed phase: no transmission as built (below), so the contact started ahead stops at once, not after the
+        # whole proof (the sector tables' pairs, whose papers' teeth jam: 8-9 CPU s of contact thrown away each)
+        for job in ahead:
+            abandon(job)
+
+    built["proof"] = prove(d, p.proof_phases_per_tooth, 4, prog, dd.mount, on_jam=stop_ahead)
     pr = built["proof"]
     if pr.jams or not np.all(np.isfinite(pr.phi_drive)):
         for job in ahead:
