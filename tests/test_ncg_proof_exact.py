@@ -643,6 +643,7 @@ class _Design(str):
 
     driver = SimpleNamespace(profile="driver profile")
     driven = SimpleNamespace(profile="driven profile")
+    method = "sectors"  # the papers' teeth: the other method is "generated"
 
 
 def _proofs_world(monkeypatch, proof, tolerance_grade=0, compare_methods=False, load_given=False, free=True):
@@ -799,6 +800,48 @@ def test_proofs_of_a_jammed_pair_build_nothing_as_built_and_without_a_grade_no_t
     other_method(dd, w, built)
     assert len(built["as_built"]) == 2 and "tolerance" not in built and built["other"] == (None, None, "")
     assert said == ["as built: both directions' contact on the finished outlines, resolved by contact events"]
+
+
+def test_a_jammed_pairs_comparison_starts_in_the_worker_its_contact_leaves_and_is_collected_once(monkeypatch):
+    """compare_methods: where the proof meets a jam, the other method's comparison starts in a worker (forked only)
+    as soon as the contact started ahead is dropped, beside the rest of the proof, and the comparison step collects
+    that job (never computing it again); where no worker is free it is computed in the comparison step as before, and
+    a pair that runs never starts it early."""
+    import propulsor.parallel as parallel
+    from propulsor.parts.noncircular_pair import proofs as proofs_mod
+    from propulsor.parts.noncircular_pair.proofs import other_method, proofs
+
+    for free in (True, False):
+        dd, w, said, log, ticks, _, _ = _proofs_world(monkeypatch, _proof(), compare_methods=True, free=free)
+        monkeypatch.setattr(parallel, "result", lambda job: log.append(("result", job)) or ("OD2", "OP2", "n2"))
+        fake_compare = proofs_mod.compare
+        built = {}
+        proofs(dd, w, built)
+        events = [e[0] if e[0] != "start" else ("start", e[1]) for e in log
+                  if e[0] in ("jam", "abandon", "prove", "start", "compare")]
+        assert events[:6] == [("start", events[0][1]), ("start", events[0][1]), "jam", "abandon", "abandon",
+                              ("start", fake_compare)]
+        assert events[6:] == ["prove", "abandon", "abandon"]
+        assert [e for e in log if e[0] == "start" and e[1] is fake_compare] == [
+            ("start", fake_compare, (dd.p, dd.d), None, "forked only")]
+        assert ("other_job" in built) == free
+        assert said == (["generated: the other tooth method over one leg, for comparison, in a second process "
+                         "beside the proof"] if free else [])
+        other_method(dd, w, built)
+        assert "other_job" not in built
+        if free:
+            assert built["other"] == ("OD2", "OP2", "n2")
+            assert [e for e in log if e[0] in ("result", "compare")] == [
+                ("result", ("job", fake_compare, (dd.p, dd.d)))]
+        else:
+            assert built["other"] == ("OD", "OP", "note")
+            assert [e[0] for e in log if e[0] in ("result", "compare")] == ["compare"]
+    # a pair that runs: the comparison waits for its own step, computed there
+    pr = _proof(phi_drive=np.array([0.0, 0.5, 1.0, 1.5, 2.0, 2.5]))
+    dd, w, said, log, ticks, _, _ = _proofs_world(monkeypatch, pr, compare_methods=True)
+    built = {}
+    proofs(dd, w, built)
+    assert "other_job" not in built and not any(e[0] == "start" and e[1] is proofs_mod.compare for e in log)
 
 
 # =========================================================================== the search's details

@@ -159,9 +159,17 @@ def proofs(dd: PairDesign, w, built: dict) -> None:
 
     def stop_ahead():
         # a jammed phase: no transmission as built (below), so the contact started ahead stops at once, not after the
-        # whole proof (the sector tables' pairs, whose papers' teeth jam: 8-9 CPU s of contact thrown away each)
+        # whole proof (the sector tables' pairs, whose papers' teeth jam: 8-9 CPU s of contact thrown away each); the
+        # other method's comparison takes a worker thus freed, beside the rest of the proof (other_method collects it)
         for job in ahead:
             abandon(job)
+        if p.compare_methods:
+            job = start(compare, p, d, forked_only=True)
+            if job is not None:
+                other = "sectors" if d.method == "generated" else "generated"
+                prog(f"{other}: the other tooth method over one leg, for comparison, in a second process beside the "
+                     f"proof")
+                built["other_job"] = job
 
     built["proof"] = prove(d, p.proof_phases_per_tooth, 4, prog, dd.mount, on_jam=stop_ahead)
     pr = built["proof"]
@@ -186,6 +194,13 @@ def proofs(dd: PairDesign, w, built: dict) -> None:
 
 def other_method(dd: PairDesign, w, built: dict) -> None:
     """The other tooth method over one leg when the part file asks for it (after the solids are handed to the
-    writer: their files and checks run beside it)."""
+    writer: their files and checks run beside it), or its result where :func:`proofs` started it in a worker (a
+    jammed pair's: beside the rest of the whole-cycle proof)."""
+    from ...parallel import result
+
     p = dd.p
-    built["other"] = compare(p, dd.d, w.progress) if p.compare_methods else (None, None, "")
+    job = built.pop("other_job", None)
+    if job is not None:
+        built["other"] = result(job)
+    else:
+        built["other"] = compare(p, dd.d, w.progress) if p.compare_methods else (None, None, "")
