@@ -132,8 +132,9 @@ def proofs(dd: PairDesign, w, built: dict) -> None:
     """The built pair over the whole cycle, and its as-built contact started in workers (before the solids are
     made: the contact is the build's longest job, the solids' files run beside the rest).  Each direction whose worker
     may be forked now starts before the whole-cycle proof, which runs meanwhile here (a core would otherwise wait while
-    it runs: the Fourier pair's build, 0.5-0.9 s); a proof that finds the pair jammed drops them (no transmission as
-    built).  Where no worker is free, each direction runs here after the proof, as its start."""
+    it runs: the Fourier pair's build, 0.5-0.9 s); the proof drops them as it meets the first jammed phase (no
+    transmission as built), and the other method's comparison (``compare_methods``) takes the worker so freed.  Where
+    no worker is free, each direction runs here after the proof, as its start."""
     from ...parallel import abandon, start
     from ...progress import count_shared, counter
     from ...checks.motion.contact_events import DRIVE, REVERSE
