@@ -19,6 +19,23 @@ machine's swings (one part alone, the two trees side by side: 21.7 / 26.5 / 22.7
 are larger than the session's changes, whose parts were measured in one process, old and new in turn (the plots'
 single draw 173 -> 139 ms a line plot, the cams' grid level -0.5 CPU s a cam part, the final drive's carrier sweep
 -25 %: bench_cam_part.py, bench_final_drive.py).
+
+2026-12-04 (2 cores, nearly idle; each part file built alone by the program, ``propulsor build <file>``, timed by GNU
+time, user + sys CPU s / wall s, at ee2628f): balancer 12.35 / 9.08, cam_exponential 5.91 / 4.54, cam_linear 6.10 /
+4.69, cam_mover 7.65 / 6.30, cam_quadratic 6.00 / 4.63, final_drive 12.47 / 7.26, final_drive_thesis 15.93 / 9.66,
+ncg_elliptical 8.77 / 5.31, ncg_elliptical_2lobe 8.99 / 5.36, ncg_fourier_3lobe 7.82 / 4.90, ncg_fourier_seed002 10.56
+/ 6.07, ncg_pitch_curve 7.78 / 4.68, ncg_seed000 13.94 / 8.28, ncg_seed000_table 19.79 / 11.63, ncg_seed002 11.47 /
+7.02, ncg_seed002_table 17.62 / 10.09, ncg_table 9.18 / 5.46, polysector 12.03 / 7.50, road_wheel 4.25 / 3.27. The two
+sector tables' pairs stood out: their papers' teeth jam (seed 000's table at phase 36 of 384, seed 002's at 0 of 320),
+so they have no transmission as built, yet the contact started in two workers ahead of the whole-cycle proof ran to its
+end (9 CPU s each) and was dropped after it. Now the proof stops it at its first jammed phase and the other tooth
+method's comparison takes the freed worker beside the rest of the proof (5934d5b, 93a0ccf). Alone (``python -m
+propulsor.cli build``), ee2628f and 742d749 (the contact stopped at the jam: 5934d5b) in turn, two rounds:
+ncg_seed000_table 11.65 / 11.59 -> 10.06 / 9.95 s wall (18.65 / 18.61 -> 12.71 / 12.60 user s), ncg_seed002_table 10.53
+/ 10.89 -> 8.45 / 8.00 (17.37 / 17.90 -> 10.18 / 9.51); then 93a0ccf (the comparison beside the proof), one run each:
+8.80 s wall (12.40 user s) and 7.81 (9.90). Their 56 files identical to bench/hashes at each step. ``make`` is not
+changed by it: its builds run side by side with no worker free, so the contact was never started ahead there and a
+jammed pair computes none.
 """
 
 from __future__ import annotations

@@ -188,6 +188,11 @@ kept: glibc's malloc held (mmap threshold 32 MiB, trim 256 MiB, top pad 64 MiB t
 wall (40.79 CPU s), peak 287 MiB; ours 8.78 s wall (12.54 CPU s), peak 639 MiB: wall ratio 0.225, CPU ratio 0.307;
 ``ncg_elliptical.toml`` 6.02 s wall (9.50 CPU s).  ``make`` from clean at db01302 on the same slow hour: 87.7 s wall,
 160.6 user s (a core idle only in the first 4 s and the last 3 s: vmstat), its 636 files identical.
+2026-12-04, a new session (2 cores, idle; 7070d3e, ``--no-elliptical``, one run): ncgears 35.31 s wall (37.58 CPU s),
+peak 290 MiB; ours 6.33 s wall (10.73 CPU s), peak 649 MiB: wall ratio 0.179, CPU ratio 0.286.  No change to this
+build's work this session (its law has no sector method: nothing jams); its cores idle 1.3 core-s of the 6.2 s, 0.9
+of it in the first 2 s (the part type's imports and the check of the part file, 0.67 CPU s in one process, before
+the design forks beside the kernel's import).
 """
 
 from __future__ import annotations
