@@ -5,13 +5,12 @@ process budget allows, the longest first.  Part of the command line's face (it r
 
 from __future__ import annotations
 
-import contextlib
-import gc
 import os
 import signal
 import sys
 from pathlib import Path
 
+from .collector import off_then_frozen
 from .progress import Reporter
 from .render import Board, forward_to
 from .signals import Interrupted, check_signalled, hold_signals
@@ -59,7 +58,7 @@ def build_many(args, files: list[Path], budget: int, jobserver, each, placed: tu
         with Renderer(args.quiet) as render:
             render(f"{len(files)} part files: loading the CAD kernel and the checks")
             apart = budget > 1 and can_fork() and not args.dry_run
-            with collector_off():  # the part types' modules the estimates import, frozen with the rest
+            with off_then_frozen():  # the part types' modules the estimates import, frozen with the rest
                 preload()
                 order = longest_first(files, render) if apart else None
             if apart:
@@ -248,33 +247,15 @@ PRELOAD = ("propulsor.parts", "propulsor.parts.writer", "propulsor.solids.build"
            "propulsor.export.render", "propulsor.export.glb_check", "propulsor.output_folder")
 
 
-@contextlib.contextmanager
-def collector_off():
-    """The garbage collector off within (where it was on), and what was made there moved out of its sight
-    (``gc.freeze``) as the block ends: loading modules adds objects that live on, and each collection scans the
-    growing heap.  The program's tuned collector (``policy.GC_THRESHOLDS``) made 6 collections while a batch loaded,
-    0.12 of its 2.4 CPU s (Python's own thresholds: 891, 0.4 s), on the critical path: the other core waits for the
-    first fork.  What they would have freed (the imports' cycles) stays with the frozen rest: at most 2 MiB of the
-    process's 593."""
-    was_on = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-        gc.freeze()
-    finally:
-        if was_on:
-            gc.enable()
-
-
 def preload() -> None:
     """The modules every build uses and the compiled kernels, loaded once before the builds fork (each child has
     them); then what is loaded is moved out of the garbage collector's sight (``gc.freeze``), so that the children's
     full collections do not scan the ~400 000 objects of the imported modules again (nor write to every page that
     holds one, which a forked child then copies).  Only objects made afterwards are collected; the frozen ones live
-    as long as the process anyway.  The collector is off while they load (:func:`collector_off`)."""
+    as long as the process anyway.  The collector is off while they load (:func:`.collector.off_then_frozen`)."""
     import importlib
 
-    with collector_off():
+    with off_then_frozen():
         for name in PRELOAD:
             importlib.import_module(name)
         # the CAD kernel's wrapper (its VTK deferred): imported here once, not in every build (0.7 CPU s each)
