@@ -285,3 +285,34 @@ def test_the_nearest_vertex_within_a_bound_is_the_least_distance_of_all_vertices
             n_inf += got == np.inf
             n_found += got < np.inf
     assert n_inf > 100 and n_found > 100
+
+
+def test_each_points_distance_is_the_least_over_every_edge_bit_for_bit():
+    """``dist_each_point`` (one compiled loop on the vertex grid) gives each point the least of the reference's
+    point-to-edge distances over every edge, the same float: points on, near and far from a wavy loop with a hole
+    (short edges), and near a plate whose nearest points lie mid-edge, 100 mm from the edge's ends (long edges: an
+    edge counts where either end lies within the nearest vertex's distance plus half the longest edge)."""
+    rng = np.random.default_rng(7)
+    star = Outline([_star(12, 20.0, 23.0, 900), _star(5, 6.0, 7.0, 300)[::-1]], 0.2)
+    plate = Outline([_rect(0.0, 0.0, 200.0, 10.0)], 1000.0)
+    mids = np.array([[100.0, -0.5], [100.0, 10.3], [-0.4, 5.0], [200.2, 5.0], [150.0, 5.0], [100.0, 3.0]])
+    cases = [(star, star.points[rng.integers(0, len(star.points), 150)] + rng.normal(0.0, s, (150, 2)))
+             for s in (0.0, 0.01, 1.0, 30.0)]
+    cases.append((plate, np.vstack([mids, rng.uniform(-50.0, 250.0, (200, 2))])))
+    # a long edge under a wavy top of 0.1 mm edges (cells of about 1.6 mm): below it the nearest vertex is one of the
+    # top's, 4 mm off, the nearest edge the long one, 1 mm off, whose ends are 10 and 90 mm away (found from its end
+    # within reach, the edge ending there at one side, starting there at the other), in either direction of the loop
+    x = np.linspace(100.0, 0.0, 1001)
+    top = np.column_stack([x, 3.0 + 0.2 * np.sin(x)])
+    for loop in (np.vstack([[[0.0, 0.0], [100.0, 0.0]], top]), np.vstack([[[0.0, 0.0], [100.0, 0.0]], top])[::-1]):
+        under = Outline([loop], 1000.0)
+        P = np.array([[50.0, -1.0], [10.0, -1.0], [90.0, -1.0], [50.0, 1.2], [-2.0, 1.0], [50.0, 30.0]])
+        cases.append((under, P))
+        assert distance.dist_each_point(P[:3], under).tolist() == [1.0, 1.0, 1.0]
+    for tgt, P in cases:
+        m = len(tgt.points)
+        d, _ = distance._point_seg(np.repeat(P, m, axis=0), np.tile(tgt.seg_a, (len(P), 1)),
+                                   np.tile(tgt.seg_b, (len(P), 1)))
+        got = distance.dist_each_point(P, tgt)
+        assert got.tobytes() == d.reshape(len(P), m).min(axis=1).tobytes()
+    assert distance.dist_each_point(mids[:1], plate).tolist() == [0.5]

@@ -410,5 +410,54 @@ def nearest_edge(P: np.ndarray, tgt, src, cap: float = math.inf) -> tuple[float,
     return float(d), int(i), np.array([qx, qy])
 
 
+@njit(cache=True)
+def _point_seg_dist(px, py, ax, ay, bx, by):
+    """Distance from (px, py) to the segment a-b: the operations of ``distance._point_seg`` on one row, in its order
+    (the dot products as numpy's einsum of two terms sums them, the norm as numpy's: the square root of the sum of
+    squares), so the same float."""
+    dx, dy = bx - ax, by - ay
+    dd = dx * dx + dy * dy
+    t = ((px - ax) * dx + (py - ay) * dy) / (dd if dd > 0 else 1.0)
+    t = min(max(t, 0.0), 1.0)
+    ex, ey = px - (ax + t * dx), py - (ay + t * dy)
+    return math.sqrt(ex * ex + ey * ey)
+
+
+@njit(cache=True)
+def _dist_each_nb(P, half_len, V, seg_b, prev, ox, oy, h, nx, ny, start, items):
+    """Each point's least distance to the outline's edges (``distance.dist_each_point``): among the edges with an end
+    in a grid cell that the disc about it of its nearest vertex's distance plus half the longest edge overlaps (every
+    nearest edge has an end within that disc; an edge with both ends outside it is 1e-12 mm farther than the nearest
+    vertex at least, so the extra edges of the cells never give a smaller distance)."""
+    out = np.full(len(P), np.inf)
+    for i in range(len(P)):
+        px, py = P[i, 0], P[i, 1]
+        best = np.inf
+        reach = _nearest_vertex(px, py, V, ox, oy, h, nx, ny, start, items, np.inf) + half_len + 1e-12
+        ix0, ix1, iy0, iy1 = disc_cells(px, py, reach, ox, oy, h, nx, ny)
+        for ix in range(ix0, ix1 + 1):
+            for iy in range(iy0, iy1 + 1):
+                c = ix * ny + iy
+                for k in range(start[c], start[c + 1]):
+                    v = items[k]
+                    d = _point_seg_dist(px, py, V[v, 0], V[v, 1], seg_b[v, 0], seg_b[v, 1])
+                    if d < best:
+                        best = d
+                    e = prev[v]
+                    d = _point_seg_dist(px, py, V[e, 0], V[e, 1], seg_b[e, 0], seg_b[e, 1])
+                    if d < best:
+                        best = d
+        out[i] = best
+    return out
+
+
+def dist_each(P: np.ndarray, tgt) -> np.ndarray:
+    """:func:`_dist_each_nb` of points P (tgt body frame) on tgt's finest grid."""
+    g = grid_of(tgt)
+    return _dist_each_nb(np.ascontiguousarray(P, np.float64), float(tgt.half_len), tgt.points, g.seg_b,
+                         np.ascontiguousarray(tgt.prev, np.int64), g.origin[0], g.origin[1], g.h, g.nx, g.ny, g.start,
+                         g.items)
+
+
 # the disk cache of these kernels keyed on every kernel source (one may be compiled into another's code)
 bind(globals())
