@@ -288,7 +288,7 @@ def test_the_nearest_vertex_within_a_bound_is_the_least_distance_of_all_vertices
 
 
 def test_each_points_distance_is_the_least_over_every_edge_bit_for_bit():
-    """``dist_each_point`` (one compiled loop on the vertex grid) gives each point the least of the reference's
+    """``nearest.dist_each`` (one compiled loop on the vertex grid) gives each point the least of the reference's
     point-to-edge distances over every edge, the same float: points on, near and far from a wavy loop with a hole
     (short edges), and near a plate whose nearest points lie mid-edge, 100 mm from the edge's ends (long edges: an
     edge counts where either end lies within the nearest vertex's distance plus half the longest edge)."""
@@ -308,11 +308,12 @@ def test_each_points_distance_is_the_least_over_every_edge_bit_for_bit():
         under = Outline([loop], 1000.0)
         P = np.array([[50.0, -1.0], [10.0, -1.0], [90.0, -1.0], [50.0, 1.2], [-2.0, 1.0], [50.0, 30.0]])
         cases.append((under, P))
-        assert distance.dist_each_point(P[:3], under).tolist() == [1.0, 1.0, 1.0]
+        assert nearest.dist_each(P[:3], under).tolist() == [1.0, 1.0, 1.0]
     for tgt, P in cases:
         m = len(tgt.points)
         d, _ = distance._point_seg(np.repeat(P, m, axis=0), np.tile(tgt.seg_a, (len(P), 1)),
                                    np.tile(tgt.seg_b, (len(P), 1)))
-        got = distance.dist_each_point(P, tgt)
+        got = nearest.dist_each(P, tgt)
         assert got.tobytes() == d.reshape(len(P), m).min(axis=1).tobytes()
-    assert distance.dist_each_point(mids[:1], plate).tolist() == [0.5]
+        assert got.tobytes() == distance.dist_each_point(P, tgt).tobytes()  # the reference's own search too
+    assert nearest.dist_each(mids[:1], plate).tolist() == [0.5] and nearest.dist_each(np.empty((0, 2)), plate).size == 0

@@ -88,7 +88,7 @@ def warm() -> None:
     from .motion.crossing import certainly_apart
     from ..gears.tooth_load_kernels import fit_windows, frame_coordinates
     from .motion.mesh_load import _firsts_nb, phase_contacts
-    from .motion.nearest import nearest_edge
+    from .motion.nearest import dist_each, nearest_edge
     from .motion.poses import Pose, apply_pose, rotation_matrices
     from .motion.sweep2d import sweep_pair
     from .motion.sweep_steps import move_each
@@ -101,6 +101,7 @@ def warm() -> None:
     sweep_pair(square, Pose(), square, rotation_matrices(np.zeros(2), np.array([[3.0, 0.0], [3.5, 0.0]])))
     move_each(np.zeros((1, 2, 3)), np.zeros((1, 2)))
     nearest_edge(square.points + 1.5, square, square)
+    dist_each(square.points + 0.25, square)  # each point's distance (an overlapping step's penetration depth)
     certainly_apart(square, square, square.points + 1.2, square.points - 1.2, 0.2)
     P = square.points + 1.2
     _rot_hits(P, np.zeros(2), square, 1.0, 0.5, np.linalg.norm(P, axis=1), square.boundary_lower_bound(P))

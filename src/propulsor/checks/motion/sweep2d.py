@@ -14,9 +14,9 @@ from ...check import Check
 from ...errors import require, require_positive
 from .outlines import Outline, outline
 from .poses import Pose, apply_pose, compose_poses, inverse_pose, pose_stack
-from .distance import check_record, dist_each_point
+from .distance import check_record
 from .crossing import certainly_apart
-from .nearest import nearest_edge
+from .nearest import dist_each, nearest_edge
 from .sweep_steps import apart_steps, move_each
 
 __all__ = ['SweepResult', 'sweep_pair', 'sweep_pair_windowed']
@@ -119,8 +119,8 @@ def _penetration(A: Outline, B: Outline, Ma: np.ndarray, rel_ab: np.ndarray, int
     (Ma: A's world pose, rel_ab: A's body to B's)."""
     polys = [np.asarray(p, float) for p in inter.to_polygons()]
     V = np.vstack(polys)
-    da = dist_each_point(V, A)  # overlap vertices live in A's body frame (A kept in its frame)
-    db = dist_each_point(apply_pose(rel_ab, V), B)
+    da = dist_each(V, A)  # overlap vertices live in A's body frame (A kept in its frame)
+    db = dist_each(apply_pose(rel_ab, V), B)
     depth = np.maximum(da, db)
     j = int(np.argmax(depth))
     pw = apply_pose(Ma, V[j:j + 1])[0]
