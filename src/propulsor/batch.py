@@ -62,8 +62,7 @@ def build_many(args, files: list[Path], budget: int, jobserver, each, placed: tu
                 preload()
                 order = longest_first(files, render) if apart else None
             if apart:
-                side_by_side(args, files, depfile, budget, each, jobserver, progress=render, finished=finished,
-                             order=order)
+                side_by_side(args, files, order, depfile, budget, each, jobserver, progress=render, finished=finished)
             else:
                 render.close()
                 for f in files:
@@ -97,8 +96,8 @@ def _gallery_once(args, told: bool = True) -> Path | None:
         return regenerate_gallery(folder, render)
 
 
-def side_by_side(args, files: list[Path], depfile, slots: int, build, jobserver=None, progress=None,
-                 finished: list[int] | None = None, order: list[int] | None = None) -> list[int]:
+def side_by_side(args, files: list[Path], order: list[int], depfile, slots: int, build, jobserver=None,
+                 progress=None, finished: list[int] | None = None) -> list[int]:
     """Build the part files (``build(args, part_file, depfile) -> exit code``) in forked children, as many
     at once as `slots` (the process budget, shared with the children's own workers once the last build
     has started: parallel.share_slots; under make's `jobserver` a slot beyond the first also takes one
@@ -107,15 +106,15 @@ def side_by_side(args, files: list[Path], depfile, slots: int, build, jobserver=
     through a pipe to a :class:`~.render.Board` (one live line per build on a terminal, a plain line per step
     elsewhere).  `progress`: told the part files checked before the first build starts (then closed).  A
     signal stops every build; `finished` (a list) is given the exit code of each build as it ends, so that what
-    ended before a signal is known.  `order`: the files' indices in the order to start them (by default
-    :func:`longest_first`'s)."""
+    ended before a signal is known.  `order`: the files' indices in the order to start them
+    (:func:`longest_first`'s)."""
     import select
     import tempfile
 
     from .parallel import open_slots_to_workers, share_slots
 
     pool = share_slots(slots, jobserver)
-    pending = list(order) if order is not None else longest_first(files, progress)
+    pending = list(order)
     if progress is not None and hasattr(progress, "close"):
         progress.close()
     running: dict[int, tuple[int, object, object, bytes | None]] = {}

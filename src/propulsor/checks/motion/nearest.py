@@ -217,6 +217,20 @@ def _search(P, i, V, ox, oy, h, nx, ny, start, items, bound, at, low_pt, exact, 
     return d
 
 
+@njit(cache=True, inline="always")
+def _point_seg(px, py, ax, ay, bx, by):
+    """(distance, foot x, foot y) of (px, py) on the segment a-b: the operations of ``distance._point_seg`` on one
+    row, in its order (the dot products as numpy's einsum of two terms sums them, the norm as numpy's: the square root
+    of the sum of squares), so the same floats; inlined into the searches that call it."""
+    sx, sy = bx - ax, by - ay
+    dd = sx * sx + sy * sy
+    t = ((px - ax) * sx + (py - ay) * sy) / (dd if dd > 0 else 1.0)
+    t = min(max(t, 0.0), 1.0)
+    qx, qy = ax + t * sx, ay + t * sy
+    ex, ey = px - qx, py - qy
+    return math.sqrt(ex * ex + ey * ey), qx, qy
+
+
 @njit(cache=True)
 def _nearest_edge(P, seed, cap, rho, V, B, prev, half_len, ox, oy, h, nx, ny, start, items, chunk, margin, ccx, ccy,
                   r_min, r_max, far, heads, lows, at, low_pt, exact, tally):
@@ -308,14 +322,7 @@ def _nearest_edge(P, seed, cap, rho, V, B, prev, half_len, ox, oy, h, nx, ny, st
                             continue
                         for blk in range(2):
                             e = v if blk == 0 else prev[v]
-                            ax, ay = V[e, 0], V[e, 1]
-                            sx, sy = B[e, 0] - ax, B[e, 1] - ay
-                            dd = sx * sx + sy * sy
-                            t = ((px - ax) * sx + (py - ay) * sy) / (dd if dd > 0 else 1.0)
-                            t = min(max(t, 0.0), 1.0)
-                            qx, qy = ax + t * sx, ay + t * sy
-                            ex, ey = px - qx, py - qy
-                            d = math.sqrt(ex * ex + ey * ey)
+                            d, qx, qy = _point_seg(px, py, V[e, 0], V[e, 1], B[e, 0], B[e, 1])
                             if d < best_d or (d == best_d and (blk, k, v) < (best_key0, best_key1, best_key2)):
                                 best_d, best_key0, best_key1, best_key2 = d, blk, k, v
                                 best_i, qx_best, qy_best = i, qx, qy
@@ -411,19 +418,6 @@ def nearest_edge(P: np.ndarray, tgt, src, cap: float = math.inf) -> tuple[float,
 
 
 @njit(cache=True)
-def _point_seg_dist(px, py, ax, ay, bx, by):
-    """Distance from (px, py) to the segment a-b: the operations of ``distance._point_seg`` on one row, in its order
-    (the dot products as numpy's einsum of two terms sums them, the norm as numpy's: the square root of the sum of
-    squares), so the same float."""
-    dx, dy = bx - ax, by - ay
-    dd = dx * dx + dy * dy
-    t = ((px - ax) * dx + (py - ay) * dy) / (dd if dd > 0 else 1.0)
-    t = min(max(t, 0.0), 1.0)
-    ex, ey = px - (ax + t * dx), py - (ay + t * dy)
-    return math.sqrt(ex * ex + ey * ey)
-
-
-@njit(cache=True)
 def _dist_each_nb(P, half_len, V, seg_b, prev, ox, oy, h, nx, ny, start, items):
     """Each point's least distance to the outline's edges (``distance.dist_each_point``): among the edges with an end
     in a grid cell that the disc about it of its nearest vertex's distance plus half the longest edge overlaps (every
@@ -440,13 +434,10 @@ def _dist_each_nb(P, half_len, V, seg_b, prev, ox, oy, h, nx, ny, start, items):
                 c = ix * ny + iy
                 for k in range(start[c], start[c + 1]):
                     v = items[k]
-                    d = _point_seg_dist(px, py, V[v, 0], V[v, 1], seg_b[v, 0], seg_b[v, 1])
-                    if d < best:
-                        best = d
-                    e = prev[v]
-                    d = _point_seg_dist(px, py, V[e, 0], V[e, 1], seg_b[e, 0], seg_b[e, 1])
-                    if d < best:
-                        best = d
+                    for e in (v, prev[v]):  # the edges starting and ending at v, as _nearest_edge takes them
+                        d = _point_seg(px, py, V[e, 0], V[e, 1], seg_b[e, 0], seg_b[e, 1])[0]
+                        if d < best:
+                            best = d
         out[i] = best
     return out
 

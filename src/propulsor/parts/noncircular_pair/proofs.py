@@ -44,11 +44,16 @@ def prove(d: Design, phases_per_tooth: int, legs: int = 4, progress=lambda s: No
                       name="mesh", pitch_mm=pitch, tick=counter(progress, phase, N, "phase"), on_jam=on_jam)
 
 
+def _other(d: Design) -> str:
+    """The tooth method the comparison makes (the one `d` was not made by)."""
+    return "sectors" if d.method == "generated" else "generated"
+
+
 def compare(p: NoncircularPairParams, d: Design, prog=lambda s: None):
     """The other tooth method for the same law, module and teeth, proved over one leg (the pair
     repeats per leg) at its own design centre distance.  Returns (design, proof, note); (None,
     None, why) if it cannot be made."""
-    alt = "sectors" if d.method == "generated" else "generated"
+    alt = _other(d)
     if not is_walking(d.law):
         return None, None, f"The sector method exists for the walking law only (this pair's law: {d.law.kind})."
     try:
@@ -167,9 +172,8 @@ def proofs(dd: PairDesign, w, built: dict) -> None:
         if p.compare_methods:
             job = start(compare, p, d, forked_only=True)
             if job is not None:
-                other = "sectors" if d.method == "generated" else "generated"
-                prog(f"{other}: the other tooth method over one leg, for comparison, in a second process beside the "
-                     f"proof")
+                prog(f"{_other(d)}: the other tooth method over one leg, for comparison, in a second process beside "
+                     f"the proof")
                 built["other_job"] = job
 
     built["proof"] = prove(d, p.proof_phases_per_tooth, 4, prog, dd.mount, on_jam=stop_ahead)
