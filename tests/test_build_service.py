@@ -266,3 +266,39 @@ def test_an_interrupted_build_kills_its_solid_workers_a_failed_one_waits_for_the
             assert job.done() and job.exception() is not None
         else:
             assert job.result() in {p.pid for p in procs}  # waited for: finished normally
+
+
+def test_a_build_tells_that_its_output_is_in_place_once_it_is_and_not_before(tmp_path, monkeypatch):
+    """``building.tell_placed_to(fd)`` (a batch's forked build: batch._PlacedWord): the byte is written when the
+    folder has been put in place (the folder there as the byte arrives), never for a build whose check failed and
+    whose output was dropped, nor where no one asked."""
+    monkeypatch.setattr(building, "_PLACED_TO", [])
+    part_file = tmp_path / "wheel.toml"
+    part_file.write_text(SMALL_WHEEL)
+    part = building.load(part_file)
+    r, w = os.pipe()
+    os.set_blocking(r, False)
+    try:
+        seen = []
+        real_tell = building.tell_placed
+        monkeypatch.setattr(building, "tell_placed", lambda: (seen.append((tmp_path / "built").is_dir()),
+                                                              real_tell()))
+        building.build(part, tmp_path / "unasked")  # no one asked: nothing written anywhere
+        building.tell_placed_to(w)
+
+        class Made:
+            checks, derived = (), {}
+
+        real = building.produce_build
+        monkeypatch.setattr(building, "produce_build", lambda *a, **k: (["made up: for the test"], "road_wheel",
+                                                                          Made()))
+        with pytest.raises(CheckFailed):
+            building.build(part, tmp_path / "failed")
+        with pytest.raises(BlockingIOError):
+            os.read(r, 16)  # a check failed: nothing told
+        monkeypatch.setattr(building, "produce_build", real)
+        building.build(part, tmp_path / "built")
+        assert os.read(r, 16) == b"1" and seen == [False, True]
+    finally:
+        os.close(r)
+        os.close(w)

@@ -664,6 +664,10 @@ def fake(args, part_file, depfile, gallery=True):
         (Path("output") / "second").mkdir(parents=True)
         (Path("output") / "second" / "manifest.json").write_text("{}")
         return 0
+    if os.environ.get("AT") == "placed":  # its output put in place and told, as publish does; then Ctrl-C before
+        (Path("output") / "second").mkdir(parents=True)  # the batch has seen it end (the signal stops it: 130)
+        (Path("output") / "second" / "manifest.json").write_text("{}")
+        building.tell_placed()
     os.kill(os.getppid(), signal.SIGINT)  # Ctrl-C during the second build
     time.sleep(60)
     return 0
@@ -684,14 +688,16 @@ sys.exit(cli.main(["build", *sys.argv[1:], "-q"]))
 
 
 @pytest.mark.parametrize("jobs, first_code, at", [("1", 0, "build"), ("2", 0, "build"), ("1", 1, "build"),
-                                                  ("2", 0, "gallery")])
+                                                  ("2", 0, "gallery"), ("1", 0, "placed"), ("2", 0, "placed")])
 def test_an_interrupted_batch_shows_the_builds_that_ended_in_the_gallery(tmp_path, jobs, first_code, at):
     """Ctrl-C during the second of `propulsor build first.toml second.toml`: the first build's folder is in place,
     so the gallery (written once at a batch's end, not by each build) is written for it before the exit, and the
     one line says what was kept (130, as any interrupted build); one build at a time and side by side, the signal
     also where it lands in the fork's own callbacks in the batch (held there half a second).  A first build
     whose checks failed (exit 1, its output not kept without --keep-failed): nothing written, no gallery.  Ctrl-C as
-    the batch writes its gallery after both builds: the page written all the same, the line counting both."""
+    the batch writes its gallery after both builds: the page written all the same, the line counting both.  Ctrl-C
+    once the second build has put its output in place but before the batch has seen it end (the signal then stops
+    it, exit 130): counted by its word through its own pipe (building.tell_placed), in the line and the page."""
     for name in ("first", "second"):
         shutil.copy(ROOT / "parts" / "road_wheel.toml", tmp_path / f"{name}.toml")
     (tmp_path / "slow.py").write_text(_INTERRUPTED_BATCH)
@@ -707,7 +713,7 @@ def test_an_interrupted_batch_shows_the_builds_that_ended_in_the_gallery(tmp_pat
         return
     if jobs == "1":  # the build the signal stopped says so first, naming its part file
         assert "propulsor: second.toml: interrupted by SIGINT; nothing written" in p.stderr.splitlines(), p.stderr
-    finished = 2 if at == "gallery" else 1
+    finished = 2 if at in ("gallery", "placed") else 1
     assert page.is_file() and "first" in page.read_text() and ("second" in page.read_text()) == (finished == 2)
     assert last == f"propulsor: interrupted by SIGINT; {finished} of 2 builds finished, their output in output/ (the " \
                    "gallery shows them); nothing else written", p.stderr

@@ -71,7 +71,7 @@ def build_many(args, files: list[Path], budget: int, jobserver, each, placed: tu
             _gallery_once(args)
     except Interrupted as exc:
         hold_signals()
-        built = sum(c in placed for c in finished)
+        built = sum(c in placed for c in finished) + getattr(exc, "placed_before", 0)
         if built and not args.dry_run:
             page = _gallery_once(args, told=False)  # no progress line: the command line's one line says it
             exc.kept = (f"{built} of {len(files)} builds finished, their output in {args.out_dir or 'output'}/"
@@ -119,6 +119,7 @@ def side_by_side(args, files: list[Path], order: list[int], depfile, slots: int,
         progress.close()
     running: dict[int, tuple[int, object, object, bytes | None]] = {}
     pipes: dict[int, int] = {}  # pid -> the read end of its events' pipe
+    words: dict[int, _PlacedWord] = {}  # pid -> its word that its output is in place
     codes: list[int] = [0] * len(files)  # each the exit code its build ends with
     board = Board(args.quiet, t0=getattr(progress, "t0", None))
 
@@ -146,10 +147,14 @@ def side_by_side(args, files: list[Path], order: list[int], depfile, slots: int,
                 out, err = tempfile.TemporaryFile(), tempfile.TemporaryFile()
                 rfd, wfd = os.pipe()
                 os.set_blocking(rfd, False)
-                pid = fork(_forwarding, (build, wfd, tuple(pipes.values()) + (rfd,), not board.live, args,
-                                         files[k], depfile(files[k])), out.fileno(), err.fileno(), str(files[k]))
+                word = _PlacedWord()
+                others = tuple(pipes.values()) + tuple(w.r for w in words.values()) + (rfd,)
+                pid = fork(_forwarding, (build, wfd, word, others, not board.live, args, files[k], depfile(files[k])),
+                           out.fileno(), err.fileno(), str(files[k]))
                 os.close(wfd)
+                word.parent()
                 pipes[pid] = rfd
+                words[pid] = word
                 board.start(pid, str(files[k]))
                 running[pid] = (k, out, err, slot)
                 if not pending:  # the last builds may use the slots the others leave
@@ -168,6 +173,7 @@ def side_by_side(args, files: list[Path], order: list[int], depfile, slots: int,
                 finished.append(codes[k])
             _read_into(board, pid, pipes[pid])
             os.close(pipes.pop(pid))
+            words.pop(pid).close()
             board.end(pid)
             for f, stream in ((out, sys.stdout), (err, sys.stderr)):
                 f.seek(0)
@@ -184,6 +190,10 @@ def side_by_side(args, files: list[Path], order: list[int], depfile, slots: int,
                 os.waitpid(pid, 0)
             except ChildProcessError:
                 pass
+            word = words.pop(pid)
+            if word.told():  # ended or stopped, not yet seen here: its output is in place
+                exc.placed_before = getattr(exc, "placed_before", 0) + 1
+            word.close()
             if slot:  # make's token goes back to make
                 pool.give(slot)
         raise
@@ -191,6 +201,8 @@ def side_by_side(args, files: list[Path], order: list[int], depfile, slots: int,
         board.close()
         for fd in pipes.values():
             os.close(fd)
+        for word in words.values():
+            word.close()
         share_slots(None)
     return codes
 
@@ -207,10 +219,12 @@ def _read_into(board: Board, key, fd: int) -> None:
         board.feed(key, data)
 
 
-def _forwarding(build, wfd: int, close: tuple[int, ...], shown_there: bool, *args) -> int:
-    """In a forked build: its events also to `wfd` (never blocking it: a full pipe drops them), the read ends of
-    the pipes in `close` closed, its steps printed by the board alone when `shown_there` (plain lines: its own
-    output, written out when it ends, keeps its notices and errors); then ``build(*args)``."""
+def _forwarding(build, wfd: int, word: "_PlacedWord", close: tuple[int, ...], shown_there: bool, *args) -> int:
+    """In a forked build: its events also to `wfd` (never blocking it: a full pipe drops them), its output put in
+    place told through `word`, the read ends of the pipes in `close` closed, its steps printed by the board alone
+    when `shown_there` (plain lines: its own output, written out when it ends, keeps its notices and errors); then
+    ``build(*args)``."""
+    word.child()
     for fd in close:
         os.close(fd)
     os.set_blocking(wfd, False)
@@ -276,15 +290,59 @@ def in_child(fn, *args, label: str | None = None) -> int:
     its line when a signal stops it."""
     if not hasattr(os, "fork"):
         return fn(*args)
-    pid = fork(fn, args, label=label)
+    word = _PlacedWord()
+    pid = fork(_telling, (word, fn) + args, label=label)
+    word.parent()
     try:
         check_signalled()  # a signal that came while the fork's own callbacks ran in this process (swallowed there)
         _, status = os.waitpid(pid, 0)
     except Interrupted as exc:
         os.kill(pid, exc.signum)
         os.waitpid(pid, 0)
+        if word.told():  # its output was put in place before the signal stopped it
+            exc.placed_before = getattr(exc, "placed_before", 0) + 1
         raise
+    finally:
+        word.close()
     return os.waitstatus_to_exitcode(status)
+
+
+def _telling(word: "_PlacedWord", fn, *args) -> int:
+    """In a forked build: its output put in place told through `word`; then ``fn(*args)``."""
+    word.child()
+    return fn(*args)
+
+
+class _PlacedWord:
+    """A forked build's word that its output is in place (:func:`.building.tell_placed`): one byte through a pipe of
+    its own, read once the child has ended or been stopped, so that a batch stopped by a signal counts a build whose
+    output was placed before the batch saw it end (its exit code lost, or 130 from the signal that came after).  The
+    events' pipe cannot say it: a full buffer drops what it cannot take."""
+
+    def __init__(self):
+        self.r, self.w = os.pipe()
+        os.set_blocking(self.r, False)
+
+    def child(self) -> None:
+        from .building import tell_placed_to
+
+        os.close(self.r)
+        tell_placed_to(self.w)
+
+    def parent(self) -> None:
+        os.close(self.w)
+
+    def told(self) -> bool:
+        """Whether the byte came (the child has ended: what it wrote is in the pipe)."""
+        try:
+            return os.read(self.r, 1) == b"1"
+        except (BlockingIOError, OSError):
+            return False
+
+    def close(self) -> None:
+        if self.r >= 0:
+            os.close(self.r)
+            self.r = -1
 
 
 def fork(fn, args, stdout_fd: int | None = None, stderr_fd: int | None = None, label: str | None = None) -> int:

@@ -112,6 +112,26 @@ def write_depfile(depfile: Path, target: Path, files) -> None:
             os.unlink(tmp)
 
 
+#: where this process tells that its output is in place (:func:`tell_placed_to`: a build of several, forked by
+#: the batch, tells its parent, which counts it when a signal stops the batch before it has seen the build end)
+_PLACED_TO: list[int] = []
+
+
+def tell_placed_to(fd: int) -> None:
+    """From now on, each build's output put in place is told by one byte written to `fd` (a pipe's write end)."""
+    _PLACED_TO[:] = [fd]
+
+
+def tell_placed() -> None:
+    """Tell it (:func:`tell_placed_to`): one byte into a pipe of this build's own, which holds it whole; nothing
+    where no one asked."""
+    for fd in _PLACED_TO:
+        try:
+            os.write(fd, b"1")
+        except OSError:  # the parent has gone: no one to tell
+            pass
+
+
 def publish(out: Path, keep: tuple[Path, ...], produce: Callable, *, force: bool = False,
             keep_failed: bool = False, wait: bool = True, progress=None, gallery: bool = True) -> BuildResult:
     """:func:`_publish`; a signal that arrives once the output is in place (while the lock is let go, the gallery
@@ -173,6 +193,7 @@ def _publish(out: Path, keep: tuple[Path, ...], produce: Callable, placed: list,
                 of.verify_built(tmp, ident)
                 of.replace(tmp, out, before, notice=say.notice)
                 placed.append(True)
+                tell_placed()
         except OSError as exc:  # a write refused (a file's write names no path: the folder it went to)
             if exc.filename is None:
                 exc.filename = str(tmp if tmp is not None else out)

@@ -17,7 +17,9 @@ __all__ = ["Interrupted", "SIGNALLED", "raise_interrupted", "unraisable", "check
 
 
 class Interrupted(BaseException):
-    """SIGINT or SIGTERM arrived; the exit code is 128 + the signal number."""
+    """SIGINT or SIGTERM arrived; the exit code is 128 + the signal number.  On its way up it may be told what was
+    kept: ``kept`` (the command line's one line says it) and, in a build of several, ``placed_before`` (the builds
+    whose output was in place before the batch saw them end: batch._PlacedWord)."""
 
     def __init__(self, signum: int):
         self.signum = signum
