@@ -32,6 +32,18 @@ KD-tree's ball query and numpy's rows, 0.36 ms a call).  The distances now in on
 grid (``nearest.dist_each``): 1.56 -> 0.20 s over the 4 320 calls, each distance the same float.  final_drive_thesis
 alone 9.40 / 9.61 -> 7.92 / 8.01 s wall (14.20 / 14.40 -> 12.83 / 12.92 user s: its sweep, in a second process, is the
 build's critical path); make's 636 files identical.
+
+2026-12-05 (2 cores; every 2D sweep of cam_mover.toml and both final drives recorded and replayed in one process,
+24 sweeps, 8.5 CPU s, of which the apart steps' compiled loop 5.9): the carrier's pins against each planet cost
+1.7 ms a step (180 steps, 0.31 s each, six in make): the pin stands in the planet's bore, concentric, 27.5 mm from it
+(the bearing's space), so every one of the pin's 370 vertices and the bore's 522 is within half an edge of the least
+distance (their nearest vertices differ by < 1e-3 mm) and is a candidate of the exact search: 1 800 nearest-vertex
+searches a step, 206 000 vertex tests, 45 000 point-edge distances.  Tried, each giving every area, clearance and
+point identical (sha256): the candidates' vertices scanned on the finest grid over the thin annulus between the
+point's nearest vertex and the reach (cells wholly nearer skipped), the points' nearest-vertex searches over the
+annulus their last distance and their move allow, and the edges at a vertex passed over where sqrt(|pv|^2 - (2 half
+edge)^2) exceeds the best so far: the 24 sweeps 8.48 -> 8.53 CPU s (the pins 0.31 -> 0.30-0.33): no gain, reverted.
+What a concentric pair costs is the count of equally near candidates, which an exact search must each look at.
 """
 
 from __future__ import annotations

@@ -36,6 +36,23 @@ ncg_seed000_table 11.65 / 11.59 -> 10.06 / 9.95 s wall (18.65 / 18.61 -> 12.71 /
 8.80 s wall (12.40 user s) and 7.81 (9.90). Their 56 files identical to bench/hashes at each step. ``make`` is not
 changed by it: its builds run side by side with no worker free, so the contact was never started ahead there and a
 jammed pair computes none.
+
+2026-12-05 (2 cores; from 3a2ad4d, the machine's gauge, bench_variant.py's least, 1.64-1.83 over the session): make from
+clean 67.1 s (121.8 + 5.8 CPU s) at 1.68, 61.5 s a few minutes later (idle 4.0 core-s: 2.7 in the first 4 s, the
+batch's imports, 0.6 at the end), 66.9 at 1.83.  perf over a whole make, all processes, by library: Python 19 %, numba's
+kernels 15, manifold3d 10 (Clipper2's BuildIntersectList and DoTopOfScanbeam 5.4: the least-overlap searches and the
+crops), numpy 9, libc 8 (malloc and free 4), the kernel 7, PIL 3.6, OCCT's STEP libraries 5.5.  py-spy (100 Hz, 13 253
+samples), by part type: the noncircular pairs 56 CPU s (their solids' files and checks 21.5, about 1.1 s a wheel; the
+proofs 16.4; the other tooth method 6.1), the final drives 17.4, the cams 12.0, the polysector 8.9, the balancer 8.6.
+By function of ours (with what it calls): save_plot 7.4, read_step 7.3 (the round trip: parse and transfer about
+half each), the apart sweep steps 7.1 (cam_mover's 2.9, the final drives' carrier and pin sweeps 4.0), the
+least-overlap's Clipper overlaps 5.9, the contact 5.4, write_assembly_step 4.9, write_step 3.8, GIF encoding 3.5.
+Looked at and left: the 52 least-overlap overlaps sampled from ncg_seed000_table, turned 90 deg first (Clipper's
+scan line across the teeth): 0.96 -> 0.73 ms each, the areas 2e-13 relative apart, so the Brent searches' paths and
+every jammed phase's reported offset would move (not bit for bit); the imports before the first fork 2.0 s (OCP 0.58,
+numpy.f2py 0.056 and numpy.ma 0.016 through scipy's array API, networkx 0.07 through trimesh, casadi 0.015 through
+cadquery.assembly): libraries' own; the pins' sweeps (bench_final_drive.py) and the round trip's healing
+(bench_step_read.py).
 """
 
 from __future__ import annotations

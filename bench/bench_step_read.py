@@ -20,6 +20,15 @@ were set before ``ReadFile``, which makes the transfer's actor anew: they did no
 transfer alone, through a copy of the reader's steps; since 2026-12-01 (a later session) the benchmark times
 ``read_step`` itself, whole (parse, transfer, healing), both ways: on an idle machine 36.51 -> 24.76 CPU s (68 %),
 every BREP identical.
+
+2026-12-05 (2 cores; the 62 part STEP files of make, which the round trip reads): parse 3.7-4.1 CPU s, transfer
+4.2-4.8 (perf: the lexer and parser 11 %, malloc / calloc / free 17 %).  OCCT's memory manager by environment
+(MMGT_OPT=1 or 2, MMGT_CLEAR=0): no change (4.39-4.48 s).  Each further FixShape mode off, alone, on every third file
+(21; transfer 1.53-1.58 s with the modes above off): the wires' orientation (FixOrientationMode) 1.24 s, BREP
+identical, but a CadQuery union needs it; FixEdgeCurvesMode and FixShiftedMode change 18 files; the 24 others within
+0.05-0.17 s of the spread, together 1.22 s with one file changed, the four cheapest together (FixNotchedEdgesMode,
+FixAddPCurveMode, AutoCorrectPrecisionMode, FixConnectedMode) 1.38 s, none changed: about 0.3 CPU s of make's, not
+taken (each mode left out is one more kind of defect the round trip reads as written, to be shown on a union).
 """
 
 from __future__ import annotations
