@@ -212,8 +212,9 @@ def test_a_build_freezes_what_it_imported_and_a_dry_run_loads_no_cad_kernel(tmp_
     """Objects that live as long as the process are moved out of the garbage collector's sight (``gc.freeze``: a
     build's full collections scanned them again and again, 0.70 -> 0.45 CPU s of collections in a build of the
     Fourier pair): ``propulsor build`` freezes what it has loaded when the build starts (most objects then), and
-    several builds' preload freezes the modules they share before they fork.  A dry run (validation only) imports
-    no CAD kernel."""
+    several builds' preload freezes the modules they share before they fork, and draws a figure then (the first
+    figure's backend and font search done once for every build).  A dry run (validation only) imports no CAD
+    kernel."""
     import subprocess
     import sys
 
@@ -244,10 +245,16 @@ def test_a_build_freezes_what_it_imported_and_a_dry_run_loads_no_cad_kernel(tmp_
     r = subprocess.run([sys.executable, "-c", "import gc\nfrom propulsor.batch import preload\nruns = []\n"
                         "gc.callbacks.append(lambda phase, info: phase == 'start' and runs.append(info['generation']))\n"
                         "preload()\n"
-                        "print(gc.get_freeze_count(), len(gc.get_objects()), len(runs), gc.isenabled())"],
+                        "import sys\nfrom matplotlib import font_manager\n"
+                        "print(gc.get_freeze_count(), len(gc.get_objects()), len(runs), gc.isenabled(),\n"
+                        "      'matplotlib.backends.backend_agg' in sys.modules,\n"
+                        "      font_manager.FontManager._findfont_cached.cache_info().currsize)"],
                        capture_output=True, text=True, check=True)
-    frozen, live, runs, enabled = r.stdout.split()
+    frozen, live, runs, enabled, agg, fonts = r.stdout.split()
     assert int(frozen) > 200_000 and int(live) < 1000 and runs == "0" and enabled == "True", r.stdout
+    # a figure drawn before the fork (plots.warm): pyplot's backend loaded and the font search cached for the builds'
+    # font sizes, in every forked build and worker that draws
+    assert agg == "True" and int(fonts) >= 5, r.stdout
 
 
 def test_an_assembly_step_written_beside_the_build_has_the_bytes_of_one_written_in_its_process(tmp_path, monkeypatch):

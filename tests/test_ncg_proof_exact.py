@@ -414,6 +414,65 @@ def test_lens_cuts_give_each_overlap_of_the_whole_bodies_to_the_last_bit_and_are
     assert _overlap_at(cd, cn, 71.0, th, 0.3) < _overlap_at(drv, dvn, 71.0, th, 0.3) - 1.0
 
 
+def test_an_envelope_holds_its_body_and_the_meet_cuts_give_each_overlap_of_the_whole_bodies_to_the_last_bit():
+    """``_Envelope``: a square of four vertices (edges sweeping 90 degrees each) and a gear lie inside their
+    envelopes, and a square turned by less than ``widen`` inside the widened one.  ``_MeetCrops``: the driver cut to
+    the sector about its axis that holds where the two envelopes meet, the driven wheel to the sector about its own
+    over the offsets searched.  Jammed (L = 71 mm) and with the driver ahead of the law (L = 75 mm, 2 degrees): the
+    overlap of the cuts equals that of the whole outlines exactly at every offset of the search span, the cuts hold
+    fewer vertices than the whole bodies and the discs' cuts, and a cut is kept over the next phases.  The driven
+    envelope left unwidened loses overlap at an offset of the span (the check can fail)."""
+    import manifold3d as m3d
+
+    from propulsor.checks.motion import outline
+    from propulsor.parts.noncircular_pair.pair_proof import _Envelope, _LensCrops, _MeetCrops, _overlap_at
+
+    square = np.array([[10.0, 0.0], [0.0, 10.0], [-10.0, 0.0], [0.0, -10.0]])
+    for body, widen in ((square, 0.0), (square, 0.2)):
+        env = _Envelope(outline([body]), widen)
+        for turn in ((0.0, 0.19, -0.19) if widen else (0.0,)):
+            c, s = math.cos(turn), math.sin(turn)
+            cs = m3d.CrossSection([np.ascontiguousarray(body @ np.array([[c, s], [-s, c]]))], m3d.FillRule.Positive)
+            assert (cs - env.section).area() == 0.0 and cs.area() == pytest.approx(200.0)
+    _, dd = _circular()
+    d = dd.d
+    drv = outline([d.driver.profile.outer.polyline(1e-4)])
+    dvn = outline([d.driven.profile.outer.polyline(1e-4)])
+    for o in (drv, dvn):
+        assert (o.section - _Envelope(o).section).area() == 0.0
+    reach = float(np.linalg.norm(drv.points, axis=1).max())
+    r_dvn = float(np.linalg.norm(dvn.points, axis=1).max())
+    half = 0.5 * math.pi * 2.5 / 50
+    rng = np.random.default_rng(7)
+    pitch = 2 * math.pi / 40
+
+    def n_vertices(cs):
+        return sum(len(q) for q in cs.to_polygons())
+
+    for L, ahead in ((71.0, 0.0), (75.0, math.radians(2.0))):
+        meet = _MeetCrops(drv, dvn, L, reach + 1.0, r_dvn + 1.0, half)
+        lens = _LensCrops(L, reach + 1.0, r_dvn + 1.0)
+        cuts = []
+        for ph in np.arange(8) * pitch / 10 + 0.3:
+            th = float(d.run_law.theta(ph)) + ahead
+            start = 0.002
+            cd, cn = meet.at(drv, dvn, ph + start, th, half)
+            ld, ln = lens.at(drv, dvn, ph + start, th, half)
+            cuts.append((id(cd), id(cn)))
+            assert n_vertices(cd.section) + n_vertices(cn.section) < n_vertices(ld.section) + n_vertices(ln.section)
+            offs = np.r_[start + np.linspace(-half, half, 13), start + rng.uniform(-half, half, 6)]
+            whole = [_overlap_at(drv, dvn, L, th, ph + o) for o in offs]
+            assert max(whole) > 1.0
+            assert [_overlap_at(cd, cn, L, th, ph + o) for o in offs] == whole
+        assert len(set(cuts)) < len(cuts)  # kept over some phases
+    narrow = _MeetCrops(drv, dvn, 71.0, reach + 1.0, r_dvn + 1.0, half, spare=0.0, spare_rad=0.0)
+    narrow.env_dvn = _Envelope(dvn)
+    th = float(d.run_law.theta(0.3))
+    cd, cn = narrow.at(drv, dvn, 0.3, th, half)
+    assert any(_overlap_at(cd, cn, 71.0, th, 0.3 + o) < _overlap_at(drv, dvn, 71.0, th, 0.3 + o) - 1e-6
+               for o in np.linspace(-half, half, 13))
+
+
 # =========================================================================== proofs.py
 def _record_prove_pair(monkeypatch):
     from propulsor.parts.noncircular_pair import pair_proof

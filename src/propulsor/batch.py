@@ -280,6 +280,12 @@ def preload() -> None:
         from .checks.kernels import warm
 
         warm()
+        # the first figure's costs (pyplot's backend module, the font search) paid once, here, for every build and
+        # worker that draws (13-19 processes in make, about 20 ms each); the throwaway figure's garbage (about 5 000
+        # objects) frozen with the rest
+        from .export.plots import warm as warm_plots
+
+        warm_plots()
 
 
 def in_child(fn, *args, label: str | None = None) -> int:

@@ -56,6 +56,33 @@ def _layout_done(fig) -> None:
         fig.set_layout_engine(None)
 
 
+#: the font sizes the builds' figures name (legends, notes), beside matplotlib's defaults (10 and 12)
+WARM_FONT_SIZES = (6, 7, 8, 9)
+
+
+def warm() -> None:
+    """Draw one throwaway figure as :func:`save_plot` draws one (into memory): the first figure of a process pays
+    for pyplot's backend module and the font search (``font_manager.findfont``: each family, style and size scored
+    against every installed font once, then cached); a process that draws afterwards, or forks children that draw,
+    finds both done.  The same pixels and bytes either way (the caches hold what a figure would compute)."""
+    import io
+
+    fig, ax = new_figure()
+    ax.plot([0.0, 1.0], [0.0, 1.0], label="a")
+    ax.set_xlabel("x, mm")
+    ax.set_ylabel("y, mm")
+    ax.set_title("warm")
+    for size in WARM_FONT_SIZES:
+        ax.text(0.5, 0.5, "a", fontsize=size)
+    ax.legend(fontsize=WARM_FONT_SIZES[1])
+    fig.tight_layout()
+    _layout_done(fig)
+    try:
+        fig.savefig(io.BytesIO(), format="png", dpi=120, metadata={"Software": None}, bbox_inches=None)
+    finally:
+        plt.close(fig)
+
+
 def line_plot(path: str | Path, series, xlabel: str, ylabel: str, title: str = "", markers: bool = False, equal_axes: bool = False) -> Path:
     """Several series on one axes: series = [(x, y, label), ...]; labels carry units."""
     fig, ax = new_figure()

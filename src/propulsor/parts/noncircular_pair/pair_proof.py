@@ -19,8 +19,9 @@ There the running position is searched: the driven offset of least overlap area 
 a pitch of the previous phase's offset (13-point scan refined by a bounded Brent search);
 if that area is 0 the free rotations are measured from there, otherwise the phase is a
 jam (no position of the driven wheel frees it) and its least overlap is reported.  The search's
-booleans take the two crops cut to the discs where the bodies can meet (``_LensCrops``): the same
-overlap, among a third to a half of the vertices.
+booleans take the two crops cut to the sectors where the bodies can meet at any offset searched
+(``_MeetCrops``, from the bodies' polar envelopes; ``_LensCrops``, discs about the axes, where those do not
+apply): the same overlap, to the last bit, among a fraction of the vertices.
 """
 
 from __future__ import annotations
@@ -185,7 +186,7 @@ def prove_pair(driver_profile, driven_profile, L: float, theta_of_phi, phis, r_r
     nd = np.zeros(N, int)
     nc = np.zeros(N, int)
     prev, warm = 0.0, False
-    lens = _LensCrops(L, reach + 1.0, r_dvn + 1.0)
+    lens = _MeetCrops(drv, dvn, L, reach + 1.0, r_dvn + 1.0, search)
     for w in range(windows):
         idx = np.nonzero((phis >= edges[w]) & (phis < edges[w + 1]))[0]
         if len(idx) == 0:
@@ -243,7 +244,8 @@ class _LensCrops:
     radius L, by at most L times the angle).  The overlap is the same region of the same edges, found among
     fewer vertices (the seed-000 and seed-002 table pairs: 2 300-3 000 instead of 5 000-7 700 a body, each overlap
     equal to the last bit).  A cut is kept for the next phases while their discs lie inside it (cut ``spare`` mm
-    wider than needed); the area's boolean is the only cost it saves."""
+    wider than needed); the area's boolean is the only cost it saves.  :class:`_MeetCrops` cuts tighter and hands
+    over to these discs where its envelopes do not apply."""
 
     def __init__(self, L: float, reach: float, r_dvn: float, spare: float = 1.0):
         self.L, self.reach, self.r_dvn, self.spare = L, reach, r_dvn, spare
@@ -261,6 +263,115 @@ class _LensCrops:
         self.drv = self._cut(self.drv, dcrop, -L * math.cos(theta), L * math.sin(theta), self.r_dvn)
         self.dvn = self._cut(self.dvn, crop, L * math.cos(p_mid), L * math.sin(p_mid), self.reach + L * (half + 1e-3))
         return self.drv[4], self.dvn[4]
+
+
+class _Envelope:
+    """A star polygon about a body's axis (its body frame's origin) that holds the whole body: per bin of polar angle,
+    the largest radius of its outline there (each edge counted in every bin its angle sweeps: an edge is farthest
+    from the axis at an end), the bin's arc replaced by the chord that touches it from outside.  A point of the body
+    at angle psi lies on the ray from the axis at psi, which leaves the body through an outline point farther out at
+    the same angle: within the envelope.  ``widen`` (rad): each bin takes the largest radius of the bins within that
+    angle, so that the envelope holds the body turned by up to ``widen`` either way too."""
+
+    BINS = 720
+
+    def __init__(self, o, widen: float = 0.0):
+        import manifold3d as m3d
+
+        n = self.BINS
+        w = 2.0 * math.pi / n
+        a, b = o.seg_a, o.seg_b
+        a0 = np.arctan2(a[:, 1], a[:, 0])
+        d = (np.arctan2(b[:, 1], b[:, 0]) - a0 + math.pi) % (2.0 * math.pi) - math.pi  # the edge's sweep
+        r = np.maximum(norms(a), norms(b))
+        lo = np.floor((np.minimum(a0, a0 + d) + math.pi) / w).astype(np.int64)
+        span = np.floor((np.maximum(a0, a0 + d) + math.pi) / w).astype(np.int64) - lo
+        rb = np.zeros(n)
+        for s in range(int(span.max()) + 1):
+            m = span >= s
+            np.maximum.at(rb, (lo[m] + s) % n, r[m])
+        k = int(math.ceil(widen / w)) + 1 if widen > 0.0 else 0
+        if k:
+            rb = np.max(np.stack([np.roll(rb, j) for j in range(-k, k + 1)]), axis=0)
+        self.r_max = float(rb.max())
+        R = rb / math.cos(0.5 * w) * (1.0 + 1e-9)
+        A = -math.pi + w * np.arange(n + 1)
+        pts = np.empty((2 * n, 2))
+        pts[0::2, 0], pts[0::2, 1] = R * np.cos(A[:-1]), R * np.sin(A[:-1])
+        pts[1::2, 0], pts[1::2, 1] = R * np.cos(A[1:]), R * np.sin(A[1:])
+        self.section = m3d.CrossSection([pts], m3d.FillRule.Positive)
+
+
+def _wedge(a0: float, a1: float, r: float):
+    """The sector of the disc of radius ``r`` about the origin between the polar angles a0 < a1 (its arc's chords
+    outside the circle)."""
+    import manifold3d as m3d
+
+    n = max(2, int(math.ceil((a1 - a0) / 0.02)))
+    a = np.linspace(a0, a1, n + 1)
+    R = r / math.cos(0.5 * (a1 - a0) / n)
+    pts = np.vstack([[0.0, 0.0], np.column_stack([R * np.cos(a), R * np.sin(a)])])
+    return m3d.CrossSection([np.ascontiguousarray(pts)], m3d.FillRule.Positive)
+
+
+def _polar_extent(P: np.ndarray, centre: float) -> tuple[float, float, float]:
+    """(least, largest polar angle measured from ``centre`` (rad, within +-pi), largest radius) of points."""
+    rel = (np.arctan2(P[:, 1], P[:, 0]) - centre + math.pi) % (2.0 * math.pi) - math.pi
+    return float(rel.min()), float(rel.max()), float(norms(P).max())
+
+
+class _MeetCrops:
+    """The two crops a least-overlap search (:func:`_least_overlap`) intersects, cut down to where the bodies can meet
+    at any driven offset searched.
+
+    Each body lies within its :class:`_Envelope`; the driven one's widened by the search's half span, so that it holds
+    the driven wheel at every offset searched.  At a phase both envelopes are placed in the driver's frame (the
+    driven one at the middle offset) and intersected: every overlap point of every offset searched lies in that
+    region Z (an overlap point is in both bodies).  The driver's crop is cut to the sector about its axis that holds
+    Z (1 mm more), the driven crop to the sector about its own that holds Z at every offset (Z placed in the driven
+    frame at the middle offset, its angles widened by the half span: the offsets turn it about the driven axis).  A
+    cut's edges inside one body then lie outside the other, so the overlap is the same region of the same edges
+    (each overlap equal to the last bit), found among fewer vertices than the discs' cuts (:class:`_LensCrops`, which
+    takes over where Z is empty or an axis lies near it).  A cut is kept for the next phases while their sectors lie
+    inside it (cut ``spare`` mm and ``spare_rad`` wider than needed)."""
+
+    def __init__(self, drv, dvn, L: float, reach: float, r_dvn: float, half: float, spare: float = 1.0,
+                 spare_rad: float = 0.03):
+        self.L, self.half, self.spare, self.spare_rad = L, half, spare, spare_rad
+        self.env_drv = _Envelope(drv)
+        self.env_dvn = _Envelope(dvn, half + 1e-3)
+        self.lens = _LensCrops(L, reach, r_dvn, spare)
+        self.drv = self.dvn = None  # (source crop, centre, a0, a1, r, the cut)
+
+    def _cut(self, held, src, centre: float, a0: float, a1: float, r: float):
+        if held is not None and held[0] is src and r <= held[4]:
+            shift = (centre - held[1] + math.pi) % (2.0 * math.pi) - math.pi  # this centre from the held one's
+            if held[2] <= a0 + shift and a1 + shift <= held[3]:
+                return held
+        a0, a1, r = a0 - self.spare_rad, a1 + self.spare_rad, r + self.spare
+        return (src, centre, a0, a1, r, _Cut(src.section ^ _wedge(centre + a0, centre + a1, r)))
+
+    def at(self, dcrop, crop, p_mid: float, theta: float, half: float):
+        """(driver cut, driven cut) for the driver at ``theta`` and the driven wheel within ``p_mid`` +- ``half``."""
+        L = self.L
+        c, s = math.cos(-theta - p_mid), math.sin(-theta - p_mid)
+        ct, st = math.cos(-theta), math.sin(-theta)
+        M = np.array([[c, -s, -ct * L], [s, c, -st * L]])  # driven body -> driver body (_overlap_at's)
+        near = max(self.env_drv.r_max, self.env_dvn.r_max) + 2.0 * self.spare >= L
+        Z = [] if near or half > self.half else (self.env_drv.section ^ self.env_dvn.section.transform(M)).to_polygons()
+        if not len(Z):
+            return self.lens.at(dcrop, crop, p_mid, theta, half)
+        V = np.vstack([np.asarray(z, float) for z in Z])
+        b0, b1, rd = _polar_extent(V, math.pi - theta)
+        # Z in the driven frame at the middle offset: x_dvn = R^T (x_drv - t)
+        W = (V - M[:, 2]) @ M[:, :2]
+        g0, g1, rv = _polar_extent(W, p_mid)
+        if b1 - b0 > 0.5 * math.pi or g1 - g0 > 0.5 * math.pi:
+            return self.lens.at(dcrop, crop, p_mid, theta, half)
+        w = half + 1e-3
+        self.drv = self._cut(self.drv, dcrop, math.pi - theta, b0 - 1e-3, b1 + 1e-3, rd + 1.0)
+        self.dvn = self._cut(self.dvn, crop, p_mid, g0 - w, g1 + w, rv + 1.0)
+        return self.drv[5], self.dvn[5]
 
 
 class _Cut:
