@@ -425,7 +425,8 @@ def test_an_envelope_holds_its_body_and_the_meet_cuts_give_each_overlap_of_the_w
     import manifold3d as m3d
 
     from propulsor.checks.motion import outline
-    from propulsor.parts.noncircular_pair.pair_proof import _Envelope, _LensCrops, _MeetCrops, _overlap_at
+    from propulsor.checks.motion import PolarEnvelope as _Envelope
+    from propulsor.parts.noncircular_pair.pair_proof import _LensCrops, _MeetCrops, _overlap_at
 
     square = np.array([[10.0, 0.0], [0.0, 10.0], [-10.0, 0.0], [0.0, -10.0]])
     for body, widen in ((square, 0.0), (square, 0.2)):

@@ -38,7 +38,7 @@ Modules: :mod:`.outlines`, :mod:`.poses`, :mod:`.distance`, :mod:`.backlash`, :m
 
 from __future__ import annotations
 
-from .outlines import Outline, outline, crop_to_sector, cut_to_disc
+from .outlines import Outline, PolarEnvelope, outline, crop_to_sector, cut_to_disc, cut_to_sector
 from .poses import Pose, poses_from_angles, rotation_matrices
 from .sweep2d import SweepResult, sweep_pair, sweep_pair_windowed
 from .transmission import TransmissionResult, transmission_sweep
@@ -49,6 +49,8 @@ __all__ = [
     "outline",
     "crop_to_sector",
     "cut_to_disc",
+    "cut_to_sector",
+    "PolarEnvelope",
     "Pose",
     "poses_from_angles",
     "rotation_matrices",

@@ -16,7 +16,7 @@ from ...errors import InputError, require, require_positive
 from ...geometry.profile import Profile
 from ...planar import box, norms
 
-__all__ = ['Outline', 'outline', 'crop_to_sector', 'cut_to_disc', 'offset_outline']
+__all__ = ['Outline', 'outline', 'crop_to_sector', 'cut_to_disc', 'cut_to_sector', 'PolarEnvelope', 'offset_outline']
 
 
 def _signed_area(p: np.ndarray) -> float:
@@ -182,6 +182,51 @@ def cut_to_disc(section: m3d.CrossSection, cx: float, cy: float, R: float, sides
     Rc = R / math.cos(math.pi / sides)
     disc = m3d.CrossSection([np.column_stack([cx + Rc * np.cos(a), cy + Rc * np.sin(a)])], m3d.FillRule.Positive)
     return section ^ disc
+
+
+class PolarEnvelope:
+    """A star polygon about a body's axis (its body frame's origin) that holds the whole body: per bin of polar angle,
+    the largest radius of its outline there (each edge counted in every bin its angle sweeps: an edge is farthest
+    from the axis at an end), the bin's arc replaced by the chord that touches it from outside.  A point of the body
+    at angle psi lies on the ray from the axis at psi, which leaves the body through an outline point farther out at
+    the same angle: within the envelope.  ``widen`` (rad): each bin takes the largest radius of the bins within that
+    angle, so that the envelope holds the body turned by up to ``widen`` either way too."""
+
+    BINS = 720
+
+    def __init__(self, o, widen: float = 0.0):
+        n = self.BINS
+        w = 2.0 * math.pi / n
+        a, b = o.seg_a, o.seg_b
+        a0 = np.arctan2(a[:, 1], a[:, 0])
+        d = (np.arctan2(b[:, 1], b[:, 0]) - a0 + math.pi) % (2.0 * math.pi) - math.pi  # the edge's sweep
+        r = np.maximum(norms(a), norms(b))
+        lo = np.floor((np.minimum(a0, a0 + d) + math.pi) / w).astype(np.int64)
+        span = np.floor((np.maximum(a0, a0 + d) + math.pi) / w).astype(np.int64) - lo
+        rb = np.zeros(n)
+        for s in range(int(span.max()) + 1):
+            m = span >= s
+            np.maximum.at(rb, (lo[m] + s) % n, r[m])
+        k = int(math.ceil(widen / w)) + 1 if widen > 0.0 else 0
+        if k:
+            rb = np.max(np.stack([np.roll(rb, j) for j in range(-k, k + 1)]), axis=0)
+        self.r_max = float(rb.max())
+        R = rb / math.cos(0.5 * w) * (1.0 + 1e-9)
+        A = -math.pi + w * np.arange(n + 1)
+        pts = np.empty((2 * n, 2))
+        pts[0::2, 0], pts[0::2, 1] = R * np.cos(A[:-1]), R * np.sin(A[:-1])
+        pts[1::2, 0], pts[1::2, 1] = R * np.cos(A[1:]), R * np.sin(A[1:])
+        self.section = m3d.CrossSection([pts], m3d.FillRule.Positive)
+
+
+def cut_to_sector(section: m3d.CrossSection, a0: float, a1: float, r: float) -> m3d.CrossSection:
+    """``section`` inside the sector of the disc of radius ``r`` about the origin between the polar angles a0 < a1
+    (cut by a polygon whose arc's chords lie outside the circle: the whole sector is kept)."""
+    n = max(2, int(math.ceil((a1 - a0) / 0.02)))
+    a = np.linspace(a0, a1, n + 1)
+    R = r / math.cos(0.5 * (a1 - a0) / n)
+    pts = np.vstack([[0.0, 0.0], np.column_stack([R * np.cos(a), R * np.sin(a)])])
+    return section ^ m3d.CrossSection([np.ascontiguousarray(pts)], m3d.FillRule.Positive)
 
 
 def offset_outline(o: Outline, inward: float, shift=(0.0, 0.0)) -> Outline:

@@ -31,7 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...checks.motion import crop_to_sector, cut_to_disc, outline, transmission_sweep
+from ...checks.motion import PolarEnvelope, crop_to_sector, cut_to_disc, cut_to_sector, outline, transmission_sweep
 from ... import policy
 from ...planar import norms
 
@@ -265,55 +265,6 @@ class _LensCrops:
         return self.drv[4], self.dvn[4]
 
 
-class _Envelope:
-    """A star polygon about a body's axis (its body frame's origin) that holds the whole body: per bin of polar angle,
-    the largest radius of its outline there (each edge counted in every bin its angle sweeps: an edge is farthest
-    from the axis at an end), the bin's arc replaced by the chord that touches it from outside.  A point of the body
-    at angle psi lies on the ray from the axis at psi, which leaves the body through an outline point farther out at
-    the same angle: within the envelope.  ``widen`` (rad): each bin takes the largest radius of the bins within that
-    angle, so that the envelope holds the body turned by up to ``widen`` either way too."""
-
-    BINS = 720
-
-    def __init__(self, o, widen: float = 0.0):
-        import manifold3d as m3d
-
-        n = self.BINS
-        w = 2.0 * math.pi / n
-        a, b = o.seg_a, o.seg_b
-        a0 = np.arctan2(a[:, 1], a[:, 0])
-        d = (np.arctan2(b[:, 1], b[:, 0]) - a0 + math.pi) % (2.0 * math.pi) - math.pi  # the edge's sweep
-        r = np.maximum(norms(a), norms(b))
-        lo = np.floor((np.minimum(a0, a0 + d) + math.pi) / w).astype(np.int64)
-        span = np.floor((np.maximum(a0, a0 + d) + math.pi) / w).astype(np.int64) - lo
-        rb = np.zeros(n)
-        for s in range(int(span.max()) + 1):
-            m = span >= s
-            np.maximum.at(rb, (lo[m] + s) % n, r[m])
-        k = int(math.ceil(widen / w)) + 1 if widen > 0.0 else 0
-        if k:
-            rb = np.max(np.stack([np.roll(rb, j) for j in range(-k, k + 1)]), axis=0)
-        self.r_max = float(rb.max())
-        R = rb / math.cos(0.5 * w) * (1.0 + 1e-9)
-        A = -math.pi + w * np.arange(n + 1)
-        pts = np.empty((2 * n, 2))
-        pts[0::2, 0], pts[0::2, 1] = R * np.cos(A[:-1]), R * np.sin(A[:-1])
-        pts[1::2, 0], pts[1::2, 1] = R * np.cos(A[1:]), R * np.sin(A[1:])
-        self.section = m3d.CrossSection([pts], m3d.FillRule.Positive)
-
-
-def _wedge(a0: float, a1: float, r: float):
-    """The sector of the disc of radius ``r`` about the origin between the polar angles a0 < a1 (its arc's chords
-    outside the circle)."""
-    import manifold3d as m3d
-
-    n = max(2, int(math.ceil((a1 - a0) / 0.02)))
-    a = np.linspace(a0, a1, n + 1)
-    R = r / math.cos(0.5 * (a1 - a0) / n)
-    pts = np.vstack([[0.0, 0.0], np.column_stack([R * np.cos(a), R * np.sin(a)])])
-    return m3d.CrossSection([np.ascontiguousarray(pts)], m3d.FillRule.Positive)
-
-
 def _polar_extent(P: np.ndarray, centre: float) -> tuple[float, float, float]:
     """(least, largest polar angle measured from ``centre`` (rad, within +-pi), largest radius) of points."""
     rel = (np.arctan2(P[:, 1], P[:, 0]) - centre + math.pi) % (2.0 * math.pi) - math.pi
@@ -324,7 +275,7 @@ class _MeetCrops:
     """The two crops a least-overlap search (:func:`_least_overlap`) intersects, cut down to where the bodies can meet
     at any driven offset searched.
 
-    Each body lies within its :class:`_Envelope`; the driven one's widened by the search's half span, so that it holds
+    Each body lies within its :class:`~propulsor.checks.motion.outlines.PolarEnvelope`; the driven one's widened by the search's half span, so that it holds
     the driven wheel at every offset searched.  At a phase both envelopes are placed in the driver's frame (the
     driven one at the middle offset) and intersected: every overlap point of every offset searched lies in that
     region Z (an overlap point is in both bodies).  The driver's crop is cut to the sector about its axis that holds
@@ -338,8 +289,8 @@ class _MeetCrops:
     def __init__(self, drv, dvn, L: float, reach: float, r_dvn: float, half: float, spare: float = 1.0,
                  spare_rad: float = 0.03):
         self.L, self.half, self.spare, self.spare_rad = L, half, spare, spare_rad
-        self.env_drv = _Envelope(drv)
-        self.env_dvn = _Envelope(dvn, half + 1e-3)
+        self.env_drv = PolarEnvelope(drv)
+        self.env_dvn = PolarEnvelope(dvn, half + 1e-3)
         self.lens = _LensCrops(L, reach, r_dvn, spare)
         self.drv = self.dvn = None  # (source crop, centre, a0, a1, r, the cut)
 
@@ -349,7 +300,7 @@ class _MeetCrops:
             if held[2] <= a0 + shift and a1 + shift <= held[3]:
                 return held
         a0, a1, r = a0 - self.spare_rad, a1 + self.spare_rad, r + self.spare
-        return (src, centre, a0, a1, r, _Cut(src.section ^ _wedge(centre + a0, centre + a1, r)))
+        return (src, centre, a0, a1, r, _Cut(cut_to_sector(src.section, centre + a0, centre + a1, r)))
 
     def at(self, dcrop, crop, p_mid: float, theta: float, half: float):
         """(driver cut, driven cut) for the driver at ``theta`` and the driven wheel within ``p_mid`` +- ``half``."""
