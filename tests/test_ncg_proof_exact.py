@@ -451,7 +451,7 @@ def test_an_envelope_holds_its_body_and_the_meet_cuts_give_each_overlap_of_the_w
         return sum(len(q) for q in cs.to_polygons())
 
     for L, ahead in ((71.0, 0.0), (75.0, math.radians(2.0))):
-        meet = _MeetCrops(drv, dvn, L, reach + 1.0, r_dvn + 1.0, half)
+        meet = _MeetCrops(drv, dvn, L, reach + 1.0, r_dvn + 1.0)
         lens = _LensCrops(L, reach + 1.0, r_dvn + 1.0)
         cuts = []
         for ph in np.arange(8) * pitch / 10 + 0.3:
@@ -466,12 +466,74 @@ def test_an_envelope_holds_its_body_and_the_meet_cuts_give_each_overlap_of_the_w
             assert max(whole) > 1.0
             assert [_overlap_at(cd, cn, L, th, ph + o) for o in offs] == whole
         assert len(set(cuts)) < len(cuts)  # kept over some phases
-    narrow = _MeetCrops(drv, dvn, 71.0, reach + 1.0, r_dvn + 1.0, half, spare=0.0, spare_rad=0.0)
-    narrow.env_dvn = _Envelope(dvn)
+    narrow = _MeetCrops(drv, dvn, 71.0, reach + 1.0, r_dvn + 1.0, spare=0.0, spare_rad=0.0)
+    narrow.envelopes[half] = _Envelope(dvn)
     th = float(d.run_law.theta(0.3))
     cd, cn = narrow.at(drv, dvn, 0.3, th, half)
     assert any(_overlap_at(cd, cn, 71.0, th, 0.3 + o) < _overlap_at(drv, dvn, 71.0, th, 0.3 + o) - 1e-6
                for o in np.linspace(-half, half, 13))
+
+
+def test_the_least_overlap_search_on_the_cuts_of_the_span_it_searches_gives_the_whole_outlines_result(monkeypatch):
+    """``_least_overlap(..., crops)``: each search takes the cuts for the span it searches (the warm Brent search its
+    quarter span, the scan the whole): the same offset and area as on the whole outlines, cold, warm and warm falling
+    back to the scan; the quarter span's cut differs from the whole outlines beyond it (a scan taking it would err),
+    and every offset a search evaluates is evaluated on the cuts of a span that holds it.  In ``prove_pair`` of a
+    jammed mount every search's cuts hold the overlap of its whole span."""
+    from propulsor.checks.motion import outline
+    from propulsor.parts.noncircular_pair import pair_proof
+    from propulsor.parts.noncircular_pair.pair_proof import _least_overlap, _MeetCrops, _overlap_at, prove_pair
+
+    _, dd = _circular()
+    d = dd.d
+    drv = outline([d.driver.profile.outer.polyline(1e-4)])
+    dvn = outline([d.driven.profile.outer.polyline(1e-4)])
+    reach = float(np.linalg.norm(drv.points, axis=1).max())
+    r_dvn = float(np.linalg.norm(dvn.points, axis=1).max())
+    half = 0.5 * math.pi * 2.5 / 50
+    th3 = float(d.run_law.theta(0.3))
+    for L, ph, th, start, warm in ((71.0, 0.3, th3, 0.002, False), (71.0, 0.3, th3, 0.002, True),
+                                   (75.0, 0.0, 0.02, 0.01 - 0.9 * half, True), (75.0, 0.0, 0.02, 0.0095, True)):
+        m = _MeetCrops(drv, dvn, L, reach + 1.0, r_dvn + 1.0, spare=0.0, spare_rad=0.0)
+        crops = lambda h: m.at(drv, dvn, ph + start, th, h)  # noqa: B023 (used within the loop)
+        assert _least_overlap(drv, dvn, L, ph, th, start, half, warm, crops) == \
+            _least_overlap(drv, dvn, L, ph, th, start, half, warm)
+        if L == 71.0:  # a fresh cut (a held one that holds the quarter span is kept for it)
+            cd, cn = _MeetCrops(drv, dvn, L, reach + 1.0, r_dvn + 1.0, spare=0.0, spare_rad=0.0).at(
+                drv, dvn, ph + start, th, 0.25 * half)
+            offs = start + np.linspace(-half, half, 21)
+            assert any(_overlap_at(cd, cn, L, th, ph + o) != _overlap_at(drv, dvn, L, th, ph + o) for o in offs)
+    # each offset evaluated on the cuts of a span that holds it
+    m = _MeetCrops(drv, dvn, 71.0, reach + 1.0, r_dvn + 1.0, spare=0.0, spare_rad=0.0)
+    spans, evaluated = {}, []
+
+    def crops(h):
+        cd, cn = m.at(drv, dvn, 0.3 + 0.002, th3, h)
+        spans[id(cd)] = max(spans.get(id(cd), 0.0), h)
+        return cd, cn
+
+    real_at = pair_proof._overlap_at
+    monkeypatch.setattr(pair_proof, "_overlap_at", lambda a, b, L, th, p: evaluated.append((id(a), p - 0.3 - 0.002))
+                        or real_at(a, b, L, th, p))
+    for warm in (False, True):
+        pair_proof._least_overlap(drv, dvn, 71.0, 0.3, th3, 0.002, half, warm, crops)
+    assert evaluated and all(abs(o) <= spans[k] + 1e-12 for k, o in evaluated)
+    monkeypatch.setattr(pair_proof, "_overlap_at", real_at)
+    seen = []
+    real = pair_proof._least_overlap
+
+    def checked(drv_, dvn_, L, phi, theta, start, half_, warm, crops=None):
+        for h in (half_, 0.25 * half_):
+            cd, cn = crops(h)
+            for o in start + np.linspace(-h, h, 9):
+                assert _overlap_at(cd, cn, L, theta, phi + o) == _overlap_at(drv_, dvn_, L, theta, phi + o)
+        seen.append(warm)
+        return real(drv_, dvn_, L, phi, theta, start, half_, warm, crops)
+
+    monkeypatch.setattr(pair_proof, "_least_overlap", checked)
+    pr = prove_pair(dd.profiles[0], dd.profiles[1], 71.0, d.run_law.theta, np.array([0.0, 0.05]),
+                    lambda ph: 50.0 + 0 * ph, pitch_mm=math.pi * 2.5, windows=2)
+    assert seen == [False, True] and pr.jams == 2
 
 
 # =========================================================================== proofs.py

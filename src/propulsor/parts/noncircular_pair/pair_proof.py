@@ -186,7 +186,7 @@ def prove_pair(driver_profile, driven_profile, L: float, theta_of_phi, phis, r_r
     nd = np.zeros(N, int)
     nc = np.zeros(N, int)
     prev, warm = 0.0, False
-    lens = _MeetCrops(drv, dvn, L, reach + 1.0, r_dvn + 1.0, search)
+    lens = _MeetCrops(drv, dvn, L, reach + 1.0, r_dvn + 1.0)
     for w in range(windows):
         idx = np.nonzero((phis >= edges[w]) & (phis < edges[w + 1]))[0]
         if len(idx) == 0:
@@ -211,8 +211,8 @@ def prove_pair(driver_profile, driven_profile, L: float, theta_of_phi, phis, r_r
                 prev, warm = 0.0, False
                 continue
             # not conjugate: the running position nearest the previous offset
-            ldrv, ldvn = lens.at(dcrop, crop, float(phis[k]) + prev, float(theta[k]), search)
-            off, area = _least_overlap(ldrv, ldvn, L, float(phis[k]), float(theta[k]), prev, search, warm)
+            crops = lambda h, p_mid=float(phis[k]) + prev, th=float(theta[k]): lens.at(dcrop, crop, p_mid, th, h)
+            off, area = _least_overlap(dcrop, crop, L, float(phis[k]), float(theta[k]), prev, search, warm, crops)
             offset[k], least[k] = off, area
             prev, warm = off, True
             if area > policy.OVERLAP_AREA_TOL_MM2:
@@ -273,24 +273,27 @@ def _polar_extent(P: np.ndarray, centre: float) -> tuple[float, float, float]:
 
 class _MeetCrops:
     """The two crops a least-overlap search (:func:`_least_overlap`) intersects, cut down to where the bodies can meet
-    at any driven offset searched.
+    at any driven offset of the span asked (the warm search's quarter span, or the whole).
 
-    Each body lies within its :class:`~propulsor.checks.motion.outlines.PolarEnvelope`; the driven one's widened by the search's half span, so that it holds
-    the driven wheel at every offset searched.  At a phase both envelopes are placed in the driver's frame (the
-    driven one at the middle offset) and intersected: every overlap point of every offset searched lies in that
-    region Z (an overlap point is in both bodies).  The driver's crop is cut to the sector about its axis that holds
-    Z (1 mm more), the driven crop to the sector about its own that holds Z at every offset (Z placed in the driven
-    frame at the middle offset, its angles widened by the half span: the offsets turn it about the driven axis).  A
-    cut's edges inside one body then lie outside the other, so the overlap is the same region of the same edges
-    (each overlap equal to the last bit), found among fewer vertices than the discs' cuts (:class:`_LensCrops`, which
-    takes over where Z is empty or an axis lies near it).  A cut is kept for the next phases while their sectors lie
-    inside it (cut ``spare`` mm and ``spare_rad`` wider than needed)."""
+    Each body lies within its polar envelope (:class:`~propulsor.checks.motion.outlines.PolarEnvelope`); the driven
+    one's widened by the half span asked, so that it holds the driven wheel at every offset of the span.  At a phase
+    both envelopes are placed in the driver's frame (the driven one at the middle offset) and intersected: every
+    overlap point of every offset of the span lies in that region Z (an overlap point is in both bodies).  The
+    driver's crop is cut to the sector about its axis that holds Z (1 mm more), the driven crop to the sector about
+    its own that holds Z at every offset (Z placed in the driven frame at the middle offset, its angles widened by
+    the half span: the offsets turn it about the driven axis).  A cut's edges inside one body then lie outside the
+    other, so the overlap is the same region of the same edges (each overlap equal to the last bit), found among
+    fewer vertices than the discs' cuts (:class:`_LensCrops`, which takes over where Z is empty or an axis lies near
+    it).  A cut is kept for the next phases while their sectors lie inside it (cut ``spare`` mm and ``spare_rad``
+    wider than needed)."""
 
-    def __init__(self, drv, dvn, L: float, reach: float, r_dvn: float, half: float, spare: float = 1.0,
+    def __init__(self, drv, dvn, L: float, reach: float, r_dvn: float, spare: float = 1.0,
                  spare_rad: float = 0.03):
-        self.L, self.half, self.spare, self.spare_rad = L, half, spare, spare_rad
+        self.L, self.spare, self.spare_rad = L, spare, spare_rad
         self.env_drv = PolarEnvelope(drv)
-        self.env_dvn = PolarEnvelope(dvn, half + 1e-3)
+        self.dvn_body = dvn
+        #: the driven wheel's envelopes by the half span they are widened for (+ 1e-3 rad), made when first asked
+        self.envelopes: dict[float, PolarEnvelope] = {}
         self.lens = _LensCrops(L, reach, r_dvn, spare)
         self.drv = self.dvn = None  # (source crop, centre, a0, a1, r, the cut)
 
@@ -308,8 +311,11 @@ class _MeetCrops:
         c, s = math.cos(-theta - p_mid), math.sin(-theta - p_mid)
         ct, st = math.cos(-theta), math.sin(-theta)
         M = np.array([[c, -s, -ct * L], [s, c, -st * L]])  # driven body -> driver body (_overlap_at's)
-        near = max(self.env_drv.r_max, self.env_dvn.r_max) + 2.0 * self.spare >= L
-        Z = [] if near or half > self.half else (self.env_drv.section ^ self.env_dvn.section.transform(M)).to_polygons()
+        env_dvn = self.envelopes.get(half)
+        if env_dvn is None:
+            env_dvn = self.envelopes[half] = PolarEnvelope(self.dvn_body, half + 1e-3)
+        near = max(self.env_drv.r_max, env_dvn.r_max) + 2.0 * self.spare >= L
+        Z = [] if near else (self.env_drv.section ^ env_dvn.section.transform(M)).to_polygons()
         if not len(Z):
             return self.lens.at(dcrop, crop, p_mid, theta, half)
         V = np.vstack([np.asarray(z, float) for z in Z])
@@ -340,20 +346,26 @@ def _overlap_at(drv, dvn, L, theta, p) -> float:
     return float((drv.section ^ dvn.section.transform(M)).area())
 
 
-def _least_overlap(drv, dvn, L, phi, theta, start, half, warm: bool):
+def _least_overlap(drv, dvn, L, phi, theta, start, half, warm: bool, crops=None):
     """Driven offset (rad) within start +- half of least overlap with the driver (0 inside the free
     interval): a 13-point scan refined by a bounded Brent search; ``warm`` (the previous phase
     was searched too): first a Brent search within start +- half/4, kept unless it ends on its
-    bracket."""
+    bracket.  ``crops(h)``: the (driver, driven) sections whose overlap is that of ``drv`` and ``dvn`` at every
+    offset within start +- h (:class:`_MeetCrops`: the narrower span's are smaller)."""
     from scipy.optimize import minimize_scalar
 
     tol = policy.OVERLAP_AREA_TOL_MM2
-    f = lambda o: _overlap_at(drv, dvn, L, theta, phi + o)
+
+    def area_of(h):
+        d, v = (drv, dvn) if crops is None else crops(h)
+        return lambda o: _overlap_at(d, v, L, theta, phi + o)
+
     if warm:
         q = 0.25 * half
-        res = minimize_scalar(f, bounds=(start - q, start + q), method="bounded", options={"xatol": 1e-6})
+        res = minimize_scalar(area_of(q), bounds=(start - q, start + q), method="bounded", options={"xatol": 1e-6})
         if res.fun <= tol or abs(res.x - start) < 0.9 * q:
             return float(res.x), float(res.fun)
+    f = area_of(half)
     grid = start + np.linspace(-half, half, 13)
     vals = np.array([f(o) for o in grid])
     i = int(np.argmin(vals))
