@@ -58,6 +58,26 @@ fused, each leaf pair decided as found instead of all written out first (the sam
 mesh of make merged and as written, 171 cases): 2.96 -> 3.95 CPU s with the narrow phase called per pair (numba's
 reference counts on its array arguments), 2.86 / 2.86 -> 2.86 / 2.87 batched 4 096 at a time: the pairs' arrays
 were not the cost (the pairs' decisions, about 150 ns each, are); reverted.
+
+2026-12-05, a new session (2 cores; from 0404b16).  The least-overlap searches of jammed phases (the sector tables'
+pairs and the other tooth method's sector teeth): their crops were cut to discs about the axes (``_LensCrops``: 4 862
+driver and 4 245 driven vertices an overlap in ncg_seed000_table), now to the sectors about each axis that hold where
+the two bodies' polar envelopes meet over the offsets searched (``pair_proof._MeetCrops``,
+``checks.motion.outlines.PolarEnvelope``: 3 271 / 2 531), the warm Brent search taking the cuts of its quarter span (3
+111 / 2 223 on average over both spans).  In one process, CPU s, the PairProof arrays identical (sha256): the proof of
+ncg_seed000_table 4.17 -> 3.05 -> 2.58-2.83, ncg_seed002_table 3.16 -> 2.57 -> 2.39-2.43, the comparisons of seed 000
+and seed 002 1.64 -> 1.24 -> 1.18-1.20 and 1.13 -> 0.97 (a CI run on both cores during the last numbers).  Tried and
+not kept: the driver cut by the meeting region itself (offset 0.05 mm): its overlaps 1.40 -> 0.77 s, but the areas not
+bit for bit (the Brent searches took other paths: 3 750 evaluations against 3 748); spares of 0 / 0.2 / 1 mm and 0 /
+0.005 / 0.03 rad, and 360 / 720 / 2 048 envelope bins: within the spread.  Also the batch draws one figure before it
+forks (``plots.warm``): a forked build's first figure 108-117 -> 90-109 ms, the same pixels. make from clean, its 636
+files identical to bench/hashes/all_19_make_at_9ac9bbf.sha256 after each step: before, 66.3 s (120.0 + 5.4 CPU s) at
+gauge 1.66-1.73 and 68.5 s (125.8 + 4.8) at 1.74-1.76; after, 63.1 s (115.8 + 4.5) at 1.67-1.68, 64.6 s (118.1 + 5.0)
+at 1.68-1.76 and 63.3 s (116.7 + 4.6) at 1.67-1.68 (the gauge: bench_variant.py's least, 1.46-1.60 on quiet minutes).
+py-spy over a whole make: ``_overlap_at``'s own share 4.0 -> 2.8 %.  Looked at and left: the polysector's start tests
+and the proofs' overlapping sweep steps take one boolean a pose (no cut reused over evaluations: a cut would cost what
+it saves); glibc's malloc thresholds (mmap 32 MiB, trim 256 MiB, top pad 64 MiB) for one pair's build: faults 320 000
+-> 284 000, CPU within the spread.
 """
 
 from __future__ import annotations
