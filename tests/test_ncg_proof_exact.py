@@ -47,6 +47,24 @@ def _m3d_overlap(drv_loops, dvn_loops, L, theta, phi):
     return (a ^ b).area()
 
 
+def _circular_outlines():
+    """The circular pair's design, its outer outlines (driver, driven), their largest radii and the least-overlap
+    search's half span (half a pitch at the driven pitch radius)."""
+    from propulsor.checks.motion import outline
+
+    _, dd = _circular()
+    d = dd.d
+    drv = outline([d.driver.profile.outer.polyline(1e-4)])
+    dvn = outline([d.driven.profile.outer.polyline(1e-4)])
+    reach = float(np.linalg.norm(drv.points, axis=1).max())
+    r_dvn = float(np.linalg.norm(dvn.points, axis=1).max())
+    return dd, drv, dvn, reach, r_dvn, 0.5 * math.pi * 2.5 / 50
+
+
+def _n_vertices(cs) -> int:
+    return sum(len(q) for q in cs.to_polygons())
+
+
 # =========================================================================== PairProof of given arrays
 def _proof(**kw):
     from propulsor.parts.noncircular_pair.pair_proof import PairProof
@@ -371,104 +389,74 @@ def test_least_overlap_search_finds_the_free_interval_and_otherwise_the_least_ov
     assert area <= fine + 1e-3
 
 
-def test_lens_cuts_give_each_overlap_of_the_whole_bodies_to_the_last_bit_and_are_kept_while_they_hold():
+def test_lens_and_meet_cuts_give_each_overlap_of_the_whole_bodies_to_the_last_bit_and_are_kept_while_they_hold():
     """``_LensCrops``: the driver cut to the disc about the driven axis, the driven wheel to the disc about the
-    driver axis's positions over the offsets searched.  Jammed (L = 71 mm) and with the driver ahead of the law (L =
-    75 mm, 2 degrees), over phases a tenth of a pitch apart: the overlap of the cuts equals that of the whole outlines
-    exactly at every offset of the search span (its scan and random points), the cuts hold fewer vertices, and a cut
-    is kept over the next phases while their discs lie inside it.  A disc 2 mm short of the driven tip radius loses
-    overlap (the check can fail)."""
-    from propulsor.checks.motion import outline
-    from propulsor.parts.noncircular_pair.pair_proof import _LensCrops, _overlap_at
+    driver axis's positions over the offsets searched; ``_MeetCrops``: each cut to the sector about its own axis that
+    holds where the two bodies' polar envelopes meet over those offsets.  Jammed (L = 71 mm) and with the driver ahead
+    of the law (L = 75 mm, 2 degrees), over phases a tenth of a pitch apart: the overlap of either's cuts equals that
+    of the whole outlines exactly at every offset of the search span (its scan and random points), the discs' cuts
+    hold fewer vertices than the bodies and the sectors' fewer than the discs', and a cut is kept over the next phases
+    while it holds.  A disc 2 mm short of the driven tip radius loses overlap (the check can fail)."""
+    from propulsor.parts.noncircular_pair.pair_proof import _LensCrops, _MeetCrops, _overlap_at
 
-    _, dd = _circular()
+    dd, drv, dvn, reach, r_dvn, half = _circular_outlines()
     d = dd.d
-    drv = outline([d.driver.profile.outer.polyline(1e-4)])
-    dvn = outline([d.driven.profile.outer.polyline(1e-4)])
-    reach = float(np.linalg.norm(drv.points, axis=1).max())
-    r_dvn = float(np.linalg.norm(dvn.points, axis=1).max())
-    half = 0.5 * math.pi * 2.5 / 50
     rng = np.random.default_rng(7)
     pitch = 2 * math.pi / 40
-
-    def n_vertices(cs):
-        return sum(len(q) for q in cs.to_polygons())
-
     for L, ahead in ((71.0, 0.0), (75.0, math.radians(2.0))):
         lens = _LensCrops(L, reach + 1.0, r_dvn + 1.0)
-        cuts = []
+        meet = _MeetCrops(drv, dvn, L, reach + 1.0, r_dvn + 1.0)
+        cuts, meet_cuts = [], []
         for ph in np.arange(8) * pitch / 10 + 0.3:
             th = float(d.run_law.theta(ph)) + ahead
             start = 0.002
             cd, cn = lens.at(drv, dvn, ph + start, th, half)
+            md, mn = meet.at(drv, dvn, ph + start, th, half)
             cuts.append((id(cd), id(cn)))
-            assert n_vertices(cd.section) < 0.5 * len(drv.points) and n_vertices(cn.section) < 0.5 * len(dvn.points)
+            meet_cuts.append((id(md), id(mn)))
+            assert _n_vertices(cd.section) < 0.5 * len(drv.points) and _n_vertices(cn.section) < 0.5 * len(dvn.points)
+            assert _n_vertices(md.section) + _n_vertices(mn.section) < _n_vertices(cd.section) + _n_vertices(cn.section)
             offs = np.r_[start + np.linspace(-half, half, 13), start + rng.uniform(-half, half, 6)]
             whole = [_overlap_at(drv, dvn, L, th, ph + o) for o in offs]
             assert max(whole) > 1.0
             assert [_overlap_at(cd, cn, L, th, ph + o) for o in offs] == whole
-        assert len(set(cuts)) < len(cuts)  # kept over some phases
+            assert [_overlap_at(md, mn, L, th, ph + o) for o in offs] == whole
+        assert len(set(cuts)) < len(cuts) and len(set(meet_cuts)) < len(meet_cuts)  # kept over some phases
     short = _LensCrops(71.0, reach + 1.0, r_dvn - 2.0, spare=0.0)
     th = float(d.run_law.theta(0.3))
     cd, cn = short.at(drv, dvn, 0.3, th, half)
     assert _overlap_at(cd, cn, 71.0, th, 0.3) < _overlap_at(drv, dvn, 71.0, th, 0.3) - 1.0
 
 
-def test_an_envelope_holds_its_body_and_the_meet_cuts_give_each_overlap_of_the_whole_bodies_to_the_last_bit():
-    """``_Envelope``: a square of four vertices (edges sweeping 90 degrees each) and a gear lie inside their
-    envelopes, and a square turned by less than ``widen`` inside the widened one.  ``_MeetCrops``: the driver cut to
-    the sector about its axis that holds where the two envelopes meet, the driven wheel to the sector about its own
-    over the offsets searched.  Jammed (L = 71 mm) and with the driver ahead of the law (L = 75 mm, 2 degrees): the
-    overlap of the cuts equals that of the whole outlines exactly at every offset of the search span, the cuts hold
-    fewer vertices than the whole bodies and the discs' cuts, and a cut is kept over the next phases.  The driven
-    envelope left unwidened loses overlap at an offset of the span (the check can fail)."""
+def test_a_polar_envelope_holds_its_body_and_one_widened_holds_it_turned_and_a_sector_cut_its_sector():
+    """``PolarEnvelope``: a square of four vertices (edges sweeping 90 degrees each) and a gear lie inside their
+    envelopes, and the square turned by less than ``widen`` inside the widened one; ``cut_to_sector`` keeps the whole
+    sector it names.  The meet cuts with the driven envelope left unwidened lose overlap at an offset of the span
+    (the overlap check above can fail)."""
     import manifold3d as m3d
 
-    from propulsor.checks.motion import outline
-    from propulsor.checks.motion import PolarEnvelope as _Envelope
-    from propulsor.parts.noncircular_pair.pair_proof import _LensCrops, _MeetCrops, _overlap_at
+    from propulsor.checks.motion import PolarEnvelope, cut_to_sector, outline
+    from propulsor.parts.noncircular_pair.pair_proof import _MeetCrops, _overlap_at
 
     square = np.array([[10.0, 0.0], [0.0, 10.0], [-10.0, 0.0], [0.0, -10.0]])
-    for body, widen in ((square, 0.0), (square, 0.2)):
-        env = _Envelope(outline([body]), widen)
+    for widen in (0.0, 0.2):
+        env = PolarEnvelope(outline([square]), widen)
         for turn in ((0.0, 0.19, -0.19) if widen else (0.0,)):
             c, s = math.cos(turn), math.sin(turn)
-            cs = m3d.CrossSection([np.ascontiguousarray(body @ np.array([[c, s], [-s, c]]))], m3d.FillRule.Positive)
+            cs = m3d.CrossSection([np.ascontiguousarray(square @ np.array([[c, s], [-s, c]]))], m3d.FillRule.Positive)
             assert (cs - env.section).area() == 0.0 and cs.area() == pytest.approx(200.0)
-    _, dd = _circular()
-    d = dd.d
-    drv = outline([d.driver.profile.outer.polyline(1e-4)])
-    dvn = outline([d.driven.profile.outer.polyline(1e-4)])
+    # cut_to_sector keeps the whole sector of the disc (its arc's chords outside the circle): at least its area
+    plate = m3d.CrossSection([np.array([[-30.0, -30.0], [30.0, -30.0], [30.0, 30.0], [-30.0, 30.0]])],
+                             m3d.FillRule.Positive)
+    for a0, a1 in ((0.1, 0.6), (-0.3, 2.0), (2.9, 3.5)):
+        cut = cut_to_sector(plate, a0, a1, 20.0)
+        assert 0.5 * 400.0 * (a1 - a0) <= cut.area() < 0.5 * 400.0 * (a1 - a0) * 1.001
+    dd, drv, dvn, reach, r_dvn, half = _circular_outlines()
     for o in (drv, dvn):
-        assert (o.section - _Envelope(o).section).area() == 0.0
-    reach = float(np.linalg.norm(drv.points, axis=1).max())
-    r_dvn = float(np.linalg.norm(dvn.points, axis=1).max())
-    half = 0.5 * math.pi * 2.5 / 50
-    rng = np.random.default_rng(7)
-    pitch = 2 * math.pi / 40
-
-    def n_vertices(cs):
-        return sum(len(q) for q in cs.to_polygons())
-
-    for L, ahead in ((71.0, 0.0), (75.0, math.radians(2.0))):
-        meet = _MeetCrops(drv, dvn, L, reach + 1.0, r_dvn + 1.0)
-        lens = _LensCrops(L, reach + 1.0, r_dvn + 1.0)
-        cuts = []
-        for ph in np.arange(8) * pitch / 10 + 0.3:
-            th = float(d.run_law.theta(ph)) + ahead
-            start = 0.002
-            cd, cn = meet.at(drv, dvn, ph + start, th, half)
-            ld, ln = lens.at(drv, dvn, ph + start, th, half)
-            cuts.append((id(cd), id(cn)))
-            assert n_vertices(cd.section) + n_vertices(cn.section) < n_vertices(ld.section) + n_vertices(ln.section)
-            offs = np.r_[start + np.linspace(-half, half, 13), start + rng.uniform(-half, half, 6)]
-            whole = [_overlap_at(drv, dvn, L, th, ph + o) for o in offs]
-            assert max(whole) > 1.0
-            assert [_overlap_at(cd, cn, L, th, ph + o) for o in offs] == whole
-        assert len(set(cuts)) < len(cuts)  # kept over some phases
+        assert (o.section - PolarEnvelope(o).section).area() == 0.0
     narrow = _MeetCrops(drv, dvn, 71.0, reach + 1.0, r_dvn + 1.0, spare=0.0, spare_rad=0.0)
-    narrow.envelopes[half] = _Envelope(dvn)
-    th = float(d.run_law.theta(0.3))
+    narrow.envelopes[half] = PolarEnvelope(dvn)
+    th = float(dd.d.run_law.theta(0.3))
     cd, cn = narrow.at(drv, dvn, 0.3, th, half)
     assert any(_overlap_at(cd, cn, 71.0, th, 0.3 + o) < _overlap_at(drv, dvn, 71.0, th, 0.3 + o) - 1e-6
                for o in np.linspace(-half, half, 13))
@@ -480,17 +468,11 @@ def test_the_least_overlap_search_on_the_cuts_of_the_span_it_searches_gives_the_
     back to the scan; the quarter span's cut differs from the whole outlines beyond it (a scan taking it would err),
     and every offset a search evaluates is evaluated on the cuts of a span that holds it.  In ``prove_pair`` of a
     jammed mount every search's cuts hold the overlap of its whole span."""
-    from propulsor.checks.motion import outline
     from propulsor.parts.noncircular_pair import pair_proof
     from propulsor.parts.noncircular_pair.pair_proof import _least_overlap, _MeetCrops, _overlap_at, prove_pair
 
-    _, dd = _circular()
+    dd, drv, dvn, reach, r_dvn, half = _circular_outlines()
     d = dd.d
-    drv = outline([d.driver.profile.outer.polyline(1e-4)])
-    dvn = outline([d.driven.profile.outer.polyline(1e-4)])
-    reach = float(np.linalg.norm(drv.points, axis=1).max())
-    r_dvn = float(np.linalg.norm(dvn.points, axis=1).max())
-    half = 0.5 * math.pi * 2.5 / 50
     th3 = float(d.run_law.theta(0.3))
     for L, ph, th, start, warm in ((71.0, 0.3, th3, 0.002, False), (71.0, 0.3, th3, 0.002, True),
                                    (75.0, 0.0, 0.02, 0.01 - 0.9 * half, True), (75.0, 0.0, 0.02, 0.0095, True)):
