@@ -543,6 +543,76 @@ def test_windowed_sweep_equals_the_plain_sweep():
     assert np.allclose(a.clearance, b.clearance, atol=1e-9)
 
 
+@pytest.mark.parametrize("spare", [0.0, 0.3])
+def test_the_windowed_sweep_cuts_the_small_body_to_where_it_faces_the_window_and_gives_the_same_bits(monkeypatch,
+                                                                                                     spare):
+    """sweep_pair_windowed intersects each window with the small body cut to the sector about its axis that holds the
+    window over the run (sweep2d._Facing, a cut kept while it holds): every overlap area, clearance and point the same
+    floats as with the small body's whole section, on a planet pushed 0.5 mm into a ring (every step overlaps) and in
+    mesh; the cuts hold fewer vertices than the planet.  A disc spinning under a plate's edge (the window's extent
+    within 1e-3 rad and 0.01 mm of the overlap's) gives the same bits too, and a disc in a plate's hole (a window all
+    round it) is not cut."""
+    from propulsor.checks.motion import rotation_matrices, sweep2d, sweep_pair_windowed
+    from propulsor.geometry.gear_outline import external_gear_profile, internal_gear_profile
+    from propulsor.gears.gear_pair import GearPair
+    from propulsor.gears.involute import SpurGear
+
+    m, z1, z2 = 2.0, 18, 50
+    pair = GearPair(SpurGear(z1, m, 0.0), SpurGear(z2, m, 0.3, internal=True, z0=16, x0=0.0))
+    planet = outline(external_gear_profile(z1, m, 0.0, d_a=pair.d_a1, thinning_n_mm=0.05).profile, 1e-3, 0.1)
+    ring = internal_gear_profile(z2, m, 0.3, pair.d_a2, 16, 0.0, thinning_n_mm=0.05).profile
+    n = 60
+    psi = np.linspace(0.0, 2.0 * np.pi, n, endpoint=False)
+    beta = psi * (1 - z2 / z1)
+    monkeypatch.setattr(sweep2d, "FACING_SPARE_RAD", spare)
+    cuts = []
+    real = sweep2d._Facing.section
+
+    def n_vertices(cs):
+        return sum(len(q) for q in cs.to_polygons())
+
+    def seen(self, crop, rel):
+        cs = real(self, crop, rel)
+        cuts.append(n_vertices(cs))
+        return cs
+
+    for push in (0.5, 0.0):
+        Mp = np.zeros((n, 2, 3))
+        Mp[:, 0, 0], Mp[:, 0, 1], Mp[:, 1, 0], Mp[:, 1, 1] = np.cos(beta), -np.sin(beta), np.sin(beta), np.cos(beta)
+        Mp[:, :, 2] = (pair.a_w + push) * np.column_stack([np.cos(psi), np.sin(psi)])
+        monkeypatch.setattr(sweep2d._Facing, "section", lambda self, crop, rel: self.B.section)
+        a = sweep_pair_windowed(ring, Pose(0.0), planet, Mp, reach=m, chord_tol=1e-3, max_segment=0.1)
+        monkeypatch.setattr(sweep2d._Facing, "section", seen)
+        b = sweep_pair_windowed(ring, Pose(0.0), planet, Mp, reach=m, chord_tol=1e-3, max_segment=0.1)
+        for f in ("overlap_area", "clearance", "point_a", "point_b"):
+            assert getattr(a, f).tobytes() == getattr(b, f).tobytes(), (push, f)
+        if push:
+            assert (a.overlap_area > 0.1).all()
+    assert cuts and max(cuts) < 0.8 * n_vertices(planet.section)
+    # tight: a disc spinning 0.3 rad under a plate's edge, the window 0.01 mm beyond it and no spare: the cap the
+    # plate cuts off reaches to within 1e-3 rad and 0.01 mm of the window's own extent, so a cut short of any step's
+    # window (in angle, in radius, or taken from the first step alone) changes the areas
+    monkeypatch.setattr(sweep2d, "FACING_SPARE_RAD", 0.0)
+    disc = outline([circle_loop(10.0, (0.0, 0.0)).polyline(1e-3)], 1e-3, 0.1)
+    plate = [np.array([[-30.0, 5.0], [30.0, 5.0], [30.0, 40.0], [-30.0, 40.0]])]
+    turns = rotation_matrices(np.linspace(0.0, 0.3, 10), np.zeros((10, 2)))
+    monkeypatch.setattr(sweep2d._Facing, "section", lambda self, crop, rel: self.B.section)
+    a = sweep_pair_windowed(plate, Pose(0.0), disc, turns, reach=0.01, chord_tol=1e-3, max_segment=0.1)
+    monkeypatch.setattr(sweep2d._Facing, "section", seen)
+    b = sweep_pair_windowed(plate, Pose(0.0), disc, turns, reach=0.01, chord_tol=1e-3, max_segment=0.1)
+    assert (a.overlap_area > 5.0).all() and a.overlap_area.tobytes() == b.overlap_area.tobytes()
+    assert cuts[-1] < 0.6 * n_vertices(disc.section)
+    # a window all round the disc (a plate with a square hole the disc overlaps on every side): no cut
+    holed = [np.array([[-30.0, -30.0], [30.0, -30.0], [30.0, 30.0], [-30.0, 30.0]]),
+             np.array([[-9.5, -9.5], [-9.5, 9.5], [9.5, 9.5], [9.5, -9.5]])]
+    monkeypatch.setattr(sweep2d._Facing, "section", lambda self, crop, rel: self.B.section)
+    a = sweep_pair_windowed(holed, Pose(0.0), disc, turns, reach=0.01, chord_tol=1e-3, max_segment=0.1)
+    monkeypatch.setattr(sweep2d._Facing, "section", seen)
+    b = sweep_pair_windowed(holed, Pose(0.0), disc, turns, reach=0.01, chord_tol=1e-3, max_segment=0.1)
+    assert (a.overlap_area > 1.0).all() and a.overlap_area.tobytes() == b.overlap_area.tobytes()
+    assert cuts[-1] == n_vertices(disc.section)
+
+
 @pytest.mark.parametrize("squeeze", [0.0, 0.2])
 def test_the_common_area_without_the_boolean_where_apart_is_the_boolean_s_at_every_phase(gear_pair, monkeypatch,
                                                                                          squeeze):

@@ -12,7 +12,8 @@ import numpy as np
 from ... import policy
 from ...check import Check
 from ...errors import require, require_positive
-from .outlines import Outline, outline
+from ...planar import norms
+from .outlines import Outline, cut_to_sector, outline
 from .poses import Pose, apply_pose, compose_poses, inverse_pose, pose_stack
 from .distance import check_record
 from .crossing import certainly_apart
@@ -141,7 +142,7 @@ def _pose_pair(poses_a, poses_b):
 
 def sweep_pair(profile_a, poses_a, profile_b, poses_b, chord_tol: float = policy.MOTION_CHORD_TOL_MM, *,
                clearance_limit: float | None = None, name: str = "motion",
-               max_segment: float = policy.MOTION_MAX_SEGMENT_MM) -> SweepResult:
+               max_segment: float = policy.MOTION_MAX_SEGMENT_MM, section_b=None) -> SweepResult:
     """Overlap area and clearance of two planar bodies at every step of a motion.
 
     profile_a/b: Profile, Outline or list of closed polylines (body coordinates);
@@ -151,9 +152,12 @@ def sweep_pair(profile_a, poses_a, profile_b, poses_b, chord_tol: float = policy
     :func:`~propulsor.checks.motion.crossing.certainly_apart`); clearance from the boundaries (the compiled grid search
     of :mod:`.nearest`, exact point-to-edge distances in both directions, the body of more vertices searched only for
     an answer within the other way's: the exact distance between the two polylines when they do not cross).
-    clearance_limit (mm), when given, adds a minimum-clearance record to ``checks()``.
+    clearance_limit (mm), when given, adds a minimum-clearance record to ``checks()``.  ``section_b()``: a part of
+    B's section that holds every point B has in common with A at every step, asked for at the first step that takes
+    the boolean (the intersections take it; the distances take B's whole outline).
     """
     A, B = outline(profile_a, chord_tol, max_segment), outline(profile_b, chord_tol, max_segment)
+    sec_b = None
     Ma, ang_a, Mb, ang_b = _pose_pair(poses_a, poses_b)
     N = len(Ma)
     area = np.zeros(N)
@@ -177,7 +181,9 @@ def sweep_pair(profile_a, poses_a, profile_b, poses_b, chord_tol: float = policy
         if not overlapped:
             d, a_pt, b_pt, PB, PA = _boundary_distance(A, B, Ma[k], Mb[k], rel_ba[k], rel_ab[k])
         if d is None or not certainly_apart(A, B, PB, PA, d):
-            inter = A.section ^ B.section.transform(rel_ba[k])
+            if sec_b is None:
+                sec_b = B.section if section_b is None else section_b()
+            inter = A.section ^ sec_b.transform(rel_ba[k])
             area[k] = inter.area()
             if area[k] > policy.OVERLAP_AREA_TOL_MM2:
                 d, a_pt, b_pt = _penetration(A, B, Ma[k], rel_ab[k], inter)
@@ -187,6 +193,40 @@ def sweep_pair(profile_a, poses_a, profile_b, poses_b, chord_tol: float = policy
         clear[k], pa[k], pb[k] = d, a_pt, b_pt
         k += 1
     return SweepResult(ang_a, ang_b, area, clear, pa, pb, clearance_limit, name)
+
+
+#: how much wider (rad) than a run needs the windowed sweep cuts the small body (the cut is kept for the runs after
+#: while it holds them)
+FACING_SPARE_RAD = 0.3
+
+
+class _Facing:
+    """B's section cut to the sector about its body frame's origin (its axis) that holds A's crop at each step of a
+    run, 1 mm and 0.01 rad more, and ``FACING_SPARE_RAD`` more again (kept for later runs while their sectors lie
+    inside it): every point B has in common with the crop lies in the crop, so the cut's edges inside B lie outside
+    it and each intersection is the one of B's whole section, bit for bit (a ring's window against a planet: 2 100
+    of the planet's 9 000 vertices, the boolean 0.69 -> 0.22 ms).  B's whole section where the crop seen from B's
+    origin spans more than 0.9 pi (or surrounds it)."""
+
+    def __init__(self, B):
+        self.B, self.spare, self.held = B, FACING_SPARE_RAD, None  # held: (centre, a0, a1, r, section)
+
+    def section(self, crop, rel):
+        """The section for the run ``rel`` (B body -> A body, each step) against ``crop`` (in A's frame)."""
+        P = np.vstack([apply_pose(inverse_pose(r), crop.points) for r in rel])
+        centre = math.atan2(float(P[:, 1].mean()), float(P[:, 0].mean()))
+        ang = (np.arctan2(P[:, 1], P[:, 0]) - centre + math.pi) % (2.0 * math.pi) - math.pi
+        a0, a1, r = float(ang.min()) - 0.01, float(ang.max()) + 0.01, float(norms(P).max()) + 1.0
+        if a1 - a0 > 0.9 * math.pi:
+            return self.B.section
+        h = self.held
+        if h is not None and r <= h[3]:
+            shift = (centre - h[0] + math.pi) % (2.0 * math.pi) - math.pi  # this centre from the held one's
+            if h[1] <= a0 + shift and a1 + shift <= h[2]:
+                return h[4]
+        a0, a1 = a0 - self.spare, a1 + self.spare
+        self.held = (centre, a0, a1, r, cut_to_sector(self.B.section, centre + a0, centre + a1, r))
+        return self.held[4]
 
 
 def sweep_pair_windowed(profile_a, poses_a, profile_b, poses_b, reach: float,
@@ -200,7 +240,9 @@ def sweep_pair_windowed(profile_a, poses_a, profile_b, poses_b, reach: float,
     the discs of radius ``radius_B + reach`` about B's centres, and the run is swept against that
     window.  B lies inside the window, so the overlap area is exact; the cut edges of the window lie
     at least ``reach`` from B, so every clearance below ``reach`` is exact too and a larger one is
-    reported as ``reach`` (a lower bound).  Steps are as in :func:`sweep_pair`; points are world points.
+    reported as ``reach`` (a lower bound).  Steps are as in :func:`sweep_pair`; points are world points.  The
+    intersections take B cut to the sector about its axis that faces the run's window (:class:`_Facing`: the same
+    areas and polygons, among fewer vertices).
     """
     reach = require_positive("reach", reach, "mm")
     A, B = outline(profile_a, chord_tol, max_segment), outline(profile_b, chord_tol, max_segment)
@@ -214,6 +256,7 @@ def sweep_pair_windowed(profile_a, poses_a, profile_b, poses_b, reach: float,
     area, clear = np.zeros(N), np.zeros(N)
     pa, pb = np.zeros((N, 2)), np.zeros((N, 2))
     ident = Pose()
+    facing = _Facing(B)
     k0 = 0
     while k0 < N:
         k1 = k0 + 1
@@ -227,7 +270,9 @@ def sweep_pair_windowed(profile_a, poses_a, profile_b, poses_b, reach: float,
             area[k0:k1], clear[k0:k1] = 0.0, reach
             pa[k0:k1] = pb[k0:k1] = apply_pose(Ma[k0], cB[k0:k0 + 1])[0]
         else:
-            r = sweep_pair(Outline(polys, max_segment), ident, B, rel[k0:k1], chord_tol, max_segment=max_segment)
+            crop = Outline(polys, max_segment)
+            r = sweep_pair(crop, ident, B, rel[k0:k1], chord_tol, max_segment=max_segment,
+                           section_b=lambda crop=crop, run=rel[k0:k1]: facing.section(crop, run))
             area[k0:k1] = r.overlap_area
             clear[k0:k1] = np.minimum(r.clearance, reach)
             pa[k0:k1] = move_each(Ma[k0:k1], r.point_a)  # each apply_pose(Ma[k], point[None])[0]
