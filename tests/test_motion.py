@@ -547,12 +547,13 @@ def test_windowed_sweep_equals_the_plain_sweep():
 def test_the_windowed_sweep_cuts_the_small_body_to_where_it_faces_the_window_and_gives_the_same_bits(monkeypatch,
                                                                                                      spare):
     """sweep_pair_windowed intersects each window with the small body cut to the sector about its axis that holds the
-    window over the run (sweep2d._Facing, a cut kept while it holds): every overlap area, clearance and point the same
+    window over the run (outlines.FacingCut, a cut kept while it holds): every overlap area, clearance and point the same
     floats as with the small body's whole section, on a planet pushed 0.5 mm into a ring (every step overlaps) and in
     mesh; the cuts hold fewer vertices than the planet.  A disc spinning under a plate's edge (the window's extent
     within 1e-3 rad and 0.01 mm of the overlap's) gives the same bits too, and a disc in a plate's hole (a window all
     round it) is not cut."""
     from propulsor.checks.motion import rotation_matrices, sweep2d, sweep_pair_windowed
+    from propulsor.checks.motion.outlines import FacingCut
     from propulsor.geometry.gear_outline import external_gear_profile, internal_gear_profile
     from propulsor.gears.gear_pair import GearPair
     from propulsor.gears.involute import SpurGear
@@ -566,13 +567,13 @@ def test_the_windowed_sweep_cuts_the_small_body_to_where_it_faces_the_window_and
     beta = psi * (1 - z2 / z1)
     monkeypatch.setattr(sweep2d, "FACING_SPARE_RAD", spare)
     cuts = []
-    real = sweep2d._Facing.section
+    real = FacingCut.section
 
     def n_vertices(cs):
         return sum(len(q) for q in cs.to_polygons())
 
-    def seen(self, crop, rel):
-        cs = real(self, crop, rel)
+    def seen(self, P):
+        cs = real(self, P)
         cuts.append(n_vertices(cs))
         return cs
 
@@ -580,9 +581,9 @@ def test_the_windowed_sweep_cuts_the_small_body_to_where_it_faces_the_window_and
         Mp = np.zeros((n, 2, 3))
         Mp[:, 0, 0], Mp[:, 0, 1], Mp[:, 1, 0], Mp[:, 1, 1] = np.cos(beta), -np.sin(beta), np.sin(beta), np.cos(beta)
         Mp[:, :, 2] = (pair.a_w + push) * np.column_stack([np.cos(psi), np.sin(psi)])
-        monkeypatch.setattr(sweep2d._Facing, "section", lambda self, crop, rel: self.B.section)
+        monkeypatch.setattr(FacingCut, "section", lambda self, P: self.B.section)
         a = sweep_pair_windowed(ring, Pose(0.0), planet, Mp, reach=m, chord_tol=1e-3, max_segment=0.1)
-        monkeypatch.setattr(sweep2d._Facing, "section", seen)
+        monkeypatch.setattr(FacingCut, "section", seen)
         b = sweep_pair_windowed(ring, Pose(0.0), planet, Mp, reach=m, chord_tol=1e-3, max_segment=0.1)
         for f in ("overlap_area", "clearance", "point_a", "point_b"):
             assert getattr(a, f).tobytes() == getattr(b, f).tobytes(), (push, f)
@@ -596,18 +597,18 @@ def test_the_windowed_sweep_cuts_the_small_body_to_where_it_faces_the_window_and
     disc = outline([circle_loop(10.0, (0.0, 0.0)).polyline(1e-3)], 1e-3, 0.1)
     plate = [np.array([[-30.0, 5.0], [30.0, 5.0], [30.0, 40.0], [-30.0, 40.0]])]
     turns = rotation_matrices(np.linspace(0.0, 0.3, 10), np.zeros((10, 2)))
-    monkeypatch.setattr(sweep2d._Facing, "section", lambda self, crop, rel: self.B.section)
+    monkeypatch.setattr(FacingCut, "section", lambda self, P: self.B.section)
     a = sweep_pair_windowed(plate, Pose(0.0), disc, turns, reach=0.01, chord_tol=1e-3, max_segment=0.1)
-    monkeypatch.setattr(sweep2d._Facing, "section", seen)
+    monkeypatch.setattr(FacingCut, "section", seen)
     b = sweep_pair_windowed(plate, Pose(0.0), disc, turns, reach=0.01, chord_tol=1e-3, max_segment=0.1)
     assert (a.overlap_area > 5.0).all() and a.overlap_area.tobytes() == b.overlap_area.tobytes()
     assert cuts[-1] < 0.6 * n_vertices(disc.section)
     # a window all round the disc (a plate with a square hole the disc overlaps on every side): no cut
     holed = [np.array([[-30.0, -30.0], [30.0, -30.0], [30.0, 30.0], [-30.0, 30.0]]),
              np.array([[-9.5, -9.5], [-9.5, 9.5], [9.5, 9.5], [9.5, -9.5]])]
-    monkeypatch.setattr(sweep2d._Facing, "section", lambda self, crop, rel: self.B.section)
+    monkeypatch.setattr(FacingCut, "section", lambda self, P: self.B.section)
     a = sweep_pair_windowed(holed, Pose(0.0), disc, turns, reach=0.01, chord_tol=1e-3, max_segment=0.1)
-    monkeypatch.setattr(sweep2d._Facing, "section", seen)
+    monkeypatch.setattr(FacingCut, "section", seen)
     b = sweep_pair_windowed(holed, Pose(0.0), disc, turns, reach=0.01, chord_tol=1e-3, max_segment=0.1)
     assert (a.overlap_area > 1.0).all() and a.overlap_area.tobytes() == b.overlap_area.tobytes()
     assert cuts[-1] == n_vertices(disc.section)

@@ -12,8 +12,7 @@ import numpy as np
 from ... import policy
 from ...check import Check
 from ...errors import require, require_positive
-from ...planar import norms
-from .outlines import Outline, cut_to_sector, outline
+from .outlines import FacingCut, Outline, outline
 from .poses import Pose, apply_pose, compose_poses, inverse_pose, pose_stack
 from .distance import check_record
 from .crossing import certainly_apart
@@ -195,38 +194,9 @@ def sweep_pair(profile_a, poses_a, profile_b, poses_b, chord_tol: float = policy
     return SweepResult(ang_a, ang_b, area, clear, pa, pb, clearance_limit, name)
 
 
-#: how much wider (rad) than a run needs the windowed sweep cuts the small body (the cut is kept for the runs after
-#: while it holds them)
+#: how much wider (rad) than a run needs the windowed sweep cuts the small body (:class:`.outlines.FacingCut`, kept
+#: for the runs after while it holds them)
 FACING_SPARE_RAD = 0.3
-
-
-class _Facing:
-    """B's section cut to the sector about its body frame's origin (its axis) that holds A's crop at each step of a
-    run, 1 mm and 0.01 rad more, and ``FACING_SPARE_RAD`` more again (kept for later runs while their sectors lie
-    inside it): every point B has in common with the crop lies in the crop, so the cut's edges inside B lie outside
-    it and each intersection is the one of B's whole section, bit for bit (a ring's window against a planet: 2 100
-    of the planet's 9 000 vertices, the boolean 0.69 -> 0.22 ms).  B's whole section where the crop seen from B's
-    origin spans more than 0.9 pi (or surrounds it)."""
-
-    def __init__(self, B):
-        self.B, self.spare, self.held = B, FACING_SPARE_RAD, None  # held: (centre, a0, a1, r, section)
-
-    def section(self, crop, rel):
-        """The section for the run ``rel`` (B body -> A body, each step) against ``crop`` (in A's frame)."""
-        P = np.vstack([apply_pose(inverse_pose(r), crop.points) for r in rel])
-        centre = math.atan2(float(P[:, 1].mean()), float(P[:, 0].mean()))
-        ang = (np.arctan2(P[:, 1], P[:, 0]) - centre + math.pi) % (2.0 * math.pi) - math.pi
-        a0, a1, r = float(ang.min()) - 0.01, float(ang.max()) + 0.01, float(norms(P).max()) + 1.0
-        if a1 - a0 > 0.9 * math.pi:
-            return self.B.section
-        h = self.held
-        if h is not None and r <= h[3]:
-            shift = (centre - h[0] + math.pi) % (2.0 * math.pi) - math.pi  # this centre from the held one's
-            if h[1] <= a0 + shift and a1 + shift <= h[2]:
-                return h[4]
-        a0, a1 = a0 - self.spare, a1 + self.spare
-        self.held = (centre, a0, a1, r, cut_to_sector(self.B.section, centre + a0, centre + a1, r))
-        return self.held[4]
 
 
 def sweep_pair_windowed(profile_a, poses_a, profile_b, poses_b, reach: float,
@@ -241,8 +211,8 @@ def sweep_pair_windowed(profile_a, poses_a, profile_b, poses_b, reach: float,
     window.  B lies inside the window, so the overlap area is exact; the cut edges of the window lie
     at least ``reach`` from B, so every clearance below ``reach`` is exact too and a larger one is
     reported as ``reach`` (a lower bound).  Steps are as in :func:`sweep_pair`; points are world points.  The
-    intersections take B cut to the sector about its axis that faces the run's window (:class:`_Facing`: the same
-    areas and polygons, among fewer vertices).
+    intersections take B cut to the sector about its axis that faces the run's window (:class:`.outlines.FacingCut`:
+    the same areas and polygons, among fewer vertices).
     """
     reach = require_positive("reach", reach, "mm")
     A, B = outline(profile_a, chord_tol, max_segment), outline(profile_b, chord_tol, max_segment)
@@ -256,7 +226,7 @@ def sweep_pair_windowed(profile_a, poses_a, profile_b, poses_b, reach: float,
     area, clear = np.zeros(N), np.zeros(N)
     pa, pb = np.zeros((N, 2)), np.zeros((N, 2))
     ident = Pose()
-    facing = _Facing(B)
+    facing = FacingCut(B, FACING_SPARE_RAD)
     k0 = 0
     while k0 < N:
         k1 = k0 + 1
@@ -272,7 +242,8 @@ def sweep_pair_windowed(profile_a, poses_a, profile_b, poses_b, reach: float,
         else:
             crop = Outline(polys, max_segment)
             r = sweep_pair(crop, ident, B, rel[k0:k1], chord_tol, max_segment=max_segment,
-                           section_b=lambda crop=crop, run=rel[k0:k1]: facing.section(crop, run))
+                           section_b=lambda crop=crop, run=rel[k0:k1]: facing.section(
+                               np.vstack([apply_pose(inverse_pose(r), crop.points) for r in run])))
             area[k0:k1] = r.overlap_area
             clear[k0:k1] = np.minimum(r.clearance, reach)
             pa[k0:k1] = move_each(Ma[k0:k1], r.point_a)  # each apply_pose(Ma[k], point[None])[0]
