@@ -71,7 +71,7 @@ def build_many(args, files: list[Path], budget: int, jobserver, each, placed: tu
             _gallery_once(args)
     except Interrupted as exc:
         hold_signals()
-        built = sum(c in placed for c in finished) + getattr(exc, "placed_before", 0)
+        built = sum(c in placed for c in finished) + exc.placed_before
         if built and not args.dry_run:
             page = _gallery_once(args, told=False)  # no progress line: the command line's one line says it
             exc.kept = (f"{built} of {len(files)} builds finished, their output in {args.out_dir or 'output'}/"
@@ -190,10 +190,7 @@ def side_by_side(args, files: list[Path], order: list[int], depfile, slots: int,
                 os.waitpid(pid, 0)
             except ChildProcessError:
                 pass
-            word = words.pop(pid)
-            if word.told():  # ended or stopped, not yet seen here: its output is in place
-                exc.placed_before = getattr(exc, "placed_before", 0) + 1
-            word.close()
+            words.pop(pid).count_into(exc)  # ended or stopped, not yet seen here
             if slot:  # make's token goes back to make
                 pool.give(slot)
         raise
@@ -305,8 +302,7 @@ def in_child(fn, *args, label: str | None = None) -> int:
     except Interrupted as exc:
         os.kill(pid, exc.signum)
         os.waitpid(pid, 0)
-        if word.told():  # its output was put in place before the signal stopped it
-            exc.placed_before = getattr(exc, "placed_before", 0) + 1
+        word.count_into(exc)  # its output put in place before the signal stopped it
         raise
     finally:
         word.close()
@@ -344,6 +340,12 @@ class _PlacedWord:
             return os.read(self.r, 1) == b"1"
         except (BlockingIOError, OSError):
             return False
+
+    def count_into(self, exc: Interrupted) -> None:
+        """Once the child has ended or been stopped: count it in ``exc.placed_before`` if it told; then close."""
+        if self.told():
+            exc.placed_before += 1
+        self.close()
 
     def close(self) -> None:
         if self.r >= 0:

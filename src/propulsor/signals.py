@@ -21,6 +21,8 @@ class Interrupted(BaseException):
     kept: ``kept`` (the command line's one line says it) and, in a build of several, ``placed_before`` (the builds
     whose output was in place before the batch saw them end: batch._PlacedWord)."""
 
+    placed_before = 0
+
     def __init__(self, signum: int):
         self.signum = signum
         super().__init__(signum)

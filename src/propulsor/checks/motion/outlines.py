@@ -16,8 +16,8 @@ from ...errors import InputError, require, require_positive
 from ...geometry.profile import Profile
 from ...planar import box, norms
 
-__all__ = ['Outline', 'outline', 'crop_to_sector', 'cut_to_disc', 'cut_to_sector', 'FacingCut', 'PolarEnvelope',
-           'offset_outline']
+__all__ = ['Outline', 'outline', 'crop_to_sector', 'cut_to_disc', 'cut_to_sector', 'FacingCut', 'HeldSectorCut',
+           'PolarEnvelope', 'offset_outline', 'polar_extent']
 
 
 def _signed_area(p: np.ndarray) -> float:
@@ -230,32 +230,51 @@ def cut_to_sector(section: m3d.CrossSection, a0: float, a1: float, r: float) -> 
     return section ^ m3d.CrossSection([np.ascontiguousarray(pts)], m3d.FillRule.Positive)
 
 
+def polar_extent(P: np.ndarray, centre: float) -> tuple[float, float, float]:
+    """(least, largest polar angle of points ``P`` measured from ``centre`` (rad, within +-pi), their largest
+    radius), about the frame's origin."""
+    rel = (np.arctan2(P[:, 1], P[:, 0]) - centre + math.pi) % (2.0 * math.pi) - math.pi
+    return float(rel.min()), float(rel.max()), float(norms(P).max())
+
+
+class HeldSectorCut:
+    """A section cut to a sector about its frame's origin (:func:`cut_to_sector`), the sector asked for widened by
+    ``spare_rad`` either way and ``spare_mm`` outwards, and kept (``wrap`` of the cut: the same object) for later
+    requests of the same section whose sectors lie inside it."""
+
+    def __init__(self, spare_rad: float, spare_mm: float = 0.0, wrap=lambda cs: cs):
+        self.spare_rad, self.spare_mm, self.wrap, self.held = spare_rad, spare_mm, wrap, None
+
+    def cut(self, section, centre: float, a0: float, a1: float, r: float):
+        """The cut holding the sector ``centre + a0`` .. ``centre + a1`` (rad) out to radius ``r``."""
+        h = self.held  # (section, centre, a0, a1, r, the wrapped cut)
+        if h is not None and h[0] is section and r <= h[4]:
+            shift = (centre - h[1] + math.pi) % (2.0 * math.pi) - math.pi  # this centre from the held one's
+            if h[2] <= a0 + shift and a1 + shift <= h[3]:
+                return h[5]
+        a0, a1, r = a0 - self.spare_rad, a1 + self.spare_rad, r + self.spare_mm
+        self.held = (section, centre, a0, a1, r, self.wrap(cut_to_sector(section, centre + a0, centre + a1, r)))
+        return self.held[5]
+
+
 class FacingCut:
     """A body B's section cut to the sector about its body frame's origin (its axis) that holds a region of another
-    body seen in B's frame, 1 mm and 0.01 rad more, and ``spare`` rad more again (kept for later regions while their
-    sectors lie inside it): every point B has in common with the region lies in the region, so the cut's edges
-    inside B lie outside it and each intersection with the region is the one of B's whole section, bit for bit (a
-    ring's window against a planet: 2 100 of the planet's 9 000 vertices, the boolean 0.69 -> 0.22 ms).  B's whole
-    section where the region seen from B's origin spans more than 0.9 pi (or surrounds it)."""
+    body seen in B's frame, 1 mm and 0.01 rad more, and ``spare`` rad more again (:class:`HeldSectorCut`, kept for
+    later regions while their sectors lie inside it): every point B has in common with the region lies in the
+    region, so the cut's edges inside B lie outside it and each intersection with the region is the one of B's whole
+    section, bit for bit (a ring's window against a planet: 2 100 of the planet's 9 000 vertices, the boolean 0.69 ->
+    0.22 ms).  B's whole section where the region seen from B's origin spans more than 0.9 pi (or surrounds it)."""
 
     def __init__(self, B, spare: float):
-        self.B, self.spare, self.held = B, spare, None  # held: (centre, a0, a1, r, section)
+        self.B, self.sector = B, HeldSectorCut(spare)
 
     def section(self, P: np.ndarray):
         """The section for a region whose boundary's vertices, in B's frame, are ``P`` (n, 2)."""
         centre = math.atan2(float(P[:, 1].mean()), float(P[:, 0].mean()))
-        ang = (np.arctan2(P[:, 1], P[:, 0]) - centre + math.pi) % (2.0 * math.pi) - math.pi
-        a0, a1, r = float(ang.min()) - 0.01, float(ang.max()) + 0.01, float(norms(P).max()) + 1.0
-        if a1 - a0 > 0.9 * math.pi:
+        a0, a1, r = polar_extent(P, centre)
+        if a1 - a0 + 0.02 > 0.9 * math.pi:
             return self.B.section
-        h = self.held
-        if h is not None and r <= h[3]:
-            shift = (centre - h[0] + math.pi) % (2.0 * math.pi) - math.pi  # this centre from the held one's
-            if h[1] <= a0 + shift and a1 + shift <= h[2]:
-                return h[4]
-        a0, a1 = a0 - self.spare, a1 + self.spare
-        self.held = (centre, a0, a1, r, cut_to_sector(self.B.section, centre + a0, centre + a1, r))
-        return self.held[4]
+        return self.sector.cut(self.B.section, centre, a0 - 0.01, a1 + 0.01, r + 1.0)
 
 
 def offset_outline(o: Outline, inward: float, shift=(0.0, 0.0)) -> Outline:

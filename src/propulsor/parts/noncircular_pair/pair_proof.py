@@ -31,7 +31,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...checks.motion import PolarEnvelope, crop_to_sector, cut_to_disc, cut_to_sector, outline, transmission_sweep
+from ...checks.motion import PolarEnvelope, crop_to_sector, cut_to_disc, outline, transmission_sweep
+from ...checks.motion.outlines import HeldSectorCut, polar_extent
 from ... import policy
 from ...planar import norms
 
@@ -265,12 +266,6 @@ class _LensCrops:
         return self.drv[4], self.dvn[4]
 
 
-def _polar_extent(P: np.ndarray, centre: float) -> tuple[float, float, float]:
-    """(least, largest polar angle measured from ``centre`` (rad, within +-pi), largest radius) of points."""
-    rel = (np.arctan2(P[:, 1], P[:, 0]) - centre + math.pi) % (2.0 * math.pi) - math.pi
-    return float(rel.min()), float(rel.max()), float(norms(P).max())
-
-
 class _MeetCrops:
     """The two crops a least-overlap search (:func:`_least_overlap`) intersects, cut down to where the bodies can meet
     at any driven offset of the span asked (the warm search's quarter span, or the whole).
@@ -289,21 +284,13 @@ class _MeetCrops:
 
     def __init__(self, drv, dvn, L: float, reach: float, r_dvn: float, spare: float = 1.0,
                  spare_rad: float = 0.03):
-        self.L, self.spare, self.spare_rad = L, spare, spare_rad
+        self.L, self.spare = L, spare
         self.env_drv = PolarEnvelope(drv)
         self.dvn_body = dvn
         #: the driven wheel's envelopes by the half span they are widened for (+ 1e-3 rad), made when first asked
         self.envelopes: dict[float, PolarEnvelope] = {}
         self.lens = _LensCrops(L, reach, r_dvn, spare)
-        self.drv = self.dvn = None  # (source crop, centre, a0, a1, r, the cut)
-
-    def _cut(self, held, src, centre: float, a0: float, a1: float, r: float):
-        if held is not None and held[0] is src and r <= held[4]:
-            shift = (centre - held[1] + math.pi) % (2.0 * math.pi) - math.pi  # this centre from the held one's
-            if held[2] <= a0 + shift and a1 + shift <= held[3]:
-                return held
-        a0, a1, r = a0 - self.spare_rad, a1 + self.spare_rad, r + self.spare
-        return (src, centre, a0, a1, r, _Cut(cut_to_sector(src.section, centre + a0, centre + a1, r)))
+        self.drv, self.dvn = (HeldSectorCut(spare_rad, spare, _Cut) for _ in range(2))
 
     def at(self, dcrop, crop, p_mid: float, theta: float, half: float):
         """(driver cut, driven cut) for the driver at ``theta`` and the driven wheel within ``p_mid`` +- ``half``."""
@@ -319,16 +306,15 @@ class _MeetCrops:
         if not len(Z):
             return self.lens.at(dcrop, crop, p_mid, theta, half)
         V = np.vstack([np.asarray(z, float) for z in Z])
-        b0, b1, rd = _polar_extent(V, math.pi - theta)
+        b0, b1, rd = polar_extent(V, math.pi - theta)
         # Z in the driven frame at the middle offset: x_dvn = R^T (x_drv - t)
         W = (V - M[:, 2]) @ M[:, :2]
-        g0, g1, rv = _polar_extent(W, p_mid)
+        g0, g1, rv = polar_extent(W, p_mid)
         if b1 - b0 > 0.5 * math.pi or g1 - g0 > 0.5 * math.pi:
             return self.lens.at(dcrop, crop, p_mid, theta, half)
         w = half + 1e-3
-        self.drv = self._cut(self.drv, dcrop, math.pi - theta, b0 - 1e-3, b1 + 1e-3, rd + 1.0)
-        self.dvn = self._cut(self.dvn, crop, p_mid, g0 - w, g1 + w, rv + 1.0)
-        return self.drv[5], self.dvn[5]
+        return (self.drv.cut(dcrop.section, math.pi - theta, b0 - 1e-3, b1 + 1e-3, rd + 1.0),
+                self.dvn.cut(crop.section, p_mid, g0 - w, g1 + w, rv + 1.0))
 
 
 class _Cut:
