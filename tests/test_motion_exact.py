@@ -1891,21 +1891,21 @@ def test_grid_levels_are_cached_and_three_times_coarser():
     g0, g1 = nz.grid_of(o), nz.grid_of(o, 1)
     assert nz.grid_of(o, 0) is g0 and nz.grid_of(o, 1) is g1 and g1 is not g0
     assert g0.h == 4.0 and g1.h == 12.0 and sorted(o._vertex_grids) == [0, 1]
-    # the level: the coarsest whose side is at most half the distance (2 h0 = 8 mm), never above MAX_LEVEL; one
-    # coarser where its FAR_CELLS (3) cells are less than 1.25 times the distance (9.5 mm: 12 < 11.875 no; 10 mm:
-    # 12 < 12.5, level 1; 24 - 1e-9: level 0's 12 < 30, level 1; 30 mm: level 1's 36 < 37.5, level 2)
-    ds = (1.0, 8.0, 9.5, 10.0, 8.0 * 3 - 1e-9, 24.0, 30.0, 8.0 * 9.5, 8.0 * 27 * 1.01, 8.0 * 3 ** 6)
+    # the level: the coarsest whose side is at most a quarter of the distance (4 h0 = 16 mm), never above MAX_LEVEL;
+    # one coarser where its FAR_CELLS (6) cells are less than 1.25 times the distance (19 mm: 24 < 23.75 no; 20 mm:
+    # 24 < 25, level 1; 48 - 1e-9: level 0's 24 < 60, level 1; 48 mm: level 1's 72 < 60 no; 60 mm: 72 < 75, level 2)
+    ds = (1.0, 16.0, 19.0, 20.0, 16.0 * 3 - 1e-9, 48.0, 60.0, 16.0 * 9.5, 16.0 * 27 * 1.01, 16.0 * 3 ** 6)
     assert [nz._level_for(o, d) for d in ds] == [0, 0, 0, 1, 1, 1, 2, 2, 3, 4]
-    assert nz.FAR_CELLS == 3.0 and nz.MAX_LEVEL == 4
-    # a fine grid (h0 = 0.04 mm): 1 mm is 12.5 times 2 h0, level 2, whose 3 cells (1.08 mm) fall short of 1.25: 3
+    assert nz.FAR_CELLS == 6.0 and nz.MAX_LEVEL == 4
+    # a fine grid (h0 = 0.04 mm): 1 mm is 6.25 times 4 h0, level 1, whose 6 cells (0.72 mm) fall short of 1.25: 2
     fine = Outline([_rect(0, 0, 1, 1)], 0.005)
-    assert nz.grid_of(fine).h == pytest.approx(0.04, abs=1e-15) and nz._level_for(fine, 1.0) == 3
+    assert nz.grid_of(fine).h == pytest.approx(0.04, abs=1e-15) and nz._level_for(fine, 1.0) == 2
 
 
 def test_bodies_a_few_cells_apart_are_searched_in_a_grid_after_the_first_step(monkeypatch):
-    """16 mm apart (h0 = 4 mm: more than the 3 cells of level 0, the level half the distance asks for): the first
-    search is the KD-tree's, the next four run in level 1's grid (before, each was the tree's again), each distance
-    the tree's to the bit."""
+    """30 mm apart (h0 = 4 mm: more than the 6 cells of level 0, the level a quarter of the distance asks for): the
+    first search is the KD-tree's, the next four run in level 1's grid (before, each was the tree's again), each
+    distance the tree's to the bit."""
     calls = []
     tree = dz.min_dist_points_to
 
@@ -1917,9 +1917,9 @@ def test_bodies_a_few_cells_apart_are_searched_in_a_grid_after_the_first_step(mo
     tgt = Outline([SQUARE10], 0.5)
     src = Outline([_rect(0, 0, 1, 1)], 0.5)
     for k in range(5):
-        P = src.points + (26.0 + 0.1 * k, 4.0 + 0.2 * k)
+        P = src.points + (40.0 + 0.1 * k, 4.0 + 0.2 * k)
         d, i, q = nz.nearest_edge(P, tgt, src)
-        assert (d, i) == tree(P, tgt, src)[:2] and d == pytest.approx(16.0 + 0.1 * k, abs=1e-12)
+        assert (d, i) == tree(P, tgt, src)[:2] and d == pytest.approx(30.0 + 0.1 * k, abs=1e-12)
     assert len(calls) == 1 and sorted(tgt._vertex_grids) == [0, 1]
 
 
@@ -1946,7 +1946,7 @@ def test_nearest_edge_remembers_the_distance_for_the_next_grid():
     assert d == pytest.approx(30.0, abs=1e-12) and tgt._nearest_hints == {id(src): d}
     assert sorted(tgt._vertex_grids) == [0]
     d2, _, _ = nz.nearest_edge(P, tgt, src)
-    assert d2 == d and sorted(tgt._vertex_grids) == [0, nz._level_for(tgt, 30.0)] == [0, 2]
+    assert d2 == d and sorted(tgt._vertex_grids) == [0, nz._level_for(tgt, 30.0)] == [0, 1]
     # near (2.5 mm: the grid's own answer), the hint follows
     d3, _, _ = nz.nearest_edge(src.points + (12.5, 4.0), tgt, src)
     assert d3 == pytest.approx(2.5, abs=1e-12) and tgt._nearest_hints == {id(src): d3}

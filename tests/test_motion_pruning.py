@@ -317,3 +317,92 @@ def test_each_points_distance_is_the_least_over_every_edge_bit_for_bit():
         assert got.tobytes() == d.reshape(len(P), m).min(axis=1).tobytes()
         assert got.tobytes() == distance.dist_each_point(P, tgt).tobytes()  # the reference's own search too
     assert nearest.dist_each(mids[:1], plate).tolist() == [0.5] and nearest.dist_each(np.empty((0, 2)), plate).size == 0
+
+
+def _circle(r: float, n: int, centre=(0.0, 0.0), phase: float = 0.0) -> np.ndarray:
+    a = phase + np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)
+    return np.column_stack([centre[0] + r * np.cos(a), centre[1] + r * np.sin(a)])
+
+
+def test_a_pin_turning_in_a_bore_gives_the_reference_at_every_level(monkeypatch):
+    """A pin (Ø 55, 370 vertices) turning in a gear's bore (Ø 110, 520 vertices; a final drive's planet on its pin):
+    every vertex of either body is about equally near the other (27.5 mm), so the searches' rings and discs reach far
+    and the cells they skip (those wholly beyond the best distance found, or the reach of the second pass) decide
+    nearly every answer.  Both ways, at every grid level: the reference's distance, point and foot, bit for bit."""
+    planet = Outline([_star(30, 72.0, 78.0, 3000), _circle(55.0, 520)[::-1]], 0.1)
+    pin = Outline([_circle(27.5, 370, (0.013, -0.021), 0.1)], 0.1)
+    n = 0
+    for ang in np.radians([0.0, 0.37, 11.0, 97.3]):
+        M = Pose(float(ang), (0.013, -0.021), (0.0, 0.0)).matrix()
+        M_back = Pose(-float(ang), (0.013, -0.021), (0.0, 0.0)).matrix()
+        P_pin, P_planet = apply_pose(M, pin.points), apply_pose(M_back, planet.points)
+        for tgt, src, P in ((planet, pin, P_pin), (pin, planet, P_planet)):
+            want = distance.min_dist_points_to(P, tgt)
+            assert 27.4 < want[0] < 27.6
+            for level in range(nearest.MAX_LEVEL + 1):
+                monkeypatch.setattr(nearest, "_level_for", lambda o, d, level=level: level)
+                got = nearest_edge(P, tgt, src)
+                assert _same(got, want), (math.degrees(ang), level, got, want)
+                n += 1
+            monkeypatch.undo()
+    assert n == 4 * 2 * (nearest.MAX_LEVEL + 1)
+
+
+def test_an_edge_far_longer_than_the_cells_found_from_an_end_beyond_the_nearest_vertex(monkeypatch):
+    """A long edge (100 mm) under a wavy top of 0.1 mm edges (cells of about 1.6 mm): below its middle the nearest
+    vertex is one of the top's, 4 mm off, the nearest edge the long one, 1 mm off, whose ends are 10 and 90 mm away:
+    the second pass reaches them (the cells within the nearest vertex's distance plus half the longest edge), at every
+    grid level, in either direction of the loop: the reference's answer, bit for bit."""
+    x = np.linspace(100.0, 0.0, 1001)
+    top = np.column_stack([x, 3.0 + 0.2 * np.sin(x)])
+    base = np.vstack([[[0.0, 0.0], [100.0, 0.0]], top])
+    for loop in (base, base[::-1]):
+        tgt = Outline([loop], 1000.0)
+        for pt in ((50.0, -1.0), (10.0, -1.0), (90.0, -1.0)):
+            src = Outline([np.array(pt) + np.array([[0.0, 0.0], [0.3, -0.2], [-0.3, -0.2]])], 1000.0)
+            want = distance.min_dist_points_to(src.points, tgt)
+            assert want[0] == pytest.approx(1.0)
+            for level in range(nearest.MAX_LEVEL + 1):
+                monkeypatch.setattr(nearest, "_level_for", lambda o, d, level=level: level)
+                assert _same(nearest_edge(src.points, tgt, src), want), (pt, level)
+            monkeypatch.undo()
+    assert grid_of(Outline([base], 1000.0)).h < 2.0
+
+
+def test_the_nearest_vertex_searchs_lower_bound_never_exceeds_the_distance():
+    """``nearest._nearest_vertex_low``'s second value (what a search remembers of a point: no vertex nearer) is at most
+    the least distance over every vertex, and that distance itself where it lies within the bound: on a grid of a few
+    cells (whose rings a search exhausts before any is farther than the bound) and on a fine one, at bounds from 0 to
+    inf, for points inside, near and far."""
+    rng = np.random.default_rng(5)
+    for o in (Outline([_rect(0.0, 0.0, 8.0, 5.0)], 1000.0), Outline([_star(12, 20.0, 23.0), _circle(6.0, 200)[::-1]],
+                                                                      0.1)):
+        g = grid_of(o)
+        V = o.points
+        P = np.vstack([rng.uniform(-30.0, 30.0, (300, 2)), V[rng.integers(0, len(V), 50)] + rng.normal(0, 0.1, (50, 2)),
+                       rng.uniform(-300.0, 300.0, (50, 2))])
+        for px, py in P:
+            exact = float(np.min(np.sqrt((px - V[:, 0]) ** 2 + (py - V[:, 1]) ** 2)))
+            for bound in (0.0, 0.3, 2.0, 0.5 * exact, exact, 2.0 * exact, np.inf):
+                d, low = nearest._nearest_vertex_low(px, py, V, g.origin[0], g.origin[1], g.h, g.nx, g.ny, g.start,
+                                                     g.items, bound)
+                assert low <= exact, (px, py, bound, low, exact)
+                assert d == (exact if exact <= bound else np.inf)
+
+
+@pytest.mark.parametrize("nearer_by", [5e-4, 5e-10])
+def test_a_vertex_on_its_cells_border_just_nearer_than_the_best_found_so_far(nearer_by):
+    """Cells of 4 mm: the point (7.7, 4) finds a vertex of its own cell 0.3 mm + `nearer_by` off first, then the ring
+    about it holds the cell whose corner is a vertex 0.3 mm off, the cell's box as near as the vertex: the search skips
+    a cell only where its box (widened by the rounding's margin) lies beyond the best found, so it takes that vertex."""
+    from propulsor.checks.motion.nearest import VertexGrid
+
+    px, py = 7.7, 4.0
+    V = np.array([[0.0, 0.0], [8.0, 4.0], [px - 0.3 - nearer_by, 4.0], [20.0, 20.0]])
+    g = VertexGrid(V, np.roll(V, -1, axis=0), np.full(len(V), 0.5))
+    assert g.h == 4.0 and tuple(g.origin) == (0.0, 0.0)
+    exact = float(np.min(np.sqrt((px - V[:, 0]) ** 2 + (py - V[:, 1]) ** 2)))
+    assert exact == 8.0 - px
+    d, low = nearest._nearest_vertex_low(px, py, V, g.origin[0], g.origin[1], g.h, g.nx, g.ny, g.start, g.items,
+                                         np.inf)
+    assert d == exact and low == exact
