@@ -25,6 +25,14 @@ so every step went to the tree.  ``nearest._level_for`` now takes one level coar
 2026-12-02 (2 cores; parts/cam_mover.toml's sweeps in one process, their 4 313 apart steps replayed, both nearest-edge
 searches a step timed alone, in turn, three rounds): the body of more vertices searched only for an answer within the
 other way's (``nearest.nearest_edge``'s cap) 0.74 / 0.74 / 0.72 -> 0.54 / 0.56 / 0.53 s; the same answers.
+
+2026-12-05 (2 cores; the session's start 1a90ed6 in a worktree against 284ac06, in turn, three runs each): the nearest
+searches skip the grid cells wholly beyond what they look for (``nearest._cell_beyond``) and take cells of a quarter of
+the distance (FAR_CELLS 6): cam_mover's motion proofs 0.96 -> 0.57 -> 0.54 CPU s, cam_linear's 0.97 -> 0.58 (their
+results identical, sha256); the final drive's pin sweep (bore 110, pin 55: every vertex 27.5 mm from the other body)
+1.33 -> 0.98 -> 0.89; the carrier sweep 2.53 -> 2.52 (near mesh: level 0); the seed-002 contact given the same cut:
+0.63-0.68 both ways, no gain, not kept.  make from clean: 62.3 s (115.7 + 4.5 CPU s, gauge 1.70) against 64.6 s (117.8
++ 5.9) at the session's start (gauge 1.68); its 636 files identical to bench/hashes/all_19_make_at_9ac9bbf.sha256.
 """
 
 from __future__ import annotations
