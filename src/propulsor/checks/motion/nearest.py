@@ -171,7 +171,7 @@ def _nearest_vertex_low(px, py, V, ox, oy, h, nx, ny, start, items, bound):
             step = 1 if (ix == cx - r or ix == cx + r) else 2 * r
             iy = cy - r
             while iy <= cy + r:
-                if 0 <= iy < ny and not (best < np.inf and _cell_beyond(px, py, ix, iy, ox, oy, h, best)):
+                if 0 <= iy < ny and not _cell_beyond(px, py, ix, iy, ox, oy, h, best):
                     c = ix * ny + iy
                     for k in range(start[c], start[c + 1]):
                         v = items[k]
