@@ -48,6 +48,7 @@ def build_many(args, files: list[Path], budget: int, jobserver, each, placed: tu
     A signal: the gallery written for the builds in place and the command line's one line told of them
     (``Interrupted.kept``), then raised on."""
     from .parallel import can_fork
+    from .parts import solid_cache
     from .render import Renderer
 
     def depfile(part_file):
@@ -61,12 +62,14 @@ def build_many(args, files: list[Path], budget: int, jobserver, each, placed: tu
             with off_then_frozen():  # the part types' modules the estimates import, frozen with the rest
                 preload()
                 order = longest_first(files, render) if apart else None
-            if apart:
-                side_by_side(args, files, order, depfile, budget, each, jobserver, progress=render, finished=finished)
-            else:
-                render.close()
-                for f in files:
-                    finished.append(in_child(each, args, f, depfile(f), label=str(f)))
+            with solid_cache.batch_scope():  # a solid two builds share: written and checked once
+                if apart:
+                    side_by_side(args, files, order, depfile, budget, each, jobserver, progress=render,
+                                 finished=finished)
+                else:
+                    render.close()
+                    for f in files:
+                        finished.append(in_child(each, args, f, depfile(f), label=str(f)))
         if not args.dry_run and any(c in placed for c in finished):
             _gallery_once(args)
     except Interrupted as exc:

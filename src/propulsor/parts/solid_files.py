@@ -15,7 +15,7 @@ from ..parallel import threads_ok
 VIEWS = "views"
 
 
-def solid_files_and_checks(folder: str, name: str, solid, expected_genus, volume: float, forked: bool):
+def solid_files_and_checks(folder: str, name: str, solid, expected_genus, volume: float, forked: bool, key=None):
     """STEP, STL and 3MF of one solid in `folder`, its isometric picture ``views/<name>.png``, and every
     shared check on them; returns (list of Check, (vertices, faces) of the mesh, for the assemblies).
 
@@ -23,20 +23,33 @@ def solid_files_and_checks(folder: str, name: str, solid, expected_genus, volume
     within the chord tolerance, mesh validity (closed, oriented, one body, genus, no
     self-intersection, volume against the B-rep).  The two halves, :func:`solid_step_and_checks` and
     :func:`solid_mesh_and_checks`, are independent: the writer runs them in two workers at once."""
-    checks = solid_step_and_checks(folder, name, solid, volume)
-    mesh_checks, mesh = solid_mesh_and_checks(folder, name, solid, expected_genus, volume, forked)
+    checks = solid_step_and_checks(folder, name, solid, volume, key)
+    mesh_checks, mesh = solid_mesh_and_checks(folder, name, solid, expected_genus, volume, forked, key)
     return checks + mesh_checks, mesh
 
 
-def solid_step_and_checks(folder: str, name: str, solid, volume: float | None = None) -> list:
+def solid_step_and_checks(folder: str, name: str, solid, volume: float | None = None, key=None) -> list:
     """The B-rep checks of one solid, its STEP file and the STEP round trip; returns the checks.  ``volume``: the
     solid's B-rep volume (mm^3) when the caller has it (the writer's, of the same B-rep: a forked worker's copy is
-    OCCT's binary form of it, the same surfaces to the bit); else computed here."""
+    OCCT's binary form of it, the same surfaces to the bit); else computed here.  ``key``: the solid's in its
+    batch (:func:`.solid_cache.solid_key`): the file and checks of the same solid from another build of the batch
+    are taken where it has made them, and this one's kept for the others."""
+    from . import solid_cache
+
+    files = (f"{name}.step",)
+    kept = solid_cache.fetch(key, "step", folder, files)
+    if kept is not None:
+        return kept
+    checks = _step_and_checks(Path(folder), name, solid, volume)
+    solid_cache.store(key, "step", folder, files, checks)
+    return checks
+
+
+def _step_and_checks(folder: Path, name: str, solid, volume: float | None) -> list:
     from ..checks.brep import brep_checks, step_roundtrip_check
     from ..export.step import write_step
     from ..solids.kernel import volume as kernel_volume
 
-    folder = Path(folder)
     # the exact-vs-triangulated volume cross-check is made on the exported mesh itself
     v = kernel_volume(solid) if volume is None else float(volume)  # the B-rep check and the STEP round trip
     checks = list(brep_checks(solid, name, cross_check_volume=False, volume_mm3=v))
@@ -46,16 +59,30 @@ def solid_step_and_checks(folder: str, name: str, solid, volume: float | None = 
     return checks
 
 
-def solid_mesh_and_checks(folder: str, name: str, solid, expected_genus, volume: float, forked: bool):
+def solid_mesh_and_checks(folder: str, name: str, solid, expected_genus, volume: float, forked: bool, key=None):
     """STL and 3MF of one solid, the mesh checks and ``views/<name>.png``; returns (list of Check,
-    (vertices, faces) of the mesh)."""
+    (vertices, faces) of the mesh).  ``key``: as :func:`solid_step_and_checks` takes it (a mesh made in threads
+    kept apart from one made in one)."""
+    from . import solid_cache
+
+    # OCCT's mesher threads only in a build allowed more than one process and not in a forked worker
+    parallel = bool(not forked and threads_ok())
+    files = (f"{name}.stl", f"{name}.3mf", f"{VIEWS}/{name}.png")
+    half = f"mesh-{int(parallel)}"
+    kept = solid_cache.fetch(key, half, folder, files)
+    if kept is not None:
+        return kept
+    got = _mesh_and_checks(Path(folder), name, solid, expected_genus, volume, parallel)
+    solid_cache.store(key, half, folder, files, got)
+    return got
+
+
+def _mesh_and_checks(folder: Path, name: str, solid, expected_genus, volume: float, parallel: bool):
     from ..checks.mesh import mesh_checks
     from ..export.mesh import tessellate, write_3mf, write_stl
     from ..export.render import palette_colour, render_iso
 
-    folder = Path(folder)
-    # OCCT's mesher threads only in a build allowed more than one process and not in a forked worker
-    mesh = tessellate(solid, parallel=not forked and threads_ok())
+    mesh = tessellate(solid, parallel=parallel)
     write_stl(mesh, folder / f"{name}.stl")
     write_3mf(mesh, folder / f"{name}.3mf", name)
     checks = mesh_checks(mesh, name, expected_genus=expected_genus, brep_volume=volume)

@@ -34,6 +34,7 @@ from ..export.report import md_text, unit_from_name  # noqa: F401  (unit_from_na
 from ..parallel import fork_pool, inline
 from ..params import applying_inputs, read_part_meta
 from ..write_root import prepare
+from .solid_cache import solid_key
 from .solid_files import (VIEWS, _import_solid_work, assembly_glb, assembly_model, assembly_picture,  # noqa: F401
                           mesh_of, solid_files_and_checks, solid_mesh_and_checks, solid_step_and_checks)
 
@@ -164,13 +165,14 @@ class OutputWriter:
         self.progress(f"{name}: STEP, STL, 3MF and their checks (B-rep, STEP round trip, mesh)")
         pool = self._solid_pool()
         folder = str(self.folder)
+        key = solid_key(solid, name, expected_genus, volume)  # the same solid of another build of the batch
         if pool is None:  # in this process: the STEP and its checks, then the mesh (one copy of the solid)
             self._solid_jobs.append((name, inline(solid_files_and_checks, folder, name, solid, expected_genus,
-                                                  volume, False)))
+                                                  volume, False, key)))
             return rec
         # two jobs, the longer (the mesh) first: the two workers share one large solid's work
-        mesh_job = pool.submit(solid_mesh_and_checks, folder, name, solid, expected_genus, volume, True)
-        step_job = pool.submit(solid_step_and_checks, folder, name, solid, volume)
+        mesh_job = pool.submit(solid_mesh_and_checks, folder, name, solid, expected_genus, volume, True, key)
+        step_job = pool.submit(solid_step_and_checks, folder, name, solid, volume, key)
         self._solid_jobs.append((name, _Joined(step_job, mesh_job)))
         return rec
 
