@@ -153,6 +153,11 @@ def test_the_frames_text_is_pillows_pixel_for_pixel():
     for line in ("_ ", " _", "__ ", "a_ ", "x", "/l", "φ = 1", "-"):
         assert _drawn(line, (10, 10), True) == _drawn(line, (10, 10), False), line
     assert _drawn("a/l", (10.5, 10), True) == _drawn("a/l", (10.5, 10), False)  # off the pixel grid: Pillow's
+    # a line drawn again elsewhere is set from the mask of its first drawing, moved: still Pillow's pixels
+    for line in ("x/0.100 mm", "phi, deg (grey: exact law)", "/a"):
+        for xy in ((3, 20), (250, 7), (-4, 40), (600, -3), (3, 20)):
+            assert _drawn(line, xy, True) == _drawn(line, xy, False), (line, xy)
+    assert A._text_mask("x/0.100 mm") is A._text_mask("x/0.100 mm")
 
 
 def test_the_captions_lengths_are_pillows():
