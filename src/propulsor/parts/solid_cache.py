@@ -108,7 +108,7 @@ def store(key, half: str, folder: str | Path, files: tuple[str, ...], result) ->
         for rel in files:
             dst = tmp / rel
             dst.parent.mkdir(parents=True, exist_ok=True)
-            shutil.copyfile(Path(folder) / rel, dst)
+            _link_or_copy(Path(folder) / rel, dst)
         (tmp / "result.pickle").write_bytes(pickle.dumps(result, protocol=pickle.HIGHEST_PROTOCOL))
         os.rename(tmp, _entry(key, half))  # whole or not at all; another build's first: this one dropped
         tmp = None
@@ -117,3 +117,13 @@ def store(key, half: str, folder: str | Path, files: tuple[str, ...], result) ->
     finally:
         if tmp is not None:
             shutil.rmtree(tmp, ignore_errors=True)
+
+
+def _link_or_copy(src: Path, dst: Path) -> None:
+    """``dst`` made the file ``src`` is: a hard link where both lie on one file system (no data copied: most solids
+    are kept for no other build), else a copy.  A build's file is complete when its job has made it and is not
+    written again (a taking build gets a copy of it, never a link: two builds' outputs share no file)."""
+    try:
+        os.link(src, dst, follow_symlinks=False)
+    except OSError:
+        shutil.copyfile(src, dst)
