@@ -78,6 +78,20 @@ py-spy over a whole make: ``_overlap_at``'s own share 4.0 -> 2.8 %.  Looked at a
 and the proofs' overlapping sweep steps take one boolean a pose (no cut reused over evaluations: a cut would cost what
 it saves); glibc's malloc thresholds (mmap 32 MiB, trim 256 MiB, top pad 64 MiB) for one pair's build: faults 320 000
 -> 284 000, CPU within the spread.
+
+2026-12-05, a third session (2 cores; from 59c33e7; gauge, bench_variant.py's least, 1.65-1.71).  make from clean at
+the start: 63.7 s wall (115.8 + 6.2 CPU s).  The four cam part files share their carrier, leg and roller and the two
+final drives their carrier and sun, byte for byte (sha256 of their STEP): eleven solids whose files and checks each
+build made again (the cam's carrier alone 1.13 CPU s of files and checks, the final drive's carrier 0.57, its sun
+0.41).  Now the batch keeps each solid's two halves (its STEP and checks; its STL, 3MF, picture, mesh checks and
+arrays) under a digest of its binary B-rep, name, genus and volume, and a later build's job takes them
+(``parts/solid_cache.py``): 20 halves taken in make (every shared one but the final drives' carrier mesh, made by both
+at once).  make from clean: 60.6 / 60.8 / 61.6 / 59.9 s wall (110.1-113.1 user + 4.7-5.6 sys) at gauge 1.66-1.71;
+with the halves kept by hard links instead of copies, 59.5 / 59.5 s (109.3 / 109.2 user + 4.4 / 4.7 sys) at 1.66-1.69;
+the 636 files identical to bench/hashes/all_19_make_at_9ac9bbf.sha256 after each.  What is left idle (/proc/stat,
+0.1 s samples): 2.4 core-s in the first 2.3 s (the batch's imports: OCP's 0.54 s and the others hold the interpreter's
+lock, so a thread importing beside them gains nothing, 1.62-1.74 s either way) and 1.4 in the last 1.5 s (the road
+wheel alone, then the gallery).  Also the animations' repeated text lines from one mask each (bench_animation.py).
 """
 
 from __future__ import annotations
