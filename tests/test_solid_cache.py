@@ -107,6 +107,11 @@ def test_an_entry_is_whole_or_absent(tmp_path, monkeypatch):
         (tmp_path / "a.step").write_bytes(b"x")
         solid_cache.store(key, "step", tmp_path, ("a.step", "missing.stl"), ["checks"])  # a file it cannot copy
         assert os.listdir(root) == [] and solid_cache.fetch(key, "step", tmp_path / "b", ("a.step",)) is None
+        secret = tmp_path / "secret"
+        secret.write_bytes(b"not a build's file")
+        (tmp_path / "link.step").symlink_to(secret)
+        solid_cache.store(key, "step", tmp_path, ("link.step",), ["checks"])  # a link is not kept
+        assert os.listdir(root) == []
         solid_cache.store(key, "step", tmp_path, ("a.step",), ["checks"])
         solid_cache.store(key, "step", tmp_path, ("a.step",), ["other"])  # a second build's: the first kept
         assert len(os.listdir(root)) == 1

@@ -102,6 +102,8 @@ def store(key, half: str, folder: str | Path, files: tuple[str, ...], result) ->
     cannot be written."""
     if key is None or _entry(key, half).exists():
         return
+    if not all(os.path.isfile(p) and not os.path.islink(p) for p in (Path(folder) / rel for rel in files)):
+        return  # only the regular files a job wrote are kept (a link would be followed by the taking build's copy)
     tmp = None
     try:
         tmp = Path(tempfile.mkdtemp(prefix=".part-", dir=key[0]))
