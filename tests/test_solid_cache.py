@@ -168,3 +168,20 @@ def test_no_temporary_folder_or_no_room_means_each_build_makes_its_own(tmp_path,
             got = _made(tmp_path / "c", _hub())  # the entries there but not copied: made afresh
     assert counted == {"step": 3, "mesh": 3} and all(c.passed for c in got[0])
     assert _files(tmp_path / "c", "hub") == _files(tmp_path / "a", "hub")
+
+
+def test_a_half_is_kept_by_a_link_or_across_file_systems_by_a_copy(tmp_path, monkeypatch):
+    (tmp_path / "a.step").write_bytes(b"solid")
+    for linked in (True, False):
+        with solid_cache.batch_scope() as root:
+            key = solid_cache.solid_key(_hub(), "hub", 1, 1.0)
+            if not linked:
+                def other_device(*a, **k):
+                    raise OSError(18, "Invalid cross-device link")
+
+                monkeypatch.setattr(os, "link", other_device)
+            solid_cache.store(key, "step", tmp_path, ("a.step",), ["checks"])
+            kept = Path(root) / f"{key[1]}-step" / "a.step"
+            assert kept.read_bytes() == b"solid" and os.path.samefile(kept, tmp_path / "a.step") == linked
+            assert solid_cache.fetch(key, "step", tmp_path / "b", ("a.step",)) == ["checks"]
+            assert not os.path.samefile(tmp_path / "b" / "a.step", tmp_path / "a.step")  # a taker gets a copy
