@@ -82,8 +82,9 @@ it saves); glibc's malloc thresholds (mmap 32 MiB, trim 256 MiB, top pad 64 MiB)
 2026-12-05, a third session (2 cores; from 59c33e7; gauge, bench_variant.py's least, 1.65-1.71).  make from clean at
 the start: 63.7 s wall (115.8 + 6.2 CPU s).  The four cam part files share their carrier, leg and roller and the two
 final drives their carrier and sun, byte for byte (sha256 of their STEP): eleven solids whose files and checks each
-build made again (the cam's carrier alone 1.13 CPU s of files and checks, the final drive's carrier 0.57, its sun
-0.41).  Now the batch keeps each solid's two halves (its STEP and checks; its STL, 3MF, picture, mesh checks and
+build made again (in a build's forked worker, the batch's modules loaded: the final drive's carrier 0.57 CPU s, its
+sun 0.43, the cam's carrier 0.20, leg 0.08, roller 0.09 a build; 2.1 s in all.  A first measurement in a fresh
+process had put the cam's carrier at 1.13 s: its first mesh check loaded the compiled kernels).  Now the batch keeps each solid's two halves (its STEP and checks; its STL, 3MF, picture, mesh checks and
 arrays) under a digest of its binary B-rep, name, genus and volume, and a later build's job takes them
 (``parts/solid_cache.py``): 20 halves taken in make (every shared one but the final drives' carrier mesh, made by both
 at once).  make from clean: 60.6 / 60.8 / 61.6 / 59.9 s wall (110.1-113.1 user + 4.7-5.6 sys) at gauge 1.66-1.71;
@@ -92,6 +93,9 @@ the 636 files identical to bench/hashes/all_19_make_at_9ac9bbf.sha256 after each
 0.1 s samples): 2.4 core-s in the first 2.3 s (the batch's imports: OCP's 0.54 s and the others hold the interpreter's
 lock, so a thread importing beside them gains nothing, 1.62-1.74 s either way) and 1.4 in the last 1.5 s (the road
 wheel alone, then the gallery).  Also the animations' repeated text lines from one mask each (bench_animation.py).
+Later, the machine slower (gauge 1.74-1.80), with and without the shared solids in turn (a local switch, not kept):
+61.66 / 61.55 s wall (112.45 / 112.54 user + 4.7 sys) against 63.36 / 62.82 (116.23 / 114.86 + 4.7-5.0): 1.5 s of
+wall and 2.3-3.8 user s.  So make's 59.5 s above was the shared solids and a quiet minute together.
 """
 
 from __future__ import annotations
