@@ -84,8 +84,9 @@ the start: 63.7 s wall (115.8 + 6.2 CPU s).  The four cam part files share their
 final drives their carrier and sun, byte for byte (sha256 of their STEP): eleven solids whose files and checks each
 build made again (in a build's forked worker, the batch's modules loaded: the final drive's carrier 0.57 CPU s, its
 sun 0.43, the cam's carrier 0.20, leg 0.08, roller 0.09 a build; 2.1 s in all.  A first measurement in a fresh
-process had put the cam's carrier at 1.13 s: its first mesh check loaded the compiled kernels).  Now the batch keeps each solid's two halves (its STEP and checks; its STL, 3MF, picture, mesh checks and
-arrays) under a digest of its binary B-rep, name, genus and volume, and a later build's job takes them
+process had put the cam's carrier at 1.13 s: its first mesh check loaded the compiled kernels).  Now the batch
+keeps each solid's two halves (its STEP and checks; its STL, 3MF, picture, mesh checks and arrays) under a digest
+of its binary B-rep, name, genus and volume, and a later build's job takes them
 (``parts/solid_cache.py``): 20 halves taken in make (every shared one but the final drives' carrier mesh, made by both
 at once).  make from clean: 60.6 / 60.8 / 61.6 / 59.9 s wall (110.1-113.1 user + 4.7-5.6 sys) at gauge 1.66-1.71;
 with the halves kept by hard links instead of copies, 59.5 / 59.5 s (109.3 / 109.2 user + 4.4 / 4.7 sys) at 1.66-1.69;
