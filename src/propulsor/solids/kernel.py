@@ -36,8 +36,8 @@ from ..policy import TOUCHING_VOLUME_REL_TOL
 from .cq_import import import_cadquery
 
 __all__ = ["occ_shape", "as_solid", "solids_of", "one_solid", "moved", "shifted_z", "z_rotation", "cylinder",
-           "cq_cylinder", "box", "fuse", "cut", "cq_fuse", "cq_cut", "volume", "brep_bytes", "mass_properties", "manifold",
-           "manifold_cube", "manifold_cylinder"]
+           "cq_cylinder", "box", "fuse", "cut", "cq_fuse", "cq_cut", "volume", "brep_bytes", "mass_properties",
+           "manifold", "manifold_cube", "manifold_cylinder"]
 
 
 # -- shape conversion -----------------------------------------------------------------------------
