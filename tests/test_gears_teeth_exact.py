@@ -478,6 +478,9 @@ def test_the_driver_needs_a_whole_number_of_teeth_a_turn():
     m = 2.0
     pc = PitchCurves(EllipticalLaw(e=0.0, k=2), 3 * m * 41 / 4)       # 41 teeth on the driven circle
     assert generate_teeth(pc, "driven", ToothSpec(m=m)).z == 41
+    # no lobe of whole teeth: the driven wheel asked to be cut as one is cut tooth by tooth
+    g = generate_teeth(pc, "driven", ToothSpec(m=m), lobe=True)
+    assert (g.z, g.lobes, len(g.sides)) == (41, 1, 41)
     assert _refusal(lambda: generate_teeth(pc, "driver", ToothSpec(m=m))) == "z_H = 41: must be a multiple of n = 2"
 
 

@@ -52,7 +52,7 @@ def hits():
 
 
 def test_newton_s_tip_hits_are_the_hybrid_method_s(hits):
-    assert len(hits) > 200
+    assert len(hits) > 50  # the driver's 20 teeth and the driven wheel's first lobe of 20 (the rest its pattern)
     for side, curve, h, got, ref, _ in hits:
         assert (got is None) == (ref is None), (h, got, ref)
         if got is None:

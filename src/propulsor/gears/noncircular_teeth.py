@@ -31,6 +31,7 @@ of centres when the driver has turned by +theta, counter-clockwise).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 
@@ -274,6 +275,9 @@ class GeneratedTeeth:
     sides: list
     tips: list
     teeth: list
+    #: the driven wheel cut as one lobe (``generate_teeth(..., lobe=True)``): ``sides`` and ``tips`` are those of its
+    #: first ``z // lobes`` teeth, tooth k + j z / lobes being tooth k turned by 2 pi j / lobes; 1: every tooth's own
+    lobes: int = 1
 
 
 def _concave_zones(curve: BodyPitchCurve) -> list[tuple[float, float]]:
@@ -291,14 +295,22 @@ def _concave_zones(curve: BodyPitchCurve) -> list[tuple[float, float]]:
 
 
 def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame | None = None,
-                   tick=None) -> GeneratedTeeth:
+                   tick=None, lobe: bool = False) -> GeneratedTeeth:
     """Generated teeth on the pitch curve of one gear of the pair (see the module docstring):
     every tooth side generated and trimmed, every tip placed (shortened where too thin).  ``tick(done, z)``, when
     given, is told each tooth whose two sides are generated (progress only).
 
     Teeth: driven z_H = perimeter / (pi m), centres at s = (k + 1/2) p; driver z = z_H / n,
     centres at s = k p (k = 0 .. z-1 covers the driver's first turn, phi in [0, 2 pi / n)).
-    """
+
+    ``lobe``: the driven wheel of a law of n > 1 periods is cut as one lobe.  Its pitch curve repeats every 2 pi / n
+    of phi (the driver turns once while the driven wheel turns 2 pi / n: theta(phi + 2 pi / n) = theta(phi) + 2 pi,
+    so r_H(phi) = L theta' / (1 + theta') has that period; seed 000 eq. 3) and its z_H teeth, a multiple of n, are
+    spaced by the same arc, so tooth k + j z_H / n is tooth k turned by 2 pi j / n: the sides and tips of the first
+    z_H / n teeth are generated (``GeneratedTeeth.lobes`` = n), every tooth's record kept (its own s and phi, its
+    lobe tooth's kinds, tip and thickness).  Cut so, the wheel repeats exactly, as the pair's one-period proofs
+    take it to; each tooth cut on its own repeats to within the B-spline fits' tolerance.  A refusal names the
+    same first tooth either way (a tooth that fails has its like in the first lobe, nearer phi = 0)."""
     frame = frame or ArcFrame(pc)
     curve = BodyPitchCurve(pc, role)
     m = spec.m
@@ -311,12 +323,14 @@ def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame 
         require(z_H % n == 0, "z_H", z_H, f"must be a multiple of n = {n}")
         z, centres = z_H // n, np.arange(z_H // n) * p
     phic = frame.phi(centres)
+    lobes = n if lobe and role == "driven" and n > 1 and z % n == 0 else 1
+    z_cut = z // lobes  # the teeth generated: one lobe's, or every tooth
     span = 1.5 * p / float(np.min(pc.ds_dphi(np.linspace(0, math.pi / 2, 200))))  # phi of 1.5 pitches
     zones = _concave_zones(curve)
     rack_r, rack_l = spec.rack_tools()
     shaper = None
     teeth_sides = []
-    for s_k, ph_k in zip(centres, phic):
+    for s_k, ph_k in zip(centres[:z_cut], phic[:z_cut]):
         sides = []
         for which, rack_tool in ((0, rack_r), (1, rack_l)):
             tool = rack_tool
@@ -338,13 +352,14 @@ def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame 
             sides.append(side)
         teeth_sides.append(sides)
         if tick is not None:
-            tick(len(teeth_sides), z)
+            tick(len(teeth_sides), z_cut)
 
     # tips: nominal height, shortened where the tip land is too thin
     teeth, tips = [], []
     flat = [sd for pair in teeth_sides for sd in pair]
     h_cut = spec.h_tip_cut
-    nominal = tip_search.tip_hits_batch(flat, np.repeat(centres, 2), np.repeat(phic, 2), curve, frame, h_cut, span)
+    nominal = tip_search.tip_hits_batch(flat, np.repeat(centres[:z_cut], 2), np.repeat(phic[:z_cut], 2), curve, frame,
+                                        h_cut, span)
     for k, ((s_k, ph_k), (R, Lf)) in enumerate(zip(zip(centres, phic), teeth_sides)):
         thickness = tip_search.ToothLand(R, Lf, curve, frame, s_k, ph_k, span, h_cut,
                                          (nominal[2 * k], nominal[2 * k + 1]))
@@ -373,4 +388,7 @@ def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame 
         tips.append((h, hr, hl))
         teeth.append(GeneratedTooth(float(s_k), float(ph_k), R.kind, Lf.kind, R.undercut or Lf.undercut,
                                     float(h), float(t), shortened))
-    return GeneratedTeeth(role, curve, z, n, teeth_sides, tips, teeth)
+    # the other lobes' records: each tooth at its own centre, cut as its lobe tooth
+    teeth += [dataclasses.replace(teeth[k % z_cut], s_centre=float(centres[k]), phi_centre=float(phic[k]))
+              for k in range(z_cut, z)]
+    return GeneratedTeeth(role, curve, z, n, teeth_sides, tips, teeth, lobes)

@@ -61,27 +61,54 @@ class GeneratedGear:
         return min(t.tip_thickness_mm for t in self.teeth)
 
 
+def _turned(seg, c: float, s: float):
+    """A spline piece turned about the body axis by the angle of cosine c and sine s (each pole by its own products,
+    element by element: the same floats on every machine, whatever its BLAS)."""
+    x, y = seg.poles[:, 0], seg.poles[:, 1]
+    return Spline(seg.knots.copy(), np.column_stack([c * x - s * y, s * x + c * y]), seg.degree)
+
+
+def _turn(segs: list, angle: float) -> list:
+    """The pieces turned about the body axis by ``angle`` (rad)."""
+    c, s = math.cos(angle), math.sin(angle)
+    return [_turned(seg, c, s) for seg in segs]
+
+
 def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame | None = None,
-                  tol: float = SPLINE_FIT_TOL_MM, start=None, tick=None) -> GeneratedGear:
+                  tol: float = SPLINE_FIT_TOL_MM, start=None, tick=None, lobe: bool = True) -> GeneratedGear:
     """Closed outline of the generated teeth of one gear of the pair (``generate_teeth``), fitted
     and chained counter-clockwise on the body (increasing polar angle).  `start(fn, *args)`, when given,
     runs ``fn(*args)`` beside this process and returns an object whose ``result()`` gives its value (the
     caller's process pool: this layer forks nothing itself): half the teeth of a large gear are fitted
     that way.  ``tick(done, total)``, when given, is told the teeth generated, then those fitted here (total: twice
-    the teeth; progress only)."""
-    g = generate_teeth(pc, role, spec, frame, None if tick is None else (lambda k, z: tick(k, 2 * z)))
-    curve, z, n, m = g.curve, g.z, g.n, spec.m
+    the teeth cut; progress only).
+
+    The driven wheel of a law of n > 1 periods is cut as one lobe and patterned (``generate_teeth(..., lobe=True)``):
+    the first z_H / n teeth and the roots after them are generated and fitted, the last root ending at the next
+    lobe's first tooth (the first turned by 2 pi / n), and the lobe's pieces are turned by 2 pi j / n, j = 1 .. n - 1,
+    as a CAD circular pattern does: the outline repeats exactly.  ``lobe=False``: every tooth cut on its own (the
+    lobes then repeat to within the fits' tolerance ``tol``)."""
+    g = generate_teeth(pc, role, spec, frame, None if tick is None else (lambda k, z: tick(k, 2 * z)), lobe=lobe)
+    curve, n, m = g.curve, g.n, spec.m
+    z = len(g.sides)  # the teeth cut: all, or one lobe's
+    lobe = 2 * math.pi / g.lobes  # the lobe's angle (2 pi: the whole wheel)
     teeth_sides, tips, teeth = g.sides, g.tips, g.teeth
     # fit and chain (counter-clockwise on the body: increasing polar angle)
     order = list(range(z)) if role == "driven" else list(range(z - 1, -1, -1))
     units = _fit_units(curve, teeth_sides, tips, order, tol, start,
                        None if tick is None else (lambda k: tick(min(2 * z, z + k), 2 * z)))
+    if g.lobes > 1:  # the next lobe's first tooth, which the lobe's last root meets
+        first = units[0]
+        after = (_turn(first[0], lobe), first[1] + lobe, first[2] + lobe, first[3], first[4])
+    else:
+        after = units[0]
+    nexts = units[1:] + [after]
     segs = []
     root_r = []
     hf = -spec.h_root
     spaces = []  # per space: (phi of its left root point, of the next tooth's right one), unwrapped
     for i, (_unit, _phr, phl, _gr, _gl) in enumerate(units):
-        ph_a, ph_b = phl, units[(i + 1) % len(units)][1]
+        ph_a, ph_b = phl, nexts[i][1]
         # unwrap: the next tooth's right root point follows counter-clockwise
         if role == "driven":
             while ph_b < ph_a:
@@ -91,7 +118,7 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
                 ph_b -= 2 * math.pi / n
         spaces.append((ph_a, ph_b))
     crossed = [abs(ph_b - ph_a) > math.pi / (1 if role == "driven" else n) for ph_a, ph_b in spaces]
-    lifted = [units[i][4] > 0.0 or units[(i + 1) % len(units)][3] > 0.0 for i in range(len(units))]
+    lifted = [units[i][4] > 0.0 or nexts[i][3] > 0.0 for i in range(len(units))]
     # the roots of the spaces whose feet did not cross and whose fillets reach the root equidistant, fitted in lock
     # step (a lifted root, below, on its own)
     plain = [i for i in range(len(units)) if not crossed[i] and not lifted[i]]
@@ -99,21 +126,22 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
                                        n0=FIT_N0)))
     for i, (unit, _phr, phl, _gr, gl) in enumerate(units):
         segs.extend(unit)
-        nxt = units[(i + 1) % len(units)]
+        nxt = nexts[i]
         ph_a, ph_b = spaces[i]
         if crossed[i]:
             # the feet crossed (a re-phased shaper's space whose root land vanished): the two fillets
             # cross above the root equidistant, both are trimmed at the crossing and meet there
             j = (i + 1) % len(units)
             nb = len(units[0][0])
-            head = segs[:nb] if j == 0 else nxt[0]
+            # the first tooth's head as it stands (trimmed by nothing yet), in this space: the next lobe's
+            head = (segs[:nb] if g.lobes == 1 else _turn(segs[:nb], lobe)) if j == 0 else nxt[0]
             ka, kb, a_new, b_new, X = _trim_pairs(segs[-3:], head[:3], tol)
             del segs[len(segs) - 3 + ka:]
             segs.append(a_new)
             head[kb] = b_new
             del head[:kb]
             if j == 0:
-                segs[:nb] = head
+                segs[:nb] = head if g.lobes == 1 else _turn(head, -lobe)
             root_r.append(float(np.hypot(*X)))
             continue
         g_a, g_b = gl, nxt[3]
@@ -126,13 +154,15 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
             root = roots[i]
         root_r.append(float(np.min(np.linalg.norm(root.poles, axis=1))))
         segs.append(root)
+    if g.lobes > 1:  # the pattern: the lobe's pieces turned by 2 pi j / n
+        segs = segs + [seg for j in range(1, g.lobes) for seg in _turn(segs, j * lobe)]
     rephased = any(sd.root_gap_mm > 0.0 or type(sd.fillet).__name__ == "RoundEnvelope"
                    for pair in teeth_sides for sd in pair)
     segs = _snap(segs, OUTLINE_JOINT_TOL_REPHASED_MM if rephased else OUTLINE_JOINT_TOL_MM)
-    prof = Profile(Loop(segs), name=f"{role} generated z={z} m={m:g}")
+    prof = Profile(Loop(segs), name=f"{role} generated z={g.z} m={m:g}")
     ph = np.linspace(0.0, 2 * math.pi / (1 if role == "driven" else n), 1441)
     gaps = tuple(float(sd.root_gap_mm) for pair in teeth_sides for sd in pair if sd.root_gap_mm > OUTLINE_JOINT_TOL_MM)
-    return GeneratedGear(role, prof, teeth, min(root_r), curve.point(ph), gaps)
+    return GeneratedGear(role, prof, teeth, min(root_r), curve.point(ph), gaps * g.lobes)
 
 
 
