@@ -1,7 +1,8 @@
-"""The driven wheel of a law of n > 1 periods cut as one lobe and patterned (geometry.noncircular_outline.generate_gear,
-gears.noncircular_teeth.generate_teeth ``lobe``): its outline repeats exactly every 2 pi / n, it is the wheel cut
-tooth by tooth to within the fits' tolerance, every tooth keeps its own record, and a wheel without the period (a
-driver, one period, a tooth count that is no multiple of n) is cut tooth by tooth as before."""
+"""A wheel of equal lobes cut as one lobe and patterned (geometry.noncircular_outline.generate_gear,
+gears.noncircular_teeth.generate_teeth ``lobe``; the driven wheel has the law's ``periods`` lobes, the driver
+periods / n): its outline repeats exactly every lobe, it is the wheel cut tooth by tooth to within the fits'
+tolerance, every tooth keeps its own record, and a wheel of one lobe (a one-period law, a driver of n = periods, a
+tooth count that is no multiple of the lobes) is cut tooth by tooth as before."""
 
 from __future__ import annotations
 
@@ -22,8 +23,9 @@ from propulsor.policy import SPLINE_FIT_TOL_MM
 ROOT = Path(__file__).resolve().parents[1]
 
 
-def _cut_calls(part: str, monkeypatch) -> dict:
-    """The arguments each wheel of the part file's design is cut with (role -> (pc, spec, frame, tol))."""
+def _cut_calls(part: str, monkeypatch, **changed) -> dict:
+    """The arguments each wheel of the part file's design (its keys ``changed``) is cut with (role -> (pc, spec,
+    frame, tol))."""
     calls = {}
     real = outline_module.generate_gear
 
@@ -36,7 +38,7 @@ def _cut_calls(part: str, monkeypatch) -> dict:
     base = tomllib.loads((ROOT / part).read_text(encoding="utf-8"))
     base.pop("type")
     base.pop("meta", None)
-    design(load_params(NoncircularPairParams, base), source=str(ROOT / part))
+    design(load_params(NoncircularPairParams, {**base, **changed}), source=str(ROOT / part))
     return calls
 
 
@@ -47,8 +49,9 @@ def _turn(P: np.ndarray, a: float) -> np.ndarray:
 
 @pytest.fixture(scope="module")
 def seed_000():
-    """Seed 000's pair (n = 2, 96 driven teeth, two spaces a lobe whose root land vanished, re-phased shapers'
-    lifted roots): both wheels cut as the build cuts them and the driven one tooth by tooth."""
+    """Seed 000's pair (4 periods, n = 2: a driven wheel of 96 teeth in 4 lobes, a driver of 48 in 2; a space of
+    every driven lobe whose root land vanished, re-phased shapers' lifted roots): both wheels cut as the build cuts
+    them and tooth by tooth."""
     mp = pytest.MonkeyPatch()
     try:
         calls = _cut_calls("parts/ncg_seed000.toml", mp)
@@ -57,7 +60,10 @@ def seed_000():
     pc, spec, frame, tol = calls["driven"]
     lobed = outline_module.generate_gear(pc, "driven", spec, frame, tol)
     each = outline_module.generate_gear(pc, "driven", spec, frame, tol, lobe=False)
-    return pc, calls, lobed, each
+    _pc, spec_d, frame_d, tol_d = calls["driver"]
+    driver = (outline_module.generate_gear(pc, "driver", spec_d, frame_d, tol_d),
+              outline_module.generate_gear(pc, "driver", spec_d, frame_d, tol_d, lobe=False))
+    return pc, calls, lobed, each, driver
 
 
 def _repeats(segs, n: int) -> None:
@@ -71,10 +77,11 @@ def _repeats(segs, n: int) -> None:
             assert np.max(np.abs(_turn(a.poles, 2 * math.pi * j / n) - b.poles)) < 1e-12
 
 
-def test_the_lobed_driven_wheel_repeats_exactly_every_period(seed_000):
-    pc, _calls, lobed, _each = seed_000
-    assert pc.law.n == 2
-    _repeats(lobed.profile.outer.segments, 2)
+def test_the_lobed_wheels_repeat_exactly_every_lobe(seed_000):
+    pc, _calls, lobed, _each, (driver, _) = seed_000
+    assert (pc.law.n, pc.law.periods) == (2, 4)
+    _repeats(lobed.profile.outer.segments, 4)
+    _repeats(driver.profile.outer.segments, 2)  # counter-clockwise on its body: each lobe the last turned on
 
 
 def test_the_built_driven_wheel_of_four_periods_repeats_exactly(monkeypatch):
@@ -88,25 +95,35 @@ def test_the_built_driven_wheel_of_four_periods_repeats_exactly(monkeypatch):
     _repeats(d.driven.profile.outer.segments, 4)
 
 
-def test_the_lobed_driven_wheel_is_the_wheel_cut_tooth_by_tooth_within_the_fits_tolerance(seed_000):
-    _pc, _calls, lobed, each = seed_000
-    a, b = lobed.profile.outer.segments, each.profile.outer.segments
+def _same_cut(a, b, lobes: int, first: slice) -> float:
+    """The greatest pole moved between two cuts of one wheel (mm); the cut lobe's pieces (``first`` of the lobes, in
+    the chain) the same floats, but for the joints the snap moves."""
     assert len(a) == len(b)
     assert [s.poles.shape for s in a] == [s.poles.shape for s in b]
-    moved = max(float(np.max(np.abs(x.poles - y.poles))) for x, y in zip(a, b))
+    per = len(a) // lobes
+    lo = first.start * per
+    same = sum(np.array_equal(x.poles, y.poles) and np.array_equal(x.knots, y.knots)
+               for x, y in zip(a[lo:lo + per], b[lo:lo + per]))
+    assert same >= per - 2
+    return max(float(np.max(np.abs(x.poles - y.poles))) for x, y in zip(a, b))
+
+
+def test_the_lobed_wheels_are_the_wheels_cut_tooth_by_tooth_within_the_fits_tolerance(seed_000):
+    _pc, _calls, lobed, each, (driver, driver_each) = seed_000
+    moved = _same_cut(lobed.profile.outer.segments, each.profile.outer.segments, 4, slice(0, 1))
     # the lobes cut tooth by tooth differ from one another by the fits' own choices (1e-6 mm here), within tol
     assert 1e-9 < moved < SPLINE_FIT_TOL_MM
-    # the first lobe's teeth are the same cut: its pieces the same floats, but for the joints the snap moves
-    per = len(a) // 2
-    same = sum(np.array_equal(x.poles, y.poles) and np.array_equal(x.knots, y.knots) for x, y in zip(a[:per], b[:per]))
-    assert same >= per - 2
+    # the driver's chain runs from its last tooth: the cut lobe (teeth 0 .. 23) is the chain's second
+    assert _same_cut(driver.profile.outer.segments, driver_each.profile.outer.segments, 2, slice(1, 2)) < 1e-9
+    assert [t.__dict__ for t in driver.teeth[:24]] == [t.__dict__ for t in driver_each.teeth[:24]]
+    assert driver.root_min_radius == pytest.approx(driver_each.root_min_radius, abs=1e-9)
     assert lobed.root_min_radius == pytest.approx(each.root_min_radius, abs=1e-9)
     assert len(lobed.root_gaps) == len(each.root_gaps) > 0
     assert np.allclose(lobed.root_gaps, each.root_gaps, rtol=0, atol=1e-9)
 
 
 def test_every_tooth_of_the_lobed_wheel_keeps_its_own_record(seed_000):
-    _pc, _calls, lobed, each = seed_000
+    _pc, _calls, lobed, each, _driver = seed_000
     assert len(lobed.teeth) == len(each.teeth) == 96
     for t, u in zip(lobed.teeth, each.teeth):
         assert (t.s_centre, t.phi_centre, t.right, t.left, t.undercut, t.tip_height_mm, t.shortened) == (
@@ -117,19 +134,41 @@ def test_every_tooth_of_the_lobed_wheel_keeps_its_own_record(seed_000):
 
 
 def test_only_one_lobe_is_generated(seed_000):
-    pc, calls, _lobed, _each = seed_000
+    pc, calls, _lobed, _each, _driver = seed_000
     _pc, spec, frame, _tol = calls["driven"]
     g = generate_teeth(pc, "driven", spec, frame, lobe=True)
-    assert (g.z, g.lobes, len(g.sides), len(g.tips), len(g.teeth)) == (96, 2, 48, 48, 96)
+    assert (g.z, g.lobes, len(g.sides), len(g.tips), len(g.teeth)) == (96, 4, 24, 24, 96)
     assert [t.phi_centre for t in g.teeth] == [float(x) for x in frame.phi((np.arange(96) + 0.5) * math.pi * spec.m)]
     whole = generate_teeth(pc, "driven", spec, frame)
     assert (whole.lobes, len(whole.sides)) == (1, 96)
-
-
-def test_a_driver_and_a_one_period_driven_wheel_are_cut_tooth_by_tooth(seed_000, monkeypatch):
-    pc, calls, _lobed, _each = seed_000
     _pc, spec, frame, _tol = calls["driver"]
-    assert generate_teeth(pc, "driver", spec, frame, lobe=True).lobes == 1
-    one = _cut_calls("parts/ncg_elliptical.toml", monkeypatch)["driven"]
-    assert one[0].law.n == 1
-    assert generate_teeth(one[0], "driven", one[1], one[2], lobe=True).lobes == 1
+    g = generate_teeth(pc, "driver", spec, frame, lobe=True)
+    assert (g.z, g.lobes, len(g.sides), len(g.teeth)) == (48, 2, 24, 48)
+    assert [t.phi_centre for t in g.teeth] == [float(x) for x in frame.phi(np.arange(48) * math.pi * spec.m)]
+
+
+def test_wheels_of_one_lobe_are_cut_tooth_by_tooth(monkeypatch):
+    one = _cut_calls("parts/ncg_elliptical.toml", monkeypatch)  # one period: a 1:1 pair of ellipses
+    assert (one["driven"][0].law.n, one["driven"][0].law.periods) == (1, 1)
+    for role in ("driver", "driven"):
+        pc, spec, frame, _tol = one[role]
+        assert generate_teeth(pc, role, spec, frame, lobe=True).lobes == 1
+    four = _cut_calls("parts/ncg_seed002.toml", monkeypatch)["driver"]  # n = periods = 4: one lobe a driver turn
+    assert generate_teeth(four[0], "driver", four[1], four[2], lobe=True).lobes == 1
+
+
+def test_a_driver_of_four_lobes_is_its_first_lobe_turned_back(monkeypatch):
+    """Seed 002's law at one driver turn a driven turn (n = 1, 4 periods): the driver's 80 teeth in 4 lobes, tooth
+    k + 20 j its tooth k turned clockwise j quarter turns (its body angle is pi - theta); cut so, it is the driver cut
+    tooth by tooth to within the fits' tolerance and repeats exactly."""
+    calls = _cut_calls("parts/ncg_seed002.toml", monkeypatch, driver_turns=1)
+    pc, spec, frame, tol = calls["driver"]
+    assert (pc.law.n, pc.law.periods) == (1, 4)
+    lobed = outline_module.generate_gear(pc, "driver", spec, frame, tol)
+    each = outline_module.generate_gear(pc, "driver", spec, frame, tol, lobe=False)
+    assert len(lobed.teeth) == 80
+    _repeats(lobed.profile.outer.segments, 4)
+    # the chain runs counter-clockwise from the last tooth: the cut lobe (teeth 0 .. 19) is its fourth
+    assert _same_cut(lobed.profile.outer.segments, each.profile.outer.segments, 4, slice(3, 4)) < SPLINE_FIT_TOL_MM
+    assert [(t.s_centre, t.phi_centre, t.tip_height_mm) for t in lobed.teeth] == [
+        (t.s_centre, t.phi_centre, t.tip_height_mm) for t in each.teeth]

@@ -275,8 +275,8 @@ class GeneratedTeeth:
     sides: list
     tips: list
     teeth: list
-    #: the driven wheel cut as one lobe (``generate_teeth(..., lobe=True)``): ``sides`` and ``tips`` are those of its
-    #: first ``z // lobes`` teeth, tooth k + j z / lobes being tooth k turned by 2 pi j / lobes; 1: every tooth's own
+    #: the wheel cut as one lobe (``generate_teeth(..., lobe=True)``): ``sides`` and ``tips`` are those of its first
+    #: ``z // lobes`` teeth, tooth k + j z / lobes being tooth k turned by j lobes; 1: every tooth's own
     lobes: int = 1
 
 
@@ -303,14 +303,15 @@ def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame 
     Teeth: driven z_H = perimeter / (pi m), centres at s = (k + 1/2) p; driver z = z_H / n,
     centres at s = k p (k = 0 .. z-1 covers the driver's first turn, phi in [0, 2 pi / n)).
 
-    ``lobe``: the driven wheel of a law of n > 1 periods is cut as one lobe.  Its pitch curve repeats every 2 pi / n
-    of phi (the driver turns once while the driven wheel turns 2 pi / n: theta(phi + 2 pi / n) = theta(phi) + 2 pi,
-    so r_H(phi) = L theta' / (1 + theta') has that period; seed 000 eq. 3) and its z_H teeth, a multiple of n, are
-    spaced by the same arc, so tooth k + j z_H / n is tooth k turned by 2 pi j / n: the sides and tips of the first
-    z_H / n teeth are generated (``GeneratedTeeth.lobes`` = n), every tooth's record kept (its own s and phi, its
-    lobe tooth's kinds, tip and thickness).  Cut so, the wheel repeats exactly, as the pair's one-period proofs
-    take it to; each tooth cut on its own repeats to within the B-spline fits' tolerance.  A refusal names the
-    same first tooth either way (a tooth that fails has its like in the first lobe, nearer phi = 0)."""
+    ``lobe``: a wheel of equal lobes is cut as one.  The law's ratio U = theta' repeats every period P = 2 pi /
+    ``periods`` of phi (``laws.law``), so the driven pitch curve (r_H = L U / (1 + U); seed 000 eq. 3) has
+    ``periods`` lobes, and the driver's, whose theta advances 2 pi n / periods a period, periods / n lobes a turn.
+    The arc of a period holds z_H / periods pitches, so when that is whole, tooth k + j z / lobes is tooth k turned
+    by one lobe j times (the driven wheel on, the driver back: its body angle is pi - theta): the sides and tips of the first z / lobes teeth are generated (``GeneratedTeeth.lobes``), every
+    tooth's record kept (its own s and phi, its lobe tooth's kinds, tip and thickness).  Cut so, the wheel repeats
+    exactly, as the pair's one-period proofs take it to (``parts.noncircular_pair.as_built.period_span``); each
+    tooth cut on its own repeats to within the B-spline fits' tolerance.  A refusal names the same first tooth
+    either way (a tooth that fails has its like in the first lobe, nearer phi = 0)."""
     frame = frame or ArcFrame(pc)
     curve = BodyPitchCurve(pc, role)
     m = spec.m
@@ -323,7 +324,10 @@ def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame 
         require(z_H % n == 0, "z_H", z_H, f"must be a multiple of n = {n}")
         z, centres = z_H // n, np.arange(z_H // n) * p
     phic = frame.phi(centres)
-    lobes = n if lobe and role == "driven" and n > 1 and z % n == 0 else 1
+    # the wheel's equal lobes (laws.law: the driven curve has ``periods``, the driver's repeats every n periods)
+    lobes = pc.law.periods // (1 if role == "driven" else n) if lobe else 1
+    if lobes < 1 or z % lobes:
+        lobes = 1
     z_cut = z // lobes  # the teeth generated: one lobe's, or every tooth
     span = 1.5 * p / float(np.min(pc.ds_dphi(np.linspace(0, math.pi / 2, 200))))  # phi of 1.5 pitches
     zones = _concave_zones(curve)

@@ -83,23 +83,29 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
     that way.  ``tick(done, total)``, when given, is told the teeth generated, then those fitted here (total: twice
     the teeth cut; progress only).
 
-    The driven wheel of a law of n > 1 periods is cut as one lobe and patterned (``generate_teeth(..., lobe=True)``):
-    the first z_H / n teeth and the roots after them are generated and fitted, the last root ending at the next
-    lobe's first tooth (the first turned by 2 pi / n), and the lobe's pieces are turned by 2 pi j / n, j = 1 .. n - 1,
-    as a CAD circular pattern does: the outline repeats exactly.  ``lobe=False``: every tooth cut on its own (the
-    lobes then repeat to within the fits' tolerance ``tol``)."""
+    A wheel of equal lobes is cut as one lobe and patterned (``generate_teeth(..., lobe=True)``): the first z / lobes
+    teeth and the roots after them are generated and fitted, the lobe's last root ending at the next lobe's first
+    tooth (the first tooth turned by a lobe), and the lobe's pieces are turned by j lobes, j = 1 .. lobes - 1, as a
+    CAD circular pattern does: the outline repeats exactly.  ``lobe=False``: every tooth cut on its own (the lobes
+    then repeat to within the fits' tolerance ``tol``)."""
     g = generate_teeth(pc, role, spec, frame, None if tick is None else (lambda k, z: tick(k, 2 * z)), lobe=lobe)
     curve, n, m = g.curve, g.n, spec.m
     z = len(g.sides)  # the teeth cut: all, or one lobe's
-    lobe = 2 * math.pi / g.lobes  # the lobe's angle (2 pi: the whole wheel)
+    # tooth k + z turned by ``turn`` about the body axis: the driven wheel on by a lobe, the driver back (its teeth
+    # run clockwise on its body); ``dphi``: the driven angle of a lobe
+    turn = (1.0 if role == "driven" else -1.0) * 2 * math.pi / g.lobes
+    dphi = 2 * math.pi / (g.lobes * (1 if role == "driven" else n))
     teeth_sides, tips, teeth = g.sides, g.tips, g.teeth
     # fit and chain (counter-clockwise on the body: increasing polar angle)
     order = list(range(z)) if role == "driven" else list(range(z - 1, -1, -1))
     units = _fit_units(curve, teeth_sides, tips, order, tol, start,
                        None if tick is None else (lambda k: tick(min(2 * z, z + k), 2 * z)))
-    if g.lobes > 1:  # the next lobe's first tooth, which the lobe's last root meets
+    # the tooth the last space ends at, counter-clockwise: the first (a whole wheel's), or the first's in the next
+    # lobe that way (the driven wheel's next, tooth z; the driver's last, tooth z lobes - 1: ``lap`` lobes on)
+    lap = 1 if role == "driven" else g.lobes - 1
+    if g.lobes > 1:
         first = units[0]
-        after = (_turn(first[0], lobe), first[1] + lobe, first[2] + lobe, first[3], first[4])
+        after = (_turn(first[0], lap * turn), first[1] + lap * dphi, first[2] + lap * dphi, first[3], first[4])
     else:
         after = units[0]
     nexts = units[1:] + [after]
@@ -134,14 +140,14 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
             j = (i + 1) % len(units)
             nb = len(units[0][0])
             # the first tooth's head as it stands (trimmed by nothing yet), in this space: the next lobe's
-            head = (segs[:nb] if g.lobes == 1 else _turn(segs[:nb], lobe)) if j == 0 else nxt[0]
+            head = (segs[:nb] if g.lobes == 1 else _turn(segs[:nb], lap * turn)) if j == 0 else nxt[0]
             ka, kb, a_new, b_new, X = _trim_pairs(segs[-3:], head[:3], tol)
             del segs[len(segs) - 3 + ka:]
             segs.append(a_new)
             head[kb] = b_new
             del head[:kb]
             if j == 0:
-                segs[:nb] = head if g.lobes == 1 else _turn(head, -lobe)
+                segs[:nb] = head if g.lobes == 1 else _turn(head, -lap * turn)
             root_r.append(float(np.hypot(*X)))
             continue
         g_a, g_b = gl, nxt[3]
@@ -154,8 +160,10 @@ def generate_gear(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame |
             root = roots[i]
         root_r.append(float(np.min(np.linalg.norm(root.poles, axis=1))))
         segs.append(root)
-    if g.lobes > 1:  # the pattern: the lobe's pieces turned by 2 pi j / n
-        segs = segs + [seg for j in range(1, g.lobes) for seg in _turn(segs, j * lobe)]
+    if g.lobes > 1:  # the pattern, counter-clockwise from the first tooth: each lobe the cut one turned j lobes
+        laps = range(1, g.lobes) if role == "driven" else range(g.lobes - 1, 0, -1)
+        pattern = [seg for j in laps for seg in _turn(segs, j * turn)]
+        segs = segs + pattern if role == "driven" else pattern + segs
     rephased = any(sd.root_gap_mm > 0.0 or type(sd.fillet).__name__ == "RoundEnvelope"
                    for pair in teeth_sides for sd in pair)
     segs = _snap(segs, OUTLINE_JOINT_TOL_REPHASED_MM if rephased else OUTLINE_JOINT_TOL_MM)
