@@ -384,6 +384,19 @@ contact's kernels (contact_kernels, contact_reuse, contact_track, nearest, backl
 both directions of seed 002's contact 0.63-0.68 -> 0.63-0.68 CPU s, the same values: reverted.  py-spy (200 Hz, ten
 variants): the contact's compiled loop 32 % (about 0.55 s), the design 43 % (generate_gear 24 + 5 % for the two
 wheels, the B-spline fits 10 %, the tip searches 8 %), the whole-cycle proof's compiled steps 7 %.
+
+2026-12-05, a later session (2 cores, idle; from 7124cb8).  A wheel of equal lobes cut as one lobe and patterned
+(132a569, cf02913: ``generate_teeth(..., lobe=True)``, ``noncircular_outline.generate_gear``): the driven wheel has the
+law's ``periods`` lobes, the driver periods / n; the teeth of one lobe and the roots after it are generated and
+fitted, the rest are its B-spline pieces turned (each pole by its own products).  seed 002's driven wheel (80 teeth,
+4 lobes) 0.65 -> 0.18 CPU s; the variants, old tree (PYTHONPATH to a worktree of 7124cb8) and new in turn, three
+each: the seed-002 pair 1.70 / 1.73 / 1.75 -> 1.22 / 1.23 / 1.21 CPU s, its Fourier form 2.70 / 2.57 / 2.39 -> 1.87 /
+1.82 / 1.83.  Not bit for bit: the lobes cut tooth by tooth differed by the fits' own choices, so the patterned wheels
+moved by at most 3.8e-6 mm at a pole (the fits' tolerance 1e-5 mm; seed 000's driven wheel, 4.05e-6 mm between the
+outlines sampled at 1e-4), the first lobe the same floats; every derived value of the seven pairs concerned moved by
+at most 3.2e-10 relative (speed_step_max of the 2-lobe elliptical pair); make's other 12 part files identical.  Where
+a seed-002 variant's 1.20 CPU s go now (process clock around each step, four variants): the as-built contact 0.63 (its
+compiled track 0.58), the design 0.26 (the driven wheel's lobe 0.17, the driver 0.09), the whole-cycle proof 0.23.
 """
 
 from __future__ import annotations

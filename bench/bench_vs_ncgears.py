@@ -193,6 +193,9 @@ peak 290 MiB; ours 6.33 s wall (10.73 CPU s), peak 649 MiB: wall ratio 0.179, CP
 build's work this session (its law has no sector method: nothing jams); its cores idle 1.3 core-s of the 6.2 s, 0.9
 of it in the first 2 s (the part type's imports and the check of the part file, 0.67 CPU s in one process, before
 the design forks beside the kernel's import).
+2026-12-05, a later session (2 cores, idle; cf02913, the wheels of equal lobes cut as one and patterned): ncgears
+33.60 s wall (35.43 CPU s), peak 289 MiB; ours 5.82 s wall (9.32 CPU s), peak 633 MiB: wall ratio 0.173, CPU ratio
+0.263 (at 7124cb8 the same day: 0.191 / 0.297); ``ncg_elliptical.toml`` 4.84 s wall (7.76 CPU s).
 """
 
 from __future__ import annotations
