@@ -307,8 +307,9 @@ def generate_teeth(pc: PitchCurves, role: str, spec: ToothSpec, frame: ArcFrame 
     ``periods`` of phi (``laws.law``), so the driven pitch curve (r_H = L U / (1 + U); seed 000 eq. 3) has
     ``periods`` lobes, and the driver's, whose theta advances 2 pi n / periods a period, periods / n lobes a turn.
     The arc of a period holds z_H / periods pitches, so when that is whole, tooth k + j z / lobes is tooth k turned
-    by one lobe j times (the driven wheel on, the driver back: its body angle is pi - theta): the sides and tips of the first z / lobes teeth are generated (``GeneratedTeeth.lobes``), every
-    tooth's record kept (its own s and phi, its lobe tooth's kinds, tip and thickness).  Cut so, the wheel repeats
+    by one lobe j times (the driven wheel on, the driver back: its body angle is pi - theta): the sides and tips of
+    the first z / lobes teeth are generated (``GeneratedTeeth.lobes``), every tooth's record kept (its own s and
+    phi, its lobe tooth's kinds, tip and thickness).  Cut so, the wheel repeats
     exactly, as the pair's one-period proofs take it to (``parts.noncircular_pair.as_built.period_span``); each
     tooth cut on its own repeats to within the B-spline fits' tolerance.  A refusal names the same first tooth
     either way (a tooth that fails has its like in the first lobe, nearer phi = 0)."""
