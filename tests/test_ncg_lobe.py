@@ -6,7 +6,9 @@ tooth count that is no multiple of the lobes) is cut tooth by tooth as before.""
 
 from __future__ import annotations
 
+import dataclasses
 import math
+import sys
 import tomllib
 from pathlib import Path
 
@@ -172,3 +174,45 @@ def test_a_driver_of_four_lobes_is_its_first_lobe_turned_back(monkeypatch):
     assert _same_cut(lobed.profile.outer.segments, each.profile.outer.segments, 4, slice(3, 4)) < SPLINE_FIT_TOL_MM
     assert [(t.s_centre, t.phi_centre, t.tip_height_mm) for t in lobed.teeth] == [
         (t.s_centre, t.phi_centre, t.tip_height_mm) for t in each.teeth]
+
+
+def test_a_space_whose_root_land_vanished_at_the_lobes_boundary(seed_000, monkeypatch):
+    """Seed 000's driven lobe holds one space whose feet crossed (between its teeth 11 and 12: the two fillets trimmed
+    at their crossing).  The lobe cut from tooth 12 on (its teeth 12 .. 35, each from its own sides) puts that space
+    last, between tooth 35 and the next lobe's first tooth, 12 turned by a lobe: the head of the lobe's first tooth is
+    trimmed there, turned back, and the pattern still repeats exactly; it is the wheel cut tooth by tooth, chained from
+    tooth 12, to within the fits' tolerance, its first lobe's pieces (that joint's among them) those pieces."""
+    pc, calls, _lobed, each, _driver = seed_000
+    _pc, spec, frame, tol = calls["driven"]
+    whole = generate_teeth(pc, "driven", spec, frame, lobe=False)
+    k0, per = 12, 24
+
+    def from_tooth_12(*_args, **_kw):
+        return dataclasses.replace(whole, sides=whole.sides[k0:k0 + per], tips=whole.tips[k0:k0 + per],
+                                   teeth=whole.teeth[k0:] + whole.teeth[:k0], lobes=4)
+
+    trims = []
+    real_trim = outline_module._trim_pairs
+
+    def trim(*args):
+        trims.append(sys._getframe(1).f_locals["j"])  # the space's next tooth: 0 = the next lobe's first
+        return real_trim(*args)
+
+    monkeypatch.setattr(outline_module, "generate_teeth", from_tooth_12)
+    monkeypatch.setattr(outline_module, "_trim_pairs", trim)
+    shifted = outline_module.generate_gear(pc, "driven", spec, frame, tol).profile.outer.segments
+    assert trims == [0]
+    _repeats(shifted, 4)
+    # the wheel cut tooth by tooth, chained from tooth 0: its pieces from tooth 12's on are the shifted chain's
+    ref = each.profile.outer.segments
+    assert len(ref) == len(shifted)
+    N, lobe_len = len(ref), len(ref) // 4
+    mid = lobe_len // 2  # a piece of the first cut lobe far from its ends
+    o = min((i for i in range(N) if ref[i].poles.shape == shifted[mid].poles.shape),
+            key=lambda i: float(np.max(np.abs(ref[i].poles - shifted[mid].poles)))) - mid
+    moved = [float(np.max(np.abs(shifted[s].poles - ref[(s + o) % N].poles))) for s in range(N)]
+    assert max(moved) < tol
+    # the cut lobe's pieces (teeth 12 .. 35, each from its own sides, the trimmed head of its first tooth and the
+    # tail of its last among them) are the tooth-by-tooth wheel's: tooth 36 cut on its own is tooth 12 turned, here
+    assert max(moved[:lobe_len]) < 1e-9
+    assert max(moved) > 1e-9  # the other lobes: tooth 12 + 24 j cut on its own differs by the fits' own choices
