@@ -280,6 +280,118 @@ def test_proof_over_a_whole_turn_in_its_default_windows_the_same_in_any_windows(
                 assert np.array_equal(value, getattr(other, name), equal_nan=True), (windows, name)
 
 
+def _turn_phases(n: int) -> np.ndarray:
+    return np.arange(n) * (2 * math.pi / n)
+
+
+def test_a_pair_that_repeats_is_proved_over_one_period_each_later_phase_its_like_turned():
+    """The circular pair (k = 2: the law's periods 2; its driven wheel cut as two lobes, the second the first turned
+    by pi, its driver one lobe turning a whole turn a period): 160 phases over the turn, the first 80 measured (the
+    outlines repeat to rounding, 3.6e-14 mm), each later phase the first period's like: its overlaps, offsets and
+    tooth pairs the same, its driven angles moved by the phases' own difference, so its transmission error and
+    backlash those of its like to rounding.  Measured whole (``periods`` 1), every phase agrees to 1e-13 rad and the
+    first period is the same to the bit."""
+    from propulsor.parts.noncircular_pair.pair_proof import prove_pair
+
+    _, dd = _circular()
+    d = dd.d
+    phis = _turn_phases(160)
+    r_of = lambda ph: 50.0 + 0 * ph
+    ticks = []
+    args = (dd.profiles[0], dd.profiles[1], 75.0, d.run_law.theta, phis, r_of)
+    pr = prove_pair(*args, pitch_mm=math.pi * 2.5, periods=2, tick=ticks.append)
+    whole = prove_pair(*args, pitch_mm=math.pi * 2.5)
+    assert (pr.measured, whole.measured, len(pr.phi)) == (80, 160, 160)
+    assert pr.cyclic_mm < 1e-12 and whole.cyclic_mm == math.inf
+    assert pr.measured_text() == ("the first period's 80 measured, each later one its like there turned: both "
+                                  f"outlines repeat under a period's turns to {pr.cyclic_mm:.1e} mm")
+    assert whole.measured_text() == "each measured"
+    assert ticks[-1] == 160 and ticks[-2] == 80  # the first period's windows, then the turn told done
+    for name in ("phi", "theta_law", "overlap_law", "offset", "least_overlap", "pairs_drive", "pairs_coast",
+                 "r_ref"):
+        assert np.array_equal(getattr(pr, name), getattr(whole, name)), name
+    for name in ("phi_drive", "phi_coast"):
+        a, b = getattr(pr, name), getattr(whole, name)
+        assert np.array_equal(a[:80], b[:80]) and np.max(np.abs(a - b)) < 1e-13, name
+        assert not np.array_equal(a[80:], b[80:])  # measured, not the same floats: rounding apart
+    assert np.max(np.abs(pr.te_drive[80:] - pr.te_drive[:80])) < 1e-14
+    assert pr.summary()["steps"] == 160 and pr.summary()["jams"] == 0
+    # through prove(): generated teeth over the whole turn ask for the law's periods
+    from propulsor.parts.noncircular_pair.proofs import prove
+
+    assert prove(d, 4, 4).measured == 80 and prove(d, 4, 2).measured == 80  # half a turn: measured whole
+
+
+def test_cyclic_mismatch_turns_each_outline_by_a_period_and_refuses_a_law_or_phases_that_do_not_repeat():
+    """The circular pair's outlines repeat to rounding under a period's turns (the driven wheel by pi, the driver by
+    the law's 2 pi); a driven vertex moved 2e-9 mm along its radius is that far off (above the policy's 1e-9 mm: the
+    pair is then measured whole), a driver vertex where the driver turns half a turn a period (the law halved); a law that does not repeat (theta 1e-8 rad off at one
+    later phase), uneven phases, periods that do not divide the phases or an outline of two loops: inf."""
+    from propulsor import policy
+    from propulsor.checks.motion import outline
+    from propulsor.parts.noncircular_pair.pair_proof import _outer_only, cyclic_mismatch, prove_pair
+
+    _, dd = _circular()
+    d = dd.d
+    drv_loop = _outer_only(d.driver.profile)[0]
+    dvn_loop = _outer_only(d.driven.profile)[0]
+    drv, dvn = outline([drv_loop]), outline([dvn_loop])
+    phis = _turn_phases(160)
+    theta = d.run_law.theta(phis)
+    assert policy.CYCLIC_TOL_MM == 1e-9
+    assert cyclic_mismatch(drv, dvn, phis, theta, 80) < 1e-12
+    k = len(dvn_loop) // 3
+
+    def moved(loop, k, by):
+        q = loop.copy()
+        q[k] *= 1.0 + by / float(np.hypot(*q[k]))
+        return q
+
+    off = cyclic_mismatch(drv, outline([moved(dvn_loop, k, 2e-9)]), phis, theta, 80)
+    assert 1.9e-9 < off < 2.1e-9
+    # the driver turns a whole turn a period: any driver repeats; turning half a turn (the law halved) its 20 involute
+    # teeth repeat to rounding, a vertex moved does not
+    assert cyclic_mismatch(outline([moved(drv_loop, 7, 2e-9)]), dvn, phis, theta, 80) < 1e-12
+    assert cyclic_mismatch(drv, dvn, phis, 0.5 * theta, 80) < 1e-12
+    off = cyclic_mismatch(outline([moved(drv_loop, 7, 2e-9)]), dvn, phis, 0.5 * theta, 80)
+    assert 1.9e-9 < off < 2.1e-9
+    bent = theta.copy()
+    bent[123] += 1e-8
+    assert cyclic_mismatch(drv, dvn, phis, bent, 80) == math.inf
+    uneven = phis.copy()
+    uneven[37] += 1e-8
+    assert cyclic_mismatch(drv, dvn, uneven, theta, 80) == math.inf
+    assert cyclic_mismatch(drv, dvn, phis[:150], theta[:150], 80) == math.inf
+    assert cyclic_mismatch(drv, dvn, phis, theta, 0) == math.inf
+    two = outline([dvn_loop, 0.2 * dvn_loop[::-1]])
+    assert cyclic_mismatch(drv, two, phis, theta, 80) == math.inf
+    # the pair with that driven vertex moved is measured whole
+    pr = prove_pair([drv_loop], [moved(dvn_loop, k, 2e-9)], 75.0, d.run_law.theta, _turn_phases(40),
+                    lambda ph: 50.0 + 0 * ph, pitch_mm=math.pi * 2.5, periods=2)
+    assert pr.measured == 40 and pr.cyclic_mm == math.inf
+
+
+def test_a_repeating_pair_whose_phases_need_the_running_position_search_is_measured_whole():
+    """The circular pair with its law moved ahead (the teeth overlap at the law's position at every phase: the running
+    position searched, each search starting from the last phase's offset): it repeats, but its phases are not
+    independent, so every phase of the turn is measured, the same as without ``periods``."""
+    from propulsor.parts.noncircular_pair.pair_proof import prove_pair
+
+    _, dd = _circular()
+    d = dd.d
+    half = 0.5 * math.pi * 2.5 / 50
+    g = float(np.linspace(-half, half, 13)[7])
+    moved = lambda ph: d.run_law.theta(ph) + 2 * g
+    args = (dd.profiles[0], dd.profiles[1], 75.0, moved, _turn_phases(40), lambda ph: 50.0 + 0 * ph)
+    pr = prove_pair(*args, pitch_mm=math.pi * 2.5, periods=2)
+    assert np.all(pr.overlap_law > 1.0) and pr.jams == 0
+    assert pr.measured == 40 and pr.cyclic_mm == math.inf
+    whole = prove_pair(*args, pitch_mm=math.pi * 2.5)
+    for name, value in vars(pr).items():
+        if isinstance(value, np.ndarray):
+            assert np.array_equal(value, getattr(whole, name), equal_nan=True), name
+
+
 def test_proof_of_teeth_off_the_laws_position_runs_from_the_free_position_nearest_the_law():
     """The driver 2 g ahead of the law (g = 7/12 of the scan's span from its start, 0.0131 rad): the teeth overlap at
     the law's position; the running position is the driven wheel g further on (U = 2), where the loaded flanks touch
@@ -554,6 +666,7 @@ def test_prove_samples_phases_per_tooth_over_the_legs_at_the_mount_with_the_toot
     c = calls[0]
     assert (c.drv, c.dvn, c.L, c.name, c.pitch_mm) == ("DRV", "DVN", 75.0, "mesh", pytest.approx(math.pi * 2.5))
     assert len(c.phis) == 200 and c.phis == pytest.approx(np.arange(200) * (2 * math.pi / 200), abs=1e-15)
+    assert c.periods == 2  # generated teeth over the whole turn: the law's periods (the proof measures one if it can)
     assert c.theta(np.array([0.3, 1.1])) == pytest.approx([0.6, 2.2], abs=1e-12)
     assert c.r_ref(np.array([0.3, 1.1])) == pytest.approx([75.0 * 2 / 3, 50.0], rel=1e-9)
     assert said == ["generated: proof over the whole driven turn, 200 phases"]
@@ -568,7 +681,9 @@ def test_prove_samples_phases_per_tooth_over_the_legs_at_the_mount_with_the_toot
     rep = Reporter(said.append)
     prove(_stub_design(method="sectors", z_H=36), 4, 3, rep, 76.5)
     c = calls[1]
-    assert c.L == 76.5 and c.pitch_mm == 7.25 and len(c.phis) == 108
+    assert c.L == 76.5 and c.pitch_mm == 7.25 and len(c.phis) == 108 and c.periods == 1
+    prove(_stub_design(method="sectors", z_H=36), 4, 4)
+    assert calls.pop().periods == 1  # the papers' sector teeth: measured whole
     assert c.phis == pytest.approx(np.arange(108) * (3 * math.pi / 2 / 108), abs=1e-15)
     assert said == ["sectors: proof over 3/4 of the driven turn, 108 phases",
                     "sectors: proof over 3/4 of the driven turn: phase 0/108"]
@@ -578,6 +693,7 @@ def test_prove_samples_phases_per_tooth_over_the_legs_at_the_mount_with_the_toot
     said.clear()
     prove(_stub_design(kind="walking", z_H=80), 4, 1, said.append)
     assert said == ["generated: proof over 1 leg(s), 80 phases"] and len(calls[2].phis) == 80
+    assert calls[2].periods == 1
     assert calls[2].phis[-1] == pytest.approx(79 * (math.pi / 2) / 80)
     said.clear()
     prove(_stub_design(kind="walking", z_H=81), 4, 4, said.append, 0.0)

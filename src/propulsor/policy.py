@@ -317,6 +317,10 @@ TOOTH_HEIGHT_MIN_SHARE = 0.1
 #: window of phases this wide (rad of the driven wheel) to what the driver can reach during it; the values do not
 #: depend on it (the crops hold every vertex within reach), only the time
 PAIR_PROOF_WINDOW_RAD = 0.4
+#: a pair's whole-cycle proof measures one period of its law where both outlines repeat under a period's turns to this
+#: (mm, at every vertex; parts/noncircular_pair/pair_proof.cyclic_mismatch): a wheel cut as one lobe and patterned
+#: repeats to rounding (~1e-13 mm), one cut tooth by tooth to the B-spline fits' 1e-5 mm, and is measured whole
+CYCLIC_TOL_MM = 1e-9
 
 # --- contact events of a gear pair (checks/motion/contact_events.py) ------------------------------------------
 #: the loaded contact is sampled every this many degrees of the driver (the resolution of the independent contact

@@ -111,7 +111,8 @@ def law_notes(w, d, pr, p, mount, s) -> None:
         f"{p.tip_land_min_module:g} m; undercut teeth: {d.driver.undercut_teeth + d.driven.undercut_teeth}; backlash "
         f"j_n = {p.backlash_mm:g} mm as tooth thinning j_n/(2 cos alpha) per gear.")
     w.add_note(
-        f"Proof on the finished outlines ({s['steps']} phases over the whole driven turn, gears at {mount:.4f} mm): "
+        f"Proof on the finished outlines ({s['steps']} phases over the whole driven turn, {pr.measured_text()}, "
+        f"gears at {mount:.4f} mm): "
         f"overlap at the law's positions max {s['overlap_law_max_mm2']:.4g} mm^2; jams {s['jams']}; transmission "
         f"error {s['te_min_rad']:.4e} .. {s['te_max_rad']:.4e} rad (peak-to-peak {s['te_pp_rad']:.3e} rad); backlash "
         f"{s['backlash_min_mm']:.4f} .. {s['backlash_max_mm']:.4f} mm; tooth pairs in contact min "

@@ -234,6 +234,7 @@ def write_notes(w, d, pr, other, pr_other, other_note, p, mount):
             f"Even with ideal teeth the staircase ratio leaves a hub speed ripple of {_pct(d.ripple.ripple)}.")
     w.add_note(
         f"Proof on the finished outlines ({d.method}, {s['steps']} phases over the whole driven turn, "
+        f"{pr.measured_text()}, "
         f"{p.proof_phases_per_tooth} per driven tooth, manifold3d booleans, gears at the installed centre "
         f"distance {mount:.4f} mm): overlap at the law's positions max "
         f"{s['overlap_law_max_mm2']:.4g} mm^2 ({s['overlap_law_steps']} phases); phases without a free position "

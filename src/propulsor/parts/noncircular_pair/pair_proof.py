@@ -52,6 +52,15 @@ class PairProof:
     pairs_coast: np.ndarray
     r_ref: np.ndarray            #: driven pitch radius at phi (mm), for backlash in mm
     name: str
+    #: the phases measured: all, or the first period's where the pair repeats (cyclic symmetry: each later phase its
+    #: like there, turned; ``prove_pair``'s ``periods``)
+    measured: int = -1
+    #: the greatest distance of an outline vertex turned by a period from the vertex it lands on (mm; inf: not used)
+    cyclic_mm: float = math.inf
+
+    def __post_init__(self):
+        if self.measured < 0:
+            self.measured = len(self.phi)
 
     @property
     def te_drive(self) -> np.ndarray:
@@ -97,6 +106,13 @@ class PairProof:
         good = dx > 0
         return (0.5 * (x[1:] + x[:-1]))[good], dy[good] / dx[good]
 
+    def measured_text(self) -> str:
+        """How the phases were measured, for a report: every one, or the first period's with the repeat found."""
+        if self.measured >= len(self.phi):
+            return "each measured"
+        return (f"the first period's {self.measured} measured, each later one its like there turned: both outlines "
+                f"repeat under a period's turns to {self.cyclic_mm:.1e} mm")
+
     def summary(self) -> dict:
         te = self.te_drive[np.isfinite(self.te_drive)]
         bl = self.backlash_mm[np.isfinite(self.backlash_mm)]
@@ -115,6 +131,39 @@ class PairProof:
             "contact_pairs_mean": float(pd.mean()) if len(pd) else nan,
             "jams": self.jams,
         }
+
+
+def _turned_onto(P: np.ndarray, angle: float) -> float:
+    """The greatest distance (mm) of a vertex of the closed polyline ``P`` turned by ``angle`` about the origin from the
+    vertex it lands on: the one the first lands nearest to, and each next in the polyline's order (inf where the
+    turned polyline is not the polyline renumbered)."""
+    if len(P) == 0:
+        return math.inf
+    c, s = math.cos(angle), math.sin(angle)
+    Q = np.column_stack([c * P[:, 0] - s * P[:, 1], s * P[:, 0] + c * P[:, 1]])
+    k = int(np.argmin((P[:, 0] - Q[0, 0]) ** 2 + (P[:, 1] - Q[0, 1]) ** 2))
+    return float(np.max(norms(Q - np.roll(P, -k, axis=0))))
+
+
+def cyclic_mismatch(drv, dvn, phis: np.ndarray, theta: np.ndarray, M: int) -> float:
+    """How far the pair is from repeating every ``M`` phases (mm): the greatest vertex distance of
+    :func:`_turned_onto` for the driven outline turned by the driven angle of M phases and the driver's by its law
+    angle over them, each a single loop; inf where the phases are not even over the turn or the law does not repeat
+    (theta over each later period the first's plus the driver's turn, to 1e-9 rad).  The proof of the first M phases
+    is then the proof of every period to within it (a wheel cut as one lobe and patterned: rounding, ~1e-13 mm)."""
+    N = len(phis)
+    if M <= 0 or N % M or len(drv.loops) != 1 or len(dvn.loops) != 1:
+        return math.inf
+    reps = N // M
+    dphi, dth = float(phis[M] - phis[0]), float(theta[M] - theta[0])
+    if abs(reps * dphi - 2 * math.pi) > 1e-9:
+        return math.inf
+    j = np.repeat(np.arange(reps), M)
+    k = np.tile(np.arange(M), reps)
+    if np.max(np.abs(phis - phis[k] - j * dphi)) > 1e-9 or np.max(np.abs(theta - theta[k] - j * dth)) > 1e-9:
+        return math.inf
+    # the driven wheel turns by -phi, the driver by +theta: each must map onto itself under its turn of a period
+    return max(_turned_onto(dvn.points, -dphi), _turned_onto(drv.points, dth))
 
 
 def _axis_annulus(o) -> None:
@@ -137,13 +186,21 @@ def _outer_only(profile):
 
 
 def prove_pair(driver_profile, driven_profile, L: float, theta_of_phi, phis, r_ref, *, name: str = "mesh",
-               windows: int | None = None, pitch_mm: float | None = None, tick=None, on_jam=None) -> PairProof:
+               windows: int | None = None, pitch_mm: float | None = None, tick=None, on_jam=None,
+               periods: int = 1) -> PairProof:
     """Full-cycle proof of the pair (see the module docstring).  ``theta_of_phi``: vectorised law
     theta(phi) (rad); ``r_ref``: vectorised driven pitch radius r_H(phi) (mm); ``pitch_mm``:
     tooth pitch on the pitch curve (sets the search span of non-conjugate teeth); ``tick(done)``: told the
     phases done after each window (progress only); ``on_jam()``: called once, as soon as a phase is found jammed
     (no free position: the pair has no running position there, whatever the other phases give), so that work that
-    needs a running pair stops then, not after the whole proof."""
+    needs a running pair stops then, not after the whole proof.
+
+    ``periods``: the law's periods over ``phis`` (a whole turn sampled evenly).  Where both outlines repeat under the
+    turns of one period (the driven wheel's 2 pi / periods, the driver's theta over it) to ``policy.CYCLIC_TOL_MM`` at
+    every vertex (:func:`cyclic_mismatch`; a wheel cut as one lobe and patterned does, to rounding) and the law does
+    too, the phases of the first period are measured and each later phase is its like there, turned (cyclic symmetry:
+    the same positions of the same edges); unless a phase of that period needed the search for a running position
+    (teeth not conjugate), whose start carries over from phase to phase: then every phase is measured."""
     jammed = False
 
     def jam():
@@ -174,63 +231,89 @@ def prove_pair(driver_profile, driven_profile, L: float, theta_of_phi, phis, r_r
     rho = np.linspace(max(drv.r_min, 1e-3), reach, 64)
     c = np.clip(((r_dvn + 1.0) ** 2 - L * L - rho * rho) / (2 * L * rho), -1.0, 1.0)
     hw_drv = float(np.max(math.pi - np.arccos(c))) + 0.05
+    lens = _MeetCrops(drv, dvn, L, reach + 1.0, r_dvn + 1.0)
+
+    def run(phis, theta, rr, windows, tick):
+        """The phases ``phis`` measured: (overlap, offset, least, pdrv, pcst, nd, nc, whether a phase needed the
+        search for a running position)."""
+        N = len(phis)
+        edges = np.linspace(phis.min(), phis.max() + 1e-12, windows + 1)
+        overlap = np.zeros(N)
+        offset = np.zeros(N)
+        least = np.zeros(N)
+        pdrv = np.full(N, np.nan)
+        pcst = np.full(N, np.nan)
+        nd = np.zeros(N, int)
+        nc = np.zeros(N, int)
+        prev, warm, searched = 0.0, False, False
+        for w in range(windows):
+            idx = np.nonzero((phis >= edges[w]) & (phis < edges[w + 1]))[0]
+            if len(idx) == 0:
+                continue
+            loops = crop_to_sector(dvn.section, phis[idx].min() - margin_a, phis[idx].max() + margin_a, r_in,
+                                   r_dvn + 1.0)
+            crop = outline(loops)
+            _axis_annulus(crop)
+            # the driver part that can come within the driven wheel's outer radius during the window
+            tha, thb = float(theta[idx].min()), float(theta[idx].max())
+            dcrop = outline(crop_to_sector(drv.section, math.pi - thb - hw_drv, math.pi - tha + hw_drv,
+                                          r_in_drv, reach + 1.0))
+            _axis_annulus(dcrop)
+            tmap = {float(p): float(t) for p, t in zip(phis[idx], theta[idx])}
+            tr = transmission_sweep(dcrop, (L, 0.0), crop, (0.0, 0.0), lambda p: tmap[float(p)], phis[idx],
+                                    r_ref=rr[idx], name=name)
+            overlap[idx] = tr.overlap_area
+            for j, k in enumerate(idx):
+                if tr.overlap_area[j] <= policy.OVERLAP_AREA_TOL_MM2:
+                    pdrv[k] = phis[k] - tr.free_back[j]
+                    pcst[k] = phis[k] + tr.free_fwd[j]
+                    nd[k], nc[k] = tr.pairs_drive[j], tr.pairs_coast[j]
+                    prev, warm = 0.0, False
+                    continue
+                # not conjugate: the running position nearest the previous offset
+                searched = True
+                crops = lambda h, p_mid=float(phis[k]) + prev, th=float(theta[k]): lens.at(dcrop, crop, p_mid, th,
+                                                                                           h)
+                off, area = _least_overlap(dcrop, crop, L, float(phis[k]), float(theta[k]), prev, search, warm,
+                                           crops)
+                offset[k], least[k] = off, area
+                prev, warm = off, True
+                if area > policy.OVERLAP_AREA_TOL_MM2:
+                    jam()
+                    continue  # jammed: no free position near the law's
+                p = np.array([phis[k] + off])
+                t1 = transmission_sweep(dcrop, (L, 0.0), crop, (0.0, 0.0), lambda _p, t=float(theta[k]): t, p,
+                                        r_ref=rr[k], name=name)
+                if t1.overlap_area[0] > policy.OVERLAP_AREA_TOL_MM2:
+                    least[k] = t1.overlap_area[0]
+                    jam()
+                    continue
+                pdrv[k] = phis[k] + off - t1.free_back[0]
+                pcst[k] = phis[k] + off + t1.free_fwd[0]
+                nd[k], nc[k] = t1.pairs_drive[0], t1.pairs_coast[0]
+            if tick is not None:
+                tick(int(idx.max()) + 1)
+        return overlap, offset, least, pdrv, pcst, nd, nc, searched
+
     if windows is None:  # 16 a turn: each crop's cost grows with its span far less than in proportion (the reach
         # on either side is the most of it); 0.1 rad windows (63) gave the same values, to the bit, at 1.25 times the
         # time over the proofs of make's ten pairs
         windows = max(1, int(round(2 * math.pi / policy.PAIR_PROOF_WINDOW_RAD)))
-    edges = np.linspace(phis.min(), phis.max() + 1e-12, windows + 1)
-    overlap = np.zeros(N)
-    offset = np.zeros(N)
-    least = np.zeros(N)
-    pdrv = np.full(N, np.nan)
-    pcst = np.full(N, np.nan)
-    nd = np.zeros(N, int)
-    nc = np.zeros(N, int)
-    prev, warm = 0.0, False
-    lens = _MeetCrops(drv, dvn, L, reach + 1.0, r_dvn + 1.0)
-    for w in range(windows):
-        idx = np.nonzero((phis >= edges[w]) & (phis < edges[w + 1]))[0]
-        if len(idx) == 0:
-            continue
-        loops = crop_to_sector(dvn.section, phis[idx].min() - margin_a, phis[idx].max() + margin_a, r_in, r_dvn + 1.0)
-        crop = outline(loops)
-        _axis_annulus(crop)
-        # the driver part that can come within the driven wheel's outer radius during the window
-        tha, thb = float(theta[idx].min()), float(theta[idx].max())
-        dcrop = outline(crop_to_sector(drv.section, math.pi - thb - hw_drv, math.pi - tha + hw_drv,
-                                      r_in_drv, reach + 1.0))
-        _axis_annulus(dcrop)
-        tmap = {float(p): float(t) for p, t in zip(phis[idx], theta[idx])}
-        tr = transmission_sweep(dcrop, (L, 0.0), crop, (0.0, 0.0), lambda p: tmap[float(p)], phis[idx],
-                                r_ref=rr[idx], name=name)
-        overlap[idx] = tr.overlap_area
-        for j, k in enumerate(idx):
-            if tr.overlap_area[j] <= policy.OVERLAP_AREA_TOL_MM2:
-                pdrv[k] = phis[k] - tr.free_back[j]
-                pcst[k] = phis[k] + tr.free_fwd[j]
-                nd[k], nc[k] = tr.pairs_drive[j], tr.pairs_coast[j]
-                prev, warm = 0.0, False
-                continue
-            # not conjugate: the running position nearest the previous offset
-            crops = lambda h, p_mid=float(phis[k]) + prev, th=float(theta[k]): lens.at(dcrop, crop, p_mid, th, h)
-            off, area = _least_overlap(dcrop, crop, L, float(phis[k]), float(theta[k]), prev, search, warm, crops)
-            offset[k], least[k] = off, area
-            prev, warm = off, True
-            if area > policy.OVERLAP_AREA_TOL_MM2:
-                jam()
-                continue  # jammed: no free position near the law's
-            p = np.array([phis[k] + off])
-            t1 = transmission_sweep(dcrop, (L, 0.0), crop, (0.0, 0.0), lambda _p, t=float(theta[k]): t, p,
-                                    r_ref=rr[k], name=name)
-            if t1.overlap_area[0] > policy.OVERLAP_AREA_TOL_MM2:
-                least[k] = t1.overlap_area[0]
-                jam()
-                continue
-            pdrv[k] = phis[k] + off - t1.free_back[0]
-            pcst[k] = phis[k] + off + t1.free_fwd[0]
-            nd[k], nc[k] = t1.pairs_drive[0], t1.pairs_coast[0]
-        if tick is not None:
-            tick(int(idx.max()) + 1)
+    M = N // periods if periods > 1 and N % periods == 0 else N
+    mismatch = cyclic_mismatch(drv, dvn, phis, theta, M) if M < N else math.inf
+    if mismatch <= policy.CYCLIC_TOL_MM:
+        part = run(phis[:M], theta[:M], rr[:M], max(1, int(round(windows / periods))), tick)
+        if not part[-1]:
+            reps = N // M
+            overlap, offset, least, _, _, nd, nc = (np.tile(a, reps) for a in part[:7])
+            # each later phase the first period's turned: its driven angles moved by the phases' own difference
+            back, fwd = part[3] - phis[:M], part[4] - phis[:M]
+            pdrv = np.concatenate([part[3]] + [phis[j * M:(j + 1) * M] + back for j in range(1, reps)])
+            pcst = np.concatenate([part[4]] + [phis[j * M:(j + 1) * M] + fwd for j in range(1, reps)])
+            if tick is not None:
+                tick(N)
+            return PairProof(phis, theta, overlap, offset, least, pdrv, pcst, nd, nc, rr, name, M, mismatch)
+    overlap, offset, least, pdrv, pcst, nd, nc, _ = run(phis, theta, rr, windows, tick)
     return PairProof(phis, theta, overlap, offset, least, pdrv, pcst, nd, nc, rr, name)
 
 

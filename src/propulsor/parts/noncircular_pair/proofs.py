@@ -25,7 +25,8 @@ def prove(d: Design, phases_per_tooth: int, legs: int = 4, progress=lambda s: No
     """Proof of the pair over ``legs`` legs (4 = the whole driven turn) with
     ``phases_per_tooth`` phases per driven tooth (:mod:`.pair_proof`), the gears at the
     installed centre distance ``mount`` (default the design L); ``on_jam()``: called at the first phase found
-    jammed (``prove_pair``'s)."""
+    jammed (``prove_pair``'s).  Generated teeth over the whole turn: the first of the law's periods measured where
+    both outlines repeat under its turns (``prove_pair``'s ``periods``: the wheels cut as one lobe and patterned)."""
     from .pair_proof import prove_pair
 
     N = phases_per_tooth * d.z_H * legs // 4
@@ -40,8 +41,10 @@ def prove(d: Design, phases_per_tooth: int, legs: int = 4, progress=lambda s: No
         span = "the whole driven turn" if legs == 4 else f"{legs}/4 of the driven turn"
     phase = f"{d.method}: proof over {span}"
     progress(f"{phase}, {N} phases")
+    periods = int(getattr(d.run_law, "periods", 1) or 1) if d.method == "generated" and legs == 4 else 1
     return prove_pair(d.driver.profile, d.driven.profile, mount or d.L, d.run_law.theta, phis, pc.r_H,
-                      name="mesh", pitch_mm=pitch, tick=counter(progress, phase, N, "phase"), on_jam=on_jam)
+                      name="mesh", pitch_mm=pitch, tick=counter(progress, phase, N, "phase"), on_jam=on_jam,
+                      periods=periods)
 
 
 def _other(d: Design) -> str:
