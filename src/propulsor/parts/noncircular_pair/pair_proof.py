@@ -14,6 +14,10 @@ radius at every phase of the window, so it can neither overlap nor touch.  The c
 artificial edges lie outside that reach, so the values do not depend on the windows (16 a turn:
 ``policy.PAIR_PROOF_WINDOW_RAD``).
 
+A pair that repeats every period of its law (a wheel cut as one lobe and patterned) is measured over its first
+period, each later phase taken as its like there turned, once both outlines are found to repeat under a period's
+turns to ``policy.CYCLIC_TOL_MM`` at every vertex (:func:`cyclic_mismatch`; ``prove_pair``'s ``periods``).
+
 Teeth that are not conjugate (the papers' sector method) may overlap at the law's position.
 There the running position is searched: the driven offset of least overlap area within half
 a pitch of the previous phase's offset (13-point scan refined by a bounded Brent search);
