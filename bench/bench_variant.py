@@ -397,6 +397,23 @@ outlines sampled at 1e-4), the first lobe the same floats; every derived value o
 at most 3.2e-10 relative (speed_step_max of the 2-lobe elliptical pair); make's other 12 part files identical.  Where
 a seed-002 variant's 1.20 CPU s go now (process clock around each step, four variants): the as-built contact 0.63 (its
 compiled track 0.58), the design 0.26 (the driven wheel's lobe 0.17, the driver 0.09), the whole-cycle proof 0.23.
+
+2026-12-05, a new session (2 cores, idle; from 40f0383).  The whole-cycle proof by cyclic symmetry (af312d4): over
+the whole turn, generated teeth whose outlines repeat under a period's turns to 1e-9 mm at every vertex (the make's
+seven pairs of more than one period: 2.6e-14 to 5.7e-14 mm; ``pair_proof.cyclic_mismatch``) have the phases of the
+law's first period measured and each later one taken as its like turned; measured whole where a phase needs the
+running-position search.  The proof alone, measured whole and so in turn in one process: seed 002 0.226 -> 0.129
+CPU s, seed 000 0.320 -> 0.129; what is left of it, cProfile: the outlines' polylines sampled from the B-splines
+0.05 s (592 pieces, paid once a variant: the samples go to the contact with the design), the measured period's
+sweep 0.03, its crops and outlines 0.02.  Against measuring every phase: te within 3e-15 rad and backlash 1e-13 mm,
+but the 3-lobe Fourier pair's 1.5e-10 rad and 1e-8 mm, which the old whole-turn proof showed between its own
+periods: its crops are manifold3d booleans, which round each vertex on a fixed grid (a few 1e-9 mm, a vertex's
+rounding depending on where it lies).  The variants (least of four, two parts): the seed-002 pair 1.22 -> 1.08 CPU
+s, its Fourier form 1.82 -> 1.68.  Where the seed-002 variant's 1.08 s go now (py-spy, ten variants): the contact's
+compiled search 47 % (0.50 s), the design 26 % (0.28), the proof 5.5 % (0.06), the contact's Python around the
+search 5 %, the pickle round trip of the design to each direction 1.6 %.  Not done: the patterned pieces' samples
+taken as the cut lobe's turned (about 0.035 s a variant; the polylines, and so every contact value, would change in
+their last digits).
 """
 
 from __future__ import annotations
