@@ -377,7 +377,8 @@ def kit(p: NoncircularPairParams, printer: Printer, scale: float | None = None, 
     say("kit: the hand on the crank")
     hand, hand_text = _hand_on_crank(q, kd, proof, r_h, progress)
     checks = [Check.at_most(f"{prefix}.overlap_area", s["overlap_law_max_mm2"], 1e-6, "mm^2",
-                            f"printed outlines over {s['steps']} phases of the whole cycle")]
+                            f"printed outlines over {s['steps']} phases of the whole cycle, "
+                            f"{proof.measured_text()}")]
     checks += checks_common(proof, prefix)
     checks += printed_tol[0]
     checks += hand.checks() if hand is not None else []
