@@ -104,13 +104,13 @@ rounds: 60.42 / 59.51 s wall (110.87 / 108.89 user + 4.8 / 4.7 sys) against 57.5
 bench_variant.py); the new list bench/hashes/all_19_make_at_cf02913.sha256, every other file as at 9ac9bbf; two makes
 of the new tree gave the same 636 files.
 2026-12-05, a new session (2 cores, idle): the whole-cycle proof of a pair that repeats measured over its law's first
-period (af312d4; bench_variant.py).  make from clean, the old tree (PYTHONPATH to a worktree of 40f0383) and the new in
+period (943c444; bench_variant.py).  make from clean, the old tree (PYTHONPATH to a worktree of d990ae3) and the new in
 turn, two rounds: 59.96 / 58.18 s wall (111.01 / 106.74 user + 4.5 / 4.3 sys) against 57.71 / 57.51 (105.70 / 105.18
 user + 4.4 / 4.6 sys): -1.5 s wall, -3 user s.  What changed: the seven pairs of more than one period's
 transmission.csv and anim_pair.csv in their last digits, seed 002's animation (its caption's place of least backlash:
 135 -> 315 deg, a tie one period apart), the 3-lobe Fourier pair's transmission-error plot (35 pixels), every pair's
 report (the proof's note says how its phases were measured) and manifest; the new list
-bench/hashes/all_19_make_at_37c6a5c.sha256, every other file as at cf02913; two makes of the new tree gave the same
+bench/hashes/all_19_make_at_cf1e11f.sha256, every other file as at cf02913; two makes of the new tree gave the same
 636 files.
 """
 

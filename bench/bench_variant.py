@@ -398,7 +398,7 @@ at most 3.2e-10 relative (speed_step_max of the 2-lobe elliptical pair); make's 
 a seed-002 variant's 1.20 CPU s go now (process clock around each step, four variants): the as-built contact 0.63 (its
 compiled track 0.58), the design 0.26 (the driven wheel's lobe 0.17, the driver 0.09), the whole-cycle proof 0.23.
 
-2026-12-05, a new session (2 cores, idle; from 40f0383).  The whole-cycle proof by cyclic symmetry (af312d4): over
+2026-12-05, a new session (2 cores, idle; from d990ae3).  The whole-cycle proof by cyclic symmetry (943c444): over
 the whole turn, generated teeth whose outlines repeat under a period's turns to 1e-9 mm at every vertex (the make's
 seven pairs of more than one period: 2.6e-14 to 5.7e-14 mm; ``pair_proof.cyclic_mismatch``) have the phases of the
 law's first period measured and each later one taken as its like turned; measured whole where a phase needs the

@@ -196,10 +196,10 @@ the design forks beside the kernel's import).
 2026-12-05, a later session (2 cores, idle; cf02913, the wheels of equal lobes cut as one and patterned): ncgears
 33.60 s wall (35.43 CPU s), peak 289 MiB; ours 5.82 s wall (9.32 CPU s), peak 633 MiB: wall ratio 0.173, CPU ratio
 0.263 (at 7124cb8 the same day: 0.191 / 0.297); ``ncg_elliptical.toml`` 4.84 s wall (7.76 CPU s).
-2026-12-05, a new session (2 cores, idle; 0e20cda, the whole-cycle proof over one period of a pair that repeats): two
+2026-12-05, a new session (2 cores, idle; a59dbf9, the whole-cycle proof over one period of a pair that repeats): two
 runs, ncgears 35.36 / 34.78 s wall (37.20 / 36.58 CPU s), peak 291 / 289 MiB; ours 6.94 / 6.28 s wall (10.67 / 9.86 CPU
 s), peak 637 / 636 MiB: wall ratio 0.196 / 0.181, CPU ratio 0.287 / 0.269 (the machine slower than the session
-before's, whose same build took 5.82 s); ``ncg_elliptical.toml`` 5.83 s wall (9.10 CPU s).  Our build alone, 40f0383
+before's, whose same build took 5.82 s); ``ncg_elliptical.toml`` 5.83 s wall (9.10 CPU s).  Our build alone, d990ae3
 in a worktree and the new tree in turn, three rounds: 6.06 / 6.32 / 6.24 -> 5.66 / 6.11 / 6.13 s wall, 9.98 / 10.22 /
 10.28 -> 9.52 / 10.14 / 10.01 CPU s (user + sys).
 """
