@@ -383,9 +383,12 @@ def test_a_repeating_pair_whose_phases_need_the_running_position_search_is_measu
     g = float(np.linspace(-half, half, 13)[7])
     moved = lambda ph: d.run_law.theta(ph) + 2 * g
     args = (dd.profiles[0], dd.profiles[1], 75.0, moved, _turn_phases(40), lambda ph: 50.0 + 0 * ph)
-    pr = prove_pair(*args, pitch_mm=math.pi * 2.5, periods=2)
+    ticks = []
+    pr = prove_pair(*args, pitch_mm=math.pi * 2.5, periods=2, tick=ticks.append)
     assert np.all(pr.overlap_law > 1.0) and pr.jams == 0
     assert pr.measured == 40 and pr.cyclic_mm == math.inf
+    # the first period's windows told, then the whole turn's past them: the progress never goes back
+    assert ticks == sorted(set(ticks)) and ticks[-1] == 40 and 20 in ticks
     whole = prove_pair(*args, pitch_mm=math.pi * 2.5)
     for name, value in vars(pr).items():
         if isinstance(value, np.ndarray):

@@ -304,6 +304,13 @@ def prove_pair(driver_profile, driven_profile, L: float, theta_of_phi, phis, r_r
         # time over the proofs of make's ten pairs
         windows = max(1, int(round(2 * math.pi / policy.PAIR_PROOF_WINDOW_RAD)))
     M = N // periods if periods > 1 and N % periods == 0 else N
+    if tick is not None and M < N:  # the first period's windows, then maybe the whole turn's: told only what is new
+        told, outer = [0], tick
+
+        def tick(done):
+            if done > told[0]:
+                told[0] = done
+                outer(done)
     mismatch = cyclic_mismatch(drv, dvn, phis, theta, M) if M < N else math.inf
     if mismatch <= policy.CYCLIC_TOL_MM:
         part = run(phis[:M], theta[:M], rr[:M], max(1, int(round(windows / periods))), tick)
