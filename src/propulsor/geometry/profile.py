@@ -157,8 +157,19 @@ class Spline:
         return p
 
     def _sample(self, chord_tol: float) -> np.ndarray:
+        """The samples of :meth:`sample`: scipy's B-spline evaluation itself (``_dierckx.evaluate_spline``, what
+        ``BSpline.__call__`` hands its points to, without building the BSpline and its checks at every piece: the
+        same floats; tests/test_profile_sample_fast.py holds it to ``BSpline``)."""
+        from scipy.interpolate import _dierckx
+
         t0, t1 = self.knots[self.degree], self.knots[-self.degree - 1]
-        bs = self._bs
+        t = np.ascontiguousarray(self.knots, dtype=np.float64)
+        c = np.ascontiguousarray(self.poles, dtype=np.float64).reshape(len(self.poles), -1)
+        k = int(self.degree)
+
+        def bs(x):
+            return _dierckx.evaluate_spline(t, c, k, np.ascontiguousarray(x, dtype=np.float64), 0, False)
+
         n = max(8, 4 * len(self.poles))
         while True:
             u = np.linspace(t0, t1, n)
