@@ -1200,3 +1200,31 @@ def test_a_searched_free_position_that_the_sweep_finds_overlapping_is_a_jam_of_t
     assert len(single) == 4 and pr.jams == 1 and pr.least_overlap.tolist() == [5.0, 0.0, 0.0, 0.0]
     assert math.isnan(pr.phi_drive[0]) and math.isnan(pr.phi_coast[0]) and pr.pairs_drive[0] == 0
     assert np.all(np.isfinite(pr.phi_drive[1:])) and pr.offset[0] == g
+
+
+def test_a_contact_direction_counts_its_positions_only_where_a_counter_listens(monkeypatch):
+    """``as_built.contact_direction`` hands the job's tick to the contact search only in a job started with a counter
+    (``parallel.listening``): a study's variant, whose jobs have none, skips the counting of its ten thousand
+    positions; a build's job, started with one, is told each."""
+    from propulsor import job_ticks, parallel
+    from propulsor.parts.noncircular_pair import as_built
+
+    seen = []
+    monkeypatch.setattr(as_built, "pair_outlines", lambda d, mount: "PAIR")
+    monkeypatch.setattr(as_built, "period_span", lambda d: 1.5)
+
+    def resolve(pair, theta, phi0, phi1, direction, step_driver_rad=None, tick=None):
+        seen.append(tick)
+        if tick is not None:
+            tick(7, 9)
+        return (pair, phi0, phi1, direction)
+
+    monkeypatch.setattr(as_built, "resolve_contact", resolve)
+    d = SimpleNamespace(run_law=SimpleNamespace(theta=None))
+    assert job_ticks._TICK is None and not parallel.listening()
+    assert as_built.contact_direction(d, 75.0, 1) == ("PAIR", 0.0, 1.5, 1) and seen == [None]
+    told = []
+    monkeypatch.setattr(job_ticks, "_TICK", lambda done, total: told.append((done, total)))
+    assert parallel.listening()
+    as_built.contact_direction(d, 75.0, -1)
+    assert seen[-1] is parallel.tick and told == [(7, 9)]

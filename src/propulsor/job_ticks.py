@@ -18,6 +18,12 @@ _TICK = None
 _TICK_LAST = [-float("inf")]
 
 
+def listening() -> bool:
+    """Whether :func:`tick` goes anywhere in this process (a job started with a counter): a job that counts thousands
+    of steps may skip the counting where it does not."""
+    return _TICK is not None
+
+
 def tick(done: int, total: int) -> None:
     """A job's progress, `done` of `total`, to the build that started it with a counter (:func:`.parallel.start`); from
     a worker at most ten a second (and the last).  Nothing otherwise."""

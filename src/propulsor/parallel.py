@@ -30,7 +30,7 @@ import weakref
 from concurrent.futures import ProcessPoolExecutor
 
 from . import job_ticks
-from .job_ticks import callback_lock, event_pipe, forward_events, result, tick  # noqa: F401  (the interface)
+from .job_ticks import callback_lock, event_pipe, forward_events, listening, result, tick  # noqa: F401  (the interface)
 from .process_slots import (Jobserver, _give_slots, _take_slots, can_fork, jobs_budget, make_jobs,  # noqa: F401
                             open_slots_to_workers, share_slots, slots_shared, threads_ok, worker_cap)
 

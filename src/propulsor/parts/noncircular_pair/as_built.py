@@ -165,11 +165,12 @@ def pair_outlines(d, mount: float) -> PairOutlines:
 
 def contact_direction(d, mount: float, direction: int, step_driver_rad: float | None = None) -> ContactLaw:
     """One direction's resolved contact over one period of the pair (a worker job; its sampled positions
-    counted to the build that started it with a counter: ``parallel.tick``)."""
-    from ...parallel import tick
+    counted to the build that started it with a counter: ``parallel.tick``; not counted where none listens, as in a
+    study's variant)."""
+    from ...parallel import listening, tick
 
     return resolve_contact(pair_outlines(d, mount), d.run_law.theta, 0.0, period_span(d), direction,
-                           step_driver_rad=step_driver_rad, tick=tick)
+                           step_driver_rad=step_driver_rad, tick=tick if listening() else None)
 
 
 def _hub(d, c: ContactLaw) -> HubSpeed:
