@@ -413,7 +413,14 @@ s, its Fourier form 1.82 -> 1.68.  Where the seed-002 variant's 1.08 s go now (p
 compiled search 47 % (0.50 s), the design 26 % (0.28), the proof 5.5 % (0.06), the contact's Python around the
 search 5 %, the pickle round trip of the design to each direction 1.6 %.  Not done: the patterned pieces' samples
 taken as the cut lobe's turned (about 0.035 s a variant; the polylines, and so every contact value, would change in
-their last digits).
+their last digits).  Then, each the same floats (make's 636 files identical to all_19_make_at_cf1e11f.sha256): a
+B-spline piece sampled by scipy's evaluation routine itself rather than through a BSpline built each piece
+(``Spline._sample``: seed 002's 592 pieces at three tolerances 0.094 -> 0.056 CPU s), and the contact's positions
+counted only where a counter listens (``parallel.listening``; both directions 0.654-0.664 -> 0.640-0.645 in one
+process).  The variants then: the seed-002 pair 1.03 / 1.02 / 1.03 / 1.03 and 1.02 / 1.04 / 1.03 / 1.02 CPU s, its
+Fourier form 1.64 / 1.60 / 1.58 / 1.64.  Where the seed-002 variant's ~1.02 s go (process clock per step): the
+contact's compiled search 0.59, the Python around it 0.05, the design 0.27, the proof 0.07, the pickle round trips of
+the jobs run in place 0.02, checks and values 0.02.
 """
 
 from __future__ import annotations
