@@ -687,6 +687,8 @@ def test_prove_samples_phases_per_tooth_over_the_legs_at_the_mount_with_the_toot
     assert c.L == 76.5 and c.pitch_mm == 7.25 and len(c.phis) == 108 and c.periods == 1
     prove(_stub_design(method="sectors", z_H=36), 4, 4)
     assert calls.pop().periods == 1  # the papers' sector teeth: measured whole
+    prove(_stub_design(z_H=41), 4, 4)
+    assert calls.pop().periods == 1  # a period's arc holding no whole teeth: no period (as_built.period_span)
     assert c.phis == pytest.approx(np.arange(108) * (3 * math.pi / 2 / 108), abs=1e-15)
     assert said == ["sectors: proof over 3/4 of the driven turn, 108 phases",
                     "sectors: proof over 3/4 of the driven turn: phase 0/108"]

@@ -41,7 +41,10 @@ def prove(d: Design, phases_per_tooth: int, legs: int = 4, progress=lambda s: No
         span = "the whole driven turn" if legs == 4 else f"{legs}/4 of the driven turn"
     phase = f"{d.method}: proof over {span}"
     progress(f"{phase}, {N} phases")
-    periods = int(getattr(d.run_law, "periods", 1) or 1) if d.method == "generated" and legs == 4 else 1
+    from .as_built import period_span
+
+    # the pair's period, as the as-built contact takes it (the law's, where its arc holds whole driven teeth)
+    periods = round(2 * math.pi / period_span(d)) if d.method == "generated" and legs == 4 else 1
     return prove_pair(d.driver.profile, d.driven.profile, mount or d.L, d.run_law.theta, phis, pc.r_H,
                       name="mesh", pitch_mm=pitch, tick=counter(progress, phase, N, "phase"), on_jam=on_jam,
                       periods=periods)
