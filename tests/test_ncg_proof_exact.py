@@ -371,6 +371,28 @@ def test_cyclic_mismatch_turns_each_outline_by_a_period_and_refuses_a_law_or_pha
     assert pr.measured == 40 and pr.cyclic_mm == math.inf
 
 
+def test_an_outline_of_five_lobes_turned_by_a_fifth_and_phases_that_do_not_start_at_zero():
+    """A chiral outline of five equal lobes (500 vertices): turned by a fifth of a turn either way every vertex lands
+    on the one 100 on (to rounding); turned 1e-7 rad more, each misses by its radius times that; turned by half a turn
+    it does not repeat.  As both wheels of a pair whose phases start at 0.01 rad (the driver two turns a driven one,
+    theta starting at 0.3): it repeats every 10 of 50 phases; with the driver of two loops, inf."""
+    from propulsor.checks.motion import outline
+    from propulsor.parts.noncircular_pair.pair_proof import _turned_onto, cyclic_mismatch
+
+    t = np.linspace(0.0, 2 * math.pi, 500, endpoint=False)
+    r = 10.0 + np.cos(5 * t) + 0.3 * np.sin(10 * t + 0.4)
+    P = np.column_stack([r * np.cos(t), r * np.sin(t)])
+    assert _turned_onto(P, 2 * math.pi / 5) < 1e-12 and _turned_onto(P, -2 * math.pi / 5) < 1e-12
+    assert 0.8e-6 < _turned_onto(P, 2 * math.pi / 5 + 1e-7) < 1.2e-6
+    assert _turned_onto(P, math.pi) > 0.1
+    assert _turned_onto(np.zeros((0, 2)), 1.0) == math.inf
+    body = outline([P])
+    phis = 0.01 + np.arange(50) * (2 * math.pi / 50)
+    theta = 2.0 * phis + 0.3
+    assert cyclic_mismatch(body, body, phis, theta, 10) < 1e-12
+    assert cyclic_mismatch(outline([P, 0.3 * P[::-1]]), body, phis, theta, 10) == math.inf
+
+
 def test_a_repeating_pair_whose_phases_need_the_running_position_search_is_measured_whole():
     """The circular pair with its law moved ahead (the teeth overlap at the law's position at every phase: the running
     position searched, each search starting from the last phase's offset): it repeats, but its phases are not
