@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pytest
 
 from propulsor import policy
 from propulsor.checks.motion import outline
@@ -84,7 +85,7 @@ def test_the_candidates_are_few_and_every_vertex_that_can_hit_is_among_them(spur
         W = FACTOR * w
         cache = cr._refresh(po.o1, po.a1, phi_a, po.hw_dvn + W + WIDEN, pa[0], cc1, cr1, po.dvn.points, cp, sp, -L,
                             ct, st, -L * ct, -L * st, W, S, *drv_t[12:16], *pa[5:11], drv_t[0], *drv_t[4:11],
-                            drv_t[3])
+                            drv_t[3], drv_t[1], drv_t[2])
         window = ce._window_nb(po.o1, po.a1, phi_a, po.hw_dvn + w)
         cands = set(cache[3][:, 1].tolist())
         assert 0 < len(cands) < 0.25 * len(window)
@@ -92,6 +93,13 @@ def test_the_candidates_are_few_and_every_vertex_that_can_hit_is_among_them(spur
                                           po.R1 + w * po.R2 + 1e-6, -L * ct, -L * st, drv_t)
         hitting = {int(v) for v, dl in zip(keep, delta) if math.isfinite(dl)}
         assert hitting <= cands
+        # each candidate within the slack of its reach by its exact distance to the driver's edges, that distance its
+        # bound (not the nearest vertex less half the longest edge: up to that much lower, more candidates)
+        chord_W = 2.0 * math.sin(0.5 * W)
+        for (x, y, lb) in cache[4]:
+            exact = _brute_distance(po.drv, x, y)
+            assert lb == pytest.approx(exact, abs=1e-12)
+            assert exact - chord_W * math.hypot(x + L * ct, y + L * st) <= S + 1e-12
 
 
 def test_the_cache_holds_only_while_the_pose_is_near_and_a_stale_one_misses_the_hit(spur):
@@ -103,13 +111,13 @@ def test_the_cache_holds_only_while_the_pose_is_near_and_a_stale_one_misses_the_
     q0 = run[5]
     _, c1, c2 = _reusing(po, cr.empty_cache(), cr.empty_cache(), q0)
     held = []
-    for k in range(1, 60):
+    for k in range(1, 120):
         dphi = 1e-4 * k
         q = (q0[0] + dphi, float(_law(q0[0] + dphi - 3e-4)) + 0.0, q0[2], q0[3])
         r, n1, n2 = _reusing(po, c1, c2, q)
         held.append(n1[0] is c1[0] and n2[0] is c2[0])
         assert r == _pruned(po, q)
-    assert held[0] and not held[-1]
+    assert held[0] and not held[-1], held.index(False) if False in held else None
     # a pose nearly two driven teeth on: the stale candidates (the held cache used as if valid) miss the fresh hit
     far = run[39]
     st = c1[0]
@@ -241,3 +249,53 @@ def test_a_bisection_starts_from_the_caches_the_sampled_run_kept_and_finds_the_f
             assert np.array_equal(a, b, equal_nan=True)
         held = sum(_data(caches[first + k][0]) == seeded[k] for k in range(len(mids)))
         assert held > 0.6 * len(mids), held
+
+
+def _brute_distance(o, px, py):
+    """The distance from (px, py) to the nearest point of every edge of outline ``o``, edge by edge."""
+    a, b = o.seg_a, o.seg_b
+    d = b - a
+    e = np.array([px, py]) - a
+    t = np.clip(np.einsum("ij,ij->i", e, d) / np.einsum("ij,ij->i", d, d), 0.0, 1.0)
+    return float(np.min(np.hypot(e[:, 0] - t * d[:, 0], e[:, 1] - t * d[:, 1])))
+
+
+def test_the_refresh_takes_the_exact_distance_to_the_mate_within_its_bound(spur):
+    """The refresh's bound of a vertex's distance to the mate (:func:`.contact_reuse._boundary_distance`) is the
+    distance to the nearest point of the mate's edges where that is within the bound, the bound where it is not
+    (never above the distance): points about the driver's vertices and off its edges' midpoints (where the nearest
+    point is an edge's inside, nearer than any vertex), from on the outline to beyond the bound."""
+    from propulsor.checks.motion.nearest import _nearest_vertex
+
+    po = _pair(spur)
+    drv_t = po._kernel_args[11:27]
+    tV, seg_b, prev, half_len, grid = drv_t[0], drv_t[1], drv_t[2], drv_t[3], drv_t[4:11]
+    rng = np.random.default_rng(7)
+    o = po.drv
+    k = rng.choice(len(tV), 300, replace=False)
+    mid = 0.5 * (o.seg_a[k] + o.seg_b[k])
+    normal = np.column_stack([o.seg_b[k, 1] - o.seg_a[k, 1], o.seg_a[k, 0] - o.seg_b[k, 0]])
+    normal /= np.hypot(normal[:, 0], normal[:, 1])[:, None]
+    off = rng.uniform(-0.3, 0.3, 300)[:, None]
+    pts = np.vstack([tV[k] + rng.uniform(-0.3, 0.3, (300, 2)), mid + off * normal])
+    inside, at_bound = 0, 0
+    for px, py in pts:
+        exact = _brute_distance(o, px, py)
+        for bound in (0.05, 0.15):
+            nn = _nearest_vertex(px, py, tV, *grid, np.inf)
+            for nearest in (nn, np.inf):
+                got = cr._boundary_distance(px, py, tV, seg_b, prev, *grid, half_len, nearest, bound)
+                if exact <= bound:
+                    assert got == pytest.approx(exact, abs=1e-12)
+                    inside += 1
+                else:
+                    assert got == bound
+                    at_bound += 1
+    assert inside > 400 and at_bound > 400
+    # off an edge's midpoint the edge is nearer than either end by up to half its length: the bound is the edge's
+    j = int(np.argmax(o.seg_len))
+    n = np.array([o.seg_b[j, 1] - o.seg_a[j, 1], o.seg_a[j, 0] - o.seg_b[j, 0]]) / o.seg_len[j]
+    p = 0.5 * (o.seg_a[j] + o.seg_b[j]) + 0.01 * n
+    ends = float(np.hypot(*(p - tV[j])))
+    assert ends > 0.02 and ends == pytest.approx(_nearest_vertex(*p, tV, *grid, np.inf))
+    assert cr._boundary_distance(*p, tV, seg_b, prev, *grid, half_len, ends, 1.0) == pytest.approx(0.01, abs=1e-12)

@@ -3,9 +3,11 @@ thousands of positions a cycle, each a fraction of a milliradian from the one be
 
 At a *refresh* pose the window's vertices (widened by an angle) are sorted into candidates, whose least distance to
 the mate's boundary is within a slack ``S`` of their reach (the chord their turn through ``W`` sweeps), and the rest.
-A candidate's distance is bounded from below by its nearest vertex of the mate (less half the mate's longest edge:
-every boundary point lies that close to a vertex), read on the mate's vertex grid; the rest are bounded per run of
-``chunk`` vertices (:func:`.contact_kernels._pruned_window`'s runs) by their least excess over their reach, ``E``.
+A vertex's distance is bounded from below by its nearest vertex of the mate less half the mate's longest edge (every
+boundary point lies that close to a vertex), read on the mate's vertex grid; where that leaves it within the slack,
+by its exact distance to the mate's edges (:func:`_boundary_distance`: up to that half length more, about half as
+many candidates a pose as the vertex bound kept); the rest are bounded per run of ``chunk`` vertices
+(:func:`.contact_kernels._pruned_window`'s runs) by their least excess over their reach, ``E``.
 
 At a later pose, a rigid motion ``M`` away in the mate's frame (a turn by ``alpha``), a vertex ``q`` of a run whose
 bounding circle (centre ``P0``, radius ``r``) was placed at ``P0`` has moved by at most
@@ -29,7 +31,7 @@ from numba.typed import List
 
 from .contact_kernels import (_bound_and_cell, _boundary_bound, _least, _placed, _side_hits, _window_bounds,
                               _window_runs, _window_size)
-from .nearest import _nearest_vertex
+from .nearest import _nearest_vertex, disc_cells
 from ...nbcache import bind
 
 
@@ -73,9 +75,44 @@ def _angle(c1, s1, c2, s2):
     return c2 * c1 - s2 * s1, s2 * c1 + c2 * s1
 
 
+@njit(cache=True, inline="always")
+def _boundary_distance(px, py, tV, seg_b, prev, ox, oy, h, nx, ny, start, items, half_len, nearest, bound):
+    """A lower bound of the distance from (px, py) to the target's edges (``tV[v]`` to ``seg_b[v]``): the distance
+    itself where it is at most ``bound``, else ``bound``.  ``nearest``: the distance to the nearest vertex (an upper
+    bound of the distance).  The nearest point within min(nearest, bound) lies on an edge whose nearer end is within
+    that plus half the edge's length (``half_len``: the longest's half), and each vertex starts one edge (v) and
+    ends another (prev[v]): the vertices that near on the grid and their two edges hold it."""
+    r = min(nearest, bound)
+    best = np.inf
+    scan = r + half_len
+    ix0, ix1, iy0, iy1 = disc_cells(px, py, scan, ox, oy, h, nx, ny)
+    r2 = scan * scan
+    for gx in range(ix0, ix1 + 1):
+        for gy in range(iy0, iy1 + 1):
+            c = gx * ny + gy
+            for kk in range(start[c], start[c + 1]):
+                v = items[kk]
+                fx, fy = px - tV[v, 0], py - tV[v, 1]
+                if fx * fx + fy * fy > r2:
+                    continue
+                for j in range(2):
+                    sg = v if j == 0 else prev[v]
+                    ax, ay = tV[sg, 0], tV[sg, 1]
+                    dx, dy = seg_b[sg, 0] - ax, seg_b[sg, 1] - ay
+                    ex, ey = px - ax, py - ay
+                    dd = dx * dx + dy * dy
+                    t = (ex * dx + ey * dy) / dd if dd > 0.0 else 0.0
+                    t = min(max(t, 0.0), 1.0)
+                    gx2, gy2 = ex - t * dx, ey - t * dy
+                    dist = math.sqrt(gx2 * gx2 + gy2 * gy2)
+                    if dist < best:
+                        best = dist
+    return min(best, bound)
+
+
 @njit(cache=True)
 def _refresh(order, angs, centre, hw_wide, chunk, cc, cr, V, c1, s1, tx, c2, s2, cx, cy, W, S, ccx, ccy, radius,
-             r_min, fx, fy, fh, fnx, fny, fvals, tV, ox, oy, h, nx, ny, start, items, half_len):
+             r_min, fx, fy, fh, fnx, fny, fvals, tV, ox, oy, h, nx, ny, start, items, half_len, seg_b, prev):
     """The cache at this pose: (state, run ids, runs' (P0x, P0y, E), candidates' (position, vertex), candidates'
     (X0x, X0y, LB0)); state: valid, centre, hw_wide, W, chord_W, cos and sin of the turn, the turning centre."""
     chord_W = 2.0 * math.sin(0.5 * min(W, math.pi))
@@ -116,6 +153,12 @@ def _refresh(order, angs, centre, hw_wide, chunk, cc, cr, V, c1, s1, tx, c2, s2,
                 near = math.isfinite(nn)
                 lb = max(lb, (nn if near else bound) - half_len)
                 near = near and lb - reach <= S
+            if near:
+                # the exact distance to the mate's edges (the nearest vertex less half the longest edge is a bound
+                # up to that half length below it): fewer candidates at the poses that reuse this one
+                lb = max(lb, _boundary_distance(qx, qy, tV, seg_b, prev, ox, oy, h, nx, ny, start, items, half_len, nn,
+                                                reach + S + 1e-6))
+                near = lb - reach <= S
             if near:
                 qp[n, 0], qp[n, 1] = p, q
                 qf[n, 0], qf[n, 1], qf[n, 2] = qx, qy, lb
@@ -183,7 +226,7 @@ def _reused(qp, qf, bounds, V, c1, s1, tx, c2, s2, cx, cy, chord):
 @njit(cache=True)
 def _side(cache, order, angs, centre, hw, w, w_hold, chunk, cc, cr, V, c1, s1, tx, c2, s2, cx, cy, S, widen_rad,
           w_factor, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny, fvals, tV, ox, oy, h, nx, ny, start, items,
-          half_len):
+          half_len, seg_b, prev):
     """The vertices of one side to search at this pose (window ``centre`` +- ``hw + w``), and the cache (refreshed
     here when it no longer holds; a refresh holds for turns up to ``w_hold`` times ``w_factor``)."""
     st, kj, kp, qp, qf = cache
@@ -191,7 +234,7 @@ def _side(cache, order, angs, centre, hw, w, w_hold, chunk, cc, cr, V, c1, s1, t
         W = max(w, w_hold) * w_factor
         st, kj, kp, qp, qf = _refresh(order, angs, centre, hw + W + widen_rad, chunk, cc, cr, V, c1, s1, tx, c2, s2,
                                       cx, cy, W, S, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny, fvals, tV, ox, oy,
-                                      h, nx, ny, start, items, half_len)
+                                      h, nx, ny, start, items, half_len, seg_b, prev)
     bounds = _window_bounds(angs, centre, hw + w)
     idx = _reused(qp, qf, bounds, V, c1, s1, tx, c2, s2, cx, cy, 2.0 * math.sin(0.5 * min(w, math.pi)))
     return idx, (st, kj, kp, qp, qf)
@@ -215,12 +258,12 @@ def first_hit_reusing(cache1, cache2, S, widen_rad, w_factor, w_hold, phi_a, the
     keep1 = R1 + w * R2 + 1e-6
     i1, cache1 = _side(cache1, o1, a1, phi_a, hw_dvn, w, w_hold, chunk, cc1, cr1, dvn_V, cp, sp, -L, ct, st, cx1, cy1,
                        S, widen_rad, w_factor, t12, t13, t14, t15, f0, f1, f2, f3, f4, f5, t0, t4, t5, t6, t7, t8,
-                       t9, t10, t3)
+                       t9, t10, t3, t1, t2)
     k1, d1, e1, q1 = _side_hits(i1, dvn_V, cp, sp, -L, ct, st, sign, w, keep1, cx1, cy1, drv_t)
     cth, sth, cph, sph = math.cos(theta), math.sin(theta), math.cos(phi_a), math.sin(phi_a)
     i2, cache2 = _side(cache2, o2, a2, math.pi - theta, hw_drv, w, w_hold, chunk, cc2, cr2, drv_V, cth, sth, L, cph,
                        sph, 0.0, 0.0, S, widen_rad, w_factor, u12, u13, u14, u15, g0, g1, g2, g3, g4, g5, u0, u4,
-                       u5, u6, u7, u8, u9, u10, u3)
+                       u5, u6, u7, u8, u9, u10, u3, u1, u2)
     k2, d2, e2, q2 = _side_hits(i2, drv_V, cth, sth, L, cph, sph, -sign, w, R2 + 1e-6, 0.0, 0.0, dvn_t)
     j1, m1 = _least(d1)
     j2, m2 = _least(d2)
