@@ -421,6 +421,20 @@ process).  The variants then: the seed-002 pair 1.03 / 1.02 / 1.03 / 1.03 and 1.
 Fourier form 1.64 / 1.60 / 1.58 / 1.64.  Where the seed-002 variant's ~1.02 s go (process clock per step): the
 contact's compiled search 0.59, the Python around it 0.05, the design 0.27, the proof 0.07, the pickle round trips of
 the jobs run in place 0.02, checks and values 0.02.
+
+2026-12-05, a third session (2 cores, idle; b47635b in a worktree against the tree, paired, least of three each).
+The as-built contact's refresh bounds each vertex the vertex bound leaves within the slack by its exact distance to
+the mate's edges (``contact_reuse._boundary_distance``), and the slack 0.10 -> 0.15 mm: the candidates a pose of the
+seed-002 contact 1 142 700 -> 570 034 over 19 604 side searches, the same 186 440 hits; both directions 0.650 ->
+0.582 CPU s.  Variants, old -> new over five rounds: the seed-002 pair 1.05 / 1.03 / 1.04 / 1.03 / 1.02 -> 1.00 / 0.98
+/ 0.99 / 0.98 / 0.99 CPU s, its Fourier form 1.57 / 1.54 -> 1.48 / 1.51.  The same process gives the same least
+within 0.01 s, separate processes within 0.05 (a process's memory layout; the machine itself drifts more).  Tried and
+not kept: each run of vertices sorted again on its own as its bound fails (the others kept: 0.634 CPU s against
+0.582, the kept runs' candidates aging, twice as many a pose); finer runs (16, 8 vertices: slower); numba's numpy
+error model (no change); a finer distance field (960 cells: the variant 0.96-0.99, but make 58.7 -> 59.5 s: each
+contact job computes its own).  Inside one direction (captured calls, timed alone): the compiled side searches 37 %,
+the refreshes 32 % (76 us each: of ~2 400 window vertices, 77 runs, 15 left to test vertex by vertex, 422 nearest-
+vertex searches 23 us, 219 exact distances 10 us), the reuse's tests 31 %.
 """
 
 from __future__ import annotations
