@@ -38,7 +38,7 @@ from ...nbcache import bind
 @njit(cache=True)
 def empty_cache():
     """A cache that holds nothing (the first pose refreshes it)."""
-    return (np.zeros(12), np.zeros(0, np.int64), np.zeros((0, 3)), np.zeros((0, 2), np.int64), np.zeros((0, 3)))
+    return (np.zeros(12), np.zeros(0, np.int64), np.zeros((0, 4)), np.zeros((0, 2), np.int64), np.zeros((0, 3)))
 
 
 @njit(cache=True)
@@ -113,13 +113,14 @@ def _boundary_distance(px, py, tV, seg_b, prev, ox, oy, h, nx, ny, start, items,
 @njit(cache=True)
 def _refresh(order, angs, centre, hw_wide, chunk, cc, cr, V, c1, s1, tx, c2, s2, cx, cy, W, S, ccx, ccy, radius,
              r_min, fx, fy, fh, fnx, fny, fvals, tV, ox, oy, h, nx, ny, start, items, half_len, seg_b, prev):
-    """The cache at this pose: (state, run ids, runs' (P0x, P0y, E), candidates' (position, vertex), candidates'
-    (X0x, X0y, LB0)); state: valid, centre, hw_wide, W, chord_W, cos and sin of the turn, the turning centre."""
+    """The cache at this pose: (state, run ids, runs' (P0x, P0y, E, |P0| + radius), candidates' (position, vertex),
+    candidates' (X0x, X0y, LB0)); state: valid, centre, hw_wide, W, chord_W, cos and sin of the turn, the turning
+    centre, the body point at the target's origin."""
     chord_W = 2.0 * math.sin(0.5 * min(W, math.pi))
     bounds = _window_bounds(angs, centre, hw_wide)
     runs = _window_runs(bounds, chunk)
     kj = np.empty(len(runs), np.int64)
-    kp = np.empty((len(runs), 3))
+    kp = np.empty((len(runs), 4))
     nq = _window_size(bounds)
     qp = np.empty((nq, 2), np.int64)
     qf = np.empty((nq, 3))
@@ -129,7 +130,7 @@ def _refresh(order, angs, centre, hw_wide, chunk, cc, cr, V, c1, s1, tx, c2, s2,
         px, py = _placed(cc[j, 0], cc[j, 1], c1, s1, tx, c2, s2)
         r = cr[j]
         kj[k] = j
-        kp[k, 0], kp[k, 1] = px, py
+        kp[k, 0], kp[k, 1], kp[k, 3] = px, py, math.sqrt(px * px + py * py) + r
         dx, dy = px - cx, py - cy
         e_run = _boundary_bound(px, py, ccx, ccy, radius, r_min, fx, fy, fh, fnx, fny, fvals) - r \
             - chord_W * (math.sqrt(dx * dx + dy * dy) + r)
@@ -169,6 +170,8 @@ def _refresh(order, angs, centre, hw_wide, chunk, cc, cr, V, c1, s1, tx, c2, s2,
     ca, sa = _angle(c1, s1, c2, s2)
     st = np.zeros(12)
     st[0], st[1], st[2], st[3], st[4], st[5], st[6], st[7], st[8] = 1.0, centre, hw_wide, W, chord_W, ca, sa, cx, cy
+    # the body point that stood at the target's origin (the placement undone: turn c2, s2 back, the shift, c1, s1)
+    st[9], st[10] = -tx * c1, tx * s1
     return st, kj, kp, qp[:n].copy(), qf[:n].copy()
 
 
@@ -187,9 +190,18 @@ def _still_valid(st, kj, kp, cc, cr, c1, s1, tx, c2, s2, cx, cy, centre, hw, w):
     sfac = 2.0 * abs(math.sin(0.5 * alpha))
     chord_W = st[4]
     dC = math.sqrt((cx - st[7]) ** 2 + (cy - st[8]) ** 2)
+    # the motion since the refresh, M(P) = R P + t in the target's frame, moves a run's centre P0 by at most
+    # |t| + sfac |P0|: a run whose excess that bound (and sfac times its radius) leaves is held without placing its
+    # centre (the runs far from the contact, most of them); 1e-9 mm to spare for the rounding, so that this test holds
+    # a run only where the exact one below would
+    ox, oy = _placed(st[9], st[10], c1, s1, tx, c2, s2)
+    T = math.sqrt(ox * ox + oy * oy)
+    base = chord_W * dC + 1e-6 + 1e-9
     for k in range(len(kj)):
         E = kp[k, 2]
         if E == np.inf:
+            continue
+        if (T + sfac * kp[k, 3]) * (1.0 + chord_W) + base < E:
             continue
         j = kj[k]
         px, py = _placed(cc[j, 0], cc[j, 1], c1, s1, tx, c2, s2)
