@@ -333,6 +333,10 @@ def main(argv: list[str] | None = None) -> int:
     for target, modules in select(targets, args.module):
         scratch = scratch_of(target, modules)
         elapsed = 0.0
+        if args.report_only and not scratch.is_dir():
+            print(f"mutation: --report-only: no results of target {target.name} to read ({scratch} does not exist: "
+                  "run it first)", file=sys.stderr)
+            return 2
         if not args.report_only:
             scratch = sync_scratch(target, modules, args.fresh)
             # results of an earlier run whose tests are unknown (it was stopped before it wrote its stamp)
