@@ -31,7 +31,7 @@ from numba.typed import List
 
 from .contact_kernels import (_bound_and_cell, _boundary_bound, _least, _placed, _side_hits, _window_bounds,
                               _window_runs, _window_size)
-from .nearest import _nearest_vertex, disc_cells
+from .nearest import _edge_distance, _nearest_vertex
 from ...nbcache import bind
 
 
@@ -80,34 +80,10 @@ def _boundary_distance(px, py, tV, seg_b, prev, ox, oy, h, nx, ny, start, items,
     """A lower bound of the distance from (px, py) to the target's edges (``tV[v]`` to ``seg_b[v]``): the distance
     itself where it is at most ``bound``, else ``bound``.  ``nearest``: the distance to the nearest vertex (an upper
     bound of the distance).  The nearest point within min(nearest, bound) lies on an edge whose nearer end is within
-    that plus half the edge's length (``half_len``: the longest's half), and each vertex starts one edge (v) and
-    ends another (prev[v]): the vertices that near on the grid and their two edges hold it."""
-    r = min(nearest, bound)
-    best = np.inf
-    scan = r + half_len
-    ix0, ix1, iy0, iy1 = disc_cells(px, py, scan, ox, oy, h, nx, ny)
-    r2 = scan * scan
-    for gx in range(ix0, ix1 + 1):
-        for gy in range(iy0, iy1 + 1):
-            c = gx * ny + gy
-            for kk in range(start[c], start[c + 1]):
-                v = items[kk]
-                fx, fy = px - tV[v, 0], py - tV[v, 1]
-                if fx * fx + fy * fy > r2:
-                    continue
-                for j in range(2):
-                    sg = v if j == 0 else prev[v]
-                    ax, ay = tV[sg, 0], tV[sg, 1]
-                    dx, dy = seg_b[sg, 0] - ax, seg_b[sg, 1] - ay
-                    ex, ey = px - ax, py - ay
-                    dd = dx * dx + dy * dy
-                    t = (ex * dx + ey * dy) / dd if dd > 0.0 else 0.0
-                    t = min(max(t, 0.0), 1.0)
-                    gx2, gy2 = ex - t * dx, ey - t * dy
-                    dist = math.sqrt(gx2 * gx2 + gy2 * gy2)
-                    if dist < best:
-                        best = dist
-    return min(best, bound)
+    that plus half the edge's length (``half_len``: the longest's half): :func:`.nearest._edge_distance` of the
+    edges with an end that near (1e-12 mm to spare for the rounding)."""
+    reach = min(nearest, bound) + half_len + 1e-12
+    return min(_edge_distance(px, py, tV, seg_b, prev, reach, ox, oy, h, nx, ny, start, items), bound)
 
 
 @njit(cache=True)

@@ -440,28 +440,40 @@ def nearest_edge(P: np.ndarray, tgt, src, cap: float = math.inf) -> tuple[float,
     return float(d), int(i), np.array([qx, qy])
 
 
+@njit(cache=True, inline="always")
+def _edge_distance(px, py, V, seg_b, prev, reach, ox, oy, h, nx, ny, start, items):
+    """The least distance from (px, py) to the edges with an end within ``reach`` (each vertex starts one edge and
+    ends another, prev[v]: both taken), by :func:`_point_seg`; inf where no vertex lies that near.  A caller that
+    makes ``reach`` its nearest vertex's distance plus half the longest edge gets the distance to the whole outline
+    (every nearest edge has an end within it)."""
+    best = np.inf
+    r2 = reach * reach
+    ix0, ix1, iy0, iy1 = disc_cells(px, py, reach, ox, oy, h, nx, ny)
+    for ix in range(ix0, ix1 + 1):
+        for iy in range(iy0, iy1 + 1):
+            c = ix * ny + iy
+            for k in range(start[c], start[c + 1]):
+                v = items[k]
+                fx, fy = px - V[v, 0], py - V[v, 1]
+                if fx * fx + fy * fy > r2:
+                    continue
+                for e in (v, prev[v]):  # the edges starting and ending at v, as _nearest_edge takes them
+                    d = _point_seg(px, py, V[e, 0], V[e, 1], seg_b[e, 0], seg_b[e, 1])[0]
+                    if d < best:
+                        best = d
+    return best
+
+
 @njit(cache=True)
 def _dist_each_nb(P, half_len, V, seg_b, prev, ox, oy, h, nx, ny, start, items):
     """Each point's least distance to the outline's edges (``distance.dist_each_point``): among the edges with an end
-    in a grid cell that the disc about it of its nearest vertex's distance plus half the longest edge overlaps (every
-    nearest edge has an end within that disc; an edge with both ends outside it is 1e-12 mm farther than the nearest
-    vertex at least, so the extra edges of the cells never give a smaller distance)."""
+    within its nearest vertex's distance plus half the longest edge (:func:`_edge_distance`: every nearest edge has an
+    end within that disc; 1e-12 mm to spare for the rounding)."""
     out = np.full(len(P), np.inf)
     for i in range(len(P)):
         px, py = P[i, 0], P[i, 1]
-        best = np.inf
         reach = _nearest_vertex(px, py, V, ox, oy, h, nx, ny, start, items, np.inf) + half_len + 1e-12
-        ix0, ix1, iy0, iy1 = disc_cells(px, py, reach, ox, oy, h, nx, ny)
-        for ix in range(ix0, ix1 + 1):
-            for iy in range(iy0, iy1 + 1):
-                c = ix * ny + iy
-                for k in range(start[c], start[c + 1]):
-                    v = items[k]
-                    for e in (v, prev[v]):  # the edges starting and ending at v, as _nearest_edge takes them
-                        d = _point_seg(px, py, V[e, 0], V[e, 1], seg_b[e, 0], seg_b[e, 1])[0]
-                        if d < best:
-                            best = d
-        out[i] = best
+        out[i] = _edge_distance(px, py, V, seg_b, prev, reach, ox, oy, h, nx, ny, start, items)
     return out
 
 
