@@ -341,3 +341,45 @@ def test_a_job_started_only_in_a_worker_is_none_without_one_and_an_abandoned_one
             slow.result(timeout=10)
         assert _time.monotonic() - t0 < 10.0
     assert not (tmp_path / "slow").exists()
+
+
+def test_a_pairs_contact_jobs_fork_before_the_cad_kernel_loads_and_the_kernel_loads_said_once(tmp_path):
+    """A pair's build (one part file, two processes allowed): the as-built contact's jobs, which need no CAD kernel,
+    are forked as soon as the design is known, and the kernel loads beside them (``OutputWriter.load_kernel``, by the
+    solids' step).  Loaded during the design instead (``warm_up``, until 2026-12-05), its second of import held the
+    design's result back and a core idle: the contact of the Fourier pair started 0.8 s later, the build 0.37 s
+    longer.  The kernel is still imported without VTK, and the progress says when it loads, once."""
+    import json
+    import subprocess
+    import sys
+
+    part = str(Path(__file__).resolve().parents[1] / "parts" / "ncg_elliptical.toml")
+    code = (
+        "import json, os, sys\n"
+        "import propulsor.parallel as par\n"
+        "import propulsor.cli as cli\n"
+        "starts = []\n"
+        "real = par.start\n"
+        "def start(fn, *a, **k):\n"
+        "    starts.append((fn.__name__, 'OCP' in sys.modules))\n"
+        "    return real(fn, *a, **k)\n"
+        "par.start = start\n"
+        "rc = cli.main(['build', sys.argv[1], '--out', sys.argv[2]])\n"
+        "vtk = sorted(m for m in sys.modules if m.startswith('vtkmodules') or m.startswith('OCP.IVtk'))\n"
+        "print(json.dumps({'rc': rc, 'starts': starts, 'vtk': vtk}), flush=True)\n"
+        "os._exit(0)\n"
+    )
+    env = dict(os.environ, PROPULSOR_JOBS="2")
+    env.pop("MAKEFLAGS", None)
+    r = subprocess.run([sys.executable, "-c", code, part, str(tmp_path / "b")], capture_output=True, text=True,
+                       env=env, timeout=300)
+    got = json.loads(r.stdout.strip().splitlines()[-1])
+    assert got["rc"] == 0 and got["vtk"] == [], r.stderr[-2000:]
+    contact = [ocp for name, ocp in got["starts"] if name in ("contact_direction", "contact_and_load")]
+    assert len(contact) == 2 and contact == [False, False], got["starts"]
+    assert (tmp_path / "b" / "driven.step").is_file()
+    said = [line for line in r.stderr.splitlines() if "loading the CAD kernel" in line]
+    assert len(said) == 1, said
+    lines = [line.split("] ", 1)[-1] for line in r.stderr.splitlines() if line.startswith("[")]
+    first = next(i for i, line in enumerate(lines) if "loading the CAD kernel" in line)
+    assert any("as built: both directions' contact" in line for line in lines[:first]), lines

@@ -79,8 +79,8 @@ def _design_in_child(fd: int | None = None):
 
 
 def design_apart(design: Callable, params, w):
-    """``design(params, w)`` computed in a forked process while this one calls ``w.warm_up()`` (imports
-    the output steps' modules, starts the solids' workers); the designs it computed on the way join this
+    """``design(params, w)`` computed in a forked process while this one calls ``w.warm_up()`` (the compiled
+    kernels, the plotting library; the CAD kernel later, beside the jobs the design lets start); the designs it computed on the way join this
     process's cache (:func:`design_of`), its progress shown as it comes.  In this process, without warm-up, where no
     worker may be forked (a budget of one process, slots shared by several builds, no fork)."""
     global _APART

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import dataclasses
 import errno
+import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -177,20 +178,28 @@ class OutputWriter:
         return rec
 
     def warm_up(self) -> None:
-        """While the design is computed in another process (:func:`propulsor.parts.pipeline.design_apart`):
-        import the CAD kernel the solids and the assembly need and load the compiled kernels.  The solids' workers
-        (and the modules they run, :func:`_import_solid_work`) are started by the first solid added: the jobs a
-        build starts as soon as its design is known (a pair's as-built contact) fork first, from a smaller process,
-        and the design's end is not held back by imports it does not need (the Fourier pair's build: a core idle
-        0.6-0.8 s between the design's end and the contact jobs' start, now none)."""
-        from ..solids.cq_import import import_cadquery
-
-        # the kernel's libraries load holding the interpreter's lock: the design's steps are shown when it is loaded
-        self.progress("loading the CAD kernel (OCCT) while the design is computed beside it")
-        import_cadquery()  # the solids' wrapper, the assembly STEP (VTK loaded only if ever used)
+        """While the design is computed in another process (:func:`propulsor.parts.pipeline.design_apart`): load the
+        compiled kernels (before any worker forks: each inherits the compiled code) and import the plotting library
+        the figures need.  Not the CAD kernel: the jobs a build starts as soon as its design is known (a pair's
+        as-built contact) fork first, and the kernel loads beside them (:meth:`load_kernel`, by the first step that
+        makes a solid).  Its import holds the interpreter's lock for about a second: loaded here, it held back the
+        design's result (read by a thread of this process) and so the contact's start by as much, a core idle
+        meanwhile (the Fourier pair's build: the design done 1.1 s in, the contact started at 1.9 s)."""
         from ..checks.kernels import warm_if_cold
 
-        warm_if_cold(self.progress)  # before any worker forks: each inherits the compiled code
+        self.progress("loading the plotting library while the design is computed beside it")
+        warm_if_cold(self.progress)
+        if self.draws_plots:
+            from ..export import plots  # noqa: F401  (matplotlib, Agg)
+
+    def load_kernel(self) -> None:
+        """Import the CAD kernel (cadquery without VTK: :func:`propulsor.solids.cq_import.import_cadquery`) where it
+        is not loaded yet, said first (about a second); the solids' wrapper and the assembly STEP need it."""
+        from ..solids.cq_import import import_cadquery
+
+        if "cadquery" not in sys.modules:
+            self.progress("loading the CAD kernel (OCCT)")
+        import_cadquery()
 
     def _solid_pool(self):
         if self._pool is None:

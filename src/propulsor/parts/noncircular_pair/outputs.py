@@ -36,6 +36,9 @@ __all__ = ["build", "start_solids", "write_outputs", "solids", "assembly_and_dxf
 def start_solids(p: NoncircularPairParams, w, profiles):
     """Extrude both gears (face width) and hand them to the writer (STEP/STL/3MF and the shared
     checks, in its workers).  Returns (driver, driven) solids for the assembly."""
+    load_kernel = getattr(w, "load_kernel", None)
+    if load_kernel is not None:  # said, beside the jobs started before this step (the as-built contact)
+        load_kernel()
     from ...solids.build import extrude_profile
 
     w.progress("solids")
