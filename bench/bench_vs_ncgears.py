@@ -210,6 +210,16 @@ matplotlib's import 0.32 of it, the as-built and load values 0.55 / 0.69; the ma
 its forked workers 5.3: each wheel's STEP, STL and 3MF with their checks 1.1-1.3, the STEP round trip's read and OCCT
 volumes the most of it, each contact direction 0.5-1.1, the design 0.2): what is left is spread over work each file's
 proof needs, none of it a tenth of the whole.
+2026-12-05, a fourth session (2 cores, idle).  At 8d65361: ncgears 34.79 s wall (36.48 CPU s), ours 6.14 s (9.87 CPU
+s), peak 632 MiB: 0.177 / 0.270.  Changed (41583b5): the CAD kernel loads after the as-built contact's jobs are
+forked, not while the design is computed (its import, about a second holding the interpreter's lock, held back the
+design's result and so the contact's start: 1.94 -> 1.15 s into the build, a core idle meanwhile).  Our build alone,
+8d65361's tree in a worktree and the new one in turn, five rounds: 6.15 / 5.63 / 5.85 / 5.84 / 5.73 -> 5.46 / 5.30 /
+5.49 / 5.57 / 5.54 s wall, 10.04 / 9.30 / 9.60 / 9.54 / 9.50 -> 9.34 / 9.04 / 9.34 / 9.45 / 9.42 CPU s (the contact's
+workers forked from a process without the kernel); the files identical.  This benchmark then: ncgears 35.55 s wall
+(37.47 CPU s), ours 6.06 s (9.83 CPU s), peak 646 MiB: 0.170 / 0.262; ``ncg_elliptical.toml`` 5.31 s wall.  What the
+ratios cannot go below: bench/bench_kernel_floor.py (the libraries' own work in this build, 5.01 CPU s: 0.92 of the
+CPU budget).
 """
 
 from __future__ import annotations
