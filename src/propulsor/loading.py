@@ -54,7 +54,7 @@ def _values(part_file: Path, say=None):
 
     part_type_name, mapping = read_part_file(part_file)
     if say is not None:
-        say(f"{part_type_name}: loading the part type (CAD kernel, checks)")
+        say(f"{part_type_name}: loading the part type (its design's modules)")
     part_type = get_part_type(part_type_name)
     params = load_params(part_type.params_cls, mapping, validate=False, type_name=part_type.name)
     try:  # the size estimate first where it needs only the values (a design can itself be the long part)
