@@ -39,7 +39,11 @@ it).  The wall ratio's budget, 0.1 x ncgears' 34.79 s = 3.48 s, is less than the
 computation at nothing (5.01 / 2 = 2.5 s, of which the kernel's import, 0.95 s, runs before any of the build's work
 can be handed to a second process).  Memory (``driven.step``, 4.3 MiB): the kernel imported 346 MiB, the STEP read
 back with its volume and B-rep check 385, the mesh export's modules (trimesh, scipy) 436, the STEP written and the
-triangulation 464: the process that proves the driven wheel's files alone exceeds the issue's 400 MiB.
+triangulation 464: the process that proves the driven wheel's files alone exceeds the issue's 400 MiB.  The same in a
+fresh clone (the CI's, its venv just installed; f0e3d56): the kernel imported 403-404 MiB (three processes), then 442,
+501, 529: the kernel's shared libraries are mapped further where their files are wholly in the page cache (the
+resident pages of ``OCP.cpython-311-x86_64-linux-gnu.so`` 136 MiB there, 115 here; ``/proc/self/smaps``), and that
+build's largest process peaked at 721 MiB (bench_vs_ncgears.py; 632-646 here).
 """
 
 from __future__ import annotations
