@@ -53,7 +53,6 @@ import json
 import os
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -110,7 +109,6 @@ def timed(share, fn):
         finally:
             shares[share] = shares.get(share, 0.0) + time.process_time() - t
             depth[0] -= 1
-    run.__wrapped__ = fn
     return run
 
 from propulsor.solids.cq_import import import_cadquery
@@ -199,7 +197,6 @@ def main() -> None:
     a = ap.parse_args()
     bare = []
     for _ in range(3):
-        t = time.perf_counter()
         r = subprocess.run([sys.executable, "-c", "import time; print(time.process_time())"], capture_output=True,
                            text=True, check=True)
         bare.append(float(r.stdout))

@@ -6,6 +6,8 @@ processes; cadquery imported without VTK."""
 from __future__ import annotations
 
 import os
+import subprocess
+import sys
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -13,6 +15,9 @@ import pytest
 
 from propulsor.errors import InputError
 from propulsor.parts.pipeline import Pipeline, design_of
+
+#: a small pair's part file, built whole in a subprocess by the tests below
+ELLIPTICAL = str(Path(__file__).resolve().parents[1] / "parts" / "ncg_elliptical.toml")
 
 
 @dataclass
@@ -169,8 +174,6 @@ def test_a_forked_job_takes_its_arguments_as_they_stand_when_it_is_started(monke
 
 
 def test_cadquery_is_imported_without_vtk_and_its_vtk_functions_load_it_when_used():
-    import subprocess
-    import sys
 
     code = (
         "import sys\n"
@@ -187,8 +190,6 @@ def test_cadquery_is_imported_without_vtk_and_its_vtk_functions_load_it_when_use
 def test_every_solid_and_step_function_takes_cadquery_without_vtk(tmp_path):
     """A build of one part file (no batch preloading cadquery first) reaches cadquery through the solids and
     the STEP writers: each of them imports it with VTK deferred (VTK costs 0.8 CPU s a build and 127 MiB)."""
-    import subprocess
-    import sys
 
     code = (
         "import sys\n"
@@ -215,10 +216,8 @@ def test_a_build_freezes_what_it_imported_and_a_dry_run_loads_no_cad_kernel(tmp_
     several builds' preload freezes the modules they share before they fork, and draws a figure then (the first
     figure's backend and font search done once for every build).  A dry run (validation only) imports no CAD
     kernel."""
-    import subprocess
-    import sys
 
-    part = str(Path(__file__).resolve().parents[1] / "parts" / "ncg_elliptical.toml")
+    part = ELLIPTICAL
     code = (
         "import gc, sys\n"
         "import propulsor.cli as cli, propulsor.building as b\n"
@@ -350,10 +349,8 @@ def test_a_pairs_contact_jobs_fork_before_the_cad_kernel_loads_and_the_kernel_lo
     design's result back and a core idle: the contact of the Fourier pair started 0.8 s later, the build 0.37 s
     longer.  The kernel is still imported without VTK, and the progress says when it loads, once."""
     import json
-    import subprocess
-    import sys
 
-    part = str(Path(__file__).resolve().parents[1] / "parts" / "ncg_elliptical.toml")
+    part = ELLIPTICAL
     code = (
         "import json, os, sys\n"
         "import propulsor.parallel as par\n"

@@ -80,9 +80,10 @@ def _design_in_child(fd: int | None = None):
 
 def design_apart(design: Callable, params, w):
     """``design(params, w)`` computed in a forked process while this one calls ``w.warm_up()`` (the compiled
-    kernels, the plotting library; the CAD kernel later, beside the jobs the design lets start); the designs it computed on the way join this
-    process's cache (:func:`design_of`), its progress shown as it comes.  In this process, without warm-up, where no
-    worker may be forked (a budget of one process, slots shared by several builds, no fork)."""
+    kernels, the plotting library; the CAD kernel later, beside the jobs the design lets start); the designs it
+    computed on the way join this process's cache (:func:`design_of`), its progress shown as it comes.  In this
+    process, without warm-up, where no worker may be forked (a budget of one process, slots shared by several
+    builds, no fork)."""
     global _APART
     from ..parallel import event_pipe, fork_pool, result, slots_shared
     from ..progress import Reporter
